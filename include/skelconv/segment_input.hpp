@@ -1,0 +1,56 @@
+// skelconv/segment_input.hpp — the contract between the runtime and the
+// generated segment kernels (generated/segment_*.hpp).
+//
+// Every generated segment function reads one SegmentInput and computes
+//
+//     f(P) = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt,   Γ(t) = A + t (B − A)
+//
+// (SPEC §2), and/or ∇_P f. One struct for all families keeps the generated
+// table uniform: a family reads only the fields it needs.
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "skelconv/op_count.hpp"
+
+namespace skelconv {
+
+/// Kernel families of SPEC §1 (Hubert 2012 §2.1).
+enum class KernelFamily {
+  inverse,  ///< p^i(r) = r^-i
+  cauchy,   ///< c_s^i(r) = (1 + s r²)^(-i/2)
+  compact,  ///< k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0
+};
+
+/// "inverse", "cauchy", "compact".
+constexpr std::string_view family_name(KernelFamily family) {
+  switch (family) {
+    case KernelFamily::inverse: return "inverse";
+    case KernelFamily::cauchy: return "cauchy";
+    case KernelFamily::compact: return "compact";
+  }
+  return "?";
+}
+
+/// Largest weight-polynomial degree the generator emits by default.
+inline constexpr int max_weight_degree = 3;
+
+/// Inputs of one generated segment evaluation, on scalar type T.
+template <class T>
+struct SegmentInput {
+  std::array<T, 3> a{};  ///< segment start A (t = 0)
+  std::array<T, 3> b{};  ///< segment end B (t = 1)
+  std::array<T, 3> p{};  ///< query point P
+  /// Weight w(t) = Σ_k w[k] t^k; a function of weight degree d reads w[0..d].
+  std::array<T, max_weight_degree + 1> w{T(1), T(0), T(0), T(0)};
+  T s = T(1);   ///< Cauchy sharpness s > 0 (cauchy only)
+  T R = T(1);   ///< support radius R > 0 (compact only)
+  /// Compact only: the part [t0, t1] ⊆ [0, 1] of the segment inside the ball
+  /// of radius R around P (see skelconv/clip.hpp). The kernel vanishes at a
+  /// clipped end, so the moving bounds add nothing to ∇f (SPEC §2).
+  T t0 = T(0);
+  T t1 = T(1);
+};
+
+}  // namespace skelconv
