@@ -1,0 +1,157 @@
+// codegen/kernel_writer.cpp — see kernel_writer.hpp.
+#include "kernel_writer.hpp"
+
+#include <ginac/version.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace skelconv::codegen {
+
+namespace {
+
+constexpr const char* kFunctionSuffix[] = {"f", "grad", "f_and_grad"};
+constexpr SegmentOutputs kOutputs[] = {SegmentOutputs::value, SegmentOutputs::gradient,
+                                       SegmentOutputs::value_and_gradient};
+
+std::string file_header(const std::string& file, const std::string& what, const GeneratorRequest& request) {
+  std::ostringstream os;
+  os << "// generated/" << file << " — " << what << "\n"
+     << "//\n"
+     << "// GENERATED FILE: DO NOT EDIT. Regenerate with\n"
+     << "//     " << request.command_line << " --out generated\n"
+     << "// Generator: skelconv-codegen " << SKELCONV_VERSION << " (GiNaC " << GINACLIB_MAJOR_VERSION << '.'
+     << GINACLIB_MINOR_VERSION << '.' << GINACLIB_MICRO_VERSION << ")\n"
+     << "// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp\n"
+     << "// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).\n";
+  return os.str();
+}
+
+std::string ops_text(const OpCount& o) {
+  std::ostringstream os;
+  os << o.add << " +, " << o.mul << " ×, " << o.div << " /, " << o.sqrt << " sqrt, " << o.atan << " atan, "
+     << o.log << " log/asinh";
+  if (o.other) os << ", " << o.other << " other";
+  return os.str();
+}
+
+std::string ops_initializer(const OpCount& o) {
+  std::ostringstream os;
+  os << '{' << o.add << ", " << o.mul << ", " << o.div << ", " << o.sqrt << ", " << o.atan << ", " << o.log << ", "
+     << o.other << '}';
+  return os.str();
+}
+
+struct EmittedKernel {
+  SegmentKernelSpec spec;
+  OpCount ops[3];  // f, grad, f_and_grad
+};
+
+std::string function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {
+  const std::string name = spec.name() + "_" + kFunctionSuffix[which];
+  std::ostringstream os;
+  static const char* kWhat[] = {"the field", "its gradient ∇_P f", "the field and its gradient"};
+  os << "/// " << kWhat[which] << ", where\n"
+     << "///     " << spec.equation() << "\n"
+     << "/// Operations: " << ops_text(code.ops) << ".\n"
+     << "template <class T>\n";
+  switch (which) {
+    case 0: os << "T " << name << "(const SegmentInput<T>& in) {\n"; break;
+    case 1: os << "std::array<T, 3> " << name << "(const SegmentInput<T>& in) {\n"; break;
+    default: os << "T " << name << "(const SegmentInput<T>& in, std::array<T, 3>& grad) {\n"; break;
+  }
+  os << "  using std::asinh, std::atan2, std::log, std::max, std::sqrt;\n";
+  if (which != 1) os << "  T f;\n";
+  if (which == 1) os << "  std::array<T, 3> grad;\n";
+  os << code.body;
+  os << (which == 1 ? "  return grad;\n" : "  return f;\n") << "}\n\n";
+  return os.str();
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace
+
+void write_generated_folder(const GeneratorRequest& request, const std::filesystem::path& folder) {
+  std::filesystem::create_directories(folder);
+  std::vector<EmittedKernel> kernels;
+  std::map<KernelFamily, std::string> family_bodies;
+
+  for (const SegmentKernelSpec& spec : request.segment_kernels) {
+    EmittedKernel k{spec, {}};
+    std::string& body = family_bodies[spec.family];
+    for (int which = 0; which < 3; ++which) {
+      const EmittedCode code = build_segment_program(spec, kOutputs[which]).emit();
+      k.ops[which] = code.ops;
+      body += function_text(spec, which, code);
+    }
+    kernels.push_back(k);
+  }
+
+  // One header per family.
+  for (const auto& [family, body] : family_bodies) {
+    const std::string file = "segment_" + std::string(family_name(family)) + ".hpp";
+    std::ostringstream os;
+    os << file_header(file, "segment kernels of the " + std::string(family_name(family)) + " family.", request)
+       << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
+       << "#include <skelconv/segment_input.hpp>\n\n"
+       << "namespace skelconv::generated {\n\n"
+       << body << "}  // namespace skelconv::generated\n";
+    write_file(folder / file, os.str());
+  }
+
+  // The lookup table.
+  std::ostringstream table;
+  table << file_header("segment_table.hpp", "every generated segment kernel, for lookup at run time.", request)
+        << "#pragma once\n\n#include <array>\n#include <span>\n\n";
+  for (const auto& [family, body] : family_bodies)
+    table << "#include \"generated/segment_" << family_name(family) << ".hpp\"\n";
+  table << "\nnamespace skelconv::generated {\n\n"
+        << "/// One generated kernel: f, ∇f and both, with their operation counts.\n"
+        << "template <class T>\nstruct SegmentKernel {\n"
+        << "  KernelFamily family;\n  int degree;\n  int weight_degree;\n"
+        << "  T (*f)(const SegmentInput<T>&);\n"
+        << "  std::array<T, 3> (*grad)(const SegmentInput<T>&);\n"
+        << "  T (*f_and_grad)(const SegmentInput<T>&, std::array<T, 3>&);\n"
+        << "  const char* name;\n  const char* equation;\n"
+        << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n"
+        << "/// Every generated kernel, sorted by family, degree and weight degree.\n"
+        << "template <class T>\nstd::span<const SegmentKernel<T>> segment_kernels() {\n"
+        << "  static const SegmentKernel<T> table[] = {\n";
+  for (const EmittedKernel& k : kernels) {
+    const std::string n = k.spec.name();
+    table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", "
+          << k.spec.weight_degree << ", &" << n << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, \""
+          << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", "
+          << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << "},\n";
+  }
+  table << "  };\n  return table;\n}\n\n"
+        << "/// The kernel for (family, degree, weight degree), or nullptr if it was not generated.\n"
+        << "template <class T>\n"
+        << "const SegmentKernel<T>* find_segment_kernel(KernelFamily family, int degree, int weight_degree) {\n"
+        << "  for (const SegmentKernel<T>& k : segment_kernels<T>())\n"
+        << "    if (k.family == family && k.degree == degree && k.weight_degree == weight_degree) return &k;\n"
+        << "  return nullptr;\n}\n\n"
+        << "}  // namespace skelconv::generated\n";
+  write_file(folder / "segment_table.hpp", table.str());
+
+  // The operation counts, machine-readable.
+  std::ostringstream csv;
+  csv << "function,family,degree,weight_degree,outputs,add,mul,div,sqrt,atan,log,other\n";
+  for (const EmittedKernel& k : kernels)
+    for (int which = 0; which < 3; ++which) {
+      const OpCount& o = k.ops[which];
+      csv << k.spec.name() << '_' << kFunctionSuffix[which] << ',' << family_name(k.spec.family) << ','
+          << k.spec.degree << ',' << k.spec.weight_degree << ',' << kFunctionSuffix[which] << ',' << o.add << ','
+          << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan << ',' << o.log << ',' << o.other << '\n';
+    }
+  write_file(folder / "opcounts.csv", csv.str());
+}
+
+}  // namespace skelconv::codegen

@@ -1,0 +1,90 @@
+// codegen/main.cpp — skelconv-codegen: writes generated/ from the family
+// descriptions. Degree ranges are arguments, not limits in the code.
+//
+//   skelconv-codegen --out generated [--inverse 1:16] [--cauchy 1:16]
+//                    [--compact 2:16] [--weights 0:3]
+#include <CLI/CLI.hpp>
+
+#include <sys/personality.h>
+#include <unistd.h>
+
+#include <iostream>
+#include <regex>
+
+#include "kernel_writer.hpp"
+
+namespace {
+
+struct DegreeRange {
+  int first = 0, last = -1;  // empty when last < first
+};
+
+DegreeRange parse_range(const std::string& text, const std::string& option) {
+  static const std::regex pattern(R"((\d+)(?::(\d+))?)");
+  std::smatch m;
+  if (text == "none") return {};
+  if (!std::regex_match(text, m, pattern))
+    throw CLI::ValidationError(option, "expected FIRST:LAST, a single degree, or none; got '" + text + "'");
+  DegreeRange r{std::stoi(m[1]), m[2].matched ? std::stoi(m[2]) : std::stoi(m[1])};
+  if (r.last < r.first) throw CLI::ValidationError(option, "empty range '" + text + "'");
+  return r;
+}
+
+// GiNaC orders the terms of sums and products by hash values that are seeded
+// with the addresses of its type_info objects, so under address-space layout
+// randomisation the same program prints differently from run to run. The
+// generator must be byte-for-byte reproducible: it re-executes itself once
+// with randomisation off, which fixes the addresses and hence the order.
+void run_without_address_randomisation(char** argv) {
+  const int current = personality(0xffffffff);
+  if (current == -1 || (current & ADDR_NO_RANDOMIZE)) return;
+  if (personality(static_cast<unsigned long>(current) | ADDR_NO_RANDOMIZE) == -1) return;
+  execv("/proc/self/exe", argv);
+  std::cerr << "skelconv-codegen: warning: could not disable address randomisation; "
+               "the output may not be reproducible\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using skelconv::KernelFamily;
+  run_without_address_randomisation(argv);
+  CLI::App app{"skelconv-codegen: unrolls the Hubert–Cani recurrences into C++ kernels"};
+  std::string out, inverse = "1:16", cauchy = "1:16", compact = "2:16", weights = "0:3";
+  app.add_option("--out", out, "output folder (e.g. generated)")->required();
+  app.add_option("--inverse", inverse, "power-inverse degrees i (FIRST:LAST or none)")->capture_default_str();
+  app.add_option("--cauchy", cauchy, "Cauchy degrees i")->capture_default_str();
+  app.add_option("--compact", compact, "compact-support degrees i (i ≥ 2)")->capture_default_str();
+  app.add_option("--weights", weights, "weight-polynomial degrees")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    skelconv::codegen::GeneratorRequest request;
+    request.command_line = "skelconv-codegen --inverse " + inverse + " --cauchy " + cauchy + " --compact " + compact +
+                           " --weights " + weights;
+    const DegreeRange w = parse_range(weights, "--weights");
+    if (w.last > skelconv::max_weight_degree)
+      throw CLI::ValidationError("--weights", "SegmentInput holds weights up to degree " +
+                                                  std::to_string(skelconv::max_weight_degree));
+    const std::pair<KernelFamily, DegreeRange> families[] = {
+        {KernelFamily::inverse, parse_range(inverse, "--inverse")},
+        {KernelFamily::cauchy, parse_range(cauchy, "--cauchy")},
+        {KernelFamily::compact, parse_range(compact, "--compact")},
+    };
+    for (const auto& [family, range] : families) {
+      if (range.last >= range.first && range.first < (family == KernelFamily::compact ? 2 : 1))
+        throw CLI::ValidationError(std::string(skelconv::family_name(family)),
+                                   "degrees start at " + std::string(family == KernelFamily::compact ? "2" : "1"));
+      for (int i = range.first; i <= range.last; ++i)
+        for (int d = w.first; d <= w.last; ++d) request.segment_kernels.push_back({family, i, d});
+    }
+    skelconv::codegen::write_generated_folder(request, out);
+    std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels to " << out << '\n';
+  } catch (const CLI::Error& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "skelconv-codegen: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,263 @@
+// codegen/segment_families.cpp — see segment_families.hpp.
+#include "segment_families.hpp"
+
+#include <array>
+#include <stdexcept>
+
+#include "segment_moments.hpp"
+
+namespace skelconv::codegen {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+using GiNaC::pow;
+using GiNaC::symbol;
+
+namespace {
+
+// max(0, x), written as such in C++: q at a clipped end is 0 up to rounding
+// and must not go negative under a square root.
+DECLARE_FUNCTION_1P(nonnegative_part)
+REGISTER_FUNCTION(nonnegative_part, dummy())
+
+std::string weight_text(int weight_degree) {
+  if (weight_degree == 0) return "w0";
+  std::string s = "(w0";
+  for (int k = 1; k <= weight_degree; ++k) s += " + w" + std::to_string(k) + (k == 1 ? " t" : " t^" + std::to_string(k));
+  return s + ")";
+}
+
+// Builds the program step by step; one instance per generated function.
+class SegmentProgramBuilder {
+ public:
+  SegmentProgramBuilder(const SegmentKernelSpec& spec) : spec_(spec) {}
+
+  StraightLineProgram build(SegmentOutputs outputs) {
+    read_inputs();
+    define_geometry();
+    define_quadratic();
+    MomentRecurrence moments(spec_.family == KernelFamily::compact ? compact_symbols() : infinite_support_symbols());
+
+    const int n = kernel_index();
+    if (outputs != SegmentOutputs::gradient) {
+      program_.add_output("f", length_ * weighted_moment(moments, 0, n));
+    }
+    if (outputs != SegmentOutputs::value) {
+      // ∇f = −n α |AB| (AP Σ w_k M_{k,n+2} − AB Σ w_k M_{k+1,n+2}), SPEC §2.
+      const ex g_ap = define("g_ap", weighted_moment(moments, 0, n + 2));
+      const ex g_ab = define("g_ab", weighted_moment(moments, 1, n + 2));
+      const ex factor = define("g_factor", -n * alpha_ * length_);
+      for (int i = 0; i < 3; ++i) {
+        program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
+      }
+    }
+    return std::move(program_);
+  }
+
+ private:
+  int kernel_index() const { return spec_.family == KernelFamily::compact ? -spec_.degree : spec_.degree; }
+
+  ex define(const std::string& name, const ex& value) {
+    if (GiNaC::is_a<symbol>(value)) return value;  // an alias needs no code
+    symbol s(name);
+    program_.define(s, value);
+    return s;
+  }
+
+  // Σ_k w_k M_{k+shift,n}
+  ex weighted_moment(MomentRecurrence& moments, int shift, int n) {
+    ex sum = 0;
+    for (int k = 0; k <= spec_.weight_degree; ++k) sum += w_[k] * moments.M(k + shift, n);
+    return sum;
+  }
+
+  void read_inputs() {
+    const char* axis = "012";
+    for (int i = 0; i < 3; ++i) {
+      A_[i] = symbol(std::string("A") + axis[i]);
+      B_[i] = symbol(std::string("B") + axis[i]);
+      P_[i] = symbol(std::string("P") + axis[i]);
+      program_.add_input(A_[i], std::string("in.a[") + axis[i] + "]");
+      program_.add_input(B_[i], std::string("in.b[") + axis[i] + "]");
+      program_.add_input(P_[i], std::string("in.p[") + axis[i] + "]");
+    }
+    for (int k = 0; k <= spec_.weight_degree; ++k) {
+      w_.push_back(symbol("w" + std::to_string(k)));
+      program_.add_input(GiNaC::ex_to<symbol>(w_.back()), "in.w[" + std::to_string(k) + "]");
+    }
+  }
+
+  // Vectors and their products. |AB × AP|² and the dot products with BP are
+  // formed directly rather than as differences of larger numbers, so D and
+  // the values at B keep their digits near the line and near B.
+  void define_geometry() {
+    for (int i = 0; i < 3; ++i) {
+      ab_[i] = define("ab" + std::to_string(i), B_[i] - A_[i]);
+      ap_[i] = define("ap" + std::to_string(i), P_[i] - A_[i]);
+      bp_[i] = define("bp" + std::to_string(i), P_[i] - B_[i]);
+    }
+    auto dot = [](const std::array<ex, 3>& u, const std::array<ex, 3>& v) {
+      return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    };
+    ab_ab_ = define("ab_ab", dot(ab_, ab_));
+    ab_ap_ = define("ab_ap", dot(ab_, ap_));
+    ap_ap_ = define("ap_ap", dot(ap_, ap_));
+    const std::array<ex, 3> cross = {
+        define("cross0", ab_[1] * ap_[2] - ab_[2] * ap_[1]),
+        define("cross1", ab_[2] * ap_[0] - ab_[0] * ap_[2]),
+        define("cross2", ab_[0] * ap_[1] - ab_[1] * ap_[0]),
+    };
+    cross_cross_ = define("cross_cross", dot(cross, cross));
+    bp_bp_ = define("bp_bp", dot(bp_, bp_));
+    ab_bp_ = define("ab_bp", dot(ab_, bp_));
+    ap_bp_ = define("ap_bp", dot(ap_, bp_));
+    length_ = define("length", pow(ab_ab_, numeric(1, 2)));
+  }
+
+  // q(t) = α|P − Γ(t)|² + β = a t² − 2 b t + c.
+  void define_quadratic() {
+    switch (spec_.family) {
+      case KernelFamily::inverse:
+        alpha_ = 1;
+        beta_ = 0;
+        break;
+      case KernelFamily::cauchy: {
+        symbol s("s");
+        program_.add_input(s, "in.s");
+        alpha_ = s;
+        beta_ = 1;
+        break;
+      }
+      case KernelFamily::compact: {
+        symbol R("R");
+        program_.add_input(R, "in.R");
+        inv_R_ = define("inv_R", pow(R, -1));
+        alpha_ = -define("inv_R2", pow(inv_R_, 2));
+        beta_ = 1;
+        break;
+      }
+    }
+    a_ = define("a", alpha_ * ab_ab_);
+    b_ = define("b", alpha_ * ab_ap_);
+    c_ = define("c", beta_ + alpha_ * ap_ap_);
+    // D = ac − b² = αβ|AB|² + α²|AB × AP|² (Lagrange's identity): no
+    // cancellation near the segment's line.
+    D_ = define("D", alpha_ * (beta_ * ab_ab_ + alpha_ * cross_cross_));
+  }
+
+  // Inverse and Cauchy kernels: t ∈ [0, 1], q > 0, a > 0.
+  MomentSymbols infinite_support_symbols() {
+    MomentSymbols m;
+    m.a = a_;
+    m.b = b_;
+    m.c = c_;
+    m.D = D_;
+    const bool odd = spec_.degree % 2 != 0;
+    const ex a_minus_b = define("a_minus_b", -alpha_ * ab_bp_);  // a − b = −α AB·BP
+    const ex q1 = define("q1", beta_ + alpha_ * bp_bp_);        // q(1) = β + α|BP|²
+    const symbol r0("r0"), r1("r1");
+    m.lo = {0, c_, r0, -b_};
+    m.hi = {1, q1, r1, a_minus_b};
+    if (odd) {
+      program_.define(r0, pow(c_, numeric(1, 2)));
+      program_.define(r1, pow(q1, numeric(1, 2)));
+      program_.declare_square_root(r0, GiNaC::ex_to<symbol>(c_));
+      program_.declare_square_root(r1, GiNaC::ex_to<symbol>(q1));
+      m.J1 = define_J1_infinite(a_minus_b, r0, r1);
+    } else {
+      // J_2 = (atan((a−b)/√D) + atan(b/√D))/√D = atan2(√D, c − b)/√D: the two
+      // atans of Hubert §3.1 summed into one, exact for all P off the line.
+      const ex c_minus_b = define("c_minus_b", beta_ + alpha_ * ap_bp_);  // c − b = β + α AP·BP
+      const ex root_D = pow(D_, numeric(1, 2));
+      m.J2 = define("J2", GiNaC::atan2(root_D, c_minus_b) / root_D);
+      m.log_ratio = define("log_ratio", GiNaC::log(q1 / c_));
+    }
+    return m;
+  }
+
+  // J_1 = (asinh((a−b)/√D) + asinh(b/√D))/√a (Hubert §3.1, "arcsch" = asinh)
+  //     = asinh(X)/√a, with asinh x + asinh y = asinh(x√(1+y²) + y√(1+x²)):
+  //   X = √a ((a−b) r0 + b r1) / D            when P projects on [A,B];
+  //   X = √a (a − 2b) / ((a−b) r0 − b r1)     beyond an end, where the first
+  // form cancels: the two are equal, since ((a−b)r0)² − (b r1)² = (a−2b) D.
+  ex define_J1_infinite(const ex& a_minus_b, const symbol& r0, const symbol& r1) {
+    const ex root_a = pow(a_, numeric(1, 2));
+    symbol X("X");
+    Choice choice{X, {}};
+    choice.alternatives.push_back({b_ * a_minus_b, "P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D",
+                                   {}, root_a * (a_minus_b * r0 + b_ * r1) / D_});
+    choice.alternatives.push_back({0, "P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)",
+                                   {}, root_a * (a_minus_b - b_) / (a_minus_b * r0 - b_ * r1)});
+    program_.choose(std::move(choice));
+    return define("J1", GiNaC::asinh(X) / root_a);
+  }
+
+  // Compact kernels: t ∈ [t0, t1] (the clip), a < 0, q ≥ 0.
+  MomentSymbols compact_symbols() {
+    MomentSymbols m;
+    m.a = a_;
+    m.b = b_;
+    m.c = c_;
+    m.D = D_;
+    const bool odd = spec_.degree % 2 != 0;
+    auto end = [&](const std::string& tag, const std::string& input) {
+      symbol t("t" + tag);
+      program_.add_input(t, input);
+      const ex slope = define("slope" + tag, a_ * t - b_);
+      const ex q = define("q" + tag, nonnegative_part(c_ + t * (slope - b_)));
+      symbol root("r" + tag);
+      if (odd) {
+        program_.define(root, pow(q, numeric(1, 2)));
+        program_.declare_square_root(root, GiNaC::ex_to<symbol>(q));
+      }
+      return QuadraticEnd{t, q, root, slope};
+    };
+    m.lo = end("0", "in.t0");
+    m.hi = end("1", "in.t1");
+    if (odd) {
+      // ∫ q^(-1/2) dt = asin((b − a t)/√(−D)) / √(−a) for a < 0, written as
+      // atan2(b − a t, √(−a) √q) so that it stays exact where q = 0 (a clipped end).
+      const ex root_minus_a = define("root_minus_a", length_ * inv_R_);  // √(−a) = |AB|/R
+      m.J1 = define("J1", (GiNaC::atan2(-m.hi.slope, root_minus_a * m.hi.root) -
+                           GiNaC::atan2(-m.lo.slope, root_minus_a * m.lo.root)) /
+                              root_minus_a);
+    }
+    return m;
+  }
+
+  const SegmentKernelSpec& spec_;
+  StraightLineProgram program_;
+  std::array<symbol, 3> A_, B_, P_;
+  std::vector<ex> w_;
+  std::array<ex, 3> ab_, ap_, bp_;
+  ex ab_ab_, ab_ap_, ap_ap_, cross_cross_, bp_bp_, ab_bp_, ap_bp_, length_;
+  ex alpha_, beta_, inv_R_;
+  ex a_, b_, c_, D_;
+};
+
+}  // namespace
+
+std::string SegmentKernelSpec::name() const {
+  return "segment_" + std::string(family_name(family)) + "_i" + std::to_string(degree) + "_w" +
+         std::to_string(weight_degree);
+}
+
+std::string SegmentKernelSpec::equation() const {
+  const std::string i = std::to_string(degree);
+  const std::string w = weight_text(weight_degree);
+  switch (family) {
+    case KernelFamily::inverse:
+      return "f(P) = |AB| ∫_0^1 " + w + " |P − Γ(t)|^(−" + i + ") dt";
+    case KernelFamily::cauchy:
+      return "f(P) = |AB| ∫_0^1 " + w + " (1 + s |P − Γ(t)|²)^(−" + i + "/2) dt";
+    case KernelFamily::compact:
+      return "f(P) = |AB| ∫_t0^t1 " + w + " (1 − |P − Γ(t)|²/R²)^(" + i + "/2) dt";
+  }
+  throw std::logic_error("unknown family");
+}
+
+StraightLineProgram build_segment_program(const SegmentKernelSpec& spec, SegmentOutputs outputs) {
+  return SegmentProgramBuilder(spec).build(outputs);
+}
+
+}  // namespace skelconv::codegen

@@ -1,0 +1,469 @@
+// codegen/straight_line_program.cpp — emission with CSE, strength reduction
+// and operation counting. See straight_line_program.hpp for what it does.
+#include "straight_line_program.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace skelconv::codegen {
+
+using GiNaC::ex;
+using GiNaC::ex_is_less;
+using GiNaC::is_a;
+using GiNaC::numeric;
+using GiNaC::symbol;
+
+void StraightLineProgram::add_input(const symbol& s, std::string cpp) {
+  inputs_.emplace_back(s, std::move(cpp));
+}
+
+void StraightLineProgram::define(const symbol& s, const ex& value) {
+  steps_.push_back({Step::Kind::define, s, value, {}});
+}
+
+void StraightLineProgram::choose(Choice choice) {
+  if (choice.alternatives.empty()) throw std::logic_error("choose: no alternative");
+  const symbol target = choice.target;
+  steps_.push_back({Step::Kind::choose, target, 0, std::move(choice)});
+}
+
+void StraightLineProgram::add_output(std::string cpp_lhs, const ex& value) {
+  outputs_.emplace_back(std::move(cpp_lhs), value);
+}
+
+void StraightLineProgram::declare_square_root(const symbol& root, const symbol& square) {
+  root_of_square_.emplace(square, root);
+  square_of_root_.emplace(root, square);
+}
+
+namespace {
+
+// C++ text of an emitted expression and its precedence, so that operands are
+// parenthesised only where C++ needs it.
+struct Text {
+  std::string s;
+  enum Precedence { sum = 1, product = 2, atom = 3 } precedence;
+};
+
+// An identifier or `in.x[i]`: needs no temporary of its own.
+bool is_plain_name(const std::string& s) {
+  static const std::regex name(R"([A-Za-z_][A-Za-z0-9_]*(\.[a-z]+\[[0-9]\])?)");
+  return std::regex_match(s, name);
+}
+
+std::string as_divisor(const Text& t) { return t.precedence >= Text::atom ? t.s : "(" + t.s + ")"; }
+
+std::string as_factor(const Text& t) { return t.precedence >= Text::product ? t.s : "(" + t.s + ")"; }
+
+bool is_half_integer(const numeric& e) { return !e.is_integer() && (2 * e).is_integer(); }
+
+}  // namespace
+
+// Emits one StraightLineProgram. One Emitter per program: temporaries are
+// numbered from t0 in the order they are first needed, so the output is a
+// deterministic function of the program.
+class Emitter {
+ public:
+  explicit Emitter(const StraightLineProgram& program) : program_(program) {}
+
+  EmittedCode run() {
+    find_live_steps();
+    count_uses();
+    scopes_.emplace_back();
+    for (const auto& [s, cpp] : program_.inputs_) names_[s] = cpp;
+    for (size_t i = 0; i < program_.steps_.size(); ++i) {
+      const auto& step = program_.steps_[i];
+      if (!live_[i]) continue;
+      if (step.kind == StraightLineProgram::Step::Kind::define) {
+        define(step.target, step.value);
+      } else {
+        emit_choice(step.choice);
+      }
+    }
+    for (const auto& [lhs, value] : program_.outputs_) line(lhs + " = " + emit(value).s + ";");
+    return {body_.str(), scopes_.back().ops};
+  }
+
+ private:
+  struct Scope {
+    std::map<ex, std::string, ex_is_less> memo;  // emitted sub-expressions
+    OpCount ops;
+  };
+
+  // ---- pre-pass: which steps the outputs need (dead steps are not written)
+  static void collect_symbols(const ex& e, std::set<symbol, ex_is_less>& out) {
+    if (is_a<symbol>(e)) out.insert(GiNaC::ex_to<symbol>(e));
+    for (size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
+  }
+
+  void find_live_steps() {
+    std::set<symbol, ex_is_less> needed;
+    for (const auto& [lhs, value] : program_.outputs_) collect_symbols(value, needed);
+    live_.assign(program_.steps_.size(), false);
+    for (size_t i = program_.steps_.size(); i-- > 0;) {
+      const auto& step = program_.steps_[i];
+      if (!needed.count(step.target)) continue;
+      live_[i] = true;
+      if (step.kind == StraightLineProgram::Step::Kind::define) {
+        collect_symbols(step.value, needed);
+      } else {
+        for (const auto& alt : step.choice.alternatives) {
+          collect_symbols(alt.condition, needed);
+          for (const auto& [s, v] : alt.steps) collect_symbols(v, needed);
+          collect_symbols(alt.value, needed);
+        }
+      }
+    }
+  }
+
+  // ---- pre-pass: how often each sub-expression and each reciprocal is used
+  void count_uses() {
+    auto visit_all = [&](const ex& e) { visit(e); };
+    for (size_t i = 0; i < program_.steps_.size(); ++i) {
+      const auto& step = program_.steps_[i];
+      if (!live_[i]) continue;
+      if (step.kind == StraightLineProgram::Step::Kind::define) {
+        visit_all(step.value);
+      } else {
+        for (const auto& alt : step.choice.alternatives) {
+          visit_all(alt.condition);
+          for (const auto& [s, v] : alt.steps) visit_all(v);
+          visit_all(alt.value);
+        }
+      }
+    }
+    for (const auto& [lhs, value] : program_.outputs_) visit_all(value);
+  }
+
+  void visit(const ex& e) {
+    if (is_a<symbol>(e) || is_a<numeric>(e)) return;
+    if (is_a<GiNaC::power>(e)) {
+      const ex& expo = e.op(1);
+      if (is_a<numeric>(expo) && GiNaC::ex_to<numeric>(expo).is_negative()) ++reciprocal_uses_[e.op(0)];
+    }
+    if (++uses_[e] > 1) return;  // its children were counted the first time
+    for (size_t i = 0; i < e.nops(); ++i) visit(e.op(i));
+  }
+
+  // `const T name = value;`, or just the name when emitting the value already
+  // had to make a temporary for it.
+  void define(const symbol& target, const ex& value) {
+    const std::string name = target.get_name();
+    pending_name_ = name;
+    pending_value_ = value;
+    const Text t = emit(value);
+    if (t.s != name) line("const T " + name + " = " + t.s + ";");
+    pending_name_.clear();
+    names_[target] = name;
+  }
+
+  // ---- output helpers
+  void line(const std::string& s) { body_ << std::string(2 * (scopes_.size()), ' ') << s << '\n'; }
+  OpCount& ops() { return scopes_.back().ops; }
+
+  const std::string* find_memo(const ex& e) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+      auto found = it->memo.find(e);
+      if (found != it->memo.end()) return &found->second;
+    }
+    return nullptr;
+  }
+
+  // A new `const T` for `text`, which computes `key`. A definition step's own
+  // value takes the step's name instead of a tN.
+  std::string new_temp(const std::string& text, const ex& key) {
+    std::string name;
+    if (!pending_name_.empty() && key.is_equal(pending_value_)) {
+      name = pending_name_;
+      pending_name_.clear();
+    } else {
+      name = "t" + std::to_string(next_temp_++);
+    }
+    line("const T " + name + " = " + text + ";");
+    return name;
+  }
+
+  // A name for e, computing it into a temporary if it is not one already.
+  std::string named(const ex& e) {
+    if (const std::string* m = find_memo(e)) return *m;
+    const Text t = emit_uncached(e);
+    if (is_a<symbol>(e) || is_plain_name(t.s)) {
+      if (!is_a<symbol>(e)) scopes_.back().memo[e] = t.s;
+      return t.s;
+    }
+    const std::string name = new_temp(t.s, e);
+    scopes_.back().memo[e] = name;
+    return name;
+  }
+
+  // ---- expression emission
+  Text emit(const ex& e) {
+    if (const std::string* m = find_memo(e)) return {*m, Text::atom};
+    if (is_a<symbol>(e) || is_a<numeric>(e)) return emit_uncached(e);
+    auto u = uses_.find(e);
+    if (u != uses_.end() && u->second > 1) return {named(e), Text::atom};
+    return emit_uncached(e);
+  }
+
+  Text emit_uncached(const ex& e) {
+    if (is_a<symbol>(e)) {
+      auto it = names_.find(GiNaC::ex_to<symbol>(e));
+      if (it == names_.end()) throw std::logic_error("symbol used before definition: " + GiNaC::ex_to<symbol>(e).get_name());
+      return {it->second, Text::atom};
+    }
+    if (is_a<numeric>(e)) return constant(GiNaC::ex_to<numeric>(e));
+    if (is_a<GiNaC::add>(e)) return emit_sum(e);
+    if (is_a<GiNaC::mul>(e)) return emit_product(e);
+    if (is_a<GiNaC::power>(e)) {
+      std::string p = power(e.op(0), GiNaC::ex_to<numeric>(e.op(1)));
+      const bool name = is_plain_name(p);
+      return {std::move(p), name ? Text::atom : Text::product};
+    }
+    if (is_a<GiNaC::function>(e)) return emit_call(e);
+    std::ostringstream os;
+    os << e;
+    throw std::logic_error("cannot emit expression " + os.str());
+  }
+
+  static Text constant(const numeric& c) {
+    if (!c.is_rational()) throw std::logic_error("non-rational constant");
+    std::ostringstream num_text, den_text;
+    num_text << c.numer();
+    den_text << c.denom();
+    const std::string num = num_text.str(), den = den_text.str();
+    if (den == "1") return {"T(" + num + ")", Text::atom};
+    return {"(T(" + num + ") / T(" + den + "))", Text::atom};  // folded: not counted
+  }
+
+  Text emit_sum(const ex& e) {
+    // Positive terms first, so that B − A reads as `b - a`, not `-a + b`.
+    std::vector<std::pair<bool, ex>> terms;
+    for (size_t i = 0; i < e.nops(); ++i) terms.push_back(split_sign(e.op(i)));
+    std::stable_partition(terms.begin(), terms.end(), [](const auto& t) { return !t.first; });
+    std::string s;
+    for (size_t i = 0; i < terms.size(); ++i) {
+      auto [negative, magnitude] = terms[i];
+      const Text term = emit(magnitude);
+      if (i == 0) {
+        s = negative ? "-" + as_factor(term) : term.s;
+      } else {
+        s += negative ? " - " + as_factor(term) : " + " + term.s;
+        ++ops().add;
+      }
+    }
+    return {s, Text::sum};
+  }
+
+  // A term with a negative numeric coefficient is written as a subtraction.
+  static std::pair<bool, ex> split_sign(const ex& term) {
+    if (is_a<numeric>(term) && GiNaC::ex_to<numeric>(term).is_negative()) return {true, -term};
+    if (is_a<GiNaC::mul>(term)) {
+      const ex coeff = term.op(term.nops() - 1);  // GiNaC keeps the coefficient last
+      if (is_a<numeric>(coeff) && GiNaC::ex_to<numeric>(coeff).is_negative()) return {true, -term};
+    }
+    return {false, term};
+  }
+
+  Text emit_product(const ex& e) {
+    numeric coefficient = 1;
+    std::vector<ex> numerator, denominator;  // denominator holds x^k for x^-k
+    for (size_t i = 0; i < e.nops(); ++i) {
+      const ex& f = e.op(i);
+      if (is_a<numeric>(f)) {
+        coefficient *= GiNaC::ex_to<numeric>(f);
+      } else if (is_a<GiNaC::power>(f) && GiNaC::ex_to<numeric>(f.op(1)).is_negative() &&
+                 reciprocal_uses_[f.op(0)] <= 1 && !find_memo(f)) {
+        denominator.push_back(GiNaC::pow(f.op(0), -f.op(1)));  // a lone division stays a division
+      } else {
+        numerator.push_back(f);
+      }
+    }
+    std::string s;
+    bool negative = coefficient.is_negative();
+    if (negative) coefficient = -coefficient;
+    auto multiply = [&](const std::string& factor) {
+      if (s.empty()) {
+        s = factor;
+      } else {
+        s += " * " + factor;
+        ++ops().mul;
+      }
+    };
+    if (coefficient != 1) multiply(constant(coefficient).s);
+    for (const ex& f : numerator) multiply(as_factor(emit(f)));
+    if (s.empty()) s = "T(1)";
+    for (const ex& d : denominator) {
+      s += " / " + as_divisor(emit(d));
+      ++ops().div;
+    }
+    return {negative ? "-" + s : s, Text::product};
+  }
+
+  Text emit_call(const ex& e) {
+    const std::string fn = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    std::string args;
+    for (size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + emit(e.op(i)).s;
+    if (fn == "nonnegative_part") return {"max(T(0), T(" + args + "))", Text::atom};  // not counted
+    if (fn == "atan2" || fn == "atan") ++ops().atan;
+    else if (fn == "log" || fn == "asinh") ++ops().log;
+    else ++ops().other;
+    return {fn + "(" + args + ")", Text::atom};
+  }
+
+  // x^e for a rational e with denominator 1 or 2, from memoised pieces.
+  std::string power(const ex& base, const numeric& e) {
+    if (e == 1) return named(base);
+    const ex key = GiNaC::pow(base, e);
+    if (const std::string* m = find_memo(key)) return *m;
+    std::string text;
+    if (is_half_integer(e)) {
+      // x^(m/2) = (√x)^m: one sqrt serves every half-integer power of x.
+      const numeric m = 2 * e;
+      const std::string root = sqrt_of(base);
+      if (m == 1) return root;
+      if (m.is_negative()) {
+        const ex root_expr = root_expression(base);
+        return power_of_name(GiNaC::pow(root_expr, -1), reciprocal(root_expr), -m);
+      }
+      text = power(base, (m - 1) / 2) + " * " + root;  // x^k √x
+      ++ops().mul;
+    } else if (!e.is_integer()) {
+      throw std::logic_error("unsupported exponent");
+    } else if (e.is_negative()) {
+      const std::string r = reciprocal(base);
+      if (e == -1) return r;
+      return power_of_name(GiNaC::pow(base, -1), r, -e);
+    } else if (auto sq = square_of(base); sq && e.is_even()) {
+      return power(*sq, e / 2);  // (√Q)^(2k) = Q^k
+    } else if (sq) {
+      text = power(*sq, (e - 1) / 2) + " * " + named(base);  // (√Q)^(2k+1) = Q^k √Q
+      ++ops().mul;
+    } else if (e == 2 && uses_[key] <= 1) {
+      const std::string x = named(base);  // a lone square stays inline
+      ++ops().mul;
+      return x + " * " + x;
+    } else {
+      return power_of_name(base, named(base), e);
+    }
+    const std::string name = new_temp(text, key);
+    scopes_.back().memo[key] = name;
+    return name;
+  }
+
+  // y^k (k ≥ 2) where y is already named; memoises y^j along the way.
+  std::string power_of_name(const ex& y, const std::string& y_name, const numeric& k) {
+    if (k == 1) return y_name;
+    const ex key = GiNaC::pow(y, k);
+    if (const std::string* m = find_memo(key)) return *m;
+    std::string text;
+    if (k.is_even()) {
+      const std::string half = power_of_name(y, y_name, k / 2);
+      text = half + " * " + half;
+    } else {
+      text = power_of_name(y, y_name, k - 1) + " * " + y_name;
+    }
+    ++ops().mul;
+    const std::string name = new_temp(text, key);
+    scopes_.back().memo[key] = name;
+    return name;
+  }
+
+  // The expression that names √base: a declared root symbol, or base^(1/2).
+  ex root_expression(const ex& base) const {
+    if (is_a<symbol>(base)) {
+      auto it = program_.root_of_square_.find(GiNaC::ex_to<symbol>(base));
+      if (it != program_.root_of_square_.end() && names_.count(it->second)) return it->second;
+    }
+    return GiNaC::pow(base, GiNaC::numeric(1, 2));
+  }
+
+  std::string sqrt_of(const ex& base) {
+    const ex key = root_expression(base);
+    if (is_a<symbol>(key)) return named(key);
+    if (const std::string* m = find_memo(key)) return *m;
+    const std::string name = new_temp("sqrt(" + emit(base).s + ")", key);
+    ++ops().sqrt;
+    scopes_.back().memo[key] = name;
+    return name;
+  }
+
+  std::string reciprocal(const ex& base) {
+    const ex key = GiNaC::pow(base, -1);
+    if (const std::string* m = find_memo(key)) return *m;
+    std::string text;
+    if (auto root = root_of(base)) {
+      const std::string r = reciprocal(*root);  // 1/Q = (1/√Q)²: one division
+      text = r + " * " + r;
+      ++ops().mul;
+    } else {
+      text = "T(1) / " + as_divisor(emit(base));
+      ++ops().div;
+    }
+    const std::string name = new_temp(text, key);
+    scopes_.back().memo[key] = name;
+    return name;
+  }
+
+  std::optional<symbol> square_of(const ex& e) const {
+    if (!is_a<symbol>(e) || !names_.count(GiNaC::ex_to<symbol>(e))) return std::nullopt;
+    auto it = program_.square_of_root_.find(GiNaC::ex_to<symbol>(e));
+    if (it == program_.square_of_root_.end()) return std::nullopt;
+    return it->second;
+  }
+  std::optional<symbol> root_of(const ex& e) const {
+    if (!is_a<symbol>(e)) return std::nullopt;
+    auto it = program_.root_of_square_.find(GiNaC::ex_to<symbol>(e));
+    if (it == program_.root_of_square_.end() || !names_.count(it->second)) return std::nullopt;
+    // Only worth it when the root's reciprocal is needed anyway.
+    if (reciprocal_uses_.count(it->second) == 0) return std::nullopt;
+    return it->second;
+  }
+
+  // ---- run-time choice between forms
+  void emit_choice(const Choice& choice) {
+    const std::string target = choice.target.get_name();
+    line("T " + target + ";");
+    // Conditions are computed up front, so no branch hides another's temporaries.
+    std::vector<std::string> conditions;
+    for (size_t i = 0; i + 1 < choice.alternatives.size(); ++i)
+      conditions.push_back(named(choice.alternatives[i].condition));
+    OpCount longest;
+    for (size_t i = 0; i < choice.alternatives.size(); ++i) {
+      const Alternative& alt = choice.alternatives[i];
+      const bool last = i + 1 == choice.alternatives.size();
+      if (!last) {
+        line(std::string(i == 0 ? "if (" : "} else if (") + conditions[i] + " >= T(0)) {");
+      } else if (i > 0) {
+        line("} else {");
+      }
+      scopes_.emplace_back();
+      line("// " + alt.why);
+      for (const auto& [s, v] : alt.steps) define(s, v);
+      line(target + " = " + emit(alt.value).s + ";");
+      if (scopes_.back().ops.total() > longest.total()) longest = scopes_.back().ops;
+      scopes_.pop_back();
+    }
+    if (choice.alternatives.size() > 1) line("}");
+    ops() += longest;
+    names_[choice.target] = target;
+  }
+
+  const StraightLineProgram& program_;
+  std::ostringstream body_;
+  std::vector<Scope> scopes_;
+  std::map<ex, int, ex_is_less> uses_;
+  std::map<ex, int, ex_is_less> reciprocal_uses_;
+  std::map<symbol, std::string, ex_is_less> names_;
+  std::vector<bool> live_;
+  std::string pending_name_;
+  ex pending_value_;
+  int next_temp_ = 0;
+};
+
+EmittedCode StraightLineProgram::emit() const { return Emitter(*this).run(); }
+
+}  // namespace skelconv::codegen

@@ -1,0 +1,81 @@
+// codegen/straight_line_program.hpp — from GiNaC expressions to C++ statements.
+//
+// A StraightLineProgram is what one generated function computes: named inputs,
+// an ordered list of named intermediate quantities (each a GiNaC expression of
+// earlier ones), optional run-time choices between alternative forms, and the
+// outputs. `emit` turns it into C++ statements and counts their operations.
+//
+// What emission does, in order of importance:
+//  * common subexpressions: every sub-expression that occurs twice is computed
+//    once into a `const T tN`;
+//  * strength reduction: x^k (integer k) becomes products of memoised powers;
+//    x^(k/2) uses the single sqrt(x) of its base; all divisions by the same
+//    base share one reciprocal (a lone division stays a division);
+//  * operation counting, on the code actually written (rules in op_count.hpp).
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <skelconv/op_count.hpp>
+
+namespace skelconv::codegen {
+
+/// One alternative form of a quantity, taken when `condition` >= 0 (the last
+/// alternative of a Choice has no condition and is the fallback).
+struct Alternative {
+  GiNaC::ex condition;  ///< taken when condition >= 0 (ignored for the last)
+  std::string why;      ///< one line for the generated comment
+  std::vector<std::pair<GiNaC::symbol, GiNaC::ex>> steps;  ///< local definitions
+  GiNaC::ex value;      ///< the quantity in this form
+};
+
+/// A quantity with several forms chosen at run time (e.g. a stable rewrite
+/// near the segment's line, SPEC §2).
+struct Choice {
+  GiNaC::symbol target;
+  std::vector<Alternative> alternatives;
+};
+
+/// The code and the operation count of one emitted program.
+struct EmittedCode {
+  std::string body;  ///< C++ statements, indented by two spaces
+  OpCount ops;       ///< ops of the longest path through the choices
+};
+
+class StraightLineProgram {
+ public:
+  /// An input: a symbol read from a C++ expression such as `in.a[0]`.
+  void add_input(const GiNaC::symbol& s, std::string cpp);
+  /// An intermediate quantity, defined in terms of inputs and earlier ones.
+  void define(const GiNaC::symbol& s, const GiNaC::ex& value);
+  /// A quantity with alternative forms chosen at run time.
+  void choose(Choice choice);
+  /// An output: `cpp_lhs = value;` is emitted at the end.
+  void add_output(std::string cpp_lhs, const GiNaC::ex& value);
+  /// Declares that symbol `root` is √`square` (both defined), so the
+  /// emitter writes root² as `square` and 1/square as (1/root)².
+  void declare_square_root(const GiNaC::symbol& root, const GiNaC::symbol& square);
+
+  EmittedCode emit() const;
+
+ private:
+  struct Step {
+    enum class Kind { define, choose } kind;
+    GiNaC::symbol target;
+    GiNaC::ex value;  // define
+    Choice choice;    // choose
+  };
+  std::vector<std::pair<GiNaC::symbol, std::string>> inputs_;
+  std::vector<Step> steps_;
+  std::vector<std::pair<std::string, GiNaC::ex>> outputs_;
+  std::map<GiNaC::symbol, GiNaC::symbol, GiNaC::ex_is_less> root_of_square_;
+  std::map<GiNaC::symbol, GiNaC::symbol, GiNaC::ex_is_less> square_of_root_;
+
+  friend class Emitter;
+};
+
+}  // namespace skelconv::codegen
