@@ -1,0 +1,45 @@
+// skelconv/skeleton.hpp — a skeleton: a list of primitives whose fields add.
+//
+// Convolution is linear in the skeleton (Hubert 2012 §2: the field of a union
+// of skeleton pieces is the sum of their fields), so
+//     f(P) = Σ_k f_k(P),   ∇f(P) = Σ_k ∇f_k(P).
+// Primitives are a std::variant so that the polygon (SPEC §3) and SCALIS
+// (SPEC §4) primitives can be added as further alternatives; every
+// alternative provides value(), gradient() and value_and_gradient().
+#pragma once
+
+#include <cstddef>
+#include <variant>
+#include <vector>
+
+#include "skelconv/geometry.hpp"
+#include "skelconv/segment.hpp"
+
+namespace skelconv {
+
+/// One skeleton element. Add polygon / SCALIS primitives here.
+using Primitive = std::variant<Segment>;
+
+class Skeleton {
+ public:
+  Skeleton() = default;
+  explicit Skeleton(std::vector<Primitive> primitives) : primitives_(std::move(primitives)) {}
+
+  void add(Primitive primitive) { primitives_.push_back(std::move(primitive)); }
+  const std::vector<Primitive>& primitives() const { return primitives_; }
+  std::size_t size() const { return primitives_.size(); }
+  bool empty() const { return primitives_.empty(); }
+
+  /// Sum of the primitives' fields (0 for an empty skeleton). An inverse
+  /// primitive evaluated on its own segment contributes +inf (segment.hpp),
+  /// so the sum is +inf there. Errors of primitive k are rethrown located
+  /// at "primitives[k]".
+  double value(const Vec3& p) const;
+  Vec3 gradient(const Vec3& p) const;
+  FieldSample value_and_gradient(const Vec3& p) const;
+
+ private:
+  std::vector<Primitive> primitives_;
+};
+
+}  // namespace skelconv

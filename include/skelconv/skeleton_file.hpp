@@ -1,0 +1,35 @@
+// skelconv/skeleton_file.hpp — reading a Skeleton from JSON.
+//
+// Schema (documented for users in docs/cli.md):
+//
+//   {"primitives": [
+//     {"type": "segment", "a": [0,0,0], "b": [1,0,0], "weight": [1, 0.5],
+//      "kernel": {"family": "inverse", "degree": 3}},
+//     {"type": "segment", "a": [0,1,0], "b": [1,1,0],
+//      "kernel": {"family": "cauchy", "degree": 4, "s": 2.0}},
+//     {"type": "segment", "a": [0,2,0], "b": [1,2,1],
+//      "kernel": {"family": "compact", "degree": 6, "R": 1.5}}]}
+//
+// The reader is strict, because a skeleton that silently means something
+// else than what was written is worse than an error: unknown fields (a typo
+// such as "wieght"), duplicate fields, a kernel parameter of another family
+// ("R" on a Cauchy kernel), wrong types and numbers that overflow double are
+// all rejected. Every error is an InputError whose where() is the JSON path
+// of the culprit, e.g. `primitives[2].kernel.R: must be > 0, got -1`.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+#include "skelconv/skeleton.hpp"
+
+namespace skelconv {
+
+/// Parses the JSON text of a skeleton. Throws InputError.
+Skeleton parse_skeleton_json(std::string_view json_text);
+
+/// Reads and parses a skeleton file. Throws InputError whose message starts
+/// with the file name: `skel.json: primitives[2].kernel.R: must be > 0, got -1`.
+Skeleton load_skeleton_file(const std::filesystem::path& path);
+
+}  // namespace skelconv

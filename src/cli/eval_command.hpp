@@ -1,0 +1,28 @@
+// src/cli/eval_command.hpp — `skelconv eval SKELETON.json`.
+//
+// Reads query points from stdin, one "x y z" per line, and writes one line
+// "f gx gy gz" per point (printf "%.17g": round-trips every double; +inf is
+// printed "inf"). Blank lines are skipped and produce no output line.
+//
+// All-or-nothing: output is buffered and written only after every point has
+// been evaluated, so on any error stdout stays empty and stderr holds one
+// "skelconv: error: ..." line (exit codes in exit_status.hpp).
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace skelconv::cli {
+
+struct EvalOptions {
+  std::string skeleton_path;
+};
+
+/// Registers the `eval` subcommand on `app`, filling `options` when parsed.
+CLI::App* add_eval_command(CLI::App& app, EvalOptions& options);
+
+/// Runs `eval`; returns the process exit status.
+int run_eval(const EvalOptions& options);
+
+}  // namespace skelconv::cli

@@ -1,0 +1,71 @@
+// skelconv — command-line front end of the runtime.
+//
+// Subcommands live in their own files (eval_command.*); add new ones next to
+// it and register them below. The verifier is a separate executable (verify/).
+#include <exception>
+#include <string>
+#include <string_view>
+
+#include <CLI/CLI.hpp>
+
+#include "eval_command.hpp"
+#include "exit_status.hpp"
+
+#ifndef SKELCONV_VERSION
+#error "SKELCONV_VERSION must be defined by the build (src/CMakeLists.txt)"
+#endif
+
+namespace {
+
+/// "eval, ..." — the names of the subcommands, for messages.
+std::string subcommand_names(CLI::App& app) {
+  std::string names;
+  for (const CLI::App* subcommand : app.get_subcommands([](CLI::App*) { return true; })) {
+    names += (names.empty() ? "" : ", ") + subcommand->get_name();
+  }
+  return names;
+}
+
+/// True when the first argument is a word (not an option) that names no
+/// subcommand. CLI11 would report it as "A subcommand is required".
+bool first_argument_is_unknown_subcommand(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return false;
+  for (const CLI::App* subcommand : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (subcommand->check_name(argv[1])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace skelconv::cli;
+
+  CLI::App app("Closed-form convolution-surface fields of skeleton primitives.", "skelconv");
+  app.set_version_flag("--version", std::string("skelconv ") + SKELCONV_VERSION);
+  app.require_subcommand(1);
+
+  EvalOptions eval_options;
+  const CLI::App* eval = add_eval_command(app, eval_options);
+
+  if (first_argument_is_unknown_subcommand(app, argc, argv)) {
+    report_error(std::string("unknown subcommand \"") + argv[1] + "\" (available: " + subcommand_names(app) + ")");
+    return exit_bad_input;
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // --help and --version are "errors" with exit code 0: CLI11 prints them.
+    if (error.get_exit_code() == 0) return app.exit(error);
+    report_error(std::string(error.what()) + " (see skelconv --help)");
+    return exit_bad_input;
+  }
+
+  try {
+    if (eval->parsed()) return run_eval(eval_options);
+  } catch (const std::exception& error) {
+    report_error(std::string("internal error: ") + error.what());
+    return exit_evaluation_failed;
+  }
+  return exit_success;  // unreachable: require_subcommand(1)
+}

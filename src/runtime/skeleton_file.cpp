@@ -1,0 +1,301 @@
+// Implementation of skelconv/skeleton_file.hpp.
+//
+// Reading happens in two passes:
+//   1. nlohmann::json::parse builds the document. A callback follows the
+//      parser's position so that the two problems nlohmann reports without a
+//      location (a number overflowing double) or not at all (a duplicate key:
+//      it keeps the last one) are reported with their JSON path.
+//   2. read_skeleton walks the document, checking presence, types and
+//      allowed keys with the path of each value, then builds the primitives;
+//      the primitive constructors check the geometry and kernel values
+//      (Segment's InputError is relocated under "primitives[k]").
+#include "skelconv/skeleton_file.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <initializer_list>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "skelconv/errors.hpp"
+
+namespace skelconv {
+namespace {
+
+using Json = nlohmann::json;
+
+// ---------------------------------------------------------------------------
+// Pass 1: parsing, with the parser's position tracked as a JSON path.
+
+/// Follows nlohmann's parse events and knows, at any moment, the path of the
+/// value being parsed ("primitives[0].a[1]").
+class ParsePathTracker {
+ public:
+  /// The parse callback; always keeps the value. Throws InputError on a
+  /// duplicate key.
+  bool on_event(Json::parse_event_t event, const Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start:
+        levels_.push_back({true, {}, 0, {}});
+        break;
+      case Json::parse_event_t::array_start:
+        levels_.push_back({false, {}, 0, {}});
+        break;
+      case Json::parse_event_t::key: {
+        Level& object = levels_.back();
+        object.key = parsed.get<std::string>();
+        if (!object.keys_seen.insert(object.key).second) {
+          throw InputError(fmt::format("duplicate field \"{}\"", object.key), path(levels_.size() - 1));
+        }
+        break;
+      }
+      case Json::parse_event_t::object_end:
+      case Json::parse_event_t::array_end:
+        levels_.pop_back();
+        value_done();
+        break;
+      case Json::parse_event_t::value:
+        value_done();
+        break;
+    }
+    return true;
+  }
+
+  /// Path of the value being parsed now.
+  std::string current_path() const { return path(levels_.size()); }
+
+ private:
+  struct Level {
+    bool is_object;
+    std::string key;          // object: key of the current member
+    std::size_t index;        // array: index of the current element
+    std::set<std::string> keys_seen;
+  };
+
+  // A value inside an array is complete: the next one has the next index.
+  void value_done() {
+    if (!levels_.empty() && !levels_.back().is_object) ++levels_.back().index;
+  }
+
+  // Path through the first `depth` levels.
+  std::string path(std::size_t depth) const {
+    std::string text;
+    for (std::size_t k = 0; k < depth; ++k) {
+      const Level& level = levels_[k];
+      text = level.is_object ? join_location(text, level.key) : fmt::format("{}[{}]", text, level.index);
+    }
+    return text;
+  }
+
+  std::vector<Level> levels_;
+};
+
+/// nlohmann's what() without its "[json.exception.parse_error.101] " tag.
+std::string without_exception_tag(const char* what) {
+  std::string_view text(what);
+  if (text.starts_with("[json.exception.")) {
+    if (const std::size_t end = text.find("] "); end != std::string_view::npos) text.remove_prefix(end + 2);
+  }
+  return std::string(text);
+}
+
+Json parse_json(std::string_view text) {
+  ParsePathTracker tracker;
+  const Json::parser_callback_t callback = [&tracker](int /*depth*/, Json::parse_event_t event, Json& parsed) {
+    return tracker.on_event(event, parsed);
+  };
+  try {
+    return Json::parse(text.begin(), text.end(), callback);
+  } catch (const Json::parse_error& error) {
+    throw InputError("malformed JSON: " + without_exception_tag(error.what()));
+  } catch (const Json::out_of_range& error) {
+    // The only out_of_range the parser throws: "number overflow parsing '1e999'".
+    throw InputError(without_exception_tag(error.what()) + " (too large for double precision)",
+                     tracker.current_path());
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Pass 2: reading the document. Each reader takes the value and its path.
+
+/// A short rendering of a JSON value for messages: `"abc"`, `[1,2]`, `null`.
+std::string excerpt(const Json& value) {
+  std::string text = value.dump();
+  constexpr std::size_t max_length = 40;
+  if (text.size() > max_length) text = text.substr(0, max_length - 3) + "...";
+  return text;
+}
+
+/// "a string", "an array", ... for "must be X, got <a string> "abc"".
+std::string describe(const Json& value) {
+  switch (value.type()) {
+    case Json::value_t::object: return "an object";
+    case Json::value_t::array: return "an array " + excerpt(value);
+    case Json::value_t::string: return "a string " + excerpt(value);
+    case Json::value_t::boolean: return "a boolean " + excerpt(value);
+    case Json::value_t::null: return "null";
+    default: return excerpt(value);
+  }
+}
+
+std::string quoted_list(std::initializer_list<std::string_view> names) {
+  std::string text;
+  for (std::string_view name : names) text += fmt::format("{}\"{}\"", text.empty() ? "" : ", ", name);
+  return text;
+}
+
+void require_object(const Json& value, const std::string& path) {
+  if (!value.is_object()) throw InputError("must be an object, got " + describe(value), path);
+}
+
+/// Rejects every key not in `allowed`; `context` ends the message, e.g.
+/// " for the inverse family".
+void reject_unknown_keys(const Json& object, const std::string& path,
+                         std::initializer_list<std::string_view> allowed, std::string_view context = "") {
+  for (const auto& [key, value] : object.items()) {
+    bool known = false;
+    for (std::string_view name : allowed) known = known || key == name;
+    if (!known) {
+      throw InputError(fmt::format("unknown field \"{}\"{} (allowed: {})", key, context, quoted_list(allowed)), path);
+    }
+  }
+}
+
+const Json& require_field(const Json& object, const std::string& path, const char* key) {
+  const auto found = object.find(key);
+  if (found == object.end()) throw InputError(fmt::format("missing field \"{}\"", key), path);
+  return *found;
+}
+
+double read_number(const Json& value, const std::string& path) {
+  if (!value.is_number()) throw InputError("must be a number, got " + describe(value), path);
+  const double number = value.get<double>();
+  if (!std::isfinite(number)) throw InputError(fmt::format("must be a finite number, got {}", number), path);
+  return number;
+}
+
+int read_integer(const Json& value, const std::string& path) {
+  const double number = read_number(value, path);
+  if (number != std::floor(number)) throw InputError("must be an integer, got " + excerpt(value), path);
+  if (std::abs(number) > 1e9) throw InputError("is out of range, got " + excerpt(value), path);
+  return int(number);
+}
+
+std::string read_string(const Json& value, const std::string& path) {
+  if (!value.is_string()) throw InputError("must be a string, got " + describe(value), path);
+  return value.get<std::string>();
+}
+
+std::vector<double> read_numbers(const Json& value, const std::string& path) {
+  if (!value.is_array()) throw InputError("must be an array of numbers, got " + describe(value), path);
+  std::vector<double> numbers;
+  for (std::size_t k = 0; k < value.size(); ++k) {
+    numbers.push_back(read_number(value[k], fmt::format("{}[{}]", path, k)));
+  }
+  return numbers;
+}
+
+Vec3 read_point(const Json& value, const std::string& path) {
+  if (!value.is_array() || value.size() != 3) {
+    throw InputError("must be a point [x, y, z] (an array of 3 numbers), got " + describe(value), path);
+  }
+  const std::vector<double> xyz = read_numbers(value, path);
+  return {xyz[0], xyz[1], xyz[2]};
+}
+
+/// {"family": ..., "degree": ..., and "s" (cauchy) or "R" (compact)}.
+KernelSpec read_kernel(const Json& value, const std::string& path) {
+  require_object(value, path);
+  const std::string family_text = read_string(require_field(value, path, "family"), path + ".family");
+  const std::optional<KernelFamily> family = family_from_name(family_text);
+  if (!family) {
+    throw InputError(fmt::format("unknown family \"{}\" (supported: {})", family_text,
+                                 quoted_list({"inverse", "cauchy", "compact"})),
+                     path + ".family");
+  }
+  const std::string context = fmt::format(" for the {} family", family_text);
+  KernelSpec kernel;
+  kernel.family = *family;
+  switch (*family) {
+    case KernelFamily::inverse:
+      reject_unknown_keys(value, path, {"family", "degree"}, context);
+      break;
+    case KernelFamily::cauchy:
+      reject_unknown_keys(value, path, {"family", "degree", "s"}, context);
+      kernel.s = read_number(require_field(value, path, "s"), path + ".s");
+      break;
+    case KernelFamily::compact:
+      reject_unknown_keys(value, path, {"family", "degree", "R"}, context);
+      kernel.R = read_number(require_field(value, path, "R"), path + ".R");
+      break;
+  }
+  kernel.degree = read_integer(require_field(value, path, "degree"), path + ".degree");
+  return kernel;
+}
+
+/// {"type": "segment", "a": P, "b": P, "weight": [w0, ...] (optional), "kernel": K}.
+Segment read_segment(const Json& value, const std::string& path) {
+  reject_unknown_keys(value, path, {"type", "a", "b", "weight", "kernel"}, " for a segment");
+  const Vec3 a = read_point(require_field(value, path, "a"), path + ".a");
+  const Vec3 b = read_point(require_field(value, path, "b"), path + ".b");
+  std::vector<double> weight{1.0};
+  if (const auto found = value.find("weight"); found != value.end()) weight = read_numbers(*found, path + ".weight");
+  const KernelSpec kernel = read_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  try {
+    return Segment(a, b, kernel, weight);
+  } catch (const InputError& error) {
+    throw error.inside(path);
+  }
+}
+
+Primitive read_primitive(const Json& value, const std::string& path) {
+  require_object(value, path);
+  const std::string type = read_string(require_field(value, path, "type"), path + ".type");
+  if (type == "segment") return read_segment(value, path);
+  throw InputError(fmt::format("unknown primitive type \"{}\" (supported: {})", type, quoted_list({"segment"})),
+                   path + ".type");
+}
+
+Skeleton read_skeleton(const Json& document) {
+  if (!document.is_object()) {
+    throw InputError("the document must be an object {\"primitives\": [...]}, got " + describe(document));
+  }
+  reject_unknown_keys(document, "", {"primitives"});
+  const Json& primitives = require_field(document, "", "primitives");
+  if (!primitives.is_array()) throw InputError("must be an array, got " + describe(primitives), "primitives");
+  Skeleton skeleton;
+  for (std::size_t k = 0; k < primitives.size(); ++k) {
+    skeleton.add(read_primitive(primitives[k], fmt::format("primitives[{}]", k)));
+  }
+  return skeleton;
+}
+
+}  // namespace
+
+Skeleton parse_skeleton_json(std::string_view json_text) { return read_skeleton(parse_json(json_text)); }
+
+Skeleton load_skeleton_file(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code error_code;
+  if (std::filesystem::is_directory(path, error_code)) throw InputError("is a directory, not a skeleton file", name);
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError(fmt::format("cannot open: {}", std::strerror(errno)), name);
+  std::ostringstream contents;
+  contents << file.rdbuf();
+  if (file.bad()) throw InputError("cannot read the file", name);
+  try {
+    return parse_skeleton_json(contents.str());
+  } catch (const InputError& error) {
+    // Keep the JSON path inside the message: "skel.json: primitives[2]...".
+    throw InputError(error.what(), name);
+  }
+}
+
+}  // namespace skelconv

@@ -1,0 +1,177 @@
+// The JSON skeleton reader: the schema example loads, and every kind of bad
+// input is rejected with a message that names the problem and its JSON path.
+#include "skelconv/skeleton_file.hpp"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace skelconv {
+namespace {
+
+constexpr const char* schema_example = R"({"primitives": [
+  {"type": "segment", "a": [0,0,0], "b": [1,0,0], "weight": [1, 0.5],
+   "kernel": {"family": "inverse", "degree": 3}},
+  {"type": "segment", "a": [0,1,0], "b": [1,1,0],
+   "kernel": {"family": "cauchy", "degree": 4, "s": 2.0}},
+  {"type": "segment", "a": [0,2,0], "b": [1,2,1],
+   "kernel": {"family": "compact", "degree": 6, "R": 1.5}}]})";
+
+TEST(SkeletonFile, SchemaExampleLoads) {
+  const Skeleton skeleton = parse_skeleton_json(schema_example);
+  ASSERT_EQ(skeleton.size(), 3u);
+  const Segment& first = std::get<Segment>(skeleton.primitives()[0]);
+  EXPECT_EQ(first.kernel().family, KernelFamily::inverse);
+  EXPECT_EQ(first.kernel().degree, 3);
+  EXPECT_EQ(first.weight_degree(), 1);
+  EXPECT_EQ(first.b(), Vec3(1, 0, 0));
+  const Segment& second = std::get<Segment>(skeleton.primitives()[1]);
+  EXPECT_EQ(second.kernel().s, 2.0);
+  EXPECT_EQ(second.weight_degree(), 0);  // default weight [1]
+  const Segment& third = std::get<Segment>(skeleton.primitives()[2]);
+  EXPECT_EQ(third.kernel().family, KernelFamily::compact);
+  EXPECT_EQ(third.kernel().R, 1.5);
+  EXPECT_TRUE(std::isfinite(skeleton.value(Vec3(0.5, 0.5, 0.5))));
+}
+
+TEST(SkeletonFile, EmptyPrimitiveListIsAnEmptySkeleton) {
+  EXPECT_TRUE(parse_skeleton_json(R"({"primitives": []})").empty());
+}
+
+/// A segment primitive with `kernel` and extra members `extra` (",..."),
+/// wrapped as primitives[0].
+std::string one_segment(const std::string& kernel, const std::string& extra = "",
+                        const std::string& a = "[0,0,0]", const std::string& b = "[1,0,0]") {
+  return R"({"primitives": [{"type": "segment", "a": )" + a + R"(, "b": )" + b + R"(, "kernel": )" + kernel +
+         extra + "}]}";
+}
+
+/// Expects InputError whose full message is `message`.
+void expect_error(const std::string& json, const std::string& message) {
+  try {
+    parse_skeleton_json(json);
+    ADD_FAILURE() << "accepted: " << json;
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), message) << json;
+  }
+}
+
+const std::string inverse3 = R"({"family": "inverse", "degree": 3})";
+
+TEST(SkeletonFileErrors, MalformedJson) {
+  expect_error(R"({"primitives": [}")",
+               "malformed JSON: parse error at line 1, column 17: syntax error while parsing value - "
+               "unexpected '}'; expected '[', '{', or a literal");
+  expect_error("", "malformed JSON: parse error at line 1, column 1: syntax error while parsing value - "
+                   "unexpected end of input; expected '[', '{', or a literal");
+  expect_error("{\"primitives\": [],\n}",
+               "malformed JSON: parse error at line 2, column 1: syntax error while parsing object key - "
+               "unexpected '}'; expected string literal");
+}
+
+TEST(SkeletonFileErrors, DocumentShape) {
+  expect_error("[]", "the document must be an object {\"primitives\": [...]}, got an array []");
+  expect_error("{}", "missing field \"primitives\"");
+  expect_error(R"({"primitives": {}})", "primitives: must be an array, got an object");
+  expect_error(R"({"primitives": [], "comment": "x"})", "unknown field \"comment\" (allowed: \"primitives\")");
+  expect_error(R"({"primitives": [3]})", "primitives[0]: must be an object, got 3");
+}
+
+TEST(SkeletonFileErrors, MissingFields) {
+  expect_error(R"({"primitives": [{"a": [0,0,0]}]})", "primitives[0]: missing field \"type\"");
+  expect_error(R"({"primitives": [{"type": "segment", "b": [1,0,0], "kernel": {}}]})",
+               "primitives[0]: missing field \"a\"");
+  expect_error(R"({"primitives": [{"type": "segment", "a": [0,0,0], "b": [1,0,0]}]})",
+               "primitives[0]: missing field \"kernel\"");
+  expect_error(one_segment(R"({"family": "inverse"})"), "primitives[0].kernel: missing field \"degree\"");
+  expect_error(one_segment(R"({"degree": 3})"), "primitives[0].kernel: missing field \"family\"");
+  expect_error(one_segment(R"({"family": "cauchy", "degree": 3})"), "primitives[0].kernel: missing field \"s\"");
+  expect_error(one_segment(R"({"family": "compact", "degree": 3})"), "primitives[0].kernel: missing field \"R\"");
+}
+
+TEST(SkeletonFileErrors, UnknownNames) {
+  expect_error(one_segment(inverse3, R"(, "wieght": [1])"),
+               "primitives[0]: unknown field \"wieght\" for a segment "
+               "(allowed: \"type\", \"a\", \"b\", \"weight\", \"kernel\")");
+  expect_error(one_segment(R"({"family": "cauchy", "degree": 3, "s": 1, "R": 2})"),
+               "primitives[0].kernel: unknown field \"R\" for the cauchy family "
+               "(allowed: \"family\", \"degree\", \"s\")");
+  expect_error(one_segment(R"({"family": "inverse", "degree": 3, "s": 1})"),
+               "primitives[0].kernel: unknown field \"s\" for the inverse family (allowed: \"family\", \"degree\")");
+  expect_error(one_segment(R"({"family": "gaussian", "degree": 3})"),
+               "primitives[0].kernel.family: unknown family \"gaussian\" "
+               "(supported: \"inverse\", \"cauchy\", \"compact\")");
+  expect_error(R"({"primitives": [{"type": "triangle"}]})",
+               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\")");
+}
+
+TEST(SkeletonFileErrors, DuplicateFields) {
+  expect_error(one_segment(R"({"family": "inverse", "degree": 3, "degree": 4})"),
+               "primitives[0].kernel: duplicate field \"degree\"");
+  expect_error(R"({"primitives": [], "primitives": []})", "duplicate field \"primitives\"");
+}
+
+TEST(SkeletonFileErrors, WrongTypes) {
+  expect_error(one_segment(inverse3, "", R"("origin")"),
+               "primitives[0].a: must be a point [x, y, z] (an array of 3 numbers), got a string \"origin\"");
+  expect_error(one_segment(inverse3, "", "[0,0]"),
+               "primitives[0].a: must be a point [x, y, z] (an array of 3 numbers), got an array [0,0]");
+  expect_error(one_segment(inverse3, "", "[0,null,0]"), "primitives[0].a[1]: must be a number, got null");
+  expect_error(one_segment(R"({"family": "inverse", "degree": "3"})"),
+               "primitives[0].kernel.degree: must be a number, got a string \"3\"");
+  expect_error(one_segment(R"({"family": "inverse", "degree": 3.5})"),
+               "primitives[0].kernel.degree: must be an integer, got 3.5");
+  expect_error(one_segment(R"({"family": 1, "degree": 3})"), "primitives[0].kernel.family: must be a string, got 1");
+  expect_error(one_segment(inverse3, R"(, "weight": 1)"),
+               "primitives[0].weight: must be an array of numbers, got 1");
+  expect_error(one_segment(inverse3, R"(, "weight": [1, true])"),
+               "primitives[0].weight[1]: must be a number, got a boolean true");
+}
+
+TEST(SkeletonFileErrors, NumbersThatOverflowDouble) {
+  // JSON has no NaN or Infinity literal; 1e999 is the way to write one.
+  expect_error(one_segment(inverse3, "", "[0, 1e999, 0]"),
+               "primitives[0].a[1]: number overflow parsing '1e999' (too large for double precision)");
+  expect_error(one_segment(R"({"family": "compact", "degree": 4, "R": -1e400})"),
+               "primitives[0].kernel.R: number overflow parsing '-1e400' (too large for double precision)");
+}
+
+TEST(SkeletonFileErrors, ValuesCheckedByTheSegment) {
+  expect_error(one_segment(inverse3, "", "[1,2,3]", "[1,2,3]"),
+               "primitives[0]: degenerate segment: a and b are the same point (1, 2, 3)");
+  expect_error(one_segment(R"({"family": "compact", "degree": 6, "R": -1})"),
+               "primitives[0].kernel.R: must be > 0, got -1");
+  expect_error(one_segment(R"({"family": "cauchy", "degree": 6, "s": 0})"),
+               "primitives[0].kernel.s: must be > 0, got 0");
+  expect_error(one_segment(inverse3, R"(, "weight": [1, 2, 3, 4, 5])"),
+               "primitives[0].weight: at most 4 coefficients (w(t) of degree <= 3), got 5");
+  try {
+    parse_skeleton_json(one_segment(R"({"family": "inverse", "degree": 99})"));
+    ADD_FAILURE();
+  } catch (const InputError& error) {
+    EXPECT_TRUE(std::string(error.what()).starts_with(
+        "primitives[0].kernel.degree: unsupported degree 99 for the inverse family; supported: "))
+        << error.what();
+  }
+}
+
+TEST(SkeletonFileErrors, ErrorsInLaterPrimitivesNameTheirIndex) {
+  const std::string json = R"({"primitives": [
+    {"type": "segment", "a": [0,0,0], "b": [1,0,0], "kernel": {"family": "inverse", "degree": 3}},
+    {"type": "segment", "a": [0,1,0], "b": [1,1,0], "kernel": {"family": "cauchy", "degree": 4, "s": 2.0}},
+    {"type": "segment", "a": [0,2,0], "b": [1,2,1], "kernel": {"family": "compact", "degree": 6, "R": -1}}]})";
+  expect_error(json, "primitives[2].kernel.R: must be > 0, got -1");
+}
+
+TEST(SkeletonFileErrors, FilesThatCannotBeRead) {
+  try {
+    load_skeleton_file("/nonexistent/skeleton.json");
+    ADD_FAILURE();
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), "/nonexistent/skeleton.json: cannot open: No such file or directory");
+  }
+  EXPECT_THROW(load_skeleton_file("/"), InputError);
+}
+
+}  // namespace
+}  // namespace skelconv
