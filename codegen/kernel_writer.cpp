@@ -46,7 +46,8 @@ std::string ops_initializer(const OpCount& o) {
 
 struct EmittedKernel {
   SegmentKernelSpec spec;
-  OpCount ops[3];  // f, grad, f_and_grad
+  OpCount ops[3];          // f, grad, f_and_grad: generic path
+  OpCount ops_longest[3];  // the same, longest path
 };
 
 std::string function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {
@@ -55,14 +56,16 @@ std::string function_text(const SegmentKernelSpec& spec, int which, const Emitte
   static const char* kWhat[] = {"the field", "its gradient ∇_P f", "the field and its gradient"};
   os << "/// " << kWhat[which] << ", where\n"
      << "///     " << spec.equation() << "\n"
-     << "/// Operations: " << ops_text(code.ops) << ".\n"
+     << "/// Operations: " << ops_text(code.ops) << " (generic form).\n";
+  if (!(code.ops_longest == code.ops)) os << "/// Longest path: " << ops_text(code.ops_longest) << ".\n";
+  os
      << "template <class T>\n";
   switch (which) {
     case 0: os << "T " << name << "(const SegmentInput<T>& in) {\n"; break;
     case 1: os << "std::array<T, 3> " << name << "(const SegmentInput<T>& in) {\n"; break;
     default: os << "T " << name << "(const SegmentInput<T>& in, std::array<T, 3>& grad) {\n"; break;
   }
-  os << "  using std::asinh, std::atan2, std::log, std::max, std::sqrt;\n";
+  os << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n";
   if (which != 1) os << "  T f;\n";
   if (which == 1) os << "  std::array<T, 3> grad;\n";
   os << code.body;
@@ -84,11 +87,12 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
   std::map<KernelFamily, std::string> family_bodies;
 
   for (const SegmentKernelSpec& spec : request.segment_kernels) {
-    EmittedKernel k{spec, {}};
+    EmittedKernel k{spec, {}, {}};
     std::string& body = family_bodies[spec.family];
     for (int which = 0; which < 3; ++which) {
       const EmittedCode code = build_segment_program(spec, kOutputs[which]).emit();
       k.ops[which] = code.ops;
+      k.ops_longest[which] = code.ops_longest;
       body += function_text(spec, which, code);
     }
     kernels.push_back(k);
@@ -100,7 +104,7 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
     std::ostringstream os;
     os << file_header(file, "segment kernels of the " + std::string(family_name(family)) + " family.", request)
        << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
-       << "#include <skelconv/segment_input.hpp>\n\n"
+       << "#include <skelconv/stable_recurrence.hpp>\n#include <skelconv/segment_input.hpp>\n\n"
        << "namespace skelconv::generated {\n\n"
        << body << "}  // namespace skelconv::generated\n";
     write_file(folder / file, os.str());
@@ -143,13 +147,17 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
 
   // The operation counts, machine-readable.
   std::ostringstream csv;
-  csv << "function,family,degree,weight_degree,outputs,add,mul,div,sqrt,atan,log,other\n";
+  csv << "function,family,degree,weight_degree,outputs,add,mul,div,sqrt,atan,log,other,"
+         "longest_add,longest_mul,longest_div,longest_sqrt,longest_atan,longest_log,longest_other\n";
   for (const EmittedKernel& k : kernels)
     for (int which = 0; which < 3; ++which) {
       const OpCount& o = k.ops[which];
       csv << k.spec.name() << '_' << kFunctionSuffix[which] << ',' << family_name(k.spec.family) << ','
           << k.spec.degree << ',' << k.spec.weight_degree << ',' << kFunctionSuffix[which] << ',' << o.add << ','
-          << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan << ',' << o.log << ',' << o.other << '\n';
+          << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan << ',' << o.log << ',' << o.other;
+      const OpCount& l = k.ops_longest[which];
+      csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
+          << l.other << '\n';
     }
   write_file(folder / "opcounts.csv", csv.str());
 }

@@ -1,7 +1,9 @@
 // codegen/segment_families.cpp — see segment_families.hpp.
 #include "segment_families.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 #include "segment_moments.hpp"
@@ -19,6 +21,30 @@ namespace {
 // and must not go negative under a square root.
 DECLARE_FUNCTION_1P(nonnegative_part)
 REGISTER_FUNCTION(nonnegative_part, dummy())
+// min(x, y) and max(x, y), written as such in C++.
+DECLARE_FUNCTION_2P(minimum)
+REGISTER_FUNCTION(minimum, dummy())
+DECLARE_FUNCTION_2P(maximum)
+REGISTER_FUNCTION(maximum, dummy())
+
+// Where the downward recurrence takes over (segment_moments.hpp). Going up
+// from J_1, J_2 multiplies rounding errors by about 1/ρ a step, with
+// ρ = D / (a q_near), when P is beyond an end; going down (J_downward) costs
+// more the closer ρ is to 1. So: up while the growth over the (top−1)/2
+// steps stays within `upward_growth_budget`, down below that.
+struct StabilityRule {
+  ex rho_max;  ///< exact rational, written into the code
+  std::string rho_text;
+};
+
+StabilityRule stability_rule(int top_index) {
+  constexpr double upward_growth_budget = 300;  // ~3e-14 relative error at worst
+  const double upward_steps = std::max(1.0, (top_index - 1) / 2.0);
+  const double rho = std::pow(upward_growth_budget, -1.0 / upward_steps);
+  const int percent = std::max(1, static_cast<int>(std::lround(rho * 100)));  // a reproducible rational
+  return {numeric(percent, 100), std::to_string(percent / 100) + "." + (percent % 100 < 10 ? "0" : "") +
+                                     std::to_string(percent % 100)};
+}
 
 std::string weight_text(int weight_degree) {
   if (weight_degree == 0) return "w0";
@@ -36,20 +62,72 @@ class SegmentProgramBuilder {
     read_inputs();
     define_geometry();
     define_quadratic();
-    MomentRecurrence moments(spec_.family == KernelFamily::compact ? compact_symbols() : infinite_support_symbols());
-
     const int n = kernel_index();
-    if (outputs != SegmentOutputs::gradient) {
-      program_.add_output("f", length_ * weighted_moment(moments, 0, n));
+    const bool value = outputs != SegmentOutputs::gradient;
+    const bool gradient = outputs != SegmentOutputs::value;
+    // What the outputs need: F = Σ w_k M_{k,n} for f = |AB| F, and
+    // G_ap = Σ w_k M_{k,n+2}, G_ab = Σ w_k M_{k+1,n+2} for
+    // ∇f = −n α |AB| (AP G_ap − AB G_ab) (SPEC §2).
+    std::vector<symbol> targets;
+    if (value) targets.emplace_back("F");
+    if (gradient) {
+      targets.emplace_back("G_ap");
+      targets.emplace_back("G_ab");
     }
-    if (outputs != SegmentOutputs::value) {
-      // ∇f = −n α |AB| (AP Σ w_k M_{k,n+2} − AB Σ w_k M_{k+1,n+2}), SPEC §2.
-      const ex g_ap = define("g_ap", weighted_moment(moments, 0, n + 2));
-      const ex g_ab = define("g_ab", weighted_moment(moments, 1, n + 2));
-      const ex factor = define("g_factor", -n * alpha_ * length_);
-      for (int i = 0; i < 3; ++i) {
-        program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
+    auto values_from = [&](MomentRecurrence& moments) {
+      std::vector<ex> v;
+      if (value) v.push_back(weighted_moment(moments, 0, n));
+      if (gradient) {
+        v.push_back(weighted_moment(moments, 0, n + 2));
+        v.push_back(weighted_moment(moments, 1, n + 2));
       }
+      return v;
+    };
+
+    Choice choice{targets, {}};
+    if (spec_.family == KernelFamily::compact) {
+      const MomentSymbols symbols = compact_symbols();
+      // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
+      const int bottom = n - 2 * ((spec_.weight_degree + 1) / 2) - 2;
+      const StabilityRule rule = stability_rule(-bottom + 1);
+      MomentRecurrence upward(symbols, {RecurrenceDirection::Mode::up_from_bottom, bottom});
+      choice.alternatives.push_back(
+          {{symbols.lo.slope * symbols.hi.slope, a_ * maximum(symbols.lo.q, symbols.hi.q) - rule.rho_max * D_},
+           "vertex of q outside [t0, t1], q_e ≤ " + rule.rho_text + " q_max: recurrence (1) upwards from J_" +
+               std::to_string(bottom) + " = J_upward_compact(…)",
+           {},
+           values_from(upward)});
+      MomentRecurrence downward(symbols);
+      choice.alternatives.push_back({{}, "recurrence (1) downwards from J_0, J_1", {}, values_from(downward)});
+      choice.generic = 1;
+    } else {
+      const MomentSymbols symbols = infinite_support_symbols();
+      const int top_index = gradient ? n + 2 : n;
+      if (top_index >= 2) {
+        // Beyond an end and near the line: recurrence (1) downwards (segment_moments.hpp).
+        const StabilityRule rule = stability_rule(top_index);
+        MomentRecurrence downward(symbols, {RecurrenceDirection::Mode::down_from_top, top_index});
+        const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
+        choice.alternatives.push_back(
+            {{-b_ * a_minus_b_, rule.rho_max * a_ * near_q - D_},
+             "P beyond an end, D ≤ " + rule.rho_text + " a min(q(0), q(1)): recurrence (1) downwards from J_" +
+                 std::to_string(top_index) + " = J_downward(…)",
+             {},
+             values_from(downward)});
+      }
+      MomentRecurrence upward(symbols);
+      choice.alternatives.push_back({{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, values_from(upward)});
+      choice.generic = choice.alternatives.size() - 1;
+    }
+    program_.choose(std::move(choice));
+
+    if (value) program_.add_output("f", length_ * targets[0]);
+    if (gradient) {
+      const symbol& g_ap = targets[value ? 1 : 0];
+      const symbol& g_ab = targets[value ? 2 : 1];
+      const ex factor = define("g_factor", -n * alpha_ * length_);
+      for (int i = 0; i < 3; ++i)
+        program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
     }
     return std::move(program_);
   }
@@ -153,7 +231,7 @@ class SegmentProgramBuilder {
     m.c = c_;
     m.D = D_;
     const bool odd = spec_.degree % 2 != 0;
-    const ex a_minus_b = define("a_minus_b", -alpha_ * ab_bp_);  // a − b = −α AB·BP
+    const ex a_minus_b = a_minus_b_ = define("a_minus_b", -alpha_ * ab_bp_);  // a − b = −α AB·BP
     const ex q1 = define("q1", beta_ + alpha_ * bp_bp_);        // q(1) = β + α|BP|²
     const symbol r0("r0"), r1("r1");
     m.lo = {0, c_, r0, -b_};
@@ -169,7 +247,10 @@ class SegmentProgramBuilder {
       // atans of Hubert §3.1 summed into one, exact for all P off the line.
       const ex c_minus_b = define("c_minus_b", beta_ + alpha_ * ap_bp_);  // c − b = β + α AP·BP
       const ex root_D = pow(D_, numeric(1, 2));
-      m.J2 = define("J2", GiNaC::atan2(root_D, c_minus_b) / root_D);
+      // Only the upward recurrence reads it: it is 0/0 on the line.
+      symbol J2("J2");
+      upward_steps_.emplace_back(J2, GiNaC::atan2(root_D, c_minus_b) / root_D);
+      m.J2 = J2;
       m.log_ratio = define("log_ratio", GiNaC::log(q1 / c_));
     }
     return m;
@@ -183,11 +264,11 @@ class SegmentProgramBuilder {
   ex define_J1_infinite(const ex& a_minus_b, const symbol& r0, const symbol& r1) {
     const ex root_a = pow(a_, numeric(1, 2));
     symbol X("X");
-    Choice choice{X, {}};
-    choice.alternatives.push_back({b_ * a_minus_b, "P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D",
-                                   {}, root_a * (a_minus_b * r0 + b_ * r1) / D_});
-    choice.alternatives.push_back({0, "P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)",
-                                   {}, root_a * (a_minus_b - b_) / (a_minus_b * r0 - b_ * r1)});
+    Choice choice{{X}, {}};
+    choice.alternatives.push_back({{b_ * a_minus_b}, "P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D",
+                                   {}, {root_a * (a_minus_b * r0 + b_ * r1) / D_}});
+    choice.alternatives.push_back({{}, "P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)",
+                                   {}, {root_a * (a_minus_b - b_) / (a_minus_b * r0 - b_ * r1)}});
     program_.choose(std::move(choice));
     return define("J1", GiNaC::asinh(X) / root_a);
   }
@@ -232,7 +313,8 @@ class SegmentProgramBuilder {
   std::array<ex, 3> ab_, ap_, bp_;
   ex ab_ab_, ab_ap_, ap_ap_, cross_cross_, bp_bp_, ab_bp_, ap_bp_, length_;
   ex alpha_, beta_, inv_R_;
-  ex a_, b_, c_, D_;
+  ex a_, b_, c_, D_, a_minus_b_;
+  std::vector<std::pair<symbol, ex>> upward_steps_;  // definitions only the upward form reads
 };
 
 }  // namespace

@@ -5,7 +5,14 @@
 
 namespace skelconv::codegen {
 
+// Stand-ins for the helpers of include/skelconv/stable_recurrence.hpp.
+DECLARE_FUNCTION_7P(J_downward)
+REGISTER_FUNCTION(J_downward, dummy())
+DECLARE_FUNCTION_7P(J_upward_compact)
+REGISTER_FUNCTION(J_upward_compact, dummy())
+
 using GiNaC::ex;
+using Mode = RecurrenceDirection::Mode;
 using GiNaC::numeric;
 using GiNaC::pow;
 
@@ -23,14 +30,33 @@ ex MomentRecurrence::recurrence_boundary(int n) const {
 ex MomentRecurrence::J(int n) {
   if (n == 0) return s_.hi.t - s_.lo.t;
   if (n == 1) return s_.J1;
-  if (n == 2) return s_.J2;
-  if (n >= 3) {
-    // Upwards: J_n = ([…] − a(3−n) J_{n−2}) / ((n−2) D).
-    return (recurrence_boundary(n) - s_.a * (3 - n) * J(n - 2)) / ((n - 2) * s_.D);
+  if (auto it = J_memo_.find(n); it != J_memo_.end()) return it->second;
+  ex value;
+  const int anchor = direction_.anchor;
+  if (direction_.mode == Mode::down_from_top && n >= 2) {
+    if (n > anchor) throw std::logic_error("J above the downward anchor");
+    value = n == anchor ? J_downward(n, s_.a, s_.D, s_.lo.slope, s_.lo.q, s_.hi.slope, s_.hi.q)
+                        : up_index_to_lower(n + 2);
+  } else if (direction_.mode == Mode::up_from_bottom && n <= -1) {
+    if (n < anchor) throw std::logic_error("J below the upward anchor");
+    value = n == anchor ? J_upward_compact(n, s_.a, s_.D, s_.lo.slope, s_.lo.q, s_.hi.slope, s_.hi.q)
+                        : lower_index_to_up(n);
+  } else if (n == 2) {
+    value = s_.J2;
+  } else if (n >= 3) {
+    value = lower_index_to_up(n);
+  } else {
+    value = up_index_to_lower(n + 2);
   }
-  // Downwards (n ≤ −1), recurrence (1) at index m = n + 2 ≤ 1:
-  // J_n = ([…]_m − (m−2) D J_m) / (a (3−m)).
-  const int m = n + 2;
+  J_memo_.emplace(n, value);
+  return value;
+}
+
+// Recurrence (1) at index m: (m−2) D J_m + a (3−m) J_{m−2} = [(a t − b) q^(1−m/2)].
+ex MomentRecurrence::lower_index_to_up(int m) {
+  return (recurrence_boundary(m) - s_.a * (3 - m) * J(m - 2)) / ((m - 2) * s_.D);
+}
+ex MomentRecurrence::up_index_to_lower(int m) {
   return (recurrence_boundary(m) - (m - 2) * s_.D * J(m)) / (s_.a * (3 - m));
 }
 

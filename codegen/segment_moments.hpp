@@ -18,6 +18,21 @@
 //  * M_{k+2,n} from t² = (q + 2bt − c)/a:
 //        a M_{k+2,n} = M_{k,n−2} + 2b M_{k+1,n} − c M_{k,n}.
 //
+// Recurrence (1) has two stable directions (the theory of minimal solutions
+// of three-term recurrences, as in Miller's algorithm):
+//  * upwards from J_1, J_2 when P projects onto the segment, or sits far
+//    from its line compared with its distance beyond the nearer end: there
+//    J_n shrinks no faster than the homogeneous solution;
+//  * downwards, where P projects beyond an end and lies close to the line:
+//    there the upward recurrence divides a cancelling difference by D → 0
+//    (it loses every digit on the line), while going down multiplies errors
+//    by about ρ = D / (a q_near) < 1 at every step. The highest J_n a kernel
+//    needs comes from skelconv::J_downward (include/skelconv/
+//    stable_recurrence.hpp, Miller's algorithm with an adaptive start),
+//    the lower ones from the recurrence taken downwards.
+// Compact kernels (n ≤ 0) mirror this: downwards from J_0, J_1 when the
+// vertex of q lies inside the clipped interval, and upwards from
+// skelconv::J_upward_compact at the lowest index when it lies outside.
 // The base symbols (J_1, J_2, the log ratio, q and √q at the ends) are
 // defined by the family (segment_families.cpp), which chooses stable forms
 // for them.
@@ -48,9 +63,20 @@ struct MomentSymbols {
   GiNaC::ex log_ratio;  ///< ln(q(t1)/q(t0))   (for M_{1,2})
 };
 
+/// How recurrence (1) is run (J_0 and J_1 always come from their own forms).
+struct RecurrenceDirection {
+  enum class Mode {
+    from_base,       ///< up from J_1, J_2 for n ≥ 3; down from J_0, J_1 for n ≤ −1
+    down_from_top,   ///< J_anchor = J_downward(…), then down to n ≥ 2
+    up_from_bottom,  ///< J_anchor = J_upward_compact(…), then up to n ≤ −1
+  } mode = Mode::from_base;
+  int anchor = 0;
+};
+
 class MomentRecurrence {
  public:
-  explicit MomentRecurrence(MomentSymbols symbols) : s_(std::move(symbols)) {}
+  explicit MomentRecurrence(MomentSymbols symbols, RecurrenceDirection direction = {})
+      : s_(std::move(symbols)), direction_(direction) {}
 
   /// J_n = ∫_{t0}^{t1} q^(-n/2) dt.
   GiNaC::ex J(int n);
@@ -62,9 +88,15 @@ class MomentRecurrence {
   GiNaC::ex half_power(const QuadraticEnd& end, int e) const;
   /// [(a t − b) q^(1−n/2)]_{t0}^{t1}: the right-hand side of recurrence (1).
   GiNaC::ex recurrence_boundary(int n) const;
+  /// J_m from J_{m−2} by recurrence (1) at index m.
+  GiNaC::ex lower_index_to_up(int m);
+  /// J_{m−2} from J_m by recurrence (1) at index m.
+  GiNaC::ex up_index_to_lower(int m);
 
   MomentSymbols s_;
+  RecurrenceDirection direction_;
   std::map<std::pair<int, int>, GiNaC::ex> memo_;
+  std::map<int, GiNaC::ex> J_memo_;
 };
 
 }  // namespace skelconv::codegen

@@ -22,13 +22,15 @@ void StraightLineProgram::add_input(const symbol& s, std::string cpp) {
 }
 
 void StraightLineProgram::define(const symbol& s, const ex& value) {
-  steps_.push_back({Step::Kind::define, s, value, {}});
+  steps_.push_back({Step::Kind::define, {s}, value, {}});
 }
 
 void StraightLineProgram::choose(Choice choice) {
   if (choice.alternatives.empty()) throw std::logic_error("choose: no alternative");
-  const symbol target = choice.target;
-  steps_.push_back({Step::Kind::choose, target, 0, std::move(choice)});
+  for (const auto& alt : choice.alternatives)
+    if (alt.values.size() != choice.targets.size()) throw std::logic_error("choose: one value per target");
+  const auto targets = choice.targets;
+  steps_.push_back({Step::Kind::choose, targets, 0, std::move(choice)});
 }
 
 void StraightLineProgram::add_output(std::string cpp_lhs, const ex& value) {
@@ -79,19 +81,20 @@ class Emitter {
       const auto& step = program_.steps_[i];
       if (!live_[i]) continue;
       if (step.kind == StraightLineProgram::Step::Kind::define) {
-        define(step.target, step.value);
+        define(step.targets[0], step.value);
       } else {
         emit_choice(step.choice);
       }
     }
     for (const auto& [lhs, value] : program_.outputs_) line(lhs + " = " + emit(value).s + ";");
-    return {body_.str(), scopes_.back().ops};
+    return {body_.str(), scopes_.back().generic, scopes_.back().longest};
   }
 
  private:
   struct Scope {
     std::map<ex, std::string, ex_is_less> memo;  // emitted sub-expressions
-    OpCount ops;
+    OpCount generic;  // ops since the scope began, on the generic path
+    OpCount longest;  // ops since the scope began, on the longest path
   };
 
   // ---- pre-pass: which steps the outputs need (dead steps are not written)
@@ -106,15 +109,16 @@ class Emitter {
     live_.assign(program_.steps_.size(), false);
     for (size_t i = program_.steps_.size(); i-- > 0;) {
       const auto& step = program_.steps_[i];
-      if (!needed.count(step.target)) continue;
+      if (std::none_of(step.targets.begin(), step.targets.end(), [&](const symbol& t) { return needed.count(t); }))
+        continue;
       live_[i] = true;
       if (step.kind == StraightLineProgram::Step::Kind::define) {
         collect_symbols(step.value, needed);
       } else {
         for (const auto& alt : step.choice.alternatives) {
-          collect_symbols(alt.condition, needed);
+          for (const ex& c : alt.conditions) collect_symbols(c, needed);
           for (const auto& [s, v] : alt.steps) collect_symbols(v, needed);
-          collect_symbols(alt.value, needed);
+          for (const ex& v : alt.values) collect_symbols(v, needed);
         }
       }
     }
@@ -130,9 +134,9 @@ class Emitter {
         visit_all(step.value);
       } else {
         for (const auto& alt : step.choice.alternatives) {
-          visit_all(alt.condition);
+          for (const ex& c : alt.conditions) visit_all(c);
           for (const auto& [s, v] : alt.steps) visit_all(v);
-          visit_all(alt.value);
+          for (const ex& v : alt.values) visit_all(v);
         }
       }
     }
@@ -163,7 +167,10 @@ class Emitter {
 
   // ---- output helpers
   void line(const std::string& s) { body_ << std::string(2 * (scopes_.size()), ' ') << s << '\n'; }
-  OpCount& ops() { return scopes_.back().ops; }
+  void count(int OpCount::*field) {
+    ++(scopes_.back().generic.*field);
+    ++(scopes_.back().longest.*field);
+  }
 
   const std::string* find_memo(const ex& e) const {
     for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
@@ -252,7 +259,7 @@ class Emitter {
         s = negative ? "-" + as_factor(term) : term.s;
       } else {
         s += negative ? " - " + as_factor(term) : " + " + term.s;
-        ++ops().add;
+        count(&OpCount::add);
       }
     }
     return {s, Text::sum};
@@ -290,7 +297,7 @@ class Emitter {
         s = factor;
       } else {
         s += " * " + factor;
-        ++ops().mul;
+        count(&OpCount::mul);
       }
     };
     if (coefficient != 1) multiply(constant(coefficient).s);
@@ -298,7 +305,7 @@ class Emitter {
     if (s.empty()) s = "T(1)";
     for (const ex& d : denominator) {
       s += " / " + as_divisor(emit(d));
-      ++ops().div;
+      count(&OpCount::div);
     }
     return {negative ? "-" + s : s, Text::product};
   }
@@ -308,9 +315,15 @@ class Emitter {
     std::string args;
     for (size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + emit(e.op(i)).s;
     if (fn == "nonnegative_part") return {"max(T(0), T(" + args + "))", Text::atom};  // not counted
-    if (fn == "atan2" || fn == "atan") ++ops().atan;
-    else if (fn == "log" || fn == "asinh") ++ops().log;
-    else ++ops().other;
+    if (fn == "J_downward" || fn == "J_upward_compact") {  // include/skelconv/stable_recurrence.hpp
+      count(&OpCount::other);
+      return {fn + "<T>(" + args + ")", Text::atom};
+    }
+    if (fn == "maximum") return {"max(T(" + emit(e.op(0)).s + "), T(" + emit(e.op(1)).s + "))", Text::atom};
+    if (fn == "minimum") return {"min(T(" + emit(e.op(0)).s + "), T(" + emit(e.op(1)).s + "))", Text::atom};
+    if (fn == "atan2" || fn == "atan") count(&OpCount::atan);
+    else if (fn == "log" || fn == "asinh") count(&OpCount::log);
+    else count(&OpCount::other);
     return {fn + "(" + args + ")", Text::atom};
   }
 
@@ -330,7 +343,7 @@ class Emitter {
         return power_of_name(GiNaC::pow(root_expr, -1), reciprocal(root_expr), -m);
       }
       text = power(base, (m - 1) / 2) + " * " + root;  // x^k √x
-      ++ops().mul;
+      count(&OpCount::mul);
     } else if (!e.is_integer()) {
       throw std::logic_error("unsupported exponent");
     } else if (e.is_negative()) {
@@ -341,10 +354,10 @@ class Emitter {
       return power(*sq, e / 2);  // (√Q)^(2k) = Q^k
     } else if (sq) {
       text = power(*sq, (e - 1) / 2) + " * " + named(base);  // (√Q)^(2k+1) = Q^k √Q
-      ++ops().mul;
+      count(&OpCount::mul);
     } else if (e == 2 && uses_[key] <= 1) {
       const std::string x = named(base);  // a lone square stays inline
-      ++ops().mul;
+      count(&OpCount::mul);
       return x + " * " + x;
     } else {
       return power_of_name(base, named(base), e);
@@ -366,7 +379,7 @@ class Emitter {
     } else {
       text = power_of_name(y, y_name, k - 1) + " * " + y_name;
     }
-    ++ops().mul;
+    count(&OpCount::mul);
     const std::string name = new_temp(text, key);
     scopes_.back().memo[key] = name;
     return name;
@@ -386,7 +399,7 @@ class Emitter {
     if (is_a<symbol>(key)) return named(key);
     if (const std::string* m = find_memo(key)) return *m;
     const std::string name = new_temp("sqrt(" + emit(base).s + ")", key);
-    ++ops().sqrt;
+    count(&OpCount::sqrt);
     scopes_.back().memo[key] = name;
     return name;
   }
@@ -398,10 +411,10 @@ class Emitter {
     if (auto root = root_of(base)) {
       const std::string r = reciprocal(*root);  // 1/Q = (1/√Q)²: one division
       text = r + " * " + r;
-      ++ops().mul;
+      count(&OpCount::mul);
     } else {
       text = "T(1) / " + as_divisor(emit(base));
-      ++ops().div;
+      count(&OpCount::div);
     }
     const std::string name = new_temp(text, key);
     scopes_.back().memo[key] = name;
@@ -425,31 +438,37 @@ class Emitter {
 
   // ---- run-time choice between forms
   void emit_choice(const Choice& choice) {
-    const std::string target = choice.target.get_name();
-    line("T " + target + ";");
+    for (const symbol& t : choice.targets) line("T " + t.get_name() + ";");
     // Conditions are computed up front, so no branch hides another's temporaries.
     std::vector<std::string> conditions;
-    for (size_t i = 0; i + 1 < choice.alternatives.size(); ++i)
-      conditions.push_back(named(choice.alternatives[i].condition));
-    OpCount longest;
+    for (size_t i = 0; i + 1 < choice.alternatives.size(); ++i) {
+      std::string all;
+      for (const ex& c : choice.alternatives[i].conditions)
+        all += (all.empty() ? "" : " && ") + named(c) + " >= T(0)";
+      conditions.push_back(all);
+    }
+    OpCount longest, generic;
     for (size_t i = 0; i < choice.alternatives.size(); ++i) {
       const Alternative& alt = choice.alternatives[i];
       const bool last = i + 1 == choice.alternatives.size();
       if (!last) {
-        line(std::string(i == 0 ? "if (" : "} else if (") + conditions[i] + " >= T(0)) {");
+        line(std::string(i == 0 ? "if (" : "} else if (") + conditions[i] + ") {");
       } else if (i > 0) {
         line("} else {");
       }
       scopes_.emplace_back();
       line("// " + alt.why);
       for (const auto& [s, v] : alt.steps) define(s, v);
-      line(target + " = " + emit(alt.value).s + ";");
-      if (scopes_.back().ops.total() > longest.total()) longest = scopes_.back().ops;
+      for (size_t j = 0; j < choice.targets.size(); ++j)
+        line(choice.targets[j].get_name() + " = " + emit(alt.values[j]).s + ";");
+      if (scopes_.back().longest.total() > longest.total()) longest = scopes_.back().longest;
+      if (i == choice.generic) generic = scopes_.back().generic;
       scopes_.pop_back();
     }
     if (choice.alternatives.size() > 1) line("}");
-    ops() += longest;
-    names_[choice.target] = target;
+    scopes_.back().generic += generic;
+    scopes_.back().longest += longest;
+    for (const symbol& t : choice.targets) names_[t] = t.get_name();
   }
 
   const StraightLineProgram& program_;

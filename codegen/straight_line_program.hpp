@@ -24,26 +24,29 @@
 
 namespace skelconv::codegen {
 
-/// One alternative form of a quantity, taken when `condition` >= 0 (the last
-/// alternative of a Choice has no condition and is the fallback).
+/// One alternative form of some quantities. It is taken when every
+/// condition is >= 0; the last alternative of a Choice is the fallback and
+/// has no conditions.
 struct Alternative {
-  GiNaC::ex condition;  ///< taken when condition >= 0 (ignored for the last)
-  std::string why;      ///< one line for the generated comment
+  std::vector<GiNaC::ex> conditions;
+  std::string why;  ///< one line for the generated comment
   std::vector<std::pair<GiNaC::symbol, GiNaC::ex>> steps;  ///< local definitions
-  GiNaC::ex value;      ///< the quantity in this form
+  std::vector<GiNaC::ex> values;  ///< one per Choice target
 };
 
-/// A quantity with several forms chosen at run time (e.g. a stable rewrite
+/// Quantities with several forms chosen at run time (e.g. stable rewrites
 /// near the segment's line, SPEC §2).
 struct Choice {
-  GiNaC::symbol target;
+  std::vector<GiNaC::symbol> targets;
   std::vector<Alternative> alternatives;
+  size_t generic = 0;  ///< the alternative taken for P in general position
 };
 
 /// The code and the operation count of one emitted program.
 struct EmittedCode {
-  std::string body;  ///< C++ statements, indented by two spaces
-  OpCount ops;       ///< ops of the longest path through the choices
+  std::string body;     ///< C++ statements, indented by two spaces
+  OpCount ops;          ///< ops on the generic path (Choice::generic everywhere)
+  OpCount ops_longest;  ///< ops on the longest path through the choices
 };
 
 class StraightLineProgram {
@@ -65,9 +68,9 @@ class StraightLineProgram {
  private:
   struct Step {
     enum class Kind { define, choose } kind;
-    GiNaC::symbol target;
-    GiNaC::ex value;  // define
-    Choice choice;    // choose
+    std::vector<GiNaC::symbol> targets;  // one for define
+    GiNaC::ex value;                     // define
+    Choice choice;                       // choose
   };
   std::vector<std::pair<GiNaC::symbol, std::string>> inputs_;
   std::vector<Step> steps_;

@@ -1,0 +1,108 @@
+// skelconv/stable_recurrence.hpp — J_n where recurrence (1) is unstable.
+//
+// Generated segment kernels evaluate J_n = ∫_{t0}^{t1} q(t)^(-n/2) dt,
+// q = a t² − 2 b t + c, D = ac − b² ≥ 0 (SPEC §2), by recurrence (1) of
+// Hubert & Cani. Upwards from J_1, J_2 it divides by D at every step. When P
+// projects beyond an end of the segment and lies close to its line, J_n is
+// the *minimal* solution of the recurrence: going up multiplies rounding
+// errors by ~1/ρ a step (ρ = D / (a q_near) < 1), going down multiplies them
+// by ~ρ. This header evaluates the top J_n of a generated kernel downwards,
+// in the manner of Miller's algorithm: start from J_top = 0 high enough that
+// ρ^steps is below rounding, then apply
+//
+//     J_{m−2} = ([(a t − b) q^(1−m/2)]_{t0}^{t1} − (m−2) D J_m) / (a (3−m)).
+//
+// The values are carried scaled, Ĵ_m = J_m q_near^((m−1)/2) with q_near the
+// smaller end value of q, so that the high powers of q never overflow; the
+// far end enters through (q_near/q_far)^((m−2)/2) ≤ 1. With D = 0 (P on the
+// line beyond an end) one step is exact.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace skelconv {
+
+/// Relative size below which the neglected start value no longer matters.
+inline constexpr double downward_recurrence_tolerance = 1e-18;
+/// Upper bound on the number of steps (reached only for ρ > 0.7).
+inline constexpr int downward_recurrence_max_steps = 120;
+
+/// J_n (n ≥ 2) over [t0, t1] for P beyond an end, from the ends' slopes
+/// s = a t − b and values q. Requires a > 0, D ≥ 0, q0, q1 > 0.
+template <class T>
+T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const T& slope1, const T& q1) {
+  using std::ceil;
+  using std::log;
+  using std::pow;
+  using std::sqrt;
+  const bool lo_is_near = q0 <= q1;
+  const T q_near = lo_is_near ? q0 : q1;
+  const T ratio = lo_is_near ? q0 / q1 : q1 / q0;  // q_near / q_far ≤ 1
+  // Per step, the start error shrinks by about rho = D/(a q_near) < 1.
+  const T rho = D / (a * q_near);
+  int steps = 1;
+  if (rho > T(0)) {
+    const T wanted = ceil(log(T(downward_recurrence_tolerance)) / log(rho));
+    steps = wanted < T(downward_recurrence_max_steps) ? std::max(1, static_cast<int>(wanted))
+                                                      : downward_recurrence_max_steps;
+  }
+  const int top = n + 2 * steps;
+  const T d_scaled = D / q_near;
+  const T inv_root_near = T(1) / sqrt(q_near);
+  // far_power = ratio^((m−2)/2) for the current m, starting at m = top.
+  T far_power = pow(sqrt(ratio), top - 2);
+  const T inv_ratio = T(1) / ratio;
+  T J_scaled = 0;  // Ĵ_top
+  for (int m = top; m > n; m -= 2) {
+    // B̂_m = [(a t − b) q^(1−m/2)]_{t0}^{t1} q_near^((m−3)/2)
+    const T B_scaled = lo_is_near ? (slope1 * far_power - slope0) * inv_root_near
+                                  : (slope1 - slope0 * far_power) * inv_root_near;
+    J_scaled = (B_scaled - T(m - 2) * d_scaled * J_scaled) / (a * T(3 - m));
+    far_power *= inv_ratio;
+  }
+  return J_scaled * pow(inv_root_near, n - 1);
+}
+
+/// J_n (n ≤ 0) for a compact kernel, q = 1 − |P − Γ(t)|²/R² (a < 0, D < 0),
+/// when the vertex t* = b/a of q lies outside [t0, t1] (P projects beyond an
+/// end of the clipped segment). The generated code otherwise goes down from
+/// J_0, J_1, which multiplies errors by about q_max/q_e > 1 a step
+/// (q_max = D/a the vertex value, q_e the larger end value); here J_n is the
+/// minimal solution going down, so it is computed upwards from J_bottom = 0,
+/// where each step multiplies the start error by about q_e/q_max < 1:
+///
+///     J_m = ([(a t − b) q^(1−m/2)]_{t0}^{t1} − a (3−m) J_{m−2}) / ((m−2) D).
+///
+/// Scaled as Ĵ_m = J_m q_e^(m/2) so that high powers of q never underflow.
+template <class T>
+T J_upward_compact(int n, const T& a, const T& D, const T& slope0, const T& q0, const T& slope1, const T& q1) {
+  using std::ceil;
+  using std::log;
+  using std::pow;
+  using std::sqrt;
+  const bool lo_is_larger = q0 >= q1;
+  const T q_e = lo_is_larger ? q0 : q1;
+  const T ratio = lo_is_larger ? q1 / q0 : q0 / q1;  // smaller / larger end value, in [0, 1]
+  const T lambda = a * q_e / D;                       // q_e / q_max < 1
+  int steps = downward_recurrence_max_steps;
+  if (lambda <= T(0)) {
+    steps = 1;
+  } else if (lambda < T(1)) {
+    const T wanted = ceil(log(T(downward_recurrence_tolerance)) / log(lambda));
+    if (wanted < T(downward_recurrence_max_steps)) steps = std::max(1, static_cast<int>(wanted));
+  }
+  const int bottom = n - 2 * steps;
+  const T root_ratio = sqrt(ratio);
+  T J_scaled = 0;  // Ĵ_bottom
+  for (int m = bottom + 2; m <= n; m += 2) {
+    // B̂_m = [(a t − b) q^(1−m/2)]_{t0}^{t1} q_e^(m/2), with the smaller end
+    // entering as ratio^(1−m/2) ≤ 1 (0 at a clipped end).
+    const T small_power = pow(root_ratio, 2 - m);
+    const T B_scaled = lo_is_larger ? q_e * (slope1 * small_power - slope0) : q_e * (slope1 - slope0 * small_power);
+    J_scaled = (B_scaled - a * T(3 - m) * q_e * J_scaled) / (T(m - 2) * D);
+  }
+  return J_scaled * pow(sqrt(q_e), -n);
+}
+
+}  // namespace skelconv
