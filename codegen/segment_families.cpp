@@ -27,24 +27,13 @@ REGISTER_FUNCTION(minimum, dummy())
 DECLARE_FUNCTION_2P(maximum)
 REGISTER_FUNCTION(maximum, dummy())
 
-// Where the downward recurrence takes over (segment_moments.hpp). Going up
-// from J_1, J_2 multiplies rounding errors by about 1/ρ a step, with
-// ρ = D / (a q_near), when P is beyond an end; going down (J_downward) costs
-// more the closer ρ is to 1. So: up while the growth over the (top−1)/2
-// steps stays within `upward_growth_budget`, down below that.
-struct StabilityRule {
-  ex rho_max;  ///< exact rational, written into the code
-  std::string rho_text;
-};
-
-StabilityRule stability_rule(int top_index) {
-  constexpr double upward_growth_budget = 300;  // ~3e-14 relative error at worst
-  const double upward_steps = std::max(1.0, (top_index - 1) / 2.0);
-  const double rho = std::pow(upward_growth_budget, -1.0 / upward_steps);
-  const int percent = std::max(1, static_cast<int>(std::lround(rho * 100)));  // a reproducible rational
-  return {numeric(percent, 100), std::to_string(percent / 100) + "." + (percent % 100 < 10 ? "0" : "") +
-                                     std::to_string(percent % 100)};
-}
+// Beyond an end of the segment, with ρ = D / (a q_near) the per-step factor
+// of segment_moments.hpp: below kBeyondEndRho the recurrence runs downwards
+// (at most ~116 steps reach 1e-18), above it upwards from J_1, J_2, where the
+// growth (1/ρ)^((n−1)/2) stays below 21 for n ≤ 18, and the moment formulas
+// lose at most a factor ~n·√(1−ρ) each. Compact kernels use the same bound
+// on q_e/q_max (J_upward_compact).
+const ex kBeyondEndRho = numeric(7, 10);
 
 std::string weight_text(int weight_degree) {
   if (weight_degree == 0) return "w0";
@@ -89,34 +78,63 @@ class SegmentProgramBuilder {
       const MomentSymbols symbols = compact_symbols();
       // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
       const int bottom = n - 2 * ((spec_.weight_degree + 1) / 2) - 2;
-      const StabilityRule rule = stability_rule(-bottom + 1);
       MomentRecurrence upward(symbols, {RecurrenceDirection::Mode::up_from_bottom, bottom});
       choice.alternatives.push_back(
-          {{symbols.lo.slope * symbols.hi.slope, a_ * maximum(symbols.lo.q, symbols.hi.q) - rule.rho_max * D_},
-           "vertex of q outside [t0, t1], q_e ≤ " + rule.rho_text + " q_max: recurrence (1) upwards from J_" +
+          {{symbols.lo.slope * symbols.hi.slope, a_ * maximum(symbols.lo.q, symbols.hi.q) - kBeyondEndRho * D_},
+           "vertex of q outside [t0, t1], q_e < 7/10 q_max: recurrence (1) upwards from J_" +
                std::to_string(bottom) + " = J_upward_compact(…)",
            {},
-           values_from(upward)});
+           values_from(upward),
+           {}});
       MomentRecurrence downward(symbols);
-      choice.alternatives.push_back({{}, "recurrence (1) downwards from J_0, J_1", {}, values_from(downward)});
+      choice.alternatives.push_back({{}, "recurrence (1) downwards from J_0, J_1", {}, values_from(downward), {}});
       choice.generic = 1;
     } else {
       const MomentSymbols symbols = infinite_support_symbols();
       const int top_index = gradient ? n + 2 : n;
       if (top_index >= 2) {
-        // Beyond an end and near the line: recurrence (1) downwards (segment_moments.hpp).
-        const StabilityRule rule = stability_rule(top_index);
-        MomentRecurrence downward(symbols, {RecurrenceDirection::Mode::down_from_top, top_index});
+        // Beyond an end, with ρ = D/(a min(q(0), q(1))) below `kBeyondEndRho`:
+        // recurrence (1) downwards (segment_moments.hpp, stable_recurrence.hpp).
         const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
-        choice.alternatives.push_back(
-            {{-b_ * a_minus_b_, rule.rho_max * a_ * near_q - D_},
-             "P beyond an end, D ≤ " + rule.rho_text + " a min(q(0), q(1)): recurrence (1) downwards from J_" +
-                 std::to_string(top_index) + " = J_downward(…)",
-             {},
-             values_from(downward)});
+        Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_}, "", {}, {}, {}};
+        const int lowest = value ? n : n + 2;
+        const int k_max = spec_.weight_degree + (gradient ? 1 : 0);
+        if (lowest >= k_max + 2) {
+          // Every moment from segment_moments_beyond_end, centred at the near end.
+          ArrayCall call{"M_beyond", "segment_moments_beyond_end<T>",
+                         {std::to_string(lowest), std::to_string(top_index), std::to_string(k_max)},
+                         {a_, b_, D_, symbols.lo.q, symbols.hi.q}, {}};
+          auto moment = [&](int k, int m) {
+            const size_t index = static_cast<size_t>(((m - lowest) / 2) * (k_max + 1) + k);
+            while (call.elements.size() <= index)
+              call.elements.emplace_back("M_beyond_" + std::to_string(call.elements.size()));
+            return ex(call.elements[index]);
+          };
+          for (int m = lowest; m <= top_index; m += 2)
+            for (int k = 0; k <= k_max; ++k) moment(k, m);
+          auto weighted = [&](int shift, int m) {
+            ex sum = 0;
+            for (int k = 0; k <= spec_.weight_degree; ++k) sum += w_[k] * moment(k + shift, m);
+            return sum;
+          };
+          if (value) beyond.values.push_back(weighted(0, n));
+          if (gradient) {
+            beyond.values.push_back(weighted(0, n + 2));
+            beyond.values.push_back(weighted(1, n + 2));
+          }
+          beyond.calls.push_back(std::move(call));
+          beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, "
+                       "recurrence (1) downwards (segment_moments_beyond_end)";
+        } else {
+          MomentRecurrence downward(symbols, {RecurrenceDirection::Mode::down_from_top, top_index});
+          beyond.values = values_from(downward);
+          beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_" +
+                       std::to_string(top_index) + " = J_downward(…)";
+        }
+        choice.alternatives.push_back(std::move(beyond));
       }
       MomentRecurrence upward(symbols);
-      choice.alternatives.push_back({{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, values_from(upward)});
+      choice.alternatives.push_back({{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, values_from(upward), {}});
       choice.generic = choice.alternatives.size() - 1;
     }
     program_.choose(std::move(choice));
@@ -266,9 +284,9 @@ class SegmentProgramBuilder {
     symbol X("X");
     Choice choice{{X}, {}};
     choice.alternatives.push_back({{b_ * a_minus_b}, "P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D",
-                                   {}, {root_a * (a_minus_b * r0 + b_ * r1) / D_}});
+                                   {}, {root_a * (a_minus_b * r0 + b_ * r1) / D_}, {}});
     choice.alternatives.push_back({{}, "P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)",
-                                   {}, {root_a * (a_minus_b - b_) / (a_minus_b * r0 - b_ * r1)}});
+                                   {}, {root_a * (a_minus_b - b_) / (a_minus_b * r0 - b_ * r1)}, {}});
     program_.choose(std::move(choice));
     return define("J1", GiNaC::asinh(X) / root_a);
   }

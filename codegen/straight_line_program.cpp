@@ -53,7 +53,7 @@ struct Text {
 
 // An identifier or `in.x[i]`: needs no temporary of its own.
 bool is_plain_name(const std::string& s) {
-  static const std::regex name(R"([A-Za-z_][A-Za-z0-9_]*(\.[a-z]+\[[0-9]\])?)");
+  static const std::regex name(R"([A-Za-z_][A-Za-z0-9_]*(\.[a-z]+)?(\[[0-9]+\])?)");
   return std::regex_match(s, name);
 }
 
@@ -118,6 +118,8 @@ class Emitter {
         for (const auto& alt : step.choice.alternatives) {
           for (const ex& c : alt.conditions) collect_symbols(c, needed);
           for (const auto& [s, v] : alt.steps) collect_symbols(v, needed);
+          for (const ArrayCall& call : alt.calls)
+            for (const ex& a : call.args) collect_symbols(a, needed);
           for (const ex& v : alt.values) collect_symbols(v, needed);
         }
       }
@@ -136,6 +138,8 @@ class Emitter {
         for (const auto& alt : step.choice.alternatives) {
           for (const ex& c : alt.conditions) visit_all(c);
           for (const auto& [s, v] : alt.steps) visit_all(v);
+          for (const ArrayCall& call : alt.calls)
+            for (const ex& a : call.args) visit_all(a);
           for (const ex& v : alt.values) visit_all(v);
         }
       }
@@ -436,6 +440,18 @@ class Emitter {
     return it->second;
   }
 
+  // ---- helper calls that fill an array
+  void emit_array_call(const ArrayCall& call) {
+    std::string args;
+    for (const std::string& a : call.fixed_args) args += a + ", ";
+    for (const ex& a : call.args) args += emit(a).s + ", ";
+    line("std::array<T, " + std::to_string(call.elements.size()) + "> " + call.array + ";");
+    line(call.function + "(" + args + call.array + ".data());");
+    count(&OpCount::other);
+    for (size_t i = 0; i < call.elements.size(); ++i)
+      names_[call.elements[i]] = call.array + "[" + std::to_string(i) + "]";
+  }
+
   // ---- run-time choice between forms
   void emit_choice(const Choice& choice) {
     for (const symbol& t : choice.targets) line("T " + t.get_name() + ";");
@@ -459,6 +475,7 @@ class Emitter {
       scopes_.emplace_back();
       line("// " + alt.why);
       for (const auto& [s, v] : alt.steps) define(s, v);
+      for (const ArrayCall& call : alt.calls) emit_array_call(call);
       for (size_t j = 0; j < choice.targets.size(); ++j)
         line(choice.targets[j].get_name() + " = " + emit(alt.values[j]).s + ";");
       if (scopes_.back().longest.total() > longest.total()) longest = scopes_.back().longest;

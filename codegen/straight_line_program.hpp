@@ -24,6 +24,16 @@
 
 namespace skelconv::codegen {
 
+/// A call of a hand-written helper that fills an array, whose elements are
+/// then symbols of the program: `std::array<T, N> array; function(args…, array.data());`
+struct ArrayCall {
+  std::string array;                     ///< C++ name of the array
+  std::string function;                  ///< e.g. segment_moments_beyond_end<T>
+  std::vector<std::string> fixed_args;   ///< leading literal arguments (integers)
+  std::vector<GiNaC::ex> args;           ///< then these expressions
+  std::vector<GiNaC::symbol> elements;   ///< bound to array[0], array[1], …
+};
+
 /// One alternative form of some quantities. It is taken when every
 /// condition is >= 0; the last alternative of a Choice is the fallback and
 /// has no conditions.
@@ -32,6 +42,7 @@ struct Alternative {
   std::string why;  ///< one line for the generated comment
   std::vector<std::pair<GiNaC::symbol, GiNaC::ex>> steps;  ///< local definitions
   std::vector<GiNaC::ex> values;  ///< one per Choice target
+  std::vector<ArrayCall> calls;   ///< helper calls, after the steps
 };
 
 /// Quantities with several forms chosen at run time (e.g. stable rewrites

@@ -64,6 +64,81 @@ T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const 
   return J_scaled * pow(inv_root_near, n - 1);
 }
 
+/// The weighted moments M_{k,m} = ∫_0^1 t^k q^(−m/2) dt, k = 0…k_max, at the
+/// levels m = m_lo, m_lo + 2, …, m_hi, for P beyond an end of [0, 1] (the
+/// infinite-support kernels). Written to out[((m − m_lo)/2)(k_max + 1) + k].
+/// Requires m_lo ≥ k_max + 2, a > 0, D ≥ 0, q0 = q(0) > 0, q1 = q(1) > 0.
+///
+/// Why not J_n and a M_{1,n} = b J_n + [q^(1−n/2)]/(2−n)? Beyond an end the
+/// kernel's mass sits at that end and the two terms cancel to ~1/n² of their
+/// size, more for each further moment. Instead:
+///  * the parameter is σ, the distance in t from the near end (σ = t beyond
+///    A, σ = 1 − t beyond B), so that σ^k is small where the mass is;
+///  * differentiating σ^k (a σ − b) q^(1−m/2) gives, for every k,
+///        a (3−m+k) M_{k,m−2} = [σ^k (aσ − b) q^(1−m/2)]_0^1 + k b M_{k−1,m−2} − (m−2) D M_{k,m},
+///    run downwards from M_{k,top} = 0 as in J_downward; beyond the near end
+///    every term on the right has the sign of the left (b < 0), so nothing
+///    cancels;
+///  * beyond B the t-moments are recovered from t^k = (1 − σ)^k, a sum
+///    whose terms shrink (σ is small where the mass is).
+template <class T>
+void segment_moments_beyond_end(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& D, const T& q0,
+                                const T& q1, T* out) {
+  using std::ceil;
+  using std::log;
+  using std::pow;
+  using std::sqrt;
+  constexpr int max_k = 8;
+  T M[max_k + 1];  // M̂_{k,m} at the current level
+  const bool beyond_B = q1 < q0;
+  const T b_near = beyond_B ? a - b : b;  // b in the σ parameter
+  const T q_near = beyond_B ? q1 : q0;
+  const T ratio = beyond_B ? q1 / q0 : q0 / q1;  // q_near / q_far ≤ 1
+  const T rho = D / (a * q_near);
+  int steps = 1;
+  if (rho > T(0)) {
+    const T wanted = ceil(log(T(downward_recurrence_tolerance)) / log(rho));
+    steps = wanted < T(downward_recurrence_max_steps) ? std::max(1, static_cast<int>(wanted))
+                                                      : downward_recurrence_max_steps;
+  }
+  const int top = m_hi + 2 * steps;
+  const T d_scaled = D / q_near;
+  const T inv_root_near = T(1) / sqrt(q_near);
+  const T far_slope = (a - b_near) * inv_root_near;   // (aσ − b) at σ = 1, scaled
+  const T near_slope = -b_near * inv_root_near;       // (aσ − b) at σ = 0, scaled
+  T far_power = pow(sqrt(ratio), top - 2);            // ratio^((m−2)/2)
+  const T inv_ratio = T(1) / ratio;
+  for (int k = 0; k <= k_max; ++k) M[k] = T(0);     // M̂_{k,top}
+  for (int m = top; m > m_lo; m -= 2) {
+    // Level m − 2 from level m, k upwards (M̂_{k−1,m−2} is already new).
+    const T boundary_far = far_slope * far_power;
+    for (int k = 0; k <= k_max; ++k) {
+      const T boundary = k == 0 ? boundary_far - near_slope : boundary_far;
+      const T lower = k == 0 ? T(0) : T(k) * b_near * M[k - 1];
+      M[k] = (boundary + lower - T(m - 2) * d_scaled * M[k]) / (a * T(3 - m + k));
+    }
+    far_power *= inv_ratio;
+    const int level = m - 2;
+    if (level <= m_hi && (level - m_lo) % 2 == 0) {
+      const T unscale = pow(inv_root_near, level - 1);
+      T* row = out + ((level - m_lo) / 2) * (k_max + 1);
+      for (int k = 0; k <= k_max; ++k) {
+        if (!beyond_B) {
+          row[k] = M[k] * unscale;
+        } else {
+          // t^k = (1 − σ)^k = Σ_j C(k,j) (−σ)^j
+          T sum = 0, binomial = 1;
+          for (int j = 0; j <= k; ++j) {
+            sum += (j % 2 == 0 ? binomial : -binomial) * M[j];
+            binomial = binomial * T(k - j) / T(j + 1);
+          }
+          row[k] = sum * unscale;
+        }
+      }
+    }
+  }
+}
+
 /// J_n (n ≤ 0) for a compact kernel, q = 1 − |P − Γ(t)|²/R² (a < 0, D < 0),
 /// when the vertex t* = b/a of q lies outside [t0, t1] (P projects beyond an
 /// end of the clipped segment). The generated code otherwise goes down from
