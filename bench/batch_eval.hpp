@@ -1,0 +1,168 @@
+// bench/batch_eval.hpp — a batch API: one segment, many query points in
+// structure-of-arrays layout, f and ∇f for all of them (issue 5, §2 fourth
+// bullet). Proposed here, in bench/, until the runtime adopts it.
+//
+// How it vectorises: the loop body is the generated scalar function itself,
+// instantiated on double and inlined (the kernel is a template argument, not
+// a pointer, and the batch function is `flatten`ed: the kernels are too big
+// for GCC's inlining heuristics). GCC's loop vectoriser then turns a
+// straight-line kernel into 4-wide AVX2 code, given the bench flags
+// (bench/CMakeLists.txt):
+//   * sqrt and division vectorise when errno is off (-fno-math-errno);
+//   * atan2, log and asinh go to glibc's vector math library (libmvec) once
+//     they are declared `simd` (below; glibc itself only does so under
+//     -ffast-math, which we do not want for these cancellation-sensitive
+//     forms);
+//   * an `if` between two straight-line forms, std::max and `c ? a : b`
+//     become blends, provided the arms may be executed speculatively
+//     (-fno-trapping-math);
+//   * the per-lane SegmentInput is rebuilt field by field from locals
+//     (detail::Uniforms): an aggregate copy, or a load from `segment` after a
+//     store to the outputs (possible aliasing), stops the vectoriser.
+// What does NOT vectorise: a kernel with a loop inside one of its branches.
+// Since the stable forms (commit e5ec091) every generated kernel has one:
+// J_downward / J_upward_compact (include/skelconv/stable_recurrence.hpp),
+// with a data-dependent trip count, on the "P beyond an end, near the line"
+// branch. GCC then keeps the loop scalar ("loop nest containing two or more
+// consecutive inner loops"), and the batch path is only the scalar code
+// inlined. docs/bench.md, "What the generator must emit", says what would
+// make it vectorise again.
+//
+// Preconditions (as for the generated scalar code): points are not on an
+// inverse-kernel segment. The compact path clips branch-free: every lane
+// computes its clip interval with min/max, the lanes whose clip is empty are
+// evaluated on a harmless interval and their result is selected to 0.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "skelconv/segment_input.hpp"
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__FAST_MATH__) && \
+    !defined(SKELCONV_BATCH_NO_LIBMVEC)
+// libmvec (glibc ≥ 2.35 for atan2/asinh) has 2-, 4- and 8-wide variants of
+// these; declaring them `simd` lets the vectoriser call them. Link -lmvec.
+extern "C" {
+__attribute__((__simd__("notinbranch"))) double atan2(double, double) noexcept;
+__attribute__((__simd__("notinbranch"))) double log(double) noexcept;
+__attribute__((__simd__("notinbranch"))) double asinh(double) noexcept;
+}
+#endif
+
+// The generated kernels are too large for GCC's inlining heuristics; flatten
+// inlines them (and everything they call) into the batch loop, which the
+// vectoriser needs: a call in the loop body stops it.
+#if defined(__GNUC__)
+#define SKELCONV_BATCH_FLATTEN __attribute__((flatten))
+#else
+#define SKELCONV_BATCH_FLATTEN
+#endif
+
+namespace skelconv::bench {
+
+/// Query points, structure of arrays: point k is (x[k], y[k], z[k]).
+struct PointsSoA {
+  const double* x;
+  const double* y;
+  const double* z;
+  std::size_t n;
+};
+
+/// Outputs, structure of arrays: f[k] and ∇f = (gx[k], gy[k], gz[k]).
+struct FieldSoA {
+  double* f;
+  double* gx;
+  double* gy;
+  double* gz;
+};
+
+namespace detail {
+/// The per-segment fields of a SegmentInput as scalars. The loops rebuild
+/// each lane's SegmentInput field by field from these locals: copying
+/// `segment` inside the loop would reload it after every store to the
+/// outputs (they may alias it, as far as the compiler knows), and under
+/// `#pragma omp simd` the aggregate copy itself is rejected ("more than one
+/// data ref in stmt").
+struct Uniforms {
+  double a0, a1, a2, b0, b1, b2, w0, w1, w2, w3, s, R;
+  explicit Uniforms(const SegmentInput<double>& in)
+      : a0(in.a[0]), a1(in.a[1]), a2(in.a[2]), b0(in.b[0]), b1(in.b[1]), b2(in.b[2]),
+        w0(in.w[0]), w1(in.w[1]), w2(in.w[2]), w3(in.w[3]), s(in.s), R(in.R) {}
+  void fill(SegmentInput<double>& in) const {
+    in.a = {a0, a1, a2};
+    in.b = {b0, b1, b2};
+    in.w = {w0, w1, w2, w3};
+    in.s = s;
+    in.R = R;
+  }
+};
+}  // namespace detail
+
+/// f and ∇f at every point for an inverse or Cauchy kernel. `segment` holds
+/// A, B, the weight and s; its p is ignored. Kernel: a generated
+/// f_and_grad function on double, e.g.
+///     f_and_grad_batch<&generated::segment_cauchy_i4_w1_f_and_grad<double>>(in, pts, out);
+template <auto Kernel>
+SKELCONV_BATCH_FLATTEN void f_and_grad_batch(const SegmentInput<double>& segment, PointsSoA points, FieldSoA out) {
+  const double *x = points.x, *y = points.y, *z = points.z;
+  double *f = out.f, *gx = out.gx, *gy = out.gy, *gz = out.gz;
+  const detail::Uniforms u(segment);
+#pragma GCC ivdep
+  for (std::size_t k = 0; k < points.n; ++k) {
+    SegmentInput<double> in;
+    u.fill(in);
+    in.p = {x[k], y[k], z[k]};
+    std::array<double, 3> g;
+    f[k] = Kernel(in, g);
+    gx[k] = g[0];
+    gy[k] = g[1];
+    gz[k] = g[2];
+  }
+}
+
+/// The same for a compact kernel, clip included and branch-free: the clip of
+/// skelconv::clip_to_ball (include/skelconv/clip.hpp) with its early returns
+/// replaced by min/max and one final select.
+template <auto Kernel>
+SKELCONV_BATCH_FLATTEN void compact_f_and_grad_batch(const SegmentInput<double>& segment, PointsSoA points, FieldSoA out) {
+  const double *x = points.x, *y = points.y, *z = points.z;
+  double *f = out.f, *gx = out.gx, *gy = out.gy, *gz = out.gz;
+  // Locals only: out may alias `segment` as far as the compiler knows, and a
+  // load of it after a store in the loop would stop the vectoriser.
+  const detail::Uniforms u(segment);
+  const double ab0 = u.b0 - u.a0, ab1 = u.b1 - u.a1, ab2 = u.b2 - u.a2;
+  const double a = ab0 * ab0 + ab1 * ab1 + ab2 * ab2;
+  const double inv_a = 1.0 / a;
+  const double aR2 = a * u.R * u.R;
+#pragma GCC ivdep
+  for (std::size_t k = 0; k < points.n; ++k) {
+    const double ap0 = x[k] - u.a0, ap1 = y[k] - u.a1, ap2 = z[k] - u.a2;
+    const double b = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
+    const double cx = ab1 * ap2 - ab2 * ap1, cy = ab2 * ap0 - ab0 * ap2, cz = ab0 * ap1 - ab1 * ap0;
+    const double disc = aR2 - (cx * cx + cy * cy + cz * cz);
+    const double half_width = std::sqrt(std::max(disc, 0.0)) * inv_a;
+    const double centre = b * inv_a;
+    const double t0 = std::max(0.0, centre - half_width);
+    const double t1 = std::min(1.0, centre + half_width);
+    const bool inside = (disc > 0.0) & (t0 < t1);
+    // Outside: a valid, empty-ish interval whose value is discarded below.
+    const double safe_t0 = inside ? t0 : 0.0;
+    const double safe_t1 = inside ? t1 : 0.5;
+    SegmentInput<double> in;
+    u.fill(in);
+    in.p = {x[k], y[k], z[k]};
+    in.t0 = safe_t0;
+    in.t1 = safe_t1;
+    std::array<double, 3> g;
+    const double value = Kernel(in, g);
+    f[k] = inside ? value : 0.0;
+    gx[k] = inside ? g[0] : 0.0;
+    gy[k] = inside ? g[1] : 0.0;
+    gz[k] = inside ? g[2] : 0.0;
+  }
+}
+
+}  // namespace skelconv::bench

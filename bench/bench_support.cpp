@@ -1,0 +1,179 @@
+// bench/bench_support.cpp — workloads and the quadrature baseline.
+#include "bench_support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include "skelconv/clip.hpp"
+
+namespace skelconv::bench {
+namespace {
+
+/// Uniform points in the bounding box of [bench_a, bench_b] grown by `margin`.
+class BoxSampler {
+ public:
+  BoxSampler(double margin, std::uint64_t seed) : rng_(seed) {
+    for (int c = 0; c < 3; ++c) {
+      lo_[c] = std::min(bench_a[c], bench_b[c]) - margin;
+      hi_[c] = std::max(bench_a[c], bench_b[c]) + margin;
+    }
+  }
+  Vec next() {
+    Vec p;
+    for (int c = 0; c < 3; ++c) p[c] = lo_[c] + (hi_[c] - lo_[c]) * unit_(rng_);
+    return p;
+  }
+
+ private:
+  std::mt19937_64 rng_;
+  std::uniform_real_distribution<double> unit_{0.0, 1.0};
+  Vec lo_, hi_;
+};
+
+/// x^(i/2) for an integer i of either sign, from integer powers and one sqrt
+/// (the cheapest honest way to evaluate the kernels in the integrand).
+inline double half_power(double x, int i) {
+  const bool negative = i < 0;
+  const int n = negative ? -i : i;
+  double r = 1.0;
+  double base = x;
+  for (int k = n / 2; k > 0; k >>= 1) {  // x^(n/2) by squaring
+    if (k & 1) r *= base;
+    base *= base;
+  }
+  if (n & 1) r *= std::sqrt(x);
+  return negative ? 1.0 / r : r;
+}
+
+}  // namespace
+
+double distance_to_segment(const Vec& p) {
+  Vec ab, ap;
+  for (int c = 0; c < 3; ++c) {
+    ab[c] = bench_b[c] - bench_a[c];
+    ap[c] = p[c] - bench_a[c];
+  }
+  const double aa = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
+  const double t = std::clamp((ab[0] * ap[0] + ab[1] * ap[1] + ab[2] * ap[2]) / aa, 0.0, 1.0);
+  double d2 = 0;
+  for (int c = 0; c < 3; ++c) d2 += (ap[c] - t * ab[c]) * (ap[c] - t * ab[c]);
+  return std::sqrt(d2);
+}
+
+Input segment_input(KernelFamily family) {
+  Input in;
+  in.a = bench_a;
+  in.b = bench_b;
+  in.w = bench_weight;
+  in.s = bench_s;
+  in.R = bench_R;
+  (void)family;
+  return in;
+}
+
+std::vector<Input> make_inputs(KernelFamily family, std::size_t count, std::uint64_t seed, double min_distance,
+                               double max_distance) {
+  BoxSampler sampler(bench_R, seed);
+  std::vector<Input> inputs;
+  inputs.reserve(count);
+  while (inputs.size() < count) {
+    const Vec p = sampler.next();
+    const double d = distance_to_segment(p);
+    if (d < min_distance || d > max_distance) continue;
+    Input in = segment_input(family);
+    in.p = p;
+    if (family == KernelFamily::compact) {
+      const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
+      if (!clip) continue;
+      in.t0 = clip->t0;
+      in.t1 = clip->t1;
+    }
+    inputs.push_back(in);
+  }
+  return inputs;
+}
+
+std::vector<Vec> make_box_points(std::size_t count, std::uint64_t seed) {
+  BoxSampler sampler(1.5 * bench_R, seed);
+  std::vector<Vec> points;
+  points.reserve(count);
+  while (points.size() < count) {
+    const Vec p = sampler.next();
+    if (distance_to_segment(p) < 0.05) continue;  // keep off the inverse singularity
+    points.push_back(p);
+  }
+  return points;
+}
+
+QuadratureResult quadrature(KernelFamily family, int degree, int weight_degree, const Input& in,
+                            double tolerance, bool with_gradient) {
+  using Rule = boost::math::quadrature::gauss_kronrod<double, 61>;
+  Vec ab, ap;
+  for (int c = 0; c < 3; ++c) {
+    ab[c] = in.b[c] - in.a[c];
+    ap[c] = in.p[c] - in.a[c];
+  }
+  const double length = std::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+  const double inv_R2 = 1.0 / (in.R * in.R);
+  const double t0 = family == KernelFamily::compact ? in.t0 : 0.0;
+  const double t1 = family == KernelFamily::compact ? in.t1 : 1.0;
+  const int i = degree;
+  std::size_t evaluations = 0;
+
+  auto weight = [&](double t) {
+    double w = 0;
+    for (int k = weight_degree; k >= 0; --k) w = w * t + in.w[k];
+    return w;
+  };
+  // P − Γ(t) and q = |P − Γ(t)|².
+  auto offset = [&](double t, Vec& d) {
+    for (int c = 0; c < 3; ++c) d[c] = ap[c] - t * ab[c];
+    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  };
+  // K(q) with K a function of q = r².
+  auto kernel = [&](double q) {
+    switch (family) {
+      case KernelFamily::inverse: return half_power(q, -i);
+      case KernelFamily::cauchy: return half_power(1.0 + in.s * q, -i);
+      case KernelFamily::compact: return half_power(std::max(0.0, 1.0 - q * inv_R2), i);
+    }
+    return 0.0;
+  };
+  // dK/dq.
+  auto kernel_derivative = [&](double q) {
+    switch (family) {
+      case KernelFamily::inverse: return -0.5 * i * half_power(q, -i - 2);
+      case KernelFamily::cauchy: return -0.5 * i * in.s * half_power(1.0 + in.s * q, -i - 2);
+      case KernelFamily::compact: return -0.5 * i * inv_R2 * half_power(std::max(0.0, 1.0 - q * inv_R2), i - 2);
+    }
+    return 0.0;
+  };
+
+  QuadratureResult result;
+  auto f_integrand = [&](double t) {
+    ++evaluations;
+    Vec d;
+    return weight(t) * kernel(offset(t, d));
+  };
+  result.f = length * Rule::integrate(f_integrand, t0, t1, 15, tolerance);
+  if (with_gradient) {
+    for (int c = 0; c < 3; ++c) {
+      // ∇_P K(|P − Γ(t)|²) = K'(q) 2 (P − Γ(t)).
+      auto g_integrand = [&, c](double t) {
+        ++evaluations;
+        Vec d;
+        const double q = offset(t, d);
+        return weight(t) * kernel_derivative(q) * 2.0 * d[c];
+      };
+      result.grad[c] = length * Rule::integrate(g_integrand, t0, t1, 15, tolerance);
+    }
+  }
+  result.evaluations = evaluations;
+  return result;
+}
+
+}  // namespace skelconv::bench

@@ -1,0 +1,145 @@
+// bench/bench_support.hpp — what the benchmark programs share: the generated
+// kernels as plain function pointers, reproducible workloads (query points
+// around one segment) and adaptive Gauss–Kronrod quadrature of the definition
+// integrals, the method numerical skeleton libraries use today.
+//
+// Only bench/kernel_set.cpp includes generated/segment_table.hpp (a ~1 minute
+// compile), so the benchmark programs that call kernels through the table are
+// cheap to rebuild.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "skelconv/clip.hpp"
+#include "skelconv/op_count.hpp"
+#include "skelconv/segment_input.hpp"
+
+namespace skelconv::bench {
+
+using Input = SegmentInput<double>;
+using Vec = std::array<double, 3>;
+
+// --- The generated kernels (docs/generated_api.md) ---------------------------
+
+/// One entry of generated::segment_kernels<double>(), without its equation.
+struct KernelRef {
+  KernelFamily family;
+  int degree;
+  int weight_degree;
+  double (*f)(const Input&);
+  Vec (*grad)(const Input&);
+  double (*f_and_grad)(const Input&, Vec&);
+  std::string name;  // e.g. "segment_cauchy_i4_w1"
+  OpCount ops_f, ops_grad, ops_f_and_grad;
+};
+
+/// Every generated kernel, in the table's order.
+const std::vector<KernelRef>& generated_kernels();
+/// nullptr when (family, degree, weight degree) was not generated.
+const KernelRef* find_kernel(KernelFamily family, int degree, int weight_degree);
+
+/// f at the point of `in`; for the compact family the clip interval moves
+/// with P, so it is recomputed (an empty clip gives 0), as any caller of a
+/// finite-difference gradient would have to.
+inline double f_reclipped(const KernelRef& k, Input in) {
+  if (k.family == KernelFamily::compact) {
+    const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
+    if (!clip) return 0.0;
+    in.t0 = clip->t0;
+    in.t1 = clip->t1;
+  }
+  return k.f(in);
+}
+
+/// f and a finite-difference gradient, the alternative to f_and_grad:
+/// central differences (7 evaluations of f, step ~ eps^(1/3)) or forward
+/// differences (4 evaluations, step ~ eps^(1/2)), for unit-scale geometry.
+template <bool central>
+double f_and_fd_gradient(const KernelRef& k, Input in, Vec& g) {
+  const double h = central ? 6e-6 : 1.5e-8;
+  const double f = k.f(in);
+  for (int c = 0; c < 3; ++c) {
+    const double x = in.p[c];
+    in.p[c] = x + h;
+    const double forward = f_reclipped(k, in);
+    if constexpr (central) {
+      in.p[c] = x - h;
+      g[c] = (forward - f_reclipped(k, in)) / (2 * h);
+    } else {
+      g[c] = (forward - f) / h;
+    }
+    in.p[c] = x;
+  }
+  return f;
+}
+
+/// The kernels compared in detail: SPEC Table 4's three classical rows, and
+/// the compact family (even degrees are polynomial; odd ones need sqrt and
+/// atan).
+struct KernelKey {
+  KernelFamily family;
+  int degree, weight_degree;
+};
+inline constexpr KernelKey detailed_kernels[] = {
+    {KernelFamily::inverse, 3, 1}, {KernelFamily::cauchy, 4, 1}, {KernelFamily::cauchy, 4, 3},
+    {KernelFamily::compact, 4, 0}, {KernelFamily::compact, 6, 0}, {KernelFamily::compact, 3, 0},
+};
+
+// --- Workloads ----------------------------------------------------------------
+
+/// The segment every kernel benchmark uses: a generic direction (no axis
+/// alignment the compiler or the closed form could exploit), |AB| ≈ 1.27.
+inline constexpr Vec bench_a{0.1, -0.2, 0.3};
+inline constexpr Vec bench_b{1.1, 0.4, -0.2};
+/// Weight coefficients w0..w3 (a kernel of weight degree d reads w0..wd).
+inline constexpr std::array<double, 4> bench_weight{1.0, 0.5, 0.25, 0.125};
+inline constexpr double bench_s = 1.0;  ///< Cauchy sharpness
+inline constexpr double bench_R = 1.0;  ///< compact support radius
+
+/// `count` query points, uniform in the segment's bounding box grown by
+/// bench_R, kept when their distance d to the segment satisfies
+/// min_distance ≤ d ≤ max_distance, by default 0.1 ≤ d ≤ 0.9 (the region where a level set is drawn: not on the
+/// inverse kernel's singularity, and inside the compact support so the clip
+/// is never empty). Inputs are complete: for the compact family t0, t1 come
+/// from skelconv::clip_to_ball (its cost is not part of a kernel timing).
+std::vector<Input> make_inputs(KernelFamily family, std::size_t count = 1024, std::uint64_t seed = 42,
+                               double min_distance = 0.1, double max_distance = 0.9);
+
+/// The "near" workload: points at distance 0.01 ≤ d ≤ 0.1 from the segment
+/// (thin features: a level set close to its skeleton), where the integrand
+/// is sharply peaked and adaptive quadrature has to subdivide.
+inline constexpr double near_min_distance = 0.01, near_max_distance = 0.1;
+
+/// Same points, uniform in the box grown by 1.5 bench_R with no distance
+/// filter: about a third of them are outside the compact support. For the
+/// batch benchmarks, which must handle both cases.
+std::vector<Vec> make_box_points(std::size_t count, std::uint64_t seed = 7);
+
+/// Input with everything but the point (and the clip interval) filled in.
+Input segment_input(KernelFamily family);
+
+/// Distance from p to the segment [bench_a, bench_b].
+double distance_to_segment(const Vec& p);
+
+// --- Adaptive quadrature of the definition (SPEC §2) ---------------------------
+
+struct QuadratureResult {
+  double f = 0;
+  Vec grad{0, 0, 0};
+  std::size_t evaluations = 0;  ///< integrand evaluations, all integrals together
+};
+
+/// f(P) = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt and ∇f by Boost.Math's
+/// adaptive 61-point Gauss–Kronrod rule, one integral for f and one per
+/// gradient component (4 adaptive integrals) when `with_gradient`; relative
+/// tolerance `tolerance`, default maximum depth 15. The kernel K is
+/// (family, degree) with input.s / input.R; the weight reads w0..w_{weight_degree}.
+QuadratureResult quadrature(KernelFamily family, int degree, int weight_degree, const Input& input,
+                            double tolerance, bool with_gradient);
+
+}  // namespace skelconv::bench

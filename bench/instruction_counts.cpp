@@ -1,0 +1,157 @@
+// bench/instruction_counts.cpp — fixed workloads for callgrind (issue 5,
+// §4), and the op counts of every generated kernel (§3).
+//
+//   skelconv_bench_counts --opcounts FILE   writes every kernel's OpCount
+//                                           (from the generated table) as JSON
+//   skelconv_bench_counts [--smoke]         runs the regions below; under
+//       valgrind --tool=callgrind each region is zeroed before and dumped
+//       after (client requests), with the description "<name>|<points>",
+//       and bench/summarize.py divides its instruction count by <points>.
+// Without valgrind the client requests do nothing (--smoke: tiny sizes, for
+// CTest).
+//
+// Regions (same names as the timing benchmarks):
+//   eval/<kernel>/<f|grad|f_and_grad|f+central_fd|f+forward_fd>, and
+//   eval/<kernel>/f_and_grad/near
+//   quadrature/<kernel>/tol:<1e-08|1e-12>[/near]
+//   degree/<family>/w0/i:<i>/<f|f_and_grad>
+//   batch/<kernel>/<scalar|simd>
+#include <valgrind/callgrind.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "batch_kernels.hpp"
+#include "bench_support.hpp"
+
+namespace skelconv::bench {
+namespace {
+
+std::size_t kernel_points = 256;
+std::size_t quadrature_points = 32;
+std::size_t batch_points = 1024;
+
+volatile double sink;  // keeps results alive
+
+/// Runs `body(j)` for j < n between a zero and a dump of callgrind's counters.
+template <class Body>
+void region(const std::string& name, std::size_t n, Body body) {
+  const std::string description = name + "|" + std::to_string(n);
+  CALLGRIND_ZERO_STATS;
+  for (std::size_t j = 0; j < n; ++j) body(j);
+  CALLGRIND_DUMP_STATS_AT(description.c_str());
+}
+
+void run_regions() {
+  for (const KernelKey& key : detailed_kernels) {
+    const KernelRef* k = find_kernel(key.family, key.degree, key.weight_degree);
+    if (!k) continue;
+    const std::vector<Input> in = make_inputs(k->family, kernel_points);
+    const std::string base = "eval/" + k->name + "/";
+    region(base + "f", in.size(), [&](std::size_t j) { sink = k->f(in[j]); });
+    region(base + "grad", in.size(), [&](std::size_t j) { sink = k->grad(in[j])[0]; });
+    region(base + "f_and_grad", in.size(), [&](std::size_t j) {
+      Vec g;
+      sink = k->f_and_grad(in[j], g) + g[0];
+    });
+    region(base + "f+central_fd", in.size(), [&](std::size_t j) {
+      Vec g;
+      sink = f_and_fd_gradient<true>(*k, in[j], g) + g[0];
+    });
+    region(base + "f+forward_fd", in.size(), [&](std::size_t j) {
+      Vec g;
+      sink = f_and_fd_gradient<false>(*k, in[j], g) + g[0];
+    });
+    const std::vector<Input> near = make_inputs(k->family, kernel_points, 43, near_min_distance, near_max_distance);
+    region(base + "f_and_grad/near", near.size(), [&](std::size_t j) {
+      Vec g;
+      sink = k->f_and_grad(near[j], g) + g[0];
+    });
+    for (bool is_near : {false, true}) {
+      const std::vector<Input> qin = is_near ? make_inputs(k->family, quadrature_points, 43, near_min_distance,
+                                                           near_max_distance)
+                                             : make_inputs(k->family, quadrature_points);
+      for (const char* tol : {"1e-08", "1e-12"}) {
+        region("quadrature/" + k->name + "/tol:" + tol + (is_near ? "/near" : ""), qin.size(), [&](std::size_t j) {
+          sink = quadrature(k->family, k->degree, k->weight_degree, qin[j], std::stod(tol), true).f;
+        });
+      }
+    }
+  }
+  for (const KernelRef& k : generated_kernels()) {
+    if (k.weight_degree != 0) continue;
+    const std::vector<Input> in = make_inputs(k.family, kernel_points);
+    const std::string base = "degree/" + std::string(family_name(k.family)) + "/w0/i:" + std::to_string(k.degree) + "/";
+    region(base + "f", in.size(), [&](std::size_t j) { sink = k.f(in[j]); });
+    region(base + "f_and_grad", in.size(), [&](std::size_t j) {
+      Vec g;
+      sink = k.f_and_grad(in[j], g) + g[0];
+    });
+  }
+  for (const BatchEntry& e : batch_entries) {
+    const KernelRef* k = find_kernel(e.key.family, e.key.degree, e.key.weight_degree);
+    if (!k) continue;
+    Batch batch(batch_points);
+    const Input segment = segment_input(k->family);
+    // One region call evaluates the whole batch; report it per point.
+    // (Named strings: the client request reads the text after the statement.)
+    const std::string scalar_name = "batch/" + k->name + "/scalar|" + std::to_string(batch_points);
+    const std::string simd_name = "batch/" + k->name + "/simd|" + std::to_string(batch_points);
+    CALLGRIND_ZERO_STATS;
+    scalar_loop(*k, segment, batch.points(), batch.field());
+    CALLGRIND_DUMP_STATS_AT(scalar_name.c_str());
+    e.batch(segment, batch.points(), batch.field());
+    CALLGRIND_DUMP_STATS_AT(simd_name.c_str());
+    sink = batch.f[0];
+  }
+}
+
+std::string json_ops(const OpCount& o) {
+  char text[200];
+  std::snprintf(text, sizeof text, "{\"add\": %d, \"mul\": %d, \"div\": %d, \"sqrt\": %d, \"atan\": %d, \"log\": %d, \"other\": %d}",
+                o.add, o.mul, o.div, o.sqrt, o.atan, o.log, o.other);
+  return text;
+}
+
+int write_opcounts(const char* path) {
+  std::ofstream out(path);
+  if (!out) {
+    std::fprintf(stderr, "cannot write %s\n", path);
+    return 1;
+  }
+  out << "[\n";
+  const auto& kernels = generated_kernels();
+  for (std::size_t j = 0; j < kernels.size(); ++j) {
+    const KernelRef& k = kernels[j];
+    out << "  {\"name\": \"" << k.name << "\", \"family\": \"" << family_name(k.family) << "\", \"degree\": " << k.degree
+        << ", \"weight_degree\": " << k.weight_degree << ", \"f\": " << json_ops(k.ops_f)
+        << ", \"grad\": " << json_ops(k.ops_grad) << ", \"f_and_grad\": " << json_ops(k.ops_f_and_grad) << "}"
+        << (j + 1 < kernels.size() ? ",\n" : "\n");
+  }
+  out << "]\n";
+  return 0;
+}
+
+}  // namespace
+}  // namespace skelconv::bench
+
+int main(int argc, char** argv) {
+  using namespace skelconv::bench;
+  for (int j = 1; j < argc; ++j) {
+    if (std::strcmp(argv[j], "--opcounts") == 0 && j + 1 < argc) return write_opcounts(argv[j + 1]);
+    if (std::strcmp(argv[j], "--smoke") == 0) {
+      kernel_points = 4;
+      quadrature_points = 2;
+      batch_points = 16;
+    } else {
+      std::fprintf(stderr, "usage: %s [--smoke] | --opcounts FILE\n", argv[0]);
+      return 2;
+    }
+  }
+  run_regions();
+  std::printf("done: %s\n", RUNNING_ON_VALGRIND ? "under valgrind" : "not under valgrind (client requests ignored)");
+  return 0;
+}

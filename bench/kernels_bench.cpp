@@ -1,0 +1,163 @@
+// bench/kernels_bench.cpp — per-evaluation cost of the generated segment
+// kernels (issue 5, §2 first three bullets):
+//   eval/<kernel>/<variant>        f, grad, f_and_grad, and f plus a
+//                                  finite-difference gradient (central: 7
+//                                  evaluations of f, forward: 4);
+//   quadrature/<kernel>/tol:<tol>[/near]  adaptive Gauss–Kronrod 61 of f
+//                                  and ∇f (4 integrals), the baseline; /near:
+//                                  points 0.01–0.1 from the segment (also
+//                                  eval/<kernel>/f_and_grad/near);
+//   degree/<family>/w0/i:<i>/<f|f_and_grad>   cost as the degree grows.
+// One iteration is one evaluation at one point; the points cycle through
+// 1024 fixed query points around one segment (bench_support.hpp), so the
+// branches of the closed forms see a realistic mix. Compare times within one
+// run only (bench/summarize.py makes the ratios).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "bench_support.hpp"
+
+namespace skelconv::bench {
+namespace {
+
+constexpr std::size_t point_count = 1024;  // a power of two: index & (count − 1)
+
+/// The 1024 query points of a family: the default workload (0.1 ≤ d ≤ 0.9)
+/// or the near one (0.01 ≤ d ≤ 0.1), see bench_support.hpp.
+const std::vector<Input>& inputs_for(KernelFamily family, bool near = false) {
+  static std::vector<Input> cache[3][2];
+  std::vector<Input>& in = cache[int(family)][near];
+  if (in.empty()) {
+    in = near ? make_inputs(family, point_count, 43, near_min_distance, near_max_distance)
+              : make_inputs(family, point_count);
+  }
+  return in;
+}
+
+void bench_f(benchmark::State& state, const KernelRef* k) {
+  const auto& in = inputs_for(k->family);
+  std::size_t idx = 0;
+  for (auto _ : state) {
+    double f = k->f(in[idx++ & (point_count - 1)]);
+    benchmark::DoNotOptimize(f);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void bench_grad(benchmark::State& state, const KernelRef* k) {
+  const auto& in = inputs_for(k->family);
+  std::size_t idx = 0;
+  for (auto _ : state) {
+    Vec g = k->grad(in[idx++ & (point_count - 1)]);
+    benchmark::DoNotOptimize(g);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void bench_f_and_grad(benchmark::State& state, const KernelRef* k, bool near = false) {
+  const auto& in = inputs_for(k->family, near);
+  std::size_t idx = 0;
+  for (auto _ : state) {
+    Vec g;
+    double f = k->f_and_grad(in[idx++ & (point_count - 1)], g);
+    benchmark::DoNotOptimize(f);
+    benchmark::DoNotOptimize(g);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+/// f and a finite-difference gradient (bench_support.hpp): central (7
+/// evaluations of f) or forward (4).
+template <bool central>
+void bench_fd(benchmark::State& state, const KernelRef* k) {
+  const auto& in = inputs_for(k->family);
+  std::size_t idx = 0;
+  for (auto _ : state) {
+    Vec g;
+    double f = f_and_fd_gradient<central>(*k, in[idx++ & (point_count - 1)], g);
+    benchmark::DoNotOptimize(f);
+    benchmark::DoNotOptimize(g);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+/// Adaptive GK61 of f and ∇f. Counters (computed before timing, on the first
+/// 256 points): integrand evaluations per point, and the largest relative
+/// difference to the closed form, so the two sides are known to compute the
+/// same field.
+void bench_quadrature(benchmark::State& state, const KernelRef* k, double tolerance, bool near) {
+  const auto& in = inputs_for(k->family, near);
+  double evaluations = 0, max_rel_f = 0, max_rel_grad = 0;
+  constexpr std::size_t checked = 256;
+  for (std::size_t j = 0; j < checked; ++j) {
+    const QuadratureResult q = quadrature(k->family, k->degree, k->weight_degree, in[j], tolerance, true);
+    Vec g;
+    const double f = k->f_and_grad(in[j], g);
+    evaluations += double(q.evaluations);
+    max_rel_f = std::max(max_rel_f, std::abs(q.f - f) / std::abs(f));
+    const double gn = std::hypot(g[0], g[1], g[2]);
+    max_rel_grad = std::max(max_rel_grad, std::hypot(q.grad[0] - g[0], q.grad[1] - g[1], q.grad[2] - g[2]) / gn);
+  }
+  std::size_t idx = 0;
+  for (auto _ : state) {
+    QuadratureResult q = quadrature(k->family, k->degree, k->weight_degree, in[idx++ & (point_count - 1)],
+                                    tolerance, true);
+    benchmark::DoNotOptimize(q);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["integrand_evals"] = evaluations / checked;
+  state.counters["max_rel_diff_f"] = max_rel_f;
+  state.counters["max_rel_diff_grad"] = max_rel_grad;
+}
+
+void register_all() {
+  for (const KernelKey& n : detailed_kernels) {
+    const KernelRef* k = find_kernel(n.family, n.degree, n.weight_degree);
+    if (!k) {
+      std::fprintf(stderr, "note: %s i=%d w=%d not generated, skipped\n",
+                   std::string(family_name(n.family)).c_str(), n.degree, n.weight_degree);
+      continue;
+    }
+    const std::string base = "eval/" + k->name + "/";
+    benchmark::RegisterBenchmark((base + "f").c_str(), bench_f, k);
+    benchmark::RegisterBenchmark((base + "grad").c_str(), bench_grad, k);
+    benchmark::RegisterBenchmark((base + "f_and_grad").c_str(), bench_f_and_grad, k, false);
+    benchmark::RegisterBenchmark((base + "f+central_fd").c_str(), bench_fd<true>, k);
+    benchmark::RegisterBenchmark((base + "f+forward_fd").c_str(), bench_fd<false>, k);
+  }
+  for (const KernelKey& n : detailed_kernels) {
+    const KernelRef* k = find_kernel(n.family, n.degree, n.weight_degree);
+    if (!k) continue;
+    benchmark::RegisterBenchmark(("eval/" + k->name + "/f_and_grad/near").c_str(), bench_f_and_grad, k, true);
+    for (bool near : {false, true}) {
+      for (const char* tol : {"1e-08", "1e-12"}) {
+        benchmark::RegisterBenchmark(("quadrature/" + k->name + "/tol:" + tol + (near ? "/near" : "")).c_str(),
+                                     bench_quadrature, k, std::stod(tol), near);
+      }
+    }
+  }
+  for (const KernelRef& k : generated_kernels()) {
+    if (k.weight_degree != 0) continue;
+    const std::string base =
+        "degree/" + std::string(family_name(k.family)) + "/w0/i:" + std::to_string(k.degree) + "/";
+    benchmark::RegisterBenchmark((base + "f").c_str(), bench_f, &k);
+    benchmark::RegisterBenchmark((base + "f_and_grad").c_str(), bench_f_and_grad, &k, false);
+  }
+}
+
+}  // namespace
+}  // namespace skelconv::bench
+
+int main(int argc, char** argv) {
+  skelconv::bench::register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

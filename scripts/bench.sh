@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# scripts/bench.sh — the one benchmark command (docs/bench.md).
+#
+# Configures and builds the release preset's benchmark targets, runs the
+# Google Benchmark suites (JSON to bench/results/), counts instructions with
+# callgrind, and writes bench/results/SUMMARY.md and OPCOUNTS.md.
+# About 5–8 minutes on 2 cores from a clean clone (most of it the build).
+#
+#   scripts/bench.sh            full run
+#   scripts/bench.sh --quick    short timings (min time 0.02 s, 1 repetition):
+#                               checks the pipeline, numbers not meaningful
+# SKELCONV_BENCH_BUILD_DIR=dir  builds in dir instead of build/release.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+min_time=0.1
+repetitions=3
+for arg in "$@"; do
+  case "$arg" in
+    --quick) min_time=0.02; repetitions=1 ;;
+    *) echo "usage: $0 [--quick]" >&2; exit 2 ;;
+  esac
+done
+
+results=bench/results
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/skelconv-bench.XXXXXX")
+trap 'rm -rf "$scratch"' EXIT
+start=$SECONDS
+step() { echo "[bench $(( SECONDS - start ))s] $*" >&2; }
+
+for tool in cmake python3 valgrind objdump; do
+  command -v "$tool" >/dev/null || { echo "scripts/bench.sh: $tool is required" >&2; exit 1; }
+done
+
+if [ -x scripts/install_dependencies.sh ]; then scripts/install_dependencies.sh >&2; fi
+
+if [ -n "${SKELCONV_BENCH_BUILD_DIR:-}" ]; then
+  # A private build tree (e.g. while build/release is busy): same options as
+  # the release preset.
+  build=$SKELCONV_BENCH_BUILD_DIR
+  step "configure and build in $build (Release, target skelconv_bench)"
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" --target skelconv_bench -j 2
+else
+  build=build/release
+  step "configure and build (release preset, target skelconv_bench)"
+  cmake --preset release >/dev/null
+  cmake --build --preset release --target skelconv_bench
+fi
+bin=$build/bench
+
+mkdir -p "$results"
+rm -f "$results"/*.json "$results"/SUMMARY.md "$results"/OPCOUNTS.md
+{
+  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- generated include src codegen 2>/dev/null || echo ' (+ uncommitted changes)')"
+  echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+  echo "compiler: $(c++ --version | head -1)"
+  echo "bench flags: -O3 -march=$(grep -Po '(?<=SKELCONV_BENCH_ARCH:STRING=).*' "$build/CMakeCache.txt" || echo default) -fno-math-errno -fno-trapping-math"
+  echo "kernel: $(uname -sr)"
+  lscpu | grep -v '^Flags' | head -20
+  echo "SIMD flags: $(grep -m1 '^flags' /proc/cpuinfo | tr ' ' '\n' | grep -E '^(sse4_2|avx|avx2|fma|avx512f)$' | tr '\n' ' ')"
+} > "$results/machine.txt"
+
+gbench=(--benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions"
+        --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
+        --benchmark_out_format=json)
+
+step "1/5 kernel suite: closed form, finite differences, quadrature, degrees (~2 min)"
+"$bin/skelconv_bench_kernels" "${gbench[@]}" --benchmark_out="$results/kernels.json"
+
+step "2/5 batch suite (~20 s)"
+"$bin/skelconv_bench_batch" "${gbench[@]}" --benchmark_out="$results/batch.json"
+
+step "3/5 whole skeleton: 1,000 primitives, 128^3 grid (~10 s; progress below)"
+"$bin/skelconv_bench_skeleton" --benchmark_out="$results/skeleton.json" --benchmark_out_format=json
+
+step "4/5 callgrind instruction counts (~10 s)"
+valgrind --tool=callgrind --callgrind-out-file="$scratch/callgrind.out.%p" --dump-instr=no \
+  --collect-jumps=no "$bin/skelconv_bench_counts" 2> "$scratch/valgrind.log" \
+  || { cat "$scratch/valgrind.log" >&2; exit 1; }
+"$bin/skelconv_bench_counts" --opcounts "$results/opcounts.json"
+objdump -d -C --no-show-raw-insn "$bin/skelconv_bench_batch" > "$scratch/batch.asm"
+
+step "5/5 summary"
+python3 bench/summarize.py --results "$results" --callgrind "$scratch" --disassembly "$scratch/batch.asm" \
+  --command "$(echo "scripts/bench.sh $*" | sed 's/ *$//')"
+step "done: $results/SUMMARY.md"
