@@ -167,20 +167,21 @@ class SegmentProgramBuilder {
     return sum;
   }
 
+  // An input symbol `name` read from the C++ element `array[index]`.
+  symbol input(const std::string& name, const std::string& array, int index) {
+    const std::string i = std::to_string(index);
+    symbol s(name + i);
+    program_.add_input(s, array + '[' + i + ']');
+    return s;
+  }
+
   void read_inputs() {
-    const char* axis = "012";
     for (int i = 0; i < 3; ++i) {
-      A_[i] = symbol(std::string("A") + axis[i]);
-      B_[i] = symbol(std::string("B") + axis[i]);
-      P_[i] = symbol(std::string("P") + axis[i]);
-      program_.add_input(A_[i], std::string("in.a[") + axis[i] + "]");
-      program_.add_input(B_[i], std::string("in.b[") + axis[i] + "]");
-      program_.add_input(P_[i], std::string("in.p[") + axis[i] + "]");
+      A_[i] = input("A", "in.a", i);
+      B_[i] = input("B", "in.b", i);
+      P_[i] = input("P", "in.p", i);
     }
-    for (int k = 0; k <= spec_.weight_degree; ++k) {
-      w_.push_back(symbol("w" + std::to_string(k)));
-      program_.add_input(GiNaC::ex_to<symbol>(w_.back()), "in.w[" + std::to_string(k) + "]");
-    }
+    for (int k = 0; k <= spec_.weight_degree; ++k) w_.push_back(input("w", "in.w", k));
   }
 
   // Vectors and their products. |AB × AP|² and the dot products with BP are
