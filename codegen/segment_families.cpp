@@ -31,9 +31,28 @@ REGISTER_FUNCTION(maximum, dummy())
 // of segment_moments.hpp: below kBeyondEndRho the recurrence runs downwards
 // (at most ~116 steps reach 1e-18), above it upwards from J_1, J_2, where the
 // growth (1/ρ)^((n−1)/2) stays below 21 for n ≤ 18, and the moment formulas
-// lose at most a factor ~n·√(1−ρ) each. Compact kernels use the same bound
-// on q_e/q_max (J_upward_compact).
+// lose at most a factor ~n·√(1−ρ) each.
 const ex kBeyondEndRho = numeric(7, 10);
+// Compact kernels: J_upward_compact below this q_e/q_max, downwards from
+// J_0, J_1 above it, where (q_max/q_e)^((i+d+2)/2) ≤ 1.18^10 ≈ 5.
+const ex kCompactOutsideRatio = numeric(17, 20);
+
+// The operations of one segment_moments_gauss<T, N> call, counted from its
+// loop (include/skelconv/gauss_moments.hpp): per node the parameter, q, √q,
+// the power q^(−m_hi/2) and, per level, the k_max + 1 moments.
+OpCount gauss_rule_ops(int nodes, int m_lo, int m_hi, int k_max) {
+  const int levels = (m_hi - m_lo) / 2 + 1, moments = k_max + 1;
+  OpCount per_node;
+  per_node.add = 3 + levels * moments;
+  per_node.mul = 4 + std::abs(m_hi) + levels * (2 + moments);
+  per_node.div = m_hi > 0 ? 1 : 0;
+  per_node.sqrt = 1;
+  OpCount total;
+  for (int j = 0; j < nodes; ++j) total += per_node;
+  total.add += 2;
+  total.mul += 2 + levels * moments;
+  return total;
+}
 
 std::string weight_text(int weight_degree) {
   if (weight_degree == 0) return "w0";
@@ -76,53 +95,68 @@ class SegmentProgramBuilder {
     Choice choice{targets, {}};
     if (spec_.family == KernelFamily::compact) {
       const MomentSymbols symbols = compact_symbols();
+      if (spec_.degree % 2 == 0) {
+        // t^k q^(i/2) is a polynomial of degree ≤ i + k: the 15-point
+        // Gauss–Legendre rule is exact and, all terms positive, stable.
+        Alternative exact{{}, "even degree: the integrand is a polynomial, integrated exactly by "
+                          "segment_moments_gauss<T, 15>", {}, {}, {}};
+        fill_from_helper(exact, "M_exact", "segment_moments_gauss<T, 15>",
+                         {a_, b_, c_, symbols.lo.t, symbols.hi.t}, value, gradient);
+        choice.alternatives.push_back(std::move(exact));
+        program_.choose(std::move(choice));
+        add_outputs(targets, value, gradient);
+        return std::move(program_);
+      }
+      {
+        // Odd degree, the sphere crossings t* ± √(−D)/|a| at least |AB|/2
+        // beyond both ends (so [t0, t1] = [0, 1]): q^(i/2) is analytic well
+        // around the segment and nearly flat, where the moment relations
+        // cancel; the 20-point Gauss–Legendre rule is exact to rounding
+        // (include/skelconv/gauss_moments.hpp).
+        const ex t_star = b_ / a_;
+        const ex reach = maximum(t_star + numeric(1, 2), numeric(3, 2) - t_star);
+        Alternative flat{{-D_ - pow(a_, 2) * pow(reach, 2)},
+                         "support sphere at least |AB|/2 beyond both ends: every moment by "
+                         "segment_moments_gauss<T, 20>",
+                         {}, {}, {}};
+        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                         value, gradient);
+        choice.alternatives.push_back(std::move(flat));
+      }
       // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
       const int bottom = n - 2 * ((spec_.weight_degree + 1) / 2) - 2;
       MomentRecurrence upward(symbols, {RecurrenceDirection::Mode::up_from_bottom, bottom});
       choice.alternatives.push_back(
-          {{symbols.lo.slope * symbols.hi.slope, a_ * maximum(symbols.lo.q, symbols.hi.q) - kBeyondEndRho * D_},
-           "vertex of q outside [t0, t1], q_e < 7/10 q_max: recurrence (1) upwards from J_" +
+          {{symbols.lo.slope * symbols.hi.slope, a_ * maximum(symbols.lo.q, symbols.hi.q) - kCompactOutsideRatio * D_},
+           "vertex of q outside [t0, t1], q_e < 17/20 q_max: recurrence (1) upwards from J_" +
                std::to_string(bottom) + " = J_upward_compact(…)",
            {},
            values_from(upward),
            {}});
       MomentRecurrence downward(symbols);
       choice.alternatives.push_back({{}, "recurrence (1) downwards from J_0, J_1", {}, values_from(downward), {}});
-      choice.generic = 1;
+      choice.generic = choice.alternatives.size() - 1;
     } else {
       const MomentSymbols symbols = infinite_support_symbols();
       const int top_index = gradient ? n + 2 : n;
+      {
+        // Far from the line compared with |AB| (D ≥ 2a²): the kernel is nearly
+        // flat and the moment relations cancel; a 20-point Gauss–Legendre rule
+        // is exact to rounding there (include/skelconv/gauss_moments.hpp).
+        Alternative flat{{D_ - 2 * pow(a_, 2)}, "P far from the line (D ≥ 2a²): every moment by "
+                         "segment_moments_gauss<T, 20>", {}, {}, {}};
+        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, 0, 1}, value, gradient);
+        choice.alternatives.push_back(std::move(flat));
+      }
       if (top_index >= 2) {
         // Beyond an end, with ρ = D/(a min(q(0), q(1))) below `kBeyondEndRho`:
         // recurrence (1) downwards (segment_moments.hpp, stable_recurrence.hpp).
         const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
         Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_}, "", {}, {}, {}};
-        const int lowest = value ? n : n + 2;
-        const int k_max = spec_.weight_degree + (gradient ? 1 : 0);
-        if (lowest >= k_max + 2) {
+        if (lowest_level(value) >= highest_moment(gradient) + 2) {
           // Every moment from segment_moments_beyond_end, centred at the near end.
-          ArrayCall call{"M_beyond", "segment_moments_beyond_end<T>",
-                         {std::to_string(lowest), std::to_string(top_index), std::to_string(k_max)},
-                         {a_, b_, D_, symbols.lo.q, symbols.hi.q}, {}};
-          auto moment = [&](int k, int m) {
-            const size_t index = static_cast<size_t>(((m - lowest) / 2) * (k_max + 1) + k);
-            while (call.elements.size() <= index)
-              call.elements.emplace_back("M_beyond_" + std::to_string(call.elements.size()));
-            return ex(call.elements[index]);
-          };
-          for (int m = lowest; m <= top_index; m += 2)
-            for (int k = 0; k <= k_max; ++k) moment(k, m);
-          auto weighted = [&](int shift, int m) {
-            ex sum = 0;
-            for (int k = 0; k <= spec_.weight_degree; ++k) sum += w_[k] * moment(k + shift, m);
-            return sum;
-          };
-          if (value) beyond.values.push_back(weighted(0, n));
-          if (gradient) {
-            beyond.values.push_back(weighted(0, n + 2));
-            beyond.values.push_back(weighted(1, n + 2));
-          }
-          beyond.calls.push_back(std::move(call));
+          fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>", {a_, b_, D_, symbols.lo.q, symbols.hi.q},
+                           value, gradient);
           beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, "
                        "recurrence (1) downwards (segment_moments_beyond_end)";
         } else {
@@ -139,18 +173,56 @@ class SegmentProgramBuilder {
     }
     program_.choose(std::move(choice));
 
-    if (value) program_.add_output("f", length_ * targets[0]);
-    if (gradient) {
-      const symbol& g_ap = targets[value ? 1 : 0];
-      const symbol& g_ab = targets[value ? 2 : 1];
-      const ex factor = define("g_factor", -n * alpha_ * length_);
-      for (int i = 0; i < 3; ++i)
-        program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
-    }
+    add_outputs(targets, value, gradient);
     return std::move(program_);
   }
 
  private:
+  // f = |AB| F and ∇f = −n α |AB| (AP G_ap − AB G_ab), SPEC §2.
+  void add_outputs(const std::vector<symbol>& targets, bool value, bool gradient) {
+    if (value) program_.add_output("f", length_ * targets[0]);
+    if (gradient) {
+      const symbol& g_ap = targets[value ? 1 : 0];
+      const symbol& g_ab = targets[value ? 2 : 1];
+      const ex factor = define("g_factor", -kernel_index() * alpha_ * length_);
+      for (int i = 0; i < 3; ++i)
+        program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
+    }
+  }
+
+  // Lowest and highest level m, highest k of the moments M_{k,m} the
+  // outputs read: F needs m = n, k ≤ d; G_ap, G_ab need m = n + 2, k ≤ d + 1.
+  int lowest_level(bool value) const { return value ? kernel_index() : kernel_index() + 2; }
+  int highest_level(bool gradient) const { return gradient ? kernel_index() + 2 : kernel_index(); }
+  int highest_moment(bool gradient) const { return spec_.weight_degree + (gradient ? 1 : 0); }
+
+  // Takes every moment the outputs need from one helper call that fills an
+  // array (include/skelconv/stable_recurrence.hpp, gauss_moments.hpp):
+  // function(m_lo, m_hi, k_max, args…, array).
+  void fill_from_helper(Alternative& alt, const std::string& array, const std::string& function,
+                        const std::vector<ex>& args, bool value, bool gradient) {
+    const int m_lo = lowest_level(value), m_hi = highest_level(gradient), k_max = highest_moment(gradient);
+    ArrayCall call{array, function, {std::to_string(m_lo), std::to_string(m_hi), std::to_string(k_max)}, args, {}, {}};
+    if (function.rfind("segment_moments_gauss<T, ", 0) == 0)
+      call.ops = gauss_rule_ops(std::stoi(function.substr(25)), m_lo, m_hi, k_max);
+    for (int m = m_lo; m <= m_hi; m += 2)
+      for (int k = 0; k <= k_max; ++k)
+        call.elements.emplace_back(array + "_" + std::to_string(call.elements.size()));
+    auto weighted = [&](int shift, int m) {
+      ex sum = 0;
+      for (int k = 0; k <= spec_.weight_degree; ++k)
+        sum += w_[k] * call.elements[static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k + shift)];
+      return sum;
+    };
+    const int n = kernel_index();
+    if (value) alt.values.push_back(weighted(0, n));
+    if (gradient) {
+      alt.values.push_back(weighted(0, n + 2));
+      alt.values.push_back(weighted(1, n + 2));
+    }
+    alt.calls.push_back(std::move(call));
+  }
+
   int kernel_index() const { return spec_.family == KernelFamily::compact ? -spec_.degree : spec_.degree; }
 
   ex define(const std::string& name, const ex& value) {

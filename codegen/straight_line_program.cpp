@@ -316,10 +316,21 @@ class Emitter {
 
   Text emit_call(const ex& e) {
     const std::string fn = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    const bool helper = fn == "J_downward" || fn == "J_upward_compact";  // include/skelconv/stable_recurrence.hpp
     std::string args;
-    for (size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + emit(e.op(i)).s;
+    for (size_t i = 0; i < e.nops(); ++i) {
+      if (i) args += ", ";
+      // A helper's first argument is the index n, an int.
+      if (helper && i == 0) {
+        std::ostringstream index;
+        index << e.op(0);
+        args += index.str();
+      } else {
+        args += emit(e.op(i)).s;
+      }
+    }
     if (fn == "nonnegative_part") return {"max(T(0), T(" + args + "))", Text::atom};  // not counted
-    if (fn == "J_downward" || fn == "J_upward_compact") {  // include/skelconv/stable_recurrence.hpp
+    if (helper) {
       count(&OpCount::other);
       return {fn + "<T>(" + args + ")", Text::atom};
     }
@@ -447,7 +458,12 @@ class Emitter {
     for (const ex& a : call.args) args += emit(a).s + ", ";
     line("std::array<T, " + std::to_string(call.elements.size()) + "> " + call.array + ";");
     line(call.function + "(" + args + call.array + ".data());");
-    count(&OpCount::other);
+    if (call.ops) {
+      scopes_.back().generic += *call.ops;
+      scopes_.back().longest += *call.ops;
+    } else {
+      count(&OpCount::other);
+    }
     for (size_t i = 0; i < call.elements.size(); ++i)
       names_[call.elements[i]] = call.array + "[" + std::to_string(i) + "]";
   }
@@ -471,6 +487,8 @@ class Emitter {
         line(std::string(i == 0 ? "if (" : "} else if (") + conditions[i] + ") {");
       } else if (i > 0) {
         line("} else {");
+      } else {
+        line("{");  // a single form: its temporaries stay local all the same
       }
       scopes_.emplace_back();
       line("// " + alt.why);
@@ -482,7 +500,7 @@ class Emitter {
       if (i == choice.generic) generic = scopes_.back().generic;
       scopes_.pop_back();
     }
-    if (choice.alternatives.size() > 1) line("}");
+    line("}");
     scopes_.back().generic += generic;
     scopes_.back().longest += longest;
     for (const symbol& t : choice.targets) names_[t] = t.get_name();

@@ -17,6 +17,7 @@
 #include <ginac/ginac.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct ArrayCall {
   std::vector<std::string> fixed_args;   ///< leading literal arguments (integers)
   std::vector<GiNaC::ex> args;           ///< then these expressions
   std::vector<GiNaC::symbol> elements;   ///< bound to array[0], array[1], …
+  /// What one call costs, when it is known in advance (a fixed rule);
+  /// otherwise (a loop whose length depends on P) it counts as one `other`.
+  std::optional<OpCount> ops;
 };
 
 /// One alternative form of some quantities. It is taken when every

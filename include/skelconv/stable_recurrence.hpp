@@ -19,14 +19,47 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace skelconv {
 
-/// Relative size below which the neglected start value no longer matters.
-inline constexpr double downward_recurrence_tolerance = 1e-18;
-/// Upper bound on the number of steps (reached only for ρ > 0.7).
-inline constexpr int downward_recurrence_max_steps = 120;
+/// Relative size below which the neglected start value no longer matters:
+/// a hundredth of the scalar type's rounding unit (so float128 gets its
+/// 34 digits, not double's 16).
+template <class T>
+T recurrence_tolerance() {
+  return std::numeric_limits<T>::epsilon() / 100;
+}
+
+/// Upper bound on the number of steps. The generated code calls these
+/// helpers only where the per-step factor ρ is below 7/10, where 250 steps
+/// reach 1e-38.
+inline constexpr int recurrence_max_steps = 250;
+
+namespace detail {
+
+/// Steps of Miller's algorithm for a start error shrinking by rho per step.
+template <class T>
+int miller_steps(const T& rho) {
+  using std::ceil;
+  using std::log;
+  if (!(rho > T(0))) return 1;  // exact in one step (D = 0) or nothing to shrink
+  if (!(rho < T(1))) return recurrence_max_steps;
+  const T wanted = ceil(log(recurrence_tolerance<T>()) / log(rho));
+  return wanted < T(recurrence_max_steps) ? std::max(1, static_cast<int>(wanted)) : recurrence_max_steps;
+}
+
+/// powers[j] = x^j for j = 0…count−1 (x ≤ 1: the tail may underflow to 0,
+/// which is then its true size to rounding, never rescaled back up).
+template <class T>
+void fill_powers(const T& x, int count, T* powers) {
+  powers[0] = T(1);
+  for (int j = 1; j < count; ++j) powers[j] = powers[j - 1] * x;
+}
+
+}  // namespace detail
 
 /// J_n (n ≥ 2) over [t0, t1] for P beyond an end, from the ends' slopes
 /// s = a t − b and values q. Requires a > 0, D ≥ 0, q0, q1 > 0.
@@ -40,26 +73,20 @@ T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const 
   const T q_near = lo_is_near ? q0 : q1;
   const T ratio = lo_is_near ? q0 / q1 : q1 / q0;  // q_near / q_far ≤ 1
   // Per step, the start error shrinks by about rho = D/(a q_near) < 1.
-  const T rho = D / (a * q_near);
-  int steps = 1;
-  if (rho > T(0)) {
-    const T wanted = ceil(log(T(downward_recurrence_tolerance)) / log(rho));
-    steps = wanted < T(downward_recurrence_max_steps) ? std::max(1, static_cast<int>(wanted))
-                                                      : downward_recurrence_max_steps;
-  }
+  const int steps = detail::miller_steps(D / (a * q_near));
   const int top = n + 2 * steps;
   const T d_scaled = D / q_near;
   const T inv_root_near = T(1) / sqrt(q_near);
-  // far_power = ratio^((m−2)/2) for the current m, starting at m = top.
-  T far_power = pow(sqrt(ratio), top - 2);
-  const T inv_ratio = T(1) / ratio;
+  // far_powers[j] = ratio^(j/2): the far end's weight at m is far_powers[m − 2].
+  std::array<T, 2 * recurrence_max_steps + 40> far_powers;
+  detail::fill_powers(sqrt(ratio), top - 1, far_powers.data());
   T J_scaled = 0;  // Ĵ_top
   for (int m = top; m > n; m -= 2) {
     // B̂_m = [(a t − b) q^(1−m/2)]_{t0}^{t1} q_near^((m−3)/2)
+    const T& far_power = far_powers[m - 2];
     const T B_scaled = lo_is_near ? (slope1 * far_power - slope0) * inv_root_near
                                   : (slope1 - slope0 * far_power) * inv_root_near;
     J_scaled = (B_scaled - T(m - 2) * d_scaled * J_scaled) / (a * T(3 - m));
-    far_power *= inv_ratio;
   }
   return J_scaled * pow(inv_root_near, n - 1);
 }
@@ -94,30 +121,23 @@ void segment_moments_beyond_end(int m_lo, int m_hi, int k_max, const T& a, const
   const T b_near = beyond_B ? a - b : b;  // b in the σ parameter
   const T q_near = beyond_B ? q1 : q0;
   const T ratio = beyond_B ? q1 / q0 : q0 / q1;  // q_near / q_far ≤ 1
-  const T rho = D / (a * q_near);
-  int steps = 1;
-  if (rho > T(0)) {
-    const T wanted = ceil(log(T(downward_recurrence_tolerance)) / log(rho));
-    steps = wanted < T(downward_recurrence_max_steps) ? std::max(1, static_cast<int>(wanted))
-                                                      : downward_recurrence_max_steps;
-  }
+  const int steps = detail::miller_steps(D / (a * q_near));
   const int top = m_hi + 2 * steps;
   const T d_scaled = D / q_near;
   const T inv_root_near = T(1) / sqrt(q_near);
   const T far_slope = (a - b_near) * inv_root_near;   // (aσ − b) at σ = 1, scaled
   const T near_slope = -b_near * inv_root_near;       // (aσ − b) at σ = 0, scaled
-  T far_power = pow(sqrt(ratio), top - 2);            // ratio^((m−2)/2)
-  const T inv_ratio = T(1) / ratio;
-  for (int k = 0; k <= k_max; ++k) M[k] = T(0);     // M̂_{k,top}
+  std::array<T, 2 * recurrence_max_steps + 40> far_powers;  // ratio^(j/2)
+  detail::fill_powers(sqrt(ratio), top - 1, far_powers.data());
+  for (int k = 0; k <= k_max; ++k) M[k] = T(0);  // M̂_{k,top}
   for (int m = top; m > m_lo; m -= 2) {
     // Level m − 2 from level m, k upwards (M̂_{k−1,m−2} is already new).
-    const T boundary_far = far_slope * far_power;
+    const T boundary_far = far_slope * far_powers[m - 2];
     for (int k = 0; k <= k_max; ++k) {
       const T boundary = k == 0 ? boundary_far - near_slope : boundary_far;
       const T lower = k == 0 ? T(0) : T(k) * b_near * M[k - 1];
       M[k] = (boundary + lower - T(m - 2) * d_scaled * M[k]) / (a * T(3 - m + k));
     }
-    far_power *= inv_ratio;
     const int level = m - 2;
     if (level <= m_hi && (level - m_lo) % 2 == 0) {
       const T unscale = pow(inv_root_near, level - 1);
@@ -159,21 +179,16 @@ T J_upward_compact(int n, const T& a, const T& D, const T& slope0, const T& q0, 
   const bool lo_is_larger = q0 >= q1;
   const T q_e = lo_is_larger ? q0 : q1;
   const T ratio = lo_is_larger ? q1 / q0 : q0 / q1;  // smaller / larger end value, in [0, 1]
-  const T lambda = a * q_e / D;                       // q_e / q_max < 1
-  int steps = downward_recurrence_max_steps;
-  if (lambda <= T(0)) {
-    steps = 1;
-  } else if (lambda < T(1)) {
-    const T wanted = ceil(log(T(downward_recurrence_tolerance)) / log(lambda));
-    if (wanted < T(downward_recurrence_max_steps)) steps = std::max(1, static_cast<int>(wanted));
-  }
+  const int steps = detail::miller_steps(a * q_e / D);  // q_e / q_max < 1
   const int bottom = n - 2 * steps;
-  const T root_ratio = sqrt(ratio);
+  // small_powers[j] = ratio^(j/2); the smaller end's weight at m is ratio^(1−m/2).
+  std::array<T, 2 * recurrence_max_steps + 40> small_powers;
+  detail::fill_powers(sqrt(ratio), 2 - bottom, small_powers.data());
   T J_scaled = 0;  // Ĵ_bottom
   for (int m = bottom + 2; m <= n; m += 2) {
     // B̂_m = [(a t − b) q^(1−m/2)]_{t0}^{t1} q_e^(m/2), with the smaller end
     // entering as ratio^(1−m/2) ≤ 1 (0 at a clipped end).
-    const T small_power = pow(root_ratio, 2 - m);
+    const T& small_power = small_powers[2 - m];
     const T B_scaled = lo_is_larger ? q_e * (slope1 * small_power - slope0) : q_e * (slope1 - slope0 * small_power);
     J_scaled = (B_scaled - a * T(3 - m) * q_e * J_scaled) / (T(m - 2) * D);
   }
