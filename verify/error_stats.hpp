@@ -1,0 +1,115 @@
+// verify/error_stats.hpp — relative errors of one evaluation against the
+// reference, and their maxima over a sweep cell.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+
+#include "extended_precision.hpp"
+#include "sampling.hpp"
+
+namespace skelconv::verify {
+
+/// Accuracy the generated code must reach in double in the generic region
+/// (the only region asserted for now; the others are reported). A double
+/// closed form with a few dozen operations and no cancellation keeps ~1e-15;
+/// the targets leave room for the moderate cancellations a generic point
+/// still has, and the gradient one more digit since it differentiates.
+struct AccuracyTargets {
+  double generic_f = 1e-13;
+  double generic_grad = 1e-12;
+};
+
+/// Relative errors of one evaluation.
+///  f:              |f − f_ref| / |f_ref|
+///  grad:           |g − g_ref| / |g_ref|                 (norm-wise)
+///  grad_component: max_c |g_c − g_ref,c| / |g_ref|       (component-wise,
+///                  normalised by the norm: a component that is small because
+///                  of symmetry cannot have a meaningful relative error of its
+///                  own, but an error large compared to |∇f| is visible here)
+/// A non-finite result counts as an infinite error.
+struct RelativeErrors {
+  double f = 0;
+  double grad = 0;
+  double grad_component = 0;
+  bool nonfinite = false;
+};
+
+template <class T>
+RelativeErrors relative_errors(const T& f, const Vec3<T>& grad, const extended& f_ref, const Vec3<extended>& g_ref) {
+  using std::isfinite;
+  RelativeErrors out;
+  const extended fe(f);
+  const Vec3<extended> ge{extended(grad[0]), extended(grad[1]), extended(grad[2])};
+  if (!isfinite(fe) || !isfinite(ge[0]) || !isfinite(ge[1]) || !isfinite(ge[2])) {
+    out.nonfinite = true;
+    out.f = out.grad = out.grad_component = std::numeric_limits<double>::infinity();
+    return out;
+  }
+  out.f = static_cast<double>(abs(fe - f_ref) / abs(f_ref));
+  const extended g_norm = norm(g_ref);
+  const Vec3<extended> diff = sub(ge, g_ref);
+  out.grad = static_cast<double>(norm(diff) / g_norm);
+  for (int c = 0; c < 3; ++c) out.grad_component = std::max(out.grad_component, static_cast<double>(abs(diff[c]) / g_norm));
+  return out;
+}
+
+inline RelativeErrors worst_of(const RelativeErrors& x, const RelativeErrors& y) {
+  return {std::max(x.f, y.f), std::max(x.grad, y.grad), std::max(x.grad_component, y.grad_component),
+          x.nonfinite || y.nonfinite};
+}
+
+/// Maxima of one precision (double or extended) over a cell, with the sample
+/// that produced each maximum (for reproduction).
+struct PrecisionStats {
+  double max_f = 0;
+  double max_grad = 0;
+  double max_grad_component = 0;
+  std::uint64_t nonfinite = 0;
+  std::uint64_t f_above_target = 0;     ///< points with f error above the generic f target
+  std::uint64_t grad_above_target = 0;  ///< points with |∇f| error above the generic ∇f target
+  std::optional<SweepProblem> worst_f, worst_grad;
+
+  void add(const RelativeErrors& e, const SweepProblem& problem, const AccuracyTargets& targets) {
+    if (e.nonfinite) ++nonfinite;
+    if (!(e.f <= targets.generic_f)) ++f_above_target;
+    if (!(e.grad <= targets.generic_grad)) ++grad_above_target;
+    if (!worst_f || e.f > max_f) max_f = e.f, worst_f = problem;
+    if (!worst_grad || e.grad > max_grad) max_grad = e.grad, worst_grad = problem;
+    max_grad_component = std::max(max_grad_component, e.grad_component);
+  }
+  void merge(const PrecisionStats& o) {
+    if (o.worst_f && (!worst_f || o.max_f > max_f)) max_f = o.max_f, worst_f = o.worst_f;
+    if (o.worst_grad && (!worst_grad || o.max_grad > max_grad)) max_grad = o.max_grad, worst_grad = o.worst_grad;
+    max_grad_component = std::max(max_grad_component, o.max_grad_component);
+    nonfinite += o.nonfinite;
+    f_above_target += o.f_above_target;
+    grad_above_target += o.grad_above_target;
+  }
+};
+
+/// One cell of the report: (family, degree, weight degree, region).
+struct CellStats {
+  std::uint64_t points = 0;            ///< compared points
+  std::uint64_t excluded = 0;          ///< reference flagged by its own error estimate: not compared
+  std::uint64_t outside_support = 0;   ///< compact, P outside the support: f = 0 and the double clip agrees
+  std::uint64_t support_mismatch = 0;  ///< compact: binary128 and double clips disagree on emptiness
+  PrecisionStats in_double;
+  PrecisionStats in_extended;
+  double max_reference_error = 0;      ///< largest error estimate among the compared references
+
+  void merge(const CellStats& o) {
+    points += o.points;
+    excluded += o.excluded;
+    outside_support += o.outside_support;
+    support_mismatch += o.support_mismatch;
+    in_double.merge(o.in_double);
+    in_extended.merge(o.in_extended);
+    max_reference_error = std::max(max_reference_error, o.max_reference_error);
+  }
+};
+
+}  // namespace skelconv::verify

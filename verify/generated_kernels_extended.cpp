@@ -1,0 +1,15 @@
+// verify/generated_kernels_extended.cpp — the binary128 instantiation of the
+// generated templates for the verifier (see generated_kernels.hpp).
+#include "generated_kernels.hpp"
+
+namespace skelconv::verify {
+
+std::span<const GeneratedKernel<extended>> generated_kernels_extended() {
+  return generated::segment_kernels<extended>();
+}
+
+const GeneratedKernel<extended>* find_generated_extended(KernelFamily family, int degree, int weight_degree) {
+  return generated::find_segment_kernel<extended>(family, degree, weight_degree);
+}
+
+}  // namespace skelconv::verify

@@ -1,0 +1,114 @@
+// verify/point_evaluation.hpp — one sweep sample: the reference (quadrature
+// of the definition) against the generated functions in double and in
+// binary128, for every weight degree.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <stdexcept>
+
+#include "error_stats.hpp"
+#include "extended_precision.hpp"
+#include "generated_kernels.hpp"
+#include "reference_quadrature.hpp"
+#include "sampling.hpp"
+#include "skelconv/clip.hpp"
+
+namespace skelconv::verify {
+
+/// The generated functions of one (family, degree), per weight degree, in both
+/// precisions (nullptr where not generated).
+struct KernelPair {
+  const GeneratedKernel<double>* in_double = nullptr;
+  const GeneratedKernel<extended>* in_extended = nullptr;
+};
+using KernelsByWeightDegree = std::array<KernelPair, max_weight_degree + 1>;
+
+inline KernelsByWeightDegree find_kernels(KernelFamily family, int degree) {
+  KernelsByWeightDegree out{};
+  for (int d = 0; d <= max_weight_degree; ++d)
+    out[d] = {find_generated_double(family, degree, d),
+              find_generated_extended(family, degree, d)};
+  return out;
+}
+
+inline KernelDefinition<extended> reference_kernel(const SweepProblem& pb) {
+  return {pb.family, pb.degree, extended(pb.s), extended(pb.R)};
+}
+
+/// The generated input for `pb` in precision T. For the compact family the
+/// support is clipped in T, as the runtime does (skelconv/clip.hpp); nullopt
+/// when the clip is empty (the generated function must not be called; f = 0).
+template <class T>
+std::optional<SegmentInput<T>> generated_input(const SweepProblem& pb) {
+  SegmentInput<T> in;
+  for (int c = 0; c < 3; ++c) in.a[c] = T(pb.a[c]), in.b[c] = T(pb.b[c]), in.p[c] = T(pb.p[c]);
+  for (int k = 0; k <= max_weight_degree; ++k) in.w[k] = T(pb.w[k]);
+  in.s = T(pb.s);
+  in.R = T(pb.R);
+  if (pb.family == KernelFamily::compact) {
+    const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
+    if (!clip) return std::nullopt;
+    in.t0 = clip->t0;
+    in.t1 = clip->t1;
+  }
+  return in;
+}
+
+/// Worst relative errors over the three entry points f, grad and f_and_grad.
+template <class T>
+RelativeErrors evaluate_generated(const GeneratedKernel<T>& kernel, const std::optional<SegmentInput<T>>& in,
+                                  const ReferenceField& ref) {
+  if (!in) {  // clip empty in T while the reference sees the support: the pipeline returns 0
+    const Vec3<T> zero{};
+    return relative_errors(T(0), zero, ref.f, ref.grad);
+  }
+  const T f = kernel.f(*in);
+  const Vec3<T> grad = kernel.grad(*in);
+  Vec3<T> grad_joint{};
+  const T f_joint = kernel.f_and_grad(*in, grad_joint);
+  return worst_of(relative_errors(f, grad, ref.f, ref.grad), relative_errors(f_joint, grad_joint, ref.f, ref.grad));
+}
+
+/// Evaluates sample `pb` for every weight degree and adds it to `cells[d]`.
+inline void evaluate_sample(const SweepProblem& pb, const KernelsByWeightDegree& kernels, ReferenceIntegrator& integrator,
+                            const AccuracyTargets& targets, std::span<CellStats, max_weight_degree + 1> cells) {
+  const Vec3<extended> a = widen(pb.a), b = widen(pb.b), p = widen(pb.p);
+  SegmentMoments moments;
+  try {
+    moments = integrator.moments(reference_kernel(pb), a, b, p);
+  } catch (const std::exception&) {  // Boost gave up (non-finite integrand): no reference
+    for (int d = 0; d <= max_weight_degree; ++d)
+      if (kernels[d].in_double && kernels[d].in_extended) ++cells[d].excluded;
+    return;
+  }
+  const auto in_double = generated_input<double>(pb);
+  const auto in_extended = generated_input<extended>(pb);
+  std::array<extended, 4> w{};
+  for (int k = 0; k < 4; ++k) w[k] = extended(pb.w[k]);
+
+  for (int d = 0; d <= max_weight_degree; ++d) {
+    const KernelPair& kernel = kernels[d];
+    if (!kernel.in_double || !kernel.in_extended) continue;
+    CellStats& cell = cells[d];
+    if (moments.empty) {  // f = 0 exactly: nothing to compare, only the double clip's verdict
+      if (in_double) ++cell.support_mismatch;
+      else ++cell.outside_support;
+      continue;
+    }
+    if (!in_double) ++cell.support_mismatch;  // counted, and compared below as f = 0
+    const ReferenceField ref = integrator.field(moments, w, d);
+    if (ref.flagged) {
+      ++cell.excluded;
+      continue;
+    }
+    ++cell.points;
+    cell.max_reference_error = std::max(
+        {cell.max_reference_error, static_cast<double>(ref.f_relative_error), static_cast<double>(ref.grad_relative_error)});
+    cell.in_double.add(evaluate_generated(*kernel.in_double, in_double, ref), pb, targets);
+    cell.in_extended.add(evaluate_generated(*kernel.in_extended, in_extended, ref), pb, targets);
+  }
+}
+
+}  // namespace skelconv::verify

@@ -1,0 +1,221 @@
+// verify/report.cpp — see report.hpp.
+#include "report.hpp"
+
+#include <cstdio>
+#include <ostream>
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "generated_kernels.hpp"
+
+namespace skelconv::verify {
+namespace {
+
+std::string format_error(double value) {
+  char buffer[32];
+  if (value != value || value == std::numeric_limits<double>::infinity()) return "inf";
+  std::snprintf(buffer, sizeof buffer, "%.1e", value);
+  return buffer;
+}
+
+std::string pad_left(const std::string& text, std::size_t width) {
+  return text.size() >= width ? text : std::string(width - text.size(), ' ') + text;
+}
+
+std::string pad_right(const std::string& text, std::size_t width) {
+  return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
+}
+
+using RowKey = std::tuple<KernelFamily, int, int>;
+
+std::set<RowKey> rows_of(const SweepResult& result) {
+  std::set<RowKey> rows;
+  for (const auto& [key, cell] : result.cells) rows.insert({std::get<0>(key), std::get<1>(key), std::get<2>(key)});
+  return rows;
+}
+
+const CellStats* find_cell(const SweepResult& result, const RowKey& row, Region region) {
+  const auto it = result.cells.find({std::get<0>(row), std::get<1>(row), std::get<2>(row), region});
+  return it == result.cells.end() ? nullptr : &it->second;
+}
+
+constexpr std::size_t number_width = 8;  // "1.2e-16" plus the mark
+
+void write_table(std::ostream& out, const SweepResult& result, bool in_double, const AccuracyTargets& targets) {
+  out << pad_right("family", 8) << pad_left("i", 3) << pad_left("w", 3) << " |";
+  for (Region region : all_regions) {
+    std::string title(1, ' ');
+    title += region_short_name(region);
+    out << pad_right(title, 2 * number_width + 2) << "|";
+  }
+  out << '\n' << std::string(14, ' ') << " |";
+  for (std::size_t r = 0; r < all_regions.size(); ++r)
+    out << pad_left("f", number_width) << pad_left("|grad|", number_width + 1) << " |";
+  out << '\n';
+  KernelFamily previous_family{};
+  bool first = true;
+  for (const RowKey& row : rows_of(result)) {
+    if (!first && std::get<0>(row) != previous_family) out << '\n';
+    first = false;
+    previous_family = std::get<0>(row);
+    out << pad_right(std::string(family_name(std::get<0>(row))), 8) << pad_left(std::to_string(std::get<1>(row)), 3)
+        << pad_left(std::to_string(std::get<2>(row)), 3) << " |";
+    for (Region region : all_regions) {
+      const CellStats* cell = find_cell(result, row, region);
+      if (!cell || cell->points == 0) {
+        out << pad_left("-", number_width) << pad_left("-", number_width + 1) << " |";
+        continue;
+      }
+      const PrecisionStats& stats = in_double ? cell->in_double : cell->in_extended;
+      const bool asserted = in_double && region == Region::generic;
+      const auto mark = [&](double value, double target) {
+        return format_error(value) + (asserted && !(value <= target) ? "!" : " ");
+      };
+      out << pad_left(mark(stats.max_f, targets.generic_f), number_width)
+          << pad_left(mark(stats.max_grad, targets.generic_grad), number_width + 1) << " |";
+    }
+    out << '\n';
+  }
+}
+
+nlohmann::json problem_json(const SweepProblem& pb) {
+  char buffer[64];
+  const auto exact = [&](double x) {  // round-trip decimal, so the sample can be replayed exactly
+    std::snprintf(buffer, sizeof buffer, "%.17g", x);
+    return std::string(buffer);
+  };
+  const auto vec = [&](const auto& v) {
+    nlohmann::json out = nlohmann::json::array();
+    for (double x : v) out.push_back(exact(x));
+    return out;
+  };
+  return {{"region", region_name(pb.region)}, {"index", pb.index}, {"A", vec(pb.a)}, {"B", vec(pb.b)},
+          {"P", vec(pb.p)},  {"w", vec(pb.w)},  {"s", exact(pb.s)},  {"R", exact(pb.R)}};
+}
+
+nlohmann::json precision_json(const PrecisionStats& stats) {
+  nlohmann::json out{{"max_rel_f", stats.max_f},
+                     {"max_rel_grad", stats.max_grad},
+                     {"max_rel_grad_component", stats.max_grad_component},
+                     {"nonfinite", stats.nonfinite},
+                     {"f_above_generic_target", stats.f_above_target},
+                     {"grad_above_generic_target", stats.grad_above_target}};
+  if (stats.worst_f) out["worst_f_sample"] = problem_json(*stats.worst_f);
+  if (stats.worst_grad) out["worst_grad_sample"] = problem_json(*stats.worst_grad);
+  return out;
+}
+
+}  // namespace
+
+GenericVerdict generic_verdict(const SweepResult& result) {
+  GenericVerdict verdict;
+  for (const auto& [key, cell] : result.cells) {
+    if (std::get<3>(key) != Region::generic) continue;
+    verdict.compared += cell.points;
+    const PrecisionStats& s = cell.in_double;
+    // A point can miss both targets; counting f and ∇f misses separately is an
+    // upper bound we report as such (the JSON has both counts).
+    const std::uint64_t failing = s.f_above_target + s.grad_above_target;
+    verdict.failing_points += failing;
+    if (failing > 0) ++verdict.failing_cells;
+  }
+  return verdict;
+}
+
+void write_text_report(std::ostream& out, const SweepOptions& options, const SweepResult& result) {
+  out << "skelconv-verify: max relative error of the generated segment functions against binary128\n"
+         "quadrature of the definition integral (SPEC §2). Rows: family, kernel degree i, weight degree w.\n"
+      << "seed " << options.seed << ", samples per (family, degree, region): generic " << options.counts.generic
+      << ", other regions " << options.counts.other << "; shard " << options.shard_index << "/"
+      << options.shard_count << " (" << result.items_run << " of " << result.items_total << " items)\n\n";
+  out << "DOUBLE — generated code in double. Asserted: generic f <= " << format_error(options.targets.generic_f)
+      << ", |grad f| <= " << format_error(options.targets.generic_grad)
+      << " ('!' = above). Other regions are reported only.\n";
+  write_table(out, result, true, options.targets);
+  out << "\nEXTENDED — the same generated code in binary128: what remains here is formula error, not rounding.\n";
+  write_table(out, result, false, options.targets);
+
+  out << "\nAnomalies (excluded = reference error estimate above " << format_error(options.reference.flag_threshold)
+      << ", not compared; support mismatch = double and binary128 clips disagree on emptiness):\n";
+  std::uint64_t excluded = 0, mismatches = 0, nonfinite = 0, compared = 0, outside = 0;
+  double worst_reference = 0;
+  bool any = false;
+  for (const auto& [key, cell] : result.cells) {
+    excluded += cell.excluded;
+    mismatches += cell.support_mismatch;
+    nonfinite += cell.in_double.nonfinite + cell.in_extended.nonfinite;
+    compared += cell.points;
+    outside += cell.outside_support;
+    worst_reference = std::max(worst_reference, cell.max_reference_error);
+    if (cell.excluded || cell.support_mismatch || cell.in_double.nonfinite || cell.in_extended.nonfinite) {
+      any = true;
+      out << "  " << family_name(std::get<0>(key)) << " i=" << std::get<1>(key) << " w=" << std::get<2>(key) << " "
+          << region_name(std::get<3>(key)) << ": excluded " << cell.excluded << ", support mismatch "
+          << cell.support_mismatch << ", non-finite double " << cell.in_double.nonfinite << ", non-finite binary128 "
+          << cell.in_extended.nonfinite << '\n';
+    }
+  }
+  if (!any) out << "  none\n";
+  const GenericVerdict verdict = generic_verdict(result);
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.1f", result.seconds);
+  out << "\nsummary: " << result.samples << " samples, " << compared
+      << " comparisons (each: 3 entry points, double and binary128), " << excluded << " excluded, " << outside
+      << " outside the support (f = 0, clips agree), " << mismatches << " support mismatches, " << nonfinite
+      << " non-finite results; largest reference error estimate " << format_error(worst_reference)
+      << "; generic-target misses: " << verdict.failing_points << " (f and |grad f| counted separately) in "
+      << verdict.failing_cells << " rows, of " << verdict.compared << " generic comparisons; " << seconds << " s\n";
+}
+
+nlohmann::json json_report(const SweepOptions& options, const SweepResult& result) {
+  nlohmann::json cells = nlohmann::json::array();
+  for (const auto& [key, cell] : result.cells) {
+    const auto* kernel = find_generated_double(std::get<0>(key), std::get<1>(key), std::get<2>(key));
+    cells.push_back({{"family", family_name(std::get<0>(key))},
+                     {"degree", std::get<1>(key)},
+                     {"weight_degree", std::get<2>(key)},
+                     {"name", kernel ? kernel->name : ""},
+                     {"region", region_name(std::get<3>(key))},
+                     {"points", cell.points},
+                     {"excluded", cell.excluded},
+                     {"outside_support", cell.outside_support},
+                     {"support_mismatch", cell.support_mismatch},
+                     {"max_reference_error_estimate", cell.max_reference_error},
+                     {"double", precision_json(cell.in_double)},
+                     {"extended", precision_json(cell.in_extended)}});
+  }
+  const GenericVerdict verdict = generic_verdict(result);
+  return {{"tool", "skelconv-verify"},
+          {"settings",
+           {{"seed", options.seed},
+            {"points_generic", options.counts.generic},
+            {"points_other", options.counts.other},
+            {"chunk_size", options.chunk_size},
+            {"shard_index", options.shard_index},
+            {"shard_count", options.shard_count},
+            {"threads", options.threads},
+            {"target_generic_f", options.targets.generic_f},
+            {"target_generic_grad", options.targets.generic_grad},
+            {"reference_requested_tolerance", options.reference.requested},
+            {"reference_flag_threshold", options.reference.flag_threshold},
+            {"error_definitions",
+             {{"f", "|f - f_ref| / |f_ref|"},
+              {"grad", "|g - g_ref| / |g_ref| (Euclidean norms)"},
+              {"grad_component", "max_c |g_c - g_ref_c| / |g_ref|"},
+              {"entry_points", "max over f(), grad() and f_and_grad()"}}}}},
+          {"cells", cells},
+          {"summary",
+           {{"samples", result.samples},
+            {"items_run", result.items_run},
+            {"items_total", result.items_total},
+            {"seconds", result.seconds},
+            {"reference_kernel_evaluations", result.kernel_evaluations},
+            {"reference_replay_misses", result.replay_misses},
+            {"generic_failing_points", verdict.failing_points},
+            {"generic_failing_rows", verdict.failing_cells},
+            {"generic_comparisons", verdict.compared},
+            {"generic_passed", verdict.passed()}}}};
+}
+
+}  // namespace skelconv::verify
