@@ -1,0 +1,65 @@
+// The generated kernels are templates on the scalar type (docs/generated_api.md):
+// double is what users call, long double and Boost.Multiprecision types let
+// the verifier separate formula error from rounding. This instantiates the
+// whole table for long double and one family for cpp_bin_float_50 (the
+// verifier instantiates it for float128), and checks that each agrees with
+// double at a point in general position: the same formula evaluated with
+// more digits must agree to double's accuracy there (SPEC §2; verify/ holds
+// the comparison against quadrature of the definition).
+#include <gtest/gtest.h>
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include <cmath>
+
+#include "generated/segment_table.hpp"
+
+namespace {
+
+template <class T>
+skelconv::SegmentInput<T> general_position_input() {
+  skelconv::SegmentInput<T> in;
+  in.a = {T(0.25), T(-0.5), T(0.125)};
+  in.b = {T(1.5), T(0.75), T(-0.375)};
+  in.p = {T(0.625), T(0.875), T(0.5)};
+  in.w = {T(1), T(0.5), T(0.25), T(0.125)};
+  in.s = T(1.5);
+  in.R = T(2.5);
+  // P is inside the ball of radius R around every point of the segment.
+  in.t0 = T(0);
+  in.t1 = T(1);
+  return in;
+}
+
+template <class T>
+void expect_agrees_with_double(double tolerance) {
+  const auto in_d = general_position_input<double>();
+  const auto in_t = general_position_input<T>();
+  const auto& table_d = skelconv::generated::segment_kernels<double>();
+  const auto& table_t = skelconv::generated::segment_kernels<T>();
+  ASSERT_EQ(table_d.size(), table_t.size());
+  for (size_t i = 0; i < table_d.size(); ++i) {
+    std::array<double, 3> g_d;
+    std::array<T, 3> g_t;
+    const double f_d = table_d[i].f_and_grad(in_d, g_d);
+    const T f_t = table_t[i].f_and_grad(in_t, g_t);
+    const double f_t_d = static_cast<double>(f_t);
+    EXPECT_LE(std::abs(f_d - f_t_d), tolerance * std::abs(f_t_d)) << table_d[i].name;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_LE(std::abs(g_d[c] - static_cast<double>(g_t[c])), tolerance * std::abs(f_t_d) + 1e-300)
+          << table_d[i].name << " grad[" << c << "]";
+  }
+}
+
+TEST(ScalarTypes, LongDoubleInstantiatesAndAgrees) { expect_agrees_with_double<long double>(1e-13); }
+
+TEST(ScalarTypes, CppBinFloat50CompilesForOneFamily) {
+  using Big = boost::multiprecision::cpp_bin_float_50;
+  const auto in_big = general_position_input<Big>();
+  const auto in_d = general_position_input<double>();
+  const Big f_big = skelconv::generated::segment_cauchy_i4_w3_f(in_big);
+  const double f_d = skelconv::generated::segment_cauchy_i4_w3_f(in_d);
+  EXPECT_LE(std::abs(f_d - static_cast<double>(f_big)), 1e-13 * std::abs(f_d));
+}
+
+}  // namespace
