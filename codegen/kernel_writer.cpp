@@ -13,6 +13,7 @@ namespace skelconv::codegen {
 namespace {
 
 constexpr const char* kFunctionSuffix[] = {"f", "grad", "f_and_grad"};
+constexpr const char* kGenericSuffix = "f_and_grad_generic";
 constexpr SegmentOutputs kOutputs[] = {SegmentOutputs::value, SegmentOutputs::gradient,
                                        SegmentOutputs::value_and_gradient};
 
@@ -73,6 +74,24 @@ std::string function_text(const SegmentKernelSpec& spec, int which, const Emitte
   return os.str();
 }
 
+// f and ∇f on the generic forms only: straight-line code for batch (SIMD)
+// evaluation; returns false where the full function would take another form,
+// and the caller must then call <name>_f_and_grad.
+std::string generic_function_text(const SegmentKernelSpec& spec, const EmittedCode& code) {
+  const std::string name = spec.name() + "_" + kGenericSuffix;
+  std::ostringstream os;
+  os << "/// The field and its gradient on the generic forms only (no helper loops), where\n"
+     << "///     " << spec.equation() << "\n"
+     << "/// Returns false where " << spec.name() << "_f_and_grad takes another form: its values\n"
+     << "/// then are not to be used.\n"
+     << "/// Operations: " << ops_text(code.ops) << ".\n"
+     << "template <class T>\n"
+     << "bool " << name << "(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {\n"
+     << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n"
+     << code.body << "  return " << code.generic_applies << ";\n}\n\n";
+  return os.str();
+}
+
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
@@ -95,6 +114,8 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
       k.ops_longest[which] = code.ops_longest;
       body += function_text(spec, which, code);
     }
+    body += generic_function_text(
+        spec, build_segment_program(spec, SegmentOutputs::value_and_gradient).emit(Forms::generic_only));
     kernels.push_back(k);
   }
 
@@ -124,6 +145,8 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "  T (*f)(const SegmentInput<T>&);\n"
         << "  std::array<T, 3> (*grad)(const SegmentInput<T>&);\n"
         << "  T (*f_and_grad)(const SegmentInput<T>&, std::array<T, 3>&);\n"
+        << "  /// f and ∇f by the generic forms only; false: use f_and_grad instead.\n"
+        << "  bool (*f_and_grad_generic)(const SegmentInput<T>&, T&, std::array<T, 3>&);\n"
         << "  const char* name;\n  const char* equation;\n"
         << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n"
         << "/// Every generated kernel, sorted by family, degree and weight degree.\n"
@@ -132,7 +155,7 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
   for (const EmittedKernel& k : kernels) {
     const std::string n = k.spec.name();
     table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", "
-          << k.spec.weight_degree << ", &" << n << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, \""
+          << k.spec.weight_degree << ", &" << n << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, &" << n << "_" << kGenericSuffix << "<T>, \""
           << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", "
           << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << "},\n";
   }

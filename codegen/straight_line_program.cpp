@@ -70,7 +70,7 @@ bool is_half_integer(const numeric& e) { return !e.is_integer() && (2 * e).is_in
 // deterministic function of the program.
 class Emitter {
  public:
-  explicit Emitter(const StraightLineProgram& program) : program_(program) {}
+  Emitter(const StraightLineProgram& program, Forms forms) : program_(program), forms_(forms) {}
 
   EmittedCode run() {
     find_live_steps();
@@ -87,7 +87,8 @@ class Emitter {
       }
     }
     for (const auto& [lhs, value] : program_.outputs_) line(lhs + " = " + emit(value).s + ";");
-    return {body_.str(), scopes_.back().generic, scopes_.back().longest};
+    return {body_.str(), scopes_.back().generic, scopes_.back().longest,
+            special_forms_.empty() ? "true" : "!(" + special_forms_ + ")"};
   }
 
  private:
@@ -479,26 +480,34 @@ class Emitter {
         all += (all.empty() ? "" : " && ") + named(c) + " >= T(0)";
       conditions.push_back(all);
     }
+    const bool calls_helper = std::any_of(choice.alternatives.begin(), choice.alternatives.end(),
+                                          [](const Alternative& a) { return !a.calls.empty(); });
+    if (forms_ == Forms::generic_only && calls_helper) {
+      // The full program takes the generic form where no earlier form's
+      // conditions all hold.
+      for (size_t i = 0; i < choice.generic; ++i)
+        special_forms_ += (special_forms_.empty() ? "(" : " || (") + conditions[i] + ")";
+      const Scope branch = emit_alternative(choice, choice.generic, "{");
+      line("}");
+      scopes_.back().generic += branch.generic;
+      scopes_.back().longest += branch.generic;
+      for (const symbol& t : choice.targets) names_[t] = t.get_name();
+      return;
+    }
     OpCount longest, generic;
     for (size_t i = 0; i < choice.alternatives.size(); ++i) {
-      const Alternative& alt = choice.alternatives[i];
       const bool last = i + 1 == choice.alternatives.size();
+      std::string opening;
       if (!last) {
-        line(std::string(i == 0 ? "if (" : "} else if (") + conditions[i] + ") {");
+        opening = std::string(i == 0 ? "if (" : "} else if (") + conditions[i] + ") {";
       } else if (i > 0) {
-        line("} else {");
+        opening = "} else {";
       } else {
-        line("{");  // a single form: its temporaries stay local all the same
+        opening = "{";  // a single form: its temporaries stay local all the same
       }
-      scopes_.emplace_back();
-      line("// " + alt.why);
-      for (const auto& [s, v] : alt.steps) define(s, v);
-      for (const ArrayCall& call : alt.calls) emit_array_call(call);
-      for (size_t j = 0; j < choice.targets.size(); ++j)
-        line(choice.targets[j].get_name() + " = " + emit(alt.values[j]).s + ";");
-      if (scopes_.back().longest.total() > longest.total()) longest = scopes_.back().longest;
-      if (i == choice.generic) generic = scopes_.back().generic;
-      scopes_.pop_back();
+      const Scope branch = emit_alternative(choice, i, opening);
+      if (branch.longest.total() > longest.total()) longest = branch.longest;
+      if (i == choice.generic) generic = branch.generic;
     }
     line("}");
     scopes_.back().generic += generic;
@@ -506,7 +515,24 @@ class Emitter {
     for (const symbol& t : choice.targets) names_[t] = t.get_name();
   }
 
+  // One alternative of a choice, in its own scope; returns that scope.
+  Scope emit_alternative(const Choice& choice, size_t i, const std::string& opening) {
+    const Alternative& alt = choice.alternatives[i];
+    line(opening);
+    scopes_.emplace_back();
+    line("// " + alt.why);
+    for (const auto& [s, v] : alt.steps) define(s, v);
+    for (const ArrayCall& call : alt.calls) emit_array_call(call);
+    for (size_t j = 0; j < choice.targets.size(); ++j)
+      line(choice.targets[j].get_name() + " = " + emit(alt.values[j]).s + ";");
+    Scope branch = std::move(scopes_.back());
+    scopes_.pop_back();
+    return branch;
+  }
+
   const StraightLineProgram& program_;
+  Forms forms_;
+  std::string special_forms_;  // generic_only: where a non-generic form is due
   std::ostringstream body_;
   std::vector<Scope> scopes_;
   std::map<ex, int, ex_is_less> uses_;
@@ -518,6 +544,6 @@ class Emitter {
   int next_temp_ = 0;
 };
 
-EmittedCode StraightLineProgram::emit() const { return Emitter(*this).run(); }
+EmittedCode StraightLineProgram::emit(Forms forms) const { return Emitter(*this, forms).run(); }
 
 }  // namespace skelconv::codegen

@@ -62,6 +62,17 @@ struct EmittedCode {
   std::string body;     ///< C++ statements, indented by two spaces
   OpCount ops;          ///< ops on the generic path (Choice::generic everywhere)
   OpCount ops_longest;  ///< ops on the longest path through the choices
+  /// generic_only: a C++ bool expression, true where the generic forms are
+  /// the ones the full program would take.
+  std::string generic_applies = "true";
+};
+
+/// What `emit` writes.
+enum class Forms {
+  all,           ///< every alternative, chosen at run time
+  generic_only,  ///< the generic alternative of every choice that calls a
+                 ///< helper (a loop): straight-line code a compiler can
+                 ///< vectorise, plus the condition under which it is exact
 };
 
 class StraightLineProgram {
@@ -78,7 +89,7 @@ class StraightLineProgram {
   /// emitter writes root² as `square` and 1/square as (1/root)².
   void declare_square_root(const GiNaC::symbol& root, const GiNaC::symbol& square);
 
-  EmittedCode emit() const;
+  EmittedCode emit(Forms forms = Forms::all) const;
 
  private:
   struct Step {
