@@ -19,15 +19,21 @@
 //   * the per-lane SegmentInput is rebuilt field by field from locals
 //     (detail::Uniforms): an aggregate copy, or a load from `segment` after a
 //     store to the outputs (possible aliasing), stops the vectoriser.
-// What does NOT vectorise: a kernel with a loop inside one of its branches.
-// Since the stable forms (commit e5ec091) every generated kernel has one:
-// J_downward / J_upward_compact (include/skelconv/stable_recurrence.hpp),
-// with a data-dependent trip count, on the "P beyond an end, near the line"
-// branch. GCC then keeps the loop scalar ("loop nest containing two or more
-// consecutive inner loops"), and the batch path is only the scalar code
-// inlined. docs/bench.md, "What the generator must emit", says what would
-// make it vectorise again.
-//
+//   * the loop body must be straight-line: a loop inside it with a
+//     data-dependent trip count (J_downward / J_upward_compact of
+//     include/skelconv/stable_recurrence.hpp, on the "P beyond an end, near
+//     the line" forms) keeps the whole loop scalar. Hence two passes: the
+//     vectorised loop runs every lane through the generated
+//     `<name>_f_and_grad_generic` (the generic forms only, straight-line; for
+//     even compact degrees a fixed 15-node Gauss–Legendre loop, which GCC
+//     unrolls completely given the --param limits of bench/CMakeLists.txt)
+//     and records the lanes where it returned false; a
+//     scalar loop then re-evaluates only those with the full
+//     `<name>_f_and_grad` (stable forms, Gauss rules far from the line),
+//     called out of line. Results are those of the scalar path (the batch
+//     benchmark checks them: 1e-13 relative per point, see batch_bench.cpp).
+//   * a flag array of bool or integers next to the kernel's bool result gives
+//     GCC 12 "no vectype for stmt"; the flags are doubles.
 // Preconditions (as for the generated scalar code): points are not on an
 // inverse-kernel segment. The compact path clips branch-free: every lane
 // computes its clip interval with min/max, the lanes whose clip is empty are
@@ -39,6 +45,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "skelconv/clip.hpp"
 #include "skelconv/segment_input.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__FAST_MATH__) && \
@@ -101,33 +108,77 @@ struct Uniforms {
 };
 }  // namespace detail
 
+/// The scalar fix-up: the full generated function (stable forms included)
+/// for one lane, kept out of line so that `flatten` does not paste the
+/// stable forms' loops next to the vectorised loop.
+template <auto Full>
+[[gnu::noinline]] void full_lane(const SegmentInput<double>& in, double& f, double& gx, double& gy, double& gz) {
+  std::array<double, 3> g;
+  f = Full(in, g);
+  gx = g[0];
+  gy = g[1];
+  gz = g[2];
+}
+
+/// Points per chunk: the vectorised pass over a chunk records which lanes
+/// need the full function in a small array on the stack, then the scalar
+/// pass re-evaluates those (while the chunk is still in L1).
+inline constexpr std::size_t batch_chunk = 256;
+
 /// f and ∇f at every point for an inverse or Cauchy kernel. `segment` holds
-/// A, B, the weight and s; its p is ignored. Kernel: a generated
-/// f_and_grad function on double, e.g.
-///     f_and_grad_batch<&generated::segment_cauchy_i4_w1_f_and_grad<double>>(in, pts, out);
-template <auto Kernel>
-SKELCONV_BATCH_FLATTEN void f_and_grad_batch(const SegmentInput<double>& segment, PointsSoA points, FieldSoA out) {
+/// A, B, the weight and s; its p is ignored. Generic: a generated
+/// `<name>_f_and_grad_generic` on double (straight-line, evaluated for every
+/// lane in the vectorised loop); Full: the matching `<name>_f_and_grad`, called
+/// only for the lanes where Generic returned false. Returns how many lanes
+/// needed Full. E.g.
+///     f_and_grad_batch<&generated::segment_cauchy_i4_w1_f_and_grad_generic<double>,
+///                      &generated::segment_cauchy_i4_w1_f_and_grad<double>>(in, pts, out);
+template <auto Generic, auto Full>
+SKELCONV_BATCH_FLATTEN std::size_t f_and_grad_batch(const SegmentInput<double>& segment, PointsSoA points,
+                                                    FieldSoA out) {
   const double *x = points.x, *y = points.y, *z = points.z;
   double *f = out.f, *gx = out.gx, *gy = out.gy, *gz = out.gz;
   const detail::Uniforms u(segment);
+  std::size_t fallbacks = 0;
+  for (std::size_t begin = 0; begin < points.n; begin += batch_chunk) {
+    const std::size_t end = std::min(points.n, begin + batch_chunk);
+    // 1 where the lane needs the full function. A double, like the data: a
+    // bool or integer flag mixed with the kernel's bool result gives GCC 12
+    // "no vectype for stmt" and the loop stays scalar.
+    double need[batch_chunk];
 #pragma GCC ivdep
-  for (std::size_t k = 0; k < points.n; ++k) {
-    SegmentInput<double> in;
-    u.fill(in);
-    in.p = {x[k], y[k], z[k]};
-    std::array<double, 3> g;
-    f[k] = Kernel(in, g);
-    gx[k] = g[0];
-    gy[k] = g[1];
-    gz[k] = g[2];
+    for (std::size_t k = begin; k < end; ++k) {
+      SegmentInput<double> in;
+      u.fill(in);
+      in.p = {x[k], y[k], z[k]};
+      std::array<double, 3> g;
+      double value;
+      const bool ok = Generic(in, value, g);
+      f[k] = value;
+      gx[k] = g[0];
+      gy[k] = g[1];
+      gz[k] = g[2];
+      need[k - begin] = ok ? 0.0 : 1.0;
+    }
+    for (std::size_t k = begin; k < end; ++k) {
+      if (!need[k - begin]) continue;
+      SegmentInput<double> in;
+      u.fill(in);
+      in.p = {x[k], y[k], z[k]};
+      full_lane<Full>(in, f[k], gx[k], gy[k], gz[k]);
+      ++fallbacks;
+    }
   }
+  return fallbacks;
 }
 
 /// The same for a compact kernel, clip included and branch-free: the clip of
 /// skelconv::clip_to_ball (include/skelconv/clip.hpp) with its early returns
-/// replaced by min/max and one final select.
-template <auto Kernel>
-SKELCONV_BATCH_FLATTEN void compact_f_and_grad_batch(const SegmentInput<double>& segment, PointsSoA points, FieldSoA out) {
+/// replaced by min/max and one final select. Lanes outside the support get
+/// 0 and never need Full.
+template <auto Generic, auto Full>
+SKELCONV_BATCH_FLATTEN std::size_t compact_f_and_grad_batch(const SegmentInput<double>& segment, PointsSoA points,
+                                                            FieldSoA out) {
   const double *x = points.x, *y = points.y, *z = points.z;
   double *f = out.f, *gx = out.gx, *gy = out.gy, *gz = out.gz;
   // Locals only: out may alias `segment` as far as the compiler knows, and a
@@ -135,34 +186,56 @@ SKELCONV_BATCH_FLATTEN void compact_f_and_grad_batch(const SegmentInput<double>&
   const detail::Uniforms u(segment);
   const double ab0 = u.b0 - u.a0, ab1 = u.b1 - u.a1, ab2 = u.b2 - u.a2;
   const double a = ab0 * ab0 + ab1 * ab1 + ab2 * ab2;
-  const double inv_a = 1.0 / a;
-  const double aR2 = a * u.R * u.R;
+  const double R = u.R;
+  std::size_t fallbacks = 0;
+  for (std::size_t begin = 0; begin < points.n; begin += batch_chunk) {
+    const std::size_t end = std::min(points.n, begin + batch_chunk);
+    double need[batch_chunk];  // as above
 #pragma GCC ivdep
-  for (std::size_t k = 0; k < points.n; ++k) {
-    const double ap0 = x[k] - u.a0, ap1 = y[k] - u.a1, ap2 = z[k] - u.a2;
-    const double b = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
-    const double cx = ab1 * ap2 - ab2 * ap1, cy = ab2 * ap0 - ab0 * ap2, cz = ab0 * ap1 - ab1 * ap0;
-    const double disc = aR2 - (cx * cx + cy * cy + cz * cz);
-    const double half_width = std::sqrt(std::max(disc, 0.0)) * inv_a;
-    const double centre = b * inv_a;
-    const double t0 = std::max(0.0, centre - half_width);
-    const double t1 = std::min(1.0, centre + half_width);
-    const bool inside = (disc > 0.0) & (t0 < t1);
-    // Outside: a valid, empty-ish interval whose value is discarded below.
-    const double safe_t0 = inside ? t0 : 0.0;
-    const double safe_t1 = inside ? t1 : 0.5;
-    SegmentInput<double> in;
-    u.fill(in);
-    in.p = {x[k], y[k], z[k]};
-    in.t0 = safe_t0;
-    in.t1 = safe_t1;
-    std::array<double, 3> g;
-    const double value = Kernel(in, g);
-    f[k] = inside ? value : 0.0;
-    gx[k] = inside ? g[0] : 0.0;
-    gy[k] = inside ? g[1] : 0.0;
-    gz[k] = inside ? g[2] : 0.0;
+    for (std::size_t k = begin; k < end; ++k) {
+      const double ap0 = x[k] - u.a0, ap1 = y[k] - u.a1, ap2 = z[k] - u.a2;
+      const double b = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
+      const double cx = ab1 * ap2 - ab2 * ap1, cy = ab2 * ap0 - ab0 * ap2, cz = ab0 * ap1 - ab1 * ap0;
+      // The arithmetic of clip_to_ball, operation for operation (a clip that
+      // differs by an ulp changes f by ~1e-12 relative where the interval is
+      // short, at the edge of the support).
+      const double disc = a * R * R - (cx * cx + cy * cy + cz * cz);
+      const double half_width = std::sqrt(std::max(disc, 0.0)) / a;
+      const double centre = b / a;
+      const double t0 = std::max(0.0, centre - half_width);
+      const double t1 = std::min(1.0, centre + half_width);
+      const bool inside = (disc > 0.0) & (t0 < t1);
+      // Outside: a valid, empty-ish interval whose value is discarded below.
+      const double safe_t0 = inside ? t0 : 0.0;
+      const double safe_t1 = inside ? t1 : 0.5;
+      SegmentInput<double> in;
+      u.fill(in);
+      in.p = {x[k], y[k], z[k]};
+      in.t0 = safe_t0;
+      in.t1 = safe_t1;
+      std::array<double, 3> g;
+      double value;
+      const bool ok = Generic(in, value, g);
+      f[k] = inside ? value : 0.0;
+      gx[k] = inside ? g[0] : 0.0;
+      gy[k] = inside ? g[1] : 0.0;
+      gz[k] = inside ? g[2] : 0.0;
+      need[k - begin] = ok ? 0.0 : (inside ? 1.0 : 0.0);
+    }
+    for (std::size_t k = begin; k < end; ++k) {
+      if (!need[k - begin]) continue;
+      SegmentInput<double> in;
+      u.fill(in);
+      in.p = {x[k], y[k], z[k]};
+      // The scalar path's clip (inside the support: never empty here).
+      const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
+      in.t0 = clip ? clip->t0 : 0.0;
+      in.t1 = clip ? clip->t1 : 0.0;
+      full_lane<Full>(in, f[k], gx[k], gy[k], gz[k]);
+      ++fallbacks;
+    }
   }
+  return fallbacks;
 }
 
 }  // namespace skelconv::bench

@@ -12,22 +12,26 @@
 
 namespace skelconv::bench {
 
-using BatchFunction = void (*)(const Input&, PointsSoA, FieldSoA);
+/// Evaluates a batch; returns how many lanes needed the full (scalar) function.
+using BatchFunction = std::size_t (*)(const Input&, PointsSoA, FieldSoA);
 
 struct BatchEntry {
   KernelKey key;
   BatchFunction batch;
 };
 
+#define SKELCONV_BATCH(name) \
+  &generated::name##_f_and_grad_generic<double>, &generated::name##_f_and_grad<double>
 inline const BatchEntry batch_entries[] = {
-    {{KernelFamily::inverse, 3, 1}, &f_and_grad_batch<&generated::segment_inverse_i3_w1_f_and_grad<double>>},
-    {{KernelFamily::inverse, 3, 2}, &f_and_grad_batch<&generated::segment_inverse_i3_w2_f_and_grad<double>>},
-    {{KernelFamily::cauchy, 4, 1}, &f_and_grad_batch<&generated::segment_cauchy_i4_w1_f_and_grad<double>>},
-    {{KernelFamily::cauchy, 4, 3}, &f_and_grad_batch<&generated::segment_cauchy_i4_w3_f_and_grad<double>>},
-    {{KernelFamily::compact, 4, 0}, &compact_f_and_grad_batch<&generated::segment_compact_i4_w0_f_and_grad<double>>},
-    {{KernelFamily::compact, 6, 0}, &compact_f_and_grad_batch<&generated::segment_compact_i6_w0_f_and_grad<double>>},
-    {{KernelFamily::compact, 3, 0}, &compact_f_and_grad_batch<&generated::segment_compact_i3_w0_f_and_grad<double>>},
+    {{KernelFamily::inverse, 3, 1}, &f_and_grad_batch<SKELCONV_BATCH(segment_inverse_i3_w1)>},
+    {{KernelFamily::inverse, 3, 2}, &f_and_grad_batch<SKELCONV_BATCH(segment_inverse_i3_w2)>},
+    {{KernelFamily::cauchy, 4, 1}, &f_and_grad_batch<SKELCONV_BATCH(segment_cauchy_i4_w1)>},
+    {{KernelFamily::cauchy, 4, 3}, &f_and_grad_batch<SKELCONV_BATCH(segment_cauchy_i4_w3)>},
+    {{KernelFamily::compact, 4, 0}, &compact_f_and_grad_batch<SKELCONV_BATCH(segment_compact_i4_w0)>},
+    {{KernelFamily::compact, 6, 0}, &compact_f_and_grad_batch<SKELCONV_BATCH(segment_compact_i6_w0)>},
+    {{KernelFamily::compact, 3, 0}, &compact_f_and_grad_batch<SKELCONV_BATCH(segment_compact_i3_w0)>},
 };
+#undef SKELCONV_BATCH
 
 /// Query points in SoA layout with room for the outputs.
 struct Batch {
