@@ -44,9 +44,10 @@ OpCount gauss_rule_ops(int nodes, int m_lo, int m_hi, int k_max) {
   const int levels = (m_hi - m_lo) / 2 + 1, moments = k_max + 1;
   OpCount per_node;
   per_node.add = 3 + levels * moments;
-  per_node.mul = 4 + std::abs(m_hi) + levels * (2 + moments);
+  const bool even = m_hi % 2 == 0;
+  per_node.mul = 4 + std::abs(m_hi) / (even ? 2 : 1) + levels * (2 + moments);
   per_node.div = m_hi > 0 ? 1 : 0;
-  per_node.sqrt = 1;
+  per_node.sqrt = even ? 0 : 1;
   OpCount total;
   for (int j = 0; j < nodes; ++j) total += per_node;
   total.add += 2;
@@ -96,12 +97,20 @@ class SegmentProgramBuilder {
     if (spec_.family == KernelFamily::compact) {
       const MomentSymbols symbols = compact_symbols();
       if (spec_.degree % 2 == 0) {
-        // t^k q^(i/2) is a polynomial of degree ≤ i + k: the 15-point
-        // Gauss–Legendre rule is exact and, all terms positive, stable.
-        Alternative exact{{}, "even degree: the integrand is a polynomial, integrated exactly by "
-                          "segment_moments_gauss<T, 15>", {}, {}, {}};
-        fill_from_helper(exact, "M_exact", "segment_moments_gauss<T, 15>",
-                         {a_, b_, c_, symbols.lo.t, symbols.hi.t}, value, gradient);
+        // t^k q^(i/2) is a polynomial of degree ≤ i + k: an N-point
+        // Gauss–Legendre rule with 2N − 1 ≥ i + k is exact and, all terms
+        // positive, stable. N is the smallest Boost tabulates that suffices.
+        const int polynomial_degree = spec_.degree + highest_moment(gradient);
+        int nodes = 7;
+        for (int tabulated : {7, 10, 15, 20, 25, 30}) {
+          nodes = tabulated;
+          if (2 * tabulated - 1 >= polynomial_degree) break;
+        }
+        const std::string rule = "segment_moments_gauss<T, " + std::to_string(nodes) + ">";
+        Alternative exact{{}, "even degree: the integrand is a polynomial of degree " +
+                                  std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
+                          {}, {}, {}};
+        fill_from_helper(exact, "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t}, value, gradient);
         choice.alternatives.push_back(std::move(exact));
         program_.choose(std::move(choice));
         add_outputs(targets, value, gradient);

@@ -1368,7 +1368,7 @@ bool segment_cauchy_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 32 +, 42 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 225 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 114 +, 205 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1427,7 +1427,7 @@ T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 39 +, 62 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 297 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 137 +, 257 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1498,7 +1498,7 @@ std::array<T, 3> segment_cauchy_i2_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 39 +, 65 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 381 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 341 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1640,7 +1640,7 @@ bool segment_cauchy_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 34 +, 47 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 135 +, 247 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 135 +, 227 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1701,7 +1701,7 @@ T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 43 +, 75 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 320 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 159 +, 280 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1774,7 +1774,7 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 45 +, 83 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 220 +, 427 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 220 +, 387 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1927,7 +1927,7 @@ bool segment_cauchy_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 37 +, 52 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 156 +, 269 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 156 +, 249 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1990,7 +1990,7 @@ T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 48 +, 90 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 181 +, 344 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 181 +, 304 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2073,7 +2073,7 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 52 +, 100 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 263 +, 472 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 263 +, 432 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2232,7 +2232,7 @@ bool segment_cauchy_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 42 +, 62 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 177 +, 291 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 177 +, 271 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2299,7 +2299,7 @@ T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 54 +, 106 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 203 +, 367 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 203 +, 327 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2386,7 +2386,7 @@ std::array<T, 3> segment_cauchy_i2_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 61 +, 123 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 306 +, 517 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 306 +, 477 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3856,7 +3856,7 @@ bool segment_cauchy_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 34 +, 46 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 265 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 114 +, 225 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3917,7 +3917,7 @@ T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 41 +, 73 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 337 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 137 +, 277 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3990,7 +3990,7 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 41 +, 77 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 421 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 361 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4134,7 +4134,7 @@ bool segment_cauchy_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 37 +, 52 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 287 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 135 +, 247 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4198,7 +4198,7 @@ T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 45 +, 87 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 360 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 159 +, 300 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4274,7 +4274,7 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 48 +, 96 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 466 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 220 +, 406 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4422,7 +4422,7 @@ bool segment_cauchy_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 40 +, 62 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 309 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 156 +, 269 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4488,7 +4488,7 @@ T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 51 +, 102 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 383 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 181 +, 323 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4565,7 +4565,7 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 55 +, 118 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 511 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 263 +, 451 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4725,7 +4725,7 @@ bool segment_cauchy_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 44 +, 74 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 177 +, 332 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 177 +, 292 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4801,7 +4801,7 @@ T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 57 +, 121 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 406 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 203 +, 346 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4880,7 +4880,7 @@ std::array<T, 3> segment_cauchy_i4_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 63 +, 143 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 306 +, 557 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 306 +, 497 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6215,7 +6215,7 @@ bool segment_cauchy_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 36 +, 57 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 305 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 114 +, 245 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6280,7 +6280,7 @@ T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 43 +, 82 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 377 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 137 +, 297 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6355,7 +6355,7 @@ std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 43 +, 86 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 461 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 381 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6503,7 +6503,7 @@ bool segment_cauchy_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 39 +, 63 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 327 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 135 +, 267 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6569,7 +6569,7 @@ T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 47 +, 96 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 400 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 159 +, 320 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6647,7 +6647,7 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 50 +, 107 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 506 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 220 +, 426 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6799,7 +6799,7 @@ bool segment_cauchy_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 42 +, 74 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 349 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 156 +, 289 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6868,7 +6868,7 @@ T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 53 +, 113 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 423 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 181 +, 343 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6947,7 +6947,7 @@ std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 57 +, 130 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 551 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 263 +, 471 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7105,7 +7105,7 @@ bool segment_cauchy_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 47 +, 86 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 371 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 311 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7175,7 +7175,7 @@ T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 59 +, 133 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 446 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 203 +, 366 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7257,7 +7257,7 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 66 +, 155 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 596 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 306 +, 516 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8607,7 +8607,7 @@ bool segment_cauchy_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 38 +, 66 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 345 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 114 +, 265 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8674,7 +8674,7 @@ T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 45 +, 91 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 417 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 137 +, 317 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8751,7 +8751,7 @@ std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 45 +, 95 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 501 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 401 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8903,7 +8903,7 @@ bool segment_cauchy_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 41 +, 72 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 367 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 135 +, 287 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8971,7 +8971,7 @@ T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 49 +, 105 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 440 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 159 +, 340 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9051,7 +9051,7 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 52 +, 116 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 546 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 220 +, 446 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9207,7 +9207,7 @@ bool segment_cauchy_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 44 +, 83 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 389 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 156 +, 309 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9278,7 +9278,7 @@ T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 55 +, 122 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 463 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 181 +, 363 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9359,7 +9359,7 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 59 +, 139 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 591 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 263 +, 491 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9521,7 +9521,7 @@ bool segment_cauchy_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 49 +, 97 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 411 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 331 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9593,7 +9593,7 @@ T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 61 +, 142 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 486 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 203 +, 386 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9677,7 +9677,7 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 68 +, 166 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 636 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 306 +, 536 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11063,7 +11063,7 @@ bool segment_cauchy_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 40 +, 75 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 385 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 114 +, 285 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11132,7 +11132,7 @@ T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 47 +, 100 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 457 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 137 +, 337 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11211,7 +11211,7 @@ std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 47 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 541 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 421 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11367,7 +11367,7 @@ bool segment_cauchy_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 43 +, 81 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 407 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 135 +, 307 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11437,7 +11437,7 @@ T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 51 +, 115 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 480 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 159 +, 360 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11519,7 +11519,7 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 54 +, 126 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 586 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 220 +, 466 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11679,7 +11679,7 @@ bool segment_cauchy_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 46 +, 92 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 429 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 156 +, 329 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11752,7 +11752,7 @@ T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 57 +, 133 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 503 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 181 +, 383 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11835,7 +11835,7 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 61 +, 150 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 631 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 263 +, 511 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12001,7 +12001,7 @@ bool segment_cauchy_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 51 +, 106 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 451 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 351 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12075,7 +12075,7 @@ T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 63 +, 153 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 526 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 203 +, 406 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12161,7 +12161,7 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 70 +, 177 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 676 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 306 +, 556 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13583,7 +13583,7 @@ bool segment_cauchy_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 42 +, 84 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 425 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 114 +, 305 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13654,7 +13654,7 @@ T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 49 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 497 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 137 +, 357 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13735,7 +13735,7 @@ std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 49 +, 113 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 581 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 441 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13895,7 +13895,7 @@ bool segment_cauchy_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 45 +, 90 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 447 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 135 +, 327 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13967,7 +13967,7 @@ T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 53 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 520 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 159 +, 380 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14051,7 +14051,7 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 56 +, 134 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 626 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 220 +, 486 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14215,7 +14215,7 @@ bool segment_cauchy_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 48 +, 102 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 469 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 156 +, 349 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14290,7 +14290,7 @@ T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 59 +, 140 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 543 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 181 +, 403 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14375,7 +14375,7 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 63 +, 158 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 671 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 263 +, 531 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14545,7 +14545,7 @@ bool segment_cauchy_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 53 +, 117 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 491 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 371 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14621,7 +14621,7 @@ T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 65 +, 161 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 566 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 203 +, 426 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14709,7 +14709,7 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 72 +, 186 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 716 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 306 +, 576 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16167,7 +16167,7 @@ bool segment_cauchy_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 44 +, 93 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 465 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 114 +, 325 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16240,7 +16240,7 @@ T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 51 +, 118 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 537 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 137 +, 377 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16323,7 +16323,7 @@ std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 51 +, 122 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 621 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 461 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16487,7 +16487,7 @@ bool segment_cauchy_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 47 +, 99 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 487 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 135 +, 347 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16561,7 +16561,7 @@ T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 55 +, 132 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 560 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 159 +, 400 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16647,7 +16647,7 @@ std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 58 +, 143 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 666 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 220 +, 506 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16815,7 +16815,7 @@ bool segment_cauchy_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 50 +, 110 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 509 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 156 +, 369 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16892,7 +16892,7 @@ T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 61 +, 149 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 583 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 181 +, 423 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16979,7 +16979,7 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 65 +, 166 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 711 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 263 +, 551 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17153,7 +17153,7 @@ bool segment_cauchy_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 55 +, 124 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 531 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 391 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17231,7 +17231,7 @@ T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 67 +, 169 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 606 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 203 +, 446 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17321,7 +17321,7 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 74 +, 193 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 756 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 306 +, 596 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18815,7 +18815,7 @@ bool segment_cauchy_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 46 +, 102 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 505 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 114 +, 345 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18890,7 +18890,7 @@ T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 53 +, 126 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 577 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 137 +, 397 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18975,7 +18975,7 @@ std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 53 +, 130 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 661 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 481 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19143,7 +19143,7 @@ bool segment_cauchy_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 49 +, 108 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 527 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 135 +, 367 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19219,7 +19219,7 @@ T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 57 +, 141 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 600 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 159 +, 420 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19307,7 +19307,7 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 60 +, 152 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 706 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 220 +, 526 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19479,7 +19479,7 @@ bool segment_cauchy_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 52 +, 119 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 549 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 156 +, 389 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19558,7 +19558,7 @@ T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 63 +, 159 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 623 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 181 +, 443 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19647,7 +19647,7 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 67 +, 176 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 751 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 263 +, 571 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19825,7 +19825,7 @@ bool segment_cauchy_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 57 +, 133 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 571 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 411 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19905,7 +19905,7 @@ T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 69 +, 179 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 646 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 203 +, 466 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19997,7 +19997,7 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 76 +, 203 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 796 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 306 +, 616 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_cauchy_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

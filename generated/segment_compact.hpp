@@ -19,7 +19,7 @@ namespace skelconv::generated {
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 75 +, 153 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 74 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -41,9 +41,9 @@ T segment_compact_i2_w0_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 2, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 1> M_exact;
-    segment_moments_gauss<T, 15>(-2, -2, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, -2, 0, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
   }
   f = length * F;
@@ -52,7 +52,7 @@ T segment_compact_i2_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 93 +, 150 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 86 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i2_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -75,9 +75,9 @@ std::array<T, 3> segment_compact_i2_w0_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 3, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(0, 0, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(0, 0, 1, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0];
     G_ab = in.w[0] * M_exact[1];
   }
@@ -90,7 +90,7 @@ std::array<T, 3> segment_compact_i2_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 123 +, 214 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 118 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -114,9 +114,9 @@ T segment_compact_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 3, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-2, 0, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, 0, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = M_exact[3] * in.w[0];
@@ -133,7 +133,7 @@ T segment_compact_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// Returns false where segment_compact_i2_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 123 +, 214 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 118 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -156,9 +156,9 @@ bool segment_compact_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 3, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-2, 0, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, 0, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = M_exact[2] * in.w[0];
     G_ab = in.w[0] * M_exact[3];
@@ -173,7 +173,7 @@ bool segment_compact_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 91 +, 170 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 83 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -195,9 +195,9 @@ T segment_compact_i2_w1_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 3, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-2, -2, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, -2, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + M_exact[0] * in.w[0];
   }
   f = F * length;
@@ -206,7 +206,7 @@ T segment_compact_i2_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 110 +, 168 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 96 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i2_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -229,9 +229,9 @@ std::array<T, 3> segment_compact_i2_w1_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 4, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(0, 0, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(0, 0, 2, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + M_exact[1] * in.w[1];
     G_ab = M_exact[2] * in.w[1] + M_exact[1] * in.w[0];
   }
@@ -244,7 +244,7 @@ std::array<T, 3> segment_compact_i2_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 156 +, 249 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 137 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -268,9 +268,9 @@ T segment_compact_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 4, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-2, 0, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, 0, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
     G_ap = M_exact[3] * in.w[0] + M_exact[4] * in.w[1];
     G_ab = in.w[1] * M_exact[5] + in.w[0] * M_exact[4];
@@ -287,7 +287,7 @@ T segment_compact_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// Returns false where segment_compact_i2_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 156 +, 249 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 137 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -310,9 +310,9 @@ bool segment_compact_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 4, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-2, 0, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, 0, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + in.w[0] * M_exact[0];
     G_ap = M_exact[4] * in.w[1] + in.w[0] * M_exact[3];
     G_ab = M_exact[5] * in.w[1] + M_exact[4] * in.w[0];
@@ -327,7 +327,7 @@ bool segment_compact_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 107 +, 187 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 92 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -349,9 +349,9 @@ T segment_compact_i2_w2_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 4, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-2, -2, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, -2, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + in.w[1] * M_exact[1] + M_exact[0] * in.w[0];
   }
   f = F * length;
@@ -360,7 +360,7 @@ T segment_compact_i2_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 127 +, 186 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 106 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i2_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -383,9 +383,9 @@ std::array<T, 3> segment_compact_i2_w2_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 5, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(0, 0, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(0, 0, 3, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[1] * M_exact[1] + M_exact[0] * in.w[0] + M_exact[2] * in.w[2];
     G_ab = in.w[2] * M_exact[3] + in.w[0] * M_exact[1] + in.w[1] * M_exact[2];
   }
@@ -398,7 +398,7 @@ std::array<T, 3> segment_compact_i2_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 189 +, 284 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 156 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -422,9 +422,9 @@ T segment_compact_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 5, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-2, 0, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, 0, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + in.w[2] * M_exact[2] + M_exact[0] * in.w[0];
     G_ap = M_exact[6] * in.w[2] + in.w[1] * M_exact[5] + M_exact[4] * in.w[0];
     G_ab = in.w[1] * M_exact[6] + in.w[2] * M_exact[7] + in.w[0] * M_exact[5];
@@ -441,7 +441,7 @@ T segment_compact_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// Returns false where segment_compact_i2_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 189 +, 284 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 156 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -464,9 +464,9 @@ bool segment_compact_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 5, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-2, 0, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, 0, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + in.w[1] * M_exact[1] + in.w[0] * M_exact[0];
     G_ap = M_exact[4] * in.w[0] + in.w[2] * M_exact[6] + in.w[1] * M_exact[5];
     G_ab = in.w[1] * M_exact[6] + in.w[2] * M_exact[7] + M_exact[5] * in.w[0];
@@ -481,7 +481,7 @@ bool segment_compact_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 123 +, 204 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 101 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -503,9 +503,9 @@ T segment_compact_i2_w3_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 5, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-2, -2, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, -2, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[2] * in.w[2] + M_exact[1] * in.w[1] + in.w[3] * M_exact[3] + M_exact[0] * in.w[0];
   }
   f = F * length;
@@ -514,7 +514,7 @@ T segment_compact_i2_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 144 +, 204 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 116 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i2_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -537,9 +537,9 @@ std::array<T, 3> segment_compact_i2_w3_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 6, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 15>(0, 0, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(0, 0, 4, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + in.w[2] * M_exact[2] + in.w[1] * M_exact[1] + in.w[3] * M_exact[3];
     G_ab = in.w[1] * M_exact[2] + in.w[3] * M_exact[4] + in.w[2] * M_exact[3] + M_exact[1] * in.w[0];
   }
@@ -552,7 +552,7 @@ std::array<T, 3> segment_compact_i2_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 222 +, 319 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 118 +, 175 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -576,9 +576,9 @@ T segment_compact_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 6, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-2, 0, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, 0, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + in.w[3] * M_exact[3] + in.w[2] * M_exact[2] + in.w[0] * M_exact[0];
     G_ap = M_exact[7] * in.w[2] + M_exact[8] * in.w[3] + M_exact[6] * in.w[1] + M_exact[5] * in.w[0];
     G_ab = in.w[3] * M_exact[9] + in.w[0] * M_exact[6] + in.w[2] * M_exact[8] + M_exact[7] * in.w[1];
@@ -595,7 +595,7 @@ T segment_compact_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// Returns false where segment_compact_i2_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 319 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 118 +, 175 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -618,9 +618,9 @@ bool segment_compact_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 6, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-2, 0, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, 0, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[2] * in.w[2] + in.w[3] * M_exact[3] + in.w[0] * M_exact[0] + in.w[1] * M_exact[1];
     G_ap = M_exact[7] * in.w[2] + in.w[0] * M_exact[5] + in.w[3] * M_exact[8] + M_exact[6] * in.w[1];
     G_ab = in.w[2] * M_exact[8] + in.w[3] * M_exact[9] + in.w[1] * M_exact[7] + in.w[0] * M_exact[6];
@@ -1826,7 +1826,7 @@ bool segment_compact_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 75 +, 183 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 81 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1848,9 +1848,9 @@ T segment_compact_i4_w0_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 4, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 1> M_exact;
-    segment_moments_gauss<T, 15>(-4, -4, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -4, 0, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
   }
   f = F * length;
@@ -1859,7 +1859,7 @@ T segment_compact_i4_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 93 +, 180 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 93 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1882,9 +1882,9 @@ std::array<T, 3> segment_compact_i4_w0_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 5, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-2, -2, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, -2, 1, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0];
     G_ab = in.w[0] * M_exact[1];
   }
@@ -1897,7 +1897,7 @@ std::array<T, 3> segment_compact_i4_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 123 +, 244 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 125 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1921,9 +1921,9 @@ T segment_compact_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 5, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-4, -2, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -2, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
     G_ap = M_exact[2] * in.w[0];
     G_ab = M_exact[3] * in.w[0];
@@ -1940,7 +1940,7 @@ T segment_compact_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// Returns false where segment_compact_i4_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 123 +, 244 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 125 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1963,9 +1963,9 @@ bool segment_compact_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 5, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-4, -2, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -2, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = in.w[0] * M_exact[3];
@@ -1980,7 +1980,7 @@ bool segment_compact_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 91 +, 200 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 90 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2002,9 +2002,9 @@ T segment_compact_i4_w1_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 5, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-4, -4, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -4, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + M_exact[1] * in.w[1];
   }
   f = length * F;
@@ -2013,7 +2013,7 @@ T segment_compact_i4_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 110 +, 198 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 103 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2036,9 +2036,9 @@ std::array<T, 3> segment_compact_i4_w1_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 6, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-2, -2, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, -2, 2, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[1] * M_exact[1] + M_exact[0] * in.w[0];
     G_ab = M_exact[1] * in.w[0] + in.w[1] * M_exact[2];
   }
@@ -2051,7 +2051,7 @@ std::array<T, 3> segment_compact_i4_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 156 +, 279 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 144 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2075,9 +2075,9 @@ T segment_compact_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 6, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-4, -2, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -2, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
     G_ap = M_exact[4] * in.w[1] + M_exact[3] * in.w[0];
     G_ab = in.w[1] * M_exact[5] + in.w[0] * M_exact[4];
@@ -2094,7 +2094,7 @@ T segment_compact_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// Returns false where segment_compact_i4_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 156 +, 279 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 144 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2117,9 +2117,9 @@ bool segment_compact_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 6, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-4, -2, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -2, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + M_exact[0] * in.w[0];
     G_ap = in.w[1] * M_exact[4] + M_exact[3] * in.w[0];
     G_ab = M_exact[4] * in.w[0] + M_exact[5] * in.w[1];
@@ -2134,7 +2134,7 @@ bool segment_compact_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 107 +, 217 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 99 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2156,9 +2156,9 @@ T segment_compact_i4_w2_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 6, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-4, -4, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -4, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[2] * M_exact[2] + M_exact[1] * in.w[1];
   }
   f = F * length;
@@ -2167,7 +2167,7 @@ T segment_compact_i4_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 127 +, 216 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 113 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i4_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2190,9 +2190,9 @@ std::array<T, 3> segment_compact_i4_w2_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 7, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-2, -2, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, -2, 3, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[2] * M_exact[2] + M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
     G_ab = in.w[0] * M_exact[1] + in.w[2] * M_exact[3] + in.w[1] * M_exact[2];
   }
@@ -2205,7 +2205,7 @@ std::array<T, 3> segment_compact_i4_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 189 +, 314 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 163 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2229,9 +2229,9 @@ T segment_compact_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 7, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-4, -2, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -2, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + M_exact[0] * in.w[0] + M_exact[1] * in.w[1];
     G_ap = M_exact[4] * in.w[0] + M_exact[5] * in.w[1] + in.w[2] * M_exact[6];
     G_ab = in.w[2] * M_exact[7] + in.w[1] * M_exact[6] + in.w[0] * M_exact[5];
@@ -2248,7 +2248,7 @@ T segment_compact_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// Returns false where segment_compact_i4_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 189 +, 314 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 163 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2271,9 +2271,9 @@ bool segment_compact_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 7, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-4, -2, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -2, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[2] * M_exact[2] + in.w[1] * M_exact[1];
     G_ap = in.w[0] * M_exact[4] + M_exact[5] * in.w[1] + in.w[2] * M_exact[6];
     G_ab = in.w[2] * M_exact[7] + M_exact[5] * in.w[0] + M_exact[6] * in.w[1];
@@ -2288,7 +2288,7 @@ bool segment_compact_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 123 +, 234 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 108 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2310,9 +2310,9 @@ T segment_compact_i4_w3_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 7, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-4, -4, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -4, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[2] * in.w[2] + M_exact[3] * in.w[3] + M_exact[1] * in.w[1];
   }
   f = length * F;
@@ -2321,7 +2321,7 @@ T segment_compact_i4_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 144 +, 234 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 123 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i4_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2344,9 +2344,9 @@ std::array<T, 3> segment_compact_i4_w3_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 15>(-2, -2, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-2, -2, 4, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[1] * M_exact[1] + M_exact[3] * in.w[3] + in.w[2] * M_exact[2] + in.w[0] * M_exact[0];
     G_ab = in.w[2] * M_exact[3] + in.w[3] * M_exact[4] + in.w[0] * M_exact[1] + M_exact[2] * in.w[1];
   }
@@ -2359,7 +2359,7 @@ std::array<T, 3> segment_compact_i4_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 222 +, 349 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 118 +, 182 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2383,9 +2383,9 @@ T segment_compact_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-4, -2, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -2, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + M_exact[2] * in.w[2] + in.w[0] * M_exact[0] + in.w[3] * M_exact[3];
     G_ap = M_exact[6] * in.w[1] + M_exact[5] * in.w[0] + M_exact[7] * in.w[2] + M_exact[8] * in.w[3];
     G_ab = in.w[3] * M_exact[9] + in.w[1] * M_exact[7] + M_exact[8] * in.w[2] + in.w[0] * M_exact[6];
@@ -2402,7 +2402,7 @@ T segment_compact_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// Returns false where segment_compact_i4_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 349 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 118 +, 182 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2425,9 +2425,9 @@ bool segment_compact_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-4, -2, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -2, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[3] * in.w[3] + in.w[1] * M_exact[1] + in.w[2] * M_exact[2] + in.w[0] * M_exact[0];
     G_ap = M_exact[7] * in.w[2] + M_exact[5] * in.w[0] + M_exact[8] * in.w[3] + in.w[1] * M_exact[6];
     G_ab = in.w[1] * M_exact[7] + in.w[3] * M_exact[9] + in.w[2] * M_exact[8] + in.w[0] * M_exact[6];
@@ -3700,7 +3700,7 @@ bool segment_compact_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 75 +, 213 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 88 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3722,9 +3722,9 @@ T segment_compact_i6_w0_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 6, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 1> M_exact;
-    segment_moments_gauss<T, 15>(-6, -6, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -6, 0, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
   }
   f = F * length;
@@ -3733,7 +3733,7 @@ T segment_compact_i6_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 93 +, 210 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 100 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3756,9 +3756,9 @@ std::array<T, 3> segment_compact_i6_w0_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 7, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-4, -4, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -4, 1, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[0] * in.w[0];
     G_ab = M_exact[1] * in.w[0];
   }
@@ -3771,7 +3771,7 @@ std::array<T, 3> segment_compact_i6_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 123 +, 274 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 132 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3795,9 +3795,9 @@ T segment_compact_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 7, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-6, -4, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -4, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = in.w[0] * M_exact[3];
@@ -3814,7 +3814,7 @@ T segment_compact_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// Returns false where segment_compact_i6_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 123 +, 274 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 132 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3837,9 +3837,9 @@ bool segment_compact_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 7, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-6, -4, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -4, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
     G_ap = M_exact[2] * in.w[0];
     G_ab = M_exact[3] * in.w[0];
@@ -3854,7 +3854,7 @@ bool segment_compact_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 91 +, 230 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 97 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3876,9 +3876,9 @@ T segment_compact_i6_w1_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 7, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-6, -6, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -6, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[1] * in.w[1];
   }
   f = length * F;
@@ -3887,7 +3887,7 @@ T segment_compact_i6_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 110 +, 228 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 110 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3910,9 +3910,9 @@ std::array<T, 3> segment_compact_i6_w1_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-4, -4, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -4, 2, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[0] * in.w[0] + in.w[1] * M_exact[1];
     G_ab = in.w[1] * M_exact[2] + M_exact[1] * in.w[0];
   }
@@ -3925,7 +3925,7 @@ std::array<T, 3> segment_compact_i6_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 156 +, 309 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 151 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3949,9 +3949,9 @@ T segment_compact_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-6, -4, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -4, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[1] * in.w[1];
     G_ap = in.w[0] * M_exact[3] + M_exact[4] * in.w[1];
     G_ab = in.w[1] * M_exact[5] + in.w[0] * M_exact[4];
@@ -3968,7 +3968,7 @@ T segment_compact_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// Returns false where segment_compact_i6_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 156 +, 309 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 151 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3991,9 +3991,9 @@ bool segment_compact_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-6, -4, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -4, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + M_exact[0] * in.w[0];
     G_ap = in.w[1] * M_exact[4] + M_exact[3] * in.w[0];
     G_ab = M_exact[5] * in.w[1] + M_exact[4] * in.w[0];
@@ -4008,7 +4008,7 @@ bool segment_compact_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 107 +, 247 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 106 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4030,9 +4030,9 @@ T segment_compact_i6_w2_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-6, -6, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -6, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[2] * in.w[2] + M_exact[1] * in.w[1] + in.w[0] * M_exact[0];
   }
   f = length * F;
@@ -4041,7 +4041,7 @@ T segment_compact_i6_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 127 +, 246 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 120 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4064,9 +4064,9 @@ std::array<T, 3> segment_compact_i6_w2_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 9, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-4, -4, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -4, 3, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[1] * in.w[1] + M_exact[0] * in.w[0] + in.w[2] * M_exact[2];
     G_ab = in.w[0] * M_exact[1] + in.w[2] * M_exact[3] + in.w[1] * M_exact[2];
   }
@@ -4079,7 +4079,7 @@ std::array<T, 3> segment_compact_i6_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 189 +, 344 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 170 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4103,9 +4103,9 @@ T segment_compact_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 9, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-6, -4, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -4, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + in.w[0] * M_exact[0] + M_exact[1] * in.w[1];
     G_ap = M_exact[4] * in.w[0] + in.w[2] * M_exact[6] + M_exact[5] * in.w[1];
     G_ab = in.w[2] * M_exact[7] + in.w[0] * M_exact[5] + in.w[1] * M_exact[6];
@@ -4122,7 +4122,7 @@ T segment_compact_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// Returns false where segment_compact_i6_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 189 +, 344 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 170 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4145,9 +4145,9 @@ bool segment_compact_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 9, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-6, -4, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -4, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + in.w[0] * M_exact[0] + in.w[1] * M_exact[1];
     G_ap = in.w[1] * M_exact[5] + in.w[2] * M_exact[6] + in.w[0] * M_exact[4];
     G_ab = in.w[2] * M_exact[7] + in.w[0] * M_exact[5] + M_exact[6] * in.w[1];
@@ -4162,7 +4162,7 @@ bool segment_compact_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 123 +, 264 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 115 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4184,9 +4184,9 @@ T segment_compact_i6_w3_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 9, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-6, -6, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -6, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[2] * in.w[2] + M_exact[3] * in.w[3] + in.w[1] * M_exact[1];
   }
   f = length * F;
@@ -4195,7 +4195,7 @@ T segment_compact_i6_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 144 +, 264 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 130 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4218,9 +4218,9 @@ std::array<T, 3> segment_compact_i6_w3_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 15>(-4, -4, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-4, -4, 4, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + in.w[2] * M_exact[2] + in.w[1] * M_exact[1] + M_exact[3] * in.w[3];
     G_ab = M_exact[2] * in.w[1] + in.w[2] * M_exact[3] + in.w[0] * M_exact[1] + in.w[3] * M_exact[4];
   }
@@ -4233,7 +4233,7 @@ std::array<T, 3> segment_compact_i6_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 222 +, 379 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 118 +, 189 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4257,9 +4257,9 @@ T segment_compact_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-6, -4, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -4, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + in.w[3] * M_exact[3] + in.w[0] * M_exact[0] + M_exact[2] * in.w[2];
     G_ap = M_exact[8] * in.w[3] + M_exact[5] * in.w[0] + M_exact[7] * in.w[2] + M_exact[6] * in.w[1];
     G_ab = in.w[3] * M_exact[9] + M_exact[8] * in.w[2] + in.w[0] * M_exact[6] + in.w[1] * M_exact[7];
@@ -4276,7 +4276,7 @@ T segment_compact_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// Returns false where segment_compact_i6_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 379 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 118 +, 189 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4299,9 +4299,9 @@ bool segment_compact_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-6, -4, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -4, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[2] * M_exact[2] + in.w[3] * M_exact[3] + in.w[1] * M_exact[1];
     G_ap = M_exact[7] * in.w[2] + M_exact[5] * in.w[0] + in.w[1] * M_exact[6] + M_exact[8] * in.w[3];
     G_ab = in.w[0] * M_exact[6] + in.w[1] * M_exact[7] + in.w[2] * M_exact[8] + in.w[3] * M_exact[9];
@@ -5630,7 +5630,7 @@ bool segment_compact_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 75 +, 243 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 95 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5652,9 +5652,9 @@ T segment_compact_i8_w0_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 1> M_exact;
-    segment_moments_gauss<T, 15>(-8, -8, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -8, 0, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
   }
   f = length * F;
@@ -5663,7 +5663,7 @@ T segment_compact_i8_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 93 +, 240 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 107 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5686,9 +5686,9 @@ std::array<T, 3> segment_compact_i8_w0_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 9, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-6, -6, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -6, 1, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[0] * in.w[0];
     G_ab = in.w[0] * M_exact[1];
   }
@@ -5701,7 +5701,7 @@ std::array<T, 3> segment_compact_i8_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 123 +, 304 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 139 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5725,9 +5725,9 @@ T segment_compact_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 9, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-8, -6, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -6, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = M_exact[3] * in.w[0];
@@ -5744,7 +5744,7 @@ T segment_compact_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// Returns false where segment_compact_i8_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 123 +, 304 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 139 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5767,9 +5767,9 @@ bool segment_compact_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 9, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-8, -6, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -6, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = M_exact[2] * in.w[0];
     G_ab = in.w[0] * M_exact[3];
@@ -5784,7 +5784,7 @@ bool segment_compact_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 91 +, 260 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 104 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5806,9 +5806,9 @@ T segment_compact_i8_w1_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 9, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-8, -8, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -8, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[1] * in.w[1];
   }
   f = F * length;
@@ -5817,7 +5817,7 @@ T segment_compact_i8_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 110 +, 258 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 117 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5840,9 +5840,9 @@ std::array<T, 3> segment_compact_i8_w1_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-6, -6, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -6, 2, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + M_exact[1] * in.w[1];
     G_ab = M_exact[2] * in.w[1] + M_exact[1] * in.w[0];
   }
@@ -5855,7 +5855,7 @@ std::array<T, 3> segment_compact_i8_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 156 +, 339 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 158 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5879,9 +5879,9 @@ T segment_compact_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-8, -6, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -6, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + in.w[1] * M_exact[1];
     G_ap = in.w[1] * M_exact[4] + M_exact[3] * in.w[0];
     G_ab = M_exact[5] * in.w[1] + M_exact[4] * in.w[0];
@@ -5898,7 +5898,7 @@ T segment_compact_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// Returns false where segment_compact_i8_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 156 +, 339 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 158 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5921,9 +5921,9 @@ bool segment_compact_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-8, -6, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -6, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[3] + M_exact[4] * in.w[1];
     G_ab = M_exact[5] * in.w[1] + M_exact[4] * in.w[0];
@@ -5938,7 +5938,7 @@ bool segment_compact_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 107 +, 277 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 113 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5960,9 +5960,9 @@ T segment_compact_i8_w2_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-8, -8, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -8, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + M_exact[0] * in.w[0] + in.w[2] * M_exact[2];
   }
   f = F * length;
@@ -5971,7 +5971,7 @@ T segment_compact_i8_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 127 +, 276 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 127 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5994,9 +5994,9 @@ std::array<T, 3> segment_compact_i8_w2_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 11, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-6, -6, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -6, 3, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[1] * M_exact[1] + M_exact[0] * in.w[0] + M_exact[2] * in.w[2];
     G_ab = in.w[2] * M_exact[3] + in.w[0] * M_exact[1] + in.w[1] * M_exact[2];
   }
@@ -6009,7 +6009,7 @@ std::array<T, 3> segment_compact_i8_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 189 +, 374 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 177 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6033,9 +6033,9 @@ T segment_compact_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 11, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-8, -6, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -6, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + M_exact[2] * in.w[2];
     G_ap = in.w[1] * M_exact[5] + M_exact[6] * in.w[2] + in.w[0] * M_exact[4];
     G_ab = in.w[0] * M_exact[5] + M_exact[6] * in.w[1] + M_exact[7] * in.w[2];
@@ -6052,7 +6052,7 @@ T segment_compact_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// Returns false where segment_compact_i8_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 189 +, 374 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 177 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6075,9 +6075,9 @@ bool segment_compact_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 11, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-8, -6, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -6, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + in.w[0] * M_exact[0] + in.w[1] * M_exact[1];
     G_ap = in.w[1] * M_exact[5] + in.w[2] * M_exact[6] + M_exact[4] * in.w[0];
     G_ab = M_exact[5] * in.w[0] + in.w[1] * M_exact[6] + M_exact[7] * in.w[2];
@@ -6092,7 +6092,7 @@ bool segment_compact_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 123 +, 294 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 122 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6114,9 +6114,9 @@ T segment_compact_i8_w3_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 11, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-8, -8, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -8, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + M_exact[0] * in.w[0] + in.w[2] * M_exact[2] + M_exact[3] * in.w[3];
   }
   f = F * length;
@@ -6125,7 +6125,7 @@ T segment_compact_i8_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 144 +, 294 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 137 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6148,9 +6148,9 @@ std::array<T, 3> segment_compact_i8_w3_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 12, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 15>(-6, -6, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-6, -6, 4, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + in.w[3] * M_exact[3] + in.w[2] * M_exact[2];
     G_ab = in.w[1] * M_exact[2] + in.w[2] * M_exact[3] + in.w[3] * M_exact[4] + in.w[0] * M_exact[1];
   }
@@ -6163,7 +6163,7 @@ std::array<T, 3> segment_compact_i8_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 222 +, 409 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 118 +, 196 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6187,9 +6187,9 @@ T segment_compact_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 12, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-8, -6, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -6, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[3] * M_exact[3] + in.w[0] * M_exact[0] + in.w[2] * M_exact[2] + M_exact[1] * in.w[1];
     G_ap = M_exact[8] * in.w[3] + M_exact[5] * in.w[0] + M_exact[7] * in.w[2] + M_exact[6] * in.w[1];
     G_ab = in.w[0] * M_exact[6] + in.w[3] * M_exact[9] + M_exact[7] * in.w[1] + in.w[2] * M_exact[8];
@@ -6206,7 +6206,7 @@ T segment_compact_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// Returns false where segment_compact_i8_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 409 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 118 +, 196 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6229,9 +6229,9 @@ bool segment_compact_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 12, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-8, -6, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -6, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + M_exact[2] * in.w[2] + in.w[3] * M_exact[3];
     G_ap = M_exact[5] * in.w[0] + M_exact[8] * in.w[3] + M_exact[7] * in.w[2] + M_exact[6] * in.w[1];
     G_ab = in.w[0] * M_exact[6] + in.w[1] * M_exact[7] + M_exact[8] * in.w[2] + in.w[3] * M_exact[9];
@@ -7609,7 +7609,7 @@ bool segment_compact_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 75 +, 273 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 102 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7631,9 +7631,9 @@ T segment_compact_i10_w0_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 1> M_exact;
-    segment_moments_gauss<T, 15>(-10, -10, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -10, 0, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
   }
   f = length * F;
@@ -7642,7 +7642,7 @@ T segment_compact_i10_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 93 +, 270 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 114 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7665,9 +7665,9 @@ std::array<T, 3> segment_compact_i10_w0_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 11, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-8, -8, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -8, 1, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[0] * in.w[0];
     G_ab = in.w[0] * M_exact[1];
   }
@@ -7680,7 +7680,7 @@ std::array<T, 3> segment_compact_i10_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 123 +, 334 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 146 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7704,9 +7704,9 @@ T segment_compact_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 11, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-10, -8, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -8, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = M_exact[3] * in.w[0];
@@ -7723,7 +7723,7 @@ T segment_compact_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// Returns false where segment_compact_i10_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 123 +, 334 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 146 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7746,9 +7746,9 @@ bool segment_compact_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 11, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-10, -8, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -8, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = in.w[0] * M_exact[3];
@@ -7763,7 +7763,7 @@ bool segment_compact_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 91 +, 290 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 111 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7785,9 +7785,9 @@ T segment_compact_i10_w1_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 11, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-10, -10, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -10, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + in.w[0] * M_exact[0];
   }
   f = F * length;
@@ -7796,7 +7796,7 @@ T segment_compact_i10_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 110 +, 288 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 124 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7819,9 +7819,9 @@ std::array<T, 3> segment_compact_i10_w1_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 12, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-8, -8, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -8, 2, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[1] * in.w[1] + in.w[0] * M_exact[0];
     G_ab = M_exact[2] * in.w[1] + M_exact[1] * in.w[0];
   }
@@ -7834,7 +7834,7 @@ std::array<T, 3> segment_compact_i10_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 156 +, 369 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 165 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7858,9 +7858,9 @@ T segment_compact_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 12, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-10, -8, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -8, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
     G_ap = M_exact[3] * in.w[0] + M_exact[4] * in.w[1];
     G_ab = M_exact[4] * in.w[0] + M_exact[5] * in.w[1];
@@ -7877,7 +7877,7 @@ T segment_compact_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// Returns false where segment_compact_i10_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 156 +, 369 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 165 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7900,9 +7900,9 @@ bool segment_compact_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 12, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-10, -8, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -8, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[1] * in.w[1];
     G_ap = M_exact[4] * in.w[1] + in.w[0] * M_exact[3];
     G_ab = in.w[1] * M_exact[5] + in.w[0] * M_exact[4];
@@ -7917,7 +7917,7 @@ bool segment_compact_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 107 +, 307 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 120 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7939,9 +7939,9 @@ T segment_compact_i10_w2_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 12, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-10, -10, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -10, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + M_exact[0] * in.w[0] + in.w[1] * M_exact[1];
   }
   f = F * length;
@@ -7950,7 +7950,7 @@ T segment_compact_i10_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 127 +, 306 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 134 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7973,9 +7973,9 @@ std::array<T, 3> segment_compact_i10_w2_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 13, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-8, -8, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-8, -8, 3, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[1] * M_exact[1] + in.w[2] * M_exact[2] + M_exact[0] * in.w[0];
     G_ab = M_exact[1] * in.w[0] + M_exact[3] * in.w[2] + in.w[1] * M_exact[2];
   }
@@ -7988,7 +7988,7 @@ std::array<T, 3> segment_compact_i10_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 189 +, 404 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 184 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8012,9 +8012,9 @@ T segment_compact_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 13, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-10, -8, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -8, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + in.w[1] * M_exact[1] + in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[4] + M_exact[6] * in.w[2] + in.w[1] * M_exact[5];
     G_ab = M_exact[7] * in.w[2] + M_exact[6] * in.w[1] + in.w[0] * M_exact[5];
@@ -8031,7 +8031,7 @@ T segment_compact_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// Returns false where segment_compact_i10_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 189 +, 404 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 184 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8054,9 +8054,9 @@ bool segment_compact_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 13, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-10, -8, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -8, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + in.w[2] * M_exact[2] + in.w[0] * M_exact[0];
     G_ap = in.w[1] * M_exact[5] + M_exact[4] * in.w[0] + in.w[2] * M_exact[6];
     G_ab = in.w[1] * M_exact[6] + M_exact[5] * in.w[0] + M_exact[7] * in.w[2];
@@ -8071,7 +8071,7 @@ bool segment_compact_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 123 +, 324 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 129 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8093,9 +8093,9 @@ T segment_compact_i10_w3_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 13, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-10, -10, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -10, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + M_exact[0] * in.w[0] + in.w[3] * M_exact[3] + M_exact[1] * in.w[1];
   }
   f = F * length;
@@ -8104,7 +8104,7 @@ T segment_compact_i10_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 144 +, 324 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 104 +, 189 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8127,9 +8127,9 @@ std::array<T, 3> segment_compact_i10_w3_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 14, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 15>(-8, -8, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-8, -8, 4, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[3] * M_exact[3] + in.w[2] * M_exact[2] + in.w[1] * M_exact[1] + M_exact[0] * in.w[0];
     G_ab = M_exact[1] * in.w[0] + in.w[1] * M_exact[2] + M_exact[4] * in.w[3] + in.w[2] * M_exact[3];
   }
@@ -8142,7 +8142,7 @@ std::array<T, 3> segment_compact_i10_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 222 +, 439 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 157 +, 269 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8166,9 +8166,9 @@ T segment_compact_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 14, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-10, -8, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-10, -8, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + M_exact[1] * in.w[1] + in.w[0] * M_exact[0] + in.w[3] * M_exact[3];
     G_ap = M_exact[6] * in.w[1] + M_exact[7] * in.w[2] + M_exact[5] * in.w[0] + M_exact[8] * in.w[3];
     G_ab = in.w[0] * M_exact[6] + in.w[3] * M_exact[9] + M_exact[7] * in.w[1] + in.w[2] * M_exact[8];
@@ -8185,7 +8185,7 @@ T segment_compact_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// Returns false where segment_compact_i10_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 439 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 157 +, 269 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8208,9 +8208,9 @@ bool segment_compact_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 14, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-10, -8, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-10, -8, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + M_exact[2] * in.w[2] + M_exact[3] * in.w[3] + in.w[0] * M_exact[0];
     G_ap = M_exact[8] * in.w[3] + M_exact[5] * in.w[0] + M_exact[6] * in.w[1] + M_exact[7] * in.w[2];
     G_ab = in.w[2] * M_exact[8] + in.w[0] * M_exact[6] + M_exact[9] * in.w[3] + in.w[1] * M_exact[7];
@@ -9631,7 +9631,7 @@ bool segment_compact_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 75 +, 303 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 109 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9653,9 +9653,9 @@ T segment_compact_i12_w0_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 12, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 1> M_exact;
-    segment_moments_gauss<T, 15>(-12, -12, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-12, -12, 0, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
   }
   f = length * F;
@@ -9664,7 +9664,7 @@ T segment_compact_i12_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 93 +, 300 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 121 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9687,9 +9687,9 @@ std::array<T, 3> segment_compact_i12_w0_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 13, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-10, -10, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-10, -10, 1, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[0] * in.w[0];
     G_ab = in.w[0] * M_exact[1];
   }
@@ -9702,7 +9702,7 @@ std::array<T, 3> segment_compact_i12_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 123 +, 364 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 153 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9726,9 +9726,9 @@ T segment_compact_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 13, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-12, -10, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-12, -10, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = in.w[0] * M_exact[3];
@@ -9745,7 +9745,7 @@ T segment_compact_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// Returns false where segment_compact_i12_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 123 +, 364 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 153 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9768,9 +9768,9 @@ bool segment_compact_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 13, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-12, -10, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-12, -10, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = M_exact[3] * in.w[0];
@@ -9785,7 +9785,7 @@ bool segment_compact_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 91 +, 320 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 118 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9807,9 +9807,9 @@ T segment_compact_i12_w1_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 13, integrated exactly by segment_moments_gauss<T, 7>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-12, -12, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 7>(-12, -12, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[1] * in.w[1];
   }
   f = length * F;
@@ -9818,7 +9818,7 @@ T segment_compact_i12_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 110 +, 318 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 173 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9841,9 +9841,9 @@ std::array<T, 3> segment_compact_i12_w1_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 14, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-10, -10, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-10, -10, 2, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
     G_ab = M_exact[1] * in.w[0] + M_exact[2] * in.w[1];
   }
@@ -9856,7 +9856,7 @@ std::array<T, 3> segment_compact_i12_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 156 +, 399 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 111 +, 229 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9880,9 +9880,9 @@ T segment_compact_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 14, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-12, -10, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -10, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[3] + M_exact[4] * in.w[1];
     G_ab = M_exact[4] * in.w[0] + M_exact[5] * in.w[1];
@@ -9899,7 +9899,7 @@ T segment_compact_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// Returns false where segment_compact_i12_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 156 +, 399 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 111 +, 229 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9922,9 +9922,9 @@ bool segment_compact_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 14, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-12, -10, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -10, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
     G_ap = M_exact[3] * in.w[0] + M_exact[4] * in.w[1];
     G_ab = in.w[0] * M_exact[4] + in.w[1] * M_exact[5];
@@ -9939,7 +9939,7 @@ bool segment_compact_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 107 +, 337 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 77 +, 172 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9961,9 +9961,9 @@ T segment_compact_i12_w2_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 14, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-12, -12, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -12, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + M_exact[2] * in.w[2] + in.w[1] * M_exact[1];
   }
   f = length * F;
@@ -9972,7 +9972,7 @@ T segment_compact_i12_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 127 +, 336 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 92 +, 186 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9995,9 +9995,9 @@ std::array<T, 3> segment_compact_i12_w2_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 15, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-10, -10, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-10, -10, 3, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + M_exact[2] * in.w[2];
     G_ab = M_exact[3] * in.w[2] + in.w[0] * M_exact[1] + M_exact[2] * in.w[1];
   }
@@ -10010,7 +10010,7 @@ std::array<T, 3> segment_compact_i12_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 189 +, 434 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 134 +, 254 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10034,9 +10034,9 @@ T segment_compact_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 15, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-12, -10, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -10, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + in.w[0] * M_exact[0] + in.w[2] * M_exact[2];
     G_ap = in.w[2] * M_exact[6] + in.w[0] * M_exact[4] + in.w[1] * M_exact[5];
     G_ab = in.w[1] * M_exact[6] + M_exact[5] * in.w[0] + in.w[2] * M_exact[7];
@@ -10053,7 +10053,7 @@ T segment_compact_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// Returns false where segment_compact_i12_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 189 +, 434 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 134 +, 254 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10076,9 +10076,9 @@ bool segment_compact_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 15, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-12, -10, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -10, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + in.w[2] * M_exact[2];
     G_ap = in.w[1] * M_exact[5] + in.w[0] * M_exact[4] + M_exact[6] * in.w[2];
     G_ab = M_exact[7] * in.w[2] + in.w[0] * M_exact[5] + M_exact[6] * in.w[1];
@@ -10093,7 +10093,7 @@ bool segment_compact_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 123 +, 354 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 184 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10115,9 +10115,9 @@ T segment_compact_i12_w3_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 15, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-12, -12, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -12, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + M_exact[0] * in.w[0] + M_exact[3] * in.w[3] + M_exact[2] * in.w[2];
   }
   f = length * F;
@@ -10126,7 +10126,7 @@ T segment_compact_i12_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 144 +, 354 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 104 +, 199 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10149,9 +10149,9 @@ std::array<T, 3> segment_compact_i12_w3_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 16, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 15>(-10, -10, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-10, -10, 4, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + M_exact[2] * in.w[2] + in.w[3] * M_exact[3];
     G_ab = in.w[0] * M_exact[1] + in.w[3] * M_exact[4] + M_exact[2] * in.w[1] + M_exact[3] * in.w[2];
   }
@@ -10164,7 +10164,7 @@ std::array<T, 3> segment_compact_i12_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 222 +, 469 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 157 +, 279 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10188,9 +10188,9 @@ T segment_compact_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 16, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-12, -10, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -10, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + in.w[2] * M_exact[2] + in.w[3] * M_exact[3] + M_exact[0] * in.w[0];
     G_ap = M_exact[6] * in.w[1] + in.w[3] * M_exact[8] + M_exact[5] * in.w[0] + M_exact[7] * in.w[2];
     G_ab = in.w[2] * M_exact[8] + M_exact[6] * in.w[0] + in.w[3] * M_exact[9] + in.w[1] * M_exact[7];
@@ -10207,7 +10207,7 @@ T segment_compact_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// Returns false where segment_compact_i12_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 469 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 157 +, 279 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10230,9 +10230,9 @@ bool segment_compact_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 16, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-12, -10, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -10, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[3] * M_exact[3] + in.w[2] * M_exact[2] + in.w[0] * M_exact[0] + M_exact[1] * in.w[1];
     G_ap = M_exact[7] * in.w[2] + M_exact[6] * in.w[1] + M_exact[5] * in.w[0] + M_exact[8] * in.w[3];
     G_ab = M_exact[7] * in.w[1] + in.w[0] * M_exact[6] + in.w[2] * M_exact[8] + in.w[3] * M_exact[9];
@@ -11702,7 +11702,7 @@ bool segment_compact_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 75 +, 333 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 55 +, 158 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11724,9 +11724,9 @@ T segment_compact_i14_w0_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 14, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 1> M_exact;
-    segment_moments_gauss<T, 15>(-14, -14, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -14, 0, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
   }
   f = length * F;
@@ -11735,7 +11735,7 @@ T segment_compact_i14_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 93 +, 330 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 68 +, 170 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11758,9 +11758,9 @@ std::array<T, 3> segment_compact_i14_w0_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 15, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-12, -12, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -12, 1, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0];
     G_ab = in.w[0] * M_exact[1];
   }
@@ -11773,7 +11773,7 @@ std::array<T, 3> segment_compact_i14_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 123 +, 394 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 214 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11797,9 +11797,9 @@ T segment_compact_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 15, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-14, -12, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -12, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = in.w[0] * M_exact[3];
@@ -11816,7 +11816,7 @@ T segment_compact_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// Returns false where segment_compact_i14_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 123 +, 394 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 88 +, 214 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11839,9 +11839,9 @@ bool segment_compact_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 15, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-14, -12, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -12, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0];
     G_ap = M_exact[2] * in.w[0];
     G_ab = in.w[0] * M_exact[3];
@@ -11856,7 +11856,7 @@ bool segment_compact_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 91 +, 350 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 66 +, 170 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11878,9 +11878,9 @@ T segment_compact_i14_w1_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 15, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-14, -14, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -14, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
   }
   f = F * length;
@@ -11889,7 +11889,7 @@ T segment_compact_i14_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 110 +, 348 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 183 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11912,9 +11912,9 @@ std::array<T, 3> segment_compact_i14_w1_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 16, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-12, -12, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -12, 2, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = M_exact[0] * in.w[0] + M_exact[1] * in.w[1];
     G_ab = M_exact[2] * in.w[1] + M_exact[1] * in.w[0];
   }
@@ -11927,7 +11927,7 @@ std::array<T, 3> segment_compact_i14_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 156 +, 429 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 111 +, 239 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11951,9 +11951,9 @@ T segment_compact_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 16, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-14, -12, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -12, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + M_exact[1] * in.w[1];
     G_ap = in.w[0] * M_exact[3] + in.w[1] * M_exact[4];
     G_ab = M_exact[5] * in.w[1] + in.w[0] * M_exact[4];
@@ -11970,7 +11970,7 @@ T segment_compact_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// Returns false where segment_compact_i14_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 156 +, 429 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 111 +, 239 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11993,9 +11993,9 @@ bool segment_compact_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 16, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-14, -12, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -12, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
     G_ap = M_exact[3] * in.w[0] + M_exact[4] * in.w[1];
     G_ab = in.w[0] * M_exact[4] + in.w[1] * M_exact[5];
@@ -12010,7 +12010,7 @@ bool segment_compact_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 107 +, 367 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 77 +, 182 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12032,9 +12032,9 @@ T segment_compact_i14_w2_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 16, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-14, -14, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -14, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[2] * in.w[2] + in.w[1] * M_exact[1] + in.w[0] * M_exact[0];
   }
   f = length * F;
@@ -12043,7 +12043,7 @@ T segment_compact_i14_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 127 +, 366 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 92 +, 196 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12066,9 +12066,9 @@ std::array<T, 3> segment_compact_i14_w2_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 17, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-12, -12, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -12, 3, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + M_exact[2] * in.w[2];
     G_ab = M_exact[2] * in.w[1] + in.w[0] * M_exact[1] + M_exact[3] * in.w[2];
   }
@@ -12081,7 +12081,7 @@ std::array<T, 3> segment_compact_i14_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 189 +, 464 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 134 +, 264 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12105,9 +12105,9 @@ T segment_compact_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 17, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-14, -12, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -12, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + in.w[0] * M_exact[0] + in.w[2] * M_exact[2];
     G_ap = in.w[2] * M_exact[6] + M_exact[5] * in.w[1] + in.w[0] * M_exact[4];
     G_ab = M_exact[6] * in.w[1] + in.w[2] * M_exact[7] + M_exact[5] * in.w[0];
@@ -12124,7 +12124,7 @@ T segment_compact_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// Returns false where segment_compact_i14_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 189 +, 464 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 134 +, 264 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12147,9 +12147,9 @@ bool segment_compact_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 17, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-14, -12, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -12, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + in.w[2] * M_exact[2];
     G_ap = M_exact[6] * in.w[2] + in.w[0] * M_exact[4] + in.w[1] * M_exact[5];
     G_ab = in.w[0] * M_exact[5] + M_exact[7] * in.w[2] + M_exact[6] * in.w[1];
@@ -12164,7 +12164,7 @@ bool segment_compact_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 123 +, 384 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 194 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12186,9 +12186,9 @@ T segment_compact_i14_w3_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 17, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-14, -14, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -14, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + in.w[1] * M_exact[1] + M_exact[3] * in.w[3] + in.w[2] * M_exact[2];
   }
   f = F * length;
@@ -12197,7 +12197,7 @@ T segment_compact_i14_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 144 +, 384 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 104 +, 209 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12220,9 +12220,9 @@ std::array<T, 3> segment_compact_i14_w3_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 18, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 15>(-12, -12, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-12, -12, 4, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[1] * M_exact[1] + in.w[0] * M_exact[0] + in.w[2] * M_exact[2] + M_exact[3] * in.w[3];
     G_ab = in.w[0] * M_exact[1] + in.w[3] * M_exact[4] + M_exact[3] * in.w[2] + in.w[1] * M_exact[2];
   }
@@ -12235,7 +12235,7 @@ std::array<T, 3> segment_compact_i14_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 222 +, 499 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 157 +, 289 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12259,9 +12259,9 @@ T segment_compact_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 18, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-14, -12, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -12, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[3] * in.w[3] + in.w[2] * M_exact[2] + in.w[1] * M_exact[1];
     G_ap = M_exact[5] * in.w[0] + M_exact[6] * in.w[1] + M_exact[7] * in.w[2] + M_exact[8] * in.w[3];
     G_ab = in.w[1] * M_exact[7] + M_exact[9] * in.w[3] + M_exact[6] * in.w[0] + in.w[2] * M_exact[8];
@@ -12278,7 +12278,7 @@ T segment_compact_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// Returns false where segment_compact_i14_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 499 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 157 +, 289 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12301,9 +12301,9 @@ bool segment_compact_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 18, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 10> M_exact;
-    segment_moments_gauss<T, 15>(-14, -12, 4, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -12, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[2] * M_exact[2] + in.w[0] * M_exact[0] + M_exact[1] * in.w[1] + in.w[3] * M_exact[3];
     G_ap = M_exact[6] * in.w[1] + M_exact[5] * in.w[0] + in.w[2] * M_exact[7] + M_exact[8] * in.w[3];
     G_ab = in.w[0] * M_exact[6] + in.w[3] * M_exact[9] + in.w[2] * M_exact[8] + in.w[1] * M_exact[7];
@@ -13815,7 +13815,7 @@ bool segment_compact_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 75 +, 363 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 55 +, 168 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13837,9 +13837,9 @@ T segment_compact_i16_w0_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 16, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 1> M_exact;
-    segment_moments_gauss<T, 15>(-16, -16, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -16, 0, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
   }
   f = F * length;
@@ -13848,7 +13848,7 @@ T segment_compact_i16_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 93 +, 360 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 68 +, 180 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13871,9 +13871,9 @@ std::array<T, 3> segment_compact_i16_w0_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 17, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-14, -14, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -14, 1, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0];
     G_ab = M_exact[1] * in.w[0];
   }
@@ -13886,7 +13886,7 @@ std::array<T, 3> segment_compact_i16_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 123 +, 424 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 224 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13910,9 +13910,9 @@ T segment_compact_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 17, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-16, -14, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -14, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[2];
     G_ab = in.w[0] * M_exact[3];
@@ -13929,7 +13929,7 @@ T segment_compact_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// Returns false where segment_compact_i16_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 123 +, 424 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 88 +, 224 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13952,9 +13952,9 @@ bool segment_compact_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 17, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-16, -14, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -14, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0];
     G_ap = M_exact[2] * in.w[0];
     G_ab = in.w[0] * M_exact[3];
@@ -13969,7 +13969,7 @@ bool segment_compact_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 91 +, 380 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 66 +, 180 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13991,9 +13991,9 @@ T segment_compact_i16_w1_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 17, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 2> M_exact;
-    segment_moments_gauss<T, 15>(-16, -16, 1, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -16, 1, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + M_exact[0] * in.w[0];
   }
   f = length * F;
@@ -14002,7 +14002,7 @@ T segment_compact_i16_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 110 +, 378 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 193 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14025,9 +14025,9 @@ std::array<T, 3> segment_compact_i16_w1_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 18, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-14, -14, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -14, 2, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[1] * M_exact[1] + in.w[0] * M_exact[0];
     G_ab = in.w[0] * M_exact[1] + M_exact[2] * in.w[1];
   }
@@ -14040,7 +14040,7 @@ std::array<T, 3> segment_compact_i16_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 156 +, 459 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 111 +, 249 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14064,9 +14064,9 @@ T segment_compact_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 18, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-16, -14, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -14, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + M_exact[1] * in.w[1];
     G_ap = M_exact[4] * in.w[1] + M_exact[3] * in.w[0];
     G_ab = M_exact[4] * in.w[0] + M_exact[5] * in.w[1];
@@ -14083,7 +14083,7 @@ T segment_compact_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// Returns false where segment_compact_i16_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 156 +, 459 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 111 +, 249 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14106,9 +14106,9 @@ bool segment_compact_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 18, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 15>(-16, -14, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -14, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[1] * in.w[1] + in.w[0] * M_exact[0];
     G_ap = in.w[0] * M_exact[3] + M_exact[4] * in.w[1];
     G_ab = M_exact[4] * in.w[0] + M_exact[5] * in.w[1];
@@ -14123,7 +14123,7 @@ bool segment_compact_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 107 +, 397 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 77 +, 192 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14145,9 +14145,9 @@ T segment_compact_i16_w2_f(const SegmentInput<T>& in) {
   const T c = T(1) - ap_ap * inv_R2;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 18, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 15>(-16, -16, 2, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -16, 2, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[0] * in.w[0] + in.w[2] * M_exact[2] + M_exact[1] * in.w[1];
   }
   f = F * length;
@@ -14156,7 +14156,7 @@ T segment_compact_i16_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 127 +, 396 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 92 +, 206 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14179,9 +14179,9 @@ std::array<T, 3> segment_compact_i16_w2_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 19, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-14, -14, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-14, -14, 3, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[0] * M_exact[0] + M_exact[2] * in.w[2] + M_exact[1] * in.w[1];
     G_ab = in.w[1] * M_exact[2] + in.w[2] * M_exact[3] + in.w[0] * M_exact[1];
   }
@@ -14194,7 +14194,7 @@ std::array<T, 3> segment_compact_i16_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 189 +, 494 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 134 +, 274 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14218,9 +14218,9 @@ T segment_compact_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 19, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-16, -14, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -14, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + in.w[2] * M_exact[2];
     G_ap = in.w[2] * M_exact[6] + in.w[1] * M_exact[5] + in.w[0] * M_exact[4];
     G_ab = in.w[0] * M_exact[5] + in.w[1] * M_exact[6] + M_exact[7] * in.w[2];
@@ -14237,7 +14237,7 @@ T segment_compact_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// Returns false where segment_compact_i16_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 189 +, 494 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 134 +, 274 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14260,9 +14260,9 @@ bool segment_compact_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 19, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 8> M_exact;
-    segment_moments_gauss<T, 15>(-16, -14, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -14, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + in.w[2] * M_exact[2] + in.w[0] * M_exact[0];
     G_ap = M_exact[5] * in.w[1] + in.w[0] * M_exact[4] + in.w[2] * M_exact[6];
     G_ab = M_exact[6] * in.w[1] + in.w[2] * M_exact[7] + M_exact[5] * in.w[0];
@@ -14277,7 +14277,7 @@ bool segment_compact_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 123 +, 414 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 204 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14299,9 +14299,9 @@ T segment_compact_i16_w3_f(const SegmentInput<T>& in) {
   const T c = T(1) - inv_R2 * ap_ap;
   T F;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 19, integrated exactly by segment_moments_gauss<T, 10>
     std::array<T, 4> M_exact;
-    segment_moments_gauss<T, 15>(-16, -16, 3, a, b, c, in.t0, in.t1, M_exact.data());
+    segment_moments_gauss<T, 10>(-16, -16, 3, a, b, c, in.t0, in.t1, M_exact.data());
     F = M_exact[2] * in.w[2] + M_exact[1] * in.w[1] + in.w[3] * M_exact[3] + in.w[0] * M_exact[0];
   }
   f = length * F;
@@ -14310,7 +14310,7 @@ T segment_compact_i16_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 144 +, 414 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 144 +, 309 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14333,7 +14333,7 @@ std::array<T, 3> segment_compact_i16_w3_grad(const SegmentInput<T>& in) {
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 20, integrated exactly by segment_moments_gauss<T, 15>
     std::array<T, 5> M_exact;
     segment_moments_gauss<T, 15>(-14, -14, 4, a, b, c, in.t0, in.t1, M_exact.data());
     G_ap = in.w[2] * M_exact[2] + in.w[1] * M_exact[1] + M_exact[3] * in.w[3] + in.w[0] * M_exact[0];
@@ -14348,7 +14348,7 @@ std::array<T, 3> segment_compact_i16_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 222 +, 529 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 222 +, 424 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14372,7 +14372,7 @@ T segment_compact_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 20, integrated exactly by segment_moments_gauss<T, 15>
     std::array<T, 10> M_exact;
     segment_moments_gauss<T, 15>(-16, -14, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[0] * M_exact[0] + in.w[1] * M_exact[1] + in.w[3] * M_exact[3] + in.w[2] * M_exact[2];
@@ -14391,7 +14391,7 @@ T segment_compact_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// Returns false where segment_compact_i16_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 529 ×, 1 /, 16 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 222 +, 424 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14414,7 +14414,7 @@ bool segment_compact_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T G_ap;
   T G_ab;
   {
-    // even degree: the integrand is a polynomial, integrated exactly by segment_moments_gauss<T, 15>
+    // even degree: the integrand is a polynomial of degree 20, integrated exactly by segment_moments_gauss<T, 15>
     std::array<T, 10> M_exact;
     segment_moments_gauss<T, 15>(-16, -14, 4, a, b, c, in.t0, in.t1, M_exact.data());
     F = in.w[1] * M_exact[1] + M_exact[3] * in.w[3] + M_exact[0] * in.w[0] + in.w[2] * M_exact[2];

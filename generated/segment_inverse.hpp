@@ -1242,7 +1242,7 @@ bool segment_inverse_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
 /// Operations: 28 +, 34 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 110 +, 217 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 110 +, 197 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1295,7 +1295,7 @@ T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
 /// Operations: 35 +, 53 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 133 +, 288 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 133 +, 248 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1360,7 +1360,7 @@ std::array<T, 3> segment_inverse_i2_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
 /// Operations: 35 +, 56 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 372 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 332 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1494,7 +1494,7 @@ bool segment_inverse_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
 /// Operations: 30 +, 39 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 131 +, 239 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 131 +, 219 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1549,7 +1549,7 @@ T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
 /// Operations: 39 +, 66 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 155 +, 311 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 155 +, 271 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1616,7 +1616,7 @@ std::array<T, 3> segment_inverse_i2_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
 /// Operations: 41 +, 74 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 216 +, 418 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 216 +, 378 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1757,7 +1757,7 @@ bool segment_inverse_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
 /// Operations: 33 +, 44 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 152 +, 261 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 152 +, 241 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1814,7 +1814,7 @@ T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
 /// Operations: 44 +, 81 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 177 +, 335 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 177 +, 295 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1891,7 +1891,7 @@ std::array<T, 3> segment_inverse_i2_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
 /// Operations: 48 +, 91 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 259 +, 463 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 259 +, 423 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2036,7 +2036,7 @@ bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
 /// Operations: 38 +, 54 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 173 +, 283 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 173 +, 263 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2097,7 +2097,7 @@ T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
 /// Operations: 50 +, 97 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 199 +, 358 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 199 +, 318 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2178,7 +2178,7 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
 /// Operations: 57 +, 114 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 302 +, 508 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 302 +, 468 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3544,7 +3544,7 @@ bool segment_inverse_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 30 +, 38 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 110 +, 257 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 110 +, 217 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3599,7 +3599,7 @@ T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 37 +, 64 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 133 +, 328 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 133 +, 268 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3666,7 +3666,7 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 37 +, 68 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 412 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 352 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3798,7 +3798,7 @@ bool segment_inverse_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 33 +, 44 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 131 +, 279 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 131 +, 239 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3856,7 +3856,7 @@ T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 41 +, 78 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 155 +, 351 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 155 +, 291 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3926,7 +3926,7 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 44 +, 87 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 216 +, 457 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 216 +, 397 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4062,7 +4062,7 @@ bool segment_inverse_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
 /// Operations: 36 +, 54 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 152 +, 301 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 152 +, 261 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4122,7 +4122,7 @@ T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
 /// Operations: 47 +, 93 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 374 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 314 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4193,7 +4193,7 @@ std::array<T, 3> segment_inverse_i4_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
 /// Operations: 51 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 259 +, 502 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 259 +, 442 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4341,7 +4341,7 @@ bool segment_inverse_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
 /// Operations: 40 +, 66 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 173 +, 324 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 173 +, 284 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4411,7 +4411,7 @@ T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
 /// Operations: 53 +, 112 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 199 +, 397 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 199 +, 337 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4484,7 +4484,7 @@ std::array<T, 3> segment_inverse_i4_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
 /// Operations: 59 +, 134 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 302 +, 548 ×, 21 /, 21 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 302 +, 488 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5727,7 +5727,7 @@ bool segment_inverse_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 32 +, 49 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 110 +, 297 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 110 +, 237 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5786,7 +5786,7 @@ T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 39 +, 73 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 133 +, 368 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 133 +, 288 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5855,7 +5855,7 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 39 +, 77 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 452 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 372 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5991,7 +5991,7 @@ bool segment_inverse_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 35 +, 55 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 131 +, 319 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 131 +, 259 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6051,7 +6051,7 @@ T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 43 +, 87 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 155 +, 391 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 155 +, 311 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6123,7 +6123,7 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 46 +, 98 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 216 +, 497 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 216 +, 417 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6263,7 +6263,7 @@ bool segment_inverse_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 38 +, 66 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 152 +, 341 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 152 +, 281 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6326,7 +6326,7 @@ T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 49 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 414 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 334 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6399,7 +6399,7 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 53 +, 121 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 259 +, 542 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 259 +, 462 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6545,7 +6545,7 @@ bool segment_inverse_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 43 +, 78 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 363 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 303 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6609,7 +6609,7 @@ T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 55 +, 124 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 199 +, 437 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 199 +, 357 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6685,7 +6685,7 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 62 +, 146 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 302 +, 587 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 302 +, 507 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7943,7 +7943,7 @@ bool segment_inverse_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 34 +, 58 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 110 +, 337 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 110 +, 257 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8004,7 +8004,7 @@ T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 41 +, 82 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 133 +, 408 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 133 +, 308 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8075,7 +8075,7 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 41 +, 86 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 492 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 392 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8215,7 +8215,7 @@ bool segment_inverse_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 37 +, 64 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 131 +, 359 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 131 +, 279 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8277,7 +8277,7 @@ T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 45 +, 96 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 155 +, 431 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 155 +, 331 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8351,7 +8351,7 @@ std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 48 +, 107 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 216 +, 537 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 216 +, 437 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8495,7 +8495,7 @@ bool segment_inverse_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 40 +, 75 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 152 +, 381 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 152 +, 301 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8560,7 +8560,7 @@ T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 51 +, 113 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 454 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 354 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8635,7 +8635,7 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 55 +, 130 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 259 +, 582 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 259 +, 482 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8785,7 +8785,7 @@ bool segment_inverse_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 45 +, 89 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 403 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 323 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8851,7 +8851,7 @@ T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 57 +, 133 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 199 +, 477 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 199 +, 377 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8929,7 +8929,7 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 64 +, 157 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 302 +, 627 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 302 +, 527 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10223,7 +10223,7 @@ bool segment_inverse_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 36 +, 67 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 110 +, 377 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 110 +, 277 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10286,7 +10286,7 @@ T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 43 +, 91 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 133 +, 448 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 133 +, 328 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10359,7 +10359,7 @@ std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 43 +, 95 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 532 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 412 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10503,7 +10503,7 @@ bool segment_inverse_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 39 +, 73 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 131 +, 399 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 131 +, 299 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10567,7 +10567,7 @@ T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 47 +, 106 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 155 +, 471 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 155 +, 351 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10643,7 +10643,7 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 50 +, 117 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 216 +, 577 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 216 +, 457 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10791,7 +10791,7 @@ bool segment_inverse_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 42 +, 84 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 152 +, 421 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 152 +, 321 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10858,7 +10858,7 @@ T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 53 +, 124 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 494 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 374 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10935,7 +10935,7 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 57 +, 141 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 259 +, 622 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 259 +, 502 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11089,7 +11089,7 @@ bool segment_inverse_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 47 +, 98 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 443 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 343 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11157,7 +11157,7 @@ T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 59 +, 144 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 199 +, 517 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 199 +, 397 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11237,7 +11237,7 @@ std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 66 +, 168 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 302 +, 667 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 302 +, 547 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12567,7 +12567,7 @@ bool segment_inverse_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 38 +, 76 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 110 +, 417 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 110 +, 297 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12632,7 +12632,7 @@ T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 45 +, 100 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 133 +, 488 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 133 +, 348 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12707,7 +12707,7 @@ std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 45 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 572 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 432 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12855,7 +12855,7 @@ bool segment_inverse_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 41 +, 82 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 131 +, 439 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 131 +, 319 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12921,7 +12921,7 @@ T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 49 +, 114 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 155 +, 511 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 155 +, 371 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12999,7 +12999,7 @@ std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 52 +, 125 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 216 +, 617 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 216 +, 477 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13151,7 +13151,7 @@ bool segment_inverse_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 44 +, 94 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 152 +, 461 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 152 +, 341 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13220,7 +13220,7 @@ T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 55 +, 131 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 534 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 394 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13299,7 +13299,7 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 59 +, 149 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 259 +, 662 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 259 +, 522 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13457,7 +13457,7 @@ bool segment_inverse_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 49 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 483 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 363 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13527,7 +13527,7 @@ T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 61 +, 152 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 199 +, 557 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 199 +, 417 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13609,7 +13609,7 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 68 +, 177 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 302 +, 707 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 302 +, 567 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14975,7 +14975,7 @@ bool segment_inverse_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 40 +, 85 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 110 +, 457 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 110 +, 317 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15042,7 +15042,7 @@ T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 47 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 133 +, 528 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 133 +, 368 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15119,7 +15119,7 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 47 +, 113 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 612 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 452 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15271,7 +15271,7 @@ bool segment_inverse_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 43 +, 91 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 131 +, 479 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 131 +, 339 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15339,7 +15339,7 @@ T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 51 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 155 +, 551 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 155 +, 391 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15419,7 +15419,7 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 54 +, 134 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 216 +, 657 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 216 +, 497 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15575,7 +15575,7 @@ bool segment_inverse_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 46 +, 102 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 152 +, 501 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 152 +, 361 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15646,7 +15646,7 @@ T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 57 +, 140 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 574 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 414 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15727,7 +15727,7 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 61 +, 157 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 259 +, 702 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 259 +, 542 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15889,7 +15889,7 @@ bool segment_inverse_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 51 +, 116 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 523 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 383 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15961,7 +15961,7 @@ T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 63 +, 160 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 199 +, 597 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 199 +, 437 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16045,7 +16045,7 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 70 +, 184 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 302 +, 747 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 302 +, 587 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17447,7 +17447,7 @@ bool segment_inverse_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 42 +, 94 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 110 +, 497 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 110 +, 337 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17516,7 +17516,7 @@ T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 49 +, 117 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 133 +, 568 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 133 +, 388 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17595,7 +17595,7 @@ std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 49 +, 121 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 652 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 472 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17751,7 +17751,7 @@ bool segment_inverse_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 45 +, 100 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 131 +, 519 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 131 +, 359 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17821,7 +17821,7 @@ T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 53 +, 132 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 155 +, 591 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 155 +, 411 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17903,7 +17903,7 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 56 +, 143 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 216 +, 697 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 216 +, 517 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18063,7 +18063,7 @@ bool segment_inverse_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 48 +, 111 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 152 +, 541 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 152 +, 381 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18136,7 +18136,7 @@ T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 59 +, 150 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 614 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 177 +, 434 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18219,7 +18219,7 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 63 +, 167 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 259 +, 742 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 259 +, 562 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18385,7 +18385,7 @@ bool segment_inverse_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 53 +, 125 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 173 +, 563 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 173 +, 403 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18459,7 +18459,7 @@ T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 65 +, 170 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 199 +, 637 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 199 +, 457 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18545,7 +18545,7 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 72 +, 194 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 302 +, 787 ×, 20 /, 21 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 302 +, 607 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_inverse_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

@@ -8,8 +8,8 @@
 // nothing to cancel:
 //
 //  * compact kernels of even degree i: t^k q^(i/2) is a polynomial of degree
-//    ≤ i + k, integrated exactly by N points when 2N − 1 ≥ i + k (N = 15
-//    covers i ≤ 16, k ≤ 4 with room to spare);
+//    ≤ i + k, integrated exactly by N points when 2N − 1 ≥ i + k (the
+//    generator takes the smallest of Boost's tabulated N = 7, 10, 15);
 //  * inverse and Cauchy kernels with P far from the segment's line compared
 //    with its length (D ≥ 2 a², i.e. the complex roots t* ± i√D/a of q at
 //    least √2 from the real axis in units of |AB|): the moment relations
@@ -48,12 +48,15 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
   auto add_node = [&](const T& x, const T& g) {
     const T t = middle + half_width * x;
     const T q = max(T(0), c + t * (a * t - 2 * b));
-    // q^(−m_hi/2) from √q and integer powers, then × q per level down to
-    // m_lo: no division by a q that may be 0 at a clipped end.
-    const T root = sqrt(q);
+    // q^(−m_hi/2) from integer powers of q (even m) or of √q (odd m), then
+    // × q per level down to m_lo: no division by a q that may be 0 at a
+    // clipped end.
+    const bool even = m_hi % 2 == 0;
+    const T root = even ? q : sqrt(q);
     const T base = m_hi <= 0 ? root : T(1) / root;
+    const int power = (m_hi <= 0 ? -m_hi : m_hi) / (even ? 2 : 1);
     T level_value = T(1);
-    for (int j = 0; j < (m_hi <= 0 ? -m_hi : m_hi); ++j) level_value *= base;
+    for (int j = 0; j < power; ++j) level_value *= base;
     for (int l = levels - 1; l >= 0; --l) {
       T term = g * level_value;
       for (int k = 0; k <= k_max; ++k) {
@@ -70,6 +73,7 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
     add_node(T(0), g[0]);
     first = 1;
   }
+#pragma GCC unroll 16
   for (unsigned j = first; j < x.size(); ++j) {
     add_node(x[j], g[j]);
     add_node(-x[j], g[j]);
