@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "batch_kernels.hpp"
+#include "bench_main.hpp"
 
 namespace skelconv::bench {
 namespace {
@@ -137,15 +138,7 @@ void register_all() {
 
 int main(int argc, char** argv) {
   // --smoke (CTest): tiny batches.
-  int kept = 1;
-  for (int j = 1; j < argc; ++j) {
-    if (std::strcmp(argv[j], "--smoke") == 0) {
-      skelconv::bench::batch_size = 64;
-    } else {
-      argv[kept++] = argv[j];
-    }
-  }
-  argc = kept;
+  if (skelconv::bench::take_flag(argc, argv, "--smoke")) skelconv::bench::batch_size = 64;
   // Batch and scalar must agree (on every run, smoke test included).
   if (!skelconv::bench::check_all()) {
     std::fprintf(stderr, "batch and scalar results disagree beyond %.0e relative (+ %.0e absolute)\n",
@@ -153,9 +146,5 @@ int main(int argc, char** argv) {
     return 1;
   }
   skelconv::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return skelconv::bench::run_registered_benchmarks(argc, argv);
 }

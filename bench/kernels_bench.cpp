@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_main.hpp"
 #include "bench_support.hpp"
 
 namespace skelconv::bench {
@@ -155,9 +156,5 @@ void register_all() {
 
 int main(int argc, char** argv) {
   skelconv::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return skelconv::bench::run_registered_benchmarks(argc, argv);
 }

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_main.hpp"
 #include "skelconv/skeleton.hpp"
 
 namespace skelconv::bench {
@@ -221,25 +222,15 @@ void register_all() {
 
 int main(int argc, char** argv) {
   // --smoke (CTest): 100 primitives, 16³ grid, 8³ sub-grid.
-  int kept = 1;
-  for (int j = 1; j < argc; ++j) {
-    if (std::strcmp(argv[j], "--smoke") == 0) {
-      skelconv::bench::config.primitives = 100;
-      skelconv::bench::config.grid = 16;
-      skelconv::bench::config.sub_grid = 8;
-      skelconv::bench::config.cells = 8;
-    } else {
-      argv[kept++] = argv[j];
-    }
+  if (skelconv::bench::take_flag(argc, argv, "--smoke")) {
+    skelconv::bench::config.primitives = 100;
+    skelconv::bench::config.grid = 16;
+    skelconv::bench::config.sub_grid = 8;
+    skelconv::bench::config.cells = 8;
   }
-  argc = kept;
   std::fprintf(stderr, "skeleton: %d compact segments (degree %d, R = %g), %d^3 grid, brute force on %d^3, %d^3 cells\n",
                skelconv::bench::config.primitives, skelconv::bench::config.degree, skelconv::bench::config.R,
                skelconv::bench::config.grid, skelconv::bench::config.sub_grid, skelconv::bench::config.cells);
   skelconv::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return skelconv::bench::run_registered_benchmarks(argc, argv);
 }

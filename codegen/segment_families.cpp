@@ -323,13 +323,19 @@ class SegmentProgramBuilder {
     D_ = define("D", alpha_ * (beta_ * ab_ab_ + alpha_ * cross_cross_));
   }
 
-  // Inverse and Cauchy kernels: t ∈ [0, 1], q > 0, a > 0.
-  MomentSymbols infinite_support_symbols() {
+  // The quadratic's coefficients, common to every family.
+  MomentSymbols quadratic_symbols() const {
     MomentSymbols m;
     m.a = a_;
     m.b = b_;
     m.c = c_;
     m.D = D_;
+    return m;
+  }
+
+  // Inverse and Cauchy kernels: t ∈ [0, 1], q > 0, a > 0.
+  MomentSymbols infinite_support_symbols() {
+    MomentSymbols m = quadratic_symbols();
     const bool odd = spec_.degree % 2 != 0;
     const ex a_minus_b = a_minus_b_ = define("a_minus_b", -alpha_ * ab_bp_);  // a − b = −α AB·BP
     const ex q1 = define("q1", beta_ + alpha_ * bp_bp_);        // q(1) = β + α|BP|²
@@ -375,11 +381,7 @@ class SegmentProgramBuilder {
 
   // Compact kernels: t ∈ [t0, t1] (the clip), a < 0, q ≥ 0.
   MomentSymbols compact_symbols() {
-    MomentSymbols m;
-    m.a = a_;
-    m.b = b_;
-    m.c = c_;
-    m.D = D_;
+    MomentSymbols m = quadratic_symbols();
     const bool odd = spec_.degree % 2 != 0;
     auto end = [&](const std::string& tag, const std::string& input) {
       symbol t("t" + tag);
