@@ -51,6 +51,18 @@ struct Text {
   enum Precedence { sum = 1, product = 2, atom = 3 } precedence;
 };
 
+// Whether e calls J_downward or J_upward_compact (include/skelconv/
+// stable_recurrence.hpp): loops whose length depends on P.
+bool calls_loop_helper(const ex& e) {
+  if (is_a<GiNaC::function>(e)) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (name == "J_downward" || name == "J_upward_compact") return true;
+  }
+  for (size_t i = 0; i < e.nops(); ++i)
+    if (calls_loop_helper(e.op(i))) return true;
+  return false;
+}
+
 // An identifier or `in.x[i]`: needs no temporary of its own.
 bool is_plain_name(const std::string& s) {
   static const std::regex name(R"([A-Za-z_][A-Za-z0-9_]*(\.[a-z]+)?(\[[0-9]+\])?)");
@@ -480,17 +492,50 @@ class Emitter {
         all += (all.empty() ? "" : " && ") + named(c) + " >= T(0)";
       conditions.push_back(all);
     }
-    const bool calls_helper = std::any_of(choice.alternatives.begin(), choice.alternatives.end(),
-                                          [](const Alternative& a) { return !a.calls.empty(); });
-    if (forms_ == Forms::generic_only && calls_helper) {
-      // The full program takes the generic form where no earlier form's
-      // conditions all hold.
-      for (size_t i = 0; i < choice.generic; ++i)
-        special_forms_ += (special_forms_.empty() ? "(" : " || (") + conditions[i] + ")";
-      const Scope branch = emit_alternative(choice, choice.generic, "{");
+    // In generic_only mode an alternative that calls a helper with a loop of
+    // run-time length (no fixed OpCount) is left out: the function then
+    // reports, through generic_applies, where the full program takes it.
+    auto has_variable_loop = [](const Alternative& a) {
+      if (std::any_of(a.calls.begin(), a.calls.end(), [](const ArrayCall& c) { return !c.ops; })) return true;
+      for (const auto& [s, v] : a.steps)
+        if (calls_loop_helper(v)) return true;
+      return std::any_of(a.values.begin(), a.values.end(), calls_loop_helper);
+    };
+    std::vector<size_t> kept;
+    for (size_t i = 0; i < choice.alternatives.size(); ++i) {
+      const bool skip = forms_ == Forms::generic_only && has_variable_loop(choice.alternatives[i]);
+      if (skip && i + 1 == choice.alternatives.size())
+        throw std::logic_error("generic_only: the fallback form calls a loop helper");
+      if (skip) {
+        // Taken by the full program where its conditions hold and no kept
+        // earlier alternative's do.
+        std::string taken = "(" + conditions[i] + ")";
+        for (size_t j : kept) taken += " && !(" + conditions[j] + ")";
+        special_forms_ += (special_forms_.empty() ? "(" : " || (") + taken + ")";
+      } else {
+        kept.push_back(i);
+      }
+    }
+    if (kept.size() != choice.alternatives.size()) {
+      OpCount longest, generic;
+      for (size_t k = 0; k < kept.size(); ++k) {
+        const size_t i = kept[k];
+        const bool last = k + 1 == kept.size();
+        std::string opening;
+        if (!last) {
+          opening = std::string(k == 0 ? "if (" : "} else if (") + conditions[i] + ") {";
+        } else if (k > 0) {
+          opening = "} else {";
+        } else {
+          opening = "{";
+        }
+        const Scope branch = emit_alternative(choice, i, opening);
+        if (branch.longest.total() > longest.total()) longest = branch.longest;
+        if (i == choice.generic) generic = branch.generic;
+      }
       line("}");
-      scopes_.back().generic += branch.generic;
-      scopes_.back().longest += branch.generic;
+      scopes_.back().generic += generic;
+      scopes_.back().longest += longest;
       for (const symbol& t : choice.targets) names_[t] = t.get_name();
       return;
     }

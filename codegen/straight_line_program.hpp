@@ -70,9 +70,9 @@ struct EmittedCode {
 /// What `emit` writes.
 enum class Forms {
   all,           ///< every alternative, chosen at run time
-  generic_only,  ///< the generic alternative of every choice that calls a
-                 ///< helper (a loop): straight-line code a compiler can
-                 ///< vectorise, plus the condition under which it is exact
+  generic_only,  ///< without the alternatives that call a helper with a
+                 ///< loop of run-time length (fixed rules stay): code a
+                 ///< compiler can vectorise, plus where it is exact
 };
 
 class StraightLineProgram {

@@ -304,7 +304,14 @@ bool segment_cauchy_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t8 = D - T(2) * a * a;
   const T t9 = -a_minus_b * b;
   const T t10 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t8 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(1, 3, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = J1 * in.w[0];
     F = t11;
@@ -321,7 +328,7 @@ bool segment_cauchy_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - G_ap * ap1) * g_factor;
   grad[2] = -g_factor * (G_ab * ab2 - G_ap * ap2);
-  return !((t8 >= T(0)) || (t9 >= T(0) && t10 >= T(0)));
+  return !(((t9 >= T(0) && t10 >= T(0)) && !(t8 >= T(0))));
 }
 
 /// the field, where
@@ -637,7 +644,14 @@ bool segment_cauchy_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t8 = D - T(2) * a * a;
   const T t9 = -a_minus_b * b;
   const T t10 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t8 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(1, 3, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
+    G_ab = in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = T(1) / a;
     const T t12 = in.w[0] * J1 - (r0 - J1 * b - r1) * t11 * in.w[1];
@@ -655,7 +669,7 @@ bool segment_cauchy_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = -(G_ab * ab2 - G_ap * ap2) * g_factor;
-  return !((t8 >= T(0)) || (t9 >= T(0) && t10 >= T(0)));
+  return !(((t9 >= T(0) && t10 >= T(0)) && !(t8 >= T(0))));
 }
 
 /// the field, where
@@ -980,7 +994,14 @@ bool segment_cauchy_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t8 = D - T(2) * a * a;
   const T t9 = -a_minus_b * b;
   const T t10 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t8 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(1, 3, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0];
+    G_ap = M_flat[4] * in.w[0] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
+    G_ab = in.w[0] * M_flat[5] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = T(1) / a;
     const T t12 = r0 - J1 * b - r1;
@@ -1000,7 +1021,7 @@ bool segment_cauchy_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(G_ab * ab0 - G_ap * ap0) * g_factor;
   grad[1] = -(G_ab * ab1 - G_ap * ap1) * g_factor;
   grad[2] = -(G_ab * ab2 - G_ap * ap2) * g_factor;
-  return !((t8 >= T(0)) || (t9 >= T(0) && t10 >= T(0)));
+  return !(((t9 >= T(0) && t10 >= T(0)) && !(t8 >= T(0))));
 }
 
 /// the field, where
@@ -1338,7 +1359,14 @@ bool segment_cauchy_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t8 = D - T(2) * a * a;
   const T t9 = -b * a_minus_b;
   const T t10 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t8 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(1, 3, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[3] * M_flat[3] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + M_flat[8] * in.w[3];
+    G_ab = in.w[1] * M_flat[7] + in.w[2] * M_flat[8] + in.w[3] * M_flat[9] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = r0 - r1 - b * J1;
     const T t12 = T(1) / a;
@@ -1362,7 +1390,7 @@ bool segment_cauchy_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t8 >= T(0)) || (t9 >= T(0) && t10 >= T(0)));
+  return !(((t9 >= T(0) && t10 >= T(0)) && !(t8 >= T(0))));
 }
 
 /// the field, where
@@ -1615,7 +1643,14 @@ bool segment_cauchy_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -1634,7 +1669,7 @@ bool segment_cauchy_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -1900,7 +1935,14 @@ bool segment_cauchy_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t1 = D - T(2) * a * a;
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
+    G_ap = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
+    G_ab = in.w[1] * M_flat[5] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(D);
     const T t5 = T(1) / t4;
@@ -1921,7 +1963,7 @@ bool segment_cauchy_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t1 >= T(0)) || (t2 >= T(0) && t3 >= T(0)));
+  return !(((t2 >= T(0) && t3 >= T(0)) && !(t1 >= T(0))));
 }
 
 /// the field, where
@@ -2203,7 +2245,14 @@ bool segment_cauchy_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t1 = D - T(2) * a * a;
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
+    G_ap = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + M_flat[6] * in.w[2];
+    G_ab = M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + M_flat[6] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(D);
     const T t5 = T(1) / t4;
@@ -2226,7 +2275,7 @@ bool segment_cauchy_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t1 >= T(0)) || (t2 >= T(0) && t3 >= T(0)));
+  return !(((t2 >= T(0) && t3 >= T(0)) && !(t1 >= T(0))));
 }
 
 /// the field, where
@@ -2522,7 +2571,14 @@ bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t1 = D - T(2) * a * a;
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1];
+    G_ap = M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1];
+    G_ab = in.w[2] * M_flat[8] + M_flat[7] * in.w[1] + in.w[3] * M_flat[9] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(D);
     const T t5 = T(1) / t4;
@@ -2548,7 +2604,7 @@ bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = g_factor * (G_ap * ap2 - G_ab * ab2);
-  return !((t1 >= T(0)) || (t2 >= T(0) && t3 >= T(0)));
+  return !(((t2 >= T(0) && t3 >= T(0)) && !(t1 >= T(0))));
 }
 
 /// the field, where
@@ -2795,7 +2851,14 @@ bool segment_cauchy_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r0;
@@ -2813,7 +2876,7 @@ bool segment_cauchy_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = -g_factor * (G_ab * ab2 - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -3081,7 +3144,14 @@ bool segment_cauchy_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
+    G_ap = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
+    G_ab = in.w[1] * M_flat[5] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r1;
     const T t4 = T(1) / r0;
@@ -3101,7 +3171,7 @@ bool segment_cauchy_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(G_ab * ab0 - G_ap * ap0) * g_factor;
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = -g_factor * (G_ab * ab2 - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -3429,7 +3499,14 @@ bool segment_cauchy_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t8 = D - T(2) * a * a;
   const T t9 = -a_minus_b * b;
   const T t10 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t8 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
+    G_ap = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
+    G_ab = M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = T(1) / D;
     const T t12 = T(1) / r1;
@@ -3453,7 +3530,7 @@ bool segment_cauchy_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t8 >= T(0)) || (t9 >= T(0) && t10 >= T(0)));
+  return !(((t9 >= T(0) && t10 >= T(0)) && !(t8 >= T(0))));
 }
 
 /// the field, where
@@ -3824,7 +3901,14 @@ bool segment_cauchy_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t8 = D - T(2) * a * a;
   const T t9 = -a_minus_b * b;
   const T t10 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t8 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
+    G_ap = M_flat[8] * in.w[3] + in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
+    G_ab = M_flat[9] * in.w[3] + M_flat[6] * in.w[0] + M_flat[7] * in.w[1] + M_flat[8] * in.w[2];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = T(1) / a;
     const T t12 = T(1) / r1;
@@ -3850,7 +3934,7 @@ bool segment_cauchy_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = -g_factor * (ab1 * G_ab - ap1 * G_ap);
   grad[2] = -g_factor * (G_ab * ab2 - G_ap * ap2);
-  return !((t8 >= T(0)) || (t9 >= T(0) && t10 >= T(0)));
+  return !(((t9 >= T(0) && t10 >= T(0)) && !(t8 >= T(0))));
 }
 
 /// the field, where
@@ -4107,7 +4191,14 @@ bool segment_cauchy_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -4128,7 +4219,7 @@ bool segment_cauchy_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(G_ab * ab0 - G_ap * ap0) * g_factor;
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -4393,7 +4484,14 @@ bool segment_cauchy_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -4416,7 +4514,7 @@ bool segment_cauchy_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = -(G_ab * ab2 - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -4694,7 +4792,14 @@ bool segment_cauchy_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
+    G_ap = in.w[2] * M_flat[6] + in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
+    G_ab = M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + in.w[2] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -4719,7 +4824,7 @@ bool segment_cauchy_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -5016,7 +5121,14 @@ bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t1 = D - T(2) * a * a;
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + in.w[2] * M_flat[2];
+    G_ap = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[8] * in.w[3];
+    G_ab = M_flat[6] * in.w[0] + in.w[1] * M_flat[7] + M_flat[9] * in.w[3] + in.w[2] * M_flat[8];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(D);
     const T t5 = T(1) / t4;
@@ -5042,7 +5154,7 @@ bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = (ap1 * G_ap - ab1 * G_ab) * g_factor;
   grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
-  return !((t1 >= T(0)) || (t2 >= T(0) && t3 >= T(0)));
+  return !(((t2 >= T(0) && t3 >= T(0)) && !(t1 >= T(0))));
 }
 
 /// the field, where
@@ -5296,7 +5408,14 @@ bool segment_cauchy_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r1;
     const T t4 = t3 * t3;
@@ -5316,7 +5435,7 @@ bool segment_cauchy_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = g_factor * (ap1 * G_ap - ab1 * G_ab);
   grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -5578,7 +5697,14 @@ bool segment_cauchy_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r0;
@@ -5600,7 +5726,7 @@ bool segment_cauchy_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = g_factor * (G_ap * ap2 - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -5869,7 +5995,14 @@ bool segment_cauchy_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1];
+    G_ap = in.w[2] * M_flat[6] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
+    G_ab = in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / a;
     const T t4 = T(1) / D;
@@ -5894,7 +6027,7 @@ bool segment_cauchy_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = -(G_ab * ab2 - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -6182,7 +6315,14 @@ bool segment_cauchy_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[3] * M_flat[3] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6];
+    G_ab = in.w[1] * M_flat[7] + in.w[3] * M_flat[9] + in.w[2] * M_flat[8] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r1;
@@ -6209,7 +6349,7 @@ bool segment_cauchy_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (ab0 * G_ab - ap0 * G_ap);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -6474,7 +6614,14 @@ bool segment_cauchy_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -6497,7 +6644,7 @@ bool segment_cauchy_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -6768,7 +6915,14 @@ bool segment_cauchy_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -b * a_minus_b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
+    G_ap = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
+    G_ab = in.w[0] * M_flat[4] + in.w[1] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -6793,7 +6947,7 @@ bool segment_cauchy_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = -(G_ab * ab2 - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -7071,7 +7225,14 @@ bool segment_cauchy_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
+    G_ap = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
+    G_ab = M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + M_flat[5] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -7099,7 +7260,7 @@ bool segment_cauchy_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -7383,7 +7544,14 @@ bool segment_cauchy_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3];
+    G_ap = M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3];
+    G_ab = in.w[1] * M_flat[7] + M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + in.w[2] * M_flat[8];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -7413,7 +7581,7 @@ bool segment_cauchy_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -7675,7 +7843,14 @@ bool segment_cauchy_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r1;
@@ -7697,7 +7872,7 @@ bool segment_cauchy_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(G_ab * ab0 - G_ap * ap0) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = (G_ap * ap2 - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -7965,7 +8140,14 @@ bool segment_cauchy_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / a;
     const T t4 = T(1) / r0;
@@ -7989,7 +8171,7 @@ bool segment_cauchy_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = -g_factor * (G_ab * ab2 - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -8264,7 +8446,14 @@ bool segment_cauchy_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -b * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + M_flat[2] * in.w[2];
+    G_ap = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
+    G_ab = in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -8291,7 +8480,7 @@ bool segment_cauchy_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = (G_ap * ap2 - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -8572,7 +8761,14 @@ bool segment_cauchy_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + M_flat[3] * in.w[3];
+    G_ap = M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1];
+    G_ab = M_flat[9] * in.w[3] + M_flat[7] * in.w[1] + M_flat[6] * in.w[0] + M_flat[8] * in.w[2];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / a;
     const T t4 = T(1) / D;
@@ -8601,7 +8797,7 @@ bool segment_cauchy_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(G_ab * ab0 - G_ap * ap0) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = g_factor * (G_ap * ap2 - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -8872,7 +9068,14 @@ bool segment_cauchy_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -8897,7 +9100,7 @@ bool segment_cauchy_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -9174,7 +9377,14 @@ bool segment_cauchy_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
+    G_ap = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
+    G_ab = M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -9201,7 +9411,7 @@ bool segment_cauchy_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = g_factor * (ap1 * G_ap - ab1 * G_ab);
   grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -9485,7 +9695,14 @@ bool segment_cauchy_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + M_flat[5] * in.w[1];
+    G_ab = M_flat[6] * in.w[1] + in.w[2] * M_flat[7] + M_flat[5] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -9515,7 +9732,7 @@ bool segment_cauchy_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -9805,7 +10022,14 @@ bool segment_cauchy_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[2] * M_flat[2];
+    G_ap = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[8] * in.w[3];
+    G_ab = in.w[1] * M_flat[7] + M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + in.w[2] * M_flat[8];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -9837,7 +10061,7 @@ bool segment_cauchy_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = (ap1 * G_ap - ab1 * G_ab) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -10105,7 +10329,14 @@ bool segment_cauchy_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r1;
@@ -10129,7 +10360,7 @@ bool segment_cauchy_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -10403,7 +10634,14 @@ bool segment_cauchy_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
+    G_ab = in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -10429,7 +10667,7 @@ bool segment_cauchy_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -10710,7 +10948,14 @@ bool segment_cauchy_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
+    G_ap = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
+    G_ab = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r0;
@@ -10739,7 +10984,7 @@ bool segment_cauchy_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = (G_ap * ap2 - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -11026,7 +11271,14 @@ bool segment_cauchy_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + M_flat[3] * in.w[3];
+    G_ap = M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + M_flat[6] * in.w[1] + in.w[3] * M_flat[8];
+    G_ab = M_flat[8] * in.w[2] + M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + M_flat[7] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r0;
@@ -11057,7 +11309,7 @@ bool segment_cauchy_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -11334,7 +11586,14 @@ bool segment_cauchy_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -11361,7 +11620,7 @@ bool segment_cauchy_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -11644,7 +11903,14 @@ bool segment_cauchy_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
+    G_ap = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
+    G_ab = M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -11673,7 +11939,7 @@ bool segment_cauchy_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = g_factor * (ap1 * G_ap - ab1 * G_ab);
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -11963,7 +12229,14 @@ bool segment_cauchy_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + M_flat[5] * in.w[1];
+    G_ab = in.w[2] * M_flat[7] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -11995,7 +12268,7 @@ bool segment_cauchy_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -12291,7 +12564,14 @@ bool segment_cauchy_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[3] * M_flat[3] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
+    G_ap = M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + in.w[2] * M_flat[7];
+    G_ab = in.w[1] * M_flat[7] + in.w[3] * M_flat[9] + in.w[2] * M_flat[8] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -12325,7 +12605,7 @@ bool segment_cauchy_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = g_factor * (G_ap * ap2 - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -12599,7 +12879,14 @@ bool segment_cauchy_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(11, 13, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r1;
@@ -12625,7 +12912,7 @@ bool segment_cauchy_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = -(G_ab * ab1 - G_ap * ap1) * g_factor;
   grad[2] = -g_factor * (G_ab * ab2 - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -12905,7 +13192,14 @@ bool segment_cauchy_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(11, 13, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
+    G_ab = M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r1;
     const T t4 = t3 * t3;
@@ -12933,7 +13227,7 @@ bool segment_cauchy_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -13220,7 +13514,14 @@ bool segment_cauchy_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(11, 13, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1];
+    G_ap = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
+    G_ab = in.w[0] * M_flat[5] + in.w[2] * M_flat[7] + M_flat[6] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r0;
@@ -13251,7 +13552,7 @@ bool segment_cauchy_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -13544,7 +13845,14 @@ bool segment_cauchy_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(11, 13, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + M_flat[3] * in.w[3];
+    G_ap = in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + in.w[2] * M_flat[7];
+    G_ab = M_flat[6] * in.w[0] + M_flat[8] * in.w[2] + M_flat[9] * in.w[3] + in.w[1] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / a;
     const T t4 = T(1) / r1;
@@ -13577,7 +13885,7 @@ bool segment_cauchy_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
   grad[1] = -g_factor * (G_ab * ab1 - G_ap * ap1);
   grad[2] = -g_factor * (G_ab * ab2 - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -13860,7 +14168,14 @@ bool segment_cauchy_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(12, 14, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -13889,7 +14204,7 @@ bool segment_cauchy_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = -(G_ab * ab2 - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -14178,7 +14493,14 @@ bool segment_cauchy_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(12, 14, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -14209,7 +14531,7 @@ bool segment_cauchy_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = -g_factor * (G_ab * ab2 - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -14505,7 +14827,14 @@ bool segment_cauchy_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(12, 14, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = M_flat[4] * in.w[0] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
+    G_ab = in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -14539,7 +14868,7 @@ bool segment_cauchy_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = -(G_ab * ab1 - G_ap * ap1) * g_factor;
   grad[2] = -(G_ab * ab2 - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -14841,7 +15170,14 @@ bool segment_cauchy_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(12, 14, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + in.w[2] * M_flat[2];
+    G_ap = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6] + in.w[3] * M_flat[8];
+    G_ab = in.w[3] * M_flat[9] + M_flat[7] * in.w[1] + in.w[2] * M_flat[8] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -14877,7 +15213,7 @@ bool segment_cauchy_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = -(G_ab * ab2 - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -15157,7 +15493,14 @@ bool segment_cauchy_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(13, 15, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r0;
@@ -15185,7 +15528,7 @@ bool segment_cauchy_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - G_ap * ap0) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = -(G_ab * ab2 - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -15471,7 +15814,14 @@ bool segment_cauchy_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(13, 15, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
+    G_ab = M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r0;
@@ -15501,7 +15851,7 @@ bool segment_cauchy_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -15794,7 +16144,14 @@ bool segment_cauchy_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(13, 15, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1];
+    G_ap = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+    G_ab = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -15827,7 +16184,7 @@ bool segment_cauchy_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -16126,7 +16483,14 @@ bool segment_cauchy_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(13, 15, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3];
+    G_ap = in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + in.w[2] * M_flat[7];
+    G_ab = in.w[0] * M_flat[6] + M_flat[9] * in.w[3] + M_flat[8] * in.w[2] + in.w[1] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / a;
     const T t4 = T(1) / r0;
@@ -16161,7 +16525,7 @@ bool segment_cauchy_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -16450,7 +16814,14 @@ bool segment_cauchy_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(14, 16, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -16481,7 +16852,7 @@ bool segment_cauchy_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -16776,7 +17147,14 @@ bool segment_cauchy_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -b * a_minus_b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(14, 16, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
+    G_ap = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
+    G_ab = in.w[0] * M_flat[4] + in.w[1] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -16809,7 +17187,7 @@ bool segment_cauchy_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -17111,7 +17489,14 @@ bool segment_cauchy_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(14, 16, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
+    G_ap = in.w[1] * M_flat[5] + M_flat[4] * in.w[0] + in.w[2] * M_flat[6];
+    G_ab = in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -17147,7 +17532,7 @@ bool segment_cauchy_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = -g_factor * (G_ab * ab1 - G_ap * ap1);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -17455,7 +17840,14 @@ bool segment_cauchy_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(14, 16, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[3] * in.w[3] + in.w[0] * M_flat[0];
+    G_ap = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5];
+    G_ab = in.w[1] * M_flat[7] + M_flat[9] * in.w[3] + in.w[2] * M_flat[8] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -17493,7 +17885,7 @@ bool segment_cauchy_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -17779,7 +18171,14 @@ bool segment_cauchy_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -b * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(15, 17, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r1;
     const T t4 = t3 * t3;
@@ -17809,7 +18208,7 @@ bool segment_cauchy_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -18101,7 +18500,14 @@ bool segment_cauchy_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(15, 17, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
+    G_ab = M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r0;
@@ -18133,7 +18539,7 @@ bool segment_cauchy_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -18432,7 +18838,14 @@ bool segment_cauchy_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(15, 17, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + in.w[2] * M_flat[2];
+    G_ap = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + M_flat[4] * in.w[0];
+    G_ab = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / D;
     const T t4 = T(1) / r1;
@@ -18467,7 +18880,7 @@ bool segment_cauchy_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = g_factor * (G_ap * ap2 - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -18772,7 +19185,14 @@ bool segment_cauchy_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(15, 17, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
+    G_ap = M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1];
+    G_ab = M_flat[7] * in.w[1] + M_flat[8] * in.w[2] + M_flat[9] * in.w[3] + M_flat[6] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / a;
     const T t4 = T(1) / D;
@@ -18809,7 +19229,7 @@ bool segment_cauchy_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - G_ap * ap1) * g_factor;
   grad[2] = (G_ap * ap2 - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -19104,7 +19524,14 @@ bool segment_cauchy_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -b * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(16, 18, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -19137,7 +19564,7 @@ bool segment_cauchy_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = g_factor * (G_ap * ap2 - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -19438,7 +19865,14 @@ bool segment_cauchy_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(16, 18, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
+    G_ap = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
+    G_ab = M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -19473,7 +19907,7 @@ bool segment_cauchy_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = -g_factor * (ab1 * G_ab - ap1 * G_ap);
   grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -19781,7 +20215,14 @@ bool segment_cauchy_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(16, 18, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
+    G_ap = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
+    G_ab = in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -19819,7 +20260,7 @@ bool segment_cauchy_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = g_factor * (G_ap * ap2 - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -20133,7 +20574,14 @@ bool segment_cauchy_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = D - T(2) * a * a;
   const T t1 = -a_minus_b * b;
   const T t2 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(16, 18, 4, a, b, c, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3];
+    G_ap = M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3];
+    G_ab = in.w[1] * M_flat[7] + M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + in.w[2] * M_flat[8];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(D);
     const T t4 = T(1) / t3;
@@ -20173,7 +20621,7 @@ bool segment_cauchy_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 }  // namespace skelconv::generated

@@ -880,7 +880,14 @@ bool segment_compact_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t4 = -t3 * t3 * a * a - D;
   const T t5 = slope0 * slope1;
   const T t6 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(-3, -1, 1, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = D * J1 + r1 * slope1 - slope0 * r0;
     F = (T(1) / T(8)) * (T(3) * D * t2 * t7 + T(2) * r1 * slope1 * q1 - T(2) * slope0 * q0 * r0) * in.w[0] * t2;
@@ -892,7 +899,7 @@ bool segment_compact_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -1167,7 +1174,14 @@ bool segment_compact_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t2 = -D - a * a * t1 * t1;
   const T t3 = slope0 * slope1;
   const T t4 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t2 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(-3, -1, 2, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
+    G_ap = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
+    G_ab = M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t5 = slope0 * r0 - slope1 * r1 - D * J1;
     const T t6 = T(3) * D * t0 * t5 + T(2) * slope0 * q0 * r0 - T(2) * slope1 * q1 * r1;
@@ -1183,7 +1197,7 @@ bool segment_compact_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t2 >= T(0)) || (t3 >= T(0) && t4 >= T(0)));
+  return !(((t3 >= T(0) && t4 >= T(0)) && !(t2 >= T(0))));
 }
 
 /// the field, where
@@ -1469,7 +1483,14 @@ bool segment_compact_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t2 = -a * a * t1 * t1 - D;
   const T t3 = slope0 * slope1;
   const T t4 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t2 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(-3, -1, 3, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
+    G_ap = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + M_flat[4] * in.w[0];
+    G_ab = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t5 = D * J1 + r1 * slope1 - slope0 * r0;
     const T t6 = T(2) * slope0 * q0 * r0 - T(3) * t5 * D * t0 - T(2) * r1 * slope1 * q1;
@@ -1487,7 +1508,7 @@ bool segment_compact_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t2 >= T(0)) || (t3 >= T(0) && t4 >= T(0)));
+  return !(((t3 >= T(0) && t4 >= T(0)) && !(t2 >= T(0))));
 }
 
 /// the field, where
@@ -1798,7 +1819,14 @@ bool segment_compact_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t4 = -t3 * t3 * a * a - D;
   const T t5 = slope0 * slope1;
   const T t6 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(-3, -1, 4, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
+    G_ap = in.w[3] * M_flat[8] + M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6];
+    G_ab = in.w[0] * M_flat[6] + M_flat[9] * in.w[3] + M_flat[7] * in.w[1] + M_flat[8] * in.w[2];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = D * J1 + r1 * slope1 - slope0 * r0;
     const T t8 = T(2) * slope0 * q0 * r0 - T(2) * r1 * slope1 * q1 - T(3) * t7 * D * t2;
@@ -1821,7 +1849,7 @@ bool segment_compact_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -2706,7 +2734,14 @@ bool segment_compact_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t3 = -a * a * t2 * t2 - D;
   const T t4 = slope1 * slope0;
   const T t5 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t3 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(-5, -3, 1, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t6 = q0 * q0;
     const T t7 = q1 * q1;
@@ -2720,7 +2755,7 @@ bool segment_compact_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = -g_factor * (G_ab * ab2 - G_ap * ap2);
-  return !((t3 >= T(0)) || (t4 >= T(0) && t5 >= T(0)));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -3010,7 +3045,14 @@ bool segment_compact_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t4 = -D - a * a * t3 * t3;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(-5, -3, 2, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
+    G_ab = M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = T(2) * q0 * r0 * slope0 - T(3) * D * t2 * (D * J1 + r1 * slope1 - r0 * slope0) - T(2) * q1 * r1 * slope1;
     const T t8 = q0 * q0;
@@ -3028,7 +3070,7 @@ bool segment_compact_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -3329,7 +3371,14 @@ bool segment_compact_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t2 = -D - t1 * t1 * a * a;
   const T t3 = slope0 * slope1;
   const T t4 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t2 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(-5, -3, 3, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
+    G_ap = M_flat[4] * in.w[0] + M_flat[5] * in.w[1] + M_flat[6] * in.w[2];
+    G_ab = in.w[1] * M_flat[6] + in.w[0] * M_flat[5] + M_flat[7] * in.w[2];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t5 = q1 * q1;
     const T t6 = t5 * q1;
@@ -3349,7 +3398,7 @@ bool segment_compact_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t2 >= T(0)) || (t3 >= T(0) && t4 >= T(0)));
+  return !(((t3 >= T(0) && t4 >= T(0)) && !(t2 >= T(0))));
 }
 
 /// the field, where
@@ -3670,7 +3719,14 @@ bool segment_compact_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t2 = -D - a * a * t1 * t1;
   const T t3 = slope0 * slope1;
   const T t4 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t2 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(-5, -3, 4, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[3] * M_flat[3];
+    G_ap = in.w[3] * M_flat[8] + in.w[1] * M_flat[6] + in.w[0] * M_flat[5] + M_flat[7] * in.w[2];
+    G_ab = in.w[3] * M_flat[9] + M_flat[7] * in.w[1] + M_flat[8] * in.w[2] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t5 = q1 * q1;
     const T t6 = T(3) * D * t0 * (D * J1 + r1 * slope1 - slope0 * r0) + T(2) * r1 * slope1 * q1 - T(2) * slope0 * q0 * r0;
@@ -3695,7 +3751,7 @@ bool segment_compact_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t2 >= T(0)) || (t3 >= T(0) && t4 >= T(0)));
+  return !(((t3 >= T(0) && t4 >= T(0)) && !(t2 >= T(0))));
 }
 
 /// the field, where
@@ -4592,7 +4648,14 @@ bool segment_compact_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t3 = -a * a * t2 * t2 - D;
   const T t4 = slope1 * slope0;
   const T t5 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t3 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(-7, -5, 1, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t6 = q0 * q0;
     const T t7 = t6 * q0;
@@ -4608,7 +4671,7 @@ bool segment_compact_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t3 >= T(0)) || (t4 >= T(0) && t5 >= T(0)));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -4908,7 +4971,14 @@ bool segment_compact_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t4 = -D - t3 * t3 * a * a;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(-7, -5, 2, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
+    G_ab = M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = T(5) * D * t2 * (T(2) * q1 * r1 * slope1 - T(2) * r0 * slope0 * q0 - T(3) * D * t2 * (r0 * slope0 - D * J1 - r1 * slope1)) + T(8) * q1 * q1 * r1 * slope1 - T(8) * r0 * slope0 * q0 * q0;
     const T t8 = q1 * q1;
@@ -4928,7 +4998,7 @@ bool segment_compact_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -5240,7 +5310,14 @@ bool segment_compact_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t4 = -a * a * t3 * t3 - D;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(-7, -5, 3, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
+    G_ap = M_flat[4] * in.w[0] + in.w[1] * M_flat[5] + M_flat[6] * in.w[2];
+    G_ab = in.w[2] * M_flat[7] + in.w[1] * M_flat[6] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q1 * q1;
     const T t8 = t7 * t7;
@@ -5262,7 +5339,7 @@ bool segment_compact_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (ap0 * G_ap - ab0 * G_ab) * g_factor;
   grad[1] = (ap1 * G_ap - ab1 * G_ab) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -5598,7 +5675,14 @@ bool segment_compact_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t3 = -D - t2 * t2 * a * a;
   const T t4 = slope1 * slope0;
   const T t5 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t3 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(-7, -5, 4, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3];
+    G_ap = M_flat[6] * in.w[1] + in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3];
+    G_ab = M_flat[8] * in.w[2] + M_flat[6] * in.w[0] + in.w[3] * M_flat[9] + M_flat[7] * in.w[1];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t6 = q1 * q1;
     const T t7 = t6 * t6;
@@ -5625,7 +5709,7 @@ bool segment_compact_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
   grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
   grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
-  return !((t3 >= T(0)) || (t4 >= T(0) && t5 >= T(0)));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -6526,7 +6610,14 @@ bool segment_compact_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t4 = -D - t3 * t3 * a * a;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(-9, -7, 1, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q1 * q1;
     const T t8 = t7 * t7;
@@ -6544,7 +6635,7 @@ bool segment_compact_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -6854,7 +6945,14 @@ bool segment_compact_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t2 = -D - t1 * t1 * a * a;
   const T t3 = slope0 * slope1;
   const T t4 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t2 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(-9, -7, 2, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = in.w[1] * M_flat[5] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t5 = q1 * q1;
     const T t6 = t5 * t5;
@@ -6876,7 +6974,7 @@ bool segment_compact_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t2 >= T(0)) || (t3 >= T(0) && t4 >= T(0)));
+  return !(((t3 >= T(0) && t4 >= T(0)) && !(t2 >= T(0))));
 }
 
 /// the field, where
@@ -7203,7 +7301,14 @@ bool segment_compact_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t4 = -t3 * t3 * a * a - D;
   const T t5 = slope0 * slope1;
   const T t6 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(-9, -7, 3, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
+    G_ap = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + M_flat[4] * in.w[0];
+    G_ab = in.w[0] * M_flat[5] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q1 * q1;
     const T t8 = t7 * t7;
@@ -7227,7 +7332,7 @@ bool segment_compact_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -7575,7 +7680,14 @@ bool segment_compact_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t4 = -D - a * a * t3 * t3;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(-9, -7, 4, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = M_flat[6] * in.w[1] + in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3];
+    G_ab = M_flat[8] * in.w[2] + in.w[3] * M_flat[9] + M_flat[6] * in.w[0] + M_flat[7] * in.w[1];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q1 * q1;
     const T t8 = t7 * t7;
@@ -7604,7 +7716,7 @@ bool segment_compact_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = -(G_ab * ab2 - ap2 * G_ap) * g_factor;
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -8517,7 +8629,14 @@ bool segment_compact_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t2 = -a * a * t1 * t1 - D;
   const T t3 = slope0 * slope1;
   const T t4 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t2 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(-11, -9, 1, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t5 = q0 * q0;
     const T t6 = t5 * t5;
@@ -8537,7 +8656,7 @@ bool segment_compact_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t2 >= T(0)) || (t3 >= T(0) && t4 >= T(0)));
+  return !(((t3 >= T(0) && t4 >= T(0)) && !(t2 >= T(0))));
 }
 
 /// the field, where
@@ -8855,7 +8974,14 @@ bool segment_compact_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t2 = -a * a * t1 * t1 - D;
   const T t3 = slope0 * slope1;
   const T t4 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t2 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(-11, -9, 2, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
+    G_ab = M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t5 = q1 * q1;
     const T t6 = t5 * t5;
@@ -8879,7 +9005,7 @@ bool segment_compact_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t2 >= T(0)) || (t3 >= T(0) && t4 >= T(0)));
+  return !(((t3 >= T(0) && t4 >= T(0)) && !(t2 >= T(0))));
 }
 
 /// the field, where
@@ -9212,7 +9338,14 @@ bool segment_compact_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t3 = -D - a * a * t2 * t2;
   const T t4 = slope1 * slope0;
   const T t5 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t3 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(-11, -9, 3, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
+    G_ap = M_flat[4] * in.w[0] + M_flat[5] * in.w[1] + M_flat[6] * in.w[2];
+    G_ab = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t6 = q1 * q1;
     const T t7 = t6 * q1;
@@ -9238,7 +9371,7 @@ bool segment_compact_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = -g_factor * (G_ab * ab1 - G_ap * ap1);
   grad[2] = -g_factor * (G_ab * ab2 - G_ap * ap2);
-  return !((t3 >= T(0)) || (t4 >= T(0) && t5 >= T(0)));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -9595,7 +9728,14 @@ bool segment_compact_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t2 = -t1 * t1 * a * a - D;
   const T t3 = slope0 * slope1;
   const T t4 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t2 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(-11, -9, 4, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[3] * M_flat[3];
+    G_ap = M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6];
+    G_ab = M_flat[7] * in.w[1] + in.w[3] * M_flat[9] + M_flat[8] * in.w[2] + M_flat[6] * in.w[0];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t5 = q1 * q1;
     const T t6 = t5 * t5;
@@ -9626,7 +9766,7 @@ bool segment_compact_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t2 >= T(0)) || (t3 >= T(0) && t4 >= T(0)));
+  return !(((t3 >= T(0) && t4 >= T(0)) && !(t2 >= T(0))));
 }
 
 /// the field, where
@@ -10547,7 +10687,14 @@ bool segment_compact_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t4 = -D - a * a * t3 * t3;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(-13, -11, 1, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q0 * q0;
     const T t8 = t7 * q0;
@@ -10569,7 +10716,7 @@ bool segment_compact_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = -(G_ab * ab2 - G_ap * ap2) * g_factor;
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -10901,7 +11048,14 @@ bool segment_compact_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t4 = -t3 * t3 * a * a - D;
   const T t5 = slope0 * slope1;
   const T t6 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(-13, -11, 2, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = in.w[0] * M_flat[4] + in.w[1] * M_flat[5];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q0 * q0;
     const T t8 = t7 * q0;
@@ -10927,7 +11081,7 @@ bool segment_compact_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -11269,7 +11423,14 @@ bool segment_compact_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t3 = -t2 * t2 * a * a - D;
   const T t4 = slope1 * slope0;
   const T t5 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t3 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(-13, -11, 3, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
+    G_ap = M_flat[6] * in.w[2] + M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+    G_ab = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t6 = q1 * q1;
     const T t7 = t6 * q1;
@@ -11297,7 +11458,7 @@ bool segment_compact_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t3 >= T(0)) || (t4 >= T(0) && t5 >= T(0)));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -11664,7 +11825,14 @@ bool segment_compact_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t3 = -D - t2 * t2 * a * a;
   const T t4 = slope1 * slope0;
   const T t5 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t3 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(-13, -11, 4, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
+    G_ap = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6] + M_flat[8] * in.w[3];
+    G_ab = M_flat[6] * in.w[0] + M_flat[7] * in.w[1] + M_flat[9] * in.w[3] + M_flat[8] * in.w[2];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t6 = q0 * q0;
     const T t7 = t6 * t6;
@@ -11697,7 +11865,7 @@ bool segment_compact_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t3 >= T(0)) || (t4 >= T(0) && t5 >= T(0)));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -12631,7 +12799,14 @@ bool segment_compact_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t4 = -D - a * a * t3 * t3;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(-15, -13, 1, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q1 * q1;
     const T t8 = t7 * q1;
@@ -12655,7 +12830,7 @@ bool segment_compact_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -12991,7 +13166,14 @@ bool segment_compact_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t4 = -D - a * a * t3 * t3;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(-15, -13, 2, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q1 * q1;
     const T t8 = t7 * q1;
@@ -13019,7 +13201,7 @@ bool segment_compact_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -13367,7 +13549,14 @@ bool segment_compact_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t4 = -t3 * t3 * a * a - D;
   const T t5 = slope0 * slope1;
   const T t6 = a * max(T(q0), T(q1)) - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(-15, -13, 3, a, b, c, in.t0, in.t1, M_flat.data());
+    F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
+    G_ap = M_flat[6] * in.w[2] + M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+    G_ab = in.w[2] * M_flat[7] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q1 * q1;
     const T t8 = t7 * q1;
@@ -13397,7 +13586,7 @@ bool segment_compact_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where
@@ -13775,7 +13964,14 @@ bool segment_compact_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t4 = -t3 * t3 * a * a - D;
   const T t5 = slope0 * slope1;
   const T t6 = max(T(q0), T(q1)) * a - (T(17) / T(20)) * D;
-  {
+  if (t4 >= T(0)) {
+    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(-15, -13, 4, a, b, c, in.t0, in.t1, M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0];
+    G_ap = M_flat[7] * in.w[2] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5] + M_flat[6] * in.w[1];
+    G_ab = M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + M_flat[7] * in.w[1] + M_flat[8] * in.w[2];
+  } else {
     // recurrence (1) downwards from J_0, J_1
     const T t7 = q1 * q1;
     const T t8 = t7 * t7;
@@ -13810,7 +14006,7 @@ bool segment_compact_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -g_factor * (ab0 * G_ab - ap0 * G_ap);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
-  return !((t4 >= T(0)) || (t5 >= T(0) && t6 >= T(0)));
+  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
 }
 
 /// the field, where

@@ -274,7 +274,14 @@ bool segment_inverse_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(1, 3, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = J1 * in.w[0];
     F = t8;
@@ -291,7 +298,7 @@ bool segment_inverse_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
   grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t5 >= T(0)) || (t6 >= T(0) && t7 >= T(0)));
+  return !(((t6 >= T(0) && t7 >= T(0)) && !(t5 >= T(0))));
 }
 
 /// the field, where
@@ -575,7 +582,14 @@ bool segment_inverse_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t6 = -a_minus_b * ab_ap;
   const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(1, 3, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = T(1) / ab_ab;
     const T t9 = in.w[0] * J1 - in.w[1] * t8 * (r0 - J1 * ab_ap - r1);
@@ -593,7 +607,7 @@ bool segment_inverse_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t5 >= T(0)) || (t6 >= T(0) && t7 >= T(0)));
+  return !(((t6 >= T(0) && t7 >= T(0)) && !(t5 >= T(0))));
 }
 
 /// the field, where
@@ -886,7 +900,14 @@ bool segment_inverse_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(1, 3, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
+    G_ap = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
+    G_ab = in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = T(1) / ab_ab;
     const T t9 = ab_ap * J1 + r1 - r0;
@@ -906,7 +927,7 @@ bool segment_inverse_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_ab - ap0 * G_ap);
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t5 >= T(0)) || (t6 >= T(0) && t7 >= T(0)));
+  return !(((t6 >= T(0) && t7 >= T(0)) && !(t5 >= T(0))));
 }
 
 /// the field, where
@@ -1211,7 +1232,14 @@ bool segment_inverse_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(1, 3, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
+    G_ap = in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2];
+    G_ab = M_flat[7] * in.w[1] + M_flat[6] * in.w[0] + M_flat[8] * in.w[2] + M_flat[9] * in.w[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = ab_ap * J1 + r1 - r0;
     const T t9 = T(1) / ab_ab;
@@ -1236,7 +1264,7 @@ bool segment_inverse_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
-  return !((t5 >= T(0)) || (t6 >= T(0) && t7 >= T(0)));
+  return !(((t6 >= T(0) && t7 >= T(0)) && !(t5 >= T(0))));
 }
 
 /// the field, where
@@ -1469,7 +1497,14 @@ bool segment_inverse_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -1488,7 +1523,7 @@ bool segment_inverse_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -1730,7 +1765,14 @@ bool segment_inverse_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
+    G_ab = in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(cross_cross);
     const T t5 = T(1) / t4;
@@ -1751,7 +1793,7 @@ bool segment_inverse_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t1 >= T(0)) || (t2 >= T(0) && t3 >= T(0)));
+  return !(((t2 >= T(0) && t3 >= T(0)) && !(t1 >= T(0))));
 }
 
 /// the field, where
@@ -2009,7 +2051,14 @@ bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0];
+    G_ap = in.w[2] * M_flat[6] + M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+    G_ab = M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + in.w[2] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(cross_cross);
     const T t5 = T(1) / t4;
@@ -2030,7 +2079,7 @@ bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - G_ap * ap0) * g_factor;
   grad[1] = -(G_ab * ab1 - G_ap * ap1) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t1 >= T(0)) || (t2 >= T(0) && t3 >= T(0)));
+  return !(((t2 >= T(0) && t3 >= T(0)) && !(t1 >= T(0))));
 }
 
 /// the field, where
@@ -2302,7 +2351,14 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + in.w[0] * M_flat[0];
+    G_ap = in.w[1] * M_flat[6] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
+    G_ab = M_flat[9] * in.w[3] + in.w[0] * M_flat[6] + M_flat[8] * in.w[2] + M_flat[7] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(cross_cross);
     const T t5 = T(1) / t4;
@@ -2328,7 +2384,7 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t1 >= T(0)) || (t2 >= T(0) && t3 >= T(0)));
+  return !(((t2 >= T(0) && t3 >= T(0)) && !(t1 >= T(0))));
 }
 
 /// the field, where
@@ -2555,7 +2611,14 @@ bool segment_inverse_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = T(1) / r1;
@@ -2573,7 +2636,7 @@ bool segment_inverse_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -2821,7 +2884,14 @@ bool segment_inverse_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
+    G_ap = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
+    G_ab = M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r1;
     const T t4 = T(1) / r0;
@@ -2844,7 +2914,7 @@ bool segment_inverse_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -3144,7 +3214,14 @@ bool segment_inverse_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + M_flat[2] * in.w[2];
+    G_ap = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
+    G_ab = M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = T(1) / r1;
     const T t9 = T(1) / r0;
@@ -3168,7 +3245,7 @@ bool segment_inverse_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (ap0 * G_ap - ab0 * G_ab) * g_factor;
   grad[1] = -g_factor * (ab1 * G_ab - ap1 * G_ap);
   grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
-  return !((t5 >= T(0)) || (t6 >= T(0) && t7 >= T(0)));
+  return !(((t6 >= T(0) && t7 >= T(0)) && !(t5 >= T(0))));
 }
 
 /// the field, where
@@ -3510,7 +3587,14 @@ bool segment_inverse_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2];
+    G_ap = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6] + in.w[2] * M_flat[7];
+    G_ab = M_flat[6] * in.w[0] + in.w[1] * M_flat[7] + M_flat[8] * in.w[2] + M_flat[9] * in.w[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = T(1) / r0;
     const T t9 = T(1) / cross_cross;
@@ -3538,7 +3622,7 @@ bool segment_inverse_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t5 >= T(0)) || (t6 >= T(0) && t7 >= T(0)));
+  return !(((t6 >= T(0) && t7 >= T(0)) && !(t5 >= T(0))));
 }
 
 /// the field, where
@@ -3771,7 +3855,14 @@ bool segment_inverse_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -a_minus_b * ab_ap;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -3792,7 +3883,7 @@ bool segment_inverse_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -4033,7 +4124,14 @@ bool segment_inverse_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
+    G_ap = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
+    G_ab = M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -4056,7 +4154,7 @@ bool segment_inverse_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -4310,7 +4408,14 @@ bool segment_inverse_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
+    G_ap = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] + in.w[2] * M_flat[6];
+    G_ab = M_flat[6] * in.w[1] + in.w[2] * M_flat[7] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -4335,7 +4440,7 @@ bool segment_inverse_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -4608,7 +4713,14 @@ bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1];
+    G_ab = in.w[2] * M_flat[8] + in.w[3] * M_flat[9] + M_flat[7] * in.w[1] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(cross_cross);
     const T t5 = T(1) / t4;
@@ -4634,7 +4746,7 @@ bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t1 >= T(0)) || (t2 >= T(0) && t3 >= T(0)));
+  return !(((t2 >= T(0) && t3 >= T(0)) && !(t1 >= T(0))));
 }
 
 /// the field, where
@@ -4868,7 +4980,14 @@ bool segment_inverse_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r0;
@@ -4888,7 +5007,7 @@ bool segment_inverse_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = -g_factor * (G_ab * ab1 - G_ap * ap1);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -5130,7 +5249,14 @@ bool segment_inverse_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
+    G_ab = M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r1;
@@ -5152,7 +5278,7 @@ bool segment_inverse_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -5401,7 +5527,14 @@ bool segment_inverse_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2];
+    G_ap = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
+    G_ab = in.w[0] * M_flat[5] + in.w[2] * M_flat[7] + M_flat[6] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r1;
@@ -5426,7 +5559,7 @@ bool segment_inverse_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -5694,7 +5827,14 @@ bool segment_inverse_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
+    G_ap = in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[8] * in.w[3];
+    G_ab = M_flat[8] * in.w[2] + in.w[0] * M_flat[6] + M_flat[9] * in.w[3] + M_flat[7] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r1;
@@ -5721,7 +5861,7 @@ bool segment_inverse_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -5962,7 +6102,14 @@ bool segment_inverse_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = M_flat[3] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -5985,7 +6132,7 @@ bool segment_inverse_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -6232,7 +6379,14 @@ bool segment_inverse_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
+    G_ab = in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -6257,7 +6411,7 @@ bool segment_inverse_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -6511,7 +6665,14 @@ bool segment_inverse_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
+    G_ab = in.w[0] * M_flat[5] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -6539,7 +6700,7 @@ bool segment_inverse_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -6799,7 +6960,14 @@ bool segment_inverse_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + in.w[0] * M_flat[0];
+    G_ap = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6];
+    G_ab = in.w[1] * M_flat[7] + in.w[2] * M_flat[8] + in.w[0] * M_flat[6] + M_flat[9] * in.w[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -6829,7 +6997,7 @@ bool segment_inverse_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -7071,7 +7239,14 @@ bool segment_inverse_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r1;
@@ -7093,7 +7268,7 @@ bool segment_inverse_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -7341,7 +7516,14 @@ bool segment_inverse_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
+    G_ap = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
+    G_ab = M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -7365,7 +7547,7 @@ bool segment_inverse_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
   grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -7620,7 +7802,14 @@ bool segment_inverse_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
+    G_ab = M_flat[5] * in.w[0] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r0;
@@ -7647,7 +7836,7 @@ bool segment_inverse_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -7908,7 +8097,14 @@ bool segment_inverse_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3];
+    G_ap = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + in.w[3] * M_flat[8];
+    G_ab = M_flat[7] * in.w[1] + M_flat[9] * in.w[3] + M_flat[8] * in.w[2] + M_flat[6] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / ab_ab;
     const T t4 = T(1) / r0;
@@ -7937,7 +8133,7 @@ bool segment_inverse_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -8184,7 +8380,14 @@ bool segment_inverse_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -8209,7 +8412,7 @@ bool segment_inverse_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -8462,7 +8665,14 @@ bool segment_inverse_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -a_minus_b * ab_ap;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
+    G_ab = M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -8489,7 +8699,7 @@ bool segment_inverse_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -8749,7 +8959,14 @@ bool segment_inverse_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + in.w[2] * M_flat[2];
+    G_ap = in.w[2] * M_flat[6] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
+    G_ab = M_flat[6] * in.w[1] + in.w[0] * M_flat[5] + in.w[2] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -8779,7 +8996,7 @@ bool segment_inverse_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -9045,7 +9262,14 @@ bool segment_inverse_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0];
+    G_ap = in.w[0] * M_flat[5] + in.w[1] * M_flat[6] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2];
+    G_ab = M_flat[7] * in.w[1] + M_flat[9] * in.w[3] + M_flat[8] * in.w[2] + in.w[0] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -9077,7 +9301,7 @@ bool segment_inverse_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -9325,7 +9549,14 @@ bool segment_inverse_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r0;
@@ -9349,7 +9580,7 @@ bool segment_inverse_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = -(G_ab * ab1 - G_ap * ap1) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -9603,7 +9834,14 @@ bool segment_inverse_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
+    G_ab = M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -9629,7 +9867,7 @@ bool segment_inverse_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -9890,7 +10128,14 @@ bool segment_inverse_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
+    G_ap = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
+    G_ab = M_flat[5] * in.w[0] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r0;
@@ -9919,7 +10164,7 @@ bool segment_inverse_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = (ap0 * G_ap - ab0 * G_ab) * g_factor;
   grad[1] = (ap1 * G_ap - ab1 * G_ab) * g_factor;
   grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -10186,7 +10431,14 @@ bool segment_inverse_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1];
+    G_ap = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + in.w[0] * M_flat[5] + M_flat[6] * in.w[1];
+    G_ab = M_flat[9] * in.w[3] + M_flat[6] * in.w[0] + M_flat[7] * in.w[1] + M_flat[8] * in.w[2];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / ab_ab;
     const T t4 = T(1) / r0;
@@ -10217,7 +10469,7 @@ bool segment_inverse_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -10470,7 +10722,14 @@ bool segment_inverse_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -10497,7 +10756,7 @@ bool segment_inverse_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -10756,7 +11015,14 @@ bool segment_inverse_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -a_minus_b * ab_ap;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
+    G_ap = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
+    G_ab = M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -10785,7 +11051,7 @@ bool segment_inverse_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -11051,7 +11317,14 @@ bool segment_inverse_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -a_minus_b * ab_ap;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0];
+    G_ap = in.w[2] * M_flat[6] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
+    G_ab = in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -11083,7 +11356,7 @@ bool segment_inverse_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -11355,7 +11628,14 @@ bool segment_inverse_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
+    G_ap = M_flat[7] * in.w[2] + in.w[3] * M_flat[8] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1];
+    G_ab = in.w[2] * M_flat[8] + M_flat[6] * in.w[0] + in.w[1] * M_flat[7] + in.w[3] * M_flat[9];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -11389,7 +11669,7 @@ bool segment_inverse_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -11643,7 +11923,14 @@ bool segment_inverse_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(11, 13, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = T(1) / r1;
@@ -11669,7 +11956,7 @@ bool segment_inverse_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -11929,7 +12216,14 @@ bool segment_inverse_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(11, 13, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
+    G_ap = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
+    G_ab = M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r1;
@@ -11957,7 +12251,7 @@ bool segment_inverse_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -12224,7 +12518,14 @@ bool segment_inverse_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(11, 13, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
+    G_ap = M_flat[6] * in.w[2] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
+    G_ab = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -12255,7 +12556,7 @@ bool segment_inverse_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -12528,7 +12829,14 @@ bool segment_inverse_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(11, 13, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + M_flat[1] * in.w[1];
+    G_ap = M_flat[6] * in.w[1] + in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3];
+    G_ab = in.w[2] * M_flat[8] + in.w[0] * M_flat[6] + in.w[1] * M_flat[7] + in.w[3] * M_flat[9];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -12561,7 +12869,7 @@ bool segment_inverse_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
   grad[1] = g_factor * (ap1 * G_ap - ab1 * G_ab);
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -12820,7 +13128,14 @@ bool segment_inverse_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(12, 14, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -12849,7 +13164,7 @@ bool segment_inverse_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -13114,7 +13429,14 @@ bool segment_inverse_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(12, 14, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
+    G_ab = M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -13145,7 +13467,7 @@ bool segment_inverse_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -13417,7 +13739,14 @@ bool segment_inverse_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(12, 14, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1];
+    G_ap = in.w[2] * M_flat[6] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
+    G_ab = M_flat[6] * in.w[1] + in.w[0] * M_flat[5] + in.w[2] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -13451,7 +13780,7 @@ bool segment_inverse_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -13729,7 +14058,14 @@ bool segment_inverse_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(12, 14, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[3] * M_flat[3] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = M_flat[6] * in.w[1] + in.w[3] * M_flat[8] + M_flat[7] * in.w[2] + in.w[0] * M_flat[5];
+    G_ab = in.w[2] * M_flat[8] + in.w[0] * M_flat[6] + M_flat[9] * in.w[3] + in.w[1] * M_flat[7];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -13765,7 +14101,7 @@ bool segment_inverse_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -14025,7 +14361,14 @@ bool segment_inverse_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -a_minus_b * ab_ap;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(13, 15, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -14053,7 +14396,7 @@ bool segment_inverse_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -14319,7 +14662,14 @@ bool segment_inverse_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(13, 15, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
+    G_ap = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
+    G_ab = in.w[1] * M_flat[5] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / ab_ab;
     const T t4 = T(1) / cross_cross;
@@ -14349,7 +14699,7 @@ bool segment_inverse_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
   grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -14622,7 +14972,14 @@ bool segment_inverse_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(13, 15, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
+    G_ap = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
+    G_ab = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + M_flat[5] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r0;
     const T t4 = t3 * t3;
@@ -14655,7 +15012,7 @@ bool segment_inverse_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
   grad[1] = (ap1 * G_ap - ab1 * G_ab) * g_factor;
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -14934,7 +15291,14 @@ bool segment_inverse_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(13, 15, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3];
+    G_ap = M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + in.w[1] * M_flat[6] + in.w[2] * M_flat[7];
+    G_ab = M_flat[9] * in.w[3] + M_flat[8] * in.w[2] + in.w[1] * M_flat[7] + M_flat[6] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r0;
@@ -14969,7 +15333,7 @@ bool segment_inverse_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -15234,7 +15598,14 @@ bool segment_inverse_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(14, 16, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -15265,7 +15636,7 @@ bool segment_inverse_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -15536,7 +15907,14 @@ bool segment_inverse_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(14, 16, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
+    G_ab = in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -15569,7 +15947,7 @@ bool segment_inverse_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(G_ab * ab0 - G_ap * ap0) * g_factor;
   grad[1] = -g_factor * (G_ab * ab1 - G_ap * ap1);
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -15847,7 +16225,14 @@ bool segment_inverse_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(14, 16, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
+    G_ab = in.w[0] * M_flat[5] + in.w[1] * M_flat[6] + M_flat[7] * in.w[2];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -15883,7 +16268,7 @@ bool segment_inverse_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (ap0 * G_ap - G_ab * ab0) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = -(G_ab * ab2 - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -16167,7 +16552,14 @@ bool segment_inverse_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -a_minus_b * ab_ap;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(14, 16, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + M_flat[2] * in.w[2];
+    G_ap = in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5];
+    G_ab = M_flat[7] * in.w[1] + in.w[3] * M_flat[9] + in.w[0] * M_flat[6] + M_flat[8] * in.w[2];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -16205,7 +16597,7 @@ bool segment_inverse_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
   grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -16471,7 +16863,14 @@ bool segment_inverse_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(15, 17, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = in.w[0] * M_flat[2];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r0;
@@ -16501,7 +16900,7 @@ bool segment_inverse_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
   grad[1] = (G_ap * ap1 - G_ab * ab1) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -16773,7 +17172,14 @@ bool segment_inverse_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -a_minus_b * ab_ap;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(15, 17, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
+    G_ab = M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / r1;
     const T t4 = t3 * t3;
@@ -16805,7 +17211,7 @@ bool segment_inverse_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -g_factor * (ab0 * G_ab - ap0 * G_ap);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -17084,7 +17490,14 @@ bool segment_inverse_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(15, 17, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0];
+    G_ap = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
+    G_ab = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + M_flat[6] * in.w[1];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / cross_cross;
     const T t4 = T(1) / r0;
@@ -17119,7 +17532,7 @@ bool segment_inverse_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
   grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
   grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -17404,7 +17817,14 @@ bool segment_inverse_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(15, 17, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[3] * M_flat[3] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
+    G_ap = in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3];
+    G_ab = M_flat[7] * in.w[1] + M_flat[8] * in.w[2] + M_flat[9] * in.w[3] + M_flat[6] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = T(1) / ab_ab;
     const T t4 = T(1) / r0;
@@ -17441,7 +17861,7 @@ bool segment_inverse_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
   grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
   grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -17712,7 +18132,14 @@ bool segment_inverse_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(16, 18, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[0] * M_flat[0];
+    G_ap = M_flat[2] * in.w[0];
+    G_ab = in.w[0] * M_flat[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -17745,7 +18172,7 @@ bool segment_inverse_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
   grad[1] = g_factor * (ap1 * G_ap - ab1 * G_ab);
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -18022,7 +18449,14 @@ bool segment_inverse_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(16, 18, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
+    G_ap = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
+    G_ab = M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -18057,7 +18491,7 @@ bool segment_inverse_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
   grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -18341,7 +18775,14 @@ bool segment_inverse_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(16, 18, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
+    G_ap = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
+    G_ab = M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + in.w[0] * M_flat[5];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -18379,7 +18820,7 @@ bool segment_inverse_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = -(G_ab * ab0 - ap0 * G_ap) * g_factor;
   grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
   grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 /// the field, where
@@ -18669,7 +19110,14 @@ bool segment_inverse_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
   const T t1 = -ab_ap * a_minus_b;
   const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  {
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(16, 18, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = in.w[1] * M_flat[1] + in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
+    G_ap = M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + in.w[3] * M_flat[8];
+    G_ab = in.w[1] * M_flat[7] + in.w[2] * M_flat[8] + in.w[0] * M_flat[6] + M_flat[9] * in.w[3];
+  } else {
     // recurrence (1) upwards from J_1, J_2
     const T t3 = sqrt(cross_cross);
     const T t4 = T(1) / t3;
@@ -18709,7 +19157,7 @@ bool segment_inverse_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
   grad[1] = -(G_ab * ab1 - G_ap * ap1) * g_factor;
   grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
-  return !((t0 >= T(0)) || (t1 >= T(0) && t2 >= T(0)));
+  return !(((t1 >= T(0) && t2 >= T(0)) && !(t0 >= T(0))));
 }
 
 }  // namespace skelconv::generated
