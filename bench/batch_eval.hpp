@@ -24,12 +24,12 @@
 //     include/skelconv/stable_recurrence.hpp, on the "P beyond an end, near
 //     the line" forms) keeps the whole loop scalar. Hence two passes: the
 //     vectorised loop runs every lane through the generated
-//     `<name>_f_and_grad_generic` (the generic forms only, straight-line; for
-//     even compact degrees a fixed 15-node Gauss–Legendre loop, which GCC
+//     `<name>_f_and_grad_generic` (every form without a loop of run-time
+//     length; the fixed Gauss–Legendre rules (7–20 nodes) are loops GCC
 //     unrolls completely given the --param limits of bench/CMakeLists.txt)
 //     and records the lanes where it returned false; a
 //     scalar loop then re-evaluates only those with the full
-//     `<name>_f_and_grad` (stable forms, Gauss rules far from the line),
+//     `<name>_f_and_grad` (the Miller-recurrence forms beyond an end),
 //     called out of line. Results are those of the scalar path (the batch
 //     benchmark checks them: 1e-13 relative per point, see batch_bench.cpp).
 //   * a flag array of bool or integers next to the kernel's bool result gives
