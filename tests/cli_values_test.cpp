@@ -1,6 +1,8 @@
 // End to end: `skelconv eval` on the schema example prints the field of the
 // definition integral (checked against quadrature, reference_quadrature.hpp)
 // and prints the runtime's doubles exactly (%.17g round-trips).
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -30,7 +32,11 @@ const std::vector<Vec3> points{Vec3(0.5, 0.5, 0.5), Vec3(-0.7, 1.2, 0.9), Vec3(2
 /// Runs `skelconv eval example_file` with `points` on stdin; returns the
 /// output lines parsed as "f gx gy gz".
 std::vector<FieldSample> run_eval() {
-  const std::string input_file = testing::TempDir() + "skelconv_cli_values_points.txt";
+  // One file per test and process: ctest runs the tests of this file in
+  // parallel, and a shared name let one test delete the other's input.
+  const std::string input_file = testing::TempDir() + "skelconv_cli_values_" +
+                                 testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                                 std::to_string(getpid()) + ".txt";
   {
     std::ofstream input(input_file);
     input.precision(17);
