@@ -516,36 +516,15 @@ class Emitter {
         kept.push_back(i);
       }
     }
-    if (kept.size() != choice.alternatives.size()) {
-      OpCount longest, generic;
-      for (size_t k = 0; k < kept.size(); ++k) {
-        const size_t i = kept[k];
-        const bool last = k + 1 == kept.size();
-        std::string opening;
-        if (!last) {
-          opening = std::string(k == 0 ? "if (" : "} else if (") + conditions[i] + ") {";
-        } else if (k > 0) {
-          opening = "} else {";
-        } else {
-          opening = "{";
-        }
-        const Scope branch = emit_alternative(choice, i, opening);
-        if (branch.longest.total() > longest.total()) longest = branch.longest;
-        if (i == choice.generic) generic = branch.generic;
-      }
-      line("}");
-      scopes_.back().generic += generic;
-      scopes_.back().longest += longest;
-      for (const symbol& t : choice.targets) names_[t] = t.get_name();
-      return;
-    }
+    // An if / else-if / else chain over the kept alternatives.
     OpCount longest, generic;
-    for (size_t i = 0; i < choice.alternatives.size(); ++i) {
-      const bool last = i + 1 == choice.alternatives.size();
+    for (size_t k = 0; k < kept.size(); ++k) {
+      const size_t i = kept[k];
+      const bool last = k + 1 == kept.size();
       std::string opening;
       if (!last) {
-        opening = std::string(i == 0 ? "if (" : "} else if (") + conditions[i] + ") {";
-      } else if (i > 0) {
+        opening = std::string(k == 0 ? "if (" : "} else if (") + conditions[i] + ") {";
+      } else if (k > 0) {
         opening = "} else {";
       } else {
         opening = "{";  // a single form: its temporaries stay local all the same
