@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace skelconv {
 
@@ -59,34 +60,46 @@ void fill_powers(const T& x, int count, T* powers) {
   for (int j = 1; j < count; ++j) powers[j] = powers[j - 1] * x;
 }
 
+/// The scaled downward Miller run shared by J_downward and
+/// segment_moments_beyond_end: which end is near, how far up to start, and
+/// the powers of q_near/q_far that bring the far end in.
+template <class T>
+struct DownwardStart {
+  T q_near;         ///< the smaller end value of q
+  T d_scaled;       ///< D / q_near
+  T inv_root_near;  ///< 1/√q_near
+  int top;          ///< start index: J_top (or M_{k,top}) = 0
+  std::array<T, 2 * recurrence_max_steps + 40> far_powers;  ///< (q_near/q_far)^(j/2)
+
+  /// For the highest index `highest` needed, with q_near < q_far.
+  DownwardStart(int highest, const T& a, const T& D, const T& near_q, const T& far_q) {
+    using std::sqrt;
+    q_near = near_q;
+    // Per step, the start error shrinks by about ρ = D/(a q_near) < 1.
+    top = highest + 2 * miller_steps(D / (a * q_near));
+    d_scaled = D / q_near;
+    inv_root_near = T(1) / sqrt(q_near);
+    fill_powers(sqrt(q_near / far_q), top - 1, far_powers.data());
+  }
+};
+
 }  // namespace detail
 
 /// J_n (n ≥ 2) over [t0, t1] for P beyond an end, from the ends' slopes
 /// s = a t − b and values q. Requires a > 0, D ≥ 0, q0, q1 > 0.
 template <class T>
 T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const T& slope1, const T& q1) {
-  using std::ceil;
-  using std::log;
   using std::pow;
-  using std::sqrt;
   const bool lo_is_near = q0 <= q1;
-  const T q_near = lo_is_near ? q0 : q1;
-  const T ratio = lo_is_near ? q0 / q1 : q1 / q0;  // q_near / q_far ≤ 1
-  // Per step, the start error shrinks by about rho = D/(a q_near) < 1.
-  const int steps = detail::miller_steps(D / (a * q_near));
-  const int top = n + 2 * steps;
-  const T d_scaled = D / q_near;
-  const T inv_root_near = T(1) / sqrt(q_near);
-  // far_powers[j] = ratio^(j/2): the far end's weight at m is far_powers[m − 2].
-  std::array<T, 2 * recurrence_max_steps + 40> far_powers;
-  detail::fill_powers(sqrt(ratio), top - 1, far_powers.data());
+  const detail::DownwardStart<T> start(n, a, D, lo_is_near ? q0 : q1, lo_is_near ? q1 : q0);
+  const T& inv_root_near = start.inv_root_near;
   T J_scaled = 0;  // Ĵ_top
-  for (int m = top; m > n; m -= 2) {
+  for (int m = start.top; m > n; m -= 2) {
     // B̂_m = [(a t − b) q^(1−m/2)]_{t0}^{t1} q_near^((m−3)/2)
-    const T& far_power = far_powers[m - 2];
+    const T& far_power = start.far_powers[m - 2];
     const T B_scaled = lo_is_near ? (slope1 * far_power - slope0) * inv_root_near
                                   : (slope1 - slope0 * far_power) * inv_root_near;
-    J_scaled = (B_scaled - T(m - 2) * d_scaled * J_scaled) / (a * T(3 - m));
+    J_scaled = (B_scaled - T(m - 2) * start.d_scaled * J_scaled) / (a * T(3 - m));
   }
   return J_scaled * pow(inv_root_near, n - 1);
 }
@@ -111,32 +124,24 @@ T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const 
 template <class T>
 void segment_moments_beyond_end(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& D, const T& q0,
                                 const T& q1, T* out) {
-  using std::ceil;
-  using std::log;
   using std::pow;
-  using std::sqrt;
   constexpr int max_k = 8;
   T M[max_k + 1];  // M̂_{k,m} at the current level
+  if (k_max > max_k || m_lo < k_max + 2) throw std::invalid_argument("segment_moments_beyond_end: k_max out of range");
   const bool beyond_B = q1 < q0;
   const T b_near = beyond_B ? a - b : b;  // b in the σ parameter
-  const T q_near = beyond_B ? q1 : q0;
-  const T ratio = beyond_B ? q1 / q0 : q0 / q1;  // q_near / q_far ≤ 1
-  const int steps = detail::miller_steps(D / (a * q_near));
-  const int top = m_hi + 2 * steps;
-  const T d_scaled = D / q_near;
-  const T inv_root_near = T(1) / sqrt(q_near);
-  const T far_slope = (a - b_near) * inv_root_near;   // (aσ − b) at σ = 1, scaled
-  const T near_slope = -b_near * inv_root_near;       // (aσ − b) at σ = 0, scaled
-  std::array<T, 2 * recurrence_max_steps + 40> far_powers;  // ratio^(j/2)
-  detail::fill_powers(sqrt(ratio), top - 1, far_powers.data());
+  const detail::DownwardStart<T> start(m_hi, a, D, beyond_B ? q1 : q0, beyond_B ? q0 : q1);
+  const T& inv_root_near = start.inv_root_near;
+  const T far_slope = (a - b_near) * inv_root_near;  // (aσ − b) at σ = 1, scaled
+  const T near_slope = -b_near * inv_root_near;      // (aσ − b) at σ = 0, scaled
   for (int k = 0; k <= k_max; ++k) M[k] = T(0);  // M̂_{k,top}
-  for (int m = top; m > m_lo; m -= 2) {
+  for (int m = start.top; m > m_lo; m -= 2) {
     // Level m − 2 from level m, k upwards (M̂_{k−1,m−2} is already new).
-    const T boundary_far = far_slope * far_powers[m - 2];
+    const T boundary_far = far_slope * start.far_powers[m - 2];
     for (int k = 0; k <= k_max; ++k) {
       const T boundary = k == 0 ? boundary_far - near_slope : boundary_far;
       const T lower = k == 0 ? T(0) : T(k) * b_near * M[k - 1];
-      M[k] = (boundary + lower - T(m - 2) * d_scaled * M[k]) / (a * T(3 - m + k));
+      M[k] = (boundary + lower - T(m - 2) * start.d_scaled * M[k]) / (a * T(3 - m + k));
     }
     const int level = m - 2;
     if (level <= m_hi && (level - m_lo) % 2 == 0) {
