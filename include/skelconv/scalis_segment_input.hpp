@@ -1,0 +1,29 @@
+// skelconv/scalis_segment_input.hpp — the contract between the runtime and
+// the SCALIS segment kernels (SPEC §4, Zanni et al. 2013 §3–4).
+//
+// A SCALIS segment [A,B] has the radius τ(t) = τ0 + (τ1 − τ0) t, t ∈ [0, 1],
+// and the SCALIS kernel K of SPEC §1 with scale σ. Every SCALIS segment
+// function computes the UNNORMALISED field
+//
+//     F(P) = ∫_0^1 K(|P − Γ(t)| / τ(t)) |AB| dt / τ(t),   Γ(t) = A + t (B − A)
+//
+// and/or ∇_P F. The runtime multiplies by c / h (SPEC §4) so that f = c at
+// distance τ from an infinite line of constant radius τ.
+#pragma once
+
+#include <array>
+
+namespace skelconv {
+
+/// Inputs of one SCALIS segment evaluation, on scalar type T.
+template <class T>
+struct ScalisSegmentInput {
+  std::array<T, 3> a{};  ///< segment start A (t = 0)
+  std::array<T, 3> b{};  ///< segment end B (t = 1)
+  std::array<T, 3> p{};  ///< query point P
+  T tau0 = T(1);         ///< radius at A, ≥ 0
+  T tau1 = T(1);         ///< radius at B, ≥ 0 (not both 0)
+  T sigma = T(1);        ///< kernel scale σ > 0 (> 1 for the compact kernel)
+};
+
+}  // namespace skelconv
