@@ -1,0 +1,443 @@
+// codegen/segment_program_builder.hpp — builds the straight-line program of
+// one segment kernel (segment_families.hpp). Shared with the polygon edge
+// kernels (polygon_families.hpp): a polygon edge is a segment whose quadratic
+// has the constant term β + α z² (Hubert 2012 §5), so it reuses the
+// geometry, the quadratic and the run-time choice of stable forms here.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "segment_families.hpp"
+#include "segment_moments.hpp"
+
+namespace skelconv::codegen {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+using GiNaC::pow;
+using GiNaC::symbol;
+
+// max(0, x), written as such in C++: q at a clipped end is 0 up to rounding
+// and must not go negative under a square root.
+DECLARE_FUNCTION_1P(nonnegative_part)
+// min(x, y) and max(x, y), written as such in C++.
+DECLARE_FUNCTION_2P(minimum)
+DECLARE_FUNCTION_2P(maximum)
+
+/// One quantity a kernel reads: Σ_k w_k M_{k+shift,level}, named `name`.
+struct MomentRequest {
+  std::string name;
+  int shift;
+  int level;
+};
+
+// Beyond an end of the segment, with ρ = D / (a q_near) the per-step factor
+// of segment_moments.hpp: below kBeyondEndRho the recurrence runs downwards
+// (at most ~116 steps reach 1e-18), above it upwards from J_1, J_2, where the
+// growth (1/ρ)^((n−1)/2) stays below 21 for n ≤ 18, and the moment formulas
+// lose at most a factor ~n·√(1−ρ) each.
+inline const ex kBeyondEndRho = numeric(7, 10);
+// Compact kernels: J_upward_compact below this q_e/q_max, downwards from
+// J_0, J_1 above it, where (q_max/q_e)^((i+d+2)/2) ≤ 1.18^10 ≈ 5.
+inline const ex kCompactOutsideRatio = numeric(17, 20);
+
+// The operations of one segment_moments_gauss<T, N> call, counted from its
+// loop (include/skelconv/gauss_moments.hpp): per node the parameter, q, √q,
+// the power q^(−m_hi/2) and, per level, the k_max + 1 moments.
+inline OpCount gauss_rule_ops(int nodes, int m_lo, int m_hi, int k_max) {
+  const int levels = (m_hi - m_lo) / 2 + 1, moments = k_max + 1;
+  OpCount per_node;
+  per_node.add = 3 + levels * moments;
+  const bool even = m_hi % 2 == 0;
+  per_node.mul = 4 + std::abs(m_hi) / (even ? 2 : 1) + levels * (2 + moments);
+  per_node.div = m_hi > 0 ? 1 : 0;
+  per_node.sqrt = even ? 0 : 1;
+  OpCount total;
+  for (int j = 0; j < nodes; ++j) total += per_node;
+  total.add += 2;
+  total.mul += 2 + levels * moments;
+  return total;
+}
+
+// Builds the program step by step; one instance per generated function.
+class SegmentProgramBuilder {
+ public:
+  SegmentProgramBuilder(const SegmentKernelSpec& spec) : spec_(spec) {}
+
+  virtual ~SegmentProgramBuilder() = default;
+
+  StraightLineProgram build(SegmentOutputs outputs) {
+    read_inputs();
+    define_geometry();
+    define_quadratic();
+    const int n = kernel_index();
+    const bool value = outputs != SegmentOutputs::gradient;
+    const bool gradient = outputs != SegmentOutputs::value;
+    // What the outputs need: F = Σ w_k M_{k,n} for f = |AB| F, and
+    // G_ap = Σ w_k M_{k,n+2}, G_ab = Σ w_k M_{k+1,n+2} for
+    // ∇f = −n α |AB| (AP G_ap − AB G_ab) (SPEC §2).
+    std::vector<MomentRequest> requests;
+    if (value) requests.push_back({"F", 0, n});
+    if (gradient) {
+      requests.push_back({"G_ap", 0, n + 2});
+      requests.push_back({"G_ab", 1, n + 2});
+    }
+    const std::vector<symbol> targets = choose_moments(requests);
+    add_outputs(targets, value, gradient);
+    return std::move(program_);
+  }
+
+ protected:
+  // The run-time choice of stable forms (SPEC §2) for the weighted moments
+  // Σ_k w_k M_{k+shift,level} of `requests`: one target symbol each.
+  std::vector<symbol> choose_moments(const std::vector<MomentRequest>& requests) {
+    requests_ = requests;
+    std::vector<symbol> targets;
+    for (const MomentRequest& r : requests) targets.emplace_back(r.name);
+    auto values_from = [&](MomentRecurrence& moments) {
+      std::vector<ex> v;
+      for (const MomentRequest& r : requests) v.push_back(weighted_moment(moments, r.shift, r.level));
+      return v;
+    };
+
+    Choice choice{targets, {}};
+    if (spec_.family == KernelFamily::compact) {
+      const MomentSymbols symbols = compact_symbols();
+      if (spec_.degree % 2 == 0) {
+        // t^k q^(i/2) is a polynomial of degree ≤ i + k: an N-point
+        // Gauss–Legendre rule with 2N − 1 ≥ i + k is exact and, all terms
+        // positive, stable. N is the smallest Boost tabulates that suffices.
+        const int polynomial_degree = spec_.degree + highest_moment();
+        int nodes = 7;
+        for (int tabulated : {7, 10, 15, 20, 25, 30}) {
+          nodes = tabulated;
+          if (2 * tabulated - 1 >= polynomial_degree) break;
+        }
+        const std::string rule = "segment_moments_gauss<T, " + std::to_string(nodes) + ">";
+        Alternative exact{{}, "even degree: the integrand is a polynomial of degree " +
+                                  std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
+                          {}, {}, {}};
+        fill_from_helper(exact, "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t});
+        choice.alternatives.push_back(std::move(exact));
+        program_.choose(std::move(choice));
+        return targets;
+      }
+      {
+        // Odd degree, the sphere crossings t* ± √(−D)/|a| at least |AB|/2
+        // beyond both ends (so [t0, t1] = [0, 1]): q^(i/2) is analytic well
+        // around the segment and nearly flat, where the moment relations
+        // cancel; the 20-point Gauss–Legendre rule is exact to rounding
+        // (include/skelconv/gauss_moments.hpp).
+        const ex t_star = b_ / a_;
+        const ex reach = maximum(t_star + numeric(1, 2), numeric(3, 2) - t_star);
+        Alternative flat{{-D_ - pow(a_, 2) * pow(reach, 2)},
+                         "support sphere at least |AB|/2 beyond both ends: every moment by "
+                         "segment_moments_gauss<T, 20>",
+                         {}, {}, {}};
+        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t});
+        choice.alternatives.push_back(std::move(flat));
+      }
+      // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
+      const int bottom = kernel_index() - 2 * ((spec_.weight_degree + 1) / 2) - 2;
+      MomentRecurrence upward(symbols, {RecurrenceDirection::Mode::up_from_bottom, bottom});
+      choice.alternatives.push_back(
+          {{symbols.lo.slope * symbols.hi.slope, a_ * maximum(symbols.lo.q, symbols.hi.q) - kCompactOutsideRatio * D_},
+           "vertex of q outside [t0, t1], q_e < 17/20 q_max: recurrence (1) upwards from J_" +
+               std::to_string(bottom) + " = J_upward_compact(…)",
+           {},
+           values_from(upward),
+           {}});
+      MomentRecurrence downward(symbols);
+      choice.alternatives.push_back({{}, "recurrence (1) downwards from J_0, J_1", {}, values_from(downward), {}});
+      choice.generic = choice.alternatives.size() - 1;
+    } else {
+      const MomentSymbols symbols = infinite_support_symbols();
+      const int top_index = highest_level();
+      {
+        // Far from the line compared with |AB| (D ≥ 2a²): the kernel is nearly
+        // flat and the moment relations cancel; a 20-point Gauss–Legendre rule
+        // is exact to rounding there (include/skelconv/gauss_moments.hpp).
+        Alternative flat{{D_ - 2 * pow(a_, 2)}, "P far from the line (D ≥ 2a²): every moment by "
+                         "segment_moments_gauss<T, 20>", {}, {}, {}};
+        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, 0, 1});
+        choice.alternatives.push_back(std::move(flat));
+      }
+      if (top_index >= 2) {
+        // Beyond an end, with ρ = D/(a min(q(0), q(1))) below `kBeyondEndRho`:
+        // recurrence (1) downwards (segment_moments.hpp, stable_recurrence.hpp).
+        const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
+        Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_}, "", {}, {}, {}};
+        if (lowest_level() >= highest_moment() + 2) {
+          // Every moment from segment_moments_beyond_end, centred at the near end.
+          fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>", {a_, b_, D_, symbols.lo.q, symbols.hi.q});
+          beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, "
+                       "recurrence (1) downwards (segment_moments_beyond_end)";
+        } else {
+          MomentRecurrence downward(symbols, {RecurrenceDirection::Mode::down_from_top, top_index});
+          beyond.values = values_from(downward);
+          beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_" +
+                       std::to_string(top_index) + " = J_downward(…)";
+        }
+        choice.alternatives.push_back(std::move(beyond));
+      }
+      MomentRecurrence upward(symbols);
+      choice.alternatives.push_back({{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, values_from(upward), {}});
+      choice.generic = choice.alternatives.size() - 1;
+    }
+    program_.choose(std::move(choice));
+    return targets;
+  }
+
+  // f = |AB| F and ∇f = −n α |AB| (AP G_ap − AB G_ab), SPEC §2.
+  void add_outputs(const std::vector<symbol>& targets, bool value, bool gradient) {
+    if (value) program_.add_output("f", length_ * targets[0]);
+    if (gradient) {
+      const symbol& g_ap = targets[value ? 1 : 0];
+      const symbol& g_ab = targets[value ? 2 : 1];
+      const ex factor = define("g_factor", -kernel_index() * alpha_ * length_);
+      for (int i = 0; i < 3; ++i)
+        program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
+    }
+  }
+
+  // Lowest and highest level m, highest k of the moments M_{k,m} the
+  // requests read (segments: F needs m = n, k ≤ d; G_ap, G_ab need
+  // m = n + 2, k ≤ d + 1).
+  int lowest_level() const {
+    int m = requests_.front().level;
+    for (const MomentRequest& r : requests_) m = std::min(m, r.level);
+    return m;
+  }
+  int highest_level() const {
+    int m = requests_.front().level;
+    for (const MomentRequest& r : requests_) m = std::max(m, r.level);
+    return m;
+  }
+  int highest_moment() const {
+    int shift = 0;
+    for (const MomentRequest& r : requests_) shift = std::max(shift, r.shift);
+    return spec_.weight_degree + shift;
+  }
+
+  // Takes every moment the outputs need from one helper call that fills an
+  // array (include/skelconv/stable_recurrence.hpp, gauss_moments.hpp):
+  // function(m_lo, m_hi, k_max, args…, array).
+  void fill_from_helper(Alternative& alt, const std::string& array, const std::string& function,
+                        const std::vector<ex>& args) {
+    const int m_lo = lowest_level(), m_hi = highest_level(), k_max = highest_moment();
+    ArrayCall call{array, function, {std::to_string(m_lo), std::to_string(m_hi), std::to_string(k_max)}, args, {}, {}};
+    if (function.rfind("segment_moments_gauss<T, ", 0) == 0)
+      call.ops = gauss_rule_ops(std::stoi(function.substr(25)), m_lo, m_hi, k_max);
+    for (int m = m_lo; m <= m_hi; m += 2)
+      for (int k = 0; k <= k_max; ++k)
+        call.elements.emplace_back(array + "_" + std::to_string(call.elements.size()));
+    auto weighted = [&](int shift, int m) {
+      ex sum = 0;
+      for (int k = 0; k <= spec_.weight_degree; ++k)
+        sum += w_[k] * call.elements[static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k + shift)];
+      return sum;
+    };
+    for (const MomentRequest& r : requests_) alt.values.push_back(weighted(r.shift, r.level));
+    alt.calls.push_back(std::move(call));
+  }
+
+  int kernel_index() const { return spec_.family == KernelFamily::compact ? -spec_.degree : spec_.degree; }
+
+  ex define(const std::string& name, const ex& value) {
+    if (GiNaC::is_a<symbol>(value)) return value;  // an alias needs no code
+    symbol s(name);
+    program_.define(s, value);
+    return s;
+  }
+
+  // Σ_k w_k M_{k+shift,n}
+  ex weighted_moment(MomentRecurrence& moments, int shift, int n) {
+    ex sum = 0;
+    for (int k = 0; k <= spec_.weight_degree; ++k) sum += w_[k] * moments.M(k + shift, n);
+    return sum;
+  }
+
+  // An input symbol `name` read from the C++ element `array[index]`.
+  symbol input(const std::string& name, const std::string& array, int index) {
+    const std::string i = std::to_string(index);
+    symbol s(name + i);
+    program_.add_input(s, array + '[' + i + ']');
+    return s;
+  }
+
+  virtual void read_inputs() {
+    for (int i = 0; i < 3; ++i) {
+      A_[i] = input("A", "in.a", i);
+      B_[i] = input("B", "in.b", i);
+      P_[i] = input("P", "in.p", i);
+    }
+    for (int k = 0; k <= spec_.weight_degree; ++k) w_.push_back(input("w", "in.w", k));
+  }
+
+  // Vectors and their products. |AB × AP|² and the dot products with BP are
+  // formed directly rather than as differences of larger numbers, so D and
+  // the values at B keep their digits near the line and near B.
+  void define_geometry() {
+    for (int i = 0; i < 3; ++i) {
+      ab_[i] = define("ab" + std::to_string(i), B_[i] - A_[i]);
+      ap_[i] = define("ap" + std::to_string(i), P_[i] - A_[i]);
+      bp_[i] = define("bp" + std::to_string(i), P_[i] - B_[i]);
+    }
+    auto dot = [](const std::array<ex, 3>& u, const std::array<ex, 3>& v) {
+      return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    };
+    ab_ab_ = define("ab_ab", dot(ab_, ab_));
+    ab_ap_ = define("ab_ap", dot(ab_, ap_));
+    ap_ap_ = define("ap_ap", dot(ap_, ap_));
+    cross_ = {
+        define("cross0", ab_[1] * ap_[2] - ab_[2] * ap_[1]),
+        define("cross1", ab_[2] * ap_[0] - ab_[0] * ap_[2]),
+        define("cross2", ab_[0] * ap_[1] - ab_[1] * ap_[0]),
+    };
+    cross_cross_ = define("cross_cross", dot(cross_, cross_));
+    bp_bp_ = define("bp_bp", dot(bp_, bp_));
+    ab_bp_ = define("ab_bp", dot(ab_, bp_));
+    ap_bp_ = define("ap_bp", dot(ap_, bp_));
+    length_ = define("length", pow(ab_ab_, numeric(1, 2)));
+  }
+
+  // Hook for builders whose quadratic has another constant term (polygon
+  // edges: β + α z², Hubert 2012 §5); segments keep β.
+  virtual void adjust_beta() {}
+
+  // q(t) = α|P − Γ(t)|² + β = a t² − 2 b t + c.
+  void define_quadratic() {
+    switch (spec_.family) {
+      case KernelFamily::inverse:
+        alpha_ = 1;
+        beta_ = 0;
+        break;
+      case KernelFamily::cauchy: {
+        symbol s("s");
+        program_.add_input(s, "in.s");
+        alpha_ = s;
+        beta_ = 1;
+        break;
+      }
+      case KernelFamily::compact: {
+        symbol R("R");
+        program_.add_input(R, "in.R");
+        inv_R_ = define("inv_R", pow(R, -1));
+        alpha_ = -define("inv_R2", pow(inv_R_, 2));
+        beta_ = 1;
+        break;
+      }
+    }
+    adjust_beta();
+    a_ = define("a", alpha_ * ab_ab_);
+    b_ = define("b", alpha_ * ab_ap_);
+    c_ = define("c", beta_ + alpha_ * ap_ap_);
+    // D = ac − b² = αβ|AB|² + α²|AB × AP|² (Lagrange's identity): no
+    // cancellation near the segment's line.
+    D_ = define("D", alpha_ * (beta_ * ab_ab_ + alpha_ * cross_cross_));
+  }
+
+  // The quadratic's coefficients, common to every family.
+  MomentSymbols quadratic_symbols() const {
+    MomentSymbols m;
+    m.a = a_;
+    m.b = b_;
+    m.c = c_;
+    m.D = D_;
+    return m;
+  }
+
+  // Inverse and Cauchy kernels: t ∈ [0, 1], q > 0, a > 0.
+  MomentSymbols infinite_support_symbols() {
+    MomentSymbols m = quadratic_symbols();
+    const bool odd = spec_.degree % 2 != 0;
+    const ex a_minus_b = a_minus_b_ = define("a_minus_b", -alpha_ * ab_bp_);  // a − b = −α AB·BP
+    const ex q1 = define("q1", beta_ + alpha_ * bp_bp_);        // q(1) = β + α|BP|²
+    const symbol r0("r0"), r1("r1");
+    m.lo = {0, c_, r0, -b_};
+    m.hi = {1, q1, r1, a_minus_b};
+    if (odd) {
+      program_.define(r0, pow(c_, numeric(1, 2)));
+      program_.define(r1, pow(q1, numeric(1, 2)));
+      program_.declare_square_root(r0, GiNaC::ex_to<symbol>(c_));
+      program_.declare_square_root(r1, GiNaC::ex_to<symbol>(q1));
+      m.J1 = define_J1_infinite(a_minus_b, r0, r1);
+    } else {
+      // J_2 = (atan((a−b)/√D) + atan(b/√D))/√D = atan2(√D, c − b)/√D: the two
+      // atans of Hubert §3.1 summed into one, exact for all P off the line.
+      const ex c_minus_b = define("c_minus_b", beta_ + alpha_ * ap_bp_);  // c − b = β + α AP·BP
+      const ex root_D = pow(D_, numeric(1, 2));
+      // Only the upward recurrence reads it: it is 0/0 on the line.
+      symbol J2("J2");
+      upward_steps_.emplace_back(J2, GiNaC::atan2(root_D, c_minus_b) / root_D);
+      m.J2 = J2;
+      m.log_ratio = define("log_ratio", GiNaC::log(q1 / c_));
+    }
+    return m;
+  }
+
+  // J_1 = (asinh((a−b)/√D) + asinh(b/√D))/√a (Hubert §3.1, "arcsch" = asinh)
+  //     = asinh(X)/√a, with asinh x + asinh y = asinh(x√(1+y²) + y√(1+x²)):
+  //   X = √a ((a−b) r0 + b r1) / D            when P projects on [A,B];
+  //   X = √a (a − 2b) / ((a−b) r0 − b r1)     beyond an end, where the first
+  // form cancels: the two are equal, since ((a−b)r0)² − (b r1)² = (a−2b) D.
+  ex define_J1_infinite(const ex& a_minus_b, const symbol& r0, const symbol& r1) {
+    const ex root_a = pow(a_, numeric(1, 2));
+    symbol X("X");
+    Choice choice{{X}, {}};
+    choice.alternatives.push_back({{b_ * a_minus_b}, "P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D",
+                                   {}, {root_a * (a_minus_b * r0 + b_ * r1) / D_}, {}});
+    choice.alternatives.push_back({{}, "P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)",
+                                   {}, {root_a * (a_minus_b - b_) / (a_minus_b * r0 - b_ * r1)}, {}});
+    program_.choose(std::move(choice));
+    return define("J1", GiNaC::asinh(X) / root_a);
+  }
+
+  // Compact kernels: t ∈ [t0, t1] (the clip), a < 0, q ≥ 0.
+  MomentSymbols compact_symbols() {
+    MomentSymbols m = quadratic_symbols();
+    const bool odd = spec_.degree % 2 != 0;
+    auto end = [&](const std::string& tag, const std::string& input) {
+      symbol t("t" + tag);
+      program_.add_input(t, input);
+      const ex slope = define("slope" + tag, a_ * t - b_);
+      const ex q = define("q" + tag, nonnegative_part(c_ + t * (slope - b_)));
+      symbol root("r" + tag);
+      if (odd) {
+        program_.define(root, pow(q, numeric(1, 2)));
+        program_.declare_square_root(root, GiNaC::ex_to<symbol>(q));
+      }
+      return QuadraticEnd{t, q, root, slope};
+    };
+    m.lo = end("0", "in.t0");
+    m.hi = end("1", "in.t1");
+    if (odd) {
+      // ∫ q^(-1/2) dt = asin((b − a t)/√(−D)) / √(−a) for a < 0, written as
+      // atan2(b − a t, √(−a) √q) so that it stays exact where q = 0 (a clipped end).
+      const ex root_minus_a = define("root_minus_a", length_ * inv_R_);  // √(−a) = |AB|/R
+      m.J1 = define("J1", (GiNaC::atan2(-m.hi.slope, root_minus_a * m.hi.root) -
+                           GiNaC::atan2(-m.lo.slope, root_minus_a * m.lo.root)) /
+                              root_minus_a);
+    }
+    return m;
+  }
+
+  const SegmentKernelSpec& spec_;
+  StraightLineProgram program_;
+  std::array<symbol, 3> A_, B_, P_;
+  std::vector<ex> w_;
+  std::array<ex, 3> ab_, ap_, bp_, cross_;
+  ex ab_ab_, ab_ap_, ap_ap_, cross_cross_, bp_bp_, ab_bp_, ap_bp_, length_;
+  ex alpha_, beta_, inv_R_;
+  ex a_, b_, c_, D_, a_minus_b_;
+  std::vector<std::pair<symbol, ex>> upward_steps_;  // definitions only the upward form reads
+  std::vector<MomentRequest> requests_;               // what choose_moments computes
+};
+
+
+}  // namespace skelconv::codegen
