@@ -17,7 +17,15 @@ constexpr const char* kGenericSuffix = "f_and_grad_generic";
 constexpr SegmentOutputs kOutputs[] = {SegmentOutputs::value, SegmentOutputs::gradient,
                                        SegmentOutputs::value_and_gradient};
 
-std::string file_header(const std::string& file, const std::string& what, const GeneratorRequest& request) {
+constexpr const char* kSegmentSources =
+    "codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp\n"
+    "// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).";
+constexpr const char* kPolygonSources =
+    "codegen/polygon_families.cpp (the contour sum per edge; SPEC §3,\n"
+    "// Hubert 2012 §5–8), on the segment forms of codegen/segment_families.cpp.";
+
+std::string file_header(const std::string& file, const std::string& what, const GeneratorRequest& request,
+                        const char* sources = kSegmentSources) {
   std::ostringstream os;
   os << "// generated/" << file << " — " << what << "\n"
      << "//\n"
@@ -25,8 +33,7 @@ std::string file_header(const std::string& file, const std::string& what, const 
      << "//     " << request.command_line << " --out generated\n"
      << "// Generator: skelconv-codegen " << SKELCONV_VERSION << " (GiNaC " << GINACLIB_MAJOR_VERSION << '.'
      << GINACLIB_MINOR_VERSION << '.' << GINACLIB_MICRO_VERSION << ")\n"
-     << "// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp\n"
-     << "// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).\n";
+     << "// From: " << sources << "\n";
   return os.str();
 }
 
@@ -89,6 +96,22 @@ std::string generic_function_text(const SegmentKernelSpec& spec, const EmittedCo
      << "bool " << name << "(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {\n"
      << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n"
      << code.body << "  return " << code.generic_applies << ";\n}\n\n";
+  return os.str();
+}
+
+// One polygon edge function: writes the PolygonEdgeTerms its outputs need.
+std::string polygon_function_text(const PolygonKernelSpec& spec, int which, const EmittedCode& code) {
+  const std::string name = spec.name() + "_" + kFunctionSuffix[which];
+  static const char* kWhat[] = {"f", "∇f", "f and ∇f"};
+  std::ostringstream os;
+  os << "/// The terms of one edge for " << kWhat[which] << " (skelconv/polygon_field.hpp adds them up), where\n"
+     << "///     " << spec.equation() << "\n"
+     << "/// Operations per edge: " << ops_text(code.ops) << " (generic form).\n";
+  if (!(code.ops_longest == code.ops)) os << "/// Longest path: " << ops_text(code.ops_longest) << ".\n";
+  os << "template <class T>\n"
+     << "void " << name << "(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {\n"
+     << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n"
+     << code.body << "}\n\n";
   return os.str();
 }
 
@@ -169,6 +192,74 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "}  // namespace skelconv::generated\n";
   write_file(folder / "segment_table.hpp", table.str());
 
+  // Polygon edge kernels: one header per family and their table.
+  struct EmittedPolygonKernel {
+    PolygonKernelSpec spec;
+    OpCount ops[3], ops_longest[3];
+  };
+  std::vector<EmittedPolygonKernel> polygon_kernels;
+  std::map<KernelFamily, std::string> polygon_bodies;
+  for (const PolygonKernelSpec& spec : request.polygon_kernels) {
+    EmittedPolygonKernel k{spec, {}, {}};
+    for (int which = 0; which < 3; ++which) {
+      const EmittedCode code = build_polygon_edge_program(spec, kOutputs[which]).emit();
+      k.ops[which] = code.ops;
+      k.ops_longest[which] = code.ops_longest;
+      polygon_bodies[spec.family] += polygon_function_text(spec, which, code);
+    }
+    polygon_kernels.push_back(k);
+  }
+  for (const auto& [family, body] : polygon_bodies) {
+    const std::string file = "polygon_" + std::string(family_name(family)) + ".hpp";
+    std::ostringstream os;
+    os << file_header(file, "polygon edge kernels of the " + std::string(family_name(family)) + " family.", request,
+                      kPolygonSources)
+       << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
+       << "#include <skelconv/gauss_moments.hpp>\n#include <skelconv/polygon_edge_input.hpp>\n"
+       << "#include <skelconv/polygon_near_plane.hpp>\n#include <skelconv/segment_input.hpp>\n"
+       << "#include <skelconv/stable_recurrence.hpp>\n\n"
+       << "namespace skelconv::generated {\n\n"
+       << body << "}  // namespace skelconv::generated\n";
+    write_file(folder / file, os.str());
+  }
+  if (!polygon_kernels.empty()) {
+    std::ostringstream table;
+    table << file_header("polygon_table.hpp", "every generated polygon edge kernel, for lookup at run time.", request,
+                         kPolygonSources)
+          << "#pragma once\n\n#include <span>\n\n";
+    for (const auto& [family, body] : polygon_bodies)
+      table << "#include \"generated/polygon_" << family_name(family) << ".hpp\"\n";
+    table << "\nnamespace skelconv::generated {\n\n"
+          << "/// One generated polygon edge kernel: the edge terms for f, ∇f and both, with their\n"
+          << "/// operation counts per edge.\n"
+          << "template <class T>\nstruct PolygonEdgeKernel {\n"
+          << "  KernelFamily family;\n  int degree;\n"
+          << "  void (*f)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);\n"
+          << "  void (*grad)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);\n"
+          << "  void (*f_and_grad)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);\n"
+          << "  const char* name;\n  const char* equation;\n"
+          << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n"
+          << "/// Every generated polygon edge kernel, sorted by family and degree.\n"
+          << "template <class T>\nstd::span<const PolygonEdgeKernel<T>> polygon_edge_kernels() {\n"
+          << "  static const PolygonEdgeKernel<T> table[] = {\n";
+    for (const EmittedPolygonKernel& k : polygon_kernels) {
+      const std::string n = k.spec.name();
+      table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", &" << n
+            << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, \"" << n << "\",\n       \""
+            << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", " << ops_initializer(k.ops[1]) << ", "
+            << ops_initializer(k.ops[2]) << "},\n";
+    }
+    table << "  };\n  return table;\n}\n\n"
+          << "/// The edge kernel for (family, degree), or nullptr if it was not generated.\n"
+          << "template <class T>\n"
+          << "const PolygonEdgeKernel<T>* find_polygon_edge_kernel(KernelFamily family, int degree) {\n"
+          << "  for (const PolygonEdgeKernel<T>& k : polygon_edge_kernels<T>())\n"
+          << "    if (k.family == family && k.degree == degree) return &k;\n"
+          << "  return nullptr;\n}\n\n"
+          << "}  // namespace skelconv::generated\n";
+    write_file(folder / "polygon_table.hpp", table.str());
+  }
+
   // The operation counts, machine-readable.
   std::ostringstream csv;
   csv << "function,family,degree,weight_degree,outputs,add,mul,div,sqrt,atan,log,other,"
@@ -179,6 +270,16 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
       csv << k.spec.name() << '_' << kFunctionSuffix[which] << ',' << family_name(k.spec.family) << ','
           << k.spec.degree << ',' << k.spec.weight_degree << ',' << kFunctionSuffix[which] << ',' << o.add << ','
           << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan << ',' << o.log << ',' << o.other;
+      const OpCount& l = k.ops_longest[which];
+      csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
+          << l.other << '\n';
+    }
+  for (const EmittedPolygonKernel& k : polygon_kernels)
+    for (int which = 0; which < 3; ++which) {
+      const OpCount& o = k.ops[which];
+      csv << k.spec.name() << '_' << kFunctionSuffix[which] << ",polygon_" << family_name(k.spec.family) << ','
+          << k.spec.degree << ",0," << kFunctionSuffix[which] << ',' << o.add << ',' << o.mul << ',' << o.div << ','
+          << o.sqrt << ',' << o.atan << ',' << o.log << ',' << o.other;
       const OpCount& l = k.ops_longest[which];
       csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
           << l.other << '\n';

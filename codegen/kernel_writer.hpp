@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "polygon_families.hpp"
 #include "segment_families.hpp"
 
 namespace skelconv::codegen {
@@ -13,6 +14,7 @@ namespace skelconv::codegen {
 /// What to generate; the command line (main.cpp) fills it.
 struct GeneratorRequest {
   std::vector<SegmentKernelSpec> segment_kernels;
+  std::vector<PolygonKernelSpec> polygon_kernels;
   std::string command_line;  ///< recorded in every file header (without --out)
 };
 

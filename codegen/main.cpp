@@ -2,7 +2,8 @@
 // descriptions. Degree ranges are arguments, not limits in the code.
 //
 //   skelconv-codegen --out generated [--inverse 1:16] [--cauchy 1:16]
-//                    [--compact 2:16] [--weights 0:3]
+//                    [--compact 2:16] [--weights 0:3] [--polygon-inverse 3:12]
+//                    [--polygon-cauchy 3:12] [--polygon-compact 4:12]
 #include <CLI/CLI.hpp>
 
 #include <sys/personality.h>
@@ -51,17 +52,23 @@ int main(int argc, char** argv) {
   run_without_address_randomisation(argv);
   CLI::App app{"skelconv-codegen: unrolls the Hubert–Cani recurrences into C++ kernels"};
   std::string out, inverse = "1:16", cauchy = "1:16", compact = "2:16", weights = "0:3";
+  std::string polygon_inverse = "3:12", polygon_cauchy = "3:12", polygon_compact = "4:12";
   app.add_option("--out", out, "output folder (e.g. generated)")->required();
   app.add_option("--inverse", inverse, "power-inverse degrees i (FIRST:LAST or none)")->capture_default_str();
   app.add_option("--cauchy", cauchy, "Cauchy degrees i")->capture_default_str();
   app.add_option("--compact", compact, "compact-support degrees i (i ≥ 2)")->capture_default_str();
   app.add_option("--weights", weights, "weight-polynomial degrees")->capture_default_str();
+  app.add_option("--polygon-inverse", polygon_inverse, "polygon power-inverse degrees (i ≥ 3)")->capture_default_str();
+  app.add_option("--polygon-cauchy", polygon_cauchy, "polygon Cauchy degrees (i ≥ 3)")->capture_default_str();
+  app.add_option("--polygon-compact", polygon_compact, "polygon compact degrees (even i ≥ 2; odd ones skipped)")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try {
     skelconv::codegen::GeneratorRequest request;
     request.command_line = "skelconv-codegen --inverse " + inverse + " --cauchy " + cauchy + " --compact " + compact +
-                           " --weights " + weights;
+                           " --weights " + weights + " --polygon-inverse " + polygon_inverse + " --polygon-cauchy " +
+                           polygon_cauchy + " --polygon-compact " + polygon_compact;
     const DegreeRange w = parse_range(weights, "--weights");
     if (w.last > skelconv::max_weight_degree)
       throw CLI::ValidationError("--weights", "SegmentInput holds weights up to degree " +
@@ -78,8 +85,24 @@ int main(int argc, char** argv) {
       for (int i = range.first; i <= range.last; ++i)
         for (int d = w.first; d <= w.last; ++d) request.segment_kernels.push_back({family, i, d});
     }
+    // Polygons (SPEC §3): i = 2 diverges for inverse kernels and is excluded
+    // by Hubert 2012 §6; compact kernels k_R^{2j} only (§8).
+    const std::pair<KernelFamily, DegreeRange> polygon_families[] = {
+        {KernelFamily::inverse, parse_range(polygon_inverse, "--polygon-inverse")},
+        {KernelFamily::cauchy, parse_range(polygon_cauchy, "--polygon-cauchy")},
+        {KernelFamily::compact, parse_range(polygon_compact, "--polygon-compact")},
+    };
+    for (const auto& [family, range] : polygon_families) {
+      const int lowest = family == KernelFamily::compact ? 2 : 3;
+      if (range.last >= range.first && range.first < lowest)
+        throw CLI::ValidationError("polygon " + std::string(skelconv::family_name(family)),
+                                   "degrees start at " + std::to_string(lowest));
+      for (int i = range.first; i <= range.last; ++i)
+        if (family != KernelFamily::compact || i % 2 == 0) request.polygon_kernels.push_back({family, i});
+    }
     skelconv::codegen::write_generated_folder(request, out);
-    std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels to " << out << '\n';
+    std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels and "
+              << request.polygon_kernels.size() << " polygon edge kernels to " << out << '\n';
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

@@ -107,7 +107,7 @@ class SegmentProgramBuilder {
 
     Choice choice{targets, {}};
     if (spec_.family == KernelFamily::compact) {
-      const MomentSymbols symbols = compact_symbols();
+      const MomentSymbols symbols = symbols_ = compact_symbols();
       if (spec_.degree % 2 == 0) {
         // t^k q^(i/2) is a polynomial of degree ≤ i + k: an N-point
         // Gauss–Legendre rule with 2N − 1 ≥ i + k is exact and, all terms
@@ -156,7 +156,7 @@ class SegmentProgramBuilder {
       choice.alternatives.push_back({{}, "recurrence (1) downwards from J_0, J_1", {}, values_from(downward), {}});
       choice.generic = choice.alternatives.size() - 1;
     } else {
-      const MomentSymbols symbols = infinite_support_symbols();
+      const MomentSymbols symbols = symbols_ = infinite_support_symbols();
       const int top_index = highest_level();
       {
         // Far from the line compared with |AB| (D ≥ 2a²): the kernel is nearly
@@ -437,6 +437,7 @@ class SegmentProgramBuilder {
   ex a_, b_, c_, D_, a_minus_b_;
   std::vector<std::pair<symbol, ex>> upward_steps_;  // definitions only the upward form reads
   std::vector<MomentRequest> requests_;               // what choose_moments computes
+  MomentSymbols symbols_;                             // the base symbols it defined
 };
 
 

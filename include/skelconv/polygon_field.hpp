@@ -5,20 +5,41 @@
 //     f(P) = ∬_Ω K(|P − Q|) dQ
 //
 // This is the contract between the runtime (skelconv/polygon.hpp validates
-// the polygon once) and the generated per-edge kernels. The caller
-// guarantees: at least 3 vertices in boundary order, counter-clockwise about
-// the unit normal `normal`, coplanar, simple, non-zero area; a kernel degree
-// the table supports (polygon_supported_degrees).
+// the polygon once) and the generated per-edge kernels
+// (generated/polygon_*.hpp, written by codegen/polygon_families.cpp, whose
+// header derives the formulas). The caller guarantees: at least 3 vertices
+// in boundary order, counter-clockwise about the unit normal `normal`,
+// coplanar, simple, non-zero area; a kernel degree the table supports
+// (polygon_supported_degrees).
 //
-// STUB: the implementation lands with issue 3; until then every evaluation
-// throws std::logic_error.
+// What this driver adds to the edge terms, and why:
+//  * Θ = Σ_m θ_m is exactly 0 (P̄ outside) or 2π (inside) unless P̄ is on
+//    the boundary. It multiplies ζ^(2−i), which is huge near the plane, so
+//    the rounding of the sum must not enter: Θ is snapped to the nearest
+//    multiple of 2π when within 1e-6 of it (P̄ on the boundary keeps the
+//    computed sum: π on an edge, the interior angle at a vertex).
+//  * An edge with h = 0 (P̄ on its line) contributes nothing to f (its fan
+//    triangle is flat); its θ would be ±π by the sign of a zero, so it is
+//    left out of Θ as well.
+//  * Inverse kernels with P in the closed polygon (z = 0, P̄ inside or on
+//    the boundary): the integral diverges, f = +∞ and ∇f = (+∞, +∞, +∞), as
+//    for a point on an inverse segment.
+//  * Compact kernels: |z| ≥ R gives f = 0, ∇f = 0; an edge is clipped to
+//    the support disc of radius √(R² − z²) around P̄ (skelconv/clip.hpp).
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "generated/polygon_table.hpp"
+#include "skelconv/clip.hpp"
+#include "skelconv/polygon_edge_input.hpp"
 #include "skelconv/segment_input.hpp"  // KernelFamily
 
 namespace skelconv {
@@ -34,35 +55,150 @@ struct PolygonInput {
   T R = T(1);      ///< support radius (compact only)
 };
 
-/// The degrees the generated table offers for polygons, ascending:
-/// inverse 3…12, cauchy 3…12, compact 4, 6, …, 12.
+/// The degrees the generated table offers for polygons, ascending
+/// (the generator's defaults: inverse 3…12, cauchy 3…12, compact 4, 6, …, 12).
 inline std::vector<int> polygon_supported_degrees(KernelFamily family) {
   std::vector<int> degrees;
-  if (family == KernelFamily::compact) {
-    for (int i = 4; i <= 12; i += 2) degrees.push_back(i);
-  } else {
-    for (int i = 3; i <= 12; ++i) degrees.push_back(i);
-  }
+  for (const auto& k : generated::polygon_edge_kernels<double>())
+    if (k.family == family) degrees.push_back(k.degree);
   return degrees;
 }
 
-/// f(P). Inverse kernels with P in the closed polygon (z = 0 exactly, P̄ in Ω
+namespace detail {
+
+/// Θ = Σ θ_m snapped to a multiple of 2π when it is one up to rounding.
+template <class T>
+T snap_winding_angle(const T& theta_sum) {
+  using std::abs;
+  using std::round;
+  const T two_pi = 2 * std::numbers::pi_v<T>;
+  const T turns = round(theta_sum / two_pi);
+  return abs(theta_sum - turns * two_pi) <= T(1e-6) ? turns * two_pi : theta_sum;
+}
+
+template <class T>
+T integer_power(T x, int n) {
+  T result(1);
+  if (n < 0) {
+    x = T(1) / x;
+    n = -n;
+  }
+  for (; n > 0; --n) result *= x;
+  return result;
+}
+
+/// f and/or ∇f (grad != nullptr) of the polygon at p.
+template <class T>
+T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool want_f, std::array<T, 3>* grad) {
+  using std::abs;
+  using std::sqrt;
+  const auto* kernel = generated::find_polygon_edge_kernel<T>(poly.family, poly.degree);
+  if (kernel == nullptr)
+    throw std::invalid_argument("polygon: no generated kernel for " + std::string(family_name(poly.family)) +
+                                " degree " + std::to_string(poly.degree));
+  const auto& n = poly.normal;
+  const auto& v = poly.vertices;
+  const std::size_t count = v.size();
+  const T z = (p[0] - v[0][0]) * n[0] + (p[1] - v[0][1]) * n[1] + (p[2] - v[0][2]) * n[2];
+  const std::array<T, 3> foot = {p[0] - z * n[0], p[1] - z * n[1], p[2] - z * n[2]};
+  const bool compact = poly.family == KernelFamily::compact;
+  if (grad) *grad = {T(0), T(0), T(0)};
+  if (compact && !(abs(z) < poly.R)) return T(0);  // the support ball misses the plane
+  const T disc_radius = compact ? sqrt((poly.R - abs(z)) * (poly.R + abs(z))) : T(0);
+
+  auto edge_function = want_f ? (grad ? kernel->f_and_grad : kernel->f) : kernel->grad;
+  T theta_sum = 0, theta_in_sum = 0, S_f = 0, S_g = 0;
+  bool on_boundary = false;
+  PolygonEdgeInput<T> in;
+  in.p = foot;
+  in.normal = n;
+  in.z = z;
+  in.s = poly.s;
+  in.R = poly.R;
+  for (std::size_t m = 0; m < count; ++m) {
+    in.a = v[m];
+    in.b = v[(m + 1) % count];
+    if (compact) {
+      const auto clip = clip_to_ball(in.a, in.b, foot, disc_radius);
+      // An edge that misses the disc still has its θ: [t0, t1] = [0, 0].
+      in.t0 = clip ? clip->t0 : T(0);
+      in.t1 = clip ? clip->t1 : T(0);
+    }
+    PolygonEdgeTerms<T> terms;
+    edge_function(in, terms);
+    if (terms.h == T(0)) {
+      // P̄ on the edge's line: no fan triangle. On the closed edge itself?
+      const T dot = (in.a[0] - foot[0]) * (in.b[0] - foot[0]) + (in.a[1] - foot[1]) * (in.b[1] - foot[1]) +
+                    (in.a[2] - foot[2]) * (in.b[2] - foot[2]);
+      on_boundary = on_boundary || dot <= T(0);
+    } else {
+      theta_sum += terms.theta;
+      theta_in_sum += terms.theta_in;
+      S_f += terms.S_f;
+      S_g += terms.S_g;
+    }
+    if (grad) {
+      // In-plane part: −(E × n) ∫ K over the edge (divergence theorem).
+      const T e[3] = {in.b[0] - in.a[0], in.b[1] - in.a[1], in.b[2] - in.a[2]};
+      (*grad)[0] -= (e[1] * n[2] - e[2] * n[1]) * terms.J_g;
+      (*grad)[1] -= (e[2] * n[0] - e[0] * n[2]) * terms.J_g;
+      (*grad)[2] -= (e[0] * n[1] - e[1] * n[0]) * terms.J_g;
+    }
+  }
+  const T Theta = snap_winding_angle(theta_sum);
+  const int i = poly.degree;
+  T f = 0, dfdz = 0;
+  if (compact) {
+    // C = (R² w^(j+1) (Θ − Σθ_in) + Σ S_f) / (2(j+1)), ∂C/∂z = −(z/R²)(R² w^j (Θ − Σθ_in) + Σ S_g).
+    const int j = i / 2;
+    const T R2 = poly.R * poly.R;
+    const T w = (poly.R - abs(z)) * (poly.R + abs(z)) / R2;
+    const T outer_angle = Theta - theta_in_sum;
+    const T w_j = integer_power(w, j);
+    f = (R2 * w_j * w * outer_angle + S_f) / T(2 * (j + 1));
+    dfdz = -z / R2 * (R2 * w_j * outer_angle + S_g);
+  } else {
+    const bool inverse = poly.family == KernelFamily::inverse;
+    if (inverse && z == T(0) && (Theta != T(0) || on_boundary)) {
+      const T inf = std::numeric_limits<T>::infinity();
+      if (grad) *grad = {inf, inf, inf};
+      return inf;
+    }
+    // C = (ζ^(2−i) Θ − Σ S_f) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ S_g).
+    const T alpha = inverse ? T(1) : poly.s;
+    const T zeta2 = alpha * z * z + (inverse ? T(0) : T(1));
+    const T zeta = sqrt(zeta2);
+    const T winding_f = Theta == T(0) ? T(0) : integer_power(zeta, 2 - i) * Theta;
+    const T winding_g = Theta == T(0) ? T(0) : integer_power(zeta, -i) * Theta;
+    f = (winding_f - S_f) / (alpha * T(i - 2));
+    dfdz = -z * (winding_g - S_g);
+  }
+  if (grad)
+    for (int k = 0; k < 3; ++k) (*grad)[k] += dfdz * n[k];
+  return f;
+}
+
+}  // namespace detail
+
+/// f(P). Inverse kernels with P in the closed polygon (z = 0, P̄ in Ω
 /// or on its boundary) give +inf (the integral diverges there).
 template <class T>
-T polygon_f(const PolygonInput<T>&, const std::array<T, 3>&) {
-  throw std::logic_error("polygon_f: not implemented yet");
+T polygon_f(const PolygonInput<T>& poly, const std::array<T, 3>& p) {
+  return detail::polygon_evaluate<T>(poly, p, true, nullptr);
 }
 
 /// ∇f(P); (+inf, +inf, +inf) where f is +inf.
 template <class T>
-std::array<T, 3> polygon_grad(const PolygonInput<T>&, const std::array<T, 3>&) {
-  throw std::logic_error("polygon_grad: not implemented yet");
+std::array<T, 3> polygon_grad(const PolygonInput<T>& poly, const std::array<T, 3>& p) {
+  std::array<T, 3> grad;
+  detail::polygon_evaluate<T>(poly, p, false, &grad);
+  return grad;
 }
 
 /// f(P) and ∇f(P) together.
 template <class T>
-T polygon_f_and_grad(const PolygonInput<T>&, const std::array<T, 3>&, std::array<T, 3>&) {
-  throw std::logic_error("polygon_f_and_grad: not implemented yet");
+T polygon_f_and_grad(const PolygonInput<T>& poly, const std::array<T, 3>& p, std::array<T, 3>& grad) {
+  return detail::polygon_evaluate<T>(poly, p, true, &grad);
 }
 
 }  // namespace skelconv

@@ -1,0 +1,194 @@
+// codegen/polygon_families.cpp — see polygon_families.hpp.
+#include "polygon_families.hpp"
+
+#include <map>
+#include <stdexcept>
+
+#include "segment_program_builder.hpp"
+
+namespace skelconv::codegen {
+
+namespace {
+
+// Near the plane, where ζ² ≤ q_min / kNearPlaneRatio, the upward recurrence
+// for H_n would multiply rounding errors by ≥ kNearPlaneRatio a step; the
+// angle integral of polygon_near_plane.hpp is used instead (its integrand's
+// singularities are then ≥ 1.3 away from the real axis).
+const ex kNearPlaneRatio = numeric(4);
+
+// A polygon edge is a segment from Q_m to Q_{m+1} seen from P̄, whose
+// quadratic has the constant term ζ² = β + α z² instead of β: everything
+// else (geometry, J_n and their stable forms) is the segment's.
+class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
+ public:
+  explicit PolygonEdgeProgramBuilder(const SegmentKernelSpec& edge_spec) : SegmentProgramBuilder(edge_spec) {}
+
+  StraightLineProgram build(SegmentOutputs outputs) {
+    read_inputs();
+    define_geometry();
+    define_quadratic();
+    value_ = outputs != SegmentOutputs::gradient;
+    gradient_ = outputs != SegmentOutputs::value;
+    // h = ((Q_m − P̄) × E)·n; cross = AB × AP = (Q_m − P̄) × E.
+    h_ = define("h", normal_[0] * cross_[0] + normal_[1] * cross_[1] + normal_[2] * cross_[2]);
+    // θ = atan2(h, (Q_m − P̄)·(Q_{m+1} − P̄)), and AP·BP is that dot product.
+    program_.add_output("out.h", h_);
+    theta_ = define("theta", GiNaC::atan2(h_, ap_bp_));
+    program_.add_output("out.theta", theta_);
+    if (spec_.family == KernelFamily::compact)
+      build_compact();
+    else
+      build_infinite_support();
+    return std::move(program_);
+  }
+
+ private:
+  void read_inputs() override {
+    for (int i = 0; i < 3; ++i) {
+      A_[i] = input("A", "in.a", i);
+      B_[i] = input("B", "in.b", i);
+      P_[i] = input("P", "in.p", i);
+      normal_[i] = input("n", "in.normal", i);
+    }
+    z_ = symbol("z");
+    program_.add_input(z_, "in.z");
+    w_.push_back(1);  // no weight
+  }
+
+  void adjust_beta() override { beta_ = define("zeta2", beta_ + alpha_ * pow(z_, 2)); }
+
+  // Inverse and Cauchy: f needs H_{i−2}, ∇f needs H_i and J_i.
+  void build_infinite_support() {
+    const int i = spec_.degree;
+    const bool odd = i % 2 != 0;
+    const int lowest_J = odd ? 3 : 2;
+    const int highest_H = gradient_ ? i : i - 2;
+    std::vector<MomentRequest> requests;
+    for (int m = lowest_J; m <= highest_H; m += 2) requests.push_back({"J_" + std::to_string(m), 0, m});
+    std::vector<symbol> J;
+    if (!requests.empty()) {
+      J = choose_moments(requests);
+    } else {
+      symbols_ = infinite_support_symbols();  // f of i = 3 reads only H_1
+    }
+    auto J_at = [&](int m) { return J[static_cast<size_t>((m - lowest_J) / 2)]; };
+
+    const ex zeta2 = beta_;
+    const ex alpha_h = define("alpha_h", alpha_ * h_);
+    const ex slope0 = symbols_.lo.slope, slope1 = symbols_.hi.slope;  // a t − b at t = 0, 1
+    const int lowest_H = value_ ? i - 2 : i;
+
+    std::vector<symbol> targets;
+    if (value_) targets.emplace_back("H_f");
+    if (gradient_) targets.emplace_back("H_g");
+    Choice choice{targets, {}};
+    {
+      // Near the plane compared with the edge (ζ² ≤ q_min/4, q_min the least
+      // q on the edge): H_n as an angle integral, every level in one call.
+      const ex vertex_term = maximum(D_ - kNearPlaneRatio * a_ * zeta2, -b_ * a_minus_b_);
+      Alternative near{{minimum(symbols_.lo.q, symbols_.hi.q) - kNearPlaneRatio * zeta2, vertex_term},
+                       "near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, "
+                       "polygon_edge_H_near_plane (20-point Gauss–Legendre)",
+                       {}, {}, {}};
+      ArrayCall call{"H_near", "polygon_edge_H_near_plane<T>", {std::to_string(lowest_H), std::to_string(highest_H)},
+                     {alpha_h, a_, zeta2, slope0, slope1}, {}, {}};
+      for (int n = lowest_H; n <= highest_H; n += 2)
+        call.elements.emplace_back("H_near_" + std::to_string(call.elements.size()));
+      if (value_) near.values.push_back(call.elements.front());
+      if (gradient_) near.values.push_back(call.elements.back());
+      near.calls.push_back(std::move(call));
+      choice.alternatives.push_back(std::move(near));
+    }
+    {
+      // Upwards from H_0 = θ or H_1, H_n = (H_{n−2} − α h J_n)/ζ².
+      Alternative upward{{}, "H_n = (H_{n−2} − α h J_n)/ζ² upwards from H_" + std::string(odd ? "1" : "0"), {}, {}, {}};
+      std::map<int, ex> H;  // H_n by level
+      if (odd) {
+        // H_1 = [atan(ζ (a t − b) / (α h √q))]_0^1 / ζ, the two atans in one atan2.
+        const symbol zeta("zeta"), H1("H1");
+        upward.steps.emplace_back(zeta, pow(zeta2, numeric(1, 2)));
+        const ex r0 = symbols_.lo.root, r1 = symbols_.hi.root;
+        upward.steps.emplace_back(
+            H1, GiNaC::atan2(alpha_h * zeta * (slope1 * r0 - slope0 * r1),
+                             pow(alpha_h, 2) * r0 * r1 + zeta2 * slope0 * slope1) /
+                    zeta);
+        H[1] = H1;
+      } else {
+        H[0] = theta_;
+      }
+      for (int n = odd ? 3 : 2; n <= highest_H; n += 2) {
+        const symbol Hn("H" + std::to_string(n));
+        upward.steps.emplace_back(Hn, (H[n - 2] - alpha_h * J_at(n)) / zeta2);
+        H[n] = Hn;
+      }
+      if (value_) upward.values.push_back(H[i - 2]);
+      if (gradient_) upward.values.push_back(H[i]);
+      choice.alternatives.push_back(std::move(upward));
+    }
+    choice.generic = choice.alternatives.size() - 1;
+    program_.choose(std::move(choice));
+    if (value_) program_.add_output("out.S_f", targets.front());
+    if (gradient_) {
+      program_.add_output("out.S_g", targets.back());
+      program_.add_output("out.J_g", J_at(i));
+    }
+  }
+
+  // Compact k_R^{2j}: every J_{−2l}, l = 0…j, over the clipped [t0, t1].
+  void build_compact() {
+    const int j = spec_.degree / 2;
+    std::vector<MomentRequest> requests;
+    for (int l = j; l >= 0; --l) requests.push_back({"J_minus" + std::to_string(2 * l), 0, -2 * l});
+    const std::vector<symbol> J = choose_moments(requests);
+    auto J_minus = [&](int l) { return J[static_cast<size_t>(j - l)]; };  // J_{−2l}
+    const ex w = beta_;  // ζ² = 1 − z²/R²
+    const ex t0 = symbols_.lo.t, t1 = symbols_.hi.t;
+    // The clipped part's ends v_k = Γ(t_k) − P̄ = t_k AB − AP: v0 × v1 = (t1 − t0) AB × AP.
+    program_.add_output("out.theta_in",
+                        GiNaC::atan2((t1 - t0) * h_, ap_ap_ - (t0 + t1) * ab_ap_ + t0 * t1 * ab_ab_));
+    if (value_) {
+      ex sum = 0;
+      for (int k = 0; k <= j; ++k) sum += pow(w, k) * J_minus(j - k);
+      program_.add_output("out.S_f", h_ * sum);
+    }
+    if (gradient_) {
+      ex sum = 0;
+      for (int k = 0; k <= j - 1; ++k) sum += pow(w, k) * J_minus(j - 1 - k);
+      program_.add_output("out.S_g", h_ * sum);
+      program_.add_output("out.J_g", J_minus(j));
+    }
+  }
+
+  std::array<ex, 3> normal_;
+  symbol z_;
+  ex h_, theta_;
+  bool value_ = true, gradient_ = true;
+};
+
+}  // namespace
+
+std::string PolygonKernelSpec::name() const {
+  return "polygon_edge_" + std::string(family_name(family)) + "_i" + std::to_string(degree);
+}
+
+std::string PolygonKernelSpec::equation() const {
+  const std::string i = std::to_string(degree);
+  switch (family) {
+    case KernelFamily::inverse:
+      return "C(P) = ∬_Ω |P − Q|^(−" + i + ") dQ";
+    case KernelFamily::cauchy:
+      return "C(P) = ∬_Ω (1 + s |P − Q|²)^(−" + i + "/2) dQ";
+    case KernelFamily::compact:
+      return "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(" + i + "/2) dQ";
+  }
+  throw std::logic_error("unknown family");
+}
+
+StraightLineProgram build_polygon_edge_program(const PolygonKernelSpec& spec, SegmentOutputs outputs) {
+  if (spec.family == KernelFamily::compact ? spec.degree < 2 || spec.degree % 2 != 0 : spec.degree < 3)
+    throw std::invalid_argument(spec.name() + ": polygons take inverse/Cauchy i ≥ 3 and even compact i ≥ 2");
+  const SegmentKernelSpec edge{spec.family, spec.degree, 0};
+  return PolygonEdgeProgramBuilder(edge).build(outputs);
+}
+
+}  // namespace skelconv::codegen

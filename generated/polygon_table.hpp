@@ -1,0 +1,98 @@
+// generated/polygon_table.hpp — every generated polygon edge kernel, for lookup at run time.
+//
+// GENERATED FILE: DO NOT EDIT. Regenerate with
+//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --out generated
+// Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
+// From: codegen/polygon_families.cpp (the contour sum per edge; SPEC §3,
+// Hubert 2012 §5–8), on the segment forms of codegen/segment_families.cpp.
+#pragma once
+
+#include <span>
+
+#include "generated/polygon_inverse.hpp"
+#include "generated/polygon_cauchy.hpp"
+#include "generated/polygon_compact.hpp"
+
+namespace skelconv::generated {
+
+/// One generated polygon edge kernel: the edge terms for f, ∇f and both, with their
+/// operation counts per edge.
+template <class T>
+struct PolygonEdgeKernel {
+  KernelFamily family;
+  int degree;
+  void (*f)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);
+  void (*grad)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);
+  void (*f_and_grad)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);
+  const char* name;
+  const char* equation;
+  OpCount ops_f, ops_grad, ops_f_and_grad;
+};
+
+/// Every generated polygon edge kernel, sorted by family and degree.
+template <class T>
+std::span<const PolygonEdgeKernel<T>> polygon_edge_kernels() {
+  static const PolygonEdgeKernel<T> table[] = {
+      {KernelFamily::inverse, 3, &polygon_edge_inverse_i3_f<T>, &polygon_edge_inverse_i3_grad<T>, &polygon_edge_inverse_i3_f_and_grad<T>, "polygon_edge_inverse_i3",
+       "C(P) = ∬_Ω |P − Q|^(−3) dQ", {36, 48, 1, 3, 2, 0, 0}, {40, 52, 5, 3, 2, 0, 0}, {40, 52, 5, 3, 2, 0, 0}},
+      {KernelFamily::inverse, 4, &polygon_edge_inverse_i4_f<T>, &polygon_edge_inverse_i4_grad<T>, &polygon_edge_inverse_i4_f_and_grad<T>, "polygon_edge_inverse_i4",
+       "C(P) = ∬_Ω |P − Q|^(−4) dQ", {38, 43, 2, 1, 2, 0, 0}, {41, 50, 5, 1, 2, 0, 0}, {41, 50, 5, 1, 2, 0, 0}},
+      {KernelFamily::inverse, 5, &polygon_edge_inverse_i5_f<T>, &polygon_edge_inverse_i5_grad<T>, &polygon_edge_inverse_i5_f_and_grad<T>, "polygon_edge_inverse_i5",
+       "C(P) = ∬_Ω |P − Q|^(−5) dQ", {40, 52, 5, 3, 2, 0, 0}, {43, 65, 7, 3, 2, 0, 0}, {43, 65, 7, 3, 2, 0, 0}},
+      {KernelFamily::inverse, 6, &polygon_edge_inverse_i6_f<T>, &polygon_edge_inverse_i6_grad<T>, &polygon_edge_inverse_i6_f_and_grad<T>, "polygon_edge_inverse_i6",
+       "C(P) = ∬_Ω |P − Q|^(−6) dQ", {41, 50, 5, 1, 2, 0, 0}, {44, 65, 5, 1, 2, 0, 0}, {44, 65, 5, 1, 2, 0, 0}},
+      {KernelFamily::inverse, 7, &polygon_edge_inverse_i7_f<T>, &polygon_edge_inverse_i7_grad<T>, &polygon_edge_inverse_i7_f_and_grad<T>, "polygon_edge_inverse_i7",
+       "C(P) = ∬_Ω |P − Q|^(−7) dQ", {43, 65, 7, 3, 2, 0, 0}, {46, 84, 5, 3, 2, 0, 0}, {46, 84, 5, 3, 2, 0, 0}},
+      {KernelFamily::inverse, 8, &polygon_edge_inverse_i8_f<T>, &polygon_edge_inverse_i8_grad<T>, &polygon_edge_inverse_i8_f_and_grad<T>, "polygon_edge_inverse_i8",
+       "C(P) = ∬_Ω |P − Q|^(−8) dQ", {44, 65, 5, 1, 2, 0, 0}, {47, 78, 5, 1, 2, 0, 0}, {47, 78, 5, 1, 2, 0, 0}},
+      {KernelFamily::inverse, 9, &polygon_edge_inverse_i9_f<T>, &polygon_edge_inverse_i9_grad<T>, &polygon_edge_inverse_i9_f_and_grad<T>, "polygon_edge_inverse_i9",
+       "C(P) = ∬_Ω |P − Q|^(−9) dQ", {46, 84, 5, 3, 2, 0, 0}, {49, 99, 5, 3, 2, 0, 0}, {49, 99, 5, 3, 2, 0, 0}},
+      {KernelFamily::inverse, 10, &polygon_edge_inverse_i10_f<T>, &polygon_edge_inverse_i10_grad<T>, &polygon_edge_inverse_i10_f_and_grad<T>, "polygon_edge_inverse_i10",
+       "C(P) = ∬_Ω |P − Q|^(−10) dQ", {47, 78, 5, 1, 2, 0, 0}, {50, 91, 5, 1, 2, 0, 0}, {50, 91, 5, 1, 2, 0, 0}},
+      {KernelFamily::inverse, 11, &polygon_edge_inverse_i11_f<T>, &polygon_edge_inverse_i11_grad<T>, &polygon_edge_inverse_i11_f_and_grad<T>, "polygon_edge_inverse_i11",
+       "C(P) = ∬_Ω |P − Q|^(−11) dQ", {49, 99, 5, 3, 2, 0, 0}, {52, 114, 5, 3, 2, 0, 0}, {52, 114, 5, 3, 2, 0, 0}},
+      {KernelFamily::inverse, 12, &polygon_edge_inverse_i12_f<T>, &polygon_edge_inverse_i12_grad<T>, &polygon_edge_inverse_i12_f_and_grad<T>, "polygon_edge_inverse_i12",
+       "C(P) = ∬_Ω |P − Q|^(−12) dQ", {50, 91, 5, 1, 2, 0, 0}, {53, 104, 5, 1, 2, 0, 0}, {53, 104, 5, 1, 2, 0, 0}},
+      {KernelFamily::cauchy, 3, &polygon_edge_cauchy_i3_f<T>, &polygon_edge_cauchy_i3_grad<T>, &polygon_edge_cauchy_i3_f_and_grad<T>, "polygon_edge_cauchy_i3",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ", {37, 57, 1, 3, 2, 0, 0}, {41, 61, 5, 3, 2, 0, 0}, {41, 61, 5, 3, 2, 0, 0}},
+      {KernelFamily::cauchy, 4, &polygon_edge_cauchy_i4_f<T>, &polygon_edge_cauchy_i4_grad<T>, &polygon_edge_cauchy_i4_f_and_grad<T>, "polygon_edge_cauchy_i4",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ", {39, 53, 2, 1, 2, 0, 0}, {42, 60, 5, 1, 2, 0, 0}, {42, 60, 5, 1, 2, 0, 0}},
+      {KernelFamily::cauchy, 5, &polygon_edge_cauchy_i5_f<T>, &polygon_edge_cauchy_i5_grad<T>, &polygon_edge_cauchy_i5_f_and_grad<T>, "polygon_edge_cauchy_i5",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ", {41, 61, 5, 3, 2, 0, 0}, {44, 74, 7, 3, 2, 0, 0}, {44, 74, 7, 3, 2, 0, 0}},
+      {KernelFamily::cauchy, 6, &polygon_edge_cauchy_i6_f<T>, &polygon_edge_cauchy_i6_grad<T>, &polygon_edge_cauchy_i6_f_and_grad<T>, "polygon_edge_cauchy_i6",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ", {42, 60, 5, 1, 2, 0, 0}, {45, 75, 5, 1, 2, 0, 0}, {45, 75, 5, 1, 2, 0, 0}},
+      {KernelFamily::cauchy, 7, &polygon_edge_cauchy_i7_f<T>, &polygon_edge_cauchy_i7_grad<T>, &polygon_edge_cauchy_i7_f_and_grad<T>, "polygon_edge_cauchy_i7",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ", {44, 74, 7, 3, 2, 0, 0}, {47, 93, 5, 3, 2, 0, 0}, {47, 93, 5, 3, 2, 0, 0}},
+      {KernelFamily::cauchy, 8, &polygon_edge_cauchy_i8_f<T>, &polygon_edge_cauchy_i8_grad<T>, &polygon_edge_cauchy_i8_f_and_grad<T>, "polygon_edge_cauchy_i8",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ", {45, 75, 5, 1, 2, 0, 0}, {48, 88, 5, 1, 2, 0, 0}, {48, 88, 5, 1, 2, 0, 0}},
+      {KernelFamily::cauchy, 9, &polygon_edge_cauchy_i9_f<T>, &polygon_edge_cauchy_i9_grad<T>, &polygon_edge_cauchy_i9_f_and_grad<T>, "polygon_edge_cauchy_i9",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ", {47, 93, 5, 3, 2, 0, 0}, {50, 108, 5, 3, 2, 0, 0}, {50, 108, 5, 3, 2, 0, 0}},
+      {KernelFamily::cauchy, 10, &polygon_edge_cauchy_i10_f<T>, &polygon_edge_cauchy_i10_grad<T>, &polygon_edge_cauchy_i10_f_and_grad<T>, "polygon_edge_cauchy_i10",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ", {48, 88, 5, 1, 2, 0, 0}, {51, 101, 5, 1, 2, 0, 0}, {51, 101, 5, 1, 2, 0, 0}},
+      {KernelFamily::cauchy, 11, &polygon_edge_cauchy_i11_f<T>, &polygon_edge_cauchy_i11_grad<T>, &polygon_edge_cauchy_i11_f_and_grad<T>, "polygon_edge_cauchy_i11",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ", {50, 108, 5, 3, 2, 0, 0}, {53, 123, 5, 3, 2, 0, 0}, {53, 123, 5, 3, 2, 0, 0}},
+      {KernelFamily::cauchy, 12, &polygon_edge_cauchy_i12_f<T>, &polygon_edge_cauchy_i12_grad<T>, &polygon_edge_cauchy_i12_f_and_grad<T>, "polygon_edge_cauchy_i12",
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ", {51, 101, 5, 1, 2, 0, 0}, {54, 114, 5, 1, 2, 0, 0}, {54, 114, 5, 1, 2, 0, 0}},
+      {KernelFamily::compact, 4, &polygon_edge_compact_i4_f<T>, &polygon_edge_compact_i4_grad<T>, &polygon_edge_compact_i4_f_and_grad<T>, "polygon_edge_compact_i4",
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ", {74, 131, 1, 0, 2, 0, 0}, {73, 129, 1, 0, 2, 0, 0}, {75, 133, 1, 0, 2, 0, 0}},
+      {KernelFamily::compact, 6, &polygon_edge_compact_i6_f<T>, &polygon_edge_compact_i6_grad<T>, &polygon_edge_compact_i6_f_and_grad<T>, "polygon_edge_compact_i6",
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {82, 156, 1, 0, 2, 0, 0}, {81, 153, 1, 0, 2, 0, 0}, {84, 158, 1, 0, 2, 0, 0}},
+      {KernelFamily::compact, 8, &polygon_edge_compact_i8_f<T>, &polygon_edge_compact_i8_grad<T>, &polygon_edge_compact_i8_f_and_grad<T>, "polygon_edge_compact_i8",
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ", {90, 179, 1, 0, 2, 0, 0}, {89, 177, 1, 0, 2, 0, 0}, {93, 183, 1, 0, 2, 0, 0}},
+      {KernelFamily::compact, 10, &polygon_edge_compact_i10_f<T>, &polygon_edge_compact_i10_grad<T>, &polygon_edge_compact_i10_f_and_grad<T>, "polygon_edge_compact_i10",
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {98, 203, 1, 0, 2, 0, 0}, {97, 201, 1, 0, 2, 0, 0}, {102, 208, 1, 0, 2, 0, 0}},
+      {KernelFamily::compact, 12, &polygon_edge_compact_i12_f<T>, &polygon_edge_compact_i12_grad<T>, &polygon_edge_compact_i12_f_and_grad<T>, "polygon_edge_compact_i12",
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ", {106, 227, 1, 0, 2, 0, 0}, {105, 225, 1, 0, 2, 0, 0}, {111, 233, 1, 0, 2, 0, 0}},
+  };
+  return table;
+}
+
+/// The edge kernel for (family, degree), or nullptr if it was not generated.
+template <class T>
+const PolygonEdgeKernel<T>* find_polygon_edge_kernel(KernelFamily family, int degree) {
+  for (const PolygonEdgeKernel<T>& k : polygon_edge_kernels<T>())
+    if (k.family == family && k.degree == degree) return &k;
+  return nullptr;
+}
+
+}  // namespace skelconv::generated
