@@ -216,7 +216,7 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
                       kPolygonSources)
        << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
        << "#include <skelconv/gauss_moments.hpp>\n#include <skelconv/polygon_edge_input.hpp>\n"
-       << "#include <skelconv/polygon_near_plane.hpp>\n#include <skelconv/segment_input.hpp>\n"
+       << "#include <skelconv/polygon_angle_integrals.hpp>\n#include <skelconv/segment_input.hpp>\n"
        << "#include <skelconv/stable_recurrence.hpp>\n\n"
        << "namespace skelconv::generated {\n\n"
        << body << "}  // namespace skelconv::generated\n";

@@ -12,9 +12,9 @@ namespace {
 
 // Near the plane, where ζ² ≤ q_min / kNearPlaneRatio, the upward recurrence
 // for H_n would multiply rounding errors by ≥ kNearPlaneRatio a step; the
-// angle integral of polygon_near_plane.hpp is used instead (its integrand's
+// angle integral of polygon_angle_integrals.hpp is used instead (its integrand's
 // singularities are then ≥ 1.3 away from the real axis).
-const ex kNearPlaneRatio = numeric(4);
+const ex kNearPlaneRatio = numeric(2);
 
 // A polygon edge is a segment from Q_m to Q_{m+1} seen from P̄, whose
 // quadratic has the constant term ζ² = β + α z² instead of β: everything
@@ -134,27 +134,63 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
     }
   }
 
-  // Compact k_R^{2j}: every J_{−2l}, l = 0…j, over the clipped [t0, t1].
+  // Compact k_R^{2j}: G^(p) = h ∫_{t0}^{t1} q^p / ρ² dt for p = j + 1 (f) and
+  // p = j (∂f/∂z), and J_{−2j} (in-plane ∇f), over the clipped [t0, t1].
+  // Since q = w − ρ²/R², G^(p) = w^p θ_in − (h/R²) Σ_{k<p} w^k J_{−2(p−1−k)}
+  // (θ_in the angle of [t0, t1] at P̄): exact, but when the chord lies near
+  // the rim of the support disc (q ≪ w on it) the two terms cancel, up to
+  // (w/q)^p. There the integral is taken directly in u = tan φ instead.
   void build_compact() {
     const int j = spec_.degree / 2;
     std::vector<MomentRequest> requests;
     for (int l = j; l >= 0; --l) requests.push_back({"J_minus" + std::to_string(2 * l), 0, -2 * l});
     const std::vector<symbol> J = choose_moments(requests);
     auto J_minus = [&](int l) { return J[static_cast<size_t>(j - l)]; };  // J_{−2l}
-    const ex w = beta_;  // ζ² = 1 − z²/R²
+    const ex w = beta_;                 // ζ² = 1 − z²/R²
+    const ex inv_R2 = -alpha_;          // 1/R²
     const ex t0 = symbols_.lo.t, t1 = symbols_.hi.t;
-    // The clipped part's ends v_k = Γ(t_k) − P̄ = t_k AB − AP: v0 × v1 = (t1 − t0) AB × AP.
-    program_.add_output("out.theta_in",
-                        GiNaC::atan2((t1 - t0) * h_, ap_ap_ - (t0 + t1) * ab_ap_ + t0 * t1 * ab_ab_));
-    if (value_) {
-      ex sum = 0;
-      for (int k = 0; k <= j; ++k) sum += pow(w, k) * J_minus(j - k);
-      program_.add_output("out.S_f", h_ * sum);
+    // In-plane slopes |E|² t − E·(P̄ − A) at the clip's ends: tan φ = slope/|h|.
+    const ex slope0 = define("plane_slope0", ab_ab_ * t0 - ab_ap_);
+    const ex slope1 = define("plane_slope1", ab_ab_ * t1 - ab_ap_);
+    const int p_lo = gradient_ ? j : j + 1, p_hi = value_ ? j + 1 : j;
+
+    std::vector<symbol> targets;
+    if (value_) targets.emplace_back("G_f");
+    if (gradient_) targets.emplace_back("G_g");
+    Choice choice{targets, {}};
+    {
+      Alternative chord{{4 * pow(h_, 2) - pow(slope0, 2), 4 * pow(h_, 2) - pow(slope1, 2)},
+                        "chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), "
+                        "polygon_edge_G_compact_chord (Gauss–Legendre)",
+                        {}, {}, {}};
+      ArrayCall call{"G_chord", "polygon_edge_G_compact_chord<T>", {std::to_string(p_lo), std::to_string(p_hi)},
+                     {h_, ab_ab_, w, inv_R2, slope0, slope1}, {}, {}};
+      for (int p = p_lo; p <= p_hi; ++p) call.elements.emplace_back("G_chord_" + std::to_string(call.elements.size()));
+      if (value_) chord.values.push_back(call.elements.back());
+      if (gradient_) chord.values.push_back(call.elements.front());
+      chord.calls.push_back(std::move(call));
+      choice.alternatives.push_back(std::move(chord));
     }
+    {
+      // The clipped part's ends v_k = Γ(t_k) − P̄ = t_k AB − AP: v0 × v1 = (t1 − t0) AB × AP.
+      Alternative split{{}, "G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}", {}, {}, {}};
+      const symbol theta_in("theta_in");
+      split.steps.emplace_back(theta_in,
+                               GiNaC::atan2((t1 - t0) * h_, ap_ap_ - (t0 + t1) * ab_ap_ + t0 * t1 * ab_ab_));
+      auto G = [&](int p) {
+        ex sum = 0;
+        for (int k = 0; k < p; ++k) sum += pow(w, k) * J_minus(p - 1 - k);
+        return pow(w, p) * theta_in - inv_R2 * h_ * sum;
+      };
+      if (value_) split.values.push_back(G(j + 1));
+      if (gradient_) split.values.push_back(G(j));
+      choice.alternatives.push_back(std::move(split));
+    }
+    choice.generic = choice.alternatives.size() - 1;
+    program_.choose(std::move(choice));
+    if (value_) program_.add_output("out.S_f", targets.front());
     if (gradient_) {
-      ex sum = 0;
-      for (int k = 0; k <= j - 1; ++k) sum += pow(w, k) * J_minus(j - 1 - k);
-      program_.add_output("out.S_g", h_ * sum);
+      program_.add_output("out.S_g", targets.back());
       program_.add_output("out.J_g", J_minus(j));
     }
   }

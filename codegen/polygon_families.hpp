@@ -19,21 +19,23 @@
 //
 // which divides by ζ² → 0 near the plane; there (ζ² ≤ q_min/4) each H_n is
 // instead the integral in the edge's angle φ, smooth and done by a 20-point
-// Gauss–Legendre rule (skelconv/polygon_near_plane.hpp), exact to rounding.
+// Gauss–Legendre rule (skelconv/polygon_angle_integrals.hpp), exact to rounding.
 // ∇C needs no new integrals: in the plane −Σ_m (E_m × n) J_{i,m} (the
 // divergence theorem: the edges' own segment fields), along n
 // −z (ζ^(−i) Θ − Σ_m H_{i,m}) (the polygon of degree i + 2).
 //
-// Compact k_R^{2j} (Hubert §8; α = −1/R², β = 1, w = ζ² = 1 − z²/R²): the
-// radial integral is a polynomial inside the support disc and constant
-// outside, so
+// Compact k_R^{2j} (Hubert §8) is the same algebra with α = −1/R², β = 1,
+// i → −2j and w = ζ² = 1 − z²/R²: the radial integral is a polynomial inside
+// the support disc (radius √(R² − z²) about P̄) and constant outside, so
 //
-//     C = (R² w^(j+1) (Θ − Σ_m θ^in_m) + Σ_m h_m Σ_{k=0..j} w^k J_{−2(j−k),m}) / (2(j+1))
+//     C = (R²/(2(j+1))) (w^(j+1) Θ − Σ_m G^(j+1)_m),   G^(p) = h ∫ q^p/ρ² dt
 //
-// with θ^in_m the angle of the part of edge m inside the disc and
-// J_{−2l} = ∫ q^l over that part (exact Gauss–Legendre: a polynomial).
-// This is the third sum of Hubert §8.2 (garbled in the OCR), derived from
-// G^K of §8.1. ∂C/∂z = −(2j/R²) z C_{j−1}, the in-plane part as above.
+// over the part of each edge inside the disc, ∂C/∂z = −z (w^j Θ − Σ_m G^(j)_m).
+// With q = w − ρ²/R², G^(p) = w^p θ_in − (h/R²) Σ_{k<p} w^k J_{−2(p−1−k)}
+// (θ_in the angle of the clipped part, J_{−2l} = ∫ q^l exactly by Gauss–
+// Legendre); near the disc's rim, where that cancels, G^(p) is an angle
+// integral instead. This is the third sum of Hubert §8.2 (garbled in the
+// OCR), derived from G^K of §8.1; the verifier confirms it by quadrature.
 #pragma once
 
 #include <string>

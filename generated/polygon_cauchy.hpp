@@ -13,7 +13,7 @@
 
 #include <skelconv/gauss_moments.hpp>
 #include <skelconv/polygon_edge_input.hpp>
-#include <skelconv/polygon_near_plane.hpp>
+#include <skelconv/polygon_angle_integrals.hpp>
 #include <skelconv/segment_input.hpp>
 #include <skelconv/stable_recurrence.hpp>
 
@@ -57,8 +57,8 @@ void polygon_edge_cauchy_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T r1 = sqrt(q1);
   const T alpha_h = h * in.s;
   T H_f;
-  const T t0 = min(T(c), T(q1)) - T(4) * zeta2;
-  const T t1 = max(T(D - T(4) * zeta2 * a), T(-b * a_minus_b));
+  const T t0 = min(T(c), T(q1)) - T(2) * zeta2;
+  const T t1 = max(T(D - T(2) * zeta2 * a), T(-b * a_minus_b));
   if (t0 >= T(0) && t1 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -133,8 +133,8 @@ void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   }
   const T alpha_h = h * in.s;
   T H_g;
-  const T t4 = t2 - T(4) * zeta2;
-  const T t5 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t4 = t2 - T(2) * zeta2;
+  const T t5 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -212,8 +212,8 @@ void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t4 = t2 - T(4) * zeta2;
-  const T t5 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t4 = t2 - T(2) * zeta2;
+  const T t5 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -294,8 +294,8 @@ void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   }
   const T alpha_h = h * in.s;
   T H_f;
-  const T t5 = t2 - T(4) * zeta2;
-  const T t6 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t5 = t2 - T(2) * zeta2;
+  const T t6 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t5 >= T(0) && t6 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -376,8 +376,8 @@ void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   }
   const T alpha_h = h * in.s;
   T H_g;
-  const T t7 = t2 - T(4) * zeta2;
-  const T t8 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t7 = t2 - T(2) * zeta2;
+  const T t8 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -462,8 +462,8 @@ void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t7 = t2 - T(4) * zeta2;
-  const T t8 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t7 = t2 - T(2) * zeta2;
+  const T t8 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -543,8 +543,8 @@ void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   }
   const T alpha_h = h * in.s;
   T H_f;
-  const T t4 = t2 - T(4) * zeta2;
-  const T t5 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t4 = t2 - T(2) * zeta2;
+  const T t5 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -628,8 +628,8 @@ void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   }
   const T alpha_h = in.s * h;
   T H_g;
-  const T t8 = t2 - T(4) * zeta2;
-  const T t9 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t8 = t2 - T(2) * zeta2;
+  const T t9 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -717,8 +717,8 @@ void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t8 = t2 - T(4) * zeta2;
-  const T t9 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t8 = t2 - T(2) * zeta2;
+  const T t9 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -807,8 +807,8 @@ void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   }
   const T alpha_h = in.s * h;
   T H_f;
-  const T t7 = t2 - T(4) * zeta2;
-  const T t8 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t7 = t2 - T(2) * zeta2;
+  const T t8 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -900,8 +900,8 @@ void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   }
   const T alpha_h = h * in.s;
   T H_g;
-  const T t12 = t2 - T(4) * zeta2;
-  const T t13 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t12 = t2 - T(2) * zeta2;
+  const T t13 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -996,8 +996,8 @@ void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T alpha_h = in.s * h;
   T H_f;
   T H_g;
-  const T t12 = t2 - T(4) * zeta2;
-  const T t13 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t12 = t2 - T(2) * zeta2;
+  const T t13 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -1086,8 +1086,8 @@ void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   }
   const T alpha_h = in.s * h;
   T H_f;
-  const T t8 = t2 - T(4) * zeta2;
-  const T t9 = max(T(D - T(4) * a * zeta2), T(t1));
+  const T t8 = t2 - T(2) * zeta2;
+  const T t9 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1182,8 +1182,8 @@ void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   }
   const T alpha_h = h * in.s;
   T H_g;
-  const T t13 = t2 - T(4) * zeta2;
-  const T t14 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t13 = t2 - T(2) * zeta2;
+  const T t14 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1281,8 +1281,8 @@ void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t13 = t2 - T(4) * zeta2;
-  const T t14 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t13 = t2 - T(2) * zeta2;
+  const T t14 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -1381,8 +1381,8 @@ void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   }
   const T alpha_h = h * in.s;
   T H_f;
-  const T t12 = t2 - T(4) * zeta2;
-  const T t13 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t12 = t2 - T(2) * zeta2;
+  const T t13 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1482,8 +1482,8 @@ void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   }
   const T alpha_h = h * in.s;
   T H_g;
-  const T t15 = t2 - T(4) * zeta2;
-  const T t16 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t15 = t2 - T(2) * zeta2;
+  const T t16 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1586,8 +1586,8 @@ void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t15 = t2 - T(4) * zeta2;
-  const T t16 = max(T(D - T(4) * a * zeta2), T(t1));
+  const T t15 = t2 - T(2) * zeta2;
+  const T t16 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -1686,8 +1686,8 @@ void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   }
   const T alpha_h = h * in.s;
   T H_f;
-  const T t13 = t2 - T(4) * zeta2;
-  const T t14 = max(T(D - T(4) * a * zeta2), T(t1));
+  const T t13 = t2 - T(2) * zeta2;
+  const T t14 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1790,8 +1790,8 @@ void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   }
   const T alpha_h = in.s * h;
   T H_g;
-  const T t16 = t2 - T(4) * zeta2;
-  const T t17 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t16 = t2 - T(2) * zeta2;
+  const T t17 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1897,8 +1897,8 @@ void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t16 = t2 - T(4) * zeta2;
-  const T t17 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t16 = t2 - T(2) * zeta2;
+  const T t17 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -2005,8 +2005,8 @@ void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   }
   const T alpha_h = h * in.s;
   T H_f;
-  const T t15 = t2 - T(4) * zeta2;
-  const T t16 = max(T(D - T(4) * a * zeta2), T(t1));
+  const T t15 = t2 - T(2) * zeta2;
+  const T t16 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2114,8 +2114,8 @@ void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   }
   const T alpha_h = h * in.s;
   T H_g;
-  const T t18 = t2 - T(4) * zeta2;
-  const T t19 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t18 = t2 - T(2) * zeta2;
+  const T t19 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2226,8 +2226,8 @@ void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t18 = t2 - T(4) * zeta2;
-  const T t19 = max(T(D - T(4) * a * zeta2), T(t1));
+  const T t18 = t2 - T(2) * zeta2;
+  const T t19 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -2334,8 +2334,8 @@ void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   }
   const T alpha_h = h * in.s;
   T H_f;
-  const T t16 = t2 - T(4) * zeta2;
-  const T t17 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t16 = t2 - T(2) * zeta2;
+  const T t17 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2446,8 +2446,8 @@ void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   }
   const T alpha_h = h * in.s;
   T H_g;
-  const T t19 = t2 - T(4) * zeta2;
-  const T t20 = max(T(D - T(4) * a * zeta2), T(t1));
+  const T t19 = t2 - T(2) * zeta2;
+  const T t20 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t19 >= T(0) && t20 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2561,8 +2561,8 @@ void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t19 = t2 - T(4) * zeta2;
-  const T t20 = max(T(D - T(4) * a * zeta2), T(t1));
+  const T t19 = t2 - T(2) * zeta2;
+  const T t20 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t19 >= T(0) && t20 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -2677,8 +2677,8 @@ void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   }
   const T alpha_h = h * in.s;
   T H_f;
-  const T t18 = t2 - T(4) * zeta2;
-  const T t19 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t18 = t2 - T(2) * zeta2;
+  const T t19 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2794,8 +2794,8 @@ void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   }
   const T alpha_h = h * in.s;
   T H_g;
-  const T t21 = t2 - T(4) * zeta2;
-  const T t22 = max(T(D - T(4) * zeta2 * a), T(t1));
+  const T t21 = t2 - T(2) * zeta2;
+  const T t22 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t21 >= T(0) && t22 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2914,8 +2914,8 @@ void polygon_edge_cauchy_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T alpha_h = h * in.s;
   T H_f;
   T H_g;
-  const T t21 = t2 - T(4) * zeta2;
-  const T t22 = max(T(D - T(4) * a * zeta2), T(t1));
+  const T t21 = t2 - T(2) * zeta2;
+  const T t22 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t21 >= T(0) && t22 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;

@@ -13,7 +13,7 @@
 
 #include <skelconv/gauss_moments.hpp>
 #include <skelconv/polygon_edge_input.hpp>
-#include <skelconv/polygon_near_plane.hpp>
+#include <skelconv/polygon_angle_integrals.hpp>
 #include <skelconv/segment_input.hpp>
 #include <skelconv/stable_recurrence.hpp>
 
@@ -54,8 +54,8 @@ void polygon_edge_inverse_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T H_f;
-  const T t0 = min(T(c), T(q1)) - T(4) * zeta2;
-  const T t1 = max(T(D - T(4) * zeta2 * ab_ab), T(-ab_ap * a_minus_b));
+  const T t0 = min(T(c), T(q1)) - T(2) * zeta2;
+  const T t1 = max(T(D - T(2) * zeta2 * ab_ab), T(-ab_ap * a_minus_b));
   if (t0 >= T(0) && t1 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -127,8 +127,8 @@ void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_3 = (ab_ap / r0 + a_minus_b / r1) / D;
   }
   T H_g;
-  const T t4 = t2 - T(4) * zeta2;
-  const T t5 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t4 = t2 - T(2) * zeta2;
+  const T t5 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -203,8 +203,8 @@ void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   T H_f;
   T H_g;
-  const T t4 = t2 - T(4) * zeta2;
-  const T t5 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t4 = t2 - T(2) * zeta2;
+  const T t5 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -282,8 +282,8 @@ void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_2 = J2;
   }
   T H_f;
-  const T t5 = t2 - T(4) * zeta2;
-  const T t6 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t5 = t2 - T(2) * zeta2;
+  const T t6 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t5 >= T(0) && t6 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -361,8 +361,8 @@ void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_4 = (T(1) / T(2)) * t6 * (ab_ap / c + a_minus_b / q1 + J2 * ab_ab);
   }
   T H_g;
-  const T t7 = t2 - T(4) * zeta2;
-  const T t8 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t7 = t2 - T(2) * zeta2;
+  const T t8 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -444,8 +444,8 @@ void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   T H_f;
   T H_g;
-  const T t7 = t2 - T(4) * zeta2;
-  const T t8 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t7 = t2 - T(2) * zeta2;
+  const T t8 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -522,8 +522,8 @@ void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_3 = (a_minus_b / r1 + ab_ap / r0) / D;
   }
   T H_f;
-  const T t4 = t2 - T(4) * zeta2;
-  const T t5 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t4 = t2 - T(2) * zeta2;
+  const T t5 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -604,8 +604,8 @@ void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_5 = (T(1) / T(3)) * t7 * (t5 * ab_ap / c + t4 * a_minus_b / q1 + T(2) * t6 * ab_ab * t7);
   }
   T H_g;
-  const T t8 = t2 - T(4) * zeta2;
-  const T t9 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t8 = t2 - T(2) * zeta2;
+  const T t9 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -690,8 +690,8 @@ void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   T H_f;
   T H_g;
-  const T t8 = t2 - T(4) * zeta2;
-  const T t9 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t8 = t2 - T(2) * zeta2;
+  const T t9 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -777,8 +777,8 @@ void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_4 = (T(1) / T(2)) * (ab_ap / c + a_minus_b / q1 + ab_ab * J2) * t6;
   }
   T H_f;
-  const T t7 = t2 - T(4) * zeta2;
-  const T t8 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t7 = t2 - T(2) * zeta2;
+  const T t8 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -867,8 +867,8 @@ void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_6 = (T(1) / T(8)) * t6 * (T(2) * t10 * a_minus_b + T(3) * t6 * t9 * ab_ab + T(2) * ab_ap * t11);
   }
   T H_g;
-  const T t12 = t2 - T(4) * zeta2;
-  const T t13 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t12 = t2 - T(2) * zeta2;
+  const T t13 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -960,8 +960,8 @@ void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   T H_f;
   T H_g;
-  const T t12 = t2 - T(4) * zeta2;
-  const T t13 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t12 = t2 - T(2) * zeta2;
+  const T t13 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -1047,8 +1047,8 @@ void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_5 = (T(1) / T(3)) * (t4 * a_minus_b / q1 + ab_ap * t5 / c + T(2) * ab_ab * t6 * t7) * t7;
   }
   T H_f;
-  const T t8 = t2 - T(4) * zeta2;
-  const T t9 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t8 = t2 - T(2) * zeta2;
+  const T t9 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1140,8 +1140,8 @@ void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_7 = (T(1) / T(15)) * t4 * (T(3) * t11 * ab_ap * t6 + T(3) * t5 * a_minus_b * t12 + T(4) * ab_ab * t4 * t10);
   }
   T H_g;
-  const T t13 = t2 - T(4) * zeta2;
-  const T t14 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t13 = t2 - T(2) * zeta2;
+  const T t14 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1236,8 +1236,8 @@ void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   T H_f;
   T H_g;
-  const T t13 = t2 - T(4) * zeta2;
-  const T t14 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t13 = t2 - T(2) * zeta2;
+  const T t14 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -1333,8 +1333,8 @@ void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_6 = (T(1) / T(8)) * t6 * (T(2) * t10 * ab_ap + T(3) * ab_ab * t6 * t9 + T(2) * a_minus_b * t11);
   }
   T H_f;
-  const T t12 = t2 - T(4) * zeta2;
-  const T t13 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t12 = t2 - T(2) * zeta2;
+  const T t13 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1431,8 +1431,8 @@ void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_8 = (T(1) / T(48)) * (T(5) * t12 * ab_ab * t9 + T(8) * t13 * a_minus_b + T(8) * t14 * ab_ap) * t9;
   }
   T H_g;
-  const T t15 = t2 - T(4) * zeta2;
-  const T t16 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t15 = t2 - T(2) * zeta2;
+  const T t16 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1532,8 +1532,8 @@ void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   T H_f;
   T H_g;
-  const T t15 = t2 - T(4) * zeta2;
-  const T t16 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t15 = t2 - T(2) * zeta2;
+  const T t16 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -1629,8 +1629,8 @@ void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_7 = (T(1) / T(15)) * t4 * (T(3) * t6 * t11 * ab_ap + T(4) * t10 * ab_ab * t4 + T(3) * t5 * a_minus_b * t12);
   }
   T H_f;
-  const T t13 = t2 - T(4) * zeta2;
-  const T t14 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t13 = t2 - T(2) * zeta2;
+  const T t14 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1730,8 +1730,8 @@ void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_9 = (T(1) / T(35)) * (T(5) * a_minus_b * t14 * t4 + T(2) * t13 * ab_ab * t7 + T(5) * ab_ap * t15 * t5) * t7;
   }
   T H_g;
-  const T t16 = t2 - T(4) * zeta2;
-  const T t17 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t16 = t2 - T(2) * zeta2;
+  const T t17 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -1834,8 +1834,8 @@ void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   T H_f;
   T H_g;
-  const T t16 = t2 - T(4) * zeta2;
-  const T t17 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t16 = t2 - T(2) * zeta2;
+  const T t17 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -1939,8 +1939,8 @@ void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     J_8 = (T(1) / T(48)) * (T(5) * ab_ab * t6 * t12 + T(8) * t13 * ab_ap + T(8) * a_minus_b * t14) * t6;
   }
   T H_f;
-  const T t15 = t2 - T(4) * zeta2;
-  const T t16 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t15 = t2 - T(2) * zeta2;
+  const T t16 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2045,8 +2045,8 @@ void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     J_10 = (T(1) / T(384)) * t6 * (T(7) * ab_ab * t6 * t15 + T(48) * t16 * ab_ap + T(48) * a_minus_b * t17);
   }
   T H_g;
-  const T t18 = t2 - T(4) * zeta2;
-  const T t19 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t18 = t2 - T(2) * zeta2;
+  const T t19 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2154,8 +2154,8 @@ void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   }
   T H_f;
   T H_g;
-  const T t18 = t2 - T(4) * zeta2;
-  const T t19 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t18 = t2 - T(2) * zeta2;
+  const T t19 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -2259,8 +2259,8 @@ void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     J_9 = (T(1) / T(35)) * t4 * (T(5) * t6 * ab_ap * t14 + T(5) * t5 * a_minus_b * t15 + T(2) * ab_ab * t4 * t13);
   }
   T H_f;
-  const T t16 = t2 - T(4) * zeta2;
-  const T t17 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t16 = t2 - T(2) * zeta2;
+  const T t17 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2368,8 +2368,8 @@ void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     J_11 = (T(1) / T(315)) * (T(35) * t17 * t6 * ab_ap + T(35) * a_minus_b * t5 * t18 + T(8) * ab_ab * t4 * t16) * t4;
   }
   T H_g;
-  const T t19 = t2 - T(4) * zeta2;
-  const T t20 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t19 = t2 - T(2) * zeta2;
+  const T t20 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t19 >= T(0) && t20 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2480,8 +2480,8 @@ void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   }
   T H_f;
   T H_g;
-  const T t19 = t2 - T(4) * zeta2;
-  const T t20 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t19 = t2 - T(2) * zeta2;
+  const T t20 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t19 >= T(0) && t20 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
@@ -2593,8 +2593,8 @@ void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     J_10 = (T(1) / T(384)) * t6 * (T(48) * a_minus_b * t16 + T(48) * ab_ap * t17 + T(7) * ab_ab * t15 * t6);
   }
   T H_f;
-  const T t18 = t2 - T(4) * zeta2;
-  const T t19 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t18 = t2 - T(2) * zeta2;
+  const T t19 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2707,8 +2707,8 @@ void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     J_12 = (T(1) / T(1280)) * t6 * (T(3) * ab_ab * t6 * t18 + T(128) * ab_ap * t19 + T(128) * a_minus_b * t20);
   }
   T H_g;
-  const T t21 = t2 - T(4) * zeta2;
-  const T t22 = max(T(D - T(4) * ab_ab * zeta2), T(t1));
+  const T t21 = t2 - T(2) * zeta2;
+  const T t22 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t21 >= T(0) && t22 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
@@ -2824,8 +2824,8 @@ void polygon_edge_inverse_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   }
   T H_f;
   T H_g;
-  const T t21 = t2 - T(4) * zeta2;
-  const T t22 = max(T(D - T(4) * zeta2 * ab_ab), T(t1));
+  const T t21 = t2 - T(2) * zeta2;
+  const T t22 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t21 >= T(0) && t22 >= T(0)) {
     // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;

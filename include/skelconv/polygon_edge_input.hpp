@@ -40,9 +40,8 @@ template <class T>
 struct PolygonEdgeTerms {
   T h = T(0);         ///< h_m above
   T theta = T(0);     ///< θ_m = atan2(h_m, (Q_m − P̄)·(Q_{m+1} − P̄))
-  T theta_in = T(0);  ///< compact: the angle of the clipped part [t0, t1]
-  T S_f = T(0);       ///< the edge's part of f
-  T S_g = T(0);       ///< the edge's part of ∂f/∂z
+  T S_f = T(0);       ///< the edge's part of f: H_{i−2} (inverse, Cauchy), G^(j+1) (compact)
+  T S_g = T(0);       ///< the edge's part of ∂f/∂z: H_i, G^(j)
   T J_g = T(0);       ///< ∫_0^1 K(|P − Γ(t)|) dt (∫_{t0}^{t1} for compact): the in-plane gradient
 };
 

@@ -26,8 +26,12 @@
 //    for a point on an inverse segment.
 //  * Compact kernels: |z| ≥ R gives f = 0, ∇f = 0; an edge is clipped to
 //    the support disc of radius √(R² − z²) around P̄ (skelconv/clip.hpp).
+//  * Inverse and Cauchy kernels far from the polygon (distance ≥ 2
+//    diameters): the fans cancel, and skelconv/polygon_far_field.hpp
+//    integrates the definition directly, exact to rounding there.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -39,6 +43,7 @@
 
 #include "generated/polygon_table.hpp"
 #include "skelconv/clip.hpp"
+#include "skelconv/polygon_far_field.hpp"
 #include "skelconv/polygon_edge_input.hpp"
 #include "skelconv/segment_input.hpp"  // KernelFamily
 
@@ -103,11 +108,26 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   const std::array<T, 3> foot = {p[0] - z * n[0], p[1] - z * n[1], p[2] - z * n[2]};
   const bool compact = poly.family == KernelFamily::compact;
   if (grad) *grad = {T(0), T(0), T(0)};
+  if (!compact) {
+    std::array<T, 3> centre = {T(0), T(0), T(0)};
+    for (const auto& q : v)
+      for (int k = 0; k < 3; ++k) centre[k] += q[k] / T(count);
+    T radius2 = 0, distance2 = 0;
+    for (const auto& q : v)
+      radius2 = std::max(radius2, (q[0] - centre[0]) * (q[0] - centre[0]) + (q[1] - centre[1]) * (q[1] - centre[1]) +
+                                      (q[2] - centre[2]) * (q[2] - centre[2]));
+    for (int k = 0; k < 3; ++k) distance2 += (p[k] - centre[k]) * (p[k] - centre[k]);
+    const T ratio = T(polygon_far_field_ratio);
+    if (distance2 >= ratio * ratio * radius2) {
+      const bool inverse = poly.family == KernelFamily::inverse;
+      return polygon_far_field<T>(v, n, poly.degree, inverse ? T(1) : poly.s, inverse ? T(0) : T(1), p, grad);
+    }
+  }
   if (compact && !(abs(z) < poly.R)) return T(0);  // the support ball misses the plane
   const T disc_radius = compact ? sqrt((poly.R - abs(z)) * (poly.R + abs(z))) : T(0);
 
   auto edge_function = want_f ? (grad ? kernel->f_and_grad : kernel->f) : kernel->grad;
-  T theta_sum = 0, theta_in_sum = 0, S_f = 0, S_g = 0;
+  T theta_sum = 0, S_f = 0, S_g = 0;
   bool on_boundary = false;
   PolygonEdgeInput<T> in;
   in.p = foot;
@@ -133,7 +153,6 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
       on_boundary = on_boundary || dot <= T(0);
     } else {
       theta_sum += terms.theta;
-      theta_in_sum += terms.theta_in;
       S_f += terms.S_f;
       S_g += terms.S_g;
     }
@@ -149,14 +168,13 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   const int i = poly.degree;
   T f = 0, dfdz = 0;
   if (compact) {
-    // C = (R² w^(j+1) (Θ − Σθ_in) + Σ S_f) / (2(j+1)), ∂C/∂z = −(z/R²)(R² w^j (Θ − Σθ_in) + Σ S_g).
+    // C = (R²/(2(j+1))) (w^(j+1) Θ − Σ G^(j+1)), ∂C/∂z = −z (w^j Θ − Σ G^(j)).
     const int j = i / 2;
     const T R2 = poly.R * poly.R;
     const T w = (poly.R - abs(z)) * (poly.R + abs(z)) / R2;
-    const T outer_angle = Theta - theta_in_sum;
     const T w_j = integer_power(w, j);
-    f = (R2 * w_j * w * outer_angle + S_f) / T(2 * (j + 1));
-    dfdz = -z / R2 * (R2 * w_j * outer_angle + S_g);
+    f = R2 / T(2 * (j + 1)) * (w_j * w * Theta - S_f);
+    dfdz = -z * (w_j * Theta - S_g);
   } else {
     const bool inverse = poly.family == KernelFamily::inverse;
     if (inverse && z == T(0) && (Theta != T(0) || on_boundary)) {
@@ -164,7 +182,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
       if (grad) *grad = {inf, inf, inf};
       return inf;
     }
-    // C = (ζ^(2−i) Θ − Σ S_f) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ S_g).
+    // C = (ζ^(2−i) Θ − Σ H_{i−2}) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ H_i).
     const T alpha = inverse ? T(1) : poly.s;
     const T zeta2 = alpha * z * z + (inverse ? T(0) : T(1));
     const T zeta = sqrt(zeta2);
