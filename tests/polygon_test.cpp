@@ -20,25 +20,15 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_input_error.hpp"
 #include "reference_quadrature.hpp"  // GaussLegendreRule
 
 namespace skelconv {
 namespace {
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using test::expect_input_error;
 
-/// Expects `construct()` to throw InputError at `where` whose problem
-/// contains `problem`.
-template <class Construct>
-void expect_input_error(Construct construct, const std::string& where, const std::string& problem) {
-  try {
-    construct();
-    ADD_FAILURE() << "no InputError; expected " << where << ": " << problem;
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.where(), where) << error.what();
-    EXPECT_NE(error.problem().find(problem), std::string::npos) << error.what();
-  }
-}
+constexpr double infinity = std::numeric_limits<double>::infinity();
 
 const KernelSpec inverse3 = KernelSpec::inverse(3);
 const std::vector<Vec3> unit_square{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
