@@ -6,8 +6,15 @@
 // over the closed polygon Ω, with the kernel K of a KernelSpec. The closed
 // forms live in skelconv/polygon_field.hpp; this class validates the polygon
 // once (the guarantees that contract asks of its caller), stores it in a
-// canonical orientation, and handles the one case the closed forms must not
-// see:
+// canonical orientation, and handles the two cases the closed forms must
+// not see:
+//   - compact kernels: P at distance ≥ R from the whole closed polygon. The
+//     ball of radius R around P misses Ω, and f = 0, ∇f = 0 exactly, as for
+//     a segment. The distance is max(|z|, distance of the foot of P in the
+//     plane to Ω) — the latter 0 when the foot lies inside, else the
+//     distance from P to the nearest edge — computed in double: a point
+//     misjudged by rounding lies where the kernel and its derivative vanish
+//     (the compact kernels here are at least (1 − r²/R²)²).
 //   - inverse kernels: P in the closed polygon. The integrand r^(-i) is not
 //     integrable there (i ≥ 2), f = +∞. By convention value() returns +inf
 //     and gradient() returns (+inf, +inf, +inf), as for a segment
@@ -110,9 +117,18 @@ class Polygon {
   FieldSample value_and_gradient(const Vec3& p) const;
 
  private:
-  /// Checks P; true if the +inf convention applies (inverse kernel, P in
-  /// the closed polygon), false if the closed form is to be called.
-  bool on_inverse_singularity(const Vec3& p) const;
+  /// What an evaluation at P has to do (see the file comment).
+  enum class Case {
+    call_closed_form,         ///< the closed form applies
+    outside_compact_support,  ///< compact kernel, P farther than R: f = 0
+    on_inverse_singularity,   ///< inverse kernel, P in the closed polygon: f = +inf
+  };
+  /// Checks that P is finite and picks the case.
+  Case prepare(const Vec3& p) const;
+  /// Exact on the doubles, see the file comment.
+  bool in_closed_polygon(const Vec3& p) const;
+  /// Compact: the ball of radius R around P misses the closed polygon.
+  bool support_misses_polygon(const Vec3& p) const;
   /// The closed forms' view of this polygon (spans vertex_arrays_).
   PolygonInput<double> closed_form_input() const;
   /// Throws EvaluationError unless every result of a closed form is finite.

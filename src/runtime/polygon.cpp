@@ -219,14 +219,43 @@ PolygonInput<double> Polygon::closed_form_input() const {
   return input;
 }
 
-bool Polygon::on_inverse_singularity(const Vec3& p) const {
+Polygon::Case Polygon::prepare(const Vec3& p) const {
   detail::require_finite_query_point(p);
-  if (kernel_.family != KernelFamily::inverse) return false;
+  switch (kernel_.family) {
+    case KernelFamily::inverse:
+      return in_closed_polygon(p) ? Case::on_inverse_singularity : Case::call_closed_form;
+    case KernelFamily::cauchy:
+      return Case::call_closed_form;
+    case KernelFamily::compact:
+      return support_misses_polygon(p) ? Case::outside_compact_support : Case::call_closed_form;
+  }
+  return Case::call_closed_form;  // unreachable: every family is handled above
+}
+
+bool Polygon::in_closed_polygon(const Vec3& p) const {
   // See the file comment of polygon.hpp: z == 0 on the doubles, then an
   // exact inside-or-on-the-boundary test in the projected plane.
   if (normal_.dot(p - vertices_.front()) != 0.0) return false;
   return detail::locate_point(projected_vertices_, project_along_axis(p, dropped_axis_)) !=
          detail::PointLocation::outside;
+}
+
+bool Polygon::support_misses_polygon(const Vec3& p) const {
+  const double R = kernel_.R;
+  const double z = normal_.dot(p - vertices_.front());
+  if (std::abs(z) >= R) return true;
+  const Vec3 foot = p - z * normal_;
+  if (detail::locate_point(projected_vertices_, project_along_axis(foot, dropped_axis_)) !=
+      detail::PointLocation::outside) {
+    return false;  // distance |z| < R
+  }
+  for (std::size_t k = 0; k < vertices_.size(); ++k) {
+    const Vec3& a = vertices_[k];
+    const Vec3 edge = vertices_[(k + 1) % vertices_.size()] - a;
+    const double t = std::clamp(edge.dot(p - a) / edge.squaredNorm(), 0.0, 1.0);
+    if ((p - (a + t * edge)).squaredNorm() < R * R) return false;
+  }
+  return true;
 }
 
 void Polygon::require_finite(std::initializer_list<double> results, const char* function, const Vec3& p) const {
@@ -241,21 +270,33 @@ void Polygon::require_finite(std::initializer_list<double> results, const char* 
 }
 
 double Polygon::value(const Vec3& p) const {
-  if (on_inverse_singularity(p)) return infinity;
+  switch (prepare(p)) {
+    case Case::outside_compact_support: return 0.0;
+    case Case::on_inverse_singularity: return infinity;
+    case Case::call_closed_form: break;
+  }
   const double f = polygon_f(closed_form_input(), to_array(p));
   require_finite({f}, "polygon_f", p);
   return f;
 }
 
 Vec3 Polygon::gradient(const Vec3& p) const {
-  if (on_inverse_singularity(p)) return Vec3::Constant(infinity);
+  switch (prepare(p)) {
+    case Case::outside_compact_support: return Vec3::Zero();
+    case Case::on_inverse_singularity: return Vec3::Constant(infinity);
+    case Case::call_closed_form: break;
+  }
   const std::array<double, 3> g = polygon_grad(closed_form_input(), to_array(p));
   require_finite({g[0], g[1], g[2]}, "polygon_grad", p);
   return to_vec3(g);
 }
 
 FieldSample Polygon::value_and_gradient(const Vec3& p) const {
-  if (on_inverse_singularity(p)) return {infinity, Vec3::Constant(infinity)};
+  switch (prepare(p)) {
+    case Case::outside_compact_support: return {0.0, Vec3::Zero()};
+    case Case::on_inverse_singularity: return {infinity, Vec3::Constant(infinity)};
+    case Case::call_closed_form: break;
+  }
   std::array<double, 3> g{};
   const double f = polygon_f_and_grad(closed_form_input(), to_array(p), g);
   require_finite({f, g[0], g[1], g[2]}, "polygon_f_and_grad", p);
