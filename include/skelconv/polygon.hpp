@@ -10,9 +10,9 @@
 // not see:
 //   - compact kernels: P at distance ≥ R from the whole closed polygon. The
 //     ball of radius R around P misses Ω, and f = 0, ∇f = 0 exactly, as for
-//     a segment. The distance is max(|z|, distance of the foot of P in the
-//     plane to Ω) — the latter 0 when the foot lies inside, else the
-//     distance from P to the nearest edge — computed in double: a point
+//     a segment. The distance is |z| (the height of P above the plane) when
+//     the foot of P in the plane lies inside Ω, else the distance from P to
+//     the nearest edge; computed in double: a point
 //     misjudged by rounding lies where the kernel and its derivative vanish
 //     (the compact kernels here are at least (1 − r²/R²)²).
 //   - inverse kernels: P in the closed polygon. The integrand r^(-i) is not
