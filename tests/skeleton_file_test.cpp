@@ -102,7 +102,7 @@ TEST(SkeletonFileErrors, UnknownNames) {
                "primitives[0].kernel.family: unknown family \"gaussian\" "
                "(supported: \"inverse\", \"cauchy\", \"compact\")");
   expect_error(R"({"primitives": [{"type": "triangle"}]})",
-               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\")");
+               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\")");
 }
 
 TEST(SkeletonFileErrors, DuplicateFields) {
@@ -161,6 +161,62 @@ TEST(SkeletonFileErrors, ErrorsInLaterPrimitivesNameTheirIndex) {
     {"type": "segment", "a": [0,1,0], "b": [1,1,0], "kernel": {"family": "cauchy", "degree": 4, "s": 2.0}},
     {"type": "segment", "a": [0,2,0], "b": [1,2,1], "kernel": {"family": "compact", "degree": 6, "R": -1}}]})";
   expect_error(json, "primitives[2].kernel.R: must be > 0, got -1");
+}
+
+// --- Polygons ---------------------------------------------------------------
+
+/// A polygon primitive with `vertices` and `kernel`, extra members `extra`,
+/// after one segment: primitives[1].
+std::string segment_then_polygon(const std::string& vertices, const std::string& kernel = inverse3,
+                                 const std::string& extra = "") {
+  return R"({"primitives": [{"type": "segment", "a": [0,0,0], "b": [1,0,0], "kernel": )" + inverse3 +
+         R"(}, {"type": "polygon", "vertices": )" + vertices + R"(, "kernel": )" + kernel + extra + "}]}";
+}
+
+const std::string unit_square = "[[0,0,0], [1,0,0], [1,1,0], [0,1,0]]";
+
+TEST(SkeletonFile, PolygonLoads) {
+  const Skeleton skeleton = parse_skeleton_json(
+      segment_then_polygon(unit_square, R"({"family": "compact", "degree": 6, "R": 1.5})"));
+  ASSERT_EQ(skeleton.size(), 2u);
+  const Polygon& polygon = std::get<Polygon>(skeleton.primitives()[1]);
+  EXPECT_EQ(polygon.vertices().size(), 4u);
+  EXPECT_EQ(polygon.kernel().family, KernelFamily::compact);
+  EXPECT_EQ(polygon.kernel().degree, 6);
+  EXPECT_EQ(polygon.kernel().R, 1.5);
+  EXPECT_EQ(polygon.normal(), Vec3(0, 0, 1));
+  EXPECT_EQ(polygon.area(), 1.0);
+}
+
+TEST(SkeletonFileErrors, PolygonShapeOfTheDocument) {
+  expect_error(segment_then_polygon(unit_square, inverse3, R"(, "weight": [1])"),
+               "primitives[1]: unknown field \"weight\" for a polygon (allowed: \"type\", \"vertices\", \"kernel\")");
+  expect_error(R"({"primitives": [{"type": "polygon", "kernel": )" + inverse3 + "}]}",
+               "primitives[0]: missing field \"vertices\"");
+  expect_error(R"({"primitives": [{"type": "polygon", "vertices": )" + unit_square + "}]}",
+               "primitives[0]: missing field \"kernel\"");
+  expect_error(segment_then_polygon("[0,0,0]"),
+               "primitives[1].vertices[0]: must be a point [x, y, z] (an array of 3 numbers), got 0");
+  expect_error(segment_then_polygon("3"), "primitives[1].vertices: must be an array of points [[x, y, z], ...], got 3");
+  expect_error(segment_then_polygon("[[0,0,0], [1,0,0], [1,1,0], [0,1,1e999]]"),
+               "primitives[1].vertices[3][2]: number overflow parsing '1e999' (too large for double precision)");
+  expect_error(segment_then_polygon("[[0,0,0], [1,0,0], [1,1,0], [0,\"1\",0]]"),
+               "primitives[1].vertices[3][1]: must be a number, got a string \"1\"");
+  expect_error(segment_then_polygon(unit_square, R"({"family": "inverse", "degree": 3, "degree": 4})"),
+               "primitives[1].kernel: duplicate field \"degree\"");
+}
+
+TEST(SkeletonFileErrors, ValuesCheckedByThePolygon) {
+  expect_error(segment_then_polygon("[[0,0,0], [1,0,0]]"),
+               "primitives[1].vertices: a polygon needs at least 3 vertices, got 2");
+  expect_error(segment_then_polygon("[[0,0,0], [1,0,0], [1,1,0], [0,0,0]]"),
+               "primitives[1].vertices[3]: the last vertex repeats the first one (0, 0, 0): the boundary closes by "
+               "itself (from the last vertex back to the first), list each vertex once");
+  expect_error(segment_then_polygon(unit_square, R"({"family": "inverse", "degree": 2})"),
+               "primitives[1].kernel.degree: degree 2 of the inverse family is not available on a polygon: the "
+               "contour formula of the polygon closed forms (SPEC §3, Hubert 2012 §6) excludes it; supported: 3..12");
+  expect_error(segment_then_polygon(unit_square, R"({"family": "compact", "degree": 4, "R": 0})"),
+               "primitives[1].kernel.R: must be > 0, got 0");
 }
 
 TEST(SkeletonFileErrors, FilesThatCannotBeRead) {

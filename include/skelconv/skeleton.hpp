@@ -3,8 +3,8 @@
 // Convolution is linear in the skeleton (Hubert 2012 §2: the field of a union
 // of skeleton pieces is the sum of their fields), so
 //     f(P) = Σ_k f_k(P),   ∇f(P) = Σ_k ∇f_k(P).
-// Primitives are a std::variant so that the polygon (SPEC §3) and SCALIS
-// (SPEC §4) primitives can be added as further alternatives; every
+// Primitives are a std::variant: segments (SPEC §2) and polygons (SPEC §3)
+// today, SCALIS primitives (SPEC §4) to come as further alternatives; every
 // alternative provides value(), gradient() and value_and_gradient().
 #pragma once
 
@@ -13,12 +13,13 @@
 #include <vector>
 
 #include "skelconv/geometry.hpp"
+#include "skelconv/polygon.hpp"
 #include "skelconv/segment.hpp"
 
 namespace skelconv {
 
-/// One skeleton element. Add polygon / SCALIS primitives here.
-using Primitive = std::variant<Segment>;
+/// One skeleton element. Add SCALIS primitives here.
+using Primitive = std::variant<Segment, Polygon>;
 
 class Skeleton {
  public:
@@ -31,8 +32,8 @@ class Skeleton {
   bool empty() const { return primitives_.empty(); }
 
   /// Sum of the primitives' fields (0 for an empty skeleton). An inverse
-  /// primitive evaluated on its own segment contributes +inf (segment.hpp),
-  /// so the sum is +inf there. Errors of primitive k are rethrown located
+  /// primitive evaluated on its own segment or polygon contributes +inf
+  /// (segment.hpp, polygon.hpp), so the sum is +inf there. Errors of primitive k are rethrown located
   /// at "primitives[k]".
   double value(const Vec3& p) const;
   Vec3 gradient(const Vec3& p) const;

@@ -8,14 +8,17 @@
 //     {"type": "segment", "a": [0,1,0], "b": [1,1,0],
 //      "kernel": {"family": "cauchy", "degree": 4, "s": 2.0}},
 //     {"type": "segment", "a": [0,2,0], "b": [1,2,1],
-//      "kernel": {"family": "compact", "degree": 6, "R": 1.5}}]}
+//      "kernel": {"family": "compact", "degree": 6, "R": 1.5}},
+//     {"type": "polygon", "vertices": [[0,3,0], [1,3,0], [1,4,0], [0,4,0]],
+//      "kernel": {"family": "inverse", "degree": 3}}]}
 //
 // The reader is strict, because a skeleton that silently means something
 // else than what was written is worse than an error: unknown fields (a typo
 // such as "wieght"), duplicate fields, a kernel parameter of another family
 // ("R" on a Cauchy kernel), wrong types and numbers that overflow double are
 // all rejected. Every error is an InputError whose where() is the JSON path
-// of the culprit, e.g. `primitives[2].kernel.R: must be > 0, got -1`.
+// of the culprit, e.g. `primitives[2].kernel.R: must be > 0, got -1` or
+// `primitives[3].vertices[2]: must be a point [x, y, z] ...`.
 #pragma once
 
 #include <filesystem>

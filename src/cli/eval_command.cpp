@@ -21,8 +21,8 @@ Input (stdin):  one point "x y z" per line, numbers separated by blanks;
                 blank lines are skipped.
 Output (stdout): one line "f gx gy gz" per point: the field f = sum of the
                 primitives' fields and its gradient, printed with %.17g.
-                On an inverse-kernel segment itself f and the gradient are
-                printed as "inf".
+                On an inverse-kernel segment or polygon itself f and the
+                gradient are printed as "inf".
 On any error nothing is written to stdout and one "skelconv: error: ..." line
 to stderr; exit status 2 for bad input, 1 if a value cannot be computed in
 double precision. Schema of SKELETON.json: see docs/cli.md.)";

@@ -10,32 +10,16 @@
 #include <fmt/format.h>
 
 #include "generated/segment_table.hpp"
+#include "input_checks.hpp"
 #include "skelconv/clip.hpp"
 
 namespace skelconv {
 namespace {
 
+using detail::format_degree_ranges;
+using detail::format_point;
+
 constexpr double infinity = std::numeric_limits<double>::infinity();
-
-std::string format_point(const Vec3& p) { return fmt::format("({}, {}, {})", p.x(), p.y(), p.z()); }
-
-/// "1..16", or "2..5, 7..16" should the table have gaps.
-std::string format_degree_ranges(const std::vector<int>& degrees) {
-  std::string text;
-  for (std::size_t first = 0; first < degrees.size();) {
-    std::size_t last = first;
-    while (last + 1 < degrees.size() && degrees[last + 1] == degrees[last] + 1) ++last;
-    if (!text.empty()) text += ", ";
-    text += first == last ? fmt::format("{}", degrees[first])
-                          : fmt::format("{}..{}", degrees[first], degrees[last]);
-    first = last + 1;
-  }
-  return text.empty() ? "none" : text;
-}
-
-void require_finite_point(const Vec3& v, const char* where) {
-  if (!v.allFinite()) throw InputError(fmt::format("must be finite, got {}", format_point(v)), where);
-}
 
 /// See Segment::degenerate_length_ratio for the rule and its reason.
 void require_non_degenerate(const Vec3& a, const Vec3& b) {
@@ -76,21 +60,15 @@ int validated_weight_degree(std::span<const double> weight) {
   return degree;
 }
 
-void require_positive_parameter(double value, const char* where) {
-  if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
-  if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
-}
-
 }  // namespace
 
 Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::span<const double> weight)
     : a_(a), b_(b), kernel_(kernel) {
-  require_finite_point(a, "a");
-  require_finite_point(b, "b");
+  detail::require_finite_point(a, "a");
+  detail::require_finite_point(b, "b");
   require_non_degenerate(a, b);
   weight_degree_ = validated_weight_degree(weight);
-  if (kernel.family == KernelFamily::cauchy) require_positive_parameter(kernel.s, "kernel.s");
-  if (kernel.family == KernelFamily::compact) require_positive_parameter(kernel.R, "kernel.R");
+  detail::require_valid_kernel_parameter(kernel);
 
   generated_ = generated::find_segment_kernel<double>(kernel.family, kernel.degree, weight_degree_);
   if (generated_ == nullptr) {
@@ -125,7 +103,7 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
 }
 
 Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const {
-  if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", format_point(p)));
+  detail::require_finite_query_point(p);
   input = input_;
   input.p = to_array(p);
 

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include "input_checks.hpp"
+
 namespace skelconv {
 namespace {
 
@@ -19,9 +21,7 @@ FieldSample& operator+=(FieldSample& total, const FieldSample& term) {
 template <class Result, class Evaluate>
 Result sum_over(const std::vector<Primitive>& primitives, const Vec3& p, Result total, Evaluate evaluate) {
   // Checked once here, so that a bad point is not blamed on primitives[0].
-  if (!p.allFinite()) {
-    throw InputError(fmt::format("query point must be finite, got ({}, {}, {})", p.x(), p.y(), p.z()));
-  }
+  detail::require_finite_query_point(p);
   for (std::size_t k = 0; k < primitives.size(); ++k) {
     try {
       total += std::visit(evaluate, primitives[k]);

@@ -8,7 +8,8 @@
 //   2. read_skeleton walks the document, checking presence, types and
 //      allowed keys with the path of each value, then builds the primitives;
 //      the primitive constructors check the geometry and kernel values
-//      (Segment's InputError is relocated under "primitives[k]").
+//      (a Segment's or Polygon's InputError is relocated under
+//      "primitives[k]").
 #include "skelconv/skeleton_file.hpp"
 
 #include <cerrno>
@@ -240,27 +241,52 @@ KernelSpec read_kernel(const Json& value, const std::string& path) {
   return kernel;
 }
 
+/// Runs a primitive's constructor, locating its InputError (whose where()
+/// is relative to the primitive: "kernel.R") under the primitive's path.
+template <class Construct>
+Primitive construct_located(const std::string& path, Construct construct) {
+  try {
+    return construct();
+  } catch (const InputError& error) {
+    throw error.inside(path);
+  }
+}
+
 /// {"type": "segment", "a": P, "b": P, "weight": [w0, ...] (optional), "kernel": K}.
-Segment read_segment(const Json& value, const std::string& path) {
+Primitive read_segment(const Json& value, const std::string& path) {
   reject_unknown_keys(value, path, {"type", "a", "b", "weight", "kernel"}, " for a segment");
   const Vec3 a = read_point(require_field(value, path, "a"), path + ".a");
   const Vec3 b = read_point(require_field(value, path, "b"), path + ".b");
   std::vector<double> weight{1.0};
   if (const auto found = value.find("weight"); found != value.end()) weight = read_numbers(*found, path + ".weight");
   const KernelSpec kernel = read_kernel(require_field(value, path, "kernel"), path + ".kernel");
-  try {
-    return Segment(a, b, kernel, weight);
-  } catch (const InputError& error) {
-    throw error.inside(path);
+  return construct_located(path, [&] { return Segment(a, b, kernel, weight); });
+}
+
+/// {"type": "polygon", "vertices": [P, P, P, ...], "kernel": K}.
+Primitive read_polygon(const Json& value, const std::string& path) {
+  reject_unknown_keys(value, path, {"type", "vertices", "kernel"}, " for a polygon");
+  const std::string vertices_path = path + ".vertices";
+  const Json& vertices_json = require_field(value, path, "vertices");
+  if (!vertices_json.is_array()) {
+    throw InputError("must be an array of points [[x, y, z], ...], got " + describe(vertices_json), vertices_path);
   }
+  std::vector<Vec3> vertices;
+  for (std::size_t k = 0; k < vertices_json.size(); ++k) {
+    vertices.push_back(read_point(vertices_json[k], fmt::format("{}[{}]", vertices_path, k)));
+  }
+  const KernelSpec kernel = read_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  return construct_located(path, [&] { return Polygon(vertices, kernel); });
 }
 
 Primitive read_primitive(const Json& value, const std::string& path) {
   require_object(value, path);
   const std::string type = read_string(require_field(value, path, "type"), path + ".type");
   if (type == "segment") return read_segment(value, path);
-  throw InputError(fmt::format("unknown primitive type \"{}\" (supported: {})", type, quoted_list({"segment"})),
-                   path + ".type");
+  if (type == "polygon") return read_polygon(value, path);
+  throw InputError(
+      fmt::format("unknown primitive type \"{}\" (supported: {})", type, quoted_list({"segment", "polygon"})),
+      path + ".type");
 }
 
 Skeleton read_skeleton(const Json& document) {

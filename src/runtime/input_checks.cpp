@@ -1,0 +1,46 @@
+// Implementation of input_checks.hpp.
+#include "input_checks.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace skelconv::detail {
+namespace {
+
+void require_positive_parameter(double value, const char* where) {
+  if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
+  if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
+}
+
+}  // namespace
+
+std::string format_point(const Vec3& p) { return fmt::format("({}, {}, {})", p.x(), p.y(), p.z()); }
+
+std::string format_degree_ranges(const std::vector<int>& degrees) {
+  std::string text;
+  for (std::size_t first = 0; first < degrees.size();) {
+    std::size_t last = first;
+    while (last + 1 < degrees.size() && degrees[last + 1] == degrees[last] + 1) ++last;
+    if (!text.empty()) text += ", ";
+    text += first == last ? fmt::format("{}", degrees[first])
+                          : fmt::format("{}..{}", degrees[first], degrees[last]);
+    first = last + 1;
+  }
+  return text.empty() ? "none" : text;
+}
+
+void require_finite_point(const Vec3& v, const std::string& where) {
+  if (!v.allFinite()) throw InputError(fmt::format("must be finite, got {}", format_point(v)), where);
+}
+
+void require_finite_query_point(const Vec3& p) {
+  if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", format_point(p)));
+}
+
+void require_valid_kernel_parameter(const KernelSpec& kernel) {
+  if (kernel.family == KernelFamily::cauchy) require_positive_parameter(kernel.s, "kernel.s");
+  if (kernel.family == KernelFamily::compact) require_positive_parameter(kernel.R, "kernel.R");
+}
+
+}  // namespace skelconv::detail

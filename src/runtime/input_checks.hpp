@@ -1,0 +1,39 @@
+// src/runtime/input_checks.hpp — checks and message formatting shared by the
+// primitives' constructors (Segment, Polygon) and Skeleton. Internal to
+// skelconv_runtime: not an installed header.
+//
+// Each check throws InputError with the problem and, where the caller names
+// one, the field ("kernel.R", "vertices[3]"); the JSON reader later prefixes
+// the primitive's path.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "skelconv/errors.hpp"
+#include "skelconv/geometry.hpp"
+#include "skelconv/kernel_spec.hpp"
+
+namespace skelconv::detail {
+
+/// "(1, 2, 3)", the shortest text that reads back as the same doubles.
+std::string format_point(const Vec3& p);
+
+/// "1..16", or "2..5, 7..16" should the table have gaps; "4, 6, 8" for a
+/// table of even degrees; "none" for an empty list. `degrees` ascending.
+std::string format_degree_ranges(const std::vector<int>& degrees);
+
+/// Throws InputError("must be finite, got (…)", where) unless every
+/// coordinate of v is finite.
+void require_finite_point(const Vec3& v, const std::string& where);
+
+/// Throws InputError("query point must be finite, got (…)") unless p is
+/// finite. No location: the caller knows which point (a line, a call).
+void require_finite_query_point(const Vec3& p);
+
+/// The kernel's own parameter: s > 0 for cauchy ("kernel.s"), R > 0 for
+/// compact ("kernel.R"), finite. The degree is checked by each primitive
+/// against its own table.
+void require_valid_kernel_parameter(const KernelSpec& kernel);
+
+}  // namespace skelconv::detail
