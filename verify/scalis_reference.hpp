@@ -13,10 +13,9 @@
 // Method (the approach of verify/reference_quadrature.hpp, with its helpers):
 //  * breakpoints: the support bounds (compact), t* = the point of [t0, t1]
 //    nearest to P (where the kernel argument is smallest for constant τ, and
-//    where inverse/Cauchy peak), then every piece is halved, so each half has
-//    one outer end where something may happen and an inner end where nothing
-//    does;
-//  * at the outer end, the sinh substitution of detail::PieceMap with width
+//    where inverse/Cauchy peak); a piece with something narrow at both ends
+//    is halved, so that each piece has at most one such end;
+//  * at that end, the sinh substitution of detail::PieceMap with width
 //    w = min(peak width if the end is t*, distance from the end to the cone
 //    tip t_tip = −τ0/Δτ in t) turns a peak of width w or a pole at distance w
 //    (the 1/τ of a cone tip) into an O(1)-wide smooth function;
@@ -92,22 +91,22 @@ struct ScalisReference {
   std::size_t kernel_evaluations = 0;
 };
 
-/// Support [t_lo, t_hi] ⊆ [0, 1] of the compact kernel: where g(t) = στ(t) −
-/// |P − Γ(t)| > 0. g is concave (linear minus convex), so the set is an
-/// interval: golden-section search for its maximum, then bisection on each
-/// side. Empty when max g ≤ 0.
-inline std::optional<std::pair<extended, extended>> scalis_compact_support(const ScalisSegmentInput<extended>& in) {
-  const Vec3<extended> ab = sub(in.b, in.a);
-  const Vec3<extended> ap = sub(in.p, in.a);
-  const auto g = [&](const extended& t) {
-    const extended tau = in.tau0 + (in.tau1 - in.tau0) * t;
-    return in.sigma * tau - norm(axpy(-t, ab, ap));
-  };
+/// g(t) = σ τ(t) − |P − Γ(t)|: the compact support is {g > 0}. g is concave
+/// (linear minus convex), so that set is one interval.
+inline extended scalis_support_gap(const ScalisSegmentInput<extended>& in, const extended& t) {
+  const extended tau = in.tau0 + (in.tau1 - in.tau0) * t;
+  return in.sigma * tau - norm(axpy(-t, sub(in.b, in.a), sub(in.p, in.a)));
+}
+
+/// max_{t∈[0,1]} g(t) and where, by golden-section search (g is concave, so
+/// unimodal), then the better of the two final probes and the ends.
+inline std::pair<extended, extended> scalis_support_gap_maximum(const ScalisSegmentInput<extended>& in) {
+  const auto g = [&](const extended& t) { return scalis_support_gap(in, t); };
   extended lo = 0, hi = 1;
   const extended inv_phi = (sqrt(extended(5)) - 1) / 2;
   extended x1 = hi - inv_phi * (hi - lo), x2 = lo + inv_phi * (hi - lo);
   extended g1 = g(x1), g2 = g(x2);
-  for (int k = 0; k < 200 && hi - lo > 1e-33; ++k) {
+  for (int k = 0; k < 200 && hi - lo > extended(1e-33); ++k) {
     if (g1 < g2) {
       lo = x1;
       x1 = x2;
@@ -122,15 +121,22 @@ inline std::optional<std::pair<extended, extended>> scalis_compact_support(const
       g1 = g(x1);
     }
   }
-  // The best of the two probes and the ends (the maximum may be at an end).
   extended t_max = x1, g_max = g1;
-  for (const extended t : {x2, extended(0), extended(1)}) {
+  for (const extended& t : {x2, extended(0), extended(1)}) {
     const extended value = g(t);
     if (value > g_max) {
       g_max = value;
       t_max = t;
     }
   }
+  return {t_max, g_max};
+}
+
+/// Support [t_lo, t_hi] ⊆ [0, 1] of the compact kernel, {g > 0}: the
+/// maximum of g, then bisection on each side. Empty when max g ≤ 0.
+inline std::optional<std::pair<extended, extended>> scalis_compact_support(const ScalisSegmentInput<extended>& in) {
+  const auto g = [&](const extended& t) { return scalis_support_gap(in, t); };
+  const auto [t_max, g_max] = scalis_support_gap_maximum(in);
   if (!(g_max > 0)) return std::nullopt;
   const auto crossing = [&](extended inside, extended outside) {  // g(inside) > 0 ≥ g(outside)
     for (int k = 0; k < 240; ++k) {
@@ -187,21 +193,33 @@ class ScalisReferenceIntegrator {
       peak = sqrt(hn * hn + st * st) / length;
     }
 
-    std::vector<extended> cuts{t0, t_star, t1};
+    // Width of the sinh map wanted at a cut point c (∞: none): the peak at
+    // t*, and the 1/τ pole at the cone tip when it is closer than `extent`.
+    const auto width_at = [&](const extended& c, const extended& extent) {
+      extended w = c == t_star ? peak : std::numeric_limits<extended>::infinity();
+      if (has_tip) w = std::min(w, abs(c - t_tip));
+      return w < extent ? w : std::numeric_limits<extended>::infinity();
+    };
+    const std::array<extended, 3> cuts{t0, t_star, t1};
     std::vector<std::pair<extended, extended>> pieces;  // [outer end, inner end]
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-      if (!(cuts[k] < cuts[k + 1])) continue;
-      const extended m = (cuts[k] + cuts[k + 1]) / 2;
-      pieces.emplace_back(cuts[k], m);
-      pieces.emplace_back(cuts[k + 1], m);
+      const extended &lo = cuts[k], &hi = cuts[k + 1];
+      if (!(lo < hi)) continue;
+      const bool map_lo = width_at(lo, hi - lo) < std::numeric_limits<extended>::infinity();
+      const bool map_hi = width_at(hi, hi - lo) < std::numeric_limits<extended>::infinity();
+      if (map_lo && map_hi) {  // halve: each half has one mapped outer end
+        const extended m = (lo + hi) / 2;
+        pieces.emplace_back(lo, m);
+        pieces.emplace_back(hi, m);
+      } else {
+        pieces.emplace_back(map_hi ? hi : lo, map_hi ? lo : hi);
+      }
     }
     std::array<extended, 3> mom{}, err{};
     for (const auto& [outer, inner] : pieces) {
       const int direction = inner > outer ? +1 : -1;
       const extended extent = abs(inner - outer);
-      extended width = outer == t_star ? peak : std::numeric_limits<extended>::infinity();
-      if (has_tip) width = std::min(width, abs(outer - t_tip));
-      const detail::PieceMap map(extent, direction, width);
+      const detail::PieceMap map(extent, direction, width_at(outer, extent));
       const auto evaluate_node = [&](const extended& x) {
         const auto [u_outer, jacobian] = map(x);
         const extended t = outer + u_outer;

@@ -76,6 +76,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include <boost/math/quadrature/gauss.hpp>
 
@@ -89,7 +90,7 @@ namespace scalis_compact_detail {
 template <class T>
 constexpr unsigned gauss_points() {
   constexpr int digits = std::numeric_limits<T>::digits;
-  return digits <= 53 ? 20u : digits <= 64 ? 25u : 40u;
+  return digits <= 53 ? 25u : digits <= 64 ? 30u : 40u;
 }
 
 /// Bernstein-ellipse parameter below which a panel is bisected.
@@ -270,8 +271,9 @@ void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_si
 /// Unnormalised compact SCALIS field F(P) = ∫_0^1 K(|P−Γ(t)|/τ(t)) |AB| dt/τ(t),
 /// K(d) = (1 − (d/σ)²)^(i/2) for d < σ, else 0, i = degree ∈ 2..10; writes
 /// ∇_P F to *grad when grad != nullptr. Method and accuracy: header comment.
+/// (T is deduced from `in` alone, so `grad` may be a literal nullptr.)
 template <class T>
-T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::array<T, 3>* grad) {
+T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identity_t<std::array<T, 3>>* grad) {
   using namespace scalis_compact_detail;
   using std::abs;
   using std::frexp;
