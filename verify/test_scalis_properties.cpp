@@ -351,6 +351,50 @@ TEST(ScalisCompact, NormalisationMatchesQuadrature) {
   EXPECT_LE(worst, 1e-14);
 }
 
+// ------------------------------------------- compact: other scalar types
+
+/// The same template in long double and binary128 against a tighter
+/// reference: the method is exact to the rounding of each type (the Gauss
+/// rule grows with the precision, see the header), so a long double result
+/// must be near 1e-18 and a binary128 one near 1e-32.
+TEST(ScalisCompact, LongDoubleAndBinary128) {
+  ScalisReferenceIntegrator reference({1e-31, 1e-28, 15});
+  double worst_long = 0, worst_128 = 0;
+  for (int degree = 2; degree <= 10; ++degree)
+    for (int k = 0; k < 6; ++k) {
+      DeterministicRandom rng(splitmix64(8000009ULL * degree + k));
+      ScalisSegmentInput<double> in = random_segment(rng, static_cast<Radii>(k % 5), 1.05, 4.0);
+      ASSERT_TRUE(generic_point(rng, in));
+      const ScalisSegmentInput<extended> wide = widen(in);
+      const ScalisReference ref = reference.evaluate({KernelFamily::compact, degree}, wide);
+      ASSERT_FALSE(ref.flagged);
+      ScalisSegmentInput<long double> ld;
+      for (int c = 0; c < 3; ++c) {
+        ld.a[c] = in.a[c];
+        ld.b[c] = in.b[c];
+        ld.p[c] = in.p[c];
+      }
+      ld.tau0 = in.tau0;
+      ld.tau1 = in.tau1;
+      ld.sigma = in.sigma;
+      std::array<long double, 3> g_long;
+      std::array<extended, 3> g_128;
+      const long double F_long = scalis_compact_F(degree, ld, &g_long);
+      const extended F_128 = scalis_compact_F(degree, wide, &g_128);
+      const extended gn = norm(ref.grad);
+      worst_long = std::max(worst_long, static_cast<double>(abs(extended(F_long) - ref.f) / ref.f));
+      worst_128 = std::max(worst_128, static_cast<double>(abs(F_128 - ref.f) / ref.f));
+      for (int c = 0; c < 3; ++c) {
+        worst_long = std::max(worst_long, static_cast<double>(abs(extended(g_long[c]) - ref.grad[c]) / gn));
+        worst_128 = std::max(worst_128, static_cast<double>(abs(g_128[c] - ref.grad[c]) / gn));
+      }
+    }
+  std::printf("[compact] other types, F and grad components: long double %.1e, binary128 %.1e\n", worst_long,
+              worst_128);
+  EXPECT_LE(worst_long, 1e-15);
+  EXPECT_LE(worst_128, 1e-28);
+}
+
 // ------------------------------------------------------ compact: thickness
 
 /// f = F/h at distance τ from the middle of a constant-radius segment of
