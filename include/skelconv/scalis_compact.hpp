@@ -41,9 +41,11 @@
 //        i, the branch points at the roots of Q not removed above, mapped
 //        through the substitution (v = ±√w, w real, possibly imaginary);
 //      * a panel [a, b] is accepted when every singularity z lies outside the
-//        Bernstein ellipse of parameter ρ_min = 4 of [a, b] (ρ(z) = s + √(s²−1),
-//        s = (|z−a| + |z−b|)/(b−a)); otherwise it is bisected. A singularity at
-//        distance δ from a panel of length ℓ costs ~log2(ℓ/δ) panels.
+//        Bernstein ellipse of [a, b] of parameter ρ_min = 4 for the pole, 3
+//        for a branch point (ρ(z) = s + √(s²−1), s = (|z−a| + |z−b|)/(b−a));
+//        otherwise it is bisected. A singularity at distance δ from a panel of
+//        length ℓ costs ~log2(ℓ/δ) panels. (With two root ends, each square
+//        half sees the other root at ρ = 3.36: one panel each.)
 //    Error bound (Trefethen, Approximation Theory and Approximation Practice,
 //    Thm 19.3): for f analytic in the Bernstein ellipse E_ρ with |f| ≤ M
 //    there, the N-point rule errs by ≤ (64/15) M ρ^(−2N) / (ρ² − 1). On an
@@ -78,11 +80,16 @@
 //    scale invariant.
 //
 // 5. Accuracy (double, verify/test_scalis_properties.cpp against binary128
-//    quadrature of the definition): ≤ 3e-13 relative for F and ≤ 3e-13 of
-//    |∇F| per gradient component at 2,000 generic points per degree 2..10;
-//    near the support boundary F ~ η^((i+1)/2) at relative depth η and the
-//    double inputs' rounding is amplified ~1/η (1e-10 at η = 1e-5): that is
-//    the conditioning of F, not the method (binary128 stays at 1e-32).
+//    quadrature of the definition, 2,000 generic points per degree 2..10):
+//    F ≤ 2.5e-13 relative (≤ 4e-14 for i ≤ 9), each ∇F component ≤ 2e-13 of
+//    |∇F|; a component as small as 1–5% of |∇F| has up to 2.6e-12 error of
+//    its own, as much as 1-ulp perturbations of the inputs cause (input
+//    conditioning, measured). Near the support boundary F ~ η^((i+1)/2) at
+//    relative depth η and the inputs' rounding is amplified ~1/η (1e-10 at
+//    η = 1e-6): again the measured conditioning of F, not the method
+//    (binary128 stays at 1e-32, long double at 1e-17). Cost: one panel of 25
+//    nodes for even i (~0.25 µs for F and ∇F), two for odd i (~0.55 µs);
+//    more only near a cone tip.
 #pragma once
 
 #include <algorithm>
@@ -106,10 +113,17 @@ constexpr unsigned gauss_points() {
   return digits <= 53 ? 25u : digits <= 64 ? 30u : 40u;
 }
 
-/// Bernstein-ellipse parameter below which a panel is bisected.
+/// Bernstein-ellipse parameters below which a panel is bisected: 4 for the
+/// pole of 1/τ^(i+1) (order up to 11, and the numerator grows off the
+/// interval), 3 for a square-root branch point of √Q (a bounded singularity:
+/// the rule's error there is ~3^(−2N), 1e-24 for N = 25).
 template <class T>
-T rho_min() {
+T rho_min_pole() {
   return T(4);
+}
+template <class T>
+T rho_min_branch() {
+  return T(3);
 }
 
 /// A singular point of the integrand in the complex plane of a panel variable.
@@ -117,6 +131,7 @@ template <class T>
 struct Singularity {
   T re;
   T im;
+  T rho_min;  ///< the Bernstein parameter a panel must keep it outside of
 };
 
 /// ρ(z) of the Bernstein ellipse of [a, b] through z.
@@ -238,26 +253,28 @@ void add_panel(const Frame<T>& fr, const Piece<T>& pc, const T& a, const T& b, b
 }
 
 /// Integrates one piece on Bernstein-graded panels.
+/// t_sing[0 .. n_poles−1] are poles, the rest branch points.
 template <class T>
-void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_sing, bool with_grad, Sums<T>& sums) {
+void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_sing, int n_poles, bool with_grad,
+               Sums<T>& sums) {
   using std::abs;
   using std::sqrt;
   // Singularities in the v plane.
   Singularity<T> z[8];
   int nz = 0;
   for (int k = 0; k < n_sing; ++k) {
+    const T need = k < n_poles ? rho_min_pole<T>() : rho_min_branch<T>();
     const T w = T(pc.dir) * (t_sing[k] - pc.origin);  // v (linear) or v² (square)
     if (!pc.square) {
-      z[nz++] = {w, T(0)};
+      z[nz++] = {w, T(0), need};
     } else if (w >= 0) {
-      z[nz++] = {sqrt(w), T(0)};
-      z[nz++] = {-sqrt(w), T(0)};
+      z[nz++] = {sqrt(w), T(0), need};
+      z[nz++] = {-sqrt(w), T(0), need};
     } else {
-      z[nz++] = {T(0), sqrt(-w)};
-      z[nz++] = {T(0), -sqrt(-w)};
+      z[nz++] = {T(0), sqrt(-w), need};
+      z[nz++] = {T(0), -sqrt(-w), need};
     }
   }
-  const T accept = rho_min<T>();
   // Bisections toward a singularity at distance δ: ~log2(ℓ/δ); δ ≥ 1e-308 ℓ
   // in double (P 1e-300 from a cone tip needs ~1000).
   constexpr int max_depth = 1100;
@@ -272,7 +289,7 @@ void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_si
     const Span sp = stack[--top];
     bool ok = true;
     if (sp.depth < max_depth) {
-      for (int k = 0; k < nz && ok; ++k) ok = !(bernstein_rho(sp.a, sp.b, z[k]) < accept);
+      for (int k = 0; k < nz && ok; ++k) ok = !(bernstein_rho(sp.a, sp.b, z[k]) < z[k].rho_min);
     }
     const T m = (sp.a + sp.b) / 2;
     if (ok || !(sp.a < m && m < sp.b)) {
@@ -422,6 +439,7 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   T t_sing[3];
   int n_sing = 0;
   if (dtau > T(0)) t_sing[n_sing++] = -tau0 / dtau;
+  const int n_poles = n_sing;
   if (odd)
     for (int k = 0; k < n_roots; ++k) t_sing[n_sing++] = roots[k];
 
@@ -463,23 +481,23 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   Sums<T> sums;
   if (!odd || (root_at_t1 < 0 && root_at_t2 < 0)) {
     const Piece<T> pc = linear_piece(t1, +1, t2 - t1);
-    add_piece(fr, pc, t_sing, n_sing, with_grad, sums);
+    add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
   } else {
     const T middle = (t1 + t2) / 2;
     T sing[3];
     if (root_at_t1 >= 0) {
       const Piece<T> pc = square_piece(root_at_t1, +1, middle - t1);
-      add_piece(fr, pc, sing, sing_without(root_at_t1, sing), with_grad, sums);
+      add_piece(fr, pc, sing, sing_without(root_at_t1, sing), n_poles, with_grad, sums);
     } else {
       const Piece<T> pc = linear_piece(t1, +1, middle - t1);
-      add_piece(fr, pc, t_sing, n_sing, with_grad, sums);
+      add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
     }
     if (root_at_t2 >= 0) {
       const Piece<T> pc = square_piece(root_at_t2, -1, t2 - middle);
-      add_piece(fr, pc, sing, sing_without(root_at_t2, sing), with_grad, sums);
+      add_piece(fr, pc, sing, sing_without(root_at_t2, sing), n_poles, with_grad, sums);
     } else {
       const Piece<T> pc = linear_piece(t2, -1, t2 - middle);
-      add_piece(fr, pc, t_sing, n_sing, with_grad, sums);
+      add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
     }
   }
 
