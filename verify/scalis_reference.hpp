@@ -186,7 +186,11 @@ class ScalisReferenceIntegrator {
     const extended t_star = std::clamp(dot(ab, ap) / dot(ab, ab), t0, t1);
     const Vec3<extended> h = axpy(-t_star, ab, ap);  // P − Γ(t*)
     const auto tau = [&](const extended& t) { return in.tau0 + dtau * t; };
-    const bool has_tip = dtau != 0;
+    // Only the compact kernel keeps the 1/τ pole of a cone tip (its support
+    // reaches close to the tip when P does); inverse and Cauchy have
+    // K(|PΓ|/τ)/τ = σ^i τ^(i−1) / |PΓ|^i resp. σ^i τ^(i−1) / (σ²τ² + |PΓ|²)^(i/2),
+    // regular at the tip.
+    const bool has_tip = dtau != 0 && kernel.family == KernelFamily::compact;
     const extended t_tip = has_tip ? -in.tau0 / dtau : extended(0);
     // Peak width at t*, in t (see detail::peak_width): the kernel argument
     // d = |H − u AB|/τ; inverse ~ (u² + |H|²/|AB|²)^(−i/2), Cauchy
@@ -204,7 +208,7 @@ class ScalisReferenceIntegrator {
     // t*, and the 1/τ pole at the cone tip when it is closer than `extent`.
     const auto width_at = [&](const extended& c, const extended& extent) {
       extended w = c == t_star ? peak : std::numeric_limits<extended>::infinity();
-      if (has_tip) w = std::min(w, abs(c - t_tip));
+      if (has_tip && c != t_tip) w = std::min(w, abs(c - t_tip));
       return w < extent ? w : std::numeric_limits<extended>::infinity();
     };
     const std::array<extended, 3> cuts{t0, t_star, t1};
@@ -232,10 +236,14 @@ class ScalisReferenceIntegrator {
         const extended t = outer + u_outer;
         const Vec3<extended> d_vec = axpy(-t, ab, ap);  // P − Γ(t)
         const extended tau_t = tau(t);
+        detail::MomentNode node{x, {}};
+        // tanh-sinh samples down to ~1e-4900 from an end: at a cone tip τ³
+        // then underflows and K/τ, (K'/d)/τ³ become 0/0. Such nodes carry no
+        // weight (the inverse and Cauchy integrands stay bounded at the tip).
+        if (!(tau_t * tau_t * tau_t > 0)) return node;
         const extended d = norm(d_vec) / tau_t;
         const extended phi = kernel.value(d, in.sigma) / tau_t * jacobian;
         const extended psi = kernel.derivative_over_d(d, in.sigma) / (tau_t * tau_t * tau_t) * jacobian;
-        detail::MomentNode node{x, {}};
         node.integrand[0] = phi;
         node.integrand[1] = psi;
         node.integrand[2] = (t - t_star) * psi;
