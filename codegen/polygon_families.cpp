@@ -15,6 +15,9 @@ namespace {
 // angle integral of polygon_angle_integrals.hpp is used instead (its integrand's
 // singularities are then ≥ 1.3 away from the real axis).
 const ex kNearPlaneRatio = numeric(2);
+// Compact kernels: the closed form G^(p) = w^p θ_in − … is used for a chord
+// that comes within √kChordRimRatio of the support disc's radius of P̄.
+const ex kChordRimRatio = numeric(1, 4);
 
 // A polygon edge is a segment from Q_m to Q_{m+1} seen from P̄, whose
 // quadratic has the constant term ζ² = β + α z² instead of β: everything
@@ -139,7 +142,7 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
   // Since q = w − ρ²/R², G^(p) = w^p θ_in − (h/R²) Σ_{k<p} w^k J_{−2(p−1−k)}
   // (θ_in the angle of [t0, t1] at P̄): exact, but when the chord lies near
   // the rim of the support disc (q ≪ w on it) the two terms cancel, up to
-  // (w/q)^p. There the integral is taken directly in u = tan φ instead.
+  // (w/q_max)^p. There the integral is taken directly in u = tan φ instead.
   void build_compact() {
     const int j = spec_.degree / 2;
     std::vector<MomentRequest> requests;
@@ -154,41 +157,50 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
     const ex slope1 = define("plane_slope1", ab_ab_ * t1 - ab_ap_);
     const int p_lo = gradient_ ? j : j + 1, p_hi = value_ ? j + 1 : j;
 
-    std::vector<symbol> targets;
+    // Targets: θ_in and the rest of each G^(p), G^(p) − w^p θ_in, so that the
+    // driver adds the θ_in of all edges to Θ before multiplying by w^p: a
+    // support disc that holds the whole polygon then costs nothing.
+    std::vector<symbol> targets{symbol("theta_in")};
     if (value_) targets.emplace_back("G_f");
     if (gradient_) targets.emplace_back("G_g");
     Choice choice{targets, {}};
     {
-      Alternative chord{{4 * pow(h_, 2) - pow(slope0, 2), 4 * pow(h_, 2) - pow(slope1, 2)},
-                        "chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), "
-                        "polygon_edge_G_compact_chord (Gauss–Legendre)",
+      // The chord comes within half the disc radius of P̄ (ρ_near² ≤ w R²/4,
+      // with |E|² ρ² = h² + slope²): q_max ≥ 3w/4 on it, and the closed form
+      // loses at most (4/3)^p (≤ 7.5 for p ≤ 7).
+      const ex reach = kChordRimRatio * w * ab_ab_ - inv_R2 * pow(h_, 2);
+      Alternative split{{reach, maximum(reach - inv_R2 * minimum(pow(slope0, 2), pow(slope1, 2)), -slope0 * slope1)},
+                        "chord within half the disc radius of P̄: θ_in = atan2(…), "
+                        "G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}",
+                        {}, {}, {}};
+      // The clipped part's ends v_k = Γ(t_k) − P̄ = t_k AB − AP: v0 × v1 = (t1 − t0) AB × AP.
+      split.values.push_back(GiNaC::atan2((t1 - t0) * h_, ap_ap_ - (t0 + t1) * ab_ap_ + t0 * t1 * ab_ab_));
+      auto G_rest = [&](int p) {
+        ex sum = 0;
+        for (int k = 0; k < p; ++k) sum += pow(w, k) * J_minus(p - 1 - k);
+        return -inv_R2 * h_ * sum;
+      };
+      if (value_) split.values.push_back(G_rest(j + 1));
+      if (gradient_) split.values.push_back(G_rest(j));
+      choice.alternatives.push_back(std::move(split));
+    }
+    {
+      Alternative chord{{}, "chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, "
+                            "polygon_edge_G_compact_chord (Gauss–Legendre panels)",
                         {}, {}, {}};
       ArrayCall call{"G_chord", "polygon_edge_G_compact_chord<T>", {std::to_string(p_lo), std::to_string(p_hi)},
                      {h_, ab_ab_, w, inv_R2, slope0, slope1}, {}, {}};
       for (int p = p_lo; p <= p_hi; ++p) call.elements.emplace_back("G_chord_" + std::to_string(call.elements.size()));
+      chord.values.push_back(0);
       if (value_) chord.values.push_back(call.elements.back());
       if (gradient_) chord.values.push_back(call.elements.front());
       chord.calls.push_back(std::move(call));
       choice.alternatives.push_back(std::move(chord));
     }
-    {
-      // The clipped part's ends v_k = Γ(t_k) − P̄ = t_k AB − AP: v0 × v1 = (t1 − t0) AB × AP.
-      Alternative split{{}, "G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}", {}, {}, {}};
-      const symbol theta_in("theta_in");
-      split.steps.emplace_back(theta_in,
-                               GiNaC::atan2((t1 - t0) * h_, ap_ap_ - (t0 + t1) * ab_ap_ + t0 * t1 * ab_ab_));
-      auto G = [&](int p) {
-        ex sum = 0;
-        for (int k = 0; k < p; ++k) sum += pow(w, k) * J_minus(p - 1 - k);
-        return pow(w, p) * theta_in - inv_R2 * h_ * sum;
-      };
-      if (value_) split.values.push_back(G(j + 1));
-      if (gradient_) split.values.push_back(G(j));
-      choice.alternatives.push_back(std::move(split));
-    }
-    choice.generic = choice.alternatives.size() - 1;
+    choice.generic = 0;
     program_.choose(std::move(choice));
-    if (value_) program_.add_output("out.S_f", targets.front());
+    program_.add_output("out.theta_in", targets.front());
+    if (value_) program_.add_output("out.S_f", targets[1]);
     if (gradient_) {
       program_.add_output("out.S_g", targets.back());
       program_.add_output("out.J_g", J_minus(j));

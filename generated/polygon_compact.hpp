@@ -21,7 +21,7 @@ namespace skelconv::generated {
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 79 +, 140 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 81 +, 154 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -62,30 +62,31 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
   T G_f;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * in.t1 * ab_ab + ap_ap - (in.t0 + in.t1) * ab_ap);
+    G_f = -h * (J_minus4 + J_minus2 * zeta2 + J_minus0 * zeta2 * zeta2) * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(3, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_f = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * in.t1 * ab_ab + ap_ap - (in.t0 + in.t1) * ab_ap);
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    G_f = theta_in * t4 - h * (J_minus4 + J_minus2 * zeta2 + J_minus0 * t3) * inv_R2;
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
 }
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 78 +, 138 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 80 +, 152 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -126,29 +127,32 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(h * (in.t1 - in.t0), in.t1 * ab_ab * in.t0 + ap_ap - (in.t1 + in.t0) * ab_ap);
+    G_g = -(J_minus2 + J_minus0 * zeta2) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(2, 2, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(h * (in.t1 - in.t0), in.t1 * ab_ab * in.t0 + ap_ap - (in.t1 + in.t0) * ab_ap);
-    G_g = theta_in * zeta2 * zeta2 - (J_minus2 + J_minus0 * zeta2) * h * inv_R2;
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_g = G_g;
   out.J_g = J_minus4;
 }
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 81 +, 144 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 82 +, 157 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -189,27 +193,28 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
   T G_f;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-h * (in.t0 - in.t1), ab_ab * in.t0 * in.t1 + ap_ap - ab_ap * (in.t0 + in.t1));
+    G_f = -h * inv_R2 * (J_minus4 + J_minus0 * zeta2 * zeta2 + J_minus2 * zeta2);
+    G_g = -h * inv_R2 * (J_minus2 + J_minus0 * zeta2);
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(2, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_f = G_chord[1];
     G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-h * (in.t0 - in.t1), ab_ab * in.t0 * in.t1 + ap_ap - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    G_f = theta_in * t4 - h * inv_R2 * (J_minus4 + J_minus0 * t3 + J_minus2 * zeta2);
-    G_g = theta_in * t3 - h * inv_R2 * (J_minus2 + J_minus0 * zeta2);
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
   out.S_g = G_g;
   out.J_g = J_minus4;
@@ -217,7 +222,7 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 87 +, 164 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 89 +, 179 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -260,31 +265,33 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
   T G_f;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_ap + in.t0 * ab_ab * in.t1 - (in.t0 + in.t1) * ab_ap);
+    const T t3 = zeta2 * zeta2;
+    const T t4 = t3 * zeta2;
+    G_f = -(J_minus6 + J_minus2 * zeta2 * zeta2 + J_minus4 * zeta2 + t4 * J_minus0) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(4, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_f = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-h * (in.t0 - in.t1), ap_ap + in.t0 * ab_ab * in.t1 - (in.t0 + in.t1) * ab_ap);
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t3 * zeta2;
-    G_f = theta_in * t4 - (J_minus6 + J_minus2 * t3 + J_minus4 * zeta2 + t5 * J_minus0) * h * inv_R2;
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
 }
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 86 +, 162 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 88 +, 176 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -327,31 +334,32 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
+    G_g = -h * inv_R2 * (J_minus2 * zeta2 + zeta2 * zeta2 * J_minus0 + J_minus4);
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(3, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    G_g = theta_in * t4 - h * inv_R2 * (J_minus2 * zeta2 + t3 * J_minus0 + J_minus4);
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_g = G_g;
   out.J_g = J_minus6;
 }
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 90 +, 169 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 91 +, 182 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -394,28 +402,30 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
   T G_f;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2((in.t1 - in.t0) * h, ap_ap + in.t1 * ab_ab * in.t0 - ab_ap * (in.t1 + in.t0));
+    const T t3 = zeta2 * zeta2;
+    const T t4 = t3 * zeta2;
+    G_f = -(zeta2 * J_minus4 + t3 * J_minus2 + J_minus6 + t4 * J_minus0) * h * inv_R2;
+    G_g = -(t3 * J_minus0 + zeta2 * J_minus2 + J_minus4) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(3, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_f = G_chord[1];
     G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2((in.t1 - in.t0) * h, ap_ap + in.t1 * ab_ab * in.t0 - ab_ap * (in.t1 + in.t0));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t3 * zeta2;
-    G_f = t4 * theta_in - (zeta2 * J_minus4 + t3 * J_minus2 + J_minus6 + t5 * J_minus0) * h * inv_R2;
-    G_g = t5 * theta_in - (t3 * J_minus0 + zeta2 * J_minus2 + J_minus4) * h * inv_R2;
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
   out.S_g = G_g;
   out.J_g = J_minus6;
@@ -423,7 +433,7 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 95 +, 188 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 97 +, 202 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -468,32 +478,34 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
   T G_f;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - inv_R2 * h * h;
+  const T t2 = max(T(t0 - inv_R2 * h * h - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * in.t1 * ab_ab + ap_ap - ab_ap * (in.t0 + in.t1));
+    const T t3 = zeta2 * zeta2;
+    const T t4 = t3 * zeta2;
+    const T t5 = t3 * t3;
+    G_f = -inv_R2 * (t4 * J_minus2 + t5 * J_minus0 + J_minus8 + J_minus4 * t3 + zeta2 * J_minus6) * h;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_f = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * in.t1 * ab_ab + ap_ap - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t4 * zeta2;
-    const T t6 = t3 * zeta2;
-    G_f = t5 * theta_in - inv_R2 * (t6 * J_minus2 + t4 * J_minus0 + J_minus8 + J_minus4 * t3 + zeta2 * J_minus6) * h;
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
 }
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 94 +, 186 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 96 +, 201 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -538,32 +550,34 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_ap + ab_ab * in.t0 * in.t1 - (in.t0 + in.t1) * ab_ap);
+    const T t3 = zeta2 * zeta2;
+    const T t4 = t3 * zeta2;
+    G_g = -h * inv_R2 * (zeta2 * zeta2 * J_minus2 + t4 * J_minus0 + J_minus4 * zeta2 + J_minus6);
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(4, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-h * (in.t0 - in.t1), ap_ap + ab_ab * in.t0 * in.t1 - (in.t0 + in.t1) * ab_ap);
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t3 * zeta2;
-    G_g = t4 * theta_in - h * inv_R2 * (t3 * J_minus2 + t5 * J_minus0 + J_minus4 * zeta2 + J_minus6);
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_g = G_g;
   out.J_g = J_minus8;
 }
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 99 +, 194 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 100 +, 207 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -608,29 +622,31 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
   T G_f;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
-    std::array<T, 2> G_chord;
-    polygon_edge_G_compact_chord<T>(4, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    G_f = G_chord[1];
-    G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * in.t1 * ab_ab + ap_ap - ab_ap * (in.t0 + in.t1));
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * in.t1 * ab_ab + ap_ap - ab_ap * (in.t0 + in.t1));
     const T t3 = zeta2 * zeta2;
     const T t4 = t3 * t3;
-    const T t5 = t4 * zeta2;
-    const T t6 = t3 * zeta2;
-    G_f = theta_in * t5 - h * inv_R2 * (t4 * J_minus0 + t6 * J_minus2 + zeta2 * J_minus6 + J_minus4 * t3 + J_minus8);
-    G_g = theta_in * t4 - (t3 * J_minus2 + J_minus4 * zeta2 + t6 * J_minus0 + J_minus6) * h * inv_R2;
+    const T t5 = t3 * zeta2;
+    G_f = -h * inv_R2 * (t4 * J_minus0 + t5 * J_minus2 + zeta2 * J_minus6 + J_minus4 * t3 + J_minus8);
+    G_g = -(t3 * J_minus2 + J_minus4 * zeta2 + t5 * J_minus0 + J_minus6) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 2> G_chord;
+    polygon_edge_G_compact_chord<T>(4, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_f = G_chord[1];
+    G_g = G_chord[0];
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
   out.S_g = G_g;
   out.J_g = J_minus8;
@@ -638,7 +654,7 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 103 +, 212 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 105 +, 227 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -685,33 +701,35 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
   T G_f;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * in.t1 * ab_ab - ab_ap * (in.t0 + in.t1));
+    const T t3 = zeta2 * zeta2;
+    const T t4 = t3 * t3;
+    const T t5 = t4 * zeta2;
+    const T t6 = t3 * zeta2;
+    G_f = -(zeta2 * J_minus8 + J_minus6 * zeta2 * zeta2 + J_minus10 + t4 * J_minus2 + J_minus0 * t5 + t6 * J_minus4) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_f = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * in.t1 * ab_ab - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    const T t5 = t4 * t4;
-    const T t6 = t3 * t3;
-    const T t7 = t6 * zeta2;
-    G_f = t5 * theta_in - (zeta2 * J_minus8 + J_minus6 * t3 + J_minus10 + t6 * J_minus2 + J_minus0 * t7 + t4 * J_minus4) * h * inv_R2;
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
 }
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 102 +, 210 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 104 +, 225 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -758,33 +776,35 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
-    std::array<T, 1> G_chord;
-    polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + ab_ab * in.t0 * in.t1 - (in.t0 + in.t1) * ab_ap);
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + ab_ab * in.t0 * in.t1 - (in.t0 + in.t1) * ab_ap);
     const T t3 = zeta2 * zeta2;
     const T t4 = t3 * t3;
-    const T t5 = t4 * zeta2;
-    const T t6 = t3 * zeta2;
-    G_g = theta_in * t5 - h * inv_R2 * (J_minus8 + J_minus4 * t3 + J_minus6 * zeta2 + J_minus0 * t4 + J_minus2 * t6);
+    const T t5 = t3 * zeta2;
+    G_g = -h * inv_R2 * (J_minus8 + J_minus4 * zeta2 * zeta2 + J_minus6 * zeta2 + J_minus0 * t4 + J_minus2 * t5);
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 1> G_chord;
+    polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_g = G_chord[0];
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_g = G_g;
   out.J_g = J_minus10;
 }
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 108 +, 219 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 109 +, 232 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -831,30 +851,32 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
   T G_f;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * in.t1 * ab_ab - ab_ap * (in.t0 + in.t1));
+    const T t3 = zeta2 * zeta2;
+    const T t4 = t3 * t3;
+    const T t5 = t4 * zeta2;
+    const T t6 = t3 * zeta2;
+    G_f = -(t5 * J_minus0 + J_minus10 + t3 * J_minus6 + t4 * J_minus2 + zeta2 * J_minus8 + t6 * J_minus4) * h * inv_R2;
+    G_g = -h * (t4 * J_minus0 + t6 * J_minus2 + zeta2 * J_minus6 + J_minus8 + t3 * J_minus4) * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(5, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_f = G_chord[1];
     G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * in.t1 * ab_ab - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    const T t5 = t4 * t4;
-    const T t6 = t3 * t3;
-    const T t7 = t6 * zeta2;
-    G_f = t5 * theta_in - (t7 * J_minus0 + J_minus10 + t3 * J_minus6 + t6 * J_minus2 + zeta2 * J_minus8 + t4 * J_minus4) * h * inv_R2;
-    G_g = t7 * theta_in - h * (t6 * J_minus0 + t4 * J_minus2 + zeta2 * J_minus6 + J_minus8 + t3 * J_minus4) * inv_R2;
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
   out.S_g = G_g;
   out.J_g = J_minus10;
@@ -862,7 +884,7 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 111 +, 236 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 113 +, 251 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -911,34 +933,36 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
   T G_f;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
-    std::array<T, 1> G_chord;
-    polygon_edge_G_compact_chord<T>(7, 7, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    G_f = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * ab_ab * in.t1 + ap_ap - ab_ap * (in.t0 + in.t1));
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * ab_ab * in.t1 + ap_ap - ab_ap * (in.t0 + in.t1));
     const T t3 = zeta2 * zeta2;
     const T t4 = t3 * zeta2;
     const T t5 = t4 * t4;
-    const T t6 = t5 * zeta2;
-    const T t7 = t3 * t3;
-    const T t8 = t7 * zeta2;
-    G_f = t6 * theta_in - h * inv_R2 * (J_minus8 * t3 + t5 * J_minus0 + J_minus2 * t8 + J_minus10 * zeta2 + t4 * J_minus6 + J_minus12 + J_minus4 * t7);
+    const T t6 = t3 * t3;
+    const T t7 = t6 * zeta2;
+    G_f = -h * inv_R2 * (J_minus8 * zeta2 * zeta2 + t5 * J_minus0 + J_minus2 * t7 + J_minus10 * zeta2 + t4 * J_minus6 + J_minus12 + J_minus4 * t6);
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 1> G_chord;
+    polygon_edge_G_compact_chord<T>(7, 7, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_f = G_chord[0];
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
 }
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 110 +, 234 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 112 +, 248 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -987,34 +1011,36 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
+    const T t3 = zeta2 * zeta2;
+    const T t4 = t3 * t3;
+    const T t5 = t3 * zeta2;
+    const T t6 = t4 * zeta2;
+    G_g = -h * inv_R2 * (J_minus8 * zeta2 + J_minus10 + J_minus2 * t4 + J_minus4 * t5 + t6 * J_minus0 + J_minus6 * t3);
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
     G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    const T t5 = t4 * t4;
-    const T t6 = t3 * t3;
-    const T t7 = t6 * zeta2;
-    G_g = theta_in * t5 - h * inv_R2 * (J_minus8 * zeta2 + J_minus10 + J_minus2 * t6 + J_minus4 * t4 + t7 * J_minus0 + J_minus6 * t3);
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_g = G_g;
   out.J_g = J_minus12;
 }
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 117 +, 244 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 118 +, 257 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1063,31 +1089,33 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
   T G_f;
   T G_g;
-  const T t0 = T(4) * h * h;
-  const T t1 = t0 - plane_slope0 * plane_slope0;
-  const T t2 = t0 - plane_slope1 * plane_slope1;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
-    // chord near the rim of the support disc (|tan φ| ≤ 2 on it): G^(p) = sgn(h) ∫ q^p du/(1 + u²), polygon_edge_G_compact_chord (Gauss–Legendre)
-    std::array<T, 2> G_chord;
-    polygon_edge_G_compact_chord<T>(6, 7, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    G_f = G_chord[1];
-    G_g = G_chord[0];
-  } else {
-    // G^(p) = w^p θ_in − (h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
     const T t3 = zeta2 * zeta2;
     const T t4 = t3 * zeta2;
     const T t5 = t4 * t4;
-    const T t6 = t5 * zeta2;
-    const T t7 = t3 * t3;
-    const T t8 = t7 * zeta2;
-    G_f = t6 * theta_in - (J_minus8 * t3 + J_minus12 + t5 * J_minus0 + t4 * J_minus6 + zeta2 * J_minus10 + J_minus2 * t8 + t7 * J_minus4) * h * inv_R2;
-    G_g = t5 * theta_in - (t8 * J_minus0 + t4 * J_minus4 + J_minus8 * zeta2 + J_minus10 + J_minus2 * t7 + t3 * J_minus6) * h * inv_R2;
+    const T t6 = t3 * t3;
+    const T t7 = t6 * zeta2;
+    G_f = -(J_minus8 * t3 + J_minus12 + t5 * J_minus0 + t4 * J_minus6 + zeta2 * J_minus10 + J_minus2 * t7 + t6 * J_minus4) * h * inv_R2;
+    G_g = -(t7 * J_minus0 + t4 * J_minus4 + J_minus8 * zeta2 + J_minus10 + J_minus2 * t6 + t3 * J_minus6) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 2> G_chord;
+    polygon_edge_G_compact_chord<T>(6, 7, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_f = G_chord[1];
+    G_g = G_chord[0];
   }
   out.h = h;
   out.theta = theta;
+  out.theta_in = theta_in;
   out.S_f = G_f;
   out.S_g = G_g;
   out.J_g = J_minus12;

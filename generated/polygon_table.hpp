@@ -74,15 +74,15 @@ std::span<const PolygonEdgeKernel<T>> polygon_edge_kernels() {
       {KernelFamily::cauchy, 12, &polygon_edge_cauchy_i12_f<T>, &polygon_edge_cauchy_i12_grad<T>, &polygon_edge_cauchy_i12_f_and_grad<T>, "polygon_edge_cauchy_i12",
        "C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ", {51, 101, 5, 1, 2, 0, 0}, {54, 114, 5, 1, 2, 0, 0}, {54, 114, 5, 1, 2, 0, 0}},
       {KernelFamily::compact, 4, &polygon_edge_compact_i4_f<T>, &polygon_edge_compact_i4_grad<T>, &polygon_edge_compact_i4_f_and_grad<T>, "polygon_edge_compact_i4",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ", {79, 140, 1, 0, 2, 0, 0}, {78, 138, 1, 0, 2, 0, 0}, {81, 144, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ", {81, 154, 1, 0, 2, 0, 0}, {80, 152, 1, 0, 2, 0, 0}, {82, 157, 1, 0, 2, 0, 0}},
       {KernelFamily::compact, 6, &polygon_edge_compact_i6_f<T>, &polygon_edge_compact_i6_grad<T>, &polygon_edge_compact_i6_f_and_grad<T>, "polygon_edge_compact_i6",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {87, 164, 1, 0, 2, 0, 0}, {86, 162, 1, 0, 2, 0, 0}, {90, 169, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {89, 179, 1, 0, 2, 0, 0}, {88, 176, 1, 0, 2, 0, 0}, {91, 182, 1, 0, 2, 0, 0}},
       {KernelFamily::compact, 8, &polygon_edge_compact_i8_f<T>, &polygon_edge_compact_i8_grad<T>, &polygon_edge_compact_i8_f_and_grad<T>, "polygon_edge_compact_i8",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ", {95, 188, 1, 0, 2, 0, 0}, {94, 186, 1, 0, 2, 0, 0}, {99, 194, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ", {97, 202, 1, 0, 2, 0, 0}, {96, 201, 1, 0, 2, 0, 0}, {100, 207, 1, 0, 2, 0, 0}},
       {KernelFamily::compact, 10, &polygon_edge_compact_i10_f<T>, &polygon_edge_compact_i10_grad<T>, &polygon_edge_compact_i10_f_and_grad<T>, "polygon_edge_compact_i10",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {103, 212, 1, 0, 2, 0, 0}, {102, 210, 1, 0, 2, 0, 0}, {108, 219, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {105, 227, 1, 0, 2, 0, 0}, {104, 225, 1, 0, 2, 0, 0}, {109, 232, 1, 0, 2, 0, 0}},
       {KernelFamily::compact, 12, &polygon_edge_compact_i12_f<T>, &polygon_edge_compact_i12_grad<T>, &polygon_edge_compact_i12_f_and_grad<T>, "polygon_edge_compact_i12",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ", {111, 236, 1, 0, 2, 0, 0}, {110, 234, 1, 0, 2, 0, 0}, {117, 244, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ", {113, 251, 1, 0, 2, 0, 0}, {112, 248, 1, 0, 2, 0, 0}, {118, 257, 1, 0, 2, 0, 0}},
   };
   return table;
 }

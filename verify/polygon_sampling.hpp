@@ -22,6 +22,7 @@ namespace skelconv::verify {
 
 enum class PolygonRegion {
   generic,            ///< height 0.05–2 diameters, P̄ anywhere within 1.5 diameters
+                      ///< (compact: R = 1.5–4 times the distance from P to the polygon)
   near_plane_inside,  ///< P̄ inside, ≥ 0.05 diam from the boundary, |z| = 1e-6–1e-2 diam
   plane_outside,      ///< P̄ outside, 0.05–1.5 diam from the boundary, z = 0 or |z| = 1e-6–1e-2 diam
   near_edges,         ///< P̄ within 1e-6–1e-2 diam of an edge or a vertex, |z| = 1e-6–0.1 diam
@@ -202,6 +203,14 @@ inline PolygonProblem draw_polygon_problem(std::uint64_t seed, KernelFamily fami
     }
   }
   pb.p = place(bx, by, bz);
+  if (region == PolygonRegion::generic) {
+    // Compact kernels: a support ball reaching well into the polygon (1.5–4
+    // times the distance from P to it); barely touching it is
+    // support_crossing's business (f → 0 there).
+    const double in_plane =
+        detail::inside_outline(outline, bx, by) ? 0.0 : detail::distance_to_outline(outline, bx, by);
+    pb.R = rng.uniform(1.5, 4.0) * std::hypot(in_plane, bz) * scale;
+  }
   if (region == PolygonRegion::support_crossing) {
     // R between the distances from P to the nearest and the farthest vertex:
     // the support sphere then cuts the boundary.

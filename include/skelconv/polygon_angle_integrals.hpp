@@ -83,18 +83,20 @@ void polygon_edge_H_near_plane(int n_lo, int n_hi, const T& alpha_h, const T& a,
 ///     q(u) = w − (d²/R²)(1 + u²),   u = tan φ = slope / |h|,   d² = h² / |E|²,
 ///
 /// to out[p − p_lo], from h, |E|², w = 1 − z²/R², 1/R² and the in-plane slopes
-/// |E|² t − E·(P̄ − A) at the clip's ends. The generated code calls this when
-/// |u| ≤ 2 on the chord: there the closed form w^p θ − (h/R²) Σ … cancels (q ≪ w),
-/// while the integrand, a polynomial over 1 + u², has its only poles at u = ±i.
-/// Split at u = 0, each piece [0, ±2] sees them through a Bernstein ellipse
-/// of parameter ≥ 2.89, and 20 Gauss–Legendre points are exact to 2.89^(−40)
-/// ≈ 4e-19 (pieces are never longer than 2).
+/// |E|² t − E·(P̄ − A) at the clip's ends. The generated code calls this for a
+/// chord that stays beyond half the support disc's radius from P̄, where the
+/// closed form w^p θ − (h/R²) Σ … cancels (q ≪ w). The integrand, a
+/// polynomial over 1 + u², has its only poles at u = ±i. The interval is
+/// split at u = 0 and cut into panels [lo, hi] with hi − lo ≤ 1.5 √(1 + lo²)
+/// (0 ≤ lo): each sees the poles through a Bernstein ellipse of parameter
+/// ≥ 3.4, and 20 Gauss–Legendre points are exact to 3.4^(−40) ≈ 5e-22.
 template <class T>
 void polygon_edge_G_compact_chord(int p_lo, int p_hi, const T& h, const T& edge_length2, const T& w,
                                   const T& inv_R2, const T& slope0, const T& slope1, T* out) {
   using std::abs;
   using std::max;
   using std::min;
+  using std::sqrt;
   using Rule = boost::math::quadrature::gauss<T, 20>;
   const int count = p_hi - p_lo + 1;
   for (int k = 0; k < count; ++k) out[k] = T(0);
@@ -104,8 +106,7 @@ void polygon_edge_G_compact_chord(int p_lo, int p_hi, const T& h, const T& edge_
   const T d2_over_R2 = h * h / edge_length2 * inv_R2;
   const auto& x = Rule::abscissa();
   const auto& g = Rule::weights();
-  auto piece = [&](const T& lo, const T& hi) {
-    if (!(lo < hi)) return;
+  auto panel = [&](const T& lo, const T& hi) {
     const T half = (hi - lo) / 2, mid = (hi + lo) / 2;
     auto add_node = [&](const T& u, const T& weight) {
       const T one_plus_u2 = 1 + u * u;
@@ -123,8 +124,19 @@ void polygon_edge_G_compact_chord(int p_lo, int p_hi, const T& h, const T& edge_
       add_node(mid - half * x[j], g[j]);
     }
   };
-  piece(u0, min(u1, T(0)));
-  piece(max(u0, T(0)), u1);
+  // [a, b] with 0 ≤ a (sign = +1) or the mirror image (sign = −1): q(u) is even.
+  auto side = [&](T a, const T& b, const T& sign) {
+    while (a < b) {
+      const T next = min(b, a + T(1.5) * sqrt(1 + a * a));
+      if (sign > 0)
+        panel(a, next);
+      else
+        panel(-next, -a);
+      a = next;
+    }
+  };
+  if (u1 > T(0)) side(max(u0, T(0)), u1, T(1));
+  if (u0 < T(0)) side(max(-u1, T(0)), -u0, T(-1));
   if (h < T(0))
     for (int k = 0; k < count; ++k) out[k] = -out[k];
 }

@@ -40,8 +40,9 @@ template <class T>
 struct PolygonEdgeTerms {
   T h = T(0);         ///< h_m above
   T theta = T(0);     ///< θ_m = atan2(h_m, (Q_m − P̄)·(Q_{m+1} − P̄))
-  T S_f = T(0);       ///< the edge's part of f: H_{i−2} (inverse, Cauchy), G^(j+1) (compact)
-  T S_g = T(0);       ///< the edge's part of ∂f/∂z: H_i, G^(j)
+  T theta_in = T(0);  ///< compact: the part of G^(p) that is w^p θ_in (0 where S_f holds all of G)
+  T S_f = T(0);       ///< the edge's part of f: H_{i−2} (inverse, Cauchy), G^(j+1) − w^(j+1) θ_in (compact)
+  T S_g = T(0);       ///< the edge's part of ∂f/∂z: H_i, G^(j) − w^j θ_in
   T J_g = T(0);       ///< ∫_0^1 K(|P − Γ(t)|) dt (∫_{t0}^{t1} for compact): the in-plane gradient
 };
 

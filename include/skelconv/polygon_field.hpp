@@ -92,9 +92,11 @@ T integer_power(T x, int n) {
   return result;
 }
 
-/// f and/or ∇f (grad != nullptr) of the polygon at p.
+/// f and/or ∇f (grad != nullptr) of the polygon at p; with edge_fields,
+/// f by the contour sum (never the far field) and each edge's part of it.
 template <class T>
-T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool want_f, std::array<T, 3>* grad) {
+T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool want_f, std::array<T, 3>* grad,
+                   std::vector<T>* edge_fields = nullptr) {
   using std::abs;
   using std::sqrt;
   const auto* kernel = generated::find_polygon_edge_kernel<T>(poly.family, poly.degree);
@@ -108,7 +110,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   const std::array<T, 3> foot = {p[0] - z * n[0], p[1] - z * n[1], p[2] - z * n[2]};
   const bool compact = poly.family == KernelFamily::compact;
   if (grad) *grad = {T(0), T(0), T(0)};
-  if (!compact) {
+  if (!compact && edge_fields == nullptr) {
     std::array<T, 3> centre = {T(0), T(0), T(0)};
     for (const auto& q : v)
       for (int k = 0; k < 3; ++k) centre[k] += q[k] / T(count);
@@ -127,8 +129,9 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   const T disc_radius = compact ? sqrt((poly.R - abs(z)) * (poly.R + abs(z))) : T(0);
 
   auto edge_function = want_f ? (grad ? kernel->f_and_grad : kernel->f) : kernel->grad;
-  T theta_sum = 0, S_f = 0, S_g = 0;
+  T theta_sum = 0, theta_in_sum = 0, S_f = 0, S_g = 0;
   bool on_boundary = false;
+  std::vector<PolygonEdgeTerms<T>> all_terms;
   PolygonEdgeInput<T> in;
   in.p = foot;
   in.normal = n;
@@ -146,6 +149,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
     }
     PolygonEdgeTerms<T> terms;
     edge_function(in, terms);
+    if (edge_fields) all_terms.push_back(terms);
     if (terms.h == T(0)) {
       // P̄ on the edge's line: no fan triangle. On the closed edge itself?
       const T dot = (in.a[0] - foot[0]) * (in.b[0] - foot[0]) + (in.a[1] - foot[1]) * (in.b[1] - foot[1]) +
@@ -153,6 +157,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
       on_boundary = on_boundary || dot <= T(0);
     } else {
       theta_sum += terms.theta;
+      theta_in_sum += terms.theta_in;
       S_f += terms.S_f;
       S_g += terms.S_g;
     }
@@ -168,13 +173,20 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   const int i = poly.degree;
   T f = 0, dfdz = 0;
   if (compact) {
-    // C = (R²/(2(j+1))) (w^(j+1) Θ − Σ G^(j+1)), ∂C/∂z = −z (w^j Θ − Σ G^(j)).
+    // C = (R²/(2(j+1))) (w^(j+1) Θ − Σ G^(j+1)), ∂C/∂z = −z (w^j Θ − Σ G^(j)),
+    // the θ_in parts of the G gathered with Θ first: the angle outside the
+    // support disc, 0 when the disc holds the polygon.
     const int j = i / 2;
     const T R2 = poly.R * poly.R;
     const T w = (poly.R - abs(z)) * (poly.R + abs(z)) / R2;
     const T w_j = integer_power(w, j);
-    f = R2 / T(2 * (j + 1)) * (w_j * w * Theta - S_f);
-    dfdz = -z * (w_j * Theta - S_g);
+    const T outer_angle = Theta - theta_in_sum;
+    f = R2 / T(2 * (j + 1)) * (w_j * w * outer_angle - S_f);
+    dfdz = -z * (w_j * outer_angle - S_g);
+    if (edge_fields)
+      for (const auto& t : all_terms)
+        edge_fields->push_back(t.h == T(0) ? T(0)
+                                           : R2 / T(2 * (j + 1)) * (w_j * w * (t.theta - t.theta_in) - t.S_f));
   } else {
     const bool inverse = poly.family == KernelFamily::inverse;
     if (inverse && z == T(0) && (Theta != T(0) || on_boundary)) {
@@ -190,6 +202,10 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
     const T winding_g = Theta == T(0) ? T(0) : integer_power(zeta, -i) * Theta;
     f = (winding_f - S_f) / (alpha * T(i - 2));
     dfdz = -z * (winding_g - S_g);
+    if (edge_fields)
+      for (const auto& t : all_terms)
+        edge_fields->push_back(t.h == T(0) ? T(0)
+                                           : (integer_power(zeta, 2 - i) * t.theta - t.S_f) / (alpha * T(i - 2)));
   }
   if (grad)
     for (int k = 0; k < 3; ++k) (*grad)[k] += dfdz * n[k];
@@ -211,6 +227,25 @@ std::array<T, 3> polygon_grad(const PolygonInput<T>& poly, const std::array<T, 3
   std::array<T, 3> grad;
   detail::polygon_evaluate<T>(poly, p, false, &grad);
   return grad;
+}
+
+/// Each edge's part of f(P), in the order of the vertices (edge m from
+/// vertex m to m + 1): the field of the signed fan triangle (P̄, Q_m, Q_{m+1}).
+/// For a triangle these are Sherstyuk's "three step functions" (Hubert 2012
+/// §7, fig. 8). They add up to f(P) by the contour sum, which is what
+/// polygon_f returns except far from the polygon (polygon_far_field.hpp)
+/// and up to the rounding of Θ. Not for an inverse kernel with P in the
+/// closed polygon (the parts are infinite there): throws std::domain_error.
+template <class T>
+std::vector<T> polygon_edge_fields(const PolygonInput<T>& poly, const std::array<T, 3>& p) {
+  std::vector<T> parts;
+  const T f = detail::polygon_evaluate<T>(poly, p, true, nullptr, &parts);
+  if (parts.size() != poly.vertices.size()) {
+    if (f == std::numeric_limits<T>::infinity())
+      throw std::domain_error("polygon_edge_fields: P lies in the polygon, where the inverse kernel diverges");
+    parts.assign(poly.vertices.size(), T(0));  // compact: the support misses the plane
+  }
+  return parts;
 }
 
 /// f(P) and ∇f(P) together.
