@@ -187,10 +187,13 @@ TEST(PolygonPaperCases, EquilateralTriangleIsASumOfThreeStepFunctions) {
 }
 
 // Hubert 2012 §6.4 (figs 6–7): with p^4 the field is the simplest contour sum,
-//     C^{p^4}(P) = 1/(2 z²) Σ_m ((Q_m P ∧ Q_m Q_{m+1})·n) D^{p^2}_{[Q_m Q_{m+1}]}(P),
+//     C^{p^4}(P) = 1/(2 z²) Σ_m ((Q_m Q_{m+1} × Q_m P)·n) D^{p^2}_{[Q_m Q_{m+1}]}(P),
 //     D^{p^2}_{[AB]}(P) = (atan((a − b)/√(ac − b²)) + atan(b/√(ac − b²))) / √(ac − b²),
 // written out here from the paper (not from the generator), for a regular
 // pentagon and a non-convex polygon, and checked against quadrature too.
+// §6.4 prints the wedge as Q_m P ∧ Q_m Q_{m+1}, the opposite order to §6.3
+// and SPEC §3: with counter-clockwise vertices that gives −f (this test saw
+// it), so we use the order of §6.3.
 double hubert_p4(const std::vector<V>& polygon, const V& p) {
   long double sum = 0;
   const long double z = p[2];
@@ -204,7 +207,7 @@ double hubert_p4(const std::vector<V>& polygon, const V& p) {
     const long double c = ap[0] * ap[0] + ap[1] * ap[1] + ap[2] * ap[2];
     const long double root = std::sqrt(a * c - b * b);
     const long double D_p2 = (std::atan((a - b) / root) + std::atan(b / root)) / root;
-    const long double wedge_n = ap[0] * ab[1] - ap[1] * ab[0];  // (Q_m P ∧ Q_m Q_{m+1})·n, n = +z
+    const long double wedge_n = ab[0] * ap[1] - ab[1] * ap[0];  // (Q_m Q_{m+1} × Q_m P)·n, n = +z
     sum += wedge_n * D_p2;
   }
   return static_cast<double>(sum / (2 * z * z));
@@ -215,7 +218,7 @@ TEST(PolygonPaperCases, PentagonAndNonConvexPolygonWithP4MatchTheClosedFormOfSec
   for (int k = 0; k < 5; ++k)
     pentagon.push_back({std::cos(2 * std::numbers::pi * k / 5), std::sin(2 * std::numbers::pi * k / 5), 0});
   const Kernel p4{KernelFamily::inverse, 4};
-  for (const auto* polygon : {&pentagon, &kPentagon})
+  for (const std::vector<V>* polygon : std::initializer_list<const std::vector<V>*>{&pentagon, &kPentagon})
     for (const V& p : {V{0.1, 0.2, 0.7}, V{1.5, 1.5, 0.4}, V{-0.3, 0.9, -1.2}}) {
       const double f = field(*polygon, kUp, p4, p);
       EXPECT_NEAR(f, hubert_p4(*polygon, p), 1e-12 * std::abs(f));
