@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "generated/segment_table.hpp"
+#include "skelconv/polygon_field.hpp"
 
 namespace {
 
@@ -63,3 +64,24 @@ TEST(ScalarTypes, CppBinFloat50CompilesForOneFamily) {
 }
 
 }  // namespace
+
+// The polygon edge kernels and their driver (skelconv/polygon_field.hpp) on
+// long double: every family and degree of the table, near the plane (the
+// angle-integral forms) and off it (the recurrences), agree with double.
+TEST(ScalarTypes, PolygonKernelsInLongDoubleAgree) {
+  const std::vector<std::array<double, 3>> square_d = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::vector<std::array<long double, 3>> square_l = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (const auto& kernel : skelconv::generated::polygon_edge_kernels<double>()) {
+    for (const std::array<double, 3> p : {std::array<double, 3>{0.375, 0.25, 0.625}, {1.25, 0.5, 0.001}}) {
+      const skelconv::PolygonInput<double> in_d{square_d, {0, 0, 1}, kernel.family, kernel.degree, 1.5, 1.75};
+      const skelconv::PolygonInput<long double> in_l{square_l, {0, 0, 1}, kernel.family, kernel.degree, 1.5L, 1.75L};
+      std::array<double, 3> g_d;
+      std::array<long double, 3> g_l;
+      const double f_d = skelconv::polygon_f_and_grad(in_d, p, g_d);
+      const long double f_l = skelconv::polygon_f_and_grad(in_l, {p[0], p[1], p[2]}, g_l);
+      EXPECT_NEAR(f_d, static_cast<double>(f_l), 1e-13 * std::abs(f_d)) << kernel.name;
+      const double g_norm = std::hypot(g_d[0], g_d[1], g_d[2]);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(g_d[c], static_cast<double>(g_l[c]), 1e-13 * g_norm) << kernel.name;
+    }
+  }
+}
