@@ -45,8 +45,9 @@
 //    √(R² − z²) about P̄, or T is outside the support and contributes 0), and
 //    the v-range is split where that circle crosses the opposite edge, where
 //    the angular integrand has a kink.
-//  * Quadrature. Nested adaptive Gauss–Kronrod (G15/K31, Boost's tables for
-//    long double and binary128), vector-valued: all degrees of one family
+//  * Quadrature. Nested adaptive Gauss–Kronrod (G20/K41, G10/K21 for the
+//    polynomial radial integrand of k_R^i; Boost's tables for long double
+//    and binary128), vector-valued: all degrees of one family
 //    share the nodes, and each node gives, per degree, f, ∇f and ∫|K'| (the
 //    scale against which ∇f's error is measured, ∇f itself cancels). The
 //    inner (radial) integral is computed to tolerance/4 relative; the outer
@@ -64,12 +65,12 @@
 //    measured errors against binary128 are ≤ 4e-19), ≈2e-33 in binary128.
 //    Where ∇f cancels (|∇f| ≪ ∫|K'|, e.g. z → 0 above a symmetric region)
 //    the gradient's relative estimate grows accordingly and may be untrusted.
-//  * Cost (2 shared cores, 10 degrees of one family, pentagon): long double
-//    at 4e-18 ~25k–75k kernel evaluations (10–50 ms) at a generic point,
-//    ~60k–220k (20–150 ms) at z = 1e-6·diam or 1e-6 from an edge; binary128
-//    at 1e-24 ~8 µs per evaluation, 0.5–7 s per call. The highest degree
-//    dominates: (ρ² + h²)^(-i/2) has poles of order i at |ρ| = h, which the
-//    rules resolve only with short intervals.
+//  * Cost (2 shared cores under load, 10 degrees of one family, pentagon):
+//    long double at 4e-18: ~20k kernel evaluations (10–18 ms) at a generic
+//    point, 40k–110k (20–65 ms) at z = 1e-6·diam or 1e-6·diam from an edge,
+//    up to ~370k (200 ms) for c_s^i near an edge; binary128 at 1e-24 ~8 µs
+//    per evaluation. The highest degree dominates: (ρ² + h²)^(-i/2) has
+//    poles of order i at |ρ| = h, resolved only by short intervals.
 //  * Not covered by the estimate: the conditioning of the geometry in Real.
 //    Coordinates of the foot point and of the edges relative to it carry
 //    rounding ~ε·diam, so near a plane that is not axis-aligned (z ≪ diam)
@@ -177,17 +178,22 @@ KronrodRule<Real> make_kronrod_rule() {
   return out;
 }
 
-/// G15/K31 for the angular (outer) integral, G10/K21 for the radial (inner)
-/// one, whose integrand is cheaper to resolve with more, shorter intervals.
+/// G20/K41 for the angular (outer) integral and for the radial (inner) one
+/// of p^i and c_s^i: their integrands have poles of order up to i near the
+/// interval, which a higher order resolves with fewer, longer intervals
+/// (measured: 2–3.5× fewer kernel evaluations than G10/K21 × G15/K31 at
+/// generic and near-plane points). G10/K21 for the radial integral of k_R^i:
+/// a polynomial of degree ≤ i + 1 in ρ, exact for G10 up to i = 18.
 template <class Real>
 const KronrodRule<Real>& outer_rule() {
-  static const KronrodRule<Real> rule = make_kronrod_rule<Real, 31>();
+  static const KronrodRule<Real> rule = make_kronrod_rule<Real, 41>();
   return rule;
 }
 template <class Real>
-const KronrodRule<Real>& inner_rule() {
-  static const KronrodRule<Real> rule = make_kronrod_rule<Real, 21>();
-  return rule;
+const KronrodRule<Real>& inner_rule(bool polynomial) {
+  static const KronrodRule<Real> high = make_kronrod_rule<Real, 41>();
+  static const KronrodRule<Real> low = make_kronrod_rule<Real, 21>();
+  return polynomial ? low : high;
 }
 
 /// Rounding of one rule application, in units of ε·|∫ scale|.
@@ -637,7 +643,7 @@ class PolygonReferenceIntegrator {
       scale_of[5 * k] = 5 * k;
       for (std::size_t c = 1; c < 5; ++c) scale_of[5 * k + c] = 5 * k + 4;
     }
-    inner_.configure(polygon_detail::inner_rule<Real>(), false, components(), scale_of, max_intervals);
+    inner_.configure(polygon_detail::inner_rule<Real>(family == KernelFamily::compact), false, components(), scale_of, max_intervals);
     outer_.configure(polygon_detail::outer_rule<Real>(), true, components(), scale_of, max_intervals);
   }
 
@@ -778,7 +784,7 @@ class PolygonReferenceIntegrator {
         u_breaks.front() = 0;
         u_breaks.back() = u_end;
       } else {
-        geometric_breaks(Real(0), u_end, Real(2), u_breaks);
+        geometric_breaks(Real(0), u_end, Real(1), u_breaks);
       }
       const auto radial_integrand = [&](const Real& u, Real* inner_values, Real*) {
         Real rho = u, jacobian = 1;
