@@ -11,11 +11,8 @@
 namespace skelconv::codegen {
 
 namespace {
-
-constexpr const char* kFunctionSuffix[] = {"f", "grad", "f_and_grad"};
 constexpr const char* kGenericSuffix = "f_and_grad_generic";
-constexpr SegmentOutputs kOutputs[] = {SegmentOutputs::value, SegmentOutputs::gradient,
-                                       SegmentOutputs::value_and_gradient};
+}  // namespace
 
 std::string file_header(const std::string& file, const std::string& what, const GeneratorRequest& request) {
   std::ostringstream os;
@@ -45,6 +42,8 @@ std::string ops_initializer(const OpCount& o) {
   return os.str();
 }
 
+namespace {
+
 struct EmittedKernel {
   SegmentKernelSpec spec;
   OpCount ops[3];          // f, grad, f_and_grad: generic path
@@ -52,26 +51,7 @@ struct EmittedKernel {
 };
 
 std::string function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {
-  const std::string name = spec.name() + "_" + kFunctionSuffix[which];
-  std::ostringstream os;
-  static const char* kWhat[] = {"the field", "its gradient ∇_P f", "the field and its gradient"};
-  os << "/// " << kWhat[which] << ", where\n"
-     << "///     " << spec.equation() << "\n"
-     << "/// Operations: " << ops_text(code.ops) << " (generic form).\n";
-  if (!(code.ops_longest == code.ops)) os << "/// Longest path: " << ops_text(code.ops_longest) << ".\n";
-  os
-     << "template <class T>\n";
-  switch (which) {
-    case 0: os << "T " << name << "(const SegmentInput<T>& in) {\n"; break;
-    case 1: os << "std::array<T, 3> " << name << "(const SegmentInput<T>& in) {\n"; break;
-    default: os << "T " << name << "(const SegmentInput<T>& in, std::array<T, 3>& grad) {\n"; break;
-  }
-  os << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n";
-  if (which != 1) os << "  T f;\n";
-  if (which == 1) os << "  std::array<T, 3> grad;\n";
-  os << code.body;
-  os << (which == 1 ? "  return grad;\n" : "  return f;\n") << "}\n\n";
-  return os.str();
+  return kernel_function_text(spec.name(), spec.equation(), "SegmentInput", which, code);
 }
 
 // f and ∇f on the generic forms only: straight-line code for batch (SIMD)
@@ -92,13 +72,49 @@ std::string generic_function_text(const SegmentKernelSpec& spec, const EmittedCo
   return os.str();
 }
 
+}  // namespace
+
+std::string kernel_function_text(const std::string& kernel_name, const std::string& equation,
+                                 const std::string& input_type, int which, const EmittedCode& code,
+                                 const std::string& prologue) {
+  const std::string name = kernel_name + "_" + kFunctionSuffix[which];
+  std::ostringstream os;
+  static const char* kWhat[] = {"the field", "its gradient ∇_P f", "the field and its gradient"};
+  os << "/// " << kWhat[which] << ", where\n"
+     << "///     " << equation << "\n"
+     << "/// Operations: " << ops_text(code.ops) << " (generic form).\n";
+  if (!(code.ops_longest == code.ops)) os << "/// Longest path: " << ops_text(code.ops_longest) << ".\n";
+  os
+     << "template <class T>\n";
+  switch (which) {
+    case 0: os << "T " << name << "(const " << input_type << "<T>& in) {\n"; break;
+    case 1: os << "std::array<T, 3> " << name << "(const " << input_type << "<T>& in) {\n"; break;
+    default: os << "T " << name << "(const " << input_type << "<T>& in, std::array<T, 3>& grad) {\n"; break;
+  }
+  os << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n";
+  if (which != 1) os << "  T f;\n";
+  if (which == 1) os << "  std::array<T, 3> grad;\n";
+  os << prologue << code.body;
+  os << (which == 1 ? "  return grad;\n" : "  return f;\n") << "}\n\n";
+  return os.str();
+}
+
+std::string opcount_csv_row(const std::string& kernel_name, const std::string& family, int degree, int weight_degree,
+                            int which, const OpCount& o, const OpCount& l) {
+  std::ostringstream csv;
+  csv << kernel_name << '_' << kFunctionSuffix[which] << ',' << family << ',' << degree << ',' << weight_degree << ','
+      << kFunctionSuffix[which] << ',' << o.add << ',' << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan
+      << ',' << o.log << ',' << o.other;
+  csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
+      << l.other << '\n';
+  return csv.str();
+}
+
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
-
-}  // namespace
 
 void write_generated_folder(const GeneratorRequest& request, const std::filesystem::path& folder) {
   std::filesystem::create_directories(folder);
@@ -169,20 +185,18 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "}  // namespace skelconv::generated\n";
   write_file(folder / "segment_table.hpp", table.str());
 
+  // SCALIS segments: their own headers and table (scalis_segment_writer.cpp).
+  const std::string scalis_csv_rows = write_scalis_segment_files(request, folder);
+
   // The operation counts, machine-readable.
   std::ostringstream csv;
   csv << "function,family,degree,weight_degree,outputs,add,mul,div,sqrt,atan,log,other,"
          "longest_add,longest_mul,longest_div,longest_sqrt,longest_atan,longest_log,longest_other\n";
   for (const EmittedKernel& k : kernels)
-    for (int which = 0; which < 3; ++which) {
-      const OpCount& o = k.ops[which];
-      csv << k.spec.name() << '_' << kFunctionSuffix[which] << ',' << family_name(k.spec.family) << ','
-          << k.spec.degree << ',' << k.spec.weight_degree << ',' << kFunctionSuffix[which] << ',' << o.add << ','
-          << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan << ',' << o.log << ',' << o.other;
-      const OpCount& l = k.ops_longest[which];
-      csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
-          << l.other << '\n';
-    }
+    for (int which = 0; which < 3; ++which)
+      csv << opcount_csv_row(k.spec.name(), std::string(family_name(k.spec.family)), k.spec.degree,
+                             k.spec.weight_degree, which, k.ops[which], k.ops_longest[which]);
+  csv << scalis_csv_rows;
   write_file(folder / "opcounts.csv", csv.str());
 }
 

@@ -3,6 +3,7 @@
 //
 //   skelconv-codegen --out generated [--inverse 1:16] [--cauchy 1:16]
 //                    [--compact 2:16] [--weights 0:3]
+//                    [--scalis-inverse 2:10] [--scalis-cauchy 2:10]
 #include <CLI/CLI.hpp>
 
 #include <sys/personality.h>
@@ -10,6 +11,7 @@
 
 #include <iostream>
 #include <regex>
+#include <tuple>
 
 #include "kernel_writer.hpp"
 
@@ -56,12 +58,17 @@ int main(int argc, char** argv) {
   app.add_option("--cauchy", cauchy, "Cauchy degrees i")->capture_default_str();
   app.add_option("--compact", compact, "compact-support degrees i (i ≥ 2)")->capture_default_str();
   app.add_option("--weights", weights, "weight-polynomial degrees")->capture_default_str();
+  // SCALIS segments (SPEC §4): the weight τ(t)^(i−1) has degree i − 1.
+  std::string scalis_inverse = "none", scalis_cauchy = "none";
+  app.add_option("--scalis-inverse", scalis_inverse, "SCALIS inverse segment degrees i (i ≥ 2)")->capture_default_str();
+  app.add_option("--scalis-cauchy", scalis_cauchy, "SCALIS Cauchy segment degrees i (i ≥ 2)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try {
     skelconv::codegen::GeneratorRequest request;
     request.command_line = "skelconv-codegen --inverse " + inverse + " --cauchy " + cauchy + " --compact " + compact +
-                           " --weights " + weights;
+                           " --weights " + weights + " --scalis-inverse " + scalis_inverse + " --scalis-cauchy " +
+                           scalis_cauchy;
     const DegreeRange w = parse_range(weights, "--weights");
     if (w.last > skelconv::max_weight_degree)
       throw CLI::ValidationError("--weights", "SegmentInput holds weights up to degree " +
@@ -77,6 +84,13 @@ int main(int argc, char** argv) {
                                    "degrees start at " + std::string(family == KernelFamily::compact ? "2" : "1"));
       for (int i = range.first; i <= range.last; ++i)
         for (int d = w.first; d <= w.last; ++d) request.segment_kernels.push_back({family, i, d});
+    }
+    for (const auto& [family, option, text] :
+         {std::tuple{KernelFamily::inverse, "--scalis-inverse", scalis_inverse},
+          std::tuple{KernelFamily::cauchy, "--scalis-cauchy", scalis_cauchy}}) {
+      const DegreeRange range = parse_range(text, option);
+      if (range.last >= range.first && range.first < 2) throw CLI::ValidationError(option, "SCALIS degrees start at 2");
+      for (int i = range.first; i <= range.last; ++i) request.scalis_segment_kernels.push_back({family, i});
     }
     skelconv::codegen::write_generated_folder(request, out);
     std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels to " << out << '\n';

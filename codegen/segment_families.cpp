@@ -65,12 +65,21 @@ std::string weight_text(int weight_degree) {
 // Builds the program step by step; one instance per generated function.
 class SegmentProgramBuilder {
  public:
-  SegmentProgramBuilder(const SegmentKernelSpec& spec) : spec_(spec) {}
+  explicit SegmentProgramBuilder(const SegmentKernelSpec& spec) : spec_(spec) {}
+  // SCALIS (SPEC §4): the weight and the quadratic come from τ0, Δτ, σ.
+  explicit SegmentProgramBuilder(const ScalisKernelSpec& scalis)
+      : spec_{scalis.family, scalis.degree, scalis.degree - 1}, scalis_(true) {}
 
   StraightLineProgram build(SegmentOutputs outputs) {
-    read_inputs();
-    define_geometry();
-    define_quadratic();
+    if (scalis_) {
+      read_scalis_inputs();
+      define_geometry();
+      define_scalis_quadratic();
+    } else {
+      read_inputs();
+      define_geometry();
+      define_quadratic();
+    }
     const int n = kernel_index();
     const bool value = outputs != SegmentOutputs::gradient;
     const bool gradient = outputs != SegmentOutputs::value;
@@ -189,11 +198,11 @@ class SegmentProgramBuilder {
  private:
   // f = |AB| F and ∇f = −n α |AB| (AP G_ap − AB G_ab), SPEC §2.
   void add_outputs(const std::vector<symbol>& targets, bool value, bool gradient) {
-    if (value) program_.add_output("f", length_ * targets[0]);
+    if (value) program_.add_output("f", output_scale_ * length_ * targets[0]);
     if (gradient) {
       const symbol& g_ap = targets[value ? 1 : 0];
       const symbol& g_ab = targets[value ? 2 : 1];
-      const ex factor = define("g_factor", -kernel_index() * alpha_ * length_);
+      const ex factor = define("g_factor", -kernel_index() * alpha_ * output_scale_ * length_);
       for (int i = 0; i < 3; ++i)
         program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
     }
@@ -321,6 +330,60 @@ class SegmentProgramBuilder {
     // D = ac − b² = αβ|AB|² + α²|AB × AP|² (Lagrange's identity): no
     // cancellation near the segment's line.
     D_ = define("D", alpha_ * (beta_ * ab_ab_ + alpha_ * cross_cross_));
+    a_minus_b_value_ = -alpha_ * ab_bp_;  // a − b = −α AB·BP
+    q1_value_ = beta_ + alpha_ * bp_bp_;  // q(1) = β + α|BP|²
+    c_minus_b_value_ = beta_ + alpha_ * ap_bp_;  // c − b = β + α AP·BP
+  }
+
+  // SCALIS segment (SPEC §4, Zanni 2013 Table 3): with the radius
+  // τ(t) = τ0 + Δτ t and scale σ, both the inverse and the Cauchy kernel give
+  //     F = σ^i |AB| ∫_0^1 τ(t)^(i−1) q(t)^(−i/2) dt,
+  //     q = |P − Γ(t)|² + s2 τ(t)²,   s2 = σ² (Cauchy), 0 (inverse),
+  // a weighted segment integral with w(t) = τ(t)^(i−1) (the factor σ^i is
+  // applied to the outputs). For Cauchy, q is the squared distance in 4-D
+  // between P' = (P, 0) and Γ'(t) = (Γ(t), σ τ(t)), so D = ac − b² is, by
+  // Lagrange's identity there, |AB × AP|² + σ²|τ0 AB + Δτ AP|²: a sum of
+  // squares. The ends are swapped so that Δτ ≥ 0 (the field is symmetric):
+  // then every coefficient C(i−1,k) τ0^(i−1−k) Δτ^k of w is ≥ 0 and the
+  // weighted sums do not cancel. No division by τ0 or Δτ: a cone (τ0 = 0)
+  // and a cylinder (Δτ = 0) take the same code.
+  void read_scalis_inputs() {
+    for (int i = 0; i < 3; ++i) {
+      A_[i] = input("A", "end_a", i);
+      B_[i] = input("B", "end_b", i);
+      P_[i] = input("P", "in.p", i);
+    }
+    const symbol tau_lo("tau_lo"), tau_hi("tau_hi"), sigma("sigma");
+    program_.add_input(tau_lo, "tau_lo");
+    program_.add_input(tau_hi, "tau_hi");
+    program_.add_input(sigma, "in.sigma");
+    tau0_ = tau_lo;
+    tau1_ = tau_hi;
+    delta_tau_ = define("delta_tau", tau_hi - tau_lo);
+    const int top = spec_.degree - 1;
+    for (int k = 0; k <= top; ++k)
+      w_.push_back(GiNaC::binomial(numeric(top), numeric(k)) * pow(tau0_, top - k) * pow(delta_tau_, k));
+    output_scale_ = pow(sigma, spec_.degree);
+    if (spec_.family == KernelFamily::cauchy) sigma2_ = define("sigma2", pow(sigma, 2));
+  }
+
+  void define_scalis_quadratic() {
+    alpha_ = 1;
+    beta_ = 0;
+    const ex& s2 = sigma2_;
+    a_ = define("a", ab_ab_ + s2 * pow(delta_tau_, 2));
+    b_ = define("b", ab_ap_ - s2 * delta_tau_ * tau0_);
+    c_ = define("c", ap_ap_ + s2 * pow(tau0_, 2));
+    if (spec_.family == KernelFamily::cauchy) {
+      std::array<ex, 3> v;  // τ0 AB + Δτ AP
+      for (int i = 0; i < 3; ++i) v[i] = define("radial" + std::to_string(i), tau0_ * ab_[i] + delta_tau_ * ap_[i]);
+      D_ = define("D", cross_cross_ + s2 * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    } else {
+      D_ = define("D", cross_cross_);
+    }
+    a_minus_b_value_ = -ab_bp_ + s2 * delta_tau_ * tau1_;  // a − b
+    q1_value_ = bp_bp_ + s2 * pow(tau1_, 2);               // q(1) = |BP|² + σ²τ1²
+    c_minus_b_value_ = ap_bp_ + s2 * tau0_ * tau1_;        // c − b
   }
 
   // The quadratic's coefficients, common to every family.
@@ -337,8 +400,8 @@ class SegmentProgramBuilder {
   MomentSymbols infinite_support_symbols() {
     MomentSymbols m = quadratic_symbols();
     const bool odd = spec_.degree % 2 != 0;
-    const ex a_minus_b = a_minus_b_ = define("a_minus_b", -alpha_ * ab_bp_);  // a − b = −α AB·BP
-    const ex q1 = define("q1", beta_ + alpha_ * bp_bp_);        // q(1) = β + α|BP|²
+    const ex a_minus_b = a_minus_b_ = define("a_minus_b", a_minus_b_value_);
+    const ex q1 = define("q1", q1_value_);
     const symbol r0("r0"), r1("r1");
     m.lo = {0, c_, r0, -b_};
     m.hi = {1, q1, r1, a_minus_b};
@@ -351,7 +414,7 @@ class SegmentProgramBuilder {
     } else {
       // J_2 = (atan((a−b)/√D) + atan(b/√D))/√D = atan2(√D, c − b)/√D: the two
       // atans of Hubert §3.1 summed into one, exact for all P off the line.
-      const ex c_minus_b = define("c_minus_b", beta_ + alpha_ * ap_bp_);  // c − b = β + α AP·BP
+      const ex c_minus_b = define("c_minus_b", c_minus_b_value_);
       const ex root_D = pow(D_, numeric(1, 2));
       // Only the upward recurrence reads it: it is 0/0 on the line.
       symbol J2("J2");
@@ -408,7 +471,8 @@ class SegmentProgramBuilder {
     return m;
   }
 
-  const SegmentKernelSpec& spec_;
+  const SegmentKernelSpec spec_;
+  const bool scalis_ = false;
   StraightLineProgram program_;
   std::array<symbol, 3> A_, B_, P_;
   std::vector<ex> w_;
@@ -416,6 +480,9 @@ class SegmentProgramBuilder {
   ex ab_ab_, ab_ap_, ap_ap_, cross_cross_, bp_bp_, ab_bp_, ap_bp_, length_;
   ex alpha_, beta_, inv_R_;
   ex a_, b_, c_, D_, a_minus_b_;
+  ex a_minus_b_value_, q1_value_, c_minus_b_value_;   // set by define_quadratic
+  ex output_scale_ = 1;                               // σ^i for SCALIS
+  ex tau0_, tau1_, delta_tau_, sigma2_ = 0;            // SCALIS only
   std::vector<std::pair<symbol, ex>> upward_steps_;  // definitions only the upward form reads
 };
 
@@ -441,6 +508,24 @@ std::string SegmentKernelSpec::equation() const {
 }
 
 StraightLineProgram build_segment_program(const SegmentKernelSpec& spec, SegmentOutputs outputs) {
+  return SegmentProgramBuilder(spec).build(outputs);
+}
+
+std::string ScalisKernelSpec::name() const {
+  return "scalis_segment_" + std::string(family_name(family)) + "_i" + std::to_string(degree);
+}
+
+std::string ScalisKernelSpec::equation() const {
+  const std::string i = std::to_string(degree);
+  const std::string kernel = family == KernelFamily::cauchy ? "(1 + (d/σ)²)^(−" + i + "/2)" : "(d/σ)^(−" + i + ")";
+  return "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = " + kernel +
+         ", τ(t) = τ0 + (τ1 − τ0) t  [= σ^" + i + " |AB| ∫_0^1 τ^" + std::to_string(degree - 1) + " (|P − Γ|²" +
+         (family == KernelFamily::cauchy ? " + σ²τ²" : "") + ")^(−" + i + "/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]";
+}
+
+StraightLineProgram build_scalis_segment_program(const ScalisKernelSpec& spec, SegmentOutputs outputs) {
+  if (spec.family == KernelFamily::compact) throw std::logic_error("SCALIS compact segments are not generated");
+  if (spec.degree < 2) throw std::logic_error("SCALIS degrees start at 2");
   return SegmentProgramBuilder(spec).build(outputs);
 }
 

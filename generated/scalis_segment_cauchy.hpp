@@ -1,0 +1,3755 @@
+// generated/scalis_segment_cauchy.hpp — SCALIS segment kernels of the cauchy family.
+//
+// GENERATED FILE: DO NOT EDIT. Regenerate with
+//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
+// Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
+// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
+// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
+// SCALIS segments (SPEC §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of
+// degree i with the weight σ^i τ(t)^(i−1), and for Cauchy q = |P − Γ(t)|² + σ²τ(t)²
+// (codegen/segment_families.cpp, ScalisKernelSpec). Unnormalised: f = c F / h is
+// the runtime's (skelconv/scalis_segment.hpp).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <skelconv/gauss_moments.hpp>
+#include <skelconv/scalis_segment_input.hpp>
+#include <skelconv/stable_recurrence.hpp>
+
+namespace skelconv::generated {
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 43 +, 63 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 144 +, 243 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ab2 * ap2 + ap1 * ab1;
+  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = ap0 * bp0 + ap1 * bp1 + bp2 * ap2;
+  const T length = sqrt(ab_ab);
+  const T a = delta_tau * delta_tau * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T c = ap_ap + tau_lo * tau_lo * sigma2;
+  const T radial0 = delta_tau * ap0 + tau_lo * ab0;
+  const T radial1 = tau_lo * ab1 + ap1 * delta_tau;
+  const T radial2 = delta_tau * ap2 + tau_lo * ab2;
+  const T D = sigma2 * (radial0 * radial0 + radial2 * radial2 + radial1 * radial1) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  const T log_ratio = log(q1 / c);
+  T F;
+  const T t0 = D - T(2) * a * a;
+  const T t1 = -b * a_minus_b;
+  const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 2> M_flat;
+    segment_moments_gauss<T, 20>(2, 2, 1, a, b, c, T(0), T(1), M_flat.data());
+    F = delta_tau * M_flat[1] + tau_lo * M_flat[0];
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
+    const T t3 = J_downward<T>(2, a, D, -b, c, a_minus_b, q1);
+    const T t4 = T(1) / a;
+    F = t3 * tau_lo + (T(1) / T(2)) * delta_tau * t4 * (log_ratio + T(2) * t3 * b);
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t5 = sqrt(D);
+    const T J2 = atan2(t5, c_minus_b) / t5;
+    const T t6 = T(1) / a;
+    F = tau_lo * J2 + (T(1) / T(2)) * delta_tau * t6 * (log_ratio + T(2) * J2 * b);
+  }
+  f = F * sigma2 * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 52 +, 90 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 168 +, 295 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i2_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap1 * ab1 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T a = delta_tau * delta_tau * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T c = ap_ap + tau_lo * tau_lo * sigma2;
+  const T radial0 = ap0 * delta_tau + tau_lo * ab0;
+  const T radial1 = tau_lo * ab1 + ap1 * delta_tau;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = (radial0 * radial0 + radial2 * radial2 + radial1 * radial1) * sigma2 + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  T G_ap;
+  T G_ab;
+  const T t0 = D - T(2) * a * a;
+  const T t1 = -b * a_minus_b;
+  const T t2 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 3> M_flat;
+    segment_moments_gauss<T, 20>(4, 4, 2, a, b, c, T(0), T(1), M_flat.data());
+    G_ap = tau_lo * M_flat[0] + delta_tau * M_flat[1];
+    G_ab = tau_lo * M_flat[1] + delta_tau * M_flat[2];
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 3> M_beyond;
+    segment_moments_beyond_end<T>(4, 4, 2, a, b, D, c, q1, M_beyond.data());
+    G_ap = M_beyond[0] * tau_lo + delta_tau * M_beyond[1];
+    G_ab = tau_lo * M_beyond[1] + delta_tau * M_beyond[2];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t3 = sqrt(D);
+    const T t4 = T(1) / t3;
+    const T J2 = t4 * atan2(t3, c_minus_b);
+    const T t5 = T(1) / D;
+    const T t6 = T(1) / c;
+    const T t7 = T(1) / q1;
+    const T t8 = b * t6 + t7 * a_minus_b + a * J2;
+    const T t9 = T(1) / a;
+    const T t10 = t6 + t5 * b * t8 - t7;
+    G_ap = (T(1) / T(2)) * t5 * tau_lo * t8 + (T(1) / T(2)) * delta_tau * t9 * t10;
+    G_ab = (T(1) / T(2)) * t9 * tau_lo * t10 + (T(1) / T(2)) * delta_tau * t9 * (T(2) * t9 * t10 * b + T(2) * J2 - t5 * c * t8);
+  }
+  const T g_factor = -T(2) * length * sigma2;
+  grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
+  grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
+  grad[2] = -g_factor * (G_ab * ab2 - ap2 * G_ap);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 54 +, 99 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 229 +, 403 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab0 * ap0 + ap1 * ab1 + ab2 * ap2;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ap1 * ab0 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = bp2 * ap2 + bp0 * ap0 + ap1 * bp1;
+  const T length = sqrt(ab_ab);
+  const T a = delta_tau * delta_tau * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T c = tau_lo * tau_lo * sigma2 + ap_ap;
+  const T radial0 = tau_lo * ab0 + delta_tau * ap0;
+  const T radial1 = tau_lo * ab1 + ap1 * delta_tau;
+  const T radial2 = tau_lo * ab2 + delta_tau * ap2;
+  const T D = sigma2 * (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  const T t0 = T(1) / c;
+  const T log_ratio = log(q1 * t0);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t1 = D - T(2) * a * a;
+  const T t2 = -a_minus_b * b;
+  const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = delta_tau * M_flat[1] + tau_lo * M_flat[0];
+    G_ap = delta_tau * M_flat[4] + tau_lo * M_flat[3];
+    G_ab = tau_lo * M_flat[4] + delta_tau * M_flat[5];
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t4 = T(1) / a;
+    const T t5 = T(1) / q1;
+    const T t6 = a_minus_b * t5;
+    const T t7 = b * t0;
+    const T t8 = J_downward<T>(4, a, D, -b, c, a_minus_b, q1);
+    const T t9 = t6 + t7 - T(2) * t8 * D;
+    F = (T(1) / T(2)) * delta_tau * t4 * (log_ratio - T(2) * t4 * b * t9) - t4 * tau_lo * t9;
+    const T t10 = t5 - t0 - T(2) * b * t8;
+    G_ap = tau_lo * t8 - (T(1) / T(2)) * delta_tau * t4 * t10;
+    G_ab = -(T(1) / T(2)) * t4 * tau_lo * t10 - delta_tau * t4 * (t4 * b * t10 + c * t8 + t4 * t9);
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t11 = sqrt(D);
+    const T t12 = T(1) / t11;
+    const T J2 = atan2(t11, c_minus_b) * t12;
+    const T t13 = T(1) / a;
+    F = (T(1) / T(2)) * delta_tau * t13 * (log_ratio + T(2) * b * J2) + tau_lo * J2;
+    const T t14 = T(1) / q1;
+    const T t15 = a_minus_b * t14;
+    const T t16 = b * t0;
+    const T t17 = t15 + a * J2 + t16;
+    const T t18 = T(1) / D;
+    const T t19 = t14 - t17 * b * t18 - t0;
+    G_ap = (T(1) / T(2)) * tau_lo * t17 * t18 - (T(1) / T(2)) * delta_tau * t13 * t19;
+    G_ab = -(T(1) / T(2)) * delta_tau * t13 * (T(2) * t13 * b * t19 + t17 * c * t18 - T(2) * J2) - (T(1) / T(2)) * t13 * tau_lo * t19;
+  }
+  const T g_factor = -T(2) * sigma2 * length;
+  f = F * sigma2 * length;
+  grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
+  grad[1] = g_factor * (ap1 * G_ap - ab1 * G_ab);
+  grad[2] = -g_factor * (ab2 * G_ab - G_ap * ap2);
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 46 +, 77 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 163 +, 310 ×, 22 /, 25 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i3_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ap2 * ab2 + ab0 * ap0 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
+  const T ab_bp = bp2 * ab2 + ab0 * bp0 + bp1 * ab1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = ab0 * tau_lo + delta_tau * ap0;
+  const T radial1 = tau_lo * ab1 + ap1 * delta_tau;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = sigma2 * (radial1 * radial1 + radial0 * radial0 + radial2 * radial2) + cross_cross;
+  const T a_minus_b = delta_tau * tau_hi * sigma2 - ab_bp;
+  const T q1 = tau_hi * tau_hi * sigma2 + bp_bp;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T X;
+  const T t2 = b * a_minus_b;
+  if (t2 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t3 = T(1) / D;
+    const T t4 = sqrt(a);
+    const T t5 = r0 * a_minus_b;
+    X = t3 * t4 * (t5 + b * r1);
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t6 = sqrt(a);
+    const T t7 = r0 * a_minus_b;
+    X = -(b - a_minus_b) * t6 / (t7 - b * r1);
+  }
+  const T t8 = sqrt(a);
+  const T t9 = T(1) / t8;
+  const T J1 = t9 * asinh(X);
+  T F;
+  const T t10 = D - T(2) * a * a;
+  const T t11 = -b * a_minus_b;
+  const T t12 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t10 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 3> M_flat;
+    segment_moments_gauss<T, 20>(3, 3, 2, a, b, c, T(0), T(1), M_flat.data());
+    F = t1 * M_flat[0] + T(2) * M_flat[1] * delta_tau * tau_lo + t0 * M_flat[2];
+  } else if (t11 >= T(0) && t12 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
+    const T t13 = J_downward<T>(3, a, D, -b, c, a_minus_b, q1);
+    const T t14 = T(1) / r1;
+    const T t15 = T(1) / r0;
+    const T t16 = t14 - t15 - t13 * b;
+    const T t17 = T(1) / a;
+    F = t1 * t13 - T(2) * t16 * delta_tau * t17 * tau_lo - (t13 * c + T(2) * t16 * t17 * b - J1) * t0 * t17;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t18 = T(1) / D;
+    const T t19 = T(1) / r0;
+    const T t20 = T(1) / r1;
+    const T t21 = t19 * b + a_minus_b * t20;
+    const T t22 = t20 - t19 - t18 * t21 * b;
+    const T t23 = T(1) / a;
+    F = t18 * t21 * t1 - T(2) * t22 * delta_tau * t23 * tau_lo - t0 * t23 * (T(2) * t22 * t23 * b + t18 * t21 * c - J1);
+  }
+  const T t24 = in.sigma * in.sigma;
+  const T t25 = t24 * in.sigma;
+  f = length * F * t25;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 56 +, 114 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 187 +, 379 ×, 20 /, 23 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i3_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ap1 * ab1 + ap0 * ab0 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp0 * bp0 + bp1 * bp1 + bp2 * bp2;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = ap0 * delta_tau + tau_lo * ab0;
+  const T radial1 = ap1 * delta_tau + tau_lo * ab1;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = sigma2 * (radial1 * radial1 + radial0 * radial0 + radial2 * radial2) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T G_ap;
+  T G_ab;
+  const T t2 = D - T(2) * a * a;
+  const T t3 = -a_minus_b * b;
+  const T t4 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t2 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(5, 5, 3, a, b, c, T(0), T(1), M_flat.data());
+    G_ap = t0 * M_flat[2] + T(2) * delta_tau * tau_lo * M_flat[1] + M_flat[0] * t1;
+    G_ab = t1 * M_flat[1] + t0 * M_flat[3] + T(2) * delta_tau * tau_lo * M_flat[2];
+  } else if (t3 >= T(0) && t4 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 4> M_beyond;
+    segment_moments_beyond_end<T>(5, 5, 3, a, b, D, c, q1, M_beyond.data());
+    G_ap = t0 * M_beyond[2] + T(2) * delta_tau * tau_lo * M_beyond[1] + M_beyond[0] * t1;
+    G_ab = M_beyond[3] * t0 + t1 * M_beyond[1] + T(2) * delta_tau * tau_lo * M_beyond[2];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t5 = T(1) / r0;
+    const T t6 = t5 * t5;
+    const T t7 = T(1) / D;
+    const T t8 = T(1) / r1;
+    const T t9 = t8 * t8;
+    const T t10 = t8 * a_minus_b + b * t5;
+    const T t11 = t8 * a_minus_b * t9 + T(2) * t7 * a * t10 + b * t5 * t6;
+    const T t12 = t5 * t6 + t7 * t11 * b - t8 * t9;
+    const T t13 = T(1) / a;
+    const T t14 = t7 * t11 * c - T(2) * t12 * t13 * b - T(3) * t7 * t10;
+    G_ap = (T(2) / T(3)) * t12 * delta_tau * t13 * tau_lo + (T(1) / T(3)) * t7 * t1 * t11 - (T(1) / T(3)) * t0 * t13 * t14;
+    G_ab = (T(1) / T(3)) * t12 * t13 * t1 - (T(1) / T(3)) * (t12 * t13 * c + T(3) * t13 * (t8 - t5 - t7 * t10 * b) + T(2) * t13 * b * t14) * t0 * t13 - (T(2) / T(3)) * delta_tau * t13 * tau_lo * t14;
+  }
+  const T t15 = in.sigma * in.sigma;
+  const T t16 = t15 * in.sigma;
+  const T g_factor = -T(3) * t16 * length;
+  grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 61 +, 135 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 270 +, 516 ×, 22 /, 25 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab2 * ap2 + ab1 * ap1;
+  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = ab0 * tau_lo + delta_tau * ap0;
+  const T radial1 = ap1 * delta_tau + ab1 * tau_lo;
+  const T radial2 = ab2 * tau_lo + ap2 * delta_tau;
+  const T D = (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) * sigma2 + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T X;
+  const T t2 = a_minus_b * b;
+  if (t2 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t3 = r1 * b;
+    const T t4 = T(1) / D;
+    const T t5 = sqrt(a);
+    X = (t3 + r0 * a_minus_b) * t4 * t5;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t6 = sqrt(a);
+    const T t7 = r1 * b;
+    X = -(a_minus_b - b) * t6 / (t7 - r0 * a_minus_b);
+  }
+  const T t8 = sqrt(a);
+  const T t9 = T(1) / t8;
+  const T J1 = asinh(X) * t9;
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t10 = D - T(2) * a * a;
+  const T t11 = -a_minus_b * b;
+  const T t12 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t10 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 3, a, b, c, T(0), T(1), M_flat.data());
+    F = t1 * M_flat[0] + M_flat[2] * t0 + T(2) * delta_tau * tau_lo * M_flat[1];
+    G_ap = T(2) * M_flat[5] * delta_tau * tau_lo + t1 * M_flat[4] + M_flat[6] * t0;
+    G_ab = t0 * M_flat[7] + T(2) * M_flat[6] * delta_tau * tau_lo + M_flat[5] * t1;
+  } else if (t11 >= T(0) && t12 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
+    const T t13 = T(1) / a;
+    const T t14 = T(1) / r1;
+    const T t15 = t14 * t14;
+    const T t16 = a_minus_b * t14 * t15;
+    const T t17 = T(1) / r0;
+    const T t18 = t17 * t17;
+    const T t19 = t18 * t17 * b;
+    const T t20 = -b;
+    const T t21 = J_downward<T>(5, a, D, t20, c, a_minus_b, q1);
+    const T t22 = t16 + t19 - T(3) * t21 * D;
+    const T t23 = t22 * t13 * b + T(2) * t14 - T(2) * t17;
+    F = -delta_tau * t13 * tau_lo * t23 - (T(1) / T(2)) * t22 * t13 * t1 - (T(1) / T(2)) * t0 * t13 * (T(2) * t13 * t23 * b - t22 * c * t13 - T(2) * J1);
+    const T t24 = t18 * t17;
+    const T t25 = t24 + T(3) * t21 * b - t14 * t15;
+    const T t26 = T(4) * t25 * t13 * b - T(3) * t22 * t13 - T(6) * t21 * c;
+    G_ap = (T(1) / T(6)) * t26 * t0 * t13 + (T(2) / T(3)) * t25 * delta_tau * t13 * tau_lo + t21 * t1;
+    G_ab = (T(1) / T(3)) * t25 * t13 * t1 + (T(1) / T(3)) * t26 * delta_tau * t13 * tau_lo + (T(1) / T(6)) * t0 * t13 * (T(2) * t26 * t13 * b - T(2) * t25 * c * t13 - T(3) * t13 * t23);
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t27 = T(1) / D;
+    const T t28 = T(1) / r1;
+    const T t29 = T(1) / r0;
+    const T t30 = a_minus_b * t28 + t29 * b;
+    const T t31 = T(1) / a;
+    const T t32 = t29 + t27 * t30 * b - t28;
+    F = t27 * t1 * t30 + t0 * t31 * (J1 + T(2) * t32 * t31 * b - c * t27 * t30) + T(2) * t32 * delta_tau * t31 * tau_lo;
+    const T t33 = t29 * t29;
+    const T t34 = t33 * t29;
+    const T t35 = t28 * t28;
+    const T t36 = a_minus_b * t28 * t35;
+    const T t37 = t33 * t29 * b;
+    const T t38 = t36 + T(2) * t27 * a * t30 + t37;
+    const T t39 = t34 + t38 * t27 * b - t28 * t35;
+    const T t40 = c * t38 * t27 - T(2) * t39 * t31 * b - T(3) * t27 * t30;
+    G_ap = (T(2) / T(3)) * t39 * delta_tau * t31 * tau_lo + (T(1) / T(3)) * t38 * t27 * t1 - (T(1) / T(3)) * t0 * t31 * t40;
+    G_ab = (T(1) / T(3)) * t39 * t31 * t1 - (T(2) / T(3)) * delta_tau * t31 * tau_lo * t40 - (T(1) / T(3)) * t0 * t31 * (c * t39 * t31 + T(2) * t31 * t40 * b - T(3) * t32 * t31);
+  }
+  const T t41 = in.sigma * in.sigma;
+  const T t42 = t41 * in.sigma;
+  const T g_factor = -T(3) * t42 * length;
+  f = t42 * length * F;
+  grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
+  grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
+  grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 53 +, 96 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 186 +, 316 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ap0 * ab0 + ab2 * ap2;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = bp2 * ap2 + ap0 * bp0 + bp1 * ap1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - tau_lo * delta_tau * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = tau_lo * ab0 + ap0 * delta_tau;
+  const T radial1 = tau_lo * ab1 + delta_tau * ap1;
+  const T radial2 = tau_lo * ab2 + delta_tau * ap2;
+  const T D = cross_cross + (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) * sigma2;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = ap_bp + tau_lo * sigma2 * tau_hi;
+  const T t2 = T(1) / c;
+  const T log_ratio = log(t2 * q1);
+  T F;
+  const T t3 = D - T(2) * a * a;
+  const T t4 = -b * a_minus_b;
+  const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t3 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(4, 4, 3, a, b, c, T(0), T(1), M_flat.data());
+    const T t6 = t1 * tau_lo;
+    const T t7 = t0 * delta_tau;
+    F = t6 * M_flat[0] + T(3) * t1 * M_flat[1] * delta_tau + t7 * M_flat[3] + T(3) * tau_lo * t0 * M_flat[2];
+  } else if (t4 >= T(0) && t5 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = t1 * tau_lo;
+    const T t9 = J_downward<T>(4, a, D, -b, c, a_minus_b, q1);
+    const T t10 = T(1) / a;
+    const T t11 = t0 * delta_tau;
+    const T t12 = T(1) / q1;
+    const T t13 = t12 - T(2) * t9 * b - t2;
+    const T t14 = a_minus_b * t12;
+    const T t15 = b * t2;
+    const T t16 = t14 + t15 - T(2) * t9 * D;
+    const T t17 = t9 * c + t10 * t16 + t10 * t13 * b;
+    F = t8 * t9 + (T(1) / T(2)) * t10 * t11 * (t10 * t13 * c + t10 * (log_ratio - T(2) * t10 * b * t16) - T(4) * t10 * t17 * b) - T(3) * t10 * tau_lo * t0 * t17 - (T(3) / T(2)) * t10 * t1 * t13 * delta_tau;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t18 = sqrt(D);
+    const T t19 = T(1) / t18;
+    const T J2 = atan2(t18, c_minus_b) * t19;
+    const T t20 = t1 * tau_lo;
+    const T t21 = T(1) / D;
+    const T t22 = T(1) / q1;
+    const T t23 = a_minus_b * t22;
+    const T t24 = b * t2;
+    const T t25 = t23 + a * J2 + t24;
+    const T t26 = T(1) / a;
+    const T t27 = b * t21 * t25 + t2 - t22;
+    const T t28 = T(2) * J2 + T(2) * t26 * b * t27 - c * t21 * t25;
+    const T t29 = t0 * delta_tau;
+    F = (T(1) / T(2)) * t20 * t21 * t25 + (T(3) / T(2)) * t26 * t1 * delta_tau * t27 + (T(3) / T(2)) * t26 * tau_lo * t28 * t0 + (T(1) / T(2)) * t26 * t29 * (t26 * (T(2) * J2 * b + log_ratio) + T(2) * t26 * t28 * b - t26 * c * t27);
+  }
+  const T t30 = in.sigma * in.sigma;
+  const T t31 = t30 * t30;
+  f = F * length * t31;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 66 +, 144 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 212 +, 373 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i4_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ap1 * ab1 + ap2 * ab2 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
+  const T ab_bp = bp2 * ab2 + ab0 * bp0 + bp1 * ab1;
+  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - tau_lo * delta_tau * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = ab0 * tau_lo + ap0 * delta_tau;
+  const T radial1 = ap1 * delta_tau + tau_lo * ab1;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = cross_cross + (radial1 * radial1 + radial0 * radial0 + radial2 * radial2) * sigma2;
+  const T a_minus_b = delta_tau * tau_hi * sigma2 - ab_bp;
+  const T q1 = bp_bp + tau_hi * tau_hi * sigma2;
+  const T c_minus_b = tau_lo * tau_hi * sigma2 + ap_bp;
+  T G_ap;
+  T G_ab;
+  const T t2 = D - T(2) * a * a;
+  const T t3 = -a_minus_b * b;
+  const T t4 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t2 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 5> M_flat;
+    segment_moments_gauss<T, 20>(6, 6, 4, a, b, c, T(0), T(1), M_flat.data());
+    const T t5 = t1 * tau_lo;
+    const T t6 = t0 * delta_tau;
+    G_ap = T(3) * tau_lo * t0 * M_flat[2] + t5 * M_flat[0] + T(3) * t1 * delta_tau * M_flat[1] + M_flat[3] * t6;
+    G_ab = T(3) * t1 * delta_tau * M_flat[2] + t6 * M_flat[4] + t5 * M_flat[1] + T(3) * M_flat[3] * tau_lo * t0;
+  } else if (t3 >= T(0) && t4 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 5> M_beyond;
+    segment_moments_beyond_end<T>(6, 6, 4, a, b, D, c, q1, M_beyond.data());
+    const T t7 = t1 * tau_lo;
+    const T t8 = t0 * delta_tau;
+    G_ap = t7 * M_beyond[0] + T(3) * M_beyond[1] * t1 * delta_tau + t8 * M_beyond[3] + T(3) * tau_lo * t0 * M_beyond[2];
+    G_ab = M_beyond[1] * t7 + M_beyond[4] * t8 + T(3) * tau_lo * t0 * M_beyond[3] + T(3) * t1 * delta_tau * M_beyond[2];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t9 = sqrt(D);
+    const T t10 = T(1) / t9;
+    const T J2 = t10 * atan2(t9, c_minus_b);
+    const T t11 = T(1) / D;
+    const T t12 = t1 * tau_lo;
+    const T t13 = T(1) / q1;
+    const T t14 = t13 * t13;
+    const T t15 = T(1) / c;
+    const T t16 = t15 * t15;
+    const T t17 = b * t15 + a * J2 + a_minus_b * t13;
+    const T t18 = T(2) * a_minus_b * t14 + T(2) * b * t16 + T(3) * t11 * a * t17;
+    const T t19 = T(1) / a;
+    const T t20 = t11 * t18 * b + T(2) * t16 - T(2) * t14;
+    const T t21 = T(4) * t11 * t17 + T(2) * t19 * b * t20 - t11 * t18 * c;
+    const T t22 = t0 * delta_tau;
+    const T t23 = t15 + t11 * b * t17 - t13;
+    const T t24 = T(2) * t19 * t21 * b + T(4) * t19 * t23 - t19 * t20 * c;
+    G_ap = (T(1) / T(8)) * t11 * t12 * t18 + (T(3) / T(8)) * t19 * tau_lo * t0 * t21 + (T(3) / T(8)) * t19 * t1 * delta_tau * t20 + (T(1) / T(8)) * t19 * t22 * t24;
+    G_ab = (T(3) / T(8)) * t19 * t1 * delta_tau * t21 + (T(1) / T(8)) * t19 * t12 * t20 + (T(3) / T(8)) * t19 * tau_lo * t0 * t24 + (T(1) / T(8)) * t19 * t22 * (T(2) * t19 * b * t24 + T(4) * t19 * (T(2) * t19 * b * t23 + T(2) * J2 - t11 * t17 * c) - t19 * t21 * c);
+  }
+  const T t25 = in.sigma * in.sigma;
+  const T t26 = t25 * t25;
+  const T g_factor = -T(4) * t26 * length;
+  grad[0] = (ap0 * G_ap - ab0 * G_ab) * g_factor;
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 72 +, 169 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 315 +, 529 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ap = ap2 * ab2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = ap0 * delta_tau + ab0 * tau_lo;
+  const T radial1 = ab1 * tau_lo + ap1 * delta_tau;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = cross_cross + sigma2 * (radial2 * radial2 + radial1 * radial1 + radial0 * radial0);
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  const T t2 = T(1) / c;
+  const T log_ratio = log(q1 * t2);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t3 = D - T(2) * a * a;
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 4, a, b, c, T(0), T(1), M_flat.data());
+    const T t6 = t0 * delta_tau;
+    const T t7 = t1 * tau_lo;
+    F = T(3) * M_flat[1] * delta_tau * t1 + t6 * M_flat[3] + T(3) * M_flat[2] * t0 * tau_lo + t7 * M_flat[0];
+    G_ap = M_flat[8] * t6 + M_flat[5] * t7 + T(3) * M_flat[7] * t0 * tau_lo + T(3) * delta_tau * t1 * M_flat[6];
+    G_ab = T(3) * M_flat[8] * t0 * tau_lo + t7 * M_flat[6] + t6 * M_flat[9] + T(3) * M_flat[7] * delta_tau * t1;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
+    const T t8 = T(1) / a;
+    const T t9 = J_downward<T>(6, a, D, -b, c, a_minus_b, q1);
+    const T t10 = t2 * t2;
+    const T t11 = T(1) / q1;
+    const T t12 = t11 * t11;
+    const T t13 = T(4) * D * t9 - b * t10 - a_minus_b * t12;
+    const T t14 = T(3) * t2 + T(2) * t8 * t13 * b - T(3) * t11;
+    const T t15 = T(3) * a_minus_b * t11 + T(3) * b * t2 - T(2) * D * t8 * t13;
+    const T t16 = t8 * b * t14 - t15 * t8 - t8 * t13 * c;
+    const T t17 = t1 * tau_lo;
+    const T t18 = t0 * delta_tau;
+    F = (T(1) / T(2)) * t8 * delta_tau * t1 * t14 + t16 * t8 * t0 * tau_lo + (T(1) / T(3)) * t8 * t17 * t13 - (T(1) / T(6)) * (t8 * (T(2) * t15 * t8 * b - T(3) * log_ratio) + t8 * t14 * c - T(4) * t16 * t8 * b) * t8 * t18;
+    const T t19 = t12 - t10 - T(4) * t9 * b;
+    const T t20 = T(2) * t8 * t13 - T(6) * t9 * c - T(3) * t19 * t8 * b;
+    const T t21 = T(4) * t20 * t8 * b + T(2) * t8 * t14 + T(3) * t19 * t8 * c;
+    G_ap = (T(1) / T(2)) * t20 * t8 * t0 * tau_lo + (T(1) / T(12)) * t8 * t18 * t21 + t17 * t9 - (T(3) / T(4)) * t19 * t8 * delta_tau * t1;
+    G_ab = (T(1) / T(6)) * t8 * t18 * (t8 * b * t21 + T(2) * t16 * t8 - t20 * t8 * c) + (T(1) / T(4)) * t8 * t0 * tau_lo * t21 + (T(1) / T(2)) * t20 * t8 * delta_tau * t1 - (T(1) / T(4)) * t19 * t8 * t17;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t22 = sqrt(D);
+    const T t23 = T(1) / t22;
+    const T J2 = t23 * atan2(t22, c_minus_b);
+    const T t24 = T(1) / D;
+    const T t25 = t1 * tau_lo;
+    const T t26 = T(1) / q1;
+    const T t27 = a_minus_b * t26 + J2 * a + b * t2;
+    const T t28 = T(1) / a;
+    const T t29 = t24 * b * t27 + t2 - t26;
+    const T t30 = T(2) * t28 * b * t29 + T(2) * J2 - t24 * t27 * c;
+    const T t31 = t0 * delta_tau;
+    F = (T(1) / T(2)) * t24 * t25 * t27 + (T(3) / T(2)) * t28 * delta_tau * t1 * t29 + (T(3) / T(2)) * t28 * t0 * tau_lo * t30 + (T(1) / T(2)) * (T(2) * t28 * b * t30 + t28 * (T(2) * J2 * b + log_ratio) - t28 * t29 * c) * t28 * t31;
+    const T t32 = t2 * t2;
+    const T t33 = t26 * t26;
+    const T t34 = T(3) * t24 * a * t27 + T(2) * b * t32 + T(2) * a_minus_b * t33;
+    const T t35 = t24 * b * t34 + T(2) * t32 - T(2) * t33;
+    const T t36 = T(2) * t28 * b * t35 + T(4) * t24 * t27 - t24 * t34 * c;
+    const T t37 = t28 * t35 * c - T(2) * t28 * b * t36 - T(4) * t28 * t29;
+    G_ap = (T(3) / T(8)) * t28 * delta_tau * t1 * t35 + (T(3) / T(8)) * t28 * t0 * tau_lo * t36 + (T(1) / T(8)) * t24 * t25 * t34 - (T(1) / T(8)) * t37 * t28 * t31;
+    G_ab = (T(1) / T(8)) * t28 * t25 * t35 + (T(3) / T(8)) * t28 * delta_tau * t1 * t36 - (T(1) / T(8)) * (t28 * t36 * c + T(2) * t37 * t28 * b - T(4) * t28 * t30) * t28 * t31 - (T(3) / T(8)) * t37 * t28 * t0 * tau_lo;
+  }
+  const T t38 = in.sigma * in.sigma;
+  const T t39 = t38 * t38;
+  const T g_factor = -T(4) * length * t39;
+  f = length * t39 * F;
+  grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
+  grad[1] = g_factor * (ap1 * G_ap - ab1 * G_ab);
+  grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 58 +, 126 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 205 +, 403 ×, 22 /, 25 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i5_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ap0 * ab0 + ab1 * ap1 + ab2 * ap2;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + sigma2 * t0;
+  const T b = ab_ap - tau_lo * sigma2 * delta_tau;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = tau_lo * ab0 + ap0 * delta_tau;
+  const T radial1 = tau_lo * ab1 + ap1 * delta_tau;
+  const T radial2 = tau_lo * ab2 + ap2 * delta_tau;
+  const T D = sigma2 * (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) + cross_cross;
+  const T a_minus_b = sigma2 * tau_hi * delta_tau - ab_bp;
+  const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T X;
+  const T t2 = b * a_minus_b;
+  if (t2 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t3 = r0 * a_minus_b;
+    const T t4 = T(1) / D;
+    const T t5 = sqrt(a);
+    X = (t3 + b * r1) * t4 * t5;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t6 = sqrt(a);
+    const T t7 = r0 * a_minus_b;
+    X = -(b - a_minus_b) * t6 / (t7 - b * r1);
+  }
+  const T t8 = sqrt(a);
+  const T t9 = T(1) / t8;
+  const T J1 = asinh(X) * t9;
+  T F;
+  const T t10 = D - T(2) * a * a;
+  const T t11 = -b * a_minus_b;
+  const T t12 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t10 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 5> M_flat;
+    segment_moments_gauss<T, 20>(5, 5, 4, a, b, c, T(0), T(1), M_flat.data());
+    const T t13 = t1 * tau_lo;
+    const T t14 = t1 * t1;
+    const T t15 = t0 * delta_tau;
+    const T t16 = t0 * t0;
+    F = T(6) * t1 * M_flat[2] * t0 + T(4) * t13 * M_flat[1] * delta_tau + t14 * M_flat[0] + T(4) * tau_lo * M_flat[3] * t15 + M_flat[4] * t16;
+  } else if (t11 >= T(0) && t12 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
+    const T t17 = t1 * t1;
+    const T t18 = J_downward<T>(5, a, D, -b, c, a_minus_b, q1);
+    const T t19 = T(1) / r0;
+    const T t20 = t19 * t19;
+    const T t21 = t19 * b * t20;
+    const T t22 = T(1) / r1;
+    const T t23 = t22 * t22;
+    const T t24 = t22 * a_minus_b * t23;
+    const T t25 = t21 + t24 - T(3) * t18 * D;
+    const T t26 = T(1) / a;
+    const T t27 = t25 * b * t26 + T(2) * t22 - T(2) * t19;
+    const T t28 = t19 * t20;
+    const T t29 = t28 + T(3) * b * t18 - t22 * t23;
+    const T t30 = T(4) * t29 * b * t26 - T(6) * t18 * c - T(3) * t25 * t26;
+    const T t31 = T(3) * t27 * t26 + T(2) * t29 * c * t26 - T(2) * b * t30 * t26;
+    const T t32 = t0 * t0;
+    const T t33 = t1 * tau_lo;
+    const T t34 = t0 * delta_tau;
+    F = t17 * t18 + (T(1) / T(6)) * (T(3) * (T(2) * J1 + t25 * c * t26 - T(2) * t27 * b * t26) * t26 - T(2) * b * t31 * t26 - c * t30 * t26) * t32 * t26 + t1 * t30 * t0 * t26 + (T(4) / T(3)) * t33 * t29 * delta_tau * t26 - (T(2) / T(3)) * tau_lo * t31 * t34 * t26;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t35 = T(1) / D;
+    const T t36 = T(1) / r0;
+    const T t37 = T(1) / r1;
+    const T t38 = t36 * b + t37 * a_minus_b;
+    const T t39 = t36 * t36;
+    const T t40 = t36 * t39;
+    const T t41 = t36 * b * t39;
+    const T t42 = t37 * t37;
+    const T t43 = t37 * a_minus_b * t42;
+    const T t44 = t41 + t43 + T(2) * t35 * t38 * a;
+    const T t45 = t40 + b * t44 * t35 - t37 * t42;
+    const T t46 = T(1) / a;
+    const T t47 = T(3) * t35 * t38 + T(2) * b * t45 * t46 - c * t44 * t35;
+    const T t48 = b * t35 * t38 + t36 - t37;
+    const T t49 = T(2) * b * t47 * t46 + T(3) * t48 * t46 - c * t45 * t46;
+    const T t50 = t0 * delta_tau;
+    const T t51 = t1 * t1;
+    const T t52 = t1 * tau_lo;
+    const T t53 = t0 * t0;
+    F = (T(4) / T(3)) * tau_lo * t49 * t50 * t46 + T(2) * t1 * t47 * t0 * t46 + (T(1) / T(3)) * t51 * t44 * t35 + (T(4) / T(3)) * t52 * t45 * delta_tau * t46 - (T(1) / T(3)) * (t47 * c * t46 - T(3) * t46 * (J1 + T(2) * t48 * b * t46 - c * t35 * t38) - T(2) * b * t49 * t46) * t53 * t46;
+  }
+  const T t54 = in.sigma * in.sigma;
+  const T t55 = t54 * t54;
+  const T t56 = t55 * in.sigma;
+  f = F * t56 * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 72 +, 180 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 231 +, 478 ×, 20 /, 23 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i5_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = ab0 * bp0 + ab2 * bp2 + ab1 * bp1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = ab0 * tau_lo + ap0 * delta_tau;
+  const T radial1 = ap1 * delta_tau + ab1 * tau_lo;
+  const T radial2 = ap2 * delta_tau + ab2 * tau_lo;
+  const T D = sigma2 * (radial0 * radial0 + radial2 * radial2 + radial1 * radial1) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T G_ap;
+  T G_ab;
+  const T t2 = D - T(2) * a * a;
+  const T t3 = -a_minus_b * b;
+  const T t4 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t2 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(7, 7, 5, a, b, c, T(0), T(1), M_flat.data());
+    const T t5 = t0 * delta_tau;
+    const T t6 = t1 * t1;
+    const T t7 = t0 * t0;
+    const T t8 = t1 * tau_lo;
+    G_ap = T(4) * M_flat[3] * t5 * tau_lo + M_flat[0] * t6 + t7 * M_flat[4] + T(4) * delta_tau * t8 * M_flat[1] + T(6) * M_flat[2] * t0 * t1;
+    G_ab = T(6) * M_flat[3] * t0 * t1 + T(4) * M_flat[2] * delta_tau * t8 + t6 * M_flat[1] + T(4) * t5 * tau_lo * M_flat[4] + t7 * M_flat[5];
+  } else if (t3 >= T(0) && t4 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 6> M_beyond;
+    segment_moments_beyond_end<T>(7, 7, 5, a, b, D, c, q1, M_beyond.data());
+    const T t9 = t0 * delta_tau;
+    const T t10 = t0 * t0;
+    const T t11 = t1 * tau_lo;
+    const T t12 = t1 * t1;
+    G_ap = T(4) * M_beyond[3] * t9 * tau_lo + M_beyond[4] * t10 + T(6) * t0 * t1 * M_beyond[2] + T(4) * delta_tau * M_beyond[1] * t11 + M_beyond[0] * t12;
+    G_ab = T(6) * M_beyond[3] * t0 * t1 + T(4) * delta_tau * t11 * M_beyond[2] + t10 * M_beyond[5] + T(4) * M_beyond[4] * t9 * tau_lo + M_beyond[1] * t12;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t13 = t0 * t0;
+    const T t14 = T(1) / a;
+    const T t15 = T(1) / r0;
+    const T t16 = t15 * t15;
+    const T t17 = T(1) / r1;
+    const T t18 = t17 * a_minus_b + b * t15;
+    const T t19 = T(1) / D;
+    const T t20 = t17 * t17;
+    const T t21 = t16 * b * t15 + T(2) * t18 * t19 * a + t17 * a_minus_b * t20;
+    const T t22 = t21 * t19 * b + t16 * t15 - t17 * t20;
+    const T t23 = T(2) * t22 * t14 * b + T(3) * t18 * t19 - t21 * c * t19;
+    const T t24 = t20 * t20;
+    const T t25 = t16 * t16;
+    const T t26 = T(3) * t17 * a_minus_b * t24 + T(3) * t25 * b * t15 + T(4) * t21 * t19 * a;
+    const T t27 = t19 * t26 * b + T(3) * t25 * t15 - T(3) * t17 * t24;
+    const T t28 = T(2) * t14 * t27 * b + T(5) * t21 * t19 - c * t19 * t26;
+    const T t29 = T(2) * t14 * t28 * b + T(5) * t22 * t14 - c * t14 * t27;
+    const T t30 = T(5) * t14 * t23 + T(2) * t14 * t29 * b - c * t14 * t28;
+    const T t31 = t1 * t1;
+    const T t32 = t1 * tau_lo;
+    const T t33 = t0 * delta_tau;
+    G_ap = (T(1) / T(15)) * t13 * t14 * t30 + (T(2) / T(5)) * t0 * t14 * t1 * t28 + (T(1) / T(15)) * t19 * t26 * t31 + (T(4) / T(15)) * delta_tau * t14 * t32 * t27 + (T(4) / T(15)) * t33 * t14 * tau_lo * t29;
+    G_ab = (T(2) / T(5)) * t0 * t14 * t1 * t29 + (T(4) / T(15)) * delta_tau * t14 * t32 * t28 + (T(1) / T(15)) * t14 * t31 * t27 + (T(4) / T(15)) * t33 * t14 * tau_lo * t30 - (T(1) / T(15)) * t13 * t14 * (T(5) * (c * t22 * t14 + T(3) * (t17 - t18 * t19 * b - t15) * t14 - T(2) * t14 * b * t23) * t14 + c * t14 * t29 - T(2) * t14 * t30 * b);
+  }
+  const T t34 = in.sigma * in.sigma;
+  const T t35 = t34 * t34;
+  const T t36 = t35 * in.sigma;
+  const T g_factor = -T(5) * t36 * length;
+  grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
+  grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
+  grad[2] = -g_factor * (G_ab * ab2 - ap2 * G_ap);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 81 +, 218 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 356 +, 663 ×, 22 /, 25 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab2 * ap2 + ap1 * ab1 + ap0 * ab0;
+  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - tau_lo * delta_tau * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = ap0 * delta_tau + tau_lo * ab0;
+  const T radial1 = ap1 * delta_tau + tau_lo * ab1;
+  const T radial2 = delta_tau * ap2 + tau_lo * ab2;
+  const T D = sigma2 * (radial0 * radial0 + radial2 * radial2 + radial1 * radial1) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T X;
+  const T t2 = a_minus_b * b;
+  if (t2 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t3 = sqrt(a);
+    const T t4 = r1 * b;
+    const T t5 = T(1) / D;
+    X = t3 * (t4 + a_minus_b * r0) * t5;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t6 = sqrt(a);
+    const T t7 = r1 * b;
+    X = -t6 * (a_minus_b - b) / (t7 - a_minus_b * r0);
+  }
+  const T t8 = sqrt(a);
+  const T t9 = T(1) / t8;
+  const T J1 = t9 * asinh(X);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t10 = D - T(2) * a * a;
+  const T t11 = -a_minus_b * b;
+  const T t12 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t10 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 12> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 5, a, b, c, T(0), T(1), M_flat.data());
+    const T t13 = t0 * delta_tau;
+    const T t14 = t1 * tau_lo;
+    const T t15 = t0 * t0;
+    const T t16 = t1 * t1;
+    F = T(4) * M_flat[3] * tau_lo * t13 + T(6) * t1 * t0 * M_flat[2] + T(4) * t14 * delta_tau * M_flat[1] + t15 * M_flat[4] + t16 * M_flat[0];
+    G_ap = t16 * M_flat[6] + T(4) * t14 * delta_tau * M_flat[7] + t15 * M_flat[10] + T(6) * t1 * t0 * M_flat[8] + T(4) * M_flat[9] * tau_lo * t13;
+    G_ab = T(6) * M_flat[9] * t1 * t0 + t16 * M_flat[7] + t15 * M_flat[11] + T(4) * tau_lo * t13 * M_flat[10] + T(4) * t14 * delta_tau * M_flat[8];
+  } else if (t11 >= T(0) && t12 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_7 = J_downward(…)
+    const T t17 = -b;
+    const T t18 = J_downward<T>(7, a, D, t17, c, a_minus_b, q1);
+    const T t19 = T(1) / r0;
+    const T t20 = t19 * t19;
+    const T t21 = t20 * t20;
+    const T t22 = T(1) / r1;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * t23;
+    const T t25 = T(5) * t18 * D - b * t21 * t19 - t22 * a_minus_b * t24;
+    const T t26 = T(1) / a;
+    const T t27 = t1 * t1;
+    const T t28 = t0 * t0;
+    const T t29 = T(3) * t25 * t26 * D - T(4) * t22 * a_minus_b * t23 - T(4) * b * t20 * t19;
+    const T t30 = t26 * b * t29 + T(8) * t19 - T(8) * t22;
+    const T t31 = T(3) * t25 * t26 * b + T(4) * t20 * t19 - T(4) * t22 * t23;
+    const T t32 = T(4) * t26 * b * t31 + T(3) * t26 * t29 - T(6) * t25 * t26 * c;
+    const T t33 = T(3) * t26 * t30 + T(2) * t26 * b * t32 - T(2) * t26 * c * t31;
+    const T t34 = t0 * delta_tau;
+    const T t35 = t1 * tau_lo;
+    F = (T(1) / T(4)) * t25 * t26 * t27 + (T(1) / T(24)) * t26 * t28 * (T(2) * t26 * t33 * b - t26 * c * t32 - T(3) * t26 * (t26 * c * t29 - T(2) * t26 * b * t30 - T(8) * J1)) + (T(1) / T(6)) * t26 * tau_lo * t34 * t33 + (T(1) / T(3)) * t26 * t35 * delta_tau * t31 + (T(1) / T(4)) * t26 * t1 * t0 * t32;
+    const T t36 = T(5) * b * t18 + t21 * t19 - t22 * t24;
+    const T t37 = T(8) * t26 * b * t36 + T(5) * t25 * t26 - T(20) * t18 * c;
+    const T t38 = T(6) * t26 * b * t37 + T(5) * t26 * t31 - T(12) * t26 * t36 * c;
+    const T t39 = T(6) * t26 * t37 * c - T(5) * t26 * t32 - T(4) * t26 * b * t38;
+    G_ap = (T(4) / T(5)) * t26 * t35 * delta_tau * t36 + t27 * t18 + (T(1) / T(15)) * t26 * tau_lo * t34 * t38 + (T(3) / T(10)) * t26 * t1 * t0 * t37 - (T(1) / T(120)) * t26 * t28 * t39;
+    G_ab = (T(1) / T(5)) * t26 * t27 * t36 + (T(1) / T(10)) * t26 * t1 * t0 * t38 + (T(1) / T(5)) * t26 * t35 * delta_tau * t37 - (T(1) / T(120)) * t26 * t28 * (T(2) * t26 * b * t39 + T(2) * t26 * c * t38 - T(5) * t26 * t33) - (T(1) / T(30)) * t26 * tau_lo * t34 * t39;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t40 = t1 * t1;
+    const T t41 = T(1) / r1;
+    const T t42 = t41 * t41;
+    const T t43 = T(1) / r0;
+    const T t44 = t43 * t43;
+    const T t45 = b * t43 + t41 * a_minus_b;
+    const T t46 = T(1) / D;
+    const T t47 = t41 * a_minus_b * t42 + b * t44 * t43 + T(2) * a * t45 * t46;
+    const T t48 = T(1) / a;
+    const T t49 = t0 * delta_tau;
+    const T t50 = t43 + b * t45 * t46 - t41;
+    const T t51 = t44 * t43 + b * t47 * t46 - t41 * t42;
+    const T t52 = t47 * c * t46 - T(2) * t48 * b * t51 - T(3) * t45 * t46;
+    const T t53 = T(3) * t48 * t50 - T(2) * t48 * b * t52 - t48 * t51 * c;
+    const T t54 = t1 * tau_lo;
+    const T t55 = t0 * t0;
+    F = (T(1) / T(3)) * t40 * t47 * t46 + (T(4) / T(3)) * t48 * tau_lo * t49 * t53 + (T(4) / T(3)) * t48 * t54 * delta_tau * t51 - T(2) * t48 * t1 * t0 * t52 - (T(1) / T(3)) * t48 * t55 * (T(3) * t48 * (t45 * c * t46 - T(2) * t48 * b * t50 - J1) - T(2) * t48 * b * t53 - t48 * c * t52);
+    const T t56 = t44 * t44;
+    const T t57 = t42 * t42;
+    const T t58 = T(4) * a * t47 * t46 + T(3) * b * t56 * t43 + T(3) * t41 * a_minus_b * t57;
+    const T t59 = T(3) * t41 * t57 - T(3) * t56 * t43 - t58 * b * t46;
+    const T t60 = T(2) * t59 * t48 * b + t58 * c * t46 - T(5) * t47 * t46;
+    const T t61 = T(2) * t48 * b * t60 - T(5) * t48 * t51 - t59 * t48 * c;
+    const T t62 = t48 * t60 * c - T(2) * t48 * b * t61 - T(5) * t48 * t52;
+    G_ap = (T(1) / T(15)) * t58 * t40 * t46 + (T(1) / T(15)) * t48 * t55 * t62 - (T(2) / T(5)) * t48 * t1 * t0 * t60 - (T(4) / T(15)) * t59 * t48 * t54 * delta_tau - (T(4) / T(15)) * t48 * tau_lo * t49 * t61;
+    G_ab = (T(4) / T(15)) * t48 * tau_lo * t49 * t62 + (T(1) / T(15)) * t48 * t55 * (T(5) * t48 * t53 + t48 * t61 * c + T(2) * t48 * b * t62) - (T(2) / T(5)) * t48 * t1 * t0 * t61 - (T(4) / T(15)) * t48 * t54 * delta_tau * t60 - (T(1) / T(15)) * t59 * t48 * t40;
+  }
+  const T t63 = in.sigma * in.sigma;
+  const T t64 = t63 * t63;
+  const T t65 = t64 * in.sigma;
+  const T g_factor = -T(5) * length * t65;
+  f = F * length * t65;
+  grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
+  grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
+  grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 67 +, 150 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 228 +, 389 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i6_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = bp1 * ap1 + bp0 * ap0 + bp2 * ap2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = sigma2 * t0 + ab_ab;
+  const T b = ab_ap - sigma2 * delta_tau * tau_lo;
+  const T t1 = tau_lo * tau_lo;
+  const T c = sigma2 * t1 + ap_ap;
+  const T radial0 = ab0 * tau_lo + ap0 * delta_tau;
+  const T radial1 = ab1 * tau_lo + ap1 * delta_tau;
+  const T radial2 = ab2 * tau_lo + ap2 * delta_tau;
+  const T D = sigma2 * (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) + cross_cross;
+  const T a_minus_b = sigma2 * tau_hi * delta_tau - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = ap_bp + sigma2 * tau_hi * tau_lo;
+  const T t2 = T(1) / c;
+  const T log_ratio = log(t2 * q1);
+  T F;
+  const T t3 = D - T(2) * a * a;
+  const T t4 = -b * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(6, 6, 5, a, b, c, T(0), T(1), M_flat.data());
+    const T t6 = t1 * t1;
+    const T t7 = t0 * t0;
+    const T t8 = t7 * delta_tau;
+    const T t9 = t0 * delta_tau;
+    const T t10 = t1 * tau_lo;
+    const T t11 = t6 * tau_lo;
+    F = T(5) * M_flat[1] * delta_tau * t6 + M_flat[5] * t8 + T(5) * t7 * tau_lo * M_flat[4] + T(10) * M_flat[3] * t9 * t1 + T(10) * M_flat[2] * t0 * t10 + M_flat[0] * t11;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
+    const T t12 = t1 * t1;
+    const T t13 = t2 * t2;
+    const T t14 = J_downward<T>(6, a, D, -b, c, a_minus_b, q1);
+    const T t15 = T(1) / q1;
+    const T t16 = t15 * t15;
+    const T t17 = t13 + T(4) * b * t14 - t16;
+    const T t18 = T(1) / a;
+    const T t19 = t12 * tau_lo;
+    const T t20 = b * t13 + a_minus_b * t16 - T(4) * D * t14;
+    const T t21 = T(3) * t15 + T(2) * t20 * b * t18 - T(3) * t2;
+    const T t22 = T(2) * t20 * t18 + T(6) * c * t14 - T(3) * b * t17 * t18;
+    const T t23 = T(2) * t21 * t18 + T(3) * c * t17 * t18 + T(4) * b * t22 * t18;
+    const T t24 = T(3) * a_minus_b * t15 + T(2) * t20 * D * t18 + T(3) * b * t2;
+    const T t25 = b * t21 * t18 + t24 * t18 - t20 * c * t18;
+    const T t26 = b * t23 * t18 + T(2) * t25 * t18 - c * t22 * t18;
+    const T t27 = t0 * t0;
+    const T t28 = t27 * delta_tau;
+    const T t29 = t0 * delta_tau;
+    const T t30 = t1 * tau_lo;
+    F = (T(5) / T(4)) * delta_tau * t12 * t17 * t18 + t14 * t19 - (T(1) / T(12)) * (T(4) * b * t26 * t18 + T(2) * (T(4) * b * t25 * t18 - t21 * c * t18 - (T(3) * log_ratio - T(2) * t24 * b * t18) * t18) * t18 - c * t23 * t18) * t28 * t18 - (T(5) / T(6)) * t26 * t27 * tau_lo * t18 - (T(5) / T(6)) * t23 * t29 * t1 * t18 - (T(5) / T(3)) * t0 * t30 * t22 * t18;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t31 = sqrt(D);
+    const T t32 = T(1) / t31;
+    const T J2 = t32 * atan2(t31, c_minus_b);
+    const T t33 = T(1) / q1;
+    const T t34 = a_minus_b * t33 + J2 * a + b * t2;
+    const T t35 = T(1) / D;
+    const T t36 = t2 * t2;
+    const T t37 = t33 * t33;
+    const T t38 = T(2) * b * t36 + T(2) * a_minus_b * t37 + T(3) * t34 * t35 * a;
+    const T t39 = b * t35 * t38 + T(2) * t36 - T(2) * t37;
+    const T t40 = T(1) / a;
+    const T t41 = T(4) * t34 * t35 + T(2) * t39 * b * t40 - c * t35 * t38;
+    const T t42 = t1 * tau_lo;
+    const T t43 = t1 * t1;
+    const T t44 = t33 - b * t34 * t35 - t2;
+    const T t45 = T(2) * t41 * b * t40 - t39 * c * t40 - T(4) * t44 * t40;
+    const T t46 = T(2) * J2 - c * t34 * t35 - T(2) * t44 * b * t40;
+    const T t47 = T(2) * t45 * b * t40 + T(4) * t46 * t40 - t41 * c * t40;
+    const T t48 = t0 * t0;
+    const T t49 = t43 * tau_lo;
+    const T t50 = t0 * delta_tau;
+    const T t51 = t48 * delta_tau;
+    F = (T(5) / T(4)) * t41 * t0 * t42 * t40 + (T(5) / T(8)) * t39 * delta_tau * t43 * t40 + (T(5) / T(8)) * t47 * t48 * tau_lo * t40 + (T(1) / T(8)) * t35 * t49 * t38 + (T(5) / T(4)) * t45 * t50 * t1 * t40 + (T(1) / T(8)) * (T(2) * b * t47 * t40 + T(4) * (T(2) * b * t46 * t40 + t44 * c * t40 + (log_ratio + T(2) * J2 * b) * t40) * t40 - t45 * c * t40) * t51 * t40;
+  }
+  const T t52 = in.sigma * in.sigma;
+  const T t53 = t52 * in.sigma;
+  const T t54 = t53 * t53;
+  f = F * length * t54;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 84 +, 213 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 256 +, 452 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i6_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap1 * ab1 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
+  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = tau_lo * ab0 + ap0 * delta_tau;
+  const T radial1 = tau_lo * ab1 + ap1 * delta_tau;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = cross_cross + (radial0 * radial0 + radial2 * radial2 + radial1 * radial1) * sigma2;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  T G_ap;
+  T G_ab;
+  const T t2 = D - T(2) * a * a;
+  const T t3 = -a_minus_b * b;
+  const T t4 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t2 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 7> M_flat;
+    segment_moments_gauss<T, 20>(8, 8, 6, a, b, c, T(0), T(1), M_flat.data());
+    const T t5 = t0 * t0;
+    const T t6 = t5 * delta_tau;
+    const T t7 = t1 * tau_lo;
+    const T t8 = t0 * delta_tau;
+    const T t9 = t1 * t1;
+    const T t10 = t9 * tau_lo;
+    G_ap = t6 * M_flat[5] + T(5) * t5 * tau_lo * M_flat[4] + T(10) * t0 * t7 * M_flat[2] + T(10) * t8 * M_flat[3] * t1 + T(5) * delta_tau * t9 * M_flat[1] + t10 * M_flat[0];
+    G_ab = T(10) * t0 * M_flat[3] * t7 + T(10) * t8 * t1 * M_flat[4] + T(5) * delta_tau * t9 * M_flat[2] + t10 * M_flat[1] + M_flat[6] * t6 + T(5) * t5 * tau_lo * M_flat[5];
+  } else if (t3 >= T(0) && t4 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 7> M_beyond;
+    segment_moments_beyond_end<T>(8, 8, 6, a, b, D, c, q1, M_beyond.data());
+    const T t11 = t0 * t0;
+    const T t12 = t11 * delta_tau;
+    const T t13 = t1 * t1;
+    const T t14 = t13 * tau_lo;
+    const T t15 = t1 * tau_lo;
+    const T t16 = t0 * delta_tau;
+    G_ap = T(5) * t11 * tau_lo * M_beyond[4] + t12 * M_beyond[5] + t14 * M_beyond[0] + T(10) * M_beyond[2] * t0 * t15 + T(5) * delta_tau * t13 * M_beyond[1] + T(10) * t16 * t1 * M_beyond[3];
+    G_ab = t12 * M_beyond[6] + T(10) * t0 * t15 * M_beyond[3] + T(10) * t16 * t1 * M_beyond[4] + t14 * M_beyond[1] + T(5) * t11 * tau_lo * M_beyond[5] + T(5) * M_beyond[2] * delta_tau * t13;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t17 = sqrt(D);
+    const T t18 = T(1) / t17;
+    const T J2 = t18 * atan2(t17, c_minus_b);
+    const T t19 = T(1) / a;
+    const T t20 = t1 * t1;
+    const T t21 = T(1) / c;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t21;
+    const T t24 = T(1) / D;
+    const T t25 = T(1) / q1;
+    const T t26 = t25 * t25;
+    const T t27 = t26 * t25;
+    const T t28 = b * t21 + a_minus_b * t25 + a * J2;
+    const T t29 = T(2) * a_minus_b * t26 + T(2) * b * t22 + T(3) * t24 * a * t28;
+    const T t30 = T(8) * b * t23 + T(8) * a_minus_b * t27 + T(5) * t24 * a * t29;
+    const T t31 = T(8) * t23 + t24 * t30 * b - T(8) * t27;
+    const T t32 = t1 * tau_lo;
+    const T t33 = T(6) * t24 * t29 + T(2) * t19 * b * t31 - t24 * t30 * c;
+    const T t34 = t0 * t0;
+    const T t35 = t24 * t29 * b + T(2) * t22 - T(2) * t26;
+    const T t36 = T(6) * t19 * t35 + T(2) * t19 * b * t33 - t19 * t31 * c;
+    const T t37 = T(4) * t24 * t28 + T(2) * t19 * b * t35 - t24 * t29 * c;
+    const T t38 = T(2) * t19 * b * t36 + T(6) * t19 * t37 - t19 * t33 * c;
+    const T t39 = t0 * delta_tau;
+    const T t40 = t20 * tau_lo;
+    const T t41 = t34 * delta_tau;
+    const T t42 = t24 * b * t28 + t21 - t25;
+    const T t43 = t19 * t35 * c - T(4) * t42 * t19 - T(2) * t19 * t37 * b;
+    const T t44 = t19 * c * t36 + T(6) * t19 * t43 - T(2) * t19 * t38 * b;
+    G_ap = (T(5) / T(48)) * delta_tau * t19 * t20 * t31 + (T(5) / T(24)) * t0 * t19 * t32 * t33 + (T(5) / T(48)) * t34 * t19 * tau_lo * t38 + (T(5) / T(24)) * t39 * t19 * t1 * t36 + (T(1) / T(48)) * t24 * t40 * t30 - (T(1) / T(48)) * t41 * t19 * t44;
+    G_ab = (T(5) / T(48)) * delta_tau * t19 * t20 * t33 + (T(5) / T(24)) * t0 * t19 * t32 * t36 + (T(5) / T(24)) * t39 * t19 * t1 * t38 + (T(1) / T(48)) * t19 * t40 * t31 - (T(5) / T(48)) * t34 * t19 * tau_lo * t44 - (T(1) / T(48)) * (T(2) * t19 * b * t44 + t19 * t38 * c + T(6) * t19 * (t19 * t37 * c + T(2) * t19 * t43 * b + T(4) * (t24 * c * t28 - T(2) * t42 * t19 * b - T(2) * J2) * t19)) * t41 * t19;
+  }
+  const T t45 = in.sigma * in.sigma;
+  const T t46 = t45 * in.sigma;
+  const T t47 = t46 * t46;
+  const T g_factor = -T(6) * length * t47;
+  grad[0] = -g_factor * (G_ab * ab0 - ap0 * G_ap);
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = -g_factor * (G_ab * ab2 - ap2 * G_ap);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 94 +, 253 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 401 +, 656 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = ap0 * delta_tau + ab0 * tau_lo;
+  const T radial1 = ap1 * delta_tau + ab1 * tau_lo;
+  const T radial2 = ab2 * tau_lo + ap2 * delta_tau;
+  const T D = (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) * sigma2 + cross_cross;
+  const T a_minus_b = tau_hi * delta_tau * sigma2 - ab_bp;
+  const T q1 = tau_hi * tau_hi * sigma2 + bp_bp;
+  const T c_minus_b = tau_hi * tau_lo * sigma2 + ap_bp;
+  const T t2 = T(1) / c;
+  const T log_ratio = log(q1 * t2);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t3 = D - T(2) * a * a;
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 14> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 6, a, b, c, T(0), T(1), M_flat.data());
+    const T t6 = t0 * t0;
+    const T t7 = t1 * t1;
+    const T t8 = t7 * tau_lo;
+    const T t9 = t0 * delta_tau;
+    const T t10 = t1 * tau_lo;
+    const T t11 = t6 * delta_tau;
+    F = T(5) * M_flat[4] * t6 * tau_lo + t8 * M_flat[0] + T(10) * t9 * t1 * M_flat[3] + T(5) * M_flat[1] * delta_tau * t7 + T(10) * M_flat[2] * t0 * t10 + M_flat[5] * t11;
+    G_ap = T(5) * M_flat[8] * delta_tau * t7 + t11 * M_flat[12] + M_flat[7] * t8 + T(5) * M_flat[11] * t6 * tau_lo + T(10) * M_flat[10] * t9 * t1 + T(10) * t0 * t10 * M_flat[9];
+    G_ab = M_flat[8] * t8 + T(10) * M_flat[10] * t0 * t10 + M_flat[13] * t11 + T(5) * t6 * tau_lo * M_flat[12] + T(5) * delta_tau * t7 * M_flat[9] + T(10) * M_flat[11] * t9 * t1;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_8 = J_downward(…)
+    const T t12 = t2 * t2;
+    const T t13 = T(1) / q1;
+    const T t14 = t13 * t13;
+    const T t15 = T(1) / a;
+    const T t16 = t12 * t2;
+    const T t17 = t14 * t13;
+    const T t18 = J_downward<T>(8, a, D, -b, c, a_minus_b, q1);
+    const T t19 = t16 * b + t17 * a_minus_b - T(6) * t18 * D;
+    const T t20 = T(5) * t12 - T(5) * t14 - T(4) * t15 * t19 * b;
+    const T t21 = t1 * t1;
+    const T t22 = T(5) * t14 * a_minus_b + T(5) * t12 * b + T(4) * D * t15 * t19;
+    const T t23 = T(2) * t15 * t22 * b + T(15) * t13 - T(15) * t2;
+    const T t24 = T(2) * t15 * t22 - T(6) * c * t15 * t19 - T(3) * t20 * t15 * b;
+    const T t25 = T(2) * t23 * t15 + T(4) * t24 * t15 * b + T(3) * t20 * c * t15;
+    const T t26 = T(2) * D * t15 * t22 + T(15) * t2 * b + T(15) * t13 * a_minus_b;
+    const T t27 = c * t15 * t22 - t26 * t15 - t23 * t15 * b;
+    const T t28 = t15 * t25 * b - c * t24 * t15 - T(2) * t27 * t15;
+    const T t29 = t0 * t0;
+    const T t30 = t29 * delta_tau;
+    const T t31 = t21 * tau_lo;
+    const T t32 = t1 * tau_lo;
+    const T t33 = t0 * delta_tau;
+    F = (T(1) / T(4)) * t20 * t15 * delta_tau * t21 + (T(1) / T(60)) * t15 * (c * t15 * t25 + T(2) * (T(4) * t27 * t15 * b + c * t23 * t15 - (T(2) * t26 * t15 * b - T(15) * log_ratio) * t15) * t15 - T(4) * t15 * t28 * b) * t30 - (T(1) / T(5)) * t15 * t31 * t19 - (T(1) / T(6)) * t15 * t29 * tau_lo * t28 - (T(1) / T(3)) * t24 * t15 * t0 * t32 - (T(1) / T(6)) * t15 * t33 * t1 * t25;
+    const T t34 = t16 + T(6) * t18 * b - t17;
+    const T t35 = T(3) * t15 * t19 + T(15) * c * t18 - T(5) * t15 * b * t34;
+    const T t36 = T(8) * t35 * t15 * b + T(10) * c * t15 * t34 - T(3) * t20 * t15;
+    const T t37 = t36 * t15 * b + t24 * t15 - T(2) * c * t35 * t15;
+    const T t38 = T(4) * t15 * b * t37 + t15 * t25 - c * t36 * t15;
+    G_ap = t18 * t31 + (T(5) / T(6)) * t15 * delta_tau * t21 * t34 - (T(1) / T(6)) * t15 * t29 * tau_lo * t37 - (T(1) / T(60)) * t15 * t30 * t38 - (T(1) / T(6)) * t36 * t15 * t33 * t1 - (T(2) / T(3)) * t35 * t15 * t0 * t32;
+    G_ab = (T(1) / T(6)) * t15 * t31 * t34 - (T(1) / T(12)) * t15 * t29 * tau_lo * t38 - (T(1) / T(3)) * t15 * t33 * t1 * t37 - (T(1) / T(30)) * t15 * t30 * (t15 * t28 + t15 * t38 * b - c * t15 * t37) - (T(1) / T(3)) * t35 * t15 * delta_tau * t21 - (T(1) / T(6)) * t36 * t15 * t0 * t32;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t39 = sqrt(D);
+    const T t40 = T(1) / t39;
+    const T J2 = t40 * atan2(t39, c_minus_b);
+    const T t41 = T(1) / a;
+    const T t42 = t1 * tau_lo;
+    const T t43 = T(1) / D;
+    const T t44 = T(1) / q1;
+    const T t45 = J2 * a + t2 * b + t44 * a_minus_b;
+    const T t46 = t2 * t2;
+    const T t47 = t44 * t44;
+    const T t48 = T(2) * t47 * a_minus_b + T(2) * t46 * b + T(3) * t43 * a * t45;
+    const T t49 = T(2) * t46 + t43 * t48 * b - T(2) * t47;
+    const T t50 = T(4) * t43 * t45 + T(2) * t49 * t41 * b - c * t43 * t48;
+    const T t51 = t44 - t2 - t43 * t45 * b;
+    const T t52 = c * t43 * t45 + T(2) * t41 * t51 * b - T(2) * J2;
+    const T t53 = T(4) * t41 * t51 + t49 * c * t41 - T(2) * t41 * t50 * b;
+    const T t54 = T(2) * t53 * t41 * b + T(4) * t52 * t41 + c * t41 * t50;
+    const T t55 = t0 * t0;
+    const T t56 = t55 * delta_tau;
+    const T t57 = t1 * t1;
+    const T t58 = t57 * tau_lo;
+    const T t59 = t0 * delta_tau;
+    F = (T(5) / T(4)) * t41 * t0 * t42 * t50 + (T(1) / T(8)) * (T(4) * (c * t41 * t51 + t41 * (log_ratio + T(2) * J2 * b) - T(2) * t52 * t41 * b) * t41 + c * t53 * t41 - T(2) * t41 * t54 * b) * t41 * t56 + (T(5) / T(8)) * t49 * t41 * delta_tau * t57 + (T(1) / T(8)) * t43 * t48 * t58 - (T(5) / T(4)) * t53 * t41 * t59 * t1 - (T(5) / T(8)) * t41 * t54 * t55 * tau_lo;
+    const T t60 = t46 * t2;
+    const T t61 = t47 * t44;
+    const T t62 = T(8) * t60 * b + T(8) * t61 * a_minus_b + T(5) * t43 * t48 * a;
+    const T t63 = t62 * t43 * b + T(8) * t60 - T(8) * t61;
+    const T t64 = T(6) * t43 * t48 + T(2) * t63 * t41 * b - c * t62 * t43;
+    const T t65 = c * t63 * t41 - T(6) * t49 * t41 - T(2) * t41 * b * t64;
+    const T t66 = T(2) * t41 * t65 * b + c * t41 * t64 - T(6) * t41 * t50;
+    const T t67 = T(2) * t66 * t41 * b + T(6) * t53 * t41 - c * t41 * t65;
+    G_ap = (T(1) / T(48)) * t62 * t43 * t58 + (T(5) / T(48)) * t63 * t41 * delta_tau * t57 + (T(5) / T(24)) * t41 * t0 * t42 * t64 - (T(5) / T(24)) * t41 * t59 * t65 * t1 - (T(5) / T(48)) * t66 * t41 * t55 * tau_lo - (T(1) / T(48)) * t41 * t56 * t67;
+    G_ab = (T(5) / T(48)) * t41 * delta_tau * t57 * t64 + (T(1) / T(48)) * t41 * t56 * (t66 * c * t41 - T(6) * t41 * t54 - T(2) * t41 * t67 * b) + (T(1) / T(48)) * t63 * t41 * t58 - (T(5) / T(48)) * t41 * t55 * tau_lo * t67 - (T(5) / T(24)) * t66 * t41 * t59 * t1 - (T(5) / T(24)) * t41 * t0 * t65 * t42;
+  }
+  const T t68 = in.sigma * in.sigma;
+  const T t69 = t68 * in.sigma;
+  const T t70 = t69 * t69;
+  const T g_factor = -T(6) * length * t70;
+  f = length * t70 * F;
+  grad[0] = -(ab0 * G_ab - G_ap * ap0) * g_factor;
+  grad[1] = g_factor * (G_ap * ap1 - ab1 * G_ab);
+  grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 74 +, 189 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 247 +, 496 ×, 22 /, 25 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i7_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap2 * ab2 + ap1 * ab1 + ap0 * ab0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = tau_lo * ab0 + delta_tau * ap0;
+  const T radial1 = ap1 * delta_tau + tau_lo * ab1;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = (radial1 * radial1 + radial0 * radial0 + radial2 * radial2) * sigma2 + cross_cross;
+  const T a_minus_b = delta_tau * tau_hi * sigma2 - ab_bp;
+  const T q1 = bp_bp + tau_hi * tau_hi * sigma2;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T X;
+  const T t2 = b * a_minus_b;
+  if (t2 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t3 = T(1) / D;
+    const T t4 = sqrt(a);
+    const T t5 = r0 * a_minus_b;
+    X = t3 * t4 * (t5 + b * r1);
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t6 = sqrt(a);
+    const T t7 = r0 * a_minus_b;
+    X = -(b - a_minus_b) * t6 / (t7 - b * r1);
+  }
+  const T t8 = sqrt(a);
+  const T t9 = T(1) / t8;
+  const T J1 = t9 * asinh(X);
+  T F;
+  const T t10 = D - T(2) * a * a;
+  const T t11 = -b * a_minus_b;
+  const T t12 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t10 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 7> M_flat;
+    segment_moments_gauss<T, 20>(7, 7, 6, a, b, c, T(0), T(1), M_flat.data());
+    const T t13 = t0 * delta_tau;
+    const T t14 = t13 * t13;
+    const T t15 = t1 * tau_lo;
+    const T t16 = t15 * t15;
+    const T t17 = t1 * t1;
+    const T t18 = t0 * t0;
+    const T t19 = t18 * delta_tau;
+    const T t20 = t17 * tau_lo;
+    F = t14 * M_flat[6] + t16 * M_flat[0] + T(15) * t0 * t17 * M_flat[2] + T(6) * t19 * M_flat[5] * tau_lo + T(6) * M_flat[1] * delta_tau * t20 + T(20) * t13 * t15 * M_flat[3] + T(15) * t18 * t1 * M_flat[4];
+  } else if (t11 >= T(0) && t12 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_7 = J_downward(…)
+    const T t21 = T(1) / a;
+    const T t22 = T(1) / r1;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * t23;
+    const T t25 = T(1) / r0;
+    const T t26 = t25 * t25;
+    const T t27 = t26 * t26;
+    const T t28 = J_downward<T>(7, a, D, -b, c, a_minus_b, q1);
+    const T t29 = t24 * t22 - t25 * t27 - T(5) * b * t28;
+    const T t30 = t25 * b * t27 + t24 * a_minus_b * t22 - T(5) * D * t28;
+    const T t31 = T(3) * t21 * b * t30 + T(4) * t23 * t22 - T(4) * t25 * t26;
+    const T t32 = T(5) * t21 * t30 + T(8) * t21 * b * t29 + T(20) * t28 * c;
+    const T t33 = T(12) * t21 * c * t29 - T(5) * t21 * t31 - T(6) * t21 * b * t32;
+    const T t34 = t0 * delta_tau;
+    const T t35 = t1 * tau_lo;
+    const T t36 = t0 * t0;
+    const T t37 = T(4) * t23 * a_minus_b * t22 + T(3) * D * t21 * t30 + T(4) * t25 * b * t26;
+    const T t38 = T(6) * t21 * t30 * c - T(3) * t37 * t21 - T(4) * t21 * b * t31;
+    const T t39 = T(4) * t33 * t21 * b + T(6) * t21 * t32 * c + T(5) * t38 * t21;
+    const T t40 = T(8) * t25 - T(8) * t22 - t37 * t21 * b;
+    const T t41 = T(2) * t21 * c * t31 + T(3) * t21 * t40 + T(2) * t38 * t21 * b;
+    const T t42 = T(5) * t21 * t41 + T(2) * t21 * t39 * b - T(2) * t33 * t21 * c;
+    const T t43 = t36 * delta_tau;
+    const T t44 = t34 * t34;
+    const T t45 = t35 * t35;
+    const T t46 = t1 * t1;
+    const T t47 = t46 * tau_lo;
+    F = (T(1) / T(3)) * t33 * t34 * t21 * t35 + (T(1) / T(8)) * t36 * t21 * t1 * t39 + (T(1) / T(20)) * t42 * t43 * t21 * tau_lo + (T(1) / T(120)) * t44 * t21 * (T(5) * t21 * (T(3) * t21 * (T(8) * J1 + t37 * t21 * c + T(2) * t21 * b * t40) + T(2) * t21 * b * t41 - t38 * t21 * c) + T(2) * t42 * t21 * b - t21 * t39 * c) + t45 * t28 - (T(6) / T(5)) * delta_tau * t21 * t47 * t29 - (T(3) / T(4)) * t0 * t21 * t46 * t32;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t48 = t0 * t0;
+    const T t49 = T(1) / a;
+    const T t50 = T(1) / D;
+    const T t51 = T(1) / r1;
+    const T t52 = t51 * t51;
+    const T t53 = T(1) / r0;
+    const T t54 = a_minus_b * t51 + t53 * b;
+    const T t55 = t53 * t53;
+    const T t56 = t52 * a_minus_b * t51 + T(2) * t50 * t54 * a + t53 * b * t55;
+    const T t57 = t50 * b * t56 + t53 * t55 - t52 * t51;
+    const T t58 = T(2) * t57 * t49 * b + T(3) * t50 * t54 - t50 * t56 * c;
+    const T t59 = t55 * t55;
+    const T t60 = t52 * t52;
+    const T t61 = T(3) * t53 * b * t59 + T(4) * t50 * a * t56 + T(3) * t60 * a_minus_b * t51;
+    const T t62 = T(3) * t60 * t51 - T(3) * t53 * t59 - t50 * t61 * b;
+    const T t63 = t50 * t61 * c + T(2) * t49 * b * t62 - T(5) * t50 * t56;
+    const T t64 = T(2) * t49 * t63 * b - t49 * c * t62 - T(5) * t57 * t49;
+    const T t65 = T(5) * t49 * t58 + t49 * t63 * c - T(2) * t49 * t64 * b;
+    const T t66 = t53 + t50 * t54 * b - t51;
+    const T t67 = t57 * t49 * c - T(2) * t49 * t58 * b - T(3) * t66 * t49;
+    const T t68 = T(2) * t49 * t65 * b + t49 * t64 * c - T(5) * t67 * t49;
+    const T t69 = t0 * delta_tau;
+    const T t70 = t69 * t69;
+    const T t71 = t48 * delta_tau;
+    const T t72 = t1 * tau_lo;
+    const T t73 = t72 * t72;
+    const T t74 = t1 * t1;
+    const T t75 = t74 * tau_lo;
+    F = t48 * t49 * t1 * t65 + (T(1) / T(15)) * (T(2) * t49 * b * t68 - T(5) * t49 * (t49 * t58 * c + T(2) * t67 * t49 * b - T(3) * t49 * (J1 + T(2) * t66 * t49 * b - t50 * t54 * c)) - t49 * t65 * c) * t70 * t49 + (T(2) / T(5)) * t71 * t49 * tau_lo * t68 + (T(1) / T(15)) * t50 * t61 * t73 - (T(4) / T(3)) * t69 * t49 * t72 * t64 - (T(2) / T(5)) * delta_tau * t49 * t75 * t62 - t0 * t49 * t63 * t74;
+  }
+  const T t76 = in.sigma * in.sigma;
+  const T t77 = t76 * in.sigma;
+  const T t78 = t77 * t77;
+  const T t79 = t78 * in.sigma;
+  f = F * t79 * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 92 +, 262 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 275 +, 577 ×, 20 /, 23 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i7_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab2 * ap2 + ab1 * ap1;
+  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + sigma2 * t0;
+  const T b = ab_ap - sigma2 * delta_tau * tau_lo;
+  const T t1 = tau_lo * tau_lo;
+  const T c = sigma2 * t1 + ap_ap;
+  const T radial0 = ab0 * tau_lo + delta_tau * ap0;
+  const T radial1 = delta_tau * ap1 + ab1 * tau_lo;
+  const T radial2 = delta_tau * ap2 + ab2 * tau_lo;
+  const T D = cross_cross + sigma2 * (radial0 * radial0 + radial2 * radial2 + radial1 * radial1);
+  const T a_minus_b = sigma2 * delta_tau * tau_hi - ab_bp;
+  const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T G_ap;
+  T G_ab;
+  const T t2 = D - T(2) * a * a;
+  const T t3 = -a_minus_b * b;
+  const T t4 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t2 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(9, 9, 7, a, b, c, T(0), T(1), M_flat.data());
+    const T t5 = t0 * delta_tau;
+    const T t6 = t1 * tau_lo;
+    const T t7 = t1 * t1;
+    const T t8 = t7 * tau_lo;
+    const T t9 = t5 * t5;
+    const T t10 = t0 * t0;
+    const T t11 = t10 * delta_tau;
+    const T t12 = t6 * t6;
+    G_ap = T(20) * M_flat[3] * t5 * t6 + T(6) * delta_tau * t8 * M_flat[1] + M_flat[6] * t9 + T(6) * t11 * tau_lo * M_flat[5] + T(15) * t0 * t7 * M_flat[2] + M_flat[0] * t12 + T(15) * t10 * t1 * M_flat[4];
+    G_ab = T(15) * t10 * t1 * M_flat[5] + T(6) * delta_tau * t8 * M_flat[2] + t12 * M_flat[1] + T(20) * t5 * t6 * M_flat[4] + T(6) * M_flat[6] * t11 * tau_lo + T(15) * M_flat[3] * t0 * t7 + t9 * M_flat[7];
+  } else if (t3 >= T(0) && t4 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 8> M_beyond;
+    segment_moments_beyond_end<T>(9, 9, 7, a, b, D, c, q1, M_beyond.data());
+    const T t13 = t1 * t1;
+    const T t14 = t13 * tau_lo;
+    const T t15 = t0 * delta_tau;
+    const T t16 = t15 * t15;
+    const T t17 = t1 * tau_lo;
+    const T t18 = t17 * t17;
+    const T t19 = t0 * t0;
+    const T t20 = t19 * delta_tau;
+    G_ap = T(6) * M_beyond[1] * delta_tau * t14 + t16 * M_beyond[6] + T(15) * M_beyond[2] * t0 * t13 + t18 * M_beyond[0] + T(6) * t20 * M_beyond[5] * tau_lo + T(15) * M_beyond[4] * t19 * t1 + T(20) * t15 * t17 * M_beyond[3];
+    G_ab = T(20) * M_beyond[4] * t15 * t17 + M_beyond[7] * t16 + M_beyond[1] * t18 + T(15) * t19 * M_beyond[5] * t1 + T(6) * M_beyond[2] * delta_tau * t14 + T(15) * t0 * t13 * M_beyond[3] + T(6) * t20 * tau_lo * M_beyond[6];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t21 = t0 * t0;
+    const T t22 = T(1) / a;
+    const T t23 = T(1) / D;
+    const T t24 = T(1) / r1;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * t25;
+    const T t27 = T(1) / r0;
+    const T t28 = t27 * t27;
+    const T t29 = t27 * b + a_minus_b * t24;
+    const T t30 = t27 * t28 * b + T(2) * t23 * a * t29 + a_minus_b * t24 * t25;
+    const T t31 = t28 * t28;
+    const T t32 = T(3) * a_minus_b * t24 * t26 + T(4) * t23 * a * t30 + T(3) * t27 * t31 * b;
+    const T t33 = t23 * t32 * b + T(3) * t27 * t31 - T(3) * t24 * t26;
+    const T t34 = T(2) * t22 * t33 * b + T(5) * t23 * t30 - c * t23 * t32;
+    const T t35 = t26 * t25;
+    const T t36 = t31 * t28;
+    const T t37 = T(5) * a_minus_b * t24 * t35 + T(2) * t23 * a * t32 + T(5) * t27 * t36 * b;
+    const T t38 = T(5) * t24 * t35 - T(5) * t27 * t36 - t37 * t23 * b;
+    const T t39 = T(6) * t38 * t22 * b + T(3) * t37 * c * t23 - T(7) * t23 * t32;
+    const T t40 = T(3) * c * t38 * t22 + T(7) * t22 * t33 - T(2) * t39 * t22 * b;
+    const T t41 = T(7) * t34 * t22 + T(2) * t22 * t40 * b + t39 * c * t22;
+    const T t42 = t0 * delta_tau;
+    const T t43 = t1 * tau_lo;
+    const T t44 = t43 * t43;
+    const T t45 = t21 * delta_tau;
+    const T t46 = t27 * t28 + t23 * b * t30 - t24 * t25;
+    const T t47 = c * t22 * t33 - T(2) * t34 * t22 * b - T(5) * t46 * t22;
+    const T t48 = T(2) * t41 * t22 * b - T(7) * t47 * t22 - c * t22 * t40;
+    const T t49 = c * t23 * t30 - T(2) * t46 * t22 * b - T(3) * t23 * t29;
+    const T t50 = c * t34 * t22 + T(5) * t49 * t22 + T(2) * t47 * t22 * b;
+    const T t51 = T(7) * t22 * t50 + c * t41 * t22 - T(2) * t22 * t48 * b;
+    const T t52 = t42 * t42;
+    const T t53 = t1 * t1;
+    const T t54 = t53 * tau_lo;
+    G_ap = (T(1) / T(7)) * t21 * t41 * t1 * t22 + (T(4) / T(21)) * t42 * t43 * t22 * t40 + (T(1) / T(35)) * t37 * t23 * t44 + (T(2) / T(35)) * t45 * tau_lo * t22 * t48 - (T(1) / T(105)) * t51 * t52 * t22 - (T(1) / T(7)) * t39 * t0 * t53 * t22 - (T(6) / T(35)) * delta_tau * t38 * t54 * t22;
+    G_ab = (T(1) / T(7)) * t0 * t53 * t22 * t40 + (T(4) / T(21)) * t42 * t41 * t43 * t22 + (T(1) / T(7)) * t21 * t1 * t22 * t48 - (T(2) / T(35)) * t51 * t45 * tau_lo * t22 - (T(2) / T(35)) * t39 * delta_tau * t54 * t22 - (T(1) / T(105)) * t52 * t22 * (T(2) * t51 * t22 * b + c * t22 * t48 - T(7) * t22 * (c * t47 * t22 - T(5) * (T(3) * (t24 - t23 * t29 * b - t27) * t22 + T(2) * t49 * t22 * b + t46 * c * t22) * t22 - T(2) * t22 * b * t50)) - (T(1) / T(35)) * t38 * t44 * t22;
+  }
+  const T t55 = in.sigma * in.sigma;
+  const T t56 = t55 * in.sigma;
+  const T t57 = t56 * t56;
+  const T t58 = t57 * in.sigma;
+  const T g_factor = -T(7) * t58 * length;
+  grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
+  grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
+  grad[2] = -(G_ab * ab2 - ap2 * G_ap) * g_factor;
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 105 +, 313 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 442 +, 810 ×, 22 /, 25 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = tau_lo * ab0 + ap0 * delta_tau;
+  const T radial1 = tau_lo * ab1 + ap1 * delta_tau;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = (radial1 * radial1 + radial0 * radial0 + radial2 * radial2) * sigma2 + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T X;
+  const T t2 = a_minus_b * b;
+  if (t2 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t3 = r1 * b;
+    const T t4 = T(1) / D;
+    const T t5 = sqrt(a);
+    X = (t3 + r0 * a_minus_b) * t4 * t5;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t6 = sqrt(a);
+    const T t7 = r1 * b;
+    X = -t6 * (a_minus_b - b) / (t7 - r0 * a_minus_b);
+  }
+  const T t8 = sqrt(a);
+  const T t9 = T(1) / t8;
+  const T J1 = asinh(X) * t9;
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t10 = D - T(2) * a * a;
+  const T t11 = -a_minus_b * b;
+  const T t12 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t10 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 16> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 7, a, b, c, T(0), T(1), M_flat.data());
+    const T t13 = t0 * delta_tau;
+    const T t14 = t13 * t13;
+    const T t15 = t1 * t1;
+    const T t16 = t15 * tau_lo;
+    const T t17 = t0 * t0;
+    const T t18 = t17 * delta_tau;
+    const T t19 = t1 * tau_lo;
+    const T t20 = t19 * t19;
+    F = M_flat[6] * t14 + T(6) * delta_tau * t16 * M_flat[1] + T(6) * t18 * tau_lo * M_flat[5] + t20 * M_flat[0] + T(15) * t17 * t1 * M_flat[4] + T(20) * t13 * M_flat[3] * t19 + T(15) * M_flat[2] * t0 * t15;
+    G_ap = T(6) * M_flat[9] * delta_tau * t16 + t14 * M_flat[14] + t20 * M_flat[8] + T(20) * t13 * t19 * M_flat[11] + T(15) * t0 * t15 * M_flat[10] + T(15) * M_flat[12] * t17 * t1 + T(6) * t18 * tau_lo * M_flat[13];
+    G_ab = M_flat[15] * t14 + T(15) * t0 * t15 * M_flat[11] + M_flat[9] * t20 + T(6) * delta_tau * t16 * M_flat[10] + T(20) * M_flat[12] * t13 * t19 + T(6) * t18 * tau_lo * M_flat[14] + T(15) * t17 * t1 * M_flat[13];
+  } else if (t11 >= T(0) && t12 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_9 = J_downward(…)
+    const T t21 = T(1) / a;
+    const T t22 = t1 * t1;
+    const T t23 = t22 * tau_lo;
+    const T t24 = T(1) / r0;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * t25;
+    const T t27 = T(1) / r1;
+    const T t28 = t27 * t27;
+    const T t29 = t28 * t28;
+    const T t30 = t29 * t28;
+    const T t31 = t26 * t25;
+    const T t32 = -b;
+    const T t33 = J_downward<T>(9, a, D, t32, c, a_minus_b, q1);
+    const T t34 = t27 * a_minus_b * t30 + t24 * b * t31 - T(7) * D * t33;
+    const T t35 = T(6) * t24 * t26 - T(5) * t21 * b * t34 - T(6) * t27 * t29;
+    const T t36 = t0 * delta_tau;
+    const T t37 = t36 * t36;
+    const T t38 = T(6) * t24 * b * t26 + T(6) * t27 * a_minus_b * t29 + T(5) * D * t21 * t34;
+    const T t39 = T(8) * t21 * b * t35 + T(20) * t21 * t34 * c - T(5) * t21 * t38;
+    const T t40 = t21 * b * t38 + T(8) * t27 * t28 - T(8) * t24 * t25;
+    const T t41 = D * t21 * t38 + T(8) * t24 * b * t25 + T(8) * t27 * a_minus_b * t28;
+    const T t42 = T(4) * t21 * b * t40 + T(3) * t41 * t21 - T(2) * t21 * t38 * c;
+    const T t43 = T(5) * t21 * t40 + T(4) * t21 * c * t35 - T(2) * t39 * t21 * b;
+    const T t44 = T(2) * t39 * t21 * c + T(5) * t21 * t42 + T(4) * t21 * b * t43;
+    const T t45 = T(16) * t27 + t41 * t21 * b - T(16) * t24;
+    const T t46 = T(3) * t45 * t21 + T(2) * t21 * b * t42 - T(2) * t21 * t40 * c;
+    const T t47 = T(5) * t21 * t46 + T(2) * t44 * t21 * b - T(2) * t21 * t43 * c;
+    const T t48 = t1 * tau_lo;
+    const T t49 = t0 * t0;
+    const T t50 = t48 * t48;
+    const T t51 = t49 * delta_tau;
+    F = (T(1) / T(5)) * delta_tau * t21 * t23 * t35 + (T(1) / T(240)) * t37 * t21 * (t44 * t21 * c - T(2) * t21 * t47 * b - T(5) * t21 * (T(2) * t21 * b * t46 + T(3) * t21 * (T(2) * t45 * t21 * b - t41 * t21 * c - T(16) * J1) - t21 * t42 * c)) + (T(1) / T(8)) * t39 * t0 * t21 * t22 - (T(1) / T(6)) * t36 * t21 * t48 * t43 - (T(1) / T(16)) * t44 * t49 * t21 * t1 - (T(1) / T(6)) * t21 * t50 * t34 - (T(1) / T(40)) * t51 * t21 * t47 * tau_lo;
+    const T t52 = T(7) * b * t33 + t24 * t31 - t27 * t30;
+    const T t53 = T(7) * t21 * t34 + T(42) * t33 * c - T(12) * t52 * t21 * b;
+    const T t54 = T(7) * t21 * t35 - T(30) * t52 * t21 * c - T(10) * t53 * t21 * b;
+    const T t55 = T(20) * t53 * t21 * c + T(7) * t39 * t21 + T(8) * t21 * b * t54;
+    const T t56 = T(7) * t21 * t43 + T(4) * t21 * t54 * c - T(2) * t21 * b * t55;
+    const T t57 = T(2) * t21 * t55 * c + T(4) * t21 * t56 * b + T(7) * t44 * t21;
+    G_ap = t50 * t33 + (T(2) / T(21)) * t36 * t21 * t48 * t54 + (T(6) / T(7)) * delta_tau * t52 * t21 * t23 + (T(1) / T(56)) * t49 * t21 * t1 * t55 - (T(5) / T(14)) * t53 * t0 * t21 * t22 - (T(1) / T(1680)) * t57 * t37 * t21 - (T(1) / T(140)) * t51 * t21 * tau_lo * t56;
+    G_ab = (T(1) / T(7)) * t52 * t21 * t50 + (T(1) / T(42)) * t36 * t21 * t48 * t55 + (T(1) / T(14)) * t0 * t21 * t22 * t54 - (T(1) / T(1680)) * (T(7) * t21 * t47 + T(2) * t57 * t21 * b - T(2) * t21 * t56 * c) * t37 * t21 - (T(1) / T(56)) * t49 * t21 * t1 * t56 - (T(1) / T(280)) * t57 * t51 * t21 * tau_lo - (T(1) / T(7)) * t53 * delta_tau * t21 * t23;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t58 = T(1) / a;
+    const T t59 = t1 * t1;
+    const T t60 = T(1) / D;
+    const T t61 = T(1) / r1;
+    const T t62 = T(1) / r0;
+    const T t63 = t61 * a_minus_b + t62 * b;
+    const T t64 = t62 * t62;
+    const T t65 = t61 * t61;
+    const T t66 = T(2) * t60 * a * t63 + t62 * b * t64 + t61 * a_minus_b * t65;
+    const T t67 = t64 * t64;
+    const T t68 = t65 * t65;
+    const T t69 = T(3) * t62 * b * t67 + T(3) * t61 * a_minus_b * t68 + T(4) * t60 * a * t66;
+    const T t70 = t60 * t69 * b + T(3) * t62 * t67 - T(3) * t61 * t68;
+    const T t71 = T(5) * t60 * t66 + T(2) * t58 * t70 * b - t60 * t69 * c;
+    const T t72 = t59 * tau_lo;
+    const T t73 = t0 * delta_tau;
+    const T t74 = t1 * tau_lo;
+    const T t75 = t60 * b * t66 + t62 * t64 - t61 * t65;
+    const T t76 = T(5) * t58 * t75 + T(2) * t58 * b * t71 - t58 * t70 * c;
+    const T t77 = T(3) * t60 * t63 + T(2) * t58 * b * t75 - t60 * t66 * c;
+    const T t78 = T(5) * t58 * t77 + T(2) * t58 * b * t76 - t58 * t71 * c;
+    const T t79 = t0 * t0;
+    const T t80 = t74 * t74;
+    const T t81 = t73 * t73;
+    const T t82 = t61 - t60 * t63 * b - t62;
+    const T t83 = T(3) * t82 * t58 + t58 * c * t75 - T(2) * t58 * t77 * b;
+    const T t84 = t58 * t76 * c + T(5) * t58 * t83 - T(2) * t78 * t58 * b;
+    const T t85 = t79 * delta_tau;
+    F = t0 * t58 * t59 * t71 + (T(2) / T(5)) * delta_tau * t58 * t72 * t70 + (T(4) / T(3)) * t73 * t58 * t74 * t76 + t78 * t79 * t58 * t1 + (T(1) / T(15)) * t60 * t80 * t69 - (T(1) / T(15)) * t81 * t58 * (t78 * t58 * c + T(5) * t58 * (T(3) * (T(2) * t82 * t58 * b + t60 * t63 * c - J1) * t58 + T(2) * t58 * b * t83 + t58 * t77 * c) + T(2) * t84 * t58 * b) - (T(2) / T(5)) * t84 * t85 * t58 * tau_lo;
+    const T t86 = t68 * t65;
+    const T t87 = t67 * t64;
+    const T t88 = T(5) * t61 * a_minus_b * t86 + T(5) * t62 * b * t87 + T(2) * t60 * a * t69;
+    const T t89 = t60 * t88 * b + T(5) * t62 * t87 - T(5) * t61 * t86;
+    const T t90 = T(7) * t60 * t69 + T(6) * t58 * t89 * b - T(3) * t60 * t88 * c;
+    const T t91 = T(7) * t58 * t70 + T(2) * t58 * t90 * b - T(3) * t58 * t89 * c;
+    const T t92 = T(2) * t58 * b * t91 + T(7) * t58 * t71 - t58 * t90 * c;
+    const T t93 = T(2) * t92 * t58 * b + T(7) * t58 * t76 - t58 * t91 * c;
+    const T t94 = T(7) * t78 * t58 + T(2) * t93 * t58 * b - t92 * t58 * c;
+    G_ap = (T(1) / T(35)) * t60 * t88 * t80 + (T(1) / T(7)) * t92 * t79 * t58 * t1 + (T(1) / T(7)) * t0 * t58 * t59 * t90 + (T(2) / T(35)) * t93 * t85 * t58 * tau_lo + (T(4) / T(21)) * t73 * t58 * t74 * t91 + (T(6) / T(35)) * delta_tau * t58 * t72 * t89 + (T(1) / T(105)) * t81 * t58 * t94;
+    G_ab = (T(2) / T(35)) * delta_tau * t58 * t72 * t90 + (T(1) / T(7)) * t0 * t58 * t59 * t91 + (T(1) / T(35)) * t58 * t80 * t89 + (T(1) / T(7)) * t93 * t79 * t58 * t1 + (T(4) / T(21)) * t92 * t73 * t58 * t74 + (T(1) / T(105)) * t81 * t58 * (T(2) * t58 * t94 * b - t93 * t58 * c - T(7) * t84 * t58) + (T(2) / T(35)) * t85 * t58 * tau_lo * t94;
+  }
+  const T t95 = in.sigma * in.sigma;
+  const T t96 = t95 * in.sigma;
+  const T t97 = t96 * t96;
+  const T t98 = t97 * in.sigma;
+  const T g_factor = -T(7) * t98 * length;
+  f = t98 * F * length;
+  grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 85 +, 217 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 270 +, 461 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i8_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = ap0 * delta_tau + ab0 * tau_lo;
+  const T radial1 = ab1 * tau_lo + ap1 * delta_tau;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = sigma2 * (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  const T t2 = T(1) / c;
+  const T log_ratio = log(q1 * t2);
+  T F;
+  const T t3 = D - T(2) * a * a;
+  const T t4 = -b * a_minus_b;
+  const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t3 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(8, 8, 7, a, b, c, T(0), T(1), M_flat.data());
+    const T t6 = t0 * t0;
+    const T t7 = t6 * delta_tau;
+    const T t8 = t0 * delta_tau;
+    const T t9 = t8 * t8;
+    const T t10 = t1 * tau_lo;
+    const T t11 = t10 * t10;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t1 * t1;
+    const T t14 = t13 * tau_lo;
+    const T t15 = t9 * delta_tau;
+    F = T(21) * t7 * t1 * M_flat[5] + T(7) * M_flat[6] * t9 * tau_lo + M_flat[0] * t12 + T(35) * M_flat[4] * t6 * t10 + T(7) * M_flat[1] * delta_tau * t11 + T(21) * t0 * t14 * M_flat[2] + M_flat[7] * t15 + T(35) * M_flat[3] * t8 * t13;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_8 = J_downward(…)
+    const T t16 = T(1) / a;
+    const T t17 = t1 * t1;
+    const T t18 = t17 * tau_lo;
+    const T t19 = J_downward<T>(8, a, D, -b, c, a_minus_b, q1);
+    const T t20 = t2 * t2;
+    const T t21 = t20 * t2;
+    const T t22 = T(1) / q1;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * t22;
+    const T t25 = T(6) * b * t19 + t21 - t24;
+    const T t26 = b * t21 + t24 * a_minus_b - T(6) * D * t19;
+    const T t27 = T(5) * t16 * t25 * b - T(3) * t26 * t16 - T(15) * t19 * c;
+    const T t28 = t1 * tau_lo;
+    const T t29 = t28 * t28;
+    const T t30 = T(5) * t20 - T(5) * t23 - T(4) * t26 * t16 * b;
+    const T t31 = T(8) * t16 * b * t27 + T(3) * t16 * t30 - T(10) * t16 * t25 * c;
+    const T t32 = t0 * delta_tau;
+    const T t33 = t32 * t32;
+    const T t34 = t33 * delta_tau;
+    const T t35 = T(5) * b * t20 + T(5) * t23 * a_minus_b + T(4) * t26 * D * t16;
+    const T t36 = T(2) * t35 * t16 - T(3) * t16 * b * t30 - T(6) * t26 * t16 * c;
+    const T t37 = T(2) * t35 * D * t16 + T(15) * t22 * a_minus_b + T(15) * b * t2;
+    const T t38 = T(15) * t22 + T(2) * t35 * t16 * b - T(15) * t2;
+    const T t39 = t37 * t16 + t38 * t16 * b - t35 * t16 * c;
+    const T t40 = T(4) * t36 * t16 * b + T(2) * t38 * t16 + T(3) * t16 * t30 * c;
+    const T t41 = t36 * t16 * c - T(2) * t16 * t39 - t16 * b * t40;
+    const T t42 = T(2) * t16 * t27 * c + t36 * t16 - t31 * t16 * b;
+    const T t43 = t31 * t16 * c + t16 * t40 + T(4) * t16 * t42 * b;
+    const T t44 = t16 * b * t43 - t16 * t42 * c - t16 * t41;
+    const T t45 = t29 * tau_lo;
+    const T t46 = t0 * t0;
+    const T t47 = t46 * delta_tau;
+    F = (T(7) / T(5)) * t16 * t0 * t18 * t27 + (T(7) / T(6)) * t16 * delta_tau * t29 * t25 + (T(7) / T(12)) * t31 * t16 * t32 * t17 + (T(1) / T(60)) * t16 * t34 * ((T(4) * t16 * b * t41 + t16 * t40 * c + T(2) * (t38 * t16 * c - t16 * (T(2) * t37 * t16 * b - T(15) * log_ratio) - T(4) * t16 * t39 * b) * t16) * t16 + t16 * t43 * c - T(4) * t16 * b * t44) + t45 * t19 - (T(7) / T(6)) * t16 * t42 * t46 * t28 - (T(7) / T(30)) * t16 * t33 * tau_lo * t44 - (T(7) / T(20)) * t16 * t47 * t1 * t43;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t48 = sqrt(D);
+    const T t49 = T(1) / t48;
+    const T J2 = t49 * atan2(t48, c_minus_b);
+    const T t50 = T(1) / a;
+    const T t51 = t1 * t1;
+    const T t52 = t51 * tau_lo;
+    const T t53 = t2 * t2;
+    const T t54 = t53 * t2;
+    const T t55 = T(1) / D;
+    const T t56 = T(1) / q1;
+    const T t57 = t56 * t56;
+    const T t58 = t56 * a_minus_b + a * J2 + b * t2;
+    const T t59 = T(2) * b * t53 + T(2) * t57 * a_minus_b + T(3) * t55 * a * t58;
+    const T t60 = t57 * t56;
+    const T t61 = T(8) * b * t54 + T(5) * t55 * a * t59 + T(8) * t60 * a_minus_b;
+    const T t62 = T(8) * t54 + t61 * t55 * b - T(8) * t60;
+    const T t63 = T(2) * t50 * t62 * b + T(6) * t55 * t59 - t61 * t55 * c;
+    const T t64 = t1 * tau_lo;
+    const T t65 = t64 * t64;
+    const T t66 = t65 * tau_lo;
+    const T t67 = t55 * t59 * b + T(2) * t53 - T(2) * t57;
+    const T t68 = T(2) * t50 * b * t67 + T(4) * t55 * t58 - t55 * t59 * c;
+    const T t69 = t56 - t2 - t55 * b * t58;
+    const T t70 = T(2) * t50 * t68 * b - t50 * t67 * c - T(4) * t50 * t69;
+    const T t71 = T(2) * t50 * b * t63 + T(6) * t50 * t67 - t50 * t62 * c;
+    const T t72 = t50 * t63 * c - T(6) * t50 * t68 - T(2) * t50 * b * t71;
+    const T t73 = T(6) * t70 * t50 - T(2) * t72 * t50 * b - t50 * t71 * c;
+    const T t74 = t0 * t0;
+    const T t75 = t74 * delta_tau;
+    const T t76 = t0 * delta_tau;
+    const T t77 = t55 * t58 * c + T(2) * t50 * b * t69 - T(2) * J2;
+    const T t78 = T(4) * t50 * t77 + t50 * t68 * c - T(2) * t70 * t50 * b;
+    const T t79 = T(6) * t78 * t50 - t72 * t50 * c - T(2) * t73 * t50 * b;
+    const T t80 = t76 * t76;
+    const T t81 = t80 * delta_tau;
+    F = (T(7) / T(16)) * t50 * t0 * t52 * t63 + (T(1) / T(48)) * t61 * t55 * t66 + (T(7) / T(48)) * t50 * delta_tau * t65 * t62 + (T(7) / T(16)) * t73 * t50 * t75 * t1 + (T(35) / T(48)) * t50 * t76 * t51 * t71 - (T(7) / T(48)) * t79 * t50 * t80 * tau_lo - (T(35) / T(48)) * t72 * t50 * t74 * t64 - (T(1) / T(48)) * t50 * t81 * (T(2) * t79 * t50 * b + t73 * t50 * c + T(6) * t50 * (T(4) * t50 * (T(2) * t50 * t77 * b - t50 * (T(2) * J2 * b + log_ratio) - t50 * t69 * c) + t70 * t50 * c + T(2) * t78 * t50 * b));
+  }
+  const T t82 = in.sigma * in.sigma;
+  const T t83 = t82 * t82;
+  const T t84 = t83 * t83;
+  f = length * t84 * F;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 106 +, 295 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 300 +, 530 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i8_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap1 * ab1 + ap2 * ab2;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = ap0 * delta_tau + tau_lo * ab0;
+  const T radial1 = tau_lo * ab1 + ap1 * delta_tau;
+  const T radial2 = ap2 * delta_tau + tau_lo * ab2;
+  const T D = (radial1 * radial1 + radial0 * radial0 + radial2 * radial2) * sigma2 + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  T G_ap;
+  T G_ab;
+  const T t2 = D - T(2) * a * a;
+  const T t3 = -a_minus_b * b;
+  const T t4 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t2 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 9> M_flat;
+    segment_moments_gauss<T, 20>(10, 10, 8, a, b, c, T(0), T(1), M_flat.data());
+    const T t5 = t1 * t1;
+    const T t6 = t5 * tau_lo;
+    const T t7 = t0 * delta_tau;
+    const T t8 = t7 * t7;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t1 * tau_lo;
+    const T t11 = t10 * t10;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t0 * t0;
+    const T t14 = t13 * delta_tau;
+    G_ap = T(21) * M_flat[2] * t0 * t6 + T(35) * t7 * t5 * M_flat[3] + t9 * M_flat[7] + M_flat[0] * t12 + T(7) * delta_tau * t11 * M_flat[1] + T(7) * t8 * M_flat[6] * tau_lo + T(35) * t13 * t10 * M_flat[4] + T(21) * M_flat[5] * t14 * t1;
+    G_ab = T(21) * t14 * M_flat[6] * t1 + t12 * M_flat[1] + T(7) * M_flat[2] * delta_tau * t11 + t9 * M_flat[8] + T(21) * t0 * t6 * M_flat[3] + T(35) * M_flat[5] * t13 * t10 + T(35) * t7 * t5 * M_flat[4] + T(7) * t8 * tau_lo * M_flat[7];
+  } else if (t3 >= T(0) && t4 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 9> M_beyond;
+    segment_moments_beyond_end<T>(10, 10, 8, a, b, D, c, q1, M_beyond.data());
+    const T t15 = t0 * delta_tau;
+    const T t16 = t1 * t1;
+    const T t17 = t0 * t0;
+    const T t18 = t17 * delta_tau;
+    const T t19 = t1 * tau_lo;
+    const T t20 = t19 * t19;
+    const T t21 = t20 * tau_lo;
+    const T t22 = t15 * t15;
+    const T t23 = t16 * tau_lo;
+    const T t24 = t22 * delta_tau;
+    G_ap = T(35) * M_beyond[3] * t15 * t16 + T(21) * t18 * t1 * M_beyond[5] + M_beyond[0] * t21 + T(7) * delta_tau * t20 * M_beyond[1] + T(35) * t17 * t19 * M_beyond[4] + T(7) * M_beyond[6] * t22 * tau_lo + T(21) * t0 * t23 * M_beyond[2] + t24 * M_beyond[7];
+    G_ab = T(35) * t17 * t19 * M_beyond[5] + T(7) * t22 * tau_lo * M_beyond[7] + T(21) * M_beyond[3] * t0 * t23 + T(7) * delta_tau * t20 * M_beyond[2] + T(35) * t15 * t16 * M_beyond[4] + t21 * M_beyond[1] + T(21) * M_beyond[6] * t18 * t1 + t24 * M_beyond[8];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t25 = sqrt(D);
+    const T t26 = T(1) / t25;
+    const T J2 = t26 * atan2(t25, c_minus_b);
+    const T t27 = T(1) / a;
+    const T t28 = T(1) / D;
+    const T t29 = T(1) / q1;
+    const T t30 = t29 * t29;
+    const T t31 = t30 * t29;
+    const T t32 = T(1) / c;
+    const T t33 = t32 * t32;
+    const T t34 = t33 * t32;
+    const T t35 = b * t32 + a_minus_b * t29 + a * J2;
+    const T t36 = T(3) * t28 * a * t35 + T(2) * a_minus_b * t30 + T(2) * b * t33;
+    const T t37 = T(8) * a_minus_b * t31 + T(8) * b * t34 + T(5) * t36 * t28 * a;
+    const T t38 = t28 * b * t37 + T(8) * t34 - T(8) * t31;
+    const T t39 = t30 * t30;
+    const T t40 = t33 * t33;
+    const T t41 = T(7) * t28 * a * t37 + T(48) * b * t40 + T(48) * a_minus_b * t39;
+    const T t42 = T(48) * t39 - t28 * t41 * b - T(48) * t40;
+    const T t43 = t28 * t41 * c + T(2) * t27 * b * t42 - T(8) * t28 * t37;
+    const T t44 = T(8) * t27 * t38 + t27 * t42 * c - T(2) * t27 * t43 * b;
+    const T t45 = t0 * delta_tau;
+    const T t46 = t1 * t1;
+    const T t47 = t1 * tau_lo;
+    const T t48 = t47 * t47;
+    const T t49 = t48 * tau_lo;
+    const T t50 = t45 * t45;
+    const T t51 = t50 * delta_tau;
+    const T t52 = t28 * t37 * c - T(2) * t27 * b * t38 - T(6) * t36 * t28;
+    const T t53 = T(8) * t27 * t52 - t27 * t43 * c - T(2) * t44 * t27 * b;
+    const T t54 = t36 * t28 * b + T(2) * t33 - T(2) * t30;
+    const T t55 = t27 * t38 * c + T(2) * t27 * b * t52 - T(6) * t27 * t54;
+    const T t56 = T(2) * t27 * b * t53 + T(8) * t27 * t55 + t44 * t27 * c;
+    const T t57 = T(2) * t27 * b * t54 + T(4) * t28 * t35 - t36 * t28 * c;
+    const T t58 = t32 + t28 * b * t35 - t29;
+    const T t59 = T(2) * t57 * t27 * b + T(4) * t27 * t58 - t27 * t54 * c;
+    const T t60 = T(2) * t27 * b * t55 - T(6) * t57 * t27 - t27 * t52 * c;
+    const T t61 = T(6) * t27 * t59 + t27 * t55 * c - T(2) * t27 * b * t60;
+    const T t62 = T(8) * t27 * t60 + T(2) * t56 * t27 * b - t27 * t53 * c;
+    const T t63 = t56 * t27 * c + T(8) * t27 * t61 - T(2) * t27 * t62 * b;
+    const T t64 = t0 * t0;
+    const T t65 = t64 * delta_tau;
+    const T t66 = t46 * tau_lo;
+    G_ap = (T(35) / T(384)) * t44 * t27 * t45 * t46 + (T(1) / T(384)) * t28 * t49 * t41 + (T(1) / T(384)) * t27 * t51 * t63 - (T(7) / T(384)) * t27 * delta_tau * t48 * t42 - (T(35) / T(384)) * t27 * t64 * t47 * t53 - (T(7) / T(128)) * t56 * t27 * t65 * t1 - (T(7) / T(128)) * t27 * t43 * t0 * t66 - (T(7) / T(384)) * t27 * t50 * tau_lo * t62;
+    G_ab = (T(7) / T(128)) * t44 * t27 * t0 * t66 + (T(1) / T(384)) * (t27 * t62 * c + T(2) * t27 * t63 * b + T(8) * t27 * (T(6) * t27 * (T(2) * t27 * t59 * b - T(4) * t27 * (t28 * t35 * c - T(2) * t27 * b * t58 - T(2) * J2) - t57 * t27 * c) + T(2) * t27 * t61 * b + t27 * t60 * c)) * t27 * t51 + (T(7) / T(384)) * t27 * t50 * tau_lo * t63 - (T(35) / T(384)) * t27 * t45 * t46 * t53 - (T(7) / T(384)) * t27 * t43 * delta_tau * t48 - (T(35) / T(384)) * t56 * t27 * t64 * t47 - (T(1) / T(384)) * t27 * t49 * t42 - (T(7) / T(128)) * t27 * t65 * t1 * t62;
+  }
+  const T t67 = in.sigma * in.sigma;
+  const T t68 = t67 * t67;
+  const T t69 = t68 * t68;
+  const T g_factor = -T(8) * t69 * length;
+  grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
+  grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
+  grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 120 +, 350 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 487 +, 782 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ab1 * ap1 + ab2 * ap2;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T ap_bp = bp1 * ap1 + ap0 * bp0 + bp2 * ap2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = ap0 * delta_tau + tau_lo * ab0;
+  const T radial1 = delta_tau * ap1 + tau_lo * ab1;
+  const T radial2 = tau_lo * ab2 + delta_tau * ap2;
+  const T D = sigma2 * (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  const T t2 = T(1) / c;
+  const T log_ratio = log(q1 * t2);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t3 = D - T(2) * a * a;
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 18> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 8, a, b, c, T(0), T(1), M_flat.data());
+    const T t6 = t0 * delta_tau;
+    const T t7 = t6 * t6;
+    const T t8 = t7 * delta_tau;
+    const T t9 = t1 * tau_lo;
+    const T t10 = t9 * t9;
+    const T t11 = t10 * tau_lo;
+    const T t12 = t1 * t1;
+    const T t13 = t12 * tau_lo;
+    const T t14 = t0 * t0;
+    const T t15 = t14 * delta_tau;
+    F = t8 * M_flat[7] + t11 * M_flat[0] + T(21) * t0 * t13 * M_flat[2] + T(35) * t14 * t9 * M_flat[4] + T(7) * delta_tau * t10 * M_flat[1] + T(21) * M_flat[5] * t15 * t1 + T(35) * t6 * t12 * M_flat[3] + T(7) * t7 * tau_lo * M_flat[6];
+    G_ap = T(35) * t6 * t12 * M_flat[12] + T(7) * delta_tau * t10 * M_flat[10] + T(21) * t0 * t13 * M_flat[11] + t8 * M_flat[16] + T(35) * t14 * t9 * M_flat[13] + T(7) * t7 * M_flat[15] * tau_lo + T(21) * t15 * t1 * M_flat[14] + t11 * M_flat[9];
+    G_ab = t8 * M_flat[17] + T(21) * t15 * M_flat[15] * t1 + t11 * M_flat[10] + T(21) * t0 * t13 * M_flat[12] + T(35) * t6 * t12 * M_flat[13] + T(7) * t7 * tau_lo * M_flat[16] + T(35) * t14 * t9 * M_flat[14] + T(7) * delta_tau * t10 * M_flat[11];
+  } else if (t4 >= T(0) && t5 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_10 = J_downward(…)
+    const T t16 = t0 * delta_tau;
+    const T t17 = t16 * t16;
+    const T t18 = t2 * t2;
+    const T t19 = t18 * t18;
+    const T t20 = T(1) / q1;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * t21;
+    const T t23 = J_downward<T>(10, a, D, -b, c, a_minus_b, q1);
+    const T t24 = b * t19 + a_minus_b * t22 - T(8) * t23 * D;
+    const T t25 = T(1) / a;
+    const T t26 = t18 * t2;
+    const T t27 = t21 * t20;
+    const T t28 = T(6) * t24 * D * t25 + T(7) * b * t26 + T(7) * a_minus_b * t27;
+    const T t29 = T(7) * t26 - T(7) * t27 - T(6) * b * t24 * t25;
+    const T t30 = T(3) * t28 * t25 - T(15) * c * t24 * t25 - T(5) * b * t29 * t25;
+    const T t31 = T(4) * b * t28 * t25 + T(35) * t21 - T(35) * t18;
+    const T t32 = T(8) * b * t30 * t25 + T(3) * t31 * t25 + T(10) * c * t29 * t25;
+    const T t33 = T(35) * b * t18 + T(35) * a_minus_b * t21 + T(4) * t28 * D * t25;
+    const T t34 = T(2) * t33 * t25 + T(3) * b * t31 * t25 - T(6) * t28 * c * t25;
+    const T t35 = b * t32 * t25 + t34 * t25 - T(2) * c * t30 * t25;
+    const T t36 = T(2) * b * t33 * t25 + T(105) * t20 - T(105) * t2;
+    const T t37 = T(2) * t36 * t25 + T(4) * b * t34 * t25 - T(3) * t31 * c * t25;
+    const T t38 = T(4) * b * t35 * t25 + t37 * t25 - c * t32 * t25;
+    const T t39 = T(105) * a_minus_b * t20 + T(2) * t33 * D * t25 + T(105) * b * t2;
+    const T t40 = t36 * b * t25 + t39 * t25 - c * t33 * t25;
+    const T t41 = T(2) * t40 * t25 + b * t37 * t25 - c * t34 * t25;
+    const T t42 = t35 * c * t25 - b * t38 * t25 - t41 * t25;
+    const T t43 = t1 * tau_lo;
+    const T t44 = t43 * t43;
+    const T t45 = t0 * t0;
+    const T t46 = t45 * delta_tau;
+    const T t47 = t1 * t1;
+    const T t48 = t47 * tau_lo;
+    const T t49 = t17 * delta_tau;
+    const T t50 = t44 * tau_lo;
+    F = (T(1) / T(30)) * t17 * tau_lo * t42 * t25 + (T(1) / T(6)) * delta_tau * t44 * t29 * t25 - (T(1) / T(20)) * t46 * t1 * t38 * t25 - (T(1) / T(5)) * t0 * t48 * t30 * t25 - (T(1) / T(420)) * t49 * ((T(2) * (T(4) * b * t40 * t25 - t36 * c * t25 - (T(105) * log_ratio - T(2) * t39 * b * t25) * t25) * t25 + T(4) * b * t41 * t25 - c * t37 * t25) * t25 - t38 * c * t25 - T(4) * b * t42 * t25) * t25 - (T(1) / T(6)) * t45 * t43 * t35 * t25 - (T(1) / T(12)) * t16 * t47 * t32 * t25 - (T(1) / T(7)) * t50 * t24 * t25;
+    const T t51 = t22 - t19 - T(8) * t23 * b;
+    const T t52 = T(28) * t23 * c + T(7) * b * t51 * t25 + T(4) * t24 * t25;
+    const T t53 = T(21) * t51 * c * t25 + T(4) * t29 * t25 - T(12) * b * t52 * t25;
+    const T t54 = T(15) * c * t52 * t25 + T(5) * b * t53 * t25 - T(4) * t30 * t25;
+    const T t55 = T(2) * t32 * t25 + T(5) * c * t53 * t25 - T(4) * b * t54 * t25;
+    const T t56 = T(2) * t35 * t25 + t54 * c * t25 + b * t55 * t25;
+    const T t57 = T(2) * t38 * t25 + T(4) * b * t56 * t25 - c * t55 * t25;
+    G_ap = t23 * t50 + (T(1) / T(12)) * t45 * t43 * t54 * t25 + (T(5) / T(24)) * t16 * t47 * t53 * t25 - (T(1) / T(60)) * t17 * tau_lo * t56 * t25 - (T(3) / T(4)) * t0 * t48 * t52 * t25 - (T(7) / T(8)) * delta_tau * t44 * t51 * t25 - (T(1) / T(840)) * t49 * t57 * t25 - (T(1) / T(40)) * t46 * t1 * t55 * t25;
+    G_ab = (T(1) / T(12)) * t16 * t47 * t54 * t25 + (T(1) / T(8)) * t0 * t48 * t53 * t25 - (T(1) / T(20)) * t46 * t1 * t56 * t25 - (T(1) / T(4)) * delta_tau * t44 * t52 * t25 - (T(1) / T(420)) * t49 * (b * t57 * t25 - c * t56 * t25 - T(2) * t42 * t25) * t25 - (T(1) / T(8)) * t50 * t51 * t25 - (T(1) / T(24)) * t45 * t43 * t55 * t25 - (T(1) / T(120)) * t17 * tau_lo * t57 * t25;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t58 = sqrt(D);
+    const T t59 = T(1) / t58;
+    const T J2 = atan2(t58, c_minus_b) * t59;
+    const T t60 = t0 * delta_tau;
+    const T t61 = t60 * t60;
+    const T t62 = t2 * t2;
+    const T t63 = T(1) / q1;
+    const T t64 = J2 * a + a_minus_b * t63 + b * t2;
+    const T t65 = T(1) / D;
+    const T t66 = t63 * t63;
+    const T t67 = T(2) * b * t62 + T(3) * t64 * t65 * a + T(2) * a_minus_b * t66;
+    const T t68 = b * t67 * t65 + T(2) * t62 - T(2) * t66;
+    const T t69 = T(1) / a;
+    const T t70 = t67 * c * t65 - T(2) * b * t68 * t69 - T(4) * t64 * t65;
+    const T t71 = t62 * t2;
+    const T t72 = t66 * t63;
+    const T t73 = T(8) * b * t71 + T(8) * a_minus_b * t72 + T(5) * t67 * t65 * a;
+    const T t74 = t73 * b * t65 + T(8) * t71 - T(8) * t72;
+    const T t75 = T(6) * t67 * t65 + T(2) * t74 * b * t69 - t73 * c * t65;
+    const T t76 = t74 * c * t69 - T(2) * b * t75 * t69 - T(6) * t68 * t69;
+    const T t77 = T(6) * t70 * t69 + T(2) * b * t76 * t69 + c * t75 * t69;
+    const T t78 = t64 * b * t65 + t2 - t63;
+    const T t79 = T(4) * t78 * t69 - T(2) * t70 * b * t69 - c * t68 * t69;
+    const T t80 = t64 * c * t65 - T(2) * t78 * b * t69 - T(2) * J2;
+    const T t81 = T(2) * b * t79 * t69 + t70 * c * t69 - T(4) * t80 * t69;
+    const T t82 = T(2) * t77 * b * t69 - c * t76 * t69 - T(6) * t79 * t69;
+    const T t83 = t77 * c * t69 + T(6) * t81 * t69 - T(2) * b * t82 * t69;
+    const T t84 = t1 * tau_lo;
+    const T t85 = t84 * t84;
+    const T t86 = t85 * tau_lo;
+    const T t87 = t61 * delta_tau;
+    const T t88 = t1 * t1;
+    const T t89 = t88 * tau_lo;
+    const T t90 = t0 * t0;
+    const T t91 = t90 * delta_tau;
+    F = (T(7) / T(48)) * t61 * tau_lo * t83 * t69 + (T(1) / T(48)) * t86 * t73 * t65 + (T(1) / T(48)) * t87 * (t82 * c * t69 + T(2) * b * t83 * t69 + T(6) * (T(2) * b * t81 * t69 - T(4) * (T(2) * b * t80 * t69 + t78 * c * t69 - (log_ratio + T(2) * b * J2) * t69) * t69 - t79 * c * t69) * t69) * t69 + (T(7) / T(48)) * delta_tau * t85 * t74 * t69 + (T(7) / T(16)) * t0 * t89 * t75 * t69 - (T(7) / T(16)) * t91 * t1 * t82 * t69 - (T(35) / T(48)) * t60 * t88 * t76 * t69 - (T(35) / T(48)) * t90 * t84 * t77 * t69;
+    const T t92 = t66 * t66;
+    const T t93 = t62 * t62;
+    const T t94 = T(48) * b * t93 + T(48) * a_minus_b * t92 + T(7) * t73 * t65 * a;
+    const T t95 = T(48) * t92 - T(48) * t93 - b * t94 * t65;
+    const T t96 = t94 * c * t65 + T(2) * t95 * b * t69 - T(8) * t73 * t65;
+    const T t97 = T(8) * t74 * t69 + t95 * c * t69 - T(2) * t96 * b * t69;
+    const T t98 = T(2) * b * t97 * t69 + t96 * c * t69 + T(8) * t75 * t69;
+    const T t99 = t97 * c * t69 + T(8) * t76 * t69 - T(2) * b * t98 * t69;
+    const T t100 = c * t98 * t69 + T(8) * t77 * t69 + T(2) * b * t99 * t69;
+    const T t101 = c * t99 * t69 - T(2) * b * t100 * t69 - T(8) * t82 * t69;
+    G_ap = (T(35) / T(384)) * t90 * t84 * t98 * t69 + (T(1) / T(384)) * t86 * t94 * t65 + (T(35) / T(384)) * t60 * t88 * t97 * t69 + (T(1) / T(384)) * t87 * t101 * t69 - (T(7) / T(128)) * t91 * t1 * t99 * t69 - (T(7) / T(384)) * t61 * tau_lo * t100 * t69 - (T(7) / T(128)) * t0 * t89 * t96 * t69 - (T(7) / T(384)) * t95 * delta_tau * t85 * t69;
+    G_ab = (T(35) / T(384)) * t60 * t88 * t98 * t69 + (T(1) / T(384)) * t87 * (t100 * c * t69 + T(2) * b * t101 * t69 + T(8) * t83 * t69) * t69 + (T(7) / T(128)) * t0 * t89 * t97 * t69 + (T(7) / T(384)) * t61 * tau_lo * t101 * t69 - (T(7) / T(128)) * t91 * t1 * t100 * t69 - (T(35) / T(384)) * t90 * t84 * t99 * t69 - (T(1) / T(384)) * t95 * t86 * t69 - (T(7) / T(384)) * delta_tau * t85 * t96 * t69;
+  }
+  const T t102 = in.sigma * in.sigma;
+  const T t103 = t102 * t102;
+  const T t104 = t103 * t103;
+  const T g_factor = -T(8) * length * t104;
+  f = F * length * t104;
+  grad[0] = g_factor * (ap0 * G_ap - ab0 * G_ab);
+  grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
+  grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 94 +, 271 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 289 +, 588 ×, 22 /, 25 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i9_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab2 * ap2 + ab1 * ap1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = tau_lo * ab0 + delta_tau * ap0;
+  const T radial1 = tau_lo * ab1 + delta_tau * ap1;
+  const T radial2 = tau_lo * ab2 + delta_tau * ap2;
+  const T D = cross_cross + (radial0 * radial0 + radial2 * radial2 + radial1 * radial1) * sigma2;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T X;
+  const T t2 = a_minus_b * b;
+  if (t2 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t3 = r1 * b;
+    const T t4 = T(1) / D;
+    const T t5 = sqrt(a);
+    X = (t3 + a_minus_b * r0) * t4 * t5;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t6 = sqrt(a);
+    const T t7 = r1 * b;
+    X = -(a_minus_b - b) * t6 / (t7 - a_minus_b * r0);
+  }
+  const T t8 = sqrt(a);
+  const T t9 = T(1) / t8;
+  const T J1 = t9 * asinh(X);
+  T F;
+  const T t10 = D - T(2) * a * a;
+  const T t11 = -a_minus_b * b;
+  const T t12 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t10 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 9> M_flat;
+    segment_moments_gauss<T, 20>(9, 9, 8, a, b, c, T(0), T(1), M_flat.data());
+    const T t13 = t0 * t0;
+    const T t14 = t13 * delta_tau;
+    const T t15 = t1 * tau_lo;
+    const T t16 = t1 * t1;
+    const T t17 = t16 * t16;
+    const T t18 = t0 * delta_tau;
+    const T t19 = t18 * t18;
+    const T t20 = t13 * t13;
+    const T t21 = t19 * delta_tau;
+    const T t22 = t16 * tau_lo;
+    const T t23 = t15 * t15;
+    const T t24 = t23 * tau_lo;
+    F = T(56) * t14 * t15 * M_flat[5] + T(70) * t13 * t16 * M_flat[4] + M_flat[0] * t17 + T(28) * t19 * t1 * M_flat[6] + t20 * M_flat[8] + T(8) * t21 * tau_lo * M_flat[7] + T(56) * t18 * t22 * M_flat[3] + T(8) * delta_tau * t24 * M_flat[1] + T(28) * t0 * t23 * M_flat[2];
+  } else if (t11 >= T(0) && t12 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_9 = J_downward(…)
+    const T t25 = t1 * t1;
+    const T t26 = t25 * t25;
+    const T t27 = -b;
+    const T t28 = J_downward<T>(9, a, D, t27, c, a_minus_b, q1);
+    const T t29 = t0 * t0;
+    const T t30 = t29 * delta_tau;
+    const T t31 = t1 * tau_lo;
+    const T t32 = T(1) / a;
+    const T t33 = T(1) / r1;
+    const T t34 = t33 * t33;
+    const T t35 = t34 * t34;
+    const T t36 = t35 * t34;
+    const T t37 = T(1) / r0;
+    const T t38 = t37 * t37;
+    const T t39 = t38 * t38;
+    const T t40 = t39 * t38;
+    const T t41 = t33 * t36 - t40 * t37 - T(7) * t28 * b;
+    const T t42 = t40 * t37 * b + t33 * a_minus_b * t36 - T(7) * D * t28;
+    const T t43 = T(12) * t41 * t32 * b + T(42) * c * t28 + T(7) * t42 * t32;
+    const T t44 = T(6) * t33 * t35 + T(5) * t42 * t32 * b - T(6) * t39 * t37;
+    const T t45 = T(10) * t32 * t43 * b + T(7) * t44 * t32 - T(30) * t41 * c * t32;
+    const T t46 = T(5) * t42 * D * t32 + T(6) * t33 * a_minus_b * t35 + T(6) * t39 * t37 * b;
+    const T t47 = T(8) * t44 * t32 * b + T(5) * t46 * t32 - T(20) * c * t42 * t32;
+    const T t48 = T(20) * c * t32 * t43 - T(8) * t32 * t45 * b - T(7) * t47 * t32;
+    const T t49 = t46 * t32 * b + T(8) * t33 * t34 - T(8) * t38 * t37;
+    const T t50 = T(4) * t44 * c * t32 - T(5) * t49 * t32 - T(2) * t47 * t32 * b;
+    const T t51 = T(2) * t32 * t48 * b + T(4) * c * t32 * t45 + T(7) * t50 * t32;
+    const T t52 = t29 * t29;
+    const T t53 = t46 * D * t32 + T(8) * t33 * a_minus_b * t34 + T(8) * t38 * t37 * b;
+    const T t54 = T(4) * t49 * t32 * b + T(3) * t53 * t32 - T(2) * c * t46 * t32;
+    const T t55 = T(5) * t54 * t32 - T(2) * c * t47 * t32 - T(4) * t50 * t32 * b;
+    const T t56 = T(7) * t55 * t32 + T(2) * c * t32 * t48 - T(4) * t51 * t32 * b;
+    const T t57 = T(16) * t37 - t53 * t32 * b - T(16) * t33;
+    const T t58 = T(2) * t54 * t32 * b - T(2) * c * t49 * t32 - T(3) * t57 * t32;
+    const T t59 = T(5) * t32 * t58 + T(2) * t55 * t32 * b + T(2) * c * t50 * t32;
+    const T t60 = T(7) * t32 * t59 + T(2) * t32 * b * t56 + T(2) * c * t51 * t32;
+    const T t61 = t0 * delta_tau;
+    const T t62 = t61 * t61;
+    const T t63 = t62 * delta_tau;
+    const T t64 = t31 * t31;
+    const T t65 = t64 * tau_lo;
+    const T t66 = t25 * tau_lo;
+    F = t26 * t28 + (T(1) / T(15)) * t30 * t31 * t51 * t32 + (T(1) / T(1680)) * t52 * (c * t32 * t56 + T(7) * (T(5) * (t54 * c * t32 + T(3) * t32 * (T(2) * t57 * t32 * b + c * t53 * t32 + T(16) * J1) - T(2) * t32 * t58 * b) * t32 + c * t55 * t32 - T(2) * t32 * t59 * b) * t32 - T(2) * t60 * t32 * b) * t32 + (T(1) / T(12)) * t29 * t25 * t32 * t48 - (T(1) / T(210)) * t63 * tau_lo * t60 * t32 - (T(2) / T(3)) * t0 * t64 * t32 * t43 - (T(8) / T(7)) * delta_tau * t65 * t41 * t32 - (T(1) / T(60)) * t62 * t1 * t32 * t56 - (T(4) / T(15)) * t61 * t66 * t32 * t45;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t67 = t1 * t1;
+    const T t68 = t67 * t67;
+    const T t69 = T(1) / r0;
+    const T t70 = t69 * t69;
+    const T t71 = t70 * t70;
+    const T t72 = t71 * t70;
+    const T t73 = T(1) / r1;
+    const T t74 = t73 * t73;
+    const T t75 = t74 * t74;
+    const T t76 = T(1) / D;
+    const T t77 = t69 * b + t73 * a_minus_b;
+    const T t78 = t73 * a_minus_b * t74 + t70 * t69 * b + T(2) * t77 * t76 * a;
+    const T t79 = T(3) * t73 * a_minus_b * t75 + T(3) * t71 * t69 * b + T(4) * t76 * a * t78;
+    const T t80 = t75 * t74;
+    const T t81 = T(5) * t72 * t69 * b + T(2) * t79 * t76 * a + T(5) * t73 * a_minus_b * t80;
+    const T t82 = t0 * t0;
+    const T t83 = T(1) / a;
+    const T t84 = T(5) * t73 * t80 - t81 * t76 * b - T(5) * t72 * t69;
+    const T t85 = T(7) * t79 * t76 - T(3) * c * t81 * t76 - T(6) * t84 * t83 * b;
+    const T t86 = T(3) * t73 * t75 - T(3) * t71 * t69 - t79 * t76 * b;
+    const T t87 = T(2) * t85 * t83 * b + T(3) * t84 * c * t83 - T(7) * t86 * t83;
+    const T t88 = t79 * c * t76 + T(2) * t86 * t83 * b - T(5) * t76 * t78;
+    const T t89 = T(2) * t83 * t87 * b - c * t85 * t83 - T(7) * t83 * t88;
+    const T t90 = t1 * tau_lo;
+    const T t91 = t90 * t90;
+    const T t92 = t0 * delta_tau;
+    const T t93 = t92 * t92;
+    const T t94 = t93 * delta_tau;
+    const T t95 = t76 * t78 * b + t70 * t69 - t73 * t74;
+    const T t96 = T(5) * t83 * t95 + c * t86 * t83 - T(2) * t83 * t88 * b;
+    const T t97 = c * t83 * t87 - T(2) * t83 * t89 * b - T(7) * t96 * t83;
+    const T t98 = c * t76 * t78 - T(3) * t77 * t76 - T(2) * t83 * t95 * b;
+    const T t99 = T(2) * t96 * t83 * b + c * t83 * t88 - T(5) * t98 * t83;
+    const T t100 = t69 + t77 * t76 * b - t73;
+    const T t101 = T(3) * t100 * t83 - T(2) * t98 * t83 * b - c * t83 * t95;
+    const T t102 = T(2) * t83 * t99 * b + T(5) * t83 * t101 - c * t96 * t83;
+    const T t103 = c * t83 * t89 + T(2) * t97 * t83 * b - T(7) * t83 * t99;
+    const T t104 = c * t97 * t83 + T(7) * t83 * t102 - T(2) * t103 * t83 * b;
+    const T t105 = t67 * tau_lo;
+    const T t106 = t82 * delta_tau;
+    const T t107 = t82 * t82;
+    const T t108 = t91 * tau_lo;
+    F = (T(1) / T(35)) * t68 * t81 * t76 + (T(2) / T(3)) * t82 * t67 * t83 * t89 + (T(4) / T(15)) * t0 * t91 * t85 * t83 + (T(8) / T(105)) * t94 * tau_lo * t83 * t104 + (T(8) / T(15)) * t92 * t105 * t83 * t87 - (T(8) / T(15)) * t106 * t90 * t97 * t83 - (T(4) / T(15)) * t93 * t1 * t103 * t83 - (T(1) / T(105)) * t107 * t83 * (T(7) * (c * t83 * t99 - T(2) * t83 * t102 * b - T(5) * t83 * (T(2) * t83 * t101 * b + T(3) * t83 * (T(2) * t100 * t83 * b + J1 - c * t77 * t76) + t98 * c * t83)) * t83 - T(2) * t83 * b * t104 - c * t103 * t83) - (T(8) / T(35)) * delta_tau * t108 * t84 * t83;
+  }
+  const T t109 = in.sigma * in.sigma;
+  const T t110 = t109 * t109;
+  const T t111 = t110 * t110;
+  const T t112 = t111 * in.sigma;
+  f = length * t112 * F;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 116 +, 355 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 319 +, 675 ×, 20 /, 23 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i9_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = ab0 * bp0 + ab1 * bp1 + ab2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = ab0 * tau_lo + ap0 * delta_tau;
+  const T radial1 = ab1 * tau_lo + ap1 * delta_tau;
+  const T radial2 = ab2 * tau_lo + ap2 * delta_tau;
+  const T D = sigma2 * (radial0 * radial0 + radial2 * radial2 + radial1 * radial1) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T G_ap;
+  T G_ab;
+  const T t2 = D - T(2) * a * a;
+  const T t3 = -a_minus_b * b;
+  const T t4 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t2 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(11, 11, 9, a, b, c, T(0), T(1), M_flat.data());
+    const T t5 = t1 * tau_lo;
+    const T t6 = t5 * t5;
+    const T t7 = t0 * delta_tau;
+    const T t8 = t1 * t1;
+    const T t9 = t8 * tau_lo;
+    const T t10 = t8 * t8;
+    const T t11 = t6 * tau_lo;
+    const T t12 = t7 * t7;
+    const T t13 = t12 * delta_tau;
+    const T t14 = t0 * t0;
+    const T t15 = t14 * t14;
+    const T t16 = t14 * delta_tau;
+    G_ap = T(28) * t0 * t6 * M_flat[2] + T(56) * M_flat[3] * t7 * t9 + M_flat[0] * t10 + T(8) * M_flat[1] * delta_tau * t11 + T(8) * M_flat[7] * t13 * tau_lo + T(28) * M_flat[6] * t12 * t1 + t15 * M_flat[8] + T(56) * t16 * t5 * M_flat[5] + T(70) * t14 * M_flat[4] * t8;
+    G_ab = T(28) * M_flat[3] * t0 * t6 + T(56) * t7 * M_flat[4] * t9 + M_flat[1] * t10 + T(70) * t14 * t8 * M_flat[5] + M_flat[9] * t15 + T(8) * t13 * tau_lo * M_flat[8] + T(8) * delta_tau * t11 * M_flat[2] + T(28) * M_flat[7] * t12 * t1 + T(56) * M_flat[6] * t16 * t5;
+  } else if (t3 >= T(0) && t4 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 10> M_beyond;
+    segment_moments_beyond_end<T>(11, 11, 9, a, b, D, c, q1, M_beyond.data());
+    const T t17 = t1 * tau_lo;
+    const T t18 = t17 * t17;
+    const T t19 = t18 * tau_lo;
+    const T t20 = t0 * delta_tau;
+    const T t21 = t20 * t20;
+    const T t22 = t1 * t1;
+    const T t23 = t22 * tau_lo;
+    const T t24 = t0 * t0;
+    const T t25 = t24 * t24;
+    const T t26 = t21 * delta_tau;
+    const T t27 = t24 * delta_tau;
+    const T t28 = t22 * t22;
+    G_ap = T(8) * delta_tau * t19 * M_beyond[1] + T(28) * M_beyond[6] * t21 * t1 + T(28) * M_beyond[2] * t0 * t18 + T(56) * M_beyond[3] * t20 * t23 + t25 * M_beyond[8] + T(8) * t26 * M_beyond[7] * tau_lo + T(70) * t24 * t22 * M_beyond[4] + T(56) * t27 * t17 * M_beyond[5] + M_beyond[0] * t28;
+    G_ab = T(56) * t20 * t23 * M_beyond[4] + T(56) * M_beyond[6] * t27 * t17 + T(70) * t24 * t22 * M_beyond[5] + T(8) * M_beyond[2] * delta_tau * t19 + T(28) * t21 * M_beyond[7] * t1 + M_beyond[9] * t25 + t28 * M_beyond[1] + T(8) * t26 * tau_lo * M_beyond[8] + T(28) * M_beyond[3] * t0 * t18;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t29 = T(1) / r0;
+    const T t30 = t29 * t29;
+    const T t31 = t30 * t30;
+    const T t32 = t31 * t31;
+    const T t33 = T(1) / r1;
+    const T t34 = t33 * t33;
+    const T t35 = t34 * t34;
+    const T t36 = t35 * t35;
+    const T t37 = T(1) / D;
+    const T t38 = t35 * t34;
+    const T t39 = b * t29 + t33 * a_minus_b;
+    const T t40 = t30 * b * t29 + T(2) * t39 * t37 * a + t33 * a_minus_b * t34;
+    const T t41 = T(3) * t33 * a_minus_b * t35 + T(3) * t31 * b * t29 + T(4) * t37 * a * t40;
+    const T t42 = t31 * t30;
+    const T t43 = T(5) * t33 * a_minus_b * t38 + T(2) * t37 * a * t41 + T(5) * t42 * b * t29;
+    const T t44 = T(35) * t32 * b * t29 + T(35) * t33 * a_minus_b * t36 + T(8) * t37 * a * t43;
+    const T t45 = t1 * t1;
+    const T t46 = t45 * t45;
+    const T t47 = T(1) / a;
+    const T t48 = t1 * tau_lo;
+    const T t49 = t48 * t48;
+    const T t50 = T(35) * t32 * t29 + t44 * t37 * b - T(35) * t33 * t36;
+    const T t51 = T(9) * t37 * t43 + T(2) * t50 * t47 * b - c * t44 * t37;
+    const T t52 = t49 * tau_lo;
+    const T t53 = T(5) * t42 * t29 + t37 * t43 * b - T(5) * t33 * t38;
+    const T t54 = T(9) * t47 * t53 + T(2) * t47 * b * t51 - c * t50 * t47;
+    const T t55 = t0 * delta_tau;
+    const T t56 = t45 * tau_lo;
+    const T t57 = T(3) * c * t37 * t43 - T(7) * t37 * t41 - T(6) * t47 * t53 * b;
+    const T t58 = c * t47 * t51 + T(3) * t57 * t47 - T(2) * t47 * t54 * b;
+    const T t59 = T(3) * t31 * t29 + t37 * b * t41 - T(3) * t33 * t35;
+    const T t60 = T(7) * t59 * t47 - T(2) * t57 * t47 * b - T(3) * c * t47 * t53;
+    const T t61 = c * t47 * t54 + T(2) * t58 * t47 * b - T(3) * t47 * t60;
+    const T t62 = t0 * t0;
+    const T t63 = t62 * delta_tau;
+    const T t64 = c * t37 * t41 - T(5) * t37 * t40 - T(2) * t59 * t47 * b;
+    const T t65 = T(7) * t47 * t64 - c * t57 * t47 - T(2) * t47 * b * t60;
+    const T t66 = T(2) * t47 * t61 * b + T(3) * t47 * t65 - c * t58 * t47;
+    const T t67 = t55 * t55;
+    const T t68 = t33 * t34 - t37 * b * t40 - t30 * t29;
+    const T t69 = t59 * c * t47 + T(5) * t47 * t68 + T(2) * t47 * t64 * b;
+    const T t70 = T(7) * t69 * t47 + T(2) * t47 * b * t65 + c * t47 * t60;
+    const T t71 = T(2) * t66 * t47 * b + T(3) * t47 * t70 - c * t47 * t61;
+    const T t72 = T(3) * t39 * t37 - c * t37 * t40 - T(2) * t47 * t68 * b;
+    const T t73 = c * t47 * t64 + T(5) * t47 * t72 - T(2) * t69 * t47 * b;
+    const T t74 = c * t47 * t65 + T(7) * t47 * t73 - T(2) * t47 * t70 * b;
+    const T t75 = T(2) * t71 * t47 * b - T(3) * t74 * t47 - c * t66 * t47;
+    const T t76 = t62 * t62;
+    const T t77 = t67 * delta_tau;
+    G_ap = (T(1) / T(315)) * t44 * t37 * t46 + (T(4) / T(45)) * t47 * t0 * t49 * t51 + (T(8) / T(315)) * t50 * t47 * delta_tau * t52 + (T(8) / T(45)) * t47 * t54 * t55 * t56 - (T(8) / T(45)) * t47 * t61 * t63 * t48 - (T(2) / T(9)) * t58 * t47 * t62 * t45 - (T(4) / T(45)) * t66 * t47 * t67 * t1 - (T(1) / T(315)) * t47 * t75 * t76 - (T(8) / T(315)) * t71 * t47 * t77 * tau_lo;
+    G_ab = (T(1) / T(315)) * t50 * t47 * t46 + (T(4) / T(45)) * t47 * t54 * t0 * t49 + (T(8) / T(315)) * t47 * delta_tau * t52 * t51 - (T(8) / T(45)) * t66 * t47 * t63 * t48 - (T(8) / T(315)) * t47 * t75 * t77 * tau_lo - (T(1) / T(315)) * (T(2) * t47 * t75 * b - c * t71 * t47 - T(3) * t47 * (T(2) * t74 * t47 * b + T(7) * t47 * (T(2) * t47 * b * t73 + t69 * c * t47 + T(5) * (T(2) * t47 * b * t72 + c * t47 * t68 - T(3) * t47 * (t33 - t29 - t39 * t37 * b)) * t47) + c * t47 * t70)) * t47 * t76 - (T(4) / T(45)) * t71 * t47 * t67 * t1 - (T(8) / T(45)) * t58 * t47 * t55 * t56 - (T(2) / T(9)) * t47 * t61 * t62 * t45;
+  }
+  const T t78 = in.sigma * in.sigma;
+  const T t79 = t78 * t78;
+  const T t80 = t79 * t79;
+  const T t81 = t80 * in.sigma;
+  const T g_factor = -T(9) * length * t81;
+  grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 133 +, 423 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 528 +, 956 ×, 22 /, 25 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = ab1 * bp1 + ab0 * bp0 + ab2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + t1 * sigma2;
+  const T radial0 = ap0 * delta_tau + ab0 * tau_lo;
+  const T radial1 = ap1 * delta_tau + ab1 * tau_lo;
+  const T radial2 = ab2 * tau_lo + ap2 * delta_tau;
+  const T D = cross_cross + (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) * sigma2;
+  const T a_minus_b = tau_hi * delta_tau * sigma2 - ab_bp;
+  const T q1 = tau_hi * tau_hi * sigma2 + bp_bp;
+  const T r0 = sqrt(c);
+  const T r1 = sqrt(q1);
+  T X;
+  const T t2 = a_minus_b * b;
+  if (t2 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t3 = T(1) / D;
+    const T t4 = sqrt(a);
+    const T t5 = r1 * b;
+    X = t3 * t4 * (t5 + r0 * a_minus_b);
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t6 = sqrt(a);
+    const T t7 = r1 * b;
+    X = -t6 * (a_minus_b - b) / (t7 - r0 * a_minus_b);
+  }
+  const T t8 = sqrt(a);
+  const T t9 = T(1) / t8;
+  const T J1 = asinh(X) * t9;
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t10 = D - T(2) * a * a;
+  const T t11 = -a_minus_b * b;
+  const T t12 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t10 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 20> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 9, a, b, c, T(0), T(1), M_flat.data());
+    const T t13 = t0 * delta_tau;
+    const T t14 = t13 * t13;
+    const T t15 = t14 * delta_tau;
+    const T t16 = t1 * tau_lo;
+    const T t17 = t16 * t16;
+    const T t18 = t1 * t1;
+    const T t19 = t18 * t18;
+    const T t20 = t17 * tau_lo;
+    const T t21 = t0 * t0;
+    const T t22 = t21 * t21;
+    const T t23 = t21 * delta_tau;
+    const T t24 = t18 * tau_lo;
+    F = T(8) * t15 * tau_lo * M_flat[7] + T(28) * M_flat[2] * t0 * t17 + M_flat[0] * t19 + T(8) * delta_tau * t20 * M_flat[1] + T(28) * M_flat[6] * t14 * t1 + T(70) * t21 * t18 * M_flat[4] + M_flat[8] * t22 + T(56) * M_flat[5] * t23 * t16 + T(56) * M_flat[3] * t13 * t24;
+    G_ap = T(8) * t15 * tau_lo * M_flat[17] + T(70) * M_flat[14] * t21 * t18 + M_flat[18] * t22 + T(56) * M_flat[15] * t23 * t16 + t19 * M_flat[10] + T(28) * M_flat[12] * t0 * t17 + T(8) * M_flat[11] * delta_tau * t20 + T(28) * t14 * M_flat[16] * t1 + T(56) * t13 * t24 * M_flat[13];
+    G_ab = T(28) * t0 * t17 * M_flat[13] + T(56) * t23 * M_flat[16] * t16 + M_flat[19] * t22 + M_flat[11] * t19 + T(8) * M_flat[12] * delta_tau * t20 + T(70) * M_flat[15] * t21 * t18 + T(28) * t14 * t1 * M_flat[17] + T(56) * M_flat[14] * t13 * t24 + T(8) * M_flat[18] * t15 * tau_lo;
+  } else if (t11 >= T(0) && t12 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_11 = J_downward(…)
+    const T t25 = T(1) / a;
+    const T t26 = t1 * t1;
+    const T t27 = t26 * t26;
+    const T t28 = -b;
+    const T t29 = J_downward<T>(11, a, D, t28, c, a_minus_b, q1);
+    const T t30 = T(1) / r1;
+    const T t31 = t30 * t30;
+    const T t32 = t31 * t31;
+    const T t33 = t32 * t32;
+    const T t34 = T(1) / r0;
+    const T t35 = t34 * t34;
+    const T t36 = t35 * t35;
+    const T t37 = t36 * t36;
+    const T t38 = T(9) * t29 * D - t33 * t30 * a_minus_b - t37 * t34 * b;
+    const T t39 = t0 * delta_tau;
+    const T t40 = t26 * tau_lo;
+    const T t41 = t36 * t35;
+    const T t42 = t32 * t31;
+    const T t43 = T(7) * D * t25 * t38 - T(8) * t41 * t34 * b - T(8) * t42 * t30 * a_minus_b;
+    const T t44 = T(7) * t25 * b * t38 + T(8) * t41 * t34 - T(8) * t42 * t30;
+    const T t45 = T(7) * t25 * t43 + T(12) * t25 * t44 * b - T(42) * c * t25 * t38;
+    const T t46 = T(48) * t32 * t30 - T(48) * t36 * t34 - T(5) * t25 * t43 * b;
+    const T t47 = T(10) * t45 * t25 * b - T(7) * t46 * t25 - T(30) * c * t25 * t44;
+    const T t48 = t1 * tau_lo;
+    const T t49 = t48 * t48;
+    const T t50 = t49 * tau_lo;
+    const T t51 = T(5) * D * t25 * t43 - T(48) * t32 * t30 * a_minus_b - T(48) * t36 * t34 * b;
+    const T t52 = T(20) * c * t25 * t43 + T(8) * t46 * t25 * b - T(5) * t25 * t51;
+    const T t53 = T(7) * t52 * t25 + T(20) * c * t45 * t25 - T(8) * t25 * t47 * b;
+    const T t54 = T(64) * t31 * t30 - T(64) * t35 * t34 - t25 * b * t51;
+    const T t55 = T(4) * t46 * c * t25 - T(5) * t54 * t25 - T(2) * t52 * t25 * b;
+    const T t56 = T(2) * t53 * t25 * b + T(4) * c * t25 * t47 - T(7) * t55 * t25;
+    const T t57 = D * t25 * t51 - T(64) * t31 * t30 * a_minus_b - T(64) * t35 * t34 * b;
+    const T t58 = T(3) * t25 * t57 - T(2) * c * t25 * t51 - T(4) * t54 * t25 * b;
+    const T t59 = T(2) * c * t52 * t25 + T(4) * t55 * t25 * b + T(5) * t58 * t25;
+    const T t60 = T(4) * t25 * t56 * b - T(2) * c * t53 * t25 - T(7) * t59 * t25;
+    const T t61 = T(128) * t34 + t25 * t57 * b - T(128) * t30;
+    const T t62 = T(2) * c * t54 * t25 + T(2) * t58 * t25 * b + T(3) * t61 * t25;
+    const T t63 = T(5) * t25 * t62 + T(2) * t59 * t25 * b - T(2) * t55 * c * t25;
+    const T t64 = T(2) * t60 * t25 * b - T(2) * c * t25 * t56 - T(7) * t63 * t25;
+    const T t65 = t0 * t0;
+    const T t66 = t65 * t65;
+    const T t67 = t65 * delta_tau;
+    const T t68 = t39 * t39;
+    const T t69 = t68 * delta_tau;
+    F = (T(1) / T(8)) * t25 * t27 * t38 + (T(1) / T(30)) * t25 * t39 * t40 * t47 + (T(1) / T(12)) * t45 * t25 * t0 * t49 + (T(1) / T(7)) * t25 * delta_tau * t44 * t50 + (T(1) / T(13440)) * (c * t60 * t25 + T(7) * (T(2) * t63 * t25 * b + T(5) * t25 * (T(2) * t25 * b * t62 - T(3) * (c * t25 * t57 - T(2) * t61 * t25 * b - T(128) * J1) * t25 - c * t58 * t25) - c * t59 * t25) * t25 - T(2) * t25 * t64 * b) * t25 * t66 - (T(1) / T(120)) * t25 * t67 * t56 * t48 - (T(1) / T(96)) * t53 * t25 * t65 * t26 - (T(1) / T(1680)) * t25 * t69 * tau_lo * t64 - (T(1) / T(480)) * t60 * t25 * t68 * t1;
+    const T t70 = t33 * t30 - t37 * t34 - T(9) * t29 * b;
+    const T t71 = T(9) * t25 * t38 - T(72) * c * t29 - T(16) * t25 * t70 * b;
+    const T t72 = T(56) * c * t25 * t70 + T(14) * t71 * t25 * b + T(9) * t25 * t44;
+    const T t73 = T(3) * t45 * t25 + T(4) * t25 * b * t72 - T(14) * c * t71 * t25;
+    const T t74 = T(3) * t25 * t47 + T(10) * t25 * t73 * b - T(10) * c * t25 * t72;
+    const T t75 = T(8) * t74 * t25 * b - T(3) * t53 * t25 - T(20) * c * t25 * t73;
+    const T t76 = T(4) * c * t74 * t25 + T(3) * t25 * t56 - T(2) * t25 * b * t75;
+    const T t77 = T(3) * t60 * t25 + T(2) * c * t25 * t75 + T(4) * t25 * b * t76;
+    G_ap = (T(7) / T(18)) * t71 * t25 * t0 * t49 + (T(5) / T(72)) * t25 * t65 * t26 * t73 + (T(1) / T(9)) * t25 * t39 * t40 * t72 + t29 * t27 + (T(1) / T(720)) * t25 * t68 * t1 * t75 + (T(1) / T(90)) * t74 * t25 * t67 * t48 - (T(8) / T(9)) * t25 * delta_tau * t50 * t70 - (T(1) / T(2520)) * t25 * t69 * tau_lo * t76 - (T(1) / T(40320)) * t77 * t25 * t66;
+    G_ab = (T(1) / T(72)) * t74 * t25 * t65 * t26 + (T(1) / T(360)) * t25 * t67 * t48 * t75 + (T(1) / T(18)) * t25 * t0 * t49 * t72 + (T(1) / T(18)) * t25 * t39 * t40 * t73 + (T(1) / T(9)) * t71 * t25 * delta_tau * t50 - (T(1) / T(5040)) * t77 * t25 * t69 * tau_lo - (T(1) / T(9)) * t25 * t27 * t70 - (T(1) / T(40320)) * (T(3) * t25 * t64 + T(2) * t77 * t25 * b - T(2) * c * t25 * t76) * t25 * t66 - (T(1) / T(720)) * t25 * t68 * t1 * t76;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t78 = T(1) / a;
+    const T t79 = T(1) / r0;
+    const T t80 = t79 * t79;
+    const T t81 = t80 * t80;
+    const T t82 = t81 * t80;
+    const T t83 = T(1) / D;
+    const T t84 = T(1) / r1;
+    const T t85 = t84 * t84;
+    const T t86 = t85 * t85;
+    const T t87 = t86 * t85;
+    const T t88 = t79 * b + t84 * a_minus_b;
+    const T t89 = t85 * t84 * a_minus_b + t80 * t79 * b + T(2) * t88 * t83 * a;
+    const T t90 = T(4) * t83 * a * t89 + T(3) * t86 * t84 * a_minus_b + T(3) * t81 * t79 * b;
+    const T t91 = T(5) * t82 * t79 * b + T(5) * t87 * t84 * a_minus_b + T(2) * t83 * t90 * a;
+    const T t92 = T(5) * t82 * t79 + t83 * t91 * b - T(5) * t87 * t84;
+    const T t93 = T(6) * t92 * t78 * b + T(7) * t83 * t90 - T(3) * c * t83 * t91;
+    const T t94 = T(3) * t86 * t84 - T(3) * t81 * t79 - t83 * t90 * b;
+    const T t95 = T(7) * t78 * t94 + T(3) * c * t92 * t78 - T(2) * t78 * t93 * b;
+    const T t96 = c * t83 * t90 + T(2) * t78 * t94 * b - T(5) * t83 * t89;
+    const T t97 = c * t78 * t93 + T(2) * t78 * t95 * b + T(7) * t96 * t78;
+    const T t98 = t85 * t84 - t83 * t89 * b - t80 * t79;
+    const T t99 = T(2) * t96 * t78 * b + T(5) * t98 * t78 - c * t78 * t94;
+    const T t100 = c * t78 * t95 - T(2) * t78 * b * t97 - T(7) * t78 * t99;
+    const T t101 = T(3) * t88 * t83 - T(2) * t98 * t78 * b - c * t83 * t89;
+    const T t102 = T(2) * t78 * t99 * b - T(5) * t101 * t78 - c * t96 * t78;
+    const T t103 = c * t78 * t97 + T(2) * t100 * t78 * b - T(7) * t102 * t78;
+    const T t104 = t0 * delta_tau;
+    const T t105 = t104 * t104;
+    const T t106 = t1 * t1;
+    const T t107 = t106 * t106;
+    const T t108 = t0 * t0;
+    const T t109 = t108 * t108;
+    const T t110 = t79 + t88 * t83 * b - t84;
+    const T t111 = T(2) * t101 * t78 * b + T(3) * t78 * t110 + c * t98 * t78;
+    const T t112 = T(5) * t111 * t78 + c * t78 * t99 - T(2) * t102 * t78 * b;
+    const T t113 = T(7) * t112 * t78 + T(2) * t78 * t103 * b - t100 * c * t78;
+    const T t114 = t1 * tau_lo;
+    const T t115 = t114 * t114;
+    const T t116 = t115 * tau_lo;
+    const T t117 = t105 * delta_tau;
+    const T t118 = t108 * delta_tau;
+    const T t119 = t106 * tau_lo;
+    F = (T(4) / T(15)) * t78 * t103 * t105 * t1 + (T(1) / T(35)) * t83 * t91 * t107 + (T(1) / T(105)) * t78 * t109 * (T(2) * t113 * t78 * b + T(7) * (T(2) * t112 * t78 * b + c * t102 * t78 - T(5) * t78 * (t101 * c * t78 + T(3) * (t88 * c * t83 - T(2) * t78 * t110 * b - J1) * t78 - T(2) * t111 * t78 * b)) * t78 - c * t78 * t103) + (T(4) / T(15)) * t78 * t93 * t0 * t115 + (T(8) / T(35)) * t92 * t78 * delta_tau * t116 + (T(8) / T(105)) * t113 * t78 * t117 * tau_lo + (T(8) / T(15)) * t100 * t78 * t118 * t114 - (T(8) / T(15)) * t78 * t104 * t119 * t95 - (T(2) / T(3)) * t78 * t108 * t106 * t97;
+    const T t120 = t86 * t86;
+    const T t121 = t81 * t81;
+    const T t122 = T(8) * t83 * t91 * a + T(35) * t120 * t84 * a_minus_b + T(35) * t121 * t79 * b;
+    const T t123 = T(35) * t120 * t84 - T(35) * t121 * t79 - t83 * t122 * b;
+    const T t124 = c * t83 * t122 + T(2) * t123 * t78 * b - T(9) * t83 * t91;
+    const T t125 = T(2) * t124 * t78 * b - t123 * c * t78 - T(9) * t92 * t78;
+    const T t126 = T(2) * t125 * t78 * b - T(3) * t78 * t93 - c * t124 * t78;
+    const T t127 = T(3) * t78 * t95 + T(2) * t126 * t78 * b - c * t125 * t78;
+    const T t128 = c * t126 * t78 - T(3) * t78 * t97 - T(2) * t78 * b * t127;
+    const T t129 = T(2) * t128 * t78 * b + c * t78 * t127 + T(3) * t100 * t78;
+    const T t130 = T(2) * t78 * t129 * b + T(3) * t78 * t103 - c * t128 * t78;
+    G_ap = (T(1) / T(315)) * t83 * t107 * t122 + (T(1) / T(315)) * t130 * t78 * t109 + (T(8) / T(315)) * t78 * t117 * t129 * tau_lo + (T(4) / T(45)) * t128 * t78 * t105 * t1 - (T(8) / T(45)) * t78 * t118 * t114 * t127 - (T(8) / T(315)) * t123 * t78 * delta_tau * t116 - (T(8) / T(45)) * t125 * t78 * t104 * t119 - (T(2) / T(9)) * t126 * t78 * t108 * t106 - (T(4) / T(45)) * t124 * t78 * t0 * t115;
+    G_ab = (T(8) / T(45)) * t128 * t78 * t118 * t114 + (T(4) / T(45)) * t78 * t105 * t129 * t1 + (T(8) / T(315)) * t130 * t78 * t117 * tau_lo + (T(1) / T(315)) * t78 * t109 * (T(2) * t130 * t78 * b + T(3) * t113 * t78 - c * t78 * t129) - (T(8) / T(315)) * t124 * t78 * delta_tau * t116 - (T(8) / T(45)) * t126 * t78 * t104 * t119 - (T(1) / T(315)) * t123 * t78 * t107 - (T(2) / T(9)) * t78 * t108 * t106 * t127 - (T(4) / T(45)) * t125 * t78 * t0 * t115;
+  }
+  const T t131 = in.sigma * in.sigma;
+  const T t132 = t131 * t131;
+  const T t133 = t132 * t132;
+  const T t134 = t133 * in.sigma;
+  const T g_factor = -T(9) * length * t134;
+  f = length * t134 * F;
+  grad[0] = g_factor * (G_ap * ap0 - ab0 * G_ab);
+  grad[1] = -g_factor * (ab1 * G_ab - G_ap * ap1);
+  grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 107 +, 299 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 312 +, 534 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i10_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
+  const T ap_bp = bp2 * ap2 + bp0 * ap0 + bp1 * ap1;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + sigma2 * t0;
+  const T b = ab_ap - sigma2 * delta_tau * tau_lo;
+  const T t1 = tau_lo * tau_lo;
+  const T c = ap_ap + sigma2 * t1;
+  const T radial0 = ap0 * delta_tau + ab0 * tau_lo;
+  const T radial1 = ab1 * tau_lo + ap1 * delta_tau;
+  const T radial2 = ap2 * delta_tau + ab2 * tau_lo;
+  const T D = cross_cross + sigma2 * (radial1 * radial1 + radial0 * radial0 + radial2 * radial2);
+  const T a_minus_b = sigma2 * tau_hi * delta_tau - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = ap_bp + sigma2 * tau_hi * tau_lo;
+  const T t2 = T(1) / c;
+  const T log_ratio = log(t2 * q1);
+  T F;
+  const T t3 = D - T(2) * a * a;
+  const T t4 = -b * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(10, 10, 9, a, b, c, T(0), T(1), M_flat.data());
+    const T t6 = t1 * t1;
+    const T t7 = t6 * t6;
+    const T t8 = t0 * t0;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t0 * delta_tau;
+    const T t11 = t10 * t10;
+    const T t12 = t11 * delta_tau;
+    const T t13 = t8 * t8;
+    const T t14 = t1 * tau_lo;
+    const T t15 = t14 * t14;
+    const T t16 = t6 * tau_lo;
+    const T t17 = t13 * delta_tau;
+    const T t18 = t15 * tau_lo;
+    const T t19 = t7 * tau_lo;
+    F = T(9) * M_flat[1] * delta_tau * t7 + T(126) * M_flat[5] * t9 * t6 + T(36) * t12 * M_flat[7] * t1 + T(9) * M_flat[8] * t13 * tau_lo + T(84) * M_flat[3] * t10 * t15 + T(126) * M_flat[4] * t8 * t16 + T(84) * M_flat[6] * t11 * t14 + M_flat[9] * t17 + T(36) * M_flat[2] * t0 * t18 + M_flat[0] * t19;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_10 = J_downward(…)
+    const T t20 = T(1) / a;
+    const T t21 = T(1) / q1;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t22;
+    const T t24 = J_downward<T>(10, a, D, -b, c, a_minus_b, q1);
+    const T t25 = t2 * t2;
+    const T t26 = t25 * t25;
+    const T t27 = t23 - T(8) * b * t24 - t26;
+    const T t28 = b * t26 + a_minus_b * t23 - T(8) * t24 * D;
+    const T t29 = T(7) * b * t27 * t20 + T(28) * t24 * c + T(4) * t28 * t20;
+    const T t30 = t22 * t21;
+    const T t31 = t25 * t2;
+    const T t32 = T(7) * t30 + T(6) * b * t28 * t20 - T(7) * t31;
+    const T t33 = T(12) * b * t29 * t20 + T(4) * t32 * t20 - T(21) * c * t27 * t20;
+    const T t34 = T(6) * t28 * D * t20 + T(7) * b * t31 + T(7) * a_minus_b * t30;
+    const T t35 = T(15) * c * t28 * t20 - T(3) * t34 * t20 - T(5) * b * t32 * t20;
+    const T t36 = T(5) * b * t33 * t20 - T(15) * t29 * c * t20 - T(4) * t35 * t20;
+    const T t37 = T(4) * b * t34 * t20 + T(35) * t22 - T(35) * t25;
+    const T t38 = T(3) * t37 * t20 - T(10) * t32 * c * t20 - T(8) * b * t35 * t20;
+    const T t39 = T(4) * b * t36 * t20 + T(2) * t38 * t20 - T(5) * c * t33 * t20;
+    const T t40 = T(4) * t34 * D * t20 + T(35) * b * t25 + T(35) * a_minus_b * t22;
+    const T t41 = T(105) * t2 - T(2) * b * t20 * t40 - T(105) * t21;
+    const T t42 = T(2) * t20 * t40 + T(3) * t37 * b * t20 - T(6) * c * t34 * t20;
+    const T t43 = T(3) * t37 * c * t20 + T(2) * t20 * t41 - T(4) * b * t20 * t42;
+    const T t44 = t20 * t42 + T(2) * c * t35 * t20 + b * t38 * t20;
+    const T t45 = t43 * t20 + t38 * c * t20 - T(4) * b * t44 * t20;
+    const T t46 = b * t39 * t20 + T(2) * t44 * t20 - c * t36 * t20;
+    const T t47 = t39 * c * t20 + T(2) * t45 * t20 - T(4) * b * t46 * t20;
+    const T t48 = t0 * delta_tau;
+    const T t49 = t48 * t48;
+    const T t50 = t49 * delta_tau;
+    const T t51 = t1 * t1;
+    const T t52 = t51 * t51;
+    const T t53 = t52 * tau_lo;
+    const T t54 = T(2) * D * t20 * t40 + T(105) * a_minus_b * t21 + T(105) * b * t2;
+    const T t55 = b * t20 * t41 + c * t20 * t40 - t54 * t20;
+    const T t56 = T(2) * t55 * t20 + b * t43 * t20 + c * t20 * t42;
+    const T t57 = c * t44 * t20 + t56 * t20 + b * t45 * t20;
+    const T t58 = b * t20 * t47 + t46 * c * t20 + T(2) * t57 * t20;
+    const T t59 = t0 * t0;
+    const T t60 = t59 * t59;
+    const T t61 = t60 * delta_tau;
+    const T t62 = t59 * delta_tau;
+    const T t63 = t1 * tau_lo;
+    const T t64 = t63 * t63;
+    const T t65 = t64 * tau_lo;
+    const T t66 = t51 * tau_lo;
+    F = (T(3) / T(70)) * t20 * t47 * t50 * t1 + t24 * t53 + (T(1) / T(840)) * (T(4) * b * t58 * t20 - T(2) * (t45 * c * t20 - (T(2) * t20 * (T(4) * b * t55 * t20 + (T(105) * log_ratio - T(2) * b * t54 * t20) * t20 - c * t20 * t41) + T(4) * t56 * b * t20 - c * t43 * t20) * t20 - T(4) * b * t57 * t20) * t20 - c * t20 * t47) * t20 * t61 + (T(3) / T(140)) * t58 * t20 * t60 * tau_lo - (T(3) / T(20)) * t39 * t20 * t62 * t51 - (T(1) / T(5)) * t46 * t20 * t49 * t63 - (T(9) / T(8)) * t27 * t20 * delta_tau * t52 - (T(9) / T(7)) * t29 * t20 * t0 * t65 - (T(1) / T(2)) * t33 * t20 * t48 * t64 - (T(3) / T(10)) * t36 * t20 * t59 * t66;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t67 = sqrt(D);
+    const T t68 = T(1) / t67;
+    const T J2 = atan2(t67, c_minus_b) * t68;
+    const T t69 = T(1) / a;
+    const T t70 = T(1) / q1;
+    const T t71 = t70 * t70;
+    const T t72 = t71 * t70;
+    const T t73 = t2 * t2;
+    const T t74 = a_minus_b * t70 + a * J2 + b * t2;
+    const T t75 = T(1) / D;
+    const T t76 = T(2) * b * t73 + T(3) * t74 * t75 * a + T(2) * a_minus_b * t71;
+    const T t77 = t73 * t2;
+    const T t78 = T(5) * t76 * t75 * a + T(8) * b * t77 + T(8) * a_minus_b * t72;
+    const T t79 = T(8) * t72 - t78 * b * t75 - T(8) * t77;
+    const T t80 = t73 * t73;
+    const T t81 = t71 * t71;
+    const T t82 = T(48) * b * t80 + T(48) * a_minus_b * t81 + T(7) * t78 * t75 * a;
+    const T t83 = T(48) * t81 - b * t82 * t75 - T(48) * t80;
+    const T t84 = T(8) * t78 * t75 - t82 * c * t75 - T(2) * b * t83 * t69;
+    const T t85 = T(8) * t69 * t79 - T(2) * b * t69 * t84 - t83 * c * t69;
+    const T t86 = t78 * c * t75 + T(2) * b * t69 * t79 - T(6) * t76 * t75;
+    const T t87 = T(2) * b * t69 * t85 + T(8) * t86 * t69 + c * t69 * t84;
+    const T t88 = T(2) * t71 - b * t76 * t75 - T(2) * t73;
+    const T t89 = c * t76 * t75 + T(2) * b * t88 * t69 - T(4) * t74 * t75;
+    const T t90 = T(2) * b * t86 * t69 + T(6) * t88 * t69 - c * t69 * t79;
+    const T t91 = c * t86 * t69 - T(6) * t89 * t69 - T(2) * t90 * b * t69;
+    const T t92 = T(2) * b * t87 * t69 + T(8) * t90 * t69 - c * t69 * t85;
+    const T t93 = c * t87 * t69 + T(8) * t91 * t69 - T(2) * t92 * b * t69;
+    const T t94 = t2 + b * t74 * t75 - t70;
+    const T t95 = T(2) * b * t89 * t69 - T(4) * t94 * t69 - t88 * c * t69;
+    const T t96 = T(6) * t95 * t69 - t90 * c * t69 - T(2) * b * t91 * t69;
+    const T t97 = T(2) * b * t69 * t93 + t92 * c * t69 - T(8) * t96 * t69;
+    const T t98 = t0 * delta_tau;
+    const T t99 = t98 * t98;
+    const T t100 = t99 * delta_tau;
+    const T t101 = c * t74 * t75 - T(2) * t94 * b * t69 - T(2) * J2;
+    const T t102 = T(2) * b * t95 * t69 + T(4) * t101 * t69 - c * t89 * t69;
+    const T t103 = c * t91 * t69 + T(6) * t102 * t69 + T(2) * t96 * b * t69;
+    const T t104 = T(2) * b * t97 * t69 - T(8) * t103 * t69 - c * t69 * t93;
+    const T t105 = t0 * t0;
+    const T t106 = t105 * t105;
+    const T t107 = t1 * t1;
+    const T t108 = t107 * t107;
+    const T t109 = t108 * tau_lo;
+    const T t110 = t1 * tau_lo;
+    const T t111 = t110 * t110;
+    const T t112 = t111 * tau_lo;
+    const T t113 = t107 * tau_lo;
+    const T t114 = t105 * delta_tau;
+    const T t115 = t106 * delta_tau;
+    F = (T(3) / T(32)) * t97 * t69 * t100 * t1 + (T(3) / T(128)) * t104 * t69 * t106 * tau_lo + (T(1) / T(384)) * t82 * t75 * t109 + (T(7) / T(32)) * t69 * t93 * t99 * t110 + (T(3) / T(32)) * t69 * t84 * t0 * t112 - (T(21) / T(64)) * t87 * t69 * t105 * t113 - (T(3) / T(128)) * t83 * t69 * delta_tau * t108 - (T(21) / T(64)) * t92 * t69 * t114 * t107 - (T(7) / T(32)) * t69 * t98 * t85 * t111 - (T(1) / T(384)) * (T(8) * t69 * (T(2) * b * t103 * t69 - t96 * c * t69 - T(6) * (c * t95 * t69 - T(4) * (T(2) * b * t101 * t69 + t94 * c * t69 - (T(2) * b * J2 + log_ratio) * t69) * t69 - T(2) * b * t102 * t69) * t69) + t97 * c * t69 - T(2) * t104 * b * t69) * t69 * t115;
+  }
+  const T t116 = in.sigma * in.sigma;
+  const T t117 = t116 * t116;
+  const T t118 = t117 * in.sigma;
+  const T t119 = t118 * t118;
+  f = F * length * t119;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 132 +, 394 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 344 +, 609 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_cauchy_i10_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab2 * ap2 + ab1 * ap1;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = ab2 * bp2 + ab0 * bp0 + ab1 * bp1;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = ab_ab + t0 * sigma2;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = ap0 * delta_tau + ab0 * tau_lo;
+  const T radial1 = ap1 * delta_tau + ab1 * tau_lo;
+  const T radial2 = ap2 * delta_tau + ab2 * tau_lo;
+  const T D = (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) * sigma2 + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  T G_ap;
+  T G_ab;
+  const T t2 = D - T(2) * a * a;
+  const T t3 = -a_minus_b * b;
+  const T t4 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t2 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 11> M_flat;
+    segment_moments_gauss<T, 20>(12, 12, 10, a, b, c, T(0), T(1), M_flat.data());
+    const T t5 = t1 * t1;
+    const T t6 = t5 * t5;
+    const T t7 = t0 * delta_tau;
+    const T t8 = t7 * t7;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t1 * tau_lo;
+    const T t11 = t10 * t10;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t6 * tau_lo;
+    const T t14 = t0 * t0;
+    const T t15 = t5 * tau_lo;
+    const T t16 = t14 * delta_tau;
+    const T t17 = t14 * t14;
+    const T t18 = t17 * delta_tau;
+    G_ap = T(9) * delta_tau * t6 * M_flat[1] + T(36) * t9 * t1 * M_flat[7] + T(36) * M_flat[2] * t0 * t12 + T(84) * M_flat[6] * t8 * t10 + t13 * M_flat[0] + T(126) * t14 * t15 * M_flat[4] + T(84) * t7 * M_flat[3] * t11 + T(126) * M_flat[5] * t16 * t5 + M_flat[9] * t18 + T(9) * M_flat[8] * t17 * tau_lo;
+    G_ab = T(84) * t7 * t11 * M_flat[4] + T(126) * M_flat[6] * t16 * t5 + T(36) * t0 * M_flat[3] * t12 + T(84) * t8 * t10 * M_flat[7] + t18 * M_flat[10] + T(9) * M_flat[9] * t17 * tau_lo + t13 * M_flat[1] + T(126) * M_flat[5] * t14 * t15 + T(36) * M_flat[8] * t9 * t1 + T(9) * M_flat[2] * delta_tau * t6;
+  } else if (t3 >= T(0) && t4 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 11> M_beyond;
+    segment_moments_beyond_end<T>(12, 12, 10, a, b, D, c, q1, M_beyond.data());
+    const T t19 = t1 * tau_lo;
+    const T t20 = t19 * t19;
+    const T t21 = t20 * tau_lo;
+    const T t22 = t0 * delta_tau;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * delta_tau;
+    const T t25 = t1 * t1;
+    const T t26 = t25 * t25;
+    const T t27 = t26 * tau_lo;
+    const T t28 = t0 * t0;
+    const T t29 = t28 * delta_tau;
+    const T t30 = t28 * t28;
+    const T t31 = t30 * delta_tau;
+    const T t32 = t25 * tau_lo;
+    G_ap = T(36) * t0 * t21 * M_beyond[2] + T(36) * M_beyond[7] * t24 * t1 + t27 * M_beyond[0] + T(84) * t22 * t20 * M_beyond[3] + T(126) * t29 * t25 * M_beyond[5] + T(84) * t23 * t19 * M_beyond[6] + T(9) * M_beyond[1] * delta_tau * t26 + t31 * M_beyond[9] + T(126) * M_beyond[4] * t28 * t32 + T(9) * t30 * M_beyond[8] * tau_lo;
+    G_ab = M_beyond[10] * t31 + T(9) * t30 * tau_lo * M_beyond[9] + T(84) * M_beyond[4] * t22 * t20 + T(126) * t28 * t32 * M_beyond[5] + T(84) * M_beyond[7] * t23 * t19 + M_beyond[1] * t27 + T(36) * t24 * M_beyond[8] * t1 + T(126) * t29 * t25 * M_beyond[6] + T(36) * t0 * t21 * M_beyond[3] + T(9) * delta_tau * t26 * M_beyond[2];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t33 = sqrt(D);
+    const T t34 = T(1) / t33;
+    const T J2 = t34 * atan2(t33, c_minus_b);
+    const T t35 = T(1) / a;
+    const T t36 = T(1) / q1;
+    const T t37 = t36 * t36;
+    const T t38 = t37 * t37;
+    const T t39 = t38 * t36;
+    const T t40 = T(1) / D;
+    const T t41 = T(1) / c;
+    const T t42 = t41 * t41;
+    const T t43 = t42 * t41;
+    const T t44 = t37 * t36;
+    const T t45 = a * J2 + t41 * b + a_minus_b * t36;
+    const T t46 = T(2) * a_minus_b * t37 + T(3) * t40 * a * t45 + T(2) * t42 * b;
+    const T t47 = T(8) * t43 * b + T(8) * a_minus_b * t44 + T(5) * t40 * a * t46;
+    const T t48 = t42 * t42;
+    const T t49 = T(48) * a_minus_b * t38 + T(7) * t40 * t47 * a + T(48) * t48 * b;
+    const T t50 = t48 * t41;
+    const T t51 = T(128) * a_minus_b * t39 + T(3) * t40 * a * t49 + T(128) * t50 * b;
+    const T t52 = T(128) * t39 - t51 * t40 * b - T(128) * t50;
+    const T t53 = T(6) * t35 * t52 * b + T(3) * c * t51 * t40 - T(10) * t40 * t49;
+    const T t54 = T(48) * t38 - T(48) * t48 - t40 * t49 * b;
+    const T t55 = T(2) * t35 * t54 * b + c * t40 * t49 - T(8) * t40 * t47;
+    const T t56 = T(2) * t53 * t35 * b + T(10) * t35 * t54 - T(3) * c * t35 * t52;
+    const T t57 = t53 * c * t35 - T(10) * t55 * t35 - T(2) * t56 * t35 * b;
+    const T t58 = T(8) * t43 + t40 * t47 * b - T(8) * t44;
+    const T t59 = T(8) * t35 * t58 + c * t35 * t54 - T(2) * t55 * t35 * b;
+    const T t60 = T(2) * t35 * t57 * b + T(10) * t59 * t35 + t56 * c * t35;
+    const T t61 = t0 * t0;
+    const T t62 = t61 * delta_tau;
+    const T t63 = t1 * t1;
+    const T t64 = t63 * tau_lo;
+    const T t65 = t0 * delta_tau;
+    const T t66 = t65 * t65;
+    const T t67 = c * t40 * t47 - T(6) * t40 * t46 - T(2) * t35 * t58 * b;
+    const T t68 = c * t55 * t35 + T(2) * t59 * t35 * b - T(8) * t35 * t67;
+    const T t69 = T(2) * t60 * t35 * b + T(10) * t35 * t68 - c * t35 * t57;
+    const T t70 = t1 * tau_lo;
+    const T t71 = t63 * t63;
+    const T t72 = t71 * tau_lo;
+    const T t73 = T(2) * t42 + t40 * t46 * b - T(2) * t37;
+    const T t74 = T(6) * t35 * t73 - T(2) * t35 * b * t67 - c * t35 * t58;
+    const T t75 = T(8) * t35 * t74 + T(2) * t35 * b * t68 - c * t59 * t35;
+    const T t76 = T(4) * t40 * t45 + T(2) * t35 * t73 * b - c * t40 * t46;
+    const T t77 = c * t35 * t67 + T(6) * t35 * t76 + T(2) * t35 * t74 * b;
+    const T t78 = c * t35 * t68 - T(2) * t35 * t75 * b - T(8) * t35 * t77;
+    const T t79 = c * t60 * t35 - T(2) * t35 * t69 * b - T(10) * t35 * t75;
+    const T t80 = T(10) * t78 * t35 + c * t35 * t69 + T(2) * t79 * t35 * b;
+    const T t81 = t40 * b * t45 + t41 - t36;
+    const T t82 = T(2) * t35 * b * t76 + T(4) * t81 * t35 - c * t35 * t73;
+    const T t83 = T(6) * t82 * t35 + T(2) * t35 * t77 * b - c * t35 * t74;
+    const T t84 = T(8) * t35 * t83 - T(2) * t78 * t35 * b - c * t35 * t75;
+    const T t85 = T(2) * t80 * t35 * b - T(10) * t35 * t84 - c * t79 * t35;
+    const T t86 = t61 * t61;
+    const T t87 = t86 * delta_tau;
+    const T t88 = t70 * t70;
+    const T t89 = t88 * tau_lo;
+    const T t90 = t66 * delta_tau;
+    G_ap = (T(21) / T(640)) * t60 * t62 * t35 * t63 + (T(21) / T(640)) * t61 * t35 * t64 * t57 + (T(7) / T(320)) * t66 * t35 * t69 * t70 + (T(1) / T(1280)) * t51 * t40 * t72 - (T(1) / T(3840)) * t85 * t87 * t35 - (T(9) / T(1280)) * delta_tau * t35 * t71 * t52 - (T(3) / T(1280)) * t80 * t86 * t35 * tau_lo - (T(7) / T(320)) * t56 * t65 * t35 * t88 - (T(3) / T(320)) * t53 * t0 * t35 * t89 - (T(3) / T(320)) * t79 * t90 * t35 * t1;
+    G_ab = (T(21) / T(640)) * t60 * t61 * t35 * t64 + (T(21) / T(640)) * t62 * t35 * t69 * t63 + (T(7) / T(320)) * t65 * t35 * t88 * t57 - (T(3) / T(320)) * t56 * t0 * t35 * t89 - (T(3) / T(320)) * t80 * t90 * t35 * t1 - (T(3) / T(1280)) * t53 * delta_tau * t35 * t71 - (T(3) / T(1280)) * t85 * t86 * t35 * tau_lo - (T(1) / T(1280)) * t35 * t72 * t52 - (T(7) / T(320)) * t79 * t66 * t35 * t70 - (T(1) / T(3840)) * t87 * t35 * (T(10) * t35 * (T(8) * t35 * (T(6) * (c * t35 * t76 + T(4) * (c * t40 * t45 - T(2) * t81 * t35 * b - T(2) * J2) * t35 - T(2) * t82 * t35 * b) * t35 + c * t35 * t77 - T(2) * t35 * b * t83) - c * t78 * t35 - T(2) * t35 * t84 * b) + T(2) * t85 * t35 * b - c * t80 * t35);
+  }
+  const T t91 = in.sigma * in.sigma;
+  const T t92 = t91 * t91;
+  const T t93 = t92 * in.sigma;
+  const T t94 = t93 * t93;
+  const T g_factor = -T(10) * length * t94;
+  grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
+  grad[1] = (ap1 * G_ap - ab1 * G_ab) * g_factor;
+  grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 150 +, 464 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 573 +, 909 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_cauchy_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T sigma2 = in.sigma * in.sigma;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab0 * ab0 + ab1 * ab1 + ab2 * ab2;
+  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = ab1 * bp1 + ab0 * bp0 + bp2 * ab2;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T t0 = delta_tau * delta_tau;
+  const T a = t0 * sigma2 + ab_ab;
+  const T b = ab_ap - delta_tau * tau_lo * sigma2;
+  const T t1 = tau_lo * tau_lo;
+  const T c = t1 * sigma2 + ap_ap;
+  const T radial0 = ap0 * delta_tau + ab0 * tau_lo;
+  const T radial1 = ap1 * delta_tau + ab1 * tau_lo;
+  const T radial2 = tau_lo * ab2 + ap2 * delta_tau;
+  const T D = sigma2 * (radial2 * radial2 + radial1 * radial1 + radial0 * radial0) + cross_cross;
+  const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
+  const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
+  const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
+  const T t2 = T(1) / c;
+  const T log_ratio = log(t2 * q1);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t3 = D - T(2) * a * a;
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t3 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 22> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 10, a, b, c, T(0), T(1), M_flat.data());
+    const T t6 = t0 * delta_tau;
+    const T t7 = t6 * t6;
+    const T t8 = t7 * delta_tau;
+    const T t9 = t0 * t0;
+    const T t10 = t1 * t1;
+    const T t11 = t10 * tau_lo;
+    const T t12 = t9 * t9;
+    const T t13 = t12 * delta_tau;
+    const T t14 = t1 * tau_lo;
+    const T t15 = t9 * delta_tau;
+    const T t16 = t14 * t14;
+    const T t17 = t16 * tau_lo;
+    const T t18 = t10 * t10;
+    const T t19 = t18 * tau_lo;
+    F = T(36) * M_flat[7] * t8 * t1 + T(126) * M_flat[4] * t9 * t11 + t13 * M_flat[9] + T(84) * t7 * t14 * M_flat[6] + T(126) * t15 * M_flat[5] * t10 + T(84) * t6 * t16 * M_flat[3] + T(36) * t0 * t17 * M_flat[2] + T(9) * M_flat[1] * delta_tau * t18 + T(9) * M_flat[8] * t12 * tau_lo + t19 * M_flat[0];
+    G_ap = T(36) * t8 * t1 * M_flat[18] + M_flat[20] * t13 + T(126) * t9 * t11 * M_flat[15] + T(36) * M_flat[13] * t0 * t17 + T(9) * t12 * tau_lo * M_flat[19] + T(84) * M_flat[14] * t6 * t16 + T(9) * delta_tau * t18 * M_flat[12] + T(84) * M_flat[17] * t7 * t14 + M_flat[11] * t19 + T(126) * t15 * t10 * M_flat[16];
+    G_ab = T(126) * M_flat[17] * t15 * t10 + t19 * M_flat[12] + T(9) * M_flat[13] * delta_tau * t18 + T(84) * t7 * t14 * M_flat[18] + T(9) * M_flat[20] * t12 * tau_lo + t13 * M_flat[21] + T(84) * t6 * t16 * M_flat[15] + T(126) * t9 * t11 * M_flat[16] + T(36) * t8 * t1 * M_flat[19] + T(36) * M_flat[14] * t0 * t17;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_12 = J_downward(…)
+    const T t20 = t0 * delta_tau;
+    const T t21 = t20 * t20;
+    const T t22 = t1 * tau_lo;
+    const T t23 = T(1) / a;
+    const T t24 = J_downward<T>(12, a, D, -b, c, a_minus_b, q1);
+    const T t25 = T(1) / q1;
+    const T t26 = t25 * t25;
+    const T t27 = t26 * t26;
+    const T t28 = t27 * t25;
+    const T t29 = t2 * t2;
+    const T t30 = t29 * t29;
+    const T t31 = t30 * t2;
+    const T t32 = T(10) * t24 * D - a_minus_b * t28 - t31 * b;
+    const T t33 = T(8) * t32 * t23 * b + T(9) * t30 - T(9) * t27;
+    const T t34 = T(8) * t32 * D * t23 - T(9) * t30 * b - T(9) * a_minus_b * t27;
+    const T t35 = T(7) * t33 * t23 * b + T(4) * t23 * t34 - T(28) * c * t32 * t23;
+    const T t36 = t29 * t2;
+    const T t37 = t26 * t25;
+    const T t38 = T(21) * t36 + T(2) * t23 * t34 * b - T(21) * t37;
+    const T t39 = T(7) * c * t33 * t23 - T(4) * t35 * t23 * b - T(4) * t38 * t23;
+    const T t40 = T(21) * t36 * b + T(21) * a_minus_b * t37 - T(2) * D * t23 * t34;
+    const T t41 = T(3) * t23 * t40 + T(5) * c * t23 * t34 - T(5) * t38 * t23 * b;
+    const T t42 = T(5) * t23 * t39 * b + T(5) * c * t35 * t23 + T(4) * t41 * t23;
+    const T t43 = T(105) * t29 - T(105) * t26 - T(4) * t23 * t40 * b;
+    const T t44 = T(105) * t29 * b + T(4) * D * t23 * t40 + T(105) * a_minus_b * t26;
+    const T t45 = T(6) * c * t23 * t40 + T(3) * t23 * b * t43 - T(2) * t44 * t23;
+    const T t46 = T(10) * c * t38 * t23 + T(8) * t41 * t23 * b - T(3) * t23 * t43;
+    const T t47 = t45 * t23 + T(2) * t41 * c * t23 - t23 * t46 * b;
+    const T t48 = T(4) * t42 * t23 * b + T(2) * t23 * t46 - T(5) * c * t23 * t39;
+    const T t49 = c * t42 * t23 + T(2) * t47 * t23 - t48 * t23 * b;
+    const T t50 = T(2) * t44 * t23 * b + T(315) * t25 - T(315) * t2;
+    const T t51 = T(2) * t23 * t50 + T(3) * c * t23 * t43 - T(4) * t45 * t23 * b;
+    const T t52 = c * t23 * t46 + T(4) * t47 * t23 * b - t23 * t51;
+    const T t53 = T(2) * t23 * t52 + T(4) * t23 * b * t49 + c * t48 * t23;
+    const T t54 = t21 * delta_tau;
+    const T t55 = t22 * t22;
+    const T t56 = t55 * tau_lo;
+    const T t57 = t1 * t1;
+    const T t58 = t57 * t57;
+    const T t59 = t58 * tau_lo;
+    const T t60 = T(315) * a_minus_b * t25 + T(2) * t44 * D * t23 + T(315) * t2 * b;
+    const T t61 = t60 * t23 + t23 * b * t50 - t44 * c * t23;
+    const T t62 = t23 * t51 * b + c * t45 * t23 + T(2) * t61 * t23;
+    const T t63 = t47 * c * t23 + t62 * t23 - t23 * b * t52;
+    const T t64 = T(2) * t23 * t63 + c * t23 * t49 - t53 * t23 * b;
+    const T t65 = t0 * t0;
+    const T t66 = t65 * t65;
+    const T t67 = t66 * delta_tau;
+    const T t68 = t65 * delta_tau;
+    const T t69 = t57 * tau_lo;
+    F = (T(1) / T(15)) * t21 * t22 * t23 * t49 + (T(1) / T(70)) * t53 * t54 * t1 * t23 + (T(1) / T(7)) * t0 * t35 * t56 * t23 + (T(1) / T(8)) * t33 * delta_tau * t58 * t23 + (T(1) / T(9)) * t32 * t59 * t23 - (T(1) / T(6)) * t20 * t55 * t23 * t39 - (T(1) / T(2520)) * (T(2) * t23 * (c * t23 * t52 + T(4) * t23 * b * t63 - t23 * (T(2) * t23 * (c * t23 * t50 + t23 * (T(315) * log_ratio - T(2) * t60 * t23 * b) - T(4) * t61 * t23 * b) + c * t23 * t51 - T(4) * t62 * t23 * b)) + T(4) * t64 * t23 * b + c * t53 * t23) * t67 * t23 - (T(1) / T(20)) * t48 * t68 * t57 * t23 - (T(1) / T(140)) * t64 * t66 * tau_lo * t23 - (T(1) / T(10)) * t42 * t65 * t69 * t23;
+    const T t70 = t31 + T(10) * t24 * b - t28;
+    const T t71 = T(45) * c * t24 - T(9) * t70 * t23 * b - T(5) * t32 * t23;
+    const T t72 = T(16) * t23 * t71 * b + T(36) * c * t70 * t23 - T(5) * t33 * t23;
+    const T t73 = T(5) * t35 * t23 + T(28) * c * t23 * t71 - T(7) * t23 * t72 * b;
+    const T t74 = T(7) * c * t23 * t72 + T(4) * t73 * t23 * b - T(5) * t23 * t39;
+    const T t75 = t42 * t23 + t73 * c * t23 - t74 * t23 * b;
+    const T t76 = c * t74 * t23 + t48 * t23 + T(4) * t23 * b * t75;
+    const T t77 = c * t23 * t75 + t23 * t49 - t76 * t23 * b;
+    const T t78 = T(4) * t77 * t23 * b + t53 * t23 + t76 * c * t23;
+    G_ap = (T(1) / T(10)) * t73 * t65 * t69 * t23 + (T(1) / T(140)) * t66 * tau_lo * t77 * t23 + (T(1) / T(20)) * t74 * t68 * t57 * t23 + (T(1) / T(2520)) * t67 * t23 * t78 + t24 * t59 + (T(9) / T(10)) * delta_tau * t70 * t58 * t23 - (T(4) / T(5)) * t0 * t56 * t23 * t71 - (T(1) / T(15)) * t21 * t22 * t23 * t75 - (T(1) / T(70)) * t76 * t54 * t1 * t23 - (T(7) / T(30)) * t20 * t55 * t23 * t72;
+    G_ab = (T(1) / T(20)) * t74 * t65 * t69 * t23 + (T(1) / T(280)) * t66 * tau_lo * t23 * t78 + (T(1) / T(15)) * t73 * t20 * t55 * t23 + (T(1) / T(10)) * t70 * t59 * t23 + (T(1) / T(35)) * t54 * t1 * t77 * t23 - (T(1) / T(30)) * t76 * t21 * t22 * t23 - (T(1) / T(10)) * t68 * t57 * t23 * t75 - (T(1) / T(1260)) * (t64 * t23 + c * t77 * t23 - t23 * b * t78) * t67 * t23 - (T(1) / T(5)) * delta_tau * t58 * t23 * t71 - (T(1) / T(10)) * t0 * t56 * t23 * t72;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t79 = sqrt(D);
+    const T t80 = T(1) / t79;
+    const T J2 = t80 * atan2(t79, c_minus_b);
+    const T t81 = T(1) / D;
+    const T t82 = t2 * t2;
+    const T t83 = t82 * t2;
+    const T t84 = T(1) / q1;
+    const T t85 = J2 * a + a_minus_b * t84 + t2 * b;
+    const T t86 = t84 * t84;
+    const T t87 = T(3) * t81 * t85 * a + T(2) * t82 * b + T(2) * a_minus_b * t86;
+    const T t88 = t86 * t84;
+    const T t89 = T(8) * t83 * b + T(5) * t87 * t81 * a + T(8) * a_minus_b * t88;
+    const T t90 = t82 * t82;
+    const T t91 = t86 * t86;
+    const T t92 = T(7) * t81 * a * t89 + T(48) * t90 * b + T(48) * a_minus_b * t91;
+    const T t93 = t1 * t1;
+    const T t94 = t93 * t93;
+    const T t95 = t94 * tau_lo;
+    const T t96 = t0 * t0;
+    const T t97 = t96 * t96;
+    const T t98 = T(1) / a;
+    const T t99 = t81 * t89 * b + T(8) * t83 - T(8) * t88;
+    const T t100 = T(2) * t99 * t98 * b + T(6) * t87 * t81 - c * t81 * t89;
+    const T t101 = t92 * t81 * b + T(48) * t90 - T(48) * t91;
+    const T t102 = t92 * c * t81 - T(8) * t81 * t89 - T(2) * t101 * t98 * b;
+    const T t103 = T(8) * t99 * t98 - c * t101 * t98 - T(2) * t98 * t102 * b;
+    const T t104 = T(8) * t100 * t98 + c * t98 * t102 + T(2) * t98 * b * t103;
+    const T t105 = T(2) * t82 + t87 * t81 * b - T(2) * t86;
+    const T t106 = c * t99 * t98 - T(6) * t98 * t105 - T(2) * t100 * t98 * b;
+    const T t107 = c * t98 * t103 + T(8) * t106 * t98 - T(2) * t98 * t104 * b;
+    const T t108 = T(4) * t81 * t85 + T(2) * t98 * t105 * b - c * t87 * t81;
+    const T t109 = c * t100 * t98 + T(2) * t106 * t98 * b - T(6) * t98 * t108;
+    const T t110 = c * t98 * t104 + T(2) * t107 * t98 * b + T(8) * t109 * t98;
+    const T t111 = t84 - t81 * t85 * b - t2;
+    const T t112 = T(4) * t98 * t111 + c * t98 * t105 - T(2) * t98 * t108 * b;
+    const T t113 = T(6) * t112 * t98 + T(2) * t109 * t98 * b - t106 * c * t98;
+    const T t114 = c * t107 * t98 - T(2) * t110 * t98 * b - T(8) * t98 * t113;
+    const T t115 = T(2) * J2 - c * t81 * t85 - T(2) * t98 * b * t111;
+    const T t116 = T(4) * t115 * t98 - T(2) * t112 * t98 * b - c * t98 * t108;
+    const T t117 = T(2) * t98 * t113 * b - T(6) * t98 * t116 - c * t109 * t98;
+    const T t118 = t110 * c * t98 + T(2) * t98 * t114 * b - T(8) * t98 * t117;
+    const T t119 = t0 * delta_tau;
+    const T t120 = t119 * t119;
+    const T t121 = t120 * delta_tau;
+    const T t122 = t1 * tau_lo;
+    const T t123 = t122 * t122;
+    const T t124 = t93 * tau_lo;
+    const T t125 = t96 * delta_tau;
+    const T t126 = t97 * delta_tau;
+    const T t127 = t123 * tau_lo;
+    F = (T(1) / T(384)) * t92 * t81 * t95 + (T(3) / T(128)) * t97 * tau_lo * t98 * t118 + (T(3) / T(32)) * t121 * t1 * t98 * t114 + (T(7) / T(32)) * t119 * t123 * t98 * t103 + (T(3) / T(128)) * t101 * delta_tau * t94 * t98 + (T(21) / T(64)) * t96 * t124 * t98 * t104 - (T(7) / T(32)) * t110 * t120 * t122 * t98 - (T(21) / T(64)) * t125 * t107 * t93 * t98 - (T(1) / T(384)) * t126 * t98 * (T(8) * t98 * (T(2) * t98 * t117 * b - c * t98 * t113 - T(6) * t98 * (T(2) * t98 * t116 * b + c * t112 * t98 + T(4) * (t98 * (log_ratio + T(2) * J2 * b) + c * t98 * t111 + T(2) * t115 * t98 * b) * t98)) + c * t98 * t114 - T(2) * t98 * t118 * b) - (T(3) / T(32)) * t0 * t127 * t98 * t102;
+    const T t128 = t90 * t2;
+    const T t129 = t91 * t84;
+    const T t130 = T(3) * t92 * t81 * a + T(128) * a_minus_b * t129 + T(128) * t128 * b;
+    const T t131 = T(128) * t128 + t81 * t130 * b - T(128) * t129;
+    const T t132 = T(6) * t131 * t98 * b + T(10) * t92 * t81 - T(3) * c * t81 * t130;
+    const T t133 = T(2) * t132 * t98 * b + T(10) * t101 * t98 - T(3) * t131 * c * t98;
+    const T t134 = T(10) * t98 * t102 + t132 * c * t98 - T(2) * t98 * t133 * b;
+    const T t135 = c * t98 * t133 + T(2) * t98 * t134 * b - T(10) * t98 * t103;
+    const T t136 = T(10) * t98 * t104 + c * t98 * t134 - T(2) * t98 * t135 * b;
+    const T t137 = T(10) * t107 * t98 - c * t98 * t135 - T(2) * t136 * t98 * b;
+    const T t138 = c * t136 * t98 + T(2) * t137 * t98 * b + T(10) * t110 * t98;
+    const T t139 = T(10) * t98 * t114 + c * t137 * t98 - T(2) * t98 * t138 * b;
+    G_ap = (T(9) / T(1280)) * t131 * delta_tau * t94 * t98 + (T(1) / T(3840)) * t139 * t126 * t98 + (T(7) / T(320)) * t136 * t120 * t122 * t98 + (T(3) / T(320)) * t132 * t0 * t127 * t98 + (T(1) / T(1280)) * t81 * t95 * t130 + (T(7) / T(320)) * t119 * t123 * t98 * t133 - (T(3) / T(1280)) * t97 * tau_lo * t98 * t138 - (T(3) / T(320)) * t137 * t121 * t1 * t98 - (T(21) / T(640)) * t96 * t124 * t98 * t134 - (T(21) / T(640)) * t125 * t93 * t98 * t135;
+    G_ab = (T(21) / T(640)) * t136 * t125 * t93 * t98 + (T(3) / T(1280)) * t132 * delta_tau * t94 * t98 + (T(3) / T(1280)) * t139 * t97 * tau_lo * t98 + (T(1) / T(3840)) * (T(2) * t139 * t98 * b + T(10) * t98 * t118 + c * t98 * t138) * t126 * t98 + (T(1) / T(1280)) * t131 * t95 * t98 + (T(3) / T(320)) * t0 * t127 * t98 * t133 - (T(7) / T(320)) * t137 * t120 * t122 * t98 - (T(21) / T(640)) * t96 * t124 * t98 * t135 - (T(7) / T(320)) * t119 * t123 * t98 * t134 - (T(3) / T(320)) * t121 * t1 * t98 * t138;
+  }
+  const T t140 = in.sigma * in.sigma;
+  const T t141 = t140 * t140;
+  const T t142 = t141 * in.sigma;
+  const T t143 = t142 * t142;
+  const T g_factor = -T(10) * t143 * length;
+  f = t143 * length * F;
+  grad[0] = (ap0 * G_ap - ab0 * G_ab) * g_factor;
+  grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
+  grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
+  return f;
+}
+
+}  // namespace skelconv::generated

@@ -1,0 +1,3559 @@
+// generated/scalis_segment_inverse.hpp — SCALIS segment kernels of the inverse family.
+//
+// GENERATED FILE: DO NOT EDIT. Regenerate with
+//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
+// Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
+// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
+// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
+// SCALIS segments (SPEC §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of
+// degree i with the weight σ^i τ(t)^(i−1), and for Cauchy q = |P − Γ(t)|² + σ²τ(t)²
+// (codegen/segment_families.cpp, ScalisKernelSpec). Unnormalised: f = c F / h is
+// the runtime's (skelconv/scalis_segment.hpp).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <skelconv/gauss_moments.hpp>
+#include <skelconv/scalis_segment_input.hpp>
+#include <skelconv/stable_recurrence.hpp>
+
+namespace skelconv::generated {
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 31 +, 41 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 132 +, 221 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
+  const T ap_bp = bp1 * ap1 + bp2 * ap2 + bp0 * ap0;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T log_ratio = log(bp_bp / ap_ap);
+  T F;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 2> M_flat;
+    segment_moments_gauss<T, 20>(2, 2, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = M_flat[1] * delta_tau + tau_lo * M_flat[0];
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
+    const T t3 = T(1) / ab_ab;
+    const T t4 = J_downward<T>(2, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    F = (T(1) / T(2)) * delta_tau * t3 * (log_ratio + T(2) * t4 * ab_ap) + t4 * tau_lo;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t5 = sqrt(cross_cross);
+    const T J2 = atan2(t5, ap_bp) / t5;
+    const T t6 = T(1) / ab_ab;
+    F = (T(1) / T(2)) * delta_tau * t6 * (T(2) * J2 * ab_ap + log_ratio) + J2 * tau_lo;
+  }
+  f = length * in.sigma * in.sigma * F;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 40 +, 68 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 156 +, 273 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = ab1 * bp1 + ab0 * bp0 + bp2 * ab2;
+  const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 3> M_flat;
+    segment_moments_gauss<T, 20>(4, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    G_ap = delta_tau * M_flat[1] + M_flat[0] * tau_lo;
+    G_ab = M_flat[2] * delta_tau + tau_lo * M_flat[1];
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 3> M_beyond;
+    segment_moments_beyond_end<T>(4, 4, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    G_ap = M_beyond[0] * tau_lo + delta_tau * M_beyond[1];
+    G_ab = M_beyond[2] * delta_tau + tau_lo * M_beyond[1];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t3 = sqrt(cross_cross);
+    const T t4 = T(1) / t3;
+    const T J2 = atan2(t3, ap_bp) * t4;
+    const T t5 = T(1) / ap_ap;
+    const T t6 = T(1) / bp_bp;
+    const T t7 = ab_ap * t5 + ab_ab * J2 + a_minus_b * t6;
+    const T t8 = T(1) / cross_cross;
+    const T t9 = t5 + t7 * ab_ap * t8 - t6;
+    const T t10 = T(1) / ab_ab;
+    G_ap = (T(1) / T(2)) * t7 * tau_lo * t8 + (T(1) / T(2)) * t9 * delta_tau * t10;
+    G_ab = (T(1) / T(2)) * t9 * tau_lo * t10 - (T(1) / T(2)) * (t7 * ap_ap * t8 - T(2) * ab_ap * t9 * t10 - T(2) * J2) * delta_tau * t10;
+  }
+  const T g_factor = -T(2) * length * in.sigma * in.sigma;
+  grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
+  grad[1] = -g_factor * (ab1 * G_ab - ap1 * G_ap);
+  grad[2] = -(G_ab * ab2 - ap2 * G_ap) * g_factor;
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 42 +, 77 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 217 +, 381 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ap1 * ab1 + ap2 * ab2 + ap0 * ab0;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(t0 * bp_bp);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -a_minus_b * ab_ap;
+  const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(2, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    F = delta_tau * M_flat[1] + tau_lo * M_flat[0];
+    G_ap = delta_tau * M_flat[4] + tau_lo * M_flat[3];
+    G_ab = M_flat[5] * delta_tau + tau_lo * M_flat[4];
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t4 = T(1) / bp_bp;
+    const T t5 = a_minus_b * t4;
+    const T t6 = t0 * ab_ap;
+    const T t7 = J_downward<T>(4, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t8 = t5 + t6 - T(2) * t7 * cross_cross;
+    const T t9 = T(1) / ab_ab;
+    F = (T(1) / T(2)) * (log_ratio - T(2) * t8 * t9 * ab_ap) * delta_tau * t9 - t8 * tau_lo * t9;
+    const T t10 = t4 - t0 - T(2) * t7 * ab_ap;
+    G_ap = t7 * tau_lo - (T(1) / T(2)) * delta_tau * t10 * t9;
+    G_ab = -(t8 * t9 + ap_ap * t7 + t10 * t9 * ab_ap) * delta_tau * t9 - (T(1) / T(2)) * tau_lo * t10 * t9;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t11 = sqrt(cross_cross);
+    const T t12 = T(1) / t11;
+    const T J2 = atan2(t11, ap_bp) * t12;
+    const T t13 = T(1) / ab_ab;
+    F = J2 * tau_lo + (T(1) / T(2)) * (log_ratio + T(2) * J2 * ab_ap) * delta_tau * t13;
+    const T t14 = T(1) / bp_bp;
+    const T t15 = a_minus_b * t14;
+    const T t16 = t0 * ab_ap;
+    const T t17 = t15 + J2 * ab_ab + t16;
+    const T t18 = T(1) / cross_cross;
+    const T t19 = t14 - t0 - t17 * t18 * ab_ap;
+    G_ap = (T(1) / T(2)) * t17 * t18 * tau_lo - (T(1) / T(2)) * t19 * delta_tau * t13;
+    G_ab = (T(1) / T(2)) * (T(2) * J2 - T(2) * t19 * t13 * ab_ap - t17 * ap_ap * t18) * delta_tau * t13 - (T(1) / T(2)) * t19 * tau_lo * t13;
+  }
+  const T t20 = in.sigma * in.sigma;
+  const T g_factor = -T(2) * t20 * length;
+  f = F * t20 * length;
+  grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
+  grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
+  grad[2] = -g_factor * (ab2 * G_ab - ap2 * G_ap);
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 35 +, 58 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 152 +, 291 ×, 22 /, 23 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap1 * ab1 + ap0 * ab0 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T X;
+  const T t0 = ab_ap * a_minus_b;
+  if (t0 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t1 = ab_ap * r1;
+    const T t2 = T(1) / cross_cross;
+    X = (t1 + a_minus_b * r0) * t2 * length;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t3 = ab_ap * r1;
+    X = (ab_ap - a_minus_b) * length / (t3 - a_minus_b * r0);
+  }
+  const T t4 = T(1) / length;
+  const T J1 = t4 * asinh(X);
+  T F;
+  const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t6 = -ab_ap * a_minus_b;
+  const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 3> M_flat;
+    segment_moments_gauss<T, 20>(3, 3, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t8 = delta_tau * delta_tau;
+    const T t9 = tau_lo * tau_lo;
+    F = t8 * M_flat[2] + M_flat[0] * t9 + T(2) * M_flat[1] * tau_lo * delta_tau;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
+    const T t10 = T(1) / r0;
+    const T t11 = J_downward<T>(3, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t12 = T(1) / r1;
+    const T t13 = t10 + ab_ap * t11 - t12;
+    const T t14 = T(1) / ab_ab;
+    const T t15 = delta_tau * delta_tau;
+    const T t16 = tau_lo * tau_lo;
+    F = T(2) * t13 * tau_lo * delta_tau * t14 + (T(2) * ab_ap * t13 * t14 + J1 - ap_ap * t11) * t15 * t14 + t11 * t16;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t17 = T(1) / r1;
+    const T t18 = T(1) / r0;
+    const T t19 = t17 * a_minus_b + ab_ap * t18;
+    const T t20 = tau_lo * tau_lo;
+    const T t21 = T(1) / cross_cross;
+    const T t22 = t18 + ab_ap * t19 * t21 - t17;
+    const T t23 = T(1) / ab_ab;
+    const T t24 = delta_tau * delta_tau;
+    F = t19 * t20 * t21 + T(2) * tau_lo * delta_tau * t22 * t23 + (T(2) * ab_ap * t22 * t23 + J1 - t19 * ap_ap * t21) * t24 * t23;
+  }
+  const T t25 = in.sigma * in.sigma;
+  const T t26 = t25 * in.sigma;
+  f = F * t26 * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 45 +, 95 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 176 +, 360 ×, 20 /, 23 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ap2 * ab2 + ab0 * ap0 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = ab0 * bp0 + bp1 * ab1 + bp2 * ab2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -ab_ap * a_minus_b;
+  const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(5, 5, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t3 = tau_lo * tau_lo;
+    const T t4 = delta_tau * delta_tau;
+    G_ap = T(2) * delta_tau * tau_lo * M_flat[1] + M_flat[0] * t3 + M_flat[2] * t4;
+    G_ab = M_flat[3] * t4 + t3 * M_flat[1] + T(2) * M_flat[2] * delta_tau * tau_lo;
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 4> M_beyond;
+    segment_moments_beyond_end<T>(5, 5, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    const T t5 = tau_lo * tau_lo;
+    const T t6 = delta_tau * delta_tau;
+    G_ap = T(2) * M_beyond[1] * delta_tau * tau_lo + t5 * M_beyond[0] + M_beyond[2] * t6;
+    G_ab = M_beyond[1] * t5 + T(2) * M_beyond[2] * delta_tau * tau_lo + t6 * M_beyond[3];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t7 = T(1) / r1;
+    const T t8 = t7 * t7;
+    const T t9 = T(1) / r0;
+    const T t10 = t9 * t9;
+    const T t11 = t7 * a_minus_b + ab_ap * t9;
+    const T t12 = T(1) / cross_cross;
+    const T t13 = t8 * t7 * a_minus_b + ab_ap * t9 * t10 + T(2) * t11 * t12 * ab_ab;
+    const T t14 = tau_lo * tau_lo;
+    const T t15 = t8 * t7 - t9 * t10 - t13 * ab_ap * t12;
+    const T t16 = T(1) / ab_ab;
+    const T t17 = t13 * ap_ap * t12 + T(2) * t15 * ab_ap * t16 - T(3) * t11 * t12;
+    const T t18 = delta_tau * delta_tau;
+    G_ap = (T(1) / T(3)) * t13 * t12 * t14 - (T(1) / T(3)) * t17 * t18 * t16 - (T(2) / T(3)) * t15 * delta_tau * tau_lo * t16;
+    G_ab = (T(1) / T(3)) * (T(3) * (ab_ap * t11 * t12 + t9 - t7) * t16 + t15 * ap_ap * t16 - T(2) * t17 * ab_ap * t16) * t18 * t16 - (T(1) / T(3)) * t15 * t14 * t16 - (T(2) / T(3)) * t17 * delta_tau * tau_lo * t16;
+  }
+  const T t19 = in.sigma * in.sigma;
+  const T t20 = t19 * in.sigma;
+  const T g_factor = -T(3) * length * t20;
+  grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
+  grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
+  grad[2] = g_factor * (ap2 * G_ap - G_ab * ab2);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 50 +, 116 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 259 +, 497 ×, 22 /, 23 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
+  const T ab_bp = ab1 * bp1 + ab2 * bp2 + bp0 * ab0;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T X;
+  const T t0 = ab_ap * a_minus_b;
+  if (t0 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t1 = T(1) / cross_cross;
+    const T t2 = r1 * ab_ap;
+    X = t1 * length * (t2 + r0 * a_minus_b);
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t3 = r1 * ab_ap;
+    X = length * (ab_ap - a_minus_b) / (t3 - r0 * a_minus_b);
+  }
+  const T t4 = T(1) / length;
+  const T J1 = asinh(X) * t4;
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t6 = -ab_ap * a_minus_b;
+  const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(3, 5, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t8 = tau_lo * tau_lo;
+    const T t9 = delta_tau * delta_tau;
+    F = t8 * M_flat[0] + M_flat[2] * t9 + T(2) * tau_lo * M_flat[1] * delta_tau;
+    G_ap = M_flat[6] * t9 + t8 * M_flat[4] + T(2) * tau_lo * M_flat[5] * delta_tau;
+    G_ab = T(2) * tau_lo * M_flat[6] * delta_tau + t8 * M_flat[5] + M_flat[7] * t9;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
+    const T t10 = tau_lo * tau_lo;
+    const T t11 = T(1) / ab_ab;
+    const T t12 = T(1) / r1;
+    const T t13 = t12 * t12;
+    const T t14 = t12 * t13 * a_minus_b;
+    const T t15 = T(1) / r0;
+    const T t16 = t15 * t15;
+    const T t17 = t15 * ab_ap * t16;
+    const T t18 = J_downward<T>(5, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t19 = t14 + t17 - T(3) * cross_cross * t18;
+    const T t20 = T(2) * t12 + t11 * t19 * ab_ap - T(2) * t15;
+    const T t21 = delta_tau * delta_tau;
+    F = -(T(1) / T(2)) * t10 * t11 * t19 - (T(1) / T(2)) * t11 * (T(2) * t11 * ab_ap * t20 - t11 * t19 * ap_ap - T(2) * J1) * t21 - tau_lo * t11 * t20 * delta_tau;
+    const T t22 = t12 * t13;
+    const T t23 = t22 - T(3) * ab_ap * t18 - t15 * t16;
+    const T t24 = T(3) * t11 * t19 + T(4) * t11 * t23 * ab_ap + T(6) * t18 * ap_ap;
+    G_ap = t10 * t18 - (T(2) / T(3)) * tau_lo * t11 * t23 * delta_tau - (T(1) / T(6)) * t11 * t24 * t21;
+    G_ab = -(T(1) / T(3)) * tau_lo * t11 * t24 * delta_tau - (T(1) / T(3)) * t10 * t11 * t23 - (T(1) / T(6)) * t11 * (T(2) * t11 * t24 * ab_ap + T(3) * t11 * t20 - T(2) * t11 * t23 * ap_ap) * t21;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t25 = T(1) / cross_cross;
+    const T t26 = tau_lo * tau_lo;
+    const T t27 = T(1) / r0;
+    const T t28 = T(1) / r1;
+    const T t29 = t27 * ab_ap + t28 * a_minus_b;
+    const T t30 = t28 - t25 * ab_ap * t29 - t27;
+    const T t31 = T(1) / ab_ab;
+    const T t32 = delta_tau * delta_tau;
+    F = t25 * t26 * t29 - T(2) * t30 * tau_lo * t31 * delta_tau - t31 * (T(2) * t30 * t31 * ab_ap + t25 * t29 * ap_ap - J1) * t32;
+    const T t33 = t28 * t28;
+    const T t34 = t28 * t33 * a_minus_b;
+    const T t35 = t27 * t27;
+    const T t36 = t27 * ab_ap * t35;
+    const T t37 = t34 + t36 + T(2) * t25 * ab_ab * t29;
+    const T t38 = t28 * t33;
+    const T t39 = t38 - t25 * ab_ap * t37 - t27 * t35;
+    const T t40 = t25 * t37 * ap_ap + T(2) * t31 * t39 * ab_ap - T(3) * t25 * t29;
+    G_ap = (T(1) / T(3)) * t25 * t26 * t37 - (T(1) / T(3)) * t40 * t31 * t32 - (T(2) / T(3)) * tau_lo * t31 * t39 * delta_tau;
+    G_ab = -(T(1) / T(3)) * t31 * (T(2) * t40 * t31 * ab_ap + T(3) * t30 * t31 - t31 * t39 * ap_ap) * t32 - (T(2) / T(3)) * t40 * tau_lo * t31 * delta_tau - (T(1) / T(3)) * t26 * t31 * t39;
+  }
+  const T t41 = in.sigma * in.sigma;
+  const T t42 = t41 * in.sigma;
+  const T g_factor = -T(3) * length * t42;
+  f = length * t42 * F;
+  grad[0] = (G_ap * ap0 - ab0 * G_ab) * g_factor;
+  grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
+  grad[2] = (G_ap * ap2 - ab2 * G_ab) * g_factor;
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 41 +, 75 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 174 +, 295 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = ab0 * bp0 + ab1 * bp1 + ab2 * bp2;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(bp_bp * t0);
+  T F;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -ab_ap * a_minus_b;
+  const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 4> M_flat;
+    segment_moments_gauss<T, 20>(4, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t4 = delta_tau * delta_tau;
+    const T t5 = tau_lo * tau_lo;
+    const T t6 = t5 * tau_lo;
+    const T t7 = t4 * delta_tau;
+    F = T(3) * t4 * tau_lo * M_flat[2] + M_flat[0] * t6 + T(3) * M_flat[1] * delta_tau * t5 + M_flat[3] * t7;
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = J_downward<T>(4, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t9 = tau_lo * tau_lo;
+    const T t10 = t9 * tau_lo;
+    const T t11 = T(1) / bp_bp;
+    const T t12 = T(2) * ab_ap * t8 + t0 - t11;
+    const T t13 = T(1) / ab_ab;
+    const T t14 = delta_tau * delta_tau;
+    const T t15 = t14 * delta_tau;
+    const T t16 = T(2) * t8 * cross_cross - t11 * a_minus_b - ab_ap * t0;
+    const T t17 = ap_ap * t8 - t16 * t13 - ab_ap * t12 * t13;
+    F = t8 * t10 + (T(3) / T(2)) * delta_tau * t9 * t12 * t13 + (T(1) / T(2)) * t15 * ((log_ratio + T(2) * t16 * ab_ap * t13) * t13 - ap_ap * t12 * t13 - T(4) * ab_ap * t17 * t13) * t13 - T(3) * t17 * t14 * tau_lo * t13;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t18 = sqrt(cross_cross);
+    const T t19 = T(1) / t18;
+    const T J2 = atan2(t18, ap_bp) * t19;
+    const T t20 = T(1) / bp_bp;
+    const T t21 = J2 * ab_ab + t20 * a_minus_b + ab_ap * t0;
+    const T t22 = T(1) / cross_cross;
+    const T t23 = ab_ap * t21 * t22 + t0 - t20;
+    const T t24 = tau_lo * tau_lo;
+    const T t25 = T(1) / ab_ab;
+    const T t26 = T(2) * ab_ap * t23 * t25 + T(2) * J2 - t21 * ap_ap * t22;
+    const T t27 = delta_tau * delta_tau;
+    const T t28 = t27 * delta_tau;
+    const T t29 = t24 * tau_lo;
+    F = (T(3) / T(2)) * delta_tau * t23 * t24 * t25 + (T(3) / T(2)) * t26 * t27 * tau_lo * t25 + (T(1) / T(2)) * ((log_ratio + T(2) * ab_ap * J2) * t25 + T(2) * t26 * ab_ap * t25 - ap_ap * t23 * t25) * t28 * t25 + (T(1) / T(2)) * t21 * t22 * t29;
+  }
+  const T t30 = in.sigma * in.sigma;
+  const T t31 = t30 * t30;
+  f = length * F * t31;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 54 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 200 +, 352 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab2 * ap2 + ab1 * ap1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
+  const T ap_bp = bp1 * ap1 + bp0 * ap0 + bp2 * ap2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 5> M_flat;
+    segment_moments_gauss<T, 20>(6, 6, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t3 = tau_lo * tau_lo;
+    const T t4 = delta_tau * delta_tau;
+    const T t5 = t4 * delta_tau;
+    const T t6 = t3 * tau_lo;
+    G_ap = T(3) * delta_tau * t3 * M_flat[1] + T(3) * t4 * tau_lo * M_flat[2] + t5 * M_flat[3] + M_flat[0] * t6;
+    G_ab = T(3) * t4 * tau_lo * M_flat[3] + t6 * M_flat[1] + T(3) * delta_tau * t3 * M_flat[2] + t5 * M_flat[4];
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 5> M_beyond;
+    segment_moments_beyond_end<T>(6, 6, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    const T t7 = delta_tau * delta_tau;
+    const T t8 = tau_lo * tau_lo;
+    const T t9 = t7 * delta_tau;
+    const T t10 = t8 * tau_lo;
+    G_ap = T(3) * t7 * tau_lo * M_beyond[2] + T(3) * M_beyond[1] * delta_tau * t8 + t9 * M_beyond[3] + t10 * M_beyond[0];
+    G_ab = M_beyond[4] * t9 + T(3) * delta_tau * t8 * M_beyond[2] + M_beyond[1] * t10 + T(3) * t7 * tau_lo * M_beyond[3];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t11 = sqrt(cross_cross);
+    const T t12 = T(1) / t11;
+    const T J2 = t12 * atan2(t11, ap_bp);
+    const T t13 = T(1) / cross_cross;
+    const T t14 = tau_lo * tau_lo;
+    const T t15 = t14 * tau_lo;
+    const T t16 = T(1) / bp_bp;
+    const T t17 = t16 * t16;
+    const T t18 = T(1) / ap_ap;
+    const T t19 = ab_ab * J2 + t18 * ab_ap + a_minus_b * t16;
+    const T t20 = t18 * t18;
+    const T t21 = T(2) * a_minus_b * t17 + T(3) * t13 * ab_ab * t19 + T(2) * t20 * ab_ap;
+    const T t22 = delta_tau * delta_tau;
+    const T t23 = T(1) / ab_ab;
+    const T t24 = T(2) * t20 + t13 * t21 * ab_ap - T(2) * t17;
+    const T t25 = T(2) * t23 * t24 * ab_ap + T(4) * t13 * t19 - ap_ap * t13 * t21;
+    const T t26 = t22 * delta_tau;
+    const T t27 = t16 - t18 - t13 * t19 * ab_ap;
+    const T t28 = T(4) * t23 * t27 + ap_ap * t23 * t24 - T(2) * t25 * t23 * ab_ap;
+    G_ap = (T(1) / T(8)) * t13 * t15 * t21 + (T(3) / T(8)) * t22 * tau_lo * t25 * t23 + (T(3) / T(8)) * delta_tau * t14 * t23 * t24 - (T(1) / T(8)) * t26 * t28 * t23;
+    G_ab = (T(3) / T(8)) * delta_tau * t14 * t25 * t23 + (T(1) / T(8)) * t15 * t23 * t24 - (T(1) / T(8)) * (T(4) * t23 * (ap_ap * t13 * t19 + T(2) * t23 * t27 * ab_ap - T(2) * J2) + ap_ap * t25 * t23 + T(2) * t28 * t23 * ab_ap) * t26 * t23 - (T(3) / T(8)) * t22 * t28 * tau_lo * t23;
+  }
+  const T t29 = in.sigma * in.sigma;
+  const T t30 = t29 * t29;
+  const T g_factor = -T(4) * length * t30;
+  grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = -g_factor * (G_ab * ab2 - ap2 * G_ap);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 60 +, 148 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 303 +, 508 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
+  const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(t0 * bp_bp);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -ab_ap * a_minus_b;
+  const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(4, 6, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t4 = tau_lo * tau_lo;
+    const T t5 = t4 * tau_lo;
+    const T t6 = delta_tau * delta_tau;
+    const T t7 = t6 * delta_tau;
+    F = t5 * M_flat[0] + t7 * M_flat[3] + T(3) * delta_tau * t4 * M_flat[1] + T(3) * M_flat[2] * t6 * tau_lo;
+    G_ap = t7 * M_flat[8] + M_flat[5] * t5 + T(3) * delta_tau * M_flat[6] * t4 + T(3) * t6 * tau_lo * M_flat[7];
+    G_ab = T(3) * t6 * tau_lo * M_flat[8] + t7 * M_flat[9] + M_flat[6] * t5 + T(3) * delta_tau * t4 * M_flat[7];
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
+    const T t8 = T(1) / ab_ab;
+    const T t9 = T(1) / bp_bp;
+    const T t10 = t9 * t9;
+    const T t11 = t0 * t0;
+    const T t12 = J_downward<T>(6, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t13 = t10 * a_minus_b + t11 * ab_ap - T(4) * cross_cross * t12;
+    const T t14 = T(3) * t0 - T(2) * t8 * t13 * ab_ap - T(3) * t9;
+    const T t15 = tau_lo * tau_lo;
+    const T t16 = delta_tau * delta_tau;
+    const T t17 = t16 * delta_tau;
+    const T t18 = T(3) * t0 * ab_ap + T(2) * cross_cross * t8 * t13 + T(3) * t9 * a_minus_b;
+    const T t19 = t14 * t8 * ab_ap + ap_ap * t8 * t13 - t8 * t18;
+    const T t20 = t15 * tau_lo;
+    F = (T(1) / T(2)) * t14 * delta_tau * t15 * t8 + (T(1) / T(6)) * t17 * (T(4) * t8 * t19 * ab_ap - ap_ap * t14 * t8 - t8 * (T(2) * t8 * t18 * ab_ap - T(3) * log_ratio)) * t8 + t16 * tau_lo * t8 * t19 - (T(1) / T(3)) * t20 * t8 * t13;
+    const T t21 = t10 - t11 - T(4) * t12 * ab_ap;
+    const T t22 = T(2) * t8 * t13 + T(6) * ap_ap * t12 + T(3) * t21 * t8 * ab_ap;
+    const T t23 = T(4) * t22 * t8 * ab_ap - T(3) * ap_ap * t21 * t8 - T(2) * t14 * t8;
+    G_ap = t20 * t12 - (T(3) / T(4)) * t21 * delta_tau * t15 * t8 - (T(1) / T(12)) * t23 * t17 * t8 - (T(1) / T(2)) * t16 * tau_lo * t22 * t8;
+    G_ab = (T(1) / T(6)) * t17 * t8 * (ap_ap * t22 * t8 + T(2) * t8 * t19 - t23 * t8 * ab_ap) - (T(1) / T(2)) * delta_tau * t15 * t22 * t8 - (T(1) / T(4)) * t23 * t16 * tau_lo * t8 - (T(1) / T(4)) * t21 * t20 * t8;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t24 = sqrt(cross_cross);
+    const T t25 = T(1) / t24;
+    const T J2 = atan2(t24, ap_bp) * t25;
+    const T t26 = T(1) / cross_cross;
+    const T t27 = T(1) / bp_bp;
+    const T t28 = t0 * ab_ap + ab_ab * J2 + t27 * a_minus_b;
+    const T t29 = t26 * ab_ap * t28 + t0 - t27;
+    const T t30 = tau_lo * tau_lo;
+    const T t31 = T(1) / ab_ab;
+    const T t32 = delta_tau * delta_tau;
+    const T t33 = t32 * delta_tau;
+    const T t34 = ap_ap * t26 * t28 - T(2) * t29 * t31 * ab_ap - T(2) * J2;
+    const T t35 = t30 * tau_lo;
+    F = (T(3) / T(2)) * delta_tau * t29 * t30 * t31 + (T(1) / T(2)) * t33 * t31 * ((log_ratio + T(2) * ab_ap * J2) * t31 - T(2) * t34 * t31 * ab_ap - ap_ap * t29 * t31) + (T(1) / T(2)) * t26 * t35 * t28 - (T(3) / T(2)) * t32 * tau_lo * t34 * t31;
+    const T t36 = t27 * t27;
+    const T t37 = t0 * t0;
+    const T t38 = T(2) * t36 * a_minus_b + T(2) * t37 * ab_ap + T(3) * t26 * ab_ab * t28;
+    const T t39 = T(2) * t36 - T(2) * t37 - t38 * t26 * ab_ap;
+    const T t40 = T(4) * t26 * t28 - T(2) * t39 * t31 * ab_ap - t38 * ap_ap * t26;
+    const T t41 = ap_ap * t39 * t31 + T(2) * t40 * t31 * ab_ap + T(4) * t29 * t31;
+    G_ap = (T(3) / T(8)) * t40 * t32 * tau_lo * t31 + (T(1) / T(8)) * t38 * t26 * t35 + (T(1) / T(8)) * t33 * t31 * t41 - (T(3) / T(8)) * t39 * delta_tau * t30 * t31;
+    G_ab = (T(3) / T(8)) * t40 * delta_tau * t30 * t31 + (T(1) / T(8)) * (T(2) * t31 * ab_ap * t41 - t40 * ap_ap * t31 - T(4) * t34 * t31) * t33 * t31 + (T(3) / T(8)) * t32 * tau_lo * t31 * t41 - (T(1) / T(8)) * t39 * t35 * t31;
+  }
+  const T t42 = in.sigma * in.sigma;
+  const T t43 = t42 * t42;
+  const T g_factor = -T(4) * length * t43;
+  f = length * F * t43;
+  grad[0] = -g_factor * (ab0 * G_ab - G_ap * ap0);
+  grad[1] = -(ab1 * G_ab - G_ap * ap1) * g_factor;
+  grad[2] = -(ab2 * G_ab - G_ap * ap2) * g_factor;
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 47 +, 107 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 194 +, 384 ×, 22 /, 23 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T X;
+  const T t0 = ab_ap * a_minus_b;
+  if (t0 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t1 = a_minus_b * r0;
+    const T t2 = T(1) / cross_cross;
+    X = (t1 + ab_ap * r1) * t2 * length;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t3 = a_minus_b * r0;
+    X = -(ab_ap - a_minus_b) * length / (t3 - ab_ap * r1);
+  }
+  const T t4 = T(1) / length;
+  const T J1 = asinh(X) * t4;
+  T F;
+  const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t6 = -ab_ap * a_minus_b;
+  const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 5> M_flat;
+    segment_moments_gauss<T, 20>(5, 5, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t8 = delta_tau * delta_tau;
+    const T t9 = t8 * t8;
+    const T t10 = tau_lo * tau_lo;
+    const T t11 = t10 * t10;
+    const T t12 = t8 * delta_tau;
+    const T t13 = t10 * tau_lo;
+    F = M_flat[4] * t9 + M_flat[0] * t11 + T(4) * M_flat[3] * t12 * tau_lo + T(4) * M_flat[1] * delta_tau * t13 + T(6) * t8 * t10 * M_flat[2];
+  } else if (t6 >= T(0) && t7 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
+    const T t14 = J_downward<T>(5, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t15 = T(1) / r1;
+    const T t16 = t15 * t15;
+    const T t17 = T(1) / r0;
+    const T t18 = t17 * t17;
+    const T t19 = T(3) * t14 * cross_cross - t15 * a_minus_b * t16 - ab_ap * t18 * t17;
+    const T t20 = T(1) / ab_ab;
+    const T t21 = t18 * t17;
+    const T t22 = T(3) * ab_ap * t14 + t21 - t15 * t16;
+    const T t23 = T(3) * t19 * t20 + T(4) * ab_ap * t22 * t20 - T(6) * ap_ap * t14;
+    const T t24 = delta_tau * delta_tau;
+    const T t25 = tau_lo * tau_lo;
+    const T t26 = t25 * tau_lo;
+    const T t27 = t25 * t25;
+    const T t28 = t24 * t24;
+    const T t29 = T(2) * t17 + ab_ap * t19 * t20 - T(2) * t15;
+    const T t30 = T(2) * ap_ap * t22 * t20 - T(2) * ab_ap * t23 * t20 - T(3) * t29 * t20;
+    const T t31 = t24 * delta_tau;
+    F = t23 * t24 * t25 * t20 + (T(4) / T(3)) * delta_tau * t26 * t22 * t20 + t14 * t27 - (T(1) / T(6)) * t28 * (ap_ap * t23 * t20 + T(2) * ab_ap * t30 * t20 - T(3) * t20 * (T(2) * ab_ap * t29 * t20 + T(2) * J1 - t19 * ap_ap * t20)) * t20 - (T(2) / T(3)) * t30 * t31 * tau_lo * t20;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t32 = T(1) / r1;
+    const T t33 = t32 * t32;
+    const T t34 = T(1) / r0;
+    const T t35 = t32 * a_minus_b + ab_ap * t34;
+    const T t36 = T(1) / cross_cross;
+    const T t37 = t34 * t34;
+    const T t38 = t32 * a_minus_b * t33 + T(2) * t35 * t36 * ab_ab + ab_ap * t37 * t34;
+    const T t39 = tau_lo * tau_lo;
+    const T t40 = t39 * t39;
+    const T t41 = delta_tau * delta_tau;
+    const T t42 = t41 * delta_tau;
+    const T t43 = T(1) / ab_ab;
+    const T t44 = t37 * t34;
+    const T t45 = ab_ap * t38 * t36 + t44 - t32 * t33;
+    const T t46 = T(3) * t35 * t36 + T(2) * ab_ap * t43 * t45 - ap_ap * t38 * t36;
+    const T t47 = t34 + t35 * ab_ap * t36 - t32;
+    const T t48 = T(2) * ab_ap * t46 * t43 + T(3) * t43 * t47 - ap_ap * t43 * t45;
+    const T t49 = t39 * tau_lo;
+    const T t50 = t41 * t41;
+    F = (T(1) / T(3)) * t38 * t36 * t40 + (T(4) / T(3)) * t42 * tau_lo * t43 * t48 + T(2) * t46 * t41 * t39 * t43 + (T(4) / T(3)) * delta_tau * t49 * t43 * t45 - (T(1) / T(3)) * t50 * t43 * (T(3) * (t35 * ap_ap * t36 - T(2) * ab_ap * t43 * t47 - J1) * t43 + t46 * ap_ap * t43 - T(2) * ab_ap * t43 * t48);
+  }
+  const T t51 = in.sigma * in.sigma;
+  const T t52 = t51 * t51;
+  const T t53 = t52 * in.sigma;
+  f = F * t53 * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 61 +, 161 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 220 +, 459 ×, 20 /, 23 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(7, 7, 5, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t3 = delta_tau * delta_tau;
+    const T t4 = t3 * delta_tau;
+    const T t5 = tau_lo * tau_lo;
+    const T t6 = t5 * tau_lo;
+    const T t7 = t5 * t5;
+    const T t8 = t3 * t3;
+    G_ap = T(4) * M_flat[3] * t4 * tau_lo + T(4) * M_flat[1] * delta_tau * t6 + M_flat[0] * t7 + T(6) * M_flat[2] * t3 * t5 + t8 * M_flat[4];
+    G_ab = T(4) * M_flat[2] * delta_tau * t6 + T(6) * M_flat[3] * t3 * t5 + M_flat[1] * t7 + M_flat[5] * t8 + T(4) * t4 * tau_lo * M_flat[4];
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 6> M_beyond;
+    segment_moments_beyond_end<T>(7, 7, 5, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    const T t9 = delta_tau * delta_tau;
+    const T t10 = tau_lo * tau_lo;
+    const T t11 = t10 * tau_lo;
+    const T t12 = t10 * t10;
+    const T t13 = t9 * delta_tau;
+    const T t14 = t9 * t9;
+    G_ap = T(6) * M_beyond[2] * t9 * t10 + T(4) * delta_tau * M_beyond[1] * t11 + M_beyond[0] * t12 + T(4) * M_beyond[3] * t13 * tau_lo + t14 * M_beyond[4];
+    G_ab = M_beyond[1] * t12 + T(6) * M_beyond[3] * t9 * t10 + T(4) * M_beyond[2] * delta_tau * t11 + T(4) * t13 * tau_lo * M_beyond[4] + M_beyond[5] * t14;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t15 = T(1) / ab_ab;
+    const T t16 = T(1) / r0;
+    const T t17 = T(1) / r1;
+    const T t18 = ab_ap * t16 + a_minus_b * t17;
+    const T t19 = T(1) / cross_cross;
+    const T t20 = t17 * t17;
+    const T t21 = t16 * t16;
+    const T t22 = a_minus_b * t20 * t17 + ab_ap * t16 * t21 + T(2) * ab_ab * t18 * t19;
+    const T t23 = t20 * t17 - ab_ap * t22 * t19 - t16 * t21;
+    const T t24 = T(3) * t18 * t19 - t22 * ap_ap * t19 - T(2) * t15 * ab_ap * t23;
+    const T t25 = t21 * t21;
+    const T t26 = t20 * t20;
+    const T t27 = T(4) * ab_ab * t22 * t19 + T(3) * ab_ap * t16 * t25 + T(3) * a_minus_b * t26 * t17;
+    const T t28 = T(3) * t16 * t25 + ab_ap * t27 * t19 - T(3) * t26 * t17;
+    const T t29 = t27 * ap_ap * t19 - T(5) * t22 * t19 - T(2) * t15 * ab_ap * t28;
+    const T t30 = t15 * ap_ap * t28 + T(5) * t15 * t23 + T(2) * t15 * ab_ap * t29;
+    const T t31 = T(5) * t15 * t24 + t15 * t29 * ap_ap - T(2) * t15 * t30 * ab_ap;
+    const T t32 = delta_tau * delta_tau;
+    const T t33 = t32 * t32;
+    const T t34 = tau_lo * tau_lo;
+    const T t35 = t34 * tau_lo;
+    const T t36 = t34 * t34;
+    const T t37 = t32 * delta_tau;
+    G_ap = (T(1) / T(15)) * t15 * t31 * t33 + (T(4) / T(15)) * t15 * delta_tau * t35 * t28 + (T(1) / T(15)) * t27 * t19 * t36 - (T(2) / T(5)) * t15 * t29 * t32 * t34 - (T(4) / T(15)) * t15 * t30 * t37 * tau_lo;
+    G_ab = (T(4) / T(15)) * t15 * t31 * t37 * tau_lo + (T(1) / T(15)) * t15 * t36 * t28 + (T(1) / T(15)) * t15 * (T(2) * t15 * ab_ap * t31 + t15 * t30 * ap_ap + T(5) * (T(2) * t15 * ab_ap * t24 + t15 * ap_ap * t23 - T(3) * t15 * (t17 - t16 - t18 * ab_ap * t19)) * t15) * t33 - (T(4) / T(15)) * t15 * t29 * delta_tau * t35 - (T(2) / T(5)) * t15 * t30 * t32 * t34;
+  }
+  const T t38 = in.sigma * in.sigma;
+  const T t39 = t38 * t38;
+  const T t40 = t39 * in.sigma;
+  const T g_factor = -T(5) * length * t40;
+  grad[0] = -g_factor * (ab0 * G_ab - ap0 * G_ap);
+  grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
+  grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 70 +, 199 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 345 +, 644 ×, 22 /, 23 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ap2 * ab2 + ab1 * ap1 + ap0 * ab0;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ap2 * ab1 - ab2 * ap1;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T X;
+  const T t0 = a_minus_b * ab_ap;
+  if (t0 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t1 = T(1) / cross_cross;
+    const T t2 = r1 * ab_ap;
+    X = t1 * length * (t2 + a_minus_b * r0);
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t3 = r1 * ab_ap;
+    X = -length * (a_minus_b - ab_ap) / (t3 - a_minus_b * r0);
+  }
+  const T t4 = T(1) / length;
+  const T J1 = asinh(X) * t4;
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t6 = -a_minus_b * ab_ap;
+  const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 12> M_flat;
+    segment_moments_gauss<T, 20>(5, 7, 5, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t8 = tau_lo * tau_lo;
+    const T t9 = t8 * tau_lo;
+    const T t10 = t8 * t8;
+    const T t11 = delta_tau * delta_tau;
+    const T t12 = t11 * delta_tau;
+    const T t13 = t11 * t11;
+    F = T(4) * delta_tau * t9 * M_flat[1] + t10 * M_flat[0] + T(4) * t12 * tau_lo * M_flat[3] + t13 * M_flat[4] + T(6) * M_flat[2] * t11 * t8;
+    G_ap = T(4) * delta_tau * t9 * M_flat[7] + T(4) * t12 * tau_lo * M_flat[9] + t13 * M_flat[10] + M_flat[6] * t10 + T(6) * M_flat[8] * t11 * t8;
+    G_ab = T(4) * M_flat[8] * delta_tau * t9 + T(6) * t11 * t8 * M_flat[9] + M_flat[11] * t13 + t10 * M_flat[7] + T(4) * t12 * tau_lo * M_flat[10];
+  } else if (t6 >= T(0) && t7 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_7 = J_downward(…)
+    const T t14 = delta_tau * delta_tau;
+    const T t15 = t14 * t14;
+    const T t16 = T(1) / ab_ab;
+    const T t17 = T(1) / r1;
+    const T t18 = t17 * t17;
+    const T t19 = t18 * t18;
+    const T t20 = T(1) / r0;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * t21;
+    const T t23 = -ab_ap;
+    const T t24 = J_downward<T>(7, ab_ab, cross_cross, t23, ap_ap, a_minus_b, bp_bp);
+    const T t25 = a_minus_b * t17 * t19 + t22 * t20 * ab_ap - T(5) * cross_cross * t24;
+    const T t26 = T(3) * cross_cross * t16 * t25 + T(4) * t21 * t20 * ab_ap + T(4) * a_minus_b * t17 * t18;
+    const T t27 = T(4) * t17 * t18 + T(3) * t16 * t25 * ab_ap - T(4) * t21 * t20;
+    const T t28 = T(3) * t26 * t16 + T(4) * t27 * t16 * ab_ap - T(6) * ap_ap * t16 * t25;
+    const T t29 = t26 * t16 * ab_ap + T(8) * t17 - T(8) * t20;
+    const T t30 = T(2) * t16 * ab_ap * t28 + T(3) * t16 * t29 - T(2) * ap_ap * t27 * t16;
+    const T t31 = t14 * delta_tau;
+    const T t32 = tau_lo * tau_lo;
+    const T t33 = t32 * t32;
+    const T t34 = t32 * tau_lo;
+    F = (T(1) / T(24)) * t15 * t16 * (ap_ap * t16 * t28 + T(3) * t16 * (ap_ap * t26 * t16 + T(8) * J1 - T(2) * t16 * t29 * ab_ap) - T(2) * t16 * t30 * ab_ap) - (T(1) / T(6)) * t31 * tau_lo * t16 * t30 - (T(1) / T(4)) * t33 * t16 * t25 - (T(1) / T(3)) * delta_tau * t34 * t27 * t16 - (T(1) / T(4)) * t14 * t32 * t16 * t28;
+    const T t35 = t22 * t20 + T(5) * t24 * ab_ap - t17 * t19;
+    const T t36 = T(8) * t16 * ab_ap * t35 - T(5) * t16 * t25 - T(20) * ap_ap * t24;
+    const T t37 = T(5) * t27 * t16 + T(12) * ap_ap * t16 * t35 - T(6) * t36 * t16 * ab_ap;
+    const T t38 = T(6) * t36 * ap_ap * t16 + T(5) * t16 * t28 + T(4) * t37 * t16 * ab_ap;
+    G_ap = (T(3) / T(10)) * t36 * t14 * t32 * t16 + (T(4) / T(5)) * delta_tau * t34 * t16 * t35 + t33 * t24 - (T(1) / T(120)) * t15 * t38 * t16 - (T(1) / T(15)) * t37 * t31 * tau_lo * t16;
+    G_ab = (T(1) / T(5)) * t33 * t16 * t35 + (T(1) / T(5)) * t36 * delta_tau * t34 * t16 - (T(1) / T(120)) * t15 * t16 * (T(2) * t38 * t16 * ab_ap + T(5) * t16 * t30 - T(2) * t37 * ap_ap * t16) - (T(1) / T(30)) * t31 * tau_lo * t38 * t16 - (T(1) / T(10)) * t37 * t14 * t32 * t16;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t39 = delta_tau * delta_tau;
+    const T t40 = t39 * delta_tau;
+    const T t41 = T(1) / ab_ab;
+    const T t42 = T(1) / r1;
+    const T t43 = t42 * t42;
+    const T t44 = T(1) / r0;
+    const T t45 = a_minus_b * t42 + t44 * ab_ap;
+    const T t46 = T(1) / cross_cross;
+    const T t47 = t44 * t44;
+    const T t48 = T(2) * t45 * t46 * ab_ab + t47 * t44 * ab_ap + a_minus_b * t42 * t43;
+    const T t49 = t42 * t43 - t48 * t46 * ab_ap - t47 * t44;
+    const T t50 = t44 + t45 * t46 * ab_ap - t42;
+    const T t51 = t48 * ap_ap * t46 + T(2) * t49 * t41 * ab_ap - T(3) * t45 * t46;
+    const T t52 = t49 * ap_ap * t41 + T(3) * t50 * t41 - T(2) * t51 * t41 * ab_ap;
+    const T t53 = tau_lo * tau_lo;
+    const T t54 = t53 * t53;
+    const T t55 = t53 * tau_lo;
+    const T t56 = t39 * t39;
+    F = (T(4) / T(3)) * t40 * tau_lo * t41 * t52 + (T(1) / T(3)) * t48 * t46 * t54 - T(2) * t39 * t51 * t53 * t41 - (T(4) / T(3)) * t49 * delta_tau * t55 * t41 - (T(1) / T(3)) * t56 * t41 * (T(3) * (t45 * ap_ap * t46 - J1 - T(2) * t50 * t41 * ab_ap) * t41 - ap_ap * t51 * t41 - T(2) * t41 * ab_ap * t52);
+    const T t57 = t43 * t43;
+    const T t58 = t47 * t47;
+    const T t59 = T(4) * t48 * t46 * ab_ab + T(3) * a_minus_b * t42 * t57 + T(3) * t58 * t44 * ab_ap;
+    const T t60 = t59 * t46 * ab_ap + T(3) * t58 * t44 - T(3) * t42 * t57;
+    const T t61 = T(2) * t60 * t41 * ab_ap + T(5) * t48 * t46 - t59 * ap_ap * t46;
+    const T t62 = T(2) * t61 * t41 * ab_ap - T(5) * t49 * t41 - ap_ap * t60 * t41;
+    const T t63 = T(5) * t51 * t41 + ap_ap * t61 * t41 - T(2) * t62 * t41 * ab_ap;
+    G_ap = (T(2) / T(5)) * t61 * t39 * t53 * t41 + (T(1) / T(15)) * t59 * t46 * t54 + (T(4) / T(15)) * t62 * t40 * tau_lo * t41 + (T(4) / T(15)) * t60 * delta_tau * t55 * t41 - (T(1) / T(15)) * t56 * t41 * t63;
+    G_ab = (T(2) / T(5)) * t62 * t39 * t53 * t41 + (T(1) / T(15)) * t60 * t54 * t41 + (T(4) / T(15)) * t61 * delta_tau * t55 * t41 - (T(4) / T(15)) * t40 * tau_lo * t41 * t63 - (T(1) / T(15)) * (T(2) * t41 * ab_ap * t63 + t62 * ap_ap * t41 - T(5) * t41 * t52) * t56 * t41;
+  }
+  const T t64 = in.sigma * in.sigma;
+  const T t65 = t64 * t64;
+  const T t66 = t65 * in.sigma;
+  const T g_factor = -T(5) * t66 * length;
+  f = F * t66 * length;
+  grad[0] = -g_factor * (ab0 * G_ab - ap0 * G_ap);
+  grad[1] = (G_ap * ap1 - ab1 * G_ab) * g_factor;
+  grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 55 +, 129 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 216 +, 368 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ap2 * ab2 + ap0 * ab0;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ap2 * ab1 - ab2 * ap1;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T ap_bp = ap2 * bp2 + ap0 * bp0 + bp1 * ap1;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(t0 * bp_bp);
+  T F;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -a_minus_b * ab_ap;
+  const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 6> M_flat;
+    segment_moments_gauss<T, 20>(6, 6, 5, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t4 = tau_lo * tau_lo;
+    const T t5 = t4 * t4;
+    const T t6 = delta_tau * delta_tau;
+    const T t7 = t6 * delta_tau;
+    const T t8 = t5 * tau_lo;
+    const T t9 = t6 * t6;
+    const T t10 = t9 * delta_tau;
+    const T t11 = t4 * tau_lo;
+    F = T(5) * M_flat[1] * delta_tau * t5 + T(10) * t7 * t4 * M_flat[3] + M_flat[0] * t8 + t10 * M_flat[5] + T(5) * M_flat[4] * t9 * tau_lo + T(10) * t6 * t11 * M_flat[2];
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
+    const T t12 = tau_lo * tau_lo;
+    const T t13 = t12 * t12;
+    const T t14 = T(1) / ab_ab;
+    const T t15 = t0 * t0;
+    const T t16 = J_downward<T>(6, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t17 = T(1) / bp_bp;
+    const T t18 = t17 * t17;
+    const T t19 = t15 + T(4) * t16 * ab_ap - t18;
+    const T t20 = delta_tau * delta_tau;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * delta_tau;
+    const T t23 = T(4) * cross_cross * t16 - t15 * ab_ap - a_minus_b * t18;
+    const T t24 = T(3) * t17 - T(3) * t0 - T(2) * t23 * t14 * ab_ap;
+    const T t25 = T(3) * t14 * t19 * ab_ap + T(2) * t23 * t14 - T(6) * ap_ap * t16;
+    const T t26 = T(3) * ap_ap * t14 * t19 + T(2) * t24 * t14 - T(4) * t14 * t25 * ab_ap;
+    const T t27 = T(3) * a_minus_b * t17 + T(3) * t0 * ab_ap - T(2) * t23 * cross_cross * t14;
+    const T t28 = t24 * t14 * ab_ap + t27 * t14 + ap_ap * t23 * t14;
+    const T t29 = t26 * t14 * ab_ap + T(2) * t28 * t14 + ap_ap * t14 * t25;
+    const T t30 = t12 * tau_lo;
+    const T t31 = t13 * tau_lo;
+    const T t32 = t20 * delta_tau;
+    F = (T(5) / T(4)) * delta_tau * t13 * t14 * t19 + (T(1) / T(12)) * t22 * (t26 * ap_ap * t14 - T(2) * (T(4) * t28 * t14 * ab_ap - (T(3) * log_ratio - T(2) * t27 * t14 * ab_ap) * t14 - t24 * ap_ap * t14) * t14 - T(4) * t29 * t14 * ab_ap) * t14 + (T(5) / T(3)) * t20 * t30 * t14 * t25 + t31 * t16 - (T(5) / T(6)) * t29 * t21 * tau_lo * t14 - (T(5) / T(6)) * t26 * t32 * t12 * t14;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t33 = sqrt(cross_cross);
+    const T t34 = T(1) / t33;
+    const T J2 = atan2(t33, ap_bp) * t34;
+    const T t35 = T(1) / cross_cross;
+    const T t36 = tau_lo * tau_lo;
+    const T t37 = t36 * t36;
+    const T t38 = t37 * tau_lo;
+    const T t39 = T(1) / bp_bp;
+    const T t40 = a_minus_b * t39 + t0 * ab_ap + J2 * ab_ab;
+    const T t41 = t0 * t0;
+    const T t42 = t39 * t39;
+    const T t43 = T(3) * t40 * t35 * ab_ab + T(2) * t41 * ab_ap + T(2) * a_minus_b * t42;
+    const T t44 = T(2) * t41 + t35 * t43 * ab_ap - T(2) * t42;
+    const T t45 = T(1) / ab_ab;
+    const T t46 = T(4) * t40 * t35 + T(2) * t44 * t45 * ab_ap - ap_ap * t35 * t43;
+    const T t47 = delta_tau * delta_tau;
+    const T t48 = t36 * tau_lo;
+    const T t49 = t47 * t47;
+    const T t50 = t49 * delta_tau;
+    const T t51 = t39 - t0 - t40 * t35 * ab_ap;
+    const T t52 = T(4) * t51 * t45 + t44 * ap_ap * t45 - T(2) * t46 * t45 * ab_ap;
+    const T t53 = t40 * ap_ap * t35 + T(2) * t51 * t45 * ab_ap - T(2) * J2;
+    const T t54 = T(4) * t53 * t45 + t46 * ap_ap * t45 + T(2) * t52 * t45 * ab_ap;
+    const T t55 = t47 * delta_tau;
+    F = (T(1) / T(8)) * t35 * t38 * t43 + (T(5) / T(4)) * t46 * t47 * t48 * t45 + (T(1) / T(8)) * t50 * (t52 * ap_ap * t45 + T(4) * ((T(2) * J2 * ab_ap + log_ratio) * t45 + t51 * ap_ap * t45 - T(2) * t53 * t45 * ab_ap) * t45 - T(2) * t54 * t45 * ab_ap) * t45 + (T(5) / T(8)) * t44 * delta_tau * t37 * t45 - (T(5) / T(8)) * t49 * t54 * tau_lo * t45 - (T(5) / T(4)) * t52 * t55 * t36 * t45;
+  }
+  const T t56 = in.sigma * in.sigma;
+  const T t57 = t56 * in.sigma;
+  const T t58 = t57 * t57;
+  f = F * t58 * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 72 +, 192 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 244 +, 431 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap1 * ab1 + ap0 * ab0 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
+  const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 7> M_flat;
+    segment_moments_gauss<T, 20>(8, 8, 6, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t3 = delta_tau * delta_tau;
+    const T t4 = t3 * t3;
+    const T t5 = tau_lo * tau_lo;
+    const T t6 = t5 * tau_lo;
+    const T t7 = t3 * delta_tau;
+    const T t8 = t4 * delta_tau;
+    const T t9 = t5 * t5;
+    const T t10 = t9 * tau_lo;
+    G_ap = T(5) * t4 * tau_lo * M_flat[4] + T(10) * t3 * t6 * M_flat[2] + T(10) * M_flat[3] * t7 * t5 + M_flat[5] * t8 + T(5) * delta_tau * t9 * M_flat[1] + M_flat[0] * t10;
+    G_ab = T(5) * delta_tau * t9 * M_flat[2] + T(10) * t7 * t5 * M_flat[4] + T(10) * M_flat[3] * t3 * t6 + t10 * M_flat[1] + M_flat[6] * t8 + T(5) * M_flat[5] * t4 * tau_lo;
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 7> M_beyond;
+    segment_moments_beyond_end<T>(8, 8, 6, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    const T t11 = tau_lo * tau_lo;
+    const T t12 = t11 * t11;
+    const T t13 = t12 * tau_lo;
+    const T t14 = delta_tau * delta_tau;
+    const T t15 = t14 * delta_tau;
+    const T t16 = t14 * t14;
+    const T t17 = t16 * delta_tau;
+    const T t18 = t11 * tau_lo;
+    G_ap = t13 * M_beyond[0] + T(10) * t15 * t11 * M_beyond[3] + T(5) * delta_tau * t12 * M_beyond[1] + T(5) * t16 * tau_lo * M_beyond[4] + M_beyond[5] * t17 + T(10) * M_beyond[2] * t14 * t18;
+    G_ab = t17 * M_beyond[6] + T(10) * t15 * t11 * M_beyond[4] + t13 * M_beyond[1] + T(5) * M_beyond[5] * t16 * tau_lo + T(10) * t14 * t18 * M_beyond[3] + T(5) * M_beyond[2] * delta_tau * t12;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t19 = sqrt(cross_cross);
+    const T t20 = T(1) / t19;
+    const T J2 = t20 * atan2(t19, ap_bp);
+    const T t21 = T(1) / cross_cross;
+    const T t22 = T(1) / bp_bp;
+    const T t23 = T(1) / ap_ap;
+    const T t24 = a_minus_b * t22 + t23 * ab_ap + ab_ab * J2;
+    const T t25 = t23 * t23;
+    const T t26 = t22 * t22;
+    const T t27 = T(3) * t21 * ab_ab * t24 + T(2) * t25 * ab_ap + T(2) * a_minus_b * t26;
+    const T t28 = t25 * t23;
+    const T t29 = t26 * t22;
+    const T t30 = T(5) * t27 * t21 * ab_ab + T(8) * t28 * ab_ap + T(8) * a_minus_b * t29;
+    const T t31 = tau_lo * tau_lo;
+    const T t32 = t31 * t31;
+    const T t33 = t32 * tau_lo;
+    const T t34 = delta_tau * delta_tau;
+    const T t35 = t31 * tau_lo;
+    const T t36 = T(1) / ab_ab;
+    const T t37 = t30 * t21 * ab_ap + T(8) * t28 - T(8) * t29;
+    const T t38 = T(6) * t27 * t21 + T(2) * t37 * t36 * ab_ap - ap_ap * t30 * t21;
+    const T t39 = t27 * t21 * ab_ap + T(2) * t25 - T(2) * t26;
+    const T t40 = T(4) * t21 * t24 + T(2) * t39 * t36 * ab_ap - t27 * ap_ap * t21;
+    const T t41 = T(6) * t39 * t36 + T(2) * t36 * t38 * ab_ap - ap_ap * t37 * t36;
+    const T t42 = T(6) * t40 * t36 + T(2) * t41 * t36 * ab_ap - ap_ap * t36 * t38;
+    const T t43 = t34 * t34;
+    const T t44 = t34 * delta_tau;
+    const T t45 = t23 + t21 * t24 * ab_ap - t22;
+    const T t46 = T(4) * t36 * t45 + T(2) * t40 * t36 * ab_ap - t39 * ap_ap * t36;
+    const T t47 = t41 * ap_ap * t36 - T(6) * t46 * t36 - T(2) * t42 * t36 * ab_ap;
+    const T t48 = t43 * delta_tau;
+    G_ap = (T(1) / T(48)) * t30 * t21 * t33 + (T(5) / T(24)) * t34 * t35 * t36 * t38 + (T(5) / T(48)) * t37 * delta_tau * t32 * t36 + (T(5) / T(48)) * t42 * t43 * tau_lo * t36 + (T(5) / T(24)) * t41 * t44 * t31 * t36 - (T(1) / T(48)) * t47 * t48 * t36;
+    G_ab = (T(5) / T(48)) * delta_tau * t32 * t36 * t38 + (T(5) / T(24)) * t41 * t34 * t35 * t36 + (T(5) / T(24)) * t42 * t44 * t31 * t36 + (T(1) / T(48)) * t37 * t33 * t36 - (T(5) / T(48)) * t47 * t43 * tau_lo * t36 - (T(1) / T(48)) * (T(6) * t36 * (ap_ap * t40 * t36 + T(4) * (ap_ap * t21 * t24 - T(2) * J2 - T(2) * t36 * t45 * ab_ap) * t36 - T(2) * t46 * t36 * ab_ap) + t42 * ap_ap * t36 + T(2) * t47 * t36 * ab_ap) * t48 * t36;
+  }
+  const T t49 = in.sigma * in.sigma;
+  const T t50 = t49 * in.sigma;
+  const T t51 = t50 * t50;
+  const T g_factor = -T(6) * t51 * length;
+  grad[0] = -g_factor * (G_ab * ab0 - G_ap * ap0);
+  grad[1] = -(G_ab * ab1 - ap1 * G_ap) * g_factor;
+  grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 82 +, 232 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 389 +, 635 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(bp_bp * t0);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -ab_ap * a_minus_b;
+  const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 14> M_flat;
+    segment_moments_gauss<T, 20>(6, 8, 6, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t4 = delta_tau * delta_tau;
+    const T t5 = tau_lo * tau_lo;
+    const T t6 = t5 * tau_lo;
+    const T t7 = t4 * t4;
+    const T t8 = t7 * delta_tau;
+    const T t9 = t4 * delta_tau;
+    const T t10 = t5 * t5;
+    const T t11 = t10 * tau_lo;
+    F = T(10) * M_flat[2] * t4 * t6 + M_flat[5] * t8 + T(10) * t9 * t5 * M_flat[3] + t11 * M_flat[0] + T(5) * M_flat[1] * delta_tau * t10 + T(5) * M_flat[4] * t7 * tau_lo;
+    G_ap = M_flat[7] * t11 + t8 * M_flat[12] + T(5) * M_flat[8] * delta_tau * t10 + T(10) * M_flat[10] * t9 * t5 + T(5) * M_flat[11] * t7 * tau_lo + T(10) * t4 * t6 * M_flat[9];
+    G_ab = T(10) * M_flat[10] * t4 * t6 + M_flat[8] * t11 + T(5) * delta_tau * t10 * M_flat[9] + M_flat[13] * t8 + T(5) * t7 * tau_lo * M_flat[12] + T(10) * M_flat[11] * t9 * t5;
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_8 = J_downward(…)
+    const T t12 = T(1) / ab_ab;
+    const T t13 = t0 * t0;
+    const T t14 = t13 * t0;
+    const T t15 = T(1) / bp_bp;
+    const T t16 = t15 * t15;
+    const T t17 = t16 * t15;
+    const T t18 = J_downward<T>(8, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t19 = ab_ap * t14 + t17 * a_minus_b - T(6) * t18 * cross_cross;
+    const T t20 = T(5) * t13 - T(5) * t16 - T(4) * t12 * ab_ap * t19;
+    const T t21 = T(5) * ab_ap * t13 + T(5) * t16 * a_minus_b + T(4) * t12 * cross_cross * t19;
+    const T t22 = T(6) * t12 * ap_ap * t19 + T(3) * t12 * ab_ap * t20 - T(2) * t12 * t21;
+    const T t23 = T(15) * t15 + T(2) * t12 * t21 * ab_ap - T(15) * t0;
+    const T t24 = T(4) * t12 * ab_ap * t22 - T(3) * t12 * t20 * ap_ap - T(2) * t12 * t23;
+    const T t25 = delta_tau * delta_tau;
+    const T t26 = t25 * delta_tau;
+    const T t27 = tau_lo * tau_lo;
+    const T t28 = t27 * tau_lo;
+    const T t29 = t27 * t27;
+    const T t30 = T(15) * t15 * a_minus_b + T(2) * t12 * t21 * cross_cross + T(15) * ab_ap * t0;
+    const T t31 = t12 * t30 + t12 * ab_ap * t23 - t12 * t21 * ap_ap;
+    const T t32 = t12 * t22 * ap_ap + T(2) * t12 * t31 - t12 * ab_ap * t24;
+    const T t33 = t25 * t25;
+    const T t34 = t33 * delta_tau;
+    const T t35 = t29 * tau_lo;
+    F = (T(1) / T(6)) * t12 * t24 * t26 * t27 + (T(1) / T(3)) * t12 * t22 * t25 * t28 + (T(1) / T(4)) * t12 * t20 * delta_tau * t29 - (T(1) / T(60)) * t12 * (T(4) * t12 * ab_ap * t32 + t12 * ap_ap * t24 - T(2) * t12 * (t12 * ap_ap * t23 + t12 * (T(15) * log_ratio - T(2) * t12 * ab_ap * t30) - T(4) * t12 * t31 * ab_ap)) * t34 - (T(1) / T(6)) * t12 * t32 * t33 * tau_lo - (T(1) / T(5)) * t12 * t35 * t19;
+    const T t36 = t14 + T(6) * ab_ap * t18 - t17;
+    const T t37 = T(3) * t12 * t19 + T(15) * t18 * ap_ap - T(5) * t12 * t36 * ab_ap;
+    const T t38 = T(3) * t12 * t20 - T(10) * t12 * t36 * ap_ap - T(8) * t12 * ab_ap * t37;
+    const T t39 = t12 * ab_ap * t38 + t12 * t22 + T(2) * t12 * t37 * ap_ap;
+    const T t40 = t12 * ap_ap * t38 - T(4) * t12 * ab_ap * t39 - t12 * t24;
+    G_ap = t18 * t35 + (T(1) / T(6)) * t12 * t39 * t33 * tau_lo + (T(1) / T(6)) * t12 * t26 * t27 * t38 + (T(5) / T(6)) * t12 * t36 * delta_tau * t29 - (T(2) / T(3)) * t12 * t37 * t25 * t28 - (T(1) / T(60)) * t12 * t40 * t34;
+    G_ab = (T(1) / T(6)) * t12 * t36 * t35 + (T(1) / T(3)) * t12 * t39 * t26 * t27 + (T(1) / T(6)) * t12 * t25 * t28 * t38 - (T(1) / T(12)) * t12 * t40 * t33 * tau_lo - (T(1) / T(30)) * t12 * (t12 * t40 * ab_ap + t12 * t39 * ap_ap + t12 * t32) * t34 - (T(1) / T(3)) * t12 * t37 * delta_tau * t29;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t41 = sqrt(cross_cross);
+    const T t42 = T(1) / t41;
+    const T J2 = atan2(t41, ap_bp) * t42;
+    const T t43 = T(1) / ab_ab;
+    const T t44 = T(1) / bp_bp;
+    const T t45 = t44 * a_minus_b + ab_ab * J2 + ab_ap * t0;
+    const T t46 = T(1) / cross_cross;
+    const T t47 = t0 * t0;
+    const T t48 = t44 * t44;
+    const T t49 = T(2) * ab_ap * t47 + T(3) * ab_ab * t45 * t46 + T(2) * t48 * a_minus_b;
+    const T t50 = T(2) * t47 + ab_ap * t49 * t46 - T(2) * t48;
+    const T t51 = T(4) * t45 * t46 + T(2) * t43 * ab_ap * t50 - t49 * ap_ap * t46;
+    const T t52 = delta_tau * delta_tau;
+    const T t53 = tau_lo * tau_lo;
+    const T t54 = t53 * tau_lo;
+    const T t55 = t52 * t52;
+    const T t56 = t44 - ab_ap * t45 * t46 - t0;
+    const T t57 = T(2) * J2 - t45 * ap_ap * t46 - T(2) * t43 * ab_ap * t56;
+    const T t58 = T(4) * t43 * t56 + t43 * ap_ap * t50 - T(2) * t43 * t51 * ab_ap;
+    const T t59 = T(4) * t43 * t57 - t43 * t51 * ap_ap - T(2) * t43 * ab_ap * t58;
+    const T t60 = t55 * delta_tau;
+    const T t61 = t53 * t53;
+    const T t62 = t61 * tau_lo;
+    const T t63 = t52 * delta_tau;
+    F = (T(5) / T(4)) * t43 * t51 * t52 * t54 + (T(5) / T(8)) * t43 * t55 * tau_lo * t59 + (T(1) / T(8)) * t43 * t60 * (T(4) * t43 * (t43 * ap_ap * t56 + T(2) * t43 * ab_ap * t57 + t43 * (log_ratio + T(2) * ab_ap * J2)) + t43 * t58 * ap_ap + T(2) * t43 * ab_ap * t59) + (T(1) / T(8)) * t49 * t62 * t46 + (T(5) / T(8)) * t43 * delta_tau * t61 * t50 - (T(5) / T(4)) * t43 * t58 * t63 * t53;
+    const T t64 = t47 * t0;
+    const T t65 = t48 * t44;
+    const T t66 = T(8) * ab_ap * t64 + T(5) * ab_ab * t49 * t46 + T(8) * t65 * a_minus_b;
+    const T t67 = t66 * ab_ap * t46 + T(8) * t64 - T(8) * t65;
+    const T t68 = T(2) * t43 * ab_ap * t67 + T(6) * t49 * t46 - t66 * ap_ap * t46;
+    const T t69 = T(2) * t43 * ab_ap * t68 + T(6) * t43 * t50 - t43 * t67 * ap_ap;
+    const T t70 = t43 * t68 * ap_ap - T(6) * t43 * t51 - T(2) * t43 * ab_ap * t69;
+    const T t71 = t43 * ap_ap * t69 + T(6) * t43 * t58 + T(2) * t43 * ab_ap * t70;
+    G_ap = (T(1) / T(48)) * t66 * t62 * t46 + (T(5) / T(24)) * t43 * t68 * t52 * t54 + (T(5) / T(48)) * t43 * t67 * delta_tau * t61 + (T(5) / T(24)) * t43 * t63 * t69 * t53 - (T(1) / T(48)) * t43 * t60 * t71 - (T(5) / T(48)) * t43 * t70 * t55 * tau_lo;
+    G_ab = (T(5) / T(24)) * t43 * t52 * t69 * t54 + (T(1) / T(48)) * t43 * t67 * t62 + (T(5) / T(48)) * t43 * t68 * delta_tau * t61 + (T(1) / T(48)) * t43 * (T(6) * t43 * t59 + t43 * t70 * ap_ap - T(2) * t43 * ab_ap * t71) * t60 - (T(5) / T(48)) * t43 * t55 * tau_lo * t71 - (T(5) / T(24)) * t43 * t70 * t63 * t53;
+  }
+  const T t72 = in.sigma * in.sigma;
+  const T t73 = t72 * in.sigma;
+  const T t74 = t73 * t73;
+  const T g_factor = -T(6) * length * t74;
+  f = length * t74 * F;
+  grad[0] = g_factor * (ap0 * G_ap - G_ab * ab0);
+  grad[1] = g_factor * (ap1 * G_ap - G_ab * ab1);
+  grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 63 +, 170 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 236 +, 477 ×, 22 /, 23 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i7_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ap0 * ab0;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T X;
+  const T t0 = a_minus_b * ab_ap;
+  if (t0 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t1 = T(1) / cross_cross;
+    const T t2 = a_minus_b * r0;
+    X = t1 * length * (t2 + ab_ap * r1);
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t3 = a_minus_b * r0;
+    X = length * (a_minus_b - ab_ap) / (t3 - ab_ap * r1);
+  }
+  const T t4 = T(1) / length;
+  const T J1 = t4 * asinh(X);
+  T F;
+  const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t6 = -a_minus_b * ab_ap;
+  const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 7> M_flat;
+    segment_moments_gauss<T, 20>(7, 7, 6, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t8 = delta_tau * delta_tau;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t9 * t9;
+    const T t11 = tau_lo * tau_lo;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t12 * t12;
+    const T t14 = t8 * t8;
+    const T t15 = t14 * delta_tau;
+    const T t16 = t11 * t11;
+    const T t17 = t16 * tau_lo;
+    F = t10 * M_flat[6] + t13 * M_flat[0] + T(15) * M_flat[4] * t11 * t14 + T(6) * tau_lo * t15 * M_flat[5] + T(15) * t16 * t8 * M_flat[2] + T(20) * t12 * t9 * M_flat[3] + T(6) * M_flat[1] * t17 * delta_tau;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_7 = J_downward(…)
+    const T t18 = delta_tau * delta_tau;
+    const T t19 = t18 * t18;
+    const T t20 = t19 * delta_tau;
+    const T t21 = T(1) / ab_ab;
+    const T t22 = T(1) / r0;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * t23;
+    const T t25 = T(1) / r1;
+    const T t26 = t25 * t25;
+    const T t27 = t26 * t26;
+    const T t28 = -ab_ap;
+    const T t29 = J_downward<T>(7, ab_ab, cross_cross, t28, ap_ap, a_minus_b, bp_bp);
+    const T t30 = t24 * t22 * ab_ap + a_minus_b * t27 * t25 - T(5) * cross_cross * t29;
+    const T t31 = T(4) * t23 * t22 - T(4) * t26 * t25 - T(3) * t30 * t21 * ab_ap;
+    const T t32 = T(3) * t30 * cross_cross * t21 + T(4) * a_minus_b * t26 * t25 + T(4) * t23 * t22 * ab_ap;
+    const T t33 = T(6) * ap_ap * t30 * t21 + T(4) * t31 * t21 * ab_ap - T(3) * t32 * t21;
+    const T t34 = T(8) * t25 + t32 * t21 * ab_ap - T(8) * t22;
+    const T t35 = T(2) * t33 * t21 * ab_ap - T(2) * ap_ap * t31 * t21 - T(3) * t34 * t21;
+    const T t36 = t27 * t25 - T(5) * t29 * ab_ap - t24 * t22;
+    const T t37 = T(5) * t30 * t21 + T(8) * t36 * t21 * ab_ap + T(20) * ap_ap * t29;
+    const T t38 = T(5) * t31 * t21 + T(12) * ap_ap * t36 * t21 - T(6) * t37 * t21 * ab_ap;
+    const T t39 = T(5) * t33 * t21 + T(6) * t37 * ap_ap * t21 + T(4) * t21 * t38 * ab_ap;
+    const T t40 = T(5) * t21 * t35 + T(2) * t39 * t21 * ab_ap - T(2) * ap_ap * t21 * t38;
+    const T t41 = tau_lo * tau_lo;
+    const T t42 = t41 * tau_lo;
+    const T t43 = t18 * delta_tau;
+    const T t44 = t42 * t42;
+    const T t45 = t41 * t41;
+    const T t46 = t45 * tau_lo;
+    const T t47 = t43 * t43;
+    F = (T(1) / T(20)) * tau_lo * t20 * t21 * t40 + (T(1) / T(8)) * t39 * t41 * t19 * t21 + (T(1) / T(3)) * t42 * t43 * t21 * t38 + t44 * t29 - (T(6) / T(5)) * t36 * t46 * delta_tau * t21 - (T(1) / T(120)) * t47 * t21 * (ap_ap * t39 * t21 + T(5) * (ap_ap * t33 * t21 + T(3) * (T(2) * t34 * t21 * ab_ap - T(8) * J1 - t32 * ap_ap * t21) * t21 - T(2) * t21 * t35 * ab_ap) * t21 - T(2) * t21 * ab_ap * t40) - (T(3) / T(4)) * t37 * t45 * t18 * t21;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t48 = delta_tau * delta_tau;
+    const T t49 = t48 * t48;
+    const T t50 = t49 * delta_tau;
+    const T t51 = T(1) / ab_ab;
+    const T t52 = T(1) / r1;
+    const T t53 = t52 * t52;
+    const T t54 = t53 * t53;
+    const T t55 = T(1) / r0;
+    const T t56 = t55 * t55;
+    const T t57 = t56 * t56;
+    const T t58 = a_minus_b * t52 + t55 * ab_ap;
+    const T t59 = T(1) / cross_cross;
+    const T t60 = a_minus_b * t53 * t52 + t56 * t55 * ab_ap + T(2) * t58 * t59 * ab_ab;
+    const T t61 = T(3) * t57 * t55 * ab_ap + T(4) * t60 * t59 * ab_ab + T(3) * a_minus_b * t54 * t52;
+    const T t62 = T(3) * t54 * t52 - T(3) * t57 * t55 - t61 * t59 * ab_ap;
+    const T t63 = T(2) * t62 * t51 * ab_ap + t61 * ap_ap * t59 - T(5) * t60 * t59;
+    const T t64 = t56 * t55 + t60 * t59 * ab_ap - t53 * t52;
+    const T t65 = T(2) * t63 * t51 * ab_ap - T(5) * t51 * t64 - ap_ap * t62 * t51;
+    const T t66 = ap_ap * t60 * t59 - T(3) * t58 * t59 - T(2) * t51 * ab_ap * t64;
+    const T t67 = ap_ap * t63 * t51 - T(2) * t51 * t65 * ab_ap - T(5) * t66 * t51;
+    const T t68 = t58 * t59 * ab_ap + t55 - t52;
+    const T t69 = ap_ap * t51 * t64 + T(2) * t66 * t51 * ab_ap - T(3) * t51 * t68;
+    const T t70 = ap_ap * t51 * t65 + T(2) * t67 * t51 * ab_ap - T(5) * t69 * t51;
+    const T t71 = tau_lo * tau_lo;
+    const T t72 = t71 * tau_lo;
+    const T t73 = t72 * t72;
+    const T t74 = t48 * delta_tau;
+    const T t75 = t71 * t71;
+    const T t76 = t75 * tau_lo;
+    const T t77 = t74 * t74;
+    F = (T(2) / T(5)) * tau_lo * t50 * t70 * t51 + (T(1) / T(15)) * t61 * t73 * t59 + t67 * t71 * t49 * t51 - (T(4) / T(3)) * t72 * t74 * t51 * t65 - t75 * t63 * t48 * t51 - (T(2) / T(5)) * t62 * t76 * delta_tau * t51 - (T(1) / T(15)) * t77 * (T(5) * (T(3) * (ap_ap * t58 * t59 - J1 - T(2) * t51 * ab_ap * t68) * t51 + T(2) * t69 * t51 * ab_ap - t66 * ap_ap * t51) * t51 + t67 * ap_ap * t51 - T(2) * t70 * t51 * ab_ap) * t51;
+  }
+  const T t78 = in.sigma * in.sigma;
+  const T t79 = t78 * in.sigma;
+  const T t80 = t79 * t79;
+  const T t81 = t80 * in.sigma;
+  f = t81 * F * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 81 +, 243 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 264 +, 558 ×, 20 /, 23 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
+  const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(9, 9, 7, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t3 = tau_lo * tau_lo;
+    const T t4 = t3 * tau_lo;
+    const T t5 = t4 * t4;
+    const T t6 = delta_tau * delta_tau;
+    const T t7 = t6 * delta_tau;
+    const T t8 = t7 * t7;
+    const T t9 = t6 * t6;
+    const T t10 = t3 * t3;
+    const T t11 = t10 * tau_lo;
+    const T t12 = t9 * delta_tau;
+    G_ap = M_flat[0] * t5 + M_flat[6] * t8 + T(15) * t9 * t3 * M_flat[4] + T(20) * M_flat[3] * t7 * t4 + T(15) * M_flat[2] * t6 * t10 + T(6) * M_flat[1] * delta_tau * t11 + T(6) * M_flat[5] * t12 * tau_lo;
+    G_ab = T(15) * M_flat[3] * t6 * t10 + T(20) * t7 * t4 * M_flat[4] + M_flat[1] * t5 + T(6) * M_flat[2] * delta_tau * t11 + T(6) * M_flat[6] * t12 * tau_lo + T(15) * M_flat[5] * t9 * t3 + t8 * M_flat[7];
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 8> M_beyond;
+    segment_moments_beyond_end<T>(9, 9, 7, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    const T t13 = delta_tau * delta_tau;
+    const T t14 = t13 * t13;
+    const T t15 = t14 * delta_tau;
+    const T t16 = tau_lo * tau_lo;
+    const T t17 = t16 * t16;
+    const T t18 = t17 * tau_lo;
+    const T t19 = t13 * delta_tau;
+    const T t20 = t16 * tau_lo;
+    const T t21 = t20 * t20;
+    const T t22 = t19 * t19;
+    G_ap = T(6) * t15 * tau_lo * M_beyond[5] + T(15) * M_beyond[4] * t14 * t16 + T(6) * M_beyond[1] * delta_tau * t18 + T(15) * t13 * t17 * M_beyond[2] + T(20) * M_beyond[3] * t19 * t20 + M_beyond[0] * t21 + M_beyond[6] * t22;
+    G_ab = T(6) * M_beyond[6] * t15 * tau_lo + M_beyond[1] * t21 + M_beyond[7] * t22 + T(15) * t14 * t16 * M_beyond[5] + T(6) * delta_tau * t18 * M_beyond[2] + T(20) * M_beyond[4] * t19 * t20 + T(15) * M_beyond[3] * t13 * t17;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t23 = tau_lo * tau_lo;
+    const T t24 = t23 * tau_lo;
+    const T t25 = t24 * t24;
+    const T t26 = T(1) / r0;
+    const T t27 = t26 * t26;
+    const T t28 = t27 * t27;
+    const T t29 = t28 * t27;
+    const T t30 = T(1) / r1;
+    const T t31 = t30 * t30;
+    const T t32 = t31 * t31;
+    const T t33 = a_minus_b * t30 + ab_ap * t26;
+    const T t34 = T(1) / cross_cross;
+    const T t35 = a_minus_b * t31 * t30 + T(2) * ab_ab * t33 * t34 + ab_ap * t26 * t27;
+    const T t36 = T(3) * ab_ap * t26 * t28 + T(3) * a_minus_b * t32 * t30 + T(4) * ab_ab * t35 * t34;
+    const T t37 = t32 * t31;
+    const T t38 = T(5) * ab_ap * t26 * t29 + T(2) * ab_ab * t36 * t34 + T(5) * a_minus_b * t37 * t30;
+    const T t39 = T(1) / ab_ab;
+    const T t40 = T(5) * t26 * t29 + ab_ap * t38 * t34 - T(5) * t37 * t30;
+    const T t41 = T(6) * t39 * ab_ap * t40 + T(7) * t36 * t34 - T(3) * ap_ap * t38 * t34;
+    const T t42 = delta_tau * delta_tau;
+    const T t43 = t23 * t23;
+    const T t44 = t43 * tau_lo;
+    const T t45 = T(3) * t32 * t30 - T(3) * t26 * t28 - ab_ap * t36 * t34;
+    const T t46 = T(2) * t39 * t45 * ab_ap + ap_ap * t36 * t34 - T(5) * t35 * t34;
+    const T t47 = T(3) * t39 * t40 * ap_ap + T(7) * t39 * t45 - T(2) * t39 * ab_ap * t41;
+    const T t48 = T(7) * t39 * t46 + T(2) * t39 * ab_ap * t47 + t39 * t41 * ap_ap;
+    const T t49 = ab_ap * t35 * t34 + t26 * t27 - t31 * t30;
+    const T t50 = T(2) * t49 * t39 * ab_ap + T(3) * t33 * t34 - ap_ap * t35 * t34;
+    const T t51 = T(2) * t39 * t46 * ab_ap - t39 * t45 * ap_ap - T(5) * t49 * t39;
+    const T t52 = T(5) * t39 * t50 + t39 * t46 * ap_ap - T(2) * t39 * ab_ap * t51;
+    const T t53 = T(7) * t39 * t51 + T(2) * t39 * ab_ap * t48 - t39 * ap_ap * t47;
+    const T t54 = t39 * t48 * ap_ap + T(7) * t39 * t52 - T(2) * t39 * ab_ap * t53;
+    const T t55 = t42 * delta_tau;
+    const T t56 = t55 * t55;
+    const T t57 = t42 * t42;
+    const T t58 = t57 * delta_tau;
+    G_ap = (T(1) / T(35)) * t25 * t38 * t34 + (T(1) / T(7)) * t39 * t41 * t42 * t43 + (T(6) / T(35)) * t39 * t40 * delta_tau * t44 + (T(1) / T(105)) * t39 * t54 * t56 - (T(1) / T(7)) * t39 * t48 * t57 * t23 - (T(4) / T(21)) * t39 * t55 * t24 * t47 - (T(2) / T(35)) * t39 * t58 * t53 * tau_lo;
+    G_ab = (T(2) / T(35)) * t39 * t54 * t58 * tau_lo + (T(1) / T(35)) * t39 * t40 * t25 + (T(2) / T(35)) * t39 * t41 * delta_tau * t44 + (T(1) / T(105)) * t39 * (t39 * ap_ap * t53 + T(7) * t39 * (T(2) * t39 * ab_ap * t52 + t39 * ap_ap * t51 + T(5) * t39 * (T(2) * t39 * ab_ap * t50 - t49 * t39 * ap_ap - T(3) * t39 * (t30 - t33 * ab_ap * t34 - t26))) + T(2) * t39 * ab_ap * t54) * t56 - (T(1) / T(7)) * t39 * t57 * t53 * t23 - (T(4) / T(21)) * t39 * t48 * t55 * t24 - (T(1) / T(7)) * t39 * t42 * t43 * t47;
+  }
+  const T t59 = in.sigma * in.sigma;
+  const T t60 = t59 * in.sigma;
+  const T t61 = t60 * t60;
+  const T t62 = t61 * in.sigma;
+  const T g_factor = -T(7) * length * t62;
+  grad[0] = (ap0 * G_ap - ab0 * G_ab) * g_factor;
+  grad[1] = (ap1 * G_ap - ab1 * G_ab) * g_factor;
+  grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 94 +, 294 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 431 +, 791 ×, 22 /, 23 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ap1 * ab1;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
+  const T ab_bp = ab2 * bp2 + ab0 * bp0 + bp1 * ab1;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T X;
+  const T t0 = ab_ap * a_minus_b;
+  if (t0 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t1 = T(1) / cross_cross;
+    const T t2 = a_minus_b * r0;
+    X = t1 * (t2 + ab_ap * r1) * length;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t3 = a_minus_b * r0;
+    X = -(ab_ap - a_minus_b) * length / (t3 - ab_ap * r1);
+  }
+  const T t4 = T(1) / length;
+  const T J1 = t4 * asinh(X);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t6 = -ab_ap * a_minus_b;
+  const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 16> M_flat;
+    segment_moments_gauss<T, 20>(7, 9, 7, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t8 = delta_tau * delta_tau;
+    const T t9 = t8 * t8;
+    const T t10 = tau_lo * tau_lo;
+    const T t11 = t10 * t10;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t8 * delta_tau;
+    const T t14 = t13 * t13;
+    const T t15 = t10 * tau_lo;
+    const T t16 = t15 * t15;
+    const T t17 = t9 * delta_tau;
+    F = T(15) * M_flat[4] * t9 * t10 + T(15) * M_flat[2] * t8 * t11 + T(6) * M_flat[1] * delta_tau * t12 + t14 * M_flat[6] + T(20) * t13 * t15 * M_flat[3] + t16 * M_flat[0] + T(6) * M_flat[5] * t17 * tau_lo;
+    G_ap = T(15) * t9 * M_flat[12] * t10 + T(6) * M_flat[13] * t17 * tau_lo + T(6) * M_flat[9] * delta_tau * t12 + T(15) * M_flat[10] * t8 * t11 + T(20) * M_flat[11] * t13 * t15 + M_flat[14] * t14 + M_flat[8] * t16;
+    G_ab = T(15) * M_flat[11] * t8 * t11 + T(15) * M_flat[13] * t9 * t10 + M_flat[15] * t14 + T(6) * M_flat[10] * delta_tau * t12 + T(6) * M_flat[14] * t17 * tau_lo + T(20) * t13 * M_flat[12] * t15 + M_flat[9] * t16;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_9 = J_downward(…)
+    const T t18 = delta_tau * delta_tau;
+    const T t19 = t18 * delta_tau;
+    const T t20 = tau_lo * tau_lo;
+    const T t21 = t20 * tau_lo;
+    const T t22 = T(1) / ab_ab;
+    const T t23 = T(1) / r1;
+    const T t24 = t23 * t23;
+    const T t25 = t24 * t24;
+    const T t26 = T(1) / r0;
+    const T t27 = t26 * t26;
+    const T t28 = t27 * t27;
+    const T t29 = t28 * t27;
+    const T t30 = t25 * t24;
+    const T t31 = J_downward<T>(9, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t32 = ab_ap * t29 * t26 + t30 * a_minus_b * t23 - T(7) * cross_cross * t31;
+    const T t33 = T(6) * t25 * t23 + T(5) * ab_ap * t32 * t22 - T(6) * t28 * t26;
+    const T t34 = T(5) * t32 * cross_cross * t22 + T(6) * t25 * a_minus_b * t23 + T(6) * ab_ap * t28 * t26;
+    const T t35 = T(8) * t27 * t26 - ab_ap * t34 * t22 - T(8) * t24 * t23;
+    const T t36 = T(20) * ap_ap * t32 * t22 - T(5) * t34 * t22 - T(8) * t33 * ab_ap * t22;
+    const T t37 = T(4) * t33 * ap_ap * t22 + T(5) * t35 * t22 + T(2) * ab_ap * t36 * t22;
+    const T t38 = t20 * t20;
+    const T t39 = t19 * t19;
+    const T t40 = t34 * cross_cross * t22 + T(8) * ab_ap * t27 * t26 + T(8) * t24 * a_minus_b * t23;
+    const T t41 = T(3) * t40 * t22 - T(2) * t34 * ap_ap * t22 - T(4) * t35 * ab_ap * t22;
+    const T t42 = T(16) * t23 + t40 * ab_ap * t22 - T(16) * t26;
+    const T t43 = T(3) * t42 * t22 + T(2) * t35 * ap_ap * t22 + T(2) * ab_ap * t41 * t22;
+    const T t44 = T(5) * t41 * t22 + T(2) * t36 * ap_ap * t22 - T(4) * ab_ap * t22 * t37;
+    const T t45 = T(2) * ab_ap * t44 * t22 + T(5) * t43 * t22 + T(2) * ap_ap * t22 * t37;
+    const T t46 = t21 * t21;
+    const T t47 = t38 * tau_lo;
+    const T t48 = t18 * t18;
+    const T t49 = t48 * delta_tau;
+    F = (T(1) / T(6)) * t19 * t21 * t22 * t37 + (T(1) / T(8)) * t36 * t18 * t38 * t22 + (T(1) / T(240)) * t39 * (T(5) * (t41 * ap_ap * t22 + T(3) * (t40 * ap_ap * t22 + T(16) * J1 - T(2) * ab_ap * t42 * t22) * t22 - T(2) * t43 * ab_ap * t22) * t22 + t44 * ap_ap * t22 - T(2) * ab_ap * t45 * t22) * t22 - (T(1) / T(6)) * t32 * t46 * t22 - (T(1) / T(5)) * t33 * delta_tau * t47 * t22 - (T(1) / T(40)) * t45 * t49 * tau_lo * t22 - (T(1) / T(16)) * t44 * t48 * t20 * t22;
+    const T t50 = T(7) * ab_ap * t31 + t29 * t26 - t30 * t23;
+    const T t51 = T(7) * t32 * t22 + T(42) * ap_ap * t31 - T(12) * ab_ap * t50 * t22;
+    const T t52 = T(30) * ap_ap * t50 * t22 + T(10) * t51 * ab_ap * t22 + T(7) * t33 * t22;
+    const T t53 = T(7) * t36 * t22 + T(20) * t51 * ap_ap * t22 - T(8) * t52 * ab_ap * t22;
+    const T t54 = T(4) * t52 * ap_ap * t22 + T(2) * ab_ap * t53 * t22 + T(7) * t22 * t37;
+    const T t55 = T(4) * ab_ap * t54 * t22 - T(2) * t53 * ap_ap * t22 - T(7) * t44 * t22;
+    G_ap = (T(6) / T(7)) * delta_tau * t50 * t47 * t22 + (T(1) / T(1680)) * t55 * t39 * t22 + (T(1) / T(56)) * t53 * t48 * t20 * t22 + (T(1) / T(140)) * t49 * t54 * tau_lo * t22 + t46 * t31 - (T(2) / T(21)) * t52 * t19 * t21 * t22 - (T(5) / T(14)) * t51 * t18 * t38 * t22;
+    G_ab = (T(1) / T(280)) * t55 * t49 * tau_lo * t22 + (T(1) / T(7)) * t50 * t46 * t22 + (T(1) / T(42)) * t53 * t19 * t21 * t22 + (T(1) / T(56)) * t48 * t54 * t20 * t22 - (T(1) / T(14)) * t52 * t18 * t38 * t22 - (T(1) / T(7)) * t51 * delta_tau * t47 * t22 - (T(1) / T(1680)) * (T(2) * ap_ap * t54 * t22 + T(7) * t45 * t22 - T(2) * ab_ap * t55 * t22) * t39 * t22;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t56 = T(1) / r1;
+    const T t57 = t56 * t56;
+    const T t58 = t57 * t57;
+    const T t59 = T(1) / r0;
+    const T t60 = t59 * t59;
+    const T t61 = t60 * t60;
+    const T t62 = ab_ap * t59 + a_minus_b * t56;
+    const T t63 = T(1) / cross_cross;
+    const T t64 = ab_ap * t60 * t59 + T(2) * t62 * t63 * ab_ab + t57 * a_minus_b * t56;
+    const T t65 = T(3) * t58 * a_minus_b * t56 + T(3) * ab_ap * t61 * t59 + T(4) * t64 * t63 * ab_ab;
+    const T t66 = T(3) * t58 * t56 - ab_ap * t65 * t63 - T(3) * t61 * t59;
+    const T t67 = T(1) / ab_ab;
+    const T t68 = T(2) * t66 * ab_ap * t67 + t65 * ap_ap * t63 - T(5) * t64 * t63;
+    const T t69 = ab_ap * t64 * t63 + t60 * t59 - t57 * t56;
+    const T t70 = T(2) * t68 * ab_ap * t67 - t66 * ap_ap * t67 - T(5) * t69 * t67;
+    const T t71 = T(2) * ab_ap * t69 * t67 + T(3) * t62 * t63 - t64 * ap_ap * t63;
+    const T t72 = ab_ap * t62 * t63 + t59 - t56;
+    const T t73 = T(2) * t71 * ab_ap * t67 + T(3) * t72 * t67 - t69 * ap_ap * t67;
+    const T t74 = T(2) * ab_ap * t70 * t67 - t68 * ap_ap * t67 - T(5) * t71 * t67;
+    const T t75 = ap_ap * t70 * t67 + T(5) * t73 * t67 - T(2) * t74 * ab_ap * t67;
+    const T t76 = delta_tau * delta_tau;
+    const T t77 = t76 * t76;
+    const T t78 = t77 * delta_tau;
+    const T t79 = tau_lo * tau_lo;
+    const T t80 = t79 * tau_lo;
+    const T t81 = t80 * t80;
+    const T t82 = t76 * delta_tau;
+    const T t83 = t79 * t79;
+    const T t84 = t83 * tau_lo;
+    const T t85 = t82 * t82;
+    F = (T(2) / T(5)) * t75 * t78 * tau_lo * t67 + (T(1) / T(15)) * t65 * t63 * t81 - t74 * t77 * t79 * t67 - (T(4) / T(3)) * t82 * t70 * t80 * t67 - t68 * t76 * t83 * t67 - (T(2) / T(5)) * t66 * delta_tau * t84 * t67 - (T(1) / T(15)) * (T(5) * (t71 * ap_ap * t67 - T(3) * (T(2) * ab_ap * t72 * t67 + J1 - t62 * ap_ap * t63) * t67 - T(2) * ab_ap * t73 * t67) * t67 - T(2) * t75 * ab_ap * t67 - t74 * ap_ap * t67) * t85 * t67;
+    const T t86 = t58 * t57;
+    const T t87 = t61 * t60;
+    const T t88 = T(5) * ab_ap * t87 * t59 + T(2) * t65 * t63 * ab_ab + T(5) * t86 * a_minus_b * t56;
+    const T t89 = T(5) * t86 * t56 - ab_ap * t88 * t63 - T(5) * t87 * t59;
+    const T t90 = T(6) * ab_ap * t67 * t89 + T(3) * ap_ap * t88 * t63 - T(7) * t65 * t63;
+    const T t91 = T(2) * ab_ap * t90 * t67 + T(7) * t66 * t67 - T(3) * ap_ap * t67 * t89;
+    const T t92 = ap_ap * t90 * t67 - T(2) * ab_ap * t91 * t67 - T(7) * t68 * t67;
+    const T t93 = T(7) * t70 * t67 - T(2) * ab_ap * t92 * t67 - t91 * ap_ap * t67;
+    const T t94 = T(2) * ab_ap * t93 * t67 + ap_ap * t92 * t67 + T(7) * t74 * t67;
+    G_ap = (T(1) / T(7)) * t92 * t77 * t79 * t67 + (T(1) / T(35)) * t88 * t63 * t81 - (T(1) / T(7)) * t90 * t76 * t83 * t67 - (T(4) / T(21)) * t91 * t82 * t80 * t67 - (T(2) / T(35)) * t93 * t78 * tau_lo * t67 - (T(1) / T(105)) * t85 * t94 * t67 - (T(6) / T(35)) * delta_tau * t84 * t67 * t89;
+    G_ab = (T(4) / T(21)) * t92 * t82 * t80 * t67 - (T(1) / T(105)) * t85 * t67 * (T(2) * ab_ap * t94 * t67 - t93 * ap_ap * t67 - T(7) * t75 * t67) - (T(1) / T(7)) * t91 * t76 * t83 * t67 - (T(2) / T(35)) * t78 * tau_lo * t94 * t67 - (T(1) / T(7)) * t93 * t77 * t79 * t67 - (T(1) / T(35)) * t81 * t67 * t89 - (T(2) / T(35)) * t90 * delta_tau * t84 * t67;
+  }
+  const T t95 = in.sigma * in.sigma;
+  const T t96 = t95 * in.sigma;
+  const T t97 = t96 * t96;
+  const T t98 = t97 * in.sigma;
+  const T g_factor = -T(7) * length * t98;
+  f = length * F * t98;
+  grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = -(ab2 * G_ab - ap2 * G_ap) * g_factor;
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 73 +, 196 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 258 +, 440 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ab0 * ap0 + ap2 * ab2 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
+  const T ab_bp = bp2 * ab2 + ab0 * bp0 + bp1 * ab1;
+  const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(t0 * bp_bp);
+  T F;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -ab_ap * a_minus_b;
+  const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 8> M_flat;
+    segment_moments_gauss<T, 20>(8, 8, 7, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t4 = tau_lo * tau_lo;
+    const T t5 = t4 * tau_lo;
+    const T t6 = t5 * t5;
+    const T t7 = t6 * tau_lo;
+    const T t8 = delta_tau * delta_tau;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t9 * t9;
+    const T t11 = t10 * delta_tau;
+    const T t12 = t4 * t4;
+    const T t13 = t8 * t8;
+    const T t14 = t13 * delta_tau;
+    const T t15 = t12 * tau_lo;
+    F = M_flat[0] * t7 + M_flat[7] * t11 + T(35) * M_flat[3] * t9 * t12 + T(7) * t10 * tau_lo * M_flat[6] + T(21) * M_flat[5] * t14 * t4 + T(21) * M_flat[2] * t8 * t15 + T(7) * M_flat[1] * delta_tau * t6 + T(35) * M_flat[4] * t13 * t5;
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_8 = J_downward(…)
+    const T t16 = T(1) / bp_bp;
+    const T t17 = t16 * t16;
+    const T t18 = t17 * t16;
+    const T t19 = t0 * t0;
+    const T t20 = t19 * t0;
+    const T t21 = J_downward<T>(8, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t22 = a_minus_b * t18 + ab_ap * t20 - T(6) * t21 * cross_cross;
+    const T t23 = T(1) / ab_ab;
+    const T t24 = T(4) * ab_ap * t22 * t23 + T(5) * t17 - T(5) * t19;
+    const T t25 = T(6) * ab_ap * t21 + t20 - t18;
+    const T t26 = T(5) * t25 * ab_ap * t23 - T(3) * t22 * t23 - T(15) * ap_ap * t21;
+    const T t27 = T(3) * t24 * t23 + T(10) * t25 * ap_ap * t23 - T(8) * ab_ap * t26 * t23;
+    const T t28 = T(4) * cross_cross * t22 * t23 + T(5) * a_minus_b * t17 + T(5) * ab_ap * t19;
+    const T t29 = T(6) * ap_ap * t22 * t23 - T(3) * ab_ap * t24 * t23 - T(2) * t28 * t23;
+    const T t30 = T(15) * t0 - T(2) * ab_ap * t28 * t23 - T(15) * t16;
+    const T t31 = T(4) * ab_ap * t29 * t23 + T(3) * ap_ap * t24 * t23 + T(2) * t30 * t23;
+    const T t32 = ab_ap * t27 * t23 + T(2) * ap_ap * t26 * t23 - t29 * t23;
+    const T t33 = ap_ap * t27 * t23 + t23 * t31 - T(4) * ab_ap * t23 * t32;
+    const T t34 = delta_tau * delta_tau;
+    const T t35 = t34 * t34;
+    const T t36 = t35 * delta_tau;
+    const T t37 = tau_lo * tau_lo;
+    const T t38 = t37 * t37;
+    const T t39 = t38 * tau_lo;
+    const T t40 = t34 * delta_tau;
+    const T t41 = t40 * t40;
+    const T t42 = T(15) * ab_ap * t0 + T(2) * t28 * cross_cross * t23 + T(15) * a_minus_b * t16;
+    const T t43 = ab_ap * t30 * t23 + ap_ap * t28 * t23 - t42 * t23;
+    const T t44 = t29 * ap_ap * t23 - ab_ap * t23 * t31 - T(2) * t43 * t23;
+    const T t45 = ap_ap * t23 * t32 + ab_ap * t33 * t23 - t44 * t23;
+    const T t46 = t37 * tau_lo;
+    const T t47 = t46 * t46;
+    const T t48 = t47 * tau_lo;
+    const T t49 = t41 * delta_tau;
+    F = (T(7) / T(20)) * t33 * t23 * t36 * t37 + (T(7) / T(5)) * t26 * t23 * t34 * t39 + (T(7) / T(30)) * t23 * t41 * tau_lo * t45 + t21 * t48 + (T(7) / T(6)) * t25 * t23 * delta_tau * t47 - (T(7) / T(6)) * t23 * t32 * t35 * t46 - (T(7) / T(12)) * t27 * t23 * t40 * t38 - (T(1) / T(60)) * (t33 * ap_ap * t23 + (T(4) * ab_ap * t44 * t23 + T(2) * ((T(2) * ab_ap * t42 * t23 - T(15) * log_ratio) * t23 + ap_ap * t30 * t23 - T(4) * ab_ap * t43 * t23) * t23 + ap_ap * t23 * t31) * t23 - T(4) * ab_ap * t23 * t45) * t23 * t49;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t50 = sqrt(cross_cross);
+    const T t51 = T(1) / t50;
+    const T J2 = t51 * atan2(t50, ap_bp);
+    const T t52 = T(1) / bp_bp;
+    const T t53 = t52 * t52;
+    const T t54 = ab_ap * t0 + a_minus_b * t52 + J2 * ab_ab;
+    const T t55 = T(1) / cross_cross;
+    const T t56 = t0 * t0;
+    const T t57 = T(2) * a_minus_b * t53 + T(3) * t54 * t55 * ab_ab + T(2) * ab_ap * t56;
+    const T t58 = t53 * t52;
+    const T t59 = t56 * t0;
+    const T t60 = T(5) * t57 * t55 * ab_ab + T(8) * a_minus_b * t58 + T(8) * ab_ap * t59;
+    const T t61 = tau_lo * tau_lo;
+    const T t62 = t61 * tau_lo;
+    const T t63 = t62 * t62;
+    const T t64 = t63 * tau_lo;
+    const T t65 = T(1) / ab_ab;
+    const T t66 = T(8) * t58 - ab_ap * t60 * t55 - T(8) * t59;
+    const T t67 = ab_ap * t57 * t55 + T(2) * t56 - T(2) * t53;
+    const T t68 = T(2) * ab_ap * t66 * t65 + ap_ap * t60 * t55 - T(6) * t57 * t55;
+    const T t69 = ap_ap * t66 * t65 + T(6) * t65 * t67 - T(2) * ab_ap * t65 * t68;
+    const T t70 = ap_ap * t57 * t55 - T(4) * t54 * t55 - T(2) * ab_ap * t65 * t67;
+    const T t71 = T(6) * t65 * t70 - T(2) * ab_ap * t69 * t65 - ap_ap * t65 * t68;
+    const T t72 = t0 + ab_ap * t54 * t55 - t52;
+    const T t73 = T(4) * t72 * t65 - ap_ap * t65 * t67 - T(2) * ab_ap * t65 * t70;
+    const T t74 = ap_ap * t69 * t65 + T(2) * ab_ap * t71 * t65 - T(6) * t73 * t65;
+    const T t75 = T(2) * J2 + T(2) * ab_ap * t72 * t65 - ap_ap * t54 * t55;
+    const T t76 = T(4) * t65 * t75 + T(2) * ab_ap * t73 * t65 + ap_ap * t65 * t70;
+    const T t77 = T(6) * t65 * t76 + t71 * ap_ap * t65 - T(2) * ab_ap * t74 * t65;
+    const T t78 = delta_tau * delta_tau;
+    const T t79 = t78 * delta_tau;
+    const T t80 = t79 * t79;
+    const T t81 = t80 * delta_tau;
+    const T t82 = t61 * t61;
+    const T t83 = t78 * t78;
+    const T t84 = t83 * delta_tau;
+    const T t85 = t82 * tau_lo;
+    F = (T(1) / T(48)) * t60 * t55 * t64 + (T(1) / T(48)) * t65 * (t74 * ap_ap * t65 + T(6) * (T(4) * ((T(2) * ab_ap * J2 + log_ratio) * t65 + T(2) * ab_ap * t65 * t75 - t72 * ap_ap * t65) * t65 + T(2) * ab_ap * t65 * t76 - ap_ap * t73 * t65) * t65 + T(2) * ab_ap * t77 * t65) * t81 + (T(7) / T(48)) * t77 * t65 * t80 * tau_lo + (T(35) / T(48)) * t69 * t65 * t79 * t82 - (T(7) / T(16)) * t74 * t65 * t84 * t61 - (T(35) / T(48)) * t71 * t65 * t83 * t62 - (T(7) / T(16)) * t65 * t68 * t78 * t85 - (T(7) / T(48)) * t66 * t65 * delta_tau * t63;
+  }
+  const T t86 = in.sigma * in.sigma;
+  const T t87 = t86 * t86;
+  const T t88 = t87 * t87;
+  f = F * t88 * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 94 +, 274 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 288 +, 509 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = bp0 * ap0 + bp1 * ap1 + bp2 * ap2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 9> M_flat;
+    segment_moments_gauss<T, 20>(10, 10, 8, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t3 = delta_tau * delta_tau;
+    const T t4 = t3 * t3;
+    const T t5 = tau_lo * tau_lo;
+    const T t6 = t5 * tau_lo;
+    const T t7 = t6 * t6;
+    const T t8 = t3 * delta_tau;
+    const T t9 = t5 * t5;
+    const T t10 = t9 * tau_lo;
+    const T t11 = t8 * t8;
+    const T t12 = t11 * delta_tau;
+    const T t13 = t7 * tau_lo;
+    const T t14 = t4 * delta_tau;
+    G_ap = T(35) * t4 * t6 * M_flat[4] + T(7) * delta_tau * t7 * M_flat[1] + T(35) * M_flat[3] * t8 * t9 + T(21) * t3 * t10 * M_flat[2] + t12 * M_flat[7] + M_flat[0] * t13 + T(7) * M_flat[6] * t11 * tau_lo + T(21) * t14 * t5 * M_flat[5];
+    G_ab = T(21) * M_flat[3] * t3 * t10 + T(7) * delta_tau * t7 * M_flat[2] + T(35) * t8 * t9 * M_flat[4] + t12 * M_flat[8] + t13 * M_flat[1] + T(7) * t11 * M_flat[7] * tau_lo + T(35) * t4 * t6 * M_flat[5] + T(21) * M_flat[6] * t14 * t5;
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 9> M_beyond;
+    segment_moments_beyond_end<T>(10, 10, 8, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    const T t15 = tau_lo * tau_lo;
+    const T t16 = t15 * tau_lo;
+    const T t17 = t16 * t16;
+    const T t18 = delta_tau * delta_tau;
+    const T t19 = t18 * delta_tau;
+    const T t20 = t19 * t19;
+    const T t21 = t15 * t15;
+    const T t22 = t21 * tau_lo;
+    const T t23 = t18 * t18;
+    const T t24 = t17 * tau_lo;
+    const T t25 = t23 * delta_tau;
+    const T t26 = t20 * delta_tau;
+    G_ap = T(7) * M_beyond[1] * delta_tau * t17 + T(7) * t20 * tau_lo * M_beyond[6] + T(21) * t18 * t22 * M_beyond[2] + T(35) * M_beyond[4] * t23 * t16 + T(35) * t19 * t21 * M_beyond[3] + t24 * M_beyond[0] + T(21) * t25 * t15 * M_beyond[5] + M_beyond[7] * t26;
+    G_ab = T(35) * M_beyond[4] * t19 * t21 + T(21) * t25 * t15 * M_beyond[6] + t26 * M_beyond[8] + T(7) * M_beyond[7] * t20 * tau_lo + M_beyond[1] * t24 + T(7) * delta_tau * t17 * M_beyond[2] + T(35) * t23 * t16 * M_beyond[5] + T(21) * t18 * t22 * M_beyond[3];
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t27 = sqrt(cross_cross);
+    const T t28 = T(1) / t27;
+    const T J2 = atan2(t27, ap_bp) * t28;
+    const T t29 = T(1) / ab_ab;
+    const T t30 = T(1) / bp_bp;
+    const T t31 = t30 * t30;
+    const T t32 = t31 * t30;
+    const T t33 = T(1) / ap_ap;
+    const T t34 = t33 * t33;
+    const T t35 = t34 * t33;
+    const T t36 = T(1) / cross_cross;
+    const T t37 = ab_ab * J2 + t33 * ab_ap + a_minus_b * t30;
+    const T t38 = T(3) * t37 * t36 * ab_ab + T(2) * a_minus_b * t31 + T(2) * t34 * ab_ap;
+    const T t39 = T(8) * t35 * ab_ap + T(5) * t38 * t36 * ab_ab + T(8) * a_minus_b * t32;
+    const T t40 = T(8) * t32 - T(8) * t35 - t36 * t39 * ab_ap;
+    const T t41 = t31 * t31;
+    const T t42 = t34 * t34;
+    const T t43 = T(48) * a_minus_b * t41 + T(7) * t36 * ab_ab * t39 + T(48) * t42 * ab_ap;
+    const T t44 = T(48) * t42 + t36 * t43 * ab_ap - T(48) * t41;
+    const T t45 = ap_ap * t36 * t43 - T(8) * t36 * t39 - T(2) * t44 * t29 * ab_ap;
+    const T t46 = T(8) * t29 * t40 + T(2) * t45 * t29 * ab_ap + t44 * ap_ap * t29;
+    const T t47 = ap_ap * t36 * t39 + T(2) * t29 * ab_ap * t40 - T(6) * t38 * t36;
+    const T t48 = ap_ap * t45 * t29 - T(2) * t46 * t29 * ab_ap - T(8) * t47 * t29;
+    const T t49 = T(2) * t31 - T(2) * t34 - t38 * t36 * ab_ap;
+    const T t50 = T(6) * t49 * t29 + T(2) * t47 * t29 * ab_ap - ap_ap * t29 * t40;
+    const T t51 = t46 * ap_ap * t29 + T(2) * t48 * t29 * ab_ap - T(8) * t50 * t29;
+    const T t52 = delta_tau * delta_tau;
+    const T t53 = t52 * t52;
+    const T t54 = t53 * delta_tau;
+    const T t55 = tau_lo * tau_lo;
+    const T t56 = t52 * delta_tau;
+    const T t57 = t56 * t56;
+    const T t58 = T(2) * t49 * t29 * ab_ap + ap_ap * t38 * t36 - T(4) * t37 * t36;
+    const T t59 = T(6) * t58 * t29 + T(2) * t50 * t29 * ab_ap - ap_ap * t47 * t29;
+    const T t60 = T(2) * t51 * t29 * ab_ap - ap_ap * t48 * t29 - T(8) * t29 * t59;
+    const T t61 = t55 * tau_lo;
+    const T t62 = t61 * t61;
+    const T t63 = t62 * tau_lo;
+    const T t64 = t57 * delta_tau;
+    const T t65 = t33 + t37 * t36 * ab_ap - t30;
+    const T t66 = T(2) * t58 * t29 * ab_ap - ap_ap * t49 * t29 - T(4) * t65 * t29;
+    const T t67 = ap_ap * t50 * t29 - T(2) * t29 * t59 * ab_ap - T(6) * t29 * t66;
+    const T t68 = T(8) * t67 * t29 + T(2) * t29 * ab_ap * t60 - ap_ap * t51 * t29;
+    const T t69 = t55 * t55;
+    const T t70 = t69 * tau_lo;
+    G_ap = (T(7) / T(128)) * t51 * t54 * t55 * t29 + (T(7) / T(384)) * t57 * tau_lo * t29 * t60 + (T(1) / T(384)) * t36 * t63 * t43 + (T(1) / T(384)) * t64 * t29 * t68 + (T(35) / T(384)) * t53 * t48 * t61 * t29 + (T(7) / T(384)) * t44 * delta_tau * t62 * t29 - (T(7) / T(128)) * t45 * t52 * t70 * t29 - (T(35) / T(384)) * t46 * t56 * t69 * t29;
+    G_ab = (T(1) / T(384)) * t44 * t63 * t29 + (T(35) / T(384)) * t51 * t53 * t61 * t29 + (T(7) / T(128)) * t54 * t55 * t29 * t60 + (T(7) / T(384)) * t57 * tau_lo * t29 * t68 + (T(1) / T(384)) * t64 * t29 * (T(2) * t29 * t68 * ab_ap + T(8) * (ap_ap * t29 * t59 + T(2) * t67 * t29 * ab_ap + T(6) * t29 * (t58 * ap_ap * t29 - T(2) * t29 * ab_ap * t66 - T(4) * t29 * (ap_ap * t37 * t36 - T(2) * J2 - T(2) * t65 * t29 * ab_ap))) * t29 - ap_ap * t29 * t60) + (T(35) / T(384)) * t56 * t48 * t69 * t29 - (T(7) / T(384)) * t45 * delta_tau * t62 * t29 - (T(7) / T(128)) * t46 * t52 * t70 * t29;
+  }
+  const T t71 = in.sigma * in.sigma;
+  const T t72 = t71 * t71;
+  const T t73 = t72 * t72;
+  const T g_factor = -T(8) * length * t73;
+  grad[0] = (G_ap * ap0 - G_ab * ab0) * g_factor;
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = -g_factor * (G_ab * ab2 - ap2 * G_ap);
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 108 +, 329 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 475 +, 761 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ap = ap2 * ab2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
+  const T ab_bp = ab1 * bp1 + ab0 * bp0 + bp2 * ab2;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(bp_bp * t0);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -ab_ap * a_minus_b;
+  const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 18> M_flat;
+    segment_moments_gauss<T, 20>(8, 10, 8, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t4 = tau_lo * tau_lo;
+    const T t5 = t4 * tau_lo;
+    const T t6 = t5 * t5;
+    const T t7 = t6 * tau_lo;
+    const T t8 = delta_tau * delta_tau;
+    const T t9 = t8 * t8;
+    const T t10 = t9 * delta_tau;
+    const T t11 = t4 * t4;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t8 * delta_tau;
+    const T t14 = t13 * t13;
+    const T t15 = t14 * delta_tau;
+    F = M_flat[0] * t7 + T(21) * M_flat[5] * t10 * t4 + T(7) * M_flat[1] * delta_tau * t6 + T(35) * M_flat[4] * t9 * t5 + T(21) * M_flat[2] * t8 * t12 + T(7) * t14 * tau_lo * M_flat[6] + M_flat[7] * t15 + T(35) * t13 * t11 * M_flat[3];
+    G_ap = T(21) * M_flat[14] * t10 * t4 + T(21) * M_flat[11] * t8 * t12 + M_flat[16] * t15 + T(7) * M_flat[10] * delta_tau * t6 + T(35) * M_flat[13] * t9 * t5 + T(7) * t14 * M_flat[15] * tau_lo + T(35) * t13 * t11 * M_flat[12] + t7 * M_flat[9];
+    G_ab = T(7) * M_flat[16] * t14 * tau_lo + T(35) * M_flat[14] * t9 * t5 + T(21) * t10 * M_flat[15] * t4 + T(21) * t8 * t12 * M_flat[12] + M_flat[17] * t15 + T(35) * M_flat[13] * t13 * t11 + M_flat[10] * t7 + T(7) * M_flat[11] * delta_tau * t6;
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_10 = J_downward(…)
+    const T t16 = T(1) / ab_ab;
+    const T t17 = tau_lo * tau_lo;
+    const T t18 = t17 * tau_lo;
+    const T t19 = t18 * t18;
+    const T t20 = t0 * t0;
+    const T t21 = t20 * t0;
+    const T t22 = T(1) / bp_bp;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * t22;
+    const T t25 = t23 * t23;
+    const T t26 = t20 * t20;
+    const T t27 = J_downward<T>(10, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t28 = t25 * a_minus_b + ab_ap * t26 - T(8) * cross_cross * t27;
+    const T t29 = T(7) * t21 - T(7) * t24 - T(6) * t16 * ab_ap * t28;
+    const T t30 = T(6) * t16 * t28 * cross_cross + T(7) * ab_ap * t21 + T(7) * t24 * a_minus_b;
+    const T t31 = T(4) * t16 * t30 * cross_cross + T(35) * t23 * a_minus_b + T(35) * ab_ap * t20;
+    const T t32 = T(105) * ab_ap * t0 + T(105) * t22 * a_minus_b + T(2) * t16 * t31 * cross_cross;
+    const T t33 = T(2) * t16 * t31 * ab_ap + T(105) * t22 - T(105) * t0;
+    const T t34 = t16 * t31 * ap_ap - t16 * t32 - t16 * ab_ap * t33;
+    const T t35 = T(35) * t20 - T(4) * t16 * t30 * ab_ap - T(35) * t23;
+    const T t36 = T(6) * t16 * t30 * ap_ap + T(3) * t16 * t35 * ab_ap - T(2) * t16 * t31;
+    const T t37 = T(3) * t16 * t35 * ap_ap + T(2) * t16 * t33 - T(4) * t16 * ab_ap * t36;
+    const T t38 = T(2) * t34 * t16 - t16 * ab_ap * t37 - t16 * ap_ap * t36;
+    const T t39 = T(3) * t16 * t30 - T(15) * t16 * ap_ap * t28 - T(5) * t16 * ab_ap * t29;
+    const T t40 = T(8) * t16 * t39 * ab_ap + T(10) * t16 * ap_ap * t29 - T(3) * t16 * t35;
+    const T t41 = t16 * t36 + T(2) * t16 * t39 * ap_ap - t40 * t16 * ab_ap;
+    const T t42 = t16 * t37 - T(4) * t16 * ab_ap * t41 - t40 * t16 * ap_ap;
+    const T t43 = t16 * t38 - t16 * ab_ap * t42 - t16 * t41 * ap_ap;
+    const T t44 = delta_tau * delta_tau;
+    const T t45 = t44 * delta_tau;
+    const T t46 = t45 * t45;
+    const T t47 = t44 * t44;
+    const T t48 = t47 * delta_tau;
+    const T t49 = t46 * delta_tau;
+    const T t50 = t17 * t17;
+    const T t51 = t19 * tau_lo;
+    const T t52 = t50 * tau_lo;
+    F = (T(1) / T(6)) * t16 * delta_tau * t19 * t29 + (T(1) / T(30)) * t16 * t43 * t46 * tau_lo + (T(1) / T(6)) * t16 * t41 * t47 * t18 - (T(1) / T(20)) * t16 * t42 * t48 * t17 - (T(1) / T(420)) * t16 * (t16 * (T(2) * t16 * (t16 * (T(2) * t16 * ab_ap * t32 - T(105) * log_ratio) - T(4) * t34 * t16 * ab_ap - t16 * ap_ap * t33) - T(4) * t16 * ab_ap * t38 - t16 * ap_ap * t37) - t16 * t42 * ap_ap - T(4) * t16 * ab_ap * t43) * t49 - (T(1) / T(12)) * t40 * t16 * t45 * t50 - (T(1) / T(7)) * t16 * t28 * t51 - (T(1) / T(5)) * t16 * t39 * t44 * t52;
+    const T t53 = T(8) * ab_ap * t27 + t26 - t25;
+    const T t54 = T(28) * ap_ap * t27 + T(4) * t16 * t28 - T(7) * t16 * t53 * ab_ap;
+    const T t55 = T(4) * t16 * t29 - T(21) * t16 * t53 * ap_ap - T(12) * t16 * ab_ap * t54;
+    const T t56 = T(4) * t16 * t39 - T(15) * t16 * ap_ap * t54 - T(5) * t55 * t16 * ab_ap;
+    const T t57 = T(4) * t16 * ab_ap * t56 + T(5) * t55 * t16 * ap_ap + T(2) * t40 * t16;
+    const T t58 = t16 * ab_ap * t57 - t16 * t56 * ap_ap - T(2) * t16 * t41;
+    const T t59 = T(2) * t16 * t42 + T(4) * t16 * ab_ap * t58 - t16 * t57 * ap_ap;
+    G_ap = (T(7) / T(8)) * t16 * t53 * delta_tau * t19 + (T(5) / T(24)) * t55 * t16 * t45 * t50 + t51 * t27 - (T(1) / T(12)) * t16 * t56 * t47 * t18 - (T(1) / T(40)) * t16 * t57 * t48 * t17 - (T(1) / T(60)) * t16 * t58 * t46 * tau_lo - (T(1) / T(840)) * t16 * t59 * t49 - (T(3) / T(4)) * t16 * t44 * t52 * t54;
+    G_ab = (T(1) / T(420)) * t16 * (t16 * t58 * ap_ap + T(2) * t16 * t43 - t16 * t59 * ab_ap) * t49 + (T(1) / T(8)) * t16 * t53 * t51 + (T(1) / T(8)) * t55 * t16 * t44 * t52 - (T(1) / T(12)) * t16 * t56 * t45 * t50 - (T(1) / T(24)) * t16 * t57 * t47 * t18 - (T(1) / T(20)) * t16 * t58 * t48 * t17 - (T(1) / T(4)) * t16 * delta_tau * t19 * t54 - (T(1) / T(120)) * t16 * t59 * t46 * tau_lo;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t60 = sqrt(cross_cross);
+    const T t61 = T(1) / t60;
+    const T J2 = atan2(t60, ap_bp) * t61;
+    const T t62 = T(1) / ab_ab;
+    const T t63 = t0 * t0;
+    const T t64 = t63 * t0;
+    const T t65 = T(1) / bp_bp;
+    const T t66 = ab_ap * t0 + t65 * a_minus_b + ab_ab * J2;
+    const T t67 = T(1) / cross_cross;
+    const T t68 = t65 * t65;
+    const T t69 = T(3) * ab_ab * t66 * t67 + T(2) * t68 * a_minus_b + T(2) * ab_ap * t63;
+    const T t70 = t68 * t65;
+    const T t71 = T(8) * ab_ap * t64 + T(5) * ab_ab * t69 * t67 + T(8) * t70 * a_minus_b;
+    const T t72 = T(8) * t64 + ab_ap * t71 * t67 - T(8) * t70;
+    const T t73 = tau_lo * tau_lo;
+    const T t74 = t73 * tau_lo;
+    const T t75 = t74 * t74;
+    const T t76 = t75 * tau_lo;
+    const T t77 = T(6) * t69 * t67 + T(2) * t62 * ab_ap * t72 - t71 * ap_ap * t67;
+    const T t78 = delta_tau * delta_tau;
+    const T t79 = t73 * t73;
+    const T t80 = t79 * tau_lo;
+    const T t81 = T(2) * t63 + ab_ap * t69 * t67 - T(2) * t68;
+    const T t82 = t62 * ap_ap * t72 - T(2) * t62 * t77 * ab_ap - T(6) * t62 * t81;
+    const T t83 = T(2) * t62 * t81 * ab_ap + T(4) * t66 * t67 - t69 * ap_ap * t67;
+    const T t84 = T(2) * t62 * ab_ap * t82 + t62 * t77 * ap_ap - T(6) * t62 * t83;
+    const T t85 = t66 * ab_ap * t67 + t0 - t65;
+    const T t86 = T(2) * J2 + T(2) * t62 * ab_ap * t85 - t66 * ap_ap * t67;
+    const T t87 = T(4) * t62 * t85 + T(2) * t62 * t83 * ab_ap - t62 * t81 * ap_ap;
+    const T t88 = T(4) * t62 * t86 + T(2) * t62 * t87 * ab_ap - t62 * t83 * ap_ap;
+    const T t89 = T(2) * t62 * ab_ap * t84 - t62 * t82 * ap_ap - T(6) * t62 * t87;
+    const T t90 = t62 * t84 * ap_ap + T(6) * t62 * t88 - T(2) * t62 * ab_ap * t89;
+    const T t91 = t78 * delta_tau;
+    const T t92 = t91 * t91;
+    const T t93 = t92 * delta_tau;
+    const T t94 = t78 * t78;
+    const T t95 = t94 * delta_tau;
+    F = (T(7) / T(48)) * t62 * t72 * delta_tau * t75 + (T(1) / T(48)) * t71 * t76 * t67 + (T(7) / T(16)) * t62 * t77 * t78 * t80 + (T(7) / T(48)) * t62 * t90 * t92 * tau_lo - (T(1) / T(48)) * t62 * t93 * (T(6) * t62 * (t62 * t87 * ap_ap - T(2) * t62 * ab_ap * t88 - T(4) * t62 * (T(2) * t62 * t86 * ab_ap + (T(2) * ab_ap * J2 + log_ratio) * t62 - t62 * t85 * ap_ap)) - t62 * t89 * ap_ap - T(2) * t62 * t90 * ab_ap) - (T(35) / T(48)) * t62 * t84 * t94 * t74 - (T(7) / T(16)) * t62 * t89 * t95 * t73 - (T(35) / T(48)) * t62 * t82 * t91 * t79;
+    const T t96 = t68 * t68;
+    const T t97 = t63 * t63;
+    const T t98 = T(48) * t96 * a_minus_b + T(48) * ab_ap * t97 + T(7) * ab_ab * t71 * t67;
+    const T t99 = t98 * ab_ap * t67 + T(48) * t97 - T(48) * t96;
+    const T t100 = T(8) * t71 * t67 + T(2) * t62 * ab_ap * t99 - t98 * ap_ap * t67;
+    const T t101 = T(2) * t62 * ab_ap * t100 + T(8) * t62 * t72 - t62 * ap_ap * t99;
+    const T t102 = T(8) * t62 * t77 + T(2) * t62 * ab_ap * t101 - t62 * t100 * ap_ap;
+    const T t103 = T(2) * t62 * ab_ap * t102 - t62 * ap_ap * t101 - T(8) * t62 * t82;
+    const T t104 = T(2) * t62 * ab_ap * t103 - T(8) * t62 * t84 - t62 * t102 * ap_ap;
+    const T t105 = t62 * ap_ap * t103 + T(8) * t62 * t89 - T(2) * t62 * ab_ap * t104;
+    G_ap = (T(7) / T(384)) * t62 * t92 * tau_lo * t104 + (T(7) / T(384)) * t62 * t99 * delta_tau * t75 + (T(7) / T(128)) * t62 * t100 * t78 * t80 + (T(1) / T(384)) * t98 * t76 * t67 + (T(35) / T(384)) * t62 * t91 * t101 * t79 + (T(7) / T(128)) * t62 * t103 * t95 * t73 + (T(35) / T(384)) * t62 * t102 * t94 * t74 - (T(1) / T(384)) * t62 * t93 * t105;
+    G_ab = (T(1) / T(384)) * t62 * t99 * t76 + (T(7) / T(128)) * t62 * t95 * t73 * t104 + (T(7) / T(128)) * t62 * t78 * t101 * t80 + (T(1) / T(384)) * t62 * (T(8) * t62 * t90 - t62 * ap_ap * t104 - T(2) * t62 * ab_ap * t105) * t93 + (T(7) / T(384)) * t62 * t100 * delta_tau * t75 + (T(35) / T(384)) * t62 * t103 * t94 * t74 + (T(35) / T(384)) * t62 * t102 * t91 * t79 - (T(7) / T(384)) * t62 * t92 * t105 * tau_lo;
+  }
+  const T t106 = in.sigma * in.sigma;
+  const T t107 = t106 * t106;
+  const T t108 = t107 * t107;
+  const T g_factor = -T(8) * length * t108;
+  f = length * t108 * F;
+  grad[0] = (ap0 * G_ap - ab0 * G_ab) * g_factor;
+  grad[1] = -(ab1 * G_ab - ap1 * G_ap) * g_factor;
+  grad[2] = (ap2 * G_ap - G_ab * ab2) * g_factor;
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 83 +, 252 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 278 +, 569 ×, 22 /, 23 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i9_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ap2 * ab2 + ap0 * ab0 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T X;
+  const T t0 = ab_ap * a_minus_b;
+  if (t0 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t1 = T(1) / cross_cross;
+    const T t2 = ab_ap * r1;
+    X = t1 * (t2 + a_minus_b * r0) * length;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t3 = ab_ap * r1;
+    X = (ab_ap - a_minus_b) * length / (t3 - a_minus_b * r0);
+  }
+  const T t4 = T(1) / length;
+  const T J1 = asinh(X) * t4;
+  T F;
+  const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t6 = -ab_ap * a_minus_b;
+  const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 9> M_flat;
+    segment_moments_gauss<T, 20>(9, 9, 8, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t8 = tau_lo * tau_lo;
+    const T t9 = t8 * tau_lo;
+    const T t10 = t9 * t9;
+    const T t11 = t10 * tau_lo;
+    const T t12 = delta_tau * delta_tau;
+    const T t13 = t12 * t12;
+    const T t14 = t13 * t13;
+    const T t15 = t13 * delta_tau;
+    const T t16 = t12 * delta_tau;
+    const T t17 = t16 * t16;
+    const T t18 = t17 * delta_tau;
+    const T t19 = t8 * t8;
+    const T t20 = t19 * t19;
+    const T t21 = t19 * tau_lo;
+    F = T(8) * M_flat[1] * delta_tau * t11 + t14 * M_flat[8] + T(56) * t15 * t9 * M_flat[5] + T(8) * M_flat[7] * t18 * tau_lo + M_flat[0] * t20 + T(56) * M_flat[3] * t16 * t21 + T(28) * M_flat[6] * t17 * t8 + T(70) * M_flat[4] * t13 * t19 + T(28) * t12 * t10 * M_flat[2];
+  } else if (t6 >= T(0) && t7 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_9 = J_downward(…)
+    const T t22 = tau_lo * tau_lo;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * t23;
+    const T t25 = J_downward<T>(9, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t26 = t22 * tau_lo;
+    const T t27 = t26 * t26;
+    const T t28 = t27 * tau_lo;
+    const T t29 = T(1) / ab_ab;
+    const T t30 = T(1) / r0;
+    const T t31 = t30 * t30;
+    const T t32 = t31 * t31;
+    const T t33 = t32 * t31;
+    const T t34 = T(1) / r1;
+    const T t35 = t34 * t34;
+    const T t36 = t35 * t35;
+    const T t37 = t36 * t35;
+    const T t38 = T(7) * ab_ap * t25 + t33 * t30 - t37 * t34;
+    const T t39 = T(7) * cross_cross * t25 - ab_ap * t33 * t30 - t37 * t34 * a_minus_b;
+    const T t40 = T(6) * t36 * t34 - T(6) * t32 * t30 - T(5) * ab_ap * t39 * t29;
+    const T t41 = T(42) * ap_ap * t25 - T(12) * ab_ap * t29 * t38 - T(7) * t39 * t29;
+    const T t42 = T(7) * t29 * t40 + T(10) * ab_ap * t41 * t29 + T(30) * ap_ap * t29 * t38;
+    const T t43 = T(5) * t39 * cross_cross * t29 - T(6) * t36 * t34 * a_minus_b - T(6) * ab_ap * t32 * t30;
+    const T t44 = T(8) * t31 * t30 + ab_ap * t43 * t29 - T(8) * t35 * t34;
+    const T t45 = T(8) * ab_ap * t29 * t40 + T(20) * ap_ap * t39 * t29 - T(5) * t43 * t29;
+    const T t46 = T(5) * t29 * t44 + T(4) * ap_ap * t29 * t40 - T(2) * ab_ap * t45 * t29;
+    const T t47 = T(20) * t41 * ap_ap * t29 - T(8) * ab_ap * t42 * t29 - T(7) * t45 * t29;
+    const T t48 = T(4) * ap_ap * t42 * t29 + T(7) * t46 * t29 + T(2) * ab_ap * t47 * t29;
+    const T t49 = delta_tau * delta_tau;
+    const T t50 = t49 * t49;
+    const T t51 = t50 * delta_tau;
+    const T t52 = T(8) * ab_ap * t31 * t30 + T(8) * t35 * t34 * a_minus_b - t43 * cross_cross * t29;
+    const T t53 = T(2) * t43 * ap_ap * t29 + T(3) * t52 * t29 - T(4) * ab_ap * t29 * t44;
+    const T t54 = T(5) * t53 * t29 - T(4) * ab_ap * t46 * t29 - T(2) * t45 * ap_ap * t29;
+    const T t55 = T(16) * t34 + ab_ap * t52 * t29 - T(16) * t30;
+    const T t56 = T(2) * ab_ap * t53 * t29 + T(3) * t55 * t29 + T(2) * ap_ap * t29 * t44;
+    const T t57 = T(2) * ab_ap * t29 * t54 + T(2) * ap_ap * t46 * t29 + T(5) * t56 * t29;
+    const T t58 = T(7) * t29 * t54 + T(2) * t47 * ap_ap * t29 - T(4) * ab_ap * t48 * t29;
+    const T t59 = T(2) * t48 * ap_ap * t29 + T(7) * t57 * t29 + T(2) * ab_ap * t29 * t58;
+    const T t60 = t50 * t50;
+    const T t61 = t49 * delta_tau;
+    const T t62 = t61 * t61;
+    const T t63 = t62 * delta_tau;
+    const T t64 = t23 * tau_lo;
+    F = t24 * t25 + (T(8) / T(7)) * delta_tau * t28 * t29 * t38 + (T(1) / T(15)) * t48 * t51 * t26 * t29 + (T(1) / T(12)) * t47 * t50 * t23 * t29 - (T(1) / T(1680)) * (T(7) * (T(2) * t57 * ab_ap * t29 - T(5) * (T(3) * (ap_ap * t52 * t29 + T(16) * J1 - T(2) * ab_ap * t55 * t29) * t29 + ap_ap * t53 * t29 - T(2) * ab_ap * t56 * t29) * t29 - ap_ap * t29 * t54) * t29 + T(2) * ab_ap * t59 * t29 - ap_ap * t29 * t58) * t60 * t29 - (T(1) / T(210)) * t59 * t63 * tau_lo * t29 - (T(2) / T(3)) * t41 * t49 * t27 * t29 - (T(1) / T(60)) * t62 * t22 * t29 * t58 - (T(4) / T(15)) * t61 * t42 * t64 * t29;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t65 = T(1) / r0;
+    const T t66 = t65 * t65;
+    const T t67 = T(1) / r1;
+    const T t68 = ab_ap * t65 + t67 * a_minus_b;
+    const T t69 = T(1) / cross_cross;
+    const T t70 = t67 * t67;
+    const T t71 = ab_ap * t66 * t65 + T(2) * t68 * t69 * ab_ab + t70 * t67 * a_minus_b;
+    const T t72 = t70 * t70;
+    const T t73 = t66 * t66;
+    const T t74 = T(4) * t71 * t69 * ab_ab + T(3) * t72 * t67 * a_minus_b + T(3) * ab_ap * t73 * t65;
+    const T t75 = t73 * t66;
+    const T t76 = t72 * t70;
+    const T t77 = T(2) * t74 * t69 * ab_ab + T(5) * ab_ap * t75 * t65 + T(5) * t76 * t67 * a_minus_b;
+    const T t78 = tau_lo * tau_lo;
+    const T t79 = t78 * t78;
+    const T t80 = t79 * t79;
+    const T t81 = t77 * ab_ap * t69 + T(5) * t75 * t65 - T(5) * t76 * t67;
+    const T t82 = t78 * tau_lo;
+    const T t83 = t82 * t82;
+    const T t84 = t83 * tau_lo;
+    const T t85 = T(1) / ab_ab;
+    const T t86 = t66 * t65 + t71 * ab_ap * t69 - t70 * t67;
+    const T t87 = T(3) * t68 * t69 + T(2) * ab_ap * t86 * t85 - t71 * ap_ap * t69;
+    const T t88 = T(3) * t72 * t67 - ab_ap * t74 * t69 - T(3) * t73 * t65;
+    const T t89 = T(2) * ab_ap * t88 * t85 + ap_ap * t74 * t69 - T(5) * t71 * t69;
+    const T t90 = T(2) * ab_ap * t85 * t89 - ap_ap * t88 * t85 - T(5) * t86 * t85;
+    const T t91 = T(5) * t85 * t87 + ap_ap * t85 * t89 - T(2) * ab_ap * t90 * t85;
+    const T t92 = T(3) * t77 * ap_ap * t69 - T(6) * ab_ap * t81 * t85 - T(7) * t74 * t69;
+    const T t93 = T(7) * t88 * t85 + T(2) * ab_ap * t92 * t85 + T(3) * t81 * ap_ap * t85;
+    const T t94 = T(7) * t85 * t89 + T(2) * ab_ap * t93 * t85 - ap_ap * t92 * t85;
+    const T t95 = T(2) * ab_ap * t94 * t85 + T(7) * t90 * t85 - ap_ap * t93 * t85;
+    const T t96 = T(7) * t91 * t85 + ap_ap * t94 * t85 - T(2) * ab_ap * t95 * t85;
+    const T t97 = ab_ap * t68 * t69 + t65 - t67;
+    const T t98 = T(3) * t85 * t97 + T(2) * ab_ap * t85 * t87 - t86 * ap_ap * t85;
+    const T t99 = ap_ap * t90 * t85 + T(5) * t98 * t85 + T(2) * t91 * ab_ap * t85;
+    const T t100 = T(2) * ab_ap * t96 * t85 + T(7) * t99 * t85 + t95 * ap_ap * t85;
+    const T t101 = delta_tau * delta_tau;
+    const T t102 = t101 * delta_tau;
+    const T t103 = t102 * t102;
+    const T t104 = t103 * delta_tau;
+    const T t105 = t101 * t101;
+    const T t106 = t105 * delta_tau;
+    const T t107 = t105 * t105;
+    const T t108 = t79 * tau_lo;
+    F = (T(1) / T(35)) * t77 * t69 * t80 + (T(8) / T(35)) * t81 * delta_tau * t84 * t85 + (T(8) / T(105)) * t100 * t104 * tau_lo * t85 + (T(4) / T(15)) * t96 * t103 * t78 * t85 - (T(2) / T(3)) * t105 * t94 * t79 * t85 - (T(4) / T(15)) * t92 * t101 * t83 * t85 - (T(8) / T(15)) * t95 * t106 * t82 * t85 - (T(1) / T(105)) * t107 * (T(7) * (t91 * ap_ap * t85 - T(5) * (T(3) * (T(2) * ab_ap * t85 * t97 + J1 - ap_ap * t68 * t69) * t85 + T(2) * t98 * ab_ap * t85 - ap_ap * t85 * t87) * t85 - T(2) * ab_ap * t99 * t85) * t85 + t96 * ap_ap * t85 - T(2) * ab_ap * t100 * t85) * t85 - (T(8) / T(15)) * t93 * t102 * t108 * t85;
+  }
+  const T t109 = in.sigma * in.sigma;
+  const T t110 = t109 * t109;
+  const T t111 = t110 * t110;
+  const T t112 = t111 * in.sigma;
+  f = length * t112 * F;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 105 +, 336 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 308 +, 656 ×, 20 /, 23 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ap1 * ab1 + ap2 * ab2 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross_cross = cross2 * cross2 + cross1 * cross1 + cross0 * cross0;
+  const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
+  const T ab_bp = bp2 * ab2 + ab0 * bp0 + bp1 * ab1;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(11, 11, 9, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t3 = delta_tau * delta_tau;
+    const T t4 = t3 * delta_tau;
+    const T t5 = t4 * t4;
+    const T t6 = t5 * delta_tau;
+    const T t7 = tau_lo * tau_lo;
+    const T t8 = t7 * tau_lo;
+    const T t9 = t8 * t8;
+    const T t10 = t7 * t7;
+    const T t11 = t10 * t10;
+    const T t12 = t9 * tau_lo;
+    const T t13 = t3 * t3;
+    const T t14 = t13 * t13;
+    const T t15 = t10 * tau_lo;
+    const T t16 = t13 * delta_tau;
+    G_ap = T(8) * t6 * tau_lo * M_flat[7] + T(28) * M_flat[2] * t3 * t9 + M_flat[0] * t11 + T(8) * delta_tau * t12 * M_flat[1] + T(28) * M_flat[6] * t5 * t7 + T(70) * t13 * t10 * M_flat[4] + M_flat[8] * t14 + T(56) * M_flat[3] * t4 * t15 + T(56) * M_flat[5] * t16 * t8;
+    G_ab = T(8) * M_flat[8] * t6 * tau_lo + T(56) * t4 * t15 * M_flat[4] + T(70) * M_flat[5] * t13 * t10 + T(56) * M_flat[6] * t16 * t8 + T(28) * t5 * t7 * M_flat[7] + M_flat[9] * t14 + T(28) * M_flat[3] * t3 * t9 + T(8) * M_flat[2] * delta_tau * t12 + t11 * M_flat[1];
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 10> M_beyond;
+    segment_moments_beyond_end<T>(11, 11, 9, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    const T t17 = delta_tau * delta_tau;
+    const T t18 = t17 * t17;
+    const T t19 = tau_lo * tau_lo;
+    const T t20 = t19 * t19;
+    const T t21 = t19 * tau_lo;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * tau_lo;
+    const T t24 = t18 * t18;
+    const T t25 = t17 * delta_tau;
+    const T t26 = t20 * tau_lo;
+    const T t27 = t25 * t25;
+    const T t28 = t27 * delta_tau;
+    const T t29 = t18 * delta_tau;
+    const T t30 = t20 * t20;
+    G_ap = T(70) * M_beyond[4] * t18 * t20 + T(8) * M_beyond[1] * delta_tau * t23 + M_beyond[8] * t24 + T(56) * t25 * M_beyond[3] * t26 + T(8) * M_beyond[7] * t28 * tau_lo + T(28) * M_beyond[2] * t17 * t22 + T(56) * M_beyond[5] * t29 * t21 + t30 * M_beyond[0] + T(28) * t27 * M_beyond[6] * t19;
+    G_ab = T(28) * M_beyond[7] * t27 * t19 + T(56) * t29 * M_beyond[6] * t21 + T(70) * M_beyond[5] * t18 * t20 + T(8) * M_beyond[2] * delta_tau * t23 + T(28) * t17 * M_beyond[3] * t22 + T(56) * M_beyond[4] * t25 * t26 + M_beyond[9] * t24 + T(8) * M_beyond[8] * t28 * tau_lo + M_beyond[1] * t30;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t31 = T(1) / ab_ab;
+    const T t32 = delta_tau * delta_tau;
+    const T t33 = t32 * delta_tau;
+    const T t34 = t33 * t33;
+    const T t35 = tau_lo * tau_lo;
+    const T t36 = T(1) / r1;
+    const T t37 = t36 * t36;
+    const T t38 = t37 * t37;
+    const T t39 = t38 * t37;
+    const T t40 = T(1) / r0;
+    const T t41 = t40 * t40;
+    const T t42 = t41 * t41;
+    const T t43 = t42 * t41;
+    const T t44 = ab_ap * t40 + a_minus_b * t36;
+    const T t45 = T(1) / cross_cross;
+    const T t46 = T(2) * ab_ab * t44 * t45 + ab_ap * t40 * t41 + a_minus_b * t37 * t36;
+    const T t47 = T(4) * ab_ab * t46 * t45 + T(3) * a_minus_b * t38 * t36 + T(3) * ab_ap * t40 * t42;
+    const T t48 = T(5) * ab_ap * t40 * t43 + T(5) * a_minus_b * t39 * t36 + T(2) * ab_ab * t47 * t45;
+    const T t49 = T(5) * t39 * t36 - T(5) * t40 * t43 - ab_ap * t48 * t45;
+    const T t50 = T(7) * t47 * t45 - T(6) * t31 * ab_ap * t49 - T(3) * ap_ap * t48 * t45;
+    const T t51 = T(3) * t38 * t36 - T(3) * t40 * t42 - ab_ap * t47 * t45;
+    const T t52 = T(3) * t31 * t49 * ap_ap + T(2) * t31 * ab_ap * t50 - T(7) * t31 * t51;
+    const T t53 = T(2) * t31 * ab_ap * t51 + ap_ap * t47 * t45 - T(5) * t46 * t45;
+    const T t54 = T(2) * t31 * ab_ap * t52 - T(7) * t31 * t53 - t31 * t50 * ap_ap;
+    const T t55 = t42 * t42;
+    const T t56 = t38 * t38;
+    const T t57 = T(35) * ab_ap * t40 * t55 + T(8) * ab_ab * t48 * t45 + T(35) * a_minus_b * t56 * t36;
+    const T t58 = ab_ap * t57 * t45 + T(35) * t40 * t55 - T(35) * t56 * t36;
+    const T t59 = T(9) * t48 * t45 + T(2) * t31 * t58 * ab_ap - ap_ap * t57 * t45;
+    const T t60 = T(9) * t31 * t49 + t31 * t58 * ap_ap - T(2) * t31 * ab_ap * t59;
+    const T t61 = t31 * ap_ap * t59 + T(2) * t31 * t60 * ab_ap - T(3) * t31 * t50;
+    const T t62 = t31 * t60 * ap_ap + T(3) * t31 * t52 - T(2) * t31 * ab_ap * t61;
+    const T t63 = T(3) * t31 * t54 + t31 * ap_ap * t61 + T(2) * t31 * t62 * ab_ap;
+    const T t64 = t35 * tau_lo;
+    const T t65 = t64 * t64;
+    const T t66 = t65 * tau_lo;
+    const T t67 = t32 * t32;
+    const T t68 = t67 * delta_tau;
+    const T t69 = t35 * t35;
+    const T t70 = t69 * t69;
+    const T t71 = t34 * delta_tau;
+    const T t72 = t40 * t41 + ab_ap * t46 * t45 - t37 * t36;
+    const T t73 = T(2) * t31 * t53 * ab_ap - t31 * t51 * ap_ap - T(5) * t31 * t72;
+    const T t74 = T(7) * t31 * t73 + t31 * ap_ap * t52 - T(2) * t31 * t54 * ab_ap;
+    const T t75 = T(3) * t31 * t74 + t31 * t62 * ap_ap - T(2) * t31 * ab_ap * t63;
+    const T t76 = T(3) * t44 * t45 + T(2) * t31 * t72 * ab_ap - t46 * ap_ap * t45;
+    const T t77 = T(5) * t31 * t76 + t31 * t53 * ap_ap - T(2) * t31 * ab_ap * t73;
+    const T t78 = t31 * t54 * ap_ap + T(2) * t31 * ab_ap * t74 - T(7) * t31 * t77;
+    const T t79 = t31 * ap_ap * t63 + T(3) * t31 * t78 + T(2) * t31 * ab_ap * t75;
+    const T t80 = t67 * t67;
+    const T t81 = t69 * tau_lo;
+    G_ap = (T(4) / T(45)) * t31 * t34 * t35 * t63 + (T(4) / T(45)) * t31 * t32 * t65 * t59 + (T(8) / T(315)) * t31 * t58 * delta_tau * t66 + (T(8) / T(45)) * t31 * t62 * t68 * t64 + (T(1) / T(315)) * t57 * t70 * t45 - (T(8) / T(315)) * t31 * t71 * t75 * tau_lo - (T(2) / T(9)) * t31 * t67 * t69 * t61 - (T(1) / T(315)) * t31 * t79 * t80 - (T(8) / T(45)) * t31 * t60 * t33 * t81;
+    G_ab = (T(2) / T(9)) * t31 * t62 * t67 * t69 + (T(1) / T(315)) * t31 * t58 * t70 + (T(8) / T(45)) * t31 * t68 * t64 * t63 + (T(1) / T(315)) * t31 * (t31 * ap_ap * t75 + T(3) * t31 * (T(7) * t31 * (t31 * ap_ap * t73 + T(2) * t31 * ab_ap * t77 - T(5) * t31 * (t31 * t72 * ap_ap - T(3) * t31 * (t40 + ab_ap * t44 * t45 - t36) - T(2) * t31 * ab_ap * t76)) + t31 * t74 * ap_ap - T(2) * t31 * ab_ap * t78) - T(2) * t31 * ab_ap * t79) * t80 + (T(8) / T(315)) * t31 * delta_tau * t66 * t59 - (T(8) / T(315)) * t31 * t79 * t71 * tau_lo - (T(4) / T(45)) * t31 * t34 * t75 * t35 - (T(4) / T(45)) * t31 * t60 * t32 * t65 - (T(8) / T(45)) * t31 * t33 * t81 * t61;
+  }
+  const T t82 = in.sigma * in.sigma;
+  const T t83 = t82 * t82;
+  const T t84 = t83 * t83;
+  const T t85 = t84 * in.sigma;
+  const T g_factor = -T(9) * length * t85;
+  grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
+  grad[1] = (ap1 * G_ap - G_ab * ab1) * g_factor;
+  grad[2] = -(G_ab * ab2 - ap2 * G_ap) * g_factor;
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 122 +, 404 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 517 +, 937 ×, 22 /, 23 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap0 * ap0 + ap1 * ap1 + ap2 * ap2;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
+  const T ab_bp = ab2 * bp2 + ab0 * bp0 + ab1 * bp1;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T r0 = sqrt(ap_ap);
+  const T r1 = sqrt(bp_bp);
+  T X;
+  const T t0 = ab_ap * a_minus_b;
+  if (t0 >= T(0)) {
+    // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
+    const T t1 = r1 * ab_ap;
+    const T t2 = T(1) / cross_cross;
+    X = length * (t1 + a_minus_b * r0) * t2;
+  } else {
+    // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
+    const T t3 = r1 * ab_ap;
+    X = length * (ab_ap - a_minus_b) / (t3 - a_minus_b * r0);
+  }
+  const T t4 = T(1) / length;
+  const T J1 = t4 * asinh(X);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t5 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t6 = -ab_ap * a_minus_b;
+  const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t5 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 20> M_flat;
+    segment_moments_gauss<T, 20>(9, 11, 9, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t8 = delta_tau * delta_tau;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t9 * t9;
+    const T t11 = tau_lo * tau_lo;
+    const T t12 = t11 * t11;
+    const T t13 = t12 * tau_lo;
+    const T t14 = t8 * t8;
+    const T t15 = t14 * t14;
+    const T t16 = t12 * t12;
+    const T t17 = t11 * tau_lo;
+    const T t18 = t17 * t17;
+    const T t19 = t18 * tau_lo;
+    const T t20 = t10 * delta_tau;
+    const T t21 = t14 * delta_tau;
+    F = T(28) * t10 * M_flat[6] * t11 + T(56) * t9 * t13 * M_flat[3] + M_flat[8] * t15 + M_flat[0] * t16 + T(70) * M_flat[4] * t14 * t12 + T(8) * M_flat[1] * delta_tau * t19 + T(8) * M_flat[7] * t20 * tau_lo + T(28) * M_flat[2] * t8 * t18 + T(56) * M_flat[5] * t21 * t17;
+    G_ap = T(8) * M_flat[11] * delta_tau * t19 + M_flat[18] * t15 + T(28) * M_flat[16] * t10 * t11 + T(28) * t8 * M_flat[12] * t18 + T(8) * M_flat[17] * t20 * tau_lo + T(56) * M_flat[15] * t21 * t17 + T(56) * M_flat[13] * t9 * t13 + M_flat[10] * t16 + T(70) * M_flat[14] * t14 * t12;
+    G_ab = T(56) * M_flat[16] * t21 * t17 + T(56) * M_flat[14] * t9 * t13 + T(28) * M_flat[17] * t10 * t11 + T(70) * M_flat[15] * t14 * t12 + M_flat[11] * t16 + T(8) * delta_tau * M_flat[12] * t19 + T(28) * M_flat[13] * t8 * t18 + M_flat[19] * t15 + T(8) * M_flat[18] * t20 * tau_lo;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_11 = J_downward(…)
+    const T t22 = T(1) / ab_ab;
+    const T t23 = T(1) / r0;
+    const T t24 = t23 * t23;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * t25;
+    const T t27 = T(1) / r1;
+    const T t28 = t27 * t27;
+    const T t29 = t28 * t28;
+    const T t30 = t29 * t29;
+    const T t31 = J_downward<T>(11, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t32 = ab_ap * t26 * t23 + t27 * t30 * a_minus_b - T(9) * t31 * cross_cross;
+    const T t33 = t29 * t28;
+    const T t34 = t25 * t24;
+    const T t35 = T(7) * t22 * t32 * cross_cross + T(8) * t27 * t33 * a_minus_b + T(8) * ab_ap * t34 * t23;
+    const T t36 = T(48) * t27 * t29 + T(5) * t22 * t35 * ab_ap - T(48) * t25 * t23;
+    const T t37 = T(48) * t27 * t29 * a_minus_b + T(48) * ab_ap * t25 * t23 + T(5) * t22 * t35 * cross_cross;
+    const T t38 = T(20) * t22 * t35 * ap_ap - T(8) * t22 * ab_ap * t36 - T(5) * t22 * t37;
+    const T t39 = T(7) * t22 * ab_ap * t32 + T(8) * t27 * t33 - T(8) * t34 * t23;
+    const T t40 = T(12) * t22 * ab_ap * t39 + T(7) * t22 * t35 - T(42) * t22 * t32 * ap_ap;
+    const T t41 = T(7) * t22 * t36 + T(10) * t22 * t40 * ab_ap - T(30) * t22 * t39 * ap_ap;
+    const T t42 = T(7) * t22 * t38 + T(20) * t22 * t40 * ap_ap - T(8) * t22 * t41 * ab_ap;
+    const T t43 = delta_tau * delta_tau;
+    const T t44 = t43 * t43;
+    const T t45 = tau_lo * tau_lo;
+    const T t46 = t45 * t45;
+    const T t47 = T(64) * t24 * t23 - t22 * ab_ap * t37 - T(64) * t27 * t28;
+    const T t48 = T(5) * t22 * t47 + T(4) * t22 * t36 * ap_ap + T(2) * t22 * t38 * ab_ap;
+    const T t49 = T(4) * t22 * t41 * ap_ap + T(7) * t22 * t48 + T(2) * t22 * ab_ap * t42;
+    const T t50 = t44 * delta_tau;
+    const T t51 = t45 * tau_lo;
+    const T t52 = T(64) * ab_ap * t24 * t23 + t22 * t37 * cross_cross + T(64) * t27 * t28 * a_minus_b;
+    const T t53 = T(2) * t22 * ap_ap * t37 + T(4) * t22 * ab_ap * t47 - T(3) * t22 * t52;
+    const T t54 = T(2) * t22 * t38 * ap_ap - T(4) * t22 * ab_ap * t48 - T(5) * t22 * t53;
+    const T t55 = T(4) * t22 * ab_ap * t49 - T(7) * t22 * t54 - T(2) * t22 * ap_ap * t42;
+    const T t56 = t43 * delta_tau;
+    const T t57 = t56 * t56;
+    const T t58 = T(128) * t23 - t22 * ab_ap * t52 - T(128) * t27;
+    const T t59 = T(3) * t22 * t58 + T(2) * t22 * ab_ap * t53 - T(2) * t22 * ap_ap * t47;
+    const T t60 = T(2) * t22 * t48 * ap_ap + T(2) * t22 * ab_ap * t54 - T(5) * t22 * t59;
+    const T t61 = T(2) * t22 * ab_ap * t55 - T(7) * t22 * t60 - T(2) * t22 * t49 * ap_ap;
+    const T t62 = t57 * delta_tau;
+    const T t63 = t51 * t51;
+    const T t64 = t63 * tau_lo;
+    const T t65 = t46 * t46;
+    const T t66 = t44 * t44;
+    const T t67 = t46 * tau_lo;
+    F = (T(1) / T(96)) * t22 * t42 * t44 * t46 + (T(1) / T(120)) * t22 * t49 * t50 * t51 + (T(1) / T(480)) * t22 * t55 * t57 * t45 + (T(1) / T(1680)) * t22 * t61 * t62 * tau_lo - (T(1) / T(7)) * t22 * t39 * delta_tau * t64 - (T(1) / T(8)) * t22 * t32 * t65 - (T(1) / T(12)) * t22 * t40 * t43 * t63 - (T(1) / T(13440)) * t22 * (T(7) * t22 * (T(2) * t22 * t60 * ab_ap - T(5) * t22 * (T(2) * t22 * ab_ap * t59 + T(3) * t22 * (T(2) * t22 * t58 * ab_ap + t22 * ap_ap * t52 + T(128) * J1) - t22 * t53 * ap_ap) - t22 * ap_ap * t54) + t22 * t55 * ap_ap - T(2) * t22 * ab_ap * t61) * t66 - (T(1) / T(30)) * t22 * t41 * t56 * t67;
+    const T t68 = t26 * t23 + T(9) * ab_ap * t31 - t27 * t30;
+    const T t69 = T(72) * t31 * ap_ap + T(9) * t22 * t32 - T(16) * t68 * t22 * ab_ap;
+    const T t70 = T(14) * t22 * t69 * ab_ap + T(56) * t68 * t22 * ap_ap + T(9) * t22 * t39;
+    const T t71 = T(14) * t22 * t69 * ap_ap - T(3) * t22 * t40 - T(4) * t22 * ab_ap * t70;
+    const T t72 = T(3) * t22 * t41 - T(10) * t22 * ap_ap * t70 - T(10) * t22 * ab_ap * t71;
+    const T t73 = T(3) * t22 * t42 - T(20) * t22 * ap_ap * t71 - T(8) * t22 * t72 * ab_ap;
+    const T t74 = T(4) * t22 * t72 * ap_ap + T(2) * t22 * t73 * ab_ap + T(3) * t22 * t49;
+    const T t75 = T(4) * t22 * ab_ap * t74 + T(3) * t22 * t55 - T(2) * t22 * t73 * ap_ap;
+    G_ap = (T(8) / T(9)) * t68 * t22 * delta_tau * t64 + (T(5) / T(72)) * t22 * t71 * t44 * t46 + t31 * t65 + (T(1) / T(720)) * t22 * t73 * t57 * t45 + (T(1) / T(40320)) * t22 * t66 * t75 + (T(1) / T(2520)) * t22 * t74 * t62 * tau_lo - (T(1) / T(90)) * t22 * t72 * t50 * t51 - (T(7) / T(18)) * t22 * t69 * t43 * t63 - (T(1) / T(9)) * t22 * t56 * t67 * t70;
+    G_ab = (T(1) / T(9)) * t68 * t22 * t65 + (T(1) / T(720)) * t22 * t74 * t57 * t45 + (T(1) / T(5040)) * t22 * t62 * tau_lo * t75 + (T(1) / T(360)) * t22 * t73 * t50 * t51 + (T(1) / T(18)) * t22 * t71 * t56 * t67 - (T(1) / T(18)) * t22 * t43 * t63 * t70 - (T(1) / T(9)) * t22 * t69 * delta_tau * t64 - (T(1) / T(72)) * t22 * t72 * t44 * t46 - (T(1) / T(40320)) * t22 * (T(2) * t22 * t74 * ap_ap - T(2) * t22 * ab_ap * t75 - T(3) * t22 * t61) * t66;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t76 = T(1) / ab_ab;
+    const T t77 = T(1) / r1;
+    const T t78 = T(1) / r0;
+    const T t79 = t77 * a_minus_b + ab_ap * t78;
+    const T t80 = T(1) / cross_cross;
+    const T t81 = t78 * t78;
+    const T t82 = t77 * t77;
+    const T t83 = ab_ap * t81 * t78 + t77 * t82 * a_minus_b + T(2) * ab_ab * t79 * t80;
+    const T t84 = t81 * t78 + ab_ap * t80 * t83 - t77 * t82;
+    const T t85 = T(3) * t79 * t80 + T(2) * t84 * t76 * ab_ap - ap_ap * t80 * t83;
+    const T t86 = t82 * t82;
+    const T t87 = t81 * t81;
+    const T t88 = T(3) * t77 * t86 * a_minus_b + T(4) * ab_ab * t80 * t83 + T(3) * ab_ap * t87 * t78;
+    const T t89 = t88 * ab_ap * t80 + T(3) * t87 * t78 - T(3) * t77 * t86;
+    const T t90 = T(2) * t76 * ab_ap * t89 + T(5) * t80 * t83 - t88 * ap_ap * t80;
+    const T t91 = t76 * ap_ap * t89 - T(2) * t76 * ab_ap * t90 - T(5) * t84 * t76;
+    const T t92 = T(5) * t76 * t85 - t76 * ap_ap * t90 - T(2) * t76 * ab_ap * t91;
+    const T t93 = t78 + ab_ap * t79 * t80 - t77;
+    const T t94 = T(3) * t76 * t93 + T(2) * t76 * ab_ap * t85 - t84 * t76 * ap_ap;
+    const T t95 = T(2) * t76 * t92 * ab_ap + T(5) * t76 * t94 + t76 * ap_ap * t91;
+    const T t96 = t86 * t82;
+    const T t97 = t87 * t81;
+    const T t98 = T(2) * ab_ab * t88 * t80 + T(5) * t77 * t96 * a_minus_b + T(5) * ab_ap * t97 * t78;
+    const T t99 = ab_ap * t98 * t80 + T(5) * t97 * t78 - T(5) * t77 * t96;
+    const T t100 = T(6) * t76 * ab_ap * t99 + T(7) * t88 * t80 - T(3) * t98 * ap_ap * t80;
+    const T t101 = T(7) * t76 * t89 + T(2) * t76 * t100 * ab_ap - T(3) * t76 * t99 * ap_ap;
+    const T t102 = T(7) * t76 * t90 + T(2) * t76 * t101 * ab_ap - t76 * t100 * ap_ap;
+    const T t103 = T(7) * t76 * t91 + t76 * t101 * ap_ap - T(2) * t76 * ab_ap * t102;
+    const T t104 = T(2) * t76 * ab_ap * t103 + t76 * t102 * ap_ap - T(7) * t76 * t92;
+    const T t105 = T(2) * t104 * t76 * ab_ap - t76 * t103 * ap_ap - T(7) * t76 * t95;
+    const T t106 = delta_tau * delta_tau;
+    const T t107 = t106 * t106;
+    const T t108 = t107 * t107;
+    const T t109 = t106 * delta_tau;
+    const T t110 = tau_lo * tau_lo;
+    const T t111 = t110 * t110;
+    const T t112 = t111 * tau_lo;
+    const T t113 = t110 * tau_lo;
+    const T t114 = t113 * t113;
+    const T t115 = t114 * tau_lo;
+    const T t116 = t111 * t111;
+    const T t117 = t107 * delta_tau;
+    const T t118 = t109 * t109;
+    const T t119 = t118 * delta_tau;
+    F = (T(1) / T(105)) * t76 * (T(7) * t76 * (T(2) * t76 * t95 * ab_ap - t76 * t92 * ap_ap - T(5) * t76 * (t76 * t85 * ap_ap - T(3) * t76 * (T(2) * t76 * ab_ap * t93 + J1 - ap_ap * t79 * t80) - T(2) * t76 * t94 * ab_ap)) + t104 * t76 * ap_ap - T(2) * t76 * ab_ap * t105) * t108 + (T(8) / T(15)) * t76 * t101 * t109 * t112 + (T(8) / T(35)) * t76 * t99 * delta_tau * t115 + (T(1) / T(35)) * t98 * t80 * t116 + (T(4) / T(15)) * t76 * t100 * t106 * t114 + (T(2) / T(3)) * t76 * t102 * t107 * t111 - (T(8) / T(15)) * t76 * t103 * t117 * t113 - (T(8) / T(105)) * t76 * t105 * t119 * tau_lo - (T(4) / T(15)) * t104 * t76 * t118 * t110;
+    const T t120 = t87 * t87;
+    const T t121 = t86 * t86;
+    const T t122 = T(35) * ab_ap * t120 * t78 + T(35) * t77 * t121 * a_minus_b + T(8) * ab_ab * t98 * t80;
+    const T t123 = T(35) * t120 * t78 + ab_ap * t122 * t80 - T(35) * t77 * t121;
+    const T t124 = T(2) * t76 * ab_ap * t123 + T(9) * t98 * t80 - ap_ap * t122 * t80;
+    const T t125 = t76 * t123 * ap_ap - T(9) * t76 * t99 - T(2) * t124 * t76 * ab_ap;
+    const T t126 = T(3) * t76 * t100 - t124 * t76 * ap_ap - T(2) * t76 * ab_ap * t125;
+    const T t127 = T(2) * t76 * ab_ap * t126 + T(3) * t76 * t101 + t76 * t125 * ap_ap;
+    const T t128 = t76 * ap_ap * t126 - T(2) * t76 * ab_ap * t127 - T(3) * t76 * t102;
+    const T t129 = T(3) * t76 * t103 + T(2) * t76 * ab_ap * t128 + t76 * t127 * ap_ap;
+    const T t130 = t76 * t128 * ap_ap - T(2) * t76 * t129 * ab_ap - T(3) * t104 * t76;
+    G_ap = (T(8) / T(45)) * t76 * t127 * t117 * t113 + (T(4) / T(45)) * t124 * t76 * t106 * t114 + (T(8) / T(315)) * t76 * t123 * delta_tau * t115 + (T(1) / T(315)) * t76 * t108 * t130 + (T(1) / T(315)) * t122 * t80 * t116 + (T(2) / T(9)) * t76 * t126 * t107 * t111 - (T(8) / T(315)) * t76 * t129 * t119 * tau_lo - (T(8) / T(45)) * t76 * t125 * t109 * t112 - (T(4) / T(45)) * t76 * t128 * t118 * t110;
+    G_ab = (T(8) / T(45)) * t76 * t126 * t109 * t112 + (T(1) / T(315)) * (t76 * t129 * ap_ap + T(2) * t76 * ab_ap * t130 - T(3) * t76 * t105) * t76 * t108 + (T(8) / T(315)) * t124 * t76 * delta_tau * t115 + (T(2) / T(9)) * t76 * t127 * t107 * t111 + (T(1) / T(315)) * t76 * t123 * t116 + (T(8) / T(315)) * t76 * t119 * t130 * tau_lo - (T(4) / T(45)) * t76 * t129 * t118 * t110 - (T(8) / T(45)) * t76 * t128 * t117 * t113 - (T(4) / T(45)) * t76 * t125 * t106 * t114;
+  }
+  const T t131 = in.sigma * in.sigma;
+  const T t132 = t131 * t131;
+  const T t133 = t132 * t132;
+  const T t134 = t133 * in.sigma;
+  const T g_factor = -T(9) * length * t134;
+  f = length * t134 * F;
+  grad[0] = -g_factor * (ab0 * G_ab - ap0 * G_ap);
+  grad[1] = -g_factor * (G_ab * ab1 - ap1 * G_ap);
+  grad[2] = g_factor * (ap2 * G_ap - ab2 * G_ab);
+  return f;
+}
+
+/// the field, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 95 +, 278 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 300 +, 513 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab2 * ap2 + ap1 * ab1 + ap0 * ab0;
+  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T cross_cross = cross0 * cross0 + cross2 * cross2 + cross1 * cross1;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = ap0 * bp0 + ap1 * bp1 + bp2 * ap2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(t0 * bp_bp);
+  T F;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -a_minus_b * ab_ap;
+  const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 10> M_flat;
+    segment_moments_gauss<T, 20>(10, 10, 9, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t4 = delta_tau * delta_tau;
+    const T t5 = t4 * delta_tau;
+    const T t6 = t5 * t5;
+    const T t7 = t6 * delta_tau;
+    const T t8 = tau_lo * tau_lo;
+    const T t9 = t4 * t4;
+    const T t10 = t8 * t8;
+    const T t11 = t10 * tau_lo;
+    const T t12 = t9 * delta_tau;
+    const T t13 = t10 * t10;
+    const T t14 = t13 * tau_lo;
+    const T t15 = t8 * tau_lo;
+    const T t16 = t15 * t15;
+    const T t17 = t16 * tau_lo;
+    const T t18 = t9 * t9;
+    const T t19 = t18 * delta_tau;
+    F = T(36) * M_flat[7] * t7 * t8 + T(126) * M_flat[4] * t9 * t11 + T(126) * t12 * t10 * M_flat[5] + t14 * M_flat[0] + T(36) * t4 * t17 * M_flat[2] + T(84) * t5 * t16 * M_flat[3] + T(84) * t6 * t15 * M_flat[6] + T(9) * M_flat[1] * delta_tau * t13 + t19 * M_flat[9] + T(9) * t18 * M_flat[8] * tau_lo;
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_10 = J_downward(…)
+    const T t20 = T(1) / ab_ab;
+    const T t21 = t0 * t0;
+    const T t22 = t21 * t0;
+    const T t23 = T(1) / bp_bp;
+    const T t24 = t23 * t23;
+    const T t25 = t24 * t23;
+    const T t26 = J_downward<T>(10, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t27 = t24 * t24;
+    const T t28 = t21 * t21;
+    const T t29 = T(8) * t26 * cross_cross - a_minus_b * t27 - t28 * ab_ap;
+    const T t30 = T(7) * t22 * ab_ap + T(7) * a_minus_b * t25 - T(6) * cross_cross * t20 * t29;
+    const T t31 = T(35) * t21 - T(4) * t30 * t20 * ab_ap - T(35) * t24;
+    const T t32 = T(7) * t22 + T(6) * t20 * t29 * ab_ap - T(7) * t25;
+    const T t33 = T(15) * ap_ap * t20 * t29 + T(3) * t30 * t20 - T(5) * t32 * t20 * ab_ap;
+    const T t34 = T(3) * t20 * t31 - T(8) * t33 * t20 * ab_ap - T(10) * ap_ap * t32 * t20;
+    const T t35 = t28 + T(8) * t26 * ab_ap - t27;
+    const T t36 = T(28) * t26 * ap_ap - T(7) * t20 * ab_ap * t35 - T(4) * t20 * t29;
+    const T t37 = T(4) * t32 * t20 - T(12) * t36 * t20 * ab_ap - T(21) * ap_ap * t20 * t35;
+    const T t38 = T(5) * t37 * t20 * ab_ap + T(15) * ap_ap * t36 * t20 - T(4) * t33 * t20;
+    const T t39 = T(2) * t34 * t20 + T(4) * t20 * t38 * ab_ap - T(5) * t37 * ap_ap * t20;
+    const T t40 = T(35) * a_minus_b * t24 + T(4) * t30 * cross_cross * t20 + T(35) * t21 * ab_ap;
+    const T t41 = T(3) * t20 * t31 * ab_ap + T(6) * ap_ap * t30 * t20 - T(2) * t40 * t20;
+    const T t42 = t34 * t20 * ab_ap + T(2) * ap_ap * t33 * t20 + t41 * t20;
+    const T t43 = ap_ap * t20 * t38 - t39 * t20 * ab_ap - T(2) * t42 * t20;
+    const T t44 = T(105) * t23 + T(2) * t40 * t20 * ab_ap - T(105) * t0;
+    const T t45 = T(4) * t41 * t20 * ab_ap - T(2) * t44 * t20 - T(3) * ap_ap * t20 * t31;
+    const T t46 = T(4) * t42 * t20 * ab_ap + t20 * t45 - ap_ap * t34 * t20;
+    const T t47 = ap_ap * t39 * t20 + T(4) * t43 * t20 * ab_ap - T(2) * t20 * t46;
+    const T t48 = T(2) * t40 * cross_cross * t20 + T(105) * t0 * ab_ap + T(105) * a_minus_b * t23;
+    const T t49 = t44 * t20 * ab_ap + t48 * t20 - ap_ap * t40 * t20;
+    const T t50 = T(2) * t49 * t20 + t41 * ap_ap * t20 - t20 * t45 * ab_ap;
+    const T t51 = ap_ap * t42 * t20 + t20 * t50 - t20 * t46 * ab_ap;
+    const T t52 = t47 * t20 * ab_ap + T(2) * t51 * t20 - ap_ap * t43 * t20;
+    const T t53 = delta_tau * delta_tau;
+    const T t54 = t53 * t53;
+    const T t55 = t54 * t54;
+    const T t56 = t55 * delta_tau;
+    const T t57 = tau_lo * tau_lo;
+    const T t58 = t57 * t57;
+    const T t59 = t58 * t58;
+    const T t60 = t59 * tau_lo;
+    const T t61 = t53 * delta_tau;
+    const T t62 = t57 * tau_lo;
+    const T t63 = t62 * t62;
+    const T t64 = t54 * delta_tau;
+    const T t65 = t58 * tau_lo;
+    const T t66 = t63 * tau_lo;
+    const T t67 = t61 * t61;
+    const T t68 = t67 * delta_tau;
+    F = (T(1) / T(840)) * (t47 * ap_ap * t20 - T(2) * (ap_ap * t20 * t46 + T(4) * t51 * t20 * ab_ap - (T(2) * (ap_ap * t44 * t20 + (T(105) * log_ratio - T(2) * t48 * t20 * ab_ap) * t20 - T(4) * t49 * t20 * ab_ap) * t20 - ap_ap * t20 * t45 - T(4) * t20 * t50 * ab_ap) * t20) * t20 - T(4) * t20 * t52 * ab_ap) * t56 * t20 + t26 * t60 + (T(1) / T(2)) * t37 * t61 * t63 * t20 + (T(9) / T(8)) * delta_tau * t59 * t20 * t35 + (T(3) / T(20)) * t39 * t64 * t58 * t20 + (T(3) / T(10)) * t54 * t65 * t20 * t38 - (T(9) / T(7)) * t53 * t36 * t66 * t20 - (T(1) / T(5)) * t43 * t67 * t62 * t20 - (T(3) / T(140)) * t55 * tau_lo * t20 * t52 - (T(3) / T(70)) * t47 * t68 * t57 * t20;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t69 = sqrt(cross_cross);
+    const T t70 = T(1) / t69;
+    const T J2 = atan2(t69, ap_bp) * t70;
+    const T t71 = delta_tau * delta_tau;
+    const T t72 = t71 * delta_tau;
+    const T t73 = t72 * t72;
+    const T t74 = T(1) / ab_ab;
+    const T t75 = t0 * t0;
+    const T t76 = T(1) / bp_bp;
+    const T t77 = t76 * t76;
+    const T t78 = T(1) / cross_cross;
+    const T t79 = J2 * ab_ab + t0 * ab_ap + a_minus_b * t76;
+    const T t80 = T(2) * a_minus_b * t77 + T(2) * t75 * ab_ap + T(3) * t78 * ab_ab * t79;
+    const T t81 = T(2) * t75 + t80 * t78 * ab_ap - T(2) * t77;
+    const T t82 = t75 * t0;
+    const T t83 = t77 * t76;
+    const T t84 = T(8) * t82 * ab_ap + T(8) * a_minus_b * t83 + T(5) * t80 * t78 * ab_ab;
+    const T t85 = T(8) * t82 + t84 * t78 * ab_ap - T(8) * t83;
+    const T t86 = ap_ap * t84 * t78 - T(6) * t80 * t78 - T(2) * t85 * t74 * ab_ap;
+    const T t87 = T(6) * t74 * t81 - ap_ap * t85 * t74 - T(2) * t74 * t86 * ab_ap;
+    const T t88 = T(4) * t78 * t79 + T(2) * t74 * t81 * ab_ap - ap_ap * t80 * t78;
+    const T t89 = T(2) * t74 * t87 * ab_ap + T(6) * t74 * t88 + ap_ap * t74 * t86;
+    const T t90 = t75 * t75;
+    const T t91 = t77 * t77;
+    const T t92 = T(48) * a_minus_b * t91 + T(7) * t84 * t78 * ab_ab + T(48) * t90 * ab_ap;
+    const T t93 = T(48) * t90 + t78 * t92 * ab_ap - T(48) * t91;
+    const T t94 = T(2) * t74 * t93 * ab_ap + T(8) * t84 * t78 - ap_ap * t78 * t92;
+    const T t95 = T(2) * t94 * t74 * ab_ap + T(8) * t85 * t74 - ap_ap * t74 * t93;
+    const T t96 = T(2) * t95 * t74 * ab_ap - T(8) * t74 * t86 - ap_ap * t94 * t74;
+    const T t97 = ap_ap * t95 * t74 - T(8) * t74 * t87 - T(2) * t74 * ab_ap * t96;
+    const T t98 = T(8) * t74 * t89 - T(2) * t74 * t97 * ab_ap - ap_ap * t74 * t96;
+    const T t99 = tau_lo * tau_lo;
+    const T t100 = t99 * tau_lo;
+    const T t101 = t71 * t71;
+    const T t102 = t99 * t99;
+    const T t103 = t102 * tau_lo;
+    const T t104 = t100 * t100;
+    const T t105 = t102 * t102;
+    const T t106 = t105 * tau_lo;
+    const T t107 = t104 * tau_lo;
+    const T t108 = t73 * delta_tau;
+    const T t109 = t76 - t0 - t78 * t79 * ab_ap;
+    const T t110 = T(4) * t109 * t74 + ap_ap * t74 * t81 - T(2) * t74 * t88 * ab_ap;
+    const T t111 = T(6) * t74 * t110 + ap_ap * t74 * t87 - T(2) * t74 * ab_ap * t89;
+    const T t112 = T(2) * t98 * t74 * ab_ap + ap_ap * t74 * t97 - T(8) * t74 * t111;
+    const T t113 = t101 * delta_tau;
+    const T t114 = T(2) * J2 - T(2) * t109 * t74 * ab_ap - ap_ap * t78 * t79;
+    const T t115 = T(2) * t74 * t110 * ab_ap + ap_ap * t74 * t88 - T(4) * t114 * t74;
+    const T t116 = T(6) * t115 * t74 + T(2) * t74 * ab_ap * t111 + ap_ap * t74 * t89;
+    const T t117 = ap_ap * t98 * t74 + T(8) * t74 * t116 - T(2) * t74 * t112 * ab_ap;
+    const T t118 = t101 * t101;
+    const T t119 = t118 * delta_tau;
+    F = (T(7) / T(32)) * t73 * t98 * t100 * t74 + (T(21) / T(64)) * t101 * t103 * t74 * t96 + (T(7) / T(32)) * t95 * t72 * t104 * t74 + (T(1) / T(384)) * t78 * t106 * t92 + (T(3) / T(32)) * t94 * t71 * t107 * t74 + (T(3) / T(32)) * t108 * t99 * t74 * t112 + (T(3) / T(128)) * delta_tau * t105 * t74 * t93 - (T(21) / T(64)) * t113 * t102 * t74 * t97 - (T(3) / T(128)) * t117 * t118 * tau_lo * t74 - (T(1) / T(384)) * (T(2) * t117 * t74 * ab_ap + ap_ap * t74 * t112 + T(8) * (T(6) * t74 * (T(2) * t115 * t74 * ab_ap - ap_ap * t74 * t110 - T(4) * (T(2) * t114 * t74 * ab_ap + (log_ratio + T(2) * J2 * ab_ap) * t74 + ap_ap * t109 * t74) * t74) + T(2) * t74 * t116 * ab_ap - ap_ap * t74 * t111) * t74) * t119 * t74;
+  }
+  const T t120 = in.sigma * in.sigma;
+  const T t121 = t120 * t120;
+  const T t122 = t121 * in.sigma;
+  const T t123 = t122 * t122;
+  f = F * t123 * length;
+  return f;
+}
+
+/// its gradient ∇_P f, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 120 +, 373 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 332 +, 588 ×, 20 /, 1 sqrt, 0 atan, 0 log/asinh.
+template <class T>
+std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  std::array<T, 3> grad;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
+  const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
+  const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  T G_ap;
+  T G_ab;
+  const T t0 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t1 = -a_minus_b * ab_ap;
+  const T t2 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t0 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 11> M_flat;
+    segment_moments_gauss<T, 20>(12, 12, 10, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t3 = tau_lo * tau_lo;
+    const T t4 = t3 * t3;
+    const T t5 = t4 * t4;
+    const T t6 = delta_tau * delta_tau;
+    const T t7 = t6 * t6;
+    const T t8 = t7 * t7;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t6 * delta_tau;
+    const T t11 = t3 * tau_lo;
+    const T t12 = t11 * t11;
+    const T t13 = t10 * t10;
+    const T t14 = t5 * tau_lo;
+    const T t15 = t7 * delta_tau;
+    const T t16 = t12 * tau_lo;
+    const T t17 = t13 * delta_tau;
+    const T t18 = t4 * tau_lo;
+    G_ap = T(9) * delta_tau * t5 * M_flat[1] + M_flat[9] * t9 + T(84) * M_flat[3] * t10 * t12 + T(84) * M_flat[6] * t13 * t11 + T(9) * M_flat[8] * t8 * tau_lo + M_flat[0] * t14 + T(126) * M_flat[5] * t15 * t4 + T(36) * M_flat[2] * t6 * t16 + T(36) * t17 * t3 * M_flat[7] + T(126) * t7 * t18 * M_flat[4];
+    G_ab = T(9) * M_flat[9] * t8 * tau_lo + T(36) * M_flat[3] * t6 * t16 + T(126) * M_flat[6] * t15 * t4 + T(84) * t10 * t12 * M_flat[4] + t14 * M_flat[1] + T(84) * t13 * t11 * M_flat[7] + T(126) * M_flat[5] * t7 * t18 + t9 * M_flat[10] + T(36) * M_flat[8] * t17 * t3 + T(9) * M_flat[2] * delta_tau * t5;
+  } else if (t1 >= T(0) && t2 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
+    std::array<T, 11> M_beyond;
+    segment_moments_beyond_end<T>(12, 12, 10, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    const T t19 = delta_tau * delta_tau;
+    const T t20 = t19 * t19;
+    const T t21 = tau_lo * tau_lo;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * tau_lo;
+    const T t24 = t19 * delta_tau;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * delta_tau;
+    const T t27 = t21 * tau_lo;
+    const T t28 = t27 * t27;
+    const T t29 = t28 * tau_lo;
+    const T t30 = t22 * t22;
+    const T t31 = t30 * tau_lo;
+    const T t32 = t20 * delta_tau;
+    const T t33 = t20 * t20;
+    const T t34 = t33 * delta_tau;
+    G_ap = T(126) * M_beyond[4] * t20 * t23 + T(36) * M_beyond[7] * t26 * t21 + T(84) * M_beyond[3] * t24 * t28 + T(36) * t19 * M_beyond[2] * t29 + M_beyond[0] * t31 + T(9) * M_beyond[1] * delta_tau * t30 + T(84) * t25 * t27 * M_beyond[6] + T(126) * M_beyond[5] * t32 * t22 + t34 * M_beyond[9] + T(9) * M_beyond[8] * t33 * tau_lo;
+    G_ab = T(36) * M_beyond[3] * t19 * t29 + T(9) * delta_tau * M_beyond[2] * t30 + T(84) * M_beyond[7] * t25 * t27 + M_beyond[1] * t31 + T(9) * t33 * tau_lo * M_beyond[9] + T(126) * M_beyond[5] * t20 * t23 + T(126) * t32 * t22 * M_beyond[6] + T(36) * M_beyond[8] * t26 * t21 + T(84) * M_beyond[4] * t24 * t28 + M_beyond[10] * t34;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t35 = sqrt(cross_cross);
+    const T t36 = T(1) / t35;
+    const T J2 = t36 * atan2(t35, ap_bp);
+    const T t37 = delta_tau * delta_tau;
+    const T t38 = t37 * delta_tau;
+    const T t39 = t38 * t38;
+    const T t40 = t39 * delta_tau;
+    const T t41 = tau_lo * tau_lo;
+    const T t42 = T(1) / ap_ap;
+    const T t43 = t42 * t42;
+    const T t44 = t43 * t42;
+    const T t45 = T(1) / bp_bp;
+    const T t46 = t45 * t45;
+    const T t47 = t46 * t45;
+    const T t48 = a_minus_b * t45 + ab_ap * t42 + J2 * ab_ab;
+    const T t49 = T(1) / cross_cross;
+    const T t50 = T(3) * t48 * t49 * ab_ab + T(2) * ab_ap * t43 + T(2) * a_minus_b * t46;
+    const T t51 = T(8) * ab_ap * t44 + T(8) * a_minus_b * t47 + T(5) * t50 * t49 * ab_ab;
+    const T t52 = ab_ap * t51 * t49 + T(8) * t44 - T(8) * t47;
+    const T t53 = T(1) / ab_ab;
+    const T t54 = T(2) * ab_ap * t52 * t53 + T(6) * t50 * t49 - ap_ap * t51 * t49;
+    const T t55 = t46 * t46;
+    const T t56 = t43 * t43;
+    const T t57 = T(48) * a_minus_b * t55 + T(7) * t51 * t49 * ab_ab + T(48) * ab_ap * t56;
+    const T t58 = T(48) * t55 - T(48) * t56 - ab_ap * t57 * t49;
+    const T t59 = T(2) * ab_ap * t58 * t53 + ap_ap * t57 * t49 - T(8) * t51 * t49;
+    const T t60 = T(2) * ab_ap * t59 * t53 - T(8) * t52 * t53 - ap_ap * t58 * t53;
+    const T t61 = T(8) * t54 * t53 + ap_ap * t59 * t53 - T(2) * ab_ap * t53 * t60;
+    const T t62 = T(2) * t43 + ab_ap * t50 * t49 - T(2) * t46;
+    const T t63 = T(6) * t62 * t53 + T(2) * ab_ap * t54 * t53 - t52 * ap_ap * t53;
+    const T t64 = T(2) * ab_ap * t61 * t53 + ap_ap * t53 * t60 + T(8) * t63 * t53;
+    const T t65 = t56 * t42;
+    const T t66 = t55 * t45;
+    const T t67 = T(128) * a_minus_b * t66 + T(128) * ab_ap * t65 + T(3) * t57 * t49 * ab_ab;
+    const T t68 = T(128) * t65 + ab_ap * t67 * t49 - T(128) * t66;
+    const T t69 = T(10) * t57 * t49 + T(6) * ab_ap * t68 * t53 - T(3) * ap_ap * t67 * t49;
+    const T t70 = T(3) * ap_ap * t68 * t53 + T(10) * t58 * t53 - T(2) * ab_ap * t53 * t69;
+    const T t71 = T(2) * t70 * ab_ap * t53 + T(10) * t59 * t53 + ap_ap * t53 * t69;
+    const T t72 = T(2) * ab_ap * t71 * t53 + T(10) * t53 * t60 - t70 * ap_ap * t53;
+    const T t73 = T(10) * t61 * t53 + ap_ap * t71 * t53 - T(2) * t72 * ab_ap * t53;
+    const T t74 = T(10) * t64 * t53 + t72 * ap_ap * t53 + T(2) * ab_ap * t73 * t53;
+    const T t75 = t50 * ap_ap * t49 - T(2) * ab_ap * t62 * t53 - T(4) * t48 * t49;
+    const T t76 = t54 * ap_ap * t53 + T(6) * t75 * t53 - T(2) * t63 * ab_ap * t53;
+    const T t77 = T(2) * ab_ap * t64 * t53 - T(8) * t76 * t53 - t61 * ap_ap * t53;
+    const T t78 = T(10) * t77 * t53 + T(2) * ab_ap * t74 * t53 - t73 * ap_ap * t53;
+    const T t79 = t37 * t37;
+    const T t80 = t79 * t79;
+    const T t81 = t41 * tau_lo;
+    const T t82 = t81 * t81;
+    const T t83 = t82 * tau_lo;
+    const T t84 = t41 * t41;
+    const T t85 = t84 * t84;
+    const T t86 = t85 * tau_lo;
+    const T t87 = ab_ap * t48 * t49 + t42 - t45;
+    const T t88 = T(2) * t75 * ab_ap * t53 + ap_ap * t62 * t53 - T(4) * t87 * t53;
+    const T t89 = t63 * ap_ap * t53 + T(2) * t76 * ab_ap * t53 + T(6) * t88 * t53;
+    const T t90 = T(2) * t77 * ab_ap * t53 - ap_ap * t64 * t53 - T(8) * t89 * t53;
+    const T t91 = ap_ap * t74 * t53 - T(10) * t90 * t53 - T(2) * ab_ap * t78 * t53;
+    const T t92 = t80 * delta_tau;
+    const T t93 = t84 * tau_lo;
+    const T t94 = t79 * delta_tau;
+    G_ap = (T(3) / T(320)) * t40 * t41 * t74 * t53 + (T(3) / T(1280)) * t78 * t80 * tau_lo * t53 + (T(7) / T(320)) * t73 * t39 * t81 * t53 + (T(3) / T(320)) * t37 * t83 * t53 * t69 + (T(1) / T(1280)) * t67 * t49 * t86 + (T(9) / T(1280)) * t68 * delta_tau * t85 * t53 - (T(1) / T(3840)) * t91 * t92 * t53 - (T(21) / T(640)) * t79 * t93 * t71 * t53 - (T(7) / T(320)) * t70 * t38 * t82 * t53 - (T(21) / T(640)) * t72 * t94 * t84 * t53;
+    G_ab = (T(3) / T(1280)) * delta_tau * t85 * t53 * t69 + (T(1) / T(1280)) * t68 * t86 * t53 + (T(7) / T(320)) * t39 * t81 * t74 * t53 + (T(3) / T(320)) * t78 * t40 * t41 * t53 + (T(21) / T(640)) * t73 * t94 * t84 * t53 - (T(3) / T(320)) * t70 * t37 * t83 * t53 - (T(7) / T(320)) * t38 * t82 * t71 * t53 - (T(21) / T(640)) * t72 * t79 * t93 * t53 - (T(1) / T(3840)) * t92 * (T(10) * (t77 * ap_ap * t53 - T(8) * (t76 * ap_ap * t53 + T(6) * (t75 * ap_ap * t53 + T(4) * (T(2) * J2 + T(2) * ab_ap * t87 * t53 - ap_ap * t48 * t49) * t53 - T(2) * ab_ap * t88 * t53) * t53 - T(2) * t89 * ab_ap * t53) * t53 - T(2) * ab_ap * t90 * t53) * t53 + t78 * ap_ap * t53 + T(2) * ab_ap * t91 * t53) * t53 - (T(3) / T(1280)) * t91 * t80 * tau_lo * t53;
+  }
+  const T t95 = in.sigma * in.sigma;
+  const T t96 = t95 * t95;
+  const T t97 = t96 * in.sigma;
+  const T t98 = t97 * t97;
+  const T g_factor = -T(10) * length * t98;
+  grad[0] = -(ab0 * G_ab - ap0 * G_ap) * g_factor;
+  grad[1] = g_factor * (ap1 * G_ap - ab1 * G_ab);
+  grad[2] = (ap2 * G_ap - ab2 * G_ab) * g_factor;
+  return grad;
+}
+
+/// the field and its gradient, where
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+/// Operations: 138 +, 443 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 561 +, 888 ×, 21 /, 1 sqrt, 0 atan, 1 log/asinh.
+template <class T>
+T scalis_segment_inverse_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  T f;
+  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).
+  const bool swap_ends = in.tau1 < in.tau0;
+  const std::array<T, 3>& end_a = swap_ends ? in.b : in.a;
+  const std::array<T, 3>& end_b = swap_ends ? in.a : in.b;
+  const T& tau_lo = swap_ends ? in.tau1 : in.tau0;
+  const T& tau_hi = swap_ends ? in.tau0 : in.tau1;
+  const T delta_tau = tau_hi - tau_lo;
+  const T ab0 = end_b[0] - end_a[0];
+  const T ap0 = in.p[0] - end_a[0];
+  const T bp0 = in.p[0] - end_b[0];
+  const T ab1 = end_b[1] - end_a[1];
+  const T ap1 = in.p[1] - end_a[1];
+  const T bp1 = in.p[1] - end_b[1];
+  const T ab2 = end_b[2] - end_a[2];
+  const T ap2 = in.p[2] - end_a[2];
+  const T bp2 = in.p[2] - end_b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T cross_cross = cross1 * cross1 + cross0 * cross0 + cross2 * cross2;
+  const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
+  const T ab_bp = ab1 * bp1 + bp0 * ab0 + ab2 * bp2;
+  const T ap_bp = bp0 * ap0 + ap1 * bp1 + ap2 * bp2;
+  const T length = sqrt(ab_ab);
+  const T a_minus_b = -ab_bp;
+  const T t0 = T(1) / ap_ap;
+  const T log_ratio = log(bp_bp * t0);
+  T F;
+  T G_ap;
+  T G_ab;
+  const T t1 = cross_cross - T(2) * ab_ab * ab_ab;
+  const T t2 = -ab_ap * a_minus_b;
+  const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t1 >= T(0)) {
+    // P far from the line (D ≥ 2a²): every moment by segment_moments_gauss<T, 20>
+    std::array<T, 22> M_flat;
+    segment_moments_gauss<T, 20>(10, 12, 10, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    const T t4 = delta_tau * delta_tau;
+    const T t5 = tau_lo * tau_lo;
+    const T t6 = t5 * tau_lo;
+    const T t7 = t6 * t6;
+    const T t8 = t7 * tau_lo;
+    const T t9 = t4 * delta_tau;
+    const T t10 = t9 * t9;
+    const T t11 = t4 * t4;
+    const T t12 = t11 * delta_tau;
+    const T t13 = t5 * t5;
+    const T t14 = t11 * t11;
+    const T t15 = t14 * delta_tau;
+    const T t16 = t13 * t13;
+    const T t17 = t10 * delta_tau;
+    const T t18 = t16 * tau_lo;
+    const T t19 = t13 * tau_lo;
+    F = T(36) * t4 * t8 * M_flat[2] + T(84) * t10 * M_flat[6] * t6 + T(126) * t12 * t13 * M_flat[5] + M_flat[9] * t15 + T(84) * t9 * t7 * M_flat[3] + T(9) * delta_tau * t16 * M_flat[1] + T(36) * t17 * t5 * M_flat[7] + t18 * M_flat[0] + T(126) * t11 * t19 * M_flat[4] + T(9) * t14 * tau_lo * M_flat[8];
+    G_ap = t18 * M_flat[11] + T(126) * t12 * t13 * M_flat[16] + T(84) * t9 * t7 * M_flat[14] + T(36) * t17 * t5 * M_flat[18] + T(36) * t4 * t8 * M_flat[13] + T(126) * M_flat[15] * t11 * t19 + t15 * M_flat[20] + T(84) * t10 * t6 * M_flat[17] + T(9) * delta_tau * t16 * M_flat[12] + T(9) * t14 * tau_lo * M_flat[19];
+    G_ab = T(36) * t17 * t5 * M_flat[19] + T(9) * t14 * tau_lo * M_flat[20] + t15 * M_flat[21] + T(84) * M_flat[15] * t9 * t7 + T(84) * t10 * t6 * M_flat[18] + T(126) * t11 * t19 * M_flat[16] + T(9) * delta_tau * t16 * M_flat[13] + T(36) * t4 * t8 * M_flat[14] + t18 * M_flat[12] + T(126) * t12 * t13 * M_flat[17];
+  } else if (t2 >= T(0) && t3 >= T(0)) {
+    // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_12 = J_downward(…)
+    const T t20 = delta_tau * delta_tau;
+    const T t21 = tau_lo * tau_lo;
+    const T t22 = t21 * tau_lo;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * tau_lo;
+    const T t25 = T(1) / ab_ab;
+    const T t26 = T(1) / bp_bp;
+    const T t27 = t26 * t26;
+    const T t28 = t27 * t27;
+    const T t29 = t28 * t26;
+    const T t30 = t0 * t0;
+    const T t31 = t30 * t30;
+    const T t32 = t31 * t0;
+    const T t33 = J_downward<T>(12, ab_ab, cross_cross, -ab_ap, ap_ap, a_minus_b, bp_bp);
+    const T t34 = t29 * a_minus_b + ab_ap * t32 - T(10) * cross_cross * t33;
+    const T t35 = T(9) * t31 - T(8) * t25 * t34 * ab_ap - T(9) * t28;
+    const T t36 = T(9) * t28 * a_minus_b + T(8) * cross_cross * t25 * t34 + T(9) * ab_ap * t31;
+    const T t37 = T(28) * t25 * t34 * ap_ap + T(7) * t25 * ab_ap * t35 - T(4) * t25 * t36;
+    const T t38 = t20 * t20;
+    const T t39 = t38 * delta_tau;
+    const T t40 = t21 * t21;
+    const T t41 = t27 * t26;
+    const T t42 = t30 * t0;
+    const T t43 = T(21) * t41 + T(2) * t25 * ab_ap * t36 - T(21) * t42;
+    const T t44 = T(4) * t25 * t37 * ab_ap - T(7) * t25 * t35 * ap_ap - T(4) * t43 * t25;
+    const T t45 = T(2) * cross_cross * t25 * t36 + T(21) * ab_ap * t42 + T(21) * t41 * a_minus_b;
+    const T t46 = T(5) * t43 * t25 * ab_ap + T(3) * t25 * t45 - T(5) * t25 * t36 * ap_ap;
+    const T t47 = T(5) * t25 * t44 * ab_ap - T(4) * t46 * t25 - T(5) * t25 * t37 * ap_ap;
+    const T t48 = T(105) * t30 - T(105) * t27 - T(4) * t25 * ab_ap * t45;
+    const T t49 = T(8) * t46 * t25 * ab_ap - T(10) * t43 * t25 * ap_ap - T(3) * t25 * t48;
+    const T t50 = T(4) * t47 * t25 * ab_ap - T(2) * t25 * t49 - T(5) * t25 * t44 * ap_ap;
+    const T t51 = t40 * tau_lo;
+    const T t52 = t20 * delta_tau;
+    const T t53 = t52 * t52;
+    const T t54 = T(105) * ab_ap * t30 + T(105) * t27 * a_minus_b + T(4) * cross_cross * t25 * t45;
+    const T t55 = T(2) * t25 * t54 - T(3) * t25 * ab_ap * t48 - T(6) * t25 * t45 * ap_ap;
+    const T t56 = t25 * t55 + t25 * ab_ap * t49 - T(2) * t46 * t25 * ap_ap;
+    const T t57 = t25 * ab_ap * t50 - T(2) * t25 * t56 - t47 * t25 * ap_ap;
+    const T t58 = t38 * t38;
+    const T t59 = t58 * delta_tau;
+    const T t60 = T(315) * t26 + T(2) * t25 * ab_ap * t54 - T(315) * t0;
+    const T t61 = T(3) * t25 * ap_ap * t48 + T(2) * t60 * t25 + T(4) * t25 * ab_ap * t55;
+    const T t62 = t25 * t61 + T(4) * t25 * ab_ap * t56 - t25 * t49 * ap_ap;
+    const T t63 = t25 * ap_ap * t50 + T(2) * t25 * t62 - T(4) * t25 * t57 * ab_ap;
+    const T t64 = T(315) * ab_ap * t0 + T(315) * t26 * a_minus_b + T(2) * cross_cross * t25 * t54;
+    const T t65 = t60 * t25 * ab_ap + t25 * t64 - t25 * t54 * ap_ap;
+    const T t66 = t25 * ab_ap * t61 + T(2) * t25 * t65 - t25 * t55 * ap_ap;
+    const T t67 = t25 * t56 * ap_ap - t25 * t62 * ab_ap - t25 * t66;
+    const T t68 = t25 * t57 * ap_ap + t25 * t63 * ab_ap - T(2) * t67 * t25;
+    const T t69 = t40 * t40;
+    const T t70 = t53 * delta_tau;
+    const T t71 = t69 * tau_lo;
+    F = (T(1) / T(7)) * t20 * t24 * t25 * t37 + (T(1) / T(20)) * t39 * t40 * t25 * t50 + (T(1) / T(10)) * t38 * t51 * t47 * t25 + (T(1) / T(6)) * t52 * t23 * t25 * t44 + (T(1) / T(15)) * t53 * t22 * t25 * t57 + (T(1) / T(2520)) * t59 * t25 * (t25 * t63 * ap_ap + T(2) * t25 * (T(4) * t67 * t25 * ab_ap + t25 * t62 * ap_ap + t25 * (t25 * t61 * ap_ap - T(4) * t25 * t66 * ab_ap - T(2) * t25 * ((T(2) * t25 * t64 * ab_ap - T(315) * log_ratio) * t25 + T(4) * t25 * ab_ap * t65 - t60 * t25 * ap_ap))) - T(4) * t68 * t25 * ab_ap) + (T(1) / T(8)) * delta_tau * t69 * t25 * t35 - (T(1) / T(70)) * t70 * t21 * t25 * t63 - (T(1) / T(140)) * t58 * t68 * tau_lo * t25 - (T(1) / T(9)) * t71 * t25 * t34;
+    const T t72 = T(10) * t33 * ab_ap + t32 - t29;
+    const T t73 = T(9) * t25 * t72 * ab_ap - T(45) * t33 * ap_ap - T(5) * t25 * t34;
+    const T t74 = T(16) * t25 * ab_ap * t73 + T(5) * t25 * t35 - T(36) * t25 * t72 * ap_ap;
+    const T t75 = T(5) * t25 * t37 + T(7) * t25 * ab_ap * t74 - T(28) * t25 * t73 * ap_ap;
+    const T t76 = T(5) * t25 * t44 + T(4) * t25 * t75 * ab_ap - T(7) * t25 * t74 * ap_ap;
+    const T t77 = t47 * t25 + t25 * t76 * ab_ap - t25 * t75 * ap_ap;
+    const T t78 = T(4) * t25 * ab_ap * t77 + t25 * t50 - t25 * t76 * ap_ap;
+    const T t79 = t25 * ab_ap * t78 + t25 * t57 - t25 * t77 * ap_ap;
+    const T t80 = t25 * t78 * ap_ap + t25 * t63 - T(4) * t25 * t79 * ab_ap;
+    G_ap = (T(1) / T(70)) * t70 * t21 * t25 * t78 + (T(9) / T(10)) * delta_tau * t69 * t25 * t72 + t71 * t33 + (T(7) / T(30)) * t52 * t23 * t25 * t74 + (T(1) / T(140)) * t58 * tau_lo * t25 * t79 + (T(1) / T(20)) * t39 * t40 * t25 * t76 + (T(1) / T(15)) * t53 * t22 * t25 * t77 + (T(1) / T(10)) * t38 * t51 * t25 * t75 + (T(4) / T(5)) * t20 * t24 * t25 * t73 - (T(1) / T(2520)) * t59 * t25 * t80;
+    G_ab = (T(1) / T(20)) * t38 * t51 * t25 * t76 + (T(1) / T(35)) * t70 * t21 * t25 * t79 + (T(1) / T(10)) * t20 * t24 * t25 * t74 + (T(1) / T(30)) * t53 * t22 * t25 * t78 + (T(1) / T(5)) * delta_tau * t69 * t25 * t73 + (T(1) / T(10)) * t71 * t25 * t72 + (T(1) / T(10)) * t39 * t40 * t25 * t77 + (T(1) / T(15)) * t52 * t23 * t25 * t75 - (T(1) / T(1260)) * t59 * t25 * (t25 * ab_ap * t80 + t25 * t79 * ap_ap + t68 * t25) - (T(1) / T(280)) * t58 * tau_lo * t25 * t80;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t81 = sqrt(cross_cross);
+    const T t82 = T(1) / t81;
+    const T J2 = t82 * atan2(t81, ap_bp);
+    const T t83 = tau_lo * tau_lo;
+    const T t84 = t83 * t83;
+    const T t85 = t84 * t84;
+    const T t86 = T(1) / ab_ab;
+    const T t87 = T(1) / cross_cross;
+    const T t88 = T(1) / bp_bp;
+    const T t89 = t88 * t88;
+    const T t90 = t89 * t89;
+    const T t91 = ab_ap * t0 + t88 * a_minus_b + ab_ab * J2;
+    const T t92 = t0 * t0;
+    const T t93 = T(3) * t87 * ab_ab * t91 + T(2) * ab_ap * t92 + T(2) * t89 * a_minus_b;
+    const T t94 = t92 * t0;
+    const T t95 = t89 * t88;
+    const T t96 = T(5) * t87 * ab_ab * t93 + T(8) * ab_ap * t94 + T(8) * t95 * a_minus_b;
+    const T t97 = t92 * t92;
+    const T t98 = T(48) * t90 * a_minus_b + T(7) * t87 * ab_ab * t96 + T(48) * ab_ap * t97;
+    const T t99 = t87 * ab_ap * t98 + T(48) * t97 - T(48) * t90;
+    const T t100 = delta_tau * delta_tau;
+    const T t101 = t100 * delta_tau;
+    const T t102 = t101 * t101;
+    const T t103 = t102 * delta_tau;
+    const T t104 = T(8) * t87 * t96 + T(2) * t86 * t99 * ab_ap - t87 * t98 * ap_ap;
+    const T t105 = t87 * t96 * ab_ap + T(8) * t94 - T(8) * t95;
+    const T t106 = T(2) * t86 * t105 * ab_ap + T(6) * t87 * t93 - t87 * t96 * ap_ap;
+    const T t107 = T(8) * t86 * t105 + T(2) * t86 * ab_ap * t104 - t86 * t99 * ap_ap;
+    const T t108 = t86 * t104 * ap_ap - T(8) * t86 * t106 - T(2) * t107 * t86 * ab_ap;
+    const T t109 = t87 * t93 * ab_ap + T(2) * t92 - T(2) * t89;
+    const T t110 = T(6) * t86 * t109 + T(2) * t86 * t106 * ab_ap - t86 * t105 * ap_ap;
+    const T t111 = T(2) * t86 * ab_ap * t108 + t107 * t86 * ap_ap - T(8) * t86 * t110;
+    const T t112 = T(2) * t86 * t109 * ab_ap + T(4) * t87 * t91 - t87 * t93 * ap_ap;
+    const T t113 = T(6) * t86 * t112 + T(2) * t86 * t110 * ab_ap - t86 * t106 * ap_ap;
+    const T t114 = t86 * t108 * ap_ap + T(8) * t86 * t113 - T(2) * t86 * t111 * ab_ap;
+    const T t115 = t88 - t0 - t87 * t91 * ab_ap;
+    const T t116 = T(4) * t115 * t86 + t86 * t109 * ap_ap - T(2) * t86 * t112 * ab_ap;
+    const T t117 = t86 * t110 * ap_ap + T(6) * t86 * t116 - T(2) * t86 * t113 * ab_ap;
+    const T t118 = t86 * t111 * ap_ap + T(2) * t114 * t86 * ab_ap - T(8) * t86 * t117;
+    const T t119 = t83 * tau_lo;
+    const T t120 = t119 * t119;
+    const T t121 = t85 * tau_lo;
+    const T t122 = t120 * tau_lo;
+    const T t123 = t100 * t100;
+    const T t124 = t123 * delta_tau;
+    const T t125 = T(2) * t115 * t86 * ab_ap + t87 * t91 * ap_ap - T(2) * J2;
+    const T t126 = T(4) * t86 * t125 + t86 * t112 * ap_ap + T(2) * t86 * t116 * ab_ap;
+    const T t127 = T(2) * t86 * ab_ap * t117 + t86 * t113 * ap_ap + T(6) * t86 * t126;
+    const T t128 = t114 * t86 * ap_ap + T(8) * t86 * t127 - T(2) * t86 * t118 * ab_ap;
+    const T t129 = t123 * t123;
+    const T t130 = t129 * delta_tau;
+    const T t131 = t84 * tau_lo;
+    F = (T(3) / T(128)) * delta_tau * t85 * t86 * t99 + (T(3) / T(32)) * t103 * t83 * t86 * t118 + (T(7) / T(32)) * t107 * t101 * t120 * t86 + (T(7) / T(32)) * t102 * t114 * t119 * t86 + (T(1) / T(384)) * t87 * t121 * t98 + (T(3) / T(32)) * t100 * t122 * t86 * t104 - (T(21) / T(64)) * t124 * t84 * t86 * t111 - (T(3) / T(128)) * t128 * t129 * tau_lo * t86 - (T(1) / T(384)) * t130 * t86 * (t86 * t118 * ap_ap + T(2) * t128 * t86 * ab_ap - T(8) * t86 * (t86 * t117 * ap_ap - T(2) * t86 * ab_ap * t127 - T(6) * t86 * (T(4) * t86 * (T(2) * t86 * t125 * ab_ap - t86 * (T(2) * ab_ap * J2 + log_ratio) - t115 * t86 * ap_ap) + T(2) * t86 * t126 * ab_ap - t86 * t116 * ap_ap))) - (T(21) / T(64)) * t123 * t131 * t86 * t108;
+    const T t132 = t90 * t88;
+    const T t133 = t97 * t0;
+    const T t134 = T(128) * t132 * a_minus_b + T(3) * t87 * ab_ab * t98 + T(128) * ab_ap * t133;
+    const T t135 = t87 * t134 * ab_ap + T(128) * t133 - T(128) * t132;
+    const T t136 = T(6) * t86 * ab_ap * t135 + T(10) * t87 * t98 - T(3) * t87 * t134 * ap_ap;
+    const T t137 = T(10) * t86 * t99 + T(2) * t86 * ab_ap * t136 - T(3) * t86 * t135 * ap_ap;
+    const T t138 = t86 * t136 * ap_ap - T(10) * t86 * t104 - T(2) * t86 * ab_ap * t137;
+    const T t139 = t86 * t137 * ap_ap + T(2) * t86 * ab_ap * t138 - T(10) * t107 * t86;
+    const T t140 = T(10) * t86 * t108 + T(2) * t86 * ab_ap * t139 - t86 * t138 * ap_ap;
+    const T t141 = t86 * t139 * ap_ap - T(10) * t86 * t111 - T(2) * t86 * ab_ap * t140;
+    const T t142 = T(10) * t114 * t86 + T(2) * t141 * t86 * ab_ap + t86 * t140 * ap_ap;
+    const T t143 = T(10) * t86 * t118 + T(2) * t86 * ab_ap * t142 - t141 * t86 * ap_ap;
+    G_ap = (T(3) / T(1280)) * t129 * tau_lo * t86 * t142 + (T(7) / T(320)) * t101 * t120 * t86 * t137 + (T(3) / T(320)) * t103 * t83 * t141 * t86 + (T(9) / T(1280)) * delta_tau * t85 * t86 * t135 + (T(1) / T(3840)) * t130 * t86 * t143 + (T(1) / T(1280)) * t87 * t134 * t121 + (T(3) / T(320)) * t100 * t122 * t86 * t136 - (T(21) / T(640)) * t123 * t131 * t86 * t138 - (T(21) / T(640)) * t124 * t84 * t86 * t139 - (T(7) / T(320)) * t102 * t119 * t86 * t140;
+    G_ab = (T(7) / T(320)) * t102 * t119 * t141 * t86 + (T(3) / T(1280)) * t129 * tau_lo * t86 * t143 + (T(3) / T(320)) * t100 * t122 * t86 * t137 + (T(3) / T(1280)) * delta_tau * t85 * t86 * t136 + (T(3) / T(320)) * t103 * t83 * t86 * t142 + (T(1) / T(1280)) * t121 * t86 * t135 - (T(7) / T(320)) * t101 * t120 * t86 * t138 - (T(1) / T(3840)) * t130 * t86 * (t86 * t142 * ap_ap + T(10) * t128 * t86 - T(2) * t86 * t143 * ab_ap) - (T(21) / T(640)) * t123 * t131 * t86 * t139 - (T(21) / T(640)) * t124 * t84 * t86 * t140;
+  }
+  const T t144 = in.sigma * in.sigma;
+  const T t145 = t144 * t144;
+  const T t146 = t145 * in.sigma;
+  const T t147 = t146 * t146;
+  const T g_factor = -T(10) * length * t147;
+  f = length * F * t147;
+  grad[0] = g_factor * (G_ap * ap0 - G_ab * ab0);
+  grad[1] = g_factor * (G_ap * ap1 - G_ab * ab1);
+  grad[2] = g_factor * (G_ap * ap2 - ab2 * G_ab);
+  return f;
+}
+
+}  // namespace skelconv::generated
