@@ -13,12 +13,13 @@
 #include <vector>
 
 #include "skelconv/geometry.hpp"
+#include "skelconv/scalis_segment.hpp"
 #include "skelconv/segment.hpp"
 
 namespace skelconv {
 
-/// One skeleton element. Add polygon / SCALIS primitives here.
-using Primitive = std::variant<Segment>;
+/// One skeleton element. Add polygon primitives here.
+using Primitive = std::variant<Segment, ScalisSegment>;
 
 class Skeleton {
  public:

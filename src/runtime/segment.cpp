@@ -11,51 +11,17 @@
 
 #include "generated/segment_table.hpp"
 #include "skelconv/clip.hpp"
+#include "primitive_checks.hpp"
 
 namespace skelconv {
 namespace {
 
+using detail::format_degree_ranges;
+using detail::format_point;
+using detail::require_finite_point;
+using detail::require_positive_parameter;
+
 constexpr double infinity = std::numeric_limits<double>::infinity();
-
-std::string format_point(const Vec3& p) { return fmt::format("({}, {}, {})", p.x(), p.y(), p.z()); }
-
-/// "1..16", or "2..5, 7..16" should the table have gaps.
-std::string format_degree_ranges(const std::vector<int>& degrees) {
-  std::string text;
-  for (std::size_t first = 0; first < degrees.size();) {
-    std::size_t last = first;
-    while (last + 1 < degrees.size() && degrees[last + 1] == degrees[last] + 1) ++last;
-    if (!text.empty()) text += ", ";
-    text += first == last ? fmt::format("{}", degrees[first])
-                          : fmt::format("{}..{}", degrees[first], degrees[last]);
-    first = last + 1;
-  }
-  return text.empty() ? "none" : text;
-}
-
-void require_finite_point(const Vec3& v, const char* where) {
-  if (!v.allFinite()) throw InputError(fmt::format("must be finite, got {}", format_point(v)), where);
-}
-
-/// See Segment::degenerate_length_ratio for the rule and its reason.
-void require_non_degenerate(const Vec3& a, const Vec3& b) {
-  if (a == b) throw InputError(fmt::format("degenerate segment: a and b are the same point {}", format_point(a)));
-  const double length_squared = (b - a).squaredNorm();
-  if (!std::isfinite(length_squared)) {
-    throw InputError("segment too long: |b - a|² overflows double precision");
-  }
-  const double length = std::sqrt(length_squared);
-  const double largest_coordinate = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
-  if (length < Segment::degenerate_length_ratio * largest_coordinate) {
-    throw InputError(fmt::format(
-        "degenerate segment: length |b - a| = {} is below {} times the largest coordinate magnitude {}, "
-        "too short to be represented accurately at that position",
-        length, Segment::degenerate_length_ratio, largest_coordinate));
-  }
-  if (length_squared < std::numeric_limits<double>::min()) {
-    throw InputError(fmt::format("degenerate segment: length {} is too small for double precision", length));
-  }
-}
 
 /// Degree of w(t) = Σ w_k t^k after dropping trailing zero coefficients.
 int validated_weight_degree(std::span<const double> weight) {
@@ -76,18 +42,13 @@ int validated_weight_degree(std::span<const double> weight) {
   return degree;
 }
 
-void require_positive_parameter(double value, const char* where) {
-  if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
-  if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
-}
-
 }  // namespace
 
 Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::span<const double> weight)
     : a_(a), b_(b), kernel_(kernel) {
   require_finite_point(a, "a");
   require_finite_point(b, "b");
-  require_non_degenerate(a, b);
+  detail::require_non_degenerate(a, b, degenerate_length_ratio);
   weight_degree_ = validated_weight_degree(weight);
   if (kernel.family == KernelFamily::cauchy) require_positive_parameter(kernel.s, "kernel.s");
   if (kernel.family == KernelFamily::compact) require_positive_parameter(kernel.R, "kernel.R");

@@ -1,0 +1,57 @@
+// Implementation of primitive_checks.hpp.
+#include "primitive_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "skelconv/errors.hpp"
+
+namespace skelconv::detail {
+
+std::string format_point(const Vec3& p) { return fmt::format("({}, {}, {})", p.x(), p.y(), p.z()); }
+
+std::string format_degree_ranges(const std::vector<int>& degrees) {
+  std::string text;
+  for (std::size_t first = 0; first < degrees.size();) {
+    std::size_t last = first;
+    while (last + 1 < degrees.size() && degrees[last + 1] == degrees[last] + 1) ++last;
+    if (!text.empty()) text += ", ";
+    text += first == last ? fmt::format("{}", degrees[first])
+                          : fmt::format("{}..{}", degrees[first], degrees[last]);
+    first = last + 1;
+  }
+  return text.empty() ? "none" : text;
+}
+
+void require_finite_point(const Vec3& v, const char* where) {
+  if (!v.allFinite()) throw InputError(fmt::format("must be finite, got {}", format_point(v)), where);
+}
+
+void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_length_ratio) {
+  if (a == b) throw InputError(fmt::format("degenerate segment: a and b are the same point {}", format_point(a)));
+  const double length_squared = (b - a).squaredNorm();
+  if (!std::isfinite(length_squared)) {
+    throw InputError("segment too long: |b - a|² overflows double precision");
+  }
+  const double length = std::sqrt(length_squared);
+  const double largest_coordinate = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  if (length < degenerate_length_ratio * largest_coordinate) {
+    throw InputError(fmt::format(
+        "degenerate segment: length |b - a| = {} is below {} times the largest coordinate magnitude {}, "
+        "too short to be represented accurately at that position",
+        length, degenerate_length_ratio, largest_coordinate));
+  }
+  if (length_squared < std::numeric_limits<double>::min()) {
+    throw InputError(fmt::format("degenerate segment: length {} is too small for double precision", length));
+  }
+}
+
+void require_positive_parameter(double value, const char* where) {
+  if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
+  if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
+}
+
+}  // namespace skelconv::detail
