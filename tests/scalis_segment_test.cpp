@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "scalis_reference_quadrature.hpp"
+#include "skelconv/skeleton_file.hpp"
 
 namespace skelconv {
 namespace {
@@ -298,6 +299,32 @@ TEST(ScalisSegmentValidation, RejectsBadInputWithItsLocation) {
 TEST(ScalisSegmentValidation, QueryPointMustBeFinite) {
   const ScalisSegment segment(Vec3(0, 0, 0), Vec3(1, 0, 0), 0.5, 0.5, ScalisKernel::cauchy(4, 1.0));
   EXPECT_THROW(segment.value(Vec3(std::nan(""), 0, 0)), InputError);
+}
+
+// ---------------------------------------------------------------------------
+// The skeleton file: a scalis_segment reads into the same ScalisSegment.
+
+TEST(ScalisSegmentFile, ReadsEveryFieldAndDefaultsIsoToOne) {
+  const Skeleton skeleton = parse_skeleton_json(R"({"primitives": [
+    {"type": "scalis_segment", "a": [0,0,0], "b": [2,0,0], "radius": [0.2, 0.6],
+     "kernel": {"family": "cauchy", "degree": 4, "sigma": 1.5}},
+    {"type": "scalis_segment", "a": [0,1,0], "b": [2,1,0], "radius": [0.5, 0],
+     "kernel": {"family": "inverse", "degree": 3, "sigma": 1.0}, "iso": 0.5},
+    {"type": "scalis_segment", "a": [0,2,0], "b": [2,2,0], "radius": [0.5, 0.5],
+     "kernel": {"family": "compact", "degree": 6, "sigma": 2.0}}]})");
+  ASSERT_EQ(skeleton.size(), 3u);
+  const auto& cauchy = std::get<ScalisSegment>(skeleton.primitives()[0]);
+  EXPECT_EQ(cauchy.b(), Vec3(2, 0, 0));
+  EXPECT_EQ(cauchy.tau0(), 0.2);
+  EXPECT_EQ(cauchy.tau1(), 0.6);
+  EXPECT_EQ(cauchy.kernel().family, KernelFamily::cauchy);
+  EXPECT_EQ(cauchy.kernel().degree, 4);
+  EXPECT_EQ(cauchy.kernel().sigma, 1.5);
+  EXPECT_EQ(cauchy.iso(), 1.0);
+  const auto& inverse = std::get<ScalisSegment>(skeleton.primitives()[1]);
+  EXPECT_EQ(inverse.iso(), 0.5);
+  EXPECT_EQ(inverse.evaluator_name(), "scalis_segment_inverse_i3");
+  EXPECT_EQ(std::get<ScalisSegment>(skeleton.primitives()[2]).kernel().family, KernelFamily::compact);
 }
 
 }  // namespace
