@@ -3,6 +3,7 @@
 // invariance, divergent points and validation.
 #include "skelconv/scalis_segment.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -142,6 +143,57 @@ const std::map<std::string, std::pair<double, double>> kTolerance = {
 
 TEST(ScalisSegmentValues, InverseMatchesDefinition) { check_family(KernelFamily::inverse, kTolerance); }
 TEST(ScalisSegmentValues, CauchyMatchesDefinition) { check_family(KernelFamily::cauchy, kTolerance); }
+
+// Where surfaces are drawn: thin segments (τ down to 1e-3|AB|) near their
+// own surface (distance τ/2…2τ from the axis, over the whole length and
+// around the ends), with σ from 0.2 to 5; and the far field (up to 1e3|AB|).
+void check_thin_and_far(KernelFamily family) {
+  std::mt19937 rng(2013);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  const Vec3 a(0.1, -0.2, 0.3), b(2.0, 0.5, -0.1);
+  const Vec3 ab = b - a;
+  const Vec3 n1 = ab.unitOrthogonal(), n2 = ab.normalized().cross(n1);
+  for (int degree : {2, 3, 4, 6, 9, 10}) {
+    for (double sigma : {0.2, 1.0, 5.0}) {
+      for (double thin : {1e-3, 1e-2}) {
+        for (const RadiusCase& radius : kRadii) {
+          const double tau0 = radius.tau0 * thin, tau1 = radius.tau1 * thin;
+          const ScalisSegment segment(a, b, tau0, tau1, ScalisKernel{family, degree, sigma});
+          for (int k = 0; k < 6; ++k) {
+            const double t = 0.5 + 0.6 * uniform(rng);
+            const double tau = std::max(tau0 + (tau1 - tau0) * std::clamp(t, 0.0, 1.0), 0.1 * thin);
+            const double angle = 3.14159265358979 * (uniform(rng) + 1);
+            const Vec3 p = a + ab * t + (std::cos(angle) * n1 + std::sin(angle) * n2) * tau * (1.25 + 0.75 * uniform(rng));
+            const auto [f_error, g_error] = errors_against_definition(segment, p);
+            auto& worst = worst_errors()[std::string(family_name(family)) + " thin_surface"];
+            worst.first = std::max(worst.first, f_error);
+            worst.second = std::max(worst.second, g_error);
+            EXPECT_LE(f_error, 1e-11) << family_name(family) << " i=" << degree << " sigma=" << sigma << " "
+                                      << radius.name << " thin=" << thin << " P=" << p.transpose();
+            EXPECT_LE(g_error, 1e-10) << family_name(family) << " i=" << degree << " sigma=" << sigma << " "
+                                      << radius.name << " thin=" << thin << " P=" << p.transpose();
+          }
+        }
+      }
+      for (const RadiusCase& radius : kRadii) {
+        const ScalisSegment segment(a, b, radius.tau0, radius.tau1, ScalisKernel{family, degree, sigma});
+        for (double distance : {10.0, 1e2, 1e3}) {
+          const Vec3 direction = Vec3(uniform(rng), uniform(rng), uniform(rng)).normalized();
+          const Vec3 p = a + ab * 0.5 + direction * distance * ab.norm();
+          const auto [f_error, g_error] = errors_against_definition(segment, p);
+          auto& worst = worst_errors()[std::string(family_name(family)) + " far"];
+          worst.first = std::max(worst.first, f_error);
+          worst.second = std::max(worst.second, g_error);
+          EXPECT_LE(f_error, 1e-11) << family_name(family) << " i=" << degree << " far " << distance;
+          EXPECT_LE(g_error, 1e-11) << family_name(family) << " i=" << degree << " far " << distance;
+        }
+      }
+    }
+  }
+}
+
+TEST(ScalisSegmentValues, InverseThinAndFar) { check_thin_and_far(KernelFamily::inverse); }
+TEST(ScalisSegmentValues, CauchyThinAndFar) { check_thin_and_far(KernelFamily::cauchy); }
 
 TEST(ScalisSegmentValues, ReportWorstErrors) {
   for (const auto& [what, errors] : worst_errors())
