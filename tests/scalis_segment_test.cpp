@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_input_error.hpp"
 #include "scalis_reference_quadrature.hpp"
 #include "skelconv/skeleton_file.hpp"
 
@@ -304,16 +305,7 @@ TEST(ScalisSegmentSpecialCases, ReversedSegmentGivesTheSameField) {
 // ---------------------------------------------------------------------------
 // Validation: each problem names its field.
 
-template <class Construct>
-void expect_input_error(Construct construct, const std::string& where, const std::string& problem) {
-  try {
-    construct();
-    ADD_FAILURE() << "no InputError; expected " << where << ": " << problem;
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.where(), where) << error.what();
-    EXPECT_NE(error.problem().find(problem), std::string::npos) << error.what();
-  }
-}
+using test::expect_input_error;
 
 TEST(ScalisSegmentValidation, RejectsBadInputWithItsLocation) {
   const Vec3 a(0, 0, 0), b(1, 0, 0);

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_input_error.hpp"
 #include "reference_quadrature.hpp"
 
 namespace skelconv {
@@ -245,18 +246,7 @@ TEST(SegmentSpecialCases, NeverNaNNearTheLine) {
 // ---------------------------------------------------------------------------
 // Validation in the constructor: each problem names its field.
 
-/// Runs `construct`, expecting InputError located at `where` whose problem
-/// contains `problem`.
-template <class Construct>
-void expect_input_error(Construct construct, const std::string& where, const std::string& problem) {
-  try {
-    construct();
-    ADD_FAILURE() << "no InputError; expected " << where << ": " << problem;
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.where(), where) << error.what();
-    EXPECT_NE(error.problem().find(problem), std::string::npos) << error.what();
-  }
-}
+using test::expect_input_error;
 
 TEST(SegmentValidation, RejectsBadInputWithItsLocation) {
   const Vec3 a(0, 0, 0), b(1, 0, 0);

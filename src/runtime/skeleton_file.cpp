@@ -210,20 +210,26 @@ Vec3 read_point(const Json& value, const std::string& path) {
   return {xyz[0], xyz[1], xyz[2]};
 }
 
-/// {"family": ..., "degree": ..., and "s" (cauchy) or "R" (compact)}.
-KernelSpec read_kernel(const Json& value, const std::string& path) {
-  require_object(value, path);
-  const std::string family_text = read_string(require_field(value, path, "family"), path + ".family");
+/// The "family" field of the kernel object at `path`.
+KernelFamily read_family(const Json& kernel, const std::string& path) {
+  const std::string family_text = read_string(require_field(kernel, path, "family"), path + ".family");
   const std::optional<KernelFamily> family = family_from_name(family_text);
   if (!family) {
     throw InputError(fmt::format("unknown family \"{}\" (supported: {})", family_text,
                                  quoted_list({"inverse", "cauchy", "compact"})),
                      path + ".family");
   }
-  const std::string context = fmt::format(" for the {} family", family_text);
+  return *family;
+}
+
+/// {"family": ..., "degree": ..., and "s" (cauchy) or "R" (compact)}.
+KernelSpec read_kernel(const Json& value, const std::string& path) {
+  require_object(value, path);
+  const KernelFamily family = read_family(value, path);
+  const std::string context = fmt::format(" for the {} family", family_name(family));
   KernelSpec kernel;
-  kernel.family = *family;
-  switch (*family) {
+  kernel.family = family;
+  switch (family) {
     case KernelFamily::inverse:
       reject_unknown_keys(value, path, {"family", "degree"}, context);
       break;
@@ -261,15 +267,8 @@ Segment read_segment(const Json& value, const std::string& path) {
 ScalisKernel read_scalis_kernel(const Json& value, const std::string& path) {
   require_object(value, path);
   reject_unknown_keys(value, path, {"family", "degree", "sigma"}, " for a SCALIS kernel");
-  const std::string family_text = read_string(require_field(value, path, "family"), path + ".family");
-  const std::optional<KernelFamily> family = family_from_name(family_text);
-  if (!family) {
-    throw InputError(fmt::format("unknown family \"{}\" (supported: {})", family_text,
-                                 quoted_list({"inverse", "cauchy", "compact"})),
-                     path + ".family");
-  }
   ScalisKernel kernel;
-  kernel.family = *family;
+  kernel.family = read_family(value, path);
   kernel.degree = read_integer(require_field(value, path, "degree"), path + ".degree");
   kernel.sigma = read_number(require_field(value, path, "sigma"), path + ".sigma");
   return kernel;
