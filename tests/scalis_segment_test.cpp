@@ -111,7 +111,7 @@ void check_family(KernelFamily family, const std::map<std::string, std::pair<dou
   std::mt19937 rng(20130);
   const Vec3 a(0.1, -0.2, 0.3), b(2.0, 0.5, -0.1);
   for (int degree : {2, 3, 4, 5, 7, 10}) {
-    for (double sigma : {0.7, 1.5}) {
+    for (double sigma : {0.3, 0.7, 1.5, 5.0}) {
       for (const RadiusCase& radius : kRadii) {
         const ScalisSegment segment(a, b, radius.tau0, radius.tau1, ScalisKernel{family, degree, sigma}, 0.8);
         for (const std::string region : {"generic", "near_axis", "beyond_end", "on_axis_beyond"}) {
@@ -133,13 +133,15 @@ void check_family(KernelFamily family, const std::map<std::string, std::pair<dou
   }
 }
 
-// Tolerances (f, ∇f): generic points at the project's generic target for f
-// (1e-13); ∇f of the highest degrees reaches 3.4e-12 there (weight degree 9,
-// moments up to t^10 by the moment relations), hence 5e-12. Near the line
-// and beyond an end the double inputs themselves fix the distance to the
-// line only to ~ε|AP|/h (README, Accuracy), h = 1e-3|AB| here.
+// Tolerances (f, ∇f). The classical segments' generic targets are 1e-13
+// and 1e-12; SCALIS reaches 1.2e-13 / 5.3e-12 at generic points (measured):
+// degree 10 with a cone tip has the single weight term Δτ^9 t^9, and beyond
+// the tip the moments t^k (k up to 10) come from relations that cancel by
+// ~2 digits there, hence 2e-13 / 1e-11. Near the line and beyond an end
+// the double inputs themselves fix the distance to the line only to
+// ~ε|AP|/h (README, Accuracy), h = 1e-3|AB| here.
 const std::map<std::string, std::pair<double, double>> kTolerance = {
-    {"generic", {1e-13, 5e-12}}, {"near_axis", {1e-9, 1e-9}}, {"beyond_end", {1e-9, 1e-9}},
+    {"generic", {2e-13, 1e-11}}, {"near_axis", {1e-9, 1e-9}}, {"beyond_end", {1e-9, 1e-9}},
     {"on_axis_beyond", {1e-9, 1e-9}}};
 
 TEST(ScalisSegmentValues, InverseMatchesDefinition) { check_family(KernelFamily::inverse, kTolerance); }
