@@ -93,7 +93,8 @@ int main(int argc, char** argv) {
       for (int i = range.first; i <= range.last; ++i) request.scalis_segment_kernels.push_back({family, i});
     }
     skelconv::codegen::write_generated_folder(request, out);
-    std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels to " << out << '\n';
+    std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels and "
+              << request.scalis_segment_kernels.size() << " SCALIS segment kernels to " << out << '\n';
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

@@ -364,7 +364,11 @@ class SegmentProgramBuilder {
     for (int k = 0; k <= top; ++k)
       w_.push_back(GiNaC::binomial(numeric(top), numeric(k)) * pow(tau0_, top - k) * pow(delta_tau_, k));
     output_scale_ = pow(sigma, spec_.degree);
-    if (spec_.family == KernelFamily::cauchy) sigma2_ = define("sigma2", pow(sigma, 2));
+    if (spec_.family == KernelFamily::cauchy) {
+      sigma2_ = define("sigma2", pow(sigma, 2));
+      // σ^i from the σ² the quadratic already has.
+      output_scale_ = pow(sigma2_, spec_.degree / 2) * (spec_.degree % 2 == 0 ? ex(1) : ex(sigma));
+    }
   }
 
   void define_scalis_quadratic() {
