@@ -1,10 +1,13 @@
 // generated/polygon_compact.hpp — polygon edge kernels of the compact family.
 //
 // GENERATED FILE: DO NOT EDIT. Regenerate with
-//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --out generated
+//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
 // Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
-// From: codegen/polygon_families.cpp (the contour sum per edge; SPEC §3,
-// Hubert 2012 §5–8), on the segment forms of codegen/segment_families.cpp.
+// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
+// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
+// Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum
+// (codegen/polygon_families.cpp), on the segment forms of the edge;
+// skelconv/polygon_field.hpp adds them up.
 #pragma once
 
 #include <algorithm>
@@ -12,8 +15,8 @@
 #include <cmath>
 
 #include <skelconv/gauss_moments.hpp>
-#include <skelconv/polygon_edge_input.hpp>
 #include <skelconv/polygon_angle_integrals.hpp>
+#include <skelconv/polygon_edge_input.hpp>
 #include <skelconv/segment_input.hpp>
 #include <skelconv/stable_recurrence.hpp>
 
