@@ -37,21 +37,21 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
-  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ab_bp = ab2 * bp2 + bp1 * ab1 + bp0 * ab0;
-  const T ap_bp = bp0 * ap0 + ap2 * bp2 + bp1 * ap1;
+  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
+  const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
+  const T h = cross0 * in.normal[0] + cross2 * in.normal[2] + in.normal[1] * cross1;
   const T theta = atan2(h, ap_bp);
   T J_minus4;
   T J_minus2;
@@ -64,18 +64,18 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_minus2 = M_exact[1];
     J_minus0 = M_exact[2];
   }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_f;
   const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2((in.t1 - in.t0) * h, ap_bp + ab_ab * t3 * in.t0 - t3 * ab_ap - ab_bp * in.t0);
-    G_f = -(J_minus0 * zeta2 * zeta2 + J_minus2 * zeta2 + J_minus4) * h * inv_R2;
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t3 - ab_bp * in.t0 - ab_ap * t3);
+    G_f = -h * (J_minus4 + J_minus2 * zeta2 + J_minus0 * zeta2 * zeta2) * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -104,21 +104,21 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
-  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
-  const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
+  const T ab_bp = ab0 * bp0 + bp1 * ab1 + ab2 * bp2;
+  const T ap_bp = bp1 * ap1 + ap0 * bp0 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
-  const T a = -inv_R2 * ab_ab;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[2] * cross2 + in.normal[0] * cross0 + in.normal[1] * cross1;
+  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus4;
   T J_minus2;
@@ -131,18 +131,18 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_minus2 = M_exact[1];
     J_minus0 = M_exact[2];
   }
-  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
+  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_g;
-  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t1 = t0 - inv_R2 * h * h;
-  const T t2 = max(T(t0 - inv_R2 * h * h - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - in.t0 * ab_bp - ab_ap * t3);
-    G_g = -inv_R2 * (zeta2 * J_minus0 + J_minus2) * h;
+    theta_in = atan2(h * (in.t1 - in.t0), ap_bp + t3 * ab_ab * in.t0 - t3 * ab_ap - ab_bp * in.t0);
+    G_g = -(J_minus2 + J_minus0 * zeta2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -172,21 +172,21 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
-  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
-  const T ap_bp = bp2 * ap2 + bp1 * ap1 + bp0 * ap0;
+  const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
+  const T h = in.normal[0] * cross0 + in.normal[1] * cross1 + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus4;
   T J_minus2;
@@ -200,7 +200,7 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     J_minus0 = M_exact[2];
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
   T G_f;
   T G_g;
@@ -210,8 +210,8 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(h * (in.t1 - in.t0), t3 * ab_ab * in.t0 + ap_bp - t3 * ab_ap - ab_bp * in.t0);
-    G_f = -(J_minus2 * zeta2 + J_minus4 + J_minus0 * zeta2 * zeta2) * h * inv_R2;
+    theta_in = atan2(-h * (in.t0 - in.t1), ab_ab * in.t0 * t3 + ap_bp - ab_bp * in.t0 - ab_ap * t3);
+    G_f = -h * inv_R2 * (J_minus4 + J_minus0 * zeta2 * zeta2 + J_minus2 * zeta2);
     G_g = -h * inv_R2 * (J_minus2 + J_minus0 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
@@ -244,21 +244,21 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T cross0 = ap2 * ab1 - ap1 * ab2;
-  const T cross1 = ap0 * ab2 - ap2 * ab0;
-  const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
-  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T ap_bp = bp1 * ap1 + bp2 * ap2 + bp0 * ap0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
-  const T b = -ab_ap * inv_R2;
+  const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[0] * cross0 + in.normal[1] * cross1 + in.normal[2] * cross2;
+  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + cross2 * in.normal[2];
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -277,16 +277,16 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
   T G_f;
-  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - ab_bp * in.t0 - ab_ap * t3);
+    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * ab_ab * t3 + ap_bp - t3 * ab_ap - in.t0 * ab_bp);
     const T t4 = zeta2 * zeta2;
     const T t5 = t4 * zeta2;
-    G_f = -(zeta2 * J_minus4 + J_minus2 * zeta2 * zeta2 + J_minus6 + t5 * J_minus0) * h * inv_R2;
+    G_f = -(J_minus6 + J_minus2 * zeta2 * zeta2 + J_minus4 * zeta2 + t5 * J_minus0) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -315,21 +315,21 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
   const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ab_bp = ab1 * bp1 + bp0 * ab0 + ab2 * bp2;
-  const T ap_bp = ap1 * bp1 + bp0 * ap0 + ap2 * bp2;
+  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
+  const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
+  const T c = zeta2 - ap_ap * inv_R2;
+  const T h = in.normal[2] * cross2 + cross1 * in.normal[1] + in.normal[0] * cross0;
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -350,12 +350,12 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T G_g;
   const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t3 - in.t0 * ab_bp - ab_ap * t3);
-    G_g = -h * inv_R2 * (zeta2 * zeta2 * J_minus0 + J_minus2 * zeta2 + J_minus4);
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + t3 * in.t0 * ab_ab - t3 * ab_ap - in.t0 * ab_bp);
+    G_g = -h * inv_R2 * (J_minus2 * zeta2 + zeta2 * zeta2 * J_minus0 + J_minus4);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -385,21 +385,21 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
-  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
-  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap2 * ab2 + ap1 * ab1 + ap0 * ab0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T cross0 = ap2 * ab1 - ap1 * ab2;
   const T cross1 = ap0 * ab2 - ap2 * ab0;
   const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
-  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -ab_ap * inv_R2;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross1 * in.normal[1] + in.normal[2] * cross2 + cross0 * in.normal[0];
+  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -414,8 +414,8 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     J_minus2 = M_exact[2];
     J_minus0 = M_exact[3];
   }
-  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
-  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_f;
   T G_g;
@@ -425,10 +425,10 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * ab_ab * t3 + ap_bp - ab_ap * t3 - ab_bp * in.t0);
+    theta_in = atan2((in.t1 - in.t0) * h, t3 * ab_ab * in.t0 + ap_bp - ab_ap * t3 - ab_bp * in.t0);
     const T t4 = zeta2 * zeta2;
     const T t5 = t4 * zeta2;
-    G_f = -(J_minus6 + t5 * J_minus0 + t4 * J_minus2 + zeta2 * J_minus4) * h * inv_R2;
+    G_f = -(zeta2 * J_minus4 + t4 * J_minus2 + J_minus6 + t5 * J_minus0) * h * inv_R2;
     G_g = -(t4 * J_minus0 + zeta2 * J_minus2 + J_minus4) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
@@ -461,95 +461,21 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T cross0 = ap2 * ab1 - ap1 * ab2;
-  const T cross1 = ap0 * ab2 - ap2 * ab0;
-  const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
-  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
-  const T inv_R = T(1) / in.R;
-  const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
-  const T b = -ab_ap * inv_R2;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[2] * cross2 + in.normal[1] * cross1 + in.normal[0] * cross0;
-  const T theta = atan2(h, ap_bp);
-  T J_minus8;
-  T J_minus6;
-  T J_minus4;
-  T J_minus2;
-  T J_minus0;
-  {
-    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
-    std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 7>(-8, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
-    J_minus8 = M_exact[0];
-    J_minus6 = M_exact[1];
-    J_minus4 = M_exact[2];
-    J_minus2 = M_exact[3];
-    J_minus0 = M_exact[4];
-  }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
-  T theta_in;
-  T G_f;
-  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
-  if (t1 >= T(0) && t2 >= T(0)) {
-    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T t3 = in.t1 - T(1);
-    theta_in = atan2((in.t1 - in.t0) * h, t3 * ab_ab * in.t0 + ap_bp - ab_bp * in.t0 - ab_ap * t3);
-    const T t4 = zeta2 * zeta2;
-    const T t5 = t4 * t4;
-    const T t6 = t4 * zeta2;
-    G_f = -(t5 * J_minus0 + zeta2 * J_minus6 + t6 * J_minus2 + J_minus8 + t4 * J_minus4) * h * inv_R2;
-  } else {
-    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> G_chord;
-    polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    theta_in = T(0);
-    G_f = G_chord[0];
-  }
-  out.h = h;
-  out.theta = theta;
-  out.theta_in = theta_in;
-  out.S_f = G_f;
-}
-
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
-///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 99 +, 204 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-template <class T>
-void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
-  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
-  const T ab0 = in.b[0] - in.a[0];
-  const T ap0 = in.p[0] - in.a[0];
-  const T bp0 = in.p[0] - in.b[0];
-  const T ab1 = in.b[1] - in.a[1];
-  const T ap1 = in.p[1] - in.a[1];
-  const T bp1 = in.p[1] - in.b[1];
-  const T ab2 = in.b[2] - in.a[2];
-  const T ap2 = in.p[2] - in.a[2];
-  const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
-  const T ab_ap = ap2 * ab2 + ab0 * ap0 + ap1 * ab1;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T ab_ab = ab0 * ab0 + ab1 * ab1 + ab2 * ab2;
+  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
   const T cross1 = ap0 * ab2 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ap0 * ab1;
-  const T ab_bp = ab0 * bp0 + bp2 * ab2 + bp1 * ab1;
-  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
-  const T b = -ab_ap * inv_R2;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[2] * cross2 + in.normal[1] * cross1 + cross0 * in.normal[0];
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -inv_R2 * ab_ab;
+  const T b = -inv_R2 * ab_ap;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = in.normal[2] * cross2 + cross0 * in.normal[0] + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus8;
   T J_minus6;
@@ -569,17 +495,91 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
-  T G_g;
+  T G_f;
   const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t1 = t0 - inv_R2 * h * h;
+  const T t2 = max(T(t0 - inv_R2 * h * h - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - ab_ap * t3 - in.t0 * ab_bp);
+    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * ab_ab * t3 + ap_bp - ab_ap * t3 - in.t0 * ab_bp);
     const T t4 = zeta2 * zeta2;
     const T t5 = t4 * zeta2;
-    G_g = -(t5 * J_minus0 + J_minus4 * zeta2 + t4 * J_minus2 + J_minus6) * h * inv_R2;
+    const T t6 = t4 * t4;
+    G_f = -inv_R2 * (t5 * J_minus2 + t6 * J_minus0 + J_minus8 + J_minus4 * t4 + zeta2 * J_minus6) * h;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 1> G_chord;
+    polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_f = G_chord[0];
+  }
+  out.h = h;
+  out.theta = theta;
+  out.theta_in = theta_in;
+  out.S_f = G_f;
+}
+
+/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
+/// Operations per edge: 99 +, 205 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+template <class T>
+void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  const T ab0 = in.b[0] - in.a[0];
+  const T ap0 = in.p[0] - in.a[0];
+  const T bp0 = in.p[0] - in.b[0];
+  const T ab1 = in.b[1] - in.a[1];
+  const T ap1 = in.p[1] - in.a[1];
+  const T bp1 = in.p[1] - in.b[1];
+  const T ab2 = in.b[2] - in.a[2];
+  const T ap2 = in.p[2] - in.a[2];
+  const T bp2 = in.p[2] - in.b[2];
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ap2 * ab2 + ab0 * ap0 + ap1 * ab1;
+  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T ab_bp = bp2 * ab2 + ab0 * bp0 + bp1 * ab1;
+  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
+  const T inv_R = T(1) / in.R;
+  const T inv_R2 = inv_R * inv_R;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -ab_ab * inv_R2;
+  const T b = -inv_R2 * ab_ap;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = in.normal[1] * cross1 + in.normal[0] * cross0 + in.normal[2] * cross2;
+  const T theta = atan2(h, ap_bp);
+  T J_minus8;
+  T J_minus6;
+  T J_minus4;
+  T J_minus2;
+  T J_minus0;
+  {
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
+    std::array<T, 5> M_exact;
+    segment_moments_gauss<T, 7>(-8, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    J_minus8 = M_exact[0];
+    J_minus6 = M_exact[1];
+    J_minus4 = M_exact[2];
+    J_minus2 = M_exact[3];
+    J_minus0 = M_exact[4];
+  }
+  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
+  T G_g;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  if (t1 >= T(0) && t2 >= T(0)) {
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-h * (in.t0 - in.t1), ab_ab * t3 * in.t0 + ap_bp - t3 * ab_ap - in.t0 * ab_bp);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * zeta2;
+    G_g = -h * inv_R2 * (zeta2 * zeta2 * J_minus2 + t5 * J_minus0 + J_minus4 * zeta2 + J_minus6);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -609,21 +609,21 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ap2 * ab2 + ap0 * ab0 + ap1 * ab1;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T cross0 = ap2 * ab1 - ap1 * ab2;
-  const T cross1 = ap0 * ab2 - ap2 * ab0;
-  const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
-  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T ab_bp = ab1 * bp1 + ab0 * bp0 + ab2 * bp2;
+  const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
   const T a = -inv_R2 * ab_ab;
-  const T b = -ab_ap * inv_R2;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
+  const T b = -inv_R2 * ab_ap;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = in.normal[2] * cross2 + in.normal[1] * cross1 + cross0 * in.normal[0];
   const T theta = atan2(h, ap_bp);
   T J_minus8;
   T J_minus6;
@@ -645,18 +645,18 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T theta_in;
   T G_f;
   T G_g;
-  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(h * (in.t1 - in.t0), t3 * in.t0 * ab_ab + ap_bp - ab_ap * t3 - ab_bp * in.t0);
+    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * t3 * ab_ab + ap_bp - ab_ap * t3 - in.t0 * ab_bp);
     const T t4 = zeta2 * zeta2;
-    const T t5 = t4 * zeta2;
-    const T t6 = t4 * t4;
-    G_f = -(J_minus8 + J_minus2 * t5 + J_minus4 * t4 + J_minus6 * zeta2 + J_minus0 * t6) * h * inv_R2;
-    G_g = -h * inv_R2 * (J_minus2 * t4 + J_minus4 * zeta2 + J_minus0 * t5 + J_minus6);
+    const T t5 = t4 * t4;
+    const T t6 = t4 * zeta2;
+    G_f = -h * inv_R2 * (t5 * J_minus0 + t6 * J_minus2 + zeta2 * J_minus6 + J_minus4 * t4 + J_minus8);
+    G_g = -(t4 * J_minus2 + J_minus4 * zeta2 + t6 * J_minus0 + J_minus6) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;
@@ -675,7 +675,7 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 108 +, 230 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 108 +, 231 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -688,98 +688,21 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
-  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
-  const T cross0 = ab1 * ap2 - ab2 * ap1;
-  const T cross1 = ab2 * ap0 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
-  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
-  const T inv_R = T(1) / in.R;
-  const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
-  const T a = -ab_ab * inv_R2;
-  const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
-  const T theta = atan2(h, ap_bp);
-  T J_minus10;
-  T J_minus8;
-  T J_minus6;
-  T J_minus4;
-  T J_minus2;
-  T J_minus0;
-  {
-    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
-    std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 7>(-10, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
-    J_minus10 = M_exact[0];
-    J_minus8 = M_exact[1];
-    J_minus6 = M_exact[2];
-    J_minus4 = M_exact[3];
-    J_minus2 = M_exact[4];
-    J_minus0 = M_exact[5];
-  }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
-  T theta_in;
-  T G_f;
-  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
-  const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
-  if (t1 >= T(0) && t2 >= T(0)) {
-    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    const T t3 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, ab_ab * in.t0 * t3 + ap_bp - ab_ap * t3 - ab_bp * in.t0);
-    const T t4 = zeta2 * zeta2;
-    const T t5 = t4 * t4;
-    const T t6 = t5 * zeta2;
-    const T t7 = t4 * zeta2;
-    G_f = -h * inv_R2 * (J_minus0 * t6 + J_minus8 * zeta2 + t7 * J_minus4 + J_minus2 * t5 + J_minus10 + J_minus6 * t4);
-  } else {
-    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> G_chord;
-    polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    theta_in = T(0);
-    G_f = G_chord[0];
-  }
-  out.h = h;
-  out.theta = theta;
-  out.theta_in = theta_in;
-  out.S_f = G_f;
-}
-
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
-///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 107 +, 228 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-template <class T>
-void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
-  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
-  const T ab0 = in.b[0] - in.a[0];
-  const T ap0 = in.p[0] - in.a[0];
-  const T bp0 = in.p[0] - in.b[0];
-  const T ab1 = in.b[1] - in.a[1];
-  const T ap1 = in.p[1] - in.a[1];
-  const T bp1 = in.p[1] - in.b[1];
-  const T ab2 = in.b[2] - in.a[2];
-  const T ap2 = in.p[2] - in.a[2];
-  const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ap1 * ab1;
-  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
-  const T cross0 = ap2 * ab1 - ab2 * ap1;
-  const T cross1 = ab2 * ap0 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ap0 * ab1;
-  const T ab_bp = bp1 * ab1 + ab0 * bp0 + ab2 * bp2;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap2 * ab2 + ap1 * ab1 + ap0 * ab0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
   const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
-  const T a = -inv_R2 * ab_ab;
-  const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[2] * cross2 + cross0 * in.normal[0] + cross1 * in.normal[1];
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T a = -ab_ab * inv_R2;
+  const T b = -ab_ap * inv_R2;
+  const T c = zeta2 - ap_ap * inv_R2;
+  const T h = cross0 * in.normal[0] + in.normal[2] * cross2 + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus10;
   T J_minus8;
@@ -801,18 +724,95 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
-  T G_g;
+  T G_f;
   const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t1 = t0 - inv_R2 * h * h;
-  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - inv_R2 * h * h), T(-plane_slope1 * plane_slope0));
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - ab_ap * t3 - in.t0 * ab_bp);
+    theta_in = atan2(-(in.t0 - in.t1) * h, t3 * in.t0 * ab_ab + ap_bp - ab_ap * t3 - in.t0 * ab_bp);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * t4;
+    const T t6 = t5 * zeta2;
+    const T t7 = t4 * zeta2;
+    G_f = -(zeta2 * J_minus8 + J_minus6 * zeta2 * zeta2 + J_minus10 + t5 * J_minus2 + J_minus0 * t6 + t7 * J_minus4) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 1> G_chord;
+    polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_f = G_chord[0];
+  }
+  out.h = h;
+  out.theta = theta;
+  out.theta_in = theta_in;
+  out.S_f = G_f;
+}
+
+/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
+/// Operations per edge: 107 +, 229 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+template <class T>
+void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  const T ab0 = in.b[0] - in.a[0];
+  const T ap0 = in.p[0] - in.a[0];
+  const T bp0 = in.p[0] - in.b[0];
+  const T ab1 = in.b[1] - in.a[1];
+  const T ap1 = in.p[1] - in.a[1];
+  const T bp1 = in.p[1] - in.b[1];
+  const T ab2 = in.b[2] - in.a[2];
+  const T ap2 = in.p[2] - in.a[2];
+  const T bp2 = in.p[2] - in.b[2];
+  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = bp0 * ap0 + bp1 * ap1 + bp2 * ap2;
+  const T inv_R = T(1) / in.R;
+  const T inv_R2 = inv_R * inv_R;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T a = -ab_ab * inv_R2;
+  const T b = -inv_R2 * ab_ap;
+  const T c = zeta2 - ap_ap * inv_R2;
+  const T h = in.normal[2] * cross2 + cross0 * in.normal[0] + cross1 * in.normal[1];
+  const T theta = atan2(h, ap_bp);
+  T J_minus10;
+  T J_minus8;
+  T J_minus6;
+  T J_minus4;
+  T J_minus2;
+  T J_minus0;
+  {
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
+    std::array<T, 6> M_exact;
+    segment_moments_gauss<T, 7>(-10, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    J_minus10 = M_exact[0];
+    J_minus8 = M_exact[1];
+    J_minus6 = M_exact[2];
+    J_minus4 = M_exact[3];
+    J_minus2 = M_exact[4];
+    J_minus0 = M_exact[5];
+  }
+  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  T theta_in;
+  T G_g;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
+  if (t1 >= T(0) && t2 >= T(0)) {
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + ab_ab * in.t0 * t3 - ab_ap * t3 - in.t0 * ab_bp);
     const T t4 = zeta2 * zeta2;
     const T t5 = t4 * t4;
     const T t6 = t4 * zeta2;
-    G_g = -inv_R2 * (J_minus0 * t5 + J_minus6 * zeta2 + t6 * J_minus2 + t4 * J_minus4 + J_minus8) * h;
+    G_g = -h * inv_R2 * (J_minus8 + J_minus4 * zeta2 * zeta2 + J_minus6 * zeta2 + J_minus0 * t5 + J_minus2 * t6);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -842,21 +842,21 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab1 * ap1 + ap0 * ab0 + ab2 * ap2;
-  const T ap_ap = ap0 * ap0 + ap1 * ap1 + ap2 * ap2;
-  const T cross0 = ab1 * ap2 - ab2 * ap1;
-  const T cross1 = ap0 * ab2 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ap0 * ab1;
-  const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
-  const T ap_bp = ap0 * bp0 + bp1 * ap1 + bp2 * ap2;
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ap1 * ab1 + ap0 * ab0 + ap2 * ab2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
-  const T b = -inv_R2 * ab_ap;
+  const T b = -ab_ap * inv_R2;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[2] * cross2 + in.normal[0] * cross0 + cross1 * in.normal[1];
+  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus10;
   T J_minus8;
@@ -882,17 +882,17 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   T G_g;
   const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - t3 * ab_ap - in.t0 * ab_bp);
+    theta_in = atan2(-(in.t0 - in.t1) * h, t3 * in.t0 * ab_ab + ap_bp - ab_ap * t3 - in.t0 * ab_bp);
     const T t4 = zeta2 * zeta2;
     const T t5 = t4 * t4;
     const T t6 = t5 * zeta2;
     const T t7 = t4 * zeta2;
-    G_f = -h * inv_R2 * (zeta2 * J_minus8 + J_minus10 + t4 * J_minus6 + t5 * J_minus2 + t6 * J_minus0 + t7 * J_minus4);
-    G_g = -h * inv_R2 * (t7 * J_minus2 + J_minus8 + zeta2 * J_minus6 + t4 * J_minus4 + t5 * J_minus0);
+    G_f = -(t6 * J_minus0 + J_minus10 + t4 * J_minus6 + t5 * J_minus2 + zeta2 * J_minus8 + t7 * J_minus4) * h * inv_R2;
+    G_g = -h * (t5 * J_minus0 + t7 * J_minus2 + zeta2 * J_minus6 + J_minus8 + t4 * J_minus4) * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;
@@ -911,7 +911,7 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 116 +, 254 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 116 +, 255 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -924,21 +924,21 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
-  const T ab_ap = ap2 * ab2 + ab0 * ap0 + ab1 * ap1;
-  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
-  const T cross0 = ab1 * ap2 - ap1 * ab2;
-  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ab_bp = ab0 * bp0 + bp2 * ab2 + ab1 * bp1;
-  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T ab_bp = ab0 * bp0 + ab2 * bp2 + ab1 * bp1;
+  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - inv_R2 * in.z * in.z;
-  const T a = -inv_R2 * ab_ab;
+  const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[0] * cross0 + cross1 * in.normal[1] + in.normal[2] * cross2;
+  const T h = in.normal[0] * cross0 + in.normal[2] * cross2 + in.normal[1] * cross1;
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -960,22 +960,22 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     J_minus0 = M_exact[6];
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
-  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
   T G_f;
-  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t1 = t0 - inv_R2 * h * h;
-  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - inv_R2 * h * h), T(-plane_slope0 * plane_slope1));
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2((in.t1 - in.t0) * h, t3 * in.t0 * ab_ab + ap_bp - ab_bp * in.t0 - t3 * ab_ap);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t3 - in.t0 * ab_bp - t3 * ab_ap);
     const T t4 = zeta2 * zeta2;
     const T t5 = t4 * zeta2;
     const T t6 = t5 * t5;
     const T t7 = t4 * t4;
     const T t8 = t7 * zeta2;
-    G_f = -inv_R2 * (t5 * J_minus6 + zeta2 * J_minus10 + J_minus8 * t4 + t6 * J_minus0 + t7 * J_minus4 + J_minus12 + J_minus2 * t8) * h;
+    G_f = -h * inv_R2 * (J_minus8 * zeta2 * zeta2 + t6 * J_minus0 + J_minus2 * t8 + J_minus10 * zeta2 + t5 * J_minus6 + J_minus12 + J_minus4 * t7);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -1004,21 +1004,21 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
-  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T ab_ab = ab0 * ab0 + ab1 * ab1 + ab2 * ab2;
+  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ab_bp = bp2 * ab2 + ab1 * bp1 + bp0 * ab0;
-  const T ap_bp = bp0 * ap0 + ap1 * bp1 + bp2 * ap2;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = bp0 * ap0 + bp1 * ap1 + bp2 * ap2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[0] * cross0 + in.normal[1] * cross1 + in.normal[2] * cross2;
+  const T h = in.normal[2] * cross2 + cross0 * in.normal[0] + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -1045,16 +1045,16 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   T G_g;
   const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t3 - in.t0 * ab_bp - ab_ap * t3);
+    theta_in = atan2(-(in.t0 - in.t1) * h, t3 * in.t0 * ab_ab + ap_bp - t3 * ab_ap - in.t0 * ab_bp);
     const T t4 = zeta2 * zeta2;
     const T t5 = t4 * t4;
     const T t6 = t4 * zeta2;
     const T t7 = t5 * zeta2;
-    G_g = -h * inv_R2 * (J_minus2 * t5 + J_minus4 * t6 + t4 * J_minus6 + J_minus10 + t7 * J_minus0 + J_minus8 * zeta2);
+    G_g = -h * inv_R2 * (J_minus8 * zeta2 + J_minus10 + J_minus2 * t5 + J_minus4 * t6 + t7 * J_minus0 + J_minus6 * t4);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -1084,21 +1084,21 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ap2 * ab2 + ap1 * ab1 + ap0 * ab0;
-  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ap1 * ab1 + ap2 * ab2 + ap0 * ab0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T cross0 = ap2 * ab1 - ap1 * ab2;
   const T cross1 = ap0 * ab2 - ap2 * ab0;
   const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
-  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
+  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
-  const T b = -inv_R2 * ab_ap;
+  const T b = -ab_ap * inv_R2;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[0] * cross0 + cross1 * in.normal[1] + in.normal[2] * cross2;
+  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -1126,18 +1126,18 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   T G_g;
   const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t3 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + in.t0 * ab_ab * t3 - t3 * ab_ap - ab_bp * in.t0);
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + in.t0 * ab_ab * t3 - ab_ap * t3 - ab_bp * in.t0);
     const T t4 = zeta2 * zeta2;
     const T t5 = t4 * zeta2;
     const T t6 = t5 * t5;
     const T t7 = t4 * t4;
     const T t8 = t7 * zeta2;
-    G_f = -(J_minus12 + t6 * J_minus0 + zeta2 * J_minus10 + t4 * J_minus8 + t5 * J_minus6 + t8 * J_minus2 + t7 * J_minus4) * h * inv_R2;
-    G_g = -(t8 * J_minus0 + t5 * J_minus4 + t7 * J_minus2 + J_minus10 + zeta2 * J_minus8 + t4 * J_minus6) * h * inv_R2;
+    G_f = -(J_minus8 * t4 + J_minus12 + t6 * J_minus0 + t5 * J_minus6 + zeta2 * J_minus10 + J_minus2 * t8 + t7 * J_minus4) * h * inv_R2;
+    G_g = -(t8 * J_minus0 + t5 * J_minus4 + J_minus8 * zeta2 + J_minus10 + J_minus2 * t7 + t4 * J_minus6) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;

@@ -27,9 +27,10 @@
 
 namespace skelconv {
 
-/// P counts as far when its distance from the polygon's vertex centroid is
-/// at least this many times the polygon's radius about that centroid (so
-/// that the distance to the polygon is ≥ 2 diameters).
+/// P counts as far when its distance from the polygon's vertex centroid —
+/// with β/α added to its square, the kernel's own width — is at least this
+/// many times the polygon's radius about that centroid (so that the
+/// integrand's complex singularities are ≥ 2 diameters from the polygon).
 inline constexpr double polygon_far_field_ratio = 5.0;
 
 /// f and/or ∇f (grad != nullptr) of the polygon `vertices` (CCW about the

@@ -27,8 +27,9 @@
 //  * Compact kernels: |z| ≥ R gives f = 0, ∇f = 0; an edge is clipped to
 //    the support disc of radius √(R² − z²) around P̄ (skelconv/clip.hpp).
 //  * Inverse and Cauchy kernels far from the polygon (distance ≥ 2
-//    diameters): the fans cancel, and skelconv/polygon_far_field.hpp
-//    integrates the definition directly, exact to rounding there.
+//    diameters), or a Cauchy kernel as wide (1/√s ≥ 2 diameters): the fans
+//    cancel, and skelconv/polygon_far_field.hpp integrates the definition
+//    directly, exact to rounding there.
 #pragma once
 
 #include <algorithm>
@@ -119,11 +120,14 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
       radius2 = std::max(radius2, (q[0] - centre[0]) * (q[0] - centre[0]) + (q[1] - centre[1]) * (q[1] - centre[1]) +
                                       (q[2] - centre[2]) * (q[2] - centre[2]));
     for (int k = 0; k < 3; ++k) distance2 += (p[k] - centre[k]) * (p[k] - centre[k]);
+    // The kernel (α r² + β)^(−i/2) is singular at complex distance
+    // √(r² + β/α): a wide Cauchy kernel (small s) is as smooth over the
+    // polygon as a far point, and the fans cancel there just the same.
+    const bool inverse = poly.family == KernelFamily::inverse;
+    const T alpha = inverse ? T(1) : poly.s, beta = inverse ? T(0) : T(1);
     const T ratio = T(polygon_far_field_ratio);
-    if (distance2 >= ratio * ratio * radius2) {
-      const bool inverse = poly.family == KernelFamily::inverse;
-      return polygon_far_field<T>(v, n, poly.degree, inverse ? T(1) : poly.s, inverse ? T(0) : T(1), p, grad);
-    }
+    if (distance2 + beta / alpha >= ratio * ratio * radius2)
+      return polygon_far_field<T>(v, n, poly.degree, alpha, beta, p, grad);
   }
   if (compact && !(abs(z) < poly.R)) return T(0);  // the support ball misses the plane
   const T disc_radius = compact ? sqrt((poly.R - abs(z)) * (poly.R + abs(z))) : T(0);
@@ -131,7 +135,6 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   auto edge_function = want_f ? (grad ? kernel->f_and_grad : kernel->f) : kernel->grad;
   T theta_sum = 0, theta_in_sum = 0, S_f = 0, S_g = 0;
   bool on_boundary = false;
-  int open_edges = 0;  // edges whose θ is not inside their own terms
   std::vector<PolygonEdgeTerms<T>> all_terms;
   PolygonEdgeInput<T> in;
   in.p = foot;
@@ -159,7 +162,6 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
     } else {
       theta_sum += terms.theta;
       theta_in_sum += terms.theta_in;
-      if (terms.theta_in != terms.theta) ++open_edges;
       S_f += terms.S_f;
       S_g += terms.S_g;
     }
@@ -196,21 +198,18 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
       if (grad) *grad = {inf, inf, inf};
       return inf;
     }
-    // C = (ζ^(2−i) Θ − Σ H_{i−2}) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ H_i),
-    // with the θ of the edges whose fan was computed whole (θ_in) left out of
-    // both: Θ − Σ θ_in is exactly 0 when every edge's was.
+    // C = (ζ^(2−i) Θ − Σ H_{i−2}) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ H_i).
     const T alpha = inverse ? T(1) : poly.s;
     const T zeta2 = alpha * z * z + (inverse ? T(0) : T(1));
     const T zeta = sqrt(zeta2);
-    const T outer_angle = open_edges == 0 ? T(0) : Theta - theta_in_sum;
-    const T winding_f = outer_angle == T(0) ? T(0) : integer_power(zeta, 2 - i) * outer_angle;
-    const T winding_g = outer_angle == T(0) ? T(0) : integer_power(zeta, -i) * outer_angle;
+    const T winding_f = Theta == T(0) ? T(0) : integer_power(zeta, 2 - i) * Theta;
+    const T winding_g = Theta == T(0) ? T(0) : integer_power(zeta, -i) * Theta;
     f = (winding_f - S_f) / (alpha * T(i - 2));
     dfdz = -z * (winding_g - S_g);
     if (edge_fields)
       for (const auto& t : all_terms)
         edge_fields->push_back(
-            t.h == T(0) ? T(0) : (integer_power(zeta, 2 - i) * (t.theta - t.theta_in) - t.S_f) / (alpha * T(i - 2)));
+            t.h == T(0) ? T(0) : (integer_power(zeta, 2 - i) * t.theta - t.S_f) / (alpha * T(i - 2)));
   }
   if (grad)
     for (int k = 0; k < 3; ++k) (*grad)[k] += dfdz * n[k];
