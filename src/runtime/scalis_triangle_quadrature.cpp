@@ -95,7 +95,7 @@ struct Interval {
 
 template <std::size_t N, class Integrand, class Allowance>
 Adaptive<N> integrate_adaptive(std::span<const Interval> pieces, Integrand& integrand, Allowance& allowance,
-                               int max_panels) {
+                               int max_panels, const bool* abort = nullptr) {
   std::vector<Panel<N>> panels;
   panels.reserve(pieces.size() + 16);
   for (std::size_t k = 0; k < pieces.size(); ++k)
@@ -116,7 +116,7 @@ Adaptive<N> integrate_adaptive(std::span<const Interval> pieces, Integrand& inte
       result.converged = true;
       return result;
     }
-    if (int(panels.size()) >= max_panels) return result;
+    if (int(panels.size()) >= max_panels || (abort != nullptr && *abort)) return result;
     std::size_t worst = 0;
     double worst_ratio = -1.0;
     for (std::size_t k = 0; k < panels.size(); ++k) {
@@ -502,6 +502,7 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
   const bool smoothstep = family == KernelFamily::compact;
   std::vector<Interval> panel_ranges = pieces;
   if (smoothstep) std::fill(panel_ranges.begin(), panel_ranges.end(), Interval{0.0, 1.0});
+  bool ray_failed = false;
   auto integrand = [&](int piece, double panel_variable, Values<4>& value, Values<4>& error) {
     const FanTriangle& fan = fans[piece_fan[piece]];
     double angle_variable = panel_variable, jacobian = 1.0;
@@ -521,8 +522,12 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
     value = {ray.value[0] * dphi, ray.value[1] * dphi, ray.value[2] * e.x() * dphi, ray.value[2] * e.y() * dphi};
     error = {ray.error[0] * dphi, ray.error[1] * dphi, ray.error[2] * std::abs(e.x()) * dphi,
              ray.error[2] * std::abs(e.y()) * dphi};
-    // An unconverged ray poisons the estimate (it is used only through it).
-    if (!ray.converged) error[0] = infinity;
+    // An unconverged ray poisons the estimate, and ends the integration:
+    // the result could not be certified anyway.
+    if (!ray.converged) {
+      error[0] = infinity;
+      ray_failed = true;
+    }
   };
   // ∇F (local, up to the constant factor) = (P̄ − O, z) G0 − (G1x, G1y, 0).
   const double lever = std::sqrt(s.w2);  // |(P̄ − O, z)|
@@ -539,7 +544,7 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
     return Values<4>{tolerance * std::abs(t[0]), lever > 0.0 ? g / (2 * lever) : infinity, g / (2 * std::sqrt(2.0)),
                      g / (2 * std::sqrt(2.0))};
   };
-  const Adaptive<4> total = integrate_adaptive<4>(panel_ranges, integrand, allowance, max_outer_panels);
+  const Adaptive<4> total = integrate_adaptive<4>(panel_ranges, integrand, allowance, max_outer_panels, &ray_failed);
 
   // The constant factor σ^i (inverse, Cauchy) or σ^(−i) (compact).
   const double factor = std::pow(sigma, family == KernelFamily::compact ? -degree : degree);
