@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -33,7 +34,9 @@ template <std::size_t N>
 struct Panel {
   int piece;  ///< which integrand (outer level: which sub-triangle)
   double a, b;
-  Values<N> value, error;
+  Values<N> value;
+  Values<N> error;        ///< |K31 − G15|: this level's discretisation error
+  Values<N> inner_error;  ///< the integrand values' own errors, integrated
 };
 
 template <std::size_t N>
@@ -77,18 +80,21 @@ Panel<N> gauss_kronrod_panel(int piece, double a, double b, Integrand& integrand
     add(x[j], wk[j], weight_gauss);
     add(-x[j], wk[j], weight_gauss);
   }
-  Panel<N> panel{piece, a, b, {}, {}};
+  Panel<N> panel{piece, a, b, {}, {}, {}};
   for (std::size_t c = 0; c < N; ++c) {
     panel.value[c] = half * kronrod[c];
-    panel.error[c] = std::abs(half) * (std::abs(kronrod[c] - gauss[c]) + inner_error[c]);
+    panel.error[c] = std::abs(half) * std::abs(kronrod[c] - gauss[c]);
+    panel.inner_error[c] = std::abs(half) * inner_error[c];
   }
   return panel;
 }
 
 /// Global adaptive quadrature: starts with one panel per piece [a, b], then
 /// bisects the panel with the largest error relative to its component's
-/// allowance until every component's summed error is within allowance(totals)
-/// (absolute allowances; infinity: no demand).
+/// allowance until every component's summed discretisation error is within
+/// allowance(totals) (absolute allowances; infinity: no demand) or within
+/// the summed inner errors (bisecting cannot remove those: refining below
+/// them gains nothing). The result's error is the sum of both.
 struct Interval {
   double a, b;
 };
@@ -103,15 +109,17 @@ Adaptive<N> integrate_adaptive(std::span<const Interval> pieces, Integrand& inte
   Adaptive<N> result;
   for (;;) {
     result.value = {};
-    result.error = {};
+    Values<N> discretisation{}, inner{};
     for (const auto& p : panels)
       for (std::size_t c = 0; c < N; ++c) {
         result.value[c] += p.value[c];
-        result.error[c] += p.error[c];
+        discretisation[c] += p.error[c];
+        inner[c] += p.inner_error[c];
       }
+    for (std::size_t c = 0; c < N; ++c) result.error[c] = discretisation[c] + inner[c];
     const Values<N> allowed = allowance(result.value);
     bool ok = true;
-    for (std::size_t c = 0; c < N; ++c) ok = ok && result.error[c] <= allowed[c];
+    for (std::size_t c = 0; c < N; ++c) ok = ok && discretisation[c] <= std::max(allowed[c], inner[c]);
     if (ok) {
       result.converged = true;
       return result;
@@ -300,7 +308,8 @@ Adaptive<3> radial_integral(Setup& s, const Vec2& e, double rho_max, double a, d
   }
   if (!(lo < hi)) return exact_zero<3>();
   const double width = hi - lo;
-  auto integrand = [&](int, double t, Values<3>& value, Values<3>& error) {
+  // Values 0–2 as above; 3–5 bound their rounding noise (see below).
+  auto integrand = [&](int, double t, Values<6>& value, Values<6>& error) {
     ++s.evaluations;
     error = {};
     // ρ(t) with dρ/dt vanishing at the root ends (q ~ t² there).
@@ -320,7 +329,8 @@ Adaptive<3> radial_integral(Setup& s, const Vec2& e, double rho_max, double a, d
     }
     const double tau = s.tauO + a * rho;
     const double r2 = s.w2 + rho * (rho + 2 * b);
-    const double q = (std::sqrt(s.sigma2) * tau - std::sqrt(r2)) * (std::sqrt(s.sigma2) * tau + std::sqrt(r2));
+    const double sigma_tau = std::sqrt(s.sigma2) * tau, r = std::sqrt(r2);
+    const double q = (sigma_tau - r) * (sigma_tau + r);
     if (!(tau > 0.0) || !(q > 0.0)) {
       value = {};
       return;
@@ -337,9 +347,32 @@ Adaptive<3> radial_integral(Setup& s, const Vec2& e, double rho_max, double a, d
     } else {
       value[1] = value[2] = 0.0;
     }
+    // Rounding noise: q is a difference, known only to δq ≈ 4ε (στ + r)²
+    // (the inputs' rounding shifts it by as much), so a value ∝ q^k carries
+    // a relative error ~k δq / q (at most 1) that no quadrature removes. On a
+    // ray that only grazes the support q stays small, and its integral cannot
+    // reach a relative `tolerance` of its own (it matters little to F).
+    const double dq = 4 * std::numeric_limits<double>::epsilon() * (sigma_tau + r) * (sigma_tau + r);
+    value[3] = std::abs(value[0]) * std::min(1.0, 0.5 * i * dq / q);
+    value[4] = std::abs(value[1]) * std::min(1.0, 0.5 * (i - 2) * dq / q);
+    value[5] = std::abs(value[2]) * std::min(1.0, 0.5 * (i - 2) * dq / q);
+  };
+  // Each part within `tolerance` of itself, or within twice its noise.
+  auto allowance_with_noise = [&](const Values<6>& total) {
+    const Values<3> relative = allowance(Values<3>{total[0], total[1], total[2]});
+    return Values<6>{std::max(relative[0], 2 * total[3]), std::max(relative[1], 2 * total[4]),
+                     std::max(relative[2], 2 * total[5]), infinity, infinity, infinity};
   };
   const Interval piece{0.0, 1.0};
-  return integrate_adaptive<3>(std::span(&piece, 1), integrand, allowance, max_inner_panels);
+  const Adaptive<6> ray = integrate_adaptive<6>(std::span(&piece, 1), integrand, allowance_with_noise,
+                                                max_inner_panels);
+  Adaptive<3> result;
+  result.converged = ray.converged;
+  for (int c = 0; c < 3; ++c) {
+    result.value[c] = ray.value[c];
+    result.error[c] = ray.error[c] + ray.value[c + 3];  // the noise is an error too
+  }
+  return result;
 }
 
 /// Real roots of c2 x² + 2 c1 x + c0 = 0 (none when c2 = c1 = 0).
@@ -538,11 +571,12 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
     const double magnitude_sum = lever * std::abs(t[1]) + std::hypot(t[2], t[3]);
     return std::max(gradient_of(t).norm(), scalis_triangle_gradient_floor * magnitude_sum);
   };
+  const double outer_tolerance = tolerance;
   auto allowance = [&](const Values<4>& t) {
-    if (!with_gradient) return Values<4>{tolerance * std::abs(t[0]), infinity, infinity, infinity};
-    const double g = tolerance * gradient_scale_of(t);
-    return Values<4>{tolerance * std::abs(t[0]), lever > 0.0 ? g / (2 * lever) : infinity, g / (2 * std::sqrt(2.0)),
-                     g / (2 * std::sqrt(2.0))};
+    if (!with_gradient) return Values<4>{outer_tolerance * std::abs(t[0]), infinity, infinity, infinity};
+    const double g = outer_tolerance * gradient_scale_of(t);
+    return Values<4>{outer_tolerance * std::abs(t[0]), lever > 0.0 ? g / (2 * lever) : infinity,
+                     g / (2 * std::sqrt(2.0)), g / (2 * std::sqrt(2.0))};
   };
   const Adaptive<4> total = integrate_adaptive<4>(panel_ranges, integrand, allowance, max_outer_panels, &ray_failed);
 

@@ -45,14 +45,23 @@
 // Both levels are adaptive Gauss–Kronrod 15/31 (boost's nodes) with global
 // bisection of the panel of largest error. A panel's error is |K31 − G15|
 // (the error of the embedded Gauss rule, a large over-estimate of the
-// Kronrod result's own) plus, at the outer level, the inner levels' error
-// estimates integrated with the Kronrod weights. F's integrand is positive,
-// ∂F/∂z's and the radial moments' are of one sign, so the inner levels
-// stop at a relative error `tolerance` of their own values; the outer level
-// stops when the estimate of F is within tolerance·|F| and that of ∇F within
+// Kronrod result's own) plus, at the outer level, the rays' error estimates
+// integrated with the Kronrod weights. F's integrand is positive, ∂F/∂z's
+// and the radial moments' are of one sign, so a ray stops at a relative
+// error `tolerance` of its own values, or (compact) at twice the rounding
+// noise of its values: q = σ²τ² − |PQ|² is a difference known to
+// ~4ε(στ + r)², so a ray that only grazes the support cannot do better, and
+// that noise is added to its error estimate. The outer level stops when the
+// estimate of F is within tolerance·|F| and that of ∇F within
 // tolerance·max(|∇F|, gradient_floor · M), M the sum of the magnitudes of
 // the parts of ∇F (a floor for a point where ∇F cancels to ~0, e.g. by
-// symmetry, where a relative error has no meaning).
+// symmetry, where a relative error has no meaning) — or when its own
+// discretisation error is below the rays' summed errors, which bisection
+// cannot reduce. The reported errors are the sums of both, so what the
+// caller certifies includes the rounding noise. Measured (tests, random
+// points): estimates ≤ 1e-13 for inverse/Cauchy and ≤ 7e-12 for compact
+// (the noise bound), actual errors ~1e-15; 1,000–50,000 integrand
+// evaluations, median 60–130 µs, at most ~1 ms per F and ∇F.
 //
 // Points where the integral diverges (P in the closed triangle for the
 // inverse kernel; P at a point of radius 0 of the closed triangle for the
