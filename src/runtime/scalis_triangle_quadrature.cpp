@@ -536,7 +536,7 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
   std::vector<Interval> panel_ranges = pieces;
   if (smoothstep) std::fill(panel_ranges.begin(), panel_ranges.end(), Interval{0.0, 1.0});
   bool ray_failed = false;
-  auto integrand = [&](int piece, double panel_variable, Values<4>& value, Values<4>& error) {
+  auto integrand = [&](int piece, double panel_variable, Values<5>& value, Values<5>& error) {
     const FanTriangle& fan = fans[piece_fan[piece]];
     double angle_variable = panel_variable, jacobian = 1.0;
     if (smoothstep) {
@@ -552,9 +552,10 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
     const double slope = (std::max(0.0, tauE) - s.tauO) / rho_max;
     const Adaptive<3> ray = radial_integral(s, e, rho_max, slope, tolerance);
     const double dphi = jacobian / ch;
-    value = {ray.value[0] * dphi, ray.value[1] * dphi, ray.value[2] * e.x() * dphi, ray.value[2] * e.y() * dphi};
+    value = {ray.value[0] * dphi, ray.value[1] * dphi, ray.value[2] * e.x() * dphi, ray.value[2] * e.y() * dphi,
+             std::abs(ray.value[2]) * dphi};
     error = {ray.error[0] * dphi, ray.error[1] * dphi, ray.error[2] * std::abs(e.x()) * dphi,
-             ray.error[2] * std::abs(e.y()) * dphi};
+             ray.error[2] * std::abs(e.y()) * dphi, 0.0};
     // An unconverged ray poisons the estimate, and ends the integration:
     // the result could not be certified anyway.
     if (!ray.converged) {
@@ -564,21 +565,22 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
   };
   // ∇F (local, up to the constant factor) = (P̄ − O, z) G0 − (G1x, G1y, 0).
   const double lever = std::sqrt(s.w2);  // |(P̄ − O, z)|
-  auto gradient_of = [&](const Values<4>& t) {
+  auto gradient_of = [&](const Values<5>& t) {
     return Vec3(-s.offset.x() * t[1] - t[2], -s.offset.y() * t[1] - t[3], z * t[1]);
   };
-  auto gradient_scale_of = [&](const Values<4>& t) {
-    const double magnitude_sum = lever * std::abs(t[1]) + std::hypot(t[2], t[3]);
+  // The sum of the magnitudes of ∇F's parts: |(P̄ − O, z)| |G0| and
+  // ∫ |G1| dφ (value 4), however they cancel in ∇F.
+  auto gradient_scale_of = [&](const Values<5>& t) {
+    const double magnitude_sum = lever * std::abs(t[1]) + t[4];
     return std::max(gradient_of(t).norm(), scalis_triangle_gradient_floor * magnitude_sum);
   };
-  const double outer_tolerance = tolerance;
-  auto allowance = [&](const Values<4>& t) {
-    if (!with_gradient) return Values<4>{outer_tolerance * std::abs(t[0]), infinity, infinity, infinity};
-    const double g = outer_tolerance * gradient_scale_of(t);
-    return Values<4>{outer_tolerance * std::abs(t[0]), lever > 0.0 ? g / (2 * lever) : infinity,
-                     g / (2 * std::sqrt(2.0)), g / (2 * std::sqrt(2.0))};
+  auto allowance = [&](const Values<5>& t) {
+    if (!with_gradient) return Values<5>{tolerance * std::abs(t[0]), infinity, infinity, infinity, infinity};
+    const double g = tolerance * gradient_scale_of(t);
+    return Values<5>{tolerance * std::abs(t[0]), lever > 0.0 ? g / (2 * lever) : infinity,
+                     g / (2 * std::sqrt(2.0)), g / (2 * std::sqrt(2.0)), infinity};
   };
-  const Adaptive<4> total = integrate_adaptive<4>(panel_ranges, integrand, allowance, max_outer_panels, &ray_failed);
+  const Adaptive<5> total = integrate_adaptive<5>(panel_ranges, integrand, allowance, max_outer_panels, &ray_failed);
 
   // The constant factor σ^i (inverse, Cauchy) or σ^(−i) (compact).
   const double factor = std::pow(sigma, family == KernelFamily::compact ? -degree : degree);

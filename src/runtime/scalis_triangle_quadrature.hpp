@@ -53,9 +53,10 @@
 // ~4ε(στ + r)², so a ray that only grazes the support cannot do better, and
 // that noise is added to its error estimate. The outer level stops when the
 // estimate of F is within tolerance·|F| and that of ∇F within
-// tolerance·max(|∇F|, gradient_floor · M), M the sum of the magnitudes of
-// the parts of ∇F (a floor for a point where ∇F cancels to ~0, e.g. by
-// symmetry, where a relative error has no meaning) — or when its own
+// tolerance·max(|∇F|, gradient_floor · M), M = |P − O| |∫∫G0| + ∫ |G1| dφ
+// the sum of the magnitudes of the parts of ∇F (a floor for a point where
+// ∇F cancels to ~0, e.g. by symmetry, where a relative error has no
+// meaning) — or when its own
 // discretisation error is below the rays' summed errors, which bisection
 // cannot reduce. The reported errors are the sums of both, so what the
 // caller certifies includes the rounding noise. Measured (tests, random
