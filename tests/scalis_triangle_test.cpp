@@ -378,6 +378,25 @@ TEST(ScalisTriangleValues, RandomPointsAreCertifiedAndAdditive) {
   std::printf("random points, additivity: worst relative %.2e\n", worst);
 }
 
+TEST(ScalisTriangleValues, GradientCancellingBySymmetryIsCertified) {
+  // Just above the centre of an equilateral triangle the in-plane parts of
+  // ∇F cancel exactly and |∇F| ~ z: the numerical path must still certify
+  // (against the sum of the parts' magnitudes) and agree with the closed form.
+  const double side = 10, r_in = side / (2 * std::sqrt(3.0));
+  const std::array<Vec3, 3> equilateral{Vec3(-side / 2, -r_in, 0), Vec3(side / 2, -r_in, 0), Vec3(0, 2 * r_in, 0)};
+  for (const ScalisKernel& kernel : {kernel_of(KernelFamily::cauchy, 4), kernel_of(KernelFamily::compact, 4),
+                                     kernel_of(KernelFamily::inverse, 3)}) {
+    const ScalisTriangle triangle(equilateral, {0.25, 0.25, 0.25}, kernel);
+    const Vec3 p(0, 0, 1e-7);
+    FieldSample numerical;
+    ASSERT_NO_THROW(numerical = triangle.numerical_value_and_gradient(p)) << family_name(kernel.family);
+    const FieldSample closed = triangle.value_and_gradient(p);
+    EXPECT_LE(std::abs(numerical.value - closed.value), 1e-12 * closed.value) << family_name(kernel.family);
+    EXPECT_LE(std::abs(numerical.gradient.z() - closed.gradient.z()), 1e-9 * std::abs(closed.gradient.z()))
+        << family_name(kernel.family);
+  }
+}
+
 TEST(ScalisTriangleValues, ErrorEstimatesBoundTheActualErrors) {
   // Asked for a loose relative error, the numerical path's estimates must
   // still cover the actual errors (against the closed form, constant radius);
