@@ -99,7 +99,7 @@ void add_duffy(const ReferenceTriangle& t, const std::array<RPoint, 3>& q, const
       }
       const Real tau = tq[0] + u * (tq[1] - tq[0]) + u * v * (tq[2] - tq[1]);
       if (!(tau > 0)) continue;
-      Real value, derivative_over_d;
+      Real value = 0, derivative_over_d = 0;
       kernel_terms(t, std::sqrt(r2), tau, value, derivative_over_d);
       out.F += weight * value;
       for (int c = 0; c < 3; ++c) out.gradient[c] += weight * derivative_over_d * (p[c] - x[c]);
