@@ -11,21 +11,10 @@
 namespace skelconv::codegen {
 
 namespace {
-
-constexpr const char* kFunctionSuffix[] = {"f", "grad", "f_and_grad"};
 constexpr const char* kGenericSuffix = "f_and_grad_generic";
-constexpr SegmentOutputs kOutputs[] = {SegmentOutputs::value, SegmentOutputs::gradient,
-                                       SegmentOutputs::value_and_gradient};
+}  // namespace
 
-constexpr const char* kSegmentSources =
-    "codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp\n"
-    "// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).";
-constexpr const char* kPolygonSources =
-    "codegen/polygon_families.cpp (the contour sum per edge; SPEC §3,\n"
-    "// Hubert 2012 §5–8), on the segment forms of codegen/segment_families.cpp.";
-
-std::string file_header(const std::string& file, const std::string& what, const GeneratorRequest& request,
-                        const char* sources = kSegmentSources) {
+std::string file_header(const std::string& file, const std::string& what, const GeneratorRequest& request) {
   std::ostringstream os;
   os << "// generated/" << file << " — " << what << "\n"
      << "//\n"
@@ -33,7 +22,8 @@ std::string file_header(const std::string& file, const std::string& what, const 
      << "//     " << request.command_line << " --out generated\n"
      << "// Generator: skelconv-codegen " << SKELCONV_VERSION << " (GiNaC " << GINACLIB_MAJOR_VERSION << '.'
      << GINACLIB_MINOR_VERSION << '.' << GINACLIB_MICRO_VERSION << ")\n"
-     << "// From: " << sources << "\n";
+     << "// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp\n"
+     << "// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).\n";
   return os.str();
 }
 
@@ -52,6 +42,8 @@ std::string ops_initializer(const OpCount& o) {
   return os.str();
 }
 
+namespace {
+
 struct EmittedKernel {
   SegmentKernelSpec spec;
   OpCount ops[3];          // f, grad, f_and_grad: generic path
@@ -59,26 +51,7 @@ struct EmittedKernel {
 };
 
 std::string function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {
-  const std::string name = spec.name() + "_" + kFunctionSuffix[which];
-  std::ostringstream os;
-  static const char* kWhat[] = {"the field", "its gradient ∇_P f", "the field and its gradient"};
-  os << "/// " << kWhat[which] << ", where\n"
-     << "///     " << spec.equation() << "\n"
-     << "/// Operations: " << ops_text(code.ops) << " (generic form).\n";
-  if (!(code.ops_longest == code.ops)) os << "/// Longest path: " << ops_text(code.ops_longest) << ".\n";
-  os
-     << "template <class T>\n";
-  switch (which) {
-    case 0: os << "T " << name << "(const SegmentInput<T>& in) {\n"; break;
-    case 1: os << "std::array<T, 3> " << name << "(const SegmentInput<T>& in) {\n"; break;
-    default: os << "T " << name << "(const SegmentInput<T>& in, std::array<T, 3>& grad) {\n"; break;
-  }
-  os << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n";
-  if (which != 1) os << "  T f;\n";
-  if (which == 1) os << "  std::array<T, 3> grad;\n";
-  os << code.body;
-  os << (which == 1 ? "  return grad;\n" : "  return f;\n") << "}\n\n";
-  return os.str();
+  return kernel_function_text(spec.name(), spec.equation(), "SegmentInput", which, code);
 }
 
 // f and ∇f on the generic forms only: straight-line code for batch (SIMD)
@@ -99,20 +72,42 @@ std::string generic_function_text(const SegmentKernelSpec& spec, const EmittedCo
   return os.str();
 }
 
-// One polygon edge function: writes the PolygonEdgeTerms its outputs need.
-std::string polygon_function_text(const PolygonKernelSpec& spec, int which, const EmittedCode& code) {
-  const std::string name = spec.name() + "_" + kFunctionSuffix[which];
-  static const char* kWhat[] = {"f", "∇f", "f and ∇f"};
+}  // namespace
+
+std::string kernel_function_text(const std::string& kernel_name, const std::string& equation,
+                                 const std::string& input_type, int which, const EmittedCode& code,
+                                 const std::string& prologue) {
+  const std::string name = kernel_name + "_" + kFunctionSuffix[which];
   std::ostringstream os;
-  os << "/// The terms of one edge for " << kWhat[which] << " (skelconv/polygon_field.hpp adds them up), where\n"
-     << "///     " << spec.equation() << "\n"
-     << "/// Operations per edge: " << ops_text(code.ops) << " (generic form).\n";
+  static const char* kWhat[] = {"the field", "its gradient ∇_P f", "the field and its gradient"};
+  os << "/// " << kWhat[which] << ", where\n"
+     << "///     " << equation << "\n"
+     << "/// Operations: " << ops_text(code.ops) << " (generic form).\n";
   if (!(code.ops_longest == code.ops)) os << "/// Longest path: " << ops_text(code.ops_longest) << ".\n";
-  os << "template <class T>\n"
-     << "void " << name << "(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {\n"
-     << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n"
-     << code.body << "}\n\n";
+  os
+     << "template <class T>\n";
+  switch (which) {
+    case 0: os << "T " << name << "(const " << input_type << "<T>& in) {\n"; break;
+    case 1: os << "std::array<T, 3> " << name << "(const " << input_type << "<T>& in) {\n"; break;
+    default: os << "T " << name << "(const " << input_type << "<T>& in, std::array<T, 3>& grad) {\n"; break;
+  }
+  os << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n";
+  if (which != 1) os << "  T f;\n";
+  if (which == 1) os << "  std::array<T, 3> grad;\n";
+  os << prologue << code.body;
+  os << (which == 1 ? "  return grad;\n" : "  return f;\n") << "}\n\n";
   return os.str();
+}
+
+std::string opcount_csv_row(const std::string& kernel_name, const std::string& family, int degree, int weight_degree,
+                            int which, const OpCount& o, const OpCount& l) {
+  std::ostringstream csv;
+  csv << kernel_name << '_' << kFunctionSuffix[which] << ',' << family << ',' << degree << ',' << weight_degree << ','
+      << kFunctionSuffix[which] << ',' << o.add << ',' << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan
+      << ',' << o.log << ',' << o.other;
+  csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
+      << l.other << '\n';
+  return csv.str();
 }
 
 void write_file(const std::filesystem::path& path, const std::string& text) {
@@ -120,8 +115,6 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   out << text;
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
-
-}  // namespace
 
 void write_generated_folder(const GeneratorRequest& request, const std::filesystem::path& folder) {
   std::filesystem::create_directories(folder);
@@ -192,98 +185,20 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "}  // namespace skelconv::generated\n";
   write_file(folder / "segment_table.hpp", table.str());
 
-  // Polygon edge kernels: one header per family and their table.
-  struct EmittedPolygonKernel {
-    PolygonKernelSpec spec;
-    OpCount ops[3], ops_longest[3];
-  };
-  std::vector<EmittedPolygonKernel> polygon_kernels;
-  std::map<KernelFamily, std::string> polygon_bodies;
-  for (const PolygonKernelSpec& spec : request.polygon_kernels) {
-    EmittedPolygonKernel k{spec, {}, {}};
-    for (int which = 0; which < 3; ++which) {
-      const EmittedCode code = build_polygon_edge_program(spec, kOutputs[which]).emit();
-      k.ops[which] = code.ops;
-      k.ops_longest[which] = code.ops_longest;
-      polygon_bodies[spec.family] += polygon_function_text(spec, which, code);
-    }
-    polygon_kernels.push_back(k);
-  }
-  for (const auto& [family, body] : polygon_bodies) {
-    const std::string file = "polygon_" + std::string(family_name(family)) + ".hpp";
-    std::ostringstream os;
-    os << file_header(file, "polygon edge kernels of the " + std::string(family_name(family)) + " family.", request,
-                      kPolygonSources)
-       << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
-       << "#include <skelconv/gauss_moments.hpp>\n#include <skelconv/polygon_edge_input.hpp>\n"
-       << "#include <skelconv/polygon_angle_integrals.hpp>\n#include <skelconv/segment_input.hpp>\n"
-       << "#include <skelconv/stable_recurrence.hpp>\n\n"
-       << "namespace skelconv::generated {\n\n"
-       << body << "}  // namespace skelconv::generated\n";
-    write_file(folder / file, os.str());
-  }
-  if (!polygon_kernels.empty()) {
-    std::ostringstream table;
-    table << file_header("polygon_table.hpp", "every generated polygon edge kernel, for lookup at run time.", request,
-                         kPolygonSources)
-          << "#pragma once\n\n#include <span>\n\n";
-    for (const auto& [family, body] : polygon_bodies)
-      table << "#include \"generated/polygon_" << family_name(family) << ".hpp\"\n";
-    table << "\nnamespace skelconv::generated {\n\n"
-          << "/// One generated polygon edge kernel: the edge terms for f, ∇f and both, with their\n"
-          << "/// operation counts per edge.\n"
-          << "template <class T>\nstruct PolygonEdgeKernel {\n"
-          << "  KernelFamily family;\n  int degree;\n"
-          << "  void (*f)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);\n"
-          << "  void (*grad)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);\n"
-          << "  void (*f_and_grad)(const PolygonEdgeInput<T>&, PolygonEdgeTerms<T>&);\n"
-          << "  const char* name;\n  const char* equation;\n"
-          << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n"
-          << "/// Every generated polygon edge kernel, sorted by family and degree.\n"
-          << "template <class T>\nstd::span<const PolygonEdgeKernel<T>> polygon_edge_kernels() {\n"
-          << "  static const PolygonEdgeKernel<T> table[] = {\n";
-    for (const EmittedPolygonKernel& k : polygon_kernels) {
-      const std::string n = k.spec.name();
-      table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", &" << n
-            << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, \"" << n << "\",\n       \""
-            << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", " << ops_initializer(k.ops[1]) << ", "
-            << ops_initializer(k.ops[2]) << "},\n";
-    }
-    table << "  };\n  return table;\n}\n\n"
-          << "/// The edge kernel for (family, degree), or nullptr if it was not generated.\n"
-          << "template <class T>\n"
-          << "const PolygonEdgeKernel<T>* find_polygon_edge_kernel(KernelFamily family, int degree) {\n"
-          << "  for (const PolygonEdgeKernel<T>& k : polygon_edge_kernels<T>())\n"
-          << "    if (k.family == family && k.degree == degree) return &k;\n"
-          << "  return nullptr;\n}\n\n"
-          << "}  // namespace skelconv::generated\n";
-    write_file(folder / "polygon_table.hpp", table.str());
-  }
+  // Polygon edges and SCALIS segments: their own headers and tables
+  // (polygon_writer.cpp, scalis_segment_writer.cpp).
+  const std::string polygon_csv_rows = write_polygon_files(request, folder);
+  const std::string scalis_csv_rows = write_scalis_segment_files(request, folder);
 
   // The operation counts, machine-readable.
   std::ostringstream csv;
   csv << "function,family,degree,weight_degree,outputs,add,mul,div,sqrt,atan,log,other,"
          "longest_add,longest_mul,longest_div,longest_sqrt,longest_atan,longest_log,longest_other\n";
   for (const EmittedKernel& k : kernels)
-    for (int which = 0; which < 3; ++which) {
-      const OpCount& o = k.ops[which];
-      csv << k.spec.name() << '_' << kFunctionSuffix[which] << ',' << family_name(k.spec.family) << ','
-          << k.spec.degree << ',' << k.spec.weight_degree << ',' << kFunctionSuffix[which] << ',' << o.add << ','
-          << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan << ',' << o.log << ',' << o.other;
-      const OpCount& l = k.ops_longest[which];
-      csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
-          << l.other << '\n';
-    }
-  for (const EmittedPolygonKernel& k : polygon_kernels)
-    for (int which = 0; which < 3; ++which) {
-      const OpCount& o = k.ops[which];
-      csv << k.spec.name() << '_' << kFunctionSuffix[which] << ",polygon_" << family_name(k.spec.family) << ','
-          << k.spec.degree << ",0," << kFunctionSuffix[which] << ',' << o.add << ',' << o.mul << ',' << o.div << ','
-          << o.sqrt << ',' << o.atan << ',' << o.log << ',' << o.other;
-      const OpCount& l = k.ops_longest[which];
-      csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
-          << l.other << '\n';
-    }
+    for (int which = 0; which < 3; ++which)
+      csv << opcount_csv_row(k.spec.name(), std::string(family_name(k.spec.family)), k.spec.degree,
+                             k.spec.weight_degree, which, k.ops[which], k.ops_longest[which]);
+  csv << polygon_csv_rows << scalis_csv_rows;
   write_file(folder / "opcounts.csv", csv.str());
 }
 

@@ -14,11 +14,41 @@ namespace skelconv::codegen {
 /// What to generate; the command line (main.cpp) fills it.
 struct GeneratorRequest {
   std::vector<SegmentKernelSpec> segment_kernels;
-  std::vector<PolygonKernelSpec> polygon_kernels;
+  std::vector<PolygonKernelSpec> polygon_kernels;        ///< SPEC §3 (polygon_writer.cpp)
+  std::vector<ScalisKernelSpec> scalis_segment_kernels;  ///< SPEC §4 (scalis_segment_writer.cpp)
   std::string command_line;  ///< recorded in every file header (without --out)
 };
 
 /// Writes every file of `request` into `folder`. Same request, same bytes.
 void write_generated_folder(const GeneratorRequest& request, const std::filesystem::path& folder);
+
+// Shared by the writers of the generated files.
+/// f, grad, f_and_grad: the suffixes of the three functions of a kernel.
+inline constexpr const char* kFunctionSuffix[] = {"f", "grad", "f_and_grad"};
+inline constexpr SegmentOutputs kOutputs[] = {SegmentOutputs::value, SegmentOutputs::gradient,
+                                              SegmentOutputs::value_and_gradient};
+/// The comment at the top of generated/`file`: what it is and the command that made it.
+std::string file_header(const std::string& file, const std::string& what, const GeneratorRequest& request);
+/// "12 +, 30 ×, …" and "{12, 30, …}" (an OpCount initializer).
+std::string ops_text(const OpCount& o);
+std::string ops_initializer(const OpCount& o);
+/// One generated function (`which`: 0 f, 1 grad, 2 f_and_grad) of kernel
+/// `kernel_name`, reading `const input_type<T>& in`; `prologue` (C++
+/// statements) comes before the program's body.
+std::string kernel_function_text(const std::string& kernel_name, const std::string& equation,
+                                 const std::string& input_type, int which, const EmittedCode& code,
+                                 const std::string& prologue = "");
+/// One row of opcounts.csv: generic-path counts `o`, longest-path counts `l`.
+std::string opcount_csv_row(const std::string& kernel_name, const std::string& family, int degree, int weight_degree,
+                            int which, const OpCount& o, const OpCount& l);
+void write_file(const std::filesystem::path& path, const std::string& text);
+
+/// Writes generated/polygon_{inverse,cauchy,compact}.hpp and
+/// polygon_table.hpp; returns their rows of opcounts.csv.
+std::string write_polygon_files(const GeneratorRequest& request, const std::filesystem::path& folder);
+
+/// Writes generated/scalis_segment_{inverse,cauchy}.hpp and
+/// scalis_segment_table.hpp; returns their rows of opcounts.csv.
+std::string write_scalis_segment_files(const GeneratorRequest& request, const std::filesystem::path& folder);
 
 }  // namespace skelconv::codegen

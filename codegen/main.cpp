@@ -4,6 +4,7 @@
 //   skelconv-codegen --out generated [--inverse 1:16] [--cauchy 1:16]
 //                    [--compact 2:16] [--weights 0:3] [--polygon-inverse 3:12]
 //                    [--polygon-cauchy 3:12] [--polygon-compact 4:12]
+//                    [--scalis-inverse 2:10] [--scalis-cauchy 2:10]
 #include <CLI/CLI.hpp>
 
 #include <sys/personality.h>
@@ -11,6 +12,7 @@
 
 #include <iostream>
 #include <regex>
+#include <tuple>
 
 #include "kernel_writer.hpp"
 
@@ -62,13 +64,18 @@ int main(int argc, char** argv) {
   app.add_option("--polygon-cauchy", polygon_cauchy, "polygon Cauchy degrees (i ≥ 3)")->capture_default_str();
   app.add_option("--polygon-compact", polygon_compact, "polygon compact degrees (even i ≥ 2; odd ones skipped)")
       ->capture_default_str();
+  // SCALIS segments (SPEC §4): the weight τ(t)^(i−1) has degree i − 1.
+  std::string scalis_inverse = "2:10", scalis_cauchy = "2:10";
+  app.add_option("--scalis-inverse", scalis_inverse, "SCALIS inverse segment degrees i (i ≥ 2)")->capture_default_str();
+  app.add_option("--scalis-cauchy", scalis_cauchy, "SCALIS Cauchy segment degrees i (i ≥ 2)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try {
     skelconv::codegen::GeneratorRequest request;
     request.command_line = "skelconv-codegen --inverse " + inverse + " --cauchy " + cauchy + " --compact " + compact +
                            " --weights " + weights + " --polygon-inverse " + polygon_inverse + " --polygon-cauchy " +
-                           polygon_cauchy + " --polygon-compact " + polygon_compact;
+                           polygon_cauchy + " --polygon-compact " + polygon_compact + " --scalis-inverse " +
+                           scalis_inverse + " --scalis-cauchy " + scalis_cauchy;
     const DegreeRange w = parse_range(weights, "--weights");
     if (w.last > skelconv::max_weight_degree)
       throw CLI::ValidationError("--weights", "SegmentInput holds weights up to degree " +
@@ -100,9 +107,17 @@ int main(int argc, char** argv) {
       for (int i = range.first; i <= range.last; ++i)
         if (family != KernelFamily::compact || i % 2 == 0) request.polygon_kernels.push_back({family, i});
     }
+    for (const auto& [family, option, text] :
+         {std::tuple{KernelFamily::inverse, "--scalis-inverse", scalis_inverse},
+          std::tuple{KernelFamily::cauchy, "--scalis-cauchy", scalis_cauchy}}) {
+      const DegreeRange range = parse_range(text, option);
+      if (range.last >= range.first && range.first < 2) throw CLI::ValidationError(option, "SCALIS degrees start at 2");
+      for (int i = range.first; i <= range.last; ++i) request.scalis_segment_kernels.push_back({family, i});
+    }
     skelconv::codegen::write_generated_folder(request, out);
-    std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels and "
-              << request.polygon_kernels.size() << " polygon edge kernels to " << out << '\n';
+    std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels, "
+              << request.polygon_kernels.size() << " polygon edge kernels and " << request.scalis_segment_kernels.size()
+              << " SCALIS segment kernels to " << out << '\n';
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

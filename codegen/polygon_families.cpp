@@ -15,6 +15,8 @@ namespace {
 // angle integral of polygon_angle_integrals.hpp is used instead (its integrand's
 // singularities are then ≥ 1.3 away from the real axis).
 const ex kNearPlaneRatio = numeric(2);
+// Inverse and Cauchy kernels nearly flat along an edge: ζ² ≥ kFlatKernelRatio·a.
+const ex kFlatKernelRatio = numeric(2);
 // Compact kernels: the closed form G^(p) = w^p θ_in − … is used for a chord
 // that comes within √kChordRimRatio of the support disc's radius of P̄.
 const ex kChordRimRatio = numeric(1, 4);
@@ -81,10 +83,35 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
     const ex slope0 = symbols_.lo.slope, slope1 = symbols_.hi.slope;  // a t − b at t = 0, 1
     const int lowest_H = value_ ? i - 2 : i;
 
-    std::vector<symbol> targets;
+    // Targets: θ_in, the part of θ already inside the others, and
+    // S_f = H_{i−2} − ζ^(2−i) θ_in, S_g = H_i − ζ^(−i) θ_in (the driver
+    // multiplies only Θ − Σ θ_in by powers of ζ).
+    std::vector<symbol> targets{symbol("theta_in")};
     if (value_) targets.emplace_back("H_f");
     if (gradient_) targets.emplace_back("H_g");
     Choice choice{targets, {}};
+    {
+      // The kernel nearly flat along the edge (ζ² ≥ 2a: the complex zeros of
+      // q at ≥ √2 |E| from it): H_n ≈ ζ^(−n) θ and the fan
+      // ζ^(2−i) θ − H_{i−2} cancels. The fan itself, h ∫ G dt with
+      // G = ζ^(−i) (1 − (1 + x)^(1−i/2)) / ((i − 2) x), x = α ρ²/ζ², is smooth
+      // there and taken by 20-point Gauss–Legendre (polygon_edge_fan_flat).
+      Alternative flat{{zeta2 - kFlatKernelRatio * a_},
+                       "kernel nearly flat along the edge (ζ² ≥ 2a): the fan integral h ∫ G dt directly, "
+                       "polygon_edge_fan_flat (20-point Gauss–Legendre, expm1/log1p)",
+                       {}, {}, {}};
+      const int degree_lo = value_ ? i : i + 2, degree_hi = gradient_ ? i + 2 : i;
+      ArrayCall call{"fan_flat", "polygon_edge_fan_flat<T>", {std::to_string(degree_lo), std::to_string(degree_hi)},
+                     {h_, a_, b_, define("alpha_ap_ap", alpha_ * ap_ap_), zeta2}, {}, {}};
+      for (int k = degree_lo; k <= degree_hi; k += 2)
+        call.elements.emplace_back("fan_flat_" + std::to_string(call.elements.size()));
+      flat.values.push_back(theta_);
+      // S_f = −α(i − 2) F^(i), S_g = −α i F^(i+2), F^(k) the fan of degree k.
+      if (value_) flat.values.push_back(-alpha_ * (i - 2) * call.elements.front());
+      if (gradient_) flat.values.push_back(-alpha_ * i * call.elements.back());
+      flat.calls.push_back(std::move(call));
+      choice.alternatives.push_back(std::move(flat));
+    }
     {
       // Near the plane compared with the edge (ζ² ≤ q_min/4, q_min the least
       // q on the edge): H_n as an angle integral, every level in one call.
@@ -97,6 +124,7 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
                      {alpha_h, a_, zeta2, slope0, slope1}, {}, {}};
       for (int n = lowest_H; n <= highest_H; n += 2)
         call.elements.emplace_back("H_near_" + std::to_string(call.elements.size()));
+      near.values.push_back(0);
       if (value_) near.values.push_back(call.elements.front());
       if (gradient_) near.values.push_back(call.elements.back());
       near.calls.push_back(std::move(call));
@@ -124,13 +152,15 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
         upward.steps.emplace_back(Hn, (H[n - 2] - alpha_h * J_at(n)) / zeta2);
         H[n] = Hn;
       }
+      upward.values.push_back(0);
       if (value_) upward.values.push_back(H[i - 2]);
       if (gradient_) upward.values.push_back(H[i]);
       choice.alternatives.push_back(std::move(upward));
     }
     choice.generic = choice.alternatives.size() - 1;
     program_.choose(std::move(choice));
-    if (value_) program_.add_output("out.S_f", targets.front());
+    program_.add_output("out.theta_in", targets.front());
+    if (value_) program_.add_output("out.S_f", targets[1]);
     if (gradient_) {
       program_.add_output("out.S_g", targets.back());
       program_.add_output("out.J_g", J_at(i));
@@ -173,8 +203,12 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
                         "chord within half the disc radius of P̄: θ_in = atan2(…), "
                         "G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}",
                         {}, {}, {}};
-      // The clipped part's ends v_k = Γ(t_k) − P̄ = t_k AB − AP: v0 × v1 = (t1 − t0) AB × AP.
-      split.values.push_back(GiNaC::atan2((t1 - t0) * h_, ap_ap_ - (t0 + t1) * ab_ap_ + t0 * t1 * ab_ab_));
+      // The clipped part's ends v0 = t0 AB − AP, v1 = −BP − (1 − t1) AB:
+      // v0 × v1 = (t1 − t0) AB × AP and v0·v1 written so that an unclipped
+      // edge (t0 = 0, t1 = 1) gives θ_in = θ bit for bit (Θ − Σ θ_in is then
+      // exactly the angle outside the disc).
+      const ex clip_dot = ap_bp_ + (1 - t1) * ab_ap_ - t0 * ab_bp_ - t0 * (1 - t1) * ab_ab_;
+      split.values.push_back(GiNaC::atan2((t1 - t0) * h_, clip_dot));
       auto G_rest = [&](int p) {
         ex sum = 0;
         for (int k = 0; k < p; ++k) sum += pow(w, k) * J_minus(p - 1 - k);

@@ -40,4 +40,20 @@ enum class SegmentOutputs { value, gradient, value_and_gradient };
 /// the C++ lvalues `f` and `grad[0..2]`.
 StraightLineProgram build_segment_program(const SegmentKernelSpec& spec, SegmentOutputs outputs);
 
+/// One generated SCALIS segment kernel (SPEC §4, Zanni 2013 §3–4): the
+/// inverse or Cauchy family, degree i ≥ 2, radius τ(t) = τ0 + (τ1 − τ0) t.
+/// It is the segment kernel of degree i with the weight σ^i τ(t)^(i−1) and,
+/// for Cauchy, q(t) = |P − Γ(t)|² + σ²τ(t)² (the same choices of stable
+/// forms); its functions read ScalisSegmentInput and refer to the locals
+/// end_a, end_b, tau_lo, tau_hi, the ends ordered so that tau_lo ≤ tau_hi.
+struct ScalisKernelSpec {
+  KernelFamily family;  ///< inverse or cauchy
+  int degree;
+
+  std::string name() const;      ///< e.g. scalis_segment_cauchy_i4
+  std::string equation() const;  ///< the definition it implements, as text
+};
+
+StraightLineProgram build_scalis_segment_program(const ScalisKernelSpec& spec, SegmentOutputs outputs);
+
 }  // namespace skelconv::codegen

@@ -67,7 +67,7 @@ inline OpCount gauss_rule_ops(int nodes, int m_lo, int m_hi, int k_max) {
 // Builds the program step by step; one instance per generated function.
 class SegmentProgramBuilder {
  public:
-  SegmentProgramBuilder(const SegmentKernelSpec& spec) : spec_(spec) {}
+  explicit SegmentProgramBuilder(const SegmentKernelSpec& spec) : spec_(spec) {}
 
   virtual ~SegmentProgramBuilder() = default;
 
@@ -195,11 +195,11 @@ class SegmentProgramBuilder {
 
   // f = |AB| F and ∇f = −n α |AB| (AP G_ap − AB G_ab), SPEC §2.
   void add_outputs(const std::vector<symbol>& targets, bool value, bool gradient) {
-    if (value) program_.add_output("f", length_ * targets[0]);
+    if (value) program_.add_output("f", output_scale_ * length_ * targets[0]);
     if (gradient) {
       const symbol& g_ap = targets[value ? 1 : 0];
       const symbol& g_ab = targets[value ? 2 : 1];
-      const ex factor = define("g_factor", -kernel_index() * alpha_ * length_);
+      const ex factor = define("g_factor", -kernel_index() * alpha_ * output_scale_ * length_);
       for (int i = 0; i < 3; ++i)
         program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
     }
@@ -311,7 +311,7 @@ class SegmentProgramBuilder {
   virtual void adjust_beta() {}
 
   // q(t) = α|P − Γ(t)|² + β = a t² − 2 b t + c.
-  void define_quadratic() {
+  virtual void define_quadratic() {
     switch (spec_.family) {
       case KernelFamily::inverse:
         alpha_ = 1;
@@ -340,6 +340,9 @@ class SegmentProgramBuilder {
     // D = ac − b² = αβ|AB|² + α²|AB × AP|² (Lagrange's identity): no
     // cancellation near the segment's line.
     D_ = define("D", alpha_ * (beta_ * ab_ab_ + alpha_ * cross_cross_));
+    a_minus_b_value_ = -alpha_ * ab_bp_;        // a − b = −α AB·BP
+    q1_value_ = beta_ + alpha_ * bp_bp_;         // q(1) = β + α|BP|²
+    c_minus_b_value_ = beta_ + alpha_ * ap_bp_;  // c − b = β + α AP·BP
   }
 
   // The quadratic's coefficients, common to every family.
@@ -356,8 +359,8 @@ class SegmentProgramBuilder {
   MomentSymbols infinite_support_symbols() {
     MomentSymbols m = quadratic_symbols();
     const bool odd = spec_.degree % 2 != 0;
-    const ex a_minus_b = a_minus_b_ = define("a_minus_b", -alpha_ * ab_bp_);  // a − b = −α AB·BP
-    const ex q1 = define("q1", beta_ + alpha_ * bp_bp_);        // q(1) = β + α|BP|²
+    const ex a_minus_b = a_minus_b_ = define("a_minus_b", a_minus_b_value_);
+    const ex q1 = define("q1", q1_value_);
     const symbol r0("r0"), r1("r1");
     m.lo = {0, c_, r0, -b_};
     m.hi = {1, q1, r1, a_minus_b};
@@ -370,7 +373,7 @@ class SegmentProgramBuilder {
     } else {
       // J_2 = (atan((a−b)/√D) + atan(b/√D))/√D = atan2(√D, c − b)/√D: the two
       // atans of Hubert §3.1 summed into one, exact for all P off the line.
-      const ex c_minus_b = define("c_minus_b", beta_ + alpha_ * ap_bp_);  // c − b = β + α AP·BP
+      const ex c_minus_b = define("c_minus_b", c_minus_b_value_);
       const ex root_D = pow(D_, numeric(1, 2));
       // Only the upward recurrence reads it: it is 0/0 on the line.
       symbol J2("J2");
@@ -427,7 +430,7 @@ class SegmentProgramBuilder {
     return m;
   }
 
-  const SegmentKernelSpec& spec_;
+  const SegmentKernelSpec spec_;
   StraightLineProgram program_;
   std::array<symbol, 3> A_, B_, P_;
   std::vector<ex> w_;
@@ -435,6 +438,8 @@ class SegmentProgramBuilder {
   ex ab_ab_, ab_ap_, ap_ap_, cross_cross_, bp_bp_, ab_bp_, ap_bp_, length_;
   ex alpha_, beta_, inv_R_;
   ex a_, b_, c_, D_, a_minus_b_;
+  ex a_minus_b_value_, q1_value_, c_minus_b_value_;  // set by define_quadratic
+  ex output_scale_ = 1;                              // multiplies f and ∇f (σ^i for SCALIS)
   std::vector<std::pair<symbol, ex>> upward_steps_;  // definitions only the upward form reads
   std::vector<MomentRequest> requests_;               // what choose_moments computes
   MomentSymbols symbols_;                             // the base symbols it defined

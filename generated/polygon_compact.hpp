@@ -1,10 +1,13 @@
 // generated/polygon_compact.hpp — polygon edge kernels of the compact family.
 //
 // GENERATED FILE: DO NOT EDIT. Regenerate with
-//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --out generated
+//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
 // Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
-// From: codegen/polygon_families.cpp (the contour sum per edge; SPEC §3,
-// Hubert 2012 §5–8), on the segment forms of codegen/segment_families.cpp.
+// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
+// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
+// Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum
+// (codegen/polygon_families.cpp), on the segment forms of the edge;
+// skelconv/polygon_field.hpp adds them up.
 #pragma once
 
 #include <algorithm>
@@ -12,8 +15,8 @@
 #include <cmath>
 
 #include <skelconv/gauss_moments.hpp>
-#include <skelconv/polygon_edge_input.hpp>
 #include <skelconv/polygon_angle_integrals.hpp>
+#include <skelconv/polygon_edge_input.hpp>
 #include <skelconv/segment_input.hpp>
 #include <skelconv/stable_recurrence.hpp>
 
@@ -21,7 +24,7 @@ namespace skelconv::generated {
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 81 +, 154 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 84 +, 158 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -34,85 +37,21 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
-  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
+  const T ab_bp = ab2 * bp2 + bp1 * ab1 + bp0 * ab0;
+  const T ap_bp = bp0 * ap0 + ap2 * bp2 + bp1 * ap1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross0 * in.normal[0] + cross2 * in.normal[2] + in.normal[1] * cross1;
-  const T theta = atan2(h, ap_bp);
-  T J_minus4;
-  T J_minus2;
-  T J_minus0;
-  {
-    // even degree: the integrand is a polynomial of degree 4, integrated exactly by segment_moments_gauss<T, 7>
-    std::array<T, 3> M_exact;
-    segment_moments_gauss<T, 7>(-4, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
-    J_minus4 = M_exact[0];
-    J_minus2 = M_exact[1];
-    J_minus0 = M_exact[2];
-  }
-  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
-  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
-  T theta_in;
-  T G_f;
-  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
-  const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
-  if (t1 >= T(0) && t2 >= T(0)) {
-    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * in.t1 * ab_ab + ap_ap - (in.t0 + in.t1) * ab_ap);
-    G_f = -h * (J_minus4 + J_minus2 * zeta2 + J_minus0 * zeta2 * zeta2) * inv_R2;
-  } else {
-    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> G_chord;
-    polygon_edge_G_compact_chord<T>(3, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    theta_in = T(0);
-    G_f = G_chord[0];
-  }
-  out.h = h;
-  out.theta = theta;
-  out.theta_in = theta_in;
-  out.S_f = G_f;
-}
-
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
-///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 80 +, 152 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-template <class T>
-void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
-  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
-  const T ab0 = in.b[0] - in.a[0];
-  const T ap0 = in.p[0] - in.a[0];
-  const T bp0 = in.p[0] - in.b[0];
-  const T ab1 = in.b[1] - in.a[1];
-  const T ap1 = in.p[1] - in.a[1];
-  const T bp1 = in.p[1] - in.b[1];
-  const T ab2 = in.b[2] - in.a[2];
-  const T ap2 = in.p[2] - in.a[2];
-  const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
-  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
-  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
-  const T cross0 = ab1 * ap2 - ab2 * ap1;
-  const T cross1 = ab2 * ap0 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = bp1 * ap1 + ap0 * bp0 + ap2 * bp2;
-  const T inv_R = T(1) / in.R;
-  const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
-  const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
+  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus4;
   T J_minus2;
@@ -128,14 +67,82 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
-  T G_g;
+  T G_f;
   const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(h * (in.t1 - in.t0), in.t1 * ab_ab * in.t0 + ap_ap - (in.t1 + in.t0) * ab_ap);
-    G_g = -(J_minus2 + J_minus0 * zeta2) * h * inv_R2;
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2((in.t1 - in.t0) * h, ap_bp + ab_ab * t3 * in.t0 - t3 * ab_ap - ab_bp * in.t0);
+    G_f = -(J_minus0 * zeta2 * zeta2 + J_minus2 * zeta2 + J_minus4) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 1> G_chord;
+    polygon_edge_G_compact_chord<T>(3, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_f = G_chord[0];
+  }
+  out.h = h;
+  out.theta = theta;
+  out.theta_in = theta_in;
+  out.S_f = G_f;
+}
+
+/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
+/// Operations per edge: 83 +, 156 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+template <class T>
+void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  const T ab0 = in.b[0] - in.a[0];
+  const T ap0 = in.p[0] - in.a[0];
+  const T bp0 = in.p[0] - in.b[0];
+  const T ab1 = in.b[1] - in.a[1];
+  const T ap1 = in.p[1] - in.a[1];
+  const T bp1 = in.p[1] - in.b[1];
+  const T ab2 = in.b[2] - in.a[2];
+  const T ap2 = in.p[2] - in.a[2];
+  const T bp2 = in.p[2] - in.b[2];
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ab1 * ap0;
+  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
+  const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
+  const T inv_R = T(1) / in.R;
+  const T inv_R2 = inv_R * inv_R;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -inv_R2 * ab_ab;
+  const T b = -inv_R2 * ab_ap;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = in.normal[2] * cross2 + in.normal[0] * cross0 + in.normal[1] * cross1;
+  const T theta = atan2(h, ap_bp);
+  T J_minus4;
+  T J_minus2;
+  T J_minus0;
+  {
+    // even degree: the integrand is a polynomial of degree 4, integrated exactly by segment_moments_gauss<T, 7>
+    std::array<T, 3> M_exact;
+    segment_moments_gauss<T, 7>(-4, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    J_minus4 = M_exact[0];
+    J_minus2 = M_exact[1];
+    J_minus0 = M_exact[2];
+  }
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
+  T G_g;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - inv_R2 * h * h;
+  const T t2 = max(T(t0 - inv_R2 * h * h - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
+  if (t1 >= T(0) && t2 >= T(0)) {
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - in.t0 * ab_bp - ab_ap * t3);
+    G_g = -inv_R2 * (zeta2 * J_minus0 + J_minus2) * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -152,7 +159,7 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 82 +, 157 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 85 +, 161 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -165,20 +172,21 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
-  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = bp2 * ap2 + bp1 * ap1 + bp0 * ap0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[0] * cross0 + in.normal[1] * cross1 + in.normal[2] * cross2;
+  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus4;
   T J_minus2;
@@ -192,7 +200,7 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     J_minus0 = M_exact[2];
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_f;
   T G_g;
@@ -201,8 +209,9 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-h * (in.t0 - in.t1), ab_ab * in.t0 * in.t1 + ap_ap - ab_ap * (in.t0 + in.t1));
-    G_f = -h * inv_R2 * (J_minus4 + J_minus0 * zeta2 * zeta2 + J_minus2 * zeta2);
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(h * (in.t1 - in.t0), t3 * ab_ab * in.t0 + ap_bp - t3 * ab_ap - ab_bp * in.t0);
+    G_f = -(J_minus2 * zeta2 + J_minus4 + J_minus0 * zeta2 * zeta2) * h * inv_R2;
     G_g = -h * inv_R2 * (J_minus2 + J_minus0 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
@@ -222,7 +231,7 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 89 +, 179 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 92 +, 183 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -235,20 +244,21 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
-  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
-  const T cross0 = ab1 * ap2 - ab2 * ap1;
-  const T cross1 = ab2 * ap0 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = bp1 * ap1 + bp2 * ap2 + bp0 * ap0;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
-  const T b = -inv_R2 * ab_ap;
+  const T b = -ab_ap * inv_R2;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + cross2 * in.normal[2];
+  const T h = in.normal[0] * cross0 + in.normal[1] * cross1 + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -267,15 +277,16 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
   T G_f;
-  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-h * (in.t0 - in.t1), ap_ap + in.t0 * ab_ab * in.t1 - (in.t0 + in.t1) * ab_ap);
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    G_f = -(J_minus6 + J_minus2 * zeta2 * zeta2 + J_minus4 * zeta2 + t4 * J_minus0) * h * inv_R2;
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - ab_bp * in.t0 - ab_ap * t3);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * zeta2;
+    G_f = -(zeta2 * J_minus4 + J_minus2 * zeta2 * zeta2 + J_minus6 + t5 * J_minus0) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -291,7 +302,7 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 88 +, 176 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 91 +, 180 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -304,20 +315,21 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
-  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
   const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
+  const T ab_bp = ab1 * bp1 + bp0 * ab0 + ab2 * bp2;
+  const T ap_bp = ap1 * bp1 + bp0 * ap0 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[2] * cross2 + cross1 * in.normal[1] + in.normal[0] * cross0;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -338,11 +350,12 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T G_g;
   const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
-    G_g = -h * inv_R2 * (J_minus2 * zeta2 + zeta2 * zeta2 * J_minus0 + J_minus4);
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t3 - in.t0 * ab_bp - ab_ap * t3);
+    G_g = -h * inv_R2 * (zeta2 * zeta2 * J_minus0 + J_minus2 * zeta2 + J_minus4);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -359,7 +372,7 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 91 +, 182 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 94 +, 186 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -372,20 +385,21 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ap2 * ab2 + ap1 * ab1 + ap0 * ab0;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
   const T cross0 = ap2 * ab1 - ap1 * ab2;
   const T cross1 = ap0 * ab2 - ap2 * ab0;
   const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
+  const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
+  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -ab_ap * inv_R2;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
+  const T h = cross1 * in.normal[1] + in.normal[2] * cross2 + cross0 * in.normal[0];
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -400,8 +414,8 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     J_minus2 = M_exact[2];
     J_minus0 = M_exact[3];
   }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
+  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
   T G_f;
   T G_g;
@@ -410,11 +424,12 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2((in.t1 - in.t0) * h, ap_ap + in.t1 * ab_ab * in.t0 - ab_ap * (in.t1 + in.t0));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    G_f = -(zeta2 * J_minus4 + t3 * J_minus2 + J_minus6 + t4 * J_minus0) * h * inv_R2;
-    G_g = -(t3 * J_minus0 + zeta2 * J_minus2 + J_minus4) * h * inv_R2;
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * ab_ab * t3 + ap_bp - ab_ap * t3 - ab_bp * in.t0);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * zeta2;
+    G_f = -(J_minus6 + t5 * J_minus0 + t4 * J_minus2 + zeta2 * J_minus4) * h * inv_R2;
+    G_g = -(t4 * J_minus0 + zeta2 * J_minus2 + J_minus4) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;
@@ -433,7 +448,7 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 97 +, 202 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 100 +, 206 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -446,92 +461,21 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab0 * ab0 + ab1 * ab1 + ab2 * ab2;
-  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ap2 * ab2;
-  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
-  const T cross0 = ab1 * ap2 - ap1 * ab2;
-  const T cross1 = ap0 * ab2 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
-  const T inv_R = T(1) / in.R;
-  const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
-  const T a = -inv_R2 * ab_ab;
-  const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[2] * cross2 + cross0 * in.normal[0] + cross1 * in.normal[1];
-  const T theta = atan2(h, ap_bp);
-  T J_minus8;
-  T J_minus6;
-  T J_minus4;
-  T J_minus2;
-  T J_minus0;
-  {
-    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
-    std::array<T, 5> M_exact;
-    segment_moments_gauss<T, 7>(-8, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
-    J_minus8 = M_exact[0];
-    J_minus6 = M_exact[1];
-    J_minus4 = M_exact[2];
-    J_minus2 = M_exact[3];
-    J_minus0 = M_exact[4];
-  }
-  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
-  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
-  T theta_in;
-  T G_f;
-  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t1 = t0 - inv_R2 * h * h;
-  const T t2 = max(T(t0 - inv_R2 * h * h - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
-  if (t1 >= T(0) && t2 >= T(0)) {
-    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * in.t1 * ab_ab + ap_ap - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    const T t5 = t3 * t3;
-    G_f = -inv_R2 * (t4 * J_minus2 + t5 * J_minus0 + J_minus8 + J_minus4 * t3 + zeta2 * J_minus6) * h;
-  } else {
-    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> G_chord;
-    polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    theta_in = T(0);
-    G_f = G_chord[0];
-  }
-  out.h = h;
-  out.theta = theta;
-  out.theta_in = theta_in;
-  out.S_f = G_f;
-}
-
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
-///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 96 +, 201 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-template <class T>
-void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
-  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
-  const T ab0 = in.b[0] - in.a[0];
-  const T ap0 = in.p[0] - in.a[0];
-  const T bp0 = in.p[0] - in.b[0];
-  const T ab1 = in.b[1] - in.a[1];
-  const T ap1 = in.p[1] - in.a[1];
-  const T bp1 = in.p[1] - in.b[1];
-  const T ab2 = in.b[2] - in.a[2];
-  const T ap2 = in.p[2] - in.a[2];
-  const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
-  const T ab_ap = ap2 * ab2 + ab0 * ap0 + ap1 * ab1;
-  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T cross0 = ap2 * ab1 - ap1 * ab2;
-  const T cross1 = ap0 * ab2 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
   const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
-  const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[1] * cross1 + in.normal[0] * cross0 + in.normal[2] * cross2;
+  const T b = -ab_ap * inv_R2;
+  const T c = zeta2 - ap_ap * inv_R2;
+  const T h = in.normal[2] * cross2 + in.normal[1] * cross1 + in.normal[0] * cross0;
   const T theta = atan2(h, ap_bp);
   T J_minus8;
   T J_minus6;
@@ -549,37 +493,38 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_minus0 = M_exact[4];
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
-  T G_g;
-  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  T G_f;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-h * (in.t0 - in.t1), ap_ap + ab_ab * in.t0 * in.t1 - (in.t0 + in.t1) * ab_ap);
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    G_g = -h * inv_R2 * (zeta2 * zeta2 * J_minus2 + t4 * J_minus0 + J_minus4 * zeta2 + J_minus6);
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2((in.t1 - in.t0) * h, t3 * ab_ab * in.t0 + ap_bp - ab_bp * in.t0 - ab_ap * t3);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * t4;
+    const T t6 = t4 * zeta2;
+    G_f = -(t5 * J_minus0 + zeta2 * J_minus6 + t6 * J_minus2 + J_minus8 + t4 * J_minus4) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
-    polygon_edge_G_compact_chord<T>(4, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
     theta_in = T(0);
-    G_g = G_chord[0];
+    G_f = G_chord[0];
   }
   out.h = h;
   out.theta = theta;
   out.theta_in = theta_in;
-  out.S_g = G_g;
-  out.J_g = J_minus8;
+  out.S_f = G_f;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 100 +, 207 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 99 +, 204 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
-void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
+void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
   const T ab0 = in.b[0] - in.a[0];
   const T ap0 = in.p[0] - in.a[0];
@@ -590,19 +535,20 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
-  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
-  const T cross0 = ab1 * ap2 - ab2 * ap1;
-  const T cross1 = ab2 * ap0 - ab0 * ap2;
-  const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ap2 * ab2 + ab0 * ap0 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T ab_bp = ab0 * bp0 + bp2 * ab2 + bp1 * ab1;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
-  const T a = -inv_R2 * ab_ab;
-  const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - inv_R2 * ap_ap;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T a = -ab_ab * inv_R2;
+  const T b = -ab_ap * inv_R2;
+  const T c = zeta2 - ap_ap * inv_R2;
   const T h = in.normal[2] * cross2 + in.normal[1] * cross1 + cross0 * in.normal[0];
   const T theta = atan2(h, ap_bp);
   T J_minus8;
@@ -623,19 +569,94 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
-  T G_f;
   T G_g;
   const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * in.t1 * ab_ab + ap_ap - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t3 * zeta2;
-    G_f = -h * inv_R2 * (t4 * J_minus0 + t5 * J_minus2 + zeta2 * J_minus6 + J_minus4 * t3 + J_minus8);
-    G_g = -(t3 * J_minus2 + J_minus4 * zeta2 + t5 * J_minus0 + J_minus6) * h * inv_R2;
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - ab_ap * t3 - in.t0 * ab_bp);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * zeta2;
+    G_g = -(t5 * J_minus0 + J_minus4 * zeta2 + t4 * J_minus2 + J_minus6) * h * inv_R2;
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 1> G_chord;
+    polygon_edge_G_compact_chord<T>(4, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_g = G_chord[0];
+  }
+  out.h = h;
+  out.theta = theta;
+  out.theta_in = theta_in;
+  out.S_g = G_g;
+  out.J_g = J_minus8;
+}
+
+/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
+/// Operations per edge: 103 +, 211 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+template <class T>
+void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  const T ab0 = in.b[0] - in.a[0];
+  const T ap0 = in.p[0] - in.a[0];
+  const T bp0 = in.p[0] - in.b[0];
+  const T ab1 = in.b[1] - in.a[1];
+  const T ap1 = in.p[1] - in.a[1];
+  const T bp1 = in.p[1] - in.b[1];
+  const T ab2 = in.b[2] - in.a[2];
+  const T ap2 = in.p[2] - in.a[2];
+  const T bp2 = in.p[2] - in.b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ap2 * ab2 + ap0 * ab0 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ap2 * ab0;
+  const T cross2 = ap1 * ab0 - ap0 * ab1;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
+  const T inv_R = T(1) / in.R;
+  const T inv_R2 = inv_R * inv_R;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T a = -inv_R2 * ab_ab;
+  const T b = -ab_ap * inv_R2;
+  const T c = zeta2 - ap_ap * inv_R2;
+  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
+  const T theta = atan2(h, ap_bp);
+  T J_minus8;
+  T J_minus6;
+  T J_minus4;
+  T J_minus2;
+  T J_minus0;
+  {
+    // even degree: the integrand is a polynomial of degree 8, integrated exactly by segment_moments_gauss<T, 7>
+    std::array<T, 5> M_exact;
+    segment_moments_gauss<T, 7>(-8, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    J_minus8 = M_exact[0];
+    J_minus6 = M_exact[1];
+    J_minus4 = M_exact[2];
+    J_minus2 = M_exact[3];
+    J_minus0 = M_exact[4];
+  }
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
+  T G_f;
+  T G_g;
+  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = t0 - h * h * inv_R2;
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
+  if (t1 >= T(0) && t2 >= T(0)) {
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(h * (in.t1 - in.t0), t3 * in.t0 * ab_ab + ap_bp - ab_ap * t3 - ab_bp * in.t0);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * zeta2;
+    const T t6 = t4 * t4;
+    G_f = -(J_minus8 + J_minus2 * t5 + J_minus4 * t4 + J_minus6 * zeta2 + J_minus0 * t6) * h * inv_R2;
+    G_g = -h * inv_R2 * (J_minus2 * t4 + J_minus4 * zeta2 + J_minus0 * t5 + J_minus6);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;
@@ -654,7 +675,7 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 105 +, 227 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 108 +, 230 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -667,95 +688,21 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ap2 * ab2 + ap1 * ab1 + ap0 * ab0;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T cross0 = ap2 * ab1 - ap1 * ab2;
-  const T cross1 = ap0 * ab2 - ap2 * ab0;
-  const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
-  const T inv_R = T(1) / in.R;
-  const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
-  const T b = -ab_ap * inv_R2;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross0 * in.normal[0] + in.normal[2] * cross2 + cross1 * in.normal[1];
-  const T theta = atan2(h, ap_bp);
-  T J_minus10;
-  T J_minus8;
-  T J_minus6;
-  T J_minus4;
-  T J_minus2;
-  T J_minus0;
-  {
-    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
-    std::array<T, 6> M_exact;
-    segment_moments_gauss<T, 7>(-10, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
-    J_minus10 = M_exact[0];
-    J_minus8 = M_exact[1];
-    J_minus6 = M_exact[2];
-    J_minus4 = M_exact[3];
-    J_minus2 = M_exact[4];
-    J_minus0 = M_exact[5];
-  }
-  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
-  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
-  T theta_in;
-  T G_f;
-  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
-  if (t1 >= T(0) && t2 >= T(0)) {
-    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * in.t1 * ab_ab - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t4 * zeta2;
-    const T t6 = t3 * zeta2;
-    G_f = -(zeta2 * J_minus8 + J_minus6 * zeta2 * zeta2 + J_minus10 + t4 * J_minus2 + J_minus0 * t5 + t6 * J_minus4) * h * inv_R2;
-  } else {
-    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> G_chord;
-    polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
-    theta_in = T(0);
-    G_f = G_chord[0];
-  }
-  out.h = h;
-  out.theta = theta;
-  out.theta_in = theta_in;
-  out.S_f = G_f;
-}
-
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
-///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 104 +, 225 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-template <class T>
-void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
-  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
-  const T ab0 = in.b[0] - in.a[0];
-  const T ap0 = in.p[0] - in.a[0];
-  const T bp0 = in.p[0] - in.b[0];
-  const T ab1 = in.b[1] - in.a[1];
-  const T ap1 = in.p[1] - in.a[1];
-  const T bp1 = in.p[1] - in.b[1];
-  const T ab2 = in.b[2] - in.a[2];
-  const T ap2 = in.p[2] - in.a[2];
-  const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
   const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = bp0 * ap0 + bp1 * ap1 + bp2 * ap2;
+  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[2] * cross2 + cross0 * in.normal[0] + cross1 * in.normal[1];
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus10;
   T J_minus8;
@@ -777,17 +724,95 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
-  T G_g;
+  T G_f;
   const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + ab_ab * in.t0 * in.t1 - (in.t0 + in.t1) * ab_ap);
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t3 * zeta2;
-    G_g = -h * inv_R2 * (J_minus8 + J_minus4 * zeta2 * zeta2 + J_minus6 * zeta2 + J_minus0 * t4 + J_minus2 * t5);
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-(in.t0 - in.t1) * h, ab_ab * in.t0 * t3 + ap_bp - ab_ap * t3 - ab_bp * in.t0);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * t4;
+    const T t6 = t5 * zeta2;
+    const T t7 = t4 * zeta2;
+    G_f = -h * inv_R2 * (J_minus0 * t6 + J_minus8 * zeta2 + t7 * J_minus4 + J_minus2 * t5 + J_minus10 + J_minus6 * t4);
+  } else {
+    // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
+    std::array<T, 1> G_chord;
+    polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, G_chord.data());
+    theta_in = T(0);
+    G_f = G_chord[0];
+  }
+  out.h = h;
+  out.theta = theta;
+  out.theta_in = theta_in;
+  out.S_f = G_f;
+}
+
+/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
+/// Operations per edge: 107 +, 228 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+template <class T>
+void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
+  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
+  const T ab0 = in.b[0] - in.a[0];
+  const T ap0 = in.p[0] - in.a[0];
+  const T bp0 = in.p[0] - in.b[0];
+  const T ab1 = in.b[1] - in.a[1];
+  const T ap1 = in.p[1] - in.a[1];
+  const T bp1 = in.p[1] - in.b[1];
+  const T ab2 = in.b[2] - in.a[2];
+  const T ap2 = in.p[2] - in.a[2];
+  const T bp2 = in.p[2] - in.b[2];
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ap1 * ab1;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ap2 * ab1 - ab2 * ap1;
+  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T ab_bp = bp1 * ab1 + ab0 * bp0 + ab2 * bp2;
+  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
+  const T inv_R = T(1) / in.R;
+  const T inv_R2 = inv_R * inv_R;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -inv_R2 * ab_ab;
+  const T b = -inv_R2 * ab_ap;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = in.normal[2] * cross2 + cross0 * in.normal[0] + cross1 * in.normal[1];
+  const T theta = atan2(h, ap_bp);
+  T J_minus10;
+  T J_minus8;
+  T J_minus6;
+  T J_minus4;
+  T J_minus2;
+  T J_minus0;
+  {
+    // even degree: the integrand is a polynomial of degree 10, integrated exactly by segment_moments_gauss<T, 7>
+    std::array<T, 6> M_exact;
+    segment_moments_gauss<T, 7>(-10, 0, 0, a, b, c, in.t0, in.t1, M_exact.data());
+    J_minus10 = M_exact[0];
+    J_minus8 = M_exact[1];
+    J_minus6 = M_exact[2];
+    J_minus4 = M_exact[3];
+    J_minus2 = M_exact[4];
+    J_minus0 = M_exact[5];
+  }
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  T theta_in;
+  T G_g;
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - inv_R2 * h * h;
+  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - inv_R2 * h * h), T(-plane_slope1 * plane_slope0));
+  if (t1 >= T(0) && t2 >= T(0)) {
+    // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - ab_ap * t3 - in.t0 * ab_bp);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * t4;
+    const T t6 = t4 * zeta2;
+    G_g = -inv_R2 * (J_minus0 * t5 + J_minus6 * zeta2 + t6 * J_minus2 + t4 * J_minus4 + J_minus8) * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -804,7 +829,7 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 109 +, 232 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 112 +, 236 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -817,20 +842,21 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ap1 * ab1 + ap0 * ab0 + ap2 * ab2;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T cross0 = ap2 * ab1 - ap1 * ab2;
-  const T cross1 = ap0 * ab2 - ap2 * ab0;
-  const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ap0 * ab0 + ab2 * ap2;
+  const T ap_ap = ap0 * ap0 + ap1 * ap1 + ap2 * ap2;
+  const T cross0 = ab1 * ap2 - ab2 * ap1;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
+  const T cross2 = ab0 * ap1 - ap0 * ab1;
+  const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
+  const T ap_bp = ap0 * bp0 + bp1 * ap1 + bp2 * ap2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
-  const T b = -ab_ap * inv_R2;
+  const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
+  const T h = in.normal[2] * cross2 + in.normal[0] * cross0 + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus10;
   T J_minus8;
@@ -856,16 +882,17 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   T G_g;
   const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * in.t1 * ab_ab - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t4 * zeta2;
-    const T t6 = t3 * zeta2;
-    G_f = -(t5 * J_minus0 + J_minus10 + t3 * J_minus6 + t4 * J_minus2 + zeta2 * J_minus8 + t6 * J_minus4) * h * inv_R2;
-    G_g = -h * (t4 * J_minus0 + t6 * J_minus2 + zeta2 * J_minus6 + J_minus8 + t3 * J_minus4) * inv_R2;
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-(in.t0 - in.t1) * h, in.t0 * t3 * ab_ab + ap_bp - t3 * ab_ap - in.t0 * ab_bp);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * t4;
+    const T t6 = t5 * zeta2;
+    const T t7 = t4 * zeta2;
+    G_f = -h * inv_R2 * (zeta2 * J_minus8 + J_minus10 + t4 * J_minus6 + t5 * J_minus2 + t6 * J_minus0 + t7 * J_minus4);
+    G_g = -h * inv_R2 * (t7 * J_minus2 + J_minus8 + zeta2 * J_minus6 + t4 * J_minus4 + t5 * J_minus0);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;
@@ -884,7 +911,7 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 113 +, 251 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 116 +, 254 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -897,20 +924,21 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
-  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T cross0 = ab1 * ap2 - ab2 * ap1;
-  const T cross1 = ab2 * ap0 - ab0 * ap2;
+  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
+  const T ab_ap = ap2 * ab2 + ab0 * ap0 + ab1 * ap1;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
+  const T cross0 = ab1 * ap2 - ap1 * ab2;
+  const T cross1 = ap0 * ab2 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
+  const T ab_bp = ab0 * bp0 + bp2 * ab2 + ab1 * bp1;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - inv_R2 * in.z * in.z;
-  const T a = -ab_ab * inv_R2;
+  const T a = -inv_R2 * ab_ab;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[0] * cross0 + in.normal[2] * cross2 + in.normal[1] * cross1;
+  const T h = in.normal[0] * cross0 + cross1 * in.normal[1] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -932,21 +960,22 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     J_minus0 = M_exact[6];
   }
   const T plane_slope0 = in.t0 * ab_ab - ab_ap;
-  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_f;
-  const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
-  const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = t0 - inv_R2 * h * h;
+  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - inv_R2 * h * h), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-h * (in.t0 - in.t1), in.t0 * ab_ab * in.t1 + ap_ap - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    const T t5 = t4 * t4;
-    const T t6 = t3 * t3;
-    const T t7 = t6 * zeta2;
-    G_f = -h * inv_R2 * (J_minus8 * zeta2 * zeta2 + t5 * J_minus0 + J_minus2 * t7 + J_minus10 * zeta2 + t4 * J_minus6 + J_minus12 + J_minus4 * t6);
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2((in.t1 - in.t0) * h, t3 * in.t0 * ab_ab + ap_bp - ab_bp * in.t0 - t3 * ab_ap);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * zeta2;
+    const T t6 = t5 * t5;
+    const T t7 = t4 * t4;
+    const T t8 = t7 * zeta2;
+    G_f = -inv_R2 * (t5 * J_minus6 + zeta2 * J_minus10 + J_minus8 * t4 + t6 * J_minus0 + t7 * J_minus4 + J_minus12 + J_minus2 * t8) * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -962,7 +991,7 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 112 +, 248 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 115 +, 252 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -975,20 +1004,21 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab0 * ab0 + ab1 * ab1 + ab2 * ab2;
-  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
+  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
   const T cross0 = ab1 * ap2 - ab2 * ap1;
   const T cross1 = ab2 * ap0 - ab0 * ap2;
   const T cross2 = ab0 * ap1 - ab1 * ap0;
-  const T ap_bp = bp0 * ap0 + bp1 * ap1 + bp2 * ap2;
+  const T ab_bp = bp2 * ab2 + ab1 * bp1 + bp0 * ab0;
+  const T ap_bp = bp0 * ap0 + ap1 * bp1 + bp2 * ap2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[2] * cross2 + cross0 * in.normal[0] + cross1 * in.normal[1];
+  const T h = in.normal[0] * cross0 + in.normal[1] * cross1 + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -1015,15 +1045,16 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   T G_g;
   const T t0 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * t3;
-    const T t5 = t3 * zeta2;
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t3 - in.t0 * ab_bp - ab_ap * t3);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * t4;
     const T t6 = t4 * zeta2;
-    G_g = -h * inv_R2 * (J_minus8 * zeta2 + J_minus10 + J_minus2 * t4 + J_minus4 * t5 + t6 * J_minus0 + J_minus6 * t3);
+    const T t7 = t5 * zeta2;
+    G_g = -h * inv_R2 * (J_minus2 * t5 + J_minus4 * t6 + t4 * J_minus6 + J_minus10 + t7 * J_minus0 + J_minus8 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> G_chord;
@@ -1040,7 +1071,7 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 118 +, 257 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 121 +, 261 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 template <class T>
 void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1053,20 +1084,21 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ap1 * ab1 + ap2 * ab2 + ap0 * ab0;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap2 * ab2 + ap1 * ab1 + ap0 * ab0;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
   const T cross0 = ap2 * ab1 - ap1 * ab2;
   const T cross1 = ap0 * ab2 - ap2 * ab0;
   const T cross2 = ap1 * ab0 - ap0 * ab1;
-  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
+  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
-  const T b = -ab_ap * inv_R2;
+  const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
+  const T h = in.normal[0] * cross0 + cross1 * in.normal[1] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -1094,17 +1126,18 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   T G_g;
   const T t0 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t1 = t0 - h * h * inv_R2;
-  const T t2 = max(T(t0 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
+  const T t2 = max(T(t0 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t1 >= T(0) && t2 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_ap + in.t0 * ab_ab * in.t1 - ab_ap * (in.t0 + in.t1));
-    const T t3 = zeta2 * zeta2;
-    const T t4 = t3 * zeta2;
-    const T t5 = t4 * t4;
-    const T t6 = t3 * t3;
-    const T t7 = t6 * zeta2;
-    G_f = -(J_minus8 * t3 + J_minus12 + t5 * J_minus0 + t4 * J_minus6 + zeta2 * J_minus10 + J_minus2 * t7 + t6 * J_minus4) * h * inv_R2;
-    G_g = -(t7 * J_minus0 + t4 * J_minus4 + J_minus8 * zeta2 + J_minus10 + J_minus2 * t6 + t3 * J_minus6) * h * inv_R2;
+    const T t3 = in.t1 - T(1);
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + in.t0 * ab_ab * t3 - t3 * ab_ap - ab_bp * in.t0);
+    const T t4 = zeta2 * zeta2;
+    const T t5 = t4 * zeta2;
+    const T t6 = t5 * t5;
+    const T t7 = t4 * t4;
+    const T t8 = t7 * zeta2;
+    G_f = -(J_minus12 + t6 * J_minus0 + zeta2 * J_minus10 + t4 * J_minus8 + t5 * J_minus6 + t8 * J_minus2 + t7 * J_minus4) * h * inv_R2;
+    G_g = -(t8 * J_minus0 + t5 * J_minus4 + t7 * J_minus2 + J_minus10 + zeta2 * J_minus8 + t4 * J_minus6) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 2> G_chord;

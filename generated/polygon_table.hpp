@@ -1,10 +1,13 @@
 // generated/polygon_table.hpp — every generated polygon edge kernel, for lookup at run time.
 //
 // GENERATED FILE: DO NOT EDIT. Regenerate with
-//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --out generated
+//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
 // Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
-// From: codegen/polygon_families.cpp (the contour sum per edge; SPEC §3,
-// Hubert 2012 §5–8), on the segment forms of codegen/segment_families.cpp.
+// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
+// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
+// Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum
+// (codegen/polygon_families.cpp), on the segment forms of the edge;
+// skelconv/polygon_field.hpp adds them up.
 #pragma once
 
 #include <span>
@@ -34,55 +37,55 @@ template <class T>
 std::span<const PolygonEdgeKernel<T>> polygon_edge_kernels() {
   static const PolygonEdgeKernel<T> table[] = {
       {KernelFamily::inverse, 3, &polygon_edge_inverse_i3_f<T>, &polygon_edge_inverse_i3_grad<T>, &polygon_edge_inverse_i3_f_and_grad<T>, "polygon_edge_inverse_i3",
-       "C(P) = ∬_Ω |P − Q|^(−3) dQ", {36, 48, 1, 3, 2, 0, 0}, {40, 52, 5, 3, 2, 0, 0}, {40, 52, 5, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−3) dQ", {37, 49, 1, 3, 2, 0, 0}, {41, 53, 5, 3, 2, 0, 0}, {41, 53, 5, 3, 2, 0, 0}},
       {KernelFamily::inverse, 4, &polygon_edge_inverse_i4_f<T>, &polygon_edge_inverse_i4_grad<T>, &polygon_edge_inverse_i4_f_and_grad<T>, "polygon_edge_inverse_i4",
-       "C(P) = ∬_Ω |P − Q|^(−4) dQ", {38, 43, 2, 1, 2, 0, 0}, {41, 50, 5, 1, 2, 0, 0}, {41, 50, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−4) dQ", {39, 44, 2, 1, 2, 0, 0}, {42, 51, 5, 1, 2, 0, 0}, {42, 51, 5, 1, 2, 0, 0}},
       {KernelFamily::inverse, 5, &polygon_edge_inverse_i5_f<T>, &polygon_edge_inverse_i5_grad<T>, &polygon_edge_inverse_i5_f_and_grad<T>, "polygon_edge_inverse_i5",
-       "C(P) = ∬_Ω |P − Q|^(−5) dQ", {40, 52, 5, 3, 2, 0, 0}, {43, 65, 7, 3, 2, 0, 0}, {43, 65, 7, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−5) dQ", {41, 53, 5, 3, 2, 0, 0}, {44, 66, 7, 3, 2, 0, 0}, {44, 66, 7, 3, 2, 0, 0}},
       {KernelFamily::inverse, 6, &polygon_edge_inverse_i6_f<T>, &polygon_edge_inverse_i6_grad<T>, &polygon_edge_inverse_i6_f_and_grad<T>, "polygon_edge_inverse_i6",
-       "C(P) = ∬_Ω |P − Q|^(−6) dQ", {41, 50, 5, 1, 2, 0, 0}, {44, 65, 5, 1, 2, 0, 0}, {44, 65, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−6) dQ", {42, 51, 5, 1, 2, 0, 0}, {45, 66, 5, 1, 2, 0, 0}, {45, 66, 5, 1, 2, 0, 0}},
       {KernelFamily::inverse, 7, &polygon_edge_inverse_i7_f<T>, &polygon_edge_inverse_i7_grad<T>, &polygon_edge_inverse_i7_f_and_grad<T>, "polygon_edge_inverse_i7",
-       "C(P) = ∬_Ω |P − Q|^(−7) dQ", {43, 65, 7, 3, 2, 0, 0}, {46, 84, 5, 3, 2, 0, 0}, {46, 84, 5, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−7) dQ", {44, 66, 7, 3, 2, 0, 0}, {47, 85, 5, 3, 2, 0, 0}, {47, 85, 5, 3, 2, 0, 0}},
       {KernelFamily::inverse, 8, &polygon_edge_inverse_i8_f<T>, &polygon_edge_inverse_i8_grad<T>, &polygon_edge_inverse_i8_f_and_grad<T>, "polygon_edge_inverse_i8",
-       "C(P) = ∬_Ω |P − Q|^(−8) dQ", {44, 65, 5, 1, 2, 0, 0}, {47, 78, 5, 1, 2, 0, 0}, {47, 78, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−8) dQ", {45, 66, 5, 1, 2, 0, 0}, {48, 79, 5, 1, 2, 0, 0}, {48, 79, 5, 1, 2, 0, 0}},
       {KernelFamily::inverse, 9, &polygon_edge_inverse_i9_f<T>, &polygon_edge_inverse_i9_grad<T>, &polygon_edge_inverse_i9_f_and_grad<T>, "polygon_edge_inverse_i9",
-       "C(P) = ∬_Ω |P − Q|^(−9) dQ", {46, 84, 5, 3, 2, 0, 0}, {49, 99, 5, 3, 2, 0, 0}, {49, 99, 5, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−9) dQ", {47, 85, 5, 3, 2, 0, 0}, {50, 100, 5, 3, 2, 0, 0}, {50, 100, 5, 3, 2, 0, 0}},
       {KernelFamily::inverse, 10, &polygon_edge_inverse_i10_f<T>, &polygon_edge_inverse_i10_grad<T>, &polygon_edge_inverse_i10_f_and_grad<T>, "polygon_edge_inverse_i10",
-       "C(P) = ∬_Ω |P − Q|^(−10) dQ", {47, 78, 5, 1, 2, 0, 0}, {50, 91, 5, 1, 2, 0, 0}, {50, 91, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−10) dQ", {48, 79, 5, 1, 2, 0, 0}, {51, 92, 5, 1, 2, 0, 0}, {51, 92, 5, 1, 2, 0, 0}},
       {KernelFamily::inverse, 11, &polygon_edge_inverse_i11_f<T>, &polygon_edge_inverse_i11_grad<T>, &polygon_edge_inverse_i11_f_and_grad<T>, "polygon_edge_inverse_i11",
-       "C(P) = ∬_Ω |P − Q|^(−11) dQ", {49, 99, 5, 3, 2, 0, 0}, {52, 114, 5, 3, 2, 0, 0}, {52, 114, 5, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−11) dQ", {50, 100, 5, 3, 2, 0, 0}, {53, 115, 5, 3, 2, 0, 0}, {53, 115, 5, 3, 2, 0, 0}},
       {KernelFamily::inverse, 12, &polygon_edge_inverse_i12_f<T>, &polygon_edge_inverse_i12_grad<T>, &polygon_edge_inverse_i12_f_and_grad<T>, "polygon_edge_inverse_i12",
-       "C(P) = ∬_Ω |P − Q|^(−12) dQ", {50, 91, 5, 1, 2, 0, 0}, {53, 104, 5, 1, 2, 0, 0}, {53, 104, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω |P − Q|^(−12) dQ", {51, 92, 5, 1, 2, 0, 0}, {54, 105, 5, 1, 2, 0, 0}, {54, 105, 5, 1, 2, 0, 0}},
       {KernelFamily::cauchy, 3, &polygon_edge_cauchy_i3_f<T>, &polygon_edge_cauchy_i3_grad<T>, &polygon_edge_cauchy_i3_f_and_grad<T>, "polygon_edge_cauchy_i3",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ", {37, 57, 1, 3, 2, 0, 0}, {41, 61, 5, 3, 2, 0, 0}, {41, 61, 5, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ", {38, 58, 1, 3, 2, 0, 0}, {42, 62, 5, 3, 2, 0, 0}, {42, 62, 5, 3, 2, 0, 0}},
       {KernelFamily::cauchy, 4, &polygon_edge_cauchy_i4_f<T>, &polygon_edge_cauchy_i4_grad<T>, &polygon_edge_cauchy_i4_f_and_grad<T>, "polygon_edge_cauchy_i4",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ", {39, 53, 2, 1, 2, 0, 0}, {42, 60, 5, 1, 2, 0, 0}, {42, 60, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ", {40, 54, 2, 1, 2, 0, 0}, {43, 61, 5, 1, 2, 0, 0}, {43, 61, 5, 1, 2, 0, 0}},
       {KernelFamily::cauchy, 5, &polygon_edge_cauchy_i5_f<T>, &polygon_edge_cauchy_i5_grad<T>, &polygon_edge_cauchy_i5_f_and_grad<T>, "polygon_edge_cauchy_i5",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ", {41, 61, 5, 3, 2, 0, 0}, {44, 74, 7, 3, 2, 0, 0}, {44, 74, 7, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ", {42, 62, 5, 3, 2, 0, 0}, {45, 75, 7, 3, 2, 0, 0}, {45, 75, 7, 3, 2, 0, 0}},
       {KernelFamily::cauchy, 6, &polygon_edge_cauchy_i6_f<T>, &polygon_edge_cauchy_i6_grad<T>, &polygon_edge_cauchy_i6_f_and_grad<T>, "polygon_edge_cauchy_i6",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ", {42, 60, 5, 1, 2, 0, 0}, {45, 75, 5, 1, 2, 0, 0}, {45, 75, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ", {43, 61, 5, 1, 2, 0, 0}, {46, 76, 5, 1, 2, 0, 0}, {46, 76, 5, 1, 2, 0, 0}},
       {KernelFamily::cauchy, 7, &polygon_edge_cauchy_i7_f<T>, &polygon_edge_cauchy_i7_grad<T>, &polygon_edge_cauchy_i7_f_and_grad<T>, "polygon_edge_cauchy_i7",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ", {44, 74, 7, 3, 2, 0, 0}, {47, 93, 5, 3, 2, 0, 0}, {47, 93, 5, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ", {45, 75, 7, 3, 2, 0, 0}, {48, 94, 5, 3, 2, 0, 0}, {48, 94, 5, 3, 2, 0, 0}},
       {KernelFamily::cauchy, 8, &polygon_edge_cauchy_i8_f<T>, &polygon_edge_cauchy_i8_grad<T>, &polygon_edge_cauchy_i8_f_and_grad<T>, "polygon_edge_cauchy_i8",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ", {45, 75, 5, 1, 2, 0, 0}, {48, 88, 5, 1, 2, 0, 0}, {48, 88, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ", {46, 76, 5, 1, 2, 0, 0}, {49, 89, 5, 1, 2, 0, 0}, {49, 89, 5, 1, 2, 0, 0}},
       {KernelFamily::cauchy, 9, &polygon_edge_cauchy_i9_f<T>, &polygon_edge_cauchy_i9_grad<T>, &polygon_edge_cauchy_i9_f_and_grad<T>, "polygon_edge_cauchy_i9",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ", {47, 93, 5, 3, 2, 0, 0}, {50, 108, 5, 3, 2, 0, 0}, {50, 108, 5, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ", {48, 94, 5, 3, 2, 0, 0}, {51, 109, 5, 3, 2, 0, 0}, {51, 109, 5, 3, 2, 0, 0}},
       {KernelFamily::cauchy, 10, &polygon_edge_cauchy_i10_f<T>, &polygon_edge_cauchy_i10_grad<T>, &polygon_edge_cauchy_i10_f_and_grad<T>, "polygon_edge_cauchy_i10",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ", {48, 88, 5, 1, 2, 0, 0}, {51, 101, 5, 1, 2, 0, 0}, {51, 101, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ", {49, 89, 5, 1, 2, 0, 0}, {52, 102, 5, 1, 2, 0, 0}, {52, 102, 5, 1, 2, 0, 0}},
       {KernelFamily::cauchy, 11, &polygon_edge_cauchy_i11_f<T>, &polygon_edge_cauchy_i11_grad<T>, &polygon_edge_cauchy_i11_f_and_grad<T>, "polygon_edge_cauchy_i11",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ", {50, 108, 5, 3, 2, 0, 0}, {53, 123, 5, 3, 2, 0, 0}, {53, 123, 5, 3, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ", {51, 109, 5, 3, 2, 0, 0}, {54, 124, 5, 3, 2, 0, 0}, {54, 124, 5, 3, 2, 0, 0}},
       {KernelFamily::cauchy, 12, &polygon_edge_cauchy_i12_f<T>, &polygon_edge_cauchy_i12_grad<T>, &polygon_edge_cauchy_i12_f_and_grad<T>, "polygon_edge_cauchy_i12",
-       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ", {51, 101, 5, 1, 2, 0, 0}, {54, 114, 5, 1, 2, 0, 0}, {54, 114, 5, 1, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ", {52, 102, 5, 1, 2, 0, 0}, {55, 115, 5, 1, 2, 0, 0}, {55, 115, 5, 1, 2, 0, 0}},
       {KernelFamily::compact, 4, &polygon_edge_compact_i4_f<T>, &polygon_edge_compact_i4_grad<T>, &polygon_edge_compact_i4_f_and_grad<T>, "polygon_edge_compact_i4",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ", {81, 154, 1, 0, 2, 0, 0}, {80, 152, 1, 0, 2, 0, 0}, {82, 157, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ", {84, 158, 1, 0, 2, 0, 0}, {83, 156, 1, 0, 2, 0, 0}, {85, 161, 1, 0, 2, 0, 0}},
       {KernelFamily::compact, 6, &polygon_edge_compact_i6_f<T>, &polygon_edge_compact_i6_grad<T>, &polygon_edge_compact_i6_f_and_grad<T>, "polygon_edge_compact_i6",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {89, 179, 1, 0, 2, 0, 0}, {88, 176, 1, 0, 2, 0, 0}, {91, 182, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {92, 183, 1, 0, 2, 0, 0}, {91, 180, 1, 0, 2, 0, 0}, {94, 186, 1, 0, 2, 0, 0}},
       {KernelFamily::compact, 8, &polygon_edge_compact_i8_f<T>, &polygon_edge_compact_i8_grad<T>, &polygon_edge_compact_i8_f_and_grad<T>, "polygon_edge_compact_i8",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ", {97, 202, 1, 0, 2, 0, 0}, {96, 201, 1, 0, 2, 0, 0}, {100, 207, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ", {100, 206, 1, 0, 2, 0, 0}, {99, 204, 1, 0, 2, 0, 0}, {103, 211, 1, 0, 2, 0, 0}},
       {KernelFamily::compact, 10, &polygon_edge_compact_i10_f<T>, &polygon_edge_compact_i10_grad<T>, &polygon_edge_compact_i10_f_and_grad<T>, "polygon_edge_compact_i10",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {105, 227, 1, 0, 2, 0, 0}, {104, 225, 1, 0, 2, 0, 0}, {109, 232, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {108, 230, 1, 0, 2, 0, 0}, {107, 228, 1, 0, 2, 0, 0}, {112, 236, 1, 0, 2, 0, 0}},
       {KernelFamily::compact, 12, &polygon_edge_compact_i12_f<T>, &polygon_edge_compact_i12_grad<T>, &polygon_edge_compact_i12_f_and_grad<T>, "polygon_edge_compact_i12",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ", {113, 251, 1, 0, 2, 0, 0}, {112, 248, 1, 0, 2, 0, 0}, {118, 257, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ", {116, 254, 1, 0, 2, 0, 0}, {115, 252, 1, 0, 2, 0, 0}, {121, 261, 1, 0, 2, 0, 0}},
   };
   return table;
 }

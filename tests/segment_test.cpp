@@ -247,6 +247,7 @@ TEST(SegmentSpecialCases, NeverNaNNearTheLine) {
 // ---------------------------------------------------------------------------
 // Validation in the constructor: each problem names its field.
 
+
 TEST(SegmentValidation, RejectsBadInputWithItsLocation) {
   const Vec3 a(0, 0, 0), b(1, 0, 0);
   const double nan = std::numeric_limits<double>::quiet_NaN();

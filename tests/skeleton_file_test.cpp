@@ -102,7 +102,7 @@ TEST(SkeletonFileErrors, UnknownNames) {
                "primitives[0].kernel.family: unknown family \"gaussian\" "
                "(supported: \"inverse\", \"cauchy\", \"compact\")");
   expect_error(R"({"primitives": [{"type": "triangle"}]})",
-               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\")");
+               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\", \"scalis_segment\")");
 }
 
 TEST(SkeletonFileErrors, DuplicateFields) {

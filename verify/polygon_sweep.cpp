@@ -1,7 +1,7 @@
 // skelconv-verify-polygons — accuracy sweep of the generated polygon kernels
 // (generated/polygon_*.hpp through skelconv/polygon_field.hpp) against 2-D
 // adaptive quadrature of the definition integral (verify/polygon_reference.hpp,
-// binary128). See docs/verify.md.
+// long double or binary128). See docs/verify.md.
 //
 // For every family and region, samples are drawn by verify/polygon_sampling.hpp;
 // each sample is checked for every degree the table offers (the reference
@@ -22,6 +22,7 @@
 #include <string>
 #include <thread>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -41,7 +42,10 @@ using namespace skelconv::verify;
 /// Generic-region targets of issue 3, double precision.
 constexpr double kGenericTarget = 1e-12;
 /// What the reference must reach (its own estimate) to be used.
-constexpr double kReferenceTolerance = 1e-20;
+template <class Real>
+constexpr double reference_tolerance() {
+  return std::is_same_v<Real, long double> ? 1e-17 : 1e-24;
+}
 
 struct Cell {
   std::uint64_t points = 0, excluded = 0, nonfinite = 0, above_target = 0;
@@ -64,13 +68,21 @@ struct Item {
   std::uint64_t first, count;
 };
 
+template <class Real>
+Vec3<Real> widen_to(const Vec3<double>& v) {
+  return {Real(v[0]), Real(v[1]), Real(v[2])};
+}
+
 /// Compares one sample, every degree, into `cells` (indexed like `degrees`).
+template <class Real>
 void check_sample(const PolygonProblem& pb, const std::vector<int>& degrees, std::vector<Cell>& cells) {
-  std::vector<Vec3<extended>> vertices;
-  for (const auto& v : pb.vertices) vertices.push_back(widen(v));
-  PolygonReferenceIntegrator<extended> integrator(vertices);
-  const auto refs = integrator.evaluate(widen(pb.p), pb.family, degrees, extended(pb.s), extended(pb.R),
-                                        extended(kReferenceTolerance));
+  using std::abs;
+  using std::isfinite;
+  std::vector<Vec3<Real>> vertices;
+  for (const auto& v : pb.vertices) vertices.push_back(widen_to<Real>(v));
+  PolygonReferenceIntegrator<Real> integrator(vertices);
+  const auto refs = integrator.evaluate(widen_to<Real>(pb.p), pb.family, degrees, Real(pb.s), Real(pb.R),
+                                        Real(reference_tolerance<Real>()));
   for (std::size_t k = 0; k < degrees.size(); ++k) {
     Cell& cell = cells[k];
     const auto& ref = refs[k];
@@ -93,11 +105,11 @@ void check_sample(const PolygonProblem& pb, const std::vector<int>& degrees, std
       cell.worst_index = pb.index;
       continue;
     }
-    const double e_f = static_cast<double>(abs(extended(f) - ref.value) / abs(ref.value));
-    const extended g_norm = norm(ref.gradient);
+    const double e_f = static_cast<double>(abs(Real(f) - ref.value) / abs(ref.value));
+    const Real g_norm = norm(ref.gradient);
     double e_g = 0, e_c = 0;
     if (g_norm > 0) {
-      const Vec3<extended> diff = sub(widen(grad), ref.gradient);
+      const Vec3<Real> diff = sub(widen_to<Real>(grad), ref.gradient);
       e_g = static_cast<double>(norm(diff) / g_norm);
       for (int c = 0; c < 3; ++c) e_c = std::max(e_c, static_cast<double>(abs(diff[c]) / g_norm));
     }
@@ -123,6 +135,10 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 20261122;
   std::string family_filter, region_filter, json_path;
   bool quiet = false;
+  std::string reference = "long-double";
+  app.add_option("--reference", reference, "precision of the reference quadrature")
+      ->check(CLI::IsMember({"long-double", "binary128"}))
+      ->capture_default_str();
   app.add_option("--generic-points", generic_points, "samples per family in the generic region")->capture_default_str();
   app.add_option("--points", other_points, "samples per family in every other region")->capture_default_str();
   app.add_option("--family", family_filter, "only this family")->check(CLI::IsMember({"inverse", "cauchy", "compact"}));
@@ -166,7 +182,11 @@ int main(int argc, char** argv) {
         std::vector<Cell> local(degrees.size());
         for (std::uint64_t k = item.first; k < item.first + item.count; ++k) {
           try {
-            check_sample(draw_polygon_problem(seed, item.family, item.region, k), degrees, local);
+            const PolygonProblem problem = draw_polygon_problem(seed, item.family, item.region, k);
+            if (reference == "binary128")
+              check_sample<extended>(problem, degrees, local);
+            else
+              check_sample<long double>(problem, degrees, local);
           } catch (const std::exception& e) {
             ++failures;
             std::lock_guard lock(merge_mutex);
@@ -187,8 +207,10 @@ int main(int argc, char** argv) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // The table: one row per (family, degree), f / ∇f-component per region.
-  std::cout << "Polygon kernels in double vs binary128 quadrature of the definition: max relative error of f / of "
-               "the worst ∇f component (÷|∇f|)\n";
+  const double tolerance =
+      reference == "binary128" ? reference_tolerance<extended>() : reference_tolerance<long double>();
+  std::cout << "Polygon kernels in double vs " << reference
+            << " quadrature of the definition: max relative error of f / of the worst ∇f component (÷|∇f|)\n";
   std::cout << "| family | i |";
   for (PolygonRegion r : all_polygon_regions) std::cout << ' ' << polygon_region_name(r) << " |";
   std::cout << "\n|---|---|";
@@ -218,13 +240,13 @@ int main(int argc, char** argv) {
     std::cout << '\n';
   }
   std::cout << "generic: " << generic_compared << " comparisons, " << generic_failing << " above " << kGenericTarget
-            << "; references excluded (estimate above " << kReferenceTolerance << "): " << excluded
+            << "; references excluded (estimate above " << tolerance << "): " << excluded
             << "; failed samples: " << failures << "; " << total_samples << " samples in " << static_cast<int>(seconds)
             << " s\n";
   if (!json_path.empty()) {
     std::ofstream file(json_path);
-    file << nlohmann::json{{"seed", seed}, {"generic_target", kGenericTarget},
-                           {"reference_tolerance", kReferenceTolerance}, {"seconds", seconds}, {"cells", rows}}
+    file << nlohmann::json{{"seed", seed},           {"generic_target", kGenericTarget}, {"reference", reference},
+                           {"reference_tolerance", tolerance}, {"seconds", seconds}, {"cells", rows}}
                 .dump(1)
          << '\n';
     if (!file) {

@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <functional>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@
 #include "extended_precision.hpp"
 #include "sampling.hpp"
 #include "scalis_reference.hpp"
+#include "generated/scalis_segment_table.hpp"
 #include "skelconv/scalis_compact.hpp"
 #include "skelconv/scalis_segment_input.hpp"
 
@@ -54,10 +56,28 @@ struct ScalisFamilyUnderTest {
 ///   {"cauchy", KernelFamily::cauchy, 1, 16, 0.3, 3.0,
 ///    [](int i, const ScalisSegmentInput<double>& in, std::array<double, 3>* g) { return scalis_cauchy_F(i, in, g); },
 ///    1000},
+/// F and ∇F of the generated SCALIS segment kernel (inverse, Cauchy).
+double generated_scalis_F(KernelFamily family, int i, const ScalisSegmentInput<double>& in, std::array<double, 3>* g) {
+  const auto* kernel = generated::find_scalis_segment_kernel<double>(family, i);
+  if (kernel == nullptr) throw std::invalid_argument("no generated SCALIS kernel");
+  if (g == nullptr) return kernel->f(in);
+  return kernel->f_and_grad(in, *g);
+}
+
 std::vector<ScalisFamilyUnderTest> families_under_test() {
   return {
       {"compact", KernelFamily::compact, 2, 10, 1.05, 4.0,
        [](int i, const ScalisSegmentInput<double>& in, std::array<double, 3>* g) { return scalis_compact_F(i, in, g); },
+       2000},
+      {"inverse", KernelFamily::inverse, 2, 10, 0.3, 3.0,
+       [](int i, const ScalisSegmentInput<double>& in, std::array<double, 3>* g) {
+         return generated_scalis_F(KernelFamily::inverse, i, in, g);
+       },
+       2000},
+      {"cauchy", KernelFamily::cauchy, 2, 10, 0.3, 3.0,
+       [](int i, const ScalisSegmentInput<double>& in, std::array<double, 3>* g) {
+         return generated_scalis_F(KernelFamily::cauchy, i, in, g);
+       },
        2000},
   };
 }

@@ -77,6 +77,56 @@ void polygon_edge_H_near_plane(int n_lo, int n_hi, const T& alpha_h, const T& a,
   for (int l = 0; l < levels; ++l) out[l] *= scale;
 }
 
+/// Inverse and Cauchy kernels nearly flat along the edge (codegen/
+/// polygon_families.cpp): writes, for k = k_lo, k_lo + 2, …, k_hi, the field of
+/// the edge's fan triangle (P̄, Q_m, Q_{m+1}) for the kernel of degree k,
+///
+///     F^(k) = h ∫_0^1 G_k(x(t)) dt,   G_k = ζ^(−k) (1 − (1 + x)^(1−k/2)) / ((k − 2) x),
+///     x = α ρ(t)² / ζ² = (a t² − 2 b t + α |Q_m − P̄|²) / ζ²,
+///
+/// to out[(k − k_lo)/2] (the radial integral ∫_0^1 s K(√(s²ρ² + z²)) ds of
+/// Hubert 2012 §5 in closed form, with expm1/log1p so that nothing cancels
+/// when x is small). The generated code calls this when ζ² ≥ 2a: the zeros
+/// of 1 + x, the only singularities, are then ≥ √2 edge lengths from the edge,
+/// a Bernstein ellipse of parameter ≥ 5.8, and 20 points are exact to
+/// 5.8^(−40) ≈ 1e-30.
+template <class T>
+void polygon_edge_fan_flat(int k_lo, int k_hi, const T& h, const T& a, const T& b, const T& alpha_c, const T& zeta2,
+                           T* out) {
+  using std::expm1;
+  using std::log1p;
+  using std::sqrt;
+  using Rule = boost::math::quadrature::gauss<T, 20>;
+  const int count = (k_hi - k_lo) / 2 + 1;
+  for (int l = 0; l < count; ++l) out[l] = T(0);
+  const auto& x_nodes = Rule::abscissa();
+  const auto& g = Rule::weights();
+  const T inverse_zeta2 = T(1) / zeta2;
+  auto add_node = [&](const T& t, const T& weight) {
+    const T x = (t * (a * t - 2 * b) + alpha_c) * inverse_zeta2;
+    const T log_1px = log1p(x);
+    for (int l = 0; l < count; ++l) {
+      const int k = k_lo + 2 * l;
+      // (1 − (1 + x)^(1−k/2)) / ((k − 2) x) → 1/2 as x → 0
+      const T G = x > T(0) ? -expm1(T(2 - k) / 2 * log_1px) / (T(k - 2) * x) : T(1) / 2;
+      out[l] += weight * G;
+    }
+  };
+  for (unsigned j = 0; j < x_nodes.size(); ++j) {
+    add_node((1 + x_nodes[j]) / 2, g[j]);
+    add_node((1 - x_nodes[j]) / 2, g[j]);
+  }
+  // ½ from [−1, 1] → [0, 1]; ζ^(−k) per level.
+  T zeta_power = T(1);
+  const bool odd = k_lo % 2 != 0;
+  const T root = odd ? sqrt(zeta2) : zeta2;
+  for (int j = 0; j < (odd ? k_lo : k_lo / 2); ++j) zeta_power *= root;
+  for (int l = 0; l < count; ++l) {
+    out[l] *= h / (2 * zeta_power);
+    zeta_power *= zeta2;
+  }
+}
+
 /// Compact kernels (codegen/polygon_families.cpp): writes, for p = p_lo … p_hi,
 ///
 ///     G^(p) = h ∫_{t0}^{t1} q^p / ρ² dt = sgn(h) ∫_{u0}^{u1} q(u)^p du / (1 + u²),

@@ -40,9 +40,12 @@ template <class T>
 struct PolygonEdgeTerms {
   T h = T(0);         ///< h_m above
   T theta = T(0);     ///< θ_m = atan2(h_m, (Q_m − P̄)·(Q_{m+1} − P̄))
-  T theta_in = T(0);  ///< compact: the part of G^(p) that is w^p θ_in (0 where S_f holds all of G)
-  T S_f = T(0);       ///< the edge's part of f: H_{i−2} (inverse, Cauchy), G^(j+1) − w^(j+1) θ_in (compact)
-  T S_g = T(0);       ///< the edge's part of ∂f/∂z: H_i, G^(j) − w^j θ_in
+  /// The part of θ already inside S_f and S_g: θ where the edge's fan is
+  /// computed whole (inverse, Cauchy: kernel flat along the edge), the
+  /// clipped part's angle (compact, chord near P̄), else 0.
+  T theta_in = T(0);
+  T S_f = T(0);       ///< the edge's part of f: H_{i−2} − ζ^(2−i) θ_in (inverse, Cauchy), G^(j+1) − w^(j+1) θ_in (compact)
+  T S_g = T(0);       ///< the edge's part of ∂f/∂z: H_i − ζ^(−i) θ_in, G^(j) − w^j θ_in
   T J_g = T(0);       ///< ∫_0^1 K(|P − Γ(t)|) dt (∫_{t0}^{t1} for compact): the in-plane gradient
 };
 

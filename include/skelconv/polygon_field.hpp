@@ -131,6 +131,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   auto edge_function = want_f ? (grad ? kernel->f_and_grad : kernel->f) : kernel->grad;
   T theta_sum = 0, theta_in_sum = 0, S_f = 0, S_g = 0;
   bool on_boundary = false;
+  int open_edges = 0;  // edges whose θ is not inside their own terms
   std::vector<PolygonEdgeTerms<T>> all_terms;
   PolygonEdgeInput<T> in;
   in.p = foot;
@@ -158,6 +159,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
     } else {
       theta_sum += terms.theta;
       theta_in_sum += terms.theta_in;
+      if (terms.theta_in != terms.theta) ++open_edges;
       S_f += terms.S_f;
       S_g += terms.S_g;
     }
@@ -194,18 +196,21 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
       if (grad) *grad = {inf, inf, inf};
       return inf;
     }
-    // C = (ζ^(2−i) Θ − Σ H_{i−2}) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ H_i).
+    // C = (ζ^(2−i) Θ − Σ H_{i−2}) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ H_i),
+    // with the θ of the edges whose fan was computed whole (θ_in) left out of
+    // both: Θ − Σ θ_in is exactly 0 when every edge's was.
     const T alpha = inverse ? T(1) : poly.s;
     const T zeta2 = alpha * z * z + (inverse ? T(0) : T(1));
     const T zeta = sqrt(zeta2);
-    const T winding_f = Theta == T(0) ? T(0) : integer_power(zeta, 2 - i) * Theta;
-    const T winding_g = Theta == T(0) ? T(0) : integer_power(zeta, -i) * Theta;
+    const T outer_angle = open_edges == 0 ? T(0) : Theta - theta_in_sum;
+    const T winding_f = outer_angle == T(0) ? T(0) : integer_power(zeta, 2 - i) * outer_angle;
+    const T winding_g = outer_angle == T(0) ? T(0) : integer_power(zeta, -i) * outer_angle;
     f = (winding_f - S_f) / (alpha * T(i - 2));
     dfdz = -z * (winding_g - S_g);
     if (edge_fields)
       for (const auto& t : all_terms)
-        edge_fields->push_back(t.h == T(0) ? T(0)
-                                           : (integer_power(zeta, 2 - i) * t.theta - t.S_f) / (alpha * T(i - 2)));
+        edge_fields->push_back(
+            t.h == T(0) ? T(0) : (integer_power(zeta, 2 - i) * (t.theta - t.theta_in) - t.S_f) / (alpha * T(i - 2)));
   }
   if (grad)
     for (int k = 0; k < 3; ++k) (*grad)[k] += dfdz * n[k];

@@ -14,12 +14,13 @@
 
 #include "skelconv/geometry.hpp"
 #include "skelconv/polygon.hpp"
+#include "skelconv/scalis_segment.hpp"
 #include "skelconv/segment.hpp"
 
 namespace skelconv {
 
-/// One skeleton element. Add SCALIS primitives here.
-using Primitive = std::variant<Segment, Polygon>;
+/// One skeleton element.
+using Primitive = std::variant<Segment, Polygon, ScalisSegment>;
 
 class Skeleton {
  public:

@@ -125,7 +125,7 @@ template <class T>
 void segment_moments_beyond_end(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& D, const T& q0,
                                 const T& q1, T* out) {
   using std::pow;
-  constexpr int max_k = 8;
+  constexpr int max_k = 10;  // SCALIS i = 10: ∇F needs k ≤ 10
   T M[max_k + 1];  // M̂_{k,m} at the current level
   if (k_max > max_k || m_lo < k_max + 2) throw std::invalid_argument("segment_moments_beyond_end: k_max out of range");
   const bool beyond_B = q1 < q0;

@@ -1,19 +1,37 @@
 // Implementation of input_checks.hpp.
 #include "input_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
 namespace skelconv::detail {
-namespace {
 
 void require_positive_parameter(double value, const char* where) {
   if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
   if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
 }
 
-}  // namespace
+void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_length_ratio) {
+  if (a == b) throw InputError(fmt::format("degenerate segment: a and b are the same point {}", format_point(a)));
+  const double length_squared = (b - a).squaredNorm();
+  if (!std::isfinite(length_squared)) {
+    throw InputError("segment too long: |b - a|² overflows double precision");
+  }
+  const double length = std::sqrt(length_squared);
+  const double largest_coordinate = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  if (length < degenerate_length_ratio * largest_coordinate) {
+    throw InputError(fmt::format(
+        "degenerate segment: length |b - a| = {} is below {} times the largest coordinate magnitude {}, "
+        "too short to be represented accurately at that position",
+        length, degenerate_length_ratio, largest_coordinate));
+  }
+  if (length_squared < std::numeric_limits<double>::min()) {
+    throw InputError(fmt::format("degenerate segment: length {} is too small for double precision", length));
+  }
+}
 
 std::string format_point(const Vec3& p) { return fmt::format("({}, {}, {})", p.x(), p.y(), p.z()); }
 

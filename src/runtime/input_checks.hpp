@@ -1,5 +1,5 @@
 // src/runtime/input_checks.hpp — checks and message formatting shared by the
-// primitives' constructors (Segment, Polygon) and Skeleton. Internal to
+// primitives' constructors (Segment, Polygon, ScalisSegment) and Skeleton. Internal to
 // skelconv_runtime: not an installed header.
 //
 // Each check throws InputError with the problem and, where the caller names
@@ -30,6 +30,14 @@ void require_finite_point(const Vec3& v, const std::string& where);
 /// Throws InputError("query point must be finite, got (…)") unless p is
 /// finite. No location: the caller knows which point (a line, a call).
 void require_finite_query_point(const Vec3& p);
+
+/// Throws unless value is finite and > 0 ("must be > 0, got …", where).
+void require_positive_parameter(double value, const char* where);
+
+/// Throws for a = b, a length below `degenerate_length_ratio` (see
+/// Segment::degenerate_length_ratio) times the largest coordinate
+/// magnitude, or a squared length that is not a normal double.
+void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_length_ratio);
 
 /// The kernel's own parameter: s > 0 for cauchy ("kernel.s"), R > 0 for
 /// compact ("kernel.R"), finite. The degree is checked by each primitive

@@ -21,26 +21,6 @@ using detail::format_point;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-/// See Segment::degenerate_length_ratio for the rule and its reason.
-void require_non_degenerate(const Vec3& a, const Vec3& b) {
-  if (a == b) throw InputError(fmt::format("degenerate segment: a and b are the same point {}", format_point(a)));
-  const double length_squared = (b - a).squaredNorm();
-  if (!std::isfinite(length_squared)) {
-    throw InputError("segment too long: |b - a|² overflows double precision");
-  }
-  const double length = std::sqrt(length_squared);
-  const double largest_coordinate = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
-  if (length < Segment::degenerate_length_ratio * largest_coordinate) {
-    throw InputError(fmt::format(
-        "degenerate segment: length |b - a| = {} is below {} times the largest coordinate magnitude {}, "
-        "too short to be represented accurately at that position",
-        length, Segment::degenerate_length_ratio, largest_coordinate));
-  }
-  if (length_squared < std::numeric_limits<double>::min()) {
-    throw InputError(fmt::format("degenerate segment: length {} is too small for double precision", length));
-  }
-}
-
 /// Degree of w(t) = Σ w_k t^k after dropping trailing zero coefficients.
 int validated_weight_degree(std::span<const double> weight) {
   if (weight.empty()) throw InputError("needs at least one coefficient", "weight");
@@ -66,7 +46,7 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
     : a_(a), b_(b), kernel_(kernel) {
   detail::require_finite_point(a, "a");
   detail::require_finite_point(b, "b");
-  require_non_degenerate(a, b);
+  detail::require_non_degenerate(a, b, degenerate_length_ratio);
   weight_degree_ = validated_weight_degree(weight);
   detail::require_valid_kernel_parameter(kernel);
 

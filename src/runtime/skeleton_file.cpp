@@ -211,20 +211,26 @@ Vec3 read_point(const Json& value, const std::string& path) {
   return {xyz[0], xyz[1], xyz[2]};
 }
 
-/// {"family": ..., "degree": ..., and "s" (cauchy) or "R" (compact)}.
-KernelSpec read_kernel(const Json& value, const std::string& path) {
-  require_object(value, path);
-  const std::string family_text = read_string(require_field(value, path, "family"), path + ".family");
+/// The "family" field of the kernel object at `path`.
+KernelFamily read_family(const Json& kernel, const std::string& path) {
+  const std::string family_text = read_string(require_field(kernel, path, "family"), path + ".family");
   const std::optional<KernelFamily> family = family_from_name(family_text);
   if (!family) {
     throw InputError(fmt::format("unknown family \"{}\" (supported: {})", family_text,
                                  quoted_list({"inverse", "cauchy", "compact"})),
                      path + ".family");
   }
-  const std::string context = fmt::format(" for the {} family", family_text);
+  return *family;
+}
+
+/// {"family": ..., "degree": ..., and "s" (cauchy) or "R" (compact)}.
+KernelSpec read_kernel(const Json& value, const std::string& path) {
+  require_object(value, path);
+  const KernelFamily family = read_family(value, path);
+  const std::string context = fmt::format(" for the {} family", family_name(family));
   KernelSpec kernel;
-  kernel.family = *family;
-  switch (*family) {
+  kernel.family = family;
+  switch (family) {
     case KernelFamily::inverse:
       reject_unknown_keys(value, path, {"family", "degree"}, context);
       break;
@@ -279,14 +285,52 @@ Primitive read_polygon(const Json& value, const std::string& path) {
   return construct_located(path, [&] { return Polygon(vertices, kernel); });
 }
 
+// --- SCALIS segment (SPEC §4) ---------------------------------------------
+
+/// {"family": "inverse" | "cauchy" | "compact", "degree": i, "sigma": σ}.
+ScalisKernel read_scalis_kernel(const Json& value, const std::string& path) {
+  require_object(value, path);
+  reject_unknown_keys(value, path, {"family", "degree", "sigma"}, " for a SCALIS kernel");
+  ScalisKernel kernel;
+  kernel.family = read_family(value, path);
+  kernel.degree = read_integer(require_field(value, path, "degree"), path + ".degree");
+  kernel.sigma = read_number(require_field(value, path, "sigma"), path + ".sigma");
+  return kernel;
+}
+
+/// {"type": "scalis_segment", "a": P, "b": P, "radius": [τ0, τ1], "kernel": K, "iso": c (optional, 1)}.
+ScalisSegment read_scalis_segment(const Json& value, const std::string& path) {
+  reject_unknown_keys(value, path, {"type", "a", "b", "radius", "kernel", "iso"}, " for a scalis_segment");
+  const Vec3 a = read_point(require_field(value, path, "a"), path + ".a");
+  const Vec3 b = read_point(require_field(value, path, "b"), path + ".b");
+  const Json& radius_value = require_field(value, path, "radius");
+  if (!radius_value.is_array() || radius_value.size() != 2) {
+    throw InputError("must be the radii [tau0, tau1] at a and b (an array of 2 numbers), got " +
+                         describe(radius_value),
+                     path + ".radius");
+  }
+  const std::vector<double> radius = read_numbers(radius_value, path + ".radius");
+  const ScalisKernel kernel = read_scalis_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  double iso = 1.0;
+  if (const auto found = value.find("iso"); found != value.end()) iso = read_number(*found, path + ".iso");
+  try {
+    return ScalisSegment(a, b, radius[0], radius[1], kernel, iso);
+  } catch (const InputError& error) {
+    throw error.inside(path);
+  }
+}
+
+// ---------------------------------------------------------------------------
+
 Primitive read_primitive(const Json& value, const std::string& path) {
   require_object(value, path);
   const std::string type = read_string(require_field(value, path, "type"), path + ".type");
   if (type == "segment") return read_segment(value, path);
   if (type == "polygon") return read_polygon(value, path);
-  throw InputError(
-      fmt::format("unknown primitive type \"{}\" (supported: {})", type, quoted_list({"segment", "polygon"})),
-      path + ".type");
+  if (type == "scalis_segment") return read_scalis_segment(value, path);
+  throw InputError(fmt::format("unknown primitive type \"{}\" (supported: {})", type,
+                               quoted_list({"segment", "polygon", "scalis_segment"})),
+                   path + ".type");
 }
 
 Skeleton read_skeleton(const Json& document) {

@@ -1,0 +1,173 @@
+// Implementation of skelconv/scalis_segment.hpp.
+#include "skelconv/scalis_segment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "generated/scalis_segment_table.hpp"
+#include "input_checks.hpp"
+#include "skelconv/scalis_compact.hpp"
+#include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio
+
+namespace skelconv {
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+/// W_i = ∫ (1 + u²)^(−i/2) du over ℝ (i ≥ 2): W_2 = π, W_3 = 2,
+/// W_i = (i − 3)/(i − 2) W_{i−2} (SPEC §4, Zanni Table 5).
+double inverse_line_integral(int i) {
+  double w = i % 2 == 0 ? std::numbers::pi : 2.0;
+  for (int m = i % 2 == 0 ? 4 : 5; m <= i; m += 2) w *= double(m - 3) / double(m - 2);
+  return w;
+}
+
+/// V_i = ∫_{−1}^{1} (1 − v²)^(i/2) dv: V_0 = 2, V_1 = π/2, V_i = i/(i + 1) V_{i−2}.
+double compact_line_integral(int i) {
+  double v = i % 2 == 0 ? 2.0 : std::numbers::pi / 2;
+  for (int m = i % 2 == 0 ? 2 : 3; m <= i; m += 2) v *= double(m) / double(m + 1);
+  return v;
+}
+
+void require_radius(double tau, int k) {
+  const std::string where = fmt::format("radius[{}]", k);
+  if (!std::isfinite(tau)) throw InputError(fmt::format("must be finite, got {}", tau), where);
+  if (tau < 0.0) throw InputError(fmt::format("must be >= 0, got {}", tau), where);
+}
+
+}  // namespace
+
+double ScalisSegment::normalisation(KernelFamily family, int degree, double sigma) {
+  const double i = degree;
+  switch (family) {
+    case KernelFamily::inverse: return std::pow(sigma, i) * inverse_line_integral(degree);
+    case KernelFamily::cauchy:
+      return std::pow(sigma, i) * std::pow(1.0 + sigma * sigma, (1.0 - i) / 2) * inverse_line_integral(degree);
+    case KernelFamily::compact:
+      return sigma * std::pow(1.0 - 1.0 / (sigma * sigma), (i + 1) / 2) * compact_line_integral(degree);
+  }
+  return 1.0;  // unreachable
+}
+
+std::vector<int> ScalisSegment::supported_degrees(KernelFamily family) {
+  std::vector<int> degrees;
+  if (family == KernelFamily::compact) {
+    for (int i = min_compact_degree; i <= max_compact_degree; ++i) degrees.push_back(i);
+    return degrees;
+  }
+  for (const auto& kernel : generated::scalis_segment_kernels<double>())
+    if (kernel.family == family) degrees.push_back(kernel.degree);
+  std::sort(degrees.begin(), degrees.end());
+  return degrees;
+}
+
+ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double tau1, const ScalisKernel& kernel,
+                             double iso)
+    : a_(a), b_(b), kernel_(kernel), iso_(iso) {
+  detail::require_finite_point(a, "a");
+  detail::require_finite_point(b, "b");
+  detail::require_non_degenerate(a, b, Segment::degenerate_length_ratio);
+  require_radius(tau0, 0);
+  require_radius(tau1, 1);
+  if (tau0 == 0.0 && tau1 == 0.0) {
+    throw InputError("both radii are zero: the SCALIS field of a segment of radius 0 is not defined", "radius");
+  }
+  if (!std::isfinite(kernel.sigma)) throw InputError(fmt::format("must be finite, got {}", kernel.sigma), "kernel.sigma");
+  if (kernel.family == KernelFamily::compact) {
+    if (!(kernel.sigma > 1.0)) {
+      throw InputError(fmt::format("must be > 1 for the compact family, got {}: the kernel vanishes at distance "
+                                   "sigma·tau, so with sigma <= 1 the thickness tau is unreachable",
+                                   kernel.sigma),
+                       "kernel.sigma");
+    }
+  } else {
+    detail::require_positive_parameter(kernel.sigma, "kernel.sigma");
+  }
+  detail::require_positive_parameter(iso, "iso");
+
+  const std::vector<int> degrees = supported_degrees(kernel.family);
+  if (std::find(degrees.begin(), degrees.end(), kernel.degree) == degrees.end()) {
+    throw InputError(fmt::format("unsupported degree {} for the SCALIS {} family; supported: {}", kernel.degree,
+                                 family_name(kernel.family), detail::format_degree_ranges(degrees)),
+                     "kernel.degree");
+  }
+  if (kernel.family != KernelFamily::compact)
+    generated_ = generated::find_scalis_segment_kernel<double>(kernel.family, kernel.degree);
+
+  input_.a = to_array(a);
+  input_.b = to_array(b);
+  input_.tau0 = tau0;
+  input_.tau1 = tau1;
+  input_.sigma = kernel.sigma;
+  normalisation_ = normalisation(kernel.family, kernel.degree, kernel.sigma);
+}
+
+std::string ScalisSegment::evaluator_name() const {
+  return generated_ != nullptr ? generated_->name : "scalis_compact_F";
+}
+
+bool ScalisSegment::is_divergent_point(const Vec3& p) const {
+  switch (kernel_.family) {
+    case KernelFamily::inverse: {
+      // P on the closed segment, exactly (as Segment does).
+      const Vec3 ab = b_ - a_;
+      const Vec3 ap = p - a_;
+      const double projection = ab.dot(ap);
+      return ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm();
+    }
+    case KernelFamily::cauchy:
+      return (input_.tau0 == 0.0 && p == a_) || (input_.tau1 == 0.0 && p == b_);
+    case KernelFamily::compact:
+      return false;  // left to scalis_compact_F
+  }
+  return false;
+}
+
+double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double, 3>* grad) const {
+  if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", detail::format_point(p)));
+  if (is_divergent_point(p)) {
+    if (grad != nullptr) *grad = {infinity, infinity, infinity};
+    return infinity;
+  }
+  ScalisSegmentInput<double> input = input_;
+  input.p = to_array(p);
+  double F = 0.0;
+  if (generated_ == nullptr) {
+    F = scalis_compact_F(kernel_.degree, input, grad);
+  } else if (grad == nullptr) {
+    F = generated_->f(input);
+  } else if (!want_value) {
+    *grad = generated_->grad(input);
+  } else {
+    F = generated_->f_and_grad(input, *grad);
+  }
+  const bool finite = std::isfinite(F) && (grad == nullptr || std::all_of(grad->begin(), grad->end(),
+                                                                           [](double g) { return std::isfinite(g); }));
+  if (!finite) {
+    throw EvaluationError(fmt::format("{} returned a non-finite value at P = {}, where the field is finite: the "
+                                      "closed form failed in double precision (the point may be too close to the "
+                                      "segment or its line, or the coordinates too large)",
+                                      evaluator_name(), detail::format_point(p)));
+  }
+  return F;
+}
+
+double ScalisSegment::value(const Vec3& p) const { return iso_ * evaluate(p, true, nullptr) / normalisation_; }
+
+Vec3 ScalisSegment::gradient(const Vec3& p) const {
+  std::array<double, 3> g{};
+  evaluate(p, false, &g);
+  return iso_ * to_vec3(g) / normalisation_;
+}
+
+FieldSample ScalisSegment::value_and_gradient(const Vec3& p) const {
+  std::array<double, 3> g{};
+  const double F = evaluate(p, true, &g);
+  return {iso_ * F / normalisation_, iso_ * to_vec3(g) / normalisation_};
+}
+
+}  // namespace skelconv
