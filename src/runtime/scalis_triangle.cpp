@@ -16,26 +16,6 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-void require_radius(double tau, int k) {
-  const std::string where = fmt::format("radius[{}]", k);
-  if (!std::isfinite(tau)) throw InputError(fmt::format("must be finite, got {}", tau), where);
-  if (tau < 0.0) throw InputError(fmt::format("must be >= 0, got {}", tau), where);
-}
-
-void require_sigma(const ScalisKernel& kernel) {
-  if (!std::isfinite(kernel.sigma)) throw InputError(fmt::format("must be finite, got {}", kernel.sigma), "kernel.sigma");
-  if (kernel.family == KernelFamily::compact) {
-    if (!(kernel.sigma > 1.0)) {
-      throw InputError(fmt::format("must be > 1 for the compact family, got {}: the kernel vanishes at distance "
-                                   "sigma·tau, so with sigma <= 1 the thickness tau is unreachable",
-                                   kernel.sigma),
-                       "kernel.sigma");
-    }
-  } else if (!(kernel.sigma > 0.0)) {
-    throw InputError(fmt::format("must be > 0, got {}", kernel.sigma), "kernel.sigma");
-  }
-}
-
 void require_supported_degree(const ScalisKernel& kernel) {
   const std::vector<int> degrees = ScalisTriangle::supported_degrees(kernel.family);
   if (std::find(degrees.begin(), degrees.end(), kernel.degree) != degrees.end()) return;
@@ -94,13 +74,12 @@ ScalisTriangle::ScalisTriangle(const std::array<Vec3, 3>& vertices, const std::a
   // degenerate edge, non-zero area, with Polygon's messages. (The kernel
   // given here is only a placeholder the check needs.)
   (void)Polygon(std::span<const Vec3>(vertices.data(), 3), KernelSpec::inverse(3));
-  for (int k = 0; k < 3; ++k) require_radius(radii[k], k);
+  for (int k = 0; k < 3; ++k) detail::require_scalis_radius(radii[k], k);
   if (radii[0] == 0.0 && radii[1] == 0.0 && radii[2] == 0.0) {
     throw InputError("all three radii are zero: the SCALIS field of a triangle of radius 0 is not defined", "radius");
   }
-  require_sigma(kernel);
-  if (!std::isfinite(iso)) throw InputError(fmt::format("must be finite, got {}", iso), "iso");
-  if (!(iso > 0.0)) throw InputError(fmt::format("must be > 0, got {}", iso), "iso");
+  detail::require_scalis_sigma(kernel.family, kernel.sigma);
+  detail::require_positive_parameter(iso, "iso");
   require_supported_degree(kernel);
   normalisation_ = normalisation(kernel.family, kernel.degree, kernel.sigma);
 
