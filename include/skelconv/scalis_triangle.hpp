@@ -53,6 +53,12 @@
 //    estimates ≤ 1e-13 (inverse, Cauchy) and ≤ 7e-12 (compact). Cost per
 //    value_and_gradient: 1,000–50,000 integrand evaluations, median
 //    25–130 µs, up to ~1 ms, ~2–4 ms for P within 1e-7 of a large triangle.
+//    KNOWN LIMIT: near a vertex of radius 0 (a second singular point of
+//    K/τ², F ~ log) the cost grows: ~35,000–60,000 evaluations at 1e-2…1e-4
+//    (relative to the edges) from the tip, ~10⁶ (~1 s) at 1e-6, and in the
+//    triangle's plane at 1e-8 the gradient's estimate stalls at ~1e-9 and
+//    gradient() / value_and_gradient() throw EvaluationError (value() still
+//    certifies). At the tip itself the field is +inf (below).
 //
 // Points where the integral diverges give +inf (gradient (+inf, +inf,
 // +inf)), as for the other primitives: the inverse kernel with P in the
