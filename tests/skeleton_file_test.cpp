@@ -102,7 +102,7 @@ TEST(SkeletonFileErrors, UnknownNames) {
                "primitives[0].kernel.family: unknown family \"gaussian\" "
                "(supported: \"inverse\", \"cauchy\", \"compact\")");
   expect_error(R"({"primitives": [{"type": "triangle"}]})",
-               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\", \"scalis_segment\")");
+               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\", \"scalis_segment\", \"scalis_triangle\")");
 }
 
 TEST(SkeletonFileErrors, DuplicateFields) {
@@ -217,6 +217,43 @@ TEST(SkeletonFileErrors, ValuesCheckedByThePolygon) {
                "contour formula of the polygon closed forms (SPEC §3, Hubert 2012 §6) excludes it; supported: 3..12");
   expect_error(segment_then_polygon(unit_square, R"({"family": "compact", "degree": 4, "R": 0})"),
                "primitives[1].kernel.R: must be > 0, got 0");
+}
+
+TEST(SkeletonFile, ScalisTriangleLoads) {
+  const Skeleton skeleton = parse_skeleton_json(R"({"primitives": [
+    {"type": "scalis_triangle", "vertices": [[0,0,0], [2,0,0], [0,1.5,0.3]], "radius": [0.2, 0.5, 0.3],
+     "kernel": {"family": "compact", "degree": 3, "sigma": 2.5}, "iso": 0.7},
+    {"type": "scalis_triangle", "vertices": [[0,3,0], [2,3,0], [0,5,0]], "radius": [0.4, 0.4, 0.4],
+     "kernel": {"family": "cauchy", "degree": 4, "sigma": 1.5}}]})");
+  ASSERT_EQ(skeleton.size(), 2u);
+  const ScalisTriangle& varying = std::get<ScalisTriangle>(skeleton.primitives()[0]);
+  EXPECT_EQ(varying.vertices()[2], Vec3(0, 1.5, 0.3));
+  EXPECT_EQ(varying.radii()[1], 0.5);
+  EXPECT_EQ(varying.kernel().family, KernelFamily::compact);
+  EXPECT_EQ(varying.kernel().degree, 3);
+  EXPECT_EQ(varying.kernel().sigma, 2.5);
+  EXPECT_EQ(varying.iso(), 0.7);
+  EXPECT_FALSE(varying.uses_closed_form());
+  const ScalisTriangle& constant = std::get<ScalisTriangle>(skeleton.primitives()[1]);
+  EXPECT_EQ(constant.iso(), 1.0);  // the default
+  EXPECT_TRUE(constant.uses_closed_form());
+}
+
+TEST(SkeletonFileErrors, ScalisTriangleShapeAndValues) {
+  const std::string kernel = R"("kernel": {"family": "cauchy", "degree": 4, "sigma": 1.5})";
+  const std::string triangle = R"({"primitives": [{"type": "scalis_triangle", )";
+  expect_error(triangle + R"("vertices": [[0,0,0], [1,0,0]], "radius": [1, 1, 1], )" + kernel + "}]}",
+               "primitives[0].vertices: must be the 3 vertices [[x, y, z], [x, y, z], [x, y, z]] (an array of 3 "
+               "points), got an array [[0,0,0],[1,0,0]]");
+  expect_error(triangle + R"("vertices": [[0,0,0], [1,0,0], [0,1,0]], "radius": [1, 1], )" + kernel + "}]}",
+               "primitives[0].radius: must be the radii [tau0, tau1, tau2] at the vertices (an array of 3 numbers), "
+               "got an array [1,1]");
+  expect_error(triangle + R"("vertices": [[0,0,0], [1,0,0], [0,1,0]], "radius": [1, -1, 1], )" + kernel + "}]}",
+               "primitives[0].radius[1]: must be >= 0, got -1");
+  expect_error(triangle + R"("vertices": [[0,0,0], [1,0,0], [0,1,0]], "radius": [1, 1, 1], "s": 2, )" + kernel +
+                   "}]}",
+               "primitives[0]: unknown field \"s\" for a scalis_triangle (allowed: \"type\", \"vertices\", "
+               "\"radius\", \"kernel\", \"iso\")");
 }
 
 TEST(SkeletonFileErrors, FilesThatCannotBeRead) {

@@ -3,9 +3,9 @@
 // Convolution is linear in the skeleton (Hubert 2012 §2: the field of a union
 // of skeleton pieces is the sum of their fields), so
 //     f(P) = Σ_k f_k(P),   ∇f(P) = Σ_k ∇f_k(P).
-// Primitives are a std::variant: segments (SPEC §2) and polygons (SPEC §3)
-// today, SCALIS primitives (SPEC §4) to come as further alternatives; every
-// alternative provides value(), gradient() and value_and_gradient().
+// Primitives are a std::variant: segments (SPEC §2), polygons (SPEC §3),
+// SCALIS segments and triangles (SPEC §4); every alternative provides
+// value(), gradient() and value_and_gradient().
 #pragma once
 
 #include <cstddef>
@@ -15,12 +15,13 @@
 #include "skelconv/geometry.hpp"
 #include "skelconv/polygon.hpp"
 #include "skelconv/scalis_segment.hpp"
+#include "skelconv/scalis_triangle.hpp"
 #include "skelconv/segment.hpp"
 
 namespace skelconv {
 
 /// One skeleton element.
-using Primitive = std::variant<Segment, Polygon, ScalisSegment>;
+using Primitive = std::variant<Segment, Polygon, ScalisSegment, ScalisTriangle>;
 
 class Skeleton {
  public:

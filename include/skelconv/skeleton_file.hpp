@@ -10,7 +10,11 @@
 //     {"type": "segment", "a": [0,2,0], "b": [1,2,1],
 //      "kernel": {"family": "compact", "degree": 6, "R": 1.5}},
 //     {"type": "polygon", "vertices": [[0,3,0], [1,3,0], [1,4,0], [0,4,0]],
-//      "kernel": {"family": "inverse", "degree": 3}}]}
+//      "kernel": {"family": "inverse", "degree": 3}},
+//     {"type": "scalis_segment", "a": [0,5,0], "b": [2,5,0], "radius": [0.2, 0.6],
+//      "kernel": {"family": "cauchy", "degree": 4, "sigma": 1.5}, "iso": 1},
+//     {"type": "scalis_triangle", "vertices": [[0,6,0], [2,6,0], [0,7.5,0.3]],
+//      "radius": [0.2, 0.5, 0.3], "kernel": {"family": "compact", "degree": 4, "sigma": 2}}]}
 //
 // The reader is strict, because a skeleton that silently means something
 // else than what was written is worse than an error: unknown fields (a typo

@@ -14,6 +14,23 @@ void require_positive_parameter(double value, const char* where) {
   if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
 }
 
+void require_scalis_radius(double tau, int k) {
+  const std::string where = fmt::format("radius[{}]", k);
+  if (!std::isfinite(tau)) throw InputError(fmt::format("must be finite, got {}", tau), where);
+  if (tau < 0.0) throw InputError(fmt::format("must be >= 0, got {}", tau), where);
+}
+
+void require_scalis_sigma(KernelFamily family, double sigma) {
+  if (family != KernelFamily::compact) return require_positive_parameter(sigma, "kernel.sigma");
+  if (!std::isfinite(sigma)) throw InputError(fmt::format("must be finite, got {}", sigma), "kernel.sigma");
+  if (!(sigma > 1.0)) {
+    throw InputError(fmt::format("must be > 1 for the compact family, got {}: the kernel vanishes at distance "
+                                 "sigma·tau, so with sigma <= 1 the thickness tau is unreachable",
+                                 sigma),
+                     "kernel.sigma");
+  }
+}
+
 void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_length_ratio) {
   if (a == b) throw InputError(fmt::format("degenerate segment: a and b are the same point {}", format_point(a)));
   const double length_squared = (b - a).squaredNorm();

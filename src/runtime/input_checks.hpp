@@ -1,5 +1,6 @@
 // src/runtime/input_checks.hpp — checks and message formatting shared by the
-// primitives' constructors (Segment, Polygon, ScalisSegment) and Skeleton. Internal to
+// primitives' constructors (Segment, Polygon, ScalisSegment, ScalisTriangle) and
+// Skeleton. Internal to
 // skelconv_runtime: not an installed header.
 //
 // Each check throws InputError with the problem and, where the caller names
@@ -38,6 +39,13 @@ void require_positive_parameter(double value, const char* where);
 /// Segment::degenerate_length_ratio) times the largest coordinate
 /// magnitude, or a squared length that is not a normal double.
 void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_length_ratio);
+
+/// A SCALIS radius τ_k ("radius[k]"): finite and >= 0.
+void require_scalis_radius(double tau, int k);
+
+/// The scale σ of a SCALIS kernel ("kernel.sigma"): finite, > 0, and > 1
+/// for the compact family (its kernel vanishes at distance στ).
+void require_scalis_sigma(KernelFamily family, double sigma);
 
 /// The kernel's own parameter: s > 0 for cauchy ("kernel.s"), R > 0 for
 /// compact ("kernel.R"), finite. The degree is checked by each primitive

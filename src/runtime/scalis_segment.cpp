@@ -33,12 +33,6 @@ double compact_line_integral(int i) {
   return v;
 }
 
-void require_radius(double tau, int k) {
-  const std::string where = fmt::format("radius[{}]", k);
-  if (!std::isfinite(tau)) throw InputError(fmt::format("must be finite, got {}", tau), where);
-  if (tau < 0.0) throw InputError(fmt::format("must be >= 0, got {}", tau), where);
-}
-
 }  // namespace
 
 double ScalisSegment::normalisation(KernelFamily family, int degree, double sigma) {
@@ -71,22 +65,12 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
   detail::require_finite_point(a, "a");
   detail::require_finite_point(b, "b");
   detail::require_non_degenerate(a, b, Segment::degenerate_length_ratio);
-  require_radius(tau0, 0);
-  require_radius(tau1, 1);
+  detail::require_scalis_radius(tau0, 0);
+  detail::require_scalis_radius(tau1, 1);
   if (tau0 == 0.0 && tau1 == 0.0) {
     throw InputError("both radii are zero: the SCALIS field of a segment of radius 0 is not defined", "radius");
   }
-  if (!std::isfinite(kernel.sigma)) throw InputError(fmt::format("must be finite, got {}", kernel.sigma), "kernel.sigma");
-  if (kernel.family == KernelFamily::compact) {
-    if (!(kernel.sigma > 1.0)) {
-      throw InputError(fmt::format("must be > 1 for the compact family, got {}: the kernel vanishes at distance "
-                                   "sigma·tau, so with sigma <= 1 the thickness tau is unreachable",
-                                   kernel.sigma),
-                       "kernel.sigma");
-    }
-  } else {
-    detail::require_positive_parameter(kernel.sigma, "kernel.sigma");
-  }
+  detail::require_scalis_sigma(kernel.family, kernel.sigma);
   detail::require_positive_parameter(iso, "iso");
 
   const std::vector<int> degrees = supported_degrees(kernel.family);

@@ -8,10 +8,11 @@
 //   2. read_skeleton walks the document, checking presence, types and
 //      allowed keys with the path of each value, then builds the primitives;
 //      the primitive constructors check the geometry and kernel values
-//      (a Segment's or Polygon's InputError is relocated under
+//      (a primitive constructor's InputError is relocated under
 //      "primitives[k]").
 #include "skelconv/skeleton_file.hpp"
 
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -298,26 +299,56 @@ ScalisKernel read_scalis_kernel(const Json& value, const std::string& path) {
   return kernel;
 }
 
+/// The "radius" field of a SCALIS primitive: exactly `count` numbers, the
+/// radii at `at` (named as in the message, e.g. "[tau0, tau1] at a and b").
+std::vector<double> read_scalis_radii(const Json& value, const std::string& path, std::size_t count,
+                                      const char* names_and_places) {
+  const Json& radius_value = require_field(value, path, "radius");
+  if (!radius_value.is_array() || radius_value.size() != count) {
+    throw InputError(fmt::format("must be the radii {} (an array of {} numbers), got {}", names_and_places, count,
+                                 describe(radius_value)),
+                     path + ".radius");
+  }
+  return read_numbers(radius_value, path + ".radius");
+}
+
+/// The optional "iso" field of a SCALIS primitive (default 1).
+double read_iso(const Json& value, const std::string& path) {
+  const auto found = value.find("iso");
+  return found == value.end() ? 1.0 : read_number(*found, path + ".iso");
+}
+
 /// {"type": "scalis_segment", "a": P, "b": P, "radius": [τ0, τ1], "kernel": K, "iso": c (optional, 1)}.
-ScalisSegment read_scalis_segment(const Json& value, const std::string& path) {
+Primitive read_scalis_segment(const Json& value, const std::string& path) {
   reject_unknown_keys(value, path, {"type", "a", "b", "radius", "kernel", "iso"}, " for a scalis_segment");
   const Vec3 a = read_point(require_field(value, path, "a"), path + ".a");
   const Vec3 b = read_point(require_field(value, path, "b"), path + ".b");
-  const Json& radius_value = require_field(value, path, "radius");
-  if (!radius_value.is_array() || radius_value.size() != 2) {
-    throw InputError("must be the radii [tau0, tau1] at a and b (an array of 2 numbers), got " +
-                         describe(radius_value),
-                     path + ".radius");
-  }
-  const std::vector<double> radius = read_numbers(radius_value, path + ".radius");
+  const std::vector<double> radius = read_scalis_radii(value, path, 2, "[tau0, tau1] at a and b");
   const ScalisKernel kernel = read_scalis_kernel(require_field(value, path, "kernel"), path + ".kernel");
-  double iso = 1.0;
-  if (const auto found = value.find("iso"); found != value.end()) iso = read_number(*found, path + ".iso");
-  try {
-    return ScalisSegment(a, b, radius[0], radius[1], kernel, iso);
-  } catch (const InputError& error) {
-    throw error.inside(path);
+  const double iso = read_iso(value, path);
+  return construct_located(path, [&] { return ScalisSegment(a, b, radius[0], radius[1], kernel, iso); });
+}
+
+// --- SCALIS triangle (SPEC §4, Zanni §5.2) ----------------------------------
+
+/// {"type": "scalis_triangle", "vertices": [P, P, P], "radius": [τ0, τ1, τ2], "kernel": K, "iso": c (optional, 1)}.
+Primitive read_scalis_triangle(const Json& value, const std::string& path) {
+  reject_unknown_keys(value, path, {"type", "vertices", "radius", "kernel", "iso"}, " for a scalis_triangle");
+  const std::string vertices_path = path + ".vertices";
+  const Json& vertices_json = require_field(value, path, "vertices");
+  if (!vertices_json.is_array() || vertices_json.size() != 3) {
+    throw InputError("must be the 3 vertices [[x, y, z], [x, y, z], [x, y, z]] (an array of 3 points), got " +
+                         describe(vertices_json),
+                     vertices_path);
   }
+  std::array<Vec3, 3> vertices;
+  for (std::size_t k = 0; k < 3; ++k)
+    vertices[k] = read_point(vertices_json[k], fmt::format("{}[{}]", vertices_path, k));
+  const std::vector<double> radius = read_scalis_radii(value, path, 3, "[tau0, tau1, tau2] at the vertices");
+  const ScalisKernel kernel = read_scalis_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  const double iso = read_iso(value, path);
+  return construct_located(
+      path, [&] { return ScalisTriangle(vertices, {radius[0], radius[1], radius[2]}, kernel, iso); });
 }
 
 // ---------------------------------------------------------------------------
@@ -328,8 +359,9 @@ Primitive read_primitive(const Json& value, const std::string& path) {
   if (type == "segment") return read_segment(value, path);
   if (type == "polygon") return read_polygon(value, path);
   if (type == "scalis_segment") return read_scalis_segment(value, path);
+  if (type == "scalis_triangle") return read_scalis_triangle(value, path);
   throw InputError(fmt::format("unknown primitive type \"{}\" (supported: {})", type,
-                               quoted_list({"segment", "polygon", "scalis_segment"})),
+                               quoted_list({"segment", "polygon", "scalis_segment", "scalis_triangle"})),
                    path + ".type");
 }
 

@@ -1,0 +1,172 @@
+// Implementation of skelconv/scalis_triangle.hpp.
+#include "skelconv/scalis_triangle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "input_checks.hpp"
+#include "scalis_triangle_quadrature.hpp"
+
+namespace skelconv {
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+void require_supported_degree(const ScalisKernel& kernel) {
+  const std::vector<int> degrees = ScalisTriangle::supported_degrees(kernel.family);
+  if (std::find(degrees.begin(), degrees.end(), kernel.degree) != degrees.end()) return;
+  const std::string family(family_name(kernel.family));
+  if (kernel.family != KernelFamily::compact && kernel.degree == 2) {
+    throw InputError(fmt::format("degree 2 of the SCALIS {} family is not available on a triangle: its "
+                                 "normalisation h = ∬ K(√(1 + |u|²)) du over the plane diverges (K ~ d^-2); "
+                                 "supported: {}",
+                                 family, detail::format_degree_ranges(degrees)),
+                     "kernel.degree");
+  }
+  throw InputError(fmt::format("unsupported degree {} for the SCALIS {} family on a triangle; supported: {}",
+                               kernel.degree, family, detail::format_degree_ranges(degrees)),
+                   "kernel.degree");
+}
+
+/// Whether the polygon closed forms offer this kernel (for constant radius).
+bool polygon_offers(const ScalisKernel& kernel) {
+  const std::vector<int> degrees = Polygon::supported_degrees(kernel.family);
+  return std::find(degrees.begin(), degrees.end(), kernel.degree) != degrees.end();
+}
+
+}  // namespace
+
+double ScalisTriangle::normalisation(KernelFamily family, int degree, double sigma) {
+  const double i = degree;
+  const double pi = std::numbers::pi;
+  switch (family) {
+    case KernelFamily::inverse:
+    case KernelFamily::cauchy:
+      if (degree <= 2) {
+        throw InputError(fmt::format("the plane normalisation of the {} family diverges for degree {} <= 2",
+                                     family_name(family), degree),
+                         "kernel.degree");
+      }
+      return family == KernelFamily::inverse
+                 ? 2 * pi * std::pow(sigma, i) / (i - 2)
+                 : 2 * pi * sigma * sigma * std::pow(1.0 + 1.0 / (sigma * sigma), 1.0 - i / 2) / (i - 2);
+    case KernelFamily::compact:
+      return 2 * pi * sigma * sigma * std::pow(1.0 - 1.0 / (sigma * sigma), (i + 2) / 2) / (i + 2);
+  }
+  return 1.0;  // unreachable
+}
+
+std::vector<int> ScalisTriangle::supported_degrees(KernelFamily family) {
+  std::vector<int> degrees;
+  for (int i = family == KernelFamily::compact ? min_compact_degree : min_degree; i <= max_degree; ++i)
+    degrees.push_back(i);
+  return degrees;
+}
+
+ScalisTriangle::ScalisTriangle(const std::array<Vec3, 3>& vertices, const std::array<double, 3>& radii,
+                               const ScalisKernel& kernel, double iso)
+    : vertices_(vertices), radii_(radii), kernel_(kernel), iso_(iso) {
+  // The geometry as a polygon: finite vertices, no repeated vertex or
+  // degenerate edge, non-zero area, with Polygon's messages. (The kernel
+  // given here is only a placeholder the check needs.)
+  (void)Polygon(std::span<const Vec3>(vertices.data(), 3), KernelSpec::inverse(3));
+  for (int k = 0; k < 3; ++k) detail::require_scalis_radius(radii[k], k);
+  if (radii[0] == 0.0 && radii[1] == 0.0 && radii[2] == 0.0) {
+    throw InputError("all three radii are zero: the SCALIS field of a triangle of radius 0 is not defined", "radius");
+  }
+  detail::require_scalis_sigma(kernel.family, kernel.sigma);
+  detail::require_positive_parameter(iso, "iso");
+  require_supported_degree(kernel);
+  normalisation_ = normalisation(kernel.family, kernel.degree, kernel.sigma);
+
+  if (radii[0] == radii[1] && radii[1] == radii[2] && polygon_offers(kernel)) {
+    // Scale by 2^−e so that τ' = τ 2^−e ∈ [1/2, 1): s = 1/(σ²τ'²) and R = στ'
+    // stay representable whatever τ is; F is scale invariant.
+    int exponent = 0;
+    (void)std::frexp(radii[0], &exponent);
+    closed_form_scale_ = std::ldexp(1.0, -exponent);
+    const double tau = std::ldexp(radii[0], -exponent);
+    const double sigma = kernel.sigma;
+    KernelSpec classical{kernel.family, kernel.degree, 1.0, 1.0};
+    closed_form_factor_ = 1.0 / (tau * tau);
+    switch (kernel.family) {
+      case KernelFamily::inverse: closed_form_factor_ *= std::pow(sigma * tau, kernel.degree); break;
+      case KernelFamily::cauchy: classical.s = 1.0 / (sigma * sigma * tau * tau); break;
+      case KernelFamily::compact: classical.R = sigma * tau; break;
+    }
+    std::array<Vec3, 3> scaled;
+    for (int k = 0; k < 3; ++k) scaled[k] = vertices[k] * closed_form_scale_;
+    closed_form_.emplace(std::span<const Vec3>(scaled.data(), 3), classical);
+  }
+}
+
+double ScalisTriangle::closed(const Vec3& p, Vec3* grad) const {
+  const Vec3 scaled = p * closed_form_scale_;
+  try {
+    if (grad == nullptr) return closed_form_factor_ * closed_form_->value(scaled);
+    const FieldSample c = closed_form_->value_and_gradient(scaled);
+    *grad = closed_form_factor_ * closed_form_scale_ * c.gradient;
+    return closed_form_factor_ * c.value;
+  } catch (const EvaluationError& e) {
+    throw EvaluationError(fmt::format("constant-radius SCALIS triangle at P = {}: {}", detail::format_point(p),
+                                      e.what()));
+  }
+}
+
+double ScalisTriangle::numerical(const Vec3& p, Vec3* grad) const {
+  const detail::ScalisTriangleIntegral r = detail::integrate_scalis_triangle(
+      vertices_, radii_, kernel_.family, kernel_.degree, kernel_.sigma, p, grad != nullptr, requested_tolerance);
+  if (r.divergent) {
+    if (grad != nullptr) *grad = Vec3::Constant(infinity);
+    return infinity;
+  }
+  const bool finite = std::isfinite(r.F) && std::isfinite(r.F_error) &&
+                      (grad == nullptr || (r.gradient.allFinite() && std::isfinite(r.gradient_error)));
+  if (!finite) {
+    throw EvaluationError(fmt::format("numerical integration of the SCALIS triangle gave a non-finite value at "
+                                      "P = {}, where the field is finite (the point may be too close to the "
+                                      "triangle, or the coordinates too large)",
+                                      detail::format_point(p)));
+  }
+  const bool F_ok = r.F_error <= certified_tolerance * std::abs(r.F);
+  const bool gradient_ok = grad == nullptr || r.gradient_error <= certified_tolerance * r.gradient_scale;
+  if (!F_ok || !gradient_ok) {
+    throw EvaluationError(fmt::format("numerical integration could not reach {} relative error at P = {}: "
+                                      "estimated error of F {:.3g} (F = {:.17g}){} after {} evaluations",
+                                      certified_tolerance, detail::format_point(p), r.F_error, r.F,
+                                      grad == nullptr ? std::string()
+                                                      : fmt::format(", of the gradient {:.3g} (scale {:.3g})",
+                                                                    r.gradient_error, r.gradient_scale),
+                                      r.evaluations));
+  }
+  if (grad != nullptr) *grad = r.gradient;
+  return r.F;
+}
+
+double ScalisTriangle::value(const Vec3& p) const {
+  detail::require_finite_query_point(p);
+  const double F = uses_closed_form() ? closed(p, nullptr) : numerical(p, nullptr);
+  return iso_ * F / normalisation_;
+}
+
+Vec3 ScalisTriangle::gradient(const Vec3& p) const { return value_and_gradient(p).gradient; }
+
+FieldSample ScalisTriangle::value_and_gradient(const Vec3& p) const {
+  detail::require_finite_query_point(p);
+  Vec3 g;
+  const double F = uses_closed_form() ? closed(p, &g) : numerical(p, &g);
+  return {iso_ * F / normalisation_, iso_ * g / normalisation_};
+}
+
+FieldSample ScalisTriangle::numerical_value_and_gradient(const Vec3& p) const {
+  detail::require_finite_query_point(p);
+  Vec3 g;
+  const double F = numerical(p, &g);
+  return {iso_ * F / normalisation_, iso_ * g / normalisation_};
+}
+
+}  // namespace skelconv
