@@ -73,10 +73,11 @@ std::vector<ScalisFamilyUnderTest> families_under_test() {
       {"compact", KernelFamily::compact, 2, 10, 1.05, 4.0,
        [](int i, const ScalisSegmentInput<double>& in, std::array<double, 3>* g) { return scalis_compact_F(i, in, g); },
        2000},
-      // The generated inverse and Cauchy kernels expand τ(t)^(i−1) into
-      // moments t^k, k ≤ 10, whose relations cancel close to the axis:
-      // measured 2000 generic points per degree, F up to 8e-11 (inverse
-      // i = 9) and ∇F components up to 5e-11 relative to |∇F|.
+      // Generic points as for classical segments (0.1–3 |AB| away), and
+      // within σ τ of the axis: both printed, not asserted. The generated
+      // kernels expand τ(t)^(i−1) into moments t^k, k ≤ 10, whose relations
+      // cancel at moderate distances (measured, 2000 points per degree: F up
+      // to 4e-8 at i = 10; ≤ 1e-12 only up to i = 4). Issue 4 stays open.
       {"inverse", KernelFamily::inverse, 2, 10, 0.3, 3.0,
        [](int i, const ScalisSegmentInput<double>& in, std::array<double, 3>* g) {
          return generated_scalis_F(KernelFamily::inverse, i, in, g);
@@ -140,7 +141,11 @@ double tau_max(const ScalisSegmentInput<double>& in) { return std::max(in.tau0, 
 /// σ τ(t_c), so that K(|PΓ(t_c)|/τ(t_c)) ≥ (1 − 0.97²)^(i/2): well inside the
 /// support at t_c (not grazing), and not on the axis (the inverse kernel is
 /// singular there). Rejected if P is within 0.1 τ_max of a cone tip.
-bool generic_point(DeterministicRandom& rng, ScalisSegmentInput<double>& in) {
+/// A point within the kernel's reach: P = Γ(t) + ρ n, ρ ∈ [0.05, 0.97] σ τ(t),
+/// not within 0.1 τ_max of a cone tip. For the compact family this is its
+/// generic region (inside the support); for inverse and Cauchy it is their
+/// near-axis region (down to 1.5e-3 |AB| from the axis), reported only.
+bool point_within_reach(DeterministicRandom& rng, ScalisSegmentInput<double>& in) {
   for (int attempt = 0; attempt < 100; ++attempt) {
     const double t = rng.uniform(0, 1);
     const double rho = in.sigma * tau_at(in, t) * rng.uniform(0.05, 0.97);
@@ -151,6 +156,22 @@ bool generic_point(DeterministicRandom& rng, ScalisSegmentInput<double>& in) {
     if (!near_tip) return true;
   }
   return false;
+}
+
+/// The generic region of a family. Compact: point_within_reach (the support).
+/// Inverse and Cauchy: as for classical segments (verify/regions.hpp,
+/// sampling.hpp), 0.1–3 |AB| from the segment, nearest point anywhere.
+bool generic_point(DeterministicRandom& rng, ScalisSegmentInput<double>& in,
+                   KernelFamily family = KernelFamily::compact) {
+  if (family == KernelFamily::compact) return point_within_reach(rng, in);
+  detail::RandomSegment segment;
+  segment.a = in.a;
+  segment.b = in.b;
+  segment.length = norm(sub(in.b, in.a));
+  segment.dir = {(in.b[0] - in.a[0]) / segment.length, (in.b[1] - in.a[1]) / segment.length,
+                 (in.b[2] - in.a[2]) / segment.length};
+  in.p = detail::point_at_distance(rng, segment, rng.log_uniform(0.1, 3.0) * segment.length);
+  return true;
 }
 
 struct ErrorSummary {
@@ -199,7 +220,7 @@ TEST_P(ScalisProperties, GenericAccuracyAgainstDefinition) {
     for (int k = 0; k < fam.points_per_degree; ++k) {
       DeterministicRandom rng(splitmix64(1000003ULL * degree + k + 17 * static_cast<int>(fam.family)));
       ScalisSegmentInput<double> in = random_segment(rng, static_cast<Radii>(k % 5), fam.sigma_lo, fam.sigma_hi);
-      ASSERT_TRUE(generic_point(rng, in));
+      ASSERT_TRUE(generic_point(rng, in, fam.family));
       std::array<double, 3> g;
       const auto start = std::chrono::steady_clock::now();
       const double F = fam.field(degree, in, &g);
@@ -210,6 +231,19 @@ TEST_P(ScalisProperties, GenericAccuracyAgainstDefinition) {
       summary.add(F, g, ref);
     }
     std::printf("[%s i=%2d generic] %s\n", fam.name, degree, summary.str().c_str());
+    if (fam.family != KernelFamily::compact) {
+      // Reported, not asserted: within σ τ of the axis (near the line).
+      ErrorSummary near_axis;
+      for (int k = 0; k < 200; ++k) {
+        DeterministicRandom rng(splitmix64(3000017ULL * degree + k + 17 * static_cast<int>(fam.family)));
+        ScalisSegmentInput<double> in = random_segment(rng, static_cast<Radii>(k % 5), fam.sigma_lo, fam.sigma_hi);
+        if (!point_within_reach(rng, in)) continue;
+        std::array<double, 3> g;
+        const double F = fam.field(degree, in, &g);
+        near_axis.add(F, g, reference.evaluate({fam.family, degree}, widen(in)));
+      }
+      std::printf("[%s i=%2d near axis, within sigma tau] %s\n", fam.name, degree, near_axis.str().c_str());
+    }
     EXPECT_EQ(summary.flagged, 0) << "i=" << degree;
     EXPECT_GE(summary.points, fam.points_per_degree * 99 / 100);
     if (!fam.meets_targets) continue;  // reported above, known to miss (families_under_test)
@@ -301,7 +335,7 @@ TEST_P(ScalisProperties, ScaleInvariance) {
     for (int k = 0; k < 40; ++k) {
       DeterministicRandom rng(splitmix64(5000011ULL * degree + k));
       ScalisSegmentInput<double> in = random_segment(rng, static_cast<Radii>(k % 5), fam.sigma_lo, fam.sigma_hi);
-      ASSERT_TRUE(generic_point(rng, in));
+      ASSERT_TRUE(generic_point(rng, in, fam.family));
       std::array<double, 3> g;
       const double F = fam.field(degree, in, &g);
       // α not a power of two, so the scaled inputs are rounded: the check
@@ -338,7 +372,7 @@ TEST_P(ScalisProperties, AdditivityUnderSplitting) {
     for (int k = 0; k < 40; ++k) {
       DeterministicRandom rng(splitmix64(6000011ULL * degree + k));
       ScalisSegmentInput<double> in = random_segment(rng, static_cast<Radii>(k % 5), fam.sigma_lo, fam.sigma_hi);
-      ASSERT_TRUE(generic_point(rng, in));
+      ASSERT_TRUE(generic_point(rng, in, fam.family));
       std::array<double, 3> g;
       const double F = fam.field(degree, in, &g);
       const double t = rng.uniform(0.1, 0.9);
