@@ -38,7 +38,9 @@ std::string weight_text(int weight_degree) {
 class ScalisSegmentProgramBuilder : public SegmentProgramBuilder {
  public:
   explicit ScalisSegmentProgramBuilder(const ScalisKernelSpec& scalis)
-      : SegmentProgramBuilder(SegmentKernelSpec{scalis.family, scalis.degree, scalis.degree - 1}) {}
+      : SegmentProgramBuilder(SegmentKernelSpec{scalis.family, scalis.degree, scalis.degree - 1}) {
+    high_moments_by_panels_ = true;
+  }
 
  private:
   void read_inputs() override {

@@ -40,7 +40,7 @@ template <class T>
 std::span<const ScalisSegmentKernel<T>> scalis_segment_kernels() {
   static const ScalisSegmentKernel<T> table[] = {
       {KernelFamily::inverse, 2, &scalis_segment_inverse_i2_f<T>, &scalis_segment_inverse_i2_grad<T>, &scalis_segment_inverse_i2_f_and_grad<T>, "scalis_segment_inverse_i2",
-       "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]", {31, 41, 3, 2, 1, 1, 0}, {40, 68, 5, 2, 1, 0, 0}, {42, 77, 5, 2, 1, 1, 0}},
+       "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]", {31, 40, 3, 2, 1, 1, 0}, {40, 68, 5, 2, 1, 0, 0}, {42, 77, 5, 2, 1, 1, 0}},
       {KernelFamily::inverse, 3, &scalis_segment_inverse_i3_f<T>, &scalis_segment_inverse_i3_grad<T>, &scalis_segment_inverse_i3_f_and_grad<T>, "scalis_segment_inverse_i3",
        "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]", {35, 58, 6, 3, 0, 1, 0}, {45, 95, 4, 3, 0, 0, 0}, {50, 116, 6, 3, 0, 1, 0}},
       {KernelFamily::inverse, 4, &scalis_segment_inverse_i4_f<T>, &scalis_segment_inverse_i4_grad<T>, &scalis_segment_inverse_i4_f_and_grad<T>, "scalis_segment_inverse_i4",
@@ -58,7 +58,7 @@ std::span<const ScalisSegmentKernel<T>> scalis_segment_kernels() {
       {KernelFamily::inverse, 10, &scalis_segment_inverse_i10_f<T>, &scalis_segment_inverse_i10_grad<T>, &scalis_segment_inverse_i10_f_and_grad<T>, "scalis_segment_inverse_i10",
        "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]", {95, 278, 5, 2, 1, 1, 0}, {120, 373, 5, 2, 1, 0, 0}, {138, 443, 5, 2, 1, 1, 0}},
       {KernelFamily::cauchy, 2, &scalis_segment_cauchy_i2_f<T>, &scalis_segment_cauchy_i2_grad<T>, &scalis_segment_cauchy_i2_f_and_grad<T>, "scalis_segment_cauchy_i2",
-       "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]", {43, 63, 3, 2, 1, 1, 0}, {52, 90, 5, 2, 1, 0, 0}, {54, 99, 5, 2, 1, 1, 0}},
+       "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]", {43, 62, 3, 2, 1, 1, 0}, {52, 90, 5, 2, 1, 0, 0}, {54, 99, 5, 2, 1, 1, 0}},
       {KernelFamily::cauchy, 3, &scalis_segment_cauchy_i3_f<T>, &scalis_segment_cauchy_i3_grad<T>, &scalis_segment_cauchy_i3_f_and_grad<T>, "scalis_segment_cauchy_i3",
        "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]", {46, 76, 6, 5, 0, 1, 0}, {56, 113, 4, 3, 0, 0, 0}, {61, 135, 6, 5, 0, 1, 0}},
       {KernelFamily::cauchy, 4, &scalis_segment_cauchy_i4_f<T>, &scalis_segment_cauchy_i4_grad<T>, &scalis_segment_cauchy_i4_f_and_grad<T>, "scalis_segment_cauchy_i4",
