@@ -2,7 +2,7 @@
 // where the recurrences cancel and the rule is exact (to rounding).
 //
 // Generated segment kernels need M_{k,m} = ∫_{t0}^{t1} t^k q(t)^(−m/2) dt with
-// q = a t² − 2 b t + c (SPEC §2). Two places where recurrence (1) and the
+// q = a t² − 2 b t + c (SPEC §2). Three places where recurrence (1) and the
 // moment relations lose digits are better served by an N-point
 // Gauss–Legendre rule, whose positive weights and positive integrand leave
 // nothing to cancel:
@@ -18,7 +18,10 @@
 //    Bernstein ellipse of parameter ρ ≥ 5.8, is below N^(m/2) ρ^(−2N) ≈ 1e-19
 //    with N = 20 (Trefethen, Approximation Theory and Approximation
 //    Practice, ch. 19). The verifier checks both claims against quadrature
-//    of the definition.
+//    of the definition;
+//  * SCALIS segments (weights τ(t)^(i−1), moments up to t^10), wherever P is
+//    not near the line beside the segment: segment_moments_gauss_panels
+//    below, on panels graded towards the roots of q.
 //
 // Nodes and weights are Boost.Math's, tabulated to the precision of T
 // (double, long double, float128, …).
