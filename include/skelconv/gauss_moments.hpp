@@ -127,7 +127,8 @@ constexpr unsigned gauss_panel_points() {
 ///  * a panel [x, y] is accepted when z lies outside its Bernstein ellipse
 ///    of parameter 4, i.e. s = (δ(x) + δ(y))/|y − x| ≥ (4 + 1/4)/2 = 17/8
 ///    (Trefethen, Approximation Theory and Approximation Practice, ch. 19);
-///  * panels start at the point of [0, 1] nearest to t* and go outwards;
+///  * [0, 1] is one panel when accepted; otherwise panels start at the point
+///    of [0, 1] nearest to t* and go outwards;
 ///    each takes the rest of its side if that is accepted, else the length
 ///    0.9 δ(x) (accepted: δ grows away from t*, so s ≥ 2δ(x)/0.9δ(x));
 ///  * δ grows by a factor ≥ 1.3 a panel, so a pole at distance ε from the
@@ -152,6 +153,12 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
   const T t_star = b / a;
   const T pivot = t_star < T(0) ? T(0) : t_star > T(1) ? T(1) : t_star;
   const T s_min = T(17) / T(8);
+  // Far from the segment one panel on [0, 1] is accepted: then it is used
+  // instead of two that meet at the pivot (half the cost).
+  if (pivot != T(0) && pivot != T(1) && delta(T(0)) + delta(T(1)) >= s_min) {
+    add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, T(0), T(1), out);
+    return;
+  }
   for (int side = 0; side <= 1; ++side) {
     const T end(side);
     if (end == pivot) continue;
