@@ -46,6 +46,7 @@
 #include "skelconv/clip.hpp"
 #include "skelconv/polygon_far_field.hpp"
 #include "skelconv/polygon_edge_input.hpp"
+#include "skelconv/integer_power.hpp"
 #include "skelconv/segment_input.hpp"  // KernelFamily
 
 namespace skelconv {
@@ -80,17 +81,6 @@ T snap_winding_angle(const T& theta_sum) {
   const T two_pi = 2 * std::numbers::pi_v<T>;
   const T turns = round(theta_sum / two_pi);
   return abs(theta_sum - turns * two_pi) <= T(1e-6) ? turns * two_pi : theta_sum;
-}
-
-template <class T>
-T integer_power(T x, int n) {
-  T result(1);
-  if (n < 0) {
-    x = T(1) / x;
-    n = -n;
-  }
-  for (; n > 0; --n) result *= x;
-  return result;
 }
 
 /// f and/or ∇f (grad != nullptr) of the polygon at p; with edge_fields,

@@ -100,6 +100,7 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "skelconv/integer_power.hpp"
 #include "skelconv/scalis_segment_input.hpp"
 
 namespace skelconv {
@@ -178,17 +179,6 @@ struct Sums {
   T g0 = T(0);
   T g1 = T(0);
 };
-
-template <class T>
-T integer_power(T x, int n) {
-  T result(1);
-  while (n > 0) {
-    if (n & 1) result *= x;
-    x *= x;
-    n >>= 1;
-  }
-  return result;
-}
 
 /// Adds the Gauss–Legendre rule on [a, b] (panel variable v) to sums.
 template <class T>

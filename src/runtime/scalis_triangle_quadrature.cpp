@@ -12,6 +12,8 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
+#include "skelconv/integer_power.hpp"
+
 namespace skelconv::detail {
 namespace {
 
@@ -144,12 +146,6 @@ Adaptive<N> integrate_adaptive(std::span<const Interval> pieces, Integrand& inte
     panels[worst] = gauss_kronrod_panel<N>(split.piece, split.a, mid, integrand);
     panels.push_back(gauss_kronrod_panel<N>(split.piece, mid, split.b, integrand));
   }
-}
-
-double integer_power(double x, int n) {
-  double result = 1.0;
-  for (; n > 0; --n) result *= x;
-  return result;
 }
 
 using Vec2 = Eigen::Vector2d;
