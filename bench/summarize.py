@@ -225,6 +225,7 @@ def main():
     kernels, context = load_benchmarks(os.path.join(res, "kernels.json"))
     batch, _ = load_benchmarks(os.path.join(res, "batch.json"))
     skeleton, _ = load_benchmarks(os.path.join(res, "skeleton.json"))
+    scalis, _ = load_benchmarks(os.path.join(res, "scalis.json"))
     ir = load_callgrind(args.callgrind)
     if ir:
         with open(os.path.join(res, "callgrind.json"), "w") as f:
@@ -489,6 +490,25 @@ def main():
         md.append(table(["Table 4 row (f and ∇f)", "paper", "ours", "preamble", "conditions", "forms", "result",
                          "ours − preamble − conditions: ratio"], rows))
     md.append("Every generated function's count: [OPCOUNTS.md](OPCOUNTS.md).\n")
+
+    # --- SCALIS segments ----------------------------------------------------------------------
+    if scalis:
+        md.append("## 7. SCALIS segments against adaptive quadrature\n")
+        md.append("`skelconv_bench_scalis`: `ScalisSegment::value_and_gradient` (generated inverse/Cauchy, "
+                  "`scalis_compact_F`) against 4 adaptive Gauss–Kronrod 61 integrals of the definition (compact: over "
+                  "its support, found first). near: 0.05–0.4 |AB| from the segment (mostly the recurrence forms); far: "
+                  "0.6–2 |AB| (Gauss panels). max rel. diff: largest |f_quad − f|/|f| over the points timed.\n")
+        rows = []
+        for name in sorted(n for n in scalis if n.endswith("/closed_form")):
+            base = name[: -len("closed_form")]
+            closed = ns(scalis[name])
+            row = [base.rstrip("/"), f"{closed:.0f}"]
+            for tol in ("1e-08", "1e-12"):
+                q = scalis.get(base + "quadrature/tol:" + tol)
+                row.append(f"{ns(q):.0f} ({ns(q) / closed:.0f}×, {q.get('max_rel_diff', float('nan')):.1e})" if q else "–")
+            rows.append(row)
+        md.append(table(["workload", "closed form (ns)", "quadrature 1e-8 (ns, ratio, max rel. diff)",
+                         "quadrature 1e-12 (ns, ratio, max rel. diff)"], rows))
 
     # --- goals ------------------------------------------------------------------------------
     goal_md = ["## Goals\n", "A shortfall is a finding, reported as measured.\n",
