@@ -29,6 +29,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "bench_main.hpp"
+#include "bench_support.hpp"  // bench_a, bench_b, distance_to_segment
 #include "skelconv/scalis_segment.hpp"
 
 namespace skelconv::bench {
@@ -36,19 +37,13 @@ namespace {
 
 constexpr std::size_t point_count = 1024;  // a power of two: index & (count − 1)
 
-/// The benchmark segment: a generic direction, |AB| ≈ 1.27, radius growing
+/// The benchmark segment (bench_support.hpp's, |AB| ≈ 1.27), radius growing
 /// from 0.1 to 0.3, σ = 1.5 (compact needs σ > 1).
-const Vec3 scalis_a(0.1, -0.2, 0.3), scalis_b(1.1, 0.4, -0.2);
+const Vec3 scalis_a(bench_a[0], bench_a[1], bench_a[2]), scalis_b(bench_b[0], bench_b[1], bench_b[2]);
 constexpr double scalis_tau0 = 0.1, scalis_tau1 = 0.3, scalis_sigma = 1.5;
 
 ScalisSegment make_segment(KernelFamily family, int degree) {
   return ScalisSegment(scalis_a, scalis_b, scalis_tau0, scalis_tau1, ScalisKernel{family, degree, scalis_sigma});
-}
-
-double distance_to_segment(const Vec3& p) {
-  const Vec3 ab = scalis_b - scalis_a;
-  const double t = std::clamp((p - scalis_a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (p - (scalis_a + t * ab)).norm();
 }
 
 /// 1024 points, uniform in the segment's box grown by hi |AB|, kept at
@@ -64,7 +59,7 @@ std::vector<Vec3> make_points(const ScalisSegment& segment, double lo, double hi
     if (tries > 100 * point_count) throw std::runtime_error("scalis_bench: no points in the workload");
     Vec3 p;
     for (int c = 0; c < 3; ++c) p[c] = box_lo[c] + (box_hi[c] - box_lo[c]) * unit(rng);
-    const double d = distance_to_segment(p) / length;
+    const double d = distance_to_segment(Vec{p[0], p[1], p[2]}) / length;
     if (d < lo || d > hi || !(segment.value(p) > 0)) continue;
     points.push_back(p);
   }
