@@ -42,15 +42,7 @@ std::string format(const OperationTally& t) {
 
 /// Counts one call; returns false if the counted result differs from double.
 bool count_call(int degree, const ScalisSegmentInput<double>& in, bool with_grad, OperationTally& tally) {
-  ScalisSegmentInput<CountingDouble> counted;
-  for (int c = 0; c < 3; ++c) {
-    counted.a[c] = in.a[c];
-    counted.b[c] = in.b[c];
-    counted.p[c] = in.p[c];
-  }
-  counted.tau0 = in.tau0;
-  counted.tau1 = in.tau1;
-  counted.sigma = in.sigma;
+  const ScalisSegmentInput<CountingDouble> counted = skelconv::convert_scalar<CountingDouble>(in);
   std::array<double, 3> grad{};
   std::array<CountingDouble, 3> counted_grad{};
   const double expected = skelconv::scalis_compact_F(degree, in, with_grad ? &grad : nullptr);

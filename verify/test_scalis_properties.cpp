@@ -91,16 +91,7 @@ constexpr double generic_tolerance = 1e-12;
 /// six digits to spare, at two thirds of the cost of the sweep's 1e-25.
 constexpr ReferenceTolerances reference_tolerances{1e-22, 1e-18, 15};
 
-ScalisSegmentInput<extended> widen(const ScalisSegmentInput<double>& in) {
-  ScalisSegmentInput<extended> out;
-  out.a = verify::widen(in.a);
-  out.b = verify::widen(in.b);
-  out.p = verify::widen(in.p);
-  out.tau0 = in.tau0;
-  out.tau1 = in.tau1;
-  out.sigma = in.sigma;
-  return out;
-}
+ScalisSegmentInput<extended> widen(const ScalisSegmentInput<double>& in) { return convert_scalar<extended>(in); }
 
 /// Radius profiles, cycled through by sample index.
 enum class Radii { growing, shrinking, constant, cone_at_a, cone_at_b };
@@ -496,15 +487,7 @@ TEST(ScalisCompact, LongDoubleAndBinary128) {
       const ScalisSegmentInput<extended> wide = widen(in);
       const ScalisReference ref = reference.evaluate({KernelFamily::compact, degree}, wide);
       ASSERT_FALSE(ref.flagged);
-      ScalisSegmentInput<long double> ld;
-      for (int c = 0; c < 3; ++c) {
-        ld.a[c] = in.a[c];
-        ld.b[c] = in.b[c];
-        ld.p[c] = in.p[c];
-      }
-      ld.tau0 = in.tau0;
-      ld.tau1 = in.tau1;
-      ld.sigma = in.sigma;
+      const ScalisSegmentInput<long double> ld = convert_scalar<long double>(in);
       std::array<long double, 3> g_long;
       std::array<extended, 3> g_128;
       const long double F_long = scalis_compact_F(degree, ld, &g_long);

@@ -26,4 +26,20 @@ struct ScalisSegmentInput {
   T sigma = T(1);        ///< kernel scale σ > 0 (> 1 for the compact kernel)
 };
 
+/// The same input on scalar type U, field by field (exact when U is at least
+/// as wide as T): to evaluate one point in several precisions.
+template <class U, class T>
+ScalisSegmentInput<U> convert_scalar(const ScalisSegmentInput<T>& in) {
+  ScalisSegmentInput<U> out;
+  for (int c = 0; c < 3; ++c) {
+    out.a[c] = U(in.a[c]);
+    out.b[c] = U(in.b[c]);
+    out.p[c] = U(in.p[c]);
+  }
+  out.tau0 = U(in.tau0);
+  out.tau1 = U(in.tau1);
+  out.sigma = U(in.sigma);
+  return out;
+}
+
 }  // namespace skelconv
