@@ -41,6 +41,15 @@ class Skeleton {
   Vec3 gradient(const Vec3& p) const;
   FieldSample value_and_gradient(const Vec3& p) const;
 
+  /// Points on the skeleton itself: for every primitive its defining points
+  /// (ends, vertices) and `per_element` − 1 evenly spaced points between
+  /// them (along each segment and polygon edge, and a fan of points inside
+  /// each polygon and triangle towards its centroid), so that every
+  /// connected piece of the skeleton holds some of them. The mesher
+  /// (skelconv mesh) shoots rays from them to find every component of the
+  /// surface. `per_element` ≥ 1.
+  std::vector<Vec3> skeleton_points(int per_element = 4) const;
+
  private:
   std::vector<Primitive> primitives_;
 };
