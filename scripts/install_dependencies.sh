@@ -10,6 +10,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libbenchmark-dev libcgal-dev
   valgrind                # bench/: instruction counts
+  python3-matplotlib python3-numpy  # papers_figures/: 2-D figures (Agg backend) and their claim checks
+  povray                  # papers_figures/render3d: headless shaded renders of meshes
 )
 
 missing=()

@@ -1,0 +1,80 @@
+"""Hubert 2012, Figure 4: curves around a polyline of segments for p², p³,
+p⁴; sharpness at the angles increases with i. Sharpness is measured as the
+curvature of the curve at the apex of the convex side of each angle, times
+the thickness τ (a round corner of radius τ gives 1)."""
+import numpy as np
+
+from figlib import plot
+from figlib.claims import Claim, fmt
+from figlib.figure import Figure, load_skeleton
+from figlib.levelset import crossing, curvature_2d
+
+TAU = 0.35                 # thickness at the middle of the middle segment
+DEGREES = (2, 3, 4)
+SKELETON = "polyline_zigzag.json"
+
+FIGURE = Figure(
+    paper="Hubert 2012", kind="Figure", number="4",
+    caption="Convolution curves for a set of segments with power inverse kernel p², p³, p⁴. "
+            "Sharpness increases from left to right.",
+    skeletons=[SKELETON], kernel="p², p³, p⁴ (each segment weight 1, fields summed)",
+    iso="for each kernel the level of thickness τ = 0.35 at the middle of the middle segment",
+    view="plane z = 0", size=(640, 230))
+
+
+def with_degree(degree):
+    prims = load_skeleton(SKELETON)["primitives"]
+    for p in prims:
+        p["kernel"]["degree"] = degree
+    return prims
+
+
+def vertices():
+    prims = load_skeleton(SKELETON)["primitives"]
+    return [np.array(prims[0]["a"], float)] + [np.array(p["b"], float) for p in prims]
+
+
+def apex_directions(points):
+    """For each inner vertex, the unit vector pointing out of the convex side."""
+    out = []
+    for prev, v, nxt in zip(points[:-2], points[1:-1], points[2:]):
+        u1 = (prev - v) / np.linalg.norm(prev - v)
+        u2 = (nxt - v) / np.linalg.norm(nxt - v)
+        bisector = -(u1 + u2)
+        out.append((v, bisector / np.linalg.norm(bisector)))
+    return out
+
+
+def draw(ctx):
+    points = vertices()
+    mid_a, mid_b = points[1], points[2]
+    middle = 0.5 * (mid_a + mid_b)
+    tangent = (mid_b - mid_a) / np.linalg.norm(mid_b - mid_a)
+    normal = np.array([-tangent[1], tangent[0], 0.0])
+    xs = np.linspace(-3.2, 3.2, ctx.res(480, 120))
+    ys = np.linspace(-1.8, 1.8, ctx.res(270, 70))
+    fig, axes = plot.new_figure(FIGURE.size, 1, 3, constrained_layout=True, sharey=True)
+    sharpness = {}
+    for ax, degree in zip(axes, DEGREES):
+        field = ctx.field_of(with_degree(degree))
+        level = field.f([middle + TAU * normal])[0]
+        plot.contour_segments(ax, xs, ys, field.on_grid(xs, ys), level, colors=["tab:blue"])
+        for a, b in zip(points[:-1], points[1:]):
+            plot.draw_segment(ax, a, b, lw=1.5)
+        values = []
+        for v, d in apex_directions(points):
+            t = crossing(field, [v], [d], level, 1e-9, 3.0)[0]
+            values.append(curvature_2d(field, v + t * d) * TAU)
+        sharpness[degree] = values
+        ax.set_title(f"$p^{degree}$, κ = {level:.4g}")
+        ax.set_aspect("equal")
+        ax.set_xlabel("x")
+    axes[0].set_ylabel("y")
+    plot.save(fig, ctx.image_path, FIGURE.size)
+
+    increasing = all(sharpness[2][k] < sharpness[3][k] < sharpness[4][k] for k in range(len(sharpness[2])))
+    return [Claim(
+        "sharpness at the angles increases with i (p² < p³ < p⁴)",
+        "curvature × τ at the convex apex of the two angles: " +
+        "; ".join(f"p^{d}: " + ", ".join(fmt(v) for v in sharpness[d]) for d in DEGREES),
+        increasing)]

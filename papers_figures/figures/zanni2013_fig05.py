@@ -1,0 +1,72 @@
+"""Zanni et al. 2013, Figure 5: radius decreasing linearly to 0 at the end of
+the skeleton: classical (a) gives an unwanted rounded end, SCALIS (b) a cone.
+Drawn as the section through the axis, with the ideal cone dashed."""
+import numpy as np
+
+from figlib import plot
+from figlib.claims import Claim, fmt
+from figlib.figure import Figure
+from figlib.levelset import crossing
+from figlib.zanni import classical_cauchy_line, classical_segment, scalis_segment
+
+DEGREE = 4
+SIGMA = 1.0
+LENGTH = 4.0
+TAU0 = 1.0
+ISO_CLASSICAL = classical_cauchy_line(TAU0, TAU0, DEGREE, SIGMA)   # radius τ0 on a line of weight τ0
+A, B = (0.0, 0.0, 0.0), (LENGTH, 0.0, 0.0)
+
+FIGURE = Figure(
+    paper="Zanni et al. 2013", kind="Figure", number="5",
+    caption="Different shapes generated when the weight decreases linearly to 0 at the end of the skeleton: "
+            "classical formulation (a), homothetic (b). Note the unwanted rounded ends in (a).",
+    original_caption="Différentes formes générées lorsque le poids décroît linéairement jusqu'à 0 au bout du "
+                     "squelette : formulation classique (a), homothétique (b). Remarquez les extrémités arrondies "
+                     "non voulues en (a).",
+    section="the section z = 0 through the axis (the surfaces are of revolution)",
+    kernel="Cauchy 4, σ = 1; classical: weight τ(t) = 1 − t; SCALIS: radius [1, 0]",
+    iso=f"classical {ISO_CLASSICAL:.6g} (radius 1 on a line of weight 1); SCALIS 1",
+    view="plane z = 0, segment from (0,0,0) to (4,0,0)", size=(640, 260))
+
+
+def profile(field, level, xs):
+    origins = np.stack([xs, np.zeros_like(xs), np.zeros_like(xs)], axis=1)
+    return crossing(field, origins, [0, 1.0, 0], level, 1e-12, 5.0)
+
+
+def draw(ctx):
+    fields = {"classical": (ctx.field_of([classical_segment(A, B, TAU0, 0.0, "cauchy", DEGREE, SIGMA)]), ISO_CLASSICAL),
+              "scalis": (ctx.field_of([scalis_segment(A, B, TAU0, 0.0, "cauchy", DEGREE, SIGMA)]), 1.0)}
+    xs = np.linspace(-1.6, 4.8, ctx.res(400, 100))
+    ys = np.linspace(-1.6, 1.6, ctx.res(200, 50))
+    fig, axes = plot.new_figure(FIGURE.size, 1, 2, constrained_layout=True, sharey=True)
+    cone_x = np.array([0, LENGTH])
+    measured = {}
+    for ax, (kind, (field, level)), colour, title in zip(
+            axes, fields.items(), (plot.CLASSICAL, plot.SCALIS), ("(a) classical", "(b) SCALIS")):
+        grid = field.on_grid(xs, ys)
+        grid[~np.isfinite(grid)] = 1e300
+        plot.contour_segments(ax, xs, ys, grid, level, colors=[colour])
+        ax.plot(cone_x, TAU0 * (1 - cone_x / LENGTH), "k--", lw=0.8, label="radius τ(t)")
+        ax.plot(cone_x, -TAU0 * (1 - cone_x / LENGTH), "k--", lw=0.8)
+        plot.draw_segment(ax, A, B, lw=1.2)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x")
+        ax.set_title(f"{title}, iso {level:.4g}")
+        ax.legend(loc="upper right", fontsize=7)
+        middle = np.linspace(0.2 * LENGTH, 0.8 * LENGTH, ctx.res(25, 7))
+        r = profile(field, level, middle)
+        tip = crossing(field, [[0.5 * LENGTH, 0, 0]], [1.0, 0, 0], level, 0.0, 10.0)[0]
+        measured[kind] = dict(dev=float(np.max(np.abs(r - TAU0 * (1 - middle / LENGTH)))), tip=float(0.5 * LENGTH + tip))
+    axes[0].set_ylabel("y")
+    plot.save(fig, ctx.image_path, FIGURE.size)
+    c, s = measured["classical"], measured["scalis"]
+    return [
+        Claim("classical: the end is rounded and the radius does not follow τ",
+              f"max |r − τ| on the middle 60 %: {fmt(c['dev'])}; the shape ends on the axis at x = {fmt(c['tip'], 5)} "
+              f"(the skeleton ends at {LENGTH:g})",
+              c["dev"] > 0.05 and c["tip"] < LENGTH - 0.1),
+        Claim("SCALIS: a cone, the radius follows τ, the tip at the end of the skeleton",
+              f"max |r − τ| on the middle 60 %: {fmt(s['dev'])}; the shape ends on the axis at x = {fmt(s['tip'], 8)}",
+              s["dev"] < 0.5 * c["dev"] and abs(s["tip"] - LENGTH) < 1e-2),
+    ]

@@ -1,0 +1,113 @@
+"""Renders a triangle mesh with POV-Ray, headless: the mesh as a `mesh2` with
+its per-vertex normals, one fixed camera direction, light and colour for
+every figure (the camera is framed on the mesh's bounding sphere), PNG
+without metadata (same mesh, same bytes).
+
+skelconv's frame is right-handed with z up; POV-Ray's is left-handed with y
+up. Swapping y and z maps one to the other (a reflection, so the picture is
+not mirrored)."""
+import os
+import subprocess
+import tempfile
+
+import numpy as np
+
+# The view: from the front-right, above (skelconv coordinates, z up).
+VIEW_DIRECTION = np.array([1.0, -1.6, 0.9])
+CAMERA_ANGLE = 30.0                   # horizontal field of view, degrees
+FRAME_MARGIN = 1.08                   # the bounding sphere fills 1/1.08 of the narrower side
+SURFACE = "rgb <0.86, 0.55, 0.36>"    # one colour for every surface
+ANTIALIAS = "+A0.1 +AM2 +R3 -J"       # adaptive supersampling, no jitter: deterministic
+
+SCENE = """#version 3.7;
+global_settings {{ assumed_gamma 1.0 }}
+background {{ rgb <1, 1, 1> }}
+camera {{ perspective location {camera} look_at {centre} right x*{aspect} angle {angle} }}
+light_source {{ {key} color rgb <1, 1, 1> }}
+light_source {{ {fill} color rgb <0.35, 0.35, 0.4> shadowless }}
+#declare Surface = texture {{ pigment {{ {surface} }}
+  finish {{ ambient 0.12 diffuse 0.75 specular 0.3 roughness 0.02 }} }}
+{mesh}
+"""
+
+
+def _pov(v):
+    """skelconv (x, y, z) → POV-Ray <x, z, y>."""
+    return f"<{v[0]:.9g}, {v[2]:.9g}, {v[1]:.9g}>"
+
+
+def mesh2(vertices, normals, faces):
+    """The mesh as POV-Ray mesh2 text (normals estimated from the faces when absent)."""
+    if normals is None:
+        normals = np.zeros_like(vertices)
+        tri = vertices[faces]
+        face_normals = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+        for k in range(3):
+            np.add.at(normals, faces[:, k], face_normals)
+        normals /= np.maximum(np.linalg.norm(normals, axis=1), 1e-300)[:, None]
+    parts = ["mesh2 {", f"vertex_vectors {{ {len(vertices)},"]
+    parts.append(",\n".join(_pov(v) for v in vertices) + " }")
+    parts.append(f"normal_vectors {{ {len(normals)},")
+    parts.append(",\n".join(_pov(n) for n in normals) + " }")
+    parts.append(f"face_indices {{ {len(faces)},")
+    parts.append(",\n".join(f"<{a}, {b}, {c}>" for a, b, c in faces) + " }")
+    parts.append("texture { Surface } }")
+    return "\n".join(parts)
+
+
+def scene(vertices, normals, faces, width, height):
+    low, high = vertices.min(axis=0), vertices.max(axis=0)
+    centre = 0.5 * (low + high)
+    radius = 0.5 * np.linalg.norm(high - low)
+    half_angle = np.radians(CAMERA_ANGLE) / 2
+    # the narrower field of view decides the distance
+    narrow = min(half_angle, np.arctan(np.tan(half_angle) * height / width))
+    distance = FRAME_MARGIN * radius / np.sin(narrow)
+    direction = VIEW_DIRECTION / np.linalg.norm(VIEW_DIRECTION)
+    camera = centre + distance * direction
+    key = centre + 3 * distance * np.array([0.3, -1.0, 1.6]) / np.linalg.norm([0.3, -1.0, 1.6])
+    fill = centre + 3 * distance * np.array([-1.0, -0.3, 0.2]) / np.linalg.norm([-1.0, -0.3, 0.2])
+    return SCENE.format(camera=_pov(camera), centre=_pov(centre), aspect=f"{width / height:.9g}",
+                        angle=f"{CAMERA_ANGLE:g}", key=_pov(key), fill=_pov(fill), surface=SURFACE,
+                        mesh=mesh2(vertices, normals, faces))
+
+
+def strip_png_metadata(path):
+    """Rewrites the PNG keeping only the chunks that carry pixels (IHDR, PLTE,
+    tRNS, gAMA, sRGB, IDAT, IEND): no text, no time."""
+    keep = {b"IHDR", b"PLTE", b"tRNS", b"gAMA", b"sRGB", b"IDAT", b"IEND"}
+    with open(path, "rb") as handle:
+        data = handle.read()
+    out, pos = [data[:8]], 8
+    while pos < len(data):
+        length = int.from_bytes(data[pos:pos + 4], "big")
+        kind = data[pos + 4:pos + 8]
+        chunk = data[pos:pos + 12 + length]
+        if kind in keep:
+            out.append(chunk)
+        pos += 12 + length
+    with open(path, "wb") as handle:
+        handle.write(b"".join(out))
+
+
+def render(vertices, normals, faces, png_path, width=640, height=480, povray="povray"):
+    """Renders the mesh to png_path. Raises RuntimeError with POV-Ray's message on failure."""
+    with tempfile.TemporaryDirectory() as tmp:
+        pov = os.path.join(tmp, "scene.pov")
+        with open(pov, "w") as handle:
+            handle.write(scene(vertices, normals, faces, width, height))
+        out = os.path.join(tmp, "out.png")
+        command = [povray, f"+I{pov}", f"+O{out}", f"+W{width}", f"+H{height}", "+FN8", "-D", "-V", "-GA",
+                   "+WT2"] + ANTIALIAS.split()
+        run = subprocess.run(command, capture_output=True, text=True, cwd=tmp)
+        if run.returncode != 0 or not os.path.exists(out):
+            raise RuntimeError(f"povray failed ({run.returncode}): {run.stderr.strip()[-2000:]}")
+        strip_png_metadata(out)
+        _copy(out, png_path)
+
+
+def _copy(src, dst):
+    tmp = dst + ".tmp"
+    with open(src, "rb") as a, open(tmp, "wb") as b:
+        b.write(a.read())
+    os.replace(tmp, dst)

@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""ctest smoke renders (papers_figures/CMakeLists.txt):
+
+  smoke_test.py 2d --skelconv BIN --out DIR   draws one 2-D figure twice (quick
+      resolution, image on): the PNG is 640 px wide, not blank, and the two runs
+      give the same bytes;
+  smoke_test.py 3d --sphere BIN --out DIR     writes a UV sphere with
+      skelconv::write_mesh as binary and as ASCII PLY, renders both with POV-Ray:
+      the same pixels from both files, twice the same bytes, the sphere drawn
+      (centre coloured, corners background)."""
+import argparse
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "render3d"))
+
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+FIGURE_2D = "hubert2012_fig03"
+SIZE_3D = (160, 120)
+
+
+def fail(message):
+    print(f"smoke_test: FAIL: {message}", file=sys.stderr)
+    sys.exit(1)
+
+
+def read(path):
+    with open(path, "rb") as handle:
+        return handle.read()
+
+
+def smoke_2d(args):
+    images = []
+    for run in ("a", "b"):
+        out = os.path.join(args.out, run)
+        subprocess.run([sys.executable, os.path.join(HERE, "run.py"), "--skelconv", args.skelconv, "--out", out,
+                        "--only", FIGURE_2D, "--quick"], check=True)
+        images.append(os.path.join(out, f"{FIGURE_2D}.png"))
+    pixels = plt.imread(images[0])
+    if pixels.shape[1] != 640:
+        fail(f"{images[0]} is {pixels.shape[1]} px wide, not 640")
+    if pixels[..., :3].std() < 0.05:
+        fail(f"{images[0]} looks blank")
+    if read(images[0]) != read(images[1]):
+        fail("two runs gave different PNG bytes")
+    print(f"smoke_test 2d: {FIGURE_2D} ok, {pixels.shape[1]}×{pixels.shape[0]}, deterministic")
+
+
+def smoke_3d(args):
+    from ply import read_ply
+    from povray import render
+    os.makedirs(args.out, exist_ok=True)
+    pngs = []
+    for encoding in ("binary", "ascii"):
+        mesh = os.path.join(args.out, f"sphere_{encoding}.ply")
+        subprocess.run([args.sphere, mesh, "--rings", "16"] + (["--ascii"] if encoding == "ascii" else []), check=True)
+        vertices, normals, faces = read_ply(mesh)
+        if normals is None or len(faces) == 0:
+            fail(f"{mesh}: no normals or no faces read")
+        for run in ("a", "b") if encoding == "binary" else ("a",):
+            png = os.path.join(args.out, f"sphere_{encoding}_{run}.png")
+            render(vertices, normals, faces, png, *SIZE_3D)
+            pngs.append(png)
+    if read(pngs[0]) != read(pngs[1]):
+        fail("two renders of the same mesh gave different bytes")
+    if read(pngs[0]) != read(pngs[2]):
+        fail("the binary and the ASCII PLY of the same mesh rendered differently")
+    pixels = plt.imread(pngs[0])[..., :3]
+    h, w = pixels.shape[:2]
+    centre, corner = pixels[h // 2, w // 2], pixels[0, 0]
+    if corner.min() < 0.99:
+        fail(f"corner pixel {corner} is not the white background")
+    if abs(float(centre[0]) - float(centre[2])) < 0.1:
+        fail(f"centre pixel {centre} is not the surface colour")
+    print(f"smoke_test 3d: sphere rendered {w}×{h}, binary = ASCII, deterministic")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("which", choices=("2d", "3d"))
+    parser.add_argument("--skelconv")
+    parser.add_argument("--sphere")
+    parser.add_argument("--out", required=True)
+    args = parser.parse_args()
+    (smoke_2d if args.which == "2d" else smoke_3d)(args)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

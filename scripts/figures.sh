@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Regenerates the papers' figures and tables (papers_figures/, docs/figures.md):
+# installs what is missing, builds the skelconv command, draws every registered
+# figure into a results folder, checks each claim and writes
+# papers_figures/GALLERY.md with the PNGs in papers_figures/images/.
+#
+#   scripts/figures.sh                   everything (full resolution) + gallery
+#   scripts/figures.sh --only NAME...    some figures, into the results folder only
+#   scripts/figures.sh --out DIR         results folder (default build/figures)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=build/figures
+only=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --out) out="$2"; shift 2 ;;
+    --only) shift; while [ $# -gt 0 ] && [ "${1#--}" = "$1" ]; do only+=("$1"); shift; done ;;
+    *) echo "figures.sh: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+scripts/install_dependencies.sh
+echo "figures.sh: building skelconv"
+scripts/build.sh --target skelconv > /dev/null
+args=(--skelconv build/release/src/skelconv --out "$out" --check)
+if [ ${#only[@]} -gt 0 ]; then
+  args+=(--only "${only[@]}")
+else
+  args+=(--gallery papers_figures/GALLERY.md)
+fi
+# Debian's python3 (python3-matplotlib), not whatever python3 comes first on PATH.
+/usr/bin/python3 papers_figures/run.py "${args[@]}"
