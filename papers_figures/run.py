@@ -14,6 +14,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 from figlib import gallery  # noqa: E402
+from figlib.field import Field  # noqa: E402
 from figlib.figure import Context  # noqa: E402
 
 
@@ -49,8 +50,10 @@ def run_one(name, args):
     ctx = Context(skelconv=args.skelconv, quick=args.quick, image_path=image,
                   log=lambda msg: print(f"  [{name}] {msg}", flush=True))
     start = time.monotonic()
+    calls, points = Field.calls, Field.points
     claims = module.draw(ctx)
     elapsed = time.monotonic() - start
+    print(f"  [{name}] {Field.calls - calls} skelconv eval runs, {Field.points - points} points", flush=True)
     for c in claims:
         mark = "ok " if c.as_expected else "FAIL"
         print(f"  [{name}] {mark} {'agrees' if c.agrees else 'disagrees'}: {c.statement} -- {c.measured}",

@@ -17,6 +17,9 @@ class Claim:
     expect_agreement: bool = True
     note: str = ""          # e.g. the misprint or why we disagree
 
+    def __post_init__(self):
+        self.agrees = bool(self.agrees)   # numpy booleans are not JSON
+
     @property
     def as_expected(self):
         return self.agrees == self.expect_agreement

@@ -19,6 +19,10 @@ class EvalError(RuntimeError):
 
 
 class Field:
+    # Counters over every Field (run.py prints them per figure): eval calls, points.
+    calls = 0
+    points = 0
+
     def __init__(self, skelconv, skeleton):
         self.skelconv = skelconv
         self.skeleton = skeleton
@@ -37,6 +41,8 @@ class Field:
         points = np.ascontiguousarray(np.asarray(points, dtype=float).reshape(-1, 3))
         if len(points) == 0:
             return np.zeros(0), np.zeros((0, 3))
+        Field.calls += 1
+        Field.points += len(points)
         buffer = io.BytesIO()
         np.savetxt(buffer, points, fmt="%.17g")
         with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as handle:

@@ -2,34 +2,89 @@
 level curve, and the distance between two curves."""
 import numpy as np
 
-# Bisection halves the bracket each round: 60 rounds take any bracket of
-# size ≤ 1e3 below 1e-15 (relative to its size, below double rounding).
-BISECTION_ROUNDS = 60
+# Root finding along rays, in three steps that each cost one `skelconv eval`
+# per round for all rays together:
+#   1. a scan of SCAN_POINTS samples per ray keeps the first sign change from
+#      the inside (the surface nearest the ray's origin);
+#   2. regula falsi (Illinois variant) on g = ln(f / level), which is nearly
+#      linear for the power-law and Cauchy fields (few rounds);
+#   3. a bisection step whenever two rounds have not halved the bracket, so a
+#      flat or non-smooth crossing (the edge of a compact support) still
+#      converges at least like bisection.
+# A ray is done when its bracket, or its last step, is below X_TOL·(1 + |t|)
+# (regula falsi may keep one end of the bracket while the iterates converge);
+# the loop stops when every ray is done, or after MAX_ROUNDS.
+SCAN_POINTS = 16
+X_TOL = 1e-15
+MAX_ROUNDS = 200
+LOG_CLIP = 745.0        # |ln| of the smallest/largest doubles: f = 0 and f = ∞ map to ∓LOG_CLIP
 
 
-def crossing(field, origins, directions, level, t_inside, t_outside, rounds=BISECTION_ROUNDS):
-    """For each ray origin + t·direction, the t in [t_inside, t_outside] where
-    f crosses `level`, by bisection (one `skelconv eval` per round for all rays).
+def _log_ratio(f, level):
+    with np.errstate(divide="ignore", invalid="ignore"):
+        g = np.log(np.where(f > 0, f, 0.0) / level)
+    return np.clip(np.nan_to_num(g, nan=-LOG_CLIP, neginf=-LOG_CLIP, posinf=LOG_CLIP), -LOG_CLIP, LOG_CLIP)
+
+
+def crossing(field, origins, directions, level, t_inside, t_outside, x_tol=X_TOL):
+    """For each ray origin + t·direction, the first t from t_inside towards
+    t_outside where f drops below `level` (level > 0).
 
     f(t_inside) ≥ level > f(t_outside) is required for every ray; a ray that
     does not bracket the level gets NaN (the caller decides what that means:
-    e.g. no surface there)."""
+    e.g. no surface there). x_tol: the relative accuracy wanted in t."""
     origins = np.atleast_2d(np.asarray(origins, float))
     directions = np.atleast_2d(np.asarray(directions, float))
     n = max(len(origins), len(directions))
     origins = np.broadcast_to(origins, (n, 3))
     directions = np.broadcast_to(directions, (n, 3))
-    lo = np.broadcast_to(np.asarray(t_inside, float), (n,)).copy()
-    hi = np.broadcast_to(np.asarray(t_outside, float), (n,)).copy()
-    f_lo = field.f(origins + lo[:, None] * directions)
-    f_hi = field.f(origins + hi[:, None] * directions)
-    bracketed = (f_lo >= level) & (f_hi < level)
-    for _ in range(rounds):
-        mid = 0.5 * (lo + hi)
-        inside = field.f(origins + mid[:, None] * directions) >= level
-        lo = np.where(inside, mid, lo)
-        hi = np.where(inside, hi, mid)
-    return np.where(bracketed, 0.5 * (lo + hi), np.nan)
+
+    def g(t):
+        return _log_ratio(field.f(origins + t[:, None] * directions), level)
+
+    start = np.broadcast_to(np.asarray(t_inside, float), (n,))
+    stop = np.broadcast_to(np.asarray(t_outside, float), (n,))
+    # 1. scan: samples s_0 = start … s_K = stop on every ray, in one evaluation
+    fractions = np.linspace(0.0, 1.0, SCAN_POINTS + 1)
+    samples = start[:, None] + fractions[None, :] * (stop - start)[:, None]
+    values = _log_ratio(field.f((origins[:, None, :] + samples[:, :, None] * directions[:, None, :]).reshape(-1, 3)),
+                        level).reshape(n, -1)
+    bracketed = (values[:, 0] >= 0) & (values[:, -1] < 0)
+    first_out = np.argmax(values < 0, axis=1)
+    first_out = np.where(bracketed, first_out, 1)
+    rows = np.arange(n)
+    lo, hi = samples[rows, first_out - 1], samples[rows, first_out]
+    g_lo, g_hi = values[rows, first_out - 1], values[rows, first_out]
+    widths = [np.abs(hi - lo)] * 2
+    last = np.zeros(n, dtype=int)       # which end moved last: 1 inside, −1 outside
+    best = np.full(n, np.inf)           # the last iterate
+    step = np.full(n, np.inf)           # how far it moved
+    for _ in range(MAX_ROUNDS):
+        width = np.abs(hi - lo)
+        tol = x_tol * (1 + np.abs(lo))
+        done = ~bracketed | (width <= tol) | (step <= tol)
+        if np.all(done):
+            break
+        with np.errstate(divide="ignore", invalid="ignore"):
+            secant = hi - g_hi * (hi - lo) / (g_hi - g_lo)
+        bisect = (width > 0.5 * widths[-2]) | ~np.isfinite(secant)
+        t = np.where(bisect, 0.5 * (lo + hi), secant)
+        t = np.clip(t, np.minimum(lo, hi), np.maximum(lo, hi))
+        g_t = g(t)
+        step = np.where(done, 0.0, np.abs(t - best))
+        best = np.where(done, best, t)
+        inside = g_t >= 0
+        # Illinois: when the same end moves twice in a row, halve the value kept at the other
+        g_hi = np.where(inside & (last == 1), 0.5 * g_hi, g_hi)
+        g_lo = np.where(~inside & (last == -1), 0.5 * g_lo, g_lo)
+        g_lo = np.where(inside, g_t, g_lo)
+        g_hi = np.where(inside, g_hi, g_t)
+        lo = np.where(inside, t, lo)
+        hi = np.where(inside, hi, t)
+        last = np.where(inside, 1, -1)
+        widths.append(width)
+    best = np.where(np.abs(hi - lo) <= x_tol * (1 + np.abs(lo)), 0.5 * (lo + hi), best)
+    return np.where(bracketed, best, np.nan)
 
 
 def curvature_2d(field, point, step=1e-4):

@@ -2,6 +2,7 @@
 one colour cycle, 100 dpi (so the pixel size is the Figure.size), and PNGs
 without timestamps or software tags (same input, same bytes)."""
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -52,5 +53,8 @@ def draw_segment(ax, a, b, **kwargs):
 
 def contour_segments(ax, xs, ys, values, level, **kwargs):
     """Draws the level set {values = level} and returns its polylines (list of N×2 arrays)."""
+    finite = values[np.isfinite(values)]
+    if finite.size == 0 or not finite.min() < level < finite.max():
+        return []                       # the level set is empty in this window
     cs = ax.contour(xs, ys, values, levels=[level], **kwargs)
     return [seg for seg in cs.allsegs[0] if len(seg) > 1]

@@ -83,5 +83,5 @@ def draw(ctx):
               worst < 1e-12),
         Claim("for power inverse kernels the farthest point is a strict maximum (no flat part) (§3)",
               f"τ − y at x = ±{fmt(flat_end)}: " + ", ".join(f"i = {i}: {fmt(v)}" for i, v in inverse_drop.items()),
-              min(inverse_drop.values()) > 1e-3),
+              min(inverse_drop.values()) > 1e-9),
     ]

@@ -1,7 +1,12 @@
 """Hubert 2012, Figure 4: curves around a polyline of segments for p², p³,
-p⁴; sharpness at the angles increases with i. Sharpness is measured as the
-curvature of the curve at the apex of the convex side of each angle, times
-the thickness τ (a round corner of radius τ gives 1)."""
+p⁴; sharpness at the angles increases with i. Measured at each angle, with
+the level of thickness τ along the middle segment, against the exact offset
+curve at distance τ (sharp in the concave side of the angle, a circular arc of
+radius τ around the vertex on the convex side):
+- concave side: the curvature of the curve on the angle's bisector, × τ
+  (the offset curve has a corner there: −∞);
+- convex side: the distance from the vertex to the curve on the bisector, ÷ τ
+  (1 for the offset curve)."""
 import numpy as np
 
 from figlib import plot
@@ -63,8 +68,9 @@ def draw(ctx):
             plot.draw_segment(ax, a, b, lw=1.5)
         values = []
         for v, d in apex_directions(points):
-            t = crossing(field, [v], [d], level, 1e-9, 3.0)[0]
-            values.append(curvature_2d(field, v + t * d) * TAU)
+            t_in = crossing(field, [v], [-d], level, 1e-9, 3.0)[0]
+            t_out = crossing(field, [v], [d], level, 1e-9, 3.0)[0]
+            values.append((-curvature_2d(field, v - t_in * d) * TAU, t_out / TAU))
         sharpness[degree] = values
         ax.set_title(f"$p^{degree}$, κ = {level:.4g}")
         ax.set_aspect("equal")
@@ -72,9 +78,16 @@ def draw(ctx):
     axes[0].set_ylabel("y")
     plot.save(fig, ctx.image_path, FIGURE.size)
 
-    increasing = all(sharpness[2][k] < sharpness[3][k] < sharpness[4][k] for k in range(len(sharpness[2])))
-    return [Claim(
-        "sharpness at the angles increases with i (p² < p³ < p⁴)",
-        "curvature × τ at the convex apex of the two angles: " +
-        "; ".join(f"p^{d}: " + ", ".join(fmt(v) for v in sharpness[d]) for d in DEGREES),
-        increasing)]
+    concave = {d: [c for c, _ in sharpness[d]] for d in DEGREES}
+    convex = {d: [r for _, r in sharpness[d]] for d in DEGREES}
+    angles = range(len(concave[2]))
+    return [
+        Claim("sharpness at the angles increases with i (p² < p³ < p⁴): the concave corner",
+              "curvature × τ on the bisector inside each of the two angles: " +
+              "; ".join(f"p^{d}: " + ", ".join(fmt(v) for v in concave[d]) for d in DEGREES),
+              all(concave[2][k] > concave[3][k] > concave[4][k] for k in angles)),
+        Claim("… and the convex corner (closer to the offset curve's arc of radius τ)",
+              "distance from the vertex to the curve on the outer bisector ÷ τ: " +
+              "; ".join(f"p^{d}: " + ", ".join(fmt(v) for v in convex[d]) for d in DEGREES),
+              all(convex[2][k] < convex[3][k] < convex[4][k] < 1 for k in angles)),
+    ]

@@ -50,7 +50,7 @@ def draw(ctx):
         axes[1].plot(d, weight.f(points) / SHORT, label=f"τ = {tau}")
         axes[0].plot(d, tau * h * support.f(points) / SHORT, label=f"τ = {tau}")   # iso = 1: f = F/h
         for key, field in (("eq10", weight), ("eq9", support)):
-            supports[key].append(crossing(field, [[0, 0, 0]], [0, 1.0, 0], TINY, 0.0, 10.0)[0])
+            supports[key].append(crossing(field, [[0, 0, 0]], [0, 1.0, 0], TINY, 0.0, 10.0, x_tol=1e-10)[0])
     axes[0].set_title("eq. (9): K(d/τ), the support scales")
     axes[1].set_title("eq. (10): τ K(d), the weight scales")
     for ax in axes:

@@ -55,7 +55,7 @@ def draw(ctx):
         ax.set_title(f"{title}, iso {level:.4g}")
         ax.legend(loc="upper right", fontsize=7)
         middle = np.linspace(0.2 * LENGTH, 0.8 * LENGTH, ctx.res(25, 7))
-        r = profile(field, level, middle)
+        r = np.nan_to_num(profile(field, level, middle), nan=0.0)   # no surface there: radius 0
         tip = crossing(field, [[0.5 * LENGTH, 0, 0]], [1.0, 0, 0], level, 0.0, 10.0)[0]
         measured[kind] = dict(dev=float(np.max(np.abs(r - TAU0 * (1 - middle / LENGTH)))), tip=float(0.5 * LENGTH + tip))
     axes[0].set_ylabel("y")
