@@ -28,7 +28,7 @@ def _log_ratio(f, level):
 
 def crossing(field, origins, directions, level, t_inside, t_outside, x_tol=X_TOL):
     """For each ray origin + t·direction, the first t from t_inside towards
-    t_outside where f drops below `level` (level > 0).
+    t_outside where f drops below `level` (> 0; one for all rays, or one per ray).
 
     f(t_inside) ≥ level > f(t_outside) is required for every ray; a ray that
     does not bracket the level gets NaN (the caller decides what that means:
@@ -39,6 +39,8 @@ def crossing(field, origins, directions, level, t_inside, t_outside, x_tol=X_TOL
     origins = np.broadcast_to(origins, (n, 3))
     directions = np.broadcast_to(directions, (n, 3))
 
+    level = np.broadcast_to(np.asarray(level, float), (n,))     # one level per ray, or one for all
+
     def g(t):
         return _log_ratio(field.f(origins + t[:, None] * directions), level)
 
@@ -47,8 +49,8 @@ def crossing(field, origins, directions, level, t_inside, t_outside, x_tol=X_TOL
     # 1. scan: samples s_0 = start … s_K = stop on every ray, in one evaluation
     fractions = np.linspace(0.0, 1.0, SCAN_POINTS + 1)
     samples = start[:, None] + fractions[None, :] * (stop - start)[:, None]
-    values = _log_ratio(field.f((origins[:, None, :] + samples[:, :, None] * directions[:, None, :]).reshape(-1, 3)),
-                        level).reshape(n, -1)
+    values = _log_ratio(field.f((origins[:, None, :] + samples[:, :, None] * directions[:, None, :]).reshape(-1, 3))
+                        .reshape(n, -1), level[:, None])
     bracketed = (values[:, 0] >= 0) & (values[:, -1] < 0)
     first_out = np.argmax(values < 0, axis=1)
     first_out = np.where(bracketed, first_out, 1)

@@ -21,7 +21,7 @@ FIGURE = Figure(
     iso="the levels κ(τ) = l J_i(...) of thickness τ = 0.25, 0.5, 1 at the bisector "
         "(Hubert & Cani Prop. 4.1); for Cauchy also a level between f(A) and f(middle), "
         "whose level set crosses the segment",
-    size=(640, 280))
+    size=(640, 290))
 
 
 def profile_heights(field, level, xs, y_max):
@@ -45,7 +45,7 @@ def panel(ctx, ax, field, K, title, extra_level=None):
     ax.set_aspect("equal")
     ax.set_title(title)
     ax.set_xlabel("x")
-    ax.legend(loc="lower center", ncol=2, fontsize=7)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=7)
     ax.set_ylim(-1.8, 1.8)
     return levels
 

@@ -25,7 +25,7 @@ FIGURE = Figure(
     kernel="p^i, i = 2, 3, 4, 6, 8; k_R^i with R = 1, i = 3, 4, 6, 8",
     iso="for each i the level of thickness τ = 0.5 at the bisector (quadrature of the definition)",
     view="plane z = 0, upper half (the curves are symmetric), segment of length 3",
-    size=(640, 300))
+    size=(640, 290))
 
 
 def segment(family, degree):
@@ -36,42 +36,46 @@ def segment(family, degree):
 
 
 def heights(field, level, xs):
+    """y where the curve crosses the vertical line x (the upper half)."""
     origins = np.stack([xs, np.zeros_like(xs), np.zeros_like(xs)], axis=1)
     return crossing(field, origins, [0.0, 1.0, 0.0], level, 1e-9, 3.0)
 
 
 def draw(ctx):
-    fig, axes = plot.new_figure(FIGURE.size, 1, 2, constrained_layout=True, sharey=True)
-    xs = np.linspace(-2.6, 2.6, ctx.res(300, 60))
+    fig, axes = plot.new_figure(FIGURE.size, 2, 1, constrained_layout=True, sharex=True)
+    xs = np.linspace(-2.7, 2.7, ctx.res(540, 110))
+    ys = np.linspace(0.0, 1.1, ctx.res(110, 30))
     flat_end = LENGTH / 2 - np.sqrt(R * R - TAU * TAU)   # the curve is flat for |x| ≤ flat_end
     flat_xs = np.linspace(-flat_end, flat_end, ctx.res(41, 11))
     inverse_drop = {}
     compact_dev = {}
     for ax, family, degrees in ((axes[0], "inverse", INVERSE_DEGREES), (axes[1], "compact", COMPACT_DEGREES)):
-        for i in degrees:
+        for i, colour in zip(degrees, plot.plt.rcParams["axes.prop_cycle"].by_key()["color"]):
             field = ctx.field_of([segment(family, i)])
             K = kernel(family, i, R=R)
             level = segment_on_bisector(K, LENGTH, TAU, support=R if family == "compact" else None)
-            y = heights(field, level, xs)
-            ax.plot(xs, y, label=f"i = {i}")
+            plot.contour_segments(ax, xs, ys, field.on_grid(xs, ys), level, colors=[colour])
+            ax.plot([], [], color=colour, label=f"i = {i}, κ = {level:.4g}")
             yf = heights(field, level, flat_xs)
             if family == "compact":
                 compact_dev[i] = float(np.max(np.abs(yf - TAU)))
             else:
                 inverse_drop[i] = float(TAU - yf[0])
         plot.draw_segment(ax, (-LENGTH / 2, 0), (LENGTH / 2, 0))
-        ax.plot([-LENGTH / 2, LENGTH / 2], [0, 0], "D", color="black", ms=5)
+        ax.plot([-LENGTH / 2, LENGTH / 2], [0, 0], "D", color="black", ms=5, clip_on=False)
         ax.axhline(TAU, color="grey", lw=0.6, ls=":")
         ax.set_aspect("equal")
-        ax.set_xlabel("x")
-        ax.legend(loc="upper right", fontsize=7)
+        ax.set_ylim(0, 1.1)
+        ax.set_ylabel("y")
+        ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=7)
     theta = np.linspace(0, np.pi, 200)
     for cx in (-LENGTH / 2, LENGTH / 2):
         axes[1].plot(cx + R * np.cos(theta), R * np.sin(theta), color="grey", lw=0.8, ls="--")
-    axes[0].set_title(f"power inverse $p^i$, τ = {TAU}")
-    axes[1].set_title(f"compact $k_R^i$, R = {R}, τ = {TAU}")
-    axes[0].set_ylabel("y (upper half of the curve)")
-    axes[0].set_ylim(0, 1.15)
+    for x in (-flat_end, flat_end):
+        axes[1].axvline(x, color="grey", lw=0.6, ls=":")
+    axes[0].set_title(f"power inverse $p^i$: curves of thickness τ = {TAU} (upper half)")
+    axes[1].set_title(f"compact $k_R^i$, R = {R}: flat (y = τ) between the dotted lines (outside the circles)")
+    axes[1].set_xlabel("x")
     plot.save(fig, ctx.image_path, FIGURE.size)
 
     worst = max(compact_dev.values())

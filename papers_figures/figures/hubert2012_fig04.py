@@ -24,7 +24,7 @@ FIGURE = Figure(
             "Sharpness increases from left to right.",
     skeletons=[SKELETON], kernel="p², p³, p⁴ (each segment weight 1, fields summed)",
     iso="for each kernel the level of thickness τ = 0.35 at the middle of the middle segment",
-    view="plane z = 0", size=(640, 230))
+    view="plane z = 0", size=(640, 200))
 
 
 def with_degree(degree):

@@ -26,7 +26,7 @@ FIGURE = Figure(
             "compact support kernel.",
     skeletons=[SKELETON], kernel="p³; k_R³ with R = 0.65",
     iso="per column the level giving thickness τ = 0.2, 0.3, 0.4 around one segment alone",
-    view="plane z = 0; segments of length 4 at y = ±0.5", size=(640, 330))
+    view="plane z = 0; segments of length 4 at y = ±0.5", size=(640, 290))
 
 
 def primitives(family):

@@ -5,13 +5,14 @@ step-function-like contribution of one side: the m-th term of Hubert §7,
     C = 1/(2(1 + s z²)) Σ_m ((Q_{m+1} − Q_m) × (P̄ − Q_m))·n D^{c_s²}_{[Q_m Q_{m+1}]}(P),
     D^{c_s²}_{[AB]}(P) = J_2(s|AB|², s AB·AP, 1 + s|AP|²),
 
-written here in Python from the paper (J_2 by its atan closed form, SPEC §2)
-and checked against skelconv's polygon field."""
+written in Python from the paper (figlib/reference.py, J_2 by its atan
+closed form, SPEC §2) and checked against skelconv's polygon field."""
 import numpy as np
 
 from figlib import plot
 from figlib.claims import Claim, fmt
 from figlib.figure import Figure
+from figlib.reference import polygon_edge_terms
 
 S = 1.0
 SQ3 = np.sqrt(3.0)
@@ -26,22 +27,9 @@ FIGURE = Figure(
     size=(640, 250))
 
 
-def j2(a, b, c):
-    root = np.sqrt(a * c - b * b)
-    return (np.arctan((a - b) / root) + np.arctan(b / root)) / root
-
-
 def edge_term(m, points):
-    """The m-th term of Hubert §7's sum for c_s⁴ at points (N×3), the triangle in z = 0, n = +z."""
-    A, B = VERTICES[m], VERTICES[(m + 1) % 3]
-    AB = B - A
-    AP = points - A
-    foot = points.copy()
-    foot[:, 2] = 0.0
-    cross = AB[0] * (foot[:, 1] - A[1]) - AB[1] * (foot[:, 0] - A[0])
-    z = points[:, 2]
-    d = j2(S * AB @ AB, S * AP @ AB, 1 + S * np.einsum("ij,ij->i", AP, AP))
-    return cross * d / (2 * (1 + S * z * z))
+    """The m-th term of Hubert §7's sum for c_s⁴ at points (N×3)."""
+    return polygon_edge_terms(VERTICES, points, "cauchy", s=S)[m]
 
 
 def draw(ctx):
@@ -80,7 +68,7 @@ def draw(ctx):
         ax.set_ylabel("y", labelpad=-8)
         ax.tick_params(labelsize=6, pad=-2)
         ax.set_title(title, fontsize=8)
-    fig.subplots_adjust(left=0.06, right=0.98, bottom=0.12, top=0.9, wspace=0.15)
+    fig.subplots_adjust(left=0.08, right=0.98, bottom=0.12, top=0.9, wspace=0.15)
     plot.save(fig, ctx.image_path, FIGURE.size)
 
     # Across the side [Q1 Q2] (x = −1), along y = 0, at distances ±d from it.

@@ -49,7 +49,7 @@ def draw(ctx):
         for z in (1, -1):
             plot.draw_segment(ax, (-HALF_SIDE, z), (HALF_SIDE, z), lw=1.5)
         name = "cubic inverse $p^3$" if family == "inverse" else f"compact $k_R^4$, R = {R}"
-        ax.set_title(f"{name}, κ = {level:.4g}")
+        ax.set_title(f"{name}\nκ = {level:.4g}")
         ax.set_aspect("equal")
         ax.set_xlabel("x")
         # offsets of the surface from the upper square, outward (+z) and inward (−z)
@@ -65,12 +65,12 @@ def draw(ctx):
         f_axis = pair.f(np.stack([np.zeros_like(z_axis), np.zeros_like(z_axis), z_axis], axis=1))
         axes[0].plot(z_axis, f_axis / level, label=name)
     axes[0].set_yscale("log")
-    axes[0].set_ylim(1e-2, 1e2)
+    axes[0].set_ylim(1e-2, 1e3)
     axes[0].axhline(1.0, color="grey", lw=0.8, ls=":")
     axes[0].set_xlabel("z on the normal through the centres")
     axes[0].set_ylabel("f / κ (iso at 1)")
     axes[0].set_title("f along the normal")
-    axes[0].legend(loc="lower center", fontsize=7)
+    axes[0].legend(loc="upper center", fontsize=6)
     axes[1].set_ylabel("z")
     plot.save(fig, ctx.image_path, FIGURE.size)
 

@@ -33,7 +33,7 @@ FIGURE = Figure(
             "(c) radius at the middle of a segment of length 400",
     kernel=f"Cauchy 4, σ = 1 (classical: c_s⁴ with s = 1/σ², weight τ)",
     iso=f"classical: {ISO_CLASSICAL:.6g} (radius 1 at τ = 1 on an infinite line); SCALIS: 1",
-    view="plane z = 0", size=(640, 300))
+    view="plane z = 0", size=(640, 330))
 
 
 def extent(field, level, t_max):
@@ -68,19 +68,16 @@ def draw(ctx):
     axes[0].set_title("(a) classical, weight τ")
     axes[1].set_title("(b) SCALIS, radius τ")
 
-    taus = np.linspace(0.05, 3.0, ctx.res(60, 12))
+    taus = np.linspace(0.05, 3.0, ctx.res(40, 12))
     long_a, long_b = (-LONG / 2, 0, 0), (LONG / 2, 0, 0)
-    origins = np.zeros((len(taus), 3))
+    up = [0, 1.0, 0]
     measured = {}
-    for kind in ("classical", "scalis"):
-        radii = []
-        for tau in taus:
-            if kind == "classical":
-                prim, level = classical_segment(long_a, long_b, tau, tau, "cauchy", DEGREE, SIGMA), ISO_CLASSICAL
-            else:
-                prim, level = scalis_segment(long_a, long_b, tau, tau, "cauchy", DEGREE, SIGMA), 1.0
-            radii.append(crossing(ctx.field_of([prim]), origins[:1], [0, 1.0, 0], level, 1e-9, 20.0)[0])
-        measured[kind] = np.array(radii)
+    # classical: weight τ multiplies the field, so radius(τ) is where f_{τ=1} = iso/τ: one field, one level per τ
+    unit = ctx.field_of([classical_segment(long_a, long_b, 1.0, 1.0, "cauchy", DEGREE, SIGMA)])
+    measured["classical"] = crossing(unit, np.zeros((len(taus), 3)), up, ISO_CLASSICAL / taus, 1e-9, 20.0)
+    measured["scalis"] = np.array([
+        crossing(ctx.field_of([scalis_segment(long_a, long_b, tau, tau, "cauchy", DEGREE, SIGMA)]),
+                 [[0, 0, 0]], up, 1.0, 1e-9, 20.0)[0] for tau in taus])
     predicted = classical_cauchy_radius(taus, ISO_CLASSICAL, DEGREE, SIGMA)
     ax = axes[2]
     ax.plot(taus, measured["classical"], color=plot.CLASSICAL, label="classical (eq. 10)")

@@ -80,7 +80,7 @@ def draw(ctx):
             plot.draw_segment(ax, p["a"], p["b"], lw=1.2)
         ax.set_aspect("equal")
         ax.set_xlabel("x / scale")
-        ax.legend(loc="upper right", fontsize=7)
+        ax.legend(loc="lower center", fontsize=6)
     axes[0].set_title("(a) classical: shapes differ")
     axes[1].set_title("(b) SCALIS: similar shapes")
     axes[0].set_ylabel("y / scale")

@@ -29,7 +29,7 @@ FIGURE = Figure(
     kernel=f"compact 4, σ = {SIGMA:g} (classical: k_R⁴ with R = σ τ0 = {R:g}, weight τ(t) = τ0(1 − t))",
     iso="colour: f / max f; white curve: the support boundary f = 0; the iso-curve f = c (SCALIS c = 1, "
         "classical the level giving radius τ0 at the thick end)",
-    view="plane z = 0, segment (0,0,0)–(4,0,0), τ0 = 0.5", size=(640, 300))
+    view="plane z = 0, segment (0,0,0)–(4,0,0), τ0 = 0.5", size=(640, 420))
 
 
 def scalis_support(x):

@@ -58,7 +58,7 @@ def mesh2(vertices, normals, faces):
 def scene(vertices, normals, faces, width, height):
     low, high = vertices.min(axis=0), vertices.max(axis=0)
     centre = 0.5 * (low + high)
-    radius = 0.5 * np.linalg.norm(high - low)
+    radius = np.max(np.linalg.norm(vertices - centre, axis=1))   # a sphere around every vertex
     half_angle = np.radians(CAMERA_ANGLE) / 2
     # the narrower field of view decides the distance
     narrow = min(half_angle, np.arctan(np.tan(half_angle) * height / width))
