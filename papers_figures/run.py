@@ -99,7 +99,7 @@ def main():
         for r in results:
             if r["image"]:
                 shutil.copyfile(r["image"], os.path.join(image_dir, os.path.basename(r["image"])))
-        gallery.write(args.gallery, results, pending(), elapsed=elapsed)
+        gallery.write(args.gallery, results, pending())
         print(f"wrote {args.gallery}")
     bad = [(r["name"], c.statement) for r in results for c in r["claims"] if not c.as_expected]
     print(f"{len(results)} figures/tables, {sum(len(r['claims']) for r in results)} claims, "

@@ -19,8 +19,8 @@ while [ $# -gt 0 ]; do
   esac
 done
 scripts/install_dependencies.sh
-echo "figures.sh: building skelconv"
-scripts/build.sh --target skelconv > /dev/null
+echo "figures.sh: building skelconv and the renderer's test mesh"
+scripts/build.sh --target skelconv skelconv_figures_uv_sphere > /dev/null
 args=(--skelconv build/release/src/skelconv --out "$out" --check)
 if [ ${#only[@]} -gt 0 ]; then
   args+=(--only "${only[@]}")
@@ -29,3 +29,10 @@ else
 fi
 # Debian's python3 (python3-matplotlib), not whatever python3 comes first on PATH.
 /usr/bin/python3 papers_figures/run.py "${args[@]}"
+if [ ${#only[@]} -eq 0 ]; then
+  # The 3-D renderer on its test mesh (a UV sphere written by skelconv::write_mesh),
+  # until `skelconv mesh` gives the 3-D figures.
+  mkdir -p "$out"
+  build/release/papers_figures/skelconv_figures_uv_sphere "$out/uv_sphere.ply"
+  /usr/bin/python3 papers_figures/render3d/render_mesh.py "$out/uv_sphere.ply" papers_figures/images/render3d_uv_sphere.png
+fi

@@ -15,13 +15,24 @@ at reduced resolution.
 """
 
 
+RENDERER = """### The 3-D renderer, ready for `skelconv mesh`
+
+`papers_figures/render3d/render_mesh.py MESH.ply OUT.png` renders a mesh written by
+`skelconv::write_mesh` with POV-Ray (`mesh2` with the per-vertex normals; one camera
+direction, light and colour for every figure). Its test mesh, a UV sphere written by
+`render3d/uv_sphere.cpp` through `write_mesh`:
+
+![the renderer's test mesh](images/render3d_uv_sphere.png)
+"""
+
+
 def claim_rows(claims):
     rows = ["| the paper says | we measure | verdict |", "|---|---|---|"]
     for c in claims:
         verdict = "agrees" if c.agrees else "**disagrees**"
         if c.note:
             verdict += f" ({c.note})"
-        rows.append(f"| {c.statement} | {c.measured} | {verdict} |")
+        rows.append("| " + " | ".join(cell.replace("|", "\\|") for cell in (c.statement, c.measured, verdict)) + " |")
     return "\n".join(rows)
 
 
@@ -51,10 +62,9 @@ def entry(result, image_dir_rel):
     return "\n".join(lines)
 
 
-def write(path, results, pending, image_dir_rel="images", elapsed=None):
+def write(path, results, pending, image_dir_rel="images"):
+    """Writes the gallery (no times or dates in it: the same results give the same bytes)."""
     parts = [HEADER]
-    if elapsed is not None:
-        parts.append(f"Last full run: {len(results)} figures and tables in {elapsed:.0f} s.\n\n")
     parts.append("## Contents\n\n" + "\n".join(
         f"- [{r['figure'].heading}](#{anchor(r['figure'].heading)})" for r in results) + "\n")
     for r in results:
@@ -62,6 +72,7 @@ def write(path, results, pending, image_dir_rel="images", elapsed=None):
     if pending:
         parts.append("## Pending\n\nNot drawn yet (each line says what it waits for):\n\n" +
                      "\n".join(f"- **{heading}**: {what}" for heading, what in pending) + "\n")
+        parts.append(RENDERER)
     text = "\n".join(parts)
     tmp = path + ".tmp"
     with open(tmp, "w") as handle:

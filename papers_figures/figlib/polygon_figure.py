@@ -34,7 +34,7 @@ def draw_polygon_p4(ctx, figure, skeleton_name):
     plot.contour_segments(axes[1], xs, zs, section, level, colors=["tab:blue"])
     inside = _chord(vertices, centroid[1])
     axes[1].plot(inside[:, 0], inside[:, 1], color="black", lw=2)
-    axes[1].set_title(f"section y = {centroid[1]:.3g} (τ = {TAU})")
+    axes[1].set_title(f"section y = {centroid[1] + 0.0:.2f} (τ = {TAU})")
     axes[1].set_xlabel("x")
     axes[1].set_ylabel("z")
     for ax in axes:

@@ -44,7 +44,7 @@ def draw(ctx):
     rng = np.random.default_rng(SEED)
     cases = {"inverse 3": segment_case("inverse", 3, 1.5), "Cauchy 4": segment_case("cauchy", 4, 1.5),
              "compact 4": segment_case("compact", 4, 2.0), "triangle, Cauchy 4": triangle_case()}
-    rows = ["| primitive | points | max relative |f₁ + f₂ − f| |", "|---|---|---|"]
+    rows = ["| primitive | points | max relative \\|f₁ + f₂ − f\\| |", "|---|---|---|"]
     worst = {}
     for name, (whole, parts) in cases.items():
         n = ctx.res(400, 40) if "triangle" not in name else ctx.res(60, 8)

@@ -39,46 +39,73 @@ def _header(handle, path):
     return encoding, elements
 
 
+class _AsciiValues:
+    """Values of an ASCII PLY body, one at a time."""
+    def __init__(self, body):
+        self.tokens = iter(body.split())
+
+    def read(self, kind):
+        return float(next(self.tokens))
+
+
+class _BinaryValues:
+    """Values of a binary little-endian PLY body, one at a time."""
+    def __init__(self, body):
+        self.body, self.offset = body, 0
+
+    def read(self, kind):
+        fmt = "<" + TYPES[kind]
+        value = struct.unpack_from(fmt, self.body, self.offset)[0]
+        self.offset += struct.calcsize(fmt)
+        return value
+
+
 def read_ply(path):
     """(vertices N×3, normals N×3 or None, faces M×3 int) of a triangle mesh."""
     with open(path, "rb") as handle:
         encoding, elements = _header(handle, path)
         body = handle.read()
+    if encoding != "ascii":
+        fast = _binary_fast(elements, body)
+        if fast is not None:
+            return _arrays(fast, path)
+    values = _AsciiValues(body) if encoding == "ascii" else _BinaryValues(body)
     data = {}
-    if encoding == "ascii":
-        tokens = iter(body.split())
+    try:
         for name, count, props in elements:
             rows = []
             for _ in range(count):
                 row = []
                 for prop in props:
                     if prop[0] == "list":
-                        n = int(next(tokens))
-                        row.append([float(next(tokens)) for _ in range(n)])
+                        n = int(values.read(prop[1]))
+                        row.append([values.read(prop[2]) for _ in range(n)])
                     else:
-                        row.append(float(next(tokens)))
+                        row.append(values.read(prop[0]))
                 rows.append(row)
             data[name] = (props, rows)
-    else:
-        offset = 0
-        for name, count, props in elements:
-            rows = []
-            for _ in range(count):
-                row = []
-                for prop in props:
-                    if prop[0] == "list":
-                        n = struct.unpack_from("<" + TYPES[prop[1]], body, offset)[0]
-                        offset += struct.calcsize(TYPES[prop[1]])
-                        fmt = "<" + TYPES[prop[2]] * n
-                        row.append(list(struct.unpack_from(fmt, body, offset)))
-                        offset += struct.calcsize(fmt)
-                    else:
-                        fmt = "<" + TYPES[prop[0]]
-                        row.append(struct.unpack_from(fmt, body, offset)[0])
-                        offset += struct.calcsize(fmt)
-                rows.append(row)
-            data[name] = (props, rows)
+    except (StopIteration, struct.error, KeyError) as error:
+        raise PlyError(f"{path}: truncated or unreadable body ({error!r})") from None
     return _arrays(data, path)
+
+
+def _binary_fast(elements, body):
+    """The layout write_mesh uses (double vertex properties, then triangles as
+    'list uchar int'), read with numpy in one go; None for any other layout."""
+    if [e[0] for e in elements] != ["vertex", "face"]:
+        return None
+    (_, nv, vprops), (_, nf, fprops) = elements
+    if any(p[0] != "double" for p in vprops) or fprops != [("list", "uchar", "int", "vertex_indices")]:
+        return None
+    vertex_bytes = nv * 8 * len(vprops)
+    face_dtype = np.dtype([("n", "u1"), ("i", "<i4", (3,))])
+    if len(body) < vertex_bytes + nf * face_dtype.itemsize:
+        return None
+    table = np.frombuffer(body, dtype="<f8", count=nv * len(vprops)).reshape(nv, len(vprops))
+    faces = np.frombuffer(body, dtype=face_dtype, count=nf, offset=vertex_bytes)
+    if nf and np.any(faces["n"] != 3):
+        return None
+    return {"vertex": (vprops, table.tolist()), "face": (fprops, [[list(f)] for f in faces["i"]])}
 
 
 def _arrays(data, path):
