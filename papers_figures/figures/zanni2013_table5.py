@@ -95,6 +95,12 @@ def draw(ctx):
                     " (compact: only those with d < σ τ_c).\n\n" + "\n".join(rows))
     checked = skelconv_check(ctx)
     rec = max(worst.values())
+    # §4.2 as printed: f = F / N_K(c) with N_K(c) = c / h(1,1); at distance τ_c, F = h(τ_c, τ_c) = h(1,1)
+    # (scale invariance), so f = h(1,1)² / c there, not c (SPEC §9). Values from quadrature, c = 1.
+    iso = 1.0
+    printed = {name: by_quadrature(fam, i, 1.0, 1.0, sigma) ** 2 / iso
+               for name, fam, i, sigma in (("Cauchy 4, σ = 1", "cauchy", 4, 1.0), ("inverse 3, σ = 1", "inverse", 3, 1.0),
+                                           ("compact 4, σ = 2", "compact", 4, 2.0))}
     return [
         Claim("Table 5's initial terms and recurrences give h(τ_c, d) (Cauchy, inverse: h_2, h_3; compact: h_0)",
               f"max relative difference against quadrature over i = 2…10 and 4 (τ_c, d, σ): {fmt(rec)}",
@@ -104,4 +110,9 @@ def draw(ctx):
               "skelconv, SCALIS segment of length 2·10⁴ τ_c, i = 4…10: max relative difference " +
               ", ".join(f"{k} {fmt(v)}" for k, v in checked.items()),
               max(checked.values()) < 1e-10),
+        Claim("as printed (§4.2): renormalising F by N_K(c) = c/h(1,1), the surface f = c has thickness τ_c",
+              "f = F/N_K(c) at distance τ_c, c = 1: " + ", ".join(f"{k}: {fmt(v, 4)}" for k, v in printed.items()) +
+              " (should be 1); the intended f = c·F/h(1,1) is what skelconv uses (previous row)",
+              all(abs(v - iso) < 1e-6 for v in printed.values()), expect_agreement=False,
+              note="a misprint (SPEC §9): F/N_K(c) = F·h(1,1)/c is c only when h(1,1) = c"),
     ]
