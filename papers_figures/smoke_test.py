@@ -7,7 +7,8 @@
   smoke_test.py 3d --sphere BIN --out DIR     writes a UV sphere with
       skelconv::write_mesh as binary and as ASCII PLY, renders both with POV-Ray:
       the same pixels from both files, twice the same bytes, the sphere drawn
-      (centre coloured, corners background)."""
+      (centre coloured, corners background), and the same silhouette as
+      POV-Ray's own isosurface{} of the sphere (the camera and axis conventions)."""
 import argparse
 import os
 import subprocess
@@ -18,6 +19,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "render3d"))
 
 import matplotlib  # noqa: E402
+import numpy as np  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -72,6 +74,17 @@ def smoke_3d(args):
         fail("two renders of the same mesh gave different bytes")
     if read(pngs[0]) != read(pngs[2]):
         fail("the binary and the ASCII PLY of the same mesh rendered differently")
+    # POV-Ray's own isosurface of the same sphere, same camera: the silhouettes must agree
+    from povray import framing, isosurface, render_scene, scene
+    centre, radius = framing(vertices)
+    iso_png = os.path.join(args.out, "sphere_isosurface.png")
+    body = isosurface("x*x + y*y + (z - 0.5)*(z - 0.5) - 1", [-1.1, -1.1, -0.6], [1.1, 1.1, 1.6])
+    render_scene(scene(body, centre, radius, *SIZE_3D), iso_png, *SIZE_3D)
+    mesh_mask = plt.imread(pngs[0])[..., :3].min(axis=2) < 0.99
+    iso_mask = plt.imread(iso_png)[..., :3].min(axis=2) < 0.99
+    differ = float(np.mean(mesh_mask != iso_mask))
+    if differ > 0.01:
+        fail(f"mesh and isosurface silhouettes differ on {differ:.1%} of the pixels")
     pixels = plt.imread(pngs[0])[..., :3]
     h, w = pixels.shape[:2]
     centre, corner = pixels[h // 2, w // 2], pixels[0, 0]
@@ -79,7 +92,8 @@ def smoke_3d(args):
         fail(f"corner pixel {corner} is not the white background")
     if abs(float(centre[0]) - float(centre[2])) < 0.1:
         fail(f"centre pixel {centre} is not the surface colour")
-    print(f"smoke_test 3d: sphere rendered {w}×{h}, binary = ASCII, deterministic")
+    print(f"smoke_test 3d: sphere rendered {w}×{h}, binary = ASCII, deterministic, "
+          f"silhouette = POV-Ray isosurface's on {1 - differ:.2%} of the pixels")
 
 
 def main():

@@ -55,10 +55,16 @@ def mesh2(vertices, normals, faces):
     return "\n".join(parts)
 
 
-def scene(vertices, normals, faces, width, height):
+def framing(vertices):
+    """(centre, radius) of the sphere the camera frames: the bounding box's
+    centre and the farthest vertex from it."""
     low, high = vertices.min(axis=0), vertices.max(axis=0)
     centre = 0.5 * (low + high)
-    radius = np.max(np.linalg.norm(vertices - centre, axis=1))   # a sphere around every vertex
+    return centre, float(np.max(np.linalg.norm(vertices - centre, axis=1)))
+
+
+def scene(body, centre, radius, width, height):
+    """The fixed scene (camera, lights, texture `Surface`) around `body` (POV-Ray text)."""
     half_angle = np.radians(CAMERA_ANGLE) / 2
     # the narrower field of view decides the distance
     narrow = min(half_angle, np.arctan(np.tan(half_angle) * height / width))
@@ -69,7 +75,17 @@ def scene(vertices, normals, faces, width, height):
     fill = centre + 3 * distance * np.array([-1.0, -0.3, 0.2]) / np.linalg.norm([-1.0, -0.3, 0.2])
     return SCENE.format(camera=_pov(camera), centre=_pov(centre), aspect=f"{width / height:.9g}",
                         angle=f"{CAMERA_ANGLE:g}", key=_pov(key), fill=_pov(fill), surface=SURFACE,
-                        mesh=mesh2(vertices, normals, faces))
+                        mesh=body)
+
+
+def isosurface(function, low, high, max_gradient=10.0, accuracy=1e-4):
+    """POV-Ray's own isosurface{} of `function` (POV-Ray function syntax, in
+    skelconv's x, y, z) = 0, inside where it is negative, within the box
+    [low, high] (skelconv coordinates): the independent cross-check of a mesh."""
+    return (f"#declare SkelconvField = function(x, y, z) {{ {function} }}\n"
+            f"isosurface {{ function {{ SkelconvField(x, z, y) }}\n"      # POV (x, y, z) = skelconv (x, z, y)
+            f"  contained_by {{ box {{ {_pov(low)}, {_pov(high)} }} }}\n"
+            f"  threshold 0 accuracy {accuracy:g} max_gradient {max_gradient:g}\n  texture {{ Surface }} }}")
 
 
 def strip_png_metadata(path):
@@ -92,10 +108,16 @@ def strip_png_metadata(path):
 
 def render(vertices, normals, faces, png_path, width=640, height=480, povray="povray"):
     """Renders the mesh to png_path. Raises RuntimeError with POV-Ray's message on failure."""
+    centre, radius = framing(vertices)
+    render_scene(scene(mesh2(vertices, normals, faces), centre, radius, width, height), png_path, width, height, povray)
+
+
+def render_scene(text, png_path, width, height, povray="povray"):
+    """Runs POV-Ray on a scene text; the PNG keeps only its pixel chunks."""
     with tempfile.TemporaryDirectory() as tmp:
         pov = os.path.join(tmp, "scene.pov")
         with open(pov, "w") as handle:
-            handle.write(scene(vertices, normals, faces, width, height))
+            handle.write(text)
         out = os.path.join(tmp, "out.png")
         command = [povray, f"+I{pov}", f"+O{out}", f"+W{width}", f"+H{height}", "+FN8", "-D", "-V", "-GA",
                    "+WT2"] + ANTIALIAS.split()
