@@ -56,7 +56,7 @@ def smoke_2d(args):
 
 
 def smoke_3d(args):
-    from ply import read_ply
+    from ply import PlyError, read_ply
     from povray import render
     os.makedirs(args.out, exist_ok=True)
     pngs = []
@@ -70,6 +70,14 @@ def smoke_3d(args):
             png = os.path.join(args.out, f"sphere_{encoding}_{run}.png")
             render(vertices, normals, faces, png, *SIZE_3D)
             pngs.append(png)
+    truncated = os.path.join(args.out, "truncated.ply")
+    with open(truncated, "wb") as handle:
+        handle.write(read(os.path.join(args.out, "sphere_binary.ply"))[:-5])
+    try:
+        read_ply(truncated)
+        fail("a truncated PLY was read without an error")
+    except PlyError as error:
+        print(f"smoke_test 3d: truncated PLY refused: {error}")
     if read(pngs[0]) != read(pngs[1]):
         fail("two renders of the same mesh gave different bytes")
     if read(pngs[0]) != read(pngs[2]):

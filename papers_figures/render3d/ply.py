@@ -84,8 +84,10 @@ def read_ply(path):
                         row.append(values.read(prop[0]))
                 rows.append(row)
             data[name] = (props, rows)
-    except (StopIteration, struct.error, KeyError) as error:
-        raise PlyError(f"{path}: truncated or unreadable body ({error!r})") from None
+    except (StopIteration, struct.error):
+        raise PlyError(f"{path}: the body has fewer values than the header announces (truncated?)") from None
+    except (KeyError, ValueError) as error:
+        raise PlyError(f"{path}: unreadable value or property type ({error})") from None
     return _arrays(data, path)
 
 
