@@ -70,7 +70,7 @@ def write(path, results, pending, image_dir_rel="images"):
     for r in results:
         parts.append(entry(r, image_dir_rel))
     if pending:
-        parts.append("## Pending\n\nNot drawn yet (each line says what it waits for):\n\n" +
+        parts.append("## Pending\n\nNot drawn yet, or drawn above only as a 2-D section (each line says what it waits for):\n\n" +
                      "\n".join(f"- **{heading}**: {what}" for heading, what in pending) + "\n")
         parts.append(RENDERER)
     text = "\n".join(parts)
