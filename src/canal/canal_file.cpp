@@ -122,9 +122,10 @@ Vector3<double> point(const Json& value, const std::string& path) {
 
 /// {"center": [x, y, z], "radius": r}, r ≠ 0.
 Sphere<double> sphere(const Json& value, const std::string& path) {
+  if (!value.is_object()) throw InputError("must be a sphere {\"center\": [x, y, z], \"radius\": r}, got " + shown(value), path);
+  allow_only(value, path, {"center", "radius"});
   const Sphere<double> result{point(field(value, path, "center"), path + ".center"),
                               number(field(value, path, "radius"), path + ".radius")};
-  allow_only(value, path, {"center", "radius"});
   try {
     sphere_vector(result);
   } catch (const InputError& error) {
@@ -222,7 +223,13 @@ std::vector<FamilySample<double>> sample_canal(const CanalInput& input) {
   std::vector<Vector5<double>> spheres;
   for (const Sphere<double>& sphere : input.spheres) spheres.push_back(sphere_vector(sphere));
   const SphereInterpolation<double> family(spheres, *input.pole);
-  for (int j = 0; j < input.samples; ++j) samples.push_back(sample_family(family, t_of(j)));
+  const long long pieces = (long long)input.spheres.size() - 1, steps = input.samples - 1;
+  for (int j = 0; j < input.samples; ++j) {
+    samples.push_back(sample_family(family, t_of(j)));
+    // At a knot, the input sphere itself (its round trip through ℝ⁵ would
+    // change the last digits of the centre and radius).
+    if (j * pieces % steps == 0) samples.back().sphere = input.spheres[std::size_t(j * pieces / steps)];
+  }
   return samples;
 }
 
