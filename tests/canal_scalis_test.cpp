@@ -37,8 +37,9 @@ TEST(CanalScalis, MiddleOfAGentleConeIsWithinHalfAPercentOfTau) {
 }
 
 TEST(CanalScalis, EndsRetractWellInsideTheCaps) {
-  // At the ends only half the segment contributes: every measured case
-  // retracts by 20% to 68% of τ there (table), never outwards.
+  // At the ends only half the segment contributes: every measured case whose
+  // caps the surface reaches retracts by 20% to 68% of τ there (table),
+  // never outwards.
   for (const ScalisKernel& kernel : {ScalisKernel::inverse(3, 1.0), ScalisKernel::cauchy(4, 0.5),
                                      ScalisKernel::compact(4, 1.5)}) {
     const ScalisDeviation deviation = measure(0.1, 0.1, kernel);

@@ -113,7 +113,8 @@ std::vector<ScalisDeviationCase> scalis_deviation_cases() {
     const char* name;
     double tau0, tau1;
   };
-  const Shape shapes[] = {{"cylinder 0.1", 0.1, 0.1},
+  const Shape shapes[] = {{"cylinder 0.02", 0.02, 0.02},
+                          {"cylinder 0.1", 0.1, 0.1},
                           {"growing 0.05-0.15", 0.05, 0.15},
                           {"growing 0.1-0.3", 0.1, 0.3},
                           {"cone 0-0.2", 0.0, 0.2}};

@@ -60,7 +60,7 @@ struct ScalisDeviationCase {
 };
 
 /// The cases of docs/canal.md's table: every family, a few degrees and σ,
-/// on a cylinder, two growing radii and a cone.
+/// on a thin and a thick cylinder, two growing radii and a cone.
 std::vector<ScalisDeviationCase> scalis_deviation_cases();
 
 }  // namespace skelconv::canal
