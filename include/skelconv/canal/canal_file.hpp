@@ -36,8 +36,9 @@ struct CanalInput {
   int samples = 2;
 };
 
-/// Largest "samples" accepted (the output holds one line per sample).
-inline constexpr int max_canal_samples = 1'000'000;
+/// Largest "samples" accepted: the output holds one line per sample and a
+/// mesh 64 vertices per sample (6.4 million vertices, ~0.5 GB, at most).
+inline constexpr int max_canal_samples = 100'000;
 
 /// Parses the JSON text of a canal input. Throws InputError.
 CanalInput parse_canal_json(std::string_view json_text);

@@ -85,7 +85,9 @@ bool is_light_like(const Vector5<T>& u, T tolerance = default_light_cone_toleran
 
 // --- Spheres, planes and points → ℝ⁵ ------------------------------------------
 
-/// S(c, r) ∈ Λ⁴. Throws InputError("radius", ...) if r is 0 or not finite.
+/// S(c, r) ∈ Λ⁴. Throws InputError("radius", ...) if r is 0 or not finite,
+/// InputError if the coordinates overflow (|c|² − r² or 1/r beyond the
+/// range of T).
 template <class T>
 Vector5<T> sphere_vector(const Sphere<T>& sphere) {
   using std::isfinite;
@@ -99,6 +101,11 @@ Vector5<T> sphere_vector(const Sphere<T>& sphere) {
   const T power = c.squaredNorm() - r * r;  // |c|² − r², the power of the origin
   Vector5<T> x;
   x << (power + T(1)) / (T(2) * r), c / r, (power - T(1)) / (T(2) * r);
+  if (!x.allFinite()) {
+    throw InputError(fmt::format("centre ({}, {}, {}) and radius {} overflow the coordinates of the sphere "
+                                 "(|c|² − r² or 1/r beyond the floating-point range)",
+                                 double(c[0]), double(c[1]), double(c[2]), double(r)));
+  }
   return x;
 }
 
