@@ -69,6 +69,28 @@ TEST(CanalCli, LorentzOutputHitsTheKnotsAndItsCirclesLieOnTheSpheres) {
   std::filesystem::remove(mesh);
 }
 
+TEST(CanalCli, APlanePoleKeepsTheMirrorSymmetryOfTheInput) {
+  // Spheres symmetric under x ↦ 2 − x and a pole (the plane z = −3) that the
+  // mirror leaves alone: the interpolated family is symmetric, sample j
+  // mirrors sample N − 1 − j (centres, radii and circles; normals reversed in
+  // x, then flipped, since t runs the other way).
+  const std::string mesh = testing::TempDir() + "skelconv_canal_plane_" + std::to_string(getpid()) + ".obj";
+  const nlohmann::json samples = run_canal("lorentz_plane_pole.json", "--mesh '" + mesh + "'").at("samples");
+  ASSERT_EQ(samples.size(), 9u);
+  const auto mirrored = [](Vec3 p) { return Vec3(2 - p.x(), p.y(), p.z()); };
+  for (std::size_t j = 0; j < samples.size(); ++j) {
+    const nlohmann::json& a = samples[j];
+    const nlohmann::json& b = samples[samples.size() - 1 - j];
+    EXPECT_LT((mirrored(point(a.at("sphere").at("center"))) - point(b.at("sphere").at("center"))).norm(), 1e-14);
+    EXPECT_NEAR(a.at("sphere").at("radius").get<double>(), b.at("sphere").at("radius").get<double>(), 1e-14);
+    EXPECT_LT((mirrored(point(a.at("circle").at("center"))) - point(b.at("circle").at("center"))).norm(), 1e-14);
+    const Vec3 na = point(a.at("circle").at("normal")), nb = point(b.at("circle").at("normal"));
+    EXPECT_LT((Vec3(na.x(), -na.y(), -na.z()) - nb).norm(), 1e-14) << j;
+  }
+  EXPECT_TRUE(std::filesystem::exists(mesh));
+  std::filesystem::remove(mesh);
+}
+
 TEST(CanalCli, LinearCirclesAreTheClosedFormAndNullAtAPoint) {
   // Radii 0.5 → −0.5 over a distance 3: r(t) = 0.5 − t, c(t) = (3t, 0, 0),
   // so the circle is at x = 3t − r r′·3/9 = 3t + r/3 with radius |r| √(1 − 1/9),

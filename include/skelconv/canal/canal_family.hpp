@@ -11,6 +11,7 @@
 //     of both pieces lie on S_k; the sweep keeps the second).
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>

@@ -79,7 +79,8 @@ class SphereInterpolation {
   /// through a point there).
   Vector5<T> operator()(T t) const {
     if (const std::optional<std::size_t> k = knot_index(t)) return spheres_[*k];
-    return pole_ + from_pole(t) / lorentz_square(from_pole(t));
+    const Vector5<T> y = from_pole(t);
+    return pole_ + y / lorentz_square(y);
   }
 
   /// γ′(t) = Y′/Q(Y) − 2 L(Y, Y′) Y/Q(Y)², Y = X(t) − Ω.
