@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "canal_command.hpp"
 #include "eval_command.hpp"
 #include "exit_status.hpp"
 
@@ -47,6 +48,8 @@ int main(int argc, char** argv) {
 
   EvalOptions eval_options;
   const CLI::App* eval = add_eval_command(app, eval_options);
+  CanalOptions canal_options;
+  const CLI::App* canal = add_canal_command(app, canal_options);
 
   if (first_argument_is_unknown_subcommand(app, argc, argv)) {
     report_error(std::string("unknown subcommand \"") + argv[1] + "\" (available: " + subcommand_names(app) + ")");
@@ -63,6 +66,7 @@ int main(int argc, char** argv) {
 
   try {
     if (eval->parsed()) return run_eval(eval_options);
+    if (canal->parsed()) return run_canal(canal_options);
   } catch (const std::exception& error) {
     report_error(std::string("internal error: ") + error.what());
     return exit_evaluation_failed;
