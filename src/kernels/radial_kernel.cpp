@@ -1,0 +1,21 @@
+// The checks shared by the radial kernel traits (skelconv/kernels/radial_kernel.hpp).
+#include "skelconv/kernels/radial_kernel.hpp"
+
+#include <fmt/format.h>
+
+namespace skelconv::kernels {
+
+void require_degree(std::string_view family, int degree, int min_degree, int max_degree) {
+  if (degree < min_degree || degree > max_degree) {
+    throw InputError(fmt::format("unsupported degree {} for the {} family on a point; supported: {}..{}", degree,
+                                 family, min_degree, max_degree),
+                     "kernel.degree");
+  }
+}
+
+void require_positive(double value, const char* where) {
+  if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
+  if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
+}
+
+}  // namespace skelconv::kernels
