@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include "../runtime/input_checks.hpp"
+
 namespace skelconv::kernels {
 
 void require_degree(std::string_view family, int degree, int min_degree, int max_degree) {
@@ -13,9 +15,6 @@ void require_degree(std::string_view family, int degree, int min_degree, int max
   }
 }
 
-void require_positive(double value, const char* where) {
-  if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
-  if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
-}
+void require_positive(double value, const char* where) { detail::require_positive_parameter(value, where); }
 
 }  // namespace skelconv::kernels

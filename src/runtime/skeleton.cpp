@@ -58,8 +58,7 @@ Skeleton::NodeId Skeleton::add_blend(Blend blend, NodeId parent) {
 }
 
 void Skeleton::set_iso(double iso) {
-  if (!std::isfinite(iso)) throw InputError(fmt::format("must be finite, got {}", iso), "iso");
-  if (!(iso > 0.0)) throw InputError(fmt::format("must be > 0, got {}", iso), "iso");
+  detail::require_positive_parameter(iso, "iso");
   iso_ = iso;
 }
 

@@ -470,13 +470,11 @@ void read_element(const Json& value, const std::string& path, Skeleton& skeleton
   skeleton.add(read_primitive(value, path), parent);
 }
 
-/// The optional top-level "iso" (default 1): the level of the surface.
+/// The optional top-level "iso" (default 1): the level of the surface
+/// (checked by Skeleton::set_iso).
 double read_file_iso(const Json& document) {
   const auto found = document.find("iso");
-  if (found == document.end()) return 1.0;
-  const double iso = read_number(*found, "iso");
-  if (!(iso > 0.0)) throw InputError(fmt::format("must be > 0, got {}", iso), "iso");
-  return iso;
+  return found == document.end() ? 1.0 : read_number(*found, "iso");
 }
 
 Skeleton read_skeleton(const Json& document) {

@@ -6,14 +6,14 @@
 
 #include <fmt/format.h>
 
+#include "../runtime/input_checks.hpp"
 #include "skelconv/errors.hpp"
 
 namespace skelconv {
 namespace {
 
 void require_positive(double value, const std::string& where) {
-  if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
-  if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
+  detail::require_positive_parameter(value, where.c_str());
 }
 
 /// A per-child list: exactly one entry per child (or, when `one_for_all`,
