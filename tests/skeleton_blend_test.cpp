@@ -229,6 +229,28 @@ TEST(SkeletonBlend, InfiniteChildMakesEveryBlendInfinite) {
   }
 }
 
+TEST(SkeletonBlend, OverflowIsAnEvaluationErrorOfTheNode) {
+  // Two finite children of 1e308 each: their sum overflows double. That is
+  // an evaluation error at the node, not a value passing for the marker.
+  const PointPrimitive huge(Vec3(0, 0, 0), KernelSpec::cauchy(2, 1.0), 1e308);
+  const Skeleton node_sum = blended(Blend::sum(), {huge, huge});
+  try {
+    node_sum.value(Vec3(0, 0, 0));
+    ADD_FAILURE() << "no EvaluationError";
+  } catch (const EvaluationError& error) {
+    EXPECT_EQ(error.where(), "primitives[0]");
+  }
+  Skeleton top_level;
+  top_level.add(huge);
+  top_level.add(huge);
+  try {
+    top_level.value_and_gradient(Vec3(0, 0, 0));
+    ADD_FAILURE() << "no EvaluationError";
+  } catch (const EvaluationError& error) {
+    EXPECT_EQ(error.where(), "primitives");
+  }
+}
+
 TEST(SkeletonBlend, NestedNodesAreLocatedLikeTheFile) {
   Skeleton skeleton;
   skeleton.add(PointPrimitive(Vec3(0, 0, 0), KernelSpec::cauchy(2, 1.0)));

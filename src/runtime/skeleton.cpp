@@ -23,6 +23,18 @@ FieldSample from_scalar(const ScalarSample<double>& s) { return {s.value, to_vec
 /// skeleton somewhere below (blend.hpp, "Markers").
 bool is_marker(const FieldSample& s) { return s.value == infinity || s.gradient.x() == infinity; }
 
+/// A blend of finite children must be finite: otherwise it overflowed
+/// double (a weight times a huge value, a large power), which is an
+/// EvaluationError located at the node, never a value that could pass for
+/// the +inf marker. Only the parts `need` asked for are checked.
+void require_finite_blend(const FieldSample& result, bool value_wanted, bool gradient_wanted,
+                          const std::string& location, const Vec3& p) {
+  if ((!value_wanted || std::isfinite(result.value)) && (!gradient_wanted || result.gradient.allFinite())) return;
+  throw EvaluationError(fmt::format("the blend overflowed double precision at P = {} (value {}, gradient {})",
+                                    detail::format_point(p), result.value, detail::format_point(result.gradient)),
+                        location);
+}
+
 }  // namespace
 
 Skeleton::Skeleton() : nodes_{Node{Blend::sum(), {}, ""}}, cache_(std::make_shared<detail::IndexCache>()) {}
@@ -156,8 +168,12 @@ FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const d
       children.reserve(node.children.size());
       for (const Child& child : node.children) children.push_back(to_scalar(evaluate_child(child, p, child_need, index)));
       const std::span<const ScalarSample<double>> view(children);
-      return from_scalar(node.blend.kind == BlendKind::union_max ? blend_union(view)
-                                                                 : blend_super_elliptic(node.blend, view));
+      if (node.blend.kind == BlendKind::union_max) return from_scalar(blend_union(view));  // one child's sample
+      const FieldSample result = from_scalar(blend_super_elliptic(node.blend, view));
+      if (!blend_detail::any_infinite(view)) {
+        require_finite_blend(result, need != Need::gradient, need != Need::value, node.location, p);
+      }
+      return result;
     }
   }
   return {};  // unreachable: every kind is handled above
@@ -184,6 +200,8 @@ FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const de
     for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
   }
   if (marker) return {infinity, Vec3::Constant(infinity)};
+  require_finite_blend(total, need != Need::gradient, need != Need::value, id == root ? "primitives" : node.location,
+                       p);
   return total;
 }
 
@@ -201,6 +219,9 @@ FieldSample Skeleton::evaluate_angle_blend(NodeId id, const Vec3& p, Need need,
       // cos θ is the constant 0 here (blend.hpp): ∇a = 0, no Hessian needed.
       const AngleHessianProducts<double> zero{};
       result = from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &zero));
+    }
+    if (!is_marker(first) && !is_marker(second)) {
+      require_finite_blend(result, true, need != Need::value, node.location, p);
     }
     return result;
   }
@@ -223,7 +244,10 @@ FieldSample Skeleton::evaluate_angle_blend(NodeId id, const Vec3& p, Need need,
   const AngleHessianProducts<double> products{
       hessian_times(node.children[0], first.gradient), hessian_times(node.children[0], second.gradient),
       hessian_times(node.children[1], first.gradient), hessian_times(node.children[1], second.gradient)};
-  return from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &products));
+  const FieldSample result =
+      from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &products));
+  require_finite_blend(result, true, true, node.location, p);
+  return result;
 }
 
 namespace {
