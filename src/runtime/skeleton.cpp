@@ -229,6 +229,9 @@ FieldSample Skeleton::evaluate_angle_blend(NodeId id, const Vec3& p, Need need,
   const double step = angle_hessian_step * (1.0 + p.cwiseAbs().maxCoeff());
   const auto hessian_times = [&](const Child& child, const Vec3& v) {
     const double length = v.norm();
+    // |v|² underflowing: the blend sees no angle either (blend.hpp), and
+    // ignores the product.
+    if (length == 0.0) return std::array<double, 3>{0.0, 0.0, 0.0};
     const Vec3 u = v / length;
     const Vec3 ahead = evaluate_child(child, p + step * u, Need::gradient, index).gradient;
     const Vec3 behind = evaluate_child(child, p - step * u, Need::gradient, index).gradient;
