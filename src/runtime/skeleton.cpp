@@ -85,8 +85,10 @@ void Skeleton::validate() const {
 }
 
 void Skeleton::prepare() const {
-  const std::shared_ptr<detail::IndexCache> cache = cache_;
-  std::call_once(cache->once, [&] {
+  // A reference, not a copy of the shared_ptr: its reference count would be
+  // one cache line that every thread of a batch writes at every point.
+  detail::IndexCache& cache = *cache_;
+  std::call_once(cache.once, [&] {
     validate();
     auto index = std::make_unique<detail::SkeletonIndex>();
     index->grids.resize(nodes_.size());
@@ -101,7 +103,7 @@ void Skeleton::prepare() const {
       }
       if (any_bounded) index->grids[id].emplace(boxes);
     }
-    cache->index = std::move(index);
+    cache.index = std::move(index);
   });
 }
 
