@@ -224,7 +224,8 @@ T gradient_cosine(const ScalarSample<T>& first, const ScalarSample<T>& second) {
 }
 
 /// Rockwood's θ-weighted binary blend (file comment); `hessian` may be
-/// null when only the value is wanted (the gradient is then not filled).
+/// null when only the value is wanted (the gradient then lacks the ∇a
+/// term and is not ∇f).
 template <class T>
 ScalarSample<T> blend_super_elliptic_angle(const Blend& blend, const ScalarSample<T>& first,
                                            const ScalarSample<T>& second, const AngleHessianProducts<T>* hessian) {
