@@ -272,6 +272,15 @@ TEST(SkeletonBlend, NestedNodesAreLocatedLikeTheFile) {
                            "a sum blend needs at least one child");
 }
 
+TEST(SkeletonBlend, MovedFromSkeletonIsEmptyAndUsable) {
+  Skeleton source = blended(Blend::union_max(), children());
+  const double expected = source.value(Vec3(0.2, 0.1, 0));
+  const Skeleton moved(std::move(source));
+  EXPECT_EQ(moved.value(Vec3(0.2, 0.1, 0)), expected);
+  EXPECT_TRUE(source.empty());  // NOLINT(bugprone-use-after-move): the documented state
+  EXPECT_EQ(source.value(Vec3(0.2, 0.1, 0)), 0.0);
+}
+
 TEST(SkeletonBlend, SkeletonPointsReachEveryLeaf) {
   Skeleton skeleton;
   const Skeleton::NodeId node = skeleton.add_blend(Blend::union_max());

@@ -63,6 +63,12 @@ class Skeleton {
   Skeleton();
   /// The sum of `primitives` (the top-level list), surface level `iso`.
   explicit Skeleton(std::vector<Primitive> primitives, double iso = 1.0);
+  Skeleton(const Skeleton&) = default;
+  Skeleton& operator=(const Skeleton&) = default;
+  /// Moves leave `other` an empty skeleton (f = 0), still safe to use.
+  Skeleton(Skeleton&& other);
+  Skeleton& operator=(Skeleton&& other);
+  void swap(Skeleton& other) noexcept;
 
   /// Adds `primitive` as the last child of blend node `parent`; returns its
   /// index in primitives().

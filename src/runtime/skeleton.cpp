@@ -44,6 +44,22 @@ Skeleton::Skeleton(std::vector<Primitive> primitives, double iso) : Skeleton() {
   for (Primitive& primitive : primitives) add(std::move(primitive));
 }
 
+Skeleton::Skeleton(Skeleton&& other) : Skeleton() { swap(other); }
+
+Skeleton& Skeleton::operator=(Skeleton&& other) {
+  Skeleton taken(std::move(other));
+  swap(taken);
+  return *this;
+}
+
+void Skeleton::swap(Skeleton& other) noexcept {
+  primitives_.swap(other.primitives_);
+  primitive_locations_.swap(other.primitive_locations_);
+  nodes_.swap(other.nodes_);
+  std::swap(iso_, other.iso_);
+  cache_.swap(other.cache_);
+}
+
 std::string Skeleton::child_location(NodeId parent) const {
   const std::size_t position = nodes_[parent].children.size();
   return parent == root ? fmt::format("primitives[{}]", position)
