@@ -160,7 +160,9 @@ void bench_brute_force(benchmark::State& state) {
   const Skeleton skeleton = make_skeleton(segments());
   const int stride = config.grid / config.sub_grid;
   for (auto _ : state) {
-    double checksum = run_grid(stride, "brute force", [&](const Vec3& p) { return skeleton.value_and_gradient(p); });
+    double checksum = run_grid(stride, "brute force", [&](const Vec3& p) {
+      return skeleton.value_and_gradient(p, Skeleton::Acceleration::plain);  // no index: every primitive
+    });
     benchmark::DoNotOptimize(checksum);
   }
   set_per_point(state, stride);
@@ -182,7 +184,9 @@ void bench_uniform_grid(benchmark::State& state, bool sub_grid) {
   if (sub_grid) {
     const Skeleton skeleton = make_skeleton(segments());
     std::vector<FieldSample> brute, fast;
-    run_grid(stride, "check", [&](const Vec3& p) { return skeleton.value_and_gradient(p); }, &brute);
+    run_grid(
+        stride, "check",
+        [&](const Vec3& p) { return skeleton.value_and_gradient(p, Skeleton::Acceleration::plain); }, &brute);
     run_grid(stride, "check", [&](const Vec3& p) { return grid.value_and_gradient(p); }, &fast);
     double diff = 0, scale = 0;
     for (std::size_t k = 0; k < brute.size(); ++k) {

@@ -2,7 +2,9 @@
 // input is rejected with a message that names the problem and its JSON path.
 #include "skelconv/skeleton_file.hpp"
 
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -73,7 +75,7 @@ TEST(SkeletonFileErrors, DocumentShape) {
   expect_error("[]", "the document must be an object {\"primitives\": [...]}, got an array []");
   expect_error("{}", "missing field \"primitives\"");
   expect_error(R"({"primitives": {}})", "primitives: must be an array, got an object");
-  expect_error(R"({"primitives": [], "comment": "x"})", "unknown field \"comment\" (allowed: \"primitives\")");
+  expect_error(R"({"primitives": [], "comment": "x"})", "unknown field \"comment\" (allowed: \"primitives\", \"iso\")");
   expect_error(R"({"primitives": [3]})", "primitives[0]: must be an object, got 3");
 }
 
@@ -102,7 +104,7 @@ TEST(SkeletonFileErrors, UnknownNames) {
                "primitives[0].kernel.family: unknown family \"gaussian\" "
                "(supported: \"inverse\", \"cauchy\", \"compact\")");
   expect_error(R"({"primitives": [{"type": "triangle"}]})",
-               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\", \"scalis_segment\", \"scalis_triangle\")");
+               "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\", \"scalis_segment\", \"scalis_triangle\", \"point\")");
 }
 
 TEST(SkeletonFileErrors, DuplicateFields) {
@@ -254,6 +256,116 @@ TEST(SkeletonFileErrors, ScalisTriangleShapeAndValues) {
                    "}]}",
                "primitives[0]: unknown field \"s\" for a scalis_triangle (allowed: \"type\", \"vertices\", "
                "\"radius\", \"kernel\", \"iso\")");
+}
+
+// --- Point primitives, blend nodes and iso (docs/cli.md) --------------------
+
+constexpr const char* cauchy_kernel = R"({"family": "cauchy", "degree": 4, "s": 2})";
+
+/// A point primitive with extra members `extra` (",...").
+std::string point(const std::string& extra = "", const std::string& kernel = cauchy_kernel) {
+  return R"({"type": "point", "center": [0, 0, 0], "kernel": )" + kernel + extra + "}";
+}
+
+/// A document whose primitives[0] is `element`, with top-level `extra`.
+std::string document(const std::string& element, const std::string& extra = "") {
+  return R"({"primitives": [)" + element + "]" + extra + "}";
+}
+
+TEST(SkeletonFile, BlendTreeLoads) {
+  const Skeleton skeleton = parse_skeleton_json(R"({"iso": 0.5, "primitives": [
+    {"type": "point", "center": [0, 0, 0], "kernel": {"family": "compact", "degree": 4, "R": 1}, "weight": 2},
+    {"blend": "union", "children": [
+      {"blend": "super_elliptic", "t": 2, "r": [0.2, 0.3], "children": [
+        {"type": "point", "center": [1, 0, 0], "kernel": {"family": "cauchy", "degree": 4, "s": 2}},
+        {"type": "segment", "a": [0, 1, 0], "b": [1, 1, 0], "kernel": {"family": "inverse", "degree": 3}}]},
+      {"blend": "sum", "weights": [1.5], "children": [
+        {"type": "point", "center": [3, 0, 0], "kernel": {"family": "inverse", "degree": 2}}]}]}]})");
+  EXPECT_EQ(skeleton.iso(), 0.5);
+  ASSERT_EQ(skeleton.size(), 4u);
+  EXPECT_EQ(std::get<PointPrimitive>(skeleton.primitives()[0]).weight(), 2.0);
+  EXPECT_EQ(skeleton.location(2), "primitives[1].children[0].children[1]");
+  EXPECT_EQ(skeleton.location(3), "primitives[1].children[1].children[0]");
+  EXPECT_EQ(skeleton.blend(2).iso, 0.5);  // inherited from the file
+  EXPECT_EQ(skeleton.blend(2).r, (std::vector<double>{0.2, 0.3}));
+  EXPECT_EQ(skeleton.value(Vec3(3, 0, 0)), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(parse_skeleton_json(R"({"primitives": []})").iso(), 1.0);  // the default
+}
+
+TEST(SkeletonFileErrors, PointPrimitives) {
+  expect_error(document(point(R"(, "weight": 0)")), "primitives[0].weight: must be non-zero: the primitive would "
+                                                    "contribute nothing");
+  expect_error(document(point(R"(, "weight": [1, 2])")),
+               "primitives[0].weight: must be a number (a point's weight is a scalar factor), got an array [1,2]");
+  expect_error(document(point(R"(, "radius": 1)")),
+               "primitives[0]: unknown field \"radius\" for a point (allowed: \"type\", \"center\", \"kernel\", "
+               "\"weight\")");
+  expect_error(document(R"({"type": "point", "kernel": {"family": "inverse", "degree": 2}})"),
+               "primitives[0]: missing field \"center\"");
+  expect_error(document(point("", R"({"family": "compact", "degree": 1, "R": 1})")),
+               "primitives[0].kernel.degree: unsupported degree 1 for the compact family on a point; supported: "
+               "2..16");
+  expect_error(document(point("", R"({"family": "cauchy", "degree": 2, "s": -1})")),
+               "primitives[0].kernel.s: must be > 0, got -1");
+}
+
+TEST(SkeletonFileErrors, BlendParameters) {
+  const std::string two = "\"children\": [" + point() + ", " + point() + "]";
+  expect_error(document(R"({"blend": "super_elliptic", "t": 0, "r": 0.5, )" + two + "}"),
+               "primitives[0].t: must be > 0, got 0");
+  expect_error(document(R"({"blend": "super_elliptic", "t": -2, "r": 0.5, )" + two + "}"),
+               "primitives[0].t: must be > 0, got -2");
+  expect_error(document(R"({"blend": "super_elliptic", "t": 2, "r": 0, )" + two + "}"),
+               "primitives[0].r: must be > 0, got 0");
+  expect_error(document(R"({"blend": "super_elliptic", "t": 2, "r": [0.5, -1], )" + two + "}"),
+               "primitives[0].r[1]: must be > 0, got -1");
+  expect_error(document(R"({"blend": "super_elliptic", "t": 2, "r": [0.5, 1, 2], )" + two + "}"),
+               "primitives[0].r: must have one entry per child (2) or be a single number, got 3");
+  expect_error(document(R"({"blend": "super_elliptic", "t": 2, "r": 1, "iso": 0, )" + two + "}"),
+               "primitives[0].iso: must be > 0, got 0");
+  expect_error(document(R"({"blend": "super_elliptic", "r": 1, )" + two + "}"),
+               "primitives[0]: missing field \"t\"");
+  expect_error(document(R"({"blend": "super_elliptic", "t": 2, "r": 1, "angle_weighted": true, "children": [)" +
+                        point() + "]}"),
+               "primitives[0].angle_weighted: the angle-weighted super_elliptic blend is binary: it needs exactly 2 "
+               "children, got 1");
+  expect_error(document(R"({"blend": "super_elliptic", "t": 2, "r": 1, "angle_weighted": 1, )" + two + "}"),
+               "primitives[0].angle_weighted: must be true or false, got 1");
+  expect_error(document(R"({"blend": "sum", "weights": [1], )" + two + "}"),
+               "primitives[0].weights: must have one entry per child (2), got 1");
+  expect_error(document(R"({"blend": "sum", "weights": [1, 0], )" + two + "}"),
+               "primitives[0].weights[1]: must be non-zero: a zero weight removes the child");
+}
+
+TEST(SkeletonFileErrors, BlendShape) {
+  expect_error(document(R"({"blend": "union", "children": []})"),
+               "primitives[0].children: a union blend needs at least one child");
+  expect_error(document(R"({"blend": "smooth_union", "children": [)" + point() + "]}"),
+               "primitives[0].blend: unknown blend \"smooth_union\" (supported: \"sum\", \"union\", "
+               "\"super_elliptic\")");
+  expect_error(document(R"({"blend": "union", "t": 2, "children": [)" + point() + "]}"),
+               "primitives[0]: unknown field \"t\" for a union blend (allowed: \"blend\", \"children\")");
+  expect_error(document(R"({"blend": "sum"})"), "primitives[0]: missing field \"children\"");
+  expect_error(document(R"({"blend": "sum", "children": {}})"),
+               "primitives[0].children: must be an array of primitives and blend nodes, got an object");
+  expect_error(document(R"({"children": []})"),
+               "primitives[0]: missing field \"blend\" (a node with \"children\" is a blend node)");
+}
+
+TEST(SkeletonFileErrors, ErrorsDeepInTheTreeReadLikeTheFile) {
+  expect_error(document(point() + R"(, {"blend": "union", "children": [{"type": "segment", "a": [0,0,0],
+                 "b": [1,0,0], "kernel": {"family": "compact", "degree": 4, "R": -1}}]})"),
+               "primitives[1].children[0].kernel.R: must be > 0, got -1");
+  expect_error(document(R"({"blend": "sum", "children": [{"blend": "union", "children": [)" + point() + ", " +
+                        point(R"(, "wieght": 2)") + "]}]}"),
+               "primitives[0].children[0].children[1]: unknown field \"wieght\" for a point (allowed: \"type\", "
+               "\"center\", \"kernel\", \"weight\")");
+}
+
+TEST(SkeletonFileErrors, FileIso) {
+  expect_error(document(point(), R"(, "iso": 0)"), "iso: must be > 0, got 0");
+  expect_error(document(point(), R"(, "iso": -1)"), "iso: must be > 0, got -1");
+  expect_error(document(point(), R"(, "iso": "1")"), "iso: must be a number, got a string \"1\"");
 }
 
 TEST(SkeletonFileErrors, FilesThatCannotBeRead) {

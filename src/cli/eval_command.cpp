@@ -2,15 +2,18 @@
 #include "eval_command.hpp"
 
 #include <cstdio>
+#include <exception>
 #include <iterator>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "exit_status.hpp"
 #include "point_lines.hpp"
 #include "skelconv/errors.hpp"
+#include "skelconv/field/batch.hpp"
 #include "skelconv/skeleton_file.hpp"
 
 namespace skelconv::cli {
@@ -19,8 +22,12 @@ namespace {
 constexpr const char* eval_footer = R"(
 Input (stdin):  one point "x y z" per line, numbers separated by blanks;
                 blank lines are skipped.
-Output (stdout): one line "f gx gy gz" per point: the field f = sum of the
-                primitives' fields and its gradient, printed with %.17g.
+Output (stdout): one line "f gx gy gz" per point: the field f of the
+                skeleton (the sum of the top-level primitives and blend
+                nodes) and its gradient, printed with %.17g; the surface
+                is where f equals the file's "iso" (default 1).
+                Points are evaluated on every core (--threads), with the
+                same output bytes whatever the thread count.
                 On an inverse-kernel segment or polygon itself f and the
                 gradient are printed as "inf".
 On any error nothing is written to stdout and one "skelconv: error: ..." line
@@ -37,30 +44,62 @@ std::string read_standard_input() {
   return text;
 }
 
-/// Evaluates every point line of `input`, returning the output text.
-/// Throws InputError / EvaluationError located at "line N".
-std::string evaluate_lines(const Skeleton& skeleton, std::string_view input) {
-  std::string output;
+/// The points of `input`, one per non-blank line, with their line numbers,
+/// up to the first bad line (whose InputError, located at "line N", is
+/// returned instead of thrown: a point before it may fail first).
+struct PointList {
+  std::vector<Vec3> points;
+  std::vector<std::size_t> line_numbers;
+  std::exception_ptr bad_line;
+};
+
+PointList read_points(std::string_view input) {
+  PointList list;
   std::size_t line_number = 0;
   while (!input.empty()) {
     const std::size_t end = input.find('\n');
     const std::string_view line = input.substr(0, end);
     input.remove_prefix(end == std::string_view::npos ? input.size() : end + 1);
     ++line_number;
-
-    const std::string where = fmt::format("line {}", line_number);
-    std::optional<Vec3> point;
     try {
-      point = parse_point_line(line);
-      if (!point) continue;  // blank line
-      const FieldSample sample = skeleton.value_and_gradient(*point);
-      fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g} {:.17g} {:.17g}\n", sample.value,
-                     sample.gradient.x(), sample.gradient.y(), sample.gradient.z());
+      if (const std::optional<Vec3> point = parse_point_line(line)) {
+        list.points.push_back(*point);
+        list.line_numbers.push_back(line_number);
+      }
     } catch (const InputError& error) {
-      throw InputError(error.what(), where);
-    } catch (const EvaluationError& error) {
-      throw EvaluationError(error.what(), where);
+      list.bad_line = std::make_exception_ptr(InputError(error.what(), fmt::format("line {}", line_number)));
+      break;
     }
+  }
+  return list;
+}
+
+/// Rethrows a point's error located at its line.
+[[noreturn]] void rethrow_at_line(const std::exception_ptr& error, std::size_t line_number) {
+  const std::string where = fmt::format("line {}", line_number);
+  try {
+    std::rethrow_exception(error);
+  } catch (const InputError& located) {
+    throw InputError(located.what(), where);
+  } catch (const EvaluationError& located) {
+    throw EvaluationError(located.what(), where);
+  }
+}
+
+/// Evaluates every point line of `input` (all cores, field/batch.hpp),
+/// returning the output text. Throws InputError / EvaluationError located
+/// at "line N", the first failing line whatever the thread count.
+std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, unsigned threads) {
+  const PointList list = read_points(input);
+  BatchOptions options;
+  options.threads = threads;
+  const BatchResult result = evaluate_batch(skeleton, list.points, options);
+  if (result.failure) rethrow_at_line(result.failure->error, list.line_numbers[result.failure->index]);
+  if (list.bad_line) std::rethrow_exception(list.bad_line);
+  std::string output;
+  for (const FieldSample& sample : result.samples) {
+    fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g} {:.17g} {:.17g}\n", sample.value,
+                   sample.gradient.x(), sample.gradient.y(), sample.gradient.z());
   }
   return output;
 }
@@ -70,6 +109,9 @@ std::string evaluate_lines(const Skeleton& skeleton, std::string_view input) {
 CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
   CLI::App* eval = app.add_subcommand("eval", "Evaluate the field and its gradient at points read from stdin");
   eval->add_option("SKELETON", options.skeleton_path, "Skeleton file (JSON)")->required();
+  eval->add_option("--threads", options.threads,
+                   "Threads evaluating the points (0: every core); the output is the same for any value")
+      ->check(CLI::NonNegativeNumber);
   eval->footer(eval_footer);
   return eval;
 }
@@ -78,7 +120,7 @@ int run_eval(const EvalOptions& options) {
   std::string output;
   try {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
-    output = evaluate_lines(skeleton, read_standard_input());
+    output = evaluate_lines(skeleton, read_standard_input(), options.threads);
   } catch (const InputError& error) {
     report_error(error.what());
     return exit_bad_input;

@@ -2,7 +2,11 @@
 //
 // Reads query points from stdin, one "x y z" per line, and writes one line
 // "f gx gy gz" per point (printf "%.17g": round-trips every double; +inf is
-// printed "inf"). Blank lines are skipped and produce no output line.
+// printed "inf"). Blank lines are skipped and produce no output line. The
+// points are evaluated by evaluate_batch (skelconv/field/batch.hpp) on
+// --threads threads (default: every core), same bytes for any count; the
+// error reported is the one of the first failing line, as if evaluated in
+// order.
 //
 // All-or-nothing: output is buffered and written only after every point has
 // been evaluated, so on any error stdout stays empty and stderr holds one
@@ -17,6 +21,7 @@ namespace skelconv::cli {
 
 struct EvalOptions {
   std::string skeleton_path;
+  unsigned threads = 0;  ///< --threads: 0 = every core (field/batch.hpp)
 };
 
 /// Registers the `eval` subcommand on `app`, filling `options` when parsed.

@@ -351,31 +351,145 @@ Primitive read_scalis_triangle(const Json& value, const std::string& path) {
       path, [&] { return ScalisTriangle(vertices, {radius[0], radius[1], radius[2]}, kernel, iso); });
 }
 
+// --- Point (skelconv/primitives/point.hpp) ---------------------------------
+
+/// {"type": "point", "center": P, "kernel": K, "weight": w (optional, 1)}.
+Primitive read_point_primitive(const Json& value, const std::string& path) {
+  reject_unknown_keys(value, path, {"type", "center", "kernel", "weight"}, " for a point");
+  const Vec3 center = read_point(require_field(value, path, "center"), path + ".center");
+  const KernelSpec kernel = read_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  double weight = 1.0;
+  if (const auto found = value.find("weight"); found != value.end()) {
+    if (found->is_array()) {
+      throw InputError("must be a number (a point's weight is a scalar factor), got " + describe(*found),
+                       path + ".weight");
+    }
+    weight = read_number(*found, path + ".weight");
+  }
+  return construct_located(path, [&] { return PointPrimitive(center, kernel, weight); });
+}
+
 // ---------------------------------------------------------------------------
 
 Primitive read_primitive(const Json& value, const std::string& path) {
-  require_object(value, path);
   const std::string type = read_string(require_field(value, path, "type"), path + ".type");
   if (type == "segment") return read_segment(value, path);
   if (type == "polygon") return read_polygon(value, path);
   if (type == "scalis_segment") return read_scalis_segment(value, path);
   if (type == "scalis_triangle") return read_scalis_triangle(value, path);
+  if (type == "point") return read_point_primitive(value, path);
   throw InputError(fmt::format("unknown primitive type \"{}\" (supported: {})", type,
-                               quoted_list({"segment", "polygon", "scalis_segment", "scalis_triangle"})),
+                               quoted_list({"segment", "polygon", "scalis_segment", "scalis_triangle", "point"})),
                    path + ".type");
+}
+
+// --- Blend nodes (skelconv/skeleton/blend.hpp) ------------------------------
+
+void read_element(const Json& value, const std::string& path, Skeleton& skeleton, Skeleton::NodeId parent);
+
+/// The JSON "blend" name.
+BlendKind read_blend_kind(const Json& value, const std::string& path) {
+  const std::string name = read_string(value, path);
+  const std::optional<BlendKind> kind = blend_from_name(name);
+  if (!kind) {
+    throw InputError(fmt::format("unknown blend \"{}\" (supported: {})", name,
+                                 quoted_list({"sum", "union", "super_elliptic"})),
+                     path);
+  }
+  return *kind;
+}
+
+/// "r": one number for every child, or an array with one per child.
+std::vector<double> read_band_widths(const Json& node, const std::string& path) {
+  const Json& r = require_field(node, path, "r");
+  if (r.is_array()) return read_numbers(r, path + ".r");
+  return {read_number(r, path + ".r")};
+}
+
+/// The parameters of the blend node at `path` (checked against its
+/// `child_count` children, so that a bad parameter is reported before the
+/// children are read). Nodes inherit the file's iso.
+Blend read_blend_parameters(const Json& node, const std::string& path, std::size_t child_count, double file_iso) {
+  Blend blend;
+  blend.kind = read_blend_kind(node["blend"], path + ".blend");
+  const std::string context = fmt::format(" for a {} blend", blend_name(blend.kind));
+  switch (blend.kind) {
+    case BlendKind::sum:
+      reject_unknown_keys(node, path, {"blend", "children", "weights"}, context);
+      if (const auto found = node.find("weights"); found != node.end()) {
+        blend.weights = read_numbers(*found, path + ".weights");
+      }
+      break;
+    case BlendKind::union_max:
+      reject_unknown_keys(node, path, {"blend", "children"}, context);
+      break;
+    case BlendKind::super_elliptic: {
+      reject_unknown_keys(node, path, {"blend", "children", "t", "r", "iso", "angle_weighted"}, context);
+      blend.t = read_number(require_field(node, path, "t"), path + ".t");
+      blend.r = read_band_widths(node, path);
+      blend.iso = file_iso;
+      if (const auto found = node.find("iso"); found != node.end()) blend.iso = read_number(*found, path + ".iso");
+      if (const auto found = node.find("angle_weighted"); found != node.end()) {
+        if (!found->is_boolean()) {
+          throw InputError("must be true or false, got " + describe(*found), path + ".angle_weighted");
+        }
+        blend.angle_weighted = found->get<bool>();
+      }
+      break;
+    }
+  }
+  try {
+    validate_blend(blend, child_count);
+  } catch (const InputError& error) {
+    throw error.inside(path);
+  }
+  return blend;
+}
+
+/// {"blend": NAME, "children": [...], parameters}: a node and, depth-first,
+/// its children.
+void read_blend_node(const Json& value, const std::string& path, Skeleton& skeleton, Skeleton::NodeId parent) {
+  const Json& children = require_field(value, path, "children");
+  if (!children.is_array()) {
+    throw InputError("must be an array of primitives and blend nodes, got " + describe(children), path + ".children");
+  }
+  const Skeleton::NodeId node =
+      skeleton.add_blend(read_blend_parameters(value, path, children.size(), skeleton.iso()), parent);
+  for (std::size_t k = 0; k < children.size(); ++k) {
+    read_element(children[k], fmt::format("{}.children[{}]", path, k), skeleton, node);
+  }
+}
+
+/// A primitive or a blend node, added under `parent`.
+void read_element(const Json& value, const std::string& path, Skeleton& skeleton, Skeleton::NodeId parent) {
+  require_object(value, path);
+  if (value.contains("blend")) return read_blend_node(value, path, skeleton, parent);
+  if (!value.contains("type") && value.contains("children")) {
+    throw InputError("missing field \"blend\" (a node with \"children\" is a blend node)", path);
+  }
+  skeleton.add(read_primitive(value, path), parent);
+}
+
+/// The optional top-level "iso" (default 1): the level of the surface
+/// (checked by Skeleton::set_iso).
+double read_file_iso(const Json& document) {
+  const auto found = document.find("iso");
+  return found == document.end() ? 1.0 : read_number(*found, "iso");
 }
 
 Skeleton read_skeleton(const Json& document) {
   if (!document.is_object()) {
     throw InputError("the document must be an object {\"primitives\": [...]}, got " + describe(document));
   }
-  reject_unknown_keys(document, "", {"primitives"});
+  reject_unknown_keys(document, "", {"primitives", "iso"});
+  Skeleton skeleton;
+  skeleton.set_iso(read_file_iso(document));
   const Json& primitives = require_field(document, "", "primitives");
   if (!primitives.is_array()) throw InputError("must be an array, got " + describe(primitives), "primitives");
-  Skeleton skeleton;
   for (std::size_t k = 0; k < primitives.size(); ++k) {
-    skeleton.add(read_primitive(primitives[k], fmt::format("primitives[{}]", k)));
+    read_element(primitives[k], fmt::format("primitives[{}]", k), skeleton, Skeleton::root);
   }
+  skeleton.validate();
   return skeleton;
 }
 

@@ -1,0 +1,43 @@
+// skelconv/kernels/cauchy.hpp — the Cauchy kernel c_s^i(r) = (1 + s r²)^(−i/2)
+// (SPEC §1, Hubert 2012 §2.1) as a radial kernel trait (radial_kernel.hpp).
+#pragma once
+
+#include <array>
+#include <limits>
+#include <string_view>
+
+#include "skelconv/kernels/radial_kernel.hpp"
+
+namespace skelconv::kernels {
+
+struct CauchyKernel {
+  static constexpr KernelFamily family = KernelFamily::cauchy;
+  static constexpr std::string_view name = "cauchy";
+  static constexpr std::array<std::string_view, 1> parameters{"s"};
+  static constexpr int min_degree = 1, max_degree = 16;  ///< as on segments
+  static constexpr bool singular_at_zero = false;
+
+  int degree = 4;
+  double s = 1.0;  ///< sharpness, > 0
+
+  explicit CauchyKernel(const KernelSpec& spec) : degree(spec.degree), s(spec.s) {
+    require_positive(s, "kernel.s");
+    require_degree(name, degree, min_degree, max_degree);
+  }
+
+  double support_radius() const { return std::numeric_limits<double>::infinity(); }
+
+  /// (1 + s r²)^(−i/2).
+  template <class T>
+  T value(const T& r) const {
+    return T(1) / half_integer_power(T(1) + T(s) * r * r, degree);
+  }
+  /// −i s r (1 + s r²)^(−i/2 − 1).
+  template <class T>
+  T derivative(const T& r) const {
+    const T q = T(1) + T(s) * r * r;
+    return -T(degree) * T(s) * r / (half_integer_power(q, degree) * q);
+  }
+};
+
+}  // namespace skelconv::kernels

@@ -1,0 +1,48 @@
+// skelconv/kernels/compact.hpp — the compact-support kernel
+// k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0 (SPEC §1, Hubert 2012 §2.1)
+// as a radial kernel trait (radial_kernel.hpp).
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "skelconv/kernels/radial_kernel.hpp"
+
+namespace skelconv::kernels {
+
+struct CompactKernel {
+  static constexpr KernelFamily family = KernelFamily::compact;
+  static constexpr std::string_view name = "compact";
+  static constexpr std::array<std::string_view, 1> parameters{"R"};
+  /// As on segments: i ≥ 2 so that dK/dr stays bounded at r = R
+  /// (i = 1 has dK/dr → −∞ there).
+  static constexpr int min_degree = 2, max_degree = 16;
+  static constexpr bool singular_at_zero = false;
+
+  int degree = 4;
+  double R = 1.0;  ///< support radius, > 0
+
+  explicit CompactKernel(const KernelSpec& spec) : degree(spec.degree), R(spec.R) {
+    require_positive(R, "kernel.R");
+    require_degree(name, degree, min_degree, max_degree);
+  }
+
+  double support_radius() const { return R; }
+
+  /// (1 − r²/R²)^(i/2) inside the support, exactly 0 from r = R on.
+  template <class T>
+  T value(const T& r) const {
+    const T u = T(1) - (r / T(R)) * (r / T(R));
+    return u > T(0) ? half_integer_power(u, degree) : T(0);
+  }
+  /// −(i r / R²) (1 − r²/R²)^(i/2 − 1) inside, 0 outside (for i = 2 the
+  /// one-sided value at r = R: the derivative jumps there).
+  template <class T>
+  T derivative(const T& r) const {
+    const T u = T(1) - (r / T(R)) * (r / T(R));
+    if (!(u > T(0))) return T(0);
+    return -T(degree) * r / (T(R) * T(R)) * half_integer_power(u, degree - 2);
+  }
+};
+
+}  // namespace skelconv::kernels

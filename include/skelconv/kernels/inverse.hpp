@@ -1,0 +1,43 @@
+// skelconv/kernels/inverse.hpp — the power-inverse kernel p^i(r) = r^(−i)
+// (SPEC §1, Hubert 2012 §2.1) as a radial kernel trait (radial_kernel.hpp).
+#pragma once
+
+#include <array>
+#include <limits>
+#include <string_view>
+
+#include "skelconv/integer_power.hpp"
+#include "skelconv/kernels/radial_kernel.hpp"
+
+namespace skelconv::kernels {
+
+struct InverseKernel {
+  static constexpr KernelFamily family = KernelFamily::inverse;
+  static constexpr std::string_view name = "inverse";
+  static constexpr std::array<std::string_view, 0> parameters{};
+  /// The segments' range (docs/cli.md), so that a file can turn a segment
+  /// into a point without changing its kernel.
+  static constexpr int min_degree = 1, max_degree = 16;
+  static constexpr bool singular_at_zero = true;
+
+  int degree = 3;
+
+  explicit InverseKernel(const KernelSpec& spec) : degree(spec.degree) {
+    require_degree(name, degree, min_degree, max_degree);
+  }
+
+  double support_radius() const { return std::numeric_limits<double>::infinity(); }
+
+  /// r^(−i); r > 0 (r = 0 is the singular centre, handled by the caller).
+  template <class T>
+  T value(const T& r) const {
+    return integer_power(r, -degree);
+  }
+  /// −i r^(−i−1).
+  template <class T>
+  T derivative(const T& r) const {
+    return -T(degree) * integer_power(r, -degree - 1);
+  }
+};
+
+}  // namespace skelconv::kernels

@@ -1,0 +1,62 @@
+// skelconv/kernels/radial_kernel.hpp — what a radial kernel trait is.
+//
+// A kernel family is described ONCE, as a small struct (a "trait") that the
+// point primitive (skelconv/primitives/point.hpp), the JSON reader and the
+// bounding-volume index (skelconv/field/support_index.hpp) use without
+// switching on the family:
+//
+//   struct SomeKernel {
+//     static constexpr KernelFamily family;          // the enum value
+//     static constexpr std::string_view name;        // JSON "family" name
+//     static constexpr std::array<std::string_view, N> parameters;  // JSON keys besides
+//                                                     // "family" and "degree"
+//     static constexpr int min_degree, max_degree;   // degrees i on a point
+//     static constexpr bool singular_at_zero;        // K(0) = +inf (inverse)
+//     explicit SomeKernel(const KernelSpec&);        // validates: InputError at
+//                                                     // "kernel.degree", "kernel.<param>"
+//     double support_radius() const;                 // K(r) = 0 for r >= it; +inf if none
+//     template <class T> T value(const T& r) const;       // K(r), r >= 0
+//     template <class T> T derivative(const T& r) const;  // dK/dr, r >= 0
+//   };
+//
+// value() and derivative() are templates on the scalar type (double, long
+// double, boost::multiprecision numbers…) so that tests can evaluate the same
+// formula in extended precision. A new family (issue 13: soft, wyvill,
+// ferley, gaussian) is one more such struct and one more entry in
+// RadialKernel (skelconv/kernels/kernel_list.hpp).
+//
+// The segment and polygon primitives keep their generated closed forms
+// (generated/, docs/generated_api.md): the traits describe the kernel, not the
+// convolution.
+#pragma once
+
+#include <cmath>
+#include <string_view>
+
+#include "skelconv/errors.hpp"
+#include "skelconv/kernel_spec.hpp"
+
+namespace skelconv::kernels {
+
+/// (1 + u)^(−i/2)-style half-integer powers: x^(n/2) for x ≥ 0 and n ≥ 0,
+/// by integer powering and at most one square root (exact for even n).
+template <class T>
+T half_integer_power(const T& x, int n) {
+  using std::sqrt;
+  T result(1);
+  T base = x;
+  for (int k = n / 2; k > 0; k >>= 1) {  // x^⌊n/2⌋ by binary powering
+    if (k & 1) result *= base;
+    base *= base;
+  }
+  if (n % 2 != 0) result *= sqrt(x);
+  return result;
+}
+
+/// Throws InputError at "kernel.degree" unless min ≤ degree ≤ max.
+void require_degree(std::string_view family, int degree, int min_degree, int max_degree);
+
+/// Throws InputError at `where` ("kernel.s") unless value is finite and > 0.
+void require_positive(double value, const char* where);
+
+}  // namespace skelconv::kernels

@@ -1,0 +1,20 @@
+// skelconv/primitives/primitive.hpp — one skeleton element, any type.
+//
+// Segments (SPEC §2), polygons (SPEC §3), SCALIS segments and triangles
+// (SPEC §4) and points (primitives/point.hpp); every alternative provides
+// value(), gradient() and value_and_gradient() at a Vec3.
+#pragma once
+
+#include <variant>
+
+#include "skelconv/polygon.hpp"
+#include "skelconv/primitives/point.hpp"
+#include "skelconv/scalis_segment.hpp"
+#include "skelconv/scalis_triangle.hpp"
+#include "skelconv/segment.hpp"
+
+namespace skelconv {
+
+using Primitive = std::variant<Segment, Polygon, ScalisSegment, ScalisTriangle, PointPrimitive>;
+
+}  // namespace skelconv

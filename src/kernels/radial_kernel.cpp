@@ -1,0 +1,20 @@
+// The checks shared by the radial kernel traits (skelconv/kernels/radial_kernel.hpp).
+#include "skelconv/kernels/radial_kernel.hpp"
+
+#include <fmt/format.h>
+
+#include "../runtime/input_checks.hpp"
+
+namespace skelconv::kernels {
+
+void require_degree(std::string_view family, int degree, int min_degree, int max_degree) {
+  if (degree < min_degree || degree > max_degree) {
+    throw InputError(fmt::format("unsupported degree {} for the {} family on a point; supported: {}..{}", degree,
+                                 family, min_degree, max_degree),
+                     "kernel.degree");
+  }
+}
+
+void require_positive(double value, const char* where) { detail::require_positive_parameter(value, where); }
+
+}  // namespace skelconv::kernels

@@ -1,0 +1,31 @@
+// Implementation of skelconv/primitives/point.hpp.
+#include "skelconv/primitives/point.hpp"
+
+#include <fmt/format.h>
+
+#include "../runtime/input_checks.hpp"
+
+namespace skelconv {
+
+PointPrimitive::PointPrimitive(const Vec3& center, const KernelSpec& kernel, double weight)
+    : center_(center), kernel_(kernel), radial_(kernels::make_radial_kernel(kernel)), weight_(weight) {
+  detail::require_finite_point(center, "center");
+  if (!std::isfinite(weight)) throw InputError(fmt::format("must be finite, got {}", weight), "weight");
+  if (weight == 0.0) throw InputError("must be non-zero: the primitive would contribute nothing", "weight");
+}
+
+FieldSample PointPrimitive::value_and_gradient(const Vec3& p) const {
+  detail::require_finite_query_point(p);
+  if ((p - center_).norm() >= support_radius()) return {0.0, Vec3::Zero()};
+  const PointFieldSample<double> sample = std::visit(
+      [&](const auto& kernel) { return point_field(kernel, to_array(center_), weight_, to_array(p)); }, radial_);
+  const FieldSample result{sample.value, to_vec3(sample.gradient)};
+  const bool at_singular_centre = p == center_ && std::isinf(sample.value);
+  if (!at_singular_centre && !(std::isfinite(result.value) && result.gradient.allFinite())) {
+    throw EvaluationError(fmt::format("the point field overflowed double precision at P = {}, {} from its centre",
+                                      detail::format_point(p), (p - center_).norm()));
+  }
+  return result;
+}
+
+}  // namespace skelconv

@@ -1,0 +1,29 @@
+// src/skeleton/skeleton_index.hpp — the bounding-volume index of a Skeleton
+// (one SupportGrid per large sum node) and its once-only lazy construction.
+// Internal to skelconv_runtime.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "skelconv/field/support_grid.hpp"
+
+namespace skelconv::detail {
+
+struct SkeletonIndex {
+  /// grids[id]: the grid of node id's children, or none (not a sum node,
+  /// too few children, or no compact-support primitive child).
+  std::vector<std::optional<SupportGrid>> grids;
+};
+
+/// Built once per version of the skeleton; std::call_once lets any number
+/// of threads ask for it at once, and a validation error leaves it unbuilt
+/// (the next evaluation reports it again).
+struct IndexCache {
+  std::once_flag once;
+  std::unique_ptr<const SkeletonIndex> index;
+};
+
+}  // namespace skelconv::detail
