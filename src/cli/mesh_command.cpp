@@ -24,7 +24,8 @@ double default_iso(const Skeleton& /*skeleton*/) { return 1.0; }
 
 constexpr const char* mesh_footer = R"(
 Meshes the surface f = iso with CGAL Mesh_3 (Delaunay refinement from seeds on
-every component), projects every vertex onto the surface (|f - iso|/|grad f| <=
+every component; --method grid: OpenVDB volumeToMesh on a grid of spacing
+--size, faster, no topology guarantee below the grid spacing), projects every vertex onto the surface (|f - iso|/|grad f| <=
 1e-9 x the bounding-box diagonal) and writes the exact unit normals -grad f/|grad f|.
 Output: .ply (binary; --ascii for text) or .obj, chosen by the extension.
 Prints triangles, vertices, components, Euler characteristic, closed, manifold
@@ -69,6 +70,9 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh the surface f = iso of a skeleton into a PLY or OBJ file");
   mesh->add_option("SKELETON", options.skeleton_path, "Skeleton file (JSON)")->required();
   mesh->add_option("-o,--output", options.output_path, "Output mesh: .ply or .obj")->required();
+  mesh->add_option("--method", options.method,
+                   "cgal (default: CGAL Mesh_3, closed manifold, certified) or grid (OpenVDB, fast)")
+      ->check(CLI::IsMember({"cgal", "grid"}));
   mesh->add_option("--iso", options.iso, "Level c of the surface f = c (default 1)");
   mesh->add_option("--size", options.size, "Largest facet circumradius h (default: box diagonal / 50)");
   mesh->add_option("--distance", options.distance, "Largest facet-to-surface distance d (default h / 10)");
@@ -85,6 +89,7 @@ int run_mesh(const MeshCommandOptions& options) {
     check_output_path(options.output_path);
     MeshOptions mesh_options;
     mesh_options.iso = options.iso.value_or(default_iso(skeleton));
+    mesh_options.method = options.method == "grid" ? MeshMethod::grid : MeshMethod::cgal;
     mesh_options.size = options.size;
     mesh_options.distance = options.distance;
     if (!options.quiet) {

@@ -23,6 +23,7 @@ namespace skelconv::cli {
 struct MeshCommandOptions {
   std::string skeleton_path;
   std::string output_path;
+  std::string method = "cgal";
   std::optional<double> iso;
   std::optional<double> size;
   std::optional<double> distance;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cgal_surface_mesher.hpp"
+#include "grid_surface_mesher.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/surface_projection.hpp"
 #include "skelconv/mesh/surface_seeds.hpp"
@@ -97,18 +98,21 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
 
   const Clock::time_point refine_start = Clock::now();
   meter.report_progress(true);
-  TriangleMesh mesh = detail::cgal_surface_mesh({
-      .level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); },
-      .box = run.box,
-      .seeds = seeds,
-      .facet_size = run.size,
-      .facet_distance = run.distance,
-      .facet_angle = options.facet_angle,
-      // Intersections to 1/100 of the facet distance: CGAL's distance test
-      // then sees the surface, not the bisection error.
-      .relative_error_bound = run.distance / 100 / run.box.diagonal(),
-      .random_seed = options.random_seed,
-  });
+  const auto level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); };
+  TriangleMesh mesh = options.method == MeshMethod::grid
+                          ? detail::grid_surface_mesh({.level = level, .box = run.box, .voxel = run.size})
+                          : detail::cgal_surface_mesh({
+                                .level = level,
+                                .box = run.box,
+                                .seeds = seeds,
+                                .facet_size = run.size,
+                                .facet_distance = run.distance,
+                                .facet_angle = options.facet_angle,
+                                // Intersections to 1/100 of the facet distance: CGAL's
+                                // distance test then sees the surface, not the bisection.
+                                .relative_error_bound = run.distance / 100 / run.box.diagonal(),
+                                .random_seed = options.random_seed,
+                            });
   meter.report_progress(false);
   run.refine_seconds = seconds_since(refine_start);
   if (mesh.triangles.empty()) throw EvaluationError("the mesher produced no triangles");

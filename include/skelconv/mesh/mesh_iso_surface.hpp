@@ -6,7 +6,9 @@
 //   2. find a box containing the surface (bounding_region.hpp);
 //   3. seed every component from the skeleton points (surface_seeds.hpp);
 //   4. Delaunay-refine the surface with CGAL Mesh_3 from those seeds, manifold
-//      criteria, fixed random seed (src/mesh/cgal_surface_mesher.hpp);
+//      criteria, fixed random seed (src/mesh/cgal_surface_mesher.hpp); or,
+//      with MeshMethod::grid, sample the field on a uniform grid and
+//      extract the zero set with OpenVDB (src/mesh/grid_surface_mesher.hpp);
 //   5. project every vertex onto f = iso by Newton steps and set the exact
 //      normals (surface_projection.hpp).
 // Same field and options → same mesh, bit for bit.
@@ -29,10 +31,20 @@ struct MeshProgress {
   double seconds = 0.0;
 };
 
+/// How step 4 makes the triangles.
+enum class MeshMethod {
+  /// CGAL Mesh_3 Delaunay refinement: closed 2-manifold, adaptive, slow.
+  cgal,
+  /// OpenVDB volumeToMesh on a uniform grid of spacing `size`: fast, no
+  /// topological guarantee below the grid spacing (docs/mesh.md).
+  grid,
+};
+
 struct MeshOptions {
   double iso = 1.0;
-  /// Facet size h (CGAL facet_size: largest facet circumradius); default
-  /// the bounding box diagonal / 50.
+  MeshMethod method = MeshMethod::cgal;
+  /// Facet size h (CGAL facet_size: largest facet circumradius; the grid
+  /// method's grid spacing); default the bounding box diagonal / 50.
   std::optional<double> size;
   /// Facet distance d (CGAL facet_distance); default h / 10.
   std::optional<double> distance;
