@@ -11,7 +11,7 @@
 // bounding-volume structure): its cost grows with the primitive count.
 //
 // Usage: skelconv_bench_mesh [--smoke] [--min-primitives N] [--max-primitives N]
-//                            [--size H] [--kind "segment compact"]
+//                            [--size H] [--kind "segment compact"] [--method cgal|grid]
 //   --smoke: 10 primitives, segments only (ctest smoke run).
 // Times are CPU seconds of the process (the machine may be shared), the
 // field's part estimated by its share of the wall-clock time.
@@ -99,11 +99,12 @@ double iso_for(const Kind& kind) {
   return one.value(polygon ? Vec3(0.5, 0.2, 0.3) : Vec3(0.5, 0.3, 0));
 }
 
-void run(const Kind& kind, int count, double size) {
+void run(const Kind& kind, int count, double size, skelconv::MeshMethod method) {
   const skelconv::Skeleton skeleton = skelconv::parse_skeleton_json(walk_skeleton(kind, count));
   skelconv::MeshOptions options;
   options.iso = iso_for(kind);
   options.size = size;
+  options.method = method;
   skelconv::MeshReport report;
   const std::clock_t cpu_start = std::clock();
   const skelconv::TriangleMesh mesh = skelconv::mesh_iso_surface(skelconv::skeleton_field(skeleton), options, &report);
@@ -126,12 +127,16 @@ int main(int argc, char** argv) {
   double size = 0.12;
   int min_primitives = 10;
   std::string only_kind;  // empty: every kind
+  skelconv::MeshMethod method = skelconv::MeshMethod::cgal;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--smoke") == 0) smoke = true;
     if (std::strcmp(argv[i], "--max-primitives") == 0 && i + 1 < argc) max_primitives = std::atoi(argv[++i]);
     if (std::strcmp(argv[i], "--size") == 0 && i + 1 < argc) size = std::atof(argv[++i]);
     if (std::strcmp(argv[i], "--min-primitives") == 0 && i + 1 < argc) min_primitives = std::atoi(argv[++i]);
     if (std::strcmp(argv[i], "--kind") == 0 && i + 1 < argc) only_kind = argv[++i];
+    if (std::strcmp(argv[i], "--method") == 0 && i + 1 < argc) {
+      method = std::strcmp(argv[++i], "grid") == 0 ? skelconv::MeshMethod::grid : skelconv::MeshMethod::cgal;
+    }
   }
   std::printf("| primitives | count | triangles | wall s | CPU s | field CPU s | evaluations | µs/eval | "
               "mesher CPU s | triangles/s (CPU) | triangles/s without field |\n"
@@ -140,7 +145,7 @@ int main(int argc, char** argv) {
     for (const int count : {10, 100, 1000}) {
       if (count > max_primitives || count < min_primitives || (smoke && (count > 10 || &kind != &kinds[0]))) continue;
       if (!only_kind.empty() && only_kind != kind.name) continue;
-      run(kind, count, size);
+      run(kind, count, size, method);
     }
   }
 }
