@@ -90,6 +90,8 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   run.box = bounding_region(metered, iso);
   run.size = options.size.value_or(run.box.diagonal() / 50);
   run.distance = options.distance.value_or(run.size / 10);
+  // The grid method does not need the seeds, but computing them is what
+  // tells "no surface at this iso" apart from a surface the grid misses.
   const std::vector<Vec3> seeds = surface_seeds(metered, iso, run.box, {.spacing = run.size});
   if (seeds.empty()) {
     throw EvaluationError(fmt::format("no surface point found by the rays from the skeleton at iso {}", iso));
