@@ -1,6 +1,6 @@
 // skelconv — command-line front end of the runtime.
 //
-// Subcommands live in their own files (eval_command.*); add new ones next to
+// Subcommands live in their own files (eval_command.*, mesh_command.*); add new ones next to
 // it and register them below. The verifier is a separate executable (verify/).
 #include <exception>
 #include <string>
@@ -11,6 +11,7 @@
 #include "canal_command.hpp"
 #include "eval_command.hpp"
 #include "exit_status.hpp"
+#include "mesh_command.hpp"
 
 #ifndef SKELCONV_VERSION
 #error "SKELCONV_VERSION must be defined by the build (src/CMakeLists.txt)"
@@ -50,6 +51,8 @@ int main(int argc, char** argv) {
   const CLI::App* eval = add_eval_command(app, eval_options);
   CanalOptions canal_options;
   const CLI::App* canal = add_canal_command(app, canal_options);
+  MeshCommandOptions mesh_options;
+  const CLI::App* mesh = add_mesh_command(app, mesh_options);
 
   if (first_argument_is_unknown_subcommand(app, argc, argv)) {
     report_error(std::string("unknown subcommand \"") + argv[1] + "\" (available: " + subcommand_names(app) + ")");
@@ -67,6 +70,7 @@ int main(int argc, char** argv) {
   try {
     if (eval->parsed()) return run_eval(eval_options);
     if (canal->parsed()) return run_canal(canal_options);
+    if (mesh->parsed()) return run_mesh(mesh_options);
   } catch (const std::exception& error) {
     report_error(std::string("internal error: ") + error.what());
     return exit_evaluation_failed;
