@@ -11,6 +11,7 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/not_converged.hpp"
 #include "skelconv/scalis_compact.hpp"
+#include "skelconv/scalis_segment.hpp"
 #include "skelconv/stable_recurrence.hpp"
 
 namespace {
@@ -76,6 +77,19 @@ TEST(ConvergenceCap, CompactScalisPanelDepthCapThrows) {
   long double f = 0;
   EXPECT_NO_THROW(f = skelconv::scalis_compact_F(4, in, nullptr));
   EXPECT_TRUE(std::isfinite(f));
+}
+
+TEST(ConvergenceCap, GaussPanelsThatCannotAdvanceReport) {
+  // A SCALIS segment and P 1e-20 |AB| beyond its end, on its line: the Gauss
+  // panels grade towards a pole closer to t = 1 than double can step. Before
+  // issue 19 the panel loop never advanced (the call hung); now the runtime
+  // reports that the value could not be computed.
+  const skelconv::ScalisSegment segment(skelconv::Vec3(-1, 0, 0), skelconv::Vec3(0, 0, 0), 0.5, 0.5,
+                                        skelconv::ScalisKernel{skelconv::KernelFamily::inverse, 3, 1.0});
+  const skelconv::Vec3 p(1e-20, 0, 0);
+  EXPECT_THROW(segment.value(p), skelconv::EvaluationError);
+  // 1e-6 beyond the end is resolved (about 20 panels).
+  EXPECT_TRUE(std::isfinite(segment.value(skelconv::Vec3(1e-6, 0, 0))));
 }
 
 TEST(ConvergenceCap, RuntimeTurnsItIntoEvaluationError) {
