@@ -9,9 +9,9 @@
 
 #include "../src/runtime/convergence_guard.hpp"
 #include "skelconv/errors.hpp"
+#include "skelconv/gauss_moments.hpp"
 #include "skelconv/not_converged.hpp"
 #include "skelconv/scalis_compact.hpp"
-#include "skelconv/scalis_segment.hpp"
 #include "skelconv/stable_recurrence.hpp"
 
 namespace {
@@ -80,16 +80,16 @@ TEST(ConvergenceCap, CompactScalisPanelDepthCapThrows) {
 }
 
 TEST(ConvergenceCap, GaussPanelsThatCannotAdvanceReport) {
-  // A SCALIS segment and P 1e-20 |AB| beyond its end, on its line: the Gauss
-  // panels grade towards a pole closer to t = 1 than double can step. Before
-  // issue 19 the panel loop never advanced (the call hung); now the runtime
-  // reports that the value could not be computed.
-  const skelconv::ScalisSegment segment(skelconv::Vec3(-1, 0, 0), skelconv::Vec3(0, 0, 0), 0.5, 0.5,
-                                        skelconv::ScalisKernel{skelconv::KernelFamily::inverse, 3, 1.0});
-  const skelconv::Vec3 p(1e-20, 0, 0);
-  EXPECT_THROW(segment.value(p), skelconv::EvaluationError);
-  // 1e-6 beyond the end is resolved (about 20 panels).
-  EXPECT_TRUE(std::isfinite(segment.value(skelconv::Vec3(1e-6, 0, 0))));
+  // segment_moments_gauss_panels with the pole 1e-20 beyond t = 1 on the
+  // line (a = 1, b = 1 + 1e-20, a − b = −1e-20, D = 0): the first panel's
+  // step 0.9e-20 is below the rounding unit of t = 1. Before issue 19 the
+  // panel loop never advanced (the call hung); now it reports.
+  std::array<double, 2 * 11> out{};
+  EXPECT_THROW(skelconv::segment_moments_gauss_panels<double>(3, 5, 10, 1.0, 1.0, -1e-20, 0.0, out.data()),
+               NotConvergedError);
+  // 1e-6 beyond the end is resolved (about 20 panels a side) and finite.
+  EXPECT_NO_THROW(skelconv::segment_moments_gauss_panels<double>(3, 5, 10, 1.0, 1.0 + 1e-6, -1e-6, 0.0, out.data()));
+  for (double m : out) EXPECT_TRUE(std::isfinite(m));
 }
 
 TEST(ConvergenceCap, RuntimeTurnsItIntoEvaluationError) {
