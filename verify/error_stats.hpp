@@ -29,9 +29,10 @@ struct AccuracyTargets {
 /// reference; if they clustered where the generated code is wrong, the sweep
 /// would pass on what is left, so their share is bounded:
 ///  * max_excluded_share = 1%: an error confined to more than 1% of a
-///    region's samples cannot hide behind exclusions. The default sweeps
-///    (measured, docs/verify.md) exclude 0 to 0.9% per cell after the retry,
-///    so 1% fails on a storm, not on the reference's usual doubts;
+///    region's samples cannot hide behind exclusions. After the retry the
+///    default sweeps exclude 0 (segments) and at most 1 of 200 (0.5%,
+///    polygons) per cell (measured, docs/verify.md); before it, up to 6.5%
+///    and 15%. So 1% fails on a storm, not on the reference's usual doubts;
 ///  * min_compared_share = 1/2: at least half of a cell's evaluations must be
 ///    compared (the rest: excluded, or outside the compact support, where
 ///    f = 0 by design; support_boundary puts 1/3 of its samples there).
