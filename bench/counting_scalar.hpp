@@ -11,6 +11,15 @@
 // operation, so the result is bit-identical to the double instantiation when
 // both are compiled without FMA contraction (-ffp-contract=off); the caller
 // checks that, which is what shows that no operation escaped the count.
+//
+// The generator (codegen/helper_costs.cpp) also runs the hand-written helpers
+// that generated code calls (skelconv/gauss_moments.hpp,
+// stable_recurrence.hpp, polygon_angle_integrals.hpp) once on this type, so
+// that their cost in generated/opcounts.csv is what they execute. For them:
+// atan2 counts in `atan`, log in `log`, cos (no column of Table 4) in
+// `other`; pow(x, n) for an integer n as the multiplications of binary
+// powering (what libstdc++'s std::pow(double, int) does), and 1/x for n < 0
+// as one division more; ceil is free (rounding, like abs).
 #pragma once
 
 #include <cmath>
@@ -21,7 +30,7 @@ namespace skelconv::bench {
 
 /// Tally of the operations executed on CountingDouble values.
 struct OperationTally {
-  std::int64_t add = 0, mul = 0, div = 0, sqrt = 0, atan = 0, log = 0;
+  std::int64_t add = 0, mul = 0, div = 0, sqrt = 0, atan = 0, log = 0, other = 0;
 };
 
 inline OperationTally& operation_tally() {
@@ -57,6 +66,21 @@ struct CountingDouble {
   friend CountingDouble abs(CountingDouble a) { return CountingDouble(std::abs(a.value)); }
   friend CountingDouble frexp(CountingDouble a, int* e) { return CountingDouble(std::frexp(a.value, e)); }
   friend CountingDouble ldexp(CountingDouble a, int e) { return ++operation_tally().mul, CountingDouble(std::ldexp(a.value, e)); }
+  friend CountingDouble ceil(CountingDouble a) { return CountingDouble(std::ceil(a.value)); }
+  friend CountingDouble log(CountingDouble a) { return ++operation_tally().log, CountingDouble(std::log(a.value)); }
+  friend CountingDouble cos(CountingDouble a) { return ++operation_tally().other, CountingDouble(std::cos(a.value)); }
+  friend CountingDouble atan2(CountingDouble y, CountingDouble x) {
+    return ++operation_tally().atan, CountingDouble(std::atan2(y.value, x.value));
+  }
+  friend CountingDouble pow(CountingDouble a, int n) {
+    // Binary powering: one × per bit after the leading one, one per further set bit.
+    const unsigned magnitude = n < 0 ? static_cast<unsigned>(-n) : static_cast<unsigned>(n);
+    for (unsigned k = magnitude; k > 1; k >>= 1) operation_tally().mul += (k & 1u) ? 2 : 1;
+    if (n < 0) ++operation_tally().div;
+    return CountingDouble(std::pow(a.value, n));
+  }
+  explicit operator double() const { return value; }
+  explicit operator int() const { return static_cast<int>(value); }
 };
 
 }  // namespace skelconv::bench

@@ -431,7 +431,9 @@ def main():
     md.append("## 6. Operation counts against SPEC Table 4 (Zanni et al. 2013)\n")
     md.append("Format: +, ×, / (√, atan, ln). Ours: the generated function's count of its generic path (the table's "
               "`OpCount`), with the longest path (stable-form branch) from generated/opcounts.csv when it differs; "
-              "the calls inside `J_downward`/`J_upward_compact` loops are not in either. Counting rules: "
+              "the longest path counts every helper call (Gauss rules and panels, `J_downward`, "
+              "`J_upward_compact`, `segment_moments_beyond_end`) at its longest loop, as measured on the helper "
+              "itself (codegen/helper_costs.hpp). Counting rules: "
               "include/skelconv/op_count.hpp (after CSE; a − b and a + b one add, unary minus free, x^k as products "
               "of memoised powers, 1/x shared counts once, comparisons/selections free, asinh counted as ln). "
               "Ratio: ours / paper, on the +×/ total; the call columns are compared separately.\n")

@@ -10,10 +10,12 @@ namespace skelconv::codegen {
 
 namespace {
 
-// Near the plane, where ζ² ≤ q_min / kNearPlaneRatio, the upward recurrence
-// for H_n would multiply rounding errors by ≥ kNearPlaneRatio a step; the
-// angle integral of polygon_angle_integrals.hpp is used instead (its integrand's
-// singularities are then ≥ 1.3 away from the real axis).
+// Near the plane, where ζ² ≤ q_min / kNearPlaneRatio (q_min the smaller end
+// value of q), the upward recurrence for H_n would multiply rounding errors
+// by ≥ kNearPlaneRatio a step; the angle integral of
+// polygon_angle_integrals.hpp is used instead, when also αd² ≥ ζ²
+// (D ≥ kNearPlaneRatio a ζ²: its integrand's singularities are then
+// ≥ asinh 1 ≈ 0.88 away from the real axis) or the foot of P̄ is on the edge.
 const ex kNearPlaneRatio = numeric(2);
 // Compact kernels: the closed form G^(p) = w^p θ_in − … is used for a chord
 // that comes within √kChordRimRatio of the support disc's radius of P̄.
@@ -86,15 +88,16 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
     if (gradient_) targets.emplace_back("H_g");
     Choice choice{targets, {}};
     {
-      // Near the plane compared with the edge (ζ² ≤ q_min/4, q_min the least
-      // q on the edge): H_n as an angle integral, every level in one call.
+      // Near the plane compared with the edge (ζ² ≤ q_min/2, q_min the least
+      // q on the edge; kNearPlaneRatio = 2): H_n as an angle integral, every
+      // level in one call.
       const ex vertex_term = maximum(D_ - kNearPlaneRatio * a_ * zeta2, -b_ * a_minus_b_);
       Alternative near{{minimum(symbols_.lo.q, symbols_.hi.q) - kNearPlaneRatio * zeta2, vertex_term},
-                       "near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, "
+                       "near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, "
                        "polygon_edge_H_near_plane (20-point Gauss–Legendre)",
                        {}, {}, {}};
       ArrayCall call{"H_near", "polygon_edge_H_near_plane<T>", {std::to_string(lowest_H), std::to_string(highest_H)},
-                     {alpha_h, a_, zeta2, slope0, slope1}, {}, {}};
+                     {alpha_h, a_, zeta2, slope0, slope1}, {}, helper_costs::polygon_H_near_plane(lowest_H, highest_H)};
       for (int n = lowest_H; n <= highest_H; n += 2)
         call.elements.emplace_back("H_near_" + std::to_string(call.elements.size()));
       if (value_) near.values.push_back(call.elements.front());
@@ -193,7 +196,7 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
                             "polygon_edge_G_compact_chord (Gauss–Legendre panels)",
                         {}, {}, {}};
       ArrayCall call{"G_chord", "polygon_edge_G_compact_chord<T>", {std::to_string(p_lo), std::to_string(p_hi)},
-                     {h_, ab_ab_, w, inv_R2, slope0, slope1}, {}, {}};
+                     {h_, ab_ab_, w, inv_R2, slope0, slope1}, {}, helper_costs::polygon_G_compact_chord(p_lo, p_hi)};
       for (int p = p_lo; p <= p_hi; ++p) call.elements.emplace_back("G_chord_" + std::to_string(call.elements.size()));
       chord.values.push_back(0);
       if (value_) chord.values.push_back(call.elements.back());

@@ -17,7 +17,7 @@
 //
 //     H_n = (H_{n−2} − α h J_n) / ζ²        (upwards; J_n = ∫ q^(−n/2) dt)
 //
-// which divides by ζ² → 0 near the plane; there (ζ² ≤ q_min/4) each H_n is
+// which divides by ζ² → 0 near the plane; there (ζ² ≤ q_min/2) each H_n is
 // instead the integral in the edge's angle φ, smooth and done by a 20-point
 // Gauss–Legendre rule (skelconv/polygon_angle_integrals.hpp), exact to rounding.
 // ∇C needs no new integrals: in the plane −Σ_m (E_m × n) J_{i,m} (the

@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "helper_costs.hpp"
 #include "segment_families.hpp"
 #include "segment_moments.hpp"
 
@@ -46,23 +48,9 @@ inline const ex kBeyondEndRho = numeric(7, 10);
 // J_0, J_1 above it, where (q_max/q_e)^((i+d+2)/2) ≤ 1.18^10 ≈ 5.
 inline const ex kCompactOutsideRatio = numeric(17, 20);
 
-// The operations of one segment_moments_gauss<T, N> call, counted from its
-// loop (include/skelconv/gauss_moments.hpp): per node the parameter, q, √q,
-// the power q^(−m_hi/2) and, per level, the k_max + 1 moments.
-inline OpCount gauss_rule_ops(int nodes, int m_lo, int m_hi, int k_max) {
-  const int levels = (m_hi - m_lo) / 2 + 1, moments = k_max + 1;
-  OpCount per_node;
-  per_node.add = 3 + levels * moments;
-  const bool even = m_hi % 2 == 0;
-  per_node.mul = 4 + std::abs(m_hi) / (even ? 2 : 1) + levels * (2 + moments);
-  per_node.div = m_hi > 0 ? 1 : 0;
-  per_node.sqrt = even ? 0 : 1;
-  OpCount total;
-  for (int j = 0; j < nodes; ++j) total += per_node;
-  total.add += 2;
-  total.mul += 2 + levels * moments;
-  return total;
-}
+// What one helper call costs, given the levels m_lo…m_hi and k_max of the
+// array it fills (helper_costs.hpp: measured on the helper itself).
+using HelperCost = std::function<OpCount(int m_lo, int m_hi, int k_max)>;
 
 // Builds the program step by step; one instance per generated function.
 class SegmentProgramBuilder {
@@ -122,7 +110,7 @@ class SegmentProgramBuilder {
         Alternative exact{{}, "even degree: the integrand is a polynomial of degree " +
                                   std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
                           {}, {}, {}};
-        fill_from_helper(exact, "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t});
+        fill_from_helper(exact, "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t}, gauss_rule_cost(nodes));
         choice.alternatives.push_back(std::move(exact));
         program_.choose(std::move(choice));
         return targets;
@@ -139,7 +127,8 @@ class SegmentProgramBuilder {
                          "support sphere at least |AB|/2 beyond both ends: every moment by "
                          "segment_moments_gauss<T, 20>",
                          {}, {}, {}};
-        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t});
+        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                         gauss_rule_cost(20));
         choice.alternatives.push_back(std::move(flat));
       }
       // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
@@ -170,12 +159,12 @@ class SegmentProgramBuilder {
         const std::string panels = "segment_moments_gauss_panels<T>";
         Alternative away{{4 * D_ - pow(a_, 2)},
                          "P at least |AB|/2 from the line (D ≥ a²/4): every moment by " + panels, {}, {}, {}};
-        fill_from_helper(away, "M_panels", panels, {a_, b_, a_minus_b_, D_});
+        fill_from_helper(away, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false);
         choice.alternatives.push_back(std::move(away));
         const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
         Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_},
                            "P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by " + panels, {}, {}, {}};
-        fill_from_helper(beyond, "M_panels", panels, {a_, b_, a_minus_b_, D_});
+        fill_from_helper(beyond, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false);
         choice.alternatives.push_back(std::move(beyond));
         MomentRecurrence upward(symbols);
         choice.alternatives.push_back(
@@ -190,7 +179,7 @@ class SegmentProgramBuilder {
         // is exact to rounding there (include/skelconv/gauss_moments.hpp).
         Alternative flat{{D_ - 2 * pow(a_, 2)}, "P far from the line (D ≥ 2a²): every moment by "
                          "segment_moments_gauss<T, 20>", {}, {}, {}};
-        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, 0, 1});
+        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, 0, 1}, gauss_rule_cost(20));
         choice.alternatives.push_back(std::move(flat));
       }
       if (top_index >= 2) {
@@ -200,7 +189,8 @@ class SegmentProgramBuilder {
         Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_}, "", {}, {}, {}};
         if (lowest_level() >= highest_moment() + 2) {
           // Every moment from segment_moments_beyond_end, centred at the near end.
-          fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>", {a_, b_, D_, symbols.lo.q, symbols.hi.q});
+          fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>", {a_, b_, D_, symbols.lo.q, symbols.hi.q},
+                           helper_costs::moments_beyond_end, false);
           beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, "
                        "recurrence (1) downwards (segment_moments_beyond_end)";
         } else {
@@ -250,15 +240,21 @@ class SegmentProgramBuilder {
     return spec_.weight_degree + shift;
   }
 
+  // The cost of segment_moments_gauss<T, nodes>.
+  static HelperCost gauss_rule_cost(int nodes) {
+    return [nodes](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_rule(nodes, m_lo, m_hi, k_max); };
+  }
+
   // Takes every moment the outputs need from one helper call that fills an
   // array (include/skelconv/stable_recurrence.hpp, gauss_moments.hpp):
-  // function(m_lo, m_hi, k_max, args…, array).
+  // function(m_lo, m_hi, k_max, args…, array). `cost` gives the call's
+  // operations; `fixed_rule` says whether their number is the same at every P.
   void fill_from_helper(Alternative& alt, const std::string& array, const std::string& function,
-                        const std::vector<ex>& args) {
+                        const std::vector<ex>& args, const HelperCost& cost, bool fixed_rule = true) {
     const int m_lo = lowest_level(), m_hi = highest_level(), k_max = highest_moment();
-    ArrayCall call{array, function, {std::to_string(m_lo), std::to_string(m_hi), std::to_string(k_max)}, args, {}, {}};
-    if (function.rfind("segment_moments_gauss<T, ", 0) == 0)
-      call.ops = gauss_rule_ops(std::stoi(function.substr(25)), m_lo, m_hi, k_max);
+    ArrayCall call{array, function, {std::to_string(m_lo), std::to_string(m_hi), std::to_string(k_max)},
+                   args,  {},       cost(m_lo, m_hi, k_max),
+                   fixed_rule};
     for (int m = m_lo; m <= m_hi; m += 2)
       for (int k = 0; k <= k_max; ++k)
         call.elements.emplace_back(array + "_" + std::to_string(call.elements.size()));

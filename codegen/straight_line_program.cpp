@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "helper_costs.hpp"
+
 namespace skelconv::codegen {
 
 using GiNaC::ex;
@@ -344,7 +346,10 @@ class Emitter {
     }
     if (fn == "nonnegative_part") return {"max(T(0), T(" + args + "))", Text::atom};  // not counted
     if (helper) {
-      count(&OpCount::other);
+      // The longest run of its loop (helper_costs.hpp).
+      const OpCount cost = helper_costs::expression_helper(fn, GiNaC::ex_to<GiNaC::numeric>(e.op(0)).to_int());
+      scopes_.back().generic += cost;
+      scopes_.back().longest += cost;
       return {fn + "<T>(" + args + ")", Text::atom};
     }
     if (fn == "maximum") return {"max(T(" + emit(e.op(0)).s + "), T(" + emit(e.op(1)).s + "))", Text::atom};
@@ -471,12 +476,8 @@ class Emitter {
     for (const ex& a : call.args) args += emit(a).s + ", ";
     line("std::array<T, " + std::to_string(call.elements.size()) + "> " + call.array + ";");
     line(call.function + "(" + args + call.array + ".data());");
-    if (call.ops) {
-      scopes_.back().generic += *call.ops;
-      scopes_.back().longest += *call.ops;
-    } else {
-      count(&OpCount::other);
-    }
+    scopes_.back().generic += call.ops;
+    scopes_.back().longest += call.ops;
     for (size_t i = 0; i < call.elements.size(); ++i)
       names_[call.elements[i]] = call.array + "[" + std::to_string(i) + "]";
   }
@@ -496,7 +497,7 @@ class Emitter {
     // run-time length (no fixed OpCount) is left out: the function then
     // reports, through generic_applies, where the full program takes it.
     auto has_variable_loop = [](const Alternative& a) {
-      if (std::any_of(a.calls.begin(), a.calls.end(), [](const ArrayCall& c) { return !c.ops; })) return true;
+      if (std::any_of(a.calls.begin(), a.calls.end(), [](const ArrayCall& c) { return !c.fixed_rule; })) return true;
       for (const auto& [s, v] : a.steps)
         if (calls_loop_helper(v)) return true;
       return std::any_of(a.values.begin(), a.values.end(), calls_loop_helper);

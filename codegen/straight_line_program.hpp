@@ -33,9 +33,12 @@ struct ArrayCall {
   std::vector<std::string> fixed_args;   ///< leading literal arguments (integers)
   std::vector<GiNaC::ex> args;           ///< then these expressions
   std::vector<GiNaC::symbol> elements;   ///< bound to array[0], array[1], …
-  /// What one call costs, when it is known in advance (a fixed rule);
-  /// otherwise (a loop whose length depends on P) it counts as one `other`.
-  std::optional<OpCount> ops;
+  /// What one call costs (codegen/helper_costs.hpp): for a loop whose
+  /// length depends on P, its longest.
+  OpCount ops;
+  /// The same cost at every P (a fixed Gauss rule). Alternatives that call a
+  /// helper without a fixed rule are left out of generic_only programs.
+  bool fixed_rule = false;
 };
 
 /// One alternative form of some quantities. It is taken when every

@@ -25,6 +25,7 @@ namespace skelconv::generated {
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
 /// Operations per edge: 37 +, 57 ×, 1 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 97 +, 170 ×, 23 /, 22 sqrt, 3 atan, 0 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -63,7 +64,7 @@ void polygon_edge_cauchy_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T t0 = min(T(c), T(q1)) - T(2) * zeta2;
   const T t1 = max(T(D - T(2) * zeta2 * a), T(-b * a_minus_b));
   if (t0 >= T(0) && t1 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(1, 1, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -81,7 +82,7 @@ void polygon_edge_cauchy_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
 /// Operations per edge: 41 +, 61 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 122 +, 264 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 444 +, 905 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -139,7 +140,7 @@ void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T t4 = t2 - T(2) * zeta2;
   const T t5 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(3, 3, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -159,7 +160,7 @@ void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
 /// Operations per edge: 41 +, 61 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 122 +, 264 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 464 +, 906 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -218,7 +219,7 @@ void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T t4 = t2 - T(2) * zeta2;
   const T t5 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(1, 3, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -241,7 +242,7 @@ void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 39 +, 53 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 121 +, 216 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 445 +, 864 ×, 144 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -300,7 +301,7 @@ void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T t5 = t2 - T(2) * zeta2;
   const T t6 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t5 >= T(0) && t6 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(2, 2, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -317,7 +318,7 @@ void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 42 +, 60 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 142 +, 300 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 449 +, 895 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -382,7 +383,7 @@ void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T t7 = t2 - T(2) * zeta2;
   const T t8 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(4, 4, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -402,7 +403,7 @@ void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 42 +, 60 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 142 +, 300 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 469 +, 916 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -468,7 +469,7 @@ void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T t7 = t2 - T(2) * zeta2;
   const T t8 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(2, 4, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -491,7 +492,7 @@ void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 41 +, 61 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 122 +, 264 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 444 +, 905 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -549,7 +550,7 @@ void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T t4 = t2 - T(2) * zeta2;
   const T t5 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(3, 3, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -568,7 +569,7 @@ void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 44 +, 74 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 143 +, 368 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 448 +, 956 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -634,7 +635,7 @@ void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T t8 = t2 - T(2) * zeta2;
   const T t9 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(5, 5, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -656,7 +657,7 @@ void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 44 +, 74 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 143 +, 368 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 468 +, 957 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -723,7 +724,7 @@ void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T t8 = t2 - T(2) * zeta2;
   const T t9 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(3, 5, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -748,7 +749,7 @@ void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 42 +, 60 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 142 +, 300 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 449 +, 895 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -813,7 +814,7 @@ void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T t7 = t2 - T(2) * zeta2;
   const T t8 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(4, 4, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -832,7 +833,7 @@ void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 45 +, 75 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 163 +, 383 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 453 +, 927 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -906,7 +907,7 @@ void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T t12 = t2 - T(2) * zeta2;
   const T t13 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(6, 6, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -927,7 +928,7 @@ void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 45 +, 75 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 163 +, 383 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 473 +, 948 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1002,7 +1003,7 @@ void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T t12 = t2 - T(2) * zeta2;
   const T t13 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(4, 6, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1026,7 +1027,7 @@ void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 44 +, 74 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 143 +, 368 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 448 +, 956 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1092,7 +1093,7 @@ void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T t8 = t2 - T(2) * zeta2;
   const T t9 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(5, 5, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1113,7 +1114,7 @@ void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 47 +, 93 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 164 +, 471 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 452 +, 1008 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1188,7 +1189,7 @@ void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T t13 = t2 - T(2) * zeta2;
   const T t14 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(7, 7, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -1211,7 +1212,7 @@ void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 47 +, 93 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 164 +, 471 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 472 +, 1009 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1287,7 +1288,7 @@ void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T t13 = t2 - T(2) * zeta2;
   const T t14 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(5, 7, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1313,7 +1314,7 @@ void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 45 +, 75 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 163 +, 383 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 453 +, 927 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1387,7 +1388,7 @@ void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T t12 = t2 - T(2) * zeta2;
   const T t13 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(6, 6, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1407,7 +1408,7 @@ void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 48 +, 88 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 184 +, 466 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 457 +, 960 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1488,7 +1489,7 @@ void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T t15 = t2 - T(2) * zeta2;
   const T t16 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(8, 8, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -1510,7 +1511,7 @@ void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 48 +, 88 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 184 +, 466 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 477 +, 981 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1592,7 +1593,7 @@ void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T t15 = t2 - T(2) * zeta2;
   const T t16 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(6, 8, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1617,7 +1618,7 @@ void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 47 +, 93 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 164 +, 471 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 452 +, 1008 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1692,7 +1693,7 @@ void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T t13 = t2 - T(2) * zeta2;
   const T t14 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(7, 7, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1714,7 +1715,7 @@ void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 50 +, 108 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 185 +, 574 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 456 +, 1060 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1796,7 +1797,7 @@ void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T t16 = t2 - T(2) * zeta2;
   const T t17 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(9, 9, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -1820,7 +1821,7 @@ void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 50 +, 108 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 185 +, 574 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 476 +, 1061 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1903,7 +1904,7 @@ void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T t16 = t2 - T(2) * zeta2;
   const T t17 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(7, 9, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1930,7 +1931,7 @@ void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 48 +, 88 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 184 +, 466 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 457 +, 960 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2011,7 +2012,7 @@ void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t15 = t2 - T(2) * zeta2;
   const T t16 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(8, 8, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2032,7 +2033,7 @@ void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 51 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 205 +, 549 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 461 +, 993 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2120,7 +2121,7 @@ void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t18 = t2 - T(2) * zeta2;
   const T t19 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(10, 10, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -2143,7 +2144,7 @@ void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 51 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 205 +, 549 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 481 +, 1014 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2232,7 +2233,7 @@ void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t18 = t2 - T(2) * zeta2;
   const T t19 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(8, 10, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2258,7 +2259,7 @@ void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 50 +, 108 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 185 +, 574 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 456 +, 1060 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2340,7 +2341,7 @@ void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t16 = t2 - T(2) * zeta2;
   const T t17 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(9, 9, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2363,7 +2364,7 @@ void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 53 +, 123 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 206 +, 677 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 460 +, 1113 ×, 152 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2452,7 +2453,7 @@ void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t19 = t2 - T(2) * zeta2;
   const T t20 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t19 >= T(0) && t20 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(11, 11, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -2477,7 +2478,7 @@ void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 53 +, 123 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 206 +, 677 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 480 +, 1114 ×, 152 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2567,7 +2568,7 @@ void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t19 = t2 - T(2) * zeta2;
   const T t20 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t19 >= T(0) && t20 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(9, 11, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2595,7 +2596,7 @@ void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 51 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 205 +, 549 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 461 +, 993 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2683,7 +2684,7 @@ void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t18 = t2 - T(2) * zeta2;
   const T t19 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(10, 10, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2705,7 +2706,7 @@ void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 54 +, 114 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 226 +, 632 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 465 +, 1027 ×, 154 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2800,7 +2801,7 @@ void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t21 = t2 - T(2) * zeta2;
   const T t22 = max(T(D - T(2) * zeta2 * a), T(t1));
   if (t21 >= T(0) && t22 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(12, 12, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -2824,7 +2825,7 @@ void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 54 +, 114 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 226 +, 632 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 485 +, 1048 ×, 154 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2920,7 +2921,7 @@ void polygon_edge_cauchy_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t21 = t2 - T(2) * zeta2;
   const T t22 = max(T(D - T(2) * a * zeta2), T(t1));
   if (t21 >= T(0) && t22 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(10, 12, alpha_h, a, zeta2, -b, a_minus_b, H_near.data());
     H_f = H_near[0];

@@ -24,7 +24,8 @@ namespace skelconv::generated {
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 84 +, 158 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 84 +, 139 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 413 +, 859 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -91,7 +92,8 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 83 +, 156 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 83 +, 137 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 413 +, 779 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -159,7 +161,8 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
-/// Operations per edge: 85 +, 161 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 85 +, 142 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 493 +, 939 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -231,7 +234,8 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 92 +, 183 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 92 +, 156 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 420 +, 953 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -302,7 +306,8 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 91 +, 180 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 91 +, 153 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 420 +, 873 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -372,7 +377,8 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 94 +, 186 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 94 +, 159 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 500 +, 1033 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -448,7 +454,8 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 100 +, 206 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 100 +, 171 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 427 +, 1047 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -522,7 +529,8 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 99 +, 205 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 99 +, 170 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 427 +, 967 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -596,7 +604,8 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
-/// Operations per edge: 103 +, 211 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 103 +, 176 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 507 +, 1127 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -675,7 +684,8 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 108 +, 231 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 108 +, 188 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 434 +, 1141 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -752,7 +762,8 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 107 +, 229 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 107 +, 186 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 434 +, 1061 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -829,7 +840,8 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 112 +, 236 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 112 +, 193 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 514 +, 1221 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -911,7 +923,8 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 116 +, 255 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 116 +, 204 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 441 +, 1235 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -991,7 +1004,8 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 115 +, 252 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 115 +, 201 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 441 +, 1155 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1071,7 +1085,8 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
-/// Operations per edge: 121 +, 261 ×, 1 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 121 +, 210 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 521 +, 1315 ×, 94 /, 4 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

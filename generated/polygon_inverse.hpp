@@ -25,6 +25,7 @@ namespace skelconv::generated {
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
 /// Operations per edge: 36 +, 48 ×, 1 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 96 +, 161 ×, 23 /, 22 sqrt, 3 atan, 0 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -60,7 +61,7 @@ void polygon_edge_inverse_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t0 = min(T(c), T(q1)) - T(2) * zeta2;
   const T t1 = max(T(D - T(2) * zeta2 * ab_ab), T(-ab_ap * a_minus_b));
   if (t0 >= T(0) && t1 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(1, 1, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -78,7 +79,7 @@ void polygon_edge_inverse_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
 /// Operations per edge: 40 +, 52 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 121 +, 255 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 443 +, 896 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -133,7 +134,7 @@ void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t4 = t2 - T(2) * zeta2;
   const T t5 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(3, 3, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -153,7 +154,7 @@ void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
 /// Operations per edge: 40 +, 52 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 121 +, 255 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 463 +, 897 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -209,7 +210,7 @@ void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t4 = t2 - T(2) * zeta2;
   const T t5 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(1, 3, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -232,7 +233,7 @@ void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 38 +, 43 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 120 +, 206 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 444 +, 854 ×, 144 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -288,7 +289,7 @@ void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t5 = t2 - T(2) * zeta2;
   const T t6 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t5 >= T(0) && t6 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(2, 2, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -305,7 +306,7 @@ void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 41 +, 50 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 141 +, 290 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 448 +, 885 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -367,7 +368,7 @@ void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t7 = t2 - T(2) * zeta2;
   const T t8 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(4, 4, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -387,7 +388,7 @@ void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 41 +, 50 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 141 +, 290 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 468 +, 906 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -450,7 +451,7 @@ void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t7 = t2 - T(2) * zeta2;
   const T t8 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(2, 4, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -473,7 +474,7 @@ void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 40 +, 52 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 121 +, 255 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 443 +, 896 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -528,7 +529,7 @@ void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t4 = t2 - T(2) * zeta2;
   const T t5 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t4 >= T(0) && t5 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(3, 3, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -547,7 +548,7 @@ void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 43 +, 65 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 142 +, 359 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 447 +, 947 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -610,7 +611,7 @@ void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t8 = t2 - T(2) * zeta2;
   const T t9 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(5, 5, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -632,7 +633,7 @@ void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 43 +, 65 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 142 +, 359 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 467 +, 948 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -696,7 +697,7 @@ void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t8 = t2 - T(2) * zeta2;
   const T t9 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(3, 5, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -721,7 +722,7 @@ void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 41 +, 50 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 141 +, 290 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 448 +, 885 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -783,7 +784,7 @@ void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t7 = t2 - T(2) * zeta2;
   const T t8 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t7 >= T(0) && t8 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(4, 4, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -802,7 +803,7 @@ void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 44 +, 65 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 162 +, 373 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 452 +, 917 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -873,7 +874,7 @@ void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t12 = t2 - T(2) * zeta2;
   const T t13 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(6, 6, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -894,7 +895,7 @@ void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 44 +, 65 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 162 +, 373 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 472 +, 938 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -966,7 +967,7 @@ void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t12 = t2 - T(2) * zeta2;
   const T t13 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(4, 6, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -990,7 +991,7 @@ void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 43 +, 65 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 142 +, 359 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 447 +, 947 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1053,7 +1054,7 @@ void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t8 = t2 - T(2) * zeta2;
   const T t9 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t8 >= T(0) && t9 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(5, 5, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1074,7 +1075,7 @@ void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 46 +, 84 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 163 +, 462 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 451 +, 999 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1146,7 +1147,7 @@ void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t13 = t2 - T(2) * zeta2;
   const T t14 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(7, 7, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -1169,7 +1170,7 @@ void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 46 +, 84 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 163 +, 462 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 471 +, 1000 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1242,7 +1243,7 @@ void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t13 = t2 - T(2) * zeta2;
   const T t14 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(5, 7, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1268,7 +1269,7 @@ void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 44 +, 65 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 162 +, 373 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 452 +, 917 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1339,7 +1340,7 @@ void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t12 = t2 - T(2) * zeta2;
   const T t13 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t12 >= T(0) && t13 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(6, 6, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1359,7 +1360,7 @@ void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 47 +, 78 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 183 +, 456 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 456 +, 950 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1437,7 +1438,7 @@ void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t15 = t2 - T(2) * zeta2;
   const T t16 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(8, 8, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -1459,7 +1460,7 @@ void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 47 +, 78 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 183 +, 456 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 476 +, 971 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1538,7 +1539,7 @@ void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t15 = t2 - T(2) * zeta2;
   const T t16 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(6, 8, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1563,7 +1564,7 @@ void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 46 +, 84 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 163 +, 462 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 451 +, 999 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1635,7 +1636,7 @@ void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T t13 = t2 - T(2) * zeta2;
   const T t14 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t13 >= T(0) && t14 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(7, 7, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1657,7 +1658,7 @@ void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 49 +, 99 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 184 +, 565 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 455 +, 1051 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1736,7 +1737,7 @@ void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T t16 = t2 - T(2) * zeta2;
   const T t17 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(9, 9, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -1760,7 +1761,7 @@ void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 49 +, 99 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 184 +, 565 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 475 +, 1052 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1840,7 +1841,7 @@ void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T t16 = t2 - T(2) * zeta2;
   const T t17 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(7, 9, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1867,7 +1868,7 @@ void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 47 +, 78 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 183 +, 456 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 456 +, 950 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1945,7 +1946,7 @@ void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T t15 = t2 - T(2) * zeta2;
   const T t16 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t15 >= T(0) && t16 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(8, 8, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -1966,7 +1967,7 @@ void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 50 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 204 +, 539 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 460 +, 983 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2051,7 +2052,7 @@ void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T t18 = t2 - T(2) * zeta2;
   const T t19 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(10, 10, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -2074,7 +2075,7 @@ void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 50 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 204 +, 539 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 480 +, 1004 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2160,7 +2161,7 @@ void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T t18 = t2 - T(2) * zeta2;
   const T t19 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(8, 10, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2186,7 +2187,7 @@ void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 49 +, 99 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 184 +, 565 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 455 +, 1051 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2265,7 +2266,7 @@ void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T t16 = t2 - T(2) * zeta2;
   const T t17 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t16 >= T(0) && t17 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(9, 9, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2288,7 +2289,7 @@ void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 52 +, 114 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 205 +, 668 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 459 +, 1104 ×, 152 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2374,7 +2375,7 @@ void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T t19 = t2 - T(2) * zeta2;
   const T t20 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t19 >= T(0) && t20 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(11, 11, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -2399,7 +2400,7 @@ void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 52 +, 114 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 205 +, 668 ×, 22 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 479 +, 1105 ×, 152 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2486,7 +2487,7 @@ void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T t19 = t2 - T(2) * zeta2;
   const T t20 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t19 >= T(0) && t20 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(9, 11, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2514,7 +2515,7 @@ void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 50 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 204 +, 539 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 460 +, 983 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2599,7 +2600,7 @@ void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T t18 = t2 - T(2) * zeta2;
   const T t19 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t18 >= T(0) && t19 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(10, 10, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];
@@ -2621,7 +2622,7 @@ void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 53 +, 104 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 225 +, 622 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 464 +, 1017 ×, 154 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2713,7 +2714,7 @@ void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T t21 = t2 - T(2) * zeta2;
   const T t22 = max(T(D - T(2) * ab_ab * zeta2), T(t1));
   if (t21 >= T(0) && t22 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 1> H_near;
     polygon_edge_H_near_plane<T>(12, 12, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_g = H_near[0];
@@ -2737,7 +2738,7 @@ void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 53 +, 104 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 225 +, 622 ×, 21 /, 0 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 484 +, 1038 ×, 154 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2830,7 +2831,7 @@ void polygon_edge_inverse_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T t21 = t2 - T(2) * zeta2;
   const T t22 = max(T(D - T(2) * zeta2 * ab_ab), T(t1));
   if (t21 >= T(0) && t22 >= T(0)) {
-    // near the plane (ζ² ≤ q_min/4): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
+    // near the plane (ζ² ≤ q_min/2): H_n = sgn(h) ∫ q(φ)^(−n/2) dφ over the edge's angle, polygon_edge_H_near_plane (20-point Gauss–Legendre)
     std::array<T, 2> H_near;
     polygon_edge_H_near_plane<T>(10, 12, h, ab_ab, zeta2, -ab_ap, a_minus_b, H_near.data());
     H_f = H_near[0];

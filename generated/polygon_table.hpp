@@ -77,15 +77,15 @@ std::span<const PolygonEdgeKernel<T>> polygon_edge_kernels() {
       {KernelFamily::cauchy, 12, &polygon_edge_cauchy_i12_f<T>, &polygon_edge_cauchy_i12_grad<T>, &polygon_edge_cauchy_i12_f_and_grad<T>, "polygon_edge_cauchy_i12",
        "C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ", {51, 101, 5, 1, 2, 0, 0}, {54, 114, 5, 1, 2, 0, 0}, {54, 114, 5, 1, 2, 0, 0}},
       {KernelFamily::compact, 4, &polygon_edge_compact_i4_f<T>, &polygon_edge_compact_i4_grad<T>, &polygon_edge_compact_i4_f_and_grad<T>, "polygon_edge_compact_i4",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ", {84, 158, 1, 0, 2, 0, 0}, {83, 156, 1, 0, 2, 0, 0}, {85, 161, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ", {84, 139, 3, 0, 2, 0, 0}, {83, 137, 3, 0, 2, 0, 0}, {85, 142, 3, 0, 2, 0, 0}},
       {KernelFamily::compact, 6, &polygon_edge_compact_i6_f<T>, &polygon_edge_compact_i6_grad<T>, &polygon_edge_compact_i6_f_and_grad<T>, "polygon_edge_compact_i6",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {92, 183, 1, 0, 2, 0, 0}, {91, 180, 1, 0, 2, 0, 0}, {94, 186, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {92, 156, 3, 0, 2, 0, 0}, {91, 153, 3, 0, 2, 0, 0}, {94, 159, 3, 0, 2, 0, 0}},
       {KernelFamily::compact, 8, &polygon_edge_compact_i8_f<T>, &polygon_edge_compact_i8_grad<T>, &polygon_edge_compact_i8_f_and_grad<T>, "polygon_edge_compact_i8",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ", {100, 206, 1, 0, 2, 0, 0}, {99, 205, 1, 0, 2, 0, 0}, {103, 211, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ", {100, 171, 3, 0, 2, 0, 0}, {99, 170, 3, 0, 2, 0, 0}, {103, 176, 3, 0, 2, 0, 0}},
       {KernelFamily::compact, 10, &polygon_edge_compact_i10_f<T>, &polygon_edge_compact_i10_grad<T>, &polygon_edge_compact_i10_f_and_grad<T>, "polygon_edge_compact_i10",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {108, 231, 1, 0, 2, 0, 0}, {107, 229, 1, 0, 2, 0, 0}, {112, 236, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {108, 188, 3, 0, 2, 0, 0}, {107, 186, 3, 0, 2, 0, 0}, {112, 193, 3, 0, 2, 0, 0}},
       {KernelFamily::compact, 12, &polygon_edge_compact_i12_f<T>, &polygon_edge_compact_i12_grad<T>, &polygon_edge_compact_i12_f_and_grad<T>, "polygon_edge_compact_i12",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ", {116, 255, 1, 0, 2, 0, 0}, {115, 252, 1, 0, 2, 0, 0}, {121, 261, 1, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ", {116, 204, 3, 0, 2, 0, 0}, {115, 201, 3, 0, 2, 0, 0}, {121, 210, 3, 0, 2, 0, 0}},
   };
   return table;
 }

@@ -24,6 +24,7 @@ namespace skelconv::generated {
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 31 +, 40 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 6970 +, 8896 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -84,6 +85,7 @@ T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 40 +, 68 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 8054 +, 11067 ×, 2435 /, 57 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -157,6 +159,7 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 42 +, 77 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 11295 +, 15392 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -237,6 +240,7 @@ T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 35 +, 58 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 8050 +, 12145 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -323,6 +327,7 @@ T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 45 +, 95 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 9134 +, 15393 ×, 2435 /, 1139 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -406,6 +411,7 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 50 +, 116 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 13457 +, 20806 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -509,6 +515,7 @@ T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 41 +, 75 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 9132 +, 12148 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -591,6 +598,7 @@ T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 54 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 10218 +, 14324 ×, 2435 /, 57 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -684,6 +692,7 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 60 +, 148 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 15621 +, 20815 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -784,6 +793,7 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 47 +, 107 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 10212 +, 16476 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -889,6 +899,7 @@ T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 61 +, 161 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 11298 +, 19730 ×, 2435 /, 1139 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -992,6 +1003,7 @@ std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 70 +, 199 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 17783 +, 27309 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1116,6 +1128,7 @@ T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 55 +, 129 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 11294 +, 15399 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1218,6 +1231,7 @@ T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 72 +, 192 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 12382 +, 17581 ×, 2435 /, 57 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1332,6 +1346,7 @@ std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 82 +, 232 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 19947 +, 26238 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1454,6 +1469,7 @@ T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 63 +, 170 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 12374 +, 20807 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i7_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1580,6 +1596,7 @@ T scalis_segment_inverse_i7_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 81 +, 243 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 13462 +, 24067 ×, 2435 /, 1139 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1705,6 +1722,7 @@ std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 94 +, 294 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 22109 +, 33812 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1852,6 +1870,7 @@ T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 73 +, 196 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 13456 +, 18649 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1975,6 +1994,7 @@ T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 94 +, 274 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 14546 +, 20837 ×, 2435 /, 57 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2111,6 +2131,7 @@ std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 108 +, 329 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 24273 +, 31660 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2256,6 +2277,7 @@ T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 83 +, 252 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 14536 +, 25137 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i9_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2404,6 +2426,7 @@ T scalis_segment_inverse_i9_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 105 +, 336 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 15626 +, 28403 ×, 2435 /, 1139 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2552,6 +2575,7 @@ std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 122 +, 404 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 26435 +, 40314 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2723,6 +2747,7 @@ T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 95 +, 278 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 15618 +, 21900 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2870,6 +2895,7 @@ T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 120 +, 373 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 16710 +, 24094 ×, 2435 /, 57 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3031,6 +3057,7 @@ std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 138 +, 443 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 28599 +, 37083 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

@@ -19,7 +19,7 @@ namespace skelconv::generated {
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 43 +, 74 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 71 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -52,7 +52,7 @@ T segment_compact_i2_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 53 +, 86 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 82 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i2_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -90,7 +90,7 @@ std::array<T, 3> segment_compact_i2_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 67 +, 118 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 105 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -133,7 +133,7 @@ T segment_compact_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// Returns false where segment_compact_i2_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 118 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 105 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -173,7 +173,7 @@ bool segment_compact_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 51 +, 83 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 79 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -206,7 +206,7 @@ T segment_compact_i2_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 62 +, 96 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 91 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i2_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -244,7 +244,7 @@ std::array<T, 3> segment_compact_i2_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 84 +, 137 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 122 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -287,7 +287,7 @@ T segment_compact_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// Returns false where segment_compact_i2_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 84 +, 137 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 122 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -327,7 +327,7 @@ bool segment_compact_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 59 +, 92 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 87 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -360,7 +360,7 @@ T segment_compact_i2_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 71 +, 106 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 100 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i2_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -398,7 +398,7 @@ std::array<T, 3> segment_compact_i2_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 101 +, 156 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 139 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -441,7 +441,7 @@ T segment_compact_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// Returns false where segment_compact_i2_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 101 +, 156 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 139 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -481,7 +481,7 @@ bool segment_compact_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 67 +, 101 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 95 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -514,7 +514,7 @@ T segment_compact_i2_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 80 +, 116 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 109 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i2_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -552,7 +552,7 @@ std::array<T, 3> segment_compact_i2_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
-/// Operations: 118 +, 175 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 118 +, 156 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -595,7 +595,7 @@ T segment_compact_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// Returns false where segment_compact_i2_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 118 +, 175 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 118 +, 156 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -636,7 +636,7 @@ bool segment_compact_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 36 +, 57 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 246 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 536 +, 2071 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i3_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -694,7 +694,7 @@ T segment_compact_i3_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 39 +, 68 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 238 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2100 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i3_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -762,7 +762,7 @@ std::array<T, 3> segment_compact_i3_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 41 +, 81 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 322 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2104 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -905,7 +905,7 @@ bool segment_compact_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 39 +, 69 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 268 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 541 +, 2095 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i3_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -973,7 +973,7 @@ T segment_compact_i3_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 45 +, 91 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 261 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 549 +, 2127 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i3_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1049,7 +1049,7 @@ std::array<T, 3> segment_compact_i3_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 48 +, 107 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 367 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 552 +, 2140 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1203,7 +1203,7 @@ bool segment_compact_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 44 +, 89 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 290 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 544 +, 2105 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i3_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1274,7 +1274,7 @@ T segment_compact_i3_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 51 +, 114 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 284 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 555 +, 2146 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i3_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1354,7 +1354,7 @@ std::array<T, 3> segment_compact_i3_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 57 +, 141 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 412 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 559 +, 2163 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1514,7 +1514,7 @@ bool segment_compact_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 49 +, 109 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 312 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 551 +, 2136 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i3_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1591,7 +1591,7 @@ T segment_compact_i3_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 59 +, 144 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 307 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 563 +, 2179 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i3_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1679,7 +1679,7 @@ std::array<T, 3> segment_compact_i3_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(3/2) dt
 /// Operations: 66 +, 174 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 457 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 570 +, 2206 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1854,7 +1854,7 @@ bool segment_compact_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 43 +, 81 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 78 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1887,7 +1887,7 @@ T segment_compact_i4_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 53 +, 93 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 89 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1925,7 +1925,7 @@ std::array<T, 3> segment_compact_i4_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 67 +, 125 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 112 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1968,7 +1968,7 @@ T segment_compact_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// Returns false where segment_compact_i4_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 125 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 112 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2008,7 +2008,7 @@ bool segment_compact_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 51 +, 90 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 86 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2041,7 +2041,7 @@ T segment_compact_i4_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 62 +, 103 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 98 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2079,7 +2079,7 @@ std::array<T, 3> segment_compact_i4_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 84 +, 144 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 129 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2122,7 +2122,7 @@ T segment_compact_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// Returns false where segment_compact_i4_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 84 +, 144 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 129 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2162,7 +2162,7 @@ bool segment_compact_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 59 +, 99 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 94 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2195,7 +2195,7 @@ T segment_compact_i4_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 71 +, 113 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 107 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i4_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2233,7 +2233,7 @@ std::array<T, 3> segment_compact_i4_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 101 +, 163 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 146 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2276,7 +2276,7 @@ T segment_compact_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// Returns false where segment_compact_i4_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 101 +, 163 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 146 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2316,7 +2316,7 @@ bool segment_compact_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 67 +, 108 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 102 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2349,7 +2349,7 @@ T segment_compact_i4_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 80 +, 123 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 116 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i4_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2387,7 +2387,7 @@ std::array<T, 3> segment_compact_i4_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
-/// Operations: 118 +, 182 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 118 +, 163 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2430,7 +2430,7 @@ T segment_compact_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// Returns false where segment_compact_i4_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 118 +, 182 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 118 +, 163 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2471,7 +2471,7 @@ bool segment_compact_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 38 +, 68 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 286 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 536 +, 2076 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i5_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2535,7 +2535,7 @@ T segment_compact_i5_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 41 +, 79 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 278 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2105 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i5_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2610,7 +2610,7 @@ std::array<T, 3> segment_compact_i5_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 43 +, 92 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 362 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2109 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2761,7 +2761,7 @@ bool segment_compact_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 41 +, 81 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 308 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 541 +, 2099 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i5_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2833,7 +2833,7 @@ T segment_compact_i5_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 47 +, 102 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 301 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 549 +, 2132 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i5_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2913,7 +2913,7 @@ std::array<T, 3> segment_compact_i5_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 50 +, 118 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 407 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 552 +, 2145 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3076,7 +3076,7 @@ bool segment_compact_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 46 +, 100 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 330 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 544 +, 2109 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i5_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3152,7 +3152,7 @@ T segment_compact_i5_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 53 +, 125 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 324 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 555 +, 2152 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i5_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3237,7 +3237,7 @@ std::array<T, 3> segment_compact_i5_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 59 +, 152 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 452 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 559 +, 2169 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3404,7 +3404,7 @@ bool segment_compact_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 51 +, 121 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 352 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 551 +, 2139 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i5_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3485,7 +3485,7 @@ T segment_compact_i5_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 61 +, 156 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 347 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 563 +, 2186 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i5_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3577,7 +3577,7 @@ std::array<T, 3> segment_compact_i5_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(5/2) dt
 /// Operations: 68 +, 186 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 497 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 570 +, 2212 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3756,7 +3756,7 @@ bool segment_compact_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 43 +, 88 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 85 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3789,7 +3789,7 @@ T segment_compact_i6_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 53 +, 100 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 96 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3827,7 +3827,7 @@ std::array<T, 3> segment_compact_i6_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 67 +, 132 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 119 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3870,7 +3870,7 @@ T segment_compact_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// Returns false where segment_compact_i6_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 132 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 119 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3910,7 +3910,7 @@ bool segment_compact_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 51 +, 97 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 93 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3943,7 +3943,7 @@ T segment_compact_i6_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 62 +, 110 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 105 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3981,7 +3981,7 @@ std::array<T, 3> segment_compact_i6_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 84 +, 151 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 136 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4024,7 +4024,7 @@ T segment_compact_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// Returns false where segment_compact_i6_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 84 +, 151 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 136 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4064,7 +4064,7 @@ bool segment_compact_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 59 +, 106 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 101 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4097,7 +4097,7 @@ T segment_compact_i6_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 71 +, 120 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 114 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4135,7 +4135,7 @@ std::array<T, 3> segment_compact_i6_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 101 +, 170 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 153 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4178,7 +4178,7 @@ T segment_compact_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// Returns false where segment_compact_i6_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 101 +, 170 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 153 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4218,7 +4218,7 @@ bool segment_compact_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 67 +, 115 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 109 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4251,7 +4251,7 @@ T segment_compact_i6_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 80 +, 130 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 123 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4289,7 +4289,7 @@ std::array<T, 3> segment_compact_i6_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
-/// Operations: 118 +, 189 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 118 +, 170 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4332,7 +4332,7 @@ T segment_compact_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// Returns false where segment_compact_i6_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 118 +, 189 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 118 +, 170 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4373,7 +4373,7 @@ bool segment_compact_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 40 +, 80 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 326 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 536 +, 2078 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i7_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4441,7 +4441,7 @@ T segment_compact_i7_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 43 +, 92 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 318 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2109 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i7_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4520,7 +4520,7 @@ std::array<T, 3> segment_compact_i7_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 45 +, 105 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 402 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2113 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4677,7 +4677,7 @@ bool segment_compact_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 43 +, 93 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 348 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 541 +, 2102 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i7_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4751,7 +4751,7 @@ T segment_compact_i7_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 49 +, 115 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 341 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 549 +, 2136 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i7_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4835,7 +4835,7 @@ std::array<T, 3> segment_compact_i7_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 52 +, 130 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 447 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 552 +, 2149 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5004,7 +5004,7 @@ bool segment_compact_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 48 +, 112 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 370 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 544 +, 2112 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i7_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5080,7 +5080,7 @@ T segment_compact_i7_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 55 +, 138 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 364 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 555 +, 2155 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i7_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5169,7 +5169,7 @@ std::array<T, 3> segment_compact_i7_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 61 +, 163 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 492 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 559 +, 2172 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5345,7 +5345,7 @@ bool segment_compact_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 53 +, 131 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 392 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 551 +, 2143 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i7_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5430,7 +5430,7 @@ T segment_compact_i7_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 63 +, 168 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 387 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 563 +, 2188 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i7_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5526,7 +5526,7 @@ std::array<T, 3> segment_compact_i7_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(7/2) dt
 /// Operations: 70 +, 199 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 537 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 570 +, 2214 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5714,7 +5714,7 @@ bool segment_compact_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 43 +, 95 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 92 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5747,7 +5747,7 @@ T segment_compact_i8_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 53 +, 107 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 103 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5785,7 +5785,7 @@ std::array<T, 3> segment_compact_i8_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 67 +, 139 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 126 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5828,7 +5828,7 @@ T segment_compact_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// Returns false where segment_compact_i8_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 139 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 126 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5868,7 +5868,7 @@ bool segment_compact_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 51 +, 104 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 100 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5901,7 +5901,7 @@ T segment_compact_i8_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 62 +, 117 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 112 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5939,7 +5939,7 @@ std::array<T, 3> segment_compact_i8_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 84 +, 158 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 143 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5982,7 +5982,7 @@ T segment_compact_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// Returns false where segment_compact_i8_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 84 +, 158 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 143 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6022,7 +6022,7 @@ bool segment_compact_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 59 +, 113 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 108 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6055,7 +6055,7 @@ T segment_compact_i8_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 71 +, 127 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 121 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6093,7 +6093,7 @@ std::array<T, 3> segment_compact_i8_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 101 +, 177 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 160 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6136,7 +6136,7 @@ T segment_compact_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// Returns false where segment_compact_i8_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 101 +, 177 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 160 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6176,7 +6176,7 @@ bool segment_compact_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 67 +, 122 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 116 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6209,7 +6209,7 @@ T segment_compact_i8_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 80 +, 137 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 130 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6247,7 +6247,7 @@ std::array<T, 3> segment_compact_i8_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
-/// Operations: 118 +, 196 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 118 +, 177 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6290,7 +6290,7 @@ T segment_compact_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// Returns false where segment_compact_i8_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 118 +, 196 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 118 +, 177 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6331,7 +6331,7 @@ bool segment_compact_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 42 +, 90 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 366 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 536 +, 2083 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i9_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6401,7 +6401,7 @@ T segment_compact_i9_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 45 +, 103 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 358 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2112 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i9_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6481,7 +6481,7 @@ std::array<T, 3> segment_compact_i9_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 47 +, 114 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 442 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2116 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6641,7 +6641,7 @@ bool segment_compact_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 45 +, 103 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 388 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 541 +, 2108 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i9_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6720,7 +6720,7 @@ T segment_compact_i9_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 51 +, 125 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 381 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 549 +, 2140 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i9_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6808,7 +6808,7 @@ std::array<T, 3> segment_compact_i9_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 54 +, 141 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 487 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 552 +, 2153 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6980,7 +6980,7 @@ bool segment_compact_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 50 +, 122 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 410 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 544 +, 2118 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i9_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7062,7 +7062,7 @@ T segment_compact_i9_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 57 +, 149 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 404 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 555 +, 2159 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i9_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7156,7 +7156,7 @@ std::array<T, 3> segment_compact_i9_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 63 +, 174 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 532 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 559 +, 2176 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7338,7 +7338,7 @@ bool segment_compact_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 55 +, 142 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 432 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 551 +, 2150 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i9_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7427,7 +7427,7 @@ T segment_compact_i9_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 65 +, 179 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 427 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 563 +, 2196 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i9_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7526,7 +7526,7 @@ std::array<T, 3> segment_compact_i9_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(9/2) dt
 /// Operations: 72 +, 209 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 577 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 570 +, 2223 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7721,7 +7721,7 @@ bool segment_compact_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 43 +, 102 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 99 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7754,7 +7754,7 @@ T segment_compact_i10_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 53 +, 114 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 110 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7792,7 +7792,7 @@ std::array<T, 3> segment_compact_i10_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 67 +, 146 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 133 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7835,7 +7835,7 @@ T segment_compact_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// Returns false where segment_compact_i10_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 146 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 133 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7875,7 +7875,7 @@ bool segment_compact_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 51 +, 111 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 107 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7908,7 +7908,7 @@ T segment_compact_i10_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 62 +, 124 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 62 +, 119 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7946,7 +7946,7 @@ std::array<T, 3> segment_compact_i10_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 84 +, 165 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 84 +, 150 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7989,7 +7989,7 @@ T segment_compact_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// Returns false where segment_compact_i10_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 84 +, 165 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 150 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8029,7 +8029,7 @@ bool segment_compact_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 59 +, 120 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 59 +, 115 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8062,7 +8062,7 @@ T segment_compact_i10_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 71 +, 134 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 71 +, 128 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8100,7 +8100,7 @@ std::array<T, 3> segment_compact_i10_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 101 +, 184 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 101 +, 167 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8143,7 +8143,7 @@ T segment_compact_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// Returns false where segment_compact_i10_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 101 +, 184 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 167 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8183,7 +8183,7 @@ bool segment_compact_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 67 +, 129 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 123 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8216,7 +8216,7 @@ T segment_compact_i10_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 104 +, 189 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 104 +, 182 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8254,7 +8254,7 @@ std::array<T, 3> segment_compact_i10_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
-/// Operations: 157 +, 269 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 157 +, 247 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8297,7 +8297,7 @@ T segment_compact_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// Returns false where segment_compact_i10_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 157 +, 269 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 157 +, 247 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8338,7 +8338,7 @@ bool segment_compact_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 44 +, 101 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 406 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 536 +, 2085 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i11_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8410,7 +8410,7 @@ T segment_compact_i11_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 47 +, 112 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 398 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2118 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i11_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8496,7 +8496,7 @@ std::array<T, 3> segment_compact_i11_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 49 +, 125 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 482 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2122 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8662,7 +8662,7 @@ bool segment_compact_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 47 +, 113 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 428 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 541 +, 2109 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i11_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8741,7 +8741,7 @@ T segment_compact_i11_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 53 +, 135 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 421 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 549 +, 2146 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i11_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8833,7 +8833,7 @@ std::array<T, 3> segment_compact_i11_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 56 +, 151 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 527 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 552 +, 2159 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9011,7 +9011,7 @@ bool segment_compact_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 52 +, 134 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 450 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 544 +, 2119 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i11_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9094,7 +9094,7 @@ T segment_compact_i11_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 59 +, 158 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 444 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 555 +, 2166 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i11_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9190,7 +9190,7 @@ std::array<T, 3> segment_compact_i11_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 65 +, 186 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 572 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 559 +, 2183 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9377,7 +9377,7 @@ bool segment_compact_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 57 +, 152 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 472 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 551 +, 2149 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i11_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9469,7 +9469,7 @@ T segment_compact_i11_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 67 +, 189 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 467 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 563 +, 2198 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i11_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9573,7 +9573,7 @@ std::array<T, 3> segment_compact_i11_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(11/2) dt
 /// Operations: 74 +, 218 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 617 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 570 +, 2224 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9771,7 +9771,7 @@ bool segment_compact_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 43 +, 109 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 43 +, 106 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9804,7 +9804,7 @@ T segment_compact_i12_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 53 +, 121 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 53 +, 117 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9842,7 +9842,7 @@ std::array<T, 3> segment_compact_i12_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 67 +, 153 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 67 +, 140 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9885,7 +9885,7 @@ T segment_compact_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// Returns false where segment_compact_i12_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 153 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 140 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9925,7 +9925,7 @@ bool segment_compact_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 51 +, 118 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 51 +, 114 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9958,7 +9958,7 @@ T segment_compact_i12_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 80 +, 173 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 168 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9996,7 +9996,7 @@ std::array<T, 3> segment_compact_i12_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 111 +, 229 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 111 +, 211 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10039,7 +10039,7 @@ T segment_compact_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// Returns false where segment_compact_i12_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 111 +, 229 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 111 +, 211 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10079,7 +10079,7 @@ bool segment_compact_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 77 +, 172 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 77 +, 167 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10112,7 +10112,7 @@ T segment_compact_i12_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 92 +, 186 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 92 +, 180 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10150,7 +10150,7 @@ std::array<T, 3> segment_compact_i12_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 134 +, 254 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 134 +, 234 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10193,7 +10193,7 @@ T segment_compact_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// Returns false where segment_compact_i12_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 134 +, 254 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 134 +, 234 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10233,7 +10233,7 @@ bool segment_compact_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 88 +, 184 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 178 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10266,7 +10266,7 @@ T segment_compact_i12_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 104 +, 199 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 104 +, 192 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10304,7 +10304,7 @@ std::array<T, 3> segment_compact_i12_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
-/// Operations: 157 +, 279 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 157 +, 257 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10347,7 +10347,7 @@ T segment_compact_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// Returns false where segment_compact_i12_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 157 +, 279 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 157 +, 257 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10388,7 +10388,7 @@ bool segment_compact_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 46 +, 112 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 446 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 536 +, 2090 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i13_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10464,7 +10464,7 @@ T segment_compact_i13_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 49 +, 123 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 438 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2119 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i13_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10550,7 +10550,7 @@ std::array<T, 3> segment_compact_i13_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 51 +, 136 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 522 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2123 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10722,7 +10722,7 @@ bool segment_compact_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 49 +, 123 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 468 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 541 +, 2114 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i13_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10807,7 +10807,7 @@ T segment_compact_i13_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 55 +, 146 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 461 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 549 +, 2146 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i13_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10902,7 +10902,7 @@ std::array<T, 3> segment_compact_i13_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 58 +, 161 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 567 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 552 +, 2159 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11087,7 +11087,7 @@ bool segment_compact_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 54 +, 143 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 490 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 544 +, 2124 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i13_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11175,7 +11175,7 @@ T segment_compact_i13_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 61 +, 169 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 484 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 555 +, 2165 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i13_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11273,7 +11273,7 @@ std::array<T, 3> segment_compact_i13_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 67 +, 194 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 612 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 559 +, 2182 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11464,7 +11464,7 @@ bool segment_compact_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 59 +, 162 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 512 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 551 +, 2154 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i13_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11561,7 +11561,7 @@ T segment_compact_i13_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 69 +, 198 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 507 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 563 +, 2199 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i13_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11667,7 +11667,7 @@ std::array<T, 3> segment_compact_i13_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(13/2) dt
 /// Operations: 76 +, 228 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 657 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 570 +, 2225 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11870,7 +11870,7 @@ bool segment_compact_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 55 +, 158 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 55 +, 155 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11903,7 +11903,7 @@ T segment_compact_i14_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 68 +, 170 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 68 +, 166 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11941,7 +11941,7 @@ std::array<T, 3> segment_compact_i14_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 88 +, 214 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 198 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11984,7 +11984,7 @@ T segment_compact_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// Returns false where segment_compact_i14_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 88 +, 214 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 88 +, 198 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12024,7 +12024,7 @@ bool segment_compact_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 66 +, 170 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 66 +, 166 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12057,7 +12057,7 @@ T segment_compact_i14_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 80 +, 183 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 178 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12095,7 +12095,7 @@ std::array<T, 3> segment_compact_i14_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 111 +, 239 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 111 +, 221 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12138,7 +12138,7 @@ T segment_compact_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// Returns false where segment_compact_i14_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 111 +, 239 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 111 +, 221 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12178,7 +12178,7 @@ bool segment_compact_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 77 +, 182 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 77 +, 177 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12211,7 +12211,7 @@ T segment_compact_i14_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 92 +, 196 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 92 +, 190 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12249,7 +12249,7 @@ std::array<T, 3> segment_compact_i14_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 134 +, 264 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 134 +, 244 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12292,7 +12292,7 @@ T segment_compact_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// Returns false where segment_compact_i14_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 134 +, 264 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 134 +, 244 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12332,7 +12332,7 @@ bool segment_compact_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 88 +, 194 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 188 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12365,7 +12365,7 @@ T segment_compact_i14_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 104 +, 209 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 104 +, 202 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12403,7 +12403,7 @@ std::array<T, 3> segment_compact_i14_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
-/// Operations: 157 +, 289 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 157 +, 267 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12446,7 +12446,7 @@ T segment_compact_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// Returns false where segment_compact_i14_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 157 +, 289 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 157 +, 267 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12487,7 +12487,7 @@ bool segment_compact_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 48 +, 122 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 114 +, 486 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 536 +, 2089 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i15_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12563,7 +12563,7 @@ T segment_compact_i15_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 51 +, 133 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 137 +, 478 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2124 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i15_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12656,7 +12656,7 @@ std::array<T, 3> segment_compact_i15_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 53 +, 145 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 562 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 543 +, 2128 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12836,7 +12836,7 @@ bool segment_compact_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 51 +, 134 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 135 +, 508 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 541 +, 2113 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i15_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12919,7 +12919,7 @@ T segment_compact_i15_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 57 +, 155 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 159 +, 501 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 549 +, 2151 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i15_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13018,7 +13018,7 @@ std::array<T, 3> segment_compact_i15_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 60 +, 171 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 220 +, 607 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 552 +, 2164 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13207,7 +13207,7 @@ bool segment_compact_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 56 +, 154 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 156 +, 530 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 544 +, 2123 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i15_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13293,7 +13293,7 @@ T segment_compact_i15_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 63 +, 178 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 181 +, 524 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 555 +, 2170 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i15_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13396,7 +13396,7 @@ std::array<T, 3> segment_compact_i15_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 69 +, 205 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 652 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 559 +, 2187 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13592,7 +13592,7 @@ bool segment_compact_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 61 +, 174 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 177 +, 552 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 551 +, 2156 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i15_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13687,7 +13687,7 @@ T segment_compact_i15_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 71 +, 209 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 203 +, 547 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 563 +, 2206 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_compact_i15_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13798,7 +13798,7 @@ std::array<T, 3> segment_compact_i15_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(15/2) dt
 /// Operations: 78 +, 239 ×, 3 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 306 +, 697 ×, 3 /, 23 sqrt, 2 atan, 0 log/asinh.
+/// Longest path: 570 +, 2233 ×, 259 /, 5 sqrt, 2 atan, 2 log/asinh.
 template <class T>
 T segment_compact_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14011,7 +14011,7 @@ bool segment_compact_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 55 +, 168 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 55 +, 165 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14044,7 +14044,7 @@ T segment_compact_i16_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 68 +, 180 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 68 +, 176 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14082,7 +14082,7 @@ std::array<T, 3> segment_compact_i16_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 88 +, 224 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 208 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14125,7 +14125,7 @@ T segment_compact_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// Returns false where segment_compact_i16_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 88 +, 224 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 88 +, 208 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14165,7 +14165,7 @@ bool segment_compact_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 66 +, 180 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 66 +, 176 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14198,7 +14198,7 @@ T segment_compact_i16_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 80 +, 193 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 80 +, 188 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14236,7 +14236,7 @@ std::array<T, 3> segment_compact_i16_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 111 +, 249 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 111 +, 231 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14279,7 +14279,7 @@ T segment_compact_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// Returns false where segment_compact_i16_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 111 +, 249 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 111 +, 231 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14319,7 +14319,7 @@ bool segment_compact_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 77 +, 192 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 77 +, 187 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14352,7 +14352,7 @@ T segment_compact_i16_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 92 +, 206 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 92 +, 200 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14390,7 +14390,7 @@ std::array<T, 3> segment_compact_i16_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 134 +, 274 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 134 +, 254 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14433,7 +14433,7 @@ T segment_compact_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// Returns false where segment_compact_i16_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 134 +, 274 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 134 +, 254 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14473,7 +14473,7 @@ bool segment_compact_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 88 +, 204 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 88 +, 198 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14506,7 +14506,7 @@ T segment_compact_i16_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 144 +, 309 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 144 +, 302 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 std::array<T, 3> segment_compact_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14544,7 +14544,7 @@ std::array<T, 3> segment_compact_i16_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
-/// Operations: 222 +, 424 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Operations: 222 +, 397 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh (generic form).
 template <class T>
 T segment_compact_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14587,7 +14587,7 @@ T segment_compact_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// Returns false where segment_compact_i16_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 222 +, 424 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 222 +, 397 ×, 3 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_compact_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

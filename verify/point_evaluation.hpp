@@ -71,16 +71,44 @@ RelativeErrors evaluate_generated(const GeneratedKernel<T>& kernel, const std::o
   return worst_of(relative_errors(f, grad, ref.f, ref.grad), relative_errors(f_joint, grad_joint, ref.f, ref.grad));
 }
 
-/// Evaluates sample `pb` for every weight degree and adds it to `cells[d]`.
-inline void evaluate_sample(const SweepProblem& pb, const KernelsByWeightDegree& kernels, ReferenceIntegrator& integrator,
-                            const AccuracyTargets& targets, std::span<CellStats, max_weight_degree + 1> cells) {
-  const Vec3<extended> a = widen(pb.a), b = widen(pb.b), p = widen(pb.p);
-  SegmentMoments moments;
+/// The two references of a sweep: the standard one, and the stronger one a
+/// flagged sample is retried with (ReferenceTolerances::retry) before it is
+/// excluded.
+struct ReferenceIntegrators {
+  ReferenceIntegrator standard;
+  ReferenceIntegrator stronger;
+  explicit ReferenceIntegrators(const ReferenceTolerances& tolerances)
+      : standard(tolerances), stronger(tolerances.retry()) {}
+};
+
+/// Moments of `pb`'s definition integral by `integrator`; nullopt when Boost
+/// gives up (a non-finite integrand).
+inline std::optional<SegmentMoments> try_moments(ReferenceIntegrator& integrator, const SweepProblem& pb) {
   try {
-    moments = integrator.moments(reference_kernel(pb), a, b, p);
-  } catch (const std::exception&) {  // Boost gave up (non-finite integrand): no reference
+    return integrator.moments(reference_kernel(pb), widen(pb.a), widen(pb.b), widen(pb.p));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+/// Evaluates sample `pb` for every weight degree and adds it to `cells[d]`.
+/// A weight degree whose reference is flagged (or that has none, Boost having
+/// given up) is retried with the stronger reference, computed at most once
+/// per sample; only what that still flags is excluded.
+inline void evaluate_sample(const SweepProblem& pb, const KernelsByWeightDegree& kernels,
+                            ReferenceIntegrators& integrators, const AccuracyTargets& targets,
+                            std::span<CellStats, max_weight_degree + 1> cells) {
+  std::optional<std::optional<SegmentMoments>> stronger;  // computed on the first flag
+  const auto stronger_moments = [&]() -> const std::optional<SegmentMoments>& {
+    if (!stronger) stronger = try_moments(integrators.stronger, pb);
+    return *stronger;
+  };
+  const std::optional<SegmentMoments> standard = try_moments(integrators.standard, pb);
+  const std::optional<SegmentMoments>& moments = standard ? standard : stronger_moments();
+  const auto generated = [&](int d) { return kernels[d].in_double && kernels[d].in_extended; };
+  if (!moments) {
     for (int d = 0; d <= max_weight_degree; ++d)
-      if (kernels[d].in_double && kernels[d].in_extended) ++cells[d].excluded;
+      if (generated(d)) ++cells[d].retried, ++cells[d].excluded;
     return;
   }
   const auto in_double = generated_input<double>(pb);
@@ -89,16 +117,20 @@ inline void evaluate_sample(const SweepProblem& pb, const KernelsByWeightDegree&
   for (int k = 0; k < 4; ++k) w[k] = extended(pb.w[k]);
 
   for (int d = 0; d <= max_weight_degree; ++d) {
-    const KernelPair& kernel = kernels[d];
-    if (!kernel.in_double || !kernel.in_extended) continue;
+    if (!generated(d)) continue;
     CellStats& cell = cells[d];
-    if (moments.empty) {  // f = 0 exactly: nothing to compare, only the double clip's verdict
+    if (!standard) ++cell.retried;
+    if (moments->empty) {  // f = 0 exactly: nothing to compare, only the double clip's verdict
       if (in_double) ++cell.support_mismatch;
       else ++cell.outside_support;
       continue;
     }
     if (!in_double) ++cell.support_mismatch;  // counted, and compared below as f = 0
-    const ReferenceField ref = integrator.field(moments, w, d);
+    ReferenceField ref = integrators.standard.field(*moments, w, d);
+    if (ref.flagged && standard) {
+      ++cell.retried;
+      if (const std::optional<SegmentMoments>& retry = stronger_moments()) ref = integrators.stronger.field(*retry, w, d);
+    }
     if (ref.flagged) {
       ++cell.excluded;
       continue;
@@ -106,6 +138,7 @@ inline void evaluate_sample(const SweepProblem& pb, const KernelsByWeightDegree&
     ++cell.points;
     cell.max_reference_error = std::max(
         {cell.max_reference_error, static_cast<double>(ref.f_relative_error), static_cast<double>(ref.grad_relative_error)});
+    const KernelPair& kernel = kernels[d];
     cell.in_double.add(evaluate_generated(*kernel.in_double, in_double, ref), pb, targets);
     cell.in_extended.add(evaluate_generated(*kernel.in_extended, in_extended, ref), pb, targets);
   }

@@ -69,6 +69,16 @@ struct ReferenceTolerances {
   double flag_threshold = 1e-20;
   /// tanh-sinh levels (each halves the step). 15 is Boost's default.
   std::size_t max_levels = 15;
+
+  /// The stronger reference a flagged sample is retried with before it is
+  /// excluded: 1e-30 requested (four digits above binary128's rounding) and
+  /// five more levels (32 times the finest step count). Same flag threshold.
+  ReferenceTolerances retry() const {
+    ReferenceTolerances stronger = *this;
+    stronger.requested = std::min(requested, 1e-30);
+    stronger.max_levels = max_levels + 5;
+    return stronger;
+  }
 };
 
 inline constexpr int moment_count_f = 4;     // M_0..M_3: weight degree ≤ 3

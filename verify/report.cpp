@@ -1,6 +1,7 @@
 // verify/report.cpp — see report.hpp.
 #include "report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <ostream>
 #include <set>
@@ -106,10 +107,62 @@ nlohmann::json precision_json(const PrecisionStats& stats) {
   return out;
 }
 
+// Exclusions per (family, degree) row and region: "excluded/evaluations",
+// '!' where the cell is beyond its limits.
+void write_exclusion_table(std::ostream& out, const std::vector<ExclusionCell>& cells, const ExclusionLimits& limits) {
+  char share[32];
+  std::snprintf(share, sizeof share, "%.3g%%", 100 * limits.max_excluded_share);
+  out << "\nEXCLUSIONS — references still flagged after the retry with the stronger reference, per (family, "
+         "degree, region), all weight degrees: excluded/evaluations ('!' = more than "
+      << share << " excluded, or fewer than " << 100 * limits.min_compared_share << "% compared).\n";
+  constexpr std::size_t width = 12;
+  out << pad_right("family", 8) << pad_left("i", 3) << " |";
+  for (Region region : all_regions) out << pad_left(std::string(region_short_name(region)), width) << " |";
+  out << '\n';
+  std::size_t k = 0;
+  while (k < cells.size()) {
+    const KernelFamily family = cells[k].family;
+    const int degree = cells[k].degree;
+    out << pad_right(std::string(family_name(family)), 8) << pad_left(std::to_string(degree), 3) << " |";
+    for (Region region : all_regions) {
+      std::string text = "-";
+      for (std::size_t j = k; j < cells.size() && cells[j].family == family && cells[j].degree == degree; ++j)
+        if (cells[j].region == region)
+          text = std::to_string(cells[j].excluded) + "/" + std::to_string(cells[j].evaluations) +
+                 (cells[j].passed ? " " : "!");
+      out << pad_left(text, width) << " |";
+    }
+    out << '\n';
+    while (k < cells.size() && cells[k].family == family && cells[k].degree == degree) ++k;
+  }
+}
+
 }  // namespace
 
-GenericVerdict generic_verdict(const SweepResult& result) {
+std::vector<ExclusionCell> exclusion_cells(const SweepResult& result, const ExclusionLimits& limits) {
+  std::vector<ExclusionCell> cells;
+  for (const auto& [key, cell] : result.cells) {  // ordered by family, degree, weight degree, region
+    const auto [family, degree, weight_degree, region] = key;
+    auto it = std::find_if(cells.begin(), cells.end(), [&](const ExclusionCell& c) {
+      return c.family == family && c.degree == degree && c.region == region;
+    });
+    if (it == cells.end()) it = cells.insert(cells.end(), ExclusionCell{family, degree, region});
+    it->evaluations += cell.points + cell.excluded + cell.outside_support;
+    it->compared += cell.points;
+    it->excluded += cell.excluded;
+    it->retried += cell.retried;
+  }
+  std::sort(cells.begin(), cells.end(), [](const ExclusionCell& x, const ExclusionCell& y) {
+    return std::tie(x.family, x.degree, x.region) < std::tie(y.family, y.degree, y.region);
+  });
+  for (ExclusionCell& c : cells) c.passed = limits.allow(c.compared, c.excluded, c.evaluations);
+  return cells;
+}
+
+GenericVerdict generic_verdict(const SweepResult& result, const ExclusionLimits& limits) {
   GenericVerdict verdict;
+  for (const ExclusionCell& c : exclusion_cells(result, limits))
+    if (!c.passed) ++verdict.failing_exclusion_cells;
   for (const auto& [key, cell] : result.cells) {
     if (std::get<3>(key) != Region::generic) continue;
     verdict.compared += cell.points;
@@ -135,14 +188,18 @@ void write_text_report(std::ostream& out, const SweepOptions& options, const Swe
   write_table(out, result, true, options.targets);
   out << "\nEXTENDED — the same generated code in binary128: what remains here is formula error, not rounding.\n";
   write_table(out, result, false, options.targets);
+  const std::vector<ExclusionCell> exclusions = exclusion_cells(result, options.exclusions);
+  write_exclusion_table(out, exclusions, options.exclusions);
 
   out << "\nAnomalies (excluded = reference error estimate above " << format_error(options.reference.flag_threshold)
-      << ", not compared; support mismatch = double and binary128 clips disagree on emptiness):\n";
-  std::uint64_t excluded = 0, mismatches = 0, nonfinite = 0, compared = 0, outside = 0;
+      << " even after the retry, not compared; support mismatch = double and binary128 clips disagree on "
+         "emptiness):\n";
+  std::uint64_t excluded = 0, retried = 0, mismatches = 0, nonfinite = 0, compared = 0, outside = 0;
   double worst_reference = 0;
   bool any = false;
   for (const auto& [key, cell] : result.cells) {
     excluded += cell.excluded;
+    retried += cell.retried;
     mismatches += cell.support_mismatch;
     nonfinite += cell.in_double.nonfinite + cell.in_extended.nonfinite;
     compared += cell.points;
@@ -157,15 +214,17 @@ void write_text_report(std::ostream& out, const SweepOptions& options, const Swe
     }
   }
   if (!any) out << "  none\n";
-  const GenericVerdict verdict = generic_verdict(result);
+  const GenericVerdict verdict = generic_verdict(result, options.exclusions);
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%.1f", result.seconds);
   out << "\nsummary: " << result.samples << " samples, " << compared
-      << " comparisons (each: 3 entry points, double and binary128), " << excluded << " excluded, " << outside
+      << " comparisons (each: 3 entry points, double and binary128), " << retried << " references retried, "
+      << excluded << " excluded, " << outside
       << " outside the support (f = 0, clips agree), " << mismatches << " support mismatches, " << nonfinite
       << " non-finite results; largest reference error estimate " << format_error(worst_reference)
       << "; generic-target misses: " << verdict.failing_points << " (f and |grad f| counted separately) in "
-      << verdict.failing_cells << " rows, of " << verdict.compared << " generic comparisons; " << seconds << " s\n";
+      << verdict.failing_cells << " rows, of " << verdict.compared << " generic comparisons; cells beyond the "
+      << "exclusion limits: " << verdict.failing_exclusion_cells << "; " << seconds << " s\n";
 }
 
 nlohmann::json json_report(const SweepOptions& options, const SweepResult& result) {
@@ -179,13 +238,25 @@ nlohmann::json json_report(const SweepOptions& options, const SweepResult& resul
                      {"region", region_name(std::get<3>(key))},
                      {"points", cell.points},
                      {"excluded", cell.excluded},
+                     {"retried", cell.retried},
                      {"outside_support", cell.outside_support},
                      {"support_mismatch", cell.support_mismatch},
                      {"max_reference_error_estimate", cell.max_reference_error},
                      {"double", precision_json(cell.in_double)},
                      {"extended", precision_json(cell.in_extended)}});
   }
-  const GenericVerdict verdict = generic_verdict(result);
+  const GenericVerdict verdict = generic_verdict(result, options.exclusions);
+  nlohmann::json exclusions = nlohmann::json::array();
+  for (const ExclusionCell& c : exclusion_cells(result, options.exclusions))
+    exclusions.push_back({{"family", family_name(c.family)},
+                          {"degree", c.degree},
+                          {"region", region_name(c.region)},
+                          {"evaluations", c.evaluations},
+                          {"compared", c.compared},
+                          {"excluded", c.excluded},
+                          {"retried", c.retried},
+                          {"excluded_share", c.excluded_share()},
+                          {"passed", c.passed}});
   return {{"tool", "skelconv-verify"},
           {"settings",
            {{"seed", options.seed},
@@ -199,12 +270,17 @@ nlohmann::json json_report(const SweepOptions& options, const SweepResult& resul
             {"target_generic_grad", options.targets.generic_grad},
             {"reference_requested_tolerance", options.reference.requested},
             {"reference_flag_threshold", options.reference.flag_threshold},
+            {"reference_retry_requested_tolerance", options.reference.retry().requested},
+            {"reference_retry_max_levels", options.reference.retry().max_levels},
+            {"max_excluded_share", options.exclusions.max_excluded_share},
+            {"min_compared_share", options.exclusions.min_compared_share},
             {"error_definitions",
              {{"f", "|f - f_ref| / |f_ref|"},
               {"grad", "|g - g_ref| / |g_ref| (Euclidean norms)"},
               {"grad_component", "max_c |g_c - g_ref_c| / |g_ref|"},
               {"entry_points", "max over f(), grad() and f_and_grad()"}}}}},
           {"cells", cells},
+          {"exclusions", exclusions},
           {"summary",
            {{"samples", result.samples},
             {"items_run", result.items_run},
@@ -215,6 +291,7 @@ nlohmann::json json_report(const SweepOptions& options, const SweepResult& resul
             {"generic_failing_points", verdict.failing_points},
             {"generic_failing_rows", verdict.failing_cells},
             {"generic_comparisons", verdict.compared},
+            {"exclusion_cells_failing", verdict.failing_exclusion_cells},
             {"generic_passed", verdict.passed()}}}};
 }
 

@@ -60,14 +60,14 @@ SweepResult run_sweep(const SweepOptions& options) {
   std::atomic<std::uint64_t> evaluations{0}, misses{0};
 
   const auto worker = [&] {
-    ReferenceIntegrator integrator(options.reference);
+    ReferenceIntegrators integrators(options.reference);
     for (std::size_t i = next++; i < items.size(); i = next++) {
       const WorkItem& item = items[i];
       const KernelsByWeightDegree kernels = find_kernels(item.family, item.degree);
       std::array<CellStats, max_weight_degree + 1> cells{};
       for (std::uint64_t k = item.first; k < item.first + item.count; ++k) {
         const SweepProblem pb = draw_problem(options.seed, item.family, item.degree, item.region, k);
-        evaluate_sample(pb, kernels, integrator, options.targets, cells);
+        evaluate_sample(pb, kernels, integrators, options.targets, cells);
       }
       {
         std::lock_guard lock(merge_mutex);
@@ -78,8 +78,8 @@ SweepResult run_sweep(const SweepOptions& options) {
       }
       progress.item_done(item.count);
     }
-    evaluations += integrator.kernel_evaluations();
-    misses += integrator.replay_misses();
+    evaluations += integrators.standard.kernel_evaluations() + integrators.stronger.kernel_evaluations();
+    misses += integrators.standard.replay_misses() + integrators.stronger.replay_misses();
   };
   const int thread_count = std::max(1, options.threads);
   std::vector<std::thread> threads;

@@ -27,6 +27,7 @@ struct SweepOptions {
   int chunk_size = 100;  ///< points per work item
   bool progress = true;  ///< progress line on stderr
   AccuracyTargets targets;
+  ExclusionLimits exclusions;
   ReferenceTolerances reference;
 };
 

@@ -48,6 +48,13 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "random seed (the samples depend on it only)");
   app.add_option("--chunk", options.chunk_size, "samples per work item")->check(CLI::Range(1, 1000000));
   app.add_flag("--quiet", quiet, "no progress line on stderr");
+  app.add_option("--reference-flag", options.reference.flag_threshold,
+                 "flag (retry, then exclude) a reference whose error estimate exceeds this (default 1e-20); a tiny "
+                 "value injects an exclusion storm, which the verdict must fail")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--max-excluded-share", options.exclusions.max_excluded_share,
+                 "largest share of a (family, degree, region) cell that may stay excluded (default 0.01)")
+      ->check(CLI::Range(0.0, 1.0));
   CLI11_PARSE(app, argc, argv);
 
   if (full) options.counts = full_point_counts;
@@ -86,8 +93,8 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const GenericVerdict verdict = generic_verdict(result);
-  // A shard without generic items asserts nothing and passes.
-  if (verdict.compared == 0) return 0;
+  const GenericVerdict verdict = generic_verdict(result, options.exclusions);
+  // A shard without generic items asserts only the exclusion limits.
+  if (verdict.compared == 0) return verdict.failing_exclusion_cells == 0 ? 0 : 1;
   return verdict.passed() ? 0 : 1;
 }

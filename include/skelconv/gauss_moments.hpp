@@ -31,6 +31,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "skelconv/not_converged.hpp"
 
 namespace skelconv {
 
@@ -134,7 +137,9 @@ constexpr unsigned gauss_panel_points() {
 ///  * δ grows by a factor ≥ 1.3 a panel, so a pole at distance ε from the
 ///    segment costs ~log(1/ε)/log 1.3 panels per side (in practice δ nearly
 ///    doubles); one or two panels when P is at least |AB|/2 from the line.
-/// If P is on the segment (δ = 0 there) the integral diverges: +∞.
+/// If P is on the segment (δ = 0 there) the integral diverges: +∞. If the
+/// pole is closer to a panel's start than T can step (0.9 δ below the
+/// rounding unit of t), NotConvergedError.
 template <class T>
 void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& a_minus_b,
                                   const T& D, T* out) {
@@ -174,6 +179,13 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
       if (delta_x + delta_end < s_min * abs(end - x)) {
         const T step = T(9) / T(10) * delta_x;
         y = end > x ? (x + step < end ? x + step : end) : (x - step > end ? x - step : end);
+        // The pole within rounding of x (P closer to the segment's end than
+        // the rounding unit of t, in units of |AB|): the panels cannot
+        // advance, and the integral is not resolvable in T. Reported, not
+        // looped on (the loop would never end).
+        if (y == x)
+          throw NotConvergedError("Gauss panels: the pole of the kernel is within rounding of t = " +
+                                  std::to_string(static_cast<double>(x)) + " (P too close to the segment's end)");
       }
       if (x < y)
         add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, x, y, out);

@@ -10,7 +10,12 @@
 //  * a / b counts one `div`; 1/x shared by several uses counts once;
 //  * sqrt, atan2 (or atan), log and asinh count one call each in their
 //    column; x^(k/2) is sqrt(x) times an integer power;
-//  * comparisons and selections between forms are not counted.
+//  * comparisons and selections between forms are not counted;
+//  * a call of a hand-written helper (a Gauss rule, a Miller recurrence,
+//    Gauss panels: skelconv/gauss_moments.hpp, stable_recurrence.hpp,
+//    polygon_angle_integrals.hpp) counts what the helper executes, measured
+//    by running it on a counting scalar (codegen/helper_costs.hpp); a loop
+//    whose length depends on P counts at its longest.
 // Table 4 of Zanni 2013 (SPEC §4) counts +, ×, / and (√, atan, ln); asinh is
 // a log in disguise and goes in the log column.
 #pragma once
@@ -24,7 +29,7 @@ struct OpCount {
   int sqrt = 0;   ///< square roots
   int atan = 0;   ///< atan / atan2
   int log = 0;    ///< log, asinh
-  int other = 0;  ///< any other call (none today)
+  int other = 0;  ///< any other call: cos, in the polygon helpers' angle rule
 
   constexpr int total() const { return add + mul + div + sqrt + atan + log + other; }
   constexpr OpCount& operator+=(const OpCount& o) {

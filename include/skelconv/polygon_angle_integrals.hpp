@@ -19,13 +19,17 @@
 //     tan φ_k = (a t_k − b) / (α |h|)  at the ends t_0 = 0, t_1 = 1,
 //
 // which holds at z = 0 as well. The integrand cos^n φ (α d² + ζ² cos²φ)^(−n/2)
-// is analytic; the generated code calls this only where ζ² ≤ q_min/4, so
-// that α d² ≥ 3 ζ² and its singularities (cos²φ = −α d²/ζ²) lie at
-// |Im φ| ≥ asinh √3 ≈ 1.32 from an interval of length < π: a Bernstein
-// ellipse of parameter ≥ 2.6, and a 20-point Gauss–Legendre rule is exact
-// to ~2.6^(−40) ≈ 1e-17 relative (Trefethen, ATAP ch. 19). All nodes carry
-// positive terms: nothing cancels. The verifier checks the claim against
-// quadrature of the definition.
+// is analytic; the generated code calls this only where ζ² ≤ q_min/2
+// (q_min the smaller end value of q; kNearPlaneRatio = 2 in
+// codegen/polygon_families.cpp) and either α d² ≥ ζ² or the foot of P̄ lies
+// on the edge. With α d² ≥ ζ² its singularities (cos²φ = −α d²/ζ², at
+// φ = ±π/2 ± i asinh(√(α d²)/ζ)) lie at |Im φ| ≥ asinh 1 ≈ 0.88 from an
+// interval of length < π: a Bernstein ellipse of parameter ≥ 2.18, and a
+// 20-point Gauss–Legendre rule errs by ~2.18^(−40) ≈ 3e-14 relative at
+// worst (Trefethen, ATAP ch. 19), far less for most edges. All nodes carry
+// positive terms: nothing cancels. The verifier measures the result against
+// quadrature of the definition (regions near_plane_inside and near_edges of
+// skelconv-verify-polygons).
 #pragma once
 
 #include <boost/math/quadrature/gauss.hpp>

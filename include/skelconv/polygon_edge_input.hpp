@@ -30,7 +30,8 @@ struct PolygonEdgeInput {
   T s = T(1);                 ///< Cauchy sharpness (cauchy only)
   T R = T(1);                 ///< support radius (compact only)
   /// Compact only: the part [t0, t1] of the edge inside the disc of radius
-  /// √(R² − z²) around P̄ (skelconv/clip.hpp); the driver skips edges that miss it.
+  /// √(R² − z²) around P̄ (skelconv/clip.hpp). An edge that misses the disc
+  /// is still evaluated, with t0 = t1 = 0: its angle θ still counts.
   T t0 = T(0);
   T t1 = T(1);
 };

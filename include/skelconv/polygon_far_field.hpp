@@ -10,9 +10,10 @@
 // the polygon for any simple polygon, convex or not — each by an N × N
 // Gauss–Legendre rule in collapsed (Duffy) coordinates. K(|P − Q|) is
 // analytic in Q wherever |P − Q|² ∉ (−∞, 0] (inverse; (−∞, −1/s] for
-// Cauchy), i.e. within a complex distance ≥ L of the polygon; with
-// L ≥ 2 d (kFarFieldRatio) each 1-D rule converges like a Bernstein ellipse
-// of parameter ≥ 2 + √5 ≈ 4.2, and N = 16 gives 4.2^(−32) ≈ 1e-20
+// Cauchy), i.e. within a complex distance ≥ L of the polygon; with L ≥ 2 d
+// (polygon_far_field_ratio below: P at ≥ 5 radii from the vertex centroid,
+// the polygon within 1 radius of it, so L ≥ 4 radii ≥ 2 d) each 1-D rule
+// converges like a Bernstein ellipse of parameter ≥ 2 + √5 ≈ 4.2, and N = 16 gives 4.2^(−32) ≈ 1e-20
 // (Trefethen, ATAP ch. 19; the verifier checks it against quadrature).
 // Compact kernels never need this: far from the polygon they vanish.
 #pragma once

@@ -96,11 +96,13 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
 
 #include <boost/math/quadrature/gauss.hpp>
 
 #include "skelconv/integer_power.hpp"
+#include "skelconv/not_converged.hpp"
 #include "skelconv/scalis_segment_input.hpp"
 
 namespace skelconv {
@@ -266,7 +268,12 @@ void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_si
     }
   }
   // Bisections toward a singularity at distance δ: ~log2(ℓ/δ); δ ≥ 1e-308 ℓ
-  // in double (P 1e-300 from a cone tip needs ~1000).
+  // in double (P 1e-300 from a cone tip needs ~1000). A panel that still
+  // fails the Bernstein test at this depth is not accurate: NotConvergedError
+  // (wider exponent ranges, long double or binary128, can get there). A span
+  // too short to split in T (its midpoint rounds to an end) is integrated as
+  // it is: it is then within rounding of the singularity, and any finer
+  // panel would be empty.
   constexpr int max_depth = 1100;
   struct Span {
     T a, b;
@@ -278,11 +285,13 @@ void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_si
   while (top > 0) {
     const Span sp = stack[--top];
     bool ok = true;
-    if (sp.depth < max_depth) {
-      for (int k = 0; k < nz && ok; ++k) ok = !(bernstein_rho(sp.a, sp.b, z[k]) < z[k].rho_min);
-    }
+    for (int k = 0; k < nz && ok; ++k) ok = !(bernstein_rho(sp.a, sp.b, z[k]) < z[k].rho_min);
     const T m = (sp.a + sp.b) / 2;
-    if (ok || !(sp.a < m && m < sp.b)) {
+    const bool splittable = sp.a < m && m < sp.b;
+    if (!ok && splittable && sp.depth >= max_depth)
+      throw NotConvergedError("compact SCALIS segment: Gauss panel bisection reached its maximum depth of " +
+                              std::to_string(max_depth) + " levels before a panel passed the Bernstein test");
+    if (ok || !splittable) {
       add_panel(fr, pc, sp.a, sp.b, with_grad, sums);
     } else {
       stack[top++] = {m, sp.b, sp.depth + 1};

@@ -23,6 +23,9 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+
+#include "skelconv/not_converged.hpp"
 
 namespace skelconv {
 
@@ -34,22 +37,45 @@ T recurrence_tolerance() {
   return std::numeric_limits<T>::epsilon() / 100;
 }
 
-/// Upper bound on the number of steps. The generated code calls these
-/// helpers only where the per-step factor is below 7/10 (17/20 for compact
-/// kernels), where 600 steps reach float128's 1e-36 (double needs ≤ 260).
-inline constexpr int recurrence_max_steps = 600;
+/// The largest per-step factor ρ the generated code hands to these helpers
+/// is 17/20 (compact kernels; 7/10 for the others,
+/// codegen/segment_program_builder.hpp). The cap on the number of steps is
+/// what ρ = 9/10 needs at T's tolerance, a margin over 17/20 that rounding in
+/// the generated branch conditions cannot use up.
+inline constexpr double recurrence_cap_rho = 0.9;
+
+/// Upper bound on the number of steps for scalar type T: the least k with
+/// recurrence_cap_rho^k < recurrence_tolerance<T>() (386 for double, 459 for
+/// 64-bit long double, 781 for binary128, 1143 for cpp_bin_float_50). Computed by repeated
+/// multiplication so that it is a compile-time constant (it sizes arrays).
+template <class T>
+constexpr int recurrence_max_steps() {
+  double tolerance = 1.0 / 100;  // recurrence_tolerance<T>() = ε/100, ε = 2^(1 − digits)
+  for (int bit = 1; bit < std::numeric_limits<T>::digits; ++bit) tolerance /= 2;
+  int steps = 0;
+  for (double shrink = 1.0; !(shrink < tolerance); shrink *= recurrence_cap_rho) ++steps;
+  return steps;
+}
 
 namespace detail {
 
 /// Steps of Miller's algorithm for a start error shrinking by rho per step.
+/// Throws NotConvergedError when more than recurrence_max_steps<T>() would be
+/// needed (ρ above recurrence_cap_rho, or not a number): the run would stop
+/// before the neglected start value is below rounding.
 template <class T>
 int miller_steps(const T& rho) {
   using std::ceil;
   using std::log;
-  if (!(rho > T(0))) return 1;  // exact in one step (D = 0) or nothing to shrink
-  if (!(rho < T(1))) return recurrence_max_steps;
-  const T wanted = ceil(log(recurrence_tolerance<T>()) / log(rho));
-  return wanted < T(recurrence_max_steps) ? std::max(1, static_cast<int>(wanted)) : recurrence_max_steps;
+  if (rho != rho) throw NotConvergedError("Miller's recurrence: the per-step factor rho is not a number");
+  if (!(rho > T(0))) return 1;  // exact in one step (D = 0, or −0 by rounding)
+  const T wanted = rho < T(1) ? ceil(log(recurrence_tolerance<T>()) / log(rho)) : T(recurrence_max_steps<T>() + 1);
+  if (!(wanted <= T(recurrence_max_steps<T>()))) {
+    throw NotConvergedError("Miller's recurrence: per-step factor rho = " + std::to_string(static_cast<double>(rho)) +
+                            " needs more than the cap of " + std::to_string(recurrence_max_steps<T>()) +
+                            " steps to reach the scalar type's rounding");
+  }
+  return std::max(1, static_cast<int>(wanted));
 }
 
 /// powers[j] = x^j for j = 0…count−1 (x ≤ 1: the tail may underflow to 0,
@@ -69,7 +95,7 @@ struct DownwardStart {
   T d_scaled;       ///< D / q_near
   T inv_root_near;  ///< 1/√q_near
   int top;          ///< start index: J_top (or M_{k,top}) = 0
-  std::array<T, 2 * recurrence_max_steps + 40> far_powers;  ///< (q_near/q_far)^(j/2)
+  std::array<T, 2 * recurrence_max_steps<T>() + 40> far_powers;  ///< (q_near/q_far)^(j/2)
 
   /// For the highest index `highest` needed, with q_near < q_far.
   DownwardStart(int highest, const T& a, const T& D, const T& near_q, const T& far_q) {
@@ -187,7 +213,7 @@ T J_upward_compact(int n, const T& a, const T& D, const T& slope0, const T& q0, 
   const int steps = detail::miller_steps(a * q_e / D);  // q_e / q_max < 1
   const int bottom = n - 2 * steps;
   // small_powers[j] = ratio^(j/2); the smaller end's weight at m is ratio^(1−m/2).
-  std::array<T, 2 * recurrence_max_steps + 40> small_powers;
+  std::array<T, 2 * recurrence_max_steps<T>() + 40> small_powers;
   detail::fill_powers(sqrt(ratio), 2 - bottom, small_powers.data());
   T J_scaled = 0;  // Ĵ_bottom
   for (int m = bottom + 2; m <= n; m += 2) {

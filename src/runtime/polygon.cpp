@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "convergence_guard.hpp"
 #include "input_checks.hpp"
 #include "planar_polygon.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio, shared by the edges
@@ -275,7 +276,7 @@ double Polygon::value(const Vec3& p) const {
     case Case::on_inverse_singularity: return infinity;
     case Case::call_closed_form: break;
   }
-  const double f = polygon_f(closed_form_input(), to_array(p));
+  const double f = detail::evaluate_converged("polygon_f", p, [&] { return polygon_f(closed_form_input(), to_array(p)); });
   require_finite({f}, "polygon_f", p);
   return f;
 }
@@ -286,7 +287,8 @@ Vec3 Polygon::gradient(const Vec3& p) const {
     case Case::on_inverse_singularity: return Vec3::Constant(infinity);
     case Case::call_closed_form: break;
   }
-  const std::array<double, 3> g = polygon_grad(closed_form_input(), to_array(p));
+  const std::array<double, 3> g =
+      detail::evaluate_converged("polygon_grad", p, [&] { return polygon_grad(closed_form_input(), to_array(p)); });
   require_finite({g[0], g[1], g[2]}, "polygon_grad", p);
   return to_vec3(g);
 }
@@ -298,7 +300,8 @@ FieldSample Polygon::value_and_gradient(const Vec3& p) const {
     case Case::call_closed_form: break;
   }
   std::array<double, 3> g{};
-  const double f = polygon_f_and_grad(closed_form_input(), to_array(p), g);
+  const double f = detail::evaluate_converged("polygon_f_and_grad", p,
+                                             [&] { return polygon_f_and_grad(closed_form_input(), to_array(p), g); });
   require_finite({f, g[0], g[1], g[2]}, "polygon_f_and_grad", p);
   return {f, to_vec3(g)};
 }

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "generated/scalis_segment_table.hpp"
+#include "convergence_guard.hpp"
 #include "input_checks.hpp"
 #include "skelconv/scalis_compact.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio
@@ -119,16 +120,15 @@ double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double
   }
   ScalisSegmentInput<double> input = input_;
   input.p = to_array(p);
-  double F = 0.0;
-  if (generated_ == nullptr) {
-    F = scalis_compact_F(kernel_.degree, input, grad);
-  } else if (grad == nullptr) {
-    F = generated_->f(input);
-  } else if (!want_value) {
-    *grad = generated_->grad(input);
-  } else {
-    F = generated_->f_and_grad(input, *grad);
-  }
+  const double F = detail::evaluate_converged(evaluator_name(), p, [&] {
+    if (generated_ == nullptr) return scalis_compact_F(kernel_.degree, input, grad);
+    if (grad == nullptr) return generated_->f(input);
+    if (!want_value) {
+      *grad = generated_->grad(input);
+      return 0.0;
+    }
+    return generated_->f_and_grad(input, *grad);
+  });
   const bool finite = std::isfinite(F) && (grad == nullptr || std::all_of(grad->begin(), grad->end(),
                                                                            [](double g) { return std::isfinite(g); }));
   if (!finite) {

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "generated/segment_table.hpp"
+#include "convergence_guard.hpp"
 #include "input_checks.hpp"
 #include "skelconv/clip.hpp"
 
@@ -131,7 +132,7 @@ double Segment::value(const Vec3& p) const {
     case Case::on_inverse_singularity: return infinity;
     case Case::call_generated: break;
   }
-  const double f = generated_->f(input);
+  const double f = detail::evaluate_converged(generated_->name, p, [&] { return generated_->f(input); });
   require_finite({f}, p);
   return f;
 }
@@ -143,7 +144,7 @@ Vec3 Segment::gradient(const Vec3& p) const {
     case Case::on_inverse_singularity: return Vec3::Constant(infinity);
     case Case::call_generated: break;
   }
-  const std::array<double, 3> g = generated_->grad(input);
+  const std::array<double, 3> g = detail::evaluate_converged(generated_->name, p, [&] { return generated_->grad(input); });
   require_finite({g[0], g[1], g[2]}, p);
   return to_vec3(g);
 }
@@ -156,7 +157,7 @@ FieldSample Segment::value_and_gradient(const Vec3& p) const {
     case Case::call_generated: break;
   }
   std::array<double, 3> g{};
-  const double f = generated_->f_and_grad(input, g);
+  const double f = detail::evaluate_converged(generated_->name, p, [&] { return generated_->f_and_grad(input, g); });
   require_finite({f, g[0], g[1], g[2]}, p);
   return {f, to_vec3(g)};
 }

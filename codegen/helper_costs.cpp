@@ -1,0 +1,135 @@
+// codegen/helper_costs.cpp — see helper_costs.hpp. Each function runs the
+// helper once on CountingDouble and returns the tally; the inputs are the
+// worst case the generated branch that calls the helper allows.
+#include "helper_costs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <skelconv/gauss_moments.hpp>
+#include <skelconv/polygon_angle_integrals.hpp>
+#include <skelconv/stable_recurrence.hpp>
+
+#include "counting_scalar.hpp"  // bench/: the same counting scalar the benchmarks use
+
+namespace skelconv::codegen::helper_costs {
+namespace {
+
+using Counted = bench::CountingDouble;
+
+/// Runs `call` on a fresh tally and returns it as an OpCount.
+template <class Call>
+OpCount tally_of(const Call& call) {
+  bench::operation_tally() = bench::OperationTally{};
+  call();
+  const bench::OperationTally t = bench::operation_tally();
+  OpCount out;
+  out.add = int(t.add);
+  out.mul = int(t.mul);
+  out.div = int(t.div);
+  out.sqrt = int(t.sqrt);
+  out.atan = int(t.atan);
+  out.log = int(t.log);
+  out.other = int(t.other);
+  return out;
+}
+
+/// Output array of a helper that fills levels m_lo…m_hi (step 2) × k_max + 1.
+std::vector<Counted> moment_array(int m_lo, int m_hi, int k_max) {
+  return std::vector<Counted>(static_cast<std::size_t>(((m_hi - m_lo) / 2 + 1) * (k_max + 1)));
+}
+
+template <unsigned N>
+OpCount gauss_rule_with(int m_lo, int m_hi, int k_max) {
+  std::vector<Counted> out = moment_array(m_lo, m_hi, k_max);
+  // Any q > 0 on [0, 1]: the rule's cost does not depend on the values.
+  return tally_of([&] {
+    segment_moments_gauss<Counted, N>(m_lo, m_hi, k_max, Counted(1), Counted(0.25), Counted(2), Counted(0), Counted(1),
+                                      out.data());
+  });
+}
+
+}  // namespace
+
+OpCount gauss_rule(int nodes, int m_lo, int m_hi, int k_max) {
+  switch (nodes) {
+    case 7: return gauss_rule_with<7>(m_lo, m_hi, k_max);
+    case 10: return gauss_rule_with<10>(m_lo, m_hi, k_max);
+    case 15: return gauss_rule_with<15>(m_lo, m_hi, k_max);
+    case 20: return gauss_rule_with<20>(m_lo, m_hi, k_max);
+    case 25: return gauss_rule_with<25>(m_lo, m_hi, k_max);
+    case 30: return gauss_rule_with<30>(m_lo, m_hi, k_max);
+    default: throw std::logic_error("helper_costs::gauss_rule: no tabulated rule with " + std::to_string(nodes) + " nodes");
+  }
+}
+
+OpCount gauss_panels(int m_lo, int m_hi, int k_max) {
+  // The panels grade towards the pole at distance δ from the segment's end
+  // (in units of |AB|); their number grows like log(1/δ). The deepest δ a
+  // double evaluation resolves: the first panel's step 0.9 δ must exceed the
+  // rounding unit of t = 1 (2.2e-16; closer, the helper throws
+  // NotConvergedError), and q^(−m_hi/2) = δ^(−m_hi) must not overflow. P on
+  // the line beyond B (D = 0), a − b = −δ.
+  std::vector<Counted> out = moment_array(m_lo, m_hi, k_max);
+  const double delta = std::max(1e-15, std::pow(10.0, -300.0 / m_hi));
+  return tally_of([&] {
+    segment_moments_gauss_panels<Counted>(m_lo, m_hi, k_max, Counted(1), Counted(1 + delta), Counted(-delta), Counted(0),
+                                          out.data());
+  });
+}
+
+OpCount moments_beyond_end(int m_lo, int m_hi, int k_max) {
+  // Beyond B (the t-moments are then recovered by a binomial sum: the costlier
+  // end), ρ = D/(a q(1)) = 7/10, the generated code's largest: a = 1,
+  // b = 3/2, c = 17/6 give q(1) = 5/6, D = 7/12.
+  std::vector<Counted> out = moment_array(m_lo, m_hi, k_max);
+  const double a = 1, b = 1.5, c = 17.0 / 6.0;
+  return tally_of([&] {
+    segment_moments_beyond_end<Counted>(m_lo, m_hi, k_max, Counted(a), Counted(b), Counted(a * c - b * b), Counted(c),
+                                        Counted(a - 2 * b + c), out.data());
+  });
+}
+
+OpCount expression_helper(const std::string& function, int n) {
+  if (function == "J_downward") {
+    // Beyond A with ρ = D/(a q(0)) = 7/10: a = 1, b = −1/2, c = b²/(a·3/10).
+    const double a = 1, b = -0.5, c = b * b / (a * 0.3);
+    const double D = a * c - b * b;
+    return tally_of([&] {
+      (void)J_downward<Counted>(n, Counted(a), Counted(D), Counted(-b), Counted(c), Counted(a - b), Counted(a - 2 * b + c));
+    });
+  }
+  if (function == "J_upward_compact") {
+    // Compact (a < 0, D < 0), per-step factor a q_e / D = 17/20.
+    const double a = -1, D = -1, q_e = 0.85, q_small = 0.5;
+    return tally_of([&] {
+      (void)J_upward_compact<Counted>(n, Counted(a), Counted(D), Counted(0.3), Counted(q_e), Counted(0.8),
+                                      Counted(q_small));
+    });
+  }
+  throw std::logic_error("helper_costs::expression_helper: no cost for helper " + function);
+}
+
+OpCount polygon_H_near_plane(int n_lo, int n_hi) {
+  std::vector<Counted> out(static_cast<std::size_t>((n_hi - n_lo) / 2 + 1));
+  return tally_of([&] {
+    polygon_edge_H_near_plane<Counted>(n_lo, n_hi, Counted(1), Counted(1), Counted(0.1), Counted(-1), Counted(1),
+                                       out.data());
+  });
+}
+
+OpCount polygon_G_compact_chord(int p_lo, int p_hi) {
+  // The generated code calls it for a chord at d ≥ √w R / 2 from P̄
+  // (kChordRimRatio), so |u| ≤ √3: the full range, d²/R² = w/4, takes the
+  // most panels (two a side).
+  std::vector<Counted> out(static_cast<std::size_t>(p_hi - p_lo + 1));
+  const double root3 = std::sqrt(3.0);
+  return tally_of([&] {
+    polygon_edge_G_compact_chord<Counted>(p_lo, p_hi, Counted(1), Counted(1), Counted(1), Counted(0.25), Counted(-root3),
+                                          Counted(root3), out.data());
+  });
+}
+
+}  // namespace skelconv::codegen::helper_costs
