@@ -164,6 +164,7 @@ const std::vector<TopologyCase> topology_cases{
     {"blobs", 0.5, {2, 2}},                // a blob 30× smaller, 3 units away
     {"polygon", 0.1, {2}},                 // a thickened pentagon
     {"scalis_cone", 0.8, {2}},             // a SCALIS cone (radius 0.5 → 0)
+    {"blend_tree", 0.5, {2, 2}},           // union of a summed L of segments and a ball
 };
 
 /// The same cases meshed by the grid method, except `blobs`: its small blob
