@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bound_command.hpp"
 #include "canal_command.hpp"
 #include "eval_command.hpp"
 #include "exit_status.hpp"
@@ -50,6 +51,8 @@ int main(int argc, char** argv) {
   const CLI::App* eval = add_eval_command(app, eval_options);
   CanalOptions canal_options;
   const CLI::App* canal = add_canal_command(app, canal_options);
+  BoundOptions bound_options;
+  const CLI::App* bound = add_bound_command(app, bound_options);
 
   if (first_argument_is_unknown_subcommand(app, argc, argv)) {
     report_error(std::string("unknown subcommand \"") + argv[1] + "\" (available: " + subcommand_names(app) + ")");
@@ -67,6 +70,7 @@ int main(int argc, char** argv) {
   try {
     if (eval->parsed()) return run_eval(eval_options);
     if (canal->parsed()) return run_canal(canal_options);
+    if (bound->parsed()) return run_bound(bound_options);
   } catch (const std::exception& error) {
     report_error(std::string("internal error: ") + error.what());
     return exit_evaluation_failed;
