@@ -2,12 +2,24 @@
 // (docs/bound.md) and the interval geometry of the exam notes (part 3d).
 //
 // Interval is Boost.Interval on double with Boost's own rounding policies:
-// every operation rounds its lower end down and its upper end up
-// (rounded_arith_std switches the FPU rounding mode, saved and restored by
-// save_state), and exp/log/pow round outward through rounded_transc_std.
-// No rounding is done by hand. The translation units that use it are
-// compiled with -frounding-math (src/CMakeLists.txt: the OBJECT library
-// skelconv_interval), away from the generated kernels.
+// every operation rounds its lower end down and its upper end up. The policy
+// is rounded_arith_opp (inside rounded_transc_opp, under save_state): the
+// FPU is switched to upward rounding once per operation and lower ends are
+// computed as −(−x − y), so no two identical operations run under different
+// modes. The simpler rounded_arith_std (switch down, add, switch up, add)
+// came out WRONG here: GCC merges the two identical additions across the
+// mode switch (GCC bug 34678, even with -frounding-math), giving
+// Interval(0.1) + Interval(0.2) zero width (tests/interval_test.cpp,
+// RoundsOutward). exp and log (the Gaussian kernel, the super-elliptic
+// blend's powers) call the C library under the directed mode; their
+// soundness rests on glibc's exp/log honouring it (they are accurate to
+// < 1 ulp in every rounding mode), which the soundness sweep exercises.
+// No rounding is done by hand. EVERY translation unit that does arithmetic
+// on Interval must be compiled with -frounding-math (src/CMakeLists.txt: the
+// OBJECT library skelconv_interval, away from the generated kernels):
+// without it GCC folds Interval(0.1) + Interval(0.2) at compile time into a
+// zero-width, wrong enclosure (tests/interval_test.cpp, RoundsOutward).
+// Reading lower() and upper() needs nothing.
 //
 // checking_base: intervals may have infinite ends ([0, +inf] is the
 // enclosure of an inverse kernel over a box touching its skeleton); the code
@@ -23,7 +35,7 @@
 namespace skelconv::interval {
 
 using Policies = boost::numeric::interval_lib::policies<
-    boost::numeric::interval_lib::save_state<boost::numeric::interval_lib::rounded_transc_std<double>>,
+    boost::numeric::interval_lib::save_state<boost::numeric::interval_lib::rounded_transc_opp<double>>,
     boost::numeric::interval_lib::checking_base<double>>;
 using Interval = boost::numeric::interval<double, Policies>;
 
