@@ -74,6 +74,23 @@ TEST(Interval, WorkedExampleOfTheNotes) {
   EXPECT_EQ(classify(f2, 0.5), Classification::outside);
 }
 
+TEST(Interval, InverseKernelsNearTheirSkeleton) {
+  const Skeleton skeleton = parse_skeleton_json(R"({"primitives": [
+      {"type": "point", "center": [0, 0, 0], "kernel": {"family": "inverse", "degree": 3}}]})");
+  // A box that is the centre itself: f = +inf there (the marker), never NaN.
+  const Interval at_centre = enclose(skeleton, Box{Vec3::Zero(), Vec3::Zero()});
+  EXPECT_EQ(at_centre.lower(), INFINITY);
+  EXPECT_EQ(at_centre.upper(), INFINITY);
+  // A box around it: [K(d_max), +inf], d_max = √3 · 0.1.
+  const Interval around = enclose(skeleton, Box{Vec3::Constant(-0.1), Vec3::Constant(0.1)});
+  EXPECT_NEAR(around.lower(), std::pow(0.03, -1.5), 1e-9);
+  EXPECT_EQ(around.upper(), INFINITY);
+  // A box at distance 1 along x, 2 at its far corner: [1/8 … , 1].
+  const Interval away = enclose(skeleton, Box{Vec3(1, 0, 0), Vec3(1.5, 1, std::sqrt(0.75))});
+  EXPECT_NEAR(away.upper(), 1.0, 1e-15);
+  EXPECT_NEAR(away.lower(), 1.0 / 8.0, 1e-15);
+}
+
 TEST(Interval, OctreeUndeterminedCellsGrowLikeArea) {
   // One soft point: the surface is a sphere of radius 1 (R = √(2 + √2)).
   const Skeleton skeleton = parse_skeleton_json(

@@ -41,16 +41,29 @@ Interval distance_range(const Box& box, const std::array<IntervalPoint, N>& vert
   return interval_sqrt(Interval(min_sq, max_sq));
 }
 
-/// K(d/(σ τ)) / τ^power over d ∈ r, τ ∈ tau (τ ≥ 0), for the SCALIS pieces.
+/// K(d/(σ τ)) / τ^power over d ∈ r, τ ∈ tau (τ ≥ 0), for the SCALIS pieces
+/// (power 1 on segments, 2 on triangles; i the kernel's degree).
+///
+/// Where τ reaches 0 (a tip of radius 0), 1/τ is unbounded but the kernel
+/// vanishes faster: with y = d/(στ), K/τ^p = (σ/d)^p y^p K(y), and every
+/// SCALIS kernel has K(y) ≤ y^(−i) (inverse: equal; Cauchy:
+/// (1 + y²)^(−i/2) ≤ y^(−i); compact: ≤ 1 ≤ y^(−i) for y < 1, else 0), so
+/// y^p K(y) ≤ y^(p−i), non-increasing for i ≥ p: at most y_min^(p−i).
 template <class Kernel>
-Interval scaled_kernel(const Kernel& kernel, const Interval& r, const Interval& tau, double sigma, int power) {
+Interval scaled_kernel(const Kernel& kernel, const Interval& r, const Interval& tau, double sigma, int power,
+                       int degree) {
   const double y_low = (Interval(r.lower()) / (Interval(sigma) * tau.upper())).lower();
   const double y_high = tau.lower() > 0.0 ? (Interval(r.upper()) / (Interval(sigma) * tau.lower())).upper() : infinity;
   const Interval k = kernel_range(kernel, Interval(std::max(0.0, y_low), y_high));
-  const Interval inverse_tau(tau.upper() > 0.0 ? (1.0 / Interval(tau.upper())).lower() : infinity,
-                             tau.lower() > 0.0 ? (1.0 / Interval(tau.lower())).upper() : infinity);
-  const Interval factor = power == 1 ? inverse_tau : inverse_tau * inverse_tau;
-  return safe_product(k, factor);
+  if (tau.lower() <= 0.0) {
+    if (k.upper() == 0.0) return Interval(0.0);
+    if (!(r.lower() > 0.0 && y_low > 0.0) || degree < power) return Interval(0.0, infinity);
+    const Interval scale = boost::numeric::pow(Interval(sigma) / r.lower(), power);
+    const Interval tail = boost::numeric::pow(1.0 / Interval(y_low), degree - power);
+    return Interval(0.0, (scale * tail).upper());
+  }
+  const Interval inverse_tau = 1.0 / tau;
+  return k * (power == 1 ? inverse_tau : inverse_tau * inverse_tau);
 }
 
 std::size_t segment_pieces(double length, const Box& box, const EnclosureOptions& options) {
@@ -164,7 +177,7 @@ Interval enclose_scalis_segment(const ScalisSegment& s, const Box& box, const En
   const Interval F = sum_over_segment(s.a(), s.b(), box, options, [&](const Interval& r, const Interval& t, const Interval& dt) {
     const Interval tau = s.tau0() + t * (Interval(s.tau1()) - s.tau0());
     const Interval tau_pos(std::max(0.0, tau.lower()), std::max(0.0, tau.upper()));
-    return safe_product(length * dt, std::visit([&](const auto& kk) { return scaled_kernel(kk, r, tau_pos, sigma, 1); }, kernel));
+    return safe_product(length * dt, std::visit([&](const auto& kk) { return scaled_kernel(kk, r, tau_pos, sigma, 1, s.kernel().degree); }, kernel));
   });
   const double h = ScalisSegment::normalisation(s.kernel().family, s.kernel().degree, sigma);
   return safe_product(Interval(s.iso()) / h, F);
@@ -176,7 +189,7 @@ Interval enclose_scalis_triangle(const ScalisTriangle& s, const Box& box, const 
   const Interval area = triangle_area(s.vertices(), Vec3::UnitZ()).first;
   const Interval F = triangle_integral(s.vertices(), s.radii(), area, box, options, [&](const Interval& r, const Interval& tau) {
     const Interval tau_pos(std::max(0.0, tau.lower()), std::max(0.0, tau.upper()));
-    return std::visit([&](const auto& kk) { return scaled_kernel(kk, r, tau_pos, sigma, 2); }, kernel);
+    return std::visit([&](const auto& kk) { return scaled_kernel(kk, r, tau_pos, sigma, 2, s.kernel().degree); }, kernel);
   });
   const double h = ScalisTriangle::normalisation(s.kernel().family, s.kernel().degree, sigma);
   return safe_product(Interval(s.iso()) / h, F);

@@ -21,6 +21,7 @@ namespace skelconv::interval {
 template <class Kernel>
 Interval kernel_range(const Kernel& kernel, const Interval& r) {
   constexpr double infinity = std::numeric_limits<double>::infinity();
+  if (Kernel::singular_at_zero && r.upper() <= 0.0) return Interval(infinity);  // the box is the centre
   const double low = r.upper() == infinity ? 0.0 : kernel.value(Interval(r.upper())).lower();
   double high = infinity;
   if (!(Kernel::singular_at_zero && r.lower() <= 0.0)) high = kernel.value(Interval(r.lower())).upper();
