@@ -211,7 +211,32 @@ Interval enclose_polygon(const Polygon& polygon, const Box& box, const Enclosure
   return total;
 }
 
+/// g(r) = K'(r)/r at one distance r > 0, enclosed.
+template <class Kernel>
+Interval slope_over_distance(const Kernel& kernel, double r) {
+  return kernel.derivative(Interval(r)) / Interval(r);
+}
+
 }  // namespace
+
+std::optional<IntervalPoint> enclose_gradient(const Primitive& primitive, const Box& box) {
+  const PointPrimitive* point = std::get_if<PointPrimitive>(&primitive);
+  if (point == nullptr) return std::nullopt;
+  const Interval r = interval_sqrt(squared_distance(box, point->center()));
+  const IntervalPoint offset = to_interval_point(box);
+  if (!(r.lower() > 0.0)) {
+    return IntervalPoint{Interval(-infinity, infinity), Interval(-infinity, infinity), Interval(-infinity, infinity)};
+  }
+  const Interval g = std::visit(
+      [&](const auto& kernel) {
+        const double high = r.upper() == infinity ? 0.0 : slope_over_distance(kernel, r.upper()).upper();
+        return Interval(slope_over_distance(kernel, r.lower()).lower(), std::min(0.0, high));
+      },
+      point->radial_kernel());
+  IntervalPoint gradient;
+  for (int i = 0; i < 3; ++i) gradient[i] = Interval(point->weight()) * g * (offset[i] - point->center()[i]);
+  return gradient;
+}
 
 Interval enclose(const Primitive& primitive, const Box& box, const EnclosureOptions& options) {
   return std::visit(

@@ -28,6 +28,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "skelconv/interval/interval.hpp"
 #include "skelconv/skeleton.hpp"
@@ -50,6 +51,13 @@ Interval enclose(const Primitive& primitive, const Box& box, const EnclosureOpti
 
 /// Enclosure of the whole skeleton's field over `box` (the blend tree).
 Interval enclose(const Skeleton& skeleton, const Box& box, const EnclosureOptions& options = {});
+
+/// Enclosure of ∇f of a POINT primitive over `box` (nullopt for the other
+/// primitive types: not provided yet). ∇f = w g(r) (P − C) with
+/// g(r) = K'(r)/r, which is non-decreasing in r (≤ 0, rising to 0) for
+/// every family (docs/bound.md), so g ∈ [g(r_min), g(r_max)]. A box that
+/// reaches the centre (r_min = 0) gets (−inf, +inf) components.
+std::optional<IntervalPoint> enclose_gradient(const Primitive& primitive, const Box& box);
 
 /// Where a box stands with respect to the surface f = iso.
 enum class Classification { inside, outside, undetermined };
