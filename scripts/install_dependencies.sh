@@ -12,6 +12,7 @@ packages=(
   valgrind                # bench/: instruction counts
   python3-matplotlib python3-numpy  # papers_figures/: 2-D figures (Agg backend) and their claim checks
   povray                  # papers_figures/render3d: headless shaded renders of meshes
+  libopenvdb-dev libboost-iostreams-dev  # skelconv mesh --method grid (OpenVDB volumeToMesh; its CMake module needs Boost.Iostreams)
 )
 
 missing=()

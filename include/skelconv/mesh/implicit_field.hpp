@@ -1,0 +1,40 @@
+// skelconv/mesh/implicit_field.hpp — what the mesher needs to know about a
+// field: f and ∇f at a point, points on its skeleton, and its limit at
+// infinity.
+//
+// The mesher (mesh_iso_surface.hpp) sees a field only through this struct, so
+// that any field — a Skeleton (the sum of its primitives), a blend tree, a
+// test function — can be meshed without the mesher knowing where it comes
+// from. Convention: f is larger inside the surface f = iso than outside.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "skelconv/geometry.hpp"
+
+namespace skelconv {
+
+class Skeleton;
+
+struct ImplicitField {
+  /// f(p) and ∇f(p). May return +inf (on an inverse-kernel skeleton); may
+  /// throw InputError / EvaluationError.
+  std::function<FieldSample(const Vec3&)> value_and_gradient;
+  /// f(p) alone (cheaper where the gradient is not needed).
+  std::function<double(const Vec3&)> value;
+  /// Points on the skeleton, so that every connected piece of the skeleton
+  /// holds some. The mesher shoots rays from those inside the surface to
+  /// seed every component (docs/mesh.md, "Seeding").
+  std::vector<Vec3> skeleton_points;
+  /// lim f(p) as |p| → ∞. A surface f = iso with iso ≤ far_field is not
+  /// bounded. Every skeleton kernel decays to 0, hence the default.
+  double far_field = 0.0;
+};
+
+/// The field of `skeleton` (which must outlive the returned object), with
+/// `points_per_element` skeleton points per segment / polygon edge
+/// (Skeleton::skeleton_points).
+ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element = 4);
+
+}  // namespace skelconv

@@ -1,0 +1,78 @@
+// skelconv/mesh/mesh_iso_surface.hpp — a closed triangle mesh of the surface
+// f = iso of an implicit field (the library side of `skelconv mesh`).
+//
+// Steps (docs/mesh.md explains each and why):
+//   1. reject iso ≤ the far-field value (the surface would be unbounded);
+//   2. find a box containing the surface (bounding_region.hpp);
+//   3. seed every component from the skeleton points (surface_seeds.hpp);
+//   4. Delaunay-refine the surface with CGAL Mesh_3 from those seeds, manifold
+//      criteria, fixed random seed (src/mesh/cgal_surface_mesher.hpp); or,
+//      with MeshMethod::grid, sample the field on a uniform grid and
+//      extract the zero set with OpenVDB (src/mesh/grid_surface_mesher.hpp);
+//   5. project every vertex onto f = iso by Newton steps and set the exact
+//      normals (surface_projection.hpp).
+// Same field and options → same mesh, bit for bit.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+
+#include "skelconv/mesh/bounding_region.hpp"
+#include "skelconv/mesh/implicit_field.hpp"
+#include "skelconv/mesh/triangle_mesh.hpp"
+
+namespace skelconv {
+
+/// Reported about once per `MeshOptions::progress_interval` seconds during
+/// refinement.
+struct MeshProgress {
+  std::size_t field_evaluations = 0;
+  double seconds = 0.0;
+};
+
+/// How step 4 makes the triangles.
+enum class MeshMethod {
+  /// CGAL Mesh_3 Delaunay refinement: closed 2-manifold, adaptive, slow.
+  cgal,
+  /// OpenVDB volumeToMesh on a uniform grid of spacing `size`: fast, no
+  /// topological guarantee below the grid spacing (docs/mesh.md).
+  grid,
+};
+
+struct MeshOptions {
+  double iso = 1.0;
+  MeshMethod method = MeshMethod::cgal;
+  /// Facet size h (CGAL facet_size: largest facet circumradius; the grid
+  /// method's grid spacing); default the bounding box diagonal / 50.
+  std::optional<double> size;
+  /// Facet distance d (CGAL facet_distance); default h / 10.
+  std::optional<double> distance;
+  /// Smallest facet angle in degrees; CGAL guarantees termination up to 30.
+  double facet_angle = 30.0;
+  /// Every vertex ends with |f − iso| / |∇f| ≤ projection_tolerance × the
+  /// mesh's bounding-box diagonal.
+  double projection_tolerance = 1e-9;
+  unsigned random_seed = 0;
+  std::function<void(const MeshProgress&)> progress;
+  double progress_interval = 1.0;
+};
+
+/// What the run did and where the time went.
+struct MeshReport {
+  Box3 box;                  ///< the box the surface was found in
+  double size = 0.0;         ///< facet size used
+  double distance = 0.0;     ///< facet distance used
+  std::size_t seeds = 0;     ///< surface points inserted before refinement
+  std::size_t field_evaluations = 0;
+  double field_seconds = 0.0;   ///< inside the field (all steps)
+  double total_seconds = 0.0;
+  double refine_seconds = 0.0;  ///< step 4, field time included
+};
+
+/// Meshes f = options.iso. Throws InputError (located at "--iso", "--size",
+/// "--distance") for an unbounded or absent surface or bad options, and
+/// EvaluationError if the field cannot be evaluated or a vertex not projected.
+TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& options, MeshReport* report = nullptr);
+
+}  // namespace skelconv

@@ -1,0 +1,31 @@
+// skelconv/mesh/surface_projection.hpp — moving mesh vertices exactly onto
+// f = iso and giving them the exact normal.
+//
+// Each vertex p is moved by Newton steps along the exact gradient,
+//     p ← p − (f(p) − iso) ∇f(p) / |∇f(p)|²,
+// until the first-order distance to the surface |f − iso| / |∇f| is at most
+// `tolerance` (skelconv mesh: 1e-9 × the mesh's bounding-box diagonal). A
+// step is never longer than `max_step` and is halved while it does not
+// reduce |f − iso| (Newton from a vertex already close to the surface
+// converges quadratically; the safeguards only matter near critical points).
+// The normal written is the exact outward unit normal −∇f/|∇f| at the final
+// position (f is larger inside).
+#pragma once
+
+#include "skelconv/mesh/implicit_field.hpp"
+#include "skelconv/mesh/triangle_mesh.hpp"
+
+namespace skelconv {
+
+struct ProjectionOptions {
+  double tolerance = 0.0;  ///< bound on |f − iso| / |∇f| (a length)
+  double max_step = 0.0;   ///< longest single move (a length)
+  int max_iterations = 60;
+};
+
+/// Projects every vertex of `mesh` onto f = iso and fills mesh.normals.
+/// Throws EvaluationError naming the vertex if one cannot be brought within
+/// the tolerance (zero gradient, no convergence).
+void project_to_surface(TriangleMesh& mesh, const ImplicitField& field, double iso, const ProjectionOptions& options);
+
+}  // namespace skelconv

@@ -1,0 +1,76 @@
+// Implementation of skelconv/mesh/bounding_region.hpp.
+#include "skelconv/mesh/bounding_region.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "skelconv/errors.hpp"
+
+namespace skelconv {
+namespace {
+
+Box3 widened(const Box3& box, double margin) {
+  const Vec3 m = Vec3::Constant(margin);
+  return {box.lo - m, box.hi + m};
+}
+
+/// True when f < iso at every sample of the six faces of `box`.
+bool faces_below_iso(const ImplicitField& field, double iso, const Box3& box, int n) {
+  const Vec3 extent = box.hi - box.lo;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3;
+    const int v = (axis + 2) % 3;
+    for (int side = 0; side < 2; ++side) {
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+          Vec3 p;
+          p[axis] = side == 0 ? box.lo[axis] : box.hi[axis];
+          p[u] = box.lo[u] + extent[u] * double(i) / double(n - 1);
+          p[v] = box.lo[v] + extent[v] * double(j) / double(n - 1);
+          if (!(field.value(p) < iso)) return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+Box3 bounding_box(const std::vector<Vec3>& points) {
+  Box3 box{points.front(), points.front()};
+  for (const Vec3& p : points) {
+    box.lo = box.lo.cwiseMin(p);
+    box.hi = box.hi.cwiseMax(p);
+  }
+  return box;
+}
+
+Box3 bounding_region(const ImplicitField& field, double iso, const BoundingRegionOptions& options) {
+  const Box3 skeleton = bounding_box(field.skeleton_points);
+  const double diagonal = skeleton.diagonal();
+  double margin = diagonal > 0 ? diagonal / 4 : 1.0;
+  const auto passes = [&](double m) {
+    return faces_below_iso(field, iso, widened(skeleton, m), options.face_samples);
+  };
+  int rescalings = 0;
+  if (passes(margin)) {
+    while (rescalings++ < options.max_rescalings && passes(margin / 2)) margin /= 2;
+  } else {
+    while (true) {
+      if (rescalings++ >= options.max_rescalings || !std::isfinite(2 * margin)) {
+        throw InputError(fmt::format("the surface f = {} does not close: f >= {} on the faces of every box "
+                                     "up to {:g} around the skeleton",
+                                     iso, iso, margin),
+                         "--iso");
+      }
+      margin *= 2;
+      if (passes(margin)) break;
+    }
+  }
+  return widened(skeleton, 2 * margin);
+}
+
+}  // namespace skelconv

@@ -1,0 +1,135 @@
+// Implementation of skelconv/mesh/mesh_iso_surface.hpp.
+#include "skelconv/mesh/mesh_iso_surface.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <type_traits>
+
+#include <fmt/format.h>
+
+#include "cgal_surface_mesher.hpp"
+#include "grid_surface_mesher.hpp"
+#include "skelconv/errors.hpp"
+#include "skelconv/mesh/surface_projection.hpp"
+#include "skelconv/mesh/surface_seeds.hpp"
+
+namespace skelconv {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// Counts and times the field's evaluations, and reports progress (during
+/// refinement) at most once per options.progress_interval seconds.
+class FieldMeter {
+ public:
+  FieldMeter(const ImplicitField& field, const MeshOptions& options) : field_(field), options_(options) {}
+
+  /// `field_` with every call metered; valid while *this lives.
+  ImplicitField metered() {
+    ImplicitField m = field_;
+    m.value = [this](const Vec3& p) { return measure([&] { return field_.value(p); }); };
+    m.value_and_gradient = [this](const Vec3& p) { return measure([&] { return field_.value_and_gradient(p); }); };
+    return m;
+  }
+  void report_progress(bool on) { reporting_ = on && bool(options_.progress); }
+  std::size_t evaluations() const { return evaluations_; }
+  double seconds() const { return seconds_; }
+
+ private:
+  template <class Evaluate>
+  std::invoke_result_t<Evaluate> measure(Evaluate evaluate) {
+    const Clock::time_point start = Clock::now();
+    auto result = evaluate();
+    const Clock::time_point end = Clock::now();
+    seconds_ += std::chrono::duration<double>(end - start).count();
+    ++evaluations_;
+    if (reporting_ && std::chrono::duration<double>(end - last_report_).count() >= options_.progress_interval) {
+      last_report_ = end;
+      options_.progress(MeshProgress{evaluations_, seconds_since(begin_)});
+    }
+    return result;
+  }
+
+  const ImplicitField& field_;
+  const MeshOptions& options_;
+  std::size_t evaluations_ = 0;
+  double seconds_ = 0.0;
+  bool reporting_ = false;
+  Clock::time_point begin_ = Clock::now();
+  Clock::time_point last_report_ = Clock::now();
+};
+
+void check_options(const ImplicitField& field, const MeshOptions& options) {
+  if (!std::isfinite(options.iso)) throw InputError(fmt::format("must be a finite number, got {}", options.iso), "--iso");
+  if (options.iso <= field.far_field) {
+    throw InputError(fmt::format("the surface f = {} is unbounded: the field tends to {} far from the skeleton, "
+                                 "so the iso must be above {}",
+                                 options.iso, field.far_field, field.far_field),
+                     "--iso");
+  }
+  for (const auto& [value, name] : {std::pair{options.size, "--size"}, std::pair{options.distance, "--distance"}}) {
+    if (value && !(std::isfinite(*value) && *value > 0)) {
+      throw InputError(fmt::format("must be a finite number > 0, got {}", *value), name);
+    }
+  }
+  if (field.skeleton_points.empty()) throw InputError("the skeleton is empty: there is no surface to mesh");
+}
+
+}  // namespace
+
+TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& options, MeshReport* report) {
+  const Clock::time_point start = Clock::now();
+  check_options(field, options);
+  FieldMeter meter(field, options);
+  const ImplicitField metered = meter.metered();
+  const double iso = options.iso;
+
+  MeshReport run;
+  run.box = bounding_region(metered, iso);
+  run.size = options.size.value_or(run.box.diagonal() / 50);
+  run.distance = options.distance.value_or(run.size / 10);
+  // The grid method does not need the seeds, but computing them is what
+  // tells "no surface at this iso" apart from a surface the grid misses.
+  const std::vector<Vec3> seeds = surface_seeds(metered, iso, run.box, {.spacing = run.size});
+  if (seeds.empty()) {
+    throw EvaluationError(fmt::format("no surface point found by the rays from the skeleton at iso {}", iso));
+  }
+  run.seeds = seeds.size();
+
+  const Clock::time_point refine_start = Clock::now();
+  meter.report_progress(true);
+  const auto level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); };
+  TriangleMesh mesh = options.method == MeshMethod::grid
+                          ? detail::grid_surface_mesh({.level = level, .box = run.box, .voxel = run.size})
+                          : detail::cgal_surface_mesh({
+                                .level = level,
+                                .box = run.box,
+                                .seeds = seeds,
+                                .facet_size = run.size,
+                                .facet_distance = run.distance,
+                                .facet_angle = options.facet_angle,
+                                // Intersections to 1/100 of the facet distance: CGAL's
+                                // distance test then sees the surface, not the bisection.
+                                .relative_error_bound = run.distance / 100 / run.box.diagonal(),
+                                .random_seed = options.random_seed,
+                            });
+  meter.report_progress(false);
+  run.refine_seconds = seconds_since(refine_start);
+  if (mesh.triangles.empty()) throw EvaluationError("the mesher produced no triangles");
+
+  const double diagonal = bounding_box(mesh.vertices).diagonal();
+  // Half the required tolerance: the bounding box moves slightly with the
+  // projection, and the check is made on the final box.
+  project_to_surface(mesh, metered, iso,
+                     {.tolerance = 0.5 * options.projection_tolerance * diagonal, .max_step = run.size});
+
+  run.field_evaluations = meter.evaluations();
+  run.field_seconds = meter.seconds();
+  run.total_seconds = seconds_since(start);
+  if (report != nullptr) *report = run;
+  return mesh;
+}
+
+}  // namespace skelconv

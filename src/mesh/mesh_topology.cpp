@@ -1,0 +1,99 @@
+// Implementation of skelconv/mesh/mesh_topology.hpp.
+#include "skelconv/mesh/mesh_topology.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace skelconv {
+namespace {
+
+/// Union–find over 0..n−1 (path halving).
+struct DisjointSets {
+  explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
+  std::size_t find(std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void join(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
+  std::vector<std::size_t> parent;
+};
+
+using Edge = std::pair<std::int32_t, std::int32_t>;  // (smaller, larger) vertex index
+
+/// (edge, triangle) for every side of every triangle, sorted by edge.
+std::vector<std::pair<Edge, std::size_t>> sorted_edge_uses(const TriangleMesh& mesh) {
+  std::vector<std::pair<Edge, std::size_t>> uses;
+  uses.reserve(3 * mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      uses.push_back({{std::min(a, b), std::max(a, b)}, t});
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  return uses;
+}
+
+/// True when the triangles around every vertex form one fan: the triangles
+/// at a vertex joined through the edges at that vertex they share.
+bool vertex_links_are_fans(const TriangleMesh& mesh, const std::vector<std::pair<Edge, std::size_t>>& uses) {
+  DisjointSets corners(3 * mesh.triangles.size());  // corner (t, k) = 3t + k
+  const auto corner_of = [&](std::size_t t, std::int32_t v) {
+    const auto& tri = mesh.triangles[t];
+    return 3 * t + std::size_t(std::find(tri.begin(), tri.end(), v) - tri.begin());
+  };
+  for (std::size_t i = 0; i + 1 < uses.size(); ++i) {
+    if (uses[i].first != uses[i + 1].first) continue;
+    const auto [a, b] = uses[i].first;
+    const std::size_t t = uses[i].second, u = uses[i + 1].second;
+    corners.join(corner_of(t, a), corner_of(u, a));
+    corners.join(corner_of(t, b), corner_of(u, b));
+  }
+  std::vector<std::size_t> fans_at(mesh.vertices.size(), 0);
+  for (std::size_t c = 0; c < 3 * mesh.triangles.size(); ++c) {
+    if (corners.find(c) == c && ++fans_at[std::size_t(mesh.triangles[c / 3][c % 3])] > 1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+MeshTopology mesh_topology(const TriangleMesh& mesh) {
+  MeshTopology topology;
+  topology.triangles = mesh.triangles.size();
+  DisjointSets vertex_sets(mesh.vertices.size());
+  std::vector<bool> used(mesh.vertices.size(), false);
+  bool repeated_vertex = false;
+  for (const auto& t : mesh.triangles) {
+    repeated_vertex |= t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+    for (int k = 0; k < 3; ++k) {
+      used[std::size_t(t[k])] = true;
+      vertex_sets.join(std::size_t(t[k]), std::size_t(t[(k + 1) % 3]));
+    }
+  }
+  for (std::size_t v = 0; v < used.size(); ++v) {
+    if (!used[v]) continue;
+    ++topology.vertices;
+    if (vertex_sets.find(v) == v) ++topology.components;
+  }
+
+  const auto uses = sorted_edge_uses(mesh);
+  bool closed = true, at_most_two = true;
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].first == uses[i].first) ++j;
+    ++topology.edges;
+    closed &= j - i == 2;
+    at_most_two &= j - i <= 2;
+    i = j;
+  }
+  topology.euler_characteristic =
+      (long long)topology.vertices - (long long)topology.edges + (long long)topology.triangles;
+  topology.closed = closed && !mesh.triangles.empty();
+  topology.manifold = at_most_two && !repeated_vertex && vertex_links_are_fans(mesh, uses);
+  return topology;
+}
+
+}  // namespace skelconv

@@ -1,0 +1,128 @@
+// Implementation of skelconv/mesh/surface_seeds.hpp.
+#include "skelconv/mesh/surface_seeds.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "skelconv/errors.hpp"
+
+namespace skelconv {
+namespace {
+
+/// Distance from p (inside `box`) to the box boundary along unit axis
+/// direction `d`.
+double distance_to_exit(const Box3& box, const Vec3& p, const Vec3& d) {
+  double t = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] > 0) t = std::min(t, (box.hi[k] - p[k]) / d[k]);
+    if (d[k] < 0) t = std::min(t, (box.lo[k] - p[k]) / d[k]);
+  }
+  return t;
+}
+
+/// The first crossing of f = iso found on the ray p + t d (f(p) > iso), or
+/// nothing if f ≥ iso up to the box boundary.
+std::optional<Vec3> ray_crossing(const ImplicitField& field, double iso, const Box3& box, const Vec3& p,
+                                 const Vec3& d, const SurfaceSeedOptions& options) {
+  const double t_exit = distance_to_exit(box, p, d);
+  double inside = 0.0;
+  double outside = std::min(options.spacing, t_exit);
+  while (field.value(p + outside * d) >= iso) {
+    if (outside >= t_exit) return std::nullopt;
+    inside = outside;
+    outside = std::min(2 * outside, t_exit);
+  }
+  const double bracket = options.bracket_fraction * options.spacing;
+  while (outside - inside > bracket) {
+    const double middle = 0.5 * (inside + outside);
+    (field.value(p + middle * d) >= iso ? inside : outside) = middle;
+  }
+  return p + 0.5 * (inside + outside) * d;
+}
+
+using Cell = std::tuple<long long, long long, long long>;
+
+Cell cell_of(const Vec3& p, const Vec3& origin, double width) {
+  const Vec3 c = ((p - origin) / width).array().floor();
+  return {std::llround(c.x()), std::llround(c.y()), std::llround(c.z())};
+}
+
+/// Seeds accepted so far, in a hash grid of cell width `radius`, to reject a
+/// new seed closer than `radius` to an accepted one of another ray source.
+class SeedGrid {
+ public:
+  SeedGrid(const Vec3& origin, double radius) : origin_(origin), radius_(radius) {}
+
+  /// Adds the crossings of one skeleton point, dropping those closer than
+  /// `radius` to a seed of an earlier skeleton point.
+  void add_from_one_source(const std::vector<Vec3>& crossings, std::vector<Vec3>& seeds) {
+    std::vector<Vec3> kept;
+    for (const Vec3& q : crossings) {
+      if (!near_accepted(q)) kept.push_back(q);
+    }
+    for (const Vec3& q : kept) {
+      cells_[cell_of(q, origin_, radius_)].push_back(q);
+      seeds.push_back(q);
+    }
+  }
+
+ private:
+  bool near_accepted(const Vec3& q) const {
+    const auto [i, j, k] = cell_of(q, origin_, radius_);
+    for (long long a = i - 1; a <= i + 1; ++a) {
+      for (long long b = j - 1; b <= j + 1; ++b) {
+        for (long long c = k - 1; c <= k + 1; ++c) {
+          const auto found = cells_.find({a, b, c});
+          if (found == cells_.end()) continue;
+          for (const Vec3& s : found->second) {
+            if ((s - q).norm() < radius_) return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+
+  Vec3 origin_;
+  double radius_;
+  std::map<Cell, std::vector<Vec3>> cells_;
+};
+
+}  // namespace
+
+std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Box3& box,
+                                const SurfaceSeedOptions& options) {
+  const Vec3 directions[] = {Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(),
+                             -Vec3::UnitY(), Vec3::UnitZ(), -Vec3::UnitZ()};
+  std::set<Cell> used_cells;
+  SeedGrid grid(box.lo, options.separation * options.spacing);
+  std::vector<Vec3> seeds;
+  double largest = -std::numeric_limits<double>::infinity();
+  Vec3 largest_at = field.skeleton_points.front();
+  for (const Vec3& p : field.skeleton_points) {
+    const double f = field.value(p);
+    if (f > largest) std::tie(largest, largest_at) = std::make_tuple(f, p);
+    if (!(f > iso)) continue;
+    if (!used_cells.insert(cell_of(p, box.lo, options.spacing)).second) continue;
+    std::vector<Vec3> crossings;
+    for (const Vec3& d : directions) {
+      if (auto crossing = ray_crossing(field, iso, box, p, d, options)) crossings.push_back(*crossing);
+    }
+    grid.add_from_one_source(crossings, seeds);
+  }
+  if (largest <= iso) {
+    throw InputError(fmt::format("no surface at iso {}: the field is below it on the whole skeleton "
+                                 "(largest value {:.6g} at ({}, {}, {}))",
+                                 iso, largest, largest_at.x(), largest_at.y(), largest_at.z()),
+                     "--iso");
+  }
+  return seeds;
+}
+
+}  // namespace skelconv
