@@ -100,9 +100,15 @@ TEST(SkeletonFileErrors, UnknownNames) {
                "(allowed: \"family\", \"degree\", \"s\")");
   expect_error(one_segment(R"({"family": "inverse", "degree": 3, "s": 1})"),
                "primitives[0].kernel: unknown field \"s\" for the inverse family (allowed: \"family\", \"degree\")");
-  expect_error(one_segment(R"({"family": "gaussian", "degree": 3})"),
-               "primitives[0].kernel.family: unknown family \"gaussian\" "
-               "(supported: \"inverse\", \"cauchy\", \"compact\")");
+  expect_error(one_segment(R"({"family": "gauss", "degree": 3})"),
+               "primitives[0].kernel.family: unknown family \"gauss\" "
+               "(supported: \"inverse\", \"cauchy\", \"compact\", \"soft\", \"wyvill\", \"ferley\", "
+               "\"gaussian\")");
+  // A point-only family (kernels/kernel_list.hpp) on a segment.
+  expect_error(one_segment(R"({"family": "gaussian", "a": 1, "b": 1})"),
+               "primitives[0].kernel.family: the gaussian family is defined on point primitives only, not on a "
+               "segment: its closed form along a segment is not generated (use \"type\": \"point\", or one of "
+               "\"inverse\", \"cauchy\", \"compact\")");
   expect_error(R"({"primitives": [{"type": "triangle"}]})",
                "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\", \"scalis_segment\", \"scalis_triangle\", \"point\")");
 }

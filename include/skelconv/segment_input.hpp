@@ -21,14 +21,25 @@ enum class KernelFamily {
   inverse,  ///< p^i(r) = r^-i
   cauchy,   ///< c_s^i(r) = (1 + s r²)^(-i/2)
   compact,  ///< k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0
+  // Point-only families (issue 13; include/skelconv/kernels/): the generator
+  // has no closed form for them yet, so no generated table lists them and
+  // segments, polygons and SCALIS primitives reject them.
+  soft,      ///< (1 − r²/R²)² for r < R (the exam notes' "soft objects")
+  wyvill,    ///< 1 − 22/9 u + 17/9 u² − 4/9 u³, u = r²/R², for r < R
+  ferley,    ///< 1 + k(e − r) for r < e, (r − R)²/(e − R)² for e ≤ r < R
+  gaussian,  ///< b exp(−a r²) (Blinn, Muraki)
 };
 
-/// "inverse", "cauchy", "compact".
+/// "inverse", "cauchy", "compact", "soft", "wyvill", "ferley", "gaussian".
 constexpr std::string_view family_name(KernelFamily family) {
   switch (family) {
     case KernelFamily::inverse: return "inverse";
     case KernelFamily::cauchy: return "cauchy";
     case KernelFamily::compact: return "compact";
+    case KernelFamily::soft: return "soft";
+    case KernelFamily::wyvill: return "wyvill";
+    case KernelFamily::ferley: return "ferley";
+    case KernelFamily::gaussian: return "gaussian";
   }
   return "?";
 }

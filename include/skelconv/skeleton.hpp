@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "skelconv/geometry.hpp"
@@ -88,6 +89,13 @@ class Skeleton {
   /// The blend of node `id` and its number of children.
   const Blend& blend(NodeId id) const { return nodes_[id].blend; }
   std::size_t child_count(NodeId id) const { return nodes_[id].children.size(); }
+  /// Child k of node `id`, for walking the tree from outside (the interval
+  /// enclosures of skelconv/interval/): {true, node id} for a blend node,
+  /// {false, index into primitives()} for a primitive.
+  std::pair<bool, std::size_t> child(NodeId id, std::size_t k) const {
+    const Child& c = nodes_[id].children[k];
+    return {c.is_blend, c.index};
+  }
 
   /// The level of the surface the skeleton describes (the file's "iso",
   /// default 1). set_iso throws InputError ("iso") unless finite and > 0.

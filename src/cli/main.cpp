@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bound_command.hpp"
 #include "canal_command.hpp"
 #include "eval_command.hpp"
 #include "exit_status.hpp"
@@ -51,6 +52,8 @@ int main(int argc, char** argv) {
   const CLI::App* eval = add_eval_command(app, eval_options);
   CanalOptions canal_options;
   const CLI::App* canal = add_canal_command(app, canal_options);
+  BoundOptions bound_options;
+  const CLI::App* bound = add_bound_command(app, bound_options);
   MeshCommandOptions mesh_options;
   const CLI::App* mesh = add_mesh_command(app, mesh_options);
 
@@ -70,6 +73,7 @@ int main(int argc, char** argv) {
   try {
     if (eval->parsed()) return run_eval(eval_options);
     if (canal->parsed()) return run_canal(canal_options);
+    if (bound->parsed()) return run_bound(bound_options);
     if (mesh->parsed()) return run_mesh(mesh_options);
   } catch (const std::exception& error) {
     report_error(std::string("internal error: ") + error.what());

@@ -1,6 +1,8 @@
 // The checks shared by the radial kernel traits (skelconv/kernels/radial_kernel.hpp).
 #include "skelconv/kernels/radial_kernel.hpp"
 
+#include "skelconv/kernels/ferley.hpp"
+
 #include <fmt/format.h>
 
 #include "../runtime/input_checks.hpp"
@@ -16,5 +18,14 @@ void require_degree(std::string_view family, int degree, int min_degree, int max
 }
 
 void require_positive(double value, const char* where) { detail::require_positive_parameter(value, where); }
+
+FerleyKernel::FerleyKernel(const KernelSpec& spec) : e(spec.e), R(spec.R) {
+  require_positive(e, "kernel.e");
+  require_positive(R, "kernel.R");
+  if (!(R > e)) {
+    throw InputError(fmt::format("must be > e = {} (the support radius beyond the coating), got {}", e, R),
+                     "kernel.R");
+  }
+}
 
 }  // namespace skelconv::kernels

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <set>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include "skelconv/errors.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 
 namespace skelconv {
 namespace {
@@ -147,10 +149,13 @@ std::string describe(const Json& value) {
   }
 }
 
-std::string quoted_list(std::initializer_list<std::string_view> names) {
+std::string quoted_list(std::span<const std::string_view> names) {
   std::string text;
   for (std::string_view name : names) text += fmt::format("{}\"{}\"", text.empty() ? "" : ", ", name);
   return text;
+}
+std::string quoted_list(std::initializer_list<std::string_view> names) {
+  return quoted_list(std::span<const std::string_view>(names.begin(), names.size()));
 }
 
 void require_object(const Json& value, const std::string& path) {
@@ -159,8 +164,8 @@ void require_object(const Json& value, const std::string& path) {
 
 /// Rejects every key not in `allowed`; `context` ends the message, e.g.
 /// " for the inverse family".
-void reject_unknown_keys(const Json& object, const std::string& path,
-                         std::initializer_list<std::string_view> allowed, std::string_view context = "") {
+void reject_unknown_keys(const Json& object, const std::string& path, std::span<const std::string_view> allowed,
+                         std::string_view context = "") {
   for (const auto& [key, value] : object.items()) {
     bool known = false;
     for (std::string_view name : allowed) known = known || key == name;
@@ -168,6 +173,10 @@ void reject_unknown_keys(const Json& object, const std::string& path,
       throw InputError(fmt::format("unknown field \"{}\"{} (allowed: {})", key, context, quoted_list(allowed)), path);
     }
   }
+}
+void reject_unknown_keys(const Json& object, const std::string& path,
+                         std::initializer_list<std::string_view> allowed, std::string_view context = "") {
+  reject_unknown_keys(object, path, std::span<const std::string_view>(allowed.begin(), allowed.size()), context);
 }
 
 const Json& require_field(const Json& object, const std::string& path, const char* key) {
@@ -212,40 +221,61 @@ Vec3 read_point(const Json& value, const std::string& path) {
   return {xyz[0], xyz[1], xyz[2]};
 }
 
+/// "\"inverse\", \"cauchy\", ..." — every family name, for messages.
+std::string family_names() {
+  std::string text;
+  for (KernelFamily family : all_kernel_families) {
+    text += fmt::format("{}\"{}\"", text.empty() ? "" : ", ", family_name(family));
+  }
+  return text;
+}
+
 /// The "family" field of the kernel object at `path`.
 KernelFamily read_family(const Json& kernel, const std::string& path) {
   const std::string family_text = read_string(require_field(kernel, path, "family"), path + ".family");
   const std::optional<KernelFamily> family = family_from_name(family_text);
   if (!family) {
-    throw InputError(fmt::format("unknown family \"{}\" (supported: {})", family_text,
-                                 quoted_list({"inverse", "cauchy", "compact"})),
+    throw InputError(fmt::format("unknown family \"{}\" (supported: {})", family_text, family_names()),
                      path + ".family");
   }
   return *family;
 }
 
-/// {"family": ..., "degree": ..., and "s" (cauchy) or "R" (compact)}.
+/// {"family": ..., "degree": ... (families with a degree), and the family's
+/// parameters (its trait's list: "s", "R", "e", "a", "b")}.
 KernelSpec read_kernel(const Json& value, const std::string& path) {
   require_object(value, path);
-  const KernelFamily family = read_family(value, path);
-  const std::string context = fmt::format(" for the {} family", family_name(family));
   KernelSpec kernel;
-  kernel.family = family;
-  switch (family) {
-    case KernelFamily::inverse:
-      reject_unknown_keys(value, path, {"family", "degree"}, context);
-      break;
-    case KernelFamily::cauchy:
-      reject_unknown_keys(value, path, {"family", "degree", "s"}, context);
-      kernel.s = read_number(require_field(value, path, "s"), path + ".s");
-      break;
-    case KernelFamily::compact:
-      reject_unknown_keys(value, path, {"family", "degree", "R"}, context);
-      kernel.R = read_number(require_field(value, path, "R"), path + ".R");
-      break;
+  kernel.family = read_family(value, path);
+  const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
+  std::vector<std::string_view> allowed{"family"};
+  if (facts.has_degree) allowed.push_back("degree");
+  allowed.insert(allowed.end(), facts.parameters.begin(), facts.parameters.end());
+  reject_unknown_keys(value, path, allowed, fmt::format(" for the {} family", facts.name));
+  for (std::string_view key : facts.parameters) {
+    const std::string name(key);
+    *kernel_parameter(kernel, key) = read_number(require_field(value, path, name.c_str()), path + "." + name);
   }
-  kernel.degree = read_integer(require_field(value, path, "degree"), path + ".degree");
+  if (facts.has_degree) kernel.degree = read_integer(require_field(value, path, "degree"), path + ".degree");
   return kernel;
+}
+
+/// Throws InputError at `path`.family when `family` is a point-only family
+/// (kernels::FamilyFacts::on_every_primitive false) on a `what` primitive.
+void require_family_on(KernelFamily family, std::string_view what, const std::string& path) {
+  if (kernels::family_facts(family).on_every_primitive) return;
+  throw InputError(fmt::format("the {} family is defined on point primitives only, not on a {}: its closed form "
+                               "along a {} is not generated (use \"type\": \"point\", or one of \"inverse\", "
+                               "\"cauchy\", \"compact\")",
+                               family_name(family), what, what),
+                   path + ".family");
+}
+
+/// read_kernel for a primitive that is not a point.
+KernelSpec read_convolution_kernel(const Json& value, const std::string& path, std::string_view what) {
+  require_object(value, path);
+  require_family_on(read_family(value, path), what, path);
+  return read_kernel(value, path);
 }
 
 /// Runs a primitive's constructor, locating its InputError (whose where()
@@ -266,7 +296,7 @@ Primitive read_segment(const Json& value, const std::string& path) {
   const Vec3 b = read_point(require_field(value, path, "b"), path + ".b");
   std::vector<double> weight{1.0};
   if (const auto found = value.find("weight"); found != value.end()) weight = read_numbers(*found, path + ".weight");
-  const KernelSpec kernel = read_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  const KernelSpec kernel = read_convolution_kernel(require_field(value, path, "kernel"), path + ".kernel", "segment");
   return construct_located(path, [&] { return Segment(a, b, kernel, weight); });
 }
 
@@ -282,18 +312,19 @@ Primitive read_polygon(const Json& value, const std::string& path) {
   for (std::size_t k = 0; k < vertices_json.size(); ++k) {
     vertices.push_back(read_point(vertices_json[k], fmt::format("{}[{}]", vertices_path, k)));
   }
-  const KernelSpec kernel = read_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  const KernelSpec kernel = read_convolution_kernel(require_field(value, path, "kernel"), path + ".kernel", "polygon");
   return construct_located(path, [&] { return Polygon(vertices, kernel); });
 }
 
 // --- SCALIS segment (SPEC §4) ---------------------------------------------
 
 /// {"family": "inverse" | "cauchy" | "compact", "degree": i, "sigma": σ}.
-ScalisKernel read_scalis_kernel(const Json& value, const std::string& path) {
+ScalisKernel read_scalis_kernel(const Json& value, const std::string& path, std::string_view what) {
   require_object(value, path);
-  reject_unknown_keys(value, path, {"family", "degree", "sigma"}, " for a SCALIS kernel");
   ScalisKernel kernel;
   kernel.family = read_family(value, path);
+  require_family_on(kernel.family, what, path);
+  reject_unknown_keys(value, path, {"family", "degree", "sigma"}, " for a SCALIS kernel");
   kernel.degree = read_integer(require_field(value, path, "degree"), path + ".degree");
   kernel.sigma = read_number(require_field(value, path, "sigma"), path + ".sigma");
   return kernel;
@@ -324,7 +355,8 @@ Primitive read_scalis_segment(const Json& value, const std::string& path) {
   const Vec3 a = read_point(require_field(value, path, "a"), path + ".a");
   const Vec3 b = read_point(require_field(value, path, "b"), path + ".b");
   const std::vector<double> radius = read_scalis_radii(value, path, 2, "[tau0, tau1] at a and b");
-  const ScalisKernel kernel = read_scalis_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  const ScalisKernel kernel =
+      read_scalis_kernel(require_field(value, path, "kernel"), path + ".kernel", "scalis_segment");
   const double iso = read_iso(value, path);
   return construct_located(path, [&] { return ScalisSegment(a, b, radius[0], radius[1], kernel, iso); });
 }
@@ -345,7 +377,8 @@ Primitive read_scalis_triangle(const Json& value, const std::string& path) {
   for (std::size_t k = 0; k < 3; ++k)
     vertices[k] = read_point(vertices_json[k], fmt::format("{}[{}]", vertices_path, k));
   const std::vector<double> radius = read_scalis_radii(value, path, 3, "[tau0, tau1, tau2] at the vertices");
-  const ScalisKernel kernel = read_scalis_kernel(require_field(value, path, "kernel"), path + ".kernel");
+  const ScalisKernel kernel =
+      read_scalis_kernel(require_field(value, path, "kernel"), path + ".kernel", "scalis_triangle");
   const double iso = read_iso(value, path);
   return construct_located(
       path, [&] { return ScalisTriangle(vertices, {radius[0], radius[1], radius[2]}, kernel, iso); });

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <optional>
 #include <limits>
 #include <string_view>
 
@@ -15,6 +17,8 @@ struct CauchyKernel {
   static constexpr std::string_view name = "cauchy";
   static constexpr std::array<std::string_view, 1> parameters{"s"};
   static constexpr int min_degree = 1, max_degree = 16;  ///< as on segments
+  static constexpr bool has_degree = true;          ///< JSON "degree" is read
+  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
   static constexpr bool singular_at_zero = false;
 
   int degree = 4;
@@ -37,6 +41,11 @@ struct CauchyKernel {
   T derivative(const T& r) const {
     const T q = T(1) + T(s) * r * r;
     return -T(degree) * T(s) * r / (half_integer_power(q, degree) * q);
+  }
+  /// Radius of the iso-surface K(r) = c around a point: r = √((c^(−2/i) − 1)/s), 0 < c < 1.
+  std::optional<double> point_iso_radius(double c) const {
+    if (!(c > 0.0 && c < 1.0)) return std::nullopt;
+    return std::sqrt((std::pow(c, -2.0 / degree) - 1.0) / s);
   }
 };
 

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <optional>
 #include <string_view>
 
 #include "skelconv/kernels/radial_kernel.hpp"
@@ -17,6 +19,8 @@ struct CompactKernel {
   /// As on segments: i ≥ 2 so that dK/dr stays bounded at r = R
   /// (i = 1 has dK/dr → −∞ there).
   static constexpr int min_degree = 2, max_degree = 16;
+  static constexpr bool has_degree = true;          ///< JSON "degree" is read
+  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
   static constexpr bool singular_at_zero = false;
 
   int degree = 4;
@@ -29,11 +33,13 @@ struct CompactKernel {
 
   double support_radius() const { return R; }
 
-  /// (1 − r²/R²)^(i/2) inside the support, exactly 0 from r = R on.
+  /// (1 − r²/R²)^(i/2) inside the support, exactly 0 from r = R on. The
+  /// test is on r itself, so that an interval r (skelconv/interval/) is
+  /// compared exactly; in double, r < R gives u >= 0, and u = 0 gives 0.
   template <class T>
   T value(const T& r) const {
-    const T u = T(1) - (r / T(R)) * (r / T(R));
-    return u > T(0) ? half_integer_power(u, degree) : T(0);
+    if (!(r < T(R))) return T(0);
+    return half_integer_power(T(1) - (r / T(R)) * (r / T(R)), degree);
   }
   /// −(i r / R²) (1 − r²/R²)^(i/2 − 1) inside, 0 outside (for i = 2 the
   /// one-sided value at r = R: the derivative jumps there).
@@ -42,6 +48,11 @@ struct CompactKernel {
     const T u = T(1) - (r / T(R)) * (r / T(R));
     if (!(u > T(0))) return T(0);
     return -T(degree) * r / (T(R) * T(R)) * half_integer_power(u, degree - 2);
+  }
+  /// Radius of the iso-surface K(r) = c around a point: r = R √(1 − c^(2/i)), 0 < c < 1.
+  std::optional<double> point_iso_radius(double c) const {
+    if (!(c > 0.0 && c < 1.0)) return std::nullopt;
+    return R * std::sqrt(1.0 - std::pow(c, 2.0 / degree));
   }
 };
 

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <optional>
 #include <limits>
 #include <string_view>
 
@@ -18,6 +20,8 @@ struct InverseKernel {
   /// The segments' range (docs/cli.md), so that a file can turn a segment
   /// into a point without changing its kernel.
   static constexpr int min_degree = 1, max_degree = 16;
+  static constexpr bool has_degree = true;          ///< JSON "degree" is read
+  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
   static constexpr bool singular_at_zero = true;
 
   int degree = 3;
@@ -37,6 +41,11 @@ struct InverseKernel {
   template <class T>
   T derivative(const T& r) const {
     return -T(degree) * integer_power(r, -degree - 1);
+  }
+  /// Radius of the iso-surface w K(r) = c around a point of weight 1: r = c^(−1/i).
+  std::optional<double> point_iso_radius(double c) const {
+    if (!(c > 0.0) || !std::isfinite(c)) return std::nullopt;
+    return std::pow(c, -1.0 / degree);
   }
 };
 

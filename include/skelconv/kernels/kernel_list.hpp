@@ -2,19 +2,35 @@
 // variant, and the one place a KernelSpec becomes a trait.
 //
 // Adding a family (issue 13) is: its trait header, one entry in RadialKernel
-// below, and its name in KernelFamily (segment_input.hpp).
+// below, and its name in KernelFamily (segment_input.hpp). The reader
+// (src/runtime/skeleton_file.cpp) learns its JSON keys from family_facts().
 #pragma once
 
+#include <optional>
+#include <span>
 #include <string>
 #include <variant>
 
 #include "skelconv/kernels/cauchy.hpp"
 #include "skelconv/kernels/compact.hpp"
+#include "skelconv/kernels/ferley.hpp"
+#include "skelconv/kernels/gaussian.hpp"
 #include "skelconv/kernels/inverse.hpp"
+#include "skelconv/kernels/soft.hpp"
+#include "skelconv/kernels/wyvill.hpp"
 
 namespace skelconv::kernels {
 
-using RadialKernel = std::variant<InverseKernel, CauchyKernel, CompactKernel>;
+using RadialKernel = std::variant<InverseKernel, CauchyKernel, CompactKernel, SoftKernel, WyvillKernel, FerleyKernel,
+                                  GaussianKernel>;
+
+/// What the reader needs to know of a family, read off its trait.
+struct FamilyFacts {
+  std::string_view name;
+  std::span<const std::string_view> parameters;  ///< JSON keys besides "family" (and "degree")
+  bool has_degree = true;
+  bool on_every_primitive = true;  ///< false: point primitives only
+};
 
 namespace detail {
 template <std::size_t index = 0>
@@ -28,7 +44,23 @@ RadialKernel make_from(const KernelSpec& spec) {
     return make_from<index + 1>(spec);
   }
 }
+template <std::size_t index = 0>
+FamilyFacts facts_from(KernelFamily family) {
+  if constexpr (index == std::variant_size_v<RadialKernel>) {
+    return {family_name(family), {}, true, true};
+  } else {
+    using Kernel = std::variant_alternative_t<index, RadialKernel>;
+    if (family == Kernel::family) {
+      return {Kernel::name, std::span<const std::string_view>(Kernel::parameters), Kernel::has_degree,
+              Kernel::on_every_primitive};
+    }
+    return facts_from<index + 1>(family);
+  }
+}
 }  // namespace detail
+
+/// The JSON name, keys and primitives of `family` (from its trait).
+inline FamilyFacts family_facts(KernelFamily family) { return detail::facts_from(family); }
 
 /// The trait of spec.family with spec's parameters, validated (InputError
 /// at "kernel.degree", "kernel.s", "kernel.R").
@@ -37,6 +69,28 @@ inline RadialKernel make_radial_kernel(const KernelSpec& spec) { return detail::
 /// The support radius of any trait (+inf for infinite support).
 inline double support_radius(const RadialKernel& kernel) {
   return std::visit([](const auto& k) { return k.support_radius(); }, kernel);
+}
+
+/// Radius of the iso-surface w K(r) = c around a point primitive of weight
+/// w > 0 (the trait's point_iso_radius at level c / w); nullopt where there
+/// is none (c / w outside (0, K(0))).
+inline std::optional<double> point_iso_radius(const RadialKernel& kernel, double c, double weight = 1.0) {
+  return std::visit([&](const auto& k) { return k.point_iso_radius(c / weight); }, kernel);
+}
+
+/// Distance of the iso-surface ∫ w K = c from an infinite straight segment,
+/// for the families that give it (soft, wyvill, gaussian); nullopt for the
+/// others, and where there is none.
+inline std::optional<double> line_iso_radius(const RadialKernel& kernel, double c, double weight = 1.0) {
+  return std::visit(
+      [&](const auto& k) -> std::optional<double> {
+        if constexpr (requires { k.line_iso_radius(c); }) {
+          return k.line_iso_radius(c / weight);
+        } else {
+          return std::nullopt;
+        }
+      },
+      kernel);
 }
 
 }  // namespace skelconv::kernels

@@ -10,6 +10,9 @@
 //     static constexpr std::string_view name;        // JSON "family" name
 //     static constexpr std::array<std::string_view, N> parameters;  // JSON keys besides
 //                                                     // "family" and "degree"
+//     static constexpr bool has_degree;              // JSON "degree" is read
+//     static constexpr bool on_every_primitive;      // generated on segments,
+//                                                     // polygons, SCALIS (else point only)
 //     static constexpr int min_degree, max_degree;   // degrees i on a point
 //     static constexpr bool singular_at_zero;        // K(0) = +inf (inverse)
 //     explicit SomeKernel(const KernelSpec&);        // validates: InputError at
@@ -17,13 +20,20 @@
 //     double support_radius() const;                 // K(r) = 0 for r >= it; +inf if none
 //     template <class T> T value(const T& r) const;       // K(r), r >= 0
 //     template <class T> T derivative(const T& r) const;  // dK/dr, r >= 0
+//     std::optional<double> point_iso_radius(double c) const;  // ρ: K(ρ) = c
+//     std::optional<double> line_iso_radius(double c) const;   // optional member:
+//                                                     // d where ∫K along an infinite line = c
 //   };
+//
+// Every family is non-increasing in r (the interval enclosures of
+// skelconv/interval/ rely on it), and value() compares only its argument r
+// with constants, so that it also runs on a point interval.
 //
 // value() and derivative() are templates on the scalar type (double, long
 // double, boost::multiprecision numbers…) so that tests can evaluate the same
 // formula in extended precision. A new family (issue 13: soft, wyvill,
-// ferley, gaussian) is one more such struct and one more entry in
-// RadialKernel (skelconv/kernels/kernel_list.hpp).
+// ferley, gaussian) is one more such struct, one more entry in RadialKernel
+// (skelconv/kernels/kernel_list.hpp) and its name in KernelFamily.
 //
 // The segment and polygon primitives keep their generated closed forms
 // (generated/, docs/generated_api.md): the traits describe the kernel, not the
@@ -51,6 +61,19 @@ T half_integer_power(const T& x, int n) {
   }
   if (n % 2 != 0) result *= sqrt(x);
   return result;
+}
+
+/// The x in [lo, hi] with f(x) = target for an increasing f with
+/// f(lo) ≤ target ≤ f(hi), by bisection to the last bit (the iso radii of
+/// families without an explicit inverse).
+template <class F>
+double bisect_increasing(F f, double lo, double hi, double target) {
+  for (int step = 0; step < 200; ++step) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (f(mid) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 /// Throws InputError at "kernel.degree" unless min ≤ degree ≤ max.

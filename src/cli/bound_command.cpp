@@ -1,0 +1,154 @@
+// Implementation of bound_command.hpp.
+#include "bound_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "exit_status.hpp"
+#include "skelconv/errors.hpp"
+#include "skelconv/interval/octree.hpp"
+#include "skelconv/skeleton_file.hpp"
+
+namespace skelconv::cli {
+namespace {
+
+/// Deepest octree: 8 levels already means up to 8^8 cells near a surface
+/// of fractal area; 10 keeps a run within minutes.
+constexpr int max_octree_depth = 10;
+
+std::string read_all_stdin() {
+  std::string text;
+  char chunk[1 << 16];
+  std::size_t count = 0;
+  while ((count = std::fread(chunk, 1, sizeof chunk, stdin)) > 0) text.append(chunk, count);
+  if (std::ferror(stdin)) throw InputError("cannot read standard input");
+  return text;
+}
+
+/// A box from 6 numbers, or InputError (without location) naming the problem.
+interval::Box make_box(const std::vector<double>& v) {
+  if (v.size() != 6) {
+    throw InputError(fmt::format("expected six numbers \"x0 y0 z0 x1 y1 z1\", got {} value{}", v.size(),
+                                 v.size() == 1 ? "" : "s"));
+  }
+  for (double x : v)
+    if (!std::isfinite(x)) throw InputError(fmt::format("every coordinate must be finite, got {}", x));
+  interval::Box box{Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5])};
+  for (int i = 0; i < 3; ++i) {
+    if (box.lo[i] > box.hi[i]) {
+      throw InputError(fmt::format("min corner above max corner along {}: {} > {}", "xyz"[i], box.lo[i], box.hi[i]));
+    }
+  }
+  return box;
+}
+
+/// Parses one line; nullopt for a blank one.
+std::optional<interval::Box> parse_box_line(std::string_view line) {
+  std::vector<double> values;
+  std::string text(line);
+  if (!text.empty() && text.back() == '\r') text.pop_back();
+  const char* cursor = text.c_str();
+  while (true) {
+    while (*cursor == ' ' || *cursor == '\t') ++cursor;
+    if (*cursor == '\0') break;
+    char* end = nullptr;
+    const double value = std::strtod(cursor, &end);
+    if (end == cursor || (*end != '\0' && *end != ' ' && *end != '\t')) {
+      throw InputError(fmt::format("not a number in \"{}\"", text));
+    }
+    values.push_back(value);
+    cursor = end;
+  }
+  if (values.empty()) return std::nullopt;
+  return make_box(values);
+}
+
+std::string bound_lines(const Skeleton& skeleton, std::string_view input, std::optional<double> iso) {
+  std::string output;
+  std::size_t line_number = 0;
+  while (!input.empty()) {
+    const std::size_t end = input.find('\n');
+    const std::string_view line = input.substr(0, end);
+    input.remove_prefix(end == std::string_view::npos ? input.size() : end + 1);
+    ++line_number;
+    std::optional<interval::Box> box;
+    try {
+      box = parse_box_line(line);
+    } catch (const InputError& error) {
+      throw InputError(error.what(), fmt::format("line {}", line_number));
+    }
+    if (!box) continue;
+    const interval::Interval f = interval::enclose(skeleton, *box);
+    fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g}", f.lower(), f.upper());
+    if (iso) fmt::format_to(std::back_inserter(output), " {}", interval::classification_name(interval::classify(f, *iso)));
+    output += '\n';
+  }
+  return output;
+}
+
+std::string octree_lines(const Skeleton& skeleton, const BoundOptions& options) {
+  if (options.box.empty()) throw InputError("--octree needs --box x0 y0 z0 x1 y1 z1", "--box");
+  interval::Box box;
+  try {
+    box = make_box(options.box);
+  } catch (const InputError& error) {
+    throw InputError(error.what(), "--box");
+  }
+  const int depth = *options.octree_depth;
+  if (depth < 0 || depth > max_octree_depth) {
+    throw InputError(fmt::format("must be 0..{}, got {}", max_octree_depth, depth), "--octree");
+  }
+  const double iso = options.iso.value_or(skeleton.iso());
+  std::string output;
+  const auto counts = interval::classify_octree(skeleton, box, depth, iso);
+  for (std::size_t level = 0; level < counts.size(); ++level) {
+    fmt::format_to(std::back_inserter(output), "{} {} {} {}\n", level, counts[level].inside, counts[level].outside,
+                   counts[level].undetermined);
+  }
+  return output;
+}
+
+}  // namespace
+
+CLI::App* add_bound_command(CLI::App& app, BoundOptions& options) {
+  CLI::App* bound = app.add_subcommand("bound", "Certified enclosures [lo, hi] of the field over boxes (docs/bound.md)");
+  bound->add_option("SKELETON", options.skeleton_path, "Skeleton file (JSON)")->required();
+  bound->add_option("--iso", options.iso, "Classify each box against this level: inside, outside, undetermined");
+  bound->add_option("--octree", options.octree_depth, "Classify the --box by an octree of this depth instead");
+  bound->add_option("--box", options.box, "x0 y0 z0 x1 y1 z1: the octree's box")->expected(6);
+  bound->footer(R"(
+Input (stdin, box mode): one box "x0 y0 z0 x1 y1 z1" (min corner, max corner)
+                per line; blank lines are skipped.
+Output: "lo hi" per box (%.17g), then "inside"/"outside"/"undetermined" with
+                --iso. With --octree DEPTH --box ...: one line "level inside
+                outside undetermined" per level 0..DEPTH (iso: --iso or the
+                file's). Exit 2 on bad input (nothing on stdout).)");
+  return bound;
+}
+
+int run_bound(const BoundOptions& options) {
+  std::string output;
+  try {
+    const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
+    if (options.iso && !std::isfinite(*options.iso)) throw InputError("must be finite", "--iso");
+    output = options.octree_depth ? octree_lines(skeleton, options)
+                                  : bound_lines(skeleton, read_all_stdin(), options.iso);
+  } catch (const InputError& error) {
+    report_error(error.what());
+    return exit_bad_input;
+  } catch (const EvaluationError& error) {
+    report_error(error.what());
+    return exit_evaluation_failed;
+  }
+  if (std::fwrite(output.data(), 1, output.size(), stdout) != output.size() || std::fflush(stdout) != 0) {
+    report_error("cannot write to standard output");
+    return exit_evaluation_failed;
+  }
+  return exit_success;
+}
+
+}  // namespace skelconv::cli

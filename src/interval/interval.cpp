@@ -1,0 +1,51 @@
+// Implementation of skelconv/interval/interval.hpp (compiled with
+// -frounding-math, src/CMakeLists.txt).
+#include "skelconv/interval/interval.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace skelconv::interval {
+
+IntervalPoint to_interval_point(const Box& box) {
+  return {Interval(box.lo.x(), box.hi.x()), Interval(box.lo.y(), box.hi.y()), Interval(box.lo.z(), box.hi.z())};
+}
+
+IntervalPoint to_interval_point(const Vec3& p) { return {Interval(p.x()), Interval(p.y()), Interval(p.z())}; }
+
+Interval interval_square(const Interval& x) {
+  // boost::numeric::square is exactly the notes' three cases, with the
+  // products rounded outward by the policy.
+  return boost::numeric::square(x);
+}
+
+Interval squared_distance(const Box& box, const Vec3& c) {
+  const IntervalPoint b = to_interval_point(box);
+  return interval_square(b[0] - c.x()) + interval_square(b[1] - c.y()) + interval_square(b[2] - c.z());
+}
+
+Interval squared_distance(const IntervalPoint& p, const IntervalPoint& q) {
+  return interval_square(p[0] - q[0]) + interval_square(p[1] - q[1]) + interval_square(p[2] - q[2]);
+}
+
+Interval interval_sqrt(const Interval& x) {
+  return boost::numeric::sqrt(Interval(std::max(0.0, x.lower()), std::max(0.0, x.upper())));
+}
+
+Interval safe_product(const Interval& w, const Interval& k) {
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  if (k.upper() == 0.0 || (w.lower() == 0.0 && w.upper() == 0.0)) return Interval(0.0);
+  if (k.upper() < infinity) return w * k;
+  if (k.lower() == infinity) {  // k = +inf exactly: w k is ±inf, or 0 where w = 0
+    const auto sign_infinity = [](double x) { return x > 0.0 ? infinity : x < 0.0 ? -infinity : 0.0; };
+    return Interval(sign_infinity(w.lower()), sign_infinity(w.upper()));
+  }
+  // k = [k0, +inf]: w k ranges over (−inf if w reaches below 0) … (+inf if
+  // w reaches above 0), with the finite ends from k0.
+  const Interval finite = w * Interval(k.lower());
+  return Interval(w.lower() < 0.0 ? -infinity : finite.lower(), w.upper() > 0.0 ? infinity : finite.upper());
+}
+
+Interval hull(const Interval& a, const Interval& b) { return boost::numeric::hull(a, b); }
+
+}  // namespace skelconv::interval

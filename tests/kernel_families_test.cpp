@@ -1,0 +1,177 @@
+// The point-only kernel families of issue 13 (include/skelconv/kernels/:
+// soft, wyvill, ferley, gaussian): values against their definitions as the
+// sources print them (written out here, independently of the traits),
+// derivatives against 50-digit central differences, the iso ↔ radius
+// relations against the definitions (point) and quadrature (line), and
+// the reader's handling of the new JSON kernels.
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <gtest/gtest.h>
+
+#include "extended_difference.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/skeleton_file.hpp"
+
+namespace skelconv {
+namespace {
+
+using test::Extended;
+
+/// The definitions in long double, as printed: the exam notes (soft),
+/// Ferley §1.1.1 (Wyvill's polynomial in u = d²/R², Ferley's piecewise
+/// kernel with the C¹ slope k = 2/(R − e)), Ferley §1.1.3 (Muraki's b e^(−a d²)).
+long double definition(const KernelSpec& k, long double d) {
+  const long double u = d * d / (k.R * k.R);
+  switch (k.family) {
+    case KernelFamily::soft: return d < k.R ? (1 - u) * (1 - u) : 0;
+    case KernelFamily::wyvill: return d < k.R ? 1 - 22.0L / 9 * u + 17.0L / 9 * u * u - 4.0L / 9 * u * u * u : 0;
+    case KernelFamily::ferley: {
+      const long double slope = 2.0L / (k.R - k.e);
+      if (d < k.e) return 1 + slope * (k.e - d);
+      return d < k.R ? (d - k.R) * (d - k.R) / ((k.e - k.R) * (k.e - k.R)) : 0;
+    }
+    case KernelFamily::gaussian: return k.b * std::exp(-k.a * d * d);
+    default: return NAN;
+  }
+}
+
+std::vector<KernelSpec> new_kernels() {
+  return {KernelSpec::soft(1.3), KernelSpec::soft(3.7), KernelSpec::wyvill(0.8), KernelSpec::wyvill(2.5),
+          KernelSpec::ferley(0.4, 1.5), KernelSpec::ferley(1.0, 1.2), KernelSpec::gaussian(0.7, 1.0),
+          KernelSpec::gaussian(3.0, 2.5)};
+}
+
+TEST(KernelFamilies, ValuesMatchTheDefinitions) {
+  for (const KernelSpec& spec : new_kernels()) {
+    const kernels::RadialKernel kernel = kernels::make_radial_kernel(spec);
+    for (double d = 0.0; d < 4.0; d += 0.0137) {
+      const double value = std::visit([&](const auto& k) { return k.value(d); }, kernel);
+      const long double reference = definition(spec, d);
+      // A few ulps of u = d²/R² (or of a d² in the exponent) propagate.
+      const double exponent = spec.family == KernelFamily::gaussian ? spec.a * d * d : 0.0;
+      EXPECT_NEAR(value, double(reference), 1e-15 * (1.0 + exponent) * std::max(1.0L, std::abs(reference)))
+          << family_name(spec.family) << " d = " << d;
+    }
+  }
+}
+
+TEST(KernelFamilies, DerivativesMatchExtendedDifferences) {
+  for (const KernelSpec& spec : new_kernels()) {
+    const kernels::RadialKernel kernel = kernels::make_radial_kernel(spec);
+    for (double d = 0.011; d < 4.0; d += 0.0731) {
+      std::visit(
+          [&](const auto& k) {
+            // Skip the corners (Ferley at e is C¹ but not C²; both sides agree there).
+            const Extended h(1e-20), x(d);
+            const double difference = static_cast<double>((k.value(x + h) - k.value(x - h)) / (2 * h));
+            EXPECT_NEAR(k.derivative(d), difference, 1e-13 * std::max(1.0, std::abs(difference)))
+                << family_name(spec.family) << " d = " << d;
+          },
+          kernel);
+    }
+  }
+}
+
+TEST(KernelFamilies, FerleyIsC1AtTheCoating) {
+  const kernels::FerleyKernel k(KernelSpec::ferley(0.4, 1.5));
+  const double e = 0.4, below = std::nextafter(e, 0.0);
+  EXPECT_NEAR(k.value(below), 1.0, 1e-15);
+  EXPECT_DOUBLE_EQ(k.value(e), 1.0);
+  EXPECT_NEAR(k.derivative(below), k.derivative(e), 1e-14);  // both −2/(R − e)
+  EXPECT_DOUBLE_EQ(k.derivative(e), -2.0 / (1.5 - 0.4));
+}
+
+TEST(KernelFamilies, SoftRadiusAtIsoOneHalf) {
+  // Exam notes 3b: R = r / √(1 − 1/√2) = r √(2 + √2) (since 1/(1 − 1/√2) = 2 + √2).
+  const double r = 2.0;
+  const double expected = r * std::sqrt(2.0 + std::numbers::sqrt2);
+  EXPECT_NEAR(*kernels::SoftKernel::support_for_radius(r, 0.5), expected, 4e-16 * expected);
+  const kernels::RadialKernel soft = kernels::make_radial_kernel(KernelSpec::soft(expected));
+  EXPECT_NEAR(*kernels::point_iso_radius(soft, 0.5), r, 4e-16 * r);
+  // Squared: R² = r² (2 + √2) = 8 + 4√2 for r = 2 (not the notes' 13.616).
+  EXPECT_NEAR(expected * expected, 8.0 + 4.0 * std::numbers::sqrt2, 1e-14);
+}
+
+TEST(KernelFamilies, PointIsoRadiusSolvesTheDefinition) {
+  std::vector<KernelSpec> all = new_kernels();
+  for (KernelSpec k : {KernelSpec::inverse(3), KernelSpec::cauchy(4, 2.0), KernelSpec::compact(6, 1.7)}) all.push_back(k);
+  for (const KernelSpec& spec : all) {
+    const kernels::RadialKernel kernel = kernels::make_radial_kernel(spec);
+    for (double c : {0.05, 0.3, 0.5, 0.9, 1.2}) {
+      const std::optional<double> rho = kernels::point_iso_radius(kernel, c);
+      const double top = std::visit([](const auto& k) { return k.value(1e-300); }, kernel);
+      if (!(c < top)) {
+        EXPECT_FALSE(rho) << family_name(spec.family) << " c = " << c;
+        continue;
+      }
+      ASSERT_TRUE(rho) << family_name(spec.family) << " c = " << c;
+      const long double at_rho = spec.family <= KernelFamily::compact
+                                     ? std::visit([&](const auto& k) { return (long double)k.value(*rho); }, kernel)
+                                     : definition(spec, *rho);
+      EXPECT_NEAR(double(at_rho), c, 1e-13) << family_name(spec.family) << " c = " << c;
+    }
+    // A weight scales the level: w K(ρ) = c.
+    EXPECT_EQ(kernels::point_iso_radius(kernel, 0.6, 2.0), kernels::point_iso_radius(kernel, 0.3));
+  }
+}
+
+TEST(KernelFamilies, LineIsoRadiusMatchesQuadrature) {
+  using boost::math::quadrature::gauss_kronrod;
+  for (const KernelSpec& spec : new_kernels()) {
+    const kernels::RadialKernel kernel = kernels::make_radial_kernel(spec);
+    for (double c : {0.05, 0.4, 1.0}) {
+      const std::optional<double> d = kernels::line_iso_radius(kernel, c);
+      if (spec.family == KernelFamily::ferley) {
+        EXPECT_FALSE(d);  // not derived (ferley.hpp)
+        continue;
+      }
+      if (!d) continue;  // c above the line's peak
+      // ∫ K(√(d² + t²)) dt over the line, from the definition.
+      const long double half = spec.family == KernelFamily::gaussian ? 12.0L / std::sqrt((long double)spec.a)
+                                                                     : std::sqrt(spec.R * spec.R - *d * *d);
+      const auto integrand = [&](long double t) { return definition(spec, std::sqrt(*d * *d + t * t)); };
+      const long double integral = gauss_kronrod<long double, 61>::integrate(integrand, -half, half, 15, 1e-18L);
+      EXPECT_NEAR(double(integral), c, 1e-12) << family_name(spec.family) << " c = " << c;
+    }
+  }
+}
+
+TEST(KernelFamilies, ReaderBuildsPointsAndRejectsThemElsewhere) {
+  const Skeleton skeleton = parse_skeleton_json(R"({"primitives": [
+      {"type": "point", "center": [0, 0, 0], "kernel": {"family": "ferley", "e": 0.5, "R": 2}},
+      {"type": "point", "center": [5, 0, 0], "kernel": {"family": "gaussian", "a": 2, "b": 3}}]})");
+  // Ferley at d = 1: ((1 − 2)/(0.5 − 2))² = 4/9; the Gaussian is 3e^(−2·4²) there.
+  EXPECT_NEAR(skeleton.value(Vec3(1, 0, 0)), 4.0 / 9.0 + 3.0 * std::exp(-32.0), 1e-15);
+  const auto message = [](const std::string& json) {
+    try {
+      parse_skeleton_json(json);
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message(R"({"primitives": [{"type": "point", "center": [0, 0, 0],
+                        "kernel": {"family": "soft", "R": 1, "degree": 4}}]})"),
+            "primitives[0].kernel: unknown field \"degree\" for the soft family (allowed: \"family\", \"R\")");
+  EXPECT_EQ(message(R"({"primitives": [{"type": "point", "center": [0, 0, 0],
+                        "kernel": {"family": "ferley", "e": 1}}]})"),
+            "primitives[0].kernel: missing field \"R\"");
+  EXPECT_EQ(message(R"({"primitives": [{"type": "point", "center": [0, 0, 0],
+                        "kernel": {"family": "gaussian", "a": -1, "b": 1}}]})"),
+            "primitives[0].kernel.a: must be > 0, got -1");
+  EXPECT_EQ(message(R"({"primitives": [{"type": "scalis_segment", "a": [0, 0, 0], "b": [1, 0, 0],
+                        "radius": [1, 1], "kernel": {"family": "wyvill", "R": 1}}]})"),
+            "primitives[0].kernel.family: the wyvill family is defined on point primitives only, not on a "
+            "scalis_segment: its closed form along a scalis_segment is not generated (use \"type\": \"point\", or "
+            "one of \"inverse\", \"cauchy\", \"compact\")");
+  EXPECT_EQ(message(R"({"primitives": [{"type": "polygon", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+                        "kernel": {"family": "soft", "R": 1}}]})")
+                .substr(0, 82),
+            "primitives[0].kernel.family: the soft family is defined on point primitives only, ");
+}
+
+}  // namespace
+}  // namespace skelconv
