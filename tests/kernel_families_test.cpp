@@ -13,6 +13,10 @@
 
 #include "extended_difference.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/polygon.hpp"
+#include "skelconv/scalis_segment.hpp"
+#include "skelconv/scalis_triangle.hpp"
+#include "skelconv/segment.hpp"
 #include "skelconv/skeleton_file.hpp"
 
 namespace skelconv {
@@ -171,6 +175,29 @@ TEST(KernelFamilies, ReaderBuildsPointsAndRejectsThemElsewhere) {
                         "kernel": {"family": "soft", "R": 1}}]})")
                 .substr(0, 82),
             "primitives[0].kernel.family: the soft family is defined on point primitives only, ");
+}
+
+// The C++ constructors refuse a point-only family as the reader does (not
+// with an empty list of supported degrees).
+TEST(KernelFamilies, ConstructorsRejectThemElsewhere) {
+  KernelSpec soft;
+  soft.family = KernelFamily::soft;
+  soft.R = 1.0;
+  const auto located_at_family = [](auto&& construct) {
+    try {
+      construct();
+    } catch (const InputError& error) {
+      return error.where() == "kernel.family" &&
+             error.problem().starts_with("the soft family is defined on point primitives only");
+    }
+    return false;
+  };
+  EXPECT_TRUE(located_at_family([&] { Segment(Vec3(0, 0, 0), Vec3(1, 0, 0), soft); }));
+  EXPECT_TRUE(located_at_family([&] { Polygon({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, soft); }));
+  const ScalisKernel scalis{KernelFamily::soft, 4, 2.0};
+  EXPECT_TRUE(located_at_family([&] { ScalisSegment(Vec3(0, 0, 0), Vec3(1, 0, 0), 0.1, 0.2, scalis); }));
+  EXPECT_TRUE(located_at_family(
+      [&] { ScalisTriangle({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {0.1, 0.1, 0.1}, scalis); }));
 }
 
 }  // namespace

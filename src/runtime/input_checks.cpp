@@ -1,6 +1,8 @@
 // Implementation of input_checks.hpp.
 #include "input_checks.hpp"
 
+#include "skelconv/kernels/kernel_list.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -71,6 +73,15 @@ void require_finite_point(const Vec3& v, const std::string& where) {
 
 void require_finite_query_point(const Vec3& p) {
   if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", format_point(p)));
+}
+
+void require_convolution_family(KernelFamily family, std::string_view what) {
+  if (kernels::family_facts(family).on_every_primitive) return;
+  throw InputError(fmt::format("the {} family is defined on point primitives only, not on a {}: its closed form "
+                               "along a {} is not generated (use \"type\": \"point\", or one of \"inverse\", "
+                               "\"cauchy\", \"compact\")",
+                               family_name(family), what, what),
+                   "kernel.family");
 }
 
 void require_valid_kernel_parameter(const KernelSpec& kernel) {

@@ -52,4 +52,9 @@ void require_scalis_sigma(KernelFamily family, double sigma);
 /// against its own table.
 void require_valid_kernel_parameter(const KernelSpec& kernel);
 
+/// `family` has a closed form on a `what` primitive (segment, polygon,
+/// SCALIS segment or triangle): throws InputError at "kernel.family" for a
+/// point-only family (kernels::FamilyFacts::on_every_primitive false).
+void require_convolution_family(KernelFamily family, std::string_view what);
+
 }  // namespace skelconv::detail

@@ -205,6 +205,7 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
                      "vertices");
   }
 
+  detail::require_convolution_family(kernel.family, "polygon");
   detail::require_valid_kernel_parameter(kernel);
   require_supported_degree(kernel);
 }

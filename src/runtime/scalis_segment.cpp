@@ -71,6 +71,7 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
   if (tau0 == 0.0 && tau1 == 0.0) {
     throw InputError("both radii are zero: the SCALIS field of a segment of radius 0 is not defined", "radius");
   }
+  detail::require_convolution_family(kernel.family, "scalis_segment");
   detail::require_scalis_sigma(kernel.family, kernel.sigma);
   detail::require_positive_parameter(iso, "iso");
 

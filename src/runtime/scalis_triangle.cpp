@@ -78,6 +78,7 @@ ScalisTriangle::ScalisTriangle(const std::array<Vec3, 3>& vertices, const std::a
   if (radii[0] == 0.0 && radii[1] == 0.0 && radii[2] == 0.0) {
     throw InputError("all three radii are zero: the SCALIS field of a triangle of radius 0 is not defined", "radius");
   }
+  detail::require_convolution_family(kernel.family, "scalis_triangle");
   detail::require_scalis_sigma(kernel.family, kernel.sigma);
   detail::require_positive_parameter(iso, "iso");
   require_supported_degree(kernel);

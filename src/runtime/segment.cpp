@@ -49,6 +49,7 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   detail::require_finite_point(b, "b");
   detail::require_non_degenerate(a, b, degenerate_length_ratio);
   weight_degree_ = validated_weight_degree(weight);
+  detail::require_convolution_family(kernel.family, "segment");
   detail::require_valid_kernel_parameter(kernel);
 
   generated_ = generated::find_segment_kernel<double>(kernel.family, kernel.degree, weight_degree_);

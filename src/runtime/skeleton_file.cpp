@@ -260,15 +260,13 @@ KernelSpec read_kernel(const Json& value, const std::string& path) {
   return kernel;
 }
 
-/// Throws InputError at `path`.family when `family` is a point-only family
-/// (kernels::FamilyFacts::on_every_primitive false) on a `what` primitive.
+/// detail::require_convolution_family, located at `path`.family.
 void require_family_on(KernelFamily family, std::string_view what, const std::string& path) {
-  if (kernels::family_facts(family).on_every_primitive) return;
-  throw InputError(fmt::format("the {} family is defined on point primitives only, not on a {}: its closed form "
-                               "along a {} is not generated (use \"type\": \"point\", or one of \"inverse\", "
-                               "\"cauchy\", \"compact\")",
-                               family_name(family), what, what),
-                   path + ".family");
+  try {
+    detail::require_convolution_family(family, what);
+  } catch (const InputError& error) {
+    throw InputError(error.problem(), path + ".family");
+  }
 }
 
 /// read_kernel for a primitive that is not a point.
