@@ -106,9 +106,12 @@ def strip_png_metadata(path):
         handle.write(b"".join(out))
 
 
-def render(vertices, normals, faces, png_path, width=640, height=480, povray="povray"):
-    """Renders the mesh to png_path. Raises RuntimeError with POV-Ray's message on failure."""
-    centre, radius = framing(vertices)
+def render(vertices, normals, faces, png_path, width=640, height=480, povray="povray", frame=None):
+    """Renders the mesh to png_path, the camera framed on `frame` = (centre,
+    radius) (default: the mesh's own bounding sphere; figures comparing
+    several meshes pass one frame for all, so that their scales match).
+    Raises RuntimeError with POV-Ray's message on failure."""
+    centre, radius = frame if frame is not None else framing(vertices)
     render_scene(scene(mesh2(vertices, normals, faces), centre, radius, width, height), png_path, width, height, povray)
 
 
