@@ -76,8 +76,8 @@ def common_frame(meshes):
     return povray.framing(points)
 
 
-def render_one(mesh_, png, width, height, frame=None):
-    povray.render(mesh_.vertices, mesh_.normals, mesh_.faces, png, width, height, frame=frame)
+def render_one(mesh_, png, width, height, frame=None, colours=None):
+    povray.render(mesh_.vertices, mesh_.normals, mesh_.faces, png, width, height, frame=frame, colours=colours)
 
 
 def panels(ctx, items, size, shared_frame=True, rows=1):
