@@ -104,10 +104,25 @@ def panels(ctx, items, size, shared_frame=True, rows=1):
     plot.save(fig, ctx.image_path, size)
 
 
-def widths(m, axis, across, stations, half_width):
-    """Extent of the mesh along `across` in slabs |x_axis − s| ≤ half_width, for s in stations."""
+def section(m, axis, value):
+    """The points where the mesh's edges cross the plane x_axis = value (linear
+    interpolation along each edge: the mesh's own cross-section)."""
+    edges = np.concatenate([m.faces[:, [0, 1]], m.faces[:, [1, 2]], m.faces[:, [2, 0]]])
+    p, q = m.vertices[edges[:, 0]], m.vertices[edges[:, 1]]
+    a, b = p[:, axis] - value, q[:, axis] - value
+    crossing = (a < 0) != (b < 0)
+    s = a[crossing] / (a[crossing] - b[crossing])
+    return p[crossing] + s[:, None] * (q[crossing] - p[crossing])
+
+
+def widths(m, axis, across, stations, near=None, half_range=np.inf):
+    """Extent along `across` of the mesh's section x_axis = s, for s in stations
+    (0 where the section is empty); near: only section points with
+    |x_across − near| < half_range."""
     out = []
     for s in stations:
-        v = m.slab(axis, s, half_width)
+        v = section(m, axis, s)
+        if near is not None:
+            v = v[np.abs(v[:, across] - near) < half_range]
         out.append(float(v[:, across].max() - v[:, across].min()) if len(v) else 0.0)
     return np.array(out)

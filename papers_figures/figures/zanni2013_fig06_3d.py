@@ -2,7 +2,7 @@
 with a thick one, (a) classical convolution, (b) SCALIS (the section
 figure's skeleton and levels). Measured on the meshes: the radius of each
 thin primitive at 3/4 of its length, half the extent across it of the
-vertices in a thin slab there (0 where the surface does not reach)."""
+mesh's section there (0 where the surface does not reach)."""
 import numpy as np
 
 from figlib import surface3d
@@ -27,14 +27,13 @@ FIGURE = Figure(
     view="the fixed camera of render3d, one scale for both panels", size=(640, 300))
 
 
-def thin_radii(m, thin, half_width):
+def thin_radii(m, thin):
+    """Half the width of the mesh's section y = const at 3/4 of each thin primitive, near it."""
     out = []
     for p in thin:
         a, b = np.asarray(p["a"], float), np.asarray(p["b"], float)
         probe = a + 0.75 * (b - a)
-        v = m.slab(1, probe[1], half_width)
-        v = v[np.abs(v[:, 0] - probe[0]) < 0.9]
-        out.append(0.5 * float(v[:, 0].max() - v[:, 0].min()) if len(v) else 0.0)
+        out.append(0.5 * surface3d.widths(m, 1, 0, [probe[1]], near=probe[0], half_range=0.9)[0])
     return np.array(out)
 
 
@@ -48,7 +47,7 @@ def draw(ctx):
     b = surface3d.mesh(ctx, {"primitives": scalis}, 1.0, size, "fig6b_scalis")
     surface3d.panels(ctx, [(a, f"(a) classical, iso {ISO_CLASSICAL:.4g}"), (b, "(b) SCALIS, iso 1")], FIGURE.size)
     tau = thin[0]["radius"][0]
-    c, s = thin_radii(a, thin, size / 2), thin_radii(b, thin, size / 2)
+    c, s = thin_radii(a, thin), thin_radii(b, thin)
     return [Claim(
         "details (thin primitives blended with a thick one) are smoothed by classical convolution, kept by SCALIS",
         f"radius of the 3 thin primitives at 3/4 of their length on the meshes (their own radius {tau:g}): SCALIS "

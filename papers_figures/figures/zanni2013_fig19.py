@@ -51,7 +51,7 @@ def draw(ctx):
         skeleton = v_skeleton(blend)
         on_axis = ctx.field_of(skeleton["primitives"]).f(np.stack([0 * STATIONS, STATIONS, 0 * STATIONS], axis=1))
         m = surface3d.mesh(ctx, skeleton, 1.0, ctx.res(0.05, 0.12), f"fig19_{blend}")
-        w = surface3d.widths(m, 1, 0, STATIONS, ctx.res(0.02, 0.06))
+        w = surface3d.widths(m, 1, 0, STATIONS)
         ratio = w / STATIONS
         claims.append(Claim(
             f"{label} blend: the same blend at the thin and at the thick end (self-similar V)",

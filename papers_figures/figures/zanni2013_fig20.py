@@ -32,7 +32,8 @@ FIGURE = Figure(
                      "τ1 + τ2 = τ, (b) surfaces homothétiques avec τ1 + τ2 = τ, (c) surfaces homothétiques avec "
                      "τ1² + τ2² = τ².",
     section=f"our branching (the paper's is not given): trunk (0,−4,0)–(0,0,0), branches to (±1.6, 3, 0), τ = {TAU}; "
-            "summed (the paper's classical superposition)",
+            "summed (the paper's classical superposition). In (a) the branches of weight τ/2 have no surface of "
+            "their own at the classical level (as in fig. 4a): only stubs at the fork",
     kernel="Cauchy 4, σ = 1 (classical: c_s⁴, s = 1, weights τ)",
     iso=f"SCALIS 1; classical {ISO_CLASSICAL:.5g} (radius τ around a line of weight τ)",
     view="the fixed camera of render3d, one scale for all panels", size=(640, 260))
@@ -55,7 +56,7 @@ def draw(ctx):
     for label, tau_branch in BRANCHES.items():
         skeleton, iso = branching(label, tau_branch)
         m = surface3d.mesh(ctx, skeleton, iso, size, f"fig20{label[1]}")
-        w = surface3d.widths(m, 1, 0, STATIONS, ctx.res(0.02, 0.06))
+        w = surface3d.widths(m, 1, 0, STATIONS)
         ratios[label[:3]] = w[1] / (2 * TAU)
         texts.append(f"{label[:3]} {fmt(w[1] / (2 * TAU))} (trunk at y = {STATIONS[0]:g}: {fmt(w[0] / (2 * TAU))}; "
                      f"{m.stats['triangles']} triangles, closed {m.stats['closed']})")
