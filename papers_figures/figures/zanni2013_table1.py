@@ -4,6 +4,7 @@ and 20c, and on fig 20c at a finer facet size (~100k triangles), beside the
 paper's (a non-adaptive marching-triangles mesher). Times depend on the
 machine and its load: the gallery prints them, no check asserts them; the
 checks are on the meshes (closed manifolds, triangle counts)."""
+import os
 import platform
 import subprocess
 
@@ -45,8 +46,9 @@ def draw(ctx):
             ("Fig. 20(c)", fig20c, coarse, "cgal"),
             ("Fig. 20(c), grid", fig20c, coarse, "grid"),
             ("Fig. 20(c), finer, grid", fig20c, fine, "grid")]
-    lines = [f"Our machine: {machine()} (the build machine, shared with other jobs; `skelconv mesh` runs on "
-             f"1 thread). The paper's: {PAPER_MACHINE}. **Times are machine- and load-dependent**; the "
+    lines = [f"Our machine: {machine()}, {os.cpu_count()} cores (`lscpu`; the build machine, shared with other "
+             f"jobs while these times were taken). `--method cgal` runs on 1 thread, `--method grid` (OpenVDB) on "
+             f"every core. The paper's: {PAPER_MACHINE}. **Times are machine- and load-dependent**; the "
              "meshers differ too (the paper's marching triangles is non-adaptive; ours refines Delaunay "
              "triangulations and projects every vertex with the exact gradient).", "",
              "| skeleton | paper: triangles | paper: time | ours: command | ours: triangles | ours: time (s) "
