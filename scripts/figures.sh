@@ -30,8 +30,8 @@ fi
 # Debian's python3 (python3-matplotlib), not whatever python3 comes first on PATH.
 /usr/bin/python3 papers_figures/run.py "${args[@]}"
 if [ ${#only[@]} -eq 0 ]; then
-  # The 3-D renderer on its test mesh (a UV sphere written by skelconv::write_mesh),
-  # until `skelconv mesh` gives the 3-D figures.
+  # The 3-D renderer on its test mesh (a UV sphere written by skelconv::write_mesh):
+  # the 3-D figures themselves mesh their skeletons with `skelconv mesh`.
   mkdir -p "$out"
   build/release/papers_figures/skelconv_figures_uv_sphere "$out/uv_sphere.ply"
   /usr/bin/python3 papers_figures/render3d/render_mesh.py "$out/uv_sphere.ply" papers_figures/images/render3d_uv_sphere.png

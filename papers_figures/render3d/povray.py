@@ -25,8 +25,8 @@ background {{ rgb <1, 1, 1> }}
 camera {{ perspective location {camera} look_at {centre} right x*{aspect} angle {angle} }}
 light_source {{ {key} color rgb <1, 1, 1> }}
 light_source {{ {fill} color rgb <0.35, 0.35, 0.4> shadowless }}
-#declare Surface = texture {{ pigment {{ {surface} }}
-  finish {{ ambient 0.12 diffuse 0.75 specular 0.3 roughness 0.02 }} }}
+#declare Finish = finish {{ ambient 0.12 diffuse 0.75 specular 0.3 roughness 0.02 }}
+#declare Surface = texture {{ pigment {{ {surface} }} finish {{ Finish }} }}
 {mesh}
 """
 
@@ -36,8 +36,10 @@ def _pov(v):
     return f"<{v[0]:.9g}, {v[2]:.9g}, {v[1]:.9g}>"
 
 
-def mesh2(vertices, normals, faces):
-    """The mesh as POV-Ray mesh2 text (normals estimated from the faces when absent)."""
+def mesh2(vertices, normals, faces, colours=None):
+    """The mesh as POV-Ray mesh2 text (normals estimated from the faces when
+    absent). colours: optional N×3 RGB per vertex (in [0, 1]), interpolated
+    over each triangle, with the finish of every other surface."""
     if normals is None:
         normals = np.zeros_like(vertices)
         tri = vertices[faces]
@@ -49,9 +51,17 @@ def mesh2(vertices, normals, faces):
     parts.append(",\n".join(_pov(v) for v in vertices) + " }")
     parts.append(f"normal_vectors {{ {len(normals)},")
     parts.append(",\n".join(_pov(n) for n in normals) + " }")
+    if colours is None:
+        parts.append(f"face_indices {{ {len(faces)},")
+        parts.append(",\n".join(f"<{a}, {b}, {c}>" for a, b, c in faces) + " }")
+        parts.append("texture { Surface } }")
+        return "\n".join(parts)
+    parts.append(f"texture_list {{ {len(colours)},")
+    parts.append(",\n".join(f"texture {{ pigment {{ rgb <{r:.4f}, {g:.4f}, {b:.4f}> }} finish {{ Finish }} }}"
+                             for r, g, b in colours) + " }")
     parts.append(f"face_indices {{ {len(faces)},")
-    parts.append(",\n".join(f"<{a}, {b}, {c}>" for a, b, c in faces) + " }")
-    parts.append("texture { Surface } }")
+    parts.append(",\n".join(f"<{a}, {b}, {c}>, {a}, {b}, {c}" for a, b, c in faces) + " }")
+    parts.append("}")
     return "\n".join(parts)
 
 
@@ -106,10 +116,14 @@ def strip_png_metadata(path):
         handle.write(b"".join(out))
 
 
-def render(vertices, normals, faces, png_path, width=640, height=480, povray="povray"):
-    """Renders the mesh to png_path. Raises RuntimeError with POV-Ray's message on failure."""
-    centre, radius = framing(vertices)
-    render_scene(scene(mesh2(vertices, normals, faces), centre, radius, width, height), png_path, width, height, povray)
+def render(vertices, normals, faces, png_path, width=640, height=480, povray="povray", frame=None, colours=None):
+    """Renders the mesh to png_path, the camera framed on `frame` = (centre,
+    radius) (default: the mesh's own bounding sphere; figures comparing
+    several meshes pass one frame for all, so that their scales match).
+    Raises RuntimeError with POV-Ray's message on failure."""
+    centre, radius = frame if frame is not None else framing(vertices)
+    render_scene(scene(mesh2(vertices, normals, faces, colours), centre, radius, width, height), png_path, width, height,
+                 povray)
 
 
 def render_scene(text, png_path, width, height, povray="povray"):
