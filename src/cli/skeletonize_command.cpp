@@ -72,7 +72,7 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
       app.add_subcommand("skeletonize", "Reconstruct a skeleton file of SCALIS segments from a closed mesh");
   command->add_option("INPUT", options.input_path, "Closed mesh: .ply (ASCII or binary) or .obj")->required();
   command->add_option("-o,--output", options.output_path, "Output skeleton file (JSON)")->required();
-  command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees (default 60)");
+  command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees (default 90)");
   command->add_option("--epsilon", options.epsilon, "Pavlidis tolerance × skeleton size (default 0.02)");
   command->add_option("--report", options.report_path, "Also mesh every stage and write distances (JSON)");
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");

@@ -21,7 +21,7 @@ struct SkeletonizeOptions {
   std::string input_path;
   std::string output_path;
   std::optional<std::string> report_path;
-  double prune_angle = 60.0;
+  double prune_angle = 90.0;
   double epsilon = 0.02;
   bool quiet = false;
 };

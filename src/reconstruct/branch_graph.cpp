@@ -45,15 +45,19 @@ std::vector<double> dijkstra(const Adjacency& adjacency, std::int32_t source) {
 
 /// Distances from an extremity of every connected piece: for each piece not
 /// reached yet, Dijkstra from its first vertex, then again from the vertex of
-/// the piece farthest from it.
-std::vector<double> distances_from_extremities(const Adjacency& adjacency) {
+/// the piece farthest from it among those whose ball is at least the median
+/// (`minimum_radius`): an extremity of the axis, not the tip of a thin sheet
+/// of small balls beside it, whose level sets would cut the tube obliquely.
+std::vector<double> distances_from_extremities(const Adjacency& adjacency, const MedialGraph& graph,
+                                               double minimum_radius) {
   std::vector<double> result(adjacency.size(), std::numeric_limits<double>::infinity());
   for (std::size_t start = 0; start < adjacency.size(); ++start) {
     if (std::isfinite(result[start])) continue;
     const std::vector<double> first = dijkstra(adjacency, std::int32_t(start));
     std::int32_t root = std::int32_t(start);
     for (std::size_t v = 0; v < first.size(); ++v) {
-      if (std::isfinite(first[v]) && first[v] > first[root]) root = std::int32_t(v);
+      if (std::isfinite(first[v]) && first[v] > first[root] && graph.vertices[v].radius >= minimum_radius)
+        root = std::int32_t(v);
     }
     const std::vector<double> second = dijkstra(adjacency, root);
     for (std::size_t v = 0; v < second.size(); ++v) {
@@ -138,7 +142,10 @@ CurveSkeleton level_set_skeleton(const MedialGraph& graph, const LevelSetOptions
   if (!(options.bin_width > 0.0)) throw InputError("must be > 0", "bin_width");
   if (!(options.core_fraction > 0.0 && options.core_fraction <= 1.0)) throw InputError("must be in (0, 1]", "core_fraction");
   const Adjacency adjacency = medial_adjacency(graph);
-  const std::vector<double> distance = distances_from_extremities(adjacency);
+  std::vector<double> radii;
+  for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
+  std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
+  const std::vector<double> distance = distances_from_extremities(adjacency, graph, radii[radii.size() / 2]);
   const auto bin = [&](std::int32_t v) { return std::int64_t(std::floor(distance[v] / options.bin_width)); };
 
   std::vector<std::int32_t> parent(graph.vertices.size());

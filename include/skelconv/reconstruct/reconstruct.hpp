@@ -17,7 +17,7 @@ namespace skelconv::reconstruct {
 
 struct ReconstructOptions {
   /// Ferley's pruning threshold θ_min, degrees, in [0, 180).
-  double prune_angle_degrees = 60.0;
+  double prune_angle_degrees = 90.0;
   /// Pavlidis tolerance ε, relative to the largest extent of the skeleton's
   /// bounding box (Ferley's fig. 3.2 uses 0.02).
   double epsilon = 0.02;
