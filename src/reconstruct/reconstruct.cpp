@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -99,12 +100,36 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
   return result;
 }
 
+namespace {
+
+/// The branches with every free end extended by `factor` × its radius along
+/// the end tangent. A node is free when it ends exactly one branch end (a
+/// closed branch has none).
+std::vector<Branch> with_extended_ends(std::vector<Branch> branches, double factor) {
+  std::map<std::int32_t, int> uses;
+  for (const Branch& b : branches) ++uses[b.first_node], ++uses[b.last_node];
+  const auto extension = [factor](const Vec4& end, const Vec4& inner) {
+    const Vec3 tangent = end.head<3>() - inner.head<3>();
+    if (tangent.norm() == 0.0) return end;
+    const Vec3 tip = end.head<3>() + factor * end.w() * tangent.normalized();
+    return Vec4(tip.x(), tip.y(), tip.z(), end.w());
+  };
+  for (Branch& b : branches) {
+    if (factor <= 0.0 || b.points.size() < 2 || b.first_node == b.last_node) continue;
+    if (uses[b.last_node] == 1) b.points.push_back(extension(b.points.back(), b.points[b.points.size() - 2]));
+    if (uses[b.first_node] == 1) b.points.insert(b.points.begin(), extension(b.points.front(), b.points[1]));
+  }
+  return branches;
+}
+
+}  // namespace
+
 std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) {
   std::string text = "{\"iso\": 1, \"primitives\": [\n  {\"blend\": \"sum\", \"children\": [";
   const std::string kernel = fmt::format(R"("kernel": {{"family": "cauchy", "degree": {}, "sigma": {:.17g}}})",
                                          o.kernel_degree, o.kernel_sigma);
   bool first = true;
-  for (const Branch& b : stage.branches) {
+  for (const Branch& b : with_extended_ends(stage.branches, o.end_extension)) {
     for (std::size_t k = 1; k < b.points.size(); ++k) {
       const Vec4& p = b.points[k - 1];
       const Vec4& q = b.points[k];

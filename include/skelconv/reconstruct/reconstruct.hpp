@@ -30,6 +30,11 @@ struct ReconstructOptions {
   /// SCALIS Cauchy kernel of the output segments (docs/cli.md), normalised
   /// so that f = iso at distance r from a long segment of radius r.
   int kernel_degree = 4;
+  /// Each free end (an end node, not a junction) is extended along its end
+  /// tangent by this × its radius, at that radius (docs/reconstruction.md,
+  /// "Ends"): the medial axis stops short of a cap, and a SCALIS surface
+  /// falls short of its radius near a skeleton end. 0 = no extension.
+  double end_extension = 1.5;
   double kernel_sigma = 1.5;
   /// Called with one line per step ("medial graph: 5230 vertices, ...").
   std::function<void(std::string_view)> progress;
@@ -55,7 +60,8 @@ struct Reconstruction {
 Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& options);
 
 /// The skelconv skeleton file (JSON text) of a stage: one "scalis_segment"
-/// per polyline segment, summed, with the top-level "iso": 1.
+/// per polyline segment (plus the end extensions), summed, with the
+/// top-level "iso": 1.
 std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& options);
 
 }  // namespace skelconv::reconstruct
