@@ -1,0 +1,30 @@
+// skelconv/mesh/mesh_reader.hpp — reading a triangle mesh (PLY or OBJ) as a
+// user would give it; the reading half of triangle_mesh.hpp's write_mesh.
+//
+//   * PLY: "ascii 1.0", "binary_little_endian 1.0" or "binary_big_endian
+//     1.0"; the vertex element's x, y, z of any scalar type (char … double,
+//     also int8 … float64); faces from the list property "vertex_indices" (or
+//     "vertex_index"), polygons fan-triangulated; every other element and
+//     property is read past and ignored (normals are not read: the consumer
+//     recomputes what it needs);
+//   * OBJ: "v x y z" and "f i j k …" lines (i, i/t, i//n, i/t/n; negative
+//     indices count from the end), polygons fan-triangulated, other lines
+//     ignored.
+// Errors are InputError located at the path and, where there is one, the line
+// ("mesh.obj: line 12: face index 40 outside [1, 39]"). Faces are optional:
+// a point set is a mesh without triangles.
+#pragma once
+
+#include <filesystem>
+
+#include "skelconv/mesh/triangle_mesh.hpp"
+
+namespace skelconv {
+
+/// Reads `path` (.ply or .obj, by extension, case insensitive). The returned
+/// mesh has no normals. Throws InputError for an unknown extension, an
+/// unreadable file, a malformed header or body, a non-finite coordinate or a
+/// face index out of range.
+TriangleMesh read_mesh(const std::filesystem::path& path);
+
+}  // namespace skelconv

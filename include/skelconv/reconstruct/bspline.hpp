@@ -1,0 +1,28 @@
+// skelconv/reconstruct/bspline.hpp — smoothing a branch by a uniform cubic
+// B-spline in 4-D, (x, y, z, r) (Ferley 1996 §3.1.3).
+//
+// Ferley's matrix form of one span with control points V0…V3, u ∈ [0, 1]:
+//   Q(u) = 1/6 (V0 + 4V1 + V2 + 3u(V2 − V0) + 3u²(V0 − 2V1 + V2)
+//               + u³(V3 − V0 + 3(V1 − V2)))
+// (the text's formula, checked: it is the uniform cubic B-spline basis
+// (1−u)³/6, (3u³ − 6u² + 4)/6, (−3u³ + 3u² + 3u + 1)/6, u³/6). The control
+// polygon is the simplified branch with both end points tripled, so that the
+// curve starts and ends exactly at them (Q(0) of the span V0 = V1 = V2 is V0)
+// and the branches still meet at their junctions.
+#pragma once
+
+#include <vector>
+
+#include "skelconv/reconstruct/branch_graph.hpp"
+
+namespace skelconv::reconstruct {
+
+/// Q(u) of one span.
+Vec4 bspline_span_point(const Vec4& v0, const Vec4& v1, const Vec4& v2, const Vec4& v3, double u);
+
+/// The B-spline of `control` (ends tripled), sampled at `samples_per_span` ≥ 1
+/// equal steps of u per span; the first and last points are the ends of
+/// `control` exactly. Fewer than 2 control points are returned unchanged.
+std::vector<Vec4> smooth_bspline(const std::vector<Vec4>& control, int samples_per_span);
+
+}  // namespace skelconv::reconstruct

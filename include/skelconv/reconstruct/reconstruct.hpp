@@ -1,0 +1,79 @@
+// skelconv/reconstruct/reconstruct.hpp — the whole skeleton half of Ferley
+// 1996: closed mesh → medial graph → pruned → curve skeleton → branches →
+// simplified (Pavlidis, 4-D) → smoothed (B-spline, 4-D) → skeleton file of
+// SCALIS segments. docs/reconstruction.md describes each step and its
+// parameters, and measures it.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "skelconv/reconstruct/branch_graph.hpp"
+#include "skelconv/reconstruct/pruning.hpp"
+
+namespace skelconv::reconstruct {
+
+struct ReconstructOptions {
+  /// Ferley's pruning threshold θ_min, degrees, in [0, 180).
+  double prune_angle_degrees = 90.0;
+  /// Pavlidis tolerance ε, relative to the largest extent of the skeleton's
+  /// bounding box (Ferley's fig. 3.2 uses 0.02).
+  double epsilon = 0.02;
+  /// Level-set bin width, × the median radius of the inner balls.
+  double bin_factor = 1.0;
+  /// A terminal branch shorter than this × its junction's radius is a spur.
+  double spur_factor = 1.5;
+  /// B-spline sampling: segments per span.
+  int samples_per_span = 4;
+  /// SCALIS Cauchy kernel of the output segments (docs/cli.md), normalised
+  /// so that f = iso at distance r from a long segment of radius r.
+  int kernel_degree = 4;
+  /// Each free end (an end node, not a junction) is extended along its end
+  /// tangent by this × its radius, at that radius (docs/reconstruction.md,
+  /// "Ends"): the medial axis stops short of a cap, and a SCALIS surface
+  /// falls short of its radius near a skeleton end. 0 = no extension.
+  double end_extension = 1.5;
+  double kernel_sigma = 1.5;
+  /// Called with one line per step ("medial graph: 5230 vertices, ...").
+  std::function<void(std::string_view)> progress;
+};
+
+/// One stage's skeleton: its branches as polylines of (x, y, z, r).
+struct Stage {
+  std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed
+  std::vector<Branch> branches;
+  std::size_t ends = 0, junctions = 0, points = 0;
+};
+
+struct Reconstruction {
+  std::size_t samples = 0, medial_vertices = 0, medial_edges = 0;
+  PruningReport pruning;
+  std::size_t spurs_removed = 0;
+  std::vector<Stage> stages;  ///< in the order above; the last is the result
+  double tolerance = 0.0;     ///< ε × skeleton size, absolute
+};
+
+/// Runs every step on `surface` (a closed mesh). Throws InputError for bad
+/// options (located at "--prune-angle", "--epsilon") or a bad mesh.
+Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& options);
+
+/// The skelconv skeleton file (JSON text) of a stage: one "scalis_segment"
+/// per polyline segment (plus the end extensions), summed, with the
+/// top-level "iso": 1.
+std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& options);
+
+}  // namespace skelconv::reconstruct
+
+#include "skelconv/reconstruct/surface_distance.hpp"
+
+namespace skelconv::reconstruct {
+
+/// Meshes the skeleton file of `stage` at its iso (skelconv's mesher, grid
+/// method with facet size `size`, the input's diagonal / 100 when 0) and
+/// measures it against `surface`. `mesh_out`, if given, receives the mesh.
+SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                              double size = 0.0, TriangleMesh* mesh_out = nullptr);
+
+}  // namespace skelconv::reconstruct

@@ -1,0 +1,121 @@
+// Implementation of skeletonize_command.hpp.
+#include "skeletonize_command.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "exit_status.hpp"
+#include "skelconv/errors.hpp"
+#include "skelconv/mesh/mesh_reader.hpp"
+#include "skelconv/reconstruct/reconstruct.hpp"
+
+namespace skelconv::cli {
+namespace {
+
+/// Writes `text` to a temporary sibling of `path` and renames it into place;
+/// throws InputError (nothing left behind) on failure.
+void write_text_atomically(const std::string& text, const std::filesystem::path& path) {
+  std::filesystem::path temporary = path;
+  temporary += ".skelconv-partial";
+  std::error_code error;
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    if (out && out.write(text.data(), std::streamsize(text.size())) && out.flush()) {
+      out.close();
+      std::filesystem::rename(temporary, path, error);
+      if (!error) return;
+    }
+  }
+  std::filesystem::remove(temporary, error);
+  throw InputError("cannot write the file", path.string());
+}
+
+std::string summary(const reconstruct::Reconstruction& r, const std::string& output) {
+  std::string text = fmt::format("output: {}\nsamples: {}\nmedial_vertices: {}\npruned_vertices: {}\n"
+                                 "pruned_branches: {}\nspurs_removed: {}\n",
+                                 output, r.samples, r.medial_vertices, r.pruning.vertices_removed,
+                                 r.pruning.branches_removed, r.spurs_removed);
+  for (const auto& s : r.stages) {
+    text += fmt::format("stage {}: branches {}, ends {}, junctions {}, points {}\n", s.name, s.branches.size(),
+                        s.ends, s.junctions, s.points);
+  }
+  return text;
+}
+
+std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh& input,
+                        const reconstruct::ReconstructOptions& options,
+                        const std::function<void(std::string_view)>& progress) {
+  std::string text = fmt::format("{{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
+                                 "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, \"stages\": [",
+                                 r.samples, r.medial_vertices, r.pruning.vertices_removed,
+                                 r.pruning.branches_removed, r.spurs_removed, r.tolerance);
+  for (std::size_t k = 0; k < r.stages.size(); ++k) {
+    const auto& s = r.stages[k];
+    const reconstruct::SurfaceDistance d = reconstruct::measure_stage(input, s, options);
+    if (progress) progress(fmt::format("measured {}: Hausdorff {:.4g}, RMS {:.4g} of the diagonal", s.name,
+                                       d.hausdorff / d.diagonal, d.rms / d.diagonal));
+    text += fmt::format("{}\n  {{\"name\": \"{}\", \"branches\": {}, \"ends\": {}, \"junctions\": {}, \"points\": {}, "
+                        "\"hausdorff\": {:.6g}, \"rms\": {:.6g}, \"diagonal\": {:.17g}}}",
+                        k == 0 ? "" : ",", s.name, s.branches.size(), s.ends, s.junctions, s.points,
+                        d.hausdorff / d.diagonal, d.rms / d.diagonal, d.diagonal);
+  }
+  return text + "]}\n";
+}
+
+}  // namespace
+
+CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
+  CLI::App* command =
+      app.add_subcommand("skeletonize", "Reconstruct a skeleton file of SCALIS segments from a closed mesh");
+  command->add_option("INPUT", options.input_path, "Closed mesh: .ply (ASCII or binary) or .obj")->required();
+  command->add_option("-o,--output", options.output_path, "Output skeleton file (JSON)")->required();
+  command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees (default 90)");
+  command->add_option("--epsilon", options.epsilon, "Pavlidis tolerance × skeleton size (default 0.02)");
+  command->add_option("--report", options.report_path, "Also mesh every stage and write distances (JSON)");
+  command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
+  command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
+  return command;
+}
+
+int run_skeletonize(const SkeletonizeOptions& options) {
+  std::string text;
+  try {
+    if (std::filesystem::path(options.output_path).extension() != ".json")
+      throw InputError("the skeleton file must end in .json", options.output_path);
+    reconstruct::ReconstructOptions ro;
+    ro.prune_angle_degrees = options.prune_angle;
+    ro.epsilon = options.epsilon;
+    if (!options.quiet) ro.progress = [](std::string_view line) {
+      std::fprintf(stderr, "skelconv skeletonize: %.*s\n", int(line.size()), line.data());
+    };
+    const TriangleMesh input = read_mesh(options.input_path);
+    if (ro.progress) ro.progress(fmt::format("read {} vertices, {} triangles", input.vertices.size(), input.triangles.size()));
+    const reconstruct::Reconstruction r = [&] {
+      try {
+        return reconstruct::reconstruct(input, ro);
+      } catch (const InputError& error) {
+        if (error.where().starts_with("--")) throw;
+        throw error.inside(options.input_path);
+      }
+    }();
+    const std::string skeleton = reconstruct::skeleton_file_text(r.stages.back(), ro);
+    std::string report;
+    if (options.report_path) report = report_json(r, input, ro, ro.progress);
+    write_text_atomically(skeleton, options.output_path);
+    if (options.report_path) write_text_atomically(report, *options.report_path);
+    text = summary(r, options.output_path);
+  } catch (const InputError& error) {
+    report_error(error.what());
+    return exit_bad_input;
+  } catch (const EvaluationError& error) {
+    report_error(error.what());
+    return exit_evaluation_failed;
+  }
+  std::fwrite(text.data(), 1, text.size(), stdout);
+  return std::fflush(stdout) == 0 ? exit_success : exit_evaluation_failed;
+}
+
+}  // namespace skelconv::cli

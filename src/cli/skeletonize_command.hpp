@@ -1,0 +1,33 @@
+// src/cli/skeletonize_command.hpp — `skelconv skeletonize INPUT.ply|.obj -o
+// SKELETON.json [--prune-angle deg] [--epsilon e] [--report REPORT.json]`.
+//
+// Reads a closed mesh (mesh_reader.hpp), reconstructs its skeleton
+// (reconstruct/reconstruct.hpp: medial graph, pruning, branches, Pavlidis,
+// B-splines) and writes a skelconv skeleton file of SCALIS segments whose
+// surface f = iso approximates the input. Progress lines go to stderr (not
+// with --quiet); a summary (counts per stage) to stdout. --report also meshes
+// every stage and writes the per-stage distances to the input as JSON.
+// Errors: one "skelconv: error: ..." line, exit 2, nothing written.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace skelconv::cli {
+
+struct SkeletonizeOptions {
+  std::string input_path;
+  std::string output_path;
+  std::optional<std::string> report_path;
+  double prune_angle = 90.0;
+  double epsilon = 0.02;
+  bool quiet = false;
+};
+
+CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options);
+
+int run_skeletonize(const SkeletonizeOptions& options);
+
+}  // namespace skelconv::cli

@@ -1,0 +1,299 @@
+// Implementation of skelconv/mesh/mesh_reader.hpp.
+#include "skelconv/mesh/mesh_reader.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "skelconv/errors.hpp"
+
+namespace skelconv {
+namespace {
+
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+std::string read_whole_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open the mesh file", path.string());
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Adds the fan triangulation of polygon `face` (0-based indices).
+void add_polygon(TriangleMesh& mesh, const std::vector<std::int64_t>& face) {
+  for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+    mesh.triangles.push_back({std::int32_t(face[0]), std::int32_t(face[k]), std::int32_t(face[k + 1])});
+  }
+}
+
+// ---------------------------------------------------------------- PLY ---
+
+enum class PlyFormat { ascii, little, big };
+
+struct PlyProperty {
+  std::string name;
+  std::string type;        ///< scalar type, or the item type of a list
+  std::string count_type;  ///< empty unless a list
+};
+
+struct PlyElement {
+  std::string name;
+  std::size_t count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+std::size_t ply_type_size(const std::string& type, const std::string& where) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  throw InputError("unknown PLY property type \"" + type + "\"", where);
+}
+
+/// Reads the PLY scalars of the body, ASCII words or binary values.
+class PlyBody {
+ public:
+  PlyBody(const std::string& bytes, std::size_t start, PlyFormat format, std::string where)
+      : bytes_(bytes), position_(start), format_(format), where_(std::move(where)) {
+    if (format_ == PlyFormat::ascii) words_.str(bytes.substr(start));
+  }
+
+  double next(const std::string& type) {
+    if (format_ == PlyFormat::ascii) {
+      std::string word;
+      if (!(words_ >> word)) throw InputError("the PLY body ends early", where_);
+      try {
+        std::size_t used = 0;
+        const double value = std::stod(word, &used);
+        if (used == word.size()) return value;
+      } catch (const std::exception&) {
+      }
+      throw InputError("\"" + word + "\" is not a number in the PLY body", where_);
+    }
+    const std::size_t size = ply_type_size(type, where_);
+    if (position_ + size > bytes_.size()) throw InputError("the PLY body ends early", where_);
+    unsigned char raw[8];
+    std::memcpy(raw, bytes_.data() + position_, size);
+    position_ += size;
+    const bool swap = (format_ == PlyFormat::big) == (std::endian::native == std::endian::little);
+    if (swap) std::reverse(raw, raw + size);
+    return decode(raw, type);
+  }
+
+ private:
+  static double decode(const unsigned char* raw, const std::string& type) {
+    const auto get = [raw](auto value) {
+      std::memcpy(&value, raw, sizeof value);
+      return double(value);
+    };
+    if (type == "char" || type == "int8") return get(std::int8_t{});
+    if (type == "uchar" || type == "uint8") return get(std::uint8_t{});
+    if (type == "short" || type == "int16") return get(std::int16_t{});
+    if (type == "ushort" || type == "uint16") return get(std::uint16_t{});
+    if (type == "int" || type == "int32") return get(std::int32_t{});
+    if (type == "uint" || type == "uint32") return get(std::uint32_t{});
+    if (type == "float" || type == "float32") return get(float{});
+    return get(double{});
+  }
+
+  const std::string& bytes_;
+  std::size_t position_;
+  PlyFormat format_;
+  std::string where_;
+  std::istringstream words_;
+};
+
+struct PlyHeader {
+  PlyFormat format = PlyFormat::ascii;
+  std::vector<PlyElement> elements;
+  std::size_t body_start = 0;
+};
+
+PlyHeader parse_ply_header(const std::string& bytes, const std::string& where) {
+  PlyHeader header;
+  std::size_t position = 0;
+  int line_number = 0;
+  bool have_format = false;
+  while (true) {
+    const std::size_t end = bytes.find('\n', position);
+    if (end == std::string::npos) throw InputError("the PLY header has no end_header line", where);
+    std::string line = bytes.substr(position, end - position);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    position = end + 1;
+    ++line_number;
+    const std::string at = fmt::format("{}: line {}", where, line_number);
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (line_number == 1) {
+      if (keyword != "ply") throw InputError("not a PLY file (the first line is not \"ply\")", at);
+    } else if (keyword == "format") {
+      std::string name;
+      words >> name;
+      if (name == "ascii") header.format = PlyFormat::ascii;
+      else if (name == "binary_little_endian") header.format = PlyFormat::little;
+      else if (name == "binary_big_endian") header.format = PlyFormat::big;
+      else throw InputError("unknown PLY format \"" + name + "\"", at);
+      have_format = true;
+    } else if (keyword == "element") {
+      PlyElement element;
+      long long count = -1;
+      if (!(words >> element.name >> count) || count < 0) throw InputError("malformed element line", at);
+      element.count = std::size_t(count);
+      header.elements.push_back(element);
+    } else if (keyword == "property") {
+      if (header.elements.empty()) throw InputError("property before any element", at);
+      PlyProperty property;
+      std::string type;
+      words >> type;
+      if (type == "list") {
+        words >> property.count_type >> property.type;
+        ply_type_size(property.count_type, at);
+      }
+      else property.type = type;
+      ply_type_size(property.type, at);
+      if (!(words >> property.name)) throw InputError("malformed property line", at);
+      header.elements.back().properties.push_back(property);
+    } else if (keyword == "end_header") {
+      if (!have_format) throw InputError("the PLY header has no format line", at);
+      header.body_start = position;
+      return header;
+    } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+      throw InputError("unknown PLY header keyword \"" + keyword + "\"", at);
+    }
+  }
+}
+
+/// Index of the property named one of `names` in `element`, or -1.
+int find_property(const PlyElement& element, std::initializer_list<const char*> names) {
+  for (std::size_t k = 0; k < element.properties.size(); ++k) {
+    for (const char* name : names) {
+      if (element.properties[k].name == name) return int(k);
+    }
+  }
+  return -1;
+}
+
+void read_ply_element(const PlyElement& element, PlyBody& body, TriangleMesh& mesh, const std::string& where) {
+  const bool is_vertex = element.name == "vertex";
+  const bool is_face = element.name == "face";
+  const int x = find_property(element, {"x"}), y = find_property(element, {"y"}), z = find_property(element, {"z"});
+  const int indices = find_property(element, {"vertex_indices", "vertex_index"});
+  if (is_vertex && (x < 0 || y < 0 || z < 0)) throw InputError("the vertex element lacks x, y or z", where);
+  std::vector<std::int64_t> face;
+  for (std::size_t item = 0; item < element.count; ++item) {
+    Vec3 point = Vec3::Zero();
+    for (std::size_t p = 0; p < element.properties.size(); ++p) {
+      const PlyProperty& property = element.properties[p];
+      if (property.count_type.empty()) {
+        const double value = body.next(property.type);
+        if (is_vertex && (int(p) == x || int(p) == y || int(p) == z)) point[int(p) == x ? 0 : int(p) == y ? 1 : 2] = value;
+        continue;
+      }
+      const double count = body.next(property.count_type);
+      if (!(count >= 0 && count < 1e6)) throw InputError(fmt::format("{} {}: bad list length", element.name, item), where);
+      face.assign(std::size_t(count), 0);
+      for (auto& index : face) index = std::int64_t(body.next(property.type));
+      if (!(is_face && int(p) == indices)) continue;
+      for (std::int64_t index : face) {
+        if (index < 0 || index >= std::int64_t(mesh.vertices.size()))
+          throw InputError(fmt::format("face {} has vertex index {} outside [0, {})", item, index, mesh.vertices.size()),
+                           where);
+      }
+      add_polygon(mesh, face);
+    }
+    if (is_vertex) {
+      if (!point.allFinite()) throw InputError(fmt::format("vertex {} is not finite", item), where);
+      mesh.vertices.push_back(point);
+    }
+  }
+}
+
+TriangleMesh read_ply(const std::string& bytes, const std::string& where) {
+  const PlyHeader header = parse_ply_header(bytes, where);
+  PlyBody body(bytes, header.body_start, header.format, where);
+  TriangleMesh mesh;
+  bool vertices_read = false;
+  for (const PlyElement& element : header.elements) {
+    if (element.name == "face" && !vertices_read)
+      throw InputError("the face element comes before the vertex element", where);
+    read_ply_element(element, body, mesh, where);
+    vertices_read = vertices_read || element.name == "vertex";
+  }
+  return mesh;
+}
+
+// ---------------------------------------------------------------- OBJ ---
+
+/// One OBJ face corner "i", "i/t", "i//n" or "i/t/n" → 0-based vertex index.
+std::int64_t obj_index(const std::string& corner, std::size_t vertex_count, const std::string& at) {
+  const std::string head = corner.substr(0, corner.find('/'));
+  long long index = 0;
+  std::size_t used = 0;
+  try {
+    index = std::stoll(head, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != head.size()) throw InputError("bad face corner \"" + corner + "\"", at);
+  const long long resolved = index < 0 ? (long long)vertex_count + index : index - 1;
+  if (index == 0 || resolved < 0 || resolved >= (long long)vertex_count)
+    throw InputError(fmt::format("face index {} outside [1, {}]", index, vertex_count), at);
+  return resolved;
+}
+
+TriangleMesh read_obj(const std::string& text, const std::string& where) {
+  TriangleMesh mesh;
+  std::istringstream lines(text);
+  std::string line;
+  std::vector<std::int64_t> face;
+  for (int line_number = 1; std::getline(lines, line); ++line_number) {
+    const std::string at = fmt::format("{}: line {}", where, line_number);
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "v") {
+      Vec3 point;
+      std::string word[3];
+      if (!(words >> word[0] >> word[1] >> word[2])) throw InputError("a vertex needs x y z", at);
+      for (int k = 0; k < 3; ++k) {
+        char* end = nullptr;
+        point[k] = std::strtod(word[k].c_str(), &end);
+        if (*end != '\0' || !std::isfinite(point[k])) throw InputError("\"" + word[k] + "\" is not a finite number", at);
+      }
+      mesh.vertices.push_back(point);
+    } else if (keyword == "f") {
+      face.clear();
+      for (std::string corner; words >> corner;) face.push_back(obj_index(corner, mesh.vertices.size(), at));
+      if (face.size() < 3) throw InputError("a face needs at least 3 corners", at);
+      add_polygon(mesh, face);
+    }
+  }
+  return mesh;
+}
+
+}  // namespace
+
+TriangleMesh read_mesh(const std::filesystem::path& path) {
+  const std::string extension = lower(path.extension().string());
+  if (extension != ".ply" && extension != ".obj")
+    throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply or .obj)", path.string());
+  const std::string bytes = read_whole_file(path);
+  return extension == ".ply" ? read_ply(bytes, path.string()) : read_obj(bytes, path.string());
+}
+
+}  // namespace skelconv

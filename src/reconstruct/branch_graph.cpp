@@ -1,0 +1,299 @@
+// Implementation of skelconv/reconstruct/branch_graph.hpp.
+#include "skelconv/reconstruct/branch_graph.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <queue>
+#include <set>
+
+#include "skelconv/errors.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+using Adjacency = std::vector<std::vector<std::pair<std::int32_t, double>>>;
+
+Adjacency medial_adjacency(const MedialGraph& graph) {
+  Adjacency adjacency(graph.vertices.size());
+  for (const MedialEdge& e : graph.edges) {
+    const double length = (graph.vertices[e.a].centre - graph.vertices[e.b].centre).norm();
+    adjacency[e.a].push_back({e.b, length});
+    adjacency[e.b].push_back({e.a, length});
+  }
+  return adjacency;
+}
+
+/// Graph distances from `source` (infinity where unreachable).
+std::vector<double> dijkstra(const Adjacency& adjacency, std::int32_t source) {
+  std::vector<double> distance(adjacency.size(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, std::int32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  distance[source] = 0.0;
+  queue.push({0.0, source});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v]) continue;
+    for (const auto& [w, length] : adjacency[v]) {
+      if (d + length < distance[w]) distance[w] = d + length, queue.push({d + length, w});
+    }
+  }
+  return distance;
+}
+
+/// Distances from an extremity of every connected piece: for each piece not
+/// reached yet, Dijkstra from its first vertex, then again from the vertex of
+/// the piece farthest from it among those whose ball is at least the median
+/// (`minimum_radius`): an extremity of the axis, not the tip of a thin sheet
+/// of small balls beside it, whose level sets would cut the tube obliquely.
+std::vector<double> distances_from_extremities(const Adjacency& adjacency, const MedialGraph& graph,
+                                               double minimum_radius) {
+  std::vector<double> result(adjacency.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t start = 0; start < adjacency.size(); ++start) {
+    if (std::isfinite(result[start])) continue;
+    const std::vector<double> first = dijkstra(adjacency, std::int32_t(start));
+    std::int32_t root = std::int32_t(start);
+    for (std::size_t v = 0; v < first.size(); ++v) {
+      if (std::isfinite(first[v]) && first[v] > first[root] && graph.vertices[v].radius >= minimum_radius)
+        root = std::int32_t(v);
+    }
+    const std::vector<double> second = dijkstra(adjacency, root);
+    for (std::size_t v = 0; v < second.size(); ++v) {
+      if (std::isfinite(second[v])) result[v] = second[v];
+    }
+  }
+  return result;
+}
+
+std::int32_t find_root(std::vector<std::int32_t>& parent, std::int32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+/// Node (x, y, z, r) of a bin piece: mean centre and radius of its core balls.
+Vec4 piece_node(const MedialGraph& graph, const std::vector<std::int32_t>& members, double core_fraction) {
+  double largest = 0.0;
+  for (std::int32_t v : members) largest = std::max(largest, graph.vertices[v].radius);
+  Vec4 sum = Vec4::Zero();
+  int count = 0;
+  for (std::int32_t v : members) {
+    const MedialVertex& m = graph.vertices[v];
+    if (m.radius < core_fraction * largest) continue;
+    sum += Vec4(m.centre.x(), m.centre.y(), m.centre.z(), m.radius);
+    ++count;
+  }
+  return sum / count;
+}
+
+/// Node degrees and, per node, its incident neighbours in edge order.
+std::vector<std::vector<std::int32_t>> neighbours(const CurveSkeleton& skeleton) {
+  std::vector<std::vector<std::int32_t>> result(skeleton.nodes.size());
+  for (const auto& [a, b] : skeleton.edges) result[a].push_back(b), result[b].push_back(a);
+  return result;
+}
+
+/// The union-find pieces as lists of vertices, numbered by their first
+/// vertex (deterministic).
+std::vector<std::vector<std::int32_t>> bin_pieces(const MedialGraph& graph, std::vector<std::int32_t>& parent) {
+  std::map<std::int32_t, std::int32_t> piece_of_root;
+  std::vector<std::vector<std::int32_t>> members;
+  for (std::size_t v = 0; v < graph.vertices.size(); ++v) {
+    const auto [it, added] = piece_of_root.emplace(find_root(parent, std::int32_t(v)), std::int32_t(members.size()));
+    if (added) members.emplace_back();
+    members[it->second].push_back(std::int32_t(v));
+  }
+  return members;
+}
+
+/// Merges pieces of the same bin whose node balls overlap (centre distance
+/// < sum of radii): a tube sampled coarsely can split a level set into
+/// pieces side by side, which would make small cycles ("bubbles") in the
+/// curve skeleton; pieces of different branches are farther apart.
+template <class Bin>
+void merge_overlapping_pieces(const MedialGraph& graph, double core_fraction, const Bin& bin,
+                              std::vector<std::vector<std::int32_t>>& members) {
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t i = 0; i < members.size() && !merged; ++i) {
+      const Vec4 a = piece_node(graph, members[i], core_fraction);
+      for (std::size_t j = i + 1; j < members.size() && !merged; ++j) {
+        if (bin(members[i][0]) != bin(members[j][0])) continue;
+        const Vec4 b = piece_node(graph, members[j], core_fraction);
+        if ((a.head<3>() - b.head<3>()).norm() >= a.w() + b.w()) continue;
+        members[i].insert(members[i].end(), members[j].begin(), members[j].end());
+        members.erase(members.begin() + std::ptrdiff_t(j));
+        merged = true;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+double polyline_length(const std::vector<Vec4>& points) {
+  double length = 0.0;
+  for (std::size_t k = 1; k < points.size(); ++k) length += (points[k].head<3>() - points[k - 1].head<3>()).norm();
+  return length;
+}
+
+CurveSkeleton level_set_skeleton(const MedialGraph& graph, const LevelSetOptions& options) {
+  if (!(options.bin_width > 0.0)) throw InputError("must be > 0", "bin_width");
+  if (!(options.core_fraction > 0.0 && options.core_fraction <= 1.0)) throw InputError("must be in (0, 1]", "core_fraction");
+  const Adjacency adjacency = medial_adjacency(graph);
+  std::vector<double> radii;
+  for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
+  std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
+  const std::vector<double> distance = distances_from_extremities(adjacency, graph, radii[radii.size() / 2]);
+  const auto bin = [&](std::int32_t v) { return std::int64_t(std::floor(distance[v] / options.bin_width)); };
+
+  std::vector<std::int32_t> parent(graph.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const MedialEdge& e : graph.edges) {
+    if (bin(e.a) == bin(e.b)) parent[find_root(parent, e.a)] = find_root(parent, e.b);
+  }
+  std::vector<std::vector<std::int32_t>> members = bin_pieces(graph, parent);
+  merge_overlapping_pieces(graph, options.core_fraction, bin, members);
+  std::vector<std::int32_t> piece(graph.vertices.size());
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    for (std::int32_t v : members[k]) piece[v] = std::int32_t(k);
+  }
+  CurveSkeleton skeleton;
+  for (const auto& m : members) skeleton.nodes.push_back(piece_node(graph, m, options.core_fraction));
+  std::set<std::pair<std::int32_t, std::int32_t>> edges;
+  for (const MedialEdge& e : graph.edges) {
+    const std::int32_t a = piece[e.a], b = piece[e.b];
+    if (a != b) edges.insert({std::min(a, b), std::max(a, b)});
+  }
+  skeleton.edges.assign(edges.begin(), edges.end());
+  return skeleton;
+}
+
+BranchGraph extract_branches(const CurveSkeleton& skeleton) {
+  const auto next = neighbours(skeleton);
+  BranchGraph result;
+  std::set<std::pair<std::int32_t, std::int32_t>> used;  // edges walked, both directions
+  const auto mark = [&](std::int32_t a, std::int32_t b) { used.insert({a, b}), used.insert({b, a}); };
+  const auto to_point = [&](std::int32_t n) { return skeleton.nodes[n]; };
+  const auto walk = [&](std::int32_t start, std::int32_t first_step) {
+    Branch branch;
+    branch.first_node = start;
+    branch.points.push_back(to_point(start));
+    std::int32_t previous = start, current = first_step;
+    mark(start, first_step);
+    while (true) {
+      branch.points.push_back(to_point(current));
+      if (next[current].size() != 2 || current == start) break;
+      const std::int32_t following = next[current][0] == previous ? next[current][1] : next[current][0];
+      mark(current, following);
+      branch.interior_nodes.push_back(current);
+      previous = current, current = following;
+    }
+    branch.last_node = current;
+    result.branches.push_back(std::move(branch));
+  };
+  for (std::size_t n = 0; n < skeleton.nodes.size(); ++n) {
+    result.ends += next[n].size() == 1;
+    result.junctions += next[n].size() >= 3;
+    if (next[n].size() == 2) continue;
+    for (std::int32_t m : next[n]) {
+      if (!used.count({std::int32_t(n), m})) walk(std::int32_t(n), m);
+    }
+  }
+  for (std::size_t n = 0; n < skeleton.nodes.size(); ++n) {  // cycles of regular nodes
+    if (next[n].size() == 2 && !used.count({std::int32_t(n), next[n][0]})) walk(std::int32_t(n), next[n][0]);
+  }
+  return result;
+}
+
+namespace {
+
+/// Rebuilds `skeleton` without the dropped nodes, with node `from` merged
+/// into `into` (pass -1 for no merge), without self-edges or repeated edges.
+void rebuild(CurveSkeleton& skeleton, const std::vector<bool>& drop, std::int32_t from, std::int32_t into) {
+  std::vector<std::int32_t> index(skeleton.nodes.size(), -1);
+  CurveSkeleton kept;
+  for (std::size_t n = 0; n < skeleton.nodes.size(); ++n) {
+    if (!drop[n] && std::int32_t(n) != from) index[n] = std::int32_t(kept.nodes.size()), kept.nodes.push_back(skeleton.nodes[n]);
+  }
+  if (from >= 0) index[from] = index[into];
+  std::set<std::pair<std::int32_t, std::int32_t>> edges;
+  for (const auto& [a, b] : skeleton.edges) {
+    if (index[a] >= 0 && index[b] >= 0 && index[a] != index[b])
+      edges.insert({std::min(index[a], index[b]), std::max(index[a], index[b])});
+  }
+  kept.edges.assign(edges.begin(), edges.end());
+  skeleton = std::move(kept);
+}
+
+/// Marks the interior nodes of `branch` (all but its two end nodes).
+void mark_interior(const Branch& branch, const CurveSkeleton&, std::vector<bool>& drop) {
+  for (std::int32_t node : branch.interior_nodes) drop[node] = true;
+}
+
+/// One contraction of the shortest branch joining two junctions (or a loop
+/// at one junction) shorter than `factor` × the larger end radius. Returns
+/// false when there is none.
+bool contract_one_bubble(CurveSkeleton& skeleton, double factor) {
+  const auto next = neighbours(skeleton);
+  const BranchGraph branches = extract_branches(skeleton);
+  const Branch* shortest = nullptr;
+  for (const Branch& b : branches.branches) {
+    if (next[b.first_node].size() < 3 || next[b.last_node].size() < 3) continue;
+    const double limit = factor * std::max(skeleton.nodes[b.first_node].w(), skeleton.nodes[b.last_node].w());
+    if (polyline_length(b.points) >= limit) continue;
+    if (shortest == nullptr || polyline_length(b.points) < polyline_length(shortest->points)) shortest = &b;
+  }
+  if (shortest == nullptr) return false;
+  std::vector<bool> drop(skeleton.nodes.size(), false);
+  mark_interior(*shortest, skeleton, drop);
+  if (shortest->first_node == shortest->last_node) {
+    rebuild(skeleton, drop, -1, -1);
+    return true;
+  }
+  Vec4& into = skeleton.nodes[shortest->first_node];
+  const Vec4& from = skeleton.nodes[shortest->last_node];
+  into = Vec4((into.x() + from.x()) / 2, (into.y() + from.y()) / 2, (into.z() + from.z()) / 2, std::max(into.w(), from.w()));
+  rebuild(skeleton, drop, shortest->last_node, shortest->first_node);
+  return true;
+}
+
+/// One pass of spur removal (see remove_spurs); returns the number removed.
+std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor) {
+  const auto next = neighbours(skeleton);
+  const BranchGraph branches = extract_branches(skeleton);
+  // The shortest spur at each junction (one per junction per pass, so a
+  // junction never loses all its branches at once).
+  std::map<std::int32_t, const Branch*> shortest;
+  for (const Branch& b : branches.branches) {
+    const bool first_end = next[b.first_node].size() == 1, last_end = next[b.last_node].size() == 1;
+    if (first_end == last_end) continue;
+    const std::int32_t junction = first_end ? b.last_node : b.first_node;
+    if (polyline_length(b.points) >= spur_factor * skeleton.nodes[junction].w()) continue;
+    auto [it, added] = shortest.emplace(junction, &b);
+    if (!added && polyline_length(b.points) < polyline_length(it->second->points)) it->second = &b;
+  }
+  std::vector<bool> drop(skeleton.nodes.size(), false);
+  for (const auto& [junction, b] : shortest) {
+    mark_interior(*b, skeleton, drop);
+    drop[b->first_node == junction ? b->last_node : b->first_node] = true;
+  }
+  if (!shortest.empty()) rebuild(skeleton, drop, -1, -1);
+  return shortest.size();
+}
+
+}  // namespace
+
+std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor) {
+  std::size_t removed = 0;
+  while (true) {
+    bool changed = false;
+    while (contract_one_bubble(skeleton, spur_factor)) changed = true, ++removed;
+    const std::size_t spurs = remove_spurs_once(skeleton, spur_factor);
+    removed += spurs;
+    if (!changed && spurs == 0) return removed;
+  }
+}
+
+}  // namespace skelconv::reconstruct

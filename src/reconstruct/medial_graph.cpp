@@ -1,0 +1,97 @@
+// Implementation of skelconv/reconstruct/medial_graph.hpp. CGAL is confined
+// to this translation unit (its own OBJECT library, src/CMakeLists.txt).
+#include "skelconv/reconstruct/medial_graph.hpp"
+
+#include <map>
+#include <set>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <fmt/format.h>
+
+#include "skelconv/errors.hpp"
+#include "skelconv/mesh/mesh_topology.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::int32_t, Kernel>;
+using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+
+void check_surface(const TriangleMesh& surface, std::size_t minimum_samples) {
+  std::set<std::array<double, 3>> distinct;
+  for (const Vec3& v : surface.vertices) distinct.insert({v.x(), v.y(), v.z()});
+  if (distinct.size() < minimum_samples) {
+    throw InputError(fmt::format("{} distinct points; a skeleton needs at least {}", distinct.size(), minimum_samples));
+  }
+  if (surface.triangles.empty()) {
+    throw InputError("the mesh has no faces: the inside of the shape is needed (give a closed mesh)");
+  }
+  if (!mesh_topology(surface).closed) {
+    throw InputError("the mesh is not closed (an edge is not shared by exactly two faces): its inside is undefined");
+  }
+}
+
+SurfaceMesh to_surface_mesh(const TriangleMesh& surface) {
+  SurfaceMesh mesh;
+  std::vector<SurfaceMesh::Vertex_index> index;
+  for (const Vec3& v : surface.vertices) index.push_back(mesh.add_vertex(Point(v.x(), v.y(), v.z())));
+  for (const auto& t : surface.triangles) mesh.add_face(index[t[0]], index[t[1]], index[t[2]]);
+  return mesh;
+}
+
+}  // namespace
+
+MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples) {
+  check_surface(surface, minimum_samples);
+  const SurfaceMesh mesh = to_surface_mesh(surface);
+  const CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel> side(mesh);
+
+  MedialGraph graph;
+  graph.samples = surface.vertices;
+  std::vector<std::pair<Point, std::int32_t>> points;
+  for (std::size_t k = 0; k < surface.vertices.size(); ++k) {
+    const Vec3& v = surface.vertices[k];
+    points.emplace_back(Point(v.x(), v.y(), v.z()), std::int32_t(k));
+  }
+  const Delaunay delaunay(points.begin(), points.end());
+
+  // Inner Voronoi vertices, numbered in the triangulation's cell order (a
+  // deterministic order for the same input).
+  std::map<Delaunay::Cell_handle, std::int32_t> number;  // lookup only: never iterated
+  std::vector<Delaunay::Cell_handle> inner_cells;
+  for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end(); ++cell) {
+    const Point centre = delaunay.dual(cell);
+    if (side(centre) != CGAL::ON_BOUNDED_SIDE) continue;
+    MedialVertex vertex;
+    vertex.centre = Vec3(centre.x(), centre.y(), centre.z());
+    for (int k = 0; k < 4; ++k) vertex.samples[k] = cell->vertex(k)->info();
+    vertex.radius = (vertex.centre - surface.vertices[vertex.samples[0]]).norm();
+    number.emplace(cell, std::int32_t(graph.vertices.size()));
+    inner_cells.push_back(cell);
+    graph.vertices.push_back(vertex);
+  }
+  for (std::int32_t a = 0; a < std::int32_t(inner_cells.size()); ++a) {
+    const Delaunay::Cell_handle cell = inner_cells[a];
+    for (int k = 0; k < 4; ++k) {
+      const auto found = number.find(cell->neighbor(k));
+      if (found == number.end() || found->second < a) continue;  // each edge once
+      MedialEdge edge{a, found->second, {}};
+      for (int j = 0, n = 0; j < 4; ++j) {
+        if (j != k) edge.facet[n++] = cell->vertex(j)->info();
+      }
+      graph.edges.push_back(edge);
+    }
+  }
+  return graph;
+}
+
+}  // namespace skelconv::reconstruct

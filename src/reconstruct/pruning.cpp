@@ -1,0 +1,104 @@
+// Implementation of skelconv/reconstruct/pruning.hpp.
+#include "skelconv/reconstruct/pruning.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace skelconv::reconstruct {
+namespace {
+
+std::int32_t find_root(std::vector<std::int32_t>& parent, std::int32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+/// Union-find roots of the vertices kept (-1 for removed ones), joined by the
+/// edges between two kept vertices; `keep` selects.
+std::vector<std::int32_t> pieces(const MedialGraph& graph, const std::vector<bool>& keep) {
+  std::vector<std::int32_t> parent(graph.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const MedialEdge& e : graph.edges) {
+    if (keep[e.a] && keep[e.b]) parent[find_root(parent, e.a)] = find_root(parent, e.b);
+  }
+  std::vector<std::int32_t> root(graph.vertices.size(), -1);
+  for (std::size_t v = 0; v < root.size(); ++v) {
+    if (keep[v]) root[v] = find_root(parent, std::int32_t(v));
+  }
+  return root;
+}
+
+std::size_t count_pieces(const std::vector<std::int32_t>& root) {
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < root.size(); ++v) count += root[v] == std::int32_t(v);
+  return count;
+}
+
+/// Keeps the vertices with keep[v], renumbered in their order, and the edges
+/// between two of them.
+void compact(MedialGraph& graph, const std::vector<bool>& keep) {
+  std::vector<std::int32_t> new_index(graph.vertices.size(), -1);
+  std::vector<MedialVertex> vertices;
+  for (std::size_t v = 0; v < graph.vertices.size(); ++v) {
+    if (!keep[v]) continue;
+    new_index[v] = std::int32_t(vertices.size());
+    vertices.push_back(graph.vertices[v]);
+  }
+  std::vector<MedialEdge> edges;
+  for (MedialEdge e : graph.edges) {
+    if (new_index[e.a] < 0 || new_index[e.b] < 0) continue;
+    e.a = new_index[e.a], e.b = new_index[e.b];
+    edges.push_back(e);
+  }
+  graph.vertices = std::move(vertices);
+  graph.edges = std::move(edges);
+}
+
+}  // namespace
+
+double pruning_angle(const Vec3& p_minus, const Vec3& p_plus, double rho) {
+  return 2.0 * std::asin(std::min(1.0, (p_plus - p_minus).norm() / (2.0 * rho)));
+}
+
+double vertex_angle(const MedialGraph& graph, std::size_t v) {
+  const MedialVertex& m = graph.vertices[v];
+  double longest = -1.0;
+  Vec3 p_minus = Vec3::Zero(), p_plus = Vec3::Zero();
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) {
+      const Vec3& p = graph.samples[m.samples[i]];
+      const Vec3& q = graph.samples[m.samples[j]];
+      if ((p - q).norm() > longest) longest = (p - q).norm(), p_minus = p, p_plus = q;
+    }
+  }
+  return pruning_angle(p_minus, p_plus, m.radius);
+}
+
+PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double minimum_piece) {
+  const std::size_t n = graph.vertices.size();
+  PruningReport report;
+  std::vector<bool> keep(n);
+  for (std::size_t v = 0; v < n; ++v) keep[v] = vertex_angle(graph, v) >= threshold;
+  report.vertices_removed = n - std::size_t(std::count(keep.begin(), keep.end(), true));
+  // What went, as connected pieces of the removed vertices.
+  std::vector<bool> removed(n);
+  for (std::size_t v = 0; v < n; ++v) removed[v] = !keep[v];
+  report.branches_removed = count_pieces(pieces(graph, removed));
+  // Islands: pieces of the kept graph much smaller than the largest.
+  const std::vector<std::int32_t> root = pieces(graph, keep);
+  std::map<std::int32_t, std::size_t> size;
+  for (std::int32_t r : root) {
+    if (r >= 0) ++size[r];
+  }
+  std::size_t largest = 0;
+  for (const auto& [r, s] : size) largest = std::max(largest, s);
+  for (std::size_t v = 0; v < n; ++v) {
+    if (keep[v] && double(size[root[v]]) < minimum_piece * double(largest)) keep[v] = false;
+  }
+  for (const auto& [r, s] : size) report.small_pieces_removed += double(s) < minimum_piece * double(largest);
+  compact(graph, keep);
+  return report;
+}
+
+}  // namespace skelconv::reconstruct

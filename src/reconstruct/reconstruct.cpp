@@ -1,0 +1,167 @@
+// Implementation of skelconv/reconstruct/reconstruct.hpp.
+#include "skelconv/reconstruct/reconstruct.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "skelconv/errors.hpp"
+#include "skelconv/reconstruct/bspline.hpp"
+#include "skelconv/reconstruct/medial_graph.hpp"
+#include "skelconv/reconstruct/pavlidis.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+void check_options(const ReconstructOptions& o) {
+  if (!(o.prune_angle_degrees >= 0.0 && o.prune_angle_degrees < 180.0))
+    throw InputError(fmt::format("must be in [0, 180) degrees, got {}", o.prune_angle_degrees), "--prune-angle");
+  if (!(o.epsilon >= 0.0 && o.epsilon < 1.0))
+    throw InputError(fmt::format("must be in [0, 1), got {}", o.epsilon), "--epsilon");
+}
+
+Stage make_stage(std::string name, const BranchGraph& graph) {
+  Stage stage{std::move(name), graph.branches, graph.ends, graph.junctions, 0};
+  for (const Branch& b : stage.branches) stage.points += b.points.size();
+  return stage;
+}
+
+/// The same branches with `transform` applied to each polyline.
+template <class Transform>
+Stage transformed(const Stage& from, std::string name, Transform transform) {
+  Stage stage = from;
+  stage.name = std::move(name);
+  stage.points = 0;
+  for (Branch& b : stage.branches) b.points = transform(b.points), stage.points += b.points.size();
+  return stage;
+}
+
+/// The largest extent of the bounding box of every point of `stage`.
+double skeleton_size(const Stage& stage) {
+  Vec4 lo = Vec4::Constant(INFINITY), hi = -lo;
+  for (const Branch& b : stage.branches) {
+    for (const Vec4& p : b.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  }
+  return stage.branches.empty() ? 0.0 : (hi - lo).head<3>().maxCoeff();
+}
+
+/// The curve skeleton and branches of `graph` (after optional spur removal).
+Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::string name, std::size_t* spurs) {
+  if (graph.vertices.empty()) throw InputError("no inner Voronoi vertex is left: the shape has no skeleton (too few samples, or the prune angle too large)");
+  std::vector<double> radii;
+  for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
+  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+  CurveSkeleton curve = level_set_skeleton(graph, {o.bin_factor * radii[radii.size() / 2], 0.95});
+  if (spurs != nullptr) *spurs = remove_spurs(curve, o.spur_factor);
+  return make_stage(std::move(name), extract_branches(curve));
+}
+
+void say(const ReconstructOptions& o, const std::string& line) {
+  if (o.progress) o.progress(line);
+}
+
+}  // namespace
+
+Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& o) {
+  check_options(o);
+  Reconstruction result;
+  MedialGraph graph = medial_graph(surface);
+  result.samples = graph.samples.size();
+  result.medial_vertices = graph.vertices.size();
+  result.medial_edges = graph.edges.size();
+  say(o, fmt::format("medial graph: {} samples, {} inner Voronoi vertices, {} edges", result.samples,
+                     result.medial_vertices, result.medial_edges));
+  result.stages.push_back(branches_of(graph, o, "raw", nullptr));
+  result.pruning = prune_medial_graph(graph, o.prune_angle_degrees * std::numbers::pi / 180.0);
+  say(o, fmt::format("pruned: {} vertices ({} pieces) below the angle, {} small islands removed", result.pruning.vertices_removed,
+                     result.pruning.branches_removed, result.pruning.small_pieces_removed));
+  result.stages.push_back(branches_of(graph, o, "pruned", &result.spurs_removed));
+  const Stage pruned = result.stages.back();  // a copy: stages grows below
+  say(o, fmt::format("branches: {} ({} ends, {} junctions, {} spurs removed)", pruned.branches.size(), pruned.ends,
+                     pruned.junctions, result.spurs_removed));
+  result.tolerance = o.epsilon * skeleton_size(pruned);
+  const double tolerance = result.tolerance;
+  result.stages.push_back(transformed(pruned, "simplified", [tolerance](const std::vector<Vec4>& p) {
+    return pavlidis_split(p, tolerance, PavlidisDimension::space_and_radius);
+  }));
+  result.stages.push_back(transformed(pruned, "simplified_3d", [tolerance](const std::vector<Vec4>& p) {
+    return pavlidis_split(p, tolerance, PavlidisDimension::space);
+  }));
+  const int samples = o.samples_per_span;
+  const Stage simplified = result.stages[2];
+  result.stages.push_back(transformed(simplified, "smoothed", [samples](const std::vector<Vec4>& p) {
+    return smooth_bspline(p, samples);
+  }));
+  say(o, fmt::format("simplified: {} points (3-D only: {}), smoothed: {} points", result.stages[2].points,
+                     result.stages[3].points, result.stages[4].points));
+  return result;
+}
+
+namespace {
+
+/// The branches with every free end extended by `factor` × its radius along
+/// the end tangent. A node is free when it ends exactly one branch end (a
+/// closed branch has none).
+std::vector<Branch> with_extended_ends(std::vector<Branch> branches, double factor) {
+  std::map<std::int32_t, int> uses;
+  for (const Branch& b : branches) ++uses[b.first_node], ++uses[b.last_node];
+  const auto extension = [factor](const Vec4& end, const Vec4& inner) {
+    const Vec3 tangent = end.head<3>() - inner.head<3>();
+    if (tangent.norm() == 0.0) return end;
+    const Vec3 tip = end.head<3>() + factor * end.w() * tangent.normalized();
+    return Vec4(tip.x(), tip.y(), tip.z(), end.w());
+  };
+  for (Branch& b : branches) {
+    if (factor <= 0.0 || b.points.size() < 2 || b.first_node == b.last_node) continue;
+    if (uses[b.last_node] == 1) b.points.push_back(extension(b.points.back(), b.points[b.points.size() - 2]));
+    if (uses[b.first_node] == 1) b.points.insert(b.points.begin(), extension(b.points.front(), b.points[1]));
+  }
+  return branches;
+}
+
+}  // namespace
+
+std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) {
+  std::string text = "{\"iso\": 1, \"primitives\": [\n  {\"blend\": \"sum\", \"children\": [";
+  const std::string kernel = fmt::format(R"("kernel": {{"family": "cauchy", "degree": {}, "sigma": {:.17g}}})",
+                                         o.kernel_degree, o.kernel_sigma);
+  bool first = true;
+  for (const Branch& b : with_extended_ends(stage.branches, o.end_extension)) {
+    for (std::size_t k = 1; k < b.points.size(); ++k) {
+      const Vec4& p = b.points[k - 1];
+      const Vec4& q = b.points[k];
+      if (p.head<3>() == q.head<3>()) continue;  // a repeated point: no segment
+      text += fmt::format("{}\n    {{\"type\": \"scalis_segment\", \"a\": [{:.17g}, {:.17g}, {:.17g}], "
+                          "\"b\": [{:.17g}, {:.17g}, {:.17g}], \"radius\": [{:.17g}, {:.17g}], {}}}",
+                          first ? "" : ",", p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), p.w(), q.w(), kernel);
+      first = false;
+    }
+  }
+  return text + "]}]}\n";
+}
+
+}  // namespace skelconv::reconstruct
+
+#include "skelconv/mesh/mesh_iso_surface.hpp"
+#include "skelconv/skeleton_file.hpp"
+
+namespace skelconv::reconstruct {
+
+SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                              double size, TriangleMesh* mesh_out) {
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
+  Vec3 lo = surface.vertices.front(), hi = lo;
+  for (const Vec3& v : surface.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  MeshOptions mesh_options;
+  mesh_options.iso = skeleton.iso();
+  mesh_options.method = MeshMethod::grid;
+  mesh_options.size = size > 0.0 ? size : (hi - lo).norm() / 100.0;
+  const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), mesh_options);
+  if (mesh_out != nullptr) *mesh_out = mesh;
+  return surface_distance(surface, mesh);
+}
+
+}  // namespace skelconv::reconstruct

@@ -1,0 +1,67 @@
+// Implementation of skelconv/reconstruct/surface_distance.hpp (CGAL TU).
+#include "skelconv/reconstruct/surface_distance.hpp"
+
+#include <cmath>
+#include <iterator>
+#include <vector>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "skelconv/errors.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+SurfaceMesh to_surface_mesh(const TriangleMesh& surface) {
+  if (surface.triangles.empty()) throw InputError("a mesh to compare has no triangles");
+  SurfaceMesh mesh;
+  std::vector<SurfaceMesh::Vertex_index> index;
+  for (const Vec3& v : surface.vertices) index.push_back(mesh.add_vertex(Point(v.x(), v.y(), v.z())));
+  for (const auto& t : surface.triangles) mesh.add_face(index[t[0]], index[t[1]], index[t[2]]);
+  return mesh;
+}
+
+/// Sum of squared distances from samples of `from` to `to`, and their count.
+std::pair<double, std::size_t> squared_distances(const SurfaceMesh& from, const SurfaceMesh& to, double density) {
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+  Tree tree(faces(to).first, faces(to).second, to);
+  tree.accelerate_distance_queries();
+  std::vector<Point> samples;
+  PMP::sample_triangle_mesh(from, std::back_inserter(samples),
+                            CGAL::parameters::number_of_points_per_area_unit(density).random_seed(0));
+  double sum = 0.0;
+  for (const Point& p : samples) sum += tree.squared_distance(p);
+  return {sum, samples.size()};
+}
+
+}  // namespace
+
+SurfaceDistance surface_distance(const TriangleMesh& a, const TriangleMesh& b, double samples_per_area) {
+  const SurfaceMesh ma = to_surface_mesh(a), mb = to_surface_mesh(b);
+  Vec3 lo = a.vertices.front(), hi = lo;
+  for (const Vec3& v : a.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  SurfaceDistance result;
+  result.diagonal = (hi - lo).norm();
+  const double density = samples_per_area / (result.diagonal * result.diagonal);
+  const auto options = CGAL::parameters::number_of_points_per_area_unit(density).random_seed(0);
+  const double ab = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(ma, mb, options);
+  const double ba = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(mb, ma, options);
+  result.hausdorff = std::max(ab, ba);
+  const auto [sum_ab, n_ab] = squared_distances(ma, mb, density);
+  const auto [sum_ba, n_ba] = squared_distances(mb, ma, density);
+  result.rms = std::sqrt((sum_ab + sum_ba) / double(n_ab + n_ba));
+  return result;
+}
+
+}  // namespace skelconv::reconstruct

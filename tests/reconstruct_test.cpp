@@ -1,0 +1,198 @@
+// Unit tests of the reconstruction algorithms (include/skelconv/reconstruct/,
+// docs/reconstruction.md) on small cases whose answers are derived by hand
+// in the comments, and of the mesh reader on files written by write_mesh and
+// by hand.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "skelconv/errors.hpp"
+#include "skelconv/mesh/mesh_reader.hpp"
+#include "skelconv/reconstruct/branch_graph.hpp"
+#include "skelconv/reconstruct/bspline.hpp"
+#include "skelconv/reconstruct/pavlidis.hpp"
+#include "skelconv/reconstruct/pruning.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+// An equilateral triangle v, p⁻, p⁺ of side 1: |vp±| = ρ = 1 and
+// |p⁻p⁺| = 1, so θ = 2 asin(1/2) = π/3 (the triangle's angle at v).
+TEST(PruningAngle, EquilateralTriangleIsSixtyDegrees) {
+  const Vec3 v(0, 0, 0), p_minus(1, 0, 0), p_plus(0.5, std::sqrt(3.0) / 2, 0);
+  EXPECT_NEAR(pruning_angle(p_minus, p_plus, (p_minus - v).norm()), std::numbers::pi / 3, 1e-15);
+}
+
+// A right isosceles triangle at v: |p⁻p⁺| = √2 ρ, θ = 2 asin(√2/2) = π/2;
+// a diameter gives π.
+TEST(PruningAngle, RightAngleAndDiameter) {
+  EXPECT_NEAR(pruning_angle(Vec3(2, 0, 0), Vec3(0, 2, 0), 2.0), std::numbers::pi / 2, 1e-15);
+  EXPECT_NEAR(pruning_angle(Vec3(-1, 0, 0), Vec3(1, 0, 0), 1.0), std::numbers::pi, 1e-15);
+}
+
+// The vertex angle uses the longest edge of the tetrahedron: a ball of
+// radius 1 at the origin touching (±1, 0, 0) and two close samples sees a
+// diameter, θ = π, and is kept by any threshold below π; a ball touching
+// four samples within 0.1 of each other sees θ ≤ 2 asin(0.05 × √2) ≈ 8°.
+TEST(Pruning, VertexAngleAndRemoval) {
+  MedialGraph graph;
+  graph.samples = {Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0.995, 0.0998749),
+                   Vec3(0.0998749, 0.995, 0), Vec3(0, 0.99, 0.14)};
+  graph.vertices.push_back({Vec3::Zero(), 1.0, {0, 1, 2, 3}});
+  graph.vertices.push_back({Vec3::Zero(), 1.0, {2, 3, 4, 5}});
+  graph.edges.push_back({0, 1, {2, 3, 0}});
+  EXPECT_NEAR(vertex_angle(graph, 0), std::numbers::pi, 1e-12);
+  EXPECT_LT(vertex_angle(graph, 1), 10.0 * std::numbers::pi / 180);
+  const PruningReport report = prune_medial_graph(graph, std::numbers::pi / 4);
+  EXPECT_EQ(report.vertices_removed, 1u);
+  ASSERT_EQ(graph.vertices.size(), 1u);
+  EXPECT_EQ(graph.vertices[0].samples[0], 0);
+  EXPECT_TRUE(graph.edges.empty());
+}
+
+// Pavlidis on (0,0) (1,0.1) (2,−0.1) (3,0.5) (4,0), radius 0 everywhere.
+// Chord (0,0)–(4,0): distances 0.1, 0.1, 0.5 → the split keeps (3,0.5) when
+// the tolerance is below 0.5. Then on (0,0)…(3,0.5): the chord direction is
+// (6, 1)/√37; distances |0.1·6 − 1·1|/√37 = 0.4/√37 ≈ 0.0658 for (1,0.1) and
+// |−0.1·6 − 2|/√37 = 2.6/√37 ≈ 0.4274 for (2,−0.1).
+std::vector<Vec4> five_points() {
+  return {Vec4(0, 0, 0, 0), Vec4(1, 0.1, 0, 0), Vec4(2, -0.1, 0, 0), Vec4(3, 0.5, 0, 0), Vec4(4, 0, 0, 0)};
+}
+
+TEST(Pavlidis, FivePointsAtThreeTolerances) {
+  EXPECT_EQ(pavlidis_split(five_points(), 0.6).size(), 2u);  // 0.5 ≤ 0.6: only the ends
+  const std::vector<Vec4> middle = pavlidis_split(five_points(), 0.45);
+  ASSERT_EQ(middle.size(), 3u);  // (3, 0.5) kept; 0.4274 ≤ 0.45 on the left half
+  EXPECT_EQ(middle[1], five_points()[3]);
+  const std::vector<Vec4> fine = pavlidis_split(five_points(), 0.05);
+  EXPECT_EQ(fine.size(), 5u);  // 0.0658 > 0.05: every point kept
+}
+
+// The radius counts in 4-D and not in 3-D: a straight line whose middle
+// point has radius 1 more than its ends.
+TEST(Pavlidis, RadiusIsADimension) {
+  const std::vector<Vec4> line = {Vec4(0, 0, 0, 1), Vec4(1, 0, 0, 2), Vec4(2, 0, 0, 1)};
+  EXPECT_EQ(pavlidis_split(line, 0.5, PavlidisDimension::space_and_radius).size(), 3u);
+  EXPECT_EQ(pavlidis_split(line, 0.5, PavlidisDimension::space).size(), 2u);
+}
+
+// Q(u) = Σ B_k(u) V_k with the uniform cubic basis: at u = 1/2 the weights
+// are 1/48, 23/48, 23/48, 1/48. With V = 0, 6, 12, 48 (in x):
+// (0 + 138 + 276 + 48)/48 = 462/48 = 9.625.
+TEST(BSpline, SpanValueAtOneHalf) {
+  const Vec4 q = bspline_span_point(Vec4(0, 0, 0, 0), Vec4(6, 0, 0, 1), Vec4(12, 0, 0, 1), Vec4(48, 0, 0, 1), 0.5);
+  EXPECT_DOUBLE_EQ(q.x(), 9.625);
+  EXPECT_DOUBLE_EQ(q.w(), 47.0 / 48.0);  // weights of the three 1s: 23 + 23 + 1
+}
+
+// Tripled ends interpolate; a straight, evenly spaced control polygon is
+// reproduced as a straight line (the basis reproduces linear functions).
+TEST(BSpline, TripledEndsInterpolateAndLinesStayLines) {
+  const std::vector<Vec4> control = {Vec4(0, 0, 0, 1), Vec4(1, 1, 0, 1), Vec4(3, 0, 1, 2)};
+  const std::vector<Vec4> curve = smooth_bspline(control, 4);
+  EXPECT_EQ(curve.front(), control.front());
+  EXPECT_EQ(curve.back(), control.back());
+  const std::vector<Vec4> line = smooth_bspline({Vec4(0, 0, 0, 1), Vec4(1, 0, 0, 1), Vec4(2, 0, 0, 1)}, 3);
+  for (const Vec4& p : line) {
+    EXPECT_NEAR(p.y(), 0.0, 1e-15);
+    EXPECT_NEAR(p.w(), 1.0, 1e-15);
+  }
+}
+
+// A Y of three chains and a ring: ends, junctions and branch count.
+TEST(Branches, YAndRing) {
+  CurveSkeleton y;
+  for (int k = 0; k < 7; ++k) y.nodes.push_back(Vec4(k, 0, 0, 0.1));
+  y.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {2, 5}, {5, 6}};
+  const BranchGraph g = extract_branches(y);
+  EXPECT_EQ(g.branches.size(), 3u);
+  EXPECT_EQ(g.ends, 3u);
+  EXPECT_EQ(g.junctions, 1u);
+  CurveSkeleton ring;
+  for (int k = 0; k < 5; ++k) ring.nodes.push_back(Vec4(std::cos(k), std::sin(k), 0, 0.1));
+  ring.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {0, 4}};
+  const BranchGraph r = extract_branches(ring);
+  ASSERT_EQ(r.branches.size(), 1u);
+  EXPECT_EQ(r.branches[0].points.size(), 6u);  // closed: first = last
+  EXPECT_EQ(r.ends + r.junctions, 0u);
+}
+
+// A spur of length 0.1 at a junction of radius 1 goes; the long arms stay.
+TEST(Branches, SpurRemoval) {
+  CurveSkeleton s;
+  s.nodes = {Vec4(-3, 0, 0, 1), Vec4(0, 0, 0, 1), Vec4(3, 0, 0, 1), Vec4(0, 0.1, 0, 1)};
+  s.edges = {{0, 1}, {1, 2}, {1, 3}};
+  EXPECT_EQ(remove_spurs(s, 1.5), 1u);
+  const BranchGraph g = extract_branches(s);
+  EXPECT_EQ(g.branches.size(), 1u);
+  EXPECT_EQ(g.ends, 2u);
+}
+
+// --- mesh reader ------------------------------------------------------------
+
+TriangleMesh tetrahedron() {
+  TriangleMesh m;
+  m.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  return m;
+}
+
+std::filesystem::path temporary(const std::string& name) {
+  return std::filesystem::temp_directory_path() / ("skelconv_reconstruct_test_" + name);
+}
+
+TEST(MeshReader, ReadsWhatWriteMeshWrites) {
+  for (const char* name : {"t.ply", "t.obj"}) {
+    for (PlyEncoding encoding : {PlyEncoding::binary, PlyEncoding::ascii}) {
+      const auto path = temporary(name);
+      write_mesh(tetrahedron(), path, encoding);
+      const TriangleMesh back = read_mesh(path);
+      EXPECT_EQ(back.vertices, tetrahedron().vertices) << name;
+      EXPECT_EQ(back.triangles, tetrahedron().triangles) << name;
+      std::filesystem::remove(path);
+    }
+  }
+}
+
+TEST(MeshReader, BigEndianFloatQuadsAndObjPolygons) {
+  const auto ply = temporary("big.ply");
+  {
+    std::ofstream out(ply, std::ios::binary);
+    out << "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const float xyz[12] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0};
+    for (float f : xyz) {
+      unsigned char b[4];
+      std::memcpy(b, &f, 4);
+      out.put(char(b[3])).put(char(b[2])).put(char(b[1])).put(char(b[0]));
+    }
+    out.put(char(4));
+    for (int i : {0, 1, 2, 3}) out.put(0).put(0).put(0).put(char(i));
+  }
+  const TriangleMesh quad = read_mesh(ply);
+  ASSERT_EQ(quad.vertices.size(), 4u);
+  EXPECT_EQ(quad.vertices[2], Vec3(2, 2, 0));
+  ASSERT_EQ(quad.triangles.size(), 2u);  // the fan 0 1 2, 0 2 3
+  EXPECT_EQ(quad.triangles[1], (std::array<std::int32_t, 3>{0, 2, 3}));
+  std::filesystem::remove(ply);
+
+  const auto obj = temporary("poly.obj");
+  std::ofstream(obj) << "# a quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 -1//1\n";
+  EXPECT_EQ(read_mesh(obj).triangles.size(), 2u);
+  std::ofstream(obj) << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
+  try {
+    read_mesh(obj);
+    ADD_FAILURE() << "no error for an index out of range";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("line 3"), std::string::npos) << error.what();
+  }
+  std::filesystem::remove(obj);
+  EXPECT_THROW(read_mesh(temporary("x.stl")), InputError);
+}
+
+}  // namespace
+}  // namespace skelconv::reconstruct
