@@ -29,6 +29,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "input_checks.hpp"
 
 namespace skelconv {
 namespace {
