@@ -165,6 +165,7 @@ const std::vector<TopologyCase> topology_cases{
     {"polygon", 0.1, {2}},                 // a thickened pentagon
     {"scalis_cone", 0.8, {2}},             // a SCALIS cone (radius 0.5 → 0)
     {"blend_tree", 0.5, {2, 2}},           // union of a summed L of segments and a ball
+    {"polygon_inverse", 1.0, {2}},         // p⁴ pentagon: skeleton points on its edges are refused, skipped
 };
 
 /// The same cases meshed by the grid method, except `blobs`: its small blob

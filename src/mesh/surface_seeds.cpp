@@ -105,8 +105,21 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
   std::vector<Vec3> seeds;
   double largest = -std::numeric_limits<double>::infinity();
   Vec3 largest_at = field.skeleton_points.front();
+  std::optional<EvaluationError> first_failure;
   for (const Vec3& p : field.skeleton_points) {
-    const double f = field.value(p);
+    // On an inverse-kernel polygon or segment a skeleton point lies on (or,
+    // after rounding, next to) the set where f is infinite, and the closed
+    // form may refuse it (EvaluationError: "returned inf where the field is
+    // finite"). Such a point is skipped, not fatal: the others (the centroid,
+    // the points inside) seed the same component. Only when every skeleton
+    // point failed is the first failure reported.
+    double f = 0.0;
+    try {
+      f = field.value(p);
+    } catch (const EvaluationError& error) {
+      if (!first_failure) first_failure = error;
+      continue;
+    }
     if (f > largest) std::tie(largest, largest_at) = std::make_tuple(f, p);
     if (!(f > iso)) continue;
     if (!used_cells.insert(cell_of(p, box.lo, options.spacing)).second) continue;
@@ -116,6 +129,7 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
     }
     grid.add_from_one_source(crossings, seeds);
   }
+  if (largest == -std::numeric_limits<double>::infinity() && first_failure) throw *first_failure;
   if (largest <= iso) {
     throw InputError(fmt::format("no surface at iso {}: the field is below it on the whole skeleton "
                                  "(largest value {:.6g} at ({}, {}, {}))",
