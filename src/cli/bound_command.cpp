@@ -20,15 +20,6 @@ namespace {
 /// of fractal area; 10 keeps a run within minutes.
 constexpr int max_octree_depth = 10;
 
-std::string read_all_stdin() {
-  std::string text;
-  char chunk[1 << 16];
-  std::size_t count = 0;
-  while ((count = std::fread(chunk, 1, sizeof chunk, stdin)) > 0) text.append(chunk, count);
-  if (std::ferror(stdin)) throw InputError("cannot read standard input");
-  return text;
-}
-
 /// A box from 6 numbers, or InputError (without location) naming the problem.
 interval::Box make_box(const std::vector<double>& v) {
   if (v.size() != 6) {
@@ -132,23 +123,12 @@ Output: "lo hi" per box (%.17g), then "inside"/"outside"/"undetermined" with
 
 int run_bound(const BoundOptions& options) {
   std::string output;
-  try {
+  return print_all_or_nothing([&] {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     if (options.iso && !std::isfinite(*options.iso)) throw InputError("must be finite", "--iso");
-    output = options.octree_depth ? octree_lines(skeleton, options)
-                                  : bound_lines(skeleton, read_all_stdin(), options.iso);
-  } catch (const InputError& error) {
-    report_error(error.what());
-    return exit_bad_input;
-  } catch (const EvaluationError& error) {
-    report_error(error.what());
-    return exit_evaluation_failed;
-  }
-  if (std::fwrite(output.data(), 1, output.size(), stdout) != output.size() || std::fflush(stdout) != 0) {
-    report_error("cannot write to standard output");
-    return exit_evaluation_failed;
-  }
-  return exit_success;
+    return options.octree_depth ? octree_lines(skeleton, options)
+                                : bound_lines(skeleton, read_standard_input(), options.iso);
+  });
 }
 
 }  // namespace skelconv::cli

@@ -37,8 +37,7 @@ CLI::App* add_canal_command(CLI::App& app, CanalOptions& options) {
 }
 
 int run_canal(const CanalOptions& options) {
-  std::string output;
-  try {
+  return print_all_or_nothing([&] {
     const canal::CanalInput input = canal::load_canal_file(options.input_path);
     std::vector<canal::FamilySample<double>> samples;
     try {
@@ -46,20 +45,10 @@ int run_canal(const CanalOptions& options) {
     } catch (const InputError& error) {
       throw InputError(error.what(), options.input_path);  // "file.json: spheres[2]: ..."
     }
-    output = canal::canal_samples_json(samples);
+    std::string output = canal::canal_samples_json(samples);
     if (!options.mesh_path.empty()) write_mesh(canal::mesh_canal_surface(samples), options.mesh_path);
-  } catch (const InputError& error) {
-    report_error(error.what());
-    return exit_bad_input;
-  } catch (const EvaluationError& error) {
-    report_error(error.what());
-    return exit_evaluation_failed;
-  }
-  if (std::fwrite(output.data(), 1, output.size(), stdout) != output.size() || std::fflush(stdout) != 0) {
-    report_error("cannot write to standard output");
-    return exit_evaluation_failed;
-  }
-  return exit_success;
+    return output;
+  });
 }
 
 }  // namespace skelconv::cli

@@ -34,16 +34,6 @@ On any error nothing is written to stdout and one "skelconv: error: ..." line
 to stderr; exit status 2 for bad input, 1 if a value cannot be computed in
 double precision. Schema of SKELETON.json: see docs/cli.md.)";
 
-/// All of stdin. Throws InputError if it cannot be read.
-std::string read_standard_input() {
-  std::string text;
-  char chunk[1 << 16];
-  std::size_t count = 0;
-  while ((count = std::fread(chunk, 1, sizeof chunk, stdin)) > 0) text.append(chunk, count);
-  if (std::ferror(stdin)) throw InputError("cannot read standard input");
-  return text;
-}
-
 /// The points of `input`, one per non-blank line, with their line numbers,
 /// up to the first bad line (whose InputError, located at "line N", is
 /// returned instead of thrown: a point before it may fail first).
@@ -117,23 +107,10 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
 }
 
 int run_eval(const EvalOptions& options) {
-  std::string output;
-  try {
+  return print_all_or_nothing([&] {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
-    output = evaluate_lines(skeleton, read_standard_input(), options.threads);
-  } catch (const InputError& error) {
-    report_error(error.what());
-    return exit_bad_input;
-  } catch (const EvaluationError& error) {
-    report_error(error.what());
-    return exit_evaluation_failed;
-  }
-  // Only now, with every point evaluated, does anything reach stdout.
-  if (std::fwrite(output.data(), 1, output.size(), stdout) != output.size() || std::fflush(stdout) != 0) {
-    report_error("cannot write to standard output");
-    return exit_evaluation_failed;
-  }
-  return exit_success;
+    return evaluate_lines(skeleton, read_standard_input(), options.threads);
+  });
 }
 
 }  // namespace skelconv::cli

@@ -2,7 +2,10 @@
 #pragma once
 
 #include <cstdio>
+#include <string>
 #include <string_view>
+
+#include "skelconv/errors.hpp"
 
 namespace skelconv::cli {
 
@@ -19,6 +22,39 @@ enum ExitStatus : int {
 /// Writes "skelconv: error: <message>" as one line on stderr.
 inline void report_error(std::string_view message) {
   std::fprintf(stderr, "skelconv: error: %.*s\n", int(message.size()), message.data());
+}
+
+/// All of standard input. Throws InputError if it cannot be read.
+inline std::string read_standard_input() {
+  std::string text;
+  char chunk[1 << 16];
+  std::size_t count = 0;
+  while ((count = std::fread(chunk, 1, sizeof chunk, stdin)) > 0) text.append(chunk, count);
+  if (std::ferror(stdin)) throw InputError("cannot read standard input");
+  return text;
+}
+
+/// The one way a subcommand ends: runs `produce` (which returns the whole
+/// standard output), reports an InputError (exit 2) or EvaluationError
+/// (exit 1) as one line, and only when everything succeeded writes the
+/// output, so that stdout never holds half a result.
+template <class Produce>
+int print_all_or_nothing(Produce produce) {
+  std::string output;
+  try {
+    output = produce();
+  } catch (const InputError& error) {
+    report_error(error.what());
+    return exit_bad_input;
+  } catch (const EvaluationError& error) {
+    report_error(error.what());
+    return exit_evaluation_failed;
+  }
+  if (std::fwrite(output.data(), 1, output.size(), stdout) != output.size() || std::fflush(stdout) != 0) {
+    report_error("cannot write to standard output");
+    return exit_evaluation_failed;
+  }
+  return exit_success;
 }
 
 }  // namespace skelconv::cli
