@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "skelconv/errors.hpp"
+#include "skelconv/text_file.hpp"
 
 namespace skelconv::canal {
 namespace {
@@ -197,18 +198,11 @@ void append_point(std::string& text, const Vector3<double>& p) {
 CanalInput parse_canal_json(std::string_view json_text) { return read_input(parse_document(json_text)); }
 
 CanalInput load_canal_file(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::error_code error_code;
-  if (std::filesystem::is_directory(path, error_code)) throw InputError("is a directory, not a canal file", name);
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(fmt::format("cannot open: {}", std::strerror(errno)), name);
-  std::ostringstream contents;
-  contents << file.rdbuf();
-  if (file.bad()) throw InputError("cannot read the file", name);
+  const std::string contents = read_text_file(path, "canal file");
   try {
-    return parse_canal_json(contents.str());
+    return parse_canal_json(contents);
   } catch (const InputError& error) {
-    throw InputError(error.what(), name);
+    throw InputError(error.what(), path.string());
   }
 }
 

@@ -29,6 +29,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/text_file.hpp"
 #include "input_checks.hpp"
 
 namespace skelconv {
@@ -530,19 +531,12 @@ Skeleton read_skeleton(const Json& document) {
 Skeleton parse_skeleton_json(std::string_view json_text) { return read_skeleton(parse_json(json_text)); }
 
 Skeleton load_skeleton_file(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::error_code error_code;
-  if (std::filesystem::is_directory(path, error_code)) throw InputError("is a directory, not a skeleton file", name);
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(fmt::format("cannot open: {}", std::strerror(errno)), name);
-  std::ostringstream contents;
-  contents << file.rdbuf();
-  if (file.bad()) throw InputError("cannot read the file", name);
+  const std::string contents = read_text_file(path, "skeleton file");
   try {
-    return parse_skeleton_json(contents.str());
+    return parse_skeleton_json(contents);
   } catch (const InputError& error) {
     // Keep the JSON path inside the message: "skel.json: primitives[2]...".
-    throw InputError(error.what(), name);
+    throw InputError(error.what(), path.string());
   }
 }
 
