@@ -83,8 +83,7 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
 }
 
 int run_mesh(const MeshCommandOptions& options) {
-  std::string text;
-  try {
+  return print_all_or_nothing([&] {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     check_output_path(options.output_path);
     MeshOptions mesh_options;
@@ -101,16 +100,8 @@ int run_mesh(const MeshCommandOptions& options) {
     MeshReport report;
     const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), mesh_options, &report);
     write_mesh(mesh, options.output_path, options.ascii ? PlyEncoding::ascii : PlyEncoding::binary);
-    text = summary(mesh, report, options.output_path);
-  } catch (const InputError& error) {
-    report_error(error.what());
-    return exit_bad_input;
-  } catch (const EvaluationError& error) {
-    report_error(error.what());
-    return exit_evaluation_failed;
-  }
-  std::fwrite(text.data(), 1, text.size(), stdout);
-  return std::fflush(stdout) == 0 ? exit_success : exit_evaluation_failed;
+    return summary(mesh, report, options.output_path);
+  });
 }
 
 }  // namespace skelconv::cli

@@ -81,8 +81,7 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
 }
 
 int run_skeletonize(const SkeletonizeOptions& options) {
-  std::string text;
-  try {
+  return print_all_or_nothing([&] {
     if (std::filesystem::path(options.output_path).extension() != ".json")
       throw InputError("the skeleton file must end in .json", options.output_path);
     reconstruct::ReconstructOptions ro;
@@ -106,16 +105,8 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     if (options.report_path) report = report_json(r, input, ro, ro.progress);
     write_text_atomically(skeleton, options.output_path);
     if (options.report_path) write_text_atomically(report, *options.report_path);
-    text = summary(r, options.output_path);
-  } catch (const InputError& error) {
-    report_error(error.what());
-    return exit_bad_input;
-  } catch (const EvaluationError& error) {
-    report_error(error.what());
-    return exit_evaluation_failed;
-  }
-  std::fwrite(text.data(), 1, text.size(), stdout);
-  return std::fflush(stdout) == 0 ? exit_success : exit_evaluation_failed;
+    return summary(r, options.output_path);
+  });
 }
 
 }  // namespace skelconv::cli
