@@ -99,17 +99,27 @@ struct PrecisionStats {
   std::uint64_t grad_above_target = 0;  ///< points with |∇f| error above the generic ∇f target
   std::optional<SweepProblem> worst_f, worst_grad;
 
+  /// Whether an error `value` of sample `index` becomes the new maximum over
+  /// (`current`, `worst`). On a tie the smaller sample index wins, so the
+  /// worst sample does not depend on the order in which threads or shards
+  /// merge (a sample index is unique within a cell): a merged sharded sweep
+  /// reports the same samples as the unsharded one.
+  static bool replaces(double value, std::uint64_t index, double current, const std::optional<SweepProblem>& worst) {
+    return !worst || value > current || (value == current && index < worst->index);
+  }
+
   void add(const RelativeErrors& e, const SweepProblem& problem, const AccuracyTargets& targets) {
     if (e.nonfinite) ++nonfinite;
     if (!(e.f <= targets.generic_f)) ++f_above_target;
     if (!(e.grad <= targets.generic_grad)) ++grad_above_target;
-    if (!worst_f || e.f > max_f) max_f = e.f, worst_f = problem;
-    if (!worst_grad || e.grad > max_grad) max_grad = e.grad, worst_grad = problem;
+    if (replaces(e.f, problem.index, max_f, worst_f)) max_f = e.f, worst_f = problem;
+    if (replaces(e.grad, problem.index, max_grad, worst_grad)) max_grad = e.grad, worst_grad = problem;
     max_grad_component = std::max(max_grad_component, e.grad_component);
   }
   void merge(const PrecisionStats& o) {
-    if (o.worst_f && (!worst_f || o.max_f > max_f)) max_f = o.max_f, worst_f = o.worst_f;
-    if (o.worst_grad && (!worst_grad || o.max_grad > max_grad)) max_grad = o.max_grad, worst_grad = o.worst_grad;
+    if (o.worst_f && replaces(o.max_f, o.worst_f->index, max_f, worst_f)) max_f = o.max_f, worst_f = o.worst_f;
+    if (o.worst_grad && replaces(o.max_grad, o.worst_grad->index, max_grad, worst_grad))
+      max_grad = o.max_grad, worst_grad = o.worst_grad;
     max_grad_component = std::max(max_grad_component, o.max_grad_component);
     nonfinite += o.nonfinite;
     f_above_target += o.f_above_target;

@@ -56,18 +56,23 @@ std::optional<SegmentInput<T>> generated_input(const SweepProblem& pb) {
   return in;
 }
 
-/// Worst relative errors over the three entry points f, grad and f_and_grad.
+/// Worst relative errors over the three entry points f, grad and f_and_grad,
+/// each result multiplied by `scale` (1 except in a test perturbation,
+/// TestPerturbation in sweep.hpp).
 template <class T>
 RelativeErrors evaluate_generated(const GeneratedKernel<T>& kernel, const std::optional<SegmentInput<T>>& in,
-                                  const ReferenceField& ref) {
+                                  const ReferenceField& ref, double scale = 1.0) {
   if (!in) {  // clip empty in T while the reference sees the support: the pipeline returns 0
     const Vec3<T> zero{};
     return relative_errors(T(0), zero, ref.f, ref.grad);
   }
-  const T f = kernel.f(*in);
-  const Vec3<T> grad = kernel.grad(*in);
+  const T factor(scale);
+  const auto scaled = [&](Vec3<T> g) { return Vec3<T>{g[0] * factor, g[1] * factor, g[2] * factor}; };
+  const T f = kernel.f(*in) * factor;
+  const Vec3<T> grad = scaled(kernel.grad(*in));
   Vec3<T> grad_joint{};
-  const T f_joint = kernel.f_and_grad(*in, grad_joint);
+  const T f_joint = kernel.f_and_grad(*in, grad_joint) * factor;
+  grad_joint = scaled(grad_joint);
   return worst_of(relative_errors(f, grad, ref.f, ref.grad), relative_errors(f_joint, grad_joint, ref.f, ref.grad));
 }
 
@@ -94,10 +99,11 @@ inline std::optional<SegmentMoments> try_moments(ReferenceIntegrator& integrator
 /// Evaluates sample `pb` for every weight degree and adds it to `cells[d]`.
 /// A weight degree whose reference is flagged (or that has none, Boost having
 /// given up) is retried with the stronger reference, computed at most once
-/// per sample; only what that still flags is excluded.
+/// per sample; only what that still flags is excluded. `scale`: see
+/// evaluate_generated.
 inline void evaluate_sample(const SweepProblem& pb, const KernelsByWeightDegree& kernels,
                             ReferenceIntegrators& integrators, const AccuracyTargets& targets,
-                            std::span<CellStats, max_weight_degree + 1> cells) {
+                            std::span<CellStats, max_weight_degree + 1> cells, double scale = 1.0) {
   std::optional<std::optional<SegmentMoments>> stronger;  // computed on the first flag
   const auto stronger_moments = [&]() -> const std::optional<SegmentMoments>& {
     if (!stronger) stronger = try_moments(integrators.stronger, pb);
@@ -139,8 +145,8 @@ inline void evaluate_sample(const SweepProblem& pb, const KernelsByWeightDegree&
     cell.max_reference_error = std::max(
         {cell.max_reference_error, static_cast<double>(ref.f_relative_error), static_cast<double>(ref.grad_relative_error)});
     const KernelPair& kernel = kernels[d];
-    cell.in_double.add(evaluate_generated(*kernel.in_double, in_double, ref), pb, targets);
-    cell.in_extended.add(evaluate_generated(*kernel.in_extended, in_extended, ref), pb, targets);
+    cell.in_double.add(evaluate_generated(*kernel.in_double, in_double, ref, scale), pb, targets);
+    cell.in_extended.add(evaluate_generated(*kernel.in_extended, in_extended, ref, scale), pb, targets);
   }
 }
 

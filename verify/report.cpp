@@ -227,6 +227,41 @@ void write_text_report(std::ostream& out, const SweepOptions& options, const Swe
       << "exclusion limits: " << verdict.failing_exclusion_cells << "; " << seconds << " s\n";
 }
 
+nlohmann::json settings_json(const SweepOptions& options) {
+  nlohmann::json filters{{"family", nullptr}, {"degree", nullptr}, {"region", nullptr}};
+  if (options.family) filters["family"] = family_name(*options.family);
+  if (options.degree) filters["degree"] = *options.degree;
+  if (options.region) filters["region"] = region_name(*options.region);
+  nlohmann::json settings{
+      {"commit", options.commit},
+      {"seed", options.seed},
+      {"points_generic", options.counts.generic},
+      {"points_other", options.counts.other},
+      {"chunk_size", options.chunk_size},
+      {"filters", filters},
+      {"shard_index", options.shard_index},
+      {"shard_count", options.shard_count},
+      {"threads", options.threads},
+      {"target_generic_f", options.targets.generic_f},
+      {"target_generic_grad", options.targets.generic_grad},
+      {"reference_requested_tolerance", options.reference.requested},
+      {"reference_flag_threshold", options.reference.flag_threshold},
+      {"reference_max_levels", options.reference.max_levels},
+      {"reference_retry_requested_tolerance", options.reference.retry().requested},
+      {"reference_retry_max_levels", options.reference.retry().max_levels},
+      {"max_excluded_share", options.exclusions.max_excluded_share},
+      {"min_compared_share", options.exclusions.min_compared_share},
+      {"error_definitions",
+       {{"f", "|f - f_ref| / |f_ref|"},
+        {"grad", "|g - g_ref| / |g_ref| (Euclidean norms)"},
+        {"grad_component", "max_c |g_c - g_ref_c| / |g_ref|"},
+        {"entry_points", "max over f(), grad() and f_and_grad()"}}}};
+  if (options.perturbation)
+    settings["test_perturbation"] = {{"family", family_name(options.perturbation->family)},
+                                     {"relative", options.perturbation->relative}};
+  return settings;
+}
+
 nlohmann::json json_report(const SweepOptions& options, const SweepResult& result) {
   nlohmann::json cells = nlohmann::json::array();
   for (const auto& [key, cell] : result.cells) {
@@ -257,42 +292,23 @@ nlohmann::json json_report(const SweepOptions& options, const SweepResult& resul
                           {"retried", c.retried},
                           {"excluded_share", c.excluded_share()},
                           {"passed", c.passed}});
+  nlohmann::json summary{{"samples", result.samples},
+                         {"items_run", result.items_run},
+                         {"items_total", result.items_total},
+                         {"seconds", result.seconds},
+                         {"reference_kernel_evaluations", result.kernel_evaluations},
+                         {"reference_replay_misses", result.replay_misses},
+                         {"generic_failing_points", verdict.failing_points},
+                         {"generic_failing_rows", verdict.failing_cells},
+                         {"generic_comparisons", verdict.compared},
+                         {"exclusion_cells_failing", verdict.failing_exclusion_cells},
+                         {"generic_passed", verdict.passed()}};
+  if (result.merged_shards > 0) summary["merged_shards"] = result.merged_shards;
   return {{"tool", "skelconv-verify"},
-          {"settings",
-           {{"seed", options.seed},
-            {"points_generic", options.counts.generic},
-            {"points_other", options.counts.other},
-            {"chunk_size", options.chunk_size},
-            {"shard_index", options.shard_index},
-            {"shard_count", options.shard_count},
-            {"threads", options.threads},
-            {"target_generic_f", options.targets.generic_f},
-            {"target_generic_grad", options.targets.generic_grad},
-            {"reference_requested_tolerance", options.reference.requested},
-            {"reference_flag_threshold", options.reference.flag_threshold},
-            {"reference_retry_requested_tolerance", options.reference.retry().requested},
-            {"reference_retry_max_levels", options.reference.retry().max_levels},
-            {"max_excluded_share", options.exclusions.max_excluded_share},
-            {"min_compared_share", options.exclusions.min_compared_share},
-            {"error_definitions",
-             {{"f", "|f - f_ref| / |f_ref|"},
-              {"grad", "|g - g_ref| / |g_ref| (Euclidean norms)"},
-              {"grad_component", "max_c |g_c - g_ref_c| / |g_ref|"},
-              {"entry_points", "max over f(), grad() and f_and_grad()"}}}}},
+          {"settings", settings_json(options)},
           {"cells", cells},
           {"exclusions", exclusions},
-          {"summary",
-           {{"samples", result.samples},
-            {"items_run", result.items_run},
-            {"items_total", result.items_total},
-            {"seconds", result.seconds},
-            {"reference_kernel_evaluations", result.kernel_evaluations},
-            {"reference_replay_misses", result.replay_misses},
-            {"generic_failing_points", verdict.failing_points},
-            {"generic_failing_rows", verdict.failing_cells},
-            {"generic_comparisons", verdict.compared},
-            {"exclusion_cells_failing", verdict.failing_exclusion_cells},
-            {"generic_passed", verdict.passed()}}}};
+          {"summary", summary}};
 }
 
 }  // namespace skelconv::verify

@@ -45,6 +45,9 @@ GenericVerdict generic_verdict(const SweepResult& result, const ExclusionLimits&
 /// Tables (double, then binary128), anomalies and the summary line.
 void write_text_report(std::ostream& out, const SweepOptions& options, const SweepResult& result);
 
+/// The sweep's definition and settings (the JSON report's "settings").
+nlohmann::json settings_json(const SweepOptions& options);
+
 nlohmann::json json_report(const SweepOptions& options, const SweepResult& result);
 
 }  // namespace skelconv::verify

@@ -40,6 +40,15 @@ std::vector<WorkItem> build_work_list(const SweepOptions& options) {
   return items;
 }
 
+namespace {
+
+/// 1, or 1 + relative for the family of a test perturbation.
+double result_scale(const SweepOptions& options, KernelFamily family) {
+  return options.perturbation && options.perturbation->family == family ? 1 + options.perturbation->relative : 1.0;
+}
+
+}  // namespace
+
 SweepResult run_sweep(const SweepOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SweepResult result;
@@ -67,7 +76,7 @@ SweepResult run_sweep(const SweepOptions& options) {
       std::array<CellStats, max_weight_degree + 1> cells{};
       for (std::uint64_t k = item.first; k < item.first + item.count; ++k) {
         const SweepProblem pb = draw_problem(options.seed, item.family, item.degree, item.region, k);
-        evaluate_sample(pb, kernels, integrators, options.targets, cells);
+        evaluate_sample(pb, kernels, integrators, options.targets, cells, result_scale(options, item.family));
       }
       {
         std::lock_guard lock(merge_mutex);

@@ -5,15 +5,26 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <string>
 #include <tuple>
 #include <vector>
 
+#include "build_info.hpp"
 #include "error_stats.hpp"
 #include "reference_quadrature.hpp"
 #include "regions.hpp"
 #include "skelconv/segment_input.hpp"
 
 namespace skelconv::verify {
+
+/// Test only: every generated result (f and ∇f, double and binary128) of one
+/// family is multiplied by (1 + relative), as if one term of its formula had
+/// changed. `skelconv-verify compare` must catch it (ctest
+/// verify_compare_catches_perturbation); never set in a real sweep.
+struct TestPerturbation {
+  KernelFamily family = KernelFamily::inverse;
+  double relative = 0;
+};
 
 struct SweepOptions {
   PointCounts counts = default_point_counts;
@@ -29,6 +40,10 @@ struct SweepOptions {
   AccuracyTargets targets;
   ExclusionLimits exclusions;
   ReferenceTolerances reference;
+  std::optional<TestPerturbation> perturbation;
+  /// The commit the generated kernels and the verifier were built from; a
+  /// report read back keeps the commit it was written with.
+  std::string commit = std::string(build_commit());
 };
 
 /// One unit of work: points [first, first + count) of (family, degree, region).
@@ -52,6 +67,7 @@ struct SweepResult {
   double seconds = 0;
   std::uint64_t kernel_evaluations = 0;  ///< reference kernel evaluations (cost indicator)
   std::uint64_t replay_misses = 0;       ///< should be 0 (see NodeReplay)
+  int merged_shards = 0;                 ///< shard reports merged into this one (0: a single run)
 };
 
 /// The (family, degree) pairs the generated table provides (weight degree 0..3
