@@ -112,7 +112,7 @@ Comparison compare_reports(const SweepReport& base, const SweepReport& fresh, co
   Comparison out;
   out.tolerance_factor = options.tolerance_factor;
   out.double_floor = options.double_floor;
-  out.extended_floor = options.extended_floor > 0 ? options.extended_floor : b.reference.flag_threshold;
+  out.extended_floor = options.extended_floor >= 0 ? options.extended_floor : b.reference.flag_threshold;
   for (const auto& [key, before] : base.result.cells) {
     const auto it = fresh.result.cells.find(key);
     if (it == fresh.result.cells.end()) {

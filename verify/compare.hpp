@@ -28,11 +28,11 @@ struct CompareOptions {
   /// re-ordering the same terms moves them around there. Below 16 ulps a
   /// change is rounding noise, not a formula regression.
   double double_floor = 16 * 0x1p-52;
-  /// Floor for the binary128 maxima: 0 = the reports' reference flag
+  /// Floor for the binary128 maxima; negative = BASE's reference flag
   /// threshold (1e-20 by default): no reference less accurate than that is
   /// used, so below it a binary128 "error" may be the reference's own; and a
   /// formula error that small is 4 digits below double's rounding.
-  double extended_floor = 0;
+  double extended_floor = -1;
 };
 
 /// The four maxima the comparison looks at.

@@ -203,7 +203,7 @@ int main(int argc, char** argv) {
                       "and exceeds this in double (default 16 ulps, 3.6e-15)")
       ->check(CLI::NonNegativeNumber);
   compare->add_option("--extended-floor", compare_options.extended_floor,
-                      "and exceeds this in binary128 (default: BASE's reference flag threshold)")
+                      "and exceeds this in binary128 (default: BASE's reference flag threshold, 1e-20)")
       ->check(CLI::NonNegativeNumber);
 
   CLI::App* markdown = app.add_subcommand("markdown", "print a JSON report as Markdown tables");
