@@ -8,6 +8,8 @@
 #include <ostream>
 #include <string>
 
+#include "report.hpp"
+
 namespace skelconv::verify {
 namespace {
 
@@ -22,13 +24,6 @@ double maximum_of(const CellStats& cell, Measure measure) {
 }
 
 bool is_double(Measure measure) { return measure == Measure::f_double || measure == Measure::grad_double; }
-
-std::string format_error(double value) {
-  if (std::isinf(value)) return "inf";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.1e", value);
-  return buffer;
-}
 
 std::string cell_name(const CellKey& key) {
   const auto& [family, degree, weight_degree, region] = key;

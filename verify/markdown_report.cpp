@@ -14,13 +14,6 @@
 namespace skelconv::verify {
 namespace {
 
-std::string format_error(double value) {
-  if (std::isinf(value)) return "inf";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.1e", value);
-  return buffer;
-}
-
 /// Worst double errors of one (degree, region), over the weight degrees.
 struct Worst {
   double f = 0, grad = 0;

@@ -13,13 +13,6 @@
 namespace skelconv::verify {
 namespace {
 
-std::string format_error(double value) {
-  char buffer[32];
-  if (value != value || value == std::numeric_limits<double>::infinity()) return "inf";
-  std::snprintf(buffer, sizeof buffer, "%.1e", value);
-  return buffer;
-}
-
 std::string pad_left(const std::string& text, std::size_t width) {
   return text.size() >= width ? text : std::string(width - text.size(), ' ') + text;
 }
@@ -139,6 +132,13 @@ void write_exclusion_table(std::ostream& out, const std::vector<ExclusionCell>& 
 
 }  // namespace
 
+std::string format_error(double value) {
+  char buffer[32];
+  if (value != value || value == std::numeric_limits<double>::infinity()) return "inf";
+  std::snprintf(buffer, sizeof buffer, "%.1e", value);
+  return buffer;
+}
+
 std::vector<ExclusionCell> exclusion_cells(const SweepResult& result, const ExclusionLimits& limits) {
   std::vector<ExclusionCell> cells;
   for (const auto& [key, cell] : result.cells) {  // ordered by family, degree, weight degree, region
@@ -181,7 +181,9 @@ void write_text_report(std::ostream& out, const SweepOptions& options, const Swe
          "quadrature of the definition integral (SPEC §2). Rows: family, kernel degree i, weight degree w.\n"
       << "seed " << options.seed << ", samples per (family, degree, region): generic " << options.counts.generic
       << ", other regions " << options.counts.other << "; shard " << options.shard_index << "/"
-      << options.shard_count << " (" << result.items_run << " of " << result.items_total << " items)\n\n";
+      << options.shard_count << " (" << result.items_run << " of " << result.items_total << " items)";
+  if (result.merged_shards > 0) out << ", merged from " << result.merged_shards << " shard reports";
+  out << "; commit " << options.commit << "\n\n";
   out << "DOUBLE — generated code in double. Asserted: generic f <= " << format_error(options.targets.generic_f)
       << ", |grad f| <= " << format_error(options.targets.generic_grad)
       << " ('!' = above). Other regions are reported only.\n";

@@ -13,6 +13,9 @@
 
 namespace skelconv::verify {
 
+/// A relative error for the tables: "1.2e-16", or "inf" (non-finite).
+std::string format_error(double value);
+
 /// Exclusions of one (family, degree, region) cell, all weight degrees
 /// together, against ExclusionLimits.
 struct ExclusionCell {
