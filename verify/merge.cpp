@@ -74,7 +74,9 @@ SweepReport merge_reports(const std::vector<SweepReport>& shards) {
   merged.options.shard_count = 1;
   SweepResult& result = merged.result;
   result.items_total = shards.front().result.items_total;
-  result.merged_shards = static_cast<int>(shards.size());
+  // Merging the one report of an unsharded sweep is the identity (e.g. to
+  // drop its samples with --without-samples): it stays a single run.
+  result.merged_shards = shards.front().options.shard_count > 1 ? static_cast<int>(shards.size()) : 0;
   for (const SweepReport& shard : shards) {
     for (const auto& [key, cell] : shard.result.cells) result.cells[key].merge(cell);
     result.items_run += shard.result.items_run;

@@ -20,7 +20,8 @@ namespace skelconv::verify {
 /// of one sweep must agree on all of it, the commit included.
 nlohmann::json sweep_definition(const SweepOptions& options);
 
-/// Merges the reports of shards 0..n−1 of one sweep (any order). Throws
+/// Merges the reports of shards 0..n−1 of one sweep (any order); the one
+/// report of an unsharded sweep (n = 1) merges into itself. Throws
 /// ReportError, naming the files, when they come from different sweep
 /// definitions (seed, sizes, filters, commit, ...), when a shard is missing or
 /// given twice, or when the work lists disagree.
