@@ -23,10 +23,10 @@ struct CompareOptions {
   double tolerance_factor = 2;
   /// Floor for the double maxima: 16 ulps of 1 (16 · 2^-52 ≈ 3.6e-15). A
   /// closed form of tens of roundings, each ≤ 2^-53 relative, has errors of
-  /// a few ulps even when perfectly conditioned; the best-conditioned cells
-  /// of the default sweep reach 1.75–3.5 ulps (docs/verify.md), and
-  /// re-ordering the same terms moves them around there. Below 16 ulps a
-  /// change is rounding noise, not a formula regression.
+  /// a few ulps even when perfectly conditioned; the smallest cell maximum
+  /// of the default sweep is 1.75 ulps and a third of them are below 16
+  /// (docs/verify.md); re-ordering the same terms moves them around there.
+  /// Below 16 ulps a change is rounding noise, not a formula regression.
   double double_floor = 16 * 0x1p-52;
   /// Floor for the binary128 maxima; negative = BASE's reference flag
   /// threshold (1e-20 by default): no reference less accurate than that is
