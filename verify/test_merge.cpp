@@ -128,6 +128,28 @@ TEST_F(Merge, RefusesMissingDuplicateOrMergedShards) {
   expect_refused({}, "no reports given");
 }
 
+TEST(MergeStatistics, TiesGoToTheSmallerSampleIndex) {
+  // Equal maxima are common (errors are multiples of ulps); which sample is
+  // "the worst" must not depend on the order threads or shards merge in.
+  SweepProblem early, late;
+  early.index = 3;
+  late.index = 7;
+  const RelativeErrors same{1e-15, 2e-15, 2e-15, false};
+  PrecisionStats from_early, from_late;
+  from_early.add(same, early, AccuracyTargets{});
+  from_late.add(same, late, AccuracyTargets{});
+  PrecisionStats one = from_early, other = from_late;
+  one.merge(from_late);
+  other.merge(from_early);
+  EXPECT_EQ(one.worst_f->index, 3u);
+  EXPECT_EQ(other.worst_f->index, 3u);
+  EXPECT_EQ(other.worst_grad->index, 3u);
+  PrecisionStats in_order;  // and within one work item, added late then early
+  in_order.add(same, late, AccuracyTargets{});
+  in_order.add(same, early, AccuracyTargets{});
+  EXPECT_EQ(in_order.worst_f->index, 3u);
+}
+
 TEST(ReportReader, NamesTheFileAndTheJsonPath) {
   SweepOptions options = small_sweep();
   options.counts = {6, 0};
