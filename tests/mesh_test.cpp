@@ -97,6 +97,8 @@ struct TopologyCase {
   double iso;
   std::vector<long long> euler_per_component;  // in any order
   MeshMethod method = MeshMethod::cgal;
+  double size = 0, distance = 0;  // > 0: --size / --distance (else the defaults)
+  double grid_size = 0;           // > 0: --size of the grid case (else `size`)
 };
 
 void PrintTo(const TopologyCase& c, std::ostream* out) {
@@ -144,7 +146,7 @@ TEST_P(MeshTopologyTest, ClosedManifoldOnTheSurfaceWithTheExpectedTopology) {
   const TopologyCase& c = GetParam();
   const Skeleton skeleton = load(c.skeleton);
   MeshReport report;
-  MeshOptions options = options_at(c.iso);
+  MeshOptions options = options_at(c.iso, c.size, c.distance);
   options.method = c.method;
   const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), options, &report);
   std::printf("%s: %zu triangles, %zu vertices, %.3f s\n", c.skeleton.c_str(), mesh.triangles.size(),
@@ -166,6 +168,12 @@ const std::vector<TopologyCase> topology_cases{
     {"scalis_cone", 0.8, {2}},             // a SCALIS cone (radius 0.5 → 0)
     {"blend_tree", 0.5, {2, 2}},           // union of a summed L of segments and a ball
     {"polygon_inverse", 1.0, {2}},         // p⁴ pentagon: skeleton points on its edges are refused, skipped
+    // Point primitives of four kernels (Cauchy, compact with a weight,
+    // Wyvill, soft): the first two merge, the others stand alone.
+    {"points", 0.5, {2, 2, 2}},
+    // A SCALIS triangle of varying radius (the certified numerical path,
+    // ~0.2 ms per evaluation): coarse, to keep the case under a second.
+    {"scalis_triangle", 0.6, {2}, MeshMethod::cgal, 0.6, 0.15, 0.25},
 };
 
 /// The same cases meshed by the grid method, except `blobs`: its small blob
@@ -176,6 +184,7 @@ std::vector<TopologyCase> grid_cases() {
   for (TopologyCase c : topology_cases) {
     if (c.skeleton == "blobs") continue;
     c.method = MeshMethod::grid;
+    if (c.grid_size > 0) c.size = c.grid_size;
     cases.push_back(c);
   }
   return cases;
