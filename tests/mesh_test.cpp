@@ -243,6 +243,28 @@ TEST(MeshDeterminism, SameInputSameMesh) {
   }
 }
 
+TEST(MeshGrid, SkippingBlocksOutsideTheSupportsChangesNothing) {
+  // The grid method fills the blocks no support box meets with the level of
+  // f = 0 instead of evaluating them: the same node values, so the same mesh.
+  EXPECT_FALSE(skeleton_field(load("segment")).support_boxes.has_value());  // Cauchy: infinite support
+  for (const auto& [name, iso] : {std::pair{"ring", 0.38}, std::pair{"blend_tree", 0.5}}) {
+    const Skeleton skeleton = load(name);
+    const ImplicitField field = skeleton_field(skeleton);
+    ASSERT_TRUE(field.support_boxes.has_value()) << name;
+    ImplicitField dense = field;
+    dense.support_boxes.reset();
+    MeshOptions options = options_at(iso);
+    options.method = MeshMethod::grid;
+    MeshReport skipping_report, dense_report;
+    const TriangleMesh skipping = mesh_iso_surface(field, options, &skipping_report);
+    const TriangleMesh reference = mesh_iso_surface(dense, options, &dense_report);
+    EXPECT_EQ(skipping.vertices, reference.vertices) << name;
+    EXPECT_EQ(skipping.normals, reference.normals) << name;
+    EXPECT_EQ(skipping.triangles, reference.triangles) << name;
+    EXPECT_LT(skipping_report.field_evaluations, dense_report.field_evaluations) << name;
+  }
+}
+
 TEST(MeshBadInput, NoSurfaceUnboundedAndBadSizes) {
   const Skeleton skeleton = load("segment");
   const ImplicitField field = skeleton_field(skeleton);
