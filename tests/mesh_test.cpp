@@ -97,6 +97,8 @@ struct TopologyCase {
   double iso;
   std::vector<long long> euler_per_component;  // in any order
   MeshMethod method = MeshMethod::cgal;
+  double size = 0, distance = 0;  // > 0: --size / --distance (else the defaults)
+  double grid_size = 0;           // > 0: --size of the grid case (else `size`)
 };
 
 void PrintTo(const TopologyCase& c, std::ostream* out) {
@@ -144,7 +146,7 @@ TEST_P(MeshTopologyTest, ClosedManifoldOnTheSurfaceWithTheExpectedTopology) {
   const TopologyCase& c = GetParam();
   const Skeleton skeleton = load(c.skeleton);
   MeshReport report;
-  MeshOptions options = options_at(c.iso);
+  MeshOptions options = options_at(c.iso, c.size, c.distance);
   options.method = c.method;
   const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), options, &report);
   std::printf("%s: %zu triangles, %zu vertices, %.3f s\n", c.skeleton.c_str(), mesh.triangles.size(),
@@ -166,6 +168,12 @@ const std::vector<TopologyCase> topology_cases{
     {"scalis_cone", 0.8, {2}},             // a SCALIS cone (radius 0.5 → 0)
     {"blend_tree", 0.5, {2, 2}},           // union of a summed L of segments and a ball
     {"polygon_inverse", 1.0, {2}},         // p⁴ pentagon: skeleton points on its edges are refused, skipped
+    // Point primitives of four kernels (Cauchy, compact with a weight,
+    // Wyvill, soft): the first two merge, the others stand alone.
+    {"points", 0.5, {2, 2, 2}},
+    // A SCALIS triangle of varying radius (the certified numerical path,
+    // ~0.2 ms per evaluation): coarse, to keep the case under a second.
+    {"scalis_triangle", 0.6, {2}, MeshMethod::cgal, 0.6, 0.15, 0.25},
 };
 
 /// The same cases meshed by the grid method, except `blobs`: its small blob
@@ -176,6 +184,7 @@ std::vector<TopologyCase> grid_cases() {
   for (TopologyCase c : topology_cases) {
     if (c.skeleton == "blobs") continue;
     c.method = MeshMethod::grid;
+    if (c.grid_size > 0) c.size = c.grid_size;
     cases.push_back(c);
   }
   return cases;
@@ -231,6 +240,28 @@ TEST(MeshDeterminism, SameInputSameMesh) {
     EXPECT_EQ(first.vertices, second.vertices);
     EXPECT_EQ(first.normals, second.normals);
     EXPECT_EQ(first.triangles, second.triangles);
+  }
+}
+
+TEST(MeshGrid, SkippingBlocksOutsideTheSupportsChangesNothing) {
+  // The grid method fills the blocks no support box meets with the level of
+  // f = 0 instead of evaluating them: the same node values, so the same mesh.
+  EXPECT_FALSE(skeleton_field(load("segment")).support_boxes.has_value());  // Cauchy: infinite support
+  for (const auto& [name, iso] : {std::pair{"ring", 0.38}, std::pair{"blend_tree", 0.5}}) {
+    const Skeleton skeleton = load(name);
+    const ImplicitField field = skeleton_field(skeleton);
+    ASSERT_TRUE(field.support_boxes.has_value()) << name;
+    ImplicitField dense = field;
+    dense.support_boxes.reset();
+    MeshOptions options = options_at(iso);
+    options.method = MeshMethod::grid;
+    MeshReport skipping_report, dense_report;
+    const TriangleMesh skipping = mesh_iso_surface(field, options, &skipping_report);
+    const TriangleMesh reference = mesh_iso_surface(dense, options, &dense_report);
+    EXPECT_EQ(skipping.vertices, reference.vertices) << name;
+    EXPECT_EQ(skipping.normals, reference.normals) << name;
+    EXPECT_EQ(skipping.triangles, reference.triangles) << name;
+    EXPECT_LT(skipping_report.field_evaluations, dense_report.field_evaluations) << name;
   }
 }
 

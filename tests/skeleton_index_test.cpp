@@ -23,21 +23,33 @@ bool same_bits(const FieldSample& a, const FieldSample& b) {
          std::memcmp(a.gradient.data(), b.gradient.data(), 3 * sizeof(double)) == 0;
 }
 
+/// Where mixed_skeleton puts its primitives: in the root sum, in a sum
+/// node under a union, or directly in a union or super-elliptic node (all
+/// four are indexed).
+enum class Parent { root, sum_under_union, union_node, super_elliptic_node };
+
 /// `count` primitives scattered in [0, 4]³: every compact type (segments,
 /// polygons, points, SCALIS segments and triangles) and, every 10th, an
-/// infinite-support Cauchy segment or point; with `union_on_top`, all of
-/// them in a sum node under a union.
-Skeleton mixed_skeleton(int count, bool union_on_top = false) {
+/// infinite-support Cauchy segment or point, as children of `parent_kind`.
+Skeleton mixed_skeleton(int count, Parent parent_kind = Parent::root) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0.0, 4.0), small(-0.3, 0.3), radius(0.2, 0.5);
   Skeleton skeleton;
   Skeleton::NodeId parent = Skeleton::root;
-  if (union_on_top) {
+  if (parent_kind == Parent::sum_under_union) {
     // A union over a point and a sum node holding everything: the sum is
     // indexed inside the tree too.
     const Skeleton::NodeId node = skeleton.add_blend(Blend::union_max());
     skeleton.add(PointPrimitive(Vec3(2, 2, 2), KernelSpec::cauchy(4, 0.5)), node);
     parent = skeleton.add_blend(Blend::sum(), node);
+  } else if (parent_kind == Parent::union_node) {
+    parent = skeleton.add_blend(Blend::union_max());
+  } else if (parent_kind == Parent::super_elliptic_node) {
+    // r < c: a child at 0 adds nothing; r > c: it adds a constant (both kept
+    // exact by writing skipped children as zeros).
+    std::vector<double> r;
+    for (int k = 0; k < count; ++k) r.push_back(k % 3 == 0 ? 0.7 : 0.3);
+    parent = skeleton.add_blend(Blend::super_elliptic(1.5, r, 0.5));
   }
   for (int k = 0; k < count; ++k) {
     const Vec3 c(u(rng), u(rng), u(rng));
@@ -86,9 +98,10 @@ std::vector<Vec3> probe_points(const Skeleton& skeleton, int random_count) {
   return points;
 }
 
-TEST(SkeletonIndex, IndexedSumEqualsPlainSumBitForBit) {
-  for (bool union_on_top : {false, true}) {
-    const Skeleton skeleton = mixed_skeleton(150, union_on_top);
+TEST(SkeletonIndex, IndexedEqualsPlainBitForBit) {
+  for (Parent parent : {Parent::root, Parent::sum_under_union, Parent::union_node, Parent::super_elliptic_node}) {
+    SCOPED_TRACE(int(parent));
+    const Skeleton skeleton = mixed_skeleton(150, parent);
     int nonzero = 0;
     for (const Vec3& p : probe_points(skeleton, 400)) {
       const FieldSample indexed = skeleton.value_and_gradient(p, Skeleton::Acceleration::indexed);

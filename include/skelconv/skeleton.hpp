@@ -8,12 +8,15 @@
 // (skeleton/blend.hpp: sum, union, super_elliptic), to any depth.
 //
 // Evaluation (docs/field.md):
-//   - every sum node with at least min_indexed_children children indexes its
-//     compact-support primitive children in a SupportGrid
-//     (field/support_grid.hpp): a point visits only those whose support box
-//     contains it, and every infinite-support child. The indexed sum is
-//     bit-identical to the plain one (Acceleration::plain), which visits
-//     every child: same terms, same order, minus exact zeros;
+//   - every sum, union and (not angle-weighted) super-elliptic node with at
+//     least min_indexed_children children indexes its compact-support
+//     primitive children in a SupportGrid (field/support_grid.hpp): a point
+//     visits only those whose support box contains it, and every
+//     infinite-support child. The indexed sum is bit-identical to the plain
+//     one (Acceleration::plain), which visits every child: same terms, same
+//     order, minus exact zeros; a union or super-elliptic node sees the
+//     skipped children as exact zeros in their places (docs/field.md: the
+//     same bits, up to the sign of a zero maximum of a union);
 //   - the index is built on first evaluation after a change (or by
 //     prepare()), once, safely from several threads;
 //   - errors are located like the file: a primitive's InputError or
@@ -57,8 +60,8 @@ class Skeleton {
   static constexpr double angle_hessian_step = 1e-5;
 
   enum class Acceleration {
-    indexed,  ///< sum nodes skip compact primitives whose support misses P
-    plain,    ///< every primitive is evaluated (same result, bit for bit)
+    indexed,  ///< sum, union and super-elliptic nodes skip compact primitives whose support misses P
+    plain,    ///< every primitive is evaluated (same bits; a union's zero maximum may differ in sign, docs/field.md)
   };
 
   Skeleton();

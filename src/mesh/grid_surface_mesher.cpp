@@ -11,22 +11,49 @@
 namespace skelconv::detail {
 namespace {
 
+/// Nodes per block side (OpenVDB's leaf size): the unit the support test skips.
+constexpr int block = 8;
+
+/// Whether no support box meets the world box of the nodes [first, last]
+/// (node positions are monotone in the index, so they all lie in it).
+bool outside_supports(const GridSurfaceRequest& request, const openvdb::Coord& first, const openvdb::Coord& last) {
+  if (request.support_boxes == nullptr) return false;
+  const auto node = [&request](const openvdb::Coord& c) {
+    return Vec3(request.box.lo + request.voxel * Vec3(c.x(), c.y(), c.z()));
+  };
+  const Eigen::AlignedBox3d nodes(node(first), node(last));
+  for (const Eigen::AlignedBox3d& support : *request.support_boxes)
+    if (support.intersects(nodes)) return false;
+  return true;
+}
+
 /// The level sampled on the grid nodes, as an OpenVDB float grid whose
-/// index (i, j, k) is the world point box.lo + voxel (i, j, k). Values are
-/// clamped to ±float max (an inverse kernel's skeleton gives −inf).
+/// index (i, j, k) is the world point box.lo + voxel (i, j, k), block by
+/// block. Values are clamped to ±float max (an inverse kernel's skeleton
+/// gives −inf).
 openvdb::FloatGrid::Ptr sample(const GridSurfaceRequest& request, const openvdb::Coord& count) {
   const float limit = std::numeric_limits<float>::max();
+  const auto stored = [limit](double level) { return float(std::clamp(level, -double(limit), double(limit))); };
   openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(/*background: outside*/ limit);
   openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(request.voxel);
   transform->postTranslate(openvdb::Vec3d(request.box.lo.x(), request.box.lo.y(), request.box.lo.z()));
   grid->setTransform(transform);
   auto accessor = grid->getAccessor();
-  for (int i = 0; i < count.x(); ++i) {
-    for (int j = 0; j < count.y(); ++j) {
-      for (int k = 0; k < count.z(); ++k) {
-        const Vec3 p = request.box.lo + request.voxel * Vec3(i, j, k);
-        const double value = std::clamp(request.level(p), -double(limit), double(limit));
-        accessor.setValue(openvdb::Coord(i, j, k), float(value));
+  for (int bi = 0; bi < count.x(); bi += block) {
+    for (int bj = 0; bj < count.y(); bj += block) {
+      for (int bk = 0; bk < count.z(); bk += block) {
+        const openvdb::Coord first(bi, bj, bk);
+        const openvdb::Coord last(std::min(bi + block, count.x()) - 1, std::min(bj + block, count.y()) - 1,
+                                  std::min(bk + block, count.z()) - 1);
+        const bool empty = outside_supports(request, first, last);
+        for (int i = first.x(); i <= last.x(); ++i) {
+          for (int j = first.y(); j <= last.y(); ++j) {
+            for (int k = first.z(); k <= last.z(); ++k) {
+              const Vec3 p = request.box.lo + request.voxel * Vec3(i, j, k);
+              accessor.setValue(openvdb::Coord(i, j, k), stored(empty ? request.empty_level : request.level(p)));
+            }
+          }
+        }
       }
     }
   }

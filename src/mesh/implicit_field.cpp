@@ -1,9 +1,35 @@
 // Implementation of skelconv/mesh/implicit_field.hpp.
 #include "skelconv/mesh/implicit_field.hpp"
 
+#include "skelconv/field/support_box.hpp"
 #include "skelconv/skeleton.hpp"
 
 namespace skelconv {
+namespace {
+
+/// Whether every node under `id` is a sum or a union (see the header).
+bool sums_and_unions_only(const Skeleton& skeleton, Skeleton::NodeId id) {
+  if (skeleton.blend(id).kind == BlendKind::super_elliptic) return false;
+  for (std::size_t k = 0; k < skeleton.child_count(id); ++k) {
+    const auto [is_blend, index] = skeleton.child(id, k);
+    if (is_blend && !sums_and_unions_only(skeleton, index)) return false;
+  }
+  return true;
+}
+
+/// The primitives' support boxes, if the field is 0 outside them.
+std::optional<std::vector<Eigen::AlignedBox3d>> support_boxes_of(const Skeleton& skeleton) {
+  if (!sums_and_unions_only(skeleton, Skeleton::root)) return std::nullopt;
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (const Primitive& primitive : skeleton.primitives()) {
+    const std::optional<SupportBox> box = support_box(primitive);
+    if (!box) return std::nullopt;  // infinite support
+    boxes.emplace_back(box->lo, box->hi);
+  }
+  return boxes;
+}
+
+}  // namespace
 
 ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element) {
   ImplicitField field;
@@ -11,6 +37,7 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element) {
   field.value = [&skeleton](const Vec3& p) { return skeleton.value(p); };
   field.skeleton_points = skeleton.skeleton_points(points_per_element);
   field.far_field = 0.0;  // every kernel family (SPEC §1, §4) decays to 0 at infinity
+  field.support_boxes = support_boxes_of(skeleton);
   return field;
 }
 

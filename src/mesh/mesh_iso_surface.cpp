@@ -102,7 +102,12 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   meter.report_progress(true);
   const auto level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); };
   TriangleMesh mesh = options.method == MeshMethod::grid
-                          ? detail::grid_surface_mesh({.level = level, .box = run.box, .voxel = run.size})
+                          ? detail::grid_surface_mesh({.level = level,
+                                                       .box = run.box,
+                                                       .voxel = run.size,
+                                                       .support_boxes = field.support_boxes ? &*field.support_boxes
+                                                                                            : nullptr,
+                                                       .empty_level = iso - 0.0})  // level(p) where f(p) = 0
                           : detail::cgal_surface_mesh({
                                 .level = level,
                                 .box = run.box,

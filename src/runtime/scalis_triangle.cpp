@@ -133,15 +133,20 @@ double ScalisTriangle::numerical(const Vec3& p, Vec3* grad) const {
                                       "triangle, or the coordinates too large)",
                                       detail::format_point(p)));
   }
-  const bool F_ok = r.F_error <= certified_tolerance * std::abs(r.F);
-  const bool gradient_ok = grad == nullptr || r.gradient_error <= certified_tolerance * r.gradient_scale;
+  // The scales the errors are certified against (absolute_floor, header).
+  const double F_scale = std::max(std::abs(r.F), absolute_floor * normalisation_);
+  const double largest_radius = std::max({radii_[0], radii_[1], radii_[2]});
+  const double gradient_scale = std::max(r.gradient_scale, absolute_floor * normalisation_ / largest_radius);
+  const bool F_ok = r.F_error <= certified_tolerance * F_scale;
+  const bool gradient_ok = grad == nullptr || r.gradient_error <= certified_tolerance * gradient_scale;
   if (!F_ok || !gradient_ok) {
     throw EvaluationError(fmt::format("numerical integration could not reach {} relative error at P = {}: "
-                                      "estimated error of F {:.3g} (F = {:.17g}){} after {} evaluations",
-                                      certified_tolerance, detail::format_point(p), r.F_error, r.F,
+                                      "estimated error of F {:.3g} (F = {:.17g}, scale {:.3g}){} after {} "
+                                      "evaluations",
+                                      certified_tolerance, detail::format_point(p), r.F_error, r.F, F_scale,
                                       grad == nullptr ? std::string()
                                                       : fmt::format(", of the gradient {:.3g} (scale {:.3g})",
-                                                                    r.gradient_error, r.gradient_scale),
+                                                                    r.gradient_error, gradient_scale),
                                       r.evaluations));
   }
   if (grad != nullptr) *grad = r.gradient;

@@ -110,7 +110,10 @@ void Skeleton::prepare() const {
     index->grids.resize(nodes_.size());
     for (NodeId id = 0; id < nodes_.size(); ++id) {
       const Node& node = nodes_[id];
-      if (node.blend.kind != BlendKind::sum || node.children.size() < min_indexed_children) continue;
+      // Every sum, union and plain super-elliptic node: a child outside its
+      // support is an exact zero in each (docs/field.md, "Union and
+      // super-elliptic nodes"). The angle-weighted blend has two children.
+      if (node.blend.angle_weighted || node.children.size() < min_indexed_children) continue;
       std::vector<std::optional<SupportBox>> boxes;
       bool any_bounded = false;
       for (const Child& child : node.children) {
@@ -181,10 +184,20 @@ FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const d
     case BlendKind::super_elliptic: {
       if (node.blend.angle_weighted) return evaluate_angle_blend(id, p, need, index);
       // Both operators need every child's value, and its gradient for ours.
+      // A child the index skips is an exact zero (f = 0, ∇f = 0), written
+      // in its place, so that the operator sees the same list as the plain
+      // evaluation (docs/field.md, "Union and super-elliptic nodes").
       const Need child_need = need == Need::value ? Need::value : Need::both;
-      std::vector<ScalarSample<double>> children;
-      children.reserve(node.children.size());
-      for (const Child& child : node.children) children.push_back(to_scalar(evaluate_child(child, p, child_need, index)));
+      std::vector<ScalarSample<double>> children(node.children.size());
+      const auto evaluate_at = [&](std::size_t position) {
+        children[position] = to_scalar(evaluate_child(node.children[position], p, child_need, index));
+      };
+      const std::optional<SupportGrid>* grid = index != nullptr ? &index->grids[id] : nullptr;
+      if (grid != nullptr && grid->has_value()) {
+        (*grid)->for_each_active(p, evaluate_at);
+      } else {
+        for (std::size_t position = 0; position < node.children.size(); ++position) evaluate_at(position);
+      }
       const std::span<const ScalarSample<double>> view(children);
       if (node.blend.kind == BlendKind::union_max) return from_scalar(blend_union(view));  // one child's sample
       const FieldSample result = from_scalar(blend_super_elliptic(node.blend, view));

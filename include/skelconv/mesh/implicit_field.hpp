@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "skelconv/geometry.hpp"
@@ -30,11 +31,18 @@ struct ImplicitField {
   /// lim f(p) as |p| → ∞. A surface f = iso with iso ≤ far_field is not
   /// bounded. Every skeleton kernel decays to 0, hence the default.
   double far_field = 0.0;
+  /// When set: f = 0 exactly at every point outside all these boxes (a
+  /// field of compact support). The grid method then skips the blocks of
+  /// nodes no box meets (docs/mesh.md, "The grid method"). Unset: no claim.
+  std::optional<std::vector<Eigen::AlignedBox3d>> support_boxes;
 };
 
 /// The field of `skeleton` (which must outlive the returned object), with
 /// `points_per_element` skeleton points per segment / polygon edge
-/// (Skeleton::skeleton_points).
+/// (Skeleton::skeleton_points). support_boxes is set when every primitive
+/// has compact support (field/support_box.hpp) and every blend node is a sum
+/// or a union: sums and maxima of exact zeros are zero (a super-elliptic
+/// node may add a constant where its children are 0, Ferley's r_k > c).
 ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element = 4);
 
 }  // namespace skelconv
