@@ -1,0 +1,102 @@
+"""Zanni et al. 2013, Figure 4 (a, b), shaded: segments of length 4 with
+constant τ = 1, 0.7, 0.5, 0.4, 0.3 (the section figure's), meshed by
+`skelconv mesh` and stacked from top (τ = 1) to bottom, classical (a) and
+SCALIS (b). Measured on the meshes: the half-length (largest |x|) and the
+radius at the middle (half the width of the section x = 0), against the
+same quantities found on the field by ray crossings (figlib/levelset.py), so
+the shaded shapes are those of the section figure."""
+import numpy as np
+
+from figlib import surface3d
+from figlib.claims import Claim, fmt
+from figlib.figure import Figure
+from figlib.levelset import crossing
+from figures.zanni2013_fig04 import DEGREE, ISO_CLASSICAL, LENGTH, SIGMA, TAUS_AB
+from figlib.zanni import classical_segment, scalis_segment
+
+STACK = 2.6                 # vertical distance between the stacked shapes (radius ≤ 1.1: no overlap)
+# A mesh vertex lies on the surface (to 1e-9 × the box); the largest |x| of the vertices
+# and a section's width are then within the mesher's facet distance, size/10, of the
+# surface's: the ray crossings must agree to that.
+MESH_DISTANCE_PER_SIZE = 0.1
+RAY_TOL = 1e-9              # relative accuracy of the ray crossings: far below the facet distance, few rounds
+
+FIGURE = Figure(
+    paper="Zanni et al. 2013", kind="Figure", number="4 (3-D)",
+    caption="Primitives of decreasing radius (Cauchy kernel): the classical formulation (a) makes the "
+            "surface contract towards the centre of the skeleton and then disappear, unlike the homothetic "
+            "formulation (b).",
+    original_caption="Primitives de rayon décroissant (noyau de Cauchy) : la formulation classique (a) entraîne "
+                     "la contraction de la surface vers le centre du squelette puis sa disparition, contrairement "
+                     "à la formulation homothétique (b).",
+    section="(a), (b) shaded: the section figure's segments (length 4, constant τ), stacked from τ = 1 (top) "
+            "to τ = 0.3 (bottom); an empty row is a surface that has disappeared",
+    kernel="Cauchy 4, σ = 1 (classical: c_s⁴ with s = 1/σ², weight τ)",
+    iso=f"classical {ISO_CLASSICAL:.6g} (radius 1 at τ = 1 on an infinite line); SCALIS 1",
+    view="the fixed camera of render3d, one framing for both panels", size=(640, 400))
+
+
+def primitive(kind, tau):
+    a, b = (-LENGTH / 2, 0, 0), (LENGTH / 2, 0, 0)
+    if kind == "classical":
+        return classical_segment(a, b, tau, tau, "cauchy", DEGREE, SIGMA), ISO_CLASSICAL
+    return scalis_segment(a, b, tau, tau, "cauchy", DEGREE, SIGMA), 1.0
+
+
+def measure(ctx, kind, tau, size):
+    """(mesh or None when the field stays below the level, {mesh and ray half-length and radius})."""
+    prim, level = primitive(kind, tau)
+    field = ctx.field_of([prim])
+    rays = crossing(field, [[0, 0, 0]] * 2, [[1.0, 0, 0], [0, 1.0, 0]], level, [0.0, 1e-9], 10.0, x_tol=RAY_TOL)
+    if np.isnan(rays[0]):       # f(centre) < level: no bracket, no surface (the field's maximum is at the centre)
+        return None, dict(ray_half=rays[0], ray_radius=rays[1], half=np.nan, radius=np.nan)
+    m = surface3d.mesh(ctx, {"primitives": [prim]}, level, size, f"fig4_{kind}_{tau:g}")
+    return m, dict(ray_half=rays[0], ray_radius=rays[1], half=float(np.max(np.abs(m.vertices[:, 0]))),
+                   radius=0.5 * surface3d.widths(m, 0, 1, [0.0])[0])
+
+
+def stacked(meshes):
+    """One Mesh of the shapes moved down by STACK per row (empty rows keep their place)."""
+    vertices, normals, faces, count = [], [], [], 0
+    for row, m in enumerate(meshes):
+        if m is None:
+            continue
+        vertices.append(m.vertices - [0, 0, STACK * row])
+        normals.append(m.normals)
+        faces.append(m.faces + count)
+        count += len(m.vertices)
+    return surface3d.Mesh(np.concatenate(vertices), np.concatenate(normals), np.concatenate(faces), {}, 0.0, "")
+
+
+def draw(ctx):
+    size = ctx.res(0.06, 0.2)
+    tolerance = MESH_DISTANCE_PER_SIZE * size
+    results = {kind: [measure(ctx, kind, tau, size) for tau in TAUS_AB] for kind in ("classical", "scalis")}
+    panels = {kind: stacked([m for m, _ in rows]) for kind, rows in results.items()}
+    # a frame holding the tallest stack (τ = 1 on top, 5 rows), shared by both panels
+    centre, radius = surface3d.common_frame([panels["scalis"]])
+    surface3d.panels(ctx, [(panels["classical"], f"(a) classical, iso {ISO_CLASSICAL:.4g}: τ = 1 … 0.3 ↓"),
+                           (panels["scalis"], "(b) SCALIS, iso 1: τ = 1 … 0.3 ↓")],
+                     FIGURE.size, frame=(centre, radius))
+    c = [r for _, r in results["classical"]]
+    s = [r for _, r in results["scalis"]]
+    meshes = [m for rows in results.values() for m, _ in rows if m is not None]
+    agree = all(abs(r["half"] - r["ray_half"]) <= tolerance and abs(r["radius"] - r["ray_radius"]) <= tolerance
+                for r in c + s if not np.isnan(r["half"]))
+    gone = [np.isnan(r["half"]) and np.isnan(r["ray_half"]) for r in c]
+    taus = ", ".join(map(str, TAUS_AB))
+    return [
+        Claim("(a) classical: as τ decreases the surface contracts towards the centre, then disappears",
+              f"mesh half-length (segment half-length {LENGTH / 2:g}) for τ = {taus}: " +
+              ", ".join("gone" if np.isnan(r["half"]) else fmt(r["half"]) for r in c),
+              bool(gone[-1] and all(a > b for a, b in zip([r["half"] for r in c[:3]], [r["half"] for r in c[1:3]]))
+                   and all(g or r["half"] < LENGTH / 2 for g, r in zip(gone[2:], c[2:])))),
+        Claim("(b) SCALIS: the surface only gets thinner (longer than the segment, radius ≈ τ)",
+              "mesh half-length: " + ", ".join(fmt(r["half"]) for r in s) + "; radius at the middle: " +
+              ", ".join(fmt(r["radius"]) for r in s),
+              all(r["half"] > LENGTH / 2 and abs(r["radius"] - t) < 0.1 * t for r, t in zip(s, TAUS_AB))),
+        Claim("the shaded shapes are the section figure's (mesh against ray crossings of the field)",
+              f"{len(meshes)} meshes, all closed: {all(m.closed for m in meshes)}; half-lengths and middle radii "
+              f"within the facet distance {fmt(tolerance)} of the rays': {agree}",
+              agree and all(m.closed for m in meshes)),
+    ]
