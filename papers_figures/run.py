@@ -107,16 +107,30 @@ def load_record(gallery_path, name):
             "claims": [Claim(**c) for c in record["claims"]]}
 
 
-def write_gallery(gallery_path):
-    """Rewrites the gallery from the records of every registered figure; 2 if one has none."""
+def write_gallery(gallery_path, compare=False):
+    """Rewrites the gallery from the records of every registered figure (2 if one
+    has none). compare: write nothing, return 1 unless the file already holds that
+    text and every record's image exists (the ctest that the committed gallery is current)."""
     records = [(name, load_record(gallery_path, name)) for name in registered()]
     missing = [name for name, r in records if r is None]
     if missing:
         print("run.py: no record yet for " + ", ".join(missing) + "; draw them first: scripts/figures.sh --only "
               + " ".join(missing) + " --gallery", file=sys.stderr)
         return 2
-    gallery.write(gallery_path, [r for _, r in records], pending())
-    print(f"wrote {gallery_path} ({len(records)} figures and tables)")
+    results = [r for _, r in records]
+    if not compare:
+        gallery.write(gallery_path, results, pending())
+        print(f"wrote {gallery_path} ({len(records)} figures and tables)")
+        return 0
+    images = [r["image"] for r in results if r["image"]]
+    absent = [i for i in images if not os.path.exists(record_paths(gallery_path, os.path.splitext(i)[0])[1])]
+    with open(gallery_path) as handle:
+        current = handle.read() == gallery.text(results, pending())
+    if absent or not current:
+        print(f"run.py: {gallery_path} is not what its records give" + (f"; images missing: {', '.join(absent)}"
+              if absent else "") + ": run scripts/figures.sh --gallery-only", file=sys.stderr)
+        return 1
+    print(f"{gallery_path}: current ({len(records)} records, {len(images)} images)")
     return 0
 
 
@@ -127,14 +141,15 @@ def main():
     parser.add_argument("--only", nargs="*", help="module names (default: every registered one)")
     parser.add_argument("--quick", action="store_true", help="reduced resolution (ctest)")
     parser.add_argument("--no-images", action="store_true", help="check claims only")
-    parser.add_argument("--check", action="store_true", help="exit 1 unless every claim is as expected")
+    parser.add_argument("--check", action="store_true", help="exit 1 unless every claim is as expected "
+                        "(with --gallery-only: unless the gallery is what the records give; nothing written)")
     parser.add_argument("--gallery", help="refresh the drawn figures' records and images beside this GALLERY.md, "
                                           "then rewrite it")
     parser.add_argument("--gallery-only", metavar="GALLERY", help="rewrite this GALLERY.md from the records, "
                                                                   "drawing nothing")
     args = parser.parse_args()
     if args.gallery_only:
-        return write_gallery(args.gallery_only)
+        return write_gallery(args.gallery_only, compare=args.check)
     if not args.skelconv or not args.out:
         parser.error("--skelconv and --out are needed to draw")
     if args.gallery and (args.quick or args.no_images):

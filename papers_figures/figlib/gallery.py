@@ -70,8 +70,8 @@ def entry(result, image_dir_rel):
     return "\n".join(lines)
 
 
-def write(path, results, pending, image_dir_rel="images"):
-    """Writes the gallery (no times or dates in it: the same results give the same bytes)."""
+def text(results, pending, image_dir_rel="images"):
+    """The gallery's text (no times or dates in it: the same results give the same bytes)."""
     parts = [HEADER]
     parts.append("## Contents\n\n" + "\n".join(
         f"- [{r['figure'].heading}](#{anchor(r['figure'].heading)})" for r in results) + "\n")
@@ -81,10 +81,14 @@ def write(path, results, pending, image_dir_rel="images"):
         parts.append("## Pending\n\nNot drawn yet, or drawn above only as a 2-D section (each line says what it waits for):\n\n" +
                      "\n".join(f"- **{heading}**: {what}" for heading, what in pending) + "\n")
     parts.append(RENDERER)
-    text = "\n".join(parts)
+    return "\n".join(parts)
+
+
+def write(path, results, pending, image_dir_rel="images"):
+    """Writes the gallery atomically."""
     tmp = path + ".tmp"
     with open(tmp, "w") as handle:
-        handle.write(text)
+        handle.write(text(results, pending, image_dir_rel))
     os.replace(tmp, path)
 
 
