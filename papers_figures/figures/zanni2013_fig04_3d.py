@@ -5,13 +5,14 @@ SCALIS (b). Measured on the meshes: the half-length (largest |x|) and the
 radius at the middle (half the width of the section x = 0), against the
 same quantities found on the field by ray crossings (figlib/levelset.py), so
 the shaded shapes are those of the section figure."""
+from dataclasses import replace
+
 import numpy as np
 
 from figlib import surface3d
 from figlib.claims import Claim, fmt
-from figlib.figure import Figure
 from figlib.levelset import crossing
-from figures.zanni2013_fig04 import DEGREE, ISO_CLASSICAL, LENGTH, SIGMA, TAUS_AB
+from figures.zanni2013_fig04 import DEGREE, ISO_CLASSICAL, LENGTH, SIGMA, TAUS_AB, FIGURE as SECTIONS
 from figlib.zanni import classical_segment, scalis_segment
 
 STACK = 2.6                 # vertical distance between the stacked shapes (radius ≤ 1.1: no overlap)
@@ -21,18 +22,10 @@ STACK = 2.6                 # vertical distance between the stacked shapes (radi
 MESH_DISTANCE_PER_SIZE = 0.1
 RAY_TOL = 1e-9              # relative accuracy of the ray crossings: far below the facet distance, few rounds
 
-FIGURE = Figure(
-    paper="Zanni et al. 2013", kind="Figure", number="4 (3-D)",
-    caption="Primitives of decreasing radius (Cauchy kernel): the classical formulation (a) makes the "
-            "surface contract towards the centre of the skeleton and then disappear, unlike the homothetic "
-            "formulation (b).",
-    original_caption="Primitives de rayon décroissant (noyau de Cauchy) : la formulation classique (a) entraîne "
-                     "la contraction de la surface vers le centre du squelette puis sa disparition, contrairement "
-                     "à la formulation homothétique (b).",
+FIGURE = replace(
+    SECTIONS, number="4 (3-D)",
     section="(a), (b) shaded: the section figure's segments (length 4, constant τ), stacked from τ = 1 (top) "
-            "to τ = 0.3 (bottom); an empty row is a surface that has disappeared",
-    kernel="Cauchy 4, σ = 1 (classical: c_s⁴ with s = 1/σ², weight τ)",
-    iso=f"classical {ISO_CLASSICAL:.6g} (radius 1 at τ = 1 on an infinite line); SCALIS 1",
+            "to τ = 0.3 (bottom); an empty row is a surface that has disappeared; (c) is the section figure's",
     view="the fixed camera of render3d, one framing for both panels", size=(640, 400))
 
 

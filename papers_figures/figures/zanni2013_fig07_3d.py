@@ -5,31 +5,24 @@ against SCALIS (bottom row). Measured: how far each scaled-back mesh is from
 the unscaled surface, by the first-order distance |f − c| / |∇f| of its
 vertices to the level set of the unscaled field (exact to second order for
 points near the surface, and an estimate only when the shapes differ)."""
+from dataclasses import replace
+
 import numpy as np
 
 from figlib import surface3d
 from figlib.claims import Claim, fmt
-from figlib.figure import Figure, load_skeleton, scaled_primitives
-from figures.zanni2013_fig07 import ISO_CLASSICAL, SCALES, SIZE, SKELETON, classical_from
+from figlib.figure import load_skeleton, scaled_primitives
+from figures.zanni2013_fig07 import FIGURE as SECTIONS, ISO_CLASSICAL, SCALES, SIZE, SKELETON, classical_from
 
 # The vertices of a mesh are on its surface to 1e-9 × the box diagonal (~10 × scale):
 # scaled back, on the unscaled surface to ~1e-8 / SIZE if the shapes are similar.
 SIMILAR = 1e-6
 DIFFERENT = 0.02            # the section figure's threshold for "not similar"
 
-FIGURE = Figure(
-    paper="Zanni et al. 2013", kind="Figure", number="7 (3-D)",
-    caption="A homothety applied both to the dimensions of a convolution skeleton and to the associated weights τ. "
-            "The classical formulation (a) does not generate similar shapes, unlike the homothetic formulation (b). "
-            "The kernel is Cauchy 4 with σ = 1/2. The ratio of the first homothety is 1/3, that of the second 1/2.",
-    original_caption="Application d'une homothétie à la fois aux dimensions d'un squelette de convolution et aux "
-                     "poids τ associés. La formulation classique (a) ne génère pas des formes similaires contrairement "
-                     "à la formulation homothétique (b). Le noyau utilisé est Cauchy 4 avec σ = 1/2. Le rapport de la "
-                     "première homothétie est 1/3, celui de la seconde est 1/2.",
-    section="shaded surfaces of the section figure's T skeleton (our own) at scales 1, 1/3, 1/6, each drawn scaled "
-            "back to size 1",
-    skeletons=[SKELETON], kernel="Cauchy 4, σ = 1/2 (classical: c_s⁴ with s = 4, weight τ)",
-    iso=f"SCALIS 1; classical {ISO_CLASSICAL:.5g} (radius 1 around the long segment at scale 1)",
+FIGURE = replace(
+    SECTIONS, number="7 (3-D)",
+    section="shaded surfaces of the section figure's T skeleton (our own) at scales 1, 1/3, 1/6, each drawn "
+            "scaled back to size 1",
     view="the fixed camera of render3d, one framing for all six panels", size=(640, 330))
 
 

@@ -30,7 +30,7 @@ FIGURE = Figure(
     section="our meshes of our skeletons of figs 19b and 20c and of an ant of our own (the paper's skeletons are "
             "not given, nor its ant); the image is our ant's mesh",
     skeletons=[ANT], kernel="SCALIS Cauchy 4, σ = 1", iso="1", view="the fixed camera of render3d",
-    size=(640, 360))
+    size=(640, 300))
 
 
 def machine():
@@ -86,8 +86,8 @@ def draw(ctx):
                   f"spatial culling; the Cauchy kernel has no compact support). The ant's field costs "
                   f"{per_evaluation * 1e6:.1f} µs per evaluation of its 24 segments (field time ÷ evaluations)."]
     ctx.markdown = "\n".join(lines)
-    surface3d.panels(ctx, [(ant, f"our ant: {ant.stats['triangles']} triangles ({ant.command.split(' -o')[0]})")],
-                     FIGURE.size)
+    surface3d.panels(ctx, [(ant, f"our ant, 24 SCALIS segments: {ant.stats['triangles']} triangles "
+                                 f"(--method grid --size {rows[-1][3]:g})")], FIGURE.size)
     ctx.log("\n" + ctx.markdown)
     large = int(meshes[-2].stats["triangles"])
     return [Claim("every mesh of the table is a closed manifold",
