@@ -17,7 +17,7 @@ LENGTH = 4.0
 TAUS_AB = (1.0, 0.7, 0.5, 0.4, 0.3)
 # Classical level: the one giving radius 1 around an infinite line of weight 1.
 ISO_CLASSICAL = classical_cauchy_line(1.0, 1.0, DEGREE, SIGMA)
-SCALIS_STRIDE = 3        # full run: SCALIS radius at every 3rd τ of the curve (14 of 40 points)
+SCALIS_STRIDE = 3        # full run: SCALIS radius at every 3rd τ of the curve (14 of 40 points; quick: 6 of 12)
 LONG = 400.0             # "infinite" segment for (c): the SCALIS error falls like (L/τ)^(1−i)
 
 FIGURE = Figure(
@@ -77,7 +77,7 @@ def draw(ctx):
     measured["classical"] = crossing(unit, np.zeros((len(taus), 3)), up, ISO_CLASSICAL / taus, 1e-9, 20.0)
     # SCALIS: one field per τ (one `skelconv eval` per round each), so every SCALIS_STRIDE-th τ
     # of the full run only: r(τ) is a straight line, and the claim is its distance from r = τ
-    scalis_taus = taus[::ctx.res(SCALIS_STRIDE, 1)]
+    scalis_taus = taus[::ctx.res(SCALIS_STRIDE, 2)]
     measured["scalis"] = np.array([
         crossing(ctx.field_of([scalis_segment(long_a, long_b, tau, tau, "cauchy", DEGREE, SIGMA)]),
                  [[0, 0, 0]], up, 1.0, 1e-9, 20.0)[0] for tau in scalis_taus])

@@ -79,7 +79,7 @@ def draw(ctx):
         tau = TAU0 * (1 - middle[:, 0] / LENGTH)
         measured[kind] = dict(tip=float(m.vertices[:, 0].max()), dev=float(np.max(np.abs(r - tau))))
     # the cross-check runs in ctest too, at a smaller picture (the claim needs no image file)
-    w, h = ctx.res((320, 228), (160, 114))
+    w, h = ctx.res((320, 228), (120, 86))
     frame = surface3d.common_frame([classical, scalis])     # both panels at one scale and place
     agree, mesh_pixels, iso_pixels = cross_check(classical, frame, w, h)
     claims = [Claim("cross-check: the mesh of (a) and POV-Ray's isosurface{} of the same field "
