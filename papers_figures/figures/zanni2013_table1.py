@@ -62,7 +62,8 @@ def draw(ctx):
             ("Fig. 20(c), finer, grid", "fig20c", fig20c, fine, "grid"),
             ("Ant (ours, 24 segments), grid", "ant", load_skeleton(ANT), ctx.res(0.05, 0.2), "grid")]
     lines = [f"Our machine: {machine()}, {os.cpu_count()} cores (`lscpu`; the build machine, shared with other "
-             f"jobs while these times were taken). `--method cgal` runs on 1 thread, `--method grid` (OpenVDB) on "
+             f"jobs while these times were taken: load average {os.getloadavg()[0]:.1f} when the table started). "
+             "`--method cgal` runs on 1 thread, `--method grid` (OpenVDB) on "
              f"every core. The paper's: {PAPER_MACHINE}. **Times are machine- and load-dependent**; the "
              "meshers differ too (the paper's marching triangles is non-adaptive; ours refines Delaunay "
              "triangulations and projects every vertex with the exact gradient).", "",
