@@ -9,9 +9,9 @@
       the same pixels from both files, twice the same bytes, the sphere drawn
       (centre coloured, corners background), and the same silhouette as
       POV-Ray's own isosurface{} of the sphere (the camera and axis conventions);
-  smoke_test.py 3d-mesh --skelconv BIN --out DIR   meshes a real skeleton (the
-      SCALIS cone of Zanni fig. 5b) with `skelconv mesh` at a coarse size and
-      renders it twice: closed, drawn, the same bytes."""
+  smoke_test.py 3d-mesh --skelconv BIN --out DIR   draws one registered shaded
+      figure (Hubert 2012 Figure 6 (3-D): `skelconv mesh` + POV-Ray) twice at
+      quick resolution, image on: 640 px wide, drawn, the same bytes."""
 import argparse
 import os
 import subprocess
@@ -28,6 +28,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 FIGURE_2D = "hubert2012_fig03"
+FIGURE_3D = "hubert2012_fig06_3d"
 SIZE_3D = (160, 120)
 
 
@@ -41,20 +42,27 @@ def read(path):
         return handle.read()
 
 
-def smoke_2d(args):
+def smoke_figure(args, name):
+    """Draws the registered figure twice (quick, image on): (PNG path, pixels) after checking
+    that it is 640 px wide, not blank, and the same bytes both times."""
     images = []
     for run in ("a", "b"):
         out = os.path.join(args.out, run)
         subprocess.run([sys.executable, os.path.join(HERE, "run.py"), "--skelconv", args.skelconv, "--out", out,
-                        "--only", FIGURE_2D, "--quick"], check=True)
-        images.append(os.path.join(out, f"{FIGURE_2D}.png"))
+                        "--only", name, "--quick"], check=True)
+        images.append(os.path.join(out, f"{name}.png"))
     pixels = plt.imread(images[0])
     if pixels.shape[1] != 640:
         fail(f"{images[0]} is {pixels.shape[1]} px wide, not 640")
     if pixels[..., :3].std() < 0.05:
         fail(f"{images[0]} looks blank")
     if read(images[0]) != read(images[1]):
-        fail("two runs gave different PNG bytes")
+        fail(f"two runs of {name} gave different PNG bytes")
+    return images[0], pixels
+
+
+def smoke_2d(args):
+    _, pixels = smoke_figure(args, FIGURE_2D)
     print(f"smoke_test 2d: {FIGURE_2D} ok, {pixels.shape[1]}×{pixels.shape[0]}, deterministic")
 
 
@@ -108,26 +116,12 @@ def smoke_3d(args):
 
 
 def smoke_3d_mesh(args):
-    from figlib import surface3d
-    from figlib.figure import Context
-    from figlib.zanni import scalis_segment
-    os.makedirs(args.out, exist_ok=True)
-    ctx = Context(skelconv=args.skelconv, quick=True, image_path=None)
-    skeleton = {"primitives": [scalis_segment([0, 0, 0], [4, 0, 0], 1.0, 0.0, "cauchy", 4, 1.0)]}
-    m = surface3d.mesh(ctx, skeleton, 1.0, 0.3, "smoke_cone")
-    if not m.closed or len(m.faces) < 100:
-        fail(f"the cone's mesh is not a closed manifold of ≥ 100 triangles: {m.stats}")
-    pngs = [os.path.join(args.out, f"cone_{run}.png") for run in ("a", "b")]
-    for png in pngs:
-        surface3d.render_one(m, png, *SIZE_3D)
-    if read(pngs[0]) != read(pngs[1]):
-        fail("two renders of the same mesh gave different bytes")
-    pixels = plt.imread(pngs[0])[..., :3]
-    drawn = float(np.mean(pixels.min(axis=2) < 0.99))
-    if not 0.05 < drawn < 0.9 or pixels[0, 0].min() < 0.99:
-        fail(f"the cone covers {drawn:.1%} of the picture, corner {pixels[0, 0]}")
-    print(f"smoke_test 3d-mesh: {len(m.faces)} triangles, closed, rendered {SIZE_3D[0]}×{SIZE_3D[1]} "
-          f"({drawn:.1%} drawn), deterministic")
+    _, pixels = smoke_figure(args, FIGURE_3D)
+    drawn = float(np.mean(pixels[..., :3].min(axis=2) < 0.99))
+    if not 0.05 < drawn < 0.9:
+        fail(f"{FIGURE_3D}: the surfaces cover {drawn:.1%} of the picture")
+    print(f"smoke_test 3d-mesh: {FIGURE_3D} ok, {pixels.shape[1]}×{pixels.shape[0]} ({drawn:.1%} drawn), "
+          "deterministic")
 
 
 def main():

@@ -12,10 +12,18 @@ numbers we measured. A claim marked **disagrees** is one our numbers do not
 support; the note says why. ctest (`ctest -L figures`) re-checks every claim
 at reduced resolution.
 
+- Everything: `scripts/figures.sh` (about 10 minutes on 2 cores).
+- Some figures, their entries refreshed: `scripts/figures.sh --only NAME... --gallery`.
+- This page alone, from the committed records (`results/NAME.json`) and
+  images, in seconds: `scripts/figures.sh --gallery-only`.
+- A new figure is one file plus one line: `figures/NAME.py` (a `FIGURE`
+  and a `draw(ctx)` returning its checked claims) and `NAME` in
+  `figures.txt`; see [README.md](README.md).
+
 """
 
 
-RENDERER = """### The 3-D renderer, ready for `skelconv mesh`
+RENDERER = """## The 3-D renderer
 
 `papers_figures/render3d/render_mesh.py MESH.ply OUT.png` renders a mesh written by
 `skelconv::write_mesh` with POV-Ray (`mesh2` with the per-vertex normals; one camera
@@ -62,8 +70,8 @@ def entry(result, image_dir_rel):
     return "\n".join(lines)
 
 
-def write(path, results, pending, image_dir_rel="images"):
-    """Writes the gallery (no times or dates in it: the same results give the same bytes)."""
+def text(results, pending, image_dir_rel="images"):
+    """The gallery's text (no times or dates in it: the same results give the same bytes)."""
     parts = [HEADER]
     parts.append("## Contents\n\n" + "\n".join(
         f"- [{r['figure'].heading}](#{anchor(r['figure'].heading)})" for r in results) + "\n")
@@ -72,11 +80,15 @@ def write(path, results, pending, image_dir_rel="images"):
     if pending:
         parts.append("## Pending\n\nNot drawn yet, or drawn above only as a 2-D section (each line says what it waits for):\n\n" +
                      "\n".join(f"- **{heading}**: {what}" for heading, what in pending) + "\n")
-        parts.append(RENDERER)
-    text = "\n".join(parts)
+    parts.append(RENDERER)
+    return "\n".join(parts)
+
+
+def write(path, results, pending, image_dir_rel="images"):
+    """Writes the gallery atomically."""
     tmp = path + ".tmp"
     with open(tmp, "w") as handle:
-        handle.write(text)
+        handle.write(text(results, pending, image_dir_rel))
     os.replace(tmp, path)
 
 

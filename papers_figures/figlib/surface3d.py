@@ -80,23 +80,26 @@ def render_one(mesh_, png, width, height, frame=None, colours=None):
     povray.render(mesh_.vertices, mesh_.normals, mesh_.faces, png, width, height, frame=frame, colours=colours)
 
 
-def panels(ctx, items, size, shared_frame=True, rows=1):
-    """Renders [(Mesh, title), ...] side by side (rows × ceil(n/rows) panels) into
-    ctx.image_path at size (width, height) px. shared_frame: one camera framing for all
-    panels, centred on each mesh's own centre, so that sizes compare."""
+def panels(ctx, items, size, shared_frame=True, rows=1, frame=None):
+    """Renders [(Mesh, title), ...] (or (Mesh, title, per-vertex colours)) side by side
+    (rows × ceil(n/rows) panels) into ctx.image_path at size (width, height) px.
+    shared_frame: one camera framing radius for all panels, centred on each mesh's own
+    centre, so that sizes compare; frame = (centre, radius): that framing for every panel."""
     if ctx.image_path is None:
         return
     cols = -(-len(items) // rows)
     title_px = 22
     width, height = size[0] // cols, size[1] // rows - title_px
-    radius = max(povray.framing(m.vertices)[1] for m, _ in items)
+    radius = max(povray.framing(item[0].vertices)[1] for item in items)
     fig, axes = plot.new_figure(size, rows, cols, squeeze=False)
     fig.subplots_adjust(left=0, right=1, bottom=0, top=1 - title_px / size[1], wspace=0, hspace=title_px / height)
     with tempfile.TemporaryDirectory() as tmp:
-        for k, ((m, title), ax) in enumerate(zip(items, axes.flat)):
+        for k, (item, ax) in enumerate(zip(items, axes.flat)):
+            m, title = item[0], item[1]
+            colours = item[2] if len(item) > 2 else None
             png = os.path.join(tmp, f"panel{k}.png")
-            frame = (povray.framing(m.vertices)[0], radius) if shared_frame else None
-            render_one(m, png, width, height, frame)
+            own = frame if frame is not None else (povray.framing(m.vertices)[0], radius) if shared_frame else None
+            render_one(m, png, width, height, own, colours)
             ax.imshow(plot.plt.imread(png), interpolation="nearest")
             ax.set_title(title)
     for ax in axes.flat:

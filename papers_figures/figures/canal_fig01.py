@@ -71,6 +71,16 @@ def canal_mesh(ctx, samples):
                           f"skelconv canal canal.json --mesh canal.ply (samples {samples})")
 
 
+def colour_bar(fig, above, span):
+    """The δ/τ scale of panel (b) (and of the dots of (c)), in a strip under panel (b)."""
+    box = above.get_position()
+    cax = fig.add_axes([box.x0 + 0.1 * box.width, 0.13, 0.8 * box.width, 0.035])
+    mappable = plot.plt.cm.ScalarMappable(norm=plot.matplotlib.colors.Normalize(-span, span), cmap="coolwarm")
+    bar = fig.colorbar(mappable, cax=cax, orientation="horizontal")
+    bar.set_label("δ/τ (blue: inside the canal surface, red: outside)", fontsize=7)
+    bar.ax.tick_params(labelsize=7)
+
+
 def draw(ctx):
     canal = canal_mesh(ctx, ctx.res(96, 24))
     scalis = surface3d.mesh(ctx, {"primitives": [scalis_segment(A, B, TAU0, TAU1, "cauchy", DEGREE, SIGMA)]}, 1.0,
@@ -96,6 +106,7 @@ def draw(ctx):
                 ax.imshow(plot.plt.imread(png), interpolation="nearest")
                 ax.set_title(title)
                 ax.set_axis_off()
+        colour_bar(fig, axes[0, 1], span)
         ax = axes[0, 2]
         ax.scatter(x, rel, c=rel, cmap="coolwarm", vmin=-span, vmax=span, s=1)
         ax.axvspan(x[middle].min(), x[middle].max(), color="0.9", zorder=0, label="middle: t in [¼, ¾]")

@@ -1,6 +1,6 @@
 """Hubert 2012, Figure 6: a regular pentagon and its p⁴ convolution surface,
-drawn as the outline in the polygon's plane and a section (the shaded
-surface waits for `skelconv mesh`)."""
+drawn as the outline in the pentagon's plane and a section (the shaded
+surface: hubert2012_fig06_3d)."""
 from figlib.figure import Figure
 from figlib.polygon_figure import TAU, draw_polygon_p4
 

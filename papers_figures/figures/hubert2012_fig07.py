@@ -1,6 +1,6 @@
 """Hubert 2012, Figure 7: a non-convex polygon and its p⁴ convolution
 surface, drawn as the outline in the polygon's plane and a section (the
-shaded surface waits for `skelconv mesh`)."""
+shaded surface: hubert2012_fig07_3d)."""
 from figlib.figure import Figure
 from figlib.polygon_figure import TAU, draw_polygon_p4
 

@@ -125,7 +125,13 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
     if (!used_cells.insert(cell_of(p, box.lo, options.spacing)).second) continue;
     std::vector<Vec3> crossings;
     for (const Vec3& d : directions) {
-      if (auto crossing = ray_crossing(field, iso, box, p, d, options)) crossings.push_back(*crossing);
+      // A ray in the plane of an inverse-kernel polygon may land on one of its
+      // edges or vertices (f infinite, refused as above): that ray gives no
+      // seed; the other rays and skeleton points seed the component.
+      try {
+        if (auto crossing = ray_crossing(field, iso, box, p, d, options)) crossings.push_back(*crossing);
+      } catch (const EvaluationError&) {
+      }
     }
     grid.add_from_one_source(crossings, seeds);
   }
