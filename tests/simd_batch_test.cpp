@@ -45,6 +45,10 @@ std::vector<Vec3> form_covering_points() {
   for (int k = 0; k < 64; ++k) around(1.3 + 0.25 * u(random), 0.02 * (1 + u(random)));   // beyond B
   for (int k = 0; k < 64; ++k) around(-0.3 + 0.25 * u(random), 0.02 * (1 + u(random)));  // beyond A
   for (int k = 0; k < 32; ++k) around(0.5 + 2.0 * u(random), 0.3 + 0.3 * u(random));     // mixed
+  for (int k = 0; k < 256; ++k) {  // anywhere in the box grown by 1.5 (the compact rims included)
+    const Vec3 lo = A.cwiseMin(B) - Vec3::Constant(1.5), hi = A.cwiseMax(B) + Vec3::Constant(1.5);
+    points.push_back(lo + (0.5 * (Vec3(u(random), u(random), u(random)) + Vec3::Ones())).cwiseProduct(hi - lo));
+  }
   // Exactly on the segment (inverse: +inf): its ends, where AB × AP is 0 in
   // doubles. (A + t AB for other t is off the line by rounding, ~1e-17: a
   // point where f ~ 1e33 and ∇f is rounding noise, on either path.)

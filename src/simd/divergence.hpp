@@ -10,8 +10,14 @@
 // hold correct results; the set-aside lanes are re-run together with lanes of
 // the same key (group_runner-inl.hpp), which agree on every branch up to that
 // point, so each form runs vectorised on the lanes that need it. Every group
-// run finishes at least one lane (the majority side is never empty), so the
-// re-runs terminate.
+// run finishes at least one lane (the majority side is never empty, and the
+// lanes handed to the scalar path are finished too), so the re-runs
+// terminate.
+//
+// Forms whose loops run a number of steps that depends on the point (the
+// Miller recurrences of stable_recurrence.hpp) are not vectorised: their
+// helpers, called on Lanes, hand every active lane to the scalar path
+// (hand_to_scalar) and the group goes on with none active.
 #pragma once
 
 #include <bit>
@@ -51,8 +57,17 @@ class Divergence {
     return side;
   }
 
+  /// The active lanes need a form that is evaluated point by point: they are
+  /// marked for the scalar path and leave the active set.
+  void hand_to_scalar() {
+    to_scalar_ |= active_;
+    active_ = 0;
+  }
+
   /// Lane k is active (its results are valid) when bit k is set.
   unsigned active() const { return active_; }
+  /// Lane k must be evaluated by the scalar path when bit k is set.
+  unsigned to_scalar() const { return to_scalar_; }
   /// The key of a lane set aside: lanes with equal keys took the same
   /// branches up to the one where they left.
   std::uint64_t set_aside_key(std::size_t lane) const { return set_aside_key_[lane]; }
@@ -65,6 +80,7 @@ class Divergence {
   }
 
   unsigned active_;
+  unsigned to_scalar_ = 0;
   std::uint64_t key_ = 1;
   std::uint64_t set_aside_key_[max_lanes] = {};
 };

@@ -56,12 +56,11 @@ class SetAside {
 };
 
 /// Evaluates the points `work` (indices into `out`) with `group`, a callable
-/// bool(const std::uint32_t* points, Divergence&, GroupResult&) that
+/// void(const std::uint32_t* points, Divergence&, GroupResult&) that
 /// evaluates lane k at points[k] (all max_lanes slots are filled: a short
-/// group repeats its first point) and returns the kernel's "generic form
-/// applies" result for the active lanes. Lanes for which it returns false,
-/// or whose results are not all finite, are appended to `scalar` (the scalar
-/// path then computes them, or throws its error).
+/// group repeats its first point). Lanes the kernel handed to the scalar
+/// path, or whose results are not all finite, are appended to `scalar` (the
+/// scalar path then computes them, or throws its error).
 template <class Group>
 void run_lanes(std::vector<std::uint32_t> work, Group& group, FieldSoA out, std::vector<std::uint32_t>& scalar,
                BatchCounts& counts) {
@@ -74,14 +73,16 @@ void run_lanes(std::vector<std::uint32_t> work, Group& group, FieldSoA out, std:
       for (std::size_t k = 0; k < max_lanes; ++k) points[k] = work[begin + (k < count ? k : 0)];
       Divergence divergence(count);
       GroupResult r;
-      const bool generic = group(points, divergence, r);
+      group(points, divergence, r);
       ++counts.group_runs;
       for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t p = points[k];
-        if (!(divergence.active() >> k & 1u)) {
+        if (divergence.to_scalar() >> k & 1u) {
+          scalar.push_back(p);
+        } else if (!(divergence.active() >> k & 1u)) {
           set_aside.add(divergence.set_aside_key(k), p);
           ++counts.set_aside;
-        } else if (generic && std::isfinite(r.f[k]) && std::isfinite(r.gx[k]) && std::isfinite(r.gy[k]) &&
+        } else if (std::isfinite(r.f[k]) && std::isfinite(r.gx[k]) && std::isfinite(r.gy[k]) &&
                    std::isfinite(r.gz[k])) {
           out.f[p] = r.f[k];
           out.gx[p] = r.gx[k];

@@ -22,6 +22,11 @@
 //     (divergence-inl.hpp): lanes that disagree with the group are set aside
 //     and re-run later with lanes that take their side, so every form is
 //     evaluated vectorised;
+//   * the helpers whose loops run a point-dependent number of steps (the
+//     Miller recurrences) are specialised for Lanes to hand the active lanes
+//     to the scalar path (end of this file), so the generated full
+//     `<name>_f_and_grad` runs on Lanes: its other forms vectorised, with
+//     the scalar path's own arithmetic;
 //   * Boost's Gauss–Legendre tables exist for floating-point types only: the
 //     specialisation at the end reuses the double tables (nodes broadcast).
 //
@@ -42,6 +47,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "skelconv/gauss_moments.hpp"
+#include "skelconv/stable_recurrence.hpp"
 #include "src/simd/divergence.hpp"
 #include "src/simd/sleef_declarations.hpp"
 
@@ -154,6 +161,41 @@ namespace boost::math::quadrature {
 template <unsigned N, class Policy>
 class gauss<skelconv::simd::HWY_NAMESPACE::Lanes, N, Policy> : public gauss<double, N, Policy> {};
 }  // namespace boost::math::quadrature
+
+namespace skelconv {
+// The helpers whose loops run a point-dependent number of steps
+// (stable_recurrence.hpp, gauss_moments.hpp): on Lanes they hand every
+// active lane to the scalar path (Divergence::hand_to_scalar), which
+// evaluates those points with the same generated function on double.
+#define SimdLanes simd::HWY_NAMESPACE::Lanes  // this target's (an alias would clash across targets)
+template <>
+inline SimdLanes J_downward<SimdLanes>(int, const SimdLanes&, const SimdLanes&, const SimdLanes&, const SimdLanes&,
+                                       const SimdLanes&, const SimdLanes&) {
+  simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
+  return SimdLanes(0.0);
+}
+template <>
+inline SimdLanes J_upward_compact<SimdLanes>(int, const SimdLanes&, const SimdLanes&, const SimdLanes&,
+                                             const SimdLanes&, const SimdLanes&, const SimdLanes&) {
+  simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
+  return SimdLanes(0.0);
+}
+template <>
+inline void segment_moments_beyond_end<SimdLanes>(int m_lo, int m_hi, int k_max, const SimdLanes&, const SimdLanes&,
+                                                  const SimdLanes&, const SimdLanes&, const SimdLanes&,
+                                                  SimdLanes* out) {
+  simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
+  for (int j = 0; j < ((m_hi - m_lo) / 2 + 1) * (k_max + 1); ++j) out[j] = SimdLanes(0.0);
+}
+template <>
+inline void segment_moments_gauss_panels<SimdLanes>(int m_lo, int m_hi, int k_max, const SimdLanes&,
+                                                    const SimdLanes&, const SimdLanes&, const SimdLanes&,
+                                                    SimdLanes* out) {
+  simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
+  for (int j = 0; j < ((m_hi - m_lo) / 2 + 1) * (k_max + 1); ++j) out[j] = SimdLanes(0.0);
+}
+#undef SimdLanes
+}  // namespace skelconv
 
 namespace std {
 /// What gauss_panel_points<T>() asks of a scalar type: the digits of double.

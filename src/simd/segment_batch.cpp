@@ -6,10 +6,11 @@
 // clip of clip_to_ball, operation for operation), those the scalar path must
 // see (inverse kernels: P on the segment's line, where the runtime decides
 // between +inf and a finite value) and the rest, with their clip interval;
-// the rest run through the generated `<name>_f_and_grad_generic` on Lanes,
-// a group of 2–8 points at a time (group_runner-inl.hpp); the points whose
-// form is not generic (Miller recurrences beyond an end) and the other
-// scalar points go to Segment::value_and_gradient.
+// the rest run through the generated `<name>_f_and_grad` (the function the
+// scalar path calls) on Lanes, a group of 4 or 8 points at a time
+// (group_runner-inl.hpp); the points whose form is a Miller recurrence
+// (beyond an end, near the line) and the other scalar points go to
+// Segment::value_and_gradient.
 //
 // Compiled once per Highway target (foreach_target.h re-includes this file).
 #undef HWY_TARGET_INCLUDE
@@ -45,11 +46,11 @@ struct ChunkClip {
   double t1[chunk_size];
 };
 
-/// f and ∇f at points[0..max_lanes) by the generated Generic on Lanes. The
+/// f and ∇f at points[0..max_lanes) by the generated Full on Lanes. The
 /// kernel template is defined outside this target's region; `flatten`
 /// inlines it here, so that it is compiled for this target (lanes-inl.hpp).
-template <auto Generic>
-__attribute__((flatten)) bool segment_group(const SegmentInput<double>& segment, PointsSoA points,
+template <auto Full>
+__attribute__((flatten)) void segment_group(const SegmentInput<double>& segment, PointsSoA points,
                                             const ChunkClip& clip, std::size_t chunk_begin,
                                             const std::uint32_t* lanes, Divergence& divergence, GroupResult& r) {
   const LaneTag d;
@@ -76,23 +77,22 @@ __attribute__((flatten)) bool segment_group(const SegmentInput<double>& segment,
   Lanes f;
   std::array<Lanes, 3> g;
   current_divergence = &divergence;
-  const bool generic = Generic(in, f, g);
+  f = Full(in, g);
   current_divergence = nullptr;
   hn::Store(f.vec(), d, r.f);
   hn::Store(g[0].vec(), d, r.gx);
   hn::Store(g[1].vec(), d, r.gy);
   hn::Store(g[2].vec(), d, r.gz);
-  return generic;
 }
 
-using GroupFunction = bool (*)(const SegmentInput<double>&, PointsSoA, const ChunkClip&, std::size_t,
+using GroupFunction = void (*)(const SegmentInput<double>&, PointsSoA, const ChunkClip&, std::size_t,
                                const std::uint32_t*, Divergence&, GroupResult&);
 
 /// The group function of the listed kernel (segment_kernels.hpp), or null.
 GroupFunction find_group(KernelFamily family, int degree, int weight_degree) {
 #define SKELCONV_SIMD_ENTRY(FAMILY, I, W)                                                          \
   if (family == KernelFamily::FAMILY && degree == I && weight_degree == W)                        \
-    return &segment_group<&generated::segment_##FAMILY##_i##I##_w##W##_f_and_grad_generic<Lanes>>;
+    return &segment_group<&generated::segment_##FAMILY##_i##I##_w##W##_f_and_grad<Lanes>>;
   SKELCONV_SIMD_SEGMENT_KERNELS(SKELCONV_SIMD_ENTRY)
 #undef SKELCONV_SIMD_ENTRY
   return nullptr;
@@ -189,7 +189,7 @@ bool segment_batch(const SegmentInput<double>& segment, KernelFamily family, int
     work.clear();
     sort_points(segment, family, points, begin, end, clip, out, work, scalar, counts);
     auto group = [&](const std::uint32_t* lanes, Divergence& divergence, GroupResult& r) {
-      return group_function(segment, points, clip, begin, lanes, divergence, r);
+      group_function(segment, points, clip, begin, lanes, divergence, r);
     };
     run_lanes(work, group, out, scalar, counts);
   }

@@ -3,8 +3,6 @@
 // Each entry is compiled once per target (three times), so the list holds the
 // kernels the benchmarks and the common skeletons use; any other kernel is
 // evaluated point by point by the scalar path (same results, no speed-up).
-// The generic form of every entry is in the generated table
-// (`<name>_f_and_grad_generic`); the other forms go to the scalar path.
 #pragma once
 
 #define SKELCONV_SIMD_SEGMENT_KERNELS(X)                                                    \
