@@ -14,10 +14,10 @@
 // lanes handed to the scalar path are finished too), so the re-runs
 // terminate.
 //
-// Forms whose loops run a number of steps that depends on the point (the
-// Miller recurrences of stable_recurrence.hpp) are not vectorised: their
-// helpers, called on Lanes, hand every active lane to the scalar path
-// (hand_to_scalar) and the group goes on with none active.
+// A lane can also be handed to the scalar path (hand_to_scalar,
+// hand_lane_to_scalar): where a helper cannot run vectorised (the Gauss
+// panels of the SCALIS segments) or refuses a lane (a Miller recurrence that
+// would not converge: the scalar path then reports the error).
 #pragma once
 
 #include <bit>
@@ -62,6 +62,12 @@ class Divergence {
   void hand_to_scalar() {
     to_scalar_ |= active_;
     active_ = 0;
+  }
+
+  /// The same for active lane `lane` alone.
+  void hand_lane_to_scalar(std::size_t lane) {
+    to_scalar_ |= active_ & (1u << lane);
+    active_ &= ~(1u << lane);
   }
 
   /// Lane k is active (its results are valid) when bit k is set.

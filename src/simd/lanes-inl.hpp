@@ -22,11 +22,10 @@
 //     (divergence-inl.hpp): lanes that disagree with the group are set aside
 //     and re-run later with lanes that take their side, so every form is
 //     evaluated vectorised;
-//   * the helpers whose loops run a point-dependent number of steps (the
-//     Miller recurrences) are specialised for Lanes to hand the active lanes
-//     to the scalar path (end of this file), so the generated full
-//     `<name>_f_and_grad` runs on Lanes: its other forms vectorised, with
-//     the scalar path's own arithmetic;
+//   * the generated full `<name>_f_and_grad` runs on Lanes, every form
+//     vectorised with the scalar path's own arithmetic: the Miller
+//     recurrences run as many steps as the neediest lane (miller_steps, end
+//     of this file); pow(x, n) is the C library's, lane by lane;
 //   * Boost's Gauss–Legendre tables exist for floating-point types only: the
 //     specialisation at the end reuses the double tables (nodes broadcast).
 //
@@ -43,11 +42,13 @@
 #include <hwy/highway.h>
 
 #include <boost/math/quadrature/gauss.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
 #include "skelconv/gauss_moments.hpp"
+#include "skelconv/not_converged.hpp"
 #include "skelconv/stable_recurrence.hpp"
 #include "src/simd/divergence.hpp"
 #include "src/simd/sleef_declarations.hpp"
@@ -121,6 +122,16 @@ inline Lanes sqrt(Lanes a) { return Lanes(hn::Sqrt(a.v)); }
 inline Lanes min(Lanes a, Lanes b) { return Lanes(hn::IfThenElse(hn::Lt(b.v, a.v), b.v, a.v)); }
 inline Lanes max(Lanes a, Lanes b) { return Lanes(hn::IfThenElse(hn::Lt(a.v, b.v), b.v, a.v)); }
 
+/// x^n as std::pow(double, int) computes it, lane by lane (once per Miller
+/// recurrence: not worth a vector version that would round differently).
+inline Lanes pow(Lanes x, int n) {
+  const LaneTag d;
+  alignas(64) double v[max_lanes];
+  hn::Store(x.v, d, v);
+  for (size_t k = 0; k < hn::Lanes(d); ++k) v[k] = std::pow(v[k], n);
+  return Lanes(hn::Load(d, v));
+}
+
 // atan2, log, asinh: SLEEF's 1.0-ulp functions for the vector targets; the
 // portable target calls the C library lane by lane.
 #if HWY_TARGET == HWY_AVX2
@@ -163,30 +174,34 @@ class gauss<skelconv::simd::HWY_NAMESPACE::Lanes, N, Policy> : public gauss<doub
 }  // namespace boost::math::quadrature
 
 namespace skelconv {
-// The helpers whose loops run a point-dependent number of steps
-// (stable_recurrence.hpp, gauss_moments.hpp): on Lanes they hand every
-// active lane to the scalar path (Divergence::hand_to_scalar), which
-// evaluates those points with the same generated function on double.
 #define SimdLanes simd::HWY_NAMESPACE::Lanes  // this target's (an alias would clash across targets)
+namespace detail {
+/// The Miller recurrences (stable_recurrence.hpp) on Lanes: every lane runs
+/// the largest number of steps any active lane needs. Starting higher only
+/// shrinks the neglected start value further (below ε/100 either way), so a
+/// lane's result differs from the scalar path's by rounding. A lane whose
+/// recurrence would not converge is handed to the scalar path, which reports
+/// it.
 template <>
-inline SimdLanes J_downward<SimdLanes>(int, const SimdLanes&, const SimdLanes&, const SimdLanes&, const SimdLanes&,
-                                       const SimdLanes&, const SimdLanes&) {
-  simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
-  return SimdLanes(0.0);
+inline int miller_steps<SimdLanes>(const SimdLanes& rho) {
+  simd::Divergence& divergence = *simd::HWY_NAMESPACE::current_divergence;
+  alignas(64) double r[simd::max_lanes];
+  hwy::HWY_NAMESPACE::Store(rho.v, simd::HWY_NAMESPACE::LaneTag(), r);
+  int steps = 1;
+  for (std::size_t k = 0; k < simd::HWY_NAMESPACE::lane_count(); ++k) {
+    if (!(divergence.active() >> k & 1u)) continue;
+    try {
+      steps = std::max(steps, miller_steps<double>(r[k]));
+    } catch (const NotConvergedError&) {
+      divergence.hand_lane_to_scalar(k);
+    }
+  }
+  return steps;
 }
-template <>
-inline SimdLanes J_upward_compact<SimdLanes>(int, const SimdLanes&, const SimdLanes&, const SimdLanes&,
-                                             const SimdLanes&, const SimdLanes&, const SimdLanes&) {
-  simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
-  return SimdLanes(0.0);
-}
-template <>
-inline void segment_moments_beyond_end<SimdLanes>(int m_lo, int m_hi, int k_max, const SimdLanes&, const SimdLanes&,
-                                                  const SimdLanes&, const SimdLanes&, const SimdLanes&,
-                                                  SimdLanes* out) {
-  simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
-  for (int j = 0; j < ((m_hi - m_lo) / 2 + 1) * (k_max + 1); ++j) out[j] = SimdLanes(0.0);
-}
+}  // namespace detail
+
+/// SCALIS segments' Gauss panels (gauss_moments.hpp) choose their panels
+/// per point: on Lanes they hand the active lanes to the scalar path.
 template <>
 inline void segment_moments_gauss_panels<SimdLanes>(int m_lo, int m_hi, int k_max, const SimdLanes&,
                                                     const SimdLanes&, const SimdLanes&, const SimdLanes&,
