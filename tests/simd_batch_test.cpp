@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "skelconv/scalis_segment.hpp"
 #include "skelconv/segment.hpp"
 
 namespace skelconv {
@@ -65,7 +66,8 @@ double difference(double batch, double scalar, double scale) {
 }
 
 /// The largest relative difference of the batch to the scalar path.
-double batch_against_scalar(const Segment& segment, const std::vector<Vec3>& points, simd::BatchCounts& counts) {
+template <class Primitive>
+double batch_against_scalar(const Primitive& segment, const std::vector<Vec3>& points, simd::BatchCounts& counts) {
   const std::size_t n = points.size();
   std::vector<double> x(n), y(n), z(n), f(n, -1), gx(n, -1), gy(n, -1), gz(n, -1);
   for (std::size_t k = 0; k < n; ++k) {
@@ -82,7 +84,7 @@ double batch_against_scalar(const Segment& segment, const std::vector<Vec3>& poi
                                   difference(gx[k], s.gradient[0], g_scale), difference(gy[k], s.gradient[1], g_scale),
                                   difference(gz[k], s.gradient[2], g_scale)});
     if (here > batch_tolerance) {
-      ADD_FAILURE() << segment.generated_name() << " at (" << points[k].transpose() << "): batch " << f[k] << " "
+      ADD_FAILURE() << " at (" << points[k].transpose() << "): batch " << f[k] << " "
                     << gx[k] << " " << gy[k] << " " << gz[k] << ", scalar " << s.value << " "
                     << s.gradient.transpose();
     }
@@ -143,6 +145,30 @@ TEST_P(SimdSegmentBatch, EqualsTheScalarPathOnEveryForm) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, SimdSegmentBatch, testing::Values("AVX3", "AVX2", "SCALAR"));
+
+TEST_P(SimdSegmentBatch, ScalisSegmentsEqualTheScalarPathOnEveryForm) {
+  const std::vector<Vec3> points = form_covering_points();
+  int vectorised = 0;
+  for (const KernelFamily family : {KernelFamily::inverse, KernelFamily::cauchy}) {
+    for (const int degree : {3, 4}) {
+      // A cone (radius 0 at B) and a tapered segment, σ = 1.5.
+      for (const std::array<double, 2> radius : {std::array<double, 2>{0.2, 0.6}, std::array<double, 2>{0.5, 0.0}}) {
+        const ScalisSegment segment(A, B, radius[0], radius[1], ScalisKernel{family, degree, 1.5}, 1.0);
+        ASSERT_TRUE(simd::has_vector_kernel(segment));
+        ++vectorised;
+        simd::BatchCounts counts;
+        const double worst = batch_against_scalar(segment, points, counts);
+        EXPECT_LE(worst, batch_tolerance) << segment.evaluator_name();
+        EXPECT_GT(counts.group_runs, 0u);
+        EXPECT_LT(counts.scalar_points, points.size() / 10) << segment.evaluator_name();
+        std::printf("%s SCALIS %s τ %.1f→%.1f: worst %.1e, %zu group runs, %zu set aside, %zu scalar\n",
+                    GetParam().c_str(), segment.evaluator_name().c_str(), radius[0], radius[1], worst,
+                    counts.group_runs, counts.set_aside, counts.scalar_points);
+      }
+    }
+  }
+  EXPECT_EQ(vectorised, 8);
+}
 
 TEST(SimdSegmentBatchFallback, KernelWithoutVectorInstantiationEqualsScalarPath) {
   const Segment segment(A, B, KernelSpec::inverse(16), {1.0, 0.5, 0.25, 0.125});

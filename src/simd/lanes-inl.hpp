@@ -25,7 +25,9 @@
 //   * the generated full `<name>_f_and_grad` runs on Lanes, every form
 //     vectorised with the scalar path's own arithmetic: the Miller
 //     recurrences run as many steps as the neediest lane (miller_steps, end
-//     of this file); pow(x, n) is the C library's, lane by lane;
+//     of this file); pow(x, n) is the C library's, lane by lane; the SCALIS
+//     Gauss panels are loops over masks, and a pole within rounding of a
+//     panel hands the lanes to the scalar path (pole_within_rounding);
 //   * Boost's Gauss–Legendre tables exist for floating-point types only: the
 //     specialisation at the end reuses the double tables (nodes broadcast).
 //
@@ -117,6 +119,7 @@ inline LaneMask operator==(Lanes a, Lanes b) { return {hn::Eq(a.v, b.v)}; }
 inline LaneMask operator!=(Lanes a, Lanes b) { return {hn::Ne(a.v, b.v)}; }
 
 inline Lanes sqrt(Lanes a) { return Lanes(hn::Sqrt(a.v)); }
+inline Lanes abs(Lanes a) { return Lanes(hn::Abs(a.v)); }
 // std::min(a, b) is (b < a) ? b : a and std::max(a, b) is (a < b) ? b : a;
 // the same selects here (hn::Min/Max differ for ±0 and NaN).
 inline Lanes min(Lanes a, Lanes b) { return Lanes(hn::IfThenElse(hn::Lt(b.v, a.v), b.v, a.v)); }
@@ -200,15 +203,15 @@ inline int miller_steps<SimdLanes>(const SimdLanes& rho) {
 }
 }  // namespace detail
 
-/// SCALIS segments' Gauss panels (gauss_moments.hpp) choose their panels
-/// per point: on Lanes they hand the active lanes to the scalar path.
+namespace detail {
+/// SCALIS segments' Gauss panels (gauss_moments.hpp) with the pole within
+/// rounding of a panel start: the active lanes go to the scalar path, which
+/// reports the error.
 template <>
-inline void segment_moments_gauss_panels<SimdLanes>(int m_lo, int m_hi, int k_max, const SimdLanes&,
-                                                    const SimdLanes&, const SimdLanes&, const SimdLanes&,
-                                                    SimdLanes* out) {
+inline void pole_within_rounding<SimdLanes>(const SimdLanes&) {
   simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
-  for (int j = 0; j < ((m_hi - m_lo) / 2 + 1) * (k_max + 1); ++j) out[j] = SimdLanes(0.0);
 }
+}  // namespace detail
 #undef SimdLanes
 }  // namespace skelconv
 

@@ -13,6 +13,7 @@
 
 namespace skelconv {
 class Segment;
+class ScalisSegment;
 }
 
 namespace skelconv::simd {
@@ -47,6 +48,10 @@ BatchCounts value_and_gradient(const Segment& segment, PointsSoA points, FieldSo
 
 /// True when `segment`'s kernel has a vector instantiation.
 bool has_vector_kernel(const Segment& segment);
+
+/// The same for a SCALIS segment (ScalisSegment::value_and_gradient per point).
+BatchCounts value_and_gradient(const ScalisSegment& segment, PointsSoA points, FieldSoA out);
+bool has_vector_kernel(const ScalisSegment& segment);
 
 /// The instruction set the next call will use: "AVX3" (AVX-512), "AVX2", "SCALAR".
 std::string active_target();
