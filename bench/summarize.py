@@ -447,7 +447,7 @@ def main():
 
     # --- GSL ---------------------------------------------------------------------------------
     if gsl:
-        md.append("## 8. Closed form against GSL's adaptive QAG (61-point rule), 0.1–3 |AB|\n")
+        md.append("## 4b. Closed form against GSL's adaptive QAG (61-point rule), 0.1–3 |AB|\n")
         md.append("`skelconv_bench_gsl` (bench/gsl_bench.cpp): `gsl_integration_qag` with `GSL_INTEG_GAUSS61`, "
                   "relative tolerance 1e-8 or 1e-12, four integrals (f and ∇f), against the generated "
                   "`f_and_grad`; 256 points per distance d (± 10 %, every direction); compact R = 5 |AB|. "
