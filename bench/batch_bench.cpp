@@ -8,6 +8,17 @@
 //                           the generated *_f_and_grad_generic inlined in
 //                           a loop GCC vectorises (AVX2), branch-free clip,
 //                           then *_f_and_grad for the lanes it declined.
+//   batch/<kernel>/runtime  one Segment::value_and_gradient per point (the
+//                           runtime's scalar path, built for the baseline ISA:
+//                           what skelconv::simd reproduces);
+//   batch/<kernel>/highway  skelconv::simd::value_and_gradient (src/simd/,
+//                           docs/simd.md), Highway's run-time choice (AVX-512
+//                           here); /highway_avx2 forced to AVX2. Counters:
+//                           set_aside_fraction (lanes re-run by form),
+//                           scalar_fraction (points left to the scalar path),
+//                           max_rel_diff against the runtime path.
+//   batch/scalis_<family>_i<i>/{runtime,highway}: the same for SCALIS
+//                           segments (radius 0.1 → 0.3, σ = 1.5).
 // Points: uniform in the segment's box grown by 1.5 R (about a third outside
 // the compact support). Both variants write the same SoA outputs. Before
 // any timing, every batch is checked against the scalar loop on these
@@ -27,6 +38,9 @@
 
 #include "batch_kernels.hpp"
 #include "bench_main.hpp"
+#include "skelconv/scalis_segment.hpp"
+#include "skelconv/segment.hpp"
+#include "skelconv/simd/batch.hpp"
 
 namespace skelconv::bench {
 namespace {
@@ -124,12 +138,142 @@ void bench_simd(benchmark::State& state, const KernelRef* k, BatchFunction funct
   state.counters["fallback_fraction"] = double(agreement.fallbacks) / double(agreement.points);
 }
 
+/// The runtime's Segment with the benchmark's A, B, weight, s and R.
+Segment runtime_segment(const KernelRef& k) {
+  const KernelSpec spec = k.family == KernelFamily::inverse  ? KernelSpec::inverse(k.degree)
+                          : k.family == KernelFamily::cauchy ? KernelSpec::cauchy(k.degree, bench_s)
+                                                             : KernelSpec::compact(k.degree, bench_R);
+  return Segment(Vec3(bench_a[0], bench_a[1], bench_a[2]), Vec3(bench_b[0], bench_b[1], bench_b[2]), spec,
+                 std::span<const double>(bench_weight.data(), std::size_t(k.weight_degree + 1)));
+}
+
+void runtime_loop(const Segment& segment, PointsSoA p, FieldSoA out) {
+  for (std::size_t j = 0; j < p.n; ++j) {
+    const FieldSample s = segment.value_and_gradient(Vec3(p.x[j], p.y[j], p.z[j]));
+    out.f[j] = s.value;
+    out.gx[j] = s.gradient[0];
+    out.gy[j] = s.gradient[1];
+    out.gz[j] = s.gradient[2];
+  }
+}
+
+void bench_runtime(benchmark::State& state, const KernelRef* k) {
+  Batch batch(batch_size);
+  const Segment segment = runtime_segment(*k);
+  for (auto _ : state) {
+    runtime_loop(segment, batch.points(), batch.field());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(batch_size));
+}
+
+simd::BatchCounts highway(const Segment& segment, const Batch& batch, Batch& out) {
+  return simd::value_and_gradient(segment, {batch.x.data(), batch.y.data(), batch.z.data(), batch.x.size()},
+                                  {out.f.data(), out.gx.data(), out.gy.data(), out.gz.data()});
+}
+
+/// skelconv::simd on `target` ("" = Highway's choice); checked against the
+/// runtime path on the same points first (ctest checks 1e-13 on every form).
+void bench_highway(benchmark::State& state, const KernelRef* k, std::string target) {
+  if (!simd::force_target(target)) {
+    state.SkipWithError(("target " + target + " not available").c_str());
+    return;
+  }
+  const Segment segment = runtime_segment(*k);
+  Batch batch(batch_size), reference(batch_size);
+  runtime_loop(segment, reference.points(), reference.field());
+  const simd::BatchCounts counts = highway(segment, reference, batch);
+  double max_rel = 0;
+  for (std::size_t j = 0; j < batch_size; ++j) {
+    const double g = std::max({std::abs(reference.gx[j]), std::abs(reference.gy[j]), std::abs(reference.gz[j])});
+    const double df = reference.f[j] == batch.f[j] ? 0 : std::abs(reference.f[j] - batch.f[j]) / std::abs(reference.f[j]);
+    const double dg = std::max({std::abs(reference.gx[j] - batch.gx[j]), std::abs(reference.gy[j] - batch.gy[j]),
+                                std::abs(reference.gz[j] - batch.gz[j])});
+    max_rel = std::max({max_rel, df, g > 0 ? dg / g : dg});
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(highway(segment, reference, batch));
+    benchmark::ClobberMemory();
+  }
+  simd::force_target("");
+  state.SetItemsProcessed(state.iterations() * std::int64_t(batch_size));
+  state.SetLabel(target.empty() ? simd::active_target() : target);
+  state.counters["max_rel_diff"] = max_rel;
+  state.counters["set_aside_fraction"] = double(counts.set_aside) / double(batch_size);
+  state.counters["scalar_fraction"] = double(counts.scalar_points) / double(batch_size);
+}
+
+/// SCALIS segments (radius 0.1 → 0.3, σ = 1.5, as bench/scalis_bench.cpp):
+/// the runtime per point against the Highway batch, on the same points.
+template <class Primitive>
+void runtime_points(const Primitive& primitive, const Batch& in, Batch& out) {
+  for (std::size_t j = 0; j < in.x.size(); ++j) {
+    const FieldSample s = primitive.value_and_gradient(Vec3(in.x[j], in.y[j], in.z[j]));
+    out.f[j] = s.value;
+    out.gx[j] = s.gradient[0];
+    out.gy[j] = s.gradient[1];
+    out.gz[j] = s.gradient[2];
+  }
+}
+
+ScalisSegment bench_scalis(KernelFamily family, int degree) {
+  return ScalisSegment(Vec3(bench_a[0], bench_a[1], bench_a[2]), Vec3(bench_b[0], bench_b[1], bench_b[2]), 0.1, 0.3,
+                       ScalisKernel{family, degree, 1.5}, 1.0);
+}
+
+void bench_scalis_runtime(benchmark::State& state, KernelFamily family, int degree) {
+  const ScalisSegment segment = bench_scalis(family, degree);
+  Batch batch(batch_size), out(batch_size);
+  for (auto _ : state) {
+    runtime_points(segment, batch, out);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(batch_size));
+}
+
+void bench_scalis_highway(benchmark::State& state, KernelFamily family, int degree) {
+  const ScalisSegment segment = bench_scalis(family, degree);
+  Batch batch(batch_size), reference(batch_size);
+  runtime_points(segment, batch, reference);
+  auto run = [&] {
+    return simd::value_and_gradient(segment, {batch.x.data(), batch.y.data(), batch.z.data(), batch_size},
+                                    {batch.f.data(), batch.gx.data(), batch.gy.data(), batch.gz.data()});
+  };
+  const simd::BatchCounts counts = run();
+  double max_rel = 0;
+  for (std::size_t j = 0; j < batch_size; ++j) {
+    const double g = std::max({std::abs(reference.gx[j]), std::abs(reference.gy[j]), std::abs(reference.gz[j])});
+    const double df = reference.f[j] == batch.f[j] ? 0 : std::abs(reference.f[j] - batch.f[j]) / std::abs(reference.f[j]);
+    const double dg = std::max({std::abs(reference.gx[j] - batch.gx[j]), std::abs(reference.gy[j] - batch.gy[j]),
+                                std::abs(reference.gz[j] - batch.gz[j])});
+    max_rel = std::max({max_rel, df, g > 0 ? dg / g : dg});
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(run());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(batch_size));
+  state.SetLabel(simd::active_target());
+  state.counters["max_rel_diff"] = max_rel;
+  state.counters["set_aside_fraction"] = double(counts.set_aside) / double(batch_size);
+  state.counters["scalar_fraction"] = double(counts.scalar_points) / double(batch_size);
+}
+
 void register_all() {
+  for (const auto& [family, degree] : {std::pair{KernelFamily::inverse, 3}, std::pair{KernelFamily::cauchy, 4}}) {
+    const std::string name = "batch/scalis_" + std::string(family_name(family)) + "_i" + std::to_string(degree);
+    benchmark::RegisterBenchmark((name + "/runtime").c_str(), bench_scalis_runtime, family, degree);
+    benchmark::RegisterBenchmark((name + "/highway").c_str(), bench_scalis_highway, family, degree);
+  }
   for (const BatchEntry& e : batch_entries) {
     const KernelRef* k = find_kernel(e.key.family, e.key.degree, e.key.weight_degree);
     if (!k) continue;
     benchmark::RegisterBenchmark(("batch/" + k->name + "/scalar").c_str(), bench_scalar, k);
     benchmark::RegisterBenchmark(("batch/" + k->name + "/simd").c_str(), bench_simd, k, e.batch);
+    benchmark::RegisterBenchmark(("batch/" + k->name + "/runtime").c_str(), bench_runtime, k);
+    benchmark::RegisterBenchmark(("batch/" + k->name + "/highway").c_str(), bench_highway, k, std::string());
+    benchmark::RegisterBenchmark(("batch/" + k->name + "/highway_avx2").c_str(), bench_highway, k,
+                                 std::string("AVX2"));
   }
 }
 

@@ -134,12 +134,19 @@ struct QuadratureResult {
   std::size_t evaluations = 0;  ///< integrand evaluations, all integrals together
 };
 
-/// f(P) = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt and ∇f by Boost.Math's
+/// The adaptive rule: Boost.Math's gauss_kronrod<double, 61> (maximum depth
+/// 15), or GSL's gsl_integration_qag with the 61-point Gauss–Kronrod rule
+/// (GSL_INTEG_GAUSS61, up to 1,000 subintervals), what numerical skeleton
+/// libraries built on GSL use (issue 15).
+enum class AdaptiveRule { boost_gauss_kronrod_61, gsl_qag_61 };
+
+/// f(P) = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt and ∇f by `rule` (default Boost.Math's
 /// adaptive 61-point Gauss–Kronrod rule, one integral for f and one per
 /// gradient component (4 adaptive integrals) when `with_gradient`; relative
 /// tolerance `tolerance`, default maximum depth 15. The kernel K is
 /// (family, degree) with input.s / input.R; the weight reads w0..w_{weight_degree}.
 QuadratureResult quadrature(KernelFamily family, int degree, int weight_degree, const Input& input,
-                            double tolerance, bool with_gradient);
+                            double tolerance, bool with_gradient,
+                            AdaptiveRule rule = AdaptiveRule::boost_gauss_kronrod_61);
 
 }  // namespace skelconv::bench

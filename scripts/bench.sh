@@ -2,7 +2,7 @@
 # scripts/bench.sh — the one benchmark command (docs/bench.md).
 #
 # Configures and builds the release preset's benchmark targets, runs the
-# Google Benchmark suites (JSON to bench/results/), counts instructions with
+# Google Benchmark suites (JSON to bench/results/, GSL comparison included), counts instructions with
 # callgrind, and writes bench/results/SUMMARY.md and OPCOUNTS.md.
 # About 5–8 minutes on 2 cores from a clean clone (most of it the build).
 #
@@ -65,27 +65,30 @@ gbench=(--benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions"
         --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
         --benchmark_out_format=json)
 
-step "1/6 kernel suite: closed form, finite differences, quadrature, degrees (~2 min)"
+step "1/7 kernel suite: closed form, finite differences, quadrature, degrees (~2 min)"
 "$bin/skelconv_bench_kernels" "${gbench[@]}" --benchmark_out="$results/kernels.json"
 
-step "2/6 batch suite (~20 s)"
+step "2/7 batch suite: scalar loop, GCC-vectorised batch, Highway batches (~1 min)"
 "$bin/skelconv_bench_batch" "${gbench[@]}" --benchmark_out="$results/batch.json"
 
-step "3/6 whole skeleton: 1,000 primitives, 128^3 grid (~10 s; progress below)"
+step "3/7 whole skeleton: 1,000 primitives, 128^3 grid (~10 s; progress below)"
 "$bin/skelconv_bench_skeleton" --benchmark_out="$results/skeleton.json" --benchmark_out_format=json
 
-step "4/6 SCALIS segments against quadrature (~30 s)"
+step "4/7 SCALIS segments against quadrature (~30 s)"
 "$bin/skelconv_bench_scalis" "${gbench[@]}" --benchmark_out="$results/scalis.json"
 "$bin/skelconv_scalis_compact_opcounts" > "$results/scalis_compact_opcounts.md"
 
-step "5/6 callgrind instruction counts (~10 s)"
+step "5/7 closed forms against GSL's adaptive QAG (61-point rule), 0.1-3 |AB| (~1 min)"
+"$bin/skelconv_bench_gsl" "${gbench[@]}" --benchmark_out="$results/gsl.json"
+
+step "6/7 callgrind instruction counts (~10 s)"
 valgrind --tool=callgrind --callgrind-out-file="$scratch/callgrind.out.%p" --dump-instr=no \
   --collect-jumps=no "$bin/skelconv_bench_counts" 2> "$scratch/valgrind.log" \
   || { cat "$scratch/valgrind.log" >&2; exit 1; }
 "$bin/skelconv_bench_counts" --opcounts "$results/opcounts.json"
 objdump -d -C --no-show-raw-insn "$bin/skelconv_bench_batch" > "$scratch/batch.asm"
 
-step "6/6 summary"
+step "7/7 summary"
 python3 bench/summarize.py --results "$results" --callgrind "$scratch" --disassembly "$scratch/batch.asm" \
   --command "$(echo "scripts/bench.sh $*" | sed 's/ *$//')"
 step "done: $results/SUMMARY.md"

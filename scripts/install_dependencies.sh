@@ -10,6 +10,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libbenchmark-dev libcgal-dev
   valgrind                # bench/: instruction counts
+  libhwy-dev libsleef-dev # src/simd/: vector batches (Highway: run-time dispatch AVX-512/AVX2/portable; SLEEF: vector atan2, log, asinh)
+  libgsl-dev              # bench/ only: GSL's adaptive QAG (61-point rule), the quadrature baseline
   python3-matplotlib python3-numpy  # papers_figures/: 2-D figures (Agg backend) and their claim checks; verify/heatmap.py
   python3-yaml            # verify/check_cluster_files.py: parses the GitHub Actions sweep workflow (ctest verify_cluster_files)
   povray                  # papers_figures/render3d: headless shaded renders of meshes

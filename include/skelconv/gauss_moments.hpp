@@ -113,6 +113,18 @@ constexpr unsigned gauss_panel_points() {
   return digits <= 53 ? 20u : digits <= 64 ? 25u : 40u;
 }
 
+namespace detail {
+/// segment_moments_gauss_panels with the pole within rounding of the panel
+/// start x: the integral is not resolvable in T. Throws NotConvergedError
+/// (the vector batches, src/simd/lanes-inl.hpp, specialise it to hand their
+/// lanes to the scalar path, which then throws).
+template <class T>
+void pole_within_rounding(const T& x) {
+  throw NotConvergedError("Gauss panels: the pole of the kernel is within rounding of t = " +
+                          std::to_string(static_cast<double>(x)) + " (P too close to the segment's end)");
+}
+}  // namespace detail
+
 /// Writes M_{k,m} = ∫_0^1 t^k q^(−m/2) dt (k = 0…k_max, m = m_lo, …, m_hi,
 /// m > 0) to out[((m − m_lo)/2)(k_max + 1) + k] for inverse and Cauchy
 /// kernels, by Gauss–Legendre on panels graded towards the roots
@@ -183,9 +195,10 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
         // the rounding unit of t, in units of |AB|): the panels cannot
         // advance, and the integral is not resolvable in T. Reported, not
         // looped on (the loop would never end).
-        if (y == x)
-          throw NotConvergedError("Gauss panels: the pole of the kernel is within rounding of t = " +
-                                  std::to_string(static_cast<double>(x)) + " (P too close to the segment's end)");
+        if (y == x) {
+          detail::pole_within_rounding(x);
+          return;
+        }
       }
       if (x < y)
         add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, x, y, out);
