@@ -75,6 +75,8 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees (default 90)");
   command->add_option("--epsilon", options.epsilon, "Pavlidis tolerance × skeleton size (default 0.02)");
   command->add_option("--report", options.report_path, "Also mesh every stage and write distances (JSON)");
+  command->add_flag("--bezier-junctions", options.bezier_junctions,
+                    "Join three branches by a cubic Bézier triangle (Ferley §2.4) of SCALIS triangles");
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
@@ -87,6 +89,7 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     reconstruct::ReconstructOptions ro;
     ro.prune_angle_degrees = options.prune_angle;
     ro.epsilon = options.epsilon;
+    ro.junction_triangles = options.bezier_junctions;
     if (!options.quiet) ro.progress = [](std::string_view line) {
       std::fprintf(stderr, "skelconv skeletonize: %.*s\n", int(line.size()), line.data());
     };

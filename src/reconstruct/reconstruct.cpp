@@ -27,7 +27,7 @@ void check_options(const ReconstructOptions& o) {
 }
 
 Stage make_stage(std::string name, const BranchGraph& graph) {
-  Stage stage{std::move(name), graph.branches, graph.ends, graph.junctions, 0};
+  Stage stage{std::move(name), graph.branches, {}, graph.ends, graph.junctions, 0};
   for (const Branch& b : stage.branches) stage.points += b.points.size();
   return stage;
 }
@@ -80,13 +80,16 @@ Stage smoothed_stage(const Stage& from, int samples) {
 Stage fitted_stage(const Stage& from, const TriangleMesh& surface, const ReconstructOptions& o, FitReport* report) {
   Stage stage = from;
   stage.name = "fitted";
+  if (o.junction_triangles) stage.facets = place_junction_triangles(stage.branches, o.junction_k, o.junction_subdivisions,
+                                                                  o.junction_cuts_branches);
   const SurfaceQuery input(surface);
-  const BranchField field_of = [&o](const std::vector<Branch>& branches) {
+  const BranchField field_of = [&o, &stage](const std::vector<Branch>& branches) {
     Stage s;
     s.branches = branches;
+    s.facets = stage.facets;
     return parse_skeleton_json(skeleton_file_text(s, o));
   };
-  stage.branches = fit_to_surface(extend_free_ends(from.branches, o.end_extension), input, field_of, o.fit, report);
+  stage.branches = fit_to_surface(extend_free_ends(stage.branches, o.end_extension), input, field_of, o.fit, report);
   stage.points = 0;
   for (const Branch& b : stage.branches) stage.points += b.points.size();
   return stage;
@@ -150,6 +153,19 @@ std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) 
                           first ? "" : ",", p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), p.w(), q.w(), kernel);
       first = false;
     }
+  }
+  for (const Facet& f : stage.facets) {
+    const Vec3 a = f[0].head<3>(), b = f[1].head<3>(), c = f[2].head<3>();
+    const double diameter = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    // The polygon rule of docs/cli.md: area ≥ 1e-8 × diameter² (a patch
+    // facet at a corner can be nearly flat); the margin keeps clear of it.
+    if ((b - a).cross(c - a).norm() / 2 < 1e-6 * diameter * diameter) continue;
+    const double radius = (f[0].w() + f[1].w() + f[2].w()) / 3;
+    text += fmt::format("{}\n    {{\"type\": \"scalis_triangle\", \"vertices\": [[{:.17g}, {:.17g}, {:.17g}], "
+                        "[{:.17g}, {:.17g}, {:.17g}], [{:.17g}, {:.17g}, {:.17g}]], \"radius\": [{:.17g}, {:.17g}, {:.17g}], {}}}",
+                        first ? "" : ",", a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), radius, radius,
+                        radius, kernel);
+    first = false;
   }
   return text + "]}]}\n";
 }

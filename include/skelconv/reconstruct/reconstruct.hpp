@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "skelconv/reconstruct/bezier_triangle.hpp"
 #include "skelconv/reconstruct/branch_graph.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
 #include "skelconv/reconstruct/surface_fit.hpp"
@@ -43,6 +44,14 @@ struct ReconstructOptions {
   double cap_slope = 0.5;
   /// The last stage's fit of radii and end extensions to the input.
   FitOptions fit;
+  /// Junctions of three branches as cubic Bézier triangles (bezier_triangle.hpp)
+  /// in the fitted stage, with Ferley's k (corner distance / junction
+  /// radius) and n² SCALIS triangles per patch. Off by default: measured
+  /// in docs/reconstruction.md.
+  bool junction_triangles = false;
+  bool junction_cuts_branches = false;  ///< Ferley's layout (see place_junction_triangles)
+  double junction_k = 1.5;
+  int junction_subdivisions = 3;
   /// Called with one line per step ("medial graph: 5230 vertices, ...").
   std::function<void(std::string_view)> progress;
 };
@@ -51,6 +60,7 @@ struct ReconstructOptions {
 struct Stage {
   std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed, fitted
   std::vector<Branch> branches;
+  std::vector<Facet> facets;  ///< junction patches (fitted stage, if asked)
   std::size_t ends = 0, junctions = 0, points = 0;
 };
 
