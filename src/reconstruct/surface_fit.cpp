@@ -104,6 +104,32 @@ bool is_extension(const Branch& b, std::size_t i) {
   return (i == 0 && b.extended_first) || (i + 1 == b.points.size() && b.extended_last);
 }
 
+/// The points of `b` within their own radius (arc length) of a free end:
+/// their normal rays meet the cap or feel the end's falloff, so their
+/// radius is not fitted but copied from the first point past that zone.
+/// Returns per point the index to copy from (itself if fitted).
+std::vector<std::size_t> radius_sources(const Branch& b) {
+  const std::size_t n = b.points.size();
+  std::vector<std::size_t> source(n);
+  for (std::size_t i = 0; i < n; ++i) source[i] = i;
+  const auto walk = [&](bool from_front) {
+    const auto at = [&](std::size_t k) -> std::size_t { return from_front ? k : n - 1 - k; };
+    const std::size_t start = 1;  // index 0 is the extension point
+    double arc = 0.0;
+    std::size_t k = start;
+    std::vector<std::size_t> zone;
+    for (; k + 1 < n; ++k) {
+      if (k > start) arc += (b.points[at(k)].head<3>() - b.points[at(k - 1)].head<3>()).norm();
+      if (arc >= b.points[at(k)].w()) break;
+      zone.push_back(at(k));
+    }
+    for (std::size_t z : zone) source[z] = at(k);
+  };
+  if (b.extended_first && n > 3) walk(true);
+  if (b.extended_last && n > 3) walk(false);
+  return source;
+}
+
 /// One Jacobi round over the radii; returns the largest relative change.
 double update_radii(std::vector<Branch>& branches, const Targets& targets, const ImplicitField& field, double iso,
                     const FitOptions& o) {
@@ -111,8 +137,9 @@ double update_radii(std::vector<Branch>& branches, const Targets& targets, const
   double largest = 0.0;
   for (std::size_t bi = 0; bi < branches.size(); ++bi) {
     const Branch& b = branches[bi];
+    const std::vector<std::size_t> source = radius_sources(b);
     for (std::size_t i = 0; i < b.points.size(); ++i) {
-      if (is_extension(b, i)) continue;
+      if (is_extension(b, i) || source[i] != i) continue;
       double target = INFINITY, current = INFINITY;
       for (std::size_t k = 0; k < targets.rays[bi][i].size(); ++k) {
         const double d = targets.distances[bi][i][k];
@@ -121,11 +148,16 @@ double update_radii(std::vector<Branch>& branches, const Targets& targets, const
         current = std::min(current, crossing(field, iso, b.points[i].head<3>(), targets.rays[bi][i][k],
                                              0.25 * b.points[i].w(), 4.0 * d, o.bisection_steps));
       }
-      if (!std::isfinite(target)) continue;
-      const double factor = current > 0.0 ? std::clamp(target / current, 1.0 / o.largest_step, o.largest_step)
-                                          : o.largest_step;
+      // No input crossing, or the centre is outside the current surface
+      // (a larger radius would not bring it in: SCALIS fields fall as 1/τ
+      // near a short skeleton): no information, the radius stays.
+      if (!std::isfinite(target) || !(current > 0.0)) continue;
+      const double factor = std::clamp(target / current, 1.0 / o.largest_step, o.largest_step);
       updated[bi].points[i].w() *= factor;
       largest = std::max(largest, std::abs(factor - 1.0));
+    }
+    for (std::size_t i = 0; i < b.points.size(); ++i) {
+      if (source[i] != i) updated[bi].points[i].w() = updated[bi].points[source[i]].w();
     }
   }
   branches = std::move(updated);
@@ -145,6 +177,7 @@ double update_extensions(std::vector<Branch>& branches, const SurfaceQuery& inpu
     const auto target = input.ray_distance(end.head<3>(), direction);
     if (!target) return;
     const double reached = crossing(field, iso, end.head<3>(), direction, 0.25 * end.w(), 4.0 * *target, o.bisection_steps);
+    if (reached == 0.0) return;  // the end itself is outside: no information
     const double moved = std::max(0.0, length + *target - reached) - length;
     tip.head<3>() = end.head<3>() + (length + moved) * direction;
     tip.w() = end.w();
