@@ -24,6 +24,7 @@ struct SkeletonizeOptions {
   double prune_angle = 90.0;
   double epsilon = 0.02;
   bool bezier_junctions = false;
+  double noise = 0.0;
   bool quiet = false;
 };
 
