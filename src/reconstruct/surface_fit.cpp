@@ -100,6 +100,29 @@ Targets measure_input(const std::vector<Branch>& branches, const SurfaceQuery& i
   return t;
 }
 
+/// Recentres the points whose cross-section is tube-like (every ray hits,
+/// the farthest within `tube_ratio` × the nearest): for a circle of radius
+/// R seen from c = c* + e, the ray along u meets it at R − e·u, so
+/// Σ d_k u_k = −(K/2) e over K evenly spread rays, and c* = c + (2/K) Σ d_k u_k.
+/// Smoothing moves the axis inwards on bends (a B-spline cuts corners);
+/// this puts it back. Returns how many points moved.
+std::size_t recentre(std::vector<Branch>& branches, const Targets& t, double tube_ratio) {
+  std::size_t moved = 0;
+  for (std::size_t bi = 0; bi < branches.size(); ++bi) {
+    for (std::size_t i = 0; i < branches[bi].points.size(); ++i) {
+      const auto& d = t.distances[bi][i];
+      if (d.empty()) continue;
+      const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
+      if (*lo < 0.0 || *hi > tube_ratio * *lo) continue;
+      Vec3 shift = Vec3::Zero();
+      for (std::size_t k = 0; k < d.size(); ++k) shift += d[k] * t.rays[bi][i][k];
+      branches[bi].points[i].head<3>() += (2.0 / double(d.size())) * shift;
+      ++moved;
+    }
+  }
+  return moved;
+}
+
 bool is_extension(const Branch& b, std::size_t i) {
   return (i == 0 && b.extended_first) || (i + 1 == b.points.size() && b.extended_last);
 }
@@ -229,6 +252,12 @@ std::vector<Branch> extend_free_ends(std::vector<Branch> branches, double factor
 
 std::vector<Branch> fit_to_surface(std::vector<Branch> branches, const SurfaceQuery& input, const BranchField& field_of,
                                    const FitOptions& o, FitReport* report) {
+  if (recentre(branches, measure_input(branches, input, o.directions), o.tube_ratio) > 0) {
+    // The closing point of a closed branch is its first point again.
+    for (Branch& b : branches) {
+      if (b.first_node == b.last_node && b.points.size() > 1) b.points.back() = b.points.front();
+    }
+  }
   const Targets targets = measure_input(branches, input, o.directions);
   FitReport r;
   for (int round = 0; round < o.iterations; ++round) {

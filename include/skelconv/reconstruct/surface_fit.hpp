@@ -15,7 +15,9 @@
 //      tangent; fit_to_surface moves it until the reconstructed surface
 //      reaches the input's tip on that line (the branch extension of the
 //      issue; Zanni et al. §5.1 add point primitives instead).
-//   3. Radii. An empty Voronoi ball of a polyhedral sampling is a little
+//   3. Centres. A B-spline cuts corners (a ring shrinks): points whose
+//      cross-section is a tube are recentred from the same rays first.
+//   4. Radii. An empty Voronoi ball of a polyhedral sampling is a little
 //      smaller than the tube, a finite SCALIS segment is thinner than a long
 //      one, and the sum blend bulges where branches meet. fit_to_surface
 //      rescales each point's radius by (input distance / reconstructed
@@ -53,6 +55,10 @@ struct FitOptions {
   /// recovers over a few rounds instead of jumping.
   double largest_step = 2.0;
   int bisection_steps = 30;  ///< crossing of the reconstructed surface
+  /// Before fitting, a point is recentred in its cross-section when all its
+  /// rays meet the input within this ratio of each other (a tube, not a
+  /// junction where rays run down other branches, nor a cap).
+  double tube_ratio = 1.5;
 };
 
 /// The reconstructed field of a set of branches (reconstruct.cpp builds the
