@@ -86,9 +86,9 @@ def draw_shape(ctx, figure, name, known, plane, mesh_args=(), noise=0.0):
         ax.plot([a[u], b[u]], [a[v], b[v]], color=plot.SCALIS, lw=1.6, label="recovered (fitted)" if k == 0 else None)
     axis = "xyz"
     ax.set_xlabel(axis[u]), ax.set_ylabel(axis[v]), ax.set_aspect("equal")
-    ax.legend(loc="best")
-    ax.set_title(f"{name}: {counts['fitted'][0]} branches, {counts['fitted'][1]} ends, "
-                 f"{counts['fitted'][2]} junctions" + (f" (noise {noise} × diagonal)" if noise else ""))
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.28), ncol=3, fontsize=7)
+    ax.set_title(f"{name}: {counts['fitted'][0]} branches / {counts['fitted'][1]} ends / "
+                 f"{counts['fitted'][2]} junctions" + (f" (noise {noise})" if noise else ""))
     ax = axes[1]
     if stages:
         x = np.arange(len(stages))
@@ -97,13 +97,14 @@ def draw_shape(ctx, figure, name, known, plane, mesh_args=(), noise=0.0):
         ax.axhline(100 * HAUSDORFF_TARGET, color="tab:blue", ls=":", lw=1)
         ax.axhline(100 * RMS_TARGET, color="tab:orange", ls=":", lw=1)
         ax.set_xticks(x, [s["name"].replace("simplified_3d", "simpl. 3-D") for s in stages], rotation=45, ha="right")
-        ax.set_ylabel("% of the bounding-box diagonal")
+        ax.set_ylabel("% of the diagonal")
         ax.set_yscale("log")
         ax.legend(loc="upper right")
-        ax.set_title("distance to the input, per stage (dotted: targets)")
+        ax.set_title("distance to the input (dotted: targets)")
     else:
         ax.text(0.5, 0.5, "quick run: distances not measured", ha="center", va="center", transform=ax.transAxes)
         ax.set_axis_off()
+    fig.subplots_adjust(left=0.08, right=0.98, bottom=0.3, top=0.9, wspace=0.35)
     plot.save(fig, ctx.image_path, figure.size)
 
     claims = [Claim(f"after pruning, the skeleton has the known {known[0]} branches, {known[1]} ends and "

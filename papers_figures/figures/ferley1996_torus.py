@@ -7,7 +7,7 @@ FIGURE = Figure(
     paper="Ferley 1996", kind="Figure", number="torus",
     caption="Reconstruction of a ring of 16 SCALIS segments of radius 0.4 on a circle of radius 2: samples, known and recovered skeleton, and the distance of every "
             "stage's surface from the input (docs/reconstruction.md).",
-    kernel="SCALIS Cauchy 4, σ = 1.5", iso="1", view="projection on the plane shown", size=(640, 300))
+    kernel="SCALIS Cauchy 4, σ = 1.5", iso="1", view="projection on the plane shown", size=(640, 360))
 
 
 def draw(ctx):
