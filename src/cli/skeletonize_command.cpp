@@ -11,6 +11,7 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/mesh_reader.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
+#include "skelconv/reconstruct/sample_noise.hpp"
 
 namespace skelconv::cli {
 namespace {
@@ -75,6 +76,11 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees (default 90)");
   command->add_option("--epsilon", options.epsilon, "Pavlidis tolerance × skeleton size (default 0.02)");
   command->add_option("--report", options.report_path, "Also mesh every stage and write distances (JSON)");
+  command->add_flag("--bezier-junctions", options.bezier_junctions,
+                    "Join three branches by a cubic Bézier triangle (Ferley §2.4) of SCALIS triangles");
+  command->add_option("--noise", options.noise,
+                      "Test robustness: move every sample by up to this × the diagonal (seed 0); --report still "
+                      "measures against the clean input");
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
@@ -87,14 +93,16 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     reconstruct::ReconstructOptions ro;
     ro.prune_angle_degrees = options.prune_angle;
     ro.epsilon = options.epsilon;
+    ro.junction_triangles = options.bezier_junctions;
     if (!options.quiet) ro.progress = [](std::string_view line) {
       std::fprintf(stderr, "skelconv skeletonize: %.*s\n", int(line.size()), line.data());
     };
     const TriangleMesh input = read_mesh(options.input_path);
     if (ro.progress) ro.progress(fmt::format("read {} vertices, {} triangles", input.vertices.size(), input.triangles.size()));
+    const TriangleMesh samples = reconstruct::with_sample_noise(input, options.noise);
     const reconstruct::Reconstruction r = [&] {
       try {
-        return reconstruct::reconstruct(input, ro);
+        return reconstruct::reconstruct(samples, ro);
       } catch (const InputError& error) {
         if (error.where().starts_with("--")) throw;
         throw error.inside(options.input_path);

@@ -23,6 +23,8 @@ struct SkeletonizeOptions {
   std::optional<std::string> report_path;
   double prune_angle = 90.0;
   double epsilon = 0.02;
+  bool bezier_junctions = false;
+  double noise = 0.0;
   bool quiet = false;
 };
 

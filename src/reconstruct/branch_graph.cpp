@@ -259,6 +259,41 @@ bool contract_one_bubble(CurveSkeleton& skeleton, double factor) {
   return true;
 }
 
+/// True when the cycle made of branches `a` and `b` (same two end nodes)
+/// encloses no hole: its centroid lies inside the ball of one of its points
+/// (a handle, like a torus ring, leaves its centre uncovered).
+bool encloses_no_hole(const Branch& a, const Branch& b) {
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec4& p : a.points) centroid += p.head<3>();
+  for (const Vec4& p : b.points) centroid += p.head<3>();
+  centroid /= double(a.points.size() + b.points.size());
+  const auto covers = [&](const Vec4& p) { return (p.head<3>() - centroid).norm() < p.w(); };
+  return std::any_of(a.points.begin(), a.points.end(), covers) || std::any_of(b.points.begin(), b.points.end(), covers);
+}
+
+/// One removal of a parallel path: two branches joining the same two
+/// junctions whose cycle encloses no hole (the level sets of a branching
+/// often leave a direct edge beside a path through one or two nodes). The
+/// path with more interior nodes goes (the other is kept; paths without
+/// interior nodes are single edges, never repeated). Returns false when
+/// there is none.
+bool remove_one_parallel_path(CurveSkeleton& skeleton) {
+  const BranchGraph branches = extract_branches(skeleton);
+  std::map<std::pair<std::int32_t, std::int32_t>, const Branch*> seen;
+  for (const Branch& b : branches.branches) {
+    if (b.first_node == b.last_node) continue;
+    const auto key = std::minmax(b.first_node, b.last_node);
+    const auto [it, added] = seen.emplace(key, &b);
+    if (added || !encloses_no_hole(*it->second, b)) continue;
+    const Branch& longer = it->second->interior_nodes.size() >= b.interior_nodes.size() ? *it->second : b;
+    std::vector<bool> drop(skeleton.nodes.size(), false);
+    mark_interior(longer, skeleton, drop);
+    rebuild(skeleton, drop, -1, -1);
+    return true;
+  }
+  return false;
+}
+
 /// One pass of spur removal (see remove_spurs); returns the number removed.
 std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor) {
   const auto next = neighbours(skeleton);
@@ -289,6 +324,7 @@ std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor) {
   std::size_t removed = 0;
   while (true) {
     bool changed = false;
+    while (remove_one_parallel_path(skeleton)) changed = true, ++removed;
     while (contract_one_bubble(skeleton, spur_factor)) changed = true, ++removed;
     const std::size_t spurs = remove_spurs_once(skeleton, spur_factor);
     removed += spurs;

@@ -31,4 +31,19 @@ std::vector<Vec4> smooth_bspline(const std::vector<Vec4>& control, int samples_p
   return curve;
 }
 
+std::vector<Vec4> smooth_closed_bspline(const std::vector<Vec4>& control, int samples_per_span) {
+  if (samples_per_span < 1) throw InputError("must be ≥ 1", "samples_per_span");
+  const std::size_t m = control.size() - 1;  // distinct points: the last repeats the first
+  if (control.size() < 4) return control;
+  const auto v = [&](std::size_t k) -> const Vec4& { return control[k % m]; };
+  std::vector<Vec4> curve;
+  for (std::size_t s = 0; s < m; ++s) {
+    for (int k = 0; k < samples_per_span; ++k) {
+      curve.push_back(bspline_span_point(v(s + m - 1), v(s), v(s + 1), v(s + 2), double(k) / samples_per_span));
+    }
+  }
+  curve.push_back(curve.front());
+  return curve;
+}
+
 }  // namespace skelconv::reconstruct

@@ -12,6 +12,9 @@
 #include "skelconv/reconstruct/bspline.hpp"
 #include "skelconv/reconstruct/medial_graph.hpp"
 #include "skelconv/reconstruct/pavlidis.hpp"
+#include "skelconv/reconstruct/surface_fit.hpp"
+#include "skelconv/reconstruct/surface_query.hpp"
+#include "skelconv/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -24,7 +27,7 @@ void check_options(const ReconstructOptions& o) {
 }
 
 Stage make_stage(std::string name, const BranchGraph& graph) {
-  Stage stage{std::move(name), graph.branches, graph.ends, graph.junctions, 0};
+  Stage stage{std::move(name), graph.branches, {}, graph.ends, graph.junctions, 0};
   for (const Branch& b : stage.branches) stage.points += b.points.size();
   return stage;
 }
@@ -59,6 +62,39 @@ Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::st
   return make_stage(std::move(name), extract_branches(curve));
 }
 
+/// Each branch smoothed by the uniform cubic B-spline: open branches with
+/// tripled ends, closed ones periodic (no kink where the cycle was cut).
+Stage smoothed_stage(const Stage& from, int samples) {
+  Stage stage = from;
+  stage.name = "smoothed";
+  stage.points = 0;
+  for (Branch& b : stage.branches) {
+    b.points = b.first_node == b.last_node ? smooth_closed_bspline(b.points, samples) : smooth_bspline(b.points, samples);
+    stage.points += b.points.size();
+  }
+  return stage;
+}
+
+/// The smoothed stage with its free ends extended, then the radii and
+/// extensions fitted to `surface` (surface_fit.hpp).
+Stage fitted_stage(const Stage& from, const TriangleMesh& surface, const ReconstructOptions& o, FitReport* report) {
+  Stage stage = from;
+  stage.name = "fitted";
+  if (o.junction_triangles) stage.facets = place_junction_triangles(stage.branches, o.junction_k, o.junction_subdivisions,
+                                                                  o.junction_cuts_branches);
+  const SurfaceQuery input(surface);
+  const BranchField field_of = [&o, &stage](const std::vector<Branch>& branches) {
+    Stage s;
+    s.branches = branches;
+    s.facets = stage.facets;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+  stage.branches = fit_to_surface(extend_free_ends(stage.branches, o.end_extension), input, field_of, o.fit, report);
+  stage.points = 0;
+  for (const Branch& b : stage.branches) stage.points += b.points.size();
+  return stage;
+}
+
 void say(const ReconstructOptions& o, const std::string& line) {
   if (o.progress) o.progress(line);
 }
@@ -79,6 +115,7 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
   say(o, fmt::format("pruned: {} vertices ({} pieces) below the angle, {} small islands removed", result.pruning.vertices_removed,
                      result.pruning.branches_removed, result.pruning.small_pieces_removed));
   result.stages.push_back(branches_of(graph, o, "pruned", &result.spurs_removed));
+  result.stages.back().branches = trim_caps(result.stages.back().branches, o.cap_slope);
   const Stage pruned = result.stages.back();  // a copy: stages grows below
   say(o, fmt::format("branches: {} ({} ends, {} junctions, {} spurs removed)", pruned.branches.size(), pruned.ends,
                      pruned.junctions, result.spurs_removed));
@@ -92,44 +129,21 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
   }));
   const int samples = o.samples_per_span;
   const Stage simplified = result.stages[2];
-  result.stages.push_back(transformed(simplified, "smoothed", [samples](const std::vector<Vec4>& p) {
-    return smooth_bspline(p, samples);
-  }));
+  result.stages.push_back(smoothed_stage(simplified, samples));
   say(o, fmt::format("simplified: {} points (3-D only: {}), smoothed: {} points", result.stages[2].points,
                      result.stages[3].points, result.stages[4].points));
+  result.stages.push_back(fitted_stage(result.stages[4], surface, o, &result.fit));
+  say(o, fmt::format("fitted: last round changed radii by {:.2g} (relative), end extensions by {:.2g}",
+                     result.fit.largest_radius_change, result.fit.largest_tip_change));
   return result;
 }
-
-namespace {
-
-/// The branches with every free end extended by `factor` × its radius along
-/// the end tangent. A node is free when it ends exactly one branch end (a
-/// closed branch has none).
-std::vector<Branch> with_extended_ends(std::vector<Branch> branches, double factor) {
-  std::map<std::int32_t, int> uses;
-  for (const Branch& b : branches) ++uses[b.first_node], ++uses[b.last_node];
-  const auto extension = [factor](const Vec4& end, const Vec4& inner) {
-    const Vec3 tangent = end.head<3>() - inner.head<3>();
-    if (tangent.norm() == 0.0) return end;
-    const Vec3 tip = end.head<3>() + factor * end.w() * tangent.normalized();
-    return Vec4(tip.x(), tip.y(), tip.z(), end.w());
-  };
-  for (Branch& b : branches) {
-    if (factor <= 0.0 || b.points.size() < 2 || b.first_node == b.last_node) continue;
-    if (uses[b.last_node] == 1) b.points.push_back(extension(b.points.back(), b.points[b.points.size() - 2]));
-    if (uses[b.first_node] == 1) b.points.insert(b.points.begin(), extension(b.points.front(), b.points[1]));
-  }
-  return branches;
-}
-
-}  // namespace
 
 std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) {
   std::string text = "{\"iso\": 1, \"primitives\": [\n  {\"blend\": \"sum\", \"children\": [";
   const std::string kernel = fmt::format(R"("kernel": {{"family": "cauchy", "degree": {}, "sigma": {:.17g}}})",
                                          o.kernel_degree, o.kernel_sigma);
   bool first = true;
-  for (const Branch& b : with_extended_ends(stage.branches, o.end_extension)) {
+  for (const Branch& b : extend_free_ends(stage.branches, o.end_extension)) {
     for (std::size_t k = 1; k < b.points.size(); ++k) {
       const Vec4& p = b.points[k - 1];
       const Vec4& q = b.points[k];
@@ -140,13 +154,25 @@ std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) 
       first = false;
     }
   }
+  for (const Facet& f : stage.facets) {
+    const Vec3 a = f[0].head<3>(), b = f[1].head<3>(), c = f[2].head<3>();
+    const double diameter = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    // The polygon rule of docs/cli.md: area ≥ 1e-8 × diameter² (a patch
+    // facet at a corner can be nearly flat); the margin keeps clear of it.
+    if ((b - a).cross(c - a).norm() / 2 < 1e-6 * diameter * diameter) continue;
+    const double radius = (f[0].w() + f[1].w() + f[2].w()) / 3;
+    text += fmt::format("{}\n    {{\"type\": \"scalis_triangle\", \"vertices\": [[{:.17g}, {:.17g}, {:.17g}], "
+                        "[{:.17g}, {:.17g}, {:.17g}], [{:.17g}, {:.17g}, {:.17g}]], \"radius\": [{:.17g}, {:.17g}, {:.17g}], {}}}",
+                        first ? "" : ",", a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), radius, radius,
+                        radius, kernel);
+    first = false;
+  }
   return text + "]}]}\n";
 }
 
 }  // namespace skelconv::reconstruct
 
 #include "skelconv/mesh/mesh_iso_surface.hpp"
-#include "skelconv/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
 

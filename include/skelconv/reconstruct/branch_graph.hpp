@@ -48,6 +48,9 @@ struct Branch {
   std::vector<Vec4> points;
   std::int32_t first_node = -1, last_node = -1;  ///< node indices of the ends
   std::vector<std::int32_t> interior_nodes;       ///< the regular nodes between
+  /// The first / last point is an end extension beyond the skeleton's free
+  /// end (surface_fit.hpp), not a skeleton node.
+  bool extended_first = false, extended_last = false;
 };
 
 struct BranchGraph {

@@ -25,4 +25,11 @@ Vec4 bspline_span_point(const Vec4& v0, const Vec4& v1, const Vec4& v2, const Ve
 /// `control` exactly. Fewer than 2 control points are returned unchanged.
 std::vector<Vec4> smooth_bspline(const std::vector<Vec4>& control, int samples_per_span);
 
+/// The periodic B-spline of a closed polygon (`control`'s last point repeats
+/// its first; fewer than 3 distinct points are returned unchanged): span s
+/// uses V(s−1), V(s), V(s+1), V(s+2) cyclically, so the curve is C² all
+/// round (no kink where the cycle was cut) and passes near, not through,
+/// the control points. The result is closed too (last point = first).
+std::vector<Vec4> smooth_closed_bspline(const std::vector<Vec4>& control, int samples_per_span);
+
 }  // namespace skelconv::reconstruct

@@ -10,8 +10,10 @@
 #include <string_view>
 #include <vector>
 
+#include "skelconv/reconstruct/bezier_triangle.hpp"
 #include "skelconv/reconstruct/branch_graph.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
+#include "skelconv/reconstruct/surface_fit.hpp"
 
 namespace skelconv::reconstruct {
 
@@ -36,14 +38,29 @@ struct ReconstructOptions {
   /// falls short of its radius near a skeleton end. 0 = no extension.
   double end_extension = 1.5;
   double kernel_sigma = 1.5;
+  /// Cap trimming (surface_fit.hpp): free-end points where the radius falls
+  /// faster than this per unit length are cap balls, dropped. 0.5 = contacts
+  /// more than 30° off the axis normal (dr/ds = −sin 30°).
+  double cap_slope = 0.5;
+  /// The last stage's fit of radii and end extensions to the input.
+  FitOptions fit;
+  /// Junctions of three branches as cubic Bézier triangles (bezier_triangle.hpp)
+  /// in the fitted stage, with Ferley's k (corner distance / junction
+  /// radius) and n² SCALIS triangles per patch. Off by default: measured
+  /// in docs/reconstruction.md.
+  bool junction_triangles = false;
+  bool junction_cuts_branches = false;  ///< Ferley's layout (see place_junction_triangles)
+  double junction_k = 1.5;
+  int junction_subdivisions = 3;
   /// Called with one line per step ("medial graph: 5230 vertices, ...").
   std::function<void(std::string_view)> progress;
 };
 
 /// One stage's skeleton: its branches as polylines of (x, y, z, r).
 struct Stage {
-  std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed
+  std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed, fitted
   std::vector<Branch> branches;
+  std::vector<Facet> facets;  ///< junction patches (fitted stage, if asked)
   std::size_t ends = 0, junctions = 0, points = 0;
 };
 
@@ -51,6 +68,7 @@ struct Reconstruction {
   std::size_t samples = 0, medial_vertices = 0, medial_edges = 0;
   PruningReport pruning;
   std::size_t spurs_removed = 0;
+  FitReport fit;
   std::vector<Stage> stages;  ///< in the order above; the last is the result
   double tolerance = 0.0;     ///< ε × skeleton size, absolute
 };

@@ -1,0 +1,275 @@
+// Implementation of skelconv/reconstruct/surface_fit.hpp.
+#include "skelconv/reconstruct/surface_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "skelconv/mesh/implicit_field.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+bool is_closed(const Branch& b) { return b.first_node == b.last_node; }
+
+/// How many branch ends each node has (a free end has one).
+std::map<std::int32_t, int> end_uses(const std::vector<Branch>& branches) {
+  std::map<std::int32_t, int> uses;
+  for (const Branch& b : branches) ++uses[b.first_node], ++uses[b.last_node];
+  return uses;
+}
+
+/// True when the radius falls faster than `max_slope` from `inner` to `end`.
+bool is_cap_step(const Vec4& inner, const Vec4& end, double max_slope) {
+  const double length = (end.head<3>() - inner.head<3>()).norm();
+  return inner.w() - end.w() > max_slope * length;
+}
+
+/// Unit chord from the point about one end radius back along `points`
+/// (read from the back) to the last point.
+Vec3 end_tangent(const std::vector<Vec4>& points) {
+  const Vec4& end = points.back();
+  std::size_t k = points.size() - 2;
+  while (k > 0 && (points[k].head<3>() - end.head<3>()).norm() < end.w()) --k;
+  const Vec3 chord = end.head<3>() - points[k].head<3>();
+  return chord.norm() > 0.0 ? Vec3(chord.normalized()) : Vec3::Zero();
+}
+
+/// The unit tangent of a branch at point i (central difference; cyclic on
+/// a closed branch, whose first point repeats as the last).
+Vec3 tangent_at(const Branch& b, std::size_t i) {
+  const auto& p = b.points;
+  const std::size_t n = p.size();
+  std::size_t before = i == 0 ? 0 : i - 1, after = std::min(i + 1, n - 1);
+  if (is_closed(b) && n > 2 && (i == 0 || i == n - 1)) before = n - 2, after = 1;
+  const Vec3 d = p[after].head<3>() - p[before].head<3>();
+  return d.norm() > 0.0 ? Vec3(d.normalized()) : Vec3::UnitX();
+}
+
+/// `count` unit vectors evenly around the plane normal to `tangent`.
+std::vector<Vec3> normal_ring(const Vec3& tangent, int count) {
+  const Vec3 helper = std::abs(tangent.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 u = tangent.cross(helper).normalized(), v = tangent.cross(u);
+  std::vector<Vec3> ring;
+  for (int k = 0; k < count; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / count;
+    ring.push_back(std::cos(a) * u + std::sin(a) * v);
+  }
+  return ring;
+}
+
+/// Distance from `origin` along `direction` to where f falls to `iso`:
+/// steps of `step` out to `reach`, then bisection. 0 if f(origin) < iso;
+/// `reach` if f stays above iso that far.
+double crossing(const ImplicitField& field, double iso, const Vec3& origin, const Vec3& direction, double step,
+                double reach, int bisection_steps) {
+  if (field.value(origin) < iso) return 0.0;
+  double inside = 0.0, outside = step;
+  while (field.value(origin + outside * direction) >= iso) {
+    inside = outside;
+    outside += step;
+    if (outside > reach) return reach;
+  }
+  for (int k = 0; k < bisection_steps; ++k) {
+    const double middle = 0.5 * (inside + outside);
+    (field.value(origin + middle * direction) >= iso ? inside : outside) = middle;
+  }
+  return 0.5 * (inside + outside);
+}
+
+/// What the fit measures on the input once: per point, the rays of its ring
+/// and their input distances (negative: missed); per extended end, the
+/// distance to the input's tip along the end tangent.
+struct Targets {
+  std::vector<std::vector<std::vector<Vec3>>> rays;         // [branch][point][ray]
+  std::vector<std::vector<std::vector<double>>> distances;  // same shape
+};
+
+Targets measure_input(const std::vector<Branch>& branches, const SurfaceQuery& input, int directions) {
+  Targets t;
+  for (const Branch& b : branches) {
+    auto& rays = t.rays.emplace_back();
+    auto& distances = t.distances.emplace_back();
+    for (std::size_t i = 0; i < b.points.size(); ++i) {
+      rays.push_back(normal_ring(tangent_at(b, i), directions));
+      auto& d = distances.emplace_back();
+      for (const Vec3& ray : rays.back()) d.push_back(input.ray_distance(b.points[i].head<3>(), ray).value_or(-1.0));
+    }
+  }
+  return t;
+}
+
+/// Recentres the points whose cross-section is tube-like (every ray hits,
+/// the farthest within `tube_ratio` × the nearest): for a circle of radius
+/// R seen from c = c* + e, the ray along u meets it at R − e·u, so
+/// Σ d_k u_k = −(K/2) e over K evenly spread rays, and c* = c + (2/K) Σ d_k u_k.
+/// Smoothing moves the axis inwards on bends (a B-spline cuts corners);
+/// this puts it back. Returns how many points moved.
+std::size_t recentre(std::vector<Branch>& branches, const Targets& t, double tube_ratio) {
+  std::size_t moved = 0;
+  for (std::size_t bi = 0; bi < branches.size(); ++bi) {
+    for (std::size_t i = 0; i < branches[bi].points.size(); ++i) {
+      const auto& d = t.distances[bi][i];
+      if (d.empty()) continue;
+      const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
+      if (*lo < 0.0 || *hi > tube_ratio * *lo) continue;
+      Vec3 shift = Vec3::Zero();
+      for (std::size_t k = 0; k < d.size(); ++k) shift += d[k] * t.rays[bi][i][k];
+      branches[bi].points[i].head<3>() += (2.0 / double(d.size())) * shift;
+      ++moved;
+    }
+  }
+  return moved;
+}
+
+bool is_extension(const Branch& b, std::size_t i) {
+  return (i == 0 && b.extended_first) || (i + 1 == b.points.size() && b.extended_last);
+}
+
+/// The points of `b` within their own radius (arc length) of a free end:
+/// their normal rays meet the cap or feel the end's falloff, so their
+/// radius is not fitted but copied from the first point past that zone.
+/// Returns per point the index to copy from (itself if fitted).
+std::vector<std::size_t> radius_sources(const Branch& b) {
+  const std::size_t n = b.points.size();
+  std::vector<std::size_t> source(n);
+  for (std::size_t i = 0; i < n; ++i) source[i] = i;
+  const auto walk = [&](bool from_front) {
+    const auto at = [&](std::size_t k) -> std::size_t { return from_front ? k : n - 1 - k; };
+    const std::size_t start = 1;  // index 0 is the extension point
+    double arc = 0.0;
+    std::size_t k = start;
+    std::vector<std::size_t> zone;
+    for (; k + 1 < n; ++k) {
+      if (k > start) arc += (b.points[at(k)].head<3>() - b.points[at(k - 1)].head<3>()).norm();
+      if (arc >= b.points[at(k)].w()) break;
+      zone.push_back(at(k));
+    }
+    for (std::size_t z : zone) source[z] = at(k);
+  };
+  if (b.extended_first && n > 3) walk(true);
+  if (b.extended_last && n > 3) walk(false);
+  return source;
+}
+
+/// One Jacobi round over the radii; returns the largest relative change.
+double update_radii(std::vector<Branch>& branches, const Targets& targets, const ImplicitField& field, double iso,
+                    const FitOptions& o) {
+  std::vector<Branch> updated = branches;
+  double largest = 0.0;
+  for (std::size_t bi = 0; bi < branches.size(); ++bi) {
+    const Branch& b = branches[bi];
+    const std::vector<std::size_t> source = radius_sources(b);
+    for (std::size_t i = 0; i < b.points.size(); ++i) {
+      if (is_extension(b, i) || source[i] != i) continue;
+      double target = INFINITY, current = INFINITY;
+      for (std::size_t k = 0; k < targets.rays[bi][i].size(); ++k) {
+        const double d = targets.distances[bi][i][k];
+        if (d < 0.0) continue;
+        target = std::min(target, d);
+        current = std::min(current, crossing(field, iso, b.points[i].head<3>(), targets.rays[bi][i][k],
+                                             0.25 * b.points[i].w(), 4.0 * d, o.bisection_steps));
+      }
+      // No input crossing, or the centre is outside the current surface
+      // (a larger radius would not bring it in: SCALIS fields fall as 1/τ
+      // near a short skeleton): no information, the radius stays.
+      if (!std::isfinite(target) || !(current > 0.0)) continue;
+      const double factor = std::clamp(target / current, 1.0 / o.largest_step, o.largest_step);
+      updated[bi].points[i].w() *= factor;
+      largest = std::max(largest, std::abs(factor - 1.0));
+    }
+    for (std::size_t i = 0; i < b.points.size(); ++i) {
+      if (source[i] != i) updated[bi].points[i].w() = updated[bi].points[source[i]].w();
+    }
+  }
+  branches = std::move(updated);
+  return largest;
+}
+
+/// Moves every extension point so that the reconstructed surface reaches
+/// the input's tip along the end tangent; returns the largest move.
+double update_extensions(std::vector<Branch>& branches, const SurfaceQuery& input, const ImplicitField& field,
+                         double iso, const FitOptions& o) {
+  double largest = 0.0;
+  const auto fit_end = [&](Vec4& tip, const Vec4& end) {
+    Vec3 direction = tip.head<3>() - end.head<3>();
+    const double length = direction.norm();
+    if (length == 0.0) return;
+    direction /= length;
+    const auto target = input.ray_distance(end.head<3>(), direction);
+    if (!target) return;
+    const double reached = crossing(field, iso, end.head<3>(), direction, 0.25 * end.w(), 4.0 * *target, o.bisection_steps);
+    if (reached == 0.0) return;  // the end itself is outside: no information
+    const double moved = std::max(0.0, length + *target - reached) - length;
+    tip.head<3>() = end.head<3>() + (length + moved) * direction;
+    tip.w() = end.w();
+    largest = std::max(largest, std::abs(moved));
+  };
+  for (Branch& b : branches) {
+    const std::size_t n = b.points.size();
+    if (b.extended_last && n >= 2) fit_end(b.points[n - 1], b.points[n - 2]);
+    if (b.extended_first && n >= 2) fit_end(b.points[0], b.points[1]);
+  }
+  return largest;
+}
+
+}  // namespace
+
+std::vector<Branch> trim_caps(std::vector<Branch> branches, double max_slope) {
+  const auto uses = end_uses(branches);
+  for (Branch& b : branches) {
+    if (is_closed(b)) continue;
+    auto& p = b.points;
+    if (uses.at(b.last_node) == 1) {
+      while (p.size() > 2 && is_cap_step(p[p.size() - 2], p.back(), max_slope)) p.pop_back();
+    }
+    if (uses.at(b.first_node) == 1) {
+      while (p.size() > 2 && is_cap_step(p[1], p.front(), max_slope)) p.erase(p.begin());
+    }
+  }
+  return branches;
+}
+
+std::vector<Branch> extend_free_ends(std::vector<Branch> branches, double factor) {
+  const auto uses = end_uses(branches);
+  const auto extension = [factor](std::vector<Vec4> points) {
+    const Vec4& end = points.back();
+    const Vec3 tip = end.head<3>() + factor * end.w() * end_tangent(points);
+    return Vec4(tip.x(), tip.y(), tip.z(), end.w());
+  };
+  for (Branch& b : branches) {
+    if (factor <= 0.0 || b.points.size() < 2 || is_closed(b)) continue;
+    if (uses.at(b.last_node) == 1 && !b.extended_last) b.points.push_back(extension(b.points)), b.extended_last = true;
+    if (uses.at(b.first_node) == 1 && !b.extended_first) {
+      std::vector<Vec4> reversed(b.points.rbegin(), b.points.rend());
+      b.points.insert(b.points.begin(), extension(reversed));
+      b.extended_first = true;
+    }
+  }
+  return branches;
+}
+
+std::vector<Branch> fit_to_surface(std::vector<Branch> branches, const SurfaceQuery& input, const BranchField& field_of,
+                                   const FitOptions& o, FitReport* report) {
+  if (recentre(branches, measure_input(branches, input, o.directions), o.tube_ratio) > 0) {
+    // The closing point of a closed branch is its first point again.
+    for (Branch& b : branches) {
+      if (b.first_node == b.last_node && b.points.size() > 1) b.points.back() = b.points.front();
+    }
+  }
+  const Targets targets = measure_input(branches, input, o.directions);
+  FitReport r;
+  for (int round = 0; round < o.iterations; ++round) {
+    {
+      const Skeleton skeleton = field_of(branches);
+      r.largest_radius_change = update_radii(branches, targets, skeleton_field(skeleton), skeleton.iso(), o);
+    }
+    const Skeleton skeleton = field_of(branches);
+    r.largest_tip_change = update_extensions(branches, input, skeleton_field(skeleton), skeleton.iso(), o);
+  }
+  if (report != nullptr) *report = r;
+  return branches;
+}
+
+}  // namespace skelconv::reconstruct

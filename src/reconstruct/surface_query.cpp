@@ -1,0 +1,66 @@
+// Implementation of skelconv/reconstruct/surface_query.hpp (CGAL TU).
+#include "skelconv/reconstruct/surface_query.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <boost/variant/get.hpp>  // CGAL 5's intersection results are boost::variant
+
+#include "skelconv/errors.hpp"
+
+namespace skelconv::reconstruct {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Triangle = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
+using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+struct SurfaceQuery::Tree {
+  std::vector<Triangle> triangles;  // the tree points into this vector
+  AabbTree tree;
+};
+
+namespace {
+Point to_point(const Vec3& v) { return Point(v.x(), v.y(), v.z()); }
+}  // namespace
+
+SurfaceQuery::SurfaceQuery(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
+  if (surface.triangles.empty()) throw InputError("the input surface has no triangles");
+  for (const auto& t : surface.triangles) {
+    const Triangle triangle(to_point(surface.vertices[t[0]]), to_point(surface.vertices[t[1]]),
+                            to_point(surface.vertices[t[2]]));
+    if (!triangle.is_degenerate()) tree_->triangles.push_back(triangle);
+  }
+  if (tree_->triangles.empty()) throw InputError("the input surface has only degenerate triangles");
+  tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
+  tree_->tree.build();
+  tree_->tree.accelerate_distance_queries();
+}
+
+SurfaceQuery::~SurfaceQuery() = default;
+SurfaceQuery::SurfaceQuery(SurfaceQuery&&) noexcept = default;
+SurfaceQuery& SurfaceQuery::operator=(SurfaceQuery&&) noexcept = default;
+
+std::optional<double> SurfaceQuery::ray_distance(const Vec3& origin, const Vec3& direction) const {
+  const Kernel::Ray_3 ray(to_point(origin), Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
+  const auto hit = tree_->tree.first_intersection(ray);
+  if (!hit) return std::nullopt;
+  if (const Point* p = boost::get<Point>(&hit->first)) {
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(*p, ray.source())));
+  }
+  // The ray runs inside a triangle's plane: the nearer end of the segment.
+  const auto& s = boost::get<Kernel::Segment_3>(hit->first);
+  return std::sqrt(std::min(CGAL::to_double(CGAL::squared_distance(s.source(), ray.source())),
+                            CGAL::to_double(CGAL::squared_distance(s.target(), ray.source()))));
+}
+
+double SurfaceQuery::distance(const Vec3& point) const {
+  return std::sqrt(CGAL::to_double(tree_->tree.squared_distance(to_point(point))));
+}
+
+}  // namespace skelconv::reconstruct
