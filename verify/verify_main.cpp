@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -18,10 +19,12 @@ namespace {
 using skelconv::KernelFamily;
 using namespace skelconv::verify;
 
-std::optional<KernelFamily> parse_family(const std::string& name) {
-  for (KernelFamily f : {KernelFamily::inverse, KernelFamily::cauchy, KernelFamily::compact})
-    if (skelconv::family_name(f) == name) return f;
-  return std::nullopt;
+/// The families with a segment field (their traits' `primitives`).
+std::vector<std::string> segment_family_names() {
+  std::vector<std::string> names;
+  for (KernelFamily f : skelconv::all_kernel_families)
+    if (skelconv::kernels::family_facts(f).on(skelconv::kernels::on_segments)) names.emplace_back(skelconv::family_name(f));
+  return names;
 }
 
 }  // namespace
@@ -38,7 +41,7 @@ int main(int argc, char** argv) {
                  "samples per (family, degree, region) in every region (default: generic 2000, others 200)");
   app.add_flag("--full", full, "the long sweep: generic 20000, other regions 2000 (overridden by --points)");
   app.add_option("--shard", shard, "run shard k of n: work items with index % n == k (format k/n)");
-  app.add_option("--family", family, "only this family")->check(CLI::IsMember({"inverse", "cauchy", "compact"}));
+  app.add_option("--family", family, "only this family")->check(CLI::IsMember(segment_family_names()));
   app.add_option("--degree", degree, "only this kernel degree i")->check(CLI::Range(1, 64));
   app.add_option("--region", region, "only this region")
       ->check(CLI::IsMember({"generic", "near_line_beside", "near_line_beyond", "near_ends", "far", "support_boundary",
@@ -74,7 +77,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (!family.empty()) options.family = parse_family(family);
+  if (!family.empty()) options.family = skelconv::family_from_name(family);
   if (degree > 0) options.degree = degree;
   if (!region.empty()) options.region = region_from_name(region);
   options.progress = !quiet;

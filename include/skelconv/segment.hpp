@@ -59,7 +59,8 @@ class Segment {
   /// lengths whose square is not a normal double, are rejected as well.
   static constexpr double degenerate_length_ratio = 1e-8;
 
-  /// Validates everything and looks up the generated kernel; throws
+  /// Validates everything and looks up the generated kernel (or the derived
+  /// one of a family without a degree, derived_segment_kernels.hpp); throws
   /// InputError naming the offending field ("a", "b", "weight",
   /// "kernel.degree", "kernel.s", "kernel.R") and the problem.
   /// `weight` lists w_0 … w_d (1 to 4 coefficients, finite, not all zero);
@@ -109,6 +110,9 @@ class Segment {
   /// Everything but P (and the compact clip interval), filled once.
   SegmentInput<double> input_;
   const generated::SegmentKernel<double>* generated_ = nullptr;
+  /// From the kernel's trait: K = 0 beyond this (+inf: no clip), and K(0) = +inf.
+  double support_radius_ = 0.0;
+  bool singular_at_zero_ = false;
 };
 
 }  // namespace skelconv

@@ -18,7 +18,7 @@ struct CauchyKernel {
   static constexpr std::array<std::string_view, 1> parameters{"s"};
   static constexpr int min_degree = 1, max_degree = 16;  ///< as on segments
   static constexpr bool has_degree = true;          ///< JSON "degree" is read
-  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
+  static constexpr unsigned primitives = on_points | on_segments | on_polygons | on_scalis;  ///< all generated
   static constexpr bool singular_at_zero = false;
 
   int degree = 4;
@@ -43,6 +43,13 @@ struct CauchyKernel {
     return -T(degree) * T(s) * r / (half_integer_power(q, degree) * q);
   }
   /// Radius of the iso-surface K(r) = c around a point: r = √((c^(−2/i) − 1)/s), 0 < c < 1.
+  /// Width of the peak of u ↦ K(√(d² + u²)) at u = 0:
+  /// 1 + s(d² + u²) = s(u² + d² + 1/s), width √(d² + 1/s).
+  template <class T>
+  T peak_width(const T& d) const {
+    using std::sqrt;
+    return sqrt(d * d + T(1) / T(s));
+  }
   std::optional<double> point_iso_radius(double c) const {
     if (!(c > 0.0 && c < 1.0)) return std::nullopt;
     return std::sqrt((std::pow(c, -2.0 / degree) - 1.0) / s);

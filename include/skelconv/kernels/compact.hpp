@@ -20,7 +20,7 @@ struct CompactKernel {
   /// (i = 1 has dK/dr → −∞ there).
   static constexpr int min_degree = 2, max_degree = 16;
   static constexpr bool has_degree = true;          ///< JSON "degree" is read
-  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
+  static constexpr unsigned primitives = on_points | on_segments | on_polygons | on_scalis;  ///< all generated
   static constexpr bool singular_at_zero = false;
 
   int degree = 4;

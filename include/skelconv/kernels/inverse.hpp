@@ -21,7 +21,7 @@ struct InverseKernel {
   /// into a point without changing its kernel.
   static constexpr int min_degree = 1, max_degree = 16;
   static constexpr bool has_degree = true;          ///< JSON "degree" is read
-  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
+  static constexpr unsigned primitives = on_points | on_segments | on_polygons | on_scalis;  ///< all generated
   static constexpr bool singular_at_zero = true;
 
   int degree = 3;
@@ -43,6 +43,12 @@ struct InverseKernel {
     return -T(degree) * integer_power(r, -degree - 1);
   }
   /// Radius of the iso-surface w K(r) = c around a point of weight 1: r = c^(−1/i).
+  /// Width of the peak of u ↦ K(√(d² + u²)) at u = 0: (d² + u²)^(−i/2)
+  /// halves within u ~ d (the verifier's quadrature substitution).
+  template <class T>
+  T peak_width(const T& d) const {
+    return d;
+  }
   std::optional<double> point_iso_radius(double c) const {
     if (!(c > 0.0) || !std::isfinite(c)) return std::nullopt;
     return std::pow(c, -1.0 / degree);
