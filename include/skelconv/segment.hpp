@@ -8,10 +8,11 @@
 // (docs/generated_api.md); this class validates its inputs once, picks the
 // generated function, and handles the two cases the generated code must not
 // see:
-//   - compact kernels: P farther than R from the whole segment. The clip of
+//   - finite-support kernels (compact, soft, wyvill: the trait's
+//     support_radius R): P farther than R from the whole segment. The clip of
 //     [A,B] to the ball of radius R around P (skelconv/clip.hpp) is empty,
 //     and f = 0, ∇f = 0 exactly.
-//   - inverse kernels: P on the segment itself. The integrand r^(-i) is not
+//   - kernels singular at 0 (inverse): P on the segment itself. The integrand r^(-i) is not
 //     integrable there (i ≥ 1), f = +∞. By convention value() returns +inf
 //     and gradient() returns (+inf, +inf, +inf): there is no meaningful
 //     direction, and +inf (never NaN) keeps sums of fields well defined.

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "skelconv/kernels/radial_kernel.hpp"
+#include "skelconv/kernels/scalis_description.hpp"
 
 namespace skelconv::kernels {
 
@@ -53,6 +54,21 @@ struct CauchyKernel {
   std::optional<double> point_iso_radius(double c) const {
     if (!(c > 0.0 && c < 1.0)) return std::nullopt;
     return std::sqrt((std::pow(c, -2.0 / degree) - 1.0) / s);
+  }
+
+  // SCALIS (scalis_description.hpp): K(d/σ) = (1 + (d/σ)²)^(−i/2).
+  static constexpr ScalisSingularity scalis_singularity = ScalisSingularity::at_zero_radius;
+  static double scalis_line_normalisation(int i, double sigma) {
+    return std::pow(sigma, i) * std::pow(1.0 + sigma * sigma, (1.0 - i) / 2) * inverse_line_integral(i);
+  }
+  /// 2π σ² (1 + 1/σ²)^(1 − i/2) / (i − 2); diverges for i ≤ 2.
+  static double scalis_plane_normalisation(int i, double sigma) {
+    require_plane_degree(name, i);
+    return 2 * std::numbers::pi * sigma * sigma * std::pow(1.0 + 1.0 / (sigma * sigma), 1.0 - i / 2.0) / (i - 2);
+  }
+  /// c_s^i with s = 1/(στ)², times 1/τ².
+  static ScalisPolygonKernel scalis_polygon_kernel(int i, double sigma, double tau) {
+    return {KernelSpec::cauchy(i, 1.0 / (sigma * sigma * tau * tau)), 1.0 / (tau * tau)};
   }
 };
 

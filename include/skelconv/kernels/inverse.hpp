@@ -10,6 +10,7 @@
 
 #include "skelconv/integer_power.hpp"
 #include "skelconv/kernels/radial_kernel.hpp"
+#include "skelconv/kernels/scalis_description.hpp"
 
 namespace skelconv::kernels {
 
@@ -52,6 +53,19 @@ struct InverseKernel {
   std::optional<double> point_iso_radius(double c) const {
     if (!(c > 0.0) || !std::isfinite(c)) return std::nullopt;
     return std::pow(c, -1.0 / degree);
+  }
+
+  // SCALIS (scalis_description.hpp): K(d/σ) = (d/σ)^(−i).
+  static constexpr ScalisSingularity scalis_singularity = ScalisSingularity::on_segment;
+  static double scalis_line_normalisation(int i, double sigma) { return std::pow(sigma, i) * inverse_line_integral(i); }
+  /// 2π σ^i / (i − 2); diverges for i ≤ 2.
+  static double scalis_plane_normalisation(int i, double sigma) {
+    require_plane_degree(name, i);
+    return 2 * std::numbers::pi * std::pow(sigma, i) / (i - 2);
+  }
+  /// p^i itself, times (στ)^i / τ².
+  static ScalisPolygonKernel scalis_polygon_kernel(int i, double sigma, double tau) {
+    return {KernelSpec::inverse(i), 1.0 / (tau * tau) * std::pow(sigma * tau, i)};
   }
 };
 

@@ -10,6 +10,8 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <variant>
 
 #include "skelconv/kernels/cauchy.hpp"
@@ -72,6 +74,27 @@ FamilyFacts facts_from(KernelFamily family) {
   }
 }
 }  // namespace detail
+
+/// f(std::type_identity<Trait>{}) for the trait of `family`, one of those
+/// whose `primitives` include `kind` (InputError at "kernel.family" for any
+/// other: the primitives check that first, so it does not happen). The
+/// primitives read their family-specific descriptions (e.g. the SCALIS
+/// normalisations, scalis_description.hpp) through this instead of switching
+/// on the family.
+template <unsigned kind, class F, std::size_t index = 0>
+decltype(auto) with_trait(KernelFamily family, F&& f) {
+  if constexpr (index == std::variant_size_v<RadialKernel>) {
+    throw InputError("the " + std::string(family_name(family)) + " family is not defined on this primitive",
+                     "kernel.family");
+    return f(std::type_identity<std::variant_alternative_t<0, RadialKernel>>{});  // the return type
+  } else {
+    using Kernel = std::variant_alternative_t<index, RadialKernel>;
+    if constexpr ((Kernel::primitives & kind) != 0) {
+      if (family == Kernel::family) return f(std::type_identity<Kernel>{});
+    }
+    return with_trait<kind, F, index + 1>(family, std::forward<F>(f));
+  }
+}
 
 /// The JSON name, keys and primitives of `family` (from its trait).
 inline FamilyFacts family_facts(KernelFamily family) { return detail::facts_from(family); }

@@ -104,6 +104,10 @@ double bisect_increasing(F f, double lo, double hi, double target) {
 /// Throws InputError at "kernel.degree" unless min ≤ degree ≤ max.
 void require_degree(std::string_view family, int degree, int min_degree, int max_degree);
 
+/// Throws InputError at "kernel.degree" for a degree i ≤ 2, whose SCALIS
+/// plane normalisation ∬ K(√(1 + |u|²)) du diverges (K ~ d^−2).
+void require_plane_degree(std::string_view family, int degree);
+
 /// Throws InputError at `where` ("kernel.s") unless value is finite and > 0.
 void require_positive(double value, const char* where);
 
