@@ -12,6 +12,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "skelconv/clip.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 
 namespace skelconv::bench {
 namespace {
@@ -139,10 +140,17 @@ QuadratureResult quadrature(KernelFamily family, int degree, int weight_degree, 
     ap[c] = in.p[c] - in.a[c];
   }
   const double length = std::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
-  const double inv_R2 = 1.0 / (in.R * in.R);
-  const double t0 = family == KernelFamily::compact ? in.t0 : 0.0;
-  const double t1 = family == KernelFamily::compact ? in.t1 : 1.0;
-  const int i = degree;
+  KernelSpec spec;  // the family's trait (skelconv/kernels/) with the input's parameters
+  spec.family = family;
+  spec.degree = degree;
+  spec.s = in.s;
+  spec.R = in.R;
+  spec.a = in.gaussian_a;
+  spec.b = in.gaussian_b;
+  const kernels::RadialKernel trait = kernels::make_radial_kernel(spec);
+  const bool clipped = kernels::family_facts(family).finite_support;
+  const double t0 = clipped ? in.t0 : 0.0;
+  const double t1 = clipped ? in.t1 : 1.0;
   std::size_t evaluations = 0;
 
   auto weight = [&](double t) {
@@ -155,23 +163,11 @@ QuadratureResult quadrature(KernelFamily family, int degree, int weight_degree, 
     for (int c = 0; c < 3; ++c) d[c] = ap[c] - t * ab[c];
     return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   };
-  // K(q) with K a function of q = r².
-  auto kernel = [&](double q) {
-    switch (family) {
-      case KernelFamily::inverse: return half_power(q, -i);
-      case KernelFamily::cauchy: return half_power(1.0 + in.s * q, -i);
-      case KernelFamily::compact: return half_power(std::max(0.0, 1.0 - q * inv_R2), i);
-    }
-    return 0.0;
-  };
-  // dK/dq.
+  // K as a function of q = r², and dK/dq = K'(r)/(2r).
+  auto kernel = [&](double q) { return std::visit([&](const auto& k) { return k.value(std::sqrt(q)); }, trait); };
   auto kernel_derivative = [&](double q) {
-    switch (family) {
-      case KernelFamily::inverse: return -0.5 * i * half_power(q, -i - 2);
-      case KernelFamily::cauchy: return -0.5 * i * in.s * half_power(1.0 + in.s * q, -i - 2);
-      case KernelFamily::compact: return -0.5 * i * inv_R2 * half_power(std::max(0.0, 1.0 - q * inv_R2), i - 2);
-    }
-    return 0.0;
+    const double r = std::sqrt(q);
+    return std::visit([&](const auto& k) { return k.derivative(r); }, trait) / (2.0 * r);
   };
 
   auto integrate = [&](auto& integrand) {

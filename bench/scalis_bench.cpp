@@ -30,6 +30,7 @@
 
 #include "bench_main.hpp"
 #include "bench_support.hpp"  // bench_a, bench_b, distance_to_segment
+#include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/scalis_segment.hpp"
 
 namespace skelconv::bench {
@@ -75,27 +76,16 @@ FieldSample quadrature(const ScalisSegment& segment, const Vec3& p, double toler
   const double sigma = segment.kernel().sigma, dtau = segment.tau1() - segment.tau0();
   const int i = segment.kernel().degree;
   const KernelFamily family = segment.kernel().family;
-  // K(x) and K'(x)/x of x = d/τ (SPEC §1, SCALIS kernels).
+  // K(x/σ) and its x-derivative over x, x = d/τ (SPEC §1, SCALIS kernels):
+  // the family's trait at s = 1, R = 1 (skelconv/kernels/).
+  KernelSpec spec;
+  spec.family = family;
+  spec.degree = i;
+  const kernels::RadialKernel trait = kernels::make_radial_kernel(spec);
   auto kernel = [&](double x, double& derivative_over_x) {
-    const double y2 = x * x / (sigma * sigma);
-    switch (family) {
-      case KernelFamily::inverse: {
-        const double k = std::pow(y2, -0.5 * i);
-        derivative_over_x = -i * k / (x * x);
-        return k;
-      }
-      case KernelFamily::cauchy: {
-        const double k = std::pow(1 + y2, -0.5 * i);
-        derivative_over_x = -i * k / (1 + y2) / (sigma * sigma);
-        return k;
-      }
-      case KernelFamily::compact: {
-        if (y2 >= 1) return derivative_over_x = 0, 0.0;
-        derivative_over_x = -i * std::pow(1 - y2, 0.5 * i - 1) / (sigma * sigma);
-        return std::pow(1 - y2, 0.5 * i);
-      }
-    }
-    return derivative_over_x = 0, 0.0;
+    const double y = x / sigma;
+    derivative_over_x = std::visit([&](const auto& k) { return k.derivative(y); }, trait) / (sigma * x);
+    return std::visit([&](const auto& k) { return k.value(y); }, trait);
   };
   // component −1: F; 0..2: ∂F/∂P_c = ∫ K'(x)/x · (P − Γ)_c / τ² · |AB| dt / τ.
   auto integrand = [&](int component) {

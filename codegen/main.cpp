@@ -14,6 +14,7 @@
 #include <regex>
 #include <tuple>
 
+#include "generated_families.hpp"
 #include "kernel_writer.hpp"
 
 namespace {
@@ -86,9 +87,9 @@ int main(int argc, char** argv) {
         {KernelFamily::compact, parse_range(compact, "--compact")},
     };
     for (const auto& [family, range] : families) {
-      if (range.last >= range.first && range.first < (family == KernelFamily::compact ? 2 : 1))
-        throw CLI::ValidationError(std::string(skelconv::family_name(family)),
-                                   "degrees start at " + std::string(family == KernelFamily::compact ? "2" : "1"));
+      const int lowest = skelconv::codegen::generated_family(family).min_segment_degree;
+      if (range.last >= range.first && range.first < lowest)
+        throw CLI::ValidationError(std::string(skelconv::family_name(family)), "degrees start at " + std::to_string(lowest));
       for (int i = range.first; i <= range.last; ++i)
         for (int d = w.first; d <= w.last; ++d) request.segment_kernels.push_back({family, i, d});
     }
@@ -100,12 +101,13 @@ int main(int argc, char** argv) {
         {KernelFamily::compact, parse_range(polygon_compact, "--polygon-compact")},
     };
     for (const auto& [family, range] : polygon_families) {
-      const int lowest = family == KernelFamily::compact ? 2 : 3;
+      const skelconv::codegen::GeneratedFamily& row = skelconv::codegen::generated_family(family);
+      const int lowest = row.min_polygon_degree;
       if (range.last >= range.first && range.first < lowest)
         throw CLI::ValidationError("polygon " + std::string(skelconv::family_name(family)),
                                    "degrees start at " + std::to_string(lowest));
       for (int i = range.first; i <= range.last; ++i)
-        if (family != KernelFamily::compact || i % 2 == 0) request.polygon_kernels.push_back({family, i});
+        if (!row.even_polygon_degrees || i % 2 == 0) request.polygon_kernels.push_back({family, i});
     }
     for (const auto& [family, option, text] :
          {std::tuple{KernelFamily::inverse, "--scalis-inverse", scalis_inverse},

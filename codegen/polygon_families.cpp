@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "generated_families.hpp"
 #include "segment_program_builder.hpp"
 
 namespace skelconv::codegen {
@@ -40,7 +41,7 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
     program_.add_output("out.h", h_);
     theta_ = define("theta", GiNaC::atan2(h_, ap_bp_));
     program_.add_output("out.theta", theta_);
-    if (spec_.family == KernelFamily::compact)
+    if (generated_family(spec_.family).compact_support)
       build_compact();
     else
       build_infinite_support();
@@ -227,20 +228,12 @@ std::string PolygonKernelSpec::name() const {
 }
 
 std::string PolygonKernelSpec::equation() const {
-  const std::string i = std::to_string(degree);
-  switch (family) {
-    case KernelFamily::inverse:
-      return "C(P) = ∬_Ω |P − Q|^(−" + i + ") dQ";
-    case KernelFamily::cauchy:
-      return "C(P) = ∬_Ω (1 + s |P − Q|²)^(−" + i + "/2) dQ";
-    case KernelFamily::compact:
-      return "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(" + i + "/2) dQ";
-  }
-  throw std::logic_error("unknown family");
+  return "C(P) = ∬_Ω " + kernel_text(generated_family(family), "P − Q", degree) + " dQ";
 }
 
 StraightLineProgram build_polygon_edge_program(const PolygonKernelSpec& spec, SegmentOutputs outputs) {
-  if (spec.family == KernelFamily::compact ? spec.degree < 2 || spec.degree % 2 != 0 : spec.degree < 3)
+  const GeneratedFamily& row = generated_family(spec.family);
+  if (spec.degree < row.min_polygon_degree || (row.even_polygon_degrees && spec.degree % 2 != 0))
     throw std::invalid_argument(spec.name() + ": polygons take inverse/Cauchy i ≥ 3 and even compact i ≥ 2");
   const SegmentKernelSpec edge{spec.family, spec.degree, 0};
   return PolygonEdgeProgramBuilder(edge).build(outputs);

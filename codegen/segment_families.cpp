@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "generated_families.hpp"
 #include "segment_program_builder.hpp"
 
 namespace skelconv::codegen {
@@ -97,17 +98,9 @@ std::string SegmentKernelSpec::name() const {
 }
 
 std::string SegmentKernelSpec::equation() const {
-  const std::string i = std::to_string(degree);
-  const std::string w = weight_text(weight_degree);
-  switch (family) {
-    case KernelFamily::inverse:
-      return "f(P) = |AB| ∫_0^1 " + w + " |P − Γ(t)|^(−" + i + ") dt";
-    case KernelFamily::cauchy:
-      return "f(P) = |AB| ∫_0^1 " + w + " (1 + s |P − Γ(t)|²)^(−" + i + "/2) dt";
-    case KernelFamily::compact:
-      return "f(P) = |AB| ∫_t0^t1 " + w + " (1 − |P − Γ(t)|²/R²)^(" + i + "/2) dt";
-  }
-  throw std::logic_error("unknown family");
+  const GeneratedFamily& row = generated_family(family);
+  return std::string("f(P) = |AB| ∫_") + (row.compact_support ? "t0^t1 " : "0^1 ") + weight_text(weight_degree) + " " +
+         kernel_text(row, "P − Γ(t)", degree) + " dt";
 }
 
 StraightLineProgram build_segment_program(const SegmentKernelSpec& spec, SegmentOutputs outputs) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "generated_families.hpp"
 #include "helper_costs.hpp"
 #include "segment_families.hpp"
 #include "segment_moments.hpp"
@@ -94,7 +95,7 @@ class SegmentProgramBuilder {
     };
 
     Choice choice{targets, {}};
-    if (spec_.family == KernelFamily::compact) {
+    if (generated_family(spec_.family).compact_support) {
       const MomentSymbols symbols = symbols_ = compact_symbols();
       if (spec_.degree % 2 == 0) {
         // t^k q^(i/2) is a polynomial of degree ≤ i + k: an N-point
@@ -268,7 +269,7 @@ class SegmentProgramBuilder {
     alt.calls.push_back(std::move(call));
   }
 
-  int kernel_index() const { return spec_.family == KernelFamily::compact ? -spec_.degree : spec_.degree; }
+  int kernel_index() const { return generated_family(spec_.family).compact_support ? -spec_.degree : spec_.degree; }
 
   ex define(const std::string& name, const ex& value) {
     if (GiNaC::is_a<symbol>(value)) return value;  // an alias needs no code
@@ -334,27 +335,26 @@ class SegmentProgramBuilder {
 
   // q(t) = α|P − Γ(t)|² + β = a t² − 2 b t + c.
   virtual void define_quadratic() {
-    switch (spec_.family) {
-      case KernelFamily::inverse:
+    const GeneratedFamily& row = generated_family(spec_.family);
+    switch (row.alpha) {
+      case GeneratedFamily::Alpha::one:
         alpha_ = 1;
-        beta_ = 0;
         break;
-      case KernelFamily::cauchy: {
-        symbol s("s");
-        program_.add_input(s, "in.s");
-        alpha_ = s;
-        beta_ = 1;
+      case GeneratedFamily::Alpha::parameter: {
+        symbol parameter(row.parameter);
+        program_.add_input(parameter, std::string("in.") + row.parameter);
+        alpha_ = parameter;
         break;
       }
-      case KernelFamily::compact: {
-        symbol R("R");
-        program_.add_input(R, "in.R");
-        inv_R_ = define("inv_R", pow(R, -1));
+      case GeneratedFamily::Alpha::minus_inverse_square: {
+        symbol parameter(row.parameter);
+        program_.add_input(parameter, std::string("in.") + row.parameter);
+        inv_R_ = define("inv_R", pow(parameter, -1));
         alpha_ = -define("inv_R2", pow(inv_R_, 2));
-        beta_ = 1;
         break;
       }
     }
+    beta_ = row.beta;
     adjust_beta();
     a_ = define("a", alpha_ * ab_ab_);
     b_ = define("b", alpha_ * ab_ap_);

@@ -187,6 +187,28 @@ TEST(IntervalSoundness, Polygons) {
         generated_evaluation_error);
 }
 
+/// The soft-object families where they have a segment (and, for soft and
+/// Wyvill, a polygon) field: issue 13 item 2.
+KernelSpec random_soft_family(Rng& rng, bool polygon) {
+  switch (std::uniform_int_distribution<int>(0, polygon ? 1 : 2)(rng)) {
+    case 0: return KernelSpec::soft(uniform(rng, 0.5, 2.5));
+    case 1: return KernelSpec::wyvill(uniform(rng, 0.5, 2.5));
+    default: return KernelSpec::gaussian(uniform(rng, 0.3, 30), uniform(rng, 0.5, 2));
+  }
+}
+
+TEST(IntervalSoundness, SoftFamiliesOnSegmentsAndPolygons) {
+  sweep("segment soft/wyvill/gaussian", [](Rng& rng) {
+    const Vec3 a = random_point(rng, 1.5);
+    const std::vector<double> w{uniform(rng, 0.2, 2), uniform(rng, -0.5, 0.5)};
+    return Skeleton({Primitive(Segment(a, a + random_point(rng, 1.5), random_soft_family(rng, false), w))});
+  }, 210, generated_evaluation_error);
+  sweep("polygon soft/wyvill", [](Rng& rng) {
+    const Polygon shape = random_polygon(rng);
+    return Skeleton({Primitive(Polygon(shape.vertices(), random_soft_family(rng, true)))});
+  }, 310, generated_evaluation_error);
+}
+
 ScalisKernel random_scalis(Rng& rng) {
   switch (std::uniform_int_distribution<int>(0, 2)(rng)) {
     case 0: return ScalisKernel::inverse(std::uniform_int_distribution<int>(3, 6)(rng), uniform(rng, 0.5, 2));

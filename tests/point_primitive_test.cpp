@@ -6,6 +6,7 @@
 #include "skelconv/primitives/point.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 #include <random>
 
@@ -27,6 +28,7 @@ long double reference_kernel(const KernelSpec& k, long double r) {
     case KernelFamily::inverse: return std::pow(r, -(long double)k.degree);
     case KernelFamily::cauchy: return std::pow(1.0L + k.s * r * r, -0.5L * k.degree);
     case KernelFamily::compact: return r < k.R ? std::pow(1.0L - r * r / (k.R * k.R), 0.5L * k.degree) : 0.0L;
+    default: throw std::logic_error("the generated families only (the others: kernel_families_test.cpp)");
   }
   return 0.0L;
 }

@@ -15,6 +15,7 @@
 #include "skelconv/polygon.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 #include <string>
 #include <vector>
@@ -272,6 +273,7 @@ KernelValue kernel_at(const KernelSpec& kernel, long double q) {
       if (base <= 0) return {};
       return {std::pow(base, half_i), -half_i / R2 * std::pow(base, half_i - 1)};
     }
+    default: throw std::logic_error("the generated families only (the others: kernel_families_test.cpp)");
   }
   return {};
 }

@@ -16,6 +16,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <cstdio>
 #include <limits>
 #include <random>
@@ -70,6 +71,7 @@ void kernel_terms(const ReferenceTriangle& t, Real distance, Real tau, Real& val
       value = x < 1 ? std::pow(1 - x * x, i / 2) : 0;
       derivative_over_d = x < 1 ? -i / (t.sigma * t.sigma) * std::pow(1 - x * x, i / 2 - 1) : 0;
       break;
+    default: throw std::logic_error("the generated families only (the others: kernel_families_test.cpp)");
   }
   value /= tau * tau;
   derivative_over_d /= tau * tau * tau * tau;
@@ -212,6 +214,7 @@ TEST(ScalisTriangleNormalisation, MatchesQuadratureOfThePlaneIntegral) {
             case KernelFamily::inverse: return std::pow(x, -i);
             case KernelFamily::cauchy: return std::pow(1 + x * x, -0.5 * i);
             case KernelFamily::compact: return x < 1 ? std::pow(1 - x * x, 0.5 * i) : 0.0;
+            default: throw std::logic_error("the generated families only (the others: kernel_families_test.cpp)");
           }
           return 0.0;
         };

@@ -104,11 +104,11 @@ TEST(SkeletonFileErrors, UnknownNames) {
                "primitives[0].kernel.family: unknown family \"gauss\" "
                "(supported: \"inverse\", \"cauchy\", \"compact\", \"soft\", \"wyvill\", \"ferley\", "
                "\"gaussian\")");
-  // A point-only family (kernels/kernel_list.hpp) on a segment.
-  expect_error(one_segment(R"({"family": "gaussian", "a": 1, "b": 1})"),
-               "primitives[0].kernel.family: the gaussian family is defined on point primitives only, not on a "
-               "segment: its closed form along a segment is not generated (use \"type\": \"point\", or one of "
-               "\"inverse\", \"cauchy\", \"compact\")");
+  // A point-only family (its trait's `primitives`) on a segment.
+  expect_error(one_segment(R"({"family": "ferley", "e": 0.5, "R": 1})"),
+               "primitives[0].kernel.family: the ferley family has no closed form on a segment (it is defined on "
+               "points only); a segment takes \"inverse\", \"cauchy\", \"compact\", \"soft\", \"wyvill\", "
+               "\"gaussian\"");
   expect_error(R"({"primitives": [{"type": "triangle"}]})",
                "primitives[0].type: unknown primitive type \"triangle\" (supported: \"segment\", \"polygon\", \"scalis_segment\", \"scalis_triangle\", \"point\")");
 }

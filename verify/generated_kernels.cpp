@@ -5,10 +5,10 @@
 
 namespace skelconv::verify {
 
-std::span<const GeneratedKernel<double>> generated_kernels_double() { return generated::segment_kernels<double>(); }
+std::span<const GeneratedKernel<double>> generated_kernels_double() { return all_segment_kernels<double>(); }
 
 const GeneratedKernel<double>* find_generated_double(KernelFamily family, int degree, int weight_degree) {
-  return generated::find_segment_kernel<double>(family, degree, weight_degree);
+  return find_any_segment_kernel<double>(family, degree, weight_degree);
 }
 
 }  // namespace skelconv::verify

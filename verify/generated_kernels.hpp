@@ -4,19 +4,33 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "extended_precision.hpp"
 #include "generated/segment_table.hpp"
+#include "skelconv/derived_segment_kernels.hpp"
 
 namespace skelconv::verify {
 
 template <class T>
 using GeneratedKernel = generated::SegmentKernel<T>;
 
+/// The generated table followed by the derived kernels (soft, wyvill,
+/// gaussian: skelconv/derived_segment_kernels.hpp), built once.
+template <class T>
+std::span<const GeneratedKernel<T>> all_segment_kernels() {
+  static const std::vector<GeneratedKernel<T>> table = [] {
+    std::vector<GeneratedKernel<T>> out(generated::segment_kernels<T>().begin(), generated::segment_kernels<T>().end());
+    out.insert(out.end(), derived_segment_kernels<T>().begin(), derived_segment_kernels<T>().end());
+    return out;
+  }();
+  return table;
+}
+
 std::span<const GeneratedKernel<double>> generated_kernels_double();
 std::span<const GeneratedKernel<extended>> generated_kernels_extended();
 
-/// nullptr when (family, degree, weight degree) was not generated.
+/// nullptr when (family, degree, weight degree) was not generated (nor derived).
 const GeneratedKernel<double>* find_generated_double(KernelFamily family, int degree, int weight_degree);
 const GeneratedKernel<extended>* find_generated_extended(KernelFamily family, int degree, int weight_degree);
 

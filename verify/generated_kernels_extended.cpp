@@ -4,12 +4,10 @@
 
 namespace skelconv::verify {
 
-std::span<const GeneratedKernel<extended>> generated_kernels_extended() {
-  return generated::segment_kernels<extended>();
-}
+std::span<const GeneratedKernel<extended>> generated_kernels_extended() { return all_segment_kernels<extended>(); }
 
 const GeneratedKernel<extended>* find_generated_extended(KernelFamily family, int degree, int weight_degree) {
-  return generated::find_segment_kernel<extended>(family, degree, weight_degree);
+  return find_any_segment_kernel<extended>(family, degree, weight_degree);
 }
 
 }  // namespace skelconv::verify

@@ -1,12 +1,14 @@
-// verify/kernel_definitions.hpp — the kernels of SPEC §1, written directly
-// from their definitions as functions of the distance r, with hand-written
-// derivatives. This is the ground truth of the verifier: it shares no algebra
-// with the generated closed forms (no a, b, c, no J recurrences).
+// verify/kernel_definitions.hpp — the kernels of SPEC §1 and issue 13, as
+// functions of the distance r with their derivatives, taken from the one
+// description of each family (its trait, skelconv/kernels/). This is the
+// ground truth of the verifier: it shares no algebra with the closed forms.
 #pragma once
 
 #include <cmath>
+#include <limits>
+#include <variant>
 
-#include "skelconv/segment_input.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 
 namespace skelconv::verify {
 
@@ -31,44 +33,56 @@ T half_integer_power(const T& x, int n) {
   return n >= 0 ? integer_power(root, n) : T(1) / integer_power(root, -n);
 }
 
-/// One kernel K of SPEC §1 with its parameters.
+/// One kernel K with its parameters, evaluated from the DEFINITION that its
+/// runtime trait states (skelconv/kernels/: K(r) and dK/dr written directly
+/// from the formula, in any scalar type). It shares no algebra with the
+/// segment closed forms (no a, b, c, no J recurrences, no erf).
 template <class T>
 struct KernelDefinition {
   KernelFamily family = KernelFamily::inverse;
-  int degree = 1;  ///< i
+  int degree = 1;  ///< i (families with a degree)
   T s = T(1);      ///< Cauchy sharpness (cauchy only)
-  T R = T(1);      ///< support radius (compact only)
+  T R = T(1);      ///< support radius (compact, soft, wyvill)
+  T a = T(1);      ///< Gaussian sharpness (gaussian only)
+  T b = T(1);      ///< Gaussian height (gaussian only)
 
-  /// K(r), SPEC §1:
-  ///   p^i(r)   = r^-i
-  ///   c_s^i(r) = (1 + s r²)^(-i/2)
-  ///   k_R^i(r) = (1 - r²/R²)^(i/2) for r < R, else 0
-  T value(const T& r) const {
-    switch (family) {
-      case KernelFamily::inverse: return T(1) / integer_power(r, degree);
-      case KernelFamily::cauchy: return half_integer_power(T(1) + s * r * r, -degree);
-      case KernelFamily::compact:
-        if (!(r < R)) return T(0);
-        return half_integer_power(T(1) - (r / R) * (r / R), degree);
-    }
-    return T(0);
+  /// The trait of `family` with these parameters (they are doubles in every
+  /// sweep, so the conversion is exact).
+  kernels::RadialKernel trait() const {
+    KernelSpec spec;
+    spec.family = family;
+    spec.degree = degree;
+    spec.s = static_cast<double>(s);
+    spec.R = static_cast<double>(R);
+    spec.a = static_cast<double>(a);
+    spec.b = static_cast<double>(b);
+    return kernels::make_radial_kernel(spec);
   }
 
+  /// K(r).
+  T value(const T& r) const {
+    return std::visit([&](const auto& k) { return k.template value<T>(r); }, trait());
+  }
   /// K'(r)/r, so that ∇_P K(|P − Γ|) = K'(r)/r · (P − Γ) (SPEC §2, gradient
-  /// under the integral). Derivatives by hand:
-  ///   p^i:   K' = -i r^(-i-1)                       ⇒ K'/r = -i r^(-i-2)
-  ///   c_s^i: K' = -(i/2)(1+sr²)^(-i/2-1) · 2sr       ⇒ K'/r = -i s (1+sr²)^(-(i+2)/2)
-  ///   k_R^i: K' = (i/2)(1-r²/R²)^(i/2-1) · (-2r/R²)  ⇒ K'/r = -(i/R²)(1-r²/R²)^((i-2)/2)
-  /// (k_R^i for i ≥ 2 only, so the last power is ≥ 0 and K'/r → 0 at r = R.)
+  /// under the integral); r > 0.
   T derivative_over_r(const T& r) const {
-    switch (family) {
-      case KernelFamily::inverse: return -T(degree) / integer_power(r, degree + 2);
-      case KernelFamily::cauchy: return -T(degree) * s * half_integer_power(T(1) + s * r * r, -(degree + 2));
-      case KernelFamily::compact:
-        if (!(r < R)) return T(0);
-        return -T(degree) / (R * R) * half_integer_power(T(1) - (r / R) * (r / R), degree - 2);
-    }
-    return T(0);
+    return std::visit([&](const auto& k) { return k.template derivative<T>(r) / r; }, trait());
+  }
+  /// K = 0 beyond this distance (+inf: no support limit).
+  T support_radius() const { return T(kernels::support_radius(trait())); }
+  /// Width, in distance units, of the peak of u ↦ K(√(d² + u²)) at u = 0 for
+  /// a point at distance d from the line (the trait's peak_width; +inf where
+  /// it has none: no narrower peak than the support).
+  T peak_width(const T& d) const {
+    return std::visit(
+        [&](const auto& k) -> T {
+          if constexpr (requires { k.template peak_width<T>(d); }) {
+            return k.template peak_width<T>(d);
+          } else {
+            return std::numeric_limits<T>::infinity();
+          }
+        },
+        trait());
   }
 };
 

@@ -25,7 +25,7 @@ struct KernelPair {
 };
 using KernelsByWeightDegree = std::array<KernelPair, max_weight_degree + 1>;
 
-inline KernelsByWeightDegree find_kernels(KernelFamily family, int degree) {
+inline KernelsByWeightDegree find_kernels(KernelFamily family, int degree) {  // generated or derived
   KernelsByWeightDegree out{};
   for (int d = 0; d <= max_weight_degree; ++d)
     out[d] = {find_generated_double(family, degree, d),
@@ -34,12 +34,13 @@ inline KernelsByWeightDegree find_kernels(KernelFamily family, int degree) {
 }
 
 inline KernelDefinition<extended> reference_kernel(const SweepProblem& pb) {
-  return {pb.family, pb.degree, extended(pb.s), extended(pb.R)};
+  return {pb.family, pb.degree, extended(pb.s), extended(pb.R), extended(pb.gaussian_a), extended(pb.gaussian_b)};
 }
 
-/// The generated input for `pb` in precision T. For the compact family the
-/// support is clipped in T, as the runtime does (skelconv/clip.hpp); nullopt
-/// when the clip is empty (the generated function must not be called; f = 0).
+/// The generated input for `pb` in precision T. For a finite-support family
+/// the support is clipped in T, as the runtime does (skelconv/clip.hpp);
+/// nullopt when the clip is empty (the generated function must not be
+/// called; f = 0).
 template <class T>
 std::optional<SegmentInput<T>> generated_input(const SweepProblem& pb) {
   SegmentInput<T> in;
@@ -47,8 +48,11 @@ std::optional<SegmentInput<T>> generated_input(const SweepProblem& pb) {
   for (int k = 0; k <= max_weight_degree; ++k) in.w[k] = T(pb.w[k]);
   in.s = T(pb.s);
   in.R = T(pb.R);
-  if (pb.family == KernelFamily::compact) {
-    const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
+  in.gaussian_a = T(pb.gaussian_a);
+  in.gaussian_b = T(pb.gaussian_b);
+  const double support = static_cast<double>(reference_kernel(pb).support_radius());
+  if (std::isfinite(support)) {
+    const auto clip = clip_to_ball(in.a, in.b, in.p, T(support));
     if (!clip) return std::nullopt;
     in.t0 = clip->t0;
     in.t1 = clip->t1;

@@ -650,13 +650,8 @@ class PolygonReferenceIntegrator {
   /// Width of the radial peak at distance h from P: the singularities of
   /// ρ ↦ K(√(ρ² + 2βρ + h²)) lie on |ρ| = width (β real, 0 ≤ β ≤ h).
   Real peak_width(const Real& h) const {
-    using std::sqrt;
-    switch (family_) {
-      case KernelFamily::inverse: return h;
-      case KernelFamily::cauchy: return sqrt(h * h + 1 / s_);
-      case KernelFamily::compact: break;
-    }
-    return std::numeric_limits<Real>::infinity();
+    const KernelDefinition<Real> kernel{family_, degrees_.front(), s_, R_};
+    return kernel.peak_width(h);  // the trait's (kernels/): h, √(h² + 1/s), or +inf
   }
 
   /// Writes, per component, K at distance vector y (= P − Q) times `weight`.

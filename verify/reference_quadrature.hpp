@@ -152,18 +152,12 @@ class NodeReplay {
 
 
 /// Width, in units of t, of the peak of u ↦ K(|H − u AB|) at u = 0, where
-/// `sigma` = |H|/|AB| is P's distance to Γ(t*) in the same units:
-///   p^i:   r² = L²(u² + σ²)                          ⇒ width σ
-///   c_s^i: 1 + s r² = sL²(u² + σ² + 1/(sL²))         ⇒ width √(σ² + 1/(sL²))
-///   k_R^i: no peak narrower than the support          ⇒ +∞ (no substitution)
+/// `sigma` = |H|/|AB| is P's distance to Γ(t*) in the same units: the
+/// trait's peak width at distance σ|AB|, divided by |AB| (p^i: σ; c_s^i:
+/// √(σ² + 1/(sL²)); Gaussian: 1/(√a L); finite-support kernels: +∞, no
+/// substitution).
 inline extended peak_width(const KernelDefinition<extended>& kernel, const extended& sigma, const extended& length) {
-  using std::sqrt;
-  switch (kernel.family) {
-    case KernelFamily::inverse: return sigma;
-    case KernelFamily::cauchy: return sqrt(sigma * sigma + 1 / (kernel.s * length * length));
-    case KernelFamily::compact: break;
-  }
-  return std::numeric_limits<extended>::infinity();
+  return kernel.peak_width(sigma * length) / length;
 }
 
 /// Variable of integration on one piece u ∈ [0, extent] (or its mirror
@@ -271,12 +265,13 @@ class ReferenceIntegrator {
     return out;
   }
 
-  /// Moments of the definition integral for any family: the compact family is
-  /// clipped to its support ball in binary128 first (empty ⇒ f = 0).
+  /// Moments of the definition integral for any family: a finite-support
+  /// family is clipped to its support ball in binary128 first (empty ⇒ f = 0).
   SegmentMoments moments(const KernelDefinition<extended>& kernel, const Vec3<extended>& a, const Vec3<extended>& b,
                          const Vec3<extended>& p) {
-    if (kernel.family != KernelFamily::compact) return moments_on_interval(kernel, a, b, p, extended(0), extended(1));
-    const auto clip = clip_to_ball(a, b, p, kernel.R);
+    const extended support = kernel.support_radius();
+    if (!isfinite(support)) return moments_on_interval(kernel, a, b, p, extended(0), extended(1));
+    const auto clip = clip_to_ball(a, b, p, support);
     if (!clip) {
       SegmentMoments empty;
       empty.empty = true;

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string_view>
 
-#include "skelconv/segment_input.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 
 namespace skelconv::verify {
 
@@ -20,8 +20,8 @@ enum class Region {
   near_line_beyond,  ///< same distances, projecting 0.05–2 |AB| beyond an end
   near_ends,         ///< 1e-4–0.05 |AB| from A or B
   far,               ///< 10–1e4 |AB| from the segment
-  support_boundary,  ///< compact only: the support sphere cuts the segment, or P is just outside the support
-  support_grazing,   ///< compact only: P just inside the support, the ball barely reaches the segment (f → 0)
+  support_boundary,  ///< finite support only: the support sphere cuts the segment, or P is just outside the support
+  support_grazing,   ///< finite support only: P just inside the support, the ball barely reaches the segment (f → 0)
 };
 
 inline constexpr std::array<Region, 7> all_regions{
@@ -61,9 +61,11 @@ inline std::optional<Region> region_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-constexpr bool region_applies(Region region, KernelFamily family) {
-  const bool compact_only = region == Region::support_boundary || region == Region::support_grazing;
-  return !compact_only || family == KernelFamily::compact;
+/// The support regions apply to the families with a finite support
+/// (compact, soft, wyvill: their traits' support radius).
+inline bool region_applies(Region region, KernelFamily family) {
+  const bool support_only = region == Region::support_boundary || region == Region::support_grazing;
+  return !support_only || kernels::family_facts(family).finite_support;
 }
 
 /// Points per (family, degree, region); every weight degree reuses them.

@@ -29,7 +29,9 @@ struct SweepProblem {
   Vec3<double> a{}, b{}, p{};
   std::array<double, 4> w{};  ///< weight coefficients; weight degree d uses w[0..d]
   double s = 1;               ///< Cauchy sharpness
-  double R = 1;               ///< compact support radius
+  double R = 1;               ///< support radius (compact, soft, wyvill)
+  double gaussian_a = 1;      ///< Gaussian sharpness
+  double gaussian_b = 1;      ///< Gaussian height
 };
 
 /// SplitMix64 finaliser: a bijective 64-bit mixer.
@@ -216,7 +218,14 @@ inline SweepProblem draw_problem(std::uint64_t seed, KernelFamily family, int de
       break;
   }
   // Compact elsewhere: the ball reaches 0.3–2 |AB| past the nearest point.
-  if (!radius_set) pb.R = distance_to_segment(pb.a, pb.b, pb.p) + L * rng.log_uniform(0.3, 2);
+  const double distance = distance_to_segment(pb.a, pb.b, pb.p);
+  if (!radius_set) pb.R = distance + L * rng.log_uniform(0.3, 2);
+  // Gaussian (drawn last, so the other families keep their samples): widths
+  // 1/√a from 0.03 to 10 |AB|, i.e. c = a|AB|² from 1e-2 to 1e3, capped so
+  // that K at the nearest point is at least e^(−30) b (f stays a normal
+  // double however far P is: the far region then has wide Gaussians).
+  pb.gaussian_a = std::min(rng.log_uniform(1e-2, 1e3) / (L * L), 30 / (distance * distance));
+  pb.gaussian_b = rng.log_uniform(0.2, 5);
   return pb;
 }
 

@@ -20,6 +20,7 @@
 #include "report.hpp"
 #include "report_reader.hpp"
 #include "skelconv/kernel_spec.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "sweep.hpp"
 
 namespace {
@@ -41,9 +42,17 @@ struct OutputArguments {
   bool without_samples = false;
 };
 
+/// The families with a segment field (their traits' `primitives`).
+std::vector<std::string> segment_family_names() {
+  std::vector<std::string> names;
+  for (KernelFamily f : skelconv::all_kernel_families)
+    if (skelconv::kernels::family_facts(f).on(skelconv::kernels::on_segments)) names.emplace_back(skelconv::family_name(f));
+  return names;
+}
+
 std::optional<KernelFamily> parse_family(const std::string& name) {
-  for (KernelFamily f : {KernelFamily::inverse, KernelFamily::cauchy, KernelFamily::compact})
-    if (skelconv::family_name(f) == name) return f;
+  for (KernelFamily f : skelconv::all_kernel_families)
+    if (skelconv::family_name(f) == name && skelconv::kernels::family_facts(f).on(skelconv::kernels::on_segments)) return f;
   return std::nullopt;
 }
 
@@ -82,7 +91,7 @@ void add_sweep_options(CLI::App& app, SweepArguments& args, SweepOptions& option
                  "samples per (family, degree, region) in every region (default: generic 2000, others 200)");
   app.add_flag("--full", args.full, "the long sweep: generic 20000, other regions 2000 (overridden by --points)");
   app.add_option("--shard", args.shard, "run shard k of n: work items with index % n == k (format k/n)");
-  app.add_option("--family", args.family, "only this family")->check(CLI::IsMember({"inverse", "cauchy", "compact"}));
+  app.add_option("--family", args.family, "only this family")->check(CLI::IsMember(segment_family_names()));
   app.add_option("--degree", args.degree, "only this kernel degree i")->check(CLI::Range(1, 64));
   app.add_option("--region", args.region, "only this region")
       ->check(CLI::IsMember({"generic", "near_line_beside", "near_line_beyond", "near_ends", "far", "support_boundary",

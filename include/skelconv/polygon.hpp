@@ -62,6 +62,7 @@
 
 #include <array>
 #include <initializer_list>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -129,8 +130,12 @@ class Polygon {
   bool in_closed_polygon(const Vec3& p) const;
   /// Compact: the ball of radius R around P misses the closed polygon.
   bool support_misses_polygon(const Vec3& p) const;
-  /// The closed forms' view of this polygon (spans vertex_arrays_).
-  PolygonInput<double> closed_form_input() const;
+  /// The closed forms' view of this polygon (spans vertex_arrays_) with the
+  /// generated kernel `level`.
+  PolygonInput<double> closed_form_input(const KernelSpec& level) const;
+  /// Σ_j c_j × closed form j (a family given as compact levels, or one level
+  /// of weight 1): f, and ∇f into `gradient` when not null.
+  double sum_of_levels(const Vec3& p, std::array<double, 3>* gradient) const;
   /// Throws EvaluationError unless every result of a closed form is finite.
   void require_finite(std::initializer_list<double> results, const char* function, const Vec3& p) const;
 
@@ -139,6 +144,12 @@ class Polygon {
   Vec3 normal_ = Vec3::UnitZ();
   double area_ = 0.0;
   KernelSpec kernel_;
+  /// The generated kernels whose weighted sum is the field: {1, kernel_} for
+  /// the families of the generated table, {c_j, k_R^(i_j)} for a trait with
+  /// compact_levels (soft, wyvill).
+  std::vector<std::pair<double, KernelSpec>> levels_;
+  double support_radius_ = 0.0;  ///< from the trait: K = 0 beyond (+inf: none)
+  bool singular_at_zero_ = false;
   /// The vertices projected along normal_'s largest axis (dropped_axis_),
   /// keeping the other two in cyclic order: counter-clockwise in 2D too.
   int dropped_axis_ = 2;

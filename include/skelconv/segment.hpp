@@ -8,10 +8,11 @@
 // (docs/generated_api.md); this class validates its inputs once, picks the
 // generated function, and handles the two cases the generated code must not
 // see:
-//   - compact kernels: P farther than R from the whole segment. The clip of
+//   - finite-support kernels (compact, soft, wyvill: the trait's
+//     support_radius R): P farther than R from the whole segment. The clip of
 //     [A,B] to the ball of radius R around P (skelconv/clip.hpp) is empty,
 //     and f = 0, ∇f = 0 exactly.
-//   - inverse kernels: P on the segment itself. The integrand r^(-i) is not
+//   - kernels singular at 0 (inverse): P on the segment itself. The integrand r^(-i) is not
 //     integrable there (i ≥ 1), f = +∞. By convention value() returns +inf
 //     and gradient() returns (+inf, +inf, +inf): there is no meaningful
 //     direction, and +inf (never NaN) keeps sums of fields well defined.
@@ -59,7 +60,8 @@ class Segment {
   /// lengths whose square is not a normal double, are rejected as well.
   static constexpr double degenerate_length_ratio = 1e-8;
 
-  /// Validates everything and looks up the generated kernel; throws
+  /// Validates everything and looks up the generated kernel (or the derived
+  /// one of a family without a degree, derived_segment_kernels.hpp); throws
   /// InputError naming the offending field ("a", "b", "weight",
   /// "kernel.degree", "kernel.s", "kernel.R") and the problem.
   /// `weight` lists w_0 … w_d (1 to 4 coefficients, finite, not all zero);
@@ -109,6 +111,9 @@ class Segment {
   /// Everything but P (and the compact clip interval), filled once.
   SegmentInput<double> input_;
   const generated::SegmentKernel<double>* generated_ = nullptr;
+  /// From the kernel's trait: K = 0 beyond this (+inf: no clip), and K(0) = +inf.
+  double support_radius_ = 0.0;
+  bool singular_at_zero_ = false;
 };
 
 }  // namespace skelconv

@@ -21,9 +21,11 @@ enum class KernelFamily {
   inverse,  ///< p^i(r) = r^-i
   cauchy,   ///< c_s^i(r) = (1 + s r²)^(-i/2)
   compact,  ///< k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0
-  // Point-only families (issue 13; include/skelconv/kernels/): the generator
-  // has no closed form for them yet, so no generated table lists them and
-  // segments, polygons and SCALIS primitives reject them.
+  // The soft-object families (issue 13; include/skelconv/kernels/): not in
+  // the generated tables. Soft and Wyvill are combinations of compact levels
+  // on segments and polygons, the Gaussian has its erf closed form on
+  // segments (skelconv/derived_segment_kernels.hpp); Ferley's is points
+  // only. Each trait's `primitives` says where a family is defined.
   soft,      ///< (1 − r²/R²)² for r < R (the exam notes' "soft objects")
   wyvill,    ///< 1 − 22/9 u + 17/9 u² − 4/9 u³, u = r²/R², for r < R
   ferley,    ///< 1 + k(e − r) for r < e, (r − R)²/(e − R)² for e ≤ r < R
@@ -56,7 +58,9 @@ struct SegmentInput {
   /// Weight w(t) = Σ_k w[k] t^k; a function of weight degree d reads w[0..d].
   std::array<T, max_weight_degree + 1> w{T(1), T(0), T(0), T(0)};
   T s = T(1);   ///< Cauchy sharpness s > 0 (cauchy only)
-  T R = T(1);   ///< support radius R > 0 (compact only)
+  T R = T(1);   ///< support radius R > 0 (compact, and the compact levels of soft and wyvill)
+  T gaussian_a = T(1);  ///< Gaussian sharpness a > 0 (gaussian only: K = b exp(−a r²))
+  T gaussian_b = T(1);  ///< Gaussian height b > 0 (gaussian only)
   /// Compact only: the part [t0, t1] ⊆ [0, 1] of the segment inside the ball
   /// of radius R around P (see skelconv/clip.hpp). The kernel vanishes at a
   /// clipped end, so the moving bounds add nothing to ∇f (SPEC §2).

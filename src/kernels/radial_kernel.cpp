@@ -17,6 +17,13 @@ void require_degree(std::string_view family, int degree, int min_degree, int max
   }
 }
 
+void require_plane_degree(std::string_view family, int degree) {
+  if (degree <= 2) {
+    throw InputError(fmt::format("the plane normalisation of the {} family diverges for degree {} <= 2", family, degree),
+                     "kernel.degree");
+  }
+}
+
 void require_positive(double value, const char* where) { detail::require_positive_parameter(value, where); }
 
 FerleyKernel::FerleyKernel(const KernelSpec& spec) : e(spec.e), R(spec.R) {

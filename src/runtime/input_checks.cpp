@@ -75,18 +75,39 @@ void require_finite_query_point(const Vec3& p) {
   if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", format_point(p)));
 }
 
+namespace {
+/// The trait bit of a primitive named by its JSON type.
+kernels::PrimitiveKind primitive_kind(std::string_view what) {
+  if (what == "segment") return kernels::on_segments;
+  if (what == "polygon") return kernels::on_polygons;
+  if (what == "point") return kernels::on_points;
+  return kernels::on_scalis;  // "scalis_segment", "scalis_triangle"
+}
+}  // namespace
+
 void require_convolution_family(KernelFamily family, std::string_view what) {
-  if (kernels::family_facts(family).on_every_primitive) return;
-  throw InputError(fmt::format("the {} family is defined on point primitives only, not on a {}: its closed form "
-                               "along a {} is not generated (use \"type\": \"point\", or one of \"inverse\", "
-                               "\"cauchy\", \"compact\")",
-                               family_name(family), what, what),
+  const kernels::PrimitiveKind kind = primitive_kind(what);
+  const kernels::FamilyFacts facts = kernels::family_facts(family);
+  if (facts.on(kind)) return;
+  std::string families;  // the families this primitive does take, from their traits
+  for (KernelFamily other : all_kernel_families) {
+    if (!kernels::family_facts(other).on(kind)) continue;
+    families += fmt::format("{}\"{}\"", families.empty() ? "" : ", ", family_name(other));
+  }
+  std::string where = "points";
+  if (facts.on(kernels::on_segments)) where += facts.on(kernels::on_polygons) ? ", segments and polygons" : " and segments";
+  throw InputError(fmt::format("the {} family has no closed form on a {} (it is defined on {} only); a {} takes {}",
+                               family_name(family), what, where, what, families),
                    "kernel.family");
 }
 
 void require_valid_kernel_parameter(const KernelSpec& kernel) {
-  if (kernel.family == KernelFamily::cauchy) require_positive_parameter(kernel.s, "kernel.s");
-  if (kernel.family == KernelFamily::compact) require_positive_parameter(kernel.R, "kernel.R");
+  // The trait's constructor checks its own parameters (InputError at
+  // "kernel.<key>"); the degree is checked by each primitive's own table.
+  KernelSpec without_degree = kernel;
+  const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
+  without_degree.degree = facts.min_degree;
+  (void)kernels::make_radial_kernel(without_degree);
 }
 
 }  // namespace skelconv::detail

@@ -47,14 +47,15 @@ void require_scalis_radius(double tau, int k);
 /// for the compact family (its kernel vanishes at distance στ).
 void require_scalis_sigma(KernelFamily family, double sigma);
 
-/// The kernel's own parameter: s > 0 for cauchy ("kernel.s"), R > 0 for
-/// compact ("kernel.R"), finite. The degree is checked by each primitive
-/// against its own table.
+/// The kernel's own parameters, as its trait checks them (s > 0 for cauchy
+/// at "kernel.s", R > 0 at "kernel.R", …), finite. The degree is checked by
+/// each primitive against its own table.
 void require_valid_kernel_parameter(const KernelSpec& kernel);
 
-/// `family` has a closed form on a `what` primitive (segment, polygon,
-/// SCALIS segment or triangle): throws InputError at "kernel.family" for a
-/// point-only family (kernels::FamilyFacts::on_every_primitive false).
+/// `family` has a field on a `what` primitive ("segment", "polygon",
+/// "scalis_segment", "scalis_triangle": its trait's `primitives` bits); else
+/// throws InputError at "kernel.family" naming where the family is defined
+/// and which families a `what` takes.
 void require_convolution_family(KernelFamily family, std::string_view what);
 
 }  // namespace skelconv::detail

@@ -11,6 +11,7 @@
 #include "convergence_guard.hpp"
 #include "input_checks.hpp"
 #include "planar_polygon.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio, shared by the edges
 
 namespace skelconv {
@@ -207,31 +208,53 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
 
   detail::require_convolution_family(kernel.family, "polygon");
   detail::require_valid_kernel_parameter(kernel);
-  require_supported_degree(kernel);
+  const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
+  support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
+  singular_at_zero_ = facts.singular_at_zero;
+  if (facts.compact_levels.empty()) {
+    require_supported_degree(kernel);
+    levels_.push_back({1.0, kernel});
+  } else {
+    for (const kernels::CompactLevel& level : facts.compact_levels) {
+      const KernelSpec compact = KernelSpec::compact(level.degree, kernel.R);
+      require_supported_degree(compact);  // the generator's polygon degrees must include it
+      levels_.push_back({double(level.numerator) / level.denominator, compact});
+    }
+  }
 }
 
-PolygonInput<double> Polygon::closed_form_input() const {
+PolygonInput<double> Polygon::closed_form_input(const KernelSpec& level) const {
   PolygonInput<double> input;
   input.vertices = vertex_arrays_;
   input.normal = to_array(normal_);
-  input.family = kernel_.family;
-  input.degree = kernel_.degree;
-  input.s = kernel_.s;
-  input.R = kernel_.R;
+  input.family = level.family;
+  input.degree = level.degree;
+  input.s = level.s;
+  input.R = level.R;
   return input;
 }
 
 Polygon::Case Polygon::prepare(const Vec3& p) const {
   detail::require_finite_query_point(p);
-  switch (kernel_.family) {
-    case KernelFamily::inverse:
-      return in_closed_polygon(p) ? Case::on_inverse_singularity : Case::call_closed_form;
-    case KernelFamily::cauchy:
-      return Case::call_closed_form;
-    case KernelFamily::compact:
-      return support_misses_polygon(p) ? Case::outside_compact_support : Case::call_closed_form;
+  if (singular_at_zero_ && in_closed_polygon(p)) return Case::on_inverse_singularity;
+  if (std::isfinite(support_radius_) && support_misses_polygon(p)) return Case::outside_compact_support;
+  return Case::call_closed_form;
+}
+
+double Polygon::sum_of_levels(const Vec3& p, std::array<double, 3>* gradient) const {
+  double f = 0.0;
+  if (gradient != nullptr) *gradient = {};
+  for (const auto& [coefficient, level] : levels_) {
+    const PolygonInput<double> input = closed_form_input(level);
+    if (gradient == nullptr) {
+      f += coefficient * polygon_f(input, to_array(p));
+      continue;
+    }
+    std::array<double, 3> g{};
+    f += coefficient * polygon_f_and_grad(input, to_array(p), g);
+    for (int i = 0; i < 3; ++i) (*gradient)[i] += coefficient * g[i];
   }
-  return Case::call_closed_form;  // unreachable: every family is handled above
+  return f;
 }
 
 bool Polygon::in_closed_polygon(const Vec3& p) const {
@@ -243,7 +266,7 @@ bool Polygon::in_closed_polygon(const Vec3& p) const {
 }
 
 bool Polygon::support_misses_polygon(const Vec3& p) const {
-  const double R = kernel_.R;
+  const double R = support_radius_;
   const double z = normal_.dot(p - vertices_.front());
   if (std::abs(z) >= R) return true;
   const Vec3 foot = p - z * normal_;
@@ -277,7 +300,7 @@ double Polygon::value(const Vec3& p) const {
     case Case::on_inverse_singularity: return infinity;
     case Case::call_closed_form: break;
   }
-  const double f = detail::evaluate_converged("polygon_f", p, [&] { return polygon_f(closed_form_input(), to_array(p)); });
+  const double f = detail::evaluate_converged("polygon_f", p, [&] { return sum_of_levels(p, nullptr); });
   require_finite({f}, "polygon_f", p);
   return f;
 }
@@ -288,8 +311,12 @@ Vec3 Polygon::gradient(const Vec3& p) const {
     case Case::on_inverse_singularity: return Vec3::Constant(infinity);
     case Case::call_closed_form: break;
   }
-  const std::array<double, 3> g =
-      detail::evaluate_converged("polygon_grad", p, [&] { return polygon_grad(closed_form_input(), to_array(p)); });
+  const std::array<double, 3> g = detail::evaluate_converged("polygon_grad", p, [&] {
+    if (levels_.size() == 1) return polygon_grad(closed_form_input(levels_.front().second), to_array(p));
+    std::array<double, 3> sum{};
+    sum_of_levels(p, &sum);
+    return sum;
+  });
   require_finite({g[0], g[1], g[2]}, "polygon_grad", p);
   return to_vec3(g);
 }
@@ -301,8 +328,7 @@ FieldSample Polygon::value_and_gradient(const Vec3& p) const {
     case Case::call_closed_form: break;
   }
   std::array<double, 3> g{};
-  const double f = detail::evaluate_converged("polygon_f_and_grad", p,
-                                             [&] { return polygon_f_and_grad(closed_form_input(), to_array(p), g); });
+  const double f = detail::evaluate_converged("polygon_f_and_grad", p, [&] { return sum_of_levels(p, &g); });
   require_finite({f, g[0], g[1], g[2]}, "polygon_f_and_grad", p);
   return {f, to_vec3(g)};
 }

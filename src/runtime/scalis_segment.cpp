@@ -11,6 +11,7 @@
 #include "generated/scalis_segment_table.hpp"
 #include "convergence_guard.hpp"
 #include "input_checks.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/scalis_compact.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio
 
@@ -19,33 +20,11 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-/// W_i = ∫ (1 + u²)^(−i/2) du over ℝ (i ≥ 2): W_2 = π, W_3 = 2,
-/// W_i = (i − 3)/(i − 2) W_{i−2} (SPEC §4, Zanni Table 5).
-double inverse_line_integral(int i) {
-  double w = i % 2 == 0 ? std::numbers::pi : 2.0;
-  for (int m = i % 2 == 0 ? 4 : 5; m <= i; m += 2) w *= double(m - 3) / double(m - 2);
-  return w;
-}
-
-/// V_i = ∫_{−1}^{1} (1 − v²)^(i/2) dv: V_0 = 2, V_1 = π/2, V_i = i/(i + 1) V_{i−2}.
-double compact_line_integral(int i) {
-  double v = i % 2 == 0 ? 2.0 : std::numbers::pi / 2;
-  for (int m = i % 2 == 0 ? 2 : 3; m <= i; m += 2) v *= double(m) / double(m + 1);
-  return v;
-}
-
 }  // namespace
 
 double ScalisSegment::normalisation(KernelFamily family, int degree, double sigma) {
-  const double i = degree;
-  switch (family) {
-    case KernelFamily::inverse: return std::pow(sigma, i) * inverse_line_integral(degree);
-    case KernelFamily::cauchy:
-      return std::pow(sigma, i) * std::pow(1.0 + sigma * sigma, (1.0 - i) / 2) * inverse_line_integral(degree);
-    case KernelFamily::compact:
-      return sigma * std::pow(1.0 - 1.0 / (sigma * sigma), (i + 1) / 2) * compact_line_integral(degree);
-  }
-  return 1.0;  // unreachable
+  return kernels::with_trait<kernels::on_scalis>(
+      family, [&](auto trait) { return decltype(trait)::type::scalis_line_normalisation(degree, sigma); });
 }
 
 std::vector<int> ScalisSegment::supported_degrees(KernelFamily family) {
@@ -97,18 +76,20 @@ std::string ScalisSegment::evaluator_name() const {
 }
 
 bool ScalisSegment::is_divergent_point(const Vec3& p) const {
-  switch (kernel_.family) {
-    case KernelFamily::inverse: {
+  const kernels::ScalisSingularity singularity = kernels::with_trait<kernels::on_scalis>(
+      kernel_.family, [](auto trait) { return decltype(trait)::type::scalis_singularity; });
+  switch (singularity) {
+    case kernels::ScalisSingularity::on_segment: {
       // P on the closed segment, exactly (as Segment does).
       const Vec3 ab = b_ - a_;
       const Vec3 ap = p - a_;
       const double projection = ab.dot(ap);
       return ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm();
     }
-    case KernelFamily::cauchy:
+    case kernels::ScalisSingularity::at_zero_radius:
       return (input_.tau0 == 0.0 && p == a_) || (input_.tau1 == 0.0 && p == b_);
-    case KernelFamily::compact:
-      return false;  // left to scalis_compact_F
+    case kernels::ScalisSingularity::none:
+      return false;  // compact: left to scalis_compact_F
   }
   return false;
 }

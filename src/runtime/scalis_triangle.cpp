@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "input_checks.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "scalis_triangle_quadrature.hpp"
 
 namespace skelconv {
@@ -41,23 +42,8 @@ bool polygon_offers(const ScalisKernel& kernel) {
 }  // namespace
 
 double ScalisTriangle::normalisation(KernelFamily family, int degree, double sigma) {
-  const double i = degree;
-  const double pi = std::numbers::pi;
-  switch (family) {
-    case KernelFamily::inverse:
-    case KernelFamily::cauchy:
-      if (degree <= 2) {
-        throw InputError(fmt::format("the plane normalisation of the {} family diverges for degree {} <= 2",
-                                     family_name(family), degree),
-                         "kernel.degree");
-      }
-      return family == KernelFamily::inverse
-                 ? 2 * pi * std::pow(sigma, i) / (i - 2)
-                 : 2 * pi * sigma * sigma * std::pow(1.0 + 1.0 / (sigma * sigma), 1.0 - i / 2) / (i - 2);
-    case KernelFamily::compact:
-      return 2 * pi * sigma * sigma * std::pow(1.0 - 1.0 / (sigma * sigma), (i + 2) / 2) / (i + 2);
-  }
-  return 1.0;  // unreachable
+  return kernels::with_trait<kernels::on_scalis>(
+      family, [&](auto trait) { return decltype(trait)::type::scalis_plane_normalisation(degree, sigma); });
 }
 
 std::vector<int> ScalisTriangle::supported_degrees(KernelFamily family) {
@@ -91,17 +77,13 @@ ScalisTriangle::ScalisTriangle(const std::array<Vec3, 3>& vertices, const std::a
     (void)std::frexp(radii[0], &exponent);
     closed_form_scale_ = std::ldexp(1.0, -exponent);
     const double tau = std::ldexp(radii[0], -exponent);
-    const double sigma = kernel.sigma;
-    KernelSpec classical{kernel.family, kernel.degree, 1.0, 1.0};
-    closed_form_factor_ = 1.0 / (tau * tau);
-    switch (kernel.family) {
-      case KernelFamily::inverse: closed_form_factor_ *= std::pow(sigma * tau, kernel.degree); break;
-      case KernelFamily::cauchy: classical.s = 1.0 / (sigma * sigma * tau * tau); break;
-      case KernelFamily::compact: classical.R = sigma * tau; break;
-    }
+    const kernels::ScalisPolygonKernel classical = kernels::with_trait<kernels::on_scalis>(
+        kernel.family,
+        [&](auto trait) { return decltype(trait)::type::scalis_polygon_kernel(kernel.degree, kernel.sigma, tau); });
+    closed_form_factor_ = classical.factor;
     std::array<Vec3, 3> scaled;
     for (int k = 0; k < 3; ++k) scaled[k] = vertices[k] * closed_form_scale_;
-    closed_form_.emplace(std::span<const Vec3>(scaled.data(), 3), classical);
+    closed_form_.emplace(std::span<const Vec3>(scaled.data(), 3), classical.kernel);
   }
 }
 

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "generated/segment_table.hpp"
+#include "skelconv/derived_segment_kernels.hpp"
 #include "convergence_guard.hpp"
 #include "input_checks.hpp"
 #include "skelconv/clip.hpp"
@@ -52,7 +52,8 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   detail::require_convolution_family(kernel.family, "segment");
   detail::require_valid_kernel_parameter(kernel);
 
-  generated_ = generated::find_segment_kernel<double>(kernel.family, kernel.degree, weight_degree_);
+  const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
+  generated_ = find_any_segment_kernel<double>(kernel.family, kernel.degree, weight_degree_);
   if (generated_ == nullptr) {
     const std::string family = std::string(family_name(kernel.family));
     throw InputError(
@@ -71,12 +72,17 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   for (int k = 0; k <= weight_degree_; ++k) input_.w[std::size_t(k)] = weight[std::size_t(k)];
   input_.s = kernel.s;
   input_.R = kernel.R;
+  input_.gaussian_a = kernel.a;
+  input_.gaussian_b = kernel.b;
+  support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
+  singular_at_zero_ = facts.singular_at_zero;
 }
 
 std::string Segment::generated_name() const { return generated_->name; }
 
 std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degree) {
   std::vector<int> degrees;
+  if (!kernels::family_facts(family).has_degree) return degrees;  // no degree (derived_segment_kernels.hpp)
   for (const auto& kernel : generated::segment_kernels<double>()) {
     if (kernel.family == family && kernel.weight_degree == weight_degree) degrees.push_back(kernel.degree);
   }
@@ -89,30 +95,24 @@ Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const
   input = input_;
   input.p = to_array(p);
 
-  switch (kernel_.family) {
-    case KernelFamily::inverse: {
-      // Exact test on the doubles (see the file comment of segment.hpp).
-      const Vec3 ab = b_ - a_;
-      const Vec3 ap = p - a_;
-      const double projection = ab.dot(ap);  // t |AB|²
-      if (ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm()) {
-        return Case::on_inverse_singularity;
-      }
-      return Case::call_generated;
-    }
-    case KernelFamily::cauchy:
-      return Case::call_generated;
-    case KernelFamily::compact: {
-      // Hubert 2012 §3.4: only the part of [A,B] inside the ball of radius R
-      // around P contributes; the generated code integrates over [t0, t1].
-      const std::optional<ParameterInterval<double>> inside = clip_to_ball(input.a, input.b, input.p, input.R);
-      if (!inside) return Case::outside_compact_support;
-      input.t0 = inside->t0;
-      input.t1 = inside->t1;
-      return Case::call_generated;
+  if (singular_at_zero_) {
+    // Exact test on the doubles (see the file comment of segment.hpp).
+    const Vec3 ab = b_ - a_;
+    const Vec3 ap = p - a_;
+    const double projection = ab.dot(ap);  // t |AB|²
+    if (ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm()) {
+      return Case::on_inverse_singularity;
     }
   }
-  return Case::call_generated;  // unreachable: every family is handled above
+  if (std::isfinite(support_radius_)) {
+    // Hubert 2012 §3.4: only the part of [A,B] inside the ball of radius R
+    // around P contributes; the generated code integrates over [t0, t1].
+    const std::optional<ParameterInterval<double>> inside = clip_to_ball(input.a, input.b, input.p, support_radius_);
+    if (!inside) return Case::outside_compact_support;
+    input.t0 = inside->t0;
+    input.t1 = inside->t1;
+  }
+  return Case::call_generated;
 }
 
 void Segment::require_finite(std::initializer_list<double> results, const Vec3& p) const {

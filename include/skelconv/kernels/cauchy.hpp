@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "skelconv/kernels/radial_kernel.hpp"
+#include "skelconv/kernels/scalis_description.hpp"
 
 namespace skelconv::kernels {
 
@@ -18,7 +19,7 @@ struct CauchyKernel {
   static constexpr std::array<std::string_view, 1> parameters{"s"};
   static constexpr int min_degree = 1, max_degree = 16;  ///< as on segments
   static constexpr bool has_degree = true;          ///< JSON "degree" is read
-  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
+  static constexpr unsigned primitives = on_points | on_segments | on_polygons | on_scalis;  ///< all generated
   static constexpr bool singular_at_zero = false;
 
   int degree = 4;
@@ -43,9 +44,31 @@ struct CauchyKernel {
     return -T(degree) * T(s) * r / (half_integer_power(q, degree) * q);
   }
   /// Radius of the iso-surface K(r) = c around a point: r = √((c^(−2/i) − 1)/s), 0 < c < 1.
+  /// Width of the peak of u ↦ K(√(d² + u²)) at u = 0:
+  /// 1 + s(d² + u²) = s(u² + d² + 1/s), width √(d² + 1/s).
+  template <class T>
+  T peak_width(const T& d) const {
+    using std::sqrt;
+    return sqrt(d * d + T(1) / T(s));
+  }
   std::optional<double> point_iso_radius(double c) const {
     if (!(c > 0.0 && c < 1.0)) return std::nullopt;
     return std::sqrt((std::pow(c, -2.0 / degree) - 1.0) / s);
+  }
+
+  // SCALIS (scalis_description.hpp): K(d/σ) = (1 + (d/σ)²)^(−i/2).
+  static constexpr ScalisSingularity scalis_singularity = ScalisSingularity::at_zero_radius;
+  static double scalis_line_normalisation(int i, double sigma) {
+    return std::pow(sigma, i) * std::pow(1.0 + sigma * sigma, (1.0 - i) / 2) * inverse_line_integral(i);
+  }
+  /// 2π σ² (1 + 1/σ²)^(1 − i/2) / (i − 2); diverges for i ≤ 2.
+  static double scalis_plane_normalisation(int i, double sigma) {
+    require_plane_degree(name, i);
+    return 2 * std::numbers::pi * sigma * sigma * std::pow(1.0 + 1.0 / (sigma * sigma), 1.0 - i / 2.0) / (i - 2);
+  }
+  /// c_s^i with s = 1/(στ)², times 1/τ².
+  static ScalisPolygonKernel scalis_polygon_kernel(int i, double sigma, double tau) {
+    return {KernelSpec::cauchy(i, 1.0 / (sigma * sigma * tau * tau)), 1.0 / (tau * tau)};
   }
 };
 

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "skelconv/kernels/radial_kernel.hpp"
+#include "skelconv/kernels/scalis_description.hpp"
 
 namespace skelconv::kernels {
 
@@ -20,7 +21,7 @@ struct CompactKernel {
   /// (i = 1 has dK/dr → −∞ there).
   static constexpr int min_degree = 2, max_degree = 16;
   static constexpr bool has_degree = true;          ///< JSON "degree" is read
-  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
+  static constexpr unsigned primitives = on_points | on_segments | on_polygons | on_scalis;  ///< all generated
   static constexpr bool singular_at_zero = false;
 
   int degree = 4;
@@ -53,6 +54,19 @@ struct CompactKernel {
   std::optional<double> point_iso_radius(double c) const {
     if (!(c > 0.0 && c < 1.0)) return std::nullopt;
     return R * std::sqrt(1.0 - std::pow(c, 2.0 / degree));
+  }
+
+  // SCALIS (scalis_description.hpp): K(d/σ) = (1 − (d/σ)²)^(i/2), σ > 1.
+  static constexpr ScalisSingularity scalis_singularity = ScalisSingularity::none;
+  static double scalis_line_normalisation(int i, double sigma) {
+    return sigma * std::pow(1.0 - 1.0 / (sigma * sigma), (i + 1) / 2.0) * compact_line_integral(i);
+  }
+  static double scalis_plane_normalisation(int i, double sigma) {
+    return 2 * std::numbers::pi * sigma * sigma * std::pow(1.0 - 1.0 / (sigma * sigma), (i + 2) / 2.0) / (i + 2);
+  }
+  /// k_R^i with R = στ, times 1/τ².
+  static ScalisPolygonKernel scalis_polygon_kernel(int i, double sigma, double tau) {
+    return {KernelSpec::compact(i, sigma * tau), 1.0 / (tau * tau)};
   }
 };
 

@@ -24,7 +24,11 @@ struct FerleyKernel {
   static constexpr KernelFamily family = KernelFamily::ferley;
   static constexpr std::string_view name = "ferley";
   static constexpr std::array<std::string_view, 2> parameters{"e", "R"};
-  static constexpr bool has_degree = false, on_every_primitive = false;
+  static constexpr bool has_degree = false;
+  /// Points only: K is a function of r, not of r², so the segment integral
+  /// ∫ K(√(h² + u²)) du has pieces like ∫ √(h² + u²) du (asinh terms) whose
+  /// closed form is not implemented (file comment).
+  static constexpr unsigned primitives = on_points;
   static constexpr int min_degree = 0, max_degree = 0;  ///< no degree
   static constexpr bool singular_at_zero = false;
 

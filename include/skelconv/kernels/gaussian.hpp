@@ -2,8 +2,8 @@
 // (Ferley 1996 §1.1.1 and §1.1.3: f_i(P) = b_i exp(−a_i ‖P − P_i‖²)):
 //     K(r) = b exp(−a r²),  a > 0, b > 0,
 // infinite support, decreasing. Ferley §2.2.5 convolves h = exp(−‖P‖²/2)
-// along segments (an erf closed form); that closed form is not generated
-// yet, so this is a point-only family (kernel_list.hpp).
+// along segments (an erf closed form): skelconv/segment_gaussian.hpp. On
+// points and segments; polygons and SCALIS primitives refuse it.
 #pragma once
 
 #include <array>
@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "skelconv/kernels/radial_kernel.hpp"
+#include "skelconv/segment_gaussian.hpp"
 
 namespace skelconv::kernels {
 
@@ -21,7 +22,16 @@ struct GaussianKernel {
   static constexpr KernelFamily family = KernelFamily::gaussian;
   static constexpr std::string_view name = "gaussian";
   static constexpr std::array<std::string_view, 2> parameters{"a", "b"};
-  static constexpr bool has_degree = false, on_every_primitive = false;
+  static constexpr bool has_degree = false;
+  /// Segments by the erf closed form of skelconv/segment_gaussian.hpp;
+  /// polygons have no closed form here (the 2-D integral of exp(−a r²) over
+  /// a fan triangle is an Owen-T-like function, not generated), and SCALIS
+  /// primitives are defined for inverse, Cauchy and compact only.
+  static constexpr unsigned primitives = on_points | on_segments;
+  /// Its segment field, f and ∇f for weight degree W (hand-written: see there).
+  template <class T, int W>
+  using SegmentClosedForm = gaussian_segment::ClosedForm<T, W>;
+  static constexpr const char* segment_equation = "b |AB| ∫_0^1 w(t) exp(−a |P − Γ(t)|²) dt";
   static constexpr int min_degree = 0, max_degree = 0;  ///< no degree
   static constexpr bool singular_at_zero = false;
 
@@ -46,6 +56,12 @@ struct GaussianKernel {
     return T(-2) * T(a) * T(b) * r * exp(-T(a) * r * r);
   }
 
+  /// Width of the peak of u ↦ K(√(d² + u²)) = K(d) e^(−a u²): 1/√a.
+  template <class T>
+  T peak_width(const T&) const {
+    using std::sqrt;
+    return T(1) / sqrt(T(a));
+  }
   /// ρ with K(ρ) = c around a point: √(ln(b/c)/a), 0 < c < b.
   std::optional<double> point_iso_radius(double c) const {
     if (!(c > 0.0 && c < b)) return std::nullopt;

@@ -10,6 +10,7 @@
 
 #include "skelconv/integer_power.hpp"
 #include "skelconv/kernels/radial_kernel.hpp"
+#include "skelconv/kernels/scalis_description.hpp"
 
 namespace skelconv::kernels {
 
@@ -21,7 +22,7 @@ struct InverseKernel {
   /// into a point without changing its kernel.
   static constexpr int min_degree = 1, max_degree = 16;
   static constexpr bool has_degree = true;          ///< JSON "degree" is read
-  static constexpr bool on_every_primitive = true;  ///< generated on segments, polygons, SCALIS
+  static constexpr unsigned primitives = on_points | on_segments | on_polygons | on_scalis;  ///< all generated
   static constexpr bool singular_at_zero = true;
 
   int degree = 3;
@@ -43,9 +44,28 @@ struct InverseKernel {
     return -T(degree) * integer_power(r, -degree - 1);
   }
   /// Radius of the iso-surface w K(r) = c around a point of weight 1: r = c^(−1/i).
+  /// Width of the peak of u ↦ K(√(d² + u²)) at u = 0: (d² + u²)^(−i/2)
+  /// halves within u ~ d (the verifier's quadrature substitution).
+  template <class T>
+  T peak_width(const T& d) const {
+    return d;
+  }
   std::optional<double> point_iso_radius(double c) const {
     if (!(c > 0.0) || !std::isfinite(c)) return std::nullopt;
     return std::pow(c, -1.0 / degree);
+  }
+
+  // SCALIS (scalis_description.hpp): K(d/σ) = (d/σ)^(−i).
+  static constexpr ScalisSingularity scalis_singularity = ScalisSingularity::on_segment;
+  static double scalis_line_normalisation(int i, double sigma) { return std::pow(sigma, i) * inverse_line_integral(i); }
+  /// 2π σ^i / (i − 2); diverges for i ≤ 2.
+  static double scalis_plane_normalisation(int i, double sigma) {
+    require_plane_degree(name, i);
+    return 2 * std::numbers::pi * std::pow(sigma, i) / (i - 2);
+  }
+  /// p^i itself, times (στ)^i / τ².
+  static ScalisPolygonKernel scalis_polygon_kernel(int i, double sigma, double tau) {
+    return {KernelSpec::inverse(i), 1.0 / (tau * tau) * std::pow(sigma * tau, i)};
   }
 };
 

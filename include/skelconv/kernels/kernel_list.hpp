@@ -6,9 +6,12 @@
 // (src/runtime/skeleton_file.cpp) learns its JSON keys from family_facts().
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <variant>
 
 #include "skelconv/kernels/cauchy.hpp"
@@ -29,7 +32,14 @@ struct FamilyFacts {
   std::string_view name;
   std::span<const std::string_view> parameters;  ///< JSON keys besides "family" (and "degree")
   bool has_degree = true;
-  bool on_every_primitive = true;  ///< false: point primitives only
+  int min_degree = 0;               ///< smallest degree the trait accepts (0: no degree)
+  unsigned primitives = on_points;  ///< PrimitiveKind bits (radial_kernel.hpp)
+  bool singular_at_zero = false;    ///< K(0) = +inf (inverse)
+  bool finite_support = false;      ///< K = 0 beyond a radius (compact, soft, wyvill, ferley)
+  /// Non-empty: K is this exact combination of compact levels k_R^i.
+  std::span<const CompactLevel> compact_levels;
+
+  bool on(PrimitiveKind kind) const { return (primitives & kind) != 0; }
 };
 
 namespace detail {
@@ -47,17 +57,44 @@ RadialKernel make_from(const KernelSpec& spec) {
 template <std::size_t index = 0>
 FamilyFacts facts_from(KernelFamily family) {
   if constexpr (index == std::variant_size_v<RadialKernel>) {
-    return {family_name(family), {}, true, true};
+    return {family_name(family), {}, true, 0, on_points, false, false, {}};
   } else {
     using Kernel = std::variant_alternative_t<index, RadialKernel>;
     if (family == Kernel::family) {
+      std::span<const CompactLevel> levels;
+      if constexpr (requires { Kernel::compact_levels; }) levels = Kernel::compact_levels;
+      KernelSpec defaults;  // valid parameters for every family
+      defaults.family = family;
+      defaults.degree = Kernel::min_degree;
+      const bool finite_support = std::isfinite(Kernel(defaults).support_radius());
       return {Kernel::name, std::span<const std::string_view>(Kernel::parameters), Kernel::has_degree,
-              Kernel::on_every_primitive};
+              Kernel::min_degree, Kernel::primitives, Kernel::singular_at_zero, finite_support, levels};
     }
     return facts_from<index + 1>(family);
   }
 }
 }  // namespace detail
+
+/// f(std::type_identity<Trait>{}) for the trait of `family`, one of those
+/// whose `primitives` include `kind` (InputError at "kernel.family" for any
+/// other: the primitives check that first, so it does not happen). The
+/// primitives read their family-specific descriptions (e.g. the SCALIS
+/// normalisations, scalis_description.hpp) through this instead of switching
+/// on the family.
+template <unsigned kind, class F, std::size_t index = 0>
+decltype(auto) with_trait(KernelFamily family, F&& f) {
+  if constexpr (index == std::variant_size_v<RadialKernel>) {
+    throw InputError("the " + std::string(family_name(family)) + " family is not defined on this primitive",
+                     "kernel.family");
+    return f(std::type_identity<std::variant_alternative_t<0, RadialKernel>>{});  // the return type
+  } else {
+    using Kernel = std::variant_alternative_t<index, RadialKernel>;
+    if constexpr ((Kernel::primitives & kind) != 0) {
+      if (family == Kernel::family) return f(std::type_identity<Kernel>{});
+    }
+    return with_trait<kind, F, index + 1>(family, std::forward<F>(f));
+  }
+}
 
 /// The JSON name, keys and primitives of `family` (from its trait).
 inline FamilyFacts family_facts(KernelFamily family) { return detail::facts_from(family); }

@@ -11,8 +11,10 @@
 //     static constexpr std::array<std::string_view, N> parameters;  // JSON keys besides
 //                                                     // "family" and "degree"
 //     static constexpr bool has_degree;              // JSON "degree" is read
-//     static constexpr bool on_every_primitive;      // generated on segments,
-//                                                     // polygons, SCALIS (else point only)
+//     static constexpr unsigned primitives;          // PrimitiveKind bits: where the
+//                                                     // family has a field (below)
+//     static constexpr std::array<CompactLevel, N> compact_levels;  // optional member:
+//                                                     // K = Σ c_j k_R^(i_j), exactly (below)
 //     static constexpr int min_degree, max_degree;   // degrees i on a point
 //     static constexpr bool singular_at_zero;        // K(0) = +inf (inverse)
 //     explicit SomeKernel(const KernelSpec&);        // validates: InputError at
@@ -48,6 +50,29 @@
 
 namespace skelconv::kernels {
 
+/// The primitives a family has a field on, as bits of a trait's
+/// `primitives`: points always (f = w K(r)); segments and polygons where a
+/// closed form exists (generated, or a combination of generated ones);
+/// SCALIS segments and triangles only for the families of SPEC §4.
+enum PrimitiveKind : unsigned {
+  on_points = 1u << 0,
+  on_segments = 1u << 1,
+  on_polygons = 1u << 2,
+  on_scalis = 1u << 3,  ///< SCALIS segments and triangles
+};
+
+/// One term (numerator / denominator) · k_R^degree of a kernel that is an
+/// exact combination of compact levels (SPEC §1 k_R^i with the trait's R):
+/// soft = k_R^4, Wyvill = 5/9 k_R^4 + 4/9 k_R^6. Its segment and polygon
+/// fields are the same combination of the generated compact closed forms
+/// (skelconv/derived_segment_kernels.hpp, Polygon). The coefficient is a
+/// ratio of integers so that extended-precision evaluation sees it exactly.
+struct CompactLevel {
+  int numerator = 1;
+  int denominator = 1;
+  int degree = 4;  ///< i of k_R^i
+};
+
 /// (1 + u)^(−i/2)-style half-integer powers: x^(n/2) for x ≥ 0 and n ≥ 0,
 /// by integer powering and at most one square root (exact for even n).
 template <class T>
@@ -78,6 +103,10 @@ double bisect_increasing(F f, double lo, double hi, double target) {
 
 /// Throws InputError at "kernel.degree" unless min ≤ degree ≤ max.
 void require_degree(std::string_view family, int degree, int min_degree, int max_degree);
+
+/// Throws InputError at "kernel.degree" for a degree i ≤ 2, whose SCALIS
+/// plane normalisation ∬ K(√(1 + |u|²)) du diverges (K ~ d^−2).
+void require_plane_degree(std::string_view family, int degree);
 
 /// Throws InputError at `where` ("kernel.s") unless value is finite and > 0.
 void require_positive(double value, const char* where);

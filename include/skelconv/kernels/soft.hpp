@@ -4,8 +4,8 @@
 // i.e. the compact kernel k_R^4 under its own name and with no degree. The
 // notes parameterise it by the radius ρ of the primitive's surface at iso c:
 //     K(ρ) = c  ⇔  R = ρ / √(1 − √c)   (at c = ½: R = ρ √(2 + √2)).
-// Point primitives only (kernel_list.hpp): its segment closed form is that of
-// compact i = 4, but the generator does not list it under this name yet.
+// On points, segments and polygons: its segment and polygon closed forms are
+// those of compact i = 4 (compact_levels below), not SCALIS primitives.
 #pragma once
 
 #include <array>
@@ -21,7 +21,12 @@ struct SoftKernel {
   static constexpr KernelFamily family = KernelFamily::soft;
   static constexpr std::string_view name = "soft";
   static constexpr std::array<std::string_view, 1> parameters{"R"};
-  static constexpr bool has_degree = false, on_every_primitive = false;
+  static constexpr bool has_degree = false;
+  /// Not on SCALIS primitives: their kernel is scaled by the radius τ and
+  /// normalised per family (SPEC §4); only inverse, Cauchy, compact are.
+  static constexpr unsigned primitives = on_points | on_segments | on_polygons;
+  /// K = k_R^4 exactly: segments and polygons use the generated compact i = 4.
+  static constexpr std::array<CompactLevel, 1> compact_levels{{{1, 1, 4}}};
   static constexpr int min_degree = 0, max_degree = 0;  ///< no degree
   static constexpr bool singular_at_zero = false;
 

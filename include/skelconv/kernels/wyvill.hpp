@@ -4,7 +4,7 @@
 // It equals v² (5 + 4v)/9 with v = 1 − u (= 5/9 (1−u)² + 4/9 (1−u)³), the
 // form evaluated here: no cancellation near the support's edge. K(0) = 1,
 // K(R) = K'(R) = 0; dK/du = −v (10 + 12v)/9 < 0 on [0, R), so K decreases.
-// Point primitives only (kernel_list.hpp).
+// On points, segments and polygons (compact_levels below), not SCALIS primitives.
 #pragma once
 
 #include <array>
@@ -20,7 +20,11 @@ struct WyvillKernel {
   static constexpr KernelFamily family = KernelFamily::wyvill;
   static constexpr std::string_view name = "wyvill";
   static constexpr std::array<std::string_view, 1> parameters{"R"};
-  static constexpr bool has_degree = false, on_every_primitive = false;
+  static constexpr bool has_degree = false;
+  static constexpr unsigned primitives = on_points | on_segments | on_polygons;  ///< not SCALIS (see soft.hpp)
+  /// K = 5/9 k_R^4 + 4/9 k_R^6 exactly (file comment): segments and polygons
+  /// add the generated compact i = 4 and i = 6 closed forms.
+  static constexpr std::array<CompactLevel, 2> compact_levels{{{5, 9, 4}, {4, 9, 6}}};
   static constexpr int min_degree = 0, max_degree = 0;  ///< no degree
   static constexpr bool singular_at_zero = false;
 
