@@ -19,7 +19,7 @@
 // singular marker "inf inf inf inf" (a point on an inverse skeleton); with
 // 1 or 2, stdout must be empty and stderr one "skelconv: error:" line.
 // Any violation is printed with the mutated file kept, and the exit status
-// is 1. ctest runs a few hundred iterations (seconds); the `long` label runs
+// is 1. ctest runs 60 iterations (seconds); the `long` label runs
 // many more (tests/CMakeLists.txt).
 #include <sys/wait.h>
 
