@@ -66,8 +66,10 @@ TEST(PolygonValidation, DegenerateGeometry) {
   expect_input_error([] { Polygon({{0, 0, 0}, {1, 0, 0}, {0.5, 1e-9, 0}}, inverse3); }, "vertices", "zero area");
   // Just above the threshold: accepted.
   EXPECT_NO_THROW(Polygon({{0, 0, 0}, {1, 0, 0}, {0.5, 1e-7, 0}}, inverse3));
-  // Coordinates whose squares overflow.
-  expect_input_error([] { Polygon({{1e200, 0, 0}, {-1e200, 0, 0}, {0, 1e200, 0}}, inverse3); }, "vertices",
+  // Coordinates whose squares overflow are fine (issue 16: any scale);
+  // only a diameter that overflows is too large.
+  EXPECT_NO_THROW(Polygon({{1e200, 0, 0}, {-1e200, 0, 0}, {0, 1e200, 0}}, inverse3));
+  expect_input_error([] { Polygon({{1.5e308, 0, 0}, {-1.5e308, 0, 0}, {0, 1e308, 0}}, inverse3); }, "vertices",
                      "polygon too large");
 }
 

@@ -297,9 +297,10 @@ TEST(SegmentValidation, RejectsBadInputWithItsLocation) {
   expect_input_error([&] { Segment(a, a, KernelSpec::inverse(3)); }, "", "degenerate segment: a and b are the same");
   expect_input_error([&] { Segment(Vec3(1e6, 0, 0), Vec3(1e6 + 1e-5, 0, 0), KernelSpec::inverse(3)); }, "",
                      "degenerate segment: length");
-  expect_input_error([&] { Segment(Vec3(0, 0, 0), Vec3(1e-160, 0, 0), KernelSpec::inverse(3)); }, "",
-                     "too small for double precision");
-  expect_input_error([&] { Segment(Vec3(-1e200, 0, 0), Vec3(1e200, 0, 0), KernelSpec::inverse(3)); }, "",
+  expect_input_error([&] { Segment(Vec3(0, 0, 0), Vec3(1e-310, 0, 0), KernelSpec::inverse(3)); }, "",
+                     "below the normal range of double precision");
+  EXPECT_NO_THROW(Segment(Vec3(-1e200, 0, 0), Vec3(1e200, 0, 0), KernelSpec::inverse(3)));  // any scale
+  expect_input_error([&] { Segment(Vec3(-1.5e308, 0, 0), Vec3(1.5e308, 0, 0), KernelSpec::inverse(3)); }, "",
                      "segment too long");
   expect_input_error([&] { Segment(Vec3(nan, 0, 0), b, KernelSpec::inverse(3)); }, "a", "must be finite");
   expect_input_error([&] { Segment(a, Vec3(0, infinity, 0), KernelSpec::inverse(3)); }, "b", "must be finite");

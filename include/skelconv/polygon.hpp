@@ -26,10 +26,18 @@
 //     P.z == c and P is inside or on the boundary. For a tilted plane a
 //     double P rarely lies exactly on it; a P that misses it by rounding is
 //     evaluated by the closed form (a large finite f).
-// Everything else goes to the closed form, and its result is checked: the
-// field is finite there, so a NaN or ±inf result throws EvaluationError.
+// Everything else goes to the closed form, evaluated in the polygon's own
+// frame (skelconv/scaled_frame.hpp: coordinates scaled by a power of two
+// that brings the diameter into [1, 2), s and R with it) and
+// scaled back exactly by the kernel's homogeneity, so that polygons at any
+// position and scale give the same relative accuracy. Its result is
+// checked: the field is finite there, so a NaN or ±inf result, or a value
+// outside the double range, throws EvaluationError.
 //
-// Validation (constructor, InputError naming the field):
+// Validation (constructor, InputError naming the field), scale invariant:
+// lengths without squaring; area, planarity and the exact predicates on the
+// given doubles scaled by a power of two to the diameter (a valid polygon scaled by 2^±400 stays valid, with the same messages
+// scaled):
 //   - at least 3 vertices, all finite;
 //   - no vertex equal to the next one; the last vertex equal to the first is
 //     rejected too (the boundary closes by itself: list each vertex once) —
@@ -70,6 +78,7 @@
 #include "skelconv/geometry.hpp"
 #include "skelconv/kernel_spec.hpp"
 #include "skelconv/polygon_field.hpp"
+#include "skelconv/scaled_frame.hpp"
 
 namespace skelconv {
 
@@ -124,34 +133,43 @@ class Polygon {
     outside_compact_support,  ///< compact kernel, P farther than R: f = 0
     on_inverse_singularity,   ///< inverse kernel, P in the closed polygon: f = +inf
   };
-  /// Checks that P is finite and picks the case.
-  Case prepare(const Vec3& p) const;
-  /// Exact on the doubles, see the file comment.
-  bool in_closed_polygon(const Vec3& p) const;
-  /// Compact: the ball of radius R around P misses the closed polygon.
-  bool support_misses_polygon(const Vec3& p) const;
-  /// The closed forms' view of this polygon (spans vertex_arrays_) with the
-  /// generated kernel `level`.
+  /// Checks that P is finite, puts it in the frame (frame_p) and picks the case.
+  Case prepare(const Vec3& p, Vec3& frame_p) const;
+  /// Exact on the (frame's) doubles, see the file comment.
+  bool in_closed_polygon(const Vec3& frame_p) const;
+  /// Finite support: the ball of radius R around P misses the closed polygon (P in the frame).
+  bool support_misses_polygon(const Vec3& frame_p) const;
+  /// The closed forms' view of this polygon, in the frame (spans
+  /// vertex_arrays_), with the generated kernel `level` (scaled to the frame).
   PolygonInput<double> closed_form_input(const KernelSpec& level) const;
-  /// Σ_j c_j × closed form j (a family given as compact levels, or one level
-  /// of weight 1): f, and ∇f into `gradient` when not null.
-  double sum_of_levels(const Vec3& p, std::array<double, 3>* gradient) const;
-  /// Throws EvaluationError unless every result of a closed form is finite.
-  void require_finite(std::initializer_list<double> results, const char* function, const Vec3& p) const;
+  /// Σ_j c_j × closed form j at P in the frame (a family given as compact
+  /// levels, or one level of weight 1): f', and ∇f' into `gradient` when not null.
+  double sum_of_levels(const Vec3& frame_p, std::array<double, 3>* gradient) const;
+  /// f' and ∇f' of the frame back in the world (scaled_frame.hpp); throws
+  /// EvaluationError for a non-finite result or one outside the double range.
+  double restore_value(double f, const char* function, const Vec3& p) const;
+  Vec3 restore_gradient(const std::array<double, 3>& g, const char* function, const Vec3& p) const;
 
   std::vector<Vec3> vertices_;
-  std::vector<std::array<double, 3>> vertex_arrays_;  ///< vertices_ as the closed forms take them
+  /// The polygon's frame (skelconv/scaled_frame.hpp): the diameter scaled
+  /// into [1, 2). The checks, the predicates and the closed forms run there.
+  ScaledFrame frame_;
+  /// f has units length^value_power_: 2 − i (inverse) or 2.
+  int value_power_ = 2;
+  std::vector<std::array<double, 3>> vertex_arrays_;  ///< vertices_ in the frame, as the closed forms take them
   Vec3 normal_ = Vec3::UnitZ();
   double area_ = 0.0;
   KernelSpec kernel_;
   /// The generated kernels whose weighted sum is the field: {1, kernel_} for
   /// the families of the generated table, {c_j, k_R^(i_j)} for a trait with
-  /// compact_levels (soft, wyvill).
+  /// compact_levels (soft, wyvill). World units: scaled into the frame by
+  /// closed_form_input.
   std::vector<std::pair<double, KernelSpec>> levels_;
-  double support_radius_ = 0.0;  ///< from the trait: K = 0 beyond (+inf: none)
+  double support_radius_ = 0.0;  ///< from the trait, world units: K = 0 beyond (+inf: none)
   bool singular_at_zero_ = false;
-  /// The vertices projected along normal_'s largest axis (dropped_axis_),
-  /// keeping the other two in cyclic order: counter-clockwise in 2D too.
+  /// The vertices in the frame projected along normal_'s largest axis
+  /// (dropped_axis_), keeping the other two in cyclic order:
+  /// counter-clockwise in 2D too.
   int dropped_axis_ = 2;
   std::vector<std::array<double, 2>> projected_vertices_;
 };

@@ -29,7 +29,14 @@
 //   - inverse: P on the closed segment [A, B];
 //   - cauchy: P at an end of radius 0 (the tip of a cone): there
 //     τ^(i−1) q^(−i/2) ~ 1/t.
-// Any other non-finite result throws EvaluationError.
+// Everything else is evaluated in the segment's own frame (coordinates and
+// radii scaled by the power of two that brings |AB| into [1, 2),
+// skelconv/scaled_frame.hpp):
+// F is scale invariant, so segments at any position and scale give the same
+// relative accuracy. Any other non-finite result, or one outside the double
+// range, throws EvaluationError; a σ whose normalisation h is outside the
+// double range is refused (InputError at "kernel.sigma"), except for the
+// inverse family, where σ^i cancels between F and h and any σ > 0 works.
 #pragma once
 
 #include <array>
@@ -38,6 +45,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/geometry.hpp"
+#include "skelconv/scaled_frame.hpp"
 #include "skelconv/scalis_segment_input.hpp"
 #include "skelconv/segment_input.hpp"  // KernelFamily
 
@@ -72,8 +80,8 @@ class ScalisSegment {
 
   const Vec3& a() const { return a_; }
   const Vec3& b() const { return b_; }
-  double tau0() const { return input_.tau0; }
-  double tau1() const { return input_.tau1; }
+  double tau0() const { return tau0_; }
+  double tau1() const { return tau1_; }
   const ScalisKernel& kernel() const { return kernel_; }
   double iso() const { return iso_; }
   /// h, the normalisation of this kernel: f = iso · F / h.
@@ -93,15 +101,23 @@ class ScalisSegment {
   FieldSample value_and_gradient(const Vec3& p) const;
 
  private:
-  /// F and/or ∇F (unnormalised); +inf at the divergent points.
+  /// f = iso·F/h and/or ∇f (normalised, back in the world); +inf at the
+  /// divergent points.
   double evaluate(const Vec3& p, bool want_value, std::array<double, 3>* grad) const;
-  bool is_divergent_point(const Vec3& p) const;
+  bool is_divergent_point(const Vec3& p, const Vec3& frame_p) const;
 
   Vec3 a_, b_;
+  double tau0_ = 1.0, tau1_ = 1.0;
   ScalisKernel kernel_;
   double iso_ = 1.0;
   double normalisation_ = 1.0;
-  ScalisSegmentInput<double> input_;  ///< everything but P
+  /// The h the evaluation divides by: normalisation_, or for the inverse
+  /// family W_i with σ = 1 in input_ (σ^i cancels; see the constructor).
+  double evaluation_normalisation_ = 1.0;
+  /// The segment's frame (skelconv/scaled_frame.hpp): |AB| scaled into
+  /// [1, 2); F is scale invariant.
+  ScaledFrame frame_;
+  ScalisSegmentInput<double> input_;  ///< everything but P, in the frame
   const generated::ScalisSegmentKernel<double>* generated_ = nullptr;  ///< null for compact
 };
 

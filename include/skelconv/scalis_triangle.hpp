@@ -63,6 +63,13 @@
 //    gradient() / value_and_gradient() throw EvaluationError (value() still
 //    certifies). At the tip itself the field is +inf (below).
 //
+// Both paths run in the triangle's own frame (coordinates and radii scaled
+// by the power of two that brings the diameter into [1, 2),
+// skelconv/scaled_frame.hpp;
+// F is scale invariant), so triangles at any position and scale give the
+// same relative accuracy; a result outside the double range, and a σ whose
+// normalisation h is, are errors.
+//
 // Points where the integral diverges give +inf (gradient (+inf, +inf,
 // +inf)), as for the other primitives: the inverse kernel with P in the
 // closed triangle; the Cauchy kernel with P at a point of radius 0 of the
@@ -85,6 +92,7 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/geometry.hpp"
 #include "skelconv/polygon.hpp"
+#include "skelconv/scaled_frame.hpp"
 #include "skelconv/scalis_segment.hpp"  // ScalisKernel
 
 namespace skelconv {
@@ -147,16 +155,26 @@ class ScalisTriangle {
   FieldSample numerical_value_and_gradient(const Vec3& p) const;
 
  private:
-  /// The numerical path: F and, when grad != nullptr, ∇F (unnormalised).
-  double numerical(const Vec3& p, Vec3* grad) const;
-  /// The closed form: F and, when grad != nullptr, ∇F (unnormalised).
-  double closed(const Vec3& p, Vec3* grad) const;
+  /// The numerical path: F and, when grad != nullptr, ∇F (unnormalised,
+  /// in the frame; P is named in messages, frame_p evaluated).
+  double numerical(const Vec3& p, const Vec3& frame_p, Vec3* grad) const;
+  /// The closed form: F and, when grad != nullptr, ∇F (unnormalised, in the frame).
+  double closed(const Vec3& p, const Vec3& frame_p, Vec3* grad) const;
+  /// P checked finite and put in the frame.
+  Vec3 frame_point(const Vec3& p) const;
+  /// f = iso·F/h and ∇f from the frame's F and ∇F (skelconv/scaled_frame.hpp).
+  FieldSample restore(double F, const Vec3* grad, const Vec3& p) const;
 
   std::array<Vec3, 3> vertices_;
   std::array<double, 3> radii_;
   ScalisKernel kernel_;
   double iso_ = 1.0;
   double normalisation_ = 1.0;
+  /// The triangle's frame (skelconv/scaled_frame.hpp: the diameter scaled
+  /// into [1, 2)), and the vertices and radii in it.
+  ScaledFrame frame_;
+  std::array<Vec3, 3> local_vertices_;
+  std::array<double, 3> local_radii_{};
   /// Constant radius: the triangle as a polygon with the classical kernel
   /// K(r/τ) (file comment), in coordinates scaled by closed_form_scale_
   /// (a power of 2, so that τ·scale ∈ [1/2, 1) and s = 1/(σ²τ²) cannot

@@ -21,11 +21,16 @@
 //     projection parameter t = AB·AP / |AB|² lies in [0, 1].
 //     For a weight that is positive there, +inf is the limit of f as P
 //     approaches the segment; for other weights it is just the marker.
-// Everything else goes to the generated code, and its result is checked:
-// the field is finite there, so a NaN or ±inf result (an intermediate
-// quantity overflowing, e.g. for a point within ~1e-100 of the segment or
-// coordinates near 1e100, or a closed form dividing 0 by 0) throws
-// EvaluationError instead of being returned.
+// Everything else goes to the generated code, evaluated in the segment's
+// own frame (skelconv/scaled_frame.hpp): coordinates scaled by a power of
+// two that brings |AB| into [1, 2), s and R scaled with it, so that segments at any
+// position and of any normal length give the same relative accuracy; f and
+// ∇f are scaled back exactly by the kernel's homogeneity. Its result is
+// checked: the field is finite there, so a NaN or ±inf result (a closed
+// form failing, e.g. for a point within ~1e-100 |AB| of the segment) or a
+// value outside the double range (f underflowing far from the segment, or
+// overflowing near a tiny one) throws EvaluationError instead of being
+// returned.
 #pragma once
 
 #include <array>
@@ -37,6 +42,7 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/geometry.hpp"
 #include "skelconv/kernel_spec.hpp"
+#include "skelconv/scaled_frame.hpp"
 #include "skelconv/segment_input.hpp"
 
 namespace skelconv {
@@ -102,13 +108,22 @@ class Segment {
     on_inverse_singularity,  ///< inverse kernel, P on the segment: f = +inf
   };
   Case prepare(const Vec3& p, SegmentInput<double>& input) const;
-  /// Throws EvaluationError unless every result of a generated call is finite.
-  void require_finite(std::initializer_list<double> results, const Vec3& p) const;
+
+  /// f' of the frame → f (and ∇f, with value_power_ − 1), see scaled_frame.hpp.
+  double restore_value(double f, const Vec3& p) const;
+  Vec3 restore_gradient(const std::array<double, 3>& g, const Vec3& p) const;
 
   Vec3 a_, b_;
   KernelSpec kernel_;
   int weight_degree_ = 0;
-  /// Everything but P (and the compact clip interval), filled once.
+  /// The segment's frame: |AB| scaled into [1, 2).
+  ScaledFrame frame_;
+  /// f has units length^value_power_: 1 − i (inverse) or 1.
+  int value_power_ = 1;
+  /// f can be 0 or tiny (compact kernel, a negative weight coefficient);
+  /// otherwise f > 0 and a 0 or subnormal result is an underflow (an error).
+  bool may_vanish_ = false;
+  /// Everything but P (and the compact clip interval), filled once, in the frame.
   SegmentInput<double> input_;
   const generated::SegmentKernel<double>* generated_ = nullptr;
   /// From the kernel's trait: K = 0 beyond this (+inf: no clip), and K(0) = +inf.

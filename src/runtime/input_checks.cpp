@@ -2,6 +2,7 @@
 #include "input_checks.hpp"
 
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/scaled_frame.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,15 @@ namespace skelconv::detail {
 void require_positive_parameter(double value, const char* where) {
   if (!std::isfinite(value)) throw InputError(fmt::format("must be finite, got {}", value), where);
   if (!(value > 0.0)) throw InputError(fmt::format("must be > 0, got {}", value), where);
+}
+
+void require_normal_in_frame(double value, const char* name, const char* where) {
+  if (std::isnormal(value)) return;
+  throw InputError(fmt::format("{} is {} in the primitive's own frame (lengths scaled by a power of two to about "
+                               "1), outside the normal range of double precision: the kernel is too {} for the "
+                               "primitive's size",
+                               name, value, value == 0.0 || std::abs(value) < 1.0 ? "small" : "large"),
+                   where);
 }
 
 void require_scalis_radius(double tau, int k) {
@@ -35,11 +45,10 @@ void require_scalis_sigma(KernelFamily family, double sigma) {
 
 void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_length_ratio) {
   if (a == b) throw InputError(fmt::format("degenerate segment: a and b are the same point {}", format_point(a)));
-  const double length_squared = (b - a).squaredNorm();
-  if (!std::isfinite(length_squared)) {
-    throw InputError("segment too long: |b - a|² overflows double precision");
-  }
-  const double length = std::sqrt(length_squared);
+  // |b − a| by std::hypot: no square over- or underflows, so the check and
+  // its message are the same at every scale (issue 16).
+  const double length = scale_safe_norm(b - a);
+  if (!std::isfinite(length)) throw InputError("segment too long: |b - a| overflows double precision");
   const double largest_coordinate = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
   if (length < degenerate_length_ratio * largest_coordinate) {
     throw InputError(fmt::format(
@@ -47,8 +56,9 @@ void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_leng
         "too short to be represented accurately at that position",
         length, degenerate_length_ratio, largest_coordinate));
   }
-  if (length_squared < std::numeric_limits<double>::min()) {
-    throw InputError(fmt::format("degenerate segment: length {} is too small for double precision", length));
+  if (length < std::numeric_limits<double>::min()) {
+    throw InputError(fmt::format("degenerate segment: length {} is below the normal range of double precision",
+                                 length));
   }
 }
 

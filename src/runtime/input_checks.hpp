@@ -37,8 +37,15 @@ void require_positive_parameter(double value, const char* where);
 
 /// Throws for a = b, a length below `degenerate_length_ratio` (see
 /// Segment::degenerate_length_ratio) times the largest coordinate
-/// magnitude, or a squared length that is not a normal double.
+/// magnitude, or a length that is not a normal double (computed without
+/// squaring, so the same at every scale).
 void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_length_ratio);
+
+/// A kernel parameter in a primitive's frame (skelconv/scaled_frame.hpp),
+/// e.g. s·|AB|² or R/|AB|: throws InputError at `where` unless it is a
+/// normal double (the kernel is then too sharp or too wide for the
+/// primitive's size to be evaluated in double precision).
+void require_normal_in_frame(double value, const char* name, const char* where);
 
 /// A SCALIS radius τ_k ("radius[k]"): finite and >= 0.
 void require_scalis_radius(double tau, int k);

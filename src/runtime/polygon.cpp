@@ -12,6 +12,7 @@
 #include "input_checks.hpp"
 #include "planar_polygon.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/scaled_frame.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio, shared by the edges
 
 namespace skelconv {
@@ -44,7 +45,7 @@ void require_distinct_consecutive_vertices(std::span<const Vec3> vertices) {
       throw InputError(fmt::format("repeats the previous vertex {}: consecutive vertices must differ", format_point(a)),
                        vertex_name(next));
     }
-    const double length = (b - a).norm();
+    const double length = scale_safe_norm(b - a);
     const double largest_coordinate = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
     if (length < Segment::degenerate_length_ratio * largest_coordinate) {
       throw InputError(fmt::format("degenerate edge from vertices[{}] to vertices[{}]: length {} is below {} times "
@@ -56,15 +57,24 @@ void require_distinct_consecutive_vertices(std::span<const Vec3> vertices) {
   }
 }
 
-/// Largest distance between two vertices. O(n²), once per polygon.
+/// Largest distance between two vertices, without squaring (any scale).
+/// O(n²), once per polygon.
 double diameter_of(std::span<const Vec3> vertices) {
-  double squared = 0.0;
+  double diameter = 0.0;
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     for (std::size_t j = i + 1; j < vertices.size(); ++j) {
-      squared = std::max(squared, (vertices[j] - vertices[i]).squaredNorm());
+      diameter = std::max(diameter, scale_safe_norm(vertices[j] - vertices[i]));
     }
   }
-  return std::sqrt(squared);
+  return diameter;
+}
+
+/// The vertices in `frame` (scaled_frame.hpp).
+std::vector<Vec3> in_frame(std::span<const Vec3> vertices, const ScaledFrame& frame) {
+  std::vector<Vec3> local;
+  local.reserve(vertices.size());
+  for (const Vec3& v : vertices) local.push_back(frame.point(v));
+  return local;
 }
 
 Vec3 centroid_of(std::span<const Vec3> vertices) {
@@ -134,18 +144,25 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   if (n < 3) throw InputError(fmt::format("a polygon needs at least 3 vertices, got {}", n), "vertices");
   require_distinct_consecutive_vertices(vertices);
 
+  // The checks run in a frame scaled by a power of two to the diameter
+  // (scaled_frame.hpp), so that they are the same at every scale; the
+  // messages print the world's numbers.
   const double diameter = diameter_of(vertices);
-  const Vec3 centroid = centroid_of(vertices);
-  Vec3 normal = newell_normal(vertices);
-  if (!std::isfinite(diameter * diameter) || !normal.allFinite()) {
-    throw InputError("polygon too large: its squared diameter overflows double precision", "vertices");
+  if (!std::isfinite(diameter)) {
+    throw InputError("polygon too large: its diameter overflows double precision", "vertices");
   }
-  const double area = normal.norm() / 2;
-  const double smallest_area = degenerate_area_ratio * diameter * diameter;
-  if (!(area >= smallest_area) || area < std::numeric_limits<double>::min()) {
+  const ScaledFrame check_frame(diameter);
+  const int e = check_frame.exponent();
+  const std::vector<Vec3> local = in_frame(vertices, check_frame);
+  const double local_diameter = check_frame.length(diameter);
+  const Vec3 centroid = centroid_of(local);
+  Vec3 normal = newell_normal(local);
+  const double area = normal.norm() / 2;  // in the frame: |N| is about 1 or 0
+  if (!(area >= degenerate_area_ratio * local_diameter * local_diameter)) {
     throw InputError(fmt::format("zero area: area {} is below {} times the squared diameter {} (the vertices are "
                                  "collinear, or the boundary crosses itself so that its loops' areas cancel)",
-                                 area, degenerate_area_ratio, diameter * diameter),
+                                 format_scaled(area, 2 * e), degenerate_area_ratio,
+                                 format_scaled(local_diameter * local_diameter, 2 * e)),
                      "vertices");
   }
   normal /= 2 * area;
@@ -154,16 +171,17 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   double farthest_distance = 0.0;
   std::size_t farthest = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    const double distance = std::abs(normal.dot(vertices[k] - centroid));
+    const double distance = std::abs(normal.dot(local[k] - centroid));
     if (distance > farthest_distance) {
       farthest_distance = distance;
       farthest = k;
     }
   }
-  if (farthest_distance > coplanarity_tolerance * diameter) {
+  if (farthest_distance > coplanarity_tolerance * local_diameter) {
     throw InputError(fmt::format("vertices not coplanar: {} is {} away from the polygon's plane, more than {} "
                                  "times the diameter {}",
-                                 vertex_name(farthest), farthest_distance, coplanarity_tolerance, diameter),
+                                 vertex_name(farthest), format_scaled(farthest_distance, e), coplanarity_tolerance,
+                                 diameter),
                      "vertices");
   }
 
@@ -181,15 +199,21 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   std::rotate(order.begin(), std::min_element(order.begin(), order.end(), lexicographically_less), order.end());
 
   for (std::size_t k : order) vertices_.push_back(vertices[k]);
+  // The frame the checks ran in is the evaluation frame too. The exact
+  // predicates see the given doubles scaled by a power of two (exact), so
+  // that their filters neither overflow nor underflow: a polygon scaled by
+  // 2^±400 is still the same simple polygon.
+  frame_ = check_frame;
   for (const Vec3& v : vertices_) {
-    vertex_arrays_.push_back(to_array(v));
-    projected_vertices_.push_back(project_along_axis(v, axis));
+    vertex_arrays_.push_back(to_array(frame_.point(v)));
+    projected_vertices_.push_back(project_along_axis(frame_.point(v), axis));
   }
   // Recomputed on the stored order, so that both orientations of the input
   // store bit-identical normals.
-  normal_ = newell_normal(vertices_).normalized();
-  area_ = area;
+  normal_ = newell_normal(in_frame(vertices_, frame_)).normalized();
+  area_ = std::ldexp(area, 2 * e);
   dropped_axis_ = axis;
+  value_power_ = kernel.family == KernelFamily::inverse ? 2 - kernel.degree : 2;
 
   if (const auto crossing = detail::find_crossing_edges(projected_vertices_)) {
     // Name the edges by the indices and the direction the user gave.
@@ -229,108 +253,115 @@ PolygonInput<double> Polygon::closed_form_input(const KernelSpec& level) const {
   input.normal = to_array(normal_);
   input.family = level.family;
   input.degree = level.degree;
-  input.s = level.s;
-  input.R = level.R;
+  input.s = frame_.scaled(level.s, -2);
+  input.R = frame_.scaled(level.R, 1);
   return input;
 }
 
-Polygon::Case Polygon::prepare(const Vec3& p) const {
+Polygon::Case Polygon::prepare(const Vec3& p, Vec3& frame_p) const {
   detail::require_finite_query_point(p);
-  if (singular_at_zero_ && in_closed_polygon(p)) return Case::on_inverse_singularity;
-  if (std::isfinite(support_radius_) && support_misses_polygon(p)) return Case::outside_compact_support;
+  frame_p = frame_.point(p);
+  if (!frame_p.allFinite()) {
+    throw EvaluationError(fmt::format("P = {} is too far from the polygon (more than ~2^1000 times its diameter "
+                                      "from the origin): the field is outside the range of double precision",
+                                      format_point(p)));
+  }
+  if (singular_at_zero_ && in_closed_polygon(frame_p)) return Case::on_inverse_singularity;
+  if (std::isfinite(support_radius_) && support_misses_polygon(frame_p)) return Case::outside_compact_support;
   return Case::call_closed_form;
 }
 
-double Polygon::sum_of_levels(const Vec3& p, std::array<double, 3>* gradient) const {
+double Polygon::sum_of_levels(const Vec3& frame_p, std::array<double, 3>* gradient) const {
   double f = 0.0;
   if (gradient != nullptr) *gradient = {};
   for (const auto& [coefficient, level] : levels_) {
     const PolygonInput<double> input = closed_form_input(level);
     if (gradient == nullptr) {
-      f += coefficient * polygon_f(input, to_array(p));
+      f += coefficient * polygon_f(input, to_array(frame_p));
       continue;
     }
     std::array<double, 3> g{};
-    f += coefficient * polygon_f_and_grad(input, to_array(p), g);
+    f += coefficient * polygon_f_and_grad(input, to_array(frame_p), g);
     for (int i = 0; i < 3; ++i) (*gradient)[i] += coefficient * g[i];
   }
   return f;
 }
 
-bool Polygon::in_closed_polygon(const Vec3& p) const {
+bool Polygon::in_closed_polygon(const Vec3& frame_p) const {
   // See the file comment of polygon.hpp: z == 0 on the doubles, then an
   // exact inside-or-on-the-boundary test in the projected plane.
-  if (normal_.dot(p - vertices_.front()) != 0.0) return false;
-  return detail::locate_point(projected_vertices_, project_along_axis(p, dropped_axis_)) !=
+  if (normal_.dot(frame_p - to_vec3(vertex_arrays_.front())) != 0.0) return false;
+  return detail::locate_point(projected_vertices_, project_along_axis(frame_p, dropped_axis_)) !=
          detail::PointLocation::outside;
 }
 
-bool Polygon::support_misses_polygon(const Vec3& p) const {
-  const double R = support_radius_;
-  const double z = normal_.dot(p - vertices_.front());
+bool Polygon::support_misses_polygon(const Vec3& frame_p) const {
+  // In the frame: the stored vertices are vertex_arrays_, R scaled with them.
+  const double R = frame_.scaled(support_radius_, 1);
+  const double z = normal_.dot(frame_p - to_vec3(vertex_arrays_.front()));
   if (std::abs(z) >= R) return true;
-  const Vec3 foot = p - z * normal_;
+  const Vec3 foot = frame_p - z * normal_;
   if (detail::locate_point(projected_vertices_, project_along_axis(foot, dropped_axis_)) !=
       detail::PointLocation::outside) {
     return false;  // distance |z| < R
   }
-  for (std::size_t k = 0; k < vertices_.size(); ++k) {
-    const Vec3& a = vertices_[k];
-    const Vec3 edge = vertices_[(k + 1) % vertices_.size()] - a;
-    const double t = std::clamp(edge.dot(p - a) / edge.squaredNorm(), 0.0, 1.0);
-    if ((p - (a + t * edge)).squaredNorm() < R * R) return false;
+  for (std::size_t k = 0; k < vertex_arrays_.size(); ++k) {
+    const Vec3 a = to_vec3(vertex_arrays_[k]);
+    const Vec3 edge = to_vec3(vertex_arrays_[(k + 1) % vertex_arrays_.size()]) - a;
+    const double t = std::clamp(edge.dot(frame_p - a) / edge.squaredNorm(), 0.0, 1.0);
+    if ((frame_p - (a + t * edge)).squaredNorm() < R * R) return false;
   }
   return true;
 }
 
-void Polygon::require_finite(std::initializer_list<double> results, const char* function, const Vec3& p) const {
-  for (double x : results) {
-    if (!std::isfinite(x)) {
-      throw EvaluationError(fmt::format("{} ({} kernel of degree {}) returned {} at P = {}, where the field is "
-                                        "finite: the closed form failed in double precision (the point may be too "
-                                        "close to the polygon or its plane, or the coordinates too large)",
-                                        function, family_name(kernel_.family), kernel_.degree, x, format_point(p)));
-    }
-  }
+double Polygon::restore_value(double f, const char* function, const Vec3& p) const {
+  // Inverse and Cauchy fields are positive; only a finite-support one (compact,
+  // soft, wyvill) can be 0
+  // (grazing its support).
+  return frame_.restore_value(f, value_power_, std::isfinite(support_radius_), function, p);
+}
+
+Vec3 Polygon::restore_gradient(const std::array<double, 3>& g, const char* function, const Vec3& p) const {
+  return frame_.restore_gradient(to_vec3(g), value_power_ - 1, function, p);
 }
 
 double Polygon::value(const Vec3& p) const {
-  switch (prepare(p)) {
+  Vec3 q;
+  switch (prepare(p, q)) {
     case Case::outside_compact_support: return 0.0;
     case Case::on_inverse_singularity: return infinity;
     case Case::call_closed_form: break;
   }
-  const double f = detail::evaluate_converged("polygon_f", p, [&] { return sum_of_levels(p, nullptr); });
-  require_finite({f}, "polygon_f", p);
-  return f;
+  const double f = detail::evaluate_converged("polygon_f", p, [&] { return sum_of_levels(q, nullptr); });
+  return restore_value(f, "polygon_f", p);
 }
 
 Vec3 Polygon::gradient(const Vec3& p) const {
-  switch (prepare(p)) {
+  Vec3 q;
+  switch (prepare(p, q)) {
     case Case::outside_compact_support: return Vec3::Zero();
     case Case::on_inverse_singularity: return Vec3::Constant(infinity);
     case Case::call_closed_form: break;
   }
   const std::array<double, 3> g = detail::evaluate_converged("polygon_grad", p, [&] {
-    if (levels_.size() == 1) return polygon_grad(closed_form_input(levels_.front().second), to_array(p));
+    if (levels_.size() == 1) return polygon_grad(closed_form_input(levels_.front().second), to_array(q));
     std::array<double, 3> sum{};
-    sum_of_levels(p, &sum);
+    sum_of_levels(q, &sum);
     return sum;
   });
-  require_finite({g[0], g[1], g[2]}, "polygon_grad", p);
-  return to_vec3(g);
+  return restore_gradient(g, "polygon_grad", p);
 }
 
 FieldSample Polygon::value_and_gradient(const Vec3& p) const {
-  switch (prepare(p)) {
+  Vec3 q;
+  switch (prepare(p, q)) {
     case Case::outside_compact_support: return {0.0, Vec3::Zero()};
     case Case::on_inverse_singularity: return {infinity, Vec3::Constant(infinity)};
     case Case::call_closed_form: break;
   }
   std::array<double, 3> g{};
-  const double f = detail::evaluate_converged("polygon_f_and_grad", p, [&] { return sum_of_levels(p, &g); });
-  require_finite({f, g[0], g[1], g[2]}, "polygon_f_and_grad", p);
-  return {f, to_vec3(g)};
+  const double f = detail::evaluate_converged("polygon_f_and_grad", p, [&] { return sum_of_levels(q, &g); });
+  return {restore_value(f, "polygon_f_and_grad", p), restore_gradient(g, "polygon_f_and_grad", p)};
 }
 
 }  // namespace skelconv

@@ -10,6 +10,7 @@
 
 #include "input_checks.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/scaled_frame.hpp"
 #include "scalis_triangle_quadrature.hpp"
 
 namespace skelconv {
@@ -70,25 +71,42 @@ ScalisTriangle::ScalisTriangle(const std::array<Vec3, 3>& vertices, const std::a
   require_supported_degree(kernel);
   normalisation_ = normalisation(kernel.family, kernel.degree, kernel.sigma);
 
+  // The triangle's frame (skelconv/scaled_frame.hpp): coordinates and radii
+  // scaled by the power of two that brings the diameter into [1, 2);
+  // F is scale invariant, so both paths run there.
+  double diameter = 0.0;
+  for (int k = 0; k < 3; ++k) diameter = std::max(diameter, scale_safe_norm(vertices[(k + 1) % 3] - vertices[k]));
+  frame_ = ScaledFrame(diameter);
+  for (int k = 0; k < 3; ++k) {
+    local_vertices_[k] = frame_.point(vertices[k]);
+    local_radii_[k] = frame_.length(radii[k]);
+  }
+  if (!std::isnormal(normalisation_)) {
+    throw InputError(fmt::format("the normalisation h of the SCALIS {} kernel of degree {} on a triangle is {} for "
+                                 "sigma = {}, outside the normal range of double precision: choose sigma nearer 1",
+                                 family_name(kernel.family), kernel.degree, normalisation_, kernel.sigma),
+                     "kernel.sigma");
+  }
+
   if (radii[0] == radii[1] && radii[1] == radii[2] && polygon_offers(kernel)) {
     // Scale by 2^−e so that τ' = τ 2^−e ∈ [1/2, 1): s = 1/(σ²τ'²) and R = στ'
     // stay representable whatever τ is; F is scale invariant.
     int exponent = 0;
-    (void)std::frexp(radii[0], &exponent);
+    (void)std::frexp(local_radii_[0], &exponent);
     closed_form_scale_ = std::ldexp(1.0, -exponent);
-    const double tau = std::ldexp(radii[0], -exponent);
+    const double tau = std::ldexp(local_radii_[0], -exponent);
     const kernels::ScalisPolygonKernel classical = kernels::with_trait<kernels::on_scalis>(
         kernel.family,
         [&](auto trait) { return decltype(trait)::type::scalis_polygon_kernel(kernel.degree, kernel.sigma, tau); });
     closed_form_factor_ = classical.factor;
     std::array<Vec3, 3> scaled;
-    for (int k = 0; k < 3; ++k) scaled[k] = vertices[k] * closed_form_scale_;
+    for (int k = 0; k < 3; ++k) scaled[k] = local_vertices_[k] * closed_form_scale_;
     closed_form_.emplace(std::span<const Vec3>(scaled.data(), 3), classical.kernel);
   }
 }
 
-double ScalisTriangle::closed(const Vec3& p, Vec3* grad) const {
-  const Vec3 scaled = p * closed_form_scale_;
+double ScalisTriangle::closed(const Vec3& p, const Vec3& frame_p, Vec3* grad) const {
+  const Vec3 scaled = frame_p * closed_form_scale_;
   try {
     if (grad == nullptr) return closed_form_factor_ * closed_form_->value(scaled);
     const FieldSample c = closed_form_->value_and_gradient(scaled);
@@ -100,9 +118,10 @@ double ScalisTriangle::closed(const Vec3& p, Vec3* grad) const {
   }
 }
 
-double ScalisTriangle::numerical(const Vec3& p, Vec3* grad) const {
-  const detail::ScalisTriangleIntegral r = detail::integrate_scalis_triangle(
-      vertices_, radii_, kernel_.family, kernel_.degree, kernel_.sigma, p, grad != nullptr, requested_tolerance);
+double ScalisTriangle::numerical(const Vec3& p, const Vec3& frame_p, Vec3* grad) const {
+  const detail::ScalisTriangleIntegral r =
+      detail::integrate_scalis_triangle(local_vertices_, local_radii_, kernel_.family, kernel_.degree, kernel_.sigma,
+                                        frame_p, grad != nullptr, requested_tolerance);
   if (r.divergent) {
     if (grad != nullptr) *grad = Vec3::Constant(infinity);
     return infinity;
@@ -135,26 +154,47 @@ double ScalisTriangle::numerical(const Vec3& p, Vec3* grad) const {
   return r.F;
 }
 
-double ScalisTriangle::value(const Vec3& p) const {
+Vec3 ScalisTriangle::frame_point(const Vec3& p) const {
   detail::require_finite_query_point(p);
-  const double F = uses_closed_form() ? closed(p, nullptr) : numerical(p, nullptr);
-  return iso_ * F / normalisation_;
+  const Vec3 frame_p = frame_.point(p);
+  if (!frame_p.allFinite()) {
+    throw EvaluationError(fmt::format("P = {} is too far from the SCALIS triangle (more than ~2^1000 times its "
+                                      "diameter from the origin): the field is outside the range of double precision",
+                                      detail::format_point(p)));
+  }
+  return frame_p;
+}
+
+FieldSample ScalisTriangle::restore(double F, const Vec3* grad, const Vec3& p) const {
+  // f = iso·F/h is scale invariant, ∇f has units length^−1 (scaled_frame.hpp).
+  const char* what = uses_closed_form() ? "the constant-radius SCALIS triangle" : "the SCALIS triangle";
+  const double scale = iso_ / normalisation_;
+  const bool may_vanish = kernel_.family == KernelFamily::compact;  // outside its support
+  FieldSample sample;
+  sample.value = frame_.restore_value(scale * F, 0, may_vanish, what, p);
+  if (grad != nullptr) sample.gradient = frame_.restore_gradient(scale * *grad, -1, what, p);
+  return sample;
+}
+
+double ScalisTriangle::value(const Vec3& p) const {
+  const Vec3 q = frame_point(p);
+  return restore(uses_closed_form() ? closed(p, q, nullptr) : numerical(p, q, nullptr), nullptr, p).value;
 }
 
 Vec3 ScalisTriangle::gradient(const Vec3& p) const { return value_and_gradient(p).gradient; }
 
 FieldSample ScalisTriangle::value_and_gradient(const Vec3& p) const {
-  detail::require_finite_query_point(p);
+  const Vec3 q = frame_point(p);
   Vec3 g;
-  const double F = uses_closed_form() ? closed(p, &g) : numerical(p, &g);
-  return {iso_ * F / normalisation_, iso_ * g / normalisation_};
+  const double F = uses_closed_form() ? closed(p, q, &g) : numerical(p, q, &g);
+  return restore(F, &g, p);
 }
 
 FieldSample ScalisTriangle::numerical_value_and_gradient(const Vec3& p) const {
-  detail::require_finite_query_point(p);
+  const Vec3 q = frame_point(p);
   Vec3 g;
-  const double F = numerical(p, &g);
-  return {iso_ * F / normalisation_, iso_ * g / normalisation_};
+  const double F = numerical(p, q, &g);
+  return restore(F, &g, p);
 }
 
 }  // namespace skelconv

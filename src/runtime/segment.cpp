@@ -66,16 +66,38 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
         "kernel.degree");
   }
 
-  input_.a = to_array(a);
-  input_.b = to_array(b);
+  // The frame (scaled_frame.hpp): the kernel parameters scale with the
+  // lengths, s as length^−2 and R as length.
+  frame_ = ScaledFrame(scale_safe_norm(b - a));
+  value_power_ = kernel.family == KernelFamily::inverse ? 1 - kernel.degree : 1;
+  // A positive kernel and weight give f > 0, so a 0 there is an underflow;
+  // except beyond a finite support, and far from a Gaussian, whose field
+  // underflows with exp(−a d²) (0 is then its correctly rounded value).
+  may_vanish_ = std::isfinite(kernels::support_radius(kernels::make_radial_kernel(kernel))) ||
+                kernel.family == KernelFamily::gaussian ||
+                std::any_of(weight.begin(), weight.end(), [](double w) { return w < 0.0; });
+  input_.a = to_array(frame_.point(a));
+  input_.b = to_array(frame_.point(b));
   input_.w = {0.0, 0.0, 0.0, 0.0};
   for (int k = 0; k <= weight_degree_; ++k) input_.w[std::size_t(k)] = weight[std::size_t(k)];
-  input_.s = kernel.s;
-  input_.R = kernel.R;
-  input_.gaussian_a = kernel.a;
-  input_.gaussian_b = kernel.b;
+  input_.s = frame_.scaled(kernel.s, -2);
+  input_.R = frame_.scaled(kernel.R, 1);
+  input_.gaussian_a = frame_.scaled(kernel.a, -2);  // exp(−a d²): a has units length^−2
+  input_.gaussian_b = kernel.b;                      // K(0): no units
   support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
   singular_at_zero_ = facts.singular_at_zero;
+  if (kernel.family == KernelFamily::cauchy) {
+    detail::require_normal_in_frame(input_.s, "s in units of the segment's length (s·4^e, 2^e <= |b - a| < 2^(e+1))",
+                                    "kernel.s");
+  }
+  if (std::isfinite(support_radius_)) {
+    detail::require_normal_in_frame(input_.R, "R in units of the segment's length (R·2^-e, 2^e <= |b - a| < 2^(e+1))",
+                                    "kernel.R");
+  }
+  if (kernel.family == KernelFamily::gaussian) {
+    detail::require_normal_in_frame(input_.gaussian_a,
+                                    "a in units of the segment's length (a·4^e, 2^e <= |b - a| < 2^(e+1))", "kernel.a");
+  }
 }
 
 std::string Segment::generated_name() const { return generated_->name; }
@@ -93,12 +115,18 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
 Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const {
   detail::require_finite_query_point(p);
   input = input_;
-  input.p = to_array(p);
+  const Vec3 frame_p = frame_.point(p);
+  if (!frame_p.allFinite()) {
+    throw EvaluationError(fmt::format("P = {} is too far from the segment (more than ~2^1000 times its length "
+                                      "from the origin): the field is outside the range of double precision",
+                                      format_point(p)));
+  }
+  input.p = to_array(frame_p);
 
   if (singular_at_zero_) {
-    // Exact test on the doubles (see the file comment of segment.hpp).
-    const Vec3 ab = b_ - a_;
-    const Vec3 ap = p - a_;
+    // Exact test on the frame's doubles (see the file comment of segment.hpp).
+    const Vec3 ab = to_vec3(input.b) - to_vec3(input.a);
+    const Vec3 ap = frame_p - to_vec3(input.a);
     const double projection = ab.dot(ap);  // t |AB|²
     if (ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm()) {
       return Case::on_inverse_singularity;
@@ -107,7 +135,7 @@ Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const
   if (std::isfinite(support_radius_)) {
     // Hubert 2012 §3.4: only the part of [A,B] inside the ball of radius R
     // around P contributes; the generated code integrates over [t0, t1].
-    const std::optional<ParameterInterval<double>> inside = clip_to_ball(input.a, input.b, input.p, support_radius_);
+    const std::optional<ParameterInterval<double>> inside = clip_to_ball(input.a, input.b, input.p, input.R);  // R in the frame
     if (!inside) return Case::outside_compact_support;
     input.t0 = inside->t0;
     input.t1 = inside->t1;
@@ -115,15 +143,12 @@ Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const
   return Case::call_generated;
 }
 
-void Segment::require_finite(std::initializer_list<double> results, const Vec3& p) const {
-  for (double x : results) {
-    if (!std::isfinite(x)) {
-      throw EvaluationError(fmt::format("{} returned {} at P = {}, where the field is finite: the closed form "
-                                        "failed in double precision (the point may be too close to the segment "
-                                        "or its line, or the coordinates too large)",
-                                        generated_->name, x, format_point(p)));
-    }
-  }
+double Segment::restore_value(double f, const Vec3& p) const {
+  return frame_.restore_value(f, value_power_, may_vanish_, generated_->name, p);
+}
+
+Vec3 Segment::restore_gradient(const std::array<double, 3>& g, const Vec3& p) const {
+  return frame_.restore_gradient(to_vec3(g), value_power_ - 1, generated_->name, p);
 }
 
 double Segment::value(const Vec3& p) const {
@@ -133,9 +158,7 @@ double Segment::value(const Vec3& p) const {
     case Case::on_inverse_singularity: return infinity;
     case Case::call_generated: break;
   }
-  const double f = detail::evaluate_converged(generated_->name, p, [&] { return generated_->f(input); });
-  require_finite({f}, p);
-  return f;
+  return restore_value(detail::evaluate_converged(generated_->name, p, [&] { return generated_->f(input); }), p);
 }
 
 Vec3 Segment::gradient(const Vec3& p) const {
@@ -145,9 +168,7 @@ Vec3 Segment::gradient(const Vec3& p) const {
     case Case::on_inverse_singularity: return Vec3::Constant(infinity);
     case Case::call_generated: break;
   }
-  const std::array<double, 3> g = detail::evaluate_converged(generated_->name, p, [&] { return generated_->grad(input); });
-  require_finite({g[0], g[1], g[2]}, p);
-  return to_vec3(g);
+  return restore_gradient(detail::evaluate_converged(generated_->name, p, [&] { return generated_->grad(input); }), p);
 }
 
 FieldSample Segment::value_and_gradient(const Vec3& p) const {
@@ -159,8 +180,7 @@ FieldSample Segment::value_and_gradient(const Vec3& p) const {
   }
   std::array<double, 3> g{};
   const double f = detail::evaluate_converged(generated_->name, p, [&] { return generated_->f_and_grad(input, g); });
-  require_finite({f, g[0], g[1], g[2]}, p);
-  return {f, to_vec3(g)};
+  return {restore_value(f, p), restore_gradient(g, p)};
 }
 
 }  // namespace skelconv
