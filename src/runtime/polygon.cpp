@@ -11,6 +11,7 @@
 #include "convergence_guard.hpp"
 #include "input_checks.hpp"
 #include "planar_polygon.hpp"
+#include "skelconv/polygon_field.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio, shared by the edges
 
 namespace skelconv {
@@ -209,6 +210,8 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   detail::require_valid_kernel_parameter(kernel);
   require_supported_degree(kernel);
 }
+
+std::vector<int> Polygon::supported_degrees(KernelFamily family) { return polygon_supported_degrees(family); }
 
 PolygonInput<double> Polygon::closed_form_input() const {
   PolygonInput<double> input;
