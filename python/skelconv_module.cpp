@@ -45,18 +45,6 @@ void require_rows_of(const DoubleArray& array, py::ssize_t columns, const char* 
   throw InputError(fmt::format("must be an (N, {}) array of numbers, got shape ({})", columns, shape), name);
 }
 
-/// Rethrows `error` (an InputError or EvaluationError) located at `where`,
-/// as the CLI does at "line N".
-[[noreturn]] void rethrow_at(const std::exception_ptr& error, const std::string& where) {
-  try {
-    std::rethrow_exception(error);
-  } catch (const InputError& located) {
-    throw InputError(located.what(), where);
-  } catch (const EvaluationError& located) {
-    throw EvaluationError(located.what(), where);
-  }
-}
-
 /// f (N,) and ∇f (N, 3) at the rows of `points`, through evaluate_batch.
 py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned threads) {
   require_rows_of(points, 3, "points");
@@ -82,7 +70,7 @@ py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned th
       }
     }
   }
-  if (failure) rethrow_at(failure->error, fmt::format("points[{}]", failure->index));
+  if (failure) rethrow_located(failure->error, fmt::format("points[{}]", failure->index));
   return py::make_tuple(values, gradients);
 }
 
@@ -102,7 +90,7 @@ py::tuple bound(const Skeleton& skeleton, const DoubleArray& boxes) {
       out_lo[k] = f.lower();
       out_hi[k] = f.upper();
     } catch (...) {
-      rethrow_at(std::current_exception(), fmt::format("boxes[{}]", k));
+      rethrow_located(std::current_exception(), fmt::format("boxes[{}]", k));
     }
   }
   return py::make_tuple(lo, hi);
