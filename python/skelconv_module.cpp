@@ -118,7 +118,7 @@ py::tuple mesh_arrays(const TriangleMesh& mesh) {
 py::tuple mesh(const Skeleton& skeleton, std::optional<double> iso, const std::string& method,
                std::optional<double> size, std::optional<double> distance) {
   if (method != "cgal" && method != "grid")
-    throw InputError(fmt::format("must be \"cgal\" or \"grid\", got \"{}\"", method), "method");
+    throw InputError(fmt::format("{} not in {{cgal,grid}}", method), "method");
   MeshOptions options;
   options.iso = iso.value_or(skeleton.iso());
   options.method = method == "grid" ? MeshMethod::grid : MeshMethod::cgal;

@@ -12,7 +12,7 @@ endfunction()
 
 set(work ${WORK}/${MODE})
 file(REMOVE_RECURSE ${work})
-set(configure ${CMAKE_COMMAND} -S ${CONSUMER} -B ${work}/build -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=${BUILD_TYPE})
+set(configure ${CMAKE_COMMAND} -S ${CONSUMER} -B ${work}/build -DCMAKE_CXX_COMPILER=${CXX})
 if(LAUNCHER)
   list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
 endif()
@@ -20,8 +20,11 @@ endif()
 if(MODE STREQUAL "install")
   set(prefix ${work}/prefix)
   run_step("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-  run_step("configuring the consumer" ${configure} -DCMAKE_PREFIX_PATH=${prefix} -DAPI_EXAMPLE=${API_EXAMPLE})
+  run_step("configuring the consumer" ${configure} -DCMAKE_BUILD_TYPE=${BUILD_TYPE} -DCMAKE_PREFIX_PATH=${prefix}
+           -DAPI_EXAMPLE=${API_EXAMPLE})
 else()
+  # No build type: the consumer checks that skelconv leaves it unset (only a
+  # top-level skelconv picks Release).
   run_step("configuring the consumer" ${configure} -DSKELCONV_SOURCE_DIR=${SOURCE_DIR})
 endif()
 run_step("building the consumer" ${CMAKE_COMMAND} --build ${work}/build -j 2)
