@@ -83,14 +83,16 @@ py::tuple bound(const Skeleton& skeleton, const DoubleArray& boxes) {
   const double* in = boxes.data();
   double* out_lo = lo.mutable_data();
   double* out_hi = hi.mutable_data();
-  py::gil_scoped_release release;
-  for (std::size_t k = 0; k < n; ++k) {
-    try {
-      const interval::Interval f = interval::enclose(skeleton, interval::box_from_corners({in + 6 * k, 6}));
-      out_lo[k] = f.lower();
-      out_hi[k] = f.upper();
-    } catch (...) {
-      rethrow_located(std::current_exception(), fmt::format("boxes[{}]", k));
+  {
+    py::gil_scoped_release release;
+    for (std::size_t k = 0; k < n; ++k) {
+      try {
+        const interval::Interval f = interval::enclose(skeleton, interval::box_from_corners({in + 6 * k, 6}));
+        out_lo[k] = f.lower();
+        out_hi[k] = f.upper();
+      } catch (...) {
+        rethrow_located(std::current_exception(), fmt::format("boxes[{}]", k));
+      }
     }
   }
   return py::make_tuple(lo, hi);
