@@ -68,7 +68,12 @@ endif()
 if(MODE STREQUAL "install" AND PYTHON)
   set(ENV{PYTHONPATH} ${prefix}/${PYTHON_DIR})
   run_step("importing the installed Python module" ${PYTHON} -c
-    "import skelconv, os; s = skelconv.Skeleton([{'type': 'segment', 'a': [0,0,0], 'b': [1,0,0], 'kernel': {'family': 'inverse', 'degree': 3}}]); f, g = s.field([[0.5, 1, 0]]); assert f[0] > 0 and g.shape == (1, 3); print(os.path.dirname(skelconv.__file__))")
+    # (newlines, not semicolons: a semicolon would split the CMake argument)
+    "import os, skelconv
+s = skelconv.Skeleton([{'type': 'segment', 'a': [0, 0, 0], 'b': [1, 0, 0], 'kernel': {'family': 'inverse', 'degree': 3}}])
+f, g = s.field([[0.5, 1, 0]])
+assert f[0] > 0 and g.shape == (1, 3) and g[0, 1] < 0, (f, g)
+print(os.path.dirname(skelconv.__file__))")
   string(STRIP "${step_output}" where)
   if(NOT where STREQUAL "${prefix}/${PYTHON_DIR}")
     message(FATAL_ERROR "skelconv was imported from ${where}, not from the install prefix ${prefix}/${PYTHON_DIR}")
