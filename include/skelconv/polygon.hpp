@@ -77,10 +77,16 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/geometry.hpp"
 #include "skelconv/kernel_spec.hpp"
-#include "skelconv/polygon_field.hpp"
 #include "skelconv/scaled_frame.hpp"
+#include "skelconv/segment_input.hpp"  // KernelFamily
 
 namespace skelconv {
+
+// The closed forms' input (skelconv/polygon_field.hpp). That header pulls in
+// the generated polygon table (~7,000 lines): only src/runtime/polygon.cpp
+// and code that asks for the closed forms directly include it.
+template <class T>
+struct PolygonInput;
 
 class Polygon {
  public:
@@ -116,7 +122,7 @@ class Polygon {
 
   /// The kernel degrees the polygon closed forms offer for `family`,
   /// ascending (polygon_supported_degrees).
-  static std::vector<int> supported_degrees(KernelFamily family) { return polygon_supported_degrees(family); }
+  static std::vector<int> supported_degrees(KernelFamily family);
 
   /// f(P). Throws InputError if P is not finite, EvaluationError if the
   /// closed form fails in double precision (see the file comment).

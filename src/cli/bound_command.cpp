@@ -20,23 +20,6 @@ namespace {
 /// of fractal area; 10 keeps a run within minutes.
 constexpr int max_octree_depth = 10;
 
-/// A box from 6 numbers, or InputError (without location) naming the problem.
-interval::Box make_box(const std::vector<double>& v) {
-  if (v.size() != 6) {
-    throw InputError(fmt::format("expected six numbers \"x0 y0 z0 x1 y1 z1\", got {} value{}", v.size(),
-                                 v.size() == 1 ? "" : "s"));
-  }
-  for (double x : v)
-    if (!std::isfinite(x)) throw InputError(fmt::format("every coordinate must be finite, got {}", x));
-  interval::Box box{Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5])};
-  for (int i = 0; i < 3; ++i) {
-    if (box.lo[i] > box.hi[i]) {
-      throw InputError(fmt::format("min corner above max corner along {}: {} > {}", "xyz"[i], box.lo[i], box.hi[i]));
-    }
-  }
-  return box;
-}
-
 /// Parses one line; nullopt for a blank one.
 std::optional<interval::Box> parse_box_line(std::string_view line) {
   std::vector<double> values;
@@ -55,7 +38,7 @@ std::optional<interval::Box> parse_box_line(std::string_view line) {
     cursor = end;
   }
   if (values.empty()) return std::nullopt;
-  return make_box(values);
+  return interval::box_from_corners(values);
 }
 
 std::string bound_lines(const Skeleton& skeleton, std::string_view input, std::optional<double> iso) {
@@ -85,7 +68,7 @@ std::string octree_lines(const Skeleton& skeleton, const BoundOptions& options) 
   if (options.box.empty()) throw InputError("--octree needs --box x0 y0 z0 x1 y1 z1", "--box");
   interval::Box box;
   try {
-    box = make_box(options.box);
+    box = interval::box_from_corners(options.box);
   } catch (const InputError& error) {
     throw InputError(error.what(), "--box");
   }

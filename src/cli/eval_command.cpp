@@ -64,18 +64,6 @@ PointList read_points(std::string_view input) {
   return list;
 }
 
-/// Rethrows a point's error located at its line.
-[[noreturn]] void rethrow_at_line(const std::exception_ptr& error, std::size_t line_number) {
-  const std::string where = fmt::format("line {}", line_number);
-  try {
-    std::rethrow_exception(error);
-  } catch (const InputError& located) {
-    throw InputError(located.what(), where);
-  } catch (const EvaluationError& located) {
-    throw EvaluationError(located.what(), where);
-  }
-}
-
 /// Evaluates every point line of `input` (all cores, field/batch.hpp),
 /// returning the output text. Throws InputError / EvaluationError located
 /// at "line N", the first failing line whatever the thread count.
@@ -84,7 +72,7 @@ std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, uns
   BatchOptions options;
   options.threads = threads;
   const BatchResult result = evaluate_batch(skeleton, list.points, options);
-  if (result.failure) rethrow_at_line(result.failure->error, list.line_numbers[result.failure->index]);
+  if (result.failure) rethrow_located(result.failure->error, fmt::format("line {}", list.line_numbers[result.failure->index]));
   if (list.bad_line) std::rethrow_exception(list.bad_line);
   std::string output;
   for (const FieldSample& sample : result.samples) {

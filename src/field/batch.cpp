@@ -5,6 +5,9 @@
 #include <atomic>
 #include <mutex>
 #include <thread>
+#include <utility>
+
+#include "skelconv/errors.hpp"
 
 namespace skelconv {
 
@@ -48,6 +51,16 @@ BatchResult evaluate_batch(const Skeleton& skeleton, std::span<const Vec3> point
     for (std::thread& thread : pool) thread.join();
   }
   return result;
+}
+
+void rethrow_located(const std::exception_ptr& error, std::string where) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const InputError& located) {
+    throw InputError(located.what(), std::move(where));
+  } catch (const EvaluationError& located) {
+    throw EvaluationError(located.what(), std::move(where));
+  }
 }
 
 }  // namespace skelconv

@@ -3,9 +3,30 @@
 #include "skelconv/interval/interval.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
+#include "skelconv/errors.hpp"
+
 namespace skelconv::interval {
+
+Box box_from_corners(std::span<const double> v) {
+  if (v.size() != 6) {
+    throw InputError(fmt::format("expected six numbers \"x0 y0 z0 x1 y1 z1\", got {} value{}", v.size(),
+                                 v.size() == 1 ? "" : "s"));
+  }
+  for (double x : v)
+    if (!std::isfinite(x)) throw InputError(fmt::format("every coordinate must be finite, got {}", x));
+  Box box{Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5])};
+  for (int i = 0; i < 3; ++i) {
+    if (box.lo[i] > box.hi[i]) {
+      throw InputError(fmt::format("min corner above max corner along {}: {} > {}", "xyz"[i], box.lo[i], box.hi[i]));
+    }
+  }
+  return box;
+}
 
 IntervalPoint to_interval_point(const Box& box) {
   return {Interval(box.lo.x(), box.hi.x()), Interval(box.lo.y(), box.hi.y()), Interval(box.lo.z(), box.hi.z())};

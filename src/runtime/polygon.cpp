@@ -12,6 +12,7 @@
 #include "input_checks.hpp"
 #include "planar_polygon.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/polygon_field.hpp"
 #include "skelconv/scaled_frame.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio, shared by the edges
 
@@ -246,6 +247,8 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
     }
   }
 }
+
+std::vector<int> Polygon::supported_degrees(KernelFamily family) { return polygon_supported_degrees(family); }
 
 PolygonInput<double> Polygon::closed_form_input(const KernelSpec& level) const {
   PolygonInput<double> input;

@@ -18,6 +18,7 @@
 #include <exception>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "skelconv/geometry.hpp"
@@ -50,5 +51,11 @@ unsigned default_thread_count();
 /// f and ∇f at every point. Never throws for a point (see BatchResult);
 /// throws what Skeleton::prepare() throws for an invalid skeleton.
 BatchResult evaluate_batch(const Skeleton& skeleton, std::span<const Vec3> points, const BatchOptions& options = {});
+
+/// Rethrows `error` (an InputError or EvaluationError; anything else as it
+/// is) as the same kind, its whole message as the problem, located at
+/// `where`: a failing point of a batch becomes "line 3: primitives[0]: ..."
+/// in the CLI and "points[2]: primitives[0]: ..." in the Python module.
+[[noreturn]] void rethrow_located(const std::exception_ptr& error, std::string where);
 
 }  // namespace skelconv

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 
 #include <boost/numeric/interval.hpp>
 
@@ -46,6 +47,12 @@ struct Box {
   Vec3 center() const { return 0.5 * (lo + hi); }
   double diagonal() const { return (hi - lo).norm(); }
 };
+
+/// The box with corners (v[0], v[1], v[2]) and (v[3], v[4], v[5]), the form
+/// `skelconv bound` reads and the Python module's Skeleton.bound takes.
+/// Throws InputError (no location: the caller knows the line or row) unless
+/// v holds six finite numbers with the first corner below the second.
+Box box_from_corners(std::span<const double> v);
 
 /// A point with interval coordinates (a box, or a rounded computed point).
 using IntervalPoint = std::array<Interval, 3>;

@@ -1,0 +1,59 @@
+# cmake --install: the headers, the generated headers, the libraries and a
+# CMake package, so that another project writes
+#
+#     find_package(skelconv CONFIG REQUIRED)
+#     target_link_libraries(app PRIVATE skelconv::skelconv)
+#
+# (docs/api.md). Layout under the prefix:
+#   include/skelconv/...                  the public headers
+#   include/skelconv-generated/generated/ the generated kernels (reached as
+#                                         "generated/segment_table.hpp", as in
+#                                         the source tree)
+#   lib/libskelconv_*.a                   the static libraries
+#   lib/cmake/skelconv/                   skelconv-config.cmake and the targets
+#   lib/python3/dist-packages/skelconv*.so the Python module (python/)
+#
+# Exported targets (namespace skelconv::):
+#   skelconv::runtime  primitives, skeleton files, blends, fields, batches, bounds
+#   skelconv::mesh     iso-surface meshing (CGAL Mesh_3, OpenVDB), PLY/OBJ
+#   skelconv::skelconv both: what <skelconv/skelconv.hpp> declares
+#   skelconv::kernels  the header-only generated kernels (templates on the scalar type)
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(SKELCONV_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/skelconv)
+set(SKELCONV_GENERATED_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/skelconv-generated)
+
+target_include_directories(skelconv_kernels INTERFACE
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>
+  $<INSTALL_INTERFACE:${SKELCONV_GENERATED_INCLUDEDIR}>)
+
+set_target_properties(skelconv_all PROPERTIES EXPORT_NAME skelconv)
+set_target_properties(skelconv_runtime PROPERTIES EXPORT_NAME runtime)
+set_target_properties(skelconv_mesh PROPERTIES EXPORT_NAME mesh)
+set_target_properties(skelconv_kernels PROPERTIES EXPORT_NAME kernels)
+
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/skelconv
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/generated
+        DESTINATION ${SKELCONV_GENERATED_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
+
+# The OBJECT libraries that confine CGAL and OpenVDB to their own translation
+# units (src/CMakeLists.txt) are linked privately into the static libraries;
+# they are exported for their link dependencies (CGAL's GMP, OpenVDB), their
+# objects are already inside the archives.
+install(TARGETS skelconv_all skelconv_runtime skelconv_mesh skelconv_kernels
+                skelconv_planar_polygon skelconv_cgal_mesher skelconv_grid_mesher
+        EXPORT skelconv-targets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        OBJECTS DESTINATION ${CMAKE_INSTALL_LIBDIR}/skelconv-objects
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT skelconv-targets NAMESPACE skelconv:: DESTINATION ${SKELCONV_INSTALL_CMAKEDIR})
+
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/skelconv-config.cmake.in
+  ${PROJECT_BINARY_DIR}/skelconv-config.cmake INSTALL_DESTINATION ${SKELCONV_INSTALL_CMAKEDIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/skelconv-config-version.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/skelconv-config.cmake ${PROJECT_BINARY_DIR}/skelconv-config-version.cmake
+        DESTINATION ${SKELCONV_INSTALL_CMAKEDIR})
