@@ -47,6 +47,7 @@
 
 #include "skelconv/clip.hpp"
 #include "skelconv/segment_input.hpp"
+#include "skelconv/simd/batch.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__FAST_MATH__) && \
     !defined(SKELCONV_BATCH_NO_LIBMVEC)
@@ -70,21 +71,10 @@ __attribute__((__simd__("notinbranch"))) double asinh(double) noexcept;
 
 namespace skelconv::bench {
 
-/// Query points, structure of arrays: point k is (x[k], y[k], z[k]).
-struct PointsSoA {
-  const double* x;
-  const double* y;
-  const double* z;
-  std::size_t n;
-};
-
-/// Outputs, structure of arrays: f[k] and ∇f = (gx[k], gy[k], gz[k]).
-struct FieldSoA {
-  double* f;
-  double* gx;
-  double* gy;
-  double* gz;
-};
+/// Query points and outputs, structure of arrays: the library's batch types
+/// (skelconv/simd/batch.hpp), so that a benchmark feeds both paths the same.
+using simd::FieldSoA;
+using simd::PointsSoA;
 
 namespace detail {
 /// The per-segment fields of a SegmentInput as scalars. The loops rebuild

@@ -27,6 +27,7 @@
 #include "skelconv/simd/batch.hpp"
 #include "src/simd/group_runner-inl.hpp"
 #include "src/simd/lanes-inl.hpp"
+#include "src/simd/scalar_fallback.hpp"
 #include "src/simd/scalis_kernels.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -143,19 +144,7 @@ BatchCounts value_and_gradient(const ScalisSegment& segment, PointsSoA points, F
   const bool vectorised = HWY_DYNAMIC_DISPATCH(scalis_batch)(input, segment.kernel().family, segment.kernel().degree,
                                                              segment.iso(), segment.normalisation(), points, out,
                                                              scalar, counts);
-  if (!vectorised) {
-    scalar.resize(points.n);
-    for (std::size_t p = 0; p < points.n; ++p) scalar[p] = std::uint32_t(p);
-  }
-  std::sort(scalar.begin(), scalar.end());  // the first failing point's error is thrown
-  for (const std::uint32_t p : scalar) {
-    const FieldSample s = segment.value_and_gradient(Vec3(points.x[p], points.y[p], points.z[p]));
-    out.f[p] = s.value;
-    out.gx[p] = s.gradient[0];
-    out.gy[p] = s.gradient[1];
-    out.gz[p] = s.gradient[2];
-  }
-  counts.scalar_points += scalar.size();
+  detail::finish_on_scalar_path(segment, vectorised, scalar, points, out, counts);
   return counts;
 }
 

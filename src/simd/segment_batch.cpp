@@ -31,6 +31,7 @@
 #include "skelconv/simd/batch.hpp"
 #include "src/simd/group_runner-inl.hpp"
 #include "src/simd/lanes-inl.hpp"
+#include "src/simd/scalar_fallback.hpp"
 #include "src/simd/segment_kernels.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -224,21 +225,7 @@ BatchCounts value_and_gradient(const Segment& segment, PointsSoA points, FieldSo
   const bool vectorised =
       HWY_DYNAMIC_DISPATCH(segment_batch)(segment_input(segment), segment.kernel().family, segment.kernel().degree,
                                           segment.weight_degree(), points, out, scalar, counts);
-  if (!vectorised) {
-    scalar.resize(points.n);
-    for (std::size_t p = 0; p < points.n; ++p) scalar[p] = std::uint32_t(p);
-  }
-  // In index order: the first failing point is the one whose error is thrown
-  // (vector lanes never fail: a non-finite lane is in this list too).
-  std::sort(scalar.begin(), scalar.end());
-  for (const std::uint32_t p : scalar) {
-    const FieldSample s = segment.value_and_gradient(Vec3(points.x[p], points.y[p], points.z[p]));
-    out.f[p] = s.value;
-    out.gx[p] = s.gradient[0];
-    out.gy[p] = s.gradient[1];
-    out.gz[p] = s.gradient[2];
-  }
-  counts.scalar_points += scalar.size();
+  detail::finish_on_scalar_path(segment, vectorised, scalar, points, out, counts);
   return counts;
 }
 
