@@ -59,21 +59,54 @@ struct KernelDefinition {
     return kernels::make_radial_kernel(spec);
   }
 
-  /// K(r).
+  /// K(r). The three families of SPEC §1 are written here in T with their
+  /// parameters in T: the SCALIS and thickness references pass parameters
+  /// that are not doubles (s = 1/(σ²τ²), R = στ in binary128), which the
+  /// trait (double members) would round. The verifier's own definitions,
+  /// independent of the runtime:
+  ///   p^i(r)   = r^-i
+  ///   c_s^i(r) = (1 + s r²)^(-i/2)
+  ///   k_R^i(r) = (1 - r²/R²)^(i/2) for r < R, else 0 (any i ≥ 1)
+  /// The other families come from their traits (their sweeps draw double
+  /// parameters, so the conversion in trait() is exact).
   T value(const T& r) const {
-    return std::visit([&](const auto& k) { return k.template value<T>(r); }, trait());
+    switch (family) {
+      case KernelFamily::inverse: return T(1) / integer_power(r, degree);
+      case KernelFamily::cauchy: return half_integer_power(T(1) + s * r * r, -degree);
+      case KernelFamily::compact:
+        if (!(r < R)) return T(0);
+        return half_integer_power(T(1) - (r / R) * (r / R), degree);
+      default: return std::visit([&](const auto& k) { return k.template value<T>(r); }, trait());
+    }
   }
   /// K'(r)/r, so that ∇_P K(|P − Γ|) = K'(r)/r · (P − Γ) (SPEC §2, gradient
   /// under the integral); r > 0.
+  ///   p^i:   K'/r = -i r^(-i-2)
+  ///   c_s^i: K'/r = -i s (1+sr²)^(-(i+2)/2)
+  ///   k_R^i: K'/r = -(i/R²)(1-r²/R²)^((i-2)/2)  (i ≥ 2: → 0 at r = R)
   T derivative_over_r(const T& r) const {
-    return std::visit([&](const auto& k) { return k.template derivative<T>(r) / r; }, trait());
+    switch (family) {
+      case KernelFamily::inverse: return -T(degree) / integer_power(r, degree + 2);
+      case KernelFamily::cauchy: return -T(degree) * s * half_integer_power(T(1) + s * r * r, -(degree + 2));
+      case KernelFamily::compact:
+        if (!(r < R)) return T(0);
+        return -T(degree) / (R * R) * half_integer_power(T(1) - (r / R) * (r / R), degree - 2);
+      default: return std::visit([&](const auto& k) { return k.template derivative<T>(r) / r; }, trait());
+    }
   }
   /// K = 0 beyond this distance (+inf: no support limit).
-  T support_radius() const { return T(kernels::support_radius(trait())); }
+  T support_radius() const {
+    if (family == KernelFamily::compact) return R;  // exact in T (see value)
+    if (family == KernelFamily::inverse || family == KernelFamily::cauchy) return std::numeric_limits<T>::infinity();
+    return T(kernels::support_radius(trait()));
+  }
   /// Width, in distance units, of the peak of u ↦ K(√(d² + u²)) at u = 0 for
   /// a point at distance d from the line (the trait's peak_width; +inf where
   /// it has none: no narrower peak than the support).
   T peak_width(const T& d) const {
+    // k_R^i has no peak narrower than its support (and i = 1, which the
+    // self-check integrates, is not a kernel its trait accepts).
+    if (family == KernelFamily::compact) return std::numeric_limits<T>::infinity();
     return std::visit(
         [&](const auto& k) -> T {
           if constexpr (requires { k.template peak_width<T>(d); }) {
