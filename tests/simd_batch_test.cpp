@@ -122,7 +122,7 @@ TEST_P(SimdSegmentBatch, EqualsTheScalarPathOnEveryForm) {
   ASSERT_EQ(simd::active_target(), GetParam());
   const std::vector<Vec3> points = form_covering_points();
   const std::vector<Segment> segments = vector_segments();
-  ASSERT_GE(segments.size(), 20u);
+  ASSERT_GE(segments.size(), 8u);  // src/simd/segment_kernels.hpp
   for (const Segment& segment : segments) {
     simd::BatchCounts counts;
     const double worst = batch_against_scalar(segment, points, counts);
