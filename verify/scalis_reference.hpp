@@ -38,35 +38,47 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
 #include "extended_precision.hpp"
-#include "kernel_definitions.hpp"  // and the traits (kernel_list.hpp)
+#include "kernel_definitions.hpp"
 #include "reference_quadrature.hpp"
 #include "skelconv/scalis_segment_input.hpp"
 
 namespace skelconv::verify {
 
-/// A SCALIS kernel of SPEC §1 (Zanni eq. 6–8), from its definition: the
-/// family's trait K (skelconv/kernels/, s = 1, R = 1) at x = d/σ:
-///   Cauchy  (1 + x²)^(−i/2),  inverse x^(−i),  compact (1 − x²)^(i/2) for x < 1.
+/// A SCALIS kernel of SPEC §1 (Zanni eq. 6–8), from its definition, written
+/// here in T (the verifier's own, independent of the runtime traits: their
+/// K'(x)/x form is 0/0 at the cone tip d = 0, where K'/d below is finite).
 template <class T>
 struct ScalisKernel {
   KernelFamily family = KernelFamily::compact;
   int degree = 2;  ///< i
 
-  kernels::RadialKernel trait() const {
-    KernelSpec spec;  // s = 1, R = 1
-    spec.family = family;
-    spec.degree = degree;
-    return kernels::make_radial_kernel(spec);
-  }
-  /// K(d) with scale σ.
+  /// K(d) with scale σ:
+  ///   Cauchy  (1 + (d/σ)²)^(−i/2)
+  ///   inverse (d/σ)^(−i)
+  ///   compact (1 − (d/σ)²)^(i/2) for d < σ, else 0
   T value(const T& d, const T& sigma) const {
     const T x = d / sigma;
-    return std::visit([&](const auto& k) { return k.template value<T>(x); }, trait());
+    switch (family) {
+      case KernelFamily::cauchy: return half_integer_power(T(1) + x * x, -degree);
+      case KernelFamily::inverse: return T(1) / integer_power(x, degree);
+      case KernelFamily::compact: return x < T(1) ? half_integer_power(T(1) - x * x, degree) : T(0);
+    }
+    return T(0);
   }
-  /// K'(d)/d = K'(x)/(σ² x), x = d/σ (d > 0).
+
+  /// K'(d)/d, derivatives by hand:
+  ///   Cauchy  K' = −(i/2)(1 + d²/σ²)^(−i/2−1) 2d/σ²  ⇒ K'/d = −(i/σ²)(1 + d²/σ²)^(−(i+2)/2)
+  ///   inverse K' = −i σ^i d^(−i−1)                  ⇒ K'/d = −(i/σ²)(d/σ)^(−i−2)
+  ///   compact K' = (i/2)(1 − d²/σ²)^(i/2−1)(−2d/σ²)  ⇒ K'/d = −(i/σ²)(1 − d²/σ²)^((i−2)/2)
   T derivative_over_d(const T& d, const T& sigma) const {
     const T x = d / sigma;
-    return std::visit([&](const auto& k) { return k.template derivative<T>(x); }, trait()) / (sigma * sigma * x);
+    const T scale = -T(degree) / (sigma * sigma);
+    switch (family) {
+      case KernelFamily::cauchy: return scale * half_integer_power(T(1) + x * x, -(degree + 2));
+      case KernelFamily::inverse: return scale / integer_power(x, degree + 2);
+      case KernelFamily::compact: return x < T(1) ? scale * half_integer_power(T(1) - x * x, degree - 2) : T(0);
+    }
+    return T(0);
   }
 };
 
