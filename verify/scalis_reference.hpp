@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -62,8 +63,8 @@ struct ScalisKernel {
       case KernelFamily::cauchy: return half_integer_power(T(1) + x * x, -degree);
       case KernelFamily::inverse: return T(1) / integer_power(x, degree);
       case KernelFamily::compact: return x < T(1) ? half_integer_power(T(1) - x * x, degree) : T(0);
+      default: throw std::logic_error("SCALIS reference: only the inverse, cauchy and compact families");
     }
-    return T(0);
   }
 
   /// K'(d)/d, derivatives by hand:
@@ -77,8 +78,8 @@ struct ScalisKernel {
       case KernelFamily::cauchy: return scale * half_integer_power(T(1) + x * x, -(degree + 2));
       case KernelFamily::inverse: return scale / integer_power(x, degree + 2);
       case KernelFamily::compact: return x < T(1) ? scale * half_integer_power(T(1) - x * x, degree - 2) : T(0);
+      default: throw std::logic_error("SCALIS reference: only the inverse, cauchy and compact families");
     }
-    return T(0);
   }
 };
 
