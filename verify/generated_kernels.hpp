@@ -7,8 +7,7 @@
 #include <vector>
 
 #include "extended_precision.hpp"
-#include "generated/segment_table.hpp"
-#include "skelconv/derived_segment_kernels.hpp"
+#include "skelconv/segment_kernel_tables.hpp"  // the double tables: instantiated in skelconv_runtime
 
 namespace skelconv::verify {
 

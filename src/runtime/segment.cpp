@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "skelconv/derived_segment_kernels.hpp"
+#include "skelconv/segment_kernel_tables.hpp"
 #include "convergence_guard.hpp"
 #include "input_checks.hpp"
 #include "skelconv/clip.hpp"
