@@ -253,8 +253,6 @@ double lower_abs(const arb_t x) {
   return out;
 }
 
-/// Rounding the midpoint to binary128 adds up to 2^-113 relative.
-constexpr double binary128_rounding = 0x1p-112;
 /// Upward rounding of the double arithmetic on the bounds themselves.
 constexpr double bound_rounding = 1 + 0x1p-50;
 
@@ -267,7 +265,7 @@ CertifiedField make_result(const arb_t f, const BallVec& grad) {
   out.f = midpoint(f);
   for (int c = 0; c < 3; ++c) out.grad[c] = midpoint(grad[c]);
   const double f_lower = lower_abs(f);
-  out.f_bound = f_lower > 0 ? mag_get_d(rad_of(f)) / f_lower * bound_rounding + binary128_rounding
+  out.f_bound = f_lower > 0 ? mag_get_d(rad_of(f)) / f_lower * bound_rounding
                             : std::numeric_limits<double>::infinity();
   double radius2 = 0, lower2 = 0;
   for (int c = 0; c < 3; ++c) {
@@ -275,7 +273,7 @@ CertifiedField make_result(const arb_t f, const BallVec& grad) {
     radius2 += r * r;
     lower2 += l * l;
   }
-  out.grad_bound = lower2 > 0 ? std::sqrt(radius2 / lower2) * bound_rounding + binary128_rounding
+  out.grad_bound = lower2 > 0 ? std::sqrt(radius2 / lower2) * bound_rounding
                               : std::numeric_limits<double>::infinity();
   out.certified = true;
   return out;
@@ -674,6 +672,7 @@ CertifiedField certified_polygon_field(const ExactPolygon& polygon, const Vec3<d
   // Edge integrals.
   Ball fan_f, fan_normal, term, edge_k;
   BallVec in_plane;
+  bool any_piece = false;  // compact: does the support reach an edge at all?
   mag_t tol;
   mag_init(tol);  // 0: every edge integrand is sign-definite, the relative goal decides
   for (std::size_t m = 0; m < count; ++m) {
@@ -685,6 +684,7 @@ CertifiedField certified_polygon_field(const ExactPolygon& polygon, const Vec3<d
       mag_clear(tol);
       return refused("an edge's crossing with the support sphere is not separated from its ends");
     }
+    any_piece = any_piece || !pieces.empty();
     using Part = PolygonEdgeIntegrand::Part;
     const PolygonEdgeIntegrand f_part(g, offset[m], edge[m], Part::fan_f);
     const PolygonEdgeIntegrand normal_part(g, offset[m], edge[m], Part::fan_normal);
@@ -702,6 +702,9 @@ CertifiedField certified_polygon_field(const ExactPolygon& polygon, const Vec3<d
     for (int c = 0; c < 3; ++c) arb_submul(in_plane[c], outward[c], edge_k, prec);
   }
   mag_clear(tol);
+  // No edge reaches into the support and P̄ is outside: the support disc
+  // misses Ω, f = 0 and ∇f = 0 exactly.
+  if (!any_piece && winding == 0) return exactly_zero();
 
   // f = Σ σ ∫F/ρ² − Θ F(z²); ∂f/∂z = z (Σ σ ∫K/ρ² − Θ K(z²)); ∇f = n ∂f/∂z + in-plane part.
   Ball f, dfdz;

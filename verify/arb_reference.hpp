@@ -29,8 +29,11 @@ struct CertifiedField {
   bool zero = false;       ///< the field is exactly 0 (compact: the support misses the primitive)
   extended f = 0;          ///< midpoint of the ball of f
   Vec3<extended> grad{};   ///< midpoints of the balls of ∇f
-  double f_bound = 0;      ///< certified |f_exact − f| / |f_exact| (upper bound)
-  double grad_bound = 0;   ///< certified |∇f_exact − ∇f| / |∇f_exact| (upper bound, norm-wise)
+  /// Certified relative radius of the ball of f: the exact f is within
+  /// f_bound·|f| of the ball's midpoint (upper bound). Handing the midpoint
+  /// over in binary128 adds at most 2^-113 ≈ 1e-34 to it.
+  double f_bound = 0;
+  double grad_bound = 0;  ///< the same for ∇f, norm-wise: |radius vector| / lower bound of |∇f|
   std::string why;
 };
 

@@ -55,7 +55,7 @@ using namespace skelconv::verify;
 
 constexpr std::uint64_t segment_seed = 20240601;  // the segment sweep's default seed
 constexpr std::uint64_t polygon_seed = 20261122;  // the polygon sweep's default seed
-constexpr int segment_points = 4;                 // per (family, degree, region)
+constexpr int segment_points = 8;                 // per (family, degree, region)
 constexpr int polygon_points = 4;                 // per (family, region), each at every degree
 
 /// Issue 16's final targets (item 5): f relative, each ∇f component ÷ |∇f|.
@@ -63,6 +63,17 @@ constexpr double final_target_f = 1e-13;
 constexpr double final_target_grad = 1e-12;
 /// What a certified reference must reach to be used.
 constexpr double certified_bound_limit = 1e-25;
+/// The certified reference against the independent ones (a check of the
+/// derivations in arb_reference.cpp, which ball arithmetic cannot check):
+///  * segments: the sweep's binary128 tanh-sinh reference (reference_quadrature.hpp)
+///    must agree to its flag threshold, 1e-20 (what the sweep trusts it to);
+///  * polygons, p³ at generic points: f = Ω/|z| with Ω the solid angle of
+///    the polygon seen from P (Van Oosterom–Strackee, signed fan of
+///    triangles, in long double): a different integral identity; at generic
+///    points its own rounding is ~1e-18, so 1e-15 leaves room and still
+///    catches any wrong term (O(1)).
+constexpr double binary128_agreement = 1e-20;
+constexpr double solid_angle_agreement = 1e-15;
 
 std::vector<int> degrees_of(KernelFamily family) {
   if (family == KernelFamily::compact) return {4, 6, 8};
@@ -81,7 +92,23 @@ struct OpenCell {
   const char* source;
 };
 
-const std::vector<OpenCell> open_cells = {};
+/// Measured here (seed above): the cells that miss the final target today.
+/// Their bounds are the maxima the default sweeps document for the same
+/// (family, region), all degrees, double: segments from the committed
+/// baseline verify/baselines/sweep_default.json (the same samples, so the
+/// certified subset must stay below them), polygons from README "Polygons"
+/// (the polygon sweep's long double reference, vertices rounded off their
+/// plane; the exact frames here isolate what is left: the double normal).
+constexpr const char* segment_baseline = "segment sweep baseline";
+constexpr const char* polygon_readme = "polygon sweep, README";
+const std::vector<OpenCell> open_cells = {
+    {"segment", KernelFamily::inverse, "near_line_beside", 4.4e-10, 7.4e-10, segment_baseline},
+    {"segment", KernelFamily::inverse, "near_ends", 1.5e-11, 1.5e-11, segment_baseline},
+    {"segment", KernelFamily::compact, "support_grazing", 1.4e-8, 1.0e-8, segment_baseline},
+    {"polygon", KernelFamily::inverse, "near_plane_inside", 2.8e-9, 2.1e-9, polygon_readme},
+    {"polygon", KernelFamily::inverse, "near_edges", 8.1e-10, 6.5e-10, polygon_readme},
+    {"polygon", KernelFamily::cauchy, "near_edges", 2.2e-11, 1.4e-13, polygon_readme},
+};
 
 // ---- cells -------------------------------------------------------------------
 
@@ -89,6 +116,7 @@ struct Cell {
   int points = 0, zero_points = 0;
   double reference_f = 0, reference_grad = 0;  ///< largest certified bounds used
   double error_f = 0, error_grad = 0;          ///< largest measured errors (∇f: component ÷ |∇f|)
+  double independent = -1;                     ///< largest disagreement with the independent reference (-1: none)
   std::vector<std::string> failures;
 };
 
@@ -122,6 +150,28 @@ std::string sample_name(const char* primitive, KernelFamily family, int degree, 
 
 // ---- segments ----------------------------------------------------------------
 
+/// The sweep's binary128 reference of the same sample against the certified
+/// one (see binary128_agreement). A flagged binary128 reference is skipped.
+void check_against_binary128(const SweepProblem& pb, int weight_degree, const ReferenceField& certified, Cell& cell,
+                             const std::string& where) {
+  static ReferenceIntegrator integrator{ReferenceTolerances{}};
+  const std::optional<SegmentMoments> moments = try_moments(integrator, pb);
+  if (!moments || moments->empty) return;
+  std::array<extended, 4> w{};
+  for (int k = 0; k < 4; ++k) w[k] = extended(pb.w[k]);
+  const ReferenceField other = integrator.field(*moments, w, weight_degree);
+  if (other.flagged) return;
+  const RelativeErrors e = relative_errors(other.f, other.grad, certified.f, certified.grad);
+  const double disagreement = std::max(e.f, e.grad);
+  cell.independent = std::max(cell.independent, disagreement);
+  if (!(disagreement <= binary128_agreement)) {
+    char text[120];
+    std::snprintf(text, sizeof text, ": binary128 reference differs by %.2e (above %.0e)", disagreement,
+                  binary128_agreement);
+    cell.failures.push_back(where + text);
+  }
+}
+
 void check_segment(const SweepProblem& pb, Cell& cell) {
   const int weight_degree = static_cast<int>(pb.index % 4);
   const std::string where = sample_name("segment", pb.family, pb.degree, std::string(region_name(pb.region)), pb.index) +
@@ -140,6 +190,7 @@ void check_segment(const SweepProblem& pb, Cell& cell) {
     return;
   }
   const ReferenceField field{ref.f, ref.grad, 0, 0, false};
+  check_against_binary128(pb, weight_degree, field, cell, where);
   const RelativeErrors e = evaluate_generated(*kernel, in, field);
   ++cell.points;
   cell.error_f = std::max(cell.error_f, e.f);
@@ -181,6 +232,32 @@ PolygonFrame exact_polygon_frame(DeterministicRandom& rng, double outline_diamet
   return frame;
 }
 
+/// ∬_Ω |P − Q|^-3 dQ = Ω_solid / |z|: the solid angle of the polygon at P
+/// (Van Oosterom–Strackee, tan(Ω/2) = a·(b × c) / (abc + (a·b)c + (a·c)b + (b·c)a)
+/// for a triangle, a, b, c from P to its corners), summed with signs over the
+/// fan of triangles (Q₀, Q_m, Q_{m+1}), in long double.
+long double solid_angle_p3(const PolygonProblem& pb, const Vec3<double>& exact_normal) {
+  using L = long double;
+  const auto from_p = [&](const Vec3<double>& q) {
+    return Vec3<L>{L(q[0]) - L(pb.p[0]), L(q[1]) - L(pb.p[1]), L(q[2]) - L(pb.p[2])};
+  };
+  const auto cross = [](const Vec3<L>& u, const Vec3<L>& v) {
+    return Vec3<L>{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  };
+  L omega = 0;
+  const Vec3<L> a = from_p(pb.vertices[0]);
+  for (std::size_t m = 1; m + 1 < pb.vertices.size(); ++m) {
+    const Vec3<L> b = from_p(pb.vertices[m]), c = from_p(pb.vertices[m + 1]);
+    const L la = norm(a), lb = norm(b), lc = norm(c);
+    const L numerator = dot(a, cross(b, c));
+    const L denominator = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
+    omega += 2 * std::atan2(numerator, denominator);
+  }
+  const Vec3<L> n{L(exact_normal[0]), L(exact_normal[1]), L(exact_normal[2])};
+  const L z = -dot(a, n) / norm(n);  // (P − Q₀)·n̂
+  return std::abs(omega) / std::abs(z);
+}
+
 void check_polygon(const PolygonProblem& pb, const Vec3<double>& exact_normal, int degree, Cell& cell) {
   const std::string where =
       sample_name("polygon", pb.family, degree, std::string(polygon_region_name(pb.region)), pb.index);
@@ -195,6 +272,13 @@ void check_polygon(const PolygonProblem& pb, const Vec3<double>& exact_normal, i
     if (f != 0 || grad[0] != 0 || grad[1] != 0 || grad[2] != 0)
       cell.failures.push_back(where + ": f = 0 exactly, generated code non-zero");
     return;
+  }
+  if (pb.family == KernelFamily::inverse && degree == 3 && pb.region == PolygonRegion::generic) {
+    const double disagreement =
+        static_cast<double>(abs(extended(solid_angle_p3(pb, exact_normal)) - ref.f) / ref.f);
+    cell.independent = std::max(cell.independent, disagreement);
+    if (!(disagreement <= solid_angle_agreement))
+      cell.failures.push_back(where + ": the solid angle gives " + std::to_string(disagreement) + " relative");
   }
   const ReferenceField field{ref.f, ref.grad, 0, 0, false};
   const RelativeErrors e = relative_errors(f, grad, field.f, field.grad);
@@ -242,12 +326,12 @@ std::string judge(const CellKey& key, Cell& cell) {
     return "FAIL";
   }
   if (!(cell.error_f <= open->bound_f) || !(cell.error_grad <= open->bound_grad)) {
-    std::snprintf(text, sizeof text, "above its open-cell bound %.0e / %.0e (%s)", open->bound_f, open->bound_grad,
+    std::snprintf(text, sizeof text, "above its open-cell bound %.1e / %.1e (%s)", open->bound_f, open->bound_grad,
                   open->source);
     cell.failures.emplace_back(text);
     return "FAIL";
   }
-  std::snprintf(text, sizeof text, "open (≤ %.0e / %.0e: %s)", open->bound_f, open->bound_grad, open->source);
+  std::snprintf(text, sizeof text, "open (≤ %.1e / %.1e: %s)", open->bound_f, open->bound_grad, open->source);
   return text;
 }
 
@@ -262,14 +346,17 @@ int main() {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::printf("| primitive | family | region | points (f = 0) | reference bound f | reference bound ∇f "
-              "| error f | error ∇f (component ÷ \\|∇f\\|) | verdict |\n|---|---|---|---|---|---|---|---|---|\n");
+              "| vs independent reference | error f | error ∇f (component ÷ \\|∇f\\|) | verdict |\n"
+              "|---|---|---|---|---|---|---|---|---|---|\n");
   int failures = 0, evaluations = 0;
   for (auto& [key, cell] : cells) {
     const std::string verdict = judge(key, cell);
     evaluations += cell.points + cell.zero_points;
-    std::printf("| %s | %s | %s | %d (%d) | %.1e | %.1e | %.1e | %.1e | %s |\n", std::get<0>(key).c_str(),
+    char independent[32] = "–";
+    if (cell.independent >= 0) std::snprintf(independent, sizeof independent, "%.1e", cell.independent);
+    std::printf("| %s | %s | %s | %d (%d) | %.1e | %.1e | %s | %.1e | %.1e | %s |\n", std::get<0>(key).c_str(),
                 std::string(skelconv::family_name(std::get<1>(key))).c_str(), std::get<2>(key).c_str(), cell.points,
-                cell.zero_points, cell.reference_f, cell.reference_grad, cell.error_f, cell.error_grad,
+                cell.zero_points, cell.reference_f, cell.reference_grad, independent, cell.error_f, cell.error_grad,
                 verdict.c_str());
   }
   for (const auto& [key, cell] : cells)
