@@ -605,6 +605,113 @@ bool edge_pieces(const PolygonData& g, const BallVec& pq, const BallVec& e, cons
   return true;
 }
 
+/// The exact plane and the fan about P̄ (file comment, "Polygons").
+struct PolygonGeometry {
+  BallVec n;                    ///< unit normal
+  BallVec P;                    ///< the point
+  Ball z;                       ///< (P − Q₀)·n
+  std::vector<BallVec> q;       ///< vertices
+  std::vector<BallVec> offset;  ///< Q_m − P̄
+  std::vector<BallVec> edge;    ///< E_m = Q_{m+1} − Q_m
+  std::vector<Ball> sigma;      ///< σ_m = ((Q_m − P̄) × (Q_{m+1} − P̄))·n
+};
+
+PolygonGeometry polygon_geometry(const ExactPolygon& polygon, const Vec3<double>& p, slong prec) {
+  PolygonGeometry geo;
+  const std::size_t count = polygon.vertices.size();
+  geo.n = exact_vector(polygon.normal_direction);
+  Ball length;
+  dot(length, geo.n, geo.n, prec);
+  arb_sqrt(length, length, prec);
+  for (auto& c : geo.n) arb_div(c, c, length, prec);
+  geo.P = exact_vector(p);
+  for (const auto& v : polygon.vertices) geo.q.push_back(exact_vector(v));
+  dot(geo.z, difference(geo.P, geo.q[0], prec), geo.n, prec);
+  BallVec foot;  // P̄ = P − z n
+  for (int c = 0; c < 3; ++c) {
+    arb_mul(foot[c], geo.z, geo.n[c], prec);
+    arb_sub(foot[c], geo.P[c], foot[c], prec);
+  }
+  for (std::size_t m = 0; m < count; ++m) geo.offset.push_back(difference(geo.q[m], foot, prec));
+  geo.sigma.resize(count);
+  for (std::size_t m = 0; m < count; ++m) {
+    const std::size_t next = (m + 1) % count;
+    geo.edge.push_back(difference(geo.q[next], geo.q[m], prec));
+    dot(geo.sigma[m], cross(geo.offset[m], geo.offset[next], prec), geo.n, prec);
+  }
+  return geo;
+}
+
+/// The winding number of the boundary about P̄ (Θ = 2π × it); false, with
+/// `why`, when P̄ may be on an edge or Θ's ball is not around one multiple
+/// of 2π.
+bool winding_number(const PolygonGeometry& geo, long& winding, std::string& why, slong prec) {
+  const std::size_t count = geo.q.size();
+  Ball theta_sum, theta, along;
+  for (std::size_t m = 0; m < count; ++m) {
+    dot(along, geo.offset[m], geo.offset[(m + 1) % count], prec);
+    if (arb_contains_zero(geo.sigma[m]) && !arb_is_positive(along)) {
+      why = "P's foot on the plane is on (or within the balls of) an edge";
+      return false;
+    }
+    arb_atan2(theta, geo.sigma[m], along, prec);  // the angle the edge subtends at P̄
+    arb_add(theta_sum, theta_sum, theta, prec);
+  }
+  Ball two_pi;
+  arb_const_pi(two_pi, prec);
+  arb_mul_2exp_si(two_pi, two_pi, 1);
+  arb_div(theta_sum, theta_sum, two_pi, prec);
+  winding = std::lround(arf_get_d(mid_of(theta_sum), ARF_RND_NEAR));
+  if (!arb_contains_si(theta_sum, winding) || mag_cmp_2exp_si(rad_of(theta_sum), -2) > 0) {
+    why = "the winding number is not decided";
+    return false;
+  }
+  return true;
+}
+
+/// Σ_m σ_m ∫F/ρ², Σ_m σ_m ∫K/ρ² and −Σ_m (E_m × n) ∫K over the edges.
+struct EdgeSums {
+  Ball fan_f, fan_normal;
+  BallVec in_plane;
+  bool any_piece = false;  ///< compact: does the support reach any edge?
+};
+
+bool edge_sums(EdgeSums& sums, const PolygonData& g, const PolygonGeometry& geo, const ExactPolygon& polygon,
+               const Vec3<double>& p, const ArbSettings& settings) {
+  const slong prec = settings.precision_bits;
+  const std::size_t count = geo.q.size();
+  mag_t tol;
+  mag_init(tol);  // 0: every edge integrand is sign-definite, the relative goal decides
+  for (std::size_t m = 0; m < count; ++m) {
+    const BallVec pq = difference(geo.P, geo.q[m], prec);
+    const Vec3<double> e_double = sub(polygon.vertices[(m + 1) % count], polygon.vertices[m]);
+    const Vec3<double> foot_data{verify::dot<double>(e_double, sub(p, polygon.vertices[m])),
+                                 verify::dot<double>(e_double, e_double), 0};
+    std::vector<Interval> pieces;
+    if (!edge_pieces(g, pq, geo.edge[m], foot_data, pieces, prec)) {
+      mag_clear(tol);
+      return false;
+    }
+    sums.any_piece = sums.any_piece || !pieces.empty();
+    using Part = PolygonEdgeIntegrand::Part;
+    const PolygonEdgeIntegrand f_part(g, geo.offset[m], geo.edge[m], Part::fan_f);
+    const PolygonEdgeIntegrand normal_part(g, geo.offset[m], geo.edge[m], Part::fan_normal);
+    const PolygonEdgeIntegrand k_part(g, geo.offset[m], geo.edge[m], Part::edge_k);
+    Ball f_edge, normal_edge, k_edge;
+    for (const auto& [lo, hi] : pieces) {
+      add_integral(f_edge, f_part, lo, hi, tol, settings);
+      add_integral(normal_edge, normal_part, lo, hi, tol, settings);
+      add_integral(k_edge, k_part, lo, hi, tol, settings);
+    }
+    arb_addmul(sums.fan_f, geo.sigma[m], f_edge, prec);
+    arb_addmul(sums.fan_normal, geo.sigma[m], normal_edge, prec);
+    const BallVec outward = cross(geo.edge[m], geo.n, prec);  // E × n
+    for (int c = 0; c < 3; ++c) arb_submul(sums.in_plane[c], outward[c], k_edge, prec);
+  }
+  mag_clear(tol);
+  return true;
+}
+
 }  // namespace
 
 CertifiedField certified_polygon_field(const ExactPolygon& polygon, const Vec3<double>& p, KernelFamily family,
@@ -614,113 +721,47 @@ CertifiedField certified_polygon_field(const ExactPolygon& polygon, const Vec3<d
     return refused("family not covered by the certified reference");
   if (family == KernelFamily::compact ? (degree < 2 || degree % 2 != 0) : degree < 3)
     return refused("degree not covered (compact: even ≥ 2; others ≥ 3)");
-  const std::size_t count = polygon.vertices.size();
   PolygonData g;
   g.family = family;
   g.degree = degree;
   arb_set_d(g.s, s);
   arb_set_d(g.R2, R);
   arb_sqr(g.R2, g.R2, prec);
-
-  // Unit normal, height, foot.
-  BallVec n = exact_vector(polygon.normal_direction);
-  Ball length, z;
-  dot(length, n, n, prec);
-  arb_sqrt(length, length, prec);
-  for (auto& c : n) arb_div(c, c, length, prec);
-  const BallVec P = exact_vector(p);
-  std::vector<BallVec> q;
-  for (const auto& v : polygon.vertices) q.push_back(exact_vector(v));
-  dot(z, difference(P, q[0], prec), n, prec);
-  arb_sqr(g.z2, z, prec);
-  BallVec foot;
-  for (int c = 0; c < 3; ++c) {
-    arb_mul(foot[c], z, n[c], prec);
-    arb_sub(foot[c], P[c], foot[c], prec);
-  }
+  const PolygonGeometry geo = polygon_geometry(polygon, p, prec);
+  arb_sqr(g.z2, geo.z, prec);
   if (family == KernelFamily::compact) {
     if (arb_ge(g.z2, g.R2)) return exactly_zero();
     if (!arb_lt(g.z2, g.R2)) return refused("|z| = R within the balls");
   }
-
-  // Fan data per edge and the winding angle Θ.
-  std::vector<BallVec> offset(count), edge(count);
-  std::vector<Ball> sigma(count);
-  for (std::size_t m = 0; m < count; ++m) offset[m] = difference(q[m], foot, prec);
-  Ball theta_sum, theta, along;
-  for (std::size_t m = 0; m < count; ++m) {
-    const std::size_t next = (m + 1) % count;
-    edge[m] = difference(q[next], q[m], prec);
-    dot(sigma[m], cross(offset[m], offset[next], prec), n, prec);
-    dot(along, offset[m], offset[next], prec);
-    if (arb_contains_zero(sigma[m]) && !arb_is_positive(along))
-      return refused("P's foot on the plane is on (or within the balls of) an edge");
-    arb_atan2(theta, sigma[m], along, prec);
-    arb_add(theta_sum, theta_sum, theta, prec);
-  }
-  Ball turns, two_pi;
-  arb_const_pi(two_pi, prec);
-  arb_mul_2exp_si(two_pi, two_pi, 1);
-  arb_div(turns, theta_sum, two_pi, prec);
-  const double winding = std::round(arf_get_d(mid_of(turns), ARF_RND_NEAR));
-  if (!arb_contains_si(turns, static_cast<slong>(winding)) || mag_cmp_2exp_si(rad_of(turns), -2) > 0)
-    return refused("the winding number is not decided");
-  arb_mul_si(theta_sum, two_pi, static_cast<slong>(winding), prec);  // Θ exactly
-  if (winding != 0 && family == KernelFamily::inverse && arb_contains_zero(z))
+  long winding = 0;
+  std::string why;
+  if (!winding_number(geo, winding, why, prec)) return refused(why);
+  if (winding != 0 && family == KernelFamily::inverse && arb_contains_zero(geo.z))
     return refused("P in the closed polygon: the inverse field is infinite");
-
-  // Edge integrals.
-  Ball fan_f, fan_normal, term, edge_k;
-  BallVec in_plane;
-  bool any_piece = false;  // compact: does the support reach an edge at all?
-  mag_t tol;
-  mag_init(tol);  // 0: every edge integrand is sign-definite, the relative goal decides
-  for (std::size_t m = 0; m < count; ++m) {
-    const BallVec pq = difference(P, q[m], prec);
-    const Vec3<double> e_double = sub(polygon.vertices[(m + 1) % count], polygon.vertices[m]);
-    const Vec3<double> foot_data{dot(e_double, sub(p, polygon.vertices[m])), dot(e_double, e_double), 0};
-    std::vector<Interval> pieces;
-    if (!edge_pieces(g, pq, edge[m], foot_data, pieces, prec)) {
-      mag_clear(tol);
-      return refused("an edge's crossing with the support sphere is not separated from its ends");
-    }
-    any_piece = any_piece || !pieces.empty();
-    using Part = PolygonEdgeIntegrand::Part;
-    const PolygonEdgeIntegrand f_part(g, offset[m], edge[m], Part::fan_f);
-    const PolygonEdgeIntegrand normal_part(g, offset[m], edge[m], Part::fan_normal);
-    const PolygonEdgeIntegrand k_part(g, offset[m], edge[m], Part::edge_k);
-    Ball f_edge, normal_edge;
-    arb_zero(edge_k);
-    for (const auto& [lo, hi] : pieces) {
-      add_integral(f_edge, f_part, lo, hi, tol, settings);
-      add_integral(normal_edge, normal_part, lo, hi, tol, settings);
-      add_integral(edge_k, k_part, lo, hi, tol, settings);
-    }
-    arb_addmul(fan_f, sigma[m], f_edge, prec);
-    arb_addmul(fan_normal, sigma[m], normal_edge, prec);
-    const BallVec outward = cross(edge[m], n, prec);  // E × n
-    for (int c = 0; c < 3; ++c) arb_submul(in_plane[c], outward[c], edge_k, prec);
-  }
-  mag_clear(tol);
+  EdgeSums sums;
+  if (!edge_sums(sums, g, geo, polygon, p, settings))
+    return refused("an edge's crossing with the support sphere is not separated from its ends");
   // No edge reaches into the support and P̄ is outside: the support disc
   // misses Ω, f = 0 and ∇f = 0 exactly.
-  if (!any_piece && winding == 0) return exactly_zero();
+  if (!sums.any_piece && winding == 0) return exactly_zero();
 
   // f = Σ σ ∫F/ρ² − Θ F(z²); ∂f/∂z = z (Σ σ ∫K/ρ² − Θ K(z²)); ∇f = n ∂f/∂z + in-plane part.
-  Ball f, dfdz;
-  arb_set(f, fan_f);
-  arb_set(dfdz, fan_normal);
+  Ball f, dfdz, theta, term;
+  arb_set(f, sums.fan_f);
+  arb_set(dfdz, sums.fan_normal);
   if (winding != 0) {
+    arb_const_pi(theta, prec);
+    arb_mul_si(theta, theta, 2 * winding, prec);  // Θ, exactly 2π × winding
     kernel_at_height(term, g, true, prec);
-    arb_submul(f, theta_sum, term, prec);
+    arb_submul(f, theta, term, prec);
     kernel_at_height(term, g, false, prec);
-    arb_submul(dfdz, theta_sum, term, prec);
+    arb_submul(dfdz, theta, term, prec);
   }
-  arb_mul(dfdz, dfdz, z, prec);
+  arb_mul(dfdz, dfdz, geo.z, prec);
   BallVec grad;
   for (int c = 0; c < 3; ++c) {
-    arb_mul(grad[c], n[c], dfdz, prec);
-    arb_add(grad[c], grad[c], in_plane[c], prec);
+    arb_mul(grad[c], geo.n[c], dfdz, prec);
+    arb_add(grad[c], grad[c], sums.in_plane[c], prec);
   }
   return make_result(f, grad);
 }
