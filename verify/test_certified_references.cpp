@@ -41,6 +41,8 @@
 #include <tuple>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "arb_reference.hpp"
 #include "point_evaluation.hpp"
 #include "polygon_sampling.hpp"
@@ -55,8 +57,12 @@ using namespace skelconv::verify;
 
 constexpr std::uint64_t segment_seed = 20240601;  // the segment sweep's default seed
 constexpr std::uint64_t polygon_seed = 20261122;  // the polygon sweep's default seed
-constexpr int segment_points = 8;                 // per (family, degree, region)
-constexpr int polygon_points = 4;                 // per (family, region), each at every degree
+/// Samples per cell in ctest (a longer set on request: --segment-points,
+/// --polygon-points).
+struct SpotCheckSize {
+  int segment_points = 8;  ///< per (family, degree, region)
+  int polygon_points = 4;  ///< per (family, region), each at every degree
+};
 
 /// Issue 16's final targets (item 5): f relative, each ∇f component ÷ |∇f|.
 constexpr double final_target_f = 1e-13;
@@ -197,7 +203,7 @@ void check_segment(const SweepProblem& pb, Cell& cell) {
   cell.error_grad = std::max(cell.error_grad, e.grad_component);
 }
 
-void run_segments(std::map<CellKey, Cell>& cells) {
+void run_segments(std::map<CellKey, Cell>& cells, int segment_points) {
   for (KernelFamily family : families)
     for (int degree : degrees_of(family))
       for (Region region : all_regions) {
@@ -287,7 +293,7 @@ void check_polygon(const PolygonProblem& pb, const Vec3<double>& exact_normal, i
   cell.error_grad = std::max(cell.error_grad, e.grad_component);
 }
 
-void run_polygons(std::map<CellKey, Cell>& cells) {
+void run_polygons(std::map<CellKey, Cell>& cells, int polygon_points) {
   for (KernelFamily family : families)
     for (PolygonRegion region : all_polygon_regions) {
       if (!polygon_region_applies(region, family)) continue;
@@ -337,12 +343,21 @@ std::string judge(const CellKey& key, Cell& cell) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  CLI::App app{"verify_certified_references: the generated code against Arb-certified references of the definition"};
+  SpotCheckSize size;
+  app.add_option("--segment-points", size.segment_points, "samples per segment (family, degree, region)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--polygon-points", size.polygon_points, "samples per polygon (family, region), each at every degree")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  CLI11_PARSE(app, argc, argv);
   const auto start = std::chrono::steady_clock::now();
   std::map<CellKey, Cell> cells;
-  run_segments(cells);
+  run_segments(cells, size.segment_points);
   const double segment_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run_polygons(cells);
+  run_polygons(cells, size.polygon_points);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::printf("| primitive | family | region | points (f = 0) | reference bound f | reference bound ∇f "
