@@ -118,31 +118,62 @@ inline double distance_to_outline(const std::vector<std::array<double, 2>>& poly
 
 }  // namespace detail
 
-/// The sample `index` of (family, region) for `seed`.
-inline PolygonProblem draw_polygon_problem(std::uint64_t seed, KernelFamily family, PolygonRegion region,
-                                           std::uint64_t index) {
+/// Where a sample's outline is placed: vertex = origin + step·(x·u + y·v),
+/// points off the plane + step·z·w, with u, v, w orthogonal of equal length
+/// `length`; the unit normal is w / length. The sweep's frame has unit
+/// u, v, w drawn at random (step = the scale); the exact frame of the
+/// certified spot checks (test_certified_references.cpp) has integer u, v, w
+/// and a power-of-two step, so that its vertices are exactly coplanar doubles.
+struct PolygonFrame {
+  Vec3<double> origin{}, u{}, v{}, w{};
+  double step = 1;
+  double length = 1;  ///< |u| = |v| = |w|
+  /// Outline coordinates are rounded to multiples of this (0: not rounded),
+  /// so that x·u + y·v is exact.
+  double grid = 0;
+};
+
+/// The sweep's frame: a random orthonormal (e1, e2, n), a scale giving a
+/// diameter of 0.5–2, an origin in [−1, 1]³ (`outline_diameter`: the
+/// outline's own diameter).
+inline PolygonFrame random_polygon_frame(DeterministicRandom& rng, double outline_diameter) {
+  PolygonFrame frame;
+  const Vec3<double> n = rng.unit_vector();
+  const Vec3<double> e1 = rng.unit_perpendicular(n);
+  frame.u = e1;
+  frame.v = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+  frame.w = n;
+  frame.step = rng.log_uniform(0.5, 2.0) / outline_diameter;
+  frame.origin = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+  return frame;
+}
+
+/// The sample `index` of (family, region) for `seed`, its outline placed by
+/// `make_frame(rng, outline_diameter)` (the sweep: random_polygon_frame).
+template <class MakeFrame>
+PolygonProblem draw_polygon_problem(std::uint64_t seed, KernelFamily family, PolygonRegion region, std::uint64_t index,
+                                    MakeFrame make_frame) {
   DeterministicRandom rng(point_seed(seed ^ 0x706f6c79676f6eULL, family, 0, static_cast<Region>(region), index));
   PolygonProblem pb;
   pb.family = family;
   pb.region = region;
   pb.index = index;
-  const auto outline = detail::polygon_outline(static_cast<int>(index % 4), rng);
+  auto outline = detail::polygon_outline(static_cast<int>(index % 4), rng);
   double diameter = 0;
   for (const auto& u : outline)
     for (const auto& v : outline) diameter = std::max(diameter, std::hypot(u[0] - v[0], u[1] - v[1]));
-  // A random frame (e1, e2, n), scale and origin.
-  const Vec3<double> n = rng.unit_vector();
-  const Vec3<double> e1 = rng.unit_perpendicular(n);
-  const Vec3<double> e2 = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
-  const double scale = rng.log_uniform(0.5, 2.0) / diameter;
-  const Vec3<double> origin = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+  const PolygonFrame frame = make_frame(rng, diameter);
+  if (frame.grid > 0)
+    for (auto& u : outline) u = {std::round(u[0] / frame.grid) * frame.grid, std::round(u[1] / frame.grid) * frame.grid};
+  const double scale = frame.step * frame.length;  // outline units → distance
   auto place = [&](double x, double y, double z) {
-    return Vec3<double>{origin[0] + scale * (x * e1[0] + y * e2[0] + z * n[0]),
-                        origin[1] + scale * (x * e1[1] + y * e2[1] + z * n[1]),
-                        origin[2] + scale * (x * e1[2] + y * e2[2] + z * n[2])};
+    const Vec3<double>&o = frame.origin, &u = frame.u, &v = frame.v, &w = frame.w;
+    return Vec3<double>{o[0] + frame.step * (x * u[0] + y * v[0] + z * w[0]),
+                        o[1] + frame.step * (x * u[1] + y * v[1] + z * w[1]),
+                        o[2] + frame.step * (x * u[2] + y * v[2] + z * w[2])};
   };
   for (const auto& u : outline) pb.vertices.push_back(place(u[0], u[1], 0));
-  pb.normal = n;
+  pb.normal = {frame.w[0] / frame.length, frame.w[1] / frame.length, frame.w[2] / frame.length};
   pb.diameter = scale * diameter;
   // Kernel parameters relative to the polygon's size.
   pb.s = rng.log_uniform(0.1, 10) / (pb.diameter * pb.diameter);
@@ -202,6 +233,10 @@ inline PolygonProblem draw_polygon_problem(std::uint64_t seed, KernelFamily fami
       break;
     }
   }
+  if (frame.grid > 0) {  // so that z = 0 is exactly in the plane
+    bx = std::round(bx / frame.grid) * frame.grid;
+    by = std::round(by / frame.grid) * frame.grid;
+  }
   pb.p = place(bx, by, bz);
   if (region == PolygonRegion::generic) {
     // Compact kernels: a support ball reaching well into the polygon (1.5–4
@@ -222,6 +257,12 @@ inline PolygonProblem draw_polygon_problem(std::uint64_t seed, KernelFamily fami
     pb.R = rng.uniform(near, far);
   }
   return pb;
+}
+
+/// The sweep's sample `index` of (family, region) for `seed`.
+inline PolygonProblem draw_polygon_problem(std::uint64_t seed, KernelFamily family, PolygonRegion region,
+                                           std::uint64_t index) {
+  return draw_polygon_problem(seed, family, region, index, random_polygon_frame);
 }
 
 }  // namespace skelconv::verify
