@@ -214,5 +214,33 @@ TEST(Fit, RadiiAndEndsOnACylinder) {
   EXPECT_LT(report.largest_tip_change, 0.01);
 }
 
+// The same branch 0.08 off the axis (y = 0.064, z = −0.048) at radius 0.4:
+// the fit moves the tube sections onto the axis (the first harmonic of the
+// ray distances; a circle seen from c* + e is R − e·u along u). 0.08 keeps
+// the sections tube-like (ray distances 0.42 to 0.58, within the ratio
+// 1.5). The middle point ends within 0.01 of the axis, and the surface is
+// on all four sides within 3% of the radius.
+TEST(Fit, CentresMoveOntoTheAxis) {
+  Branch b;
+  b.first_node = 0, b.last_node = 1;
+  for (int k = 0; k <= 12; ++k) b.points.push_back(Vec4(-1.5 + 0.25 * k, 0.064, -0.048, 0.4));
+  const ReconstructOptions o;
+  const BranchField field_of = [&o](const std::vector<Branch>& branches) {
+    Stage s;
+    s.branches = branches;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+  const std::vector<Branch> fitted =
+      fit_to_surface(extend_free_ends({b}, 1.0), SurfaceQuery(cylinder()), field_of, FitOptions{});
+  const Vec4& middle = fitted[0].points[7];  // x = 0 (index 6 + the extension point)
+  EXPECT_NEAR(middle.x(), 0.0, 1e-3);  // rays are normal to the branch: (almost) no move along it
+  EXPECT_LT(middle.head<3>().tail<2>().norm(), 0.01) << middle.transpose();
+  const Skeleton skeleton = field_of(fitted);
+  for (const Vec3& u : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)}) {
+    EXPECT_GT(skeleton.value(0.485 * u), 1.0) << u.transpose();
+    EXPECT_LT(skeleton.value(0.515 * u), 1.0) << u.transpose();
+  }
+}
+
 }  // namespace
 }  // namespace skelconv::reconstruct

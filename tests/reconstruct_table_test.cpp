@@ -16,6 +16,7 @@
 #include "skelconv/mesh/mesh_reader.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/sample_noise.hpp"
+#include "skelconv/reconstruct/skeleton_comparison.hpp"
 #include "skelconv/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
@@ -25,12 +26,16 @@ const std::filesystem::path data = std::filesystem::path(SKELCONV_TEST_DATA) / "
 
 /// The stored mesh, or (the tree: 63 k triangles, not stored) the mesh of
 /// NAME.json as `skelconv mesh NAME.json --size 0.1 --distance 0.02` makes it.
-TriangleMesh shape_mesh(const std::string& name) {
-  if (std::filesystem::exists(data / (name + ".ply"))) return read_mesh(data / (name + ".ply"));
+Skeleton known_skeleton(const std::string& name) {
   std::ifstream in(data / (name + ".json"));
   std::stringstream text;
   text << in.rdbuf();
-  const Skeleton skeleton = parse_skeleton_json(text.str());
+  return parse_skeleton_json(text.str());
+}
+
+TriangleMesh shape_mesh(const std::string& name) {
+  if (std::filesystem::exists(data / (name + ".ply"))) return read_mesh(data / (name + ".ply"));
+  const Skeleton skeleton = known_skeleton(name);
   MeshOptions options;
   options.iso = skeleton.iso();
   options.size = 0.1;
@@ -50,6 +55,18 @@ TEST_P(Table, CountsAndDistances) {
   const TriangleMesh input = shape_mesh(known.name);
   const ReconstructOptions options;
   const Reconstruction r = reconstruct(with_sample_noise(input, noise), options);
+  // Against the known skeleton (skeleton_comparison.hpp), % of the diagonal.
+  const std::vector<KnownSegment> known_skeleton_segments = known_segments(known_skeleton(known.name));
+  Vec3 lo = input.vertices.front(), hi = lo;
+  for (const Vec3& v : input.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double diagonal = (hi - lo).norm();
+  const auto pct = [diagonal](double x) { return 100 * x / diagonal; };
+  for (const Stage& stage : {r.stages[1], r.stages.back()}) {
+    const SkeletonComparison c = compare_with_known(stage.branches, known_skeleton_segments, 1e-9 * diagonal);
+    std::printf("| %s | %g | %s | %zu/%zu | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f |\n", known.name, noise,
+                stage.name.c_str(), c.junction.count, c.known_junctions, pct(c.junction.max), pct(c.junction.mean),
+                pct(c.axis.max), pct(c.axis.mean), pct(c.radius.max), pct(c.radius.mean));
+  }
   for (const Stage& stage : r.stages) {
     const SurfaceDistance d = measure_stage(input, stage, options);
     std::printf("| %s | %g | %zu | %s | %zu/%zu/%zu | %zu | %.2f | %.2f |\n", known.name, noise, r.samples,

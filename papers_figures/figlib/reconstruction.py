@@ -86,7 +86,10 @@ def draw_shape(ctx, figure, name, known, plane, mesh_args=(), noise=0.0):
         ax.plot([a[u], b[u]], [a[v], b[v]], color=plot.SCALIS, lw=1.6, label="recovered (fitted)" if k == 0 else None)
     axis = "xyz"
     ax.set_xlabel(axis[u]), ax.set_ylabel(axis[v]), ax.set_aspect("equal")
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.28), ncol=3, fontsize=7)
+    # At the figure's foot, below every x label (an axes-anchored legend
+    # overlapped the x label of a flat shape such as the segment).
+    handles, labels = ax.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower left", bbox_to_anchor=(0.01, 0.0), ncol=3, fontsize=7, frameon=False)
     ax.set_title(f"{name}: {counts['fitted'][0]} branches / {counts['fitted'][1]} ends / "
                  f"{counts['fitted'][2]} junctions" + (f" (noise {noise})" if noise else ""))
     ax = axes[1]

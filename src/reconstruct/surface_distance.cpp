@@ -10,6 +10,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "skelconv/errors.hpp"
@@ -31,6 +32,15 @@ SurfaceMesh to_surface_mesh(const TriangleMesh& surface) {
   return mesh;
 }
 
+/// PMP's sampling: `density` random points per unit area, plus the
+/// vertices and points on the edges. random_seed(0) seeds only the choice
+/// of triangles; the point inside a triangle and the edge points are drawn
+/// from CGAL's default generator, which is seeded by the clock (two runs
+/// gave 0.714 and 0.718). reseed() fixes that one before every sampling,
+/// as src/mesh/cgal_surface_mesher.cpp does for Mesh_3.
+auto sampling(double density) { return CGAL::parameters::number_of_points_per_area_unit(density).random_seed(0); }
+void reseed() { CGAL::get_default_random() = CGAL::Random(0); }
+
 /// Sum of squared distances from samples of `from` to `to`, and their count.
 std::pair<double, std::size_t> squared_distances(const SurfaceMesh& from, const SurfaceMesh& to, double density) {
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>;
@@ -38,8 +48,8 @@ std::pair<double, std::size_t> squared_distances(const SurfaceMesh& from, const 
   Tree tree(faces(to).first, faces(to).second, to);
   tree.accelerate_distance_queries();
   std::vector<Point> samples;
-  PMP::sample_triangle_mesh(from, std::back_inserter(samples),
-                            CGAL::parameters::number_of_points_per_area_unit(density).random_seed(0));
+  reseed();
+  PMP::sample_triangle_mesh(from, std::back_inserter(samples), sampling(density));
   double sum = 0.0;
   for (const Point& p : samples) sum += tree.squared_distance(p);
   return {sum, samples.size()};
@@ -54,8 +64,10 @@ SurfaceDistance surface_distance(const TriangleMesh& a, const TriangleMesh& b, d
   SurfaceDistance result;
   result.diagonal = (hi - lo).norm();
   const double density = samples_per_area / (result.diagonal * result.diagonal);
-  const auto options = CGAL::parameters::number_of_points_per_area_unit(density).random_seed(0);
+  const auto options = sampling(density);
+  reseed();
   const double ab = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(ma, mb, options);
+  reseed();
   const double ba = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(mb, ma, options);
   result.hausdorff = std::max(ab, ba);
   const auto [sum_ab, n_ab] = squared_distances(ma, mb, density);

@@ -100,44 +100,25 @@ Targets measure_input(const std::vector<Branch>& branches, const SurfaceQuery& i
   return t;
 }
 
-/// Recentres the points whose cross-section is tube-like (every ray hits,
-/// the farthest within `tube_ratio` × the nearest): for a circle of radius
-/// R seen from c = c* + e, the ray along u meets it at R − e·u, so
-/// Σ d_k u_k = −(K/2) e over K evenly spread rays, and c* = c + (2/K) Σ d_k u_k.
-/// Smoothing moves the axis inwards on bends (a B-spline cuts corners);
-/// this puts it back. Returns how many points moved.
-std::size_t recentre(std::vector<Branch>& branches, const Targets& t, double tube_ratio) {
-  std::size_t moved = 0;
-  for (std::size_t bi = 0; bi < branches.size(); ++bi) {
-    for (std::size_t i = 0; i < branches[bi].points.size(); ++i) {
-      const auto& d = t.distances[bi][i];
-      if (d.empty()) continue;
-      const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
-      if (*lo < 0.0 || *hi > tube_ratio * *lo) continue;
-      Vec3 shift = Vec3::Zero();
-      for (std::size_t k = 0; k < d.size(); ++k) shift += d[k] * t.rays[bi][i][k];
-      branches[bi].points[i].head<3>() += (2.0 / double(d.size())) * shift;
-      ++moved;
-    }
-  }
-  return moved;
-}
-
 bool is_extension(const Branch& b, std::size_t i) {
   return (i == 0 && b.extended_first) || (i + 1 == b.points.size() && b.extended_last);
 }
 
-/// The points of `b` within their own radius (arc length) of a free end:
-/// their normal rays meet the cap or feel the end's falloff, so their
-/// radius is not fitted but copied from the first point past that zone.
-/// Returns per point the index to copy from (itself if fitted).
-std::vector<std::size_t> radius_sources(const Branch& b) {
+/// The points of `b` within their own radius (arc length) of a free end
+/// or of a junction: at a free end their normal rays meet the cap or feel
+/// the end's falloff; at a junction they run down the other branches, and
+/// the radius fitted there runs away (measured on the tree: 1.2 for a
+/// known 0.19, with the next points shrunk to 0.05 to make up). Their
+/// radius is not fitted but copied from the first point past that zone;
+/// a junction's bulge is the sum blend's. `uses` counts the branch ends at
+/// each node. Returns per point the index to copy from (itself if fitted).
+std::vector<std::size_t> radius_sources(const Branch& b, const std::map<std::int32_t, int>& uses) {
   const std::size_t n = b.points.size();
   std::vector<std::size_t> source(n);
   for (std::size_t i = 0; i < n; ++i) source[i] = i;
-  const auto walk = [&](bool from_front) {
+  // start: the first point of the zone (1 after an extension point).
+  const auto walk = [&](bool from_front, std::size_t start) {
     const auto at = [&](std::size_t k) -> std::size_t { return from_front ? k : n - 1 - k; };
-    const std::size_t start = 1;  // index 0 is the extension point
     double arc = 0.0;
     std::size_t k = start;
     std::vector<std::size_t> zone;
@@ -148,40 +129,100 @@ std::vector<std::size_t> radius_sources(const Branch& b) {
     }
     for (std::size_t z : zone) source[z] = at(k);
   };
-  if (b.extended_first && n > 3) walk(true);
-  if (b.extended_last && n > 3) walk(false);
+  if (n <= 3) return source;
+  if (b.extended_first) walk(true, 1);
+  else if (uses.at(b.first_node) >= 3) walk(true, 0);
+  if (b.extended_last) walk(false, 1);
+  else if (uses.at(b.last_node) >= 3) walk(false, 0);
   return source;
 }
 
-/// One Jacobi round over the radii; returns the largest relative change.
-double update_radii(std::vector<Branch>& branches, const Targets& targets, const ImplicitField& field, double iso,
-                    const FitOptions& o) {
+/// True when every ray of a cross-section meets the input, the farthest
+/// within `tube_ratio` × the nearest: a tube, not a junction (where rays run
+/// down other branches) nor a cap.
+bool is_tube_section(const std::vector<double>& input_distances, double tube_ratio) {
+  if (input_distances.empty()) return false;
+  const auto [lo, hi] = std::minmax_element(input_distances.begin(), input_distances.end());
+  return *lo > 0.0 && *hi <= tube_ratio * *lo;
+}
+
+/// How one point should change: its radius × `factor`, its centre + `shift`.
+struct PointUpdate {
+  double factor = 1.0;
+  Vec3 shift = Vec3::Zero();
+  bool informed = false;  ///< false: no usable crossing, the point stays
+};
+
+/// The update of one point from its rays' input distances `target` and the
+/// reconstructed surface's `current` ones (0: the centre is outside it).
+/// A tube section is fitted in its two lowest harmonics: the radius by the
+/// ratio of the mean distances, the centre by the first harmonic of the
+/// difference (moving the skeleton by e moves the surface by about e, so
+/// the ray along u_k crosses it e·u_k farther; over K evenly spread rays
+/// Σ (e·u_k) u_k = (K/2) e, hence e = (2/K) Σ (target_k − current_k) u_k).
+/// Elsewhere only the radius, by the ratio of the nearest crossings.
+PointUpdate point_update(const std::vector<Vec3>& rays, const std::vector<double>& target,
+                         const std::vector<double>& current, double radius, const FitOptions& o) {
+  PointUpdate u;
+  if (is_tube_section(target, o.tube_ratio) &&
+      std::all_of(current.begin(), current.end(), [](double d) { return d > 0.0; })) {
+    double sum_target = 0.0, sum_current = 0.0;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      sum_target += target[k], sum_current += current[k];
+      u.shift += (target[k] - current[k]) * rays[k];
+    }
+    u.shift *= 2.0 / double(rays.size());
+    if (u.shift.norm() > o.largest_shift * radius) u.shift *= o.largest_shift * radius / u.shift.norm();
+    u.factor = sum_target / sum_current;
+    u.informed = true;
+  } else {
+    double nearest_target = INFINITY, nearest_current = INFINITY;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      if (target[k] < 0.0) continue;
+      nearest_target = std::min(nearest_target, target[k]);
+      nearest_current = std::min(nearest_current, current[k]);
+    }
+    // No input crossing, or the centre is outside the current surface (a
+    // larger radius would not bring it in: SCALIS fields fall as 1/τ near a
+    // short skeleton): no information, the point stays.
+    if (!std::isfinite(nearest_target) || !(nearest_current > 0.0)) return u;
+    u.factor = nearest_target / nearest_current;
+    u.informed = true;
+  }
+  u.factor = std::clamp(u.factor, 1.0 / o.largest_step, o.largest_step);
+  return u;
+}
+
+/// One Jacobi round over the points (radii, and centres of tube sections);
+/// returns the largest relative change of a radius.
+double update_points(std::vector<Branch>& branches, const Targets& targets, const ImplicitField& field, double iso,
+                     const FitOptions& o) {
   std::vector<Branch> updated = branches;
+  const auto uses = end_uses(branches);
   double largest = 0.0;
   for (std::size_t bi = 0; bi < branches.size(); ++bi) {
     const Branch& b = branches[bi];
-    const std::vector<std::size_t> source = radius_sources(b);
+    const std::vector<std::size_t> source = radius_sources(b, uses);
     for (std::size_t i = 0; i < b.points.size(); ++i) {
       if (is_extension(b, i) || source[i] != i) continue;
-      double target = INFINITY, current = INFINITY;
-      for (std::size_t k = 0; k < targets.rays[bi][i].size(); ++k) {
-        const double d = targets.distances[bi][i][k];
-        if (d < 0.0) continue;
-        target = std::min(target, d);
-        current = std::min(current, crossing(field, iso, b.points[i].head<3>(), targets.rays[bi][i][k],
-                                             0.25 * b.points[i].w(), 4.0 * d, o.bisection_steps));
+      const auto& rays = targets.rays[bi][i];
+      const auto& target = targets.distances[bi][i];
+      std::vector<double> current(rays.size(), 0.0);
+      for (std::size_t k = 0; k < rays.size(); ++k) {
+        if (target[k] >= 0.0) current[k] = crossing(field, iso, b.points[i].head<3>(), rays[k], 0.25 * b.points[i].w(),
+                                                    4.0 * target[k], o.bisection_steps);
       }
-      // No input crossing, or the centre is outside the current surface
-      // (a larger radius would not bring it in: SCALIS fields fall as 1/τ
-      // near a short skeleton): no information, the radius stays.
-      if (!std::isfinite(target) || !(current > 0.0)) continue;
-      const double factor = std::clamp(target / current, 1.0 / o.largest_step, o.largest_step);
-      updated[bi].points[i].w() *= factor;
-      largest = std::max(largest, std::abs(factor - 1.0));
+      const PointUpdate u = point_update(rays, target, current, b.points[i].w(), o);
+      if (!u.informed) continue;
+      updated[bi].points[i].w() *= u.factor;
+      updated[bi].points[i].head<3>() += u.shift;
+      largest = std::max(largest, std::abs(u.factor - 1.0));
     }
     for (std::size_t i = 0; i < b.points.size(); ++i) {
       if (source[i] != i) updated[bi].points[i].w() = updated[bi].points[source[i]].w();
     }
+    // The closing point of a closed branch is its first point again.
+    if (is_closed(b) && b.points.size() > 1) updated[bi].points.back() = updated[bi].points.front();
   }
   branches = std::move(updated);
   return largest;
@@ -252,18 +293,14 @@ std::vector<Branch> extend_free_ends(std::vector<Branch> branches, double factor
 
 std::vector<Branch> fit_to_surface(std::vector<Branch> branches, const SurfaceQuery& input, const BranchField& field_of,
                                    const FitOptions& o, FitReport* report) {
-  if (recentre(branches, measure_input(branches, input, o.directions), o.tube_ratio) > 0) {
-    // The closing point of a closed branch is its first point again.
-    for (Branch& b : branches) {
-      if (b.first_node == b.last_node && b.points.size() > 1) b.points.back() = b.points.front();
-    }
-  }
-  const Targets targets = measure_input(branches, input, o.directions);
   FitReport r;
   for (int round = 0; round < o.iterations; ++round) {
     {
+      // The input is measured again each round: the rays leave from the
+      // moved centres.
+      const Targets targets = measure_input(branches, input, o.directions);
       const Skeleton skeleton = field_of(branches);
-      r.largest_radius_change = update_radii(branches, targets, skeleton_field(skeleton), skeleton.iso(), o);
+      r.largest_radius_change = update_points(branches, targets, skeleton_field(skeleton), skeleton.iso(), o);
     }
     const Skeleton skeleton = field_of(branches);
     r.largest_tip_change = update_extensions(branches, input, skeleton_field(skeleton), skeleton.iso(), o);

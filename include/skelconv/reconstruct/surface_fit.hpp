@@ -15,16 +15,20 @@
 //      tangent; fit_to_surface moves it until the reconstructed surface
 //      reaches the input's tip on that line (the branch extension of the
 //      issue; Zanni et al. §5.1 add point primitives instead).
-//   3. Centres. A B-spline cuts corners (a ring shrinks): points whose
-//      cross-section is a tube are recentred from the same rays first.
-//   4. Radii. An empty Voronoi ball of a polyhedral sampling is a little
-//      smaller than the tube, a finite SCALIS segment is thinner than a long
-//      one, and the sum blend bulges where branches meet. fit_to_surface
-//      rescales each point's radius by (input distance / reconstructed
-//      distance), both measured along the same rays in the plane normal to
-//      the branch (the nearer crossing of `directions` rays). A SCALIS
-//      surface is homothetic in its radii, so a uniform error is corrected
-//      in one step; a few steps settle the rest.
+//   3. Radii and centres. An empty Voronoi ball of a polyhedral sampling is
+//      a little smaller than the tube, a finite SCALIS segment is thinner
+//      than a long one, the sum blend bulges where branches meet, a
+//      B-spline cuts corners (a ring shrinks), and a curved tube's section
+//      is not a circle (a ring's field is stronger inside it). Each round,
+//      fit_to_surface casts `directions` rays from every point in the plane
+//      normal to the branch, to the input and to the reconstructed surface.
+//      In a tube section (every ray meets the input, within `tube_ratio` of
+//      each other) the radius is rescaled by (mean input distance / mean
+//      reconstructed distance) and the centre moved by the first harmonic
+//      of their difference; elsewhere (junctions, near caps) only the
+//      radius, by the ratio of the nearest crossings. A SCALIS surface is
+//      homothetic in its radii, so a uniform error is corrected in one
+//      step; a few steps settle the rest.
 #pragma once
 
 #include <functional>
@@ -55,10 +59,12 @@ struct FitOptions {
   /// recovers over a few rounds instead of jumping.
   double largest_step = 2.0;
   int bisection_steps = 30;  ///< crossing of the reconstructed surface
-  /// Before fitting, a point is recentred in its cross-section when all its
-  /// rays meet the input within this ratio of each other (a tube, not a
-  /// junction where rays run down other branches, nor a cap).
+  /// A point is a tube section when all its rays meet the input within this
+  /// ratio of each other (not a junction, where rays run down other
+  /// branches, nor a cap); its centre is fitted too, not only its radius.
   double tube_ratio = 1.5;
+  /// One round moves a centre by at most this × its radius.
+  double largest_shift = 0.5;
 };
 
 /// The reconstructed field of a set of branches (reconstruct.cpp builds the
