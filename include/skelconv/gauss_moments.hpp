@@ -86,9 +86,67 @@ void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt&
   }
 }
 
+/// The far-field rule in double (segment_moments_gauss with m_lo > 0): the
+/// fewest of Boost's tabulated node counts whose error bound is below
+/// rounding, chosen by how far the poles z, z̄ = t* ± i√D/a of q lie from
+/// [t0, t1].
+///
+/// The bound (Trefethen, Approximation Theory and Approximation Practice,
+/// Theorem 19.3): on [−1, 1] (x = (2t − t0 − t1)/(t1 − t0)) the N-point
+/// rule errs by at most (64/15) M r^(−2N)/(r² − 1) for an integrand
+/// analytic inside the Bernstein ellipse E_r, |integrand| ≤ M there. The
+/// poles sit at imaginary distance y = 2√D/(a (t1 − t0)) from the real axis
+/// in x, and at any real position x*. For each N the constant below is the
+/// smallest y for which that bound, minimised over r (E_r inside the pole's
+/// ellipse) and divided by the integral itself, is ≤ 2^−55 (a quarter of
+/// double's rounding unit) for every x* in [−6, 6] ∪ {±20, ±100}, every
+/// weight t^k, k ≤ 4, and every pole order m/2, m ≤ 18 (the generated
+/// kernels' range: k ≤ 4 for weight degree 3 and ∇f, m ≤ i + 2 for i ≤ 16):
+/// computed by bench/tools/far_field_bound.cpp (scans ∂E_r at 256 points,
+/// r at 40 steps, the integral by 8 panels of the 30-point rule); the
+/// minimal y were 21.4 (N = 7), 6.97 (N = 10), 2.97 (N = 15), 1.89
+/// (N = 20), rounded up here. The generated far branch starts at D ≥ 2a²,
+/// y = 2√2 ≈ 2.83 on [0, 1], inside the 20-node range. D = ac − b² is
+/// formed here without the generated code's cross product: its rounding
+/// (~ε ac) matters only for a pole more than 100 |AB| along the line, where
+/// |z| ≥ 100 puts E_r for any N ≥ 7 far inside the pole's ellipse anyway.
+inline constexpr double far_field_min_y_7_nodes = 22.0;
+inline constexpr double far_field_min_y_10_nodes = 7.0;
+inline constexpr double far_field_min_y_15_nodes = 3.0;
+
+namespace detail {
+/// The far-field rule of segment_moments_gauss: N_max nodes, or fewer where
+/// the bound above allows it (double only: the constants are for its
+/// rounding unit; wider types keep N_max).
+template <class T, unsigned N_max, class QuadraticAt>
+void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& a, const T& b,
+                           const T& c, const T& t0, const T& t1, T* out) {
+  if constexpr (std::numeric_limits<T>::digits <= 53 && N_max >= 20) {
+    // y² = 4D/(a (t1 − t0))² ≥ y_N²  ⇔  4D ≥ y_N² (a (t1 − t0))²
+    const T four_D = T(4) * (a * c - b * b);
+    const T a_width = a * (t1 - t0);
+    const T a_width_squared = a_width * a_width;
+    if (four_D >= T(far_field_min_y_7_nodes * far_field_min_y_7_nodes) * a_width_squared) {
+      add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+    } else if (four_D >= T(far_field_min_y_10_nodes * far_field_min_y_10_nodes) * a_width_squared) {
+      add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+    } else if (four_D >= T(far_field_min_y_15_nodes * far_field_min_y_15_nodes) * a_width_squared) {
+      add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+    } else {
+      add_segment_moments_gauss<T, N_max>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+    }
+  } else {
+    add_segment_moments_gauss<T, N_max>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  }
+}
+}  // namespace detail
+
 /// Writes M_{k,m} for k = 0…k_max and m = m_lo, m_lo + 2, …, m_hi to
-/// out[((m − m_lo)/2)(k_max + 1) + k], with the N-point Gauss–Legendre rule
-/// on [t0, t1].
+/// out[((m − m_lo)/2)(k_max + 1) + k] by Gauss–Legendre on [t0, t1]:
+///  * m_lo ≤ 0 (compact kernels, a polynomial integrand): the N-point rule;
+///  * m_lo > 0 (inverse and Cauchy kernels in the far field, poles off the
+///    interval): at most N nodes, fewer where the poles are far enough for
+///    the bound above (detail::add_far_field_moments).
 template <class T, unsigned N>
 void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c, const T& t0,
                            const T& t1, T* out) {
@@ -98,7 +156,11 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
     using std::max;
     return max(T(0), c + t * (a * t - 2 * b));
   };
-  add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  if (m_lo > 0) {
+    detail::add_far_field_moments<T, N>(m_lo, m_hi, k_max, q_at, a, b, c, t0, t1, out);
+  } else {
+    add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  }
 }
 
 /// Nodes per panel of segment_moments_gauss_panels: on an accepted panel

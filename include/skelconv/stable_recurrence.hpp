@@ -78,6 +78,18 @@ int miller_steps(const T& rho) {
   return std::max(1, static_cast<int>(wanted));
 }
 
+/// 1/(a j), the divisor of one downward step. The steps multiply by it
+/// instead of dividing by a j: the division does not depend on the value
+/// carried down, so it runs beside the dependency chain (one product and
+/// one difference a step) instead of on it (a division's ~13–20 cycles of
+/// latency a step; perf put 36 % of the generic-distance time of inverse i3
+/// and Cauchy i8 in these loops). The extra rounding (≤ 1 ulp a step) is
+/// damped like every other by ρ < 1 per step going down.
+template <class T>
+T step_scale(const T& a, int j) {
+  return T(1) / (a * T(j));
+}
+
 /// powers[j] = x^j for j = 0…count−1 (x ≤ 1: the tail may underflow to 0,
 /// which is then its true size to rounding, never rescaled back up).
 template <class T>
@@ -125,7 +137,9 @@ T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const 
     const T& far_power = start.far_powers[m - 2];
     const T B_scaled = lo_is_near ? (slope1 * far_power - slope0) * inv_root_near
                                   : (slope1 - slope0 * far_power) * inv_root_near;
-    J_scaled = (B_scaled - T(m - 2) * start.d_scaled * J_scaled) / (a * T(3 - m));
+    // Only the product and the difference depend on the previous Ĵ: the
+    // division is formed beside the chain (detail::step_scale).
+    J_scaled = (B_scaled - T(m - 2) * start.d_scaled * J_scaled) * detail::step_scale(a, 3 - m);
   }
   return J_scaled * pow(inv_root_near, n - 1);
 }
@@ -167,7 +181,7 @@ void segment_moments_beyond_end(int m_lo, int m_hi, int k_max, const T& a, const
     for (int k = 0; k <= k_max; ++k) {
       const T boundary = k == 0 ? boundary_far - near_slope : boundary_far;
       const T lower = k == 0 ? T(0) : T(k) * b_near * M[k - 1];
-      M[k] = (boundary + lower - T(m - 2) * start.d_scaled * M[k]) / (a * T(3 - m + k));
+      M[k] = (boundary + lower - T(m - 2) * start.d_scaled * M[k]) * detail::step_scale(a, 3 - m + k);
     }
     const int level = m - 2;
     if (level <= m_hi && (level - m_lo) % 2 == 0) {
