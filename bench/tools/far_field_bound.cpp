@@ -4,8 +4,10 @@
 // (in x ∈ [−1, 1]) at which the bound of Trefethen, ATAP Theorem 19.3,
 // (64/15) M r^(−2N)/(r² − 1), divided by the integral, is ≤ 2^−55 for every
 // pole position x*, weight t^k and pole order m/2 the generated kernels use.
+// With --radius: the smallest distance |z| of the poles from the interval's
+// midpoint, in any direction (segment_moments_beyond_end's far case).
 // Not built by CMake (a derivation, a few minutes):
-//   g++ -O2 -std=c++20 bench/tools/far_field_bound.cpp -o /tmp/far_field_bound && /tmp/far_field_bound
+//   g++ -O2 -std=c++20 bench/tools/far_field_bound.cpp -o /tmp/far_field_bound && /tmp/far_field_bound [--radius]
 #include <boost/math/quadrature/gauss.hpp>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <complex>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <vector>
 
 namespace {
@@ -60,16 +63,35 @@ double worst(int N, double y) {
       for (int m : {1, 2, 3, 18}) w = std::max(w, relative_bound(N, y, x_star, k, m));
   return w;
 }
+
+/// The same for poles at distance `radius` from the interval's midpoint in
+/// any direction (x* = radius cos φ, y = radius sin φ; the real axis
+/// included, y → 0 beyond an end).
+double worst_at_radius(int N, double radius) {
+  double w = 0;
+  for (int j = 0; j <= 12; ++j) {
+    const double phi = j == 0 ? 1e-3 : std::numbers::pi / 2 * j / 12;
+    for (int k : {0, 1, 4})
+      for (int m : {1, 2, 3, 18})
+        w = std::max(w, relative_bound(N, radius * std::sin(phi), radius * std::cos(phi), k, m));
+  }
+  return w;
+}
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
   const double target = std::ldexp(1.0, -55);  // a quarter of double's rounding unit
+  const bool by_radius = argc > 1 && std::string(argv[1]) == "--radius";
   for (int N : {7, 10, 15, 20}) {
-    double lo = 0.3, hi = 1000;  // bisection in log y
+    double lo = 1.01, hi = 1000;  // bisection in log
     for (int step = 0; step < 14; ++step) {
       const double mid = std::sqrt(lo * hi);
-      (worst(N, mid) <= target ? hi : lo) = mid;
+      ((by_radius ? worst_at_radius(N, mid) : worst(N, mid)) <= target ? hi : lo) = mid;
     }
-    std::printf("N = %d: y >= %.4g (D/a^2 >= %.4g on [0, 1])\n", N, hi, hi * hi / 4);
+    if (by_radius)
+      std::printf("N = %d: |z| >= %.4g (|P - midpoint| >= %.4g |AB|)\n", N, hi, hi / 2);
+    else
+      std::printf("N = %d: y >= %.4g (D/a^2 >= %.4g on [0, 1])\n", N, hi, hi * hi / 4);
+    std::fflush(stdout);
   }
 }

@@ -141,6 +141,69 @@ void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_a
 }
 }  // namespace detail
 
+/// P beyond an end of [0, 1] and far from the segment compared with its
+/// length (segment_moments_beyond_end, J_downward): the poles z, z̄ at
+/// distance |z| from the midpoint in x = 2t − 1, in any direction (on the
+/// real axis too). The smallest |z| at which the N-point rule's bound (as
+/// above, now over every direction of the pole: bench/tools/
+/// far_field_bound.cpp --radius) is ≤ 2^−55: 49.3 (N = 7), 13.7 (N = 10),
+/// 5.04 (N = 15), 3.04 (N = 20), rounded up here. |z|² = 4 q(½)/a.
+inline constexpr double beyond_end_min_z_7_nodes = 50.0;
+inline constexpr double beyond_end_min_z_10_nodes = 14.0;
+inline constexpr double beyond_end_min_z_15_nodes = 5.1;
+inline constexpr double beyond_end_min_z_20_nodes = 3.1;
+/// Below this per-step factor ρ = D/(a q_near) Miller's recurrence needs
+/// fewer steps (ln(ε/100)/ln ρ ≈ 18 at ρ = 0.1) than the 15- or 20-node
+/// rule has nodes: there it stays, unless the poles are far enough for 10
+/// nodes or fewer.
+inline constexpr double beyond_end_gauss_min_rho = 0.1;
+
+namespace detail {
+/// M_{k,m} on [0, 1] (layout of segment_moments_gauss) for P beyond an end,
+/// by the rule with the fewest nodes the bound above allows, when it allows
+/// one and it is cheaper than the recurrence; false (out untouched)
+/// otherwise. q is formed from the near end, q = q_near + σ(aσ − 2 b_near)
+/// with σ the distance in t from that end and b_near < 0 (b beyond A,
+/// a − b beyond B): a sum of positive terms. rho: the recurrence's per-step
+/// factor D/(a q_near).
+///
+/// Why: beyond an end the downward recurrences are stable, but far from
+/// the segment the far end's boundary term (σ = 1) is as large as the near
+/// end's and cancels against the k b_near M_{k−1} term: 1.5e-11 measured
+/// for Cauchy i = 7, weights t³, 30 |AB| beyond B. The rule adds positive
+/// terms only.
+template <class T>
+bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b_near, const T& q_near,
+                              const T& q_far, bool beyond_B, const T& rho, T* out) {
+  if constexpr (std::numeric_limits<T>::digits > 53) return false;  // the radii are for double's rounding
+  // |z|² = 4 q(½)/a, q(½) = (q(0) + q(1))/2 − a/4
+  const T z2 = T(2) * (q_near + q_far) / a - T(1);
+  auto square = [](double r) { return r * r; };
+  const bool far = z2 >= T(square(beyond_end_min_z_10_nodes));
+  bool use_rule = far;
+  if (!use_rule) use_rule = z2 >= T(square(beyond_end_min_z_20_nodes)) && rho >= T(beyond_end_gauss_min_rho);
+  if (!use_rule) return false;
+  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
+  for (int i = 0; i < count; ++i) out[i] = T(0);
+  auto q_at = [&](const T& t) {
+    const T sigma = beyond_B ? T(1) - t : t;
+    return q_near + sigma * (a * sigma - T(2) * b_near);
+  };
+  const T zero(0), one(1);
+  if (far) {
+    if (z2 >= T(square(beyond_end_min_z_7_nodes)))
+      add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, zero, one, out);
+    else
+      add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, zero, one, out);
+  } else if (z2 >= T(square(beyond_end_min_z_15_nodes))) {
+    add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, zero, one, out);
+  } else {
+    add_segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, q_at, zero, one, out);
+  }
+  return true;
+}
+}  // namespace detail
+
 /// Writes M_{k,m} for k = 0…k_max and m = m_lo, m_lo + 2, …, m_hi to
 /// out[((m − m_lo)/2)(k_max + 1) + k] by Gauss–Legendre on [t0, t1]:
 ///  * m_lo ≤ 0 (compact kernels, a polynomial integrand): the N-point rule;

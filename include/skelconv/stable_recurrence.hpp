@@ -25,6 +25,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "skelconv/gauss_moments.hpp"
 #include "skelconv/not_converged.hpp"
 
 namespace skelconv {
@@ -129,7 +130,15 @@ template <class T>
 T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const T& slope1, const T& q1) {
   using std::pow;
   const bool lo_is_near = q0 <= q1;
-  const detail::DownwardStart<T> start(n, a, D, lo_is_near ? q0 : q1, lo_is_near ? q1 : q0);
+  const T& q_near = lo_is_near ? q0 : q1;
+  const T& q_far = lo_is_near ? q1 : q0;
+  // Far from the segment (or where the recurrence would take many steps): a
+  // Gauss rule (gauss_moments.hpp). b_near: b = −slope0 beyond A, a − b = slope1 beyond B.
+  T J_rule;
+  if (detail::beyond_end_moments_gauss(n, n, 0, a, lo_is_near ? -slope0 : slope1, q_near, q_far, !lo_is_near,
+                                       D / (a * q_near), &J_rule))
+    return J_rule;
+  const detail::DownwardStart<T> start(n, a, D, q_near, q_far);
   const T& inv_root_near = start.inv_root_near;
   T J_scaled = 0;  // Ĵ_top
   for (int m = start.top; m > n; m -= 2) {
@@ -170,7 +179,14 @@ void segment_moments_beyond_end(int m_lo, int m_hi, int k_max, const T& a, const
   if (k_max > max_k || m_lo < k_max + 2) throw std::invalid_argument("segment_moments_beyond_end: k_max out of range");
   const bool beyond_B = q1 < q0;
   const T b_near = beyond_B ? a - b : b;  // b in the σ parameter
-  const detail::DownwardStart<T> start(m_hi, a, D, beyond_B ? q1 : q0, beyond_B ? q0 : q1);
+  const T& q_near = beyond_B ? q1 : q0;
+  const T& q_far = beyond_B ? q0 : q1;
+  // Far from the segment the far end's boundary term cancels against
+  // k b_near M_{k−1} (see beyond_end_moments_gauss), and where ρ is large the
+  // recurrence takes more steps than a rule has nodes: a Gauss rule there.
+  if (detail::beyond_end_moments_gauss(m_lo, m_hi, k_max, a, b_near, q_near, q_far, beyond_B, D / (a * q_near), out))
+    return;
+  const detail::DownwardStart<T> start(m_hi, a, D, q_near, q_far);
   const T& inv_root_near = start.inv_root_near;
   const T far_slope = (a - b_near) * inv_root_near;  // (aσ − b) at σ = 1, scaled
   const T near_slope = -b_near * inv_root_near;      // (aσ − b) at σ = 0, scaled
