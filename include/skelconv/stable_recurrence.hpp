@@ -132,11 +132,11 @@ T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const 
   const bool lo_is_near = q0 <= q1;
   const T& q_near = lo_is_near ? q0 : q1;
   const T& q_far = lo_is_near ? q1 : q0;
-  // Far from the segment (or where the recurrence would take many steps): a
-  // Gauss rule (gauss_moments.hpp). b_near: b = −slope0 beyond A, a − b = slope1 beyond B.
+  // Away from the segment (|P − midpoint| ≥ 1.55 |AB|): a Gauss rule
+  // (gauss_moments.hpp, beyond_end_moments_gauss). b_near: b = −slope0 beyond A, a − b = slope1 beyond B.
   T J_rule;
   if (detail::beyond_end_moments_gauss(n, n, 0, a, lo_is_near ? -slope0 : slope1, q_near, q_far, !lo_is_near,
-                                       D / (a * q_near), &J_rule))
+                                       &J_rule))
     return J_rule;
   const detail::DownwardStart<T> start(n, a, D, q_near, q_far);
   const T& inv_root_near = start.inv_root_near;
@@ -165,9 +165,11 @@ T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const 
 ///    A, σ = 1 − t beyond B), so that σ^k is small where the mass is;
 ///  * differentiating σ^k (a σ − b) q^(1−m/2) gives, for every k,
 ///        a (3−m+k) M_{k,m−2} = [σ^k (aσ − b) q^(1−m/2)]_0^1 + k b M_{k−1,m−2} − (m−2) D M_{k,m},
-///    run downwards from M_{k,top} = 0 as in J_downward; beyond the near end
-///    every term on the right has the sign of the left (b < 0), so nothing
-///    cancels;
+///    run downwards from M_{k,top} = 0 as in J_downward; near the end the
+///    near end's boundary term dominates and has the sign of the left
+///    (b < 0), so nothing cancels; away from the segment (|P − midpoint| ≥
+///    1.55 |AB|) the far end's term does not fade and cancels, and a Gauss
+///    rule takes over (gauss_moments.hpp, beyond_end_moments_gauss);
 ///  * beyond B the t-moments are recovered from t^k = (1 − σ)^k, a sum
 ///    whose terms shrink (σ is small where the mass is).
 template <class T>
@@ -181,10 +183,9 @@ void segment_moments_beyond_end(int m_lo, int m_hi, int k_max, const T& a, const
   const T b_near = beyond_B ? a - b : b;  // b in the σ parameter
   const T& q_near = beyond_B ? q1 : q0;
   const T& q_far = beyond_B ? q0 : q1;
-  // Far from the segment the far end's boundary term cancels against
-  // k b_near M_{k−1} (see beyond_end_moments_gauss), and where ρ is large the
-  // recurrence takes more steps than a rule has nodes: a Gauss rule there.
-  if (detail::beyond_end_moments_gauss(m_lo, m_hi, k_max, a, b_near, q_near, q_far, beyond_B, D / (a * q_near), out))
+  // Away from the segment the far end's boundary term cancels against
+  // k b_near M_{k−1} (see beyond_end_moments_gauss): a Gauss rule there.
+  if (detail::beyond_end_moments_gauss(m_lo, m_hi, k_max, a, b_near, q_near, q_far, beyond_B, out))
     return;
   const detail::DownwardStart<T> start(m_hi, a, D, q_near, q_far);
   const T& inv_root_near = start.inv_root_near;
