@@ -115,26 +115,42 @@ inline constexpr double far_field_min_y_10_nodes = 7.0;
 inline constexpr double far_field_min_y_15_nodes = 3.0;
 
 namespace detail {
+/// The node count for a pole at "distance" x (a squared distance compared
+/// with the squared thresholds of the 7-, 10- and 15-node rules): 7, 10, 15,
+/// or `most`. The vector batches (src/simd/lanes-inl.hpp) specialise it to
+/// the largest count any active lane needs, so that the lanes stay together
+/// (more nodes only make a lane's rule more exact).
+template <class T>
+int rule_nodes(const T& x, double x7, double x10, double x15, int most) {
+  return x >= T(x7) ? 7 : x >= T(x10) ? 10 : x >= T(x15) ? 15 : most;
+}
+
+/// Adds the rule of `nodes` nodes (7, 10, 15, 20) on [t0, t1].
+template <class T, class QuadraticAt>
+void add_moments_by_rule(int nodes, int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
+                         T* out) {
+  switch (nodes) {
+    case 7: add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    case 10: add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    case 15: add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    default: add_segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+  }
+}
+
 /// The far-field rule of segment_moments_gauss: N_max nodes, or fewer where
 /// the bound above allows it (double only: the constants are for its
 /// rounding unit; wider types keep N_max).
 template <class T, unsigned N_max, class QuadraticAt>
 void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& a, const T& b,
                            const T& c, const T& t0, const T& t1, T* out) {
-  if constexpr (std::numeric_limits<T>::digits <= 53 && N_max >= 20) {
-    // y² = 4D/(a (t1 − t0))² ≥ y_N²  ⇔  4D ≥ y_N² (a (t1 − t0))²
-    const T four_D = T(4) * (a * c - b * b);
+  if constexpr (std::numeric_limits<T>::digits <= 53 && N_max == 20) {
+    // y² = 4D/(a (t1 − t0))² ≥ y_N²
     const T a_width = a * (t1 - t0);
-    const T a_width_squared = a_width * a_width;
-    if (four_D >= T(far_field_min_y_7_nodes * far_field_min_y_7_nodes) * a_width_squared) {
-      add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, t0, t1, out);
-    } else if (four_D >= T(far_field_min_y_10_nodes * far_field_min_y_10_nodes) * a_width_squared) {
-      add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, t0, t1, out);
-    } else if (four_D >= T(far_field_min_y_15_nodes * far_field_min_y_15_nodes) * a_width_squared) {
-      add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, t0, t1, out);
-    } else {
-      add_segment_moments_gauss<T, N_max>(m_lo, m_hi, k_max, q_at, t0, t1, out);
-    }
+    const T y2 = T(4) * (a * c - b * b) / (a_width * a_width);
+    auto square = [](double y) { return y * y; };
+    const int nodes = rule_nodes(y2, square(far_field_min_y_7_nodes), square(far_field_min_y_10_nodes),
+                                 square(far_field_min_y_15_nodes), 20);
+    add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, t0, t1, out);
   } else {
     add_segment_moments_gauss<T, N_max>(m_lo, m_hi, k_max, q_at, t0, t1, out);
   }
@@ -177,24 +193,15 @@ bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T
   const T z2 = T(2) * (q_near + q_far) / a - T(1);
   auto square = [](double r) { return r * r; };
   if (!(z2 >= T(square(beyond_end_min_z_20_nodes)))) return false;
-  const bool far = z2 >= T(square(beyond_end_min_z_10_nodes));
   const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
   for (int i = 0; i < count; ++i) out[i] = T(0);
   auto q_at = [&](const T& t) {
     const T sigma = beyond_B ? T(1) - t : t;
     return q_near + sigma * (a * sigma - T(2) * b_near);
   };
-  const T zero(0), one(1);
-  if (far) {
-    if (z2 >= T(square(beyond_end_min_z_7_nodes)))
-      add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, zero, one, out);
-    else
-      add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, zero, one, out);
-  } else if (z2 >= T(square(beyond_end_min_z_15_nodes))) {
-    add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, zero, one, out);
-  } else {
-    add_segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, q_at, zero, one, out);
-  }
+  const int nodes = rule_nodes(z2, square(beyond_end_min_z_7_nodes), square(beyond_end_min_z_10_nodes),
+                               square(beyond_end_min_z_15_nodes), 20);
+  add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, T(0), T(1), out);
   return true;
 }
 }  // namespace detail

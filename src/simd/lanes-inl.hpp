@@ -204,6 +204,21 @@ inline int miller_steps<SimdLanes>(const SimdLanes& rho) {
 }  // namespace detail
 
 namespace detail {
+/// The Gauss rules chosen by the poles' distance (gauss_moments.hpp): the
+/// most nodes any active lane needs, so that the lanes stay together (more
+/// nodes only make a lane's rule more exact: its result differs from the
+/// scalar path's by rounding).
+template <>
+inline int rule_nodes<SimdLanes>(const SimdLanes& x, double x7, double x10, double x15, int most) {
+  const simd::Divergence& divergence = *simd::HWY_NAMESPACE::current_divergence;
+  alignas(64) double v[simd::max_lanes];
+  hwy::HWY_NAMESPACE::Store(x.v, simd::HWY_NAMESPACE::LaneTag(), v);
+  int nodes = 0;
+  for (std::size_t k = 0; k < simd::HWY_NAMESPACE::lane_count(); ++k)
+    if (divergence.active() >> k & 1u) nodes = std::max(nodes, rule_nodes<double>(v[k], x7, x10, x15, most));
+  return nodes;
+}
+
 /// SCALIS segments' Gauss panels (gauss_moments.hpp) with the pole within
 /// rounding of a panel start: the active lanes go to the scalar path, which
 /// reports the error.
