@@ -9,7 +9,7 @@
 // etc., compiled with that target's instruction set.
 //
 // What makes a generated template run on Lanes:
-//   * arithmetic, sqrt, min, max, atan2, log, asinh are hidden friends found
+//   * arithmetic, sqrt, min, max, atan2, log, asinh, cos are hidden friends found
 //     by argument-dependent lookup (the generated code writes `using
 //     std::sqrt; sqrt(x)`); every one performs exactly the IEEE operation the
 //     scalar code performs on each lane (+ − × ÷ √ correctly rounded, min/max
@@ -135,16 +135,18 @@ inline Lanes pow(Lanes x, int n) {
   return Lanes(hn::Load(d, v));
 }
 
-// atan2, log, asinh: SLEEF's 1.0-ulp functions for the vector targets; the
+// atan2, log, asinh, cos (polygons' angle integrals): SLEEF's 1.0-ulp functions for the vector targets; the
 // portable target calls the C library lane by lane.
 #if HWY_TARGET == HWY_AVX2
 inline Lanes atan2(Lanes y, Lanes x) { return Lanes(LaneVector{Sleef_atan2d4_u10avx2(y.v.raw, x.v.raw)}); }
 inline Lanes log(Lanes a) { return Lanes(LaneVector{Sleef_logd4_u10avx2(a.v.raw)}); }
 inline Lanes asinh(Lanes a) { return Lanes(LaneVector{Sleef_asinhd4_u10avx2(a.v.raw)}); }
+inline Lanes cos(Lanes a) { return Lanes(LaneVector{Sleef_cosd4_u10avx2(a.v.raw)}); }
 #elif HWY_TARGET == HWY_AVX3
 inline Lanes atan2(Lanes y, Lanes x) { return Lanes(LaneVector{Sleef_atan2d8_u10avx512f(y.v.raw, x.v.raw)}); }
 inline Lanes log(Lanes a) { return Lanes(LaneVector{Sleef_logd8_u10avx512f(a.v.raw)}); }
 inline Lanes asinh(Lanes a) { return Lanes(LaneVector{Sleef_asinhd8_u10avx512f(a.v.raw)}); }
+inline Lanes cos(Lanes a) { return Lanes(LaneVector{Sleef_cosd8_u10avx512f(a.v.raw)}); }
 #else
 /// function(a_k, b_k) in every lane k, by the C library.
 template <class Function>
@@ -164,6 +166,9 @@ inline Lanes log(Lanes a) {
 }
 inline Lanes asinh(Lanes a) {
   return per_lane([](double u, double) { return std::asinh(u); }, a, a);
+}
+inline Lanes cos(Lanes a) {
+  return per_lane([](double u, double) { return std::cos(u); }, a, a);
 }
 #endif
 
