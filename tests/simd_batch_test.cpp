@@ -205,7 +205,8 @@ TEST_P(SimdSegmentBatch, PolygonsEqualTheScalarPathOnEveryForm) {
   // pentagon; at unit scale and scaled by 2^40.
   const std::vector<std::vector<Vec3>> shapes = {
       {Vec3(0, 0, 0.25), Vec3(1, 0, 0.25), Vec3(1, 1, 0.25), Vec3(0, 1, 0.25)},
-      {Vec3(0, 0, 0), Vec3(1, 0.1, 0.2), Vec3(1.3, 0.9, 0.5), Vec3(0.5, 1.4, 0.6), Vec3(-0.2, 0.8, 0.3)}};
+      {Vec3(0, 0, 0.1), Vec3(1, 0.1, 0.42), Vec3(1.3, 0.9, 0.67), Vec3(0.5, 1.4, 0.53), Vec3(-0.2, 0.8, 0.2)}};
+  // (the pentagon in the plane z = 0.1 + 0.3 x + 0.2 y)
   int vectorised = 0;
   for (const auto& shape : shapes) {
     for (const double scale : {1.0, std::ldexp(1.0, 40)}) {
