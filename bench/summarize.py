@@ -488,11 +488,12 @@ def main():
         if len(parts) == 4 and parts[3] == "closed" and re.match(r"segment_(inverse|cauchy)_i\d+_w0$", parts[1]):
             generic.setdefault(parts[1], {})[parts[2][2:]] = ns(r)
     if generic:
-        md.append("### 4c. The generic path: f and ∇f at 0.1–3 |AB|, every direction
-")
+        md.append("### 4c. The generic path: f and ∇f at 0.1–3 |AB|, every direction\n")
         md.append(f"The closed form `f_and_grad` alone (weight degree 0), same points and run as 4b. "
                   f"Goal (issue 15): ≤ {GOAL_GENERIC_NS:.0f} ns for inverse and Cauchy up to i = 8 at every distance.\n")
-        order = lambda k: (k.split("_")[1], int(k.split("_i")[1].split("_")[0]))
+        def order(k):
+            m = re.match(r"segment_(\w+?)_i(\d+)_w0$", k)
+            return (m.group(1), int(m.group(2)))
         rows, cells = [], []
         for k in sorted(generic, key=order):
             row = [k.replace("segment_", "").replace("_w0", "")]
