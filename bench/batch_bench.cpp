@@ -18,7 +18,9 @@
 //                           scalar_fraction (points left to the scalar path),
 //                           max_rel_diff against the runtime path.
 //   batch/scalis_<family>_i<i>/{runtime,highway}: the same for SCALIS
-//                           segments (radius 0.1 → 0.3, σ = 1.5).
+//                           segments (radius 0.1 → 0.3, σ = 1.5);
+//   batch/polygon_<family>_i<i>/{runtime,highway}: the same for a tilted
+//                           quadrilateral across the segment (Polygon).
 // Points: uniform in the segment's box grown by 1.5 R (about a third outside
 // the compact support). Both variants write the same SoA outputs. Before
 // any timing, every batch is checked against the scalar loop on these
@@ -38,6 +40,7 @@
 
 #include "batch_kernels.hpp"
 #include "bench_main.hpp"
+#include "skelconv/polygon.hpp"
 #include "skelconv/scalis_segment.hpp"
 #include "skelconv/segment.hpp"
 #include "skelconv/simd/batch.hpp"
@@ -221,22 +224,32 @@ ScalisSegment bench_scalis(KernelFamily family, int degree) {
                        ScalisKernel{family, degree, 1.5}, 1.0);
 }
 
-void bench_scalis_runtime(benchmark::State& state, KernelFamily family, int degree) {
-  const ScalisSegment segment = bench_scalis(family, degree);
+/// A tilted quadrilateral spanned by the bench segment AB and a vector
+/// across it, in the middle of the points' box.
+Polygon bench_polygon(const KernelSpec& kernel) {
+  const Vec3 a(bench_a[0], bench_a[1], bench_a[2]), b(bench_b[0], bench_b[1], bench_b[2]);
+  const Vec3 across = 0.6 * (b - a).unitOrthogonal() + Vec3(0.0, 0.0, 0.1);
+  return Polygon({a, b, b + across, a + 0.8 * across}, kernel);
+}
+
+/// The runtime per point (SCALIS segments, polygons).
+template <class Primitive>
+void bench_primitive_runtime(benchmark::State& state, const Primitive& primitive) {
   Batch batch(batch_size), out(batch_size);
   for (auto _ : state) {
-    runtime_points(segment, batch, out);
+    runtime_points(primitive, batch, out);
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * std::int64_t(batch_size));
 }
 
-void bench_scalis_highway(benchmark::State& state, KernelFamily family, int degree) {
-  const ScalisSegment segment = bench_scalis(family, degree);
+/// skelconv::simd on the same points, checked against the runtime first.
+template <class Primitive>
+void bench_primitive_highway(benchmark::State& state, const Primitive& primitive) {
   Batch batch(batch_size), reference(batch_size);
-  runtime_points(segment, batch, reference);
+  runtime_points(primitive, batch, reference);
   auto run = [&] {
-    return simd::value_and_gradient(segment, {batch.x.data(), batch.y.data(), batch.z.data(), batch_size},
+    return simd::value_and_gradient(primitive, {batch.x.data(), batch.y.data(), batch.z.data(), batch_size},
                                     {batch.f.data(), batch.gx.data(), batch.gy.data(), batch.gz.data()});
   };
   const simd::BatchCounts counts = run();
@@ -262,8 +275,16 @@ void bench_scalis_highway(benchmark::State& state, KernelFamily family, int degr
 void register_all() {
   for (const auto& [family, degree] : {std::pair{KernelFamily::inverse, 3}, std::pair{KernelFamily::cauchy, 4}}) {
     const std::string name = "batch/scalis_" + std::string(family_name(family)) + "_i" + std::to_string(degree);
-    benchmark::RegisterBenchmark((name + "/runtime").c_str(), bench_scalis_runtime, family, degree);
-    benchmark::RegisterBenchmark((name + "/highway").c_str(), bench_scalis_highway, family, degree);
+    const ScalisSegment segment = bench_scalis(family, degree);
+    benchmark::RegisterBenchmark((name + "/runtime").c_str(), bench_primitive_runtime<ScalisSegment>, segment);
+    benchmark::RegisterBenchmark((name + "/highway").c_str(), bench_primitive_highway<ScalisSegment>, segment);
+  }
+  for (const KernelSpec& kernel : {KernelSpec::inverse(3), KernelSpec::cauchy(4, 2.0)}) {
+    const std::string name = "batch/polygon_" + std::string(family_name(kernel.family)) + "_i" +
+                             std::to_string(kernel.degree);
+    const Polygon polygon = bench_polygon(kernel);
+    benchmark::RegisterBenchmark((name + "/runtime").c_str(), bench_primitive_runtime<Polygon>, polygon);
+    benchmark::RegisterBenchmark((name + "/highway").c_str(), bench_primitive_highway<Polygon>, polygon);
   }
   for (const BatchEntry& e : batch_entries) {
     const KernelRef* k = find_kernel(e.key.family, e.key.degree, e.key.weight_degree);

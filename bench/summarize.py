@@ -100,6 +100,7 @@ GOAL_QUADRATURE = 200.0
 GOAL_BATCH = 3.0
 GOAL_HIGHWAY = 4.0   # issue 15: the Highway batch against the scalar loop
 GOAL_GSL = 200.0     # issue 15: closed form against GSL QAG-61, every distance and family
+GOAL_GENERIC_NS = 25.0  # issue 15: f and ∇f at generic distances, inverse and Cauchy i ≤ 8
 
 
 def load_benchmarks(path):
@@ -432,7 +433,8 @@ def main():
                   "generated full `f_and_grad` on a Highway vector type (8 lanes with AVX-512, 4 with AVX2), "
                   "lanes that take another branch set aside and re-run together (*set aside*: re-runs per point), "
                   "SLEEF for atan2/log/asinh, run-time dispatch; `scalis_*` rows: SCALIS segments (radius 0.1 → 0.3, σ = 1.5), "
-                  "ratios against the runtime. *scalar*: the loop above (bench flags, AVX2 + FMA); "
+                  "`polygon_*` rows: a tilted quadrilateral across the segment (`simd::value_and_gradient(const Polygon&, …)`, "
+                  "the contour sum on lanes), both with ratios against the runtime. *scalar*: the loop above (bench flags, AVX2 + FMA); "
                   "*runtime*: `Segment::value_and_gradient` per point (what the batch reproduces; ctest "
                   "`SimdSegmentBatch` checks ≤ 1e-13 relative on every form and target, measured ≤ 6e-16). "
                   "*max rel diff* here is against the runtime path as linked into this program, whose generated "
@@ -458,8 +460,8 @@ def main():
             for d in ("0.1", "0.3", "1", "3"):
                 base = f"gsl/{k}/d:{d}/"
                 c = gsl.get(base + "closed")
-                if not c:
-                    continue
+                if not c or not gsl.get(base + "qag:1e-12"):
+                    continue  # closed-form-only rows: the generic-path table below
                 row = [k, d, fmt_time(ns(c))]
                 for tol in ("1e-08", "1e-12"):
                     q = gsl.get(base + "qag:" + tol)
@@ -478,6 +480,35 @@ def main():
                       if worst else "–",
                       bool(ratios_gsl) and all(r >= GOAL_GSL for *_, r in ratios_gsl),
                       f"{sum(1 for *_, r in ratios_gsl if r >= GOAL_GSL)} of {len(ratios_gsl)} cases"))
+
+    # --- generic path ------------------------------------------------------------------------
+    generic = {}
+    for n, r in gsl.items():
+        parts = n.split("/")
+        if len(parts) == 4 and parts[3] == "closed" and re.match(r"segment_(inverse|cauchy)_i\d+_w0$", parts[1]):
+            generic.setdefault(parts[1], {})[parts[2][2:]] = ns(r)
+    if generic:
+        md.append("### 4c. The generic path: f and ∇f at 0.1–3 |AB|, every direction\n")
+        md.append(f"The closed form `f_and_grad` alone (weight degree 0), same points and run as 4b. "
+                  f"Goal (issue 15): ≤ {GOAL_GENERIC_NS:.0f} ns for inverse and Cauchy up to i = 8 at every distance.\n")
+        def order(k):
+            m = re.match(r"segment_(\w+?)_i(\d+)_w0$", k)
+            return (m.group(1), int(m.group(2)))
+        rows, cells = [], []
+        for k in sorted(generic, key=order):
+            row = [k.replace("segment_", "").replace("_w0", "")]
+            for d in ("0.1", "0.3", "1", "3"):
+                t = generic[k].get(d)
+                row.append(fmt_time(t) if t is not None else "–")
+                if t is not None:
+                    cells.append((k, d, t))
+            rows.append(row)
+        md.append(table(["kernel", "d = 0.1", "0.3", "1", "3"], rows))
+        worst = max(cells, key=lambda x: x[2])
+        goals.append((f"generic path f+∇f ≤ {GOAL_GENERIC_NS:.0f} ns (inverse, Cauchy i ≤ 8, 0.1–3 |AB|)",
+                      f"slowest {fmt_time(worst[2])} ({worst[0].replace('segment_', '')}, d = {worst[1]})",
+                      all(t <= GOAL_GENERIC_NS for *_, t in cells),
+                      f"{sum(1 for *_, t in cells if t <= GOAL_GENERIC_NS)} of {len(cells)} cells"))
 
     # --- skeleton --------------------------------------------------------------------------
     md.append("## 5. Whole skeleton: 1,000 compact segments on a 128³ grid\n")

@@ -27,9 +27,12 @@ struct Quadratic {
   double q(double t) const { return (a * t - 2 * b) * t + c; }
 };
 
-// c chosen so that ρ = D/(a c) = rho: c = b²/(a(1 − ρ)).
+// c chosen so that ρ = D/(a c) = rho: c = b²/(a(1 − ρ)). P just beyond
+// t = 0 (b = −0.01: |P − midpoint| ≈ 0.52 |AB|), where J_downward runs
+// Miller's recurrence (from 1.55 |AB| on a Gauss rule takes over,
+// gauss_moments.hpp, and no cap applies).
 Quadratic beyond_end_with_rho(double rho) {
-  const double a = 1.0, b = -0.5;
+  const double a = 1.0, b = -0.01;
   return {a, b, b * b / (a * (1 - rho))};
 }
 

@@ -86,9 +86,132 @@ void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt&
   }
 }
 
+/// The far-field rule in double (segment_moments_gauss with m_lo > 0): the
+/// fewest of Boost's tabulated node counts whose error bound is below
+/// rounding, chosen by how far the poles z, z̄ = t* ± i√D/a of q lie from
+/// [t0, t1].
+///
+/// The bound (Trefethen, Approximation Theory and Approximation Practice,
+/// Theorem 19.3): on [−1, 1] (x = (2t − t0 − t1)/(t1 − t0)) the N-point
+/// rule errs by at most (64/15) M r^(−2N)/(r² − 1) for an integrand
+/// analytic inside the Bernstein ellipse E_r, |integrand| ≤ M there. The
+/// poles sit at imaginary distance y = 2√D/(a (t1 − t0)) from the real axis
+/// in x, and at any real position x*. For each N the constant below is the
+/// smallest y for which that bound, minimised over r (E_r inside the pole's
+/// ellipse) and divided by the integral itself, is ≤ 2^−55 (a quarter of
+/// double's rounding unit) for every x* in [−6, 6] ∪ {±20, ±100}, every
+/// weight t^k, k ≤ 4, and every pole order m/2, m ≤ 18 (the generated
+/// kernels' range: k ≤ 4 for weight degree 3 and ∇f, m ≤ i + 2 for i ≤ 16):
+/// computed by bench/tools/far_field_bound.cpp (scans ∂E_r at 256 points,
+/// r at 40 steps, the integral by 8 panels of the 30-point rule); the
+/// minimal y were 21.4 (N = 7), 6.97 (N = 10), 2.97 (N = 15), 1.89
+/// (N = 20), rounded up here. The generated far branch starts at D ≥ 2a²,
+/// y = 2√2 ≈ 2.83 on [0, 1], inside the 20-node range. D = ac − b² is
+/// formed here without the generated code's cross product: its rounding
+/// (~ε ac) matters only for a pole more than 100 |AB| along the line, where
+/// |z| ≥ 100 puts E_r for any N ≥ 7 far inside the pole's ellipse anyway.
+inline constexpr double far_field_min_y_7_nodes = 22.0;
+inline constexpr double far_field_min_y_10_nodes = 7.0;
+inline constexpr double far_field_min_y_15_nodes = 3.0;
+
+namespace detail {
+/// The node count for a pole at "distance" x (a squared distance compared
+/// with the squared thresholds of the 7-, 10- and 15-node rules): 7, 10, 15,
+/// or `most`. The vector batches (src/simd/lanes-inl.hpp) specialise it to
+/// the largest count any active lane needs, so that the lanes stay together
+/// (more nodes only make a lane's rule more exact).
+template <class T>
+int rule_nodes(const T& x, double x7, double x10, double x15, int most) {
+  return x >= T(x7) ? 7 : x >= T(x10) ? 10 : x >= T(x15) ? 15 : most;
+}
+
+/// Adds the rule of `nodes` nodes (7, 10, 15, 20) on [t0, t1].
+template <class T, class QuadraticAt>
+void add_moments_by_rule(int nodes, int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
+                         T* out) {
+  switch (nodes) {
+    case 7: add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    case 10: add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    case 15: add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    default: add_segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+  }
+}
+
+/// The far-field rule of segment_moments_gauss: N_max nodes, or fewer where
+/// the bound above allows it (double only: the constants are for its
+/// rounding unit; wider types keep N_max).
+template <class T, unsigned N_max, class QuadraticAt>
+void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& a, const T& b,
+                           const T& c, const T& t0, const T& t1, T* out) {
+  if constexpr (std::numeric_limits<T>::digits <= 53 && N_max == 20) {
+    // y² = 4D/(a (t1 − t0))² ≥ y_N²
+    const T a_width = a * (t1 - t0);
+    const T y2 = T(4) * (a * c - b * b) / (a_width * a_width);
+    auto square = [](double y) { return y * y; };
+    const int nodes = rule_nodes(y2, square(far_field_min_y_7_nodes), square(far_field_min_y_10_nodes),
+                                 square(far_field_min_y_15_nodes), 20);
+    add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, t0, t1, out);
+  } else {
+    add_segment_moments_gauss<T, N_max>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  }
+}
+}  // namespace detail
+
+/// P beyond an end of [0, 1] and far from the segment compared with its
+/// length (segment_moments_beyond_end, J_downward): the poles z, z̄ at
+/// distance |z| from the midpoint in x = 2t − 1, in any direction (on the
+/// real axis too). The smallest |z| at which the N-point rule's bound (as
+/// above, now over every direction of the pole: bench/tools/
+/// far_field_bound.cpp --radius) is ≤ 2^−55: 49.3 (N = 7), 13.7 (N = 10),
+/// 5.04 (N = 15), 3.04 (N = 20), rounded up here. |z|² = 4 q(½)/a.
+inline constexpr double beyond_end_min_z_7_nodes = 50.0;
+inline constexpr double beyond_end_min_z_10_nodes = 14.0;
+inline constexpr double beyond_end_min_z_15_nodes = 5.1;
+inline constexpr double beyond_end_min_z_20_nodes = 3.1;
+namespace detail {
+/// M_{k,m} on [0, 1] (layout of segment_moments_gauss) for P beyond an end,
+/// by the rule with the fewest nodes the bound above allows, when it allows
+/// one (|z| ≥ 3.1, P at least 1.55 |AB| from the midpoint); false (out
+/// untouched) otherwise. q is formed from the near end, q = q_near + σ(aσ − 2 b_near)
+/// with σ the distance in t from that end and b_near < 0 (b beyond A,
+/// a − b beyond B): a sum of positive terms.
+///
+/// Why: beyond an end the downward recurrences are stable, but away from
+/// the segment the far end's boundary term (σ = 1) is as large as the near
+/// end's and cancels against the k b_near M_{k−1} term: 1.5e-11 measured by
+/// the verifier for Cauchy i = 7, weights t³, 30 |AB| beyond B; measured on
+/// M_{k,m}, k ≤ 3, m = 7, 9 against long double quadrature: up to 1.1e-10
+/// for |z| ≤ 60, and still 8e-14 at |z| ≈ 14, while the recurrence stays at
+/// ≤ 5e-15 for |z| < 3.1 and the rule at ≤ 5e-15 beyond. The rule adds
+/// positive terms only; it also replaces the recurrence's up to ~110 steps
+/// (ρ near 7/10) by 7–20 nodes.
+template <class T>
+bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b_near, const T& q_near,
+                              const T& q_far, bool beyond_B, T* out) {
+  if constexpr (std::numeric_limits<T>::digits > 53) return false;  // the radii are for double's rounding
+  // |z|² = 4 q(½)/a, q(½) = (q(0) + q(1))/2 − a/4
+  const T z2 = T(2) * (q_near + q_far) / a - T(1);
+  auto square = [](double r) { return r * r; };
+  if (!(z2 >= T(square(beyond_end_min_z_20_nodes)))) return false;
+  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
+  for (int i = 0; i < count; ++i) out[i] = T(0);
+  auto q_at = [&](const T& t) {
+    const T sigma = beyond_B ? T(1) - t : t;
+    return q_near + sigma * (a * sigma - T(2) * b_near);
+  };
+  const int nodes = rule_nodes(z2, square(beyond_end_min_z_7_nodes), square(beyond_end_min_z_10_nodes),
+                               square(beyond_end_min_z_15_nodes), 20);
+  add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, T(0), T(1), out);
+  return true;
+}
+}  // namespace detail
+
 /// Writes M_{k,m} for k = 0…k_max and m = m_lo, m_lo + 2, …, m_hi to
-/// out[((m − m_lo)/2)(k_max + 1) + k], with the N-point Gauss–Legendre rule
-/// on [t0, t1].
+/// out[((m − m_lo)/2)(k_max + 1) + k] by Gauss–Legendre on [t0, t1]:
+///  * m_lo ≤ 0 (compact kernels, a polynomial integrand): the N-point rule;
+///  * m_lo > 0 (inverse and Cauchy kernels in the far field, poles off the
+///    interval): at most N nodes, fewer where the poles are far enough for
+///    the bound above (detail::add_far_field_moments).
 template <class T, unsigned N>
 void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c, const T& t0,
                            const T& t1, T* out) {
@@ -98,7 +221,11 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
     using std::max;
     return max(T(0), c + t * (a * t - 2 * b));
   };
-  add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  if (m_lo > 0) {
+    detail::add_far_field_moments<T, N>(m_lo, m_hi, k_max, q_at, a, b, c, t0, t1, out);
+  } else {
+    add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  }
 }
 
 /// Nodes per panel of segment_moments_gauss_panels: on an accepted panel

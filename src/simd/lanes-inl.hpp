@@ -9,7 +9,7 @@
 // etc., compiled with that target's instruction set.
 //
 // What makes a generated template run on Lanes:
-//   * arithmetic, sqrt, min, max, atan2, log, asinh are hidden friends found
+//   * arithmetic, sqrt, min, max, atan2, log, asinh, cos are hidden friends found
 //     by argument-dependent lookup (the generated code writes `using
 //     std::sqrt; sqrt(x)`); every one performs exactly the IEEE operation the
 //     scalar code performs on each lane (+ − × ÷ √ correctly rounded, min/max
@@ -135,16 +135,18 @@ inline Lanes pow(Lanes x, int n) {
   return Lanes(hn::Load(d, v));
 }
 
-// atan2, log, asinh: SLEEF's 1.0-ulp functions for the vector targets; the
+// atan2, log, asinh, cos (polygons' angle integrals): SLEEF's 1.0-ulp functions for the vector targets; the
 // portable target calls the C library lane by lane.
 #if HWY_TARGET == HWY_AVX2
 inline Lanes atan2(Lanes y, Lanes x) { return Lanes(LaneVector{Sleef_atan2d4_u10avx2(y.v.raw, x.v.raw)}); }
 inline Lanes log(Lanes a) { return Lanes(LaneVector{Sleef_logd4_u10avx2(a.v.raw)}); }
 inline Lanes asinh(Lanes a) { return Lanes(LaneVector{Sleef_asinhd4_u10avx2(a.v.raw)}); }
+inline Lanes cos(Lanes a) { return Lanes(LaneVector{Sleef_cosd4_u10avx2(a.v.raw)}); }
 #elif HWY_TARGET == HWY_AVX3
 inline Lanes atan2(Lanes y, Lanes x) { return Lanes(LaneVector{Sleef_atan2d8_u10avx512f(y.v.raw, x.v.raw)}); }
 inline Lanes log(Lanes a) { return Lanes(LaneVector{Sleef_logd8_u10avx512f(a.v.raw)}); }
 inline Lanes asinh(Lanes a) { return Lanes(LaneVector{Sleef_asinhd8_u10avx512f(a.v.raw)}); }
+inline Lanes cos(Lanes a) { return Lanes(LaneVector{Sleef_cosd8_u10avx512f(a.v.raw)}); }
 #else
 /// function(a_k, b_k) in every lane k, by the C library.
 template <class Function>
@@ -164,6 +166,9 @@ inline Lanes log(Lanes a) {
 }
 inline Lanes asinh(Lanes a) {
   return per_lane([](double u, double) { return std::asinh(u); }, a, a);
+}
+inline Lanes cos(Lanes a) {
+  return per_lane([](double u, double) { return std::cos(u); }, a, a);
 }
 #endif
 
@@ -204,6 +209,21 @@ inline int miller_steps<SimdLanes>(const SimdLanes& rho) {
 }  // namespace detail
 
 namespace detail {
+/// The Gauss rules chosen by the poles' distance (gauss_moments.hpp): the
+/// most nodes any active lane needs, so that the lanes stay together (more
+/// nodes only make a lane's rule more exact: its result differs from the
+/// scalar path's by rounding).
+template <>
+inline int rule_nodes<SimdLanes>(const SimdLanes& x, double x7, double x10, double x15, int most) {
+  const simd::Divergence& divergence = *simd::HWY_NAMESPACE::current_divergence;
+  alignas(64) double v[simd::max_lanes];
+  hwy::HWY_NAMESPACE::Store(x.v, simd::HWY_NAMESPACE::LaneTag(), v);
+  int nodes = 0;
+  for (std::size_t k = 0; k < simd::HWY_NAMESPACE::lane_count(); ++k)
+    if (divergence.active() >> k & 1u) nodes = std::max(nodes, rule_nodes<double>(v[k], x7, x10, x15, most));
+  return nodes;
+}
+
 /// SCALIS segments' Gauss panels (gauss_moments.hpp) with the pole within
 /// rounding of a panel start: the active lanes go to the scalar path, which
 /// reports the error.

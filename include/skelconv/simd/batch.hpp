@@ -14,6 +14,7 @@
 namespace skelconv {
 class Segment;
 class ScalisSegment;
+class Polygon;
 }
 
 namespace skelconv::simd {
@@ -52,6 +53,11 @@ bool has_vector_kernel(const Segment& segment);
 /// The same for a SCALIS segment (ScalisSegment::value_and_gradient per point).
 BatchCounts value_and_gradient(const ScalisSegment& segment, PointsSoA points, FieldSoA out);
 bool has_vector_kernel(const ScalisSegment& segment);
+
+/// The same for a polygon (Polygon::value_and_gradient per point; inverse
+/// and Cauchy kernels of src/simd/polygon_kernels.hpp run vectorised).
+BatchCounts value_and_gradient(const Polygon& polygon, PointsSoA points, FieldSoA out);
+bool has_vector_kernel(const Polygon& polygon);
 
 /// The instruction set the next call will use: "AVX3" (AVX-512), "AVX2", "SCALAR".
 std::string active_target();
