@@ -82,7 +82,7 @@ void polygon_edge_cauchy_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
 /// Operations per edge: 41 +, 61 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 444 +, 905 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 446 +, 1020 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -160,7 +160,7 @@ void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
 /// Operations per edge: 41 +, 61 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 464 +, 906 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 466 +, 1021 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -242,7 +242,7 @@ void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 39 +, 53 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 445 +, 864 ×, 144 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 447 +, 979 ×, 145 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -318,7 +318,7 @@ void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 42 +, 60 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 895 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 451 +, 1011 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -403,7 +403,7 @@ void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 42 +, 60 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 469 +, 916 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 471 +, 1032 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -492,7 +492,7 @@ void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 41 +, 61 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 444 +, 905 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 446 +, 1020 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -569,7 +569,7 @@ void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 44 +, 74 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 956 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 450 +, 1072 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -657,7 +657,7 @@ void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 44 +, 74 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 468 +, 957 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 470 +, 1073 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -749,7 +749,7 @@ void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 42 +, 60 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 895 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 451 +, 1011 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -833,7 +833,7 @@ void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 45 +, 75 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 453 +, 927 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 455 +, 1044 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -928,7 +928,7 @@ void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 45 +, 75 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 473 +, 948 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 475 +, 1065 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1027,7 +1027,7 @@ void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 44 +, 74 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 956 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 450 +, 1072 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1114,7 +1114,7 @@ void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 47 +, 93 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 1008 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 454 +, 1125 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1212,7 +1212,7 @@ void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 47 +, 93 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 472 +, 1009 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 474 +, 1126 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1314,7 +1314,7 @@ void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 45 +, 75 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 453 +, 927 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 455 +, 1044 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1408,7 +1408,7 @@ void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 48 +, 88 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 457 +, 960 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 459 +, 1078 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1511,7 +1511,7 @@ void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 48 +, 88 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 477 +, 981 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 479 +, 1099 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1618,7 +1618,7 @@ void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 47 +, 93 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 1008 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 454 +, 1125 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1715,7 +1715,7 @@ void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 50 +, 108 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 456 +, 1060 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 458 +, 1178 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1821,7 +1821,7 @@ void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 50 +, 108 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 476 +, 1061 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 478 +, 1179 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1931,7 +1931,7 @@ void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 48 +, 88 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 457 +, 960 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 459 +, 1078 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2033,7 +2033,7 @@ void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 51 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 461 +, 993 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 463 +, 1112 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2144,7 +2144,7 @@ void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 51 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 481 +, 1014 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 483 +, 1133 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2259,7 +2259,7 @@ void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 50 +, 108 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 456 +, 1060 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 458 +, 1178 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2364,7 +2364,7 @@ void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 53 +, 123 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 460 +, 1113 ×, 152 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 462 +, 1232 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2478,7 +2478,7 @@ void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 53 +, 123 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 480 +, 1114 ×, 152 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 482 +, 1233 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2596,7 +2596,7 @@ void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 51 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 461 +, 993 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 463 +, 1112 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2706,7 +2706,7 @@ void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 54 +, 114 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 465 +, 1027 ×, 154 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 467 +, 1147 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2825,7 +2825,7 @@ void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 54 +, 114 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 485 +, 1048 ×, 154 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 487 +, 1168 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

@@ -79,7 +79,7 @@ void polygon_edge_inverse_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
 /// Operations per edge: 40 +, 52 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 443 +, 896 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 445 +, 1011 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -154,7 +154,7 @@ void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
 /// Operations per edge: 40 +, 52 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 463 +, 897 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 465 +, 1012 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -233,7 +233,7 @@ void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 38 +, 43 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 444 +, 854 ×, 144 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 446 +, 969 ×, 145 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -306,7 +306,7 @@ void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 41 +, 50 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 885 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 450 +, 1001 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -388,7 +388,7 @@ void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 41 +, 50 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 468 +, 906 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 470 +, 1022 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -474,7 +474,7 @@ void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 40 +, 52 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 443 +, 896 ×, 144 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 445 +, 1011 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -548,7 +548,7 @@ void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 43 +, 65 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 447 +, 947 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 449 +, 1063 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -633,7 +633,7 @@ void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 43 +, 65 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 467 +, 948 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 469 +, 1064 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -722,7 +722,7 @@ void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 41 +, 50 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 885 ×, 146 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 450 +, 1001 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -803,7 +803,7 @@ void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 44 +, 65 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 917 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 454 +, 1034 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -895,7 +895,7 @@ void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 44 +, 65 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 472 +, 938 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 474 +, 1055 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -991,7 +991,7 @@ void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 43 +, 65 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 447 +, 947 ×, 146 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 449 +, 1063 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1075,7 +1075,7 @@ void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 46 +, 84 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 999 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 453 +, 1116 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1170,7 +1170,7 @@ void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 46 +, 84 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 471 +, 1000 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 473 +, 1117 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1269,7 +1269,7 @@ void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 44 +, 65 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 917 ×, 148 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 454 +, 1034 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1360,7 +1360,7 @@ void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 47 +, 78 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 456 +, 950 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 458 +, 1068 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1460,7 +1460,7 @@ void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 47 +, 78 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 476 +, 971 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 478 +, 1089 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1564,7 +1564,7 @@ void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 46 +, 84 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 999 ×, 148 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 453 +, 1116 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1658,7 +1658,7 @@ void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 49 +, 99 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 455 +, 1051 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 457 +, 1169 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1761,7 +1761,7 @@ void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 49 +, 99 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 475 +, 1052 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 477 +, 1170 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1868,7 +1868,7 @@ void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 47 +, 78 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 456 +, 950 ×, 150 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 458 +, 1068 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1967,7 +1967,7 @@ void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 50 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 460 +, 983 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 462 +, 1102 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2075,7 +2075,7 @@ void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 50 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 480 +, 1004 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 482 +, 1123 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2187,7 +2187,7 @@ void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 49 +, 99 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 455 +, 1051 ×, 150 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 457 +, 1169 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2289,7 +2289,7 @@ void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 52 +, 114 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 459 +, 1104 ×, 152 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 461 +, 1223 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2400,7 +2400,7 @@ void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 52 +, 114 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 479 +, 1105 ×, 152 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 481 +, 1224 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2515,7 +2515,7 @@ void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 /// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 50 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 460 +, 983 ×, 152 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 462 +, 1102 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2622,7 +2622,7 @@ void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 /// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 53 +, 104 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 464 +, 1017 ×, 154 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 466 +, 1137 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2738,7 +2738,7 @@ void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 /// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 53 +, 104 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 484 +, 1038 ×, 154 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Longest path: 486 +, 1158 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

@@ -20,7 +20,7 @@ namespace skelconv::generated {
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 29 +, 39 ×, 2 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 112 +, 199 ×, 24 /, 25 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 114 +, 204 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -85,7 +85,7 @@ T segment_cauchy_i1_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 35 +, 53 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 1315 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 609 +, 1544 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i1_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -153,7 +153,7 @@ std::array<T, 3> segment_cauchy_i1_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 36 +, 62 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 263 +, 860 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 265 +, 975 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i1_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -334,7 +334,7 @@ bool segment_cauchy_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 32 +, 43 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 133 +, 221 ×, 24 /, 25 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 135 +, 226 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -401,7 +401,7 @@ T segment_cauchy_i1_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 40 +, 69 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 267 +, 866 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 269 +, 981 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i1_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -491,7 +491,7 @@ std::array<T, 3> segment_cauchy_i1_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 43 +, 74 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 270 +, 871 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 272 +, 986 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i1_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -675,7 +675,7 @@ bool segment_cauchy_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 37 +, 55 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 154 +, 242 ×, 24 /, 25 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 156 +, 247 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -743,7 +743,7 @@ T segment_cauchy_i1_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 46 +, 80 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 273 +, 877 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 275 +, 992 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i1_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -837,7 +837,7 @@ std::array<T, 3> segment_cauchy_i1_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 52 +, 96 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 279 +, 893 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 281 +, 1008 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i1_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1027,7 +1027,7 @@ bool segment_cauchy_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 42 +, 72 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 175 +, 263 ×, 24 /, 25 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 177 +, 268 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1097,7 +1097,7 @@ T segment_cauchy_i1_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 54 +, 101 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 281 +, 898 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 283 +, 1013 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i1_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1194,7 +1194,7 @@ std::array<T, 3> segment_cauchy_i1_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Operations: 61 +, 125 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 288 +, 922 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 290 +, 1037 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i1_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1396,7 +1396,7 @@ bool segment_cauchy_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 32 +, 42 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 377 +, 732 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 379 +, 847 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1455,7 +1455,7 @@ T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 39 +, 62 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 1322 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 612 +, 1551 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1526,7 +1526,7 @@ std::array<T, 3> segment_cauchy_i2_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 39 +, 65 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 267 +, 868 ×, 123 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 269 +, 983 ×, 124 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1675,7 +1675,7 @@ bool segment_cauchy_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 34 +, 47 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 262 +, 847 ×, 122 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 264 +, 962 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1736,7 +1736,7 @@ T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 43 +, 75 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 843 +, 1901 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 845 +, 2244 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1809,7 +1809,7 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 45 +, 83 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 273 +, 884 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 275 +, 999 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1969,7 +1969,7 @@ bool segment_cauchy_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 37 +, 52 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 265 +, 852 ×, 122 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 267 +, 967 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2032,7 +2032,7 @@ T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 48 +, 90 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 276 +, 889 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 278 +, 1004 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2115,7 +2115,7 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 52 +, 100 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 280 +, 901 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 282 +, 1016 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2281,7 +2281,7 @@ bool segment_cauchy_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 42 +, 62 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 270 +, 862 ×, 122 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 272 +, 977 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2348,7 +2348,7 @@ T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 54 +, 106 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 282 +, 903 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 284 +, 1018 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2435,7 +2435,7 @@ std::array<T, 3> segment_cauchy_i2_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 61 +, 123 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 289 +, 921 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 291 +, 1036 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2610,7 +2610,7 @@ bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 30 +, 38 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 374 +, 730 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 376 +, 845 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2667,7 +2667,7 @@ T segment_cauchy_i3_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 37 +, 67 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 1319 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 609 +, 1548 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2737,7 +2737,7 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 37 +, 70 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 615 +, 1339 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 617 +, 1570 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2882,7 +2882,7 @@ bool segment_cauchy_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 33 +, 44 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 605 +, 1306 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 607 +, 1535 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2943,7 +2943,7 @@ T segment_cauchy_i3_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 41 +, 81 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1898 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2241 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3016,7 +3016,7 @@ std::array<T, 3> segment_cauchy_i3_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 44 +, 88 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 271 +, 892 ×, 123 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 273 +, 1007 ×, 124 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3177,7 +3177,7 @@ bool segment_cauchy_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 37 +, 58 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 264 +, 855 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 266 +, 970 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i3_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3260,7 +3260,7 @@ T segment_cauchy_i3_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 47 +, 96 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1074 +, 2479 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1076 +, 2936 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3334,7 +3334,7 @@ std::array<T, 3> segment_cauchy_i3_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 52 +, 114 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 279 +, 921 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 281 +, 1036 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3536,7 +3536,7 @@ bool segment_cauchy_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 42 +, 67 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 269 +, 864 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 271 +, 979 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i3_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3621,7 +3621,7 @@ T segment_cauchy_i3_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 54 +, 120 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 281 +, 924 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 283 +, 1039 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3730,7 +3730,7 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 61 +, 136 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 288 +, 945 ×, 125 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 290 +, 1060 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3940,7 +3940,7 @@ bool segment_cauchy_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 34 +, 46 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 377 +, 736 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 379 +, 851 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4001,7 +4001,7 @@ T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 41 +, 73 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 1325 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 612 +, 1554 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4074,7 +4074,7 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 41 +, 77 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 618 +, 1346 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 620 +, 1577 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4225,7 +4225,7 @@ bool segment_cauchy_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 37 +, 52 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 608 +, 1312 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 610 +, 1541 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4289,7 +4289,7 @@ T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 45 +, 87 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 843 +, 1904 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 845 +, 2247 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4365,7 +4365,7 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 48 +, 96 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 857 +, 1938 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 859 +, 2284 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4520,7 +4520,7 @@ bool segment_cauchy_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 40 +, 62 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1890 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2233 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4586,7 +4586,7 @@ T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 51 +, 102 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1077 +, 2485 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1079 +, 2942 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4663,7 +4663,7 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 55 +, 118 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 283 +, 924 ×, 123 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 285 +, 1039 ×, 124 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4830,7 +4830,7 @@ bool segment_cauchy_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 44 +, 74 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 272 +, 874 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 274 +, 989 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4906,7 +4906,7 @@ T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 57 +, 121 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1312 +, 3068 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1314 +, 3639 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4985,7 +4985,7 @@ std::array<T, 3> segment_cauchy_i4_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 63 +, 143 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 291 +, 950 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 293 +, 1065 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5160,7 +5160,7 @@ bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 32 +, 47 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 374 +, 733 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 376 +, 848 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5220,7 +5220,7 @@ T segment_cauchy_i5_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 39 +, 80 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 1322 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 609 +, 1551 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5292,7 +5292,7 @@ std::array<T, 3> segment_cauchy_i5_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 39 +, 84 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 615 +, 1343 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 617 +, 1574 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5441,7 +5441,7 @@ bool segment_cauchy_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 35 +, 57 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 605 +, 1309 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 607 +, 1538 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5504,7 +5504,7 @@ T segment_cauchy_i5_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 43 +, 94 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1901 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2244 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5579,7 +5579,7 @@ std::array<T, 3> segment_cauchy_i5_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 46 +, 105 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 854 +, 1935 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 856 +, 2281 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5732,7 +5732,7 @@ bool segment_cauchy_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 38 +, 68 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1887 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2230 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5798,7 +5798,7 @@ T segment_cauchy_i5_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 49 +, 111 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1074 +, 2482 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1076 +, 2939 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5874,7 +5874,7 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 53 +, 128 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1095 +, 2531 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1097 +, 2992 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6033,7 +6033,7 @@ bool segment_cauchy_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 43 +, 80 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1070 +, 2467 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1072 +, 2924 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6100,7 +6100,7 @@ T segment_cauchy_i5_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 55 +, 131 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1309 +, 3065 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1311 +, 3636 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6179,7 +6179,7 @@ std::array<T, 3> segment_cauchy_i5_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 62 +, 153 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 289 +, 963 ×, 123 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 291 +, 1078 ×, 124 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6355,7 +6355,7 @@ bool segment_cauchy_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 36 +, 57 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 377 +, 739 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 379 +, 854 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6420,7 +6420,7 @@ T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 43 +, 82 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 1328 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 612 +, 1557 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6495,7 +6495,7 @@ std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 43 +, 86 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 618 +, 1350 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 620 +, 1581 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6650,7 +6650,7 @@ bool segment_cauchy_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 39 +, 63 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 608 +, 1315 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 610 +, 1544 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6716,7 +6716,7 @@ T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 47 +, 96 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 843 +, 1907 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 845 +, 2250 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6794,7 +6794,7 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 50 +, 107 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 857 +, 1942 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 859 +, 2288 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6953,7 +6953,7 @@ bool segment_cauchy_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 42 +, 74 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1893 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2236 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7022,7 +7022,7 @@ T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 53 +, 113 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1077 +, 2488 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1079 +, 2945 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7101,7 +7101,7 @@ std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 57 +, 130 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1098 +, 2538 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1100 +, 2999 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7266,7 +7266,7 @@ bool segment_cauchy_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 47 +, 86 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2473 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2930 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7336,7 +7336,7 @@ T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 59 +, 133 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1312 +, 3071 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1314 +, 3642 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7418,7 +7418,7 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 66 +, 155 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1341 +, 3138 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1343 +, 3714 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7587,7 +7587,7 @@ bool segment_cauchy_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 34 +, 62 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 374 +, 736 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 376 +, 851 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7651,7 +7651,7 @@ T segment_cauchy_i7_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 41 +, 91 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 1324 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 609 +, 1553 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7725,7 +7725,7 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 41 +, 95 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 615 +, 1346 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 617 +, 1577 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7878,7 +7878,7 @@ bool segment_cauchy_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 37 +, 70 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 605 +, 1312 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 607 +, 1541 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7943,7 +7943,7 @@ T segment_cauchy_i7_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 45 +, 106 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1903 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2246 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8020,7 +8020,7 @@ std::array<T, 3> segment_cauchy_i7_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 48 +, 119 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 854 +, 1938 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 856 +, 2284 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8177,7 +8177,7 @@ bool segment_cauchy_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 40 +, 81 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1890 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2233 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8245,7 +8245,7 @@ T segment_cauchy_i7_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 51 +, 126 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1074 +, 2484 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1076 +, 2941 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8323,7 +8323,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 55 +, 143 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1095 +, 2534 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1097 +, 2995 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8486,7 +8486,7 @@ bool segment_cauchy_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 45 +, 95 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1070 +, 2470 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1072 +, 2927 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8555,7 +8555,7 @@ T segment_cauchy_i7_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 57 +, 146 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1309 +, 3067 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1311 +, 3638 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8636,7 +8636,7 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 64 +, 170 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1338 +, 3134 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1340 +, 3710 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8803,7 +8803,7 @@ bool segment_cauchy_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 38 +, 66 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 377 +, 742 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 379 +, 857 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8870,7 +8870,7 @@ T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 45 +, 91 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 1330 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 612 +, 1559 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8947,7 +8947,7 @@ std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 45 +, 95 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 618 +, 1353 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 620 +, 1584 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9106,7 +9106,7 @@ bool segment_cauchy_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 41 +, 72 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 608 +, 1318 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 610 +, 1547 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9174,7 +9174,7 @@ T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 49 +, 105 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 843 +, 1909 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 845 +, 2252 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9254,7 +9254,7 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 52 +, 116 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 857 +, 1945 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 859 +, 2291 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9417,7 +9417,7 @@ bool segment_cauchy_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 44 +, 83 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1896 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2239 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9488,7 +9488,7 @@ T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 55 +, 122 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1077 +, 2490 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1079 +, 2947 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9569,7 +9569,7 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 59 +, 139 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1098 +, 2541 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1100 +, 3002 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9738,7 +9738,7 @@ bool segment_cauchy_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 49 +, 97 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2476 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2933 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9810,7 +9810,7 @@ T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 61 +, 142 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1312 +, 3073 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1314 +, 3644 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9894,7 +9894,7 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 68 +, 166 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1341 +, 3141 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1343 +, 3717 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10067,7 +10067,7 @@ bool segment_cauchy_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 36 +, 73 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 374 +, 738 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 376 +, 853 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10133,7 +10133,7 @@ T segment_cauchy_i9_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 43 +, 102 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 1327 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 609 +, 1556 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10209,7 +10209,7 @@ std::array<T, 3> segment_cauchy_i9_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 43 +, 106 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 615 +, 1349 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 617 +, 1580 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10366,7 +10366,7 @@ bool segment_cauchy_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 39 +, 81 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 605 +, 1314 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 607 +, 1543 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10433,7 +10433,7 @@ T segment_cauchy_i9_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 47 +, 116 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1906 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2249 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10512,7 +10512,7 @@ std::array<T, 3> segment_cauchy_i9_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 50 +, 129 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 854 +, 1941 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 856 +, 2287 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10673,7 +10673,7 @@ bool segment_cauchy_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 42 +, 93 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1892 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2235 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10743,7 +10743,7 @@ T segment_cauchy_i9_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 53 +, 135 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1074 +, 2487 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1076 +, 2944 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10823,7 +10823,7 @@ std::array<T, 3> segment_cauchy_i9_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 57 +, 153 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1095 +, 2537 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1097 +, 2998 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10990,7 +10990,7 @@ bool segment_cauchy_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 47 +, 110 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1070 +, 2472 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1072 +, 2929 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11061,7 +11061,7 @@ T segment_cauchy_i9_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 59 +, 156 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1309 +, 3070 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1311 +, 3641 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11144,7 +11144,7 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 66 +, 183 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1338 +, 3137 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1340 +, 3713 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11315,7 +11315,7 @@ bool segment_cauchy_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 40 +, 75 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 377 +, 744 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 379 +, 859 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11384,7 +11384,7 @@ T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 47 +, 100 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 1333 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 612 +, 1562 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11463,7 +11463,7 @@ std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 47 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 618 +, 1356 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 620 +, 1587 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11626,7 +11626,7 @@ bool segment_cauchy_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 43 +, 81 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 608 +, 1320 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 610 +, 1549 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11696,7 +11696,7 @@ T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 51 +, 115 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 843 +, 1912 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 845 +, 2255 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11778,7 +11778,7 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 54 +, 126 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 857 +, 1948 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 859 +, 2294 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11945,7 +11945,7 @@ bool segment_cauchy_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 46 +, 92 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1898 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2241 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12018,7 +12018,7 @@ T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 57 +, 133 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1077 +, 2493 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1079 +, 2950 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12101,7 +12101,7 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 61 +, 150 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1098 +, 2544 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1100 +, 3005 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12274,7 +12274,7 @@ bool segment_cauchy_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 51 +, 106 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2478 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2935 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12348,7 +12348,7 @@ T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 63 +, 153 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1312 +, 3076 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1314 +, 3647 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12434,7 +12434,7 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 70 +, 177 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1341 +, 3144 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1343 +, 3720 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12611,7 +12611,7 @@ bool segment_cauchy_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 38 +, 84 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 374 +, 741 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 376 +, 856 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12679,7 +12679,7 @@ T segment_cauchy_i11_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 45 +, 113 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 1329 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 609 +, 1558 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12757,7 +12757,7 @@ std::array<T, 3> segment_cauchy_i11_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 45 +, 117 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 615 +, 1352 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 617 +, 1583 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12918,7 +12918,7 @@ bool segment_cauchy_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 41 +, 92 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 605 +, 1317 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 607 +, 1546 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12987,7 +12987,7 @@ T segment_cauchy_i11_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 49 +, 128 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1908 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2251 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13068,7 +13068,7 @@ std::array<T, 3> segment_cauchy_i11_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 52 +, 141 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 854 +, 1944 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 856 +, 2290 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13233,7 +13233,7 @@ bool segment_cauchy_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 44 +, 103 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1895 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2238 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13305,7 +13305,7 @@ T segment_cauchy_i11_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 55 +, 148 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1074 +, 2489 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1076 +, 2946 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13387,7 +13387,7 @@ std::array<T, 3> segment_cauchy_i11_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 59 +, 165 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1095 +, 2540 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1097 +, 3001 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13558,7 +13558,7 @@ bool segment_cauchy_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 49 +, 119 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1070 +, 2475 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1072 +, 2932 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13631,7 +13631,7 @@ T segment_cauchy_i11_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 61 +, 168 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1309 +, 3072 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1311 +, 3643 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13716,7 +13716,7 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 68 +, 194 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1338 +, 3140 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1340 +, 3716 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13891,7 +13891,7 @@ bool segment_cauchy_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 42 +, 84 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 377 +, 747 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 379 +, 862 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13962,7 +13962,7 @@ T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 49 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 1335 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 612 +, 1564 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14043,7 +14043,7 @@ std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 49 +, 113 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 618 +, 1359 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 620 +, 1590 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14210,7 +14210,7 @@ bool segment_cauchy_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 45 +, 90 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 608 +, 1323 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 610 +, 1552 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14282,7 +14282,7 @@ T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 53 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 843 +, 1914 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 845 +, 2257 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14366,7 +14366,7 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 56 +, 134 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 857 +, 1951 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 859 +, 2297 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14537,7 +14537,7 @@ bool segment_cauchy_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 48 +, 102 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1901 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2244 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14612,7 +14612,7 @@ T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 59 +, 140 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1077 +, 2495 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1079 +, 2952 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14697,7 +14697,7 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 63 +, 158 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1098 +, 2547 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1100 +, 3008 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14874,7 +14874,7 @@ bool segment_cauchy_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 53 +, 117 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2481 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2938 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14950,7 +14950,7 @@ T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 65 +, 161 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1312 +, 3078 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1314 +, 3649 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15038,7 +15038,7 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 72 +, 186 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1341 +, 3147 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1343 +, 3723 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15219,7 +15219,7 @@ bool segment_cauchy_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 40 +, 95 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 374 +, 743 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 376 +, 858 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15289,7 +15289,7 @@ T segment_cauchy_i13_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 47 +, 124 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 1332 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 609 +, 1561 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15369,7 +15369,7 @@ std::array<T, 3> segment_cauchy_i13_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 47 +, 128 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 615 +, 1355 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 617 +, 1586 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15534,7 +15534,7 @@ bool segment_cauchy_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 43 +, 103 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 605 +, 1319 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 607 +, 1548 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15605,7 +15605,7 @@ T segment_cauchy_i13_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 51 +, 139 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1911 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2254 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15688,7 +15688,7 @@ std::array<T, 3> segment_cauchy_i13_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 54 +, 152 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 854 +, 1947 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 856 +, 2293 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15857,7 +15857,7 @@ bool segment_cauchy_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 46 +, 115 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1897 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2240 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15931,7 +15931,7 @@ T segment_cauchy_i13_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 57 +, 159 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1074 +, 2492 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1076 +, 2949 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16015,7 +16015,7 @@ std::array<T, 3> segment_cauchy_i13_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 61 +, 177 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1095 +, 2543 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1097 +, 3004 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16190,7 +16190,7 @@ bool segment_cauchy_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 51 +, 132 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1070 +, 2477 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1072 +, 2934 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16265,7 +16265,7 @@ T segment_cauchy_i13_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 63 +, 181 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1309 +, 3075 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1311 +, 3646 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16352,7 +16352,7 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 70 +, 208 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1338 +, 3143 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1340 +, 3719 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16531,7 +16531,7 @@ bool segment_cauchy_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 44 +, 93 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 377 +, 749 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 379 +, 864 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16604,7 +16604,7 @@ T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 51 +, 118 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 1338 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 612 +, 1567 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16687,7 +16687,7 @@ std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 51 +, 122 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 618 +, 1362 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 620 +, 1593 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16858,7 +16858,7 @@ bool segment_cauchy_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 47 +, 99 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 608 +, 1325 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 610 +, 1554 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16932,7 +16932,7 @@ T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 55 +, 132 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 843 +, 1917 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 845 +, 2260 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17018,7 +17018,7 @@ std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 58 +, 143 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 857 +, 1954 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 859 +, 2300 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17193,7 +17193,7 @@ bool segment_cauchy_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 50 +, 110 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1903 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2246 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17270,7 +17270,7 @@ T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 61 +, 149 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1077 +, 2498 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1079 +, 2955 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17357,7 +17357,7 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 65 +, 166 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1098 +, 2550 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1100 +, 3011 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17538,7 +17538,7 @@ bool segment_cauchy_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 55 +, 124 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2483 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2940 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17616,7 +17616,7 @@ T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 67 +, 169 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1312 +, 3081 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1314 +, 3652 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17706,7 +17706,7 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 74 +, 193 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1341 +, 3150 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1343 +, 3726 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17891,7 +17891,7 @@ bool segment_cauchy_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 42 +, 106 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 374 +, 746 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 376 +, 861 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17963,7 +17963,7 @@ T segment_cauchy_i15_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 49 +, 135 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 1333 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 609 +, 1562 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18045,7 +18045,7 @@ std::array<T, 3> segment_cauchy_i15_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 49 +, 139 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 615 +, 1357 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 617 +, 1588 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18214,7 +18214,7 @@ bool segment_cauchy_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 45 +, 114 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 605 +, 1322 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 607 +, 1551 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18287,7 +18287,7 @@ T segment_cauchy_i15_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 53 +, 150 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1912 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2255 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18372,7 +18372,7 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 56 +, 163 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 854 +, 1949 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 856 +, 2295 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18545,7 +18545,7 @@ bool segment_cauchy_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 48 +, 126 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1900 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2243 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18621,7 +18621,7 @@ T segment_cauchy_i15_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 59 +, 170 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1074 +, 2493 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1076 +, 2950 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18707,7 +18707,7 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 63 +, 188 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1095 +, 2545 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1097 +, 3006 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18886,7 +18886,7 @@ bool segment_cauchy_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 53 +, 143 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1070 +, 2480 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1072 +, 2937 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18963,7 +18963,7 @@ T segment_cauchy_i15_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 65 +, 191 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1309 +, 3076 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1311 +, 3647 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19052,7 +19052,7 @@ std::array<T, 3> segment_cauchy_i15_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 72 +, 218 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1338 +, 3145 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1340 +, 3721 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19235,7 +19235,7 @@ bool segment_cauchy_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 46 +, 102 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 377 +, 752 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 379 +, 867 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19310,7 +19310,7 @@ T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 53 +, 126 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 1339 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 612 +, 1568 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19395,7 +19395,7 @@ std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 53 +, 130 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 618 +, 1364 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 620 +, 1595 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19570,7 +19570,7 @@ bool segment_cauchy_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 49 +, 108 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 608 +, 1328 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 610 +, 1557 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19646,7 +19646,7 @@ T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 57 +, 141 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 843 +, 1918 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 845 +, 2261 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19734,7 +19734,7 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 60 +, 152 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 857 +, 1956 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 859 +, 2302 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19913,7 +19913,7 @@ bool segment_cauchy_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 52 +, 119 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 840 +, 1906 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 842 +, 2249 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19992,7 +19992,7 @@ T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 63 +, 159 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1077 +, 2499 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1079 +, 2956 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20081,7 +20081,7 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 67 +, 176 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1098 +, 2552 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1100 +, 3013 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20266,7 +20266,7 @@ bool segment_cauchy_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 57 +, 133 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2486 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2943 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20346,7 +20346,7 @@ T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 69 +, 179 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1312 +, 3082 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1314 +, 3653 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20438,7 +20438,7 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 76 +, 203 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1341 +, 3152 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1343 +, 3728 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

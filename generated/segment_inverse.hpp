@@ -20,7 +20,7 @@ namespace skelconv::generated {
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt
 /// Operations: 26 +, 32 ×, 2 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 109 +, 192 ×, 24 /, 23 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 111 +, 197 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -77,7 +77,7 @@ T segment_inverse_i1_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt
 /// Operations: 32 +, 45 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1307 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1536 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i1_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -140,7 +140,7 @@ std::array<T, 3> segment_inverse_i1_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt
 /// Operations: 33 +, 54 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 260 +, 852 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 262 +, 967 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i1_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -304,7 +304,7 @@ bool segment_inverse_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt
 /// Operations: 29 +, 36 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 130 +, 214 ×, 24 /, 23 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 132 +, 219 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -363,7 +363,7 @@ T segment_inverse_i1_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt
 /// Operations: 37 +, 61 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 264 +, 858 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 266 +, 973 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i1_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -446,7 +446,7 @@ std::array<T, 3> segment_inverse_i1_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt
 /// Operations: 40 +, 66 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 267 +, 863 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 269 +, 978 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i1_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -613,7 +613,7 @@ bool segment_inverse_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt
 /// Operations: 34 +, 48 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 151 +, 235 ×, 24 /, 23 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 153 +, 240 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -673,7 +673,7 @@ T segment_inverse_i1_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt
 /// Operations: 43 +, 72 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 270 +, 869 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 272 +, 984 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i1_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -760,7 +760,7 @@ std::array<T, 3> segment_inverse_i1_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt
 /// Operations: 49 +, 88 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 276 +, 885 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 278 +, 1000 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i1_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -933,7 +933,7 @@ bool segment_inverse_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt
 /// Operations: 39 +, 65 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 172 +, 256 ×, 24 /, 23 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 174 +, 261 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -995,7 +995,7 @@ T segment_inverse_i1_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt
 /// Operations: 51 +, 93 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 278 +, 890 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 280 +, 1005 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i1_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1086,7 +1086,7 @@ std::array<T, 3> segment_inverse_i1_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt
 /// Operations: 58 +, 117 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 285 +, 914 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 287 +, 1029 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i1_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1270,7 +1270,7 @@ bool segment_inverse_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
 /// Operations: 28 +, 34 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 373 +, 724 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 375 +, 839 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1323,7 +1323,7 @@ T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
 /// Operations: 35 +, 53 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 1313 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 608 +, 1542 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1388,7 +1388,7 @@ std::array<T, 3> segment_inverse_i2_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
 /// Operations: 35 +, 56 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 263 +, 859 ×, 123 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 265 +, 974 ×, 124 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1529,7 +1529,7 @@ bool segment_inverse_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
 /// Operations: 30 +, 39 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 258 +, 839 ×, 122 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 260 +, 954 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1584,7 +1584,7 @@ T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
 /// Operations: 39 +, 66 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1892 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 841 +, 2235 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1651,7 +1651,7 @@ std::array<T, 3> segment_inverse_i2_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
 /// Operations: 41 +, 74 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 269 +, 875 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 271 +, 990 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1799,7 +1799,7 @@ bool segment_inverse_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
 /// Operations: 33 +, 44 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 261 +, 844 ×, 122 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 263 +, 959 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1856,7 +1856,7 @@ T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
 /// Operations: 44 +, 81 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 272 +, 880 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 274 +, 995 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1933,7 +1933,7 @@ std::array<T, 3> segment_inverse_i2_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
 /// Operations: 48 +, 91 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 276 +, 892 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 278 +, 1007 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2085,7 +2085,7 @@ bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
 /// Operations: 38 +, 54 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 266 +, 854 ×, 122 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 268 +, 969 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2146,7 +2146,7 @@ T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
 /// Operations: 50 +, 97 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 278 +, 894 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 280 +, 1009 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2227,7 +2227,7 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
 /// Operations: 57 +, 114 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 285 +, 912 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 287 +, 1027 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2390,7 +2390,7 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
 /// Operations: 27 +, 31 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 371 +, 723 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 373 +, 838 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2442,7 +2442,7 @@ T segment_inverse_i3_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
 /// Operations: 34 +, 59 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1311 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1540 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2507,7 +2507,7 @@ std::array<T, 3> segment_inverse_i3_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
 /// Operations: 34 +, 62 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 612 +, 1331 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 614 +, 1562 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2642,7 +2642,7 @@ bool segment_inverse_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt
 /// Operations: 30 +, 37 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 602 +, 1299 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 604 +, 1528 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2698,7 +2698,7 @@ T segment_inverse_i3_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt
 /// Operations: 38 +, 73 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1890 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2233 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2766,7 +2766,7 @@ std::array<T, 3> segment_inverse_i3_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt
 /// Operations: 41 +, 80 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 268 +, 884 ×, 123 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 270 +, 999 ×, 124 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2920,7 +2920,7 @@ bool segment_inverse_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt
 /// Operations: 34 +, 51 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 261 +, 848 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 263 +, 963 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i3_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2995,7 +2995,7 @@ T segment_inverse_i3_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt
 /// Operations: 44 +, 88 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1071 +, 2471 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1073 +, 2928 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3064,7 +3064,7 @@ std::array<T, 3> segment_inverse_i3_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt
 /// Operations: 49 +, 106 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 276 +, 913 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 278 +, 1028 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3251,7 +3251,7 @@ bool segment_inverse_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt
 /// Operations: 39 +, 60 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 266 +, 857 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 268 +, 972 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i3_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3330,7 +3330,7 @@ T segment_inverse_i3_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt
 /// Operations: 51 +, 112 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 278 +, 916 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 280 +, 1031 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3431,7 +3431,7 @@ std::array<T, 3> segment_inverse_i3_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt
 /// Operations: 58 +, 128 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 285 +, 937 ×, 125 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 287 +, 1052 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3628,7 +3628,7 @@ bool segment_inverse_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 30 +, 38 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 373 +, 728 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 375 +, 843 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3683,7 +3683,7 @@ T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 37 +, 64 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 1316 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 608 +, 1545 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3750,7 +3750,7 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 37 +, 68 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 614 +, 1337 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 616 +, 1568 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3889,7 +3889,7 @@ bool segment_inverse_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 33 +, 44 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1304 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1533 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3947,7 +3947,7 @@ T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 41 +, 78 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1895 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 841 +, 2238 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4017,7 +4017,7 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 44 +, 87 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1929 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 855 +, 2275 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4160,7 +4160,7 @@ bool segment_inverse_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
 /// Operations: 36 +, 54 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 836 +, 1882 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 838 +, 2225 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4220,7 +4220,7 @@ T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
 /// Operations: 47 +, 93 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2476 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2933 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4291,7 +4291,7 @@ std::array<T, 3> segment_inverse_i4_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
 /// Operations: 51 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 279 +, 915 ×, 123 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 281 +, 1030 ×, 124 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4446,7 +4446,7 @@ bool segment_inverse_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
 /// Operations: 40 +, 66 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 268 +, 866 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 270 +, 981 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4516,7 +4516,7 @@ T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
 /// Operations: 53 +, 112 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1308 +, 3059 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1310 +, 3630 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4589,7 +4589,7 @@ std::array<T, 3> segment_inverse_i4_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
 /// Operations: 59 +, 134 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 287 +, 941 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Longest path: 289 +, 1056 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4752,7 +4752,7 @@ bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
 /// Operations: 29 +, 40 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 371 +, 726 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 373 +, 841 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4807,7 +4807,7 @@ T segment_inverse_i5_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
 /// Operations: 36 +, 72 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1314 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1543 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4874,7 +4874,7 @@ std::array<T, 3> segment_inverse_i5_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
 /// Operations: 36 +, 76 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 612 +, 1335 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 614 +, 1566 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5013,7 +5013,7 @@ bool segment_inverse_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
 /// Operations: 32 +, 50 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 602 +, 1302 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 604 +, 1531 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5071,7 +5071,7 @@ T segment_inverse_i5_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
 /// Operations: 40 +, 86 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1893 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2236 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5141,7 +5141,7 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
 /// Operations: 43 +, 97 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 851 +, 1927 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 853 +, 2273 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5284,7 +5284,7 @@ bool segment_inverse_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
 /// Operations: 35 +, 61 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 834 +, 1880 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 836 +, 2223 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5345,7 +5345,7 @@ T segment_inverse_i5_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
 /// Operations: 46 +, 103 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1071 +, 2474 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1073 +, 2931 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5416,7 +5416,7 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
 /// Operations: 50 +, 120 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1092 +, 2523 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1094 +, 2984 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5565,7 +5565,7 @@ bool segment_inverse_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt
 /// Operations: 40 +, 73 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1067 +, 2460 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1069 +, 2917 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5627,7 +5627,7 @@ T segment_inverse_i5_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt
 /// Operations: 52 +, 123 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1306 +, 3057 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1308 +, 3628 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5701,7 +5701,7 @@ std::array<T, 3> segment_inverse_i5_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt
 /// Operations: 59 +, 145 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 286 +, 955 ×, 123 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 288 +, 1070 ×, 124 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5867,7 +5867,7 @@ bool segment_inverse_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 32 +, 49 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 373 +, 731 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 375 +, 846 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5926,7 +5926,7 @@ T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 39 +, 73 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 1319 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 608 +, 1548 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5995,7 +5995,7 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 39 +, 77 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 614 +, 1341 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 616 +, 1572 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6138,7 +6138,7 @@ bool segment_inverse_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 35 +, 55 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1307 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1536 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6198,7 +6198,7 @@ T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 43 +, 87 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1898 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 841 +, 2241 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6270,7 +6270,7 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 46 +, 98 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1933 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 855 +, 2279 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6417,7 +6417,7 @@ bool segment_inverse_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 38 +, 66 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 836 +, 1885 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 838 +, 2228 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6480,7 +6480,7 @@ T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 49 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2479 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2936 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6553,7 +6553,7 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 53 +, 121 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1094 +, 2529 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1096 +, 2990 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6706,7 +6706,7 @@ bool segment_inverse_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 43 +, 78 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1069 +, 2465 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1071 +, 2922 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6770,7 +6770,7 @@ T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 55 +, 124 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1308 +, 3062 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1310 +, 3633 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6846,7 +6846,7 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 62 +, 146 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1337 +, 3129 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1339 +, 3705 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7003,7 +7003,7 @@ bool segment_inverse_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
 /// Operations: 31 +, 55 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 371 +, 729 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 373 +, 844 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7062,7 +7062,7 @@ T segment_inverse_i7_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
 /// Operations: 38 +, 83 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1316 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1545 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7131,7 +7131,7 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
 /// Operations: 38 +, 87 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 612 +, 1338 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 614 +, 1569 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7274,7 +7274,7 @@ bool segment_inverse_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
 /// Operations: 34 +, 63 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 602 +, 1305 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 604 +, 1534 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7334,7 +7334,7 @@ T segment_inverse_i7_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
 /// Operations: 42 +, 98 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1895 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2238 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7406,7 +7406,7 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
 /// Operations: 45 +, 111 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 851 +, 1930 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 853 +, 2276 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7553,7 +7553,7 @@ bool segment_inverse_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
 /// Operations: 37 +, 74 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 834 +, 1883 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 836 +, 2226 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7616,7 +7616,7 @@ T segment_inverse_i7_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
 /// Operations: 48 +, 118 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1071 +, 2476 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1073 +, 2933 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7689,7 +7689,7 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
 /// Operations: 52 +, 135 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1092 +, 2526 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1094 +, 2987 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7842,7 +7842,7 @@ bool segment_inverse_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
 /// Operations: 42 +, 88 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1067 +, 2463 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1069 +, 2920 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7906,7 +7906,7 @@ T segment_inverse_i7_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
 /// Operations: 54 +, 138 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1306 +, 3059 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1308 +, 3630 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7982,7 +7982,7 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
 /// Operations: 61 +, 162 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1335 +, 3126 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1337 +, 3702 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8139,7 +8139,7 @@ bool segment_inverse_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 34 +, 58 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 373 +, 734 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 375 +, 849 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8200,7 +8200,7 @@ T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 41 +, 82 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 1321 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 608 +, 1550 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8271,7 +8271,7 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 41 +, 86 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 614 +, 1344 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 616 +, 1575 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8418,7 +8418,7 @@ bool segment_inverse_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 37 +, 64 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1310 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1539 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8480,7 +8480,7 @@ T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 45 +, 96 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1900 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 841 +, 2243 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8554,7 +8554,7 @@ std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 48 +, 107 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1936 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 855 +, 2282 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8705,7 +8705,7 @@ bool segment_inverse_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 40 +, 75 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 836 +, 1888 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 838 +, 2231 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8770,7 +8770,7 @@ T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 51 +, 113 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2481 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2938 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8845,7 +8845,7 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 55 +, 130 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1094 +, 2532 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1096 +, 2993 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9002,7 +9002,7 @@ bool segment_inverse_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 45 +, 89 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1069 +, 2468 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1071 +, 2925 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9068,7 +9068,7 @@ T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 57 +, 133 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1308 +, 3064 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1310 +, 3635 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9146,7 +9146,7 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 64 +, 157 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1337 +, 3132 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1339 +, 3708 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9307,7 +9307,7 @@ bool segment_inverse_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
 /// Operations: 33 +, 66 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 371 +, 731 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 373 +, 846 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9368,7 +9368,7 @@ T segment_inverse_i9_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
 /// Operations: 40 +, 94 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1319 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1548 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9439,7 +9439,7 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
 /// Operations: 40 +, 98 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 612 +, 1341 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 614 +, 1572 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9586,7 +9586,7 @@ bool segment_inverse_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
 /// Operations: 36 +, 74 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 602 +, 1307 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 604 +, 1536 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9648,7 +9648,7 @@ T segment_inverse_i9_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
 /// Operations: 44 +, 108 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1898 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2241 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9722,7 +9722,7 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
 /// Operations: 47 +, 121 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 851 +, 1933 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 853 +, 2279 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9873,7 +9873,7 @@ bool segment_inverse_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
 /// Operations: 39 +, 86 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 834 +, 1885 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 836 +, 2228 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9938,7 +9938,7 @@ T segment_inverse_i9_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
 /// Operations: 50 +, 127 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1071 +, 2479 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1073 +, 2936 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10013,7 +10013,7 @@ std::array<T, 3> segment_inverse_i9_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
 /// Operations: 54 +, 145 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1092 +, 2529 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1094 +, 2990 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10170,7 +10170,7 @@ bool segment_inverse_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
 /// Operations: 44 +, 103 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1067 +, 2465 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1069 +, 2922 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10236,7 +10236,7 @@ T segment_inverse_i9_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
 /// Operations: 56 +, 148 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1306 +, 3062 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1308 +, 3633 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10314,7 +10314,7 @@ std::array<T, 3> segment_inverse_i9_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
 /// Operations: 63 +, 175 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1335 +, 3129 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1337 +, 3705 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10475,7 +10475,7 @@ bool segment_inverse_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 36 +, 67 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 373 +, 736 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 375 +, 851 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10538,7 +10538,7 @@ T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 43 +, 91 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 1324 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 608 +, 1553 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10611,7 +10611,7 @@ std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 43 +, 95 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 614 +, 1347 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 616 +, 1578 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10762,7 +10762,7 @@ bool segment_inverse_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 39 +, 73 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1312 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1541 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10826,7 +10826,7 @@ T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 47 +, 106 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1903 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 841 +, 2246 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10902,7 +10902,7 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 50 +, 117 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1939 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 855 +, 2285 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11057,7 +11057,7 @@ bool segment_inverse_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 42 +, 84 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 836 +, 1890 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 838 +, 2233 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11124,7 +11124,7 @@ T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 53 +, 124 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2484 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2941 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11201,7 +11201,7 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 57 +, 141 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1094 +, 2535 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1096 +, 2996 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11362,7 +11362,7 @@ bool segment_inverse_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 47 +, 98 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1069 +, 2470 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1071 +, 2927 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11430,7 +11430,7 @@ T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 59 +, 144 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1308 +, 3067 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1310 +, 3638 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11510,7 +11510,7 @@ std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 66 +, 168 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1337 +, 3135 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1339 +, 3711 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11675,7 +11675,7 @@ bool segment_inverse_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
 /// Operations: 35 +, 77 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 371 +, 734 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 373 +, 849 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11738,7 +11738,7 @@ T segment_inverse_i11_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
 /// Operations: 42 +, 105 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1321 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1550 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11811,7 +11811,7 @@ std::array<T, 3> segment_inverse_i11_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
 /// Operations: 42 +, 109 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 612 +, 1344 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 614 +, 1575 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11962,7 +11962,7 @@ bool segment_inverse_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
 /// Operations: 38 +, 85 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 602 +, 1310 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 604 +, 1539 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12026,7 +12026,7 @@ T segment_inverse_i11_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
 /// Operations: 46 +, 120 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1900 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2243 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12102,7 +12102,7 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
 /// Operations: 49 +, 133 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 851 +, 1936 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 853 +, 2282 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12257,7 +12257,7 @@ bool segment_inverse_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
 /// Operations: 41 +, 96 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 834 +, 1888 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 836 +, 2231 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12324,7 +12324,7 @@ T segment_inverse_i11_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
 /// Operations: 52 +, 140 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1071 +, 2481 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1073 +, 2938 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12401,7 +12401,7 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
 /// Operations: 56 +, 157 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1092 +, 2532 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1094 +, 2993 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12562,7 +12562,7 @@ bool segment_inverse_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
 /// Operations: 46 +, 112 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1067 +, 2468 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1069 +, 2925 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12630,7 +12630,7 @@ T segment_inverse_i11_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
 /// Operations: 58 +, 160 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1306 +, 3064 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1308 +, 3635 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12710,7 +12710,7 @@ std::array<T, 3> segment_inverse_i11_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
 /// Operations: 65 +, 186 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1335 +, 3132 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1337 +, 3708 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12875,7 +12875,7 @@ bool segment_inverse_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 38 +, 76 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 373 +, 739 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 375 +, 854 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12940,7 +12940,7 @@ T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 45 +, 100 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 1326 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 608 +, 1555 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13015,7 +13015,7 @@ std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 45 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 614 +, 1350 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 616 +, 1581 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13170,7 +13170,7 @@ bool segment_inverse_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 41 +, 82 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1315 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1544 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13236,7 +13236,7 @@ T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 49 +, 114 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1905 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 841 +, 2248 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13314,7 +13314,7 @@ std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 52 +, 125 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1942 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 855 +, 2288 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13473,7 +13473,7 @@ bool segment_inverse_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 44 +, 94 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 836 +, 1893 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 838 +, 2236 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13542,7 +13542,7 @@ T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 55 +, 131 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2486 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2943 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13621,7 +13621,7 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 59 +, 149 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1094 +, 2538 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1096 +, 2999 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13786,7 +13786,7 @@ bool segment_inverse_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 49 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1069 +, 2473 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1071 +, 2930 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13856,7 +13856,7 @@ T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 61 +, 152 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1308 +, 3069 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1310 +, 3640 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13938,7 +13938,7 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 68 +, 177 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1337 +, 3138 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1339 +, 3714 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14107,7 +14107,7 @@ bool segment_inverse_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
 /// Operations: 37 +, 88 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 371 +, 736 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 373 +, 851 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14172,7 +14172,7 @@ T segment_inverse_i13_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
 /// Operations: 44 +, 116 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1324 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1553 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14247,7 +14247,7 @@ std::array<T, 3> segment_inverse_i13_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
 /// Operations: 44 +, 120 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 612 +, 1347 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 614 +, 1578 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14402,7 +14402,7 @@ bool segment_inverse_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
 /// Operations: 40 +, 96 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 602 +, 1312 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 604 +, 1541 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14468,7 +14468,7 @@ T segment_inverse_i13_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
 /// Operations: 48 +, 131 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1903 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2246 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14546,7 +14546,7 @@ std::array<T, 3> segment_inverse_i13_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
 /// Operations: 51 +, 144 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 851 +, 1939 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 853 +, 2285 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14705,7 +14705,7 @@ bool segment_inverse_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
 /// Operations: 43 +, 108 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 834 +, 1890 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 836 +, 2233 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14774,7 +14774,7 @@ T segment_inverse_i13_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
 /// Operations: 54 +, 151 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1071 +, 2484 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1073 +, 2941 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14853,7 +14853,7 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
 /// Operations: 58 +, 169 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1092 +, 2535 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1094 +, 2996 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15018,7 +15018,7 @@ bool segment_inverse_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
 /// Operations: 48 +, 125 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1067 +, 2470 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1069 +, 2927 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15088,7 +15088,7 @@ T segment_inverse_i13_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
 /// Operations: 60 +, 173 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1306 +, 3067 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1308 +, 3638 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15170,7 +15170,7 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
 /// Operations: 67 +, 200 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1335 +, 3135 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1337 +, 3711 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15339,7 +15339,7 @@ bool segment_inverse_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 40 +, 85 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 373 +, 741 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 375 +, 856 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15406,7 +15406,7 @@ T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 47 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 1329 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 608 +, 1558 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15483,7 +15483,7 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 47 +, 113 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 614 +, 1353 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 616 +, 1584 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15642,7 +15642,7 @@ bool segment_inverse_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 43 +, 91 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1317 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1546 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15710,7 +15710,7 @@ T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 51 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1908 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 841 +, 2251 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15790,7 +15790,7 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 54 +, 134 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1945 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 855 +, 2291 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15953,7 +15953,7 @@ bool segment_inverse_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 46 +, 102 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 836 +, 1895 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 838 +, 2238 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16024,7 +16024,7 @@ T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 57 +, 140 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2489 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2946 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16105,7 +16105,7 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 61 +, 157 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1094 +, 2541 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1096 +, 3002 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16274,7 +16274,7 @@ bool segment_inverse_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 51 +, 116 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1069 +, 2475 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1071 +, 2932 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16346,7 +16346,7 @@ T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 63 +, 160 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1308 +, 3072 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1310 +, 3643 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16430,7 +16430,7 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 70 +, 184 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1337 +, 3141 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1339 +, 3717 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16603,7 +16603,7 @@ bool segment_inverse_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
 /// Operations: 39 +, 99 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 371 +, 739 ×, 121 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 373 +, 854 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16670,7 +16670,7 @@ T segment_inverse_i15_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
 /// Operations: 46 +, 127 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1325 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1554 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16747,7 +16747,7 @@ std::array<T, 3> segment_inverse_i15_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
 /// Operations: 46 +, 131 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 612 +, 1349 ×, 242 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 614 +, 1580 ×, 243 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16906,7 +16906,7 @@ bool segment_inverse_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
 /// Operations: 42 +, 107 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 602 +, 1315 ×, 237 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 604 +, 1544 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16974,7 +16974,7 @@ T segment_inverse_i15_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
 /// Operations: 50 +, 142 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 837 +, 1904 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 839 +, 2247 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17054,7 +17054,7 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
 /// Operations: 53 +, 155 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 851 +, 1941 ×, 363 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 853 +, 2287 ×, 364 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17217,7 +17217,7 @@ bool segment_inverse_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
 /// Operations: 45 +, 119 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 834 +, 1893 ×, 354 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 836 +, 2236 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17288,7 +17288,7 @@ T segment_inverse_i15_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
 /// Operations: 56 +, 162 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1071 +, 2485 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1073 +, 2942 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17369,7 +17369,7 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
 /// Operations: 60 +, 180 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1092 +, 2537 ×, 486 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1094 +, 2998 ×, 487 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17538,7 +17538,7 @@ bool segment_inverse_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
 /// Operations: 50 +, 136 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1067 +, 2473 ×, 472 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1069 +, 2930 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17610,7 +17610,7 @@ T segment_inverse_i15_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
 /// Operations: 62 +, 183 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1306 +, 3068 ×, 591 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1308 +, 3639 ×, 592 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17694,7 +17694,7 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
 /// Operations: 69 +, 210 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1335 +, 3137 ×, 611 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1337 +, 3713 ×, 612 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17867,7 +17867,7 @@ bool segment_inverse_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 42 +, 94 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 373 +, 744 ×, 121 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 375 +, 859 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17936,7 +17936,7 @@ T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 49 +, 117 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 1330 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 608 +, 1559 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18015,7 +18015,7 @@ std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 49 +, 121 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 614 +, 1355 ×, 242 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 616 +, 1586 ×, 243 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18178,7 +18178,7 @@ bool segment_inverse_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 45 +, 100 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 604 +, 1320 ×, 237 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 606 +, 1549 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18248,7 +18248,7 @@ T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 53 +, 132 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1909 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 841 +, 2252 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18330,7 +18330,7 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 56 +, 143 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1947 ×, 363 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 855 +, 2293 ×, 364 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18497,7 +18497,7 @@ bool segment_inverse_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 48 +, 111 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 836 +, 1898 ×, 354 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 838 +, 2241 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18570,7 +18570,7 @@ T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 59 +, 150 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1073 +, 2490 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1075 +, 2947 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18653,7 +18653,7 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 63 +, 167 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1094 +, 2543 ×, 486 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1096 +, 3004 ×, 487 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18826,7 +18826,7 @@ bool segment_inverse_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 53 +, 125 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1069 +, 2478 ×, 472 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1071 +, 2935 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18900,7 +18900,7 @@ T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 65 +, 170 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1308 +, 3073 ×, 591 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1310 +, 3644 ×, 592 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18986,7 +18986,7 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 72 +, 194 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1337 +, 3143 ×, 611 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1339 +, 3719 ×, 612 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
