@@ -132,7 +132,7 @@ T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const 
   const bool lo_is_near = q0 <= q1;
   const T& q_near = lo_is_near ? q0 : q1;
   const T& q_far = lo_is_near ? q1 : q0;
-  // Away from the segment (|P − midpoint| ≥ 1.55 |AB|): a Gauss rule
+  // Away from the segment (|P − midpoint| ≥ 7 |AB|): a Gauss rule
   // (gauss_moments.hpp, beyond_end_moments_gauss). b_near: b = −slope0 beyond A, a − b = slope1 beyond B.
   T J_rule;
   if (detail::beyond_end_moments_gauss(n, n, 0, a, lo_is_near ? -slope0 : slope1, q_near, q_far, !lo_is_near,
@@ -168,7 +168,7 @@ T J_downward(int n, const T& a, const T& D, const T& slope0, const T& q0, const 
 ///    run downwards from M_{k,top} = 0 as in J_downward; near the end the
 ///    near end's boundary term dominates and has the sign of the left
 ///    (b < 0), so nothing cancels; away from the segment (|P − midpoint| ≥
-///    1.55 |AB|) the far end's term does not fade and cancels, and a Gauss
+///    7 |AB|, beyond_end_rule_min_z) the far end's term does not fade and cancels, and a Gauss
 ///    rule takes over (gauss_moments.hpp, beyond_end_moments_gauss);
 ///  * beyond B the t-moments are recovered from t^k = (1 − σ)^k, a sum
 ///    whose terms shrink (σ is small where the mass is).
