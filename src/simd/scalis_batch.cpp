@@ -75,13 +75,21 @@ __attribute__((flatten)) void scalis_group(const ScalisUniforms& u, PointsSoA po
 
 using GroupFunction = void (*)(const ScalisUniforms&, PointsSoA, const std::uint32_t*, Divergence&, GroupResult&);
 
-GroupFunction find_group(KernelFamily family, int degree) {
+GroupFunction find_group([[maybe_unused]] KernelFamily family, [[maybe_unused]] int degree) {
+  // The portable SCALAR target (x86 machines without AVX2) would run the
+  // generated code on one-lane vectors: the scalar path's work plus the lane
+  // bookkeeping. It hands every point to the scalar path instead, which saves
+  // a third of this file's compile time (docs/simd.md).
+#if HWY_TARGET == HWY_SCALAR || HWY_TARGET == HWY_EMU128
+  return nullptr;
+#else
 #define SKELCONV_SIMD_ENTRY(FAMILY, I) \
   if (family == KernelFamily::FAMILY && degree == I)  \
     return &scalis_group<&generated::scalis_segment_##FAMILY##_i##I##_f_and_grad<Lanes>>;
   SKELCONV_SIMD_SCALIS_KERNELS(SKELCONV_SIMD_ENTRY)
 #undef SKELCONV_SIMD_ENTRY
   return nullptr;
+#endif
 }
 
 /// P where ScalisSegment may return +inf: left to the scalar path.
