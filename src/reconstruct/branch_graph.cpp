@@ -107,27 +107,71 @@ std::vector<std::vector<std::int32_t>> bin_pieces(const MedialGraph& graph, std:
   return members;
 }
 
-/// Merges pieces of the same bin whose node balls overlap (centre distance
-/// < sum of radii): a tube sampled coarsely can split a level set into
-/// pieces side by side, which would make small cycles ("bubbles") in the
-/// curve skeleton; pieces of different branches are farther apart.
+/// True when the node balls of two pieces overlap (centre distance < sum of
+/// radii).
+bool balls_overlap(const Vec4& a, const Vec4& b) { return (a.head<3>() - b.head<3>()).norm() < a.w() + b.w(); }
+
+/// Merges, within one bin, the pieces listed in `bin_pieces` (indices into
+/// `members`, in order) until no two node balls overlap; merged-away pieces
+/// are marked in `gone`. The pair merged is always the first overlapping
+/// one in (i, j) order, j into i. After a merge only piece i's node has
+/// changed and every pair before (i, j) was apart, so the next first pair is
+/// (a, i) for the first a < i that now overlaps i (i then merges into a and
+/// the same holds for a), else the next j after i: each merge costs O(k),
+/// not a rescan of all k² pairs (a noisy tree has bins of hundreds of
+/// pieces; the rescan took minutes).
+void merge_within_bin(const MedialGraph& graph, double core_fraction, std::vector<std::size_t> bin_pieces,
+                      std::vector<std::vector<std::int32_t>>& members, std::vector<bool>& gone) {
+  std::vector<Vec4> node;
+  for (std::size_t k : bin_pieces) node.push_back(piece_node(graph, members[k], core_fraction));
+  const auto merge = [&](std::size_t into, std::size_t from) {
+    auto& target = members[bin_pieces[into]];
+    const auto& source = members[bin_pieces[from]];
+    target.insert(target.end(), source.begin(), source.end());
+    gone[bin_pieces[from]] = true;
+    bin_pieces.erase(bin_pieces.begin() + std::ptrdiff_t(from));
+    node.erase(node.begin() + std::ptrdiff_t(from));
+    node[into] = piece_node(graph, target, core_fraction);
+  };
+  for (std::size_t i = 0; i < bin_pieces.size(); ++i) {
+    for (std::size_t j = i + 1; j < bin_pieces.size();) {
+      if (!balls_overlap(node[i], node[j])) {
+        ++j;
+        continue;
+      }
+      merge(i, j);
+      // Piece i changed: the first earlier piece it now overlaps takes it.
+      for (std::size_t a = 0; a < i;) {
+        if (!balls_overlap(node[a], node[i])) {
+          ++a;
+          continue;
+        }
+        merge(a, i);
+        i = a, a = 0;
+      }
+      j = i + 1;
+    }
+  }
+}
+
+/// Merges pieces of the same bin whose node balls overlap: a tube sampled
+/// coarsely can split a level set into pieces side by side, which would make
+/// small cycles ("bubbles") in the curve skeleton; pieces of different
+/// branches are farther apart. Bins are independent (a node depends only
+/// on its piece), so each is merged on its own; the order of `members` is
+/// kept.
 template <class Bin>
 void merge_overlapping_pieces(const MedialGraph& graph, double core_fraction, const Bin& bin,
                               std::vector<std::vector<std::int32_t>>& members) {
-  for (bool merged = true; merged;) {
-    merged = false;
-    for (std::size_t i = 0; i < members.size() && !merged; ++i) {
-      const Vec4 a = piece_node(graph, members[i], core_fraction);
-      for (std::size_t j = i + 1; j < members.size() && !merged; ++j) {
-        if (bin(members[i][0]) != bin(members[j][0])) continue;
-        const Vec4 b = piece_node(graph, members[j], core_fraction);
-        if ((a.head<3>() - b.head<3>()).norm() >= a.w() + b.w()) continue;
-        members[i].insert(members[i].end(), members[j].begin(), members[j].end());
-        members.erase(members.begin() + std::ptrdiff_t(j));
-        merged = true;
-      }
-    }
+  std::map<std::int64_t, std::vector<std::size_t>> by_bin;
+  for (std::size_t k = 0; k < members.size(); ++k) by_bin[bin(members[k][0])].push_back(k);
+  std::vector<bool> gone(members.size(), false);
+  for (const auto& [b, pieces] : by_bin) merge_within_bin(graph, core_fraction, pieces, members, gone);
+  std::vector<std::vector<std::int32_t>> kept;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    if (!gone[k]) kept.push_back(std::move(members[k]));
   }
+  members = std::move(kept);
 }
 
 }  // namespace
