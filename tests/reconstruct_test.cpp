@@ -132,6 +132,32 @@ TEST(Branches, SpurRemoval) {
   EXPECT_EQ(g.ends, 2u);
 }
 
+// The protrusion rule: on an axis of radius 1 from (−3,0,0) to (3,0,0) with
+// a junction at the origin, a branch to (0, 1.6, 0) of end radius 0.1 is
+// longer than 1.5 junction radii but its end ball reaches only 1.6 + 0.1 −
+// 1 = 0.7 radii beyond the axis's balls (a noise spur inside the tube): it
+// goes at factor 1 and stays at 0 (rule off). The branch to (0, 3, 0) of
+// radius 0.5 reaches 3 + 0.5 − 1 = 2.5: it stays.
+TEST(Branches, SpurByProtrusion) {
+  const auto make = [] {
+    CurveSkeleton s;
+    s.nodes = {Vec4(-3, 0, 0, 1), Vec4(0, 0, 0, 1), Vec4(3, 0, 0, 1), Vec4(0, 0.8, 0, 0.5), Vec4(0, 1.6, 0, 0.1),
+               Vec4(0, 0, 1.5, 0.7), Vec4(0, 0, 3, 0.5)};
+    s.edges = {{0, 1}, {1, 2}, {1, 3}, {3, 4}, {1, 5}, {5, 6}};
+    return s;
+  };
+  CurveSkeleton kept = make();
+  EXPECT_EQ(remove_spurs(kept, 1.5, 0.0), 0u);
+  CurveSkeleton pruned = make();
+  EXPECT_EQ(remove_spurs(pruned, 1.5, 1.0), 1u);
+  const BranchGraph g = extract_branches(pruned);
+  EXPECT_EQ(g.branches.size(), 3u);
+  EXPECT_EQ(g.ends, 3u);
+  for (const Branch& b : g.branches) {
+    for (const Vec4& p : b.points) EXPECT_NE(p.y(), 1.6);
+  }
+}
+
 // --- mesh reader ------------------------------------------------------------
 
 TriangleMesh tetrahedron() {

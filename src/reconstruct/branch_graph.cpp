@@ -2,6 +2,7 @@
 #include "skelconv/reconstruct/branch_graph.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -338,18 +339,66 @@ bool remove_one_parallel_path(CurveSkeleton& skeleton) {
   return false;
 }
 
+/// A polyline segment of the skeleton with linearly varying radius, and the
+/// branch it belongs to.
+struct TubeSegment {
+  Vec4 a, b;
+  std::size_t branch = 0;
+};
+
+/// How far the balls of branch `which` reach beyond the balls of the rest
+/// of the skeleton: the largest, over its points p, of the smallest, over
+/// the other branches' segments, of |p − q| + r_p − r_q, q the point of the
+/// segment nearest p and r_q its interpolated radius (≤ 0: every ball of
+/// the branch lies about inside the rest). Stops early once it reaches
+/// `enough` (the caller only compares with it).
+double protrusion(const std::vector<TubeSegment>& segments, const std::vector<Branch>& branches, std::size_t which,
+                  double enough) {
+  double reach = -INFINITY;
+  for (const Vec4& p : branches[which].points) {
+    double nearest = INFINITY;
+    for (const TubeSegment& s : segments) {
+      if (s.branch == which) continue;
+      const Vec3 a = s.a.head<3>(), d = s.b.head<3>() - a;
+      const double t = d.squaredNorm() > 0.0 ? std::clamp((p.head<3>() - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      nearest = std::min(nearest, (p.head<3>() - a - t * d).norm() + p.w() - (s.a.w() + t * (s.b.w() - s.a.w())));
+      if (nearest <= reach) break;  // this point cannot raise the maximum
+    }
+    reach = std::max(reach, nearest);
+    if (reach >= enough) return reach;
+  }
+  return reach;
+}
+
+/// True when terminal branch `which` (from junction node `junction`) is a
+/// spur: shorter than `length_factor` × the junction's radius, or reaching
+/// less than `protrusion_factor` × that radius beyond the rest's balls.
+bool is_spur(const CurveSkeleton& skeleton, const std::vector<TubeSegment>& segments, const std::vector<Branch>& branches,
+             std::size_t which, std::int32_t junction, double length_factor, double protrusion_factor) {
+  const double radius = skeleton.nodes[junction].w();
+  if (polyline_length(branches[which].points) < length_factor * radius) return true;
+  return protrusion_factor > 0.0 &&
+         protrusion(segments, branches, which, protrusion_factor * radius) < protrusion_factor * radius;
+}
+
 /// One pass of spur removal (see remove_spurs); returns the number removed.
-std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor) {
+std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor) {
   const auto next = neighbours(skeleton);
   const BranchGraph branches = extract_branches(skeleton);
+  std::vector<TubeSegment> segments;
+  for (std::size_t k = 0; k < branches.branches.size(); ++k) {
+    const auto& p = branches.branches[k].points;
+    for (std::size_t i = 1; i < p.size(); ++i) segments.push_back({p[i - 1], p[i], k});
+  }
   // The shortest spur at each junction (one per junction per pass, so a
   // junction never loses all its branches at once).
   std::map<std::int32_t, const Branch*> shortest;
-  for (const Branch& b : branches.branches) {
+  for (std::size_t k = 0; k < branches.branches.size(); ++k) {
+    const Branch& b = branches.branches[k];
     const bool first_end = next[b.first_node].size() == 1, last_end = next[b.last_node].size() == 1;
     if (first_end == last_end) continue;
     const std::int32_t junction = first_end ? b.last_node : b.first_node;
-    if (polyline_length(b.points) >= spur_factor * skeleton.nodes[junction].w()) continue;
+    if (!is_spur(skeleton, segments, branches.branches, k, junction, spur_factor, protrusion_factor)) continue;
     auto [it, added] = shortest.emplace(junction, &b);
     if (!added && polyline_length(b.points) < polyline_length(it->second->points)) it->second = &b;
   }
@@ -364,13 +413,13 @@ std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor) {
 
 }  // namespace
 
-std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor) {
+std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor) {
   std::size_t removed = 0;
   while (true) {
     bool changed = false;
     while (remove_one_parallel_path(skeleton)) changed = true, ++removed;
     while (contract_one_bubble(skeleton, spur_factor)) changed = true, ++removed;
-    const std::size_t spurs = remove_spurs_once(skeleton, spur_factor);
+    const std::size_t spurs = remove_spurs_once(skeleton, spur_factor, protrusion_factor);
     removed += spurs;
     if (!changed && spurs == 0) return removed;
   }
