@@ -6,8 +6,11 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <set>
+
+#include <Eigen/Dense>
 
 #include "skelconv/errors.hpp"
 
@@ -424,5 +427,106 @@ std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor, double pro
     if (!changed && spurs == 0) return removed;
   }
 }
+
+namespace {
+
+/// The axis line of a branch leaving a junction of radius `radius`: through
+/// its first point at least `radius` (arc length) from the junction, along
+/// the chord to its last point within `reach` × radius. Nothing when the
+/// branch is too short to give one. `points` start at the junction.
+std::optional<std::pair<Vec3, Vec3>> leaving_line(const std::vector<Vec4>& points, double radius, double reach) {
+  double arc = 0.0;
+  std::optional<std::size_t> near, far;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    arc += (points[k].head<3>() - points[k - 1].head<3>()).norm();
+    if (arc < radius) continue;
+    if (!near) near = k;
+    if (arc <= reach * radius || !far) far = k;
+    if (arc > reach * radius) break;
+  }
+  if (!near || *far == *near) {
+    if (!near || *near + 1 >= points.size()) return std::nullopt;
+    far = *near + 1;
+  }
+  const Vec3 a = points[*near].head<3>(), d = points[*far].head<3>() - a;
+  if (d.norm() == 0.0) return std::nullopt;
+  return std::pair{a, Vec3(d.normalized())};
+}
+
+/// The point nearest, in least squares, to the lines (a_i, d_i): the
+/// solution of Σ (I − d_i d_iᵀ) x = Σ (I − d_i d_iᵀ) a_i. Nothing when the
+/// lines are about parallel (the smallest eigenvalue of the sum below
+/// `min_spread` × the number of lines).
+std::optional<Vec3> nearest_to_lines(const std::vector<std::pair<Vec3, Vec3>>& lines, double min_spread) {
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Vec3 b = Vec3::Zero();
+  for (const auto& [point, d] : lines) {
+    const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - d * d.transpose();
+    a += projector, b += projector * point;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(a);
+  if (lines.size() < 2 || eigen.eigenvalues().minCoeff() < min_spread * double(lines.size())) return std::nullopt;
+  return Vec3(a.ldlt().solve(b));
+}
+
+/// Moves junction node `j` (see relocate_junctions); true if it moved.
+bool relocate_junction(CurveSkeleton& skeleton, std::int32_t j, const JunctionOptions& o) {
+  const BranchGraph graph = extract_branches(skeleton);
+  const double radius = skeleton.nodes[j].w();
+  std::vector<std::pair<Vec3, Vec3>> lines;
+  std::vector<std::pair<const Branch*, std::vector<Vec4>>> leaving;  // branch, points from j
+  for (const Branch& b : graph.branches) {
+    if (b.first_node == b.last_node || (b.first_node != j && b.last_node != j)) continue;
+    std::vector<Vec4> points = b.points;
+    if (b.first_node != j) std::reverse(points.begin(), points.end());
+    if (const auto line = leaving_line(points, radius, o.reach)) lines.push_back(*line);
+    leaving.emplace_back(&b, std::move(points));
+  }
+  const std::optional<Vec3> x = nearest_to_lines(lines, o.min_spread);
+  if (!x || (*x - skeleton.nodes[j].head<3>()).norm() > o.largest_move * radius) return false;
+  // Interior nodes now behind the junction along their branch, or within
+  // half its radius ahead of it, go; the junction joins the next one.
+  std::vector<bool> drop(skeleton.nodes.size(), false);
+  for (const auto& [branch, points] : leaving) {
+    const Vec3 direction = points.back().head<3>() - *x;
+    if (direction.norm() == 0.0) continue;
+    std::vector<std::int32_t> chain = branch->interior_nodes;
+    if (branch->first_node != j) std::reverse(chain.begin(), chain.end());
+    const std::int32_t far_end = branch->first_node == j ? branch->last_node : branch->first_node;
+    std::int32_t previous = j;
+    for (std::int32_t node : chain) {
+      if ((skeleton.nodes[node].head<3>() - *x).dot(direction.normalized()) < 0.5 * radius) {
+        drop[node] = true;
+        continue;
+      }
+      if (previous == j) skeleton.edges.push_back({j, node});
+      previous = node;
+    }
+    if (previous == j) skeleton.edges.push_back({j, far_end});
+  }
+  skeleton.nodes[j].head<3>() = *x;
+  rebuild(skeleton, drop, -1, -1);
+  return true;
+}
+
+}  // namespace
+
+std::size_t relocate_junctions(CurveSkeleton& skeleton, const JunctionOptions& options) {
+  std::size_t moved = 0;
+  // A rebuild renumbers nodes, so the junctions are found again by their
+  // (unchanged) positions, in their first order.
+  std::vector<Vec4> junctions;
+  const auto next = neighbours(skeleton);
+  for (std::size_t n = 0; n < skeleton.nodes.size(); ++n) {
+    if (next[n].size() >= 3) junctions.push_back(skeleton.nodes[n]);
+  }
+  for (const Vec4& junction : junctions) {
+    const auto at = std::find(skeleton.nodes.begin(), skeleton.nodes.end(), junction);
+    if (at == skeleton.nodes.end()) continue;
+    moved += relocate_junction(skeleton, std::int32_t(at - skeleton.nodes.begin()), options);
+  }
+  return moved;
+}
+
 
 }  // namespace skelconv::reconstruct

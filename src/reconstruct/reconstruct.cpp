@@ -58,7 +58,10 @@ Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::st
   for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
   CurveSkeleton curve = level_set_skeleton(graph, {o.bin_factor * radii[radii.size() / 2], 0.95});
-  if (spurs != nullptr) *spurs = remove_spurs(curve, o.spur_factor, o.spur_protrusion);
+  if (spurs != nullptr) {
+    *spurs = remove_spurs(curve, o.spur_factor, o.spur_protrusion);
+    if (o.relocate_junctions) relocate_junctions(curve);
+  }
   return make_stage(std::move(name), extract_branches(curve));
 }
 

@@ -32,6 +32,9 @@ struct ReconstructOptions {
   /// (remove_spurs; the noise spurs of the test shapes reach at most 0.48,
   /// their real branches at least 1.8: 1 is between, with margin both ways).
   double spur_protrusion = 1.0;
+  /// Junctions moved to where their branches' axes meet
+  /// (relocate_junctions), in every stage after `raw`.
+  bool relocate_junctions = true;
   /// B-spline sampling: segments per span.
   int samples_per_span = 4;
   /// SCALIS Cauchy kernel of the output segments (docs/cli.md), normalised
