@@ -158,6 +158,33 @@ TEST(Branches, SpurByProtrusion) {
   }
 }
 
+// A plane Y of three straight arms meeting at the origin (nodes every 0.5
+// along each arm, radius 0.3), whose junction node sits 0.4 down arm 0, as
+// a level-set graph puts it: the arms' axes (chords from 0.3 to 0.9 along
+// each branch) all pass through the origin, so the junction moves there
+// exactly (up to rounding), and arm 0's node at 0.5 stays (0.5 ahead of it,
+// more than half the radius).
+TEST(Branches, JunctionRelocation) {
+  CurveSkeleton y;
+  y.nodes.push_back(Vec4(0.4, 0, 0, 0.3));
+  for (int arm = 0; arm < 3; ++arm) {
+    const double angle = 2.0 * std::numbers::pi * arm / 3.0;
+    for (int k = 1; k <= 6; ++k) {
+      const double t = 0.5 * k;
+      y.nodes.push_back(Vec4(t * std::cos(angle), t * std::sin(angle), 0, 0.3));
+      const auto node = std::int32_t(y.nodes.size() - 1);
+      y.edges.push_back({k == 1 ? 0 : node - 1, node});
+    }
+  }
+  EXPECT_EQ(relocate_junctions(y), 1u);
+  const BranchGraph g = extract_branches(y);
+  EXPECT_EQ(g.branches.size(), 3u);
+  EXPECT_EQ(g.ends, 3u);
+  EXPECT_EQ(g.junctions, 1u);
+  EXPECT_LT(y.nodes[0].head<3>().norm(), 1e-12);
+  EXPECT_EQ(y.nodes.size(), 19u);  // nothing dropped
+}
+
 // --- mesh reader ------------------------------------------------------------
 
 TriangleMesh tetrahedron() {
