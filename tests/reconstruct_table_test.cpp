@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -83,13 +84,20 @@ TEST_P(Table, CountsAndDistances) {
   }
 }
 
+/// Readable, stable test names (tree_noisy), not the parameter's bytes
+/// (gtest's default, which hold a pointer).
+std::string shape_test_name(const testing::TestParamInfo<Table::ParamType>& info) {
+  return std::string(std::get<0>(info.param).name) + (std::get<1>(info.param) == 0.0 ? "_clean" : "_noisy");
+}
+
 // Known skeletons (tests/data/reconstruct/*.json): a segment, a tripod, a
 // ring of 16 segments, a binary tree of depth 3 (15 segments, 8 leaves + the
 // root's foot = 9 ends, 7 junctions).
 INSTANTIATE_TEST_SUITE_P(Shapes, Table,
                          testing::Combine(testing::Values(Known{"segment", 1, 2, 0}, Known{"tripod", 3, 3, 1},
                                                           Known{"torus", 1, 0, 0}, Known{"tree", 15, 9, 7}),
-                                          testing::Values(0.0, 0.005)));
+                                          testing::Values(0.0, 0.005)),
+                         shape_test_name);
 
 }  // namespace
 }  // namespace skelconv::reconstruct
