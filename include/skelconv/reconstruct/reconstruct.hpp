@@ -20,6 +20,12 @@ namespace skelconv::reconstruct {
 struct ReconstructOptions {
   /// Ferley's pruning threshold θ_min, degrees, in [0, 180).
   double prune_angle_degrees = 90.0;
+  /// Pruning also removes the Voronoi vertices whose contact samples span
+  /// less than this × the input's bounding-box diagonal (pruning.hpp: the
+  /// scale the angle does not see). 0 (default) for clean samples; for
+  /// samples with noise of amplitude a (× the diagonal), about 4a: a
+  /// sample moves by up to a√3, a span by twice that.
+  double prune_span = 0.0;
   /// Pavlidis tolerance ε, relative to the largest extent of the skeleton's
   /// bounding box (Ferley's fig. 3.2 uses 0.02).
   double epsilon = 0.02;
