@@ -54,6 +54,27 @@ TEST(Pruning, VertexAngleAndRemoval) {
   EXPECT_TRUE(graph.edges.empty());
 }
 
+// The contact span is the longest edge of the tetrahedron: 2 for the ball
+// of radius 1 touching (±1, 0, 0); 0.2 for the ball of radius 0.1 at
+// (5, 0, 0) touching (5 ± 0.1, 0, 0), whose θ is π too (a diameter: kept by
+// the angle), but a minimum span of 0.5 removes it; the large ball stays.
+TEST(Pruning, ContactSpan) {
+  MedialGraph graph;
+  graph.samples = {Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),   Vec3(0, 0, 1),
+                   Vec3(4.9, 0, 0), Vec3(5.1, 0, 0), Vec3(5, 0.1, 0), Vec3(5, 0, 0.1)};
+  graph.vertices.push_back({Vec3::Zero(), 1.0, {0, 1, 2, 3}});
+  graph.vertices.push_back({Vec3(5, 0, 0), 0.1, {4, 5, 6, 7}});
+  EXPECT_NEAR(contact_span(graph, 0), 2.0, 1e-15);
+  EXPECT_NEAR(contact_span(graph, 1), 0.2, 1e-15);
+  EXPECT_NEAR(vertex_angle(graph, 1), std::numbers::pi, 1e-6);
+  MedialGraph kept = graph;
+  EXPECT_EQ(prune_medial_graph(kept, std::numbers::pi / 2, 0.0).vertices_removed, 0u);
+  const PruningReport report = prune_medial_graph(graph, std::numbers::pi / 2, 0.0, 0.5);
+  EXPECT_EQ(report.vertices_removed, 1u);
+  ASSERT_EQ(graph.vertices.size(), 1u);
+  EXPECT_EQ(graph.vertices[0].radius, 1.0);
+}
+
 // Pavlidis on (0,0) (1,0.1) (2,−0.1) (3,0.5) (4,0), radius 0 everywhere.
 // Chord (0,0)–(4,0): distances 0.1, 0.1, 0.5 → the split keeps (3,0.5) when
 // the tolerance is below 0.5. Then on (0,0)…(3,0.5): the chord direction is

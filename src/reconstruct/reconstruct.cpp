@@ -62,7 +62,9 @@ Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::st
   CurveSkeleton curve = level_set_skeleton(graph, {o.bin_factor * radii[radii.size() / 2], 0.95});
   if (spurs != nullptr) {
     *spurs = remove_spurs(curve, o.spur_factor, o.spur_protrusion);
-    if (o.relocate_junctions) relocate_junctions(curve);
+    // Moving junctions can leave two paths between the same junctions or
+    // a branch short enough to contract: clean up once more.
+    if (o.relocate_junctions && relocate_junctions(curve) > 0) *spurs += remove_spurs(curve, o.spur_factor, o.spur_protrusion);
   }
   return make_stage(std::move(name), extract_branches(curve));
 }
