@@ -319,6 +319,29 @@ bool encloses_no_hole(const Branch& a, const Branch& b) {
   return std::any_of(a.points.begin(), a.points.end(), covers) || std::any_of(b.points.begin(), b.points.end(), covers);
 }
 
+/// Distance from `p` to the polyline `points` minus the radius there
+/// (interpolated along the nearest segment): ≤ 0 when p is inside its tube.
+double outside_tube(const Vec3& p, const std::vector<Vec4>& points) {
+  double best = INFINITY;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const Vec3 a = points[k - 1].head<3>(), d = points[k].head<3>() - a;
+    const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    best = std::min(best, (p - a - t * d).norm() - (points[k - 1].w() + t * (points[k].w() - points[k - 1].w())));
+  }
+  return best;
+}
+
+/// True when each of the two paths runs inside the other's tube (every
+/// point within the radius of the other path): one tube, split by a tunnel
+/// that noise bored through it, not a handle around a hole.
+bool share_one_tube(const Branch& a, const Branch& b) {
+  const auto inside = [](const Branch& from, const Branch& to) {
+    return std::all_of(from.points.begin(), from.points.end(),
+                       [&](const Vec4& p) { return outside_tube(p.head<3>(), to.points) <= 0.0; });
+  };
+  return inside(a, b) && inside(b, a);
+}
+
 /// One removal of a parallel path: two branches joining the same two
 /// junctions whose cycle encloses no hole (the level sets of a branching
 /// often leave a direct edge beside a path through one or two nodes). The
@@ -332,7 +355,7 @@ bool remove_one_parallel_path(CurveSkeleton& skeleton) {
     if (b.first_node == b.last_node) continue;
     const auto key = std::minmax(b.first_node, b.last_node);
     const auto [it, added] = seen.emplace(key, &b);
-    if (added || !encloses_no_hole(*it->second, b)) continue;
+    if (added || !(encloses_no_hole(*it->second, b) || share_one_tube(*it->second, b))) continue;
     const Branch& longer = it->second->interior_nodes.size() >= b.interior_nodes.size() ? *it->second : b;
     std::vector<bool> drop(skeleton.nodes.size(), false);
     mark_interior(longer, skeleton, drop);
