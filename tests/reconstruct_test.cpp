@@ -54,6 +54,27 @@ TEST(Pruning, VertexAngleAndRemoval) {
   EXPECT_TRUE(graph.edges.empty());
 }
 
+// The contact span is the longest edge of the tetrahedron: 2 for the ball
+// of radius 1 touching (±1, 0, 0); 0.2 for the ball of radius 0.1 at
+// (5, 0, 0) touching (5 ± 0.1, 0, 0), whose θ is π too (a diameter: kept by
+// the angle), but a minimum span of 0.5 removes it; the large ball stays.
+TEST(Pruning, ContactSpan) {
+  MedialGraph graph;
+  graph.samples = {Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),   Vec3(0, 0, 1),
+                   Vec3(4.9, 0, 0), Vec3(5.1, 0, 0), Vec3(5, 0.1, 0), Vec3(5, 0, 0.1)};
+  graph.vertices.push_back({Vec3::Zero(), 1.0, {0, 1, 2, 3}});
+  graph.vertices.push_back({Vec3(5, 0, 0), 0.1, {4, 5, 6, 7}});
+  EXPECT_NEAR(contact_span(graph, 0), 2.0, 1e-15);
+  EXPECT_NEAR(contact_span(graph, 1), 0.2, 1e-15);
+  EXPECT_NEAR(vertex_angle(graph, 1), std::numbers::pi, 1e-6);
+  MedialGraph kept = graph;
+  EXPECT_EQ(prune_medial_graph(kept, std::numbers::pi / 2, 0.0).vertices_removed, 0u);
+  const PruningReport report = prune_medial_graph(graph, std::numbers::pi / 2, 0.0, 0.5);
+  EXPECT_EQ(report.vertices_removed, 1u);
+  ASSERT_EQ(graph.vertices.size(), 1u);
+  EXPECT_EQ(graph.vertices[0].radius, 1.0);
+}
+
 // Pavlidis on (0,0) (1,0.1) (2,−0.1) (3,0.5) (4,0), radius 0 everywhere.
 // Chord (0,0)–(4,0): distances 0.1, 0.1, 0.5 → the split keeps (3,0.5) when
 // the tolerance is below 0.5. Then on (0,0)…(3,0.5): the chord direction is
@@ -130,6 +151,59 @@ TEST(Branches, SpurRemoval) {
   const BranchGraph g = extract_branches(s);
   EXPECT_EQ(g.branches.size(), 1u);
   EXPECT_EQ(g.ends, 2u);
+}
+
+// The protrusion rule: on an axis of radius 1 from (−3,0,0) to (3,0,0) with
+// a junction at the origin, a branch to (0, 1.6, 0) of end radius 0.1 is
+// longer than 1.5 junction radii but its end ball reaches only 1.6 + 0.1 −
+// 1 = 0.7 radii beyond the axis's balls (a noise spur inside the tube): it
+// goes at factor 1 and stays at 0 (rule off). The branch to (0, 3, 0) of
+// radius 0.5 reaches 3 + 0.5 − 1 = 2.5: it stays.
+TEST(Branches, SpurByProtrusion) {
+  const auto make = [] {
+    CurveSkeleton s;
+    s.nodes = {Vec4(-3, 0, 0, 1), Vec4(0, 0, 0, 1), Vec4(3, 0, 0, 1), Vec4(0, 0.8, 0, 0.5), Vec4(0, 1.6, 0, 0.1),
+               Vec4(0, 0, 1.5, 0.7), Vec4(0, 0, 3, 0.5)};
+    s.edges = {{0, 1}, {1, 2}, {1, 3}, {3, 4}, {1, 5}, {5, 6}};
+    return s;
+  };
+  CurveSkeleton kept = make();
+  EXPECT_EQ(remove_spurs(kept, 1.5, 0.0), 0u);
+  CurveSkeleton pruned = make();
+  EXPECT_EQ(remove_spurs(pruned, 1.5, 1.0), 1u);
+  const BranchGraph g = extract_branches(pruned);
+  EXPECT_EQ(g.branches.size(), 3u);
+  EXPECT_EQ(g.ends, 3u);
+  for (const Branch& b : g.branches) {
+    for (const Vec4& p : b.points) EXPECT_NE(p.y(), 1.6);
+  }
+}
+
+// A plane Y of three straight arms meeting at the origin (nodes every 0.5
+// along each arm, radius 0.3), whose junction node sits 0.4 down arm 0, as
+// a level-set graph puts it: the arms' axes (chords from 0.3 to 0.9 along
+// each branch) all pass through the origin, so the junction moves there
+// exactly (up to rounding), and arm 0's node at 0.5 stays (0.5 ahead of it,
+// more than half the radius).
+TEST(Branches, JunctionRelocation) {
+  CurveSkeleton y;
+  y.nodes.push_back(Vec4(0.4, 0, 0, 0.3));
+  for (int arm = 0; arm < 3; ++arm) {
+    const double angle = 2.0 * std::numbers::pi * arm / 3.0;
+    for (int k = 1; k <= 6; ++k) {
+      const double t = 0.5 * k;
+      y.nodes.push_back(Vec4(t * std::cos(angle), t * std::sin(angle), 0, 0.3));
+      const auto node = std::int32_t(y.nodes.size() - 1);
+      y.edges.push_back({k == 1 ? 0 : node - 1, node});
+    }
+  }
+  EXPECT_EQ(relocate_junctions(y), 1u);
+  const BranchGraph g = extract_branches(y);
+  EXPECT_EQ(g.branches.size(), 3u);
+  EXPECT_EQ(g.ends, 3u);
+  EXPECT_EQ(g.junctions, 1u);
+  EXPECT_LT(y.nodes[0].head<3>().norm(), 1e-12);
+  EXPECT_EQ(y.nodes.size(), 19u);  // nothing dropped
 }
 
 // --- mesh reader ------------------------------------------------------------

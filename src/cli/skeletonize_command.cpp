@@ -74,6 +74,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("INPUT", options.input_path, "Closed mesh: .ply (ASCII or binary) or .obj")->required();
   command->add_option("-o,--output", options.output_path, "Output skeleton file (JSON)")->required();
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees (default 90)");
+  command->add_option("--prune-span", options.prune_span,
+                      "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "
+                      "(default 0; about 4 × the noise amplitude for noisy samples)");
   command->add_option("--epsilon", options.epsilon, "Pavlidis tolerance × skeleton size (default 0.02)");
   command->add_option("--report", options.report_path, "Also mesh every stage and write distances (JSON)");
   command->add_flag("--bezier-junctions", options.bezier_junctions,
@@ -92,6 +95,7 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       throw InputError("the skeleton file must end in .json", options.output_path);
     reconstruct::ReconstructOptions ro;
     ro.prune_angle_degrees = options.prune_angle;
+    ro.prune_span = options.prune_span;
     ro.epsilon = options.epsilon;
     ro.junction_triangles = options.bezier_junctions;
     if (!options.quiet) ro.progress = [](std::string_view line) {

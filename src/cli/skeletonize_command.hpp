@@ -22,6 +22,7 @@ struct SkeletonizeOptions {
   std::string output_path;
   std::optional<std::string> report_path;
   double prune_angle = 90.0;
+  double prune_span = 0.0;  ///< × the diagonal (ReconstructOptions::prune_span)
   double epsilon = 0.02;
   bool bezier_junctions = false;
   double noise = 0.0;

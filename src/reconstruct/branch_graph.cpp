@@ -2,11 +2,15 @@
 #include "skelconv/reconstruct/branch_graph.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <set>
+
+#include <Eigen/Dense>
 
 #include "skelconv/errors.hpp"
 
@@ -107,27 +111,71 @@ std::vector<std::vector<std::int32_t>> bin_pieces(const MedialGraph& graph, std:
   return members;
 }
 
-/// Merges pieces of the same bin whose node balls overlap (centre distance
-/// < sum of radii): a tube sampled coarsely can split a level set into
-/// pieces side by side, which would make small cycles ("bubbles") in the
-/// curve skeleton; pieces of different branches are farther apart.
+/// True when the node balls of two pieces overlap (centre distance < sum of
+/// radii).
+bool balls_overlap(const Vec4& a, const Vec4& b) { return (a.head<3>() - b.head<3>()).norm() < a.w() + b.w(); }
+
+/// Merges, within one bin, the pieces listed in `bin_pieces` (indices into
+/// `members`, in order) until no two node balls overlap; merged-away pieces
+/// are marked in `gone`. The pair merged is always the first overlapping
+/// one in (i, j) order, j into i. After a merge only piece i's node has
+/// changed and every pair before (i, j) was apart, so the next first pair is
+/// (a, i) for the first a < i that now overlaps i (i then merges into a and
+/// the same holds for a), else the next j after i: each merge costs O(k),
+/// not a rescan of all k² pairs (a noisy tree has bins of hundreds of
+/// pieces; the rescan took minutes).
+void merge_within_bin(const MedialGraph& graph, double core_fraction, std::vector<std::size_t> bin_pieces,
+                      std::vector<std::vector<std::int32_t>>& members, std::vector<bool>& gone) {
+  std::vector<Vec4> node;
+  for (std::size_t k : bin_pieces) node.push_back(piece_node(graph, members[k], core_fraction));
+  const auto merge = [&](std::size_t into, std::size_t from) {
+    auto& target = members[bin_pieces[into]];
+    const auto& source = members[bin_pieces[from]];
+    target.insert(target.end(), source.begin(), source.end());
+    gone[bin_pieces[from]] = true;
+    bin_pieces.erase(bin_pieces.begin() + std::ptrdiff_t(from));
+    node.erase(node.begin() + std::ptrdiff_t(from));
+    node[into] = piece_node(graph, target, core_fraction);
+  };
+  for (std::size_t i = 0; i < bin_pieces.size(); ++i) {
+    for (std::size_t j = i + 1; j < bin_pieces.size();) {
+      if (!balls_overlap(node[i], node[j])) {
+        ++j;
+        continue;
+      }
+      merge(i, j);
+      // Piece i changed: the first earlier piece it now overlaps takes it.
+      for (std::size_t a = 0; a < i;) {
+        if (!balls_overlap(node[a], node[i])) {
+          ++a;
+          continue;
+        }
+        merge(a, i);
+        i = a, a = 0;
+      }
+      j = i + 1;
+    }
+  }
+}
+
+/// Merges pieces of the same bin whose node balls overlap: a tube sampled
+/// coarsely can split a level set into pieces side by side, which would make
+/// small cycles ("bubbles") in the curve skeleton; pieces of different
+/// branches are farther apart. Bins are independent (a node depends only
+/// on its piece), so each is merged on its own; the order of `members` is
+/// kept.
 template <class Bin>
 void merge_overlapping_pieces(const MedialGraph& graph, double core_fraction, const Bin& bin,
                               std::vector<std::vector<std::int32_t>>& members) {
-  for (bool merged = true; merged;) {
-    merged = false;
-    for (std::size_t i = 0; i < members.size() && !merged; ++i) {
-      const Vec4 a = piece_node(graph, members[i], core_fraction);
-      for (std::size_t j = i + 1; j < members.size() && !merged; ++j) {
-        if (bin(members[i][0]) != bin(members[j][0])) continue;
-        const Vec4 b = piece_node(graph, members[j], core_fraction);
-        if ((a.head<3>() - b.head<3>()).norm() >= a.w() + b.w()) continue;
-        members[i].insert(members[i].end(), members[j].begin(), members[j].end());
-        members.erase(members.begin() + std::ptrdiff_t(j));
-        merged = true;
-      }
-    }
+  std::map<std::int64_t, std::vector<std::size_t>> by_bin;
+  for (std::size_t k = 0; k < members.size(); ++k) by_bin[bin(members[k][0])].push_back(k);
+  std::vector<bool> gone(members.size(), false);
+  for (const auto& [b, pieces] : by_bin) merge_within_bin(graph, core_fraction, pieces, members, gone);
+  std::vector<std::vector<std::int32_t>> kept;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    if (!gone[k]) kept.push_back(std::move(members[k]));
   }
+  members = std::move(kept);
 }
 
 }  // namespace
@@ -271,6 +319,29 @@ bool encloses_no_hole(const Branch& a, const Branch& b) {
   return std::any_of(a.points.begin(), a.points.end(), covers) || std::any_of(b.points.begin(), b.points.end(), covers);
 }
 
+/// Distance from `p` to the polyline `points` minus the radius there
+/// (interpolated along the nearest segment): ≤ 0 when p is inside its tube.
+double outside_tube(const Vec3& p, const std::vector<Vec4>& points) {
+  double best = INFINITY;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const Vec3 a = points[k - 1].head<3>(), d = points[k].head<3>() - a;
+    const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    best = std::min(best, (p - a - t * d).norm() - (points[k - 1].w() + t * (points[k].w() - points[k - 1].w())));
+  }
+  return best;
+}
+
+/// True when each of the two paths runs inside the other's tube (every
+/// point within the radius of the other path): one tube, split by a tunnel
+/// that noise bored through it, not a handle around a hole.
+bool share_one_tube(const Branch& a, const Branch& b) {
+  const auto inside = [](const Branch& from, const Branch& to) {
+    return std::all_of(from.points.begin(), from.points.end(),
+                       [&](const Vec4& p) { return outside_tube(p.head<3>(), to.points) <= 0.0; });
+  };
+  return inside(a, b) && inside(b, a);
+}
+
 /// One removal of a parallel path: two branches joining the same two
 /// junctions whose cycle encloses no hole (the level sets of a branching
 /// often leave a direct edge beside a path through one or two nodes). The
@@ -284,7 +355,7 @@ bool remove_one_parallel_path(CurveSkeleton& skeleton) {
     if (b.first_node == b.last_node) continue;
     const auto key = std::minmax(b.first_node, b.last_node);
     const auto [it, added] = seen.emplace(key, &b);
-    if (added || !encloses_no_hole(*it->second, b)) continue;
+    if (added || !(encloses_no_hole(*it->second, b) || share_one_tube(*it->second, b))) continue;
     const Branch& longer = it->second->interior_nodes.size() >= b.interior_nodes.size() ? *it->second : b;
     std::vector<bool> drop(skeleton.nodes.size(), false);
     mark_interior(longer, skeleton, drop);
@@ -294,18 +365,66 @@ bool remove_one_parallel_path(CurveSkeleton& skeleton) {
   return false;
 }
 
+/// A polyline segment of the skeleton with linearly varying radius, and the
+/// branch it belongs to.
+struct TubeSegment {
+  Vec4 a, b;
+  std::size_t branch = 0;
+};
+
+/// How far the balls of branch `which` reach beyond the balls of the rest
+/// of the skeleton: the largest, over its points p, of the smallest, over
+/// the other branches' segments, of |p − q| + r_p − r_q, q the point of the
+/// segment nearest p and r_q its interpolated radius (≤ 0: every ball of
+/// the branch lies about inside the rest). Stops early once it reaches
+/// `enough` (the caller only compares with it).
+double protrusion(const std::vector<TubeSegment>& segments, const std::vector<Branch>& branches, std::size_t which,
+                  double enough) {
+  double reach = -INFINITY;
+  for (const Vec4& p : branches[which].points) {
+    double nearest = INFINITY;
+    for (const TubeSegment& s : segments) {
+      if (s.branch == which) continue;
+      const Vec3 a = s.a.head<3>(), d = s.b.head<3>() - a;
+      const double t = d.squaredNorm() > 0.0 ? std::clamp((p.head<3>() - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      nearest = std::min(nearest, (p.head<3>() - a - t * d).norm() + p.w() - (s.a.w() + t * (s.b.w() - s.a.w())));
+      if (nearest <= reach) break;  // this point cannot raise the maximum
+    }
+    reach = std::max(reach, nearest);
+    if (reach >= enough) return reach;
+  }
+  return reach;
+}
+
+/// True when terminal branch `which` (from junction node `junction`) is a
+/// spur: shorter than `length_factor` × the junction's radius, or reaching
+/// less than `protrusion_factor` × that radius beyond the rest's balls.
+bool is_spur(const CurveSkeleton& skeleton, const std::vector<TubeSegment>& segments, const std::vector<Branch>& branches,
+             std::size_t which, std::int32_t junction, double length_factor, double protrusion_factor) {
+  const double radius = skeleton.nodes[junction].w();
+  if (polyline_length(branches[which].points) < length_factor * radius) return true;
+  return protrusion_factor > 0.0 &&
+         protrusion(segments, branches, which, protrusion_factor * radius) < protrusion_factor * radius;
+}
+
 /// One pass of spur removal (see remove_spurs); returns the number removed.
-std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor) {
+std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor) {
   const auto next = neighbours(skeleton);
   const BranchGraph branches = extract_branches(skeleton);
+  std::vector<TubeSegment> segments;
+  for (std::size_t k = 0; k < branches.branches.size(); ++k) {
+    const auto& p = branches.branches[k].points;
+    for (std::size_t i = 1; i < p.size(); ++i) segments.push_back({p[i - 1], p[i], k});
+  }
   // The shortest spur at each junction (one per junction per pass, so a
   // junction never loses all its branches at once).
   std::map<std::int32_t, const Branch*> shortest;
-  for (const Branch& b : branches.branches) {
+  for (std::size_t k = 0; k < branches.branches.size(); ++k) {
+    const Branch& b = branches.branches[k];
     const bool first_end = next[b.first_node].size() == 1, last_end = next[b.last_node].size() == 1;
     if (first_end == last_end) continue;
     const std::int32_t junction = first_end ? b.last_node : b.first_node;
-    if (polyline_length(b.points) >= spur_factor * skeleton.nodes[junction].w()) continue;
+    if (!is_spur(skeleton, segments, branches.branches, k, junction, spur_factor, protrusion_factor)) continue;
     auto [it, added] = shortest.emplace(junction, &b);
     if (!added && polyline_length(b.points) < polyline_length(it->second->points)) it->second = &b;
   }
@@ -320,16 +439,117 @@ std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor) {
 
 }  // namespace
 
-std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor) {
+std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor) {
   std::size_t removed = 0;
   while (true) {
     bool changed = false;
     while (remove_one_parallel_path(skeleton)) changed = true, ++removed;
     while (contract_one_bubble(skeleton, spur_factor)) changed = true, ++removed;
-    const std::size_t spurs = remove_spurs_once(skeleton, spur_factor);
+    const std::size_t spurs = remove_spurs_once(skeleton, spur_factor, protrusion_factor);
     removed += spurs;
     if (!changed && spurs == 0) return removed;
   }
 }
+
+namespace {
+
+/// The axis line of a branch leaving a junction of radius `radius`: through
+/// its first point at least `radius` (arc length) from the junction, along
+/// the chord to its last point within `reach` × radius. Nothing when the
+/// branch is too short to give one. `points` start at the junction.
+std::optional<std::pair<Vec3, Vec3>> leaving_line(const std::vector<Vec4>& points, double radius, double reach) {
+  double arc = 0.0;
+  std::optional<std::size_t> near, far;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    arc += (points[k].head<3>() - points[k - 1].head<3>()).norm();
+    if (arc < radius) continue;
+    if (!near) near = k;
+    if (arc <= reach * radius || !far) far = k;
+    if (arc > reach * radius) break;
+  }
+  if (!near || *far == *near) {
+    if (!near || *near + 1 >= points.size()) return std::nullopt;
+    far = *near + 1;
+  }
+  const Vec3 a = points[*near].head<3>(), d = points[*far].head<3>() - a;
+  if (d.norm() == 0.0) return std::nullopt;
+  return std::pair{a, Vec3(d.normalized())};
+}
+
+/// The point nearest, in least squares, to the lines (a_i, d_i): the
+/// solution of Σ (I − d_i d_iᵀ) x = Σ (I − d_i d_iᵀ) a_i. Nothing when the
+/// lines are about parallel (the smallest eigenvalue of the sum below
+/// `min_spread` × the number of lines).
+std::optional<Vec3> nearest_to_lines(const std::vector<std::pair<Vec3, Vec3>>& lines, double min_spread) {
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Vec3 b = Vec3::Zero();
+  for (const auto& [point, d] : lines) {
+    const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - d * d.transpose();
+    a += projector, b += projector * point;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(a);
+  if (lines.size() < 2 || eigen.eigenvalues().minCoeff() < min_spread * double(lines.size())) return std::nullopt;
+  return Vec3(a.ldlt().solve(b));
+}
+
+/// Moves junction node `j` (see relocate_junctions); true if it moved.
+bool relocate_junction(CurveSkeleton& skeleton, std::int32_t j, const JunctionOptions& o) {
+  const BranchGraph graph = extract_branches(skeleton);
+  const double radius = skeleton.nodes[j].w();
+  std::vector<std::pair<Vec3, Vec3>> lines;
+  std::vector<std::pair<const Branch*, std::vector<Vec4>>> leaving;  // branch, points from j
+  for (const Branch& b : graph.branches) {
+    if (b.first_node == b.last_node || (b.first_node != j && b.last_node != j)) continue;
+    std::vector<Vec4> points = b.points;
+    if (b.first_node != j) std::reverse(points.begin(), points.end());
+    if (const auto line = leaving_line(points, radius, o.reach)) lines.push_back(*line);
+    leaving.emplace_back(&b, std::move(points));
+  }
+  const std::optional<Vec3> x = nearest_to_lines(lines, o.min_spread);
+  if (!x || (*x - skeleton.nodes[j].head<3>()).norm() > o.largest_move * radius) return false;
+  // Interior nodes now behind the junction along their branch, or within
+  // half its radius ahead of it, go; the junction joins the next one.
+  std::vector<bool> drop(skeleton.nodes.size(), false);
+  for (const auto& [branch, points] : leaving) {
+    const Vec3 direction = points.back().head<3>() - *x;
+    if (direction.norm() == 0.0) continue;
+    std::vector<std::int32_t> chain = branch->interior_nodes;
+    if (branch->first_node != j) std::reverse(chain.begin(), chain.end());
+    const std::int32_t far_end = branch->first_node == j ? branch->last_node : branch->first_node;
+    std::int32_t previous = j;
+    for (std::int32_t node : chain) {
+      if ((skeleton.nodes[node].head<3>() - *x).dot(direction.normalized()) < 0.5 * radius) {
+        drop[node] = true;
+        continue;
+      }
+      if (previous == j) skeleton.edges.push_back({j, node});
+      previous = node;
+    }
+    if (previous == j) skeleton.edges.push_back({j, far_end});
+  }
+  skeleton.nodes[j].head<3>() = *x;
+  rebuild(skeleton, drop, -1, -1);
+  return true;
+}
+
+}  // namespace
+
+std::size_t relocate_junctions(CurveSkeleton& skeleton, const JunctionOptions& options) {
+  std::size_t moved = 0;
+  // A rebuild renumbers nodes, so the junctions are found again by their
+  // (unchanged) positions, in their first order.
+  std::vector<Vec4> junctions;
+  const auto next = neighbours(skeleton);
+  for (std::size_t n = 0; n < skeleton.nodes.size(); ++n) {
+    if (next[n].size() >= 3) junctions.push_back(skeleton.nodes[n]);
+  }
+  for (const Vec4& junction : junctions) {
+    const auto at = std::find(skeleton.nodes.begin(), skeleton.nodes.end(), junction);
+    if (at == skeleton.nodes.end()) continue;
+    moved += relocate_junction(skeleton, std::int32_t(at - skeleton.nodes.begin()), options);
+  }
+  return moved;
+}
+
 
 }  // namespace skelconv::reconstruct

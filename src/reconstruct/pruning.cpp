@@ -55,31 +55,37 @@ void compact(MedialGraph& graph, const std::vector<bool>& keep) {
   graph.edges = std::move(edges);
 }
 
+/// θ = 2 asin(|p⁻p⁺| / 2ρ) from the span |p⁻p⁺|, the ratio clamped to 1.
+double span_angle(double span, double rho) { return 2.0 * std::asin(std::min(1.0, span / (2.0 * rho))); }
+
 }  // namespace
 
 double pruning_angle(const Vec3& p_minus, const Vec3& p_plus, double rho) {
-  return 2.0 * std::asin(std::min(1.0, (p_plus - p_minus).norm() / (2.0 * rho)));
+  return span_angle((p_plus - p_minus).norm(), rho);
+}
+
+double contact_span(const MedialGraph& graph, std::size_t v) {
+  const MedialVertex& m = graph.vertices[v];
+  double longest = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) {
+      longest = std::max(longest, (graph.samples[m.samples[i]] - graph.samples[m.samples[j]]).norm());
+    }
+  }
+  return longest;
 }
 
 double vertex_angle(const MedialGraph& graph, std::size_t v) {
-  const MedialVertex& m = graph.vertices[v];
-  double longest = -1.0;
-  Vec3 p_minus = Vec3::Zero(), p_plus = Vec3::Zero();
-  for (int i = 0; i < 4; ++i) {
-    for (int j = i + 1; j < 4; ++j) {
-      const Vec3& p = graph.samples[m.samples[i]];
-      const Vec3& q = graph.samples[m.samples[j]];
-      if ((p - q).norm() > longest) longest = (p - q).norm(), p_minus = p, p_plus = q;
-    }
-  }
-  return pruning_angle(p_minus, p_plus, m.radius);
+  return span_angle(contact_span(graph, v), graph.vertices[v].radius);
 }
 
-PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double minimum_piece) {
+PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double minimum_piece, double minimum_span) {
   const std::size_t n = graph.vertices.size();
   PruningReport report;
   std::vector<bool> keep(n);
-  for (std::size_t v = 0; v < n; ++v) keep[v] = vertex_angle(graph, v) >= threshold;
+  for (std::size_t v = 0; v < n; ++v) {
+    keep[v] = vertex_angle(graph, v) >= threshold && contact_span(graph, v) >= minimum_span;
+  }
   report.vertices_removed = n - std::size_t(std::count(keep.begin(), keep.end(), true));
   // What went, as connected pieces of the removed vertices.
   std::vector<bool> removed(n);

@@ -22,6 +22,8 @@ namespace {
 void check_options(const ReconstructOptions& o) {
   if (!(o.prune_angle_degrees >= 0.0 && o.prune_angle_degrees < 180.0))
     throw InputError(fmt::format("must be in [0, 180) degrees, got {}", o.prune_angle_degrees), "--prune-angle");
+  if (!(o.prune_span >= 0.0 && o.prune_span < 0.5))
+    throw InputError(fmt::format("must be in [0, 0.5) (× the bounding-box diagonal), got {}", o.prune_span), "--prune-span");
   if (!(o.epsilon >= 0.0 && o.epsilon < 1.0))
     throw InputError(fmt::format("must be in [0, 1), got {}", o.epsilon), "--epsilon");
 }
@@ -58,7 +60,12 @@ Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::st
   for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
   CurveSkeleton curve = level_set_skeleton(graph, {o.bin_factor * radii[radii.size() / 2], 0.95});
-  if (spurs != nullptr) *spurs = remove_spurs(curve, o.spur_factor);
+  if (spurs != nullptr) {
+    *spurs = remove_spurs(curve, o.spur_factor, o.spur_protrusion);
+    // Moving junctions can leave two paths between the same junctions or
+    // a branch short enough to contract: clean up once more.
+    if (o.relocate_junctions && relocate_junctions(curve) > 0) *spurs += remove_spurs(curve, o.spur_factor, o.spur_protrusion);
+  }
   return make_stage(std::move(name), extract_branches(curve));
 }
 
@@ -95,6 +102,12 @@ Stage fitted_stage(const Stage& from, const TriangleMesh& surface, const Reconst
   return stage;
 }
 
+double bounding_diagonal(const std::vector<Vec3>& points) {
+  Vec3 lo = points.front(), hi = lo;
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).norm();
+}
+
 void say(const ReconstructOptions& o, const std::string& line) {
   if (o.progress) o.progress(line);
 }
@@ -111,7 +124,8 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
   say(o, fmt::format("medial graph: {} samples, {} inner Voronoi vertices, {} edges", result.samples,
                      result.medial_vertices, result.medial_edges));
   result.stages.push_back(branches_of(graph, o, "raw", nullptr));
-  result.pruning = prune_medial_graph(graph, o.prune_angle_degrees * std::numbers::pi / 180.0);
+  result.pruning = prune_medial_graph(graph, o.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
+                                     o.prune_span * bounding_diagonal(graph.samples));
   say(o, fmt::format("pruned: {} vertices ({} pieces) below the angle, {} small islands removed", result.pruning.vertices_removed,
                      result.pruning.branches_removed, result.pruning.small_pieces_removed));
   result.stages.push_back(branches_of(graph, o, "pruned", &result.spurs_removed));

@@ -66,10 +66,39 @@ BranchGraph extract_branches(const CurveSkeleton& skeleton);
 /// between two junctions (or loop at one) shorter than `spur_factor` × the
 /// larger end radius (a "bubble" of a coarsely sampled junction: its two
 /// junctions become one, at their midpoint, with the larger radius), and
-/// removes every terminal branch (an end to a junction) shorter than
-/// `spur_factor` × the junction's radius (a spur that stays about inside the
-/// junction's ball adds little to the shape). Returns how many went.
-std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor);
+/// removes every terminal branch (an end to a junction) that is a spur:
+/// shorter than `spur_factor` × the junction's radius (it stays about inside
+/// the junction's ball), or whose balls reach less than `protrusion_factor`
+/// × the junction's radius beyond the balls of the rest of the skeleton
+/// (0: not tested). The second rule catches what sampling noise grows: a
+/// bump of the surface pulls a piece of medial sheet from the axis towards
+/// it, a spur as long as the tube is thick whose balls stay inside the
+/// tube (measured on the noisy ring: 0.03-0.48 junction radii beyond; the
+/// real branches of the test shapes reach 1.8-6). Returns how many went.
+std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor = 0.0);
+
+struct JunctionOptions {
+  /// The axis of a branch leaving a junction of radius R is the chord of
+  /// its points from R to `reach` × R (arc length) away.
+  double reach = 3.0;
+  /// A move larger than this × R is not trusted (the junction stays).
+  double largest_move = 2.0;
+  /// The axes must not be about parallel: the smallest eigenvalue of
+  /// Σ (I − d dᵀ) at least this × their number (0 for parallel axes,
+  /// 1 for three orthogonal ones; a plane Y of 120° gives 0.5 × 3 in the
+  /// plane and 1 × 3 across it).
+  double min_spread = 0.05;
+};
+
+/// Moves every junction (degree ≥ 3) to the point nearest, in least
+/// squares, to the axes of the branches leaving it (each the chord from one
+/// to `reach` junction radii along the branch). A level-set graph puts a
+/// junction where its level set splits, about a radius past the true
+/// branching point, and branches then cut the corner there (the tree's
+/// largest distances were at those corners). Interior nodes left behind
+/// the moved junction, or within half its radius ahead of it, go. Returns
+/// how many junctions moved.
+std::size_t relocate_junctions(CurveSkeleton& skeleton, const JunctionOptions& options = {});
 
 /// 3-D length of a polyline (r ignored).
 double polyline_length(const std::vector<Vec4>& points);

@@ -20,6 +20,12 @@ namespace skelconv::reconstruct {
 struct ReconstructOptions {
   /// Ferley's pruning threshold θ_min, degrees, in [0, 180).
   double prune_angle_degrees = 90.0;
+  /// Pruning also removes the Voronoi vertices whose contact samples span
+  /// less than this × the input's bounding-box diagonal (pruning.hpp: the
+  /// scale the angle does not see). 0 (default) for clean samples; for
+  /// samples with noise of amplitude a (× the diagonal), about 4a: a
+  /// sample moves by up to a√3, a span by twice that.
+  double prune_span = 0.0;
   /// Pavlidis tolerance ε, relative to the largest extent of the skeleton's
   /// bounding box (Ferley's fig. 3.2 uses 0.02).
   double epsilon = 0.02;
@@ -27,6 +33,15 @@ struct ReconstructOptions {
   double bin_factor = 1.0;
   /// A terminal branch shorter than this × its junction's radius is a spur.
   double spur_factor = 1.5;
+  /// A terminal branch whose balls reach less than this × its junction's
+  /// radius beyond the rest of the skeleton's balls is a spur too
+  /// (remove_spurs; the noise spurs of the test shapes reach at most 1.03
+  /// (noisy tree; 0.48 on the noisy ring), their real branches at least
+  /// 1.8: 1.5 is between, with margin both ways).
+  double spur_protrusion = 1.5;
+  /// Junctions moved to where their branches' axes meet
+  /// (relocate_junctions), in every stage after `raw`.
+  bool relocate_junctions = true;
   /// B-spline sampling: segments per span.
   int samples_per_span = 4;
   /// SCALIS Cauchy kernel of the output segments (docs/cli.md), normalised
