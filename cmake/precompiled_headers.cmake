@@ -17,9 +17,9 @@
 # interval tests are not listed: they parse as before. (GCC folds constant
 # expressions while it parses, so a header parsed without -frounding-math
 # carries values folded in round-to-nearest: with it, the interval test's
-# 0.1 + 0.2 lost its outward rounding and Interval.RoundsOutward failed.) If GCC ever rejects the header
-# (-Winvalid-pch says so), it includes the headers as text: slower, never
-# different.
+# 0.1 + 0.2 lost its outward rounding and Interval.RoundsOutward failed.)
+# If GCC ever rejects the header (-Winvalid-pch says so), it includes the
+# headers as text: slower, never different.
 #
 # SKELCONV_PRECOMPILED_HEADERS=OFF turns it off (e.g. with ccache, which
 # caches precompiled-header builds only with extra sloppiness settings).
