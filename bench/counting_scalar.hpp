@@ -69,8 +69,15 @@ struct CountingDouble {
   friend CountingDouble ceil(CountingDouble a) { return CountingDouble(std::ceil(a.value)); }
   friend CountingDouble log(CountingDouble a) { return ++operation_tally().log, CountingDouble(std::log(a.value)); }
   friend CountingDouble cos(CountingDouble a) { return ++operation_tally().other, CountingDouble(std::cos(a.value)); }
+  friend CountingDouble sin(CountingDouble a) { return ++operation_tally().other, CountingDouble(std::sin(a.value)); }
   friend CountingDouble atan2(CountingDouble y, CountingDouble x) {
     return ++operation_tally().atan, CountingDouble(std::atan2(y.value, x.value));
+  }
+  // A fused multiply-add counts as the × and the + it fuses (op_count.hpp has
+  // no column of its own for it); it is exact to one rounding, as std::fma.
+  friend CountingDouble fma(CountingDouble a, CountingDouble b, CountingDouble c) {
+    ++operation_tally().mul, ++operation_tally().add;
+    return CountingDouble(std::fma(a.value, b.value, c.value));
   }
   friend CountingDouble pow(CountingDouble a, int n) {
     // Binary powering: one × per bit after the leading one, one per further set bit.

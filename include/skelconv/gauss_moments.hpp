@@ -27,21 +27,58 @@
 // (double, long double, float128, …).
 #pragma once
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss.hpp>
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "skelconv/not_converged.hpp"
 
 namespace skelconv {
 
+/// How the rule's nodes x ∈ [−1, 1] map to [t0, t1].
+enum class NodeMap {
+  linear,  ///< t = middle + half_width x: Gauss–Legendre itself
+  /// t = middle + half_width sin(πx/2), weight × (π/2) cos(πx/2): where q has
+  /// a root at an end of [t0, t1] (a compact support clipping the
+  /// interval), q^(i/2) ~ (t1 − t)^(i/2) has a branch point there, on which
+  /// Gauss–Legendre converges only like N^−(i+2); after the map t1 − t ~
+  /// (1 − x)², so q^(i/2) ~ (1 − x)^i is analytic and the rule converges
+  /// geometrically again, with ρ set by q's other root.
+  sine,
+};
+
+/// Boost's N-point Gauss–Legendre table (nonnegative nodes) after the sine
+/// map of NodeMap::sine, computed once per table type (double for SIMD lanes).
+template <class T, unsigned N>
+const auto& sine_mapped_rule() {
+  using Table = std::decay_t<decltype(boost::math::quadrature::gauss<T, N>::abscissa())>;
+  struct Mapped {
+    Table abscissa, weights;
+  };
+  static const Mapped mapped = [] {
+    using X = std::decay_t<decltype(boost::math::quadrature::gauss<T, N>::abscissa()[0])>;
+    using std::cos, std::sin;
+    const X half_pi = boost::math::constants::half_pi<X>();
+    Mapped m{boost::math::quadrature::gauss<T, N>::abscissa(), boost::math::quadrature::gauss<T, N>::weights()};
+    for (std::size_t j = 0; j < m.abscissa.size(); ++j) {
+      const X x = m.abscissa[j];
+      m.abscissa[j] = sin(half_pi * x);
+      m.weights[j] = m.weights[j] * half_pi * cos(half_pi * x);
+    }
+    return m;
+  }();
+  return mapped;
+}
+
 /// Adds the N-point Gauss–Legendre rule on [t0, t1] for M_{k,m},
 /// k = 0…k_max, m = m_lo, m_lo + 2, …, m_hi (m may be negative: q^(|m|/2)
 /// for compact kernels, where q ≥ 0 on [t0, t1]), to
 /// out[((m − m_lo)/2)(k_max + 1) + k]; q_at(t) evaluates q ≥ 0.
-template <class T, unsigned N, class QuadraticAt>
+template <class T, unsigned N, class QuadraticAt, NodeMap map = NodeMap::linear>
 void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
                                T* out) {
   using std::sqrt;
@@ -72,8 +109,8 @@ void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt&
       level_value *= q;
     }
   };
-  const auto& x = Rule::abscissa();
-  const auto& g = Rule::weights();
+  const auto& x = map == NodeMap::linear ? Rule::abscissa() : sine_mapped_rule<T, N>().abscissa;
+  const auto& g = map == NodeMap::linear ? Rule::weights() : sine_mapped_rule<T, N>().weights;
   unsigned first = 0;
   if (N % 2 == 1) {
     add_node(T(0), g[0]);
@@ -235,6 +272,24 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
   } else {
     add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, t0, t1, out);
   }
+}
+
+/// M_{k,m} on [t0, t1] (layout of segment_moments_gauss, m ≤ 0: compact
+/// kernels) by the N-point rule after the sine map (NodeMap::sine), for an
+/// interval that a compact support may clip at an end. Every term is
+/// positive, so nothing cancels; the generated compact kernels of odd
+/// degree take it where the vertex t* of q lies far outside [0, 1], where
+/// the moment relations multiply rounding by ~|t*|/⟨t⟩ per step in k.
+template <class T, unsigned N>
+void segment_moments_gauss_sine(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c, const T& t0,
+                                const T& t1, T* out) {
+  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
+  for (int i = 0; i < count; ++i) out[i] = T(0);
+  auto q_at = [&](const T& t) {
+    using std::max;
+    return max(T(0), c + t * (a * t - 2 * b));
+  };
+  add_segment_moments_gauss<T, N, decltype(q_at), NodeMap::sine>(m_lo, m_hi, k_max, q_at, t0, t1, out);
 }
 
 /// Nodes per panel of segment_moments_gauss_panels: on an accepted panel

@@ -119,6 +119,10 @@ inline LaneMask operator==(Lanes a, Lanes b) { return {hn::Eq(a.v, b.v)}; }
 inline LaneMask operator!=(Lanes a, Lanes b) { return {hn::Ne(a.v, b.v)}; }
 
 inline Lanes sqrt(Lanes a) { return Lanes(hn::Sqrt(a.v)); }
+// a·b + c rounded once on the FMA targets (AVX2, AVX-512), as std::fma:
+// skelconv/exact_cross.hpp's error-free products need exactly that. The
+// SCALAR target hands every point to the scalar path (find_group).
+inline Lanes fma(Lanes a, Lanes b, Lanes c) { return Lanes(hn::MulAdd(a.v, b.v, c.v)); }
 inline Lanes abs(Lanes a) { return Lanes(hn::Abs(a.v)); }
 // std::min(a, b) is (b < a) ? b : a and std::max(a, b) is (a < b) ? b : a;
 // the same selects here (hn::Min/Max differ for ±0 and NaN).
