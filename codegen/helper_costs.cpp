@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include <skelconv/exact_cross.hpp>
 #include <skelconv/gauss_moments.hpp>
 #include <skelconv/polygon_angle_integrals.hpp>
 #include <skelconv/stable_recurrence.hpp>
@@ -51,7 +52,23 @@ OpCount gauss_rule_with(int m_lo, int m_hi, int k_max) {
   });
 }
 
+template <unsigned N>
+OpCount gauss_sine_rule_with(int m_lo, int m_hi, int k_max) {
+  std::vector<Counted> out = moment_array(m_lo, m_hi, k_max);
+  auto call = [&] {
+    segment_moments_gauss_sine<Counted, N>(m_lo, m_hi, k_max, Counted(-1), Counted(-2), Counted(-2), Counted(0),
+                                           Counted(1), out.data());
+  };
+  call();  // the mapped table is computed once, on the first call: not counted
+  return tally_of(call);
+}
+
 }  // namespace
+
+OpCount gauss_sine_rule(int nodes, int m_lo, int m_hi, int k_max) {
+  if (nodes != 30) throw std::logic_error("helper_costs::gauss_sine_rule: only the 30-node rule is generated");
+  return gauss_sine_rule_with<30>(m_lo, m_hi, k_max);
+}
 
 OpCount gauss_rule(int nodes, int m_lo, int m_hi, int k_max) {
   switch (nodes) {
@@ -129,6 +146,14 @@ OpCount polygon_G_compact_chord(int p_lo, int p_hi) {
   return tally_of([&] {
     polygon_edge_G_compact_chord<Counted>(p_lo, p_hi, Counted(1), Counted(1), Counted(1), Counted(0.25), Counted(-root3),
                                           Counted(root3), out.data());
+  });
+}
+
+OpCount exact_cross() {
+  Counted cross[3];
+  return tally_of([&] {
+    segment_exact_cross<Counted>(Counted(0.1), Counted(0.2), Counted(0.3), Counted(1.1), Counted(0.7), Counted(0.4),
+                                 Counted(0.6), Counted(0.45), Counted(0.35), cross);
   });
 }
 

@@ -43,4 +43,12 @@ OpCount polygon_H_near_plane(int n_lo, int n_hi);
 /// polygon_edge_G_compact_chord<T> with its most panels (u over [−√3, √3]).
 OpCount polygon_G_compact_chord(int p_lo, int p_hi);
 
+/// segment_moments_gauss_sine<T, nodes> (fixed cost; its mapped table is
+/// computed once per type, not per call). Only nodes = 30.
+OpCount gauss_sine_rule(int nodes, int m_lo, int m_hi, int k_max);
+
+/// segment_exact_cross<T> (skelconv/exact_cross.hpp; fixed cost, each
+/// fused multiply-add counted as one × and one +).
+OpCount exact_cross();
+
 }  // namespace skelconv::codegen::helper_costs

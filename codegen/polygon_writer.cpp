@@ -57,7 +57,7 @@ std::string write_polygon_files(const GeneratorRequest& request, const std::file
     std::ostringstream os;
     os << file_header(file, "polygon edge kernels of the " + std::string(family_name(family)) + " family.", request)
        << kPolygonSources << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
-       << "#include <skelconv/gauss_moments.hpp>\n#include <skelconv/polygon_angle_integrals.hpp>\n"
+       << "#include <skelconv/exact_cross.hpp>\n#include <skelconv/gauss_moments.hpp>\n#include <skelconv/polygon_angle_integrals.hpp>\n"
        << "#include <skelconv/polygon_edge_input.hpp>\n#include <skelconv/segment_input.hpp>\n"
        << "#include <skelconv/stable_recurrence.hpp>\n\n"
        << "namespace skelconv::generated {\n\n"

@@ -57,7 +57,7 @@ std::string write_scalis_segment_files(const GeneratorRequest& request, const st
     os << file_header(file, "SCALIS segment kernels of the " + std::string(family_name(family)) + " family.",
                       request)
        << from << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
-       << "#include <skelconv/gauss_moments.hpp>\n#include <skelconv/scalis_segment_input.hpp>\n"
+       << "#include <skelconv/exact_cross.hpp>\n#include <skelconv/gauss_moments.hpp>\n#include <skelconv/scalis_segment_input.hpp>\n"
        << "#include <skelconv/stable_recurrence.hpp>\n\n"
        << "namespace skelconv::generated {\n\n"
        << body << "}  // namespace skelconv::generated\n";

@@ -68,6 +68,9 @@ class ScalisSegmentProgramBuilder : public SegmentProgramBuilder {
     }
   }
 
+  // Cauchy: b/a includes the σ²τ terms, so t* is not the foot of P.
+  bool t_star_is_foot() const override { return spec_.family != KernelFamily::cauchy; }
+
   void define_quadratic() override {
     alpha_ = 1;
     beta_ = 0;

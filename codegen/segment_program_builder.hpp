@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,11 +33,14 @@ DECLARE_FUNCTION_1P(nonnegative_part)
 DECLARE_FUNCTION_2P(minimum)
 DECLARE_FUNCTION_2P(maximum)
 
-/// One quantity a kernel reads: Σ_k w_k M_{k+shift,level}, named `name`.
+/// One quantity a kernel reads: Σ_k w_k M_{k+shift,level}, named `name`;
+/// or, for `along_line`, Σ_k w_k (M_{k+1,level} − t* M_{k,level}) with
+/// t* = b/a (SegmentProgramBuilder::along_line_moment says how).
 struct MomentRequest {
   std::string name;
   int shift;
   int level;
+  bool along_line = false;
 };
 
 // Beyond an end of the segment, with ρ = D / (a q_near) the per-step factor
@@ -61,20 +65,29 @@ class SegmentProgramBuilder {
   virtual ~SegmentProgramBuilder() = default;
 
   StraightLineProgram build(SegmentOutputs outputs) {
+    const bool value = outputs != SegmentOutputs::gradient;
+    const bool gradient = outputs != SegmentOutputs::value;
+    foot_is_perpendicular_ = gradient && t_star_is_foot();
     read_inputs();
     define_geometry();
     define_quadratic();
     const int n = kernel_index();
-    const bool value = outputs != SegmentOutputs::gradient;
-    const bool gradient = outputs != SegmentOutputs::value;
     // What the outputs need: F = Σ w_k M_{k,n} for f = |AB| F, and
     // G_ap = Σ w_k M_{k,n+2}, G_ab = Σ w_k M_{k+1,n+2} for
     // ∇f = −n α |AB| (AP G_ap − AB G_ab) (SPEC §2).
+    //
+    // Written as ∇f = −n α |AB| (H G_ap − AB G_E) with H = AP − t* AB (the
+    // foot of P on the line: exact from AB × AP near the line, define_foot)
+    // and G_E = G_ab − t* G_ap = Σ w_k (M_{k+1,n+2} − t* M_{k,n+2}), the two
+    // parts of ∇f across and along the line. Near the line, AP G_ap and
+    // AB G_ab are both ~|AB|/h times |∇f| (h the distance from the line) and
+    // their difference loses that factor; G_E by parts
+    // (along_line_moment) does not.
     std::vector<MomentRequest> requests;
     if (value) requests.push_back({"F", 0, n});
     if (gradient) {
       requests.push_back({"G_ap", 0, n + 2});
-      requests.push_back({"G_ab", 1, n + 2});
+      requests.push_back({"G_E", 1, n + 2, true});
     }
     const std::vector<symbol> targets = choose_moments(requests);
     add_outputs(targets, value, gradient);
@@ -90,7 +103,8 @@ class SegmentProgramBuilder {
     for (const MomentRequest& r : requests) targets.emplace_back(r.name);
     auto values_from = [&](MomentRecurrence& moments) {
       std::vector<ex> v;
-      for (const MomentRequest& r : requests) v.push_back(weighted_moment(moments, r.shift, r.level));
+      for (const MomentRequest& r : requests)
+        v.push_back(r.along_line ? along_line_moment(moments, r.level) : weighted_moment(moments, r.shift, r.level));
       return v;
     };
 
@@ -108,11 +122,10 @@ class SegmentProgramBuilder {
           if (2 * tabulated - 1 >= polynomial_degree) break;
         }
         const std::string rule = "segment_moments_gauss<T, " + std::to_string(nodes) + ">";
-        Alternative exact{{}, "even degree: the integrand is a polynomial of degree " +
-                                  std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
-                          {}, {}, {}};
-        fill_from_helper(exact, "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t}, gauss_rule_cost(nodes));
-        choice.alternatives.push_back(std::move(exact));
+        push_helper_alternatives(choice, {}, "even degree: the integrand is a polynomial of degree " +
+                                     std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
+                                 "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t}, gauss_rule_cost(nodes));
+        choice.generic = choice.alternatives.size() - 1;
         program_.choose(std::move(choice));
         return targets;
       }
@@ -124,13 +137,37 @@ class SegmentProgramBuilder {
         // (include/skelconv/gauss_moments.hpp).
         const ex t_star = b_ / a_;
         const ex reach = maximum(t_star + numeric(1, 2), numeric(3, 2) - t_star);
-        Alternative flat{{-D_ - pow(a_, 2) * pow(reach, 2)},
-                         "support sphere at least |AB|/2 beyond both ends: every moment by "
-                         "segment_moments_gauss<T, 20>",
-                         {}, {}, {}};
-        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t},
-                         gauss_rule_cost(20));
-        choice.alternatives.push_back(std::move(flat));
+        push_helper_alternatives(choice, {-D_ - pow(a_, 2) * pow(reach, 2)},
+                                 "support sphere at least |AB|/2 beyond both ends: every moment by "
+                                 "segment_moments_gauss<T, 20>",
+                                 "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                                 gauss_rule_cost(20));
+        // The moment relations carry rounding up by a factor ~|t*|/⟨t⟩ per
+        // step in k where the vertex t* = b/a lies far outside [0, 1]
+        // (measured: f 1.1e-13, compact i7 w3, t* ≈ −2.8, a generic point).
+        // There the 30-point rule after the sine map of
+        // segment_moments_gauss_sine adds positive terms only. q's roots are
+        // t* ± h, h = √(−D)/|a|; the far one is at least 2 beyond [0, 1].
+        // The near one must be either the clipped end itself (t0 > 0 for t*
+        // ≥ 2: the map removes its branch point) or at least |AB|/10 beyond
+        // the end: a root just outside an unclipped end leaves a branch
+        // point ~√δ from the mapped interval (measured: ∇f 2.9e-11, compact
+        // i3, the support 1e-4 |AB| beyond A), and the recurrences keep
+        // those points. With the far root 2 away the mapped integrand is
+        // analytic on a Bernstein ellipse of ρ ≳ 3 (4.97 at t* = −2.5).
+        const ex half_chord = pow(-D_, numeric(1, 2)) / (-a_);
+        const ex tiny = numeric(1, 4503599627370496);  // 2^−52: a clip below it counts as none
+        const std::string why = ": every moment by segment_moments_gauss_sine<T, 30> (Gauss–Legendre after a sine map)";
+        Alternative beyond_a{{t_star - 2, maximum(symbols.lo.t - tiny, -(t_star - half_chord) - numeric(1, 10))},
+                             "vertex t* ≥ 2, support clipping A's side or 1/10 short of it" + why, {}, {}, {}};
+        Alternative beyond_b{{-1 - t_star, maximum(1 - tiny - symbols.hi.t, t_star + half_chord - numeric(11, 10))},
+                             "vertex t* ≤ −1, support clipping B's side or 1/10 short of it" + why, {}, {}, {}};
+        for (Alternative* far_vertex : {&beyond_a, &beyond_b}) {
+          fill_from_helper(*far_vertex, "M_far_vertex", "segment_moments_gauss_sine<T, 30>",
+                           {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                           [](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_sine_rule(30, m_lo, m_hi, k_max); });
+          choice.alternatives.push_back(std::move(*far_vertex));
+        }
       }
       // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
       const int bottom = kernel_index() - 2 * ((spec_.weight_degree + 1) / 2) - 2;
@@ -178,8 +215,15 @@ class SegmentProgramBuilder {
         // Far from the line compared with |AB| (D ≥ 2a²): the kernel is nearly
         // flat and the moment relations cancel; a 20-point Gauss–Legendre rule
         // is exact to rounding there (include/skelconv/gauss_moments.hpp).
-        Alternative flat{{D_ - 2 * pow(a_, 2)}, "P far from the line (D ≥ 2a²): every moment by "
-                         "segment_moments_gauss<T, 20>", {}, {}, {}};
+        // The same rule serves P beyond an end by at least 2|AB| along the
+        // line (t* = b/a ≥ 3 or ≤ −2): q's complex roots t* ± i√D/a are then
+        // at least 2 from [0, 1] (Bernstein ellipse ρ ≥ 5 + √24, so 20 nodes
+        // leave ~ρ^−40), while the moment relations there multiply rounding
+        // by up to |t*|^k (measured 1.0e-13 in f at t* ≈ 3.9, inverse i2 w3).
+        Alternative flat{{maximum(D_ - 2 * pow(a_, 2), maximum(b_ - 3 * a_, -b_ - 2 * a_))},
+                         "P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): "
+                         "every moment by segment_moments_gauss<T, 20>",
+                         {}, {}, {}};
         fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, 0, 1}, gauss_rule_cost(20));
         choice.alternatives.push_back(std::move(flat));
       }
@@ -191,7 +235,7 @@ class SegmentProgramBuilder {
         if (lowest_level() >= highest_moment() + 2) {
           // Every moment from segment_moments_beyond_end, centred at the near end.
           fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>", {a_, b_, D_, symbols.lo.q, symbols.hi.q},
-                           helper_costs::moments_beyond_end, false);
+                           helper_costs::moments_beyond_end, false, true);
           beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, "
                        "recurrence (1) downwards (segment_moments_beyond_end)";
         } else {
@@ -210,24 +254,65 @@ class SegmentProgramBuilder {
     return targets;
   }
 
-  // f = |AB| F and ∇f = −n α |AB| (AP G_ap − AB G_ab), SPEC §2.
+  // f = |AB| F and ∇f = −n α |AB| (AP G_ap − AB G_ab) = −n α |AB| (H G_ap −
+  // AB G_E), SPEC §2 (build() says why the second form).
   void add_outputs(const std::vector<symbol>& targets, bool value, bool gradient) {
     if (value) program_.add_output("f", output_scale_ * length_ * targets[0]);
     if (gradient) {
       const symbol& g_ap = targets[value ? 1 : 0];
-      const symbol& g_ab = targets[value ? 2 : 1];
+      const symbol& g_e = targets[value ? 2 : 1];
+      const std::array<ex, 3> foot = define_foot();
       const ex factor = define("g_factor", -kernel_index() * alpha_ * output_scale_ * length_);
       for (int i = 0; i < 3; ++i)
-        program_.add_output("grad[" + std::to_string(i) + "]", factor * (ap_[i] * g_ap - ab_[i] * g_ab));
+        program_.add_output("grad[" + std::to_string(i) + "]", factor * (foot[i] * g_ap - ab_[i] * g_e));
     }
+  }
+
+  // H = AP − t* AB, t* = b/a. For a segment t* is the foot of P on the line
+  // and H = (AB × AP) × AB / |AB|²: from the exactly rounded cross product
+  // where P is near the line (define_geometry's choice), where AP − t* AB
+  // would lose |AP|/h; elsewhere AP − t* AB (error ≤ ε|AP| ≤ 16 ε |H|).
+  // Builders whose t* is not the foot (SCALIS Cauchy: b, a include σ²τ
+  // terms) override this with AP − (b/a) AB.
+  virtual std::array<ex, 3> define_foot() {
+    if (foot_.has_value()) return *foot_;
+    const ex t_star = define("t_star", b_ / a_);
+    std::array<ex, 3> h;
+    for (int i = 0; i < 3; ++i) h[i] = define("foot" + std::to_string(i), ap_[i] - t_star * ab_[i]);
+    return h;
+  }
+
+  // Σ_k w_k (M_{k+1,L} − t* M_{k,L}) = Σ_k w_k ∫ t^k (t − t*) q^(−L/2) dt,
+  // by parts (with n = L − 2, a(t − t*) = q'/2 and q^(−L/2) q' = −(2/n) d(q^(−n/2))):
+  //     = ( ∫ w'(t) q^(−n/2) dt + w(t0) q(t0)^(−n/2) − w(t1) q(t1)^(−n/2) ) / (a n),
+  // whose terms do not cancel where P is near the line (the difference of
+  // the two moments loses the factor |t*| M / |M_{k+1} − t* M_k| there).
+  ex along_line_moment(MomentRecurrence& moments, int level) {
+    return along_line_moment([&](int k, int m) { return moments.M(k, m); }, level);
+  }
+  ex along_line_moment(const std::function<ex(int k, int m)>& M, int level) {
+    const int n = level - 2;
+    ex derivative_part = 0;
+    for (int k = 1; k <= spec_.weight_degree; ++k) derivative_part += k * w_[k] * M(k - 1, n);
+    auto weight_at = [&](const ex& t) {
+      ex w = w_[0];  // (GiNaC leaves 0^0 undefined)
+      for (int k = 1; k <= spec_.weight_degree; ++k) w += w_[k] * pow(t, k);
+      return w;
+    };
+    auto q_power = [&](const QuadraticEnd& end) {  // q^(−n/2)
+      return n % 2 != 0 ? pow(end.root, -n) : pow(end.q, numeric(-n, 2));
+    };
+    return (derivative_part + weight_at(symbols_.lo.t) * q_power(symbols_.lo) -
+            weight_at(symbols_.hi.t) * q_power(symbols_.hi)) /
+           (a_ * n);
   }
 
   // Lowest and highest level m, highest k of the moments M_{k,m} the
   // requests read (segments: F needs m = n, k ≤ d; G_ap, G_ab need
   // m = n + 2, k ≤ d + 1).
-  int lowest_level() const {
+  int lowest_level() const {  // along_line requests read level − 2 (by parts)
     int m = requests_.front().level;
-    for (const MomentRequest& r : requests_) m = std::min(m, r.level);
+    for (const MomentRequest& r : requests_) m = std::min(m, r.along_line ? r.level - 2 : r.level);
     return m;
   }
   int highest_level() const {
@@ -246,12 +331,44 @@ class SegmentProgramBuilder {
     return [nodes](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_rule(nodes, m_lo, m_hi, k_max); };
   }
 
+  // A helper alternative taken where `conditions` hold, twice when the
+  // outputs include G_E: with G_E by parts where P is near the line and
+  // projects onto the segment (sin∠(AB, AP) < 1/16, t* ∈ [0, 1]: there
+  // G_E can be small against t* G_ap, and the difference loses that
+  // ratio), elsewhere as a difference (beyond an end G_E has one sign and
+  // the difference keeps its digits, while for the compact kernels the
+  // parts formula's boundary terms cancel by ~R²/|AB|² far along the axis;
+  // measured: soft kernel, far region, ∇f 8e-16 → 6.5e-13 by parts). Without
+  // conditions the second is the choice's fallback.
+  void push_helper_alternatives(Choice& choice, const std::vector<ex>& conditions, const std::string& why,
+                                const std::string& array, const std::string& function, const std::vector<ex>& args,
+                                const HelperCost& cost) {
+    const bool along_line = std::any_of(requests_.begin(), requests_.end(), [](const MomentRequest& r) { return r.along_line; });
+    if (along_line) {
+      std::vector<ex> near_conditions = conditions;
+      near_conditions.push_back(ab_ab_ * ap_ap_ - 256 * cross_cross_);
+      near_conditions.push_back(b_ * (a_ - b_));
+      Alternative near{near_conditions, why + "; near the line, G_E by parts", {}, {}, {}};
+      fill_from_helper(near, array, function, args, cost, true, true);
+      choice.alternatives.push_back(std::move(near));
+    }
+    Alternative alt{conditions, why, {}, {}, {}};
+    fill_from_helper(alt, array, function, args, cost);
+    choice.alternatives.push_back(std::move(alt));
+  }
+
   // Takes every moment the outputs need from one helper call that fills an
   // array (include/skelconv/stable_recurrence.hpp, gauss_moments.hpp):
   // function(m_lo, m_hi, k_max, args…, array). `cost` gives the call's
   // operations; `fixed_rule` says whether their number is the same at every P.
+  //
+  // `by_parts`: G_E (along_line requests) by along_line_moment's parts
+  // formula from the helper's level-n moments, for helpers that run near
+  // the line or near an end; otherwise as G_ab − t* G_ap (far from the
+  // segment, where the parts formula's boundary terms would cancel instead).
   void fill_from_helper(Alternative& alt, const std::string& array, const std::string& function,
-                        const std::vector<ex>& args, const HelperCost& cost, bool fixed_rule = true) {
+                        const std::vector<ex>& args, const HelperCost& cost, bool fixed_rule = true,
+                        bool by_parts = false) {
     const int m_lo = lowest_level(), m_hi = highest_level(), k_max = highest_moment();
     ArrayCall call{array, function, {std::to_string(m_lo), std::to_string(m_hi), std::to_string(k_max)},
                    args,  {},       cost(m_lo, m_hi, k_max),
@@ -265,7 +382,15 @@ class SegmentProgramBuilder {
         sum += w_[k] * call.elements[static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k + shift)];
       return sum;
     };
-    for (const MomentRequest& r : requests_) alt.values.push_back(weighted(r.shift, r.level));
+    auto moment = [&](int k, int m) { return call.elements[static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k)]; };
+    for (const MomentRequest& r : requests_) {
+      if (!r.along_line)
+        alt.values.push_back(weighted(r.shift, r.level));
+      else if (by_parts)
+        alt.values.push_back(along_line_moment([&](int k, int m) -> ex { return moment(k, m); }, r.level));
+      else
+        alt.values.push_back(weighted(1, r.level) - b_ / a_ * weighted(0, r.level));
+    }
     alt.calls.push_back(std::move(call));
   }
 
@@ -317,17 +442,63 @@ class SegmentProgramBuilder {
     ab_ab_ = define("ab_ab", dot(ab_, ab_));
     ab_ap_ = define("ab_ap", dot(ab_, ap_));
     ap_ap_ = define("ap_ap", dot(ap_, ap_));
-    cross_ = {
-        define("cross0", ab_[1] * ap_[2] - ab_[2] * ap_[1]),
-        define("cross1", ab_[2] * ap_[0] - ab_[0] * ap_[2]),
-        define("cross2", ab_[0] * ap_[1] - ab_[1] * ap_[0]),
+    const std::array<ex, 3> plain = {
+        define("plain_cross0", ab_[1] * ap_[2] - ab_[2] * ap_[1]),
+        define("plain_cross1", ab_[2] * ap_[0] - ab_[0] * ap_[2]),
+        define("plain_cross2", ab_[0] * ap_[1] - ab_[1] * ap_[0]),
     };
-    cross_cross_ = define("cross_cross", dot(cross_, cross_));
+    define_exact_cross(plain, define("plain_cross_cross", dot(plain, plain)));
     bp_bp_ = define("bp_bp", dot(bp_, bp_));
     ab_bp_ = define("ab_bp", dot(ab_, bp_));
     ap_bp_ = define("ap_bp", dot(ap_, bp_));
     length_ = define("length", pow(ab_ab_, numeric(1, 2)));
   }
+
+  // AB × AP and |AB × AP|² (and, for a segment's gradient, the foot vector
+  // H of define_foot), rounded once from the exact inputs where P is near
+  // the line (sin∠(AB, AP) < 1/16, where the plain product's relative error
+  // ε/sin∠ would exceed 16ε): skelconv/exact_cross.hpp, whose header says
+  // why D = |AB × AP|² needs it. Elsewhere the plain product is kept, at
+  // the cost of one test.
+  void define_exact_cross(const std::array<ex, 3>& plain, const ex& plain_cross_cross) {
+    const symbol cross_cross("cross_cross");
+    std::vector<symbol> targets{symbol("cross0"), symbol("cross1"), symbol("cross2"), cross_cross};
+    const bool with_foot = foot_is_perpendicular_;
+    if (with_foot)
+      for (int i = 0; i < 3; ++i) targets.emplace_back("foot" + std::to_string(i));
+    Choice choice{targets, {}};
+    Alternative away{{256 * plain_cross_cross - ab_ab_ * ap_ap_}, "P away from the line (sin∠(AB, AP) ≥ 1/16)",
+                     {}, {plain[0], plain[1], plain[2], plain_cross_cross}, {}};
+    Alternative near{{}, "P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)",
+                     {}, {}, {}};
+    ArrayCall call{"exact_cross", "segment_exact_cross<T>", {},
+                   {A_[0], A_[1], A_[2], B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]}, {},
+                   helper_costs::exact_cross(), true};
+    for (int i = 0; i < 3; ++i) call.elements.emplace_back("exact_cross_" + std::to_string(i));
+    const std::array<ex, 3> exact{call.elements[0], call.elements[1], call.elements[2]};
+    near.values = {exact[0], exact[1], exact[2], exact[0] * exact[0] + exact[1] * exact[1] + exact[2] * exact[2]};
+    near.calls.push_back(std::move(call));
+    if (with_foot) {
+      // H = AP − (AB·AP / |AB|²) AB away from the line; (AB × AP) × AB / |AB|² near it.
+      const ex t_star = ab_ap_ / ab_ab_;
+      for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        away.values.push_back(ap_[i] - t_star * ab_[i]);
+        near.values.push_back((exact[j] * ab_[k] - exact[k] * ab_[j]) / ab_ab_);
+      }
+    }
+    choice.alternatives.push_back(std::move(away));
+    choice.alternatives.push_back(std::move(near));
+    choice.generic = 0;
+    program_.choose(std::move(choice));
+    cross_ = {targets[0], targets[1], targets[2]};
+    cross_cross_ = cross_cross;
+    if (with_foot) foot_ = std::array<ex, 3>{targets[4], targets[5], targets[6]};
+  }
+
+  // Whether t* = b/a is the parameter of P's foot on the line AB (true
+  // when a and b are α|AB|² and α AB·AP, as for segments).
+  virtual bool t_star_is_foot() const { return true; }
 
   // Hook for builders whose quadratic has another constant term (polygon
   // edges: β + α z², Hubert 2012 §5); segments keep β.
@@ -458,6 +629,11 @@ class SegmentProgramBuilder {
   std::vector<ex> w_;
   std::array<ex, 3> ab_, ap_, bp_, cross_;
   ex ab_ab_, ab_ap_, ap_ap_, cross_cross_, bp_bp_, ab_bp_, ap_bp_, length_;
+  // Whether the gradient's t* = b/a is the foot of P on AB (true for
+  // segments: α scales a and b alike), so that define_exact_cross also
+  // gives H; set before build() by the builders, false where it is not.
+  bool foot_is_perpendicular_ = false;
+  std::optional<std::array<ex, 3>> foot_;
   ex alpha_, beta_, inv_R_;
   ex a_, b_, c_, D_, a_minus_b_;
   ex a_minus_b_value_, q1_value_, c_minus_b_value_;  // set by define_quadratic

@@ -97,7 +97,7 @@ class Emitter {
       if (step.kind == StraightLineProgram::Step::Kind::define) {
         define(step.targets[0], step.value);
       } else {
-        emit_choice(step.choice);
+        emit_choice(live_choices_.at(i));
       }
     }
     for (const auto& [lhs, value] : program_.outputs_) line(lhs + " = " + emit(value).s + ";");
@@ -130,7 +130,18 @@ class Emitter {
       if (step.kind == StraightLineProgram::Step::Kind::define) {
         collect_symbols(step.value, needed);
       } else {
-        for (const auto& alt : step.choice.alternatives) {
+        // Only the targets something reads: the others, and their values in
+        // every alternative, are not written.
+        Choice& pruned = live_choices_[i] = step.choice;
+        pruned.targets.clear();
+        for (auto& alt : pruned.alternatives) alt.values.clear();
+        for (size_t j = 0; j < step.choice.targets.size(); ++j) {
+          if (!needed.count(step.choice.targets[j])) continue;
+          pruned.targets.push_back(step.choice.targets[j]);
+          for (size_t a = 0; a < pruned.alternatives.size(); ++a)
+            pruned.alternatives[a].values.push_back(step.choice.alternatives[a].values[j]);
+        }
+        for (const auto& alt : pruned.alternatives) {
           for (const ex& c : alt.conditions) collect_symbols(c, needed);
           for (const auto& [s, v] : alt.steps) collect_symbols(v, needed);
           for (const ArrayCall& call : alt.calls)
@@ -150,7 +161,7 @@ class Emitter {
       if (step.kind == StraightLineProgram::Step::Kind::define) {
         visit_all(step.value);
       } else {
-        for (const auto& alt : step.choice.alternatives) {
+        for (const auto& alt : live_choices_.at(i).alternatives) {
           for (const ex& c : alt.conditions) visit_all(c);
           for (const auto& [s, v] : alt.steps) visit_all(v);
           for (const ArrayCall& call : alt.calls)
@@ -564,6 +575,7 @@ class Emitter {
   std::map<ex, int, ex_is_less> reciprocal_uses_;
   std::map<symbol, std::string, ex_is_less> names_;
   std::vector<bool> live_;
+  std::map<size_t, Choice> live_choices_;  // by step: the choice with its live targets only
   std::string pending_name_;
   ex pending_value_;
   int next_temp_ = 0;
