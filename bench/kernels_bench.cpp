@@ -7,7 +7,9 @@
 //                                  and ∇f (4 integrals), the baseline; /near:
 //                                  points 0.01–0.1 from the segment (also
 //                                  eval/<kernel>/f_and_grad/near);
-//   degree/<family>/w0/i:<i>/<f|f_and_grad>   cost as the degree grows.
+//   degree/<family>/w0/i:<i>/<f|f_and_grad>   cost as the degree grows;
+//   preamble/cross/<plain|exact>, eval/<kernel>/f_and_grad/beside   the
+//                                  exact preamble's cost (below).
 // One iteration is one evaluation at one point; the points cycle through
 // 1024 fixed query points around one segment (bench_support.hpp), so the
 // branches of the closed forms see a realistic mix. Compare times within one
@@ -16,9 +18,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include <skelconv/clip.hpp>
+#include <skelconv/exact_cross.hpp>
 
 #include "bench_main.hpp"
 #include "bench_support.hpp"
@@ -116,7 +122,93 @@ void bench_quadrature(benchmark::State& state, const KernelRef* k, double tolera
   state.counters["max_rel_diff_grad"] = max_rel_grad;
 }
 
+// --- The exact preamble (issue 16, item 1) -----------------------------------
+//
+// preamble/cross/{plain,exact}: AB × AP as the previous code formed it (the
+// plain products of rounded differences, what the generated kernels still
+// do away from the line) against skelconv/exact_cross.hpp's exactly rounded
+// one, at the same points; eval/<kernel>/f_and_grad/beside: the kernels at
+// points 1e-6…1e-2 |AB| beside the line, where they take the exact path
+// (sin∠(AB, AP) < 1/16), against …/f_and_grad at the default points.
+
+/// `count` points beside the segment's line: t ∈ [0.05, 0.95], distance
+/// log-uniform in [1e-6, 1e-2] |AB|, in a direction perpendicular to AB.
+std::vector<Input> beside_inputs(KernelFamily family) {
+  static std::vector<Input> cache[3];
+  std::vector<Input>& inputs = cache[int(family)];
+  if (!inputs.empty()) return inputs;
+  const Vec ab{bench_b[0] - bench_a[0], bench_b[1] - bench_a[1], bench_b[2] - bench_a[2]};
+  const double length = std::hypot(ab[0], ab[1], ab[2]);
+  // Two unit vectors perpendicular to AB.
+  Vec u{ab[1], -ab[0], 0};
+  const double un = std::hypot(u[0], u[1], u[2]);
+  for (double& x : u) x /= un;
+  Vec v{ab[1] * u[2] - ab[2] * u[1], ab[2] * u[0] - ab[0] * u[2], ab[0] * u[1] - ab[1] * u[0]};
+  for (double& x : v) x /= length;
+  std::uint64_t state = 44;
+  auto uniform = [&state] {  // splitmix64 → [0, 1)
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+  };
+  while (inputs.size() < point_count) {
+    const double t = 0.05 + 0.9 * uniform();
+    const double distance = length * std::pow(10.0, -6.0 + 4.0 * uniform());
+    const double angle = 2 * 3.141592653589793 * uniform();
+    Input in = segment_input(family);
+    for (int c = 0; c < 3; ++c)
+      in.p[c] = bench_a[c] + t * ab[c] + distance * (std::cos(angle) * u[c] + std::sin(angle) * v[c]);
+    if (family == KernelFamily::compact) {
+      const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
+      if (!clip) continue;
+      in.t0 = clip->t0;
+      in.t1 = clip->t1;
+    }
+    inputs.push_back(in);
+  }
+  return inputs;
+}
+
+void bench_f_and_grad_beside(benchmark::State& state, const KernelRef* k) {
+  const auto& in = beside_inputs(k->family);
+  std::size_t idx = 0;
+  for (auto _ : state) {
+    Vec g;
+    double f = k->f_and_grad(in[idx++ & (point_count - 1)], g);
+    benchmark::DoNotOptimize(f);
+    benchmark::DoNotOptimize(g);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+template <bool exact>
+void bench_cross(benchmark::State& state) {
+  const auto& in = beside_inputs(KernelFamily::inverse);
+  std::size_t idx = 0;
+  for (auto _ : state) {
+    const Input& x = in[idx++ & (point_count - 1)];
+    double cross[3];
+    if constexpr (exact) {
+      segment_exact_cross(x.a[0], x.a[1], x.a[2], x.b[0], x.b[1], x.b[2], x.p[0], x.p[1], x.p[2], cross);
+    } else {
+      const double ab[3] = {x.b[0] - x.a[0], x.b[1] - x.a[1], x.b[2] - x.a[2]};
+      const double ap[3] = {x.p[0] - x.a[0], x.p[1] - x.a[1], x.p[2] - x.a[2]};
+      cross[0] = ab[1] * ap[2] - ab[2] * ap[1];
+      cross[1] = ab[2] * ap[0] - ab[0] * ap[2];
+      cross[2] = ab[0] * ap[1] - ab[1] * ap[0];
+    }
+    benchmark::DoNotOptimize(cross);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 void register_all() {
+  benchmark::RegisterBenchmark("preamble/cross/plain", bench_cross<false>);
+  benchmark::RegisterBenchmark("preamble/cross/exact", bench_cross<true>);
+  for (const KernelKey& n : detailed_kernels)
+    if (const KernelRef* k = find_kernel(n.family, n.degree, n.weight_degree))
+      benchmark::RegisterBenchmark(("eval/" + k->name + "/f_and_grad/beside").c_str(), bench_f_and_grad_beside, k);
   for (const KernelKey& n : detailed_kernels) {
     const KernelRef* k = find_kernel(n.family, n.degree, n.weight_degree);
     if (!k) {
