@@ -79,6 +79,15 @@ Input segment_input(KernelFamily family) {
   return in;
 }
 
+bool clip_compact_support(KernelFamily family, Input& in) {
+  if (family != KernelFamily::compact) return true;
+  const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
+  if (!clip) return false;
+  in.t0 = clip->t0;
+  in.t1 = clip->t1;
+  return true;
+}
+
 std::vector<Input> make_inputs(KernelFamily family, std::size_t count, std::uint64_t seed, double min_distance,
                                double max_distance) {
   BoxSampler sampler(bench_R, seed);
@@ -90,12 +99,7 @@ std::vector<Input> make_inputs(KernelFamily family, std::size_t count, std::uint
     if (d < min_distance || d > max_distance) continue;
     Input in = segment_input(family);
     in.p = p;
-    if (family == KernelFamily::compact) {
-      const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
-      if (!clip) continue;
-      in.t0 = clip->t0;
-      in.t1 = clip->t1;
-    }
+    if (!clip_compact_support(family, in)) continue;
     inputs.push_back(in);
   }
   return inputs;

@@ -123,6 +123,11 @@ std::vector<Vec> make_box_points(std::size_t count, std::uint64_t seed = 7);
 /// Input with everything but the point (and the clip interval) filled in.
 Input segment_input(KernelFamily family);
 
+/// For a compact kernel, sets in.t0, in.t1 to the part of the segment inside
+/// the support (skelconv::clip_to_ball); false when it is empty (the point
+/// is then not a kernel input). Other families: true, `in` unchanged.
+bool clip_compact_support(KernelFamily family, Input& in);
+
 /// Distance from p to the segment [bench_a, bench_b].
 double distance_to_segment(const Vec& p);
 

@@ -24,7 +24,6 @@
 
 #include "bench_main.hpp"
 #include "bench_support.hpp"
-#include "skelconv/clip.hpp"
 
 namespace skelconv::bench {
 namespace {
@@ -69,13 +68,8 @@ std::vector<Input> inputs_at(KernelFamily family, double d) {
     if (distance < 0.9 * target || distance > 1.1 * target) continue;
     Input in = segment_input(family);
     in.p = p;
-    if (family == KernelFamily::compact) {
-      in.R = compact_R_over_length * L;
-      const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
-      if (!clip) continue;
-      in.t0 = clip->t0;
-      in.t1 = clip->t1;
-    }
+    if (family == KernelFamily::compact) in.R = compact_R_over_length * L;
+    if (!clip_compact_support(family, in)) continue;
     inputs.push_back(in);
   }
   return inputs;

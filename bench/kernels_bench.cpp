@@ -18,12 +18,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
 
-#include <skelconv/clip.hpp>
 #include <skelconv/exact_cross.hpp>
 
 #include "bench_main.hpp"
@@ -34,9 +33,28 @@ namespace {
 
 constexpr std::size_t point_count = 1024;  // a power of two: index & (count − 1)
 
+std::vector<Input> beside_inputs(KernelFamily family);
+
+/// Which query points a benchmark cycles through.
+enum class Workload {
+  default_points,  ///< 0.1 ≤ d ≤ 0.9 from the segment (bench_support.hpp)
+  near,            ///< 0.01 ≤ d ≤ 0.1
+  beside,          ///< 1e-6…1e-2 |AB| beside the line (beside_inputs, below)
+};
+
 /// The 1024 query points of a family: the default workload (0.1 ≤ d ≤ 0.9)
 /// or the near one (0.01 ≤ d ≤ 0.1), see bench_support.hpp.
-const std::vector<Input>& inputs_for(KernelFamily family, bool near = false) {
+const std::vector<Input>& inputs_for(KernelFamily family, bool near = false);
+
+const std::vector<Input>& inputs_for(KernelFamily family, Workload workload) {
+  if (workload != Workload::beside) return inputs_for(family, workload == Workload::near);
+  static std::vector<Input> cache[3];
+  std::vector<Input>& in = cache[int(family)];
+  if (in.empty()) in = beside_inputs(family);
+  return in;
+}
+
+const std::vector<Input>& inputs_for(KernelFamily family, bool near) {
   static std::vector<Input> cache[3][2];
   std::vector<Input>& in = cache[int(family)][near];
   if (in.empty()) {
@@ -66,8 +84,8 @@ void bench_grad(benchmark::State& state, const KernelRef* k) {
   state.SetItemsProcessed(state.iterations());
 }
 
-void bench_f_and_grad(benchmark::State& state, const KernelRef* k, bool near = false) {
-  const auto& in = inputs_for(k->family, near);
+void bench_f_and_grad(benchmark::State& state, const KernelRef* k, Workload workload = Workload::default_points) {
+  const auto& in = inputs_for(k->family, workload);
   std::size_t idx = 0;
   for (auto _ : state) {
     Vec g;
@@ -134,9 +152,7 @@ void bench_quadrature(benchmark::State& state, const KernelRef* k, double tolera
 /// `count` points beside the segment's line: t ∈ [0.05, 0.95], distance
 /// log-uniform in [1e-6, 1e-2] |AB|, in a direction perpendicular to AB.
 std::vector<Input> beside_inputs(KernelFamily family) {
-  static std::vector<Input> cache[3];
-  std::vector<Input>& inputs = cache[int(family)];
-  if (!inputs.empty()) return inputs;
+  std::vector<Input> inputs;
   const Vec ab{bench_b[0] - bench_a[0], bench_b[1] - bench_a[1], bench_b[2] - bench_a[2]};
   const double length = std::hypot(ab[0], ab[1], ab[2]);
   // Two unit vectors perpendicular to AB.
@@ -145,13 +161,9 @@ std::vector<Input> beside_inputs(KernelFamily family) {
   for (double& x : u) x /= un;
   Vec v{ab[1] * u[2] - ab[2] * u[1], ab[2] * u[0] - ab[0] * u[2], ab[0] * u[1] - ab[1] * u[0]};
   for (double& x : v) x /= length;
-  std::uint64_t state = 44;
-  auto uniform = [&state] {  // splitmix64 → [0, 1)
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-  };
+  std::mt19937_64 random(44);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto uniform = [&] { return unit(random); };
   while (inputs.size() < point_count) {
     const double t = 0.05 + 0.9 * uniform();
     const double distance = length * std::pow(10.0, -6.0 + 4.0 * uniform());
@@ -159,32 +171,15 @@ std::vector<Input> beside_inputs(KernelFamily family) {
     Input in = segment_input(family);
     for (int c = 0; c < 3; ++c)
       in.p[c] = bench_a[c] + t * ab[c] + distance * (std::cos(angle) * u[c] + std::sin(angle) * v[c]);
-    if (family == KernelFamily::compact) {
-      const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
-      if (!clip) continue;
-      in.t0 = clip->t0;
-      in.t1 = clip->t1;
-    }
+    if (!clip_compact_support(family, in)) continue;
     inputs.push_back(in);
   }
   return inputs;
 }
 
-void bench_f_and_grad_beside(benchmark::State& state, const KernelRef* k) {
-  const auto& in = beside_inputs(k->family);
-  std::size_t idx = 0;
-  for (auto _ : state) {
-    Vec g;
-    double f = k->f_and_grad(in[idx++ & (point_count - 1)], g);
-    benchmark::DoNotOptimize(f);
-    benchmark::DoNotOptimize(g);
-  }
-  state.SetItemsProcessed(state.iterations());
-}
-
 template <bool exact>
 void bench_cross(benchmark::State& state) {
-  const auto& in = beside_inputs(KernelFamily::inverse);
+  const auto& in = inputs_for(KernelFamily::inverse, Workload::beside);
   std::size_t idx = 0;
   for (auto _ : state) {
     const Input& x = in[idx++ & (point_count - 1)];
@@ -208,7 +203,8 @@ void register_all() {
   benchmark::RegisterBenchmark("preamble/cross/exact", bench_cross<true>);
   for (const KernelKey& n : detailed_kernels)
     if (const KernelRef* k = find_kernel(n.family, n.degree, n.weight_degree))
-      benchmark::RegisterBenchmark(("eval/" + k->name + "/f_and_grad/beside").c_str(), bench_f_and_grad_beside, k);
+      benchmark::RegisterBenchmark(("eval/" + k->name + "/f_and_grad/beside").c_str(), bench_f_and_grad, k,
+                                   Workload::beside);
   for (const KernelKey& n : detailed_kernels) {
     const KernelRef* k = find_kernel(n.family, n.degree, n.weight_degree);
     if (!k) {
@@ -219,14 +215,14 @@ void register_all() {
     const std::string base = "eval/" + k->name + "/";
     benchmark::RegisterBenchmark((base + "f").c_str(), bench_f, k);
     benchmark::RegisterBenchmark((base + "grad").c_str(), bench_grad, k);
-    benchmark::RegisterBenchmark((base + "f_and_grad").c_str(), bench_f_and_grad, k, false);
+    benchmark::RegisterBenchmark((base + "f_and_grad").c_str(), bench_f_and_grad, k, Workload::default_points);
     benchmark::RegisterBenchmark((base + "f+central_fd").c_str(), bench_fd<true>, k);
     benchmark::RegisterBenchmark((base + "f+forward_fd").c_str(), bench_fd<false>, k);
   }
   for (const KernelKey& n : detailed_kernels) {
     const KernelRef* k = find_kernel(n.family, n.degree, n.weight_degree);
     if (!k) continue;
-    benchmark::RegisterBenchmark(("eval/" + k->name + "/f_and_grad/near").c_str(), bench_f_and_grad, k, true);
+    benchmark::RegisterBenchmark(("eval/" + k->name + "/f_and_grad/near").c_str(), bench_f_and_grad, k, Workload::near);
     for (bool near : {false, true}) {
       for (const char* tol : {"1e-08", "1e-12"}) {
         benchmark::RegisterBenchmark(("quadrature/" + k->name + "/tol:" + tol + (near ? "/near" : "")).c_str(),
@@ -239,7 +235,7 @@ void register_all() {
     const std::string base =
         "degree/" + std::string(family_name(k.family)) + "/w0/i:" + std::to_string(k.degree) + "/";
     benchmark::RegisterBenchmark((base + "f").c_str(), bench_f, &k);
-    benchmark::RegisterBenchmark((base + "f_and_grad").c_str(), bench_f_and_grad, &k, false);
+    benchmark::RegisterBenchmark((base + "f_and_grad").c_str(), bench_f_and_grad, &k, Workload::default_points);
   }
 }
 

@@ -258,7 +258,7 @@ bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T
 ///  * m_lo > 0 (inverse and Cauchy kernels in the far field, poles off the
 ///    interval): at most N nodes, fewer where the poles are far enough for
 ///    the bound above (detail::add_far_field_moments).
-template <class T, unsigned N>
+template <class T, unsigned N, NodeMap map = NodeMap::linear>
 void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c, const T& t0,
                            const T& t1, T* out) {
   const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
@@ -267,10 +267,10 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
     using std::max;
     return max(T(0), c + t * (a * t - 2 * b));
   };
-  if (m_lo > 0) {
+  if (map == NodeMap::linear && m_lo > 0) {
     detail::add_far_field_moments<T, N>(m_lo, m_hi, k_max, q_at, a, b, c, t0, t1, out);
   } else {
-    add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+    add_segment_moments_gauss<T, N, decltype(q_at), map>(m_lo, m_hi, k_max, q_at, t0, t1, out);
   }
 }
 
@@ -283,13 +283,7 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
 template <class T, unsigned N>
 void segment_moments_gauss_sine(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c, const T& t0,
                                 const T& t1, T* out) {
-  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
-  for (int i = 0; i < count; ++i) out[i] = T(0);
-  auto q_at = [&](const T& t) {
-    using std::max;
-    return max(T(0), c + t * (a * t - 2 * b));
-  };
-  add_segment_moments_gauss<T, N, decltype(q_at), NodeMap::sine>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  segment_moments_gauss<T, N, NodeMap::sine>(m_lo, m_hi, k_max, a, b, c, t0, t1, out);
 }
 
 /// Nodes per panel of segment_moments_gauss_panels: on an accepted panel

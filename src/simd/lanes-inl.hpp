@@ -9,7 +9,7 @@
 // etc., compiled with that target's instruction set.
 //
 // What makes a generated template run on Lanes:
-//   * arithmetic, sqrt, min, max, atan2, log, asinh, cos are hidden friends found
+//   * arithmetic, sqrt, fma, min, max, atan2, log, asinh, cos are hidden friends found
 //     by argument-dependent lookup (the generated code writes `using
 //     std::sqrt; sqrt(x)`); every one performs exactly the IEEE operation the
 //     scalar code performs on each lane (+ − × ÷ √ correctly rounded, min/max
