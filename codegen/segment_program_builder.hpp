@@ -272,9 +272,9 @@ class SegmentProgramBuilder {
   // and H = (AB × AP) × AB / |AB|²: from the exactly rounded cross product
   // where P is near the line (define_geometry's choice), where AP − t* AB
   // would lose |AP|/h; elsewhere AP − t* AB (error ≤ ε|AP| ≤ 16 ε |H|).
-  // Builders whose t* is not the foot (SCALIS Cauchy: b, a include σ²τ
-  // terms) override this with AP − (b/a) AB.
-  virtual std::array<ex, 3> define_foot() {
+  // Where t* is not the foot (SCALIS Cauchy: b, a include σ²τ terms;
+  // t_star_is_foot), always AP − (b/a) AB.
+  std::array<ex, 3> define_foot() {
     if (foot_.has_value()) return *foot_;
     const ex t_star = define("t_star", b_ / a_);
     std::array<ex, 3> h;
@@ -376,18 +376,19 @@ class SegmentProgramBuilder {
     for (int m = m_lo; m <= m_hi; m += 2)
       for (int k = 0; k <= k_max; ++k)
         call.elements.emplace_back(array + "_" + std::to_string(call.elements.size()));
+    auto moment = [&](int k, int m) -> ex {  // M_{k,m} in the helper's layout
+      return call.elements[static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k)];
+    };
     auto weighted = [&](int shift, int m) {
       ex sum = 0;
-      for (int k = 0; k <= spec_.weight_degree; ++k)
-        sum += w_[k] * call.elements[static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k + shift)];
+      for (int k = 0; k <= spec_.weight_degree; ++k) sum += w_[k] * moment(k + shift, m);
       return sum;
     };
-    auto moment = [&](int k, int m) { return call.elements[static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k)]; };
     for (const MomentRequest& r : requests_) {
       if (!r.along_line)
         alt.values.push_back(weighted(r.shift, r.level));
       else if (by_parts)
-        alt.values.push_back(along_line_moment([&](int k, int m) -> ex { return moment(k, m); }, r.level));
+        alt.values.push_back(along_line_moment(moment, r.level));
       else
         alt.values.push_back(weighted(1, r.level) - b_ / a_ * weighted(0, r.level));
     }
