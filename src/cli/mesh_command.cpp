@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>  // getpid
+
 #include <fmt/format.h>
 
 #include "exit_status.hpp"
@@ -38,7 +40,9 @@ cannot be evaluated. Details: docs/mesh.md.)";
 /// written by write_mesh itself, then removed.
 void check_output_path(const std::filesystem::path& path) {
   std::filesystem::path probe = path;
-  probe.replace_filename(".skelconv-probe-" + path.filename().string());
+  // The process id keeps two runs writing to the same place (ctest -j) from
+  // removing each other's probe.
+  probe.replace_filename(".skelconv-probe-" + std::to_string(::getpid()) + "-" + path.filename().string());
   try {
     write_mesh(TriangleMesh{}, probe);
   } catch (const InputError& error) {

@@ -8,6 +8,8 @@
 #include <string>
 #include <system_error>
 
+#include <unistd.h>  // getpid
+
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
@@ -103,7 +105,8 @@ std::string obj_text(const TriangleMesh& mesh) {
 /// `path`; on any failure removes the temporary and throws.
 void write_atomically(const std::string& bytes, const std::filesystem::path& path) {
   std::filesystem::path temporary = path;
-  temporary += ".skelconv-partial";
+  // Per process: two runs writing the same file must not share a temporary.
+  temporary += ".skelconv-partial-" + std::to_string(::getpid());
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (file == nullptr) throw InputError("cannot open for writing", path.string());
   const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
