@@ -148,10 +148,15 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
     write_file(folder / file, os.str());
   }
 
-  // The lookup table.
+  // The lookup table: one function per family, so that each family's
+  // instantiation (double in the runtime, binary128 in the verifier) can be
+  // compiled in its own translation unit, in parallel. The table holds f, ∇f
+  // and both; the generic-only functions are not in it (only the benchmarks'
+  // batch baseline calls them, by name), so instantiating the table does not
+  // compile them.
   std::ostringstream table;
   table << file_header("segment_table.hpp", "every generated segment kernel, for lookup at run time.", request)
-        << "#pragma once\n\n#include <array>\n#include <span>\n\n";
+        << "#pragma once\n\n#include <array>\n#include <span>\n#include <vector>\n\n";
   for (const auto& [family, body] : family_bodies)
     table << "#include \"generated/segment_" << family_name(family) << ".hpp\"\n";
   table << "\nnamespace skelconv::generated {\n\n"
@@ -161,21 +166,30 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "  T (*f)(const SegmentInput<T>&);\n"
         << "  std::array<T, 3> (*grad)(const SegmentInput<T>&);\n"
         << "  T (*f_and_grad)(const SegmentInput<T>&, std::array<T, 3>&);\n"
-        << "  /// f and ∇f by the generic forms only; false: use f_and_grad instead.\n"
-        << "  bool (*f_and_grad_generic)(const SegmentInput<T>&, T&, std::array<T, 3>&);\n"
         << "  const char* name;\n  const char* equation;\n"
-        << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n"
-        << "/// Every generated kernel, sorted by family, degree and weight degree.\n"
-        << "template <class T>\nstd::span<const SegmentKernel<T>> segment_kernels() {\n"
-        << "  static const SegmentKernel<T> table[] = {\n";
-  for (const EmittedKernel& k : kernels) {
-    const std::string n = k.spec.name();
-    table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", "
-          << k.spec.weight_degree << ", &" << n << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, &" << n << "_" << kGenericSuffix << "<T>, \""
-          << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", "
-          << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << "},\n";
+        << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n";
+  for (const auto& [family, body] : family_bodies) {
+    table << "/// The " << family_name(family) << " family's kernels, sorted by degree and weight degree.\n"
+          << "template <class T>\nstd::span<const SegmentKernel<T>> segment_" << family_name(family)
+          << "_kernels() {\n"
+          << "  static const SegmentKernel<T> table[] = {\n";
+    for (const EmittedKernel& k : kernels) {
+      if (k.spec.family != family) continue;
+      const std::string n = k.spec.name();
+      table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", "
+            << k.spec.weight_degree << ", &" << n << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, \""
+            << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", "
+            << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << "},\n";
+    }
+    table << "  };\n  return table;\n}\n\n";
   }
-  table << "  };\n  return table;\n}\n\n"
+  table << "/// Every generated kernel, sorted by family, degree and weight degree.\n"
+        << "template <class T>\nstd::span<const SegmentKernel<T>> segment_kernels() {\n"
+        << "  static const std::vector<SegmentKernel<T>> table = [] {\n"
+        << "    std::vector<SegmentKernel<T>> all;\n";
+  for (const auto& [family, body] : family_bodies)
+    table << "    for (const SegmentKernel<T>& k : segment_" << family_name(family) << "_kernels<T>()) all.push_back(k);\n";
+  table << "    return all;\n  }();\n  return table;\n}\n\n"
         << "/// The kernel for (family, degree, weight degree), or nullptr if it was not generated.\n"
         << "template <class T>\n"
         << "const SegmentKernel<T>* find_segment_kernel(KernelFamily family, int degree, int weight_degree) {\n"

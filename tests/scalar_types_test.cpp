@@ -7,7 +7,7 @@
 // same formula evaluated with more digits must agree to double's accuracy
 // there (SPEC §2; verify/ holds the comparison against quadrature of the
 // definition). The whole table is instantiated in binary128 by the verifier
-// (verify/generated_kernels_extended.cpp); instantiating it here again in
+// (verify/generated_kernels_extended_<family>.cpp); instantiating it here again in
 // long double cost 110 s of compiling for no further check.
 #include <gtest/gtest.h>
 

@@ -152,25 +152,24 @@ INSTANTIATE_TEST_SUITE_P(Targets, SimdSegmentBatch, testing::Values("AVX3", "AVX
 TEST_P(SimdSegmentBatch, ScalisSegmentsEqualTheScalarPathOnEveryForm) {
   const std::vector<Vec3> points = form_covering_points();
   int vectorised = 0;
-  for (const KernelFamily family : {KernelFamily::inverse, KernelFamily::cauchy}) {
-    for (const int degree : {3, 4}) {
-      // A cone (radius 0 at B) and a tapered segment, σ = 1.5.
-      for (const std::array<double, 2> radius : {std::array<double, 2>{0.2, 0.6}, std::array<double, 2>{0.5, 0.0}}) {
-        const ScalisSegment segment(A, B, radius[0], radius[1], ScalisKernel{family, degree, 1.5}, 1.0);
-        ASSERT_TRUE(simd::has_vector_kernel(segment));
-        ++vectorised;
-        simd::BatchCounts counts;
-        const double worst = batch_against_scalar(segment, points, counts);
-        EXPECT_LE(worst, batch_tolerance) << segment.evaluator_name();
-        EXPECT_GT(counts.group_runs, 0u);
-        EXPECT_LT(counts.scalar_points, points.size() / 10) << segment.evaluator_name();
-        std::printf("%s SCALIS %s τ %.1f→%.1f: worst %.1e, %zu group runs, %zu set aside, %zu scalar\n",
-                    GetParam().c_str(), segment.evaluator_name().c_str(), radius[0], radius[1], worst,
-                    counts.group_runs, counts.set_aside, counts.scalar_points);
-      }
+  // The kernels of src/simd/scalis_kernels.hpp.
+  for (const auto& [family, degree] : {std::pair{KernelFamily::inverse, 3}, std::pair{KernelFamily::cauchy, 4}}) {
+    // A cone (radius 0 at B) and a tapered segment, σ = 1.5.
+    for (const std::array<double, 2> radius : {std::array<double, 2>{0.2, 0.6}, std::array<double, 2>{0.5, 0.0}}) {
+      const ScalisSegment segment(A, B, radius[0], radius[1], ScalisKernel{family, degree, 1.5}, 1.0);
+      ASSERT_TRUE(simd::has_vector_kernel(segment));
+      ++vectorised;
+      simd::BatchCounts counts;
+      const double worst = batch_against_scalar(segment, points, counts);
+      EXPECT_LE(worst, batch_tolerance) << segment.evaluator_name();
+      EXPECT_GT(counts.group_runs, 0u);
+      EXPECT_LT(counts.scalar_points, points.size() / 10) << segment.evaluator_name();
+      std::printf("%s SCALIS %s τ %.1f→%.1f: worst %.1e, %zu group runs, %zu set aside, %zu scalar\n",
+                  GetParam().c_str(), segment.evaluator_name().c_str(), radius[0], radius[1], worst,
+                  counts.group_runs, counts.set_aside, counts.scalar_points);
     }
   }
-  EXPECT_EQ(vectorised, 8);
+  EXPECT_EQ(vectorised, 4);
 }
 
 /// Points around a polygon in every form of its edge kernels (the edges'

@@ -9,6 +9,15 @@
 #include "extended_precision.hpp"
 #include "skelconv/segment_kernel_tables.hpp"  // the double tables: instantiated in skelconv_runtime
 
+// The binary128 tables are instantiated once, one family per file
+// (generated_kernels_extended_<family>.cpp, compiled in parallel): `extern`
+// here keeps every other verifier file from instantiating them again.
+namespace skelconv::generated {
+extern template std::span<const SegmentKernel<verify::extended>> segment_inverse_kernels<verify::extended>();
+extern template std::span<const SegmentKernel<verify::extended>> segment_cauchy_kernels<verify::extended>();
+extern template std::span<const SegmentKernel<verify::extended>> segment_compact_kernels<verify::extended>();
+}  // namespace skelconv::generated
+
 namespace skelconv::verify {
 
 template <class T>

@@ -1,5 +1,9 @@
 // verify/generated_kernels_extended.cpp — the binary128 instantiation of the
-// generated templates for the verifier (see generated_kernels.hpp).
+// generated templates for the verifier (see generated_kernels.hpp). Each
+// family's table is instantiated in its own file,
+// generated_kernels_extended_<family>.cpp, so that the three (the build's
+// largest translation units) compile in parallel; generated_kernels.hpp
+// declares them `extern`.
 #include "generated_kernels.hpp"
 
 namespace skelconv::verify {

@@ -86,18 +86,6 @@ struct CompactCombination {
     }
     return sum;
   }
-  static bool f_and_grad_generic(const SegmentInput<T>& in, T& f_out, std::array<T, 3>& grad_out) {
-    f_out = T(0);
-    grad_out = {};
-    for (std::size_t j = 0; j < count; ++j) {
-      T f(0);
-      std::array<T, 3> g{};
-      if (!levels()[j]->f_and_grad_generic(in, f, g)) return false;
-      f_out += coefficient(j) * f;
-      for (int i = 0; i < 3; ++i) grad_out[i] += coefficient(j) * g[i];
-    }
-    return true;
-  }
   static std::string equation() {
     std::string sum;
     for (const kernels::CompactLevel& level : Kernel::compact_levels) {
@@ -123,10 +111,6 @@ struct CompactCombination {
 template <class Kernel, class T, int W>
 struct ClosedFormEntry {
   using Form = typename Kernel::template SegmentClosedForm<T, W>;
-  static bool f_and_grad_generic(const SegmentInput<T>& in, T& f_out, std::array<T, 3>& grad_out) {
-    f_out = Form::f_and_grad(in, grad_out);
-    return true;
-  }
   static std::string equation() {
     return "f(P) = " + std::string(Kernel::segment_equation) + ", w(t) = " + weight_text(W);
   }
@@ -148,12 +132,12 @@ void add_entry(std::vector<generated::SegmentKernel<T>>& out) {
   if constexpr (requires { Kernel::compact_levels; }) {
     using C = CompactCombination<Kernel, T, W>;
     using L = generated::SegmentKernel<T>;
-    out.push_back({Kernel::family, 0, W, &C::f, &C::grad, &C::f_and_grad, &C::f_and_grad_generic, name,
+    out.push_back({Kernel::family, 0, W, &C::f, &C::grad, &C::f_and_grad, name,
                    keep(C::equation()), C::ops(&L::ops_f), C::ops(&L::ops_grad), C::ops(&L::ops_f_and_grad)});
   } else if constexpr (requires { typename Kernel::template SegmentClosedForm<T, W>; }) {
     using E = ClosedFormEntry<Kernel, T, W>;
     using Form = typename E::Form;
-    out.push_back({Kernel::family, 0, W, &Form::f, &Form::grad, &Form::f_and_grad, &E::f_and_grad_generic, name,
+    out.push_back({Kernel::family, 0, W, &Form::f, &Form::grad, &Form::f_and_grad, name,
                    keep(E::equation()), OpCount{}, OpCount{}, OpCount{}});
   }
 }
