@@ -11,7 +11,8 @@
 # main with the test executables' flags and no definitions of its own: GCC
 # would carry the donor's -D macros into every user), and reused by the test
 # executables (REUSE_FROM). GCC uses a precompiled header only when the flags
-# that shape it match: these targets share the donor's (-O3 -fPIE,
+# that shape it match: these targets share the donor's (-O3 -fPIE, then
+# SKELCONV_TEST_OPTIMIZATION, which overrides the -O3,
 # GTEST_HAS_PTHREAD, no -frounding-math); their own -D macros do not appear
 # in the header. Targets that link CGAL (which adds -frounding-math) and the
 # interval tests are not listed: they parse as before. (GCC folds constant
@@ -32,6 +33,7 @@ find_package(GTest REQUIRED)  # (imported targets are directory-scoped: tests/ f
 
 add_executable(skelconv_pch_donor ${CMAKE_CURRENT_LIST_DIR}/pch_donor.cpp)
 target_link_libraries(skelconv_pch_donor PRIVATE skelconv_kernels Eigen3::Eigen Boost::boost GTest::gtest)
+target_compile_options(skelconv_pch_donor PRIVATE ${SKELCONV_TEST_OPTIMIZATION})
 target_precompile_headers(skelconv_pch_donor PRIVATE
   <algorithm> <array> <cmath> <functional> <limits> <random> <string> <vector>
   <gtest/gtest.h>
@@ -46,6 +48,7 @@ foreach(target IN ITEMS
     verify_reference_selfcheck verify_properties verify_base_cases verify_verdict verify_report_tools
     verify_scalis_properties)
   if(TARGET ${target})
+    target_compile_options(${target} PRIVATE ${SKELCONV_TEST_OPTIMIZATION})  # (tests/ has it already)
     target_precompile_headers(${target} REUSE_FROM skelconv_pch_donor)
   endif()
 endforeach()

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include <fmt/format.h>
+#include <unistd.h>  // getpid
 
 #include "exit_status.hpp"
 #include "skelconv/errors.hpp"
@@ -17,10 +18,12 @@ namespace skelconv::cli {
 namespace {
 
 /// Writes `text` to a temporary sibling of `path` and renames it into place;
-/// throws InputError (nothing left behind) on failure.
+/// throws InputError (nothing left behind) on failure. The temporary's name
+/// carries the process id, so that two runs writing the same file (ctest -j)
+/// do not remove each other's, as in the mesh writer (triangle_mesh.cpp).
 void write_text_atomically(const std::string& text, const std::filesystem::path& path) {
   std::filesystem::path temporary = path;
-  temporary += ".skelconv-partial";
+  temporary += ".skelconv-partial-" + std::to_string(::getpid());
   std::error_code error;
   {
     std::ofstream out(temporary, std::ios::binary);
