@@ -12,6 +12,7 @@
 #include <skelconv/gauss_moments.hpp>
 #include <skelconv/polygon_angle_integrals.hpp>
 #include <skelconv/stable_recurrence.hpp>
+#include <skelconv/support_gap.hpp>
 
 #include "counting_scalar.hpp"  // bench/: the same counting scalar the benchmarks use
 
@@ -63,7 +64,49 @@ OpCount gauss_sine_rule_with(int m_lo, int m_hi, int k_max) {
   return tally_of(call);
 }
 
+template <unsigned N, NodeMap map>
+OpCount between_roots_with(int m_lo, int m_hi, int k_max) {
+  std::vector<Counted> out = moment_array(m_lo, m_hi, k_max);
+  auto call = [&] {
+    segment_moments_between_roots<Counted, N, map>(m_lo, m_hi, k_max, Counted(1), Counted(0.5), Counted(0.25),
+                                                   Counted(0), Counted(0.5), out.data());
+  };
+  call();  // a mapped table is computed once, on the first call: not counted
+  return tally_of(call);
+}
+
 }  // namespace
+
+OpCount between_roots(int nodes, bool sine, int m_lo, int m_hi, int k_max) {
+  if (sine) {
+    if (nodes != 30) throw std::logic_error("helper_costs::between_roots: only the 30-node sine rule is generated");
+    return between_roots_with<30, NodeMap::sine>(m_lo, m_hi, k_max);
+  }
+  switch (nodes) {
+    case 7: return between_roots_with<7, NodeMap::linear>(m_lo, m_hi, k_max);
+    case 10: return between_roots_with<10, NodeMap::linear>(m_lo, m_hi, k_max);
+    case 15: return between_roots_with<15, NodeMap::linear>(m_lo, m_hi, k_max);
+    case 20: return between_roots_with<20, NodeMap::linear>(m_lo, m_hi, k_max);
+    default:
+      throw std::logic_error("helper_costs::between_roots: no generated rule with " + std::to_string(nodes) + " nodes");
+  }
+}
+
+OpCount point_support_gap() {
+  Counted gap[1];
+  return tally_of([&] {
+    exact_point_support_gap<Counted>(Counted(1.1), Counted(0.7), Counted(0.4), Counted(0.6), Counted(0.45),
+                                     Counted(0.35), Counted(0.8), gap);
+  });
+}
+
+OpCount line_support_gap() {
+  Counted gap[1];
+  return tally_of([&] {
+    exact_line_support_gap<Counted>(Counted(0.1), Counted(0.2), Counted(0.3), Counted(1.1), Counted(0.7), Counted(0.4),
+                                    Counted(0.6), Counted(0.45), Counted(0.35), Counted(0.8), gap);
+  });
+}
 
 OpCount gauss_sine_rule(int nodes, int m_lo, int m_hi, int k_max) {
   if (nodes != 30) throw std::logic_error("helper_costs::gauss_sine_rule: only the 30-node rule is generated");
@@ -104,7 +147,7 @@ OpCount moments_beyond_end(int m_lo, int m_hi, int k_max) {
   std::vector<Counted> out = moment_array(m_lo, m_hi, k_max);
   const double a = 1, b = 1.5, c = 17.0 / 6.0;
   return tally_of([&] {
-    segment_moments_beyond_end<Counted>(m_lo, m_hi, k_max, Counted(a), Counted(b), Counted(a * c - b * b), Counted(c),
+    segment_moments_beyond_end<Counted>(m_lo, m_hi, k_max, Counted(a), Counted(b), Counted(a - b), Counted(a * c - b * b), Counted(c),
                                         Counted(a - 2 * b + c), out.data());
   });
 }

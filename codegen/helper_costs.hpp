@@ -51,4 +51,13 @@ OpCount gauss_sine_rule(int nodes, int m_lo, int m_hi, int k_max);
 /// fused multiply-add counted as one × and one +).
 OpCount exact_cross();
 
+/// segment_moments_between_roots<T, nodes> (linear map; nodes 7–30) or
+/// <T, 30, NodeMap::sine> (`sine`); fixed cost.
+OpCount between_roots(int nodes, bool sine, int m_lo, int m_hi, int k_max);
+
+/// exact_point_support_gap<T>, exact_line_support_gap<T>
+/// (skelconv/support_gap.hpp; fixed cost, fma as one × and one +).
+OpCount point_support_gap();
+OpCount line_support_gap();
+
 }  // namespace skelconv::codegen::helper_costs

@@ -27,7 +27,9 @@ const ex kChordRimRatio = numeric(1, 4);
 // else (geometry, J_n and their stable forms) is the segment's.
 class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
  public:
-  explicit PolygonEdgeProgramBuilder(const SegmentKernelSpec& edge_spec) : SegmentProgramBuilder(edge_spec) {}
+  explicit PolygonEdgeProgramBuilder(const SegmentKernelSpec& edge_spec) : SegmentProgramBuilder(edge_spec) {
+    support_root_forms_ = false;  // they read a segment's A, B, P, R; an edge's q has the term α z²
+  }
 
   StraightLineProgram build(SegmentOutputs outputs) {
     read_inputs();

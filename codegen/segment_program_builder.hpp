@@ -111,16 +111,13 @@ class SegmentProgramBuilder {
     Choice choice{targets, {}};
     if (generated_family(spec_.family).compact_support) {
       const MomentSymbols symbols = symbols_ = compact_symbols();
+      if (support_root_forms_) push_support_root_alternatives(choice);
       if (spec_.degree % 2 == 0) {
         // t^k q^(i/2) is a polynomial of degree ≤ i + k: an N-point
         // Gauss–Legendre rule with 2N − 1 ≥ i + k is exact and, all terms
-        // positive, stable. N is the smallest Boost tabulates that suffices.
+        // positive, stable.
         const int polynomial_degree = spec_.degree + highest_moment();
-        int nodes = 7;
-        for (int tabulated : {7, 10, 15, 20, 25, 30}) {
-          nodes = tabulated;
-          if (2 * tabulated - 1 >= polynomial_degree) break;
-        }
+        const int nodes = exact_rule_nodes(polynomial_degree);
         const std::string rule = "segment_moments_gauss<T, " + std::to_string(nodes) + ">";
         push_helper_alternatives(choice, {}, "even degree: the integrand is a polynomial of degree " +
                                      std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
@@ -157,17 +154,20 @@ class SegmentProgramBuilder {
         // analytic on a Bernstein ellipse of ρ ≳ 3 (4.97 at t* = −2.5).
         const ex half_chord = pow(-D_, numeric(1, 2)) / (-a_);
         const ex tiny = numeric(1, 4503599627370496);  // 2^−52: a clip below it counts as none
-        const std::string why = ": every moment by segment_moments_gauss_sine<T, 30> (Gauss–Legendre after a sine map)";
-        Alternative beyond_a{{t_star - 2, maximum(symbols.lo.t - tiny, -(t_star - half_chord) - numeric(1, 10))},
-                             "vertex t* ≥ 2, support clipping A's side or 1/10 short of it" + why, {}, {}, {}};
-        Alternative beyond_b{{-1 - t_star, maximum(1 - tiny - symbols.hi.t, t_star + half_chord - numeric(11, 10))},
-                             "vertex t* ≤ −1, support clipping B's side or 1/10 short of it" + why, {}, {}, {}};
-        for (Alternative* far_vertex : {&beyond_a, &beyond_b}) {
-          fill_from_helper(*far_vertex, "M_far_vertex", "segment_moments_gauss_sine<T, 30>",
-                           {a_, b_, c_, symbols.lo.t, symbols.hi.t},
-                           [](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_sine_rule(30, m_lo, m_hi, k_max); });
-          choice.alternatives.push_back(std::move(*far_vertex));
-        }
+        // One alternative for both sides (one call of the rule in the code):
+        // max(min(x, y), min(u, v)) ≥ 0 ⇔ (x, y ≥ 0) or (u, v ≥ 0).
+        const ex beyond_a = minimum(t_star - 2, maximum(symbols.lo.t - tiny, -(t_star - half_chord) - numeric(1, 10)));
+        const ex beyond_b =
+            minimum(-1 - t_star, maximum(1 - tiny - symbols.hi.t, t_star + half_chord - numeric(11, 10)));
+        Alternative far_vertex{{maximum(beyond_a, beyond_b)},
+                               "vertex t* ≥ 2 with the support clipping A's side or 1/10 short of it, or t* ≤ −1 "
+                               "likewise on B's side: every moment by segment_moments_gauss_sine<T, 30> "
+                               "(Gauss–Legendre after a sine map)",
+                               {}, {}, {}};
+        fill_from_helper(far_vertex, "M_far_vertex", "segment_moments_gauss_sine<T, 30>",
+                         {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                         [](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_sine_rule(30, m_lo, m_hi, k_max); });
+        choice.alternatives.push_back(std::move(far_vertex));
       }
       // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
       const int bottom = kernel_index() - 2 * ((spec_.weight_degree + 1) / 2) - 2;
@@ -234,8 +234,9 @@ class SegmentProgramBuilder {
         Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_}, "", {}, {}, {}};
         if (lowest_level() >= highest_moment() + 2) {
           // Every moment from segment_moments_beyond_end, centred at the near end.
-          fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>", {a_, b_, D_, symbols.lo.q, symbols.hi.q},
-                           helper_costs::moments_beyond_end, false, true);
+          fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>",
+                           {a_, b_, a_minus_b_, D_, symbols.lo.q, symbols.hi.q},
+                           helper_costs::moments_beyond_end, false, GE::by_parts);
           beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, "
                        "recurrence (1) downwards (segment_moments_beyond_end)";
         } else {
@@ -291,6 +292,10 @@ class SegmentProgramBuilder {
     return along_line_moment([&](int k, int m) { return moments.M(k, m); }, level);
   }
   ex along_line_moment(const std::function<ex(int k, int m)>& M, int level) {
+    return along_line_moment(M, level, symbols_.lo, symbols_.hi);
+  }
+  ex along_line_moment(const std::function<ex(int k, int m)>& M, int level, const QuadraticEnd& lo,
+                       const QuadraticEnd& hi) {
     const int n = level - 2;
     ex derivative_part = 0;
     for (int k = 1; k <= spec_.weight_degree; ++k) derivative_part += k * w_[k] * M(k - 1, n);
@@ -302,9 +307,7 @@ class SegmentProgramBuilder {
     auto q_power = [&](const QuadraticEnd& end) {  // q^(−n/2)
       return n % 2 != 0 ? pow(end.root, -n) : pow(end.q, numeric(-n, 2));
     };
-    return (derivative_part + weight_at(symbols_.lo.t) * q_power(symbols_.lo) -
-            weight_at(symbols_.hi.t) * q_power(symbols_.hi)) /
-           (a_ * n);
+    return (derivative_part + weight_at(lo.t) * q_power(lo) - weight_at(hi.t) * q_power(hi)) / (a_ * n);
   }
 
   // Lowest and highest level m, highest k of the moments M_{k,m} the
@@ -331,29 +334,155 @@ class SegmentProgramBuilder {
     return [nodes](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_rule(nodes, m_lo, m_hi, k_max); };
   }
 
-  // A helper alternative taken where `conditions` hold, twice when the
-  // outputs include G_E: with G_E by parts where P is near the line and
-  // projects onto the segment (sin∠(AB, AP) < 1/16, t* ∈ [0, 1]: there
-  // G_E can be small against t* G_ap, and the difference loses that
+  // N of the smallest Gauss–Legendre rule Boost tabulates that is exact for
+  // polynomials of `degree` (2N − 1 ≥ degree).
+  static int exact_rule_nodes(int degree) {
+    int nodes = 7;
+    for (int tabulated : {7, 10, 15, 20, 25, 30}) {
+      nodes = tabulated;
+      if (2 * tabulated - 1 >= degree) break;
+    }
+    return nodes;
+  }
+
+  // Compact kernels where the support sphere grazes the segment: the
+  // clipped interval [t0, t1] is short, and its ends, passed as parameters
+  // t ∈ [0, 1] (doubles, each off by up to ε/2 absolute), are off by
+  // ~ε/(t1 − t0) relative to its length, while q there is a small
+  // difference of numbers ~1: f ~ (t1 − t0) q^(i/2) loses (i+2)/2 times
+  // that (measured: f 1.4e-8, compact i15, R − |BP| = 1e-6 R). These forms
+  // take the interval from the roots r1 < r2 of q instead, found from R² − d²
+  // rounded once from the exact inputs (skelconv/support_gap.hpp), and
+  // write q = −a (t − r1)(r2 − t) as a product of distances to its roots
+  // (segment_moments_between_roots, gauss_moments.hpp; positive terms only):
+  //  * both ends clipped, the chord inside the segment: r1,2 = t* ∓ h_c,
+  //    h_c = √(R²|AB|² − |AB × AP|²) / |AB|²;
+  //  * one end E inside the ball (the other clipped) and the vertex t*
+  //    beyond E (P projects beyond E, AB·BP ≥ 0 or AB·AP ≤ 0): with σ the
+  //    distance in t from E, q = q_E + 2gσ + aσ², q_E = (R² − |P − E|²)/R²,
+  //    g ≤ 0 the slope into the segment; its roots are s = q_E/(√(g² − a q_E) − g)
+  //    (the clip) and −(√(g² − a q_E) − g)/(−a) (beyond E, at least s
+  //    away since t* lies beyond E: the Gauss rule sees no nearby branch
+  //    point);
+  //  * one end E inside the ball, the other clipped, and the vertex inside
+  //    the segment: the chord minus its part beyond E (see there).
+  // No difference of nearly equal numbers remains.
+  // The chord form wherever both ends are clipped (it is exact and cheap);
+  // the others where q at the end inside the ball is at most 1/4: above,
+  // what the forms below lose, ~(i+2)/2 · ε/q, stays near rounding, and
+  // they are cheaper.
+  void push_support_root_alternatives(Choice& choice) {
+    const bool odd = spec_.degree % 2 != 0;
+    const int nodes = odd ? 30 : exact_rule_nodes(spec_.degree + highest_moment());
+    const std::string function = "segment_moments_between_roots<T, " + std::to_string(nodes) +
+                                 (odd ? ", NodeMap::sine>" : ">");
+    const HelperCost cost = [nodes, odd](int m_lo, int m_hi, int k_max) {
+      return helper_costs::between_roots(nodes, odd, m_lo, m_hi, k_max);
+    };
+    const ex t0 = symbols_.lo.t, t1 = symbols_.hi.t;
+    const ex tiny = numeric(1, 4503599627370496);  // 2^−52: a clip below it counts as none
+    const ex shallow = numeric(1, 4);  // q at the end inside the ball: see above
+    const std::string why_tail = ", interval from the roots of q (R² − d² rounded once, support_gap.hpp): " + function;
+    auto gap_call = [&](const std::string& array, const std::string& helper, const std::vector<ex>& points,
+                        const OpCount& ops) {
+      std::vector<ex> args = points;
+      args.push_back(radius_);
+      ArrayCall call{array, helper, {}, args, {symbol(array + "_0")}, ops, true};
+      return call;
+    };
+    {
+      ArrayCall gap = gap_call("line_gap", "exact_line_support_gap<T>",
+                               {A_[0], A_[1], A_[2], B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]},
+                               helper_costs::line_support_gap());
+      const ex half_chord = pow(nonnegative_part(gap.elements[0]), numeric(1, 2)) / ab_ab_;
+      Alternative chord{{t0 - tiny, 1 - tiny - t1},
+                        "support chord inside the segment (both ends clipped)" + why_tail,
+                        {}, {}, {}};
+      chord.calls.push_back(std::move(gap));
+      const QuadraticEnd root_lo{t0, 0, 0, 0}, root_hi{t1, 0, 0, 0};  // q = 0 at both ends
+      fill_from_helper(chord, "M_roots", function, {-a_, b_ / a_, half_chord, 0, 0}, cost, true, GE::by_parts,
+                       PartsEnds{root_lo, root_hi});
+      choice.alternatives.push_back(std::move(chord));
+    }
+    for (const bool at_b : {true, false}) {
+      // The chord straddling E (the vertex t* inside the segment, E inside
+      // the ball, the other end clipped): the interval [r1, 1] (E = B) is
+      // the chord [r1, r2] minus its part [1, r2] beyond E, of length
+      // r2 − 1 = q_E/(−a s) < s = 1 − r1 (t* < 1), so the difference keeps
+      // at least half its digits and each part's other root lies at least
+      // its length away; s = (1 − t*) + h_c, a sum (1 − t* = −AB·BP/|AB|²).
+      // E = A likewise with [r1, 0] beyond A, s = t* + h_c.
+      ArrayCall line_gap = gap_call("line_gap", "exact_line_support_gap<T>",
+                                    {A_[0], A_[1], A_[2], B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]},
+                                    helper_costs::line_support_gap());
+      ArrayCall end_gap = gap_call(at_b ? "gap_B" : "gap_A", "exact_point_support_gap<T>",
+                                   at_b ? std::vector<ex>{B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]}
+                                        : std::vector<ex>{A_[0], A_[1], A_[2], P_[0], P_[1], P_[2]},
+                                   helper_costs::point_support_gap());
+      const ex half_chord = pow(nonnegative_part(line_gap.elements[0]), numeric(1, 2)) / ab_ab_;
+      const ex q_end = nonnegative_part(end_gap.elements[0]) * pow(inv_R_, 2);
+      const ex s = (at_b ? -ab_bp_ / ab_ab_ : ab_ap_ / ab_ab_) + half_chord;  // from E to the clipped root
+      const ex beyond = q_end / (-a_ * s);                                    // from E to the other root
+      Alternative straddle{at_b ? std::vector<ex>{t0 - tiny, t1 - 1, -ab_bp_, shallow - symbols_.hi.q}
+                                : std::vector<ex>{1 - tiny - t1, -t0, ab_ap_, shallow - symbols_.lo.q},
+                           std::string(at_b ? "support chord straddling B (A clipped, P beside the segment, q(1) ≤ 1/4)"
+                                            : "support chord straddling A (B clipped, P beside the segment, q(0) ≤ 1/4)") +
+                               ": the chord minus its part beyond the end" + why_tail,
+                           {}, {}, {}};
+      straddle.calls.push_back(std::move(line_gap));
+      straddle.calls.push_back(std::move(end_gap));
+      const QuadraticEnd root{at_b ? t0 : t1, 0, 0, 0};
+      const QuadraticEnd inside{at_b ? ex(1) : ex(0), q_end, pow(q_end, numeric(1, 2)), 0};
+      const std::vector<ex> part_beyond =
+          at_b ? std::vector<ex>{-a_, 1 + beyond / 2, beyond / 2, s, 0} : std::vector<ex>{-a_, -beyond / 2, beyond / 2, 0, s};
+      fill_from_helper(straddle, "M_roots", function, {-a_, b_ / a_, half_chord, 0, 0}, cost, true, GE::by_parts,
+                       at_b ? PartsEnds{root, inside} : PartsEnds{inside, root}, part_beyond);
+      choice.alternatives.push_back(std::move(straddle));
+    }
+    for (const bool at_b : {true, false}) {
+      // E = B: σ = 1 − t, g = −(a − b) = α AB·BP; E = A: σ = t, g = −b.
+      ArrayCall gap = gap_call(at_b ? "gap_B" : "gap_A", "exact_point_support_gap<T>",
+                               at_b ? std::vector<ex>{B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]}
+                                    : std::vector<ex>{A_[0], A_[1], A_[2], P_[0], P_[1], P_[2]},
+                               helper_costs::point_support_gap());
+      const ex q_end = nonnegative_part(gap.elements[0]) * pow(inv_R_, 2);
+      const ex g = at_b ? alpha_ * ab_bp_ : -b_;
+      const ex root_term = pow(pow(g, 2) - a_ * q_end, numeric(1, 2)) - g;  // √(g² − a q_E) − g ≥ 0
+      const ex s = q_end / root_term;
+      const ex far_gap = root_term / (-a_);
+      const ex mid = at_b ? 1 - s / 2 : s / 2;
+      Alternative end{at_b ? std::vector<ex>{t0 - tiny, t1 - 1, ab_bp_, shallow - symbols_.hi.q}
+                           : std::vector<ex>{1 - tiny - t1, -t0, -ab_ap_, shallow - symbols_.lo.q},
+                      std::string(at_b ? "support grazing B (A clipped, P beyond B, q(1) ≤ 1/4)"
+                                       : "support grazing A (B clipped, P beyond A, q(0) ≤ 1/4)") +
+                          why_tail,
+                      {}, {}, {}};
+      end.calls.push_back(std::move(gap));
+      const QuadraticEnd root{at_b ? t0 : t1, 0, 0, 0};
+      const QuadraticEnd inside{at_b ? ex(1) : ex(0), q_end, pow(q_end, numeric(1, 2)), 0};
+      fill_from_helper(end, "M_roots", function,
+                       {-a_, mid, s / 2, at_b ? ex(0) : far_gap, at_b ? far_gap : ex(0)}, cost, true, GE::by_parts,
+                       at_b ? PartsEnds{root, inside} : PartsEnds{inside, root});
+      choice.alternatives.push_back(std::move(end));
+    }
+  }
+
+  // A helper alternative taken where `conditions` hold. When the outputs
+  // include G_E, its values are refined: G_E by parts where P is near the
+  // line and projects onto the segment (sin∠(AB, AP) < 1/16, t* ∈ [0, 1]:
+  // there G_E can be small against t* G_ap, and the difference loses that
   // ratio), elsewhere as a difference (beyond an end G_E has one sign and
   // the difference keeps its digits, while for the compact kernels the
   // parts formula's boundary terms cancel by ~R²/|AB|² far along the axis;
-  // measured: soft kernel, far region, ∇f 8e-16 → 6.5e-13 by parts). Without
-  // conditions the second is the choice's fallback.
+  // measured: soft kernel, far region, ∇f 8e-16 → 6.5e-13 by parts). Both
+  // read the same helper call, written once. Without conditions the
+  // alternative is the choice's fallback.
   void push_helper_alternatives(Choice& choice, const std::vector<ex>& conditions, const std::string& why,
                                 const std::string& array, const std::string& function, const std::vector<ex>& args,
                                 const HelperCost& cost) {
     const bool along_line = std::any_of(requests_.begin(), requests_.end(), [](const MomentRequest& r) { return r.along_line; });
-    if (along_line) {
-      std::vector<ex> near_conditions = conditions;
-      near_conditions.push_back(ab_ab_ * ap_ap_ - 256 * cross_cross_);
-      near_conditions.push_back(b_ * (a_ - b_));
-      Alternative near{near_conditions, why + "; near the line, G_E by parts", {}, {}, {}};
-      fill_from_helper(near, array, function, args, cost, true, true);
-      choice.alternatives.push_back(std::move(near));
-    }
     Alternative alt{conditions, why, {}, {}, {}};
-    fill_from_helper(alt, array, function, args, cost);
+    fill_from_helper(alt, array, function, args, cost, true, along_line ? GE::by_parts_near_line : GE::difference);
     choice.alternatives.push_back(std::move(alt));
   }
 
@@ -362,37 +491,65 @@ class SegmentProgramBuilder {
   // function(m_lo, m_hi, k_max, args…, array). `cost` gives the call's
   // operations; `fixed_rule` says whether their number is the same at every P.
   //
-  // `by_parts`: G_E (along_line requests) by along_line_moment's parts
-  // formula from the helper's level-n moments, for helpers that run near
-  // the line or near an end; otherwise as G_ab − t* G_ap (far from the
-  // segment, where the parts formula's boundary terms would cancel instead).
+  // How G_E (along_line requests) is formed from the helper's moments:
+  // `by_parts`, along_line_moment's parts formula from the level-n moments,
+  // for helpers that run near the line or near an end; `difference`,
+  // G_ab − t* G_ap (far from the segment, where the parts formula's boundary
+  // terms would cancel instead); `by_parts_near_line`, the difference with
+  // a refinement by parts where P is near the line over the segment
+  // (push_helper_alternatives says why).
+  enum class GE { difference, by_parts, by_parts_near_line };
+  // The interval's ends for the parts formula, where they are not the
+  // clip's (push_support_root_alternatives).
+  struct PartsEnds {
+    QuadraticEnd lo, hi;
+  };
+  //
+  // `minus_args`: the moments are those of the call with `args` minus those
+  // of a second call with `minus_args` (an interval as a difference of two,
+  // push_support_root_alternatives).
   void fill_from_helper(Alternative& alt, const std::string& array, const std::string& function,
                         const std::vector<ex>& args, const HelperCost& cost, bool fixed_rule = true,
-                        bool by_parts = false) {
+                        GE along_line = GE::difference, const std::optional<PartsEnds>& ends = std::nullopt,
+                        const std::optional<std::vector<ex>>& minus_args = std::nullopt) {
     const int m_lo = lowest_level(), m_hi = highest_level(), k_max = highest_moment();
-    ArrayCall call{array, function, {std::to_string(m_lo), std::to_string(m_hi), std::to_string(k_max)},
-                   args,  {},       cost(m_lo, m_hi, k_max),
-                   fixed_rule};
-    for (int m = m_lo; m <= m_hi; m += 2)
-      for (int k = 0; k <= k_max; ++k)
-        call.elements.emplace_back(array + "_" + std::to_string(call.elements.size()));
+    auto make_call = [&](const std::string& name, const std::vector<ex>& call_args) {
+      ArrayCall call{name, function, {std::to_string(m_lo), std::to_string(m_hi), std::to_string(k_max)},
+                     call_args, {}, cost(m_lo, m_hi, k_max), fixed_rule};
+      for (int m = m_lo; m <= m_hi; m += 2)
+        for (int k = 0; k <= k_max; ++k) call.elements.emplace_back(name + "_" + std::to_string(call.elements.size()));
+      return call;
+    };
+    ArrayCall call = make_call(array, args);
+    std::optional<ArrayCall> minus;
+    if (minus_args) minus = make_call(array + "_minus", *minus_args);
     auto moment = [&](int k, int m) -> ex {  // M_{k,m} in the helper's layout
-      return call.elements[static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k)];
+      const size_t at = static_cast<size_t>(((m - m_lo) / 2) * (k_max + 1) + k);
+      return minus ? call.elements[at] - minus->elements[at] : ex(call.elements[at]);
     };
     auto weighted = [&](int shift, int m) {
       ex sum = 0;
       for (int k = 0; k <= spec_.weight_degree; ++k) sum += w_[k] * moment(k + shift, m);
       return sum;
     };
-    for (const MomentRequest& r : requests_) {
-      if (!r.along_line)
-        alt.values.push_back(weighted(r.shift, r.level));
-      else if (by_parts)
-        alt.values.push_back(along_line_moment(moment, r.level));
-      else
-        alt.values.push_back(weighted(1, r.level) - b_ / a_ * weighted(0, r.level));
-    }
+    auto values = [&](bool by_parts) {
+      std::vector<ex> v;
+      for (const MomentRequest& r : requests_) {
+        if (!r.along_line)
+          v.push_back(weighted(r.shift, r.level));
+        else if (by_parts)
+          v.push_back(ends ? along_line_moment(moment, r.level, ends->lo, ends->hi) : along_line_moment(moment, r.level));
+        else
+          v.push_back(weighted(1, r.level) - b_ / a_ * weighted(0, r.level));
+      }
+      return v;
+    };
+    alt.values = values(along_line == GE::by_parts);
+    if (along_line == GE::by_parts_near_line)
+      alt.refinement = Alternative::Refinement{
+          {ab_ab_ * ap_ap_ - 256 * cross_cross_, b_ * (a_ - b_)}, "near the line, G_E by parts", values(true)};
     alt.calls.push_back(std::move(call));
+    if (minus) alt.calls.push_back(std::move(*minus));
   }
 
   int kernel_index() const { return generated_family(spec_.family).compact_support ? -spec_.degree : spec_.degree; }
@@ -521,6 +678,7 @@ class SegmentProgramBuilder {
       case GeneratedFamily::Alpha::minus_inverse_square: {
         symbol parameter(row.parameter);
         program_.add_input(parameter, std::string("in.") + row.parameter);
+        radius_ = parameter;
         inv_R_ = define("inv_R", pow(parameter, -1));
         alpha_ = -define("inv_R2", pow(inv_R_, 2));
         break;
@@ -635,7 +793,10 @@ class SegmentProgramBuilder {
   // gives H; set before build() by the builders, false where it is not.
   bool foot_is_perpendicular_ = false;
   std::optional<std::array<ex, 3>> foot_;
-  ex alpha_, beta_, inv_R_;
+  ex alpha_, beta_, inv_R_, radius_;
+  // Compact kernels: the forms of push_support_root_alternatives, which
+  // read the segment's geometry (A, B, P, R); off for polygon edges.
+  bool support_root_forms_ = true;
   ex a_, b_, c_, D_, a_minus_b_;
   ex a_minus_b_value_, q1_value_, c_minus_b_value_;  // set by define_quadratic
   ex output_scale_ = 1;                              // multiplies f and ∇f (σ^i for SCALIS)

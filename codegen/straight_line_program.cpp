@@ -134,21 +134,38 @@ class Emitter {
         // every alternative, are not written.
         Choice& pruned = live_choices_[i] = step.choice;
         pruned.targets.clear();
-        for (auto& alt : pruned.alternatives) alt.values.clear();
+        for (auto& alt : pruned.alternatives) {
+          alt.values.clear();
+          if (alt.refinement) alt.refinement->values.clear();
+        }
         for (size_t j = 0; j < step.choice.targets.size(); ++j) {
           if (!needed.count(step.choice.targets[j])) continue;
           pruned.targets.push_back(step.choice.targets[j]);
-          for (size_t a = 0; a < pruned.alternatives.size(); ++a)
-            pruned.alternatives[a].values.push_back(step.choice.alternatives[a].values[j]);
+          for (size_t a = 0; a < pruned.alternatives.size(); ++a) {
+            const Alternative& full = step.choice.alternatives[a];
+            pruned.alternatives[a].values.push_back(full.values[j]);
+            if (full.refinement) pruned.alternatives[a].refinement->values.push_back(full.refinement->values[j]);
+          }
         }
-        for (const auto& alt : pruned.alternatives) {
-          for (const ex& c : alt.conditions) collect_symbols(c, needed);
-          for (const auto& [s, v] : alt.steps) collect_symbols(v, needed);
-          for (const ArrayCall& call : alt.calls)
-            for (const ex& a : call.args) collect_symbols(a, needed);
-          for (const ex& v : alt.values) collect_symbols(v, needed);
-        }
+        for (const auto& alt : pruned.alternatives)
+          for_each_expression(alt, [&](const ex& e) { collect_symbols(e, needed); });
       }
+    }
+  }
+
+  // Every expression an alternative computes: conditions, steps, call
+  // arguments, values, and its refinement's conditions and values.
+  template <class Visit>
+  static void for_each_expression(const Alternative& alt, Visit&& visit) {
+    for (const ex& c : alt.conditions) visit(c);
+    for (const auto& [s, v] : alt.steps) visit(v);
+    for (const ArrayCall& call : alt.calls)
+      for (const ex& a : call.args) visit(a);
+    for (const ex& v : alt.values) visit(v);
+    if (alt.refinement) {
+      for (const ex& c : alt.refinement->conditions) visit(c);
+      for (size_t j = 0; j < alt.refinement->values.size(); ++j)  // emit_refinement writes shared ones once
+        if (!alt.refinement->values[j].is_equal(alt.values[j])) visit(alt.refinement->values[j]);
     }
   }
 
@@ -161,13 +178,7 @@ class Emitter {
       if (step.kind == StraightLineProgram::Step::Kind::define) {
         visit_all(step.value);
       } else {
-        for (const auto& alt : live_choices_.at(i).alternatives) {
-          for (const ex& c : alt.conditions) visit_all(c);
-          for (const auto& [s, v] : alt.steps) visit_all(v);
-          for (const ArrayCall& call : alt.calls)
-            for (const ex& a : call.args) visit_all(a);
-          for (const ex& v : alt.values) visit_all(v);
-        }
+        for (const auto& alt : live_choices_.at(i).alternatives) for_each_expression(alt, visit_all);
       }
     }
     for (const auto& [lhs, value] : program_.outputs_) visit_all(value);
@@ -559,11 +570,51 @@ class Emitter {
     line("// " + alt.why);
     for (const auto& [s, v] : alt.steps) define(s, v);
     for (const ArrayCall& call : alt.calls) emit_array_call(call);
-    for (size_t j = 0; j < choice.targets.size(); ++j)
-      line(choice.targets[j].get_name() + " = " + emit(alt.values[j]).s + ";");
+    if (alt.refinement)
+      emit_refinement(choice.targets, alt);
+    else
+      assign(choice.targets, alt.values);
     Scope branch = std::move(scopes_.back());
     scopes_.pop_back();
     return branch;
+  }
+
+  void assign(const std::vector<symbol>& targets, const std::vector<ex>& values) {
+    for (size_t j = 0; j < targets.size(); ++j) line(targets[j].get_name() + " = " + emit(values[j]).s + ";");
+  }
+
+  // The targets whose value the refinement keeps, assigned first; then
+  // if (refinement's conditions) { its values } else { the alternative's
+  // values } for the others, each in its own scope. The generic path takes
+  // the latter.
+  void emit_refinement(const std::vector<symbol>& all_targets, const Alternative& alt) {
+    std::vector<symbol> targets;
+    std::vector<ex> refined_values, plain_values;
+    for (size_t j = 0; j < all_targets.size(); ++j) {
+      if (alt.values[j].is_equal(alt.refinement->values[j])) {
+        assign({all_targets[j]}, {alt.values[j]});
+      } else {
+        targets.push_back(all_targets[j]);
+        refined_values.push_back(alt.refinement->values[j]);
+        plain_values.push_back(alt.values[j]);
+      }
+    }
+    std::string all;
+    for (const ex& c : alt.refinement->conditions) all += (all.empty() ? "" : " && ") + named(c) + " >= T(0)";
+    auto branch = [&](const std::string& opening, const std::string& why, const std::vector<ex>& values) {
+      line(opening);
+      scopes_.emplace_back();
+      if (!why.empty()) line("// " + why);
+      assign(targets, values);
+      Scope s = std::move(scopes_.back());
+      scopes_.pop_back();
+      return s;
+    };
+    const Scope refined = branch("if (" + all + ") {", alt.refinement->why, refined_values);
+    const Scope plain = branch("} else {", "", plain_values);
+    line("}");
+    scopes_.back().generic += plain.generic;
+    scopes_.back().longest += refined.longest.total() > plain.longest.total() ? refined.longest : plain.longest;
   }
 
   const StraightLineProgram& program_;

@@ -45,11 +45,22 @@ struct ArrayCall {
 /// condition is >= 0; the last alternative of a Choice is the fallback and
 /// has no conditions.
 struct Alternative {
+  /// Other values for the same targets where further conditions hold, from
+  /// the same steps and helper calls (so the calls are written once): e.g.
+  /// G_E by parts near the segment's line and as a difference elsewhere,
+  /// from one Gauss rule's moments.
+  struct Refinement {
+    std::vector<GiNaC::ex> conditions;  ///< all >= 0, besides the alternative's
+    std::string why;                    ///< one line for the generated comment
+    std::vector<GiNaC::ex> values;      ///< one per Choice target
+  };
   std::vector<GiNaC::ex> conditions;
   std::string why;  ///< one line for the generated comment
   std::vector<std::pair<GiNaC::symbol, GiNaC::ex>> steps;  ///< local definitions
   std::vector<GiNaC::ex> values;  ///< one per Choice target
   std::vector<ArrayCall> calls;   ///< helper calls, after the steps
+  /// Taken where its conditions hold; `values` elsewhere (and at a generic P).
+  std::optional<Refinement> refinement = std::nullopt;
 };
 
 /// Quantities with several forms chosen at run time (e.g. stable rewrites

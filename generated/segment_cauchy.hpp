@@ -15,6 +15,7 @@
 #include <skelconv/gauss_moments.hpp>
 #include <skelconv/segment_input.hpp>
 #include <skelconv/stable_recurrence.hpp>
+#include <skelconv/support_gap.hpp>
 
 namespace skelconv::generated {
 
@@ -1728,7 +1729,7 @@ bool segment_cauchy_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Operations: 42 +, 54 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 454 +, 886 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 452 +, 886 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1783,7 +1784,7 @@ T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(2, 2, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(2, 2, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -3279,7 +3280,7 @@ bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 40 +, 50 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 884 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 449 +, 884 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3334,7 +3335,7 @@ T segment_cauchy_i3_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(3, 3, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(3, 3, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -3347,7 +3348,7 @@ T segment_cauchy_i3_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 49 +, 83 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1623 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1623 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3416,7 +3417,7 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(3, 5, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(3, 5, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / r0;
     const T t8 = t7 * t7;
@@ -3451,7 +3452,7 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 49 +, 86 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1625 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1625 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3522,7 +3523,7 @@ T segment_cauchy_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(3, 5, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(3, 5, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / r0;
@@ -3656,7 +3657,7 @@ bool segment_cauchy_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Operations: 43 +, 56 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 682 +, 1574 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 680 +, 1574 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3711,7 +3712,7 @@ T segment_cauchy_i3_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(3, 3, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(3, 3, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -5062,7 +5063,7 @@ bool segment_cauchy_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 44 +, 58 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 454 +, 890 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 452 +, 890 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5117,7 +5118,7 @@ T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(4, 4, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 4, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -5134,7 +5135,7 @@ T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 53 +, 89 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1628 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1628 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5203,7 +5204,7 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(4, 6, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 6, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / q1;
     const T t8 = t7 * t7;
@@ -5237,7 +5238,7 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 53 +, 93 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1630 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1630 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5308,7 +5309,7 @@ T segment_cauchy_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(4, 6, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 6, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / q1;
@@ -5442,7 +5443,7 @@ bool segment_cauchy_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 47 +, 64 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 685 +, 1580 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 683 +, 1580 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5497,7 +5498,7 @@ T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(4, 4, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 4, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -5517,7 +5518,7 @@ T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 58 +, 100 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 938 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 936 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5587,7 +5588,7 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(4, 6, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 6, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
     const T t9 = T(1) / c;
@@ -5623,7 +5624,7 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 61 +, 109 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 939 +, 2337 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 937 +, 2337 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5695,7 +5696,7 @@ T segment_cauchy_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(4, 6, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 6, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
@@ -5832,7 +5833,7 @@ bool segment_cauchy_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Operations: 50 +, 74 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 917 +, 2272 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 915 +, 2272 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5887,7 +5888,7 @@ T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(4, 4, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 4, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0] + M_beyond[2] * in.w[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -6659,7 +6660,7 @@ bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 42 +, 59 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 887 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 449 +, 887 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6714,7 +6715,7 @@ T segment_cauchy_i5_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(5, 5, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 5, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -6730,7 +6731,7 @@ T segment_cauchy_i5_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 51 +, 100 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1629 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1629 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6799,7 +6800,7 @@ std::array<T, 3> segment_cauchy_i5_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
     const T t8 = T(1) / r0;
@@ -6842,7 +6843,7 @@ std::array<T, 3> segment_cauchy_i5_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 51 +, 104 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1631 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1631 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6913,7 +6914,7 @@ T segment_cauchy_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
@@ -7061,7 +7062,7 @@ bool segment_cauchy_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 45 +, 69 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 682 +, 1577 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 680 +, 1577 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7116,7 +7117,7 @@ T segment_cauchy_i5_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(5, 5, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 5, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -7135,7 +7136,7 @@ T segment_cauchy_i5_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 56 +, 113 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7205,7 +7206,7 @@ std::array<T, 3> segment_cauchy_i5_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -7250,7 +7251,7 @@ std::array<T, 3> segment_cauchy_i5_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 59 +, 124 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2338 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 934 +, 2338 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7322,7 +7323,7 @@ T segment_cauchy_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / r0;
@@ -7473,7 +7474,7 @@ bool segment_cauchy_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 48 +, 80 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 914 +, 2269 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 912 +, 2269 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7528,7 +7529,7 @@ T segment_cauchy_i5_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(5, 5, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 5, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -7550,7 +7551,7 @@ T segment_cauchy_i5_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 63 +, 130 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3046 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1174 +, 3046 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7620,7 +7621,7 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[5] * in.w[1] + in.w[0] * M_beyond[4] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / a;
     const T t9 = T(1) / r0;
@@ -7666,7 +7667,7 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 67 +, 147 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1178 +, 3050 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1176 +, 3050 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7738,7 +7739,7 @@ T segment_cauchy_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[6] * in.w[2] + M_beyond[4] * in.w[0] + in.w[1] * M_beyond[5];
     const T t8 = T(1) / a;
@@ -7895,7 +7896,7 @@ bool segment_cauchy_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Operations: 53 +, 92 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1147 +, 2963 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1145 +, 2963 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7950,7 +7951,7 @@ T segment_cauchy_i5_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(5, 5, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 5, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + M_beyond[3] * in.w[3];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -8343,7 +8344,7 @@ bool segment_cauchy_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 46 +, 69 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 454 +, 893 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 452 +, 893 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8398,7 +8399,7 @@ T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(6, 6, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 6, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -8419,7 +8420,7 @@ T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 55 +, 98 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1634 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1634 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8488,7 +8489,7 @@ std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
     const T t8 = T(1) / c;
@@ -8526,7 +8527,7 @@ std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 55 +, 102 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1636 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1636 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8597,7 +8598,7 @@ T segment_cauchy_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
@@ -8737,7 +8738,7 @@ bool segment_cauchy_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 49 +, 75 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 685 +, 1583 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 683 +, 1583 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8792,7 +8793,7 @@ T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(6, 6, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 6, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -8814,7 +8815,7 @@ T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 60 +, 109 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 938 +, 2340 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 936 +, 2340 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8884,7 +8885,7 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * in.w[1] + M_beyond[3] * in.w[0];
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
@@ -8924,7 +8925,7 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 63 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 939 +, 2343 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 937 +, 2343 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8996,7 +8997,7 @@ T segment_cauchy_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
@@ -9139,7 +9140,7 @@ bool segment_cauchy_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 52 +, 86 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 917 +, 2275 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 915 +, 2275 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9194,7 +9195,7 @@ T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(6, 6, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 6, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[2] * in.w[2] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -9219,7 +9220,7 @@ T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 67 +, 126 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3051 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1177 +, 3051 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9289,7 +9290,7 @@ std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[2] * M_beyond[6] + M_beyond[4] * in.w[0] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / a;
     const T t9 = T(1) / c;
@@ -9330,7 +9331,7 @@ std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 71 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1181 +, 3055 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1179 +, 3055 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9402,7 +9403,7 @@ T segment_cauchy_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2];
     G_ap = in.w[1] * M_beyond[5] + in.w[0] * M_beyond[4] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / a;
@@ -9551,7 +9552,7 @@ bool segment_cauchy_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 57 +, 98 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1150 +, 2969 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1148 +, 2969 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9606,7 +9607,7 @@ T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(6, 6, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 6, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + in.w[3] * M_beyond[3] + M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -9632,7 +9633,7 @@ T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 74 +, 146 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3766 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3766 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9702,7 +9703,7 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7] + M_beyond[6] * in.w[1] + in.w[0] * M_beyond[5];
     const T t8 = T(1) / c;
     const T t9 = t8 * t8;
@@ -9746,7 +9747,7 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Operations: 81 +, 168 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1425 +, 3771 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1423 +, 3771 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9818,7 +9819,7 @@ T segment_cauchy_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[3] * M_beyond[3] + in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2];
     G_ap = in.w[1] * M_beyond[6] + M_beyond[7] * in.w[2] + in.w[0] * M_beyond[5] + in.w[3] * M_beyond[8];
     const T t8 = T(1) / c;
@@ -9971,7 +9972,7 @@ bool segment_cauchy_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 44 +, 74 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 890 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 449 +, 890 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10026,7 +10027,7 @@ T segment_cauchy_i7_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(7, 7, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 7, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -10046,7 +10047,7 @@ T segment_cauchy_i7_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 53 +, 113 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1634 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1634 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10115,7 +10116,7 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
     const T t8 = T(1) / r0;
@@ -10164,7 +10165,7 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 53 +, 117 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1636 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1636 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10235,7 +10236,7 @@ T segment_cauchy_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
@@ -10393,7 +10394,7 @@ bool segment_cauchy_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 47 +, 82 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 682 +, 1580 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 680 +, 1580 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10448,7 +10449,7 @@ T segment_cauchy_i7_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(7, 7, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 7, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + in.w[1] * M_beyond[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -10469,7 +10470,7 @@ T segment_cauchy_i7_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 58 +, 126 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2340 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2340 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10539,7 +10540,7 @@ std::array<T, 3> segment_cauchy_i7_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -10590,7 +10591,7 @@ std::array<T, 3> segment_cauchy_i7_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 61 +, 139 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 934 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10662,7 +10663,7 @@ T segment_cauchy_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + in.w[1] * M_beyond[1];
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / r0;
@@ -10823,7 +10824,7 @@ bool segment_cauchy_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 50 +, 93 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 914 +, 2272 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 912 +, 2272 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10878,7 +10879,7 @@ T segment_cauchy_i7_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(7, 7, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 7, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0] + in.w[2] * M_beyond[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -10902,7 +10903,7 @@ T segment_cauchy_i7_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 65 +, 146 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3051 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1174 +, 3051 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10972,7 +10973,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[1] * M_beyond[5] + in.w[2] * M_beyond[6] + in.w[0] * M_beyond[4];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -11024,7 +11025,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 69 +, 163 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1178 +, 3055 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1176 +, 3055 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11096,7 +11097,7 @@ T segment_cauchy_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[0] * M_beyond[0] + in.w[1] * M_beyond[1];
     G_ap = M_beyond[6] * in.w[2] + in.w[0] * M_beyond[4] + M_beyond[5] * in.w[1];
     const T t8 = in.w[0] + in.w[1] + in.w[2];
@@ -11263,7 +11264,7 @@ bool segment_cauchy_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 55 +, 107 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1147 +, 2966 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1145 +, 2966 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11318,7 +11319,7 @@ T segment_cauchy_i7_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(7, 7, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 7, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + M_beyond[3] * in.w[3] + M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -11343,7 +11344,7 @@ T segment_cauchy_i7_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 72 +, 167 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11413,7 +11414,7 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[8] * in.w[3] + in.w[1] * M_beyond[6] + M_beyond[7] * in.w[2] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / a;
     const T t9 = T(1) / r0;
@@ -11468,7 +11469,7 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Operations: 79 +, 191 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3771 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3771 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11540,7 +11541,7 @@ T segment_cauchy_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[3] * in.w[3] + M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1];
     G_ap = in.w[3] * M_beyond[8] + in.w[0] * M_beyond[5] + in.w[1] * M_beyond[6] + in.w[2] * M_beyond[7];
     const T t8 = T(1) / a;
@@ -11711,7 +11712,7 @@ bool segment_cauchy_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 48 +, 78 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 454 +, 896 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 452 +, 896 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11766,7 +11767,7 @@ T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(8, 8, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 8, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -11789,7 +11790,7 @@ T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 57 +, 107 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1637 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1637 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11858,7 +11859,7 @@ std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / a;
     const T t8 = T(1) / q1;
@@ -11898,7 +11899,7 @@ std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 57 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1639 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1639 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11969,7 +11970,7 @@ T segment_cauchy_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / c;
@@ -12113,7 +12114,7 @@ bool segment_cauchy_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 51 +, 84 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 685 +, 1586 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 683 +, 1586 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12168,7 +12169,7 @@ T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(8, 8, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 8, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -12192,7 +12193,7 @@ T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 62 +, 118 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 938 +, 2343 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 936 +, 2343 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12262,7 +12263,7 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * in.w[1] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
@@ -12304,7 +12305,7 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 65 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 939 +, 2346 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 937 +, 2346 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12376,7 +12377,7 @@ T segment_cauchy_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
@@ -12523,7 +12524,7 @@ bool segment_cauchy_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 54 +, 95 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 917 +, 2278 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 915 +, 2278 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12578,7 +12579,7 @@ T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(8, 8, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 8, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0] + in.w[2] * M_beyond[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -12605,7 +12606,7 @@ T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 69 +, 135 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3054 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1177 +, 3054 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12675,7 +12676,7 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[6] * in.w[2] + M_beyond[4] * in.w[0] + in.w[1] * M_beyond[5];
     const T t8 = T(1) / c;
     const T t9 = t8 * t8;
@@ -12718,7 +12719,7 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 73 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1181 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1179 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12790,7 +12791,7 @@ T segment_cauchy_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2];
     G_ap = in.w[1] * M_beyond[5] + in.w[0] * M_beyond[4] + in.w[2] * M_beyond[6];
     const T t8 = T(1) / c;
@@ -12943,7 +12944,7 @@ bool segment_cauchy_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 59 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1150 +, 2972 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1148 +, 2972 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12998,7 +12999,7 @@ T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(8, 8, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 8, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + in.w[3] * M_beyond[3] + M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -13026,7 +13027,7 @@ T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 76 +, 155 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3769 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3769 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13096,7 +13097,7 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[8] * in.w[3] + in.w[2] * M_beyond[7] + M_beyond[6] * in.w[1] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / a;
     const T t9 = in.w[2] + in.w[3] + in.w[0] + in.w[1];
@@ -13142,7 +13143,7 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Operations: 83 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1425 +, 3774 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1423 +, 3774 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13214,7 +13215,7 @@ T segment_cauchy_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + M_beyond[3] * in.w[3] + M_beyond[0] * in.w[0];
     G_ap = in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7] + in.w[0] * M_beyond[5] + in.w[1] * M_beyond[6];
     const T t8 = T(1) / a;
@@ -13371,7 +13372,7 @@ bool segment_cauchy_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 46 +, 85 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 892 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 449 +, 892 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13426,7 +13427,7 @@ T segment_cauchy_i9_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(9, 9, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 9, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -13448,7 +13449,7 @@ T segment_cauchy_i9_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 55 +, 124 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1637 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1637 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13517,7 +13518,7 @@ std::array<T, 3> segment_cauchy_i9_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / r1;
     const T t8 = t7 * t7;
@@ -13568,7 +13569,7 @@ std::array<T, 3> segment_cauchy_i9_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 55 +, 128 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1639 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1639 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13639,7 +13640,7 @@ T segment_cauchy_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / r1;
@@ -13801,7 +13802,7 @@ bool segment_cauchy_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 49 +, 93 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 682 +, 1582 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 680 +, 1582 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13856,7 +13857,7 @@ T segment_cauchy_i9_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(9, 9, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 9, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -13879,7 +13880,7 @@ T segment_cauchy_i9_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 60 +, 137 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13949,7 +13950,7 @@ std::array<T, 3> segment_cauchy_i9_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -14002,7 +14003,7 @@ std::array<T, 3> segment_cauchy_i9_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 63 +, 150 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2346 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 934 +, 2346 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14074,7 +14075,7 @@ T segment_cauchy_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = in.w[0] + in.w[1];
@@ -14239,7 +14240,7 @@ bool segment_cauchy_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 52 +, 105 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 914 +, 2274 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 912 +, 2274 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14294,7 +14295,7 @@ T segment_cauchy_i9_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(9, 9, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 9, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -14320,7 +14321,7 @@ T segment_cauchy_i9_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 67 +, 156 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3054 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1174 +, 3054 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14390,7 +14391,7 @@ std::array<T, 3> segment_cauchy_i9_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[2] * M_beyond[6] + in.w[1] * M_beyond[5] + M_beyond[4] * in.w[0];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -14444,7 +14445,7 @@ std::array<T, 3> segment_cauchy_i9_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 71 +, 174 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1178 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1176 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14516,7 +14517,7 @@ T segment_cauchy_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
     G_ap = in.w[2] * M_beyond[6] + M_beyond[5] * in.w[1] + M_beyond[4] * in.w[0];
     const T t8 = T(1) / a;
@@ -14687,7 +14688,7 @@ bool segment_cauchy_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 57 +, 122 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1147 +, 2968 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1145 +, 2968 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14742,7 +14743,7 @@ T segment_cauchy_i9_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(9, 9, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 9, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + M_beyond[3] * in.w[3] + M_beyond[2] * in.w[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -14769,7 +14770,7 @@ T segment_cauchy_i9_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 74 +, 176 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3769 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3769 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14839,7 +14840,7 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0] + in.w[1] * M_beyond[6] + M_beyond[7] * in.w[2];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -14896,7 +14897,7 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Operations: 81 +, 203 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14968,7 +14969,7 @@ T segment_cauchy_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + M_beyond[3] * in.w[3] + in.w[0] * M_beyond[0] + in.w[1] * M_beyond[1];
     G_ap = in.w[3] * M_beyond[8] + in.w[0] * M_beyond[5] + in.w[1] * M_beyond[6] + in.w[2] * M_beyond[7];
     const T t8 = T(1) / r0;
@@ -15143,7 +15144,7 @@ bool segment_cauchy_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 50 +, 87 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 454 +, 898 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 452 +, 898 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15198,7 +15199,7 @@ T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(10, 10, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 10, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -15223,7 +15224,7 @@ T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 59 +, 116 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1642 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1642 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15292,7 +15293,7 @@ std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / c;
     const T t8 = t7 * t7;
@@ -15336,7 +15337,7 @@ std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 59 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1644 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1644 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15407,7 +15408,7 @@ T segment_cauchy_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / a;
@@ -15557,7 +15558,7 @@ bool segment_cauchy_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 53 +, 93 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 685 +, 1588 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 683 +, 1588 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15612,7 +15613,7 @@ T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(10, 10, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 10, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -15638,7 +15639,7 @@ T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 64 +, 127 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 938 +, 2348 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 936 +, 2348 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15708,7 +15709,7 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * in.w[1] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / c;
     const T t9 = t8 * t8;
@@ -15754,7 +15755,7 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 67 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 939 +, 2351 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 937 +, 2351 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15826,7 +15827,7 @@ T segment_cauchy_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = in.w[1] + in.w[0];
@@ -15979,7 +15980,7 @@ bool segment_cauchy_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 56 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 917 +, 2280 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 915 +, 2280 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16034,7 +16035,7 @@ T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(10, 10, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 10, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -16063,7 +16064,7 @@ T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 71 +, 145 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3059 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1177 +, 3059 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16133,7 +16134,7 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * in.w[0] + M_beyond[5] * in.w[1] + in.w[2] * M_beyond[6];
     const T t8 = T(1) / a;
     const T t9 = T(1) / c;
@@ -16180,7 +16181,7 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 75 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1181 +, 3063 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1179 +, 3063 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16252,7 +16253,7 @@ T segment_cauchy_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2];
     G_ap = in.w[1] * M_beyond[5] + M_beyond[6] * in.w[2] + in.w[0] * M_beyond[4];
     const T t8 = T(1) / a;
@@ -16411,7 +16412,7 @@ bool segment_cauchy_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 61 +, 118 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1150 +, 2974 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1148 +, 2974 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16466,7 +16467,7 @@ T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(10, 10, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 10, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + in.w[3] * M_beyond[3] + in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -16496,7 +16497,7 @@ T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 78 +, 166 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3774 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3774 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16566,7 +16567,7 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[1] * M_beyond[6] + in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7] + in.w[0] * M_beyond[5];
     const T t8 = T(1) / c;
     const T t9 = t8 * t8;
@@ -16616,7 +16617,7 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Operations: 85 +, 190 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1425 +, 3779 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1423 +, 3779 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16688,7 +16689,7 @@ T segment_cauchy_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1] + M_beyond[3] * in.w[3];
     G_ap = in.w[1] * M_beyond[6] + in.w[2] * M_beyond[7] + M_beyond[5] * in.w[0] + in.w[3] * M_beyond[8];
     const T t8 = T(1) / c;
@@ -16851,7 +16852,7 @@ bool segment_cauchy_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 48 +, 96 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 895 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 449 +, 895 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16906,7 +16907,7 @@ T segment_cauchy_i11_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(11, 11, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 11, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -16930,7 +16931,7 @@ T segment_cauchy_i11_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 57 +, 137 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1642 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1642 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16999,7 +17000,7 @@ std::array<T, 3> segment_cauchy_i11_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
     const T t8 = T(1) / r1;
@@ -17056,7 +17057,7 @@ std::array<T, 3> segment_cauchy_i11_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 57 +, 141 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1644 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1644 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17127,7 +17128,7 @@ T segment_cauchy_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
@@ -17299,7 +17300,7 @@ bool segment_cauchy_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 51 +, 104 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 682 +, 1585 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 680 +, 1585 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17354,7 +17355,7 @@ T segment_cauchy_i11_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(11, 11, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 11, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -17379,7 +17380,7 @@ T segment_cauchy_i11_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 62 +, 150 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2348 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2348 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17449,7 +17450,7 @@ std::array<T, 3> segment_cauchy_i11_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = in.w[0] + in.w[1];
     const T t9 = T(1) / r1;
@@ -17508,7 +17509,7 @@ std::array<T, 3> segment_cauchy_i11_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 65 +, 163 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2351 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 934 +, 2351 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17580,7 +17581,7 @@ T segment_cauchy_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
     G_ap = M_beyond[4] * in.w[1] + M_beyond[3] * in.w[0];
     const T t8 = T(1) / a;
@@ -17755,7 +17756,7 @@ bool segment_cauchy_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 54 +, 115 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 914 +, 2277 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 912 +, 2277 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17810,7 +17811,7 @@ T segment_cauchy_i11_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(11, 11, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 11, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -17838,7 +17839,7 @@ T segment_cauchy_i11_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 69 +, 170 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3059 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1174 +, 3059 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17908,7 +17909,7 @@ std::array<T, 3> segment_cauchy_i11_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[6] * in.w[2] + in.w[0] * M_beyond[4] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / a;
     const T t9 = T(1) / r0;
@@ -17968,7 +17969,7 @@ std::array<T, 3> segment_cauchy_i11_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 73 +, 187 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1178 +, 3063 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1176 +, 3063 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18040,7 +18041,7 @@ T segment_cauchy_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
     G_ap = M_beyond[6] * in.w[2] + in.w[0] * M_beyond[4] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / r0;
@@ -18221,7 +18222,7 @@ bool segment_cauchy_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 59 +, 131 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1147 +, 2971 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1145 +, 2971 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18276,7 +18277,7 @@ T segment_cauchy_i11_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(11, 11, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 11, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + M_beyond[3] * in.w[3] + M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -18305,7 +18306,7 @@ T segment_cauchy_i11_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 76 +, 191 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18375,7 +18376,7 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[6] * in.w[1] + M_beyond[5] * in.w[0] + in.w[2] * M_beyond[7] + M_beyond[8] * in.w[3];
     const T t8 = T(1) / r1;
     const T t9 = t8 * t8;
@@ -18438,7 +18439,7 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Operations: 83 +, 217 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3779 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3779 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18510,7 +18511,7 @@ T segment_cauchy_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[3] * in.w[3] + in.w[2] * M_beyond[2] + M_beyond[1] * in.w[1];
     G_ap = in.w[1] * M_beyond[6] + in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7] + in.w[0] * M_beyond[5];
     const T t8 = T(1) / r0;
@@ -18695,7 +18696,7 @@ bool segment_cauchy_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 52 +, 96 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 454 +, 901 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 452 +, 901 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18750,7 +18751,7 @@ T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(12, 12, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 12, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -18777,7 +18778,7 @@ T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 61 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1645 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1645 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18846,7 +18847,7 @@ std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
     const T t8 = T(1) / c;
@@ -18892,7 +18893,7 @@ std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 61 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1647 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1647 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18963,7 +18964,7 @@ T segment_cauchy_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / a;
@@ -19117,7 +19118,7 @@ bool segment_cauchy_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 55 +, 102 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 685 +, 1591 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 683 +, 1591 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19172,7 +19173,7 @@ T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(12, 12, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 12, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -19200,7 +19201,7 @@ T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 66 +, 136 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 938 +, 2351 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 936 +, 2351 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19270,7 +19271,7 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
     const T t9 = T(1) / c;
@@ -19318,7 +19319,7 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 69 +, 147 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 939 +, 2354 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 937 +, 2354 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19390,7 +19391,7 @@ T segment_cauchy_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[4] * in.w[1] + M_beyond[3] * in.w[0];
     const T t8 = T(1) / a;
@@ -19547,7 +19548,7 @@ bool segment_cauchy_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 58 +, 114 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 917 +, 2283 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 915 +, 2283 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19602,7 +19603,7 @@ T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(12, 12, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 12, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0] + in.w[2] * M_beyond[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -19633,7 +19634,7 @@ T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 73 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1177 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19703,7 +19704,7 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[6] * in.w[2] + M_beyond[4] * in.w[0] + in.w[1] * M_beyond[5];
     const T t8 = T(1) / c;
     const T t9 = t8 * t8;
@@ -19752,7 +19753,7 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 77 +, 171 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1181 +, 3066 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1179 +, 3066 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19824,7 +19825,7 @@ T segment_cauchy_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
     G_ap = in.w[1] * M_beyond[5] + M_beyond[6] * in.w[2] + M_beyond[4] * in.w[0];
     const T t8 = in.w[1] + in.w[2] + in.w[0];
@@ -19987,7 +19988,7 @@ bool segment_cauchy_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 63 +, 129 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1150 +, 2977 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1148 +, 2977 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20042,7 +20043,7 @@ T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(12, 12, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 12, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + in.w[1] * M_beyond[1] + in.w[3] * M_beyond[3] + in.w[2] * M_beyond[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -20074,7 +20075,7 @@ T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 80 +, 173 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3777 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3777 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20144,7 +20145,7 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[1] * M_beyond[6] + in.w[2] * M_beyond[7] + in.w[3] * M_beyond[8] + in.w[0] * M_beyond[5];
     const T t8 = T(1) / c;
     const T t9 = t8 * t8;
@@ -20196,7 +20197,7 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Operations: 87 +, 198 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1425 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1423 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20268,7 +20269,7 @@ T segment_cauchy_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[3] * in.w[3] + M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1];
     G_ap = in.w[1] * M_beyond[6] + M_beyond[5] * in.w[0] + in.w[2] * M_beyond[7] + M_beyond[8] * in.w[3];
     const T t8 = T(1) / c;
@@ -20435,7 +20436,7 @@ bool segment_cauchy_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 50 +, 107 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 897 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 449 +, 897 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20490,7 +20491,7 @@ T segment_cauchy_i13_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(13, 13, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 13, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -20516,7 +20517,7 @@ T segment_cauchy_i13_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 59 +, 148 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1645 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1645 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20585,7 +20586,7 @@ std::array<T, 3> segment_cauchy_i13_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
     const T t8 = T(1) / r1;
@@ -20644,7 +20645,7 @@ std::array<T, 3> segment_cauchy_i13_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 59 +, 152 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1647 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1647 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20715,7 +20716,7 @@ T segment_cauchy_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / a;
@@ -20891,7 +20892,7 @@ bool segment_cauchy_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 53 +, 115 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 682 +, 1587 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 680 +, 1587 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20946,7 +20947,7 @@ T segment_cauchy_i13_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(13, 13, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 13, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -20973,7 +20974,7 @@ T segment_cauchy_i13_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 64 +, 161 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2351 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2351 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21043,7 +21044,7 @@ std::array<T, 3> segment_cauchy_i13_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -21104,7 +21105,7 @@ std::array<T, 3> segment_cauchy_i13_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 67 +, 174 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2354 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 934 +, 2354 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21176,7 +21177,7 @@ T segment_cauchy_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
@@ -21355,7 +21356,7 @@ bool segment_cauchy_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 56 +, 127 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 914 +, 2279 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 912 +, 2279 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21410,7 +21411,7 @@ T segment_cauchy_i13_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(13, 13, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 13, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -21440,7 +21441,7 @@ T segment_cauchy_i13_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 71 +, 181 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3062 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1174 +, 3062 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21510,7 +21511,7 @@ std::array<T, 3> segment_cauchy_i13_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[4] + M_beyond[5] * in.w[1] + in.w[2] * M_beyond[6];
     const T t8 = T(1) / a;
     const T t9 = T(1) / r0;
@@ -21572,7 +21573,7 @@ std::array<T, 3> segment_cauchy_i13_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 75 +, 199 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1178 +, 3066 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1176 +, 3066 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21644,7 +21645,7 @@ T segment_cauchy_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[2] * in.w[2] + in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[4] + M_beyond[5] * in.w[1] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / r0;
@@ -21829,7 +21830,7 @@ bool segment_cauchy_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 61 +, 144 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1147 +, 2973 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1145 +, 2973 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21884,7 +21885,7 @@ T segment_cauchy_i13_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(13, 13, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 13, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2] + in.w[3] * M_beyond[3] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -21915,7 +21916,7 @@ T segment_cauchy_i13_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 78 +, 204 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3777 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3777 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21985,7 +21986,7 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[5] + M_beyond[7] * in.w[2] + M_beyond[8] * in.w[3] + in.w[1] * M_beyond[6];
     const T t8 = T(1) / a;
     const T t9 = T(1) / r0;
@@ -22050,7 +22051,7 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Operations: 85 +, 231 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3782 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3782 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22122,7 +22123,7 @@ T segment_cauchy_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[2] * in.w[2] + in.w[3] * M_beyond[3] + M_beyond[1] * in.w[1];
     G_ap = in.w[0] * M_beyond[5] + in.w[1] * M_beyond[6] + in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7];
     const T t8 = T(1) / a;
@@ -22311,7 +22312,7 @@ bool segment_cauchy_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 54 +, 105 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 454 +, 903 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 452 +, 903 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22366,7 +22367,7 @@ T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(14, 14, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 14, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -22395,7 +22396,7 @@ T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 63 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1650 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1650 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22464,7 +22465,7 @@ std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / q1;
     const T t8 = t7 * t7;
@@ -22514,7 +22515,7 @@ std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 63 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1652 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1652 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22585,7 +22586,7 @@ T segment_cauchy_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / q1;
@@ -22745,7 +22746,7 @@ bool segment_cauchy_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 57 +, 111 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 685 +, 1593 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 683 +, 1593 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22800,7 +22801,7 @@ T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(14, 14, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 14, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -22830,7 +22831,7 @@ T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 68 +, 145 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 938 +, 2356 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 936 +, 2356 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22900,7 +22901,7 @@ std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
     const T t9 = T(1) / q1;
@@ -22952,7 +22953,7 @@ std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 71 +, 156 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 939 +, 2359 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 937 +, 2359 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23024,7 +23025,7 @@ T segment_cauchy_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
     G_ap = M_beyond[4] * in.w[1] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / c;
@@ -23187,7 +23188,7 @@ bool segment_cauchy_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 60 +, 122 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 917 +, 2285 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 915 +, 2285 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23242,7 +23243,7 @@ T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(14, 14, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 14, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0] + in.w[2] * M_beyond[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -23275,7 +23276,7 @@ T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 75 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3067 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1177 +, 3067 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23345,7 +23346,7 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * in.w[0] + M_beyond[6] * in.w[2] + in.w[1] * M_beyond[5];
     const T t8 = T(1) / c;
     const T t9 = t8 * t8;
@@ -23398,7 +23399,7 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 79 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1181 +, 3071 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1179 +, 3071 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23470,7 +23471,7 @@ T segment_cauchy_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1];
     G_ap = in.w[1] * M_beyond[5] + in.w[0] * M_beyond[4] + in.w[2] * M_beyond[6];
     const T t8 = T(1) / c;
@@ -23639,7 +23640,7 @@ bool segment_cauchy_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 65 +, 136 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1150 +, 2979 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1148 +, 2979 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23694,7 +23695,7 @@ T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(14, 14, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 14, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0] + in.w[3] * M_beyond[3];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -23728,7 +23729,7 @@ T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 82 +, 182 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23798,7 +23799,7 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[5] + in.w[2] * M_beyond[7] + in.w[3] * M_beyond[8] + in.w[1] * M_beyond[6];
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
@@ -23854,7 +23855,7 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Operations: 89 +, 206 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1425 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1423 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23926,7 +23927,7 @@ T segment_cauchy_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[2] * M_beyond[2] + M_beyond[3] * in.w[3] + M_beyond[0] * in.w[0];
     G_ap = in.w[2] * M_beyond[7] + M_beyond[6] * in.w[1] + in.w[3] * M_beyond[8] + in.w[0] * M_beyond[5];
     const T t8 = T(1) / a;
@@ -24099,7 +24100,7 @@ bool segment_cauchy_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 52 +, 118 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 451 +, 900 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 449 +, 900 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24154,7 +24155,7 @@ T segment_cauchy_i15_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(15, 15, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 15, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -24182,7 +24183,7 @@ T segment_cauchy_i15_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 61 +, 161 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1649 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1649 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24251,7 +24252,7 @@ std::array<T, 3> segment_cauchy_i15_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / a;
     const T t8 = T(1) / r0;
@@ -24316,7 +24317,7 @@ std::array<T, 3> segment_cauchy_i15_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 61 +, 165 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 696 +, 1651 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 694 +, 1651 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24387,7 +24388,7 @@ T segment_cauchy_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / r0;
@@ -24573,7 +24574,7 @@ bool segment_cauchy_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 55 +, 126 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 682 +, 1590 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 680 +, 1590 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24628,7 +24629,7 @@ T segment_cauchy_i15_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(15, 15, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 15, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -24657,7 +24658,7 @@ T segment_cauchy_i15_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 66 +, 174 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2355 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2355 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24727,7 +24728,7 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
     const T t9 = T(1) / r1;
@@ -24794,7 +24795,7 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 69 +, 187 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2358 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 934 +, 2358 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24866,7 +24867,7 @@ T segment_cauchy_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / a;
@@ -25055,7 +25056,7 @@ bool segment_cauchy_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 58 +, 138 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 914 +, 2282 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 912 +, 2282 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25110,7 +25111,7 @@ T segment_cauchy_i15_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(15, 15, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 15, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -25142,7 +25143,7 @@ T segment_cauchy_i15_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 73 +, 194 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3066 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1174 +, 3066 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25212,7 +25213,7 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * in.w[0] + M_beyond[6] * in.w[2] + in.w[1] * M_beyond[5];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -25280,7 +25281,7 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 77 +, 212 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1178 +, 3070 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1176 +, 3070 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25352,7 +25353,7 @@ T segment_cauchy_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0];
     G_ap = in.w[1] * M_beyond[5] + M_beyond[6] * in.w[2] + M_beyond[4] * in.w[0];
     const T t8 = T(1) / r0;
@@ -25547,7 +25548,7 @@ bool segment_cauchy_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 63 +, 155 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1147 +, 2976 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1145 +, 2976 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25602,7 +25603,7 @@ T segment_cauchy_i15_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(15, 15, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 15, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[3] * in.w[3] + in.w[1] * M_beyond[1] + M_beyond[2] * in.w[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -25635,7 +25636,7 @@ T segment_cauchy_i15_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 80 +, 215 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3781 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3781 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25705,7 +25706,7 @@ std::array<T, 3> segment_cauchy_i15_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[5] * in.w[0] + in.w[1] * M_beyond[6] + M_beyond[8] * in.w[3] + in.w[2] * M_beyond[7];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -25776,7 +25777,7 @@ std::array<T, 3> segment_cauchy_i15_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Operations: 87 +, 242 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3786 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3786 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25848,7 +25849,7 @@ T segment_cauchy_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[2] * M_beyond[2] + M_beyond[3] * in.w[3] + in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[5] + in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7] + in.w[1] * M_beyond[6];
     const T t8 = T(1) / a;
@@ -26047,7 +26048,7 @@ bool segment_cauchy_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 56 +, 114 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 454 +, 906 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 452 +, 906 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26102,7 +26103,7 @@ T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(16, 16, 0, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 16, 0, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -26133,7 +26134,7 @@ T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 65 +, 142 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1650 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1650 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26202,7 +26203,7 @@ std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / a;
     const T t8 = T(1) / q1;
@@ -26252,7 +26253,7 @@ std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 65 +, 146 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 699 +, 1652 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 697 +, 1652 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26323,7 +26324,7 @@ T segment_cauchy_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / c;
@@ -26485,7 +26486,7 @@ bool segment_cauchy_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 59 +, 120 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 685 +, 1596 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 683 +, 1596 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26540,7 +26541,7 @@ T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(16, 16, 1, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 16, 1, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -26572,7 +26573,7 @@ T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 70 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 938 +, 2356 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 936 +, 2356 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26642,7 +26643,7 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * in.w[1] + in.w[0] * M_beyond[3];
     const T t8 = in.w[0] + in.w[1];
     const T t9 = T(1) / q1;
@@ -26694,7 +26695,7 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 73 +, 164 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 939 +, 2359 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 937 +, 2359 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26766,7 +26767,7 @@ T segment_cauchy_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
     G_ap = M_beyond[4] * in.w[1] + M_beyond[3] * in.w[0];
     const T t8 = T(1) / a;
@@ -26931,7 +26932,7 @@ bool segment_cauchy_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 62 +, 131 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 917 +, 2288 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 915 +, 2288 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26986,7 +26987,7 @@ T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(16, 16, 2, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 16, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[2] * M_beyond[2] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -27021,7 +27022,7 @@ T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 77 +, 171 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3067 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1177 +, 3067 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27091,7 +27092,7 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * in.w[0] + M_beyond[6] * in.w[2] + in.w[1] * M_beyond[5];
     const T t8 = T(1) / c;
     const T t9 = t8 * t8;
@@ -27144,7 +27145,7 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 81 +, 188 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1181 +, 3071 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1179 +, 3071 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27216,7 +27217,7 @@ T segment_cauchy_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[2] * in.w[2] + M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
     G_ap = in.w[0] * M_beyond[4] + M_beyond[5] * in.w[1] + in.w[2] * M_beyond[6];
     const T t8 = T(1) / c;
@@ -27387,7 +27388,7 @@ bool segment_cauchy_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 67 +, 145 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1150 +, 2982 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1148 +, 2982 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27442,7 +27443,7 @@ T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(16, 16, 3, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 16, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + in.w[3] * M_beyond[3] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -27478,7 +27479,7 @@ T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 84 +, 192 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1422 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1420 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27548,7 +27549,7 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[6] * in.w[1] + in.w[2] * M_beyond[7] + M_beyond[5] * in.w[0] + M_beyond[8] * in.w[3];
     const T t8 = in.w[2] + in.w[3] + in.w[0] + in.w[1];
     const T t9 = T(1) / q1;
@@ -27604,7 +27605,7 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Operations: 91 +, 216 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1425 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1423 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27676,7 +27677,7 @@ T segment_cauchy_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 4, a, b, D, c, q1, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0] + in.w[2] * M_beyond[2] + M_beyond[3] * in.w[3];
     G_ap = in.w[3] * M_beyond[8] + in.w[0] * M_beyond[5] + in.w[1] * M_beyond[6] + in.w[2] * M_beyond[7];
     const T t8 = T(1) / c;

@@ -15,6 +15,7 @@
 #include <skelconv/gauss_moments.hpp>
 #include <skelconv/segment_input.hpp>
 #include <skelconv/stable_recurrence.hpp>
+#include <skelconv/support_gap.hpp>
 
 namespace skelconv::generated {
 
@@ -1606,7 +1607,7 @@ bool segment_inverse_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
 /// Operations: 38 +, 46 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 450 +, 878 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 448 +, 878 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1655,7 +1656,7 @@ T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(2, 2, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(2, 2, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -3073,7 +3074,7 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
 /// Operations: 37 +, 43 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 877 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 446 +, 877 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3123,7 +3124,7 @@ T segment_inverse_i3_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(3, 3, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(3, 3, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -3136,7 +3137,7 @@ T segment_inverse_i3_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
 /// Operations: 46 +, 75 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1615 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1615 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3200,7 +3201,7 @@ std::array<T, 3> segment_inverse_i3_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(3, 5, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(3, 5, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / r1;
@@ -3235,7 +3236,7 @@ std::array<T, 3> segment_inverse_i3_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
 /// Operations: 46 +, 78 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1617 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1617 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3301,7 +3302,7 @@ T segment_inverse_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(3, 5, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(3, 5, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / r1;
@@ -3430,7 +3431,7 @@ bool segment_inverse_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt
 /// Operations: 40 +, 49 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1567 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 677 +, 1567 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3480,7 +3481,7 @@ T segment_inverse_i3_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(3, 3, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(3, 3, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -4745,7 +4746,7 @@ bool segment_inverse_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 40 +, 50 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 450 +, 882 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 448 +, 882 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4794,7 +4795,7 @@ T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(4, 4, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 4, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -4811,7 +4812,7 @@ T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 49 +, 80 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1619 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1619 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4874,7 +4875,7 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(4, 6, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 6, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ap_ap;
     const T t8 = t7 * t7;
@@ -4908,7 +4909,7 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Operations: 49 +, 84 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1621 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1621 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4973,7 +4974,7 @@ T segment_inverse_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(4, 6, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 6, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
@@ -5101,7 +5102,7 @@ bool segment_inverse_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 43 +, 56 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 681 +, 1572 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 679 +, 1572 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5150,7 +5151,7 @@ T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(4, 4, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 4, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -5170,7 +5171,7 @@ T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 54 +, 91 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2325 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 932 +, 2325 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5234,7 +5235,7 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(4, 6, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 6, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + M_beyond[3] * in.w[0];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / ap_ap;
@@ -5270,7 +5271,7 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Operations: 57 +, 100 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2328 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2328 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5336,7 +5337,7 @@ T segment_inverse_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(4, 6, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 6, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + in.w[1] * M_beyond[1];
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / ap_ap;
@@ -5467,7 +5468,7 @@ bool segment_inverse_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
 /// Operations: 46 +, 66 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 913 +, 2264 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 911 +, 2264 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5516,7 +5517,7 @@ T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(4, 4, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(4, 4, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + in.w[2] * M_beyond[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -6246,7 +6247,7 @@ bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
 /// Operations: 39 +, 52 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 880 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 446 +, 880 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6296,7 +6297,7 @@ T segment_inverse_i5_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(5, 5, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 5, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -6312,7 +6313,7 @@ T segment_inverse_i5_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
 /// Operations: 48 +, 92 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1621 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1621 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6376,7 +6377,7 @@ std::array<T, 3> segment_inverse_i5_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / r0;
@@ -6419,7 +6420,7 @@ std::array<T, 3> segment_inverse_i5_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
 /// Operations: 48 +, 96 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1623 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1623 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6485,7 +6486,7 @@ T segment_inverse_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / r1;
@@ -6628,7 +6629,7 @@ bool segment_inverse_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
 /// Operations: 42 +, 62 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1570 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 677 +, 1570 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6678,7 +6679,7 @@ T segment_inverse_i5_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(5, 5, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 5, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -6697,7 +6698,7 @@ T segment_inverse_i5_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
 /// Operations: 53 +, 105 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2327 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 930 +, 2327 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6762,7 +6763,7 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / r1;
     const T t9 = t8 * t8;
@@ -6807,7 +6808,7 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
 /// Operations: 56 +, 116 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2330 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 931 +, 2330 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6874,7 +6875,7 @@ T segment_inverse_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[4] * in.w[1] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / ab_ab;
@@ -7020,7 +7021,7 @@ bool segment_inverse_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
 /// Operations: 45 +, 73 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2262 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 909 +, 2262 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7070,7 +7071,7 @@ T segment_inverse_i5_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(5, 5, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 5, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -7092,7 +7093,7 @@ T segment_inverse_i5_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
 /// Operations: 60 +, 122 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3038 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1171 +, 3038 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7157,7 +7158,7 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[4] + in.w[1] * M_beyond[5] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -7203,7 +7204,7 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
 /// Operations: 64 +, 139 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3042 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3042 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7270,7 +7271,7 @@ T segment_inverse_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(5, 7, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 7, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2];
     G_ap = in.w[1] * M_beyond[5] + M_beyond[6] * in.w[2] + M_beyond[4] * in.w[0];
     const T t8 = in.w[1] + in.w[2] + in.w[0];
@@ -7422,7 +7423,7 @@ bool segment_inverse_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt
 /// Operations: 50 +, 85 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2956 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1142 +, 2956 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7472,7 +7473,7 @@ T segment_inverse_i5_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(5, 5, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(5, 5, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1] + M_beyond[3] * in.w[3];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -7850,7 +7851,7 @@ bool segment_inverse_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 42 +, 61 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 450 +, 885 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 448 +, 885 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7899,7 +7900,7 @@ T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(6, 6, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 6, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -7920,7 +7921,7 @@ T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 51 +, 89 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1625 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1625 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7983,7 +7984,7 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / ap_ap;
@@ -8021,7 +8022,7 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Operations: 51 +, 93 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1627 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1627 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8086,7 +8087,7 @@ T segment_inverse_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / bp_bp;
@@ -8220,7 +8221,7 @@ bool segment_inverse_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 45 +, 67 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 681 +, 1575 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 679 +, 1575 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8269,7 +8270,7 @@ T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(6, 6, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 6, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -8291,7 +8292,7 @@ T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 56 +, 100 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2331 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 932 +, 2331 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8355,7 +8356,7 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
@@ -8395,7 +8396,7 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Operations: 59 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8461,7 +8462,7 @@ T segment_inverse_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / ab_ab;
@@ -8598,7 +8599,7 @@ bool segment_inverse_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 48 +, 78 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 913 +, 2267 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 911 +, 2267 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8647,7 +8648,7 @@ T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(6, 6, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 6, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[2] * M_beyond[2] + in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -8672,7 +8673,7 @@ T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 63 +, 117 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3042 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3042 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8736,7 +8737,7 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[4] * in.w[0] + in.w[2] * M_beyond[6] + in.w[1] * M_beyond[5];
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
@@ -8777,7 +8778,7 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Operations: 67 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3046 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1175 +, 3046 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8843,7 +8844,7 @@ T segment_inverse_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[5] * in.w[1] + M_beyond[4] * in.w[0] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / ap_ap;
@@ -8986,7 +8987,7 @@ bool segment_inverse_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 53 +, 90 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1146 +, 2961 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1144 +, 2961 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9035,7 +9036,7 @@ T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(6, 6, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 6, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[3] * in.w[3] + M_beyond[2] * in.w[2] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -9061,7 +9062,7 @@ T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 70 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1418 +, 3757 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1416 +, 3757 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9125,7 +9126,7 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7] + in.w[1] * M_beyond[6] + in.w[0] * M_beyond[5];
     const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
@@ -9169,7 +9170,7 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Operations: 77 +, 159 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1421 +, 3762 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1419 +, 3762 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9235,7 +9236,7 @@ T segment_inverse_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(6, 8, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(6, 8, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[2] * M_beyond[2] + M_beyond[1] * in.w[1] + in.w[3] * M_beyond[3];
     G_ap = M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0] + M_beyond[6] * in.w[1] + M_beyond[7] * in.w[2];
     const T t8 = T(1) / ap_ap;
@@ -9382,7 +9383,7 @@ bool segment_inverse_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
 /// Operations: 41 +, 67 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 883 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 446 +, 883 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9432,7 +9433,7 @@ T segment_inverse_i7_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(7, 7, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 7, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -9452,7 +9453,7 @@ T segment_inverse_i7_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
 /// Operations: 50 +, 105 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1626 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1626 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9516,7 +9517,7 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / r1;
@@ -9565,7 +9566,7 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
 /// Operations: 50 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1628 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1628 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9631,7 +9632,7 @@ T segment_inverse_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / r0;
@@ -9784,7 +9785,7 @@ bool segment_inverse_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
 /// Operations: 44 +, 75 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1573 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 677 +, 1573 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9834,7 +9835,7 @@ T segment_inverse_i7_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(7, 7, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 7, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -9855,7 +9856,7 @@ T segment_inverse_i7_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
 /// Operations: 55 +, 118 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2332 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 930 +, 2332 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9920,7 +9921,7 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[4] * in.w[1] + M_beyond[3] * in.w[0];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -9971,7 +9972,7 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
 /// Operations: 58 +, 131 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 931 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10038,7 +10039,7 @@ T segment_inverse_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = in.w[0] + in.w[1];
@@ -10194,7 +10195,7 @@ bool segment_inverse_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
 /// Operations: 47 +, 86 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2265 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 909 +, 2265 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10244,7 +10245,7 @@ T segment_inverse_i7_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(7, 7, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 7, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -10268,7 +10269,7 @@ T segment_inverse_i7_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
 /// Operations: 62 +, 138 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3043 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1171 +, 3043 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10333,7 +10334,7 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[4] + in.w[1] * M_beyond[5] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / r0;
@@ -10385,7 +10386,7 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
 /// Operations: 66 +, 155 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3047 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3047 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10452,7 +10453,7 @@ T segment_inverse_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1];
     G_ap = M_beyond[5] * in.w[1] + M_beyond[4] * in.w[0] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / r0;
@@ -10614,7 +10615,7 @@ bool segment_inverse_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
 /// Operations: 52 +, 100 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2959 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1142 +, 2959 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10664,7 +10665,7 @@ T segment_inverse_i7_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(7, 7, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 7, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + in.w[3] * M_beyond[3] + in.w[1] * M_beyond[1] + M_beyond[2] * in.w[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -10689,7 +10690,7 @@ T segment_inverse_i7_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
 /// Operations: 69 +, 159 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3758 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1414 +, 3758 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10754,7 +10755,7 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[5] * in.w[0] + M_beyond[8] * in.w[3] + in.w[2] * M_beyond[7] + M_beyond[6] * in.w[1];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / r0;
@@ -10809,7 +10810,7 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
 /// Operations: 76 +, 183 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3763 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3763 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10876,7 +10877,7 @@ T segment_inverse_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(7, 9, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(7, 9, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[3] * in.w[3] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0];
     G_ap = in.w[3] * M_beyond[8] + in.w[0] * M_beyond[5] + in.w[2] * M_beyond[7] + in.w[1] * M_beyond[6];
     const T t8 = T(1) / ab_ab;
@@ -11042,7 +11043,7 @@ bool segment_inverse_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 44 +, 70 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 450 +, 888 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 448 +, 888 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11091,7 +11092,7 @@ T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(8, 8, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 8, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -11114,7 +11115,7 @@ T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 53 +, 98 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1628 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1628 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11177,7 +11178,7 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / ap_ap;
@@ -11217,7 +11218,7 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Operations: 53 +, 102 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1630 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1630 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11282,7 +11283,7 @@ T segment_inverse_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ab_ab;
@@ -11420,7 +11421,7 @@ bool segment_inverse_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 47 +, 76 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 681 +, 1578 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 679 +, 1578 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11469,7 +11470,7 @@ T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(8, 8, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 8, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -11493,7 +11494,7 @@ T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 58 +, 109 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 932 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11557,7 +11558,7 @@ std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
@@ -11599,7 +11600,7 @@ std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Operations: 61 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2337 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2337 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11665,7 +11666,7 @@ T segment_inverse_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[3] * in.w[0] + M_beyond[4] * in.w[1];
     const T t8 = T(1) / ap_ap;
@@ -11806,7 +11807,7 @@ bool segment_inverse_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 50 +, 87 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 913 +, 2270 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 911 +, 2270 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11855,7 +11856,7 @@ T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(8, 8, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 8, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[2] * M_beyond[2] + M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -11882,7 +11883,7 @@ T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 65 +, 126 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3045 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3045 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11946,7 +11947,7 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[5] * in.w[1] + M_beyond[4] * in.w[0] + in.w[2] * M_beyond[6];
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
@@ -11989,7 +11990,7 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Operations: 69 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3049 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1175 +, 3049 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12055,7 +12056,7 @@ T segment_inverse_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2] + in.w[0] * M_beyond[0];
     G_ap = M_beyond[6] * in.w[2] + M_beyond[5] * in.w[1] + M_beyond[4] * in.w[0];
     const T t8 = T(1) / ap_ap;
@@ -12202,7 +12203,7 @@ bool segment_inverse_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 55 +, 101 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1146 +, 2964 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1144 +, 2964 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12251,7 +12252,7 @@ T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(8, 8, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 8, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[3] * in.w[3] + M_beyond[0] * in.w[0] + in.w[2] * M_beyond[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -12279,7 +12280,7 @@ T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 72 +, 146 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1418 +, 3760 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1416 +, 3760 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12343,7 +12344,7 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[6] * in.w[1] + in.w[2] * M_beyond[7] + in.w[3] * M_beyond[8] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / ap_ap;
@@ -12389,7 +12390,7 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Operations: 79 +, 170 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1421 +, 3765 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1419 +, 3765 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12455,7 +12456,7 @@ T segment_inverse_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(8, 10, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(8, 10, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[3] * in.w[3] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
     G_ap = in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7] + M_beyond[6] * in.w[1] + in.w[0] * M_beyond[5];
     const T t8 = T(1) / ap_ap;
@@ -12606,7 +12607,7 @@ bool segment_inverse_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
 /// Operations: 43 +, 78 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 885 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 446 +, 885 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12656,7 +12657,7 @@ T segment_inverse_i9_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(9, 9, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 9, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -12678,7 +12679,7 @@ T segment_inverse_i9_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
 /// Operations: 52 +, 116 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1629 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1629 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12742,7 +12743,7 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / r1;
@@ -12793,7 +12794,7 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
 /// Operations: 52 +, 120 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1631 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1631 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12859,7 +12860,7 @@ T segment_inverse_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / r0;
@@ -13016,7 +13017,7 @@ bool segment_inverse_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
 /// Operations: 46 +, 86 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1575 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 677 +, 1575 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13066,7 +13067,7 @@ T segment_inverse_i9_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(9, 9, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 9, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -13089,7 +13090,7 @@ T segment_inverse_i9_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
 /// Operations: 57 +, 129 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 930 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13154,7 +13155,7 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -13207,7 +13208,7 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
 /// Operations: 60 +, 142 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2338 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 931 +, 2338 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13274,7 +13275,7 @@ T segment_inverse_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
     G_ap = in.w[0] * M_beyond[3] + M_beyond[4] * in.w[1];
     const T t8 = T(1) / r0;
@@ -13434,7 +13435,7 @@ bool segment_inverse_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
 /// Operations: 49 +, 98 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2267 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 909 +, 2267 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13484,7 +13485,7 @@ T segment_inverse_i9_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(9, 9, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 9, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0] + M_beyond[2] * in.w[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -13510,7 +13511,7 @@ T segment_inverse_i9_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
 /// Operations: 64 +, 148 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3046 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1171 +, 3046 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13575,7 +13576,7 @@ std::array<T, 3> segment_inverse_i9_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[4] + M_beyond[5] * in.w[1] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / r0;
@@ -13629,7 +13630,7 @@ std::array<T, 3> segment_inverse_i9_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
 /// Operations: 68 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3050 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3050 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13696,7 +13697,7 @@ T segment_inverse_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + in.w[2] * M_beyond[2];
     G_ap = M_beyond[4] * in.w[0] + in.w[2] * M_beyond[6] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / r0;
@@ -13862,7 +13863,7 @@ bool segment_inverse_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
 /// Operations: 54 +, 115 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2961 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1142 +, 2961 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13912,7 +13913,7 @@ T segment_inverse_i9_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(9, 9, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 9, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[3] * M_beyond[3] + in.w[2] * M_beyond[2] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -13939,7 +13940,7 @@ T segment_inverse_i9_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
 /// Operations: 71 +, 168 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3761 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1414 +, 3761 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14004,7 +14005,7 @@ std::array<T, 3> segment_inverse_i9_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[7] * in.w[2] + M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0] + M_beyond[6] * in.w[1];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -14061,7 +14062,7 @@ std::array<T, 3> segment_inverse_i9_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
 /// Operations: 78 +, 195 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14128,7 +14129,7 @@ T segment_inverse_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(9, 11, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(9, 11, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1] + M_beyond[3] * in.w[3];
     G_ap = in.w[2] * M_beyond[7] + in.w[3] * M_beyond[8] + in.w[1] * M_beyond[6] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / ab_ab;
@@ -14298,7 +14299,7 @@ bool segment_inverse_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 46 +, 79 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 450 +, 890 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 448 +, 890 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14347,7 +14348,7 @@ T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(10, 10, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 10, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -14372,7 +14373,7 @@ T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 55 +, 107 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1633 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1633 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14435,7 +14436,7 @@ std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / bp_bp;
@@ -14479,7 +14480,7 @@ std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Operations: 55 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1635 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1635 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14544,7 +14545,7 @@ T segment_inverse_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
@@ -14688,7 +14689,7 @@ bool segment_inverse_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 49 +, 85 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 681 +, 1580 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 679 +, 1580 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14737,7 +14738,7 @@ T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(10, 10, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 10, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -14763,7 +14764,7 @@ T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 60 +, 118 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2339 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 932 +, 2339 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14827,7 +14828,7 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
@@ -14873,7 +14874,7 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Operations: 63 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2342 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2342 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14939,7 +14940,7 @@ T segment_inverse_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[3] * in.w[0] + M_beyond[4] * in.w[1];
     const T t8 = T(1) / ab_ab;
@@ -15086,7 +15087,7 @@ bool segment_inverse_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 52 +, 96 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 913 +, 2272 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 911 +, 2272 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15135,7 +15136,7 @@ T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(10, 10, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 10, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + in.w[0] * M_beyond[0] + in.w[2] * M_beyond[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -15164,7 +15165,7 @@ T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 67 +, 136 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3050 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3050 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15228,7 +15229,7 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[6] * in.w[2] + in.w[0] * M_beyond[4] + in.w[1] * M_beyond[5];
     const T t8 = in.w[0] + in.w[1] + in.w[2];
     const T t9 = T(1) / bp_bp;
@@ -15275,7 +15276,7 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Operations: 71 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3054 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1175 +, 3054 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15341,7 +15342,7 @@ T segment_inverse_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0];
     G_ap = M_beyond[6] * in.w[2] + in.w[1] * M_beyond[5] + M_beyond[4] * in.w[0];
     const T t8 = in.w[1] + in.w[2] + in.w[0];
@@ -15494,7 +15495,7 @@ bool segment_inverse_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 57 +, 110 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1146 +, 2966 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1144 +, 2966 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15543,7 +15544,7 @@ T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(10, 10, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 10, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + in.w[2] * M_beyond[2] + in.w[3] * M_beyond[3] + in.w[1] * M_beyond[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -15573,7 +15574,7 @@ T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 74 +, 157 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1418 +, 3765 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1416 +, 3765 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15637,7 +15638,7 @@ std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[7] * in.w[2] + M_beyond[5] * in.w[0] + M_beyond[8] * in.w[3] + in.w[1] * M_beyond[6];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / ap_ap;
@@ -15687,7 +15688,7 @@ std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Operations: 81 +, 181 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1421 +, 3770 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1419 +, 3770 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15753,7 +15754,7 @@ T segment_inverse_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(10, 12, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(10, 12, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1] + in.w[3] * M_beyond[3] + in.w[2] * M_beyond[2];
     G_ap = M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0] + M_beyond[6] * in.w[1] + in.w[2] * M_beyond[7];
     const T t8 = T(1) / ab_ab;
@@ -15910,7 +15911,7 @@ bool segment_inverse_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
 /// Operations: 45 +, 89 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 888 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 446 +, 888 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15960,7 +15961,7 @@ T segment_inverse_i11_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(11, 11, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 11, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -15984,7 +15985,7 @@ T segment_inverse_i11_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
 /// Operations: 54 +, 129 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1634 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1634 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16048,7 +16049,7 @@ std::array<T, 3> segment_inverse_i11_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / r1;
@@ -16105,7 +16106,7 @@ std::array<T, 3> segment_inverse_i11_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
 /// Operations: 54 +, 133 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1636 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1636 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16171,7 +16172,7 @@ T segment_inverse_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ab_ab;
@@ -16338,7 +16339,7 @@ bool segment_inverse_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
 /// Operations: 48 +, 97 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1578 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 677 +, 1578 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16388,7 +16389,7 @@ T segment_inverse_i11_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(11, 11, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 11, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -16413,7 +16414,7 @@ T segment_inverse_i11_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
 /// Operations: 59 +, 142 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2340 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 930 +, 2340 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16478,7 +16479,7 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / r1;
     const T t9 = t8 * t8;
@@ -16537,7 +16538,7 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
 /// Operations: 62 +, 155 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 931 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16604,7 +16605,7 @@ T segment_inverse_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / ab_ab;
@@ -16774,7 +16775,7 @@ bool segment_inverse_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
 /// Operations: 51 +, 108 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2270 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 909 +, 2270 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16824,7 +16825,7 @@ T segment_inverse_i11_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(11, 11, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 11, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -16852,7 +16853,7 @@ T segment_inverse_i11_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
 /// Operations: 66 +, 162 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3051 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1171 +, 3051 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16917,7 +16918,7 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[6] * in.w[2] + M_beyond[5] * in.w[1] + in.w[0] * M_beyond[4];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / r0;
@@ -16977,7 +16978,7 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
 /// Operations: 70 +, 179 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3055 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3055 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17044,7 +17045,7 @@ T segment_inverse_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[2] * in.w[2] + in.w[0] * M_beyond[0];
     G_ap = M_beyond[5] * in.w[1] + in.w[0] * M_beyond[4] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / ab_ab;
@@ -17220,7 +17221,7 @@ bool segment_inverse_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
 /// Operations: 56 +, 124 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2964 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1142 +, 2964 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17270,7 +17271,7 @@ T segment_inverse_i11_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(11, 11, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 11, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + in.w[3] * M_beyond[3] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -17299,7 +17300,7 @@ T segment_inverse_i11_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
 /// Operations: 73 +, 183 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1414 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17364,7 +17365,7 @@ std::array<T, 3> segment_inverse_i11_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[3] * M_beyond[8] + M_beyond[7] * in.w[2] + M_beyond[6] * in.w[1] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / r0;
@@ -17427,7 +17428,7 @@ std::array<T, 3> segment_inverse_i11_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
 /// Operations: 80 +, 209 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3771 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3771 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17494,7 +17495,7 @@ T segment_inverse_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(11, 13, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(11, 13, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[2] * M_beyond[2] + in.w[0] * M_beyond[0] + in.w[1] * M_beyond[1] + in.w[3] * M_beyond[3];
     G_ap = M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0] + in.w[2] * M_beyond[7] + M_beyond[6] * in.w[1];
     const T t8 = T(1) / ab_ab;
@@ -17674,7 +17675,7 @@ bool segment_inverse_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 48 +, 88 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 450 +, 893 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 448 +, 893 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17723,7 +17724,7 @@ T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(12, 12, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 12, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -17750,7 +17751,7 @@ T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 57 +, 116 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1636 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1636 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17813,7 +17814,7 @@ std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ap_ap;
     const T t8 = t7 * t7;
@@ -17859,7 +17860,7 @@ std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Operations: 57 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1638 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1638 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17924,7 +17925,7 @@ T segment_inverse_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / bp_bp;
@@ -18072,7 +18073,7 @@ bool segment_inverse_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 51 +, 94 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 681 +, 1583 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 679 +, 1583 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18121,7 +18122,7 @@ T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(12, 12, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 12, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -18149,7 +18150,7 @@ T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 62 +, 127 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2342 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 932 +, 2342 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18213,7 +18214,7 @@ std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / ap_ap;
@@ -18261,7 +18262,7 @@ std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Operations: 65 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2345 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2345 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18327,7 +18328,7 @@ T segment_inverse_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
     G_ap = in.w[0] * M_beyond[3] + M_beyond[4] * in.w[1];
     const T t8 = T(1) / ab_ab;
@@ -18478,7 +18479,7 @@ bool segment_inverse_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 54 +, 106 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 913 +, 2275 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 911 +, 2275 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18527,7 +18528,7 @@ T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(12, 12, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 12, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -18558,7 +18559,7 @@ T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 69 +, 144 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3053 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3053 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18622,7 +18623,7 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[1] * M_beyond[5] + M_beyond[6] * in.w[2] + in.w[0] * M_beyond[4];
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
@@ -18671,7 +18672,7 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Operations: 73 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3057 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1175 +, 3057 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18737,7 +18738,7 @@ T segment_inverse_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[0] * M_beyond[0] + in.w[1] * M_beyond[1];
     G_ap = in.w[0] * M_beyond[4] + M_beyond[6] * in.w[2] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / ap_ap;
@@ -18894,7 +18895,7 @@ bool segment_inverse_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 59 +, 121 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1146 +, 2969 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1144 +, 2969 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18943,7 +18944,7 @@ T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(12, 12, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 12, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[2] * in.w[2] + M_beyond[3] * in.w[3] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -18975,7 +18976,7 @@ T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 76 +, 164 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1418 +, 3768 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1416 +, 3768 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19039,7 +19040,7 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[7] * in.w[2] + in.w[0] * M_beyond[5] + in.w[3] * M_beyond[8] + in.w[1] * M_beyond[6];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / ap_ap;
@@ -19091,7 +19092,7 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Operations: 83 +, 189 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1421 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1419 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19157,7 +19158,7 @@ T segment_inverse_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(12, 14, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(12, 14, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1] + M_beyond[3] * in.w[3] + in.w[0] * M_beyond[0];
     G_ap = M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0] + M_beyond[6] * in.w[1] + M_beyond[7] * in.w[2];
     const T t8 = T(1) / ab_ab;
@@ -19318,7 +19319,7 @@ bool segment_inverse_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
 /// Operations: 47 +, 100 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 890 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 446 +, 890 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19368,7 +19369,7 @@ T segment_inverse_i13_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(13, 13, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 13, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -19394,7 +19395,7 @@ T segment_inverse_i13_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
 /// Operations: 56 +, 140 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1637 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1637 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19458,7 +19459,7 @@ std::array<T, 3> segment_inverse_i13_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / r0;
     const T t8 = t7 * t7;
@@ -19517,7 +19518,7 @@ std::array<T, 3> segment_inverse_i13_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
 /// Operations: 56 +, 144 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1639 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1639 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19583,7 +19584,7 @@ T segment_inverse_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
@@ -19754,7 +19755,7 @@ bool segment_inverse_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
 /// Operations: 50 +, 108 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1580 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 677 +, 1580 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19804,7 +19805,7 @@ T segment_inverse_i13_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(13, 13, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 13, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -19831,7 +19832,7 @@ T segment_inverse_i13_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
 /// Operations: 61 +, 153 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 930 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19896,7 +19897,7 @@ std::array<T, 3> segment_inverse_i13_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / r0;
@@ -19957,7 +19958,7 @@ std::array<T, 3> segment_inverse_i13_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
 /// Operations: 64 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2346 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 931 +, 2346 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20024,7 +20025,7 @@ T segment_inverse_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
     G_ap = in.w[0] * M_beyond[3] + M_beyond[4] * in.w[1];
     const T t8 = T(1) / r0;
@@ -20198,7 +20199,7 @@ bool segment_inverse_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
 /// Operations: 53 +, 120 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2272 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 909 +, 2272 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20248,7 +20249,7 @@ T segment_inverse_i13_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(13, 13, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 13, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + in.w[2] * M_beyond[2] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -20278,7 +20279,7 @@ T segment_inverse_i13_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
 /// Operations: 68 +, 173 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3054 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1171 +, 3054 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20343,7 +20344,7 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[0] * M_beyond[4] + in.w[2] * M_beyond[6] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / r0;
@@ -20405,7 +20406,7 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
 /// Operations: 72 +, 191 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20472,7 +20473,7 @@ T segment_inverse_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2];
     G_ap = M_beyond[6] * in.w[2] + M_beyond[4] * in.w[0] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / ab_ab;
@@ -20652,7 +20653,7 @@ bool segment_inverse_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
 /// Operations: 58 +, 137 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2966 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1142 +, 2966 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20702,7 +20703,7 @@ T segment_inverse_i13_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(13, 13, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 13, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[2] * M_beyond[2] + in.w[3] * M_beyond[3] + M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -20733,7 +20734,7 @@ T segment_inverse_i13_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
 /// Operations: 75 +, 196 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3769 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1414 +, 3769 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20798,7 +20799,7 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[5] * in.w[0] + M_beyond[8] * in.w[3] + M_beyond[7] * in.w[2] + M_beyond[6] * in.w[1];
     const T t8 = T(1) / ab_ab;
     const T t9 = in.w[1] + in.w[2] + in.w[3] + in.w[0];
@@ -20863,7 +20864,7 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
 /// Operations: 82 +, 223 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20930,7 +20931,7 @@ T segment_inverse_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(13, 15, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(13, 15, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[2] * in.w[2] + in.w[3] * M_beyond[3] + in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[5] + in.w[3] * M_beyond[8] + M_beyond[7] * in.w[2] + in.w[1] * M_beyond[6];
     const T t8 = T(1) / ab_ab;
@@ -21114,7 +21115,7 @@ bool segment_inverse_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 50 +, 97 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 450 +, 895 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 448 +, 895 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21163,7 +21164,7 @@ T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(14, 14, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 14, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -21192,7 +21193,7 @@ T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 59 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1641 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1641 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21255,7 +21256,7 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ap_ap;
     const T t8 = t7 * t7;
@@ -21305,7 +21306,7 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Operations: 59 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1643 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1643 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21370,7 +21371,7 @@ T segment_inverse_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = in.w[0] * M_beyond[2];
     const T t7 = T(1) / ab_ab;
@@ -21524,7 +21525,7 @@ bool segment_inverse_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 53 +, 103 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 681 +, 1585 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 679 +, 1585 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21573,7 +21574,7 @@ T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(14, 14, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 14, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -21603,7 +21604,7 @@ T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 64 +, 136 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2347 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 932 +, 2347 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21667,7 +21668,7 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[4] * in.w[1] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / ap_ap;
@@ -21719,7 +21720,7 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Operations: 67 +, 147 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2350 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2350 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21785,7 +21786,7 @@ T segment_inverse_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / ab_ab;
@@ -21942,7 +21943,7 @@ bool segment_inverse_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 56 +, 114 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 913 +, 2277 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 911 +, 2277 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21991,7 +21992,7 @@ T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(14, 14, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 14, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -22024,7 +22025,7 @@ T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 71 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22088,7 +22089,7 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[1] * M_beyond[5] + in.w[2] * M_beyond[6] + M_beyond[4] * in.w[0];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / ap_ap;
@@ -22141,7 +22142,7 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Operations: 75 +, 170 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1175 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22207,7 +22208,7 @@ T segment_inverse_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + in.w[2] * M_beyond[2];
     G_ap = M_beyond[4] * in.w[0] + M_beyond[6] * in.w[2] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / ab_ab;
@@ -22370,7 +22371,7 @@ bool segment_inverse_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 61 +, 128 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1146 +, 2971 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1144 +, 2971 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22419,7 +22420,7 @@ T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(14, 14, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 14, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[3] * in.w[3] + M_beyond[1] * in.w[1] + M_beyond[0] * in.w[0] + M_beyond[2] * in.w[2];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -22453,7 +22454,7 @@ T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 78 +, 173 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1418 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1416 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22517,7 +22518,7 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[6] * in.w[1] + M_beyond[7] * in.w[2] + in.w[3] * M_beyond[8] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
@@ -22573,7 +22574,7 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Operations: 85 +, 197 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1421 +, 3778 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1419 +, 3778 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22639,7 +22640,7 @@ T segment_inverse_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(14, 16, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(14, 16, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * in.w[1] + M_beyond[3] * in.w[3] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0];
     G_ap = in.w[3] * M_beyond[8] + in.w[2] * M_beyond[7] + M_beyond[6] * in.w[1] + in.w[0] * M_beyond[5];
     const T t8 = T(1) / ap_ap;
@@ -22806,7 +22807,7 @@ bool segment_inverse_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
 /// Operations: 49 +, 111 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 893 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 446 +, 893 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22856,7 +22857,7 @@ T segment_inverse_i15_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(15, 15, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 15, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -22884,7 +22885,7 @@ T segment_inverse_i15_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
 /// Operations: 58 +, 153 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1641 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1641 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22948,7 +22949,7 @@ std::array<T, 3> segment_inverse_i15_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / r1;
@@ -23013,7 +23014,7 @@ std::array<T, 3> segment_inverse_i15_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
 /// Operations: 58 +, 157 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1643 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 691 +, 1643 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23079,7 +23080,7 @@ T segment_inverse_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / r0;
@@ -23260,7 +23261,7 @@ bool segment_inverse_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
 /// Operations: 52 +, 119 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1583 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 677 +, 1583 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23310,7 +23311,7 @@ T segment_inverse_i15_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(15, 15, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 15, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -23339,7 +23340,7 @@ T segment_inverse_i15_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
 /// Operations: 63 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2347 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 930 +, 2347 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23404,7 +23405,7 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[3] * in.w[0] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / r0;
@@ -23471,7 +23472,7 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
 /// Operations: 66 +, 179 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2350 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 931 +, 2350 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23538,7 +23539,7 @@ T segment_inverse_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
     G_ap = in.w[0] * M_beyond[3] + in.w[1] * M_beyond[4];
     const T t8 = T(1) / r0;
@@ -23722,7 +23723,7 @@ bool segment_inverse_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
 /// Operations: 55 +, 131 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2275 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 909 +, 2275 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23772,7 +23773,7 @@ T segment_inverse_i15_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(15, 15, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 15, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[1] * M_beyond[1] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -23804,7 +23805,7 @@ T segment_inverse_i15_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
 /// Operations: 70 +, 186 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1171 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23869,7 +23870,7 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[6] * in.w[2] + in.w[1] * M_beyond[5] + in.w[0] * M_beyond[4];
     const T t8 = in.w[0] + in.w[1] + in.w[2];
     const T t9 = T(1) / r1;
@@ -23937,7 +23938,7 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
 /// Operations: 74 +, 204 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3062 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3062 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24004,7 +24005,7 @@ T segment_inverse_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1] + in.w[2] * M_beyond[2];
     G_ap = M_beyond[4] * in.w[0] + in.w[2] * M_beyond[6] + M_beyond[5] * in.w[1];
     const T t8 = T(1) / ab_ab;
@@ -24194,7 +24195,7 @@ bool segment_inverse_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
 /// Operations: 60 +, 148 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2969 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1142 +, 2969 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24244,7 +24245,7 @@ T segment_inverse_i15_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(15, 15, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 15, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[3] * M_beyond[3] + in.w[2] * M_beyond[2] + in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -24277,7 +24278,7 @@ T segment_inverse_i15_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
 /// Operations: 77 +, 207 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3773 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1414 +, 3773 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24342,7 +24343,7 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[7] * in.w[2] + M_beyond[6] * in.w[1] + M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / r0;
     const T t9 = t8 * t8;
@@ -24413,7 +24414,7 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
 /// Operations: 84 +, 234 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3778 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1417 +, 3778 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24480,7 +24481,7 @@ T segment_inverse_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(15, 17, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(15, 17, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[1] * M_beyond[1] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0] + M_beyond[3] * in.w[3];
     G_ap = in.w[2] * M_beyond[7] + in.w[3] * M_beyond[8] + in.w[1] * M_beyond[6] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / ab_ab;
@@ -24674,7 +24675,7 @@ bool segment_inverse_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 52 +, 106 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 450 +, 898 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 448 +, 898 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24723,7 +24724,7 @@ T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 1> M_beyond;
-    segment_moments_beyond_end<T>(16, 16, 0, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 16, 0, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = in.w[0] * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -24754,7 +24755,7 @@ T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 61 +, 133 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1641 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1641 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24817,7 +24818,7 @@ std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / ab_ab;
     const T t8 = T(1) / ap_ap;
@@ -24867,7 +24868,7 @@ std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Operations: 61 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 695 +, 1643 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 693 +, 1643 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24932,7 +24933,7 @@ T segment_inverse_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0];
     G_ap = M_beyond[2] * in.w[0];
     const T t7 = T(1) / bp_bp;
@@ -25088,7 +25089,7 @@ bool segment_inverse_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 55 +, 112 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 681 +, 1588 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 679 +, 1588 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25137,7 +25138,7 @@ T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 2> M_beyond;
-    segment_moments_beyond_end<T>(16, 16, 1, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 16, 1, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -25169,7 +25170,7 @@ T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 66 +, 144 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2347 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 932 +, 2347 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25233,7 +25234,7 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[1] * M_beyond[4] + in.w[0] * M_beyond[3];
     const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
@@ -25285,7 +25286,7 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Operations: 69 +, 155 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 935 +, 2350 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 933 +, 2350 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25351,7 +25352,7 @@ T segment_inverse_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
     G_ap = in.w[1] * M_beyond[4] + M_beyond[3] * in.w[0];
     const T t8 = T(1) / ap_ap;
@@ -25510,7 +25511,7 @@ bool segment_inverse_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 58 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 913 +, 2280 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 911 +, 2280 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25559,7 +25560,7 @@ T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 3> M_beyond;
-    segment_moments_beyond_end<T>(16, 16, 2, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 16, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + M_beyond[0] * in.w[0] + M_beyond[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -25594,7 +25595,7 @@ T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 73 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1173 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25658,7 +25659,7 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[5] * in.w[1] + M_beyond[4] * in.w[0] + in.w[2] * M_beyond[6];
     const T t8 = T(1) / ab_ab;
     const T t9 = T(1) / ap_ap;
@@ -25711,7 +25712,7 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Operations: 77 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1175 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25777,7 +25778,7 @@ T segment_inverse_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + in.w[0] * M_beyond[0] + M_beyond[1] * in.w[1];
     G_ap = M_beyond[5] * in.w[1] + M_beyond[4] * in.w[0] + M_beyond[6] * in.w[2];
     const T t8 = T(1) / ab_ab;
@@ -25942,7 +25943,7 @@ bool segment_inverse_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 63 +, 137 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1146 +, 2974 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1144 +, 2974 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25991,7 +25992,7 @@ T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
-    segment_moments_beyond_end<T>(16, 16, 3, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 16, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[2] * in.w[2] + M_beyond[1] * in.w[1] + M_beyond[3] * in.w[3] + M_beyond[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -26027,7 +26028,7 @@ T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 80 +, 183 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1418 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1416 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26091,7 +26092,7 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = in.w[2] * M_beyond[7] + M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0] + M_beyond[6] * in.w[1];
     const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
@@ -26147,7 +26148,7 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Operations: 87 +, 207 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1421 +, 3778 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Longest path: 1419 +, 3778 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26213,7 +26214,7 @@ T segment_inverse_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
-    segment_moments_beyond_end<T>(16, 18, 4, ab_ab, ab_ap, cross_cross, ap_ap, bp_bp, M_beyond.data());
+    segment_moments_beyond_end<T>(16, 18, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[3] * in.w[3] + in.w[2] * M_beyond[2] + M_beyond[0] * in.w[0] + in.w[1] * M_beyond[1];
     G_ap = M_beyond[6] * in.w[1] + M_beyond[7] * in.w[2] + M_beyond[8] * in.w[3] + M_beyond[5] * in.w[0];
     const T t8 = T(1) / ab_ab;

@@ -74,23 +74,29 @@ const auto& sine_mapped_rule() {
   return mapped;
 }
 
-/// Adds the N-point Gauss–Legendre rule on [t0, t1] for M_{k,m},
-/// k = 0…k_max, m = m_lo, m_lo + 2, …, m_hi (m may be negative: q^(|m|/2)
-/// for compact kernels, where q ≥ 0 on [t0, t1]), to
-/// out[((m − m_lo)/2)(k_max + 1) + k]; q_at(t) evaluates q ≥ 0.
-template <class T, unsigned N, class QuadraticAt, NodeMap map = NodeMap::linear>
-void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
-                               T* out) {
+/// One node of a rule: the parameter t, q(t) ≥ 0 and dt/dx there.
+template <class T>
+struct MomentNode {
+  T t;
+  T q;
+  T jacobian;
+};
+
+/// Adds the N-point Gauss–Legendre rule over x ∈ [−1, 1] (after `map`) for
+/// M_{k,m} = ∫ t^k q^(−m/2) dt, k = 0…k_max, m = m_lo, m_lo + 2, …, m_hi
+/// (m may be negative: q^(|m|/2) for compact kernels, where q ≥ 0), to
+/// out[((m − m_lo)/2)(k_max + 1) + k]; node_at(x) gives the MomentNode at x.
+template <class T, unsigned N, NodeMap map, class NodeAt>
+void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
   using std::sqrt;
   using Rule = boost::math::quadrature::gauss<T, N>;
   const int levels = (m_hi - m_lo) / 2 + 1;
   const int per_level = k_max + 1;
-  const T half_width = (t1 - t0) / 2;
-  const T middle = (t0 + t1) / 2;
-  // One node t with Gauss weight g adds g t^k q^(−m/2) to every moment.
+  // One node t with Gauss weight g adds g t^k q^(−m/2) dt/dx to every moment.
   auto add_node = [&](const T& x, const T& g) {
-    const T t = middle + half_width * x;
-    const T q = q_at(t);
+    const MomentNode<T> node = node_at(x);
+    const T& t = node.t;
+    const T& q = node.q;
     // q^(−m_hi/2) from integer powers of q (even m) or of √q (odd m), then
     // × q per level down to m_lo: no division by a q that may be 0 at a
     // clipped end.
@@ -98,7 +104,7 @@ void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt&
     const T root = even ? q : sqrt(q);
     const T base = m_hi <= 0 ? root : T(1) / root;
     const int power = (m_hi <= 0 ? -m_hi : m_hi) / (even ? 2 : 1);
-    T level_value = half_width * g;
+    T level_value = node.jacobian * g;
     for (int j = 0; j < power; ++j) level_value *= base;
     for (int l = levels - 1; l >= 0; --l) {
       T term = level_value;
@@ -121,6 +127,60 @@ void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt&
     add_node(x[j], g[j]);
     add_node(-x[j], g[j]);
   }
+}
+
+/// Adds the N-point Gauss–Legendre rule on [t0, t1] for M_{k,m} (as
+/// add_moments_at_nodes); q_at(t) evaluates q ≥ 0.
+template <class T, unsigned N, class QuadraticAt, NodeMap map = NodeMap::linear>
+void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
+                               T* out) {
+  const T half_width = (t1 - t0) / 2;
+  const T middle = (t0 + t1) / 2;
+  add_moments_at_nodes<T, N, map>(
+      m_lo, m_hi, k_max,
+      [&](const T& x) {
+        const T t = middle + half_width * x;
+        return MomentNode<T>{t, q_at(t), half_width};
+      },
+      out);
+}
+
+/// Writes M_{k,m} = ∫ t^k q^(−m/2) dt over [middle − half_width, middle +
+/// half_width] (k = 0…k_max, m = m_lo, …, m_hi, m ≤ 0: compact kernels) to
+/// out[((m − m_lo)/2)(k_max + 1) + k], for q = minus_a (t − r1)(r2 − t)
+/// with roots r1 ≤ t ≤ r2 given by their distances from the interval:
+/// t − r1 = gap_lo + (t − interval start), r2 − t = gap_hi + (interval end
+/// − t), each a sum of nonnegative terms. For the support sphere grazing
+/// the segment (codegen/segment_program_builder.hpp,
+/// push_support_root_alternatives), where the interval is short and q on
+/// it tiny: formed as a difference of numbers ~1, q would lose ~ε/q, and
+/// the interval's ends as parameters t lose ε/(its length). Here neither
+/// enters: the caller finds middle, half_width and the gaps from R² − d²
+/// rounded once (skelconv/support_gap.hpp).
+///
+/// The rule: for even kernel degrees t^k q^(|m|/2) is a polynomial, exact
+/// with 2N − 1 ≥ its degree (NodeMap::linear); for odd degrees q^(|m|/2)
+/// has branch points at the roots, removed at a root that is an end of the
+/// interval by NodeMap::sine; the generator passes an interval whose other
+/// root is at least its length beyond it (ρ ≈ 3 after the map), or the
+/// chord between both roots (after the map the integrand is entire). N
+/// nodes leave ~1e-21 relative in the worst case the verifier found (a
+/// chord, i = 15, k ≤ 4): below rounding for double; wider types take 2N.
+template <class T, unsigned N, NodeMap map = NodeMap::linear>
+void segment_moments_between_roots(int m_lo, int m_hi, int k_max, const T& minus_a, const T& middle,
+                                   const T& half_width, const T& gap_lo, const T& gap_hi, T* out) {
+  constexpr unsigned nodes = map == NodeMap::sine && std::numeric_limits<T>::digits > 64 ? 2 * N : N;
+  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
+  for (int i = 0; i < count; ++i) out[i] = T(0);
+  add_moments_at_nodes<T, nodes, map>(
+      m_lo, m_hi, k_max,
+      [&](const T& x) {
+        const T from_start = half_width * (T(1) + x);  // t − interval start
+        const T to_end = half_width * (T(1) - x);      // interval end − t
+        return MomentNode<T>{middle + half_width * x, minus_a * (gap_lo + from_start) * (gap_hi + to_end),
+                             half_width};
+      },
+      out);
 }
 
 /// The far-field rule in double (segment_moments_gauss with m_lo > 0): the
