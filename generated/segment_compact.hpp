@@ -2783,7 +2783,7 @@ T segment_compact_i3_w0_f(const SegmentInput<T>& in) {
   const T t9 = -ab_ap;
   const T t10 = T(1) / a;
   const T t11 = b * t10;
-  const T t12 = max(T(t11 + (T(1) / T(2))), T((T(3) / T(2)) - t11));
+  const T t12 = max(T(t11 + (T(1) / T(4))), T((T(5) / T(4)) - t11));
   const T t13 = -t12 * t12 * a * a - D;
   const T t14 = -D;
   const T t15 = sqrt(t14);
@@ -2860,7 +2860,7 @@ T segment_compact_i3_w0_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-3, -3, 0, t40, t44, t44, -t43 * t10, T(0), M_roots.data());
     F = in.w[0] * M_roots[0];
   } else if (t13 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 1> M_flat;
     segment_moments_gauss<T, 20>(-3, -3, 0, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -2955,8 +2955,8 @@ std::array<T, 3> segment_compact_i3_w0_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t12 * t17 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -3049,7 +3049,7 @@ std::array<T, 3> segment_compact_i3_w0_grad(const SegmentInput<T>& in) {
     const T t58 = t57 * t56;
     G_E = -(T(1) / T(3)) * t12 * in.w[0] * t58;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 1, a, b, c, in.t0, in.t1, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
@@ -3168,8 +3168,8 @@ T segment_compact_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -a * a * t13 * t13 - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -t13 * t13 * a * a - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t11 * t16 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -3268,7 +3268,7 @@ T segment_compact_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t58 = t57 * t56;
     G_E = -(T(1) / T(3)) * t58 * t11 * in.w[0];
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0];
@@ -3394,8 +3394,8 @@ bool segment_compact_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -D - t13 * t13 * a * a;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -a * a * t13 * t13 - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t11 * t16 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -3493,7 +3493,7 @@ bool segment_compact_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t57 = t56 * t55;
     G_E = -(T(1) / T(3)) * t57 * t11 * in.w[0];
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -3596,8 +3596,8 @@ T segment_compact_i3_w1_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -D - t11 * t11 * a * a;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -D - a * a * t11 * t11;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t9 * t14 - t10 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t9 * t14 - (T(11) / T(10))))))));
@@ -3673,7 +3673,7 @@ T segment_compact_i3_w1_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-3, -3, 1, t39, t43, t43, -t9 * t42, T(0), M_roots.data());
     F = M_roots[1] * in.w[1] + M_roots[0] * in.w[0];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 2> M_flat;
     segment_moments_gauss<T, 20>(-3, -3, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
@@ -3776,8 +3776,8 @@ std::array<T, 3> segment_compact_i3_w1_grad(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -a * a * t13 * t13 - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -t13 * t13 * a * a - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t12 - t11 * t16 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -3872,7 +3872,7 @@ std::array<T, 3> segment_compact_i3_w1_grad(const SegmentInput<T>& in) {
     const T t59 = t58 * t57;
     G_E = -(T(1) / T(3)) * t11 * (in.w[0] * t59 + M_roots[0] * in.w[1]);
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 2, a, b, c, in.t0, in.t1, M_flat.data());
     const T t60 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
@@ -4005,7 +4005,7 @@ T segment_compact_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -D - a * a * t15 * t15;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -4109,7 +4109,7 @@ T segment_compact_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t64 = t63 * t62;
     G_E = -(T(1) / T(3)) * t13 * (M_roots[0] * in.w[1] + t64 * in.w[0]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
@@ -4250,7 +4250,7 @@ bool segment_compact_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -4354,7 +4354,7 @@ bool segment_compact_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t64 = t63 * t62;
     G_E = -(T(1) / T(3)) * (in.w[1] * M_roots[0] + t64 * in.w[0]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
@@ -4466,8 +4466,8 @@ T segment_compact_i3_w2_f(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = b * t11;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -t13 * t13 * a * a - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -D - t13 * t13 * a * a;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t16 * t11 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t16 * t11 - (T(11) / T(10))))))));
@@ -4542,7 +4542,7 @@ T segment_compact_i3_w2_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-3, -3, 2, t40, t44, t44, -t43 * t11, T(0), M_roots.data());
     F = in.w[2] * M_roots[2] + M_roots[0] * in.w[0] + M_roots[1] * in.w[1];
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 3> M_flat;
     segment_moments_gauss<T, 20>(-3, -3, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
@@ -4650,7 +4650,7 @@ std::array<T, 3> segment_compact_i3_w2_grad(const SegmentInput<T>& in) {
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -D - a * a * t15 * t15;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -4746,7 +4746,7 @@ std::array<T, 3> segment_compact_i3_w2_grad(const SegmentInput<T>& in) {
     const T t61 = t60 * t59;
     G_E = -(T(1) / T(3)) * t13 * (in.w[1] * M_roots[0] + T(2) * M_roots[1] * in.w[2] + t61 * in.w[0]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 3, a, b, c, in.t0, in.t1, M_flat.data());
     const T t62 = in.w[1] * M_flat[5] + M_flat[6] * in.w[2] + M_flat[4] * in.w[0];
@@ -4884,7 +4884,7 @@ T segment_compact_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -4990,7 +4990,7 @@ T segment_compact_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t66 = t65 * t64;
     G_E = -(T(1) / T(3)) * (t66 * in.w[0] + M_roots[0] * in.w[1] + T(2) * M_roots[1] * in.w[2]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
@@ -5134,8 +5134,8 @@ bool segment_compact_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -D - a * a * t13 * t13;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -t13 * t13 * a * a - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t11 * t16 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -5239,7 +5239,7 @@ bool segment_compact_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t63 = t62 * t61;
     G_E = -(T(1) / T(3)) * (t63 * in.w[0] + M_roots[0] * in.w[1] + T(2) * M_roots[1] * in.w[2]) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
@@ -5351,8 +5351,8 @@ T segment_compact_i3_w3_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -a * a * t11 * t11 - D;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -D - a * a * t11 * t11;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t10 - t9 * t14 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t9 * t14 - (T(11) / T(10))))))));
@@ -5427,7 +5427,7 @@ T segment_compact_i3_w3_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-3, -3, 3, t38, t42, t42, -t9 * t41, T(0), M_roots.data());
     F = M_roots[1] * in.w[1] + in.w[2] * M_roots[2] + in.w[3] * M_roots[3] + in.w[0] * M_roots[0];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-3, -3, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[3] * in.w[3];
@@ -5541,7 +5541,7 @@ std::array<T, 3> segment_compact_i3_w3_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -5637,7 +5637,7 @@ std::array<T, 3> segment_compact_i3_w3_grad(const SegmentInput<T>& in) {
     const T t60 = t59 * t58;
     G_E = -(T(1) / T(3)) * t12 * (in.w[0] * t60 + M_roots[0] * in.w[1] + T(2) * in.w[2] * M_roots[1] + T(3) * M_roots[2] * in.w[3]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 4, a, b, c, in.t0, in.t1, M_flat.data());
     const T t61 = M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + in.w[2] * M_flat[7];
@@ -5792,7 +5792,7 @@ T segment_compact_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
   const T t14 = -D - t13 * t13 * a * a;
   const T t15 = -D;
   const T t16 = sqrt(t15);
@@ -5899,7 +5899,7 @@ T segment_compact_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t65 = t64 * t63;
     G_E = -(T(1) / T(3)) * t11 * (t65 * in.w[0] + T(2) * M_roots[1] * in.w[2] + T(3) * M_roots[2] * in.w[3] + M_roots[0] * in.w[1]);
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1];
@@ -6066,7 +6066,7 @@ bool segment_compact_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -D - a * a * t15 * t15;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -6173,7 +6173,7 @@ bool segment_compact_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t67 = t66 * t65;
     G_E = -(T(1) / T(3)) * (T(3) * M_roots[2] * in.w[3] + in.w[1] * M_roots[0] + T(2) * M_roots[1] * in.w[2] + t67 * in.w[0]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-3, -1, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
@@ -9049,7 +9049,7 @@ T segment_compact_i5_w0_f(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = b * t11;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
   const T t14 = -t13 * t13 * a * a - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
@@ -9125,7 +9125,7 @@ T segment_compact_i5_w0_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-5, -5, 0, t40, t44, t44, -t43 * t11, T(0), M_roots.data());
     F = M_roots[0] * in.w[0];
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 1> M_flat;
     segment_moments_gauss<T, 20>(-5, -5, 0, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0];
@@ -9224,7 +9224,7 @@ std::array<T, 3> segment_compact_i5_w0_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -9318,7 +9318,7 @@ std::array<T, 3> segment_compact_i5_w0_grad(const SegmentInput<T>& in) {
     const T t58 = t57 * t57 * t56;
     G_E = -(T(1) / T(5)) * t12 * in.w[0] * t58;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 1, a, b, c, in.t0, in.t1, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
@@ -9441,8 +9441,8 @@ T segment_compact_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -t13 * t13 * a * a - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -D - a * a * t13 * t13;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t12 - t16 * t11 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t16 * t11 - (T(11) / T(10))))))));
@@ -9540,7 +9540,7 @@ T segment_compact_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t57 = t56 * t56 * t55;
     G_E = -(T(1) / T(5)) * t11 * in.w[0] * t57;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -9675,8 +9675,8 @@ bool segment_compact_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - t14 * t14 * a * a;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t13 - t12 * t17 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -9775,7 +9775,7 @@ bool segment_compact_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t59 = t58 * t58 * t57;
     G_E = -(T(1) / T(5)) * t59 * t12 * in.w[0];
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -9882,7 +9882,7 @@ T segment_compact_i5_w1_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
   const T t12 = -D - a * a * t11 * t11;
   const T t13 = -D;
   const T t14 = sqrt(t13);
@@ -9958,7 +9958,7 @@ T segment_compact_i5_w1_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-5, -5, 1, t38, t42, t42, -t9 * t41, T(0), M_roots.data());
     F = in.w[0] * M_roots[0] + M_roots[1] * in.w[1];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 2> M_flat;
     segment_moments_gauss<T, 20>(-5, -5, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
@@ -10066,8 +10066,8 @@ std::array<T, 3> segment_compact_i5_w1_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -t14 * t14 * a * a - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t13 - t17 * t12 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -10162,7 +10162,7 @@ std::array<T, 3> segment_compact_i5_w1_grad(const SegmentInput<T>& in) {
     const T t60 = t59 * t59 * t58;
     G_E = -(T(1) / T(5)) * (in.w[0] * t60 + in.w[1] * M_roots[0]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 2, a, b, c, in.t0, in.t1, M_flat.data());
     const T t61 = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
@@ -10301,7 +10301,7 @@ T segment_compact_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -10405,7 +10405,7 @@ T segment_compact_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t64 = t63 * t63 * t62;
     G_E = -(T(1) / T(5)) * (in.w[1] * M_roots[0] + t64 * in.w[0]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
@@ -10550,8 +10550,8 @@ bool segment_compact_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -D - t13 * t13 * a * a;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -D - a * a * t13 * t13;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t11 * t16 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -10654,7 +10654,7 @@ bool segment_compact_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t62 = t61 * t61 * t60;
     G_E = -(T(1) / T(5)) * t11 * (t62 * in.w[0] + M_roots[0] * in.w[1]);
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
@@ -10769,7 +10769,7 @@ T segment_compact_i5_w2_f(const SegmentInput<T>& in) {
   const T t9 = -ab_ap;
   const T t10 = T(1) / a;
   const T t11 = b * t10;
-  const T t12 = max(T(t11 + (T(1) / T(2))), T((T(3) / T(2)) - t11));
+  const T t12 = max(T(t11 + (T(1) / T(4))), T((T(5) / T(4)) - t11));
   const T t13 = -t12 * t12 * a * a - D;
   const T t14 = -D;
   const T t15 = sqrt(t14);
@@ -10845,7 +10845,7 @@ T segment_compact_i5_w2_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-5, -5, 2, t39, t43, t43, -t42 * t10, T(0), M_roots.data());
     F = in.w[1] * M_roots[1] + in.w[2] * M_roots[2] + in.w[0] * M_roots[0];
   } else if (t13 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 3> M_flat;
     segment_moments_gauss<T, 20>(-5, -5, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
@@ -10956,7 +10956,7 @@ std::array<T, 3> segment_compact_i5_w2_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -11053,7 +11053,7 @@ std::array<T, 3> segment_compact_i5_w2_grad(const SegmentInput<T>& in) {
     const T t61 = t60 * t60 * t59;
     G_E = -(T(1) / T(5)) * t12 * (M_roots[0] * in.w[1] + t61 * in.w[0] + T(2) * in.w[2] * M_roots[1]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 3, a, b, c, in.t0, in.t1, M_flat.data());
     const T t62 = M_flat[5] * in.w[1] + M_flat[6] * in.w[2] + M_flat[4] * in.w[0];
@@ -11195,8 +11195,8 @@ T segment_compact_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -D - t13 * t13 * a * a;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -a * a * t13 * t13 - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t12 - t11 * t16 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -11301,7 +11301,7 @@ T segment_compact_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t64 = t63 * t63 * t62;
     G_E = -(T(1) / T(5)) * (t64 * in.w[0] + M_roots[0] * in.w[1] + T(2) * M_roots[1] * in.w[2]) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
@@ -11452,8 +11452,8 @@ bool segment_compact_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -t14 * t14 * a * a - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t13 - t17 * t12 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -11557,7 +11557,7 @@ bool segment_compact_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t64 = t63 * t63 * t62;
     G_E = -(T(1) / T(5)) * (in.w[0] * t64 + T(2) * M_roots[1] * in.w[2] + M_roots[0] * in.w[1]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
@@ -11673,7 +11673,7 @@ T segment_compact_i5_w3_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
   const T t12 = -D - t11 * t11 * a * a;
   const T t13 = -D;
   const T t14 = sqrt(t13);
@@ -11750,7 +11750,7 @@ T segment_compact_i5_w3_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-5, -5, 3, t39, t43, t43, -t9 * t42, T(0), M_roots.data());
     F = M_roots[3] * in.w[3] + M_roots[0] * in.w[0] + M_roots[1] * in.w[1] + M_roots[2] * in.w[2];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-5, -5, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[3] * M_flat[3];
@@ -11868,8 +11868,8 @@ std::array<T, 3> segment_compact_i5_w3_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = b * t12;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -t14 * t14 * a * a - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -11964,7 +11964,7 @@ std::array<T, 3> segment_compact_i5_w3_grad(const SegmentInput<T>& in) {
     const T t60 = t59 * t59 * t58;
     G_E = -(T(1) / T(5)) * (T(3) * in.w[3] * M_roots[2] + T(2) * M_roots[1] * in.w[2] + M_roots[0] * in.w[1] + in.w[0] * t60) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 4, a, b, c, in.t0, in.t1, M_flat.data());
     const T t61 = in.w[3] * M_flat[8] + in.w[0] * M_flat[5] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1];
@@ -12126,8 +12126,8 @@ T segment_compact_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -a * a * t14 * t14 - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -12234,7 +12234,7 @@ T segment_compact_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t67 = t66 * t66 * t65;
     G_E = -(T(1) / T(5)) * t12 * (T(3) * in.w[3] * M_roots[2] + t67 * in.w[0] + T(2) * in.w[2] * M_roots[1] + M_roots[0] * in.w[1]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[3] * in.w[3] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
@@ -12406,8 +12406,8 @@ bool segment_compact_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t12 * t17 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -12513,7 +12513,7 @@ bool segment_compact_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t66 = t65 * t65 * t64;
     G_E = -(T(1) / T(5)) * t12 * (t66 * in.w[0] + M_roots[0] * in.w[1] + T(2) * in.w[2] * M_roots[1] + T(3) * M_roots[2] * in.w[3]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-5, -3, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
@@ -15587,8 +15587,8 @@ T segment_compact_i7_w0_f(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = b * t11;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -t13 * t13 * a * a - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -D - t13 * t13 * a * a;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t16 * t11 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t16 * t11 - (T(11) / T(10))))))));
@@ -15663,7 +15663,7 @@ T segment_compact_i7_w0_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-7, -7, 0, t40, t44, t44, -t43 * t11, T(0), M_roots.data());
     F = in.w[0] * M_roots[0];
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 1> M_flat;
     segment_moments_gauss<T, 20>(-7, -7, 0, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -15766,8 +15766,8 @@ std::array<T, 3> segment_compact_i7_w0_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = b * t12;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -t14 * t14 * a * a - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t13 - t17 * t12 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -15868,7 +15868,7 @@ std::array<T, 3> segment_compact_i7_w0_grad(const SegmentInput<T>& in) {
     const T t66 = t65 * t62;
     G_E = -(T(1) / T(7)) * in.w[0] * t66 * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 1, a, b, c, in.t0, in.t1, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
@@ -16002,7 +16002,7 @@ T segment_compact_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -16110,7 +16110,7 @@ T segment_compact_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t67 = t66 * t63;
     G_E = -(T(1) / T(7)) * t67 * t12 * in.w[0];
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -16252,8 +16252,8 @@ bool segment_compact_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -D - t15 * t15 * a * a;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -D - a * a * t15 * t15;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t14 - t13 * t18 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t13 * t18 - (T(11) / T(10))))))));
@@ -16359,7 +16359,7 @@ bool segment_compact_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t67 = t66 * t63;
     G_E = -(T(1) / T(7)) * t13 * t67 * in.w[0];
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -16470,8 +16470,8 @@ T segment_compact_i7_w1_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -D - a * a * t11 * t11;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -a * a * t11 * t11 - D;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t9 * t14 - t10 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t9 * t14 - (T(11) / T(10))))))));
@@ -16546,7 +16546,7 @@ T segment_compact_i7_w1_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-7, -7, 1, t38, t42, t42, -t9 * t41, T(0), M_roots.data());
     F = M_roots[0] * in.w[0] + M_roots[1] * in.w[1];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 2> M_flat;
     segment_moments_gauss<T, 20>(-7, -7, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
@@ -16655,8 +16655,8 @@ std::array<T, 3> segment_compact_i7_w1_grad(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -D - a * a * t13 * t13;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -t13 * t13 * a * a - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t11 * t16 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -16759,7 +16759,7 @@ std::array<T, 3> segment_compact_i7_w1_grad(const SegmentInput<T>& in) {
     const T t67 = t66 * t63;
     G_E = -(T(1) / T(7)) * t11 * (t67 * in.w[0] + M_roots[0] * in.w[1]);
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 2, a, b, c, in.t0, in.t1, M_flat.data());
     const T t68 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
@@ -16902,8 +16902,8 @@ T segment_compact_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -a * a * t13 * t13 - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -D - t13 * t13 * a * a;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t12 - t11 * t16 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -17014,7 +17014,7 @@ T segment_compact_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t70 = t69 * t66;
     G_E = -(T(1) / T(7)) * (M_roots[0] * in.w[1] + in.w[0] * t70) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
@@ -17165,8 +17165,8 @@ bool segment_compact_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -t13 * t13 * a * a - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -a * a * t13 * t13 - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t12 - t11 * t16 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -17276,7 +17276,7 @@ bool segment_compact_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t69 = t68 * t65;
     G_E = -(T(1) / T(7)) * (in.w[0] * t69 + M_roots[0] * in.w[1]) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
@@ -17396,7 +17396,7 @@ T segment_compact_i7_w2_f(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = b * t11;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
   const T t14 = -t13 * t13 * a * a - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
@@ -17473,7 +17473,7 @@ T segment_compact_i7_w2_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-7, -7, 2, t41, t45, t45, -t44 * t11, T(0), M_roots.data());
     F = in.w[0] * M_roots[0] + in.w[1] * M_roots[1] + in.w[2] * M_roots[2];
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 3> M_flat;
     segment_moments_gauss<T, 20>(-7, -7, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
@@ -17586,8 +17586,8 @@ std::array<T, 3> segment_compact_i7_w2_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t12 * t17 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -17690,7 +17690,7 @@ std::array<T, 3> segment_compact_i7_w2_grad(const SegmentInput<T>& in) {
     const T t68 = t67 * t64;
     G_E = -(T(1) / T(7)) * (T(2) * in.w[2] * M_roots[1] + in.w[1] * M_roots[0] + t68 * in.w[0]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 3, a, b, c, in.t0, in.t1, M_flat.data());
     const T t69 = in.w[1] * M_flat[5] + M_flat[4] * in.w[0] + in.w[2] * M_flat[6];
@@ -17838,7 +17838,7 @@ T segment_compact_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
   const T t14 = -a * a * t13 * t13 - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
@@ -17951,7 +17951,7 @@ T segment_compact_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t71 = t70 * t67;
     G_E = -(T(1) / T(7)) * (T(2) * M_roots[1] * in.w[2] + M_roots[0] * in.w[1] + t71 * in.w[0]) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
@@ -18108,8 +18108,8 @@ bool segment_compact_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -t14 * t14 * a * a - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t12 * t17 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -18222,7 +18222,7 @@ bool segment_compact_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t73 = t72 * t69;
     G_E = -(T(1) / T(7)) * t12 * (in.w[1] * M_roots[0] + in.w[0] * t73 + T(2) * M_roots[1] * in.w[2]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
@@ -18342,8 +18342,8 @@ T segment_compact_i7_w3_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -a * a * t11 * t11 - D;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -D - t11 * t11 * a * a;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t14 * t9 - t10 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t14 * t9 - (T(11) / T(10))))))));
@@ -18418,7 +18418,7 @@ T segment_compact_i7_w3_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-7, -7, 3, t38, t42, t42, -t41 * t9, T(0), M_roots.data());
     F = M_roots[0] * in.w[0] + in.w[2] * M_roots[2] + in.w[3] * M_roots[3] + in.w[1] * M_roots[1];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-7, -7, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[2] * M_flat[2];
@@ -18541,7 +18541,7 @@ std::array<T, 3> segment_compact_i7_w3_grad(const SegmentInput<T>& in) {
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -18646,7 +18646,7 @@ std::array<T, 3> segment_compact_i7_w3_grad(const SegmentInput<T>& in) {
     const T t70 = t69 * t66;
     G_E = -(T(1) / T(7)) * t13 * (T(2) * in.w[2] * M_roots[1] + T(3) * in.w[3] * M_roots[2] + in.w[1] * M_roots[0] + t70 * in.w[0]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 4, a, b, c, in.t0, in.t1, M_flat.data());
     const T t71 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6];
@@ -18815,8 +18815,8 @@ T segment_compact_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -D - a * a * t15 * t15;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -D - t15 * t15 * a * a;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t13 * t18 - t14 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t13 * t18 - (T(11) / T(10))))))));
@@ -18931,7 +18931,7 @@ T segment_compact_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t76 = t75 * t72;
     G_E = -(T(1) / T(7)) * t13 * (T(2) * M_roots[1] * in.w[2] + in.w[1] * M_roots[0] + T(3) * M_roots[2] * in.w[3] + in.w[0] * t76);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
@@ -19110,7 +19110,7 @@ bool segment_compact_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -D - a * a * t15 * t15;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -19226,7 +19226,7 @@ bool segment_compact_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t76 = t75 * t72;
     G_E = -(T(1) / T(7)) * t13 * (T(3) * in.w[3] * M_roots[2] + in.w[0] * t76 + in.w[1] * M_roots[0] + T(2) * M_roots[1] * in.w[2]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-7, -5, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
@@ -22302,8 +22302,8 @@ T segment_compact_i9_w0_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -a * a * t11 * t11 - D;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -t11 * t11 * a * a - D;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t14 * t9 - t10 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t14 * t9 - (T(11) / T(10))))))));
@@ -22378,7 +22378,7 @@ T segment_compact_i9_w0_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-9, -9, 0, t38, t42, t42, -t9 * t41, T(0), M_roots.data());
     F = M_roots[0] * in.w[0];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 1> M_flat;
     segment_moments_gauss<T, 20>(-9, -9, 0, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0];
@@ -22484,8 +22484,8 @@ std::array<T, 3> segment_compact_i9_w0_grad(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -a * a * t13 * t13 - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -t13 * t13 * a * a - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t11 * t16 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -22587,7 +22587,7 @@ std::array<T, 3> segment_compact_i9_w0_grad(const SegmentInput<T>& in) {
     const T t66 = t65 * t62;
     G_E = -(T(1) / T(9)) * t66 * in.w[0] * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 1, a, b, c, in.t0, in.t1, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
@@ -22724,7 +22724,7 @@ T segment_compact_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -a * a * t15 * t15 - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -22832,7 +22832,7 @@ T segment_compact_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t68 = t67 * t64;
     G_E = -(T(1) / T(9)) * t13 * in.w[0] * t68;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -22976,7 +22976,7 @@ bool segment_compact_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -23083,7 +23083,7 @@ bool segment_compact_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t67 = t66 * t63;
     G_E = -(T(1) / T(9)) * in.w[0] * t67 * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -23197,7 +23197,7 @@ T segment_compact_i9_w1_f(const SegmentInput<T>& in) {
   const T t9 = -ab_ap;
   const T t10 = T(1) / a;
   const T t11 = t10 * b;
-  const T t12 = max(T(t11 + (T(1) / T(2))), T((T(3) / T(2)) - t11));
+  const T t12 = max(T(t11 + (T(1) / T(4))), T((T(5) / T(4)) - t11));
   const T t13 = -a * a * t12 * t12 - D;
   const T t14 = -D;
   const T t15 = sqrt(t14);
@@ -23273,7 +23273,7 @@ T segment_compact_i9_w1_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-9, -9, 1, t39, t43, t43, -t42 * t10, T(0), M_roots.data());
     F = M_roots[1] * in.w[1] + M_roots[0] * in.w[0];
   } else if (t13 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 2> M_flat;
     segment_moments_gauss<T, 20>(-9, -9, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
@@ -23389,8 +23389,8 @@ std::array<T, 3> segment_compact_i9_w1_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -a * a * t14 * t14 - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -23493,7 +23493,7 @@ std::array<T, 3> segment_compact_i9_w1_grad(const SegmentInput<T>& in) {
     const T t68 = t67 * t64;
     G_E = -(T(1) / T(9)) * (t68 * in.w[0] + M_roots[0] * in.w[1]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 2, a, b, c, in.t0, in.t1, M_flat.data());
     const T t69 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
@@ -23641,8 +23641,8 @@ T segment_compact_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - t14 * t14 * a * a;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -23753,7 +23753,7 @@ T segment_compact_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t71 = t70 * t67;
     G_E = -(T(1) / T(9)) * (M_roots[0] * in.w[1] + t71 * in.w[0]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
@@ -23909,8 +23909,8 @@ bool segment_compact_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t12 * t17 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -24020,7 +24020,7 @@ bool segment_compact_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t70 = t69 * t66;
     G_E = -(T(1) / T(9)) * t12 * (M_roots[0] * in.w[1] + in.w[0] * t70);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
@@ -24140,8 +24140,8 @@ T segment_compact_i9_w2_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -D - a * a * t11 * t11;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -t11 * t11 * a * a - D;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t14 * t9 - t10 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t14 * t9 - (T(11) / T(10))))))));
@@ -24216,7 +24216,7 @@ T segment_compact_i9_w2_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-9, -9, 2, t38, t42, t42, -t9 * t41, T(0), M_roots.data());
     F = in.w[2] * M_roots[2] + in.w[0] * M_roots[0] + in.w[1] * M_roots[1];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 3> M_flat;
     segment_moments_gauss<T, 20>(-9, -9, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
@@ -24335,7 +24335,7 @@ std::array<T, 3> segment_compact_i9_w2_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -24439,7 +24439,7 @@ std::array<T, 3> segment_compact_i9_w2_grad(const SegmentInput<T>& in) {
     const T t68 = t67 * t64;
     G_E = -(T(1) / T(9)) * t12 * (in.w[0] * t68 + T(2) * in.w[2] * M_roots[1] + M_roots[0] * in.w[1]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 3, a, b, c, in.t0, in.t1, M_flat.data());
     const T t69 = in.w[2] * M_flat[6] + M_flat[5] * in.w[1] + M_flat[4] * in.w[0];
@@ -24593,7 +24593,7 @@ T segment_compact_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -D - a * a * t15 * t15;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -24706,7 +24706,7 @@ T segment_compact_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t73 = t72 * t69;
     G_E = -(T(1) / T(9)) * t13 * (t73 * in.w[0] + T(2) * M_roots[1] * in.w[2] + in.w[1] * M_roots[0]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1];
@@ -24868,7 +24868,7 @@ bool segment_compact_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -24981,7 +24981,7 @@ bool segment_compact_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t73 = t72 * t69;
     G_E = -(T(1) / T(9)) * (M_roots[0] * in.w[1] + T(2) * M_roots[1] * in.w[2] + t73 * in.w[0]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
@@ -25103,8 +25103,8 @@ T segment_compact_i9_w3_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -D - t11 * t11 * a * a;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -D - a * a * t11 * t11;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t9 * t14 - t10 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t9 * t14 - (T(11) / T(10))))))));
@@ -25180,7 +25180,7 @@ T segment_compact_i9_w3_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-9, -9, 3, t39, t43, t43, -t9 * t42, T(0), M_roots.data());
     F = M_roots[1] * in.w[1] + in.w[3] * M_roots[3] + in.w[0] * M_roots[0] + in.w[2] * M_roots[2];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-9, -9, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[3] * in.w[3];
@@ -25306,7 +25306,7 @@ std::array<T, 3> segment_compact_i9_w3_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -a * a * t14 * t14 - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -25410,7 +25410,7 @@ std::array<T, 3> segment_compact_i9_w3_grad(const SegmentInput<T>& in) {
     const T t68 = t67 * t64;
     G_E = -(T(1) / T(9)) * t12 * (T(3) * in.w[3] * M_roots[2] + T(2) * M_roots[1] * in.w[2] + in.w[0] * t68 + in.w[1] * M_roots[0]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 4, a, b, c, in.t0, in.t1, M_flat.data());
     const T t69 = in.w[3] * M_flat[8] + in.w[0] * M_flat[5] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6];
@@ -25583,7 +25583,7 @@ T segment_compact_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -25698,7 +25698,7 @@ T segment_compact_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t75 = t74 * t71;
     G_E = -(T(1) / T(9)) * (M_roots[0] * in.w[1] + T(2) * M_roots[1] * in.w[2] + in.w[0] * t75 + T(3) * M_roots[2] * in.w[3]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + in.w[3] * M_flat[3];
@@ -25881,8 +25881,8 @@ bool segment_compact_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -t15 * t15 * a * a - D;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -D - t15 * t15 * a * a;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t18 * t13 - t14 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -25996,7 +25996,7 @@ bool segment_compact_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     const T t75 = t74 * t71;
     G_E = -(T(1) / T(9)) * (T(3) * M_roots[2] * in.w[3] + in.w[0] * t75 + T(2) * M_roots[1] * in.w[2] + in.w[1] * M_roots[0]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-9, -7, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[3] * M_flat[3];
@@ -29195,8 +29195,8 @@ T segment_compact_i11_w0_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -a * a * t11 * t11 - D;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -t11 * t11 * a * a - D;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t10 - t14 * t9 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t14 * t9 - (T(11) / T(10))))))));
@@ -29271,7 +29271,7 @@ T segment_compact_i11_w0_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-11, -11, 0, t38, t42, t42, -t41 * t9, T(0), M_roots.data());
     F = M_roots[0] * in.w[0];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 1> M_flat;
     segment_moments_gauss<T, 20>(-11, -11, 0, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -29381,8 +29381,8 @@ std::array<T, 3> segment_compact_i11_w0_grad(const SegmentInput<T>& in) {
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -D - t15 * t15 * a * a;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -a * a * t15 * t15 - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t14 - t18 * t13 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -29488,7 +29488,7 @@ std::array<T, 3> segment_compact_i11_w0_grad(const SegmentInput<T>& in) {
     const T t72 = t71 * t67;
     G_E = -(T(1) / T(11)) * in.w[0] * t72 * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 1, a, b, c, in.t0, in.t1, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
@@ -29633,8 +29633,8 @@ T segment_compact_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -t15 * t15 * a * a - D;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -D - t15 * t15 * a * a;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t18 * t13 - t14 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -29745,7 +29745,7 @@ T segment_compact_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t72 = t71 * t67;
     G_E = -(T(1) / T(11)) * in.w[0] * t72 * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -29897,8 +29897,8 @@ bool segment_compact_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -a * a * t15 * t15 - D;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t18 * t13 - t14 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -30009,7 +30009,7 @@ bool segment_compact_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t72 = t71 * t67;
     G_E = -(T(1) / T(11)) * t72 * t13 * in.w[0];
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0];
@@ -30127,8 +30127,8 @@ T segment_compact_i11_w1_f(const SegmentInput<T>& in) {
   const T t9 = -ab_ap;
   const T t10 = T(1) / a;
   const T t11 = b * t10;
-  const T t12 = max(T(t11 + (T(1) / T(2))), T((T(3) / T(2)) - t11));
-  const T t13 = -D - t12 * t12 * a * a;
+  const T t12 = max(T(t11 + (T(1) / T(4))), T((T(5) / T(4)) - t11));
+  const T t13 = -t12 * t12 * a * a - D;
   const T t14 = -D;
   const T t15 = sqrt(t14);
   const T t16 = max(T(min(T(t11 - T(2)), T(max(T(t2), T(-t15 * t10 - t11 - (T(1) / T(10))))))), T(min(T(-t11 - T(1)), T(max(T(t3), T(t11 - t15 * t10 - (T(11) / T(10))))))));
@@ -30204,7 +30204,7 @@ T segment_compact_i11_w1_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-11, -11, 1, t40, t44, t44, -t43 * t10, T(0), M_roots.data());
     F = M_roots[1] * in.w[1] + M_roots[0] * in.w[0];
   } else if (t13 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 2> M_flat;
     segment_moments_gauss<T, 20>(-11, -11, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
@@ -30320,7 +30320,7 @@ std::array<T, 3> segment_compact_i11_w1_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -30429,7 +30429,7 @@ std::array<T, 3> segment_compact_i11_w1_grad(const SegmentInput<T>& in) {
     const T t73 = t72 * t68;
     G_E = -(T(1) / T(11)) * t12 * (in.w[1] * M_roots[0] + in.w[0] * t73);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 2, a, b, c, in.t0, in.t1, M_flat.data());
     const T t74 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
@@ -30584,8 +30584,8 @@ T segment_compact_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -a * a * t15 * t15 - D;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t14 - t18 * t13 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -30700,7 +30700,7 @@ T segment_compact_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t76 = t75 * t71;
     G_E = -(T(1) / T(11)) * (t76 * in.w[0] + in.w[1] * M_roots[0]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
@@ -30863,7 +30863,7 @@ bool segment_compact_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -a * a * t15 * t15 - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -30978,7 +30978,7 @@ bool segment_compact_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t75 = t74 * t70;
     G_E = -(T(1) / T(11)) * t13 * (t75 * in.w[0] + M_roots[0] * in.w[1]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
@@ -31102,7 +31102,7 @@ T segment_compact_i11_w2_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
   const T t12 = -D - a * a * t11 * t11;
   const T t13 = -D;
   const T t14 = sqrt(t13);
@@ -31179,7 +31179,7 @@ T segment_compact_i11_w2_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-11, -11, 2, t39, t43, t43, -t42 * t9, T(0), M_roots.data());
     F = in.w[2] * M_roots[2] + in.w[0] * M_roots[0] + in.w[1] * M_roots[1];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 3> M_flat;
     segment_moments_gauss<T, 20>(-11, -11, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
@@ -31298,8 +31298,8 @@ std::array<T, 3> segment_compact_i11_w2_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = b * t12;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -t14 * t14 * a * a - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -31406,7 +31406,7 @@ std::array<T, 3> segment_compact_i11_w2_grad(const SegmentInput<T>& in) {
     const T t72 = t71 * t67;
     G_E = -(T(1) / T(11)) * (M_roots[0] * in.w[1] + t72 * in.w[0] + T(2) * in.w[2] * M_roots[1]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 3, a, b, c, in.t0, in.t1, M_flat.data());
     const T t73 = M_flat[4] * in.w[0] + in.w[2] * M_flat[6] + M_flat[5] * in.w[1];
@@ -31565,8 +31565,8 @@ T segment_compact_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t13 - t12 * t17 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -31683,7 +31683,7 @@ T segment_compact_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t77 = t76 * t72;
     G_E = -(T(1) / T(11)) * t12 * (in.w[0] * t77 + in.w[1] * M_roots[0] + T(2) * M_roots[1] * in.w[2]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
@@ -31851,7 +31851,7 @@ bool segment_compact_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -31969,7 +31969,7 @@ bool segment_compact_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t78 = t77 * t73;
     G_E = -(T(1) / T(11)) * (M_roots[0] * in.w[1] + T(2) * M_roots[1] * in.w[2] + in.w[0] * t78) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
@@ -32096,8 +32096,8 @@ T segment_compact_i11_w3_f(const SegmentInput<T>& in) {
   const T t9 = -ab_ap;
   const T t10 = T(1) / a;
   const T t11 = t10 * b;
-  const T t12 = max(T(t11 + (T(1) / T(2))), T((T(3) / T(2)) - t11));
-  const T t13 = -D - t12 * t12 * a * a;
+  const T t12 = max(T(t11 + (T(1) / T(4))), T((T(5) / T(4)) - t11));
+  const T t13 = -D - a * a * t12 * t12;
   const T t14 = -D;
   const T t15 = sqrt(t14);
   const T t16 = max(T(min(T(t11 - T(2)), T(max(T(t2), T(-t11 - t10 * t15 - (T(1) / T(10))))))), T(min(T(-t11 - T(1)), T(max(T(t3), T(t11 - t10 * t15 - (T(11) / T(10))))))));
@@ -32173,7 +32173,7 @@ T segment_compact_i11_w3_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-11, -11, 3, t40, t44, t44, -t10 * t43, T(0), M_roots.data());
     F = M_roots[2] * in.w[2] + in.w[0] * M_roots[0] + in.w[3] * M_roots[3] + in.w[1] * M_roots[1];
   } else if (t13 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-11, -11, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[3] * M_flat[3] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
@@ -32301,8 +32301,8 @@ std::array<T, 3> segment_compact_i11_w3_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = b * t12;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -t14 * t14 * a * a - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -32410,7 +32410,7 @@ std::array<T, 3> segment_compact_i11_w3_grad(const SegmentInput<T>& in) {
     const T t73 = t72 * t68;
     G_E = -(T(1) / T(11)) * t12 * (in.w[0] * t73 + T(3) * in.w[3] * M_roots[2] + M_roots[0] * in.w[1] + T(2) * M_roots[1] * in.w[2]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 4, a, b, c, in.t0, in.t1, M_flat.data());
     const T t74 = M_flat[6] * in.w[1] + in.w[3] * M_flat[8] + M_flat[7] * in.w[2] + in.w[0] * M_flat[5];
@@ -32589,8 +32589,8 @@ T segment_compact_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -t15 * t15 * a * a - D;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -a * a * t15 * t15 - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t18 * t13 - t14 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -32709,7 +32709,7 @@ T segment_compact_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t80 = t79 * t75;
     G_E = -(T(1) / T(11)) * t13 * (T(3) * in.w[3] * M_roots[2] + T(2) * in.w[2] * M_roots[1] + in.w[1] * M_roots[0] + in.w[0] * t80);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
@@ -32896,8 +32896,8 @@ bool segment_compact_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -t13 * t13 * a * a - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -D - t13 * t13 * a * a;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t11 * t16 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -33015,7 +33015,7 @@ bool segment_compact_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t77 = t76 * t72;
     G_E = -(T(1) / T(11)) * (T(2) * M_roots[1] * in.w[2] + T(3) * M_roots[2] * in.w[3] + M_roots[0] * in.w[1] + t77 * in.w[0]) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-11, -9, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1];
@@ -36216,7 +36216,7 @@ T segment_compact_i13_w0_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
   const T t12 = -D - a * a * t11 * t11;
   const T t13 = -D;
   const T t14 = sqrt(t13);
@@ -36293,7 +36293,7 @@ T segment_compact_i13_w0_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-13, -13, 0, t39, t43, t43, -t9 * t42, T(0), M_roots.data());
     F = M_roots[0] * in.w[0];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 1> M_flat;
     segment_moments_gauss<T, 20>(-13, -13, 0, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -36405,8 +36405,8 @@ std::array<T, 3> segment_compact_i13_w0_grad(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -D - a * a * t13 * t13;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -t13 * t13 * a * a - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t16 * t11 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t16 * t11 - (T(11) / T(10))))))));
@@ -36512,7 +36512,7 @@ std::array<T, 3> segment_compact_i13_w0_grad(const SegmentInput<T>& in) {
     const T t70 = t69 * t65;
     G_E = -(T(1) / T(13)) * t11 * in.w[0] * t70;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 1, a, b, c, in.t0, in.t1, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
@@ -36657,8 +36657,8 @@ T segment_compact_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -D - a * a * t15 * t15;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -a * a * t15 * t15 - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t14 - t13 * t18 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t13 * t18 - (T(11) / T(10))))))));
@@ -36769,7 +36769,7 @@ T segment_compact_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t72 = t71 * t67;
     G_E = -(T(1) / T(13)) * t13 * in.w[0] * t72;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0];
@@ -36920,8 +36920,8 @@ bool segment_compact_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t13 - t17 * t12 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -37031,7 +37031,7 @@ bool segment_compact_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t70 = t69 * t65;
     G_E = -(T(1) / T(13)) * t12 * in.w[0] * t70;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -37150,8 +37150,8 @@ T segment_compact_i13_w1_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -t11 * t11 * a * a - D;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -a * a * t11 * t11 - D;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t10 - t14 * t9 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t14 * t9 - (T(11) / T(10))))))));
@@ -37227,7 +37227,7 @@ T segment_compact_i13_w1_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-13, -13, 1, t39, t43, t43, -t9 * t42, T(0), M_roots.data());
     F = M_roots[1] * in.w[1] + M_roots[0] * in.w[0];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 2> M_flat;
     segment_moments_gauss<T, 20>(-13, -13, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
@@ -37349,7 +37349,7 @@ std::array<T, 3> segment_compact_i13_w1_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -37457,7 +37457,7 @@ std::array<T, 3> segment_compact_i13_w1_grad(const SegmentInput<T>& in) {
     const T t72 = t71 * t67;
     G_E = -(T(1) / T(13)) * t12 * (t72 * in.w[0] + in.w[1] * M_roots[0]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 2, a, b, c, in.t0, in.t1, M_flat.data());
     const T t73 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
@@ -37612,8 +37612,8 @@ T segment_compact_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -t13 * t13 * a * a - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -a * a * t13 * t13 - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t12 - t16 * t11 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t16 * t11 - (T(11) / T(10))))))));
@@ -37728,7 +37728,7 @@ T segment_compact_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t74 = t73 * t69;
     G_E = -(T(1) / T(13)) * (M_roots[0] * in.w[1] + in.w[0] * t74) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
@@ -37893,8 +37893,8 @@ bool segment_compact_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -D - t15 * t15 * a * a;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t18 * t13 - t14 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -38008,7 +38008,7 @@ bool segment_compact_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t75 = t74 * t70;
     G_E = -(T(1) / T(13)) * (t75 * in.w[0] + in.w[1] * M_roots[0]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
@@ -38135,7 +38135,7 @@ T segment_compact_i13_w2_f(const SegmentInput<T>& in) {
   const T t9 = -ab_ap;
   const T t10 = T(1) / a;
   const T t11 = t10 * b;
-  const T t12 = max(T(t11 + (T(1) / T(2))), T((T(3) / T(2)) - t11));
+  const T t12 = max(T(t11 + (T(1) / T(4))), T((T(5) / T(4)) - t11));
   const T t13 = -a * a * t12 * t12 - D;
   const T t14 = -D;
   const T t15 = sqrt(t14);
@@ -38211,7 +38211,7 @@ T segment_compact_i13_w2_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-13, -13, 2, t39, t43, t43, -t10 * t42, T(0), M_roots.data());
     F = in.w[1] * M_roots[1] + in.w[2] * M_roots[2] + in.w[0] * M_roots[0];
   } else if (t13 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 3> M_flat;
     segment_moments_gauss<T, 20>(-13, -13, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
@@ -38335,8 +38335,8 @@ std::array<T, 3> segment_compact_i13_w2_grad(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -a * a * t13 * t13 - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -D - t13 * t13 * a * a;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t11 * t16 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -38443,7 +38443,7 @@ std::array<T, 3> segment_compact_i13_w2_grad(const SegmentInput<T>& in) {
     const T t71 = t70 * t66;
     G_E = -(T(1) / T(13)) * (T(2) * M_roots[1] * in.w[2] + M_roots[0] * in.w[1] + in.w[0] * t71) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 3, a, b, c, in.t0, in.t1, M_flat.data());
     const T t72 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + M_flat[5] * in.w[1];
@@ -38605,8 +38605,8 @@ T segment_compact_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -D - t15 * t15 * a * a;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -a * a * t15 * t15 - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t14 - t13 * t18 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t13 * t18 - (T(11) / T(10))))))));
@@ -38723,7 +38723,7 @@ T segment_compact_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t78 = t77 * t73;
     G_E = -(T(1) / T(13)) * t13 * (M_roots[0] * in.w[1] + T(2) * M_roots[1] * in.w[2] + t78 * in.w[0]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
@@ -38891,8 +38891,8 @@ bool segment_compact_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -t13 * t13 * a * a - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -D - a * a * t13 * t13;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t12 - t11 * t16 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t11 * t16 - (T(11) / T(10))))))));
@@ -39009,7 +39009,7 @@ bool segment_compact_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t76 = t75 * t71;
     G_E = -(T(1) / T(13)) * (M_roots[0] * in.w[1] + in.w[0] * t76 + T(2) * M_roots[1] * in.w[2]) * t11;
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
@@ -39139,8 +39139,8 @@ T segment_compact_i13_w3_f(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = b * t11;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -t13 * t13 * a * a - D;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -a * a * t13 * t13 - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t16 * t11 - t12 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t16 * t11 - (T(11) / T(10))))))));
@@ -39216,7 +39216,7 @@ T segment_compact_i13_w3_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-13, -13, 3, t41, t45, t45, -t44 * t11, T(0), M_roots.data());
     F = M_roots[3] * in.w[3] + in.w[1] * M_roots[1] + in.w[2] * M_roots[2] + in.w[0] * M_roots[0];
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-13, -13, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
@@ -39347,8 +39347,8 @@ std::array<T, 3> segment_compact_i13_w3_grad(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = t11 * b;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
-  const T t14 = -D - t13 * t13 * a * a;
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
+  const T t14 = -a * a * t13 * t13 - D;
   const T t15 = -D;
   const T t16 = sqrt(t15);
   const T t17 = max(T(min(T(t12 - T(2)), T(max(T(t3), T(-t12 - t16 * t11 - (T(1) / T(10))))))), T(min(T(-t12 - T(1)), T(max(T(t4), T(t12 - t16 * t11 - (T(11) / T(10))))))));
@@ -39456,7 +39456,7 @@ std::array<T, 3> segment_compact_i13_w3_grad(const SegmentInput<T>& in) {
     const T t72 = t71 * t67;
     G_E = -(T(1) / T(13)) * t11 * (T(2) * M_roots[1] * in.w[2] + in.w[1] * M_roots[0] + t72 * in.w[0] + T(3) * M_roots[2] * in.w[3]);
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 4, a, b, c, in.t0, in.t1, M_flat.data());
     const T t73 = M_flat[8] * in.w[3] + in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
@@ -39637,7 +39637,7 @@ T segment_compact_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = t13 * b;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -D - a * a * t15 * t15;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -39757,7 +39757,7 @@ T segment_compact_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t80 = t79 * t75;
     G_E = -(T(1) / T(13)) * t13 * (M_roots[0] * in.w[1] + in.w[0] * t80 + T(3) * in.w[3] * M_roots[2] + T(2) * in.w[2] * M_roots[1]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3];
@@ -39947,8 +39947,8 @@ bool segment_compact_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -t14 * t14 * a * a - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -40067,7 +40067,7 @@ bool segment_compact_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t79 = t78 * t74;
     G_E = -(T(1) / T(13)) * (T(3) * in.w[3] * M_roots[2] + T(2) * in.w[2] * M_roots[1] + t79 * in.w[0] + M_roots[0] * in.w[1]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-13, -11, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0];
@@ -43387,7 +43387,7 @@ T segment_compact_i15_w0_f(const SegmentInput<T>& in) {
   const T t9 = -ab_ap;
   const T t10 = T(1) / a;
   const T t11 = t10 * b;
-  const T t12 = max(T(t11 + (T(1) / T(2))), T((T(3) / T(2)) - t11));
+  const T t12 = max(T(t11 + (T(1) / T(4))), T((T(5) / T(4)) - t11));
   const T t13 = -D - a * a * t12 * t12;
   const T t14 = -D;
   const T t15 = sqrt(t14);
@@ -43464,7 +43464,7 @@ T segment_compact_i15_w0_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-15, -15, 0, t40, t44, t44, -t10 * t43, T(0), M_roots.data());
     F = in.w[0] * M_roots[0];
   } else if (t13 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 1> M_flat;
     segment_moments_gauss<T, 20>(-15, -15, 0, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0];
@@ -43577,8 +43577,8 @@ std::array<T, 3> segment_compact_i15_w0_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -a * a * t14 * t14 - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -43688,7 +43688,7 @@ std::array<T, 3> segment_compact_i15_w0_grad(const SegmentInput<T>& in) {
     const T t75 = t74 * t69;
     G_E = -(T(1) / T(15)) * t75 * t12 * in.w[0];
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 1, a, b, c, in.t0, in.t1, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
@@ -43841,8 +43841,8 @@ T segment_compact_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -t15 * t15 * a * a - D;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -D - t15 * t15 * a * a;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t14 - t18 * t13 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -43956,7 +43956,7 @@ T segment_compact_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t75 = t74 * t69;
     G_E = -(T(1) / T(15)) * in.w[0] * t75 * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0];
@@ -44115,8 +44115,8 @@ bool segment_compact_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - t14 * t14 * a * a;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t13 - t17 * t12 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -44230,7 +44230,7 @@ bool segment_compact_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t74 = t73 * t68;
     G_E = -(T(1) / T(15)) * t74 * t12 * in.w[0];
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0];
@@ -44353,8 +44353,8 @@ T segment_compact_i15_w1_f(const SegmentInput<T>& in) {
   const T t8 = -ab_ap;
   const T t9 = T(1) / a;
   const T t10 = t9 * b;
-  const T t11 = max(T(t10 + (T(1) / T(2))), T((T(3) / T(2)) - t10));
-  const T t12 = -a * a * t11 * t11 - D;
+  const T t11 = max(T(t10 + (T(1) / T(4))), T((T(5) / T(4)) - t10));
+  const T t12 = -D - t11 * t11 * a * a;
   const T t13 = -D;
   const T t14 = sqrt(t13);
   const T t15 = max(T(min(T(t10 - T(2)), T(max(T(t1), T(-t14 * t9 - t10 - (T(1) / T(10))))))), T(min(T(-t10 - T(1)), T(max(T(t2), T(t10 - t14 * t9 - (T(11) / T(10))))))));
@@ -44430,7 +44430,7 @@ T segment_compact_i15_w1_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-15, -15, 1, t39, t43, t43, -t9 * t42, T(0), M_roots.data());
     F = M_roots[1] * in.w[1] + M_roots[0] * in.w[0];
   } else if (t12 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 2> M_flat;
     segment_moments_gauss<T, 20>(-15, -15, 1, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
@@ -44550,7 +44550,7 @@ std::array<T, 3> segment_compact_i15_w1_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = b * t12;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -t14 * t14 * a * a - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -44662,7 +44662,7 @@ std::array<T, 3> segment_compact_i15_w1_grad(const SegmentInput<T>& in) {
     const T t76 = t75 * t70;
     G_E = -(T(1) / T(15)) * t12 * (t76 * in.w[0] + in.w[1] * M_roots[0]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 2, a, b, c, in.t0, in.t1, M_flat.data());
     const T t77 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
@@ -44824,8 +44824,8 @@ T segment_compact_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -t14 * t14 * a * a - D;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -44943,7 +44943,7 @@ T segment_compact_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t78 = t77 * t72;
     G_E = -(T(1) / T(15)) * (in.w[0] * t78 + M_roots[0] * in.w[1]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
@@ -45113,7 +45113,7 @@ bool segment_compact_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
   const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
@@ -45232,7 +45232,7 @@ bool segment_compact_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t78 = t77 * t72;
     G_E = -(T(1) / T(15)) * (t78 * in.w[0] + in.w[1] * M_roots[0]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
@@ -45363,7 +45363,7 @@ T segment_compact_i15_w2_f(const SegmentInput<T>& in) {
   const T t9 = -ab_ap;
   const T t10 = T(1) / a;
   const T t11 = b * t10;
-  const T t12 = max(T(t11 + (T(1) / T(2))), T((T(3) / T(2)) - t11));
+  const T t12 = max(T(t11 + (T(1) / T(4))), T((T(5) / T(4)) - t11));
   const T t13 = -t12 * t12 * a * a - D;
   const T t14 = -D;
   const T t15 = sqrt(t14);
@@ -45439,7 +45439,7 @@ T segment_compact_i15_w2_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-15, -15, 2, t39, t43, t43, -t42 * t10, T(0), M_roots.data());
     F = in.w[1] * M_roots[1] + in.w[2] * M_roots[2] + in.w[0] * M_roots[0];
   } else if (t13 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 3> M_flat;
     segment_moments_gauss<T, 20>(-15, -15, 2, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
@@ -45562,8 +45562,8 @@ std::array<T, 3> segment_compact_i15_w2_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -t14 * t14 * a * a - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t17 * t12 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t17 * t12 - (T(11) / T(10))))))));
@@ -45674,7 +45674,7 @@ std::array<T, 3> segment_compact_i15_w2_grad(const SegmentInput<T>& in) {
     const T t76 = t75 * t70;
     G_E = -(T(1) / T(15)) * (T(2) * M_roots[1] * in.w[2] + M_roots[0] * in.w[1] + in.w[0] * t76) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 3, a, b, c, in.t0, in.t1, M_flat.data());
     const T t77 = M_flat[5] * in.w[1] + in.w[0] * M_flat[4] + M_flat[6] * in.w[2];
@@ -45842,7 +45842,7 @@ T segment_compact_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -45963,7 +45963,7 @@ T segment_compact_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t81 = t80 * t75;
     G_E = -(T(1) / T(15)) * (in.w[0] * t81 + T(2) * M_roots[1] * in.w[2] + M_roots[0] * in.w[1]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2];
@@ -46139,8 +46139,8 @@ bool segment_compact_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
-  const T t16 = -D - t15 * t15 * a * a;
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
+  const T t16 = -a * a * t15 * t15 - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
   const T t19 = max(T(min(T(t14 - T(2)), T(max(T(t5), T(-t14 - t18 * t13 - (T(1) / T(10))))))), T(min(T(-t14 - T(1)), T(max(T(t6), T(t14 - t18 * t13 - (T(11) / T(10))))))));
@@ -46261,7 +46261,7 @@ bool segment_compact_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t82 = t81 * t76;
     G_E = -(T(1) / T(15)) * t13 * (T(2) * in.w[2] * M_roots[1] + t82 * in.w[0] + M_roots[0] * in.w[1]);
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
@@ -46395,7 +46395,7 @@ T segment_compact_i15_w3_f(const SegmentInput<T>& in) {
   const T t10 = -ab_ap;
   const T t11 = T(1) / a;
   const T t12 = b * t11;
-  const T t13 = max(T(t12 + (T(1) / T(2))), T((T(3) / T(2)) - t12));
+  const T t13 = max(T(t12 + (T(1) / T(4))), T((T(5) / T(4)) - t12));
   const T t14 = -D - t13 * t13 * a * a;
   const T t15 = -D;
   const T t16 = sqrt(t15);
@@ -46472,7 +46472,7 @@ T segment_compact_i15_w3_f(const SegmentInput<T>& in) {
     segment_moments_between_roots<T, 30, NodeMap::sine>(-15, -15, 3, t41, t45, t45, -t44 * t11, T(0), M_roots.data());
     F = M_roots[3] * in.w[3] + M_roots[0] * in.w[0] + in.w[2] * M_roots[2] + in.w[1] * M_roots[1];
   } else if (t14 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(-15, -15, 3, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + M_flat[2] * in.w[2];
@@ -46604,8 +46604,8 @@ std::array<T, 3> segment_compact_i15_w3_grad(const SegmentInput<T>& in) {
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -t14 * t14 * a * a - D;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - a * a * t14 * t14;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t12 * t17 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -46716,7 +46716,7 @@ std::array<T, 3> segment_compact_i15_w3_grad(const SegmentInput<T>& in) {
     const T t76 = t75 * t70;
     G_E = -(T(1) / T(15)) * t12 * (M_roots[0] * in.w[1] + T(3) * M_roots[2] * in.w[3] + T(2) * M_roots[1] * in.w[2] + t76 * in.w[0]);
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 4, a, b, c, in.t0, in.t1, M_flat.data());
     const T t77 = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[8] * in.w[3];
@@ -46905,7 +46905,7 @@ T segment_compact_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   const T t12 = -ab_ap;
   const T t13 = T(1) / a;
   const T t14 = b * t13;
-  const T t15 = max(T(t14 + (T(1) / T(2))), T((T(3) / T(2)) - t14));
+  const T t15 = max(T(t14 + (T(1) / T(4))), T((T(5) / T(4)) - t14));
   const T t16 = -t15 * t15 * a * a - D;
   const T t17 = -D;
   const T t18 = sqrt(t17);
@@ -47028,7 +47028,7 @@ T segment_compact_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
     const T t83 = t82 * t77;
     G_E = -(T(1) / T(15)) * (M_roots[0] * in.w[1] + T(3) * in.w[3] * M_roots[2] + in.w[0] * t83 + T(2) * in.w[2] * M_roots[1]) * t13;
   } else if (t16 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[3] * M_flat[3] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
@@ -47226,8 +47226,8 @@ bool segment_compact_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   const T t11 = -ab_ap;
   const T t12 = T(1) / a;
   const T t13 = t12 * b;
-  const T t14 = max(T(t13 + (T(1) / T(2))), T((T(3) / T(2)) - t13));
-  const T t15 = -D - a * a * t14 * t14;
+  const T t14 = max(T(t13 + (T(1) / T(4))), T((T(5) / T(4)) - t13));
+  const T t15 = -D - t14 * t14 * a * a;
   const T t16 = -D;
   const T t17 = sqrt(t16);
   const T t18 = max(T(min(T(t13 - T(2)), T(max(T(t4), T(-t12 * t17 - t13 - (T(1) / T(10))))))), T(min(T(-t13 - T(1)), T(max(T(t5), T(t13 - t12 * t17 - (T(11) / T(10))))))));
@@ -47350,7 +47350,7 @@ bool segment_compact_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
     const T t83 = t82 * t77;
     G_E = -(T(1) / T(15)) * (t83 * in.w[0] + M_roots[0] * in.w[1] + T(3) * M_roots[2] * in.w[3] + T(2) * M_roots[1] * in.w[2]) * t12;
   } else if (t15 >= T(0)) {
-    // support sphere at least |AB|/2 beyond both ends: every moment by segment_moments_gauss<T, 20>
+    // support sphere at least |AB|/4 beyond both ends: every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(-15, -13, 4, a, b, c, in.t0, in.t1, M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2];

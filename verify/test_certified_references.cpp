@@ -112,7 +112,6 @@ struct OpenCell {
 constexpr const char* segment_baseline = "segment sweep baseline";
 constexpr const char* polygon_readme = "polygon sweep, README";
 const std::vector<OpenCell> open_cells = {
-    {"segment", KernelFamily::compact, "near_line_beside", 3.1e-14, 1.6e-12, segment_baseline},
     {"polygon", KernelFamily::inverse, "near_plane_inside", 2.8e-9, 2.1e-9, polygon_readme},
     {"polygon", KernelFamily::inverse, "near_edges", 8.1e-10, 6.5e-10, polygon_readme},
 };

@@ -314,7 +314,12 @@ bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T
 
 /// Writes M_{k,m} for k = 0…k_max and m = m_lo, m_lo + 2, …, m_hi to
 /// out[((m − m_lo)/2)(k_max + 1) + k] by Gauss–Legendre on [t0, t1]:
-///  * m_lo ≤ 0 (compact kernels, a polynomial integrand): the N-point rule;
+///  * m_lo ≤ 0 (compact kernels): the N-point rule, exact for a polynomial
+///    integrand (even degrees) and exact to double's rounding for odd
+///    degrees where the generator calls it (q's roots at least |AB|/4
+///    beyond both ends: 20 nodes, Bernstein ρ ≥ 2.6; or the sine map, 30);
+///    types wider than 64 bits take 2N nodes there (N ≥ 20), which their
+///    rounding needs (measured: binary128 ∇f 2e-19 with 20 nodes);
 ///  * m_lo > 0 (inverse and Cauchy kernels in the far field, poles off the
 ///    interval): at most N nodes, fewer where the poles are far enough for
 ///    the bound above (detail::add_far_field_moments).
@@ -330,7 +335,8 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
   if (map == NodeMap::linear && m_lo > 0) {
     detail::add_far_field_moments<T, N>(m_lo, m_hi, k_max, q_at, a, b, c, t0, t1, out);
   } else {
-    add_segment_moments_gauss<T, N, decltype(q_at), map>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+    constexpr unsigned nodes = N >= 20 && std::numeric_limits<T>::digits > 64 ? 2 * N : N;
+    add_segment_moments_gauss<T, nodes, decltype(q_at), map>(m_lo, m_hi, k_max, q_at, t0, t1, out);
   }
 }
 
