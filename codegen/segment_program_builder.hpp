@@ -338,6 +338,20 @@ class SegmentProgramBuilder {
     return [nodes](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_rule(nodes, m_lo, m_hi, k_max); };
   }
 
+  // How G_E (along_line requests) is formed from the helper's moments:
+  // `by_parts`, along_line_moment's parts formula from the level-n moments,
+  // for helpers that run near the line or near an end; `difference`,
+  // G_ab − t* G_ap (far from the segment, where the parts formula's boundary
+  // terms would cancel instead); `by_parts_near_line`, the difference with
+  // a refinement by parts where P is near the line over the segment
+  // (push_helper_alternatives says why).
+  enum class GE { difference, by_parts, by_parts_near_line };
+  // The interval's ends for the parts formula, where they are not the
+  // clip's (push_support_root_alternatives).
+  struct PartsEnds {
+    QuadraticEnd lo, hi;
+  };
+
   // N of the smallest Gauss–Legendre rule Boost tabulates that is exact for
   // polynomials of `degree` (2N − 1 ≥ degree).
   static int exact_rule_nodes(int degree) {
@@ -350,125 +364,161 @@ class SegmentProgramBuilder {
   }
 
   // Compact kernels where the support sphere grazes the segment: the
-  // clipped interval [t0, t1] is short, and its ends, passed as parameters
-  // t ∈ [0, 1] (doubles, each off by up to ε/2 absolute), are off by
-  // ~ε/(t1 − t0) relative to its length, while q there is a small
-  // difference of numbers ~1: f ~ (t1 − t0) q^(i/2) loses (i+2)/2 times
-  // that (measured: f 1.4e-8, compact i15, R − |BP| = 1e-6 R). These forms
-  // take the interval from the roots r1 < r2 of q instead, found from R² − d²
-  // rounded once from the exact inputs (skelconv/support_gap.hpp), and
-  // write q = −a (t − r1)(r2 − t) as a product of distances to its roots
-  // (segment_moments_between_roots, gauss_moments.hpp; positive terms only):
-  //  * both ends clipped, the chord inside the segment: r1,2 = t* ∓ h_c,
-  //    h_c = √(R²|AB|² − |AB × AP|²) / |AB|²;
-  //  * one end E inside the ball (the other clipped) and the vertex t*
-  //    beyond E (P projects beyond E, AB·BP ≥ 0 or AB·AP ≤ 0): with σ the
-  //    distance in t from E, q = q_E + 2gσ + aσ², q_E = (R² − |P − E|²)/R²,
-  //    g ≤ 0 the slope into the segment; its roots are s = q_E/(√(g² − a q_E) − g)
-  //    (the clip) and −(√(g² − a q_E) − g)/(−a) (beyond E, at least s
-  //    away since t* lies beyond E: the Gauss rule sees no nearby branch
-  //    point);
-  //  * one end E inside the ball, the other clipped, and the vertex inside
-  //    the segment: the chord minus its part beyond E (see there).
-  // No difference of nearly equal numbers remains.
+  // clipped interval's ends, passed as parameters t ∈ [0, 1] (doubles,
+  // each off by up to ε/2 absolute), are off by ~ε/(t1 − t0) relative to
+  // its length, and q on it is a small difference of numbers ~1: f ~
+  // (t1 − t0) q^(i/2) loses (i+2)/2 times that (measured: f 1.4e-8, compact
+  // i15, R − |BP| = 1e-6 R). These forms take the interval from the roots
+  // r1 < r2 of q instead, found from R² − d² rounded once from the exact
+  // inputs (skelconv/support_gap.hpp), and write q = −a (t − r1)(r2 − t) as
+  // a product of distances to its roots (segment_moments_between_roots,
+  // gauss_moments.hpp; positive terms only), so that no difference of
+  // nearly equal numbers remains:
+  //  * both ends clipped: the chord (push_chord_alternative);
+  //  * one end E inside the ball, the other clipped, the vertex t* inside
+  //    the segment: the chord minus its part beyond E
+  //    (push_straddle_alternative);
+  //  * the same with the vertex beyond E: the part inside the segment,
+  //    from E (push_end_alternative).
   // The chord form wherever both ends are clipped (it is exact and cheap);
   // the others where q at the end inside the ball is at most 1/4: above,
   // what the forms below lose, ~(i+2)/2 · ε/q, stays near rounding, and
   // they are cheaper.
   void push_support_root_alternatives(Choice& choice) {
+    const SupportRootRule rule = support_root_rule();
+    push_chord_alternative(choice, rule);
+    for (const bool at_b : {true, false}) push_straddle_alternative(choice, rule, at_b);
+    for (const bool at_b : {true, false}) push_end_alternative(choice, rule, at_b);
+  }
+
+  // The helper of the support-root forms: N nodes, exact for even degrees
+  // (a polynomial), after the sine map for odd ones (q^(i/2) has branch
+  // points at the roots).
+  struct SupportRootRule {
+    std::string function;
+    HelperCost cost;
+  };
+  SupportRootRule support_root_rule() const {
     const bool odd = spec_.degree % 2 != 0;
     const int nodes = odd ? 30 : exact_rule_nodes(spec_.degree + highest_moment());
-    const std::string function = "segment_moments_between_roots<T, " + std::to_string(nodes) +
-                                 (odd ? ", NodeMap::sine>" : ">");
-    const HelperCost cost = [nodes, odd](int m_lo, int m_hi, int k_max) {
-      return helper_costs::between_roots(nodes, odd, m_lo, m_hi, k_max);
-    };
+    return {"segment_moments_between_roots<T, " + std::to_string(nodes) + (odd ? ", NodeMap::sine>" : ">"),
+            [nodes, odd](int m_lo, int m_hi, int k_max) {
+              return helper_costs::between_roots(nodes, odd, m_lo, m_hi, k_max);
+            }};
+  }
+  std::string support_root_why(const std::string& where, const SupportRootRule& rule) const {
+    return where + ", interval from the roots of q (R² − d² rounded once, support_gap.hpp): " + rule.function;
+  }
+  // 2^−52: a clip below it counts as none.
+  static ex clip_tolerance() { return numeric(1, 4503599627370496); }
+  // q at the end inside the ball at most this: see push_support_root_alternatives.
+  static ex shallow_end() { return numeric(1, 4); }
+
+  // A call of a support_gap.hpp helper on `points` and R: one element.
+  ArrayCall support_gap_call(const std::string& array, const std::string& helper, std::vector<ex> points,
+                             const OpCount& ops) const {
+    points.push_back(radius_);
+    return ArrayCall{array, helper, {}, points, {symbol(array + "_0")}, ops, true};
+  }
+  ArrayCall line_gap_call() const {
+    return support_gap_call("line_gap", "exact_line_support_gap<T>",
+                            {A_[0], A_[1], A_[2], B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]},
+                            helper_costs::line_support_gap());
+  }
+  ArrayCall end_gap_call(bool at_b) const {
+    const std::array<symbol, 3>& end = at_b ? B_ : A_;
+    return support_gap_call(at_b ? "gap_B" : "gap_A", "exact_point_support_gap<T>",
+                            {end[0], end[1], end[2], P_[0], P_[1], P_[2]}, helper_costs::point_support_gap());
+  }
+  // h_c = √(R²|AB|² − |AB × AP|²) / |AB|², the chord's half-length in t.
+  ex half_chord(const ArrayCall& line_gap) const {
+    return pow(nonnegative_part(line_gap.elements[0]), numeric(1, 2)) / ab_ab_;
+  }
+  // q(E) = (R² − |P − E|²)/R².
+  ex end_q(const ArrayCall& end_gap) const { return nonnegative_part(end_gap.elements[0]) * pow(inv_R_, 2); }
+  // The parts formula's ends: q = 0 at the clipped root, q(E) at E.
+  PartsEnds root_and_end(bool at_b, const ex& q_end) const {
+    const QuadraticEnd root{at_b ? symbols_.lo.t : symbols_.hi.t, 0, 0, 0};
+    const QuadraticEnd inside{at_b ? ex(1) : ex(0), q_end, pow(q_end, numeric(1, 2)), 0};
+    return at_b ? PartsEnds{root, inside} : PartsEnds{inside, root};
+  }
+  // Conditions: E inside the ball (unclipped), the other end clipped, q(E) ≤ 1/4.
+  std::vector<ex> one_end_clipped(bool at_b) const {
     const ex t0 = symbols_.lo.t, t1 = symbols_.hi.t;
-    const ex tiny = numeric(1, 4503599627370496);  // 2^−52: a clip below it counts as none
-    const ex shallow = numeric(1, 4);  // q at the end inside the ball: see above
-    const std::string why_tail = ", interval from the roots of q (R² − d² rounded once, support_gap.hpp): " + function;
-    auto gap_call = [&](const std::string& array, const std::string& helper, const std::vector<ex>& points,
-                        const OpCount& ops) {
-      std::vector<ex> args = points;
-      args.push_back(radius_);
-      ArrayCall call{array, helper, {}, args, {symbol(array + "_0")}, ops, true};
-      return call;
-    };
-    {
-      ArrayCall gap = gap_call("line_gap", "exact_line_support_gap<T>",
-                               {A_[0], A_[1], A_[2], B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]},
-                               helper_costs::line_support_gap());
-      const ex half_chord = pow(nonnegative_part(gap.elements[0]), numeric(1, 2)) / ab_ab_;
-      Alternative chord{{t0 - tiny, 1 - tiny - t1},
-                        "support chord inside the segment (both ends clipped)" + why_tail,
-                        {}, {}, {}};
-      chord.calls.push_back(std::move(gap));
-      const QuadraticEnd root_lo{t0, 0, 0, 0}, root_hi{t1, 0, 0, 0};  // q = 0 at both ends
-      fill_from_helper(chord, "M_roots", function, {-a_, b_ / a_, half_chord, 0, 0}, cost, true, GE::by_parts,
-                       PartsEnds{root_lo, root_hi});
-      choice.alternatives.push_back(std::move(chord));
-    }
-    for (const bool at_b : {true, false}) {
-      // The chord straddling E (the vertex t* inside the segment, E inside
-      // the ball, the other end clipped): the interval [r1, 1] (E = B) is
-      // the chord [r1, r2] minus its part [1, r2] beyond E, of length
-      // r2 − 1 = q_E/(−a s) < s = 1 − r1 (t* < 1), so the difference keeps
-      // at least half its digits and each part's other root lies at least
-      // its length away; s = (1 − t*) + h_c, a sum (1 − t* = −AB·BP/|AB|²).
-      // E = A likewise with [r1, 0] beyond A, s = t* + h_c.
-      ArrayCall line_gap = gap_call("line_gap", "exact_line_support_gap<T>",
-                                    {A_[0], A_[1], A_[2], B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]},
-                                    helper_costs::line_support_gap());
-      ArrayCall end_gap = gap_call(at_b ? "gap_B" : "gap_A", "exact_point_support_gap<T>",
-                                   at_b ? std::vector<ex>{B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]}
-                                        : std::vector<ex>{A_[0], A_[1], A_[2], P_[0], P_[1], P_[2]},
-                                   helper_costs::point_support_gap());
-      const ex half_chord = pow(nonnegative_part(line_gap.elements[0]), numeric(1, 2)) / ab_ab_;
-      const ex q_end = nonnegative_part(end_gap.elements[0]) * pow(inv_R_, 2);
-      const ex s = (at_b ? -ab_bp_ / ab_ab_ : ab_ap_ / ab_ab_) + half_chord;  // from E to the clipped root
-      const ex beyond = q_end / (-a_ * s);                                    // from E to the other root
-      Alternative straddle{at_b ? std::vector<ex>{t0 - tiny, t1 - 1, -ab_bp_, shallow - symbols_.hi.q}
-                                : std::vector<ex>{1 - tiny - t1, -t0, ab_ap_, shallow - symbols_.lo.q},
-                           std::string(at_b ? "support chord straddling B (A clipped, P beside the segment, q(1) ≤ 1/4)"
-                                            : "support chord straddling A (B clipped, P beside the segment, q(0) ≤ 1/4)") +
-                               ": the chord minus its part beyond the end" + why_tail,
-                           {}, {}, {}};
-      straddle.calls.push_back(std::move(line_gap));
-      straddle.calls.push_back(std::move(end_gap));
-      const QuadraticEnd root{at_b ? t0 : t1, 0, 0, 0};
-      const QuadraticEnd inside{at_b ? ex(1) : ex(0), q_end, pow(q_end, numeric(1, 2)), 0};
-      const std::vector<ex> part_beyond =
-          at_b ? std::vector<ex>{-a_, 1 + beyond / 2, beyond / 2, s, 0} : std::vector<ex>{-a_, -beyond / 2, beyond / 2, 0, s};
-      fill_from_helper(straddle, "M_roots", function, {-a_, b_ / a_, half_chord, 0, 0}, cost, true, GE::by_parts,
-                       at_b ? PartsEnds{root, inside} : PartsEnds{inside, root}, part_beyond);
-      choice.alternatives.push_back(std::move(straddle));
-    }
-    for (const bool at_b : {true, false}) {
-      // E = B: σ = 1 − t, g = −(a − b) = α AB·BP; E = A: σ = t, g = −b.
-      ArrayCall gap = gap_call(at_b ? "gap_B" : "gap_A", "exact_point_support_gap<T>",
-                               at_b ? std::vector<ex>{B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]}
-                                    : std::vector<ex>{A_[0], A_[1], A_[2], P_[0], P_[1], P_[2]},
-                               helper_costs::point_support_gap());
-      const ex q_end = nonnegative_part(gap.elements[0]) * pow(inv_R_, 2);
-      const ex g = at_b ? alpha_ * ab_bp_ : -b_;
-      const ex root_term = pow(pow(g, 2) - a_ * q_end, numeric(1, 2)) - g;  // √(g² − a q_E) − g ≥ 0
-      const ex s = q_end / root_term;
-      const ex far_gap = root_term / (-a_);
-      const ex mid = at_b ? 1 - s / 2 : s / 2;
-      Alternative end{at_b ? std::vector<ex>{t0 - tiny, t1 - 1, ab_bp_, shallow - symbols_.hi.q}
-                           : std::vector<ex>{1 - tiny - t1, -t0, -ab_ap_, shallow - symbols_.lo.q},
-                      std::string(at_b ? "support grazing B (A clipped, P beyond B, q(1) ≤ 1/4)"
-                                       : "support grazing A (B clipped, P beyond A, q(0) ≤ 1/4)") +
-                          why_tail,
-                      {}, {}, {}};
-      end.calls.push_back(std::move(gap));
-      const QuadraticEnd root{at_b ? t0 : t1, 0, 0, 0};
-      const QuadraticEnd inside{at_b ? ex(1) : ex(0), q_end, pow(q_end, numeric(1, 2)), 0};
-      fill_from_helper(end, "M_roots", function,
-                       {-a_, mid, s / 2, at_b ? ex(0) : far_gap, at_b ? far_gap : ex(0)}, cost, true, GE::by_parts,
-                       at_b ? PartsEnds{root, inside} : PartsEnds{inside, root});
-      choice.alternatives.push_back(std::move(end));
-    }
+    return at_b ? std::vector<ex>{t0 - clip_tolerance(), t1 - 1, shallow_end() - symbols_.hi.q}
+                : std::vector<ex>{1 - clip_tolerance() - t1, -t0, shallow_end() - symbols_.lo.q};
+  }
+
+  // Both ends clipped: r1,2 = t* ∓ h_c, q = 0 at both ends of the chord.
+  void push_chord_alternative(Choice& choice, const SupportRootRule& rule) {
+    ArrayCall gap = line_gap_call();
+    const ex chord_half = half_chord(gap);
+    Alternative chord{{symbols_.lo.t - clip_tolerance(), 1 - clip_tolerance() - symbols_.hi.t},
+                      support_root_why("support chord inside the segment (both ends clipped)", rule), {}, {}, {}};
+    chord.calls.push_back(std::move(gap));
+    const QuadraticEnd root_lo{symbols_.lo.t, 0, 0, 0}, root_hi{symbols_.hi.t, 0, 0, 0};
+    fill_from_helper(chord, "M_roots", rule.function, {-a_, b_ / a_, chord_half, 0, 0}, rule.cost, true, GE::by_parts,
+                     PartsEnds{root_lo, root_hi});
+    choice.alternatives.push_back(std::move(chord));
+  }
+
+  // The chord straddling E (the vertex t* inside the segment, E inside the
+  // ball, the other end clipped): the interval [r1, 1] (E = B) is the chord
+  // [r1, r2] minus its part [1, r2] beyond E, of length r2 − 1 = q_E/(−a s)
+  // < s = 1 − r1 (t* < 1), so the difference keeps at least half its digits
+  // and each part's other root lies at least its length away; s = (1 − t*) +
+  // h_c, a sum (1 − t* = −AB·BP/|AB|²). E = A likewise with [r1, 0] beyond
+  // A, s = t* + h_c.
+  void push_straddle_alternative(Choice& choice, const SupportRootRule& rule, bool at_b) {
+    ArrayCall line_gap = line_gap_call();
+    ArrayCall end_gap = end_gap_call(at_b);
+    const ex chord_half = half_chord(line_gap);
+    const ex q_end = end_q(end_gap);
+    const ex s = (at_b ? -ab_bp_ / ab_ab_ : ab_ap_ / ab_ab_) + chord_half;  // from E to the clipped root
+    const ex beyond = q_end / (-a_ * s);                                    // from E to the other root
+    std::vector<ex> conditions = one_end_clipped(at_b);
+    conditions.insert(conditions.begin() + 2, at_b ? -ab_bp_ : ab_ap_);  // t* not beyond E
+    Alternative straddle{conditions,
+                         support_root_why(at_b ? "support chord straddling B (A clipped, P beside the segment, q(1) ≤ 1/4)"
+                                                 ": the chord minus its part beyond the end"
+                                               : "support chord straddling A (B clipped, P beside the segment, q(0) ≤ 1/4)"
+                                                 ": the chord minus its part beyond the end",
+                                          rule),
+                         {}, {}, {}};
+    straddle.calls.push_back(std::move(line_gap));
+    straddle.calls.push_back(std::move(end_gap));
+    const std::vector<ex> part_beyond =
+        at_b ? std::vector<ex>{-a_, 1 + beyond / 2, beyond / 2, s, 0} : std::vector<ex>{-a_, -beyond / 2, beyond / 2, 0, s};
+    fill_from_helper(straddle, "M_roots", rule.function, {-a_, b_ / a_, chord_half, 0, 0}, rule.cost, true,
+                     GE::by_parts, root_and_end(at_b, q_end), part_beyond);
+    choice.alternatives.push_back(std::move(straddle));
+  }
+
+  // The vertex t* beyond E (P projects beyond E, AB·BP ≥ 0 or AB·AP ≤ 0):
+  // with σ the distance in t from E, q = q_E + 2gσ + aσ², g ≤ 0 the slope
+  // into the segment (E = B: σ = 1 − t, g = −(a − b) = α AB·BP; E = A: σ =
+  // t, g = −b); its roots are s = q_E/(√(g² − a q_E) − g) (the clip) and
+  // −(√(g² − a q_E) − g)/(−a) (beyond E, at least s away since t* lies
+  // beyond E: the rule sees no nearby branch point).
+  void push_end_alternative(Choice& choice, const SupportRootRule& rule, bool at_b) {
+    ArrayCall gap = end_gap_call(at_b);
+    const ex q_end = end_q(gap);
+    const ex g = at_b ? alpha_ * ab_bp_ : -b_;
+    const ex root_term = pow(pow(g, 2) - a_ * q_end, numeric(1, 2)) - g;  // √(g² − a q_E) − g ≥ 0
+    const ex s = q_end / root_term;
+    const ex far_gap = root_term / (-a_);
+    const ex mid = at_b ? 1 - s / 2 : s / 2;
+    std::vector<ex> conditions = one_end_clipped(at_b);
+    conditions.insert(conditions.begin() + 2, at_b ? ab_bp_ : -ab_ap_);  // t* beyond E
+    Alternative end{conditions,
+                    support_root_why(at_b ? "support grazing B (A clipped, P beyond B, q(1) ≤ 1/4)"
+                                          : "support grazing A (B clipped, P beyond A, q(0) ≤ 1/4)",
+                                     rule),
+                    {}, {}, {}};
+    end.calls.push_back(std::move(gap));
+    fill_from_helper(end, "M_roots", rule.function, {-a_, mid, s / 2, at_b ? ex(0) : far_gap, at_b ? far_gap : ex(0)},
+                     rule.cost, true, GE::by_parts, root_and_end(at_b, q_end));
+    choice.alternatives.push_back(std::move(end));
   }
 
   // A helper alternative taken where `conditions` hold. When the outputs
@@ -493,21 +543,8 @@ class SegmentProgramBuilder {
   // Takes every moment the outputs need from one helper call that fills an
   // array (include/skelconv/stable_recurrence.hpp, gauss_moments.hpp):
   // function(m_lo, m_hi, k_max, args…, array). `cost` gives the call's
-  // operations; `fixed_rule` says whether their number is the same at every P.
-  //
-  // How G_E (along_line requests) is formed from the helper's moments:
-  // `by_parts`, along_line_moment's parts formula from the level-n moments,
-  // for helpers that run near the line or near an end; `difference`,
-  // G_ab − t* G_ap (far from the segment, where the parts formula's boundary
-  // terms would cancel instead); `by_parts_near_line`, the difference with
-  // a refinement by parts where P is near the line over the segment
-  // (push_helper_alternatives says why).
-  enum class GE { difference, by_parts, by_parts_near_line };
-  // The interval's ends for the parts formula, where they are not the
-  // clip's (push_support_root_alternatives).
-  struct PartsEnds {
-    QuadraticEnd lo, hi;
-  };
+  // operations; `fixed_rule` says whether their number is the same at every P;
+  // `along_line` and `ends`: how G_E is formed (GE, PartsEnds above).
   //
   // `minus_args`: the moments are those of the call with `args` minus those
   // of a second call with `minus_args` (an interval as a difference of two,
