@@ -84,8 +84,13 @@ nlohmann::json problem_json(const SweepProblem& pb) {
     for (double x : v) out.push_back(exact(x));
     return out;
   };
-  return {{"region", region_name(pb.region)}, {"index", pb.index}, {"A", vec(pb.a)}, {"B", vec(pb.b)},
-          {"P", vec(pb.p)},  {"w", vec(pb.w)},  {"s", exact(pb.s)},  {"R", exact(pb.R)}};
+  nlohmann::json out{{"region", region_name(pb.region)}, {"index", pb.index}, {"A", vec(pb.a)}, {"B", vec(pb.b)},
+                     {"P", vec(pb.p)},  {"w", vec(pb.w)},  {"s", exact(pb.s)},  {"R", exact(pb.R)}};
+  if (pb.family == KernelFamily::gaussian) {  // its own parameters, so that its worst sample replays too
+    out["gaussian_a"] = exact(pb.gaussian_a);
+    out["gaussian_b"] = exact(pb.gaussian_b);
+  }
+  return out;
 }
 
 nlohmann::json precision_json(const PrecisionStats& stats) {

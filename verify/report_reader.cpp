@@ -117,6 +117,10 @@ SweepProblem sample_of(const json& object, KernelFamily family, int degree, cons
   pb.w = decimals<4>(object, "w", place);
   pb.s = exact_decimal(member(object, "s", place), place / "s");
   pb.R = exact_decimal(member(object, "R", place), place / "R");
+  if (family == KernelFamily::gaussian) {
+    pb.gaussian_a = exact_decimal(member(object, "gaussian_a", place), place / "gaussian_a");
+    pb.gaussian_b = exact_decimal(member(object, "gaussian_b", place), place / "gaussian_b");
+  }
   return pb;
 }
 
