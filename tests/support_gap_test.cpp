@@ -12,7 +12,9 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
+#include "skelconv/plane_height.hpp"
 #include "skelconv/support_gap.hpp"
 
 namespace {
@@ -117,3 +119,53 @@ TEST(SupportGap, ExactWhereNothingCancels) {
 }
 
 }  // namespace
+
+// skelconv/plane_height.hpp: the height of P above the plane of exactly
+// coplanar vertices. The polygon lies in an integer frame (u, v orthogonal
+// integer vectors, outline coordinates small integers): its vertices are
+// exact doubles, exactly coplanar, with normal u × v. P = V + z·w/|w| rounded,
+// z from 1e-12 to 1e-3 of the polygon's size; the reference is
+// (u × v)·(P − V₀)/|u × v| in 50 digits from the rounded P itself.
+TEST(PlaneHeight, HeightIsRoundedOnceNearThePlaneOfExactlyCoplanarVertices) {
+  std::mt19937_64 rng(20261203);
+  std::uniform_int_distribution<int> small(-9, 9), corner(-40, 40);
+  std::uniform_real_distribution<double> exponent(-12, -3), unit(0, 1);
+  double worst = 0, plain_worst = 0;
+  int tried = 0;
+  for (int n = 0; n < 1000; ++n) {
+    const Vec u{double(small(rng)), double(small(rng)), double(small(rng))};
+    Vec v{double(small(rng)), double(small(rng)), double(small(rng))};
+    const Vec w{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};  // u × v, exact
+    const double w_norm = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    if (!(w_norm > 0)) continue;
+    ++tried;
+    // A pentagon (convex or not) of integer outline points, placed at a
+    // dyadic origin, everything scaled by 2^−6 (exact).
+    const Vec origin{corner(rng) / 64.0 + 0.25, corner(rng) / 64.0 - 0.75, corner(rng) / 64.0 + 0.125};
+    const int outline[5][2] = {{0, 0}, {4, 0}, {5, 3}, {2, 1 + n % 3}, {0, 3}};
+    std::vector<Vec> vertices;
+    for (const auto& q : outline)
+      vertices.push_back({origin[0] + (q[0] * u[0] + q[1] * v[0]) / 64.0, origin[1] + (q[0] * u[1] + q[1] * v[1]) / 64.0,
+                          origin[2] + (q[0] * u[2] + q[1] * v[2]) / 64.0});
+    // P above a point inside, at height z·size.
+    const double size = w_norm / 64.0;
+    const double height = std::pow(10.0, exponent(rng)) * size * (unit(rng) < 0.5 ? -1 : 1);
+    const double a = 1 + 2 * unit(rng), b = 1 + unit(rng);
+    Vec p;
+    for (int i = 0; i < 3; ++i) p[i] = origin[i] + (a * u[i] + b * v[i]) / 64.0 + height * w[i] / w_norm;
+    Wide numerator = 0;
+    for (int i = 0; i < 3; ++i) numerator += Wide(w[i]) * (Wide(p[i]) - vertices[0][i]);
+    const Wide reference = numerator / Wide(w_norm);
+    const double exact = skelconv::exact_plane_height<double>(vertices, p);
+    const Vec unit_normal{w[0] / w_norm, w[1] / w_norm, w[2] / w_norm};
+    const double plain = skelconv::plain_plane_height(p, vertices[0], unit_normal);
+    worst = std::max(worst, double(abs((Wide(exact) - reference) / reference)));
+    plain_worst = std::max(plain_worst, double(abs((Wide(plain) - reference) / reference)));
+    EXPECT_TRUE(skelconv::needs_exact_plane_height(plain, p, vertices[0])) << "sample " << n;
+  }
+  std::printf("plane height: worst %.1e rounded once, %.1e in plain arithmetic (%d polygons)\n", worst, plain_worst,
+              tried);
+  EXPECT_GT(tried, 900);
+  EXPECT_LE(worst, kAllowed);
+  EXPECT_GT(plain_worst, 1e-8);  // the plain height does lose digits here: the test can tell
+}

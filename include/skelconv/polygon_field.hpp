@@ -47,6 +47,7 @@
 #include "skelconv/polygon_far_field.hpp"
 #include "skelconv/polygon_edge_input.hpp"
 #include "skelconv/integer_power.hpp"
+#include "skelconv/plane_height.hpp"
 #include "skelconv/segment_input.hpp"  // KernelFamily
 
 namespace skelconv {
@@ -97,7 +98,10 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   const auto& n = poly.normal;
   const auto& v = poly.vertices;
   const std::size_t count = v.size();
-  const T z = (p[0] - v[0][0]) * n[0] + (p[1] - v[0][1]) * n[1] + (p[2] - v[0][2]) * n[2];
+  // The height above the plane; near it, for the inverse kernels (singular
+  // there), from the exact vertices and P (skelconv/plane_height.hpp).
+  T z = plain_plane_height(p, v[0], n);
+  if (poly.family == KernelFamily::inverse && needs_exact_plane_height(z, p, v[0])) z = exact_plane_height(v, p);
   const std::array<T, 3> foot = {p[0] - z * n[0], p[1] - z * n[1], p[2] - z * n[2]};
   const bool compact = poly.family == KernelFamily::compact;
   if (grad) *grad = {T(0), T(0), T(0)};

@@ -66,7 +66,7 @@
 #include <boost/math/constants/constants.hpp>
 
 #include "skelconv/segment_input.hpp"
-#include "skelconv/support_gap.hpp"
+#include "skelconv/double_word.hpp"
 
 namespace skelconv::gaussian_segment {
 
@@ -220,7 +220,7 @@ std::array<T, W + 1> shifted_weight(const SegmentInput<T>& in, const T& tau) {
 /// file comment.
 ///
 /// The geometry is taken from the exact inputs (issue 16, the exact
-/// preamble; the double-word helpers of skelconv/support_gap.hpp). Beside
+/// preamble; the double-word helpers of skelconv/double_word.hpp). Beside
 /// the line at distance d, |∇f| ~ a d f while the component along AB is a
 /// small difference of the two halves of the segment, so each absolute error
 /// of QP (ε|AP| in plain arithmetic) or of τ (ε) came back L/d times larger

@@ -5,8 +5,9 @@
 // point in the polygon's frame (Polygon::single_closed_form, ScaledFrame)
 // and sends to the scalar path the points Polygon::value_and_gradient treats
 // apart (a non-finite P; inverse kernels: z = 0 exactly, where the runtime
-// decides between +inf and a finite value; the far field, ≥ 5 radii from the
-// vertex centroid, polygon_far_field.hpp). The others run, a group of 4 or 8
+// decides between +inf and a finite value, and P near the plane, where the
+// height comes from the exact vertices, skelconv/plane_height.hpp; the far
+// field, ≥ 5 radii from the vertex centroid, polygon_far_field.hpp). The others run, a group of 4 or 8
 // lanes at a time (group_runner-inl.hpp), through polygon_evaluate's contour
 // sum written on Lanes: the generated edge kernel
 // `polygon_edge_<family>_i<i>_f_and_grad` (the function the scalar path
@@ -278,7 +279,14 @@ BatchCounts value_and_gradient(const Polygon& polygon, PointsSoA points, FieldSo
       x[p] = q.x();
       y[p] = q.y();
       z[p] = q.z();
-      const bool singular_candidate = u.input.family == KernelFamily::inverse && normal.dot(q - first) == 0.0;
+      // Inverse kernels: z = 0 exactly (the runtime's on-plane decision), or
+      // near the plane, where polygon_evaluate takes the exact height
+      // (skelconv/plane_height.hpp), a double-word fan the lanes do not have.
+      const std::array<double, 3> point{q.x(), q.y(), q.z()};
+      const double plain_z = plain_plane_height(point, u.input.vertices[0], u.input.normal);
+      const bool singular_candidate = u.input.family == KernelFamily::inverse &&
+                                      (normal.dot(q - first) == 0.0 ||
+                                       needs_exact_plane_height(plain_z, point, u.input.vertices[0]));
       if (!q.allFinite() || singular_candidate || far_field.far(q.x(), q.y(), q.z())) {
         scalar.push_back(std::uint32_t(p));
       } else {
