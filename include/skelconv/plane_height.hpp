@@ -27,7 +27,10 @@
 // needs_exact_plane_height (8|z| < |P − V₀|∞, where the plain z is within
 // ~8√3·2ε ≈ 6e-15 of itself otherwise), and only for the inverse kernels,
 // the one family singular on the plane (the Cauchy and compact fields are
-// smooth there and meet their targets with the plain z).
+// smooth there and meet their targets with the plain z). Measured: a tilted
+// pentagon's f and ∇f (Polygon::value_and_gradient, inverse i = 3 and 8)
+// take ~1.42 and 1.64 µs with the exact height (z = 0.02 diam) against
+// 1.32 and 1.53 µs without it (z = 0.2 diam): ~100 ns, 7%.
 #pragma once
 
 #include <algorithm>
