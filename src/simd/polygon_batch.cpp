@@ -7,10 +7,10 @@
 // apart (a non-finite P; inverse kernels: z = 0 exactly, where the runtime
 // decides between +inf and a finite value, and P near the plane, where the
 // height comes from the exact vertices, skelconv/plane_height.hpp; the far
-// field, ≥ 5 radii from the vertex centroid, polygon_far_field.hpp). The others run, a group of 4 or 8
-// lanes at a time (group_runner-inl.hpp), through polygon_evaluate's contour
-// sum written on Lanes: the generated edge kernel
-// `polygon_edge_<family>_i<i>_f_and_grad` (the function the scalar path
+// field, ≥ 5 radii from the vertex centroid, polygon_far_field.hpp). The
+// others run, a group of 4 or 8 lanes at a time (group_runner-inl.hpp),
+// through polygon_evaluate's contour sum written on Lanes: the generated
+// edge kernel `polygon_edge_<family>_i<i>_f_and_grad` (the function the scalar path
 // calls, through a pointer there) on every edge, the same sums in the same
 // order, Θ snapped to a multiple of 2π, f and ∇f assembled and scaled back
 // from the frame. A lane whose P̄ lies on an edge's line (h = 0) or whose
