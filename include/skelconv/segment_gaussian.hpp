@@ -104,6 +104,21 @@ inline constexpr double tail_exponent = 60;  ///< panels stop where βx + cx² r
 inline constexpr double closed_form_min_lambda = 2;  ///< λ above which the closed form is used…
 inline constexpr double closed_form_max_y0 = 1;      ///< …when y0 is at most this
 
+/// Adds ∫_lo^hi x^j e^(−βx − cx²) dx, j = 0 … top, to H by one 16-point
+/// Gauss–Legendre panel (exact to rounding where the exponent grows by at
+/// most panel_exponent across it: the file comment).
+template <class T, int top>
+void add_panel(const T& lo, const T& hi, const T& beta, const T& c, std::array<T, top + 1>& H) {
+  using std::exp;
+  static const GaussLegendre<T, panel_nodes> rule;
+  const T width = hi - lo;
+  for (int i = 0; i < panel_nodes; ++i) {
+    const T x = lo + width * rule.x[i];
+    T term = rule.w[i] * width * exp(-(beta + c * x) * x);
+    for (int j = 0; j <= top; ++j, term *= x) H[j] += term;
+  }
+}
+
 /// H_0 … H_N (N = top) of the file comment: ∫_0^m x^j e^(−βx − cx²) dx.
 template <class T, int top>
 std::array<T, top + 1> moments(const T& m, const T& beta, const T& c) {
@@ -126,7 +141,6 @@ std::array<T, top + 1> moments(const T& m, const T& beta, const T& c) {
     }
     return H;
   }
-  static const GaussLegendre<T, panel_nodes> rule;
   // x where βx + cx² = s, the stable root 2s / (β + √(β² + 4cs)).
   const auto at_exponent = [&](const T& s) { return T(2) * s / (beta + sqrt(beta * beta + T(4) * c * s)); };
   const bool truncated = !(lambda < T(tail_exponent));
@@ -137,12 +151,7 @@ std::array<T, top + 1> moments(const T& m, const T& beta, const T& c) {
     const T s = T(k * panel_exponent);
     const bool last_panel = !(s < last_exponent);
     const T hi = last_panel ? end : at_exponent(s);
-    const T width = hi - lo;
-    for (int i = 0; i < panel_nodes; ++i) {
-      const T x = lo + width * rule.x[i];
-      T term = rule.w[i] * width * exp(-(beta + c * x) * x);
-      for (int j = 0; j <= top; ++j, term *= x) H[j] += term;
-    }
+    add_panel<T, top>(lo, hi, beta, c, H);
     if (last_panel) break;
     lo = hi;
   }
@@ -175,13 +184,7 @@ std::array<T, top + 1> odd_side_difference(const T& lo, const T& hi, const T& c)
   std::array<T, top + 1> D{};
   const T growth = c * (hi - lo) * (hi + lo);  // c hi² − c lo²
   if (!(growth > T(panel_exponent))) {
-    static const GaussLegendre<T, panel_nodes> rule;
-    const T width = hi - lo;
-    for (int i = 0; i < panel_nodes; ++i) {
-      const T x = lo + width * rule.x[i];
-      T term = rule.w[i] * width * exp(-c * x * x);
-      for (int j = 0; j <= top; ++j, term *= x) D[j] += term;
-    }
+    add_panel<T, top>(lo, hi, T(0), c, D);
     return D;
   }
   if (c * lo * lo > T(closed_form_min_lambda)) {
