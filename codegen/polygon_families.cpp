@@ -56,6 +56,10 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
       A_[i] = input("A", "in.a", i);
       B_[i] = input("B", "in.b", i);
       P_[i] = input("P", "in.p", i);
+      // P̄'s rounding (PolygonEdgeInput::p_lo), for the kernels that are
+      // not clipped: a compact edge's clip [t0, t1] comes from the rounded
+      // P̄ (clip_to_ball), and its q(t0), q(t1) must vanish with it.
+      if (!generated_family(spec_.family).compact_support) point_lo_[i] = input("P_lo", "in.p_lo", i);
       normal_[i] = input("n", "in.normal", i);
     }
     z_ = symbol("z");

@@ -631,9 +631,18 @@ class SegmentProgramBuilder {
   // the values at B keep their digits near the line and near B.
   void define_geometry() {
     for (int i = 0; i < 3; ++i) {
-      ab_[i] = define("ab" + std::to_string(i), B_[i] - A_[i]);
-      ap_[i] = define("ap" + std::to_string(i), P_[i] - A_[i]);
-      bp_[i] = define("bp" + std::to_string(i), P_[i] - B_[i]);
+      const std::string k = std::to_string(i);
+      ab_[i] = define("ab" + k, B_[i] - A_[i]);
+      if (point_lo_[i].is_zero()) {
+        ap_[i] = define("ap" + k, P_[i] - A_[i]);
+        bp_[i] = define("bp" + k, P_[i] - B_[i]);
+      } else {
+        // P = P_hi + P_lo (polygon edges: the foot as a double-word number):
+        // the difference of the leading parts first (exact near A, B by
+        // Sterbenz), then the trailing part, so P's rounding stays out.
+        ap_[i] = define("ap" + k, define("ap_hi" + k, P_[i] - A_[i]) + point_lo_[i]);
+        bp_[i] = define("bp" + k, define("bp_hi" + k, P_[i] - B_[i]) + point_lo_[i]);
+      }
     }
     auto dot = [](const std::array<ex, 3>& u, const std::array<ex, 3>& v) {
       return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
@@ -674,7 +683,13 @@ class SegmentProgramBuilder {
                    {A_[0], A_[1], A_[2], B_[0], B_[1], B_[2], P_[0], P_[1], P_[2]}, {},
                    helper_costs::exact_cross(), true};
     for (int i = 0; i < 3; ++i) call.elements.emplace_back("exact_cross_" + std::to_string(i));
-    const std::array<ex, 3> exact{call.elements[0], call.elements[1], call.elements[2]};
+    // With P = P_hi + P_lo: AB × AP_hi exactly rounded, plus AB × P_lo (~ε
+    // of it, so its own rounding is ~ε²).
+    std::array<ex, 3> exact{call.elements[0], call.elements[1], call.elements[2]};
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      exact[i] = exact[i] + (ab_[j] * point_lo_[k] - ab_[k] * point_lo_[j]);
+    }
     near.values = {exact[0], exact[1], exact[2], exact[0] * exact[0] + exact[1] * exact[1] + exact[2] * exact[2]};
     near.calls.push_back(std::move(call));
     if (with_foot) {
@@ -826,6 +841,9 @@ class SegmentProgramBuilder {
   const SegmentKernelSpec spec_;
   StraightLineProgram program_;
   std::array<symbol, 3> A_, B_, P_;
+  // P's trailing part where P is a double-word number P_ + point_lo_
+  // (polygon edges: the foot P̄); 0 for segments.
+  std::array<ex, 3> point_lo_{0, 0, 0};
   std::vector<ex> w_;
   std::array<ex, 3> ab_, ap_, bp_, cross_;
   ex ab_ab_, ab_ap_, ap_ap_, cross_cross_, bp_bp_, ab_bp_, ap_bp_, length_;

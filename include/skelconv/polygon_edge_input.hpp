@@ -24,7 +24,14 @@ template <class T>
 struct PolygonEdgeInput {
   std::array<T, 3> a{};       ///< edge start Q_m
   std::array<T, 3> b{};       ///< edge end Q_{m+1}
-  std::array<T, 3> p{};       ///< P̄, the projection of the query point on the plane
+  std::array<T, 3> p{};       ///< P̄, the projection of the query point on the plane, rounded
+  /// P̄ − p, the rounding of P̄ (plane_foot, skelconv/plane_height.hpp): the
+  /// inverse and Cauchy kernels form P̄ − Q_m as (p − Q_m) + p_lo, so that
+  /// near an edge or a vertex P̄'s position is known to ~ε of its distance
+  /// from them, not ε|P|. The compact kernels read p alone: their clip
+  /// [t0, t1] is computed from it (their field is bounded: a displacement
+  /// of ε|P| changes it by ~ε|P|/R relative).
+  std::array<T, 3> p_lo{};
   std::array<T, 3> normal{};  ///< unit normal n; the polygon runs counter-clockwise about it
   T z = T(0);                 ///< height of the query point: P = P̄ + z n
   T s = T(1);                 ///< Cauchy sharpness (cauchy only)

@@ -102,7 +102,8 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   // there), from the exact vertices and P (skelconv/plane_height.hpp).
   T z = plain_plane_height(p, v[0], n);
   if (poly.family == KernelFamily::inverse && needs_exact_plane_height(z, p, v[0])) z = exact_plane_height(v, p);
-  const std::array<T, 3> foot = {p[0] - z * n[0], p[1] - z * n[1], p[2] - z * n[2]};
+  std::array<T, 3> foot, foot_lo;
+  plane_foot(p, z, n, foot, foot_lo);
   const bool compact = poly.family == KernelFamily::compact;
   if (grad) *grad = {T(0), T(0), T(0)};
   if (!compact && edge_fields == nullptr) {
@@ -132,6 +133,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   std::vector<PolygonEdgeTerms<T>> all_terms;
   PolygonEdgeInput<T> in;
   in.p = foot;
+  in.p_lo = foot_lo;
   in.normal = n;
   in.z = z;
   in.s = poly.s;

@@ -119,7 +119,7 @@ __attribute__((flatten)) void polygon_group(const PolygonUniforms& u, const std:
   const std::size_t count = v.size();
   const Lanes z = (p[0] - v[0][0]) * n[0] + (p[1] - v[0][1]) * n[1] + (p[2] - v[0][2]) * n[2];
   PolygonEdgeInput<Lanes> in;
-  in.p = {p[0] - z * n[0], p[1] - z * n[1], p[2] - z * n[2]};
+  plane_foot(p, z, {Lanes(n[0]), Lanes(n[1]), Lanes(n[2])}, in.p, in.p_lo);
   in.normal = {n[0], n[1], n[2]};
   in.z = z;
   in.s = poly.s;
