@@ -88,6 +88,33 @@ bool clip_compact_support(KernelFamily family, Input& in) {
   return true;
 }
 
+std::vector<Input> generic_region_inputs(KernelFamily family, double d) {
+  std::mt19937_64 random(std::uint64_t(1000 * d) + 15);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  double L = 0;
+  for (int c = 0; c < 3; ++c) L += (bench_b[c] - bench_a[c]) * (bench_b[c] - bench_a[c]);
+  L = std::sqrt(L);
+  const double target = d * L;
+  std::vector<Input> inputs;
+  while (inputs.size() < generic_region_points) {
+    const double t = 0.5 + 0.5 * u(random);
+    Vec dir{u(random), u(random), u(random)};
+    const double n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    if (n > 1 || n < 1e-3) continue;
+    const double r = target * (1.0 + 0.5 * u(random));
+    Vec p;
+    for (int c = 0; c < 3; ++c) p[c] = bench_a[c] + t * (bench_b[c] - bench_a[c]) + r * dir[c] / n;
+    const double distance = distance_to_segment(p);
+    if (distance < 0.9 * target || distance > 1.1 * target) continue;
+    Input in = segment_input(family);
+    in.p = p;
+    if (family == KernelFamily::compact) in.R = generic_region_compact_R * L;
+    if (!clip_compact_support(family, in)) continue;
+    inputs.push_back(in);
+  }
+  return inputs;
+}
+
 std::vector<Input> make_inputs(KernelFamily family, std::size_t count, std::uint64_t seed, double min_distance,
                                double max_distance) {
   BoxSampler sampler(bench_R, seed);

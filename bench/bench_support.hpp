@@ -131,6 +131,15 @@ bool clip_compact_support(KernelFamily family, Input& in);
 /// Distance from p to the segment [bench_a, bench_b].
 double distance_to_segment(const Vec& p);
 
+/// The generic region of issue 15 (gsl_bench.cpp, instruction_counts.cpp):
+/// 256 inputs at distance d |AB| (± 10 %) from the segment, every direction
+/// (beyond the ends too), for d in generic_region_distances. Compact kernels
+/// get R = 5 |AB| (every distance inside the support) and come clipped.
+inline constexpr std::array<double, 4> generic_region_distances{0.1, 0.3, 1.0, 3.0};  // × |AB|
+inline constexpr std::size_t generic_region_points = 256;
+inline constexpr double generic_region_compact_R = 5.0;  // × |AB|
+std::vector<Input> generic_region_inputs(KernelFamily family, double d);
+
 // --- Adaptive quadrature of the definition (SPEC §2) ---------------------------
 
 struct QuadratureResult {

@@ -28,11 +28,6 @@
 namespace skelconv::bench {
 namespace {
 
-constexpr std::size_t points_per_distance = 256;
-constexpr double distances[] = {0.1, 0.3, 1.0, 3.0};  // × |AB|
-/// Compact support radius for this suite: 5 |AB| contains every distance.
-constexpr double compact_R_over_length = 5.0;
-
 struct Case {
   KernelFamily family;
   int degree, weight_degree;
@@ -44,39 +39,8 @@ constexpr Case cases[] = {{KernelFamily::inverse, 3, 1}, {KernelFamily::inverse,
 /// 0, every degree (gsl/<kernel>/d:<d>/closed without QAG rows).
 constexpr int generic_max_degree = 8;
 
-double length() {
-  double s = 0;
-  for (int c = 0; c < 3; ++c) s += (bench_b[c] - bench_a[c]) * (bench_b[c] - bench_a[c]);
-  return std::sqrt(s);
-}
-
-/// 256 inputs at distance d |AB| (± 10 %) in every direction.
-std::vector<Input> inputs_at(KernelFamily family, double d) {
-  std::mt19937_64 random(std::uint64_t(1000 * d) + 15);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double L = length(), target = d * L;
-  std::vector<Input> inputs;
-  while (inputs.size() < points_per_distance) {
-    const double t = 0.5 + 0.5 * u(random);
-    Vec dir{u(random), u(random), u(random)};
-    const double n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-    if (n > 1 || n < 1e-3) continue;
-    const double r = target * (1.0 + 0.5 * u(random));
-    Vec p;
-    for (int c = 0; c < 3; ++c) p[c] = bench_a[c] + t * (bench_b[c] - bench_a[c]) + r * dir[c] / n;
-    const double distance = distance_to_segment(p);
-    if (distance < 0.9 * target || distance > 1.1 * target) continue;
-    Input in = segment_input(family);
-    in.p = p;
-    if (family == KernelFamily::compact) in.R = compact_R_over_length * L;
-    if (!clip_compact_support(family, in)) continue;
-    inputs.push_back(in);
-  }
-  return inputs;
-}
-
 void bench_closed(benchmark::State& state, const KernelRef* k, double d) {
-  const std::vector<Input> inputs = inputs_at(k->family, d);
+  const std::vector<Input> inputs = generic_region_inputs(k->family, d);
   std::size_t j = 0;
   for (auto _ : state) {
     Vec g;
@@ -87,7 +51,7 @@ void bench_closed(benchmark::State& state, const KernelRef* k, double d) {
 }
 
 void bench_qag(benchmark::State& state, const KernelRef* k, double d, double tolerance) {
-  const std::vector<Input> inputs = inputs_at(k->family, d);
+  const std::vector<Input> inputs = generic_region_inputs(k->family, d);
   // Agreement with the closed form, and evaluations per point, on every point.
   double diff_f = 0, diff_g = 0, evaluations = 0;
   for (const Input& in : inputs) {
@@ -119,7 +83,7 @@ void register_all() {
         return c.family == family && c.degree == degree && c.weight_degree == 0;
       });
       if (!k || with_qag) continue;  // the QAG cases register their closed form below
-      for (const double d : distances) {
+      for (const double d : generic_region_distances) {
         char distance[16];
         std::snprintf(distance, sizeof distance, "d:%g", d);
         benchmark::RegisterBenchmark(("gsl/" + k->name + "/" + distance + "/closed").c_str(), bench_closed, k, d);
@@ -129,7 +93,7 @@ void register_all() {
   for (const Case& c : cases) {
     const KernelRef* k = find_kernel(c.family, c.degree, c.weight_degree);
     if (!k) continue;
-    for (const double d : distances) {
+    for (const double d : generic_region_distances) {
       char distance[16];
       std::snprintf(distance, sizeof distance, "d:%g", d);
       const std::string base = "gsl/" + k->name + "/" + distance + "/";

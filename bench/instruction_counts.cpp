@@ -16,6 +16,11 @@
 //   quadrature/<kernel>/tol:<1e-08|1e-12>[/near]
 //   degree/<family>/w0/i:<i>/<f|f_and_grad>
 //   batch/<kernel>/<scalar|simd>
+//   generic/<kernel>/d:<d>/<beside|beyond>: the generic region of issue 15
+//       (bench_support.hpp: generic_region_inputs; inverse and Cauchy
+//       i = 1…8, weight degree 0), split by where P's foot on the line
+//       falls: on [A, B] (beside) or past an end (beyond), which decides
+//       the forms the kernel takes there.
 #include <valgrind/callgrind.h>
 
 #include <cstdio>
@@ -90,6 +95,30 @@ void run_regions() {
       Vec g;
       sink = k.f_and_grad(in[j], g) + g[0];
     });
+  }
+  for (const KernelRef& k : generated_kernels()) {
+    if (k.weight_degree != 0 || k.family == KernelFamily::compact || k.degree > 8) continue;
+    for (const double d : generic_region_distances) {
+      std::vector<Input> beside, beyond;
+      for (const Input& in : generic_region_inputs(k.family, d)) {
+        double ab_ap = 0, ab_ab = 0;
+        for (int c = 0; c < 3; ++c) {
+          ab_ap += (in.b[c] - in.a[c]) * (in.p[c] - in.a[c]);
+          ab_ab += (in.b[c] - in.a[c]) * (in.b[c] - in.a[c]);
+        }
+        (ab_ap >= 0 && ab_ap <= ab_ab ? beside : beyond).push_back(in);
+      }
+      char distance[16];
+      std::snprintf(distance, sizeof distance, "d:%g", d);
+      const std::string base = "generic/" + k.name + "/" + distance + "/";
+      for (const auto& [part, points] : {std::pair{"beside", &beside}, std::pair{"beyond", &beyond}}) {
+        if (points->empty()) continue;
+        region(base + part, points->size(), [&](std::size_t j) {
+          Vec g;
+          sink = k.f_and_grad((*points)[j], g) + g[0];
+        });
+      }
+    }
   }
   for (const BatchEntry& e : batch_entries) {
     const KernelRef* k = find_kernel(e.key.family, e.key.degree, e.key.weight_degree);
