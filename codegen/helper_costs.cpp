@@ -188,7 +188,8 @@ OpCount polygon_G_compact_chord(int p_lo, int p_hi) {
   const double root3 = std::sqrt(3.0);
   return tally_of([&] {
     polygon_edge_G_compact_chord<Counted>(p_lo, p_hi, Counted(1), Counted(1), Counted(1), Counted(0.25), Counted(-root3),
-                                          Counted(root3), out.data());
+                                          Counted(root3), Counted(0.25), Counted(0.75), Counted(0), Counted(0),
+                                          out.data());
   });
 }
 

@@ -62,6 +62,8 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
       if (!generated_family(spec_.family).compact_support) point_lo_[i] = input("P_lo", "in.p_lo", i);
       normal_[i] = input("n", "in.normal", i);
     }
+    if (generated_family(spec_.family).compact_support)
+      for (int i = 0; i < 3; ++i) point_[i] = input("X", "in.point", i);
     z_ = symbol("z");
     program_.add_input(z_, "in.z");
     w_.push_back(1);  // no weight
@@ -202,8 +204,20 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
       Alternative chord{{}, "chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, "
                             "polygon_edge_G_compact_chord (Gauss–Legendre panels)",
                         {}, {}, {}};
+      // R² − |P − Q|² at the edge's ends from the exact inputs (support_gap.hpp):
+      // q at an end the clip keeps, without the cancellation of w − ρ²/R².
+      std::array<ArrayCall, 2> gaps;
+      for (int end = 0; end < 2; ++end) {
+        const std::array<symbol, 3>& q = end == 0 ? A_ : B_;
+        gaps[end] = support_gap_call(end == 0 ? "gap_A" : "gap_B", "exact_point_support_gap<T>",
+                                     {q[0], q[1], q[2], point_[0], point_[1], point_[2]},
+                                     helper_costs::point_support_gap());
+      }
       ArrayCall call{"G_chord", "polygon_edge_G_compact_chord<T>", {std::to_string(p_lo), std::to_string(p_hi)},
-                     {h_, ab_ab_, w, inv_R2, slope0, slope1}, {}, helper_costs::polygon_G_compact_chord(p_lo, p_hi)};
+                     {h_, ab_ab_, w, inv_R2, slope0, slope1, t0, t1, gaps[0].elements[0], gaps[1].elements[0]}, {},
+                     helper_costs::polygon_G_compact_chord(p_lo, p_hi)};
+      chord.calls.push_back(std::move(gaps[0]));
+      chord.calls.push_back(std::move(gaps[1]));
       for (int p = p_lo; p <= p_hi; ++p) call.elements.emplace_back("G_chord_" + std::to_string(call.elements.size()));
       chord.values.push_back(0);
       if (value_) chord.values.push_back(call.elements.back());
@@ -222,6 +236,7 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
   }
 
   std::array<ex, 3> normal_;
+  std::array<symbol, 3> point_;  // P itself (compact: the support gaps at the edge's ends)
   symbol z_;
   ex h_, theta_;
   bool value_ = true, gradient_ = true;

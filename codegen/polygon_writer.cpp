@@ -59,7 +59,7 @@ std::string write_polygon_files(const GeneratorRequest& request, const std::file
        << kPolygonSources << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
        << "#include <skelconv/exact_cross.hpp>\n#include <skelconv/gauss_moments.hpp>\n#include <skelconv/polygon_angle_integrals.hpp>\n"
        << "#include <skelconv/polygon_edge_input.hpp>\n#include <skelconv/segment_input.hpp>\n"
-       << "#include <skelconv/stable_recurrence.hpp>\n\n"
+       << "#include <skelconv/stable_recurrence.hpp>\n#include <skelconv/support_gap.hpp>\n\n"
        << "namespace skelconv::generated {\n\n"
        << body << "}  // namespace skelconv::generated\n";
     write_file(folder / file, os.str());

@@ -84,19 +84,36 @@ void polygon_edge_H_near_plane(int n_lo, int n_hi, const T& alpha_h, const T& a,
 /// Compact kernels (codegen/polygon_families.cpp): writes, for p = p_lo … p_hi,
 ///
 ///     G^(p) = h ∫_{t0}^{t1} q^p / ρ² dt = sgn(h) ∫_{u0}^{u1} q(u)^p du / (1 + u²),
-///     q(u) = w − (d²/R²)(1 + u²),   u = tan φ = slope / |h|,   d² = h² / |E|²,
+///     q(u) = w − D (1 + u²) = D (U − |u|)(U + |u|),
+///     u = tan φ = slope / |h|,   D = d²/R² = h² / (|E|² R²),   U² = w/D − 1,
 ///
-/// to out[p − p_lo], from h, |E|², w = 1 − z²/R², 1/R² and the in-plane slopes
-/// |E|² t − E·(P̄ − A) at the clip's ends. The generated code calls this for a
-/// chord that stays beyond half the support disc's radius from P̄, where the
-/// closed form w^p θ − (h/R²) Σ … cancels (q ≪ w). The integrand, a
-/// polynomial over 1 + u², has its only poles at u = ±i. The interval is
-/// split at u = 0 and cut into panels [lo, hi] with hi − lo ≤ 1.5 √(1 + lo²)
+/// to out[p − p_lo], from h, |E|², w = 1 − z²/R², 1/R², the in-plane slopes
+/// |E|² t − E·(P̄ − A) at the clip's ends t0, t1, and the exact support gaps
+/// R² − |P − A|², R² − |P − B|² at the edge's ends (support_gap.hpp), which
+/// count where the clip keeps an end (t0 = 0, t1 = 1). The generated code
+/// calls this for a chord that stays beyond half the support disc's radius
+/// from P̄, where the closed form w^p θ − (h/R²) Σ … cancels (q ≪ w).
+///
+/// q is formed as a product of distances, never as the difference w − D(1 +
+/// u²): near the rim q ≪ w, and that difference would carry each rounding
+/// of w, D and the slopes amplified w/q times, p times over in q^p (114 and
+/// 2.3e-13 on the sample in docs/verify.md). Each side of u = 0 is
+/// integrated over |u| ∈ [a, b], b the end nearer the rim; U − b is 0 where
+/// the clip put that end on the rim, q(end)/(D (U + b)) at a polygon vertex
+/// (q from its exact gap), and the nodes sit at σ = b − |u| ≥ 0 from it, so
+/// U − |u| = (U − b) + σ is a sum of nonnegative terms. The length b − a
+/// comes from the ends' distances to the rim when the far end is deeper by
+/// more than the near end's depth (a vertex inside, the other end on the
+/// rim: no clip end enters), else from |E|²(t1 − t0)/|h|.
+///
+/// The integrand, a polynomial over 1 + u², has its only poles at u = ±i.
+/// The range is cut into panels [lo, hi] with hi − lo ≤ 1.5 √(1 + lo²)
 /// (0 ≤ lo): each sees the poles through a Bernstein ellipse of parameter
 /// ≥ 3.4, and 20 Gauss–Legendre points are exact to 3.4^(−40) ≈ 5e-22.
 template <class T>
 void polygon_edge_G_compact_chord(int p_lo, int p_hi, const T& h, const T& edge_length2, const T& w,
-                                  const T& inv_R2, const T& slope0, const T& slope1, T* out) {
+                                  const T& inv_R2, const T& slope0, const T& slope1, const T& t0, const T& t1,
+                                  const T& gap0, const T& gap1, T* out) {
   using std::abs;
   using std::max;
   using std::min;
@@ -107,40 +124,53 @@ void polygon_edge_G_compact_chord(int p_lo, int p_hi, const T& h, const T& edge_
   if (h == T(0)) return;
   const T abs_h = abs(h);
   const T u0 = slope0 / abs_h, u1 = slope1 / abs_h;
-  const T d2_over_R2 = h * h / edge_length2 * inv_R2;
+  const T D = h * h / edge_length2 * inv_R2;
+  const T U = sqrt(max(T(0), (w - D) / D));  // the rim, |u| = U
+  // U − |u_end|: 0 on the rim (a clip end), from the exact gap at a vertex.
+  auto rim_distance = [&](bool vertex, const T& gap, const T& u_end) {
+    return vertex ? max(T(0), gap) * inv_R2 / (D * (U + abs(u_end))) : T(0);
+  };
+  const T depth0 = rim_distance(t0 == T(0), gap0, u0), depth1 = rim_distance(t1 == T(1), gap1, u1);
+  const T length = edge_length2 * (t1 - t0) / abs_h;  // u1 − u0
   const auto& x = Rule::abscissa();
   const auto& g = Rule::weights();
-  auto panel = [&](const T& lo, const T& hi) {
-    const T half = (hi - lo) / 2, mid = (hi + lo) / 2;
-    auto add_node = [&](const T& u, const T& weight) {
-      const T one_plus_u2 = 1 + u * u;
-      const T q = max(T(0), w - d2_over_R2 * one_plus_u2);  // ≥ 0 on the clip, up to rounding
-      T q_power = T(1);
-      for (int p = 0; p < p_lo; ++p) q_power *= q;
-      const T base = weight * half / one_plus_u2;
-      for (int k = 0; k < count; ++k) {
-        out[k] += base * q_power;
-        q_power *= q;
+  // |u| from b − L (depth_a below the rim) up to b (depth_b below it).
+  auto side = [&](const T& b, const T& depth_b, const T& depth_a, const T& direct_length) {
+    const T L = depth_a - depth_b >= depth_b ? depth_a - depth_b : direct_length;
+    T sigma_hi = L;  // σ = b − |u| runs from L down to 0
+    while (sigma_hi > T(0)) {
+      const T lo = max(T(0), b - sigma_hi);
+      const T width = min(sigma_hi, T(1.5) * sqrt(1 + lo * lo));
+      const T sigma_lo = sigma_hi - width;  // 0 on the last panel
+      const T half = width / 2, mid = sigma_lo + half;
+      auto add_node = [&](const T& sigma, const T& weight) {
+        const T u = b - sigma;
+        const T one_plus_u2 = 1 + u * u;
+        const T q = D * (depth_b + sigma) * (U + u);
+        T q_power = T(1);
+        for (int p = 0; p < p_lo; ++p) q_power *= q;
+        const T base = weight * half / one_plus_u2;
+        for (int k = 0; k < count; ++k) {
+          out[k] += base * q_power;
+          q_power *= q;
+        }
+      };
+      for (unsigned j = 0; j < x.size(); ++j) {
+        add_node(mid - half * x[j], g[j]);
+        add_node(mid + half * x[j], g[j]);
       }
-    };
-    for (unsigned j = 0; j < x.size(); ++j) {
-      add_node(mid + half * x[j], g[j]);
-      add_node(mid - half * x[j], g[j]);
+      sigma_hi = sigma_lo;
     }
   };
-  // [a, b] with 0 ≤ a (sign = +1) or the mirror image (sign = −1): q(u) is even.
-  auto side = [&](T a, const T& b, const T& sign) {
-    while (a < b) {
-      const T next = min(b, a + T(1.5) * sqrt(1 + a * a));
-      if (sign > 0)
-        panel(a, next);
-      else
-        panel(-next, -a);
-      a = next;
-    }
-  };
-  if (u1 > T(0)) side(max(u0, T(0)), u1, T(1));
-  if (u0 < T(0)) side(max(-u1, T(0)), -u0, T(-1));
+  if (u1 > T(0)) {
+    // |u| ∈ [max(u0, 0), u1]: b = u1; a = u0, or 0 where the chord crosses u = 0.
+    const bool split = u0 < T(0);
+    side(u1, depth1, split ? U : depth0, split ? u1 : length);
+  }
+  if (u0 < T(0)) {
+    const bool split = u1 > T(0);
+    side(-u0, depth0, split ? U : depth1, split ? -u0 : length);
+  }
   if (h < T(0))
     for (int k = 0; k < count; ++k) out[k] = -out[k];
 }

@@ -32,6 +32,7 @@ struct PolygonEdgeInput {
   /// [t0, t1] is computed from it (their field is bounded: a displacement
   /// of ε|P| changes it by ~ε|P|/R relative).
   std::array<T, 3> p_lo{};
+  std::array<T, 3> point{};   ///< the query point P itself (compact: exact support gaps at the edge's ends)
   std::array<T, 3> normal{};  ///< unit normal n; the polygon runs counter-clockwise about it
   T z = T(0);                 ///< height of the query point: P = P̄ + z n
   T s = T(1);                 ///< Cauchy sharpness (cauchy only)

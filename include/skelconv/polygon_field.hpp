@@ -134,6 +134,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   PolygonEdgeInput<T> in;
   in.p = foot;
   in.p_lo = foot_lo;
+  in.point = p;
   in.normal = n;
   in.z = z;
   in.s = poly.s;
