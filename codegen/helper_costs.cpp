@@ -128,12 +128,11 @@ OpCount gauss_rule(int nodes, int m_lo, int m_hi, int k_max) {
 OpCount gauss_panels(int m_lo, int m_hi, int k_max) {
   // The panels grade towards the pole at distance δ from the segment's end
   // (in units of |AB|); their number grows like log(1/δ). The deepest δ a
-  // double evaluation resolves: the first panel's step 0.9 δ must exceed the
-  // rounding unit of t = 1 (2.2e-16; closer, the helper throws
-  // NotConvergedError), and q^(−m_hi/2) = δ^(−m_hi) must not overflow. P on
-  // the line beyond B (D = 0), a − b = −δ.
+  // double evaluation resolves: q^(−m_hi/2) = δ^(−m_hi) must not overflow
+  // (the panels place their nodes by offsets from the end, so rounding of t
+  // sets no bound). P on the line beyond B (D = 0), a − b = −δ.
   std::vector<Counted> out = moment_array(m_lo, m_hi, k_max);
-  const double delta = std::max(1e-15, std::pow(10.0, -300.0 / m_hi));
+  const double delta = std::pow(10.0, -300.0 / m_hi);
   return tally_of([&] {
     segment_moments_gauss_panels<Counted>(m_lo, m_hi, k_max, Counted(1), Counted(1 + delta), Counted(-delta), Counted(0),
                                           out.data());

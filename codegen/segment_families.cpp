@@ -68,8 +68,14 @@ class ScalisSegmentProgramBuilder : public SegmentProgramBuilder {
     }
   }
 
-  // Cauchy: b/a includes the σ²τ terms, so t* is not the foot of P.
-  bool t_star_is_foot() const override { return spec_.family != KernelFamily::cauchy; }
+  // Cauchy: b/a includes the σ²τ terms, so t* is not the foot t⊥ of P:
+  // t⊥ − t* = AB·AP/|AB|² − (AB·AP − σ²Δτ τ0)/(|AB|² + σ²Δτ²)
+  //         = σ²Δτ (τ0 |AB|² + Δτ AB·AP) / (|AB|² a),
+  // the last factor AB·(τ0 AB + Δτ AP), the radial vector of D.
+  ex foot_offset() const override {
+    if (spec_.family != KernelFamily::cauchy) return 0;
+    return sigma2_ * delta_tau_ * (tau0_ * ab_ab_ + delta_tau_ * ab_ap_) / (ab_ab_ * a_);
+  }
 
   void define_quadratic() override {
     alpha_ = 1;

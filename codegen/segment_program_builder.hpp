@@ -67,7 +67,7 @@ class SegmentProgramBuilder {
   StraightLineProgram build(SegmentOutputs outputs) {
     const bool value = outputs != SegmentOutputs::gradient;
     const bool gradient = outputs != SegmentOutputs::value;
-    foot_is_perpendicular_ = gradient && t_star_is_foot();
+    gradient_needs_foot_ = gradient;
     read_inputs();
     define_geometry();
     define_quadratic();
@@ -204,9 +204,19 @@ class SegmentProgramBuilder {
         fill_from_helper(away, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false);
         choice.alternatives.push_back(std::move(away));
         const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
-        Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_},
-                           "P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by " + panels, {}, {}, {}};
-        fill_from_helper(beyond, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false);
+        // G_E by parts there: the difference Σ w_k (M_{k+1} − t* M_k) loses
+        // |t*|/|t − t*| where the weight's mass is (t* just beyond the near
+        // end: 4e-13 of ∇f measured 1.3e-3 |AB| beyond B of a segment of
+        // radius 5e-4 |AB|), while the parts formula's boundary term at the
+        // near end dominates its other terms.
+        // Beyond an end the recurrence upwards also cancels where ρ ≥ 7/10
+        // but P is not near the line (up to 1.3e-13 measured at D ≈ a²/2,
+        // inverse i = 10, a cone seen past its base; ≤ 3e-14 for D < a²/100).
+        Alternative beyond{{-b_ * a_minus_b_, maximum(kBeyondEndRho * a_ * near_q - D_, 100 * D_ - pow(a_, 2))},
+                           "P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by " + panels,
+                           {}, {}, {}};
+        fill_from_helper(beyond, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false,
+                         GE::by_parts);
         choice.alternatives.push_back(std::move(beyond));
         MomentRecurrence upward(symbols);
         choice.alternatives.push_back(
@@ -275,12 +285,21 @@ class SegmentProgramBuilder {
 
   // H = AP − t* AB, t* = b/a. For a segment t* is the foot of P on the line
   // and H = (AB × AP) × AB / |AB|²: from the exactly rounded cross product
-  // where P is near the line (define_geometry's choice), where AP − t* AB
+  // where P is near the line (define_exact_cross's choice), where AP − t* AB
   // would lose |AP|/h; elsewhere AP − t* AB (error ≤ ε|AP| ≤ 16 ε |H|).
-  // Where t* is not the foot (SCALIS Cauchy: b, a include σ²τ terms;
-  // t_star_is_foot), always AP − (b/a) AB.
+  // Where t* is not the foot t⊥ (SCALIS Cauchy: b, a include σ²τ terms),
+  // H = (AP − t⊥ AB) + (t⊥ − t*) AB, the perpendicular part as above and the
+  // offset from foot_offset() (the two parts are orthogonal: nothing
+  // cancels). Without the cross product's choice, AP − (b/a) AB.
   std::array<ex, 3> define_foot() {
-    if (foot_.has_value()) return *foot_;
+    if (foot_.has_value()) {
+      const ex offset = foot_offset();
+      if (offset.is_zero()) return *foot_;
+      const ex along = define("foot_offset", offset);
+      std::array<ex, 3> h;
+      for (int i = 0; i < 3; ++i) h[i] = define("foot_h" + std::to_string(i), (*foot_)[i] + along * ab_[i]);
+      return h;
+    }
     const ex t_star = define("t_star", b_ / a_);
     std::array<ex, 3> h;
     for (int i = 0; i < 3; ++i) h[i] = define("foot" + std::to_string(i), ap_[i] - t_star * ab_[i]);
@@ -671,7 +690,7 @@ class SegmentProgramBuilder {
   void define_exact_cross(const std::array<ex, 3>& plain, const ex& plain_cross_cross) {
     const symbol cross_cross("cross_cross");
     std::vector<symbol> targets{symbol("cross0"), symbol("cross1"), symbol("cross2"), cross_cross};
-    const bool with_foot = foot_is_perpendicular_;
+    const bool with_foot = gradient_needs_foot_;
     if (with_foot)
       for (int i = 0; i < 3; ++i) targets.emplace_back("foot" + std::to_string(i));
     Choice choice{targets, {}};
@@ -710,9 +729,10 @@ class SegmentProgramBuilder {
     if (with_foot) foot_ = std::array<ex, 3>{targets[4], targets[5], targets[6]};
   }
 
-  // Whether t* = b/a is the parameter of P's foot on the line AB (true
-  // when a and b are α|AB|² and α AB·AP, as for segments).
-  virtual bool t_star_is_foot() const { return true; }
+  // t⊥ − t*: from the parameter t⊥ = AB·AP/|AB|² of P's foot on the line
+  // AB to the vertex t* = b/a of q. Zero when a and b are α|AB|² and
+  // α AB·AP (segments, polygon edges).
+  virtual ex foot_offset() const { return 0; }
 
   // Hook for builders whose quadratic has another constant term (polygon
   // edges: β + α z², Hubert 2012 §5); segments keep β.
@@ -850,7 +870,7 @@ class SegmentProgramBuilder {
   // Whether the gradient's t* = b/a is the foot of P on AB (true for
   // segments: α scales a and b alike), so that define_exact_cross also
   // gives H; set before build() by the builders, false where it is not.
-  bool foot_is_perpendicular_ = false;
+  bool gradient_needs_foot_ = false;
   std::optional<std::array<ex, 3>> foot_;
   ex alpha_, beta_, inv_R_, radius_;
   // Compact kernels: the forms of push_support_root_alternatives, which

@@ -24,8 +24,8 @@ namespace skelconv::generated {
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 32 +, 42 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 7036 +, 8925 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 35 +, 48 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 68968 +, 88309 ×, 24217 /, 541 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -73,14 +73,14 @@ T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t1 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t2 = -ab_ap * a_minus_b;
-  const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t3 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t1 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 2> M_panels;
     segment_moments_gauss_panels<T>(2, 2, 1, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     F = delta_tau * M_panels[1] + M_panels[0] * tau_lo;
   } else if (t2 >= T(0) && t3 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 2> M_panels;
     segment_moments_gauss_panels<T>(2, 2, 1, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     F = M_panels[0] * tau_lo + M_panels[1] * delta_tau;
@@ -96,8 +96,8 @@ T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 44 +, 69 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 11364 +, 15427 ×, 2437 /, 57 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 47 +, 75 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 56065 +, 76496 ×, 12115 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -156,7 +156,7 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in)
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -a_minus_b * ab_ap;
-  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
@@ -166,25 +166,28 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in)
     const T t7 = T(1) / ab_ab;
     G_E = M_panels[5] * delta_tau + tau_lo * M_panels[4] - t7 * t6 * ab_ap;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(2, 4, 2, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t8 = M_panels[3] * tau_lo + delta_tau * M_panels[4];
-    G_ap = t8;
-    const T t9 = T(1) / ab_ab;
-    G_E = tau_lo * M_panels[4] + delta_tau * M_panels[5] - t8 * t9 * ab_ap;
+    G_ap = M_panels[3] * tau_lo + delta_tau * M_panels[4];
+    const T t8 = T(1) / ap_ap;
+    const T t9 = t8 * tau_lo;
+    const T t10 = T(1) / bp_bp;
+    const T t11 = T(1) / ab_ab;
+    G_E = (T(1) / T(2)) * (M_panels[0] * delta_tau + t9 - (delta_tau + tau_lo) * t10) * t11;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t10 = sqrt(cross_cross);
-    const T t11 = T(1) / t10;
-    const T J2 = atan2(t10, ap_bp) * t11;
-    const T t12 = T(1) / ab_ab;
-    const T t13 = T(1) / ap_ap;
-    const T t14 = T(1) / bp_bp;
-    const T t15 = t14 * a_minus_b + ab_ab * J2 + t13 * ab_ap;
-    const T t16 = T(1) / cross_cross;
-    G_ap = (T(1) / T(2)) * delta_tau * t12 * (t13 + t15 * t16 * ab_ap - t14) + (T(1) / T(2)) * tau_lo * t15 * t16;
-    G_E = (T(1) / T(2)) * (delta_tau * J2 + t13 * tau_lo - (delta_tau + tau_lo) * t14) * t12;
+    const T t12 = sqrt(cross_cross);
+    const T t13 = T(1) / t12;
+    const T J2 = atan2(t12, ap_bp) * t13;
+    const T t14 = T(1) / ab_ab;
+    const T t15 = T(1) / ap_ap;
+    const T t16 = T(1) / bp_bp;
+    const T t17 = t16 * a_minus_b + ab_ab * J2 + t15 * ab_ap;
+    const T t18 = T(1) / cross_cross;
+    G_ap = (T(1) / T(2)) * delta_tau * t14 * (t15 + t17 * t18 * ab_ap - t16) + (T(1) / T(2)) * tau_lo * t17 * t18;
+    const T t19 = t15 * tau_lo;
+    G_E = (T(1) / T(2)) * (delta_tau * J2 + t19 - (delta_tau + tau_lo) * t16) * t14;
   }
   const T g_factor = -T(2) * in.sigma * in.sigma * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -195,8 +198,8 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in)
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 46 +, 78 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 11365 +, 15432 ×, 2438 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 49 +, 84 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 56066 +, 76501 ×, 12115 /, 272 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -258,7 +261,7 @@ T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   T G_E;
   const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t6 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t4 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
@@ -269,30 +272,32 @@ T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t8 = T(1) / ab_ab;
     G_E = M_panels[5] * delta_tau + tau_lo * M_panels[4] - t8 * t7 * ab_ap;
   } else if (t5 >= T(0) && t6 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(2, 4, 2, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     F = tau_lo * M_panels[0] + delta_tau * M_panels[1];
-    const T t9 = tau_lo * M_panels[3] + delta_tau * M_panels[4];
-    G_ap = t9;
-    const T t10 = T(1) / ab_ab;
-    G_E = M_panels[5] * delta_tau + tau_lo * M_panels[4] - t10 * t9 * ab_ap;
+    G_ap = tau_lo * M_panels[3] + delta_tau * M_panels[4];
+    const T t9 = T(1) / ab_ab;
+    const T t10 = tau_lo + delta_tau;
+    const T t11 = T(1) / bp_bp;
+    G_E = (T(1) / T(2)) * t9 * (delta_tau * M_panels[0] + tau_lo * t3 - t10 * t11);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t11 = sqrt(cross_cross);
-    const T t12 = T(1) / t11;
-    const T J2 = atan2(t11, ap_bp) * t12;
-    const T t13 = T(1) / ab_ab;
-    F = (T(1) / T(2)) * delta_tau * t13 * (log_ratio + T(2) * ab_ap * J2) + tau_lo * J2;
-    const T t14 = T(1) / cross_cross;
-    const T t15 = T(1) / bp_bp;
-    const T t16 = ab_ap * t3 + t15 * a_minus_b + ab_ab * J2;
-    G_ap = (T(1) / T(2)) * tau_lo * t14 * t16 + (T(1) / T(2)) * (t3 + t14 * ab_ap * t16 - t15) * delta_tau * t13;
-    G_E = -(T(1) / T(2)) * t13 * ((tau_lo + delta_tau) * t15 - delta_tau * J2 - tau_lo * t3);
+    const T t12 = sqrt(cross_cross);
+    const T t13 = T(1) / t12;
+    const T J2 = atan2(t12, ap_bp) * t13;
+    const T t14 = T(1) / ab_ab;
+    F = (T(1) / T(2)) * delta_tau * t14 * (log_ratio + T(2) * ab_ap * J2) + tau_lo * J2;
+    const T t15 = T(1) / cross_cross;
+    const T t16 = T(1) / bp_bp;
+    const T t17 = ab_ap * t3 + t16 * a_minus_b + ab_ab * J2;
+    G_ap = (T(1) / T(2)) * tau_lo * t15 * t17 + (T(1) / T(2)) * (t3 + t15 * ab_ap * t17 - t16) * delta_tau * t14;
+    const T t18 = tau_lo + delta_tau;
+    G_E = -(T(1) / T(2)) * t14 * (t18 * t16 - delta_tau * J2 - tau_lo * t3);
   }
-  const T t17 = in.sigma * in.sigma;
-  const T g_factor = -T(2) * length * t17;
-  f = F * length * t17;
+  const T t19 = in.sigma * in.sigma;
+  const T g_factor = -T(2) * length * t19;
+  f = F * length * t19;
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
   grad[1] = g_factor * (foot1 * G_ap - ab1 * G_E);
   grad[2] = (G_ap * foot2 - ab2 * G_E) * g_factor;
@@ -301,8 +306,8 @@ T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 36 +, 60 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 8116 +, 12174 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 39 +, 66 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 53236 +, 80502 ×, 16163 /, 7544 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -364,7 +369,7 @@ T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t6 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t7 = -a_minus_b * ab_ap;
-  const T t8 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t8 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t6 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 3> M_panels;
@@ -373,7 +378,7 @@ T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
     const T t10 = delta_tau * delta_tau;
     F = t9 * M_panels[0] + T(2) * delta_tau * M_panels[1] * tau_lo + t10 * M_panels[2];
   } else if (t7 >= T(0) && t8 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 3> M_panels;
     segment_moments_gauss_panels<T>(3, 3, 2, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t11 = tau_lo * tau_lo;
@@ -399,8 +404,8 @@ T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 50 +, 103 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 13524 +, 20833 ×, 2437 /, 1139 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 53 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 53434 +, 82673 ×, 9685 /, 4520 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -460,7 +465,7 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in)
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -ab_ap * a_minus_b;
-  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
@@ -472,38 +477,45 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in)
     const T t9 = T(1) / ab_ab;
     G_E = T(2) * delta_tau * M_panels[6] * tau_lo + M_panels[5] * t6 + t7 * M_panels[7] - ab_ap * t8 * t9;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
     segment_moments_gauss_panels<T>(3, 5, 3, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t10 = delta_tau * delta_tau;
     const T t11 = tau_lo * tau_lo;
-    const T t12 = M_panels[6] * t10 + T(2) * delta_tau * tau_lo * M_panels[5] + M_panels[4] * t11;
-    G_ap = t12;
-    const T t13 = T(1) / ab_ab;
-    G_E = T(2) * M_panels[6] * delta_tau * tau_lo + M_panels[7] * t10 + t11 * M_panels[5] - ab_ap * t13 * t12;
+    G_ap = M_panels[6] * t10 + T(2) * delta_tau * tau_lo * M_panels[5] + M_panels[4] * t11;
+    const T t12 = T(1) / r0;
+    const T t13 = t12 * t12;
+    const T t14 = t13 * t12;
+    const T t15 = t14 * t11;
+    const T t16 = T(1) / r1;
+    const T t17 = t16 * t16;
+    const T t18 = t17 * t16;
+    const T t19 = T(1) / ab_ab;
+    G_E = (T(1) / T(3)) * (t15 + T(2) * M_panels[1] * t10 + T(2) * M_panels[0] * delta_tau * tau_lo - t18 * (t10 + t11 + T(2) * delta_tau * tau_lo)) * t19;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t14 = tau_lo * tau_lo;
-    const T t15 = T(1) / r0;
-    const T t16 = t15 * t15;
-    const T t17 = T(1) / r1;
-    const T t18 = t17 * a_minus_b + ab_ap * t15;
-    const T t19 = T(1) / cross_cross;
-    const T t20 = t17 * t17;
-    const T t21 = ab_ap * t15 * t16 + T(2) * t18 * ab_ab * t19 + t20 * t17 * a_minus_b;
-    const T t22 = delta_tau * delta_tau;
-    const T t23 = t20 * t17 - t15 * t16 - ab_ap * t21 * t19;
-    const T t24 = T(1) / ab_ab;
-    G_ap = (T(1) / T(3)) * t14 * t21 * t19 - (T(1) / T(3)) * t22 * (ap_ap * t21 * t19 + T(2) * ab_ap * t23 * t24 - T(3) * t18 * t19) * t24 - (T(2) / T(3)) * t23 * delta_tau * tau_lo * t24;
-    const T t25 = t15 * t15;
-    const T t26 = t25 * t15;
-    const T t27 = t17 * t17;
-    const T t28 = t27 * t17;
-    G_E = (T(1) / T(3)) * t24 * (t26 * t14 + T(2) * t22 * t24 * (t15 + ab_ap * t18 * t19 - t17) + T(2) * t18 * delta_tau * tau_lo * t19 - t28 * (t22 + t14 + T(2) * delta_tau * tau_lo));
+    const T t20 = tau_lo * tau_lo;
+    const T t21 = T(1) / r0;
+    const T t22 = t21 * t21;
+    const T t23 = T(1) / r1;
+    const T t24 = t23 * a_minus_b + ab_ap * t21;
+    const T t25 = T(1) / cross_cross;
+    const T t26 = t23 * t23;
+    const T t27 = ab_ap * t21 * t22 + T(2) * t24 * ab_ab * t25 + t26 * t23 * a_minus_b;
+    const T t28 = delta_tau * delta_tau;
+    const T t29 = t26 * t23 - t21 * t22 - ab_ap * t27 * t25;
+    const T t30 = T(1) / ab_ab;
+    G_ap = (T(1) / T(3)) * t20 * t27 * t25 - (T(1) / T(3)) * t28 * (ap_ap * t27 * t25 + T(2) * ab_ap * t29 * t30 - T(3) * t24 * t25) * t30 - (T(2) / T(3)) * t29 * delta_tau * tau_lo * t30;
+    const T t31 = t21 * t21;
+    const T t32 = t31 * t21;
+    const T t33 = t32 * t20;
+    const T t34 = t23 * t23;
+    const T t35 = t34 * t23;
+    G_E = (T(1) / T(3)) * t30 * (t33 + T(2) * t28 * t30 * (t21 + ab_ap * t24 * t25 - t23) + T(2) * t24 * delta_tau * tau_lo * t25 - t35 * (t28 + t20 + T(2) * delta_tau * tau_lo));
   }
-  const T t29 = in.sigma * in.sigma;
-  const T t30 = t29 * in.sigma;
-  const T g_factor = -T(3) * length * t30;
+  const T t36 = in.sigma * in.sigma;
+  const T t37 = t36 * in.sigma;
+  const T g_factor = -T(3) * length * t37;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
   grad[2] = g_factor * (G_ap * foot2 - G_E * ab2);
@@ -512,8 +524,8 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in)
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 55 +, 124 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 13527 +, 20846 ×, 2439 /, 1139 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 58 +, 130 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 53437 +, 82686 ×, 9687 /, 4520 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -588,7 +600,7 @@ T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   T G_E;
   const T t8 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t9 = -ab_ap * a_minus_b;
-  const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t10 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t8 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
@@ -601,42 +613,49 @@ T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t14 = T(1) / ab_ab;
     G_E = M_panels[7] * t12 + T(2) * delta_tau * tau_lo * M_panels[6] + M_panels[5] * t11 - t13 * ab_ap * t14;
   } else if (t9 >= T(0) && t10 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
     segment_moments_gauss_panels<T>(3, 5, 3, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t15 = tau_lo * tau_lo;
     const T t16 = delta_tau * delta_tau;
     F = T(2) * delta_tau * tau_lo * M_panels[1] + M_panels[0] * t15 + M_panels[2] * t16;
-    const T t17 = t15 * M_panels[4] + M_panels[6] * t16 + T(2) * M_panels[5] * delta_tau * tau_lo;
-    G_ap = t17;
-    const T t18 = T(1) / ab_ab;
-    G_E = T(2) * M_panels[6] * delta_tau * tau_lo + t16 * M_panels[7] + M_panels[5] * t15 - ab_ap * t17 * t18;
+    G_ap = t15 * M_panels[4] + M_panels[6] * t16 + T(2) * M_panels[5] * delta_tau * tau_lo;
+    const T t17 = T(1) / r0;
+    const T t18 = t17 * t17;
+    const T t19 = t18 * t17;
+    const T t20 = t19 * t15;
+    const T t21 = T(1) / r1;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t21;
+    const T t24 = T(1) / ab_ab;
+    G_E = (T(1) / T(3)) * (t20 + T(2) * M_panels[0] * delta_tau * tau_lo + T(2) * t16 * M_panels[1] - t23 * (t16 + T(2) * delta_tau * tau_lo + t15)) * t24;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t19 = T(1) / cross_cross;
-    const T t20 = T(1) / r1;
-    const T t21 = T(1) / r0;
-    const T t22 = t20 * a_minus_b + ab_ap * t21;
-    const T t23 = tau_lo * tau_lo;
-    const T t24 = t19 * ab_ap * t22 + t21 - t20;
-    const T t25 = T(1) / ab_ab;
-    const T t26 = delta_tau * delta_tau;
-    F = t19 * t22 * t23 + T(2) * t24 * delta_tau * tau_lo * t25 + (T(2) * ab_ap * t24 * t25 + J1 - t19 * ap_ap * t22) * t26 * t25;
-    const T t27 = t21 * t21;
-    const T t28 = t20 * t20;
-    const T t29 = ab_ap * t27 * t21 + T(2) * t19 * t22 * ab_ab + t20 * t28 * a_minus_b;
-    const T t30 = t20 * t28 - t27 * t21 - t29 * t19 * ab_ap;
-    G_ap = (T(1) / T(3)) * t29 * t19 * t23 - (T(2) / T(3)) * t30 * delta_tau * tau_lo * t25 - (T(1) / T(3)) * t26 * t25 * (T(2) * ab_ap * t30 * t25 + t29 * t19 * ap_ap - T(3) * t19 * t22);
-    const T t31 = t21 * t21;
-    const T t32 = t31 * t21;
-    const T t33 = t20 * t20;
-    const T t34 = t33 * t20;
-    G_E = (T(1) / T(3)) * (t32 * t23 + T(2) * t24 * t26 * t25 + T(2) * t19 * t22 * delta_tau * tau_lo - t34 * (t26 + T(2) * delta_tau * tau_lo + t23)) * t25;
+    const T t25 = T(1) / cross_cross;
+    const T t26 = T(1) / r1;
+    const T t27 = T(1) / r0;
+    const T t28 = t26 * a_minus_b + ab_ap * t27;
+    const T t29 = tau_lo * tau_lo;
+    const T t30 = t25 * ab_ap * t28 + t27 - t26;
+    const T t31 = T(1) / ab_ab;
+    const T t32 = delta_tau * delta_tau;
+    F = t25 * t28 * t29 + T(2) * t30 * delta_tau * tau_lo * t31 + (T(2) * ab_ap * t30 * t31 + J1 - t25 * ap_ap * t28) * t32 * t31;
+    const T t33 = t27 * t27;
+    const T t34 = t26 * t26;
+    const T t35 = ab_ap * t33 * t27 + T(2) * t25 * t28 * ab_ab + t26 * t34 * a_minus_b;
+    const T t36 = t26 * t34 - t33 * t27 - t35 * t25 * ab_ap;
+    G_ap = (T(1) / T(3)) * t35 * t25 * t29 - (T(2) / T(3)) * t36 * delta_tau * tau_lo * t31 - (T(1) / T(3)) * t32 * t31 * (T(2) * ab_ap * t36 * t31 + t35 * t25 * ap_ap - T(3) * t25 * t28);
+    const T t37 = t27 * t27;
+    const T t38 = t37 * t27;
+    const T t39 = t38 * t29;
+    const T t40 = t26 * t26;
+    const T t41 = t40 * t26;
+    G_E = (T(1) / T(3)) * (t39 + T(2) * t30 * t32 * t31 + T(2) * t25 * t28 * delta_tau * tau_lo - t41 * (t32 + T(2) * delta_tau * tau_lo + t29)) * t31;
   }
-  const T t35 = in.sigma * in.sigma;
-  const T t36 = t35 * in.sigma;
-  const T g_factor = -T(3) * length * t36;
-  f = length * t36 * F;
+  const T t42 = in.sigma * in.sigma;
+  const T t43 = t42 * in.sigma;
+  const T g_factor = -T(3) * length * t43;
+  f = length * t43 * F;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
   grad[1] = -g_factor * (G_E * ab1 - foot1 * G_ap);
   grad[2] = -g_factor * (G_E * ab2 - G_ap * foot2);
@@ -645,8 +664,8 @@ T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 42 +, 77 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 9198 +, 12177 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 45 +, 83 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 45298 +, 60345 ×, 12112 /, 272 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -695,7 +714,7 @@ T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t2 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t3 = -a_minus_b * ab_ap;
-  const T t4 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t4 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t2 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 4> M_panels;
@@ -706,7 +725,7 @@ T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
     const T t8 = t7 * tau_lo;
     F = t6 * M_panels[3] + t8 * M_panels[0] + T(3) * tau_lo * t5 * M_panels[2] + T(3) * t7 * delta_tau * M_panels[1];
   } else if (t3 >= T(0) && t4 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 4> M_panels;
     segment_moments_gauss_panels<T>(4, 4, 3, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t9 = delta_tau * delta_tau;
@@ -739,8 +758,8 @@ T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 60 +, 131 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 15688 +, 20844 ×, 2437 /, 57 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 63 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 51671 +, 68860 ×, 8065 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -799,7 +818,7 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in)
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -ab_ap * a_minus_b;
-  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
@@ -813,43 +832,48 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in)
     const T t11 = T(1) / ab_ab;
     G_E = t8 * M_panels[6] + T(3) * tau_lo * M_panels[8] * t6 + M_panels[9] * t9 + T(3) * t7 * M_panels[7] * delta_tau - t11 * ab_ap * t10;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(4, 6, 4, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t12 = delta_tau * delta_tau;
     const T t13 = tau_lo * tau_lo;
     const T t14 = t13 * tau_lo;
     const T t15 = t12 * delta_tau;
-    const T t16 = T(3) * tau_lo * M_panels[7] * t12 + t14 * M_panels[5] + T(3) * t13 * M_panels[6] * delta_tau + M_panels[8] * t15;
-    G_ap = t16;
-    const T t17 = T(1) / ab_ab;
-    G_E = T(3) * tau_lo * M_panels[8] * t12 + T(3) * t13 * M_panels[7] * delta_tau + t14 * M_panels[6] + M_panels[9] * t15 - t17 * ab_ap * t16;
+    G_ap = T(3) * tau_lo * M_panels[7] * t12 + t14 * M_panels[5] + T(3) * t13 * M_panels[6] * delta_tau + M_panels[8] * t15;
+    const T t16 = T(1) / ab_ab;
+    const T t17 = T(1) / ap_ap;
+    const T t18 = t17 * t17;
+    const T t19 = T(3) * t13 * delta_tau + t14 + T(3) * tau_lo * t12 + t15;
+    const T t20 = T(1) / bp_bp;
+    const T t21 = t20 * t20;
+    G_E = (T(1) / T(4)) * t16 * (t14 * t18 + T(6) * tau_lo * M_panels[1] * t12 + T(3) * t13 * M_panels[0] * delta_tau + T(3) * M_panels[2] * t15 - t19 * t21);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t18 = sqrt(cross_cross);
-    const T t19 = T(1) / t18;
-    const T J2 = t19 * atan2(t18, ap_bp);
-    const T t20 = T(1) / ap_ap;
-    const T t21 = T(1) / cross_cross;
-    const T t22 = T(1) / bp_bp;
-    const T t23 = ab_ab * J2 + ab_ap * t20 + a_minus_b * t22;
-    const T t24 = t20 + t21 * ab_ap * t23 - t22;
-    const T t25 = T(1) / ab_ab;
-    const T t26 = t22 * t22;
-    const T t27 = t20 * t20;
-    const T t28 = T(2) * a_minus_b * t26 + T(2) * ab_ap * t27 + T(3) * ab_ab * t21 * t23;
-    const T t29 = T(2) * t26 - t28 * t21 * ab_ap - T(2) * t27;
-    const T t30 = T(2) * t29 * t25 * ab_ap + t28 * t21 * ap_ap - T(4) * t21 * t23;
-    const T t31 = delta_tau * delta_tau;
-    const T t32 = t31 * delta_tau;
-    const T t33 = tau_lo * tau_lo;
-    const T t34 = t33 * tau_lo;
-    G_ap = (T(1) / T(8)) * (T(4) * t24 * t25 + t29 * t25 * ap_ap - T(2) * t25 * t30 * ab_ap) * t25 * t32 + (T(1) / T(8)) * t34 * t28 * t21 - (T(3) / T(8)) * tau_lo * t25 * t30 * t31 - (T(3) / T(8)) * t29 * t33 * t25 * delta_tau;
-    G_E = (T(1) / T(8)) * t25 * (T(2) * t34 * t27 + T(3) * t33 * t21 * t23 * delta_tau + T(6) * tau_lo * t24 * t25 * t31 - T(3) * t25 * t32 * (t21 * ap_ap * t23 - T(2) * J2 - T(2) * t24 * t25 * ab_ap) - T(2) * (T(3) * t33 * delta_tau + t34 + T(3) * tau_lo * t31 + t32) * t26);
+    const T t22 = sqrt(cross_cross);
+    const T t23 = T(1) / t22;
+    const T J2 = t23 * atan2(t22, ap_bp);
+    const T t24 = T(1) / ap_ap;
+    const T t25 = T(1) / cross_cross;
+    const T t26 = T(1) / bp_bp;
+    const T t27 = ab_ab * J2 + ab_ap * t24 + a_minus_b * t26;
+    const T t28 = t24 + t25 * ab_ap * t27 - t26;
+    const T t29 = T(1) / ab_ab;
+    const T t30 = t26 * t26;
+    const T t31 = t24 * t24;
+    const T t32 = T(2) * a_minus_b * t30 + T(2) * ab_ap * t31 + T(3) * ab_ab * t25 * t27;
+    const T t33 = T(2) * t30 - t32 * t25 * ab_ap - T(2) * t31;
+    const T t34 = T(2) * t33 * t29 * ab_ap + t32 * t25 * ap_ap - T(4) * t25 * t27;
+    const T t35 = delta_tau * delta_tau;
+    const T t36 = t35 * delta_tau;
+    const T t37 = tau_lo * tau_lo;
+    const T t38 = t37 * tau_lo;
+    G_ap = (T(1) / T(8)) * (T(4) * t28 * t29 + t33 * t29 * ap_ap - T(2) * t29 * t34 * ab_ap) * t29 * t36 + (T(1) / T(8)) * t38 * t32 * t25 - (T(3) / T(8)) * tau_lo * t29 * t34 * t35 - (T(3) / T(8)) * t33 * t37 * t29 * delta_tau;
+    const T t39 = T(3) * t37 * delta_tau + t38 + T(3) * tau_lo * t35 + t36;
+    G_E = (T(1) / T(8)) * t29 * (T(2) * t38 * t31 + T(3) * t37 * t25 * t27 * delta_tau + T(6) * tau_lo * t28 * t29 * t35 - T(3) * t29 * t36 * (t25 * ap_ap * t27 - T(2) * J2 - T(2) * t28 * t29 * ab_ap) - T(2) * t39 * t30);
   }
-  const T t35 = in.sigma * in.sigma;
-  const T t36 = t35 * t35;
-  const T g_factor = -T(4) * length * t36;
+  const T t40 = in.sigma * in.sigma;
+  const T t41 = t40 * t40;
+  const T g_factor = -T(4) * length * t41;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = -g_factor * (G_E * ab1 - G_ap * foot1);
   grad[2] = -(G_E * ab2 - foot2 * G_ap) * g_factor;
@@ -858,8 +882,8 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in)
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 66 +, 156 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 15691 +, 20855 ×, 2438 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 69 +, 162 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 51674 +, 68871 ×, 8065 /, 182 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -921,7 +945,7 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   T G_E;
   const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t5 = -a_minus_b * ab_ap;
-  const T t6 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t6 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t4 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
@@ -936,7 +960,7 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t12 = T(1) / ab_ab;
     G_E = T(3) * delta_tau * t8 * M_panels[7] + t10 * M_panels[9] + T(3) * M_panels[8] * t7 * tau_lo + t9 * M_panels[6] - t11 * t12 * ab_ap;
   } else if (t5 >= T(0) && t6 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(4, 6, 4, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t13 = tau_lo * tau_lo;
@@ -944,38 +968,42 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t15 = delta_tau * delta_tau;
     const T t16 = t15 * delta_tau;
     F = t14 * M_panels[0] + t16 * M_panels[3] + T(3) * delta_tau * M_panels[1] * t13 + T(3) * t15 * tau_lo * M_panels[2];
-    const T t17 = t14 * M_panels[5] + t16 * M_panels[8] + T(3) * delta_tau * t13 * M_panels[6] + T(3) * M_panels[7] * t15 * tau_lo;
-    G_ap = t17;
-    const T t18 = T(1) / ab_ab;
-    G_E = T(3) * t15 * tau_lo * M_panels[8] + t14 * M_panels[6] + T(3) * M_panels[7] * delta_tau * t13 + t16 * M_panels[9] - t17 * t18 * ab_ap;
+    G_ap = t14 * M_panels[5] + t16 * M_panels[8] + T(3) * delta_tau * t13 * M_panels[6] + T(3) * M_panels[7] * t15 * tau_lo;
+    const T t17 = T(1) / ab_ab;
+    const T t18 = t3 * t3;
+    const T t19 = T(3) * t15 * tau_lo + t14 + t16 + T(3) * delta_tau * t13;
+    const T t20 = T(1) / bp_bp;
+    const T t21 = t20 * t20;
+    G_E = (T(1) / T(4)) * t17 * (t18 * t14 + T(3) * delta_tau * t13 * M_panels[0] + T(6) * t15 * M_panels[1] * tau_lo + T(3) * t16 * M_panels[2] - t19 * t21);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t19 = sqrt(cross_cross);
-    const T t20 = T(1) / t19;
-    const T J2 = t20 * atan2(t19, ap_bp);
-    const T t21 = delta_tau * delta_tau;
-    const T t22 = T(1) / ab_ab;
-    const T t23 = T(1) / bp_bp;
-    const T t24 = J2 * ab_ab + t3 * ab_ap + a_minus_b * t23;
-    const T t25 = T(1) / cross_cross;
-    const T t26 = t24 * t25 * ab_ap + t3 - t23;
-    const T t27 = T(2) * J2 + T(2) * t22 * t26 * ab_ap - ap_ap * t24 * t25;
-    const T t28 = tau_lo * tau_lo;
-    const T t29 = t28 * tau_lo;
-    const T t30 = t21 * delta_tau;
-    F = (T(3) / T(2)) * t21 * tau_lo * t27 * t22 + (T(1) / T(2)) * t29 * t24 * t25 + (T(3) / T(2)) * delta_tau * t28 * t22 * t26 - (T(1) / T(2)) * t30 * t22 * (ap_ap * t22 * t26 - T(2) * t27 * t22 * ab_ap - t22 * (T(2) * J2 * ab_ap + log_ratio));
-    const T t31 = t3 * t3;
-    const T t32 = t23 * t23;
-    const T t33 = T(3) * t24 * ab_ab * t25 + T(2) * a_minus_b * t32 + T(2) * t31 * ab_ap;
-    const T t34 = T(2) * t31 + t25 * ab_ap * t33 - T(2) * t32;
-    const T t35 = ap_ap * t25 * t33 - T(4) * t24 * t25 - T(2) * t34 * t22 * ab_ap;
-    G_ap = (T(1) / T(8)) * (T(4) * t22 * t26 - ap_ap * t34 * t22 - T(2) * t22 * t35 * ab_ap) * t30 * t22 + (T(1) / T(8)) * t29 * t25 * t33 + (T(3) / T(8)) * t34 * delta_tau * t28 * t22 - (T(3) / T(8)) * t21 * tau_lo * t22 * t35;
-    G_E = (T(1) / T(8)) * t22 * (T(2) * t31 * t29 + T(6) * t21 * tau_lo * t22 * t26 + T(3) * delta_tau * t28 * t24 * t25 + T(3) * t30 * t27 * t22 - T(2) * (T(3) * t21 * tau_lo + t29 + t30 + T(3) * delta_tau * t28) * t32);
+    const T t22 = sqrt(cross_cross);
+    const T t23 = T(1) / t22;
+    const T J2 = t23 * atan2(t22, ap_bp);
+    const T t24 = delta_tau * delta_tau;
+    const T t25 = T(1) / ab_ab;
+    const T t26 = T(1) / bp_bp;
+    const T t27 = J2 * ab_ab + t3 * ab_ap + a_minus_b * t26;
+    const T t28 = T(1) / cross_cross;
+    const T t29 = t27 * t28 * ab_ap + t3 - t26;
+    const T t30 = T(2) * J2 + T(2) * t25 * t29 * ab_ap - ap_ap * t27 * t28;
+    const T t31 = tau_lo * tau_lo;
+    const T t32 = t31 * tau_lo;
+    const T t33 = t24 * delta_tau;
+    F = (T(3) / T(2)) * t24 * tau_lo * t30 * t25 + (T(1) / T(2)) * t32 * t27 * t28 + (T(3) / T(2)) * delta_tau * t31 * t25 * t29 - (T(1) / T(2)) * t33 * t25 * (ap_ap * t25 * t29 - T(2) * t30 * t25 * ab_ap - t25 * (T(2) * J2 * ab_ap + log_ratio));
+    const T t34 = t3 * t3;
+    const T t35 = t26 * t26;
+    const T t36 = T(3) * t27 * ab_ab * t28 + T(2) * a_minus_b * t35 + T(2) * t34 * ab_ap;
+    const T t37 = T(2) * t34 + t28 * ab_ap * t36 - T(2) * t35;
+    const T t38 = ap_ap * t28 * t36 - T(4) * t27 * t28 - T(2) * t37 * t25 * ab_ap;
+    G_ap = (T(1) / T(8)) * (T(4) * t25 * t29 - ap_ap * t37 * t25 - T(2) * t25 * t38 * ab_ap) * t33 * t25 + (T(1) / T(8)) * t32 * t28 * t36 + (T(3) / T(8)) * t37 * delta_tau * t31 * t25 - (T(3) / T(8)) * t24 * tau_lo * t25 * t38;
+    const T t39 = T(3) * t24 * tau_lo + t32 + t33 + T(3) * delta_tau * t31;
+    G_E = (T(1) / T(8)) * t25 * (T(2) * t34 * t32 + T(6) * t24 * tau_lo * t25 * t29 + T(3) * delta_tau * t31 * t27 * t28 + T(3) * t33 * t30 * t25 - T(2) * t39 * t35);
   }
-  const T t36 = in.sigma * in.sigma;
-  const T t37 = t36 * t36;
-  const T g_factor = -T(4) * length * t37;
-  f = F * length * t37;
+  const T t40 = in.sigma * in.sigma;
+  const T t41 = t40 * t40;
+  const T g_factor = -T(4) * length * t41;
+  f = F * length * t41;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
   grad[1] = -g_factor * (ab1 * G_E - foot1 * G_ap);
   grad[2] = -g_factor * (ab2 * G_E - G_ap * foot2);
@@ -984,8 +1012,8 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 48 +, 109 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 10278 +, 16505 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 51 +, 115 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 40526 +, 65457 ×, 9683 /, 4520 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1047,7 +1075,7 @@ T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t6 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t7 = -a_minus_b * ab_ap;
-  const T t8 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t8 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t6 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 5> M_panels;
@@ -1060,7 +1088,7 @@ T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
     const T t14 = t9 * t9;
     F = T(4) * t10 * delta_tau * M_panels[1] + M_panels[4] * t12 + T(4) * tau_lo * t13 * M_panels[3] + T(6) * t9 * t11 * M_panels[2] + t14 * M_panels[0];
   } else if (t7 >= T(0) && t8 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 5> M_panels;
     segment_moments_gauss_panels<T>(5, 5, 4, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t15 = delta_tau * delta_tau;
@@ -1101,8 +1129,8 @@ T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 68 +, 177 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 17848 +, 27330 ×, 2437 /, 1139 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 71 +, 183 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 50632 +, 77752 ×, 6940 /, 3239 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1162,7 +1190,7 @@ std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in)
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -ab_ap * a_minus_b;
-  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 12> M_panels;
@@ -1178,7 +1206,7 @@ std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in)
     const T t13 = T(1) / ab_ab;
     G_E = t10 * M_panels[11] + t11 * M_panels[7] + T(6) * M_panels[9] * t6 * t8 + T(4) * t7 * delta_tau * M_panels[8] + T(4) * tau_lo * t9 * M_panels[10] - t13 * ab_ap * t12;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 12> M_panels;
     segment_moments_gauss_panels<T>(5, 7, 5, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t14 = tau_lo * tau_lo;
@@ -1187,47 +1215,56 @@ std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in)
     const T t17 = delta_tau * delta_tau;
     const T t18 = t17 * delta_tau;
     const T t19 = t17 * t17;
-    const T t20 = T(4) * M_panels[7] * t15 * delta_tau + t16 * M_panels[6] + T(4) * tau_lo * t18 * M_panels[9] + M_panels[10] * t19 + T(6) * t14 * t17 * M_panels[8];
-    G_ap = t20;
-    const T t21 = T(1) / ab_ab;
-    G_E = T(6) * t14 * t17 * M_panels[9] + M_panels[7] * t16 + T(4) * M_panels[10] * tau_lo * t18 + t19 * M_panels[11] + T(4) * t15 * delta_tau * M_panels[8] - t21 * ab_ap * t20;
-  } else {
-    // recurrence (1) upwards from J_1, J_2
-    const T t22 = delta_tau * delta_tau;
-    const T t23 = t22 * delta_tau;
-    const T t24 = T(1) / ab_ab;
-    const T t25 = T(1) / r0;
+    G_ap = T(4) * M_panels[7] * t15 * delta_tau + t16 * M_panels[6] + T(4) * tau_lo * t18 * M_panels[9] + M_panels[10] * t19 + T(6) * t14 * t17 * M_panels[8];
+    const T t20 = T(1) / r0;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t20;
+    const T t24 = T(4) * tau_lo * t18 + t19 + t16 + T(6) * t14 * t17 + T(4) * t15 * delta_tau;
+    const T t25 = T(1) / r1;
     const T t26 = t25 * t25;
     const T t27 = t26 * t26;
-    const T t28 = T(1) / r1;
-    const T t29 = t28 * t28;
-    const T t30 = t29 * t29;
-    const T t31 = T(1) / cross_cross;
-    const T t32 = ab_ap * t25 + t28 * a_minus_b;
-    const T t33 = t28 * a_minus_b * t29 + ab_ap * t26 * t25 + T(2) * ab_ab * t31 * t32;
-    const T t34 = T(3) * ab_ap * t27 * t25 + T(3) * t28 * a_minus_b * t30 + T(4) * ab_ab * t31 * t33;
-    const T t35 = T(3) * t27 * t25 + t34 * t31 * ab_ap - T(3) * t28 * t30;
-    const T t36 = T(2) * t24 * t35 * ab_ap + T(5) * t31 * t33 - t34 * t31 * ap_ap;
-    const T t37 = t28 * t29 - t26 * t25 - t31 * ab_ap * t33;
-    const T t38 = T(2) * t24 * t36 * ab_ap - t24 * t35 * ap_ap - T(5) * t24 * t37;
-    const T t39 = tau_lo * tau_lo;
-    const T t40 = t39 * t39;
-    const T t41 = t39 * tau_lo;
-    const T t42 = t22 * t22;
-    const T t43 = t31 * t33 * ap_ap + T(2) * t24 * t37 * ab_ap - T(3) * t31 * t32;
-    G_ap = (T(4) / T(15)) * tau_lo * t23 * t24 * t38 + (T(2) / T(5)) * t39 * t22 * t24 * t36 + (T(1) / T(15)) * t34 * t40 * t31 + (T(4) / T(15)) * t41 * delta_tau * t24 * t35 - (T(1) / T(15)) * t42 * t24 * (T(5) * t24 * t43 + t24 * t36 * ap_ap - T(2) * t24 * ab_ap * t38);
-    const T t44 = t25 * t25;
-    const T t45 = t44 * t44;
-    const T t46 = t45 * t25;
-    const T t47 = t28 * t28;
+    const T t28 = t27 * t25;
+    const T t29 = T(1) / ab_ab;
+    G_E = (T(1) / T(5)) * (T(12) * t14 * t17 * M_panels[1] + t16 * t23 + T(12) * tau_lo * t18 * M_panels[2] + T(4) * t19 * M_panels[3] + T(4) * M_panels[0] * t15 * delta_tau - t24 * t28) * t29;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t30 = delta_tau * delta_tau;
+    const T t31 = t30 * delta_tau;
+    const T t32 = T(1) / ab_ab;
+    const T t33 = T(1) / r0;
+    const T t34 = t33 * t33;
+    const T t35 = t34 * t34;
+    const T t36 = T(1) / r1;
+    const T t37 = t36 * t36;
+    const T t38 = t37 * t37;
+    const T t39 = T(1) / cross_cross;
+    const T t40 = ab_ap * t33 + t36 * a_minus_b;
+    const T t41 = t36 * a_minus_b * t37 + ab_ap * t34 * t33 + T(2) * ab_ab * t39 * t40;
+    const T t42 = T(3) * ab_ap * t35 * t33 + T(3) * t36 * a_minus_b * t38 + T(4) * ab_ab * t39 * t41;
+    const T t43 = T(3) * t35 * t33 + t42 * t39 * ab_ap - T(3) * t36 * t38;
+    const T t44 = T(2) * t32 * t43 * ab_ap + T(5) * t39 * t41 - t42 * t39 * ap_ap;
+    const T t45 = t36 * t37 - t34 * t33 - t39 * ab_ap * t41;
+    const T t46 = T(2) * t32 * t44 * ab_ap - t32 * t43 * ap_ap - T(5) * t32 * t45;
+    const T t47 = tau_lo * tau_lo;
     const T t48 = t47 * t47;
-    const T t49 = t48 * t28;
-    G_E = (T(1) / T(15)) * t24 * (T(3) * t40 * t46 + T(4) * t41 * delta_tau * t31 * t33 + T(4) * t42 * t24 * (t24 * t37 * ap_ap + T(3) * t24 * (t31 * ab_ap * t32 + t25 - t28) - T(2) * t24 * t43 * ab_ap) - T(12) * tau_lo * t23 * t24 * t43 - T(12) * t39 * t22 * t24 * t37 - T(3) * (T(4) * tau_lo * t23 + t42 + t40 + T(6) * t39 * t22 + T(4) * t41 * delta_tau) * t49);
+    const T t49 = t47 * tau_lo;
+    const T t50 = t30 * t30;
+    const T t51 = t39 * t41 * ap_ap + T(2) * t32 * t45 * ab_ap - T(3) * t39 * t40;
+    G_ap = (T(4) / T(15)) * tau_lo * t31 * t32 * t46 + (T(2) / T(5)) * t47 * t30 * t32 * t44 + (T(1) / T(15)) * t42 * t48 * t39 + (T(4) / T(15)) * t49 * delta_tau * t32 * t43 - (T(1) / T(15)) * t50 * t32 * (T(5) * t32 * t51 + t32 * t44 * ap_ap - T(2) * t32 * ab_ap * t46);
+    const T t52 = t33 * t33;
+    const T t53 = t52 * t52;
+    const T t54 = t53 * t33;
+    const T t55 = T(4) * tau_lo * t31 + t50 + t48 + T(6) * t47 * t30 + T(4) * t49 * delta_tau;
+    const T t56 = t36 * t36;
+    const T t57 = t56 * t56;
+    const T t58 = t57 * t36;
+    G_E = (T(1) / T(15)) * t32 * (T(3) * t48 * t54 + T(4) * t49 * delta_tau * t39 * t41 + T(4) * t50 * t32 * (t32 * t45 * ap_ap + T(3) * t32 * (t39 * ab_ap * t40 + t33 - t36) - T(2) * t32 * t51 * ab_ap) - T(12) * tau_lo * t31 * t32 * t51 - T(12) * t47 * t30 * t32 * t45 - T(3) * t55 * t58);
   }
-  const T t50 = in.sigma * in.sigma;
-  const T t51 = t50 * t50;
-  const T t52 = t51 * in.sigma;
-  const T g_factor = -T(5) * length * t52;
+  const T t59 = in.sigma * in.sigma;
+  const T t60 = t59 * t59;
+  const T t61 = t60 * in.sigma;
+  const T g_factor = -T(5) * length * t61;
   grad[0] = -g_factor * (G_E * ab0 - G_ap * foot0);
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
   grad[2] = -(G_E * ab2 - G_ap * foot2) * g_factor;
@@ -1236,8 +1273,8 @@ std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in)
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 77 +, 215 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 17853 +, 27349 ×, 2439 /, 1139 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 80 +, 221 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 50637 +, 77771 ×, 6942 /, 3239 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1312,7 +1349,7 @@ T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   T G_E;
   const T t8 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t9 = -ab_ap * a_minus_b;
-  const T t10 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t10 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t8 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 12> M_panels;
@@ -1329,7 +1366,7 @@ T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t18 = T(1) / ab_ab;
     G_E = T(6) * M_panels[9] * t11 * t13 + T(4) * M_panels[8] * delta_tau * t14 + M_panels[7] * t15 + M_panels[11] * t12 + T(4) * M_panels[10] * t16 * tau_lo - ab_ap * t17 * t18;
   } else if (t9 >= T(0) && t10 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 12> M_panels;
     segment_moments_gauss_panels<T>(5, 7, 5, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t19 = delta_tau * delta_tau;
@@ -1339,51 +1376,60 @@ T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t23 = t20 * t20;
     const T t24 = t20 * tau_lo;
     F = T(6) * M_panels[2] * t19 * t20 + T(4) * t21 * tau_lo * M_panels[3] + M_panels[4] * t22 + t23 * M_panels[0] + T(4) * M_panels[1] * delta_tau * t24;
-    const T t25 = M_panels[6] * t23 + T(4) * M_panels[7] * delta_tau * t24 + M_panels[10] * t22 + T(4) * t21 * tau_lo * M_panels[9] + T(6) * M_panels[8] * t19 * t20;
-    G_ap = t25;
-    const T t26 = T(1) / ab_ab;
-    G_E = T(4) * M_panels[8] * delta_tau * t24 + T(4) * M_panels[10] * t21 * tau_lo + T(6) * t19 * t20 * M_panels[9] + M_panels[7] * t23 + M_panels[11] * t22 - ab_ap * t25 * t26;
+    G_ap = M_panels[6] * t23 + T(4) * M_panels[7] * delta_tau * t24 + M_panels[10] * t22 + T(4) * t21 * tau_lo * M_panels[9] + T(6) * M_panels[8] * t19 * t20;
+    const T t25 = T(1) / r0;
+    const T t26 = t25 * t25;
+    const T t27 = t26 * t26;
+    const T t28 = t27 * t25;
+    const T t29 = T(1) / r1;
+    const T t30 = t29 * t29;
+    const T t31 = t30 * t30;
+    const T t32 = t31 * t29;
+    const T t33 = T(6) * t19 * t20 + T(4) * t21 * tau_lo + t22 + t23 + T(4) * delta_tau * t24;
+    const T t34 = T(1) / ab_ab;
+    G_E = (T(1) / T(5)) * (T(12) * M_panels[1] * t19 * t20 + T(4) * delta_tau * t24 * M_panels[0] + T(12) * M_panels[2] * t21 * tau_lo + T(4) * t22 * M_panels[3] + t23 * t28 - t32 * t33) * t34;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t27 = T(1) / r0;
-    const T t28 = T(1) / r1;
-    const T t29 = ab_ap * t27 + t28 * a_minus_b;
-    const T t30 = T(1) / cross_cross;
-    const T t31 = t29 * t30 * ab_ap + t27 - t28;
-    const T t32 = T(1) / ab_ab;
-    const T t33 = t28 * t28;
-    const T t34 = t27 * t27;
-    const T t35 = T(2) * t29 * t30 * ab_ab + t28 * t33 * a_minus_b + ab_ap * t34 * t27;
-    const T t36 = t30 * ab_ap * t35 + t34 * t27 - t28 * t33;
-    const T t37 = t30 * ap_ap * t35 - T(2) * ab_ap * t36 * t32 - T(3) * t29 * t30;
-    const T t38 = T(3) * t31 * t32 - ap_ap * t36 * t32 - T(2) * ab_ap * t37 * t32;
-    const T t39 = delta_tau * delta_tau;
-    const T t40 = t39 * t39;
-    const T t41 = t39 * delta_tau;
-    const T t42 = tau_lo * tau_lo;
-    const T t43 = t42 * t42;
-    const T t44 = t42 * tau_lo;
-    F = (T(1) / T(3)) * (T(3) * (T(2) * ab_ap * t31 * t32 + J1 - t29 * t30 * ap_ap) * t32 + T(2) * ab_ap * t38 * t32 + ap_ap * t37 * t32) * t40 * t32 + (T(4) / T(3)) * t38 * t41 * tau_lo * t32 + (T(1) / T(3)) * t30 * t35 * t43 + (T(4) / T(3)) * t36 * delta_tau * t44 * t32 - T(2) * t37 * t39 * t42 * t32;
-    const T t45 = t34 * t34;
-    const T t46 = t33 * t33;
-    const T t47 = T(3) * ab_ap * t45 * t27 + T(4) * t30 * t35 * ab_ab + T(3) * t28 * t46 * a_minus_b;
-    const T t48 = T(3) * t45 * t27 + t30 * t47 * ab_ap - T(3) * t28 * t46;
-    const T t49 = T(2) * ab_ap * t48 * t32 + T(5) * t30 * t35 - t30 * t47 * ap_ap;
-    const T t50 = T(2) * t49 * ab_ap * t32 + T(5) * t36 * t32 - t48 * ap_ap * t32;
-    G_ap = (T(4) / T(15)) * t50 * t41 * tau_lo * t32 + (T(4) / T(15)) * t48 * delta_tau * t44 * t32 + (T(2) / T(5)) * t49 * t39 * t42 * t32 + (T(1) / T(15)) * t30 * t47 * t43 - (T(1) / T(15)) * t40 * t32 * (t49 * ap_ap * t32 + T(5) * t37 * t32 - T(2) * t50 * ab_ap * t32);
-    const T t51 = t27 * t27;
-    const T t52 = t51 * t51;
-    const T t53 = t52 * t27;
-    const T t54 = t28 * t28;
-    const T t55 = t54 * t54;
-    const T t56 = t55 * t28;
-    G_E = (T(1) / T(15)) * (T(12) * t36 * t39 * t42 * t32 + T(4) * t30 * t35 * delta_tau * t44 + T(3) * t43 * t53 + T(4) * t38 * t40 * t32 - T(3) * t56 * (T(6) * t39 * t42 + T(4) * t41 * tau_lo + t40 + t43 + T(4) * delta_tau * t44) - T(12) * t37 * t41 * tau_lo * t32) * t32;
+    const T t35 = T(1) / r0;
+    const T t36 = T(1) / r1;
+    const T t37 = ab_ap * t35 + t36 * a_minus_b;
+    const T t38 = T(1) / cross_cross;
+    const T t39 = t37 * t38 * ab_ap + t35 - t36;
+    const T t40 = T(1) / ab_ab;
+    const T t41 = t36 * t36;
+    const T t42 = t35 * t35;
+    const T t43 = T(2) * t37 * t38 * ab_ab + t36 * t41 * a_minus_b + ab_ap * t42 * t35;
+    const T t44 = t38 * ab_ap * t43 + t42 * t35 - t36 * t41;
+    const T t45 = t38 * ap_ap * t43 - T(2) * ab_ap * t44 * t40 - T(3) * t37 * t38;
+    const T t46 = T(3) * t39 * t40 - ap_ap * t44 * t40 - T(2) * ab_ap * t45 * t40;
+    const T t47 = delta_tau * delta_tau;
+    const T t48 = t47 * t47;
+    const T t49 = t47 * delta_tau;
+    const T t50 = tau_lo * tau_lo;
+    const T t51 = t50 * t50;
+    const T t52 = t50 * tau_lo;
+    F = (T(1) / T(3)) * (T(3) * (T(2) * ab_ap * t39 * t40 + J1 - t37 * t38 * ap_ap) * t40 + T(2) * ab_ap * t46 * t40 + ap_ap * t45 * t40) * t48 * t40 + (T(4) / T(3)) * t46 * t49 * tau_lo * t40 + (T(1) / T(3)) * t38 * t43 * t51 + (T(4) / T(3)) * t44 * delta_tau * t52 * t40 - T(2) * t45 * t47 * t50 * t40;
+    const T t53 = t42 * t42;
+    const T t54 = t41 * t41;
+    const T t55 = T(3) * ab_ap * t53 * t35 + T(4) * t38 * t43 * ab_ab + T(3) * t36 * t54 * a_minus_b;
+    const T t56 = T(3) * t53 * t35 + t38 * t55 * ab_ap - T(3) * t36 * t54;
+    const T t57 = T(2) * ab_ap * t56 * t40 + T(5) * t38 * t43 - t38 * t55 * ap_ap;
+    const T t58 = T(2) * t57 * ab_ap * t40 + T(5) * t44 * t40 - t56 * ap_ap * t40;
+    G_ap = (T(4) / T(15)) * t58 * t49 * tau_lo * t40 + (T(4) / T(15)) * t56 * delta_tau * t52 * t40 + (T(2) / T(5)) * t57 * t47 * t50 * t40 + (T(1) / T(15)) * t38 * t55 * t51 - (T(1) / T(15)) * t48 * t40 * (t57 * ap_ap * t40 + T(5) * t45 * t40 - T(2) * t58 * ab_ap * t40);
+    const T t59 = t35 * t35;
+    const T t60 = t59 * t59;
+    const T t61 = t60 * t35;
+    const T t62 = t36 * t36;
+    const T t63 = t62 * t62;
+    const T t64 = t63 * t36;
+    const T t65 = T(6) * t47 * t50 + T(4) * t49 * tau_lo + t48 + t51 + T(4) * delta_tau * t52;
+    G_E = (T(1) / T(15)) * (T(12) * t44 * t47 * t50 * t40 + T(4) * t38 * t43 * delta_tau * t52 + T(3) * t51 * t61 + T(4) * t46 * t48 * t40 - T(3) * t64 * t65 - T(12) * t45 * t49 * tau_lo * t40) * t40;
   }
-  const T t57 = in.sigma * in.sigma;
-  const T t58 = t57 * t57;
-  const T t59 = t58 * in.sigma;
-  const T g_factor = -T(5) * length * t59;
-  f = length * t59 * F;
+  const T t66 = in.sigma * in.sigma;
+  const T t67 = t66 * t66;
+  const T t68 = t67 * in.sigma;
+  const T g_factor = -T(5) * length * t68;
+  f = length * t68 * F;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
   grad[1] = (foot1 * G_ap - ab1 * G_E) * g_factor;
   grad[2] = (foot2 * G_ap - G_E * ab2) * g_factor;
@@ -1392,8 +1438,8 @@ T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 56 +, 131 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 11360 +, 15428 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 59 +, 137 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 37340 +, 50936 ×, 8062 /, 182 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1442,7 +1488,7 @@ T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t2 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t3 = -ab_ap * a_minus_b;
-  const T t4 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t4 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t2 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
@@ -1457,7 +1503,7 @@ T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
     const T t12 = t8 * tau_lo;
     F = T(10) * M_panels[3] * t6 * t7 + T(5) * delta_tau * M_panels[1] * t8 + M_panels[5] * t10 + T(10) * M_panels[2] * t5 * t11 + T(5) * t9 * tau_lo * M_panels[4] + M_panels[0] * t12;
   } else if (t3 >= T(0) && t4 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(6, 6, 5, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t13 = tau_lo * tau_lo;
@@ -1506,8 +1552,8 @@ T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 80 +, 204 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 20012 +, 26261 ×, 2437 /, 57 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 83 +, 210 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 49437 +, 65003 ×, 6040 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1566,7 +1612,7 @@ std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in)
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -a_minus_b * ab_ap;
-  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 14> M_panels;
@@ -1584,7 +1630,7 @@ std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in)
     const T t15 = T(1) / ab_ab;
     G_E = M_panels[8] * t12 + T(10) * M_panels[10] * t6 * t13 + M_panels[13] * t10 + T(10) * M_panels[11] * t7 * t8 + T(5) * M_panels[12] * t9 * tau_lo + T(5) * M_panels[9] * delta_tau * t11 - t15 * ab_ap * t14;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 14> M_panels;
     segment_moments_gauss_panels<T>(6, 8, 6, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t16 = delta_tau * delta_tau;
@@ -1595,49 +1641,56 @@ std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in)
     const T t21 = t16 * delta_tau;
     const T t22 = t20 * tau_lo;
     const T t23 = t19 * delta_tau;
-    const T t24 = T(10) * M_panels[9] * t16 * t18 + T(5) * t19 * M_panels[11] * tau_lo + T(5) * delta_tau * t20 * M_panels[8] + T(10) * M_panels[10] * t21 * t17 + M_panels[7] * t22 + M_panels[12] * t23;
-    G_ap = t24;
-    const T t25 = T(1) / ab_ab;
-    G_E = t22 * M_panels[8] + T(5) * M_panels[12] * t19 * tau_lo + M_panels[13] * t23 + T(5) * M_panels[9] * delta_tau * t20 + T(10) * M_panels[10] * t16 * t18 + T(10) * t21 * M_panels[11] * t17 - t25 * t24 * ab_ap;
+    G_ap = T(10) * M_panels[9] * t16 * t18 + T(5) * t19 * M_panels[11] * tau_lo + T(5) * delta_tau * t20 * M_panels[8] + T(10) * M_panels[10] * t21 * t17 + M_panels[7] * t22 + M_panels[12] * t23;
+    const T t24 = T(1) / ap_ap;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * t24;
+    const T t27 = T(1) / bp_bp;
+    const T t28 = t27 * t27;
+    const T t29 = t28 * t27;
+    const T t30 = t22 + T(10) * t16 * t18 + T(5) * delta_tau * t20 + T(10) * t21 * t17 + t23 + T(5) * t19 * tau_lo;
+    const T t31 = T(1) / ab_ab;
+    G_E = (T(1) / T(6)) * (T(20) * M_panels[1] * t16 * t18 + t26 * t22 + T(5) * M_panels[0] * delta_tau * t20 + T(5) * M_panels[4] * t23 + T(30) * M_panels[2] * t21 * t17 + T(20) * M_panels[3] * t19 * tau_lo - t29 * t30) * t31;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t26 = sqrt(cross_cross);
-    const T t27 = T(1) / t26;
-    const T J2 = atan2(t26, ap_bp) * t27;
-    const T t28 = T(1) / cross_cross;
-    const T t29 = T(1) / ap_ap;
-    const T t30 = t29 * t29;
-    const T t31 = T(1) / bp_bp;
-    const T t32 = ab_ab * J2 + a_minus_b * t31 + ab_ap * t29;
-    const T t33 = t31 * t31;
-    const T t34 = T(2) * ab_ap * t30 + T(3) * ab_ab * t28 * t32 + T(2) * a_minus_b * t33;
-    const T t35 = t30 * t29;
-    const T t36 = t33 * t31;
-    const T t37 = T(5) * ab_ab * t28 * t34 + T(8) * ab_ap * t35 + T(8) * a_minus_b * t36;
-    const T t38 = tau_lo * tau_lo;
-    const T t39 = t38 * t38;
-    const T t40 = t39 * tau_lo;
-    const T t41 = T(1) / ab_ab;
-    const T t42 = t28 * ab_ap * t37 + T(8) * t35 - T(8) * t36;
-    const T t43 = delta_tau * delta_tau;
-    const T t44 = t38 * tau_lo;
-    const T t45 = T(6) * t28 * t34 + T(2) * t41 * ab_ap * t42 - t28 * t37 * ap_ap;
-    const T t46 = t43 * t43;
-    const T t47 = T(2) * t33 - T(2) * t30 - t28 * ab_ap * t34;
-    const T t48 = t28 * ap_ap * t34 + T(2) * t41 * ab_ap * t47 - T(4) * t28 * t32;
-    const T t49 = T(6) * t41 * t47 + t41 * ap_ap * t42 - T(2) * t41 * ab_ap * t45;
-    const T t50 = T(6) * t41 * t48 + T(2) * t49 * t41 * ab_ap + t41 * ap_ap * t45;
-    const T t51 = t29 + t28 * t32 * ab_ap - t31;
-    const T t52 = t41 * t47 * ap_ap + T(4) * t41 * t51 - T(2) * t41 * t48 * ab_ap;
-    const T t53 = t46 * delta_tau;
-    const T t54 = t43 * delta_tau;
-    G_ap = (T(1) / T(48)) * t28 * t37 * t40 + (T(5) / T(48)) * t41 * delta_tau * t42 * t39 + (T(5) / T(24)) * t41 * t43 * t44 * t45 - (T(5) / T(48)) * t41 * t46 * tau_lo * t50 - (T(1) / T(48)) * t41 * (T(2) * t41 * ab_ap * t50 - T(6) * t41 * t52 - t49 * t41 * ap_ap) * t53 - (T(5) / T(24)) * t49 * t41 * t54 * t38;
-    G_E = -(T(1) / T(48)) * t41 * (T(30) * t41 * t48 * t54 * t38 + T(20) * t41 * t47 * t43 * t44 + T(5) * t41 * (T(4) * t41 * (t28 * t32 * ap_ap - T(2) * t41 * t51 * ab_ap - T(2) * J2) - t41 * t48 * ap_ap - T(2) * t41 * t52 * ab_ap) * t53 + T(8) * t36 * (t40 + T(10) * t43 * t44 + T(5) * delta_tau * t39 + T(10) * t54 * t38 + t53 + T(5) * t46 * tau_lo) - T(8) * t35 * t40 - T(20) * t41 * t52 * t46 * tau_lo - T(5) * t28 * delta_tau * t34 * t39);
+    const T t32 = sqrt(cross_cross);
+    const T t33 = T(1) / t32;
+    const T J2 = atan2(t32, ap_bp) * t33;
+    const T t34 = T(1) / cross_cross;
+    const T t35 = T(1) / ap_ap;
+    const T t36 = t35 * t35;
+    const T t37 = T(1) / bp_bp;
+    const T t38 = ab_ab * J2 + a_minus_b * t37 + ab_ap * t35;
+    const T t39 = t37 * t37;
+    const T t40 = T(2) * ab_ap * t36 + T(3) * ab_ab * t34 * t38 + T(2) * a_minus_b * t39;
+    const T t41 = t36 * t35;
+    const T t42 = t39 * t37;
+    const T t43 = T(5) * ab_ab * t34 * t40 + T(8) * ab_ap * t41 + T(8) * a_minus_b * t42;
+    const T t44 = tau_lo * tau_lo;
+    const T t45 = t44 * t44;
+    const T t46 = t45 * tau_lo;
+    const T t47 = T(1) / ab_ab;
+    const T t48 = t34 * ab_ap * t43 + T(8) * t41 - T(8) * t42;
+    const T t49 = delta_tau * delta_tau;
+    const T t50 = t44 * tau_lo;
+    const T t51 = T(6) * t34 * t40 + T(2) * t47 * ab_ap * t48 - t34 * t43 * ap_ap;
+    const T t52 = t49 * t49;
+    const T t53 = T(2) * t39 - T(2) * t36 - t34 * ab_ap * t40;
+    const T t54 = t34 * ap_ap * t40 + T(2) * t47 * ab_ap * t53 - T(4) * t34 * t38;
+    const T t55 = T(6) * t47 * t53 + t47 * ap_ap * t48 - T(2) * t47 * ab_ap * t51;
+    const T t56 = T(6) * t47 * t54 + T(2) * t55 * t47 * ab_ap + t47 * ap_ap * t51;
+    const T t57 = t35 + t34 * t38 * ab_ap - t37;
+    const T t58 = t47 * t53 * ap_ap + T(4) * t47 * t57 - T(2) * t47 * t54 * ab_ap;
+    const T t59 = t52 * delta_tau;
+    const T t60 = t49 * delta_tau;
+    G_ap = (T(1) / T(48)) * t34 * t43 * t46 + (T(5) / T(48)) * t47 * delta_tau * t48 * t45 + (T(5) / T(24)) * t47 * t49 * t50 * t51 - (T(5) / T(48)) * t47 * t52 * tau_lo * t56 - (T(1) / T(48)) * t47 * (T(2) * t47 * ab_ap * t56 - T(6) * t47 * t58 - t55 * t47 * ap_ap) * t59 - (T(5) / T(24)) * t55 * t47 * t60 * t44;
+    const T t61 = t46 + T(10) * t49 * t50 + T(5) * delta_tau * t45 + T(10) * t60 * t44 + t59 + T(5) * t52 * tau_lo;
+    G_E = -(T(1) / T(48)) * t47 * (T(30) * t47 * t54 * t60 * t44 + T(20) * t47 * t53 * t49 * t50 + T(5) * t47 * (T(4) * t47 * (t34 * t38 * ap_ap - T(2) * t47 * t57 * ab_ap - T(2) * J2) - t47 * t54 * ap_ap - T(2) * t47 * t58 * ab_ap) * t59 + T(8) * t42 * t61 - T(8) * t41 * t46 - T(20) * t47 * t58 * t52 * tau_lo - T(5) * t34 * delta_tau * t40 * t45);
   }
-  const T t55 = in.sigma * in.sigma;
-  const T t56 = t55 * in.sigma;
-  const T t57 = t56 * t56;
-  const T g_factor = -T(6) * length * t57;
+  const T t62 = in.sigma * in.sigma;
+  const T t63 = t62 * in.sigma;
+  const T t64 = t63 * t63;
+  const T g_factor = -T(6) * length * t64;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
   grad[2] = -(G_E * ab2 - foot2 * G_ap) * g_factor;
@@ -1646,8 +1699,8 @@ std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in)
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 90 +, 244 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 20017 +, 26278 ×, 2438 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 93 +, 250 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 49442 +, 65020 ×, 6040 /, 137 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1709,7 +1762,7 @@ T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   T G_E;
   const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t6 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t4 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 14> M_panels;
@@ -1728,7 +1781,7 @@ T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t16 = T(1) / ab_ab;
     G_E = T(10) * M_panels[10] * t10 * t14 + M_panels[8] * t9 + M_panels[13] * t13 + T(5) * M_panels[9] * delta_tau * t8 + T(10) * M_panels[11] * t11 * t7 + T(5) * M_panels[12] * t12 * tau_lo - ab_ap * t15 * t16;
   } else if (t5 >= T(0) && t6 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 14> M_panels;
     segment_moments_gauss_panels<T>(6, 8, 6, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t17 = delta_tau * delta_tau;
@@ -1740,52 +1793,58 @@ T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t23 = t22 * tau_lo;
     const T t24 = t18 * delta_tau;
     F = T(5) * t18 * M_panels[4] * tau_lo + T(10) * M_panels[2] * t17 * t20 + T(10) * M_panels[3] * t21 * t19 + T(5) * delta_tau * t22 * M_panels[1] + M_panels[0] * t23 + M_panels[5] * t24;
-    const T t25 = t23 * M_panels[7] + T(10) * M_panels[9] * t17 * t20 + T(10) * t21 * M_panels[10] * t19 + T(5) * M_panels[8] * delta_tau * t22 + M_panels[12] * t24 + T(5) * M_panels[11] * t18 * tau_lo;
-    G_ap = t25;
-    const T t26 = T(1) / ab_ab;
-    G_E = T(5) * M_panels[9] * delta_tau * t22 + M_panels[13] * t24 + T(10) * M_panels[11] * t21 * t19 + T(5) * M_panels[12] * t18 * tau_lo + M_panels[8] * t23 + T(10) * t17 * M_panels[10] * t20 - t25 * ab_ap * t26;
+    G_ap = t23 * M_panels[7] + T(10) * M_panels[9] * t17 * t20 + T(10) * t21 * M_panels[10] * t19 + T(5) * M_panels[8] * delta_tau * t22 + M_panels[12] * t24 + T(5) * M_panels[11] * t18 * tau_lo;
+    const T t25 = t3 * t3;
+    const T t26 = t25 * t3;
+    const T t27 = T(5) * delta_tau * t22 + t23 + T(10) * t17 * t20 + t24 + T(10) * t21 * t19 + T(5) * t18 * tau_lo;
+    const T t28 = T(1) / bp_bp;
+    const T t29 = t28 * t28;
+    const T t30 = t29 * t28;
+    const T t31 = T(1) / ab_ab;
+    G_E = (T(1) / T(6)) * (T(30) * M_panels[2] * t21 * t19 + T(20) * M_panels[3] * t18 * tau_lo + T(5) * M_panels[0] * delta_tau * t22 + T(5) * t24 * M_panels[4] + t26 * t23 + T(20) * t17 * t20 * M_panels[1] - t27 * t30) * t31;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t27 = sqrt(cross_cross);
-    const T t28 = T(1) / t27;
-    const T J2 = t28 * atan2(t27, ap_bp);
-    const T t29 = t3 * t3;
-    const T t30 = T(1) / cross_cross;
-    const T t31 = T(1) / bp_bp;
-    const T t32 = J2 * ab_ab + t31 * a_minus_b + ab_ap * t3;
-    const T t33 = t31 * t31;
-    const T t34 = T(3) * t32 * t30 * ab_ab + T(2) * ab_ap * t29 + T(2) * t33 * a_minus_b;
-    const T t35 = T(2) * t29 + t30 * ab_ap * t34 - T(2) * t33;
-    const T t36 = tau_lo * tau_lo;
-    const T t37 = t36 * t36;
-    const T t38 = T(1) / ab_ab;
-    const T t39 = delta_tau * delta_tau;
-    const T t40 = T(2) * ab_ap * t35 * t38 + T(4) * t32 * t30 - t30 * ap_ap * t34;
-    const T t41 = t36 * tau_lo;
-    const T t42 = t37 * tau_lo;
-    const T t43 = t31 - t32 * t30 * ab_ap - t3;
-    const T t44 = T(4) * t43 * t38 + ap_ap * t35 * t38 - T(2) * ab_ap * t40 * t38;
-    const T t45 = T(2) * J2 - t32 * t30 * ap_ap - T(2) * t43 * ab_ap * t38;
-    const T t46 = ap_ap * t40 * t38 + T(2) * ab_ap * t44 * t38 - T(4) * t45 * t38;
-    const T t47 = t39 * t39;
-    const T t48 = t47 * delta_tau;
-    const T t49 = t39 * delta_tau;
-    F = (T(5) / T(8)) * t35 * delta_tau * t37 * t38 + (T(5) / T(4)) * t39 * t40 * t41 * t38 + (T(1) / T(8)) * t30 * t34 * t42 + (T(1) / T(8)) * (t44 * ap_ap * t38 + T(4) * (T(2) * t45 * ab_ap * t38 + (T(2) * ab_ap * J2 + log_ratio) * t38 + t43 * ap_ap * t38) * t38 - T(2) * ab_ap * t46 * t38) * t48 * t38 - (T(5) / T(4)) * t44 * t49 * t36 * t38 - (T(5) / T(8)) * t46 * t47 * tau_lo * t38;
-    const T t50 = t29 * t3;
-    const T t51 = t33 * t31;
-    const T t52 = T(8) * ab_ap * t50 + T(5) * t30 * t34 * ab_ab + T(8) * t51 * a_minus_b;
-    const T t53 = T(8) * t50 + t30 * ab_ap * t52 - T(8) * t51;
-    const T t54 = T(2) * ab_ap * t53 * t38 + T(6) * t30 * t34 - t30 * ap_ap * t52;
-    const T t55 = ap_ap * t53 * t38 - T(2) * ab_ap * t54 * t38 - T(6) * t35 * t38;
-    const T t56 = T(6) * t40 * t38 - T(2) * ab_ap * t55 * t38 - ap_ap * t54 * t38;
-    G_ap = (T(5) / T(48)) * t56 * t47 * tau_lo * t38 + (T(1) / T(48)) * (T(2) * ab_ap * t56 * t38 + t55 * ap_ap * t38 - T(6) * t44 * t38) * t48 * t38 + (T(5) / T(24)) * t39 * t54 * t41 * t38 + (T(1) / T(48)) * t30 * t42 * t52 + (T(5) / T(48)) * delta_tau * t53 * t37 * t38 - (T(5) / T(24)) * t55 * t49 * t36 * t38;
-    G_E = (T(1) / T(48)) * (T(5) * t30 * delta_tau * t34 * t37 + T(20) * t35 * t39 * t41 * t38 + T(30) * t49 * t40 * t36 * t38 + T(8) * t50 * t42 - T(5) * t46 * t48 * t38 - T(8) * (T(5) * delta_tau * t37 + t42 + T(10) * t39 * t41 + t48 + T(10) * t49 * t36 + T(5) * t47 * tau_lo) * t51 - T(20) * t44 * t47 * tau_lo * t38) * t38;
+    const T t32 = sqrt(cross_cross);
+    const T t33 = T(1) / t32;
+    const T J2 = t33 * atan2(t32, ap_bp);
+    const T t34 = t3 * t3;
+    const T t35 = T(1) / cross_cross;
+    const T t36 = T(1) / bp_bp;
+    const T t37 = J2 * ab_ab + t36 * a_minus_b + ab_ap * t3;
+    const T t38 = t36 * t36;
+    const T t39 = T(3) * t37 * t35 * ab_ab + T(2) * ab_ap * t34 + T(2) * t38 * a_minus_b;
+    const T t40 = T(2) * t34 + t35 * ab_ap * t39 - T(2) * t38;
+    const T t41 = tau_lo * tau_lo;
+    const T t42 = t41 * t41;
+    const T t43 = T(1) / ab_ab;
+    const T t44 = delta_tau * delta_tau;
+    const T t45 = T(2) * ab_ap * t40 * t43 + T(4) * t37 * t35 - t35 * ap_ap * t39;
+    const T t46 = t41 * tau_lo;
+    const T t47 = t42 * tau_lo;
+    const T t48 = t36 - t37 * t35 * ab_ap - t3;
+    const T t49 = T(4) * t48 * t43 + ap_ap * t40 * t43 - T(2) * ab_ap * t45 * t43;
+    const T t50 = T(2) * J2 - t37 * t35 * ap_ap - T(2) * t48 * ab_ap * t43;
+    const T t51 = ap_ap * t45 * t43 + T(2) * ab_ap * t49 * t43 - T(4) * t50 * t43;
+    const T t52 = t44 * t44;
+    const T t53 = t52 * delta_tau;
+    const T t54 = t44 * delta_tau;
+    F = (T(5) / T(8)) * t40 * delta_tau * t42 * t43 + (T(5) / T(4)) * t44 * t45 * t46 * t43 + (T(1) / T(8)) * t35 * t39 * t47 + (T(1) / T(8)) * (t49 * ap_ap * t43 + T(4) * (T(2) * t50 * ab_ap * t43 + (T(2) * ab_ap * J2 + log_ratio) * t43 + t48 * ap_ap * t43) * t43 - T(2) * ab_ap * t51 * t43) * t53 * t43 - (T(5) / T(4)) * t49 * t54 * t41 * t43 - (T(5) / T(8)) * t51 * t52 * tau_lo * t43;
+    const T t55 = t34 * t3;
+    const T t56 = t38 * t36;
+    const T t57 = T(8) * ab_ap * t55 + T(5) * t35 * t39 * ab_ab + T(8) * t56 * a_minus_b;
+    const T t58 = T(8) * t55 + t35 * ab_ap * t57 - T(8) * t56;
+    const T t59 = T(2) * ab_ap * t58 * t43 + T(6) * t35 * t39 - t35 * ap_ap * t57;
+    const T t60 = ap_ap * t58 * t43 - T(2) * ab_ap * t59 * t43 - T(6) * t40 * t43;
+    const T t61 = T(6) * t45 * t43 - T(2) * ab_ap * t60 * t43 - ap_ap * t59 * t43;
+    G_ap = (T(5) / T(48)) * t61 * t52 * tau_lo * t43 + (T(1) / T(48)) * (T(2) * ab_ap * t61 * t43 + t60 * ap_ap * t43 - T(6) * t49 * t43) * t53 * t43 + (T(5) / T(24)) * t44 * t59 * t46 * t43 + (T(1) / T(48)) * t35 * t47 * t57 + (T(5) / T(48)) * delta_tau * t58 * t42 * t43 - (T(5) / T(24)) * t60 * t54 * t41 * t43;
+    const T t62 = T(5) * delta_tau * t42 + t47 + T(10) * t44 * t46 + t53 + T(10) * t54 * t41 + T(5) * t52 * tau_lo;
+    G_E = (T(1) / T(48)) * (T(5) * t35 * delta_tau * t39 * t42 + T(20) * t40 * t44 * t46 * t43 + T(30) * t54 * t45 * t41 * t43 + T(8) * t55 * t47 - T(5) * t51 * t53 * t43 - T(8) * t62 * t56 - T(20) * t49 * t52 * tau_lo * t43) * t43;
   }
-  const T t57 = in.sigma * in.sigma;
-  const T t58 = t57 * in.sigma;
-  const T t59 = t58 * t58;
-  const T g_factor = -T(6) * length * t59;
-  f = length * t59 * F;
+  const T t63 = in.sigma * in.sigma;
+  const T t64 = t63 * in.sigma;
+  const T t65 = t64 * t64;
+  const T g_factor = -T(6) * length * t65;
+  f = length * t65 * F;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
   grad[1] = g_factor * (foot1 * G_ap - ab1 * G_E);
   grad[2] = -g_factor * (G_E * ab2 - foot2 * G_ap);
@@ -1794,8 +1853,8 @@ T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 64 +, 172 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 12440 +, 20836 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 67 +, 178 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 35220 +, 59244 ×, 6938 /, 3239 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i7_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1857,7 +1916,7 @@ T scalis_segment_inverse_i7_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t6 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t7 = -a_minus_b * ab_ap;
-  const T t8 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t8 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t6 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 7> M_panels;
@@ -1874,7 +1933,7 @@ T scalis_segment_inverse_i7_f(const ScalisSegmentInput<T>& in) {
     const T t18 = t13 * t13;
     F = T(6) * tau_lo * M_panels[5] * t11 + T(20) * t13 * M_panels[3] * t14 + T(15) * t15 * M_panels[2] * t9 + T(15) * t12 * M_panels[4] * t10 + T(6) * t16 * M_panels[1] * delta_tau + M_panels[6] * t17 + t18 * M_panels[0];
   } else if (t7 >= T(0) && t8 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 7> M_panels;
     segment_moments_gauss_panels<T>(7, 7, 6, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t19 = delta_tau * delta_tau;
@@ -1932,8 +1991,8 @@ T scalis_segment_inverse_i7_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 90 +, 265 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 22172 +, 33827 ×, 2437 /, 1139 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 93 +, 271 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 48678 +, 74415 ×, 5365 /, 2504 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1993,7 +2052,7 @@ std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in)
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -ab_ap * a_minus_b;
-  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 16> M_panels;
@@ -2013,7 +2072,7 @@ std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in)
     const T t17 = T(1) / ab_ab;
     G_E = T(15) * M_panels[13] * t12 * t6 + T(6) * M_panels[10] * delta_tau * t15 + M_panels[9] * t8 + T(15) * t9 * M_panels[11] * t14 + T(20) * M_panels[12] * t10 * t7 + T(6) * M_panels[14] * t13 * tau_lo + M_panels[15] * t11 - ab_ap * t16 * t17;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 16> M_panels;
     segment_moments_gauss_panels<T>(7, 9, 7, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t18 = delta_tau * delta_tau;
@@ -2026,63 +2085,74 @@ std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in)
     const T t25 = t18 * delta_tau;
     const T t26 = t25 * t25;
     const T t27 = t19 * delta_tau;
-    const T t28 = T(15) * M_panels[12] * t19 * t20 + T(6) * M_panels[9] * delta_tau * t22 + M_panels[8] * t24 + T(15) * M_panels[10] * t18 * t21 + t26 * M_panels[14] + T(20) * t25 * t23 * M_panels[11] + T(6) * M_panels[13] * t27 * tau_lo;
-    G_ap = t28;
-    const T t29 = T(1) / ab_ab;
-    G_E = M_panels[9] * t24 + T(15) * M_panels[13] * t19 * t20 + T(6) * M_panels[10] * delta_tau * t22 + M_panels[15] * t26 + T(20) * M_panels[12] * t25 * t23 + T(6) * t27 * M_panels[14] * tau_lo + T(15) * t18 * t21 * M_panels[11] - t28 * ab_ap * t29;
-  } else {
-    // recurrence (1) upwards from J_1, J_2
-    const T t30 = T(1) / r0;
+    G_ap = T(15) * M_panels[12] * t19 * t20 + T(6) * M_panels[9] * delta_tau * t22 + M_panels[8] * t24 + T(15) * M_panels[10] * t18 * t21 + t26 * M_panels[14] + T(20) * t25 * t23 * M_panels[11] + T(6) * M_panels[13] * t27 * tau_lo;
+    const T t28 = T(1) / r0;
+    const T t29 = t28 * t28;
+    const T t30 = t29 * t28;
     const T t31 = t30 * t30;
-    const T t32 = t31 * t31;
-    const T t33 = t32 * t31;
+    const T t32 = t31 * t28;
+    const T t33 = t24 + T(15) * t18 * t21 + t26 + T(6) * t27 * tau_lo + T(15) * t19 * t20 + T(20) * t25 * t23 + T(6) * delta_tau * t22;
     const T t34 = T(1) / r1;
     const T t35 = t34 * t34;
-    const T t36 = t35 * t35;
-    const T t37 = T(1) / cross_cross;
-    const T t38 = t30 * ab_ap + t34 * a_minus_b;
-    const T t39 = T(2) * t37 * t38 * ab_ab + t30 * ab_ap * t31 + t34 * a_minus_b * t35;
-    const T t40 = T(3) * t34 * a_minus_b * t36 + T(3) * t30 * ab_ap * t32 + T(4) * t39 * t37 * ab_ab;
-    const T t41 = t36 * t35;
-    const T t42 = T(5) * t30 * ab_ap * t33 + T(2) * t40 * t37 * ab_ab + T(5) * t34 * a_minus_b * t41;
-    const T t43 = tau_lo * tau_lo;
-    const T t44 = t43 * tau_lo;
+    const T t36 = t35 * t34;
+    const T t37 = t36 * t36;
+    const T t38 = t37 * t34;
+    const T t39 = T(1) / ab_ab;
+    G_E = (T(1) / T(7)) * (T(6) * M_panels[0] * delta_tau * t22 + T(30) * M_panels[4] * t27 * tau_lo + T(6) * t26 * M_panels[5] + T(30) * M_panels[1] * t18 * t21 + t32 * t24 + T(60) * M_panels[2] * t25 * t23 + T(60) * M_panels[3] * t19 * t20 - t33 * t38) * t39;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t40 = T(1) / r0;
+    const T t41 = t40 * t40;
+    const T t42 = t41 * t41;
+    const T t43 = t42 * t41;
+    const T t44 = T(1) / r1;
     const T t45 = t44 * t44;
-    const T t46 = T(3) * t30 * t32 + t40 * ab_ap * t37 - T(3) * t34 * t36;
-    const T t47 = T(1) / ab_ab;
-    const T t48 = T(5) * t39 * t37 + T(2) * ab_ap * t46 * t47 - t40 * ap_ap * t37;
-    const T t49 = T(5) * t30 * t33 + t42 * ab_ap * t37 - T(5) * t34 * t41;
-    const T t50 = T(6) * ab_ap * t49 * t47 + T(7) * t40 * t37 - T(3) * t42 * ap_ap * t37;
-    const T t51 = T(7) * t46 * t47 + T(2) * ab_ap * t50 * t47 - T(3) * ap_ap * t49 * t47;
-    const T t52 = T(7) * t48 * t47 + T(2) * ab_ap * t51 * t47 - ap_ap * t50 * t47;
-    const T t53 = t34 * t35 - t30 * t31 - t39 * ab_ap * t37;
-    const T t54 = T(5) * t53 * t47 + ap_ap * t46 * t47 - T(2) * ab_ap * t48 * t47;
-    const T t55 = T(2) * t52 * ab_ap * t47 - ap_ap * t51 * t47 - T(7) * t54 * t47;
-    const T t56 = delta_tau * delta_tau;
-    const T t57 = t56 * t56;
-    const T t58 = t57 * delta_tau;
-    const T t59 = t43 * t43;
-    const T t60 = t56 * delta_tau;
-    const T t61 = t59 * tau_lo;
-    const T t62 = T(3) * t37 * t38 - T(2) * ab_ap * t53 * t47 - t39 * ap_ap * t37;
-    const T t63 = t48 * ap_ap * t47 + T(2) * ab_ap * t54 * t47 - T(5) * t62 * t47;
-    const T t64 = t60 * t60;
-    G_ap = (T(1) / T(35)) * t42 * t37 * t45 + (T(2) / T(35)) * t55 * t58 * tau_lo * t47 + (T(1) / T(7)) * t52 * t57 * t43 * t47 + (T(1) / T(7)) * t50 * t56 * t59 * t47 + (T(4) / T(21)) * t51 * t60 * t44 * t47 + (T(6) / T(35)) * t49 * delta_tau * t61 * t47 - (T(1) / T(105)) * (t52 * ap_ap * t47 + T(7) * t63 * t47 - T(2) * ab_ap * t55 * t47) * t64 * t47;
-    const T t65 = t34 * t34;
-    const T t66 = t65 * t34;
+    const T t46 = t45 * t45;
+    const T t47 = T(1) / cross_cross;
+    const T t48 = t40 * ab_ap + t44 * a_minus_b;
+    const T t49 = T(2) * t47 * t48 * ab_ab + t40 * ab_ap * t41 + t44 * a_minus_b * t45;
+    const T t50 = T(3) * t44 * a_minus_b * t46 + T(3) * t40 * ab_ap * t42 + T(4) * t49 * t47 * ab_ab;
+    const T t51 = t46 * t45;
+    const T t52 = T(5) * t40 * ab_ap * t43 + T(2) * t50 * t47 * ab_ab + T(5) * t44 * a_minus_b * t51;
+    const T t53 = tau_lo * tau_lo;
+    const T t54 = t53 * tau_lo;
+    const T t55 = t54 * t54;
+    const T t56 = T(3) * t40 * t42 + t50 * ab_ap * t47 - T(3) * t44 * t46;
+    const T t57 = T(1) / ab_ab;
+    const T t58 = T(5) * t49 * t47 + T(2) * ab_ap * t56 * t57 - t50 * ap_ap * t47;
+    const T t59 = T(5) * t40 * t43 + t52 * ab_ap * t47 - T(5) * t44 * t51;
+    const T t60 = T(6) * ab_ap * t59 * t57 + T(7) * t50 * t47 - T(3) * t52 * ap_ap * t47;
+    const T t61 = T(7) * t56 * t57 + T(2) * ab_ap * t60 * t57 - T(3) * ap_ap * t59 * t57;
+    const T t62 = T(7) * t58 * t57 + T(2) * ab_ap * t61 * t57 - ap_ap * t60 * t57;
+    const T t63 = t44 * t45 - t40 * t41 - t49 * ab_ap * t47;
+    const T t64 = T(5) * t63 * t57 + ap_ap * t56 * t57 - T(2) * ab_ap * t58 * t57;
+    const T t65 = T(2) * t62 * ab_ap * t57 - ap_ap * t61 * t57 - T(7) * t64 * t57;
+    const T t66 = delta_tau * delta_tau;
     const T t67 = t66 * t66;
-    const T t68 = t67 * t34;
-    const T t69 = t30 * t30;
-    const T t70 = t69 * t30;
-    const T t71 = t70 * t70;
-    const T t72 = t71 * t30;
-    G_E = -(T(1) / T(35)) * (T(20) * t54 * t57 * t43 * t47 + T(10) * t63 * t58 * tau_lo * t47 + T(5) * (t45 + T(15) * t56 * t59 + t64 + T(6) * t58 * tau_lo + T(15) * t57 * t43 + T(20) * t60 * t44 + T(6) * delta_tau * t61) * t68 - T(2) * (ap_ap * t54 * t47 + T(5) * (T(2) * t62 * ab_ap * t47 + T(3) * (ab_ap * t37 * t38 + t30 - t34) * t47 + t53 * ap_ap * t47) * t47 - T(2) * ab_ap * t63 * t47) * t64 * t47 - T(5) * t72 * t45 - T(20) * t48 * t60 * t44 * t47 - T(10) * t46 * t56 * t59 * t47 - T(2) * t40 * t37 * delta_tau * t61) * t47;
+    const T t68 = t67 * delta_tau;
+    const T t69 = t53 * t53;
+    const T t70 = t66 * delta_tau;
+    const T t71 = t69 * tau_lo;
+    const T t72 = T(3) * t47 * t48 - T(2) * ab_ap * t63 * t57 - t49 * ap_ap * t47;
+    const T t73 = t58 * ap_ap * t57 + T(2) * ab_ap * t64 * t57 - T(5) * t72 * t57;
+    const T t74 = t70 * t70;
+    G_ap = (T(1) / T(35)) * t52 * t47 * t55 + (T(2) / T(35)) * t65 * t68 * tau_lo * t57 + (T(1) / T(7)) * t62 * t67 * t53 * t57 + (T(1) / T(7)) * t60 * t66 * t69 * t57 + (T(4) / T(21)) * t61 * t70 * t54 * t57 + (T(6) / T(35)) * t59 * delta_tau * t71 * t57 - (T(1) / T(105)) * (t62 * ap_ap * t57 + T(7) * t73 * t57 - T(2) * ab_ap * t65 * t57) * t74 * t57;
+    const T t75 = t55 + T(15) * t66 * t69 + t74 + T(6) * t68 * tau_lo + T(15) * t67 * t53 + T(20) * t70 * t54 + T(6) * delta_tau * t71;
+    const T t76 = t44 * t44;
+    const T t77 = t76 * t44;
+    const T t78 = t77 * t77;
+    const T t79 = t78 * t44;
+    const T t80 = t40 * t40;
+    const T t81 = t80 * t40;
+    const T t82 = t81 * t81;
+    const T t83 = t82 * t40;
+    G_E = -(T(1) / T(35)) * (T(20) * t64 * t67 * t53 * t57 + T(10) * t73 * t68 * tau_lo * t57 + T(5) * t75 * t79 - T(2) * (ap_ap * t64 * t57 + T(5) * (T(2) * t72 * ab_ap * t57 + T(3) * (ab_ap * t47 * t48 + t40 - t44) * t57 + t63 * ap_ap * t57) * t57 - T(2) * ab_ap * t73 * t57) * t74 * t57 - T(5) * t83 * t55 - T(20) * t58 * t70 * t54 * t57 - T(10) * t56 * t66 * t69 * t57 - T(2) * t50 * t47 * delta_tau * t71) * t57;
   }
-  const T t73 = in.sigma * in.sigma;
-  const T t74 = t73 * in.sigma;
-  const T t75 = t74 * t74;
-  const T t76 = t75 * in.sigma;
-  const T g_factor = -T(7) * t76 * length;
+  const T t84 = in.sigma * in.sigma;
+  const T t85 = t84 * in.sigma;
+  const T t86 = t85 * t85;
+  const T t87 = t86 * in.sigma;
+  const T g_factor = -T(7) * t87 * length;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
   grad[1] = -g_factor * (ab1 * G_E - G_ap * foot1);
   grad[2] = -(ab2 * G_E - G_ap * foot2) * g_factor;
@@ -2091,8 +2161,8 @@ std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in)
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 103 +, 316 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 22179 +, 33852 ×, 2439 /, 1139 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 106 +, 322 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 48685 +, 74440 ×, 5367 /, 2504 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2167,7 +2237,7 @@ T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   T G_E;
   const T t8 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t9 = -a_minus_b * ab_ap;
-  const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t10 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t8 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 16> M_panels;
@@ -2188,7 +2258,7 @@ T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t22 = T(1) / ab_ab;
     G_E = T(15) * M_panels[13] * t12 * t13 + T(15) * t11 * M_panels[11] * t14 + T(20) * t17 * t15 * M_panels[12] + T(6) * M_panels[10] * delta_tau * t18 + t20 * M_panels[15] + T(6) * M_panels[14] * t19 * tau_lo + t16 * M_panels[9] - t21 * t22 * ab_ap;
   } else if (t9 >= T(0) && t10 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 16> M_panels;
     segment_moments_gauss_panels<T>(7, 9, 7, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t23 = delta_tau * delta_tau;
@@ -2202,68 +2272,79 @@ T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t31 = t28 * t28;
     const T t32 = t31 * tau_lo;
     F = t25 * M_panels[6] + T(6) * t27 * tau_lo * M_panels[5] + t30 * M_panels[0] + T(15) * t23 * t31 * M_panels[2] + T(6) * M_panels[1] * delta_tau * t32 + T(15) * M_panels[4] * t26 * t28 + T(20) * t24 * t29 * M_panels[3];
-    const T t33 = T(15) * M_panels[10] * t23 * t31 + T(15) * t26 * t28 * M_panels[12] + T(20) * t24 * M_panels[11] * t29 + T(6) * M_panels[13] * t27 * tau_lo + T(6) * delta_tau * t32 * M_panels[9] + M_panels[8] * t30 + M_panels[14] * t25;
-    G_ap = t33;
-    const T t34 = T(1) / ab_ab;
-    G_E = T(6) * M_panels[14] * t27 * tau_lo + T(15) * t23 * M_panels[11] * t31 + T(15) * M_panels[13] * t26 * t28 + t30 * M_panels[9] + T(20) * t24 * t29 * M_panels[12] + T(6) * M_panels[10] * delta_tau * t32 + t25 * M_panels[15] - t33 * t34 * ab_ap;
+    G_ap = T(15) * M_panels[10] * t23 * t31 + T(15) * t26 * t28 * M_panels[12] + T(20) * t24 * M_panels[11] * t29 + T(6) * M_panels[13] * t27 * tau_lo + T(6) * delta_tau * t32 * M_panels[9] + M_panels[8] * t30 + M_panels[14] * t25;
+    const T t33 = T(1) / ab_ab;
+    const T t34 = T(1) / r1;
+    const T t35 = t34 * t34;
+    const T t36 = t35 * t34;
+    const T t37 = t36 * t36;
+    const T t38 = t37 * t34;
+    const T t39 = t30 + T(6) * t27 * tau_lo + t25 + T(15) * t23 * t31 + T(15) * t26 * t28 + T(20) * t24 * t29 + T(6) * delta_tau * t32;
+    const T t40 = T(1) / r0;
+    const T t41 = t40 * t40;
+    const T t42 = t41 * t40;
+    const T t43 = t42 * t42;
+    const T t44 = t43 * t40;
+    G_E = -(T(1) / T(7)) * t33 * (t38 * t39 - T(60) * t24 * t29 * M_panels[2] - T(60) * t26 * t28 * M_panels[3] - T(30) * M_panels[1] * t23 * t31 - T(6) * delta_tau * t32 * M_panels[0] - t30 * t44 - T(6) * t25 * M_panels[5] - T(30) * M_panels[4] * t27 * tau_lo);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t35 = T(1) / r0;
-    const T t36 = t35 * t35;
-    const T t37 = t36 * t36;
-    const T t38 = T(1) / cross_cross;
-    const T t39 = T(1) / r1;
-    const T t40 = t35 * ab_ap + a_minus_b * t39;
-    const T t41 = t39 * t39;
-    const T t42 = T(2) * ab_ab * t38 * t40 + a_minus_b * t39 * t41 + t36 * t35 * ab_ap;
-    const T t43 = t41 * t41;
-    const T t44 = T(3) * t37 * t35 * ab_ap + T(4) * ab_ab * t42 * t38 + T(3) * a_minus_b * t39 * t43;
-    const T t45 = tau_lo * tau_lo;
-    const T t46 = t45 * tau_lo;
+    const T t45 = T(1) / r0;
+    const T t46 = t45 * t45;
     const T t47 = t46 * t46;
-    const T t48 = T(3) * t39 * t43 - t44 * t38 * ab_ap - T(3) * t37 * t35;
-    const T t49 = T(1) / ab_ab;
-    const T t50 = t36 * t35 + t42 * t38 * ab_ap - t39 * t41;
-    const T t51 = t44 * ap_ap * t38 + T(2) * t48 * t49 * ab_ap - T(5) * t42 * t38;
-    const T t52 = ap_ap * t48 * t49 + T(5) * t50 * t49 - T(2) * t49 * ab_ap * t51;
-    const T t53 = delta_tau * delta_tau;
-    const T t54 = t53 * delta_tau;
-    const T t55 = t54 * t54;
-    const T t56 = ap_ap * t42 * t38 - T(2) * t50 * t49 * ab_ap - T(3) * t38 * t40;
-    const T t57 = t38 * ab_ap * t40 + t35 - t39;
-    const T t58 = ap_ap * t50 * t49 + T(2) * t56 * t49 * ab_ap - T(3) * t57 * t49;
-    const T t59 = T(5) * t56 * t49 - T(2) * t52 * t49 * ab_ap - ap_ap * t49 * t51;
-    const T t60 = T(5) * t49 * t58 + t52 * ap_ap * t49 + T(2) * t59 * t49 * ab_ap;
-    const T t61 = t53 * t53;
-    const T t62 = t61 * delta_tau;
-    const T t63 = t45 * t45;
-    const T t64 = t63 * tau_lo;
-    F = (T(1) / T(15)) * t44 * t47 * t38 + (T(4) / T(3)) * t52 * t54 * t46 * t49 - (T(1) / T(15)) * t55 * t49 * (T(5) * t49 * (T(2) * t49 * t58 * ab_ap + T(3) * (ap_ap * t38 * t40 - J1 - T(2) * t57 * t49 * ab_ap) * t49 - ap_ap * t56 * t49) + T(2) * t60 * t49 * ab_ap - t59 * ap_ap * t49) - (T(2) / T(5)) * t60 * t62 * tau_lo * t49 - t53 * t63 * t49 * t51 - t59 * t61 * t45 * t49 - (T(2) / T(5)) * delta_tau * t48 * t64 * t49;
-    const T t65 = t37 * t36;
-    const T t66 = t43 * t41;
-    const T t67 = T(2) * t44 * ab_ab * t38 + T(5) * t65 * t35 * ab_ap + T(5) * a_minus_b * t39 * t66;
-    const T t68 = t38 * ab_ap * t67 + T(5) * t65 * t35 - T(5) * t39 * t66;
-    const T t69 = T(6) * t68 * t49 * ab_ap + T(7) * t44 * t38 - T(3) * ap_ap * t38 * t67;
-    const T t70 = T(7) * t48 * t49 + T(3) * ap_ap * t68 * t49 - T(2) * t69 * t49 * ab_ap;
-    const T t71 = ap_ap * t69 * t49 + T(2) * t70 * t49 * ab_ap + T(7) * t49 * t51;
-    const T t72 = t70 * ap_ap * t49 + T(7) * t52 * t49 - T(2) * t71 * t49 * ab_ap;
-    G_ap = (T(1) / T(105)) * t55 * t49 * (T(2) * t72 * t49 * ab_ap + ap_ap * t71 * t49 - T(7) * t59 * t49) + (T(1) / T(35)) * t47 * t38 * t67 + (T(2) / T(35)) * t72 * t62 * tau_lo * t49 + (T(6) / T(35)) * t68 * delta_tau * t64 * t49 + (T(1) / T(7)) * t69 * t53 * t63 * t49 - (T(1) / T(7)) * t71 * t61 * t45 * t49 - (T(4) / T(21)) * t70 * t54 * t46 * t49;
-    const T t73 = t39 * t39;
-    const T t74 = t73 * t39;
-    const T t75 = t74 * t74;
-    const T t76 = t75 * t39;
-    const T t77 = t35 * t35;
-    const T t78 = t77 * t35;
-    const T t79 = t78 * t78;
-    const T t80 = t79 * t35;
-    G_E = -(T(1) / T(35)) * t49 * (T(5) * t76 * (t47 + T(6) * t62 * tau_lo + t55 + T(15) * t53 * t63 + T(15) * t61 * t45 + T(20) * t54 * t46 + T(6) * delta_tau * t64) + T(20) * t54 * t46 * t49 * t51 + T(10) * t53 * t48 * t63 * t49 + T(10) * t59 * t62 * tau_lo * t49 + T(2) * t60 * t55 * t49 - T(2) * t44 * delta_tau * t64 * t38 - T(5) * t47 * t80 - T(20) * t52 * t61 * t45 * t49);
+    const T t48 = T(1) / cross_cross;
+    const T t49 = T(1) / r1;
+    const T t50 = t45 * ab_ap + a_minus_b * t49;
+    const T t51 = t49 * t49;
+    const T t52 = T(2) * ab_ab * t48 * t50 + a_minus_b * t49 * t51 + t46 * t45 * ab_ap;
+    const T t53 = t51 * t51;
+    const T t54 = T(3) * t47 * t45 * ab_ap + T(4) * ab_ab * t52 * t48 + T(3) * a_minus_b * t49 * t53;
+    const T t55 = tau_lo * tau_lo;
+    const T t56 = t55 * tau_lo;
+    const T t57 = t56 * t56;
+    const T t58 = T(3) * t49 * t53 - t54 * t48 * ab_ap - T(3) * t47 * t45;
+    const T t59 = T(1) / ab_ab;
+    const T t60 = t46 * t45 + t52 * t48 * ab_ap - t49 * t51;
+    const T t61 = t54 * ap_ap * t48 + T(2) * t58 * t59 * ab_ap - T(5) * t52 * t48;
+    const T t62 = ap_ap * t58 * t59 + T(5) * t60 * t59 - T(2) * t59 * ab_ap * t61;
+    const T t63 = delta_tau * delta_tau;
+    const T t64 = t63 * delta_tau;
+    const T t65 = t64 * t64;
+    const T t66 = ap_ap * t52 * t48 - T(2) * t60 * t59 * ab_ap - T(3) * t48 * t50;
+    const T t67 = t48 * ab_ap * t50 + t45 - t49;
+    const T t68 = ap_ap * t60 * t59 + T(2) * t66 * t59 * ab_ap - T(3) * t67 * t59;
+    const T t69 = T(5) * t66 * t59 - T(2) * t62 * t59 * ab_ap - ap_ap * t59 * t61;
+    const T t70 = T(5) * t59 * t68 + t62 * ap_ap * t59 + T(2) * t69 * t59 * ab_ap;
+    const T t71 = t63 * t63;
+    const T t72 = t71 * delta_tau;
+    const T t73 = t55 * t55;
+    const T t74 = t73 * tau_lo;
+    F = (T(1) / T(15)) * t54 * t57 * t48 + (T(4) / T(3)) * t62 * t64 * t56 * t59 - (T(1) / T(15)) * t65 * t59 * (T(5) * t59 * (T(2) * t59 * t68 * ab_ap + T(3) * (ap_ap * t48 * t50 - J1 - T(2) * t67 * t59 * ab_ap) * t59 - ap_ap * t66 * t59) + T(2) * t70 * t59 * ab_ap - t69 * ap_ap * t59) - (T(2) / T(5)) * t70 * t72 * tau_lo * t59 - t63 * t73 * t59 * t61 - t69 * t71 * t55 * t59 - (T(2) / T(5)) * delta_tau * t58 * t74 * t59;
+    const T t75 = t47 * t46;
+    const T t76 = t53 * t51;
+    const T t77 = T(2) * t54 * ab_ab * t48 + T(5) * t75 * t45 * ab_ap + T(5) * a_minus_b * t49 * t76;
+    const T t78 = t48 * ab_ap * t77 + T(5) * t75 * t45 - T(5) * t49 * t76;
+    const T t79 = T(6) * t78 * t59 * ab_ap + T(7) * t54 * t48 - T(3) * ap_ap * t48 * t77;
+    const T t80 = T(7) * t58 * t59 + T(3) * ap_ap * t78 * t59 - T(2) * t79 * t59 * ab_ap;
+    const T t81 = ap_ap * t79 * t59 + T(2) * t80 * t59 * ab_ap + T(7) * t59 * t61;
+    const T t82 = t80 * ap_ap * t59 + T(7) * t62 * t59 - T(2) * t81 * t59 * ab_ap;
+    G_ap = (T(1) / T(105)) * t65 * t59 * (T(2) * t82 * t59 * ab_ap + ap_ap * t81 * t59 - T(7) * t69 * t59) + (T(1) / T(35)) * t57 * t48 * t77 + (T(2) / T(35)) * t82 * t72 * tau_lo * t59 + (T(6) / T(35)) * t78 * delta_tau * t74 * t59 + (T(1) / T(7)) * t79 * t63 * t73 * t59 - (T(1) / T(7)) * t81 * t71 * t55 * t59 - (T(4) / T(21)) * t80 * t64 * t56 * t59;
+    const T t83 = t49 * t49;
+    const T t84 = t83 * t49;
+    const T t85 = t84 * t84;
+    const T t86 = t85 * t49;
+    const T t87 = t57 + T(6) * t72 * tau_lo + t65 + T(15) * t63 * t73 + T(15) * t71 * t55 + T(20) * t64 * t56 + T(6) * delta_tau * t74;
+    const T t88 = t45 * t45;
+    const T t89 = t88 * t45;
+    const T t90 = t89 * t89;
+    const T t91 = t90 * t45;
+    G_E = -(T(1) / T(35)) * t59 * (T(5) * t86 * t87 + T(20) * t64 * t56 * t59 * t61 + T(10) * t63 * t58 * t73 * t59 + T(10) * t69 * t72 * tau_lo * t59 + T(2) * t70 * t65 * t59 - T(2) * t54 * delta_tau * t74 * t48 - T(5) * t57 * t91 - T(20) * t62 * t71 * t55 * t59);
   }
-  const T t81 = in.sigma * in.sigma;
-  const T t82 = t81 * in.sigma;
-  const T t83 = t82 * t82;
-  const T t84 = t83 * in.sigma;
-  const T g_factor = -T(7) * t84 * length;
-  f = t84 * F * length;
+  const T t92 = in.sigma * in.sigma;
+  const T t93 = t92 * in.sigma;
+  const T t94 = t93 * t93;
+  const T t95 = t94 * in.sigma;
+  const T g_factor = -T(7) * t95 * length;
+  f = t95 * F * length;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
   grad[1] = g_factor * (foot1 * G_ap - ab1 * G_E);
   grad[2] = g_factor * (G_ap * foot2 - ab2 * G_E);
@@ -2272,8 +2353,8 @@ T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 74 +, 198 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 13522 +, 18678 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 77 +, 204 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 33342 +, 46206 ×, 6037 /, 137 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2322,7 +2403,7 @@ T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t2 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t3 = -a_minus_b * ab_ap;
-  const T t4 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t4 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t2 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
@@ -2341,7 +2422,7 @@ T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
     const T t16 = t15 * tau_lo;
     F = T(35) * M_panels[4] * t6 * t8 + T(21) * M_panels[2] * t5 * t10 + t13 * M_panels[7] + T(21) * M_panels[5] * t14 * t7 + T(35) * M_panels[3] * t11 * t9 + T(7) * delta_tau * M_panels[1] * t15 + M_panels[0] * t16 + T(7) * M_panels[6] * t12 * tau_lo;
   } else if (t3 >= T(0) && t4 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
     segment_moments_gauss_panels<T>(8, 8, 7, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t17 = delta_tau * delta_tau;
@@ -2407,8 +2488,8 @@ T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 104 +, 290 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 24336 +, 31677 ×, 2437 /, 57 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 107 +, 296 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 48515 +, 63239 ×, 4870 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2467,7 +2548,7 @@ std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in)
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -ab_ap * a_minus_b;
-  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 18> M_panels;
@@ -2489,7 +2570,7 @@ std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in)
     const T t19 = T(1) / ab_ab;
     G_E = t16 * M_panels[17] + T(35) * t7 * t12 * M_panels[14] + T(7) * M_panels[11] * delta_tau * t13 + t17 * M_panels[10] + T(21) * M_panels[12] * t6 * t11 + T(7) * t15 * tau_lo * M_panels[16] + T(35) * t14 * t10 * M_panels[13] + T(21) * M_panels[15] * t8 * t9 - t19 * t18 * ab_ap;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 18> M_panels;
     segment_moments_gauss_panels<T>(8, 10, 8, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t20 = delta_tau * delta_tau;
@@ -2504,63 +2585,70 @@ std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in)
     const T t29 = t20 * t20;
     const T t30 = t25 * delta_tau;
     const T t31 = t29 * delta_tau;
-    const T t32 = T(21) * t20 * t23 * M_panels[11] + T(7) * t25 * tau_lo * M_panels[15] + T(35) * t24 * t22 * M_panels[12] + M_panels[9] * t28 + T(7) * M_panels[10] * delta_tau * t27 + T(35) * M_panels[13] * t29 * t26 + M_panels[16] * t30 + T(21) * t31 * t21 * M_panels[14];
-    G_ap = t32;
-    const T t33 = T(1) / ab_ab;
-    G_E = T(21) * t31 * t21 * M_panels[15] + M_panels[10] * t28 + T(35) * M_panels[13] * t24 * t22 + T(21) * t20 * t23 * M_panels[12] + T(7) * delta_tau * t27 * M_panels[11] + t30 * M_panels[17] + T(7) * M_panels[16] * t25 * tau_lo + T(35) * t29 * t26 * M_panels[14] - t33 * t32 * ab_ap;
+    G_ap = T(21) * t20 * t23 * M_panels[11] + T(7) * t25 * tau_lo * M_panels[15] + T(35) * t24 * t22 * M_panels[12] + M_panels[9] * t28 + T(7) * M_panels[10] * delta_tau * t27 + T(35) * M_panels[13] * t29 * t26 + M_panels[16] * t30 + T(21) * t31 * t21 * M_panels[14];
+    const T t32 = T(1) / ab_ab;
+    const T t33 = T(1) / ap_ap;
+    const T t34 = t33 * t33;
+    const T t35 = t34 * t34;
+    const T t36 = t28 + T(21) * t20 * t23 + t30 + T(7) * t25 * tau_lo + T(35) * t24 * t22 + T(35) * t29 * t26 + T(21) * t31 * t21 + T(7) * delta_tau * t27;
+    const T t37 = T(1) / bp_bp;
+    const T t38 = t37 * t37;
+    const T t39 = t38 * t38;
+    G_E = (T(1) / T(8)) * t32 * (t35 * t28 + T(105) * M_panels[4] * t31 * t21 + T(42) * t25 * tau_lo * M_panels[5] + T(105) * t24 * t22 * M_panels[2] + T(42) * t20 * M_panels[1] * t23 + T(7) * M_panels[0] * delta_tau * t27 + T(140) * M_panels[3] * t29 * t26 + T(7) * M_panels[6] * t30 - t36 * t39);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t34 = sqrt(cross_cross);
-    const T t35 = T(1) / t34;
-    const T J2 = atan2(t34, ap_bp) * t35;
-    const T t36 = tau_lo * tau_lo;
-    const T t37 = t36 * tau_lo;
-    const T t38 = t37 * t37;
-    const T t39 = T(1) / ab_ab;
-    const T t40 = T(1) / ap_ap;
-    const T t41 = t40 * t40;
-    const T t42 = t41 * t41;
-    const T t43 = T(1) / bp_bp;
+    const T t40 = sqrt(cross_cross);
+    const T t41 = T(1) / t40;
+    const T J2 = atan2(t40, ap_bp) * t41;
+    const T t42 = tau_lo * tau_lo;
+    const T t43 = t42 * tau_lo;
     const T t44 = t43 * t43;
-    const T t45 = t44 * t44;
-    const T t46 = t44 * t43;
-    const T t47 = t41 * t40;
-    const T t48 = t40 * ab_ap + a_minus_b * t43 + ab_ab * J2;
-    const T t49 = T(1) / cross_cross;
-    const T t50 = T(2) * a_minus_b * t44 + T(2) * t41 * ab_ap + T(3) * ab_ab * t48 * t49;
-    const T t51 = T(8) * a_minus_b * t46 + T(8) * t47 * ab_ap + T(5) * ab_ab * t50 * t49;
-    const T t52 = T(48) * a_minus_b * t45 + T(7) * ab_ab * t51 * t49 + T(48) * t42 * ab_ap;
-    const T t53 = T(48) * t42 + t52 * ab_ap * t49 - T(48) * t45;
-    const T t54 = T(8) * t47 + t51 * ab_ap * t49 - T(8) * t46;
-    const T t55 = T(2) * t39 * t53 * ab_ap + T(8) * t51 * t49 - ap_ap * t52 * t49;
-    const T t56 = T(8) * t39 * t54 + T(2) * t55 * t39 * ab_ap - ap_ap * t39 * t53;
-    const T t57 = delta_tau * delta_tau;
-    const T t58 = t57 * delta_tau;
-    const T t59 = t36 * t36;
-    const T t60 = T(2) * t41 + t50 * ab_ap * t49 - T(2) * t44;
-    const T t61 = T(6) * t50 * t49 + T(2) * t39 * ab_ap * t54 - ap_ap * t51 * t49;
-    const T t62 = ap_ap * t39 * t54 - T(6) * t60 * t39 - T(2) * t39 * t61 * ab_ap;
-    const T t63 = ap_ap * t55 * t39 - T(8) * t39 * t61 - T(2) * t56 * t39 * ab_ap;
-    const T t64 = T(8) * t62 * t39 + T(2) * t39 * t63 * ab_ap + ap_ap * t56 * t39;
-    const T t65 = T(2) * t60 * t39 * ab_ap + T(4) * t48 * t49 - ap_ap * t50 * t49;
-    const T t66 = T(6) * t39 * t65 - T(2) * t62 * t39 * ab_ap - ap_ap * t39 * t61;
-    const T t67 = t43 - t48 * ab_ap * t49 - t40;
-    const T t68 = ap_ap * t60 * t39 + T(4) * t67 * t39 - T(2) * t39 * ab_ap * t65;
-    const T t69 = ap_ap * t62 * t39 + T(2) * t66 * t39 * ab_ap - T(6) * t68 * t39;
-    const T t70 = T(2) * t64 * t39 * ab_ap - T(8) * t66 * t39 - ap_ap * t39 * t63;
-    const T t71 = t58 * t58;
-    const T t72 = t71 * delta_tau;
-    const T t73 = t38 * tau_lo;
-    const T t74 = t59 * tau_lo;
-    const T t75 = t57 * t57;
-    const T t76 = t75 * delta_tau;
-    G_ap = (T(7) / T(384)) * delta_tau * t38 * t39 * t53 + (T(35) / T(384)) * t56 * t58 * t59 * t39 + (T(1) / T(384)) * (ap_ap * t64 * t39 + T(8) * t39 * t69 - T(2) * t39 * t70 * ab_ap) * t72 * t39 + (T(1) / T(384)) * t52 * t73 * t49 + (T(7) / T(128)) * t55 * t57 * t74 * t39 - (T(7) / T(128)) * t64 * t76 * t36 * t39 - (T(35) / T(384)) * t75 * t37 * t39 * t63 - (T(7) / T(384)) * t71 * tau_lo * t39 * t70;
-    G_E = -(T(1) / T(384)) * t39 * (T(7) * (T(6) * t39 * (ap_ap * t39 * t65 + T(4) * t39 * (T(2) * t67 * t39 * ab_ap + ap_ap * t48 * t49 - T(2) * J2) + T(2) * t68 * t39 * ab_ap) + t66 * ap_ap * t39 - T(2) * t39 * ab_ap * t69) * t72 * t39 + T(48) * (t73 + T(21) * t57 * t74 + t72 + T(7) * t71 * tau_lo + T(35) * t58 * t59 + T(35) * t75 * t37 + T(21) * t76 * t36 + T(7) * delta_tau * t38) * t45 + T(140) * t62 * t75 * t37 * t39 - T(48) * t42 * t73 - T(105) * t58 * t59 * t39 * t61 - T(7) * delta_tau * t38 * t51 * t49 - T(105) * t66 * t76 * t36 * t39 - T(42) * t71 * tau_lo * t39 * t69 - T(42) * t57 * t74 * t39 * t54);
+    const T t45 = T(1) / ab_ab;
+    const T t46 = T(1) / ap_ap;
+    const T t47 = t46 * t46;
+    const T t48 = t47 * t47;
+    const T t49 = T(1) / bp_bp;
+    const T t50 = t49 * t49;
+    const T t51 = t50 * t50;
+    const T t52 = t50 * t49;
+    const T t53 = t47 * t46;
+    const T t54 = t46 * ab_ap + a_minus_b * t49 + ab_ab * J2;
+    const T t55 = T(1) / cross_cross;
+    const T t56 = T(2) * a_minus_b * t50 + T(2) * t47 * ab_ap + T(3) * ab_ab * t54 * t55;
+    const T t57 = T(8) * a_minus_b * t52 + T(8) * t53 * ab_ap + T(5) * ab_ab * t56 * t55;
+    const T t58 = T(48) * a_minus_b * t51 + T(7) * ab_ab * t57 * t55 + T(48) * t48 * ab_ap;
+    const T t59 = T(48) * t48 + t58 * ab_ap * t55 - T(48) * t51;
+    const T t60 = T(8) * t53 + t57 * ab_ap * t55 - T(8) * t52;
+    const T t61 = T(2) * t45 * t59 * ab_ap + T(8) * t57 * t55 - ap_ap * t58 * t55;
+    const T t62 = T(8) * t45 * t60 + T(2) * t61 * t45 * ab_ap - ap_ap * t45 * t59;
+    const T t63 = delta_tau * delta_tau;
+    const T t64 = t63 * delta_tau;
+    const T t65 = t42 * t42;
+    const T t66 = T(2) * t47 + t56 * ab_ap * t55 - T(2) * t50;
+    const T t67 = T(6) * t56 * t55 + T(2) * t45 * ab_ap * t60 - ap_ap * t57 * t55;
+    const T t68 = ap_ap * t45 * t60 - T(6) * t66 * t45 - T(2) * t45 * t67 * ab_ap;
+    const T t69 = ap_ap * t61 * t45 - T(8) * t45 * t67 - T(2) * t62 * t45 * ab_ap;
+    const T t70 = T(8) * t68 * t45 + T(2) * t45 * t69 * ab_ap + ap_ap * t62 * t45;
+    const T t71 = T(2) * t66 * t45 * ab_ap + T(4) * t54 * t55 - ap_ap * t56 * t55;
+    const T t72 = T(6) * t45 * t71 - T(2) * t68 * t45 * ab_ap - ap_ap * t45 * t67;
+    const T t73 = t49 - t54 * ab_ap * t55 - t46;
+    const T t74 = ap_ap * t66 * t45 + T(4) * t73 * t45 - T(2) * t45 * ab_ap * t71;
+    const T t75 = ap_ap * t68 * t45 + T(2) * t72 * t45 * ab_ap - T(6) * t74 * t45;
+    const T t76 = T(2) * t70 * t45 * ab_ap - T(8) * t72 * t45 - ap_ap * t45 * t69;
+    const T t77 = t64 * t64;
+    const T t78 = t77 * delta_tau;
+    const T t79 = t44 * tau_lo;
+    const T t80 = t65 * tau_lo;
+    const T t81 = t63 * t63;
+    const T t82 = t81 * delta_tau;
+    G_ap = (T(7) / T(384)) * delta_tau * t44 * t45 * t59 + (T(35) / T(384)) * t62 * t64 * t65 * t45 + (T(1) / T(384)) * (ap_ap * t70 * t45 + T(8) * t45 * t75 - T(2) * t45 * t76 * ab_ap) * t78 * t45 + (T(1) / T(384)) * t58 * t79 * t55 + (T(7) / T(128)) * t61 * t63 * t80 * t45 - (T(7) / T(128)) * t70 * t82 * t42 * t45 - (T(35) / T(384)) * t81 * t43 * t45 * t69 - (T(7) / T(384)) * t77 * tau_lo * t45 * t76;
+    const T t83 = t79 + T(21) * t63 * t80 + t78 + T(7) * t77 * tau_lo + T(35) * t64 * t65 + T(35) * t81 * t43 + T(21) * t82 * t42 + T(7) * delta_tau * t44;
+    G_E = -(T(1) / T(384)) * t45 * (T(7) * (T(6) * t45 * (ap_ap * t45 * t71 + T(4) * t45 * (T(2) * t73 * t45 * ab_ap + ap_ap * t54 * t55 - T(2) * J2) + T(2) * t74 * t45 * ab_ap) + t72 * ap_ap * t45 - T(2) * t45 * ab_ap * t75) * t78 * t45 + T(48) * t83 * t51 + T(140) * t68 * t81 * t43 * t45 - T(48) * t48 * t79 - T(105) * t64 * t65 * t45 * t67 - T(7) * delta_tau * t44 * t57 * t55 - T(105) * t72 * t82 * t42 * t45 - T(42) * t77 * tau_lo * t45 * t75 - T(42) * t63 * t80 * t45 * t60);
   }
-  const T t77 = in.sigma * in.sigma;
-  const T t78 = t77 * t77;
-  const T t79 = t78 * t78;
-  const T g_factor = -T(8) * length * t79;
+  const T t84 = in.sigma * in.sigma;
+  const T t85 = t84 * t84;
+  const T t86 = t85 * t85;
+  const T g_factor = -T(8) * length * t86;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
   grad[2] = (G_ap * foot2 - ab2 * G_E) * g_factor;
@@ -2569,8 +2657,8 @@ std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in)
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 118 +, 345 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 24343 +, 31700 ×, 2438 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 121 +, 351 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 48522 +, 63262 ×, 4870 /, 111 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2632,7 +2720,7 @@ T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   T G_E;
   const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t6 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t4 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 18> M_panels;
@@ -2655,7 +2743,7 @@ T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t20 = T(1) / ab_ab;
     G_E = T(21) * M_panels[12] * t7 * t16 + M_panels[17] * t10 + T(7) * M_panels[11] * delta_tau * t17 + T(7) * M_panels[16] * t9 * tau_lo + T(35) * M_panels[14] * t11 * t13 + M_panels[10] * t18 + T(21) * t15 * t12 * M_panels[15] + T(35) * M_panels[13] * t8 * t14 - ab_ap * t19 * t20;
   } else if (t5 >= T(0) && t6 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 18> M_panels;
     segment_moments_gauss_panels<T>(8, 10, 8, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t21 = delta_tau * delta_tau;
@@ -2671,67 +2759,73 @@ T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t31 = t30 * delta_tau;
     const T t32 = t24 * tau_lo;
     F = T(35) * M_panels[3] * t22 * t24 + T(21) * M_panels[5] * t26 * t23 + T(7) * M_panels[1] * delta_tau * t28 + T(35) * M_panels[4] * t25 * t27 + M_panels[0] * t29 + M_panels[7] * t31 + T(21) * M_panels[2] * t21 * t32 + T(7) * t30 * M_panels[6] * tau_lo;
-    const T t33 = T(35) * M_panels[12] * t22 * t24 + T(21) * M_panels[14] * t26 * t23 + M_panels[9] * t29 + T(7) * M_panels[10] * delta_tau * t28 + T(35) * M_panels[13] * t25 * t27 + t31 * M_panels[16] + T(7) * M_panels[15] * t30 * tau_lo + T(21) * M_panels[11] * t21 * t32;
-    G_ap = t33;
-    const T t34 = T(1) / ab_ab;
-    G_E = M_panels[10] * t29 + T(7) * M_panels[11] * delta_tau * t28 + T(35) * M_panels[14] * t25 * t27 + M_panels[17] * t31 + T(21) * M_panels[12] * t21 * t32 + T(35) * M_panels[13] * t22 * t24 + T(21) * M_panels[15] * t26 * t23 + T(7) * t30 * tau_lo * M_panels[16] - t33 * ab_ap * t34;
+    G_ap = T(35) * M_panels[12] * t22 * t24 + T(21) * M_panels[14] * t26 * t23 + M_panels[9] * t29 + T(7) * M_panels[10] * delta_tau * t28 + T(35) * M_panels[13] * t25 * t27 + t31 * M_panels[16] + T(7) * M_panels[15] * t30 * tau_lo + T(21) * M_panels[11] * t21 * t32;
+    const T t33 = t3 * t3;
+    const T t34 = t33 * t33;
+    const T t35 = T(7) * delta_tau * t28 + t29 + t31 + T(21) * t26 * t23 + T(35) * t22 * t24 + T(35) * t25 * t27 + T(7) * t30 * tau_lo + T(21) * t21 * t32;
+    const T t36 = T(1) / bp_bp;
+    const T t37 = t36 * t36;
+    const T t38 = t37 * t37;
+    const T t39 = T(1) / ab_ab;
+    G_E = (T(1) / T(8)) * (T(140) * M_panels[3] * t25 * t27 + T(7) * delta_tau * M_panels[0] * t28 + T(42) * M_panels[5] * t30 * tau_lo + T(42) * M_panels[1] * t21 * t32 + T(105) * M_panels[2] * t22 * t24 + T(7) * t31 * M_panels[6] + T(105) * M_panels[4] * t26 * t23 + t34 * t29 - t35 * t38) * t39;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t35 = sqrt(cross_cross);
-    const T t36 = T(1) / t35;
-    const T J2 = t36 * atan2(t35, ap_bp);
-    const T t37 = T(1) / cross_cross;
-    const T t38 = t3 * t3;
-    const T t39 = T(1) / bp_bp;
-    const T t40 = t39 * t39;
-    const T t41 = J2 * ab_ab + t39 * a_minus_b + ab_ap * t3;
-    const T t42 = T(2) * ab_ap * t38 + T(2) * t40 * a_minus_b + T(3) * t37 * t41 * ab_ab;
-    const T t43 = t38 * t3;
-    const T t44 = t40 * t39;
-    const T t45 = T(8) * ab_ap * t43 + T(8) * t44 * a_minus_b + T(5) * t37 * t42 * ab_ab;
-    const T t46 = t37 * ab_ap * t45 + T(8) * t43 - T(8) * t44;
-    const T t47 = T(1) / ab_ab;
-    const T t48 = T(6) * t37 * t42 + T(2) * t46 * ab_ap * t47 - t37 * t45 * ap_ap;
-    const T t49 = delta_tau * delta_tau;
-    const T t50 = tau_lo * tau_lo;
-    const T t51 = t50 * t50;
-    const T t52 = t51 * tau_lo;
-    const T t53 = t50 * tau_lo;
-    const T t54 = t53 * t53;
-    const T t55 = t54 * tau_lo;
-    const T t56 = T(2) * t38 + t37 * ab_ap * t42 - T(2) * t40;
-    const T t57 = T(2) * ab_ap * t56 * t47 + T(4) * t37 * t41 - t37 * ap_ap * t42;
-    const T t58 = t39 - t37 * ab_ap * t41 - t3;
-    const T t59 = T(2) * t57 * ab_ap * t47 - ap_ap * t56 * t47 - T(4) * t58 * t47;
-    const T t60 = T(2) * t58 * ab_ap * t47 + t37 * t41 * ap_ap - T(2) * J2;
-    const T t61 = T(4) * t60 * t47 + t57 * ap_ap * t47 - T(2) * ab_ap * t59 * t47;
-    const T t62 = t46 * ap_ap * t47 - T(2) * ab_ap * t48 * t47 - T(6) * t56 * t47;
-    const T t63 = T(2) * ab_ap * t62 * t47 + ap_ap * t48 * t47 - T(6) * t57 * t47;
-    const T t64 = T(2) * t63 * ab_ap * t47 - ap_ap * t62 * t47 - T(6) * t59 * t47;
-    const T t65 = T(2) * ab_ap * t64 * t47 + T(6) * t61 * t47 - t63 * ap_ap * t47;
-    const T t66 = t49 * delta_tau;
-    const T t67 = t66 * t66;
-    const T t68 = t67 * delta_tau;
-    const T t69 = t49 * t49;
-    const T t70 = t69 * delta_tau;
-    F = (T(7) / T(16)) * t48 * t49 * t52 * t47 + (T(7) / T(48)) * t46 * delta_tau * t54 * t47 + (T(1) / T(48)) * t37 * t45 * t55 - (T(1) / T(48)) * (T(6) * (ap_ap * t59 * t47 + T(2) * ab_ap * t61 * t47 - T(4) * (t58 * ap_ap * t47 + (T(2) * ab_ap * J2 + log_ratio) * t47 - T(2) * t60 * ab_ap * t47) * t47) * t47 + T(2) * t65 * ab_ap * t47 - t64 * ap_ap * t47) * t68 * t47 - (T(7) / T(48)) * t65 * t67 * tau_lo * t47 - (T(35) / T(48)) * t63 * t69 * t53 * t47 - (T(7) / T(16)) * t64 * t70 * t50 * t47 - (T(35) / T(48)) * t66 * t62 * t51 * t47;
-    const T t71 = t38 * t38;
-    const T t72 = t40 * t40;
-    const T t73 = T(7) * t37 * t45 * ab_ab + T(48) * ab_ap * t71 + T(48) * t72 * a_minus_b;
-    const T t74 = t37 * ab_ap * t73 + T(48) * t71 - T(48) * t72;
-    const T t75 = t37 * ap_ap * t73 - T(2) * ab_ap * t74 * t47 - T(8) * t37 * t45;
-    const T t76 = T(8) * t46 * t47 - T(2) * ab_ap * t75 * t47 - t74 * ap_ap * t47;
-    const T t77 = T(8) * t48 * t47 + T(2) * t76 * ab_ap * t47 + t75 * ap_ap * t47;
-    const T t78 = T(2) * ab_ap * t77 * t47 - T(8) * t62 * t47 - t76 * ap_ap * t47;
-    const T t79 = T(8) * t63 * t47 + ap_ap * t77 * t47 - T(2) * t78 * ab_ap * t47;
-    G_ap = (T(7) / T(128)) * t78 * t70 * t50 * t47 + (T(7) / T(384)) * t74 * delta_tau * t54 * t47 + (T(35) / T(384)) * t76 * t66 * t51 * t47 + (T(35) / T(384)) * t77 * t69 * t53 * t47 + (T(1) / T(384)) * t37 * t73 * t55 - (T(1) / T(384)) * (T(8) * t64 * t47 + T(2) * ab_ap * t79 * t47 + t78 * ap_ap * t47) * t68 * t47 - (T(7) / T(128)) * t75 * t49 * t52 * t47 - (T(7) / T(384)) * t79 * t67 * tau_lo * t47;
-    G_E = (T(1) / T(384)) * (T(42) * t46 * t49 * t52 * t47 + T(7) * t37 * t45 * delta_tau * t54 + T(105) * t48 * t66 * t51 * t47 + T(48) * t71 * t55 - T(105) * t63 * t70 * t50 * t47 - T(42) * t64 * t67 * tau_lo * t47 - T(140) * t69 * t62 * t53 * t47 - T(48) * (T(7) * delta_tau * t54 + t55 + t68 + T(21) * t70 * t50 + T(35) * t66 * t51 + T(35) * t69 * t53 + T(7) * t67 * tau_lo + T(21) * t49 * t52) * t72 - T(7) * t65 * t68 * t47) * t47;
+    const T t40 = sqrt(cross_cross);
+    const T t41 = T(1) / t40;
+    const T J2 = t41 * atan2(t40, ap_bp);
+    const T t42 = T(1) / cross_cross;
+    const T t43 = t3 * t3;
+    const T t44 = T(1) / bp_bp;
+    const T t45 = t44 * t44;
+    const T t46 = J2 * ab_ab + t44 * a_minus_b + ab_ap * t3;
+    const T t47 = T(2) * ab_ap * t43 + T(2) * t45 * a_minus_b + T(3) * t42 * t46 * ab_ab;
+    const T t48 = t43 * t3;
+    const T t49 = t45 * t44;
+    const T t50 = T(8) * ab_ap * t48 + T(8) * t49 * a_minus_b + T(5) * t42 * t47 * ab_ab;
+    const T t51 = t42 * ab_ap * t50 + T(8) * t48 - T(8) * t49;
+    const T t52 = T(1) / ab_ab;
+    const T t53 = T(6) * t42 * t47 + T(2) * t51 * ab_ap * t52 - t42 * t50 * ap_ap;
+    const T t54 = delta_tau * delta_tau;
+    const T t55 = tau_lo * tau_lo;
+    const T t56 = t55 * t55;
+    const T t57 = t56 * tau_lo;
+    const T t58 = t55 * tau_lo;
+    const T t59 = t58 * t58;
+    const T t60 = t59 * tau_lo;
+    const T t61 = T(2) * t43 + t42 * ab_ap * t47 - T(2) * t45;
+    const T t62 = T(2) * ab_ap * t61 * t52 + T(4) * t42 * t46 - t42 * ap_ap * t47;
+    const T t63 = t44 - t42 * ab_ap * t46 - t3;
+    const T t64 = T(2) * t62 * ab_ap * t52 - ap_ap * t61 * t52 - T(4) * t63 * t52;
+    const T t65 = T(2) * t63 * ab_ap * t52 + t42 * t46 * ap_ap - T(2) * J2;
+    const T t66 = T(4) * t65 * t52 + t62 * ap_ap * t52 - T(2) * ab_ap * t64 * t52;
+    const T t67 = t51 * ap_ap * t52 - T(2) * ab_ap * t53 * t52 - T(6) * t61 * t52;
+    const T t68 = T(2) * ab_ap * t67 * t52 + ap_ap * t53 * t52 - T(6) * t62 * t52;
+    const T t69 = T(2) * t68 * ab_ap * t52 - ap_ap * t67 * t52 - T(6) * t64 * t52;
+    const T t70 = T(2) * ab_ap * t69 * t52 + T(6) * t66 * t52 - t68 * ap_ap * t52;
+    const T t71 = t54 * delta_tau;
+    const T t72 = t71 * t71;
+    const T t73 = t72 * delta_tau;
+    const T t74 = t54 * t54;
+    const T t75 = t74 * delta_tau;
+    F = (T(7) / T(16)) * t53 * t54 * t57 * t52 + (T(7) / T(48)) * t51 * delta_tau * t59 * t52 + (T(1) / T(48)) * t42 * t50 * t60 - (T(1) / T(48)) * (T(6) * (ap_ap * t64 * t52 + T(2) * ab_ap * t66 * t52 - T(4) * (t63 * ap_ap * t52 + (T(2) * ab_ap * J2 + log_ratio) * t52 - T(2) * t65 * ab_ap * t52) * t52) * t52 + T(2) * t70 * ab_ap * t52 - t69 * ap_ap * t52) * t73 * t52 - (T(7) / T(48)) * t70 * t72 * tau_lo * t52 - (T(35) / T(48)) * t68 * t74 * t58 * t52 - (T(7) / T(16)) * t69 * t75 * t55 * t52 - (T(35) / T(48)) * t71 * t67 * t56 * t52;
+    const T t76 = t43 * t43;
+    const T t77 = t45 * t45;
+    const T t78 = T(7) * t42 * t50 * ab_ab + T(48) * ab_ap * t76 + T(48) * t77 * a_minus_b;
+    const T t79 = t42 * ab_ap * t78 + T(48) * t76 - T(48) * t77;
+    const T t80 = t42 * ap_ap * t78 - T(2) * ab_ap * t79 * t52 - T(8) * t42 * t50;
+    const T t81 = T(8) * t51 * t52 - T(2) * ab_ap * t80 * t52 - t79 * ap_ap * t52;
+    const T t82 = T(8) * t53 * t52 + T(2) * t81 * ab_ap * t52 + t80 * ap_ap * t52;
+    const T t83 = T(2) * ab_ap * t82 * t52 - T(8) * t67 * t52 - t81 * ap_ap * t52;
+    const T t84 = T(8) * t68 * t52 + ap_ap * t82 * t52 - T(2) * t83 * ab_ap * t52;
+    G_ap = (T(7) / T(128)) * t83 * t75 * t55 * t52 + (T(7) / T(384)) * t79 * delta_tau * t59 * t52 + (T(35) / T(384)) * t81 * t71 * t56 * t52 + (T(35) / T(384)) * t82 * t74 * t58 * t52 + (T(1) / T(384)) * t42 * t78 * t60 - (T(1) / T(384)) * (T(8) * t69 * t52 + T(2) * ab_ap * t84 * t52 + t83 * ap_ap * t52) * t73 * t52 - (T(7) / T(128)) * t80 * t54 * t57 * t52 - (T(7) / T(384)) * t84 * t72 * tau_lo * t52;
+    const T t85 = T(7) * delta_tau * t59 + t60 + t73 + T(21) * t75 * t55 + T(35) * t71 * t56 + T(35) * t74 * t58 + T(7) * t72 * tau_lo + T(21) * t54 * t57;
+    G_E = (T(1) / T(384)) * (T(42) * t51 * t54 * t57 * t52 + T(7) * t42 * t50 * delta_tau * t59 + T(105) * t53 * t71 * t56 * t52 + T(48) * t76 * t60 - T(105) * t68 * t75 * t55 * t52 - T(42) * t69 * t72 * tau_lo * t52 - T(140) * t74 * t67 * t58 * t52 - T(48) * t85 * t77 - T(7) * t70 * t73 * t52) * t52;
   }
-  const T t80 = in.sigma * in.sigma;
-  const T t81 = t80 * t80;
-  const T t82 = t81 * t81;
-  const T g_factor = -T(8) * length * t82;
-  f = length * t82 * F;
+  const T t86 = in.sigma * in.sigma;
+  const T t87 = t86 * t86;
+  const T t88 = t87 * t87;
+  const T g_factor = -T(8) * length * t88;
+  f = length * t88 * F;
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
   grad[1] = -(ab1 * G_E - foot1 * G_ap) * g_factor;
   grad[2] = (foot2 * G_ap - ab2 * G_E) * g_factor;
@@ -2740,8 +2834,8 @@ T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 84 +, 254 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 14602 +, 25166 ×, 2437 /, 1139 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 87 +, 260 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 32002 +, 55334 ×, 5363 /, 2504 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i9_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2803,7 +2897,7 @@ T scalis_segment_inverse_i9_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t6 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t7 = -ab_ap * a_minus_b;
-  const T t8 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t8 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t6 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 9> M_panels;
@@ -2824,7 +2918,7 @@ T scalis_segment_inverse_i9_f(const ScalisSegmentInput<T>& in) {
     const T t22 = t15 * tau_lo;
     F = T(70) * M_panels[4] * t10 * t12 + M_panels[0] * t13 + T(28) * t9 * t15 * M_panels[2] + T(56) * M_panels[3] * t16 * t17 + T(8) * M_panels[7] * t19 * tau_lo + T(28) * M_panels[6] * t18 * t11 + t20 * M_panels[8] + T(56) * t21 * t14 * M_panels[5] + T(8) * delta_tau * M_panels[1] * t22;
   } else if (t7 >= T(0) && t8 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 9> M_panels;
     segment_moments_gauss_panels<T>(9, 9, 8, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t23 = delta_tau * delta_tau;
@@ -2900,8 +2994,8 @@ T scalis_segment_inverse_i9_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 116 +, 362 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 26496 +, 40323 ×, 2437 /, 1139 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 119 +, 368 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 47956 +, 73091 ×, 4420 /, 2063 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2961,7 +3055,7 @@ std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in)
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -a_minus_b * ab_ap;
-  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 20> M_panels;
@@ -2985,7 +3079,7 @@ std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in)
     const T t21 = T(1) / ab_ab;
     G_E = T(56) * M_panels[16] * t15 * t16 + T(8) * M_panels[18] * t14 * tau_lo + T(28) * M_panels[13] * t6 * t17 + t18 * M_panels[11] + T(70) * M_panels[15] * t7 * t9 + T(8) * M_panels[12] * delta_tau * t19 + M_panels[19] * t10 + T(56) * t11 * t12 * M_panels[14] + T(28) * t13 * t8 * M_panels[17] - t20 * t21 * ab_ap;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 20> M_panels;
     segment_moments_gauss_panels<T>(9, 11, 9, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t22 = delta_tau * delta_tau;
@@ -3002,78 +3096,89 @@ std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in)
     const T t33 = t26 * t26;
     const T t34 = t33 * tau_lo;
     const T t35 = t31 * tau_lo;
-    const T t36 = T(56) * M_panels[15] * t24 * t26 + T(8) * M_panels[17] * t29 * tau_lo + M_panels[18] * t30 + T(70) * M_panels[14] * t23 * t31 + t32 * M_panels[10] + T(8) * M_panels[11] * delta_tau * t34 + T(56) * t27 * t35 * M_panels[13] + T(28) * t28 * t25 * M_panels[16] + T(28) * M_panels[12] * t22 * t33;
-    G_ap = t36;
-    const T t37 = T(1) / ab_ab;
-    G_E = T(28) * M_panels[17] * t28 * t25 + T(8) * M_panels[12] * delta_tau * t34 + t30 * M_panels[19] + T(28) * t22 * t33 * M_panels[13] + T(56) * t24 * t26 * M_panels[16] + T(56) * M_panels[14] * t27 * t35 + T(8) * M_panels[18] * t29 * tau_lo + T(70) * M_panels[15] * t23 * t31 + M_panels[11] * t32 - t37 * t36 * ab_ap;
-  } else {
-    // recurrence (1) upwards from J_1, J_2
-    const T t38 = T(1) / cross_cross;
-    const T t39 = tau_lo * tau_lo;
+    G_ap = T(56) * M_panels[15] * t24 * t26 + T(8) * M_panels[17] * t29 * tau_lo + M_panels[18] * t30 + T(70) * M_panels[14] * t23 * t31 + t32 * M_panels[10] + T(8) * M_panels[11] * delta_tau * t34 + T(56) * t27 * t35 * M_panels[13] + T(28) * t28 * t25 * M_panels[16] + T(28) * M_panels[12] * t22 * t33;
+    const T t36 = T(1) / ab_ab;
+    const T t37 = T(1) / r0;
+    const T t38 = t37 * t37;
+    const T t39 = t38 * t38;
     const T t40 = t39 * t39;
-    const T t41 = t40 * t40;
-    const T t42 = T(1) / r0;
-    const T t43 = t42 * t42;
+    const T t41 = t40 * t37;
+    const T t42 = t32 + T(8) * t29 * tau_lo + T(56) * t24 * t26 + T(56) * t27 * t35 + T(28) * t22 * t33 + T(28) * t28 * t25 + t30 + T(8) * delta_tau * t34 + T(70) * t23 * t31;
+    const T t43 = T(1) / r1;
     const T t44 = t43 * t43;
     const T t45 = t44 * t44;
-    const T t46 = T(1) / r1;
-    const T t47 = t46 * t46;
-    const T t48 = t47 * t47;
-    const T t49 = t48 * t47;
-    const T t50 = t44 * t43;
-    const T t51 = t46 * a_minus_b + t42 * ab_ap;
-    const T t52 = t42 * t43 * ab_ap + T(2) * ab_ab * t38 * t51 + t46 * a_minus_b * t47;
-    const T t53 = T(4) * ab_ab * t38 * t52 + T(3) * t46 * a_minus_b * t48 + T(3) * t42 * t44 * ab_ap;
-    const T t54 = T(5) * t46 * a_minus_b * t49 + T(5) * t42 * t50 * ab_ap + T(2) * t53 * ab_ab * t38;
-    const T t55 = t48 * t48;
-    const T t56 = T(35) * t42 * t45 * ab_ap + T(8) * t54 * ab_ab * t38 + T(35) * t46 * a_minus_b * t55;
-    const T t57 = T(1) / ab_ab;
-    const T t58 = delta_tau * delta_tau;
-    const T t59 = t58 * delta_tau;
-    const T t60 = t59 * t59;
-    const T t61 = T(35) * t46 * t55 - t38 * ab_ap * t56 - T(35) * t42 * t45;
-    const T t62 = t54 * t38 * ab_ap + T(5) * t42 * t50 - T(5) * t46 * t49;
-    const T t63 = T(2) * t61 * t57 * ab_ap + ap_ap * t38 * t56 - T(9) * t54 * t38;
-    const T t64 = t61 * ap_ap * t57 + T(9) * t62 * t57 - T(2) * t63 * t57 * ab_ap;
-    const T t65 = T(6) * t62 * t57 * ab_ap + T(7) * t53 * t38 - T(3) * ap_ap * t54 * t38;
-    const T t66 = T(2) * t64 * t57 * ab_ap + t63 * ap_ap * t57 + T(3) * t57 * t65;
-    const T t67 = t53 * t38 * ab_ap + T(3) * t42 * t44 - T(3) * t46 * t48;
-    const T t68 = T(7) * t67 * t57 + T(2) * t57 * ab_ap * t65 - T(3) * ap_ap * t62 * t57;
-    const T t69 = T(2) * t57 * ab_ap * t66 + T(3) * t57 * t68 - ap_ap * t64 * t57;
-    const T t70 = ap_ap * t53 * t38 - T(5) * t38 * t52 - T(2) * t67 * t57 * ab_ap;
-    const T t71 = ap_ap * t57 * t65 + T(7) * t57 * t70 - T(2) * t57 * ab_ap * t68;
-    const T t72 = T(2) * t57 * ab_ap * t69 - ap_ap * t57 * t66 - T(3) * t71 * t57;
-    const T t73 = t58 * t58;
-    const T t74 = t40 * tau_lo;
-    const T t75 = t73 * delta_tau;
-    const T t76 = t39 * tau_lo;
-    const T t77 = t76 * t76;
-    const T t78 = t46 * t47 - t42 * t43 - t38 * t52 * ab_ap;
-    const T t79 = T(5) * t57 * t78 + T(2) * t57 * t70 * ab_ap + t67 * ap_ap * t57;
-    const T t80 = ap_ap * t57 * t68 + T(7) * t79 * t57 + T(2) * t71 * t57 * ab_ap;
-    const T t81 = ap_ap * t57 * t69 + T(3) * t57 * t80 - T(2) * t57 * t72 * ab_ap;
-    const T t82 = t60 * delta_tau;
-    const T t83 = t73 * t73;
-    const T t84 = ap_ap * t38 * t52 + T(2) * t57 * t78 * ab_ap - T(3) * t38 * t51;
-    const T t85 = T(2) * t79 * t57 * ab_ap + T(5) * t84 * t57 - ap_ap * t57 * t70;
-    const T t86 = ap_ap * t71 * t57 - T(2) * t57 * ab_ap * t80 - T(7) * t57 * t85;
-    const T t87 = t77 * tau_lo;
-    G_ap = (T(1) / T(315)) * t38 * t41 * t56 + (T(4) / T(45)) * t57 * t60 * t39 * t72 + (T(2) / T(9)) * t57 * t73 * t40 * t66 + (T(8) / T(45)) * t64 * t57 * t59 * t74 + (T(8) / T(45)) * t57 * t75 * t76 * t69 - (T(4) / T(45)) * t63 * t57 * t58 * t77 - (T(8) / T(315)) * t81 * t57 * t82 * tau_lo - (T(1) / T(315)) * t57 * t83 * (T(2) * t81 * t57 * ab_ap + ap_ap * t57 * t72 - T(3) * t86 * t57) - (T(8) / T(315)) * t61 * t57 * delta_tau * t87;
-    const T t88 = t42 * t42;
-    const T t89 = t88 * t88;
-    const T t90 = t89 * t89;
-    const T t91 = t90 * t42;
-    const T t92 = t46 * t46;
-    const T t93 = t92 * t92;
-    const T t94 = t93 * t93;
-    const T t95 = t94 * t46;
-    G_E = (T(1) / T(945)) * t57 * (T(105) * t91 * t41 + T(56) * t86 * t57 * t82 * tau_lo + T(168) * t62 * t57 * t58 * t77 + T(280) * t57 * t73 * t40 * t68 + T(8) * t57 * t83 * (T(2) * t86 * t57 * ab_ap + ap_ap * t57 * t80 - T(7) * (T(2) * t57 * ab_ap * t85 + T(5) * (T(2) * t84 * t57 * ab_ap + T(3) * (t46 - t42 - t38 * ab_ap * t51) * t57 - ap_ap * t57 * t78) * t57 - ap_ap * t79 * t57) * t57) + T(168) * t57 * t59 * t74 * t65 + T(24) * t54 * delta_tau * t38 * t87 - T(168) * t57 * t60 * t39 * t80 - T(105) * (t41 + T(8) * t82 * tau_lo + T(56) * t75 * t76 + T(56) * t59 * t74 + T(28) * t58 * t77 + T(28) * t60 * t39 + t83 + T(8) * delta_tau * t87 + T(70) * t73 * t40) * t95 - T(280) * t71 * t57 * t75 * t76);
+    const T t46 = t45 * t45;
+    const T t47 = t46 * t43;
+    G_E = (T(1) / T(9)) * t36 * (t41 * t32 + T(168) * M_panels[2] * t27 * t35 + T(280) * M_panels[3] * t23 * t31 + T(56) * M_panels[6] * t29 * tau_lo + T(56) * t22 * t33 * M_panels[1] + T(168) * M_panels[5] * t28 * t25 + T(8) * t30 * M_panels[7] + T(280) * t24 * t26 * M_panels[4] + T(8) * delta_tau * M_panels[0] * t34 - t42 * t47);
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t48 = T(1) / cross_cross;
+    const T t49 = tau_lo * tau_lo;
+    const T t50 = t49 * t49;
+    const T t51 = t50 * t50;
+    const T t52 = T(1) / r0;
+    const T t53 = t52 * t52;
+    const T t54 = t53 * t53;
+    const T t55 = t54 * t54;
+    const T t56 = T(1) / r1;
+    const T t57 = t56 * t56;
+    const T t58 = t57 * t57;
+    const T t59 = t58 * t57;
+    const T t60 = t54 * t53;
+    const T t61 = t56 * a_minus_b + t52 * ab_ap;
+    const T t62 = t52 * t53 * ab_ap + T(2) * ab_ab * t48 * t61 + t56 * a_minus_b * t57;
+    const T t63 = T(4) * ab_ab * t48 * t62 + T(3) * t56 * a_minus_b * t58 + T(3) * t52 * t54 * ab_ap;
+    const T t64 = T(5) * t56 * a_minus_b * t59 + T(5) * t52 * t60 * ab_ap + T(2) * t63 * ab_ab * t48;
+    const T t65 = t58 * t58;
+    const T t66 = T(35) * t52 * t55 * ab_ap + T(8) * t64 * ab_ab * t48 + T(35) * t56 * a_minus_b * t65;
+    const T t67 = T(1) / ab_ab;
+    const T t68 = delta_tau * delta_tau;
+    const T t69 = t68 * delta_tau;
+    const T t70 = t69 * t69;
+    const T t71 = T(35) * t56 * t65 - t48 * ab_ap * t66 - T(35) * t52 * t55;
+    const T t72 = t64 * t48 * ab_ap + T(5) * t52 * t60 - T(5) * t56 * t59;
+    const T t73 = T(2) * t71 * t67 * ab_ap + ap_ap * t48 * t66 - T(9) * t64 * t48;
+    const T t74 = t71 * ap_ap * t67 + T(9) * t72 * t67 - T(2) * t73 * t67 * ab_ap;
+    const T t75 = T(6) * t72 * t67 * ab_ap + T(7) * t63 * t48 - T(3) * ap_ap * t64 * t48;
+    const T t76 = T(2) * t74 * t67 * ab_ap + t73 * ap_ap * t67 + T(3) * t67 * t75;
+    const T t77 = t63 * t48 * ab_ap + T(3) * t52 * t54 - T(3) * t56 * t58;
+    const T t78 = T(7) * t77 * t67 + T(2) * t67 * ab_ap * t75 - T(3) * ap_ap * t72 * t67;
+    const T t79 = T(2) * t67 * ab_ap * t76 + T(3) * t67 * t78 - ap_ap * t74 * t67;
+    const T t80 = ap_ap * t63 * t48 - T(5) * t48 * t62 - T(2) * t77 * t67 * ab_ap;
+    const T t81 = ap_ap * t67 * t75 + T(7) * t67 * t80 - T(2) * t67 * ab_ap * t78;
+    const T t82 = T(2) * t67 * ab_ap * t79 - ap_ap * t67 * t76 - T(3) * t81 * t67;
+    const T t83 = t68 * t68;
+    const T t84 = t50 * tau_lo;
+    const T t85 = t83 * delta_tau;
+    const T t86 = t49 * tau_lo;
+    const T t87 = t86 * t86;
+    const T t88 = t56 * t57 - t52 * t53 - t48 * t62 * ab_ap;
+    const T t89 = T(5) * t67 * t88 + T(2) * t67 * t80 * ab_ap + t77 * ap_ap * t67;
+    const T t90 = ap_ap * t67 * t78 + T(7) * t89 * t67 + T(2) * t81 * t67 * ab_ap;
+    const T t91 = ap_ap * t67 * t79 + T(3) * t67 * t90 - T(2) * t67 * t82 * ab_ap;
+    const T t92 = t70 * delta_tau;
+    const T t93 = t83 * t83;
+    const T t94 = ap_ap * t48 * t62 + T(2) * t67 * t88 * ab_ap - T(3) * t48 * t61;
+    const T t95 = T(2) * t89 * t67 * ab_ap + T(5) * t94 * t67 - ap_ap * t67 * t80;
+    const T t96 = ap_ap * t81 * t67 - T(2) * t67 * ab_ap * t90 - T(7) * t67 * t95;
+    const T t97 = t87 * tau_lo;
+    G_ap = (T(1) / T(315)) * t48 * t51 * t66 + (T(4) / T(45)) * t67 * t70 * t49 * t82 + (T(2) / T(9)) * t67 * t83 * t50 * t76 + (T(8) / T(45)) * t74 * t67 * t69 * t84 + (T(8) / T(45)) * t67 * t85 * t86 * t79 - (T(4) / T(45)) * t73 * t67 * t68 * t87 - (T(8) / T(315)) * t91 * t67 * t92 * tau_lo - (T(1) / T(315)) * t67 * t93 * (T(2) * t91 * t67 * ab_ap + ap_ap * t67 * t82 - T(3) * t96 * t67) - (T(8) / T(315)) * t71 * t67 * delta_tau * t97;
+    const T t98 = t52 * t52;
+    const T t99 = t98 * t98;
+    const T t100 = t99 * t99;
+    const T t101 = t100 * t52;
+    const T t102 = t51 + T(8) * t92 * tau_lo + T(56) * t85 * t86 + T(56) * t69 * t84 + T(28) * t68 * t87 + T(28) * t70 * t49 + t93 + T(8) * delta_tau * t97 + T(70) * t83 * t50;
+    const T t103 = t56 * t56;
+    const T t104 = t103 * t103;
+    const T t105 = t104 * t104;
+    const T t106 = t105 * t56;
+    G_E = (T(1) / T(945)) * t67 * (T(105) * t101 * t51 + T(56) * t96 * t67 * t92 * tau_lo + T(168) * t72 * t67 * t68 * t87 + T(280) * t67 * t83 * t50 * t78 + T(8) * t67 * t93 * (T(2) * t96 * t67 * ab_ap + ap_ap * t67 * t90 - T(7) * (T(2) * t67 * ab_ap * t95 + T(5) * (T(2) * t94 * t67 * ab_ap + T(3) * (t56 - t52 - t48 * ab_ap * t61) * t67 - ap_ap * t67 * t88) * t67 - ap_ap * t89 * t67) * t67) + T(168) * t67 * t69 * t84 * t75 + T(24) * t64 * delta_tau * t48 * t97 - T(168) * t67 * t70 * t49 * t90 - T(105) * t102 * t106 - T(280) * t81 * t67 * t85 * t86);
   }
-  const T t96 = in.sigma * in.sigma;
-  const T t97 = t96 * t96;
-  const T t98 = t97 * t97;
-  const T t99 = t98 * in.sigma;
-  const T g_factor = -T(9) * t99 * length;
+  const T t107 = in.sigma * in.sigma;
+  const T t108 = t107 * t107;
+  const T t109 = t108 * t108;
+  const T t110 = t109 * in.sigma;
+  const T g_factor = -T(9) * t110 * length;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
   grad[2] = (G_ap * foot2 - G_E * ab2) * g_factor;
@@ -3082,8 +3187,8 @@ std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in)
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 133 +, 430 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 26505 +, 40354 ×, 2439 /, 1139 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 136 +, 436 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 47965 +, 73122 ×, 4422 /, 2063 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3158,7 +3263,7 @@ T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   T G_E;
   const T t8 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t9 = -ab_ap * a_minus_b;
-  const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t10 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t8 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 20> M_panels;
@@ -3183,7 +3288,7 @@ T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t26 = T(1) / ab_ab;
     G_E = T(8) * M_panels[12] * t14 * delta_tau + T(56) * M_panels[14] * t16 * t18 + T(56) * M_panels[16] * t12 * t21 + T(70) * M_panels[15] * t15 * t19 + M_panels[19] * t20 + M_panels[11] * t23 + T(8) * M_panels[18] * tau_lo * t24 + T(28) * M_panels[17] * t11 * t22 + T(28) * M_panels[13] * t13 * t17 - t26 * ab_ap * t25;
   } else if (t9 >= T(0) && t10 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 20> M_panels;
     segment_moments_gauss_panels<T>(9, 11, 9, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t27 = tau_lo * tau_lo;
@@ -3201,84 +3306,95 @@ T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
     const T t39 = t38 * delta_tau;
     const T t40 = t28 * tau_lo;
     F = T(70) * t28 * t30 * M_panels[4] + T(56) * M_panels[5] * t31 * t32 + M_panels[8] * t33 + T(28) * M_panels[2] * t34 * t29 + M_panels[0] * t35 + T(8) * t36 * M_panels[1] * delta_tau + T(8) * M_panels[7] * tau_lo * t39 + T(28) * M_panels[6] * t27 * t38 + T(56) * M_panels[3] * t40 * t37;
-    const T t41 = T(8) * M_panels[11] * t36 * delta_tau + T(70) * M_panels[14] * t28 * t30 + T(56) * M_panels[15] * t31 * t32 + T(56) * M_panels[13] * t40 * t37 + M_panels[18] * t33 + T(28) * M_panels[16] * t27 * t38 + M_panels[10] * t35 + T(28) * M_panels[12] * t34 * t29 + T(8) * M_panels[17] * tau_lo * t39;
-    G_ap = t41;
-    const T t42 = T(1) / ab_ab;
-    G_E = T(28) * M_panels[17] * t27 * t38 + T(28) * M_panels[13] * t34 * t29 + M_panels[19] * t33 + T(8) * M_panels[18] * tau_lo * t39 + M_panels[11] * t35 + T(8) * M_panels[12] * t36 * delta_tau + T(70) * M_panels[15] * t28 * t30 + T(56) * M_panels[16] * t31 * t32 + T(56) * M_panels[14] * t40 * t37 - t42 * ab_ap * t41;
+    G_ap = T(8) * M_panels[11] * t36 * delta_tau + T(70) * M_panels[14] * t28 * t30 + T(56) * M_panels[15] * t31 * t32 + T(56) * M_panels[13] * t40 * t37 + M_panels[18] * t33 + T(28) * M_panels[16] * t27 * t38 + M_panels[10] * t35 + T(28) * M_panels[12] * t34 * t29 + T(8) * M_panels[17] * tau_lo * t39;
+    const T t41 = T(1) / ab_ab;
+    const T t42 = T(1) / r0;
+    const T t43 = t42 * t42;
+    const T t44 = t43 * t43;
+    const T t45 = t44 * t44;
+    const T t46 = t45 * t42;
+    const T t47 = T(56) * t31 * t32 + T(8) * t36 * delta_tau + T(56) * t40 * t37 + T(28) * t27 * t38 + T(28) * t34 * t29 + t35 + T(8) * tau_lo * t39 + t33 + T(70) * t28 * t30;
+    const T t48 = T(1) / r1;
+    const T t49 = t48 * t48;
+    const T t50 = t49 * t49;
+    const T t51 = t50 * t50;
+    const T t52 = t51 * t48;
+    G_E = (T(1) / T(9)) * t41 * (T(56) * M_panels[6] * tau_lo * t39 + T(280) * M_panels[3] * t28 * t30 + T(8) * M_panels[0] * t36 * delta_tau + T(8) * M_panels[7] * t33 + T(168) * M_panels[5] * t27 * t38 + T(168) * M_panels[2] * t40 * t37 + T(56) * t34 * M_panels[1] * t29 + T(280) * t31 * t32 * M_panels[4] + t46 * t35 - t47 * t52);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t43 = T(1) / ab_ab;
-    const T t44 = T(1) / r0;
-    const T t45 = t44 * t44;
-    const T t46 = t45 * t45;
-    const T t47 = T(1) / cross_cross;
-    const T t48 = T(1) / r1;
-    const T t49 = t44 * ab_ap + t48 * a_minus_b;
-    const T t50 = t48 * t48;
-    const T t51 = T(2) * ab_ab * t47 * t49 + t44 * ab_ap * t45 + t50 * t48 * a_minus_b;
-    const T t52 = t50 * t50;
-    const T t53 = T(3) * t44 * ab_ap * t46 + T(4) * ab_ab * t47 * t51 + T(3) * t52 * t48 * a_minus_b;
-    const T t54 = t46 * t45;
-    const T t55 = t52 * t50;
-    const T t56 = T(5) * t44 * ab_ap * t54 + T(2) * t53 * ab_ab * t47 + T(5) * t55 * t48 * a_minus_b;
-    const T t57 = t56 * t47 * ab_ap + T(5) * t44 * t54 - T(5) * t55 * t48;
-    const T t58 = T(7) * t53 * t47 + T(6) * t43 * ab_ap * t57 - T(3) * t56 * t47 * ap_ap;
-    const T t59 = t53 * t47 * ab_ap + T(3) * t44 * t46 - T(3) * t52 * t48;
-    const T t60 = T(2) * t43 * ab_ap * t58 + T(7) * t43 * t59 - T(3) * t43 * ap_ap * t57;
-    const T t61 = T(2) * t43 * t59 * ab_ap + T(5) * t47 * t51 - t53 * t47 * ap_ap;
-    const T t62 = T(2) * t60 * t43 * ab_ap + T(7) * t43 * t61 - t43 * t58 * ap_ap;
-    const T t63 = tau_lo * tau_lo;
-    const T t64 = t63 * t63;
-    const T t65 = delta_tau * delta_tau;
-    const T t66 = t65 * t65;
-    const T t67 = t64 * t64;
-    const T t68 = t64 * tau_lo;
-    const T t69 = t65 * delta_tau;
-    const T t70 = t63 * tau_lo;
-    const T t71 = t70 * t70;
-    const T t72 = t71 * tau_lo;
-    const T t73 = t50 * t48 - t47 * ab_ap * t51 - t44 * t45;
-    const T t74 = t43 * t59 * ap_ap + T(5) * t43 * t73 - T(2) * t43 * t61 * ab_ap;
-    const T t75 = T(7) * t43 * t74 + t60 * t43 * ap_ap - T(2) * t43 * t62 * ab_ap;
-    const T t76 = t47 * t51 * ap_ap + T(2) * t43 * t73 * ab_ap - T(3) * t47 * t49;
-    const T t77 = T(5) * t43 * t76 + T(2) * t43 * ab_ap * t74 + t43 * t61 * ap_ap;
-    const T t78 = t43 * t62 * ap_ap + T(2) * t43 * t75 * ab_ap + T(7) * t43 * t77;
-    const T t79 = t69 * t69;
-    const T t80 = t47 * ab_ap * t49 + t44 - t48;
-    const T t81 = T(2) * t43 * ab_ap * t76 - t43 * t73 * ap_ap - T(3) * t43 * t80;
-    const T t82 = T(2) * t43 * ab_ap * t77 + T(5) * t43 * t81 - t43 * t74 * ap_ap;
-    const T t83 = T(2) * t43 * t78 * ab_ap + T(7) * t82 * t43 - t43 * t75 * ap_ap;
-    const T t84 = t66 * t66;
-    const T t85 = t66 * delta_tau;
-    const T t86 = t79 * delta_tau;
-    F = (T(2) / T(3)) * t43 * t62 * t64 * t66 + (T(1) / T(35)) * t56 * t47 * t67 + (T(8) / T(15)) * t60 * t43 * t68 * t69 + (T(4) / T(15)) * t43 * t58 * t71 * t65 + (T(8) / T(35)) * t43 * t57 * t72 * delta_tau - (T(4) / T(15)) * t43 * t78 * t63 * t79 - (T(1) / T(105)) * t43 * (T(7) * t43 * (T(2) * t82 * t43 * ab_ap - t43 * t77 * ap_ap - T(5) * t43 * (t43 * ap_ap * t76 + T(3) * t43 * (J1 + T(2) * t43 * ab_ap * t80 - t47 * t49 * ap_ap) - T(2) * t43 * ab_ap * t81)) + T(2) * t43 * t83 * ab_ap - t43 * t78 * ap_ap) * t84 - (T(8) / T(15)) * t43 * t75 * t70 * t85 - (T(8) / T(105)) * t43 * t83 * tau_lo * t86;
-    const T t87 = t46 * t46;
-    const T t88 = t52 * t52;
-    const T t89 = T(35) * t44 * ab_ap * t87 + T(35) * t88 * t48 * a_minus_b + T(8) * t56 * ab_ab * t47;
-    const T t90 = t89 * t47 * ab_ap + T(35) * t44 * t87 - T(35) * t88 * t48;
-    const T t91 = T(2) * t43 * t90 * ab_ap + T(9) * t56 * t47 - t89 * t47 * ap_ap;
-    const T t92 = T(9) * t43 * t57 + T(2) * t43 * t91 * ab_ap - t43 * t90 * ap_ap;
-    const T t93 = T(2) * t43 * ab_ap * t92 + T(3) * t43 * t58 - t43 * t91 * ap_ap;
-    const T t94 = t43 * ap_ap * t92 - T(2) * t43 * t93 * ab_ap - T(3) * t60 * t43;
-    const T t95 = t43 * t93 * ap_ap + T(2) * t43 * ab_ap * t94 - T(3) * t43 * t62;
-    const T t96 = T(3) * t43 * t75 + T(2) * t95 * t43 * ab_ap - t43 * ap_ap * t94;
-    G_ap = (T(1) / T(315)) * t89 * t47 * t67 + (T(4) / T(45)) * t43 * t91 * t71 * t65 + (T(8) / T(45)) * t43 * t92 * t68 * t69 + (T(8) / T(315)) * t43 * t90 * t72 * delta_tau + (T(2) / T(9)) * t43 * t93 * t64 * t66 - (T(1) / T(315)) * t43 * (T(2) * t43 * ab_ap * t96 + T(3) * t43 * t78 - t95 * t43 * ap_ap) * t84 - (T(4) / T(45)) * t95 * t43 * t63 * t79 - (T(8) / T(45)) * t43 * t94 * t70 * t85 - (T(8) / T(315)) * t43 * t96 * tau_lo * t86;
-    const T t97 = t44 * t44;
-    const T t98 = t97 * t97;
-    const T t99 = t98 * t98;
-    const T t100 = t99 * t44;
-    const T t101 = t48 * t48;
-    const T t102 = t101 * t101;
-    const T t103 = t102 * t102;
-    const T t104 = t103 * t48;
-    G_E = (T(1) / T(945)) * t43 * (T(24) * t56 * t47 * t72 * delta_tau + T(280) * t60 * t43 * t64 * t66 + T(105) * t100 * t67 + T(168) * t43 * t58 * t68 * t69 + T(168) * t43 * t57 * t71 * t65 + T(280) * t43 * t62 * t70 * t85 - T(8) * t43 * t83 * t84 - T(168) * t43 * t75 * t63 * t79 - T(105) * (T(56) * t70 * t85 + T(8) * t72 * delta_tau + T(56) * t68 * t69 + T(28) * t63 * t79 + T(28) * t71 * t65 + t67 + T(8) * tau_lo * t86 + t84 + T(70) * t64 * t66) * t104 - T(56) * t43 * t78 * tau_lo * t86);
+    const T t53 = T(1) / ab_ab;
+    const T t54 = T(1) / r0;
+    const T t55 = t54 * t54;
+    const T t56 = t55 * t55;
+    const T t57 = T(1) / cross_cross;
+    const T t58 = T(1) / r1;
+    const T t59 = t54 * ab_ap + t58 * a_minus_b;
+    const T t60 = t58 * t58;
+    const T t61 = T(2) * ab_ab * t57 * t59 + t54 * ab_ap * t55 + t60 * t58 * a_minus_b;
+    const T t62 = t60 * t60;
+    const T t63 = T(3) * t54 * ab_ap * t56 + T(4) * ab_ab * t57 * t61 + T(3) * t62 * t58 * a_minus_b;
+    const T t64 = t56 * t55;
+    const T t65 = t62 * t60;
+    const T t66 = T(5) * t54 * ab_ap * t64 + T(2) * t63 * ab_ab * t57 + T(5) * t65 * t58 * a_minus_b;
+    const T t67 = t66 * t57 * ab_ap + T(5) * t54 * t64 - T(5) * t65 * t58;
+    const T t68 = T(7) * t63 * t57 + T(6) * t53 * ab_ap * t67 - T(3) * t66 * t57 * ap_ap;
+    const T t69 = t63 * t57 * ab_ap + T(3) * t54 * t56 - T(3) * t62 * t58;
+    const T t70 = T(2) * t53 * ab_ap * t68 + T(7) * t53 * t69 - T(3) * t53 * ap_ap * t67;
+    const T t71 = T(2) * t53 * t69 * ab_ap + T(5) * t57 * t61 - t63 * t57 * ap_ap;
+    const T t72 = T(2) * t70 * t53 * ab_ap + T(7) * t53 * t71 - t53 * t68 * ap_ap;
+    const T t73 = tau_lo * tau_lo;
+    const T t74 = t73 * t73;
+    const T t75 = delta_tau * delta_tau;
+    const T t76 = t75 * t75;
+    const T t77 = t74 * t74;
+    const T t78 = t74 * tau_lo;
+    const T t79 = t75 * delta_tau;
+    const T t80 = t73 * tau_lo;
+    const T t81 = t80 * t80;
+    const T t82 = t81 * tau_lo;
+    const T t83 = t60 * t58 - t57 * ab_ap * t61 - t54 * t55;
+    const T t84 = t53 * t69 * ap_ap + T(5) * t53 * t83 - T(2) * t53 * t71 * ab_ap;
+    const T t85 = T(7) * t53 * t84 + t70 * t53 * ap_ap - T(2) * t53 * t72 * ab_ap;
+    const T t86 = t57 * t61 * ap_ap + T(2) * t53 * t83 * ab_ap - T(3) * t57 * t59;
+    const T t87 = T(5) * t53 * t86 + T(2) * t53 * ab_ap * t84 + t53 * t71 * ap_ap;
+    const T t88 = t53 * t72 * ap_ap + T(2) * t53 * t85 * ab_ap + T(7) * t53 * t87;
+    const T t89 = t79 * t79;
+    const T t90 = t57 * ab_ap * t59 + t54 - t58;
+    const T t91 = T(2) * t53 * ab_ap * t86 - t53 * t83 * ap_ap - T(3) * t53 * t90;
+    const T t92 = T(2) * t53 * ab_ap * t87 + T(5) * t53 * t91 - t53 * t84 * ap_ap;
+    const T t93 = T(2) * t53 * t88 * ab_ap + T(7) * t92 * t53 - t53 * t85 * ap_ap;
+    const T t94 = t76 * t76;
+    const T t95 = t76 * delta_tau;
+    const T t96 = t89 * delta_tau;
+    F = (T(2) / T(3)) * t53 * t72 * t74 * t76 + (T(1) / T(35)) * t66 * t57 * t77 + (T(8) / T(15)) * t70 * t53 * t78 * t79 + (T(4) / T(15)) * t53 * t68 * t81 * t75 + (T(8) / T(35)) * t53 * t67 * t82 * delta_tau - (T(4) / T(15)) * t53 * t88 * t73 * t89 - (T(1) / T(105)) * t53 * (T(7) * t53 * (T(2) * t92 * t53 * ab_ap - t53 * t87 * ap_ap - T(5) * t53 * (t53 * ap_ap * t86 + T(3) * t53 * (J1 + T(2) * t53 * ab_ap * t90 - t57 * t59 * ap_ap) - T(2) * t53 * ab_ap * t91)) + T(2) * t53 * t93 * ab_ap - t53 * t88 * ap_ap) * t94 - (T(8) / T(15)) * t53 * t85 * t80 * t95 - (T(8) / T(105)) * t53 * t93 * tau_lo * t96;
+    const T t97 = t56 * t56;
+    const T t98 = t62 * t62;
+    const T t99 = T(35) * t54 * ab_ap * t97 + T(35) * t98 * t58 * a_minus_b + T(8) * t66 * ab_ab * t57;
+    const T t100 = t99 * t57 * ab_ap + T(35) * t54 * t97 - T(35) * t98 * t58;
+    const T t101 = T(2) * t53 * t100 * ab_ap + T(9) * t66 * t57 - t99 * t57 * ap_ap;
+    const T t102 = T(9) * t53 * t67 + T(2) * t53 * t101 * ab_ap - t53 * t100 * ap_ap;
+    const T t103 = T(2) * t53 * ab_ap * t102 + T(3) * t53 * t68 - t53 * t101 * ap_ap;
+    const T t104 = t53 * ap_ap * t102 - T(2) * t53 * t103 * ab_ap - T(3) * t70 * t53;
+    const T t105 = t53 * t103 * ap_ap + T(2) * t53 * ab_ap * t104 - T(3) * t53 * t72;
+    const T t106 = T(3) * t53 * t85 + T(2) * t105 * t53 * ab_ap - t53 * ap_ap * t104;
+    G_ap = (T(1) / T(315)) * t99 * t57 * t77 + (T(4) / T(45)) * t53 * t101 * t81 * t75 + (T(8) / T(45)) * t53 * t102 * t78 * t79 + (T(8) / T(315)) * t53 * t100 * t82 * delta_tau + (T(2) / T(9)) * t53 * t103 * t74 * t76 - (T(1) / T(315)) * t53 * (T(2) * t53 * ab_ap * t106 + T(3) * t53 * t88 - t105 * t53 * ap_ap) * t94 - (T(4) / T(45)) * t105 * t53 * t73 * t89 - (T(8) / T(45)) * t53 * t104 * t80 * t95 - (T(8) / T(315)) * t53 * t106 * tau_lo * t96;
+    const T t107 = t54 * t54;
+    const T t108 = t107 * t107;
+    const T t109 = t108 * t108;
+    const T t110 = t109 * t54;
+    const T t111 = T(56) * t80 * t95 + T(8) * t82 * delta_tau + T(56) * t78 * t79 + T(28) * t73 * t89 + T(28) * t81 * t75 + t77 + T(8) * tau_lo * t96 + t94 + T(70) * t74 * t76;
+    const T t112 = t58 * t58;
+    const T t113 = t112 * t112;
+    const T t114 = t113 * t113;
+    const T t115 = t114 * t58;
+    G_E = (T(1) / T(945)) * t53 * (T(24) * t66 * t57 * t82 * delta_tau + T(280) * t70 * t53 * t74 * t76 + T(105) * t110 * t77 + T(168) * t53 * t68 * t78 * t79 + T(168) * t53 * t67 * t81 * t75 + T(280) * t53 * t72 * t80 * t95 - T(8) * t53 * t93 * t94 - T(168) * t53 * t85 * t73 * t89 - T(105) * t111 * t115 - T(56) * t53 * t88 * tau_lo * t96);
   }
-  const T t105 = in.sigma * in.sigma;
-  const T t106 = t105 * t105;
-  const T t107 = t106 * t106;
-  const T t108 = t107 * in.sigma;
-  const T g_factor = -T(9) * length * t108;
-  f = length * t108 * F;
+  const T t116 = in.sigma * in.sigma;
+  const T t117 = t116 * t116;
+  const T t118 = t117 * t117;
+  const T t119 = t118 * in.sigma;
+  const T g_factor = -T(9) * length * t119;
+  f = length * t119 * F;
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
   grad[1] = g_factor * (G_ap * foot1 - ab1 * G_E);
   grad[2] = g_factor * (foot2 * G_ap - ab2 * G_E);
@@ -3287,8 +3403,8 @@ T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 96 +, 280 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 15684 +, 21929 ×, 2436 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 99 +, 286 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 31216 +, 43753 ×, 4867 /, 111 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3337,7 +3453,7 @@ T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
   T F;
   const T t2 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t3 = -a_minus_b * ab_ap;
-  const T t4 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  const T t4 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t2 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
@@ -3360,7 +3476,7 @@ T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
     const T t20 = t19 * delta_tau;
     F = T(126) * t7 * M_panels[4] * t9 + T(84) * t10 * M_panels[6] * t12 + T(126) * t6 * M_panels[5] * t13 + t15 * M_panels[0] + T(9) * M_panels[1] * t14 * delta_tau + T(36) * t17 * M_panels[2] * t8 + T(36) * t5 * M_panels[7] * t18 + T(84) * t16 * M_panels[3] * t11 + M_panels[9] * t20 + T(9) * tau_lo * M_panels[8] * t19;
   } else if (t3 >= T(0) && t4 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(10, 10, 9, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t21 = tau_lo * tau_lo;
@@ -3446,8 +3562,8 @@ T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 132 +, 393 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 28660 +, 37094 ×, 2437 /, 57 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 135 +, 399 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 47657 +, 61750 ×, 4060 /, 93 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3506,7 +3622,7 @@ std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in
   T G_E;
   const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t4 = -ab_ap * a_minus_b;
-  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t5 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 22> M_panels;
@@ -3532,7 +3648,7 @@ std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in
     const T t23 = T(1) / ab_ab;
     G_E = T(36) * M_panels[14] * t13 * t8 + T(126) * M_panels[17] * t7 * t10 + T(9) * M_panels[20] * tau_lo * t19 + T(126) * t17 * t9 * M_panels[16] + T(84) * M_panels[18] * t11 * t15 + M_panels[12] * t21 + T(84) * M_panels[15] * t12 * t14 + T(36) * M_panels[19] * t6 * t16 + M_panels[21] * t20 + T(9) * t18 * delta_tau * M_panels[13] - t22 * ab_ap * t23;
   } else if (t4 >= T(0) && t5 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 22> M_panels;
     segment_moments_gauss_panels<T>(10, 12, 10, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t24 = tau_lo * tau_lo;
@@ -3551,80 +3667,89 @@ std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in
     const T t37 = t36 * t36;
     const T t38 = t37 * delta_tau;
     const T t39 = t36 * delta_tau;
-    const T t40 = M_panels[11] * t27 + T(36) * t30 * t31 * M_panels[13] + T(36) * M_panels[18] * t24 * t34 + T(84) * M_panels[14] * t29 * t32 + T(126) * M_panels[15] * t35 * t36 + M_panels[20] * t38 + T(84) * M_panels[17] * t28 * t33 + T(126) * M_panels[16] * t25 * t39 + T(9) * tau_lo * M_panels[19] * t37 + T(9) * M_panels[12] * t26 * delta_tau;
-    G_ap = t40;
-    const T t41 = T(1) / ab_ab;
-    G_E = T(84) * M_panels[18] * t28 * t33 + M_panels[21] * t38 + T(36) * M_panels[14] * t30 * t31 + T(9) * M_panels[20] * tau_lo * t37 + T(126) * M_panels[17] * t25 * t39 + T(9) * t26 * delta_tau * M_panels[13] + T(36) * t24 * M_panels[19] * t34 + M_panels[12] * t27 + T(84) * M_panels[15] * t29 * t32 + T(126) * M_panels[16] * t35 * t36 - ab_ap * t40 * t41;
-  } else {
-    // recurrence (1) upwards from J_1, J_2
-    const T t42 = sqrt(cross_cross);
-    const T t43 = T(1) / t42;
-    const T J2 = t43 * atan2(t42, ap_bp);
-    const T t44 = T(1) / cross_cross;
+    G_ap = M_panels[11] * t27 + T(36) * t30 * t31 * M_panels[13] + T(36) * M_panels[18] * t24 * t34 + T(84) * M_panels[14] * t29 * t32 + T(126) * M_panels[15] * t35 * t36 + M_panels[20] * t38 + T(84) * M_panels[17] * t28 * t33 + T(126) * M_panels[16] * t25 * t39 + T(9) * tau_lo * M_panels[19] * t37 + T(9) * M_panels[12] * t26 * delta_tau;
+    const T t40 = T(1) / ap_ap;
+    const T t41 = t40 * t40;
+    const T t42 = t41 * t41;
+    const T t43 = t42 * t40;
+    const T t44 = T(126) * t25 * t39 + T(126) * t35 * t36 + t38 + T(84) * t28 * t33 + t27 + T(9) * t26 * delta_tau + T(9) * tau_lo * t37 + T(36) * t24 * t34 + T(84) * t29 * t32 + T(36) * t30 * t31;
     const T t45 = T(1) / bp_bp;
     const T t46 = t45 * t45;
-    const T t47 = T(1) / ap_ap;
-    const T t48 = ab_ap * t47 + J2 * ab_ab + a_minus_b * t45;
-    const T t49 = t47 * t47;
-    const T t50 = T(2) * a_minus_b * t46 + T(3) * t44 * t48 * ab_ab + T(2) * ab_ap * t49;
-    const T t51 = t46 * t45;
-    const T t52 = t49 * t47;
-    const T t53 = T(5) * t44 * t50 * ab_ab + T(8) * a_minus_b * t51 + T(8) * ab_ap * t52;
-    const T t54 = t44 * ab_ap * t53 + T(8) * t52 - T(8) * t51;
-    const T t55 = T(1) / ab_ab;
-    const T t56 = t46 * t46;
-    const T t57 = t49 * t49;
-    const T t58 = T(7) * t44 * t53 * ab_ab + T(48) * a_minus_b * t56 + T(48) * ab_ap * t57;
-    const T t59 = T(48) * t57 + t44 * ab_ap * t58 - T(48) * t56;
-    const T t60 = t44 * ap_ap * t58 - T(2) * ab_ap * t59 * t55 - T(8) * t44 * t53;
-    const T t61 = T(8) * t54 * t55 - T(2) * t60 * ab_ap * t55 - ap_ap * t59 * t55;
-    const T t62 = t57 * t47;
-    const T t63 = t56 * t45;
-    const T t64 = T(3) * t44 * t58 * ab_ab + T(128) * a_minus_b * t63 + T(128) * ab_ap * t62;
-    const T t65 = T(128) * t62 + t44 * ab_ap * t64 - T(128) * t63;
-    const T t66 = T(3) * t44 * ap_ap * t64 - T(10) * t44 * t58 - T(6) * t65 * ab_ap * t55;
-    const T t67 = T(3) * t65 * ap_ap * t55 + T(2) * ab_ap * t66 * t55 - T(10) * t59 * t55;
-    const T t68 = T(2) * ab_ap * t55 * t67 + T(10) * t60 * t55 - t66 * ap_ap * t55;
-    const T t69 = T(10) * t61 * t55 + ap_ap * t55 * t67 - T(2) * ab_ap * t68 * t55;
-    const T t70 = tau_lo * tau_lo;
-    const T t71 = t70 * t70;
-    const T t72 = delta_tau * delta_tau;
-    const T t73 = t72 * t72;
-    const T t74 = t73 * delta_tau;
-    const T t75 = t71 * t71;
-    const T t76 = t75 * tau_lo;
-    const T t77 = T(2) * ab_ap * t54 * t55 + T(6) * t44 * t50 - t44 * t53 * ap_ap;
-    const T t78 = t60 * ap_ap * t55 + T(2) * ab_ap * t61 * t55 + T(8) * t77 * t55;
-    const T t79 = ap_ap * t68 * t55 + T(10) * t78 * t55 + T(2) * ab_ap * t69 * t55;
-    const T t80 = T(2) * t49 + t44 * ab_ap * t50 - T(2) * t46;
-    const T t81 = T(2) * ab_ap * t77 * t55 + T(6) * t80 * t55 - t54 * ap_ap * t55;
-    const T t82 = T(8) * t81 * t55 + T(2) * ab_ap * t78 * t55 - t61 * ap_ap * t55;
-    const T t83 = T(2) * ab_ap * t79 * t55 + T(10) * t82 * t55 - t69 * ap_ap * t55;
-    const T t84 = t72 * delta_tau;
-    const T t85 = t84 * t84;
-    const T t86 = t85 * delta_tau;
-    const T t87 = t70 * tau_lo;
-    const T t88 = T(4) * t44 * t48 + T(2) * t80 * ab_ap * t55 - t44 * t50 * ap_ap;
-    const T t89 = T(6) * t88 * t55 + T(2) * t81 * ab_ap * t55 - ap_ap * t77 * t55;
-    const T t90 = T(2) * t82 * ab_ap * t55 + T(8) * t89 * t55 - ap_ap * t78 * t55;
-    const T t91 = ap_ap * t79 * t55 - T(10) * t90 * t55 - T(2) * t83 * ab_ap * t55;
-    const T t92 = t73 * t73;
-    const T t93 = t87 * t87;
-    const T t94 = t93 * tau_lo;
-    const T t95 = t45 - t44 * ab_ap * t48 - t47;
-    const T t96 = t80 * ap_ap * t55 + T(4) * t55 * t95 - T(2) * ab_ap * t88 * t55;
-    const T t97 = t81 * ap_ap * t55 + T(6) * t96 * t55 - T(2) * ab_ap * t89 * t55;
-    const T t98 = T(2) * ab_ap * t90 * t55 - t82 * ap_ap * t55 - T(8) * t55 * t97;
-    const T t99 = t92 * delta_tau;
-    const T t100 = t71 * tau_lo;
-    G_ap = (T(21) / T(640)) * t69 * t71 * t74 * t55 + (T(9) / T(1280)) * t65 * t75 * delta_tau * t55 + (T(1) / T(1280)) * t44 * t64 * t76 + (T(3) / T(320)) * t83 * t70 * t86 * t55 + (T(7) / T(320)) * t79 * t87 * t85 * t55 - (T(3) / T(1280)) * t91 * tau_lo * t92 * t55 - (T(7) / T(320)) * t93 * t84 * t55 * t67 - (T(3) / T(320)) * t66 * t94 * t72 * t55 - (T(1) / T(3840)) * (t83 * ap_ap * t55 + T(2) * ab_ap * t91 * t55 - T(10) * t55 * t98) * t99 * t55 - (T(21) / T(640)) * t68 * t100 * t73 * t55;
-    G_E = (T(1) / T(1280)) * (T(84) * t90 * t70 * t86 * t55 + T(24) * tau_lo * t92 * t55 * t98 + T(24) * t94 * t72 * t59 * t55 + T(3) * t44 * t58 * t75 * delta_tau + T(128) * t62 * t76 + T(168) * t82 * t87 * t85 * t55 + T(210) * t78 * t71 * t74 * t55 + T(3) * (T(2) * ab_ap * t55 * t98 - T(8) * (T(2) * ab_ap * t55 * t97 + ap_ap * t89 * t55 + T(6) * t55 * (ap_ap * t88 * t55 + T(2) * ab_ap * t96 * t55 - T(4) * t55 * (T(2) * J2 - T(2) * ab_ap * t55 * t95 - t44 * t48 * ap_ap))) * t55 - ap_ap * t90 * t55) * t99 * t55 + T(168) * t61 * t100 * t73 * t55 - T(84) * t60 * t93 * t84 * t55 - T(128) * (T(126) * t71 * t74 + T(126) * t100 * t73 + t99 + T(84) * t87 * t85 + t76 + T(9) * t75 * delta_tau + T(9) * tau_lo * t92 + T(36) * t70 * t86 + T(84) * t93 * t84 + T(36) * t94 * t72) * t63) * t55;
+    const T t47 = t46 * t46;
+    const T t48 = t47 * t45;
+    const T t49 = T(1) / ab_ab;
+    G_E = (T(1) / T(10)) * (T(630) * M_panels[4] * t25 * t39 + T(72) * t30 * t31 * M_panels[1] + t43 * t27 + T(504) * M_panels[5] * t28 * t33 + T(9) * M_panels[0] * t26 * delta_tau + T(252) * M_panels[6] * t24 * t34 + T(72) * tau_lo * t37 * M_panels[7] + T(9) * M_panels[8] * t38 + T(504) * M_panels[3] * t35 * t36 + T(252) * M_panels[2] * t29 * t32 - t44 * t48) * t49;
+  } else {
+    // recurrence (1) upwards from J_1, J_2
+    const T t50 = sqrt(cross_cross);
+    const T t51 = T(1) / t50;
+    const T J2 = t51 * atan2(t50, ap_bp);
+    const T t52 = T(1) / cross_cross;
+    const T t53 = T(1) / bp_bp;
+    const T t54 = t53 * t53;
+    const T t55 = T(1) / ap_ap;
+    const T t56 = ab_ap * t55 + J2 * ab_ab + a_minus_b * t53;
+    const T t57 = t55 * t55;
+    const T t58 = T(2) * a_minus_b * t54 + T(3) * t52 * t56 * ab_ab + T(2) * ab_ap * t57;
+    const T t59 = t54 * t53;
+    const T t60 = t57 * t55;
+    const T t61 = T(5) * t52 * t58 * ab_ab + T(8) * a_minus_b * t59 + T(8) * ab_ap * t60;
+    const T t62 = t52 * ab_ap * t61 + T(8) * t60 - T(8) * t59;
+    const T t63 = T(1) / ab_ab;
+    const T t64 = t54 * t54;
+    const T t65 = t57 * t57;
+    const T t66 = T(7) * t52 * t61 * ab_ab + T(48) * a_minus_b * t64 + T(48) * ab_ap * t65;
+    const T t67 = T(48) * t65 + t52 * ab_ap * t66 - T(48) * t64;
+    const T t68 = t52 * ap_ap * t66 - T(2) * ab_ap * t67 * t63 - T(8) * t52 * t61;
+    const T t69 = T(8) * t62 * t63 - T(2) * t68 * ab_ap * t63 - ap_ap * t67 * t63;
+    const T t70 = t65 * t55;
+    const T t71 = t64 * t53;
+    const T t72 = T(3) * t52 * t66 * ab_ab + T(128) * a_minus_b * t71 + T(128) * ab_ap * t70;
+    const T t73 = T(128) * t70 + t52 * ab_ap * t72 - T(128) * t71;
+    const T t74 = T(3) * t52 * ap_ap * t72 - T(10) * t52 * t66 - T(6) * t73 * ab_ap * t63;
+    const T t75 = T(3) * t73 * ap_ap * t63 + T(2) * ab_ap * t74 * t63 - T(10) * t67 * t63;
+    const T t76 = T(2) * ab_ap * t63 * t75 + T(10) * t68 * t63 - t74 * ap_ap * t63;
+    const T t77 = T(10) * t69 * t63 + ap_ap * t63 * t75 - T(2) * ab_ap * t76 * t63;
+    const T t78 = tau_lo * tau_lo;
+    const T t79 = t78 * t78;
+    const T t80 = delta_tau * delta_tau;
+    const T t81 = t80 * t80;
+    const T t82 = t81 * delta_tau;
+    const T t83 = t79 * t79;
+    const T t84 = t83 * tau_lo;
+    const T t85 = T(2) * ab_ap * t62 * t63 + T(6) * t52 * t58 - t52 * t61 * ap_ap;
+    const T t86 = t68 * ap_ap * t63 + T(2) * ab_ap * t69 * t63 + T(8) * t85 * t63;
+    const T t87 = ap_ap * t76 * t63 + T(10) * t86 * t63 + T(2) * ab_ap * t77 * t63;
+    const T t88 = T(2) * t57 + t52 * ab_ap * t58 - T(2) * t54;
+    const T t89 = T(2) * ab_ap * t85 * t63 + T(6) * t88 * t63 - t62 * ap_ap * t63;
+    const T t90 = T(8) * t89 * t63 + T(2) * ab_ap * t86 * t63 - t69 * ap_ap * t63;
+    const T t91 = T(2) * ab_ap * t87 * t63 + T(10) * t90 * t63 - t77 * ap_ap * t63;
+    const T t92 = t80 * delta_tau;
+    const T t93 = t92 * t92;
+    const T t94 = t93 * delta_tau;
+    const T t95 = t78 * tau_lo;
+    const T t96 = T(4) * t52 * t56 + T(2) * t88 * ab_ap * t63 - t52 * t58 * ap_ap;
+    const T t97 = T(6) * t96 * t63 + T(2) * t89 * ab_ap * t63 - ap_ap * t85 * t63;
+    const T t98 = T(2) * t90 * ab_ap * t63 + T(8) * t97 * t63 - ap_ap * t86 * t63;
+    const T t99 = ap_ap * t87 * t63 - T(10) * t98 * t63 - T(2) * t91 * ab_ap * t63;
+    const T t100 = t81 * t81;
+    const T t101 = t95 * t95;
+    const T t102 = t101 * tau_lo;
+    const T t103 = t53 - t52 * ab_ap * t56 - t55;
+    const T t104 = t88 * ap_ap * t63 + T(4) * t63 * t103 - T(2) * ab_ap * t96 * t63;
+    const T t105 = t89 * ap_ap * t63 + T(6) * t104 * t63 - T(2) * ab_ap * t97 * t63;
+    const T t106 = T(2) * ab_ap * t98 * t63 - t90 * ap_ap * t63 - T(8) * t63 * t105;
+    const T t107 = t100 * delta_tau;
+    const T t108 = t79 * tau_lo;
+    G_ap = (T(21) / T(640)) * t77 * t79 * t82 * t63 + (T(9) / T(1280)) * t73 * t83 * delta_tau * t63 + (T(1) / T(1280)) * t52 * t72 * t84 + (T(3) / T(320)) * t91 * t78 * t94 * t63 + (T(7) / T(320)) * t87 * t95 * t93 * t63 - (T(3) / T(1280)) * t99 * tau_lo * t100 * t63 - (T(7) / T(320)) * t101 * t92 * t63 * t75 - (T(3) / T(320)) * t74 * t102 * t80 * t63 - (T(1) / T(3840)) * (t91 * ap_ap * t63 + T(2) * ab_ap * t99 * t63 - T(10) * t63 * t106) * t107 * t63 - (T(21) / T(640)) * t76 * t108 * t81 * t63;
+    const T t109 = T(126) * t79 * t82 + T(126) * t108 * t81 + t107 + T(84) * t95 * t93 + t84 + T(9) * t83 * delta_tau + T(9) * tau_lo * t100 + T(36) * t78 * t94 + T(84) * t101 * t92 + T(36) * t102 * t80;
+    G_E = (T(1) / T(1280)) * (T(84) * t98 * t78 * t94 * t63 + T(24) * tau_lo * t100 * t63 * t106 + T(24) * t102 * t80 * t67 * t63 + T(3) * t52 * t66 * t83 * delta_tau + T(128) * t70 * t84 + T(168) * t90 * t95 * t93 * t63 + T(210) * t86 * t79 * t82 * t63 + T(3) * (T(2) * ab_ap * t63 * t106 - T(8) * (T(2) * ab_ap * t63 * t105 + ap_ap * t97 * t63 + T(6) * t63 * (ap_ap * t96 * t63 + T(2) * ab_ap * t104 * t63 - T(4) * t63 * (T(2) * J2 - T(2) * ab_ap * t63 * t103 - t52 * t56 * ap_ap))) * t63 - ap_ap * t98 * t63) * t107 * t63 + T(168) * t69 * t108 * t81 * t63 - T(84) * t68 * t101 * t92 * t63 - T(128) * t109 * t71) * t63;
   }
-  const T t101 = in.sigma * in.sigma;
-  const T t102 = t101 * t101;
-  const T t103 = t102 * in.sigma;
-  const T t104 = t103 * t103;
-  const T g_factor = -T(10) * length * t104;
+  const T t110 = in.sigma * in.sigma;
+  const T t111 = t110 * t110;
+  const T t112 = t111 * in.sigma;
+  const T t113 = t112 * t112;
+  const T g_factor = -T(10) * length * t113;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
   grad[1] = (G_ap * foot1 - ab1 * G_E) * g_factor;
   grad[2] = (foot2 * G_ap - G_E * ab2) * g_factor;
@@ -3633,8 +3758,8 @@ std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in
 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
-/// Operations: 150 +, 463 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 28669 +, 37123 ×, 2438 /, 57 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 153 +, 469 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 47666 +, 61779 ×, 4060 /, 93 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3696,7 +3821,7 @@ T scalis_segment_inverse_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::ar
   T G_E;
   const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  const T t6 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
   if (t4 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 22> M_panels;
@@ -3723,7 +3848,7 @@ T scalis_segment_inverse_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::ar
     const T t24 = T(1) / ab_ab;
     G_E = T(84) * t8 * t11 * M_panels[15] + T(84) * t12 * t10 * M_panels[18] + T(9) * M_panels[20] * t19 * tau_lo + T(36) * M_panels[14] * t7 * t22 + T(126) * M_panels[17] * t15 * t16 + T(36) * M_panels[19] * t13 * t9 + T(9) * M_panels[13] * delta_tau * t18 + T(126) * M_panels[16] * t14 * t17 + t20 * M_panels[21] + t21 * M_panels[12] - ab_ap * t24 * t23;
   } else if (t5 >= T(0) && t6 >= T(0)) {
-    // P beyond an end, D < 7/10 a min(q(0), q(1)): every moment by segment_moments_gauss_panels<T>
+    // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 22> M_panels;
     segment_moments_gauss_panels<T>(10, 12, 10, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     const T t25 = delta_tau * delta_tau;
@@ -3743,85 +3868,93 @@ T scalis_segment_inverse_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::ar
     const T t39 = t33 * tau_lo;
     const T t40 = t26 * delta_tau;
     F = t28 * M_panels[9] + T(84) * t30 * t32 * M_panels[6] + M_panels[0] * t35 + T(36) * t25 * M_panels[2] * t37 + T(36) * M_panels[7] * t38 * t31 + T(126) * M_panels[4] * t26 * t39 + T(84) * t29 * t36 * M_panels[3] + T(9) * M_panels[8] * t27 * tau_lo + T(126) * M_panels[5] * t40 * t33 + T(9) * M_panels[1] * delta_tau * t34;
-    const T t41 = M_panels[11] * t35 + T(126) * M_panels[16] * t40 * t33 + T(84) * M_panels[17] * t30 * t32 + T(36) * M_panels[13] * t25 * t37 + M_panels[20] * t28 + T(126) * t26 * t39 * M_panels[15] + T(9) * delta_tau * t34 * M_panels[12] + T(9) * t27 * tau_lo * M_panels[19] + T(84) * M_panels[14] * t29 * t36 + T(36) * t38 * t31 * M_panels[18];
-    G_ap = t41;
-    const T t42 = T(1) / ab_ab;
-    G_E = T(126) * M_panels[16] * t26 * t39 + T(9) * M_panels[20] * t27 * tau_lo + T(9) * M_panels[13] * delta_tau * t34 + T(36) * t38 * t31 * M_panels[19] + t28 * M_panels[21] + T(36) * M_panels[14] * t25 * t37 + T(126) * M_panels[17] * t40 * t33 + T(84) * t30 * t32 * M_panels[18] + T(84) * t29 * t36 * M_panels[15] + t35 * M_panels[12] - t41 * ab_ap * t42;
+    G_ap = M_panels[11] * t35 + T(126) * M_panels[16] * t40 * t33 + T(84) * M_panels[17] * t30 * t32 + T(36) * M_panels[13] * t25 * t37 + M_panels[20] * t28 + T(126) * t26 * t39 * M_panels[15] + T(9) * delta_tau * t34 * M_panels[12] + T(9) * t27 * tau_lo * M_panels[19] + T(84) * M_panels[14] * t29 * t36 + T(36) * t38 * t31 * M_panels[18];
+    const T t41 = t3 * t3;
+    const T t42 = t41 * t41;
+    const T t43 = t42 * t3;
+    const T t44 = T(1) / bp_bp;
+    const T t45 = t44 * t44;
+    const T t46 = t45 * t45;
+    const T t47 = t46 * t44;
+    const T t48 = T(9) * delta_tau * t34 + t28 + T(84) * t29 * t36 + T(9) * t27 * tau_lo + t35 + T(84) * t30 * t32 + T(36) * t38 * t31 + T(36) * t25 * t37 + T(126) * t40 * t33 + T(126) * t26 * t39;
+    const T t49 = T(1) / ab_ab;
+    G_E = (T(1) / T(10)) * (T(504) * t26 * t39 * M_panels[3] + T(72) * M_panels[7] * t27 * tau_lo + T(252) * t38 * t31 * M_panels[6] + T(9) * M_panels[0] * delta_tau * t34 + T(504) * M_panels[5] * t30 * t32 + T(9) * M_panels[8] * t28 + T(252) * t29 * M_panels[2] * t36 + T(72) * M_panels[1] * t25 * t37 + T(630) * M_panels[4] * t40 * t33 + t43 * t35 - t47 * t48) * t49;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t43 = sqrt(cross_cross);
-    const T t44 = T(1) / t43;
-    const T J2 = t44 * atan2(t43, ap_bp);
-    const T t45 = delta_tau * delta_tau;
-    const T t46 = t45 * t45;
-    const T t47 = t46 * delta_tau;
-    const T t48 = tau_lo * tau_lo;
-    const T t49 = t48 * t48;
-    const T t50 = T(1) / cross_cross;
-    const T t51 = T(1) / bp_bp;
-    const T t52 = ab_ap * t3 + J2 * ab_ab + t51 * a_minus_b;
-    const T t53 = t51 * t51;
-    const T t54 = t3 * t3;
-    const T t55 = T(3) * t50 * t52 * ab_ab + T(2) * t53 * a_minus_b + T(2) * ab_ap * t54;
-    const T t56 = t50 * ab_ap * t55 + T(2) * t54 - T(2) * t53;
-    const T t57 = T(1) / ab_ab;
-    const T t58 = t53 * t51;
-    const T t59 = t54 * t3;
-    const T t60 = T(5) * t50 * t55 * ab_ab + T(8) * t58 * a_minus_b + T(8) * ab_ap * t59;
-    const T t61 = t50 * t60 * ab_ap + T(8) * t59 - T(8) * t58;
-    const T t62 = t50 * t60 * ap_ap - T(2) * t61 * ab_ap * t57 - T(6) * t50 * t55;
-    const T t63 = T(6) * t56 * t57 - t61 * ap_ap * t57 - T(2) * ab_ap * t62 * t57;
-    const T t64 = t53 * t53;
-    const T t65 = t54 * t54;
-    const T t66 = T(48) * t64 * a_minus_b + T(7) * t50 * t60 * ab_ab + T(48) * ab_ap * t65;
-    const T t67 = T(48) * t65 + t50 * ab_ap * t66 - T(48) * t64;
-    const T t68 = t50 * ap_ap * t66 - T(8) * t50 * t60 - T(2) * ab_ap * t67 * t57;
-    const T t69 = T(2) * t68 * ab_ap * t57 + ap_ap * t67 * t57 - T(8) * t61 * t57;
-    const T t70 = T(2) * ab_ap * t57 * t69 + T(8) * t62 * t57 - t68 * ap_ap * t57;
-    const T t71 = T(8) * t63 * t57 + ap_ap * t57 * t69 - T(2) * ab_ap * t70 * t57;
-    const T t72 = t49 * t49;
-    const T t73 = t72 * tau_lo;
-    const T t74 = T(4) * t50 * t52 + T(2) * ab_ap * t56 * t57 - t50 * ap_ap * t55;
-    const T t75 = ap_ap * t62 * t57 + T(6) * t74 * t57 + T(2) * ab_ap * t63 * t57;
-    const T t76 = ap_ap * t70 * t57 + T(8) * t75 * t57 + T(2) * ab_ap * t71 * t57;
-    const T t77 = t51 - t3 - t50 * ab_ap * t52;
-    const T t78 = T(2) * ab_ap * t74 * t57 - ap_ap * t56 * t57 - T(4) * t77 * t57;
-    const T t79 = T(6) * t78 * t57 + T(2) * ab_ap * t75 * t57 - ap_ap * t63 * t57;
-    const T t80 = T(2) * ab_ap * t76 * t57 + T(8) * t57 * t79 - ap_ap * t71 * t57;
-    const T t81 = t45 * delta_tau;
-    const T t82 = t81 * t81;
-    const T t83 = t82 * delta_tau;
-    const T t84 = t48 * tau_lo;
-    const T t85 = T(2) * t77 * ab_ap * t57 + t50 * ap_ap * t52 - T(2) * J2;
-    const T t86 = t74 * ap_ap * t57 + T(4) * t85 * t57 - T(2) * ab_ap * t78 * t57;
-    const T t87 = T(2) * ab_ap * t57 * t79 - T(6) * t57 * t86 - t75 * ap_ap * t57;
-    const T t88 = T(8) * t87 * t57 + T(2) * t80 * ab_ap * t57 - t76 * ap_ap * t57;
-    const T t89 = t46 * t46;
-    const T t90 = t84 * t84;
-    const T t91 = t90 * tau_lo;
-    const T t92 = t89 * delta_tau;
-    const T t93 = t49 * tau_lo;
-    F = (T(21) / T(64)) * t47 * t49 * t71 * t57 + (T(1) / T(384)) * t50 * t73 * t66 + (T(3) / T(32)) * t80 * t83 * t48 * t57 + (T(7) / T(32)) * t76 * t82 * t84 * t57 + (T(3) / T(128)) * t67 * delta_tau * t72 * t57 + (T(3) / T(128)) * t88 * t89 * tau_lo * t57 - (T(7) / T(32)) * t81 * t90 * t57 * t69 - (T(3) / T(32)) * t68 * t45 * t91 * t57 - (T(1) / T(384)) * t92 * (T(8) * (T(6) * (T(2) * ab_ap * t57 * t86 + T(4) * (T(2) * ab_ap * t85 * t57 - t77 * ap_ap * t57 - (T(2) * ab_ap * J2 + log_ratio) * t57) * t57 + t78 * ap_ap * t57) * t57 + ap_ap * t57 * t79 - T(2) * ab_ap * t87 * t57) * t57 + t80 * ap_ap * t57 - T(2) * ab_ap * t88 * t57) * t57 - (T(21) / T(64)) * t46 * t93 * t70 * t57;
-    const T t94 = t65 * t3;
-    const T t95 = t64 * t51;
-    const T t96 = T(128) * t95 * a_minus_b + T(3) * t50 * ab_ab * t66 + T(128) * ab_ap * t94;
-    const T t97 = T(128) * t94 + t50 * ab_ap * t96 - T(128) * t95;
-    const T t98 = T(10) * t50 * t66 + T(6) * ab_ap * t97 * t57 - T(3) * t50 * ap_ap * t96;
-    const T t99 = T(10) * t67 * t57 + T(2) * ab_ap * t98 * t57 - T(3) * t97 * ap_ap * t57;
-    const T t100 = T(2) * t99 * ab_ap * t57 - t98 * ap_ap * t57 - T(10) * t68 * t57;
-    const T t101 = T(2) * ab_ap * t100 * t57 - t99 * ap_ap * t57 - T(10) * t57 * t69;
-    const T t102 = T(10) * t70 * t57 + t100 * ap_ap * t57 - T(2) * ab_ap * t101 * t57;
-    const T t103 = T(10) * t71 * t57 - T(2) * ab_ap * t102 * t57 - t101 * ap_ap * t57;
-    const T t104 = T(2) * ab_ap * t57 * t103 + T(10) * t76 * t57 + ap_ap * t102 * t57;
-    G_ap = (T(3) / T(1280)) * t89 * tau_lo * t104 * t57 + (T(1) / T(1280)) * t50 * t73 * t96 + (T(3) / T(320)) * t98 * t45 * t91 * t57 + (T(1) / T(3840)) * (T(2) * ab_ap * t104 * t57 + T(10) * t80 * t57 - ap_ap * t57 * t103) * t92 * t57 + (T(21) / T(640)) * t100 * t46 * t93 * t57 + (T(7) / T(320)) * t99 * t81 * t90 * t57 + (T(9) / T(1280)) * t97 * delta_tau * t72 * t57 + (T(21) / T(640)) * t101 * t47 * t49 * t57 + (T(3) / T(320)) * t83 * t48 * t57 * t103 - (T(7) / T(320)) * t82 * t84 * t102 * t57;
-    G_E = -(T(1) / T(1280)) * (T(210) * t47 * t49 * t70 * t57 + T(168) * t46 * t93 * t57 * t69 + T(128) * t95 * (T(9) * delta_tau * t72 + t92 + T(84) * t81 * t90 + T(9) * t89 * tau_lo + t73 + T(84) * t82 * t84 + T(36) * t83 * t48 + T(36) * t45 * t91 + T(126) * t47 * t49 + T(126) * t46 * t93) + T(84) * t68 * t81 * t90 * t57 - T(168) * t82 * t84 * t71 * t57 - T(84) * t76 * t83 * t48 * t57 - T(24) * t67 * t45 * t91 * t57 - T(3) * t50 * delta_tau * t72 * t66 - T(3) * t88 * t92 * t57 - T(24) * t80 * t89 * tau_lo * t57 - T(128) * t94 * t73) * t57;
+    const T t50 = sqrt(cross_cross);
+    const T t51 = T(1) / t50;
+    const T J2 = t51 * atan2(t50, ap_bp);
+    const T t52 = delta_tau * delta_tau;
+    const T t53 = t52 * t52;
+    const T t54 = t53 * delta_tau;
+    const T t55 = tau_lo * tau_lo;
+    const T t56 = t55 * t55;
+    const T t57 = T(1) / cross_cross;
+    const T t58 = T(1) / bp_bp;
+    const T t59 = ab_ap * t3 + J2 * ab_ab + t58 * a_minus_b;
+    const T t60 = t58 * t58;
+    const T t61 = t3 * t3;
+    const T t62 = T(3) * t57 * t59 * ab_ab + T(2) * t60 * a_minus_b + T(2) * ab_ap * t61;
+    const T t63 = t57 * ab_ap * t62 + T(2) * t61 - T(2) * t60;
+    const T t64 = T(1) / ab_ab;
+    const T t65 = t60 * t58;
+    const T t66 = t61 * t3;
+    const T t67 = T(5) * t57 * t62 * ab_ab + T(8) * t65 * a_minus_b + T(8) * ab_ap * t66;
+    const T t68 = t57 * t67 * ab_ap + T(8) * t66 - T(8) * t65;
+    const T t69 = t57 * t67 * ap_ap - T(2) * t68 * ab_ap * t64 - T(6) * t57 * t62;
+    const T t70 = T(6) * t63 * t64 - t68 * ap_ap * t64 - T(2) * ab_ap * t69 * t64;
+    const T t71 = t60 * t60;
+    const T t72 = t61 * t61;
+    const T t73 = T(48) * t71 * a_minus_b + T(7) * t57 * t67 * ab_ab + T(48) * ab_ap * t72;
+    const T t74 = T(48) * t72 + t57 * ab_ap * t73 - T(48) * t71;
+    const T t75 = t57 * ap_ap * t73 - T(8) * t57 * t67 - T(2) * ab_ap * t74 * t64;
+    const T t76 = T(2) * t75 * ab_ap * t64 + ap_ap * t74 * t64 - T(8) * t68 * t64;
+    const T t77 = T(2) * ab_ap * t64 * t76 + T(8) * t69 * t64 - t75 * ap_ap * t64;
+    const T t78 = T(8) * t70 * t64 + ap_ap * t64 * t76 - T(2) * ab_ap * t77 * t64;
+    const T t79 = t56 * t56;
+    const T t80 = t79 * tau_lo;
+    const T t81 = T(4) * t57 * t59 + T(2) * ab_ap * t63 * t64 - t57 * ap_ap * t62;
+    const T t82 = ap_ap * t69 * t64 + T(6) * t81 * t64 + T(2) * ab_ap * t70 * t64;
+    const T t83 = ap_ap * t77 * t64 + T(8) * t82 * t64 + T(2) * ab_ap * t78 * t64;
+    const T t84 = t58 - t3 - t57 * ab_ap * t59;
+    const T t85 = T(2) * ab_ap * t81 * t64 - ap_ap * t63 * t64 - T(4) * t84 * t64;
+    const T t86 = T(6) * t85 * t64 + T(2) * ab_ap * t82 * t64 - ap_ap * t70 * t64;
+    const T t87 = T(2) * ab_ap * t83 * t64 + T(8) * t64 * t86 - ap_ap * t78 * t64;
+    const T t88 = t52 * delta_tau;
+    const T t89 = t88 * t88;
+    const T t90 = t89 * delta_tau;
+    const T t91 = t55 * tau_lo;
+    const T t92 = T(2) * t84 * ab_ap * t64 + t57 * ap_ap * t59 - T(2) * J2;
+    const T t93 = t81 * ap_ap * t64 + T(4) * t92 * t64 - T(2) * ab_ap * t85 * t64;
+    const T t94 = T(2) * ab_ap * t64 * t86 - T(6) * t64 * t93 - t82 * ap_ap * t64;
+    const T t95 = T(8) * t94 * t64 + T(2) * t87 * ab_ap * t64 - t83 * ap_ap * t64;
+    const T t96 = t53 * t53;
+    const T t97 = t91 * t91;
+    const T t98 = t97 * tau_lo;
+    const T t99 = t96 * delta_tau;
+    const T t100 = t56 * tau_lo;
+    F = (T(21) / T(64)) * t54 * t56 * t78 * t64 + (T(1) / T(384)) * t57 * t80 * t73 + (T(3) / T(32)) * t87 * t90 * t55 * t64 + (T(7) / T(32)) * t83 * t89 * t91 * t64 + (T(3) / T(128)) * t74 * delta_tau * t79 * t64 + (T(3) / T(128)) * t95 * t96 * tau_lo * t64 - (T(7) / T(32)) * t88 * t97 * t64 * t76 - (T(3) / T(32)) * t75 * t52 * t98 * t64 - (T(1) / T(384)) * t99 * (T(8) * (T(6) * (T(2) * ab_ap * t64 * t93 + T(4) * (T(2) * ab_ap * t92 * t64 - t84 * ap_ap * t64 - (T(2) * ab_ap * J2 + log_ratio) * t64) * t64 + t85 * ap_ap * t64) * t64 + ap_ap * t64 * t86 - T(2) * ab_ap * t94 * t64) * t64 + t87 * ap_ap * t64 - T(2) * ab_ap * t95 * t64) * t64 - (T(21) / T(64)) * t53 * t100 * t77 * t64;
+    const T t101 = t72 * t3;
+    const T t102 = t71 * t58;
+    const T t103 = T(128) * t102 * a_minus_b + T(3) * t57 * ab_ab * t73 + T(128) * ab_ap * t101;
+    const T t104 = T(128) * t101 + t57 * ab_ap * t103 - T(128) * t102;
+    const T t105 = T(10) * t57 * t73 + T(6) * ab_ap * t104 * t64 - T(3) * t57 * ap_ap * t103;
+    const T t106 = T(10) * t74 * t64 + T(2) * ab_ap * t105 * t64 - T(3) * t104 * ap_ap * t64;
+    const T t107 = T(2) * t106 * ab_ap * t64 - t105 * ap_ap * t64 - T(10) * t75 * t64;
+    const T t108 = T(2) * ab_ap * t107 * t64 - t106 * ap_ap * t64 - T(10) * t64 * t76;
+    const T t109 = T(10) * t77 * t64 + t107 * ap_ap * t64 - T(2) * ab_ap * t108 * t64;
+    const T t110 = T(10) * t78 * t64 - T(2) * ab_ap * t109 * t64 - t108 * ap_ap * t64;
+    const T t111 = T(2) * ab_ap * t64 * t110 + T(10) * t83 * t64 + ap_ap * t109 * t64;
+    G_ap = (T(3) / T(1280)) * t96 * tau_lo * t111 * t64 + (T(1) / T(1280)) * t57 * t80 * t103 + (T(3) / T(320)) * t105 * t52 * t98 * t64 + (T(1) / T(3840)) * (T(2) * ab_ap * t111 * t64 + T(10) * t87 * t64 - ap_ap * t64 * t110) * t99 * t64 + (T(21) / T(640)) * t107 * t53 * t100 * t64 + (T(7) / T(320)) * t106 * t88 * t97 * t64 + (T(9) / T(1280)) * t104 * delta_tau * t79 * t64 + (T(21) / T(640)) * t108 * t54 * t56 * t64 + (T(3) / T(320)) * t90 * t55 * t64 * t110 - (T(7) / T(320)) * t89 * t91 * t109 * t64;
+    const T t112 = T(9) * delta_tau * t79 + t99 + T(84) * t88 * t97 + T(9) * t96 * tau_lo + t80 + T(84) * t89 * t91 + T(36) * t90 * t55 + T(36) * t52 * t98 + T(126) * t54 * t56 + T(126) * t53 * t100;
+    G_E = -(T(1) / T(1280)) * (T(210) * t54 * t56 * t77 * t64 + T(168) * t53 * t100 * t64 * t76 + T(128) * t102 * t112 + T(84) * t75 * t88 * t97 * t64 - T(168) * t89 * t91 * t78 * t64 - T(84) * t83 * t90 * t55 * t64 - T(24) * t74 * t52 * t98 * t64 - T(3) * t57 * delta_tau * t79 * t73 - T(3) * t95 * t99 * t64 - T(24) * t87 * t96 * tau_lo * t64 - T(128) * t101 * t80) * t64;
   }
-  const T t105 = in.sigma * in.sigma;
-  const T t106 = t105 * t105;
-  const T t107 = t106 * in.sigma;
-  const T t108 = t107 * t107;
-  const T g_factor = -T(10) * length * t108;
-  f = length * t108 * F;
+  const T t113 = in.sigma * in.sigma;
+  const T t114 = t113 * t113;
+  const T t115 = t114 * in.sigma;
+  const T t116 = t115 * t115;
+  const T g_factor = -T(10) * length * t116;
+  f = length * t116 * F;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = (foot1 * G_ap - G_E * ab1) * g_factor;
   grad[2] = -(G_E * ab2 - foot2 * G_ap) * g_factor;

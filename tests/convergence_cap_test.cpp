@@ -82,17 +82,28 @@ TEST(ConvergenceCap, CompactScalisPanelDepthCapThrows) {
   EXPECT_TRUE(std::isfinite(f));
 }
 
-TEST(ConvergenceCap, GaussPanelsThatCannotAdvanceReport) {
+TEST(ConvergenceCap, GaussPanelsResolvePolesNextToAnEndAndReportUnderflow) {
   // segment_moments_gauss_panels with the pole 1e-20 beyond t = 1 on the
-  // line (a = 1, b = 1 + 1e-20, a − b = −1e-20, D = 0): the first panel's
-  // step 0.9e-20 is below the rounding unit of t = 1. Before issue 19 the
-  // panel loop never advanced (the call hung); now it reports.
+  // line (a = 1, b = 1 (+1e-20, below rounding), a − b = −1e-20, D = 0).
+  // Before issue 19 the panel loop never advanced (the call hung); until
+  // issue 16 it reported, since the nodes were placed by t, which cannot
+  // step by 0.9e-20 at t = 1. The nodes are now placed by their offset from
+  // the end: ~70 panels, and exact. M_{k,m} = ∫_0^1 t^k (1 + e − t)^(−m) dt,
+  // e = 1e-20, is (e^(1−m) − (1 + e)^(1−m))/(m − 1) for k = 0, and within
+  // a relative e of it for every k ≤ 10 (t^k = 1 − O(1 − t), and the
+  // integral's mass is within ~e of t = 1).
+  const double e = 1e-20;
   std::array<double, 2 * 11> out{};
-  EXPECT_THROW(skelconv::segment_moments_gauss_panels<double>(3, 5, 10, 1.0, 1.0, -1e-20, 0.0, out.data()),
+  ASSERT_NO_THROW(skelconv::segment_moments_gauss_panels<double>(3, 5, 10, 1.0, 1.0, -e, 0.0, out.data()));
+  for (int level = 0; level < 2; ++level) {
+    const int m = 3 + 2 * level;
+    const double expected = (std::pow(e, 1 - m) - 1.0) / (m - 1);
+    for (int k = 0; k <= 10; ++k) EXPECT_NEAR(out[level * 11 + k] / expected, 1.0, 1e-14) << "k=" << k << " m=" << m;
+  }
+  // q underflowing at the pivot (the pole 1e-170 beyond the end; q = 1e-340):
+  // the integral is not resolvable, reported rather than returned as inf.
+  EXPECT_THROW(skelconv::segment_moments_gauss_panels<double>(3, 5, 10, 1.0, 1.0, -1e-170, 0.0, out.data()),
                NotConvergedError);
-  // 1e-6 beyond the end is resolved (about 20 panels a side) and finite.
-  EXPECT_NO_THROW(skelconv::segment_moments_gauss_panels<double>(3, 5, 10, 1.0, 1.0 + 1e-6, -1e-6, 0.0, out.data()));
-  for (double m : out) EXPECT_TRUE(std::isfinite(m));
 }
 
 TEST(ConvergenceCap, RuntimeTurnsItIntoEvaluationError) {

@@ -365,14 +365,15 @@ constexpr unsigned gauss_panel_points() {
 }
 
 namespace detail {
-/// segment_moments_gauss_panels with the pole within rounding of the panel
-/// start x: the integral is not resolvable in T. Throws NotConvergedError
-/// (the vector batches, src/simd/lanes-inl.hpp, specialise it to hand their
-/// lanes to the scalar path, which then throws).
+/// segment_moments_gauss_panels with the pole so close to the segment that
+/// q underflows there (closer than ~1e-154 |AB|, where the field is far
+/// outside the double range anyway): the integral is not resolvable in T.
+/// Throws NotConvergedError (the vector batches, src/simd/lanes-inl.hpp,
+/// specialise it to hand their lanes to the scalar path, which then throws).
 template <class T>
-void pole_within_rounding(const T& x) {
-  throw NotConvergedError("Gauss panels: the pole of the kernel is within rounding of t = " +
-                          std::to_string(static_cast<double>(x)) + " (P too close to the segment's end)");
+void pole_too_close(const T& distance) {
+  throw NotConvergedError("Gauss panels: the pole of the kernel is " + std::to_string(static_cast<double>(distance)) +
+                          " from the segment (in units of |AB|): q underflows there");
 }
 }  // namespace detail
 
@@ -385,24 +386,31 @@ void pole_within_rounding(const T& x) {
 /// Used where the closed forms cancel for high moments (the SCALIS weights
 /// τ(t)^(i−1), k ≤ 10): every node adds positive terms, so nothing cancels,
 /// and the panels make the rule exact to rounding by an a-priori bound:
-///  * q = (s² + D)/a with the slope s = a t − b taken from the nearer end
-///    (a t − b, or a(t − 1) + (a − b)): a sum of positive terms, accurate
-///    next to an end where q ≪ q(other end);
+///  * the pivot is the point of [0, 1] nearest to t* (an end, or t*);
+///    every node is placed by its offset o = t − pivot, and q = (s² + D)/a
+///    with the slope s = a t − b = s_pivot + a o, s_pivot = −b at t = 0,
+///    a − b at t = 1 (exact inputs), ≈ 0 at t*: s_pivot and a o have the
+///    same sign, so s is a sum of like-signed terms, and the offsets keep
+///    their relative precision however small the panels near the pivot
+///    get. (Placing nodes by t itself rounds each to ~ε absolute: next to
+///    an end, a panel of width δ then integrates a kernel of width δ at
+///    nodes displaced by ε/δ of it, 2e-13 for a SCALIS segment of radius
+///    1e-3 |AB| seen from just beyond its end.)
 ///  * the integrand's only singularities are the poles z, z̄ of order m/2;
-///    the distance from z to a real x is δ(x) = √(q(x)/a);
+///    the distance from z to a real t is δ(t) = √(q(t)/a);
 ///  * a panel [x, y] is accepted when z lies outside its Bernstein ellipse
 ///    of parameter 4, i.e. s = (δ(x) + δ(y))/|y − x| ≥ (4 + 1/4)/2 = 17/8
 ///    (Trefethen, Approximation Theory and Approximation Practice, ch. 19);
-///  * [0, 1] is one panel when accepted; otherwise panels start at the point
-///    of [0, 1] nearest to t* and go outwards;
-///    each takes the rest of its side if that is accepted, else the length
-///    0.9 δ(x) (accepted: δ grows away from t*, so s ≥ 2δ(x)/0.9δ(x));
+///  * [0, 1] is one panel when accepted; otherwise panels start at the pivot
+///    and go outwards; each takes the rest of its side if that is accepted,
+///    else the length 0.9 δ(x) (accepted: δ grows away from t*, so
+///    s ≥ 2δ(x)/0.9δ(x));
 ///  * δ grows by a factor ≥ 1.3 a panel, so a pole at distance ε from the
 ///    segment costs ~log(1/ε)/log 1.3 panels per side (in practice δ nearly
 ///    doubles); one or two panels when P is at least |AB|/2 from the line.
-/// If P is on the segment (δ = 0 there) the integral diverges: +∞. If the
-/// pole is closer to a panel's start than T can step (0.9 δ below the
-/// rounding unit of t), NotConvergedError.
+/// If P is on the segment (D = 0, t* in [0, 1]) the integral diverges: +∞.
+/// If q underflows at the pivot (the pole closer than ~1e-154 |AB|, P on
+/// the line beyond an end), NotConvergedError (detail::pole_too_close).
 template <class T>
 void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& a_minus_b,
                                   const T& D, T* out) {
@@ -411,50 +419,62 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
   constexpr unsigned N = gauss_panel_points<T>();
   const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
   for (int i = 0; i < count; ++i) out[i] = T(0);
-  const T half(0.5);
-  auto slope = [&](const T& t) { return t <= half ? a * t - b : a * (t - T(1)) + a_minus_b; };
-  auto q_at = [&](const T& t) {
-    const T s = slope(t);
+  const T zero(0), one(1);
+  const T t_star = b / a;
+  const bool before_A = t_star <= zero, beyond_B = t_star >= one;
+  const T pivot = before_A ? zero : beyond_B ? one : t_star;
+  const T slope_pivot = before_A ? -b : beyond_B ? a_minus_b : a * t_star - b;
+  // q and δ at the offset o = t − pivot.
+  auto q_at = [&](const T& o) {
+    const T s = slope_pivot + a * o;
     return (s * s + D) / a;
   };
-  auto delta = [&](const T& t) { return sqrt(q_at(t) / a); };
-  const T t_star = b / a;
-  const T pivot = t_star < T(0) ? T(0) : t_star > T(1) ? T(1) : t_star;
+  auto delta = [&](const T& o) { return sqrt(q_at(o) / a); };
+  // The N-point rule on the panel of offsets [lo, hi].
+  auto add_panel = [&](const T& lo, const T& hi) {
+    const T half_width = (hi - lo) / 2;
+    const T middle = (lo + hi) / 2;
+    add_moments_at_nodes<T, N, NodeMap::linear>(
+        m_lo, m_hi, k_max,
+        [&](const T& x) {
+          const T o = middle + half_width * x;
+          return MomentNode<T>{pivot + o, q_at(o), half_width};
+        },
+        out);
+  };
+  const T offset_A = -pivot, offset_B = one - pivot;  // exact for pivot ≥ 1/2 (Sterbenz), else to ε
   const T s_min = T(17) / T(8);
   // Far from the segment one panel on [0, 1] is accepted: then it is used
   // instead of two that meet at the pivot (half the cost).
-  if (pivot != T(0) && pivot != T(1) && delta(T(0)) + delta(T(1)) >= s_min) {
-    add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, T(0), T(1), out);
+  if (!before_A && !beyond_B && delta(offset_A) + delta(offset_B) >= s_min) {
+    add_panel(offset_A, offset_B);
+    return;
+  }
+  if (D == zero && !before_A && !beyond_B) {  // P on the segment: the kernel's pole is on the path
+    for (int i = 0; i < count; ++i) out[i] = std::numeric_limits<T>::infinity();
+    return;
+  }
+  const T delta_pivot = delta(zero);
+  if (!(q_at(zero) >= T(std::numeric_limits<double>::min()))) {
+    detail::pole_too_close(delta_pivot);
     return;
   }
   for (int side = 0; side <= 1; ++side) {
-    const T end(side);
-    if (end == pivot) continue;
-    T x = pivot;
-    T delta_x = delta(x);
-    if (!(delta_x > T(0))) {  // P on the segment: the kernel's pole is on the path
-      for (int i = 0; i < count; ++i) out[i] = std::numeric_limits<T>::infinity();
-      return;
-    }
+    if ((side == 0 && before_A) || (side == 1 && beyond_B)) continue;  // the pivot is that end
+    const T end = side == 0 ? offset_A : offset_B;
     const T delta_end = delta(end);
+    T x = zero;
+    T delta_x = delta_pivot;
     while (x != end) {
       T y = end;
       if (delta_x + delta_end < s_min * abs(end - x)) {
         const T step = T(9) / T(10) * delta_x;
-        y = end > x ? (x + step < end ? x + step : end) : (x - step > end ? x - step : end);
-        // The pole within rounding of x (P closer to the segment's end than
-        // the rounding unit of t, in units of |AB|): the panels cannot
-        // advance, and the integral is not resolvable in T. Reported, not
-        // looped on (the loop would never end).
-        if (y == x) {
-          detail::pole_within_rounding(x);
-          return;
-        }
+        y = side == 1 ? (x + step < end ? x + step : end) : (x - step > end ? x - step : end);
       }
       if (x < y)
-        add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, x, y, out);
+        add_panel(x, y);
       else
-        add_segment_moments_gauss<T, N>(m_lo, m_hi, k_max, q_at, y, x, out);
+        add_panel(y, x);
       x = y;
       delta_x = delta(x);
     }

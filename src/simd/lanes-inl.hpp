@@ -26,8 +26,8 @@
 //     vectorised with the scalar path's own arithmetic: the Miller
 //     recurrences run as many steps as the neediest lane (miller_steps, end
 //     of this file); pow(x, n) is the C library's, lane by lane; the SCALIS
-//     Gauss panels are loops over masks, and a pole within rounding of a
-//     panel hands the lanes to the scalar path (pole_within_rounding);
+//     Gauss panels are loops over masks, and a pole where q underflows
+//     hands the lanes to the scalar path (pole_too_close);
 //   * Boost's Gauss–Legendre tables exist for floating-point types only: the
 //     specialisation at the end reuses the double tables (nodes broadcast).
 //
@@ -228,11 +228,11 @@ inline int rule_nodes<SimdLanes>(const SimdLanes& x, double x7, double x10, doub
   return nodes;
 }
 
-/// SCALIS segments' Gauss panels (gauss_moments.hpp) with the pole within
-/// rounding of a panel start: the active lanes go to the scalar path, which
-/// reports the error.
+/// SCALIS segments' Gauss panels (gauss_moments.hpp) with the pole so close
+/// to the segment that q underflows: the active lanes go to the scalar path,
+/// which reports the error.
 template <>
-inline void pole_within_rounding<SimdLanes>(const SimdLanes&) {
+inline void pole_too_close<SimdLanes>(const SimdLanes&) {
   simd::HWY_NAMESPACE::current_divergence->hand_to_scalar();
 }
 }  // namespace detail
