@@ -17,7 +17,8 @@
 //    the roots, so the support is [max(0, r_hi), 1]; for α < 0 it is
 //    [max(0, r_lo), min(1, r_hi)]; for α = 0, Q is linear. The discriminant is
 //        β² − αγ = σ²|Δτ AP + τ0 AB|² − |AB × AP|²
-//    (expand both sides), formed as a product (σ|W| − |X|)(σ|W| + |X|), and
+//    (expand both sides), formed with γ in double-word arithmetic from the
+//    exact inputs (exact_support_depths), and
 //    the roots as q = −(β + sign(β)√disc), r = γ/q, r' = q/α (no
 //    cancellation; r' is never formed when α = 0). Q is evaluated factored
 //    about a root ρ, Q = s (α s + Q'(ρ)) with s = t − ρ and Q'(ρ) = ±2√disc, so
@@ -81,13 +82,15 @@
 //
 // 5. Accuracy (double, verify/test_scalis_properties.cpp against binary128
 //    quadrature of the definition, 2,000 generic points per degree 2..10):
-//    F ≤ 2.5e-13 relative (≤ 4e-14 for i ≤ 9), each ∇F component ≤ 2e-13 of
-//    |∇F|; a component as small as 1–5% of |∇F| has up to 2.6e-12 error of
-//    its own, as much as 1-ulp perturbations of the inputs cause (input
-//    conditioning, measured). Near the support boundary F ~ η^((i+1)/2) at
-//    relative depth η and the inputs' rounding is amplified ~1/η (1e-10 at
-//    η = 1e-6): again the measured conditioning of F, not the method
-//    (binary128 stays at 1e-32, long double at 1e-17). Cost: one panel of 25
+//    F ≤ 4.5e-14 relative, each ∇F component ≤ 1.1e-13 of |∇F|; a
+//    component as small as 1–5% of |∇F| has up to 1.3e-12 error of its own.
+//    Near the support boundary F ~ η^((i+1)/2) at relative depth η: ≤ 2.4e-15
+//    for η down to 1e-10, since Q(0), Q(1) and the discriminant come from
+//    the exact inputs (exact_support_depths; from the rounded AP and
+//    AB × AP they carried ~ε/η: 2e-10 at η = 1e-5), each root is its offset
+//    from the nearer end of the segment (2.5e-13 at i = 10 before, a short
+//    support at an end), and the width between two roots is 2√disc/|α|.
+//    Cost: one panel of 25
 //    nodes for even i (~0.25 µs for F and ∇F), two for odd i (~0.55 µs);
 //    more only near a cone tip.
 #pragma once
@@ -101,6 +104,7 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "skelconv/double_word.hpp"
 #include "skelconv/integer_power.hpp"
 #include "skelconv/not_converged.hpp"
 #include "skelconv/scalis_segment_input.hpp"
@@ -150,16 +154,30 @@ T bernstein_rho(const T& a, const T& b, const Singularity<T>& z) {
 
 /// One piece of the support: t = origin + dir·v (linear) or origin + dir·v²
 /// (square, origin a root of Q), v ∈ [0, extent]. Q is evaluated as
-/// s (α s + slope) with s = t − root, root a root of Q and slope = Q'(root).
+/// s (α s + slope) with s = t − ρ = (origin − ρ) + dir·v (linear) or dir·v²
+/// (square), ρ a root of Q and slope = Q'(ρ).
 template <class T>
 struct Piece {
   bool square;
   T origin;
   int dir;
   T extent;
-  T root;   ///< expansion root ρ (== origin for square pieces)
-  T slope;  ///< Q'(ρ)
+  T origin_minus_root;  ///< origin − ρ, formed from offsets (0 for square pieces)
+  T slope;              ///< Q'(ρ)
 };
+
+/// A parameter t as an end of the segment (0 or 1) plus an offset, t = end +
+/// offset: differences of two such points keep the offsets' relative
+/// accuracy when both are near the same end.
+template <class T>
+struct EndOffset {
+  T end;
+  T offset;
+};
+template <class T>
+T operator-(const EndOffset<T>& x, const EndOffset<T>& y) {
+  return (x.end - y.end) + (x.offset - y.offset);
+}
 
 /// Everything the integrand needs, in the translated, scaled, oriented frame.
 template <class T>
@@ -202,7 +220,7 @@ void add_panel(const Frame<T>& fr, const Piece<T>& pc, const T& a, const T& b, b
       jac = 2 * v;
     } else {
       t = pc.origin + T(pc.dir) * v;
-      s = (pc.origin - pc.root) + T(pc.dir) * v;
+      s = pc.origin_minus_root + T(pc.dir) * v;
       jac = T(1);
     }
     const T g = fr.alpha * s + pc.slope;
@@ -242,6 +260,61 @@ void add_panel(const Frame<T>& fr, const Piece<T>& pc, const T& a, const T& b, b
     node(xs[j], ws[j]);
     node(-xs[j], ws[j]);
   }
+}
+
+/// How deep P is inside the support, from the exact inputs: Q(0) = σ²τ0² −
+/// |AP|², Q(1) = σ²τ1² − |BP|² and the discriminant β² − αγ = σ²|W|² − |X|²
+/// (W = Δτ AP + τ0 AB, X = AB × AP), each formed in double-word arithmetic
+/// (skelconv/double_word.hpp) and rounded once, in the frame scaled by 2^−e.
+/// From the rounded AP, AB × AP and W, each carried an error ~ε of its
+/// larger term (σ²τ², σ²|W|²): a relative error ε/η at relative depth η of
+/// P inside the support, which F ~ η^((i+1)/2) multiplies by (i + 1)/2
+/// (measured 1e-8 at η = 1e-7). A, B, P are the caller's points and τa, τb
+/// its radii at A and B.
+template <class T>
+struct SupportDepths {
+  T q_at_a;  ///< Q(0) = γ
+  T q_at_b;  ///< Q(1)
+  T disc;    ///< β² − αγ
+};
+template <class T>
+SupportDepths<T> exact_support_depths(const std::array<T, 3>& A, const std::array<T, 3>& B,
+                                      const std::array<T, 3>& P, const T& tau_a, const T& tau_b, const T& sigma,
+                                      int e) {
+  using std::ldexp;
+  using detail::DoubleWord;
+  using detail::word_add;
+  using detail::word_multiply;
+  using detail::word_negate;
+  using detail::word_norm2;
+  auto scaled_difference = [&](const T& x, const T& y) {
+    const DoubleWord<T> d = detail::exact_word_difference(x, y);
+    return DoubleWord<T>{ldexp(d.hi, -e), ldexp(d.lo, -e)};
+  };
+  auto rounded = [](const DoubleWord<T>& x) { return x.hi + x.lo; };
+  DoubleWord<T> ab[3], ap[3], bp[3];
+  for (int c = 0; c < 3; ++c) {
+    ab[c] = scaled_difference(B[c], A[c]);
+    ap[c] = scaled_difference(P[c], A[c]);
+    bp[c] = scaled_difference(P[c], B[c]);
+  }
+  const DoubleWord<T> s{sigma, T(0)}, tau0{ldexp(tau_a, -e), T(0)}, tau1{ldexp(tau_b, -e), T(0)};
+  const DoubleWord<T> dtau = scaled_difference(tau_b, tau_a);
+  auto reach2 = [&](const DoubleWord<T>& tau) {  // σ²τ²
+    const DoubleWord<T> r = word_multiply(s, tau);
+    return word_multiply(r, r);
+  };
+  DoubleWord<T> w[3], x[3];
+  for (int c = 0; c < 3; ++c) {
+    const int j = (c + 1) % 3, k = (c + 2) % 3;
+    w[c] = word_add(word_multiply(dtau, ap[c]), word_multiply(tau0, ab[c]));
+    x[c] = word_add(word_multiply(ab[j], ap[k]), word_negate(word_multiply(ab[k], ap[j])));
+  }
+  SupportDepths<T> out;
+  out.q_at_a = rounded(word_add(reach2(tau0), word_negate(word_norm2(ap))));
+  out.q_at_b = rounded(word_add(reach2(tau1), word_negate(word_norm2(bp))));
+  out.disc = rounded(word_add(word_multiply(word_multiply(s, s), word_norm2(w)), word_negate(word_norm2(x))));
+  return out;
 }
 
 /// Integrates one piece on Bernstein-graded panels.
@@ -342,7 +415,6 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   const T length = sqrt(a2);
   const T b = ab[0] * ap[0] + ab[1] * ap[1] + ab[2] * ap[2];
   const T c2 = ap[0] * ap[0] + ap[1] * ap[1] + ap[2] * ap[2];  // |AP|²
-  const T ap_len = sqrt(c2);
 
   Frame<T> fr;
   fr.degree = degree;
@@ -368,14 +440,9 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   if (tau0 == T(0) && c2 == T(0)) return at_tip();
 
   const T beta = fr.sigma2 * dtau * tau0 + b;
-  const T gamma = (sigma * tau0 - ap_len) * (sigma * tau0 + ap_len);
-  const std::array<T, 3> cross{ab[1] * ap[2] - ab[2] * ap[1], ab[2] * ap[0] - ab[0] * ap[2],
-                               ab[0] * ap[1] - ab[1] * ap[0]};
-  std::array<T, 3> wv;
-  for (int k = 0; k < 3; ++k) wv[k] = dtau * ap[k] + tau0 * ab[k];
-  const T w_len = sqrt(wv[0] * wv[0] + wv[1] * wv[1] + wv[2] * wv[2]);
-  const T x_len = sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
-  T disc = (sigma * w_len - x_len) * (sigma * w_len + x_len);
+  const SupportDepths<T> depths = exact_support_depths(A, B, in.p, tau_a, tau_b, sigma, e);
+  const T gamma = depths.q_at_a;
+  T disc = depths.disc;
   if (!(disc > T(0))) {
     // α ≤ 0: Q ≤ 0 everywhere (empty support, or a tangent point).
     // α > 0: then disc ≥ 0 (the tip is between the roots); disc = 0 is P on
@@ -406,18 +473,50 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
     std::swap(slopes[0], slopes[1]);
   }
 
+  // Each root as its offset from the segment end nearer to it, t = end +
+  // offset. A root ρ near t = 1 held as the double ρ is off by ~ε in
+  // absolute terms, which is a relative error ε/(1 − ρ) in s = t − ρ over a
+  // support [ρ, 1] of width 1 − ρ (measured: 2.5e-13 in F, i = 10, a support
+  // 0.01 long at B). Centred at B, Q(1 − u) = α u² − 2(α + β) u + Q(1), with
+  // Q(1) = σ²τ1² − |BP|² and α + β = σ²Δτ τ1 + AB·BP formed from BP itself,
+  // and the same stable formula gives u to the relative accuracy of Q(1).
+  // (Near t = 0 the root itself is its offset.)
+  EndOffset<T> root_at[2];
+  {
+    std::array<T, 3> bp;
+    for (int c = 0; c < 3; ++c) bp[c] = ldexp(in.p[c] - B[c], -e);
+    const T tau1 = ldexp(tau_b, -e);
+    const T& q_at_b = depths.q_at_b;
+    const T half_slope_at_b = fr.sigma2 * dtau * tau1 + (ab[0] * bp[0] + ab[1] * bp[1] + ab[2] * bp[2]);  // α + β
+    const T q_b = half_slope_at_b + (half_slope_at_b < T(0) ? -sd : sd);
+    for (int k = 0; k < n_roots; ++k) {
+      root_at[k] = {T(0), roots[k]};
+      if (!(roots[k] >= T(0.5)) || q_b == T(0)) continue;
+      // u of the two roots (u = Q(1)/q_b and q_b/α): the one matching ρ_k.
+      T u = q_at_b / q_b;
+      if (alpha != T(0)) {
+        const T other = q_b / alpha;
+        if (abs((T(1) - other) - roots[k]) < abs((T(1) - u) - roots[k])) u = other;
+      }
+      root_at[k] = {T(1), -u};
+    }
+  }
+
   // The support [t1, t2] and which of its ends are roots of Q.
   T t1 = T(0), t2 = T(1);
+  EndOffset<T> end1{T(0), T(0)}, end2{T(1), T(0)};  // t1, t2 as offsets from an end
   int root_at_t1 = -1, root_at_t2 = -1;  // index into roots, −1: a segment end
   auto clip_low = [&](int k) {
     if (roots[k] > T(0)) {
       t1 = roots[k];
+      end1 = root_at[k];
       root_at_t1 = k;
     }
   };
   auto clip_high = [&](int k) {
     if (roots[k] < T(1)) {
       t2 = roots[k];
+      end2 = root_at[k];
       root_at_t2 = k;
     }
   };
@@ -435,7 +534,7 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   // Singular points of the integrand on the real t axis: the pole of 1/τ and,
   // for odd i, the branch points of √Q.
   const bool odd = degree % 2 == 1;
-  T t_sing[3];
+  T t_sing[3]{};
   int n_sing = 0;
   if (dtau > T(0)) t_sing[n_sing++] = -tau0 / dtau;
   const int n_poles = n_sing;
@@ -443,28 +542,27 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
     for (int k = 0; k < n_roots; ++k) t_sing[n_sing++] = roots[k];
 
   // For Q: the root nearest to a t range (any root works algebraically).
-  auto nearest_root = [&](const T& lo, const T& hi, T& root, T& slope) {
-    root = T(0);
-    slope = T(0);
+  auto nearest_root = [&](const T& lo, const T& hi) {
+    int nearest = 0;
     T best = std::numeric_limits<T>::infinity();
     for (int k = 0; k < n_roots; ++k) {
       const T d = roots[k] < lo ? lo - roots[k] : roots[k] > hi ? roots[k] - hi : T(0);
       if (d < best) {
         best = d;
-        root = roots[k];
-        slope = slopes[k];
+        nearest = k;
       }
     }
+    return nearest;
   };
-  // A piece from end `origin` towards the other end, of t extent `extent`.
-  auto linear_piece = [&](const T& origin, int dir, const T& extent) {
-    Piece<T> pc{false, origin, dir, extent, T(0), T(0)};
+  // A piece from the support end `origin` (`from` as offsets) towards the
+  // other end, of t extent `extent`.
+  auto linear_piece = [&](const T& origin, const EndOffset<T>& from, int dir, const T& extent) {
     const T lo = dir > 0 ? origin : origin - extent;
-    nearest_root(lo, lo + extent, pc.root, pc.slope);
-    return pc;
+    const int k = nearest_root(lo, lo + extent);
+    return Piece<T>{false, origin, dir, extent, from - root_at[k], slopes[k]};
   };
   auto square_piece = [&](int k, int dir, const T& extent) {
-    return Piece<T>{true, roots[k], dir, sqrt(extent), roots[k], slopes[k]};
+    return Piece<T>{true, roots[k], dir, sqrt(extent), T(0), slopes[k]};
   };
   // The singular points a square piece from roots[k] still sees: its own
   // root's branch point is removed by the substitution.
@@ -478,24 +576,27 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   };
 
   Sums<T> sums;
+  // t2 − t1: between two roots 2√disc/|α| (exact to rounding however close
+  // they are), else from the offsets.
+  const T width = root_at_t1 >= 0 && root_at_t2 >= 0 ? T(2) * sd / abs(alpha) : end2 - end1;
   if (!odd || (root_at_t1 < 0 && root_at_t2 < 0)) {
-    const Piece<T> pc = linear_piece(t1, +1, t2 - t1);
+    const Piece<T> pc = linear_piece(t1, end1, +1, width);
     add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
   } else {
-    const T middle = (t1 + t2) / 2;
+    const T half_width = width / 2;
     T sing[3];
     if (root_at_t1 >= 0) {
-      const Piece<T> pc = square_piece(root_at_t1, +1, middle - t1);
+      const Piece<T> pc = square_piece(root_at_t1, +1, half_width);
       add_piece(fr, pc, sing, sing_without(root_at_t1, sing), n_poles, with_grad, sums);
     } else {
-      const Piece<T> pc = linear_piece(t1, +1, middle - t1);
+      const Piece<T> pc = linear_piece(t1, end1, +1, half_width);
       add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
     }
     if (root_at_t2 >= 0) {
-      const Piece<T> pc = square_piece(root_at_t2, -1, t2 - middle);
+      const Piece<T> pc = square_piece(root_at_t2, -1, half_width);
       add_piece(fr, pc, sing, sing_without(root_at_t2, sing), n_poles, with_grad, sums);
     } else {
-      const Piece<T> pc = linear_piece(t2, -1, t2 - middle);
+      const Piece<T> pc = linear_piece(t2, end2, -1, half_width);
       add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
     }
   }
