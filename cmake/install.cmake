@@ -15,7 +15,8 @@
 #
 # Exported targets (namespace skelconv::):
 #   skelconv::runtime  primitives, skeleton files, blends, fields, batches, bounds
-#   skelconv::mesh     iso-surface meshing (CGAL Mesh_3, OpenVDB), PLY/OBJ
+#   skelconv::mesh     iso-surface meshing (CGAL Mesh_3; OpenVDB in the module
+#                      lib/skelconv/libskelconv_grid_mesher.so, opened on use), PLY/OBJ
 #   skelconv::skelconv both: what <skelconv/skelconv.hpp> declares
 #   skelconv::kernels  the header-only generated kernels (templates on the scalar type)
 include(GNUInstallDirs)
@@ -38,12 +39,15 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/skelconv
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/generated
         DESTINATION ${SKELCONV_GENERATED_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 
-# The OBJECT libraries that confine CGAL and OpenVDB to their own translation
-# units (src/CMakeLists.txt) are linked privately into the static libraries;
-# they are exported for their link dependencies (CGAL's GMP, OpenVDB), their
-# objects are already inside the archives.
+# The OBJECT library that confines CGAL to its own translation unit
+# (src/CMakeLists.txt) is linked privately into the static library; it is
+# exported for its link dependencies (CGAL's GMP), its objects are already
+# inside the archive. The OpenVDB module of the grid method is opened at run
+# time from <libdir>/skelconv/ (src/mesh/grid_mesher_loader.cpp): installed
+# there, not linked.
+install(TARGETS skelconv_grid_mesher LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/skelconv)
 install(TARGETS skelconv_all skelconv_runtime skelconv_mesh skelconv_kernels
-                skelconv_planar_polygon skelconv_cgal_mesher skelconv_grid_mesher
+                skelconv_planar_polygon skelconv_cgal_mesher
         EXPORT skelconv-targets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

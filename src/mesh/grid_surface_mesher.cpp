@@ -1,4 +1,8 @@
-// Implementation of grid_surface_mesher.hpp (OpenVDB 10).
+// The grid method's OpenVDB part (OpenVDB 10), built as the module
+// libskelconv_grid_mesher.so, which grid_mesher_loader.cpp opens on first
+// use: linked into the command, OpenVDB's relocations cost every process
+// ~46 ms at start-up (`skelconv eval` took 60 ms, 9 without it), whether
+// it meshes or not. Its one exported symbol is skelconv_grid_surface_mesh.
 #include "grid_surface_mesher.hpp"
 
 #include <algorithm>
@@ -60,9 +64,9 @@ openvdb::FloatGrid::Ptr sample(const GridSurfaceRequest& request, const openvdb:
   return grid;
 }
 
-}  // namespace
-
-TriangleMesh grid_surface_mesh(const GridSurfaceRequest& request) {
+/// grid_surface_mesh (grid_surface_mesher.hpp), here under its own name: the
+/// loader in the static library defines grid_surface_mesh itself.
+TriangleMesh openvdb_surface_mesh(const GridSurfaceRequest& request) {
   openvdb::initialize();
   const Vec3 extent = request.box.hi - request.box.lo;
   const openvdb::Coord count(int(std::ceil(extent.x() / request.voxel)) + 1,
@@ -91,4 +95,11 @@ TriangleMesh grid_surface_mesh(const GridSurfaceRequest& request) {
   return mesh;
 }
 
+}  // namespace
 }  // namespace skelconv::detail
+
+/// The module's entry point, looked up by name (grid_mesher_loader.cpp).
+extern "C" __attribute__((visibility("default"))) void skelconv_grid_surface_mesh(
+    const skelconv::detail::GridSurfaceRequest* request, skelconv::TriangleMesh* mesh) {
+  *mesh = skelconv::detail::openvdb_surface_mesh(*request);
+}
