@@ -82,11 +82,11 @@
 //
 // 5. Accuracy (double, verify/test_scalis_properties.cpp against binary128
 //    quadrature of the definition, 2,000 generic points per degree 2..10):
-//    F ≤ 4.5e-14 relative, each ∇F component ≤ 1.1e-13 of |∇F|; a
-//    component as small as 1–5% of |∇F| has up to 1.3e-12 error of its own.
+//    F ≤ 4.8e-14 relative, each ∇F component ≤ 2.7e-13 of |∇F|; a
+//    component as small as 1–5% of |∇F| has up to 3e-12 error of its own.
 //    Near the support boundary F ~ η^((i+1)/2) at relative depth η: ≤ 2.4e-15
 //    for η down to 1e-10, since Q(0), Q(1) and the discriminant come from
-//    the exact inputs (exact_support_depths; from the rounded AP and
+//    the exact inputs there (support_depths; from the rounded AP and
 //    AB × AP they carried ~ε/η: 2e-10 at η = 1e-5), each root is its offset
 //    from the nearer end of the segment (2.5e-13 at i = 10 before, a short
 //    support at an end), and the width between two roots is 2√disc/|α|.
@@ -317,6 +317,39 @@ SupportDepths<T> exact_support_depths(const std::array<T, 3>& A, const std::arra
   return out;
 }
 
+/// The three depths of exact_support_depths, from the rounded AB, AP, BP
+/// (frame of scalis_compact_F) where that is accurate: each is a difference
+/// of squares (x − y)(x + y) of two nonnegative terms known to a few ε, so
+/// its relative error is a few ε (x + y)/|x − y|. Where any is below 1/32 of
+/// its terms' sum (P near the support boundary), all three come from
+/// exact_support_depths instead (~5 times the operations; measured at
+/// generic points: twice the cost of F if always taken).
+template <class T>
+SupportDepths<T> support_depths(const std::array<T, 3>& A, const std::array<T, 3>& B, const std::array<T, 3>& P,
+                                const T& tau_a, const T& tau_b, const T& sigma, int e, const std::array<T, 3>& ab,
+                                const std::array<T, 3>& ap, const T& tau0, const T& dtau) {
+  using std::abs;
+  using std::ldexp;
+  using std::sqrt;
+  auto length = [](const std::array<T, 3>& v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
+  bool shallow = false;
+  auto difference_of_squares = [&shallow](const T& x, const T& y) {
+    if (!(T(32) * abs(x - y) >= x + y)) shallow = true;
+    return (x - y) * (x + y);
+  };
+  std::array<T, 3> bp, w, x;
+  for (int c = 0; c < 3; ++c) {
+    bp[c] = ldexp(P[c] - B[c], -e);
+    w[c] = dtau * ap[c] + tau0 * ab[c];
+  }
+  x = {ab[1] * ap[2] - ab[2] * ap[1], ab[2] * ap[0] - ab[0] * ap[2], ab[0] * ap[1] - ab[1] * ap[0]};
+  SupportDepths<T> out;
+  out.q_at_a = difference_of_squares(sigma * tau0, length(ap));
+  out.q_at_b = difference_of_squares(sigma * ldexp(tau_b, -e), length(bp));
+  out.disc = difference_of_squares(sigma * length(w), length(x));
+  return shallow ? exact_support_depths(A, B, P, tau_a, tau_b, sigma, e) : out;
+}
+
 /// Integrates one piece on Bernstein-graded panels.
 /// t_sing[0 .. n_poles−1] are poles, the rest branch points.
 template <class T>
@@ -440,7 +473,7 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   if (tau0 == T(0) && c2 == T(0)) return at_tip();
 
   const T beta = fr.sigma2 * dtau * tau0 + b;
-  const SupportDepths<T> depths = exact_support_depths(A, B, in.p, tau_a, tau_b, sigma, e);
+  const SupportDepths<T> depths = support_depths(A, B, in.p, tau_a, tau_b, sigma, e, ab, ap, tau0, dtau);
   const T gamma = depths.q_at_a;
   T disc = depths.disc;
   if (!(disc > T(0))) {
