@@ -322,8 +322,9 @@ SupportDepths<T> exact_support_depths(const std::array<T, 3>& A, const std::arra
 /// of squares (x − y)(x + y) of two nonnegative terms known to a few ε, so
 /// its relative error is a few ε (x + y)/|x − y|. Where any is below 1/32 of
 /// its terms' sum (P near the support boundary), all three come from
-/// exact_support_depths instead (~5 times the operations; measured at
-/// generic points: twice the cost of F if always taken).
+/// exact_support_depths instead (~5 times the operations: always taken,
+/// they tripled F's operation count at generic points, 238 → 777 additions
+/// for degree 4, bench/results/scalis_compact_opcounts.md).
 template <class T>
 SupportDepths<T> support_depths(const std::array<T, 3>& A, const std::array<T, 3>& B, const std::array<T, 3>& P,
                                 const T& tau_a, const T& tau_b, const T& sigma, int e, const std::array<T, 3>& ab,
