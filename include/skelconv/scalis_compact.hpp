@@ -273,9 +273,10 @@ void add_panel(const Frame<T>& fr, const Piece<T>& pc, const T& a, const T& b, b
 /// its radii at A and B.
 template <class T>
 struct SupportDepths {
-  T q_at_a;  ///< Q(0) = γ
-  T q_at_b;  ///< Q(1)
-  T disc;    ///< β² − αγ
+  T q_at_a;         ///< Q(0) = γ
+  T q_at_b;         ///< Q(1)
+  T disc;           ///< β² − αγ
+  T ab_bp = T(0);   ///< AB·BP from the rounded vectors (support_depths; Q'(1)/2 = σ²Δτ τ1 + AB·BP)
 };
 template <class T>
 SupportDepths<T> exact_support_depths(const std::array<T, 3>& A, const std::array<T, 3>& B,
@@ -348,7 +349,11 @@ SupportDepths<T> support_depths(const std::array<T, 3>& A, const std::array<T, 3
   out.q_at_a = difference_of_squares(sigma * tau0, length(ap));
   out.q_at_b = difference_of_squares(sigma * ldexp(tau_b, -e), length(bp));
   out.disc = difference_of_squares(sigma * length(w), length(x));
-  return shallow ? exact_support_depths(A, B, P, tau_a, tau_b, sigma, e) : out;
+  out.ab_bp = ab[0] * bp[0] + ab[1] * bp[1] + ab[2] * bp[2];
+  if (!shallow) return out;
+  SupportDepths<T> exact = exact_support_depths(A, B, P, tau_a, tau_b, sigma, e);
+  exact.ab_bp = out.ab_bp;
+  return exact;
 }
 
 /// Integrates one piece on Bernstein-graded panels.
@@ -517,11 +522,9 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   // (Near t = 0 the root itself is its offset.)
   EndOffset<T> root_at[2];
   {
-    std::array<T, 3> bp;
-    for (int c = 0; c < 3; ++c) bp[c] = ldexp(in.p[c] - B[c], -e);
     const T tau1 = ldexp(tau_b, -e);
     const T& q_at_b = depths.q_at_b;
-    const T half_slope_at_b = fr.sigma2 * dtau * tau1 + (ab[0] * bp[0] + ab[1] * bp[1] + ab[2] * bp[2]);  // α + β
+    const T half_slope_at_b = fr.sigma2 * dtau * tau1 + depths.ab_bp;  // α + β
     const T q_b = half_slope_at_b + (half_slope_at_b < T(0) ? -sd : sd);
     for (int k = 0; k < n_roots; ++k) {
       root_at[k] = {T(0), roots[k]};
