@@ -83,7 +83,6 @@ SweepReport merge_reports(const std::vector<SweepReport>& shards) {
     result.samples += shard.result.samples;
     result.seconds += shard.result.seconds;
     result.kernel_evaluations += shard.result.kernel_evaluations;
-    result.replay_misses += shard.result.replay_misses;
   }
   if (result.items_run != result.items_total)
     throw ReportError("merge: the shards ran " + std::to_string(result.items_run) + " work items, the sweep has " +

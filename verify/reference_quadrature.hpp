@@ -27,13 +27,13 @@
 //        f  = |AB| Σ_j v_j M_j
 //        ∇f = |AB| (H Σ_j v_j N_j − AB Σ_j v_j N_{j+1}),
 //    so one set of moments serves every weight degree 0..3.
-//  * The 9 moments of a piece share their nodes: the tanh-sinh node sequence
-//    depends only on the interval, so the kernel is evaluated once per node
-//    and replayed for the other moments (NodeReplay below).
-//  * Error control: Boost's tanh-sinh stops when two successive levels differ
-//    by ≤ tolerance · L1 and returns that difference as its error estimate
-//    (pessimistic: the true error of a double-exponential rule is about its
-//    square). We propagate the estimates through the combination above and
+//  * The 9 moments of a piece share their nodes: one pass of the tanh-sinh
+//    rule (tanh_sinh_moments.hpp) evaluates the kernel once per node and sums
+//    all nine.
+//  * Error control: the rule stops when two successive levels differ by
+//    ≤ tolerance · L1 for every moment and returns that difference as its
+//    error estimate (pessimistic: the true error of a double-exponential rule
+//    is about its square). We propagate the estimates through the combination above and
 //    report a relative error estimate for f and for |∇f|; a reference whose
 //    estimate exceeds `flag_threshold` is flagged, and the sweep excludes and
 //    counts it instead of trusting it.
@@ -48,11 +48,10 @@
 #include <utility>
 #include <vector>
 
-#include <boost/math/quadrature/tanh_sinh.hpp>
-
 #include "extended_precision.hpp"
 #include "kernel_definitions.hpp"
 #include "skelconv/clip.hpp"
+#include "tanh_sinh_moments.hpp"
 
 namespace skelconv::verify {
 
@@ -67,7 +66,7 @@ struct ReferenceTolerances {
   /// not used to judge anything (flagged, excluded and counted): 1e-20 still
   /// resolves the double results to ~4 digits of their own error.
   double flag_threshold = 1e-20;
-  /// tanh-sinh levels (each halves the step). 15 is Boost's default.
+  /// tanh-sinh refinements at most (each halves the step, tanh_sinh_moments.hpp).
   std::size_t max_levels = 15;
 
   /// The stronger reference a flagged sample is retried with before it is
@@ -97,7 +96,6 @@ struct SegmentMoments {
   std::array<extended, moment_count_grad> n_error{};
   std::size_t kernel_evaluations = 0;
   std::size_t max_levels_used = 0;
-  std::size_t replay_misses = 0;  ///< should stay 0 (see NodeReplay)
 };
 
 /// The reference field for one weight.
@@ -112,44 +110,6 @@ struct ReferenceField {
 namespace detail {
 
 inline constexpr int moment_count = moment_count_f + moment_count_grad;
-
-/// One tanh-sinh node of a piece: its abscissa and the integrands of all
-/// moments there (Jacobian of the substitution included).
-struct MomentNode {
-  extended x;
-  std::array<extended, moment_count> integrand;  // M_0..M_3 then N_0..N_4
-};
-
-/// Replays kernel values for the successive moments of one piece. Boost's
-/// tanh-sinh visits the abscissas of a given interval in a fixed order
-/// (level by level), whatever the integrand, so the j-th call of every moment
-/// integral asks for the same x; we evaluate the kernel on the first visit
-/// and replay it afterwards. An x that does not match is simply evaluated, so
-/// correctness never depends on this assumption, only speed.
-class NodeReplay {
- public:
-  template <class Evaluate>
-  extended at(const extended& x, int moment, const Evaluate& evaluate) {
-    if (cursor_ < nodes_.size()) {
-      const MomentNode& node = nodes_[cursor_++];
-      if (node.x == x) return node.integrand[moment];
-      ++misses_;
-      return evaluate(x).integrand[moment];
-    }
-    nodes_.push_back(evaluate(x));
-    ++cursor_;
-    return nodes_.back().integrand[moment];
-  }
-  void rewind() { cursor_ = 0; }
-  std::size_t evaluations() const { return nodes_.size() + misses_; }
-  std::size_t misses() const { return misses_; }
-
- private:
-  std::vector<MomentNode> nodes_;
-  std::size_t cursor_ = 0;
-  std::size_t misses_ = 0;
-};
-
 
 /// Width, in units of t, of the peak of u ↦ K(|H − u AB|) at u = 0, where
 /// `sigma` = |H|/|AB| is P's distance to Γ(t*) in the same units: the
@@ -195,16 +155,15 @@ class PieceMap {
 
 }  // namespace detail
 
-/// Owns the tanh-sinh tables (expensive to build; one per thread).
+/// Owns the tanh-sinh tables (grown on demand; one per thread).
 class ReferenceIntegrator {
  public:
   explicit ReferenceIntegrator(ReferenceTolerances tolerances = {})
-      : tolerances_(tolerances), quadrature_(tolerances.max_levels) {}
+      : tolerances_(tolerances), rule_(tolerances.max_levels) {}
 
   const ReferenceTolerances& tolerances() const { return tolerances_; }
-  /// Kernel evaluations so far (cost indicator) and replay misses (should be 0).
+  /// Kernel evaluations so far (cost indicator).
   std::uint64_t kernel_evaluations() const { return total_evaluations_; }
-  std::uint64_t replay_misses() const { return total_replay_misses_; }
 
   /// Moments over [t0, t1] (pass 0, 1 for inverse and cauchy). For the
   /// compact family use `moments` below, which clips first.
@@ -225,43 +184,35 @@ class ReferenceIntegrator {
     for (const auto& [extent, direction] : pieces) {
       if (!(extent > 0)) continue;
       const detail::PieceMap map(extent, direction, peak_width);
-      const auto evaluate = [&](const extended& x) {
+      const auto integrands = [&](const extended& x) {
         const auto [u, jacobian] = map(x);
         const Vec3<extended> d = axpy(-u, out.ab, out.h);  // P − Γ(t* + u)
         const extended r = norm(d);
         const extended phi = kernel.value(r) * jacobian;
         const extended dphi = kernel.derivative_over_r(r) * jacobian;
-        detail::MomentNode node{x, {}};
+        std::array<extended, detail::moment_count> g;  // M_0..M_3 then N_0..N_4
         extended u_power(1);
         for (int j = 0; j < moment_count_grad; ++j) {
-          if (j < moment_count_f) node.integrand[j] = u_power * phi;
-          node.integrand[moment_count_f + j] = u_power * dphi;
+          if (j < moment_count_f) g[j] = u_power * phi;
+          g[moment_count_f + j] = u_power * dphi;
           u_power *= u;
         }
-        return node;
+        return g;
       };
-      detail::NodeReplay replay;
-      for (int k = 0; k < detail::moment_count; ++k) {
-        replay.rewind();
-        extended error = 0, l1 = 0;
-        std::size_t levels = 0;
-        const extended value = quadrature_.integrate(
-            [&](const extended& x) { return replay.at(x, k, evaluate); }, extended(0), map.x_end(),
-            extended(tolerances_.requested), &error, &l1, &levels);
-        if (k < moment_count_f) {
-          out.m[k] += value;
-          out.m_error[k] += error;
-        } else {
-          out.n[k - moment_count_f] += value;
-          out.n_error[k - moment_count_f] += error;
-        }
-        out.max_levels_used = std::max(out.max_levels_used, levels);
+      const SharedIntegrals<detail::moment_count> piece =
+          rule_.integrate<detail::moment_count>(integrands, map.x_end(), extended(tolerances_.requested));
+      for (int k = 0; k < moment_count_f; ++k) {
+        out.m[k] += piece.value[k];
+        out.m_error[k] += piece.error[k];
       }
-      out.kernel_evaluations += replay.evaluations();
-      out.replay_misses += replay.misses();
+      for (int k = 0; k < moment_count_grad; ++k) {
+        out.n[k] += piece.value[moment_count_f + k];
+        out.n_error[k] += piece.error[moment_count_f + k];
+      }
+      out.max_levels_used = std::max(out.max_levels_used, piece.levels);
+      out.kernel_evaluations += piece.evaluations;
     }
     total_evaluations_ += out.kernel_evaluations;
-    total_replay_misses_ += out.replay_misses;
     return out;
   }
 
@@ -304,7 +255,7 @@ class ReferenceIntegrator {
     }
     // Rounding of this combination and of the moments themselves: binary128
     // keeps ~113 bits per operation; a few dozen operations per term. This is
-    // a floor under Boost's estimate, which can be exactly 0 when two levels
+    // a floor under the rule's estimate, which can be exactly 0 when two levels
     // agree to the last bit.
     const extended rounding = 64 * std::numeric_limits<extended>::epsilon();
     extended f_terms = 0, h_terms = 0, ab_terms = 0;
@@ -328,9 +279,8 @@ class ReferenceIntegrator {
 
  private:
   ReferenceTolerances tolerances_;
-  boost::math::quadrature::tanh_sinh<extended> quadrature_;
+  TanhSinhMoments rule_;
   std::uint64_t total_evaluations_ = 0;
-  std::uint64_t total_replay_misses_ = 0;
 };
 
 }  // namespace skelconv::verify

@@ -304,7 +304,6 @@ nlohmann::json json_report(const SweepOptions& options, const SweepResult& resul
                          {"items_total", result.items_total},
                          {"seconds", result.seconds},
                          {"reference_kernel_evaluations", result.kernel_evaluations},
-                         {"reference_replay_misses", result.replay_misses},
                          {"generic_failing_points", verdict.failing_points},
                          {"generic_failing_rows", verdict.failing_cells},
                          {"generic_comparisons", verdict.compared},

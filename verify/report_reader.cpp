@@ -204,7 +204,6 @@ SweepResult result_of(const json& report, const Place& place) {
   result.items_total = count(summary, "items_total", at);
   result.seconds = number(summary, "seconds", at);
   result.kernel_evaluations = count(summary, "reference_kernel_evaluations", at);
-  result.replay_misses = count(summary, "reference_replay_misses", at);
   if (summary.contains("merged_shards")) result.merged_shards = integer(summary, "merged_shards", at);
   return result;
 }

@@ -22,8 +22,8 @@
 //  * on each half, three sign-definite moments (ψ = (K'/d)/τ³ < 0, u = t − t*
 //    of one sign):  M = ∫ K/τ dt,  N0 = ∫ ψ dt,  N1 = ∫ u ψ dt, so that
 //        F = |AB| M,   ∇F = |AB| (H N0 − AB N1),   H = P − Γ(t*);
-//    they share their nodes (detail::NodeReplay);
-//  * error: Boost's tanh-sinh estimate per moment (pessimistic), propagated,
+//    summed in one pass over shared nodes (tanh_sinh_moments.hpp);
+//  * error: the tanh-sinh estimate per moment (pessimistic), propagated,
 //    with a rounding floor; flagged when above the flag threshold.
 #pragma once
 
@@ -36,12 +36,11 @@
 #include <utility>
 #include <vector>
 
-#include <boost/math/quadrature/tanh_sinh.hpp>
-
 #include "extended_precision.hpp"
 #include "kernel_definitions.hpp"
 #include "reference_quadrature.hpp"
 #include "skelconv/scalis_segment_input.hpp"
+#include "tanh_sinh_moments.hpp"
 
 namespace skelconv::verify {
 
@@ -161,7 +160,7 @@ inline std::optional<std::pair<extended, extended>> scalis_compact_support(const
 class ScalisReferenceIntegrator {
  public:
   explicit ScalisReferenceIntegrator(ReferenceTolerances tolerances = {})
-      : tolerances_(tolerances), quadrature_(tolerances.max_levels) {}
+      : tolerances_(tolerances), rule_(tolerances.max_levels) {}
 
   const ReferenceTolerances& tolerances() const { return tolerances_; }
 
@@ -234,36 +233,30 @@ class ScalisReferenceIntegrator {
       const int direction = inner > outer ? +1 : -1;
       const extended extent = abs(inner - outer);
       const detail::PieceMap map(extent, direction, width_at(outer, extent));
-      const auto evaluate_node = [&](const extended& x) {
+      const auto integrands = [&](const extended& x) {
         const auto [u_outer, jacobian] = map(x);
         const extended t = outer + u_outer;
         const Vec3<extended> d_vec = axpy(-t, ab, ap);  // P − Γ(t)
         const extended tau_t = tau(t);
-        detail::MomentNode node{x, {}};
-        // tanh-sinh samples down to ~1e-4900 from an end: at a cone tip τ³
-        // then underflows and K/τ, (K'/d)/τ³ become 0/0. Such nodes carry no
-        // weight (the inverse and Cauchy integrands stay bounded at the tip).
-        if (!(tau_t * tau_t * tau_t > 0)) return node;
+        std::array<extended, 3> g{};  // K/τ, ψ, (t − t*) ψ
+        // A node next to a cone tip may have τ³ underflow, and K/τ, (K'/d)/τ³
+        // become 0/0. Such nodes carry no weight (the inverse and Cauchy
+        // integrands stay bounded at the tip).
+        if (!(tau_t * tau_t * tau_t > 0)) return g;
         const extended d = norm(d_vec) / tau_t;
         const extended phi = kernel.value(d, in.sigma) / tau_t * jacobian;
         const extended psi = kernel.derivative_over_d(d, in.sigma) / (tau_t * tau_t * tau_t) * jacobian;
-        node.integrand[0] = phi;
-        node.integrand[1] = psi;
-        node.integrand[2] = (t - t_star) * psi;
-        return node;
+        g[0] = phi;
+        g[1] = psi;
+        g[2] = (t - t_star) * psi;
+        return g;
       };
-      detail::NodeReplay replay;
+      const SharedIntegrals<3> piece = rule_.integrate<3>(integrands, map.x_end(), extended(tolerances_.requested));
       for (int k = 0; k < 3; ++k) {
-        replay.rewind();
-        extended error = 0, l1 = 0;
-        std::size_t levels = 0;
-        const extended value = quadrature_.integrate(
-            [&](const extended& x) { return replay.at(x, k, evaluate_node); }, extended(0), map.x_end(),
-            extended(tolerances_.requested), &error, &l1, &levels);
-        mom[k] += value;
-        err[k] += error;
+        mom[k] += piece.value[k];
+        err[k] += piece.error[k];
       }
-      out.kernel_evaluations += replay.evaluations();
+      out.kernel_evaluations += piece.evaluations;
     }
     const extended rounding = 64 * std::numeric_limits<extended>::epsilon();
     out.f = length * mom[0];
@@ -279,7 +272,7 @@ class ScalisReferenceIntegrator {
 
  private:
   ReferenceTolerances tolerances_;
-  boost::math::quadrature::tanh_sinh<extended> quadrature_;
+  TanhSinhMoments rule_;
 };
 
 }  // namespace skelconv::verify

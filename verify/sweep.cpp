@@ -66,7 +66,7 @@ SweepResult run_sweep(const SweepOptions& options) {
   ProgressReporter progress(options.progress, total_samples, items.size());
   std::atomic<std::size_t> next{0};
   std::mutex merge_mutex;
-  std::atomic<std::uint64_t> evaluations{0}, misses{0};
+  std::atomic<std::uint64_t> evaluations{0};
 
   const auto worker = [&] {
     ReferenceIntegrators integrators(options.reference);
@@ -88,7 +88,6 @@ SweepResult run_sweep(const SweepOptions& options) {
       progress.item_done(item.count);
     }
     evaluations += integrators.standard.kernel_evaluations() + integrators.stronger.kernel_evaluations();
-    misses += integrators.standard.replay_misses() + integrators.stronger.replay_misses();
   };
   const int thread_count = std::max(1, options.threads);
   std::vector<std::thread> threads;
@@ -98,7 +97,6 @@ SweepResult run_sweep(const SweepOptions& options) {
   progress.finish();
 
   result.kernel_evaluations = evaluations;
-  result.replay_misses = misses;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

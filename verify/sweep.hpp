@@ -66,7 +66,6 @@ struct SweepResult {
   std::uint64_t samples = 0;    ///< samples drawn by this shard
   double seconds = 0;
   std::uint64_t kernel_evaluations = 0;  ///< reference kernel evaluations (cost indicator)
-  std::uint64_t replay_misses = 0;       ///< should be 0 (see NodeReplay)
   int merged_shards = 0;                 ///< shard reports merged into this one (0: a single run)
 };
 
