@@ -19,6 +19,8 @@
 #                      lib/skelconv/libskelconv_grid_mesher.so, opened on use), PLY/OBJ
 #   skelconv::skelconv both: what <skelconv/skelconv.hpp> declares
 #   skelconv::kernels  the header-only generated kernels (templates on the scalar type)
+#   skelconv::segment_tables  the double segment table the runtime is built on
+#                      (linked by skelconv::runtime; the verifiers use it alone)
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -31,6 +33,7 @@ target_include_directories(skelconv_kernels INTERFACE
 
 set_target_properties(skelconv_all PROPERTIES EXPORT_NAME skelconv)
 set_target_properties(skelconv_runtime PROPERTIES EXPORT_NAME runtime)
+set_target_properties(skelconv_segment_tables PROPERTIES EXPORT_NAME segment_tables)
 set_target_properties(skelconv_mesh PROPERTIES EXPORT_NAME mesh)
 set_target_properties(skelconv_kernels PROPERTIES EXPORT_NAME kernels)
 
@@ -46,7 +49,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/generated
 # time from <libdir>/skelconv/ (src/mesh/grid_mesher_loader.cpp): installed
 # there, not linked.
 install(TARGETS skelconv_grid_mesher LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/skelconv)
-install(TARGETS skelconv_all skelconv_runtime skelconv_mesh skelconv_kernels
+install(TARGETS skelconv_all skelconv_runtime skelconv_segment_tables skelconv_mesh skelconv_kernels
                 skelconv_planar_polygon skelconv_cgal_mesher
         EXPORT skelconv-targets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
