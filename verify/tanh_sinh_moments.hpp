@@ -127,8 +127,9 @@ class TanhSinhMoments {
   static void add(const std::array<extended, M>& g, const extended& weight, std::array<extended, M>& sum,
                   std::array<extended, M>& l1, std::size_t& evaluations) {
     for (std::size_t m = 0; m < M; ++m) {
-      sum[m] += weight * g[m];
-      l1[m] += weight * abs(g[m]);
+      const extended term = weight * g[m];  // weight > 0: |term| = weight |g|
+      sum[m] += term;
+      l1[m] += abs(term);
     }
     ++evaluations;
   }

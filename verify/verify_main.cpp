@@ -31,6 +31,7 @@ using namespace skelconv::verify;
 /// What the command line asked for, before it is turned into SweepOptions.
 struct SweepArguments {
   int points = 0;
+  int generic_points = 0, other_points = 0;  // 0: as --points / --full / the default say
   bool full = false;
   std::string shard = "0/1", family, region, perturbation;
   int degree = 0;
@@ -90,6 +91,12 @@ void add_sweep_options(CLI::App& app, SweepArguments& args, SweepOptions& option
   app.add_option("--points", args.points,
                  "samples per (family, degree, region) in every region (default: generic 2000, others 200)");
   app.add_flag("--full", args.full, "the long sweep: generic 20000, other regions 2000 (overridden by --points)");
+  app.add_option("--generic-points", args.generic_points,
+                 "samples per (family, degree) in the generic region (overrides --points and --full there)")
+      ->check(CLI::Range(1, 100000000));
+  app.add_option("--other-points", args.other_points,
+                 "samples per (family, degree, region) in every other region (overrides --points and --full there)")
+      ->check(CLI::Range(1, 100000000));
   app.add_option("--shard", args.shard, "run shard k of n: work items with index % n == k (format k/n)");
   app.add_option("--family", args.family, "only this family")->check(CLI::IsMember(segment_family_names()));
   app.add_option("--degree", args.degree, "only this kernel degree i")->check(CLI::Range(1, 64));
@@ -140,6 +147,8 @@ int verdict_status(const SweepReport& report) {
 int run_sweep_command(const SweepArguments& args, SweepOptions options, const OutputArguments& out) {
   if (args.full) options.counts = full_point_counts;
   if (args.points > 0) options.counts = {args.points, args.points};
+  if (args.generic_points > 0) options.counts.generic = args.generic_points;
+  if (args.other_points > 0) options.counts.other = args.other_points;
   if (!parse_shard(args.shard, options)) {
     std::cerr << "skelconv-verify: --shard must be k/n with 0 <= k < n, got \"" << args.shard << "\"\n";
     return 2;
