@@ -32,8 +32,9 @@
 //    all nine.
 //  * Error control: the rule stops when two successive levels differ by
 //    ≤ tolerance · L1 for every moment and returns that difference as its
-//    error estimate (pessimistic: the true error of a double-exponential rule
-//    is about its square). We propagate the estimates through the combination above and
+//    error estimate (pessimistic: the true error of a double-exponential
+//    rule is about its square). We propagate the estimates through the
+//    combination above and
 //    report a relative error estimate for f and for |∇f|; a reference whose
 //    estimate exceeds `flag_threshold` is flagged, and the sweep excludes and
 //    counts it instead of trusting it.
