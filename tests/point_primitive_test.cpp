@@ -14,13 +14,12 @@
 
 #include "expect_input_error.hpp"
 #include "extended_difference.hpp"
+#include "src/runtime/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {
 
 using test::Extended;
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 /// SPEC §1 in long double, straight from the definitions.
 long double reference_kernel(const KernelSpec& k, long double r) {

@@ -24,13 +24,12 @@
 
 #include "expect_input_error.hpp"
 #include "reference_quadrature.hpp"  // GaussLegendreRule
+#include "src/runtime/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {
 
 using test::expect_input_error;
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 const KernelSpec inverse3 = KernelSpec::inverse(3);
 const std::vector<Vec3> unit_square{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};

@@ -31,6 +31,13 @@ struct ReferenceSegment {
   Real R = 1;  // compact
 };
 
+/// A point of the runtime (an Eigen vector, or anything with x(), y(), z())
+/// as a reference point, exactly (double to long double).
+template <class Vector>
+Point to_reference(const Vector& v) {
+  return {Real(v.x()), Real(v.y()), Real(v.z())};
+}
+
 struct ReferenceSample {
   Real value = 0;
   Point gradient{0, 0, 0};

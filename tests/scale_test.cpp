@@ -134,7 +134,7 @@ KernelSpec scaled_kernel(KernelSpec kernel, int k) {
   return kernel;
 }
 
-test::Point to_reference(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+using test::to_reference;
 
 /// Long-double quadrature of the definition at the scaled coordinates.
 test::ReferenceSample segment_reference(const Vec3& a, const Vec3& b, const SegmentCase& c, const KernelSpec& kernel,

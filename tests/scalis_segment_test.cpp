@@ -19,15 +19,14 @@
 #include "expect_input_error.hpp"
 #include "scalis_reference_quadrature.hpp"
 #include "skelconv/skeleton_file.hpp"
+#include "src/runtime/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {
 
 using test::ScalisReferenceFamily;
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
-
-ScalisReferenceFamily reference_family(KernelFamily family) {
+ScalisReferenceFamily scalis_reference_family(KernelFamily family) {
   switch (family) {
     case KernelFamily::inverse: return ScalisReferenceFamily::inverse;
     case KernelFamily::cauchy: return ScalisReferenceFamily::cauchy;
@@ -37,7 +36,7 @@ ScalisReferenceFamily reference_family(KernelFamily family) {
   return ScalisReferenceFamily::inverse;
 }
 
-test::Point to_reference(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+using test::to_reference;
 
 /// Relative errors of f and ∇f of `segment` at p against the definition
 /// (f = iso F / h with h by quadrature too). The gradient's error is
@@ -49,7 +48,7 @@ std::pair<double, double> errors_against_definition(const ScalisSegment& segment
   reference.tau0 = segment.tau0();
   reference.tau1 = segment.tau1();
   reference.sigma = segment.kernel().sigma;
-  reference.family = reference_family(segment.kernel().family);
+  reference.family = scalis_reference_family(segment.kernel().family);
   reference.degree = segment.kernel().degree;
   const test::ReferenceSample expected = test::integrate_scalis_definition(reference, to_reference(p));
   static std::map<std::tuple<ScalisReferenceFamily, int, double>, test::Real> h_cache;
@@ -104,7 +103,7 @@ std::vector<Vec3> region_points(const std::string& region, const Vec3& a, const 
 }
 
 // Measured maxima, printed once at the end of the suite (docs report them).
-std::map<std::string, std::pair<double, double>>& worst_errors() {
+std::map<std::string, std::pair<double, double>>& worst_scalis_errors() {
   static std::map<std::string, std::pair<double, double>> worst;
   return worst;
 }
@@ -119,7 +118,7 @@ void check_family(KernelFamily family, const std::map<std::string, std::pair<dou
         for (const std::string region : {"generic", "near_axis", "beyond_end", "on_axis_beyond"}) {
           for (const Vec3& p : region_points(region, a, b, rng)) {
             const auto [f_error, g_error] = errors_against_definition(segment, p);
-            auto& worst = worst_errors()[std::string(family_name(family)) + " " + region];
+            auto& worst = worst_scalis_errors()[std::string(family_name(family)) + " " + region];
             worst.first = std::max(worst.first, f_error);
             worst.second = std::max(worst.second, g_error);
             EXPECT_LE(f_error, tolerance.at(region).first)
@@ -165,7 +164,7 @@ void check_thin_and_far(KernelFamily family) {
             const double angle = 3.14159265358979 * (uniform(rng) + 1);
             const Vec3 p = a + ab * t + (std::cos(angle) * n1 + std::sin(angle) * n2) * tau * (1.25 + 0.75 * uniform(rng));
             const auto [f_error, g_error] = errors_against_definition(segment, p);
-            auto& worst = worst_errors()[std::string(family_name(family)) + " thin_surface"];
+            auto& worst = worst_scalis_errors()[std::string(family_name(family)) + " thin_surface"];
             worst.first = std::max(worst.first, f_error);
             worst.second = std::max(worst.second, g_error);
             EXPECT_LE(f_error, 1e-13) << family_name(family) << " i=" << degree << " sigma=" << sigma << " "
@@ -181,7 +180,7 @@ void check_thin_and_far(KernelFamily family) {
           const Vec3 direction = Vec3(uniform(rng), uniform(rng), uniform(rng)).normalized();
           const Vec3 p = a + ab * 0.5 + direction * distance * ab.norm();
           const auto [f_error, g_error] = errors_against_definition(segment, p);
-          auto& worst = worst_errors()[std::string(family_name(family)) + " far"];
+          auto& worst = worst_scalis_errors()[std::string(family_name(family)) + " far"];
           worst.first = std::max(worst.first, f_error);
           worst.second = std::max(worst.second, g_error);
           EXPECT_LE(f_error, 1e-13) << family_name(family) << " i=" << degree << " far " << distance;
@@ -196,7 +195,7 @@ TEST(ScalisSegmentValues, InverseThinAndFar) { check_thin_and_far(KernelFamily::
 TEST(ScalisSegmentValues, CauchyThinAndFar) { check_thin_and_far(KernelFamily::cauchy); }
 
 TEST(ScalisSegmentValues, ReportWorstErrors) {
-  for (const auto& [what, errors] : worst_errors())
+  for (const auto& [what, errors] : worst_scalis_errors())
     std::printf("[ scalis accuracy ] %-22s max rel. error f %.2e, grad f %.2e\n", what.c_str(), errors.first,
                 errors.second);
 }
@@ -210,7 +209,7 @@ TEST(ScalisSegmentNormalisation, MatchesQuadratureOfItsDefinition) {
     for (int degree = 2; degree <= 10; ++degree) {
       for (double sigma : {1.2, 2.0, 3.5}) {
         const double h = ScalisSegment::normalisation(family, degree, sigma);
-        const double expected = double(test::integrate_scalis_normalisation(reference_family(family), degree, sigma));
+        const double expected = double(test::integrate_scalis_normalisation(scalis_reference_family(family), degree, sigma));
         EXPECT_NEAR(h / expected, 1.0, 1e-14) << family_name(family) << " i=" << degree << " sigma=" << sigma;
       }
     }

@@ -29,14 +29,13 @@
 #include "expect_input_error.hpp"
 #include "reference_quadrature.hpp"  // GaussLegendreRule, Real
 #include "src/runtime/scalis_triangle_quadrature.hpp"  // the numerical path's error estimates
+#include "src/runtime/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {
 
 using test::expect_input_error;
 using test::Real;
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 // --- Brute-force reference ------------------------------------------------------
 

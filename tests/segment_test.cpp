@@ -14,6 +14,7 @@
 
 #include "expect_input_error.hpp"
 #include "reference_quadrature.hpp"
+#include "src/runtime/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {
@@ -21,8 +22,6 @@ namespace {
 using test::expect_input_error;
 using test::ReferenceFamily;
 using test::ReferenceSegment;
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 /// Relative accuracy demanded of the generated functions against quadrature
 /// of the definition (f, and ∇f over its scale), per test: about ten times
@@ -46,7 +45,7 @@ ReferenceFamily reference_family(KernelFamily family) {
   return ReferenceFamily::inverse;
 }
 
-test::Point to_reference(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+using test::to_reference;
 
 /// The degrees the generated table offers for `family` (weight degree 0).
 std::vector<int> generated_degrees(KernelFamily family) { return Segment::supported_degrees(family); }

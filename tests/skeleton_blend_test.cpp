@@ -15,6 +15,7 @@
 #include "expect_input_error.hpp"
 #include "extended_difference.hpp"
 #include "skelconv/skeleton.hpp"
+#include "src/runtime/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {
@@ -22,7 +23,6 @@ namespace {
 using test::Extended;
 using ExtendedPoint = std::array<Extended, 3>;
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr double ulp = 2.3e-16;  // double's unit roundoff, rounded up
 
 /// Three overlapping children: two infinite-support and one compact.
@@ -83,7 +83,7 @@ Skeleton blended(const Blend& blend, const std::vector<PointPrimitive>& kids) {
   return skeleton;
 }
 
-std::vector<Vec3> sample_points(int count) {
+std::vector<Vec3> random_points(int count) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-0.8, 1.6);
   std::vector<Vec3> points;
@@ -117,7 +117,7 @@ TEST(SkeletonBlend, ValuesAndGradientsMatchTheDefinitions) {
     const auto extended_value = [&](const ExtendedPoint& q) { return reference_blend(test_case.blend, kids, q); };
     int checked = 0;
     double worst = 0.0;
-    for (const Vec3& p : sample_points(300)) {
+    for (const Vec3& p : random_points(300)) {
       const FieldSample sample = skeleton.value_and_gradient(p);
       const double expected = static_cast<double>(extended_value({p.x(), p.y(), p.z()}));
       EXPECT_NEAR(sample.value, expected, 64 * ulp * std::max(1.0, std::abs(expected))) << test_case.name;
@@ -147,7 +147,7 @@ TEST(SkeletonBlend, AngleWeightedGradientMatchesTheDefinition) {
   const auto extended_value = [&](const ExtendedPoint& q) { return reference_blend(blend, kids, q); };
   int checked = 0;
   double worst = 0.0;
-  for (const Vec3& p : sample_points(300)) {
+  for (const Vec3& p : random_points(300)) {
     const auto g1 = kids[0].gradient(p), g2 = kids[1].gradient(p);
     if (1.0 - g1.normalized().dot(g2.normalized()) < 0.2) continue;  // see Case: a ≥ 0.2
     const FieldSample sample = skeleton.value_and_gradient(p);
@@ -178,7 +178,7 @@ TEST(SkeletonBlend, SumAndUnionAreTheirChildrensSumAndMaximum) {
     skeleton.add(segment, node);
     skeleton.add(polygon, node);
     skeleton.add(point, node);
-    for (const Vec3& p : sample_points(50)) {
+    for (const Vec3& p : random_points(50)) {
       const FieldSample parts[] = {segment.value_and_gradient(p), polygon.value_and_gradient(p),
                                    point.value_and_gradient(p)};
       FieldSample expected;

@@ -9,11 +9,10 @@
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include "src/runtime/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 /// The three primitives of the schema example (docs/cli.md).
 Skeleton example_skeleton() {

@@ -36,16 +36,16 @@ std::string pad(const std::string& text, std::size_t width) {
 }
 
 /// (family, degree, region): the table's row, weight degrees together.
-using RowKey = std::tuple<KernelFamily, int, Region>;
-struct Row {
+using RegionRow = std::tuple<KernelFamily, int, Region>;
+struct RegionRowMaxima {
   std::array<double, 4> before{}, after{};
   bool failed = false;
 };
 
 void write_table(std::ostream& out, const Comparison& comparison) {
-  std::map<RowKey, Row> rows;
+  std::map<RegionRow, RegionRowMaxima> rows;
   for (const CellComparison& c : comparison.cells) {
-    Row& row = rows[{std::get<0>(c.key), std::get<1>(c.key), std::get<3>(c.key)}];
+    RegionRowMaxima& row = rows[{std::get<0>(c.key), std::get<1>(c.key), std::get<3>(c.key)}];
     for (std::size_t m = 0; m < all_measures.size(); ++m) {
       row.before[m] = std::max(row.before[m], c.before[m]);
       row.after[m] = std::max(row.after[m], c.after[m]);

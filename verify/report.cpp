@@ -21,15 +21,16 @@ std::string pad_right(const std::string& text, std::size_t width) {
   return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
 }
 
-using RowKey = std::tuple<KernelFamily, int, int>;
+/// (family, degree, weight degree): a row of the table, one column per region.
+using KernelRow = std::tuple<KernelFamily, int, int>;
 
-std::set<RowKey> rows_of(const SweepResult& result) {
-  std::set<RowKey> rows;
+std::set<KernelRow> rows_of(const SweepResult& result) {
+  std::set<KernelRow> rows;
   for (const auto& [key, cell] : result.cells) rows.insert({std::get<0>(key), std::get<1>(key), std::get<2>(key)});
   return rows;
 }
 
-const CellStats* find_cell(const SweepResult& result, const RowKey& row, Region region) {
+const CellStats* find_cell(const SweepResult& result, const KernelRow& row, Region region) {
   const auto it = result.cells.find({std::get<0>(row), std::get<1>(row), std::get<2>(row), region});
   return it == result.cells.end() ? nullptr : &it->second;
 }
@@ -49,7 +50,7 @@ void write_table(std::ostream& out, const SweepResult& result, bool in_double, c
   out << '\n';
   KernelFamily previous_family{};
   bool first = true;
-  for (const RowKey& row : rows_of(result)) {
+  for (const KernelRow& row : rows_of(result)) {
     if (!first && std::get<0>(row) != previous_family) out << '\n';
     first = false;
     previous_family = std::get<0>(row);

@@ -9,11 +9,10 @@
 #include "skelconv/interval/enclosure.hpp"
 #include "skelconv/interval/kernel_range.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "../runtime/infinity.hpp"
 
 namespace skelconv::interval {
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 IntervalPoint lerp(const IntervalPoint& a, const IntervalPoint& b, const Interval& t) {
   return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};

@@ -5,11 +5,10 @@
 #include <vector>
 
 #include "skelconv/interval/enclosure.hpp"
+#include "../runtime/infinity.hpp"
 
 namespace skelconv::interval {
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 /// [x]₊^t over x, t > 0 (increasing in x): exp(t log x) outward-rounded.
 Interval positive_power(const Interval& x, double t) {

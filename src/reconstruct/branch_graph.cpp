@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include "skelconv/errors.hpp"
+#include "union_find.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -71,10 +72,7 @@ std::vector<double> distances_from_extremities(const Adjacency& adjacency, const
   return result;
 }
 
-std::int32_t find_root(std::vector<std::int32_t>& parent, std::int32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
+using detail::find_root;
 
 /// Node (x, y, z, r) of a bin piece: mean centre and radius of its core balls.
 Vec4 piece_node(const MedialGraph& graph, const std::vector<std::int32_t>& members, double core_fraction) {

@@ -7,24 +7,23 @@
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
+#include "cgal_surface.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
+using cgal::Kernel;
+using cgal::Point;
+using cgal::SurfaceMesh;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::int32_t, Kernel>;
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
 
 void check_surface(const TriangleMesh& surface, std::size_t minimum_samples) {
   std::set<std::array<double, 3>> distinct;
@@ -40,19 +39,11 @@ void check_surface(const TriangleMesh& surface, std::size_t minimum_samples) {
   }
 }
 
-SurfaceMesh to_surface_mesh(const TriangleMesh& surface) {
-  SurfaceMesh mesh;
-  std::vector<SurfaceMesh::Vertex_index> index;
-  for (const Vec3& v : surface.vertices) index.push_back(mesh.add_vertex(Point(v.x(), v.y(), v.z())));
-  for (const auto& t : surface.triangles) mesh.add_face(index[t[0]], index[t[1]], index[t[2]]);
-  return mesh;
-}
-
 }  // namespace
 
 MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples) {
   check_surface(surface, minimum_samples);
-  const SurfaceMesh mesh = to_surface_mesh(surface);
+  const SurfaceMesh mesh = cgal::to_surface_mesh(surface);
   const CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel> side(mesh);
 
   MedialGraph graph;

@@ -6,13 +6,12 @@
 #include <map>
 #include <numeric>
 
+#include "union_find.hpp"
+
 namespace skelconv::reconstruct {
 namespace {
 
-std::int32_t find_root(std::vector<std::int32_t>& parent, std::int32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
+using detail::find_root;
 
 /// Union-find roots of the vertices kept (-1 for removed ones), joined by the
 /// edges between two kept vertices; `keep` selects.

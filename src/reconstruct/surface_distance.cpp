@@ -8,28 +8,24 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Random.h>
-#include <CGAL/Surface_mesh.h>
 
 #include "skelconv/errors.hpp"
+#include "cgal_surface.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using cgal::Kernel;
+using cgal::Point;
+using cgal::SurfaceMesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-SurfaceMesh to_surface_mesh(const TriangleMesh& surface) {
+/// The mesh to compare as a CGAL surface mesh; it must have triangles.
+SurfaceMesh comparable_mesh(const TriangleMesh& surface) {
   if (surface.triangles.empty()) throw InputError("a mesh to compare has no triangles");
-  SurfaceMesh mesh;
-  std::vector<SurfaceMesh::Vertex_index> index;
-  for (const Vec3& v : surface.vertices) index.push_back(mesh.add_vertex(Point(v.x(), v.y(), v.z())));
-  for (const auto& t : surface.triangles) mesh.add_face(index[t[0]], index[t[1]], index[t[2]]);
-  return mesh;
+  return cgal::to_surface_mesh(surface);
 }
 
 /// PMP's sampling: `density` random points per unit area, plus the
@@ -58,7 +54,7 @@ std::pair<double, std::size_t> squared_distances(const SurfaceMesh& from, const 
 }  // namespace
 
 SurfaceDistance surface_distance(const TriangleMesh& a, const TriangleMesh& b, double samples_per_area) {
-  const SurfaceMesh ma = to_surface_mesh(a), mb = to_surface_mesh(b);
+  const SurfaceMesh ma = comparable_mesh(a), mb = comparable_mesh(b);
   Vec3 lo = a.vertices.front(), hi = lo;
   for (const Vec3& v : a.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   SurfaceDistance result;

@@ -7,15 +7,16 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <boost/variant/get.hpp>  // CGAL 5's intersection results are boost::variant
 
 #include "skelconv/errors.hpp"
+#include "cgal_surface.hpp"
 
 namespace skelconv::reconstruct {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
+using cgal::Kernel;
+using cgal::Point;
+using cgal::to_point;
 using Triangle = Kernel::Triangle_3;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
 using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
@@ -24,10 +25,6 @@ struct SurfaceQuery::Tree {
   std::vector<Triangle> triangles;  // the tree points into this vector
   AabbTree tree;
 };
-
-namespace {
-Point to_point(const Vec3& v) { return Point(v.x(), v.y(), v.z()); }
-}  // namespace
 
 SurfaceQuery::SurfaceQuery(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
   if (surface.triangles.empty()) throw InputError("the input surface has no triangles");

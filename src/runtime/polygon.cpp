@@ -15,14 +15,13 @@
 #include "skelconv/polygon_field.hpp"
 #include "skelconv/scaled_frame.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio, shared by the edges
+#include "infinity.hpp"
 
 namespace skelconv {
 namespace {
 
 using detail::format_degree_ranges;
 using detail::format_point;
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 std::string vertex_name(std::size_t k) { return fmt::format("vertices[{}]", k); }
 

@@ -15,11 +15,10 @@
 #include "skelconv/scalis_compact.hpp"
 #include "skelconv/scaled_frame.hpp"
 #include "skelconv/segment.hpp"  // Segment::degenerate_length_ratio
+#include "infinity.hpp"
 
 namespace skelconv {
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 }  // namespace
 

@@ -12,11 +12,10 @@
 #include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/scaled_frame.hpp"
 #include "scalis_triangle_quadrature.hpp"
+#include "infinity.hpp"
 
 namespace skelconv {
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 void require_supported_degree(const ScalisKernel& kernel) {
   const std::vector<int> degrees = ScalisTriangle::supported_degrees(kernel.family);

@@ -13,11 +13,10 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "skelconv/integer_power.hpp"
+#include "infinity.hpp"
 
 namespace skelconv::detail {
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 // Kronrod 31 points; the even-indexed abscissae are those of Gauss 15.
 using Kronrod = boost::math::quadrature::gauss_kronrod<double, 31>;

@@ -13,14 +13,13 @@
 #include "convergence_guard.hpp"
 #include "input_checks.hpp"
 #include "skelconv/clip.hpp"
+#include "infinity.hpp"
 
 namespace skelconv {
 namespace {
 
 using detail::format_degree_ranges;
 using detail::format_point;
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 /// Degree of w(t) = Σ w_k t^k after dropping trailing zero coefficients.
 int validated_weight_degree(std::span<const double> weight) {

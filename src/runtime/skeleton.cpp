@@ -10,11 +10,10 @@
 #include "../skeleton/skeleton_index.hpp"
 #include "input_checks.hpp"
 #include "skelconv/field/support_box.hpp"
+#include "infinity.hpp"
 
 namespace skelconv {
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 ScalarSample<double> to_scalar(const FieldSample& s) { return {s.value, to_array(s.gradient)}; }
 FieldSample from_scalar(const ScalarSample<double>& s) { return {s.value, to_vec3(s.gradient)}; }
