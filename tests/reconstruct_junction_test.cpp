@@ -3,6 +3,7 @@
 // the periodic B-spline, parallel-path removal, cap trimming and the fit of
 // radii and ends to a known surface. Expected values are derived by hand in
 // the comments.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -141,6 +142,34 @@ TEST(Branches, ParallelPathsWithoutHoleAreRemoved) {
   CurveSkeleton handle = make(1.0, 0.1);
   EXPECT_EQ(remove_spurs(handle, 0.0), 0u);
   EXPECT_EQ(extract_branches(handle).branches.size(), 6u);
+}
+
+// A branch split in two paths that meet only at its tip: a loop at junction
+// J = (0,0,0) through (1, 0.1), tip (2, 0), (1, -0.1) (two other branches
+// leave J towards (-2, 0) and (0, -2)). Radius 0.5: each half runs inside
+// the other's tube, so one half goes and the tip (2, 0) becomes an end,
+// as the tree's outermost branches need (ferley1996_tree). With radius 0.1
+// and the halves 1 apart (through (1, ±1): a ring on a stick) the loop
+// encloses a hole and stays.
+TEST(Branches, BranchSplitIntoALoopBecomesOneBranch) {
+  const auto make = [](double half_width, double radius) {
+    CurveSkeleton s;
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {1.0, half_width}, {2.0, 0.0}, {1.0, -half_width}, {-2.0, 0.0}, {0.0, -2.0}})
+      s.nodes.push_back(Vec4(x, y, 0, radius));
+    s.edges = {{0, 1}, {1, 2}, {2, 3}, {0, 3}, {0, 4}, {0, 5}};
+    return s;
+  };
+  CurveSkeleton split = make(0.1, 0.5);
+  EXPECT_EQ(remove_spurs(split, 0.0), 1u);  // factor 0: no contraction, no spur
+  const BranchGraph g = extract_branches(split);
+  EXPECT_EQ(g.branches.size(), 3u);
+  EXPECT_EQ(g.ends, 3u);
+  EXPECT_EQ(g.junctions, 1u);
+  EXPECT_TRUE(std::find(split.nodes.begin(), split.nodes.end(), Vec4(2, 0, 0, 0.5)) != split.nodes.end());
+  CurveSkeleton ring = make(1.0, 0.1);
+  EXPECT_EQ(remove_spurs(ring, 0.0), 0u);
+  EXPECT_EQ(extract_branches(ring).branches.size(), 3u);  // the loop and the two others
+  EXPECT_EQ(extract_branches(ring).ends, 2u);
 }
 
 // Radii falling faster than 0.5 per unit length at a free end are cap

@@ -38,7 +38,9 @@ TEST(Shapes, SegmentIsOneBranchOnTheAxis) {
   double largest = 0.0;
   for (const Vec4& p : points) largest = std::max(largest, p.w());
   for (const Vec4& p : points) {
-    if (p.w() >= 0.8 * largest) EXPECT_LT(p.head<3>().tail<2>().norm(), 0.05) << p.transpose();
+    if (p.w() >= 0.8 * largest) {
+      EXPECT_LT(p.head<3>().tail<2>().norm(), 0.05) << p.transpose();
+    }
   }
 }
 

@@ -363,6 +363,40 @@ bool remove_one_parallel_path(CurveSkeleton& skeleton) {
   return false;
 }
 
+/// One removal of a split branch: a loop from a junction back to itself whose
+/// two halves, cut at its node farthest from the junction, run in one tube
+/// (or enclose no hole, as in remove_one_parallel_path). The level sets of a
+/// branch can split it into two paths that meet only at its tip; the tree's
+/// two outermost branches on one side came out so after a change of the
+/// mesh in the last bits of its coordinates (2026-12-03). The half with more
+/// interior nodes goes, the tip stays and becomes the branch's end. A handle
+/// at a junction (a ring on a stick) leaves its centre uncovered and its
+/// halves apart: it stays. Returns false when there is none.
+bool remove_one_split_loop(CurveSkeleton& skeleton) {
+  const auto next = neighbours(skeleton);
+  const BranchGraph branches = extract_branches(skeleton);
+  for (const Branch& b : branches.branches) {
+    // points = junction, interior_nodes..., junction.
+    if (b.first_node != b.last_node || next[b.first_node].size() < 3 || b.interior_nodes.size() < 2) continue;
+    const Vec3 junction = b.points.front().head<3>();
+    std::size_t tip = 1;  // index into points
+    for (std::size_t k = 2; k + 1 < b.points.size(); ++k) {
+      if ((b.points[k].head<3>() - junction).norm() > (b.points[tip].head<3>() - junction).norm()) tip = k;
+    }
+    Branch out, back;
+    out.points.assign(b.points.begin(), b.points.begin() + std::ptrdiff_t(tip) + 1);
+    back.points.assign(b.points.begin() + std::ptrdiff_t(tip), b.points.end());
+    out.interior_nodes.assign(b.interior_nodes.begin(), b.interior_nodes.begin() + std::ptrdiff_t(tip) - 1);
+    back.interior_nodes.assign(b.interior_nodes.begin() + std::ptrdiff_t(tip), b.interior_nodes.end());
+    if (!(encloses_no_hole(out, back) || share_one_tube(out, back))) continue;
+    std::vector<bool> drop(skeleton.nodes.size(), false);
+    mark_interior(out.interior_nodes.size() > back.interior_nodes.size() ? out : back, skeleton, drop);
+    rebuild(skeleton, drop, -1, -1);
+    return true;
+  }
+  return false;
+}
+
 /// A polyline segment of the skeleton with linearly varying radius, and the
 /// branch it belongs to.
 struct TubeSegment {
@@ -442,6 +476,7 @@ std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor, double pro
   while (true) {
     bool changed = false;
     while (remove_one_parallel_path(skeleton)) changed = true, ++removed;
+    while (remove_one_split_loop(skeleton)) changed = true, ++removed;
     while (contract_one_bubble(skeleton, spur_factor)) changed = true, ++removed;
     const std::size_t spurs = remove_spurs_once(skeleton, spur_factor, protrusion_factor);
     removed += spurs;
