@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -120,6 +122,16 @@ TEST(BSpline, ClosedSquare) {
   EXPECT_NEAR(curve[1].y(), curve[15].x(), 1e-15);
 }
 
+/// A curve skeleton in the plane z = 0: nodes at `xy`, all of radius
+/// `radius`, joined by `edges` (indices into `xy`).
+CurveSkeleton planar_skeleton(const std::vector<std::pair<double, double>>& xy, double radius,
+                              std::vector<std::pair<std::int32_t, std::int32_t>> edges) {
+  CurveSkeleton s;
+  for (const auto& [x, y] : xy) s.nodes.push_back(Vec4(x, y, 0, radius));
+  s.edges = std::move(edges);
+  return s;
+}
+
 // Two junctions J1 = (0,0,0), J2 = (1,0,0) joined by a direct edge and by a
 // path through (0.5, 0.1, 0): the cycle's centroid (0.5, 0.02, 0) is inside
 // the balls (radius 0.5), so the path through the extra node goes. With
@@ -127,11 +139,8 @@ TEST(BSpline, ClosedSquare) {
 // (its centroid (0.5, 0.2, 0) is 0.2 or more from every point) and stays.
 TEST(Branches, ParallelPathsWithoutHoleAreRemoved) {
   const auto make = [](double middle_y, double radius) {
-    CurveSkeleton s;
-    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.5, middle_y}, {-2.0, 0.0}, {0.0, -2.0}, {3.0, 0.0}, {1.0, -2.0}})
-      s.nodes.push_back(Vec4(x, y, 0, radius));
-    s.edges = {{0, 1}, {0, 2}, {1, 2}, {0, 3}, {0, 4}, {1, 5}, {1, 6}};
-    return s;
+    return planar_skeleton({{0.0, 0.0}, {1.0, 0.0}, {0.5, middle_y}, {-2.0, 0.0}, {0.0, -2.0}, {3.0, 0.0}, {1.0, -2.0}},
+                           radius, {{0, 1}, {0, 2}, {1, 2}, {0, 3}, {0, 4}, {1, 5}, {1, 6}});
   };
   CurveSkeleton bubble = make(0.1, 0.5);
   EXPECT_EQ(remove_spurs(bubble, 0.0), 1u);  // factor 0: no contraction, no spur
@@ -153,11 +162,8 @@ TEST(Branches, ParallelPathsWithoutHoleAreRemoved) {
 // encloses a hole and stays.
 TEST(Branches, BranchSplitIntoALoopBecomesOneBranch) {
   const auto make = [](double half_width, double radius) {
-    CurveSkeleton s;
-    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {1.0, half_width}, {2.0, 0.0}, {1.0, -half_width}, {-2.0, 0.0}, {0.0, -2.0}})
-      s.nodes.push_back(Vec4(x, y, 0, radius));
-    s.edges = {{0, 1}, {1, 2}, {2, 3}, {0, 3}, {0, 4}, {0, 5}};
-    return s;
+    return planar_skeleton({{0.0, 0.0}, {1.0, half_width}, {2.0, 0.0}, {1.0, -half_width}, {-2.0, 0.0}, {0.0, -2.0}},
+                           radius, {{0, 1}, {1, 2}, {2, 3}, {0, 3}, {0, 4}, {0, 5}});
   };
   CurveSkeleton split = make(0.1, 0.5);
   EXPECT_EQ(remove_spurs(split, 0.0), 1u);  // factor 0: no contraction, no spur
