@@ -74,7 +74,11 @@ BranchGraph extract_branches(const CurveSkeleton& skeleton);
 /// bump of the surface pulls a piece of medial sheet from the axis towards
 /// it, a spur as long as the tube is thick whose balls stay inside the
 /// tube (measured on the noisy ring: 0.03-0.48 junction radii beyond; the
-/// real branches of the test shapes reach 1.8-6). Returns how many went.
+/// real branches of the test shapes reach 1.8-6). First, each round, it
+/// removes the extra path of two paths that run in one tube: one of two
+/// branches joining the same two junctions, and one half of a branch split
+/// into a loop at its junction (docs/reconstruction.md). Returns how many
+/// went.
 std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor = 0.0);
 
 struct JunctionOptions {
