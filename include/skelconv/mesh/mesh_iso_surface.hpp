@@ -75,11 +75,10 @@ struct MeshReport {
 };
 
 /// About how many triangles a mesh of facet size h makes of a surface inside
-/// `box`: the box's surface area over h², the area of a triangle of
-/// circumradius h (3√3/4 h² for an equilateral one, ~1.3 h²) rounded down to
-/// h² because meshes of surfaces inside a box stay below the box's area on
-/// the skeletons of the gallery by a factor of 2–5. An order of magnitude,
-/// used only to refuse absurd sizes before the work starts.
+/// `box`: the box's surface area over h². An order of magnitude, used only
+/// to refuse absurd sizes before the work starts. It leans high for the
+/// usual shapes: a ball fills its box with π/6 ≈ 0.52 of the box's area,
+/// and an equilateral triangle of circumradius h covers 3√3/4 h² ≈ 1.3 h².
 double estimate_triangles(const Box3& box, double size);
 
 /// Meshes f = options.iso. Throws InputError (located at "--iso", "--size",
