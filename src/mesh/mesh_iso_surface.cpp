@@ -77,6 +77,31 @@ void check_options(const ImplicitField& field, const MeshOptions& options) {
   if (field.skeleton_points.empty()) throw InputError("the skeleton is empty: there is no surface to mesh");
 }
 
+/// How far an enclosure must stay from the iso, relative to it, before the
+/// grid method trusts its sign: the enclosure bounds the exact field, the
+/// sampled values carry the closed forms' rounding (≤ 1e-13 relative,
+/// docs/accuracy.md) and are rounded to float, where a level below float's
+/// smallest normal (~1.2e-38) could flush to a zero of the wrong side. 1e-9
+/// covers both with a wide margin and costs no block in practice.
+constexpr double enclosure_margin = 1e-9;
+
+/// The grid method's sign_over (grid_surface_mesher.hpp) from the field's
+/// enclosure: the sign of iso − f over a box, or 0 when not proven.
+std::function<int(const Eigen::AlignedBox3d&)> level_sign(const ImplicitField& field, double iso) {
+  if (!field.enclosure) return {};
+  return [&field, iso](const Eigen::AlignedBox3d& box) {
+    try {
+      const auto [lo, hi] = field.enclosure(box);
+      const double margin = enclosure_margin * std::abs(iso);
+      if (hi < iso - margin) return 1;  // f below the iso: outside, level > 0
+      if (lo > iso + margin) return -1;
+    } catch (const std::exception&) {
+      // No claim: the block is sampled.
+    }
+    return 0;
+  };
+}
+
 }  // namespace
 
 TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& options, MeshReport* report) {
@@ -107,7 +132,8 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                                                        .voxel = run.size,
                                                        .support_boxes = field.support_boxes ? &*field.support_boxes
                                                                                             : nullptr,
-                                                       .empty_level = iso - 0.0})  // level(p) where f(p) = 0
+                                                       .empty_level = iso - 0.0,  // level(p) where f(p) = 0
+                                                       .sign_over = level_sign(field, iso)})
                           : detail::cgal_surface_mesh({
                                 .level = level,
                                 .box = run.box,

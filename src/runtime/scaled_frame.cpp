@@ -2,6 +2,8 @@
 #include "skelconv/scaled_frame.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <limits>
 
 #include <fmt/format.h>
@@ -13,6 +15,15 @@ namespace skelconv {
 namespace {
 
 constexpr double smallest_normal = std::numeric_limits<double>::min();
+
+/// x·2^n, the same double as std::ldexp(x, n) (both round the exact product
+/// once, to nearest), by one product when 2^n is a normal double: the
+/// per-point frame changes then cost a multiplication, not a libm call.
+double times_power_of_two(double x, int n) {
+  if (n < std::numeric_limits<double>::min_exponent - 1 || n > std::numeric_limits<double>::max_exponent - 1)
+    return std::ldexp(x, n);
+  return x * std::bit_cast<double>(std::uint64_t(n + 1023) << 52);  // IEEE binary64: biased exponent n + 1023
+}
 
 [[noreturn]] void throw_out_of_range(const char* what, const Vec3& p, double frame_value, int power_of_two) {
   throw EvaluationError(fmt::format(
@@ -27,7 +38,8 @@ constexpr double smallest_normal = std::numeric_limits<double>::min();
 ScaledFrame::ScaledFrame(double size) : exponent_(std::ilogb(size)) {}
 
 Vec3 ScaledFrame::point(const Vec3& x) const {
-  return {std::ldexp(x.x(), -exponent_), std::ldexp(x.y(), -exponent_), std::ldexp(x.z(), -exponent_)};
+  return {times_power_of_two(x.x(), -exponent_), times_power_of_two(x.y(), -exponent_),
+          times_power_of_two(x.z(), -exponent_)};
 }
 
 double ScaledFrame::restore_value(double value, int power, bool may_vanish, const char* what, const Vec3& p) const {
@@ -38,7 +50,7 @@ double ScaledFrame::restore_value(double value, int power, bool may_vanish, cons
                                       what, value, detail::format_point(p)));
   }
   const int shift = power * exponent_;
-  const double world = std::ldexp(value, shift);
+  const double world = times_power_of_two(value, shift);
   if (std::isnormal(value) && std::isnormal(world)) return world;
   if (may_vanish && std::isfinite(world)) return world;
   throw_out_of_range(what, p, value, shift);
@@ -52,8 +64,8 @@ Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* 
                                       what, detail::format_point(gradient), detail::format_point(p)));
   }
   const int shift = power * exponent_;
-  const Vec3 world{std::ldexp(gradient.x(), shift), std::ldexp(gradient.y(), shift),
-                   std::ldexp(gradient.z(), shift)};
+  const Vec3 world{times_power_of_two(gradient.x(), shift), times_power_of_two(gradient.y(), shift),
+                   times_power_of_two(gradient.z(), shift)};
   const double largest = gradient.cwiseAbs().maxCoeff();
   if (largest == 0.0) return world;
   if (!std::isnormal(largest) || !std::isnormal(world.cwiseAbs().maxCoeff())) {
