@@ -43,13 +43,16 @@ Vec3 ScaledFrame::point(const Vec3& x) const {
 }
 
 double ScaledFrame::restore_value(double value, int power, bool may_vanish, const char* what, const Vec3& p) const {
+  const int shift = power * exponent_;
+  // The common case first: a normal value in a frame of scale 1 comes back
+  // as it is (the checks below would all pass and return it unchanged).
+  if (shift == 0 && std::isnormal(value)) return value;
   if (value == std::numeric_limits<double>::infinity()) return value;
   if (!std::isfinite(value)) {
     throw EvaluationError(fmt::format("{} returned {} at P = {}, where the field is finite: the closed form failed "
                                       "in double precision",
                                       what, value, detail::format_point(p)));
   }
-  const int shift = power * exponent_;
   const double world = times_power_of_two(value, shift);
   if (std::isnormal(value) && std::isnormal(world)) return world;
   if (may_vanish && std::isfinite(world)) return world;
@@ -57,6 +60,24 @@ double ScaledFrame::restore_value(double value, int power, bool may_vanish, cons
 }
 
 Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const {
+  // The common case first, with the checks below written out on the three
+  // components: all finite, the largest a normal double, and so is the
+  // largest after the shift (a product by 2^shift scales every component
+  // alike, so the largest stays the largest).
+  const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
+  constexpr double largest_finite = std::numeric_limits<double>::max();
+  if (ax <= largest_finite && ay <= largest_finite && az <= largest_finite) {  // false for NaN
+    const double largest = std::max({ax, ay, az});
+    const int shift = power * exponent_;
+    if (shift == 0 && largest >= smallest_normal) return gradient;
+    if (largest >= smallest_normal) {
+      const double world_largest = times_power_of_two(largest, shift);
+      if (world_largest >= smallest_normal && world_largest <= largest_finite) {
+        return {times_power_of_two(gradient.x(), shift), times_power_of_two(gradient.y(), shift),
+                times_power_of_two(gradient.z(), shift)};
+      }
+    }
+  }
   if (gradient.allFinite() == false) {
     if ((gradient.array() == std::numeric_limits<double>::infinity()).all()) return gradient;  // singular marker
     throw EvaluationError(fmt::format("{} returned the gradient {} at P = {}, where the field is finite: the closed "

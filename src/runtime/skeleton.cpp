@@ -103,6 +103,7 @@ void Skeleton::prepare() const {
   // A reference, not a copy of the shared_ptr: its reference count would be
   // one cache line that every thread of a batch writes at every point.
   detail::IndexCache& cache = *cache_;
+  if (cache.built.load(std::memory_order_acquire)) return;
   std::call_once(cache.once, [&] {
     validate();
     auto index = std::make_unique<detail::SkeletonIndex>();
@@ -122,6 +123,7 @@ void Skeleton::prepare() const {
       if (any_bounded) index->grids[id].emplace(boxes);
     }
     cache.index = std::move(index);
+    cache.built.store(true, std::memory_order_release);
   });
 }
 
@@ -213,12 +215,18 @@ FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const de
   const Node& node = nodes_[id];
   FieldSample total;
   bool marker = false;
+  const bool unweighted = node.blend.weights.empty();
   // Left to right, from +0: the same additions whether or not the index
   // skips children (their terms are exactly 0; x + 0 = x for every x the
   // running total can hold, since it is never −0).
   const auto add = [&](std::size_t position) {
     const FieldSample term = evaluate_child(node.children[position], p, need, index);
     marker = marker || is_marker(term);
+    if (unweighted) {  // weight 1: 1·x = x exactly, so the same sums without the products
+      total.value += term.value;
+      if (need != Need::value) total.gradient += term.gradient;  // else every term's gradient is 0
+      return;
+    }
     const double weight = node.blend.weight_of(position);
     total.value += weight * term.value;
     total.gradient += weight * term.gradient;
