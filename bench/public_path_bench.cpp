@@ -9,14 +9,16 @@
 // ratio_vs_generated, that time over the generated function's own, measured
 // earlier in the same run (Google Benchmark runs them in registration
 // order):
-//   generated_f_and_grad/K/N the generated function (scalis_segment_cauchy_i4
+//   generated_f_and_grad/N   the generated function (scalis_segment_cauchy_i4
 //                            or segment_cauchy_i4_w0) for f+∇f,
 //                            called directly on inputs prepared once per
 //                            primitive (frame points by one power-of-two
 //                            product), summed over the primitives;
 //   generated_f/N            the same, f alone;
 //   value_and_gradient/N     Skeleton::value_and_gradient, point by point;
-//   batch/N                  evaluate_batch (field/batch.hpp), one thread:
+//   batch/N                  evaluate_batch (field/batch.hpp), one thread,
+//                            into a new vector of samples;
+//   batch_into/N             evaluate_batch_into into arrays allocated once:
 //                            what the Python module's Skeleton.field runs;
 //   mesher_value/N           the mesher's adaptor (mesh/implicit_field.hpp)
 //                            ImplicitField::value, through its std::function;
@@ -255,6 +257,17 @@ void bench_batch(benchmark::State& state) {
   });
 }
 
+void bench_batch_into(benchmark::State& state) {
+  const std::size_t n = std::size_t(state.range(1));
+  std::vector<double> xyz;
+  for (const Vec3& p : points_of(n)) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  std::vector<double> values(xyz.size() / 3), gradients(xyz.size());
+  bench_public<true>(state, [&](const Skeleton& skeleton, const std::vector<Vec3>&) {
+    (void)evaluate_batch_into(skeleton, xyz, values, gradients, {.threads = 1});
+    return values.back();
+  });
+}
+
 void bench_mesher_value(benchmark::State& state) {
   const ImplicitField field = skeleton_field(skeleton_of(int(state.range(0)), std::size_t(state.range(1))));
   bench_public<false>(state, [&field](const Skeleton&, const std::vector<Vec3>& points) {
@@ -284,6 +297,7 @@ BENCHMARK(bench_generated<true>)->Name("generated_f_and_grad")->Apply(sizes);
 BENCHMARK(bench_generated<false>)->Name("generated_f")->Apply(sizes);
 BENCHMARK(bench_value_and_gradient)->Name("value_and_gradient")->Apply(sizes);
 BENCHMARK(bench_batch)->Name("batch")->Apply(sizes);
+BENCHMARK(bench_batch_into)->Name("batch_into")->Apply(sizes);
 BENCHMARK(bench_mesher_value)->Name("mesher_value")->Apply(sizes);
 BENCHMARK(bench_mesher_value_and_gradient)->Name("mesher_value_and_gradient")->Apply(sizes);
 

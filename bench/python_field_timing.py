@@ -9,7 +9,8 @@ and classical Cauchy 4, s = 1) on the same kind of points (uniform in the
 segment's box grown by one length), one thread:
   - Skeleton.field(points, threads=1) on 200,000 points, ns per point;
   - Skeleton.value_and_gradient(point), one call per point, ns per call;
-  - the C++ benchmark's batch/kind:K/primitives:1 and generated_f_and_grad
+  - the C++ benchmark's batch_into/kind:K/primitives:1 (the same C++ path
+    as Skeleton.field) and generated_f_and_grad
     (run here, so all numbers come from this one run), and the ratios.
 Speed is reported as ratios only; nothing is asserted.
 """
@@ -40,7 +41,7 @@ def best_of(repeats, run):
 
 def cpp_times(bench):
     """ns per primitive and point of the C++ benchmark's batch and generated runs."""
-    out = subprocess.run([bench, "--benchmark_filter=(generated_f_and_grad|batch)/kind:./primitives:1$",
+    out = subprocess.run([bench, "--benchmark_filter=(generated_f_and_grad|batch_into)/kind:./primitives:1$",
                           "--benchmark_format=json", "--benchmark_min_time=0.2"],
                          check=True, capture_output=True, text=True).stdout
     return {b["name"]: b["ns_per_primitive_point"] for b in json.loads(out)["benchmarks"]}
@@ -56,7 +57,7 @@ def main():
         single = points[:20_000].tolist()
         call_ns = best_of(3, lambda: [skeleton.value_and_gradient(p) for p in single]) / len(single) * 1e9
         line = f"kind {kind} ({segment['type']}): field {field_ns:.1f} ns/point, value_and_gradient {call_ns:.0f} ns/call"
-        batch = cpp.get(f"batch/kind:{kind}/primitives:1")
+        batch = cpp.get(f"batch_into/kind:{kind}/primitives:1")
         generated = cpp.get(f"generated_f_and_grad/kind:{kind}/primitives:1")
         if batch and generated:
             line += (f"; C++ batch {batch:.1f}, generated {generated:.1f} ns: field/batch {field_ns / batch:.2f}, "
