@@ -38,6 +38,9 @@ double times_power_of_two(double x, int n) {
 ScaledFrame::ScaledFrame(double size) : exponent_(std::ilogb(size)) {}
 
 Vec3 ScaledFrame::point(const Vec3& x) const {
+  // |e| ≤ 1022 for every frame of a normal length: one factor for all three.
+  if (-exponent_ >= std::numeric_limits<double>::min_exponent - 1 && -exponent_ <= std::numeric_limits<double>::max_exponent - 1)
+    return x * times_power_of_two(1.0, -exponent_);
   return {times_power_of_two(x.x(), -exponent_), times_power_of_two(x.y(), -exponent_),
           times_power_of_two(x.z(), -exponent_)};
 }

@@ -27,7 +27,7 @@ bool is_marker(const FieldSample& s) { return s.value == infinity || s.gradient.
 /// EvaluationError located at the node, never a value that could pass for
 /// the +inf marker. Only the parts `need` asked for are checked.
 void require_finite_blend(const FieldSample& result, bool value_wanted, bool gradient_wanted,
-                          const std::string& location, const Vec3& p) {
+                          const char* location, const Vec3& p) {  // a C string: no std::string per evaluation
   if ((!value_wanted || std::isfinite(result.value)) && (!gradient_wanted || result.gradient.allFinite())) return;
   throw EvaluationError(fmt::format("the blend overflowed double precision at P = {} (value {}, gradient {})",
                                     detail::format_point(p), result.value, detail::format_point(result.gradient)),
@@ -203,7 +203,7 @@ FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const d
       if (node.blend.kind == BlendKind::union_max) return from_scalar(blend_union(view));  // one child's sample
       const FieldSample result = from_scalar(blend_super_elliptic(node.blend, view));
       if (!blend_detail::any_infinite(view)) {
-        require_finite_blend(result, need != Need::gradient, need != Need::value, node.location, p);
+        require_finite_blend(result, need != Need::gradient, need != Need::value, node.location.c_str(), p);
       }
       return result;
     }
@@ -238,8 +238,8 @@ FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const de
     for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
   }
   if (marker) return {infinity, Vec3::Constant(infinity)};
-  require_finite_blend(total, need != Need::gradient, need != Need::value, id == root ? "primitives" : node.location,
-                       p);
+  require_finite_blend(total, need != Need::gradient, need != Need::value,
+                       id == root ? "primitives" : node.location.c_str(), p);
   return total;
 }
 
@@ -259,7 +259,7 @@ FieldSample Skeleton::evaluate_angle_blend(NodeId id, const Vec3& p, Need need,
       result = from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &zero));
     }
     if (!is_marker(first) && !is_marker(second)) {
-      require_finite_blend(result, true, need != Need::value, node.location, p);
+      require_finite_blend(result, true, need != Need::value, node.location.c_str(), p);
     }
     return result;
   }
@@ -287,7 +287,7 @@ FieldSample Skeleton::evaluate_angle_blend(NodeId id, const Vec3& p, Need need,
       hessian_times(node.children[1], first.gradient), hessian_times(node.children[1], second.gradient)};
   const FieldSample result =
       from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &products));
-  require_finite_blend(result, true, true, node.location, p);
+  require_finite_blend(result, true, true, node.location.c_str(), p);
   return result;
 }
 
