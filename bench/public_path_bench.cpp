@@ -4,11 +4,11 @@
 // Skeletons of Cauchy 4 segments, SCALIS (SPEC §4; argument kind 0) or
 // classical convolution with s = 1 (SPEC §2; kind 1): 1 segment, the 24 of
 // Zanni's ant (papers_figures/skeletons/zanni_table1_ant.json; its axes for
-// the classical kind) and 1,000 random ones. Arguments: /kind/primitives. Every benchmark reports ns_per_primitive_point (time per
-// point divided by the number of primitives); the public paths also report
-// ratio_vs_generated, that time over the generated function's own, measured
-// earlier in the same run (Google Benchmark runs them in registration
-// order):
+// the classical kind) and 1,000 random ones; arguments kind, primitives.
+// Every benchmark reports ns_per_primitive_point (time per point divided by
+// the number of primitives); each public path also reports
+// ratio_vs_generated: its time over the generated function's on the same
+// points, the two timed back to back in every iteration (bench_public).
 //   generated_f_and_grad/N   the generated function (scalis_segment_cauchy_i4
 //                            or segment_cauchy_i4_w0) for f+∇f,
 //                            called directly on inputs prepared once per
@@ -24,7 +24,8 @@
 //                            ImplicitField::value, through its std::function;
 //   mesher_value_and_gradient/N  ImplicitField::value_and_gradient.
 // Single thread. Points: uniform in the skeleton's box grown by its largest
-// radius plus one segment length (the region a mesher samples).
+// radius or segment length (the region a mesher samples).
+// Compiled with the runtime's flags (bench/CMakeLists.txt says why).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -180,9 +181,6 @@ double run_generated(const Kernel* kernel, const std::vector<RawPrimitive<Input>
   return sum;
 }
 
-/// ns per primitive and point of the generated function, by skeleton size.
-std::map<std::size_t, double> generated_ns;
-
 /// ns_per_primitive_point is timed around the whole benchmark loop (wall
 /// clock, one thread), the same way for every path, so that the ratios
 /// compare like with like.
@@ -193,50 +191,68 @@ void report(benchmark::State& state, std::size_t primitives, double ns_per_primi
   state.counters["primitives"] = double(primitives);
 }
 
-/// The key of generated_ns.
-std::size_t key(int kind, std::size_t n, bool with_gradient) { return (n * 2 + (with_gradient ? 1 : 0)) * 2 + kind; }
+using Clock = std::chrono::steady_clock;
+
+double seconds_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+/// One pass of the generated function over `points` for skeleton (kind, n).
+template <bool with_gradient>
+class GeneratedPass {
+ public:
+  GeneratedPass(int kind, std::size_t n) : kind_(kind), scalis_(raw_scalis(n)), classical_(raw_classical(n)) {}
+  double operator()(const std::vector<Vec3>& points) const {
+    return kind_ == 0 ? run_generated<with_gradient>(scalis_kernel_, scalis_, points)
+                      : run_generated<with_gradient>(classical_kernel_, classical_, points);
+  }
+
+ private:
+  int kind_;
+  std::vector<RawPrimitive<ScalisSegmentInput<double>>> scalis_;
+  std::vector<RawPrimitive<SegmentInput<double>>> classical_;
+  const generated::ScalisSegmentKernel<double>* scalis_kernel_ =
+      generated::find_scalis_segment_kernel<double>(KernelFamily::cauchy, 4);
+  const generated::SegmentKernel<double>* classical_kernel_ = find_any_segment_kernel<double>(KernelFamily::cauchy, 4, 0);
+};
 
 template <bool with_gradient>
 void bench_generated(benchmark::State& state) {
-  const int kind = int(state.range(0));
   const std::size_t n = std::size_t(state.range(1));
   const std::vector<Vec3>& points = points_of(n);
-  const auto scalis = raw_scalis(n);
-  const auto classical = raw_classical(n);
-  const auto* scalis_kernel = generated::find_scalis_segment_kernel<double>(KernelFamily::cauchy, 4);
-  const auto* classical_kernel = find_any_segment_kernel<double>(KernelFamily::cauchy, 4, 0);
-  const auto start = std::chrono::steady_clock::now();
+  const GeneratedPass<with_gradient> pass(int(state.range(0)), n);
+  const auto start = Clock::now();
   std::int64_t passes = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(kind == 0 ? run_generated<with_gradient>(scalis_kernel, scalis, points)
-                                       : run_generated<with_gradient>(classical_kernel, classical, points));
+    benchmark::DoNotOptimize(pass(points));
     ++passes;
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double ns = seconds * 1e9 / (double(passes) * double(points.size()) * double(n));
-  generated_ns[key(kind, n, with_gradient)] = ns;
-  report(state, n, ns);
+  report(state, n, seconds_between(start, Clock::now()) * 1e9 / (double(passes) * double(points.size()) * double(n)));
 }
 
-/// A public path: `evaluate(skeleton, points)` returns a checksum.
+/// A public path: `evaluate(skeleton, points)` returns a checksum. Every
+/// iteration times one pass of it and one pass of the generated function
+/// (f+∇f or f, as the path) on the same points, back to back, so that the
+/// ratio compares two measurements taken under the same load.
 template <bool with_gradient, class Evaluate>
 void bench_public(benchmark::State& state, Evaluate evaluate) {
   const int kind = int(state.range(0));
   const std::size_t n = std::size_t(state.range(1));
   const Skeleton& skeleton = skeleton_of(kind, n);
   const std::vector<Vec3>& points = points_of(n);
+  const GeneratedPass<with_gradient> generated_pass(kind, n);
   skeleton.prepare();
-  const auto start = std::chrono::steady_clock::now();
+  double public_seconds = 0, generated_seconds = 0;
   std::int64_t passes = 0;
   for (auto _ : state) {
+    const auto t0 = Clock::now();
     benchmark::DoNotOptimize(evaluate(skeleton, points));
+    const auto t1 = Clock::now();
+    benchmark::DoNotOptimize(generated_pass(points));
+    public_seconds += seconds_between(t0, t1);
+    generated_seconds += seconds_between(t1, Clock::now());
     ++passes;
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double ns = seconds * 1e9 / (double(passes) * double(points.size()) * double(n));
-  const auto raw = generated_ns.find(key(kind, n, with_gradient));
-  if (raw != generated_ns.end()) state.counters["ratio_vs_generated"] = ns / raw->second;
-  report(state, n, ns);
+  state.counters["ratio_vs_generated"] = public_seconds / generated_seconds;
+  report(state, n, public_seconds * 1e9 / (double(passes) * double(points.size()) * double(n)));
 }
 
 void bench_value_and_gradient(benchmark::State& state) {

@@ -101,9 +101,9 @@ GOAL_BATCH = 3.0
 GOAL_HIGHWAY = 4.0   # issue 15: the Highway batch against the scalar loop
 GOAL_GSL = 200.0     # issue 15: closed form against GSL QAG-61, every distance and family
 GOAL_GENERIC_NS = 25.0  # issue 15: f and ∇f at generic distances, inverse and Cauchy i ≤ 8
-GOAL_PUBLIC_PATH = 1.3  # issue 37: every public path within 1.3× the generated function, per primitive and point
+GOAL_PUBLIC_PATH = 1.3  # every public path within 1.3× the generated function, per primitive and point
 PAPER_ANT_RATE = 94953 / 3.58  # Zanni 2013 Table 1: the ant, 94,953 triangles in 3.58 s (2008 Core 2 Duo)
-GOAL_MESH_ANT = 10.0    # issue 37: ≥ 10× the paper's triangles per second on the ant, one core
+GOAL_MESH_ANT = 10.0    # ≥ 10× the paper's triangles per second on the ant, one core
 
 
 def load_benchmarks(path):
@@ -219,15 +219,18 @@ def table(header, rows):
 
 def public_path_section(res, md, goals):
     """§8: bench/public_path_bench.cpp, every public path over the generated function."""
-    runs, _ = load_benchmarks(os.path.join(res, "public_path.json"))
+    runs, context = load_benchmarks(os.path.join(res, "public_path.json"))
     if not runs:
         return
     md.append("## 8. The public paths against the generated function\n")
+    md.append(f"Run {context.get('date')}, load average "
+              f"{', '.join(f'{x:.2f}' for x in context.get('load_avg', []))} at start (§9 follows it in the same "
+              "`scripts/bench.sh` step).\n")
     md.append("`skelconv_bench_public_path`: ns per primitive and point, one thread, the same points for every path "
               "(uniform in the skeleton's box grown by a segment length); kind 0: SCALIS Cauchy 4 segments, kind 1: "
               "classical Cauchy 4 (s = 1); 1 segment, the 24 of Zanni's ant, 1,000 random. *generated*: the "
               "generated function on inputs prepared once per primitive; the ratios are each path over it (f+∇f "
-              "paths over `f_and_grad`, f paths over `f`). *batch*: `evaluate_batch` into a new vector; "
+              "paths over `f_and_grad`, f paths over `f`), the two timed back to back in every iteration. *batch*: `evaluate_batch` into a new vector; "
               "*batch_into*: `evaluate_batch_into` (what the Python module runs); *mesher*: `ImplicitField`.\n")
     paths = ["value_and_gradient", "batch", "batch_into", "mesher_value", "mesher_value_and_gradient"]
     rows, worst = [], []
