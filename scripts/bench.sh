@@ -28,7 +28,7 @@ trap 'rm -rf "$scratch"' EXIT
 start=$SECONDS
 step() { echo "[bench $(( SECONDS - start ))s] $*" >&2; }
 
-for tool in cmake python3 valgrind objdump; do
+for tool in cmake python3 valgrind objdump /usr/bin/time; do
   command -v "$tool" >/dev/null || { echo "scripts/bench.sh: $tool is required" >&2; exit 1; }
 done
 
@@ -86,9 +86,10 @@ step "5b/7 public paths against the generated function; the mesher on Zanni's an
   --benchmark_report_aggregates_only=true --benchmark_out_format=json --benchmark_out="$results/public_path.json"
 # Zanni Table 1's ant at its triangle count (--size 0.04: ~95k triangles), one
 # core for the field, 3 runs (summarize.py takes the median).
+# CPU seconds as well (/usr/bin/time): on a shared machine they mean more.
 for run in 1 2 3; do
-  "$build/src/skelconv" mesh papers_figures/skeletons/zanni_table1_ant.json --size 0.04 --method grid \
-    -o "$scratch/ant.ply" --quiet
+  /usr/bin/time -f 'cpu_seconds: %U %S' "$build/src/skelconv" mesh papers_figures/skeletons/zanni_table1_ant.json \
+    --size 0.04 --method grid -o "$scratch/ant.ply" --quiet 2>&1
 done > "$results/mesh_ant.txt"
 
 step "6/7 callgrind instruction counts (~10 s)"
