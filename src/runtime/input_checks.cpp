@@ -81,8 +81,8 @@ void require_finite_point(const Vec3& v, const std::string& where) {
   if (!v.allFinite()) throw InputError(fmt::format("must be finite, got {}", format_point(v)), where);
 }
 
-void require_finite_query_point(const Vec3& p) {
-  if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", format_point(p)));
+void throw_non_finite_query_point(const Vec3& p) {
+  throw InputError(fmt::format("query point must be finite, got {}", format_point(p)));
 }
 
 namespace {
