@@ -1,8 +1,12 @@
 // Implementation of skelconv/mesh/implicit_field.hpp.
 #include "skelconv/mesh/implicit_field.hpp"
 
+#include <type_traits>
+#include <variant>
+
 #include "skelconv/field/support_box.hpp"
 #include "skelconv/interval/enclosure.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/skeleton.hpp"
 
 namespace skelconv {
@@ -36,6 +40,24 @@ std::optional<std::vector<Eigen::AlignedBox3d>> support_boxes_of(const Skeleton&
 /// has to prove blocks far from the surface empty; a block it cannot
 /// decide is sampled, so the mesh does not depend on these values.
 constexpr interval::EnclosureOptions mesher_enclosure_options{.pieces_per_box = 0.5, .max_triangle_levels = 1};
+/// Whether f is infinite somewhere on the skeleton (see the header).
+bool infinite_on_skeleton(const Skeleton& skeleton) {
+  for (const Primitive& primitive : skeleton.primitives()) {
+    const bool infinite = std::visit(
+        [](const auto& p) {
+          using P = std::decay_t<decltype(p)>;
+          if (kernels::family_facts(p.kernel().family).singular_at_zero) return true;
+          if constexpr (std::is_same_v<P, ScalisSegment>) return p.tau0() == 0.0 || p.tau1() == 0.0;
+          if constexpr (std::is_same_v<P, ScalisTriangle>) {
+            return p.radii()[0] == 0.0 || p.radii()[1] == 0.0 || p.radii()[2] == 0.0;
+          }
+          return false;
+        },
+        primitive);
+    if (infinite) return true;
+  }
+  return false;
+}
 
 }  // namespace
 
@@ -51,6 +73,7 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element) {
         interval::enclose(skeleton, interval::Box{box.min(), box.max()}, mesher_enclosure_options);
     return std::pair{f.lower(), f.upper()};
   };
+  field.infinite_on_skeleton = infinite_on_skeleton(skeleton);
   return field;
 }
 
