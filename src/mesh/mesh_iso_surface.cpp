@@ -116,7 +116,8 @@ std::function<int(const Eigen::AlignedBox3d&)> level_sign(const ImplicitField& f
       // trying. Only speed depends on this guess; what is proven, and
       // hence the mesh, does not.
       const FieldSample centre = field.value_and_gradient(box.center());
-      if (std::abs(centre.value - iso) <= first_order_reach * centre.gradient.norm() * 0.5 * box.sizes().norm()) return 0;
+      const double half_diagonal = 0.5 * box.sizes().norm();
+      if (std::abs(centre.value - iso) <= first_order_reach * centre.gradient.norm() * half_diagonal) return 0;
       const auto [lo, hi] = field.enclosure(box);
       const double margin = enclosure_margin * std::abs(iso);
       if (hi < iso - margin) return 1;  // f below the iso: outside, level > 0

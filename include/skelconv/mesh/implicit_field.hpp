@@ -36,17 +36,17 @@ struct ImplicitField {
   /// field of compact support). The grid method then skips the blocks of
   /// nodes no box meets (docs/mesh.md, "The grid method"). Unset: no claim.
   std::optional<std::vector<Eigen::AlignedBox3d>> support_boxes;
+  /// When set: a sound enclosure [lo, hi] of f over a box (every f(p), p in
+  /// the box, exact or as computed, lies in it); may throw, which the
+  /// mesher takes as "no claim". The grid method samples only the blocks
+  /// whose enclosure contains the iso (docs/mesh.md, "The grid method").
+  std::function<std::pair<double, double>(const Eigen::AlignedBox3d&)> enclosure;
   /// True when f is infinite on part of the skeleton (a primitive of a
   /// kernel singular at distance 0, such as the inverse family, or a SCALIS
   /// primitive with a zero radius). Only then may an evaluation on or next to
   /// the skeleton be refused (EvaluationError) and a seed ray be skipped for
   /// it; otherwise every EvaluationError reaches the caller.
   bool infinite_on_skeleton = false;
-  /// When set: a sound enclosure [lo, hi] of f over a box (every f(p), p in
-  /// the box, exact or as computed, lies in it); may throw, which the
-  /// mesher takes as "no claim". The grid method samples only the blocks
-  /// whose enclosure contains the iso (docs/mesh.md, "The grid method").
-  std::function<std::pair<double, double>(const Eigen::AlignedBox3d&)> enclosure;
 };
 
 /// The field of `skeleton` (which must outlive the returned object), with
