@@ -98,9 +98,9 @@ OUTPUTS = ("f", "grad", "f_and_grad")
 GOAL_FG_OVER_F = 1.5
 GOAL_QUADRATURE = 200.0
 GOAL_BATCH = 3.0
-GOAL_HIGHWAY = 4.0   # issue 15: the Highway batch against the scalar loop
-GOAL_GSL = 200.0     # issue 15: closed form against GSL QAG-61, every distance and family
-GOAL_GENERIC_NS = 25.0  # issue 15: f and ∇f at generic distances, inverse and Cauchy i ≤ 8
+GOAL_HIGHWAY = 4.0   # goal: the Highway batch against the scalar loop
+GOAL_GSL = 200.0     # goal: closed form against GSL QAG-61, every distance and family
+GOAL_GENERIC_NS = 25.0  # goal: f and ∇f at generic distances, inverse and Cauchy i ≤ 8
 
 
 def load_benchmarks(path):
