@@ -294,8 +294,8 @@ TEST(AnyScale, InverseSegmentsFarOutGiveTheFieldOrAnError) {
   // i = 16 there: f ~ 1e-1800, below every double: an error, never 0.
   const Segment steep(segment.a(), segment.b(), KernelSpec::inverse(16));
   EXPECT_THROW(steep.value(p), EvaluationError);
-  // Coordinates ~1e-121 (was "returned inf/nan"), and near 1e150 (was an
-  // overflow in i16): i = 3 at 2^-400 is ~1e242, a double.
+  // Coordinates ~1e-121 (where an unscaled form returns inf/nan), and near
+  // 1e150 (where i16 overflows): i = 3 at 2^-400 is ~1e242, a double.
   const double tiny = std::ldexp(1.0, -400);
   const Segment small(tiny * Vec3(0, 0, 0), tiny * Vec3(1, 0, 0), KernelSpec::inverse(3));
   const Vec3 q = tiny * Vec3(0.5, 0.3, 0);
