@@ -104,13 +104,12 @@ struct OpenCell {
 /// Measured here (seed above): the cells that miss the final target today,
 /// held to the maxima the default sweeps document for the same (family,
 /// region), all degrees, double (segments: the committed baseline
-/// verify/baselines/sweep_default.json, the same samples; polygons: README
-/// "Polygons"), so that a regression still fails. Empty since every cell
-/// reached the final target: inverse polygons just above the plane when
-/// the driver took the height from the exact vertices
-/// (skelconv/plane_height.hpp: 5.9e-12 -> 1.4e-15), and near edges when
-/// the edge kernels took the foot P̄ as a double-word number (plane_foot:
-/// 3.0e-13 -> 1.1e-15). A cell that misses again is added here with its
+/// verify/baselines/sweep_default.json, the same samples; polygons:
+/// docs/verify_reference.md "Accuracy as measured"), so that a regression
+/// still fails. Empty: every cell meets the final target (inverse polygons
+/// just above the plane need the height from the exact vertices,
+/// skelconv/plane_height.hpp, and near edges the foot P̄ as a double-word
+/// number, plane_foot). A cell that misses again is added here with its
 /// documented maximum, or fixed.
 const std::vector<OpenCell> open_cells = {};
 
