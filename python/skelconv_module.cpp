@@ -125,7 +125,7 @@ py::tuple mesh(const Skeleton& skeleton, std::optional<double> iso, const std::s
   return mesh_arrays(result);
 }
 
-/// A Skeleton from Python objects: the skeleton file's schema (docs/cli.md)
+/// A Skeleton from Python objects: the skeleton file's schema (docs/cli_skeleton.md)
 /// as dicts and lists (numpy arrays allowed), or just the list of
 /// primitives. Read by the same JSON reader, so the same checks and messages.
 Skeleton skeleton_from_objects(const py::object& data) {

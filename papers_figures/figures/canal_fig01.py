@@ -1,4 +1,4 @@
-"""Canal surfaces, Figure 1 (issue 14): a SCALIS segment of linearly varying
+"""Canal surfaces, Figure 1 (docs/canal.md): a SCALIS segment of linearly varying
 radius against its ideal shape, the canal surface of its spheres (Γ(t), τ(t))
 (a cone frustum with spherical caps, `skelconv canal --mesh`, docs/canal.md).
 (a) the canal surface, (b) the SCALIS surface (`skelconv mesh`) coloured by

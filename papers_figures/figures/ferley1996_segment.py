@@ -1,4 +1,4 @@
-"""Ferley 1996, reconstruction of the test shape 'segment' (issue 20): a single SCALIS segment (0,0,0)–(3,0,0), radius 0.5,
+"""Ferley 1996, reconstruction of the test shape 'segment' (docs/reconstruction.md): a single SCALIS segment (0,0,0)–(3,0,0), radius 0.5,
 meshed, skeletonized, joined back (figlib/reconstruction.py draws it)."""
 from figlib.figure import Figure
 from figlib.reconstruction import draw_shape

@@ -1,4 +1,4 @@
-"""Ferley 1996, reconstruction of the test shape 'torus' (issue 20): a ring of 16 SCALIS segments of radius 0.4 on a circle of radius 2,
+"""Ferley 1996, reconstruction of the test shape 'torus' (docs/reconstruction.md): a ring of 16 SCALIS segments of radius 0.4 on a circle of radius 2,
 meshed, skeletonized, joined back (figlib/reconstruction.py draws it)."""
 from figlib.figure import Figure
 from figlib.reconstruction import draw_shape

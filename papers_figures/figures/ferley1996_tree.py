@@ -1,4 +1,4 @@
-"""Ferley 1996, reconstruction of the test shape 'tree' (issue 20): a binary tree of depth 3 (15 SCALIS segments, radius × 0.75 per level, branching 38°),
+"""Ferley 1996, reconstruction of the test shape 'tree' (docs/reconstruction.md): a binary tree of depth 3 (15 SCALIS segments, radius × 0.75 per level, branching 38°),
 meshed, skeletonized, joined back (figlib/reconstruction.py draws it)."""
 from figlib.figure import Figure
 from figlib.reconstruction import draw_shape

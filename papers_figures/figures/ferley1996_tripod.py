@@ -1,4 +1,4 @@
-"""Ferley 1996, reconstruction of the test shape 'tripod' (issue 20): a tripod of three SCALIS segments from the origin, 120° apart, radius 0.45 → 0.35,
+"""Ferley 1996, reconstruction of the test shape 'tripod' (docs/reconstruction.md): a tripod of three SCALIS segments from the origin, 120° apart, radius 0.45 → 0.35,
 meshed, skeletonized, joined back (figlib/reconstruction.py draws it)."""
 from figlib.figure import Figure
 from figlib.reconstruction import draw_shape
