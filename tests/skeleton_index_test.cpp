@@ -11,7 +11,7 @@
 
 #include "skelconv/field/batch.hpp"
 #include "skelconv/field/support_grid.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv {
 namespace {

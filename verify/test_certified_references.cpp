@@ -46,7 +46,7 @@
 #include "arb_reference.hpp"
 #include "point_evaluation.hpp"
 #include "polygon_sampling.hpp"
-#include "skelconv/polygon_field.hpp"
+#include "skelconv/primitives/polygon_field.hpp"
 
 namespace {
 
@@ -109,7 +109,7 @@ struct OpenCell {
 /// "Polygons"), so that a regression still fails. Empty since every cell
 /// reached the final target: inverse polygons just above the plane when
 /// the driver took the height from the exact vertices
-/// (skelconv/plane_height.hpp: 5.9e-12 -> 1.4e-15), and near edges when
+/// (skelconv/detail/plane_height.hpp: 5.9e-12 -> 1.4e-15), and near edges when
 /// the edge kernels took the foot P̄ as a double-word number (plane_foot:
 /// 3.0e-13 -> 1.1e-15). A cell that misses again is added here with its
 /// documented maximum, or fixed.
