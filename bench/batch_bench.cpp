@@ -40,9 +40,9 @@
 
 #include "batch_kernels.hpp"
 #include "bench_main.hpp"
-#include "skelconv/polygon.hpp"
-#include "skelconv/scalis_segment.hpp"
-#include "skelconv/segment.hpp"
+#include "skelconv/primitives/polygon.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
+#include "skelconv/primitives/segment.hpp"
 #include "skelconv/simd/batch.hpp"
 
 namespace skelconv::bench {

@@ -21,7 +21,7 @@
 //     store to the outputs (possible aliasing), stops the vectoriser.
 //   * the loop body must be straight-line: a loop inside it with a
 //     data-dependent trip count (J_downward / J_upward_compact of
-//     include/skelconv/stable_recurrence.hpp, on the "P beyond an end, near
+//     include/skelconv/detail/stable_recurrence.hpp, on the "P beyond an end, near
 //     the line" forms) keeps the whole loop scalar. Hence two passes: the
 //     vectorised loop runs every lane through the generated
 //     `<name>_f_and_grad_generic` (every form without a loop of run-time
@@ -45,8 +45,8 @@
 #include <cmath>
 #include <cstddef>
 
-#include "skelconv/clip.hpp"
-#include "skelconv/segment_input.hpp"
+#include "skelconv/detail/clip.hpp"
+#include "skelconv/primitives/segment_input.hpp"
 #include "skelconv/simd/batch.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__FAST_MATH__) && \
@@ -163,7 +163,7 @@ SKELCONV_BATCH_FLATTEN std::size_t f_and_grad_batch(const SegmentInput<double>& 
 }
 
 /// The same for a compact kernel, clip included and branch-free: the clip of
-/// skelconv::clip_to_ball (include/skelconv/clip.hpp) with its early returns
+/// skelconv::clip_to_ball (include/skelconv/detail/clip.hpp) with its early returns
 /// replaced by min/max and one final select. Lanes outside the support get
 /// 0 and never need Full.
 template <auto Generic, auto Full>

@@ -11,7 +11,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "skelconv/clip.hpp"
+#include "skelconv/detail/clip.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
 
 namespace skelconv::bench {

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "skelconv/clip.hpp"
-#include "skelconv/op_count.hpp"
-#include "skelconv/segment_input.hpp"
+#include "skelconv/detail/clip.hpp"
+#include "skelconv/kernels/op_count.hpp"
+#include "skelconv/primitives/segment_input.hpp"
 
 namespace skelconv::bench {
 

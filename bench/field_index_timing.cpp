@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "skelconv/field/batch.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace {
 

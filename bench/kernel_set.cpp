@@ -3,7 +3,7 @@
 // generated/segment_table.hpp.
 #include "bench_support.hpp"
 
-#include "skelconv/segment_kernel_tables.hpp"  // instantiated once, in skelconv_runtime
+#include "skelconv/kernels/segment_kernel_tables.hpp"  // instantiated once, in skelconv_runtime
 
 namespace skelconv::bench {
 

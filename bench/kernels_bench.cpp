@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include <skelconv/exact_cross.hpp>
+#include <skelconv/detail/exact_cross.hpp>
 
 #include "bench_main.hpp"
 #include "bench_support.hpp"
@@ -144,7 +144,7 @@ void bench_quadrature(benchmark::State& state, const KernelRef* k, double tolera
 //
 // preamble/cross/{plain,exact}: AB × AP as the previous code formed it (the
 // plain products of rounded differences, what the generated kernels still
-// do away from the line) against skelconv/exact_cross.hpp's exactly rounded
+// do away from the line) against skelconv/detail/exact_cross.hpp's exactly rounded
 // one, at the same points; eval/<kernel>/f_and_grad/beside: the kernels at
 // points 1e-6…1e-2 |AB| beside the line, where they take the exact path
 // (sin∠(AB, AP) < 1/16), against …/f_and_grad at the default points.

@@ -32,8 +32,8 @@
 
 #include "skelconv/mesh/implicit_field.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
-#include "skelconv/skeleton.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace {
 

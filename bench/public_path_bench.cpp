@@ -40,9 +40,9 @@
 #include "generated/scalis_segment_table.hpp"
 #include "skelconv/field/batch.hpp"
 #include "skelconv/mesh/implicit_field.hpp"
-#include "skelconv/segment_kernel_tables.hpp"
-#include "skelconv/skeleton.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/kernels/segment_kernel_tables.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::bench {
 namespace {

@@ -13,7 +13,7 @@
 // and compact 3 (odd: two panels). Workloads: 1024 points at 0.05–0.4 |AB|
 // from the segment ("near": the inverse and Cauchy closed forms run the
 // recurrence there) or 0.6–2 |AB| ("far": they take the Gauss panels of
-// skelconv/gauss_moments.hpp); compact points are kept only inside the
+// skelconv/detail/gauss_moments.hpp); compact points are kept only inside the
 // support (compact: near only, its support ends at 0.45 < 0.6 |AB|). Counter max_rel_diff: the largest |f_quad − f| / |f| seen, so
 // both are known to compute the same field. Compare times within one run.
 #include <benchmark/benchmark.h>
@@ -31,7 +31,7 @@
 #include "bench_main.hpp"
 #include "bench_support.hpp"  // bench_a, bench_b, distance_to_segment
 #include "skelconv/kernels/kernel_list.hpp"
-#include "skelconv/scalis_segment.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
 
 namespace skelconv::bench {
 namespace {

@@ -1,10 +1,10 @@
 // bench/scalis_compact_opcounts.cpp — operation counts of the compact SCALIS
-// segment (include/skelconv/scalis_compact.hpp), the one SCALIS family that
+// segment (include/skelconv/primitives/scalis_compact.hpp), the one SCALIS family that
 // is hand-written rather than generated (its rows of SPEC §4's Table 4).
 //
 //   skelconv_scalis_compact_opcounts [--points N]
 //
-// Runs scalis_compact_F on bench::CountingDouble (bench/counting_scalar.hpp)
+// Runs scalis_compact_F on bench::CountingDouble (tools/counting_scalar.hpp)
 // at N generic points per degree 2..10 (random segments, radii and σ; P inside
 // the support, F > 0) and prints, per degree, the count (+, ×, / (√)) at the
 // median point (by +×/ total) and the range over the points, for f alone and
@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "counting_scalar.hpp"
-#include "skelconv/scalis_compact.hpp"
+#include "tools/counting_scalar.hpp"
+#include "skelconv/primitives/scalis_compact.hpp"
 
 namespace {
 

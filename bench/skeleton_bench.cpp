@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "bench_main.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv::bench {
 namespace {

@@ -46,7 +46,7 @@ PAPER_TABLE4 = [
 # forms (the `const T tN` between the declarations and the block, and the
 # return), the generic forms themselves (the `{ … }` block), and the result
 # (f, and ∇f assembled from G_ap, G_ab). Counted with the rules of
-# include/skelconv/op_count.hpp as far as text allows (binary + and −, every
+# include/skelconv/kernels/op_count.hpp as far as text allows (binary + and −, every
 # × and / except between constants, unary minus free, min/max free); the
 # summary checks the sum against the generator's OpCount and says so.
 CONST = r"T\(\d+\)"
@@ -436,7 +436,7 @@ def main():
 
     # --- degree sweep -----------------------------------------------------------------
     md.append("## 3. Cost as the degree grows (weight degree 0)\n")
-    md.append("`ops` is the generator's count (+, ×, / and calls; include/skelconv/op_count.hpp) of the generic path.\n")
+    md.append("`ops` is the generator's count (+, ×, / and calls; include/skelconv/kernels/op_count.hpp) of the generic path.\n")
     for family in ("inverse", "cauchy", "compact"):
         rows = []
         for i in range(1, 17):
@@ -661,7 +661,7 @@ def main():
               "the longest path counts every helper call (Gauss rules and panels, `J_downward`, "
               "`J_upward_compact`, `segment_moments_beyond_end`) at its longest loop, as measured on the helper "
               "itself (codegen/helper_costs.hpp). Counting rules: "
-              "include/skelconv/op_count.hpp (after CSE; a − b and a + b one add, unary minus free, x^k as products "
+              "include/skelconv/kernels/op_count.hpp (after CSE; a − b and a + b one add, unary minus free, x^k as products "
               "of memoised powers, 1/x shared counts once, comparisons/selections free, asinh counted as ln). "
               "Ratio: ours / paper, on the +×/ total; the call columns are compared separately.\n")
     rows = []
@@ -769,7 +769,7 @@ def main():
             f.write("# Operation counts of every generated kernel\n\n"
                     "From the generated table (`OpCount` of `generated/segment_table.hpp`, generic path), written by "
                     "`skelconv_bench_counts --opcounts`. Format: +, ×, / (√, atan, ln); counting rules in "
-                    "include/skelconv/op_count.hpp.\n\n")
+                    "include/skelconv/kernels/op_count.hpp.\n\n")
             f.write(table(["function", "family", "i", "weight degree", "f", "∇f", "f and ∇f"], rows))
     print(f"wrote {os.path.join(res, 'SUMMARY.md')}" + (" and OPCOUNTS.md" if opcounts else ""), file=sys.stderr)
 

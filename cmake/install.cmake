@@ -5,7 +5,8 @@
 #     target_link_libraries(app PRIVATE skelconv::skelconv)
 #
 # (docs/api.md). Layout under the prefix:
-#   include/skelconv/...                  the public headers
+#   include/skelconv/...                  the public headers (and the detail/
+#                                         headers they include, listed below)
 #   include/skelconv-generated/generated/ the generated kernels (reached as
 #                                         "generated/segment_table.hpp", as in
 #                                         the source tree)
@@ -37,8 +38,33 @@ set_target_properties(skelconv_segment_tables PROPERTIES EXPORT_NAME segment_tab
 set_target_properties(skelconv_mesh PROPERTIES EXPORT_NAME mesh)
 set_target_properties(skelconv_kernels PROPERTIES EXPORT_NAME kernels)
 
+# The public headers: include/skelconv/ without detail/. detail/ holds the
+# internals (numerical helpers, no API); only those that an installed header
+# includes are installed, because the public templates and the generated
+# kernels are compiled in the user's program and need them. The list is
+# checked by scripts/check_include_graph.py (ctest include_graph_is_sound): it
+# fails when an installed header reaches a detail header missing here, or
+# when a header listed here is reached by none.
+set(SKELCONV_INSTALLED_DETAIL_HEADERS
+  clip.hpp
+  double_word.hpp
+  exact_cross.hpp
+  gauss_moments.hpp
+  integer_power.hpp
+  plane_height.hpp
+  polygon_angle_integrals.hpp
+  polygon_far_field.hpp
+  scaled_frame.hpp
+  stable_recurrence.hpp
+  support_gap.hpp)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/skelconv
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp"
+        PATTERN detail EXCLUDE)
+list(TRANSFORM SKELCONV_INSTALLED_DETAIL_HEADERS
+     PREPEND ${PROJECT_SOURCE_DIR}/include/skelconv/detail/
+     OUTPUT_VARIABLE skelconv_detail_files)
+install(FILES ${skelconv_detail_files}
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/skelconv/detail)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/generated
         DESTINATION ${SKELCONV_GENERATED_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 

@@ -4,7 +4,7 @@
 #
 # Why: most of a test file's compile time is parsing the same ~200,000 lines
 # of headers (GoogleTest, Eigen, Boost.Math's constants and Gauss tables,
-# <skelconv/skeleton.hpp>); parsed once into a precompiled header, a typical
+# <skelconv/skeleton/skeleton.hpp>); parsed once into a precompiled header, a typical
 # test file compiles in 9–12 s instead of 13–16 s on one core.
 #
 # The header is built once, for the executable skelconv_pch_donor (an empty
@@ -25,7 +25,7 @@
 # SKELCONV_PRECOMPILED_HEADERS=OFF turns it off (e.g. with ccache, which
 # caches precompiled-header builds only with extra sloppiness settings).
 # (The command's seven files gain nothing from one: 74.6 → 71.1 CPU-s with
-# <skelconv/skeleton_file.hpp> precompiled; their time is their own code.)
+# <skelconv/skeleton/skeleton_file.hpp> precompiled; their time is their own code.)
 option(SKELCONV_PRECOMPILED_HEADERS "Precompile the headers every test includes" ON)
 
 if(NOT SKELCONV_PRECOMPILED_HEADERS OR NOT TARGET skelconv_tests)
@@ -41,7 +41,7 @@ target_precompile_headers(skelconv_pch_donor PRIVATE
   <gtest/gtest.h>
   <Eigen/Core> <Eigen/Geometry>
   <boost/math/constants/constants.hpp> <boost/math/quadrature/gauss.hpp>
-  <skelconv/skeleton.hpp>)
+  <skelconv/skeleton/skeleton.hpp>)
 
 foreach(target IN ITEMS
     skelconv_tests skelconv_scalar_types_test

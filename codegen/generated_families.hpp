@@ -10,16 +10,16 @@
 //     compact k_R^i  α = −1/R²,  β = 1,  n = −i   (on the clipped [t0, t1])
 //
 // A family of another shape (the Gaussian's exp(−a q)) is not a row here: its
-// segment closed form is hand-written (include/skelconv/segment_gaussian.hpp),
+// segment closed form is hand-written (include/skelconv/primitives/segment_gaussian.hpp),
 // and families that are combinations of these rows (soft, Wyvill) need no
-// generated code of their own (include/skelconv/derived_segment_kernels.hpp).
+// generated code of their own (include/skelconv/kernels/derived_segment_kernels.hpp).
 #pragma once
 
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-#include <skelconv/segment_input.hpp>
+#include <skelconv/primitives/segment_input.hpp>
 
 namespace skelconv::codegen {
 

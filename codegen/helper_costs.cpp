@@ -8,13 +8,13 @@
 #include <stdexcept>
 #include <vector>
 
-#include <skelconv/exact_cross.hpp>
-#include <skelconv/gauss_moments.hpp>
-#include <skelconv/polygon_angle_integrals.hpp>
-#include <skelconv/stable_recurrence.hpp>
-#include <skelconv/support_gap.hpp>
+#include <skelconv/detail/exact_cross.hpp>
+#include <skelconv/detail/gauss_moments.hpp>
+#include <skelconv/detail/polygon_angle_integrals.hpp>
+#include <skelconv/detail/stable_recurrence.hpp>
+#include <skelconv/detail/support_gap.hpp>
 
-#include "counting_scalar.hpp"  // bench/: the same counting scalar the benchmarks use
+#include "tools/counting_scalar.hpp"  // the same counting scalar the benchmarks use
 
 namespace skelconv::codegen::helper_costs {
 namespace {

@@ -1,8 +1,8 @@
 // codegen/helper_costs.hpp — what one call of each hand-written helper that
-// generated code calls costs, in the units of skelconv/op_count.hpp.
+// generated code calls costs, in the units of skelconv/kernels/op_count.hpp.
 //
 // One source of truth: each cost is measured by running the helper itself
-// once on bench/counting_scalar.hpp's CountingDouble, which tallies every
+// once on tools/counting_scalar.hpp's CountingDouble, which tallies every
 // operation executed. No cost is modelled by hand, and nothing is read from
 // a helper's name. A fixed rule (segment_moments_gauss<T, N>,
 // polygon_edge_H_near_plane) costs the same at every input. A helper whose
@@ -16,7 +16,7 @@
 
 #include <string>
 
-#include <skelconv/op_count.hpp>
+#include <skelconv/kernels/op_count.hpp>
 
 namespace skelconv::codegen::helper_costs {
 
@@ -47,7 +47,7 @@ OpCount polygon_G_compact_chord(int p_lo, int p_hi);
 /// computed once per type, not per call). Only nodes = 30.
 OpCount gauss_sine_rule(int nodes, int m_lo, int m_hi, int k_max);
 
-/// segment_exact_cross<T> (skelconv/exact_cross.hpp; fixed cost, each
+/// segment_exact_cross<T> (skelconv/detail/exact_cross.hpp; fixed cost, each
 /// fused multiply-add counted as one × and one +).
 OpCount exact_cross();
 
@@ -56,7 +56,7 @@ OpCount exact_cross();
 OpCount between_roots(int nodes, bool sine, int m_lo, int m_hi, int k_max);
 
 /// exact_point_support_gap<T>, exact_line_support_gap<T>
-/// (skelconv/support_gap.hpp; fixed cost, fma as one × and one +).
+/// (skelconv/detail/support_gap.hpp; fixed cost, fma as one × and one +).
 OpCount point_support_gap();
 OpCount line_support_gap();
 

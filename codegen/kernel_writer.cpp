@@ -141,8 +141,8 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
     std::ostringstream os;
     os << file_header(file, "segment kernels of the " + std::string(family_name(family)) + " family.", request)
        << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
-       << "#include <skelconv/exact_cross.hpp>\n#include <skelconv/gauss_moments.hpp>\n#include <skelconv/segment_input.hpp>\n"
-       << "#include <skelconv/stable_recurrence.hpp>\n#include <skelconv/support_gap.hpp>\n\n"
+       << "#include <skelconv/detail/exact_cross.hpp>\n#include <skelconv/detail/gauss_moments.hpp>\n#include <skelconv/primitives/segment_input.hpp>\n"
+       << "#include <skelconv/detail/stable_recurrence.hpp>\n#include <skelconv/detail/support_gap.hpp>\n\n"
        << "namespace skelconv::generated {\n\n"
        << body << "}  // namespace skelconv::generated\n";
     write_file(folder / file, os.str());

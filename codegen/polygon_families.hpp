@@ -19,7 +19,7 @@
 //
 // which divides by ζ² → 0 near the plane; there (ζ² ≤ q_min/2) each H_n is
 // instead the integral in the edge's angle φ, smooth and done by a 20-point
-// Gauss–Legendre rule (skelconv/polygon_angle_integrals.hpp), exact to rounding.
+// Gauss–Legendre rule (skelconv/detail/polygon_angle_integrals.hpp), exact to rounding.
 // ∇C needs no new integrals: in the plane −Σ_m (E_m × n) J_{i,m} (the
 // divergence theorem: the edges' own segment fields), along n
 // −z (ζ^(−i) Θ − Σ_m H_{i,m}) (the polygon of degree i + 2).
@@ -40,7 +40,7 @@
 
 #include <string>
 
-#include <skelconv/segment_input.hpp>
+#include <skelconv/primitives/segment_input.hpp>
 
 #include "segment_families.hpp"
 #include "straight_line_program.hpp"

@@ -13,14 +13,14 @@ namespace {
 const char* const kPolygonSources =
     "// Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum\n"
     "// (codegen/polygon_families.cpp), on the segment forms of the edge;\n"
-    "// skelconv/polygon_field.hpp adds them up.\n";
+    "// skelconv/primitives/polygon_field.hpp adds them up.\n";
 
 // One polygon edge function: writes the PolygonEdgeTerms its outputs need.
 std::string polygon_function_text(const PolygonKernelSpec& spec, int which, const EmittedCode& code) {
   const std::string name = spec.name() + "_" + kFunctionSuffix[which];
   static const char* kWhat[] = {"f", "∇f", "f and ∇f"};
   std::ostringstream os;
-  os << "/// The terms of one edge for " << kWhat[which] << " (skelconv/polygon_field.hpp adds them up), where\n"
+  os << "/// The terms of one edge for " << kWhat[which] << " (skelconv/primitives/polygon_field.hpp adds them up), where\n"
      << "///     " << spec.equation() << "\n"
      << "/// Operations per edge: " << ops_text(code.ops) << " (generic form).\n";
   if (!(code.ops_longest == code.ops)) os << "/// Longest path: " << ops_text(code.ops_longest) << ".\n";
@@ -57,9 +57,9 @@ std::string write_polygon_files(const GeneratorRequest& request, const std::file
     std::ostringstream os;
     os << file_header(file, "polygon edge kernels of the " + std::string(family_name(family)) + " family.", request)
        << kPolygonSources << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
-       << "#include <skelconv/exact_cross.hpp>\n#include <skelconv/gauss_moments.hpp>\n#include <skelconv/polygon_angle_integrals.hpp>\n"
-       << "#include <skelconv/polygon_edge_input.hpp>\n#include <skelconv/segment_input.hpp>\n"
-       << "#include <skelconv/stable_recurrence.hpp>\n#include <skelconv/support_gap.hpp>\n\n"
+       << "#include <skelconv/detail/exact_cross.hpp>\n#include <skelconv/detail/gauss_moments.hpp>\n#include <skelconv/detail/polygon_angle_integrals.hpp>\n"
+       << "#include <skelconv/primitives/polygon_edge_input.hpp>\n#include <skelconv/primitives/segment_input.hpp>\n"
+       << "#include <skelconv/detail/stable_recurrence.hpp>\n#include <skelconv/detail/support_gap.hpp>\n\n"
        << "namespace skelconv::generated {\n\n"
        << body << "}  // namespace skelconv::generated\n";
     write_file(folder / file, os.str());

@@ -50,15 +50,15 @@ std::string write_scalis_segment_files(const GeneratorRequest& request, const st
       "// SCALIS segments (SPEC §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of\n"
       "// degree i with the weight σ^i τ(t)^(i−1), and for Cauchy q = |P − Γ(t)|² + σ²τ(t)²\n"
       "// (codegen/segment_families.cpp, ScalisKernelSpec). Unnormalised: f = c F / h is\n"
-      "// the runtime's (skelconv/scalis_segment.hpp).\n";
+      "// the runtime's (skelconv/primitives/scalis_segment.hpp).\n";
   for (const auto& [family, body] : family_bodies) {
     const std::string file = "scalis_segment_" + std::string(family_name(family)) + ".hpp";
     std::ostringstream os;
     os << file_header(file, "SCALIS segment kernels of the " + std::string(family_name(family)) + " family.",
                       request)
        << from << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
-       << "#include <skelconv/exact_cross.hpp>\n#include <skelconv/gauss_moments.hpp>\n#include <skelconv/scalis_segment_input.hpp>\n"
-       << "#include <skelconv/stable_recurrence.hpp>\n\n"
+       << "#include <skelconv/detail/exact_cross.hpp>\n#include <skelconv/detail/gauss_moments.hpp>\n#include <skelconv/primitives/scalis_segment_input.hpp>\n"
+       << "#include <skelconv/detail/stable_recurrence.hpp>\n\n"
        << "namespace skelconv::generated {\n\n"
        << body << "}  // namespace skelconv::generated\n";
     write_file(folder / file, os.str());
@@ -67,8 +67,8 @@ std::string write_scalis_segment_files(const GeneratorRequest& request, const st
   std::ostringstream table;
   table << file_header("scalis_segment_table.hpp", "every generated SCALIS segment kernel, for lookup at run time.",
                        request)
-        << from << "#pragma once\n\n#include <array>\n#include <span>\n\n#include <skelconv/op_count.hpp>\n"
-        << "#include <skelconv/segment_input.hpp>\n\n";
+        << from << "#pragma once\n\n#include <array>\n#include <span>\n\n#include <skelconv/kernels/op_count.hpp>\n"
+        << "#include <skelconv/primitives/segment_input.hpp>\n\n";
   for (const auto& [family, body] : family_bodies)
     table << "#include \"generated/scalis_segment_" << family_name(family) << ".hpp\"\n";
   table << "\nnamespace skelconv::generated {\n\n"

@@ -17,7 +17,7 @@
 
 #include <string>
 
-#include <skelconv/segment_input.hpp>
+#include <skelconv/primitives/segment_input.hpp>
 
 #include "straight_line_program.hpp"
 

@@ -5,7 +5,7 @@
 
 namespace skelconv::codegen {
 
-// Stand-ins for the helpers of include/skelconv/stable_recurrence.hpp.
+// Stand-ins for the helpers of include/skelconv/detail/stable_recurrence.hpp.
 DECLARE_FUNCTION_7P(J_downward)
 REGISTER_FUNCTION(J_downward, dummy())
 DECLARE_FUNCTION_7P(J_upward_compact)

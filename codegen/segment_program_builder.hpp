@@ -135,7 +135,7 @@ class SegmentProgramBuilder {
         // with |AB|/2: ∇f 1.6e-12 per component, compact i13 w3, P 5e-6 |AB|
         // from the line, the roots 0.32 |AB| beyond A); the 20-point
         // Gauss–Legendre rule is exact to rounding
-        // (include/skelconv/gauss_moments.hpp).
+        // (include/skelconv/detail/gauss_moments.hpp).
         const ex t_star = b_ / a_;
         const ex reach = maximum(t_star + numeric(1, 4), numeric(5, 4) - t_star);
         push_helper_alternatives(choice, {-D_ - pow(a_, 2) * pow(reach, 2)},
@@ -196,7 +196,7 @@ class SegmentProgramBuilder {
         // segment_moments_beyond_end's far-end term has the opposite sign
         // once the weight's mass sits at the far end, as for a cone). Gauss
         // panels graded towards the roots of q add positive terms only
-        // (include/skelconv/gauss_moments.hpp); the closed forms are kept
+        // (include/skelconv/detail/gauss_moments.hpp); the closed forms are kept
         // near the line over the segment, where they are exact.
         const std::string panels = "segment_moments_gauss_panels<T>";
         Alternative away{{4 * D_ - pow(a_, 2)},
@@ -228,7 +228,7 @@ class SegmentProgramBuilder {
       {
         // Far from the line compared with |AB| (D ≥ 2a²): the kernel is nearly
         // flat and the moment relations cancel; a 20-point Gauss–Legendre rule
-        // is exact to rounding there (include/skelconv/gauss_moments.hpp).
+        // is exact to rounding there (include/skelconv/detail/gauss_moments.hpp).
         // The same rule serves P beyond an end by at least 2|AB| along the
         // line (t* = b/a ≥ 3 or ≤ −2): q's complex roots t* ± i√D/a are then
         // at least 2 from [0, 1] (Bernstein ellipse ρ ≥ 5 + √24, so 20 nodes
@@ -389,7 +389,7 @@ class SegmentProgramBuilder {
   // (t1 − t0) q^(i/2) loses (i+2)/2 times that (measured: f 1.4e-8, compact
   // i15, R − |BP| = 1e-6 R). These forms take the interval from the roots
   // r1 < r2 of q instead, found from R² − d² rounded once from the exact
-  // inputs (skelconv/support_gap.hpp), and write q = −a (t − r1)(r2 − t) as
+  // inputs (skelconv/detail/support_gap.hpp), and write q = −a (t − r1)(r2 − t) as
   // a product of distances to its roots (segment_moments_between_roots,
   // gauss_moments.hpp; positive terms only), so that no difference of
   // nearly equal numbers remains:
@@ -560,7 +560,7 @@ class SegmentProgramBuilder {
   }
 
   // Takes every moment the outputs need from one helper call that fills an
-  // array (include/skelconv/stable_recurrence.hpp, gauss_moments.hpp):
+  // array (include/skelconv/detail/stable_recurrence.hpp, gauss_moments.hpp):
   // function(m_lo, m_hi, k_max, args…, array). `cost` gives the call's
   // operations; `fixed_rule` says whether their number is the same at every P;
   // `along_line` and `ends`: how G_E is formed (GE, PartsEnds above).
@@ -684,7 +684,7 @@ class SegmentProgramBuilder {
   // AB × AP and |AB × AP|² (and, for a segment's gradient, the foot vector
   // H of define_foot), rounded once from the exact inputs where P is near
   // the line (sin∠(AB, AP) < 1/16, where the plain product's relative error
-  // ε/sin∠ would exceed 16ε): skelconv/exact_cross.hpp, whose header says
+  // ε/sin∠ would exceed 16ε): skelconv/detail/exact_cross.hpp, whose header says
   // why D = |AB × AP|² needs it. Elsewhere the plain product is kept, at
   // the cost of one test.
   void define_exact_cross(const std::array<ex, 3>& plain, const ex& plain_cross_cross) {

@@ -353,7 +353,7 @@ class Emitter {
 
   Text emit_call(const ex& e) {
     const std::string fn = GiNaC::ex_to<GiNaC::function>(e).get_name();
-    const bool helper = fn == "J_downward" || fn == "J_upward_compact";  // include/skelconv/stable_recurrence.hpp
+    const bool helper = fn == "J_downward" || fn == "J_upward_compact";  // include/skelconv/detail/stable_recurrence.hpp
     std::string args;
     for (size_t i = 0; i < e.nops(); ++i) {
       if (i) args += ", ";

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include <skelconv/op_count.hpp>
+#include <skelconv/kernels/op_count.hpp>
 
 namespace skelconv::codegen {
 

@@ -6,7 +6,7 @@
 //
 // prints "x y z f gx gy gz" for eleven points on a line, then f at one point
 // of a segment in float, double, long double and 50-digit Boost.Multiprecision.
-#include <skelconv/generic.hpp>  // opt-in: other scalar types (compiles the generated kernels used)
+#include <skelconv/primitives/generic.hpp>  // opt-in: other scalar types (compiles the generated kernels used)
 #include <skelconv/skelconv.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>

@@ -7,24 +7,24 @@
 // (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
 // Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum
 // (codegen/polygon_families.cpp), on the segment forms of the edge;
-// skelconv/polygon_field.hpp adds them up.
+// skelconv/primitives/polygon_field.hpp adds them up.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include <skelconv/exact_cross.hpp>
-#include <skelconv/gauss_moments.hpp>
-#include <skelconv/polygon_angle_integrals.hpp>
-#include <skelconv/polygon_edge_input.hpp>
-#include <skelconv/segment_input.hpp>
-#include <skelconv/stable_recurrence.hpp>
-#include <skelconv/support_gap.hpp>
+#include <skelconv/detail/exact_cross.hpp>
+#include <skelconv/detail/gauss_moments.hpp>
+#include <skelconv/detail/polygon_angle_integrals.hpp>
+#include <skelconv/primitives/polygon_edge_input.hpp>
+#include <skelconv/primitives/segment_input.hpp>
+#include <skelconv/detail/stable_recurrence.hpp>
+#include <skelconv/detail/support_gap.hpp>
 
 namespace skelconv::generated {
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
 /// Operations per edge: 44 +, 59 ×, 1 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 175 +, 205 ×, 23 /, 22 sqrt, 3 atan, 0 log/asinh, 20 other.
@@ -110,7 +110,7 @@ void polygon_edge_cauchy_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
 /// Operations per edge: 57 +, 73 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 531 +, 1065 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -218,7 +218,7 @@ void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   out.J_g = J_3;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
 /// Operations per edge: 57 +, 73 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 553 +, 1068 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -330,7 +330,7 @@ void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   out.J_g = J_3;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 55 +, 65 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 532 +, 1024 ×, 145 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -436,7 +436,7 @@ void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 58 +, 72 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 538 +, 1058 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -551,7 +551,7 @@ void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   out.J_g = J_4;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
 /// Operations per edge: 58 +, 72 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 558 +, 1079 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -670,7 +670,7 @@ void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   out.J_g = J_4;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 57 +, 73 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 531 +, 1065 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -777,7 +777,7 @@ void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 60 +, 86 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 535 +, 1117 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -895,7 +895,7 @@ void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   out.J_g = J_5;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
 /// Operations per edge: 60 +, 86 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 555 +, 1118 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1017,7 +1017,7 @@ void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   out.J_g = J_5;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 58 +, 72 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 538 +, 1058 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1131,7 +1131,7 @@ void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 61 +, 87 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 546 +, 1095 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1256,7 +1256,7 @@ void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   out.J_g = J_6;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
 /// Operations per edge: 61 +, 87 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 562 +, 1112 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1385,7 +1385,7 @@ void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   out.J_g = J_6;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 60 +, 86 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 539 +, 1121 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1502,7 +1502,7 @@ void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 63 +, 105 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 541 +, 1172 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1630,7 +1630,7 @@ void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   out.J_g = J_7;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
 /// Operations per edge: 63 +, 105 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 561 +, 1173 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1762,7 +1762,7 @@ void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   out.J_g = J_7;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 61 +, 87 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 540 +, 1089 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1886,7 +1886,7 @@ void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 64 +, 100 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 546 +, 1125 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2019,7 +2019,7 @@ void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   out.J_g = J_8;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
 /// Operations per edge: 64 +, 100 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 564 +, 1144 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2156,7 +2156,7 @@ void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   out.J_g = J_8;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 63 +, 105 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 539 +, 1170 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2283,7 +2283,7 @@ void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 66 +, 120 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 543 +, 1223 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2419,7 +2419,7 @@ void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   out.J_g = J_9;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
 /// Operations per edge: 66 +, 120 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 563 +, 1224 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2559,7 +2559,7 @@ void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   out.J_g = J_9;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 64 +, 100 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 544 +, 1123 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2691,7 +2691,7 @@ void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 67 +, 113 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 550 +, 1159 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2832,7 +2832,7 @@ void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_10;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
 /// Operations per edge: 67 +, 113 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 574 +, 1184 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2977,7 +2977,7 @@ void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_10;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 66 +, 120 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 547 +, 1227 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3112,7 +3112,7 @@ void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 69 +, 135 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 553 +, 1283 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3256,7 +3256,7 @@ void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_11;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
 /// Operations per edge: 69 +, 135 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 569 +, 1280 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3404,7 +3404,7 @@ void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_11;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 67 +, 113 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 548 +, 1157 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3544,7 +3544,7 @@ void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 70 +, 126 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 552 +, 1192 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3693,7 +3693,7 @@ void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_12;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
 /// Operations per edge: 70 +, 126 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 572 +, 1213 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.

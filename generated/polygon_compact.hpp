@@ -7,24 +7,24 @@
 // (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
 // Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum
 // (codegen/polygon_families.cpp), on the segment forms of the edge;
-// skelconv/polygon_field.hpp adds them up.
+// skelconv/primitives/polygon_field.hpp adds them up.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include <skelconv/exact_cross.hpp>
-#include <skelconv/gauss_moments.hpp>
-#include <skelconv/polygon_angle_integrals.hpp>
-#include <skelconv/polygon_edge_input.hpp>
-#include <skelconv/segment_input.hpp>
-#include <skelconv/stable_recurrence.hpp>
-#include <skelconv/support_gap.hpp>
+#include <skelconv/detail/exact_cross.hpp>
+#include <skelconv/detail/gauss_moments.hpp>
+#include <skelconv/detail/polygon_angle_integrals.hpp>
+#include <skelconv/primitives/polygon_edge_input.hpp>
+#include <skelconv/primitives/segment_input.hpp>
+#include <skelconv/detail/stable_recurrence.hpp>
+#include <skelconv/detail/support_gap.hpp>
 
 namespace skelconv::generated {
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
 /// Operations per edge: 87 +, 144 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 839 +, 1001 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -114,7 +114,7 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = G_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
 /// Operations per edge: 86 +, 142 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 839 +, 921 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -205,7 +205,7 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_minus4;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
 /// Operations per edge: 88 +, 147 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 919 +, 1081 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -300,7 +300,7 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_minus4;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
 /// Operations per edge: 95 +, 160 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 846 +, 1095 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -394,7 +394,7 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = G_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
 /// Operations per edge: 94 +, 158 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 846 +, 1015 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -487,7 +487,7 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_minus6;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
 /// Operations per edge: 97 +, 164 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 926 +, 1175 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -586,7 +586,7 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_minus6;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
 /// Operations per edge: 103 +, 176 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 853 +, 1189 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -683,7 +683,7 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = G_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
 /// Operations per edge: 102 +, 174 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 853 +, 1109 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -780,7 +780,7 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_minus8;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
 /// Operations per edge: 106 +, 181 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 933 +, 1269 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -882,7 +882,7 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_minus8;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
 /// Operations per edge: 111 +, 193 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 860 +, 1283 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -982,7 +982,7 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   out.S_f = G_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
 /// Operations per edge: 110 +, 190 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 860 +, 1203 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -1082,7 +1082,7 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   out.J_g = J_minus10;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
 /// Operations per edge: 115 +, 198 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 940 +, 1363 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -1187,7 +1187,7 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   out.J_g = J_minus10;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
 /// Operations per edge: 119 +, 208 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 867 +, 1377 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -1290,7 +1290,7 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   out.S_f = G_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
 /// Operations per edge: 118 +, 206 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 867 +, 1297 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
@@ -1393,7 +1393,7 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   out.J_g = J_minus12;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
 /// Operations per edge: 124 +, 215 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 947 +, 1457 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.

@@ -7,24 +7,24 @@
 // (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
 // Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum
 // (codegen/polygon_families.cpp), on the segment forms of the edge;
-// skelconv/polygon_field.hpp adds them up.
+// skelconv/primitives/polygon_field.hpp adds them up.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include <skelconv/exact_cross.hpp>
-#include <skelconv/gauss_moments.hpp>
-#include <skelconv/polygon_angle_integrals.hpp>
-#include <skelconv/polygon_edge_input.hpp>
-#include <skelconv/segment_input.hpp>
-#include <skelconv/stable_recurrence.hpp>
-#include <skelconv/support_gap.hpp>
+#include <skelconv/detail/exact_cross.hpp>
+#include <skelconv/detail/gauss_moments.hpp>
+#include <skelconv/detail/polygon_angle_integrals.hpp>
+#include <skelconv/primitives/polygon_edge_input.hpp>
+#include <skelconv/primitives/segment_input.hpp>
+#include <skelconv/detail/stable_recurrence.hpp>
+#include <skelconv/detail/support_gap.hpp>
 
 namespace skelconv::generated {
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
 /// Operations per edge: 43 +, 50 ×, 1 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 176 +, 198 ×, 23 /, 22 sqrt, 3 atan, 0 log/asinh, 20 other.
@@ -107,7 +107,7 @@ void polygon_edge_inverse_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
 /// Operations per edge: 56 +, 64 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 532 +, 1058 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -212,7 +212,7 @@ void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_3;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
 /// Operations per edge: 56 +, 64 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 552 +, 1059 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -321,7 +321,7 @@ void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_3;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 54 +, 55 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 535 +, 1018 ×, 145 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -424,7 +424,7 @@ void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 57 +, 62 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 535 +, 1046 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -536,7 +536,7 @@ void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_4;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
 /// Operations per edge: 57 +, 62 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 557 +, 1069 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -652,7 +652,7 @@ void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_4;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 56 +, 64 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 530 +, 1056 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -756,7 +756,7 @@ void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 59 +, 77 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 534 +, 1108 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -871,7 +871,7 @@ void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_5;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
 /// Operations per edge: 59 +, 77 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 558 +, 1113 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -990,7 +990,7 @@ void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_5;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 57 +, 62 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 535 +, 1046 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1101,7 +1101,7 @@ void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 60 +, 77 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 541 +, 1081 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1223,7 +1223,7 @@ void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_6;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
 /// Operations per edge: 60 +, 77 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 563 +, 1104 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1349,7 +1349,7 @@ void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_6;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 59 +, 77 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 538 +, 1112 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1463,7 +1463,7 @@ void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 62 +, 96 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 538 +, 1161 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1588,7 +1588,7 @@ void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_7;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
 /// Operations per edge: 62 +, 96 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 562 +, 1166 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1717,7 +1717,7 @@ void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_7;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 60 +, 77 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 541 +, 1081 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1838,7 +1838,7 @@ void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 63 +, 90 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 547 +, 1117 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -1968,7 +1968,7 @@ void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_8;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
 /// Operations per edge: 63 +, 90 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 569 +, 1140 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2102,7 +2102,7 @@ void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_8;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 62 +, 96 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 540 +, 1163 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2226,7 +2226,7 @@ void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 65 +, 111 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 546 +, 1218 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2359,7 +2359,7 @@ void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   out.J_g = J_9;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
 /// Operations per edge: 65 +, 111 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 562 +, 1215 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2496,7 +2496,7 @@ void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   out.J_g = J_9;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 63 +, 90 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 547 +, 1117 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2625,7 +2625,7 @@ void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 66 +, 103 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 551 +, 1151 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2763,7 +2763,7 @@ void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   out.J_g = J_10;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
 /// Operations per edge: 66 +, 103 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 569 +, 1170 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -2905,7 +2905,7 @@ void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   out.J_g = J_10;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 65 +, 111 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 546 +, 1218 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3037,7 +3037,7 @@ void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 68 +, 126 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 548 +, 1270 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3178,7 +3178,7 @@ void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   out.J_g = J_11;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
 /// Operations per edge: 68 +, 126 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 568 +, 1271 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3323,7 +3323,7 @@ void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   out.J_g = J_11;
 }
 
-/// The terms of one edge for f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 66 +, 103 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 549 +, 1149 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3460,7 +3460,7 @@ void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   out.S_f = H_f;
 }
 
-/// The terms of one edge for ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 69 +, 116 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 555 +, 1186 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
@@ -3606,7 +3606,7 @@ void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   out.J_g = J_12;
 }
 
-/// The terms of one edge for f and ∇f (skelconv/polygon_field.hpp adds them up), where
+/// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
 /// Operations per edge: 69 +, 116 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 573 +, 1205 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.

@@ -7,7 +7,7 @@
 // (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
 // Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum
 // (codegen/polygon_families.cpp), on the segment forms of the edge;
-// skelconv/polygon_field.hpp adds them up.
+// skelconv/primitives/polygon_field.hpp adds them up.
 #pragma once
 
 #include <span>

@@ -8,17 +8,17 @@
 // SCALIS segments (SPEC §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of
 // degree i with the weight σ^i τ(t)^(i−1), and for Cauchy q = |P − Γ(t)|² + σ²τ(t)²
 // (codegen/segment_families.cpp, ScalisKernelSpec). Unnormalised: f = c F / h is
-// the runtime's (skelconv/scalis_segment.hpp).
+// the runtime's (skelconv/primitives/scalis_segment.hpp).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include <skelconv/exact_cross.hpp>
-#include <skelconv/gauss_moments.hpp>
-#include <skelconv/scalis_segment_input.hpp>
-#include <skelconv/stable_recurrence.hpp>
+#include <skelconv/detail/exact_cross.hpp>
+#include <skelconv/detail/gauss_moments.hpp>
+#include <skelconv/primitives/scalis_segment_input.hpp>
+#include <skelconv/detail/stable_recurrence.hpp>
 
 namespace skelconv::generated {
 

@@ -8,14 +8,14 @@
 // SCALIS segments (SPEC §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of
 // degree i with the weight σ^i τ(t)^(i−1), and for Cauchy q = |P − Γ(t)|² + σ²τ(t)²
 // (codegen/segment_families.cpp, ScalisKernelSpec). Unnormalised: f = c F / h is
-// the runtime's (skelconv/scalis_segment.hpp).
+// the runtime's (skelconv/primitives/scalis_segment.hpp).
 #pragma once
 
 #include <array>
 #include <span>
 
-#include <skelconv/op_count.hpp>
-#include <skelconv/segment_input.hpp>
+#include <skelconv/kernels/op_count.hpp>
+#include <skelconv/primitives/segment_input.hpp>
 
 #include "generated/scalis_segment_inverse.hpp"
 #include "generated/scalis_segment_cauchy.hpp"

@@ -11,11 +11,11 @@
 #include <array>
 #include <cmath>
 
-#include <skelconv/exact_cross.hpp>
-#include <skelconv/gauss_moments.hpp>
-#include <skelconv/segment_input.hpp>
-#include <skelconv/stable_recurrence.hpp>
-#include <skelconv/support_gap.hpp>
+#include <skelconv/detail/exact_cross.hpp>
+#include <skelconv/detail/gauss_moments.hpp>
+#include <skelconv/primitives/segment_input.hpp>
+#include <skelconv/detail/stable_recurrence.hpp>
+#include <skelconv/detail/support_gap.hpp>
 
 namespace skelconv::generated {
 

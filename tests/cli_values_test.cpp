@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "reference_quadrature.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 #ifndef SKELCONV_BINARY
 #error "SKELCONV_BINARY (path of the skelconv executable) is set by tests/CMakeLists.txt"

@@ -7,12 +7,12 @@
 
 #include <gtest/gtest.h>
 
-#include "../src/runtime/convergence_guard.hpp"
+#include "../src/detail/convergence_guard.hpp"
 #include "skelconv/errors.hpp"
-#include "skelconv/gauss_moments.hpp"
+#include "skelconv/detail/gauss_moments.hpp"
 #include "skelconv/not_converged.hpp"
-#include "skelconv/scalis_compact.hpp"
-#include "skelconv/stable_recurrence.hpp"
+#include "skelconv/primitives/scalis_compact.hpp"
+#include "skelconv/detail/stable_recurrence.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The Gaussian segment closed form (include/skelconv/segment_gaussian.hpp)
+// The Gaussian segment closed form (include/skelconv/primitives/segment_gaussian.hpp)
 // against the definition integral |AB| ∫ w(t) b exp(−a |P − Γ(t)|²) dt by
 // composite Gauss–Legendre in long double (2000 panels × 20 points: the
 // narrowest Gaussian sampled, width 0.03 |AB|, spans 60 panels, so the
@@ -21,7 +21,7 @@
 
 #include <gtest/gtest.h>
 
-#include "skelconv/segment_gaussian.hpp"
+#include "skelconv/primitives/segment_gaussian.hpp"
 
 namespace skelconv {
 namespace {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "skelconv/interval/octree.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::interval {
 namespace {

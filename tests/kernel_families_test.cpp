@@ -14,11 +14,11 @@
 
 #include "extended_difference.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
-#include "skelconv/polygon.hpp"
-#include "skelconv/scalis_segment.hpp"
-#include "skelconv/scalis_triangle.hpp"
-#include "skelconv/segment.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/primitives/polygon.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
+#include "skelconv/primitives/scalis_triangle.hpp"
+#include "skelconv/primitives/segment.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv {
 namespace {

@@ -29,7 +29,7 @@
 #include "skelconv/mesh/implicit_field.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
 #include "skelconv/mesh/surface_seeds.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 #ifndef SKELCONV_BINARY
 #error "SKELCONV_BINARY (path of the skelconv executable) is set by tests/CMakeLists.txt"

@@ -14,7 +14,7 @@
 
 #include "expect_input_error.hpp"
 #include "extended_difference.hpp"
-#include "src/runtime/infinity.hpp"  // skelconv::infinity
+#include "src/detail/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {

@@ -11,7 +11,7 @@
 //   - every family and degree: Gauss–Legendre product quadrature of the
 //     definition ∬ K(|P − Q|) dQ over fan triangles (Duffy's collapsed
 //     square), in long double.
-#include "skelconv/polygon.hpp"
+#include "skelconv/primitives/polygon.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -23,7 +23,7 @@
 
 #include "expect_input_error.hpp"
 #include "reference_quadrature.hpp"  // GaussLegendreRule
-#include "src/runtime/infinity.hpp"  // skelconv::infinity
+#include "src/detail/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {

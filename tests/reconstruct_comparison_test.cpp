@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "skelconv/reconstruct/skeleton_comparison.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
 namespace {

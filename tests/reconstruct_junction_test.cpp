@@ -15,7 +15,7 @@
 #include "skelconv/reconstruct/bspline.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/surface_fit.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
 namespace {

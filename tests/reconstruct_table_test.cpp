@@ -18,7 +18,7 @@
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/sample_noise.hpp"
 #include "skelconv/reconstruct/skeleton_comparison.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
 namespace {

@@ -16,7 +16,7 @@
 #include <cmath>
 
 #include "generated/segment_table.hpp"
-#include "skelconv/polygon_field.hpp"
+#include "skelconv/primitives/polygon_field.hpp"
 
 namespace {
 
@@ -86,7 +86,7 @@ TEST(ScalarTypes, CppBinFloat50CompilesForOneFamily) {
 
 }  // namespace
 
-// The polygon edge kernels and their driver (skelconv/polygon_field.hpp) on
+// The polygon edge kernels and their driver (skelconv/primitives/polygon_field.hpp) on
 // long double: every family and degree of the table, near the plane (the
 // angle-integral forms) and off it (the recurrences), agree with double.
 TEST(ScalarTypes, PolygonKernelsInLongDoubleAgree) {

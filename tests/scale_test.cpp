@@ -1,4 +1,4 @@
-// Any scale, never silently wrong (skelconv/scaled_frame.hpp).
+// Any scale, never silently wrong (skelconv/detail/scaled_frame.hpp).
 //
 // A generic skeleton of every primitive type and kernel family is scaled by
 // 2^k, k ∈ {−400, −200, 0, 200, 400} — coordinates, radii and kernel
@@ -25,10 +25,10 @@
 
 #include "reference_quadrature.hpp"
 #include "skelconv/errors.hpp"
-#include "skelconv/polygon.hpp"
-#include "skelconv/scalis_segment.hpp"
-#include "skelconv/scalis_triangle.hpp"
-#include "skelconv/segment.hpp"
+#include "skelconv/primitives/polygon.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
+#include "skelconv/primitives/scalis_triangle.hpp"
+#include "skelconv/primitives/segment.hpp"
 
 namespace skelconv {
 namespace {

@@ -1,7 +1,7 @@
 // ScalisSegment (SPEC §4): values against quadrature of the definition, the
 // normalisation h, the thickness of a long constant-radius segment, scale
 // invariance, divergent points and validation.
-#include "skelconv/scalis_segment.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,8 +19,8 @@
 
 #include "expect_input_error.hpp"
 #include "scalis_reference_quadrature.hpp"
-#include "skelconv/skeleton_file.hpp"
-#include "src/runtime/infinity.hpp"  // skelconv::infinity
+#include "skelconv/skeleton/skeleton_file.hpp"
+#include "src/detail/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {

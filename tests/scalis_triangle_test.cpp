@@ -11,7 +11,7 @@
 // triangle (and, for the compact kernel, with the whole triangle inside the
 // support); every reference is computed at two resolutions that must agree,
 // so an unconverged reference fails the test instead of passing it.
-#include "skelconv/scalis_triangle.hpp"
+#include "skelconv/primitives/scalis_triangle.hpp"
 
 #include <array>
 #include <chrono>
@@ -28,8 +28,8 @@
 
 #include "expect_input_error.hpp"
 #include "reference_quadrature.hpp"  // GaussLegendreRule, Real
-#include "src/runtime/scalis_triangle_quadrature.hpp"  // the numerical path's error estimates
-#include "src/runtime/infinity.hpp"  // skelconv::infinity
+#include "src/primitives/scalis_triangle_quadrature.hpp"  // the numerical path's error estimates
+#include "src/detail/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {

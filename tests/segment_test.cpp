@@ -1,6 +1,6 @@
 // Segment: values against quadrature of the definition integral, the two
 // special cases (compact support, inverse singularity), and validation.
-#include "skelconv/segment.hpp"
+#include "skelconv/primitives/segment.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@
 
 #include "expect_input_error.hpp"
 #include "reference_quadrature.hpp"
-#include "src/runtime/infinity.hpp"  // skelconv::infinity
+#include "src/detail/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {

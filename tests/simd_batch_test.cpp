@@ -17,9 +17,9 @@
 
 #include <gtest/gtest.h>
 
-#include "skelconv/polygon.hpp"
-#include "skelconv/scalis_segment.hpp"
-#include "skelconv/segment.hpp"
+#include "skelconv/primitives/polygon.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
+#include "skelconv/primitives/segment.hpp"
 
 namespace skelconv {
 namespace {
@@ -235,7 +235,7 @@ TEST_P(SimdSegmentBatch, PolygonsEqualTheScalarPathOnEveryForm) {
         // points go to the scalar path, a few more on an edge's line
         // by chance; for the inverse kernel also every point near the
         // plane (8|z| < |P − V₀|∞: the exact height of
-        // skelconv/plane_height.hpp, which the lanes do not compute);
+        // skelconv/detail/plane_height.hpp, which the lanes do not compute);
         // nothing else.
         std::size_t near_plane = 0;
         if (kernel.family == KernelFamily::inverse) {

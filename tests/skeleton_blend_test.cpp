@@ -14,8 +14,8 @@
 
 #include "expect_input_error.hpp"
 #include "extended_difference.hpp"
-#include "skelconv/skeleton.hpp"
-#include "src/runtime/infinity.hpp"  // skelconv::infinity
+#include "skelconv/skeleton/skeleton.hpp"
+#include "src/detail/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {

@@ -1,6 +1,6 @@
 // The JSON skeleton reader: the schema example loads, and every kind of bad
 // input is rejected with a message that names the problem and its JSON path.
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 #include <limits>
 #include <string>

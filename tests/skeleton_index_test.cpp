@@ -4,14 +4,17 @@
 // points placed on and just beyond support boundaries; batches give the
 // same bytes for any thread count, and report the lowest failing point.
 #include <cstring>
+#include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "skelconv/field/batch.hpp"
+#include "skelconv/field/support_box.hpp"
 #include "skelconv/field/support_grid.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv {
 namespace {
@@ -145,6 +148,47 @@ TEST(SkeletonIndex, GridVisitsExactlyTheBoxesHoldingThePoint) {
     EXPECT_EQ(visited_holding, expected);
     EXPECT_TRUE(std::is_sorted(visited.begin(), visited.end()));
   }
+}
+
+/// Every point of `points` is outside `box` and there the primitive is
+/// exactly 0 with a zero gradient: the kernel vanishes beyond its support
+/// radius R (K(r) = 0 for r ≥ R, SPEC §1), and the box holds the support.
+template <class P>
+void expect_zero_outside(const P& primitive, const SupportBox& box, std::initializer_list<Vec3> points) {
+  for (const Vec3& p : points) {
+    EXPECT_FALSE(box.contains(p)) << p.transpose();
+    const FieldSample f = primitive.value_and_gradient(p);
+    EXPECT_EQ(f.value, 0.0) << p.transpose();
+    EXPECT_EQ(f.gradient, Vec3::Zero()) << p.transpose();
+  }
+}
+
+TEST(SupportBox, EveryFiniteSupportFamilyOnSegmentsAndPolygons) {
+  // soft and wyvill vanish beyond R like compact does, on segments and
+  // polygons too (their closed forms are compact levels): they must be boxed
+  // (indexed), the Gaussian (infinite support) must not.
+  const double R = 0.7;
+  for (const KernelSpec& kernel : {KernelSpec::compact(4, R), KernelSpec::soft(R), KernelSpec::wyvill(R)}) {
+    SCOPED_TRACE(std::string(family_name(kernel.family)));
+    const Segment segment(Vec3(0, 0, 0), Vec3(1, 0.5, 0), kernel);
+    const std::optional<SupportBox> segment_box = support_box(Primitive(segment));
+    ASSERT_TRUE(segment_box.has_value());
+    // Points at 0.99 R from the segment's ends lie in the support: inside.
+    EXPECT_TRUE(segment_box->contains(Vec3(-0.99 * R, 0, 0)));
+    EXPECT_TRUE(segment_box->contains(Vec3(1 + 0.99 * R, 0.5, 0)));
+    EXPECT_TRUE(segment_box->contains(Vec3(0.5, 0.25, 0.99 * R)));
+    expect_zero_outside(segment, *segment_box,
+                        {Vec3(-1.01 * R, 0, 0), Vec3(1 + 1.01 * R, 0.5, 0), Vec3(0.5, 0.25, 1.01 * R)});
+
+    const Polygon polygon({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, kernel);
+    const std::optional<SupportBox> polygon_box = support_box(Primitive(polygon));
+    ASSERT_TRUE(polygon_box.has_value());
+    EXPECT_TRUE(polygon_box->contains(Vec3(0.2, 0.2, 0.99 * R)));
+    EXPECT_TRUE(polygon_box->contains(Vec3(-0.99 * R, 0, 0)));
+    expect_zero_outside(polygon, *polygon_box, {Vec3(0.2, 0.2, 1.01 * R), Vec3(-1.01 * R, 0, 0), Vec3(0, 1 + 1.01 * R, 0)});
+  }
+  const Segment gaussian(Vec3(0, 0, 0), Vec3(1, 0, 0), KernelSpec::gaussian(2.0, 1.0));
+  EXPECT_FALSE(support_box(Primitive(gaussian)).has_value());
 }
 
 TEST(SkeletonBatch, SameBytesWhateverTheThreadCount) {

@@ -1,7 +1,7 @@
 // Skeleton: the field is the sum of the primitives' fields, and properties
 // of the definition integral that hold whatever the closed forms are:
 // mirror symmetry, reversal of a segment, splitting a segment, rigid motion.
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 #include <cmath>
 #include <limits>
@@ -9,7 +9,7 @@
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
-#include "src/runtime/infinity.hpp"  // skelconv::infinity
+#include "src/detail/infinity.hpp"  // skelconv::infinity
 
 namespace skelconv {
 namespace {

@@ -1,4 +1,4 @@
-// skelconv/support_gap.hpp: R² − |P − E|² and R²|AB|² − |AB × AP|² of exact
+// skelconv/detail/support_gap.hpp: R² − |P − E|² and R²|AB|² − |AB × AP|² of exact
 // double inputs, rounded once, where the ball barely reaches E or the line
 // (R² − d² = δ R², δ down to 1e-13). The reference is the same expression in
 // 50-digit arithmetic (cpp_bin_float_50), where every difference and
@@ -14,8 +14,8 @@
 #include <random>
 #include <vector>
 
-#include "skelconv/plane_height.hpp"
-#include "skelconv/support_gap.hpp"
+#include "skelconv/detail/plane_height.hpp"
+#include "skelconv/detail/support_gap.hpp"
 
 namespace {
 
@@ -120,7 +120,7 @@ TEST(SupportGap, ExactWhereNothingCancels) {
 
 }  // namespace
 
-// skelconv/plane_height.hpp: the height of P above the plane of exactly
+// skelconv/detail/plane_height.hpp: the height of P above the plane of exactly
 // coplanar vertices. The polygon lies in an integer frame (u, v orthogonal
 // integer vectors, outline coordinates small integers): its vertices are
 // exact doubles, exactly coplanar, with normal u × v. P = V + z·w/|w| rounded,

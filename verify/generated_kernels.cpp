@@ -1,6 +1,6 @@
 // verify/generated_kernels.cpp — the double tables for the verifier: the
 // generated code under test is the runtime's own instantiation
-// (skelconv/segment_kernel_tables.hpp); the binary128 one is instantiated in
+// (skelconv/kernels/segment_kernel_tables.hpp); the binary128 one is instantiated in
 // generated_kernels_extended*.cpp.
 #include "generated_kernels.hpp"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "extended_precision.hpp"
-#include "skelconv/segment_kernel_tables.hpp"  // the double tables: instantiated in skelconv_runtime
+#include "skelconv/kernels/segment_kernel_tables.hpp"  // the double tables: instantiated in skelconv_runtime
 
 // The binary128 tables are instantiated once, one family per file
 // (generated_kernels_extended_<family>.cpp, compiled in parallel): `extern`
@@ -24,7 +24,7 @@ template <class T>
 using GeneratedKernel = generated::SegmentKernel<T>;
 
 /// The generated table followed by the derived kernels (soft, wyvill,
-/// gaussian: skelconv/derived_segment_kernels.hpp), built once.
+/// gaussian: skelconv/kernels/derived_segment_kernels.hpp), built once.
 template <class T>
 std::span<const GeneratedKernel<T>> all_segment_kernels() {
   static const std::vector<GeneratedKernel<T>> table = [] {

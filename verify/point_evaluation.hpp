@@ -13,7 +13,7 @@
 #include "generated_kernels.hpp"
 #include "reference_quadrature.hpp"
 #include "sampling.hpp"
-#include "skelconv/clip.hpp"
+#include "skelconv/detail/clip.hpp"
 
 namespace skelconv::verify {
 
@@ -38,7 +38,7 @@ inline KernelDefinition<extended> reference_kernel(const SweepProblem& pb) {
 }
 
 /// The generated input for `pb` in precision T. For a finite-support family
-/// the support is clipped in T, as the runtime does (skelconv/clip.hpp);
+/// the support is clipped in T, as the runtime does (skelconv/detail/clip.hpp);
 /// nullopt when the clip is empty (the generated function must not be
 /// called; f = 0).
 template <class T>

@@ -1,5 +1,5 @@
 // skelconv-verify-polygons — accuracy sweep of the generated polygon kernels
-// (generated/polygon_*.hpp through skelconv/polygon_field.hpp) against 2-D
+// (generated/polygon_*.hpp through skelconv/primitives/polygon_field.hpp) against 2-D
 // adaptive quadrature of the definition integral (verify/polygon_reference.hpp,
 // long double or binary128). See docs/verify.md.
 //
@@ -36,7 +36,7 @@
 #include "polygon_reference.hpp"
 #include "polygon_sampling.hpp"
 #include "progress.hpp"
-#include "skelconv/polygon_field.hpp"
+#include "skelconv/primitives/polygon_field.hpp"
 
 namespace {
 

@@ -51,7 +51,7 @@
 
 #include "extended_precision.hpp"
 #include "kernel_definitions.hpp"
-#include "skelconv/clip.hpp"
+#include "skelconv/detail/clip.hpp"
 #include "tanh_sinh_moments.hpp"
 
 namespace skelconv::verify {

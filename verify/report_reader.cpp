@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "report.hpp"
-#include "skelconv/kernel_spec.hpp"
+#include "skelconv/kernels/kernel_spec.hpp"
 
 namespace skelconv::verify {
 namespace {

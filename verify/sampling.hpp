@@ -16,7 +16,7 @@
 
 #include "extended_precision.hpp"
 #include "regions.hpp"
-#include "skelconv/segment_input.hpp"
+#include "skelconv/primitives/segment_input.hpp"
 
 namespace skelconv::verify {
 

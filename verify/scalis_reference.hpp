@@ -39,7 +39,7 @@
 #include "extended_precision.hpp"
 #include "kernel_definitions.hpp"
 #include "reference_quadrature.hpp"
-#include "skelconv/scalis_segment_input.hpp"
+#include "skelconv/primitives/scalis_segment_input.hpp"
 #include "tanh_sinh_moments.hpp"
 
 namespace skelconv::verify {

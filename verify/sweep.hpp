@@ -13,7 +13,7 @@
 #include "error_stats.hpp"
 #include "reference_quadrature.hpp"
 #include "regions.hpp"
-#include "skelconv/segment_input.hpp"
+#include "skelconv/primitives/segment_input.hpp"
 
 namespace skelconv::verify {
 

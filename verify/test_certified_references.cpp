@@ -45,7 +45,7 @@
 #include "arb_reference.hpp"
 #include "point_evaluation.hpp"
 #include "polygon_sampling.hpp"
-#include "skelconv/polygon_field.hpp"
+#include "skelconv/primitives/polygon_field.hpp"
 
 namespace {
 
@@ -108,7 +108,7 @@ struct OpenCell {
 /// docs/verify_reference.md "Accuracy as measured"), so that a regression
 /// still fails. Empty: every cell meets the final target (inverse polygons
 /// just above the plane need the height from the exact vertices,
-/// skelconv/plane_height.hpp, and near edges the foot P̄ as a double-word
+/// skelconv/detail/plane_height.hpp, and near edges the foot P̄ as a double-word
 /// number, plane_foot). A cell that misses again is added here with its
 /// documented maximum, or fixed.
 const std::vector<OpenCell> open_cells = {};

@@ -14,7 +14,7 @@
 
 #include "extended_precision.hpp"
 #include "polygon_reference.hpp"
-#include "skelconv/polygon_field.hpp"
+#include "skelconv/primitives/polygon_field.hpp"
 
 namespace {
 

@@ -27,7 +27,7 @@
 #include "generated_kernels.hpp"
 #include "reference_quadrature.hpp"
 #include "sampling.hpp"
-#include "skelconv/clip.hpp"
+#include "skelconv/detail/clip.hpp"
 
 namespace skelconv::verify {
 namespace {

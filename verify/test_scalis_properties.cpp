@@ -34,8 +34,8 @@
 #include "sampling.hpp"
 #include "scalis_reference.hpp"
 #include "generated/scalis_segment_table.hpp"
-#include "skelconv/scalis_compact.hpp"
-#include "skelconv/scalis_segment_input.hpp"
+#include "skelconv/primitives/scalis_compact.hpp"
+#include "skelconv/primitives/scalis_segment_input.hpp"
 
 namespace skelconv::verify {
 namespace {

@@ -19,7 +19,7 @@
 #include "regions.hpp"
 #include "report.hpp"
 #include "report_reader.hpp"
-#include "skelconv/kernel_spec.hpp"
+#include "skelconv/kernels/kernel_spec.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
 #include "sweep.hpp"
 

@@ -1,5 +1,5 @@
 // bench/tools/far_field_bound.cpp — derives the far-field node counts of
-// include/skelconv/gauss_moments.hpp (far_field_min_y_*_nodes): for each
+// include/skelconv/detail/gauss_moments.hpp (far_field_min_y_*_nodes): for each
 // Gauss–Legendre node count N, the smallest imaginary distance y of the poles
 // (in x ∈ [−1, 1]) at which the bound of Trefethen, ATAP Theorem 19.3,
 // (64/15) M r^(−2N)/(r² − 1), divided by the integral, is ≤ 2^−55 for every

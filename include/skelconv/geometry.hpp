@@ -2,7 +2,7 @@
 // (a field value with its gradient).
 //
 // The public API speaks Eigen; the generated kernels take plain
-// std::array (include/skelconv/segment_input.hpp) so that they do not depend
+// std::array (include/skelconv/primitives/segment_input.hpp) so that they do not depend
 // on Eigen and work on any scalar type. These helpers convert between both.
 #pragma once
 

@@ -19,7 +19,7 @@
 // kernels (tens of thousands of lines): those are compiled once inside the
 // library. The generated kernels themselves, templates on the scalar type
 // (float, double, long double, Boost.Multiprecision), are opt-in:
-// <skelconv/generic.hpp> (docs/api.md, "Other scalar types").
+// <skelconv/primitives/generic.hpp> (docs/api.md, "Other scalar types").
 //
 // The other headers under skelconv/ are the pieces this one gathers, or
 // internals of the generated code (stable_recurrence.hpp, gauss_moments.hpp,
@@ -29,18 +29,18 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/geometry.hpp"
-#include "skelconv/kernel_spec.hpp"
+#include "skelconv/kernels/kernel_spec.hpp"
 
-#include "skelconv/polygon.hpp"
+#include "skelconv/primitives/polygon.hpp"
 #include "skelconv/primitives/point.hpp"
 #include "skelconv/primitives/primitive.hpp"
-#include "skelconv/scalis_segment.hpp"
-#include "skelconv/scalis_triangle.hpp"
-#include "skelconv/segment.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
+#include "skelconv/primitives/scalis_triangle.hpp"
+#include "skelconv/primitives/segment.hpp"
 
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 #include "skelconv/skeleton/blend.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 #include "skelconv/field/batch.hpp"
 

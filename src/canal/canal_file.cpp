@@ -1,6 +1,6 @@
 // Implementation of skelconv/canal/canal_file.hpp.
 //
-// Parsing follows src/runtime/skeleton_file.cpp: nlohmann's parser with a
+// Parsing follows src/skeleton/skeleton_file.cpp: nlohmann's parser with a
 // callback that knows the JSON path of the value being parsed (to locate a
 // duplicate key or a number overflowing double), then a walk over the
 // document that checks presence, types and allowed keys with each value's
@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "skelconv/errors.hpp"
-#include "skelconv/text_file.hpp"
+#include "skelconv/skeleton/text_file.hpp"
 
 namespace skelconv::canal {
 namespace {

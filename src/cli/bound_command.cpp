@@ -11,7 +11,7 @@
 #include "exit_status.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/interval/octree.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include "point_lines.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/field/batch.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::cli {
 namespace {

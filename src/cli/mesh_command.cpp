@@ -15,7 +15,7 @@
 #include "skelconv/mesh/mesh_iso_surface.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
 #include "skelconv/mesh/triangle_mesh.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::cli {
 namespace {

@@ -6,6 +6,8 @@
 #include <span>
 #include <type_traits>
 
+#include "skelconv/kernels/kernel_list.hpp"
+
 namespace skelconv {
 namespace {
 
@@ -23,6 +25,17 @@ SupportBox grown_bounding_box(std::span<const Vec3> points, double rho) {
   return box;
 }
 
+/// ρ of a classical kernel (segments, polygons): its trait's support radius,
+/// +inf for infinite support. Every finite-support family counts (compact,
+/// soft, wyvill, ferley), not one by name.
+double kernel_support_radius(const KernelSpec& kernel) {
+  return kernels::support_radius(kernels::make_radial_kernel(kernel));
+}
+
+/// Whether a SCALIS kernel K(d/σ) (the family's K at R = 1) vanishes beyond
+/// d = σ τ: the family has finite support (its trait says so).
+bool scalis_finite_support(KernelFamily family) { return kernels::family_facts(family).finite_support; }
+
 }  // namespace
 
 std::optional<SupportBox> support_box(const Primitive& primitive) {
@@ -30,23 +43,25 @@ std::optional<SupportBox> support_box(const Primitive& primitive) {
       [](const auto& p) -> std::optional<SupportBox> {
         using P = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<P, Segment>) {
-          if (p.kernel().family != KernelFamily::compact) return std::nullopt;
+          const double rho = kernel_support_radius(p.kernel());
+          if (!std::isfinite(rho)) return std::nullopt;
           const Vec3 ends[] = {p.a(), p.b()};
-          return grown_bounding_box(ends, p.kernel().R);
+          return grown_bounding_box(ends, rho);
         } else if constexpr (std::is_same_v<P, Polygon>) {
-          if (p.kernel().family != KernelFamily::compact) return std::nullopt;
-          return grown_bounding_box(p.vertices(), p.kernel().R);
+          const double rho = kernel_support_radius(p.kernel());
+          if (!std::isfinite(rho)) return std::nullopt;
+          return grown_bounding_box(p.vertices(), rho);
         } else if constexpr (std::is_same_v<P, PointPrimitive>) {
           if (!std::isfinite(p.support_radius())) return std::nullopt;
           const Vec3 centre[] = {p.center()};
           return grown_bounding_box(centre, p.support_radius());
         } else if constexpr (std::is_same_v<P, ScalisSegment>) {
-          if (p.kernel().family != KernelFamily::compact) return std::nullopt;
+          if (!scalis_finite_support(p.kernel().family)) return std::nullopt;
           const Vec3 ends[] = {p.a(), p.b()};
           return grown_bounding_box(ends, p.kernel().sigma * std::max(p.tau0(), p.tau1()));
         } else {
           static_assert(std::is_same_v<P, ScalisTriangle>, "a new primitive type needs its support box");
-          if (p.kernel().family != KernelFamily::compact) return std::nullopt;
+          if (!scalis_finite_support(p.kernel().family)) return std::nullopt;
           const double tau = std::max({p.radii()[0], p.radii()[1], p.radii()[2]});
           return grown_bounding_box(p.vertices(), p.kernel().sigma * tau);
         }

@@ -9,7 +9,7 @@
 #include "skelconv/interval/enclosure.hpp"
 #include "skelconv/interval/kernel_range.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
-#include "../runtime/infinity.hpp"
+#include "../detail/infinity.hpp"
 
 namespace skelconv::interval {
 namespace {

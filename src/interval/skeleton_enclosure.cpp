@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "skelconv/interval/enclosure.hpp"
-#include "../runtime/infinity.hpp"
+#include "../detail/infinity.hpp"
 
 namespace skelconv::interval {
 namespace {

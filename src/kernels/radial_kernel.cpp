@@ -2,12 +2,21 @@
 #include "skelconv/kernels/radial_kernel.hpp"
 
 #include "skelconv/kernels/ferley.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/kernels/kernel_trait.hpp"
+
+#include <utility>
 
 #include <fmt/format.h>
 
-#include "../runtime/input_checks.hpp"
+#include "../detail/input_checks.hpp"
 
 namespace skelconv::kernels {
+
+// Every family in RadialKernel satisfies the trait concept.
+static_assert([]<std::size_t... i>(std::index_sequence<i...>) {
+  return (RadialKernelTrait<std::variant_alternative_t<i, RadialKernel>> && ...);
+}(std::make_index_sequence<std::variant_size_v<RadialKernel>>{}));
 
 void require_degree(std::string_view family, int degree, int min_degree, int max_degree) {
   if (degree < min_degree || degree > max_degree) {
@@ -24,7 +33,7 @@ void require_plane_degree(std::string_view family, int degree) {
   }
 }
 
-void require_positive(double value, const char* where) { detail::require_positive_parameter(value, where); }
+void require_positive(double value, const char* where) { skelconv::detail::require_positive_parameter(value, where); }
 
 FerleyKernel::FerleyKernel(const KernelSpec& spec) : e(spec.e), R(spec.R) {
   require_positive(e, "kernel.e");

@@ -7,7 +7,7 @@
 #include "skelconv/field/support_box.hpp"
 #include "skelconv/interval/enclosure.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "../runtime/input_checks.hpp"
+#include "../detail/input_checks.hpp"
 
 namespace skelconv {
 

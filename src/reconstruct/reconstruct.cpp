@@ -14,7 +14,7 @@
 #include "skelconv/reconstruct/pavlidis.hpp"
 #include "skelconv/reconstruct/surface_fit.hpp"
 #include "skelconv/reconstruct/surface_query.hpp"
-#include "skelconv/skeleton_file.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
 namespace {

@@ -49,9 +49,9 @@
 #include <cstdint>
 #include <limits>
 
-#include "skelconv/gauss_moments.hpp"
+#include "skelconv/detail/gauss_moments.hpp"
 #include "skelconv/not_converged.hpp"
-#include "skelconv/stable_recurrence.hpp"
+#include "skelconv/detail/stable_recurrence.hpp"
 #include "src/simd/divergence.hpp"
 #include "src/simd/sleef_declarations.hpp"
 
@@ -120,7 +120,7 @@ inline LaneMask operator!=(Lanes a, Lanes b) { return {hn::Ne(a.v, b.v)}; }
 
 inline Lanes sqrt(Lanes a) { return Lanes(hn::Sqrt(a.v)); }
 // a·b + c rounded once on the FMA targets (AVX2, AVX-512), as std::fma:
-// skelconv/exact_cross.hpp's error-free products need exactly that. The
+// skelconv/detail/exact_cross.hpp's error-free products need exactly that. The
 // SCALAR target hands every point to the scalar path (find_group).
 inline Lanes fma(Lanes a, Lanes b, Lanes c) { return Lanes(hn::MulAdd(a.v, b.v, c.v)); }
 inline Lanes abs(Lanes a) { return Lanes(hn::Abs(a.v)); }

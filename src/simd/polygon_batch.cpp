@@ -6,7 +6,7 @@
 // and sends to the scalar path the points Polygon::value_and_gradient treats
 // apart (a non-finite P; inverse kernels: z = 0 exactly, where the runtime
 // decides between +inf and a finite value, and P near the plane, where the
-// height comes from the exact vertices, skelconv/plane_height.hpp; the far
+// height comes from the exact vertices, skelconv/detail/plane_height.hpp; the far
 // field, ≥ 5 radii from the vertex centroid, polygon_far_field.hpp). The
 // others run, a group of 4 or 8 lanes at a time (group_runner-inl.hpp),
 // through polygon_evaluate's contour sum written on Lanes: the generated
@@ -33,10 +33,10 @@
 
 #include "generated/polygon_cauchy.hpp"
 #include "generated/polygon_inverse.hpp"
-#include "skelconv/integer_power.hpp"
-#include "skelconv/polygon.hpp"
-#include "skelconv/polygon_far_field.hpp"
-#include "skelconv/polygon_field.hpp"
+#include "skelconv/detail/integer_power.hpp"
+#include "skelconv/primitives/polygon.hpp"
+#include "skelconv/detail/polygon_far_field.hpp"
+#include "skelconv/primitives/polygon_field.hpp"
 #include "skelconv/simd/batch.hpp"
 #include "src/simd/group_runner-inl.hpp"
 #include "src/simd/lanes-inl.hpp"
@@ -281,7 +281,7 @@ BatchCounts value_and_gradient(const Polygon& polygon, PointsSoA points, FieldSo
       z[p] = q.z();
       // Inverse kernels: z = 0 exactly (the runtime's on-plane decision), or
       // near the plane, where polygon_evaluate takes the exact height
-      // (skelconv/plane_height.hpp), a double-word fan the lanes do not have.
+      // (skelconv/detail/plane_height.hpp), a double-word fan the lanes do not have.
       const std::array<double, 3> point{q.x(), q.y(), q.z()};
       const double plain_z = plain_plane_height(point, u.input.vertices[0], u.input.normal);
       const bool singular_candidate = u.input.family == KernelFamily::inverse &&

@@ -23,7 +23,7 @@
 
 #include "generated/scalis_segment_cauchy.hpp"
 #include "generated/scalis_segment_inverse.hpp"
-#include "skelconv/scalis_segment.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
 #include "skelconv/simd/batch.hpp"
 #include "src/simd/group_runner-inl.hpp"
 #include "src/simd/lanes-inl.hpp"

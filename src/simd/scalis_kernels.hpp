@@ -4,7 +4,7 @@
 // its Gauss panels, flattened), so the list holds the kernels the benchmarks
 // measure (Zanni's Table 4 rows inverse 3 and Cauchy 4; a list with inverse 4
 // and Cauchy 3 too cost CI 1.5 CPU-minutes more). Other kernels (and the
-// compact family, which is not generated: include/skelconv/scalis_compact.hpp)
+// compact family, which is not generated: include/skelconv/primitives/scalis_compact.hpp)
 // are evaluated point by point by the scalar path, with the same results.
 #pragma once
 

@@ -27,7 +27,7 @@
 #include "generated/segment_cauchy.hpp"
 #include "generated/segment_compact.hpp"
 #include "generated/segment_inverse.hpp"
-#include "skelconv/segment.hpp"
+#include "skelconv/primitives/segment.hpp"
 #include "skelconv/simd/batch.hpp"
 #include "src/simd/group_runner-inl.hpp"
 #include "src/simd/lanes-inl.hpp"
@@ -149,7 +149,7 @@ void sort_points(const SegmentInput<double>& segment, KernelFamily family, Point
       hn::StoreMaskBits(d, on_line, to_scalar_bits);
     }
     if (family == KernelFamily::compact) {
-      // clip_to_ball (include/skelconv/clip.hpp), operation for operation.
+      // clip_to_ball (include/skelconv/detail/clip.hpp), operation for operation.
       const auto b = hn::Add(hn::Add(hn::Mul(ab0, ap0), hn::Mul(ab1, ap1)), hn::Mul(ab2, ap2));
       const auto disc = hn::Sub(aRR, hn::Add(hn::Add(hn::Mul(cx, cx), hn::Mul(cy, cy)), hn::Mul(cz, cz)));
       const auto half_width = hn::Div(hn::Sqrt(hn::IfThenElse(hn::Gt(disc, zero), disc, zero)), a);

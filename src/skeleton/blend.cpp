@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "../runtime/input_checks.hpp"
+#include "../detail/input_checks.hpp"
 #include "skelconv/errors.hpp"
 
 namespace skelconv {

@@ -12,7 +12,7 @@
 //     {"t": t, "sphere": {"center": [...], "radius": r},
 //      "circle": {"center": [...], "radius": ρ, "normal": [...]} or null}, ...]}
 //
-// The reader is as strict as the skeleton reader (skelconv/skeleton_file.hpp):
+// The reader is as strict as the skeleton reader (skelconv/skeleton/skeleton_file.hpp):
 // unknown or duplicate fields, wrong types, numbers that overflow double are
 // InputErrors located at their JSON path ("spheres[2].radius").
 #pragma once

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "skelconv/scalis_segment.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
 
 namespace skelconv::canal {
 

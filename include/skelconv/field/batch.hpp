@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "skelconv/geometry.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv {
 

@@ -33,10 +33,11 @@ struct SupportBox {
 /// magnitude, with three orders to spare).
 inline double support_margin(double rho, double magnitude) { return rho * 1e-6 + magnitude * 1e-13; }
 
-/// The support box of a compact-support primitive: compact kernels on
-/// segments, polygons and points (ρ = R), compact SCALIS segments and
+/// The support box of a finite-support primitive: every finite-support
+/// family (compact, soft, wyvill, ferley: the trait's support radius ρ) on
+/// segments, polygons and points, finite-support SCALIS segments and
 /// triangles (ρ = σ · max τ: |P − Q| < σ τ(Q) ≤ σ max τ on the support).
-/// std::nullopt for infinite support (inverse, Cauchy).
+/// std::nullopt for infinite support (inverse, Cauchy, Gaussian).
 std::optional<SupportBox> support_box(const Primitive& primitive);
 
 }  // namespace skelconv

@@ -31,7 +31,7 @@
 #include <optional>
 
 #include "skelconv/interval/interval.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv::interval {
 

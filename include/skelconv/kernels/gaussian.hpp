@@ -2,7 +2,7 @@
 // (Ferley 1996 §1.1.1 and §1.1.3: f_i(P) = b_i exp(−a_i ‖P − P_i‖²)):
 //     K(r) = b exp(−a r²),  a > 0, b > 0,
 // infinite support, decreasing. Ferley §2.2.5 convolves h = exp(−‖P‖²/2)
-// along segments (an erf closed form): skelconv/segment_gaussian.hpp. On
+// along segments (an erf closed form): skelconv/primitives/segment_gaussian.hpp. On
 // points and segments; polygons and SCALIS primitives refuse it.
 #pragma once
 
@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "skelconv/kernels/radial_kernel.hpp"
-#include "skelconv/segment_gaussian.hpp"
+#include "skelconv/primitives/segment_gaussian.hpp"
 
 namespace skelconv::kernels {
 
@@ -23,7 +23,7 @@ struct GaussianKernel {
   static constexpr std::string_view name = "gaussian";
   static constexpr std::array<std::string_view, 2> parameters{"a", "b"};
   static constexpr bool has_degree = false;
-  /// Segments by the erf closed form of skelconv/segment_gaussian.hpp;
+  /// Segments by the erf closed form of skelconv/primitives/segment_gaussian.hpp;
   /// polygons have no closed form here (the 2-D integral of exp(−a r²) over
   /// a fan triangle is an Owen-T-like function, not generated), and SCALIS
   /// primitives are defined for inverse, Cauchy and compact only.

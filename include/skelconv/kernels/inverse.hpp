@@ -8,7 +8,7 @@
 #include <limits>
 #include <string_view>
 
-#include "skelconv/integer_power.hpp"
+#include "skelconv/detail/integer_power.hpp"
 #include "skelconv/kernels/radial_kernel.hpp"
 #include "skelconv/kernels/scalis_description.hpp"
 

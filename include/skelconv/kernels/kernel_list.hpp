@@ -3,7 +3,7 @@
 //
 // Adding a family is: its trait header, one entry in RadialKernel
 // below, and its name in KernelFamily (segment_input.hpp). The reader
-// (src/runtime/skeleton_file.cpp) learns its JSON keys from family_facts().
+// (src/skeleton/skeleton_file.cpp) learns its JSON keys from family_facts().
 #pragma once
 
 #include <cmath>

@@ -46,7 +46,7 @@
 #include <string_view>
 
 #include "skelconv/errors.hpp"
-#include "skelconv/kernel_spec.hpp"
+#include "skelconv/kernels/kernel_spec.hpp"
 
 namespace skelconv::kernels {
 
@@ -65,7 +65,7 @@ enum PrimitiveKind : unsigned {
 /// exact combination of compact levels (SPEC §1 k_R^i with the trait's R):
 /// soft = k_R^4, Wyvill = 5/9 k_R^4 + 4/9 k_R^6. Its segment and polygon
 /// fields are the same combination of the generated compact closed forms
-/// (skelconv/derived_segment_kernels.hpp, Polygon). The coefficient is a
+/// (skelconv/kernels/derived_segment_kernels.hpp, Polygon). The coefficient is a
 /// ratio of integers so that extended-precision evaluation sees it exactly.
 struct CompactLevel {
   int numerator = 1;

@@ -20,7 +20,7 @@
 
 #include <numbers>
 
-#include "skelconv/kernel_spec.hpp"
+#include "skelconv/kernels/kernel_spec.hpp"
 
 namespace skelconv::kernels {
 

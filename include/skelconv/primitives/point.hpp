@@ -23,7 +23,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/geometry.hpp"
-#include "skelconv/kernel_spec.hpp"
+#include "skelconv/kernels/kernel_spec.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
 
 namespace skelconv {

@@ -7,11 +7,11 @@
 
 #include <variant>
 
-#include "skelconv/polygon.hpp"
+#include "skelconv/primitives/polygon.hpp"
 #include "skelconv/primitives/point.hpp"
-#include "skelconv/scalis_segment.hpp"
-#include "skelconv/scalis_triangle.hpp"
-#include "skelconv/segment.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
+#include "skelconv/primitives/scalis_triangle.hpp"
+#include "skelconv/primitives/segment.hpp"
 
 namespace skelconv {
 

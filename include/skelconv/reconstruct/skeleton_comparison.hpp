@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "skelconv/reconstruct/branch_graph.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv::reconstruct {
 

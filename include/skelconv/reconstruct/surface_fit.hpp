@@ -36,7 +36,7 @@
 
 #include "skelconv/reconstruct/branch_graph.hpp"
 #include "skelconv/reconstruct/surface_query.hpp"
-#include "skelconv/skeleton.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv::reconstruct {
 

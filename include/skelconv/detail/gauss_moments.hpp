@@ -1,0 +1,484 @@
+// skelconv/detail/gauss_moments.hpp — segment moments by a fixed Gauss–Legendre rule,
+// where the recurrences cancel and the rule is exact (to rounding).
+//
+// Generated segment kernels need M_{k,m} = ∫_{t0}^{t1} t^k q(t)^(−m/2) dt with
+// q = a t² − 2 b t + c (SPEC §2). Three places where recurrence (1) and the
+// moment relations lose digits are better served by an N-point
+// Gauss–Legendre rule, whose positive weights and positive integrand leave
+// nothing to cancel:
+//
+//  * compact kernels of even degree i: t^k q^(i/2) is a polynomial of degree
+//    ≤ i + k, integrated exactly by N points when 2N − 1 ≥ i + k (the
+//    generator takes the smallest of Boost's tabulated N = 7, 10, 15);
+//  * inverse and Cauchy kernels with P far from the segment's line compared
+//    with its length (D ≥ 2 a², i.e. the complex roots t* ± i√D/a of q at
+//    least √2 from the real axis in units of |AB|): the moment relations
+//    lose a factor ~ D/a² per step there (the kernel is nearly flat), while
+//    the rule's error, for an integrand with a pole of order m/2 outside the
+//    Bernstein ellipse of parameter ρ ≥ 5.8, is below N^(m/2) ρ^(−2N) ≈ 1e-19
+//    with N = 20 (Trefethen, Approximation Theory and Approximation
+//    Practice, ch. 19). The verifier checks both claims against quadrature
+//    of the definition;
+//  * SCALIS segments (weights τ(t)^(i−1), moments up to t^10), wherever P is
+//    not near the line beside the segment: segment_moments_gauss_panels
+//    below, on panels graded towards the roots of q.
+//
+// Nodes and weights are Boost.Math's, tabulated to the precision of T
+// (double, long double, float128, …).
+#pragma once
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/quadrature/gauss.hpp>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+#include "skelconv/not_converged.hpp"
+
+namespace skelconv {
+
+/// How the rule's nodes x ∈ [−1, 1] map to [t0, t1].
+enum class NodeMap {
+  linear,  ///< t = middle + half_width x: Gauss–Legendre itself
+  /// t = middle + half_width sin(πx/2), weight × (π/2) cos(πx/2): where q has
+  /// a root at an end of [t0, t1] (a compact support clipping the
+  /// interval), q^(i/2) ~ (t1 − t)^(i/2) has a branch point there, on which
+  /// Gauss–Legendre converges only like N^−(i+2); after the map t1 − t ~
+  /// (1 − x)², so q^(i/2) ~ (1 − x)^i is analytic and the rule converges
+  /// geometrically again, with ρ set by q's other root.
+  sine,
+};
+
+/// Boost's N-point Gauss–Legendre table (nonnegative nodes) after the sine
+/// map of NodeMap::sine, computed once per table type (double for SIMD lanes).
+template <class T, unsigned N>
+const auto& sine_mapped_rule() {
+  using Table = std::decay_t<decltype(boost::math::quadrature::gauss<T, N>::abscissa())>;
+  struct Mapped {
+    Table abscissa, weights;
+  };
+  static const Mapped mapped = [] {
+    using X = std::decay_t<decltype(boost::math::quadrature::gauss<T, N>::abscissa()[0])>;
+    using std::cos, std::sin;
+    const X half_pi = boost::math::constants::half_pi<X>();
+    Mapped m{boost::math::quadrature::gauss<T, N>::abscissa(), boost::math::quadrature::gauss<T, N>::weights()};
+    for (std::size_t j = 0; j < m.abscissa.size(); ++j) {
+      const X x = m.abscissa[j];
+      m.abscissa[j] = sin(half_pi * x);
+      m.weights[j] = m.weights[j] * half_pi * cos(half_pi * x);
+    }
+    return m;
+  }();
+  return mapped;
+}
+
+/// One node of a rule: the parameter t, q(t) ≥ 0 and dt/dx there.
+template <class T>
+struct MomentNode {
+  T t;
+  T q;
+  T jacobian;
+};
+
+/// Adds the N-point Gauss–Legendre rule over x ∈ [−1, 1] (after `map`) for
+/// M_{k,m} = ∫ t^k q^(−m/2) dt, k = 0…k_max, m = m_lo, m_lo + 2, …, m_hi
+/// (m may be negative: q^(|m|/2) for compact kernels, where q ≥ 0), to
+/// out[((m − m_lo)/2)(k_max + 1) + k]; node_at(x) gives the MomentNode at x.
+template <class T, unsigned N, NodeMap map, class NodeAt>
+void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
+  using std::sqrt;
+  using Rule = boost::math::quadrature::gauss<T, N>;
+  const int levels = (m_hi - m_lo) / 2 + 1;
+  const int per_level = k_max + 1;
+  // One node t with Gauss weight g adds g t^k q^(−m/2) dt/dx to every moment.
+  auto add_node = [&](const T& x, const T& g) {
+    const MomentNode<T> node = node_at(x);
+    const T& t = node.t;
+    const T& q = node.q;
+    // q^(−m_hi/2) from integer powers of q (even m) or of √q (odd m), then
+    // × q per level down to m_lo: no division by a q that may be 0 at a
+    // clipped end.
+    const bool even = m_hi % 2 == 0;
+    const T root = even ? q : sqrt(q);
+    const T base = m_hi <= 0 ? root : T(1) / root;
+    const int power = (m_hi <= 0 ? -m_hi : m_hi) / (even ? 2 : 1);
+    T level_value = node.jacobian * g;
+    for (int j = 0; j < power; ++j) level_value *= base;
+    for (int l = levels - 1; l >= 0; --l) {
+      T term = level_value;
+      for (int k = 0; k <= k_max; ++k) {
+        out[l * per_level + k] += term;
+        term *= t;
+      }
+      level_value *= q;
+    }
+  };
+  const auto& x = map == NodeMap::linear ? Rule::abscissa() : sine_mapped_rule<T, N>().abscissa;
+  const auto& g = map == NodeMap::linear ? Rule::weights() : sine_mapped_rule<T, N>().weights;
+  unsigned first = 0;
+  if (N % 2 == 1) {
+    add_node(T(0), g[0]);
+    first = 1;
+  }
+#pragma GCC unroll 16
+  for (unsigned j = first; j < x.size(); ++j) {
+    add_node(x[j], g[j]);
+    add_node(-x[j], g[j]);
+  }
+}
+
+/// Adds the N-point Gauss–Legendre rule on [t0, t1] for M_{k,m} (as
+/// add_moments_at_nodes); q_at(t) evaluates q ≥ 0.
+template <class T, unsigned N, class QuadraticAt, NodeMap map = NodeMap::linear>
+void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
+                               T* out) {
+  const T half_width = (t1 - t0) / 2;
+  const T middle = (t0 + t1) / 2;
+  add_moments_at_nodes<T, N, map>(
+      m_lo, m_hi, k_max,
+      [&](const T& x) {
+        const T t = middle + half_width * x;
+        return MomentNode<T>{t, q_at(t), half_width};
+      },
+      out);
+}
+
+/// Writes M_{k,m} = ∫ t^k q^(−m/2) dt over [middle − half_width, middle +
+/// half_width] (k = 0…k_max, m = m_lo, …, m_hi, m ≤ 0: compact kernels) to
+/// out[((m − m_lo)/2)(k_max + 1) + k], for q = minus_a (t − r1)(r2 − t)
+/// with roots r1 ≤ t ≤ r2 given by their distances from the interval:
+/// t − r1 = gap_lo + (t − interval start), r2 − t = gap_hi + (interval end
+/// − t), each a sum of nonnegative terms. For the support sphere grazing
+/// the segment (codegen/segment_program_builder.hpp,
+/// push_support_root_alternatives), where the interval is short and q on
+/// it tiny: formed as a difference of numbers ~1, q would lose ~ε/q, and
+/// the interval's ends as parameters t lose ε/(its length). Here neither
+/// enters: the caller finds middle, half_width and the gaps from R² − d²
+/// rounded once (skelconv/detail/support_gap.hpp).
+///
+/// The rule: for even kernel degrees t^k q^(|m|/2) is a polynomial, exact
+/// with 2N − 1 ≥ its degree (NodeMap::linear); for odd degrees q^(|m|/2)
+/// has branch points at the roots, removed at a root that is an end of the
+/// interval by NodeMap::sine; the generator passes an interval whose other
+/// root is at least its length beyond it (ρ ≈ 3 after the map), or the
+/// chord between both roots (after the map the integrand is entire). N
+/// nodes leave ~1e-21 relative in the worst case the verifier found (a
+/// chord, i = 15, k ≤ 4): below rounding for double; wider types take 2N.
+template <class T, unsigned N, NodeMap map = NodeMap::linear>
+void segment_moments_between_roots(int m_lo, int m_hi, int k_max, const T& minus_a, const T& middle,
+                                   const T& half_width, const T& gap_lo, const T& gap_hi, T* out) {
+  constexpr unsigned nodes = map == NodeMap::sine && std::numeric_limits<T>::digits > 64 ? 2 * N : N;
+  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
+  for (int i = 0; i < count; ++i) out[i] = T(0);
+  add_moments_at_nodes<T, nodes, map>(
+      m_lo, m_hi, k_max,
+      [&](const T& x) {
+        const T from_start = half_width * (T(1) + x);  // t − interval start
+        const T to_end = half_width * (T(1) - x);      // interval end − t
+        return MomentNode<T>{middle + half_width * x, minus_a * (gap_lo + from_start) * (gap_hi + to_end),
+                             half_width};
+      },
+      out);
+}
+
+/// The far-field rule in double (segment_moments_gauss with m_lo > 0): the
+/// fewest of Boost's tabulated node counts whose error bound is below
+/// rounding, chosen by how far the poles z, z̄ = t* ± i√D/a of q lie from
+/// [t0, t1].
+///
+/// The bound (Trefethen, Approximation Theory and Approximation Practice,
+/// Theorem 19.3): on [−1, 1] (x = (2t − t0 − t1)/(t1 − t0)) the N-point
+/// rule errs by at most (64/15) M r^(−2N)/(r² − 1) for an integrand
+/// analytic inside the Bernstein ellipse E_r, |integrand| ≤ M there. The
+/// poles sit at imaginary distance y = 2√D/(a (t1 − t0)) from the real axis
+/// in x, and at any real position x*. For each N the constant below is the
+/// smallest y for which that bound, minimised over r (E_r inside the pole's
+/// ellipse) and divided by the integral itself, is ≤ 2^−55 (a quarter of
+/// double's rounding unit) for every x* in [−6, 6] ∪ {±20, ±100}, every
+/// weight t^k, k ≤ 4, and every pole order m/2, m ≤ 18 (the generated
+/// kernels' range: k ≤ 4 for weight degree 3 and ∇f, m ≤ i + 2 for i ≤ 16):
+/// computed by bench/tools/far_field_bound.cpp (scans ∂E_r at 256 points,
+/// r at 40 steps, the integral by 8 panels of the 30-point rule); the
+/// minimal y were 21.4 (N = 7), 6.97 (N = 10), 2.97 (N = 15), 1.89
+/// (N = 20), rounded up here. The generated far branch starts at D ≥ 2a²,
+/// y = 2√2 ≈ 2.83 on [0, 1], inside the 20-node range. D = ac − b² is
+/// formed here without the generated code's cross product: its rounding
+/// (~ε ac) matters only for a pole more than 100 |AB| along the line, where
+/// |z| ≥ 100 puts E_r for any N ≥ 7 far inside the pole's ellipse anyway.
+inline constexpr double far_field_min_y_7_nodes = 22.0;
+inline constexpr double far_field_min_y_10_nodes = 7.0;
+inline constexpr double far_field_min_y_15_nodes = 3.0;
+
+namespace detail {
+/// The node count for a pole at "distance" x (a squared distance compared
+/// with the squared thresholds of the 7-, 10- and 15-node rules): 7, 10, 15,
+/// or `most`. The vector batches (src/simd/lanes-inl.hpp) specialise it to
+/// the largest count any active lane needs, so that the lanes stay together
+/// (more nodes only make a lane's rule more exact).
+template <class T>
+int rule_nodes(const T& x, double x7, double x10, double x15, int most) {
+  return x >= T(x7) ? 7 : x >= T(x10) ? 10 : x >= T(x15) ? 15 : most;
+}
+
+/// Adds the rule of `nodes` nodes (7, 10, 15, 20) on [t0, t1].
+template <class T, class QuadraticAt>
+void add_moments_by_rule(int nodes, int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
+                         T* out) {
+  switch (nodes) {
+    case 7: add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    case 10: add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    case 15: add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+    default: add_segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+  }
+}
+
+/// The far-field rule of segment_moments_gauss: N_max nodes, or fewer where
+/// the bound above allows it (double only: the constants are for its
+/// rounding unit; wider types keep N_max).
+template <class T, unsigned N_max, class QuadraticAt>
+void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& a, const T& b,
+                           const T& c, const T& t0, const T& t1, T* out) {
+  if constexpr (std::numeric_limits<T>::digits <= 53 && N_max == 20) {
+    // y² = 4D/(a (t1 − t0))² ≥ y_N²
+    const T a_width = a * (t1 - t0);
+    const T y2 = T(4) * (a * c - b * b) / (a_width * a_width);
+    auto square = [](double y) { return y * y; };
+    const int nodes = rule_nodes(y2, square(far_field_min_y_7_nodes), square(far_field_min_y_10_nodes),
+                                 square(far_field_min_y_15_nodes), 20);
+    add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, t0, t1, out);
+  } else {
+    add_segment_moments_gauss<T, N_max>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  }
+}
+}  // namespace detail
+
+/// P beyond an end of [0, 1] and far from the segment compared with its
+/// length (segment_moments_beyond_end, J_downward): the poles z, z̄ at
+/// distance |z| from the midpoint in x = 2t − 1, in any direction (on the
+/// real axis too). The smallest |z| at which the N-point rule's bound (as
+/// above, now over every direction of the pole: bench/tools/
+/// far_field_bound.cpp --radius) is ≤ 2^−55: 49.3 (N = 7), 13.7 (N = 10),
+/// 5.04 (N = 15), 3.04 (N = 20), rounded up here. |z|² = 4 q(½)/a.
+inline constexpr double beyond_end_min_z_7_nodes = 50.0;
+inline constexpr double beyond_end_min_z_10_nodes = 14.0;
+inline constexpr double beyond_end_min_z_15_nodes = 5.1;
+inline constexpr double beyond_end_min_z_20_nodes = 3.1;
+/// Where the rule is used instead of the recurrence: |z| ≥ 14 (P at least
+/// 7 |AB| from the midpoint), not from 3.1 where the bound first allows it.
+/// Between 3.1 and 14 the recurrence's cancellation is below 8e-14 (measured
+/// above), and the rule did not do better on f: the verifier's default sweep
+/// measured 1.0e-13 for inverse i = 2, weights t³, at |z| ≈ 6.9 (generic
+/// region) with the rule, 5.1e-14 with the recurrence, 9.6e-15 with an exact
+/// preamble (the error there comes from the rounded q_near, b_near, which
+/// both forms inherit). Lower this once the preamble computes them exactly.
+inline constexpr double beyond_end_rule_min_z = 14.0;
+namespace detail {
+/// M_{k,m} on [0, 1] (layout of segment_moments_gauss) for P beyond an end,
+/// by the rule with the fewest nodes the bound above allows, when it allows
+/// one (|z| ≥ beyond_end_rule_min_z = 14, P at least 7 |AB| from the midpoint); false (out
+/// untouched) otherwise. q is formed from the near end, q = q_near + σ(aσ − 2 b_near)
+/// with σ the distance in t from that end and b_near < 0 (b beyond A,
+/// a − b beyond B): a sum of positive terms.
+///
+/// Why: beyond an end the downward recurrences are stable, but away from
+/// the segment the far end's boundary term (σ = 1) is as large as the near
+/// end's and cancels against the k b_near M_{k−1} term: 1.5e-11 measured by
+/// the verifier for Cauchy i = 7, weights t³, 30 |AB| beyond B; measured on
+/// M_{k,m}, k ≤ 3, m = 7, 9 against long double quadrature: up to 1.1e-10
+/// for |z| ≤ 60, and still 8e-14 at |z| ≈ 14, while the recurrence stays at
+/// ≤ 5e-15 for |z| < 3.1 and the rule at ≤ 5e-15 beyond. The rule adds
+/// positive terms only; it also replaces the recurrence's up to ~110 steps
+/// (ρ near 7/10) by 7–20 nodes.
+template <class T>
+bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b_near, const T& q_near,
+                              const T& q_far, bool beyond_B, T* out) {
+  if constexpr (std::numeric_limits<T>::digits > 53) return false;  // the radii are for double's rounding
+  // |z|² = 4 q(½)/a, q(½) = (q(0) + q(1))/2 − a/4
+  const T z2 = T(2) * (q_near + q_far) / a - T(1);
+  auto square = [](double r) { return r * r; };
+  if (!(z2 >= T(square(beyond_end_rule_min_z)))) return false;
+  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
+  for (int i = 0; i < count; ++i) out[i] = T(0);
+  auto q_at = [&](const T& t) {
+    const T sigma = beyond_B ? T(1) - t : t;
+    return q_near + sigma * (a * sigma - T(2) * b_near);
+  };
+  const int nodes = rule_nodes(z2, square(beyond_end_min_z_7_nodes), square(beyond_end_min_z_10_nodes),
+                               square(beyond_end_min_z_15_nodes), 20);
+  add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, T(0), T(1), out);
+  return true;
+}
+}  // namespace detail
+
+/// Writes M_{k,m} for k = 0…k_max and m = m_lo, m_lo + 2, …, m_hi to
+/// out[((m − m_lo)/2)(k_max + 1) + k] by Gauss–Legendre on [t0, t1]:
+///  * m_lo ≤ 0 (compact kernels): the N-point rule, exact for a polynomial
+///    integrand (even degrees) and exact to double's rounding for odd
+///    degrees where the generator calls it (q's roots at least |AB|/4
+///    beyond both ends: 20 nodes, Bernstein ρ ≥ 2.6; or the sine map, 30);
+///    types wider than 64 bits take 2N nodes there (N ≥ 20), which their
+///    rounding needs (measured: binary128 ∇f 2e-19 with 20 nodes);
+///  * m_lo > 0 (inverse and Cauchy kernels in the far field, poles off the
+///    interval): at most N nodes, fewer where the poles are far enough for
+///    the bound above (detail::add_far_field_moments).
+template <class T, unsigned N, NodeMap map = NodeMap::linear>
+void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c, const T& t0,
+                           const T& t1, T* out) {
+  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
+  for (int i = 0; i < count; ++i) out[i] = T(0);
+  auto q_at = [&](const T& t) {
+    using std::max;
+    return max(T(0), c + t * (a * t - 2 * b));
+  };
+  if (map == NodeMap::linear && m_lo > 0) {
+    detail::add_far_field_moments<T, N>(m_lo, m_hi, k_max, q_at, a, b, c, t0, t1, out);
+  } else {
+    constexpr unsigned nodes = N >= 20 && std::numeric_limits<T>::digits > 64 ? 2 * N : N;
+    add_segment_moments_gauss<T, nodes, decltype(q_at), map>(m_lo, m_hi, k_max, q_at, t0, t1, out);
+  }
+}
+
+/// M_{k,m} on [t0, t1] (layout of segment_moments_gauss, m ≤ 0: compact
+/// kernels) by the N-point rule after the sine map (NodeMap::sine), for an
+/// interval that a compact support may clip at an end. Every term is
+/// positive, so nothing cancels; the generated compact kernels of odd
+/// degree take it where the vertex t* of q lies far outside [0, 1], where
+/// the moment relations multiply rounding by ~|t*|/⟨t⟩ per step in k.
+template <class T, unsigned N>
+void segment_moments_gauss_sine(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c, const T& t0,
+                                const T& t1, T* out) {
+  segment_moments_gauss<T, N, NodeMap::sine>(m_lo, m_hi, k_max, a, b, c, t0, t1, out);
+}
+
+/// Nodes per panel of segment_moments_gauss_panels: on an accepted panel
+/// the rule errs by ~ρ^(−2N) ≤ 4^(−2N) times a factor for the poles' order
+/// (up to 6) and the weight t^k (k ≤ 10) growing off the interval;
+/// measured: that factor is ~1e9 (ρ = 3.1 left 1e-11 with N = 20), so
+/// 4^(−40) ≈ 8e-25 is ~1e-15 in double; N = 25 for long double, 40 for
+/// binary128 and wider (4^(−80) ≈ 7e-49).
+template <class T>
+constexpr unsigned gauss_panel_points() {
+  constexpr int digits = std::numeric_limits<T>::digits;
+  return digits <= 53 ? 20u : digits <= 64 ? 25u : 40u;
+}
+
+namespace detail {
+/// segment_moments_gauss_panels with the pole so close to the segment that
+/// q underflows there (closer than ~1e-154 |AB|, where the field is far
+/// outside the double range anyway): the integral is not resolvable in T.
+/// Throws NotConvergedError (the vector batches, src/simd/lanes-inl.hpp,
+/// specialise it to hand their lanes to the scalar path, which then throws).
+template <class T>
+void pole_too_close(const T& distance) {
+  throw NotConvergedError("Gauss panels: the pole of the kernel is " + std::to_string(static_cast<double>(distance)) +
+                          " from the segment (in units of |AB|): q underflows there");
+}
+}  // namespace detail
+
+/// Writes M_{k,m} = ∫_0^1 t^k q^(−m/2) dt (k = 0…k_max, m = m_lo, …, m_hi,
+/// m > 0) to out[((m − m_lo)/2)(k_max + 1) + k] for inverse and Cauchy
+/// kernels, by Gauss–Legendre on panels graded towards the roots
+/// z = t* ± i√D/a of q (t* = b/a). Inputs: a > 0, b, a − b and D = ac − b²
+/// ≥ 0, each formed without cancellation by the caller (a − b = −AB·BP).
+///
+/// Used where the closed forms cancel for high moments (the SCALIS weights
+/// τ(t)^(i−1), k ≤ 10): every node adds positive terms, so nothing cancels,
+/// and the panels make the rule exact to rounding by an a-priori bound:
+///  * the pivot is the point of [0, 1] nearest to t* (an end, or t*);
+///    every node is placed by its offset o = t − pivot, and q = (s² + D)/a
+///    with the slope s = a t − b = s_pivot + a o, s_pivot = −b at t = 0,
+///    a − b at t = 1 (exact inputs), ≈ 0 at t*: s_pivot and a o have the
+///    same sign, so s is a sum of like-signed terms, and the offsets keep
+///    their relative precision however small the panels near the pivot
+///    get. (Placing nodes by t itself rounds each to ~ε absolute: next to
+///    an end, a panel of width δ then integrates a kernel of width δ at
+///    nodes displaced by ε/δ of it, 2e-13 for a SCALIS segment of radius
+///    1e-3 |AB| seen from just beyond its end.)
+///  * the integrand's only singularities are the poles z, z̄ of order m/2;
+///    the distance from z to a real t is δ(t) = √(q(t)/a);
+///  * a panel [x, y] is accepted when z lies outside its Bernstein ellipse
+///    of parameter 4, i.e. s = (δ(x) + δ(y))/|y − x| ≥ (4 + 1/4)/2 = 17/8
+///    (Trefethen, Approximation Theory and Approximation Practice, ch. 19);
+///  * [0, 1] is one panel when accepted; otherwise panels start at the pivot
+///    and go outwards; each takes the rest of its side if that is accepted,
+///    else the length 0.9 δ(x) (accepted: δ grows away from t*, so
+///    s ≥ 2δ(x)/0.9δ(x));
+///  * δ grows by a factor ≥ 1.3 a panel, so a pole at distance ε from the
+///    segment costs ~log(1/ε)/log 1.3 panels per side (in practice δ nearly
+///    doubles); one or two panels when P is at least |AB|/2 from the line.
+/// If P is on the segment (D = 0, t* in [0, 1]) the integral diverges: +∞.
+/// If q underflows at the pivot (the pole closer than ~1e-154 |AB|, P on
+/// the line beyond an end), NotConvergedError (detail::pole_too_close).
+template <class T>
+void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& a_minus_b,
+                                  const T& D, T* out) {
+  using std::abs;
+  using std::sqrt;
+  constexpr unsigned N = gauss_panel_points<T>();
+  const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
+  for (int i = 0; i < count; ++i) out[i] = T(0);
+  const T zero(0), one(1);
+  const T t_star = b / a;
+  const bool before_A = t_star <= zero, beyond_B = t_star >= one;
+  const T pivot = before_A ? zero : beyond_B ? one : t_star;
+  const T slope_pivot = before_A ? -b : beyond_B ? a_minus_b : a * t_star - b;
+  // q and δ at the offset o = t − pivot.
+  auto q_at = [&](const T& o) {
+    const T s = slope_pivot + a * o;
+    return (s * s + D) / a;
+  };
+  auto delta = [&](const T& o) { return sqrt(q_at(o) / a); };
+  // The N-point rule on the panel of offsets [lo, hi].
+  auto add_panel = [&](const T& lo, const T& hi) {
+    const T half_width = (hi - lo) / 2;
+    const T middle = (lo + hi) / 2;
+    add_moments_at_nodes<T, N, NodeMap::linear>(
+        m_lo, m_hi, k_max,
+        [&](const T& x) {
+          const T o = middle + half_width * x;
+          return MomentNode<T>{pivot + o, q_at(o), half_width};
+        },
+        out);
+  };
+  const T offset_A = -pivot, offset_B = one - pivot;  // exact for pivot ≥ 1/2 (Sterbenz), else to ε
+  const T s_min = T(17) / T(8);
+  // Far from the segment one panel on [0, 1] is accepted: then it is used
+  // instead of two that meet at the pivot (half the cost).
+  if (!before_A && !beyond_B && delta(offset_A) + delta(offset_B) >= s_min) {
+    add_panel(offset_A, offset_B);
+    return;
+  }
+  if (D == zero && !before_A && !beyond_B) {  // P on the segment: the kernel's pole is on the path
+    for (int i = 0; i < count; ++i) out[i] = std::numeric_limits<T>::infinity();
+    return;
+  }
+  const T delta_pivot = delta(zero);
+  if (!(q_at(zero) >= T(std::numeric_limits<double>::min()))) {
+    detail::pole_too_close(delta_pivot);
+    return;
+  }
+  for (int side = 0; side <= 1; ++side) {
+    if ((side == 0 && before_A) || (side == 1 && beyond_B)) continue;  // the pivot is that end
+    const T end = side == 0 ? offset_A : offset_B;
+    const T delta_end = delta(end);
+    T x = zero;
+    T delta_x = delta_pivot;
+    while (x != end) {
+      T y = end;
+      if (delta_x + delta_end < s_min * abs(end - x)) {
+        const T step = T(9) / T(10) * delta_x;
+        y = side == 1 ? (x + step < end ? x + step : end) : (x - step > end ? x - step : end);
+      }
+      if (x < y)
+        add_panel(x, y);
+      else
+        add_panel(y, x);
+      x = y;
+      delta_x = delta(x);
+    }
+  }
+}
+
+}  // namespace skelconv

@@ -1,0 +1,90 @@
+// skelconv/detail/scaled_frame.hpp — a primitive-relative frame scaled by a power
+// of two, so that every primitive is evaluated at unit size whatever its
+// position and size (any scale, never silently wrong).
+//
+// A primitive of size L (any L that is a positive normal double, at
+// coordinates anywhere from 1e-150 to 1e150) is evaluated in the frame
+//
+//     x' = x · 2^−e,      e = ilogb(L)   (so L' = L 2^−e ∈ [1, 2)),
+//
+// where its squared lengths and the powers the closed forms take (|AB|^16,
+// s|AB|², …) can neither overflow nor underflow. The scaling is exact
+// (std::ldexp), and it commutes with every rounding of the closed forms
+// (each operation's result just scales by a power of two), so inside the
+// double range the frame gives bit-for-bit the old results, scaled. There is
+// no translation: the degeneracy rules (Segment::degenerate_length_ratio,
+// the polygon's edges) bound every coordinate of a valid primitive by 1e8 L,
+// so its frame coordinates stay below ~1e8, and a translation would round
+// each difference twice (x − O, then the closed form's own differences).
+// A query point P farther than ~2^1000 L from the origin overflows in the
+// frame, where the field is far outside the double range anyway.
+//
+// The field is brought back by the kernel's homogeneity (SPEC §1–4): a
+// quantity with units length^m is q' = q·2^(−m e) in the frame (the kernel
+// parameters too: the Cauchy s has m = −2, s' = s·2^(2e); R has m = 1), and
+// f = f'·2^(m e). The value power m of f:
+//
+//     segment  inverse p^i: m = 1 − i;   cauchy, compact: m = 1
+//     polygon  inverse p^i: m = 2 − i;   cauchy, compact: m = 2
+//     SCALIS   m = 0 (F is scale invariant when the radii scale too)
+//
+// and the gradient power is the value power minus one. Restoring is exact
+// (std::ldexp) when the result is a normal double. Where it is not, the
+// field of the given primitive at P is outside the double range (or lost
+// below it in the frame) and cannot be returned: restore() throws
+// EvaluationError naming the value as m·2^k, never a wrong number.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "skelconv/geometry.hpp"
+
+namespace skelconv {
+
+/// x' = x · 2^−exponent (see the file comment).
+class ScaledFrame {
+ public:
+  ScaledFrame() = default;
+  /// The frame in which a length `size` (> 0, finite) becomes size·2^−e ∈ [1, 2).
+  explicit ScaledFrame(double size);
+
+  /// e: a length l of the world is l·2^−e in the frame.
+  int exponent() const { return exponent_; }
+
+  /// A point (or vector) of the world in the frame: x·2^−e componentwise.
+  /// Not finite when it overflows (P ≳ 2^1000 sizes away).
+  Vec3 point(const Vec3& x) const;
+  /// A length of the world in the frame: l·2^−e.
+  double length(double l) const { return std::ldexp(l, -exponent_); }
+  /// A quantity of the world with units length^power, in the frame:
+  /// q·2^(−power·e) (e.g. power −2 for the Cauchy sharpness s).
+  double scaled(double q, int power) const { return std::ldexp(q, -power * exponent_); }
+
+  /// A frame value f' of a quantity with units length^power (the value
+  /// power of the file comment) back in the world: f'·2^(power·e).
+  /// +inf (the singular marker) stays +inf. Throws EvaluationError, naming
+  /// `what` and P, when f' is not finite, or when f' or the world value is
+  /// not a normal double (0, subnormal: digits lost; or overflow) — unless
+  /// `may_vanish` (a field that can be 0 or tiny: compact support, signed
+  /// weights), where a finite 0 or subnormal value is returned as it is.
+  double restore_value(double value, int power, bool may_vanish, const char* what, const Vec3& p) const;
+  /// A frame gradient back in the world: g'·2^(power·e) componentwise. The
+  /// largest component must come back a normal double (or all be 0); the
+  /// others may underflow (they are below 2^−1022 of |∇f| relative to it).
+  Vec3 restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const;
+
+ private:
+  int exponent_ = 0;
+};
+
+/// "1.2345678901234567e-400": m·2^k printed in decimal even where it is
+/// beyond the double range (for messages: lengths, areas and values of
+/// primitives scaled far from 1).
+std::string format_scaled(double mantissa, int power_of_two);
+
+/// |v| without overflow or underflow of the squares (std::hypot), for
+/// checks and messages at any scale. Overflows only when |v| itself does.
+inline double scale_safe_norm(const Vec3& v) { return std::hypot(v.x(), v.y(), v.z()); }
+
+}  // namespace skelconv

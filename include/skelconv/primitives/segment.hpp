@@ -1,0 +1,134 @@
+// skelconv/primitives/segment.hpp — the segment primitive: a convolution surface field
+// of a weighted line segment (SPEC §2, Hubert 2012 §3).
+//
+//     f(P) = |AB| ∫_0^1 w(t) K(|P − Γ(t)|) dt,   Γ(t) = A + t (B − A)
+//
+// with the kernel K of a KernelSpec and the weight polynomial
+// w(t) = Σ_k w_k t^k (k ≤ 3). The closed forms live in the generated table
+// (docs/generated_api.md); this class validates its inputs once, picks the
+// generated function, and handles the two cases the generated code must not
+// see:
+//   - finite-support kernels (compact, soft, wyvill: the trait's
+//     support_radius R): P farther than R from the whole segment. The clip of
+//     [A,B] to the ball of radius R around P (skelconv/detail/clip.hpp) is empty,
+//     and f = 0, ∇f = 0 exactly.
+//   - kernels singular at 0 (inverse): P on the segment itself. The integrand r^(-i) is not
+//     integrable there (i ≥ 1), f = +∞. By convention value() returns +inf
+//     and gradient() returns (+inf, +inf, +inf): there is no meaningful
+//     direction, and +inf (never NaN) keeps sums of fields well defined.
+//     "On the segment" is decided exactly on the doubles given:
+//     AB × AP == 0 (all three components) and 0 ≤ AB·AP ≤ |AB|², i.e. the
+//     projection parameter t = AB·AP / |AB|² lies in [0, 1].
+//     For a weight that is positive there, +inf is the limit of f as P
+//     approaches the segment; for other weights it is just the marker.
+// Everything else goes to the generated code, evaluated in the segment's
+// own frame (skelconv/detail/scaled_frame.hpp): coordinates scaled by a power of
+// two that brings |AB| into [1, 2), s and R scaled with it, so that segments at any
+// position and of any normal length give the same relative accuracy; f and
+// ∇f are scaled back exactly by the kernel's homogeneity. Its result is
+// checked: the field is finite there, so a NaN or ±inf result (a closed
+// form failing, e.g. for a point within ~1e-100 |AB| of the segment) or a
+// value outside the double range (f underflowing far from the segment, or
+// overflowing near a tiny one) throws EvaluationError instead of being
+// returned.
+#pragma once
+
+#include <array>
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "skelconv/errors.hpp"
+#include "skelconv/geometry.hpp"
+#include "skelconv/kernels/kernel_spec.hpp"
+#include "skelconv/detail/scaled_frame.hpp"
+#include "skelconv/primitives/segment_input.hpp"
+
+namespace skelconv {
+
+namespace generated {
+template <class T>
+struct SegmentKernel;  // generated/segment_table.hpp, only used by pointer here
+}  // namespace generated
+
+class Segment {
+ public:
+  /// Most weight coefficients w_0 … w_3 (weight degree ≤ max_weight_degree).
+  static constexpr std::size_t max_weight_coefficients = max_weight_degree + 1;
+
+  /// A segment is degenerate, and rejected, when |B − A| is below this
+  /// fraction of its largest coordinate magnitude max(|A|∞, |B|∞): the end
+  /// points are then known to fewer than ~8 significant digits relative to
+  /// the segment's own length (a double coordinate carries a relative error
+  /// of 1.1e-16 of its magnitude), and the closed forms, which divide by |AB|²
+  /// and by AB-relative quantities, would lose the rest. |B − A| = 0, and
+  /// lengths whose square is not a normal double, are rejected as well.
+  static constexpr double degenerate_length_ratio = 1e-8;
+
+  /// Validates everything and looks up the generated kernel (or the derived
+  /// one of a family without a degree, derived_segment_kernels.hpp); throws
+  /// InputError naming the offending field ("a", "b", "weight",
+  /// "kernel.degree", "kernel.s", "kernel.R") and the problem.
+  /// `weight` lists w_0 … w_d (1 to 4 coefficients, finite, not all zero);
+  /// trailing zeros are dropped, so {1, 0.5, 0} uses the cheaper linear-weight
+  /// closed form. Default: w(t) = 1.
+  Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel,
+          std::span<const double> weight);
+  Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel,
+          std::initializer_list<double> weight = {1.0})
+      : Segment(a, b, kernel, std::span<const double>(weight.begin(), weight.size())) {}
+
+  const Vec3& a() const { return a_; }
+  const Vec3& b() const { return b_; }
+  const KernelSpec& kernel() const { return kernel_; }
+  /// w_0 … w_d with trailing zeros dropped (d = weight_degree()).
+  std::span<const double> weight() const { return {input_.w.data(), std::size_t(weight_degree_ + 1)}; }
+  int weight_degree() const { return weight_degree_; }
+  /// Name of the generated function in use, e.g. "segment_cauchy_i4_w1".
+  std::string generated_name() const;
+
+  /// The kernel degrees i the generated table offers for `family` with a
+  /// weight of degree `weight_degree`, ascending (docs/generated_api.md).
+  static std::vector<int> supported_degrees(KernelFamily family, int weight_degree = 0);
+
+  /// f(P). Throws InputError if P is not finite, EvaluationError if the
+  /// closed form fails in double precision (see the file comment).
+  double value(const Vec3& p) const;
+  /// ∇f(P), same rules as value().
+  Vec3 gradient(const Vec3& p) const;
+  /// f(P) and ∇f(P) together; cheaper than both calls (shared terms).
+  FieldSample value_and_gradient(const Vec3& p) const;
+
+ private:
+  /// What an evaluation at P has to do (see the file comment).
+  enum class Case {
+    call_generated,          ///< the closed form applies; input is filled in
+    outside_compact_support, ///< compact kernel, P farther than R: f = 0
+    on_inverse_singularity,  ///< inverse kernel, P on the segment: f = +inf
+  };
+  Case prepare(const Vec3& p, SegmentInput<double>& input) const;
+
+  /// f' of the frame → f (and ∇f, with value_power_ − 1), see scaled_frame.hpp.
+  double restore_value(double f, const Vec3& p) const;
+  Vec3 restore_gradient(const std::array<double, 3>& g, const Vec3& p) const;
+
+  Vec3 a_, b_;
+  KernelSpec kernel_;
+  int weight_degree_ = 0;
+  /// The segment's frame: |AB| scaled into [1, 2).
+  ScaledFrame frame_;
+  /// f has units length^value_power_: 1 − i (inverse) or 1.
+  int value_power_ = 1;
+  /// f can be 0 or tiny (compact kernel, a negative weight coefficient);
+  /// otherwise f > 0 and a 0 or subnormal result is an underflow (an error).
+  bool may_vanish_ = false;
+  /// Everything but P (and the compact clip interval), filled once, in the frame.
+  SegmentInput<double> input_;
+  const generated::SegmentKernel<double>* generated_ = nullptr;
+  /// From the kernel's trait: K = 0 beyond this (+inf: no clip), and K(0) = +inf.
+  double support_radius_ = 0.0;
+  bool singular_at_zero_ = false;
+};
+
+}  // namespace skelconv

@@ -1,0 +1,156 @@
+// Implementation of skelconv/primitives/scalis_segment.hpp.
+#include "skelconv/primitives/scalis_segment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "generated/scalis_segment_table.hpp"
+#include "../detail/convergence_guard.hpp"
+#include "../detail/input_checks.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/primitives/scalis_compact.hpp"
+#include "skelconv/detail/scaled_frame.hpp"
+#include "skelconv/primitives/segment.hpp"  // Segment::degenerate_length_ratio
+#include "../detail/infinity.hpp"
+
+namespace skelconv {
+namespace {
+
+}  // namespace
+
+double ScalisSegment::normalisation(KernelFamily family, int degree, double sigma) {
+  return kernels::with_trait<kernels::on_scalis>(
+      family, [&](auto trait) { return decltype(trait)::type::scalis_line_normalisation(degree, sigma); });
+}
+
+std::vector<int> ScalisSegment::supported_degrees(KernelFamily family) {
+  std::vector<int> degrees;
+  if (family == KernelFamily::compact) {
+    for (int i = min_compact_degree; i <= max_compact_degree; ++i) degrees.push_back(i);
+    return degrees;
+  }
+  for (const auto& kernel : generated::scalis_segment_kernels<double>())
+    if (kernel.family == family) degrees.push_back(kernel.degree);
+  std::sort(degrees.begin(), degrees.end());
+  return degrees;
+}
+
+ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double tau1, const ScalisKernel& kernel,
+                             double iso)
+    : a_(a), b_(b), tau0_(tau0), tau1_(tau1), kernel_(kernel), iso_(iso) {
+  detail::require_finite_point(a, "a");
+  detail::require_finite_point(b, "b");
+  detail::require_non_degenerate(a, b, Segment::degenerate_length_ratio);
+  detail::require_scalis_radius(tau0, 0);
+  detail::require_scalis_radius(tau1, 1);
+  if (tau0 == 0.0 && tau1 == 0.0) {
+    throw InputError("both radii are zero: the SCALIS field of a segment of radius 0 is not defined", "radius");
+  }
+  detail::require_convolution_family(kernel.family, "scalis_segment");
+  detail::require_scalis_sigma(kernel.family, kernel.sigma);
+  detail::require_positive_parameter(iso, "iso");
+
+  const std::vector<int> degrees = supported_degrees(kernel.family);
+  if (std::find(degrees.begin(), degrees.end(), kernel.degree) == degrees.end()) {
+    throw InputError(fmt::format("unsupported degree {} for the SCALIS {} family; supported: {}", kernel.degree,
+                                 family_name(kernel.family), detail::format_degree_ranges(degrees)),
+                     "kernel.degree");
+  }
+  if (kernel.family != KernelFamily::compact) {
+    generated_ = generated::find_scalis_segment_kernel<double>(kernel.family, kernel.degree);
+    name_ = generated_->name;
+  }
+  const kernels::ScalisSingularity singularity = kernels::with_trait<kernels::on_scalis>(
+      kernel.family, [](auto trait) { return decltype(trait)::type::scalis_singularity; });
+  diverges_on_segment_ = singularity == kernels::ScalisSingularity::on_segment;
+  diverges_at_zero_radius_ = singularity == kernels::ScalisSingularity::at_zero_radius;
+
+  // The segment's frame (skelconv/detail/scaled_frame.hpp): F is scale invariant
+  // when the radii scale with the coordinates, so F' = F and ∇F = ∇'F'·2^−e.
+  frame_ = ScaledFrame(scale_safe_norm(b - a));
+  input_.a = to_array(frame_.point(a));
+  input_.b = to_array(frame_.point(b));
+  input_.tau0 = frame_.length(tau0);
+  input_.tau1 = frame_.length(tau1);
+  input_.sigma = kernel.sigma;
+  normalisation_ = normalisation(kernel.family, kernel.degree, kernel.sigma);
+  evaluation_normalisation_ = normalisation_;
+  if (kernel.family == KernelFamily::inverse) {
+    // K(d) = (d/σ)^−i = σ^i d^−i and h = σ^i W_i: σ^i cancels exactly, so
+    // evaluate at σ = 1 (σ^i may be outside the double range).
+    input_.sigma = 1.0;
+    evaluation_normalisation_ = normalisation(kernel.family, kernel.degree, 1.0);
+  }
+  field_scale_ = iso_ / evaluation_normalisation_;
+  if (!std::isnormal(evaluation_normalisation_)) {
+    throw InputError(fmt::format("the normalisation h of the SCALIS {} kernel of degree {} is {} for sigma = {}, "
+                                 "outside the normal range of double precision: choose sigma nearer 1",
+                                 family_name(kernel.family), kernel.degree, evaluation_normalisation_, kernel.sigma),
+                     "kernel.sigma");
+  }
+}
+
+std::string ScalisSegment::evaluator_name() const { return name_; }
+
+bool ScalisSegment::is_divergent_point(const Vec3& p, const Vec3& frame_p) const {
+  if (diverges_on_segment_) {
+    // P on the closed segment, exactly on the frame's doubles (as Segment does).
+    const Vec3 ab = to_vec3(input_.b) - to_vec3(input_.a);
+    const Vec3 ap = frame_p - to_vec3(input_.a);
+    const double projection = ab.dot(ap);
+    return ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm();
+  }
+  if (diverges_at_zero_radius_) return (tau0_ == 0.0 && p == a_) || (tau1_ == 0.0 && p == b_);
+  return false;  // compact: left to scalis_compact_F
+}
+
+double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double, 3>* grad) const {
+  if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", detail::format_point(p)));
+  const Vec3 frame_p = frame_.point(p);
+  if (!frame_p.allFinite()) {
+    throw EvaluationError(fmt::format("P = {} is too far from the SCALIS segment (more than ~2^1000 times its "
+                                      "length from the origin): the field is outside the range of double precision",
+                                      detail::format_point(p)));
+  }
+  if (is_divergent_point(p, frame_p)) {
+    if (grad != nullptr) *grad = {infinity, infinity, infinity};
+    return infinity;
+  }
+  ScalisSegmentInput<double> input = input_;
+  input.p = to_array(frame_p);
+  const double F = detail::evaluate_converged(name_, p, [&] {
+    if (generated_ == nullptr) return scalis_compact_F(kernel_.degree, input, grad);
+    if (grad == nullptr) return generated_->f(input);
+    if (!want_value) {
+      *grad = generated_->grad(input);
+      return 0.0;
+    }
+    return generated_->f_and_grad(input, *grad);
+  });
+  // Normalised in the frame, then brought back (F is scale invariant, ∇F
+  // has units length^−1); a result outside the double range is an error.
+  const bool may_vanish = kernel_.family == KernelFamily::compact;  // outside its support
+  const double scale = field_scale_;
+  if (grad != nullptr) *grad = to_array(frame_.restore_gradient(scale * to_vec3(*grad), -1, name_, p));
+  return want_value ? frame_.restore_value(scale * F, 0, may_vanish, name_, p) : 0.0;
+}
+
+double ScalisSegment::value(const Vec3& p) const { return evaluate(p, true, nullptr); }
+
+Vec3 ScalisSegment::gradient(const Vec3& p) const {
+  std::array<double, 3> g{};
+  evaluate(p, false, &g);
+  return to_vec3(g);
+}
+
+FieldSample ScalisSegment::value_and_gradient(const Vec3& p) const {
+  std::array<double, 3> g{};
+  const double f = evaluate(p, true, &g);
+  return {f, to_vec3(g)};
+}
+
+}  // namespace skelconv

@@ -1,0 +1,185 @@
+// Implementation of skelconv/primitives/segment.hpp.
+#include "skelconv/primitives/segment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "skelconv/kernels/segment_kernel_tables.hpp"
+#include "../detail/convergence_guard.hpp"
+#include "../detail/input_checks.hpp"
+#include "skelconv/detail/clip.hpp"
+#include "../detail/infinity.hpp"
+
+namespace skelconv {
+namespace {
+
+using detail::format_degree_ranges;
+using detail::format_point;
+
+/// Degree of w(t) = Σ w_k t^k after dropping trailing zero coefficients.
+int validated_weight_degree(std::span<const double> weight) {
+  if (weight.empty()) throw InputError("needs at least one coefficient", "weight");
+  if (weight.size() > Segment::max_weight_coefficients) {
+    throw InputError(fmt::format("at most {} coefficients (w(t) of degree <= {}), got {}",
+                                 Segment::max_weight_coefficients, max_weight_degree, weight.size()),
+                     "weight");
+  }
+  int degree = -1;
+  for (std::size_t k = 0; k < weight.size(); ++k) {
+    if (!std::isfinite(weight[k])) {
+      throw InputError(fmt::format("must be finite, got {}", weight[k]), fmt::format("weight[{}]", k));
+    }
+    if (weight[k] != 0.0) degree = int(k);
+  }
+  if (degree < 0) throw InputError("all coefficients are zero: the primitive would contribute nothing", "weight");
+  return degree;
+}
+
+}  // namespace
+
+Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::span<const double> weight)
+    : a_(a), b_(b), kernel_(kernel) {
+  detail::require_finite_point(a, "a");
+  detail::require_finite_point(b, "b");
+  detail::require_non_degenerate(a, b, degenerate_length_ratio);
+  weight_degree_ = validated_weight_degree(weight);
+  detail::require_convolution_family(kernel.family, "segment");
+  detail::require_valid_kernel_parameter(kernel);
+
+  const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
+  generated_ = find_any_segment_kernel<double>(kernel.family, kernel.degree, weight_degree_);
+  if (generated_ == nullptr) {
+    const std::string family = std::string(family_name(kernel.family));
+    throw InputError(
+        weight_degree_ == 0
+            ? fmt::format("unsupported degree {} for the {} family; supported: {}", kernel.degree, family,
+                          format_degree_ranges(supported_degrees(kernel.family, 0)))
+            : fmt::format("unsupported degree {} for the {} family with a weight of degree {}; supported: {}",
+                          kernel.degree, family, weight_degree_,
+                          format_degree_ranges(supported_degrees(kernel.family, weight_degree_))),
+        "kernel.degree");
+  }
+
+  // The frame (scaled_frame.hpp): the kernel parameters scale with the
+  // lengths, s as length^−2 and R as length.
+  frame_ = ScaledFrame(scale_safe_norm(b - a));
+  value_power_ = kernel.family == KernelFamily::inverse ? 1 - kernel.degree : 1;
+  // A positive kernel and weight give f > 0, so a 0 there is an underflow;
+  // except beyond a finite support, and far from a Gaussian, whose field
+  // underflows with exp(−a d²) (0 is then its correctly rounded value).
+  may_vanish_ = std::isfinite(kernels::support_radius(kernels::make_radial_kernel(kernel))) ||
+                kernel.family == KernelFamily::gaussian ||
+                std::any_of(weight.begin(), weight.end(), [](double w) { return w < 0.0; });
+  input_.a = to_array(frame_.point(a));
+  input_.b = to_array(frame_.point(b));
+  input_.w = {0.0, 0.0, 0.0, 0.0};
+  for (int k = 0; k <= weight_degree_; ++k) input_.w[std::size_t(k)] = weight[std::size_t(k)];
+  input_.s = frame_.scaled(kernel.s, -2);
+  input_.R = frame_.scaled(kernel.R, 1);
+  input_.gaussian_a = frame_.scaled(kernel.a, -2);  // exp(−a d²): a has units length^−2
+  input_.gaussian_b = kernel.b;                      // K(0): no units
+  support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
+  singular_at_zero_ = facts.singular_at_zero;
+  if (kernel.family == KernelFamily::cauchy) {
+    detail::require_normal_in_frame(input_.s, "s in units of the segment's length (s·4^e, 2^e <= |b - a| < 2^(e+1))",
+                                    "kernel.s");
+  }
+  if (std::isfinite(support_radius_)) {
+    detail::require_normal_in_frame(input_.R, "R in units of the segment's length (R·2^-e, 2^e <= |b - a| < 2^(e+1))",
+                                    "kernel.R");
+  }
+  if (kernel.family == KernelFamily::gaussian) {
+    detail::require_normal_in_frame(input_.gaussian_a,
+                                    "a in units of the segment's length (a·4^e, 2^e <= |b - a| < 2^(e+1))", "kernel.a");
+  }
+}
+
+std::string Segment::generated_name() const { return generated_->name; }
+
+std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degree) {
+  std::vector<int> degrees;
+  if (!kernels::family_facts(family).has_degree) return degrees;  // no degree (derived_segment_kernels.hpp)
+  for (const auto& kernel : generated::segment_kernels<double>()) {
+    if (kernel.family == family && kernel.weight_degree == weight_degree) degrees.push_back(kernel.degree);
+  }
+  std::sort(degrees.begin(), degrees.end());
+  return degrees;
+}
+
+Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const {
+  detail::require_finite_query_point(p);
+  input = input_;
+  const Vec3 frame_p = frame_.point(p);
+  if (!frame_p.allFinite()) {
+    throw EvaluationError(fmt::format("P = {} is too far from the segment (more than ~2^1000 times its length "
+                                      "from the origin): the field is outside the range of double precision",
+                                      format_point(p)));
+  }
+  input.p = to_array(frame_p);
+
+  if (singular_at_zero_) {
+    // Exact test on the frame's doubles (see the file comment of segment.hpp).
+    const Vec3 ab = to_vec3(input.b) - to_vec3(input.a);
+    const Vec3 ap = frame_p - to_vec3(input.a);
+    const double projection = ab.dot(ap);  // t |AB|²
+    if (ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm()) {
+      return Case::on_inverse_singularity;
+    }
+  }
+  if (std::isfinite(support_radius_)) {
+    // Hubert 2012 §3.4: only the part of [A,B] inside the ball of radius R
+    // around P contributes; the generated code integrates over [t0, t1].
+    const std::optional<ParameterInterval<double>> inside = clip_to_ball(input.a, input.b, input.p, input.R);  // R in the frame
+    if (!inside) return Case::outside_compact_support;
+    input.t0 = inside->t0;
+    input.t1 = inside->t1;
+  }
+  return Case::call_generated;
+}
+
+double Segment::restore_value(double f, const Vec3& p) const {
+  return frame_.restore_value(f, value_power_, may_vanish_, generated_->name, p);
+}
+
+Vec3 Segment::restore_gradient(const std::array<double, 3>& g, const Vec3& p) const {
+  return frame_.restore_gradient(to_vec3(g), value_power_ - 1, generated_->name, p);
+}
+
+double Segment::value(const Vec3& p) const {
+  SegmentInput<double> input;
+  switch (prepare(p, input)) {
+    case Case::outside_compact_support: return 0.0;
+    case Case::on_inverse_singularity: return infinity;
+    case Case::call_generated: break;
+  }
+  return restore_value(detail::evaluate_converged(generated_->name, p, [&] { return generated_->f(input); }), p);
+}
+
+Vec3 Segment::gradient(const Vec3& p) const {
+  SegmentInput<double> input;
+  switch (prepare(p, input)) {
+    case Case::outside_compact_support: return Vec3::Zero();
+    case Case::on_inverse_singularity: return Vec3::Constant(infinity);
+    case Case::call_generated: break;
+  }
+  return restore_gradient(detail::evaluate_converged(generated_->name, p, [&] { return generated_->grad(input); }), p);
+}
+
+FieldSample Segment::value_and_gradient(const Vec3& p) const {
+  SegmentInput<double> input;
+  switch (prepare(p, input)) {
+    case Case::outside_compact_support: return {0.0, Vec3::Zero()};
+    case Case::on_inverse_singularity: return {infinity, Vec3::Constant(infinity)};
+    case Case::call_generated: break;
+  }
+  std::array<double, 3> g{};
+  const double f = detail::evaluate_converged(generated_->name, p, [&] { return generated_->f_and_grad(input, g); });
+  return {restore_value(f, p), restore_gradient(g, p)};
+}
+
+}  // namespace skelconv

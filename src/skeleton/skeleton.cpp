@@ -1,0 +1,342 @@
+// Implementation of skelconv/skeleton/skeleton.hpp.
+#include "skelconv/skeleton/skeleton.hpp"
+
+#include <limits>
+#include <span>
+#include <type_traits>
+
+#include <fmt/format.h>
+
+#include "skeleton_index.hpp"
+#include "../detail/input_checks.hpp"
+#include "skelconv/field/support_box.hpp"
+#include "../detail/infinity.hpp"
+
+namespace skelconv {
+namespace {
+
+ScalarSample<double> to_scalar(const FieldSample& s) { return {s.value, to_array(s.gradient)}; }
+FieldSample from_scalar(const ScalarSample<double>& s) { return {s.value, to_vec3(s.gradient)}; }
+
+/// +inf with gradient (+inf, +inf, +inf): an inverse primitive on its own
+/// skeleton somewhere below (blend.hpp, "Markers").
+bool is_marker(const FieldSample& s) { return s.value == infinity || s.gradient.x() == infinity; }
+
+/// A blend of finite children must be finite: otherwise it overflowed
+/// double (a weight times a huge value, a large power), which is an
+/// EvaluationError located at the node, never a value that could pass for
+/// the +inf marker. Only the parts `need` asked for are checked.
+void require_finite_blend(const FieldSample& result, bool value_wanted, bool gradient_wanted,
+                          const char* location, const Vec3& p) {  // a C string: no std::string per evaluation
+  if ((!value_wanted || std::isfinite(result.value)) && (!gradient_wanted || result.gradient.allFinite())) return;
+  throw EvaluationError(fmt::format("the blend overflowed double precision at P = {} (value {}, gradient {})",
+                                    detail::format_point(p), result.value, detail::format_point(result.gradient)),
+                        location);
+}
+
+}  // namespace
+
+Skeleton::Skeleton() : nodes_{Node{Blend::sum(), {}, ""}}, cache_(std::make_shared<detail::IndexCache>()) {}
+
+Skeleton::Skeleton(std::vector<Primitive> primitives, double iso) : Skeleton() {
+  set_iso(iso);
+  for (Primitive& primitive : primitives) add(std::move(primitive));
+}
+
+Skeleton::Skeleton(Skeleton&& other) : Skeleton() { swap(other); }
+
+Skeleton& Skeleton::operator=(Skeleton&& other) {
+  Skeleton taken(std::move(other));
+  swap(taken);
+  return *this;
+}
+
+void Skeleton::swap(Skeleton& other) noexcept {
+  primitives_.swap(other.primitives_);
+  primitive_locations_.swap(other.primitive_locations_);
+  nodes_.swap(other.nodes_);
+  std::swap(iso_, other.iso_);
+  cache_.swap(other.cache_);
+}
+
+std::string Skeleton::child_location(NodeId parent) const {
+  const std::size_t position = nodes_[parent].children.size();
+  return parent == root ? fmt::format("primitives[{}]", position)
+                        : fmt::format("{}.children[{}]", nodes_[parent].location, position);
+}
+
+void Skeleton::changed() { cache_ = std::make_shared<detail::IndexCache>(); }
+
+std::size_t Skeleton::add(Primitive primitive, NodeId parent) {
+  if (parent >= nodes_.size()) throw InputError(fmt::format("no blend node {} in this skeleton", parent));
+  primitive_locations_.push_back(child_location(parent));
+  primitives_.push_back(std::move(primitive));
+  nodes_[parent].children.push_back({false, primitives_.size() - 1});
+  changed();
+  return primitives_.size() - 1;
+}
+
+Skeleton::NodeId Skeleton::add_blend(Blend blend, NodeId parent) {
+  if (parent >= nodes_.size()) throw InputError(fmt::format("no blend node {} in this skeleton", parent));
+  nodes_.push_back(Node{std::move(blend), {}, child_location(parent)});
+  nodes_[parent].children.push_back({true, nodes_.size() - 1});
+  changed();
+  return nodes_.size() - 1;
+}
+
+void Skeleton::set_iso(double iso) {
+  detail::require_positive_parameter(iso, "iso");
+  iso_ = iso;
+}
+
+void Skeleton::validate() const {
+  for (NodeId id = 1; id < nodes_.size(); ++id) {  // the root may be empty: f = 0
+    try {
+      validate_blend(nodes_[id].blend, nodes_[id].children.size());
+    } catch (const InputError& error) {
+      throw error.inside(nodes_[id].location);
+    }
+  }
+}
+
+void Skeleton::prepare() const {
+  // A reference, not a copy of the shared_ptr: its reference count would be
+  // one cache line that every thread of a batch writes at every point.
+  detail::IndexCache& cache = *cache_;
+  if (cache.built.load(std::memory_order_acquire)) return;
+  std::call_once(cache.once, [&] {
+    validate();
+    auto index = std::make_unique<detail::SkeletonIndex>();
+    index->grids.resize(nodes_.size());
+    for (NodeId id = 0; id < nodes_.size(); ++id) {
+      const Node& node = nodes_[id];
+      // Every sum, union and plain super-elliptic node: a child outside its
+      // support is an exact zero in each (docs/field.md, "Union and
+      // super-elliptic nodes"). The angle-weighted blend has two children.
+      if (node.blend.angle_weighted || node.children.size() < min_indexed_children) continue;
+      std::vector<std::optional<SupportBox>> boxes;
+      bool any_bounded = false;
+      for (const Child& child : node.children) {
+        boxes.push_back(child.is_blend ? std::nullopt : support_box(primitives_[child.index]));
+        any_bounded = any_bounded || boxes.back().has_value();
+      }
+      if (any_bounded) index->grids[id].emplace(boxes);
+    }
+    cache.index = std::move(index);
+    cache.built.store(true, std::memory_order_release);
+  });
+}
+
+const detail::SkeletonIndex* Skeleton::index_for(Acceleration acceleration) const {
+  prepare();  // validates, even for the plain evaluation
+  return acceleration == Acceleration::indexed ? cache_->index.get() : nullptr;
+}
+
+FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration acceleration) const {
+  // Checked once here, so that a bad point is not blamed on a primitive.
+  detail::require_finite_query_point(p);
+  return evaluate_node(root, p, need, index_for(acceleration));
+}
+
+double Skeleton::value(const Vec3& p) const { return evaluate(p, Need::value, Acceleration::indexed).value; }
+
+Vec3 Skeleton::gradient(const Vec3& p) const {
+  return evaluate(p, Need::gradient, Acceleration::indexed).gradient;
+}
+
+FieldSample Skeleton::value_and_gradient(const Vec3& p) const {
+  return evaluate(p, Need::both, Acceleration::indexed);
+}
+
+FieldSample Skeleton::value_and_gradient(const Vec3& p, Acceleration acceleration) const {
+  return evaluate(p, Need::both, acceleration);
+}
+
+FieldSample Skeleton::evaluate_child(const Child& child, const Vec3& p, Need need,
+                                     const detail::SkeletonIndex* index) const {
+  return child.is_blend ? evaluate_node(child.index, p, need, index) : evaluate_leaf(child.index, p, need);
+}
+
+FieldSample Skeleton::evaluate_leaf(std::size_t k, const Vec3& p, Need need) const {
+  try {
+    return std::visit(
+        [&](const auto& primitive) -> FieldSample {
+          switch (need) {
+            case Need::value: return {primitive.value(p), Vec3::Zero()};
+            case Need::gradient: return {0.0, primitive.gradient(p)};
+            case Need::both: break;
+          }
+          return primitive.value_and_gradient(p);
+        },
+        primitives_[k]);
+  } catch (const InputError& error) {
+    throw error.inside(primitive_locations_[k]);
+  } catch (const EvaluationError& error) {
+    throw error.inside(primitive_locations_[k]);
+  }
+}
+
+FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const detail::SkeletonIndex* index) const {
+  const Node& node = nodes_[id];
+  switch (node.blend.kind) {
+    case BlendKind::sum:
+      return evaluate_sum(id, p, need, index);
+    case BlendKind::union_max:
+    case BlendKind::super_elliptic: {
+      if (node.blend.angle_weighted) return evaluate_angle_blend(id, p, need, index);
+      // Both operators need every child's value, and its gradient for ours.
+      // A child the index skips is an exact zero (f = 0, ∇f = 0), written
+      // in its place, so that the operator sees the same list as the plain
+      // evaluation (docs/field.md, "Union and super-elliptic nodes").
+      const Need child_need = need == Need::value ? Need::value : Need::both;
+      std::vector<ScalarSample<double>> children(node.children.size());
+      const auto evaluate_at = [&](std::size_t position) {
+        children[position] = to_scalar(evaluate_child(node.children[position], p, child_need, index));
+      };
+      const std::optional<SupportGrid>* grid = index != nullptr ? &index->grids[id] : nullptr;
+      if (grid != nullptr && grid->has_value()) {
+        (*grid)->for_each_active(p, evaluate_at);
+      } else {
+        for (std::size_t position = 0; position < node.children.size(); ++position) evaluate_at(position);
+      }
+      const std::span<const ScalarSample<double>> view(children);
+      if (node.blend.kind == BlendKind::union_max) return from_scalar(blend_union(view));  // one child's sample
+      const FieldSample result = from_scalar(blend_super_elliptic(node.blend, view));
+      if (!blend_detail::any_infinite(view)) {
+        require_finite_blend(result, need != Need::gradient, need != Need::value, node.location.c_str(), p);
+      }
+      return result;
+    }
+  }
+  return {};  // unreachable: every kind is handled above
+}
+
+FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const detail::SkeletonIndex* index) const {
+  const Node& node = nodes_[id];
+  FieldSample total;
+  bool marker = false;
+  const bool unweighted = node.blend.weights.empty();
+  // Left to right, from +0: the same additions whether or not the index
+  // skips children (their terms are exactly 0; x + 0 = x for every x the
+  // running total can hold, since it is never −0).
+  const auto add = [&](std::size_t position) {
+    const FieldSample term = evaluate_child(node.children[position], p, need, index);
+    marker = marker || is_marker(term);
+    if (unweighted) {  // weight 1: 1·x = x exactly, so the same sums without the products
+      total.value += term.value;
+      if (need != Need::value) total.gradient += term.gradient;  // else every term's gradient is 0
+      return;
+    }
+    const double weight = node.blend.weight_of(position);
+    total.value += weight * term.value;
+    total.gradient += weight * term.gradient;
+  };
+  const std::optional<SupportGrid>* grid = index != nullptr ? &index->grids[id] : nullptr;
+  if (grid != nullptr && grid->has_value()) {
+    (*grid)->for_each_active(p, add);
+  } else {
+    for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
+  }
+  if (marker) return {infinity, Vec3::Constant(infinity)};
+  require_finite_blend(total, need != Need::gradient, need != Need::value,
+                       id == root ? "primitives" : node.location.c_str(), p);
+  return total;
+}
+
+FieldSample Skeleton::evaluate_angle_blend(NodeId id, const Vec3& p, Need need,
+                                           const detail::SkeletonIndex* index) const {
+  const Node& node = nodes_[id];
+  const FieldSample first = evaluate_child(node.children[0], p, Need::both, index);
+  const FieldSample second = evaluate_child(node.children[1], p, Need::both, index);
+  const bool has_angle = first.gradient != Vec3::Zero() && second.gradient != Vec3::Zero();
+  if (need == Need::value || !has_angle || is_marker(first) || is_marker(second)) {
+    FieldSample result = from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first),
+                                                                        to_scalar(second), nullptr));
+    if (need == Need::value) result.gradient = Vec3::Zero();
+    if (!has_angle && need != Need::value && !is_marker(result)) {
+      // cos θ is the constant 0 here (blend.hpp): ∇a = 0, no Hessian needed.
+      const AngleHessianProducts<double> zero{};
+      result = from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &zero));
+    }
+    if (!is_marker(first) && !is_marker(second)) {
+      require_finite_blend(result, true, need != Need::value, node.location.c_str(), p);
+    }
+    return result;
+  }
+  // H_k v by a central difference of child k's exact gradient along v.
+  const double step = angle_hessian_step * (1.0 + p.cwiseAbs().maxCoeff());
+  const auto hessian_times = [&](const Child& child, const Vec3& v) {
+    const double length = v.norm();
+    // |v|² underflowing: the blend sees no angle either (blend.hpp), and
+    // ignores the product.
+    if (length == 0.0) return std::array<double, 3>{0.0, 0.0, 0.0};
+    const Vec3 u = v / length;
+    const Vec3 ahead = evaluate_child(child, p + step * u, Need::gradient, index).gradient;
+    const Vec3 behind = evaluate_child(child, p - step * u, Need::gradient, index).gradient;
+    const Vec3 product = (ahead - behind) * (length / (2.0 * step));
+    if (!product.allFinite()) {
+      throw EvaluationError(fmt::format("the angle-weighted blend's gradient needs the children's gradients within "
+                                        "{} of P = {}, and one is infinite there",
+                                        step, detail::format_point(p)),
+                            node.location);
+    }
+    return to_array(product);
+  };
+  const AngleHessianProducts<double> products{
+      hessian_times(node.children[0], first.gradient), hessian_times(node.children[0], second.gradient),
+      hessian_times(node.children[1], first.gradient), hessian_times(node.children[1], second.gradient)};
+  const FieldSample result =
+      from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &products));
+  require_finite_blend(result, true, true, node.location.c_str(), p);
+  return result;
+}
+
+namespace {
+
+/// a, the points a + (b − a) k / n for k = 1 … n − 1 (not b).
+void add_points_along(const Vec3& a, const Vec3& b, int n, std::vector<Vec3>& points) {
+  for (int k = 0; k < n; ++k) points.push_back(a + (b - a) * (double(k) / n));
+}
+
+/// Every vertex, the points along every edge of the closed polygon, and the
+/// points from each vertex towards the centroid.
+void add_polygon_points(std::span<const Vec3> vertices, int n, std::vector<Vec3>& points) {
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& v : vertices) centroid += v;
+  centroid /= double(vertices.size());
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    add_points_along(vertices[k], vertices[(k + 1) % vertices.size()], n, points);
+    // Towards the centroid, without the vertex itself (already added); for a
+    // non-convex polygon these may leave it, which only adds seeds.
+    for (int j = 1; j < n; ++j) points.push_back(vertices[k] + (centroid - vertices[k]) * (double(j) / n));
+  }
+  points.push_back(centroid);
+}
+
+}  // namespace
+
+std::vector<Vec3> Skeleton::skeleton_points(int per_element) const {
+  if (per_element < 1) throw InputError(fmt::format("per_element must be >= 1, got {}", per_element));
+  std::vector<Vec3> points;
+  for (const Primitive& primitive : primitives_) {  // every leaf of the tree
+    std::visit(
+        [&](const auto& p) {
+          using P = std::decay_t<decltype(p)>;
+          if constexpr (std::is_same_v<P, Segment> || std::is_same_v<P, ScalisSegment>) {
+            add_points_along(p.a(), p.b(), per_element, points);
+            points.push_back(p.b());
+          } else if constexpr (std::is_same_v<P, Polygon>) {
+            add_polygon_points(p.vertices(), per_element, points);
+          } else if constexpr (std::is_same_v<P, PointPrimitive>) {
+            points.push_back(p.center());
+          } else {
+            static_assert(std::is_same_v<P, ScalisTriangle>, "a new primitive type needs its skeleton points");
+            add_polygon_points(p.vertices(), per_element, points);
+          }
+        },
+        primitive);
+  }
+  return points;
+}
+
+}  // namespace skelconv
