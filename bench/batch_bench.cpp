@@ -1,5 +1,5 @@
 // bench/batch_bench.cpp — the batch (structure-of-arrays) API of
-// bench/batch_eval.hpp against the scalar loop (issue 5, §2 fourth bullet).
+// bench/batch_eval.hpp against the scalar loop.
 //   batch/<kernel>/scalar   one call per point through the generated table's
 //                           function pointer (what the runtime does today);
 //                           compact: skelconv::clip_to_ball with its branches,

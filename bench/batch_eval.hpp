@@ -1,6 +1,6 @@
 // bench/batch_eval.hpp — a batch API: one segment, many query points in
-// structure-of-arrays layout, f and ∇f for all of them (issue 5, §2 fourth
-// bullet). Proposed here, in bench/, until the runtime adopts it.
+// structure-of-arrays layout, f and ∇f for all of them.
+// Proposed here, in bench/, until the runtime adopts it.
 //
 // How it vectorises: the loop body is the generated scalar function itself,
 // instantiated on double and inlined (the kernel is a template argument, not

@@ -131,7 +131,7 @@ bool clip_compact_support(KernelFamily family, Input& in);
 /// Distance from p to the segment [bench_a, bench_b].
 double distance_to_segment(const Vec& p);
 
-/// The generic region of issue 15 (gsl_bench.cpp, instruction_counts.cpp):
+/// The generic region (gsl_bench.cpp, instruction_counts.cpp):
 /// 256 inputs at distance d |AB| (± 10 %) from the segment, every direction
 /// (beyond the ends too), for d in generic_region_distances. Compact kernels
 /// get R = 5 |AB| (every distance inside the support) and come clipped.
@@ -151,7 +151,7 @@ struct QuadratureResult {
 /// The adaptive rule: Boost.Math's gauss_kronrod<double, 61> (maximum depth
 /// 15), or GSL's gsl_integration_qag with the 61-point Gauss–Kronrod rule
 /// (GSL_INTEG_GAUSS61, up to 1,000 subintervals), what numerical skeleton
-/// libraries built on GSL use (issue 15).
+/// libraries built on GSL use.
 enum class AdaptiveRule { boost_gauss_kronrod_61, gsl_qag_61 };
 
 /// f(P) = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt and ∇f by `rule` (default Boost.Math's

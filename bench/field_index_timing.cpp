@@ -1,6 +1,6 @@
 // bench/field_index_timing.cpp — the field of many compact primitives on a
-// grid, with and without the runtime's bounding-volume index (issue 11 §3;
-// docs/field.md, "Measured").
+// grid, with and without the runtime's bounding-volume index
+// (docs/field.md, "Measured").
 //
 // One run measures, on the same skeleton and the same machine state:
 //   indexed, 1 thread    evaluate_batch over the full grid³ grid (cell

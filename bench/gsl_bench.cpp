@@ -1,5 +1,5 @@
 // bench/gsl_bench.cpp — the closed forms against the method numerical
-// skeleton libraries use (issue 15): GSL's adaptive QAG with the 61-point
+// skeleton libraries use: GSL's adaptive QAG with the 61-point
 // Gauss–Kronrod rule (gsl_integration_qag, GSL_INTEG_GAUSS61), relative
 // tolerance 1e-8 or 1e-12, four integrals (f and the three components of
 // ∇f), at distances 0.1, 0.3, 1 and 3 |AB| from the segment, for every
@@ -34,7 +34,7 @@ struct Case {
 };
 constexpr Case cases[] = {{KernelFamily::inverse, 3, 1}, {KernelFamily::inverse, 8, 0}, {KernelFamily::cauchy, 4, 1},
                           {KernelFamily::cauchy, 8, 0}, {KernelFamily::compact, 6, 0}};
-/// The generic-path goal of issue 15 (f and ∇f ≤ 25 ns for inverse and
+/// The generic-path goal (f and ∇f ≤ 25 ns for inverse and
 /// Cauchy up to i = 8 at 0.1–3 |AB|): the closed form alone, weight degree
 /// 0, every degree (gsl/<kernel>/d:<d>/closed without QAG rows).
 constexpr int generic_max_degree = 8;

@@ -1,5 +1,5 @@
-// bench/instruction_counts.cpp — fixed workloads for callgrind (issue 5,
-// §4), and the op counts of every generated kernel (§3).
+// bench/instruction_counts.cpp — fixed workloads for callgrind,
+// and the op counts of every generated kernel.
 //
 //   skelconv_bench_counts --opcounts FILE   writes every kernel's OpCount
 //                                           (from the generated table) as JSON
@@ -16,7 +16,7 @@
 //   quadrature/<kernel>/tol:<1e-08|1e-12>[/near]
 //   degree/<family>/w0/i:<i>/<f|f_and_grad>
 //   batch/<kernel>/<scalar|simd>
-//   generic/<kernel>/d:<d>/<beside|beyond>: the generic region of issue 15
+//   generic/<kernel>/d:<d>/<beside|beyond>: the generic region
 //       (bench_support.hpp: generic_region_inputs; inverse and Cauchy
 //       i = 1…8, weight degree 0), split by where P's foot on the line
 //       falls: on [A, B] (beside) or past an end (beyond), which decides

@@ -1,5 +1,5 @@
 // bench/kernels_bench.cpp — per-evaluation cost of the generated segment
-// kernels (issue 5, §2 first three bullets):
+// kernels:
 //   eval/<kernel>/<variant>        f, grad, f_and_grad, and f plus a
 //                                  finite-difference gradient (central: 7
 //                                  evaluations of f, forward: 4);
@@ -140,7 +140,7 @@ void bench_quadrature(benchmark::State& state, const KernelRef* k, double tolera
   state.counters["max_rel_diff_grad"] = max_rel_grad;
 }
 
-// --- The exact preamble (issue 16, item 1) -----------------------------------
+// --- The exact preamble ------------------------------------------------------
 //
 // preamble/cross/{plain,exact}: AB × AP as the previous code formed it (the
 // plain products of rounded differences, what the generated kernels still

@@ -1,4 +1,4 @@
-// bench/mesh_bench.cpp — `skelconv mesh` throughput (issue 11, "Performance").
+// bench/mesh_bench.cpp — `skelconv mesh` throughput (docs/mesh.md).
 //
 // For skeletons of 10, 100 and 1,000 primitives of one kind (segments,
 // SCALIS segments, polygons; compact and Cauchy kernels), laid along a

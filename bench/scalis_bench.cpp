@@ -1,4 +1,4 @@
-// bench/scalis_bench.cpp — per-evaluation cost of SCALIS segments (issue 4):
+// bench/scalis_bench.cpp — per-evaluation cost of SCALIS segments:
 // skelconv::ScalisSegment::value_and_gradient (the generated inverse and
 // Cauchy kernels, scalis_compact_F for the compact family) against adaptive
 // Gauss–Kronrod quadrature of the definition (SPEC §4), the numerical route.

@@ -1,5 +1,5 @@
-// bench/skeleton_bench.cpp — a whole skeleton on a grid (issue 5, §2 last
-// bullet): 1,000 compact-support segments, f and ∇f at every point of a
+// bench/skeleton_bench.cpp — a whole skeleton on a grid:
+// 1,000 compact-support segments, f and ∇f at every point of a
 // 128³ grid, through the runtime's public API (skelconv::Skeleton).
 //   skeleton/brute_force/grid:32    Skeleton::value_and_gradient over all
 //       1,000 primitives, on the 32³ sub-grid (every 4th point of the 128³

@@ -98,9 +98,12 @@ OUTPUTS = ("f", "grad", "f_and_grad")
 GOAL_FG_OVER_F = 1.5
 GOAL_QUADRATURE = 200.0
 GOAL_BATCH = 3.0
-GOAL_HIGHWAY = 4.0   # issue 15: the Highway batch against the scalar loop
-GOAL_GSL = 200.0     # issue 15: closed form against GSL QAG-61, every distance and family
-GOAL_GENERIC_NS = 25.0  # issue 15: f and ∇f at generic distances, inverse and Cauchy i ≤ 8
+GOAL_HIGHWAY = 4.0   # goal: the Highway batch against the scalar loop
+GOAL_GSL = 200.0     # goal: closed form against GSL QAG-61, every distance and family
+GOAL_GENERIC_NS = 25.0  # goal: f and ∇f at generic distances, inverse and Cauchy i ≤ 8
+GOAL_PUBLIC_PATH = 1.3  # every public path within 1.3× the generated function, per primitive and point
+PAPER_ANT_RATE = 94953 / 3.58  # Zanni 2013 Table 1: the ant, 94,953 triangles in 3.58 s (2008 Core 2 Duo)
+GOAL_MESH_ANT = 10.0    # ≥ 10× the paper's triangles per second on the ant, one core
 
 
 def load_benchmarks(path):
@@ -212,6 +215,84 @@ def table(header, rows):
     out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
     out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
     return "\n".join(out) + "\n"
+
+
+def public_path_section(res, md, goals):
+    """§8: bench/public_path_bench.cpp, every public path over the generated function."""
+    runs, context = load_benchmarks(os.path.join(res, "public_path.json"))
+    if not runs:
+        return
+    md.append("## 8. The public paths against the generated function\n")
+    md.append(f"Run {context.get('date')}, load average "
+              f"{', '.join(f'{x:.2f}' for x in context.get('load_avg', []))} at start (§9 follows it in the same "
+              "`scripts/bench.sh` step).\n")
+    md.append("`skelconv_bench_public_path`: ns per primitive and point, one thread, the same points for every path "
+              "(uniform in the skeleton's box grown by a segment length); kind 0: SCALIS Cauchy 4 segments, kind 1: "
+              "classical Cauchy 4 (s = 1); 1 segment, the 24 of Zanni's ant, 1,000 random. *generated*: the "
+              "generated function on inputs prepared once per primitive; the ratios are each path over it (f+∇f "
+              "paths over `f_and_grad`, f paths over `f`), the two timed back to back in every iteration. *batch*: `evaluate_batch` into a new vector; "
+              "*batch_into*: `evaluate_batch_into` (what the Python module runs); *mesher*: `ImplicitField`.\n")
+    paths = ["value_and_gradient", "batch", "batch_into", "mesher_value", "mesher_value_and_gradient"]
+    rows, worst = [], []
+    for kind in (0, 1):
+        for n in (1, 24, 1000):
+            key = f"kind:{kind}/primitives:{n}"
+            g = runs.get(f"generated_f_and_grad/{key}")
+            f = runs.get(f"generated_f/{key}")
+            if not g or not f:
+                continue
+            row = [("SCALIS" if kind == 0 else "classical") + f" × {n}", f"{g['ns_per_primitive_point']:.0f}",
+                   f"{f['ns_per_primitive_point']:.0f}"]
+            for path in paths:
+                r = runs.get(f"{path}/{key}")
+                ratio_ = r.get("ratio_vs_generated") if r else None
+                row.append(f"{r['ns_per_primitive_point']:.0f} ({ratio_:.2f}×)" if ratio_ else "–")
+                if ratio_:
+                    worst.append((ratio_, f"{path} {row[0]}"))
+            rows.append(row)
+    md.append(table(["skeleton", "generated f+∇f", "generated f"] + paths, rows))
+    if worst:
+        ok = [r <= GOAL_PUBLIC_PATH for r, _ in worst]
+        top = max(worst)
+        goals.append((f"public paths ≤ {GOAL_PUBLIC_PATH}× the generated function (1, 24, 1,000 primitives)",
+                      f"worst {top[0]:.2f}× ({top[1]}); median {sorted(r for r, _ in worst)[len(worst) // 2]:.2f}×",
+                      all(ok), f"{sum(ok)} of {len(ok)} (path, skeleton) pairs"))
+
+
+def mesh_ant_section(res, md, goals):
+    """§9: scripts/bench.sh's three runs of `skelconv mesh` on Zanni's ant (mesh_ant.txt)."""
+    path = os.path.join(res, "mesh_ant.txt")
+    if not os.path.exists(path):
+        return
+    with open(path) as f:
+        text = f.read()
+    runs = [dict(zip(("total", "field", "evaluations"), map(float, m)))
+            for m in re.findall(r"time: ([0-9.]+) s \(field ([0-9.]+) s in ([0-9]+) evaluations", text)]
+    triangles = [int(x) for x in re.findall(r"^triangles: ([0-9]+)", text, re.M)]
+    cpu = sorted(float(u) + float(k) for u, k in re.findall(r"^cpu_seconds: ([0-9.]+) ([0-9.]+)", text, re.M))
+    if not runs or not triangles:
+        return
+    total = sorted(r["total"] for r in runs)[len(runs) // 2]
+    run = next(r for r in runs if r["total"] == total)
+    cpu_median = cpu[len(cpu) // 2] if cpu else None
+    # The rate on CPU seconds when measured (a shared machine inflates wall
+    # time; OpenVDB's threads add CPU time, so this is the conservative one).
+    seconds = cpu_median if cpu_median else total
+    rate = triangles[0] / seconds
+    md.append("## 9. `skelconv mesh` on Zanni's ant\n")
+    md.append("`skelconv mesh papers_figures/skeletons/zanni_table1_ant.json --size 0.04 --method grid` (24 SCALIS "
+              "Cauchy 4 segments, the paper's triangle count), medians of 3 runs; triangles/s on the CPU seconds "
+              "(user + system, OpenVDB's threads included) when measured, else on the wall time. Paper: Zanni et "
+              f"al. 2013 Table 1, 94,953 triangles in 3.58 s ({PAPER_ANT_RATE:,.0f}/s, 2008 Core 2 Duo).\n")
+    md.append(table(["triangles", "wall s", "CPU s", "field s (wall)", "evaluations", "evaluations/triangle",
+                     "µs/evaluation", "triangles/s", "× paper"],
+                    [[f"{triangles[0]:,}", f"{total:.2f}", f"{cpu_median:.2f}" if cpu_median else "–",
+                      f"{run['field']:.2f}", f"{run['evaluations']:,.0f}",
+                      f"{run['evaluations'] / triangles[0]:.1f}", f"{run['field'] / run['evaluations'] * 1e6:.2f}",
+                      f"{rate:,.0f}", f"{rate / PAPER_ANT_RATE:.2f}×"]]))
+    goals.append((f"mesher ≥ {GOAL_MESH_ANT:.0f}× the paper's rate on the ant (grid, one core)",
+                  f"{rate:,.0f} triangles/s, {run['evaluations'] / triangles[0]:.1f} evaluations/triangle",
+                  rate >= GOAL_MESH_ANT * PAPER_ANT_RATE, f"{rate / PAPER_ANT_RATE:.2f}× the paper"))
 
 
 def main():
@@ -667,6 +748,9 @@ def main():
             rows.append(row)
         md.append(table(["workload", "closed form (ns)", "quadrature 1e-8 (ns, ratio, max rel. diff)",
                          "quadrature 1e-12 (ns, ratio, max rel. diff)"], rows))
+
+    public_path_section(res, md, goals)
+    mesh_ant_section(res, md, goals)
 
     # --- goals ------------------------------------------------------------------------------
     goal_md = ["## Goals\n", "A shortfall is a finding, reported as measured.\n",

@@ -57,18 +57,9 @@ py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned th
   std::optional<BatchFailure> failure;
   {
     py::gil_scoped_release release;
-    std::vector<Vec3> query(n);
-    for (std::size_t k = 0; k < n; ++k) query[k] = Vec3(in[3 * k], in[3 * k + 1], in[3 * k + 2]);
     BatchOptions options;
     options.threads = threads;
-    BatchResult result = evaluate_batch(skeleton, query, options);
-    failure = result.failure;
-    if (!failure) {
-      for (std::size_t k = 0; k < n; ++k) {
-        f[k] = result.samples[k].value;
-        for (int c = 0; c < 3; ++c) g[3 * k + c] = result.samples[k].gradient[c];
-      }
-    }
+    failure = evaluate_batch_into(skeleton, {in, 3 * n}, {f, n}, {g, 3 * n}, options);
   }
   if (failure) rethrow_located(failure->error, fmt::format("points[{}]", failure->index));
   return py::make_tuple(values, gradients);
@@ -134,7 +125,7 @@ py::tuple mesh(const Skeleton& skeleton, std::optional<double> iso, const std::s
   return mesh_arrays(result);
 }
 
-/// A Skeleton from Python objects: the skeleton file's schema (docs/cli.md)
+/// A Skeleton from Python objects: the skeleton file's schema (docs/cli_skeleton.md)
 /// as dicts and lists (numpy arrays allowed), or just the list of
 /// primitives. Read by the same JSON reader, so the same checks and messages.
 Skeleton skeleton_from_objects(const py::object& data) {

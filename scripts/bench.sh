@@ -28,7 +28,7 @@ trap 'rm -rf "$scratch"' EXIT
 start=$SECONDS
 step() { echo "[bench $(( SECONDS - start ))s] $*" >&2; }
 
-for tool in cmake python3 valgrind objdump; do
+for tool in cmake python3 valgrind objdump /usr/bin/time; do
   command -v "$tool" >/dev/null || { echo "scripts/bench.sh: $tool is required" >&2; exit 1; }
 done
 
@@ -80,6 +80,17 @@ step "4/7 SCALIS segments against quadrature (~30 s)"
 
 step "5/7 closed forms against GSL's adaptive QAG (61-point rule), 0.1-3 |AB| (~1 min)"
 "$bin/skelconv_bench_gsl" "${gbench[@]}" --benchmark_out="$results/gsl.json"
+
+step "5b/7 public paths against the generated function; the mesher on Zanni's ant (~2 min)"
+"$bin/skelconv_bench_public_path" --benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions" \
+  --benchmark_report_aggregates_only=true --benchmark_out_format=json --benchmark_out="$results/public_path.json"
+# Zanni Table 1's ant at its triangle count (--size 0.04: ~95k triangles), one
+# core for the field, 3 runs (summarize.py takes the median).
+# CPU seconds as well (/usr/bin/time): on a shared machine they mean more.
+for run in 1 2 3; do
+  /usr/bin/time -f 'cpu_seconds: %U %S' "$build/src/skelconv" mesh papers_figures/skeletons/zanni_table1_ant.json \
+    --size 0.04 --method grid -o "$scratch/ant.ply" --quiet 2>&1
+done > "$results/mesh_ant.txt"
 
 step "6/7 callgrind instruction counts (~10 s)"
 valgrind --tool=callgrind --callgrind-out-file="$scratch/callgrind.out.%p" --dump-instr=no \

@@ -77,7 +77,7 @@ std::vector<test::ReferenceSegment> example_reference() {
 }
 
 TEST(CliEval, PrintsTheDefinitionIntegral) {
-  // About ten times the worst relative error measured (issue 19): 4.5e-16 for
+  // About ten times the worst relative error measured: 4.5e-16 for
   // ∇f, 4.0e-16 for f, through the CLI's %.17g output, against the long
   // double reference; a regression of a few digits fails.
   constexpr double tolerance = 5e-15;

@@ -1,4 +1,4 @@
-// tests/convergence_cap_test.cpp — issue 19, item 4: a helper that reaches its
+// tests/convergence_cap_test.cpp — a helper that reaches its
 // iteration cap reports it (skelconv::NotConvergedError), and the runtime
 // turns that into EvaluationError (the CLI's "could not be computed", exit 1),
 // instead of returning an unconverged value as if it had converged.
@@ -85,10 +85,9 @@ TEST(ConvergenceCap, CompactScalisPanelDepthCapThrows) {
 TEST(ConvergenceCap, GaussPanelsResolvePolesNextToAnEndAndReportUnderflow) {
   // segment_moments_gauss_panels with the pole 1e-20 beyond t = 1 on the
   // line (a = 1, b = 1 (+1e-20, below rounding), a − b = −1e-20, D = 0).
-  // Before issue 19 the panel loop never advanced (the call hung); until
-  // issue 16 it reported, since the nodes were placed by t, which cannot
-  // step by 0.9e-20 at t = 1. The nodes are now placed by their offset from
-  // the end: ~70 panels, and exact. M_{k,m} = ∫_0^1 t^k (1 + e − t)^(−m) dt,
+  // Nodes placed by t could not step by 0.9e-20 at t = 1 (the panel loop
+  // would not advance); placed by their offset from the end they need ~70
+  // panels, and are exact. M_{k,m} = ∫_0^1 t^k (1 + e − t)^(−m) dt,
   // e = 1e-20, is (e^(1−m) − (1 + e)^(1−m))/(m − 1) for k = 0, and within
   // a relative e of it for every k ≤ 10 (t^k = 1 − O(1 − t), and the
   // integral's mass is within ~e of t = 1).

@@ -1,5 +1,5 @@
 // skelconv_fuzz_skeletons — a seeded mutation fuzzer over skeleton files
-// (issue 16: "no crash, no NaN and no non-finite output for accepted input").
+// (no crash, no NaN and no non-finite output for accepted input).
 //
 //   skelconv_fuzz_skeletons SKELCONV_BINARY GOOD_DIR [--iterations N] [--seed S]
 //

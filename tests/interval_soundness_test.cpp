@@ -188,7 +188,7 @@ TEST(IntervalSoundness, Polygons) {
 }
 
 /// The soft-object families where they have a segment (and, for soft and
-/// Wyvill, a polygon) field: issue 13 item 2.
+/// Wyvill, a polygon) field.
 KernelSpec random_soft_family(Rng& rng, bool polygon) {
   switch (std::uniform_int_distribution<int>(0, polygon ? 1 : 2)(rng)) {
     case 0: return KernelSpec::soft(uniform(rng, 0.5, 2.5));

@@ -1,4 +1,4 @@
-// The point-only kernel families of issue 13 (include/skelconv/kernels/:
+// The soft-object kernel families (include/skelconv/kernels/:
 // soft, wyvill, ferley, gaussian): values against their definitions as the
 // sources print them (written out here, independently of the traits),
 // derivatives against 50-digit central differences, the iso ↔ radius
@@ -201,7 +201,7 @@ TEST(KernelFamilies, ConstructorsRejectThemElsewhere) {
 }
 
 
-// ---- Soft, Wyvill and Gaussian on segments and polygons (issue 13 item 2) ----
+// ---- Soft, Wyvill and Gaussian on segments and polygons ----------------------
 
 /// The families with a segment field, with the iso levels tried around them.
 std::vector<KernelSpec> segment_kernels() {

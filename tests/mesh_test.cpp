@@ -275,16 +275,61 @@ TEST(MeshGrid, SkippingBlocksOutsideTheSupportsChangesNothing) {
     ASSERT_TRUE(field.support_boxes.has_value()) << name;
     ImplicitField dense = field;
     dense.support_boxes.reset();
+    dense.enclosure = nullptr;
+    ImplicitField skipping_field = field;
+    skipping_field.enclosure = nullptr;  // only the support boxes skip here
     MeshOptions options = options_at(iso);
     options.method = MeshMethod::grid;
     MeshReport skipping_report, dense_report;
-    const TriangleMesh skipping = mesh_iso_surface(field, options, &skipping_report);
+    const TriangleMesh skipping = mesh_iso_surface(skipping_field, options, &skipping_report);
     const TriangleMesh reference = mesh_iso_surface(dense, options, &dense_report);
     EXPECT_EQ(skipping.vertices, reference.vertices) << name;
     EXPECT_EQ(skipping.normals, reference.normals) << name;
     EXPECT_EQ(skipping.triangles, reference.triangles) << name;
     EXPECT_LT(skipping_report.field_evaluations, dense_report.field_evaluations) << name;
   }
+}
+
+TEST(MeshGrid, SkippingBlocksTheEnclosureProvesEmptyChangesNothing) {
+  // The grid method samples only the blocks whose interval enclosure holds
+  // the iso (a narrow band): on fields of infinite support (Cauchy
+  // segments, SCALIS segments and triangles) the same mesh as the dense
+  // sampling, with fewer evaluations.
+  for (const auto& [name, iso] :
+       {std::pair{"segment", 0.5}, std::pair{"scalis_cone", 0.8}, std::pair{"scalis_triangle", 0.6}}) {
+    const Skeleton skeleton = load(name);
+    const ImplicitField field = skeleton_field(skeleton);
+    ASSERT_TRUE(field.enclosure) << name;
+    ImplicitField dense = field;
+    dense.enclosure = nullptr;
+    MeshOptions options = options_at(iso);
+    options.method = MeshMethod::grid;
+    MeshReport band_report, dense_report;
+    const TriangleMesh band = mesh_iso_surface(field, options, &band_report);
+    const TriangleMesh reference = mesh_iso_surface(dense, options, &dense_report);
+    EXPECT_EQ(band.vertices, reference.vertices) << name;
+    EXPECT_EQ(band.normals, reference.normals) << name;
+    EXPECT_EQ(band.triangles, reference.triangles) << name;
+    EXPECT_LT(band_report.field_evaluations, dense_report.field_evaluations) << name;
+  }
+  // The blocks really are skipped on the enclosure's word: a false one
+  // ("inside" wherever it is asked, i.e. far from the surface) changes the
+  // mesh, or leaves vertices that cannot be projected.
+  const Skeleton skeleton = load("segment");
+  ImplicitField wrong = skeleton_field(skeleton);
+  wrong.enclosure = [](const Eigen::AlignedBox3d&) { return std::pair{1.01 * 0.5, 2.0}; };
+  ImplicitField dense = skeleton_field(skeleton);
+  dense.enclosure = nullptr;
+  MeshOptions options = options_at(0.5);
+  options.method = MeshMethod::grid;
+  const TriangleMesh reference = mesh_iso_surface(dense, options);
+  bool differs = false;
+  try {
+    differs = mesh_iso_surface(wrong, options).triangles != reference.triangles;
+  } catch (const EvaluationError&) {
+    differs = true;
+  }
+  EXPECT_TRUE(differs);
 }
 
 TEST(MeshBadInput, NoSurfaceUnboundedAndBadSizes) {

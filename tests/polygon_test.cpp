@@ -3,9 +3,8 @@
 // PolygonValues), and values against references computed here
 // independently of the closed forms.
 //
-// PolygonValues AWAITS THE CLOSED FORMS: polygon_field.hpp is still a stub
-// that throws std::logic_error, so every test of that suite fails until
-// issue 3's closed forms land. Its references share no code with them:
+// PolygonValues checks the closed forms of polygon_field.hpp. Its
+// references share no code with them:
 //   - inverse p^3: f(P) · z = Ω(P), the solid angle of the polygon seen from
 //     P (∬ z / r³ dQ), by the Van Oosterom–Strackee formula per fan
 //     triangle of a convex polygon; ∇f by central differences of it;
@@ -65,7 +64,7 @@ TEST(PolygonValidation, DegenerateGeometry) {
   expect_input_error([] { Polygon({{0, 0, 0}, {1, 0, 0}, {0.5, 1e-9, 0}}, inverse3); }, "vertices", "zero area");
   // Just above the threshold: accepted.
   EXPECT_NO_THROW(Polygon({{0, 0, 0}, {1, 0, 0}, {0.5, 1e-7, 0}}, inverse3));
-  // Coordinates whose squares overflow are fine (issue 16: any scale);
+  // Coordinates whose squares overflow are fine (any scale);
   // only a diameter that overflows is too large.
   EXPECT_NO_THROW(Polygon({{1e200, 0, 0}, {-1e200, 0, 0}, {0, 1e200, 0}}, inverse3));
   expect_input_error([] { Polygon({{1.5e308, 0, 0}, {-1.5e308, 0, 0}, {0, 1e308, 0}}, inverse3); }, "vertices",

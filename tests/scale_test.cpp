@@ -1,4 +1,4 @@
-// Any scale, never silently wrong (issue 16, item 3; skelconv/scaled_frame.hpp).
+// Any scale, never silently wrong (skelconv/scaled_frame.hpp).
 //
 // A generic skeleton of every primitive type and kernel family is scaled by
 // 2^k, k ∈ {−400, −200, 0, 200, 400} — coordinates, radii and kernel
@@ -12,7 +12,8 @@
 // Segments are also compared with long-double quadrature of the definition
 // AT the scaled coordinates (long double reaches 2^±16382), so the scaled
 // values are checked against the definition, not only against each other.
-// The known failures of issue 16 are reproduced one by one below.
+// Inputs that break a form which is not scale-invariant are checked one by
+// one below.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -262,10 +263,11 @@ TEST(AnyScale, ScalisTrianglesAreScaleInvariant) {
   EXPECT_EQ(worst.refused, 0);
 }
 
-// --- the failures issue 16 reports, one by one --------------------------------
+// --- inputs that break scale-dependent forms, one by one ---------------------
 
 TEST(AnyScale, CauchySegmentAtTinyCoordinatesIsPositiveAndRight) {
-  // Coordinates ~1e-121, s ~ 1e240: was relative error up to 9e4, and f < 0.
+  // Coordinates ~1e-121, s ~ 1e240: an unscaled form loses every digit here
+  // (relative error up to 9e4, and f < 0).
   const double k = -400;
   const Vec3 a = std::ldexp(1.0, k) * Vec3(-0.4, 0.1, 0.2), b = std::ldexp(1.0, k) * Vec3(0.9, 0.5, -0.3);
   const KernelSpec kernel = KernelSpec::cauchy(8, std::ldexp(1.7, 800));
@@ -280,7 +282,8 @@ TEST(AnyScale, CauchySegmentAtTinyCoordinatesIsPositiveAndRight) {
 }
 
 TEST(AnyScale, InverseSegmentsFarOutGiveTheFieldOrAnError) {
-  // Coordinates ~1e120: was f = 0 where the field is 6e-121 (i = 2).
+  // Coordinates ~1e120: an unscaled form gives f = 0 where the field is
+  // 6e-121 (i = 2).
   const double scale = std::ldexp(1.0, 400);
   const Segment segment(scale * Vec3(0, 0, 0), scale * Vec3(1, 0, 0), KernelSpec::inverse(2));
   const Vec3 p = scale * Vec3(0.5, 0.3, 0);
@@ -291,8 +294,8 @@ TEST(AnyScale, InverseSegmentsFarOutGiveTheFieldOrAnError) {
   // i = 16 there: f ~ 1e-1800, below every double: an error, never 0.
   const Segment steep(segment.a(), segment.b(), KernelSpec::inverse(16));
   EXPECT_THROW(steep.value(p), EvaluationError);
-  // Coordinates ~1e-121 (was "returned inf/nan"), and near 1e150 (was an
-  // overflow in i16): i = 3 at 2^-400 is ~1e242, a double.
+  // Coordinates ~1e-121 (where an unscaled form returns inf/nan), and near
+  // 1e150 (where i16 overflows): i = 3 at 2^-400 is ~1e242, a double.
   const double tiny = std::ldexp(1.0, -400);
   const Segment small(tiny * Vec3(0, 0, 0), tiny * Vec3(1, 0, 0), KernelSpec::inverse(3));
   const Vec3 q = tiny * Vec3(0.5, 0.3, 0);
@@ -305,7 +308,8 @@ TEST(AnyScale, InverseSegmentsFarOutGiveTheFieldOrAnError) {
 }
 
 TEST(AnyScale, TinySegmentsAndPolygonsAreValid) {
-  // Length 1e-200 at the origin: was "length 0" (its square underflows).
+  // Length 1e-200 at the origin: a check on the squared length would call it
+  // "length 0" (its square underflows).
   const Segment segment(Vec3(0, 0, 0), Vec3(1e-200, 0, 0), KernelSpec::cauchy(4, 1e300));
   EXPECT_GT(segment.value(Vec3(5e-201, 1e-200, 0)), 0.0);
   // Polygons scaled by 2^±400: were "self-intersecting" and "zero area".
@@ -369,8 +373,8 @@ TEST(AnyScale, ScalisInverseJustBeyondAnEndIsFiniteOrTheSingularMarker) {
   }
   // The same at the origin end, where doubles are dense: P = A − δ. Below
   // δ ~ ε|AB| the Gauss panels of the generated code cannot resolve the pole
-  // next to the end and refuse (EvaluationError, "did not converge"): left
-  // for the stable forms of issue 16 item 2; never a wrong number.
+  // next to the end and refuse (EvaluationError, "did not converge"): a
+  // refusal is allowed, never a wrong number.
   int refused = 0;
   for (double delta : {1e-14, 1e-17, 1e-20, 1e-60}) {
     try {

@@ -158,8 +158,8 @@ void check_family(KernelFamily family, const std::map<std::string, std::pair<dou
   report_worst_scalis_errors(family, {"generic", "near_axis", "beyond_end", "on_axis_beyond"});
 }
 
-// Tolerances (f, ∇f): issue 16's targets in every region (measured at most
-// 2.5e-14 / 1.1e-13, README "SCALIS segments").
+// Tolerances (f, ∇f): the final targets in every region (measured at most
+// 2.5e-14 / 1.1e-13, docs/verify_reference.md).
 const std::map<std::string, std::pair<double, double>> kTolerance = {
     {"generic", {1e-13, 1e-12}}, {"near_axis", {1e-13, 1e-12}}, {"beyond_end", {1e-13, 1e-12}},
     {"on_axis_beyond", {1e-13, 1e-12}}};
@@ -274,7 +274,7 @@ TEST(ScalisSegmentProperties, ScaleInvariance) {
 }
 
 // ---------------------------------------------------------------------------
-// Cones (issue 4: "a radius of 0 at one end gives a tip at that end point").
+// Cones ("a radius of 0 at one end gives a tip at that end point").
 // For the inverse and Cauchy kernels, strictly, it does not: seen from the
 // tip, every point Γ(t) of the cone is at the same kernel argument
 // d = |AB|/Δτ (|PΓ| and τ both grow like t), so F(tip) = K(d) d ∫ dt/t = +∞

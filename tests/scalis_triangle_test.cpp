@@ -264,7 +264,7 @@ TEST(ScalisTriangleValues, ConstantRadiusClosedFormMatchesTheNumericalPath) {
   }
   std::printf("constant radius, closed form vs numerical: worst relative f %.2e, grad %.2e\n", worst_value,
               worst_gradient);
-  // Its typical accuracy: about ten times the worst measured (issue 19),
+  // Its typical accuracy: about ten times the worst measured,
   // 2.03e-14 for f and 2.20e-14 for ∇f.
   EXPECT_LE(worst_value, 2e-13);
   EXPECT_LE(worst_gradient, 2.5e-13);
@@ -272,7 +272,7 @@ TEST(ScalisTriangleValues, ConstantRadiusClosedFormMatchesTheNumericalPath) {
 
 TEST(ScalisTriangleValues, ConstantRadiusMatchesBruteForce) {
   // The closed form (no certified promise): about ten times the worst
-  // measured (issue 19), 4.49e-15 over f and ∇f.
+  // measured, 4.49e-15 over f and ∇f.
   constexpr double tolerance = 5e-14;
   double worst = 0;
   for (const ScalisKernel& kernel : {kernel_of(KernelFamily::inverse, 3), kernel_of(KernelFamily::cauchy, 4),
@@ -320,7 +320,7 @@ TEST(ScalisTriangleValues, VaryingRadiusMatchesBruteForce) {
     }
   }
   std::printf("varying radius (incl. a radius-0 vertex) vs brute force: worst relative %.2e\n", worst);
-  // Its typical accuracy: about ten times the worst measured (issue 19), 1.50e-15.
+  // Its typical accuracy: about ten times the worst measured, 1.50e-15.
   EXPECT_LE(worst, 1.5e-14);
 }
 
@@ -373,7 +373,7 @@ TEST(ScalisTriangleValues, VaryingRadiusIsAdditive) {
   double worst = 0;
   for (const ScalisKernel& kernel : kernels) worst = std::max(worst, check_additivity(varying, kernel, close_points));
   std::printf("additivity (varying radius): worst relative %.2e\n", worst);
-  EXPECT_LE(worst, 6e-14);  // about ten times the worst measured (issue 19): 5.69e-15
+  EXPECT_LE(worst, 6e-14);  // about ten times the worst measured: 5.69e-15
 }
 
 TEST(ScalisTriangleValues, RandomPointsAreCertifiedAndAdditive) {
@@ -392,7 +392,7 @@ TEST(ScalisTriangleValues, RandomPointsAreCertifiedAndAdditive) {
     }
   }
   std::printf("random points, additivity: worst relative %.2e\n", worst);
-  EXPECT_LE(worst, 2.5e-13);  // about ten times the worst measured (issue 19): 2.48e-14
+  EXPECT_LE(worst, 2.5e-13);  // about ten times the worst measured: 2.48e-14
 }
 
 TEST(ScalisTriangleValues, GradientCancellingBySymmetryIsCertified) {

@@ -26,7 +26,7 @@ using test::ReferenceSegment;
 /// Relative accuracy demanded of the generated functions against quadrature
 /// of the definition (f, and ∇f over its scale), per test: about ten times
 /// the worst error measured over that test's points, kernels and weights
-/// (issue 19), so that a regression of a few digits fails. Measured against
+/// so that a regression of a few digits fails. Measured against
 /// the long double reference of reference_quadrature.hpp (the test prints
 /// each test's worst values).
 constexpr double tolerance_inverse_off_line = 4e-14;  // measured 3.6e-15 (∇f; f 3.2e-15)

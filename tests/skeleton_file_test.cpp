@@ -264,7 +264,7 @@ TEST(SkeletonFileErrors, ScalisTriangleShapeAndValues) {
                "\"radius\", \"kernel\", \"iso\")");
 }
 
-// --- Point primitives, blend nodes and iso (docs/cli.md) --------------------
+// --- Point primitives, blend nodes and iso (docs/cli_blends.md) ---------------
 
 constexpr const char* cauchy_kernel = R"({"family": "cauchy", "degree": 4, "s": 2})";
 

@@ -14,7 +14,7 @@
 namespace skelconv {
 namespace {
 
-/// The three primitives of the schema example (docs/cli.md).
+/// The three primitives of the schema example (docs/cli_skeleton.md).
 Skeleton example_skeleton() {
   Skeleton skeleton;
   skeleton.add(Segment(Vec3(0, 0, 0), Vec3(1, 0, 0), KernelSpec::inverse(3), {1.0, 0.5}));

@@ -1,4 +1,4 @@
-// verify/arb_reference.hpp — certified references (issue 16 item 4): the
+// verify/arb_reference.hpp — certified references: the
 // definition integrals of SPEC §2 (segments) and §3 (planar polygons)
 // enclosed in Arb's ball arithmetic (acb_calc_integrate: Gauss–Legendre with
 // rigorous error bounds from the integrand's analytic extension). The result
@@ -12,7 +12,7 @@
 // with the kernels of SPEC §1 written out (not the runtime's traits).
 // Polygons (SPEC §3): ∬_Ω K(|P − Q|) dQ reduced to 1-D edge integrals by an
 // exact derivation (arb_reference.cpp, "Polygons"), each integrated with
-// acb_calc_integrate. See docs/verify.md, "Certified references (Arb)".
+// acb_calc_integrate. See docs/verify_certified.md, "Certified references (Arb)".
 #pragma once
 
 #include <span>

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Static checks of the files that run the sweep's shards elsewhere (issue 18):
+"""Static checks of the files that run the sweep's shards elsewhere:
 the GitHub Actions matrix workflow and the Slurm job-array scripts cannot run
 here, so ctest verify_cluster_files checks that they parse and say what
 docs/verify.md says they do.

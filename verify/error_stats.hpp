@@ -31,8 +31,8 @@ struct AccuracyTargets {
 ///  * max_excluded_share = 1%: an error confined to more than 1% of a
 ///    region's samples cannot hide behind exclusions. After the retry the
 ///    default sweeps exclude 0 (segments) and at most 1 of 200 (0.5%,
-///    polygons) per cell (measured, docs/verify.md); before it, up to 6.5%
-///    and 15%. So 1% fails on a storm, not on the reference's usual doubts;
+///    polygons) per cell (measured, docs/verify_reference.md); without it,
+///    up to 6.5% and 15%. So 1% fails on a storm, not on the reference's usual doubts;
 ///  * min_compared_share = 1/2: at least half of a cell's evaluations must be
 ///    compared (the rest: excluded, or outside the compact support, where
 ///    f = 0 by design; support_boundary puts 1/3 of its samples there).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest helper (issue 18): runs `skelconv-verify compare BASE NEW` and checks
+# ctest helper: runs `skelconv-verify compare BASE NEW` and checks
 # its exit status and which cells it calls worse.
 #   verify/expect_compare.sh SKELCONV_VERIFY BASE NEW STATUS [MUST_MATCH [MUST_NOT_MATCH]]
 # MUST_MATCH / MUST_NOT_MATCH: extended regular expressions on the output.

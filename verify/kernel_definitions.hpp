@@ -1,4 +1,4 @@
-// verify/kernel_definitions.hpp — the kernels of SPEC §1 and issue 13, as
+// verify/kernel_definitions.hpp — the kernels of SPEC §1 and the soft objects, as
 // functions of the distance r with their derivatives, taken from the one
 // description of each family (its trait, skelconv/kernels/). This is the
 // ground truth of the verifier: it shares no algebra with the closed forms.

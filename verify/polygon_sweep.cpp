@@ -43,7 +43,7 @@ namespace {
 using skelconv::KernelFamily;
 using namespace skelconv::verify;
 
-/// Generic-region targets of issue 3, double precision.
+/// Generic-region targets, double precision (docs/verify_reference.md).
 constexpr double kGenericTarget = 1e-12;
 /// What the reference must reach (its own estimate) to be used.
 template <class Real>
@@ -98,7 +98,7 @@ bool usable(const Reference& ref) {
 /// Compares one sample, every degree, into `cells` (indexed like `degrees`).
 /// A degree whose reference is not trusted is retried with the stronger
 /// reference — binary128, to the same tolerance, computed once per sample —
-/// before it is excluded (issue 19).
+/// before it is excluded, so that exclusions stay rare enough to bound.
 template <class Real>
 void check_sample(const PolygonProblem& pb, const std::vector<int>& degrees, double tolerance,
                   std::vector<Cell>& cells) {
@@ -273,7 +273,7 @@ int main(int argc, char** argv) {
         continue;
       }
       const Cell& c = it->second;
-      // Exclusions (issue 19): "(n excl.)" when any, '!' beyond the limits.
+      // Exclusions: "(n excl.)" when any, '!' beyond the limits.
       const bool within_limits = limits.allow(c.points, c.excluded, c.points + c.excluded);
       if (!within_limits) ++failing_exclusion_cells;
       const std::string exclusions =

@@ -1,4 +1,4 @@
-// verify/test_base_cases.cpp — issue 19, item 3: the base cases of the
+// verify/test_base_cases.cpp — the base cases of the
 // recurrences, checked against quadrature of the definition.
 //
 // The recurrence test of test_properties.cpp compares generated J_i with

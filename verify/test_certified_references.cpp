@@ -1,5 +1,4 @@
-// verify_certified_references — the certified spot-check set (issue 16 item
-// 4): the generated double code against Arb-certified references of the
+// verify_certified_references — the certified spot-check set: the generated double code against Arb-certified references of the
 // definition integrals (verify/arb_reference.hpp), at a few hundred
 // deterministic points across every region of the two sweeps.
 //
@@ -22,16 +21,16 @@
 //     for ∇f (a reference that is not is reported, never used);
 //  2. where the field is exactly 0 (compact support missing the primitive),
 //     the generated code returns exactly 0;
-//  3. per (primitive, family, region) cell, issue 16's final targets
+//  3. per (primitive, family, region) cell, the final targets
 //     (f ≤ 1e-13, each ∇f component ≤ 1e-12 |∇f|), except for the cells in
-//     `open_cells` (today's code misses the final target there; issue 16
-//     items 1–2 are on it), which are held to the bound listed with them
+//     `open_cells` (cells where the code may miss the final target),
+//     which are held to the bound listed with them
 //     instead: the target the existing sweep asserts for that region, or,
 //     where the sweeps assert none (every region but generic), the level the
-//     sweeps document today (README "Accuracy", docs/verify.md), so that a
+//     sweeps document (docs/verify_reference.md), so that a
 //     regression still fails. A listed cell that meets the final target is
 //     reported as such (the list can shrink).
-// Prints one Markdown table (docs/verify.md, "Certified references (Arb)").
+// Prints one Markdown table (docs/verify_certified.md, "Certified references (Arb)").
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -64,7 +63,7 @@ struct SpotCheckSize {
   int polygon_points = 4;  ///< per (family, region), each at every degree
 };
 
-/// Issue 16's final targets (item 5): f relative, each ∇f component ÷ |∇f|.
+/// The final targets: f relative, each ∇f component ÷ |∇f|.
 constexpr double final_target_f = 1e-13;
 constexpr double final_target_grad = 1e-12;
 /// What a certified reference must reach to be used.
@@ -105,13 +104,12 @@ struct OpenCell {
 /// Measured here (seed above): the cells that miss the final target today,
 /// held to the maxima the default sweeps document for the same (family,
 /// region), all degrees, double (segments: the committed baseline
-/// verify/baselines/sweep_default.json, the same samples; polygons: README
-/// "Polygons"), so that a regression still fails. Empty since every cell
-/// reached the final target: inverse polygons just above the plane when
-/// the driver took the height from the exact vertices
-/// (skelconv/plane_height.hpp: 5.9e-12 -> 1.4e-15), and near edges when
-/// the edge kernels took the foot P̄ as a double-word number (plane_foot:
-/// 3.0e-13 -> 1.1e-15). A cell that misses again is added here with its
+/// verify/baselines/sweep_default.json, the same samples; polygons:
+/// docs/verify_reference.md "Accuracy as measured"), so that a regression
+/// still fails. Empty: every cell meets the final target (inverse polygons
+/// just above the plane need the height from the exact vertices,
+/// skelconv/plane_height.hpp, and near edges the foot P̄ as a double-word
+/// number, plane_foot). A cell that misses again is added here with its
 /// documented maximum, or fixed.
 const std::vector<OpenCell> open_cells = {};
 
@@ -333,7 +331,7 @@ const OpenCell* find_open(const CellKey& key) {
   return nullptr;
 }
 
-/// The cell's verdict: "final" (meets issue 16's final targets), "open"
+/// The cell's verdict: "final" (meets the final targets), "open"
 /// (listed, within its bound), or a failure added to the cell.
 std::string judge(const CellKey& key, Cell& cell) {
   const bool meets_final = cell.error_f <= final_target_f && cell.error_grad <= final_target_grad;

@@ -1,4 +1,4 @@
-// verify/test_compare.cpp — issue 18, compare: the rule "worse than k times
+// verify/test_compare.cpp — compare: the rule "worse than k times
 // the old maximum and above the floor", disappeared cells fail, new cells do
 // not. On synthetic reports; a real perturbed sweep is caught by the ctest
 // verify_compare_catches_perturbation.

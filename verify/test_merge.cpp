@@ -1,4 +1,4 @@
-// verify/test_merge.cpp — issue 18, merge: a sweep run as 3 shards, each
+// verify/test_merge.cpp — merge: a sweep run as 3 shards, each
 // written to a JSON report and read back, merges into the unsharded run's
 // report field by field; shard reports of different sweeps are refused.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// The properties the contour formulas for polygons must have (issue 3,
-// SPEC §3), and the paper's cases (Hubert 2012 §6.4, §7, §8.2; figs 6–9).
+// The properties the contour formulas for polygons must have
+// (SPEC §3), and the paper's cases (Hubert 2012 §6.4, §7, §8.2; figs 6–9).
 //
 // Reference values come from 2-D quadrature of the definition in binary128
 // (verify/polygon_reference.hpp) or from a closed form printed in the paper

@@ -101,7 +101,7 @@ std::vector<ScalisFamilyUnderTest> families_under_test() {
   };
 }
 
-/// Accuracy demanded in double at generic points (issue 16's targets: F to
+/// Accuracy demanded in double at generic points (the final targets: F to
 /// 1e-13, ∇F to 1e-12 of |∇F|); the properties (scale invariance,
 /// additivity) compare two evaluations at rounded inputs and keep 1e-12.
 constexpr double generic_tolerance = 1e-12;

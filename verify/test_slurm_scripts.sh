@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest verify_slurm_scripts (issue 18): runs scripts/slurm/submit_sweep.sh
+# ctest verify_slurm_scripts: runs scripts/slurm/submit_sweep.sh
 # end to end with a stand-in `sbatch` (no Slurm here) that runs an array's
 # tasks one after another with SLURM_ARRAY_TASK_ID set, and a job only when
 # its afterok dependency has run; a small sweep in 3 shards must merge.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest verify_sweep_script (issue 18): scripts/sweep.sh runs a small sweep as
+# ctest verify_sweep_script: scripts/sweep.sh runs a small sweep as
 # 3 shards, 2 at a time, and merges them; the merged maxima must equal an
 # unsharded run's exactly (compare with k = 1 and no floors, both ways: any
 # difference fails one direction), and the heat map must render.

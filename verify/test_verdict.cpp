@@ -1,4 +1,4 @@
-// verify/test_verdict.cpp — issue 19, item 1: the sweep's verdict fails when
+// verify/test_verdict.cpp — the sweep's verdict fails when
 // a (family, degree, region) cell excludes more than ExclusionLimits allows
 // or compares too few, even with every compared point within its target.
 #include <gtest/gtest.h>

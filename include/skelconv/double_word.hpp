@@ -1,5 +1,5 @@
 // skelconv/double_word.hpp — double-word arithmetic (a value hi + lo) for
-// the exact preambles (issue 16, item 1): support_gap.hpp, plane_height.hpp
+// the exact preambles: support_gap.hpp, plane_height.hpp
 // and the Gaussian segment (segment_gaussian.hpp) form differences and
 // products of exact inputs in it and round once at the end.
 //

@@ -1,5 +1,5 @@
 // skelconv/exact_cross.hpp — the cross product AB × AP of exact double
-// inputs, rounded once (issue 16, item 1: an exact preamble).
+// inputs, rounded once: the exact preamble of the generated segment code.
 //
 // Near the segment's line, AB × AP is a difference of nearly equal products,
 // and in plain arithmetic each difference B − A, P − A already rounds by

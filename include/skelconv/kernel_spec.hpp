@@ -4,7 +4,7 @@
 //   inverse  p^i(r)   = r^(-i)
 //   cauchy   c_s^i(r) = (1 + s r²)^(-i/2),                 s > 0
 //   compact  k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0, R > 0
-// and, on point primitives only (issue 13, include/skelconv/kernels/, no degree):
+// and, on point primitives only (include/skelconv/kernels/, no degree):
 //   soft     (1 − r²/R²)² for r < R,                          R > 0
 //   wyvill   1 − 22/9 u + 17/9 u² − 4/9 u³, u = r²/R², r < R,  R > 0
 //   ferley   1 + k(e − r) for r < e, (r − R)²/(e − R)² for e ≤ r < R,  0 < e < R

@@ -1,6 +1,6 @@
 // skelconv/plane_height.hpp — the height z of a point P above a polygon's
-// plane, from the exact inputs where P is near the plane (issue 16, item 1:
-// an exact preamble for polygons).
+// plane, from the exact inputs where P is near the plane (the exact
+// preamble for polygons).
 //
 // The polygon driver (polygon_field.hpp) takes z = (P − V₀)·n with n the
 // polygon's unit normal, rounded to doubles. Near the plane that product

@@ -1,6 +1,6 @@
 // skelconv/scaled_frame.hpp — a primitive-relative frame scaled by a power
 // of two, so that every primitive is evaluated at unit size whatever its
-// position and size (issue 16, item 3: any scale, never silently wrong).
+// position and size (any scale, never silently wrong).
 //
 // A primitive of size L (any L that is a positive normal double, at
 // coordinates anywhere from 1e-150 to 1e150) is evaluated in the frame

@@ -114,11 +114,19 @@ class ScalisSegment {
   /// The h the evaluation divides by: normalisation_, or for the inverse
   /// family W_i with σ = 1 in input_ (σ^i cancels; see the constructor).
   double evaluation_normalisation_ = 1.0;
+  /// iso / evaluation_normalisation_, the factor of every F and ∇F.
+  double field_scale_ = 1.0;
   /// The segment's frame (skelconv/scaled_frame.hpp): |AB| scaled into
   /// [1, 2); F is scale invariant.
   ScaledFrame frame_;
   ScalisSegmentInput<double> input_;  ///< everything but P, in the frame
   const generated::ScalisSegmentKernel<double>* generated_ = nullptr;  ///< null for compact
+  /// Resolved once here, not per point: evaluator_name() (a C string, so
+  /// that an evaluation allocates nothing) and where F diverges
+  /// (is_divergent_point: on the segment itself, or at an end of radius 0).
+  const char* name_ = "scalis_compact_F";
+  bool diverges_on_segment_ = false;
+  bool diverges_at_zero_radius_ = false;
 };
 
 }  // namespace skelconv

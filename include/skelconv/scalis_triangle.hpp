@@ -119,8 +119,8 @@ class ScalisTriangle {
   /// a difference whose rounding (of the inputs themselves) is a fixed
   /// absolute amount, so F's relative condition number grows without bound
   /// (e.g. F = 1.3e-15 with h = 17 and an error estimate of 1.9e-25 =
-  /// 1.4e-10 F, measured at a point where meshing tests/data/good/
-  /// scalis_triangles.json used to stop).
+  /// 1.4e-10 F, at a point near the rim met when meshing
+  /// tests/data/good/scalis_triangles.json).
   static constexpr double absolute_floor = 1e-6;
 
   /// Validates everything (see the file comment); throws InputError naming

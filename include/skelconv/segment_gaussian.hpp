@@ -222,8 +222,8 @@ std::array<T, W + 1> shifted_weight(const SegmentInput<T>& in, const T& tau) {
 /// f and, when `gradient` is not null, ∇f of the Gaussian segment: see the
 /// file comment.
 ///
-/// The geometry is taken from the exact inputs (issue 16, the exact
-/// preamble; the double-word helpers of skelconv/double_word.hpp). Beside
+/// The geometry is taken from the exact inputs (the exact preamble;
+/// the double-word helpers of skelconv/double_word.hpp). Beside
 /// the line at distance d, |∇f| ~ a d f while the component along AB is a
 /// small difference of the two halves of the segment, so each absolute error
 /// of QP (ε|AP| in plain arithmetic) or of τ (ε) came back L/d times larger

@@ -21,7 +21,7 @@ enum class KernelFamily {
   inverse,  ///< p^i(r) = r^-i
   cauchy,   ///< c_s^i(r) = (1 + s r²)^(-i/2)
   compact,  ///< k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0
-  // The soft-object families (issue 13; include/skelconv/kernels/): not in
+  // The soft-object families (include/skelconv/kernels/): not in
   // the generated tables. Soft and Wyvill are combinations of compact levels
   // on segments and polygons, the Gaussian has its erf closed form on
   // segments (skelconv/derived_segment_kernels.hpp); Ferley's is points

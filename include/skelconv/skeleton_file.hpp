@@ -1,6 +1,6 @@
 // skelconv/skeleton_file.hpp — reading a Skeleton from JSON.
 //
-// Schema (documented for users in docs/cli.md):
+// Schema (documented for users in docs/cli_skeleton.md and docs/cli_blends.md):
 //
 //   {"primitives": [
 //     {"type": "segment", "a": [0,0,0], "b": [1,0,0], "weight": [1, 0.5],

@@ -1,6 +1,6 @@
 // skelconv/support_gap.hpp — how far a compact support reaches past a point
-// or a line, R² − d², from exact double inputs, rounded once (issue 16:
-// the support grazing the segment).
+// or a line, R² − d², from exact double inputs, rounded once (for a support
+// that grazes the segment).
 //
 // Where the ball |X − P| ≤ R only grazes the segment, R and the distance d
 // from P to the segment (to its line, or to an end) agree in their leading

@@ -1,6 +1,6 @@
 """Fields from the `skelconv eval` command: f and ∇f at many points at once.
 
-A Field is a skeleton (a dict in the JSON format of docs/cli.md) plus the
+A Field is a skeleton (a dict in the JSON format of docs/cli_skeleton.md) plus the
 path of the skelconv binary. eval() pipes the points through one
 `skelconv eval` process; points are written with 17 significant digits, so
 the values are exactly those the command gives for those doubles.

@@ -1,4 +1,4 @@
-"""Ferley 1996 reconstruction figures (issue 20, docs/reconstruction.md):
+"""Ferley 1996 reconstruction figures (docs/reconstruction.md):
 one test shape, meshed from its known skeleton, skeletonized by
 `skelconv skeletonize`, the recovered (fitted) skeleton drawn over the
 samples and the known skeleton, and, in a full run, the distances of every

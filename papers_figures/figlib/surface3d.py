@@ -48,7 +48,7 @@ class Mesh:
 
 
 def mesh(ctx, skeleton, iso, size, name, method="cgal"):
-    """`skelconv mesh` of the skeleton (a dict, docs/cli.md) at level iso and facet size `size`.
+    """`skelconv mesh` of the skeleton (a dict, docs/cli_skeleton.md) at level iso and facet size `size`.
     Raises MeshError with the command and skelconv's message when it fails."""
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, f"{name}.json")

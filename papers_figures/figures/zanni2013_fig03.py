@@ -3,7 +3,7 @@ convolutions modify the kernel with the wanted thickness τ: eq. (9) (Hornus)
 scales the kernel's support, K(d/τ); eq. (10) scales its weight, τ K(d).
 Drawn for the compact kernel (σ = 1, i = 4), from skelconv: eq. (10) is a
 short classical segment of weight τ; eq. (9) is τ × SCALIS (eq. 13 is eq. 9
-with the density 1/τ), de-normalised by h (docs/cli.md)."""
+with the density 1/τ), de-normalised by h (docs/cli_skeleton.md)."""
 import numpy as np
 
 from figlib import plot

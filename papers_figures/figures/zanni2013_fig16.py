@@ -17,7 +17,7 @@ FOLDED = [[0, 0, 0], [3, 0, 0], [1.5, 0.9, 2.4]]      # shares the edge [0, 3] �
 TAU_A = 0.15
 TAU_B = [0.08, 0.25, 0.15]
 # The thickness of a finite triangle is τ up to the edges' influence, which falls
-# like (r/τ)^(2−i) (docs/cli.md, SCALIS triangles): r/τ ≈ 3 to 8 at our probes.
+# like (r/τ)^(2−i) (docs/cli_skeleton.md, SCALIS triangles): r/τ ≈ 3 to 8 at our probes.
 RELATIVE_TOLERANCE = 0.15
 PROBES = np.array([[0.5, 0.25, 0.25], [0.25, 0.5, 0.25], [0.25, 0.25, 0.5]])  # barycentric, near each vertex
 

@@ -21,7 +21,7 @@ namespace skelconv::cli {
 namespace {
 
 /// The iso used when --iso is not given: the file's top-level "iso"
-/// (default 1, docs/cli.md).
+/// (default 1, docs/cli_skeleton.md).
 double default_iso(const Skeleton& skeleton) { return skeleton.iso(); }
 
 constexpr const char* mesh_footer = R"(

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <stdexcept>
 
@@ -33,36 +34,79 @@ bool outside_supports(const GridSurfaceRequest& request, const openvdb::Coord& f
   return true;
 }
 
-/// The level sampled on the grid nodes, as an OpenVDB float grid whose
-/// index (i, j, k) is the world point box.lo + voxel (i, j, k), block by
-/// block. Values are clamped to ±float max (an inverse kernel's skeleton
-/// gives −inf).
-openvdb::FloatGrid::Ptr sample(const GridSurfaceRequest& request, const openvdb::Coord& count) {
+/// The world box of the cells around the nodes [first, last]: one voxel
+/// beyond them on every side (a node is a corner of the cells on both sides).
+Eigen::AlignedBox3d cells_around(const GridSurfaceRequest& request, const openvdb::Coord& first,
+                                 const openvdb::Coord& last) {
+  const auto node = [&request](const openvdb::Coord& c, int shift) {
+    return Vec3(request.box.lo + request.voxel * Vec3(c.x() + shift, c.y() + shift, c.z() + shift));
+  };
+  return {node(first, -1), node(last, 1)};
+}
+
+/// Fills the level values of the nodes [first, last]: `constant` if given,
+/// else level() at each.
+template <class Accessor>
+void fill_nodes(const GridSurfaceRequest& request, Accessor& accessor, const openvdb::Coord& first,
+                const openvdb::Coord& last, const std::optional<float>& constant) {
   const float limit = std::numeric_limits<float>::max();
   const auto stored = [limit](double level) { return float(std::clamp(level, -double(limit), double(limit))); };
+  for (int i = first.x(); i <= last.x(); ++i) {
+    for (int j = first.y(); j <= last.y(); ++j) {
+      for (int k = first.z(); k <= last.z(); ++k) {
+        const Vec3 p = request.box.lo + request.voxel * Vec3(i, j, k);
+        accessor.setValue(openvdb::Coord(i, j, k), constant ? *constant : stored(request.level(p)));
+      }
+    }
+  }
+}
+
+/// The constant a block of nodes can hold instead of its samples: the
+/// empty level outside every support, ±float max where sign_over proves
+/// the sign on all the cells around it; none otherwise.
+std::optional<float> block_constant(const GridSurfaceRequest& request, const openvdb::Coord& first,
+                                    const openvdb::Coord& last) {
+  if (outside_supports(request, first, last)) return float(request.empty_level);
+  if (!request.sign_over) return std::nullopt;
+  const int sign = request.sign_over(cells_around(request, first, last));
+  if (sign == 0) return std::nullopt;
+  return sign > 0 ? std::numeric_limits<float>::max() : -std::numeric_limits<float>::max();
+}
+
+/// Fills the nodes [first, last], a cube of `side` nodes (a power of two
+/// times `block`) clipped to the grid: one constant for all of them if
+/// block_constant allows it, else its eight octants, down to single blocks,
+/// which are sampled. Large regions far from the surface are thus settled by
+/// one test instead of one per block.
+template <class Accessor>
+void fill_region(const GridSurfaceRequest& request, Accessor& accessor, const openvdb::Coord& first,
+                 const openvdb::Coord& count, int side) {
+  const openvdb::Coord last(std::min(first.x() + side, count.x()) - 1, std::min(first.y() + side, count.y()) - 1,
+                            std::min(first.z() + side, count.z()) - 1);
+  const std::optional<float> constant = block_constant(request, first, last);
+  if (constant || side == block) {
+    fill_nodes(request, accessor, first, last, constant);
+    return;
+  }
+  const int half = side / 2;
+  for (int i = first.x(); i <= last.x(); i += half)
+    for (int j = first.y(); j <= last.y(); j += half)
+      for (int k = first.z(); k <= last.z(); k += half) fill_region(request, accessor, {i, j, k}, count, half);
+}
+
+/// The level sampled on the grid nodes, as an OpenVDB float grid whose
+/// index (i, j, k) is the world point box.lo + voxel (i, j, k). Values are
+/// clamped to ±float max (an inverse kernel's skeleton gives −inf).
+openvdb::FloatGrid::Ptr sample(const GridSurfaceRequest& request, const openvdb::Coord& count) {
+  const float limit = std::numeric_limits<float>::max();
   openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(/*background: outside*/ limit);
   openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(request.voxel);
   transform->postTranslate(openvdb::Vec3d(request.box.lo.x(), request.box.lo.y(), request.box.lo.z()));
   grid->setTransform(transform);
   auto accessor = grid->getAccessor();
-  for (int bi = 0; bi < count.x(); bi += block) {
-    for (int bj = 0; bj < count.y(); bj += block) {
-      for (int bk = 0; bk < count.z(); bk += block) {
-        const openvdb::Coord first(bi, bj, bk);
-        const openvdb::Coord last(std::min(bi + block, count.x()) - 1, std::min(bj + block, count.y()) - 1,
-                                  std::min(bk + block, count.z()) - 1);
-        const bool empty = outside_supports(request, first, last);
-        for (int i = first.x(); i <= last.x(); ++i) {
-          for (int j = first.y(); j <= last.y(); ++j) {
-            for (int k = first.z(); k <= last.z(); ++k) {
-              const Vec3 p = request.box.lo + request.voxel * Vec3(i, j, k);
-              accessor.setValue(openvdb::Coord(i, j, k), stored(empty ? request.empty_level : request.level(p)));
-            }
-          }
-        }
-      }
-    }
-  }
+  int side = block;
+  while (side < std::max({count.x(), count.y(), count.z()})) side *= 2;
+  fill_region(request, accessor, openvdb::Coord(0, 0, 0), count, side);
   return grid;
 }
 

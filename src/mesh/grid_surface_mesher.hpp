@@ -3,9 +3,10 @@
 // src/mesh, compiled in its own OBJECT library because OpenVDB's headers
 // are large).
 //
-// The level function is sampled at every node of a uniform grid of spacing
+// The level function is sampled at the nodes of a uniform grid of spacing
 // `voxel` over the box (except in blocks outside a compact field's support,
-// which hold a known constant), stored in an OpenVDB FloatGrid, and its zero set is
+// which hold a known constant, and blocks where `sign_over` proves the
+// surface absent: a narrow band around the surface), stored in an OpenVDB FloatGrid, and its zero set is
 // extracted with openvdb::tools::volumeToMesh (no adaptivity: quads of about
 // one voxel, each split into two triangles). No guarantee of topology
 // beyond the grid's resolution: features thinner than a voxel may be lost
@@ -31,6 +32,14 @@ struct GridSurfaceRequest {
   /// same values, hence the same mesh, as the dense sampling.
   const std::vector<Eigen::AlignedBox3d>* support_boxes = nullptr;
   double empty_level = 0;
+  /// Optional: +1 if level > 0 at every point of the box, −1 if level < 0
+  /// there, 0 if unknown; "> 0" and "< 0" must hold for the values `level`
+  /// returns, rounded to float. Blocks of block³ nodes whose nodes'
+  /// cells all lie in such a box are filled with ±float max instead of
+  /// being sampled: only cells whose corners change sign shape
+  /// volumeToMesh's output (adaptivity 0), and no such cell touches them,
+  /// so the mesh is the dense sampling's.
+  std::function<int(const Eigen::AlignedBox3d&)> sign_over;
 };
 
 /// Vertices and triangles (normals pointing out of {level < 0}); vertices

@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "skelconv/field/support_box.hpp"
+#include "skelconv/interval/enclosure.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/skeleton.hpp"
 
@@ -33,6 +34,12 @@ std::optional<std::vector<Eigen::AlignedBox3d>> support_boxes_of(const Skeleton&
   return boxes;
 }
 
+/// Coarse enclosures for the mesher's block test: a segment in pieces of
+/// about two box diagonals (not half of one), a triangle cut at most once.
+/// Looser, but each costs a few primitive evaluations' worth: the test only
+/// has to prove blocks far from the surface empty; a block it cannot
+/// decide is sampled, so the mesh does not depend on these values.
+constexpr interval::EnclosureOptions mesher_enclosure_options{.pieces_per_box = 0.5, .max_triangle_levels = 1};
 /// Whether f is infinite somewhere on the skeleton (see the header).
 bool infinite_on_skeleton(const Skeleton& skeleton) {
   for (const Primitive& primitive : skeleton.primitives()) {
@@ -61,6 +68,11 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element) {
   field.skeleton_points = skeleton.skeleton_points(points_per_element);
   field.far_field = 0.0;  // every kernel family (SPEC §1, §4) decays to 0 at infinity
   field.support_boxes = support_boxes_of(skeleton);
+  field.enclosure = [&skeleton](const Eigen::AlignedBox3d& box) {
+    const interval::Interval f =
+        interval::enclose(skeleton, interval::Box{box.min(), box.max()}, mesher_enclosure_options);
+    return std::pair{f.lower(), f.upper()};
+  };
   field.infinite_on_skeleton = infinite_on_skeleton(skeleton);
   return field;
 }

@@ -89,6 +89,46 @@ void check_output_size(const Box3& box, double size, const MeshOptions& options)
   }
 }
 
+/// How far an enclosure must stay from the iso, relative to it, before the
+/// grid method trusts its sign: the enclosure bounds the exact field, the
+/// sampled values carry the closed forms' rounding (≤ 1e-13 relative,
+/// docs/accuracy.md) and are rounded to float, where a level below float's
+/// smallest normal (~1.2e-38) could flush to a zero of the wrong side. 1e-9
+/// covers both with a wide margin and costs no block in practice.
+constexpr double enclosure_margin = 1e-9;
+/// See level_sign: boxes whose centre lies within this many half diagonals
+/// of the surface (to first order) are sampled without an enclosure. The
+/// mesher's coarse enclosures (implicit_field.cpp) of a sum of infinite-
+/// support kernels are several times wider than the field's variation over
+/// the box, so a box this close to the surface is rarely proven empty.
+constexpr double first_order_reach = 8.0;
+
+/// The grid method's sign_over (grid_surface_mesher.hpp) from the field's
+/// enclosure: the sign of iso − f over a box, or 0 when not proven.
+std::function<int(const Eigen::AlignedBox3d&)> level_sign(const ImplicitField& field, double iso) {
+  if (!field.enclosure) return {};
+  return [&field, iso](const Eigen::AlignedBox3d& box) {
+    try {
+      // An enclosure costs about a hundred evaluations, and cannot succeed
+      // where the surface crosses the box: when the first-order distance
+      // from the centre to the surface, |f − c| / |∇f|, is within the box's
+      // half diagonal times first_order_reach, the box is sampled without
+      // trying. Only speed depends on this guess; what is proven, and
+      // hence the mesh, does not.
+      const FieldSample centre = field.value_and_gradient(box.center());
+      const double half_diagonal = 0.5 * box.sizes().norm();
+      if (std::abs(centre.value - iso) <= first_order_reach * centre.gradient.norm() * half_diagonal) return 0;
+      const auto [lo, hi] = field.enclosure(box);
+      const double margin = enclosure_margin * std::abs(iso);
+      if (hi < iso - margin) return 1;  // f below the iso: outside, level > 0
+      if (lo > iso + margin) return -1;
+    } catch (const std::exception&) {
+      // No claim: the block is sampled.
+    }
+    return 0;
+  };
+}
+
 }  // namespace
 
 double estimate_triangles(const Box3& box, double size) {
@@ -126,7 +166,8 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                                                        .voxel = run.size,
                                                        .support_boxes = field.support_boxes ? &*field.support_boxes
                                                                                             : nullptr,
-                                                       .empty_level = iso - 0.0})  // level(p) where f(p) = 0
+                                                       .empty_level = iso - 0.0,  // level(p) where f(p) = 0
+                                                       .sign_over = level_sign(metered, iso)})
                           : detail::cgal_surface_mesh({
                                 .level = level,
                                 .box = run.box,

@@ -366,9 +366,9 @@ bool remove_one_parallel_path(CurveSkeleton& skeleton) {
 /// One removal of a split branch: a loop from a junction back to itself whose
 /// two halves, cut at its node farthest from the junction, run in one tube
 /// (or enclose no hole, as in remove_one_parallel_path). The level sets of a
-/// branch can split it into two paths that meet only at its tip; the tree's
-/// two outermost branches on one side came out so after a change of the
-/// mesh in the last bits of its coordinates (2026-12-03). The half with more
+/// branch can split it into two paths that meet only at its tip; a change of
+/// the mesh in the last bits of its coordinates is enough to make the
+/// tree's two outermost branches on one side come out so. The half with more
 /// interior nodes goes, the tip stays and becomes the branch's end. A handle
 /// at a junction (a ring on a stick) leaves its centre uncovered and its
 /// halves apart: it stays. Returns false when there is none.

@@ -171,7 +171,7 @@ std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) 
   for (const Facet& f : stage.facets) {
     const Vec3 a = f[0].head<3>(), b = f[1].head<3>(), c = f[2].head<3>();
     const double diameter = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    // The polygon rule of docs/cli.md: area ≥ 1e-8 × diameter² (a patch
+    // The polygon rule of docs/cli_skeleton.md: area ≥ 1e-8 × diameter² (a patch
     // facet at a corner can be nearly flat); the margin keeps clear of it.
     if ((b - a).cross(c - a).norm() / 2 < 1e-6 * diameter * diameter) continue;
     const double radius = (f[0].w() + f[1].w() + f[2].w()) / 3;

@@ -6,7 +6,6 @@
 // Internal to skelconv_runtime.
 #pragma once
 
-#include <string_view>
 #include <utility>
 
 #include <fmt/format.h>
@@ -18,9 +17,10 @@
 namespace skelconv::detail {
 
 /// Returns evaluate(); rethrows its NotConvergedError as EvaluationError
-/// ("<evaluator> did not converge at P = (…): <helper's message>").
+/// ("<evaluator> did not converge at P = (…): <helper's message>"). A C
+/// string: a string_view would measure it at every evaluation.
 template <class Evaluate>
-decltype(auto) evaluate_converged(std::string_view evaluator, const Vec3& p, Evaluate&& evaluate) {
+decltype(auto) evaluate_converged(const char* evaluator, const Vec3& p, Evaluate&& evaluate) {
   try {
     return std::forward<Evaluate>(evaluate)();
   } catch (const NotConvergedError& error) {

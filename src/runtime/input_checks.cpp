@@ -46,7 +46,7 @@ void require_scalis_sigma(KernelFamily family, double sigma) {
 void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_length_ratio) {
   if (a == b) throw InputError(fmt::format("degenerate segment: a and b are the same point {}", format_point(a)));
   // |b − a| by std::hypot: no square over- or underflows, so the check and
-  // its message are the same at every scale (issue 16).
+  // its message are the same at every scale.
   const double length = scale_safe_norm(b - a);
   if (!std::isfinite(length)) throw InputError("segment too long: |b - a| overflows double precision");
   const double largest_coordinate = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
@@ -81,8 +81,8 @@ void require_finite_point(const Vec3& v, const std::string& where) {
   if (!v.allFinite()) throw InputError(fmt::format("must be finite, got {}", format_point(v)), where);
 }
 
-void require_finite_query_point(const Vec3& p) {
-  if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", format_point(p)));
+void throw_non_finite_query_point(const Vec3& p) {
+  throw InputError(fmt::format("query point must be finite, got {}", format_point(p)));
 }
 
 namespace {

@@ -28,9 +28,15 @@ std::string format_degree_ranges(const std::vector<int>& degrees);
 /// coordinate of v is finite.
 void require_finite_point(const Vec3& v, const std::string& where);
 
+/// The InputError of require_finite_query_point, out of line (cold path).
+[[noreturn]] void throw_non_finite_query_point(const Vec3& p);
 /// Throws InputError("query point must be finite, got (…)") unless p is
 /// finite. No location: the caller knows which point (a line, a call).
-void require_finite_query_point(const Vec3& p);
+/// Inline: every primitive evaluation runs it, and the test is one compare
+/// per coordinate.
+inline void require_finite_query_point(const Vec3& p) {
+  if (!p.allFinite()) throw_non_finite_query_point(p);
+}
 
 /// Throws unless value is finite and > 0 ("must be > 0, got …", where).
 void require_positive_parameter(double value, const char* where);

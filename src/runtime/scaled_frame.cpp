@@ -2,6 +2,8 @@
 #include "skelconv/scaled_frame.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <limits>
 
 #include <fmt/format.h>
@@ -13,6 +15,15 @@ namespace skelconv {
 namespace {
 
 constexpr double smallest_normal = std::numeric_limits<double>::min();
+
+/// x·2^n, the same double as std::ldexp(x, n) (both round the exact product
+/// once, to nearest), by one product when 2^n is a normal double: the
+/// per-point frame changes then cost a multiplication, not a libm call.
+double times_power_of_two(double x, int n) {
+  if (n < std::numeric_limits<double>::min_exponent - 1 || n > std::numeric_limits<double>::max_exponent - 1)
+    return std::ldexp(x, n);
+  return x * std::bit_cast<double>(std::uint64_t(n + 1023) << 52);  // IEEE binary64: biased exponent n + 1023
+}
 
 [[noreturn]] void throw_out_of_range(const char* what, const Vec3& p, double frame_value, int power_of_two) {
   throw EvaluationError(fmt::format(
@@ -27,24 +38,49 @@ constexpr double smallest_normal = std::numeric_limits<double>::min();
 ScaledFrame::ScaledFrame(double size) : exponent_(std::ilogb(size)) {}
 
 Vec3 ScaledFrame::point(const Vec3& x) const {
-  return {std::ldexp(x.x(), -exponent_), std::ldexp(x.y(), -exponent_), std::ldexp(x.z(), -exponent_)};
+  // |e| ≤ 1022 for every frame of a normal length: one factor for all three.
+  if (-exponent_ >= std::numeric_limits<double>::min_exponent - 1 && -exponent_ <= std::numeric_limits<double>::max_exponent - 1)
+    return x * times_power_of_two(1.0, -exponent_);
+  return {times_power_of_two(x.x(), -exponent_), times_power_of_two(x.y(), -exponent_),
+          times_power_of_two(x.z(), -exponent_)};
 }
 
 double ScaledFrame::restore_value(double value, int power, bool may_vanish, const char* what, const Vec3& p) const {
+  const int shift = power * exponent_;
+  // The common case first: a normal value in a frame of scale 1 comes back
+  // as it is (the checks below would all pass and return it unchanged).
+  if (shift == 0 && std::isnormal(value)) return value;
   if (value == std::numeric_limits<double>::infinity()) return value;
   if (!std::isfinite(value)) {
     throw EvaluationError(fmt::format("{} returned {} at P = {}, where the field is finite: the closed form failed "
                                       "in double precision",
                                       what, value, detail::format_point(p)));
   }
-  const int shift = power * exponent_;
-  const double world = std::ldexp(value, shift);
+  const double world = times_power_of_two(value, shift);
   if (std::isnormal(value) && std::isnormal(world)) return world;
   if (may_vanish && std::isfinite(world)) return world;
   throw_out_of_range(what, p, value, shift);
 }
 
 Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const {
+  // The common case first, with the checks below written out on the three
+  // components: all finite, the largest a normal double, and so is the
+  // largest after the shift (a product by 2^shift scales every component
+  // alike, so the largest stays the largest).
+  const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
+  constexpr double largest_finite = std::numeric_limits<double>::max();
+  if (ax <= largest_finite && ay <= largest_finite && az <= largest_finite) {  // false for NaN
+    const double largest = std::max({ax, ay, az});
+    const int shift = power * exponent_;
+    if (shift == 0 && largest >= smallest_normal) return gradient;
+    if (largest >= smallest_normal) {
+      const double world_largest = times_power_of_two(largest, shift);
+      if (world_largest >= smallest_normal && world_largest <= largest_finite) {
+        return {times_power_of_two(gradient.x(), shift), times_power_of_two(gradient.y(), shift),
+                times_power_of_two(gradient.z(), shift)};
+      }
+    }
+  }
   if (gradient.allFinite() == false) {
     if ((gradient.array() == std::numeric_limits<double>::infinity()).all()) return gradient;  // singular marker
     throw EvaluationError(fmt::format("{} returned the gradient {} at P = {}, where the field is finite: the closed "
@@ -52,8 +88,8 @@ Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* 
                                       what, detail::format_point(gradient), detail::format_point(p)));
   }
   const int shift = power * exponent_;
-  const Vec3 world{std::ldexp(gradient.x(), shift), std::ldexp(gradient.y(), shift),
-                   std::ldexp(gradient.z(), shift)};
+  const Vec3 world{times_power_of_two(gradient.x(), shift), times_power_of_two(gradient.y(), shift),
+                   times_power_of_two(gradient.z(), shift)};
   const double largest = gradient.cwiseAbs().maxCoeff();
   if (largest == 0.0) return world;
   if (!std::isnormal(largest) || !std::isnormal(world.cwiseAbs().maxCoeff())) {

@@ -60,8 +60,14 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
                                  family_name(kernel.family), detail::format_degree_ranges(degrees)),
                      "kernel.degree");
   }
-  if (kernel.family != KernelFamily::compact)
+  if (kernel.family != KernelFamily::compact) {
     generated_ = generated::find_scalis_segment_kernel<double>(kernel.family, kernel.degree);
+    name_ = generated_->name;
+  }
+  const kernels::ScalisSingularity singularity = kernels::with_trait<kernels::on_scalis>(
+      kernel.family, [](auto trait) { return decltype(trait)::type::scalis_singularity; });
+  diverges_on_segment_ = singularity == kernels::ScalisSingularity::on_segment;
+  diverges_at_zero_radius_ = singularity == kernels::ScalisSingularity::at_zero_radius;
 
   // The segment's frame (skelconv/scaled_frame.hpp): F is scale invariant
   // when the radii scale with the coordinates, so F' = F and ∇F = ∇'F'·2^−e.
@@ -79,6 +85,7 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
     input_.sigma = 1.0;
     evaluation_normalisation_ = normalisation(kernel.family, kernel.degree, 1.0);
   }
+  field_scale_ = iso_ / evaluation_normalisation_;
   if (!std::isnormal(evaluation_normalisation_)) {
     throw InputError(fmt::format("the normalisation h of the SCALIS {} kernel of degree {} is {} for sigma = {}, "
                                  "outside the normal range of double precision: choose sigma nearer 1",
@@ -87,27 +94,18 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
   }
 }
 
-std::string ScalisSegment::evaluator_name() const {
-  return generated_ != nullptr ? generated_->name : "scalis_compact_F";
-}
+std::string ScalisSegment::evaluator_name() const { return name_; }
 
 bool ScalisSegment::is_divergent_point(const Vec3& p, const Vec3& frame_p) const {
-  const kernels::ScalisSingularity singularity = kernels::with_trait<kernels::on_scalis>(
-      kernel_.family, [](auto trait) { return decltype(trait)::type::scalis_singularity; });
-  switch (singularity) {
-    case kernels::ScalisSingularity::on_segment: {
-      // P on the closed segment, exactly on the frame's doubles (as Segment does).
-      const Vec3 ab = to_vec3(input_.b) - to_vec3(input_.a);
-      const Vec3 ap = frame_p - to_vec3(input_.a);
-      const double projection = ab.dot(ap);
-      return ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm();
-    }
-    case kernels::ScalisSingularity::at_zero_radius:
-      return (tau0_ == 0.0 && p == a_) || (tau1_ == 0.0 && p == b_);
-    case kernels::ScalisSingularity::none:
-      return false;  // compact: left to scalis_compact_F
+  if (diverges_on_segment_) {
+    // P on the closed segment, exactly on the frame's doubles (as Segment does).
+    const Vec3 ab = to_vec3(input_.b) - to_vec3(input_.a);
+    const Vec3 ap = frame_p - to_vec3(input_.a);
+    const double projection = ab.dot(ap);
+    return ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm();
   }
-  return false;
+  if (diverges_at_zero_radius_) return (tau0_ == 0.0 && p == a_) || (tau1_ == 0.0 && p == b_);
+  return false;  // compact: left to scalis_compact_F
 }
 
 double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double, 3>* grad) const {
@@ -124,7 +122,7 @@ double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double
   }
   ScalisSegmentInput<double> input = input_;
   input.p = to_array(frame_p);
-  const double F = detail::evaluate_converged(evaluator_name(), p, [&] {
+  const double F = detail::evaluate_converged(name_, p, [&] {
     if (generated_ == nullptr) return scalis_compact_F(kernel_.degree, input, grad);
     if (grad == nullptr) return generated_->f(input);
     if (!want_value) {
@@ -135,11 +133,10 @@ double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double
   });
   // Normalised in the frame, then brought back (F is scale invariant, ∇F
   // has units length^−1); a result outside the double range is an error.
-  const std::string name = evaluator_name();
   const bool may_vanish = kernel_.family == KernelFamily::compact;  // outside its support
-  const double scale = iso_ / evaluation_normalisation_;
-  if (grad != nullptr) *grad = to_array(frame_.restore_gradient(scale * to_vec3(*grad), -1, name.c_str(), p));
-  return want_value ? frame_.restore_value(scale * F, 0, may_vanish, name.c_str(), p) : 0.0;
+  const double scale = field_scale_;
+  if (grad != nullptr) *grad = to_array(frame_.restore_gradient(scale * to_vec3(*grad), -1, name_, p));
+  return want_value ? frame_.restore_value(scale * F, 0, may_vanish, name_, p) : 0.0;
 }
 
 double ScalisSegment::value(const Vec3& p) const { return evaluate(p, true, nullptr); }

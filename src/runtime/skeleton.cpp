@@ -27,7 +27,7 @@ bool is_marker(const FieldSample& s) { return s.value == infinity || s.gradient.
 /// EvaluationError located at the node, never a value that could pass for
 /// the +inf marker. Only the parts `need` asked for are checked.
 void require_finite_blend(const FieldSample& result, bool value_wanted, bool gradient_wanted,
-                          const std::string& location, const Vec3& p) {
+                          const char* location, const Vec3& p) {  // a C string: no std::string per evaluation
   if ((!value_wanted || std::isfinite(result.value)) && (!gradient_wanted || result.gradient.allFinite())) return;
   throw EvaluationError(fmt::format("the blend overflowed double precision at P = {} (value {}, gradient {})",
                                     detail::format_point(p), result.value, detail::format_point(result.gradient)),
@@ -103,6 +103,7 @@ void Skeleton::prepare() const {
   // A reference, not a copy of the shared_ptr: its reference count would be
   // one cache line that every thread of a batch writes at every point.
   detail::IndexCache& cache = *cache_;
+  if (cache.built.load(std::memory_order_acquire)) return;
   std::call_once(cache.once, [&] {
     validate();
     auto index = std::make_unique<detail::SkeletonIndex>();
@@ -122,6 +123,7 @@ void Skeleton::prepare() const {
       if (any_bounded) index->grids[id].emplace(boxes);
     }
     cache.index = std::move(index);
+    cache.built.store(true, std::memory_order_release);
   });
 }
 
@@ -201,7 +203,7 @@ FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const d
       if (node.blend.kind == BlendKind::union_max) return from_scalar(blend_union(view));  // one child's sample
       const FieldSample result = from_scalar(blend_super_elliptic(node.blend, view));
       if (!blend_detail::any_infinite(view)) {
-        require_finite_blend(result, need != Need::gradient, need != Need::value, node.location, p);
+        require_finite_blend(result, need != Need::gradient, need != Need::value, node.location.c_str(), p);
       }
       return result;
     }
@@ -213,12 +215,18 @@ FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const de
   const Node& node = nodes_[id];
   FieldSample total;
   bool marker = false;
+  const bool unweighted = node.blend.weights.empty();
   // Left to right, from +0: the same additions whether or not the index
   // skips children (their terms are exactly 0; x + 0 = x for every x the
   // running total can hold, since it is never −0).
   const auto add = [&](std::size_t position) {
     const FieldSample term = evaluate_child(node.children[position], p, need, index);
     marker = marker || is_marker(term);
+    if (unweighted) {  // weight 1: 1·x = x exactly, so the same sums without the products
+      total.value += term.value;
+      if (need != Need::value) total.gradient += term.gradient;  // else every term's gradient is 0
+      return;
+    }
     const double weight = node.blend.weight_of(position);
     total.value += weight * term.value;
     total.gradient += weight * term.gradient;
@@ -230,8 +238,8 @@ FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const de
     for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
   }
   if (marker) return {infinity, Vec3::Constant(infinity)};
-  require_finite_blend(total, need != Need::gradient, need != Need::value, id == root ? "primitives" : node.location,
-                       p);
+  require_finite_blend(total, need != Need::gradient, need != Need::value,
+                       id == root ? "primitives" : node.location.c_str(), p);
   return total;
 }
 
@@ -251,7 +259,7 @@ FieldSample Skeleton::evaluate_angle_blend(NodeId id, const Vec3& p, Need need,
       result = from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &zero));
     }
     if (!is_marker(first) && !is_marker(second)) {
-      require_finite_blend(result, true, need != Need::value, node.location, p);
+      require_finite_blend(result, true, need != Need::value, node.location.c_str(), p);
     }
     return result;
   }
@@ -279,7 +287,7 @@ FieldSample Skeleton::evaluate_angle_blend(NodeId id, const Vec3& p, Need need,
       hessian_times(node.children[1], first.gradient), hessian_times(node.children[1], second.gradient)};
   const FieldSample result =
       from_scalar(blend_super_elliptic_angle<double>(node.blend, to_scalar(first), to_scalar(second), &products));
-  require_finite_blend(result, true, true, node.location, p);
+  require_finite_blend(result, true, true, node.location.c_str(), p);
   return result;
 }
 

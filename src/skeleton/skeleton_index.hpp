@@ -3,6 +3,7 @@
 // Internal to skelconv_runtime.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -24,6 +25,10 @@ struct SkeletonIndex {
 struct IndexCache {
   std::once_flag once;
   std::unique_ptr<const SkeletonIndex> index;
+  /// Set (release) once `index` is built: evaluations test it (acquire)
+  /// before std::call_once, which in libstdc++ sets thread-local state and
+  /// calls pthread_once on every call, even when done.
+  std::atomic<bool> built{false};
 };
 
 }  // namespace skelconv::detail

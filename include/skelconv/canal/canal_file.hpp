@@ -1,5 +1,5 @@
 // skelconv/canal/canal_file.hpp — the input and output of `skelconv canal`
-// (docs/cli.md "canal"; docs/canal.md).
+// (docs/cli_commands.md "skelconv canal"; docs/canal.md).
 //
 // Input (JSON):
 //   {"spheres": [{"center": [x, y, z], "radius": r}, ...],      at least 2, r ≠ 0

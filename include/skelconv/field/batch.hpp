@@ -52,6 +52,15 @@ unsigned default_thread_count();
 /// throws what Skeleton::prepare() throws for an invalid skeleton.
 BatchResult evaluate_batch(const Skeleton& skeleton, std::span<const Vec3> points, const BatchOptions& options = {});
 
+/// The same, written into arrays the caller owns (nothing allocated, no
+/// copy): point k is (xyz[3k], xyz[3k+1], xyz[3k+2]); f goes to values[k],
+/// ∇f to gradients[3k … 3k+2]. values.size() = xyz.size() / 3 and
+/// gradients.size() = xyz.size() (InputError otherwise). Returns the
+/// failure at the lowest index, if any (slots before it are written).
+std::optional<BatchFailure> evaluate_batch_into(const Skeleton& skeleton, std::span<const double> xyz,
+                                                std::span<double> values, std::span<double> gradients,
+                                                const BatchOptions& options = {});
+
 /// Rethrows `error` (an InputError or EvaluationError; anything else as it
 /// is) as the same kind, its whole message as the problem, located at
 /// `where`: a failing point of a batch becomes "line 3: primitives[0]: ..."

@@ -18,7 +18,7 @@ struct InverseKernel {
   static constexpr KernelFamily family = KernelFamily::inverse;
   static constexpr std::string_view name = "inverse";
   static constexpr std::array<std::string_view, 0> parameters{};
-  /// The segments' range (docs/cli.md), so that a file can turn a segment
+  /// The segments' range (docs/cli_skeleton.md), so that a file can turn a segment
   /// into a point without changing its kernel.
   static constexpr int min_degree = 1, max_degree = 16;
   static constexpr bool has_degree = true;          ///< JSON "degree" is read

@@ -1,7 +1,7 @@
 // skelconv/kernels/kernel_list.hpp — every radial kernel trait, as one
 // variant, and the one place a KernelSpec becomes a trait.
 //
-// Adding a family (issue 13) is: its trait header, one entry in RadialKernel
+// Adding a family is: its trait header, one entry in RadialKernel
 // below, and its name in KernelFamily (segment_input.hpp). The reader
 // (src/runtime/skeleton_file.cpp) learns its JSON keys from family_facts().
 #pragma once

@@ -33,8 +33,8 @@
 //
 // value() and derivative() are templates on the scalar type (double, long
 // double, boost::multiprecision numbers…) so that tests can evaluate the same
-// formula in extended precision. A new family (issue 13: soft, wyvill,
-// ferley, gaussian) is one more such struct, one more entry in RadialKernel
+// formula in extended precision. A new family (as soft, wyvill, ferley and
+// gaussian were) is one more such struct, one more entry in RadialKernel
 // (skelconv/kernels/kernel_list.hpp) and its name in KernelFamily.
 //
 // The segment and polygon primitives keep their generated closed forms

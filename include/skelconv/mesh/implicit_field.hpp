@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "skelconv/geometry.hpp"
@@ -35,6 +36,11 @@ struct ImplicitField {
   /// field of compact support). The grid method then skips the blocks of
   /// nodes no box meets (docs/mesh.md, "The grid method"). Unset: no claim.
   std::optional<std::vector<Eigen::AlignedBox3d>> support_boxes;
+  /// When set: a sound enclosure [lo, hi] of f over a box (every f(p), p in
+  /// the box, exact or as computed, lies in it); may throw, which the
+  /// mesher takes as "no claim". The grid method samples only the blocks
+  /// whose enclosure contains the iso (docs/mesh.md, "The grid method").
+  std::function<std::pair<double, double>(const Eigen::AlignedBox3d&)> enclosure;
   /// True when f is infinite on part of the skeleton (a primitive of a
   /// kernel singular at distance 0, such as the inverse family, or a SCALIS
   /// primitive with a zero radius). Only then may an evaluation on or next to
@@ -49,6 +55,7 @@ struct ImplicitField {
 /// has compact support (field/support_box.hpp) and every blend node is a sum
 /// or a union: sums and maxima of exact zeros are zero (a super-elliptic
 /// node may add a constant where its children are 0, Ferley's r_k > c).
+/// enclosure is interval::enclose (interval/enclosure.hpp).
 ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element = 4);
 
 }  // namespace skelconv

@@ -44,7 +44,7 @@ struct ReconstructOptions {
   bool relocate_junctions = true;
   /// B-spline sampling: segments per span.
   int samples_per_span = 4;
-  /// SCALIS Cauchy kernel of the output segments (docs/cli.md), normalised
+  /// SCALIS Cauchy kernel of the output segments (docs/cli_skeleton.md), normalised
   /// so that f = iso at distance r from a long segment of radius r.
   int kernel_degree = 4;
   /// Each free end (an end node, not a junction) is extended along its end

@@ -1,6 +1,6 @@
 // skelconv/reconstruct/skeleton_comparison.hpp — a recovered skeleton
-// against the known one it was meshed from (issue 20's test data: "branch
-// count, junction positions, radii along branches"; docs/reconstruction.md,
+// against the known one it was meshed from (branch count, junction
+// positions, radii along branches; docs/reconstruction.md,
 // "Against the known skeletons").
 //
 // The known skeleton is a set of SCALIS segments (a, b, r_a, r_b). Each
