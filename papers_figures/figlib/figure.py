@@ -24,9 +24,13 @@ class Figure:
     size: tuple = (640, 480)   # image size in pixels (width, height); None for a table without image
     original_caption: str = "" # the caption in the paper's language, when it is not English
     section: str = ""          # what part of the paper's figure we draw, if not all of it
+    experiment: bool = False   # this project's own experiment, not a figure printed in a paper: the gallery
+                               # lists it under "Experiments" and its claims as goals, not as the paper's word
 
     @property
     def heading(self):
+        if self.experiment:
+            return f"Experiment: {self.paper}, {self.number}"
         return f"{self.paper}, {self.kind} {self.number}"
 
 

@@ -23,6 +23,15 @@ at reduced resolution.
 """
 
 
+EXPERIMENTS = """## Experiments
+
+This project's own experiments, not figures printed in the papers: they use a
+paper's method or model on shapes we chose. Their tables compare the
+project's **goal** (a target we set, named with its source) with what we
+measure; no paper states these numbers.
+"""
+
+
 RENDERER = """## The 3-D renderer
 
 `papers_figures/render3d/render_mesh.py MESH.ply OUT.png` renders a mesh written by
@@ -34,10 +43,13 @@ direction, light and colour for every figure). Its test mesh, a UV sphere writte
 """
 
 
-def claim_rows(claims):
-    rows = ["| the paper says | we measure | verdict |", "|---|---|---|"]
+def claim_rows(claims, experiment=False):
+    """A paper's figure compares the paper's statement with our number; an experiment of this
+    project compares its goal (the project's target, not a paper's word) with our number."""
+    first, yes, no = ("goal", "met", "**not met**") if experiment else ("the paper says", "agrees", "**disagrees**")
+    rows = [f"| {first} | we measure | check |", "|---|---|---|"]
     for c in claims:
-        verdict = "agrees" if c.agrees else "**disagrees**"
+        verdict = yes if c.agrees else no
         if c.note:
             verdict += f" ({c.note})"
         rows.append("| " + " | ".join(cell.replace("|", "\\|") for cell in (c.statement, c.measured, verdict)) + " |")
@@ -46,7 +58,7 @@ def claim_rows(claims):
 
 def entry(result, image_dir_rel):
     fig = result["figure"]
-    lines = [f"## {fig.heading}", ""]
+    lines = [("### " if fig.experiment else "## ") + fig.heading, ""]   # experiments sit under "## Experiments"
     if fig.section:
         lines += [f"*What we draw:* {fig.section}", ""]
     lines += [f"> {fig.caption}", ""]
@@ -66,19 +78,29 @@ def entry(result, image_dir_rel):
     if result.get("markdown"):
         lines += [result["markdown"].rstrip(), ""]
     if result["claims"]:
-        lines += [claim_rows(result["claims"]), ""]
+        lines += [claim_rows(result["claims"], fig.experiment), ""]
     return "\n".join(lines)
 
 
 def text(results, pending, image_dir_rel="images"):
     """The gallery's text (no times or dates in it: the same results give the same bytes)."""
+    papers = [r for r in results if not r["figure"].experiment]
+    experiments = [r for r in results if r["figure"].experiment]
     parts = [HEADER]
-    parts.append("## Contents\n\n" + "\n".join(
-        f"- [{r['figure'].heading}](#{anchor(r['figure'].heading)})" for r in results) + "\n")
-    for r in results:
+    contents = "## Contents\n\n" + "\n".join(f"- [{r['figure'].heading}](#{anchor(r['figure'].heading)})"
+                                               for r in papers) + "\n"
+    if experiments:
+        contents += "\n[Experiments](#experiments) (this project's, not figures of the papers):\n\n" + "\n".join(
+            f"- [{r['figure'].heading}](#{anchor(r['figure'].heading)})" for r in experiments) + "\n"
+    parts.append(contents)
+    for r in papers:
         parts.append(entry(r, image_dir_rel))
+    if experiments:
+        parts.append(EXPERIMENTS)
+        for r in experiments:
+            parts.append(entry(r, image_dir_rel))
     if pending:
-        parts.append("## Pending\n\nNot drawn yet, or drawn above only as a 2-D section (each line says what it waits for):\n\n" +
+        parts.append("## Pending\n\nEvery numbered figure and table of the papers not drawn above, with why not or what it waits for:\n\n" +
                      "\n".join(f"- **{heading}**: {what}" for heading, what in pending) + "\n")
     parts.append(RENDERER)
     return "\n".join(parts)

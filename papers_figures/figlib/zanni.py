@@ -44,3 +44,11 @@ def classical_cauchy_radius(tau, iso, degree, sigma):
     with np.errstate(invalid="ignore"):
         inner = np.asarray(base, float) ** (2.0 / (degree - 1)) - 1.0
         return np.where(inner >= 0, sigma * np.sqrt(np.clip(inner, 0, None)), np.nan)
+
+
+def classical_cauchy_weight(radius, iso, degree, sigma):
+    """The weight that gives a classical infinite line the radius `radius` at level iso
+    (the inverse of classical_cauchy_radius): iso / (field of a line of weight 1 at that
+    distance). Thin classical primitives get this weight, not τ, so that each exists on its
+    own with the requested radius (a weight τ can fall below τ_min and draw nothing)."""
+    return iso / classical_cauchy_line(radius, 1.0, degree, sigma)

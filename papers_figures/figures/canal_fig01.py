@@ -1,4 +1,4 @@
-"""Canal surfaces, Figure 1 (docs/canal.md): a SCALIS segment of linearly varying
+"""Experiment (not a figure of the canal paper): a SCALIS segment of linearly varying
 radius against its ideal shape, the canal surface of its spheres (Γ(t), τ(t))
 (a cone frustum with spherical caps, `skelconv canal --mesh`, docs/canal.md).
 (a) the canal surface, (b) the SCALIS surface (`skelconv mesh`) coloured by
@@ -32,9 +32,10 @@ TABLE_MIDDLE_MAX = -2.14e-2
 MATCH = 0.15                # our mesh-based middle max |δ/τ| within 15 % of the table's (mesh vertices vs rays)
 
 FIGURE = Figure(
-    paper="Canal surfaces", kind="Figure", number="1",
+    paper="SCALIS against the canal surface of its spheres", kind="Figure", number="linear radius 0.1 → 0.3",
+    experiment=True,
     caption="A SCALIS segment (radius 0.1 → 0.3, Cauchy 8, σ = 1) and its ideal shape, the canal surface of the "
-            "spheres (Γ(t), τ(t)): how far τ is the thickness (issue 14, docs/canal.md §5).",
+            "spheres (Γ(t), τ(t)): how far τ is the thickness (docs/canal.md §5).",
     section="(a) canal surface, (b) SCALIS coloured by δ/τ (blue inside the canal surface, red outside), "
             "(c) δ/τ at the SCALIS mesh's vertices against x",
     kernel="SCALIS Cauchy 8, σ = 1", iso="1", view="the fixed camera of render3d, one scale for (a) and (b)",

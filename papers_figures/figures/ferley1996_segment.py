@@ -1,10 +1,11 @@
-"""Ferley 1996, reconstruction of the test shape 'segment' (docs/reconstruction.md): a single SCALIS segment (0,0,0)–(3,0,0), radius 0.5,
+"""Experiment (not a figure of the Ferley report): reconstruction of the test shape 'segment' by the method after Ferley 1996: a single SCALIS segment (0,0,0)–(3,0,0), radius 0.5,
 meshed, skeletonized, joined back (figlib/reconstruction.py draws it)."""
 from figlib.figure import Figure
 from figlib.reconstruction import draw_shape
 
 FIGURE = Figure(
-    paper="Ferley 1996", kind="Figure", number="segment",
+    paper="skeleton-based reconstruction (method after Ferley 1996)", kind="Figure", number="test shape 'segment'",
+    experiment=True,
     caption="Reconstruction of a single SCALIS segment (0,0,0)–(3,0,0), radius 0.5: samples, known and recovered skeleton, and the distance of every "
             "stage's surface from the input (docs/reconstruction.md).",
     kernel="SCALIS Cauchy 4, σ = 1.5", iso="1", view="projection on the plane shown", size=(640, 360))

@@ -1,10 +1,11 @@
-"""Ferley 1996, reconstruction of the test shape 'torus' (docs/reconstruction.md): a ring of 16 SCALIS segments of radius 0.4 on a circle of radius 2,
+"""Experiment (not a figure of the Ferley report): reconstruction of the test shape 'torus' by the method after Ferley 1996: a ring of 16 SCALIS segments of radius 0.4 on a circle of radius 2,
 meshed, skeletonized, joined back (figlib/reconstruction.py draws it)."""
 from figlib.figure import Figure
 from figlib.reconstruction import draw_shape
 
 FIGURE = Figure(
-    paper="Ferley 1996", kind="Figure", number="torus",
+    paper="skeleton-based reconstruction (method after Ferley 1996)", kind="Figure", number="test shape 'torus'",
+    experiment=True,
     caption="Reconstruction of a ring of 16 SCALIS segments of radius 0.4 on a circle of radius 2: samples, known and recovered skeleton, and the distance of every "
             "stage's surface from the input (docs/reconstruction.md).",
     kernel="SCALIS Cauchy 4, σ = 1.5", iso="1", view="projection on the plane shown", size=(640, 360))

@@ -1,10 +1,11 @@
-"""Ferley 1996, reconstruction of the test shape 'tripod' (docs/reconstruction.md): a tripod of three SCALIS segments from the origin, 120° apart, radius 0.45 → 0.35,
+"""Experiment (not a figure of the Ferley report): reconstruction of the test shape 'tripod' by the method after Ferley 1996: a tripod of three SCALIS segments from the origin, 120° apart, radius 0.45 → 0.35,
 meshed, skeletonized, joined back (figlib/reconstruction.py draws it)."""
 from figlib.figure import Figure
 from figlib.reconstruction import draw_shape
 
 FIGURE = Figure(
-    paper="Ferley 1996", kind="Figure", number="tripod",
+    paper="skeleton-based reconstruction (method after Ferley 1996)", kind="Figure", number="test shape 'tripod'",
+    experiment=True,
     caption="Reconstruction of a tripod of three SCALIS segments from the origin, 120° apart, radius 0.45 → 0.35: samples, known and recovered skeleton, and the distance of every "
             "stage's surface from the input (docs/reconstruction.md).",
     kernel="SCALIS Cauchy 4, σ = 1.5", iso="1", view="projection on the plane shown", size=(640, 360))

@@ -23,7 +23,10 @@ FIGURE = Figure(
     section="p^i, c_s^i (s = 1) and k_R^i (R = 1) for i = 1, 2, 3, 4, 6, 8 (k_R^1 is not "
             "offered by skelconv: compact degrees start at 2); p_s^i is not a skelconv kernel.",
     kernel="inverse p^i, Cauchy c_1^i, compact k_1^i", view="r from 0.05 to 2",
-    size=(640, 260))
+    size=(1600, 560))
+# One colour per degree in every panel (the compact panel has no i = 1: a shared colour
+# cycle would give its i = 2 the colour the legend gives i = 1).
+COLOURS = {i: f"C{k}" for k, i in enumerate(DEGREES)}
 
 KERNELS = {
     "inverse": (lambda r, i: r ** -i, {}),
@@ -64,12 +67,12 @@ def draw(ctx):
             exact = segment_by_quadrature(formula, i, r)
             scale = np.maximum(np.abs(exact), 1e-300)
             worst = max(worst, float(np.max(np.abs(k - exact)[exact > 1e-12] / scale[exact > 1e-12])))
-            ax.plot(r, k, label=f"i = {i}")
+            ax.plot(r, k, color=COLOURS[i], lw=1.8, label=f"i = {i}")
         ax.set_title(TITLES[family])
         ax.set_xlabel("distance r")
         ax.set_ylim(0, 2.5 if family == "inverse" else 1.05)
+        ax.legend(loc="upper right", ncol=2)            # each panel its own: the degrees it draws
     axes[0].set_ylabel("K(r)")
-    axes[0].legend(loc="upper right", ncol=2)
     plot.save(fig, ctx.image_path, FIGURE.size)
 
     # Regularity at r = R of the compact kernel: the left derivative of k_R^i

@@ -18,6 +18,12 @@ from figures import zanni2013_fig19, zanni2013_fig20
 PAPER_MACHINE = "Intel Core 2 Duo, 2.4 GHz, 1 core used, 2 GB RAM"
 PAPER_ROWS = {"Fig. 19(b)": ("4 545", "0.03 s"), "Fig. 20(c)": ("3 912", "0.03 s"),
               "Ant (medium resolution)": ("94 953", "3.58 s"), "Ant head (high resolution)": ("64 756", "1.71 s")}
+# The paper's ant at medium resolution: 94 953 triangles in 3.58 s on its machine.
+PAPER_ANT_RATE = 94_953 / 3.58          # triangles per second
+# Goal: our ant (same class: a few dozen segments, compact-free Cauchy SCALIS) meshed at least as
+# fast per triangle as the paper's 2008 single core. Checked only in full runs (a timing under
+# ctest would assert the machine's load, not the code) and expected to fall short today.
+RATE_GOAL = 1.0
 LARGE_TRIANGLES = 50_000      # the fine mesh must be of the ~100k-triangle class
 ANT = "zanni_table1_ant.json"  # our ant: gaster, petiole, thorax, head, 6 two-segment legs, antennae, mandibles
 
@@ -91,7 +97,16 @@ def draw(ctx):
                                  f"(--method grid --size {rows[-1][3]:g})")], FIGURE.size)
     ctx.log("\n" + ctx.markdown)
     large = int(meshes[-2].stats["triangles"])
-    return [Claim("every mesh of the table is a closed manifold",
+    rate = int(ant.stats["triangles"]) / ant.seconds
+    timing = [] if ctx.quick else [Claim(
+        f"(goal) our ant meshes at ≥ {RATE_GOAL:g} × the paper's rate ({PAPER_ANT_RATE:,.0f} triangles/s on "
+        f"{PAPER_MACHINE})",
+        f"{rate:,.0f} triangles/s ({ant.stats['triangles']} in {ant.seconds:.2f} s, --method grid on "
+        f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}): {rate / PAPER_ANT_RATE:.3f} × the paper's",
+        rate >= RATE_GOAL * PAPER_ANT_RATE, expect_agreement=False,
+        note="a known shortfall: every primitive is evaluated at every point (no culling) and the mesher refines "
+             "and projects with the exact gradient; measured on this branch's mesher, under the load shown")]
+    return timing + [Claim("every mesh of the table is a closed manifold",
                   ", ".join(f"{m.stats['triangles']} triangles closed {m.stats['closed']}" for m in meshes),
                   all(m.closed for m in meshes)),
             Claim("the finer mesh is of the paper's large class (~100k triangles)",
