@@ -28,6 +28,7 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/implicit_field.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
+#include "skelconv/mesh/surface_seeds.hpp"
 #include "skelconv/skeleton_file.hpp"
 
 #ifndef SKELCONV_BINARY
@@ -209,6 +210,27 @@ ImplicitField scaled(const Skeleton& skeleton, double alpha) {
   };
   for (Vec3& p : field.skeleton_points) p *= alpha;
   return field;
+}
+
+// A seed ray that meets an evaluation failure is skipped only where the field
+// is infinite on its skeleton (an inverse kernel); on a field finite
+// everywhere the failure is a real one and must reach the caller.
+TEST(MeshSeeds, EvaluationErrorsSurfaceUnlessTheFieldIsInfiniteOnItsSkeleton) {
+  ImplicitField field;
+  // A ball of radius 1 (f = 2 − |p|², iso 1) whose evaluation fails on the
+  // plane x = 0.5, crossed by the rays from the centre along +x.
+  field.value = [](const Vec3& p) {
+    if (std::abs(p.x() - 0.5) < 0.3) throw EvaluationError("injected failure");
+    return 2.0 - p.squaredNorm();
+  };
+  field.value_and_gradient = [&field](const Vec3& p) { return FieldSample{field.value(p), -2.0 * p}; };
+  field.skeleton_points = {Vec3::Zero()};
+  const Box3 box{Vec3::Constant(-2.0), Vec3::Constant(2.0)};
+  SurfaceSeedOptions options;
+  options.spacing = 0.1;
+  EXPECT_THROW(surface_seeds(field, 1.0, box, options), EvaluationError);
+  field.infinite_on_skeleton = true;  // the documented excuse: the other rays seed
+  EXPECT_FALSE(surface_seeds(field, 1.0, box, options).empty());
 }
 
 TEST(MeshScale, TheBoxAndSeedsFollowTheSkeletonScale) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdio>
+#include <new>
 #include <string>
 #include <string_view>
 
@@ -48,6 +49,10 @@ int print_all_or_nothing(Produce produce) {
     return exit_bad_input;
   } catch (const EvaluationError& error) {
     report_error(error.what());
+    return exit_evaluation_failed;
+  } catch (const std::bad_alloc&) {
+    report_error("out of memory: the work asked for is larger than this machine's memory (choose a coarser size "
+                 "or fewer points)");
     return exit_evaluation_failed;
   }
   if (std::fwrite(output.data(), 1, output.size(), stdout) != output.size() || std::fflush(stdout) != 0) {

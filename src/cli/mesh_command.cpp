@@ -80,6 +80,9 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
   mesh->add_option("--iso", options.iso, "Level c of the surface f = c (default 1)");
   mesh->add_option("--size", options.size, "Largest facet circumradius h (default: box diagonal / 50)");
   mesh->add_option("--distance", options.distance, "Largest facet-to-surface distance d (default h / 10)");
+  mesh->add_option("--max-triangles", options.max_triangles,
+                   "Refuse a --size whose mesh would have more triangles than this (estimated from the box "
+                   "before meshing; default 4000000)");
   mesh->add_flag("--ascii", options.ascii, "Write ASCII PLY instead of binary");
   mesh->add_flag("--quiet", options.quiet, "No progress line on stderr");
   mesh->footer(mesh_footer);
@@ -95,6 +98,7 @@ int run_mesh(const MeshCommandOptions& options) {
     mesh_options.method = options.method == "grid" ? MeshMethod::grid : MeshMethod::cgal;
     mesh_options.size = options.size;
     mesh_options.distance = options.distance;
+    if (options.max_triangles) mesh_options.max_triangles = *options.max_triangles;
     if (!options.quiet) {
       mesh_options.progress = [](const MeshProgress& p) {
         std::fprintf(stderr, "skelconv mesh: refining, %zu field evaluations, %.1f s\n", p.field_evaluations,

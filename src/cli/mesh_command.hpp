@@ -27,6 +27,7 @@ struct MeshCommandOptions {
   std::optional<double> iso;
   std::optional<double> size;
   std::optional<double> distance;
+  std::optional<std::size_t> max_triangles;  ///< MeshOptions::max_triangles when set
   bool ascii = false;
   bool quiet = false;
 };

@@ -18,6 +18,7 @@
 
 #include <cstdlib>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -69,7 +70,12 @@ GridMeshEntry grid_mesher_entry() {
 
 TriangleMesh grid_surface_mesh(const GridSurfaceRequest& request) {
   TriangleMesh mesh;
-  grid_mesher_entry()(&request, &mesh);
+  try {
+    grid_mesher_entry()(&request, &mesh);
+  } catch (const std::runtime_error& error) {  // OpenVDB's, from the module (grid_surface_mesher.cpp)
+    throw EvaluationError(fmt::format("the grid method (OpenVDB) cannot mesh this box at grid spacing {:g}: {}",
+                                      request.voxel, error.what()));
+  }
   return mesh;
 }
 

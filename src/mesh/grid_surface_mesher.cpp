@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 
+#include <stdexcept>
+
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
@@ -101,5 +103,13 @@ TriangleMesh openvdb_surface_mesh(const GridSurfaceRequest& request) {
 /// The module's entry point, looked up by name (grid_mesher_loader.cpp).
 extern "C" __attribute__((visibility("default"))) void skelconv_grid_surface_mesh(
     const skelconv::detail::GridSurfaceRequest* request, skelconv::TriangleMesh* mesh) {
-  *mesh = skelconv::detail::openvdb_surface_mesh(*request);
+  // OpenVDB's own exceptions (a grid transform it cannot build) leave the
+  // module as std::runtime_error (the module does not link the runtime's
+  // error types); grid_surface_mesh (grid_mesher_loader.cpp) words them for
+  // the user.
+  try {
+    *mesh = skelconv::detail::openvdb_surface_mesh(*request);
+  } catch (const openvdb::Exception& error) {
+    throw std::runtime_error(error.what());
+  }
 }

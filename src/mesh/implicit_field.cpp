@@ -1,7 +1,11 @@
 // Implementation of skelconv/mesh/implicit_field.hpp.
 #include "skelconv/mesh/implicit_field.hpp"
 
+#include <type_traits>
+#include <variant>
+
 #include "skelconv/field/support_box.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/skeleton.hpp"
 
 namespace skelconv {
@@ -29,6 +33,25 @@ std::optional<std::vector<Eigen::AlignedBox3d>> support_boxes_of(const Skeleton&
   return boxes;
 }
 
+/// Whether f is infinite somewhere on the skeleton (see the header).
+bool infinite_on_skeleton(const Skeleton& skeleton) {
+  for (const Primitive& primitive : skeleton.primitives()) {
+    const bool infinite = std::visit(
+        [](const auto& p) {
+          using P = std::decay_t<decltype(p)>;
+          if (kernels::family_facts(p.kernel().family).singular_at_zero) return true;
+          if constexpr (std::is_same_v<P, ScalisSegment>) return p.tau0() == 0.0 || p.tau1() == 0.0;
+          if constexpr (std::is_same_v<P, ScalisTriangle>) {
+            return p.radii()[0] == 0.0 || p.radii()[1] == 0.0 || p.radii()[2] == 0.0;
+          }
+          return false;
+        },
+        primitive);
+    if (infinite) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element) {
@@ -38,6 +61,7 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element) {
   field.skeleton_points = skeleton.skeleton_points(points_per_element);
   field.far_field = 0.0;  // every kernel family (SPEC §1, §4) decays to 0 at infinity
   field.support_boxes = support_boxes_of(skeleton);
+  field.infinite_on_skeleton = infinite_on_skeleton(skeleton);
   return field;
 }
 

@@ -77,7 +77,25 @@ void check_options(const ImplicitField& field, const MeshOptions& options) {
   if (field.skeleton_points.empty()) throw InputError("the skeleton is empty: there is no surface to mesh");
 }
 
+/// Refuses a facet size whose mesh would exceed options.max_triangles.
+void check_output_size(const Box3& box, double size, const MeshOptions& options) {
+  const double estimate = estimate_triangles(box, size);
+  if (!(estimate <= double(options.max_triangles))) {
+    throw InputError(fmt::format("a facet size of {:g} in a box of diagonal {:g} makes about {:.2g} triangles, "
+                                 "more than the limit {} (--max-triangles): choose a larger --size, or raise "
+                                 "--max-triangles if the memory and time are there",
+                                 size, box.diagonal(), estimate, options.max_triangles),
+                     "--size");
+  }
+}
+
 }  // namespace
+
+double estimate_triangles(const Box3& box, double size) {
+  const Vec3 e = box.hi - box.lo;
+  const double area = 2 * (e.x() * e.y() + e.y() * e.z() + e.z() * e.x());
+  return area / (size * size);
+}
 
 TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& options, MeshReport* report) {
   const Clock::time_point start = Clock::now();
@@ -90,6 +108,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   run.box = bounding_region(metered, iso);
   run.size = options.size.value_or(run.box.diagonal() / 50);
   run.distance = options.distance.value_or(run.size / 10);
+  check_output_size(run.box, run.size, options);
   // The grid method does not need the seeds, but computing them is what
   // tells "no surface at this iso" apart from a surface the grid misses.
   const std::vector<Vec3> seeds = surface_seeds(metered, iso, run.box, {.spacing = run.size});

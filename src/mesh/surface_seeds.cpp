@@ -112,11 +112,13 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
     // form may refuse it (EvaluationError: "returned inf where the field is
     // finite"). Such a point is skipped, not fatal: the others (the centroid,
     // the points inside) seed the same component. Only when every skeleton
-    // point failed is the first failure reported.
+    // point failed is the first failure reported. A field finite everywhere
+    // has no such excuse: its errors surface at once.
     double f = 0.0;
     try {
       f = field.value(p);
     } catch (const EvaluationError& error) {
+      if (!field.infinite_on_skeleton) throw;
       if (!first_failure) first_failure = error;
       continue;
     }
@@ -131,6 +133,7 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
       try {
         if (auto crossing = ray_crossing(field, iso, box, p, d, options)) crossings.push_back(*crossing);
       } catch (const EvaluationError&) {
+        if (!field.infinite_on_skeleton) throw;
       }
     }
     grid.add_from_one_source(crossings, seeds);

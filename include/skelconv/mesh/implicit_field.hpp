@@ -35,6 +35,12 @@ struct ImplicitField {
   /// field of compact support). The grid method then skips the blocks of
   /// nodes no box meets (docs/mesh.md, "The grid method"). Unset: no claim.
   std::optional<std::vector<Eigen::AlignedBox3d>> support_boxes;
+  /// True when f is infinite on part of the skeleton (a primitive of a
+  /// kernel singular at distance 0, such as the inverse family, or a SCALIS
+  /// primitive with a zero radius). Only then may an evaluation on or next to
+  /// the skeleton be refused (EvaluationError) and a seed ray be skipped for
+  /// it; otherwise every EvaluationError reaches the caller.
+  bool infinite_on_skeleton = false;
 };
 
 /// The field of `skeleton` (which must outlive the returned object), with

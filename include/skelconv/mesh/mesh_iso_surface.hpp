@@ -54,6 +54,10 @@ struct MeshOptions {
   /// mesh's bounding-box diagonal.
   double projection_tolerance = 1e-9;
   unsigned random_seed = 0;
+  /// The run is refused before any refinement when it would make more
+  /// triangles than this (estimate_triangles below): a facet size far too
+  /// small for the box would otherwise run for hours and exhaust memory.
+  std::size_t max_triangles = 4'000'000;
   std::function<void(const MeshProgress&)> progress;
   double progress_interval = 1.0;
 };
@@ -70,8 +74,16 @@ struct MeshReport {
   double refine_seconds = 0.0;  ///< step 4, field time included
 };
 
+/// About how many triangles a mesh of facet size h makes of a surface inside
+/// `box`: the box's surface area over h². An order of magnitude, used only
+/// to refuse absurd sizes before the work starts. It leans high for the
+/// usual shapes: a ball fills its box with π/6 ≈ 0.52 of the box's area,
+/// and an equilateral triangle of circumradius h covers 3√3/4 h² ≈ 1.3 h².
+double estimate_triangles(const Box3& box, double size);
+
 /// Meshes f = options.iso. Throws InputError (located at "--iso", "--size",
-/// "--distance") for an unbounded or absent surface or bad options, and
+/// "--distance") for an unbounded or absent surface or bad options (a --size
+/// whose estimated triangle count exceeds options.max_triangles among them), and
 /// EvaluationError if the field cannot be evaluated or a vertex not projected.
 TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& options, MeshReport* report = nullptr);
 
