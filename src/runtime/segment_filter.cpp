@@ -32,7 +32,8 @@ SegmentInput<FastScalar> exact_input(const SegmentInput<double>& in) {
   return x;
 }
 
-double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+// hypot: no underflow of the squares (bounds of tiny gradients are tinier).
+double norm(const std::array<double, 3>& v) { return std::hypot(v[0], v[1], v[2]); }
 
 void store_gradient(const std::array<FastScalar, 3>& g, FastEvaluation& out) {
   std::array<double, 3> bounds{};

@@ -10,15 +10,15 @@
 // roundoff and fl(x ∘ y) = (x ∘ y)(1 + δ), |δ| ≤ u:
 //
 //   x ± y   e = e_x + e_y + u |r|
-//   x · y   e = |x| e_y + |y| e_x + e_x e_y + u |r|
-//   x / y   e = (e_x + |r| e_y) / (|y| − e_y) + u |r|          (∞ if e_y ≥ |y|)
-//   √x      e = e_x / √x + u |r|       (√X − √x = (X − x)/(√X + √x))
+//   x · y   e = |x| e_y + |y| e_x + e_x e_y + u |r| + η
+//   x / y   e = (e_x + |r| e_y) / (|y| − e_y) + u |r| + η      (∞ if e_y ≥ |y|)
+//   √x      e = min(e_x / √x, √e_x) + u |r|  (√X − √x = (X − x)/(√X + √x))
 //   log x   e = e_x / (x − e_x) + L u |r|  (mean value theorem; ∞ if e_x ≥ x)
 //   asinh x e = e_x + L u |r|              (|asinh'| ≤ 1)
 //   atan2   e = (π/2)(e_x + e_y)/√(x² + y²) + L u |r|  (∞ near the branch cut)
 //   min, max: e = max(e_x, e_y)            (1-Lipschitz in the max norm)
 //
-// with L = 4 the libm's error in units of u (glibc documents at most 1–2 ulp
+// with η the smallest subnormal (underflow), L = 4 the libm's error in units of u (glibc documents at most 1–2 ulp
 // for log, atan2 and asinh on x86-64, and 1 ulp ≤ 2u|r|). The rounding of
 // the bound's own arithmetic (about u per operation, relative to the bound)
 // is covered by `kBoundSafety` at the end (bound()). The bound is honest
@@ -46,6 +46,9 @@ struct RunningError {
   static constexpr T u = std::numeric_limits<T>::epsilon() / 2;
   static constexpr T kLibm = 4;  // libm error bound, units of u (see above)
   static constexpr T inf = std::numeric_limits<T>::infinity();
+  // Underflow: fl(x ∘ y) = (x ∘ y)(1 + δ) + η with |η| ≤ the smallest
+  // subnormal for × and / (Higham §2.1; sums of doubles are exact there).
+  static constexpr T eta = std::numeric_limits<T>::denorm_min();
 
   RunningError operator-() const { return {-value, err}; }
   RunningError& operator+=(const RunningError& y) { return *this = *this + y; }
@@ -63,19 +66,21 @@ struct RunningError {
   }
   friend RunningError operator*(const RunningError& x, const RunningError& y) {
     const T r = x.value * y.value;
-    return {r, std::abs(x.value) * y.err + std::abs(y.value) * x.err + x.err * y.err + u * std::abs(r)};
+    return {r, std::abs(x.value) * y.err + std::abs(y.value) * x.err + x.err * y.err + u * std::abs(r) + eta};
   }
   friend RunningError operator/(const RunningError& x, const RunningError& y) {
     const T r = x.value / y.value;
     const T margin = std::abs(y.value) - y.err;
     if (!(margin > 0)) return {r, inf};
-    return {r, (x.err + std::abs(r) * y.err) / margin + u * std::abs(r)};
+    return {r, (x.err + std::abs(r) * y.err) / margin + u * std::abs(r) + eta};
   }
   friend RunningError sqrt(const RunningError& x) {
     const T r = std::sqrt(x.value);
     if (x.err == 0) return {r, u * r};
-    if (!(r > 0)) return {r, inf};
-    return {r, x.err / r + u * r};
+    if (!(x.value >= 0)) return {r, inf};
+    // Also |√X − √x| ≤ √|X − x| for X, x ≥ 0: finite where x → 0.
+    const T propagated = std::sqrt(x.err);
+    return {r, (r > 0 && x.err / r < propagated ? x.err / r : propagated) + u * r};
   }
   friend RunningError log(const RunningError& x) {
     const T r = std::log(x.value);

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 
 #include "skelconv/segment_input.hpp"
 
@@ -42,9 +43,10 @@ struct FastEvaluation {
   double grad_bound = 0;
 };
 
-/// Whether a fast value with error bound `bound` passes at `tolerance`.
+/// Whether a fast value of size `magnitude` with error bound `bound` passes
+/// at `tolerance` (never an infinite or NaN one).
 inline bool filter_accepts(double magnitude, double bound, double tolerance) {
-  return bound <= tolerance * (magnitude - bound);
+  return magnitude < std::numeric_limits<double>::infinity() && bound <= tolerance * (magnitude - bound);
 }
 
 /// One generated segment kernel with its filter.
