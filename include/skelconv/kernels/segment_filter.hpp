@@ -1,0 +1,84 @@
+// skelconv/kernels/segment_filter.hpp — generated segment kernels behind a
+// floating-point filter: fast and exact at once.
+//
+// Every generated segment kernel has a stable form (generated/segment_*.hpp,
+// <name>_{f,grad,f_and_grad}: run-time choices of stable rewrites near the
+// line, beyond an end, in the far field) and, where its generic path calls no
+// helper, a fast form (<name>_fast_*: the generic formula alone). The filter
+// (CGAL's filtered kernels, Shewchuk's adaptive predicates) evaluates the
+// fast form on RunningError<double> (skelconv/kernels/running_error.hpp),
+// which bounds its rounding error as it goes, and accepts it when
+//
+//     bound ≤ tolerance · (|value| − bound)
+//
+// (so the relative error against the exact value is ≤ tolerance; for ∇f,
+// Euclidean norms of the component bounds and of ∇f). Elsewhere it returns
+// the stable form. verify/filter_check.cpp checks the bound against float128
+// references.
+#pragma once
+
+#include <array>
+#include <limits>
+
+#include "skelconv/primitives/segment_input.hpp"
+
+namespace skelconv {
+
+namespace generated {
+template <class T>
+struct SegmentKernel;
+struct SegmentFastKernel;
+}  // namespace generated
+
+/// The default relative tolerance of the filter: the verifier's accuracy
+/// goal for every generated kernel and region (docs/verify.md), so that an
+/// accepted fast value is as good as the stable forms are required to be.
+inline constexpr double kDefaultFilterTolerance = 1e-13;
+
+/// What the fast form gave, with its error bounds (absolute; the gradient's
+/// is the Euclidean norm of its components' bounds).
+struct FastEvaluation {
+  double f = 0, f_bound = 0;
+  std::array<double, 3> grad{};
+  double grad_bound = 0;
+};
+
+/// Whether a fast value of size `magnitude` with error bound `bound` passes
+/// at `tolerance` (never an infinite or NaN one).
+inline bool filter_accepts(double magnitude, double bound, double tolerance) {
+  return magnitude < std::numeric_limits<double>::infinity() && bound <= tolerance * (magnitude - bound);
+}
+
+/// One generated segment kernel with its filter.
+class FilteredSegmentKernel {
+ public:
+  /// nullptr where (family, degree, weight degree) was not generated.
+  static const FilteredSegmentKernel* find(KernelFamily family, int degree, int weight_degree);
+
+  /// Whether the kernel has a fast form (else the filter always falls back).
+  bool has_fast_form() const { return fast_ != nullptr; }
+  const generated::SegmentKernel<double>& stable() const { return *stable_; }
+
+  /// The fast forms alone, with their bounds (no fallback); false without a
+  /// fast form. `which`: 0 f, 1 ∇f, 2 both (the fields it does not compute
+  /// stay 0).
+  bool evaluate_fast(const SegmentInput<double>& in, int which, FastEvaluation& out) const;
+
+  /// f, ∇f, both: the fast form where the filter accepts it, else the stable
+  /// one; `accepted` (if given) says which.
+  double f(const SegmentInput<double>& in, double tolerance = kDefaultFilterTolerance,
+           bool* accepted = nullptr) const;
+  std::array<double, 3> grad(const SegmentInput<double>& in, double tolerance = kDefaultFilterTolerance,
+                             bool* accepted = nullptr) const;
+  double f_and_grad(const SegmentInput<double>& in, std::array<double, 3>& grad,
+                    double tolerance = kDefaultFilterTolerance, bool* accepted = nullptr) const;
+
+  FilteredSegmentKernel(const generated::SegmentKernel<double>* stable, const generated::SegmentFastKernel* fast)
+      : stable_(stable), fast_(fast) {}
+
+ private:
+  const generated::SegmentKernel<double>* stable_;
+  const generated::SegmentFastKernel* fast_;
+};
+
+}  // namespace skelconv
