@@ -1,37 +1,29 @@
 #!/usr/bin/env bash
 # README command 1: install what is missing, build, regenerate the kernels
-# and diff them against generated/, run the verification sweeps (segments and
-# polygons, at half their default sizes) and print their summary tables. The
-# default sizes are under `ctest --preset release -L long`.
+# and diff them against generated/, run every test that CI does not run
+# (the ctest label `long`: the default-size verification sweeps and their
+# baseline compare, the full SCALIS property sweep, the reconstruction
+# quality table, the long fuzz run, the package test, the slow figure
+# claims), then the sanitizer run (scripts/sanitize.sh), and print the
+# sweeps' summary tables. `ctest -N -L long` lists exactly what stage 3 runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
 stage() { echo "== [$((SECONDS - start)) s] $*"; }
 
 scripts/install_dependencies.sh
-# Only what this job runs: the generator (for the regeneration diff) and the
-# two verifiers, which link the double segment table and not the rest of the
-# runtime. Not the CLI, the mesher, the tests, the benchmarks, the figures or
-# the Python module (scripts/test.sh builds those).
-stage "building the generator and the two verifiers"
-# One target for the three (CMakeLists.txt says why).
-scripts/build.sh --target skelconv-main-job
+stage "building everything (the long tests need the command, the test programs and the verifiers)"
+scripts/build.sh
 
 stage "regenerating the kernels and diffing them against generated/"
-ctest --preset release -R codegen_regeneration_is_byte_identical --output-on-failure
+ctest --test-dir build/release -R codegen_regeneration_is_byte_identical --output-on-failure
 
-mkdir -p build/release/reports
-# Both sweeps at half their default size, to keep this job within minutes on
-# 2 cores; `ctest --preset release -L long` runs the default sizes
-# (verify_sweep_default, verify_polygon_sweep_default, each compared with its
-# committed baseline where it has one).
-stage "segment verification sweep (1,000 generic samples, 100 in every other region, per cell)"
-build/release/verify/skelconv-verify --generic-points 1000 --other-points 100 \
-  --json build/release/reports/verify_segments.json
-echo "== report written to build/release/reports/verify_segments.json"
+stage "the long tests: $(ctest --test-dir build/release -N -L long | grep -c 'Test *#') tests (ctest -L long)"
+ctest --test-dir build/release -L long --output-on-failure -j2
 
-stage "polygon verification sweep (1,000 generic samples, 100 in every other region, per family; long double reference)"
-build/release/verify/skelconv-verify-polygons --generic-points 1000 --points 100 \
-  --json build/release/reports/verify_polygons.json
-echo "== report written to build/release/reports/verify_polygons.json"
+stage "sanitizers: ASan + UBSan build of the runtime, the command and the unit tests"
+scripts/sanitize.sh
+
+stage "summary of the default-size segment sweep (build/release/verify/verify_sweep_default.json)"
+build/release/verify/skelconv-verify markdown build/release/verify/verify_sweep_default.json | head -60
 stage "main job done"
