@@ -11,6 +11,7 @@
 #include "exit_status.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/mesh_reader.hpp"
+#include "skelconv/reconstruct/mesh_check.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/sample_noise.hpp"
 
@@ -105,6 +106,11 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       std::fprintf(stderr, "skelconv skeletonize: %.*s\n", int(line.size()), line.data());
     };
     const TriangleMesh input = read_mesh(options.input_path);
+    try {
+      reconstruct::check_closed_mesh(input);
+    } catch (const InputError& error) {
+      throw error.inside(options.input_path);
+    }
     if (ro.progress) ro.progress(fmt::format("read {} vertices, {} triangles", input.vertices.size(), input.triangles.size()));
     const TriangleMesh samples = reconstruct::with_sample_noise(input, options.noise);
     const reconstruct::Reconstruction r = [&] {

@@ -1,0 +1,21 @@
+// skelconv/reconstruct/mesh_check.hpp — what reconstruction asks of its input
+// mesh, checked before any sampling so that a bad mesh gets one message in
+// the user's terms (docs/reconstruction.md, "Input"): not empty, closed,
+// edge-manifold, consistently and outwardly oriented, without cavities.
+#pragma once
+
+#include "skelconv/mesh/triangle_mesh.hpp"
+
+namespace skelconv::reconstruct {
+
+/// Throws InputError naming the first problem of `mesh`:
+/// - empty: no triangle (or a triangle with a repeated vertex only);
+/// - open: an edge used by one triangle (a boundary);
+/// - non-manifold: an edge used by more than two triangles;
+/// - inconsistently oriented: an edge used twice in the same direction;
+/// - inside out: a negative enclosed volume;
+/// - a cavity: a connected component with negative volume inside the others.
+/// Degenerate triangles (a repeated index) are ignored, as the samplers do.
+void check_closed_mesh(const TriangleMesh& mesh);
+
+}  // namespace skelconv::reconstruct

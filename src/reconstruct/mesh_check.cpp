@@ -1,0 +1,96 @@
+// Implementation of skelconv/reconstruct/mesh_check.hpp: plain edge counting
+// (no CGAL) so that the check costs O(n log n) and compiles fast.
+#include "skelconv/reconstruct/mesh_check.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "skelconv/errors.hpp"
+#include "union_find.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+using Edge = std::pair<std::int32_t, std::int32_t>;
+
+/// Triangles with three distinct vertex indices.
+std::vector<std::array<std::int32_t, 3>> proper_triangles(const TriangleMesh& mesh) {
+  std::vector<std::array<std::int32_t, 3>> out;
+  for (const auto& t : mesh.triangles)
+    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) out.push_back(t);
+  return out;
+}
+
+/// Every directed edge's count; throws for open, non-manifold, inconsistent.
+void check_edges(const std::vector<std::array<std::int32_t, 3>>& triangles) {
+  std::map<Edge, int> directed;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  std::size_t open = 0, non_manifold = 0, inconsistent = 0;
+  for (const auto& [e, n] : directed) {
+    const auto back = directed.find({e.second, e.first});
+    const int reverse = back == directed.end() ? 0 : back->second;
+    if (n + reverse > 2) ++non_manifold;
+    else if (n == 2) ++inconsistent;
+    else if (reverse == 0) ++open;
+  }
+  if (non_manifold)
+    throw InputError(fmt::format("the mesh is not manifold: {} edges are shared by more than two triangles",
+                                 non_manifold));
+  if (open)
+    throw InputError(fmt::format("the mesh is open: {} boundary edges (holes); reconstruction needs a closed "
+                                 "surface",
+                                 open));
+  if (inconsistent)
+    throw InputError(fmt::format("the mesh's orientation is inconsistent: {} edges are used twice in the same "
+                                 "direction (some triangles are flipped)",
+                                 inconsistent));
+}
+
+/// Six times the signed volume enclosed by each connected component
+/// (divergence theorem: Σ a·(b×c) over the triangles).
+std::vector<double> component_volumes(const TriangleMesh& mesh,
+                                      const std::vector<std::array<std::int32_t, 3>>& triangles) {
+  std::vector<std::int32_t> parent(mesh.vertices.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::int32_t(i);
+  for (const auto& t : triangles)
+    for (int k = 1; k < 3; ++k) parent[std::size_t(detail::find_root(parent, t[k]))] = detail::find_root(parent, t[0]);
+  std::map<std::int32_t, std::size_t> index;
+  std::vector<double> volume;
+  for (const auto& t : triangles) {
+    const auto [it, added] = index.emplace(detail::find_root(parent, t[0]), volume.size());
+    if (added) volume.push_back(0.0);
+    const Vec3& a = mesh.vertices[std::size_t(t[0])];
+    volume[it->second] += a.dot(mesh.vertices[std::size_t(t[1])].cross(mesh.vertices[std::size_t(t[2])]));
+  }
+  return volume;
+}
+
+}  // namespace
+
+void check_closed_mesh(const TriangleMesh& mesh) {
+  const auto triangles = proper_triangles(mesh);
+  if (triangles.empty()) throw InputError("the mesh is empty: it has no triangle");
+  check_edges(triangles);
+  for (const auto& t : triangles)
+    for (std::int32_t i : t)
+      if (i < 0 || std::size_t(i) >= mesh.vertices.size())
+        throw InputError(fmt::format("a triangle refers to vertex {}, but the mesh has {}", i, mesh.vertices.size()));
+  const std::vector<double> volumes = component_volumes(mesh, triangles);
+  double total = 0.0;
+  for (double v : volumes) total += v;
+  if (!(total > 0.0))
+    throw InputError("the mesh is inside out: its triangles face inwards (enclosed volume is negative); flip them");
+  const auto negative = std::count_if(volumes.begin(), volumes.end(), [](double v) { return v < 0.0; });
+  if (negative)
+    throw InputError(fmt::format("the mesh has {} inward-facing part(s), i.e. cavities inside the solid; cavities "
+                                 "are not supported",
+                                 negative));
+}
+
+}  // namespace skelconv::reconstruct
