@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libbenchmark-dev libcgal-dev
   valgrind                # bench/: instruction counts
+  clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer harnesses of the PLY/OBJ reader and the point lines (clang's -fsanitize=fuzzer)
   libhwy-dev libsleef-dev # src/simd/: vector batches (Highway: run-time dispatch AVX-512/AVX2/portable; SLEEF: vector atan2, log, asinh)
   libflint-arb-dev        # verify/: Arb ball arithmetic and acb_calc_integrate, the certified references (verify_certified_references)
   libgsl-dev              # bench/ only: GSL's adaptive QAG (61-point rule), the quadrature baseline

@@ -4,7 +4,8 @@
 # (the ctest label `long`: the default-size verification sweeps and their
 # baseline compare, the full SCALIS property sweep, the reconstruction
 # quality table, the long fuzz run, the package test, the slow figure
-# claims), then the sanitizer run (scripts/sanitize.sh), and print the
+# claims), then the sanitizer run (scripts/sanitize.sh) and the libFuzzer
+# harnesses (scripts/fuzz.sh), and print the
 # sweeps' summary tables. `ctest -N -L long` lists exactly what stage 3 runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,6 +24,9 @@ ctest --test-dir build/release -L long --output-on-failure -j2
 
 stage "sanitizers: ASan + UBSan build of the runtime, the command and the unit tests"
 scripts/sanitize.sh
+
+stage "libFuzzer: the PLY/OBJ reader and the point lines, ${SKELCONV_FUZZ_SECONDS:-30} s each"
+scripts/fuzz.sh
 
 stage "summary of the default-size segment sweep (build/release/verify/verify_sweep_default.json)"
 build/release/verify/skelconv-verify markdown build/release/verify/verify_sweep_default.json | head -60

@@ -1,8 +1,12 @@
 // The whole reconstruction on small meshes of known skeletons
 // (tests/data/reconstruct/NAME.json meshed by `skelconv mesh --size 0.1`):
 // the recovered skeleton has the known number of branches, ends and
-// junctions, and the junction and radii are where the known skeleton says.
+// junctions, the junction is where the known skeleton says, and the fitted
+// stage's surface is within the documented goal of the input
+// (docs/reconstruction_results.md: noise-free, H ≤ 2%, RMS ≤ 0.5% of the
+// diagonal), measured both ways, surface to surface.
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -18,6 +22,22 @@ Reconstruction run(const char* name) {
   return reconstruct(mesh, ReconstructOptions{});
 }
 
+/// The documented goal for the fitted stage of a noise-free shape
+/// (docs/reconstruction_results.md): two-sided Hausdorff distance at most 2%
+/// and RMS distance at most 0.5% of the input's bounding-box diagonal. The
+/// whole shape is measured, ends and caps included.
+void expect_fitted_surface_within_goal(const char* name, const Reconstruction& r) {
+  const TriangleMesh mesh = read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / name);
+  const Stage& fitted = r.stages.back();
+  ASSERT_EQ(fitted.name, "fitted");
+  const SurfaceDistance d = measure_stage(mesh, fitted, ReconstructOptions{});
+  ASSERT_GT(d.diagonal, 0.0);
+  std::printf("%s fitted: Hausdorff %.3f%%, RMS %.3f%% of the diagonal\n", name, 100 * d.hausdorff / d.diagonal,
+              100 * d.rms / d.diagonal);
+  EXPECT_LE(d.hausdorff / d.diagonal, 0.02) << name;
+  EXPECT_LE(d.rms / d.diagonal, 0.005) << name;
+}
+
 void expect_counts(const Stage& stage, std::size_t branches, std::size_t ends, std::size_t junctions) {
   EXPECT_EQ(stage.branches.size(), branches) << stage.name;
   EXPECT_EQ(stage.ends, ends) << stage.name;
@@ -25,23 +45,10 @@ void expect_counts(const Stage& stage, std::size_t branches, std::size_t ends, s
 }
 
 // segment.json: one SCALIS segment (0,0,0)–(3,0,0) of radius 0.5.
-TEST(Shapes, SegmentIsOneBranchOnTheAxis) {
+TEST(Shapes, SegmentIsOneBranchWithinTheGoal) {
   const Reconstruction r = run("segment.ply");
   for (std::size_t k = 1; k < r.stages.size(); ++k) expect_counts(r.stages[k], 1, 2, 0);
-  // The body (balls of at least 0.8 × the largest radius) is on the axis
-  // y = z = 0. Known defect (docs/reconstruction.md, "Limitations"): at one
-  // cap the last level sets follow a medial sheet, and the branch ends up to
-  // 0.3 off the axis with radii falling from 0.73 × the largest to 0.25 ×;
-  // those points are not checked (0.8 was chosen after seeing them: this
-  // test guards the body, not the ends).
-  const auto& points = r.stages.back().branches[0].points;
-  double largest = 0.0;
-  for (const Vec4& p : points) largest = std::max(largest, p.w());
-  for (const Vec4& p : points) {
-    if (p.w() >= 0.8 * largest) {
-      EXPECT_LT(p.head<3>().tail<2>().norm(), 0.05) << p.transpose();
-    }
-  }
+  expect_fitted_surface_within_goal("segment.ply", r);
 }
 
 // tripod.json: three SCALIS segments from the origin, 120° apart.
@@ -52,15 +59,21 @@ TEST(Shapes, TripodHasOneJunctionNearTheOrigin) {
   const Vec4 junction = b.points.front().head<3>().norm() < b.points.back().head<3>().norm() ? b.points.front()
                                                                                              : b.points.back();
   EXPECT_LT(junction.head<3>().norm(), 0.45) << junction.transpose();  // within the junction's radius 0.45
+  expect_fitted_surface_within_goal("tripod.ply", r);
 }
 
 // torus.json: a ring of 16 SCALIS segments, radius 2 about the z axis.
 TEST(Shapes, TorusIsOneClosedBranch) {
   const Reconstruction r = run("torus.ply");
   for (std::size_t k = 1; k < r.stages.size(); ++k) expect_counts(r.stages[k], 1, 0, 0);
+  // The pruned level-set graph's points lie on the ring (within 0.1, a
+  // quarter of the tube radius 0.4). No axis-position goal is documented for
+  // the later stages (the smoothed one runs up to 0.102 off the ring): the
+  // output is judged by the documented goal on the surface it gives, below.
   for (const Vec4& p : r.stages[1].branches[0].points) {
     EXPECT_NEAR(p.head<2>().norm(), 2.0, 0.1) << p.transpose();  // on the ring
   }
+  expect_fitted_surface_within_goal("torus.ply", r);
 }
 
 }  // namespace

@@ -31,6 +31,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "build_info.hpp"
 #include "error_stats.hpp"  // ExclusionLimits
 #include "extended_precision.hpp"
 #include "polygon_reference.hpp"
@@ -300,7 +301,13 @@ int main(int argc, char** argv) {
             << " s\n";
   if (!json_path.empty()) {
     std::ofstream file(json_path);
-    file << nlohmann::json{{"seed", seed},
+    // settings.commit traces a committed baseline back to its code
+    // (check_baseline_commits.cmake refuses "-dirty").
+    const nlohmann::json settings{{"commit", std::string(skelconv::verify::build_commit())},
+                                  {"generic_points", generic_points},
+                                  {"points", other_points}};
+    file << nlohmann::json{{"settings", settings},
+                           {"seed", seed},
                            {"generic_target", kGenericTarget},
                            {"reference", reference},
                            {"reference_tolerance", tolerance},
