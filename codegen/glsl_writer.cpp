@@ -1,0 +1,146 @@
+// codegen/glsl_writer.cpp — see glsl_writer.hpp.
+//
+// The GLSL functions are the programs' Forms::fast emission (the generic
+// alternative of every stable-form choice, unconditionally, as the filter's
+// fast forms), translated token by token from the C++ statements the
+// emitter writes: one printer of expressions for both targets, so the two
+// cannot drift apart. Why the generic forms only: a shader has no recursion
+// and no dynamic helper loops worth their divergence, and in single
+// precision the near-line and far-field rewrites of the C++ target guard
+// against losses (factors |AB|/h, cancellation of r0 − r1) that matter at
+// 1e-16 relative but stay below float's 6e-8 ulp only in the generic region
+// (P in general position); outside it the shader's values are those of the
+// generic formula and lose accuracy there (docs/view.md).
+#include "glsl_writer.hpp"
+
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace skelconv::codegen {
+
+namespace {
+
+// GLSL ES 3.00 source for WebGL: ASCII only is the portable choice (WebGL 1
+// validators refuse any non-ASCII byte, even in comments), so the header's
+// mathematics is transliterated.
+std::string glsl_ascii(const std::string& text) {
+  static const std::pair<const char*, const char*> kMap[] = {
+      {"—", "-"}, {"−", "-"}, {"×", "*"}, {"∫", "int"}, {"Γ", "Gamma"}, {"∇", "grad "}, {"§", "sec. "},
+      {"τ", "tau"}, {"σ", "sigma"}, {"√", "sqrt"}, {"²", "^2"}, {"³", "^3"}, {"α", "alpha"}, {"β", "beta"},
+      {"–", "-"}, {"≥", ">="}, {"≤", "<="}, {"·", "."}, {"∞", "inf"}, {"ℓ", "l"}};
+  std::string out = text;
+  for (const auto& [from, to] : kMap) {
+    const std::string f = from;
+    for (size_t at = out.find(f); at != std::string::npos; at = out.find(f, at)) out.replace(at, f.size(), to);
+  }
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) >= 0x80) c = '?';
+  return out;
+}
+
+// C++ statements of the emitter (straight_line_program.cpp) to GLSL: the
+// scalar type T becomes float; `const` goes (in GLSL ES 3.00 a const needs a
+// constant initialiser); `in` is a GLSL keyword, so the input is `si`;
+// std::atan2(y, x) is GLSL's atan(y, x); the other calls (sqrt, log, asinh,
+// min, max) have the same names.
+std::string to_glsl(const std::string& cpp_body) {
+  std::istringstream lines(cpp_body);
+  std::ostringstream out;
+  static const std::regex const_decl(R"(\bconst T )"), decl(R"(^(\s*)T )"), cast(R"(\bT\()"),
+      input(R"(\bin\.)"), std_prefix(R"(\bstd::)"), atan2(R"(\batan2\()");
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("using std::") != std::string::npos) continue;
+    line = std::regex_replace(line, const_decl, "float ");
+    line = std::regex_replace(line, decl, "$1float ");
+    line = std::regex_replace(line, cast, "float(");
+    line = std::regex_replace(line, input, "si.");
+    line = std::regex_replace(line, std_prefix, "");
+    line = std::regex_replace(line, atan2, "atan(");
+    out << glsl_ascii(line) << '\n';
+  }
+  return out.str();
+}
+
+// The input block every file declares once (the guard lets a shader
+// concatenate several families): the fields of SegmentInput that the
+// kernels read (skelconv/primitives/segment_input.hpp).
+constexpr const char* kGlslSegmentInput =
+    "#ifndef SKELCONV_SEGMENT_INPUT\n"
+    "#define SKELCONV_SEGMENT_INPUT\n"
+    "// The segment AB, the query point p, the weight w(t) = sum_k w[k] t^k,\n"
+    "// the Cauchy sharpness s, the compact support radius R and the part\n"
+    "// [t0, t1] of AB inside the ball of radius R around p (compact only; the\n"
+    "// caller clips, as skelconv/detail/clip.hpp does).\n"
+    "struct SegmentInput {\n"
+    "  vec3 a;\n  vec3 b;\n  vec3 p;\n  vec4 w;\n  float s;\n  float R;\n  float t0;\n  float t1;\n"
+    "};\n"
+    "#endif\n\n";
+
+std::string glsl_function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {
+  std::ostringstream os;
+  const std::string name = spec.name() + "_" + kFunctionSuffix[which];
+  os << "// " << (which == 0 ? "the field" : "the field and its gradient") << ", where\n"
+     << "//     " << glsl_ascii(spec.equation()) << "\n"
+     << "// Operations: " << glsl_ascii(ops_text(code.ops)) << " (generic form).\n";
+  if (which == 0)
+    os << "float " << name << "(SegmentInput si) {\n";
+  else
+    os << "float " << name << "(SegmentInput si, out vec3 grad) {\n";
+  os << "  float f;\n" << to_glsl(code.body) << "  return f;\n}\n\n";
+  return os.str();
+}
+
+}  // namespace
+
+void write_glsl_folder(const GeneratorRequest& request, const std::filesystem::path& folder) {
+  std::filesystem::create_directories(folder);
+  std::map<KernelFamily, std::string> bodies, left_out;
+  // f and (f, grad f): a ray marcher needs the first per step and the second
+  // per hit; grad f alone is the second's gradient.
+  const int kGlslEmitted[] = {0, 2};
+  for (const SegmentKernelSpec& spec : request.segment_kernels) {
+    std::string text;
+    bool available = true;
+    for (int which : kGlslEmitted) {
+      const EmittedCode code = build_segment_program(spec, kOutputs[which]).emit(Forms::fast);
+      if (!code.fast_available) {
+        available = false;
+        break;
+      }
+      text += glsl_function_text(spec, which, code);
+    }
+    if (available)
+      bodies[spec.family] += text;
+    else
+      left_out[spec.family] += " " + spec.name();
+  }
+  for (const auto& [family, body] : bodies) {
+    const std::string file = "glsl/segment_" + std::string(family_name(family)) + ".glsl";
+    std::ostringstream os;
+    os << glsl_ascii(file_header(file,
+                            "segment kernels of the " + std::string(family_name(family)) +
+                                " family in GLSL (float; ES 3.00 and 4.50), generic forms only.",
+                            request));
+    if (left_out.count(family)) {
+      // Wrap the list at about 80 columns.
+      std::istringstream names(left_out[family]);
+      os << "// Left out (their generic path calls a Gauss rule or a loop):\n//";
+      size_t column = 2;
+      for (std::string n; names >> n; column += n.size() + 1) {
+        if (column + n.size() + 1 > 80) {
+          os << "\n//";
+          column = 2;
+        }
+        os << ' ' << n;
+      }
+      os << '\n';
+    }
+    os << "\n" << kGlslSegmentInput << body;
+    write_file(folder / ("segment_" + std::string(family_name(family)) + ".glsl"), os.str());
+  }
+}
+
+}  // namespace skelconv::codegen
