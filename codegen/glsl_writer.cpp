@@ -4,13 +4,13 @@
 // alternative of every stable-form choice, unconditionally, as the filter's
 // fast forms), translated token by token from the C++ statements the
 // emitter writes: one printer of expressions for both targets, so the two
-// cannot drift apart. Why the generic forms only: a shader has no recursion
-// and no dynamic helper loops worth their divergence, and in single
-// precision the near-line and far-field rewrites of the C++ target guard
-// against losses (factors |AB|/h, cancellation of r0 − r1) that matter at
-// 1e-16 relative but stay below float's 6e-8 ulp only in the generic region
-// (P in general position); outside it the shader's values are those of the
-// generic formula and lose accuracy there (docs/view.md).
+// cannot drift apart. Generic forms only because the other alternatives
+// call C++ helpers (Gauss rules, downward recurrences, the exact cross
+// product) that have no GLSL version yet. In single precision these forms
+// are NOT accurate everywhere in the generic region: the upward recurrence
+// and the cancellations the C++ target's stable rewrites avoid cost far more
+// than float's 6e-8 (docs/glsl.md has the measured errors per family and
+// degree, tests/glsl/check_glsl_numeric.py measures them).
 #include "glsl_writer.hpp"
 
 #include <map>
