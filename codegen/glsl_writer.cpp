@@ -44,13 +44,13 @@ std::string glsl_ascii(const std::string& text) {
 // C++ statements of the emitter (straight_line_program.cpp) to GLSL: the
 // scalar type T becomes float; `const` goes (in GLSL ES 3.00 a const needs a
 // constant initialiser); `in` is a GLSL keyword, so the input is `si`;
-// std::atan2(y, x) is GLSL's atan(y, x); the other calls (sqrt, log, asinh,
-// min, max) have the same names.
+// std::atan2(y, x) is GLSL's atan(y, x); asinh is skelconv_asinh (below);
+// the other calls (sqrt, log, min, max) have the same names.
 std::string to_glsl(const std::string& cpp_body) {
   std::istringstream lines(cpp_body);
   std::ostringstream out;
   static const std::regex const_decl(R"(\bconst T )"), decl(R"(^(\s*)T )"), cast(R"(\bT\()"),
-      input(R"(\bin\.)"), std_prefix(R"(\bstd::)"), atan2(R"(\batan2\()");
+      input(R"(\bin\.)"), std_prefix(R"(\bstd::)"), atan2(R"(\batan2\()"), asinh(R"(\basinh\()");
   for (std::string line; std::getline(lines, line);) {
     if (line.find("using std::") != std::string::npos) continue;
     line = std::regex_replace(line, const_decl, "float ");
@@ -59,6 +59,7 @@ std::string to_glsl(const std::string& cpp_body) {
     line = std::regex_replace(line, input, "si.");
     line = std::regex_replace(line, std_prefix, "");
     line = std::regex_replace(line, atan2, "atan(");
+    line = std::regex_replace(line, asinh, "skelconv_asinh(");
     out << glsl_ascii(line) << '\n';
   }
   return out.str();
@@ -76,7 +77,20 @@ constexpr const char* kGlslSegmentInput =
     "// caller clips, as skelconv/detail/clip.hpp does).\n"
     "struct SegmentInput {\n"
     "  vec3 a;\n  vec3 b;\n  vec3 p;\n  vec4 w;\n  float s;\n  float R;\n  float t0;\n  float t1;\n"
-    "};\n"
+    "};\n\n"
+    "// asinh without the losses of log(x + sqrt(x^2 + 1)), the form GPU\n"
+    "// libraries may use: odd symmetry (no cancellation for x < 0), log1p of\n"
+    "// u = |x| + x^2 / (1 + sqrt(1 + x^2)) by Kahan's log(1 + u) u / ((1 + u) - 1)\n"
+    "// (no loss for small |x|), and log(2|x|) where x^2 would overflow (|x| >\n"
+    "// 1e18: there sqrt(1 + x^2) = |x| in float).\n"
+    "float skelconv_asinh(float x) {\n"
+    "  float ax = abs(x);\n"
+    "  if (ax > 1e18) return sign(x) * (log(ax) + 0.69314718);\n"
+    "  float u = ax + ax * ax / (1.0 + sqrt(1.0 + ax * ax));\n"
+    "  float w = 1.0 + u;\n"
+    "  float l = w == 1.0 ? u : log(w) * u / (w - 1.0);\n"
+    "  return sign(x) * l;\n"
+    "}\n"
     "#endif\n\n";
 
 std::string glsl_function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {

@@ -22,6 +22,20 @@ struct SegmentInput {
   float t0;
   float t1;
 };
+
+// asinh without the losses of log(x + sqrt(x^2 + 1)), the form GPU
+// libraries may use: odd symmetry (no cancellation for x < 0), log1p of
+// u = |x| + x^2 / (1 + sqrt(1 + x^2)) by Kahan's log(1 + u) u / ((1 + u) - 1)
+// (no loss for small |x|), and log(2|x|) where x^2 would overflow (|x| >
+// 1e18: there sqrt(1 + x^2) = |x| in float).
+float skelconv_asinh(float x) {
+  float ax = abs(x);
+  if (ax > 1e18) return sign(x) * (log(ax) + 0.69314718);
+  float u = ax + ax * ax / (1.0 + sqrt(1.0 + ax * ax));
+  float w = 1.0 + u;
+  float l = w == 1.0 ? u : log(w) * u / (w - 1.0);
+  return sign(x) * l;
+}
 #endif
 
 // the field, where
@@ -68,7 +82,7 @@ float segment_cauchy_i1_w0_f(SegmentInput si) {
     X = t0 * (a_minus_b * r0 + b * r1) / D;
   }
   float t1 = sqrt(a);
-  float J1 = asinh(X) / t1;
+  float J1 = skelconv_asinh(X) / t1;
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -131,7 +145,7 @@ float segment_cauchy_i1_w0_f_and_grad(SegmentInput si, out vec3 grad) {
   }
   float t3 = sqrt(a);
   float t4 = float(1) / t3;
-  float J1 = asinh(X) * t4;
+  float J1 = skelconv_asinh(X) * t4;
   float F;
   float G_ap;
   float G_E;
@@ -198,7 +212,7 @@ float segment_cauchy_i1_w1_f(SegmentInput si) {
   }
   float t1 = sqrt(a);
   float t2 = float(1) / t1;
-  float J1 = t2 * asinh(X);
+  float J1 = t2 * skelconv_asinh(X);
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -262,7 +276,7 @@ float segment_cauchy_i1_w1_f_and_grad(SegmentInput si, out vec3 grad) {
   }
   float t3 = sqrt(a);
   float t4 = float(1) / t3;
-  float J1 = asinh(X) * t4;
+  float J1 = skelconv_asinh(X) * t4;
   float F;
   float G_ap;
   float G_E;
@@ -330,7 +344,7 @@ float segment_cauchy_i1_w2_f(SegmentInput si) {
   }
   float t1 = sqrt(a);
   float t2 = float(1) / t1;
-  float J1 = t2 * asinh(X);
+  float J1 = t2 * skelconv_asinh(X);
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -395,7 +409,7 @@ float segment_cauchy_i1_w2_f_and_grad(SegmentInput si, out vec3 grad) {
   }
   float t3 = sqrt(a);
   float t4 = float(1) / t3;
-  float J1 = asinh(X) * t4;
+  float J1 = skelconv_asinh(X) * t4;
   float F;
   float G_ap;
   float G_E;
@@ -465,7 +479,7 @@ float segment_cauchy_i1_w3_f(SegmentInput si) {
   }
   float t1 = sqrt(a);
   float t2 = float(1) / t1;
-  float J1 = asinh(X) * t2;
+  float J1 = skelconv_asinh(X) * t2;
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -532,7 +546,7 @@ float segment_cauchy_i1_w3_f_and_grad(SegmentInput si, out vec3 grad) {
   }
   float t3 = sqrt(a);
   float t4 = float(1) / t3;
-  float J1 = t4 * asinh(X);
+  float J1 = t4 * skelconv_asinh(X);
   float F;
   float G_ap;
   float G_E;
@@ -1311,7 +1325,7 @@ float segment_cauchy_i3_w2_f(SegmentInput si) {
   }
   float t2 = sqrt(a);
   float t3 = float(1) / t2;
-  float J1 = t3 * asinh(X);
+  float J1 = t3 * skelconv_asinh(X);
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -1380,7 +1394,7 @@ float segment_cauchy_i3_w2_f_and_grad(SegmentInput si, out vec3 grad) {
   }
   float t3 = sqrt(a);
   float t4 = float(1) / t3;
-  float J1 = asinh(X) * t4;
+  float J1 = skelconv_asinh(X) * t4;
   float F;
   float G_ap;
   float G_E;
@@ -1458,7 +1472,7 @@ float segment_cauchy_i3_w3_f(SegmentInput si) {
   }
   float t2 = sqrt(a);
   float t3 = float(1) / t2;
-  float J1 = asinh(X) * t3;
+  float J1 = skelconv_asinh(X) * t3;
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -1528,7 +1542,7 @@ float segment_cauchy_i3_w3_f_and_grad(SegmentInput si, out vec3 grad) {
   }
   float t3 = sqrt(a);
   float t4 = float(1) / t3;
-  float J1 = asinh(X) * t4;
+  float J1 = skelconv_asinh(X) * t4;
   float F;
   float G_ap;
   float G_E;

@@ -34,6 +34,20 @@ struct SegmentInput {
   float t0;
   float t1;
 };
+
+// asinh without the losses of log(x + sqrt(x^2 + 1)), the form GPU
+// libraries may use: odd symmetry (no cancellation for x < 0), log1p of
+// u = |x| + x^2 / (1 + sqrt(1 + x^2)) by Kahan's log(1 + u) u / ((1 + u) - 1)
+// (no loss for small |x|), and log(2|x|) where x^2 would overflow (|x| >
+// 1e18: there sqrt(1 + x^2) = |x| in float).
+float skelconv_asinh(float x) {
+  float ax = abs(x);
+  if (ax > 1e18) return sign(x) * (log(ax) + 0.69314718);
+  float u = ax + ax * ax / (1.0 + sqrt(1.0 + ax * ax));
+  float w = 1.0 + u;
+  float l = w == 1.0 ? u : log(w) * u / (w - 1.0);
+  return sign(x) * l;
+}
 #endif
 
 // the field, where

@@ -22,6 +22,20 @@ struct SegmentInput {
   float t0;
   float t1;
 };
+
+// asinh without the losses of log(x + sqrt(x^2 + 1)), the form GPU
+// libraries may use: odd symmetry (no cancellation for x < 0), log1p of
+// u = |x| + x^2 / (1 + sqrt(1 + x^2)) by Kahan's log(1 + u) u / ((1 + u) - 1)
+// (no loss for small |x|), and log(2|x|) where x^2 would overflow (|x| >
+// 1e18: there sqrt(1 + x^2) = |x| in float).
+float skelconv_asinh(float x) {
+  float ax = abs(x);
+  if (ax > 1e18) return sign(x) * (log(ax) + 0.69314718);
+  float u = ax + ax * ax / (1.0 + sqrt(1.0 + ax * ax));
+  float w = 1.0 + u;
+  float l = w == 1.0 ? u : log(w) * u / (w - 1.0);
+  return sign(x) * l;
+}
 #endif
 
 // the field, where
@@ -61,7 +75,7 @@ float segment_inverse_i1_w0_f(SegmentInput si) {
     // P projects onto [A,B]: X = sqrta((a-b)r0 + b r1)/D
     X = length * (r1 * ab_ap + a_minus_b * r0) / cross_cross;
   }
-  float J1 = asinh(X) / length;
+  float J1 = skelconv_asinh(X) / length;
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -117,7 +131,7 @@ float segment_inverse_i1_w0_f_and_grad(SegmentInput si, out vec3 grad) {
     X = length * t1 * (r1 * ab_ap + r0 * a_minus_b);
   }
   float t2 = float(1) / length;
-  float J1 = asinh(X) * t2;
+  float J1 = skelconv_asinh(X) * t2;
   float F;
   float G_ap;
   float G_E;
@@ -177,7 +191,7 @@ float segment_inverse_i1_w1_f(SegmentInput si) {
     X = length * (r1 * ab_ap + a_minus_b * r0) / cross_cross;
   }
   float t0 = float(1) / length;
-  float J1 = t0 * asinh(X);
+  float J1 = t0 * skelconv_asinh(X);
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -234,7 +248,7 @@ float segment_inverse_i1_w1_f_and_grad(SegmentInput si, out vec3 grad) {
     X = (a_minus_b * r0 + ab_ap * r1) * length * t1;
   }
   float t2 = float(1) / length;
-  float J1 = asinh(X) * t2;
+  float J1 = skelconv_asinh(X) * t2;
   float F;
   float G_ap;
   float G_E;
@@ -295,7 +309,7 @@ float segment_inverse_i1_w2_f(SegmentInput si) {
     X = length * (r0 * a_minus_b + r1 * ab_ap) / cross_cross;
   }
   float t0 = float(1) / length;
-  float J1 = asinh(X) * t0;
+  float J1 = skelconv_asinh(X) * t0;
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -353,7 +367,7 @@ float segment_inverse_i1_w2_f_and_grad(SegmentInput si, out vec3 grad) {
     X = length * (a_minus_b * r0 + r1 * ab_ap) * t1;
   }
   float t2 = float(1) / length;
-  float J1 = asinh(X) * t2;
+  float J1 = skelconv_asinh(X) * t2;
   float F;
   float G_ap;
   float G_E;
@@ -416,7 +430,7 @@ float segment_inverse_i1_w3_f(SegmentInput si) {
     X = length * (a_minus_b * r0 + r1 * ab_ap) / cross_cross;
   }
   float t0 = float(1) / length;
-  float J1 = asinh(X) * t0;
+  float J1 = skelconv_asinh(X) * t0;
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -476,7 +490,7 @@ float segment_inverse_i1_w3_f_and_grad(SegmentInput si, out vec3 grad) {
     X = length * t1 * (r0 * a_minus_b + r1 * ab_ap);
   }
   float t2 = float(1) / length;
-  float J1 = t2 * asinh(X);
+  float J1 = t2 * skelconv_asinh(X);
   float F;
   float G_ap;
   float G_E;
@@ -1187,7 +1201,7 @@ float segment_inverse_i3_w2_f(SegmentInput si) {
     X = (a_minus_b * r0 + ab_ap * r1) * length * t0;
   }
   float t1 = float(1) / length;
-  float J1 = asinh(X) * t1;
+  float J1 = skelconv_asinh(X) * t1;
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -1249,7 +1263,7 @@ float segment_inverse_i3_w2_f_and_grad(SegmentInput si, out vec3 grad) {
     X = t1 * length * (r1 * ab_ap + a_minus_b * r0);
   }
   float t2 = float(1) / length;
-  float J1 = t2 * asinh(X);
+  float J1 = t2 * skelconv_asinh(X);
   float F;
   float G_ap;
   float G_E;
@@ -1320,7 +1334,7 @@ float segment_inverse_i3_w3_f(SegmentInput si) {
     X = (r1 * ab_ap + a_minus_b * r0) * length * t0;
   }
   float t1 = float(1) / length;
-  float J1 = asinh(X) * t1;
+  float J1 = skelconv_asinh(X) * t1;
   float F;
   {
     // recurrence (1) upwards from J_1, J_2
@@ -1383,7 +1397,7 @@ float segment_inverse_i3_w3_f_and_grad(SegmentInput si, out vec3 grad) {
     X = length * t1 * (r1 * ab_ap + r0 * a_minus_b);
   }
   float t2 = float(1) / length;
-  float J1 = t2 * asinh(X);
+  float J1 = t2 * skelconv_asinh(X);
   float F;
   float G_ap;
   float G_E;

@@ -70,7 +70,10 @@ def draw(rng, family, count):
             out = -1 if tau < 0 else 1
             p = (a if tau < 0 else b) + dist * (math.sin(theta) * perp + out * math.cos(theta) * d)
         R = dist + length * math.exp(rng.uniform(math.log(0.3), math.log(2)))
+        # Last column: 1 where P is beyond an end (its nearest point is A or
+        # B; at angle theta from the line), 0 where it projects onto AB.
         row = np.concatenate([a, b, p, w, [s, R]]).astype(np.float32).astype(np.float64)
+        row = np.append(row, 0.0 if 0 <= tau <= 1 else 1.0)
         rows.append(row)
     return rows
 
@@ -190,7 +193,7 @@ def main():
     if not os.path.exists(args.chromium):
         sys.exit(f"check_glsl_numeric: {args.chromium} not found (Debian package chromium)")
     rng = np.random.default_rng(args.seed)
-    jobs, refs = [], {}
+    jobs, refs, rows_of = [], {}, {}
     for family, degree, wdeg, name, source in kernels(args.folder):
         rows = draw(rng, family, args.points)
         flat, expected = [], []
@@ -200,6 +203,7 @@ def main():
             expected.append((f, g))
         jobs.append({"name": name, "source": source, "inputs": flat})
         refs[name] = (family, degree, expected)
+        rows_of[name] = rows
     with tempfile.TemporaryDirectory() as scratch:
         page = pathlib.Path(scratch) / "glsl_numeric.html"
         page.write_text(PAGE % json.dumps(jobs))
@@ -217,13 +221,14 @@ def main():
     for name, values in results.items():
         family, degree, expected = refs[name]
         for k, (f, g) in enumerate(expected):
-            got = values[4 * k:4 * k + 4]
+            got = [math.nan if v is None else v for v in values[4 * k:4 * k + 4]]  # JSON null: NaN
             ef = abs(got[0] - f) / abs(f) if f != 0 else abs(got[0])
             gn = np.linalg.norm(g)
             eg = np.linalg.norm(np.array(got[1:4]) - g) / gn if gn != 0 else np.linalg.norm(got[1:4])
             if not (ef <= args.tolerance and eg <= args.tolerance):
                 failures += 1
-            d = per_degree.setdefault((family, degree), [0.0, 0.0])
+            side = "beyond an end" if rows_of[name][k][15] else "beside AB"
+            d = per_degree.setdefault((family, degree, side), [0.0, 0.0])
             d[0], d[1] = max(d[0], ef), max(d[1], eg)
             w = worst.setdefault(family, [0.0, "", 0.0, ""])
             if not (ef <= w[0]):
@@ -233,10 +238,10 @@ def main():
     print(f"check_glsl_numeric: {len(results)} kernels x {args.points} generic points, tolerance {args.tolerance:g}")
     for family, (ef, nf, eg, ng) in sorted(worst.items()):
         print(f"  {family:8s} worst f rel. error {ef:.2e} ({nf}), worst grad {eg:.2e} ({ng})")
-    print("  worst per family and degree (f / grad; every weight degree):")
-    for (family, degree), (ef, eg) in sorted(per_degree.items()):
+    print("  worst per family, degree and side of P (f / grad; every weight degree):")
+    for (family, degree, side), (ef, eg) in sorted(per_degree.items()):
         mark = "" if ef <= args.tolerance and eg <= args.tolerance else "  above"
-        print(f"    {family:8s} i={degree:2d}  {ef:.1e} / {eg:.1e}{mark}")
+        print(f"    {family:8s} i={degree:2d} {side:14s} {ef:.1e} / {eg:.1e}{mark}")
     if failures:
         print(f"check_glsl_numeric: {failures} points above the tolerance")
     return 1 if failures else 0
