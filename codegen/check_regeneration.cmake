@@ -8,8 +8,9 @@ execute_process(COMMAND "${GENERATOR}" ${arguments} --out "${SCRATCH}" RESULT_VA
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "generator failed (${rc})")
 endif()
-file(GLOB checked_in RELATIVE "${CHECKED_IN}" "${CHECKED_IN}/*")
-file(GLOB regenerated RELATIVE "${SCRATCH}" "${SCRATCH}/*")
+# Recursive, files only: generated/glsl/ is compared as well.
+file(GLOB_RECURSE checked_in RELATIVE "${CHECKED_IN}" LIST_DIRECTORIES false "${CHECKED_IN}/*")
+file(GLOB_RECURSE regenerated RELATIVE "${SCRATCH}" LIST_DIRECTORIES false "${SCRATCH}/*")
 list(SORT checked_in)
 list(SORT regenerated)
 if(NOT checked_in STREQUAL regenerated)

@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "generated_families.hpp"
+#include "glsl_writer.hpp"
 #include "kernel_writer.hpp"
 
 namespace {
@@ -117,6 +118,8 @@ int main(int argc, char** argv) {
       for (int i = range.first; i <= range.last; ++i) request.scalis_segment_kernels.push_back({family, i});
     }
     skelconv::codegen::write_generated_folder(request, out);
+    // After the C++ files (glsl_writer.hpp says why): the shader target.
+    skelconv::codegen::write_glsl_folder(request, std::filesystem::path(out) / "glsl");
     std::cerr << "skelconv-codegen: wrote " << request.segment_kernels.size() << " segment kernels, "
               << request.polygon_kernels.size() << " polygon edge kernels and " << request.scalis_segment_kernels.size()
               << " SCALIS segment kernels to " << out << '\n';

@@ -1,0 +1,19 @@
+// codegen/glsl_writer.hpp — the GLSL target: writes generated/glsl/, the
+// segment kernels in single precision for shaders (WebGL2 / GLSL ES 3.00 and
+// desktop GLSL 4.50), from the same straight-line programs as the C++ files.
+#pragma once
+
+#include <filesystem>
+
+#include "kernel_writer.hpp"
+
+namespace skelconv::codegen {
+
+/// Writes generated/glsl/segment_<family>.glsl for every segment kernel of
+/// `request` whose generic path is straight-line code (Forms::fast: no
+/// helper loop); kernels without one are listed in the file header as left
+/// out. Call it after write_generated_folder: building programs creates
+/// GiNaC symbols, and the C++ files must not see them. Same request, same bytes.
+void write_glsl_folder(const GeneratorRequest& request, const std::filesystem::path& folder);
+
+}  // namespace skelconv::codegen

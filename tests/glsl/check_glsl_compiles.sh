@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Compiles every function of generated/glsl/*.glsl with glslangValidator
+# (Debian glslang-tools, the Khronos reference front end) as GLSL ES 3.00
+# (WebGL2) and desktop GLSL 4.50: each file is wrapped in a minimal fragment
+# shader whose main() calls every function it defines, so every one is
+# parsed, type-checked and reachable.
+#
+#   check_glsl_compiles.sh GLSL_FOLDER [--inject-fault]
+#
+# --inject-fault appends a call of an undeclared function to each shader: the
+# check must then fail (ctest glsl_compile_check_can_fail, WILL_FAIL).
+set -euo pipefail
+folder=$1
+fault=${2:-}
+validator=$(command -v glslangValidator || true)
+if [ -z "$validator" ]; then
+  echo "check_glsl_compiles: glslangValidator not found (Debian package glslang-tools; scripts/install_dependencies.sh)" >&2
+  exit 1
+fi
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+shopt -s nullglob
+files=("$folder"/*.glsl)
+if [ ${#files[@]} -eq 0 ]; then
+  echo "check_glsl_compiles: no .glsl file in $folder" >&2
+  exit 1
+fi
+status=0
+for file in "${files[@]}"; do
+  # Every kernel function: float NAME(SegmentInput si) or (…, out vec3 grad).
+  mapfile -t values < <(sed -n 's/^float \([a-z0-9_]*\)(SegmentInput si) {$/\1/p' "$file")
+  mapfile -t both < <(sed -n 's/^float \([a-z0-9_]*\)(SegmentInput si, out vec3 grad) {$/\1/p' "$file")
+  if [ $((${#values[@]} + ${#both[@]})) -eq 0 ]; then
+    echo "check_glsl_compiles: $file defines no kernel function" >&2
+    status=1
+    continue
+  fi
+  for version in "300 es" "450"; do
+    shader="$scratch/$(basename "$file" .glsl)_${version// /_}.frag"
+    {
+      echo "#version $version"
+      [ "$version" = "300 es" ] && echo "precision highp float;"
+      cat "$file"
+      echo "uniform SegmentInput u_in;"
+      echo "out vec4 colour;"
+      echo "void main() {"
+      echo "  float sum = 0.0;"
+      echo "  vec3 grad = vec3(0.0);"
+      for f in "${values[@]}"; do echo "  sum += $f(u_in);"; done
+      for f in "${both[@]}"; do echo "  sum += $f(u_in, grad) + grad.x + grad.y + grad.z;"; done
+      [ "$fault" = "--inject-fault" ] && echo "  sum += undeclared_kernel(u_in);"
+      echo "  colour = vec4(sum);"
+      echo "}"
+    } > "$shader"
+    if "$validator" "$shader" > "$scratch/log" 2>&1; then
+      echo "check_glsl_compiles: $(basename "$file") as GLSL $version: ${#values[@]} f and ${#both[@]} f+grad functions compile"
+    else
+      echo "check_glsl_compiles: $(basename "$file") as GLSL $version does not compile:" >&2
+      head -20 "$scratch/log" >&2
+      status=1
+    fi
+  done
+done
+exit $status

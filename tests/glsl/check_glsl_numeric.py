@@ -1,0 +1,251 @@
+#!/usr/bin/python3
+"""Runs the generated GLSL kernels (generated/glsl/) in headless Chromium
+(WebGL2 on its software renderer SwiftShader) on generic points and compares
+f and grad f with double-precision quadrature of the definition integral.
+
+    check_glsl_numeric.py GLSL_FOLDER [--points N] [--tolerance 1e-5] [--seed S]
+
+Points are drawn like the verifier's generic region (verify/sampling.hpp):
+A uniform in [-2, 2]^3, |AB| log-uniform in [0.2, 5], weights uniform in
+[0.2, 2], Cauchy s log-uniform in [0.2, 5], P at distance |AB| x
+log-uniform(0.1, 3) from the segment (tau uniform in [-0.25, 1.25]), compact
+R = distance + |AB| x log-uniform(0.3, 2). The inputs are rounded to float
+first and the reference is computed on the rounded inputs, so the error
+measured is the shader's evaluation alone.
+
+Reference: f = |AB| int_0^1 w(t) K(|P - G(t)|) dt with K = (alpha r^2 +
+beta)^(-n/2) (codegen/segment_families.hpp), grad f = -n alpha |AB| int w(t)
+(P - G(t)) (alpha r^2 + beta)^(-(n+2)/2) dt, by composite Gauss-Legendre
+(64 panels x 24 nodes on the clipped interval; at P >= 0.1 |AB| from the
+segment the integrand's width is >= 0.1 |AB|, so the rule is exact to double
+rounding for the degrees generated).
+
+Exit status 0 when every relative error (|f - f_ref| / |f_ref| and
+|g - g_ref| / |g_ref|) is at most the tolerance; prints the worst per family.
+"""
+import argparse
+import html
+import json
+import math
+import os
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+FUNCTION = re.compile(r"^// the field and its gradient, where\n(?://[^\n]*\n)*?float (segment_(\w+?)_i(\d+)_w(\d+))_f_and_grad\(SegmentInput si, out vec3 grad\) \{\n.*?^\}\n", re.M | re.S)
+
+
+def kernels(folder):
+    for path in sorted(pathlib.Path(folder).glob("segment_*.glsl")):
+        text = path.read_text()
+        struct = text[text.index("#ifndef SKELCONV_SEGMENT_INPUT"):text.index("#endif") + len("#endif")]
+        for m in FUNCTION.finditer(text):
+            yield m.group(2), int(m.group(3)), int(m.group(4)), m.group(1), struct + "\n" + m.group(0)
+
+
+def unit(v):
+    return v / np.linalg.norm(v)
+
+
+def draw(rng, family, count):
+    rows = []
+    for _ in range(count):
+        a = rng.uniform(-2, 2, 3)
+        length = math.exp(rng.uniform(math.log(0.2), math.log(5)))
+        d = unit(rng.normal(size=3))
+        b = a + length * d
+        w = rng.uniform(0.2, 2, 4)
+        s = math.exp(rng.uniform(math.log(0.2), math.log(5)))
+        dist = length * math.exp(rng.uniform(math.log(0.1), math.log(3)))
+        tau = rng.uniform(-0.25, 1.25)
+        perp = unit(np.cross(d, rng.normal(size=3)))
+        if 0 <= tau <= 1:
+            p = a + tau * length * d + dist * perp
+        else:
+            theta = rng.uniform(0, math.pi / 2)
+            out = -1 if tau < 0 else 1
+            p = (a if tau < 0 else b) + dist * (math.sin(theta) * perp + out * math.cos(theta) * d)
+        R = dist + length * math.exp(rng.uniform(math.log(0.3), math.log(2)))
+        # Last column: 1 where P is beyond an end (its nearest point is A or
+        # B; at angle theta from the line), 0 where it projects onto AB.
+        row = np.concatenate([a, b, p, w, [s, R]]).astype(np.float32).astype(np.float64)
+        row = np.append(row, 0.0 if 0 <= tau <= 1 else 1.0)
+        rows.append(row)
+    return rows
+
+
+def clip(a, b, p, R):
+    """[t0, t1]: the part of AB inside the ball of radius R around p."""
+    ab, ap = b - a, p - a
+    qa, qb, qc = ab @ ab, ab @ ap, ap @ ap - R * R
+    disc = qb * qb - qa * qc
+    if disc <= 0:
+        return None
+    root = math.sqrt(disc)
+    t0, t1 = max(0.0, (qb - root) / qa), min(1.0, (qb + root) / qa)
+    return (t0, t1) if t0 < t1 else None
+
+
+NODES, WEIGHTS = np.polynomial.legendre.leggauss(24)
+
+
+def reference(family, degree, wdeg, row):
+    a, b, p, w, s, R = row[0:3], row[3:6], row[6:9], row[9:13], row[13], row[14]
+    alpha, beta, n = {"inverse": (1.0, 0.0, degree), "cauchy": (s, 1.0, degree), "compact": (-1 / (R * R), 1.0, -degree)}[family]
+    lo, hi = 0.0, 1.0
+    if family == "compact":
+        c = clip(a, b, p, R)
+        if c is None:
+            return 0.0, np.zeros(3), (1.0, 0.0)
+        lo, hi = c
+    edges = np.linspace(lo, hi, 65)
+    t = ((edges[:-1, None] + edges[1:, None]) / 2 + (edges[1:, None] - edges[:-1, None]) / 2 * NODES[None, :]).ravel()
+    wq = ((edges[1:, None] - edges[:-1, None]) / 2 * WEIGHTS[None, :]).ravel()
+    weight = sum(w[k] * t**k for k in range(wdeg + 1))
+    diff = p[None, :] - (a[None, :] + t[:, None] * (b - a)[None, :])
+    q = alpha * np.einsum("ij,ij->i", diff, diff) + beta
+    length = np.linalg.norm(b - a)
+    f = length * np.sum(wq * weight * q ** (-n / 2))
+    g = -n * alpha * length * np.sum((wq * weight * q ** (-(n + 2) / 2))[:, None] * diff, axis=0)
+    return f, g, (lo, hi)
+
+
+PAGE = """<!doctype html><html><body><pre id="out">running</pre><script>
+const jobs = %s;
+const results = {};
+const gl = document.createElement('canvas').getContext('webgl2');
+const out = document.getElementById('out');
+try {
+  if (!gl) throw new Error('no WebGL2');
+  if (!gl.getExtension('EXT_color_buffer_float')) throw new Error('no EXT_color_buffer_float');
+  const vs = `#version 300 es
+  void main() { vec2 c[3] = vec2[3](vec2(-1,-1), vec2(3,-1), vec2(-1,3)); gl_Position = vec4(c[gl_VertexID], 0, 1); }`;
+  function shader(type, src) {
+    const s = gl.createShader(type); gl.shaderSource(s, src); gl.compileShader(s);
+    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s));
+    return s;
+  }
+  const vshader = shader(gl.VERTEX_SHADER, vs);
+  for (const job of jobs) {
+    const fs = `#version 300 es
+precision highp float;
+precision highp sampler2D;
+${job.source}
+uniform sampler2D inputs;
+out vec4 colour;
+void main() {
+  int i = int(gl_FragCoord.x);
+  vec4 t0 = texelFetch(inputs, ivec2(0, i), 0), t1 = texelFetch(inputs, ivec2(1, i), 0),
+       t2 = texelFetch(inputs, ivec2(2, i), 0), t3 = texelFetch(inputs, ivec2(3, i), 0),
+       t4 = texelFetch(inputs, ivec2(4, i), 0);
+  SegmentInput si;
+  si.a = t0.xyz; si.b = vec3(t0.w, t1.xy); si.p = vec3(t1.zw, t2.x); si.w = vec4(t2.yzw, t3.x);
+  si.s = t3.y; si.R = t3.z; si.t0 = t3.w; si.t1 = t4.x;
+  vec3 grad;
+  float f = ${job.name}_f_and_grad(si, grad);
+  colour = vec4(f, grad);
+}`;
+    const prog = gl.createProgram();
+    gl.attachShader(prog, vshader); gl.attachShader(prog, shader(gl.FRAGMENT_SHADER, fs));
+    gl.linkProgram(prog);
+    if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(prog));
+    const n = job.inputs.length / 20;
+    const tex = gl.createTexture(); gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, 5, n, 0, gl.RGBA, gl.FLOAT, new Float32Array(job.inputs));
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    const target = gl.createTexture(); gl.bindTexture(gl.TEXTURE_2D, target);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, n, 1, 0, gl.RGBA, gl.FLOAT, null);
+    const fb = gl.createFramebuffer(); gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
+    gl.viewport(0, 0, n, 1); gl.useProgram(prog);
+    gl.activeTexture(gl.TEXTURE0); gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.uniform1i(gl.getUniformLocation(prog, 'inputs'), 0);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    const pixels = new Float32Array(4 * n);
+    gl.readPixels(0, 0, n, 1, gl.RGBA, gl.FLOAT, pixels);
+    results[job.name] = Array.from(pixels);
+  }
+  out.textContent = 'RESULTS ' + JSON.stringify(results) + ' END';
+} catch (e) {
+  out.textContent = 'ERROR ' + e.message + ' END';
+}
+</script></body></html>
+"""
+
+CHROMIUM_FLAGS = ["--headless=new", "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                  "--no-sandbox", "--disable-gpu-sandbox", "--disable-background-networking",
+                  "--disable-component-update", "--disable-sync", "--no-first-run", "--virtual-time-budget=600000"]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("folder")
+    ap.add_argument("--points", type=int, default=32, help="generic points per kernel")
+    ap.add_argument("--tolerance", type=float, default=1e-5)
+    ap.add_argument("--seed", type=int, default=20261204)
+    ap.add_argument("--chromium", default="/usr/bin/chromium")
+    args = ap.parse_args()
+    if not os.path.exists(args.chromium):
+        sys.exit(f"check_glsl_numeric: {args.chromium} not found (Debian package chromium)")
+    rng = np.random.default_rng(args.seed)
+    jobs, refs, rows_of = [], {}, {}
+    for family, degree, wdeg, name, source in kernels(args.folder):
+        rows = draw(rng, family, args.points)
+        flat, expected = [], []
+        for row in rows:
+            f, g, (t0, t1) = reference(family, degree, wdeg, row)
+            flat += list(row[:15]) + [t0, t1, 0.0, 0.0, 0.0]
+            expected.append((f, g))
+        jobs.append({"name": name, "source": source, "inputs": flat})
+        refs[name] = (family, degree, expected)
+        rows_of[name] = rows
+    with tempfile.TemporaryDirectory() as scratch:
+        page = pathlib.Path(scratch) / "glsl_numeric.html"
+        page.write_text(PAGE % json.dumps(jobs))
+        profile = pathlib.Path(scratch) / "profile"
+        run = subprocess.run([args.chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", "--dump-dom",
+                              page.as_uri()], capture_output=True, text=True, timeout=1800)
+    m = re.search(r'<pre id="out">(RESULTS|ERROR) (.*?) END</pre>', run.stdout, re.S)
+    if not m:
+        sys.exit("check_glsl_numeric: no result in the page (chromium stderr tail):\n" + run.stderr[-2000:])
+    if m.group(1) == "ERROR":
+        sys.exit("check_glsl_numeric: the page failed: " + m.group(2))
+    results = json.loads(html.unescape(m.group(2)))
+    worst, per_degree = {}, {}
+    failures = 0
+    for name, values in results.items():
+        family, degree, expected = refs[name]
+        for k, (f, g) in enumerate(expected):
+            got = [math.nan if v is None else v for v in values[4 * k:4 * k + 4]]  # JSON null: NaN
+            ef = abs(got[0] - f) / abs(f) if f != 0 else abs(got[0])
+            gn = np.linalg.norm(g)
+            eg = np.linalg.norm(np.array(got[1:4]) - g) / gn if gn != 0 else np.linalg.norm(got[1:4])
+            if not (ef <= args.tolerance and eg <= args.tolerance):
+                failures += 1
+            side = "beyond an end" if rows_of[name][k][15] else "beside AB"
+            d = per_degree.setdefault((family, degree, side), [0.0, 0.0])
+            d[0], d[1] = max(d[0], ef), max(d[1], eg)
+            w = worst.setdefault(family, [0.0, "", 0.0, ""])
+            if not (ef <= w[0]):
+                w[0], w[1] = ef, name
+            if not (eg <= w[2]):
+                w[2], w[3] = eg, name
+    print(f"check_glsl_numeric: {len(results)} kernels x {args.points} generic points, tolerance {args.tolerance:g}")
+    for family, (ef, nf, eg, ng) in sorted(worst.items()):
+        print(f"  {family:8s} worst f rel. error {ef:.2e} ({nf}), worst grad {eg:.2e} ({ng})")
+    print("  worst per family, degree and side of P (f / grad; every weight degree):")
+    for (family, degree, side), (ef, eg) in sorted(per_degree.items()):
+        mark = "" if ef <= args.tolerance and eg <= args.tolerance else "  above"
+        print(f"    {family:8s} i={degree:2d} {side:14s} {ef:.1e} / {eg:.1e}{mark}")
+    if failures:
+        print(f"check_glsl_numeric: {failures} points above the tolerance")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
