@@ -295,17 +295,13 @@ def mesh_ant_section(res, md, goals):
                   rate >= GOAL_MESH_ANT * PAPER_ANT_RATE, f"{rate / PAPER_ANT_RATE:.2f}× the paper"))
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--results", default="bench/results")
-    ap.add_argument("--callgrind", default=None)
-    ap.add_argument("--disassembly", default=None)
-    ap.add_argument("--opcounts-csv", default="generated/opcounts.csv")
-    ap.add_argument("--command", default="scripts/bench.sh")
-    ap.add_argument("--generated", default="generated", help="directory of the generated headers (op breakdown)")
-    args = ap.parse_args()
-    res = args.results
+def ratio(a, b):
+    return a / b if a is not None and b not in (None, 0) else None
 
+
+def load_results(args):
+    """Every input of one run (--results and the optional files), loaded once."""
+    res = args.results
     kernels, context = load_benchmarks(os.path.join(res, "kernels.json"))
     batch, _ = load_benchmarks(os.path.join(res, "batch.json"))
     gsl, _ = load_benchmarks(os.path.join(res, "gsl.json")) if os.path.exists(os.path.join(res, "gsl.json")) else ({}, None)
@@ -334,11 +330,11 @@ def main():
             opcounts = json.load(f)
     ops_by_name = {k["name"]: k for k in opcounts}
     longest = {}
-    generic = {}  # every generated function's generic-path count, from generated/opcounts.csv
+    op_generic = {}  # every generated function's generic-path count, from generated/opcounts.csv
     if os.path.exists(args.opcounts_csv):
         with open(args.opcounts_csv) as f:
             for row in csv.DictReader(f):
-                generic[row["function"]] = tuple(int(row[c]) for c in ("add", "mul", "div", "sqrt", "atan", "log"))
+                op_generic[row["function"]] = tuple(int(row[c]) for c in ("add", "mul", "div", "sqrt", "atan", "log"))
                 if "longest_add" in row:
                     longest[row["function"]] = tuple(int(row["longest_" + c]) for c in ("add", "mul", "div", "sqrt", "atan", "log"))
     vec = vectorisation(args.disassembly)
@@ -352,16 +348,20 @@ def main():
     if os.path.exists(os.path.join(res, "machine.txt")):
         with open(os.path.join(res, "machine.txt")) as f:
             machine = f.read().strip()
+    r = argparse.Namespace(kernels=kernels, context=context, batch=batch, gsl=gsl, scalis_compact=scalis_compact,
+                           skeleton=skeleton, scalis=scalis, ir=ir, opcounts=opcounts, ops_by_name=ops_by_name,
+                           longest=longest, op_generic=op_generic, vec=vec, machine=machine, generated=args.generated)
+    # The kernels of the detailed benchmarks, in Table 4's order, then by name.
+    table4_kernels = [row[1] for row in PAPER_TABLE4]
+    r.detailed = sorted({n.split("/")[1] for n in kernels if n.startswith("eval/")},
+                        key=lambda s: (table4_kernels.index(s) if s in table4_kernels else 10, s))
+    r.time = lambda name: ns(kernels[name]) if kernels.get(name) else None
+    return r
 
-    def t(name):
-        r = kernels.get(name)
-        return ns(r) if r else None
 
-    def ratio(a, b):
-        return a / b if a is not None and b not in (None, 0) else None
-
-    md = []
-    goals = []
+def header_section(data, md, args):
+    """The title, the command that produced the run, and the machine."""
+    context, machine = data.context, data.machine
     md.append("# skelconv benchmarks — summary\n")
     md.append(f"Produced by `{args.command}` (docs/bench.md). Times are the **median CPU time** of the "
               "repetitions; every ratio compares two measurements of the same run. `Ir` is callgrind's "
@@ -373,9 +373,11 @@ def main():
                   f"load average {', '.join(f'{x:.2f}' for x in context.get('load_avg', []))} at start, "
                   f"date {context.get('date')}.\n")
 
-    # --- closed form vs quadrature ---------------------------------------------------
-    detailed = sorted({n.split("/")[1] for n in kernels if n.startswith("eval/")},
-                      key=lambda s: ([r[1] for r in PAPER_TABLE4].index(s) if s in [r[1] for r in PAPER_TABLE4] else 10, s))
+
+def quadrature_section(data, md, goals):
+    """§1: the closed form f_and_grad against Boost's adaptive Gauss–Kronrod."""
+    kernels, ir, detailed = data.kernels, data.ir, data.detailed
+    t = data.time
     md.append("## 1. Closed form `f_and_grad` against adaptive quadrature\n")
     md.append("Boost.Math `gauss_kronrod<double, 61>::integrate` (adaptive, max depth 15) of f and of each gradient "
               "component: 4 integrals per point. *default*: 1,024 points at distance 0.1–0.9 from a segment of length "
@@ -408,7 +410,11 @@ def main():
                   worst_q12 is not None and worst_q12 >= GOAL_QUADRATURE,
                   f"{sum(1 for r in rows if r[11] != '–' and float(r[11][:-1]) >= GOAL_QUADRATURE)} of {len(rows)} cases"))
 
-    # --- f vs f_and_grad vs finite differences ----------------------------------------
+
+def gradient_cost_section(data, md, goals):
+    """§2: f_and_grad against f alone and finite differences."""
+    ir, detailed = data.ir, data.detailed
+    t = data.time
     md.append("## 2. `f_and_grad` against `f` alone and finite differences\n")
     md.append("Central differences: f plus 6 more evaluations (7); forward: f plus 3 (4). Compact kernels re-clip "
               "at every displaced point. Ratios are to `f` alone.\n")
@@ -434,7 +440,11 @@ def main():
                   bool(fg_ratios) and all(r <= GOAL_FG_OVER_F for _, r in fg_ratios),
                   f"{sum(1 for _, r in fg_ratios if r <= GOAL_FG_OVER_F)} of {len(fg_ratios)} kernels"))
 
-    # --- degree sweep -----------------------------------------------------------------
+
+def degree_section(data, md, goals):
+    """§3: cost as the degree grows."""
+    ir, ops_by_name = data.ir, data.ops_by_name
+    t = data.time
     md.append("## 3. Cost as the degree grows (weight degree 0)\n")
     md.append("`ops` is the generator's count (+, ×, / and calls; include/skelconv/kernels/op_count.hpp) of the generic path.\n")
     for family in ("inverse", "cauchy", "compact"):
@@ -454,7 +464,10 @@ def main():
             md.append(f"**{family}**\n\n" + table(["i", "f", "f_and_grad", "fg/f", "Ir f", "Ir f_and_grad", "ops f",
                                                     "ops f_and_grad"], rows))
 
-    # --- batch --------------------------------------------------------------------------
+
+def batch_section(data, md, goals):
+    """§4: the GCC-vectorised batch against the scalar loop."""
+    batch, ir, vec = data.batch, data.ir, data.vec
     md.append("## 4. Batch (structure of arrays) against the scalar loop\n")
     md.append("4,096 points uniform in the segment's box grown by 1.5 R (about a third outside the compact support). "
               "*scalar*: one call per point through the table's function pointer, compact kernels clipped by "
@@ -491,7 +504,10 @@ def main():
                   bool(speedups) and all(x >= GOAL_BATCH for _, x in speedups),
                   f"{sum(1 for _, x in speedups if x >= GOAL_BATCH)} of {len(speedups)} kernels"))
 
-    # --- Highway batches -----------------------------------------------------------------------
+
+def highway_section(data, md, goals):
+    """§4, Highway: the vector batches of skelconv::simd."""
+    batch = data.batch
     hw_rows = []
     hw_speedups = []
     for name in sorted({n.split("/")[1] for n in batch}):
@@ -528,7 +544,10 @@ def main():
                       bool(hw_speedups) and all(x and x >= GOAL_HIGHWAY for _, x in hw_speedups),
                       f"{sum(1 for _, x in hw_speedups if x and x >= GOAL_HIGHWAY)} of {len(hw_speedups)} kernels"))
 
-    # --- GSL ---------------------------------------------------------------------------------
+
+def gsl_section(data, md, goals):
+    """§4b: the closed form against GSL's adaptive QAG-61."""
+    gsl = data.gsl
     if gsl:
         md.append("## 4b. Closed form against GSL's adaptive QAG (61-point rule), 0.1–3 |AB|\n")
         md.append("`skelconv_bench_gsl` (bench/gsl_bench.cpp): `gsl_integration_qag` with `GSL_INTEG_GAUSS61`, "
@@ -562,7 +581,10 @@ def main():
                       bool(ratios_gsl) and all(r >= GOAL_GSL for *_, r in ratios_gsl),
                       f"{sum(1 for *_, r in ratios_gsl if r >= GOAL_GSL)} of {len(ratios_gsl)} cases"))
 
-    # --- generic path ------------------------------------------------------------------------
+
+def generic_path_section(data, md, goals):
+    """§4c: the generic path's time and instructions per distance."""
+    gsl, ir = data.gsl, data.ir
     generic = {}
     for n, r in gsl.items():
         parts = n.split("/")
@@ -571,7 +593,7 @@ def main():
     if generic:
         md.append("### 4c. The generic path: f and ∇f at 0.1–3 |AB|, every direction\n")
         md.append(f"The closed form `f_and_grad` alone (weight degree 0), same points and run as 4b. "
-                  f"Goal (issue 15): ≤ {GOAL_GENERIC_NS:.0f} ns for inverse and Cauchy up to i = 8 at every distance.\n")
+                  f"Goal: ≤ {GOAL_GENERIC_NS:.0f} ns for inverse and Cauchy up to i = 8 at every distance.\n")
         def order(k):
             m = re.match(r"segment_(\w+?)_i(\d+)_w0$", k)
             return (m.group(1), int(m.group(2)))
@@ -621,7 +643,10 @@ def main():
                       all(t <= GOAL_GENERIC_NS for *_, t in cells),
                       f"{sum(1 for *_, t in cells if t <= GOAL_GENERIC_NS)} of {len(cells)} cells"))
 
-    # --- skeleton --------------------------------------------------------------------------
+
+def skeleton_section(data, md, goals):
+    """§5: a whole skeleton through the public API, brute force against the uniform grid."""
+    skeleton = data.skeleton
     md.append("## 5. Whole skeleton: 1,000 compact segments on a 128³ grid\n")
     brute = next((r for n, r in skeleton.items() if n.startswith("skeleton/brute_force/")), None)
     sub = next((r for n, r in skeleton.items() if n.startswith("skeleton/uniform_grid/") and r.get("points", 0) < 1e6), None)
@@ -654,7 +679,10 @@ def main():
                   f"{sub.get('max_rel_diff_vs_brute', float('nan')):.0e} (relative, max over the sub-grid).\n"
                   if sub else "\n")
 
-    # --- Table 4 -------------------------------------------------------------------------
+
+def table4_section(data, md, goals):
+    """§6: operation counts against Zanni et al. 2013 Table 4, and where the extra operations go."""
+    ops_by_name, scalis_compact, op_generic, longest, generated = data.ops_by_name, data.scalis_compact, data.op_generic, data.longest, data.generated
     md.append("## 6. Operation counts against SPEC Table 4 (Zanni et al. 2013)\n")
     md.append("Format: +, ×, / (√, atan, ln). Ours: the generated function's count of its generic path (the table's "
               "`OpCount`), with the longest path (stable-form branch) from generated/opcounts.csv when it differs; "
@@ -676,7 +704,7 @@ def main():
                 # ∇f alone is not measured).
                 ours = scalis_compact.get(int(kernel.rsplit("_", 1)[1]), {}).get(out)
             else:
-                ours = generic.get(f"{kernel}_{out}")
+                ours = op_generic.get(f"{kernel}_{out}")
             if not ours:
                 rows.append([label, out, fmt_ops(p), "–", "", "", ""])
                 continue
@@ -700,7 +728,7 @@ def main():
         if not kernel.startswith("segment_"):
             continue
         family = kernel.split("_")[1]
-        path = os.path.join(args.generated, f"segment_{family}.hpp")
+        path = os.path.join(generated, f"segment_{family}.hpp")
         try:
             with open(path) as f:
                 sec = sections(f.read(), kernel)
@@ -730,7 +758,10 @@ def main():
                          "ours − preamble − conditions: ratio"], rows))
     md.append("Every generated function's count: [OPCOUNTS.md](OPCOUNTS.md).\n")
 
-    # --- SCALIS segments ----------------------------------------------------------------------
+
+def scalis_section(data, md, goals):
+    """§7: SCALIS segments against adaptive quadrature."""
+    scalis = data.scalis
     if scalis:
         md.append("## 7. SCALIS segments against adaptive quadrature\n")
         md.append("`skelconv_bench_scalis`: `ScalisSegment::value_and_gradient` (generated inverse/Cauchy, "
@@ -749,30 +780,50 @@ def main():
         md.append(table(["workload", "closed form (ns)", "quadrature 1e-8 (ns, ratio, max rel. diff)",
                          "quadrature 1e-12 (ns, ratio, max rel. diff)"], rows))
 
-    public_path_section(res, md, goals)
-    mesh_ant_section(res, md, goals)
 
-    # --- goals ------------------------------------------------------------------------------
+def write_summary(res, md, goals):
+    """SUMMARY.md: the goals table after the title, then the sections."""
     goal_md = ["## Goals\n", "A shortfall is a finding, reported as measured.\n",
                table(["goal", "met", "where it stands", "measured"],
                      [[g, "yes" if ok else "**no**", where, m] for g, m, ok, where in goals])]
     md = md[:2] + goal_md + md[2:]
-
     with open(os.path.join(res, "SUMMARY.md"), "w") as f:
         f.write("\n".join(md))
 
-    # --- OPCOUNTS.md -------------------------------------------------------------------------
-    if opcounts:
-        rows = [[k["name"], k["family"], k["degree"], k["weight_degree"], fmt_ops(ops_tuple(k["f"])),
-                 fmt_ops(ops_tuple(k["grad"])), fmt_ops(ops_tuple(k["f_and_grad"]))] for k in opcounts]
-        with open(os.path.join(res, "OPCOUNTS.md"), "w") as f:
-            f.write("# Operation counts of every generated kernel\n\n"
-                    "From the generated table (`OpCount` of `generated/segment_table.hpp`, generic path), written by "
-                    "`skelconv_bench_counts --opcounts`. Format: +, ×, / (√, atan, ln); counting rules in "
-                    "include/skelconv/kernels/op_count.hpp.\n\n")
-            f.write(table(["function", "family", "i", "weight degree", "f", "∇f", "f and ∇f"], rows))
-    print(f"wrote {os.path.join(res, 'SUMMARY.md')}" + (" and OPCOUNTS.md" if opcounts else ""), file=sys.stderr)
 
+def write_opcounts(res, opcounts):
+    """OPCOUNTS.md: every generated kernel's operation count."""
+    rows = [[k["name"], k["family"], k["degree"], k["weight_degree"], fmt_ops(ops_tuple(k["f"])),
+             fmt_ops(ops_tuple(k["grad"])), fmt_ops(ops_tuple(k["f_and_grad"]))] for k in opcounts]
+    with open(os.path.join(res, "OPCOUNTS.md"), "w") as f:
+        f.write("# Operation counts of every generated kernel\n\n"
+                "From the generated table (`OpCount` of `generated/segment_table.hpp`, generic path), written by "
+                "`skelconv_bench_counts --opcounts`. Format: +, ×, / (√, atan, ln); counting rules in "
+                "include/skelconv/kernels/op_count.hpp.\n\n")
+        f.write(table(["function", "family", "i", "weight degree", "f", "∇f", "f and ∇f"], rows))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--results", default="bench/results")
+    ap.add_argument("--callgrind", default=None)
+    ap.add_argument("--disassembly", default=None)
+    ap.add_argument("--opcounts-csv", default="generated/opcounts.csv")
+    ap.add_argument("--command", default="scripts/bench.sh")
+    ap.add_argument("--generated", default="generated", help="directory of the generated headers (op breakdown)")
+    args = ap.parse_args()
+    data = load_results(args)
+    md, goals = [], []
+    header_section(data, md, args)
+    for section in (quadrature_section, gradient_cost_section, degree_section, batch_section, highway_section,
+                    gsl_section, generic_path_section, skeleton_section, table4_section, scalis_section):
+        section(data, md, goals)
+    public_path_section(args.results, md, goals)
+    mesh_ant_section(args.results, md, goals)
+    write_summary(args.results, md, goals)
+    if data.opcounts:
+        write_opcounts(args.results, data.opcounts)
+    print(f"wrote {os.path.join(args.results, 'SUMMARY.md')}" + (" and OPCOUNTS.md" if data.opcounts else ""), file=sys.stderr)
 
 if __name__ == "__main__":
     main()
