@@ -412,6 +412,208 @@ void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_si
   }
 }
 
+/// The segment oriented so that Δτ ≥ 0 (the tip, if any, at t ≤ 0: F is
+/// symmetric in A ↔ B), translated to A and scaled by 2^−e (exact) so that
+/// τ_max ∈ [1/2, 1).
+template <class T>
+struct Scaled {
+  const std::array<T, 3>* A;  ///< the caller's end at t = 0 after orienting
+  const std::array<T, 3>* B;  ///< the caller's end at t = 1
+  T tau_a, tau_b;             ///< the caller's radii at A and B
+  int e = 0;                  ///< the scale 2^−e
+  std::array<T, 3> ab, ap;    ///< B − A and P − A, scaled
+  T tau0, dtau;               ///< τ(0) and τ(1) − τ(0), scaled
+};
+template <class T>
+Scaled<T> orient_and_scale(const ScalisSegmentInput<T>& in) {
+  using std::frexp;
+  using std::ldexp;
+  const bool swap = in.tau1 < in.tau0;
+  Scaled<T> s;
+  s.A = swap ? &in.b : &in.a;
+  s.B = swap ? &in.a : &in.b;
+  s.tau_a = swap ? in.tau1 : in.tau0;
+  s.tau_b = swap ? in.tau0 : in.tau1;
+  (void)frexp(s.tau_b, &s.e);
+  for (int c = 0; c < 3; ++c) {
+    s.ab[c] = ldexp((*s.B)[c] - (*s.A)[c], -s.e);
+    s.ap[c] = ldexp(in.p[c] - (*s.A)[c], -s.e);
+  }
+  s.tau0 = ldexp(s.tau_a, -s.e);
+  s.dtau = ldexp(s.tau_b, -s.e) - s.tau0;
+  return s;
+}
+
+/// The real roots of Q on the segment's line (the support's boundary),
+/// ascending, each with Q'(root) and its offset from the segment end nearer
+/// to it.
+template <class T>
+struct QRoots {
+  int n = 0;
+  T at[2];
+  T slope[2];
+  EndOffset<T> offset[2];
+};
+
+/// Roots with Q'(root): r = γ/q has Q'(r) = 2 sign(β)√disc, r' = q/α has
+/// −that (q = −(β + sign(β)√disc) ≠ 0, the stable quadratic formula).
+///
+/// Each root is then held as its offset from the segment end nearer to it,
+/// t = end + offset. A root ρ near t = 1 held as the double ρ is off by ~ε
+/// in absolute terms, which is a relative error ε/(1 − ρ) in s = t − ρ over a
+/// support [ρ, 1] of width 1 − ρ (measured: 2.5e-13 in F, i = 10, a support
+/// 0.01 long at B). Centred at B, Q(1 − u) = α u² − 2(α + β) u + Q(1), with
+/// Q(1) = σ²τ1² − |BP|² and α + β = σ²Δτ τ1 + AB·BP formed from BP itself,
+/// and the same stable formula gives u to the relative accuracy of Q(1).
+/// (Near t = 0 the root itself is its offset.)
+template <class T>
+QRoots<T> support_roots(const Frame<T>& fr, const SupportDepths<T>& depths, const T& q, const T& sign_beta,
+                        const T& sd, const T& tau1) {
+  using std::abs;
+  QRoots<T> r;
+  r.at[r.n] = depths.q_at_a / q;
+  r.slope[r.n++] = 2 * sign_beta * sd;
+  if (fr.alpha != T(0)) {
+    r.at[r.n] = q / fr.alpha;
+    r.slope[r.n++] = -2 * sign_beta * sd;
+  }
+  if (r.n == 2 && r.at[1] < r.at[0]) {
+    std::swap(r.at[0], r.at[1]);
+    std::swap(r.slope[0], r.slope[1]);
+  }
+  const T half_slope_at_b = fr.sigma2 * fr.dtau * tau1 + depths.ab_bp;  // α + β
+  const T q_b = half_slope_at_b + (half_slope_at_b < T(0) ? -sd : sd);
+  for (int k = 0; k < r.n; ++k) {
+    r.offset[k] = {T(0), r.at[k]};
+    if (!(r.at[k] >= T(0.5)) || q_b == T(0)) continue;
+    // u of the two roots (u = Q(1)/q_b and q_b/α): the one matching ρ_k.
+    T u = depths.q_at_b / q_b;
+    if (fr.alpha != T(0)) {
+      const T other = q_b / fr.alpha;
+      if (abs((T(1) - other) - r.at[k]) < abs((T(1) - u) - r.at[k])) u = other;
+    }
+    r.offset[k] = {T(1), -u};
+  }
+  return r;
+}
+
+/// The support [t1, t2] within [0, 1] and which of its ends are roots of Q.
+template <class T>
+struct Support {
+  T t1 = T(0), t2 = T(1);
+  EndOffset<T> end1{T(0), T(0)}, end2{T(1), T(0)};  ///< t1, t2 as offsets from an end
+  int root_at_t1 = -1, root_at_t2 = -1;             ///< index into the roots, −1: a segment end
+};
+/// Q > 0 between the roots when α < 0, above the larger root when α > 0
+/// (Δτ > 0), and on one side of the single root when α = 0 (Q = 2βt + γ).
+template <class T>
+Support<T> clip_to_support(const QRoots<T>& r, const T& alpha, const T& beta) {
+  Support<T> s;
+  auto clip_low = [&](int k) {
+    if (r.at[k] > T(0)) {
+      s.t1 = r.at[k];
+      s.end1 = r.offset[k];
+      s.root_at_t1 = k;
+    }
+  };
+  auto clip_high = [&](int k) {
+    if (r.at[k] < T(1)) {
+      s.t2 = r.at[k];
+      s.end2 = r.offset[k];
+      s.root_at_t2 = k;
+    }
+  };
+  if (r.n == 2 && alpha < T(0)) {
+    clip_low(0);
+    clip_high(1);
+  } else if (r.n == 2) {
+    clip_low(1);
+  } else if (beta > T(0)) {
+    clip_low(0);
+  } else {
+    clip_high(0);
+  }
+  return s;
+}
+
+/// The three integrals over the support, by pieces: one linear piece for
+/// even i or a support bounded by segment ends; for odd i, two halves, each
+/// a square piece (t = ρ ± v², removing the branch point of √Q) at an end
+/// that is a root of Q, a linear one otherwise. Each piece's Gauss panels
+/// are graded towards the singular points it still sees: the pole of 1/τ
+/// and, for odd i, the other branch points.
+template <class T>
+Sums<T> integrate_support(const Frame<T>& fr, const QRoots<T>& r, const Support<T>& s, const T& sd,
+                          bool with_grad) {
+  using std::abs;
+  using std::sqrt;
+  const bool odd = fr.degree % 2 == 1;
+  T t_sing[3]{};
+  int n_sing = 0;
+  if (fr.dtau > T(0)) t_sing[n_sing++] = -fr.tau0 / fr.dtau;
+  const int n_poles = n_sing;
+  if (odd)
+    for (int k = 0; k < r.n; ++k) t_sing[n_sing++] = r.at[k];
+
+  // For Q: the root nearest to a t range (any root works algebraically).
+  auto nearest_root = [&](const T& lo, const T& hi) {
+    int nearest = 0;
+    T best = std::numeric_limits<T>::infinity();
+    for (int k = 0; k < r.n; ++k) {
+      const T d = r.at[k] < lo ? lo - r.at[k] : r.at[k] > hi ? r.at[k] - hi : T(0);
+      if (d < best) {
+        best = d;
+        nearest = k;
+      }
+    }
+    return nearest;
+  };
+  // A piece from the support end `origin` (`from` as offsets) towards the
+  // other end, of t extent `extent`.
+  auto linear_piece = [&](const T& origin, const EndOffset<T>& from, int dir, const T& extent) {
+    const T lo = dir > 0 ? origin : origin - extent;
+    const int k = nearest_root(lo, lo + extent);
+    return Piece<T>{false, origin, dir, extent, from - r.offset[k], r.slope[k]};
+  };
+  auto square_piece = [&](int k, int dir, const T& extent) {
+    return Piece<T>{true, r.at[k], dir, sqrt(extent), T(0), r.slope[k]};
+  };
+  // The singular points a square piece from root k still sees: its own
+  // root's branch point is removed by the substitution.
+  auto sing_without = [&](int k, T* out) {
+    int n = 0;
+    if (fr.dtau > T(0)) out[n++] = -fr.tau0 / fr.dtau;
+    if (odd)
+      for (int j = 0; j < r.n; ++j)
+        if (j != k) out[n++] = r.at[j];
+    return n;
+  };
+
+  Sums<T> sums;
+  // t2 − t1: between two roots 2√disc/|α| (exact to rounding however close
+  // they are), else from the offsets.
+  const T width = s.root_at_t1 >= 0 && s.root_at_t2 >= 0 ? T(2) * sd / abs(fr.alpha) : s.end2 - s.end1;
+  if (!odd || (s.root_at_t1 < 0 && s.root_at_t2 < 0)) {
+    add_piece(fr, linear_piece(s.t1, s.end1, +1, width), t_sing, n_sing, n_poles, with_grad, sums);
+    return sums;
+  }
+  const T half_width = width / 2;
+  T sing[3];
+  if (s.root_at_t1 >= 0) {
+    add_piece(fr, square_piece(s.root_at_t1, +1, half_width), sing, sing_without(s.root_at_t1, sing), n_poles,
+              with_grad, sums);
+  } else {
+    add_piece(fr, linear_piece(s.t1, s.end1, +1, half_width), t_sing, n_sing, n_poles, with_grad, sums);
+  }
+  if (s.root_at_t2 >= 0) {
+    add_piece(fr, square_piece(s.root_at_t2, -1, half_width), sing, sing_without(s.root_at_t2, sing), n_poles,
+              with_grad, sums);
+  } else {
+    add_piece(fr, linear_piece(s.t2, s.end2, -1, half_width), t_sing, n_sing, n_poles, with_grad, sums);
+  }
+  return sums;
+}
+
 }  // namespace scalis_compact_detail
 
 /// Unnormalised compact SCALIS field F(P) = ∫_0^1 K(|P−Γ(t)|/τ(t)) |AB| dt/τ(t),
@@ -421,34 +623,15 @@ void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_si
 template <class T>
 T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identity_t<std::array<T, 3>>* grad) {
   using namespace scalis_compact_detail;
-  using std::abs;
-  using std::frexp;
   using std::ldexp;
-  using std::max;
-  using std::min;
   using std::sqrt;
   const bool with_grad = grad != nullptr;
   if (with_grad) *grad = {T(0), T(0), T(0)};
 
-  // Orient so that Δτ ≥ 0 (the tip, if any, at t ≤ 0): F is symmetric in A ↔ B.
-  const bool swap = in.tau1 < in.tau0;
-  const std::array<T, 3>& A = swap ? in.b : in.a;
-  const std::array<T, 3>& B = swap ? in.a : in.b;
-  const T& tau_a = swap ? in.tau1 : in.tau0;
-  const T& tau_b = swap ? in.tau0 : in.tau1;
-
-  // Translate to A and scale by 2^−e (exact) so that τ_max ∈ [1/2, 1).
-  int e = 0;
-  (void)frexp(tau_b, &e);
-  std::array<T, 3> ab, ap;
-  for (int c = 0; c < 3; ++c) {
-    ab[c] = ldexp(B[c] - A[c], -e);
-    ap[c] = ldexp(in.p[c] - A[c], -e);
-  }
-  const T tau0 = ldexp(tau_a, -e);
-  const T dtau = ldexp(tau_b, -e) - tau0;
+  const Scaled<T> sc = orient_and_scale(in);
+  const std::array<T, 3>& ab = sc.ab;
+  const std::array<T, 3>& ap = sc.ap;
   const T sigma = in.sigma;
-
   const T a2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];  // |AB|²
   if (!(a2 > T(0))) return T(0);
   const T length = sqrt(a2);
@@ -457,11 +640,11 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
 
   Frame<T> fr;
   fr.degree = degree;
-  fr.tau0 = tau0;
-  fr.dtau = dtau;
+  fr.tau0 = sc.tau0;
+  fr.dtau = sc.dtau;
   fr.sigma = sigma;
   fr.sigma2 = sigma * sigma;
-  fr.alpha = (sigma * dtau - length) * (sigma * dtau + length);
+  fr.alpha = (sigma * sc.dtau - length) * (sigma * sc.dtau + length);
   fr.t_star = b / a2;
   fr.ab = ab;
   for (int c = 0; c < 3; ++c) fr.h[c] = ap[c] - fr.t_star * ab[c];
@@ -476,11 +659,11 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
                             std::numeric_limits<T>::quiet_NaN()};
     return std::numeric_limits<T>::infinity();
   };
-  if (tau0 == T(0) && c2 == T(0)) return at_tip();
+  if (sc.tau0 == T(0) && c2 == T(0)) return at_tip();
 
-  const T beta = fr.sigma2 * dtau * tau0 + b;
-  const SupportDepths<T> depths = support_depths(A, B, in.p, tau_a, tau_b, sigma, e, ab, ap, tau0, dtau);
-  const T gamma = depths.q_at_a;
+  const T beta = fr.sigma2 * sc.dtau * sc.tau0 + b;
+  const SupportDepths<T> depths =
+      support_depths(*sc.A, *sc.B, in.p, sc.tau_a, sc.tau_b, sigma, sc.e, ab, ap, sc.tau0, sc.dtau);
   T disc = depths.disc;
   if (!(disc > T(0))) {
     // α ≤ 0: Q ≤ 0 everywhere (empty support, or a tangent point).
@@ -492,157 +675,22 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   const T sd = sqrt(disc);
   const T sign_beta = beta < T(0) ? T(-1) : T(1);
   const T q = -(beta + sign_beta * sd);
-
-  // Roots with Q'(root): r = γ/q has Q'(r) = 2 sign(β)√disc, r' = q/α has −that.
   // q = 0 means β = 0 and disc = 0: a double root of Q at t = −β/α = 0. With
   // Q(t_tip) ≤ 0 that root is the tip (τ0 = 0, P = A: handled above unless
   // rounded), or Q ≤ 0 throughout (α ≤ 0); α = 0 as well would make Q ≡ γ,
   // which Q(t_tip) ≤ 0 excludes unless γ ≤ 0.
-  if (q == T(0)) return alpha > T(0) && tau0 == T(0) ? at_tip() : T(0);
-  T roots[2], slopes[2];
-  int n_roots = 0;
-  roots[n_roots] = gamma / q;
-  slopes[n_roots++] = 2 * sign_beta * sd;
-  if (alpha != T(0)) {
-    roots[n_roots] = q / alpha;
-    slopes[n_roots++] = -2 * sign_beta * sd;
-  }
-  if (n_roots == 2 && roots[1] < roots[0]) {
-    std::swap(roots[0], roots[1]);
-    std::swap(slopes[0], slopes[1]);
-  }
+  if (q == T(0)) return alpha > T(0) && sc.tau0 == T(0) ? at_tip() : T(0);
 
-  // Each root as its offset from the segment end nearer to it, t = end +
-  // offset. A root ρ near t = 1 held as the double ρ is off by ~ε in
-  // absolute terms, which is a relative error ε/(1 − ρ) in s = t − ρ over a
-  // support [ρ, 1] of width 1 − ρ (measured: 2.5e-13 in F, i = 10, a support
-  // 0.01 long at B). Centred at B, Q(1 − u) = α u² − 2(α + β) u + Q(1), with
-  // Q(1) = σ²τ1² − |BP|² and α + β = σ²Δτ τ1 + AB·BP formed from BP itself,
-  // and the same stable formula gives u to the relative accuracy of Q(1).
-  // (Near t = 0 the root itself is its offset.)
-  EndOffset<T> root_at[2];
-  {
-    const T tau1 = ldexp(tau_b, -e);
-    const T& q_at_b = depths.q_at_b;
-    const T half_slope_at_b = fr.sigma2 * dtau * tau1 + depths.ab_bp;  // α + β
-    const T q_b = half_slope_at_b + (half_slope_at_b < T(0) ? -sd : sd);
-    for (int k = 0; k < n_roots; ++k) {
-      root_at[k] = {T(0), roots[k]};
-      if (!(roots[k] >= T(0.5)) || q_b == T(0)) continue;
-      // u of the two roots (u = Q(1)/q_b and q_b/α): the one matching ρ_k.
-      T u = q_at_b / q_b;
-      if (alpha != T(0)) {
-        const T other = q_b / alpha;
-        if (abs((T(1) - other) - roots[k]) < abs((T(1) - u) - roots[k])) u = other;
-      }
-      root_at[k] = {T(1), -u};
-    }
-  }
-
-  // The support [t1, t2] and which of its ends are roots of Q.
-  T t1 = T(0), t2 = T(1);
-  EndOffset<T> end1{T(0), T(0)}, end2{T(1), T(0)};  // t1, t2 as offsets from an end
-  int root_at_t1 = -1, root_at_t2 = -1;  // index into roots, −1: a segment end
-  auto clip_low = [&](int k) {
-    if (roots[k] > T(0)) {
-      t1 = roots[k];
-      end1 = root_at[k];
-      root_at_t1 = k;
-    }
-  };
-  auto clip_high = [&](int k) {
-    if (roots[k] < T(1)) {
-      t2 = roots[k];
-      end2 = root_at[k];
-      root_at_t2 = k;
-    }
-  };
-  if (n_roots == 2 && alpha < T(0)) {
-    clip_low(0);
-    clip_high(1);
-  } else if (n_roots == 2) {  // α > 0, Δτ > 0: Q > 0 above the larger root
-    clip_low(1);
-  } else {  // α = 0: Q = 2βt + γ
-    if (beta > T(0)) clip_low(0);
-    else clip_high(0);
-  }
-  if (!(t1 < t2)) return T(0);
-
-  // Singular points of the integrand on the real t axis: the pole of 1/τ and,
-  // for odd i, the branch points of √Q.
-  const bool odd = degree % 2 == 1;
-  T t_sing[3]{};
-  int n_sing = 0;
-  if (dtau > T(0)) t_sing[n_sing++] = -tau0 / dtau;
-  const int n_poles = n_sing;
-  if (odd)
-    for (int k = 0; k < n_roots; ++k) t_sing[n_sing++] = roots[k];
-
-  // For Q: the root nearest to a t range (any root works algebraically).
-  auto nearest_root = [&](const T& lo, const T& hi) {
-    int nearest = 0;
-    T best = std::numeric_limits<T>::infinity();
-    for (int k = 0; k < n_roots; ++k) {
-      const T d = roots[k] < lo ? lo - roots[k] : roots[k] > hi ? roots[k] - hi : T(0);
-      if (d < best) {
-        best = d;
-        nearest = k;
-      }
-    }
-    return nearest;
-  };
-  // A piece from the support end `origin` (`from` as offsets) towards the
-  // other end, of t extent `extent`.
-  auto linear_piece = [&](const T& origin, const EndOffset<T>& from, int dir, const T& extent) {
-    const T lo = dir > 0 ? origin : origin - extent;
-    const int k = nearest_root(lo, lo + extent);
-    return Piece<T>{false, origin, dir, extent, from - root_at[k], slopes[k]};
-  };
-  auto square_piece = [&](int k, int dir, const T& extent) {
-    return Piece<T>{true, roots[k], dir, sqrt(extent), T(0), slopes[k]};
-  };
-  // The singular points a square piece from roots[k] still sees: its own
-  // root's branch point is removed by the substitution.
-  auto sing_without = [&](int k, T* out) {
-    int n = 0;
-    if (dtau > T(0)) out[n++] = -tau0 / dtau;
-    if (odd)
-      for (int j = 0; j < n_roots; ++j)
-        if (j != k) out[n++] = roots[j];
-    return n;
-  };
-
-  Sums<T> sums;
-  // t2 − t1: between two roots 2√disc/|α| (exact to rounding however close
-  // they are), else from the offsets.
-  const T width = root_at_t1 >= 0 && root_at_t2 >= 0 ? T(2) * sd / abs(alpha) : end2 - end1;
-  if (!odd || (root_at_t1 < 0 && root_at_t2 < 0)) {
-    const Piece<T> pc = linear_piece(t1, end1, +1, width);
-    add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
-  } else {
-    const T half_width = width / 2;
-    T sing[3];
-    if (root_at_t1 >= 0) {
-      const Piece<T> pc = square_piece(root_at_t1, +1, half_width);
-      add_piece(fr, pc, sing, sing_without(root_at_t1, sing), n_poles, with_grad, sums);
-    } else {
-      const Piece<T> pc = linear_piece(t1, end1, +1, half_width);
-      add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
-    }
-    if (root_at_t2 >= 0) {
-      const Piece<T> pc = square_piece(root_at_t2, -1, half_width);
-      add_piece(fr, pc, sing, sing_without(root_at_t2, sing), n_poles, with_grad, sums);
-    } else {
-      const Piece<T> pc = linear_piece(t2, end2, -1, half_width);
-      add_piece(fr, pc, t_sing, n_sing, n_poles, with_grad, sums);
-    }
-  }
+  const QRoots<T> roots = support_roots(fr, depths, q, sign_beta, sd, ldexp(sc.tau_b, -sc.e));
+  const Support<T> support = clip_to_support(roots, alpha, beta);
+  if (!(support.t1 < support.t2)) return T(0);
+  const Sums<T> sums = integrate_support(fr, roots, support, sd, with_grad);
 
   if (with_grad) {
     // ∇F = −(i|AB|/σ²)(H ∫ ξ^((i−2)/2)/τ³ − AB ∫ (t − t*) ξ^((i−2)/2)/τ³), then
     // undo the scaling (∇F scales as 1/scale).
     const T factor = -T(degree) * length / fr.sigma2;
-    for (int c = 0; c < 3; ++c) (*grad)[c] = ldexp(factor * (fr.h[c] * sums.g0 - ab[c] * sums.g1), -e);
+    for (int c = 0; c < 3; ++c) (*grad)[c] = ldexp(factor * (fr.h[c] * sums.g0 - ab[c] * sums.g1), -sc.e);
   }
   return length * sums.f;
 }
