@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <variant>
 
 #include <Eigen/Dense>
@@ -176,8 +175,9 @@ double thickness_along(const Skeleton& field, const Vec3& foot, const Vec3& norm
     lo = reach * k / scan_steps, g_lo = g(lo);
   }
   if (g_lo < 0) return 0.0;  // below iso down to the skeleton: no surface over this point
-  // Safeguarded secant (Illinois): a bisection whenever the secant step
-  // leaves the middle half of the bracket.
+  // Regula falsi safeguarded by bisection: a bisection whenever the secant
+  // point leaves the middle half of the bracket, so the bracket at least
+  // shrinks to 3/4 per step.
   for (int it = 0; it < 200 && hi - lo > 1e-12 * reach; ++it) {
     double r = lo + (hi - lo) * g_lo / (g_lo - g_hi);
     if (!(r > lo + 0.25 * (hi - lo) && r < hi - 0.25 * (hi - lo))) r = 0.5 * (lo + hi);
