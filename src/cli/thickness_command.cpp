@@ -1,0 +1,113 @@
+// Implementation of thickness_command.hpp.
+#include "thickness_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "exit_status.hpp"
+#include "text_output.hpp"
+#include "skelconv/errors.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
+#include "skelconv/skeleton/thickness_correction.hpp"
+
+namespace skelconv::cli {
+namespace {
+
+constexpr const char* thickness_footer = R"(
+FILE.json: a skeleton of "segment" primitives with one "compact" kernel, in one
+           plane, at the top level (their sum); their weights are replaced.
+Output:    OUT.json, the corrected skeleton; on stdout the thickness (distance
+           from the skeleton to the surface along the plane's normal) at the
+           samples of each input segment, before (base weight w_tau everywhere)
+           and after the correction. See docs/thickness_correction.md.)";
+
+/// min, max and worst |r − τ|/τ of the samples on edge `edge`.
+struct EdgeSummary {
+  double min = INFINITY, max = 0, worst = 0;
+  int count = 0;
+};
+
+EdgeSummary summarise(const std::vector<ThicknessSample>& samples, std::size_t edge, double tau) {
+  EdgeSummary s;
+  for (const ThicknessSample& x : samples) {
+    if (x.edge != edge) continue;
+    s.min = std::min(s.min, x.thickness), s.max = std::max(s.max, x.thickness);
+    s.worst = std::max(s.worst, std::abs(x.thickness - tau) / tau);
+    ++s.count;
+  }
+  return s;
+}
+
+std::string report(const SegmentGraph& g, const ThicknessCorrection& c, double tau, const std::string& output) {
+  std::string text = fmt::format("output: {}\ntau: {:.6g}\nbase_weight: {:.9g}\ncorrected_nodes:", output, tau,
+                                 c.base_weight);
+  for (std::size_t n : c.corrected_nodes) {
+    text += fmt::format(" ({:.6g}, {:.6g}, {:.6g})", g.nodes[n].x(), g.nodes[n].y(), g.nodes[n].z());
+  }
+  text += fmt::format("\niterations: {}\nconverged: {}\n", c.iterations, c.converged ? "yes" : "no");
+  text += "segment          samples  before: min      max      worst    after: min      max      worst\n";
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    const EdgeSummary b = summarise(c.before, e, tau), a = summarise(c.after, e, tau);
+    text += fmt::format("{:<16} {:>7}  {:>12.6f} {:>8.6f} {:>7.2f}%  {:>11.6f} {:>8.6f} {:>7.2f}%\n",
+                        g.edges[e].location, b.count, b.min, b.max, 100 * b.worst, a.min, a.max, 100 * a.worst);
+  }
+  return text;
+}
+
+/// The library names the options by their field; the user typed flags.
+InputError as_flag(const InputError& error) {
+  std::string flag = error.where() == "thickness" ? "tau" : error.where();
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return InputError(error.problem(), "--" + flag);
+}
+
+}  // namespace
+
+CLI::App* add_thickness_command(CLI::App& app, ThicknessOptions& options) {
+  CLI::App* c = app.add_subcommand(
+      "thickness", "Correct the thickness of a graph of compact-kernel segments (Zanni 2013 5.1)");
+  c->add_option("FILE", options.input_path, "Skeleton (JSON)")->required();
+  c->add_option("--tau", options.tau, "Requested thickness tau (> 0, below the kernel's R)")->required();
+  c->add_option("-o,--output", options.output_path, "Corrected skeleton (JSON)")->required();
+  c->add_option("--tolerance", options.tolerance, "Relative departure |r - tau|/tau that needs correction")->capture_default_str();
+  c->add_option("--max-iterations", options.max_iterations, "Levenberg-Marquardt iterations at most")->capture_default_str();
+  c->add_option("--ramp-nodes", options.ramp_nodes, "Split points per segment leaving a corrected node")->capture_default_str();
+  c->add_option("--regularisation", options.regularisation, "Penalty on the relative weight changes")->capture_default_str();
+  c->footer(thickness_footer);
+  return c;
+}
+
+int run_thickness(const ThicknessOptions& options) {
+  return print_all_or_nothing([&] {
+    if (std::filesystem::path(options.output_path).extension() != ".json")
+      throw InputError("the skeleton file must end in .json", options.output_path);
+    const Skeleton skeleton = load_skeleton_file(options.input_path);
+    SegmentGraph graph;
+    try {
+      graph = segment_graph_of(skeleton);
+    } catch (const InputError& error) {
+      throw InputError(error.what(), options.input_path);  // "file.json: primitives[2].kernel.family: ..."
+    }
+    ThicknessCorrectionOptions o;
+    o.thickness = options.tau;
+    o.tolerance = options.tolerance;
+    o.max_iterations = options.max_iterations;
+    o.ramp_nodes = options.ramp_nodes;
+    o.regularisation = options.regularisation;
+    ThicknessCorrection c;
+    try {
+      c = correct_thickness(graph, o);
+    } catch (const InputError& error) {
+      throw as_flag(error);
+    }
+    write_text_atomically(weighted_skeleton_json(c.refined, c.weights, c.point_weights), options.output_path);
+    return report(graph, c, options.tau, options.output_path);
+  });
+}
+
+}  // namespace skelconv::cli

@@ -1,0 +1,148 @@
+// The thickness correction (skelconv/skeleton/thickness_correction.hpp,
+// Zanni et al. 2013 §5.1) on three graphs: a Y fork, an L corner, a bent
+// chain of unequal lengths. The claim checked: after correction the surface
+// lies within 2% of τ along every segment, and before it does not.
+//
+// The reference thickness is measured independently of the optimiser: the
+// corrected skeleton goes through its JSON text and the file reader (one
+// segment per edge with its linear weight, not the optimiser's hat
+// functions), the points are midway between the optimiser's samples and
+// denser, and the root finder is plain bisection from its own scan.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "expect_input_error.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
+#include "skelconv/skeleton/thickness_correction.hpp"
+
+namespace skelconv {
+namespace thickness_correction_test {
+
+// Zanni's practice (§4.3): compact kernel of degree 6 with support σ τ, σ = 2.
+constexpr double tau = 0.5;
+constexpr double support = 2 * tau;
+// The claim of the issue: within 2% of τ after; more than 2% somewhere before.
+constexpr double claim = 0.02;
+// Reference samples per length τ (the optimiser uses 4, ends included).
+constexpr int reference_per_tau = 7;
+
+std::string segment_json(const Vec3& a, const Vec3& b) {
+  return "{\"type\": \"segment\", \"a\": [" + std::to_string(a.x()) + ", " + std::to_string(a.y()) + ", " +
+         std::to_string(a.z()) + "], \"b\": [" + std::to_string(b.x()) + ", " + std::to_string(b.y()) + ", " +
+         std::to_string(b.z()) + "], \"kernel\": {\"family\": \"compact\", \"degree\": 6, \"R\": " +
+         std::to_string(support) + "}}";
+}
+
+std::string polyline_json(const std::vector<std::pair<Vec3, Vec3>>& segments) {
+  std::string out = "{\"primitives\": [";
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    out += (k ? ", " : "") + segment_json(segments[k].first, segments[k].second);
+  }
+  return out + "]}";
+}
+
+Vec3 polar(double length, double degrees) {
+  const double a = degrees * M_PI / 180;
+  return {length * std::cos(a), length * std::sin(a), 0};
+}
+
+std::string y_fork() {
+  return polyline_json({{Vec3::Zero(), polar(3, 90)}, {Vec3::Zero(), polar(3, 210)}, {Vec3::Zero(), polar(3, 330)}});
+}
+std::string l_corner() { return polyline_json({{Vec3(3, 0, 0), Vec3::Zero()}, {Vec3::Zero(), Vec3(0, 3, 0)}}); }
+std::string bent_chain() {
+  const Vec3 p0(0, 0, 0), p1(2.5, 0, 0), p2 = p1 + polar(0.8, 40), p3 = p2 + polar(3.2, -20);
+  return polyline_json({{p0, p1}, {p1, p2}, {p2, p3}});
+}
+
+/// Bisection on [lo, hi] of f(foot + r n) − iso, bracketed by a scan of 500
+/// steps from the support radius inwards (f = 0 there: the graph is planar).
+double reference_thickness(const Skeleton& s, const Vec3& foot, const Vec3& n) {
+  const auto g = [&](double r) { return s.value(foot + r * n) - s.iso(); };
+  double hi = support, lo = support;
+  for (int k = 499; k >= 0 && g(lo) < 0; --k) hi = lo, lo = support * k / 500;
+  if (g(lo) < 0) return 0;
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (g(mid) >= 0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/// Worst |r − τ|/τ over reference points midway between denser samples of
+/// every input segment, for `skeleton`.
+double worst_reference_departure(const SegmentGraph& graph, const Skeleton& skeleton) {
+  double worst = 0;
+  for (const SegmentGraph::Edge& e : graph.edges) {
+    const Vec3 a = graph.nodes[e.a], b = graph.nodes[e.b];
+    const int n = int(std::ceil(reference_per_tau * (b - a).norm() / tau));
+    for (int j = 0; j <= n; ++j) {
+      // the two ends and the midpoints of n intervals
+      for (double t : {double(j) / n, (j + 0.5) / n}) {
+        if (t > 1) continue;
+        const double r = reference_thickness(skeleton, a + t * (b - a), graph.normal);
+        worst = std::max(worst, std::abs(r - tau) / tau);
+      }
+    }
+  }
+  return worst;
+}
+
+void expect_correction_matters_and_works(const std::string& json) {
+  const SegmentGraph graph = segment_graph_of(parse_skeleton_json(json));
+  ThicknessCorrectionOptions options;
+  options.thickness = tau;
+  const ThicknessCorrection c = correct_thickness(graph, options);
+  const Skeleton before = parse_skeleton_json(
+      weighted_skeleton_json(graph, std::vector<double>(graph.nodes.size(), c.base_weight)));
+  const Skeleton after = parse_skeleton_json(weighted_skeleton_json(c.refined, c.weights, c.point_weights));
+  const double worst_before = worst_reference_departure(graph, before);
+  const double worst_after = worst_reference_departure(graph, after);
+  ::testing::Test::RecordProperty("worst_before", std::to_string(worst_before));
+  ::testing::Test::RecordProperty("worst_after", std::to_string(worst_after));
+  std::printf("corrected nodes %zu, iterations %d, worst |r - tau|/tau before %.4f after %.4f\n",
+              c.corrected_nodes.size(), c.iterations, worst_before, worst_after);
+  EXPECT_GT(worst_before, claim) << "the uncorrected graph is already within 2%: the test shows nothing";
+  EXPECT_LT(worst_after, claim);
+  EXPECT_FALSE(c.corrected_nodes.empty());
+}
+
+TEST(ThicknessCorrection, YForkWithin2Percent) { expect_correction_matters_and_works(y_fork()); }
+TEST(ThicknessCorrection, LCornerWithin2Percent) { expect_correction_matters_and_works(l_corner()); }
+TEST(ThicknessCorrection, BentChainOfUnequalLengthsWithin2Percent) { expect_correction_matters_and_works(bent_chain()); }
+
+TEST(ThicknessCorrection, BaseWeightGivesTauOnALongSegment) {
+  // The middle of a long straight segment needs no correction: there the
+  // base weight alone gives τ (bisection, not the library's root finder).
+  const SegmentGraph g = segment_graph_of(parse_skeleton_json(polyline_json({{Vec3(-5, 0, 0), Vec3(5, 0, 0)}})));
+  ThicknessCorrectionOptions options;
+  options.thickness = tau;
+  const ThicknessCorrection c = correct_thickness(g, options);
+  const Skeleton s = weighted_skeleton(g, std::vector<double>(g.nodes.size(), c.base_weight));
+  EXPECT_NEAR(reference_thickness(s, Vec3(0, 0, 0), g.normal), tau, 1e-12);
+  EXPECT_EQ(c.corrected_nodes.size(), 2u);  // the two free ends thin
+}
+
+TEST(ThicknessCorrection, RejectsWhatItDoesNotSupport) {
+  test::expect_input_error([&] { (void)segment_graph_of(parse_skeleton_json("{\"primitives\": []}")); }, "primitives",
+                     "no segment");
+  test::expect_input_error([&] { (void)segment_graph_of(parse_skeleton_json(
+          R"({"primitives": [{"type": "segment", "a": [0,0,0], "b": [1,0,0], "kernel": {"family": "cauchy", "degree": 4, "s": 1}}]})")); }, "primitives[0].kernel.family", "compact");
+  test::expect_input_error([&] { (void)segment_graph_of(parse_skeleton_json(
+          R"({"primitives": [{"type": "point", "center": [0,0,0], "kernel": {"family": "compact", "degree": 4, "R": 1}}]})")); }, "primitives[0].type", "\"segment\" primitives only");
+  test::expect_input_error([&] { (void)segment_graph_of(parse_skeleton_json(polyline_json(
+                         {{Vec3(0, 0, 0), Vec3(1, 0, 0)}, {Vec3(1, 0, 0), Vec3(1, 1, 0)}, {Vec3(1, 1, 0), Vec3(1, 1, 1)}}))); }, "primitives[2]", "not in one plane");
+  const SegmentGraph g = segment_graph_of(parse_skeleton_json(l_corner()));
+  ThicknessCorrectionOptions options;
+  options.thickness = 0;
+  test::expect_input_error([&] { (void)correct_thickness(g, options); }, "thickness", "must be > 0");
+  options.thickness = support;
+  test::expect_input_error([&] { (void)correct_thickness(g, options); }, "thickness", "below the kernel's support radius");
+}
+
+}  // namespace thickness_correction_test
+}  // namespace skelconv
