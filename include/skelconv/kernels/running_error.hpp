@@ -66,7 +66,8 @@ struct RunningError {
   }
   friend RunningError operator*(const RunningError& x, const RunningError& y) {
     const T r = x.value * y.value;
-    return {r, std::abs(x.value) * y.err + std::abs(y.value) * x.err + x.err * y.err + u * std::abs(r) + eta};
+    // |x| e_y + |y| e_x + e_x e_y, with one product fewer.
+    return {r, (std::abs(x.value) + x.err) * y.err + std::abs(y.value) * x.err + (u * std::abs(r) + eta)};
   }
   friend RunningError operator/(const RunningError& x, const RunningError& y) {
     const T r = x.value / y.value;

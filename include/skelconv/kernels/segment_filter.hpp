@@ -12,12 +12,15 @@
 //     bound ≤ tolerance · (|value| − bound)
 //
 // (so the relative error against the exact value is ≤ tolerance; for ∇f,
-// Euclidean norms of the component bounds and of ∇f). Elsewhere it returns
-// the stable form. verify/filter_check.cpp checks the bound against float128
+// the sum of the components' bounds, which bounds the Euclidean norm of the
+// error, against the largest |∂f/∂x_i|, a lower bound of |∇f|: no square
+// root, the same conclusion). Elsewhere it returns the stable form. verify/filter_check.cpp checks the bound against float128
 // references.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "skelconv/primitives/segment_input.hpp"
@@ -36,7 +39,7 @@ struct SegmentFastKernel;
 inline constexpr double kDefaultFilterTolerance = 1e-13;
 
 /// What the fast form gave, with its error bounds (absolute; the gradient's
-/// is the Euclidean norm of its components' bounds).
+/// is the sum of its components' bounds, ≥ the Euclidean norm of its error).
 struct FastEvaluation {
   double f = 0, f_bound = 0;
   std::array<double, 3> grad{};
@@ -47,6 +50,13 @@ struct FastEvaluation {
 /// at `tolerance` (never an infinite or NaN one).
 inline bool filter_accepts(double magnitude, double bound, double tolerance) {
   return magnitude < std::numeric_limits<double>::infinity() && bound <= tolerance * (magnitude - bound);
+}
+
+/// The same for a gradient whose error has Euclidean norm ≤ `bound`: against
+/// max_i |g_i| ≤ |g|, so that acceptance implies bound ≤ tolerance · (|g| − bound).
+inline bool filter_accepts_gradient(const std::array<double, 3>& g, double bound, double tolerance) {
+  const double largest = std::max({std::abs(g[0]), std::abs(g[1]), std::abs(g[2])});
+  return filter_accepts(largest, bound, tolerance);
 }
 
 /// One generated segment kernel with its filter.
