@@ -4,10 +4,10 @@
 // For every generated segment kernel with a fast form, on the sweep's samples
 // of every region (sampling.hpp), on adversarial ones and on points found by
 // bisection across the filter's threshold (below), the fast form's value and
-// its running error bound (RunningError<double>) are
-// compared with the reference: the stable generated function evaluated in
-// binary128 on the same double input (the same clipped [t0, t1] for compact
-// kernels), whose own error (about 1e-28 relative where the sweeps compare
+// its error bound (FilteredSegmentKernel::evaluate_fast: RelativeError<double>
+// under the filter's floating-point scope) are compared with the reference:
+// the stable generated function evaluated in binary128 on the same double
+// input (the same clipped [t0, t1] for compact kernels), whose own error (about 1e-28 relative where the sweeps compare
 // it with quadrature of the definition, docs/verify.md) is allowed for by
 // kReferenceSlack. A point where |fast − reference| exceeds the bound fails
 // the check, accepted by the filter or not; the table counts the filter's

@@ -6,8 +6,9 @@
 // line, beyond an end, in the far field) and, where its generic path calls no
 // helper, a fast form (<name>_fast_*: the generic formula alone). The filter
 // (CGAL's filtered kernels, Shewchuk's adaptive predicates) evaluates the
-// fast form on RunningError<double> (skelconv/kernels/running_error.hpp),
-// which bounds its rounding error as it goes, and accepts it when
+// fast form on RelativeError<double> (skelconv/kernels/relative_error.hpp),
+// whose bound on the rounding error the compiler folds to constants except
+// at the sums that can cancel, and accepts it when
 //
 //     bound ≤ tolerance · (|value| − bound)
 //
@@ -30,8 +31,8 @@ namespace skelconv {
 namespace generated {
 template <class T>
 struct SegmentKernel;
-struct SegmentFastKernel;
 }  // namespace generated
+struct FastFormWrappers;  // src/kernels/segment_filter.cpp
 
 /// The default relative tolerance of the filter: the verifier's accuracy
 /// goal for every generated kernel and region (docs/verify.md), so that an
@@ -83,12 +84,12 @@ class FilteredSegmentKernel {
   double f_and_grad(const SegmentInput<double>& in, std::array<double, 3>& grad,
                     double tolerance = kDefaultFilterTolerance, bool* accepted = nullptr) const;
 
-  FilteredSegmentKernel(const generated::SegmentKernel<double>* stable, const generated::SegmentFastKernel* fast)
+  FilteredSegmentKernel(const generated::SegmentKernel<double>* stable, const FastFormWrappers* fast)
       : stable_(stable), fast_(fast) {}
 
  private:
   const generated::SegmentKernel<double>* stable_;
-  const generated::SegmentFastKernel* fast_;
+  const FastFormWrappers* fast_;
 };
 
 }  // namespace skelconv
