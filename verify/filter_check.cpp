@@ -95,7 +95,9 @@ std::optional<bool> check_point(const FilteredSegmentKernel& kernel, const Gener
   x.s = in.s, x.R = in.R, x.t0 = in.t0, x.t1 = in.t1;
   std::array<extended, 3> g_ref{};
   const extended f_ref = reference.f_and_grad(x, g_ref);
-  const double f_bound = fast.f_bound * bound_scale, g_bound = fast.grad_bound * bound_scale;
+  const double f_bound = fast.f_bound * bound_scale, g_bound = fast.grad_bound() * bound_scale;
+  std::array<double, 3> g_bounds = fast.grad_bounds;
+  for (double& b : g_bounds) b *= bound_scale;
   const double f_err = static_cast<double>(abs(extended(fast.f) - f_ref));
   extended g_err2 = 0, g_norm2 = 0;
   for (int c = 0; c < 3; ++c) {
@@ -108,11 +110,10 @@ std::optional<bool> check_point(const FilteredSegmentKernel& kernel, const Gener
   ++t.points;
   // The filter's own decision (FilteredSegmentKernel::f_and_grad), on the scaled bounds.
   const bool accepted = std::isfinite(fast.f) && filter_accepts(std::abs(fast.f), f_bound, tolerance) &&
-                        filter_accepts_gradient(fast.grad, g_bound, tolerance);
+                        filter_accepts_gradient(fast.grad, g_bounds, tolerance);
   ++(accepted ? t.accepted : t.rejected);
-  const double largest_g = std::max({std::abs(fast.grad[0]), std::abs(fast.grad[1]), std::abs(fast.grad[2])});
   const double ratio = std::max(threshold_ratio(std::abs(fast.f), f_bound, tolerance),
-                                threshold_ratio(largest_g, g_bound, tolerance));
+                                threshold_ratio(std::hypot(fast.grad[0], fast.grad[1], fast.grad[2]), g_bound, tolerance));
   if (ratio >= 0.1 && ratio <= 10) ++t.near_threshold;
   auto judge = [&](double err, double bound, double magnitude) {
     if (!std::isfinite(bound)) return;

@@ -100,12 +100,11 @@ SegmentInput<FastScalar> exact_input(const SegmentInput<double>& in) {
   return x;
 }
 
-// The gradient's bound: the sum of its components' bounds, ≥ the Euclidean
-// norm of the error vector (|e|₂ ≤ |e|₁), without a square root. Rounding
-// of the two additions: relative 2u, inside the bounds' own kBoundSafety.
 void store_gradient(const std::array<FastScalar, 3>& g, FastEvaluation& out) {
-  for (int i = 0; i < 3; ++i) out.grad[i] = g[i].value;
-  out.grad_bound = g[0].bound() + g[1].bound() + g[2].bound();
+  for (int i = 0; i < 3; ++i) {
+    out.grad[i] = g[i].value;
+    out.grad_bounds[i] = g[i].bound();
+  }
 }
 
 // The wrappers of entry I of the generated table. Flattened: the fast form
@@ -130,7 +129,7 @@ template <std::size_t I>
   after_flags_cleared(in);
   store_gradient(segment_fast_kernel_table[I].grad(exact_input(in)), out);
   before_flags_read(out);
-  if (!scope.model_held()) out.grad_bound = kInfinity;
+  if (!scope.model_held()) out.grad_bounds.fill(kInfinity);
 }
 
 template <std::size_t I>
@@ -144,7 +143,10 @@ template <std::size_t I>
   out.f_bound = f.bound();
   store_gradient(g, out);
   before_flags_read(out);
-  if (!scope.model_held()) out.f_bound = out.grad_bound = kInfinity;
+  if (!scope.model_held()) {
+    out.f_bound = kInfinity;
+    out.grad_bounds.fill(kInfinity);
+  }
 }
 
 template <std::size_t I>
@@ -198,7 +200,7 @@ double FilteredSegmentKernel::f(const SegmentInput<double>& in, double tolerance
 std::array<double, 3> FilteredSegmentKernel::grad(const SegmentInput<double>& in, double tolerance,
                                                   bool* accepted) const {
   FastEvaluation e;
-  const bool ok = evaluate_fast(in, 1, e) && filter_accepts_gradient(e.grad, e.grad_bound, tolerance);
+  const bool ok = evaluate_fast(in, 1, e) && filter_accepts_gradient(e.grad, e.grad_bounds, tolerance);
   if (accepted) *accepted = ok;
   return ok ? e.grad : stable_->grad(in);
 }
@@ -207,7 +209,7 @@ double FilteredSegmentKernel::f_and_grad(const SegmentInput<double>& in, std::ar
                                          double tolerance, bool* accepted) const {
   FastEvaluation e;
   const bool ok = evaluate_fast(in, 2, e) && filter_accepts(std::abs(e.f), e.f_bound, tolerance) &&
-                  filter_accepts_gradient(e.grad, e.grad_bound, tolerance);
+                  filter_accepts_gradient(e.grad, e.grad_bounds, tolerance);
   if (accepted) *accepted = ok;
   if (!ok) return stable_->f_and_grad(in, grad);
   grad = e.grad;

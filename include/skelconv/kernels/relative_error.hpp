@@ -32,7 +32,7 @@
 //   √x      ρ = 0.586 ρ_x + 1   (ρ_x u ≤ 1/2: |√(1+θ) − 1| ≤ |θ|/(1 + √(1/2)))
 //   log x   ρ = 2 ρ_x / |r̂| + L   (ρ_x u ≤ 1/2: |log(1+θ)| ≤ 2|θ|)
 //   asinh x ρ = A_x / |r̂| + L      (|asinh'| ≤ 1)
-//   atan2   ρ = (π/2)(A_x + A_y)/(h − (A_x + A_y)u)/|r̂| + L, h = hypot(x̂, ŷ),
+//   atan2   ρ = (π/2)(A_x + A_y)/(h − (A_x + A_y)u)/|r̂| + L, h = max(|x̂|, |ŷ|),
 //           ∞ within the error of the branch cut
 //   min, max: A = max(A_x, A_y)                     (1-Lipschitz)
 //
@@ -49,6 +49,7 @@
 // checks the bound against binary128 references.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -137,7 +138,8 @@ struct RelativeError {
   friend RelativeError atan2(const RelativeError& y, const RelativeError& x) {
     const T r = std::atan2(y.value, x.value);
     if (x.exact && y.exact) return relative(r, kLibm);
-    const T radius = std::hypot(x.value, y.value);
+    // max(|x̂|, |ŷ|) ≤ hypot(x̂, ŷ): a lower bound of the radius, no libm call.
+    const T radius = std::max(std::abs(x.value), std::abs(y.value));
     const T propagated = abs_of(x) + abs_of(y);
     const T shift = propagated * u;
     // Within `shift` of the cut (negative x axis) the angle may jump by 2π.

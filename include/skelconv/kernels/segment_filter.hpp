@@ -13,10 +13,9 @@
 //     bound ≤ tolerance · (|value| − bound)
 //
 // (so the relative error against the exact value is ≤ tolerance; for ∇f,
-// the sum of the components' bounds, which bounds the Euclidean norm of the
-// error, against the largest |∂f/∂x_i|, a lower bound of |∇f|: no square
-// root, the same conclusion). Elsewhere it returns the stable form. verify/filter_check.cpp checks the bound against float128
-// references.
+// Euclidean norms: the error vector's is at most that of the components'
+// bounds). Elsewhere it returns the stable form. verify/filter_check.cpp
+// checks the bound against binary128 references.
 #pragma once
 
 #include <algorithm>
@@ -39,12 +38,13 @@ struct FastFormWrappers;  // src/kernels/segment_filter.cpp
 /// accepted fast value is as good as the stable forms are required to be.
 inline constexpr double kDefaultFilterTolerance = 1e-13;
 
-/// What the fast form gave, with its error bounds (absolute; the gradient's
-/// is the sum of its components' bounds, ≥ the Euclidean norm of its error).
+/// What the fast form gave, with its error bounds (absolute, per component
+/// for ∇f).
 struct FastEvaluation {
   double f = 0, f_bound = 0;
-  std::array<double, 3> grad{};
-  double grad_bound = 0;
+  std::array<double, 3> grad{}, grad_bounds{};
+  /// A bound on the Euclidean norm of ∇f's error vector.
+  double grad_bound() const { return std::hypot(grad_bounds[0], grad_bounds[1], grad_bounds[2]); }
 };
 
 /// Whether a fast value of size `magnitude` with error bound `bound` passes
@@ -53,11 +53,23 @@ inline bool filter_accepts(double magnitude, double bound, double tolerance) {
   return magnitude < std::numeric_limits<double>::infinity() && bound <= tolerance * (magnitude - bound);
 }
 
-/// The same for a gradient whose error has Euclidean norm ≤ `bound`: against
-/// max_i |g_i| ≤ |g|, so that acceptance implies bound ≤ tolerance · (|g| − bound).
-inline bool filter_accepts_gradient(const std::array<double, 3>& g, double bound, double tolerance) {
+/// The same for a gradient `g` with component bounds `b`, in Euclidean
+/// norms: bound ≤ tolerance (|g| − bound) ⟺ |b|² (1 + tolerance)² ≤
+/// tolerance² |g|², compared without square roots where the squares can
+/// neither overflow nor underflow to the scale of the comparison (|g| in
+/// [1e−100, 1e100]: an underflowing b_i² is then below 1e−226, far under
+/// tolerance² |g|²); elsewhere with hypot. The rounding of the sums of
+/// squares (relative ≤ 3u) is inside the bounds' own safety margin
+/// (relative_error.hpp).
+inline bool filter_accepts_gradient(const std::array<double, 3>& g, const std::array<double, 3>& b,
+                                    double tolerance) {
   const double largest = std::max({std::abs(g[0]), std::abs(g[1]), std::abs(g[2])});
-  return filter_accepts(largest, bound, tolerance);
+  if (!(largest >= 1e-100 && largest <= 1e100))
+    return filter_accepts(std::hypot(g[0], g[1], g[2]), std::hypot(b[0], b[1], b[2]), tolerance);
+  const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+  const double b2 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+  const double scale = 1 + tolerance;
+  return b2 * (scale * scale) <= tolerance * tolerance * g2;
 }
 
 /// One generated segment kernel with its filter.
