@@ -18,8 +18,9 @@
 // the expression graph, a static filter's constants. What is left at run
 // time is the dynamic part: at each sum the operands' absolute errors
 // (A_x + A_y + |r̂|: the sum's condition number times its relative error),
-// and at each product of a sum's result the division A/|x̂| that turns the
-// cancellation into a relative error. The filter's wrappers are flattened
+// carried through the products of a sum's result, and at each quotient or
+// root of one the division A/|x̂| that turns the cancellation into a
+// relative error. The filter's wrappers are flattened
 // (src/kernels/segment_filter.cpp) so that the folding sees the exact
 // inputs.
 //
@@ -27,7 +28,9 @@
 // 1/(1 − u) of passing from exact to computed results left to kBoundSafety:
 //
 //   x ± y   A = A_x + A_y + |r̂|                  (ρ = 1 if both exact)
-//   x · y   ρ = ρ_x + ρ_y + ρ_x ρ_y u + 1          (|x̂ŷ − xy| ≤ |x̂ŷ|(ε_x + ε_y + ε_x ε_y))
+//   x · y   ρ = ρ_x + ρ_y + ρ_x ρ_y u + 1          (|x̂ŷ − xy| ≤ |x̂ŷ|(ε_x + ε_y + ε_x ε_y)),
+//           or, where an operand is a sum's result,
+//           A = |x̂| A_y + |ŷ| A_x + A_x A_y u + |r̂| (x̂ŷ − xy = x̂ d_y + ŷ d_x − d_x d_y)
 //   x / y   ρ = (ρ_x + ρ_y)(1 + 2 ρ_y u) + 1        (ρ_y u ≤ 1/2: 1/(1 − ε) ≤ 1 + 2ε)
 //   √x      ρ = 0.586 ρ_x + 1   (ρ_x u ≤ 1/2: |√(1+θ) − 1| ≤ |θ|/(1 + √(1/2)))
 //   log x   ρ = 2 ρ_x / |r̂| + L   (ρ_x u ≤ 1/2: |log(1+θ)| ≤ 2|θ|)
@@ -106,14 +109,23 @@ struct RelativeError {
   friend RelativeError operator+(const RelativeError& x, const RelativeError& y) { return sum(x.value + y.value, x, y); }
   friend RelativeError operator-(const RelativeError& x, const RelativeError& y) { return sum(x.value - y.value, x, y); }
   friend RelativeError operator*(const RelativeError& x, const RelativeError& y) {
+    const T r = x.value * y.value;
+    if (x.absolute_form || y.absolute_form) {
+      // A sum's result: stay absolute rather than divide (see the top).
+      const T ax = abs_of(x), ay = abs_of(y);
+      const T second_order = x.exact || y.exact ? T(0) : ax * ay * u;
+      return absolute(r, std::abs(x.value) * ay + std::abs(y.value) * ax + second_order + std::abs(r));
+    }
     const T rx = rho_of(x), ry = rho_of(y);
     const T second_order = x.exact || y.exact ? T(0) : rx * ry * u;
-    return relative(x.value * y.value, rx + ry + second_order + 1);
+    return relative(r, rx + ry + second_order + 1);
   }
   friend RelativeError operator/(const RelativeError& x, const RelativeError& y) {
     const T r = x.value / y.value;
     if (y.exact) return relative(r, rho_of(x) + 1);
-    const T ry = rho_of(y);
+    // A_y/|ŷ| = A_y |q̂|/|x̂| up to a rounding (kBoundSafety): for a literal
+    // numerator (1/y, the generated code's reciprocals) a product.
+    const T ry = x.exact && y.absolute_form ? y.err * std::abs(r) / std::abs(x.value) : rho_of(y);
     if (!(ry * u <= T(0.5))) return relative(r, inf);
     return relative(r, (rho_of(x) + ry) * (1 + 2 * ry * u) + 1);
   }
