@@ -53,8 +53,8 @@ struct EmittedKernel {
 };
 
 // The fast forms of one kernel (Forms::fast): the shortest formula, no
-// choice of stable form. Instantiated on RunningError<double>
-// (skelconv/kernels/running_error.hpp) they also bound their own rounding,
+// choice of stable form. Instantiated on RelativeError<double>
+// (skelconv/kernels/relative_error.hpp) they also bound their own rounding,
 // and the filter (skelconv/kernels/segment_filter.hpp) falls back to
 // <name>_{f,grad,f_and_grad} where that bound exceeds the tolerance.
 // Returns "" where the generic path calls a helper (no fast form).
@@ -93,18 +93,20 @@ std::string generic_function_text(const SegmentKernelSpec& spec, const EmittedCo
   return os.str();
 }
 
-// generated/segment_fast_table.hpp: the fast forms on RunningError<double>,
-// beside each kernel's stable entry of segment_table.hpp. One translation
-// unit (src/runtime/segment_filter.cpp) includes it.
+// generated/segment_fast_table.hpp: the fast forms on RelativeError<double>,
+// beside each kernel's stable entry of segment_table.hpp, in a constexpr
+// array so that the filter can take each function as a template argument
+// (and flatten it into its wrapper). One translation unit
+// (src/kernels/segment_filter.cpp) includes it.
 std::string fast_table_text(const std::vector<EmittedKernel>& kernels, const GeneratorRequest& request) {
   std::ostringstream t;
   t << file_header("segment_fast_table.hpp",
                    "the fast forms of the segment kernels, for the filter of skelconv/kernels/segment_filter.hpp.",
                    request)
     << "#pragma once\n\n#include <array>\n#include <span>\n\n"
-    << "#include <skelconv/kernels/running_error.hpp>\n\n#include \"generated/segment_table.hpp\"\n\n"
+    << "#include <skelconv/kernels/relative_error.hpp>\n\n#include \"generated/segment_table.hpp\"\n\n"
     << "namespace skelconv::generated {\n\n"
-    << "using FastScalar = RunningError<double>;\n\n"
+    << "using FastScalar = RelativeError<double>;\n\n"
     << "/// One kernel's fast forms (nullptr where it has none: its generic path calls a helper).\n"
     << "struct SegmentFastKernel {\n"
     << "  KernelFamily family;\n  int degree;\n  int weight_degree;\n"
@@ -113,13 +115,12 @@ std::string fast_table_text(const std::vector<EmittedKernel>& kernels, const Gen
     << "  FastScalar (*f_and_grad)(const SegmentInput<FastScalar>&, std::array<FastScalar, 3>&);\n"
     << "  OpCount ops_f, ops_grad, ops_f_and_grad;  ///< on double, without the bound\n};\n\n"
     << "/// Every segment kernel of segment_kernels<double>(), in the same order.\n"
-    << "inline std::span<const SegmentFastKernel> segment_fast_kernels() {\n"
-    << "  static const SegmentFastKernel table[] = {\n";
+    << "inline constexpr SegmentFastKernel segment_fast_kernel_table[] = {\n";
   std::map<KernelFamily, std::string> rows;
   for (const EmittedKernel& k : kernels) {
     const std::string n = k.spec.name() + "_fast";
     std::string& r = rows[k.spec.family];
-    r += "      {KernelFamily::" + std::string(family_name(k.spec.family)) + ", " + std::to_string(k.spec.degree) +
+    r += "    {KernelFamily::" + std::string(family_name(k.spec.family)) + ", " + std::to_string(k.spec.degree) +
          ", " + std::to_string(k.spec.weight_degree) + ", ";
     if (k.fast)
       r += "&" + n + "_f<FastScalar>, &" + n + "_grad<FastScalar>, &" + n + "_f_and_grad<FastScalar>, " +
@@ -129,7 +130,8 @@ std::string fast_table_text(const std::vector<EmittedKernel>& kernels, const Gen
       r += "nullptr, nullptr, nullptr, {}, {}, {}},\n";
   }
   for (const auto& [family, r] : rows) t << r;  // segment_kernels' order: by family
-  t << "  };\n  return table;\n}\n\n}  // namespace skelconv::generated\n";
+  t << "};\n\ninline std::span<const SegmentFastKernel> segment_fast_kernels() { return segment_fast_kernel_table; }\n\n"
+    << "}  // namespace skelconv::generated\n";
   return t.str();
 }
 

@@ -92,7 +92,7 @@ enum class Forms {
                  ///< compiler can vectorise, plus where it is exact
   fast,          ///< the generic alternative of every choice, unconditionally:
                  ///< the shortest formula, for a filter (the scalar type
-                 ///< RunningError bounds its rounding; kernel_writer.cpp)
+                 ///< RelativeError bounds its rounding; kernel_writer.cpp)
 };
 
 class StraightLineProgram {

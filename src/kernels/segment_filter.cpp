@@ -1,19 +1,88 @@
 // The filter of skelconv/kernels/segment_filter.hpp, and the one translation
 // unit that instantiates the fast forms (generated/segment_fast_table.hpp) on
-// RunningError<double>.
+// RelativeError<double> (skelconv/kernels/relative_error.hpp).
 #include "skelconv/kernels/segment_filter.hpp"
 
 #include <cmath>
+#include <iterator>
+#include <limits>
+#include <utility>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#else
+#include <cfenv>
+#endif
 
 #include "generated/segment_fast_table.hpp"
 #include "skelconv/kernels/segment_kernel_tables.hpp"
 
 namespace skelconv {
 
+/// One kernel's fast forms as evaluated by the filter (nullptr: none). ∇f
+/// alone takes f_and_grad: one flattened wrapper fewer per kernel (this
+/// translation unit's compile time), for a few more flops.
+struct FastFormWrappers {
+  void (*f)(const SegmentInput<double>&, FastEvaluation&);
+  void (*f_and_grad)(const SegmentInput<double>&, FastEvaluation&);
+};
+
 namespace {
 
 using generated::FastScalar;
+using generated::segment_fast_kernel_table;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// RelativeError's model, fl(x ∘ y) = (x ∘ y)(1 + δ), holds in round-to-
+// nearest, without flush-to-zero, as long as no operation underflows,
+// overflows, divides by zero or is invalid. The scope evaluates with every
+// exception masked and its flags cleared, says whether those flags stayed
+// clear, and restores the caller's state (flags included).
+#if defined(__SSE2__)
+class FloatingPointScope {
+ public:
+  // MXCSR (Intel SDM vol. 1 §10.2.3): flags IE 0x1, ZE 0x4, OE 0x8, UE 0x10,
+  // PE 0x20 (DE 0x2: a denormal operand, exact, not a failure); masks
+  // 0x1F80; rounding control 0x6000; flush-to-zero 0x8000; DAZ 0x40.
+  static constexpr unsigned kFlags = 0x3F, kFailures = 0x1D, kMasks = 0x1F80, kModes = 0x6000 | 0x8000 | 0x40;
+  FloatingPointScope() : saved_(_mm_getcsr()) { _mm_setcsr((saved_ | kMasks) & ~kFlags); }
+  ~FloatingPointScope() { _mm_setcsr(saved_); }
+  FloatingPointScope(const FloatingPointScope&) = delete;
+  FloatingPointScope& operator=(const FloatingPointScope&) = delete;
+  bool model_held() const { return (saved_ & kModes) == 0 && (_mm_getcsr() & kFailures) == 0; }
+
+ private:
+  unsigned saved_;
+};
+#else
+class FloatingPointScope {
+ public:
+  FloatingPointScope() { std::feholdexcept(&saved_); }
+  ~FloatingPointScope() { std::fesetenv(&saved_); }
+  FloatingPointScope(const FloatingPointScope&) = delete;
+  FloatingPointScope& operator=(const FloatingPointScope&) = delete;
+  bool model_held() const {
+    return std::fegetround() == FE_TONEAREST &&
+           std::fetestexcept(FE_UNDERFLOW | FE_OVERFLOW | FE_DIVBYZERO | FE_INVALID) == 0;
+  }
+
+ private:
+  std::fenv_t saved_;
+};
+#endif
+
+// Compiler barriers: the evaluation reads its inputs after the scope cleared
+// the flags, and has written its results before the scope reads them.
+template <class X>
+void after_flags_cleared(X& x) {
+  asm volatile("" : "+m"(x));
+}
+template <class X>
+void before_flags_read(const X& x) {
+  asm volatile("" : : "m"(x));
+}
 
 SegmentInput<FastScalar> exact_input(const SegmentInput<double>& in) {
   SegmentInput<FastScalar> x;
@@ -32,23 +101,64 @@ SegmentInput<FastScalar> exact_input(const SegmentInput<double>& in) {
   return x;
 }
 
-// hypot: no underflow of the squares (bounds of tiny gradients are tinier).
-double norm(const std::array<double, 3>& v) { return std::hypot(v[0], v[1], v[2]); }
-
 void store_gradient(const std::array<FastScalar, 3>& g, FastEvaluation& out) {
-  std::array<double, 3> bounds{};
   for (int i = 0; i < 3; ++i) {
     out.grad[i] = g[i].value;
-    bounds[i] = g[i].bound();
+    out.grad_bounds[i] = g[i].bound();
   }
-  out.grad_bound = norm(bounds);
 }
+
+// The wrappers of entry I of the generated table. Flattened: the fast form
+// is inlined into its wrapper, where the compiler sees that the inputs are
+// exact and folds the static part of the bound (relative_error.hpp).
+template <std::size_t I>
+[[gnu::flatten]] void fast_f(const SegmentInput<double>& input, FastEvaluation& out) {
+  FloatingPointScope scope;
+  SegmentInput<double> in = input;
+  after_flags_cleared(in);
+  const FastScalar f = segment_fast_kernel_table[I].f(exact_input(in));
+  out.f = f.value;
+  out.f_bound = f.bound();
+  before_flags_read(out);
+  if (!scope.model_held()) out.f_bound = kInfinity;
+}
+
+template <std::size_t I>
+[[gnu::flatten]] void fast_f_and_grad(const SegmentInput<double>& input, FastEvaluation& out) {
+  FloatingPointScope scope;
+  SegmentInput<double> in = input;
+  after_flags_cleared(in);
+  std::array<FastScalar, 3> g;
+  const FastScalar f = segment_fast_kernel_table[I].f_and_grad(exact_input(in), g);
+  out.f = f.value;
+  out.f_bound = f.bound();
+  store_gradient(g, out);
+  before_flags_read(out);
+  if (!scope.model_held()) {
+    out.f_bound = kInfinity;
+    out.grad_bounds.fill(kInfinity);
+  }
+}
+
+template <std::size_t I>
+constexpr FastFormWrappers wrappers_of() {
+  if constexpr (segment_fast_kernel_table[I].f == nullptr) return {nullptr, nullptr};
+  else return {&fast_f<I>, &fast_f_and_grad<I>};
+}
+
+template <std::size_t... I>
+constexpr std::array<FastFormWrappers, sizeof...(I)> all_wrappers(std::index_sequence<I...>) {
+  return {wrappers_of<I>()...};
+}
+
+constexpr std::size_t kKernels = std::size(segment_fast_kernel_table);
+constexpr std::array<FastFormWrappers, kKernels> kWrappers = all_wrappers(std::make_index_sequence<kKernels>{});
 
 std::vector<FilteredSegmentKernel> build_table() {
   const auto stable = generated::segment_kernels<double>();
-  const auto fast = generated::segment_fast_kernels();
   std::vector<FilteredSegmentKernel> table;
-  for (size_t i = 0; i < stable.size(); ++i) table.emplace_back(&stable[i], fast[i].f ? &fast[i] : nullptr);
+  for (size_t i = 0; i < stable.size(); ++i)
+    table.emplace_back(&stable[i], i < kKernels && kWrappers[i].f ? &kWrappers[i] : nullptr);
   return table;
 }
 
@@ -64,20 +174,12 @@ const FilteredSegmentKernel* FilteredSegmentKernel::find(KernelFamily family, in
 
 bool FilteredSegmentKernel::evaluate_fast(const SegmentInput<double>& in, int which, FastEvaluation& out) const {
   if (!fast_) return false;
-  const SegmentInput<FastScalar> x = exact_input(in);
   out = {};
   if (which == 0) {
-    const FastScalar f = fast_->f(x);
-    out.f = f.value;
-    out.f_bound = f.bound();
-  } else if (which == 1) {
-    store_gradient(fast_->grad(x), out);
+    fast_->f(in, out);
   } else {
-    std::array<FastScalar, 3> g;
-    const FastScalar f = fast_->f_and_grad(x, g);
-    out.f = f.value;
-    out.f_bound = f.bound();
-    store_gradient(g, out);
+    fast_->f_and_grad(in, out);
+    if (which == 1) out.f = out.f_bound = 0;
   }
   return true;
 }
@@ -92,7 +194,7 @@ double FilteredSegmentKernel::f(const SegmentInput<double>& in, double tolerance
 std::array<double, 3> FilteredSegmentKernel::grad(const SegmentInput<double>& in, double tolerance,
                                                   bool* accepted) const {
   FastEvaluation e;
-  const bool ok = evaluate_fast(in, 1, e) && filter_accepts(norm(e.grad), e.grad_bound, tolerance);
+  const bool ok = evaluate_fast(in, 1, e) && filter_accepts_gradient(e.grad, e.grad_bounds, tolerance);
   if (accepted) *accepted = ok;
   return ok ? e.grad : stable_->grad(in);
 }
@@ -101,7 +203,7 @@ double FilteredSegmentKernel::f_and_grad(const SegmentInput<double>& in, std::ar
                                          double tolerance, bool* accepted) const {
   FastEvaluation e;
   const bool ok = evaluate_fast(in, 2, e) && filter_accepts(std::abs(e.f), e.f_bound, tolerance) &&
-                  filter_accepts(norm(e.grad), e.grad_bound, tolerance);
+                  filter_accepts_gradient(e.grad, e.grad_bounds, tolerance);
   if (accepted) *accepted = ok;
   if (!ok) return stable_->f_and_grad(in, grad);
   grad = e.grad;
