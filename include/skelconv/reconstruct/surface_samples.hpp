@@ -1,0 +1,45 @@
+// skelconv/reconstruct/surface_samples.hpp — the points the medial graph is
+// built from: the mesh's vertices, plus points spread over the triangles
+// where the mesh is coarse, so that any closed mesh (a cube of 8 vertices,
+// a CAD part with large flat faces) is sampled densely enough for its
+// Voronoi vertices to approximate the medial axis (docs/reconstruction.md,
+// "Samples").
+//
+// Deterministic, no random numbers: every edge longer than the spacing h
+// gets ⌈length / h⌉ − 1 evenly spaced points (once per edge, so that the two
+// triangles sharing it agree), and every triangle whose longest edge exceeds
+// h gets the interior points of the barycentric grid of n = ⌈longest / h⌉
+// steps (points (i, j, k)/n with i, j, k ≥ 1). The grid's points are spread
+// evenly over the triangle, so their number follows its area: the samples
+// are area-weighted where the mesh is coarse.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "skelconv/mesh/triangle_mesh.hpp"
+
+namespace skelconv::reconstruct {
+
+struct SamplingOptions {
+  /// h is at most this × the median edge length: a mesh that is uniform
+  /// within this ratio gets no extra point (the meshes `skelconv mesh`
+  /// writes have longest / median edge below 1.7).
+  double median_edge_factor = 2.0;
+  /// h is at most the bounding-box diagonal / this: a mesh of a few large
+  /// triangles gets about this many samples along its diagonal. 16 keeps
+  /// the test meshes of docs/reconstruction_results.md as they are
+  /// (diagonal / median edge 23–56).
+  double diagonal_divisions = 16.0;
+  /// At most this many samples in all: h grows (doubling) until the count
+  /// fits, so that a fine mesh with a few huge faces stays tractable for
+  /// the 3-D Delaunay triangulation.
+  std::size_t max_samples = 200000;
+};
+
+/// The vertices of `mesh` (first, in order, so that vertex i is sample i)
+/// followed by the added surface points. Triangles with a repeated index
+/// are skipped.
+std::vector<Vec3> surface_samples(const TriangleMesh& mesh, const SamplingOptions& options = {});
+
+}  // namespace skelconv::reconstruct
