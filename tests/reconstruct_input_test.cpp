@@ -41,15 +41,15 @@ void add_tetrahedron(TriangleMesh& m, const Vec3& at, double s, std::int32_t cor
   }
 }
 
-// The cube: diagonal √3, edges 12 × 1 and 6 × √2 (median 1), so the
-// spacing is h = min(2 × 1, √3/16) = 0.10825. A unit edge gets ⌈1/h⌉ − 1 =
-// 9 points, a face diagonal ⌈√2/h⌉ − 1 = 13, each triangle (longest edge
-// √2, n = 14) (13 × 12)/2 = 78 interior points: 8 + 12 × 9 + 6 × 13 + 12 ×
-// 78 = 1130 samples, every one on the cube's surface.
+// The cube: diagonal √3, edges 12 × 1 and 6 × √2, spacing h = √3/12 =
+// 0.14434. A unit edge gets ⌈1/h⌉ − 1 = 6 points, a face diagonal ⌈√2/h⌉ −
+// 1 = 9, each triangle (longest edge √2, n = 10) (9 × 8)/2 = 36 interior
+// points: 8 + 12 × 6 + 6 × 9 + 12 × 36 = 566 samples, every one on the
+// cube's surface.
 TEST(SurfaceSamples, CubeIsSampledOnItsFaces) {
   const TriangleMesh cube = unit_cube();
   const std::vector<Vec3> samples = surface_samples(cube);
-  ASSERT_EQ(samples.size(), 1130u);
+  ASSERT_EQ(samples.size(), 566u);
   for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(samples[k], cube.vertices[k]);
   for (const Vec3& p : samples) {
     EXPECT_TRUE(p.minCoeff() >= -1e-15 && p.maxCoeff() <= 1 + 1e-15);
@@ -58,18 +58,17 @@ TEST(SurfaceSamples, CubeIsSampledOnItsFaces) {
   }
 }
 
-// With diagonal_divisions = 1 the spacing is min(2 × 1, √3) = √3, longer
-// than every edge of the cube: nothing is added.
+// With diagonal_divisions = 1 the spacing is √3, longer than every edge
+// of the cube: nothing is added.
 TEST(SurfaceSamples, FineEnoughMeshKeepsItsVertices) {
   SamplingOptions coarse;
   coarse.diagonal_divisions = 1.0;
   EXPECT_EQ(surface_samples(unit_cube(), coarse).size(), 8u);
 }
 
-// The meshes `skelconv mesh` writes are uniform enough (longest edge below
-// 2 × the median, below diagonal / 16) to be sampled by their vertices
-// alone, as before surface samples existed: the measured tables of
-// docs/reconstruction_results.md stand.
+// The test shapes (`skelconv mesh`, edges below diagonal / 12) are sampled
+// by their vertices alone, as before surface samples existed: the
+// measured tables of docs/reconstruction_results.md stand.
 TEST(SurfaceSamples, TestShapesKeepTheirVertices) {
   for (const char* name : {"segment.ply", "tripod.ply", "torus.ply", "sphere.ply"}) {
     const TriangleMesh m = read_mesh(std::string(SKELCONV_TEST_DATA) + "/reconstruct/" + name);

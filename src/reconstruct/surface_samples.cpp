@@ -50,15 +50,12 @@ std::size_t added_count(const TriangleMesh& mesh, const std::vector<Edge>& edges
   return count;
 }
 
-/// The spacing h (SamplingOptions): the smaller of the two bounds, then
-/// doubled until the samples fit the budget.
+/// The spacing h (SamplingOptions): diagonal / divisions, doubled until
+/// the samples fit the budget.
 double spacing(const TriangleMesh& mesh, const std::vector<Edge>& edges, const SamplingOptions& o) {
-  std::vector<double> lengths;
-  for (const Edge& e : edges) lengths.push_back(length(mesh, e));
-  std::nth_element(lengths.begin(), lengths.begin() + std::ptrdiff_t(lengths.size() / 2), lengths.end());
   Vec3 lo = mesh.vertices.front(), hi = lo;
   for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  double h = std::min(o.median_edge_factor * lengths[lengths.size() / 2], (hi - lo).norm() / o.diagonal_divisions);
+  double h = (hi - lo).norm() / o.diagonal_divisions;
   if (!(h > 0.0)) return INFINITY;  // every point in one place: nothing to spread
   while (mesh.vertices.size() + added_count(mesh, edges, h) > o.max_samples) h *= 2.0;
   return h;
