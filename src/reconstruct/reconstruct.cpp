@@ -212,8 +212,8 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
   result.stages.back().seconds = clock.lap();
   say(o, fmt::format("fitted: last round changed radii by {:.2g} (relative), end extensions by {:.2g}",
                      result.fit.largest_radius_change, result.fit.largest_tip_change));
-  // A curve skeleton can be worse than one ball: the diagonal a cube's
-  // level sets follow from its centre to a corner is no skeleton of it.
+  // A curve skeleton can be worse than one ball: a cube's medial axis is
+  // made of sheets, and the branches its level sets give are no skeleton of it.
   // Both are compared on the same area-weighted points (first-order
   // distances, cheap); the better one is the result.
   const double diagonal = bounding_diagonal(surface.vertices);
