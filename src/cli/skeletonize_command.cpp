@@ -1,6 +1,7 @@
 // Implementation of skeletonize_command.hpp.
 #include "skeletonize_command.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -10,6 +11,7 @@
 #include "text_output.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/mesh_reader.hpp"
+#include "skelconv/mesh/mesh_topology.hpp"
 #include "skelconv/reconstruct/mesh_check.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/sample_noise.hpp"
@@ -17,7 +19,8 @@
 namespace skelconv::cli {
 namespace {
 
-std::string summary(const reconstruct::Reconstruction& r, const std::string& output) {
+std::string summary(const reconstruct::Reconstruction& r, const std::string& output,
+                    const reconstruct::ReconstructOptions& options) {
   std::string text = fmt::format("output: {}\nsamples: {}\nmedial_vertices: {}\npruned_vertices: {}\n"
                                  "pruned_branches: {}\nspurs_removed: {}\n",
                                  output, r.samples, r.medial_vertices, r.pruning.vertices_removed,
@@ -26,26 +29,47 @@ std::string summary(const reconstruct::Reconstruction& r, const std::string& out
     text += fmt::format("stage {}: branches {}, ends {}, junctions {}, points {}\n", s.name, s.branches.size(),
                         s.ends, s.junctions, s.points);
   }
-  return text;
+  const reconstruct::PrimitiveCounts n = reconstruct::primitive_counts(r.stages.back(), options);
+  return text + fmt::format("result: {} ({} scalis_segment, {} scalis_triangle, {} point)\n", r.stages.back().name,
+                            n.segments, n.triangles, n.points);
+}
+
+/// One stage's entry of the report: counts, distances and Euler
+/// characteristic of its meshed surface, times.
+std::string stage_report(const reconstruct::Stage& s, const TriangleMesh& input,
+                         const reconstruct::ReconstructOptions& options,
+                         const std::function<void(std::string_view)>& progress, bool measure) {
+  const reconstruct::PrimitiveCounts n = reconstruct::primitive_counts(s, options);
+  std::string text = fmt::format("{{\"name\": \"{}\", \"branches\": {}, \"ends\": {}, \"junctions\": {}, \"points\": {}, "
+                                 "\"primitives\": {{\"scalis_segment\": {}, \"scalis_triangle\": {}, \"point\": {}}}, "
+                                 "\"seconds\": {:.3g}",
+                                 s.name, s.branches.size(), s.ends, s.junctions, s.points, n.segments, n.triangles,
+                                 n.points, s.seconds);
+  if (!measure) return text + "}";
+  const auto start = std::chrono::steady_clock::now();
+  TriangleMesh mesh;
+  const reconstruct::SurfaceDistance d = reconstruct::measure_stage(input, s, options, 0.0, &mesh);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const long long euler = mesh_topology(mesh).euler_characteristic;
+  if (progress) progress(fmt::format("measured {}: Hausdorff {:.4g}, RMS {:.4g} of the diagonal, Euler characteristic {}",
+                                     s.name, d.hausdorff / d.diagonal, d.rms / d.diagonal, euler));
+  return text + fmt::format(", \"hausdorff\": {:.6g}, \"rms\": {:.6g}, \"diagonal\": {:.17g}, \"euler_characteristic\": {}, "
+                            "\"measure_seconds\": {:.3g}}}",
+                            d.hausdorff / d.diagonal, d.rms / d.diagonal, d.diagonal, euler, seconds);
 }
 
 std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh& input,
                         const reconstruct::ReconstructOptions& options,
-                        const std::function<void(std::string_view)>& progress) {
+                        const std::function<void(std::string_view)>& progress, bool result_only) {
   std::string text = fmt::format("{{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
-                                 "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, \"stages\": [",
+                                 "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, "
+                                 "\"input_euler_characteristic\": {}, \"medial_seconds\": {:.3g}, \"result\": \"{}\", \"stages\": [",
                                  r.samples, r.medial_vertices, r.pruning.vertices_removed,
-                                 r.pruning.branches_removed, r.spurs_removed, r.tolerance);
-  for (std::size_t k = 0; k < r.stages.size(); ++k) {
-    const auto& s = r.stages[k];
-    const reconstruct::SurfaceDistance d = reconstruct::measure_stage(input, s, options);
-    if (progress) progress(fmt::format("measured {}: Hausdorff {:.4g}, RMS {:.4g} of the diagonal", s.name,
-                                       d.hausdorff / d.diagonal, d.rms / d.diagonal));
-    text += fmt::format("{}\n  {{\"name\": \"{}\", \"branches\": {}, \"ends\": {}, \"junctions\": {}, \"points\": {}, "
-                        "\"hausdorff\": {:.6g}, \"rms\": {:.6g}, \"diagonal\": {:.17g}}}",
-                        k == 0 ? "" : ",", s.name, s.branches.size(), s.ends, s.junctions, s.points,
-                        d.hausdorff / d.diagonal, d.rms / d.diagonal, d.diagonal);
-  }
+                                 r.pruning.branches_removed, r.spurs_removed, r.tolerance,
+                                 mesh_topology(input).euler_characteristic, r.medial_seconds, r.stages.back().name);
+  for (std::size_t k = 0; k < r.stages.size(); ++k)
+    text += (k == 0 ? "\n  " : ",\n  ") +
+            stage_report(r.stages[k], input, options, progress, !result_only || k + 1 == r.stages.size());
   return text + "]}\n";
 }
 
@@ -61,7 +85,12 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "
                       "(default 0; about 4 × the noise amplitude for noisy samples)");
   command->add_option("--epsilon", options.epsilon, "Pavlidis tolerance × skeleton size (default 0.02)");
-  command->add_option("--report", options.report_path, "Also mesh every stage and write distances (JSON)");
+  command->add_option("--report", options.report_path, "Also mesh every stage and write its primitive counts, two-sided Hausdorff and RMS distances to the input, Euler characteristics and times (JSON)");
+  command->add_option_function<std::string>(
+               "--report-stages", [&options](const std::string& which) { options.report_result_only = which == "result"; },
+               "all (default): mesh and measure every stage; result: the result stage only (the others keep their "
+               "counts and times)")
+      ->check(CLI::IsMember({"all", "result"}));
   command->add_flag("--bezier-junctions", options.bezier_junctions,
                     "Join three branches by a cubic Bézier triangle (Ferley §2.4) of SCALIS triangles");
   command->add_option("--noise", options.noise,
@@ -102,10 +131,10 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     }();
     const std::string skeleton = reconstruct::skeleton_file_text(r.stages.back(), ro);
     std::string report;
-    if (options.report_path) report = report_json(r, input, ro, ro.progress);
+    if (options.report_path) report = report_json(r, input, ro, ro.progress, options.report_result_only);
     write_text_atomically(skeleton, options.output_path);
     if (options.report_path) write_text_atomically(report, *options.report_path);
-    return summary(r, options.output_path);
+    return summary(r, options.output_path, ro);
   });
 }
 

@@ -1,12 +1,15 @@
 // src/cli/skeletonize_command.hpp — `skelconv skeletonize INPUT.ply|.obj -o
-// SKELETON.json [--prune-angle deg] [--epsilon e] [--report REPORT.json]`.
+// SKELETON.json [--prune-angle deg] [--epsilon e] [--report REPORT.json
+// [--report-stages all|result]]`.
 //
 // Reads a closed mesh (mesh_reader.hpp), reconstructs its skeleton
 // (reconstruct/reconstruct.hpp: medial graph, pruning, branches, Pavlidis,
 // B-splines) and writes a skelconv skeleton file of SCALIS segments whose
 // surface f = iso approximates the input. Progress lines go to stderr (not
-// with --quiet); a summary (counts per stage) to stdout. --report also meshes
-// every stage and writes the per-stage distances to the input as JSON.
+// with --quiet); a summary (counts per stage, the result's primitives) to
+// stdout. --report also meshes every stage (or the result only) and writes
+// per stage the primitive counts, distances to the input, Euler
+// characteristic and times as JSON.
 // Errors: one "skelconv: error: ..." line, exit 2, nothing written.
 #pragma once
 
@@ -21,6 +24,7 @@ struct SkeletonizeOptions {
   std::string input_path;
   std::string output_path;
   std::optional<std::string> report_path;
+  bool report_result_only = false;  ///< --report-stages result: mesh and measure the result stage only
   double prune_angle = 90.0;
   double prune_span = 0.0;  ///< × the diagonal (ReconstructOptions::prune_span)
   double epsilon = 0.02;

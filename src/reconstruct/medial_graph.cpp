@@ -13,6 +13,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
+#include "skelconv/reconstruct/surface_samples.hpp"
 #include "cgal_surface.hpp"
 
 namespace skelconv::reconstruct {
@@ -25,11 +26,11 @@ using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::int32_t, Ker
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
 
-void check_surface(const TriangleMesh& surface, std::size_t minimum_samples) {
+void check_surface(const TriangleMesh& surface, const std::vector<Vec3>& samples, std::size_t minimum_samples) {
   std::set<std::array<double, 3>> distinct;
-  for (const Vec3& v : surface.vertices) distinct.insert({v.x(), v.y(), v.z()});
+  for (const Vec3& v : samples) distinct.insert({v.x(), v.y(), v.z()});
   if (distinct.size() < minimum_samples) {
-    throw InputError(fmt::format("{} distinct points; a skeleton needs at least {}", distinct.size(), minimum_samples));
+    throw InputError(fmt::format("{} distinct surface samples; a skeleton needs at least {} (is the mesh degenerate?)", distinct.size(), minimum_samples));
   }
   if (surface.triangles.empty()) {
     throw InputError("the mesh has no faces: the inside of the shape is needed (give a closed mesh)");
@@ -42,15 +43,15 @@ void check_surface(const TriangleMesh& surface, std::size_t minimum_samples) {
 }  // namespace
 
 MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples) {
-  check_surface(surface, minimum_samples);
+  MedialGraph graph;
+  graph.samples = surface_samples(surface);
+  check_surface(surface, graph.samples, minimum_samples);
   const SurfaceMesh mesh = cgal::to_surface_mesh(surface);
   const CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel> side(mesh);
 
-  MedialGraph graph;
-  graph.samples = surface.vertices;
   std::vector<std::pair<Point, std::int32_t>> points;
-  for (std::size_t k = 0; k < surface.vertices.size(); ++k) {
-    const Vec3& v = surface.vertices[k];
+  for (std::size_t k = 0; k < graph.samples.size(); ++k) {
+    const Vec3& v = graph.samples[k];
     points.emplace_back(Point(v.x(), v.y(), v.z()), std::int32_t(k));
   }
   const Delaunay delaunay(points.begin(), points.end());
@@ -65,7 +66,7 @@ MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_sample
     MedialVertex vertex;
     vertex.centre = Vec3(centre.x(), centre.y(), centre.z());
     for (int k = 0; k < 4; ++k) vertex.samples[k] = cell->vertex(k)->info();
-    vertex.radius = (vertex.centre - surface.vertices[vertex.samples[0]]).norm();
+    vertex.radius = (vertex.centre - graph.samples[std::size_t(vertex.samples[0])]).norm();
     number.emplace(cell, std::int32_t(graph.vertices.size()));
     inner_cells.push_back(cell);
     graph.vertices.push_back(vertex);

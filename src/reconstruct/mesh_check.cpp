@@ -1,5 +1,6 @@
 // Implementation of skelconv/reconstruct/mesh_check.hpp: plain edge counting
-// (no CGAL) so that the check costs O(n log n) and compiles fast.
+// (no CGAL) so that the check costs O(n log n) and compiles fast; the
+// self-intersection test, which needs CGAL, is in self_intersection.cpp.
 #include "skelconv/reconstruct/mesh_check.hpp"
 
 #include <algorithm>
@@ -91,6 +92,7 @@ void check_closed_mesh(const TriangleMesh& mesh) {
     throw InputError(fmt::format("the mesh has {} inward-facing part(s), i.e. cavities inside the solid; cavities "
                                  "are not supported",
                                  negative));
+  check_no_self_intersection(mesh);
 }
 
 }  // namespace skelconv::reconstruct

@@ -2,13 +2,16 @@
 #include "skelconv/reconstruct/reconstruct.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
+#include "skelconv/reconstruct/ball_fit.hpp"
 #include "skelconv/reconstruct/bspline.hpp"
 #include "skelconv/reconstruct/medial_graph.hpp"
 #include "skelconv/reconstruct/pavlidis.hpp"
@@ -29,7 +32,7 @@ void check_options(const ReconstructOptions& o) {
 }
 
 Stage make_stage(std::string name, const BranchGraph& graph) {
-  Stage stage{std::move(name), graph.branches, {}, graph.ends, graph.junctions, 0};
+  Stage stage{std::move(name), graph.branches, {}, {}, graph.ends, graph.junctions, 0, 0.0};
   for (const Branch& b : stage.branches) stage.points += b.points.size();
   return stage;
 }
@@ -55,7 +58,8 @@ double skeleton_size(const Stage& stage) {
 
 /// The curve skeleton and branches of `graph` (after optional spur removal).
 Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::string name, std::size_t* spurs) {
-  if (graph.vertices.empty()) throw InputError("no inner Voronoi vertex is left: the shape has no skeleton (too few samples, or the prune angle too large)");
+  // No inner ball left (pruned away): no branch; reconstruct() falls back to a ball.
+  if (graph.vertices.empty()) return Stage{std::move(name), {}, {}, {}, 0, 0, 0, 0.0};
   std::vector<double> radii;
   for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
@@ -112,60 +116,141 @@ void say(const ReconstructOptions& o, const std::string& line) {
   if (o.progress) o.progress(line);
 }
 
+/// Wall-clock seconds since the last lap (or construction).
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+/// The `ball` stage: one point primitive per connected component of the
+/// surface, its least-squares sphere (ball_fit.hpp), on area-weighted
+/// points about 1/32 of the diagonal apart.
+Stage ball_stage(const TriangleMesh& surface) {
+  Stage stage;
+  stage.name = "ball";
+  stage.balls = fit_component_spheres(surface, bounding_diagonal(surface.vertices) / 32);
+  stage.points = stage.balls.size();
+  return stage;
+}
+
+/// The balls of `balls` that hold no point of `stage`'s branches: the
+/// components of the surface the curve skeleton missed (pruning can leave
+/// no branch in a ball-shaped part beside a tube).
+std::vector<Vec4> balls_missed(const Stage& stage, const std::vector<Vec4>& balls) {
+  std::vector<Vec4> missed;
+  for (const Vec4& ball : balls) {
+    bool holds = false;
+    for (const Branch& b : stage.branches)
+      for (const Vec4& p : b.points) holds = holds || (p.head<3>() - ball.head<3>()).norm() < ball.w();
+    if (!holds) missed.push_back(ball);
+  }
+  return missed;
+}
+
 }  // namespace
 
 Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& o) {
   check_options(o);
   Reconstruction result;
+  Stopwatch clock;
   MedialGraph graph = medial_graph(surface);
   result.samples = graph.samples.size();
   result.medial_vertices = graph.vertices.size();
   result.medial_edges = graph.edges.size();
+  result.medial_seconds = clock.lap();
   say(o, fmt::format("medial graph: {} samples, {} inner Voronoi vertices, {} edges", result.samples,
                      result.medial_vertices, result.medial_edges));
   result.stages.push_back(branches_of(graph, o, "raw", nullptr));
+  result.stages.back().seconds = clock.lap();
   result.pruning = prune_medial_graph(graph, o.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
                                      o.prune_span * bounding_diagonal(graph.samples));
   say(o, fmt::format("pruned: {} vertices ({} pieces) below the angle, {} small islands removed", result.pruning.vertices_removed,
                      result.pruning.branches_removed, result.pruning.small_pieces_removed));
   result.stages.push_back(branches_of(graph, o, "pruned", &result.spurs_removed));
   result.stages.back().branches = trim_caps(result.stages.back().branches, o.cap_slope);
+  result.stages.back().seconds = clock.lap();
   const Stage pruned = result.stages.back();  // a copy: stages grows below
   say(o, fmt::format("branches: {} ({} ends, {} junctions, {} spurs removed)", pruned.branches.size(), pruned.ends,
                      pruned.junctions, result.spurs_removed));
+  if (primitive_counts(pruned, o).total() == 0) {
+    // No curve skeleton: the shape is a ball or a blob. The stages without
+    // a primitive cannot be meshed, so they go; the ball is the result.
+    std::erase_if(result.stages, [&o](const Stage& s) { return primitive_counts(s, o).total() == 0; });
+    result.stages.push_back(ball_stage(surface));
+    result.stages.back().seconds = clock.lap();
+    const Vec4& ball = result.stages.back().balls.front();
+    say(o, fmt::format("no branch left: {} point primitive(s), the least-squares sphere of each part; the first at "
+                       "({:.4g}, {:.4g}, {:.4g}), radius {:.4g}", result.stages.back().balls.size(), ball.x(), ball.y(),
+                       ball.z(), ball.w()));
+    return result;
+  }
   result.tolerance = o.epsilon * skeleton_size(pruned);
   const double tolerance = result.tolerance;
   result.stages.push_back(transformed(pruned, "simplified", [tolerance](const std::vector<Vec4>& p) {
     return pavlidis_split(p, tolerance, PavlidisDimension::space_and_radius);
   }));
+  result.stages.back().seconds = clock.lap();
   result.stages.push_back(transformed(pruned, "simplified_3d", [tolerance](const std::vector<Vec4>& p) {
     return pavlidis_split(p, tolerance, PavlidisDimension::space);
   }));
+  result.stages.back().seconds = clock.lap();
   const int samples = o.samples_per_span;
   const Stage simplified = result.stages[2];
   result.stages.push_back(smoothed_stage(simplified, samples));
+  result.stages.back().seconds = clock.lap();
   say(o, fmt::format("simplified: {} points (3-D only: {}), smoothed: {} points", result.stages[2].points,
                      result.stages[3].points, result.stages[4].points));
   result.stages.push_back(fitted_stage(result.stages[4], surface, o, &result.fit));
+  result.stages.back().seconds = clock.lap();
   say(o, fmt::format("fitted: last round changed radii by {:.2g} (relative), end extensions by {:.2g}",
                      result.fit.largest_radius_change, result.fit.largest_tip_change));
+  // A curve skeleton can be worse than one ball: a cube's medial axis is
+  // made of sheets, and the branches its level sets give are no skeleton of it.
+  // Both are compared on the same area-weighted points (first-order
+  // distances, cheap); the better one is the result.
+  const double diagonal = bounding_diagonal(surface.vertices);
+  const std::vector<WeightedPoint> points = area_weighted_points(surface, diagonal / 32);
+  Stage ball = ball_stage(surface);
+  result.stages.back().balls = balls_missed(result.stages.back(), ball.balls);
+  result.stages.back().points += result.stages.back().balls.size();
+  if (!result.stages.back().balls.empty())
+    say(o, fmt::format("{} part(s) of the surface hold no branch: one point primitive each", result.stages.back().balls.size()));
+  const double curve_error = first_order_rms(parse_skeleton_json(skeleton_file_text(result.stages.back(), o)), points, diagonal);
+  const double ball_error = first_order_rms(parse_skeleton_json(skeleton_file_text(ball, o)), points, diagonal);
+  if (ball_error < curve_error) {
+    say(o, fmt::format("one ball fits better than the branches (first-order RMS {:.3g} against {:.3g} of the "
+                       "diagonal): the result is the ball", ball_error / diagonal, curve_error / diagonal));
+    result.stages.push_back(std::move(ball));
+    result.stages.back().seconds = clock.lap();
+  }
   return result;
 }
 
-std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) {
-  std::string text = "{\"iso\": 1, \"primitives\": [\n  {\"blend\": \"sum\", \"children\": [";
+namespace {
+
+/// The children of a stage's sum blend, one JSON object each, counted by kind.
+std::vector<std::string> blend_children(const Stage& stage, const ReconstructOptions& o, PrimitiveCounts* counts) {
+  std::vector<std::string> children;
+  PrimitiveCounts n;
   const std::string kernel = fmt::format(R"("kernel": {{"family": "cauchy", "degree": {}, "sigma": {:.17g}}})",
                                          o.kernel_degree, o.kernel_sigma);
-  bool first = true;
   for (const Branch& b : extend_free_ends(stage.branches, o.end_extension)) {
     for (std::size_t k = 1; k < b.points.size(); ++k) {
       const Vec4& p = b.points[k - 1];
       const Vec4& q = b.points[k];
       if (p.head<3>() == q.head<3>()) continue;  // a repeated point: no segment
-      text += fmt::format("{}\n    {{\"type\": \"scalis_segment\", \"a\": [{:.17g}, {:.17g}, {:.17g}], "
-                          "\"b\": [{:.17g}, {:.17g}, {:.17g}], \"radius\": [{:.17g}, {:.17g}], {}}}",
-                          first ? "" : ",", p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), p.w(), q.w(), kernel);
-      first = false;
+      children.push_back(fmt::format("{{\"type\": \"scalis_segment\", \"a\": [{:.17g}, {:.17g}, {:.17g}], "
+                                     "\"b\": [{:.17g}, {:.17g}, {:.17g}], \"radius\": [{:.17g}, {:.17g}], {}}}",
+                                     p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), p.w(), q.w(), kernel));
+      ++n.segments;
     }
   }
   for (const Facet& f : stage.facets) {
@@ -175,12 +260,38 @@ std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) 
     // facet at a corner can be nearly flat); the margin keeps clear of it.
     if ((b - a).cross(c - a).norm() / 2 < 1e-6 * diameter * diameter) continue;
     const double radius = (f[0].w() + f[1].w() + f[2].w()) / 3;
-    text += fmt::format("{}\n    {{\"type\": \"scalis_triangle\", \"vertices\": [[{:.17g}, {:.17g}, {:.17g}], "
-                        "[{:.17g}, {:.17g}, {:.17g}], [{:.17g}, {:.17g}, {:.17g}]], \"radius\": [{:.17g}, {:.17g}, {:.17g}], {}}}",
-                        first ? "" : ",", a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), radius, radius,
-                        radius, kernel);
-    first = false;
+    children.push_back(fmt::format("{{\"type\": \"scalis_triangle\", \"vertices\": [[{:.17g}, {:.17g}, {:.17g}], "
+                                   "[{:.17g}, {:.17g}, {:.17g}], [{:.17g}, {:.17g}, {:.17g}]], \"radius\": [{:.17g}, {:.17g}, {:.17g}], {}}}",
+                                   a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), radius, radius,
+                                   radius, kernel));
+    ++n.triangles;
   }
+  // A point of Cauchy kernel degree 4 is w (1 + s r²)^−2 (docs/cli_blends.md):
+  // with w = 4 and s = 1/R², f = iso = 1 exactly at r = R, and |∇f| there is
+  // 2/R, the same order as a SCALIS segment's at its surface.
+  for (const Vec4& ball : stage.balls) {
+    children.push_back(fmt::format("{{\"type\": \"point\", \"center\": [{:.17g}, {:.17g}, {:.17g}], "
+                                   "\"kernel\": {{\"family\": \"cauchy\", \"degree\": 4, \"s\": {:.17g}}}, \"weight\": 4}}",
+                                   ball.x(), ball.y(), ball.z(), 1.0 / (ball.w() * ball.w())));
+    ++n.points;
+  }
+  if (counts != nullptr) *counts = n;
+  return children;
+}
+
+}  // namespace
+
+PrimitiveCounts primitive_counts(const Stage& stage, const ReconstructOptions& o) {
+  PrimitiveCounts counts;
+  blend_children(stage, o, &counts);
+  return counts;
+}
+
+std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) {
+  const std::vector<std::string> children = blend_children(stage, o, nullptr);
+  if (children.empty()) throw std::logic_error("skeleton_file_text: the stage " + stage.name + " has no primitive");
+  std::string text = "{\"iso\": 1, \"primitives\": [\n  {\"blend\": \"sum\", \"children\": [";
+  for (std::size_t k = 0; k < children.size(); ++k) text += (k == 0 ? "\n    " : ",\n    ") + children[k];
   return text + "]}]}\n";
 }
 

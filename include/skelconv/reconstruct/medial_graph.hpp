@@ -1,7 +1,8 @@
 // skelconv/reconstruct/medial_graph.hpp — the inner Voronoi graph of surface
 // samples (Ferley 1996 §1.2.2), the raw material of the skeleton.
 //
-// The samples are the vertices of a closed triangle mesh. Their 3-D Delaunay
+// The samples are the vertices of a closed triangle mesh plus points spread
+// over its coarse triangles (surface_samples.hpp). Their 3-D Delaunay
 // triangulation (CGAL Delaunay_triangulation_3, exact predicates) is dual to
 // their Voronoi diagram: each Delaunay tetrahedron ↔ a Voronoi vertex, its
 // circumcentre c, the centre of an empty ball of radius ρ touching four
@@ -49,10 +50,11 @@ struct MedialGraph {
   std::vector<MedialEdge> edges;
 };
 
-/// The inner Voronoi graph of the vertices of `surface`, which must be a
-/// closed triangle mesh (the inside test needs one). Throws InputError if it
-/// has fewer than `minimum_samples` distinct vertices, no triangles, or is not
-/// closed (an edge not shared by exactly two triangles).
+/// The inner Voronoi graph of the surface samples of `surface`
+/// (surface_samples.hpp: its vertices first, so that sample i is vertex i),
+/// which must be a closed triangle mesh (the inside test needs one). Throws
+/// InputError if it has fewer than `minimum_samples` distinct samples, no
+/// triangles, or is not closed (an edge not shared by exactly two triangles).
 MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples = 20);
 
 }  // namespace skelconv::reconstruct

@@ -1,7 +1,8 @@
 // skelconv/reconstruct/mesh_check.hpp — what reconstruction asks of its input
 // mesh, checked before any sampling so that a bad mesh gets one message in
 // the user's terms (docs/reconstruction.md, "Input"): not empty, closed,
-// edge-manifold, consistently and outwardly oriented, without cavities.
+// edge-manifold, consistently and outwardly oriented, without cavities,
+// without self-intersections.
 #pragma once
 
 #include "skelconv/mesh/triangle_mesh.hpp"
@@ -14,8 +15,16 @@ namespace skelconv::reconstruct {
 /// - non-manifold: an edge used by more than two triangles;
 /// - inconsistently oriented: an edge used twice in the same direction;
 /// - inside out: a negative enclosed volume;
-/// - a cavity: a connected component with negative volume inside the others.
+/// - a cavity: a connected component with negative volume inside the others;
+/// - self-intersecting: two triangles cross (check_no_self_intersection).
 /// Degenerate triangles (a repeated index) are ignored, as the samplers do.
 void check_closed_mesh(const TriangleMesh& mesh);
+
+/// Throws InputError naming the first pair of crossing triangles (indices
+/// in `mesh.triangles`) and how many pairs cross: two overlapping spheres
+/// stored as one mesh, a fold. Triangles that only share an edge or a
+/// vertex do not cross (CGAL Polygon_mesh_processing::self_intersections,
+/// exact predicates). Expects the edges checked by check_closed_mesh.
+void check_no_self_intersection(const TriangleMesh& mesh);
 
 }  // namespace skelconv::reconstruct

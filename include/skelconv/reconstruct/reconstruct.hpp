@@ -73,14 +73,27 @@ struct ReconstructOptions {
 
 /// One stage's skeleton: its branches as polylines of (x, y, z, r).
 struct Stage {
-  std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed, fitted
+  std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed, fitted; or ball
   std::vector<Branch> branches;
   std::vector<Facet> facets;  ///< junction patches (fitted stage, if asked)
+  /// Point primitives (x, y, z, radius): the `ball` stage of a shape
+  /// without branches (ball_fit.hpp); the iso-surface of each alone is the
+  /// sphere of that radius.
+  std::vector<Vec4> balls;
   std::size_t ends = 0, junctions = 0, points = 0;
+  double seconds = 0.0;  ///< wall time spent computing this stage
 };
+
+/// The primitives a stage's skeleton file holds.
+struct PrimitiveCounts {
+  std::size_t segments = 0, triangles = 0, points = 0;
+  std::size_t total() const { return segments + triangles + points; }
+};
+PrimitiveCounts primitive_counts(const Stage& stage, const ReconstructOptions& options);
 
 struct Reconstruction {
   std::size_t samples = 0, medial_vertices = 0, medial_edges = 0;
+  double medial_seconds = 0.0;  ///< wall time of sampling and the medial graph
   PruningReport pruning;
   std::size_t spurs_removed = 0;
   FitReport fit;
@@ -93,8 +106,10 @@ struct Reconstruction {
 Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& options);
 
 /// The skelconv skeleton file (JSON text) of a stage: one "scalis_segment"
-/// per polyline segment (plus the end extensions), summed, with the
-/// top-level "iso": 1.
+/// per polyline segment (plus the end extensions), one "scalis_triangle"
+/// per junction facet, one "point" per ball, summed, with the top-level
+/// "iso": 1. Throws std::logic_error for a stage without any primitive
+/// (reconstruct() never returns one: it falls back to a ball).
 std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& options);
 
 }  // namespace skelconv::reconstruct

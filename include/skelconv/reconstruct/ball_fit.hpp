@@ -1,0 +1,57 @@
+// skelconv/reconstruct/ball_fit.hpp — the fallback reconstruction of a
+// shape whose curve skeleton is empty or degenerate (a ball, a blob, a
+// low-poly cube: pruning leaves no branch): one point primitive per
+// connected component, whose iso-surface is a sphere, with centre and
+// radius fitted to the surface (docs/reconstruction.md, "Shapes without
+// branches").
+//
+// The fit minimises Σ w_k (|p_k − c| − R)² over area-weighted surface points
+// (the centroids of a barycentric subdivision of every triangle, each
+// weighted by its sub-triangle's area), the geometric least-squares sphere,
+// by Gauss–Newton from the points' centroid: with c fixed the optimal R is the
+// weighted mean of |p_k − c|, and the steps in (c, R) solve the 4 × 4
+// normal equations of the linearised residuals.
+#pragma once
+
+#include <vector>
+
+#include "skelconv/mesh/triangle_mesh.hpp"
+#include "skelconv/reconstruct/branch_graph.hpp"  // Vec4
+#include "skelconv/skeleton/skeleton.hpp"
+
+namespace skelconv::reconstruct {
+
+struct WeightedPoint {
+  Vec3 point;
+  double weight = 0.0;  ///< the area it stands for
+};
+
+/// Points spread over every triangle of `mesh`, weighted by area: each
+/// triangle is cut into n² equal sub-triangles (n = ⌈longest edge / h⌉, at
+/// least 1) and each sub-triangle gives its centroid with its area.
+std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double h);
+
+/// One least-squares sphere per connected component of `mesh` (triangles
+/// sharing a vertex), in the order of each component's first triangle,
+/// each from its area-weighted points at spacing h, starting from their
+/// centroid.
+std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h);
+
+/// The least-squares sphere (x, y, z, radius) of `points`, starting from
+/// centre `start`. At most `iterations` Gauss–Newton steps; stops when a
+/// step moves the centre by less than 1e-12 × the radius. A step that
+/// increases the error is halved (up to 30 times); if none decreases it,
+/// the current sphere is returned.
+Vec4 fit_sphere(const std::vector<WeightedPoint>& points, const Vec3& start, int iterations = 50);
+
+/// A cheap estimate of how far the surface f = iso of `skeleton` is from
+/// `points`: the weighted RMS of the first-order distance |f − iso| / |∇f|
+/// (exact for a point primitive's sphere up to O(d²), an over-estimate far
+/// from the surface, where it is clamped to `cap`). At most `max_points`
+/// points are used, every k-th in order. It chooses between the curve
+/// skeleton and a ball (reconstruct.cpp); the reported distances are the
+/// meshed, two-sided ones (surface_distance.hpp).
+double first_order_rms(const Skeleton& skeleton, const std::vector<WeightedPoint>& points, double cap,
+                       std::size_t max_points = 4000);
+
+}  // namespace skelconv::reconstruct

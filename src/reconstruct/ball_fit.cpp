@@ -1,0 +1,141 @@
+// Implementation of skelconv/reconstruct/ball_fit.hpp.
+#include "skelconv/reconstruct/ball_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+
+#include <Eigen/Dense>
+
+#include "union_find.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+/// R minimising the error for centre c: the weighted mean distance.
+double best_radius(const std::vector<WeightedPoint>& points, const Vec3& c) {
+  double sum = 0.0, weight = 0.0;
+  for (const WeightedPoint& p : points) sum += p.weight * (p.point - c).norm(), weight += p.weight;
+  return weight > 0.0 ? sum / weight : 0.0;
+}
+
+double error(const std::vector<WeightedPoint>& points, const Vec4& s) {
+  double sum = 0.0;
+  for (const WeightedPoint& p : points) {
+    const double r = (p.point - s.head<3>()).norm() - s.w();
+    sum += p.weight * r * r;
+  }
+  return sum;
+}
+
+/// The Gauss–Newton step of the residuals |p − c| − R in (c, R).
+Vec4 gauss_newton_step(const std::vector<WeightedPoint>& points, const Vec4& s) {
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  Vec4 rhs = Vec4::Zero();
+  for (const WeightedPoint& p : points) {
+    const Vec3 d = p.point - s.head<3>();
+    const double distance = d.norm();
+    if (!(distance > 0.0)) continue;  // a point at the centre has no direction
+    Vec4 jacobian;
+    jacobian << -d / distance, -1.0;
+    normal += p.weight * jacobian * jacobian.transpose();
+    rhs -= p.weight * (distance - s.w()) * jacobian;
+  }
+  return normal.ldlt().solve(rhs);
+}
+
+}  // namespace
+
+namespace {
+
+/// Appends the centroids of the n² sub-triangles of triangle t of `mesh`.
+void append_points(const TriangleMesh& mesh, const std::array<std::int32_t, 3>& t, double h,
+                   std::vector<WeightedPoint>& out) {
+  const Vec3& a = mesh.vertices[std::size_t(t[0])];
+  const Vec3& b = mesh.vertices[std::size_t(t[1])];
+  const Vec3& c = mesh.vertices[std::size_t(t[2])];
+  const double area = (b - a).cross(c - a).norm() / 2;
+  if (!(area > 0.0)) return;
+  const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+  // At most 64² sub-triangles: the points only need to follow the area.
+  const int n = h > 0.0 ? int(std::clamp(std::ceil(longest / h), 1.0, 64.0)) : 1;
+  const double weight = area / double(n * n);
+  // Barycentric grid of step 1/n: the upward sub-triangle at (i, j) has
+  // its centroid at (i + 1/3, j + 1/3), the downward one at (i + 2/3, j + 2/3).
+  const auto at = [&](double i, double j) { return (a * (n - i - j) + b * i + c * j) / double(n); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; i + j < n; ++j) {
+      out.push_back({at(i + 1.0 / 3, j + 1.0 / 3), weight});
+      if (i + j + 2 <= n) out.push_back({at(i + 2.0 / 3, j + 2.0 / 3), weight});
+    }
+}
+
+/// The weighted centroid of `points`.
+Vec3 centroid(const std::vector<WeightedPoint>& points) {
+  Vec3 sum = Vec3::Zero();
+  double weight = 0.0;
+  for (const WeightedPoint& p : points) sum += p.weight * p.point, weight += p.weight;
+  return weight > 0.0 ? Vec3(sum / weight) : sum;
+}
+
+}  // namespace
+
+std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double h) {
+  std::vector<WeightedPoint> out;
+  for (const auto& t : mesh.triangles) append_points(mesh, t, h, out);
+  return out;
+}
+
+std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h) {
+  std::vector<std::int32_t> parent(mesh.vertices.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::int32_t(i);
+  for (const auto& t : mesh.triangles)
+    for (int k = 1; k < 3; ++k) parent[std::size_t(detail::find_root(parent, t[k]))] = detail::find_root(parent, t[0]);
+  std::map<std::int32_t, std::size_t> component;  // root → index, in order of first triangle
+  std::vector<std::vector<WeightedPoint>> points;
+  for (const auto& t : mesh.triangles) {
+    const auto [it, added] = component.emplace(detail::find_root(parent, t[0]), points.size());
+    if (added) points.emplace_back();
+    append_points(mesh, t, h, points[it->second]);
+  }
+  std::vector<Vec4> spheres;
+  for (const auto& p : points)
+    if (!p.empty()) spheres.push_back(fit_sphere(p, centroid(p)));
+  return spheres;
+}
+
+Vec4 fit_sphere(const std::vector<WeightedPoint>& points, const Vec3& start, int iterations) {
+  Vec4 sphere;
+  sphere << start, best_radius(points, start);
+  double current = error(points, sphere);
+  for (int k = 0; k < iterations; ++k) {
+    Vec4 step = gauss_newton_step(points, sphere);
+    if (!step.allFinite()) break;
+    double moved = -1.0;  // the accepted step's centre move; < 0: none accepted
+    for (int halving = 0; halving < 30 && moved < 0.0; ++halving, step /= 2) {
+      Vec4 next = sphere + step;
+      next.w() = best_radius(points, next.head<3>());
+      const double e = error(points, next);
+      if (e < current) sphere = next, current = e, moved = step.head<3>().norm();
+    }
+    if (moved < 1e-12 * sphere.w()) break;
+  }
+  return sphere;
+}
+
+double first_order_rms(const Skeleton& skeleton, const std::vector<WeightedPoint>& points, double cap,
+                       std::size_t max_points) {
+  const std::size_t stride = std::max<std::size_t>(1, (points.size() + max_points - 1) / std::max<std::size_t>(1, max_points));
+  double sum = 0.0, weight = 0.0;
+  for (std::size_t k = 0; k < points.size(); k += stride) {
+    const FieldSample s = skeleton.value_and_gradient(points[k].point);
+    const double slope = s.gradient.norm();
+    double d = slope > 0.0 ? std::abs(s.value - skeleton.iso()) / slope : cap;
+    if (!(d < cap)) d = cap;  // also a NaN value or gradient
+    sum += points[k].weight * d * d, weight += points[k].weight;
+  }
+  return weight > 0.0 ? std::sqrt(sum / weight) : cap;
+}
+
+}  // namespace skelconv::reconstruct

@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Writes three small closed test meshes of `skelconv skeletonize` (ASCII
+PLY) into the current directory; standard library only, same bytes each run:
+  sphere.ply               icosphere (3 subdivisions), radius 1: a ball, no curve skeleton
+  cube.ply                 unit cube, 8 vertices, 12 triangles: a low-poly mesh
+  spheres_overlapping.ply  two icospheres (2 subdivisions) overlapping, one mesh: self-intersecting
+"""
+import math
+
+
+def icosphere(level, r=1.0, c=(0, 0, 0)):
+    t = (1 + 5**0.5) / 2
+    V = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
+         (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    V = [tuple(x / math.sqrt(sum(y * y for y in v)) for x in v) for v in V]
+    F = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2), (10, 7, 6),
+         (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10),
+         (8, 6, 7), (9, 8, 1)]
+    for _ in range(level):
+        cache, NF = {}, []
+
+        def mid(a, b):
+            k = (min(a, b), max(a, b))
+            if k not in cache:
+                m = [(V[a][i] + V[b][i]) / 2 for i in range(3)]
+                n = math.sqrt(sum(x * x for x in m))
+                V.append(tuple(x / n for x in m))
+                cache[k] = len(V) - 1
+            return cache[k]
+
+        for a, b, cc in F:
+            ab, bc, ca = mid(a, b), mid(b, cc), mid(cc, a)
+            NF += [(a, ab, ca), (b, bc, ab), (cc, ca, bc), (ab, bc, ca)]
+        F = NF
+    return [tuple(c[i] + r * v[i] for i in range(3)) for v in V], F
+
+
+def write(path, V, F, comment):
+    with open(path, 'w') as f:
+        f.write(f"ply\nformat ascii 1.0\ncomment {comment}\nelement vertex {len(V)}\nproperty float x\n"
+                f"property float y\nproperty float z\nelement face {len(F)}\n"
+                "property list uchar int vertex_indices\nend_header\n")
+        for v in V:
+            f.write(" ".join(f"{x:.6g}" for x in v) + "\n")
+        for t in F:
+            f.write("3 " + " ".join(map(str, t)) + "\n")
+
+
+V, F = icosphere(3)
+write("sphere.ply", V, F, "icosphere (3 subdivisions of an icosahedron), radius 1: skeletonize's ball case")
+cube = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+CF = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6),
+      (3, 0, 4), (3, 4, 7)]
+write("cube.ply", cube, CF, "unit cube, 8 vertices, 12 triangles, outward: skeletonize's low-poly case")
+V1, F1 = icosphere(2, 1.0, (0, 0, 0))
+V2, F2 = icosphere(2, 1.0, (1.2, 0, 0))
+write("spheres_overlapping.ply", V1 + V2, F1 + [tuple(i + len(V1) for i in t) for t in F2],
+      "two overlapping icospheres (radius 1, centres 1.2 apart) in one mesh, no boolean: self-intersecting")

@@ -1,0 +1,158 @@
+// Unit tests of what reconstruction does with its input before the medial
+// graph (docs/reconstruction.md, "Input" and "Samples") and of the ball
+// fallback: surface samples, least-squares spheres, self-intersection.
+// Expected values are derived by hand in the comments.
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "skelconv/errors.hpp"
+#include "skelconv/mesh/mesh_reader.hpp"
+#include "skelconv/reconstruct/ball_fit.hpp"
+#include "skelconv/reconstruct/mesh_check.hpp"
+#include "skelconv/reconstruct/surface_samples.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+/// The unit cube, 8 vertices, 12 outward triangles (tests/data/reconstruct/cube.ply).
+TriangleMesh unit_cube() {
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  m.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                 {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  return m;
+}
+
+/// Appends the corner tetrahedron `at`, at + s e_x, at + s e_y, at + s e_z,
+/// outward; s < 0 mirrors it through `at` (the faces are then reversed to
+/// stay outward). `corner` ≥ 0: the vertex index to use for `at` (shared).
+void add_tetrahedron(TriangleMesh& m, const Vec3& at, double s, std::int32_t corner = -1) {
+  if (corner < 0) corner = std::int32_t(m.vertices.size()), m.vertices.push_back(at);
+  const auto first = std::int32_t(m.vertices.size());
+  for (int k = 0; k < 3; ++k) m.vertices.push_back(at + s * Vec3::Unit(k));
+  const std::array<std::int32_t, 4> v{corner, first, first + 1, first + 2};
+  std::array<std::array<int, 3>, 4> faces{{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  for (auto f : faces) {
+    if (s < 0) std::swap(f[1], f[2]);
+    m.triangles.push_back({v[f[0]], v[f[1]], v[f[2]]});
+  }
+}
+
+// The cube: diagonal √3, edges 12 × 1 and 6 × √2, spacing h = √3/12 =
+// 0.14434. A unit edge gets ⌈1/h⌉ − 1 = 6 points, a face diagonal ⌈√2/h⌉ −
+// 1 = 9, each triangle (longest edge √2, n = 10) (9 × 8)/2 = 36 interior
+// points: 8 + 12 × 6 + 6 × 9 + 12 × 36 = 566 samples, every one on the
+// cube's surface.
+TEST(SurfaceSamples, CubeIsSampledOnItsFaces) {
+  const TriangleMesh cube = unit_cube();
+  const std::vector<Vec3> samples = surface_samples(cube);
+  ASSERT_EQ(samples.size(), 566u);
+  for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(samples[k], cube.vertices[k]);
+  for (const Vec3& p : samples) {
+    EXPECT_TRUE(p.minCoeff() >= -1e-15 && p.maxCoeff() <= 1 + 1e-15);
+    const double to_face = std::min(p.cwiseAbs().minCoeff(), (p - Vec3::Ones()).cwiseAbs().minCoeff());
+    EXPECT_LT(to_face, 1e-15) << p.transpose();
+  }
+}
+
+// With diagonal_divisions = 1 the spacing is √3, longer than every edge
+// of the cube: nothing is added.
+TEST(SurfaceSamples, FineEnoughMeshKeepsItsVertices) {
+  SamplingOptions coarse;
+  coarse.diagonal_divisions = 1.0;
+  EXPECT_EQ(surface_samples(unit_cube(), coarse).size(), 8u);
+}
+
+// The test shapes (`skelconv mesh`, edges below diagonal / 12) are sampled
+// by their vertices alone, as before surface samples existed: the
+// measured tables of docs/reconstruction_results.md stand.
+TEST(SurfaceSamples, TestShapesKeepTheirVertices) {
+  for (const char* name : {"segment.ply", "tripod.ply", "torus.ply", "sphere.ply"}) {
+    const TriangleMesh m = read_mesh(std::string(SKELCONV_TEST_DATA) + "/reconstruct/" + name);
+    EXPECT_EQ(surface_samples(m).size(), m.vertices.size()) << name;
+  }
+}
+
+// The budget: at most max_samples, by doubling h.
+TEST(SurfaceSamples, BudgetIsKept) {
+  SamplingOptions small;
+  small.max_samples = 200;
+  const std::size_t n = surface_samples(unit_cube(), small).size();
+  EXPECT_LE(n, 200u);
+  EXPECT_GT(n, 8u);
+}
+
+// Area-weighted points carry the area: the cube's total is 6, and their
+// weighted centroid is the centre (1/2, 1/2, 1/2) by symmetry, up to the
+// rounding of a sum of about 2,400 terms (n ε × 6 ≈ 1.6e-12).
+TEST(BallFit, AreaWeightedPointsCarryTheArea) {
+  const std::vector<WeightedPoint> points = area_weighted_points(unit_cube(), 0.1);
+  double area = 0.0;
+  Vec3 moment = Vec3::Zero();
+  for (const WeightedPoint& p : points) area += p.weight, moment += p.weight * p.point;
+  EXPECT_NEAR(area, 6.0, 1e-11);
+  EXPECT_LT((moment / area - Vec3::Constant(0.5)).norm(), 1e-11);
+}
+
+// Points exactly on a sphere (a Fibonacci spiral, centre (0.3, −0.2, 0.1),
+// radius 2) give that sphere back from a start 0.4 off.
+TEST(BallFit, RecoversAnExactSphere) {
+  std::vector<WeightedPoint> points;
+  const Vec3 centre(0.3, -0.2, 0.1);
+  const int n = 500;
+  for (int k = 0; k < n; ++k) {
+    const double z = 1 - (2 * k + 1.0) / n, phi = k * std::numbers::pi * (3 - std::sqrt(5.0));
+    const double r = std::sqrt(1 - z * z);
+    points.push_back({centre + 2.0 * Vec3(r * std::cos(phi), r * std::sin(phi), z), 1.0});
+  }
+  const Vec4 s = fit_sphere(points, Vec3(0.0, 0.0, 0.0));
+  EXPECT_LT((s.head<3>() - centre).norm(), 1e-10);
+  EXPECT_NEAR(s.w(), 2.0, 1e-10);
+}
+
+// One sphere per connected component: two cubes 3 apart give two spheres
+// centred at their centres.
+TEST(BallFit, OneSpherePerComponent) {
+  TriangleMesh two = unit_cube();
+  const TriangleMesh other = unit_cube();
+  for (const Vec3& v : other.vertices) two.vertices.push_back(v + Vec3(3, 0, 0));
+  for (const auto& t : other.triangles) two.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  const std::vector<Vec4> spheres = fit_component_spheres(two, 0.1);
+  ASSERT_EQ(spheres.size(), 2u);
+  EXPECT_LT((spheres[0].head<3>() - Vec3(0.5, 0.5, 0.5)).norm(), 1e-9);
+  EXPECT_LT((spheres[1].head<3>() - Vec3(3.5, 0.5, 0.5)).norm(), 1e-9);
+  EXPECT_NEAR(spheres[0].w(), spheres[1].w(), 1e-9);
+  // The least-squares radius lies between the inscribed and circumscribed ones.
+  EXPECT_GT(spheres[0].w(), 0.5);
+  EXPECT_LT(spheres[0].w(), std::sqrt(3.0) / 2);
+}
+
+// Two tetrahedra: overlapping (the second's corner at (0.2, 0.2, 0.2),
+// inside the first) cross; 2 apart do not; mirrored through a shared
+// vertex they touch at that vertex only, which is not a crossing (the
+// halfedge mesh needs that vertex split: orient_polygon_soup does it).
+TEST(MeshCheck, SelfIntersection) {
+  TriangleMesh overlapping, apart, touching;
+  add_tetrahedron(overlapping, Vec3(0, 0, 0), 1.0);
+  add_tetrahedron(overlapping, Vec3(0.2, 0.2, 0.2), 1.0);
+  add_tetrahedron(apart, Vec3(0, 0, 0), 1.0);
+  add_tetrahedron(apart, Vec3(2, 0, 0), 1.0);
+  add_tetrahedron(touching, Vec3(0, 0, 0), 1.0);
+  add_tetrahedron(touching, Vec3(0, 0, 0), -1.0, 0);
+  ASSERT_EQ(touching.vertices.size(), 7u);
+  try {
+    check_no_self_intersection(overlapping);
+    ADD_FAILURE() << "overlapping tetrahedra accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the mesh intersects itself: triangles"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(check_no_self_intersection(apart));
+  EXPECT_NO_THROW(check_no_self_intersection(touching));
+  EXPECT_NO_THROW(check_closed_mesh(touching));
+}
+
+}  // namespace
+}  // namespace skelconv::reconstruct
