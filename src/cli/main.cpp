@@ -14,6 +14,7 @@
 #include "exit_status.hpp"
 #include "mesh_command.hpp"
 #include "skeletonize_command.hpp"
+#include "view_command.hpp"
 
 #ifndef SKELCONV_VERSION
 #error "SKELCONV_VERSION must be defined by the build (src/CMakeLists.txt)"
@@ -59,6 +60,8 @@ int main(int argc, char** argv) {
   const CLI::App* mesh = add_mesh_command(app, mesh_options);
   SkeletonizeOptions skeletonize_options;
   const CLI::App* skeletonize = add_skeletonize_command(app, skeletonize_options);
+  ViewOptions view_options;
+  const CLI::App* view = add_view_command(app, view_options);
 
   if (first_argument_is_unknown_subcommand(app, argc, argv)) {
     report_error(std::string("unknown subcommand \"") + argv[1] + "\" (available: " + subcommand_names(app) + ")");
@@ -79,6 +82,7 @@ int main(int argc, char** argv) {
     if (bound->parsed()) return run_bound(bound_options);
     if (mesh->parsed()) return run_mesh(mesh_options);
     if (skeletonize->parsed()) return run_skeletonize(skeletonize_options);
+    if (view->parsed()) return run_view(view_options);
   } catch (const std::exception& error) {
     report_error(std::string("internal error: ") + error.what());
     return exit_evaluation_failed;

@@ -3,10 +3,8 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include <fmt/format.h>
-#include <unistd.h>  // getpid
 
 #include "exit_status.hpp"
 #include "skelconv/errors.hpp"
@@ -14,29 +12,10 @@
 #include "skelconv/reconstruct/mesh_check.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/sample_noise.hpp"
+#include "text_output.hpp"
 
 namespace skelconv::cli {
 namespace {
-
-/// Writes `text` to a temporary sibling of `path` and renames it into place;
-/// throws InputError (nothing left behind) on failure. The temporary's name
-/// carries the process id, so that two runs writing the same file (ctest -j)
-/// do not remove each other's, as in the mesh writer (triangle_mesh.cpp).
-void write_text_atomically(const std::string& text, const std::filesystem::path& path) {
-  std::filesystem::path temporary = path;
-  temporary += ".skelconv-partial-" + std::to_string(::getpid());
-  std::error_code error;
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (out && out.write(text.data(), std::streamsize(text.size())) && out.flush()) {
-      out.close();
-      std::filesystem::rename(temporary, path, error);
-      if (!error) return;
-    }
-  }
-  std::filesystem::remove(temporary, error);
-  throw InputError("cannot write the file", path.string());
-}
 
 std::string summary(const reconstruct::Reconstruction& r, const std::string& output) {
   std::string text = fmt::format("output: {}\nsamples: {}\nmedial_vertices: {}\npruned_vertices: {}\n"

@@ -1,0 +1,192 @@
+// src/view/view_march.glsl - the fragment shader of `skelconv view`
+// (docs/view.md): ray marching of the surface f = iso of a sum of segment
+// primitives, shaded with grad f.
+//
+// skelconv view (src/view/view_page.cpp) fills the three markers below: the
+// kernels of generated/glsl/ the skeleton uses, the functions that dispatch
+// on a kernel index, and the primitive count. Everything is in the page's
+// frame: the skeleton translated to its box centre and divided by a power of
+// two (view_page.hpp), which keeps float far from overflow and underflow.
+//
+// Primitive k is row k of u_primitives (RGBA32F, 4 texels wide):
+//   texel 0: A.xyz, kernel index (kernel_f below)
+//   texel 1: B.xyz, 0 for inverse and Cauchy kernels, 1 for compact ones
+//   texel 2: w0 .. w3, the weight polynomial
+//   texel 3: s, R, c (its weight in the sum, 0 when toggled off), then the
+//            degree i (inverse, Cauchy) or the Lipschitz bound c L (compact)
+
+//@@KERNELS@@
+
+//@@DISPATCH@@
+
+const int primitive_count = /*@@PRIMITIVE_COUNT@@*/1;
+// Most marching steps per ray, and bisection steps on a crossing: the step
+// bound halves the gap in a few steps, so rays that run out are grazing ones.
+const int max_steps = 160;
+const int bisection_steps = 14;
+
+uniform highp sampler2D u_primitives;
+uniform vec3 u_eye;
+uniform vec3 u_right;     // camera basis, unit vectors
+uniform vec3 u_up;
+uniform vec3 u_forward;
+uniform float u_tan_half_fov;
+uniform vec2 u_resolution;
+uniform float u_iso;
+uniform vec3 u_centre;    // the bounding sphere: f < iso outside it
+uniform float u_radius;
+uniform float u_min_step; // floor of the step, so that every ray ends
+out vec4 colour;
+
+// The field at p and what the step bound needs (safe_step).
+struct Probe {
+  float f;          // the sum
+  float f_ratio;    // its inverse and Cauchy part
+  float d_ratio;    // the least distance from p to those segments
+  float i_ratio;    // their largest degree
+  float lip_near;   // sum of c L of the compact segments whose support holds p
+  float lip_far;    // the same for the others
+  float gap_far;    // the least distance from p to the support of those
+};
+
+SegmentInput segment_input(int k, vec3 p, out vec4 t0, out vec4 t1, out vec4 t3, out float dist) {
+  t0 = texelFetch(u_primitives, ivec2(0, k), 0);
+  t1 = texelFetch(u_primitives, ivec2(1, k), 0);
+  vec4 t2 = texelFetch(u_primitives, ivec2(2, k), 0);
+  t3 = texelFetch(u_primitives, ivec2(3, k), 0);
+  SegmentInput si;
+  si.a = t0.xyz;
+  si.b = t1.xyz;
+  si.p = p;
+  si.w = t2;
+  si.s = t3.x;
+  si.R = t3.y;
+  si.t0 = 0.0;
+  si.t1 = 1.0;
+  vec3 ab = si.b - si.a;
+  vec3 ap = p - si.a;
+  float ab_ab = dot(ab, ab);
+  float t = clamp(dot(ab, ap) / ab_ab, 0.0, 1.0);
+  dist = length(ap - t * ab);
+  if (t1.w > 0.5) {
+    // The part of AB inside the ball of radius R around p, as
+    // skelconv/detail/clip.hpp: the discriminant from the cross product.
+    vec3 c = cross(ab, ap);
+    float disc = ab_ab * si.R * si.R - dot(c, c);
+    float centre = dot(ab, ap) / ab_ab;
+    float half_width = disc > 0.0 ? sqrt(disc) / ab_ab : 0.0;
+    si.t0 = max(0.0, centre - half_width);
+    si.t1 = min(1.0, centre + half_width);
+  }
+  return si;
+}
+
+Probe probe(vec3 p) {
+  Probe pr = Probe(0.0, 0.0, 1e30, 1.0, 0.0, 0.0, 1e30);
+  for (int k = 0; k < primitive_count; ++k) {
+    vec4 t0, t1, t3;
+    float dist;
+    SegmentInput si = segment_input(k, p, t0, t1, t3, dist);
+    float c = t3.z;
+    if (c == 0.0) continue;
+    if (t1.w > 0.5) {
+      if (dist < si.R) {
+        pr.lip_near += t3.w;
+        if (si.t0 < si.t1) pr.f += c * kernel_f(int(t0.w), si);
+      } else {
+        pr.lip_far += t3.w;
+        pr.gap_far = min(pr.gap_far, dist - si.R);
+      }
+    } else {
+      float fk = c * kernel_f(int(t0.w), si);
+      pr.f += fk;
+      pr.f_ratio += fk;
+      pr.d_ratio = min(pr.d_ratio, dist);
+      pr.i_ratio = max(pr.i_ratio, t3.w);
+    }
+  }
+  return pr;
+}
+
+// A step that cannot cross the surface (docs/view.md): with the margin
+// m = iso - f(p) > 0, along any move of length delta
+//   - an inverse or Cauchy term grows at most by the factor (d/(d - delta))^i,
+//     d the distance to its segment (K(r - delta)/K(r) <= (r/(r - delta))^i
+//     for both kernels, w >= 0): half of m for all of them together;
+//   - a compact term whose support holds p grows at most by c L delta: a
+//     quarter of m;
+//   - the others stay 0 until delta passes their gap, then grow by c L per
+//     unit length: the last quarter.
+float safe_step(Probe pr) {
+  float m = u_iso - pr.f;
+  float step = 1e30;
+  if (pr.f_ratio > 0.0) {
+    float q = 1.0 + 0.5 * m / pr.f_ratio;
+    step = pr.d_ratio * (1.0 - pow(q, -1.0 / pr.i_ratio));
+  }
+  if (pr.lip_near > 0.0) step = min(step, 0.25 * m / pr.lip_near);
+  if (pr.lip_far > 0.0) step = min(step, pr.gap_far + 0.25 * m / pr.lip_far);
+  return step;
+}
+
+float field(vec3 p) { return probe(p).f; }
+
+vec3 field_gradient(vec3 p) {
+  vec3 total = vec3(0.0);
+  for (int k = 0; k < primitive_count; ++k) {
+    vec4 t0, t1, t3;
+    float dist;
+    SegmentInput si = segment_input(k, p, t0, t1, t3, dist);
+    if (t3.z == 0.0) continue;
+    if (t1.w > 0.5 && !(si.t0 < si.t1)) continue;
+    vec3 g;
+    kernel_f_and_grad(int(t0.w), si, g);
+    total += t3.z * g;
+  }
+  return total;
+}
+
+vec3 shade(vec3 p, vec3 rd) {
+  vec3 g = field_gradient(p);
+  vec3 n = length(g) > 0.0 ? -normalize(g) : -rd;
+  vec3 light = normalize(u_up + 0.6 * u_right - 0.8 * u_forward);
+  float diffuse = max(dot(n, light), 0.0);
+  float rim = pow(1.0 - max(dot(n, -rd), 0.0), 3.0);
+  float specular = pow(max(dot(reflect(-light, n), -rd), 0.0), 40.0);
+  vec3 base = vec3(0.80, 0.55, 0.35);
+  return base * (0.18 + 0.82 * diffuse) + 0.25 * specular + 0.15 * rim;
+}
+
+void main() {
+  vec2 ndc = (2.0 * gl_FragCoord.xy - u_resolution) / u_resolution.y;
+  vec3 rd = normalize(u_forward + u_tan_half_fov * (ndc.x * u_right + ndc.y * u_up));
+  colour = vec4(1.0, 1.0, 1.0, 1.0);
+  // The ray against the bounding sphere.
+  vec3 oc = u_eye - u_centre;
+  float b = dot(oc, rd);
+  float disc = b * b - (dot(oc, oc) - u_radius * u_radius);
+  if (disc <= 0.0) return;
+  float t_far = -b + sqrt(disc);
+  float t = max(-b - sqrt(disc), 0.0);
+  if (t_far <= t) return;
+  float t_prev = t;
+  for (int step = 0; step < max_steps; ++step) {
+    Probe pr = probe(u_eye + t * rd);
+    if (pr.f >= u_iso) {
+      // Crossed between t_prev and t: bisection on f - iso.
+      float lo = t_prev, hi = t;
+      for (int j = 0; j < bisection_steps; ++j) {
+        float mid = 0.5 * (lo + hi);
+        if (field(u_eye + mid * rd) >= u_iso) hi = mid; else lo = mid;
+      }
+      colour = vec4(shade(u_eye + hi * rd, rd), 1.0);
+      return;
+    }
+    float s = safe_step(pr);
+    // A NaN (float failing in a generic form) gives the floor step.
+    if (!(s >= u_min_step)) s = u_min_step;
+    t_prev = t;
+    t += s;
+    if (t > t_far) return;
+  }
+}
