@@ -18,6 +18,7 @@ packages=(
   python3-yaml            # verify/check_cluster_files.py: parses the GitHub Actions sweep workflow (ctest verify_cluster_files)
   povray                  # papers_figures/render3d: headless shaded renders of meshes
   libopenvdb-dev libboost-iostreams-dev  # skelconv mesh --method grid (OpenVDB volumeToMesh; its CMake module needs Boost.Iostreams)
+  chromium                # tests/view/check_view_browser.py (main job, ctest label long): the `skelconv view` page rendered headless (WebGL2 on SwiftShader)
   glslang-tools           # tests/glsl: glslangValidator compiles generated/glsl as GLSL ES 3.00 (WebGL2) and 4.50 (ctest glsl_compiles)
   pybind11-dev python3-pybind11 python3-dev  # python/: the `import skelconv` module (pybind11 headers and CMake config, Python.h); its tests need python3-numpy
 )

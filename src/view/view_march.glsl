@@ -10,7 +10,7 @@
 //
 // Primitive k is row k of u_primitives (RGBA32F, 4 texels wide):
 //   texel 0: A.xyz, kernel index (kernel_f below)
-//   texel 1: B.xyz, 0 for inverse and Cauchy kernels, 1 for compact ones
+//   texel 1: B.xyz, the family: 0 inverse, 1 compact, 2 Cauchy
 //   texel 2: w0 .. w3, the weight polynomial
 //   texel 3: s, R, c (its weight in the sum, 0 when toggled off), then the
 //            degree i (inverse, Cauchy) or the Lipschitz bound c L (compact)
@@ -22,7 +22,7 @@
 const int primitive_count = /*@@PRIMITIVE_COUNT@@*/1;
 // Most marching steps per ray, and bisection steps on a crossing: the step
 // bound halves the gap in a few steps, so rays that run out are grazing ones.
-const int max_steps = 160;
+const int max_steps = 256;
 const int bisection_steps = 14;
 
 uniform highp sampler2D u_primitives;
@@ -42,8 +42,11 @@ out vec4 colour;
 struct Probe {
   float f;          // the sum
   float f_ratio;    // its inverse and Cauchy part
-  float d_ratio;    // the least distance from p to those segments
-  float i_ratio;    // their largest degree
+  float d_inverse;  // the least distance from p to the inverse segments
+  float i_inverse;  // their largest degree
+  float d_cauchy;   // the same for the Cauchy segments
+  float i_cauchy;
+  float s_cauchy;   // their largest s
   float lip_near;   // sum of c L of the compact segments whose support holds p
   float lip_far;    // the same for the others
   float gap_far;    // the least distance from p to the support of those
@@ -68,7 +71,7 @@ SegmentInput segment_input(int k, vec3 p, out vec4 t0, out vec4 t1, out vec4 t3,
   float ab_ab = dot(ab, ab);
   float t = clamp(dot(ab, ap) / ab_ab, 0.0, 1.0);
   dist = length(ap - t * ab);
-  if (t1.w > 0.5) {
+  if (t1.w == 1.0) {
     // The part of AB inside the ball of radius R around p, as
     // skelconv/detail/clip.hpp: the discriminant from the cross product.
     vec3 c = cross(ab, ap);
@@ -82,14 +85,14 @@ SegmentInput segment_input(int k, vec3 p, out vec4 t0, out vec4 t1, out vec4 t3,
 }
 
 Probe probe(vec3 p) {
-  Probe pr = Probe(0.0, 0.0, 1e30, 1.0, 0.0, 0.0, 1e30);
+  Probe pr = Probe(0.0, 0.0, 1e30, 0.0, 1e30, 0.0, 0.0, 0.0, 0.0, 1e30);
   for (int k = 0; k < primitive_count; ++k) {
     vec4 t0, t1, t3;
     float dist;
     SegmentInput si = segment_input(k, p, t0, t1, t3, dist);
     float c = t3.z;
     if (c == 0.0) continue;
-    if (t1.w > 0.5) {
+    if (t1.w == 1.0) {
       if (dist < si.R) {
         pr.lip_near += t3.w;
         if (si.t0 < si.t1) pr.f += c * kernel_f(int(t0.w), si);
@@ -101,8 +104,14 @@ Probe probe(vec3 p) {
       float fk = c * kernel_f(int(t0.w), si);
       pr.f += fk;
       pr.f_ratio += fk;
-      pr.d_ratio = min(pr.d_ratio, dist);
-      pr.i_ratio = max(pr.i_ratio, t3.w);
+      if (t1.w == 0.0) {
+        pr.d_inverse = min(pr.d_inverse, dist);
+        pr.i_inverse = max(pr.i_inverse, t3.w);
+      } else {
+        pr.d_cauchy = min(pr.d_cauchy, dist);
+        pr.i_cauchy = max(pr.i_cauchy, t3.w);
+        pr.s_cauchy = max(pr.s_cauchy, si.s);
+      }
     }
   }
   return pr;
@@ -110,19 +119,31 @@ Probe probe(vec3 p) {
 
 // A step that cannot cross the surface (docs/view.md): with the margin
 // m = iso - f(p) > 0, along any move of length delta
-//   - an inverse or Cauchy term grows at most by the factor (d/(d - delta))^i,
-//     d the distance to its segment (K(r - delta)/K(r) <= (r/(r - delta))^i
-//     for both kernels, w >= 0): half of m for all of them together;
+//   - the inverse and Cauchy terms together grow by at most the factor
+//     q = 1 + (m/2) / f_ratio (half of m) when every term does: an inverse
+//     term grows at most by (d/(d - delta))^i, d the distance to its segment
+//     (K(r - delta)/K(r) <= (r/(r - delta))^i, w >= 0), so delta <=
+//     d (1 - q^(-1/i)) will do; a Cauchy term by that too, or by
+//     sup_r ((1 + s r^2)/(1 + s (r - delta)^2))^(i/2) <= q, which holds for
+//     every r when delta <= (Q - 1)/sqrt(s Q), Q = q^(2/i) (the quadratic in
+//     r has no root): either bound will do, the larger is taken;
 //   - a compact term whose support holds p grows at most by c L delta: a
 //     quarter of m;
 //   - the others stay 0 until delta passes their gap, then grow by c L per
 //     unit length: the last quarter.
+// The largest degree and s and the least distance of a family stand for all
+// its terms (each bound decreases in i and s and increases in d).
 float safe_step(Probe pr) {
   float m = u_iso - pr.f;
   float step = 1e30;
   if (pr.f_ratio > 0.0) {
     float q = 1.0 + 0.5 * m / pr.f_ratio;
-    step = pr.d_ratio * (1.0 - pow(q, -1.0 / pr.i_ratio));
+    if (pr.i_inverse > 0.0) step = pr.d_inverse * (1.0 - pow(q, -1.0 / pr.i_inverse));
+    if (pr.i_cauchy > 0.0) {
+      float Q = pow(q, 2.0 / pr.i_cauchy);
+      float any_r = (Q - 1.0) / sqrt(pr.s_cauchy * Q);
+      step = min(step, max(any_r, pr.d_cauchy * (1.0 - pow(q, -1.0 / pr.i_cauchy))));
+    }
   }
   if (pr.lip_near > 0.0) step = min(step, 0.25 * m / pr.lip_near);
   if (pr.lip_far > 0.0) step = min(step, pr.gap_far + 0.25 * m / pr.lip_far);
@@ -138,7 +159,7 @@ vec3 field_gradient(vec3 p) {
     float dist;
     SegmentInput si = segment_input(k, p, t0, t1, t3, dist);
     if (t3.z == 0.0) continue;
-    if (t1.w > 0.5 && !(si.t0 < si.t1)) continue;
+    if (t1.w == 1.0 && !(si.t0 < si.t1)) continue;
     vec3 g;
     kernel_f_and_grad(int(t0.w), si, g);
     total += t3.z * g;

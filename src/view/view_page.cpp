@@ -137,6 +137,10 @@ std::string check_term(const Term& term) {
   return name;
 }
 
+/// The camera's vertical field of view, radians (about 40 degrees: little
+/// perspective distortion, the object large in the window).
+constexpr double field_of_view = 0.7;
+
 /// The page's frame (file comment of view_page.hpp).
 struct Frame {
   Vec3 centre = Vec3::Zero();
@@ -229,6 +233,36 @@ double support_margin(const std::vector<PageTerm>& terms, double level) {
   return high;
 }
 
+/// How far from the page's centre the surface f = iso reaches, roughly
+/// (for the first camera only): from the ends and midpoint of every segment
+/// outwards along the six axis directions until f < iso, by doubling then
+/// bisection on the double-precision field.
+double surface_extent(const Skeleton& skeleton, const std::vector<Term>& terms, const Frame& frame) {
+  const auto inside = [&](const Vec3& p) {
+    try {
+      return skeleton.value(p) >= skeleton.iso();
+    } catch (const EvaluationError&) {
+      return false;
+    }
+  };
+  double extent = 0.0;
+  for (const Term& t : terms) {
+    for (const Vec3& start : {t.segment->a(), t.segment->b(), Vec3(0.5 * (t.segment->a() + t.segment->b()))}) {
+      for (int axis = 0; axis < 6; ++axis) {
+        const Vec3 direction = (axis < 3 ? 1.0 : -1.0) * Vec3::Unit(axis % 3);
+        double low = 0.0, high = 1e-3 * frame.scale;
+        for (int k = 0; k < 60 && inside(start + high * direction); ++k) low = high, high *= 2;
+        for (int k = 0; k < 30; ++k) {
+          const double mid = 0.5 * (low + high);
+          (inside(start + mid * direction) ? low : high) = mid;
+        }
+        extent = std::max(extent, frame.to_page(start + high * direction).norm());
+      }
+    }
+  }
+  return extent;
+}
+
 }  // namespace
 
 namespace {
@@ -311,7 +345,8 @@ std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& opti
     primitives.push_back({{"location", term.location},
                           {"kernel", fmt::format("{} {}", family_name(t.family), t.degree)},
                           {"kernel_index", index},
-                          {"compact", compact},
+                          // view_march.glsl's family code.
+                          {"family", compact ? 1 : t.family == KernelFamily::inverse ? 0 : 2},
                           {"a", vec_json(t.a)},
                           {"b", vec_json(t.b)},
                           {"w", t.w},
@@ -325,6 +360,10 @@ std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& opti
   // Half the lowest iso: the float shader's field may differ a little from
   // the double bound.
   const double radius = half_diagonal + support_margin(page_terms, 0.5 * iso_min);
+  // The first camera frames the surface of the file's iso (or the sphere
+  // when no surface was found from the skeleton's points).
+  const double extent = surface_extent(skeleton, terms, frame);
+  const double view_radius = extent > 1e-2 ? std::min(radius, extent) : radius;
   const nlohmann::json data = {{"name", options.name},
                                {"frame", {{"centre", vec_json(frame.centre)}, {"scale", frame.scale}}},
                                {"iso", iso},
@@ -334,7 +373,8 @@ std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& opti
                                {"radius", radius},
                                // The floor of a marching step: 1e-4 of the sphere, far below a pixel.
                                {"min_step", 1e-4 * radius},
-                               {"fov", 0.7},
+                               {"fov", field_of_view},
+                               {"distance", 1.25 * view_radius / std::sin(0.5 * field_of_view)},
                                {"primitives", primitives}};
   std::string shader = embedded::view_march_glsl;
   shader = fill(shader, "//@@KERNELS@@", kernels_text(kernels, families));
