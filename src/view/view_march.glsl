@@ -20,9 +20,11 @@
 //@@DISPATCH@@
 
 const int primitive_count = /*@@PRIMITIVE_COUNT@@*/1;
-// Most marching steps per ray, and bisection steps on a crossing: the step
-// bound halves the gap in a few steps, so rays that run out are grazing ones.
-const int max_steps = 256;
+// Most marching steps per ray, and bisection steps on a crossing. Near the
+// surface a step covers a fixed fraction of the gap (a third for an inverse
+// segment, less for compact terms, whose Lipschitz bound is global), so rays
+// that run out are grazing ones.
+const int max_steps = 512;
 const int bisection_steps = 14;
 
 uniform highp sampler2D u_primitives;
@@ -117,27 +119,28 @@ Probe probe(vec3 p) {
   return pr;
 }
 
-// A step that cannot cross the surface (docs/view.md): with the margin
-// m = iso - f(p) > 0, along any move of length delta
+// A step that cannot cross the surface (docs/view.md). The margin
+// m = iso - f(p) > 0 is shared equally between the kinds of terms present
+// (a share m_k each), and along any move of length delta
 //   - the inverse and Cauchy terms together grow by at most the factor
-//     q = 1 + (m/2) / f_ratio (half of m) when every term does: an inverse
-//     term grows at most by (d/(d - delta))^i, d the distance to its segment
+//     q = 1 + m_k / f_ratio when every term does: an inverse term grows at
+//     most by (d/(d - delta))^i, d the distance to its segment
 //     (K(r - delta)/K(r) <= (r/(r - delta))^i, w >= 0), so delta <=
 //     d (1 - q^(-1/i)) will do; a Cauchy term by that too, or by
 //     sup_r ((1 + s r^2)/(1 + s (r - delta)^2))^(i/2) <= q, which holds for
 //     every r when delta <= (Q - 1)/sqrt(s Q), Q = q^(2/i) (the quadratic in
 //     r has no root): either bound will do, the larger is taken;
-//   - a compact term whose support holds p grows at most by c L delta: a
-//     quarter of m;
-//   - the others stay 0 until delta passes their gap, then grow by c L per
-//     unit length: the last quarter.
+//   - a compact term whose support holds p grows at most by c L delta;
+//   - the other compact terms stay 0 until delta passes their gap, then grow
+//     by at most c L per unit length.
 // The largest degree and s and the least distance of a family stand for all
 // its terms (each bound decreases in i and s and increases in d).
 float safe_step(Probe pr) {
-  float m = u_iso - pr.f;
+  float kinds = (pr.f_ratio > 0.0 ? 1.0 : 0.0) + (pr.lip_near > 0.0 ? 1.0 : 0.0) + (pr.lip_far > 0.0 ? 1.0 : 0.0);
+  float share = (u_iso - pr.f) / max(kinds, 1.0);
   float step = 1e30;
   if (pr.f_ratio > 0.0) {
-    float q = 1.0 + 0.5 * m / pr.f_ratio;
+    float q = 1.0 + share / pr.f_ratio;
     if (pr.i_inverse > 0.0) step = pr.d_inverse * (1.0 - pow(q, -1.0 / pr.i_inverse));
     if (pr.i_cauchy > 0.0) {
       float Q = pow(q, 2.0 / pr.i_cauchy);
@@ -145,8 +148,8 @@ float safe_step(Probe pr) {
       step = min(step, max(any_r, pr.d_cauchy * (1.0 - pow(q, -1.0 / pr.i_cauchy))));
     }
   }
-  if (pr.lip_near > 0.0) step = min(step, 0.25 * m / pr.lip_near);
-  if (pr.lip_far > 0.0) step = min(step, pr.gap_far + 0.25 * m / pr.lip_far);
+  if (pr.lip_near > 0.0) step = min(step, share / pr.lip_near);
+  if (pr.lip_far > 0.0) step = min(step, pr.gap_far + share / pr.lip_far);
   return step;
 }
 
