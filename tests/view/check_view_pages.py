@@ -41,7 +41,7 @@ def expected_terms(node, where, out):
     for k, child in enumerate(node):
         path = f"{where}[{k}]"
         if "blend" in child:
-            if child["blend"] != "sum":
+            if child["blend"] != "sum" or min(child.get("weights", [1])) < 0:
                 return path
             bad = expected_terms(child["children"], f"{path}.children", out)
             if bad:
@@ -51,6 +51,12 @@ def expected_terms(node, where, out):
             return path
         kernel = child["kernel"]
         if kernel["family"] not in SUPPORTED_FAMILIES or (kernel["family"] == "compact" and kernel["degree"] % 2 == 0):
+            return path
+        # The step bound of inverse and Cauchy terms needs w >= 0 on [0, 1]
+        # (sampled here, the command solves for the least value).
+        weight = child.get("weight", [1])
+        least = min(sum(c * (j / 1000) ** k for k, c in enumerate(weight)) for j in range(1001))
+        if kernel["family"] != "compact" and least < 0:
             return path
         out.append((path, child))
     return None
