@@ -86,6 +86,70 @@ SegmentInput segment_input(int k, vec3 p, out vec4 t0, out vec4 t1, out vec4 t3,
   return si;
 }
 
+// Beyond an end of its segment (the projection of p outside [0, 1]) an
+// inverse or Cauchy term is integrated here rather than by its generated
+// generic form: in float those lose digits there, most near the segment's
+// line (0/0 on it; docs/view.md, tests/glsl/probe_beyond_end.py), as the
+// C++ target's stable forms avoid with a Gauss rule too. The integrand
+// w(t) K(|p - G(t)|) is smooth there: with s the distance along AB from the
+// nearer end in units of |AB| and rho = |p - end| / |AB|, panels
+// [s_k, s_k+1] of width s_k + rho (at most the distance to p, so the
+// nearest complex singularity of the integrand is a panel width away) and
+// 8 Gauss-Legendre nodes each keep the rule's error below float's.
+const float gauss_x[8] = float[8](0.019855072, 0.101666761, 0.237233795, 0.408282679,
+                                  0.591717321, 0.762766205, 0.898333239, 0.980144928);
+const float gauss_w[8] = float[8](0.050614268, 0.111190517, 0.156853323, 0.181341892,
+                                  0.181341892, 0.156853323, 0.111190517, 0.050614268);
+// More panels than this only for p within 2^-20 |AB| of an end (deep inside
+// any surface): the last panel then stretches to the far end.
+const int max_panels = 20;
+
+bool beyond_end(SegmentInput si) {
+  vec3 ab = si.b - si.a;
+  float t = dot(si.p - si.a, ab) / dot(ab, ab);
+  return t < 0.0 || t > 1.0;
+}
+
+// f (and grad f) of an inverse (family 0) or Cauchy (family 2) term of
+// degree i at a point beyond an end: K = base^(-i/2) with base = r^2 or
+// 1 + s r^2, so grad K = -i alpha K / base (p - G(t)), alpha = 1 or s.
+float segment_by_quadrature(SegmentInput si, float family, float degree, out vec3 grad) {
+  vec3 ab = si.b - si.a;
+  float length_ab = length(ab);
+  bool at_b = dot(si.p - si.a, ab) > 0.0;
+  float end = at_b ? 1.0 : 0.0, direction = at_b ? -1.0 : 1.0;
+  float rho = length(si.p - (at_b ? si.b : si.a)) / length_ab;
+  float alpha = family == 0.0 ? 1.0 : si.s;
+  float offset = family == 0.0 ? 0.0 : 1.0;
+  float f = 0.0;
+  grad = vec3(0.0);
+  float low = 0.0;
+  for (int k = 0; k < max_panels && low < 1.0; ++k) {
+    float high = k == max_panels - 1 ? 1.0 : min(1.0, 2.0 * low + rho);
+    for (int j = 0; j < 8; ++j) {
+      float t = end + direction * (low + (high - low) * gauss_x[j]);
+      vec3 d = si.p - (si.a + t * ab);
+      float base = offset + alpha * dot(d, d);
+      float kernel = pow(base, -0.5 * degree);
+      float weight = (high - low) * gauss_w[j] * (si.w.x + t * (si.w.y + t * (si.w.z + t * si.w.w)));
+      f += weight * kernel;
+      grad += (weight * kernel / base) * d;
+    }
+    low = high;
+  }
+  grad *= -degree * alpha * length_ab;
+  return f * length_ab;
+}
+
+// One term c f_k (and its gradient when `with_grad`): the generated kernel,
+// or the quadrature beyond an end for inverse and Cauchy kernels.
+float term(int kernel, float family, float degree, SegmentInput si, bool with_grad, out vec3 grad) {
+  grad = vec3(0.0);
+  if (family != 1.0 && beyond_end(si)) return segment_by_quadrature(si, family, degree, grad);
+  if (with_grad) return kernel_f_and_grad(kernel, si, grad);
+  return kernel_f(kernel, si);
+}
+
 Probe probe(vec3 p) {
   Probe pr = Probe(0.0, 0.0, 1e30, 0.0, 1e30, 0.0, 0.0, 0.0, 0.0, 1e30);
   for (int k = 0; k < primitive_count; ++k) {
@@ -103,7 +167,8 @@ Probe probe(vec3 p) {
         pr.gap_far = min(pr.gap_far, dist - si.R);
       }
     } else {
-      float fk = c * kernel_f(int(t0.w), si);
+      vec3 unused;
+      float fk = c * term(int(t0.w), t1.w, t3.w, si, false, unused);
       pr.f += fk;
       pr.f_ratio += fk;
       if (t1.w == 0.0) {
@@ -164,7 +229,8 @@ vec3 field_gradient(vec3 p) {
     if (t3.z == 0.0) continue;
     if (t1.w == 1.0 && !(si.t0 < si.t1)) continue;
     vec3 g;
-    kernel_f_and_grad(int(t0.w), si, g);
+    if (t1.w == 1.0) kernel_f_and_grad(int(t0.w), si, g);
+    else term(int(t0.w), t1.w, t3.w, si, true, g);
     total += t3.z * g;
   }
   return total;
