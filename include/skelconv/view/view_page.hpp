@@ -3,7 +3,9 @@
 //
 // The page holds everything it needs (no network when it is opened): the
 // fragment shader (src/view/view_march.glsl with the kernels of
-// generated/glsl/ the skeleton uses) and the skeleton's data as JSON. The
+// generated/glsl/ the skeleton uses; beyond an end of a segment it
+// integrates inverse and Cauchy terms itself) and the skeleton's data as
+// JSON. The
 // GLSL target has segment kernels only, so the page can show a skeleton of
 //   - segments of the inverse and Cauchy families (every degree and weight
 //     the GLSL files hold) and of the compact family (the odd degrees: the
@@ -29,9 +31,10 @@
 
 namespace skelconv {
 
-/// The shader loops over the primitives per marching step; beyond this many
-/// a frame costs too much for interaction on a laptop GPU (docs/view.md has
-/// the frame times measured), and the page is refused (use skelconv mesh).
+/// The shader loops over every primitive per marching step, so a frame costs
+/// in proportion to their number; beyond this many the page is refused (use
+/// skelconv mesh): a bound on the page's work, not a measured threshold of
+/// interactivity (docs/view.md).
 inline constexpr std::size_t max_view_primitives = 256;
 
 struct ViewPageOptions {
