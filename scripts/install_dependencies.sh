@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages skelconv builds with, if any is missing.
+# Installs the Debian packages skelconv builds with, if any is missing;
+# with --main-job, also those only README's main job uses (clang for the
+# libFuzzer harnesses, Chromium for the viewer's browser test).
 # Needs root (or sudo) only when something has to be installed.
 set -euo pipefail
 
@@ -10,7 +12,6 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libbenchmark-dev libcgal-dev
   valgrind                # bench/: instruction counts
-  clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer harnesses of the PLY/OBJ reader and the point lines (clang's -fsanitize=fuzzer)
   libhwy-dev libsleef-dev # src/simd/: vector batches (Highway: run-time dispatch AVX-512/AVX2/portable; SLEEF: vector atan2, log, asinh)
   libflint-arb-dev        # verify/: Arb ball arithmetic and acb_calc_integrate, the certified references (verify_certified_references)
   libgsl-dev              # bench/ only: GSL's adaptive QAG (61-point rule), the quadrature baseline
@@ -21,6 +22,13 @@ packages=(
   glslang-tools           # tests/glsl: glslangValidator compiles generated/glsl as GLSL ES 3.00 (WebGL2) and 4.50 (ctest glsl_compiles)
   pybind11-dev python3-pybind11 python3-dev  # python/: the `import skelconv` module (pybind11 headers and CMake config, Python.h); its tests need python3-numpy
 )
+# Only README's main job (scripts/main_job.sh, --main-job) runs these; CI does not install them.
+if [ "${1:-}" = "--main-job" ]; then
+  packages+=(
+    clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer harnesses of the PLY/OBJ reader and the point lines (clang's -fsanitize=fuzzer)
+    chromium                     # tests/view/check_view_browser.py (ctest label long): the `skelconv view` page rendered headless (WebGL2 on SwiftShader)
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 start=$SECONDS
 stage() { echo "== [$((SECONDS - start)) s] $*"; }
 
-scripts/install_dependencies.sh
+scripts/install_dependencies.sh --main-job
 stage "building everything (the long tests need the command, the test programs and the verifiers)"
 scripts/build.sh
 

@@ -15,6 +15,7 @@
 #include "mesh_command.hpp"
 #include "skeletonize_command.hpp"
 #include "thickness_command.hpp"
+#include "view_command.hpp"
 
 #ifndef SKELCONV_VERSION
 #error "SKELCONV_VERSION must be defined by the build (src/CMakeLists.txt)"
@@ -62,6 +63,8 @@ int main(int argc, char** argv) {
   const CLI::App* skeletonize = add_skeletonize_command(app, skeletonize_options);
   ThicknessOptions thickness_options;
   const CLI::App* thickness = add_thickness_command(app, thickness_options);
+  ViewOptions view_options;
+  const CLI::App* view = add_view_command(app, view_options);
 
   if (first_argument_is_unknown_subcommand(app, argc, argv)) {
     report_error(std::string("unknown subcommand \"") + argv[1] + "\" (available: " + subcommand_names(app) + ")");
@@ -83,6 +86,7 @@ int main(int argc, char** argv) {
     if (mesh->parsed()) return run_mesh(mesh_options);
     if (skeletonize->parsed()) return run_skeletonize(skeletonize_options);
     if (thickness->parsed()) return run_thickness(thickness_options);
+    if (view->parsed()) return run_view(view_options);
   } catch (const std::exception& error) {
     report_error(std::string("internal error: ") + error.what());
     return exit_evaluation_failed;

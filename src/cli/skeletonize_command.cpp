@@ -15,6 +15,7 @@
 #include "skelconv/reconstruct/mesh_check.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/sample_noise.hpp"
+#include "text_output.hpp"
 
 namespace skelconv::cli {
 namespace {

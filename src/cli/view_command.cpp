@@ -1,0 +1,49 @@
+// Implementation of view_command.hpp.
+#include "view_command.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "exit_status.hpp"
+#include "skelconv/errors.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
+#include "skelconv/view/view_page.hpp"
+#include "text_output.hpp"
+
+namespace skelconv::cli {
+
+CLI::App* add_view_command(CLI::App& app, ViewOptions& options) {
+  CLI::App* view = app.add_subcommand("view", "Write an HTML page that shows the surface f = iso in a browser (WebGL2)");
+  view->add_option("SKELETON", options.skeleton_path, "Skeleton file (JSON)")->required();
+  view->add_option("-o,--output", options.output_path, "Output page: .html")->required();
+  view->footer(R"(
+Writes one self-contained HTML file (no network needed to open it): a WebGL2
+ray marcher of the blended field with orbit and zoom (mouse), an iso slider,
+the skeleton overlay and per-primitive toggles. Shows sums of segments with
+the kernels of generated/glsl/ (inverse, cauchy, compact of odd degree);
+anything else is refused with its JSON path (exit 2, no file). Details:
+docs/view.md.)");
+  return view;
+}
+
+int run_view(const ViewOptions& options) {
+  return print_all_or_nothing([&] {
+    const std::filesystem::path output(options.output_path);
+    if (output.extension() != ".html") throw InputError("the page must be an .html file", options.output_path);
+    const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
+    ViewPageOptions page_options;
+    page_options.name = std::filesystem::path(options.skeleton_path).filename().string();
+    std::string page;
+    try {
+      page = make_view_page(skeleton, page_options);
+    } catch (const InputError& error) {
+      // Located like the reader's errors: "skel.json: primitives[2]: ...".
+      throw InputError(error.what(), options.skeleton_path);
+    }
+    write_text_atomically(page, output);
+    return fmt::format("output: {}\nprimitives: {}\nbytes: {}\n", options.output_path, skeleton.size(), page.size());
+  });
+}
+
+}  // namespace skelconv::cli

@@ -1,0 +1,179 @@
+#!/usr/bin/env python3
+"""Checks `skelconv view` (docs/view.md) without a browser.
+
+    check_view_pages.py SKELCONV BAD_FOLDER SKELETON_FOLDER... [--inject-fault]
+
+For every skeleton of each SKELETON_FOLDER (papers_figures/skeletons, and
+tests/data/view: weights, sum nodes, every family, and refusals):
+  - if it holds only what the viewer shows (segments under sum nodes; the
+    kernels of generated/glsl/), `skelconv view` must write a page whose
+    skeleton data lists every primitive with the file's end points, weights
+    and kernels, and whose fragment shader (extracted from the page) calls
+    the GLSL function of every kernel and compiles with glslangValidator as
+    GLSL ES 3.00 (WebGL2);
+  - otherwise it must exit with status 2, one "skelconv: error:" line naming
+    the JSON path of the first primitive it cannot show, and no file.
+For every file of BAD_FOLDER (invalid skeletons, tests/data/bad) the view
+must fail like `skelconv mesh` on the same file (the same message from the
+same reader, exit 2) and write nothing.
+
+--inject-fault appends a call of an undeclared function to each extracted
+shader: the check must then fail (ctest view_pages_check_can_fail).
+Python 3 standard library only.
+"""
+import json
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+SHADER = re.compile(r'<script id="fragment_shader" type="x-shader/x-fragment">\n(.*?)</script>', re.S)
+DATA = re.compile(r'<script id="skeleton_data" type="application/json">\n(.*?)</script>', re.S)
+SUPPORTED_FAMILIES = {"inverse", "cauchy", "compact"}
+
+
+def expected_terms(node, where, out):
+    """The segments of a skeleton file in depth-first order with their JSON
+    paths, or (path, reason) of the first element the viewer cannot show."""
+    for k, child in enumerate(node):
+        path = f"{where}[{k}]"
+        if "blend" in child:
+            if child["blend"] != "sum" or min(child.get("weights", [1])) < 0:
+                return path
+            bad = expected_terms(child["children"], f"{path}.children", out)
+            if bad:
+                return bad
+            continue
+        if child.get("type") != "segment":
+            return path
+        kernel = child["kernel"]
+        if kernel["family"] not in SUPPORTED_FAMILIES or (kernel["family"] == "compact" and kernel["degree"] % 2 == 0):
+            return path
+        # The step bound of inverse and Cauchy terms needs w >= 0 on [0, 1]
+        # (sampled here, the command solves for the least value).
+        weight = child.get("weight", [1])
+        least = min(sum(c * (j / 1000) ** k for k, c in enumerate(weight)) for j in range(1001))
+        if kernel["family"] != "compact" and least < 0:
+            return path
+        out.append((path, child))
+    return None
+
+
+def compile_es300(shader, scratch, validator):
+    source = pathlib.Path(scratch) / "page.frag"
+    source.write_text(shader)
+    run = subprocess.run([validator, str(source)], capture_output=True, text=True)
+    return run.returncode == 0, run.stdout[-1500:] + run.stderr[-500:]
+
+
+def check_page(path, html, skeleton, terms, scratch, validator, fault):
+    problems = []
+    shader_match, data_match = SHADER.search(html), DATA.search(html)
+    if not shader_match or not data_match:
+        return [f"{path}: the page has no fragment shader or no skeleton data"]
+    if "http://" in html or "https://" in html:
+        problems.append(f"{path}: the page refers to the network")
+    data = json.loads(data_match.group(1).replace("<\\/", "</"))
+    if len(data["primitives"]) != len(terms):
+        problems.append(f"{path}: {len(data['primitives'])} primitives in the page, {len(terms)} in the file")
+    frame = data["frame"]
+    for (where, element), shown in zip(terms, data["primitives"]):
+        if shown["location"] != where:
+            problems.append(f"{path}: page primitive at {shown['location']}, file at {where}")
+        for end in ("a", "b"):
+            # The page's frame: (X - centre) / scale (view_page.hpp).
+            back = [shown[end][j] * frame["scale"] + frame["centre"][j] for j in range(3)]
+            if max(abs(back[j] - element[end][j]) for j in range(3)) > 1e-12 * max(1.0, frame["scale"]):
+                problems.append(f"{path}: {where}.{end} is {back} in the page, {element[end]} in the file")
+        kernel = element["kernel"]
+        if shown["kernel"] != f"{kernel['family']} {kernel['degree']}":
+            problems.append(f"{path}: {where} kernel {shown['kernel']} in the page")
+        weight = element.get("weight", [1])
+        if shown["w"][:len(weight)] != weight:
+            problems.append(f"{path}: {where} weight {shown['w']} in the page, {weight} in the file")
+        degree = len(weight) - 1
+        while degree > 0 and weight[degree] == 0:
+            degree -= 1
+        name = f"segment_{kernel['family']}_i{kernel['degree']}_w{degree}_f_and_grad"
+        if name + "(si, grad)" not in shader_match.group(1):
+            problems.append(f"{path}: the shader does not call {name}")
+    shader = shader_match.group(1).replace("<\\/", "</")
+    if fault:
+        shader = shader.rstrip() + "\nvoid injected_fault() { undeclared_kernel(); }\n"
+    ok, log = compile_es300(shader, scratch, validator)
+    if not ok:
+        problems.append(f"{path}: the page's shader does not compile as GLSL ES 3.00:\n{log}")
+    return problems
+
+
+def run_view(skelconv, skeleton, output):
+    return subprocess.run([skelconv, "view", str(skeleton), "-o", str(output)], capture_output=True, text=True)
+
+
+def check_folder(skelconv, folder, scratch, validator, fault):
+    problems, shown = [], 0
+    for path in sorted(pathlib.Path(folder).glob("*.json")):
+        skeleton = json.loads(path.read_text())
+        terms = []
+        refused_at = expected_terms(skeleton["primitives"], "primitives", terms)
+        output = pathlib.Path(scratch) / (path.stem + ".html")
+        run = run_view(skelconv, path, output)
+        if refused_at is None:
+            if run.returncode != 0 or not output.exists():
+                problems.append(f"{path.name}: skelconv view failed (status {run.returncode}): {run.stderr.strip()}")
+                continue
+            shown += 1
+            problems += check_page(path.name, output.read_text(), skeleton, terms, scratch, validator, fault)
+            print(f"check_view_pages: {path.name}: page of {len(terms)} primitives, {output.stat().st_size} bytes")
+        else:
+            lines = run.stderr.strip().splitlines()
+            if run.returncode != 2 or output.exists() or len(lines) != 1 or not re.search(re.escape(refused_at) + r"[:.]", lines[0]):
+                problems.append(f"{path.name}: expected a refusal naming {refused_at} (exit 2, no file), got status "
+                                f"{run.returncode}, file {output.exists()}, stderr {run.stderr.strip()!r}")
+            else:
+                print(f"check_view_pages: {path.name}: refused: {lines[0]}")
+    if shown == 0:
+        problems.append(f"{folder}: no skeleton the viewer shows")
+    return problems
+
+
+def check_bad_files(skelconv, folder, scratch):
+    problems = []
+    count = 0
+    for path in sorted(pathlib.Path(folder).glob("*.json")):
+        output = pathlib.Path(scratch) / "bad.html"
+        view = run_view(skelconv, path, output)
+        mesh = subprocess.run([skelconv, "mesh", str(path), "-o", str(pathlib.Path(scratch) / "bad.ply"), "--quiet"],
+                              capture_output=True, text=True)
+        if view.returncode != 2 or output.exists() or view.stdout or view.stderr != mesh.stderr:
+            problems.append(f"{path.name}: view gives status {view.returncode}, file {output.exists()}, stderr "
+                            f"{view.stderr.strip()!r}; mesh gives {mesh.stderr.strip()!r}")
+        count += 1
+    print(f"check_view_pages: {count} bad skeleton files refused by view as by mesh")
+    return problems
+
+
+def main():
+    arguments = [a for a in sys.argv[1:] if a != "--inject-fault"]
+    fault = len(arguments) < len(sys.argv) - 1
+    if len(arguments) < 3:
+        sys.exit(__doc__)
+    skelconv, bad, folders = arguments[0], arguments[1], arguments[2:]
+    validator = shutil.which("glslangValidator")
+    if not validator:
+        sys.exit("check_view_pages: glslangValidator not found (Debian package glslang-tools)")
+    with tempfile.TemporaryDirectory() as scratch:
+        problems = []
+        for folder in folders:
+            problems += check_folder(skelconv, folder, scratch, validator, fault)
+        problems += check_bad_files(skelconv, bad, scratch)
+    for p in problems:
+        print("check_view_pages: FAIL " + p, file=sys.stderr)
+    sys.exit(1 if problems else 0)
+
+
+if __name__ == "__main__":
+    main()
