@@ -103,11 +103,15 @@ struct Interval {
 template <std::size_t N, class Integrand, class Allowance>
 Adaptive<N> integrate_adaptive(std::span<const Interval> pieces, Integrand& integrand, Allowance& allowance,
                                int max_panels, const bool* abort = nullptr) {
+  Adaptive<N> result;
+  if (pieces.empty()) {  // nothing to integrate: exactly 0 (and no panel to bisect below)
+    result.converged = true;
+    return result;
+  }
   std::vector<Panel<N>> panels;
   panels.reserve(pieces.size() + 16);
   for (std::size_t k = 0; k < pieces.size(); ++k)
     panels.push_back(gauss_kronrod_panel<N>(int(k), pieces[k].a, pieces[k].b, integrand));
-  Adaptive<N> result;
   for (;;) {
     result.value = {};
     Values<N> discretisation{}, inner{};
@@ -515,6 +519,13 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
     const FanTriangle& fan = fans[k];
     std::vector<double> cuts{std::asinh(fan.sA / fan.h), std::asinh(fan.sB / fan.h)};
     if (family == KernelFamily::compact) compact_breakpoints(s, fan, foot, z, gradient_tau, cuts);
+    // A cut that is not a number (coordinates whose products overflow, e.g.
+    // a vertex 1e300 away) would drop its piece silently and give a wrong 0:
+    // report the evaluation as failed instead (the caller's non-finite error).
+    if (!std::all_of(cuts.begin(), cuts.end(), [](double c) { return std::isfinite(c); })) {
+      result.F = std::numeric_limits<double>::quiet_NaN();
+      return result;
+    }
     std::sort(cuts.begin(), cuts.end());
     for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
       if (!(cuts[c] < cuts[c + 1])) continue;
