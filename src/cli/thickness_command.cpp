@@ -43,13 +43,18 @@ EdgeSummary summarise(const std::vector<ThicknessSample>& samples, std::size_t e
   return s;
 }
 
-std::string report(const SegmentGraph& g, const ThicknessCorrection& c, double tau, const std::string& output) {
+std::string report(const SegmentGraph& g, const ThicknessCorrection& c, double tau, double tolerance,
+                   const std::string& output) {
   std::string text = fmt::format("output: {}\ntau: {:.6g}\nbase_weight: {:.9g}\ncorrected_nodes:", output, tau,
                                  c.base_weight);
   for (std::size_t n : c.corrected_nodes) {
     text += fmt::format(" ({:.6g}, {:.6g}, {:.6g})", g.nodes[n].x(), g.nodes[n].y(), g.nodes[n].z());
   }
-  text += fmt::format("\niterations: {}\nconverged: {}\n", c.iterations, c.converged ? "yes" : "no");
+  double worst_after = 0;
+  for (const ThicknessSample& x : c.after) worst_after = std::max(worst_after, std::abs(x.thickness - tau) / tau);
+  // Not converged is not failure: say how far the result is from the tolerance.
+  text += fmt::format("\niterations: {}\nconverged: {} (worst after: {:.2f}%, tolerance {:.2f}%)\n", c.iterations,
+                      c.converged ? "yes" : "no", 100 * worst_after, 100 * tolerance);
   text += "segment          samples  before: min      max      worst    after: min      max      worst\n";
   for (std::size_t e = 0; e < g.edges.size(); ++e) {
     const EdgeSummary b = summarise(c.before, e, tau), a = summarise(c.after, e, tau);
@@ -106,7 +111,7 @@ int run_thickness(const ThicknessOptions& options) {
       throw as_flag(error);
     }
     write_text_atomically(weighted_skeleton_json(c.refined, c.weights, c.point_weights), options.output_path);
-    return report(graph, c, options.tau, options.output_path);
+    return report(graph, c, options.tau, options.tolerance, options.output_path);
   });
 }
 
