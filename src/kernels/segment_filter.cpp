@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -140,9 +141,19 @@ template <std::size_t I>
   }
 }
 
+// Whether entry I has fast forms, read from its operation count rather than
+// from `f == nullptr`: with -fsanitize GCC does not accept comparing a
+// function's address with nullptr in a constant expression. The generator
+// writes an empty count exactly where it writes no fast form; build_table
+// checks that the two agree.
+template <std::size_t I>
+constexpr bool has_fast_form() {
+  return segment_fast_kernel_table[I].ops_f.total() > 0;
+}
+
 template <std::size_t I>
 constexpr FastFormWrappers wrappers_of() {
-  if constexpr (segment_fast_kernel_table[I].f == nullptr) return {nullptr, nullptr};
+  if constexpr (!has_fast_form<I>()) return {nullptr, nullptr};
   else return {&fast_f<I>, &fast_f_and_grad<I>};
 }
 
@@ -157,8 +168,11 @@ constexpr std::array<FastFormWrappers, kKernels> kWrappers = all_wrappers(std::m
 std::vector<FilteredSegmentKernel> build_table() {
   const auto stable = generated::segment_kernels<double>();
   std::vector<FilteredSegmentKernel> table;
-  for (size_t i = 0; i < stable.size(); ++i)
+  for (size_t i = 0; i < stable.size(); ++i) {
+    if (i < kKernels && (kWrappers[i].f != nullptr) != (segment_fast_kernel_table[i].f != nullptr))
+      throw std::logic_error("segment_fast_table.hpp: an entry's operation count and fast form disagree");
     table.emplace_back(&stable[i], i < kKernels && kWrappers[i].f ? &kWrappers[i] : nullptr);
+  }
   return table;
 }
 
