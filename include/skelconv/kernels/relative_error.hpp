@@ -28,6 +28,9 @@
 // 1/(1 − u) of passing from exact to computed results left to kBoundSafety:
 //
 //   x ± y   A = A_x + A_y + |r̂|                  (ρ = 1 if both exact)
+//   x + y   ρ = max(ρ_x, ρ_y) + 1  where both are known ≥ 0 and relative
+//           (|x̂ − x| + |ŷ − y| ≤ max(ε_x, ε_y)(|x̂| + |ŷ|) = max(ε)|x̂ + ŷ|:
+//           a sum of squares cannot cancel, and its bound stays static)
 //   x · y   ρ = ρ_x + ρ_y + ρ_x ρ_y u + 1          (|x̂ŷ − xy| ≤ |x̂ŷ|(ε_x + ε_y + ε_x ε_y)),
 //           or, where an operand is a sum's result,
 //           A = |x̂| A_y + |ŷ| A_x + A_x A_y u + |r̂| (x̂ŷ − xy = x̂ d_y + ŷ d_x − d_x d_y)
@@ -66,19 +69,23 @@ struct RelativeError {
   T err{};
   bool exact = true;           ///< an input or a literal: no error, known at compile time
   bool absolute_form = false;  ///< err is A rather than ρ, known at compile time
+  /// Both the computed and the exact value are ≥ 0, known at compile time:
+  /// squares, sqrt, and sums, products and quotients of such (sums of
+  /// squares: the dot products of the generated code).
+  bool nonneg = false;
 
   RelativeError() = default;
   // NOLINTNEXTLINE(google-explicit-constructor): literals and inputs are exact
   RelativeError(T v) : value(v) {}
   // Literals like T(7) in the generated code: exact small integers.
-  explicit RelativeError(int v) : value(T(v)) {}
+  explicit RelativeError(int v) : value(T(v)), nonneg(v >= 0) {}
 
   static constexpr T u = std::numeric_limits<T>::epsilon() / 2;
   static constexpr T kLibm = 4;  // libm error bound, units of u (see above)
   static constexpr T inf = std::numeric_limits<T>::infinity();
 
-  static RelativeError relative(T v, T rho) { return {v, rho, false, false}; }
-  static RelativeError absolute(T v, T a) { return {v, a, false, true}; }
+  static RelativeError relative(T v, T rho, bool nonneg = false) { return {v, rho, false, false, nonneg}; }
+  static RelativeError absolute(T v, T a, bool nonneg = false) { return {v, a, false, true, nonneg}; }
 
   /// ρ (a division where the bound is held in absolute form).
   static T rho_of(const RelativeError& x) {
@@ -95,6 +102,7 @@ struct RelativeError {
   RelativeError operator-() const {
     RelativeError r = *this;
     r.value = -value;
+    r.nonneg = false;
     return r;
   }
   RelativeError& operator+=(const RelativeError& y) { return *this = *this + y; }
@@ -106,34 +114,44 @@ struct RelativeError {
     if (x.exact && y.exact) return relative(r, T(1));  // one rounding
     return absolute(r, abs_of(x) + abs_of(y) + std::abs(r));
   }
-  friend RelativeError operator+(const RelativeError& x, const RelativeError& y) { return sum(x.value + y.value, x, y); }
+  friend RelativeError operator+(const RelativeError& x, const RelativeError& y) {
+    const T r = x.value + y.value;
+    if (x.nonneg && y.nonneg && !x.absolute_form && !y.absolute_form && !(x.exact && y.exact))
+      return relative(r, worst(rho_of(x), rho_of(y)) + 1, true);  // no cancellation (see the top)
+    RelativeError s = sum(r, x, y);
+    s.nonneg = x.nonneg && y.nonneg;
+    return s;
+  }
   friend RelativeError operator-(const RelativeError& x, const RelativeError& y) { return sum(x.value - y.value, x, y); }
   friend RelativeError operator*(const RelativeError& x, const RelativeError& y) {
     const T r = x.value * y.value;
+    // x · x is a square; otherwise the signs multiply.
+    const bool nonneg = &x == &y || (x.nonneg && y.nonneg);
     if (x.absolute_form || y.absolute_form) {
       // A sum's result: stay absolute rather than divide (see the top).
       const T ax = abs_of(x), ay = abs_of(y);
       const T second_order = x.exact || y.exact ? T(0) : ax * ay * u;
-      return absolute(r, std::abs(x.value) * ay + std::abs(y.value) * ax + second_order + std::abs(r));
+      return absolute(r, std::abs(x.value) * ay + std::abs(y.value) * ax + second_order + std::abs(r), nonneg);
     }
     const T rx = rho_of(x), ry = rho_of(y);
     const T second_order = x.exact || y.exact ? T(0) : rx * ry * u;
-    return relative(r, rx + ry + second_order + 1);
+    return relative(r, rx + ry + second_order + 1, nonneg);
   }
   friend RelativeError operator/(const RelativeError& x, const RelativeError& y) {
     const T r = x.value / y.value;
-    if (y.exact) return relative(r, rho_of(x) + 1);
+    const bool nonneg = x.nonneg && y.nonneg;
+    if (y.exact) return relative(r, rho_of(x) + 1, nonneg);
     // A_y/|ŷ| = A_y |q̂|/|x̂| up to a rounding (kBoundSafety): for a literal
     // numerator (1/y, the generated code's reciprocals) a product.
     const T ry = x.exact && y.absolute_form ? y.err * std::abs(r) / std::abs(x.value) : rho_of(y);
-    if (!(ry * u <= T(0.5))) return relative(r, inf);
-    return relative(r, (rho_of(x) + ry) * (1 + 2 * ry * u) + 1);
+    if (!(ry * u <= T(0.5))) return relative(r, inf, nonneg);
+    return relative(r, (rho_of(x) + ry) * (1 + 2 * ry * u) + 1, nonneg);
   }
   friend RelativeError sqrt(const RelativeError& x) {
     const T r = std::sqrt(x.value);
-    if (x.exact) return relative(r, T(1));
+    if (x.exact) return relative(r, T(1), true);
     const T rx = rho_of(x);
-    return relative(r, rx * u <= T(0.5) ? T(0.586) * rx + 1 : inf);
+    return relative(r, rx * u <= T(0.5) ? T(0.586) * rx + 1 : inf, true);
   }
   friend RelativeError log(const RelativeError& x) {
     const T r = std::log(x.value);
@@ -182,7 +200,7 @@ struct RelativeError {
   static constexpr T kBoundSafety = T(1) + T(1) / 1024;
 
  private:
-  RelativeError(T v, T e, bool x, bool a) : value(v), err(e), exact(x), absolute_form(a) {}
+  RelativeError(T v, T e, bool x, bool a, bool n) : value(v), err(e), exact(x), absolute_form(a), nonneg(n) {}
 };
 
 }  // namespace skelconv
