@@ -1,11 +1,13 @@
 // bench/filter_bench.cpp — the filtered segment kernels against the stable
 // ones (skelconv/kernels/segment_filter.hpp):
-//   filter/<kernel>/<band>/<stable|filtered>/<f|f_and_grad>
+//   filter/<kernel>/<band>/<stable|fast|filtered>/<f|f_and_grad>
 // with bands of distance from the segment 0.01–0.1, 0.1–1 and 1–10 |AB|
 // (1024 points each, every direction, beyond the ends too; compact kernels
 // get a support holding the whole segment). The counter `accepted` is the
 // fraction of points the filter let through at the default tolerance.
-// Compare times within one run only.
+// stable: the runtime library's generated function (the fallback); fast:
+// the fast form alone on double, without its bound (what the formula costs);
+// filtered: fast form, bound and fallback. Compare times within one run only.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -17,6 +19,7 @@
 
 #include "bench_main.hpp"
 #include "bench_support.hpp"
+#include "fast_forms.hpp"
 
 namespace skelconv::bench {
 namespace {
@@ -54,8 +57,12 @@ std::vector<Input> band_inputs(KernelFamily family, const Band& band) {
   return out;
 }
 
-template <bool filtered, bool gradient>
-void bench_eval(benchmark::State& state, const FilteredSegmentKernel* k, const KernelRef* stable,
+/// What a benchmark times: the runtime's stable function, the fast form
+/// alone on double (no bound: the formula's own cost), or the filter.
+enum class Path { stable, fast, filtered };
+
+template <Path path, bool gradient>
+void bench_eval(benchmark::State& state, const FilteredSegmentKernel* k, const FastForm* fast,
                 std::vector<Input> inputs) {
   std::size_t idx = 0, accepted = 0;
   for (auto _ : state) {
@@ -63,31 +70,41 @@ void bench_eval(benchmark::State& state, const FilteredSegmentKernel* k, const K
     bool ok = false;
     if constexpr (gradient) {
       std::array<double, 3> g;
-      const double f = filtered ? k->f_and_grad(in, g, kDefaultFilterTolerance, &ok) : stable->f_and_grad(in, g);
+      double f;
+      if constexpr (path == Path::stable) f = k->stable_f_and_grad(in, g);
+      else if constexpr (path == Path::fast) f = fast->f_and_grad(in, g);
+      else f = k->f_and_grad(in, g, kDefaultFilterTolerance, &ok);
       benchmark::DoNotOptimize(f);
       benchmark::DoNotOptimize(g);
     } else {
-      const double f = filtered ? k->f(in, kDefaultFilterTolerance, &ok) : stable->f(in);
+      double f;
+      if constexpr (path == Path::stable) f = k->stable_f(in);
+      else if constexpr (path == Path::fast) f = fast->f(in);
+      else f = k->f(in, kDefaultFilterTolerance, &ok);
       benchmark::DoNotOptimize(f);
     }
     accepted += ok;
   }
   state.SetItemsProcessed(state.iterations());
-  if (filtered) state.counters["accepted"] = double(accepted) / double(state.iterations());
+  if (path == Path::filtered) state.counters["accepted"] = double(accepted) / double(state.iterations());
 }
 
 void register_all() {
   for (const KernelKey& n : detailed_kernels) {
     const FilteredSegmentKernel* k = FilteredSegmentKernel::find(n.family, n.degree, n.weight_degree);
-    const KernelRef* stable = find_kernel(n.family, n.degree, n.weight_degree);
-    if (!k || !k->has_fast_form() || !stable) continue;
+    const KernelRef* ref = find_kernel(n.family, n.degree, n.weight_degree);
+    const FastForm* fast = find_fast_form(n);
+    if (!k || !k->has_fast_form() || !ref || !fast) continue;
     for (const Band& band : kBands) {
       const std::vector<Input> in = band_inputs(n.family, band);
-      const std::string base = "filter/" + stable->name + "/" + band.name + "/";
-      benchmark::RegisterBenchmark((base + "stable/f").c_str(), bench_eval<false, false>, k, stable, in);
-      benchmark::RegisterBenchmark((base + "filtered/f").c_str(), bench_eval<true, false>, k, stable, in);
-      benchmark::RegisterBenchmark((base + "stable/f_and_grad").c_str(), bench_eval<false, true>, k, stable, in);
-      benchmark::RegisterBenchmark((base + "filtered/f_and_grad").c_str(), bench_eval<true, true>, k, stable, in);
+      const std::string base = "filter/" + ref->name + "/" + band.name + "/";
+      benchmark::RegisterBenchmark((base + "stable/f").c_str(), bench_eval<Path::stable, false>, k, fast, in);
+      benchmark::RegisterBenchmark((base + "fast/f").c_str(), bench_eval<Path::fast, false>, k, fast, in);
+      benchmark::RegisterBenchmark((base + "filtered/f").c_str(), bench_eval<Path::filtered, false>, k, fast, in);
+      benchmark::RegisterBenchmark((base + "stable/f_and_grad").c_str(), bench_eval<Path::stable, true>, k, fast, in);
+      benchmark::RegisterBenchmark((base + "fast/f_and_grad").c_str(), bench_eval<Path::fast, true>, k, fast, in);
+      benchmark::RegisterBenchmark((base + "filtered/f_and_grad").c_str(), bench_eval<Path::filtered, true>, k, fast,
+                                   in);
     }
   }
 }

@@ -78,6 +78,9 @@ step "4/7 SCALIS segments against quadrature (~30 s)"
 "$bin/skelconv_bench_scalis" "${gbench[@]}" --benchmark_out="$results/scalis.json"
 "$bin/skelconv_scalis_compact_opcounts" > "$results/scalis_compact_opcounts.md"
 
+step "4b/7 the filter: stable, fast form alone, filtered, three distance bands (~1 min)"
+"$bin/skelconv_bench_filter" "${gbench[@]}" --benchmark_out="$results/filter.json"
+
 step "5/7 closed forms against GSL's adaptive QAG (61-point rule), 0.1-3 |AB| (~1 min)"
 "$bin/skelconv_bench_gsl" "${gbench[@]}" --benchmark_out="$results/gsl.json"
 

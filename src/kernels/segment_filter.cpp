@@ -27,6 +27,7 @@ namespace skelconv {
 struct FastFormWrappers {
   void (*f)(const SegmentInput<double>&, FastEvaluation&);
   void (*f_and_grad)(const SegmentInput<double>&, FastEvaluation&);
+  OpCount ops[3];  // f, ∇f, f+∇f: the generated table's counts
 };
 
 namespace {
@@ -153,8 +154,11 @@ constexpr bool has_fast_form() {
 
 template <std::size_t I>
 constexpr FastFormWrappers wrappers_of() {
-  if constexpr (!has_fast_form<I>()) return {nullptr, nullptr};
-  else return {&fast_f<I>, &fast_f_and_grad<I>};
+  if constexpr (!has_fast_form<I>()) return {nullptr, nullptr, {}};
+  else {
+    const auto& e = segment_fast_kernel_table[I];
+    return {&fast_f<I>, &fast_f_and_grad<I>, {e.ops_f, e.ops_grad, e.ops_f_and_grad}};
+  }
 }
 
 template <std::size_t... I>
@@ -196,6 +200,14 @@ bool FilteredSegmentKernel::evaluate_fast(const SegmentInput<double>& in, int wh
     if (which == 1) out.f = out.f_bound = 0;
   }
   return true;
+}
+
+OpCount FilteredSegmentKernel::fast_operation_count(int which) const { return fast_ ? fast_->ops[which] : OpCount{}; }
+
+double FilteredSegmentKernel::stable_f(const SegmentInput<double>& in) const { return stable_->f(in); }
+
+double FilteredSegmentKernel::stable_f_and_grad(const SegmentInput<double>& in, std::array<double, 3>& grad) const {
+  return stable_->f_and_grad(in, grad);
 }
 
 double FilteredSegmentKernel::f(const SegmentInput<double>& in, double tolerance, bool* accepted) const {

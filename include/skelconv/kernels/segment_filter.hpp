@@ -23,6 +23,7 @@
 #include <cmath>
 #include <limits>
 
+#include "skelconv/kernels/op_count.hpp"
 #include "skelconv/primitives/segment_input.hpp"
 
 namespace skelconv {
@@ -95,6 +96,15 @@ class FilteredSegmentKernel {
                              bool* accepted = nullptr) const;
   double f_and_grad(const SegmentInput<double>& in, std::array<double, 3>& grad,
                     double tolerance = kDefaultFilterTolerance, bool* accepted = nullptr) const;
+
+  /// The fast form's operation count (generic path, the generator's
+  /// counting rules; the bound's operations are not counted): `which` 0 f,
+  /// 1 ∇f, 2 both; empty without a fast form.
+  OpCount fast_operation_count(int which) const;
+
+  /// The stable function alone (the fallback), for comparisons.
+  double stable_f(const SegmentInput<double>& in) const;
+  double stable_f_and_grad(const SegmentInput<double>& in, std::array<double, 3>& grad) const;
 
   FilteredSegmentKernel(const generated::SegmentKernel<double>* stable, const FastFormWrappers* fast)
       : stable_(stable), fast_(fast) {}
