@@ -40,8 +40,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // RelativeError's model, fl(x ∘ y) = (x ∘ y)(1 + δ), holds in round-to-
 // nearest, without flush-to-zero, as long as no operation underflows,
 // overflows, divides by zero or is invalid. The scope evaluates with every
-// exception masked and its flags cleared, says whether those flags stayed
-// clear, and restores the caller's state (flags included).
+// exception masked and those flags clear, says whether they stayed clear,
+// and leaves the caller's state (flags included) as it found it.
 #if defined(__SSE2__)
 class FloatingPointScope {
  public:
@@ -49,14 +49,26 @@ class FloatingPointScope {
   // PE 0x20 (DE 0x2: a denormal operand, exact, not a failure); masks
   // 0x1F80; rounding control 0x6000; flush-to-zero 0x8000; DAZ 0x40.
   static constexpr unsigned kFlags = 0x3F, kFailures = 0x1D, kMasks = 0x1F80, kModes = 0x6000 | 0x8000 | 0x40;
-  FloatingPointScope() : saved_(_mm_getcsr()) { _mm_setcsr((saved_ | kMasks) & ~kFlags); }
-  ~FloatingPointScope() { _mm_setcsr(saved_); }
+  // Writing MXCSR (ldmxcsr) is a slow, partly serialising instruction;
+  // reading it is cheap. In the usual state (exceptions masked, default
+  // modes, no failure flag raised) nothing is written: a failure flag found
+  // after the evaluation was raised by it, and only then is the caller's
+  // register restored. Otherwise the flags are cleared first and the
+  // register restored at the end.
+  FloatingPointScope() : saved_(_mm_getcsr()) {
+    usual_ = (saved_ & (kFailures | kModes)) == 0 && (saved_ & kMasks) == kMasks;
+    if (!usual_) _mm_setcsr((saved_ | kMasks) & ~kFlags);
+  }
+  ~FloatingPointScope() {
+    if (!usual_ || (_mm_getcsr() & kFailures) != 0) _mm_setcsr(saved_);
+  }
   FloatingPointScope(const FloatingPointScope&) = delete;
   FloatingPointScope& operator=(const FloatingPointScope&) = delete;
   bool model_held() const { return (saved_ & kModes) == 0 && (_mm_getcsr() & kFailures) == 0; }
 
  private:
   unsigned saved_;
+  bool usual_;
 };
 #else
 class FloatingPointScope {
@@ -94,13 +106,21 @@ SegmentInput<FastScalar> exact_input(const SegmentInput<double>& in) {
     x.p[i] = in.p[i];
   }
   for (size_t k = 0; k < in.w.size(); ++k) x.w[k] = in.w[k];
-  x.s = in.s;
-  x.R = in.R;
-  x.gaussian_a = in.gaussian_a;
-  x.gaussian_b = in.gaussian_b;
-  x.t0 = in.t0;
-  x.t1 = in.t1;
+  // Positive by the contract of SegmentInput (checked by inputs_in_contract):
+  // sums with them keep static relative bounds (relative_error.hpp).
+  x.s = FastScalar::nonnegative_input(in.s);
+  x.R = FastScalar::nonnegative_input(in.R);
+  x.gaussian_a = FastScalar::nonnegative_input(in.gaussian_a);
+  x.gaussian_b = FastScalar::nonnegative_input(in.gaussian_b);
+  x.t0 = FastScalar::nonnegative_input(in.t0);
+  x.t1 = FastScalar::nonnegative_input(in.t1);
   return x;
+}
+
+/// Whether the parameters exact_input takes as nonnegative are (else the
+/// bound is discarded).
+bool inputs_in_contract(const SegmentInput<double>& in) {
+  return in.s >= 0 && in.R >= 0 && in.gaussian_a >= 0 && in.gaussian_b >= 0 && in.t0 >= 0 && in.t1 >= 0;
 }
 
 void store_gradient(const std::array<FastScalar, 3>& g, FastEvaluation& out) {
@@ -122,7 +142,7 @@ template <std::size_t I>
   out.f = f.value;
   out.f_bound = f.bound();
   before_flags_read(out);
-  if (!scope.model_held()) out.f_bound = kInfinity;
+  if (!scope.model_held() || !inputs_in_contract(in)) out.f_bound = kInfinity;
 }
 
 template <std::size_t I>
@@ -136,7 +156,7 @@ template <std::size_t I>
   out.f_bound = f.bound();
   store_gradient(g, out);
   before_flags_read(out);
-  if (!scope.model_held()) {
+  if (!scope.model_held() || !inputs_in_contract(in)) {
     out.f_bound = kInfinity;
     out.grad_bounds.fill(kInfinity);
   }

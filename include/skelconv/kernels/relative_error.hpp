@@ -84,6 +84,9 @@ struct RelativeError {
   static constexpr T kLibm = 4;  // libm error bound, units of u (see above)
   static constexpr T inf = std::numeric_limits<T>::infinity();
 
+  /// An input known to be ≥ 0 (the caller checks it: a kernel parameter
+  /// such as s or R, a clipped parameter t0, t1).
+  static RelativeError nonnegative_input(T v) { return {v, T(0), true, false, true}; }
   static RelativeError relative(T v, T rho, bool nonneg = false) { return {v, rho, false, false, nonneg}; }
   static RelativeError absolute(T v, T a, bool nonneg = false) { return {v, a, false, true, nonneg}; }
 
