@@ -265,6 +265,8 @@ def filter_section(res, md, goals, ir, ops_by_name):
     if not runs:
         return
     md.append("## 4d. The filter: fast form, error bound, stable fallback\n")
+    md.append(f"Run {context.get('date')}, load average "
+              f"{', '.join(f'{x:.2f}' for x in context.get('load_avg', []))} at start.\n")
     md.append("`skelconv_bench_filter` (docs/filter.md): ns per evaluation, one thread, 1,024 points per band of distance "
               "from the segment (every direction, beyond the ends too). *stable*: the runtime's generated function (the "
               "fallback); *fast*: the fast form alone on double, no bound (what the formula costs); *filtered*: fast "
