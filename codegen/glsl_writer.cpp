@@ -1,4 +1,5 @@
-// codegen/glsl_writer.cpp — see glsl_writer.hpp.
+// codegen/glsl_writer.cpp — see glsl_writer.hpp. Segment and SCALIS
+// segment kernels; the point kernels are glsl_point_writer.cpp's.
 //
 // The GLSL functions are the programs' Forms::fast emission (the generic
 // alternative of every stable-form choice, unconditionally, as the filter's
@@ -9,8 +10,8 @@
 // product) that have no GLSL version yet. In single precision these forms
 // are NOT accurate everywhere in the generic region: the upward recurrence
 // and the cancellations the C++ target's stable rewrites avoid cost far more
-// than float's 6e-8 (docs/glsl.md has the measured errors per family and
-// degree, tests/glsl/check_glsl_numeric.py measures them).
+// than float's 6e-8 (tests/glsl/check_glsl_numeric.py measures them per
+// family, degree and side of P; docs/view.md lists them).
 #include "glsl_writer.hpp"
 
 #include <map>

@@ -17,6 +17,8 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& options) {
   CLI::App* view = app.add_subcommand("view", "Write an HTML page that shows the surface f = iso in a browser (WebGL2)");
   view->add_option("SKELETON", options.skeleton_path, "Skeleton file (JSON)")->required();
   view->add_option("-o,--output", options.output_path, "Output page: .html")->required();
+  view->add_flag("--mesh-preview", options.mesh_preview,
+                 "Embed a triangle mesh and rasterise it even where the page could ray-march (slow GPUs)");
   view->footer(R"(
 Writes one self-contained HTML file (no network needed to open it): a WebGL2
 ray marcher of the blended field with orbit and zoom (mouse), an iso slider,
@@ -36,6 +38,7 @@ int run_view(const ViewOptions& options) {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     ViewPageOptions page_options;
     page_options.name = std::filesystem::path(options.skeleton_path).filename().string();
+    page_options.force_mesh_preview = options.mesh_preview;
     std::string page;
     ViewPageReport report;
     try {

@@ -573,6 +573,7 @@ std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& opti
   ViewPageReport& r = report ? *report : local;
   try {
     r = ViewPageReport{};
+    if (options.force_mesh_preview) throw InputError("the mesh preview was asked for (--mesh-preview)");
     return ray_march_page(skeleton, options);
   } catch (const InputError& refusal) {
     if (!options.mesh_preview) throw;

@@ -15,7 +15,8 @@ tests/data/view: weights, sum nodes, every family, and refusals):
     shader whose data holds a non-empty triangle mesh (base64 arrays of the
     announced sizes, indices in range, vertices on the surface's scale) and
     the reason, naming the JSON path of the first element the ray marcher
-    cannot show; stdout says "mode: mesh preview";
+    cannot show; stdout says "mode: mesh preview" (and so for the first
+    ray-marched skeleton with --mesh-preview);
   - a skeleton named no_surface_*.json (the ray marcher refuses it and the
     field stays below iso) must be refused: exit 2, one "skelconv: error:"
     line naming "iso", no file.
@@ -198,6 +199,13 @@ def check_folder(skelconv, folder, scratch, validator, fault):
                 continue
             shown += 1
             problems += check_page(path.name, output.read_text(), skeleton, terms, scratch, validator, fault)
+            if shown == 1:
+                # --mesh-preview: the preview even where the page could ray-march.
+                forced = subprocess.run([skelconv, "view", str(path), "-o", str(output), "--mesh-preview"],
+                                        capture_output=True, text=True)
+                if forced.returncode != 0 or "mode: mesh preview" not in forced.stdout or \
+                        '"mode": "mesh preview"' not in output.read_text():
+                    problems.append(f"{path.name}: --mesh-preview did not give the mesh preview: {forced.stdout!r}")
             print(f"check_view_pages: {path.name}: page of {len(terms)} primitives, {output.stat().st_size} bytes")
         else:
             if run.returncode != 0 or not output.exists():

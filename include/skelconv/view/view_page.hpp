@@ -53,6 +53,8 @@ struct ViewPageOptions {
   double iso_range = 4.0;
   /// Fall back to the mesh preview where the ray marcher cannot draw.
   bool mesh_preview = true;
+  /// The mesh preview whatever the skeleton (a slow GPU, a large skeleton).
+  bool force_mesh_preview = false;
 };
 
 /// What make_view_page made.
