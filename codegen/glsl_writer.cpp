@@ -1,4 +1,5 @@
-// codegen/glsl_writer.cpp — see glsl_writer.hpp.
+// codegen/glsl_writer.cpp — see glsl_writer.hpp. Segment and SCALIS
+// segment kernels; the point kernels are glsl_point_writer.cpp's.
 //
 // The GLSL functions are the programs' Forms::fast emission (the generic
 // alternative of every stable-form choice, unconditionally, as the filter's
@@ -9,8 +10,8 @@
 // product) that have no GLSL version yet. In single precision these forms
 // are NOT accurate everywhere in the generic region: the upward recurrence
 // and the cancellations the C++ target's stable rewrites avoid cost far more
-// than float's 6e-8 (docs/glsl.md has the measured errors per family and
-// degree, tests/glsl/check_glsl_numeric.py measures them).
+// than float's 6e-8 (tests/glsl/check_glsl_numeric.py measures them per
+// family, degree and side of P; docs/view.md lists them).
 #include "glsl_writer.hpp"
 
 #include <map>
@@ -65,8 +66,8 @@ std::string to_glsl(const std::string& cpp_body) {
   return out.str();
 }
 
-// The input block every file declares once (the guard lets a shader
-// concatenate several families): the fields of SegmentInput that the
+// The input block every segment file declares once (the guard lets a
+// shader concatenate several families): the fields of SegmentInput that the
 // kernels read (skelconv/primitives/segment_input.hpp).
 constexpr const char* kGlslSegmentInput =
     "#ifndef SKELCONV_SEGMENT_INPUT\n"
@@ -77,7 +78,25 @@ constexpr const char* kGlslSegmentInput =
     "// caller clips, as skelconv/detail/clip.hpp does).\n"
     "struct SegmentInput {\n"
     "  vec3 a;\n  vec3 b;\n  vec3 p;\n  vec4 w;\n  float s;\n  float R;\n  float t0;\n  float t1;\n"
-    "};\n\n"
+    "};\n"
+    "#endif\n\n";
+
+// The same for the SCALIS segment files: ScalisSegmentInput
+// (skelconv/primitives/scalis_segment_input.hpp).
+constexpr const char* kGlslScalisInput =
+    "#ifndef SKELCONV_SCALIS_SEGMENT_INPUT\n"
+    "#define SKELCONV_SCALIS_SEGMENT_INPUT\n"
+    "// The segment AB, the query point p, the radii tau0 at A and tau1 at B\n"
+    "// (>= 0, not both 0) and the kernel scale sigma (SPEC sec. 4).\n"
+    "struct ScalisSegmentInput {\n"
+    "  vec3 a;\n  vec3 b;\n  vec3 p;\n  float tau0;\n  float tau1;\n  float sigma;\n"
+    "};\n"
+    "#endif\n\n";
+
+// The helpers every file may call, under their own guard.
+constexpr const char* kGlslHelpers =
+    "#ifndef SKELCONV_GLSL_HELPERS\n"
+    "#define SKELCONV_GLSL_HELPERS\n"
     "// asinh without the losses of log(x + sqrt(x^2 + 1)), the form GPU\n"
     "// libraries may use: odd symmetry (no cancellation for x < 0), log1p of\n"
     "// u = |x| + x^2 / (1 + sqrt(1 + x^2)) by Kahan's log(1 + u) u / ((1 + u) - 1)\n"
@@ -93,18 +112,86 @@ constexpr const char* kGlslSegmentInput =
     "}\n"
     "#endif\n\n";
 
-std::string glsl_function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {
+// The GLSL form of the SCALIS prologue (scalis_segment_writer.cpp's
+// kScalisPrologue): the ends ordered so that tau_lo <= tau_hi.
+constexpr const char* kGlslScalisPrologue =
+    "  // Ends ordered so that tau_lo <= tau_hi (delta tau >= 0: no cancellation in the weight).\n"
+    "  bool swap_ends = si.tau1 < si.tau0;\n"
+    "  vec3 end_a = swap_ends ? si.b : si.a;\n"
+    "  vec3 end_b = swap_ends ? si.a : si.b;\n"
+    "  float tau_lo = swap_ends ? si.tau1 : si.tau0;\n"
+    "  float tau_hi = swap_ends ? si.tau0 : si.tau1;\n";
+
+// Kernels left out of a file (their generic path calls a helper), as a
+// comment wrapped at about 80 columns.
+std::string left_out_text(const std::string& names_text) {
   std::ostringstream os;
-  const std::string name = spec.name() + "_" + kFunctionSuffix[which];
+  std::istringstream names(names_text);
+  os << "// Left out (their generic path calls a Gauss rule or a loop):\n//";
+  size_t column = 2;
+  for (std::string n; names >> n; column += n.size() + 1) {
+    if (column + n.size() + 1 > 80) {
+      os << "\n//";
+      column = 2;
+    }
+    os << ' ' << n;
+  }
+  os << '\n';
+  return os.str();
+}
+
+// One function: `which` 0 for f, 2 for f and grad f; `input` the input
+// struct's name, `prologue` GLSL statements before the program's.
+std::string glsl_function_text(const std::string& kernel, const std::string& equation, const std::string& input,
+                               const char* prologue, int which, const EmittedCode& code) {
+  std::ostringstream os;
+  const std::string name = kernel + "_" + kFunctionSuffix[which];
   os << "// " << (which == 0 ? "the field" : "the field and its gradient") << ", where\n"
-     << "//     " << glsl_ascii(spec.equation()) << "\n"
+     << "//     " << glsl_ascii(equation) << "\n"
      << "// Operations: " << glsl_ascii(ops_text(code.ops)) << " (generic form).\n";
   if (which == 0)
-    os << "float " << name << "(SegmentInput si) {\n";
+    os << "float " << name << "(" << input << " si) {\n";
   else
-    os << "float " << name << "(SegmentInput si, out vec3 grad) {\n";
-  os << "  float f;\n" << to_glsl(code.body) << "  return f;\n}\n\n";
+    os << "float " << name << "(" << input << " si, out vec3 grad) {\n";
+  os << "  float f;\n" << prologue << to_glsl(code.body) << "  return f;\n}\n\n";
   return os.str();
+}
+
+// f and (f, grad f): a ray marcher needs the first per step and the second
+// per hit; grad f alone is the second's gradient.
+constexpr int kGlslEmitted[] = {0, 2};
+
+// generated/glsl/scalis_segment_<family>.glsl: the SCALIS segment kernels
+// (SPEC sec. 4), unnormalised F as the C++ target's (f = c F / h is the
+// caller's), the program's fast forms after the GLSL prologue.
+void write_glsl_scalis(const GeneratorRequest& request, const std::filesystem::path& folder) {
+  std::map<KernelFamily, std::string> bodies, left_out;
+  for (const ScalisKernelSpec& spec : request.scalis_segment_kernels) {
+    std::string text;
+    bool available = true;
+    for (int which : kGlslEmitted) {
+      const EmittedCode code = build_scalis_segment_program(spec, kOutputs[which]).emit(Forms::fast);
+      if (!code.fast_available) {
+        available = false;
+        break;
+      }
+      text += glsl_function_text(spec.name(), spec.equation(), "ScalisSegmentInput", kGlslScalisPrologue, which, code);
+    }
+    (available ? bodies : left_out)[spec.family] += available ? text : " " + spec.name();
+  }
+  for (const auto& [family, body] : bodies) {
+    const std::string file = "scalis_segment_" + std::string(family_name(family)) + ".glsl";
+    std::ostringstream os;
+    os << glsl_ascii(file_header("glsl/" + file,
+                                 "SCALIS segment kernels of the " + std::string(family_name(family)) +
+                                     " family in GLSL (float; ES 3.00 and 4.50), generic forms only.",
+                                 request))
+       << "// Unnormalised, as generated/scalis_segment_" << family_name(family)
+       << ".hpp: f = c F / h is the caller's\n// (skelconv/primitives/scalis_segment.hpp).\n";
+    if (left_out.count(family)) os << left_out_text(left_out[family]);
+    os << "\n" << kGlslScalisInput << kGlslHelpers << body;
+    write_file(folder / file, os.str());
+  }
 }
 
 }  // namespace
@@ -112,9 +199,6 @@ std::string glsl_function_text(const SegmentKernelSpec& spec, int which, const E
 void write_glsl_folder(const GeneratorRequest& request, const std::filesystem::path& folder) {
   std::filesystem::create_directories(folder);
   std::map<KernelFamily, std::string> bodies, left_out;
-  // f and (f, grad f): a ray marcher needs the first per step and the second
-  // per hit; grad f alone is the second's gradient.
-  const int kGlslEmitted[] = {0, 2};
   for (const SegmentKernelSpec& spec : request.segment_kernels) {
     std::string text;
     bool available = true;
@@ -124,7 +208,7 @@ void write_glsl_folder(const GeneratorRequest& request, const std::filesystem::p
         available = false;
         break;
       }
-      text += glsl_function_text(spec, which, code);
+      text += glsl_function_text(spec.name(), spec.equation(), "SegmentInput", "", which, code);
     }
     if (available)
       bodies[spec.family] += text;
@@ -138,23 +222,12 @@ void write_glsl_folder(const GeneratorRequest& request, const std::filesystem::p
                             "segment kernels of the " + std::string(family_name(family)) +
                                 " family in GLSL (float; ES 3.00 and 4.50), generic forms only.",
                             request));
-    if (left_out.count(family)) {
-      // Wrap the list at about 80 columns.
-      std::istringstream names(left_out[family]);
-      os << "// Left out (their generic path calls a Gauss rule or a loop):\n//";
-      size_t column = 2;
-      for (std::string n; names >> n; column += n.size() + 1) {
-        if (column + n.size() + 1 > 80) {
-          os << "\n//";
-          column = 2;
-        }
-        os << ' ' << n;
-      }
-      os << '\n';
-    }
-    os << "\n" << kGlslSegmentInput << body;
+    if (left_out.count(family)) os << left_out_text(left_out[family]);
+    os << "\n" << kGlslSegmentInput << kGlslHelpers << body;
     write_file(folder / ("segment_" + std::string(family_name(family)) + ".glsl"), os.str());
   }
+  write_glsl_scalis(request, folder);
+  write_glsl_points(request, folder);
 }
 
 }  // namespace skelconv::codegen

@@ -1,5 +1,5 @@
 // codegen/glsl_writer.hpp — the GLSL target: writes generated/glsl/, the
-// segment kernels in single precision for shaders (WebGL2 / GLSL ES 3.00 and
+// segment and point kernels in single precision for shaders (WebGL2 / GLSL ES 3.00 and
 // desktop GLSL 4.50), from the same straight-line programs as the C++ files.
 #pragma once
 
@@ -14,6 +14,11 @@ namespace skelconv::codegen {
 /// helper loop); kernels without one are listed in the file header as left
 /// out. Call it after write_generated_folder: building programs creates
 /// GiNaC symbols, and the C++ files must not see them. Same request, same bytes.
+/// Also writes point.glsl (write_glsl_points).
 void write_glsl_folder(const GeneratorRequest& request, const std::filesystem::path& folder);
+
+/// Writes generated/glsl/point.glsl: f = w K(r) and its gradient for every
+/// radial kernel family a point takes (codegen/glsl_point_writer.cpp).
+void write_glsl_points(const GeneratorRequest& request, const std::filesystem::path& folder);
 
 }  // namespace skelconv::codegen

@@ -10,12 +10,16 @@ The gallery is written from one record per figure, papers_figures/results/NAME.j
                             from every registered figure's record;
   --gallery-only PATH       rewrites the gallery from the records alone (seconds,
                             nothing drawn; a figure without a record is an error
-                            naming the command that makes it)."""
+                            naming the command that makes it).
+The gallery links an interactive page (`skelconv view`, docs/view.md) per
+skeleton file a figure lists, papers_figures/views/NAME.html: --gallery
+writes them, and so does --views alone (with --skelconv; seconds)."""
 import argparse
 import importlib
 import json
 import os
 import shutil
+import subprocess
 import sys
 import time
 
@@ -107,6 +111,27 @@ def load_record(gallery_path, name):
             "claims": [Claim(**c) for c in record["claims"]]}
 
 
+def listed_skeletons():
+    """Every skeleton file a registered figure lists, once each, sorted."""
+    return sorted({s for name in registered() for s in importlib.import_module(f"figures.{name}").FIGURE.skeletons})
+
+
+def write_views(skelconv, gallery_path):
+    """The `skelconv view` page of every listed skeleton, beside the gallery in views/."""
+    root = os.path.dirname(os.path.abspath(gallery_path))
+    os.makedirs(os.path.join(root, "views"), exist_ok=True)
+    for skeleton in listed_skeletons():
+        page = os.path.join(root, "views", gallery.view_name(skeleton))
+        run = subprocess.run([skelconv, "view", os.path.join(HERE, "skeletons", skeleton), "-o", page],
+                             capture_output=True, text=True)
+        if run.returncode != 0:
+            print(f"run.py: skelconv view {skeleton} failed: {run.stderr.strip()}", file=sys.stderr)
+            return 1
+        mode = [line for line in run.stdout.splitlines() if line.startswith("mode:")]
+        print(f"views/{gallery.view_name(skeleton)}: {mode[0] if mode else ''}")
+    return 0
+
+
 def write_gallery(gallery_path, compare=False):
     """Rewrites the gallery from the records of every registered figure (2 if one
     has none). compare: write nothing, return 1 unless the file already holds that
@@ -124,10 +149,13 @@ def write_gallery(gallery_path, compare=False):
         return 0
     images = [r["image"] for r in results if r["image"]]
     absent = [i for i in images if not os.path.exists(record_paths(gallery_path, os.path.splitext(i)[0])[1])]
+    root = os.path.dirname(os.path.abspath(gallery_path))
+    absent += [f"views/{gallery.view_name(s)}" for s in listed_skeletons()
+               if not os.path.exists(os.path.join(root, "views", gallery.view_name(s)))]
     with open(gallery_path) as handle:
         current = handle.read() == gallery.text(results, pending())
     if absent or not current:
-        print(f"run.py: {gallery_path} is not what its records give" + (f"; images missing: {', '.join(absent)}"
+        print(f"run.py: {gallery_path} is not what its records give" + (f"; images or views missing: {', '.join(absent)}"
               if absent else "") + ": run scripts/figures.sh --gallery-only", file=sys.stderr)
         return 1
     print(f"{gallery_path}: current ({len(records)} records, {len(images)} images)")
@@ -147,7 +175,13 @@ def main():
                                           "then rewrite it")
     parser.add_argument("--gallery-only", metavar="GALLERY", help="rewrite this GALLERY.md from the records, "
                                                                   "drawing nothing")
+    parser.add_argument("--views", metavar="GALLERY", help="write the `skelconv view` pages beside this GALLERY.md "
+                                                           "(views/), drawing nothing (needs --skelconv)")
     args = parser.parse_args()
+    if args.views:
+        if not args.skelconv:
+            parser.error("--views needs --skelconv")
+        return write_views(args.skelconv, args.views)
     if args.gallery_only:
         return write_gallery(args.gallery_only, compare=args.check)
     if not args.skelconv or not args.out:
@@ -178,7 +212,7 @@ def main():
     if args.gallery:           # written even when a claim is not as expected: the gallery shows it
         for r in results:
             save_record(args.gallery, r)
-        status = write_gallery(args.gallery)
+        status = write_views(args.skelconv, args.gallery) or write_gallery(args.gallery)
     bad = [(r["name"], c.statement) for r in results for c in r["claims"] if not c.as_expected]
     print(f"{len(results)} figures/tables, {sum(len(r['claims']) for r in results)} claims, "
           f"{len(bad)} not as expected, {elapsed:.1f} s")

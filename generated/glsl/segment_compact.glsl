@@ -34,7 +34,10 @@ struct SegmentInput {
   float t0;
   float t1;
 };
+#endif
 
+#ifndef SKELCONV_GLSL_HELPERS
+#define SKELCONV_GLSL_HELPERS
 // asinh without the losses of log(x + sqrt(x^2 + 1)), the form GPU
 // libraries may use: odd symmetry (no cancellation for x < 0), log1p of
 // u = |x| + x^2 / (1 + sqrt(1 + x^2)) by Kahan's log(1 + u) u / ((1 + u) - 1)

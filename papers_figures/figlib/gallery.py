@@ -43,6 +43,11 @@ direction, light and colour for every figure). Its test mesh, a UV sphere writte
 """
 
 
+def view_name(skeleton):
+    """The page of `skelconv view` for a skeleton file, in papers_figures/views/."""
+    return os.path.splitext(skeleton)[0] + ".html"
+
+
 def claim_rows(claims, experiment=False):
     """A paper's figure compares the paper's statement with our number; an experiment of this
     project compares its goal (the project's target, not a paper's word) with our number."""
@@ -69,6 +74,8 @@ def entry(result, image_dir_rel):
     details = []
     if fig.skeletons:
         details.append("skeleton: " + ", ".join(f"[`{s}`](skeletons/{s})" for s in fig.skeletons))
+        details.append("interactive view (`skelconv view`; open in a browser with WebGL2, docs/view.md): " +
+                       ", ".join(f"[`{view_name(s)}`](views/{view_name(s)})" for s in fig.skeletons))
     for label, value in (("kernel", fig.kernel), ("iso", fig.iso), ("view", fig.view)):
         if value:
             details.append(f"{label}: {value}")

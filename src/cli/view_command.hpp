@@ -16,6 +16,7 @@ namespace skelconv::cli {
 struct ViewOptions {
   std::string skeleton_path;
   std::string output_path;
+  bool mesh_preview = false;  ///< --mesh-preview: the mesh preview whatever the skeleton
 };
 
 /// Registers the `view` subcommand on `app`, filling `options` when parsed.

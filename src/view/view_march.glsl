@@ -1,6 +1,6 @@
 // src/view/view_march.glsl - the fragment shader of `skelconv view`
-// (docs/view.md): ray marching of the surface f = iso of a sum of segment
-// primitives, shaded with grad f.
+// (docs/view.md): ray marching of the surface f = iso of a sum of segment,
+// point and SCALIS segment primitives, shaded with grad f.
 //
 // skelconv view (src/view/view_page.cpp) fills the three markers below: the
 // kernels of generated/glsl/ the skeleton uses, the functions that dispatch
@@ -9,13 +9,31 @@
 // two (view_page.hpp), which keeps float far from overflow and underflow.
 //
 // Primitive k is row k of u_primitives (RGBA32F, 4 texels wide):
-//   texel 0: A.xyz, kernel index (kernel_f below)
-//   texel 1: B.xyz, the family: 0 inverse, 1 compact, 2 Cauchy
-//   texel 2: w0 .. w3, the weight polynomial
+//   texel 0: A.xyz (a point's centre), kernel index (kernel_f below)
+//   texel 1: B.xyz (= A for a point), the family code:
+//            0 inverse segment, 1 compact segment, 2 Cauchy segment,
+//            4 SCALIS inverse, 5 SCALIS Cauchy, 6 inverse point,
+//            7 Cauchy point, 8 point with a support radius R (compact,
+//            soft, wyvill, ferley), 9 Gaussian point
+//   texel 2: segments: w0 .. w3, the weight polynomial; SCALIS: tau0, tau1,
+//            sigma; points: the degree i, Ferley's e, the Gaussian's a, b
 //   texel 3: s, R, c (its weight in the sum, 0 when toggled off), then the
-//            degree i (inverse, Cauchy) or the Lipschitz bound c L (compact)
+//            degree i (inverse, Cauchy, SCALIS) or the Lipschitz bound c L
+//            (codes 1, 8, 9)
 
 //@@KERNELS@@
+
+// One primitive's row of u_primitives (below).
+struct Row {
+  vec4 t0;
+  vec4 t1;
+  vec4 t2;
+  vec4 t3;
+};
+
+SegmentInput segment_input(Row r, vec3 p);
+ScalisSegmentInput scalis_input(Row r, vec3 p);
+PointInput point_input(Row r, vec3 p);
 
 //@@DISPATCH@@
 
@@ -43,39 +61,47 @@ out vec4 colour;
 // The field at p and what the step bound needs (safe_step).
 struct Probe {
   float f;          // the sum
-  float f_ratio;    // its inverse and Cauchy part
-  float d_inverse;  // the least distance from p to the inverse segments
+  float f_ratio;    // its part bounded by ratios (inverse, Cauchy, SCALIS)
+  float d_inverse;  // the least distance from p to the inverse-like elements
   float i_inverse;  // their largest degree
-  float d_cauchy;   // the same for the Cauchy segments
+  float d_cauchy;   // the same for the Cauchy segments and points
   float i_cauchy;
   float s_cauchy;   // their largest s
-  float lip_near;   // sum of c L of the compact segments whose support holds p
+  float lip_near;   // sum of c L of the supported terms whose support holds p
   float lip_far;    // the same for the others
   float gap_far;    // the least distance from p to the support of those
 };
 
-SegmentInput segment_input(int k, vec3 p, out vec4 t0, out vec4 t1, out vec4 t3, out float dist) {
-  t0 = texelFetch(u_primitives, ivec2(0, k), 0);
-  t1 = texelFetch(u_primitives, ivec2(1, k), 0);
-  vec4 t2 = texelFetch(u_primitives, ivec2(2, k), 0);
-  t3 = texelFetch(u_primitives, ivec2(3, k), 0);
+Row row(int k) {
+  return Row(texelFetch(u_primitives, ivec2(0, k), 0), texelFetch(u_primitives, ivec2(1, k), 0),
+             texelFetch(u_primitives, ivec2(2, k), 0), texelFetch(u_primitives, ivec2(3, k), 0));
+}
+
+// The distance from p to the element AB (a point when A = B).
+float element_distance(Row r, vec3 p) {
+  vec3 ab = r.t1.xyz - r.t0.xyz;
+  vec3 ap = p - r.t0.xyz;
+  float ab_ab = dot(ab, ab);
+  float t = ab_ab > 0.0 ? clamp(dot(ab, ap) / ab_ab, 0.0, 1.0) : 0.0;
+  return length(ap - t * ab);
+}
+
+SegmentInput segment_input(Row r, vec3 p) {
   SegmentInput si;
-  si.a = t0.xyz;
-  si.b = t1.xyz;
+  si.a = r.t0.xyz;
+  si.b = r.t1.xyz;
   si.p = p;
-  si.w = t2;
-  si.s = t3.x;
-  si.R = t3.y;
+  si.w = r.t2;
+  si.s = r.t3.x;
+  si.R = r.t3.y;
   si.t0 = 0.0;
   si.t1 = 1.0;
-  vec3 ab = si.b - si.a;
-  vec3 ap = p - si.a;
-  float ab_ab = dot(ab, ab);
-  float t = clamp(dot(ab, ap) / ab_ab, 0.0, 1.0);
-  dist = length(ap - t * ab);
-  if (t1.w == 1.0) {
+  if (r.t1.w == 1.0) {
     // The part of AB inside the ball of radius R around p, as
     // skelconv/detail/clip.hpp: the discriminant from the cross product.
+    vec3 ab = si.b - si.a;
+    vec3 ap = p - si.a;
+    float ab_ab = dot(ab, ab);
     vec3 c = cross(ab, ap);
     float disc = ab_ab * si.R * si.R - dot(c, c);
     float centre = dot(ab, ap) / ab_ab;
@@ -86,14 +112,22 @@ SegmentInput segment_input(int k, vec3 p, out vec4 t0, out vec4 t1, out vec4 t3,
   return si;
 }
 
+ScalisSegmentInput scalis_input(Row r, vec3 p) {
+  return ScalisSegmentInput(r.t0.xyz, r.t1.xyz, p, r.t2.x, r.t2.y, r.t2.z);
+}
+
+PointInput point_input(Row r, vec3 p) {
+  return PointInput(r.t0.xyz, p, 1.0, r.t2.x, r.t3.x, r.t3.y, r.t2.y, r.t2.z, r.t2.w);
+}
+
 // Beyond an end of its segment (the projection of p outside [0, 1]) an
-// inverse or Cauchy term is integrated here rather than by its generated
-// generic form: in float those lose digits there, most near the segment's
-// line (0/0 on it; docs/view.md, tests/glsl/probe_beyond_end.py), as the
-// C++ target's stable forms avoid with a Gauss rule too. The integrand
-// w(t) K(|p - G(t)|) is smooth there: with s the distance along AB from the
-// nearer end in units of |AB| and rho = |p - end| / |AB|, panels
-// [s_k, s_k+1] of width s_k + rho (at most the distance to p, so the
+// inverse or Cauchy term, plain or SCALIS, is integrated here rather than by
+// its generated generic form: in float those lose digits there, most near
+// the segment's line (0/0 on it; docs/view.md,
+// tests/glsl/probe_beyond_end.py), as the C++ target's stable forms avoid
+// with a Gauss rule too. The integrand is smooth there: with s the distance
+// along AB from the nearer end in units of |AB| and rho = |p - end| / |AB|,
+// panels [s_k, s_k+1] of width s_k + rho (at most the distance to p, so the
 // nearest complex singularity of the integrand is a panel width away) and
 // 8 Gauss-Legendre nodes each keep the rule's error below float's.
 const float gauss_x[8] = float[8](0.019855072, 0.101666761, 0.237233795, 0.408282679,
@@ -104,23 +138,32 @@ const float gauss_w[8] = float[8](0.050614268, 0.111190517, 0.156853323, 0.18134
 // any surface): the last panel then stretches to the far end.
 const int max_panels = 20;
 
-bool beyond_end(SegmentInput si) {
-  vec3 ab = si.b - si.a;
-  float t = dot(si.p - si.a, ab) / dot(ab, ab);
+bool beyond_end(Row r, vec3 p) {
+  vec3 ab = r.t1.xyz - r.t0.xyz;
+  float t = dot(p - r.t0.xyz, ab) / dot(ab, ab);
   return t < 0.0 || t > 1.0;
 }
 
-// f (and grad f) of an inverse (family 0) or Cauchy (family 2) term of
-// degree i at a point beyond an end: K = base^(-i/2) with base = r^2 or
-// 1 + s r^2, so grad K = -i alpha K / base (p - G(t)), alpha = 1 or s.
-float segment_by_quadrature(SegmentInput si, float family, float degree, out vec3 grad) {
-  vec3 ab = si.b - si.a;
+// f (and grad f) of a term of degree i at a point beyond an end, as
+// |AB| int_0^1 v(t) base(t)^(-i/2) dt with d = p - G(t) and
+//   inverse segment (code 0)  v = w(t),                 base = |d|^2
+//   Cauchy segment (code 2)   v = w(t),                 base = 1 + s |d|^2
+//   SCALIS inverse (code 4)   v = sigma^i tau(t)^(i-1), base = |d|^2
+//   SCALIS Cauchy (code 5)    v = sigma^i tau(t)^(i-1), base = |d|^2 + sigma^2 tau(t)^2
+// (the definitions of generated/glsl/), so grad = -i alpha |AB| int v
+// base^(-i/2-1) d dt with alpha = s (code 2) or 1.
+float segment_by_quadrature(Row r, vec3 p, out vec3 grad) {
+  float code = r.t1.w, degree = r.t3.w;
+  vec3 a = r.t0.xyz, ab = r.t1.xyz - r.t0.xyz;
   float length_ab = length(ab);
-  bool at_b = dot(si.p - si.a, ab) > 0.0;
+  bool at_b = dot(p - a, ab) > 0.0;
   float end = at_b ? 1.0 : 0.0, direction = at_b ? -1.0 : 1.0;
-  float rho = length(si.p - (at_b ? si.b : si.a)) / length_ab;
-  float alpha = family == 0.0 ? 1.0 : si.s;
-  float offset = family == 0.0 ? 0.0 : 1.0;
+  float rho = length(p - (at_b ? r.t1.xyz : a)) / length_ab;
+  bool scalis = code >= 4.0;
+  float alpha = code == 2.0 ? r.t3.x : 1.0;
+  float offset = code == 2.0 ? 1.0 : 0.0;
+  float sigma = r.t2.z, scale = scalis ? pow(sigma, degree) : 1.0;
+  float sigma2 = code == 5.0 ? sigma * sigma : 0.0;
   float f = 0.0;
   grad = vec3(0.0);
   float low = 0.0;
@@ -128,10 +171,13 @@ float segment_by_quadrature(SegmentInput si, float family, float degree, out vec
     float high = k == max_panels - 1 ? 1.0 : min(1.0, 2.0 * low + rho);
     for (int j = 0; j < 8; ++j) {
       float t = end + direction * (low + (high - low) * gauss_x[j]);
-      vec3 d = si.p - (si.a + t * ab);
-      float base = offset + alpha * dot(d, d);
+      vec3 d = p - (a + t * ab);
+      float tau = r.t2.x + (r.t2.y - r.t2.x) * t;
+      float base = offset + alpha * dot(d, d) + sigma2 * tau * tau;
       float kernel = pow(base, -0.5 * degree);
-      float weight = (high - low) * gauss_w[j] * (si.w.x + t * (si.w.y + t * (si.w.z + t * si.w.w)));
+      vec4 w = r.t2;
+      float v = scalis ? scale * pow(tau, degree - 1.0) : w.x + t * (w.y + t * (w.z + t * w.w));
+      float weight = (high - low) * gauss_w[j] * v;
       f += weight * kernel;
       grad += (weight * kernel / base) * d;
     }
@@ -141,43 +187,55 @@ float segment_by_quadrature(SegmentInput si, float family, float degree, out vec
   return f * length_ab;
 }
 
-// One term c f_k (and its gradient when `with_grad`): the generated kernel,
-// or the quadrature beyond an end for inverse and Cauchy kernels.
-float term(int kernel, float family, float degree, SegmentInput si, bool with_grad, out vec3 grad) {
+// One term f_k (and its gradient when `with_grad`; weight c not applied):
+// the generated kernel, or the quadrature beyond an end for inverse and
+// Cauchy segments and SCALIS segments; 0 for a compact segment whose clipped
+// part is empty.
+float term(Row r, vec3 p, bool with_grad, out vec3 grad) {
   grad = vec3(0.0);
-  if (family != 1.0 && beyond_end(si)) return segment_by_quadrature(si, family, degree, grad);
-  if (with_grad) return kernel_f_and_grad(kernel, si, grad);
-  return kernel_f(kernel, si);
+  float code = r.t1.w;
+  int kernel = int(r.t0.w);
+  if ((code == 0.0 || code == 2.0 || code == 4.0 || code == 5.0) && beyond_end(r, p))
+    return segment_by_quadrature(r, p, grad);
+  if (code == 1.0) {
+    SegmentInput si = segment_input(r, p);
+    if (!(si.t0 < si.t1)) return 0.0;
+  }
+  if (with_grad) return kernel_f_and_grad(kernel, r, p, grad);
+  return kernel_f(kernel, r, p);
 }
 
 Probe probe(vec3 p) {
   Probe pr = Probe(0.0, 0.0, 1e30, 0.0, 1e30, 0.0, 0.0, 0.0, 0.0, 1e30);
   for (int k = 0; k < primitive_count; ++k) {
-    vec4 t0, t1, t3;
-    float dist;
-    SegmentInput si = segment_input(k, p, t0, t1, t3, dist);
-    float c = t3.z;
+    Row r = row(k);
+    float c = r.t3.z;
     if (c == 0.0) continue;
-    if (t1.w == 1.0) {
-      if (dist < si.R) {
-        pr.lip_near += t3.w;
-        if (si.t0 < si.t1) pr.f += c * kernel_f(int(t0.w), si);
+    float code = r.t1.w;
+    float dist = element_distance(r, p);
+    vec3 unused;
+    if (code == 1.0 || code == 8.0) {
+      if (dist < r.t3.y) {
+        pr.lip_near += r.t3.w;
+        pr.f += c * term(r, p, false, unused);
       } else {
-        pr.lip_far += t3.w;
-        pr.gap_far = min(pr.gap_far, dist - si.R);
+        pr.lip_far += r.t3.w;
+        pr.gap_far = min(pr.gap_far, dist - r.t3.y);
       }
+    } else if (code == 9.0) {
+      pr.lip_near += r.t3.w;
+      pr.f += c * term(r, p, false, unused);
     } else {
-      vec3 unused;
-      float fk = c * term(int(t0.w), t1.w, t3.w, si, false, unused);
+      float fk = c * term(r, p, false, unused);
       pr.f += fk;
       pr.f_ratio += fk;
-      if (t1.w == 0.0) {
-        pr.d_inverse = min(pr.d_inverse, dist);
-        pr.i_inverse = max(pr.i_inverse, t3.w);
-      } else {
+      if (code == 2.0 || code == 7.0) {
         pr.d_cauchy = min(pr.d_cauchy, dist);
-        pr.i_cauchy = max(pr.i_cauchy, t3.w);
-        pr.s_cauchy = max(pr.s_cauchy, si.s);
+        pr.i_cauchy = max(pr.i_cauchy, r.t3.w);
+        pr.s_cauchy = max(pr.s_cauchy, r.t3.x);
+      } else {
+        pr.d_inverse = min(pr.d_inverse, dist);
+        pr.i_inverse = max(pr.i_inverse, r.t3.w);
       }
     }
   }
@@ -223,15 +281,11 @@ float field(vec3 p) { return probe(p).f; }
 vec3 field_gradient(vec3 p) {
   vec3 total = vec3(0.0);
   for (int k = 0; k < primitive_count; ++k) {
-    vec4 t0, t1, t3;
-    float dist;
-    SegmentInput si = segment_input(k, p, t0, t1, t3, dist);
-    if (t3.z == 0.0) continue;
-    if (t1.w == 1.0 && !(si.t0 < si.t1)) continue;
+    Row r = row(k);
+    if (r.t3.z == 0.0) continue;
     vec3 g;
-    if (t1.w == 1.0) kernel_f_and_grad(int(t0.w), si, g);
-    else term(int(t0.w), t1.w, t3.w, si, true, g);
-    total += t3.z * g;
+    term(r, p, true, g);
+    total += r.t3.z * g;
   }
   return total;
 }
@@ -273,8 +327,14 @@ void main() {
       return;
     }
     float s = safe_step(pr);
-    // A NaN (float failing in a generic form) gives the floor step.
-    if (!(s >= u_min_step)) s = u_min_step;
+    // The floor: half the footprint of a pixel at t (a surface the step
+    // jumps over is then thinner than half a pixel along the ray, below what
+    // the image resolves), and at least u_min_step. Without the footprint,
+    // rays grazing a compact term's surface (global Lipschitz bound, tiny
+    // margin) run out of steps and leave holes along its silhouette. A NaN
+    // (float failing in a generic form) also takes the floor.
+    float floor_step = max(u_min_step, u_tan_half_fov * t / u_resolution.y);
+    if (!(s >= floor_step)) s = floor_step;
     t_prev = t;
     t += s;
     if (t > t_far) return;

@@ -16,18 +16,44 @@
 #include <nlohmann/json.hpp>
 
 #include "embedded_text.hpp"
+#include "mesh_preview.hpp"
+#include "page_text.hpp"
 #include "skelconv/errors.hpp"
 
 namespace skelconv {
+
+using view_detail::field_of_view;
+using view_detail::fill;
+using view_detail::Frame;
+using view_detail::script_safe;
+using view_detail::vec_json;
+
 namespace {
 
-/// One term c · f_k of the field: a segment and its weight in the sum (the
-/// product of the sum weights on its path from the root).
+/// One term c · f_k of the field: a segment, point or SCALIS segment and its
+/// weight in the sum (the product of the sum weights on its path from the
+/// root).
 struct Term {
-  const Segment* segment = nullptr;
+  const Primitive* primitive = nullptr;
   std::string location;
   double c = 1.0;
+  /// The skeleton element in the world: a segment AB (A = B = the centre
+  /// for a point).
+  Vec3 a() const;
+  Vec3 b() const;
 };
+
+Vec3 Term::a() const {
+  if (const auto* s = std::get_if<Segment>(primitive)) return s->a();
+  if (const auto* s = std::get_if<ScalisSegment>(primitive)) return s->a();
+  return std::get<PointPrimitive>(*primitive).center();
+}
+
+Vec3 Term::b() const {
+  if (const auto* s = std::get_if<Segment>(primitive)) return s->b();
+  if (const auto* s = std::get_if<ScalisSegment>(primitive)) return s->b();
+  return std::get<PointPrimitive>(*primitive).center();
+}
 
 /// The terms of the tree under node `id` (located at `where`), weights
 /// multiplied down. Refuses every node the shader cannot evaluate.
@@ -54,15 +80,15 @@ void collect_terms(const Skeleton& skeleton, Skeleton::NodeId id, const std::str
       continue;
     }
     const Primitive& primitive = skeleton.primitives()[index];
-    const Segment* segment = std::get_if<Segment>(&primitive);
-    if (segment == nullptr) {
+    if (!std::holds_alternative<Segment>(primitive) && !std::holds_alternative<PointPrimitive>(primitive) &&
+        !std::holds_alternative<ScalisSegment>(primitive)) {
       static constexpr const char* kNames[] = {"segment", "polygon", "scalis_segment", "scalis_triangle", "point"};
-      throw InputError(fmt::format("type \"{}\": skelconv view shows segments only (the GLSL target, "
-                                   "generated/glsl/, has segment kernels only; docs/view.md)",
+      throw InputError(fmt::format("type \"{}\": the viewer's shader evaluates segments, points and SCALIS "
+                                   "segments (the kernels of generated/glsl/; docs/view.md)",
                                    kNames[primitive.index()]),
                        child);
     }
-    terms.push_back({segment, child, c * w});
+    terms.push_back({&primitive, child, c * w});
   }
 }
 
@@ -90,14 +116,19 @@ double weight_minimum(std::span<const double> w) {
   return least;
 }
 
-/// The text of the generated GLSL file of `family` (embedded).
-std::string_view glsl_file(KernelFamily family) {
-  switch (family) {
-    case KernelFamily::inverse: return embedded::segment_inverse_glsl;
-    case KernelFamily::cauchy: return embedded::segment_cauchy_glsl;
-    case KernelFamily::compact: return embedded::segment_compact_glsl;
-    default: return {};
-  }
+/// The generated GLSL file (embedded) that holds the kernel `name`
+/// ("segment_cauchy_i4_w1", "point_soft", "scalis_segment_inverse_i3").
+std::string_view glsl_file(std::string_view name) {
+  const std::pair<std::string_view, const char*> files[] = {
+      {"segment_inverse_", embedded::segment_inverse_glsl},
+      {"segment_cauchy_", embedded::segment_cauchy_glsl},
+      {"segment_compact_", embedded::segment_compact_glsl},
+      {"scalis_segment_inverse_", embedded::scalis_segment_inverse_glsl},
+      {"scalis_segment_cauchy_", embedded::scalis_segment_cauchy_glsl},
+      {"point_", embedded::point_glsl}};
+  for (const auto& [prefix, text] : files)
+    if (name.starts_with(prefix)) return text;
+  return {};
 }
 
 /// The function `signature` of `file` with its comment block, or "" when the
@@ -117,110 +148,242 @@ std::string glsl_function(std::string_view file, const std::string& signature) {
   return std::string(file.substr(begin, end + 3 - begin));
 }
 
-/// Checks that the GLSL files can evaluate `term`; returns the name of its
-/// kernel functions (without _f / _f_and_grad).
+/// Checks that the GLSL files can evaluate `term` and that the step bound
+/// holds for it; returns the name of its kernel functions (without _f /
+/// _f_and_grad).
 std::string check_term(const Term& term) {
-  const Segment& s = *term.segment;
-  const KernelSpec& kernel = s.kernel();
-  const std::string name = s.generated_name();
-  if (glsl_file(kernel.family).empty() || glsl_function(glsl_file(kernel.family), name + "_f(").empty()) {
-    throw InputError(fmt::format("kernel {} degree {} with a weight of degree {}: the GLSL target has no generic "
-                                 "form of it (generated/glsl/: inverse and cauchy, compact of odd degree)",
-                                 family_name(kernel.family), kernel.degree, s.weight_degree()),
-                     term.location + ".kernel");
-  }
-  if (kernel.family != KernelFamily::compact && weight_minimum(s.weight()) < 0.0) {
-    throw InputError("w(t) < 0 somewhere in [0, 1]: the viewer's step bound for inverse and Cauchy kernels needs "
-                     "w >= 0 (docs/view.md)",
-                     term.location + ".weight");
+  std::string name;
+  if (const auto* s = std::get_if<Segment>(term.primitive)) {
+    const KernelSpec& kernel = s->kernel();
+    name = s->generated_name();
+    if (kernel.family != KernelFamily::compact && weight_minimum(s->weight()) < 0.0) {
+      throw InputError("w(t) < 0 somewhere in [0, 1]: the viewer's step bound for inverse and Cauchy kernels needs "
+                       "w >= 0 (docs/view.md)",
+                       term.location + ".weight");
+    }
+    if (glsl_function(glsl_file(name), name + "_f(").empty()) {
+      throw InputError(fmt::format("kernel {} degree {} with a weight of degree {}: the GLSL target has no generic "
+                                   "form of it (generated/glsl/: inverse and cauchy, compact of odd degree)",
+                                   family_name(kernel.family), kernel.degree, s->weight_degree()),
+                       term.location + ".kernel");
+    }
+  } else if (const auto* s = std::get_if<ScalisSegment>(term.primitive)) {
+    name = s->evaluator_name();
+    if (glsl_function(glsl_file(name), name + "_f(").empty()) {
+      throw InputError(fmt::format("SCALIS kernel {} degree {}: the GLSL target has no form of it "
+                                   "(generated/glsl/: inverse and cauchy)",
+                                   family_name(s->kernel().family), s->kernel().degree),
+                       term.location + ".kernel");
+    }
+  } else {
+    const auto& point = std::get<PointPrimitive>(*term.primitive);
+    name = "point_" + std::string(family_name(point.kernel().family));
+    if (!(point.weight() > 0.0)) {
+      throw InputError("weight < 0: the viewer's step bound needs every term >= 0 (docs/view.md)",
+                       term.location + ".weight");
+    }
   }
   return name;
 }
 
-/// The camera's vertical field of view, radians (about 40 degrees: little
-/// perspective distortion, the object large in the window).
-constexpr double field_of_view = 0.7;
-
-/// The page's frame (file comment of view_page.hpp).
-struct Frame {
-  Vec3 centre = Vec3::Zero();
-  double scale = 1.0;
-  Vec3 to_page(const Vec3& p) const { return (p - centre) / scale; }
-};
-
 Frame page_frame(const std::vector<Term>& terms) {
   Vec3 low = Vec3::Constant(HUGE_VAL), high = Vec3::Constant(-HUGE_VAL);
   for (const Term& t : terms) {
-    low = low.cwiseMin(t.segment->a()).cwiseMin(t.segment->b());
-    high = high.cwiseMax(t.segment->a()).cwiseMax(t.segment->b());
+    low = low.cwiseMin(t.a()).cwiseMin(t.b());
+    high = high.cwiseMax(t.a()).cwiseMax(t.b());
   }
   Frame frame;
   if (terms.empty()) return frame;
   frame.centre = 0.5 * (low + high);
-  // A power of two: dividing by it is exact.
-  frame.scale = std::exp2(std::round(std::log2(std::max(0.5 * (high - low).norm(), 1e-300))));
+  // A power of two: dividing by it is exact. A single point: its kernel's
+  // own length, or 1.
+  double half_diagonal = 0.5 * (high - low).norm();
+  if (half_diagonal == 0.0) {
+    const KernelSpec& k = std::get<PointPrimitive>(*terms[0].primitive).kernel();
+    half_diagonal = k.family == KernelFamily::inverse ? 1.0
+                    : k.family == KernelFamily::cauchy ? 1.0 / std::sqrt(k.s)
+                    : k.family == KernelFamily::gaussian ? 1.0 / std::sqrt(k.a)
+                                                         : k.R;
+  }
+  frame.scale = std::exp2(std::round(std::log2(std::max(half_diagonal, 1e-300))));
   return frame;
 }
+
+/// The shader's family code of a term (view_march.glsl): how it is
+/// evaluated and which step bound it takes.
+enum class Code {
+  inverse_segment = 0,
+  compact_segment = 1,
+  cauchy_segment = 2,
+  scalis_inverse = 4,
+  scalis_cauchy = 5,
+  inverse_point = 6,
+  cauchy_point = 7,
+  supported_point = 8,  ///< compact, soft, wyvill, ferley: K = 0 beyond R
+  gaussian_point = 9,
+};
 
 /// One term in the page's frame, with what the step bound needs.
 struct PageTerm {
   Vec3 a, b;
+  Code code = Code::inverse_segment;
   double c = 0, s = 1, R = 1;
-  std::array<double, 4> w{};
+  /// The third texel: w0 .. w3 (segments), (tau0, tau1, sigma, 0) (SCALIS),
+  /// (i, e, a, b) (points).
+  std::array<double, 4> texel{};
   int degree = 1;
   KernelFamily family = KernelFamily::inverse;
-  double weight_bound = 0;  ///< Σ |w_j| / (j + 1) ≥ ∫_0^1 |w(t)| dt
+  /// The term is at most c · magnitude · K(r) at distance r from its
+  /// element (support_margin): |AB| Σ |w_j| / (j + 1) for a segment
+  /// (≥ |AB| ∫_0^1 |w(t)| dt), 1 for a point, |AB| σ^i max τ^(i−1) for a
+  /// SCALIS segment (its integrand is at most σ^i τ^(i−1) r^(−i)).
+  double magnitude = 0;
+  /// compact kinds: max_r |K'(r)| (the step's Lipschitz bound is c |AB| ∫|w| of it).
+  double slope = 0;
 };
 
-PageTerm page_term(const Term& term, const Frame& frame) {
-  const Segment& s = *term.segment;
+/// max_r |K'(r)| of the compact kernel (1 − r²/R²)^(i/2): i u (1 − u²)^((i−2)/2) / R
+/// with u = r/R, largest at u² = 1/(i − 1) for i ≥ 2 (at u = 1 for i = 2).
+double compact_slope_bound(int degree, double R) {
+  const double i = degree;
+  const double u = i > 2 ? 1.0 / std::sqrt(i - 1) : 1.0;
+  return i * u * std::pow(1.0 - u * u, 0.5 * (i - 2)) / R;
+}
+
+/// max_r |K'(r)| of a point's kernel with a support or a global bound
+/// (the maxima of |K'| in closed form, u = r/R):
+///   soft      4 u (1 − u²)/R, largest at u² = 1/3: 8/(3√3 R);
+///   wyvill    2 u (1 − u²)(22 − 12 u²)/(9R) = (44u − 68u³ + 24u⁵)/(9R),
+///             largest where 22 − 102 u² + 60 u⁴ = 0, u² = (102 − √5124)/120;
+///   ferley    k = 2/(R − e) on r < e, 2(R − r)/(R − e)² ≤ k beyond;
+///   gaussian  2abr exp(−ar²), largest at r = 1/√(2a): b √(2a) e^(−1/2).
+double point_slope_bound(const KernelSpec& k) {
+  switch (k.family) {
+    case KernelFamily::compact: return compact_slope_bound(k.degree, k.R);
+    case KernelFamily::soft: return 8.0 / (3.0 * std::sqrt(3.0) * k.R);
+    case KernelFamily::wyvill: {
+      const double u2 = (102.0 - std::sqrt(5124.0)) / 120.0, u = std::sqrt(u2);
+      return 2.0 * u * (1.0 - u2) * (22.0 - 12.0 * u2) / (9.0 * k.R);
+    }
+    case KernelFamily::ferley: return 2.0 / (k.R - k.e);
+    case KernelFamily::gaussian: return k.b * std::sqrt(2.0 * k.a) * std::exp(-0.5);
+    default: return 0.0;
+  }
+}
+
+/// The term's weight in the page's frame, refused beyond float's range.
+double page_weight(const Term& term, double c) {
+  if (term.c != 0.0 && !(c >= FLT_MIN && c <= FLT_MAX)) {
+    throw InputError(fmt::format("the weight of this term in the page's frame ({:.3g}) is out of float's range: "
+                                 "the skeleton is too large or too small for the viewer's float shader",
+                                 c),
+                     term.location);
+  }
+  return c;
+}
+
+PageTerm page_segment(const Term& term, const Segment& s, const Frame& frame) {
   PageTerm p;
-  p.a = frame.to_page(s.a());
-  p.b = frame.to_page(s.b());
   p.family = s.kernel().family;
+  p.code = p.family == KernelFamily::inverse  ? Code::inverse_segment
+           : p.family == KernelFamily::cauchy ? Code::cauchy_segment
+                                              : Code::compact_segment;
   p.degree = s.kernel().degree;
   p.s = s.kernel().s * frame.scale * frame.scale;
   p.R = s.kernel().R / frame.scale;
   const auto w = s.weight();
+  double weight_bound = 0.0;
   for (std::size_t j = 0; j < w.size(); ++j) {
-    p.w[j] = w[j];
-    p.weight_bound += std::abs(w[j]) / double(j + 1);
+    p.texel[j] = w[j];
+    weight_bound += std::abs(w[j]) / double(j + 1);
   }
+  p.magnitude = (s.b() - s.a()).norm() / frame.scale * weight_bound;
+  p.slope = p.family == KernelFamily::compact ? compact_slope_bound(p.degree, p.R) : 0.0;
   // f(P) = λ^power f'(P'), λ = scale: inverse 1 − i, Cauchy and compact 1.
   const int power = p.family == KernelFamily::inverse ? 1 - p.degree : 1;
-  p.c = term.c * std::pow(frame.scale, power);
-  if (term.c != 0.0 && !(p.c >= FLT_MIN && p.c <= FLT_MAX)) {
-    throw InputError(fmt::format("the weight of this term in the page's frame ({:.3g}) is out of float's range: "
-                                 "the skeleton is too large or too small for the viewer's float shader",
-                                 p.c),
-                     term.location);
-  }
+  p.c = page_weight(term, term.c * std::pow(frame.scale, power));
   return p;
 }
 
-/// K(r) of the term's kernel (decreasing in r).
+PageTerm page_point(const Term& term, const PointPrimitive& point, const Frame& frame) {
+  const KernelSpec& k = point.kernel();
+  PageTerm p;
+  p.family = k.family;
+  p.code = k.family == KernelFamily::inverse    ? Code::inverse_point
+           : k.family == KernelFamily::cauchy   ? Code::cauchy_point
+           : k.family == KernelFamily::gaussian ? Code::gaussian_point
+                                                : Code::supported_point;
+  p.degree = k.degree;
+  // Lengths divide by λ, so s and a (per length²) multiply by λ².
+  p.s = k.s * frame.scale * frame.scale;
+  p.R = k.R / frame.scale;
+  p.texel = {double(k.degree), k.e / frame.scale, k.a * frame.scale * frame.scale, k.b};
+  p.magnitude = 1.0;
+  KernelSpec page_kernel = k;
+  page_kernel.R = p.R;
+  page_kernel.e = p.texel[1];
+  page_kernel.a = p.texel[2];
+  p.slope = point_slope_bound(page_kernel);
+  // w K(r) = w λ^(−i) K(r') for the inverse kernel; the others are functions
+  // of r/R, r²s, r²a: unchanged.
+  const int power = k.family == KernelFamily::inverse ? -k.degree : 0;
+  p.c = page_weight(term, term.c * point.weight() * std::pow(frame.scale, power));
+  return p;
+}
+
+PageTerm page_scalis(const Term& term, const ScalisSegment& s, const Frame& frame) {
+  PageTerm p;
+  p.family = s.kernel().family;
+  p.code = p.family == KernelFamily::inverse ? Code::scalis_inverse : Code::scalis_cauchy;
+  p.degree = s.kernel().degree;
+  // F is scale invariant (radii scale with the frame); the inverse family
+  // takes σ = 1 and h at σ = 1, as ScalisSegment does (σ^i cancels).
+  const double sigma = p.family == KernelFamily::inverse ? 1.0 : s.kernel().sigma;
+  p.texel = {s.tau0() / frame.scale, s.tau1() / frame.scale, sigma, 0.0};
+  const double h = ScalisSegment::normalisation(p.family, p.degree, sigma);
+  const double tau_max = std::max(p.texel[0], p.texel[1]);
+  p.magnitude = (s.b() - s.a()).norm() / frame.scale * std::pow(sigma, p.degree) * std::pow(tau_max, p.degree - 1);
+  p.c = page_weight(term, term.c * s.iso() / h);
+  return p;
+}
+
+PageTerm page_term(const Term& term, const Frame& frame) {
+  PageTerm p;
+  if (const auto* s = std::get_if<Segment>(term.primitive)) p = page_segment(term, *s, frame);
+  else if (const auto* s = std::get_if<ScalisSegment>(term.primitive)) p = page_scalis(term, *s, frame);
+  else p = page_point(term, std::get<PointPrimitive>(*term.primitive), frame);
+  p.a = frame.to_page(term.a());
+  p.b = frame.to_page(term.b());
+  return p;
+}
+
+bool is_supported(Code code) { return code == Code::compact_segment || code == Code::supported_point; }
+
+/// K(r) of the term's kernel (decreasing in r) in the page's frame; for a
+/// SCALIS segment the r^(−i) that bounds its integrand.
 double kernel_value(const PageTerm& t, double r) {
-  switch (t.family) {
-    case KernelFamily::inverse: return std::pow(r, -t.degree);
-    case KernelFamily::cauchy: return std::pow(1.0 + t.s * r * r, -0.5 * t.degree);
-    default: return r >= t.R ? 0.0 : std::pow(1.0 - r * r / (t.R * t.R), 0.5 * t.degree);
+  switch (t.code) {
+    case Code::inverse_segment:
+    case Code::inverse_point:
+    case Code::scalis_inverse:
+    case Code::scalis_cauchy: return std::pow(r, -t.degree);
+    case Code::cauchy_segment:
+    case Code::cauchy_point: return std::pow(1.0 + t.s * r * r, -0.5 * t.degree);
+    case Code::gaussian_point: return t.texel[3] * std::exp(-t.texel[2] * r * r);
+    default: return r >= t.R ? 0.0 : 1.0;  // every supported kernel is at most 1 (its K(0) = 1, or 1 + k e for Ferley)
   }
 }
 
-/// max_r |K'(r)| of the compact kernel (1 − r²/R²)^(i/2): i u (1 − u²)^((i−2)/2) / R
-/// with u = r/R, largest at u² = 1/(i − 1) for i ≥ 2 (at u = 1 for i = 2).
-double compact_slope_bound(const PageTerm& t) {
-  const double i = t.degree;
-  const double u = i > 2 ? 1.0 / std::sqrt(i - 1) : 1.0;
-  return i * u * std::pow(1.0 - u * u, 0.5 * (i - 2)) / t.R;
-}
-
 /// A radius r such that f < level at every point farther than r from every
-/// segment: there each term is at most c |AB| ∫|w| K(r).
+/// skeleton element: there each term is at most c · magnitude · K(r).
 double support_margin(const std::vector<PageTerm>& terms, double level) {
   const auto bound = [&](double r) {
     double total = 0.0;
-    for (const PageTerm& t : terms) total += t.c * (t.b - t.a).norm() * t.weight_bound * kernel_value(t, r);
+    for (const PageTerm& t : terms) {
+      // Ferley's K(0) = 1 + k e = (R + e)/(R − e) is its largest value.
+      const double peak = t.family == KernelFamily::ferley ? (t.R + t.texel[1]) / (t.R - t.texel[1]) : 1.0;
+      total += t.c * t.magnitude * peak * kernel_value(t, r);
+    }
     return total;
   };
   double high = 1.0;
@@ -234,7 +397,7 @@ double support_margin(const std::vector<PageTerm>& terms, double level) {
 }
 
 /// How far from the page's centre the surface f = iso reaches, roughly
-/// (for the first camera only): from the ends and midpoint of every segment
+/// (for the first camera only): from the ends and midpoint of every element
 /// outwards along the six axis directions until f < iso, by doubling then
 /// bisection on the double-precision field.
 double surface_extent(const Skeleton& skeleton, const std::vector<Term>& terms, const Frame& frame) {
@@ -247,7 +410,7 @@ double surface_extent(const Skeleton& skeleton, const std::vector<Term>& terms, 
   };
   double extent = 0.0;
   for (const Term& t : terms) {
-    for (const Vec3& start : {t.segment->a(), t.segment->b(), Vec3(0.5 * (t.segment->a() + t.segment->b()))}) {
+    for (const Vec3& start : {t.a(), t.b(), Vec3(0.5 * (t.a() + t.b()))}) {
       for (int axis = 0; axis < 6; ++axis) {
         const Vec3 direction = (axis < 3 ? 1.0 : -1.0) * Vec3::Unit(axis % 3);
         double low = 0.0, high = 1e-3 * frame.scale;
@@ -267,62 +430,78 @@ double surface_extent(const Skeleton& skeleton, const std::vector<Term>& terms, 
 
 namespace {
 
-/// Replaces the one occurrence of `marker` in `text` (the templates hold
-/// each marker once; a missing one is a build mistake, not user input).
-std::string fill(std::string text, std::string_view marker, const std::string& value) {
-  const std::size_t at = text.find(marker);
-  if (at == std::string::npos) throw std::logic_error("view template without " + std::string(marker));
-  return text.replace(at, marker.size(), value);
+/// The panel's name of a term's kernel: "cauchy 4" (segment), "point
+/// soft", "point compact 4", "scalis inverse 3".
+std::string kernel_label(const Term& term, const PageTerm& t) {
+  const std::string family(family_name(t.family));
+  if (std::holds_alternative<Segment>(*term.primitive)) return fmt::format("{} {}", family, t.degree);
+  if (std::holds_alternative<ScalisSegment>(*term.primitive)) return fmt::format("scalis {} {}", family, t.degree);
+  const bool has_degree = t.family == KernelFamily::inverse || t.family == KernelFamily::cauchy ||
+                          t.family == KernelFamily::compact;
+  return has_degree ? fmt::format("point {} {}", family, t.degree) : "point " + family;
+}
+
+/// The view_march.glsl function that builds the input of kernel `name`
+/// from a primitive's row.
+std::string input_builder(const std::string& name) {
+  if (name.starts_with("point_")) return "point_input";
+  if (name.starts_with("scalis_segment_")) return "scalis_input";
+  return "segment_input";
 }
 
 /// The shader's dispatch on the kernel index: kernel_f and kernel_f_and_grad.
 std::string dispatch_text(const std::vector<std::string>& kernels) {
-  std::string f = "float kernel_f(int kernel, SegmentInput si) {\n";
-  std::string g = "float kernel_f_and_grad(int kernel, SegmentInput si, out vec3 grad) {\n";
+  std::string f = "float kernel_f(int kernel, Row r, vec3 p) {\n";
+  std::string g = "float kernel_f_and_grad(int kernel, Row r, vec3 p, out vec3 grad) {\n";
   for (std::size_t k = 0; k < kernels.size(); ++k) {
-    f += fmt::format("  if (kernel == {}) return {}_f(si);\n", k, kernels[k]);
-    g += fmt::format("  if (kernel == {}) return {}_f_and_grad(si, grad);\n", k, kernels[k]);
+    const std::string input = input_builder(kernels[k]) + "(r, p)";
+    f += fmt::format("  if (kernel == {}) return {}_f({});\n", k, kernels[k], input);
+    g += fmt::format("  if (kernel == {}) return {}_f_and_grad({}, grad);\n", k, kernels[k], input);
   }
   return f + "  return 0.0;\n}\n\n" + g + "  grad = vec3(0.0);\n  return 0.0;\n}\n";
 }
 
-/// The functions of the kernels in use, once each, after the input block
-/// they share (the same in every GLSL file).
-std::string kernels_text(const std::vector<std::string>& kernels, const std::vector<KernelFamily>& families) {
-  const std::string_view any = embedded::segment_inverse_glsl;
-  const std::size_t begin = any.find("#ifndef SKELCONV_SEGMENT_INPUT");
-  const std::size_t end = any.find("#endif", begin) + std::string_view("#endif").size();
-  std::string text = std::string(any.substr(begin, end - begin)) + "\n\n";
-  for (std::size_t k = 0; k < kernels.size(); ++k) {
-    text += glsl_function(glsl_file(families[k]), kernels[k] + "_f(") + "\n";
-    text += glsl_function(glsl_file(families[k]), kernels[k] + "_f_and_grad(") + "\n";
+/// The guarded blocks (#ifndef SKELCONV_... #endif: input structs and
+/// helpers) of `file`.
+std::string guarded_blocks(std::string_view file) {
+  std::string text;
+  for (std::size_t at = file.find("#ifndef SKELCONV_"); at != std::string_view::npos;
+       at = file.find("#ifndef SKELCONV_", at + 1)) {
+    const std::size_t end = file.find("#endif", at) + std::string_view("#endif").size();
+    text += std::string(file.substr(at, end - at)) + "\n\n";
   }
   return text;
 }
 
-/// "</" would end the <script> element that holds the text.
-std::string script_safe(std::string text) {
-  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at)) text.replace(at, 2, "<\\/");
+/// Every input struct and helper (the shader's input builders use all three
+/// structs), then the functions of the kernels in use, once each.
+std::string kernels_text(const std::vector<std::string>& kernels) {
+  std::string text = guarded_blocks(embedded::segment_inverse_glsl) +
+                     guarded_blocks(embedded::scalis_segment_inverse_glsl) + guarded_blocks(embedded::point_glsl);
+  for (const std::string& name : kernels) {
+    text += glsl_function(glsl_file(name), name + "_f(") + "\n";
+    text += glsl_function(glsl_file(name), name + "_f_and_grad(") + "\n";
+  }
   return text;
 }
 
-nlohmann::json vec_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
 }  // namespace
 
-std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& options) {
-  skeleton.validate();
+namespace {
+
+/// The ray-marching page; InputError (located) when the shader cannot
+/// evaluate the skeleton.
+std::string ray_march_page(const Skeleton& skeleton, const ViewPageOptions& options) {
   std::vector<Term> terms;
   collect_terms(skeleton, Skeleton::root, "primitives", 1.0, terms);
   if (terms.empty()) throw InputError("no primitive: there is no surface to show", "primitives");
   if (terms.size() > max_view_primitives) {
     throw InputError(fmt::format("{} primitives: the viewer's shader loops over every primitive per step and "
-                                 "shows at most {} (docs/view.md); use skelconv mesh",
+                                 "shows at most {} (docs/view.md)",
                                  terms.size(), max_view_primitives),
                      "primitives");
   }
   std::vector<std::string> kernels;
-  std::vector<KernelFamily> families;
   const Frame frame = page_frame(terms);
   std::vector<PageTerm> page_terms;
   nlohmann::json primitives = nlohmann::json::array();
@@ -331,25 +510,22 @@ std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& opti
     const std::string name = check_term(term);
     const auto found = std::find(kernels.begin(), kernels.end(), name);
     const std::size_t index = std::size_t(found - kernels.begin());
-    if (found == kernels.end()) {
-      kernels.push_back(name);
-      families.push_back(term.segment->kernel().family);
-    }
+    if (found == kernels.end()) kernels.push_back(name);
     const PageTerm t = page_term(term, frame);
     page_terms.push_back(t);
     half_diagonal = std::max({half_diagonal, t.a.norm(), t.b.norm()});
-    const bool compact = t.family == KernelFamily::compact;
-    // The step bound's number (view_march.glsl): the degree, or c L with
-    // L = |AB| ∫|w| max|K'| bounding |grad f_k|.
-    const double bound = compact ? t.c * (t.b - t.a).norm() * t.weight_bound * compact_slope_bound(t) : t.degree;
+    // The step bound's number (view_march.glsl): the degree, or c L with L
+    // bounding |grad f_k| (|AB| ∫|w| max|K'| for a segment, w max|K'| for a
+    // point: magnitude · slope).
+    const bool lipschitz = is_supported(t.code) || t.code == Code::gaussian_point;
+    const double bound = lipschitz ? t.c * t.magnitude * t.slope : t.degree;
     primitives.push_back({{"location", term.location},
-                          {"kernel", fmt::format("{} {}", family_name(t.family), t.degree)},
+                          {"kernel", kernel_label(term, t)},
                           {"kernel_index", index},
-                          // view_march.glsl's family code.
-                          {"family", compact ? 1 : t.family == KernelFamily::inverse ? 0 : 2},
+                          {"family", int(t.code)},
                           {"a", vec_json(t.a)},
                           {"b", vec_json(t.b)},
-                          {"w", t.w},
+                          {"w", t.texel},
                           {"s", t.s},
                           {"R", t.R},
                           {"c", t.c},
@@ -375,9 +551,12 @@ std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& opti
                                {"min_step", 1e-4 * radius},
                                {"fov", field_of_view},
                                {"distance", 1.25 * view_radius / std::sin(0.5 * field_of_view)},
+                               {"mode", "ray marching"},
+                               // Points: a cross 1/50 of the sphere's radius.
+                               {"overlay", view_detail::overlay_lines(skeleton, frame, 0.02 * radius)},
                                {"primitives", primitives}};
   std::string shader = embedded::view_march_glsl;
-  shader = fill(shader, "//@@KERNELS@@", kernels_text(kernels, families));
+  shader = fill(shader, "//@@KERNELS@@", kernels_text(kernels));
   shader = fill(shader, "//@@DISPATCH@@", dispatch_text(kernels));
   shader = fill(shader, "/*@@PRIMITIVE_COUNT@@*/1", std::to_string(terms.size()));
   shader = "#version 300 es\nprecision highp float;\nprecision highp int;\n" + shader;
@@ -386,4 +565,59 @@ std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& opti
   return fill(page, "/*@@SKELETON_DATA@@*/", script_safe(data.dump(1)));
 }
 
+}  // namespace
+
+std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& options, ViewPageReport* report) {
+  skeleton.validate();  // bad input is refused here, whatever the page
+  ViewPageReport local;
+  ViewPageReport& r = report ? *report : local;
+  try {
+    r = ViewPageReport{};
+    if (options.force_mesh_preview) throw InputError("the mesh preview was asked for (--mesh-preview)");
+    return ray_march_page(skeleton, options);
+  } catch (const InputError& refusal) {
+    if (!options.mesh_preview) throw;
+    r.mesh_preview = true;
+    r.reason = refusal.what();
+  }
+  return view_detail::mesh_preview_page(skeleton, options, r);
+}
+
+namespace view_detail {
+
+std::string fill(std::string text, std::string_view marker, const std::string& value) {
+  const std::size_t at = text.find(marker);
+  if (at == std::string::npos) throw std::logic_error("view template without " + std::string(marker));
+  return text.replace(at, marker.size(), value);
+}
+
+std::string script_safe(std::string text) {
+  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at)) text.replace(at, 2, "<\\/");
+  return text;
+}
+
+nlohmann::json overlay_lines(const Skeleton& skeleton, const Frame& frame, double cross) {
+  nlohmann::json lines = nlohmann::json::array();
+  const auto line = [&](const Vec3& a, const Vec3& b) {
+    for (const Vec3& end : {frame.to_page(a), frame.to_page(b)})
+      for (int j = 0; j < 3; ++j) lines.push_back(end[j]);
+  };
+  const auto loop = [&](const auto& vertices) {
+    for (std::size_t k = 0; k < vertices.size(); ++k) line(vertices[k], vertices[(k + 1) % vertices.size()]);
+  };
+  for (const Primitive& primitive : skeleton.primitives()) {
+    if (const auto* s = std::get_if<Segment>(&primitive)) line(s->a(), s->b());
+    else if (const auto* s = std::get_if<ScalisSegment>(&primitive)) line(s->a(), s->b());
+    else if (const auto* p = std::get_if<Polygon>(&primitive)) loop(p->vertices());
+    else if (const auto* t = std::get_if<ScalisTriangle>(&primitive)) loop(t->vertices());
+    else {
+      const Vec3 c = std::get<PointPrimitive>(primitive).center();
+      for (int axis = 0; axis < 3; ++axis)
+        line(c - cross * frame.scale * Vec3::Unit(axis), c + cross * frame.scale * Vec3::Unit(axis));
+    }
+  }
+  return lines;
+}
+
+}  // namespace view_detail
 }  // namespace skelconv

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Compiles every function of generated/glsl/*.glsl with glslangValidator
+# Compiles every function of generated/glsl/*.glsl (segment, point and
+# SCALIS kernels) with glslangValidator
 # (Debian glslang-tools, the Khronos reference front end) as GLSL ES 3.00
 # (WebGL2) and desktop GLSL 4.50: each file is wrapped in a minimal fragment
 # shader whose main() calls every function it defines, so every one is
@@ -27,9 +28,11 @@ if [ ${#files[@]} -eq 0 ]; then
 fi
 status=0
 for file in "${files[@]}"; do
-  # Every kernel function: float NAME(SegmentInput si) or (…, out vec3 grad).
-  mapfile -t values < <(sed -n 's/^float \([a-z0-9_]*\)(SegmentInput si) {$/\1/p' "$file")
-  mapfile -t both < <(sed -n 's/^float \([a-z0-9_]*\)(SegmentInput si, out vec3 grad) {$/\1/p' "$file")
+  # Every kernel function: float NAME(INPUT x) or (…, out vec3 grad), INPUT
+  # the file's input struct (SegmentInput, PointInput, ScalisSegmentInput).
+  mapfile -t values < <(sed -n 's/^float \([a-z0-9_]*\)(\([A-Za-z]*Input\) [a-z]*) {$/\1(u_\2)/p' "$file")
+  mapfile -t both < <(sed -n 's/^float \([a-z0-9_]*\)(\([A-Za-z]*Input\) [a-z]*, out vec3 grad) {$/\1(u_\2, grad)/p' "$file")
+  mapfile -t inputs < <(sed -n 's/^struct \([A-Za-z]*Input\) {$/\1/p' "$file")
   if [ $((${#values[@]} + ${#both[@]})) -eq 0 ]; then
     echo "check_glsl_compiles: $file defines no kernel function" >&2
     status=1
@@ -41,14 +44,14 @@ for file in "${files[@]}"; do
       echo "#version $version"
       [ "$version" = "300 es" ] && echo "precision highp float;"
       cat "$file"
-      echo "uniform SegmentInput u_in;"
+      for t in "${inputs[@]}"; do echo "uniform $t u_$t;"; done
       echo "out vec4 colour;"
       echo "void main() {"
       echo "  float sum = 0.0;"
       echo "  vec3 grad = vec3(0.0);"
-      for f in "${values[@]}"; do echo "  sum += $f(u_in);"; done
-      for f in "${both[@]}"; do echo "  sum += $f(u_in, grad) + grad.x + grad.y + grad.z;"; done
-      [ "$fault" = "--inject-fault" ] && echo "  sum += undeclared_kernel(u_in);"
+      for f in "${values[@]}"; do echo "  sum += $f;"; done
+      for f in "${both[@]}"; do echo "  sum += $f + grad.x + grad.y + grad.z;"; done
+      [ "$fault" = "--inject-fault" ] && echo "  sum += undeclared_kernel(0.0);"
       echo "  colour = vec4(sum);"
       echo "}"
     } > "$shader"

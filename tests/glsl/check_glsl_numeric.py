@@ -1,9 +1,14 @@
 #!/usr/bin/python3
 """Runs the generated GLSL kernels (generated/glsl/) in headless Chromium
 (WebGL2 on its software renderer SwiftShader) on generic points and compares
-f and grad f with double-precision quadrature of the definition integral.
+f and grad f with double-precision quadrature of the definition integral
+(segments and SCALIS segments) or the closed-form definition (points).
 
     check_glsl_numeric.py GLSL_FOLDER [--points N] [--tolerance 1e-5] [--seed S]
+                          [--kernels REGEX]
+
+--kernels keeps the kernels whose function name matches REGEX (re.search),
+e.g. ^point_ (the ctest glsl_points_numeric).
 
 Points are drawn like the verifier's generic region (verify/sampling.hpp):
 A uniform in [-2, 2]^3, |AB| log-uniform in [0.2, 5], weights uniform in
@@ -19,6 +24,16 @@ beta)^(-n/2) (codegen/segment_families.hpp), grad f = -n alpha |AB| int w(t)
 (64 panels x 24 nodes on the clipped interval; at P >= 0.1 |AB| from the
 segment the integrand's width is >= 0.1 |AB|, so the rule is exact to double
 rounding for the degrees generated).
+
+SCALIS segments (SPEC sec. 4): F = sigma^i |AB| int_0^1 tau(t)^(i-1)
+(|P - G(t)|^2 + k sigma^2 tau(t)^2)^(-i/2) dt (k = 0 inverse, 1 Cauchy), the
+generated functions' unnormalised F; A, B, P as for segments, tau0, tau1
+uniform in [0.1, 1.5] |AB|, sigma 1 (inverse: the runtime's choice) or
+log-uniform in [0.5, 2] (Cauchy). Points: f = w K(r) and w K'(r) (P - C)/r
+(skelconv/primitives/point.hpp) in double, with r in the kernel's generic
+range (inverse r log-uniform in [0.1, 10]; Cauchy s log-uniform in [0.2, 5],
+r log-uniform in [0.1, 3]; supported kernels r uniform in [0.05, 0.95] R
+away from Ferley's e by 0.02 R; Gaussian a r^2 uniform in [0.01, 9]).
 
 Exit status 0 when every relative error (|f - f_ref| / |f_ref| and
 |g - g_ref| / |g_ref|) is at most the tolerance; prints the worst per family.
@@ -37,14 +52,33 @@ import tempfile
 import numpy as np
 
 FUNCTION = re.compile(r"^// the field and its gradient, where\n(?://[^\n]*\n)*?float (segment_(\w+?)_i(\d+)_w(\d+))_f_and_grad\(SegmentInput si, out vec3 grad\) \{\n.*?^\}\n", re.M | re.S)
+SCALIS_FUNCTION = re.compile(r"^// the field and its gradient, where\n(?://[^\n]*\n)*?float (scalis_segment_(\w+?)_i(\d+))_f_and_grad\(ScalisSegmentInput si, out vec3 grad\) \{\n.*?^\}\n", re.M | re.S)
+POINT_FUNCTION = re.compile(r"^float (point_(\w+?))_f\(PointInput pt\) \{\n.*?^\}\nfloat point_\w+?_f_and_grad\(PointInput pt, out vec3 grad\) \{\n.*?^\}\n", re.M | re.S)
+POINT_DEGREES = {"inverse": [1, 2, 3, 4, 6, 9, 16], "cauchy": [1, 2, 3, 4, 6, 9, 16], "compact": [2, 3, 4, 6, 9, 16]}
+
+
+def guarded_blocks(text):
+    """The input struct and the helpers: the file's guarded blocks."""
+    return "\n".join(m.group(0) for m in re.finditer(r"^#ifndef SKELCONV_\w+\n.*?^#endif\n", text, re.M | re.S))
 
 
 def kernels(folder):
-    for path in sorted(pathlib.Path(folder).glob("segment_*.glsl")):
+    """(kind, family, degree, weight degree, name, source) of every kernel."""
+    folder = pathlib.Path(folder)
+    for path in sorted(folder.glob("segment_*.glsl")):
         text = path.read_text()
-        struct = text[text.index("#ifndef SKELCONV_SEGMENT_INPUT"):text.index("#endif") + len("#endif")]
         for m in FUNCTION.finditer(text):
-            yield m.group(2), int(m.group(3)), int(m.group(4)), m.group(1), struct + "\n" + m.group(0)
+            yield "segment", m.group(2), int(m.group(3)), int(m.group(4)), m.group(1), guarded_blocks(text) + "\n" + m.group(0)
+    for path in sorted(folder.glob("scalis_segment_*.glsl")):
+        text = path.read_text()
+        for m in SCALIS_FUNCTION.finditer(text):
+            yield "scalis", m.group(2), int(m.group(3)), 0, m.group(1), guarded_blocks(text) + "\n" + m.group(0)
+    point = folder / "point.glsl"
+    if point.exists():
+        text = point.read_text()
+        for m in POINT_FUNCTION.finditer(text):
+            for degree in POINT_DEGREES.get(m.group(2), [0]):
+                yield "point", m.group(2), degree, 0, m.group(1), guarded_blocks(text) + "\n" + m.group(0)
 
 
 def unit(v):
@@ -76,6 +110,90 @@ def draw(rng, family, count):
         row = np.append(row, 0.0 if 0 <= tau <= 1 else 1.0)
         rows.append(row)
     return rows
+
+
+def log_uniform(rng, low, high):
+    return math.exp(rng.uniform(math.log(low), math.log(high)))
+
+
+def draw_scalis(rng, family, count):
+    """Rows a, b, p, tau0, tau1, sigma (and the side flag), as draw()."""
+    rows = []
+    for row in draw(rng, "inverse", count):
+        length = np.linalg.norm(row[3:6] - row[0:3])
+        tau = rng.uniform(0.1, 1.5, 2) * length
+        sigma = 1.0 if family == "inverse" else log_uniform(rng, 0.5, 2)
+        out = np.concatenate([row[0:9], tau, [sigma]]).astype(np.float32).astype(np.float64)
+        rows.append(np.append(out, row[15]))
+    return rows
+
+
+def point_radius(rng, family, R, e, a):
+    if family == "inverse":
+        return log_uniform(rng, 0.1, 10)
+    if family == "cauchy":
+        return log_uniform(rng, 0.1, 3)
+    if family == "gaussian":
+        return math.sqrt(rng.uniform(0.01, 9) / a)
+    while True:
+        r = rng.uniform(0.05, 0.95) * R
+        if family != "ferley" or abs(r - e) > 0.02 * R:
+            return r
+
+
+def draw_point(rng, family, degree, count):
+    """Rows c, p, w, i, s, R, e, a, b (and a side flag of 0)."""
+    rows = []
+    for _ in range(count):
+        c = rng.uniform(-2, 2, 3)
+        R = log_uniform(rng, 0.3, 3)
+        e = rng.uniform(0.2, 0.8) * R
+        a, b = log_uniform(rng, 0.2, 5), rng.uniform(0.5, 2)
+        s = log_uniform(rng, 0.2, 5)
+        r = point_radius(rng, family, R, e, a)
+        p = c + r * unit(rng.normal(size=3))
+        row = np.concatenate([c, p, [rng.uniform(0.2, 2), degree, s, R, e, a, b]]).astype(np.float32).astype(np.float64)
+        rows.append(np.append(row, 0.0))
+    return rows
+
+
+def point_reference(family, degree, row):
+    """w K(r) and w K'(r) (P - C)/r: the traits of include/skelconv/kernels/."""
+    c, p, w, i, s, R, e, a, b = row[0:3], row[3:6], row[6], row[7], row[8], row[9], row[10], row[11], row[12]
+    d = p - c
+    r = float(np.linalg.norm(d))
+    v = 1 - r * r / (R * R)
+    if family == "inverse":
+        K, dK = r ** -i, -i * r ** (-i - 1)
+    elif family == "cauchy":
+        K, dK = (1 + s * r * r) ** (-i / 2), -i * s * r * (1 + s * r * r) ** (-i / 2 - 1)
+    elif family == "compact":
+        K, dK = v ** (i / 2), -i * r / (R * R) * v ** (i / 2 - 1)
+    elif family == "soft":
+        K, dK = v * v, -4 * r / (R * R) * v
+    elif family == "wyvill":
+        K, dK = v * v * (5 + 4 * v) / 9, -v * (10 + 12 * v) / 9 * 2 * r / (R * R)
+    elif family == "ferley":
+        k = 2 / (R - e)
+        K, dK = (1 + k * (e - r), -k) if r < e else ((r - R) ** 2 / (e - R) ** 2, 2 * (r - R) / (e - R) ** 2)
+    else:
+        K, dK = b * math.exp(-a * r * r), -2 * a * b * r * math.exp(-a * r * r)
+    return w * K, w * dK * d / r
+
+
+def scalis_reference(family, degree, row):
+    a, b, p, tau0, tau1, sigma = row[0:3], row[3:6], row[6:9], row[9], row[10], row[11]
+    edges = np.linspace(0.0, 1.0, 65)
+    t = ((edges[:-1, None] + edges[1:, None]) / 2 + (edges[1:, None] - edges[:-1, None]) / 2 * NODES[None, :]).ravel()
+    wq = ((edges[1:, None] - edges[:-1, None]) / 2 * WEIGHTS[None, :]).ravel()
+    tau = tau0 + (tau1 - tau0) * t
+    diff = p[None, :] - (a[None, :] + t[:, None] * (b - a)[None, :])
+    q = np.einsum("ij,ij->i", diff, diff) + (sigma * tau) ** 2 * (family == "cauchy")
+    length = np.linalg.norm(b - a)
+    v = sigma ** degree * length * wq * tau ** (degree - 1)
+    f = np.sum(v * q ** (-degree / 2))
+    g = -degree * np.sum((v * q ** (-degree / 2 - 1))[:, None] * diff, axis=0)
+    return f, g
 
 
 def clip(a, b, p, R):
@@ -114,6 +232,14 @@ def reference(family, degree, wdeg, row):
     return f, g, (lo, hi)
 
 
+# The input of each kind from the texels t0 .. t4 (20 floats per row).
+SETUP = {
+    "segment": "SegmentInput si; si.a = t0.xyz; si.b = vec3(t0.w, t1.xy); si.p = vec3(t1.zw, t2.x); "
+               "si.w = vec4(t2.yzw, t3.x); si.s = t3.y; si.R = t3.z; si.t0 = t3.w; si.t1 = t4.x;",
+    "scalis": "ScalisSegmentInput si = ScalisSegmentInput(t0.xyz, vec3(t0.w, t1.xy), vec3(t1.zw, t2.x), t2.y, t2.z, t2.w);",
+    "point": "PointInput si = PointInput(t0.xyz, vec3(t0.w, t1.xy), t1.z, t1.w, t2.x, t2.y, t2.z, t2.w, t3.x);",
+}
+
 PAGE = """<!doctype html><html><body><pre id="out">running</pre><script>
 const jobs = %s;
 const results = {};
@@ -142,9 +268,7 @@ void main() {
   vec4 t0 = texelFetch(inputs, ivec2(0, i), 0), t1 = texelFetch(inputs, ivec2(1, i), 0),
        t2 = texelFetch(inputs, ivec2(2, i), 0), t3 = texelFetch(inputs, ivec2(3, i), 0),
        t4 = texelFetch(inputs, ivec2(4, i), 0);
-  SegmentInput si;
-  si.a = t0.xyz; si.b = vec3(t0.w, t1.xy); si.p = vec3(t1.zw, t2.x); si.w = vec4(t2.yzw, t3.x);
-  si.s = t3.y; si.R = t3.z; si.t0 = t3.w; si.t1 = t4.x;
+  ${job.setup}
   vec3 grad;
   float f = ${job.name}_f_and_grad(si, grad);
   colour = vec4(f, grad);
@@ -168,7 +292,7 @@ void main() {
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     const pixels = new Float32Array(4 * n);
     gl.readPixels(0, 0, n, 1, gl.RGBA, gl.FLOAT, pixels);
-    results[job.name] = Array.from(pixels);
+    results[job.key] = Array.from(pixels);
   }
   out.textContent = 'RESULTS ' + JSON.stringify(results) + ' END';
 } catch (e) {
@@ -189,21 +313,33 @@ def main():
     ap.add_argument("--tolerance", type=float, default=1e-5)
     ap.add_argument("--seed", type=int, default=20261204)
     ap.add_argument("--chromium", default="/usr/bin/chromium")
+    ap.add_argument("--kernels", default="", help="only the kernels whose name matches this regular expression")
     args = ap.parse_args()
     if not os.path.exists(args.chromium):
         sys.exit(f"check_glsl_numeric: {args.chromium} not found (Debian package chromium)")
     rng = np.random.default_rng(args.seed)
     jobs, refs, rows_of = [], {}, {}
-    for family, degree, wdeg, name, source in kernels(args.folder):
-        rows = draw(rng, family, args.points)
+    for kind, family, degree, wdeg, name, source in kernels(args.folder):
+        if not re.search(args.kernels, name):
+            continue
         flat, expected = [], []
-        for row in rows:
-            f, g, (t0, t1) = reference(family, degree, wdeg, row)
-            flat += list(row[:15]) + [t0, t1, 0.0, 0.0, 0.0]
-            expected.append((f, g))
-        jobs.append({"name": name, "source": source, "inputs": flat})
-        refs[name] = (family, degree, expected)
-        rows_of[name] = rows
+        if kind == "segment":
+            rows = draw(rng, family, args.points)
+            for row in rows:
+                f, g, (t0, t1) = reference(family, degree, wdeg, row)
+                flat += list(row[:15]) + [t0, t1, 0.0, 0.0, 0.0]
+                expected.append((f, g))
+        else:
+            rows = draw_scalis(rng, family, args.points) if kind == "scalis" else draw_point(rng, family, degree, args.points)
+            for row in rows:
+                expected.append(scalis_reference(family, degree, row) if kind == "scalis" else point_reference(family, degree, row))
+                flat += list(row[:-1]) + [0.0] * (21 - len(row))
+        job = f"{name}@{degree}" if kind == "point" else name
+        jobs.append({"name": name, "key": job, "source": source, "setup": SETUP[kind], "inputs": flat})
+        refs[job] = (kind + " " + family, degree, expected)
+        rows_of[job] = rows
+    if not jobs:
+        sys.exit(f"check_glsl_numeric: no kernel of {args.folder} matches {args.kernels!r}")
     with tempfile.TemporaryDirectory() as scratch:
         page = pathlib.Path(scratch) / "glsl_numeric.html"
         page.write_text(PAGE % json.dumps(jobs))
@@ -227,7 +363,7 @@ def main():
             eg = np.linalg.norm(np.array(got[1:4]) - g) / gn if gn != 0 else np.linalg.norm(got[1:4])
             if not (ef <= args.tolerance and eg <= args.tolerance):
                 failures += 1
-            side = "beyond an end" if rows_of[name][k][15] else "beside AB"
+            side = "beyond an end" if rows_of[name][k][-1] else "beside AB"
             d = per_degree.setdefault((family, degree, side), [0.0, 0.0])
             d[0], d[1] = max(d[0], ef), max(d[1], eg)
             w = worst.setdefault(family, [0.0, "", 0.0, ""])
@@ -237,11 +373,11 @@ def main():
                 w[2], w[3] = eg, name
     print(f"check_glsl_numeric: {len(results)} kernels x {args.points} generic points, tolerance {args.tolerance:g}")
     for family, (ef, nf, eg, ng) in sorted(worst.items()):
-        print(f"  {family:8s} worst f rel. error {ef:.2e} ({nf}), worst grad {eg:.2e} ({ng})")
+        print(f"  {family:16s} worst f rel. error {ef:.2e} ({nf}), worst grad {eg:.2e} ({ng})")
     print("  worst per family, degree and side of P (f / grad; every weight degree):")
     for (family, degree, side), (ef, eg) in sorted(per_degree.items()):
         mark = "" if ef <= args.tolerance and eg <= args.tolerance else "  above"
-        print(f"    {family:8s} i={degree:2d} {side:14s} {ef:.1e} / {eg:.1e}{mark}")
+        print(f"    {family:16s} i={degree:2d} {side:14s} {ef:.1e} / {eg:.1e}{mark}")
     if failures:
         print(f"check_glsl_numeric: {failures} points above the tolerance")
     return 1 if failures else 0

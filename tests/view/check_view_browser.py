@@ -6,6 +6,7 @@ skeleton seen by the same camera (intersection over union >= 0.98).
 
     check_view_browser.py SKELCONV SKELETON.json... [--out DIR] [--iou 0.98]
                           [--size 480x360] [--frames N] [--inject-fault]
+                          [--timing-only]
 
 Silhouettes: a pixel of the page is on the surface when it is not the white
 background (the shading never reaches white in green and blue,
@@ -16,6 +17,8 @@ passed in the page's query string; basis() in view_template.html).
 
 --frames N also renders N frames in the page and prints the mean frame time
 (SwiftShader on this machine's CPU: an upper bound for any GPU).
+--timing-only skips the silhouettes: only the frame time (--frames, default 10)
+of each page, the measurement of docs/view.md's table.
 --inject-fault renders the page at 0.8 x the file's iso against the mesh of
 the file's iso: the check must then fail (the main job runs both).
 --out DIR keeps the screenshots and mask images (PNG) there.
@@ -157,11 +160,23 @@ def screenshot(chromium, page, query, width, height, png, profile, dump=False):
     return None
 
 
+def frame_time(args, page, data, name, scratch):
+    dom = screenshot(args.chromium, page, f"panel=1&frames={args.frames}&size={args.width}x{args.height}", args.width, args.height, None,
+                     pathlib.Path(scratch) / "profile", dump=True)
+    found = re.search(r"frame_ms ([0-9.]+) at (\d+x\d+)", dom)
+    print(f"check_view_browser: {name}: {len(data['primitives'])} primitives, {data.get('mode', '')}, "
+          + (f"{found.group(1)} ms per frame at {found.group(2)} (SwiftShader)" if found else "no frame time"),
+          flush=True)
+
+
 def check_skeleton(args, skeleton, scratch, out):
     name = pathlib.Path(skeleton).stem
     page, obj = pathlib.Path(scratch) / (name + ".html"), pathlib.Path(scratch) / (name + ".obj")
     subprocess.run([args.skelconv, "view", skeleton, "-o", str(page)], check=True, capture_output=True)
     data = json.loads(DATA.search(page.read_text()).group(1).replace("<\\/", "</"))
+    if args.timing_only:
+        frame_time(args, page, data, name, scratch)
+        return 1.0
     # A fine mesh: its facets are chords inside a convex surface, and the
     # default size (box diagonal / 50) leaves a ring of ~1 % of the pixels.
     # Size: 1/40 of the surface's extent (the first camera's framing radius).
@@ -188,11 +203,7 @@ def check_skeleton(args, skeleton, scratch, out):
         print(f"check_view_browser: {name} view {k} (yaw {yaw}, pitch {pitch}): IoU {iou:.4f} "
               f"(page {np.count_nonzero(page_mask)} px, mesh {np.count_nonzero(mask)} px)")
     if args.frames:
-        dom = screenshot(args.chromium, page, f"panel=1&frames={args.frames}", width, height, None,
-                         pathlib.Path(scratch) / "profile", dump=True)
-        found = re.search(r"frame_ms ([0-9.]+) at (\d+x\d+)", dom)
-        print(f"check_view_browser: {name}: {len(data['primitives'])} primitives, "
-              + (f"{found.group(1)} ms per frame at {found.group(2)} (SwiftShader)" if found else "no frame time"))
+        frame_time(args, page, data, name, scratch)
     return worst
 
 
@@ -206,7 +217,10 @@ def main():
     ap.add_argument("--frames", type=int, default=0)
     ap.add_argument("--chromium", default="/usr/bin/chromium")
     ap.add_argument("--inject-fault", action="store_true")
+    ap.add_argument("--timing-only", action="store_true")
     args = ap.parse_args()
+    if args.timing_only and not args.frames:
+        args.frames = 10
     args.width, args.height = (int(v) for v in args.size.split("x"))
     if not os.path.exists(args.chromium):
         sys.exit(f"check_view_browser: {args.chromium} not found (Debian package chromium)")

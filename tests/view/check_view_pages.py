@@ -5,14 +5,21 @@
 
 For every skeleton of each SKELETON_FOLDER (papers_figures/skeletons, and
 tests/data/view: weights, sum nodes, every family, and refusals):
-  - if it holds only what the viewer shows (segments under sum nodes; the
-    kernels of generated/glsl/), `skelconv view` must write a page whose
-    skeleton data lists every primitive with the file's end points, weights
-    and kernels, and whose fragment shader (extracted from the page) calls
+  - if it holds only what the viewer shows (segments, points and SCALIS
+    segments under sum nodes; the kernels of generated/glsl/), `skelconv
+    view` must write a page whose skeleton data lists every primitive with
+    the file's end points (a point's centre), weights and kernels, and whose fragment shader (extracted from the page) calls
     the GLSL function of every kernel and compiles with glslangValidator as
     GLSL ES 3.00 (WebGL2);
-  - otherwise it must exit with status 2, one "skelconv: error:" line naming
-    the JSON path of the first primitive it cannot show, and no file.
+  - otherwise it must write the mesh preview: a page without fragment
+    shader whose data holds a non-empty triangle mesh (base64 arrays of the
+    announced sizes, indices in range, vertices on the surface's scale) and
+    the reason, naming the JSON path of the first element the ray marcher
+    cannot show; stdout says "mode: mesh preview" (and so for the first
+    ray-marched skeleton with --mesh-preview);
+  - a skeleton named no_surface_*.json (the ray marcher refuses it and the
+    field stays below iso) must be refused: exit 2, one "skelconv: error:"
+    line naming "iso", no file.
 For every file of BAD_FOLDER (invalid skeletons, tests/data/bad) the view
 must fail like `skelconv mesh` on the same file (the same message from the
 same reader, exit 2) and write nothing.
@@ -22,6 +29,7 @@ shader: the check must then fail (ctest view_pages_check_can_fail).
 Python 3 standard library only.
 """
 import json
+import math
 import os
 import pathlib
 import re
@@ -33,6 +41,23 @@ import tempfile
 SHADER = re.compile(r'<script id="fragment_shader" type="x-shader/x-fragment">\n(.*?)</script>', re.S)
 DATA = re.compile(r'<script id="skeleton_data" type="application/json">\n(.*?)</script>', re.S)
 SUPPORTED_FAMILIES = {"inverse", "cauchy", "compact"}
+POINT_DEGREE_FAMILIES = {"inverse", "cauchy", "compact"}  # the point families with a degree
+
+
+def kernel_name(child):
+    """The GLSL function (without _f_and_grad) and the panel's kernel label."""
+    kernel = child["kernel"]
+    family = kernel["family"]
+    if child["type"] == "point":
+        label = f"point {family}" + (f" {kernel['degree']}" if family in POINT_DEGREE_FAMILIES else "")
+        return f"point_{family}", label
+    if child["type"] == "scalis_segment":
+        return f"scalis_segment_{family}_i{kernel['degree']}", f"scalis {family} {kernel['degree']}"
+    weight = child.get("weight", [1])
+    degree = len(weight) - 1
+    while degree > 0 and weight[degree] == 0:
+        degree -= 1
+    return f"segment_{family}_i{kernel['degree']}_w{degree}", f"{family} {kernel['degree']}"
 
 
 def expected_terms(node, where, out):
@@ -47,9 +72,19 @@ def expected_terms(node, where, out):
             if bad:
                 return bad
             continue
+        kernel = child["kernel"]
+        if child.get("type") == "point":
+            if child.get("weight", 1) < 0:
+                return path
+            out.append((path, child))
+            continue
+        if child.get("type") == "scalis_segment":
+            if kernel["family"] not in ("inverse", "cauchy"):
+                return path
+            out.append((path, child))
+            continue
         if child.get("type") != "segment":
             return path
-        kernel = child["kernel"]
         if kernel["family"] not in SUPPORTED_FAMILIES or (kernel["family"] == "compact" and kernel["degree"] % 2 == 0):
             return path
         # The step bound of inverse and Cauchy terms needs w >= 0 on [0, 1]
@@ -84,21 +119,22 @@ def check_page(path, html, skeleton, terms, scratch, validator, fault):
         if shown["location"] != where:
             problems.append(f"{path}: page primitive at {shown['location']}, file at {where}")
         for end in ("a", "b"):
-            # The page's frame: (X - centre) / scale (view_page.hpp).
+            # The page's frame: (X - centre) / scale (view_page.hpp); a
+            # point's A and B are its centre.
+            expected = element["center"] if element["type"] == "point" else element[end]
             back = [shown[end][j] * frame["scale"] + frame["centre"][j] for j in range(3)]
-            if max(abs(back[j] - element[end][j]) for j in range(3)) > 1e-12 * max(1.0, frame["scale"]):
-                problems.append(f"{path}: {where}.{end} is {back} in the page, {element[end]} in the file")
-        kernel = element["kernel"]
-        if shown["kernel"] != f"{kernel['family']} {kernel['degree']}":
-            problems.append(f"{path}: {where} kernel {shown['kernel']} in the page")
-        weight = element.get("weight", [1])
-        if shown["w"][:len(weight)] != weight:
-            problems.append(f"{path}: {where} weight {shown['w']} in the page, {weight} in the file")
-        degree = len(weight) - 1
-        while degree > 0 and weight[degree] == 0:
-            degree -= 1
-        name = f"segment_{kernel['family']}_i{kernel['degree']}_w{degree}_f_and_grad"
-        if name + "(si, grad)" not in shader_match.group(1):
+            if max(abs(back[j] - expected[j]) for j in range(3)) > 1e-12 * max(1.0, frame["scale"]):
+                problems.append(f"{path}: {where}.{end} is {back} in the page, {expected} in the file")
+        function, label = kernel_name(element)
+        if shown["kernel"] != label:
+            problems.append(f"{path}: {where} kernel {shown['kernel']} in the page, {label} expected")
+        if element["type"] == "segment":
+            weight = element.get("weight", [1])
+            if shown["w"][:len(weight)] != weight:
+                problems.append(f"{path}: {where} weight {shown['w']} in the page, {weight} in the file")
+        name = function + "_f_and_grad"
+        if name + "(" not in shader_match.group(1).split("//@@", 1)[0] or not re.search(
+                r"return " + name + r"\(\w+_input\(r, p\), grad\)", shader_match.group(1)):
             problems.append(f"{path}: the shader does not call {name}")
     shader = shader_match.group(1).replace("<\\/", "</")
     if fault:
@@ -106,6 +142,34 @@ def check_page(path, html, skeleton, terms, scratch, validator, fault):
     ok, log = compile_es300(shader, scratch, validator)
     if not ok:
         problems.append(f"{path}: the page's shader does not compile as GLSL ES 3.00:\n{log}")
+    return problems
+
+
+def check_preview(path, html, refused_at, stdout):
+    import base64
+    import struct
+    problems = []
+    shader_match, data_match = SHADER.search(html), DATA.search(html)
+    if not data_match or (shader_match and shader_match.group(1).strip()):
+        return [f"{path}: the mesh preview has a fragment shader or no data"]
+    data = json.loads(data_match.group(1).replace("<\\/", "</"))
+    if data.get("mode") != "mesh preview" or "mode: mesh preview" not in stdout:
+        problems.append(f"{path}: not announced as a mesh preview")
+    if not re.search(re.escape(refused_at) + r"[:.]", data.get("reason", "")):
+        problems.append(f"{path}: the reason {data.get('reason')!r} does not name {refused_at}")
+    mesh = data["mesh"]
+    positions = base64.b64decode(mesh["positions"])
+    normals = base64.b64decode(mesh["normals"])
+    indices = struct.unpack(f"<{3 * mesh['triangles']}I", base64.b64decode(mesh["indices"]))
+    if mesh["triangles"] == 0 or len(positions) != 12 * mesh["vertices"] or len(normals) != len(positions):
+        problems.append(f"{path}: mesh arrays of the wrong size")
+    if indices and max(indices) >= mesh["vertices"]:
+        problems.append(f"{path}: a triangle index out of range")
+    coordinates = struct.unpack(f"<{3 * mesh['vertices']}f", positions)
+    # The page's frame divides by about half the mesh's box diagonal.
+    if max(abs(c) for c in coordinates) > 2.5 or abs(data["radius"] - max(
+            math.sqrt(sum(coordinates[3 * k + j] ** 2 for j in range(3))) for k in range(mesh["vertices"]))) > 1e-6:
+        problems.append(f"{path}: vertices out of the page's frame or radius wrong")
     return problems
 
 
@@ -121,20 +185,39 @@ def check_folder(skelconv, folder, scratch, validator, fault):
         refused_at = expected_terms(skeleton["primitives"], "primitives", terms)
         output = pathlib.Path(scratch) / (path.stem + ".html")
         run = run_view(skelconv, path, output)
+        if path.name.startswith("no_surface"):
+            lines = run.stderr.strip().splitlines()
+            if run.returncode != 2 or output.exists() or len(lines) != 1 or ": iso: no surface" not in lines[0]:
+                problems.append(f"{path.name}: expected a refusal at iso (exit 2, no file), got status "
+                                f"{run.returncode}, file {output.exists()}, stderr {run.stderr.strip()!r}")
+            else:
+                print(f"check_view_pages: {path.name}: refused: {lines[0]}")
+            continue
         if refused_at is None:
             if run.returncode != 0 or not output.exists():
                 problems.append(f"{path.name}: skelconv view failed (status {run.returncode}): {run.stderr.strip()}")
                 continue
             shown += 1
             problems += check_page(path.name, output.read_text(), skeleton, terms, scratch, validator, fault)
+            if shown == 1:
+                # --mesh-preview: the preview even where the page could ray-march.
+                forced = subprocess.run([skelconv, "view", str(path), "-o", str(output), "--mesh-preview"],
+                                        capture_output=True, text=True)
+                if forced.returncode != 0 or "mode: mesh preview" not in forced.stdout or \
+                        '"mode": "mesh preview"' not in output.read_text():
+                    problems.append(f"{path.name}: --mesh-preview did not give the mesh preview: {forced.stdout!r}")
             print(f"check_view_pages: {path.name}: page of {len(terms)} primitives, {output.stat().st_size} bytes")
         else:
-            lines = run.stderr.strip().splitlines()
-            if run.returncode != 2 or output.exists() or len(lines) != 1 or not re.search(re.escape(refused_at) + r"[:.]", lines[0]):
-                problems.append(f"{path.name}: expected a refusal naming {refused_at} (exit 2, no file), got status "
-                                f"{run.returncode}, file {output.exists()}, stderr {run.stderr.strip()!r}")
-            else:
-                print(f"check_view_pages: {path.name}: refused: {lines[0]}")
+            if run.returncode != 0 or not output.exists():
+                problems.append(f"{path.name}: expected a mesh preview (ray marcher refused at {refused_at}), got "
+                                f"status {run.returncode}, stderr {run.stderr.strip()!r}")
+                continue
+            found = check_preview(path.name, output.read_text(), refused_at, run.stdout)
+            if fault:
+                found.append(f"{path.name}: injected fault")
+            problems += found
+            print(f"check_view_pages: {path.name}: mesh preview, {output.stat().st_size} bytes, "
+                  + run.stdout.strip().splitlines()[-1])
     if shown == 0:
         problems.append(f"{folder}: no skeleton the viewer shows")
     return problems
