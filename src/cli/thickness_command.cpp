@@ -66,7 +66,9 @@ std::string report(const SegmentGraph& g, const ThicknessCorrection& c, double t
 
 /// The library names the options by their field; the user typed flags.
 InputError as_flag(const InputError& error) {
-  std::string flag = error.where() == "thickness" ? "tau" : error.where();
+  std::string flag = error.where() == "thickness"             ? "tau"
+                     : error.where() == "point_support_ratio" ? "point_support"
+                                                              : error.where();
   std::replace(flag.begin(), flag.end(), '_', '-');
   return InputError(error.problem(), "--" + flag);
 }
@@ -83,6 +85,7 @@ CLI::App* add_thickness_command(CLI::App& app, ThicknessOptions& options) {
   c->add_option("--max-iterations", options.max_iterations, "Levenberg-Marquardt iterations at most")->capture_default_str();
   c->add_option("--ramp-nodes", options.ramp_nodes, "Split points per segment leaving a corrected node")->capture_default_str();
   c->add_option("--regularisation", options.regularisation, "Penalty on the relative weight changes")->capture_default_str();
+  c->add_option("--point-support", options.point_support, "Support radius of the node points, in units of R")->capture_default_str();
   c->footer(thickness_footer);
   return c;
 }
@@ -104,13 +107,14 @@ int run_thickness(const ThicknessOptions& options) {
     o.max_iterations = options.max_iterations;
     o.ramp_nodes = options.ramp_nodes;
     o.regularisation = options.regularisation;
+    o.point_support_ratio = options.point_support;
     ThicknessCorrection c;
     try {
       c = correct_thickness(graph, o);
     } catch (const InputError& error) {
       throw as_flag(error);
     }
-    write_text_atomically(weighted_skeleton_json(c.refined, c.weights, c.point_weights), options.output_path);
+    write_text_atomically(corrected_skeleton_json(c), options.output_path);
     return report(graph, c, options.tau, options.tolerance, options.output_path);
   });
 }

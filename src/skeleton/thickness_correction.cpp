@@ -126,20 +126,21 @@ SegmentGraph segment_graph_of(const Skeleton& skeleton) {
 }
 
 Skeleton weighted_skeleton(const SegmentGraph& graph, const std::vector<double>& weights,
-                           const std::vector<double>& point_weights) {
+                           const std::vector<double>& point_weights, double point_support) {
+  const KernelSpec point_kernel = KernelSpec::compact(graph.kernel.degree, point_support);
   Skeleton skeleton({}, graph.iso);
   for (const SegmentGraph::Edge& e : graph.edges) {
     const double wa = weights[e.a], wb = weights[e.b];
     skeleton.add(Segment(graph.nodes[e.a], graph.nodes[e.b], graph.kernel, {wa, wb - wa}));
   }
   for (std::size_t k = 0; k < point_weights.size(); ++k) {
-    if (point_weights[k] > 0) skeleton.add(PointPrimitive(graph.nodes[k], graph.kernel, point_weights[k]));
+    if (point_weights[k] > 0) skeleton.add(PointPrimitive(graph.nodes[k], point_kernel, point_weights[k]));
   }
   return skeleton;
 }
 
 std::string weighted_skeleton_json(const SegmentGraph& graph, const std::vector<double>& weights,
-                                   const std::vector<double>& point_weights) {
+                                   const std::vector<double>& point_weights, double point_support) {
   const auto point = [](const Vec3& p) { return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", p.x(), p.y(), p.z()); };
   std::string out = "{\"primitives\": [\n";
   for (std::size_t k = 0; k < graph.edges.size(); ++k) {
@@ -156,10 +157,18 @@ std::string weighted_skeleton_json(const SegmentGraph& graph, const std::vector<
     out += fmt::format(
         ",\n  {{\"type\": \"point\", \"center\": {}, \"weight\": {:.17g}, "
         "\"kernel\": {{\"family\": \"compact\", \"degree\": {}, \"R\": {:.17g}}}}}",
-        point(graph.nodes[k]), point_weights[k], graph.kernel.degree, graph.kernel.R);
+        point(graph.nodes[k]), point_weights[k], graph.kernel.degree, point_support);
   }
   out += fmt::format("\n], \"iso\": {:.17g}}}\n", graph.iso);
   return out;
+}
+
+Skeleton corrected_skeleton(const ThicknessCorrection& c) {
+  return weighted_skeleton(c.refined, c.weights, c.point_weights, c.point_support);
+}
+
+std::string corrected_skeleton_json(const ThicknessCorrection& c) {
+  return weighted_skeleton_json(c.refined, c.weights, c.point_weights, c.point_support);
 }
 
 double thickness_along(const Skeleton& field, const Vec3& foot, const Vec3& normal, double iso, double reach,
@@ -201,6 +210,9 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
   }
   if (o.max_iterations < 0) throw InputError("must be >= 0", "max_iterations");
   if (o.ramp_nodes < 1) throw InputError("must be >= 1", "ramp_nodes");
+  if (!(o.point_support_ratio >= 1 && o.point_support_ratio <= 4)) {
+    throw InputError(fmt::format("must be in [1, 4], got {:.6g}", o.point_support_ratio), "point_support_ratio");
+  }
   if (!(o.regularisation >= 0)) throw InputError("must be >= 0", "regularisation");
   if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {
     throw InputError("must be in [1, 100]", "samples_per_thickness");
@@ -309,7 +321,8 @@ struct Unknowns {
 /// node, linear to 0 at its neighbours; a point primitive at the node) and
 /// Q_j the measured surface point.
 Eigen::MatrixXd thickness_jacobian(const SegmentGraph& r, const std::vector<ThicknessSample>& samples,
-                                   const Skeleton& field, const Unknowns& u) {
+                                   const Skeleton& field, const Unknowns& u, double point_support) {
+  const KernelSpec point_kernel = KernelSpec::compact(r.kernel.degree, point_support);
   std::vector<Segment> from_a, from_b;  // hat pieces: w(t) = 1 − t and w(t) = t
   for (const SegmentGraph::Edge& e : r.edges) {
     from_a.emplace_back(r.nodes[e.a], r.nodes[e.b], r.kernel, std::initializer_list<double>{1.0, -1.0});
@@ -326,7 +339,7 @@ Eigen::MatrixXd thickness_jacobian(const SegmentGraph& r, const std::vector<Thic
       if (u.column[r.edges[e].b] >= 0) jacobian(row, u.column[r.edges[e].b]) -= from_b[e].value(q) / slope;
     }
     for (std::size_t k = 0; k < u.point_column.size(); ++k) {
-      if (u.point_column[k] >= 0) jacobian(row, u.point_column[k]) -= PointPrimitive(r.nodes[k], r.kernel).value(q) / slope;
+      if (u.point_column[k] >= 0) jacobian(row, u.point_column[k]) -= PointPrimitive(r.nodes[k], point_kernel).value(q) / slope;
     }
   }
   return jacobian;
@@ -377,9 +390,9 @@ double fit_cost(const std::vector<ThicknessSample>& samples, double tau, const E
 /// lowers fit_cost; false when no damping does (a local minimum).
 bool improve(ThicknessCorrection& out, const SegmentGraph& graph, const Unknowns& u, double tau, double lambda,
              double& damping) {
-  const Skeleton field = weighted_skeleton(out.refined, out.weights, out.point_weights);
+  const Skeleton field = corrected_skeleton(out);
   // ∂e_j/∂x = (∂r_j/∂w) w_τ/τ
-  const Eigen::MatrixXd jac = thickness_jacobian(out.refined, out.after, field, u) * (out.base_weight / tau);
+  const Eigen::MatrixXd jac = thickness_jacobian(out.refined, out.after, field, u, out.point_support) * (out.base_weight / tau);
   Eigen::VectorXd residual(jac.rows()), row_weight(jac.rows());
   for (Eigen::Index j = 0; j < jac.rows(); ++j) {
     residual(j) = (out.after[std::size_t(j)].thickness - tau) / tau;
@@ -402,7 +415,7 @@ bool improve(ThicknessCorrection& out, const SegmentGraph& graph, const Unknowns
       }
     }
     trial.after = out.before;
-    measure(trial.after, weighted_skeleton(trial.refined, trial.weights, trial.point_weights), graph);
+    measure(trial.after, corrected_skeleton(trial), graph);
     if (fit_cost(trial.after, tau, parameters(trial, u), lambda) < cost) {
       out.weights = std::move(trial.weights), out.point_weights = std::move(trial.point_weights);
       out.after = std::move(trial.after);
@@ -421,6 +434,7 @@ ThicknessCorrection correct_thickness(const SegmentGraph& graph, const Thickness
   const double tau = options.thickness;
   ThicknessCorrection out;
   out.base_weight = base_weight(graph.kernel, graph.iso, tau);
+  out.point_support = options.point_support_ratio * graph.kernel.R;
   out.before = sample_layout(graph, options);
   measure(out.before, weighted_skeleton(graph, std::vector<double>(graph.nodes.size(), out.base_weight)), graph);
   out.corrected_nodes = nodes_to_correct(graph, out.before, options);
