@@ -120,12 +120,13 @@ struct ThicknessCorrectionOptions {
 
 /// One thickness measurement: on edge `edge` of the graph it belongs to, at
 /// parameter t from its node a; thickness 0 where the surface misses the
-/// skeleton point.
+/// skeleton point. A target of 0 (a SCALIS tip) is not counted.
 struct ThicknessSample {
   std::size_t edge = 0;
   double t = 0.0;
   Vec3 foot = Vec3::Zero();
   double thickness = 0.0;
+  double target = 0.0;  ///< the thickness asked for at `foot`
 };
 
 struct ThicknessCorrection {
