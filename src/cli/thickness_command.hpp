@@ -21,9 +21,11 @@ struct ThicknessOptions {
   std::string input_path;
   std::string output_path;
   double tau = 0.0;
+  bool tau_given = false;  ///< --tau was on the command line
   double tolerance = 0.01;
   int max_iterations = 30;
   int ramp_nodes = 4;
+  bool ramp_nodes_given = false;  ///< else the SCALIS default (ScalisThicknessCorrectionOptions)
   double regularisation = 1e-5;
   double point_support = 1.25;  ///< ThicknessCorrectionOptions::point_support_ratio
 };

@@ -17,9 +17,6 @@
 namespace skelconv {
 namespace {
 
-/// Points farther than this fraction of the skeleton's size from the plane
-/// through the first non-collinear nodes make the graph non-planar.
-constexpr double planarity_ratio = 1e-9;
 const char* primitive_type_name(const Primitive& p) {
   static constexpr const char* names[] = {"segment", "polygon", "scalis_segment", "scalis_triangle", "point"};
   return names[p.index()];
@@ -43,44 +40,6 @@ void check_segment(const Segment& s, const Segment* first, const std::string& wh
     throw InputError("differs from primitives[0].kernel: the correction needs one kernel for the whole graph",
                      where + ".kernel");
   }
-}
-
-std::size_t node_of(std::vector<Vec3>& nodes, const Vec3& p, double merge) {
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    if ((nodes[k] - p).norm() <= merge) return k;
-  }
-  nodes.push_back(p);
-  return nodes.size() - 1;
-}
-
-/// The unit normal of the plane holding every node (any unit vector normal
-/// to the line for a collinear graph). InputError if there is none.
-Vec3 plane_normal(const SegmentGraph& g, double size) {
-  const Vec3 o = g.nodes[0];
-  const Vec3 d = (g.nodes[g.edges[0].b] - g.nodes[g.edges[0].a]).normalized();
-  Vec3 normal = Vec3::Zero();
-  for (const Vec3& p : g.nodes) {
-    const Vec3 c = d.cross(p - o);
-    if (c.norm() > planarity_ratio * size) {
-      normal = c.normalized();
-      break;
-    }
-  }
-  if (normal.isZero()) {  // collinear: the axis least aligned with the line gives a normal
-    Eigen::Index axis = 0;
-    d.cwiseAbs().minCoeff(&axis);
-    normal = d.cross(Vec3::Unit(axis)).normalized();
-  }
-  for (const SegmentGraph::Edge& e : g.edges) {
-    for (std::size_t n : {e.a, e.b}) {
-      if (std::abs(normal.dot(g.nodes[n] - o)) > planarity_ratio * size) {
-        throw InputError("the segments are not in one plane: the correction measures the thickness along the "
-                         "plane's normal",
-                         e.location);
-      }
-    }
-  }
-  return normal;
 }
 
 }  // namespace
@@ -110,12 +69,12 @@ SegmentGraph segment_graph_of(const Skeleton& skeleton) {
   for (const Segment* s : segments) box.extend(s->a()).extend(s->b());
   const double size = box.diagonal().norm();
   for (std::size_t k = 0; k < segments.size(); ++k) {
-    const std::size_t a = node_of(graph.nodes, segments[k]->a(), node_merge_ratio * size);
-    const std::size_t b = node_of(graph.nodes, segments[k]->b(), node_merge_ratio * size);
+    const std::size_t a = detail::node_of(graph.nodes, segments[k]->a(), node_merge_ratio * size);
+    const std::size_t b = detail::node_of(graph.nodes, segments[k]->b(), node_merge_ratio * size);
     graph.edges.push_back({a, b, fmt::format("primitives[{}]", k)});
   }
   graph.kernel = segments[0]->kernel();
-  graph.normal = plane_normal(graph, size);
+  graph.normal = detail::plane_normal(graph.nodes, graph.edges, size);
   return graph;
 }
 
@@ -211,14 +170,6 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
   if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {
     throw InputError("must be in [1, 100]", "samples_per_thickness");
   }
-}
-
-/// w_τ = iso / f₁(τ), f₁ the field at distance τ from the middle of a
-/// segment of weight 1 and half-length R: its support ball (radius R) meets
-/// only skeleton, so f₁ is the infinite line's field (Zanni §4.3, fig. 11).
-double base_weight(const KernelSpec& kernel, double iso, double tau) {
-  const Segment line(Vec3(-kernel.R, 0, 0), Vec3(kernel.R, 0, 0), kernel, {1.0});
-  return iso / line.value(Vec3(0, tau, 0));
 }
 
 /// Sample feet: on each edge, t = j/n, j = 0..n, n ≥ samples_per_thickness · length / τ.
@@ -344,7 +295,7 @@ ClassicalModel classical_model(const ThicknessCorrection& c, const std::vector<b
 ThicknessCorrection correct_thickness(const SegmentGraph& graph, const ThicknessCorrectionOptions& options) {
   check_options(graph, options);
   ThicknessCorrection out;
-  out.base_weight = base_weight(graph.kernel, graph.iso, options.thickness);
+  out.base_weight = detail::long_segment_weight(graph.kernel, graph.iso, options.thickness);
   out.point_support = options.point_support_ratio * graph.kernel.R;
   detail::ThicknessFitSettings settings;
   settings.normal = graph.normal, settings.iso = graph.iso;

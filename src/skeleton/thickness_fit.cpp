@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skelconv/errors.hpp"
+#include "skelconv/primitives/segment.hpp"
+
 namespace skelconv::detail {
 namespace {
 
@@ -54,10 +57,26 @@ bool improve(const LinearThicknessModel& model, ThicknessFitResult& out, const T
   normal_matrix.diagonal().array() += s.regularisation;
   const Eigen::VectorXd gradient = jac.transpose() * residual + s.regularisation * out.x;
   const double cost = fit_cost(out.after, out.x, s.regularisation);
+  // Active set: an unknown on its bound whose descent direction points out
+  // of the bounds takes no step; the others solve the reduced system (a
+  // projected full step would let one bound stall every unknown).
+  std::vector<Eigen::Index> active;
+  for (Eigen::Index k = 0; k < out.x.size(); ++k) {
+    if (!(out.x(k) <= model.lower[std::size_t(k)] && gradient(k) > 0)) active.push_back(k);
+  }
+  const auto n = Eigen::Index(active.size());
+  Eigen::MatrixXd reduced(n, n);
+  Eigen::VectorXd reduced_gradient(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    reduced_gradient(i) = gradient(active[std::size_t(i)]);
+    for (Eigen::Index j = 0; j < n; ++j) reduced(i, j) = normal_matrix(active[std::size_t(i)], active[std::size_t(j)]);
+  }
   for (int attempt = 0; attempt < damping_attempts; ++attempt) {
-    Eigen::MatrixXd damped = normal_matrix;
-    damped.diagonal() += damping * normal_matrix.diagonal();
-    Eigen::VectorXd x = out.x + damped.ldlt().solve(-gradient);
+    Eigen::MatrixXd damped = reduced;
+    damped.diagonal() += damping * reduced.diagonal();
+    const Eigen::VectorXd step = damped.ldlt().solve(-reduced_gradient);
+    Eigen::VectorXd x = out.x;
+    for (Eigen::Index i = 0; i < n; ++i) x(active[std::size_t(i)]) += step(i);
     for (Eigen::Index k = 0; k < x.size(); ++k) x(k) = std::max(x(k), model.lower[std::size_t(k)]);
     std::vector<ThicknessSample> trial = out.after;
     measure_thickness(trial, model.build(x), s);
@@ -71,7 +90,54 @@ bool improve(const LinearThicknessModel& model, ThicknessFitResult& out, const T
   return false;
 }
 
+/// Points farther than this fraction of the skeleton's size from the plane
+/// through the first non-collinear nodes make the graph non-planar.
+constexpr double planarity_ratio = 1e-9;
+
 }  // namespace
+
+std::size_t node_of(std::vector<Vec3>& nodes, const Vec3& p, double merge) {
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    if ((nodes[k] - p).norm() <= merge) return k;
+  }
+  nodes.push_back(p);
+  return nodes.size() - 1;
+}
+
+/// The unit normal of the plane holding every node (any unit vector normal
+/// to the line for a collinear graph). InputError if there is none.
+Vec3 plane_normal(const std::vector<Vec3>& nodes, const std::vector<SegmentGraph::Edge>& edges, double size) {
+  const Vec3 o = nodes[0];
+  const Vec3 d = (nodes[edges[0].b] - nodes[edges[0].a]).normalized();
+  Vec3 normal = Vec3::Zero();
+  for (const Vec3& p : nodes) {
+    const Vec3 c = d.cross(p - o);
+    if (c.norm() > planarity_ratio * size) {
+      normal = c.normalized();
+      break;
+    }
+  }
+  if (normal.isZero()) {  // collinear: the axis least aligned with the line gives a normal
+    Eigen::Index axis = 0;
+    d.cwiseAbs().minCoeff(&axis);
+    normal = d.cross(Vec3::Unit(axis)).normalized();
+  }
+  for (const SegmentGraph::Edge& e : edges) {
+    for (std::size_t n : {e.a, e.b}) {
+      if (std::abs(normal.dot(nodes[n] - o)) > planarity_ratio * size) {
+        throw InputError("the segments are not in one plane: the correction measures the thickness along the "
+                         "plane's normal",
+                         e.location);
+      }
+    }
+  }
+  return normal;
+}
+
+double long_segment_weight(const KernelSpec& kernel, double iso, double tau) {
+  const Segment line(Vec3(-kernel.R, 0, 0), Vec3(kernel.R, 0, 0), kernel, {1.0});
+  return iso / line.value(Vec3(0, tau, 0));
+}
 
 void measure_thickness(std::vector<ThicknessSample>& samples, const Skeleton& field, const ThicknessFitSettings& s) {
   for (ThicknessSample& x : samples) x.thickness = thickness_along(field, x.foot, s.normal, s.iso, s.reach);

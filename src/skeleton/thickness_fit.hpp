@@ -46,6 +46,20 @@ struct ThicknessFitResult {
   bool converged = false;
 };
 
+/// The index of the node at `p` in `nodes` (within `merge`), appended if new.
+std::size_t node_of(std::vector<Vec3>& nodes, const Vec3& p, double merge);
+
+/// The unit normal of the plane holding every node of `edges` (any unit
+/// vector normal to the line for a collinear graph); InputError located at
+/// the first edge out of the plane. `size`: the graph's bounding-box diagonal.
+Vec3 plane_normal(const std::vector<Vec3>& nodes, const std::vector<SegmentGraph::Edge>& edges, double size);
+
+/// iso / f₁(τ), f₁ the field at distance τ from the middle of a segment of
+/// weight 1 and half-length R: its support ball (radius R) meets only
+/// skeleton, so f₁ is the infinite line's field (Zanni §4.3, fig. 11). The
+/// constant weight that gives a long segment of `kernel` the thickness τ.
+double long_segment_weight(const KernelSpec& kernel, double iso, double tau);
+
 /// Thickness at every sample of `samples` for `field` (ThicknessSample::thickness).
 void measure_thickness(std::vector<ThicknessSample>& samples, const Skeleton& field, const ThicknessFitSettings& s);
 
