@@ -73,7 +73,10 @@ std::string report(const SegmentGraph& g, const ThicknessCorrection& c, double t
 /// The SCALIS report: as report(), relative to each sample's target τ(t).
 std::string scalis_report(const ScalisSegmentGraph& g, const ScalisThicknessCorrection& c, double tolerance,
                           const std::string& output) {
-  std::string text = fmt::format("output: {}\npieces: {}\ncorrected_nodes:", output, c.pieces.size());
+  std::size_t points = 0;
+  for (const ScalisThicknessCorrection::NodePoint& p : c.points) points += p.weight != 0 ? 1 : 0;
+  std::string text = fmt::format("output: {}\nadded: {} ramp segments, {} points\ncorrected_nodes:", output,
+                                 c.ramps.size(), points);
   for (std::size_t n : c.corrected_nodes) {
     text += fmt::format(" ({:.6g}, {:.6g}, {:.6g})", g.nodes[n].x(), g.nodes[n].y(), g.nodes[n].z());
   }

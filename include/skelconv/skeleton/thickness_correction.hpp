@@ -41,7 +41,8 @@
 // classical convolution with the sum blend the node weights and the point
 // weights enter the field linearly, so one local fit handles both the thin
 // free ends (a missing half-skeleton) and the bulging junctions (fields that
-// add), with no blend the paper leaves unspecified.
+// add), with no blend the paper leaves unspecified. SCALIS graphs, the
+// paper's own case: skelconv/skeleton/scalis_thickness_correction.hpp.
 //
 // Supported: top-level segment primitives (no blend node: their sum is the
 // field), one compact-support kernel (family "compact", any degree the
