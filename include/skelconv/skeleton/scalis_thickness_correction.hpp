@@ -16,9 +16,10 @@
 //      crosses the iso level (as thickness_correction.hpp); the target at a
 //      sample is the segment's τ(t) there (a sample of radius 0, a tip, is
 //      not counted);
-//   3. detection: a node of radius τ_n > 0 (the largest radius of its
-//      segments there) needs correction when a sample within its support
-//      radius σ τ_n departs from its target by more than `tolerance`;
+//   3. detection, with the factors m_e of step 4: a node of radius τ_n > 0
+//      (the largest radius of its segments there) needs correction when a
+//      sample within its support radius σ τ_n departs from its target by
+//      more than `tolerance`;
 //   4. the fit: each segment keeps its radii and gets the constant factor
 //      m_e that gives its radius exactly on a long segment of its slope
 //      (scale invariance: on a cone the thickness is a fixed multiple of the
@@ -36,8 +37,10 @@
 // Why this variant: the paper mixes its point corrections by Barthe blends
 // whose operators it does not give (SPEC §6) and chooses their influence
 // from the radius variation at the node (Figure 13). Here the points enter
-// the sum, and their weights and the multipliers are fitted to the
-// thickness the radii ask for.
+// the sum, and their weights and the ramps' hat weights are fitted to the
+// thickness the radii ask for. The ramps are classical segments because a
+// SCALIS primitive's factor must be positive, and a free end wants negative
+// weights next to its node (as in the classical correction).
 //
 // Supported: top-level "scalis_segment" primitives of one compact kernel
 // (family, degree, σ), coplanar, with σ · |τ1 − τ0| / |AB| < 1 on each
