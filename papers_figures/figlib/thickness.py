@@ -15,11 +15,18 @@ import tempfile
 import numpy as np
 
 from figlib import plot
-from figlib.levelset import crossing
+from figlib.levelset import X_TOL, crossing
 
 DEGREE, SIGMA = 6, 2.0          # Zanni §4.3's practice: compact kernel of degree 6, support σ τ with σ = 2
 KERNEL = {"family": "compact", "degree": DEGREE, "sigma": SIGMA}
 NORMAL = (0.0, 0.0, 1.0)
+# Root-finding tolerance of the quick (ctest) runs: the claims are at the 1e-2 level, so 1e-9 of
+# the thickness is plenty and halves the `skelconv eval` rounds; full runs keep levelset's default.
+QUICK_X_TOL = 1e-9
+
+
+def x_tol(ctx):
+    return ctx.res(X_TOL, QUICK_X_TOL)
 
 
 def scalis(a, b, r0, r1):
@@ -57,7 +64,7 @@ def profile(ctx, skeleton, primitives, step):
         s = np.linspace(0.0, length, int(np.ceil(length / step)) + 1)
         feet = a[None, :] + (s / length)[:, None] * (b - a)[None, :]
         tau = p["radius"][0] + (s / length) * (p["radius"][1] - p["radius"][0])
-        r = np.nan_to_num(crossing(field, feet, NORMAL, 1.0, 0.0, reach), nan=0.0)
+        r = np.nan_to_num(crossing(field, feet, NORMAL, 1.0, 0.0, reach, x_tol=x_tol(ctx)), nan=0.0)
         out.append((s, tau, r))
     return out
 
@@ -70,7 +77,7 @@ def worst_departure(profiles):
 def extent_beyond(ctx, skeleton, node, direction, reach):
     """How far the surface reaches from `node` along the unit `direction` (in the skeleton's plane)."""
     field = ctx.field_of(skeleton["primitives"])
-    r = crossing(field, np.asarray([node], float), np.asarray(direction, float), 1.0, 0.0, reach)
+    r = crossing(field, np.asarray([node], float), np.asarray(direction, float), 1.0, 0.0, reach, x_tol=x_tol(ctx))
     return float(np.nan_to_num(r[0], nan=0.0))
 
 
