@@ -1,7 +1,8 @@
 // The thickness correction (skelconv/skeleton/thickness_correction.hpp,
 // Zanni et al. 2013 §5.1) on three graphs: a Y fork, an L corner, a bent
 // chain of unequal lengths. The claim checked: after correction the surface
-// lies within 2% of τ along every segment, and before it does not.
+// lies within 2% of τ along every segment, and before it does not; the fit
+// reaches its own tolerance (1%), and the independent reference agrees.
 //
 // The reference thickness is measured independently of the optimiser: the
 // corrected skeleton goes through its JSON text and the file reader (one
@@ -13,9 +14,11 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "expect_input_error.hpp"
+#include "skelconv/skeleton/scalis_thickness_correction.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
 #include "skelconv/skeleton/thickness_correction.hpp"
 
@@ -99,7 +102,7 @@ void expect_correction_matters_and_works(const std::string& json) {
   const ThicknessCorrection c = correct_thickness(graph, options);
   const Skeleton before = parse_skeleton_json(
       weighted_skeleton_json(graph, std::vector<double>(graph.nodes.size(), c.base_weight)));
-  const Skeleton after = parse_skeleton_json(weighted_skeleton_json(c.refined, c.weights, c.point_weights));
+  const Skeleton after = parse_skeleton_json(corrected_skeleton_json(c));
   const double worst_before = worst_reference_departure(graph, before);
   const double worst_after = worst_reference_departure(graph, after);
   ::testing::Test::RecordProperty("worst_before", std::to_string(worst_before));
@@ -108,12 +111,28 @@ void expect_correction_matters_and_works(const std::string& json) {
               c.corrected_nodes.size(), c.iterations, worst_before, worst_after);
   EXPECT_GT(worst_before, claim) << "the uncorrected graph is already within 2%: the test shows nothing";
   EXPECT_LT(worst_after, claim);
+  EXPECT_TRUE(c.converged) << "the fit stopped above its tolerance " << options.tolerance;
+  // Between the optimiser's samples too: the reference points are not its samples.
+  EXPECT_LT(worst_after, options.tolerance);
   EXPECT_FALSE(c.corrected_nodes.empty());
 }
 
 TEST(ThicknessCorrection, YForkWithin2Percent) { expect_correction_matters_and_works(y_fork()); }
 TEST(ThicknessCorrection, LCornerWithin2Percent) { expect_correction_matters_and_works(l_corner()); }
 TEST(ThicknessCorrection, BentChainOfUnequalLengthsWithin2Percent) { expect_correction_matters_and_works(bent_chain()); }
+
+TEST(ThicknessCorrection, PointsOfTheSegmentsSupportStallAboveTolerance) {
+  // Why the node points have their own support radius (point_support_ratio):
+  // with the segments' R, the ramp cannot follow the missing half-line at a
+  // free end and the fit stops above 1% (its least-squares optimum).
+  const SegmentGraph graph = segment_graph_of(parse_skeleton_json(l_corner()));
+  ThicknessCorrectionOptions options;
+  options.thickness = tau;
+  options.point_support_ratio = 1.0;
+  const ThicknessCorrection c = correct_thickness(graph, options);
+  EXPECT_FALSE(c.converged);
+  EXPECT_GT(worst_reference_departure(graph, parse_skeleton_json(corrected_skeleton_json(c))), options.tolerance);
+}
 
 TEST(ThicknessCorrection, BaseWeightGivesTauOnALongSegment) {
   // The middle of a long straight segment needs no correction: there the
@@ -142,6 +161,103 @@ TEST(ThicknessCorrection, RejectsWhatItDoesNotSupport) {
   test::expect_input_error([&] { (void)correct_thickness(g, options); }, "thickness", "must be > 0");
   options.thickness = support;
   test::expect_input_error([&] { (void)correct_thickness(g, options); }, "thickness", "below the kernel's support radius");
+}
+
+
+// --- SCALIS graphs (scalis_thickness_correction.hpp) ------------------------
+// Zanni's practice: compact kernel of degree 6, σ = 2. The target is the
+// radius τ(t) the file asks for; the reference is measured as above (the
+// written JSON through the reader, 7 points per mean radius plus midpoints,
+// bisection from a scan of 500 steps), skipping only the tips (τ = 0).
+
+std::string scalis_json(const std::vector<std::tuple<Vec3, Vec3, double, double>>& segments) {
+  std::string out = "{\"primitives\": [";
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const auto& [a, b, r0, r1] = segments[k];
+    out += (k ? ", " : "") + std::string("{\"type\": \"scalis_segment\", \"a\": [") + std::to_string(a.x()) + ", " +
+           std::to_string(a.y()) + ", 0], \"b\": [" + std::to_string(b.x()) + ", " + std::to_string(b.y()) +
+           ", 0], \"radius\": [" + std::to_string(r0) + ", " + std::to_string(r1) +
+           "], \"kernel\": {\"family\": \"compact\", \"degree\": 6, \"sigma\": 2}}";
+  }
+  return out + "]}";
+}
+
+double scalis_reference_departure(const ScalisSegmentGraph& g, const Skeleton& skeleton, double reach) {
+  double worst = 0;
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    const Vec3 a = g.nodes[g.edges[e].a], b = g.nodes[g.edges[e].b];
+    const double r0 = g.radius[e][0], r1 = g.radius[e][1];
+    const int n = int(std::ceil(reference_per_tau * (b - a).norm() / (0.5 * (r0 + r1))));
+    for (int j = 0; j <= n; ++j) {
+      for (double t : {double(j) / n, (j + 0.5) / n}) {
+        const double target = r0 + t * (r1 - r0);
+        if (t > 1 || !(target > 0)) continue;
+        const auto g_of = [&](double r) { return skeleton.value(a + t * (b - a) + r * g.normal) - skeleton.iso(); };
+        // 499 steps, not 500: the grid must not land exactly on a ramp
+        // segment's support sphere around its end, where the runtime's
+        // segment_compact_i6_w1 returns NaN (a defect of the closed form,
+        // reported; P = (1.2, 0, 0.6) for the drop's ramp ending at 1.2 with R = 0.6).
+        double hi = reach, lo = reach;
+        for (int k = 498; k >= 0 && g_of(lo) < 0; --k) hi = lo, lo = reach * k / 499;
+        double r = 0;
+        if (g_of(lo) >= 0) {
+          for (int it = 0; it < 100; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (g_of(mid) >= 0 ? lo : hi) = mid;
+          }
+          r = 0.5 * (lo + hi);
+        }
+        worst = std::max(worst, std::abs(r / target - 1));
+      }
+    }
+  }
+  return worst;
+}
+
+void expect_scalis_correction_works(const std::string& json) {
+  const Skeleton input = parse_skeleton_json(json);
+  const ScalisSegmentGraph graph = scalis_segment_graph_of(input);
+  const ScalisThicknessCorrectionOptions options;
+  const ScalisThicknessCorrection c = correct_scalis_thickness(graph, options);
+  double largest = 0;
+  for (const auto& r : graph.radius) largest = std::max({largest, r[0], r[1]});
+  const double reach = 2 * options.point_support_ratio * graph.kernel.sigma * largest;  // beyond every support
+  const double before = scalis_reference_departure(graph, input, reach);
+  const double after =
+      scalis_reference_departure(graph, parse_skeleton_json(scalis_corrected_skeleton_json(graph, c)), reach);
+  std::printf("SCALIS: corrected nodes %zu, iterations %d, worst |r/tau - 1| before %.4f after %.4f\n",
+              c.corrected_nodes.size(), c.iterations, before, after);
+  EXPECT_GT(before, claim) << "the uncorrected graph is already within 2%: the test shows nothing";
+  EXPECT_TRUE(c.converged) << "the fit stopped above its tolerance " << options.tolerance;
+  EXPECT_LT(after, claim);
+}
+
+TEST(ScalisThicknessCorrection, LCornerWithin2Percent) {
+  expect_scalis_correction_works(scalis_json({{Vec3(3, 0, 0), Vec3::Zero(), 0.5, 0.5}, {Vec3::Zero(), Vec3(0, 3, 0), 0.5, 0.5}}));
+}
+TEST(ScalisThicknessCorrection, ThicknessMaximumWithin2Percent) {
+  // Zanni Figure 14's (0,1,0): radii 0 → 1 → 0 (here 0 → 0.5 → 0).
+  expect_scalis_correction_works(scalis_json({{Vec3::Zero(), Vec3(2, 0, 0), 0.0, 0.5}, {Vec3(2, 0, 0), Vec3(4, 0, 0), 0.5, 0.0}}));
+}
+TEST(ScalisThicknessCorrection, WaterDropWithin2Percent) {
+  // Zanni Figure 18: three segments, a tip of radius 0, a thick free end.
+  expect_scalis_correction_works(scalis_json({{Vec3::Zero(), Vec3(1.2, 0, 0), 0.0, 0.3},
+                                              {Vec3(1.2, 0, 0), Vec3(1.9, 0, 0), 0.3, 0.45},
+                                              {Vec3(1.9, 0, 0), Vec3(2.3, 0, 0), 0.45, 0.5}}));
+}
+TEST(ScalisThicknessCorrection, YForkOfUnequalRadiiWithin2Percent) {
+  expect_scalis_correction_works(scalis_json({{Vec3::Zero(), polar(3, 90), 0.5, 0.4},
+                                              {Vec3::Zero(), polar(3, 210), 0.5, 0.3},
+                                              {Vec3::Zero(), polar(3, 330), 0.5, 0.5}}));
+}
+
+TEST(ScalisThicknessCorrection, RejectsWhatItDoesNotSupport) {
+  test::expect_input_error([&] { (void)scalis_segment_graph_of(parse_skeleton_json(l_corner())); }, "primitives[0].type",
+                           "\"scalis_segment\" primitives only");
+  test::expect_input_error([&] { (void)scalis_segment_graph_of(parse_skeleton_json(R"({"primitives": [{"type": "scalis_segment", "a": [0,0,0], "b": [1,0,0], "radius": [0.1, 0.9], "kernel": {"family": "compact", "degree": 6, "sigma": 2}}]})")); },
+                           "primitives[0].radius", "must be < 1");
+  test::expect_input_error([&] { (void)scalis_segment_graph_of(parse_skeleton_json(R"({"primitives": [{"type": "scalis_segment", "a": [0,0,0], "b": [1,0,0], "radius": [0.5, 0.5], "kernel": {"family": "cauchy", "degree": 4, "sigma": 1}}]})")); },
+                           "primitives[0].kernel.family", "compact");
 }
 
 }  // namespace thickness_correction_test

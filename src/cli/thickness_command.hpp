@@ -1,6 +1,6 @@
 // src/cli/thickness_command.hpp — `skelconv thickness FILE.json --tau T
 // -o OUT.json [--tolerance e] [--max-iterations n] [--ramp-nodes m]
-// [--regularisation l]`.
+// [--regularisation l] [--point-support r]`.
 //
 // The thickness correction of Zanni et al. 2013 §5.1
 // (skelconv/skeleton/thickness_correction.hpp, docs/thickness_correction.md)
@@ -21,10 +21,13 @@ struct ThicknessOptions {
   std::string input_path;
   std::string output_path;
   double tau = 0.0;
+  bool tau_given = false;  ///< --tau was on the command line
   double tolerance = 0.01;
   int max_iterations = 30;
   int ramp_nodes = 4;
+  bool ramp_nodes_given = false;  ///< else the SCALIS default (ScalisThicknessCorrectionOptions)
   double regularisation = 1e-5;
+  double point_support = 1.25;  ///< ThicknessCorrectionOptions::point_support_ratio
 };
 
 CLI::App* add_thickness_command(CLI::App& app, ThicknessOptions& options);

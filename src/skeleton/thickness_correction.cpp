@@ -12,19 +12,10 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/primitives/point.hpp"
 #include "skelconv/primitives/segment.hpp"
+#include "thickness_fit.hpp"
 
 namespace skelconv {
 namespace {
-
-/// Points farther than this fraction of the skeleton's size from the plane
-/// through the first non-collinear nodes make the graph non-planar.
-constexpr double planarity_ratio = 1e-9;
-/// The power p of the fit's objective Σ|e_j|^p (departure_cost). Least
-/// squares (2): higher powers approach the maximum the tolerance bounds,
-/// but on the test graphs they converge slower and end farther from τ.
-constexpr double fit_power = 2;
-/// Levenberg–Marquardt damping: start, growth on a rejected step, floor.
-constexpr double damping_start = 1e-4, damping_growth = 10.0, damping_floor = 1e-12;
 
 const char* primitive_type_name(const Primitive& p) {
   static constexpr const char* names[] = {"segment", "polygon", "scalis_segment", "scalis_triangle", "point"};
@@ -49,44 +40,6 @@ void check_segment(const Segment& s, const Segment* first, const std::string& wh
     throw InputError("differs from primitives[0].kernel: the correction needs one kernel for the whole graph",
                      where + ".kernel");
   }
-}
-
-std::size_t node_of(std::vector<Vec3>& nodes, const Vec3& p, double merge) {
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    if ((nodes[k] - p).norm() <= merge) return k;
-  }
-  nodes.push_back(p);
-  return nodes.size() - 1;
-}
-
-/// The unit normal of the plane holding every node (any unit vector normal
-/// to the line for a collinear graph). InputError if there is none.
-Vec3 plane_normal(const SegmentGraph& g, double size) {
-  const Vec3 o = g.nodes[0];
-  const Vec3 d = (g.nodes[g.edges[0].b] - g.nodes[g.edges[0].a]).normalized();
-  Vec3 normal = Vec3::Zero();
-  for (const Vec3& p : g.nodes) {
-    const Vec3 c = d.cross(p - o);
-    if (c.norm() > planarity_ratio * size) {
-      normal = c.normalized();
-      break;
-    }
-  }
-  if (normal.isZero()) {  // collinear: the axis least aligned with the line gives a normal
-    Eigen::Index axis = 0;
-    d.cwiseAbs().minCoeff(&axis);
-    normal = d.cross(Vec3::Unit(axis)).normalized();
-  }
-  for (const SegmentGraph::Edge& e : g.edges) {
-    for (std::size_t n : {e.a, e.b}) {
-      if (std::abs(normal.dot(g.nodes[n] - o)) > planarity_ratio * size) {
-        throw InputError("the segments are not in one plane: the correction measures the thickness along the "
-                         "plane's normal",
-                         e.location);
-      }
-    }
-  }
-  return normal;
 }
 
 }  // namespace
@@ -116,30 +69,31 @@ SegmentGraph segment_graph_of(const Skeleton& skeleton) {
   for (const Segment* s : segments) box.extend(s->a()).extend(s->b());
   const double size = box.diagonal().norm();
   for (std::size_t k = 0; k < segments.size(); ++k) {
-    const std::size_t a = node_of(graph.nodes, segments[k]->a(), node_merge_ratio * size);
-    const std::size_t b = node_of(graph.nodes, segments[k]->b(), node_merge_ratio * size);
+    const std::size_t a = detail::node_of(graph.nodes, segments[k]->a(), node_merge_ratio * size);
+    const std::size_t b = detail::node_of(graph.nodes, segments[k]->b(), node_merge_ratio * size);
     graph.edges.push_back({a, b, fmt::format("primitives[{}]", k)});
   }
   graph.kernel = segments[0]->kernel();
-  graph.normal = plane_normal(graph, size);
+  graph.normal = detail::plane_normal(graph.nodes, graph.edges, size);
   return graph;
 }
 
 Skeleton weighted_skeleton(const SegmentGraph& graph, const std::vector<double>& weights,
-                           const std::vector<double>& point_weights) {
+                           const std::vector<double>& point_weights, double point_support) {
+  const KernelSpec point_kernel = KernelSpec::compact(graph.kernel.degree, point_support);
   Skeleton skeleton({}, graph.iso);
   for (const SegmentGraph::Edge& e : graph.edges) {
     const double wa = weights[e.a], wb = weights[e.b];
     skeleton.add(Segment(graph.nodes[e.a], graph.nodes[e.b], graph.kernel, {wa, wb - wa}));
   }
   for (std::size_t k = 0; k < point_weights.size(); ++k) {
-    if (point_weights[k] > 0) skeleton.add(PointPrimitive(graph.nodes[k], graph.kernel, point_weights[k]));
+    if (point_weights[k] > 0) skeleton.add(PointPrimitive(graph.nodes[k], point_kernel, point_weights[k]));
   }
   return skeleton;
 }
 
 std::string weighted_skeleton_json(const SegmentGraph& graph, const std::vector<double>& weights,
-                                   const std::vector<double>& point_weights) {
+                                   const std::vector<double>& point_weights, double point_support) {
   const auto point = [](const Vec3& p) { return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", p.x(), p.y(), p.z()); };
   std::string out = "{\"primitives\": [\n";
   for (std::size_t k = 0; k < graph.edges.size(); ++k) {
@@ -156,10 +110,18 @@ std::string weighted_skeleton_json(const SegmentGraph& graph, const std::vector<
     out += fmt::format(
         ",\n  {{\"type\": \"point\", \"center\": {}, \"weight\": {:.17g}, "
         "\"kernel\": {{\"family\": \"compact\", \"degree\": {}, \"R\": {:.17g}}}}}",
-        point(graph.nodes[k]), point_weights[k], graph.kernel.degree, graph.kernel.R);
+        point(graph.nodes[k]), point_weights[k], graph.kernel.degree, point_support);
   }
   out += fmt::format("\n], \"iso\": {:.17g}}}\n", graph.iso);
   return out;
+}
+
+Skeleton corrected_skeleton(const ThicknessCorrection& c) {
+  return weighted_skeleton(c.refined, c.weights, c.point_weights, c.point_support);
+}
+
+std::string corrected_skeleton_json(const ThicknessCorrection& c) {
+  return weighted_skeleton_json(c.refined, c.weights, c.point_weights, c.point_support);
 }
 
 double thickness_along(const Skeleton& field, const Vec3& foot, const Vec3& normal, double iso, double reach,
@@ -201,18 +163,13 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
   }
   if (o.max_iterations < 0) throw InputError("must be >= 0", "max_iterations");
   if (o.ramp_nodes < 1) throw InputError("must be >= 1", "ramp_nodes");
+  if (!(o.point_support_ratio >= 1 && o.point_support_ratio <= 4)) {
+    throw InputError(fmt::format("must be in [1, 4], got {:.6g}", o.point_support_ratio), "point_support_ratio");
+  }
   if (!(o.regularisation >= 0)) throw InputError("must be >= 0", "regularisation");
   if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {
     throw InputError("must be in [1, 100]", "samples_per_thickness");
   }
-}
-
-/// w_τ = iso / f₁(τ), f₁ the field at distance τ from the middle of a
-/// segment of weight 1 and half-length R: its support ball (radius R) meets
-/// only skeleton, so f₁ is the infinite line's field (Zanni §4.3, fig. 11).
-double base_weight(const KernelSpec& kernel, double iso, double tau) {
-  const Segment line(Vec3(-kernel.R, 0, 0), Vec3(kernel.R, 0, 0), kernel, {1.0});
-  return iso / line.value(Vec3(0, tau, 0));
 }
 
 /// Sample feet: on each edge, t = j/n, j = 0..n, n ≥ samples_per_thickness · length / τ.
@@ -223,20 +180,10 @@ std::vector<ThicknessSample> sample_layout(const SegmentGraph& g, const Thicknes
     const int n = std::max(1, int(std::ceil(o.samples_per_thickness * (b - a).norm() / o.thickness)));
     for (int j = 0; j <= n; ++j) {
       const double t = double(j) / n;
-      samples.push_back({e, t, a + t * (b - a), 0.0});
+      samples.push_back({e, t, a + t * (b - a), 0.0, o.thickness});
     }
   }
   return samples;
-}
-
-void measure(std::vector<ThicknessSample>& samples, const Skeleton& field, const SegmentGraph& g) {
-  for (ThicknessSample& s : samples) s.thickness = thickness_along(field, s.foot, g.normal, g.iso, g.kernel.R);
-}
-
-double worst_departure(const std::vector<ThicknessSample>& samples, double tau) {
-  double worst = 0;
-  for (const ThicknessSample& s : samples) worst = std::max(worst, std::abs(s.thickness - tau) / tau);
-  return worst;
 }
 
 std::vector<std::size_t> nodes_to_correct(const SegmentGraph& g, const std::vector<ThicknessSample>& samples,
@@ -296,146 +243,86 @@ SegmentGraph refine(const SegmentGraph& g, const std::vector<std::size_t>& corre
   return r;
 }
 
-/// The unknowns: the hat weights of the free nodes and the point weights of
-/// the corrected nodes; column[k] / point_column[k] place node k's in the
-/// parameter vector (−1: not an unknown).
-struct Unknowns {
-  std::vector<Eigen::Index> column, point_column;
-  Eigen::Index count = 0;
+/// The model of the fit (thickness_fit.hpp): unknown k is the relative
+/// change x of a free node's hat weight (weight w_τ (1 + x): basis w_τ times
+/// the hat, weight 1 at the node, linear to 0 at its neighbours) or the
+/// point weight at a corrected node (weight x w_τ ≥ 0). `node_of_unknown[k]`
+/// is its node; `is_point[k]` says which kind.
+struct ClassicalModel {
+  detail::LinearThicknessModel model;
+  std::vector<std::size_t> node_of_unknown;
+  std::vector<bool> is_point;
 };
 
-/// ∂r_j/∂p for every unknown p: −φ_p(Q_j)/(n·∇f(Q_j)), with φ_p the field
-/// of unit weight on p's support (a node's hat function: weight 1 at the
-/// node, linear to 0 at its neighbours; a point primitive at the node) and
-/// Q_j the measured surface point.
-Eigen::MatrixXd thickness_jacobian(const SegmentGraph& r, const std::vector<ThicknessSample>& samples,
-                                   const Skeleton& field, const Unknowns& u) {
-  std::vector<Segment> from_a, from_b;  // hat pieces: w(t) = 1 − t and w(t) = t
-  for (const SegmentGraph::Edge& e : r.edges) {
-    from_a.emplace_back(r.nodes[e.a], r.nodes[e.b], r.kernel, std::initializer_list<double>{1.0, -1.0});
-    from_b.emplace_back(r.nodes[e.a], r.nodes[e.b], r.kernel, std::initializer_list<double>{0.0, 1.0});
+/// The weights of `c.refined` and its point weights for the fit's x.
+void apply(ThicknessCorrection& c, const ClassicalModel& m, const Eigen::VectorXd& x) {
+  c.weights.assign(c.refined.nodes.size(), c.base_weight);
+  c.point_weights.assign(c.refined.nodes.size(), 0.0);
+  for (std::size_t k = 0; k < m.node_of_unknown.size(); ++k) {
+    const auto xk = x(Eigen::Index(k));
+    if (m.is_point[k]) c.point_weights[m.node_of_unknown[k]] = xk * c.base_weight;
+    else c.weights[m.node_of_unknown[k]] = (1 + xk) * c.base_weight;
   }
-  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(Eigen::Index(samples.size()), u.count);
-  for (std::size_t j = 0; j < samples.size(); ++j) {
-    const Vec3 q = samples[j].foot + samples[j].thickness * r.normal;
-    const double slope = r.normal.dot(field.gradient(q));
-    if (!(slope < 0)) continue;  // no outward decrease: this sample gives no direction
-    const auto row = Eigen::Index(j);
-    for (std::size_t e = 0; e < r.edges.size(); ++e) {
-      if (u.column[r.edges[e].a] >= 0) jacobian(row, u.column[r.edges[e].a]) -= from_a[e].value(q) / slope;
-      if (u.column[r.edges[e].b] >= 0) jacobian(row, u.column[r.edges[e].b]) -= from_b[e].value(q) / slope;
-    }
-    for (std::size_t k = 0; k < u.point_column.size(); ++k) {
-      if (u.point_column[k] >= 0) jacobian(row, u.point_column[k]) -= PointPrimitive(r.nodes[k], r.kernel).value(q) / slope;
-    }
-  }
-  return jacobian;
 }
 
-/// The fit's objective Σ |(r − τ)/τ|^p: a high power p approaches the
-/// worst departure (what the tolerance bounds) while staying smooth.
-double departure_cost(const std::vector<ThicknessSample>& samples, double tau) {
-  double sum = 0;
-  for (const ThicknessSample& s : samples) sum += std::pow(std::abs(s.thickness - tau) / tau, fit_power);
-  return sum;
-}
-
-}  // namespace
-
-namespace {
-
-Unknowns unknowns_of(const std::vector<bool>& free_node, const std::vector<std::size_t>& corrected) {
-  Unknowns u;
-  u.column.assign(free_node.size(), -1);
-  u.point_column.assign(free_node.size(), -1);
+ClassicalModel classical_model(const ThicknessCorrection& c, const std::vector<bool>& free_node) {
+  ClassicalModel m;
+  const SegmentGraph& r = c.refined;
+  const KernelSpec point_kernel = KernelSpec::compact(r.kernel.degree, c.point_support);
   for (std::size_t k = 0; k < free_node.size(); ++k) {
-    if (free_node[k]) u.column[k] = u.count++;
-  }
-  for (std::size_t k : corrected) u.point_column[k] = u.count++;
-  return u;
-}
-
-/// The parameter vector of the current weights, relative to w_τ: the free
-/// nodes' hat weights minus w_τ, the point weights.
-Eigen::VectorXd parameters(const ThicknessCorrection& c, const Unknowns& u) {
-  Eigen::VectorXd x(u.count);
-  for (std::size_t k = 0; k < c.weights.size(); ++k) {
-    if (u.column[k] >= 0) x(u.column[k]) = c.weights[k] / c.base_weight - 1;
-    if (u.point_column[k] >= 0) x(u.point_column[k]) = c.point_weights[k] / c.base_weight;
-  }
-  return x;
-}
-
-/// The fit's objective: Σ|e_j|^p over the samples, e_j = (r_j − τ)/τ, plus
-/// the regulariser λ |x|² on the relative weight changes x (options.regularisation).
-double fit_cost(const std::vector<ThicknessSample>& samples, double tau, const Eigen::VectorXd& x, double lambda) {
-  return departure_cost(samples, tau) + lambda * x.squaredNorm();
-}
-
-/// One Levenberg–Marquardt iteration of the fit: damps the Gauss–Newton
-/// step (on Σ|e_j|^p: least squares with row weights |e_j|^(p−2)) until it
-/// lowers fit_cost; false when no damping does (a local minimum).
-bool improve(ThicknessCorrection& out, const SegmentGraph& graph, const Unknowns& u, double tau, double lambda,
-             double& damping) {
-  const Skeleton field = weighted_skeleton(out.refined, out.weights, out.point_weights);
-  // ∂e_j/∂x = (∂r_j/∂w) w_τ/τ
-  const Eigen::MatrixXd jac = thickness_jacobian(out.refined, out.after, field, u) * (out.base_weight / tau);
-  Eigen::VectorXd residual(jac.rows()), row_weight(jac.rows());
-  for (Eigen::Index j = 0; j < jac.rows(); ++j) {
-    residual(j) = (out.after[std::size_t(j)].thickness - tau) / tau;
-    row_weight(j) = (fit_power / 2) * std::pow(std::abs(residual(j)), fit_power - 2);
-  }
-  const Eigen::VectorXd x = parameters(out, u);
-  Eigen::MatrixXd normal_matrix = jac.transpose() * row_weight.asDiagonal() * jac;
-  normal_matrix.diagonal().array() += lambda;
-  const Eigen::VectorXd gradient = jac.transpose() * row_weight.asDiagonal() * residual + lambda * x;
-  const double cost = fit_cost(out.after, tau, x, lambda);
-  for (int attempt = 0; attempt < 12; ++attempt) {
-    Eigen::MatrixXd damped = normal_matrix;
-    damped.diagonal() += damping * normal_matrix.diagonal();
-    const Eigen::VectorXd step = damped.ldlt().solve(-gradient);
-    ThicknessCorrection trial = out;
-    for (std::size_t k = 0; k < trial.weights.size(); ++k) {
-      if (u.column[k] >= 0) trial.weights[k] += step(u.column[k]) * out.base_weight;
-      if (u.point_column[k] >= 0) {
-        trial.point_weights[k] = std::max(0.0, trial.point_weights[k] + step(u.point_column[k]) * out.base_weight);
-      }
+    if (!free_node[k]) continue;
+    Skeleton hat({}, r.iso);
+    for (const SegmentGraph::Edge& e : r.edges) {
+      if (e.a == k) hat.add(Segment(r.nodes[e.a], r.nodes[e.b], r.kernel, {c.base_weight, -c.base_weight}));
+      if (e.b == k) hat.add(Segment(r.nodes[e.a], r.nodes[e.b], r.kernel, {0.0, c.base_weight}));
     }
-    trial.after = out.before;
-    measure(trial.after, weighted_skeleton(trial.refined, trial.weights, trial.point_weights), graph);
-    if (fit_cost(trial.after, tau, parameters(trial, u), lambda) < cost) {
-      out.weights = std::move(trial.weights), out.point_weights = std::move(trial.point_weights);
-      out.after = std::move(trial.after);
-      damping = std::max(damping / damping_growth, damping_floor);
-      return true;
-    }
-    damping *= damping_growth;
+    m.model.basis.push_back(std::move(hat));
+    m.model.lower.push_back(-INFINITY);
+    m.node_of_unknown.push_back(k), m.is_point.push_back(false);
   }
-  return false;
+  for (std::size_t k : c.corrected_nodes) {
+    Skeleton point({}, r.iso);
+    point.add(PointPrimitive(r.nodes[k], point_kernel, c.base_weight));
+    m.model.basis.push_back(std::move(point));
+    m.model.lower.push_back(0.0);
+    m.node_of_unknown.push_back(k), m.is_point.push_back(true);
+  }
+  return m;
 }
 
 }  // namespace
 
 ThicknessCorrection correct_thickness(const SegmentGraph& graph, const ThicknessCorrectionOptions& options) {
   check_options(graph, options);
-  const double tau = options.thickness;
   ThicknessCorrection out;
-  out.base_weight = base_weight(graph.kernel, graph.iso, tau);
+  out.base_weight = detail::long_segment_weight(graph.kernel, graph.iso, options.thickness);
+  out.point_support = options.point_support_ratio * graph.kernel.R;
+  detail::ThicknessFitSettings settings;
+  settings.normal = graph.normal, settings.iso = graph.iso;
+  // Every primitive's support, points included, ends within this distance.
+  settings.reach = std::max(graph.kernel.R, out.point_support);
+  settings.tolerance = options.tolerance, settings.max_iterations = options.max_iterations;
+  settings.regularisation = options.regularisation;
   out.before = sample_layout(graph, options);
-  measure(out.before, weighted_skeleton(graph, std::vector<double>(graph.nodes.size(), out.base_weight)), graph);
+  detail::measure_thickness(out.before,
+                            weighted_skeleton(graph, std::vector<double>(graph.nodes.size(), out.base_weight)),
+                            settings);
   out.corrected_nodes = nodes_to_correct(graph, out.before, options);
   std::vector<bool> free_node;
   out.refined = refine(graph, out.corrected_nodes, options.ramp_nodes, free_node);
-  out.weights.assign(out.refined.nodes.size(), out.base_weight);
-  out.point_weights.assign(out.refined.nodes.size(), 0.0);
-  out.after = out.before;
-  const Unknowns u = unknowns_of(free_node, out.corrected_nodes);
-  double damping = damping_start;
-  while (u.count > 0 && worst_departure(out.after, tau) > options.tolerance && out.iterations < options.max_iterations) {
-    ++out.iterations;
-    if (!improve(out, graph, u, tau, options.regularisation, damping)) break;
-  }
-  out.converged = worst_departure(out.after, tau) <= options.tolerance;
+  ClassicalModel m = classical_model(out, free_node);
+  const ThicknessCorrection* shape = &out;  // build() reads the refined graph and the base weight
+  m.model.build = [&m, shape](const Eigen::VectorXd& x) {
+    ThicknessCorrection c = *shape;
+    apply(c, m, x);
+    return corrected_skeleton(c);
+  };
+  const detail::ThicknessFitResult fit =
+      detail::fit_thickness(m.model, Eigen::VectorXd::Zero(Eigen::Index(m.node_of_unknown.size())), out.before, settings);
+  apply(out, m, fit.x);
+  out.after = fit.after;
+  out.iterations = fit.iterations;
+  out.converged = fit.converged;
   return out;
 }
 

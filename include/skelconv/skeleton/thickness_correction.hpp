@@ -23,7 +23,8 @@
 //      the unknowns are the weights of the node and of the split points
 //      closer than R (the point at R keeps w_τ, so the change stays within
 //      the node's reach) and the weight ≥ 0 of a point primitive of the same
-//      kernel at the node (Zanni's "point skeleton" at the node). They are
+//      kernel family at the node, of support point_support_ratio·R (Zanni's
+//      "point skeleton" at the node, with its "influence"). They are
 //      fitted by Levenberg–Marquardt on the measured thickness,
 //      min Σ_j ((r_j − τ)/τ)² + λ Σ_k x_k². The field is linear in the
 //      weights (each node owns a hat function: weight 1 at it, 0 at its
@@ -40,7 +41,8 @@
 // classical convolution with the sum blend the node weights and the point
 // weights enter the field linearly, so one local fit handles both the thin
 // free ends (a missing half-skeleton) and the bulging junctions (fields that
-// add), with no blend the paper leaves unspecified.
+// add), with no blend the paper leaves unspecified. SCALIS graphs, the
+// paper's own case: skelconv/skeleton/scalis_thickness_correction.hpp.
 //
 // Supported: top-level segment primitives (no blend node: their sum is the
 // field), one compact-support kernel (family "compact", any degree the
@@ -105,16 +107,27 @@ struct ThicknessCorrectionOptions {
   /// a few w_τ and costs a few tenths of a percent of thickness on the
   /// test graphs (tests/thickness_correction_test.cpp).
   double regularisation = 1e-5;
+  /// Support radius of the point primitive at a corrected node, in units of
+  /// the segments' R: the paper's "influence" of the point correction
+  /// (Figure 13). It must differ from R: along the line at distance τ from
+  /// the skeleton, a point of support R and the missing half-line it
+  /// replaces at a free end vanish at the same place with different orders
+  /// (the point as (x₀ − x)³, the half-line integral as (x₀ − x)⁴), so no
+  /// ramp of hat weights of spacing R/4 brings the surface closer than
+  /// ~1.2% to τ (least squares) there. With 1.25 R the same ramp reaches
+  /// ~0.2% for τ/R from 0.3 to 0.7 (docs/thickness_correction.md).
+  double point_support_ratio = 1.25;
 };
 
 /// One thickness measurement: on edge `edge` of the graph it belongs to, at
 /// parameter t from its node a; thickness 0 where the surface misses the
-/// skeleton point.
+/// skeleton point. A target of 0 (a SCALIS tip) is not counted.
 struct ThicknessSample {
   std::size_t edge = 0;
   double t = 0.0;
   Vec3 foot = Vec3::Zero();
   double thickness = 0.0;
+  double target = 0.0;  ///< the thickness asked for at `foot`
 };
 
 struct ThicknessCorrection {
@@ -124,6 +137,8 @@ struct ThicknessCorrection {
   std::vector<double> weights;               ///< per node of `refined`, after correction
   /// per node of `refined`: the weight of the point primitive at it (0: none)
   std::vector<double> point_weights;
+  double point_support = 0.0;  ///< the point primitives' support radius
+
   /// Samples on the input graph's edges, with the base weight and after.
   std::vector<ThicknessSample> before, after;
   int iterations = 0;
@@ -137,13 +152,20 @@ ThicknessCorrection correct_thickness(const SegmentGraph& graph, const Thickness
 
 /// The skeleton of `graph` with `weights` per node: one segment per edge,
 /// linear weight from its node a's weight to its node b's.
+/// `point_weights` (per node, 0: none) add point primitives of the graph's
+/// kernel with support radius `point_support`.
 Skeleton weighted_skeleton(const SegmentGraph& graph, const std::vector<double>& weights,
-                           const std::vector<double>& point_weights = {});
+                           const std::vector<double>& point_weights = {}, double point_support = 0.0);
 
 /// The same skeleton as skelconv JSON (the file format of skeleton_file.hpp),
 /// numbers with 17 significant digits.
 std::string weighted_skeleton_json(const SegmentGraph& graph, const std::vector<double>& weights,
-                                   const std::vector<double>& point_weights = {});
+                                   const std::vector<double>& point_weights = {}, double point_support = 0.0);
+
+/// The corrected skeleton of `c` (its refined graph, weights and point
+/// primitives), as a Skeleton and as skelconv JSON.
+Skeleton corrected_skeleton(const ThicknessCorrection& c);
+std::string corrected_skeleton_json(const ThicknessCorrection& c);
 
 /// The distance from `foot` along the unit vector `normal` at which `field`
 /// crosses `iso` last (the outermost crossing before `reach`, where the
