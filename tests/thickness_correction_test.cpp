@@ -193,12 +193,8 @@ double scalis_reference_departure(const ScalisSegmentGraph& g, const Skeleton& s
         const double target = r0 + t * (r1 - r0);
         if (t > 1 || !(target > 0)) continue;
         const auto g_of = [&](double r) { return skeleton.value(a + t * (b - a) + r * g.normal) - skeleton.iso(); };
-        // 499 steps, not 500: the grid must not land exactly on a ramp
-        // segment's support sphere around its end, where the runtime's
-        // segment_compact_i6_w1 returns NaN (a defect of the closed form,
-        // reported; P = (1.2, 0, 0.6) for the drop's ramp ending at 1.2 with R = 0.6).
         double hi = reach, lo = reach;
-        for (int k = 498; k >= 0 && g_of(lo) < 0; --k) hi = lo, lo = reach * k / 499;
+        for (int k = 499; k >= 0 && g_of(lo) < 0; --k) hi = lo, lo = reach * k / 500;
         double r = 0;
         if (g_of(lo) >= 0) {
           for (int it = 0; it < 100; ++it) {

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "generated/segment_cauchy.hpp"
@@ -160,6 +161,10 @@ void sort_points(const SegmentInput<double>& segment, KernelFamily family, Point
       hn::StoreMaskBits(d, hn::And(hn::Gt(disc, zero), hn::Lt(v0, v1)), inside_bits);
       hn::Store(v0, d, t0);
       hn::Store(v1, d, t1);
+      // disc within its rounding of 0: clip_to_ball decides on the exact
+      // gap there, so the scalar path takes those points.
+      const auto near_tangent = hn::Le(disc, hn::Mul(hn::Set(d, 64 * std::numeric_limits<double>::epsilon()), aRR));
+      hn::StoreMaskBits(d, near_tangent, to_scalar_bits);
     }
     for (std::size_t k = 0; k < count; ++k) {
       const std::uint32_t p = std::uint32_t(q + k);

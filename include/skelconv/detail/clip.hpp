@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
+
+#include "skelconv/detail/support_gap.hpp"
 
 namespace skelconv {
 
@@ -37,6 +40,17 @@ std::optional<ParameterInterval<T>> clip_to_ball(const std::array<T, 3>& A, cons
   const T cz = ab[0] * ap[1] - ab[1] * ap[0];
   const T disc = a * R * R - (cx * cx + cy * cy + cz * cz);
   if (!(disc > T(0))) return std::nullopt;  // tangent or missing: measure zero
+  // Within its rounding of 0 (a few ε a R²), disc cannot tell a line tangent
+  // to the sphere from one that cuts it: P on the support sphere beside an
+  // end would get a chord of width ~√ε where the exact one is a point, and
+  // the generated chord formulas, which read the exact gap
+  // (skelconv/detail/support_gap.hpp), would divide 0 by 0 there. Decide
+  // those cases on that same exact gap.
+  if (disc <= T(64) * std::numeric_limits<T>::epsilon() * (a * R * R)) {
+    T gap;
+    exact_line_support_gap<T>(A[0], A[1], A[2], B[0], B[1], B[2], P[0], P[1], P[2], R, &gap);
+    if (!(gap > T(0))) return std::nullopt;
+  }
   const T half_width = sqrt(disc) / a;     // the roots are b/a ± half_width
   const T centre = b / a;
   const T t0 = std::max(T(0), centre - half_width);
