@@ -31,13 +31,15 @@ struct ReconstructOptions {
   double epsilon = 0.02;
   /// Level-set bin width, × the median radius of the inner balls.
   double bin_factor = 1.0;
-  /// A terminal branch shorter than this × its junction's radius is a spur.
+  /// A branch between two junctions shorter than this × the larger end
+  /// radius is contracted; with explained_factor = 0, a terminal branch
+  /// shorter than this × its junction's radius is a spur.
   double spur_factor = 1.5;
-  /// A terminal branch whose balls reach less than this × its junction's
-  /// radius beyond the rest of the skeleton's balls is a spur too
-  /// (remove_spurs; the noise spurs of the test shapes reach at most 1.03
-  /// (noisy tree; 0.48 on the noisy ring), their real branches at least
-  /// 1.8: 1.5 is between, with margin both ways).
+  /// With explained_factor = 0: a terminal branch whose balls reach less
+  /// than this × its junction's radius beyond the rest of the skeleton's
+  /// balls is a spur too (remove_spurs; the noise spurs of the test shapes
+  /// reach at most 1.03 (noisy tree; 0.48 on the noisy ring), their real
+  /// branches at least 1.8: 1.5 is between, with margin both ways).
   double spur_protrusion = 1.5;
   /// The spur rule by explained area (branch_graph.hpp, SpurRule): a
   /// terminal branch stays when it explains at least `explained_factor` ×
