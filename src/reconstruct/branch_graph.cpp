@@ -592,8 +592,12 @@ std::size_t remove_spurs(CurveSkeleton& skeleton, const SpurRule& rule) {
     bool changed = false;
     while (remove_one_parallel_path(skeleton)) changed = true, ++removed;
     while (remove_one_split_loop(skeleton)) changed = true, ++removed;
-    while (contract_one_triangle(skeleton)) changed = true, ++removed;
+    // Short branches first: a bridge between two branches just past a
+    // junction makes a triangle with it too, and contracting the bridge
+    // keeps the junction where it is (the triangle's mean lies out in the
+    // crotch).
     while (contract_one_bubble(skeleton, rule.length_factor)) changed = true, ++removed;
+    while (contract_one_triangle(skeleton)) changed = true, ++removed;
     const std::size_t spurs = remove_spurs_once(skeleton, rule);
     removed += spurs;
     if (!changed && spurs == 0) return removed;
