@@ -248,12 +248,20 @@ TEST(Branches, SpurByExplainedArea) {
   };
   // The explained areas, against the estimates above.
   const BranchGraph g = extract_branches(make());
+  int found = 0;
   for (std::size_t k = 0; k < g.branches.size(); ++k) {
     const Vec3 end = g.branches[k].points.back().head<3>();
     const double area = explained_area(g.branches, k, surface, 0.25);
-    if (end == Vec3(0, 0, 1.4)) EXPECT_GT(area, 5.0);
-    if (end == Vec3(0, 2.5, 0)) EXPECT_LT(area, 0.6);
+    if (end == Vec3(0, 0, 1.4)) {
+      EXPECT_GT(area, 5.0);
+      ++found;
+    }
+    if (end == Vec3(0, 2.5, 0)) {
+      EXPECT_LT(area, 0.6);
+      ++found;
+    }
   }
+  EXPECT_EQ(found, 2);
   CurveSkeleton old_rule = make();
   EXPECT_EQ(remove_spurs(old_rule, 1.5, 1.5), 1u);
   EXPECT_FALSE(has_end(old_rule, Vec3(0, 0, 1.4)));  // the limb went
@@ -292,7 +300,9 @@ TEST(Branches, JunctionTriangleContracted) {
   EXPECT_EQ(g.ends, 3u);
   EXPECT_EQ(g.junctions, 1u);
   for (const Vec4& node : split.nodes) {
-    if (node.w() == 0.45) EXPECT_LT(node.head<3>().norm(), 1e-12);  // at the mean of the three
+    if (node.w() == 0.45) {
+      EXPECT_LT(node.head<3>().norm(), 1e-12);  // at the mean of the three
+    }
   }
   CurveSkeleton ring = y(3.0);
   remove_spurs(ring, 1.5);

@@ -82,7 +82,7 @@ struct ReconstructOptions {
   /// Measuring a stage (measure_stage) is refused beyond this many
   /// primitive evaluations (measure_work), so that a report ends in
   /// bounded time. The fitted stages of the test shapes need at most
-  /// 3·10⁷, the raw stage of the clean tree 9·10⁷; the raw stage of the
+  /// 3.4·10⁷, the raw stage of the clean tree 9·10⁷; the raw stage of the
   /// noisy tree (32 313 segments from the unpruned Voronoi graph) needs
   /// 5·10⁹, fifty times as much.
   double measure_budget = 2e8;
