@@ -193,6 +193,23 @@ TEST(Ends, CapTrimming) {
   EXPECT_EQ(trimmed[0].points.back().x(), 3.0);
 }
 
+// A hook at a free end (the noisy tripod's arm, in small): the branch runs
+// along x to (2, 0, 0), then steps to (2.3, 0.4, 0) (ahead: kept) and back
+// to (2.1, 0.1, 0) (against the step before it: dropped); at the front,
+// (0.5, 0, 0) → (0, 0, 0) → (0.2, 0.3, 0) turns back too: dropped. Radii
+// constant, so the slope rule alone would keep every point.
+TEST(Ends, HookTrimming) {
+  Branch b;
+  b.first_node = 0, b.last_node = 1;
+  for (const Vec3& p : {Vec3(0.2, 0.3, 0), Vec3(0, 0, 0), Vec3(0.5, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0),
+                        Vec3(2.3, 0.4, 0), Vec3(2.1, 0.1, 0)})
+    b.points.push_back(Vec4(p.x(), p.y(), p.z(), 0.4));
+  const std::vector<Branch> trimmed = trim_caps({b}, 0.5);
+  ASSERT_EQ(trimmed[0].points.size(), 5u);
+  EXPECT_EQ(trimmed[0].points.front().head<3>(), Vec3(0, 0, 0));
+  EXPECT_EQ(trimmed[0].points.back().head<3>(), Vec3(2.3, 0.4, 0));
+}
+
 /// A closed cylinder of radius 0.5 (64-gon, inradius 0.5 cos(π/64)) from
 /// x = −2 to 2, with fan caps.
 TriangleMesh cylinder() {

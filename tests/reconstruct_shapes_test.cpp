@@ -6,11 +6,13 @@
 // (docs/reconstruction_results.md: noise-free, H ≤ 2%, RMS ≤ 0.5% of the
 // diagonal), measured both ways, surface to surface.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
+#include "skelconv/errors.hpp"
 #include "skelconv/mesh/mesh_reader.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 
@@ -74,6 +76,44 @@ TEST(Shapes, TorusIsOneClosedBranch) {
     EXPECT_NEAR(p.head<2>().norm(), 2.0, 0.1) << p.transpose();  // on the ring
   }
   expect_fitted_surface_within_goal("torus.ply", r);
+}
+
+// The measuring budget (measure_work): the nodes of the mesh's bounding box
+// at spacing h = diagonal / 100 with one voxel of margin each side,
+// ⌊extent / h⌋ + 3 per axis, times the stage's primitives (2 segments).
+// Within the budget the stage is measured; above it, over_measure_budget
+// says why and measure_stage refuses with that message, at the stage.
+TEST(Shapes, MeasuringBudget) {
+  const TriangleMesh mesh = read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / "segment.ply");
+  Vec3 lo = mesh.vertices.front(), hi = lo;
+  for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double h = (hi - lo).norm() / 100;
+  double nodes = 1;
+  for (int axis = 0; axis < 3; ++axis) nodes *= std::floor((hi[axis] - lo[axis]) / h) + 3;
+  Stage stage;
+  stage.name = "two";
+  Branch b;
+  b.points = {Vec4(0, 0, 0, 0.5), Vec4(1.5, 0, 0, 0.5), Vec4(3, 0, 0, 0.5)};
+  stage.branches = {b};
+  ReconstructOptions options;
+  options.end_extension = 0.0;  // exactly the two segments
+  const MeasureWork work = measure_work(mesh, stage, options);
+  EXPECT_EQ(work.primitives, 2u);
+  EXPECT_DOUBLE_EQ(work.grid_nodes, nodes);
+  EXPECT_TRUE(over_measure_budget(work, 2 * nodes).empty());
+  const std::string refused = over_measure_budget(work, 2 * nodes - 1);
+  EXPECT_NE(refused.find("not measured: meshing its 2 primitives"), std::string::npos) << refused;
+  options.measure_budget = 2 * nodes - 1;
+  try {
+    measure_stage(mesh, stage, options);
+    ADD_FAILURE() << "measured over the budget";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), "stage two");
+    EXPECT_EQ(error.problem(), refused);
+  }
+  options.measure_budget = 2 * nodes;
+  const SurfaceDistance d = measure_stage(mesh, stage, options);
+  EXPECT_GT(d.diagonal, 0.0);
 }
 
 }  // namespace

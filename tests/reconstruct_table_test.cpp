@@ -73,10 +73,20 @@ TEST_P(Table, CountsAndDistances) {
                 pct(c.axis.max), pct(c.axis.mean), pct(c.radius.max), pct(c.radius.mean));
   }
   for (const Stage& stage : r.stages) {
+    // A stage whose meshing would exceed the measuring budget (the raw
+    // stage of noisy samples) is listed unmeasured; the fitted one never is.
+    const std::string refused = over_measure_budget(measure_work(input, stage, options), options.measure_budget);
+    if (!refused.empty()) {
+      std::printf("| %s | %g | %zu | %s | %zu/%zu/%zu | %zu | — | — |\n", known.name, noise, r.samples,
+                  stage.name.c_str(), stage.branches.size(), stage.ends, stage.junctions, stage.points);
+      EXPECT_EQ(stage.name, "raw") << refused;
+      continue;
+    }
     const SurfaceDistance d = measure_stage(input, stage, options);
     std::printf("| %s | %g | %zu | %s | %zu/%zu/%zu | %zu | %.2f | %.2f |\n", known.name, noise, r.samples,
                 stage.name.c_str(), stage.branches.size(), stage.ends, stage.junctions, stage.points,
                 100 * d.hausdorff / d.diagonal, 100 * d.rms / d.diagonal);
+    std::fflush(stdout);
     if (stage.name == "raw") continue;
     EXPECT_EQ(stage.branches.size(), known.branches) << stage.name;
     EXPECT_EQ(stage.ends, known.ends) << stage.name;

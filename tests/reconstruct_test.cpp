@@ -2,7 +2,9 @@
 // docs/reconstruction.md) on small cases whose answers are derived by hand
 // in the comments, and of the mesh reader on files written by write_mesh and
 // by hand.
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -177,6 +179,134 @@ TEST(Branches, SpurByProtrusion) {
   for (const Branch& b : g.branches) {
     for (const Vec4& p : b.points) EXPECT_NE(p.y(), 1.6);
   }
+}
+
+/// Area-weighted points on the surface of the union of `capsules` (a, b,
+/// radius): each capsule's cylinder and two hemispheres on a fine
+/// parameter grid (exact area weights), without the points inside another
+/// capsule, so that the points cover the union's boundary.
+std::vector<WeightedPoint> union_of_capsules(const std::vector<std::tuple<Vec3, Vec3, double>>& capsules) {
+  const auto inside = [&](const Vec3& p, std::size_t except) {
+    for (std::size_t k = 0; k < capsules.size(); ++k) {
+      if (k == except) continue;
+      const auto& [a, b, r] = capsules[k];
+      const Vec3 d = b - a;
+      const double t = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      if ((p - a - t * d).norm() < r) return true;
+    }
+    return false;
+  };
+  std::vector<WeightedPoint> points;
+  constexpr int n = 64;  // steps per parameter
+  constexpr double pi = std::numbers::pi;
+  for (std::size_t k = 0; k < capsules.size(); ++k) {
+    const auto& [a, b, r] = capsules[k];
+    const Vec3 axis = (b - a).normalized();
+    const Vec3 u = axis.cross(std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).normalized(), v = axis.cross(u);
+    const double length = (b - a).norm();
+    const auto add = [&](const Vec3& p, double weight) {
+      if (!inside(p, k)) points.push_back({p, weight});
+    };
+    for (int i = 0; i < n; ++i) {
+      const double phi = 2 * pi * (i + 0.5) / n;
+      const Vec3 out = std::cos(phi) * u + std::sin(phi) * v;
+      for (int j = 0; j < n; ++j) add(a + (j + 0.5) / n * length * axis + r * out, 2 * pi * r * length / (n * n));
+      for (int j = 0; j < n; ++j) {  // hemispheres: polar angle θ from the axis, dA = r² sin θ dθ dφ
+        const double theta = (pi / 2) * (j + 0.5) / n, weight = r * r * std::sin(theta) * (pi / 2 / n) * (2 * pi / n);
+        add(b + r * (std::cos(theta) * axis + std::sin(theta) * out), weight);
+        add(a + r * (-std::cos(theta) * axis + std::sin(theta) * out), weight);
+      }
+    }
+  }
+  return points;
+}
+
+// Limb against spur, where the length and protrusion rules fail. A trunk of
+// radius 1 along x from −3 to 3 with a junction at the origin carries a
+// short thick limb (to (0, 0, 1.4), radius 0.9: 1.4 junction radii long,
+// reaching 1.4 + 0.9 − 1 = 1.3 beyond the trunk's balls) and a long thin
+// needle (to (0, 2.5, 0), radius 0.05: 2.5 radii long, reaching 2.5 + 0.05
+// − 1 = 1.55). The length and protrusion rules at 1.5 remove the limb and
+// keep the needle. The input surface is the union of the trunk, the limb and
+// the needle: the limb explains its cap and side beyond the trunk (a
+// hemisphere alone is 2π 0.9² ≈ 5.1), the needle the part of its side more
+// than 0.25 beyond the trunk (2π 0.05 × 1.25 + its cap ≈ 0.4), against the
+// threshold 0.5 π 1² ≈ 1.57: the area rule keeps the limb and removes the
+// needle.
+TEST(Branches, SpurByExplainedArea) {
+  const auto make = [] {
+    CurveSkeleton s;
+    s.nodes = {Vec4(-3, 0, 0, 1), Vec4(0, 0, 0, 1), Vec4(3, 0, 0, 1), Vec4(0, 0, 0.7, 0.9), Vec4(0, 0, 1.4, 0.9),
+               Vec4(0, 1.25, 0, 0.05), Vec4(0, 2.5, 0, 0.05)};
+    s.edges = {{0, 1}, {1, 2}, {1, 3}, {3, 4}, {1, 5}, {5, 6}};
+    return s;
+  };
+  const std::vector<WeightedPoint> surface = union_of_capsules(
+      {{Vec3(-3, 0, 0), Vec3(3, 0, 0), 1.0}, {Vec3(0, 0, 0), Vec3(0, 0, 1.4), 0.9}, {Vec3(0, 0, 0), Vec3(0, 2.5, 0), 0.05}});
+  const auto has_end = [](const CurveSkeleton& s, const Vec3& end) {
+    return std::any_of(s.nodes.begin(), s.nodes.end(), [&](const Vec4& p) { return p.head<3>() == end; });
+  };
+  // The explained areas, against the estimates above.
+  const BranchGraph g = extract_branches(make());
+  int found = 0;
+  for (std::size_t k = 0; k < g.branches.size(); ++k) {
+    const Vec3 end = g.branches[k].points.back().head<3>();
+    const double area = explained_area(g.branches, k, surface, 0.25);
+    if (end == Vec3(0, 0, 1.4)) {
+      EXPECT_GT(area, 5.0);
+      ++found;
+    }
+    if (end == Vec3(0, 2.5, 0)) {
+      EXPECT_LT(area, 0.6);
+      ++found;
+    }
+  }
+  EXPECT_EQ(found, 2);
+  CurveSkeleton old_rule = make();
+  EXPECT_EQ(remove_spurs(old_rule, 1.5, 1.5), 1u);
+  EXPECT_FALSE(has_end(old_rule, Vec3(0, 0, 1.4)));  // the limb went
+  EXPECT_TRUE(has_end(old_rule, Vec3(0, 2.5, 0)));   // the needle stayed
+  CurveSkeleton area_rule = make();
+  SpurRule rule{1.5, 1.5, &surface};
+  EXPECT_EQ(remove_spurs(area_rule, rule), 1u);
+  EXPECT_TRUE(has_end(area_rule, Vec3(0, 0, 1.4)));
+  EXPECT_FALSE(has_end(area_rule, Vec3(0, 2.5, 0)));
+  EXPECT_EQ(extract_branches(area_rule).ends, 3u);
+}
+
+// A junction split into a triangle: three nodes of radius 0.45, 0.4 from
+// the origin (sides 0.69, more than the 1.5 × 0.45 = 0.675 a bubble is
+// contracted below), each with one arm of a plane Y. The triangle's centroid
+// (the origin) is 0.4 from each node, inside their balls: no hole, so the
+// three become one junction and the Y has 3 branches. The same triangle
+// scaled to 3 from the origin (a ring with three arms, its centre 3 from
+// every ball of radius 0.45) encloses a hole and stays: 6 branches.
+TEST(Branches, JunctionTriangleContracted) {
+  const auto y = [](double scale) {
+    CurveSkeleton s;
+    for (int k = 0; k < 3; ++k) {
+      const double a = 2 * std::numbers::pi * k / 3;
+      const Vec3 d(std::cos(a), std::sin(a), 0);
+      s.nodes.push_back(Vec4(scale * d.x(), scale * d.y(), 0, 0.45));
+      s.nodes.push_back(Vec4((scale + 3) * d.x(), (scale + 3) * d.y(), 0, 0.3));
+    }
+    s.edges = {{0, 1}, {2, 3}, {4, 5}, {0, 2}, {2, 4}, {0, 4}};
+    return s;
+  };
+  CurveSkeleton split = y(0.4);
+  remove_spurs(split, 1.5);
+  const BranchGraph g = extract_branches(split);
+  EXPECT_EQ(g.branches.size(), 3u);
+  EXPECT_EQ(g.ends, 3u);
+  EXPECT_EQ(g.junctions, 1u);
+  for (const Vec4& node : split.nodes) {
+    if (node.w() == 0.45) {
+      EXPECT_LT(node.head<3>().norm(), 1e-12);  // at the mean of the three
+    }
+  }
+  CurveSkeleton ring = y(3.0);
+  remove_spurs(ring, 1.5);
+  EXPECT_EQ(extract_branches(ring).branches.size(), 6u);
 }
 
 // A plane Y of three straight arms meeting at the origin (nodes every 0.5

@@ -47,6 +47,13 @@ std::string stage_report(const reconstruct::Stage& s, const TriangleMesh& input,
                                  s.name, s.branches.size(), s.ends, s.junctions, s.points, n.segments, n.triangles,
                                  n.points, s.seconds);
   if (!measure) return text + "}";
+  const std::string refused = reconstruct::over_measure_budget(reconstruct::measure_work(input, s, options),
+                                                               options.measure_budget);
+  if (!refused.empty()) {
+    if (progress) progress(fmt::format("stage {}: {}", s.name, refused));
+    return text + fmt::format(", \"not_measured\": \"{}\"}}", refused);
+  }
+  if (progress) progress(fmt::format("measuring {}: {} primitives", s.name, n.total()));
   const auto start = std::chrono::steady_clock::now();
   TriangleMesh mesh;
   const reconstruct::SurfaceDistance d = reconstruct::measure_stage(input, s, options, 0.0, &mesh);

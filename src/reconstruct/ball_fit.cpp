@@ -2,6 +2,7 @@
 #include "skelconv/reconstruct/ball_fit.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -85,6 +86,24 @@ std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double
   std::vector<WeightedPoint> out;
   for (const auto& t : mesh.triangles) append_points(mesh, t, h, out);
   return out;
+}
+
+std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h) {
+  std::map<std::array<std::int64_t, 3>, std::size_t> cell_index;
+  std::vector<WeightedPoint> sums;  // weighted sums of the points, then centroids
+  for (const WeightedPoint& p : points) {
+    const std::array<std::int64_t, 3> cell{std::int64_t(std::floor(p.point.x() / h)),
+                                           std::int64_t(std::floor(p.point.y() / h)),
+                                           std::int64_t(std::floor(p.point.z() / h))};
+    const auto [it, added] = cell_index.emplace(cell, sums.size());
+    if (added) sums.push_back({Vec3::Zero(), 0.0});
+    sums[it->second].point += p.weight * p.point;
+    sums[it->second].weight += p.weight;
+  }
+  std::vector<WeightedPoint> merged;
+  for (const WeightedPoint& s : sums)
+    if (s.weight > 0.0) merged.push_back({s.point / s.weight, s.weight});
+  return merged;
 }
 
 std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <queue>
@@ -363,6 +364,49 @@ bool remove_one_parallel_path(CurveSkeleton& skeleton) {
   return false;
 }
 
+/// One contraction of a junction triangle: three junctions joined
+/// pairwise by branches whose cycle encloses no hole (its centroid lies in
+/// the ball of one of its points, as in remove_one_parallel_path). The
+/// level sets of a branching sampled with noise can split its junction into
+/// three nodes a radius or two apart, each taking one of the branches
+/// leaving it: longer sides than contract_one_bubble takes, but no hole. The
+/// three become one, at their mean, with the largest radius; the branches
+/// between them go. Returns false when there is none.
+bool contract_one_triangle(CurveSkeleton& skeleton) {
+  const auto next = neighbours(skeleton);
+  const BranchGraph branches = extract_branches(skeleton);
+  std::map<std::pair<std::int32_t, std::int32_t>, const Branch*> between;  // junction pair → a branch
+  for (const Branch& b : branches.branches) {
+    if (b.first_node == b.last_node || next[b.first_node].size() < 3 || next[b.last_node].size() < 3) continue;
+    between.emplace(std::minmax(b.first_node, b.last_node), &b);
+  }
+  for (const auto& [ab, side_ab] : between) {
+    for (auto ac = between.lower_bound({ab.first, ab.second + 1}); ac != between.end() && ac->first.first == ab.first; ++ac) {
+      const std::int32_t a = ab.first, b = ab.second, c = ac->first.second;
+      const auto bc = between.find({b, c});
+      if (bc == between.end()) continue;
+      Branch rest;  // the other two sides, as one list of points for the hole test
+      rest.points = ac->second->points;
+      rest.points.insert(rest.points.end(), bc->second->points.begin(), bc->second->points.end());
+      if (!encloses_no_hole(*side_ab, rest)) continue;
+      std::vector<bool> drop(skeleton.nodes.size(), false);
+      for (const Branch* side : {side_ab, ac->second, bc->second}) mark_interior(*side, skeleton, drop);
+      const Vec4 &pa = skeleton.nodes[a], &pb = skeleton.nodes[b], &pc = skeleton.nodes[c];
+      Vec4 merged = (pa + pb + pc) / 3;
+      merged.w() = std::max({pa.w(), pb.w(), pc.w()});
+      skeleton.nodes[a] = merged;
+      for (auto& [u, v] : skeleton.edges) {
+        if (u == b || u == c) u = a;
+        if (v == b || v == c) v = a;
+      }
+      drop[b] = drop[c] = true;
+      rebuild(skeleton, drop, -1, -1);
+      return true;
+    }
+  }
+  return false;
+}
+
 /// One removal of a split branch: a loop from a junction back to itself whose
 /// two halves, cut at its node farthest from the junction, run in one tube
 /// (or enclose no hole, as in remove_one_parallel_path). The level sets of a
@@ -428,26 +472,88 @@ double protrusion(const std::vector<TubeSegment>& segments, const std::vector<Br
   return reach;
 }
 
+/// The signed distance from `p` to the balls of segment s, about: |p − q|
+/// − r_q, q the point of the segment nearest p; `radius` receives r_q.
+double tube_distance(const Vec3& p, const TubeSegment& s, double* radius) {
+  const Vec3 a = s.a.head<3>(), d = s.b.head<3>() - a;
+  const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+  *radius = s.a.w() + t * (s.b.w() - s.a.w());
+  return (p - a - t * d).norm() - *radius;
+}
+
+std::vector<TubeSegment> tube_segments(const std::vector<Branch>& branches) {
+  std::vector<TubeSegment> segments;
+  for (std::size_t k = 0; k < branches.size(); ++k) {
+    const auto& p = branches[k].points;
+    for (std::size_t i = 1; i < p.size(); ++i) segments.push_back({p[i - 1], p[i], k});
+  }
+  return segments;
+}
+
+/// Per surface point, its nearest branch and how much better that branch
+/// explains it than the rest (see explained_area): the two smallest
+/// per-branch tube distances d₁ (branch k₁) and d₂ (radius r₂ there);
+/// the point counts for k₁ when d₂ − |d₁| > tolerance × r₂.
+struct NearestTubes {
+  std::vector<std::size_t> branch;  ///< k₁ per point, or npos when it counts for none
+};
+
+NearestTubes nearest_tubes(const std::vector<TubeSegment>& segments, std::size_t branch_count,
+                           const std::vector<WeightedPoint>& surface, double tolerance) {
+  constexpr std::size_t none = std::size_t(-1);
+  NearestTubes result;
+  std::vector<double> best(branch_count), radius_at(branch_count);
+  for (const WeightedPoint& w : surface) {
+    std::fill(best.begin(), best.end(), INFINITY);
+    for (const TubeSegment& s : segments) {
+      double r = 0.0;
+      const double d = tube_distance(w.point, s, &r);
+      if (d < best[s.branch]) best[s.branch] = d, radius_at[s.branch] = r;
+    }
+    std::size_t first = none, second = none;
+    for (std::size_t k = 0; k < branch_count; ++k) {
+      if (!std::isfinite(best[k])) continue;
+      if (first == none || best[k] < best[first]) second = first, first = k;
+      else if (second == none || best[k] < best[second]) second = k;
+    }
+    const bool counts = first != none && (second == none || best[second] - std::abs(best[first]) >
+                                                                tolerance * radius_at[second]);
+    result.branch.push_back(counts ? first : none);
+  }
+  return result;
+}
+
 /// True when terminal branch `which` (from junction node `junction`) is a
-/// spur: shorter than `length_factor` × the junction's radius, or reaching
-/// less than `protrusion_factor` × that radius beyond the rest's balls.
+/// spur by `rule` (SpurRule); `explained` holds each branch's explained area
+/// when the rule has a surface.
 bool is_spur(const CurveSkeleton& skeleton, const std::vector<TubeSegment>& segments, const std::vector<Branch>& branches,
-             std::size_t which, std::int32_t junction, double length_factor, double protrusion_factor) {
+             std::size_t which, std::int32_t junction, const SpurRule& rule, const std::vector<double>& explained) {
   const double radius = skeleton.nodes[junction].w();
-  if (polyline_length(branches[which].points) < length_factor * radius) return true;
-  return protrusion_factor > 0.0 &&
-         protrusion(segments, branches, which, protrusion_factor * radius) < protrusion_factor * radius;
+  if (rule.surface != nullptr) return explained[which] < rule.explained_factor * std::numbers::pi * radius * radius;
+  if (polyline_length(branches[which].points) < rule.length_factor * radius) return true;
+  return rule.protrusion_factor > 0.0 &&
+         protrusion(segments, branches, which, rule.protrusion_factor * radius) < rule.protrusion_factor * radius;
+}
+
+/// Each branch's explained area (explained_area), all at once.
+std::vector<double> explained_areas(const std::vector<TubeSegment>& segments, std::size_t branch_count,
+                                    const std::vector<WeightedPoint>& surface, double tolerance) {
+  std::vector<double> area(branch_count, 0.0);
+  const NearestTubes nearest = nearest_tubes(segments, branch_count, surface, tolerance);
+  for (std::size_t i = 0; i < surface.size(); ++i)
+    if (nearest.branch[i] < branch_count) area[nearest.branch[i]] += surface[i].weight;
+  return area;
 }
 
 /// One pass of spur removal (see remove_spurs); returns the number removed.
-std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor) {
+std::size_t remove_spurs_once(CurveSkeleton& skeleton, const SpurRule& rule) {
   const auto next = neighbours(skeleton);
   const BranchGraph branches = extract_branches(skeleton);
-  std::vector<TubeSegment> segments;
-  for (std::size_t k = 0; k < branches.branches.size(); ++k) {
-    const auto& p = branches.branches[k].points;
-    for (std::size_t i = 1; i < p.size(); ++i) segments.push_back({p[i - 1], p[i], k});
-  }
+  const std::vector<TubeSegment> segments = tube_segments(branches.branches);
+  const std::vector<double> explained =
+      rule.surface != nullptr
+          ? explained_areas(segments, branches.branches.size(), *rule.surface, rule.explained_tolerance)
+          : std::vector<double>{};
   // The shortest spur at each junction (one per junction per pass, so a
   // junction never loses all its branches at once).
   std::map<std::int32_t, const Branch*> shortest;
@@ -456,7 +562,7 @@ std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor, doubl
     const bool first_end = next[b.first_node].size() == 1, last_end = next[b.last_node].size() == 1;
     if (first_end == last_end) continue;
     const std::int32_t junction = first_end ? b.last_node : b.first_node;
-    if (!is_spur(skeleton, segments, branches.branches, k, junction, spur_factor, protrusion_factor)) continue;
+    if (!is_spur(skeleton, segments, branches.branches, k, junction, rule, explained)) continue;
     auto [it, added] = shortest.emplace(junction, &b);
     if (!added && polyline_length(b.points) < polyline_length(it->second->points)) it->second = &b;
   }
@@ -471,14 +577,28 @@ std::size_t remove_spurs_once(CurveSkeleton& skeleton, double spur_factor, doubl
 
 }  // namespace
 
+double explained_area(const std::vector<Branch>& branches, std::size_t which, const std::vector<WeightedPoint>& surface,
+                      double tolerance) {
+  return explained_areas(tube_segments(branches), branches.size(), surface, tolerance).at(which);
+}
+
 std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor) {
+  return remove_spurs(skeleton, SpurRule{spur_factor, protrusion_factor});
+}
+
+std::size_t remove_spurs(CurveSkeleton& skeleton, const SpurRule& rule) {
   std::size_t removed = 0;
   while (true) {
     bool changed = false;
     while (remove_one_parallel_path(skeleton)) changed = true, ++removed;
     while (remove_one_split_loop(skeleton)) changed = true, ++removed;
-    while (contract_one_bubble(skeleton, spur_factor)) changed = true, ++removed;
-    const std::size_t spurs = remove_spurs_once(skeleton, spur_factor, protrusion_factor);
+    // Short branches first: a bridge between two branches just past a
+    // junction makes a triangle with it too, and contracting the bridge
+    // keeps the junction where it is (the triangle's mean lies out in the
+    // crotch).
+    while (contract_one_bubble(skeleton, rule.length_factor)) changed = true, ++removed;
+    while (contract_one_triangle(skeleton)) changed = true, ++removed;
+    const std::size_t spurs = remove_spurs_once(skeleton, rule);
     removed += spurs;
     if (!changed && spurs == 0) return removed;
   }

@@ -57,7 +57,8 @@ double skeleton_size(const Stage& stage) {
 }
 
 /// The curve skeleton and branches of `graph` (after optional spur removal).
-Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::string name, std::size_t* spurs) {
+Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::string name, std::size_t* spurs,
+                  const std::vector<WeightedPoint>* surface = nullptr) {
   // No inner ball left (pruned away): no branch; reconstruct() falls back to a ball.
   if (graph.vertices.empty()) return Stage{std::move(name), {}, {}, {}, 0, 0, 0, 0.0};
   std::vector<double> radii;
@@ -65,10 +66,16 @@ Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::st
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
   CurveSkeleton curve = level_set_skeleton(graph, {o.bin_factor * radii[radii.size() / 2], 0.95});
   if (spurs != nullptr) {
-    *spurs = remove_spurs(curve, o.spur_factor, o.spur_protrusion);
+    SpurRule rule{o.spur_factor, o.spur_protrusion};
+    if (o.explained_factor > 0.0) {
+      rule.surface = surface;
+      rule.explained_factor = o.explained_factor;
+      rule.explained_tolerance = o.explained_tolerance;
+    }
+    *spurs = remove_spurs(curve, rule);
     // Moving junctions can leave two paths between the same junctions or
     // a branch short enough to contract: clean up once more.
-    if (o.relocate_junctions && relocate_junctions(curve) > 0) *spurs += remove_spurs(curve, o.spur_factor, o.spur_protrusion);
+    if (o.relocate_junctions && relocate_junctions(curve) > 0) *spurs += remove_spurs(curve, rule);
   }
   return make_stage(std::move(name), extract_branches(curve));
 }
@@ -174,7 +181,13 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
                                      o.prune_span * bounding_diagonal(graph.samples));
   say(o, fmt::format("pruned: {} vertices ({} pieces) below the angle, {} small islands removed", result.pruning.vertices_removed,
                      result.pruning.branches_removed, result.pruning.small_pieces_removed));
-  result.stages.push_back(branches_of(graph, o, "pruned", &result.spurs_removed));
+  // The input's area as points about 1/100 of the diagonal apart, for the
+  // spur rule (explained_area): fine enough for the cap of a limb a few
+  // hundredths of the diagonal across, coarse enough to be cheap.
+  const std::vector<WeightedPoint> area_points = merged_in_cells(
+      area_weighted_points(surface, o.explained_spacing * bounding_diagonal(surface.vertices)),
+      o.explained_spacing * bounding_diagonal(surface.vertices));
+  result.stages.push_back(branches_of(graph, o, "pruned", &result.spurs_removed, &area_points));
   result.stages.back().branches = trim_caps(result.stages.back().branches, o.cap_slope);
   result.stages.back().seconds = clock.lap();
   const Stage pruned = result.stages.back();  // a copy: stages grows below
@@ -301,15 +314,50 @@ std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) 
 
 namespace skelconv::reconstruct {
 
-SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
-                              double size, TriangleMesh* mesh_out) {
-  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
+namespace {
+
+/// The facet size measure_stage meshes at: `size`, or the diagonal / 100.
+double measure_size(const Vec3& lo, const Vec3& hi, double size) { return size > 0.0 ? size : (hi - lo).norm() / 100.0; }
+
+std::pair<Vec3, Vec3> bounding_box(const TriangleMesh& surface) {
   Vec3 lo = surface.vertices.front(), hi = lo;
   for (const Vec3& v : surface.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  return {lo, hi};
+}
+
+}  // namespace
+
+MeasureWork measure_work(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                         double size) {
+  const auto [lo, hi] = bounding_box(surface);
+  const double h = measure_size(lo, hi, size);
+  MeasureWork work;
+  work.primitives = primitive_counts(stage, options).total();
+  // Nodes of the box at spacing h, one voxel of margin each side (the
+  // mesher's box holds the whole surface with a margin; a narrow band
+  // evaluates fewer, so this is an upper estimate).
+  work.grid_nodes = 1.0;
+  for (int axis = 0; axis < 3; ++axis) work.grid_nodes *= std::floor((hi[axis] - lo[axis]) / h) + 3.0;
+  return work;
+}
+
+std::string over_measure_budget(const MeasureWork& work, double budget) {
+  if (work.evaluations() <= budget) return {};
+  return fmt::format("not measured: meshing its {} primitives on a grid of about {:.3g} nodes would take about "
+                     "{:.2g} primitive evaluations, more than the budget of {:.2g}",
+                     work.primitives, work.grid_nodes, work.evaluations(), budget);
+}
+
+SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                              double size, TriangleMesh* mesh_out) {
+  const std::string refused = over_measure_budget(measure_work(surface, stage, options, size), options.measure_budget);
+  if (!refused.empty()) throw InputError(refused, "stage " + stage.name);
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
+  const auto [lo, hi] = bounding_box(surface);
   MeshOptions mesh_options;
   mesh_options.iso = skeleton.iso();
   mesh_options.method = MeshMethod::grid;
-  mesh_options.size = size > 0.0 ? size : (hi - lo).norm() / 100.0;
+  mesh_options.size = measure_size(lo, hi, size);
   const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), mesh_options);
   if (mesh_out != nullptr) *mesh_out = mesh;
   return surface_distance(surface, mesh);

@@ -26,6 +26,12 @@ bool is_cap_step(const Vec4& inner, const Vec4& end, double max_slope) {
   return inner.w() - end.w() > max_slope * length;
 }
 
+/// True when the step from `middle` to `end` turns back from the step
+/// from `before` to `middle` (negative dot product: more than 90°).
+bool is_hook(const Vec4& before, const Vec4& middle, const Vec4& end) {
+  return (end.head<3>() - middle.head<3>()).dot(middle.head<3>() - before.head<3>()) < 0.0;
+}
+
 /// Unit chord from the point about one end radius back along `points`
 /// (read from the back) to the last point.
 Vec3 end_tangent(const std::vector<Vec4>& points) {
@@ -262,11 +268,18 @@ std::vector<Branch> trim_caps(std::vector<Branch> branches, double max_slope) {
   for (Branch& b : branches) {
     if (is_closed(b)) continue;
     auto& p = b.points;
+    const auto last_is_trimmed = [&] {
+      const std::size_t n = p.size();
+      return is_cap_step(p[n - 2], p[n - 1], max_slope) || (n > 2 && is_hook(p[n - 3], p[n - 2], p[n - 1]));
+    };
+    const auto first_is_trimmed = [&] {
+      return is_cap_step(p[1], p[0], max_slope) || (p.size() > 2 && is_hook(p[2], p[1], p[0]));
+    };
     if (uses.at(b.last_node) == 1) {
-      while (p.size() > 2 && is_cap_step(p[p.size() - 2], p.back(), max_slope)) p.pop_back();
+      while (p.size() > 2 && last_is_trimmed()) p.pop_back();
     }
     if (uses.at(b.first_node) == 1) {
-      while (p.size() > 2 && is_cap_step(p[1], p.front(), max_slope)) p.erase(p.begin());
+      while (p.size() > 2 && first_is_trimmed()) p.erase(p.begin());
     }
   }
   return branches;

@@ -17,19 +17,22 @@
 
 #include "skelconv/mesh/triangle_mesh.hpp"
 #include "skelconv/reconstruct/branch_graph.hpp"  // Vec4
+#include "skelconv/reconstruct/weighted_point.hpp"
 #include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv::reconstruct {
-
-struct WeightedPoint {
-  Vec3 point;
-  double weight = 0.0;  ///< the area it stands for
-};
 
 /// Points spread over every triangle of `mesh`, weighted by area: each
 /// triangle is cut into n² equal sub-triangles (n = ⌈longest edge / h⌉, at
 /// least 1) and each sub-triangle gives its centroid with its area.
 std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double h);
+
+/// `points` merged per cell of a grid of spacing h (cells [i h, (i+1) h)
+/// per axis): one point per cell that holds any, at their weighted
+/// centroid with their total weight, in the order of each cell's first
+/// point. The area is kept and the count bounded by about the area / h²
+/// (a fine mesh gives at least one point per triangle).
+std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h);
 
 /// One least-squares sphere per connected component of `mesh` (triangles
 /// sharing a vertex), in the order of each component's first triangle,

@@ -26,6 +26,7 @@
 #include <Eigen/Core>
 
 #include "skelconv/reconstruct/medial_graph.hpp"
+#include "skelconv/reconstruct/weighted_point.hpp"
 
 namespace skelconv::reconstruct {
 
@@ -80,6 +81,44 @@ BranchGraph extract_branches(const CurveSkeleton& skeleton);
 /// into a loop at its junction (docs/reconstruction.md). Returns how many
 /// went.
 std::size_t remove_spurs(CurveSkeleton& skeleton, double spur_factor, double protrusion_factor = 0.0);
+
+/// Which terminal branch is a spur. Without `surface`, the rules of
+/// remove_spurs above: shorter than `length_factor` × its junction's radius
+/// R, or reaching less than `protrusion_factor` × R beyond the rest's
+/// balls. With `surface` (the input as area-weighted points), by the area
+/// it explains instead (explained_area): a spur explains less than
+/// `explained_factor` × π R² of the input's area, a limb more, however
+/// short it is. `length_factor` still sets which branches between two
+/// junctions are contracted.
+struct SpurRule {
+  double length_factor = 1.5;
+  double protrusion_factor = 0.0;
+  const std::vector<WeightedPoint>* surface = nullptr;
+  /// A limb explains at least the area of a hemisphere of radius R/2
+  /// (π R²/2), the cap of the thinnest limb still worth a branch; the spurs
+  /// noise grows explain only the few samples of a bump.
+  double explained_factor = 0.5;
+  /// A sample counts for a branch only when the rest of the skeleton misses
+  /// it by more than this × the rest's radius there, beyond what the branch
+  /// does (the medial balls fall short of the surface by ~8% of the radius,
+  /// and noise moves it: neither is something a branch explains).
+  double explained_tolerance = 0.25;
+};
+
+/// remove_spurs with `rule` (the three-argument form is rule {spur_factor,
+/// protrusion_factor}).
+std::size_t remove_spurs(CurveSkeleton& skeleton, const SpurRule& rule);
+
+/// The area of `surface` that branch `which` of `branches` explains beyond
+/// the rest: the total weight of the points whose nearest tube is the
+/// branch's and whose distance to the rest's tubes exceeds their distance
+/// to the branch's tubes by more than `tolerance` × the rest's radius at
+/// its nearest point. The distance to a branch's tubes is the smallest, over
+/// its polyline's segments, of |p − q| − r_q (q the point of the segment
+/// nearest p, r_q the radius interpolated there): the signed distance to
+/// the surface of its balls, about.
+double explained_area(const std::vector<Branch>& branches, std::size_t which, const std::vector<WeightedPoint>& surface,
+                      double tolerance);
 
 struct JunctionOptions {
   /// The axis of a branch leaving a junction of radius R is the chord of

@@ -42,7 +42,10 @@ namespace skelconv::reconstruct {
 
 /// Drops points from every free end (a node that ends exactly one branch)
 /// while the radius falls faster than `max_slope` per unit length towards
-/// the end; a branch keeps at least 2 points.
+/// the end, or the last step turns back (its direction against the step
+/// before it, an angle over 90°: on a noisy cap the last level-set piece
+/// can lie on a sheet beside the axis, behind the end, and the end tangent
+/// then points back into the tube); a branch keeps at least 2 points.
 std::vector<Branch> trim_caps(std::vector<Branch> branches, double max_slope);
 
 /// Appends (prepends) to every free end a point at `factor` × its radius
