@@ -93,8 +93,7 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
       ->check(CLI::NonNegativeNumber);
   eval->add_option("--max-points", options.limits.max_points,
                    "Refuse more points than this (default 10000000): the points and their output lines are held "
-                   "in memory until the last one is evaluated")
-      ->check(CLI::PositiveNumber);
+                   "in memory until the last one is evaluated");
   eval->footer(eval_footer);
   return eval;
 }
