@@ -105,7 +105,7 @@ std::string read_point_input(std::FILE* in, const PointInputLimits& limits) {
       }
       // A CRLF file's '\r' is not part of the line (parse_point_line).
       if (c != '\r' && ++line_length > limits.max_line_length) {
-        throw InputError(fmt::format("longer than {} characters: a point line is three numbers \"x y z\"",
+        throw InputError(fmt::format("longer than {} characters: a line holds one query, a few numbers",
                                      limits.max_line_length),
                          fmt::format("line {}", line_number));
       }

@@ -28,7 +28,8 @@ struct PointInputLimits {
   std::size_t max_line_length = 4096;
 };
 
-/// All of `in` (standard input), read in chunks. Throws InputError located
+/// All of `in` (standard input), read in chunks (the query lines of `eval`,
+/// and of `bound`, which keeps the line limit only). Throws InputError located
 /// at "line N" as soon as line N is longer than limits.max_line_length
 /// characters (the line break and a CRLF file's '\r' not counted), or the
 /// input holds more than limits.max_points non-blank lines (the message
