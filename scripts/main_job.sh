@@ -1,14 +1,29 @@
 #!/usr/bin/env bash
 # README command 1: install what is missing, build, regenerate the kernels
-# and diff them against generated/, run every test that CI does not run
-# (the ctest label `long`: the default-size verification sweeps and their
-# baseline compare, the full SCALIS property sweep, the reconstruction
+# and diff them against generated/, run every test that CI does not run at
+# the main job's sizes (the ctest label `long`: the verification sweeps and
+# their baseline compares, the SCALIS accuracy test, the reconstruction
 # quality table, the long fuzz run, the package test, the slow figure
-# claims), then the sanitizer run (scripts/sanitize.sh) and the libFuzzer
-# harnesses (scripts/fuzz.sh), and print the
-# sweeps' summary tables. `ctest -N -L long` lists exactly what stage 3 runs.
+# claims, the browser test; docs/checks.md says what each size covers),
+# then the sanitizer run (scripts/sanitize.sh) and the libFuzzer harnesses
+# (scripts/fuzz.sh), and print the segment sweep's summary table.
+# `ctest -N -L long` lists exactly what the long-test step runs.
+#
+#   scripts/main_job.sh          the main job
+#   scripts/main_job.sh --full   the same, plus the full sizes: the tests
+#                                labelled `full` (default-size sweeps and
+#                                their baselines, 2,000 SCALIS accuracy
+#                                samples, 20,000 fuzzed skeleton files), 400
+#                                fuzzed files under the sanitizers, 60 s per
+#                                libFuzzer harness
 set -euo pipefail
 cd "$(dirname "$0")/.."
+full=0
+case "${1:-}" in
+  --full) full=1 ;;
+  "") ;;
+  *) echo "usage: scripts/main_job.sh [--full]" >&2; exit 2 ;;
+esac
 start=$SECONDS
 stage() { echo "== [$((SECONDS - start)) s] $*"; }
 
@@ -19,8 +34,16 @@ scripts/build.sh
 stage "regenerating the kernels and diffing them against generated/"
 ctest --test-dir build/release -R codegen_regeneration_is_byte_identical --output-on-failure
 
-stage "the long tests: $(ctest --test-dir build/release -N -L long | grep -c 'Test *#') tests (ctest -L long)"
-ctest --test-dir build/release -L long --output-on-failure -j2
+labels=long
+report=verify_sweep_main
+if [ "$full" = 1 ]; then
+  labels='long|full'
+  report=verify_sweep_default
+  export SKELCONV_SANITIZE_FUZZ_ITERATIONS="${SKELCONV_SANITIZE_FUZZ_ITERATIONS:-400}"
+  export SKELCONV_FUZZ_SECONDS="${SKELCONV_FUZZ_SECONDS:-60}"
+fi
+stage "the long tests: $(ctest --test-dir build/release -N -L "$labels" | grep -c 'Test *#') tests (ctest -L '$labels')"
+ctest --test-dir build/release -L "$labels" --output-on-failure -j2
 
 stage "sanitizers: ASan + UBSan build of the runtime, the command and the unit tests"
 scripts/sanitize.sh
@@ -28,6 +51,6 @@ scripts/sanitize.sh
 stage "libFuzzer: the PLY/OBJ reader and the point lines, ${SKELCONV_FUZZ_SECONDS:-30} s each"
 scripts/fuzz.sh
 
-stage "summary of the default-size segment sweep (build/release/verify/verify_sweep_default.json)"
-build/release/verify/skelconv-verify markdown build/release/verify/verify_sweep_default.json | head -60
+stage "summary of the segment sweep (build/release/verify/$report.json)"
+build/release/verify/skelconv-verify markdown "build/release/verify/$report.json" | head -60
 stage "main job done"

@@ -10,11 +10,30 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 iterations="${SKELCONV_SANITIZE_FUZZ_ITERATIONS:-400}"
 
+# The fuzzer's driver only mutates files and starts the command under test
+# (build/asan/src/skelconv): the release build's driver serves when it is
+# there (the main job builds it), so the ASan build compiles the runtime,
+# the command and the unit tests only.
+driver=build/release/tests/skelconv_fuzz_skeletons
+targets=(skelconv skelconv_tests)
+if [ ! -x "$driver" ]; then
+  driver=build/asan/tests/skelconv_fuzz_skeletons
+  targets+=(skelconv_fuzz_skeletons)
+fi
+
 cmake --preset asan > /dev/null
-cmake --build --preset asan --target skelconv skelconv_tests skelconv_fuzz_skeletons
+start=$SECONDS
+cmake --build --preset asan --target "${targets[@]}"
+echo "sanitize: ASan build $((SECONDS - start)) s"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+start=$SECONDS
 build/asan/tests/skelconv_tests --gtest_brief=1
+echo "sanitize: unit tests $((SECONDS - start)) s"
+start=$SECONDS
 ctest --test-dir build/asan --output-on-failure -j2 -R '^cli\.'
-build/asan/tests/skelconv_fuzz_skeletons build/asan/src/skelconv tests/data/good --iterations "$iterations" --seed 36
+echo "sanitize: command-line cases $((SECONDS - start)) s"
+start=$SECONDS
+"$driver" build/asan/src/skelconv tests/data/good --iterations "$iterations" --seed 36
+echo "sanitize: $iterations fuzzed skeleton files $((SECONDS - start)) s"
 echo "sanitize: clean (ASan + UBSan: unit tests, command-line cases, $iterations fuzzed skeleton files)"

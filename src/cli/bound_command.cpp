@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <limits>
 #include <string_view>
 
 #include <fmt/format.h>
 
 #include "exit_status.hpp"
+#include "point_lines.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/interval/octree.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
@@ -39,6 +41,15 @@ std::optional<interval::Box> parse_box_line(std::string_view line) {
   }
   if (values.empty()) return std::nullopt;
   return interval::box_from_corners(values);
+}
+
+/// Standard input, its lines bounded as `eval`'s (point_lines.hpp): input
+/// without line breaks is refused at once. The number of boxes is not: each
+/// costs one enclosure and one output line.
+std::string read_box_input() {
+  PointInputLimits limits;
+  limits.max_points = std::numeric_limits<std::size_t>::max();
+  return read_point_input(stdin, limits);
 }
 
 std::string bound_lines(const Skeleton& skeleton, std::string_view input, std::optional<double> iso) {
@@ -110,7 +121,7 @@ int run_bound(const BoundOptions& options) {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     if (options.iso && !std::isfinite(*options.iso)) throw InputError("must be finite", "--iso");
     return options.octree_depth ? octree_lines(skeleton, options)
-                                : bound_lines(skeleton, read_standard_input(), options.iso);
+                                : bound_lines(skeleton, read_box_input(), options.iso);
   });
 }
 

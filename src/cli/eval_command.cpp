@@ -21,7 +21,8 @@ namespace {
 
 constexpr const char* eval_footer = R"(
 Input (stdin):  one point "x y z" per line, numbers separated by blanks;
-                blank lines are skipped.
+                blank lines are skipped. At most --max-points points and
+                4096 characters a line.
 Output (stdout): one line "f gx gy gz" per point: the field f of the
                 skeleton (the sum of the top-level primitives and blend
                 nodes) and its gradient, printed with %.17g; the surface
@@ -90,6 +91,9 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
   eval->add_option("--threads", options.threads,
                    "Threads evaluating the points (0: every core); the output is the same for any value")
       ->check(CLI::NonNegativeNumber);
+  eval->add_option("--max-points", options.limits.max_points,
+                   "Refuse more points than this (default 10000000): the points and their output lines are held "
+                   "in memory until the last one is evaluated");
   eval->footer(eval_footer);
   return eval;
 }
@@ -97,7 +101,7 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
 int run_eval(const EvalOptions& options) {
   return print_all_or_nothing([&] {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
-    return evaluate_lines(skeleton, read_standard_input(), options.threads);
+    return evaluate_lines(skeleton, read_point_input(stdin, options.limits), options.threads);
   });
 }
 

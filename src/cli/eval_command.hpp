@@ -10,18 +10,23 @@
 //
 // All-or-nothing: output is buffered and written only after every point has
 // been evaluated, so on any error stdout stays empty and stderr holds one
-// "skelconv: error: ..." line (exit codes in exit_status.hpp).
+// "skelconv: error: ..." line (exit codes in exit_status.hpp). So the input
+// is bounded before any point is evaluated: at most --max-points points, and
+// lines of at most 4096 characters (PointInputLimits).
 #pragma once
 
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "point_lines.hpp"
+
 namespace skelconv::cli {
 
 struct EvalOptions {
   std::string skeleton_path;
   unsigned threads = 0;  ///< --threads: 0 = every core (field/batch.hpp)
+  PointInputLimits limits;  ///< --max-points (point_lines.hpp)
 };
 
 /// Registers the `eval` subcommand on `app`, filling `options` when parsed.

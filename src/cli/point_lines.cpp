@@ -1,12 +1,12 @@
 // Implementation of point_lines.hpp.
 #include "point_lines.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <string>
 #include <system_error>
-#include <vector>
 
 #include <fmt/format.h>
 
@@ -17,12 +17,20 @@ namespace {
 
 constexpr std::string_view blanks = " \t\r\v\f";
 
-std::vector<std::string_view> split_on_blanks(std::string_view line) {
-  std::vector<std::string_view> tokens;
+/// The first three blank-separated tokens of a line and how many there are
+/// in all: a line of a million values costs no more memory than one of four.
+struct Tokens {
+  std::array<std::string_view, 3> first;
+  std::size_t count = 0;
+};
+
+Tokens split_on_blanks(std::string_view line) {
+  Tokens tokens;
   std::size_t start = line.find_first_not_of(blanks);
   while (start != std::string_view::npos) {
     const std::size_t end = std::min(line.find_first_of(blanks, start), line.size());
-    tokens.push_back(line.substr(start, end - start));
+    if (tokens.count < tokens.first.size()) tokens.first[tokens.count] = line.substr(start, end - start);
+    ++tokens.count;
     start = line.find_first_not_of(blanks, end);
   }
   return tokens;
@@ -66,20 +74,56 @@ std::string excerpt(std::string_view line) {
 
 std::optional<Vec3> parse_point_line(std::string_view line) {
   if (line.ends_with('\r')) line.remove_suffix(1);
-  const std::vector<std::string_view> tokens = split_on_blanks(line);
-  if (tokens.empty()) return std::nullopt;
+  const Tokens tokens = split_on_blanks(line);
+  if (tokens.count == 0) return std::nullopt;
 
   const auto fail = [&](const std::string& detail) {
     throw InputError(fmt::format("expected three numbers \"x y z\", got \"{}\" ({})", excerpt(line), detail));
   };
-  if (tokens.size() != 3) fail(fmt::format("{} value{}", tokens.size(), tokens.size() == 1 ? "" : "s"));
+  if (tokens.count != 3) fail(fmt::format("{} value{}", tokens.count, tokens.count == 1 ? "" : "s"));
   Vec3 point;
   for (int k = 0; k < 3; ++k) {
-    const ParsedNumber number = parse_coordinate(tokens[std::size_t(k)]);
+    const ParsedNumber number = parse_coordinate(tokens.first[std::size_t(k)]);
     if (!number.problem.empty()) fail(number.problem);
     point[k] = number.value;
   }
   return point;
+}
+
+std::string read_point_input(std::FILE* in, const PointInputLimits& limits) {
+  std::string text;
+  std::size_t line_number = 1, line_length = 0, points = 0;
+  bool line_has_value = false;
+  char chunk[1 << 16];
+  std::size_t count = 0;
+  while ((count = std::fread(chunk, 1, sizeof chunk, in)) > 0) {
+    for (std::size_t k = 0; k < count; ++k) {
+      const char c = chunk[k];
+      if (c == '\n') {
+        ++line_number, line_length = 0, line_has_value = false;
+        continue;
+      }
+      // A CRLF file's '\r' is not part of the line (parse_point_line).
+      if (c != '\r' && ++line_length > limits.max_line_length) {
+        throw InputError(fmt::format("longer than {} characters: a line holds one query, a few numbers",
+                                     limits.max_line_length),
+                         fmt::format("line {}", line_number));
+      }
+      if (!line_has_value && blanks.find(c) == std::string_view::npos) {
+        line_has_value = true;
+        if (++points > limits.max_points) {
+          throw InputError(fmt::format("more than {} points, the limit (--max-points): every point and its "
+                                       "output line are held in memory until the last one is evaluated; split "
+                                       "the input, or raise --max-points if the memory is there",
+                                       limits.max_points),
+                           fmt::format("line {}", line_number));
+        }
+      }
+    }
+    text.append(chunk, count);
+  }
+  if (std::ferror(in)) throw InputError("cannot read standard input");
+  return text;
 }
 
 }  // namespace skelconv::cli

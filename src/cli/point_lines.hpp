@@ -1,12 +1,40 @@
 // src/cli/point_lines.hpp — parsing the "x y z" query lines of `skelconv eval`.
 #pragma once
 
+#include <cstddef>
+#include <cstdio>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "skelconv/geometry.hpp"
 
 namespace skelconv::cli {
+
+/// What `skelconv eval` accepts on standard input before it starts any work.
+/// The command holds its whole input, every point and every output line in
+/// memory until the last point is evaluated (all-or-nothing output), about
+/// 300 bytes a point with "%.17g" input lines, so the number of points is
+/// bounded; a line is bounded
+/// so that input without line breaks (a binary file, /dev/zero) is refused at
+/// once instead of read to its end.
+struct PointInputLimits {
+  /// --max-points: at most this many point lines (blank lines do not count);
+  /// 10 million points hold about 3 GB.
+  std::size_t max_points = 10'000'000;
+  /// A point line is three numbers: "%.17g" writes at most 24 characters
+  /// each (sign, 17 digits, point, "e-308"), so 4096 leaves room for any
+  /// padding or longer decimal forms a tool may write.
+  std::size_t max_line_length = 4096;
+};
+
+/// All of `in` (standard input), read in chunks (the query lines of `eval`,
+/// and of `bound`, which keeps the line limit only). Throws InputError located
+/// at "line N" as soon as line N is longer than limits.max_line_length
+/// characters (the line break and a CRLF file's '\r' not counted), or the
+/// input holds more than limits.max_points non-blank lines (the message
+/// names --max-points); InputError if `in` cannot be read.
+std::string read_point_input(std::FILE* in, const PointInputLimits& limits);
 
 /// Parses one input line: three finite decimal numbers separated by spaces or
 /// tabs (a trailing '\r' of a CRLF file is ignored; a leading '+' is

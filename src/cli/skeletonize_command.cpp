@@ -104,6 +104,10 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("--noise", options.noise,
                       "Test robustness: move every sample by up to this × the diagonal (seed 0); --report still "
                       "measures against the clean input");
+  command->add_option("--max-triangles", options.max_triangles,
+                      fmt::format("Refuse a mesh of more triangles or vertices than this (default {}), while "
+                                  "reading it: the work grows with the number of samples",
+                                  options.max_triangles));
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
@@ -121,7 +125,14 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     if (!options.quiet) ro.progress = [](std::string_view line) {
       std::fprintf(stderr, "skelconv skeletonize: %.*s\n", int(line.size()), line.data());
     };
-    const TriangleMesh input = read_mesh(options.input_path);
+    const TriangleMesh input = read_mesh(options.input_path, options.max_triangles);
+    if (input.vertices.size() > options.max_triangles) {
+      throw InputError(fmt::format("the mesh has {} vertices, more than the limit {} (--max-triangles; every "
+                                   "vertex is a sample of the medial graph): raise --max-triangles if the time "
+                                   "and memory are there",
+                                   input.vertices.size(), options.max_triangles),
+                       options.input_path);
+    }
     try {
       reconstruct::check_closed_mesh(input);
     } catch (const InputError& error) {

@@ -11,12 +11,17 @@
 // per stage the primitive counts, distances to the input, Euler
 // characteristic and times as JSON.
 // Errors: one "skelconv: error: ..." line, exit 2, nothing written.
+// The work grows with the input's size: a mesh of more than --max-triangles
+// triangles (or vertices) is refused while it is read, before any work.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
+
+#include "skelconv/reconstruct/surface_samples.hpp"
 
 namespace skelconv::cli {
 
@@ -31,6 +36,14 @@ struct SkeletonizeOptions {
   bool bezier_junctions = false;
   double noise = 0.0;
   bool quiet = false;
+  /// --max-triangles. The medial graph is the Delaunay triangulation of the
+  /// samples: the vertices plus points spread over coarse triangles, at most
+  /// SamplingOptions::max_samples of them, unless the vertices alone are
+  /// more (surface_samples.hpp). A closed mesh of T triangles has about T/2
+  /// vertices, so beyond 2 × max_samples triangles the vertices exceed the
+  /// sample budget the reconstruction is sized for; the vertex count is
+  /// held to the same limit (unused vertices are samples too).
+  std::size_t max_triangles = 2 * reconstruct::SamplingOptions{}.max_samples;
 };
 
 CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options);

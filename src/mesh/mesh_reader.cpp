@@ -32,8 +32,20 @@ std::string read_whole_file(const std::filesystem::path& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-/// Adds the fan triangulation of polygon `face` (0-based indices).
-void add_polygon(TriangleMesh& mesh, const std::vector<std::int64_t>& face) {
+/// The refusal of a mesh beyond the caller's limit (read_mesh's max_triangles).
+InputError too_many_triangles(std::size_t max_triangles, const std::string& where) {
+  return InputError(fmt::format("the mesh has more than {} triangles, the limit (--max-triangles): raise "
+                                "--max-triangles if the time and memory are there",
+                                max_triangles),
+                    where);
+}
+
+/// Adds the fan triangulation of polygon `face` (0-based indices); throws
+/// too_many_triangles when the mesh would then hold more than max_triangles.
+void add_polygon(TriangleMesh& mesh, const std::vector<std::int64_t>& face, std::size_t max_triangles,
+                 const std::string& where) {
+  if (face.size() >= 3 && face.size() - 2 > max_triangles - std::min(max_triangles, mesh.triangles.size()))
+    throw too_many_triangles(max_triangles, where);
   for (std::size_t k = 1; k + 1 < face.size(); ++k) {
     mesh.triangles.push_back({std::int32_t(face[0]), std::int32_t(face[k]), std::int32_t(face[k + 1])});
   }
@@ -188,7 +200,8 @@ int find_property(const PlyElement& element, std::initializer_list<const char*> 
   return -1;
 }
 
-void read_ply_element(const PlyElement& element, PlyBody& body, TriangleMesh& mesh, const std::string& where) {
+void read_ply_element(const PlyElement& element, PlyBody& body, TriangleMesh& mesh, std::size_t max_triangles,
+                      const std::string& where) {
   const bool is_vertex = element.name == "vertex";
   const bool is_face = element.name == "face";
   const int x = find_property(element, {"x"}), y = find_property(element, {"y"}), z = find_property(element, {"z"});
@@ -214,7 +227,7 @@ void read_ply_element(const PlyElement& element, PlyBody& body, TriangleMesh& me
           throw InputError(fmt::format("face {} has vertex index {} outside [0, {})", item, index, mesh.vertices.size()),
                            where);
       }
-      add_polygon(mesh, face);
+      add_polygon(mesh, face, max_triangles, where);
     }
     if (is_vertex) {
       if (!point.allFinite()) throw InputError(fmt::format("vertex {} is not finite", item), where);
@@ -223,15 +236,25 @@ void read_ply_element(const PlyElement& element, PlyBody& body, TriangleMesh& me
   }
 }
 
-TriangleMesh read_ply(const std::string& bytes, const std::string& where) {
+TriangleMesh read_ply(const std::string& bytes, std::size_t max_triangles, const std::string& where) {
   const PlyHeader header = parse_ply_header(bytes, where);
+  // Every face of at least three corners makes at least one triangle: a
+  // header declaring more faces than the limit is refused before its body.
+  for (const PlyElement& element : header.elements) {
+    if (element.name == "face" && element.count > max_triangles) {
+      throw InputError(fmt::format("the PLY header declares {} faces, more than the limit of {} triangles "
+                                   "(--max-triangles): raise --max-triangles if the time and memory are there",
+                                   element.count, max_triangles),
+                       where);
+    }
+  }
   PlyBody body(bytes, header.body_start, header.format, where);
   TriangleMesh mesh;
   bool vertices_read = false;
   for (const PlyElement& element : header.elements) {
     if (element.name == "face" && !vertices_read)
       throw InputError("the face element comes before the vertex element", where);
-    read_ply_element(element, body, mesh, where);
+    read_ply_element(element, body, mesh, max_triangles, where);
     vertices_read = vertices_read || element.name == "vertex";
   }
   return mesh;
@@ -256,7 +279,7 @@ std::int64_t obj_index(const std::string& corner, std::size_t vertex_count, cons
   return resolved;
 }
 
-TriangleMesh read_obj(const std::string& text, const std::string& where) {
+TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const std::string& where) {
   TriangleMesh mesh;
   std::istringstream lines(text);
   std::string line;
@@ -280,7 +303,7 @@ TriangleMesh read_obj(const std::string& text, const std::string& where) {
       face.clear();
       for (std::string corner; words >> corner;) face.push_back(obj_index(corner, mesh.vertices.size(), at));
       if (face.size() < 3) throw InputError("a face needs at least 3 corners", at);
-      add_polygon(mesh, face);
+      add_polygon(mesh, face, max_triangles, at);
     }
   }
   return mesh;
@@ -288,12 +311,13 @@ TriangleMesh read_obj(const std::string& text, const std::string& where) {
 
 }  // namespace
 
-TriangleMesh read_mesh(const std::filesystem::path& path) {
+TriangleMesh read_mesh(const std::filesystem::path& path, std::size_t max_triangles) {
   const std::string extension = lower(path.extension().string());
   if (extension != ".ply" && extension != ".obj")
     throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply or .obj)", path.string());
   const std::string bytes = read_whole_file(path);
-  return extension == ".ply" ? read_ply(bytes, path.string()) : read_obj(bytes, path.string());
+  return extension == ".ply" ? read_ply(bytes, max_triangles, path.string())
+                             : read_obj(bytes, max_triangles, path.string());
 }
 
 }  // namespace skelconv

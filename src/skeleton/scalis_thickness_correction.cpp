@@ -145,7 +145,11 @@ void check_options(const ScalisThicknessCorrectionOptions& o) {
     throw InputError(fmt::format("must be in (0, 1), got {:.6g}", o.tolerance), "tolerance");
   }
   if (o.max_iterations < 0) throw InputError("must be >= 0", "max_iterations");
-  if (o.ramp_nodes < 1) throw InputError("must be >= 1", "ramp_nodes");
+  // As for the classical correction (thickness_correction.cpp): each ramp
+  // node is an unknown of the dense fit; an absurd count would run without end.
+  if (o.ramp_nodes < 1 || o.ramp_nodes > 100) {
+    throw InputError(fmt::format("must be in [1, 100], got {}", o.ramp_nodes), "ramp_nodes");
+  }
   if (!(o.ramp_reach > 0 && o.ramp_reach <= 4)) {
     throw InputError(fmt::format("must be in (0, 4], got {:.6g}", o.ramp_reach), "ramp_reach");
   }

@@ -162,7 +162,13 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
     throw InputError(fmt::format("must be in (0, 1), got {:.6g}", o.tolerance), "tolerance");
   }
   if (o.max_iterations < 0) throw InputError("must be >= 0", "max_iterations");
-  if (o.ramp_nodes < 1) throw InputError("must be >= 1", "ramp_nodes");
+  // Each ramp node is an unknown of the dense least-squares fit, and beyond
+  // 100 its spacing R/ramp_nodes is below the samples' (τ/4, τ < R) for any
+  // τ above R/25: unknowns no sample tells apart. The bound also keeps an
+  // absurd count (1e9) from running without end.
+  if (o.ramp_nodes < 1 || o.ramp_nodes > 100) {
+    throw InputError(fmt::format("must be in [1, 100], got {}", o.ramp_nodes), "ramp_nodes");
+  }
   if (!(o.point_support_ratio >= 1 && o.point_support_ratio <= 4)) {
     throw InputError(fmt::format("must be in [1, 4], got {:.6g}", o.point_support_ratio), "point_support_ratio");
   }

@@ -15,7 +15,9 @@
 // a point set is a mesh without triangles.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <limits>
 
 #include "skelconv/mesh/triangle_mesh.hpp"
 
@@ -24,7 +26,12 @@ namespace skelconv {
 /// Reads `path` (.ply or .obj, by extension, case insensitive). The returned
 /// mesh has no normals. Throws InputError for an unknown extension, an
 /// unreadable file, a malformed header or body, a non-finite coordinate or a
-/// face index out of range.
-TriangleMesh read_mesh(const std::filesystem::path& path);
+/// face index out of range, and (naming the option --max-triangles of the
+/// command that passes it) for a mesh of more than `max_triangles` triangles
+/// after fan triangulation: refused as soon as the count passes the limit,
+/// and for a PLY file whose header declares more faces, before its body is
+/// read.
+TriangleMesh read_mesh(const std::filesystem::path& path,
+                       std::size_t max_triangles = std::numeric_limits<std::size_t>::max());
 
 }  // namespace skelconv

@@ -97,6 +97,7 @@ struct ThicknessCorrectionOptions {
   int max_iterations = 30;
   /// Split points per segment leaving a corrected node (the free weights of
   /// the ramp, the last one at R fixed). More: a finer fit, more unknowns.
+  /// In [1, 100] (thickness_correction.cpp says why).
   int ramp_nodes = 4;
   /// Samples per length τ along each segment (ends included).
   double samples_per_thickness = 4.0;
