@@ -16,6 +16,7 @@
 #include "skelconv/mesh/mesh_reader.hpp"
 #include "skelconv/reconstruct/branch_graph.hpp"
 #include "skelconv/reconstruct/bspline.hpp"
+#include "skelconv/reconstruct/medial_graph.hpp"
 #include "skelconv/reconstruct/pavlidis.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
 
@@ -75,6 +76,25 @@ TEST(Pruning, ContactSpan) {
   EXPECT_EQ(report.vertices_removed, 1u);
   ASSERT_EQ(graph.vertices.size(), 1u);
   EXPECT_EQ(graph.vertices[0].radius, 1.0);
+}
+
+// Flat faces sampled on a grid give Delaunay slivers, four samples within
+// rounding of a plane, whose circumcentre cannot be computed in double (CGAL
+// asserts on them where its assertions are on, and returns an infinite or
+// arbitrary point where they are off). The graph leaves them out: every
+// Voronoi vertex it keeps is finite and equidistant from its four samples.
+TEST(MedialGraph, FlatFacesGiveFiniteEquidistantVertices) {
+  for (const char* name : {"tetrahedron.obj", "cube.ply"}) {
+    const MedialGraph graph = medial_graph(read_mesh(std::string(SKELCONV_TEST_DATA) + "/reconstruct/" + name));
+    ASSERT_FALSE(graph.vertices.empty()) << name;
+    for (const MedialVertex& v : graph.vertices) {
+      ASSERT_TRUE(v.centre.allFinite() && std::isfinite(v.radius)) << name;
+      for (int k = 1; k < 4; ++k) {
+        const double r = (v.centre - graph.samples[std::size_t(v.samples[k])]).norm();
+        ASSERT_NEAR(r, v.radius, 1e-9 * (1 + v.radius)) << name;
+      }
+    }
+  }
 }
 
 // Pavlidis on (0,0) (1,0.1) (2,−0.1) (3,0.5) (4,0), radius 0 everywhere.

@@ -2,6 +2,8 @@
 // to this translation unit (its own OBJECT library, src/CMakeLists.txt).
 #include "skelconv/reconstruct/medial_graph.hpp"
 
+#include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -40,6 +42,27 @@ void check_surface(const TriangleMesh& surface, const std::vector<Vec3>& samples
   }
 }
 
+/// Whether a cell's circumcentre (its Voronoi vertex) can be constructed in
+/// double. The construction divides by the orientation determinant of the
+/// cell's edge vectors AB, AC, AD. For a sliver, four samples within rounding
+/// of a plane (a flat face sampled on a grid gives many), that determinant
+/// is below its own rounding error, a few ε |AB||AC||AD|: it rounds to noise
+/// or to 0, and the centre to an arbitrary or infinite point (CGAL asserts
+/// on it where assertions are on). Such cells are left out of the graph: the
+/// Voronoi vertex of a sliver lies far off its face or nowhere definite, and
+/// it is the well-shaped cells around it that carry the medial axis.
+bool circumcentre_is_computable(const Delaunay::Cell_handle& cell) {
+  const Point& p = cell->vertex(0)->point();
+  auto edge = [&](int k) {
+    const Point& q = cell->vertex(k)->point();
+    return Vec3(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
+  };
+  const Vec3 a = edge(1), b = edge(2), c = edge(3);
+  const double det = a.dot(b.cross(c));
+  // 64 ε covers the determinant's rounding (about 10 ε of |a||b||c|) with margin.
+  return std::abs(det) > 64 * std::numeric_limits<double>::epsilon() * a.norm() * b.norm() * c.norm();
+}
+
 }  // namespace
 
 MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples) {
@@ -61,6 +84,7 @@ MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_sample
   std::map<Delaunay::Cell_handle, std::int32_t> number;  // lookup only: never iterated
   std::vector<Delaunay::Cell_handle> inner_cells;
   for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end(); ++cell) {
+    if (!circumcentre_is_computable(cell)) continue;
     const Point centre = delaunay.dual(cell);
     if (side(centre) != CGAL::ON_BOUNDED_SIDE) continue;
     MedialVertex vertex;
