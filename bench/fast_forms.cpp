@@ -37,4 +37,12 @@ const FastForm* find_fast_form(const KernelKey& key) {
   return nullptr;
 }
 
+std::optional<FilterPaths> filter_paths(const KernelKey& key) {
+  const FilteredSegmentKernel* k = FilteredSegmentKernel::find(key.family, key.degree, key.weight_degree);
+  const KernelRef* ref = find_kernel(key.family, key.degree, key.weight_degree);
+  const FastForm* fast = find_fast_form(key);
+  if (!k || !k->has_fast_form() || !ref || !fast) return std::nullopt;
+  return FilterPaths{k, ref, fast};
+}
+
 }  // namespace skelconv::bench

@@ -5,8 +5,11 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "bench_support.hpp"
+
+#include <skelconv/kernels/segment_filter.hpp>
 
 namespace skelconv::bench {
 
@@ -17,5 +20,15 @@ struct FastForm {
 
 /// nullptr where the kernel is not among detailed_kernels or has no fast form.
 const FastForm* find_fast_form(const KernelKey& key);
+
+/// The three paths the filter is compared on, for one detailed kernel: the
+/// filter (its stable function is the fallback), the bench's table entry
+/// (name), and the fast form alone; std::nullopt where one is missing.
+struct FilterPaths {
+  const FilteredSegmentKernel* filtered;
+  const KernelRef* ref;
+  const FastForm* fast;
+};
+std::optional<FilterPaths> filter_paths(const KernelKey& key);
 
 }  // namespace skelconv::bench

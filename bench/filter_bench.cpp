@@ -91,10 +91,9 @@ void bench_eval(benchmark::State& state, const FilteredSegmentKernel* k, const F
 
 void register_all() {
   for (const KernelKey& n : detailed_kernels) {
-    const FilteredSegmentKernel* k = FilteredSegmentKernel::find(n.family, n.degree, n.weight_degree);
-    const KernelRef* ref = find_kernel(n.family, n.degree, n.weight_degree);
-    const FastForm* fast = find_fast_form(n);
-    if (!k || !k->has_fast_form() || !ref || !fast) continue;
+    const std::optional<FilterPaths> paths = filter_paths(n);
+    if (!paths) continue;
+    const auto [k, ref, fast] = *paths;
     for (const Band& band : kBands) {
       const std::vector<Input> in = band_inputs(n.family, band);
       const std::string base = "filter/" + ref->name + "/" + band.name + "/";

@@ -59,10 +59,9 @@ void region(const std::string& name, std::size_t n, Body body) {
 /// evaluation against the fast form's counted operations.
 void filter_regions() {
   for (const KernelKey& key : detailed_kernels) {
-    const FilteredSegmentKernel* k = FilteredSegmentKernel::find(key.family, key.degree, key.weight_degree);
-    const KernelRef* ref = find_kernel(key.family, key.degree, key.weight_degree);
-    const FastForm* fast = find_fast_form(key);
-    if (!k || !k->has_fast_form() || !ref || !fast) continue;
+    const std::optional<FilterPaths> paths = filter_paths(key);
+    if (!paths) continue;
+    const auto [k, ref, fast] = *paths;
     const std::vector<Input> in = make_inputs(key.family, kernel_points);
     const std::string base = "filter/" + ref->name + "/";
     Vec g;
