@@ -7,7 +7,9 @@
 // With --radius: the smallest distance |z| of the poles from the interval's
 // midpoint, in any direction (segment_moments_beyond_end's far case).
 // Not built by CMake (a derivation, a few minutes):
-//   g++ -O2 -std=c++20 bench/tools/far_field_bound.cpp -o /tmp/far_field_bound && /tmp/far_field_bound [--radius]
+//   g++ -O2 -std=c++20 bench/tools/far_field_bound.cpp -o /tmp/far_field_bound && /tmp/far_field_bound [--radius] [--panels]
+// --panels widens the weights and orders to the SCALIS segments' Gauss
+// panels (gauss_moments.hpp, panel_rule_nodes).
 #include <boost/math/quadrature/gauss.hpp>
 
 #include <algorithm>
@@ -52,15 +54,21 @@ double relative_bound(int N, double y, double x_star, int k, int m) {
   return best;
 }
 
-/// The worst case over pole positions, weights k ≤ 4 and orders m ≤ 18.
+/// The weights t^k and pole orders m/2 covered: the extremes of the
+/// classical kernels' far field (k ≤ 4, m ≤ 18), or with --panels also the
+/// SCALIS segments' Gauss panels (k ≤ 10: weights τ(t)^(i−1) and ∇f, m ≤ 12).
+std::vector<int> weights_k = {0, 1, 4};
+std::vector<int> orders_m = {1, 2, 3, 18};
+
+/// The worst case over pole positions, weights and orders.
 double worst(int N, double y) {
   std::vector<double> positions;
   for (int i = -12; i <= 12; ++i) positions.push_back(i * 0.5);
   for (double v : {-20.0, 20.0, -100.0, 100.0}) positions.push_back(v);
   double w = 0;
   for (double x_star : positions)
-    for (int k : {0, 1, 4})
-      for (int m : {1, 2, 3, 18}) w = std::max(w, relative_bound(N, y, x_star, k, m));
+    for (int k : weights_k)
+      for (int m : orders_m) w = std::max(w, relative_bound(N, y, x_star, k, m));
   return w;
 }
 
@@ -71,9 +79,8 @@ double worst_at_radius(int N, double radius) {
   double w = 0;
   for (int j = 0; j <= 12; ++j) {
     const double phi = j == 0 ? 1e-3 : std::numbers::pi / 2 * j / 12;
-    for (int k : {0, 1, 4})
-      for (int m : {1, 2, 3, 18})
-        w = std::max(w, relative_bound(N, radius * std::sin(phi), radius * std::cos(phi), k, m));
+    for (int k : weights_k)
+      for (int m : orders_m) w = std::max(w, relative_bound(N, radius * std::sin(phi), radius * std::cos(phi), k, m));
   }
   return w;
 }
@@ -81,7 +88,15 @@ double worst_at_radius(int N, double radius) {
 
 int main(int argc, char** argv) {
   const double target = std::ldexp(1.0, -55);  // a quarter of double's rounding unit
-  const bool by_radius = argc > 1 && std::string(argv[1]) == "--radius";
+  bool by_radius = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string option = argv[i];
+    if (option == "--radius") by_radius = true;
+    if (option == "--panels") {
+      weights_k = {0, 1, 4, 10};
+      orders_m = {1, 2, 3, 12, 18};
+    }
+  }
   for (int N : {7, 10, 15, 20}) {
     double lo = 1.01, hi = 1000;  // bisection in log
     for (int step = 0; step < 14; ++step) {

@@ -228,6 +228,20 @@ inline int rule_nodes<SimdLanes>(const SimdLanes& x, double x7, double x10, doub
   return nodes;
 }
 
+/// The node count of a SCALIS Gauss panel (gauss_moments.hpp), likewise the
+/// most any active lane needs.
+template <>
+inline int panel_nodes<SimdLanes>(const SimdLanes& x_star2, const SimdLanes& y2, int k_max) {
+  const simd::Divergence& divergence = *simd::HWY_NAMESPACE::current_divergence;
+  alignas(64) double x[simd::max_lanes], y[simd::max_lanes];
+  hwy::HWY_NAMESPACE::Store(x_star2.v, simd::HWY_NAMESPACE::LaneTag(), x);
+  hwy::HWY_NAMESPACE::Store(y2.v, simd::HWY_NAMESPACE::LaneTag(), y);
+  int nodes = 0;
+  for (std::size_t k = 0; k < simd::HWY_NAMESPACE::lane_count(); ++k)
+    if (divergence.active() >> k & 1u) nodes = std::max(nodes, panel_nodes<double>(x[k], y[k], k_max));
+  return nodes;
+}
+
 /// SCALIS segments' Gauss panels (gauss_moments.hpp) with the pole so close
 /// to the segment that q underflows: the active lanes go to the scalar path,
 /// which reports the error.

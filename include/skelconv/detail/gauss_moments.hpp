@@ -30,6 +30,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -82,50 +83,78 @@ struct MomentNode {
   T jacobian;
 };
 
+/// The sum of positive terms in four interleaved partial sums: the adds of
+/// one partial sum do not wait for the others', and the result is within
+/// N ε of the exact sum like any order of summation of positive terms.
+template <class T, std::size_t N>
+T sum_of_positive(const std::array<T, N>& terms) {
+  T s0(0), s1(0), s2(0), s3(0);
+  std::size_t j = 0;
+  for (; j + 4 <= N; j += 4) {
+    s0 += terms[j];
+    s1 += terms[j + 1];
+    s2 += terms[j + 2];
+    s3 += terms[j + 3];
+  }
+  for (; j < N; ++j) s0 += terms[j];
+  return (s0 + s1) + (s2 + s3);
+}
+
 /// Adds the N-point Gauss–Legendre rule over x ∈ [−1, 1] (after `map`) for
 /// M_{k,m} = ∫ t^k q^(−m/2) dt, k = 0…k_max, m = m_lo, m_lo + 2, …, m_hi
 /// (m may be negative: q^(|m|/2) for compact kernels, where q ≥ 0), to
 /// out[((m − m_lo)/2)(k_max + 1) + k]; node_at(x) gives the MomentNode at x.
+///
+/// The nodes are placed first, then each moment is one sum over them: the
+/// node loops have a compile-time length and no dependence between nodes,
+/// so their divisions and products overlap, and the sums are accumulated in
+/// registers rather than in `out`.
 template <class T, unsigned N, NodeMap map, class NodeAt>
 void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
   using std::sqrt;
   using Rule = boost::math::quadrature::gauss<T, N>;
-  const int levels = (m_hi - m_lo) / 2 + 1;
-  const int per_level = k_max + 1;
-  // One node t with Gauss weight g adds g t^k q^(−m/2) dt/dx to every moment.
-  auto add_node = [&](const T& x, const T& g) {
-    const MomentNode<T> node = node_at(x);
-    const T& t = node.t;
-    const T& q = node.q;
-    // q^(−m_hi/2) from integer powers of q (even m) or of √q (odd m), then
-    // × q per level down to m_lo: no division by a q that may be 0 at a
-    // clipped end.
-    const bool even = m_hi % 2 == 0;
-    const T root = even ? q : sqrt(q);
-    const T base = m_hi <= 0 ? root : T(1) / root;
-    const int power = (m_hi <= 0 ? -m_hi : m_hi) / (even ? 2 : 1);
-    T level_value = node.jacobian * g;
-    for (int j = 0; j < power; ++j) level_value *= base;
-    for (int l = levels - 1; l >= 0; --l) {
-      T term = level_value;
-      for (int k = 0; k <= k_max; ++k) {
-        out[l * per_level + k] += term;
-        term *= t;
-      }
-      level_value *= q;
-    }
-  };
   const auto& x = map == NodeMap::linear ? Rule::abscissa() : sine_mapped_rule<T, N>().abscissa;
   const auto& g = map == NodeMap::linear ? Rule::weights() : sine_mapped_rule<T, N>().weights;
+  // t, q and the weight g dt/dx at the nodes: the middle one (odd N), then ±x_j.
+  std::array<T, N> t, q, weight;
+  unsigned n = 0;
+  auto place = [&](const T& xj, const T& gj) {
+    const MomentNode<T> node = node_at(xj);
+    t[n] = node.t;
+    q[n] = node.q;
+    weight[n] = node.jacobian * gj;
+    ++n;
+  };
   unsigned first = 0;
   if (N % 2 == 1) {
-    add_node(T(0), g[0]);
+    place(T(0), g[0]);
     first = 1;
   }
-#pragma GCC unroll 16
   for (unsigned j = first; j < x.size(); ++j) {
-    add_node(x[j], g[j]);
-    add_node(-x[j], g[j]);
+    place(x[j], g[j]);
+    place(-x[j], g[j]);
+  }
+  // weight × q^(−m_hi/2) from integer powers of q (even m) or of √q (odd
+  // m), then × q per level down to m_lo: no division by a q that may be 0
+  // at a clipped end.
+  const bool even = m_hi % 2 == 0;
+  const int power = (m_hi <= 0 ? -m_hi : m_hi) / (even ? 2 : 1);
+  std::array<T, N> base;
+  for (unsigned j = 0; j < N; ++j) {
+    const T root = even ? q[j] : sqrt(q[j]);
+    base[j] = m_hi <= 0 ? root : T(1) / root;
+  }
+  for (int i = 0; i < power; ++i)
+    for (unsigned j = 0; j < N; ++j) weight[j] *= base[j];
+  const int levels = (m_hi - m_lo) / 2 + 1;
+  const int per_level = k_max + 1;
+  for (int l = levels - 1; l >= 0; --l) {
+    std::array<T, N> term = weight;
+    for (int k = 0; k <= k_max; ++k) {
+      out[l * per_level + k] += sum_of_positive(term);
+      for (unsigned j = 0; j < N; ++j) term[j] *= t[j];
+    }
+    for (unsigned j = 0; j < N; ++j) weight[j] *= q[j];
   }
 }
 
@@ -377,6 +406,63 @@ void pole_too_close(const T& distance) {
 }
 }  // namespace detail
 
+/// The SCALIS panels' node counts when the weights go up to t^10
+/// (k_max > 4: kernels of degree 6 and above with ∇f), derived as the
+/// constants above with weights k ≤ 10 and orders m ≤ 18
+/// (bench/tools/far_field_bound.cpp --panels, and --panels --radius):
+/// y ≥ 161.8 (N = 7), 11.46 (10), 3.28 (15); |z| ≥ 461.6 (7), 27.2
+/// (10), 6.21 (15), 3.32 (20); rounded up here. With k_max ≤ 4 the
+/// classical constants above hold (their weights and orders cover the
+/// SCALIS panels' m ≤ 12).
+inline constexpr double panel_high_weight_min_y_7_nodes = 162.0;
+inline constexpr double panel_high_weight_min_y_10_nodes = 11.5;
+inline constexpr double panel_high_weight_min_y_15_nodes = 3.3;
+inline constexpr double panel_high_weight_min_z_7_nodes = 462.0;
+inline constexpr double panel_high_weight_min_z_10_nodes = 27.3;
+inline constexpr double panel_high_weight_min_z_15_nodes = 6.3;
+
+namespace detail {
+/// The fewest nodes (7, 10, 15, 20) for a Gauss panel whose poles lie at
+/// x* ± i y in the panel's own coordinate x ∈ [−1, 1], from x*² and y²: the
+/// imaginary-distance bound (far_field_min_y_*, valid for |x*| ≤ 6, the
+/// positions it was derived for) or the distance bound (beyond_end_min_z_*,
+/// any direction), whichever allows fewer. More nodes than needed only make
+/// the rule more exact. The vector batches (src/simd/lanes-inl.hpp)
+/// specialise it to the largest count any active lane needs.
+template <class T>
+int panel_nodes(const T& x_star2, const T& y2, int k_max) {
+  const bool high = k_max > 4;
+  auto sq = [](double v) { return v * v; };
+  const int by_height =
+      x_star2 <= T(36)
+          ? rule_nodes(y2, sq(high ? panel_high_weight_min_y_7_nodes : far_field_min_y_7_nodes),
+                       sq(high ? panel_high_weight_min_y_10_nodes : far_field_min_y_10_nodes),
+                       sq(high ? panel_high_weight_min_y_15_nodes : far_field_min_y_15_nodes), 20)
+          : 20;
+  const int by_distance = rule_nodes(x_star2 + y2, sq(high ? panel_high_weight_min_z_7_nodes : beyond_end_min_z_7_nodes),
+                                     sq(high ? panel_high_weight_min_z_10_nodes : beyond_end_min_z_10_nodes),
+                                     sq(high ? panel_high_weight_min_z_15_nodes : beyond_end_min_z_15_nodes), 20);
+  return by_height < by_distance ? by_height : by_distance;
+}
+
+/// add_moments_at_nodes with `nodes` nodes (7, 10, 15, 20) in double; types
+/// wider than double keep gauss_panel_points<T>() (the constants are for
+/// double's rounding unit).
+template <class T, class NodeAt>
+void add_moments_with_nodes(int nodes, int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
+  if constexpr (gauss_panel_points<T>() != 20) {
+    add_moments_at_nodes<T, gauss_panel_points<T>(), NodeMap::linear>(m_lo, m_hi, k_max, node_at, out);
+  } else {
+    switch (nodes) {
+      case 7: add_moments_at_nodes<T, 7, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      case 10: add_moments_at_nodes<T, 10, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      case 15: add_moments_at_nodes<T, 15, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      default: add_moments_at_nodes<T, 20, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+    }
+  }
+}
+}  // namespace detail
+
 /// Writes M_{k,m} = ∫_0^1 t^k q^(−m/2) dt (k = 0…k_max, m = m_lo, …, m_hi,
 /// m > 0) to out[((m − m_lo)/2)(k_max + 1) + k] for inverse and Cauchy
 /// kernels, by Gauss–Legendre on panels graded towards the roots
@@ -407,7 +493,12 @@ void pole_too_close(const T& distance) {
 ///    s ≥ 2δ(x)/0.9δ(x));
 ///  * δ grows by a factor ≥ 1.3 a panel, so a pole at distance ε from the
 ///    segment costs ~log(1/ε)/log 1.3 panels per side (in practice δ nearly
-///    doubles); one or two panels when P is at least |AB|/2 from the line.
+///    doubles); one or two panels when P is at least |AB|/2 from the line;
+///  * an accepted panel takes gauss_panel_points<T>() nodes (20 in
+///    double), or in double fewer (15, 10, 7) where the poles lie far
+///    enough from that panel for the bound of the far-field rule
+///    (detail::panel_nodes): the panels far from the pole, and every
+///    panel when P is far from the segment.
 /// If P is on the segment (D = 0, t* in [0, 1]) the integral diverges: +∞.
 /// If q underflows at the pivot (the pole closer than ~1e-154 |AB|, P on
 /// the line beyond an end), NotConvergedError (detail::pole_too_close).
@@ -416,7 +507,6 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
                                   const T& D, T* out) {
   using std::abs;
   using std::sqrt;
-  constexpr unsigned N = gauss_panel_points<T>();
   const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
   for (int i = 0; i < count; ++i) out[i] = T(0);
   const T zero(0), one(1);
@@ -430,17 +520,21 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
     return (s * s + D) / a;
   };
   auto delta = [&](const T& o) { return sqrt(q_at(o) / a); };
-  // The N-point rule on the panel of offsets [lo, hi].
+  // The rule on the panel of offsets [lo, hi], with as few nodes as the
+  // poles' position relative to the panel allows (detail::panel_nodes).
+  const T pole_offset = t_star - pivot;
+  const T pole_height2 = D / (a * a);
   auto add_panel = [&](const T& lo, const T& hi) {
     const T half_width = (hi - lo) / 2;
     const T middle = (lo + hi) / 2;
-    add_moments_at_nodes<T, N, NodeMap::linear>(
-        m_lo, m_hi, k_max,
-        [&](const T& x) {
-          const T o = middle + half_width * x;
-          return MomentNode<T>{pivot + o, q_at(o), half_width};
-        },
-        out);
+    auto node_at = [&](const T& x) {
+      const T o = middle + half_width * x;
+      return MomentNode<T>{pivot + o, q_at(o), half_width};
+    };
+    const T width2 = half_width * half_width;
+    const T pole_along = pole_offset - middle;
+    const int nodes = detail::panel_nodes<T>(pole_along * pole_along / width2, pole_height2 / width2, k_max);
+    detail::add_moments_with_nodes<T>(nodes, m_lo, m_hi, k_max, node_at, out);
   };
   const T offset_A = -pivot, offset_B = one - pivot;  // exact for pivot ≥ 1/2 (Sterbenz), else to ε
   const T s_min = T(17) / T(8);
