@@ -6,9 +6,14 @@
 #include "grid_surface_mesher.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
+#include <unordered_set>
+#include <vector>
 
 #include <stdexcept>
 
@@ -94,19 +99,146 @@ void fill_region(const GridSurfaceRequest& request, Accessor& accessor, const op
       for (int k = first.z(); k <= last.z(); k += half) fill_region(request, accessor, {i, j, k}, count, half);
 }
 
-/// The level sampled on the grid nodes, as an OpenVDB float grid whose
-/// index (i, j, k) is the world point box.lo + voxel (i, j, k). Values are
-/// clamped to ±float max (an inverse kernel's skeleton gives −inf).
-openvdb::FloatGrid::Ptr sample(const GridSurfaceRequest& request, const openvdb::Coord& count) {
-  const float limit = std::numeric_limits<float>::max();
-  openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(/*background: outside*/ limit);
+/// An empty OpenVDB float grid whose index (i, j, k) is the world point
+/// box.lo + voxel (i, j, k), background +float max (outside).
+openvdb::FloatGrid::Ptr empty_grid(const GridSurfaceRequest& request) {
+  openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(/*background: outside*/ std::numeric_limits<float>::max());
   openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(request.voxel);
   transform->postTranslate(openvdb::Vec3d(request.box.lo.x(), request.box.lo.y(), request.box.lo.z()));
   grid->setTransform(transform);
+  return grid;
+}
+
+/// The level sampled on the grid nodes, as an OpenVDB float grid (as
+/// empty_grid). Values are clamped to ±float max (an inverse kernel's
+/// skeleton gives −inf).
+openvdb::FloatGrid::Ptr sample(const GridSurfaceRequest& request, const openvdb::Coord& count) {
+  openvdb::FloatGrid::Ptr grid = empty_grid(request);
   auto accessor = grid->getAccessor();
   int side = block;
   while (side < std::max({count.x(), count.y(), count.z()})) side *= 2;
   fill_region(request, accessor, openvdb::Coord(0, 0, 0), count, side);
+  return grid;
+}
+
+/// The sampling from seeds (GridSurfaceRequest::seeds): the crossing cells,
+/// those whose corners change sign, found by continuation, with every
+/// corner of each sampled; then the sign of every other node.
+class SurfaceCells {
+ public:
+  SurfaceCells(const GridSurfaceRequest& request, openvdb::FloatGrid& grid, const openvdb::Coord& count)
+      : request_(request), accessor_(grid.getAccessor()), count_(count) {}
+
+  /// Samples the crossing cells reached from the cells around each seed.
+  void sample_from_seeds() {
+    for (const Vec3& seed : request_.seeds) {
+      const Vec3 at = (seed - request_.box.lo) / request_.voxel;
+      const openvdb::Coord cell(int(std::floor(at.x())), int(std::floor(at.y())), int(std::floor(at.z())));
+      // The seed's own cell may have corners of one sign (the surface dips
+      // into it between them); then a neighbour's corners change sign.
+      for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+          for (int k = -1; k <= 1; ++k) visit(cell.offsetBy(i, j, k));
+    }
+    while (!queue_.empty()) {
+      const openvdb::Coord cell = queue_.back();
+      queue_.pop_back();
+      spread_from(cell);
+    }
+  }
+
+  /// Gives every node not sampled the sign of the node below it (−z), the
+  /// nodes on the box's bottom face outside (+float max, the background).
+  void fill_signs() {
+    const float limit = std::numeric_limits<float>::max();
+    for (int i = 0; i < count_.x(); ++i) {
+      for (int j = 0; j < count_.y(); ++j) {
+        bool inside = false;
+        for (int k = 0; k < count_.z(); ++k) {
+          const openvdb::Coord node(i, j, k);
+          float value;
+          if (accessor_.probeValue(node, value)) {
+            inside = value < 0;
+          } else if (inside) {
+            accessor_.setValue(node, -limit);
+          }
+        }
+      }
+    }
+  }
+
+  std::size_t cells() const { return visited_.size(); }
+
+ private:
+  /// The corner values of a cell, sampled where not yet.
+  std::array<float, 8> corners(const openvdb::Coord& cell) {
+    std::array<float, 8> values;
+    for (int c = 0; c < 8; ++c) values[c] = node_value(cell.offsetBy(c & 1, c >> 1 & 1, c >> 2 & 1));
+    return values;
+  }
+
+  float node_value(const openvdb::Coord& node) {
+    float value;
+    if (accessor_.probeValue(node, value)) return value;
+    const float limit = std::numeric_limits<float>::max();
+    const Vec3 p = request_.box.lo + request_.voxel * Vec3(node.x(), node.y(), node.z());
+    value = float(std::clamp(request_.level(p), -double(limit), double(limit)));
+    accessor_.setValue(node, value);
+    return value;
+  }
+
+  static bool changes_sign(std::span<const float> values) {
+    const bool first = values[0] < 0;
+    return std::any_of(values.begin() + 1, values.end(), [first](float v) { return (v < 0) != first; });
+  }
+
+  /// Samples a cell the first time it is met; queues it if it crosses.
+  void visit(const openvdb::Coord& cell) {
+    if (cell.x() < 0 || cell.y() < 0 || cell.z() < 0 || cell.x() >= count_.x() - 1 || cell.y() >= count_.y() - 1 ||
+        cell.z() >= count_.z() - 1)
+      return;
+    if (!visited_.insert(key(cell)).second) return;
+    const std::array<float, 8> values = corners(cell);
+    if (changes_sign(values)) queue_.push_back(cell);
+  }
+
+  /// Visits the neighbours across the faces of a crossing cell whose four
+  /// corners change sign (corner c has offsets (c & 1, c >> 1 & 1, c >> 2 & 1)).
+  void spread_from(const openvdb::Coord& cell) {
+    const std::array<float, 8> values = corners(cell);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int side = 0; side <= 1; ++side) {
+        std::array<float, 4> face;
+        int n = 0;
+        for (int c = 0; c < 8; ++c)
+          if ((c >> axis & 1) == side) face[n++] = values[c];
+        if (!changes_sign(face)) continue;
+        openvdb::Coord neighbour = cell;
+        neighbour[axis] += side == 1 ? 1 : -1;
+        visit(neighbour);
+      }
+    }
+  }
+
+  static std::uint64_t key(const openvdb::Coord& cell) {
+    return std::uint64_t(std::uint32_t(cell.x())) << 42 | std::uint64_t(std::uint32_t(cell.y())) << 21 |
+           std::uint64_t(std::uint32_t(cell.z()));
+  }
+
+  const GridSurfaceRequest& request_;
+  openvdb::FloatGrid::Accessor accessor_;
+  openvdb::Coord count_;
+  std::unordered_set<std::uint64_t> visited_;
+  std::vector<openvdb::Coord> queue_;
+};
+
+/// The level on the crossing cells reached from the seeds, every other node
+/// ±float max by its sign (SurfaceCells).
+openvdb::FloatGrid::Ptr sample_surface_cells(const GridSurfaceRequest& request, const openvdb::Coord& count) {
+  openvdb::FloatGrid::Ptr grid = empty_grid(request);
+  SurfaceCells cells(request, *grid, count);
+  cells.sample_from_seeds();
+  cells.fill_signs();
   return grid;
 }
 
@@ -118,7 +250,7 @@ TriangleMesh openvdb_surface_mesh(const GridSurfaceRequest& request) {
   const openvdb::Coord count(int(std::ceil(extent.x() / request.voxel)) + 1,
                              int(std::ceil(extent.y() / request.voxel)) + 1,
                              int(std::ceil(extent.z() / request.voxel)) + 1);
-  const openvdb::FloatGrid::Ptr grid = sample(request, count);
+  const openvdb::FloatGrid::Ptr grid = request.seeds.empty() ? sample(request, count) : sample_surface_cells(request, count);
 
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;

@@ -4,9 +4,10 @@
 // are large).
 //
 // The level function is sampled at the nodes of a uniform grid of spacing
-// `voxel` over the box (except in blocks outside a compact field's support,
-// which hold a known constant, and blocks where `sign_over` proves the
-// surface absent: a narrow band around the surface), stored in an OpenVDB FloatGrid, and its zero set is
+// `voxel` over the box (only the cells the surface crosses, found from
+// seeds on it; or the whole box except blocks outside a compact field's
+// support, which hold a known constant, and blocks where `sign_over` proves
+// the surface absent: a narrow band around the surface), stored in an OpenVDB FloatGrid, and its zero set is
 // extracted with openvdb::tools::volumeToMesh (no adaptivity: quads of about
 // one voxel, each split into two triangles). No guarantee of topology
 // beyond the grid's resolution: features thinner than a voxel may be lost
@@ -40,6 +41,17 @@ struct GridSurfaceRequest {
   /// volumeToMesh's output (adaptivity 0), and no such cell touches them,
   /// so the mesh is the dense sampling's.
   std::function<int(const Eigen::AlignedBox3d&)> sign_over;
+  /// Optional: points on the surface, at least one on every component to
+  /// mesh. When given, the grid is not swept: only the cells whose corners
+  /// change sign are sampled, found by continuation from the cells holding
+  /// the seeds (each such cell's neighbours across a face whose corners
+  /// change sign change sign too). Every other node takes the sign of its
+  /// neighbour below it, from the box's bottom face (outside) up: a node
+  /// differs in sign from that neighbour only across an edge whose cells all
+  /// change sign, whose corners are all sampled. The mesh is then the dense
+  /// sampling's on every component a seed reaches; a component no seed
+  /// reaches is left out (support_boxes and sign_over are not used).
+  std::vector<Vec3> seeds;
 };
 
 /// Vertices and triangles (normals pointing out of {level < 0}); vertices

@@ -149,8 +149,8 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   run.size = options.size.value_or(run.box.diagonal() / 50);
   run.distance = options.distance.value_or(run.size / 10);
   check_output_size(run.box, run.size, options);
-  // The grid method does not need the seeds, but computing them is what
-  // tells "no surface at this iso" apart from a surface the grid misses.
+  // The seeds start CGAL's refinement and the grid's continuation; finding
+  // none tells "no surface at this iso" apart from a surface a mesher misses.
   const std::vector<Vec3> seeds = surface_seeds(metered, iso, run.box, {.spacing = run.size});
   if (seeds.empty()) {
     throw EvaluationError(fmt::format("no surface point found by the rays from the skeleton at iso {}", iso));
@@ -167,7 +167,9 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                                                        .support_boxes = field.support_boxes ? &*field.support_boxes
                                                                                             : nullptr,
                                                        .empty_level = iso - 0.0,  // level(p) where f(p) = 0
-                                                       .sign_over = level_sign(metered, iso)})
+                                                       .sign_over = level_sign(metered, iso),
+                                                       .seeds = options.grid_from_seeds ? seeds
+                                                                                        : std::vector<Vec3>{}})
                           : detail::cgal_surface_mesh({
                                 .level = level,
                                 .box = run.box,

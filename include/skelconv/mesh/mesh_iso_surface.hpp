@@ -50,6 +50,11 @@ struct MeshOptions {
   std::optional<double> distance;
   /// Smallest facet angle in degrees; CGAL guarantees termination up to 30.
   double facet_angle = 30.0;
+  /// The grid method samples only the cells the surface crosses, found by
+  /// continuation from the seeds (docs/mesh.md): a component of the surface
+  /// that no seed reaches is then left out, as with CGAL. false: the whole
+  /// grid, skipping only what the supports and enclosures prove empty.
+  bool grid_from_seeds = true;
   /// Every vertex ends with |f − iso| / |∇f| ≤ projection_tolerance × the
   /// mesh's bounding-box diagonal.
   double projection_tolerance = 1e-9;
