@@ -46,13 +46,21 @@ float skelconv_asinh(float x) {
 //   v(t) = (w0 + w1 t + w2 t^2 + w3 t^3) tau(t)^m, tau(t) = tau0 (1 - t) + tau1 t,
 //   q(t) = alpha |p - G(t)|^2 + beta + gamma tau(t)^2,
 // by a Gauss-Legendre rule of 24 nodes on each side of the point of [lo, hi]
-// nearest to the roots of q, in the variable s = h sinh(u) (n > 0), or of
-// 24 nodes on [lo, hi] after t = mid + half sin(pi x / 2) (n < 0, compact).
+// nearest to the roots of q, in the variable s = h sinh(u) (n > 0; s itself
+// where the side is shorter than h), or of 24 nodes on [lo, hi] after
+// t = mid + half sin(pi x / 2) (n < 0, compact).
 // Why this rule and how accurate: codegen/glsl_rule.cpp, docs/view.md.
 const float skelconv_rule_x[12] = float[12](0.064056893, 0.191118867, 0.315042680, 0.433793508,
     0.545421471, 0.648093652, 0.740124192, 0.820001986, 0.886415527, 0.938274552, 0.974728556, 0.995187220);
 const float skelconv_rule_w[12] = float[12](0.127938195, 0.125837456, 0.121670473, 0.115505668,
     0.107444270, 0.097618652, 0.086190162, 0.073346481, 0.059298585, 0.044277439, 0.028531389, 0.012341230);
+// The same after the sine map: sin(pi x / 2) and w (pi / 2) cos(pi x / 2)
+// (tabulated: GLSL's sin and cos are only required to be within 2^-11).
+const float skelconv_rule_sine_x[12] = float[12](0.100450630, 0.295719689, 0.474915389, 0.629881979,
+    0.755715552, 0.851071730, 0.917832084, 0.960294556, 0.984125673, 0.995303244, 0.999212206, 0.999971424);
+const float skelconv_rule_sine_w[12] = float[12](1.999483759e-01, 1.888243989e-01, 1.681912010e-01,
+    1.409195891e-01, 1.105294795e-01, 8.051056606e-02, 5.374449648e-02, 3.214288518e-02, 1.653089819e-02,
+    6.732956754e-03, 1.778601508e-03, 1.465514320e-04);
 
 // q^(-n/2) for an integer n and q >= 0 (n < 0: q^(|n|/2)): binary powering
 // of 1/q or q, one square root for odd n.
@@ -93,9 +101,9 @@ float skelconv_segment_rule(vec3 a, vec3 b, vec3 p, vec4 w, float tau0, float ta
     vec3 mp = ap - mid * ab;
     for (int j = 0; j < 12; ++j) {
       for (int side = -1; side <= 1; side += 2) {
-        float x = 1.5707963 * float(side) * skelconv_rule_x[j];
-        float g = 1.5707963 * half_width * cos(x) * skelconv_rule_w[j];
-        skelconv_rule_node(mp, ab, mid, half_width * sin(x), g, w, tau0, tau1, m, alpha, beta, gamma, n, f, gsum);
+        float s = float(side) * half_width * skelconv_rule_sine_x[j];
+        skelconv_rule_node(mp, ab, mid, s, half_width * skelconv_rule_sine_w[j], w, tau0, tau1, m, alpha, beta, gamma,
+                           n, f, gsum);
       }
     }
   } else {
@@ -114,13 +122,17 @@ float skelconv_segment_rule(vec3 a, vec3 b, vec3 p, vec4 w, float tau0, float ta
     for (int side = -1; side <= 1; side += 2) {
       float span = side < 0 ? c - lo : hi - c;
       if (!(span > 0.0)) continue;
-      float u_max = skelconv_asinh(span / h);
+      // The roots at least the side's length away: no map (GLSL's log,
+      // sinh and cosh are only required to be accurate to ~2^-21 absolute
+      // near 0, too little for a relative 1e-6). Else u_max >= asinh(1).
+      bool linear = span <= h;
+      float u_max = linear ? span : skelconv_asinh(span / h);
       for (int j = 0; j < 12; ++j) {
         for (int k = -1; k <= 1; k += 2) {
           float u = 0.5 * u_max * (1.0 + float(k) * skelconv_rule_x[j]);
-          float g = 0.5 * u_max * h * cosh(u) * skelconv_rule_w[j];
-          skelconv_rule_node(cp, ab, c, float(side) * h * sinh(u), g, w, tau0, tau1, m, alpha, beta, gamma, n, f,
-                             gsum);
+          float s = linear ? u : h * sinh(u);
+          float g = 0.5 * u_max * (linear ? 1.0 : h * cosh(u)) * skelconv_rule_w[j];
+          skelconv_rule_node(cp, ab, c, float(side) * s, g, w, tau0, tau1, m, alpha, beta, gamma, n, f, gsum);
         }
       }
     }

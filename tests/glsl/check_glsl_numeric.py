@@ -89,11 +89,28 @@ def kernels(folder):
                 yield "point", m.group(2), degree, 0, m.group(1), guarded_blocks(text) + "\n" + m.group(0)
 
 
+# Distance from the segment, in |AB|: beside (P projects onto AB) and beyond
+# an end (its nearest point is A or B) as the verifier's generic region;
+# near: either side, closer to the segment (the float loss ~ i eps |AP| / dist
+# of every float form, docs/view.md); far: either side; support: compact
+# only, P far from a segment whose support sphere passes 0.3-2 |AB| beyond
+# it (1 - r^2/R^2 is then a difference of numbers near 1).
+DISTANCES = {"beside": (0.1, 3), "beyond": (0.1, 3), "near": (1e-3, 0.1), "far": (3, 100), "support": (3, 100)}
+REGIONS = ("beside", "beyond", "far", "near", "support")
+REGION_TITLE = {"beside": "beside AB", "beyond": "beyond an end", "far": "far", "near": "near AB", "support": "support edge"}
+# Relative errors are measured where the reference f and |grad f| lie in
+# [1e-25, 1e25]: outside it the float result underflows or overflows
+# somewhere on its way (float's normal range is 1.2e-38 to 3.4e38, and
+# q^(-n/2-1) is far smaller than f far from a high-degree kernel); those
+# points are counted and left out.
+FLOAT_RANGE = (1e-25, 1e25)
+
+
 def unit(v):
     return v / np.linalg.norm(v)
 
 
-def draw(rng, family, count, region="beside", near=0.1):
+def draw(rng, family, count, region="beside"):
     """count rows a, b, p, w, s, R in `region` (REGIONS), then a flag: 1 where
     P is beyond an end (its nearest point is A or B), 0 where it projects onto
     AB."""
@@ -105,10 +122,10 @@ def draw(rng, family, count, region="beside", near=0.1):
         b = a + length * d
         w = rng.uniform(0.2, 2, 4)
         s = math.exp(rng.uniform(math.log(0.2), math.log(5)))
-        low, high = (3, 100) if region == "far" else (near, 3)
+        low, high = DISTANCES[region]
         dist = length * math.exp(rng.uniform(math.log(low), math.log(high)))
         tau = rng.uniform(0, 1)
-        if region == "beyond" or (region == "far" and rng.uniform() < 0.5):
+        if region == "beyond" or (region in ("far", "near", "support") and rng.uniform() < 0.5):
             tau = -1 if rng.uniform() < 0.5 else 2
         perp = unit(np.cross(d, rng.normal(size=3)))
         if 0 <= tau <= 1:
@@ -118,8 +135,11 @@ def draw(rng, family, count, region="beside", near=0.1):
             theta = rng.uniform(0, math.pi / 2)
             out = -1 if tau < 0 else 1
             p = (a if tau < 0 else b) + dist * (math.sin(theta) * perp + out * math.cos(theta) * d)
-        R = dist + length * math.exp(rng.uniform(math.log(0.3), math.log(2)))
-        row = np.concatenate([a, b, p, w, [s, R]]).astype(np.float32).astype(np.float64)
+        # Compact: the support sphere reaches 0.3-2 |AB| past the segment's
+        # nearest point, or in the far region 0.1-1 times the distance (at
+        # 100 |AB| a margin of |AB| is the support region's grazing case).
+        margin = dist * log_uniform(rng, 0.1, 1) if region == "far" else length * log_uniform(rng, 0.3, 2)
+        row = np.concatenate([a, b, p, w, [s, dist + margin]]).astype(np.float32).astype(np.float64)
         t = (row[6:9] - row[0:3]) @ (row[3:6] - row[0:3]) / ((row[3:6] - row[0:3]) @ (row[3:6] - row[0:3]))
         row = np.append(row, 0.0 if 0 <= t <= 1 else 1.0)
         rows.append(row)
@@ -130,10 +150,10 @@ def log_uniform(rng, low, high):
     return math.exp(rng.uniform(math.log(low), math.log(high)))
 
 
-def draw_scalis(rng, family, count, region="beside", near=0.1):
+def draw_scalis(rng, family, count, region="beside"):
     """Rows a, b, p, tau0, tau1, sigma (and the side flag), as draw()."""
     rows = []
-    for row in draw(rng, "inverse", count, region, near):
+    for row in draw(rng, "inverse", count, region):
         length = np.linalg.norm(row[3:6] - row[0:3])
         tau = rng.uniform(0.1, 1.5, 2) * length
         sigma = 1.0 if family == "inverse" else log_uniform(rng, 0.5, 2)
@@ -435,8 +455,6 @@ def run_chromium(jobs, chromium, scratch):
             for key, values in json.loads(html.unescape(m.group(2))).items()}
 
 
-REGIONS = ("beside", "beyond", "far")
-REGION_TITLE = {"beside": "beside AB", "beyond": "beyond an end", "far": "far"}
 
 
 def make_jobs(args):
@@ -446,15 +464,17 @@ def make_jobs(args):
     for kind, family, degree, wdeg, name, source in kernels(args.folder):
         if not re.search(args.kernels, name):
             continue
-        for region in (["point"] if kind == "point" else args.regions):
+        regions = args.regions + args.report_regions
+        for region in (["point"] if kind == "point" else
+                       [r for r in regions if r != "support" or (kind == "segment" and family == "compact")]):
             flat, expected = [], []
             if kind == "segment":
-                for row in draw(rng, family, args.points, region, args.near):
+                for row in draw(rng, family, args.points, region):
                     f, g, (t0, t1) = reference(family, degree, wdeg, row)
                     flat += list(row[:15]) + [t0, t1, 0.0, 0.0, 0.0]
                     expected.append((f, g))
             else:
-                rows = (draw_scalis(rng, family, args.points, region, args.near) if kind == "scalis"
+                rows = (draw_scalis(rng, family, args.points, region) if kind == "scalis"
                         else draw_point(rng, family, degree, args.points))
                 for row in rows:
                     expected.append(scalis_reference(family, degree, row) if kind == "scalis"
@@ -482,11 +502,16 @@ def main():
     ap.add_argument("--chromium", default="/usr/bin/chromium")
     ap.add_argument("--compiler", default="c++", help="C++ compiler of the cpu backend")
     ap.add_argument("--kernels", default="", help="only the kernels whose name matches this regular expression")
-    ap.add_argument("--regions", default=",".join(REGIONS), help="segments: comma-separated subset of " + ",".join(REGIONS))
-    ap.add_argument("--near", type=float, default=0.1, help="least distance from the segment, in |AB|")
+    ap.add_argument("--regions", default="beside,beyond,far",
+                    help="segments: the regions checked against the tolerance, a comma-separated subset of " + ",".join(REGIONS))
+    ap.add_argument("--report-regions", default="", help="regions measured and printed, not checked")
     ap.add_argument("--break-kernel", default="", help="a fault for the check to catch: this kernel's f and grad x (1 + 1e-4)")
     args = ap.parse_args()
-    args.regions = args.regions.split(",")
+    args.regions = [r for r in args.regions.split(",") if r]
+    args.report_regions = [r for r in args.report_regions.split(",") if r]
+    for r in args.regions + args.report_regions:
+        if r not in REGIONS:
+            sys.exit(f"check_glsl_numeric: unknown region {r!r} (one of {', '.join(REGIONS)})")
     if args.backend == "chromium" and not os.path.exists(args.chromium):
         sys.exit(f"check_glsl_numeric: {args.chromium} not found (Debian package chromium)")
     jobs, refs = make_jobs(args)
@@ -501,38 +526,48 @@ def main():
     with tempfile.TemporaryDirectory() as scratch:
         results = (run_cpu(jobs, args.compiler, scratch) if args.backend == "cpu"
                    else run_chromium(jobs, args.chromium, scratch))
-    worst, per_degree, failures, count = {}, {}, 0, 0
+    worst, per_degree, failures, count, out_of_range = {}, {}, 0, 0, {}
     width = 5 if args.backend == "cpu" else 4
     for key, values in results.items():
         family, degree, region, expected = refs[key]
+        checked = region not in args.report_regions
         for k, (f, g) in enumerate(expected):
+            if not all(FLOAT_RANGE[0] <= v <= FLOAT_RANGE[1] for v in (abs(f), np.linalg.norm(g)) if v != 0):
+                out_of_range[region] = out_of_range.get(region, 0) + 1
+                continue
             got = values[width * k:width * k + width]
             ef = relative_error([got[0]], [f])
             if width == 5:
                 ef = max(ef, relative_error([got[4]], [f]))
             eg = relative_error(got[1:4], g)
-            count += 1
-            if not (ef <= args.tolerance and eg <= args.tolerance):
-                failures += 1
+            ef, eg = (math.inf if e != e else e for e in (ef, eg))  # NaN: fails
+            if checked:
+                count += 1
+                failures += not (ef <= args.tolerance and eg <= args.tolerance)
             d = per_degree.setdefault((family, degree, region), [0.0, 0.0])
-            d[0], d[1] = max(d[0], ef) if ef == ef else math.inf, max(d[1], eg) if eg == eg else math.inf
-            w = worst.setdefault(family, [0.0, "", 0.0, ""])
-            if not (ef <= w[0]):
+            d[0], d[1] = max(d[0], ef), max(d[1], eg)
+            w = worst.setdefault((family, checked), [0.0, "", 0.0, ""])
+            if ef > w[0]:
                 w[0], w[1] = ef, key
-            if not (eg <= w[2]):
+            if eg > w[2]:
                 w[2], w[3] = eg, key
     print(f"check_glsl_numeric ({args.backend}): {len(results)} kernel-regions x {args.points} points, "
-          f"segments {args.near:g}-3 |AB| beside and beyond, 3-100 |AB| far; tolerance {args.tolerance:g}")
-    for family, (ef, nf, eg, ng) in sorted(worst.items()):
-        print(f"  {family:16s} worst f rel. error {ef:.2e} ({nf}), worst grad {eg:.2e} ({ng})")
+          f"checked: {', '.join(args.regions) or 'points only'}; reported: {', '.join(args.report_regions) or '-'}; "
+          f"tolerance {args.tolerance:g}")
+    for (family, checked), (ef, nf, eg, ng) in sorted(worst.items()):
+        what = "" if checked else " (reported regions)"
+        print(f"  {family:16s} worst f rel. error {ef:.2e} ({nf}), worst grad {eg:.2e} ({ng}){what}")
     print("  worst per family, degree and region (f / grad; every weight degree):")
     for (family, degree, region), (ef, eg) in sorted(per_degree.items()):
         mark = "" if ef <= args.tolerance and eg <= args.tolerance else "  above"
+        if region in args.report_regions:
+            mark += "  (reported)" if mark else ""
         print(f"    {family:16s} i={degree:2d} {REGION_TITLE.get(region, region):14s} {ef:.1e} / {eg:.1e}{mark}")
+    for region, n in sorted(out_of_range.items()):
+        print(f"  {region}: {n} points left out, the reference outside [{FLOAT_RANGE[0]:g}, {FLOAT_RANGE[1]:g}]")
     if failures:
-        print(f"check_glsl_numeric: {failures} of {count} points above the tolerance")
+        print(f"check_glsl_numeric: {failures} of {count} checked points above the tolerance")
     return 1 if failures else 0
-
 
 if __name__ == "__main__":
     sys.exit(main())
