@@ -1,29 +1,35 @@
 #!/usr/bin/python3
-"""Runs the generated GLSL kernels (generated/glsl/) in headless Chromium
-(WebGL2 on its software renderer SwiftShader) on generic points and compares
-f and grad f with double-precision quadrature of the definition integral
-(segments and SCALIS segments) or the closed-form definition (points).
+"""Runs the generated GLSL kernels (generated/glsl/) on points of each
+region and compares f and grad f with double-precision quadrature of the
+definition integral (segments and SCALIS segments) or the closed-form
+definition (points).
 
-    check_glsl_numeric.py GLSL_FOLDER [--points N] [--tolerance 1e-5] [--seed S]
-                          [--kernels REGEX]
+    check_glsl_numeric.py GLSL_FOLDER [--backend chromium|cpu] [--points N]
+        [--tolerance 1e-5] [--seed S] [--kernels REGEX] [--regions LIST]
+        [--report-regions LIST] [--break-kernel NAME]
 
---kernels keeps the kernels whose function name matches REGEX (re.search),
-e.g. ^point_ (the ctest glsl_points_numeric).
+--kernels keeps the kernels whose function name matches REGEX (re.search).
+--backend chromium runs them in headless Chromium, WebGL2 on its software
+renderer SwiftShader (the GPU path: its own sqrt, exp, log, sinh); --backend
+cpu compiles them as C++ in float (glsl_as_cpp.hpp; no browser: the ctest
+glsl_numeric), where it also checks NAME_f beside NAME_f_and_grad.
+--break-kernel NAME multiplies that kernel's results by 1 + 1e-4, a fault
+the check must catch.
 
-Points are drawn like the verifier's generic region (verify/sampling.hpp):
-A uniform in [-2, 2]^3, |AB| log-uniform in [0.2, 5], weights uniform in
-[0.2, 2], Cauchy s log-uniform in [0.2, 5], P at distance |AB| x
-log-uniform(0.1, 3) from the segment (tau uniform in [-0.25, 1.25]), compact
-R = distance + |AB| x log-uniform(0.3, 2). The inputs are rounded to float
-first and the reference is computed on the rounded inputs, so the error
-measured is the shader's evaluation alone.
+Segments are drawn like the verifier's (verify/sampling.hpp): A uniform in
+[-2, 2]^3, |AB| log-uniform in [0.2, 5], weights uniform in [0.2, 2], Cauchy
+s log-uniform in [0.2, 5], P at a distance log-uniform in the region's
+range (DISTANCES) from the segment, beside AB or beyond an end (at an angle
+uniform in [0, pi/2] from the line), compact R = distance + |AB| x
+log-uniform(0.3, 2) (far: distance x (1 + log-uniform(0.1, 1))). The inputs
+are rounded to float first and the reference is computed on the rounded
+inputs, so the error measured is the shader's evaluation alone.
 
 Reference: f = |AB| int_0^1 w(t) K(|P - G(t)|) dt with K = (alpha r^2 +
 beta)^(-n/2) (codegen/segment_families.hpp), grad f = -n alpha |AB| int w(t)
-(P - G(t)) (alpha r^2 + beta)^(-(n+2)/2) dt, by composite Gauss-Legendre
-(64 panels x 24 nodes on the clipped interval; at P >= 0.1 |AB| from the
-segment the integrand's width is >= 0.1 |AB|, so the rule is exact to double
-rounding for the degrees generated).
+(P - G(t)) (alpha r^2 + beta)^(-(n+2)/2) dt, by composite Gauss-Legendre,
+24 nodes per panel on panels graded towards the nearest point of AB
+(graded_edges; compact: 64 even panels of the clipped interval).
 
 SCALIS segments (SPEC sec. 4): F = sigma^i |AB| int_0^1 tau(t)^(i-1)
 (|P - G(t)|^2 + k sigma^2 tau(t)^2)^(-i/2) dt (k = 0 inverse, 1 Cauchy), the
@@ -36,7 +42,8 @@ r log-uniform in [0.1, 3]; supported kernels r uniform in [0.05, 0.95] R
 away from Ferley's e by 0.02 R; Gaussian a r^2 uniform in [0.01, 9]).
 
 Exit status 0 when every relative error (|f - f_ref| / |f_ref| and
-|g - g_ref| / |g_ref|) is at most the tolerance; prints the worst per family.
+|g - g_ref| / |g_ref|) in the checked regions is at most the tolerance;
+prints the worst per family, degree and region, the reported regions too.
 """
 import argparse
 import html
@@ -521,8 +528,10 @@ def main():
         broken = [j for j in jobs if j["name"] == args.break_kernel]
         if not broken:
             sys.exit(f"check_glsl_numeric: --break-kernel {args.break_kernel}: no such kernel")
-        for job in broken:
-            job["source"] = re.sub(r"^(\s*)return (.*);$", r"\1return (1.0 + 1e-4) * (\2);", job["source"], flags=re.M)
+        for job in broken:  # the kernel's own functions, after the guarded blocks
+            blocks, _, functions = job["source"].rpartition("#endif\n")
+            job["source"] = blocks + "#endif\n" + re.sub(r"^(\s*)return (.*);$", r"\1return (1.0 + 1e-4) * (\2);",
+                                                         functions, flags=re.M)
     with tempfile.TemporaryDirectory() as scratch:
         results = (run_cpu(jobs, args.compiler, scratch) if args.backend == "cpu"
                    else run_chromium(jobs, args.chromium, scratch))
