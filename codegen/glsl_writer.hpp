@@ -9,12 +9,11 @@
 
 namespace skelconv::codegen {
 
-/// Writes generated/glsl/segment_<family>.glsl for every segment kernel of
-/// `request` whose generic path is straight-line code (Forms::fast: no
-/// helper loop); kernels without one are listed in the file header as left
-/// out. Call it after write_generated_folder: building programs creates
-/// GiNaC symbols, and the C++ files must not see them. Same request, same bytes.
-/// Also writes point.glsl (write_glsl_points).
+/// Writes generated/glsl/segment_<family>.glsl and
+/// scalis_segment_<family>.glsl for every segment and SCALIS segment kernel
+/// of `request`, each its definition integral by the rule of glsl_rule.cpp
+/// (not the C++ closed forms, which cancel in float). Same request, same
+/// bytes. Also writes point.glsl (write_glsl_points).
 void write_glsl_folder(const GeneratorRequest& request, const std::filesystem::path& folder);
 
 /// Writes generated/glsl/point.glsl: f = w K(r) and its gradient for every

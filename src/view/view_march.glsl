@@ -120,83 +120,12 @@ PointInput point_input(Row r, vec3 p) {
   return PointInput(r.t0.xyz, p, 1.0, r.t2.x, r.t3.x, r.t3.y, r.t2.y, r.t2.z, r.t2.w);
 }
 
-// Beyond an end of its segment (the projection of p outside [0, 1]) an
-// inverse or Cauchy term, plain or SCALIS, is integrated here rather than by
-// its generated generic form: in float those lose digits there, most near
-// the segment's line (0/0 on it; docs/view.md,
-// tests/glsl/probe_beyond_end.py), as the C++ target's stable forms avoid
-// with a Gauss rule too. The integrand is smooth there: with s the distance
-// along AB from the nearer end in units of |AB| and rho = |p - end| / |AB|,
-// panels [s_k, s_k+1] of width s_k + rho (at most the distance to p, so the
-// nearest complex singularity of the integrand is a panel width away) and
-// 8 Gauss-Legendre nodes each keep the rule's error below float's.
-const float gauss_x[8] = float[8](0.019855072, 0.101666761, 0.237233795, 0.408282679,
-                                  0.591717321, 0.762766205, 0.898333239, 0.980144928);
-const float gauss_w[8] = float[8](0.050614268, 0.111190517, 0.156853323, 0.181341892,
-                                  0.181341892, 0.156853323, 0.111190517, 0.050614268);
-// More panels than this only for p within 2^-20 |AB| of an end (deep inside
-// any surface): the last panel then stretches to the far end.
-const int max_panels = 20;
-
-bool beyond_end(Row r, vec3 p) {
-  vec3 ab = r.t1.xyz - r.t0.xyz;
-  float t = dot(p - r.t0.xyz, ab) / dot(ab, ab);
-  return t < 0.0 || t > 1.0;
-}
-
-// f (and grad f) of a term of degree i at a point beyond an end, as
-// |AB| int_0^1 v(t) base(t)^(-i/2) dt with d = p - G(t) and
-//   inverse segment (code 0)  v = w(t),                 base = |d|^2
-//   Cauchy segment (code 2)   v = w(t),                 base = 1 + s |d|^2
-//   SCALIS inverse (code 4)   v = sigma^i tau(t)^(i-1), base = |d|^2
-//   SCALIS Cauchy (code 5)    v = sigma^i tau(t)^(i-1), base = |d|^2 + sigma^2 tau(t)^2
-// (the definitions of generated/glsl/), so grad = -i alpha |AB| int v
-// base^(-i/2-1) d dt with alpha = s (code 2) or 1.
-float segment_by_quadrature(Row r, vec3 p, out vec3 grad) {
-  float code = r.t1.w, degree = r.t3.w;
-  vec3 a = r.t0.xyz, ab = r.t1.xyz - r.t0.xyz;
-  float length_ab = length(ab);
-  bool at_b = dot(p - a, ab) > 0.0;
-  float end = at_b ? 1.0 : 0.0, direction = at_b ? -1.0 : 1.0;
-  float rho = length(p - (at_b ? r.t1.xyz : a)) / length_ab;
-  bool scalis = code >= 4.0;
-  float alpha = code == 2.0 ? r.t3.x : 1.0;
-  float offset = code == 2.0 ? 1.0 : 0.0;
-  float sigma = r.t2.z, scale = scalis ? pow(sigma, degree) : 1.0;
-  float sigma2 = code == 5.0 ? sigma * sigma : 0.0;
-  float f = 0.0;
-  grad = vec3(0.0);
-  float low = 0.0;
-  for (int k = 0; k < max_panels && low < 1.0; ++k) {
-    float high = k == max_panels - 1 ? 1.0 : min(1.0, 2.0 * low + rho);
-    for (int j = 0; j < 8; ++j) {
-      float t = end + direction * (low + (high - low) * gauss_x[j]);
-      vec3 d = p - (a + t * ab);
-      float tau = r.t2.x + (r.t2.y - r.t2.x) * t;
-      float base = offset + alpha * dot(d, d) + sigma2 * tau * tau;
-      float kernel = pow(base, -0.5 * degree);
-      vec4 w = r.t2;
-      float v = scalis ? scale * pow(tau, degree - 1.0) : w.x + t * (w.y + t * (w.z + t * w.w));
-      float weight = (high - low) * gauss_w[j] * v;
-      f += weight * kernel;
-      grad += (weight * kernel / base) * d;
-    }
-    low = high;
-  }
-  grad *= -degree * alpha * length_ab;
-  return f * length_ab;
-}
-
 // One term f_k (and its gradient when `with_grad`; weight c not applied):
-// the generated kernel, or the quadrature beyond an end for inverse and
-// Cauchy segments and SCALIS segments; 0 for a compact segment whose clipped
-// part is empty.
+// the generated kernel; 0 for a compact segment whose clipped part is empty.
 float term(Row r, vec3 p, bool with_grad, out vec3 grad) {
   grad = vec3(0.0);
   float code = r.t1.w;
   int kernel = int(r.t0.w);
-  if ((code == 0.0 || code == 2.0 || code == 4.0 || code == 5.0) && beyond_end(r, p))
-    return segment_by_quadrature(r, p, grad);
   if (code == 1.0) {
     SegmentInput si = segment_input(r, p);
     if (!(si.t0 < si.t1)) return 0.0;

@@ -162,8 +162,8 @@ std::string check_term(const Term& term) {
                        term.location + ".weight");
     }
     if (glsl_function(glsl_file(name), name + "_f(").empty()) {
-      throw InputError(fmt::format("kernel {} degree {} with a weight of degree {}: the GLSL target has no generic "
-                                   "form of it (generated/glsl/: inverse and cauchy, compact of odd degree)",
+      throw InputError(fmt::format("kernel {} degree {} with a weight of degree {}: the GLSL target has no form "
+                                   "of it (generated/glsl/: inverse, cauchy and compact)",
                                    family_name(kernel.family), kernel.degree, s->weight_degree()),
                        term.location + ".kernel");
     }

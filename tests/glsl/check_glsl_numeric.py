@@ -1,29 +1,35 @@
 #!/usr/bin/python3
-"""Runs the generated GLSL kernels (generated/glsl/) in headless Chromium
-(WebGL2 on its software renderer SwiftShader) on generic points and compares
-f and grad f with double-precision quadrature of the definition integral
-(segments and SCALIS segments) or the closed-form definition (points).
+"""Runs the generated GLSL kernels (generated/glsl/) on points of each
+region and compares f and grad f with double-precision quadrature of the
+definition integral (segments and SCALIS segments) or the closed-form
+definition (points).
 
-    check_glsl_numeric.py GLSL_FOLDER [--points N] [--tolerance 1e-5] [--seed S]
-                          [--kernels REGEX]
+    check_glsl_numeric.py GLSL_FOLDER [--backend chromium|cpu] [--points N]
+        [--tolerance 1e-5] [--seed S] [--kernels REGEX] [--regions LIST]
+        [--report-regions LIST] [--break-kernel NAME]
 
---kernels keeps the kernels whose function name matches REGEX (re.search),
-e.g. ^point_ (the ctest glsl_points_numeric).
+--kernels keeps the kernels whose function name matches REGEX (re.search).
+--backend chromium runs them in headless Chromium, WebGL2 on its software
+renderer SwiftShader (the GPU path: its own sqrt, exp, log, sinh); --backend
+cpu compiles them as C++ in float (glsl_as_cpp.hpp; no browser: the ctest
+glsl_numeric), where it also checks NAME_f beside NAME_f_and_grad.
+--break-kernel NAME multiplies that kernel's results by 1 + 1e-4, a fault
+the check must catch.
 
-Points are drawn like the verifier's generic region (verify/sampling.hpp):
-A uniform in [-2, 2]^3, |AB| log-uniform in [0.2, 5], weights uniform in
-[0.2, 2], Cauchy s log-uniform in [0.2, 5], P at distance |AB| x
-log-uniform(0.1, 3) from the segment (tau uniform in [-0.25, 1.25]), compact
-R = distance + |AB| x log-uniform(0.3, 2). The inputs are rounded to float
-first and the reference is computed on the rounded inputs, so the error
-measured is the shader's evaluation alone.
+Segments are drawn like the verifier's (verify/sampling.hpp): A uniform in
+[-2, 2]^3, |AB| log-uniform in [0.2, 5], weights uniform in [0.2, 2], Cauchy
+s log-uniform in [0.2, 5], P at a distance log-uniform in the region's
+range (DISTANCES) from the segment, beside AB or beyond an end (at an angle
+uniform in [0, pi/2] from the line), compact R = distance + |AB| x
+log-uniform(0.3, 2) (far: distance x (1 + log-uniform(0.1, 1))). The inputs
+are rounded to float first and the reference is computed on the rounded
+inputs, so the error measured is the shader's evaluation alone.
 
 Reference: f = |AB| int_0^1 w(t) K(|P - G(t)|) dt with K = (alpha r^2 +
 beta)^(-n/2) (codegen/segment_families.hpp), grad f = -n alpha |AB| int w(t)
-(P - G(t)) (alpha r^2 + beta)^(-(n+2)/2) dt, by composite Gauss-Legendre
-(64 panels x 24 nodes on the clipped interval; at P >= 0.1 |AB| from the
-segment the integrand's width is >= 0.1 |AB|, so the rule is exact to double
-rounding for the degrees generated).
+(P - G(t)) (alpha r^2 + beta)^(-(n+2)/2) dt, by composite Gauss-Legendre,
+24 nodes per panel on panels graded towards the nearest point of AB
+(graded_edges; compact: 64 even panels of the clipped interval).
 
 SCALIS segments (SPEC sec. 4): F = sigma^i |AB| int_0^1 tau(t)^(i-1)
 (|P - G(t)|^2 + k sigma^2 tau(t)^2)^(-i/2) dt (k = 0 inverse, 1 Cauchy), the
@@ -36,7 +42,8 @@ r log-uniform in [0.1, 3]; supported kernels r uniform in [0.05, 0.95] R
 away from Ferley's e by 0.02 R; Gaussian a r^2 uniform in [0.01, 9]).
 
 Exit status 0 when every relative error (|f - f_ref| / |f_ref| and
-|g - g_ref| / |g_ref|) is at most the tolerance; prints the worst per family.
+|g - g_ref| / |g_ref|) in the checked regions is at most the tolerance;
+prints the worst per family, degree and region, the reported regions too.
 """
 import argparse
 import html
@@ -62,17 +69,25 @@ def guarded_blocks(text):
     return "\n".join(m.group(0) for m in re.finditer(r"^#ifndef SKELCONV_\w+\n.*?^#endif\n", text, re.M | re.S))
 
 
+def field_function(text, name):
+    """The text of NAME_f, the field alone, or "" (then only f-and-grad runs)."""
+    m = re.search(r"^float " + name + r"_f\((?:Segment|ScalisSegment)Input si\) \{\n.*?^\}\n", text, re.M | re.S)
+    return m.group(0) if m else ""
+
+
 def kernels(folder):
     """(kind, family, degree, weight degree, name, source) of every kernel."""
     folder = pathlib.Path(folder)
     for path in sorted(folder.glob("segment_*.glsl")):
         text = path.read_text()
         for m in FUNCTION.finditer(text):
-            yield "segment", m.group(2), int(m.group(3)), int(m.group(4)), m.group(1), guarded_blocks(text) + "\n" + m.group(0)
+            yield ("segment", m.group(2), int(m.group(3)), int(m.group(4)), m.group(1),
+                   guarded_blocks(text) + "\n" + field_function(text, m.group(1)) + m.group(0))
     for path in sorted(folder.glob("scalis_segment_*.glsl")):
         text = path.read_text()
         for m in SCALIS_FUNCTION.finditer(text):
-            yield "scalis", m.group(2), int(m.group(3)), 0, m.group(1), guarded_blocks(text) + "\n" + m.group(0)
+            yield ("scalis", m.group(2), int(m.group(3)), 0, m.group(1),
+                   guarded_blocks(text) + "\n" + field_function(text, m.group(1)) + m.group(0))
     point = folder / "point.glsl"
     if point.exists():
         text = point.read_text()
@@ -81,11 +96,31 @@ def kernels(folder):
                 yield "point", m.group(2), degree, 0, m.group(1), guarded_blocks(text) + "\n" + m.group(0)
 
 
+# Distance from the segment, in |AB|: beside (P projects onto AB) and beyond
+# an end (its nearest point is A or B) as the verifier's generic region;
+# near: either side, closer to the segment (the float loss ~ i eps |AP| / dist
+# of every float form, docs/view.md); far: either side; support: compact
+# only, P far from a segment whose support sphere passes 0.3-2 |AB| beyond
+# it (1 - r^2/R^2 is then a difference of numbers near 1).
+DISTANCES = {"beside": (0.1, 3), "beyond": (0.1, 3), "near": (1e-3, 0.1), "far": (3, 100), "support": (3, 100)}
+REGIONS = ("beside", "beyond", "far", "near", "support")
+REGION_TITLE = {"beside": "beside AB", "beyond": "beyond an end", "far": "far", "near": "near AB", "support": "support edge"}
+# Relative errors are measured where the reference f and |grad f| lie in
+# [1e-25, 1e25]: outside it the float result underflows or overflows
+# somewhere on its way (float's normal range is 1.2e-38 to 3.4e38, and
+# q^(-n/2-1) is far smaller than f far from a high-degree kernel); those
+# points are counted and left out.
+FLOAT_RANGE = (1e-25, 1e25)
+
+
 def unit(v):
     return v / np.linalg.norm(v)
 
 
-def draw(rng, family, count):
+def draw(rng, family, count, region="beside"):
+    """count rows a, b, p, w, s, R in `region` (REGIONS), then a flag: 1 where
+    P is beyond an end (its nearest point is A or B), 0 where it projects onto
+    AB."""
     rows = []
     for _ in range(count):
         a = rng.uniform(-2, 2, 3)
@@ -94,20 +129,26 @@ def draw(rng, family, count):
         b = a + length * d
         w = rng.uniform(0.2, 2, 4)
         s = math.exp(rng.uniform(math.log(0.2), math.log(5)))
-        dist = length * math.exp(rng.uniform(math.log(0.1), math.log(3)))
-        tau = rng.uniform(-0.25, 1.25)
+        low, high = DISTANCES[region]
+        dist = length * math.exp(rng.uniform(math.log(low), math.log(high)))
+        tau = rng.uniform(0, 1)
+        if region == "beyond" or (region in ("far", "near", "support") and rng.uniform() < 0.5):
+            tau = -1 if rng.uniform() < 0.5 else 2
         perp = unit(np.cross(d, rng.normal(size=3)))
         if 0 <= tau <= 1:
             p = a + tau * length * d + dist * perp
         else:
+            # At angle theta from the line, outwards from the nearer end.
             theta = rng.uniform(0, math.pi / 2)
             out = -1 if tau < 0 else 1
             p = (a if tau < 0 else b) + dist * (math.sin(theta) * perp + out * math.cos(theta) * d)
-        R = dist + length * math.exp(rng.uniform(math.log(0.3), math.log(2)))
-        # Last column: 1 where P is beyond an end (its nearest point is A or
-        # B; at angle theta from the line), 0 where it projects onto AB.
-        row = np.concatenate([a, b, p, w, [s, R]]).astype(np.float32).astype(np.float64)
-        row = np.append(row, 0.0 if 0 <= tau <= 1 else 1.0)
+        # Compact: the support sphere reaches 0.3-2 |AB| past the segment's
+        # nearest point, or in the far region 0.1-1 times the distance (at
+        # 100 |AB| a margin of |AB| is the support region's grazing case).
+        margin = dist * log_uniform(rng, 0.1, 1) if region == "far" else length * log_uniform(rng, 0.3, 2)
+        row = np.concatenate([a, b, p, w, [s, dist + margin]]).astype(np.float32).astype(np.float64)
+        t = (row[6:9] - row[0:3]) @ (row[3:6] - row[0:3]) / ((row[3:6] - row[0:3]) @ (row[3:6] - row[0:3]))
+        row = np.append(row, 0.0 if 0 <= t <= 1 else 1.0)
         rows.append(row)
     return rows
 
@@ -116,10 +157,10 @@ def log_uniform(rng, low, high):
     return math.exp(rng.uniform(math.log(low), math.log(high)))
 
 
-def draw_scalis(rng, family, count):
+def draw_scalis(rng, family, count, region="beside"):
     """Rows a, b, p, tau0, tau1, sigma (and the side flag), as draw()."""
     rows = []
-    for row in draw(rng, "inverse", count):
+    for row in draw(rng, "inverse", count, region):
         length = np.linalg.norm(row[3:6] - row[0:3])
         tau = rng.uniform(0.1, 1.5, 2) * length
         sigma = 1.0 if family == "inverse" else log_uniform(rng, 0.5, 2)
@@ -181,9 +222,32 @@ def point_reference(family, degree, row):
     return w * K, w * dK * d / r
 
 
+def graded_edges(a, b, p, lo=0.0, hi=1.0):
+    """Panel ends on [lo, hi] graded towards c, the parameter of the point of
+    AB nearest to P: c +- h (2^k - 1), h = that distance / |AB| (at least
+    2^-40), each panel then cut in 4. A panel at distance x from c is about
+    x wide and the integrand's complex singularities (at imaginary distance
+    >= h from c) are about x away from it, so 24 Gauss-Legendre nodes per
+    piece integrate it to double rounding, whatever h."""
+    ab = b - a
+    c = min(hi, max(lo, float((p - a) @ ab / (ab @ ab))))
+    h = max(float(np.linalg.norm(p - (a + c * ab))) / float(np.linalg.norm(ab)), 2.0 ** -40)
+    ends = {lo, hi, c}
+    for sign in (-1, 1):
+        k = 1
+        while True:
+            x = c + sign * h * (2.0 ** k - 1)
+            if not (lo < x < hi):
+                break
+            ends.add(x)
+            k += 1
+    coarse = sorted(ends)
+    return np.array(sorted({u + (v - u) * j / 4 for u, v in zip(coarse, coarse[1:]) for j in range(4)} | {hi}))
+
+
 def scalis_reference(family, degree, row):
     a, b, p, tau0, tau1, sigma = row[0:3], row[3:6], row[6:9], row[9], row[10], row[11]
-    edges = np.linspace(0.0, 1.0, 65)
+    edges = graded_edges(a, b, p)
     t = ((edges[:-1, None] + edges[1:, None]) / 2 + (edges[1:, None] - edges[:-1, None]) / 2 * NODES[None, :]).ravel()
     wq = ((edges[1:, None] - edges[:-1, None]) / 2 * WEIGHTS[None, :]).ravel()
     tau = tau0 + (tau1 - tau0) * t
@@ -220,7 +284,7 @@ def reference(family, degree, wdeg, row):
         if c is None:
             return 0.0, np.zeros(3), (1.0, 0.0)
         lo, hi = c
-    edges = np.linspace(lo, hi, 65)
+    edges = np.linspace(lo, hi, 65) if family == "compact" else graded_edges(a, b, p)
     t = ((edges[:-1, None] + edges[1:, None]) / 2 + (edges[1:, None] - edges[:-1, None]) / 2 * NODES[None, :]).ravel()
     wq = ((edges[1:, None] - edges[:-1, None]) / 2 * WEIGHTS[None, :]).ravel()
     weight = sum(w[k] * t**k for k in range(wdeg + 1))
@@ -306,82 +370,213 @@ CHROMIUM_FLAGS = ["--headless=new", "--use-gl=angle", "--use-angle=swiftshader",
                   "--disable-component-update", "--disable-sync", "--no-first-run", "--virtual-time-budget=600000"]
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("folder")
-    ap.add_argument("--points", type=int, default=32, help="generic points per kernel")
-    ap.add_argument("--tolerance", type=float, default=1e-5)
-    ap.add_argument("--seed", type=int, default=20261204)
-    ap.add_argument("--chromium", default="/usr/bin/chromium")
-    ap.add_argument("--kernels", default="", help="only the kernels whose name matches this regular expression")
-    args = ap.parse_args()
-    if not os.path.exists(args.chromium):
-        sys.exit(f"check_glsl_numeric: {args.chromium} not found (Debian package chromium)")
-    rng = np.random.default_rng(args.seed)
-    jobs, refs, rows_of = [], {}, {}
-    for kind, family, degree, wdeg, name, source in kernels(args.folder):
-        if not re.search(args.kernels, name):
-            continue
-        flat, expected = [], []
-        if kind == "segment":
-            rows = draw(rng, family, args.points)
-            for row in rows:
-                f, g, (t0, t1) = reference(family, degree, wdeg, row)
-                flat += list(row[:15]) + [t0, t1, 0.0, 0.0, 0.0]
-                expected.append((f, g))
-        else:
-            rows = draw_scalis(rng, family, args.points) if kind == "scalis" else draw_point(rng, family, degree, args.points)
-            for row in rows:
-                expected.append(scalis_reference(family, degree, row) if kind == "scalis" else point_reference(family, degree, row))
-                flat += list(row[:-1]) + [0.0] * (21 - len(row))
-        job = f"{name}@{degree}" if kind == "point" else name
-        jobs.append({"name": name, "key": job, "source": source, "setup": SETUP[kind], "inputs": flat})
-        refs[job] = (kind + " " + family, degree, expected)
-        rows_of[job] = rows
-    if not jobs:
-        sys.exit(f"check_glsl_numeric: no kernel of {args.folder} matches {args.kernels!r}")
-    with tempfile.TemporaryDirectory() as scratch:
-        page = pathlib.Path(scratch) / "glsl_numeric.html"
-        page.write_text(PAGE % json.dumps(jobs))
-        profile = pathlib.Path(scratch) / "profile"
-        run = subprocess.run([args.chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", "--dump-dom",
-                              page.as_uri()], capture_output=True, text=True, timeout=1800)
+# The inputs of each kind from the 20 floats of a row (`in`), for the cpu
+# backend (the same fields as SETUP).
+CPU_SETUP = {
+    "segment": "SegmentInput si; si.a = vec3(in[0], in[1], in[2]); si.b = vec3(in[3], in[4], in[5]); "
+               "si.p = vec3(in[6], in[7], in[8]); si.w = vec4(in[9], in[10], in[11], in[12]); si.s = in[13]; "
+               "si.R = in[14]; si.t0 = in[15]; si.t1 = in[16];",
+    "scalis": "ScalisSegmentInput si{vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), vec3(in[6], in[7], in[8]), "
+              "in[9], in[10], in[11]};",
+    "point": "PointInput si{vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), in[6], in[7], in[8], in[9], in[10], "
+             "in[11], in[12]};",
+}
+
+# GLSL to C++: `out`/`inout` parameters become references; float[N](...)
+# array initialisers braced lists; a literal with a point or an exponent is
+# a float in GLSL, a double in C++ (the suffix f keeps the arithmetic in
+# float).
+OUT_PARAMETER = re.compile(r"\b(?:out|inout) (float|vec3) (\w+)")
+ARRAY_INITIALISER = re.compile(r"float\[\d+\]\(([^;]*)\);", re.S)
+FLOAT_LITERAL = re.compile(r"(?<![\w.])(\d+\.\d*(?:[eE][+-]?\d+)?|\d+[eE][+-]?\d+)(?![\w.])")
+
+
+def glsl_to_cpp(source):
+    out = []
+    for line in source.splitlines():
+        code, sep, comment = line.partition("//")
+        code = OUT_PARAMETER.sub(r"\1& \2", code)
+        out.append(FLOAT_LITERAL.sub(r"\1f", code) + sep + comment)
+    return ARRAY_INITIALISER.sub(r"{\1};", "\n".join(out) + "\n")
+
+
+def run_cpu(jobs, compiler, scratch):
+    """Every job's f and f-and-grad, compiled as C++ in float (glsl_as_cpp.hpp):
+    values [f, g0, g1, g2, f of the _f function] per row."""
+    sources, seen = [], set()
+    for job in jobs:
+        if job["name"] not in seen:
+            seen.add(job["name"])
+            sources.append(glsl_to_cpp(job["source"]))
+    runners = []
+    for k, job in enumerate(jobs):
+        runners.append(f"void run{k}(const float* in, float* out) {{\n  {CPU_SETUP[job['kind']]}\n  vec3 grad;\n"
+                       f"  out[0] = {job['name']}_f_and_grad(si, grad);\n"
+                       f"  out[1] = grad[0]; out[2] = grad[1]; out[3] = grad[2];\n"
+                       f"  out[4] = {job['name']}_f(si);\n}}\n")
+    table = ", ".join(f"run{k}" for k in range(len(jobs)))
+    here = pathlib.Path(__file__).resolve().parent
+    program = (f'#include "{here / "glsl_as_cpp.hpp"}"\n#include <cstdio>\n#include <vector>\n'
+               + "\n".join(sources) + "\n".join(runners)
+               + "using Runner = void (*)(const float*, float*);\n"
+               + f"static const Runner runners[] = {{{table}}};\n"
+               + "int main() {\n  int job, rows;\n"
+               + "  while (std::fread(&job, 4, 1, stdin) == 1 && std::fread(&rows, 4, 1, stdin) == 1) {\n"
+               + "    std::vector<float> in(20 * rows), out(5 * rows);\n"
+               + "    if (std::fread(in.data(), 4, in.size(), stdin) != in.size()) return 3;\n"
+               + "    for (int r = 0; r < rows; ++r) runners[job](&in[20 * r], &out[5 * r]);\n"
+               + "    std::fwrite(out.data(), 4, out.size(), stdout);\n  }\n  return 0;\n}\n")
+    cpp, exe = pathlib.Path(scratch) / "glsl_as_cpp.cpp", pathlib.Path(scratch) / "glsl_as_cpp"
+    cpp.write_text(program)
+    build = subprocess.run([compiler, "-std=c++20", "-O1", "-ffp-contract=off", "-w", str(cpp), "-o", str(exe)],
+                           capture_output=True, text=True)
+    if build.returncode != 0:
+        sys.exit("check_glsl_numeric: the GLSL does not compile as C++:\n" + build.stderr[-3000:])
+    stdin = b"".join(np.array([k, len(job["inputs"]) // 20], dtype=np.int32).tobytes()
+                     + np.array(job["inputs"], dtype=np.float32).tobytes() for k, job in enumerate(jobs))
+    run = subprocess.run([str(exe)], input=stdin, capture_output=True)
+    if run.returncode != 0:
+        sys.exit(f"check_glsl_numeric: the compiled kernels failed (status {run.returncode})")
+    values = np.frombuffer(run.stdout, dtype=np.float32).astype(np.float64)
+    results, at = {}, 0
+    for job in jobs:
+        n = 5 * (len(job["inputs"]) // 20)
+        results[job["key"]] = list(values[at:at + n])
+        at += n
+    return results
+
+
+def run_chromium(jobs, chromium, scratch):
+    """Every job's f and grad from f-and-grad in WebGL2: [f, g0, g1, g2] per row."""
+    page = pathlib.Path(scratch) / "glsl_numeric.html"
+    page.write_text(PAGE % json.dumps(jobs))
+    profile = pathlib.Path(scratch) / "profile"
+    run = subprocess.run([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", "--dump-dom",
+                          page.as_uri()], capture_output=True, text=True, timeout=1800)
     m = re.search(r'<pre id="out">(RESULTS|ERROR) (.*?) END</pre>', run.stdout, re.S)
     if not m:
         sys.exit("check_glsl_numeric: no result in the page (chromium stderr tail):\n" + run.stderr[-2000:])
     if m.group(1) == "ERROR":
         sys.exit("check_glsl_numeric: the page failed: " + m.group(2))
-    results = json.loads(html.unescape(m.group(2)))
-    worst, per_degree = {}, {}
-    failures = 0
-    for name, values in results.items():
-        family, degree, expected = refs[name]
-        for k, (f, g) in enumerate(expected):
-            got = [math.nan if v is None else v for v in values[4 * k:4 * k + 4]]  # JSON null: NaN
-            ef = abs(got[0] - f) / abs(f) if f != 0 else abs(got[0])
-            gn = np.linalg.norm(g)
-            eg = np.linalg.norm(np.array(got[1:4]) - g) / gn if gn != 0 else np.linalg.norm(got[1:4])
-            if not (ef <= args.tolerance and eg <= args.tolerance):
-                failures += 1
-            side = "beyond an end" if rows_of[name][k][-1] else "beside AB"
-            d = per_degree.setdefault((family, degree, side), [0.0, 0.0])
-            d[0], d[1] = max(d[0], ef), max(d[1], eg)
-            w = worst.setdefault(family, [0.0, "", 0.0, ""])
-            if not (ef <= w[0]):
-                w[0], w[1] = ef, name
-            if not (eg <= w[2]):
-                w[2], w[3] = eg, name
-    print(f"check_glsl_numeric: {len(results)} kernels x {args.points} generic points, tolerance {args.tolerance:g}")
-    for family, (ef, nf, eg, ng) in sorted(worst.items()):
-        print(f"  {family:16s} worst f rel. error {ef:.2e} ({nf}), worst grad {eg:.2e} ({ng})")
-    print("  worst per family, degree and side of P (f / grad; every weight degree):")
-    for (family, degree, side), (ef, eg) in sorted(per_degree.items()):
-        mark = "" if ef <= args.tolerance and eg <= args.tolerance else "  above"
-        print(f"    {family:16s} i={degree:2d} {side:14s} {ef:.1e} / {eg:.1e}{mark}")
-    if failures:
-        print(f"check_glsl_numeric: {failures} points above the tolerance")
-    return 1 if failures else 0
+    return {key: [math.nan if v is None else v for v in values]  # JSON null: NaN
+            for key, values in json.loads(html.unescape(m.group(2))).items()}
 
+
+
+
+def make_jobs(args):
+    """The kernels' jobs (inputs) and their references, per region."""
+    rng = np.random.default_rng(args.seed)
+    jobs, refs = [], {}
+    for kind, family, degree, wdeg, name, source in kernels(args.folder):
+        if not re.search(args.kernels, name):
+            continue
+        regions = args.regions + args.report_regions
+        for region in (["point"] if kind == "point" else
+                       [r for r in regions if r != "support" or (kind == "segment" and family == "compact")]):
+            flat, expected = [], []
+            if kind == "segment":
+                for row in draw(rng, family, args.points, region):
+                    f, g, (t0, t1) = reference(family, degree, wdeg, row)
+                    flat += list(row[:15]) + [t0, t1, 0.0, 0.0, 0.0]
+                    expected.append((f, g))
+            else:
+                rows = (draw_scalis(rng, family, args.points, region) if kind == "scalis"
+                        else draw_point(rng, family, degree, args.points))
+                for row in rows:
+                    expected.append(scalis_reference(family, degree, row) if kind == "scalis"
+                                    else point_reference(family, degree, row))
+                    flat += list(row[:-1]) + [0.0] * (21 - len(row))
+            key = f"{name}@{degree}@{region}"
+            jobs.append({"name": name, "key": key, "kind": kind, "source": source, "setup": SETUP[kind],
+                         "inputs": flat})
+            refs[key] = (kind + " " + family, degree, region, expected)
+    return jobs, refs
+
+
+def relative_error(got, want):
+    scale = np.linalg.norm(want)
+    return float(np.linalg.norm(np.array(got) - want) / scale if scale != 0 else np.linalg.norm(got))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("folder")
+    ap.add_argument("--points", type=int, default=32, help="points per kernel and region")
+    ap.add_argument("--tolerance", type=float, default=1e-5)
+    ap.add_argument("--seed", type=int, default=20261204)
+    ap.add_argument("--backend", choices=("chromium", "cpu"), default="chromium")
+    ap.add_argument("--chromium", default="/usr/bin/chromium")
+    ap.add_argument("--compiler", default="c++", help="C++ compiler of the cpu backend")
+    ap.add_argument("--kernels", default="", help="only the kernels whose name matches this regular expression")
+    ap.add_argument("--regions", default="beside,beyond,far",
+                    help="segments: the regions checked against the tolerance, a comma-separated subset of " + ",".join(REGIONS))
+    ap.add_argument("--report-regions", default="", help="regions measured and printed, not checked")
+    ap.add_argument("--break-kernel", default="", help="a fault for the check to catch: this kernel's f and grad x (1 + 1e-4)")
+    args = ap.parse_args()
+    args.regions = [r for r in args.regions.split(",") if r]
+    args.report_regions = [r for r in args.report_regions.split(",") if r]
+    for r in args.regions + args.report_regions:
+        if r not in REGIONS:
+            sys.exit(f"check_glsl_numeric: unknown region {r!r} (one of {', '.join(REGIONS)})")
+    if args.backend == "chromium" and not os.path.exists(args.chromium):
+        sys.exit(f"check_glsl_numeric: {args.chromium} not found (Debian package chromium)")
+    jobs, refs = make_jobs(args)
+    if not jobs:
+        sys.exit(f"check_glsl_numeric: no kernel of {args.folder} matches {args.kernels!r}")
+    if args.break_kernel:
+        broken = [j for j in jobs if j["name"] == args.break_kernel]
+        if not broken:
+            sys.exit(f"check_glsl_numeric: --break-kernel {args.break_kernel}: no such kernel")
+        for job in broken:  # the kernel's own functions, after the guarded blocks
+            blocks, _, functions = job["source"].rpartition("#endif\n")
+            job["source"] = blocks + "#endif\n" + re.sub(r"^(\s*)return (.*);$", r"\1return (1.0 + 1e-4) * (\2);",
+                                                         functions, flags=re.M)
+    with tempfile.TemporaryDirectory() as scratch:
+        results = (run_cpu(jobs, args.compiler, scratch) if args.backend == "cpu"
+                   else run_chromium(jobs, args.chromium, scratch))
+    worst, per_degree, failures, count, out_of_range = {}, {}, 0, 0, {}
+    width = 5 if args.backend == "cpu" else 4
+    for key, values in results.items():
+        family, degree, region, expected = refs[key]
+        checked = region not in args.report_regions
+        for k, (f, g) in enumerate(expected):
+            if not all(FLOAT_RANGE[0] <= v <= FLOAT_RANGE[1] for v in (abs(f), np.linalg.norm(g)) if v != 0):
+                out_of_range[region] = out_of_range.get(region, 0) + 1
+                continue
+            got = values[width * k:width * k + width]
+            ef = relative_error([got[0]], [f])
+            if width == 5:
+                ef = max(ef, relative_error([got[4]], [f]))
+            eg = relative_error(got[1:4], g)
+            ef, eg = (math.inf if e != e else e for e in (ef, eg))  # NaN: fails
+            if checked:
+                count += 1
+                failures += not (ef <= args.tolerance and eg <= args.tolerance)
+            d = per_degree.setdefault((family, degree, region), [0.0, 0.0])
+            d[0], d[1] = max(d[0], ef), max(d[1], eg)
+            w = worst.setdefault((family, checked), [0.0, "", 0.0, ""])
+            if ef > w[0]:
+                w[0], w[1] = ef, key
+            if eg > w[2]:
+                w[2], w[3] = eg, key
+    print(f"check_glsl_numeric ({args.backend}): {len(results)} kernel-regions x {args.points} points, "
+          f"checked: {', '.join(args.regions) or 'points only'}; reported: {', '.join(args.report_regions) or '-'}; "
+          f"tolerance {args.tolerance:g}")
+    for (family, checked), (ef, nf, eg, ng) in sorted(worst.items()):
+        what = "" if checked else " (reported regions)"
+        print(f"  {family:16s} worst f rel. error {ef:.2e} ({nf}), worst grad {eg:.2e} ({ng}){what}")
+    print("  worst per family, degree and region (f / grad; every weight degree):")
+    for (family, degree, region), (ef, eg) in sorted(per_degree.items()):
+        mark = "" if ef <= args.tolerance and eg <= args.tolerance else "  above"
+        if region in args.report_regions:
+            mark += "  (reported)" if mark else ""
+        print(f"    {family:16s} i={degree:2d} {REGION_TITLE.get(region, region):14s} {ef:.1e} / {eg:.1e}{mark}")
+    for region, n in sorted(out_of_range.items()):
+        print(f"  {region}: {n} points left out, the reference outside [{FLOAT_RANGE[0]:g}, {FLOAT_RANGE[1]:g}]")
+    if failures:
+        print(f"check_glsl_numeric: {failures} of {count} checked points above the tolerance")
+    return 1 if failures else 0
 
 if __name__ == "__main__":
     sys.exit(main())

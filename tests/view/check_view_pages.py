@@ -85,7 +85,7 @@ def expected_terms(node, where, out):
             continue
         if child.get("type") != "segment":
             return path
-        if kernel["family"] not in SUPPORTED_FAMILIES or (kernel["family"] == "compact" and kernel["degree"] % 2 == 0):
+        if kernel["family"] not in SUPPORTED_FAMILIES:
             return path
         # The step bound of inverse and Cauchy terms needs w >= 0 on [0, 1]
         # (sampled here, the command solves for the least value).
