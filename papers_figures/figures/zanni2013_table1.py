@@ -36,8 +36,9 @@ FIGURE = Figure(
             "with 2 GB of RAM.",
     original_caption="Temps d'exécution d'un \"Marching Triangle\" non-adaptatif sur un Intel Core 2 Duo (2.4 GHz, "
                      "1 coeur utilisé) équipé de 2 Go de mémoire vive.",
-    section="our meshes of our skeletons of figs 19b and 20c and of an ant of our own (the paper's skeletons are "
-            "not given, nor its ant); the image is our ant's mesh",
+    section="our meshes of our skeletons of figs 19b and 20c and of two ants of our own, a Cauchy 4 one and the "
+            "compact-6 ant of Figure 1 (segments and triangles, the paper's class; the paper's skeletons are not given, "
+            "nor its ant); the image is the Cauchy ant's mesh",
     skeletons=[ANT], kernel="SCALIS Cauchy 4, σ = 1", iso="1", view="the fixed camera of render3d",
     size=(640, 300))
 
