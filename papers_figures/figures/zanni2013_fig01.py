@@ -84,14 +84,17 @@ def topology_of_cauchy(ctx, prims):
 
 
 def describe(errors):
-    return "no surface crossing on some rays" if np.isnan(errors).any() else f"max |r/τ − 1| = {fmt(np.max(np.abs(errors)))}"
+    if np.isnan(errors).any():
+        return "no surface crossing on some rays"
+    return f"r/τ from {fmt(1 + np.min(errors))} to {fmt(1 + np.max(errors))}, max |r/τ − 1| = {fmt(np.max(np.abs(errors)))}"
 
 
 def draw(ctx):
     prims = ant.primitives()
     classical = ant.classical_ant(prims)
     s_err = thickness_errors(ctx.field_of(prims), prims, 1.1, THICKNESS_PROBES)
-    c_err = thickness_errors(ctx.field_of(classical), prims, 3.0, THICKNESS_PROBES[:2])   # the antennae
+    # the antennae, rays to 10 τ: the classical antenna is that much wider (it ends before the head)
+    c_err = thickness_errors(ctx.field_of(classical), prims, 10.0, THICKNESS_PROBES[:2])
     s_leg, c_leg = leg_ratios(ctx, prims, prims, 1.5), leg_ratios(ctx, classical, prims, 6.0)
     m = surface3d.mesh(ctx, {"primitives": prims}, 1.0, ctx.res(0.25, 0.5), "ant", distance=ctx.res(0.004, 0.02))
     if ctx.image_path is not None:
@@ -112,7 +115,7 @@ def draw(ctx):
         Claim("(wrong model) a classical convolution of the same skeleton (one kernel k_R^6, R = 1.2, each part "
               "weighted to have its τ alone; no branch: R < 2.2) fails the same check on the antennae",
               f"antennae: {describe(c_err)}; f on the antenna's axis {fmt(ctx.field_of(classical).f([ant.segment_probe(prims, 14, 0.5)[0]])[0])} "
-              f"(level 1): the head and the antenna's own neighbours swamp it",
+              f"(level 1): the head and the antenna's own neighbours swell it",
               bool(np.isnan(c_err).any() or np.max(np.abs(c_err)) > 1e3 * RELATIVE_TOLERANCE)),
         Claim("(no blending bulge; compact support: 'localised influences, limiting blends at a distance', §4.3) "
               "where a leg leaves the body's support it is the leg alone",
