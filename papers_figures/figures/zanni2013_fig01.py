@@ -86,7 +86,10 @@ def topology_of_cauchy(ctx, prims):
 def describe(errors):
     if np.isnan(errors).any():
         return "no surface crossing on some rays"
-    return f"r/τ from {fmt(1 + np.min(errors))} to {fmt(1 + np.max(errors))}, max |r/τ − 1| = {fmt(np.max(np.abs(errors)))}"
+    spread = np.max(np.abs(errors))
+    if spread <= RELATIVE_TOLERANCE:
+        return f"max |r/τ − 1| = {fmt(spread)}"
+    return f"r/τ from {fmt(1 + np.min(errors))} to {fmt(1 + np.max(errors))}, max |r/τ − 1| = {fmt(spread)}"
 
 
 def draw(ctx):
