@@ -14,9 +14,9 @@ from figlib.figure import Figure
 
 # Probes on each mandible (barycentric, vertex order of the file: base outer, base inner, tip): the
 # points nearest the head where the compact guarantee applies (figlib.ant.triangle_probe confirms).
-MANDIBLES = [(11, [0.35, 0.25, 0.4]), (12, [0.35, 0.25, 0.4])]
+MANDIBLES = [(2, [0.35, 0.25, 0.4]), (3, [0.35, 0.25, 0.4])]
 RELATIVE_TOLERANCE = 1e-9      # the guarantee is exact: rounding and the root finder only (zanni2013_fig01)
-HEAD = (9, 10)                 # the head's two triangles (one plane, one radius)
+HEAD = (0, 1)                   # the head's two triangles (one plane, one radius)
 HEAD_CENTRE = np.array([1.6, 0.0, 1.45])
 HEAD_REACH = 2.6               # the region: within this of HEAD_CENTRE (all the camera sees)
 VIEW = [1.0, -0.35, 0.9]       # from the front, a little right, above
