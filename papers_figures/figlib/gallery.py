@@ -35,8 +35,9 @@ measure; no paper states these numbers.
 RENDERER = """## The 3-D renderer
 
 `papers_figures/render3d/render_mesh.py MESH.ply OUT.png` renders a mesh written by
-`skelconv::write_mesh` with POV-Ray (`mesh2` with the per-vertex normals; one camera
-direction, light and colour for every figure). Its test mesh, a UV sphere written by
+`skelconv::write_mesh` with POV-Ray (`mesh2` with the per-vertex normals; one light and
+colour for every figure, one default camera direction that a figure may replace, and the
+skeleton drawn inside a translucent surface where a figure asks for it). Its test mesh, a UV sphere written by
 `render3d/uv_sphere.cpp` through `write_mesh`:
 
 ![the renderer's test mesh](images/render3d_uv_sphere.png)

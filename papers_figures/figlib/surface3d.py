@@ -47,8 +47,9 @@ class Mesh:
         return self.stats.get("closed") == "yes" and self.stats.get("manifold") == "yes"
 
 
-def mesh(ctx, skeleton, iso, size, name, method="cgal"):
-    """`skelconv mesh` of the skeleton (a dict, docs/cli_skeleton.md) at level iso and facet size `size`.
+def mesh(ctx, skeleton, iso, size, name, method="cgal", distance=None):
+    """`skelconv mesh` of the skeleton (a dict, docs/cli_skeleton.md) at level iso and facet size `size`
+    (distance: the facet-to-surface distance, skelconv's default size/10 when None).
     Raises MeshError with the command and skelconv's message when it fails."""
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, f"{name}.json")
@@ -56,12 +57,12 @@ def mesh(ctx, skeleton, iso, size, name, method="cgal"):
             json.dump(skeleton, handle)
         out = os.path.join(tmp, f"{name}.ply")
         command = [ctx.skelconv, "mesh", path, "-o", out, "--iso", repr(float(iso)), "--size", repr(float(size)),
-                   "--method", method, "--quiet"]
+                   "--method", method, "--quiet"] + ([] if distance is None else ["--distance", repr(float(distance))])
         start = time.monotonic()
         run = subprocess.run(command, capture_output=True, text=True)
         seconds = time.monotonic() - start
         shown = f"skelconv mesh {name}.json -o {name}.ply --iso {float(iso):.6g} --size {float(size):g}" + \
-            ("" if method == "cgal" else f" --method {method}")
+            ("" if method == "cgal" else f" --method {method}") + ("" if distance is None else f" --distance {distance:g}")
         if run.returncode != 0:
             raise MeshError(f"{shown}: exit {run.returncode}: {run.stderr.strip()}")
         stats = dict(line.split(": ", 1) for line in run.stdout.splitlines() if ": " in line)
@@ -76,15 +77,23 @@ def common_frame(meshes):
     return povray.framing(points)
 
 
-def render_one(mesh_, png, width, height, frame=None, colours=None):
-    povray.render(mesh_.vertices, mesh_.normals, mesh_.faces, png, width, height, frame=frame, colours=colours)
+def render_one(mesh_, png, width, height, frame=None, colours=None, view=None, overlay=None):
+    povray.render(mesh_.vertices, mesh_.normals, mesh_.faces, png, width, height, frame=frame, colours=colours,
+                  view=view, overlay=overlay)
 
 
-def panels(ctx, items, size, shared_frame=True, rows=1, frame=None):
+def overlay(primitives, tube_radius):
+    """The skeleton drawn inside a translucent surface (povray.skeleton_overlay): pass it to panels()."""
+    return povray.skeleton_overlay(primitives, tube_radius)
+
+
+def panels(ctx, items, size, shared_frame=True, rows=1, frame=None, view=None, overlays=None):
     """Renders [(Mesh, title), ...] (or (Mesh, title, per-vertex colours)) side by side
     (rows × ceil(n/rows) panels) into ctx.image_path at size (width, height) px.
     shared_frame: one camera framing radius for all panels, centred on each mesh's own
-    centre, so that sizes compare; frame = (centre, radius): that framing for every panel."""
+    centre, so that sizes compare; frame = (centre, radius): that framing for every panel.
+    view: the figure's camera direction (povray.scene), the default one when None.
+    overlays: per panel, a skeleton overlay (overlay()) or None."""
     if ctx.image_path is None:
         return
     cols = -(-len(items) // rows)
@@ -99,7 +108,7 @@ def panels(ctx, items, size, shared_frame=True, rows=1, frame=None):
             colours = item[2] if len(item) > 2 else None
             png = os.path.join(tmp, f"panel{k}.png")
             own = frame if frame is not None else (povray.framing(m.vertices)[0], radius) if shared_frame else None
-            render_one(m, png, width, height, own, colours)
+            render_one(m, png, width, height, own, colours, view, overlays[k] if overlays else None)
             ax.imshow(plot.plt.imread(png), interpolation="nearest")
             ax.set_title(title)
     for ax in axes.flat:

@@ -1,8 +1,9 @@
 """Zanni et al. 2013, Table 1: mesher times. Ours: `skelconv mesh` (CGAL
 Mesh_3 + Newton projection, exact normals) on the skeletons of our figs 19b
-and 20c, on fig 20c at a finer facet size (~100k triangles), and on an ant
-of our own (24 SCALIS segments, the paper's ant is not given; drawn as the
-table's image), beside the paper's (a non-adaptive marching-triangles mesher). Times depend on the
+and 20c, on fig 20c at a finer facet size (~100k triangles), on an ant
+of our own (24 SCALIS segments, Cauchy kernel; drawn as the table's image),
+and on the ant of Figure 1 (the paper's class: SCALIS segments and triangles,
+compact kernel of degree 6; the paper's own ant is not given), beside the paper's (a non-adaptive marching-triangles mesher). Times depend on the
 machine and its load: the gallery prints them, no check asserts them; the
 checks are on the meshes (closed manifolds, triangle counts)."""
 import os
@@ -10,7 +11,7 @@ import platform
 import re
 import subprocess
 
-from figlib import surface3d
+from figlib import ant as fig1_ant, surface3d
 from figlib.claims import Claim
 from figlib.figure import Figure, load_skeleton
 from figures import zanni2013_fig19, zanni2013_fig20
@@ -24,6 +25,8 @@ PAPER_ANT_RATE = 94_953 / 3.58          # triangles per second
 # fast per triangle as the paper's 2008 single core. Checked only in full runs (a timing under
 # ctest would assert the machine's load, not the code) and expected to fall short today.
 RATE_GOAL = 1.0
+# The ant of Figure 1, meshed as that figure meshes it (one CGAL thread, like the paper's one core).
+COMPACT_ANT_SIZE, COMPACT_ANT_DISTANCE = 0.25, 0.004
 LARGE_TRIANGLES = 50_000      # the fine mesh must be of the ~100k-triangle class
 ANT = "zanni_table1_ant.json"  # our ant: gaster, petiole, thorax, head, 6 two-segment legs, antennae, mandibles
 
@@ -33,8 +36,9 @@ FIGURE = Figure(
             "with 2 GB of RAM.",
     original_caption="Temps d'exécution d'un \"Marching Triangle\" non-adaptatif sur un Intel Core 2 Duo (2.4 GHz, "
                      "1 coeur utilisé) équipé de 2 Go de mémoire vive.",
-    section="our meshes of our skeletons of figs 19b and 20c and of an ant of our own (the paper's skeletons are "
-            "not given, nor its ant); the image is our ant's mesh",
+    section="our meshes of our skeletons of figs 19b and 20c and of two ants of our own, a Cauchy 4 one and the "
+            "compact-6 ant of Figure 1 (segments and triangles, the paper's class; the paper's skeletons are not given, "
+            "nor its ant); the image is the Cauchy ant's mesh",
     skeletons=[ANT], kernel="SCALIS Cauchy 4, σ = 1", iso="1", view="the fixed camera of render3d",
     size=(640, 300))
 
@@ -66,7 +70,9 @@ def draw(ctx):
             ("Fig. 20(c)", "fig20c", fig20c, coarse, "cgal"),
             ("Fig. 20(c), grid", "fig20c", fig20c, coarse, "grid"),
             ("Fig. 20(c), finer, grid", "fig20c", fig20c, fine, "grid"),
-            ("Ant (ours, 24 segments), grid", "ant", load_skeleton(ANT), ctx.res(0.05, 0.2), "grid")]
+            ("Ant (ours, 24 segments), grid", "ant", load_skeleton(ANT), ctx.res(0.05, 0.2), "grid"),
+            ("Ant of Fig. 1 (ours, compact 6: 34 segments, 4 triangles)", "ant_fig1",
+             {"primitives": fig1_ant.primitives()}, ctx.res(COMPACT_ANT_SIZE, 0.5), "cgal")]
     lines = [f"Our machine: {machine()}, {os.cpu_count()} cores (`lscpu`; the build machine, shared with other "
              f"jobs while these times were taken: load average {os.getloadavg()[0]:.1f} when the table started). "
              "`--method cgal` runs on 1 thread, `--method grid` (OpenVDB) on "
@@ -77,7 +83,8 @@ def draw(ctx):
              "| field evaluations |", "|---|---|---|---|---|---|---|"]
     meshes = []
     for name, stem, skeleton, size, method in rows:
-        m = surface3d.mesh(ctx, skeleton, 1.0, size, stem, method=method)
+        distance = ctx.res(COMPACT_ANT_DISTANCE, 0.02) if stem == "ant_fig1" else None
+        m = surface3d.mesh(ctx, skeleton, 1.0, size, stem, method=method, distance=distance)
         meshes.append(m)
         paper = PAPER_ROWS.get(name, ("—", "—"))
         evaluations = field_time(m)[1]
@@ -85,8 +92,8 @@ def draw(ctx):
                      f"{m.seconds:.2f} | {evaluations} |")
     for name in ("Ant (medium resolution)", "Ant head (high resolution)"):
         lines.append(f"| {name} | {PAPER_ROWS[name][0]} | {PAPER_ROWS[name][1]} | — (the paper's ant is not "
-                     "given; ours is the row above) | | | |")
-    ant = meshes[-1]
+                     "given; ours are the rows above) | | | |")
+    ant, compact = meshes[-2], meshes[-1]
     seconds, evaluations = field_time(ant)
     per_evaluation = seconds / evaluations
     lines += ["", f"Our cost grows with the number of primitives: every one is evaluated at every point (no "
@@ -94,10 +101,11 @@ def draw(ctx):
                   f"{per_evaluation * 1e6:.1f} µs per evaluation of its 24 segments (field time ÷ evaluations)."]
     ctx.markdown = "\n".join(lines)
     surface3d.panels(ctx, [(ant, f"our ant, 24 SCALIS segments: {ant.stats['triangles']} triangles "
-                                 f"(--method grid --size {rows[-1][3]:g})")], FIGURE.size)
+                                 f"(--method grid --size {rows[-2][3]:g})")], FIGURE.size)
     ctx.log("\n" + ctx.markdown)
-    large = int(meshes[-2].stats["triangles"])
+    large = int(meshes[-3].stats["triangles"])
     rate = int(ant.stats["triangles"]) / ant.seconds
+    compact_rate = int(compact.stats["triangles"]) / compact.seconds
     timing = [] if ctx.quick else [Claim(
         f"(goal) our ant meshes at ≥ {RATE_GOAL:g} × the paper's rate ({PAPER_ANT_RATE:,.0f} triangles/s on "
         f"{PAPER_MACHINE})",
@@ -105,7 +113,15 @@ def draw(ctx):
         f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}): {rate / PAPER_ANT_RATE:.3f} × the paper's",
         rate >= RATE_GOAL * PAPER_ANT_RATE, expect_agreement=False,
         note="a known shortfall: every primitive is evaluated at every point (no culling) and the mesher refines "
-             "and projects with the exact gradient; measured on this branch's mesher, under the load shown")]
+             "and projects with the exact gradient; measured on this branch's mesher, under the load shown"),
+        Claim(f"(goal) the ant of Fig. 1, the paper's skeleton class, meshes at ≥ {RATE_GOAL:g} × the paper's rate "
+              f"on one thread as the paper used one core",
+              f"{compact_rate:,.0f} triangles/s ({compact.stats['triangles']} in {compact.seconds:.2f} s, --method cgal, "
+              f"1 thread, load average {os.getloadavg()[0]:.1f}): {compact_rate / PAPER_ANT_RATE:.3f} × the paper's",
+              compact_rate >= RATE_GOAL * PAPER_ANT_RATE, expect_agreement=False,
+              note="a known shortfall: CGAL's Delaunay refinement with exact projection is slower per triangle than "
+                   "a non-adaptive marching triangles; the compact supports keep the field's share small "
+                   "(the field time is in the table)")]
     return timing + [Claim("every mesh of the table is a closed manifold",
                   ", ".join(f"{m.stats['triangles']} triangles closed {m.stats['closed']}" for m in meshes),
                   all(m.closed for m in meshes)),

@@ -1,7 +1,9 @@
 """Renders a triangle mesh with POV-Ray, headless: the mesh as a `mesh2` with
-its per-vertex normals, one fixed camera direction, light and colour for
-every figure (the camera is framed on the mesh's bounding sphere), PNG
-without metadata (same mesh, same bytes).
+its per-vertex normals, one default camera direction (a figure may pass its
+own), light and colour for every figure (the camera is framed on the mesh's
+bounding sphere, or on a frame the figure gives), optionally the skeleton
+drawn over it (skeleton_overlay), PNG without metadata (same mesh, same
+bytes).
 
 skelconv's frame is right-handed with z up; POV-Ray's is left-handed with y
 up. Swapping y and z maps one to the other (a reflection, so the picture is
@@ -17,6 +19,12 @@ VIEW_DIRECTION = np.array([1.0, -1.6, 0.9])
 CAMERA_ANGLE = 30.0                   # horizontal field of view, degrees
 FRAME_MARGIN = 1.08                   # the bounding sphere fills 1/1.08 of the narrower side
 SURFACE = "rgb <0.86, 0.55, 0.36>"    # one colour for every surface
+# The skeleton overlay: segments as dark tubes, triangles as translucent blue plates, drawn
+# through a surface made translucent so that the skeleton inside it shows.
+OVERLAY_SEGMENT = "rgb <0.12, 0.12, 0.16>"
+OVERLAY_TRIANGLE = "rgbf <0.15, 0.35, 0.95, 0.35>"
+OVERLAY_SURFACE_FILTER = 0.0           # the surface's pigment keeps its colour...
+OVERLAY_SURFACE_TRANSMIT = 0.72        # ...and lets 72 % of the light through
 ANTIALIAS = "+A0.1 +AM2 +R3 -J"       # adaptive supersampling, no jitter: deterministic
 
 SCENE = """#version 3.7;
@@ -73,13 +81,16 @@ def framing(vertices):
     return centre, float(np.max(np.linalg.norm(vertices - centre, axis=1)))
 
 
-def scene(body, centre, radius, width, height):
-    """The fixed scene (camera, lights, texture `Surface`) around `body` (POV-Ray text)."""
+def scene(body, centre, radius, width, height, view=None):
+    """The fixed scene (camera, lights, texture `Surface`) around `body` (POV-Ray text);
+    view: the direction from the centre to the camera (skelconv coordinates), VIEW_DIRECTION
+    when None."""
     half_angle = np.radians(CAMERA_ANGLE) / 2
     # the narrower field of view decides the distance
     narrow = min(half_angle, np.arctan(np.tan(half_angle) * height / width))
     distance = FRAME_MARGIN * radius / np.sin(narrow)
-    direction = VIEW_DIRECTION / np.linalg.norm(VIEW_DIRECTION)
+    direction = np.asarray(VIEW_DIRECTION if view is None else view, float)
+    direction = direction / np.linalg.norm(direction)
     camera = centre + distance * direction
     key = centre + 3 * distance * np.array([0.3, -1.0, 1.6]) / np.linalg.norm([0.3, -1.0, 1.6])
     fill = centre + 3 * distance * np.array([-1.0, -0.3, 0.2]) / np.linalg.norm([-1.0, -0.3, 0.2])
@@ -116,14 +127,39 @@ def strip_png_metadata(path):
         handle.write(b"".join(out))
 
 
-def render(vertices, normals, faces, png_path, width=640, height=480, povray="povray", frame=None, colours=None):
+def skeleton_overlay(primitives, tube_radius):
+    """POV-Ray text drawing a skeleton (docs/cli_skeleton.md primitives): every primitive with
+    end points `a`, `b` as a tube of radius tube_radius with round ends, every primitive with
+    `vertices` (triangles, polygons) as a translucent plate. Drawn with a surface made
+    translucent (render(overlay=...)), so that the skeleton inside shows."""
+    parts = []
+    for p in primitives:
+        if "a" in p and "b" in p:
+            a, b = _pov(p["a"]), _pov(p["b"])
+            parts.append(f"union {{ cylinder {{ {a}, {b}, {tube_radius:.9g} }} sphere {{ {a}, {tube_radius:.9g} }} "
+                         f"sphere {{ {b}, {tube_radius:.9g} }} pigment {{ {OVERLAY_SEGMENT} }} finish {{ Finish }} }}")
+        elif "vertices" in p:
+            v = p["vertices"]
+            fans = " ".join(f"triangle {{ {_pov(v[0])}, {_pov(v[k])}, {_pov(v[k + 1])} }}" for k in range(1, len(v) - 1))
+            parts.append(f"mesh {{ {fans} texture {{ pigment {{ {OVERLAY_TRIANGLE} }} finish {{ Finish }} }} }}")
+    return "\n".join(parts)
+
+
+def render(vertices, normals, faces, png_path, width=640, height=480, povray="povray", frame=None, colours=None,
+           view=None, overlay=None):
     """Renders the mesh to png_path, the camera framed on `frame` = (centre,
     radius) (default: the mesh's own bounding sphere; figures comparing
-    several meshes pass one frame for all, so that their scales match).
-    Raises RuntimeError with POV-Ray's message on failure."""
+    several meshes pass one frame for all, so that their scales match),
+    looking along -view (scene()). overlay: POV-Ray text (skeleton_overlay) drawn
+    inside the surface, which is then translucent. Raises RuntimeError with
+    POV-Ray's message on failure."""
     centre, radius = frame if frame is not None else framing(vertices)
-    render_scene(scene(mesh2(vertices, normals, faces, colours), centre, radius, width, height), png_path, width, height,
-                 povray)
+    body = mesh2(vertices, normals, faces, colours)
+    if overlay:
+        see_through = (f"#declare Surface = texture {{ pigment {{ {SURFACE} filter {OVERLAY_SURFACE_FILTER:g} "
+                       f"transmit {OVERLAY_SURFACE_TRANSMIT:g} }} finish {{ Finish }} }}")
+        body = see_through + "\n" + overlay + "\n" + body
+    render_scene(scene(body, centre, radius, width, height, view), png_path, width, height, povray)
 
 
 def render_scene(text, png_path, width, height, povray="povray"):
