@@ -83,21 +83,15 @@ struct MomentNode {
   T jacobian;
 };
 
-/// The sum of positive terms in four interleaved partial sums: the adds of
-/// one partial sum do not wait for the others', and the result is within
-/// N ε of the exact sum like any order of summation of positive terms.
+/// sum + terms[0] + terms[1] + … in this order: the order in which the
+/// nodes were always added, so that every moment rounds as it did when
+/// each node was added to `out` in turn (the verifier's baselines). The
+/// moments of different k and m are independent chains, which the
+/// processor overlaps.
 template <class T, std::size_t N>
-T sum_of_positive(const std::array<T, N>& terms) {
-  T s0(0), s1(0), s2(0), s3(0);
-  std::size_t j = 0;
-  for (; j + 4 <= N; j += 4) {
-    s0 += terms[j];
-    s1 += terms[j + 1];
-    s2 += terms[j + 2];
-    s3 += terms[j + 3];
-  }
-  for (; j < N; ++j) s0 += terms[j];
-  return (s0 + s1) + (s2 + s3);
+T add_in_order(T sum, const std::array<T, N>& terms) {
+  for (std::size_t j = 0; j < N; ++j) sum += terms[j];
+  return sum;
 }
 
 /// Adds the N-point Gauss–Legendre rule over x ∈ [−1, 1] (after `map`) for
@@ -107,8 +101,8 @@ T sum_of_positive(const std::array<T, N>& terms) {
 ///
 /// The nodes are placed first, then each moment is one sum over them: the
 /// node loops have a compile-time length and no dependence between nodes,
-/// so their divisions and products overlap, and the sums are accumulated in
-/// registers rather than in `out`.
+/// so their divisions and products overlap, and each sum is accumulated in
+/// a register rather than in `out`.
 template <class T, unsigned N, NodeMap map, class NodeAt>
 void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
   using std::sqrt;
@@ -151,7 +145,7 @@ void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, 
   for (int l = levels - 1; l >= 0; --l) {
     std::array<T, N> term = weight;
     for (int k = 0; k <= k_max; ++k) {
-      out[l * per_level + k] += sum_of_positive(term);
+      out[l * per_level + k] = add_in_order(out[l * per_level + k], term);
       for (unsigned j = 0; j < N; ++j) term[j] *= t[j];
     }
     for (unsigned j = 0; j < N; ++j) weight[j] *= q[j];
