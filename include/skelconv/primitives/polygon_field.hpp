@@ -48,7 +48,7 @@
 #include "skelconv/primitives/polygon_edge_input.hpp"
 #include "skelconv/detail/integer_power.hpp"
 #include "skelconv/detail/plane_height.hpp"
-#include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/kernels/read_trait.hpp"
 #include "skelconv/primitives/segment_input.hpp"  // KernelFamily
 
 namespace skelconv {
@@ -82,9 +82,11 @@ struct PolygonKernelForm {
   T alpha = T(1), beta = T(0);  ///< otherwise K = (α r² + β)^(−i/2) (the trait's quadratic_form)
 };
 
+/// The form of poly.family (the default form for a value that names no
+/// family: the generated table has no kernel for it either).
 template <class T>
 PolygonKernelForm<T> polygon_kernel_form(const PolygonInput<T>& poly) {
-  return kernels::with_trait<kernels::on_polygons>(poly.family, [&](auto trait) {
+  const auto form_of = [&](auto trait) {
     using K = typename decltype(trait)::type;
     PolygonKernelForm<T> form;
     form.singular = K::singular_at_zero;
@@ -95,7 +97,8 @@ PolygonKernelForm<T> polygon_kernel_form(const PolygonInput<T>& poly) {
       form.beta = q[1];
     }
     return form;
-  });
+  };
+  return kernels::read_trait<PolygonKernelForm<T>>(poly.family, form_of, PolygonKernelForm<T>{});
 }
 
 namespace detail {
