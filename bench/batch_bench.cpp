@@ -143,9 +143,12 @@ void bench_simd(benchmark::State& state, const KernelRef* k, BatchFunction funct
 
 /// The runtime's Segment with the benchmark's A, B, weight, s and R.
 Segment runtime_segment(const KernelRef& k) {
-  const KernelSpec spec = k.family == KernelFamily::inverse  ? KernelSpec::inverse(k.degree)
-                          : k.family == KernelFamily::cauchy ? KernelSpec::cauchy(k.degree, bench_s)
-                                                             : KernelSpec::compact(k.degree, bench_R);
+  // Each family reads only its own parameters (kernel_spec.hpp).
+  KernelSpec spec;
+  spec.family = k.family;
+  spec.degree = k.degree;
+  spec.s = bench_s;
+  spec.R = bench_R;
   return Segment(Vec3(bench_a[0], bench_a[1], bench_a[2]), Vec3(bench_b[0], bench_b[1], bench_b[2]), spec,
                  std::span<const double>(bench_weight.data(), std::size_t(k.weight_degree + 1)));
 }

@@ -80,7 +80,7 @@ Input segment_input(KernelFamily family) {
 }
 
 bool clip_compact_support(KernelFamily family, Input& in) {
-  if (family != KernelFamily::compact) return true;
+  if (!kernels::family_facts(family).finite_support) return true;
   const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
   if (!clip) return false;
   in.t0 = clip->t0;
@@ -108,7 +108,7 @@ std::vector<Input> generic_region_inputs(KernelFamily family, double d) {
     if (distance < 0.9 * target || distance > 1.1 * target) continue;
     Input in = segment_input(family);
     in.p = p;
-    if (family == KernelFamily::compact) in.R = generic_region_compact_R * L;
+    if (kernels::family_facts(family).finite_support) in.R = generic_region_compact_R * L;
     if (!clip_compact_support(family, in)) continue;
     inputs.push_back(in);
   }

@@ -43,6 +43,18 @@ long double definition(const KernelSpec& k, long double d) {
   }
 }
 
+/// K(0): the trait's value at 0 in long double (a different rounding from
+/// max_value's own closed form, e.g. Ferley's (R + e)/(R − e)); +inf for a
+/// kernel singular at 0.
+template <class K>
+long double definition_or_value(const K& k, long double r) {
+  if constexpr (K::singular_at_zero) {
+    return r == 0 ? INFINITY : k.value(r);
+  } else {
+    return k.value(r);
+  }
+}
+
 std::vector<KernelSpec> new_kernels() {
   return {KernelSpec::soft(1.3), KernelSpec::soft(3.7), KernelSpec::wyvill(0.8), KernelSpec::wyvill(2.5),
           KernelSpec::ferley(0.4, 1.5), KernelSpec::ferley(1.0, 1.2), KernelSpec::gaussian(0.7, 1.0),
@@ -77,6 +89,97 @@ TEST(KernelFamilies, DerivativesMatchExtendedDifferences) {
           },
           kernel);
     }
+  }
+}
+
+/// One kernel of every family, with parameters away from 1 (so that a
+/// misplaced R, s or a shows).
+std::vector<KernelSpec> every_family() {
+  std::vector<KernelSpec> specs = new_kernels();
+  for (int i : {2, 3, 4, 7}) {
+    specs.push_back(KernelSpec::inverse(i));
+    specs.push_back(KernelSpec::cauchy(i, 2.3));
+    specs.push_back(KernelSpec::compact(i, 1.7));
+  }
+  return specs;
+}
+
+// max_slope is the largest |K'|: no sample of the definition's derivative
+// (an extended-precision difference of value()) exceeds it, and a fine grid
+// comes within its spacing of it.
+TEST(KernelFamilies, MaxSlopeIsTheLargestDerivative) {
+  for (const KernelSpec& spec : every_family()) {
+    const double bound = kernels::max_slope(spec);
+    if (spec.family == KernelFamily::inverse) {
+      EXPECT_TRUE(std::isinf(bound));
+      continue;
+    }
+    const kernels::RadialKernel kernel = kernels::make_radial_kernel(spec);
+    const double length = kernels::length_scale(spec);
+    double largest = 0.0;
+    for (double d = 1e-3 * length; d < 5.0 * length; d += 1e-3 * length) {
+      std::visit(
+          [&](const auto& k) {
+            const Extended h(1e-20), x(d);
+            largest = std::max(largest, std::abs(static_cast<double>((k.value(x + h) - k.value(x - h)) / (2 * h))));
+          },
+          kernel);
+    }
+    EXPECT_LE(largest, bound * (1 + 1e-12)) << family_name(spec.family) << " " << spec.degree;
+    // The grid's spacing from the maximum (at R for compact i = 2) costs ≤ 1e-3.
+    EXPECT_GE(largest, bound * (1 - 3e-3)) << family_name(spec.family) << " " << spec.degree;
+  }
+}
+
+// max_value is K(0), the largest value (+inf for the singular inverse kernel).
+TEST(KernelFamilies, MaxValueIsTheValueAtZero) {
+  for (const KernelSpec& spec : every_family()) {
+    const kernels::RadialKernel kernel = kernels::make_radial_kernel(spec);
+    const double at_zero = std::visit([](const auto& k) { return double(definition_or_value(k, 0.0L)); }, kernel);
+    if (std::isinf(at_zero)) {
+      EXPECT_TRUE(std::isinf(kernels::max_value(spec))) << family_name(spec.family);
+      continue;
+    }
+    EXPECT_NEAR(kernels::max_value(spec), at_zero, 4e-16 * at_zero) << family_name(spec.family);
+  }
+}
+
+// scaling_power: every length times λ, the length parameters with them,
+// gives λ^p K(r/λ) (radial_kernel.hpp); length_scale scales by λ.
+TEST(KernelFamilies, ScalingPowerAndLengthScale) {
+  const double lambda = 2.75;
+  for (const KernelSpec& spec : every_family()) {
+    KernelSpec scaled = spec;
+    scaled.R *= lambda;
+    scaled.e *= lambda;
+    scaled.s /= lambda * lambda;
+    scaled.a /= lambda * lambda;
+    const kernels::RadialKernel k = kernels::make_radial_kernel(spec);
+    const kernels::RadialKernel k_scaled = kernels::make_radial_kernel(scaled);
+    const int p = kernels::scaling_power(spec);
+    EXPECT_EQ(p, spec.family == KernelFamily::inverse ? -spec.degree : 0) << family_name(spec.family);
+    for (double r = 0.0371; r < 3.0; r += 0.0731) {
+      const double value = std::visit([&](const auto& kk) { return kk.value(r); }, k);
+      const double value_scaled = std::visit([&](const auto& kk) { return kk.value(lambda * r); }, k_scaled);
+      // A few ulps of u = r/R, s r², a r², more near a support's edge.
+      EXPECT_NEAR(value_scaled, std::pow(lambda, p) * value, 1e-11 * std::abs(value_scaled))
+          << family_name(spec.family) << " r = " << r;
+    }
+    if (p == 0) {
+      EXPECT_NEAR(kernels::length_scale(scaled), lambda * kernels::length_scale(spec),
+                  1e-15 * kernels::length_scale(scaled));
+    }
+  }
+}
+
+// vanishes_far: the value is exactly 0 far out (a finite support, or an
+// underflow) for exactly the families that say so.
+TEST(KernelFamilies, VanishesFarAsDeclared) {
+  for (const KernelSpec& spec : every_family()) {
+    const kernels::RadialKernel kernel = kernels::make_radial_kernel(spec);
+    const double far = 1e3 * kernels::length_scale(spec);
+    const double value = std::visit([&](const auto& k) { return k.value(far); }, kernel);
+    EXPECT_EQ(value == 0.0, kernels::family_facts(spec.family).vanishes_far) << family_name(spec.family);
   }
 }
 

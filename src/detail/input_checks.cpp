@@ -33,12 +33,12 @@ void require_scalis_radius(double tau, int k) {
 }
 
 void require_scalis_sigma(KernelFamily family, double sigma) {
-  if (family != KernelFamily::compact) return require_positive_parameter(sigma, "kernel.sigma");
+  if (!kernels::family_facts(family).scalis_sigma_above_one) return require_positive_parameter(sigma, "kernel.sigma");
   if (!std::isfinite(sigma)) throw InputError(fmt::format("must be finite, got {}", sigma), "kernel.sigma");
   if (!(sigma > 1.0)) {
-    throw InputError(fmt::format("must be > 1 for the compact family, got {}: the kernel vanishes at distance "
+    throw InputError(fmt::format("must be > 1 for the {} family, got {}: the kernel vanishes at distance "
                                  "sigma·tau, so with sigma <= 1 the thickness tau is unreachable",
-                                 sigma),
+                                 family_name(family), sigma),
                      "kernel.sigma");
   }
 }

@@ -18,6 +18,13 @@ static_assert([]<std::size_t... i>(std::index_sequence<i...>) {
   return (RadialKernelTrait<std::variant_alternative_t<i, RadialKernel>> && ...);
 }(std::make_index_sequence<std::variant_size_v<RadialKernel>>{}));
 
+// Each trait's JSON name is family_name() of its enum value.
+static_assert([]<std::size_t... i>(std::index_sequence<i...>) {
+  return ((std::variant_alternative_t<i, RadialKernel>::name ==
+           family_name(std::variant_alternative_t<i, RadialKernel>::family)) &&
+          ...);
+}(std::make_index_sequence<std::variant_size_v<RadialKernel>>{}));
+
 void require_degree(std::string_view family, int degree, int min_degree, int max_degree) {
   if (degree < min_degree || degree > max_degree) {
     throw InputError(fmt::format("unsupported degree {} for the {} family on a point; supported: {}..{}", degree,

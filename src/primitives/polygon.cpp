@@ -213,7 +213,6 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   normal_ = newell_normal(in_frame(vertices_, frame_)).normalized();
   area_ = std::ldexp(area, 2 * e);
   dropped_axis_ = axis;
-  value_power_ = kernel.family == KernelFamily::inverse ? 2 - kernel.degree : 2;
 
   if (const auto crossing = detail::find_crossing_edges(projected_vertices_)) {
     // Name the edges by the indices and the direction the user gave.
@@ -233,6 +232,7 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   detail::require_convolution_family(kernel.family, "polygon");
   detail::require_valid_kernel_parameter(kernel);
   const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
+  value_power_ = 2 + kernels::scaling_power(kernel);  // f ~ area · K: λ^(2 + p) (radial_kernel.hpp)
   support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
   singular_at_zero_ = facts.singular_at_zero;
   if (facts.compact_levels.empty()) {

@@ -29,7 +29,8 @@ double ScalisSegment::normalisation(KernelFamily family, int degree, double sigm
 
 std::vector<int> ScalisSegment::supported_degrees(KernelFamily family) {
   std::vector<int> degrees;
-  if (family == KernelFamily::compact) {
+  const kernels::FamilyFacts facts = kernels::family_facts(family);
+  if (facts.on(kernels::on_scalis) && !facts.scalis_segment_generated) {  // scalis_compact_F's range
     for (int i = min_compact_degree; i <= max_compact_degree; ++i) degrees.push_back(i);
     return degrees;
   }
@@ -60,14 +61,14 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
                                  family_name(kernel.family), detail::format_degree_ranges(degrees)),
                      "kernel.degree");
   }
-  if (kernel.family != KernelFamily::compact) {
+  const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
+  if (facts.scalis_segment_generated) {
     generated_ = generated::find_scalis_segment_kernel<double>(kernel.family, kernel.degree);
     name_ = generated_->name;
   }
-  const kernels::ScalisSingularity singularity = kernels::with_trait<kernels::on_scalis>(
-      kernel.family, [](auto trait) { return decltype(trait)::type::scalis_singularity; });
-  diverges_on_segment_ = singularity == kernels::ScalisSingularity::on_segment;
-  diverges_at_zero_radius_ = singularity == kernels::ScalisSingularity::at_zero_radius;
+  diverges_on_segment_ = facts.scalis_singularity == kernels::ScalisSingularity::on_segment;
+  diverges_at_zero_radius_ = facts.scalis_singularity == kernels::ScalisSingularity::at_zero_radius;
+  may_vanish_ = facts.finite_support;  // outside its support
 
   // The segment's frame (skelconv/detail/scaled_frame.hpp): F is scale invariant
   // when the radii scale with the coordinates, so F' = F and ∇F = ∇'F'·2^−e.
@@ -79,9 +80,10 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
   input_.sigma = kernel.sigma;
   normalisation_ = normalisation(kernel.family, kernel.degree, kernel.sigma);
   evaluation_normalisation_ = normalisation_;
-  if (kernel.family == KernelFamily::inverse) {
-    // K(d) = (d/σ)^−i = σ^i d^−i and h = σ^i W_i: σ^i cancels exactly, so
-    // evaluate at σ = 1 (σ^i may be outside the double range).
+  if (facts.scale_free) {
+    // K(d/σ) = σ^−p K(d) for a kernel without a length of its own (inverse,
+    // p = −i: radial_kernel.hpp), and h carries the same σ^−p: σ cancels
+    // exactly, so evaluate at σ = 1 (σ^i may be outside the double range).
     input_.sigma = 1.0;
     evaluation_normalisation_ = normalisation(kernel.family, kernel.degree, 1.0);
   }
@@ -133,10 +135,9 @@ double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double
   });
   // Normalised in the frame, then brought back (F is scale invariant, ∇F
   // has units length^−1); a result outside the double range is an error.
-  const bool may_vanish = kernel_.family == KernelFamily::compact;  // outside its support
   const double scale = field_scale_;
   if (grad != nullptr) *grad = to_array(frame_.restore_gradient(scale * to_vec3(*grad), -1, name_, p));
-  return want_value ? frame_.restore_value(scale * F, 0, may_vanish, name_, p) : 0.0;
+  return want_value ? frame_.restore_value(scale * F, 0, may_vanish_, name_, p) : 0.0;
 }
 
 double ScalisSegment::value(const Vec3& p) const { return evaluate(p, true, nullptr); }

@@ -21,7 +21,7 @@ void require_supported_degree(const ScalisKernel& kernel) {
   const std::vector<int> degrees = ScalisTriangle::supported_degrees(kernel.family);
   if (std::find(degrees.begin(), degrees.end(), kernel.degree) != degrees.end()) return;
   const std::string family(family_name(kernel.family));
-  if (kernel.family != KernelFamily::compact && kernel.degree == 2) {
+  if (!kernels::family_facts(kernel.family).finite_support && kernel.degree == 2) {
     throw InputError(fmt::format("degree 2 of the SCALIS {} family is not available on a triangle: its "
                                  "normalisation h = ∬ K(√(1 + |u|²)) du over the plane diverges (K ~ d^-2); "
                                  "supported: {}",
@@ -48,8 +48,11 @@ double ScalisTriangle::normalisation(KernelFamily family, int degree, double sig
 
 std::vector<int> ScalisTriangle::supported_degrees(KernelFamily family) {
   std::vector<int> degrees;
-  for (int i = family == KernelFamily::compact ? min_compact_degree : min_degree; i <= max_degree; ++i)
-    degrees.push_back(i);
+  // The plane normalisation diverges for i ≤ 2 unless the support is finite
+  // (require_plane_degree).
+  const kernels::FamilyFacts facts = kernels::family_facts(family);
+  const int min = facts.on(kernels::on_scalis) && facts.finite_support ? min_compact_degree : min_degree;
+  for (int i = min; i <= max_degree; ++i) degrees.push_back(i);
   return degrees;
 }
 
@@ -168,7 +171,7 @@ FieldSample ScalisTriangle::restore(double F, const Vec3* grad, const Vec3& p) c
   // f = iso·F/h is scale invariant, ∇f has units length^−1 (scaled_frame.hpp).
   const char* what = uses_closed_form() ? "the constant-radius SCALIS triangle" : "the SCALIS triangle";
   const double scale = iso_ / normalisation_;
-  const bool may_vanish = kernel_.family == KernelFamily::compact;  // outside its support
+  const bool may_vanish = kernels::family_facts(kernel_.family).finite_support;  // outside its support
   FieldSample sample;
   sample.value = frame_.restore_value(scale * F, 0, may_vanish, what, p);
   if (grad != nullptr) sample.gradient = frame_.restore_gradient(scale * *grad, -1, what, p);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "skelconv/detail/integer_power.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "../detail/infinity.hpp"
 
 namespace skelconv::detail {
@@ -206,7 +208,12 @@ struct FanTriangle {
 
 /// Everything a ray needs, in the scaled local frame (see the header).
 struct Setup {
-  KernelFamily family;
+  /// The kernel vanishes where q = σ²τ² − d² ≤ 0 (compact): each ray is
+  /// integrated over its support only (radial_integral_compact).
+  bool finite_support;
+  /// Otherwise the integrand is τ^(i−2) D^(−i/2), D = d² + c σ²τ², with the
+  /// family's c (scalis_radius_term: 0 inverse, 1 Cauchy).
+  double radius_term;
   int degree;
   double sigma2;
   Vec2 O;          ///< apex
@@ -217,79 +224,88 @@ struct Setup {
   long evaluations = 0;
 };
 
-/// The inner (radial) integral along the ray from O in direction e, of
-/// length rho_max, with τ = tauO + a ρ. Values: ∫ K/τ² ρ dρ, ∫ (K'/d)/τ⁴ ρ dρ
-/// and ∫ (K'/d)/τ⁴ ρ² dρ, without the constant factor σ^(±i).
-Adaptive<3> radial_integral(Setup& s, const Vec2& e, double rho_max, double a, double tolerance) {
-  const double b = s.offset.dot(e);
+/// What one ray's integral may be off by: `tolerance` relative to each of
+/// its three parts (the gradient parts only when they are asked for).
+Values<3> ray_allowance(const Setup& s, const Values<3>& total, double tolerance) {
+  return Values<3>{tolerance * std::abs(total[0]), s.with_gradient ? tolerance * std::abs(total[1]) : infinity,
+                   s.with_gradient ? tolerance * std::abs(total[2]) : infinity};
+}
+
+/// The radial integral of a kernel of infinite support (inverse, Cauchy):
+/// the integrand τ^(i−2) D^(−i/2) ρ with D(ρ) = |P − Q|² + c σ²τ² =
+/// D2 ρ² + 2 D1 ρ + D0 (c = s.radius_term) peaks where D is smallest, over
+/// a width of the modulus of D's complex zeros; ρ = scale · sinh u spreads
+/// that peak evenly in u.
+Adaptive<3> radial_integral_infinite(Setup& s, double b, double rho_max, double a, double tolerance) {
   const int i = s.degree;
   const bool with_gradient = s.with_gradient;
-  auto allowance = [&](const Values<3>& total) {
-    return Values<3>{tolerance * std::abs(total[0]), with_gradient ? tolerance * std::abs(total[1]) : infinity,
-                     with_gradient ? tolerance * std::abs(total[2]) : infinity};
+  const double D2 = 1.0 + s.radius_term * s.sigma2 * a * a;
+  const double D0 = s.w2 + s.radius_term * s.sigma2 * s.tauO * s.tauO;
+  const double scale = std::sqrt(D0 / D2);
+  const Interval piece{0.0, std::asinh(rho_max / scale)};
+  auto integrand = [&](int, double u, Values<3>& value, Values<3>& error) {
+    ++s.evaluations;
+    error = {};
+    const double rho = scale * std::sinh(u);
+    const double jacobian = rho * scale * std::cosh(u);  // ρ dρ/du
+    const double tau = s.tauO + a * rho;
+    if (!(tau > 0.0)) {
+      value = {};
+      return;
+    }
+    const double r2 = s.w2 + rho * (rho + 2 * b);
+    const double D = r2 + s.radius_term * s.sigma2 * tau * tau;
+    // τ^(i−2) D^(−i/2) as (τ/√D)^(i−2) / D: no under- or overflow of D^(i/2).
+    const double f = integer_power(tau / std::sqrt(D), i - 2) / D * jacobian;
+    value[0] = f;
+    if (with_gradient) {
+      value[1] = -i * f / D;
+      value[2] = value[1] * rho;
+    } else {
+      value[1] = value[2] = 0.0;
+    }
   };
-  if (s.family != KernelFamily::compact) {
-    const bool cauchy = s.family == KernelFamily::cauchy;
-    // D(ρ) = |P − Q|² (+ σ²τ² for Cauchy) = D2 ρ² + 2 D1 ρ + D0; the radial
-    // scale is the modulus of its complex zeros.
-    const double D2 = 1.0 + (cauchy ? s.sigma2 * a * a : 0.0);
-    const double D0 = s.w2 + (cauchy ? s.sigma2 * s.tauO * s.tauO : 0.0);
-    const double scale = std::sqrt(D0 / D2);
-    const Interval piece{0.0, std::asinh(rho_max / scale)};
-    auto integrand = [&](int, double u, Values<3>& value, Values<3>& error) {
-      ++s.evaluations;
-      error = {};
-      const double rho = scale * std::sinh(u);
-      const double jacobian = rho * scale * std::cosh(u);  // ρ dρ/du
-      const double tau = s.tauO + a * rho;
-      if (!(tau > 0.0)) {
-        value = {};
-        return;
-      }
-      const double r2 = s.w2 + rho * (rho + 2 * b);
-      const double D = r2 + (cauchy ? s.sigma2 * tau * tau : 0.0);
-      // τ^(i−2) D^(−i/2) as (τ/√D)^(i−2) / D: no under- or overflow of D^(i/2).
-      const double f = integer_power(tau / std::sqrt(D), i - 2) / D * jacobian;
-      value[0] = f;
-      if (with_gradient) {
-        value[1] = -i * f / D;
-        value[2] = value[1] * rho;
-      } else {
-        value[1] = value[2] = 0.0;
-      }
-    };
-    return integrate_adaptive<3>(std::span(&piece, 1), integrand, allowance, max_inner_panels);
-  }
+  auto allowance = [&](const Values<3>& total) { return ray_allowance(s, total, tolerance); };
+  return integrate_adaptive<3>(std::span(&piece, 1), integrand, allowance, max_inner_panels);
+}
 
-  // Compact: the support q(ρ) = A ρ² + 2 B ρ + C > 0 on [0, ρ_max].
+/// The part [lo, hi] of [0, ρ_max] where a ray of the compact kernel is
+/// inside the support q(ρ) = A ρ² + 2 B ρ + C > 0 (q = σ²τ² − d²), and which
+/// of its ends are roots of q (where the integrand vanishes like √q).
+struct SupportOnRay {
+  double lo = 0.0, hi = 0.0;
+  bool lo_root = false, hi_root = false;
+};
+
+/// SupportOnRay of the ray, or nullopt where q ≤ 0 on all of it.
+std::optional<SupportOnRay> support_on_ray(const Setup& s, double b, double rho_max, double a) {
   const double A = s.sigma2 * a * a - 1.0;
   const double B = s.sigma2 * s.tauO * a - b;
   const double C = s.sigma2 * s.tauO * s.tauO - s.w2;
-  double lo = 0.0, hi = rho_max;
-  bool lo_root = false, hi_root = false;
+  SupportOnRay support{0.0, rho_max, false, false};
   auto keep_above = [&](double root) {  // q > 0 for ρ > root
-    if (root > lo) {
-      lo = root;
-      lo_root = true;
+    if (root > support.lo) {
+      support.lo = root;
+      support.lo_root = true;
     }
   };
   auto keep_below = [&](double root) {  // q > 0 for ρ < root
-    if (root < hi) {
-      hi = root;
-      hi_root = true;
+    if (root < support.hi) {
+      support.hi = root;
+      support.hi_root = true;
     }
   };
   const double disc = B * B - A * C;
   if (A == 0.0) {
     if (B == 0.0) {
-      if (!(C > 0.0)) return exact_zero<3>();
+      if (!(C > 0.0)) return std::nullopt;
     } else if (B > 0.0) {
       keep_above(-C / (2 * B));
     } else {
       keep_below(-C / (2 * B));
     }
   } else if (!(disc > 0.0)) {
-    if (A < 0.0) return exact_zero<3>();  // q ≤ 0 everywhere (A > 0: q ≥ 0 everywhere)
+    if (A < 0.0) return std::nullopt;  // q ≤ 0 everywhere (A > 0: q ≥ 0 everywhere)
   } else {
     const double q = -(B + std::copysign(std::sqrt(disc), B));
     double r1 = C / q, r2 = q / A;
@@ -305,21 +321,32 @@ Adaptive<3> radial_integral(Setup& s, const Vec2& e, double rho_max, double a, d
       keep_above(r2);
     }
   }
-  if (!(lo < hi)) return exact_zero<3>();
-  const double width = hi - lo;
-  // Values 0–2 as above; 3–5 bound their rounding noise (see below).
+  if (!(support.lo < support.hi)) return std::nullopt;
+  return support;
+}
+
+/// The radial integral of the compact kernel over the ray's support, in a
+/// variable t ∈ [0, 1] whose dρ/dt vanishes at the ends that are roots of q
+/// (q ~ t² there, so the √q ends become smooth). The integrand is
+/// σ^(−i) (q/τ²)^(i/2) / τ² (its σ^(−i) left to the caller); values 3–5
+/// bound the rounding noise of values 0–2 (below), which counts as error.
+Adaptive<3> radial_integral_compact(Setup& s, double b, double rho_max, double a, double tolerance) {
+  const std::optional<SupportOnRay> support = support_on_ray(s, b, rho_max, a);
+  if (!support) return exact_zero<3>();
+  const int i = s.degree;
+  const bool with_gradient = s.with_gradient;
+  const double lo = support->lo, hi = support->hi, width = hi - lo;
   auto integrand = [&](int, double t, Values<6>& value, Values<6>& error) {
     ++s.evaluations;
     error = {};
-    // ρ(t) with dρ/dt vanishing at the root ends (q ~ t² there).
     double rho, drho;
-    if (lo_root && hi_root) {
+    if (support->lo_root && support->hi_root) {
       rho = lo + width * t * t * (3 - 2 * t);
       drho = width * 6 * t * (1 - t);
-    } else if (lo_root) {
+    } else if (support->lo_root) {
       rho = lo + width * t * t;
       drho = 2 * width * t;
-    } else if (hi_root) {
+    } else if (support->hi_root) {
       rho = hi - width * (1 - t) * (1 - t);
       drho = 2 * width * (1 - t);
     } else {
@@ -358,7 +385,7 @@ Adaptive<3> radial_integral(Setup& s, const Vec2& e, double rho_max, double a, d
   };
   // Each part within `tolerance` of itself, or within twice its noise.
   auto allowance_with_noise = [&](const Values<6>& total) {
-    const Values<3> relative = allowance(Values<3>{total[0], total[1], total[2]});
+    const Values<3> relative = ray_allowance(s, Values<3>{total[0], total[1], total[2]}, tolerance);
     return Values<6>{std::max(relative[0], 2 * total[3]), std::max(relative[1], 2 * total[4]),
                      std::max(relative[2], 2 * total[5]), infinity, infinity, infinity};
   };
@@ -372,6 +399,15 @@ Adaptive<3> radial_integral(Setup& s, const Vec2& e, double rho_max, double a, d
     result.error[c] = ray.error[c] + ray.value[c + 3];  // the noise is an error too
   }
   return result;
+}
+
+/// The inner (radial) integral along the ray from O in direction e, of
+/// length rho_max, with τ = tauO + a ρ. Values: ∫ K/τ² ρ dρ, ∫ (K'/d)/τ⁴ ρ dρ
+/// and ∫ (K'/d)/τ⁴ ρ² dρ, without the constant factor σ^(±i).
+Adaptive<3> radial_integral(Setup& s, const Vec2& e, double rho_max, double a, double tolerance) {
+  const double b = s.offset.dot(e);  // d² = w² + ρ (ρ + 2b) along the ray
+  return s.finite_support ? radial_integral_compact(s, b, rho_max, a, tolerance)
+                          : radial_integral_infinite(s, b, rho_max, a, tolerance);
 }
 
 /// Real roots of c2 x² + 2 c1 x + c0 = 0 (none when c2 = c1 = 0).
@@ -441,91 +477,95 @@ bool compact_tip_diverges(const std::vector<FanTriangle>& fans, const Vec2& O, c
   return sigma * largest > 1.0;
 }
 
-}  // namespace
-
-ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vertices, const std::array<double, 3>& radii,
-                                                 KernelFamily family, int degree, double sigma, const Vec3& p,
-                                                 bool with_gradient, double tolerance) {
-  ScalisTriangleIntegral result;
-  // Local frame: origin V0, x along V0V1, z along the normal (the vertices
-  // are then counter-clockwise), lengths scaled by 2^−e so that the largest
-  // radius is in [1/2, 1) (exact; F is scale invariant).
+/// The triangle and P in the local frame: origin V0, x along V0V1, z along
+/// the normal (the vertices are then counter-clockwise), lengths scaled by
+/// 2^−exponent so that the largest radius is in [1/2, 1) (exact; F is scale
+/// invariant).
+struct LocalTriangle {
   int exponent = 0;
-  (void)std::frexp(std::max({radii[0], radii[1], radii[2]}), &exponent);
-  auto scaled = [&](const Vec3& x) { return Vec3(std::ldexp(x.x(), -exponent), std::ldexp(x.y(), -exponent),
-                                                 std::ldexp(x.z(), -exponent)); };
+  Vec3 e1, e2, normal;       ///< the frame's axes, in world coordinates
+  std::array<Vec2, 3> v;     ///< the vertices (v[0] = 0, v[1] on the x axis)
+  std::array<double, 3> tau; ///< the radii
+  Vec2 foot;                 ///< P̄, P's projection on the plane
+  double z = 0.0;            ///< P's height above the plane
+  Vec2 gradient_tau;         ///< ∇τ in the plane (for τ inside T and the compact tip test)
+};
+
+LocalTriangle local_triangle(const std::array<Vec3, 3>& vertices, const std::array<double, 3>& radii, const Vec3& p) {
+  LocalTriangle t;
+  (void)std::frexp(std::max({radii[0], radii[1], radii[2]}), &t.exponent);
+  auto scaled = [&](const Vec3& x) { return Vec3(std::ldexp(x.x(), -t.exponent), std::ldexp(x.y(), -t.exponent),
+                                                 std::ldexp(x.z(), -t.exponent)); };
   const Vec3 origin = scaled(vertices[0]);
-  const Vec3 e1 = (scaled(vertices[1]) - origin).normalized();
-  const Vec3 normal = (scaled(vertices[1]) - origin).cross(scaled(vertices[2]) - origin).normalized();
-  const Vec3 e2 = normal.cross(e1);
+  t.e1 = (scaled(vertices[1]) - origin).normalized();
+  t.normal = (scaled(vertices[1]) - origin).cross(scaled(vertices[2]) - origin).normalized();
+  t.e2 = t.normal.cross(t.e1);
   auto local = [&](const Vec3& x) {
     const Vec3 d = scaled(x) - origin;
-    return Vec3(d.dot(e1), d.dot(e2), d.dot(normal));
+    return Vec3(d.dot(t.e1), d.dot(t.e2), d.dot(t.normal));
   };
-  std::array<Vec2, 3> v;
-  std::array<double, 3> tau;
   for (int k = 0; k < 3; ++k) {
     const Vec3 q = local(vertices[k]);
-    v[k] = {q.x(), q.y()};
-    tau[k] = std::ldexp(radii[k], -exponent);
+    t.v[k] = {q.x(), q.y()};
+    t.tau[k] = std::ldexp(radii[k], -t.exponent);
   }
-  v[0] = {0.0, 0.0};
-  v[1].y() = 0.0;
+  t.v[0] = {0.0, 0.0};
+  t.v[1].y() = 0.0;
   const Vec3 pl = local(p);
-  const Vec2 foot(pl.x(), pl.y());
-  const double z = pl.z();
+  t.foot = Vec2(pl.x(), pl.y());
+  t.z = pl.z();
+  const double gx = (t.tau[1] - t.tau[0]) / t.v[1].x();
+  t.gradient_tau = Vec2(gx, (t.tau[2] - t.tau[0] - gx * t.v[2].x()) / t.v[2].y());
+  return t;
+}
 
-  // ∇τ in the plane (for τ inside T and the compact tip test).
-  const double gx = (tau[1] - tau[0]) / v[1].x();
-  const Vec2 gradient_tau(gx, (tau[2] - tau[0] - gx * v[2].x()) / v[2].y());
+/// The fan triangles (O, V_k, V_k+1) with a non-empty interior, and the
+/// edge k of each.
+struct Fans {
+  std::vector<FanTriangle> triangles;
+  std::vector<int> edges;
+};
 
-  const Nearest nearest = nearest_point(v, tau, foot, gradient_tau);
-  Setup s{family, degree, sigma * sigma, nearest.point, nearest.point - foot, 0.0, nearest.tau, with_gradient};
-  s.w2 = z * z + s.offset.squaredNorm();
-
-  // The fan triangles with a non-empty interior.
-  std::vector<FanTriangle> fans;
-  std::vector<int> fan_edges;
+Fans fan_triangles(const LocalTriangle& t, const Nearest& nearest, const Vec2& O) {
+  Fans fans;
   for (int k = 0; k < 3; ++k) {
     const int next = (k + 1) % 3;
     if (nearest.edge == k || nearest.vertex == k || nearest.vertex == next) continue;
-    const Vec2 tangent = (v[next] - v[k]).normalized();
+    const Vec2 tangent = (t.v[next] - t.v[k]).normalized();
     const Vec2 left(-tangent.y(), tangent.x());
-    const double h = (s.O - v[k]).dot(left);
+    const double h = (O - t.v[k]).dot(left);
     if (!(h > 0.0)) continue;
-    fans.push_back({tangent, -left, h, (v[k] - s.O).dot(tangent), (v[next] - s.O).dot(tangent), tau[k], tau[next]});
-    fan_edges.push_back(k);
+    fans.triangles.push_back(
+        {tangent, -left, h, (t.v[k] - O).dot(tangent), (t.v[next] - O).dot(tangent), t.tau[k], t.tau[next]});
+    fans.edges.push_back(k);
   }
+  return fans;
+}
 
-  if (s.w2 == 0.0) {
-    const bool diverges = family == KernelFamily::inverse ||
-                          (s.tauO == 0.0 && (family == KernelFamily::cauchy ||
-                                             compact_tip_diverges(fans, s.O, v, fan_edges, gradient_tau, sigma)));
-    if (diverges) {
-      result.divergent = true;
-      result.converged = true;
-      result.F = infinity;
-      result.gradient = Vec3::Constant(infinity);
-      return result;
-    }
-  }
+/// Whether F diverges at P = O (w = 0; see the header): everywhere in T
+/// for a kernel singular on the skeleton, at a point of radius 0 for one
+/// singular at zero radius, and for the compact kernel at a radius-0 tip
+/// steep enough (compact_tip_diverges).
+bool diverges_at_apex(kernels::ScalisSingularity singularity, const Setup& s, const Fans& fans,
+                      const LocalTriangle& t, double sigma) {
+  if (singularity == kernels::ScalisSingularity::on_segment) return true;
+  if (s.tauO != 0.0) return false;
+  return singularity == kernels::ScalisSingularity::at_zero_radius ||
+         (s.finite_support && compact_tip_diverges(fans.triangles, s.O, t.v, fans.edges, t.gradient_tau, sigma));
+}
 
-  // The outer pieces: each fan's v range, for the compact kernel cut at its
-  // breakpoints (compact_breakpoints), where the radial integral is not
-  // smooth in v.
-  std::vector<Interval> pieces;
-  std::vector<int> piece_fan;
-  for (std::size_t k = 0; k < fans.size(); ++k) {
-    const FanTriangle& fan = fans[k];
+/// The outer pieces: each fan's v range, for the compact kernel cut at its
+/// breakpoints (compact_breakpoints), where the radial integral is not
+/// smooth in v. False when a cut is not a number (coordinates whose products
+/// overflow, e.g. a vertex 1e300 away): that would drop its piece silently
+/// and give a wrong 0, so the caller reports the evaluation as failed.
+bool outer_pieces(const Setup& s, const Fans& fans, const LocalTriangle& t, std::vector<Interval>& pieces,
+                  std::vector<int>& piece_fan) {
+  for (std::size_t k = 0; k < fans.triangles.size(); ++k) {
+    const FanTriangle& fan = fans.triangles[k];
     std::vector<double> cuts{std::asinh(fan.sA / fan.h), std::asinh(fan.sB / fan.h)};
-    if (family == KernelFamily::compact) compact_breakpoints(s, fan, foot, z, gradient_tau, cuts);
-    // A cut that is not a number (coordinates whose products overflow, e.g.
-    // a vertex 1e300 away) would drop its piece silently and give a wrong 0:
-    // report the evaluation as failed instead (the caller's non-finite error).
-    if (!std::all_of(cuts.begin(), cuts.end(), [](double c) { return std::isfinite(c); })) {
-      result.F = std::numeric_limits<double>::quiet_NaN();
-      return result;
-    }
+    if (s.finite_support) compact_breakpoints(s, fan, t.foot, t.z, t.gradient_tau, cuts);
+    if (!std::all_of(cuts.begin(), cuts.end(), [](double c) { return std::isfinite(c); })) return false;
     std::sort(cuts.begin(), cuts.end());
     for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
       if (!(cuts[c] < cuts[c + 1])) continue;
@@ -533,17 +573,41 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
       piece_fan.push_back(int(k));
     }
   }
+  return true;
+}
 
-  // Outer values: ∫ F_ray dφ, ∫ G0_ray dφ, ∫ G1_ray e dφ (2 components).
-  // Compact pieces are integrated in w ∈ [0, 1], v = c0 + (c1 − c0)(3w² − 2w³):
-  // at a breakpoint the radial integral behaves like |v − c|^(n + 1/2), which
-  // v − c ~ w² turns into a smooth function of w (as the √ ends of a ray).
-  const bool smoothstep = family == KernelFamily::compact;
+/// ∇F in the local frame, up to the constant factor, from the outer values
+/// t = (∫ F_ray, ∫ G0_ray, ∫ G1_ray e (2 components), ∫ |G1_ray|):
+/// ∇F = (P̄ − O, z) G0 − (G1x, G1y, 0).
+struct OuterGradient {
+  Vec2 offset;   ///< O − P̄
+  double z;
+  double lever;  ///< |(P̄ − O, z)|
+
+  Vec3 of(const Values<5>& t) const {
+    return Vec3(-offset.x() * t[1] - t[2], -offset.y() * t[1] - t[3], z * t[1]);
+  }
+  /// The sum of the magnitudes of ∇F's parts, |(P̄ − O, z)| |G0| and
+  /// ∫ |G1| dφ, however they cancel in ∇F, floored (the header).
+  double scale(const Values<5>& t) const {
+    const double magnitude_sum = lever * std::abs(t[1]) + t[4];
+    return std::max(of(t).norm(), scalis_triangle_gradient_floor * magnitude_sum);
+  }
+};
+
+/// The outer integral over the pieces of the fans' angular variable of the
+/// rays' integrals (radial_integral). Compact pieces are integrated in
+/// w ∈ [0, 1], v = c0 + (c1 − c0)(3w² − 2w³): at a breakpoint the radial
+/// integral behaves like |v − c|^(n + 1/2), which v − c ~ w² turns into a
+/// smooth function of w (as the √ ends of a ray).
+Adaptive<5> integrate_fans(Setup& s, const Fans& fans, const std::vector<Interval>& pieces,
+                           const std::vector<int>& piece_fan, const OuterGradient& gradient, double tolerance) {
+  const bool smoothstep = s.finite_support;
   std::vector<Interval> panel_ranges = pieces;
   if (smoothstep) std::fill(panel_ranges.begin(), panel_ranges.end(), Interval{0.0, 1.0});
   bool ray_failed = false;
   auto integrand = [&](int piece, double panel_variable, Values<5>& value, Values<5>& error) {
-    const FanTriangle& fan = fans[piece_fan[piece]];
+    const FanTriangle& fan = fans.triangles[piece_fan[piece]];
     double angle_variable = panel_variable, jacobian = 1.0;
     if (smoothstep) {
       const double w = panel_variable, width = pieces[piece].b - pieces[piece].a;
@@ -569,38 +633,58 @@ ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vert
       ray_failed = true;
     }
   };
-  // ∇F (local, up to the constant factor) = (P̄ − O, z) G0 − (G1x, G1y, 0).
-  const double lever = std::sqrt(s.w2);  // |(P̄ − O, z)|
-  auto gradient_of = [&](const Values<5>& t) {
-    return Vec3(-s.offset.x() * t[1] - t[2], -s.offset.y() * t[1] - t[3], z * t[1]);
-  };
-  // The sum of the magnitudes of ∇F's parts: |(P̄ − O, z)| |G0| and
-  // ∫ |G1| dφ (value 4), however they cancel in ∇F.
-  auto gradient_scale_of = [&](const Values<5>& t) {
-    const double magnitude_sum = lever * std::abs(t[1]) + t[4];
-    return std::max(gradient_of(t).norm(), scalis_triangle_gradient_floor * magnitude_sum);
-  };
   auto allowance = [&](const Values<5>& t) {
-    if (!with_gradient) return Values<5>{tolerance * std::abs(t[0]), infinity, infinity, infinity, infinity};
-    const double g = tolerance * gradient_scale_of(t);
-    return Values<5>{tolerance * std::abs(t[0]), lever > 0.0 ? g / (2 * lever) : infinity,
+    if (!s.with_gradient) return Values<5>{tolerance * std::abs(t[0]), infinity, infinity, infinity, infinity};
+    const double g = tolerance * gradient.scale(t);
+    return Values<5>{tolerance * std::abs(t[0]), gradient.lever > 0.0 ? g / (2 * gradient.lever) : infinity,
                      g / (2 * std::sqrt(2.0)), g / (2 * std::sqrt(2.0)), infinity};
   };
-  const Adaptive<5> total = integrate_adaptive<5>(panel_ranges, integrand, allowance, max_outer_panels, &ray_failed);
+  return integrate_adaptive<5>(panel_ranges, integrand, allowance, max_outer_panels, &ray_failed);
+}
 
-  // The constant factor σ^i (inverse, Cauchy) or σ^(−i) (compact).
-  const double factor = std::pow(sigma, family == KernelFamily::compact ? -degree : degree);
+}  // namespace
+
+ScalisTriangleIntegral integrate_scalis_triangle(const std::array<Vec3, 3>& vertices, const std::array<double, 3>& radii,
+                                                 KernelFamily family, int degree, double sigma, const Vec3& p,
+                                                 bool with_gradient, double tolerance) {
+  ScalisTriangleIntegral result;
+  const LocalTriangle t = local_triangle(vertices, radii, p);
+  const kernels::FamilyFacts facts = kernels::family_facts(family);
+  const Nearest nearest = nearest_point(t.v, t.tau, t.foot, t.gradient_tau);
+  Setup s{facts.finite_support, facts.scalis_radius_term, degree,         sigma * sigma, nearest.point,
+          nearest.point - t.foot, 0.0,                    nearest.tau,    with_gradient};
+  s.w2 = t.z * t.z + s.offset.squaredNorm();
+  const Fans fans = fan_triangles(t, nearest, s.O);
+
+  if (s.w2 == 0.0 && diverges_at_apex(facts.scalis_singularity, s, fans, t, sigma)) {
+    result.divergent = true;
+    result.converged = true;
+    result.F = infinity;
+    result.gradient = Vec3::Constant(infinity);
+    return result;
+  }
+  std::vector<Interval> pieces;
+  std::vector<int> piece_fan;
+  if (!outer_pieces(s, fans, t, pieces, piece_fan)) {
+    result.F = std::numeric_limits<double>::quiet_NaN();
+    return result;
+  }
+  const OuterGradient gradient{s.offset, t.z, std::sqrt(s.w2)};
+  const Adaptive<5> total = integrate_fans(s, fans, pieces, piece_fan, gradient, tolerance);
+
+  // The constant factor σ^i (infinite support: the integrand τ^(i−2) D^(−i/2)
+  // of radial_integral_infinite) or σ^(−i) (radial_integral_compact).
+  const double factor = std::pow(sigma, s.finite_support ? -degree : degree);
   result.F = factor * total.value[0];
   result.F_error = factor * total.error[0];
   result.evaluations = s.evaluations;
   result.converged = total.converged;
   if (with_gradient) {
-    const Vec3 g = gradient_of(total.value);
-    const double undo_scale = std::ldexp(factor, -exponent);
-    result.gradient = undo_scale * (g.x() * e1 + g.y() * e2 + g.z() * normal);
-    result.gradient_error =
-        undo_scale * (lever * total.error[1] + std::hypot(total.error[2], total.error[3]));
-    result.gradient_scale = undo_scale * gradient_scale_of(total.value);
+    const Vec3 g = gradient.of(total.value);
+    const double undo_scale = std::ldexp(factor, -t.exponent);
+    result.gradient = undo_scale * (g.x() * t.e1 + g.y() * t.e2 + g.z() * t.normal);
+    result.gradient_error = undo_scale * (gradient.lever * total.error[1] + std::hypot(total.error[2], total.error[3]));
+    result.gradient_scale = undo_scale * gradient.scale(total.value);
   }
   return result;
 }

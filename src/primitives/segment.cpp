@@ -40,6 +40,29 @@ int validated_weight_degree(std::span<const double> weight) {
   return degree;
 }
 
+/// A length parameter of the kernel, in the segment's frame: a normal
+/// double, or InputError at its key (s, a have units length^−2, R length;
+/// b has none and is not scaled).
+void require_parameter_in_frame(std::string_view key, const SegmentInput<double>& input) {
+  struct Scaled {
+    std::string_view key;
+    double SegmentInput<double>::* field;
+    const char* description;
+    const char* where;
+  };
+  static constexpr Scaled scaled[] = {
+      {"s", &SegmentInput<double>::s, "s in units of the segment's length (s·4^e, 2^e <= |b - a| < 2^(e+1))",
+       "kernel.s"},
+      {"R", &SegmentInput<double>::R, "R in units of the segment's length (R·2^-e, 2^e <= |b - a| < 2^(e+1))",
+       "kernel.R"},
+      {"a", &SegmentInput<double>::gaussian_a,
+       "a in units of the segment's length (a·4^e, 2^e <= |b - a| < 2^(e+1))", "kernel.a"},
+  };
+  for (const Scaled& p : scaled) {
+    if (p.key == key) detail::require_normal_in_frame(input.*p.field, p.description, p.where);
+  }
+}
+
 }  // namespace
 
 Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::span<const double> weight)
@@ -68,13 +91,12 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   // The frame (scaled_frame.hpp): the kernel parameters scale with the
   // lengths, s as length^−2 and R as length.
   frame_ = ScaledFrame(scale_safe_norm(b - a));
-  value_power_ = kernel.family == KernelFamily::inverse ? 1 - kernel.degree : 1;
+  // f scales as |AB| K: λ^(1 + p) (the trait's scaling_power, radial_kernel.hpp).
+  value_power_ = 1 + kernels::scaling_power(kernel);
   // A positive kernel and weight give f > 0, so a 0 there is an underflow;
-  // except beyond a finite support, and far from a Gaussian, whose field
-  // underflows with exp(−a d²) (0 is then its correctly rounded value).
-  may_vanish_ = std::isfinite(kernels::support_radius(kernels::make_radial_kernel(kernel))) ||
-                kernel.family == KernelFamily::gaussian ||
-                std::any_of(weight.begin(), weight.end(), [](double w) { return w < 0.0; });
+  // except where the kernel itself vanishes or underflows (beyond a finite
+  // support, far from a Gaussian: 0 is then the correctly rounded value).
+  may_vanish_ = facts.vanishes_far || std::any_of(weight.begin(), weight.end(), [](double w) { return w < 0.0; });
   input_.a = to_array(frame_.point(a));
   input_.b = to_array(frame_.point(b));
   input_.w = {0.0, 0.0, 0.0, 0.0};
@@ -85,18 +107,7 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   input_.gaussian_b = kernel.b;                      // K(0): no units
   support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
   singular_at_zero_ = facts.singular_at_zero;
-  if (kernel.family == KernelFamily::cauchy) {
-    detail::require_normal_in_frame(input_.s, "s in units of the segment's length (s·4^e, 2^e <= |b - a| < 2^(e+1))",
-                                    "kernel.s");
-  }
-  if (std::isfinite(support_radius_)) {
-    detail::require_normal_in_frame(input_.R, "R in units of the segment's length (R·2^-e, 2^e <= |b - a| < 2^(e+1))",
-                                    "kernel.R");
-  }
-  if (kernel.family == KernelFamily::gaussian) {
-    detail::require_normal_in_frame(input_.gaussian_a,
-                                    "a in units of the segment's length (a·4^e, 2^e <= |b - a| < 2^(e+1))", "kernel.a");
-  }
+  for (std::string_view key : facts.parameters) require_parameter_in_frame(key, input_);
 }
 
 std::string Segment::generated_name() const { return generated_->name; }

@@ -152,9 +152,9 @@ __attribute__((flatten)) void polygon_group(const PolygonUniforms& u, const std:
   // C = (ζ^(2−i) Θ − Σ H_{i−2}) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ H_i).
   const Lanes Theta = snapped_winding_angle(theta_sum);
   const int i = poly.degree;
-  const bool inverse = poly.family == KernelFamily::inverse;
-  const Lanes alpha(inverse ? 1.0 : poly.s);
-  const Lanes zeta = sqrt(alpha * z * z + Lanes(inverse ? 0.0 : 1.0));
+  const PolygonKernelForm<double> form = polygon_kernel_form(poly);
+  const Lanes alpha(form.alpha);
+  const Lanes zeta = sqrt(alpha * z * z + Lanes(form.beta));
   const auto no_winding = hn::Eq(Theta.vec(), hn::Zero(d));
   const Lanes winding_f(hn::IfThenZeroElse(no_winding, (integer_power(zeta, 2 - i) * Theta).vec()));
   const Lanes winding_g(hn::IfThenZeroElse(no_winding, (integer_power(zeta, -i) * Theta).vec()));
@@ -234,8 +234,8 @@ class FarFieldTest {
       radius2_ = std::max(radius2_, (q[0] - centre_[0]) * (q[0] - centre_[0]) +
                                         (q[1] - centre_[1]) * (q[1] - centre_[1]) +
                                         (q[2] - centre_[2]) * (q[2] - centre_[2]));
-    const bool inverse = poly.family == KernelFamily::inverse;
-    widening_ = inverse ? 0.0 / 1.0 : 1.0 / poly.s;
+    const PolygonKernelForm<double> form = polygon_kernel_form(poly);
+    widening_ = form.beta / form.alpha;  // the kernel's complex singularity at r² = −β/α
   }
   bool far(double x, double y, double z) const {
     const double p[3] = {x, y, z};
@@ -257,8 +257,9 @@ BatchCounts value_and_gradient(const Polygon& polygon, PointsSoA points, FieldSo
   std::vector<std::uint32_t> scalar;
   detail::PolygonUniforms u;
   int exponent = 0, value_power = 0;
+  // The vector path has the contour sums of the kernels of infinite support.
   bool vectorised = polygon.single_closed_form(u.input, exponent, value_power) &&
-                    u.input.family != KernelFamily::compact && listed(u.input.family, u.input.degree) &&
+                    !kernels::family_facts(u.input.family).finite_support && listed(u.input.family, u.input.degree) &&
                     std::abs(value_power * exponent) < 1000 && std::abs((value_power - 1) * exponent) < 1000;
   if (vectorised) {
     u.value_scale = std::ldexp(1.0, value_power * exponent);
@@ -268,6 +269,7 @@ BatchCounts value_and_gradient(const Polygon& polygon, PointsSoA points, FieldSo
     u.y = y.data();
     u.z = z.data();
     const FarFieldTest far_field(u.input);
+    const bool singular = kernels::family_facts(u.input.family).singular_at_zero;
     const Vec3 normal = polygon.normal();
     const Vec3 first(u.input.vertices[0][0], u.input.vertices[0][1], u.input.vertices[0][2]);
     std::vector<std::uint32_t> work;
@@ -284,7 +286,7 @@ BatchCounts value_and_gradient(const Polygon& polygon, PointsSoA points, FieldSo
       // (skelconv/detail/plane_height.hpp), a double-word fan the lanes do not have.
       const std::array<double, 3> point{q.x(), q.y(), q.z()};
       const double plain_z = plain_plane_height(point, u.input.vertices[0], u.input.normal);
-      const bool singular_candidate = u.input.family == KernelFamily::inverse &&
+      const bool singular_candidate = singular &&
                                       (normal.dot(q - first) == 0.0 ||
                                        needs_exact_plane_height(plain_z, point, u.input.vertices[0]));
       if (!q.allFinite() || singular_candidate || far_field.far(q.x(), q.y(), q.z())) {
@@ -301,7 +303,7 @@ BatchCounts value_and_gradient(const Polygon& polygon, PointsSoA points, FieldSo
 }
 
 bool has_vector_kernel(const Polygon& polygon) {
-  return polygon.kernel().family != KernelFamily::compact &&
+  return !kernels::family_facts(polygon.kernel().family).finite_support &&
          listed(polygon.kernel().family, polygon.kernel().degree);
 }
 

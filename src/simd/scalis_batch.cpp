@@ -23,6 +23,7 @@
 
 #include "generated/scalis_segment_cauchy.hpp"
 #include "generated/scalis_segment_inverse.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/primitives/scalis_segment.hpp"
 #include "skelconv/simd/batch.hpp"
 #include "src/simd/group_runner-inl.hpp"
@@ -93,10 +94,12 @@ GroupFunction find_group([[maybe_unused]] KernelFamily family, [[maybe_unused]] 
 }
 
 /// P where ScalisSegment may return +inf: left to the scalar path.
-bool maybe_divergent(const ScalisSegmentInput<double>& in, KernelFamily family, double x, double y, double z) {
+/// (`on_segment`: the kernel's scalis_singularity is on the segment itself,
+/// else at an end of radius 0, as ScalisSegment::is_divergent_point.)
+bool maybe_divergent(const ScalisSegmentInput<double>& in, bool on_segment, double x, double y, double z) {
   const double ab[3] = {in.b[0] - in.a[0], in.b[1] - in.a[1], in.b[2] - in.a[2]};
   const double ap[3] = {x - in.a[0], y - in.a[1], z - in.a[2]};
-  if (family == KernelFamily::inverse) {
+  if (on_segment) {
     return ab[1] * ap[2] - ab[2] * ap[1] == 0.0 && ab[2] * ap[0] - ab[0] * ap[2] == 0.0 &&
            ab[0] * ap[1] - ab[1] * ap[0] == 0.0;
   }
@@ -115,10 +118,11 @@ bool scalis_batch(const ScalisSegmentInput<double>& input, KernelFamily family, 
   const GroupFunction group_function = find_group(family, degree);
   if (group_function == nullptr) return false;
   const ScalisUniforms u{input, iso, normalisation};
+  const bool on_segment = kernels::family_facts(family).scalis_singularity == kernels::ScalisSingularity::on_segment;
   std::vector<std::uint32_t> work;
   work.reserve(points.n);
   for (std::size_t p = 0; p < points.n; ++p) {
-    if (maybe_divergent(input, family, points.x[p], points.y[p], points.z[p])) {
+    if (maybe_divergent(input, on_segment, points.x[p], points.y[p], points.z[p])) {
       scalar.push_back(std::uint32_t(p));
     } else {
       work.push_back(std::uint32_t(p));

@@ -28,6 +28,7 @@
 #include "generated/segment_cauchy.hpp"
 #include "generated/segment_compact.hpp"
 #include "generated/segment_inverse.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/primitives/segment.hpp"
 #include "skelconv/simd/batch.hpp"
 #include "src/simd/group_runner-inl.hpp"
@@ -109,11 +110,17 @@ GroupFunction find_group([[maybe_unused]] KernelFamily family, [[maybe_unused]] 
 #endif
 }
 
+/// What the pre-pass needs of the kernel (its trait, kernel_list.hpp).
+struct KernelNeeds {
+  bool singular_on_line;  ///< K(0) = +inf: points on the segment's line go to the scalar path
+  bool clipped;           ///< a finite support: the generated form integrates the clipped [t0, t1]
+};
+
 /// The pre-pass over points [begin, end): fills `work` with the points for
 /// the vector kernel and `scalar` with those for the scalar path, writes
-/// f = 0, ∇f = 0 for compact points outside the support, and the clip
+/// f = 0, ∇f = 0 for points outside a finite support, and the clip
 /// interval of the others.
-void sort_points(const SegmentInput<double>& segment, KernelFamily family, PointsSoA points, std::size_t begin,
+void sort_points(const SegmentInput<double>& segment, KernelNeeds needs, PointsSoA points, std::size_t begin,
                  std::size_t end, ChunkClip& clip, FieldSoA out, std::vector<std::uint32_t>& work,
                  std::vector<std::uint32_t>& scalar, BatchCounts& counts) {
   const LaneTag d;
@@ -143,13 +150,13 @@ void sort_points(const SegmentInput<double>& segment, KernelFamily family, Point
     const auto cy = hn::Sub(hn::Mul(ab2, ap0), hn::Mul(ab0, ap2));
     const auto cz = hn::Sub(hn::Mul(ab0, ap1), hn::Mul(ab1, ap0));
     uint8_t to_scalar_bits[8] = {}, inside_bits[8] = {};
-    if (family == KernelFamily::inverse) {
+    if (needs.singular_on_line) {
       // P on the line of the segment (AB × AP = 0 exactly): the runtime's
       // own test decides between the singularity and a finite value.
       const auto on_line = hn::And(hn::And(hn::Eq(cx, zero), hn::Eq(cy, zero)), hn::Eq(cz, zero));
       hn::StoreMaskBits(d, on_line, to_scalar_bits);
     }
-    if (family == KernelFamily::compact) {
+    if (needs.clipped) {
       // clip_to_ball (include/skelconv/detail/clip.hpp), operation for operation.
       const auto b = hn::Add(hn::Add(hn::Mul(ab0, ap0), hn::Mul(ab1, ap1)), hn::Mul(ab2, ap2));
       const auto disc = hn::Sub(aRR, hn::Add(hn::Add(hn::Mul(cx, cx), hn::Mul(cy, cy)), hn::Mul(cz, cz)));
@@ -168,7 +175,7 @@ void sort_points(const SegmentInput<double>& segment, KernelFamily family, Point
     }
     for (std::size_t k = 0; k < count; ++k) {
       const std::uint32_t p = std::uint32_t(q + k);
-      if (family == KernelFamily::compact) {
+      if (needs.clipped) {
         if (!(inside_bits[0] >> k & 1u)) {
           out.f[p] = out.gx[p] = out.gy[p] = out.gz[p] = 0.0;
           ++counts.zero_points;
@@ -197,12 +204,14 @@ bool segment_batch(const SegmentInput<double>& segment, KernelFamily family, int
                    PointsSoA points, FieldSoA out, std::vector<std::uint32_t>& scalar, BatchCounts& counts) {
   const GroupFunction group_function = find_group(family, degree, weight_degree);
   if (group_function == nullptr) return false;
+  const kernels::FamilyFacts facts = kernels::family_facts(family);
+  const KernelNeeds needs{facts.singular_at_zero, facts.finite_support};
   ChunkClip clip;
   std::vector<std::uint32_t> work;
   for (std::size_t begin = 0; begin < points.n; begin += chunk_size) {
     const std::size_t end = std::min(points.n, begin + chunk_size);
     work.clear();
-    sort_points(segment, family, points, begin, end, clip, out, work, scalar, counts);
+    sort_points(segment, needs, points, begin, end, clip, out, work, scalar, counts);
     auto group = [&](const std::uint32_t* lanes, Divergence& divergence, GroupResult& r) {
       group_function(segment, points, clip, begin, lanes, divergence, r);
     };

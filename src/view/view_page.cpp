@@ -19,6 +19,7 @@
 #include "mesh_preview.hpp"
 #include "page_text.hpp"
 #include "skelconv/errors.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 
 namespace skelconv {
 
@@ -156,7 +157,9 @@ std::string check_term(const Term& term) {
   if (const auto* s = std::get_if<Segment>(term.primitive)) {
     const KernelSpec& kernel = s->kernel();
     name = s->generated_name();
-    if (kernel.family != KernelFamily::compact && weight_minimum(s->weight()) < 0.0) {
+    // A finite support takes the Lipschitz step, which bounds |w|; the
+    // others take the ratio step, which needs every term >= 0.
+    if (!kernels::family_facts(kernel.family).finite_support && weight_minimum(s->weight()) < 0.0) {
       throw InputError("w(t) < 0 somewhere in [0, 1]: the viewer's step bound for inverse and Cauchy kernels needs "
                        "w >= 0 (docs/view.md)",
                        term.location + ".weight");
@@ -199,11 +202,7 @@ Frame page_frame(const std::vector<Term>& terms) {
   // own length, or 1.
   double half_diagonal = 0.5 * (high - low).norm();
   if (half_diagonal == 0.0) {
-    const KernelSpec& k = std::get<PointPrimitive>(*terms[0].primitive).kernel();
-    half_diagonal = k.family == KernelFamily::inverse ? 1.0
-                    : k.family == KernelFamily::cauchy ? 1.0 / std::sqrt(k.s)
-                    : k.family == KernelFamily::gaussian ? 1.0 / std::sqrt(k.a)
-                                                         : k.R;
+    half_diagonal = kernels::length_scale(std::get<PointPrimitive>(*terms[0].primitive).kernel());
   }
   frame.scale = std::exp2(std::round(std::log2(std::max(half_diagonal, 1e-300))));
   return frame;
@@ -232,44 +231,42 @@ struct PageTerm {
   /// (i, e, a, b) (points).
   std::array<double, 4> texel{};
   int degree = 1;
-  KernelFamily family = KernelFamily::inverse;
+  KernelFamily family{};
   /// The term is at most c · magnitude · K(r) at distance r from its
   /// element (support_margin): |AB| Σ |w_j| / (j + 1) for a segment
   /// (≥ |AB| ∫_0^1 |w(t)| dt), 1 for a point, |AB| σ^i max τ^(i−1) for a
   /// SCALIS segment (its integrand is at most σ^i τ^(i−1) r^(−i)).
   double magnitude = 0;
-  /// compact kinds: max_r |K'(r)| (the step's Lipschitz bound is c |AB| ∫|w| of it).
+  /// max_r |K'(r)| in the page's frame (the trait's max_slope); the
+  /// Lipschitz codes' step bound is c |AB| ∫|w| of it.
   double slope = 0;
+  /// The supported codes bound K by K(0) below R (kernel_value): K(0), the
+  /// trait's max_value (1 but for Ferley's (R + e)/(R − e)).
+  double peak = 1;
 };
 
-/// max_r |K'(r)| of the compact kernel (1 − r²/R²)^(i/2): i u (1 − u²)^((i−2)/2) / R
-/// with u = r/R, largest at u² = 1/(i − 1) for i ≥ 2 (at u = 1 for i = 2).
-double compact_slope_bound(int degree, double R) {
-  const double i = degree;
-  const double u = i > 2 ? 1.0 / std::sqrt(i - 1) : 1.0;
-  return i * u * std::pow(1.0 - u * u, 0.5 * (i - 2)) / R;
+/// The shader's code of a segment or a point of `family` (view_march.glsl
+/// evaluates and bounds each code its own way): the view's one dispatch on
+/// the family. Families without a GLSL form never get here (check_term).
+struct ShaderCodes {
+  KernelFamily family;
+  Code segment, point;
+};
+constexpr ShaderCodes shader_codes[] = {
+    {KernelFamily::inverse, Code::inverse_segment, Code::inverse_point},
+    {KernelFamily::cauchy, Code::cauchy_segment, Code::cauchy_point},
+    {KernelFamily::compact, Code::compact_segment, Code::supported_point},
+    {KernelFamily::soft, Code::compact_segment, Code::supported_point},
+    {KernelFamily::wyvill, Code::compact_segment, Code::supported_point},
+    {KernelFamily::ferley, Code::compact_segment, Code::supported_point},
+    {KernelFamily::gaussian, Code::compact_segment, Code::gaussian_point},
+};
+const ShaderCodes& shader_code(KernelFamily family) {
+  return *std::find_if(std::begin(shader_codes), std::end(shader_codes),
+                       [&](const ShaderCodes& c) { return c.family == family; });
 }
 
-/// max_r |K'(r)| of a point's kernel with a support or a global bound
-/// (the maxima of |K'| in closed form, u = r/R):
-///   soft      4 u (1 − u²)/R, largest at u² = 1/3: 8/(3√3 R);
-///   wyvill    2 u (1 − u²)(22 − 12 u²)/(9R) = (44u − 68u³ + 24u⁵)/(9R),
-///             largest where 22 − 102 u² + 60 u⁴ = 0, u² = (102 − √5124)/120;
-///   ferley    k = 2/(R − e) on r < e, 2(R − r)/(R − e)² ≤ k beyond;
-///   gaussian  2abr exp(−ar²), largest at r = 1/√(2a): b √(2a) e^(−1/2).
-double point_slope_bound(const KernelSpec& k) {
-  switch (k.family) {
-    case KernelFamily::compact: return compact_slope_bound(k.degree, k.R);
-    case KernelFamily::soft: return 8.0 / (3.0 * std::sqrt(3.0) * k.R);
-    case KernelFamily::wyvill: {
-      const double u2 = (102.0 - std::sqrt(5124.0)) / 120.0, u = std::sqrt(u2);
-      return 2.0 * u * (1.0 - u2) * (22.0 - 12.0 * u2) / (9.0 * k.R);
-    }
-    case KernelFamily::ferley: return 2.0 / (k.R - k.e);
-    case KernelFamily::gaussian: return k.b * std::sqrt(2.0 * k.a) * std::exp(-0.5);
-    default: return 0.0;
-  }
-}
+bool is_supported(Code code) { return code == Code::compact_segment || code == Code::supported_point; }
 
 /// The term's weight in the page's frame, refused beyond float's range.
 double page_weight(const Term& term, double c) {
@@ -285,9 +282,7 @@ double page_weight(const Term& term, double c) {
 PageTerm page_segment(const Term& term, const Segment& s, const Frame& frame) {
   PageTerm p;
   p.family = s.kernel().family;
-  p.code = p.family == KernelFamily::inverse  ? Code::inverse_segment
-           : p.family == KernelFamily::cauchy ? Code::cauchy_segment
-                                              : Code::compact_segment;
+  p.code = shader_code(p.family).segment;
   p.degree = s.kernel().degree;
   p.s = s.kernel().s * frame.scale * frame.scale;
   p.R = s.kernel().R / frame.scale;
@@ -298,9 +293,13 @@ PageTerm page_segment(const Term& term, const Segment& s, const Frame& frame) {
     weight_bound += std::abs(w[j]) / double(j + 1);
   }
   p.magnitude = (s.b() - s.a()).norm() / frame.scale * weight_bound;
-  p.slope = p.family == KernelFamily::compact ? compact_slope_bound(p.degree, p.R) : 0.0;
-  // f(P) = λ^power f'(P'), λ = scale: inverse 1 − i, Cauchy and compact 1.
-  const int power = p.family == KernelFamily::inverse ? 1 - p.degree : 1;
+  KernelSpec page_kernel = s.kernel();
+  page_kernel.R = p.R;
+  page_kernel.s = p.s;
+  p.slope = kernels::max_slope(page_kernel);
+  // f(P) = λ^power f'(P'), λ = scale: 1 + the trait's scaling_power
+  // (radial_kernel.hpp): inverse 1 − i, Cauchy and compact 1.
+  const int power = 1 + kernels::scaling_power(s.kernel());
   p.c = page_weight(term, term.c * std::pow(frame.scale, power));
   return p;
 }
@@ -309,10 +308,7 @@ PageTerm page_point(const Term& term, const PointPrimitive& point, const Frame& 
   const KernelSpec& k = point.kernel();
   PageTerm p;
   p.family = k.family;
-  p.code = k.family == KernelFamily::inverse    ? Code::inverse_point
-           : k.family == KernelFamily::cauchy   ? Code::cauchy_point
-           : k.family == KernelFamily::gaussian ? Code::gaussian_point
-                                                : Code::supported_point;
+  p.code = shader_code(k.family).point;
   p.degree = k.degree;
   // Lengths divide by λ, so s and a (per length²) multiply by λ².
   p.s = k.s * frame.scale * frame.scale;
@@ -323,10 +319,12 @@ PageTerm page_point(const Term& term, const PointPrimitive& point, const Frame& 
   page_kernel.R = p.R;
   page_kernel.e = p.texel[1];
   page_kernel.a = p.texel[2];
-  p.slope = point_slope_bound(page_kernel);
-  // w K(r) = w λ^(−i) K(r') for the inverse kernel; the others are functions
-  // of r/R, r²s, r²a: unchanged.
-  const int power = k.family == KernelFamily::inverse ? -k.degree : 0;
+  page_kernel.s = p.s;
+  p.slope = kernels::max_slope(page_kernel);
+  if (is_supported(p.code)) p.peak = kernels::max_value(page_kernel);
+  // w K(r) = w λ^p K(r'), p the trait's scaling_power (radial_kernel.hpp):
+  // −i for the inverse kernel; the others are functions of r/R, r²s, r²a.
+  const int power = kernels::scaling_power(k);
   p.c = page_weight(term, term.c * point.weight() * std::pow(frame.scale, power));
   return p;
 }
@@ -334,11 +332,15 @@ PageTerm page_point(const Term& term, const PointPrimitive& point, const Frame& 
 PageTerm page_scalis(const Term& term, const ScalisSegment& s, const Frame& frame) {
   PageTerm p;
   p.family = s.kernel().family;
-  p.code = p.family == KernelFamily::inverse ? Code::scalis_inverse : Code::scalis_cauchy;
+  const kernels::FamilyFacts facts = kernels::family_facts(p.family);
+  // The GLSL SCALIS forms: inverse (singular on the segment) and Cauchy.
+  p.code = facts.scalis_singularity == kernels::ScalisSingularity::on_segment ? Code::scalis_inverse
+                                                                               : Code::scalis_cauchy;
   p.degree = s.kernel().degree;
-  // F is scale invariant (radii scale with the frame); the inverse family
-  // takes σ = 1 and h at σ = 1, as ScalisSegment does (σ^i cancels).
-  const double sigma = p.family == KernelFamily::inverse ? 1.0 : s.kernel().sigma;
+  // F is scale invariant (radii scale with the frame); a kernel without a
+  // length of its own (inverse) takes σ = 1 and h at σ = 1, as ScalisSegment
+  // does (σ^i cancels).
+  const double sigma = facts.scale_free ? 1.0 : s.kernel().sigma;
   p.texel = {s.tau0() / frame.scale, s.tau1() / frame.scale, sigma, 0.0};
   const double h = ScalisSegment::normalisation(p.family, p.degree, sigma);
   const double tau_max = std::max(p.texel[0], p.texel[1]);
@@ -356,8 +358,6 @@ PageTerm page_term(const Term& term, const Frame& frame) {
   p.b = frame.to_page(term.b());
   return p;
 }
-
-bool is_supported(Code code) { return code == Code::compact_segment || code == Code::supported_point; }
 
 /// K(r) of the term's kernel (decreasing in r) in the page's frame; for a
 /// SCALIS segment the r^(−i) that bounds its integrand.
@@ -380,9 +380,7 @@ double support_margin(const std::vector<PageTerm>& terms, double level) {
   const auto bound = [&](double r) {
     double total = 0.0;
     for (const PageTerm& t : terms) {
-      // Ferley's K(0) = 1 + k e = (R + e)/(R − e) is its largest value.
-      const double peak = t.family == KernelFamily::ferley ? (t.R + t.texel[1]) / (t.R - t.texel[1]) : 1.0;
-      total += t.c * t.magnitude * peak * kernel_value(t, r);
+      total += t.c * t.magnitude * t.peak * kernel_value(t, r);
     }
     return total;
   };
@@ -436,9 +434,7 @@ std::string kernel_label(const Term& term, const PageTerm& t) {
   const std::string family(family_name(t.family));
   if (std::holds_alternative<Segment>(*term.primitive)) return fmt::format("{} {}", family, t.degree);
   if (std::holds_alternative<ScalisSegment>(*term.primitive)) return fmt::format("scalis {} {}", family, t.degree);
-  const bool has_degree = t.family == KernelFamily::inverse || t.family == KernelFamily::cauchy ||
-                          t.family == KernelFamily::compact;
-  return has_degree ? fmt::format("point {} {}", family, t.degree) : "point " + family;
+  return kernels::family_facts(t.family).has_degree ? fmt::format("point {} {}", family, t.degree) : "point " + family;
 }
 
 /// The view_march.glsl function that builds the input of kernel `name`

@@ -31,6 +31,22 @@ struct CauchyKernel {
   }
 
   double support_radius() const { return std::numeric_limits<double>::infinity(); }
+  static constexpr bool finite_support = false;  ///< support_radius() is finite
+  static constexpr bool vanishes_far = false;  ///< decays as a power, (s r²)^(−i/2)
+  int scaling_power() const { return 0; }      ///< a function of s r²
+  /// K = (α r² + β)^(−i/2) with α = s, β = 1 (as inverse.hpp).
+  template <class T>
+  static std::array<T, 2> quadratic_form(const T& s) {
+    return {s, T(1)};
+  }
+  double length_scale() const { return 1.0 / std::sqrt(s); }
+  double max_value() const { return 1.0; }  ///< K(0)
+  /// |K'| = i s r q^(−i/2−1), q = 1 + s r², is largest where q = (i + 2) s r²,
+  /// i.e. s r² = 1/(i + 1): i √s (i + 1)^(−1/2) ((i + 2)/(i + 1))^(−(i+2)/2).
+  double max_slope() const {
+    const double i = degree;
+    return i * std::sqrt(s / (i + 1)) * std::pow((i + 2) / (i + 1), -0.5 * (i + 2));
+  }
 
   /// (1 + s r²)^(−i/2).
   template <class T>
@@ -58,6 +74,9 @@ struct CauchyKernel {
 
   // SCALIS (scalis_description.hpp): K(d/σ) = (1 + (d/σ)²)^(−i/2).
   static constexpr ScalisSingularity scalis_singularity = ScalisSingularity::at_zero_radius;
+  static constexpr bool scalis_segment_generated = true;
+  static constexpr bool scalis_sigma_above_one = false;
+  static constexpr double scalis_radius_term = 1.0;  ///< (1 + (d/στ)²)^(−i/2) ∝ (d² + σ²τ²)^(−i/2)
   static double scalis_line_normalisation(int i, double sigma) {
     return std::pow(sigma, i) * std::pow(1.0 + sigma * sigma, (1.0 - i) / 2) * inverse_line_integral(i);
   }

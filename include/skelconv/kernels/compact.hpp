@@ -33,6 +33,18 @@ struct CompactKernel {
   }
 
   double support_radius() const { return R; }
+  static constexpr bool finite_support = true;  ///< support_radius() is finite
+  static constexpr bool vanishes_far = true;  ///< 0 from r = R on
+  int scaling_power() const { return 0; }     ///< a function of r/R
+  double length_scale() const { return R; }
+  double max_value() const { return 1.0; }  ///< K(0)
+  /// |K'| = i u (1 − u²)^((i−2)/2) / R with u = r/R, largest at u² = 1/(i − 1)
+  /// for i > 2 (at u = 1 for i = 2).
+  double max_slope() const {
+    const double i = degree;
+    const double u = i > 2 ? 1.0 / std::sqrt(i - 1) : 1.0;
+    return i * u * std::pow(1.0 - u * u, 0.5 * (i - 2)) / R;
+  }
 
   /// (1 − r²/R²)^(i/2) inside the support, exactly 0 from r = R on. The
   /// test is on r itself, so that an interval r (skelconv/interval/) is
@@ -58,6 +70,9 @@ struct CompactKernel {
 
   // SCALIS (scalis_description.hpp): K(d/σ) = (1 − (d/σ)²)^(i/2), σ > 1.
   static constexpr ScalisSingularity scalis_singularity = ScalisSingularity::none;
+  static constexpr bool scalis_segment_generated = false;  ///< scalis_compact_F (primitives/scalis_compact.hpp)
+  static constexpr bool scalis_sigma_above_one = true;
+  static constexpr double scalis_radius_term = 0.0;  ///< not read: finite support
   static double scalis_line_normalisation(int i, double sigma) {
     return sigma * std::pow(1.0 - 1.0 / (sigma * sigma), (i + 1) / 2.0) * compact_line_integral(i);
   }

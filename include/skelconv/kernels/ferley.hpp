@@ -39,6 +39,14 @@ struct FerleyKernel {
   explicit FerleyKernel(const KernelSpec& spec);
 
   double support_radius() const { return R; }
+  static constexpr bool finite_support = true;  ///< support_radius() is finite
+  static constexpr bool vanishes_far = true;  ///< 0 from r = R on
+  int scaling_power() const { return 0; }     ///< a function of r/R and e/R
+  double length_scale() const { return R; }
+  /// K(0) = 1 + k e = (R + e)/(R − e), written so (file comment).
+  double max_value() const { return (R + e) / (R - e); }
+  /// k = 2/(R − e) on r < e, 2(R − r)/(R − e)² ≤ k beyond.
+  double max_slope() const { return 2.0 / (R - e); }
   /// The C¹ slope k = 2/(R − e) (file comment).
   double slope() const { return 2.0 / (R - e); }
 

@@ -44,6 +44,15 @@ struct GaussianKernel {
   }
 
   double support_radius() const { return std::numeric_limits<double>::infinity(); }
+  /// exp(−a r²) underflows to 0 at a finite r (0 is then its correctly
+  /// rounded value).
+  static constexpr bool finite_support = false;  ///< support_radius() is finite
+  static constexpr bool vanishes_far = true;
+  int scaling_power() const { return 0; }  ///< a function of a r²
+  double length_scale() const { return 1.0 / std::sqrt(a); }
+  double max_value() const { return b; }  ///< K(0)
+  /// |K'| = 2abr exp(−ar²), largest at r = 1/√(2a): b √(2a) e^(−1/2).
+  double max_slope() const { return b * std::sqrt(2.0 * a) * std::exp(-0.5); }
 
   template <class T>
   T value(const T& r) const {

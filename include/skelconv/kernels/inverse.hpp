@@ -32,6 +32,19 @@ struct InverseKernel {
   }
 
   double support_radius() const { return std::numeric_limits<double>::infinity(); }
+  static constexpr bool finite_support = false;  ///< support_radius() is finite
+  static constexpr bool vanishes_far = false;  ///< r^(−i) > 0 in double up to r ~ 2^(1074/i)
+  /// r^(−i) has no length of its own: λ^(−i) K(r/λ) (radial_kernel.hpp).
+  int scaling_power() const { return -degree; }
+  /// K = (α r² + β)^(−i/2) with α = 1, β = 0: the form the polygon closed
+  /// forms take (SPEC §3, skelconv/primitives/polygon_field.hpp).
+  template <class T>
+  static std::array<T, 2> quadratic_form(const T& /*s*/) {
+    return {T(1), T(0)};
+  }
+  double length_scale() const { return 1.0; }
+  double max_value() const { return std::numeric_limits<double>::infinity(); }  ///< K(0) = +inf
+  double max_slope() const { return std::numeric_limits<double>::infinity(); }
 
   /// r^(−i); r > 0 (r = 0 is the singular centre, handled by the caller).
   template <class T>
@@ -57,6 +70,9 @@ struct InverseKernel {
 
   // SCALIS (scalis_description.hpp): K(d/σ) = (d/σ)^(−i).
   static constexpr ScalisSingularity scalis_singularity = ScalisSingularity::on_segment;
+  static constexpr bool scalis_segment_generated = true;
+  static constexpr bool scalis_sigma_above_one = false;
+  static constexpr double scalis_radius_term = 0.0;  ///< (d/σ)^(−i) ∝ (d²)^(−i/2)
   static double scalis_line_normalisation(int i, double sigma) { return std::pow(sigma, i) * inverse_line_integral(i); }
   /// 2π σ^i / (i − 2); diverges for i ≤ 2.
   static double scalis_plane_normalisation(int i, double sigma) {

@@ -2,7 +2,7 @@
 // variant, and the one place a KernelSpec becomes a trait.
 //
 // Adding a family is: its trait header, one entry in RadialKernel
-// below, and its name in KernelFamily (segment_input.hpp). The reader
+// below, and its name in KernelFamily (kernel_family.hpp). The reader
 // (src/skeleton/skeleton_file.cpp) learns its JSON keys from family_facts().
 #pragma once
 
@@ -19,6 +19,7 @@
 #include "skelconv/kernels/ferley.hpp"
 #include "skelconv/kernels/gaussian.hpp"
 #include "skelconv/kernels/inverse.hpp"
+#include "skelconv/kernels/scalis_description.hpp"
 #include "skelconv/kernels/soft.hpp"
 #include "skelconv/kernels/wyvill.hpp"
 
@@ -36,8 +37,18 @@ struct FamilyFacts {
   unsigned primitives = on_points;  ///< PrimitiveKind bits (radial_kernel.hpp)
   bool singular_at_zero = false;    ///< K(0) = +inf (inverse)
   bool finite_support = false;      ///< K = 0 beyond a radius (compact, soft, wyvill, ferley)
+  bool vanishes_far = false;        ///< the trait's vanishes_far: a positive field may be 0 in double
+  /// No length of its own (scaling_power ≠ 0, radial_kernel.hpp: inverse):
+  /// K(r/σ) = σ^(−p) K(r), so a scale σ factors out of every field.
+  bool scale_free = false;
   /// Non-empty: K is this exact combination of compact levels k_R^i.
   std::span<const CompactLevel> compact_levels;
+
+  // The SCALIS description (scalis_description.hpp); defaults elsewhere.
+  ScalisSingularity scalis_singularity = ScalisSingularity::none;
+  bool scalis_segment_generated = false;
+  bool scalis_sigma_above_one = false;
+  double scalis_radius_term = 0.0;
 
   bool on(PrimitiveKind kind) const { return (primitives & kind) != 0; }
 };
@@ -57,18 +68,33 @@ RadialKernel make_from(const KernelSpec& spec) {
 template <std::size_t index = 0>
 FamilyFacts facts_from(KernelFamily family) {
   if constexpr (index == std::variant_size_v<RadialKernel>) {
-    return {family_name(family), {}, true, 0, on_points, false, false, {}};
+    FamilyFacts facts;
+    facts.name = family_name(family);
+    return facts;
   } else {
     using Kernel = std::variant_alternative_t<index, RadialKernel>;
     if (family == Kernel::family) {
-      std::span<const CompactLevel> levels;
-      if constexpr (requires { Kernel::compact_levels; }) levels = Kernel::compact_levels;
+      FamilyFacts facts;
+      facts.name = Kernel::name;
+      facts.parameters = std::span<const std::string_view>(Kernel::parameters);
+      facts.has_degree = Kernel::has_degree;
+      facts.min_degree = Kernel::min_degree;
+      facts.primitives = Kernel::primitives;
+      facts.singular_at_zero = Kernel::singular_at_zero;
       KernelSpec defaults;  // valid parameters for every family
       defaults.family = family;
       defaults.degree = Kernel::min_degree;
-      const bool finite_support = std::isfinite(Kernel(defaults).support_radius());
-      return {Kernel::name, std::span<const std::string_view>(Kernel::parameters), Kernel::has_degree,
-              Kernel::min_degree, Kernel::primitives, Kernel::singular_at_zero, finite_support, levels};
+      facts.finite_support = Kernel::finite_support;
+      facts.vanishes_far = Kernel::vanishes_far;
+      facts.scale_free = Kernel(defaults).scaling_power() != 0;
+      if constexpr (requires { Kernel::compact_levels; }) facts.compact_levels = Kernel::compact_levels;
+      if constexpr ((Kernel::primitives & on_scalis) != 0) {
+        facts.scalis_singularity = Kernel::scalis_singularity;
+        facts.scalis_segment_generated = Kernel::scalis_segment_generated;
+        facts.scalis_sigma_above_one = Kernel::scalis_sigma_above_one;
+        facts.scalis_radius_term = Kernel::scalis_radius_term;
+      }
+      return facts;
     }
     return facts_from<index + 1>(family);
   }
@@ -106,6 +132,39 @@ inline RadialKernel make_radial_kernel(const KernelSpec& spec) { return detail::
 /// The support radius of any trait (+inf for infinite support).
 inline double support_radius(const RadialKernel& kernel) {
   return std::visit([](const auto& k) { return k.support_radius(); }, kernel);
+}
+
+namespace detail {
+/// The trait of spec.family with spec's parameters (InputError at
+/// "kernel.<key>") and spec's degree unchecked: the degrees of segments,
+/// polygons and SCALIS primitives are those of their own tables, not the
+/// trait's point range.
+inline RadialKernel trait_of_any_degree(const KernelSpec& spec) {
+  KernelSpec checked = spec;
+  checked.degree = family_facts(spec.family).min_degree;
+  RadialKernel kernel = make_radial_kernel(checked);
+  std::visit(
+      [&](auto& k) {
+        if constexpr (requires { k.degree; }) k.degree = spec.degree;
+      },
+      kernel);
+  return kernel;
+}
+}  // namespace detail
+
+/// The trait's scaling_power(), length_scale(), max_value(), max_slope()
+/// (radial_kernel.hpp) for spec, of any degree (detail::trait_of_any_degree).
+inline int scaling_power(const KernelSpec& spec) {
+  return std::visit([](const auto& k) { return k.scaling_power(); }, detail::trait_of_any_degree(spec));
+}
+inline double length_scale(const KernelSpec& spec) {
+  return std::visit([](const auto& k) { return k.length_scale(); }, detail::trait_of_any_degree(spec));
+}
+inline double max_value(const KernelSpec& spec) {
+  return std::visit([](const auto& k) { return k.max_value(); }, detail::trait_of_any_degree(spec));
+}
+inline double max_slope(const KernelSpec& spec) {
+  return std::visit([](const auto& k) { return k.max_slope(); }, detail::trait_of_any_degree(spec));
 }
 
 /// Radius of the iso-surface w K(r) = c around a point primitive of weight

@@ -35,6 +35,13 @@ concept RadialKernelTrait = requires(const K k, const KernelSpec& spec, double r
   { k.value(r) } -> std::convertible_to<double>;
   { k.derivative(r) } -> std::convertible_to<double>;
   { k.point_iso_radius(c) } -> std::convertible_to<std::optional<double>>;
+  // What the runtime asks instead of comparing families (radial_kernel.hpp).
+  { K::finite_support } -> std::convertible_to<bool>;
+  { K::vanishes_far } -> std::convertible_to<bool>;
+  { k.scaling_power() } -> std::convertible_to<int>;
+  { k.length_scale() } -> std::convertible_to<double>;
+  { k.max_value() } -> std::convertible_to<double>;
+  { k.max_slope() } -> std::convertible_to<double>;
 };
 
 }  // namespace skelconv::kernels

@@ -20,12 +20,26 @@
 //     explicit SomeKernel(const KernelSpec&);        // validates: InputError at
 //                                                     // "kernel.degree", "kernel.<param>"
 //     double support_radius() const;                 // K(r) = 0 for r >= it; +inf if none
+//     static constexpr bool finite_support;          // support_radius() is finite
+//     static constexpr bool vanishes_far;            // K is 0 (finite support) or underflows
+//                                                     // to 0 at a finite r (faster than any power)
+//     int scaling_power() const;                     // p: with its length parameters scaled
+//                                                     // by λ, the kernel is λ^p K(r/λ) (below)
+//     double length_scale() const;                   // its own length (1 if it has none)
+//     double max_value() const;                      // max K = K(0) (+inf: singular)
+//     double max_slope() const;                      // max |dK/dr| (+inf: singular)
 //     template <class T> T value(const T& r) const;       // K(r), r >= 0
 //     template <class T> T derivative(const T& r) const;  // dK/dr, r >= 0
 //     std::optional<double> point_iso_radius(double c) const;  // ρ: K(ρ) = c
 //     std::optional<double> line_iso_radius(double c) const;   // optional member:
 //                                                     // d where ∫K along an infinite line = c
 //   };
+//
+// Scaling (scaling_power): multiplying every length by λ, and the kernel's
+// length parameters with them (R, e as lengths, s and a as length^−2), turns
+// K into λ^p K(r/λ): p = −i for the inverse kernel, which has no length of its
+// own, and 0 for every other family, a function of r/R, s r², a r². A
+// segment's field then scales by λ^(1+p), a polygon's by λ^(2+p).
 //
 // Every family is non-increasing in r (the interval enclosures of
 // skelconv/interval/ rely on it), and value() compares only its argument r

@@ -14,6 +14,13 @@
 //       the classical kernel whose polygon closed form, times `factor`, is F
 //       of a triangle of constant radius τ
 //   static constexpr ScalisSingularity scalis_singularity;  // where F = +inf
+//   static constexpr bool scalis_segment_generated;  // the segment's F is in the
+//       generated table (false: the hand-written scalis_compact_F)
+//   static constexpr bool scalis_sigma_above_one;    // σ > 1 is required (the
+//       kernel vanishes at d = στ, so σ ≤ 1 never reaches the thickness τ)
+//   static constexpr double scalis_radius_term;      // c in the triangle
+//       quadrature's D = d² + c σ²τ² (families of infinite support; the
+//       finite-support one integrates q = σ²τ² − d² > 0 instead)
 //
 // and the primitives reach them through with_scalis_trait() (kernel_list.hpp).
 #pragma once

@@ -35,6 +35,13 @@ struct SoftKernel {
   explicit SoftKernel(const KernelSpec& spec) : R(spec.R) { require_positive(R, "kernel.R"); }
 
   double support_radius() const { return R; }
+  static constexpr bool finite_support = true;  ///< support_radius() is finite
+  static constexpr bool vanishes_far = true;  ///< 0 from r = R on
+  int scaling_power() const { return 0; }     ///< a function of r/R
+  double length_scale() const { return R; }
+  double max_value() const { return 1.0; }  ///< K(0)
+  /// |K'| = 4 u (1 − u²)/R with u = r/R, largest at u² = 1/3: 8/(3√3 R).
+  double max_slope() const { return 8.0 / (3.0 * std::sqrt(3.0) * R); }
 
   /// (1 − r²/R²)², 0 from r = R on (the test is on r: see compact.hpp).
   template <class T>

@@ -33,6 +33,17 @@ struct WyvillKernel {
   explicit WyvillKernel(const KernelSpec& spec) : R(spec.R) { require_positive(R, "kernel.R"); }
 
   double support_radius() const { return R; }
+  static constexpr bool finite_support = true;  ///< support_radius() is finite
+  static constexpr bool vanishes_far = true;  ///< 0 from r = R on
+  int scaling_power() const { return 0; }     ///< a function of r/R
+  double length_scale() const { return R; }
+  double max_value() const { return 1.0; }  ///< K(0)
+  /// |K'| = 2 u (1 − u²)(22 − 12 u²)/(9R) = (44u − 68u³ + 24u⁵)/(9R) with
+  /// u = r/R, largest where 22 − 102 u² + 60 u⁴ = 0, u² = (102 − √5124)/120.
+  double max_slope() const {
+    const double u2 = (102.0 - std::sqrt(5124.0)) / 120.0, u = std::sqrt(u2);
+    return 2.0 * u * (1.0 - u2) * (22.0 - 12.0 * u2) / (9.0 * R);
+  }
 
   /// v² (5 + 4v) / 9, v = 1 − r²/R²; 0 from r = R on.
   template <class T>

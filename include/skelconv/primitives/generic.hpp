@@ -27,6 +27,7 @@
 
 #include "generated/segment_table.hpp"
 #include "skelconv/detail/clip.hpp"
+#include "skelconv/kernels/read_trait.hpp"
 #include "skelconv/primitives/segment.hpp"
 
 namespace skelconv {
@@ -45,7 +46,7 @@ std::optional<SegmentInput<T>> segment_input(const Segment& segment, const std::
   for (std::size_t k = 0; k < input.w.size(); ++k) input.w[k] = k < w.size() ? T(w[k]) : T(0);
   input.s = T(segment.kernel().s);
   input.R = T(segment.kernel().R);
-  if (segment.kernel().family == KernelFamily::compact) {
+  if (kernels::has_finite_support(segment.kernel().family)) {  // clipped to the support ball
     const std::optional<ParameterInterval<T>> inside = clip_to_ball(input.a, input.b, input.p, input.R);
     if (!inside) return std::nullopt;
     input.t0 = inside->t0;

@@ -48,6 +48,7 @@
 #include "skelconv/primitives/polygon_edge_input.hpp"
 #include "skelconv/detail/integer_power.hpp"
 #include "skelconv/detail/plane_height.hpp"
+#include "skelconv/kernels/read_trait.hpp"
 #include "skelconv/primitives/segment_input.hpp"  // KernelFamily
 
 namespace skelconv {
@@ -70,6 +71,34 @@ inline std::vector<int> polygon_supported_degrees(KernelFamily family) {
   for (const auto& k : generated::polygon_edge_kernels<double>())
     if (k.family == family) degrees.push_back(k.degree);
   return degrees;
+}
+
+/// What the contour sums need of the polygon's kernel, from its trait
+/// (kernel_list.hpp).
+template <class T>
+struct PolygonKernelForm {
+  bool singular = false;        ///< K(0) = +inf (inverse): exact height near the plane, +inf on it
+  bool finite_support = false;  ///< K = 0 beyond R (compact): the support ball's disc on the plane
+  T alpha = T(1), beta = T(0);  ///< otherwise K = (α r² + β)^(−i/2) (the trait's quadratic_form)
+};
+
+/// The form of poly.family (the default form for a value that names no
+/// family: the generated table has no kernel for it either).
+template <class T>
+PolygonKernelForm<T> polygon_kernel_form(const PolygonInput<T>& poly) {
+  const auto form_of = [&](auto trait) {
+    using K = typename decltype(trait)::type;
+    PolygonKernelForm<T> form;
+    form.singular = K::singular_at_zero;
+    form.finite_support = K::finite_support;
+    if constexpr (requires { K::quadratic_form(poly.s); }) {
+      const std::array<T, 2> q = K::quadratic_form(poly.s);
+      form.alpha = q[0];
+      form.beta = q[1];
+    }
+    return form;
+  };
+  return kernels::read_trait<PolygonKernelForm<T>>(poly.family, form_of, PolygonKernelForm<T>{});
 }
 
 namespace detail {
@@ -95,16 +124,17 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   if (kernel == nullptr)
     throw std::invalid_argument("polygon: no generated kernel for " + std::string(family_name(poly.family)) +
                                 " degree " + std::to_string(poly.degree));
+  const PolygonKernelForm<T> form = polygon_kernel_form(poly);
   const auto& n = poly.normal;
   const auto& v = poly.vertices;
   const std::size_t count = v.size();
   // The height above the plane; near it, for the inverse kernels (singular
   // there), from the exact vertices and P (skelconv/detail/plane_height.hpp).
   T z = plain_plane_height(p, v[0], n);
-  if (poly.family == KernelFamily::inverse && needs_exact_plane_height(z, p, v[0])) z = exact_plane_height(v, p);
+  if (form.singular && needs_exact_plane_height(z, p, v[0])) z = exact_plane_height(v, p);
   std::array<T, 3> foot, foot_lo;
   plane_foot(p, z, n, foot, foot_lo);
-  const bool compact = poly.family == KernelFamily::compact;
+  const bool compact = form.finite_support;
   if (grad) *grad = {T(0), T(0), T(0)};
   if (!compact && edge_fields == nullptr) {
     std::array<T, 3> centre = {T(0), T(0), T(0)};
@@ -118,8 +148,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
     // The kernel (α r² + β)^(−i/2) is singular at complex distance
     // √(r² + β/α): a wide Cauchy kernel (small s) is as smooth over the
     // polygon as a far point, and the fans cancel there just the same.
-    const bool inverse = poly.family == KernelFamily::inverse;
-    const T alpha = inverse ? T(1) : poly.s, beta = inverse ? T(0) : T(1);
+    const T alpha = form.alpha, beta = form.beta;
     const T ratio = T(polygon_far_field_ratio);
     if (distance2 + beta / alpha >= ratio * ratio * radius2)
       return polygon_far_field<T>(v, n, poly.degree, alpha, beta, p, grad);
@@ -189,15 +218,14 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
         edge_fields->push_back(t.h == T(0) ? T(0)
                                            : R2 / T(2 * (j + 1)) * (w_j * w * (t.theta - t.theta_in) - t.S_f));
   } else {
-    const bool inverse = poly.family == KernelFamily::inverse;
-    if (inverse && z == T(0) && (Theta != T(0) || on_boundary)) {
+    if (form.singular && z == T(0) && (Theta != T(0) || on_boundary)) {
       const T inf = std::numeric_limits<T>::infinity();
       if (grad) *grad = {inf, inf, inf};
       return inf;
     }
     // C = (ζ^(2−i) Θ − Σ H_{i−2}) / (α(i − 2)), ∂C/∂z = −z (ζ^(−i) Θ − Σ H_i).
-    const T alpha = inverse ? T(1) : poly.s;
-    const T zeta2 = alpha * z * z + (inverse ? T(0) : T(1));
+    const T alpha = form.alpha;
+    const T zeta2 = alpha * z * z + form.beta;
     const T zeta = sqrt(zeta2);
     const T winding_f = Theta == T(0) ? T(0) : integer_power(zeta, 2 - i) * Theta;
     const T winding_g = Theta == T(0) ? T(0) : integer_power(zeta, -i) * Theta;

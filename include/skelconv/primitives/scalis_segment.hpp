@@ -127,6 +127,7 @@ class ScalisSegment {
   const char* name_ = "scalis_compact_F";
   bool diverges_on_segment_ = false;
   bool diverges_at_zero_radius_ = false;
+  bool may_vanish_ = false;  ///< F may be 0 in double: the kernel has a finite support
 };
 
 }  // namespace skelconv
