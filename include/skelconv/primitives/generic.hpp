@@ -24,8 +24,10 @@
 
 #include <array>
 #include <optional>
+#include <string>
 
 #include "generated/segment_table.hpp"
+#include "skelconv/errors.hpp"
 #include "skelconv/detail/clip.hpp"
 #include "skelconv/kernels/read_trait.hpp"
 #include "skelconv/primitives/segment.hpp"
@@ -65,7 +67,17 @@ T segment_value_and_gradient(const Segment& segment, const std::array<T, 3>& p, 
     return T(0);
   }
   const KernelSpec& kernel = segment.kernel();
-  return generated::find_segment_kernel<T>(kernel.family, kernel.degree, segment.weight_degree())->f_and_grad(*input, gradient);
+  const auto* generated = generated::find_segment_kernel<T>(kernel.family, kernel.degree, segment.weight_degree());
+  // Soft, Wyvill and Gaussian segments are not in the generated table (the
+  // double API builds them from compact levels or a hand-written closed
+  // form, docs/field.md): say so rather than call through a null entry.
+  if (generated == nullptr) {
+    throw InputError(std::string("no generated closed form for a ") + std::string(family_name(kernel.family)) +
+                     " segment of degree " + std::to_string(kernel.degree) + " with weight degree " +
+                     std::to_string(segment.weight_degree()) +
+                     ": segment_value_and_gradient<T> covers the generated segment kernels only");
+  }
+  return generated->f_and_grad(*input, gradient);
 }
 
 }  // namespace skelconv
