@@ -25,7 +25,7 @@ namespace skelconv::generated {
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 47 +, 70 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 68980 +, 88331 ×, 24217 /, 541 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 70057 +, 89408 ×, 25294 /, 541 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -107,7 +107,7 @@ T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 63 +, 106 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 56081 +, 76527 ×, 12117 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 56620 +, 77066 ×, 12656 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i2_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -225,7 +225,7 @@ std::array<T, 3> scalis_segment_cauchy_i2_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 65 +, 115 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 56082 +, 76532 ×, 12117 /, 272 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 56621 +, 77071 ×, 12656 /, 272 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -348,7 +348,7 @@ T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 50 +, 84 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53247 +, 80520 ×, 16163 /, 7546 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 53966 +, 81239 ×, 16882 /, 7546 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -452,7 +452,7 @@ T scalis_segment_cauchy_i3_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 68 +, 136 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 53449 +, 82700 ×, 9687 /, 4520 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 53880 +, 83131 ×, 10118 /, 4520 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i3_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -581,7 +581,7 @@ std::array<T, 3> scalis_segment_cauchy_i3_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 73 +, 158 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53452 +, 82714 ×, 9689 /, 4522 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 53883 +, 83145 ×, 10120 /, 4522 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -733,7 +733,7 @@ T scalis_segment_cauchy_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 57 +, 103 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 45310 +, 60365 ×, 12112 /, 272 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 45849 +, 60904 ×, 12651 /, 272 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -831,7 +831,7 @@ T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 79 +, 166 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 51687 +, 68889 ×, 8067 /, 182 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 52046 +, 69248 ×, 8426 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i4_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -965,7 +965,7 @@ std::array<T, 3> scalis_segment_cauchy_i4_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 85 +, 191 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 51690 +, 68900 ×, 8067 /, 182 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 52049 +, 69259 ×, 8426 /, 182 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1106,7 +1106,7 @@ T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 62 +, 133 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 40537 +, 65475 ×, 9683 /, 4522 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 40968 +, 65906 ×, 10114 /, 4522 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i5_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1228,7 +1228,7 @@ T scalis_segment_cauchy_i5_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 86 +, 210 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 50647 +, 77779 ×, 6942 /, 3239 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 50956 +, 78088 ×, 7251 /, 3239 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i5_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1380,7 +1380,7 @@ std::array<T, 3> scalis_segment_cauchy_i5_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 95 +, 249 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 50652 +, 77799 ×, 6944 /, 3241 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 50961 +, 78108 ×, 7253 /, 3241 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1557,7 +1557,7 @@ T scalis_segment_cauchy_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 71 +, 157 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 37352 +, 50956 ×, 8062 /, 182 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 37711 +, 51315 ×, 8421 /, 182 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i6_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1676,7 +1676,7 @@ T scalis_segment_cauchy_i6_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 99 +, 239 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 49453 +, 65032 ×, 6042 /, 137 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 49722 +, 65301 ×, 6311 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i6_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1834,7 +1834,7 @@ std::array<T, 3> scalis_segment_cauchy_i6_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 109 +, 279 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 49458 +, 65049 ×, 6042 /, 137 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 49727 +, 65318 ×, 6311 /, 137 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1999,7 +1999,7 @@ T scalis_segment_cauchy_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 78 +, 196 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 35231 +, 59262 ×, 6938 /, 3241 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 35540 +, 59571 ×, 7247 /, 3241 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i7_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2143,7 +2143,7 @@ T scalis_segment_cauchy_i7_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 108 +, 298 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 48693 +, 74442 ×, 5367 /, 2504 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48932 +, 74681 ×, 5606 /, 2504 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i7_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2322,7 +2322,7 @@ std::array<T, 3> scalis_segment_cauchy_i7_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 121 +, 350 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 48700 +, 74468 ×, 5369 /, 2506 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48939 +, 74707 ×, 5608 /, 2506 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2526,7 +2526,7 @@ T scalis_segment_cauchy_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 89 +, 224 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 33354 +, 46226 ×, 6037 /, 137 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 33623 +, 46495 ×, 6306 /, 137 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i8_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2666,7 +2666,7 @@ T scalis_segment_cauchy_i8_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 123 +, 325 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 48531 +, 63268 ×, 4872 /, 111 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48748 +, 63485 ×, 5089 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i8_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2846,7 +2846,7 @@ std::array<T, 3> scalis_segment_cauchy_i8_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 137 +, 380 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 48538 +, 63291 ×, 4872 /, 111 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48755 +, 63508 ×, 5089 /, 111 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3034,7 +3034,7 @@ T scalis_segment_cauchy_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 98 +, 278 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 32013 +, 55352 ×, 5363 /, 2506 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 32252 +, 55591 ×, 5602 /, 2506 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i9_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3200,7 +3200,7 @@ T scalis_segment_cauchy_i9_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 134 +, 395 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 47971 +, 73118 ×, 4422 /, 2063 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48168 +, 73315 ×, 4619 /, 2063 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i9_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3402,7 +3402,7 @@ std::array<T, 3> scalis_segment_cauchy_i9_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 151 +, 464 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 47980 +, 73150 ×, 4424 /, 2065 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48177 +, 73347 ×, 4621 /, 2065 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3630,7 +3630,7 @@ T scalis_segment_cauchy_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 111 +, 306 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 31228 +, 43773 ×, 4867 /, 111 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31445 +, 43990 ×, 5084 /, 111 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i10_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3794,7 +3794,7 @@ T scalis_segment_cauchy_i10_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 151 +, 428 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 47673 +, 61779 ×, 4062 /, 93 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 47854 +, 61960 ×, 4243 /, 93 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i10_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4001,7 +4001,7 @@ std::array<T, 3> scalis_segment_cauchy_i10_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 169 +, 498 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 47682 +, 61808 ×, 4062 /, 93 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 47863 +, 61989 ×, 4243 /, 93 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
