@@ -57,7 +57,8 @@ Vec3 Term::b() const {
 }
 
 /// The terms of the tree under node `id` (located at `where`), weights
-/// multiplied down. Refuses every node the shader cannot evaluate.
+/// multiplied down, in file order. Refuses the blend nodes and weights the
+/// shader cannot evaluate; the primitives are checked by check_term.
 void collect_terms(const Skeleton& skeleton, Skeleton::NodeId id, const std::string& where, double c,
                    std::vector<Term>& terms) {
   const Blend& blend = skeleton.blend(id);
@@ -80,16 +81,7 @@ void collect_terms(const Skeleton& skeleton, Skeleton::NodeId id, const std::str
       collect_terms(skeleton, index, child, c * w, terms);
       continue;
     }
-    const Primitive& primitive = skeleton.primitives()[index];
-    if (!std::holds_alternative<Segment>(primitive) && !std::holds_alternative<PointPrimitive>(primitive) &&
-        !std::holds_alternative<ScalisSegment>(primitive)) {
-      static constexpr const char* kNames[] = {"segment", "polygon", "scalis_segment", "scalis_triangle", "point"};
-      throw InputError(fmt::format("type \"{}\": the viewer's shader evaluates segments, points and SCALIS "
-                                   "segments (the kernels of generated/glsl/; docs/view.md)",
-                                   kNames[primitive.index()]),
-                       child);
-    }
-    terms.push_back({&primitive, child, c * w});
+    terms.push_back({&skeleton.primitives()[index], child, c * w});
   }
 }
 
@@ -153,6 +145,15 @@ std::string glsl_function(std::string_view file, const std::string& signature) {
 /// holds for it; returns the name of its kernel functions (without _f /
 /// _f_and_grad).
 std::string check_term(const Term& term) {
+  const Primitive& primitive = *term.primitive;
+  if (!std::holds_alternative<Segment>(primitive) && !std::holds_alternative<PointPrimitive>(primitive) &&
+      !std::holds_alternative<ScalisSegment>(primitive)) {
+    static constexpr const char* kNames[] = {"segment", "polygon", "scalis_segment", "scalis_triangle", "point"};
+    throw InputError(fmt::format("type \"{}\": the viewer's shader evaluates segments, points and SCALIS "
+                                 "segments (the kernels of generated/glsl/; docs/view.md)",
+                                 kNames[primitive.index()]),
+                     term.location);
+  }
   std::string name;
   if (const auto* s = std::get_if<Segment>(term.primitive)) {
     const KernelSpec& kernel = s->kernel();
@@ -491,6 +492,9 @@ std::string ray_march_page(const Skeleton& skeleton, const ViewPageOptions& opti
   std::vector<Term> terms;
   collect_terms(skeleton, Skeleton::root, "primitives", 1.0, terms);
   if (terms.empty()) throw InputError("no primitive: there is no surface to show", "primitives");
+  // Every term in file order, so that a refusal names the first element
+  // the ray marcher cannot show (its type or its kernel).
+  for (const Term& term : terms) check_term(term);
   if (terms.size() > max_view_primitives) {
     throw InputError(fmt::format("{} primitives: the viewer's shader loops over every primitive per step and "
                                  "shows at most {} (docs/view.md)",
