@@ -1,5 +1,5 @@
 // The soft-object kernel families (include/skelconv/kernels/:
-// soft, wyvill, ferley, gaussian): values against their definitions as the
+// soft, wyvill, ferley, gaussian, polynomial): values against their definitions as the
 // sources print them (written out here, independently of the traits),
 // derivatives against 50-digit central differences, the iso ↔ radius
 // relations against the definitions (point) and quadrature (line), and
@@ -14,6 +14,7 @@
 
 #include "extended_difference.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/primitives/point.hpp"
 #include "skelconv/primitives/polygon.hpp"
 #include "skelconv/primitives/scalis_segment.hpp"
 #include "skelconv/primitives/scalis_triangle.hpp"
@@ -39,6 +40,7 @@ long double definition(const KernelSpec& k, long double d) {
       return d < k.R ? (d - k.R) * (d - k.R) / ((k.e - k.R) * (k.e - k.R)) : 0;
     }
     case KernelFamily::gaussian: return k.b * std::exp(-k.a * d * d);
+    case KernelFamily::polynomial: return d < k.R ? std::pow(1 - u, (long double)k.degree) : 0;
     default: return NAN;
   }
 }
@@ -58,7 +60,8 @@ long double definition_or_value(const K& k, long double r) {
 std::vector<KernelSpec> new_kernels() {
   return {KernelSpec::soft(1.3), KernelSpec::soft(3.7), KernelSpec::wyvill(0.8), KernelSpec::wyvill(2.5),
           KernelSpec::ferley(0.4, 1.5), KernelSpec::ferley(1.0, 1.2), KernelSpec::gaussian(0.7, 1.0),
-          KernelSpec::gaussian(3.0, 2.5)};
+          KernelSpec::gaussian(3.0, 2.5),   KernelSpec::polynomial(1, 1.3), KernelSpec::polynomial(3, 0.9),
+          KernelSpec::polynomial(8, 2.2)};
 }
 
 TEST(KernelFamilies, ValuesMatchTheDefinitions) {
@@ -303,6 +306,93 @@ TEST(KernelFamilies, ConstructorsRejectThemElsewhere) {
       "soft", [&] { ScalisTriangle({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {0.1, 0.1, 0.1}, scalis); }));
 }
 
+
+// ---- The polynomial family (1 − r²/R²)^k on points ---------------------------
+
+/// The field of tests/data/good/polynomial_points.json written out from the
+/// definition, in 50 digits: 2 (1 − |P|²/1.5²)³ + (1 − |P − (1.2, 0, 0)|²/0.8²)¹.
+Extended polynomial_points_definition(const std::array<Extended, 3>& p) {
+  const auto term = [&](double cx, double R, int k, double w) {
+    const Extended q = (p[0] - cx) * (p[0] - cx) + p[1] * p[1] + p[2] * p[2];
+    const Extended base = 1 - q / (Extended(R) * R);
+    return base > 0 ? Extended(w) * boost::multiprecision::pow(base, k) : Extended(0);
+  };
+  return term(0.0, 1.5, 3, 2.0) + term(1.2, 0.8, 1, 1.0);
+}
+
+// The skeleton file's field and gradient against the definition (value in
+// 50 digits, gradient by 50-digit central differences, extended_difference.hpp).
+TEST(KernelFamilies, PolynomialPointsFromAFileMatchTheDefinition) {
+  const Skeleton skeleton = parse_skeleton_json(R"({"primitives": [
+      {"type": "point", "center": [0, 0, 0], "kernel": {"family": "polynomial", "degree": 3, "R": 1.5}, "weight": 2},
+      {"type": "point", "center": [1.2, 0, 0], "kernel": {"family": "polynomial", "degree": 1, "R": 0.8}}]})");
+  int inside_both = 0;
+  for (double x = -1.7; x < 2.2; x += 0.113) {
+    for (double y : {0.0, 0.31, -0.77}) {
+      const std::array<double, 3> p{x, y, 0.2};
+      const FieldSample sample = skeleton.value_and_gradient(Vec3(p[0], p[1], p[2]));
+      const double reference =
+          static_cast<double>(polynomial_points_definition({Extended(p[0]), Extended(p[1]), Extended(p[2])}));
+      // A few ulps of u = r²/R² through a cube and a sum of two terms ≤ 2.
+      EXPECT_NEAR(sample.value, reference, 2e-15) << "x = " << x << " y = " << y;
+      // The k = 1 term's gradient jumps at its sphere r = R; stay off it.
+      const double r1 = std::hypot(x - 1.2, y, 0.2);
+      if (std::abs(r1 - 0.8) < 1e-6) continue;
+      const std::array<double, 3> g = test::extended_gradient(polynomial_points_definition, p);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(sample.gradient[c], g[c], 1e-14) << "x = " << x << " axis " << c;
+      inside_both += reference > 0 && r1 < 0.8 && std::hypot(x, y, 0.2) < 1.5;
+    }
+  }
+  EXPECT_GT(inside_both, 5);  // the sample reaches the overlap of the two supports
+}
+
+// (1 − r²/R²)^k is the compact kernel of degree 2k (SPEC §1), whose point
+// field is checked against its own definition (point_primitive_test.cpp):
+// the two families agree to the last bits everywhere.
+TEST(KernelFamilies, PolynomialIsCompactOfTwiceTheDegree) {
+  for (int k = 1; k <= 8; ++k) {
+    const PointPrimitive polynomial(Vec3(0.1, -0.2, 0.3), KernelSpec::polynomial(k, 1.7), 1.3);
+    const PointPrimitive compact(Vec3(0.1, -0.2, 0.3), KernelSpec::compact(2 * k, 1.7), 1.3);
+    for (double x = -2.0; x < 2.0; x += 0.0917) {
+      const Vec3 p(x, 0.4 * x, 0.25);
+      const FieldSample a = polynomial.value_and_gradient(p), b = compact.value_and_gradient(p);
+      EXPECT_NEAR(a.value, b.value, 1e-15) << "k = " << k << " x = " << x;
+      EXPECT_NEAR((a.gradient - b.gradient).norm(), 0.0, 1e-14) << "k = " << k << " x = " << x;
+    }
+  }
+}
+
+// Bad polynomial kernels: one message, at the JSON path of the bad key.
+TEST(KernelFamilies, PolynomialBadInputIsLocated) {
+  const auto message = [](const std::string& kernel) {
+    try {
+      parse_skeleton_json(R"({"primitives": [{"type": "point", "center": [0, 0, 0], "kernel": )" + kernel + "}]}");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message(R"({"family": "polynomial", "degree": 2, "R": -1})"),
+            "primitives[0].kernel.R: must be > 0, got -1");
+  EXPECT_EQ(message(R"({"family": "polynomial", "degree": 0, "R": 1})"),
+            "primitives[0].kernel.degree: unsupported degree 0 for the polynomial family on a point; supported: 1..8");
+  EXPECT_EQ(message(R"({"family": "polynomial", "degree": 9, "R": 1})"),
+            "primitives[0].kernel.degree: unsupported degree 9 for the polynomial family on a point; supported: 1..8");
+  EXPECT_EQ(message(R"({"family": "polynomial", "R": 1})"), "primitives[0].kernel: missing field \"degree\"");
+  EXPECT_EQ(message(R"({"family": "polynomial", "degree": 2, "R": 1, "s": 2})"),
+            "primitives[0].kernel: unknown field \"s\" for the polynomial family (allowed: \"family\", \"degree\", "
+            "\"R\")");
+  try {
+    parse_skeleton_json(R"({"primitives": [{"type": "segment", "a": [0, 0, 0], "b": [1, 0, 0],
+                            "kernel": {"family": "polynomial", "degree": 2, "R": 1}}]})");
+    ADD_FAILURE() << "a polynomial segment was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), "primitives[0].kernel.family");
+    EXPECT_TRUE(error.problem().starts_with("the polynomial family has no closed form on a segment (it is defined on "
+                                            "points only)"))
+        << error.what();
+  }
+}
 
 // ---- Soft, Wyvill and Gaussian on segments and polygons ----------------------
 

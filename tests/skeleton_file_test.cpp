@@ -103,7 +103,7 @@ TEST(SkeletonFileErrors, UnknownNames) {
   expect_error(one_segment(R"({"family": "gauss", "degree": 3})"),
                "primitives[0].kernel.family: unknown family \"gauss\" "
                "(supported: \"inverse\", \"cauchy\", \"compact\", \"soft\", \"wyvill\", \"ferley\", "
-               "\"gaussian\")");
+               "\"gaussian\", \"polynomial\")");
   // A point-only family (its trait's `primitives`) on a segment.
   expect_error(one_segment(R"({"family": "ferley", "e": 0.5, "R": 1})"),
                "primitives[0].kernel.family: the ferley family has no closed form on a segment (it is defined on "

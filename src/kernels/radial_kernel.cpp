@@ -5,6 +5,8 @@
 #include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/kernels/kernel_trait.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <utility>
 
 #include <fmt/format.h>
@@ -23,6 +25,14 @@ static_assert([]<std::size_t... i>(std::index_sequence<i...>) {
   return ((std::variant_alternative_t<i, RadialKernel>::name ==
            family_name(std::variant_alternative_t<i, RadialKernel>::family)) &&
           ...);
+}(std::make_index_sequence<std::variant_size_v<RadialKernel>>{}));
+
+// all_kernel_families (kernel_spec.hpp, which the reader's messages and the
+// verifier iterate) lists every trait's family, once: a new family that is
+// in RadialKernel but not in that list fails here.
+static_assert(std::size(all_kernel_families) == std::variant_size_v<RadialKernel>);
+static_assert([]<std::size_t... i>(std::index_sequence<i...>) {
+  return ((std::ranges::count(all_kernel_families, std::variant_alternative_t<i, RadialKernel>::family) == 1) && ...);
 }(std::make_index_sequence<std::variant_size_v<RadialKernel>>{}));
 
 void require_degree(std::string_view family, int degree, int min_degree, int max_degree) {

@@ -125,10 +125,11 @@ void require_supported_degree(const KernelSpec& kernel) {
   const std::vector<int> supported = polygon_supported_degrees(kernel.family);
   if (std::find(supported.begin(), supported.end(), kernel.degree) != supported.end()) return;
   const std::string family = std::string(family_name(kernel.family));
-  if (kernel.family == KernelFamily::inverse && kernel.degree == 2) {
-    throw InputError(fmt::format("degree 2 of the inverse family is not available on a polygon: the contour "
-                                 "formula of the polygon closed forms (SPEC §3, Hubert 2012 §6) excludes it; "
-                                 "supported: {}",
+  // A degree the trait says the closed forms leave out gets its reason.
+  const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
+  if (facts.polygon_excluded_degree != 0 && kernel.degree == facts.polygon_excluded_degree) {
+    throw InputError(fmt::format("degree {} of the {} family is not available on a polygon: {}; supported: {}",
+                                 kernel.degree, family, facts.polygon_excluded_reason,
                                  format_degree_ranges(supported)),
                      "kernel.degree");
   }

@@ -20,12 +20,7 @@ namespace {
 
 void check_scalis_segment(const ScalisSegment& s, const ScalisSegment* first, const std::string& where) {
   const ScalisKernel& k = s.kernel();
-  if (k.family != KernelFamily::compact) {
-    throw InputError(fmt::format("the thickness correction needs the \"compact\" kernel (its finite support keeps the "
-                                 "correction local), got \"{}\"",
-                                 family_name(k.family)),
-                     where + ".kernel.family");
-  }
+  detail::require_correction_family(k.family, where);
   if (first != nullptr && (first->kernel().degree != k.degree || first->kernel().sigma != k.sigma)) {
     throw InputError("differs from primitives[0].kernel: the correction needs one kernel for the whole graph",
                      where + ".kernel");
@@ -217,8 +212,8 @@ std::string scalis_corrected_skeleton_json(const ScalisSegmentGraph& g, const Sc
   for (const ScalisThicknessCorrection::Piece& p : c.pieces) {
     items.push_back(fmt::format(
         "  {{\"type\": \"scalis_segment\", \"a\": {}, \"b\": {}, \"radius\": [{:.17g}, {:.17g}], "
-        "\"kernel\": {{\"family\": \"compact\", \"degree\": {}, \"sigma\": {:.17g}}}, \"iso\": {:.17g}}}",
-        point(p.a), point(p.b), p.tau_a, p.tau_b, g.kernel.degree, g.kernel.sigma, g.factor[p.edge] * p.multiplier));
+        "\"kernel\": {{\"family\": \"{}\", \"degree\": {}, \"sigma\": {:.17g}}}, \"iso\": {:.17g}}}",
+        point(p.a), point(p.b), p.tau_a, p.tau_b, family_name(g.kernel.family), g.kernel.degree, g.kernel.sigma, g.factor[p.edge] * p.multiplier));
   }
   for (const ScalisThicknessCorrection::RampSegment& r : c.ramps) {
     if (r.weight[0] == 0 && r.weight[1] == 0) continue;

@@ -24,13 +24,8 @@ const char* primitive_type_name(const Primitive& p) {
 
 void check_segment(const Segment& s, const Segment* first, const std::string& where) {
   const KernelSpec& k = s.kernel();
-  if (k.family != KernelFamily::compact) {
-    throw InputError(fmt::format("the thickness correction needs the \"compact\" kernel (its finite support keeps the "
-                                 "correction local), got \"{}\"",
-                                 family_name(k.family)),
-                     where + ".kernel.family");
-  }
-  const std::vector<int> degrees = Segment::supported_degrees(KernelFamily::compact, 1);
+  detail::require_correction_family(k.family, where);
+  const std::vector<int> degrees = Segment::supported_degrees(k.family, 1);
   if (std::find(degrees.begin(), degrees.end(), k.degree) == degrees.end()) {
     throw InputError(fmt::format("degree {} has no linear-weight closed form (the corrected weights are linear)",
                                  k.degree),
@@ -40,6 +35,13 @@ void check_segment(const Segment& s, const Segment* first, const std::string& wh
     throw InputError("differs from primitives[0].kernel: the correction needs one kernel for the whole graph",
                      where + ".kernel");
   }
+}
+
+/// The graph's kernel with support radius R: the node points are "a point
+/// primitive of the same kernel family" (thickness_correction.hpp).
+KernelSpec with_support(KernelSpec kernel, double R) {
+  kernel.R = R;
+  return kernel;
 }
 
 }  // namespace
@@ -80,7 +82,7 @@ SegmentGraph segment_graph_of(const Skeleton& skeleton) {
 
 Skeleton weighted_skeleton(const SegmentGraph& graph, const std::vector<double>& weights,
                            const std::vector<double>& point_weights, double point_support) {
-  const KernelSpec point_kernel = KernelSpec::compact(graph.kernel.degree, point_support);
+  const KernelSpec point_kernel = with_support(graph.kernel, point_support);
   Skeleton skeleton({}, graph.iso);
   for (const SegmentGraph::Edge& e : graph.edges) {
     const double wa = weights[e.a], wb = weights[e.b];
@@ -101,16 +103,17 @@ std::string weighted_skeleton_json(const SegmentGraph& graph, const std::vector<
     const double wa = weights[e.a], wb = weights[e.b];
     out += fmt::format(
         "  {{\"type\": \"segment\", \"a\": {}, \"b\": {}, \"weight\": [{:.17g}, {:.17g}], "
-        "\"kernel\": {{\"family\": \"compact\", \"degree\": {}, \"R\": {:.17g}}}}}{}",
-        point(graph.nodes[e.a]), point(graph.nodes[e.b]), wa, wb - wa, graph.kernel.degree, graph.kernel.R,
+        "\"kernel\": {{\"family\": \"{}\", \"degree\": {}, \"R\": {:.17g}}}}}{}",
+        point(graph.nodes[e.a]), point(graph.nodes[e.b]), wa, wb - wa, family_name(graph.kernel.family),
+        graph.kernel.degree, graph.kernel.R,
         k + 1 < graph.edges.size() ? ",\n" : "");
   }
   for (std::size_t k = 0; k < point_weights.size(); ++k) {
     if (!(point_weights[k] > 0)) continue;
     out += fmt::format(
         ",\n  {{\"type\": \"point\", \"center\": {}, \"weight\": {:.17g}, "
-        "\"kernel\": {{\"family\": \"compact\", \"degree\": {}, \"R\": {:.17g}}}}}",
-        point(graph.nodes[k]), point_weights[k], graph.kernel.degree, point_support);
+        "\"kernel\": {{\"family\": \"{}\", \"degree\": {}, \"R\": {:.17g}}}}}",
+        point(graph.nodes[k]), point_weights[k], family_name(graph.kernel.family), graph.kernel.degree, point_support);
   }
   out += fmt::format("\n], \"iso\": {:.17g}}}\n", graph.iso);
   return out;
@@ -274,7 +277,7 @@ void apply(ThicknessCorrection& c, const ClassicalModel& m, const Eigen::VectorX
 ClassicalModel classical_model(const ThicknessCorrection& c, const std::vector<bool>& free_node) {
   ClassicalModel m;
   const SegmentGraph& r = c.refined;
-  const KernelSpec point_kernel = KernelSpec::compact(r.kernel.degree, c.point_support);
+  const KernelSpec point_kernel = with_support(r.kernel, c.point_support);
   for (std::size_t k = 0; k < free_node.size(); ++k) {
     if (!free_node[k]) continue;
     Skeleton hat({}, r.iso);

@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "skelconv/errors.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 #include "skelconv/primitives/segment.hpp"
 
 namespace skelconv::detail {
@@ -132,6 +135,19 @@ Vec3 plane_normal(const std::vector<Vec3>& nodes, const std::vector<SegmentGraph
     }
   }
   return normal;
+}
+
+void require_correction_family(KernelFamily family, const std::string& where) {
+  if (kernels::family_facts(family).thickness_correction) return;
+  std::string families;
+  for (KernelFamily other : all_kernel_families) {
+    if (!kernels::family_facts(other).thickness_correction) continue;
+    families += fmt::format("{}\"{}\"", families.empty() ? "" : " or ", family_name(other));
+  }
+  throw InputError(fmt::format("the thickness correction needs the {} kernel (its finite support keeps the correction "
+                               "local), got \"{}\"",
+                               families, family_name(family)),
+                   where + ".kernel.family");
 }
 
 double long_segment_weight(const KernelSpec& kernel, double iso, double tau) {

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -53,6 +54,11 @@ std::size_t node_of(std::vector<Vec3>& nodes, const Vec3& p, double merge);
 /// vector normal to the line for a collinear graph); InputError located at
 /// the first edge out of the plane. `size`: the graph's bounding-box diagonal.
 Vec3 plane_normal(const std::vector<Vec3>& nodes, const std::vector<SegmentGraph::Edge>& edges, double size);
+
+/// InputError at `where` + ".kernel.family" unless the family's trait says
+/// the corrections are written for it (kernels/compact.hpp,
+/// thickness_correction); the message names those families, from the traits.
+void require_correction_family(KernelFamily family, const std::string& where);
 
 /// iso / f₁(τ), f₁ the field at distance τ from the middle of a segment of
 /// weight 1 and half-length R: its support ball (radius R) meets only

@@ -182,6 +182,13 @@ std::string check_term(const Term& term) {
   } else {
     const auto& point = std::get<PointPrimitive>(*term.primitive);
     name = "point_" + std::string(family_name(point.kernel().family));
+    // A family without a GLSL point form (generated/glsl/point.glsl) is
+    // refused here, by what the generated file holds, not by name.
+    if (glsl_function(glsl_file(name), name + "_f(").empty()) {
+      throw InputError(fmt::format("point kernel {}: the GLSL target has no form of it (generated/glsl/point.glsl)",
+                                   family_name(point.kernel().family)),
+                       term.location + ".kernel");
+    }
     if (!(point.weight() > 0.0)) {
       throw InputError("weight < 0: the viewer's step bound needs every term >= 0 (docs/view.md)",
                        term.location + ".weight");
@@ -248,7 +255,8 @@ struct PageTerm {
 
 /// The shader's code of a segment or a point of `family` (view_march.glsl
 /// evaluates and bounds each code its own way): the view's one dispatch on
-/// the family. Families without a GLSL form never get here (check_term).
+/// the family. Families without a GLSL form never get here (check_term
+/// refuses them first).
 struct ShaderCodes {
   KernelFamily family;
   Code segment, point;
@@ -263,8 +271,12 @@ constexpr ShaderCodes shader_codes[] = {
     {KernelFamily::gaussian, Code::compact_segment, Code::gaussian_point},
 };
 const ShaderCodes& shader_code(KernelFamily family) {
-  return *std::find_if(std::begin(shader_codes), std::end(shader_codes),
-                       [&](const ShaderCodes& c) { return c.family == family; });
+  const auto found = std::find_if(std::begin(shader_codes), std::end(shader_codes),
+                                  [&](const ShaderCodes& c) { return c.family == family; });
+  // A GLSL form without its code here is a programming error (check_term
+  // refuses the families without a GLSL form before this).
+  if (found == std::end(shader_codes)) throw std::logic_error("no shader code for " + std::string(family_name(family)));
+  return *found;
 }
 
 bool is_supported(Code code) { return code == Code::compact_segment || code == Code::supported_point; }

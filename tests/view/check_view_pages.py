@@ -42,6 +42,9 @@ SHADER = re.compile(r'<script id="fragment_shader" type="x-shader/x-fragment">\n
 DATA = re.compile(r'<script id="skeleton_data" type="application/json">\n(.*?)</script>', re.S)
 SUPPORTED_FAMILIES = {"inverse", "cauchy", "compact"}
 POINT_DEGREE_FAMILIES = {"inverse", "cauchy", "compact"}  # the point families with a degree
+# The point families of generated/glsl/point.glsl; a point of another family
+# (polynomial) sends the page to the mesh preview.
+POINT_GLSL_FAMILIES = {"inverse", "cauchy", "compact", "soft", "wyvill", "ferley", "gaussian"}
 
 
 def kernel_name(child):
@@ -74,7 +77,7 @@ def expected_terms(node, where, out):
             continue
         kernel = child["kernel"]
         if child.get("type") == "point":
-            if child.get("weight", 1) < 0:
+            if kernel["family"] not in POINT_GLSL_FAMILIES or child.get("weight", 1) < 0:
                 return path
             out.append((path, child))
             continue

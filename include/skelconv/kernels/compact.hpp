@@ -35,6 +35,11 @@ struct CompactKernel {
   double support_radius() const { return R; }
   static constexpr bool finite_support = true;  ///< support_radius() is finite
   static constexpr bool vanishes_far = true;  ///< 0 from r = R on
+  /// The thickness corrections (skelconv/skeleton/thickness_correction.hpp,
+  /// scalis_thickness_correction.hpp) are written for this family: a finite
+  /// support R keeps a weight's change local, the linear-weight segment forms
+  /// and the point and SCALIS forms of every degree are generated.
+  static constexpr bool thickness_correction = true;
   int scaling_power() const { return 0; }     ///< a function of r/R
   double length_scale() const { return R; }
   double max_value() const { return 1.0; }  ///< K(0)

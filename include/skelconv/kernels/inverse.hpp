@@ -42,6 +42,13 @@ struct InverseKernel {
   static std::array<T, 2> quadratic_form(const T& /*s*/) {
     return {T(1), T(0)};
   }
+  /// The one degree the polygon closed forms leave out, and why (the
+  /// polygon's message, src/primitives/polygon.cpp): the contour recurrence
+  /// of SPEC §3, i z² G^(i+2) − (i − 2) G^i = (u² + v² + z²)^(−i/2), reaches
+  /// every i ≥ 3 from C^(p³) and C^(p⁴) and excludes i = 2.
+  static constexpr int polygon_excluded_degree = 2;
+  static constexpr std::string_view polygon_excluded_reason =
+      "the contour formula of the polygon closed forms (SPEC §3, Hubert 2012 §6) excludes it";
   double length_scale() const { return 1.0; }
   double max_value() const { return std::numeric_limits<double>::infinity(); }  ///< K(0) = +inf
   double max_slope() const { return std::numeric_limits<double>::infinity(); }

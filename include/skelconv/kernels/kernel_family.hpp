@@ -23,9 +23,11 @@ enum class KernelFamily {
   wyvill,    ///< 1 − 22/9 u + 17/9 u² − 4/9 u³, u = r²/R², for r < R
   ferley,    ///< 1 + k(e − r) for r < e, (r − R)²/(e − R)² for e ≤ r < R
   gaussian,  ///< b exp(−a r²) (Blinn, Muraki)
+  polynomial,  ///< (1 − r²/R²)^k for r < R (points only; compact degree 2k)
 };
 
-/// "inverse", "cauchy", "compact", "soft", "wyvill", "ferley", "gaussian":
+/// "inverse", "cauchy", "compact", "soft", "wyvill", "ferley", "gaussian",
+/// "polynomial":
 /// the JSON spelling, which each trait repeats as its `name` (checked at
 /// compile time in src/kernels/radial_kernel.cpp). A switch, not the traits,
 /// because the generated code names families without including them.
@@ -38,6 +40,7 @@ constexpr std::string_view family_name(KernelFamily family) {
     case KernelFamily::wyvill: return "wyvill";
     case KernelFamily::ferley: return "ferley";
     case KernelFamily::gaussian: return "gaussian";
+    case KernelFamily::polynomial: return "polynomial";
   }
   return "?";
 }

@@ -2,7 +2,9 @@
 // variant, and the one place a KernelSpec becomes a trait.
 //
 // Adding a family is: its trait header, one entry in RadialKernel
-// below, and its name in KernelFamily (kernel_family.hpp). The reader
+// below, its name in KernelFamily (kernel_family.hpp) and in
+// all_kernel_families (kernel_spec.hpp); docs/architecture.md lists the
+// tests and docs that go with it. The reader
 // (src/skeleton/skeleton_file.cpp) learns its JSON keys from family_facts().
 #pragma once
 
@@ -19,6 +21,7 @@
 #include "skelconv/kernels/ferley.hpp"
 #include "skelconv/kernels/gaussian.hpp"
 #include "skelconv/kernels/inverse.hpp"
+#include "skelconv/kernels/polynomial.hpp"
 #include "skelconv/kernels/scalis_description.hpp"
 #include "skelconv/kernels/soft.hpp"
 #include "skelconv/kernels/wyvill.hpp"
@@ -26,7 +29,7 @@
 namespace skelconv::kernels {
 
 using RadialKernel = std::variant<InverseKernel, CauchyKernel, CompactKernel, SoftKernel, WyvillKernel, FerleyKernel,
-                                  GaussianKernel>;
+                                  GaussianKernel, PolynomialKernel>;
 
 /// What the reader needs to know of a family, read off its trait.
 struct FamilyFacts {
@@ -36,13 +39,20 @@ struct FamilyFacts {
   int min_degree = 0;               ///< smallest degree the trait accepts (0: no degree)
   unsigned primitives = on_points;  ///< PrimitiveKind bits (radial_kernel.hpp)
   bool singular_at_zero = false;    ///< K(0) = +inf (inverse)
-  bool finite_support = false;      ///< K = 0 beyond a radius (compact, soft, wyvill, ferley)
+  bool finite_support = false;      ///< K = 0 beyond a radius (compact, soft, wyvill, ferley, polynomial)
   bool vanishes_far = false;        ///< the trait's vanishes_far: a positive field may be 0 in double
   /// No length of its own (scaling_power ≠ 0, radial_kernel.hpp: inverse):
   /// K(r/σ) = σ^(−p) K(r), so a scale σ factors out of every field.
   bool scale_free = false;
   /// Non-empty: K is this exact combination of compact levels k_R^i.
   std::span<const CompactLevel> compact_levels;
+  /// The trait's optional thickness_correction: the thickness corrections
+  /// take this family (skelconv/skeleton/thickness_correction.hpp).
+  bool thickness_correction = false;
+  /// The trait's optional polygon_excluded_degree (0: none), a degree inside
+  /// the polygon range that the closed forms leave out, and the reason.
+  int polygon_excluded_degree = 0;
+  std::string_view polygon_excluded_reason;
 
   // The SCALIS description (scalis_description.hpp); defaults elsewhere.
   ScalisSingularity scalis_singularity = ScalisSingularity::none;
@@ -88,6 +98,11 @@ FamilyFacts facts_from(KernelFamily family) {
       facts.vanishes_far = Kernel::vanishes_far;
       facts.scale_free = Kernel(defaults).scaling_power() != 0;
       if constexpr (requires { Kernel::compact_levels; }) facts.compact_levels = Kernel::compact_levels;
+      if constexpr (requires { Kernel::thickness_correction; }) facts.thickness_correction = Kernel::thickness_correction;
+      if constexpr (requires { Kernel::polygon_excluded_degree; }) {
+        facts.polygon_excluded_degree = Kernel::polygon_excluded_degree;
+        facts.polygon_excluded_reason = Kernel::polygon_excluded_reason;
+      }
       if constexpr ((Kernel::primitives & on_scalis) != 0) {
         facts.scalis_singularity = Kernel::scalis_singularity;
         facts.scalis_segment_generated = Kernel::scalis_segment_generated;

@@ -9,6 +9,8 @@
 //   wyvill   1 − 22/9 u + 17/9 u² − 4/9 u³, u = r²/R², r < R,  R > 0
 //   ferley   1 + k(e − r) for r < e, (r − R)²/(e − R)² for e ≤ r < R,  0 < e < R
 //   gaussian b exp(−a r²),                                     a, b > 0
+// and, with a degree k ≥ 1 and on points only:
+//   polynomial (1 − r²/R²)^k for r < R,                        R > 0
 // Which degrees i exist is decided by the generator (docs/generated_api.md),
 // so the runtime asks the generated table instead of hard-coding a range.
 #pragma once
@@ -21,14 +23,14 @@
 namespace skelconv {
 
 /// Family, degree i and the family's parameters. Only the parameters of the
-/// chosen family are read (s for cauchy; R for compact, soft, wyvill; e and R
+/// chosen family are read (s for cauchy; R for compact, soft, wyvill, polynomial; e and R
 /// for ferley; a and b for gaussian); the others are ignored.
 /// Values are checked where the kernel is used (Segment's constructor).
 struct KernelSpec {
   KernelFamily family = KernelFamily::inverse;
   int degree = 3;  ///< the exponent i of SPEC §1
   double s = 1.0;  ///< Cauchy sharpness, > 0 (cauchy only)
-  double R = 1.0;  ///< support radius, > 0 (compact, soft, wyvill, ferley)
+  double R = 1.0;  ///< support radius, > 0 (compact, soft, wyvill, ferley, polynomial)
   double e = 0.5;  ///< Ferley's coating thickness, 0 < e < R (ferley only)
   double a = 1.0;  ///< Gaussian sharpness, > 0 (gaussian only)
   double b = 1.0;  ///< Gaussian height K(0), > 0 (gaussian only)
@@ -41,12 +43,14 @@ struct KernelSpec {
   static KernelSpec wyvill(double R) { return {KernelFamily::wyvill, 0, 1.0, R}; }
   static KernelSpec ferley(double e, double R) { return {KernelFamily::ferley, 0, 1.0, R, e}; }
   static KernelSpec gaussian(double a, double b) { return {KernelFamily::gaussian, 0, 1.0, 1.0, 0.5, a, b}; }
+  /// (1 − r²/R²)^k: the degree is the exponent k itself.
+  static KernelSpec polynomial(int k, double R) { return {KernelFamily::polynomial, k, 1.0, R}; }
 };
 
 /// Every family, in the order of the enum.
 inline constexpr KernelFamily all_kernel_families[] = {
     KernelFamily::inverse, KernelFamily::cauchy, KernelFamily::compact,  KernelFamily::soft,
-    KernelFamily::wyvill,  KernelFamily::ferley, KernelFamily::gaussian};
+    KernelFamily::wyvill,  KernelFamily::ferley, KernelFamily::gaussian, KernelFamily::polynomial};
 
 /// The family named family_name(family); std::nullopt for any other text.
 constexpr std::optional<KernelFamily> family_from_name(std::string_view name) {

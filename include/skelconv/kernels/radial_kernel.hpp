@@ -33,6 +33,11 @@
 //     std::optional<double> point_iso_radius(double c) const;  // ρ: K(ρ) = c
 //     std::optional<double> line_iso_radius(double c) const;   // optional member:
 //                                                     // d where ∫K along an infinite line = c
+//     static constexpr bool thickness_correction;    // optional member: the thickness
+//                                                     // corrections take this family (compact)
+//     static constexpr int polygon_excluded_degree;  // optional member, with
+//     static constexpr std::string_view polygon_excluded_reason;  // a degree the polygon
+//                                                     // closed forms leave out (inverse 2)
 //   };
 //
 // Scaling (scaling_power): multiplying every length by λ, and the kernel's
@@ -48,8 +53,9 @@
 // value() and derivative() are templates on the scalar type (double, long
 // double, boost::multiprecision numbers…) so that tests can evaluate the same
 // formula in extended precision. A new family (as soft, wyvill, ferley and
-// gaussian were) is one more such struct, one more entry in RadialKernel
-// (skelconv/kernels/kernel_list.hpp) and its name in KernelFamily.
+// gaussian and polynomial were) is one more such struct, one more entry in
+// RadialKernel (skelconv/kernels/kernel_list.hpp), its name in KernelFamily
+// and in all_kernel_families (docs/architecture.md, "Adding a kernel family").
 //
 // The segment and polygon primitives keep their generated closed forms
 // (generated/, docs/generated_api.md): the traits describe the kernel, not the
