@@ -96,177 +96,209 @@ class SegmentProgramBuilder {
 
  protected:
   // The run-time choice of stable forms (SPEC §2) for the weighted moments
-  // Σ_k w_k M_{k+shift,level} of `requests`: one target symbol each.
+  // Σ_k w_k M_{k+shift,level} of `requests`: one target symbol each. The
+  // alternatives are tried in the order pushed, the last is the generic one;
+  // the steps below push them in the order of the generated code (GiNaC
+  // numbers symbols in creation order, so the order is part of the output).
   std::vector<symbol> choose_moments(const std::vector<MomentRequest>& requests) {
     requests_ = requests;
     std::vector<symbol> targets;
     for (const MomentRequest& r : requests) targets.emplace_back(r.name);
-    auto values_from = [&](MomentRecurrence& moments) {
-      std::vector<ex> v;
-      for (const MomentRequest& r : requests)
-        v.push_back(r.along_line ? along_line_moment(moments, r.level) : weighted_moment(moments, r.shift, r.level));
-      return v;
-    };
-
     Choice choice{targets, {}};
     if (generated_family(spec_.family).compact_support) {
-      const MomentSymbols symbols = symbols_ = compact_symbols();
-      if (support_root_forms_) push_support_root_alternatives(choice);
-      if (spec_.degree % 2 == 0) {
-        // t^k q^(i/2) is a polynomial of degree ≤ i + k: an N-point
-        // Gauss–Legendre rule with 2N − 1 ≥ i + k is exact and, all terms
-        // positive, stable.
-        const int polynomial_degree = spec_.degree + highest_moment();
-        const int nodes = exact_rule_nodes(polynomial_degree);
-        const std::string rule = "segment_moments_gauss<T, " + std::to_string(nodes) + ">";
-        push_helper_alternatives(choice, {}, "even degree: the integrand is a polynomial of degree " +
-                                     std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
-                                 "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t}, gauss_rule_cost(nodes));
-        choice.generic = choice.alternatives.size() - 1;
-        program_.choose(std::move(choice));
-        return targets;
-      }
-      {
-        // Odd degree, the sphere crossings t* ± √(−D)/|a| at least |AB|/4
-        // beyond both ends (so [t0, t1] = [0, 1]): q^(i/2) is analytic on a
-        // Bernstein ellipse of ρ ≥ 2.6 around the segment (2.6^−40 ≈ 2e-17),
-        // where the moment relations cancel or, near the line over the
-        // segment, carry rounding up through the weight's moments (measured
-        // with |AB|/2: ∇f 1.6e-12 per component, compact i13 w3, P 5e-6 |AB|
-        // from the line, the roots 0.32 |AB| beyond A); the 20-point
-        // Gauss–Legendre rule is exact to rounding
-        // (include/skelconv/detail/gauss_moments.hpp).
-        const ex t_star = b_ / a_;
-        const ex reach = maximum(t_star + numeric(1, 4), numeric(5, 4) - t_star);
-        push_helper_alternatives(choice, {-D_ - pow(a_, 2) * pow(reach, 2)},
-                                 "support sphere at least |AB|/4 beyond both ends: every moment by "
-                                 "segment_moments_gauss<T, 20>",
-                                 "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t},
-                                 gauss_rule_cost(20));
-        // The moment relations carry rounding up by a factor ~|t*|/⟨t⟩ per
-        // step in k where the vertex t* = b/a lies far outside [0, 1]
-        // (measured: f 1.1e-13, compact i7 w3, t* ≈ −2.8, a generic point).
-        // There the 30-point rule after the sine map of
-        // segment_moments_gauss_sine adds positive terms only. q's roots are
-        // t* ± h, h = √(−D)/|a|; the far one is at least 2 beyond [0, 1].
-        // The near one must be either the clipped end itself (t0 > 0 for t*
-        // ≥ 2: the map removes its branch point) or at least |AB|/10 beyond
-        // the end: a root just outside an unclipped end leaves a branch
-        // point ~√δ from the mapped interval (measured: ∇f 2.9e-11, compact
-        // i3, the support 1e-4 |AB| beyond A), and the recurrences keep
-        // those points. With the far root 2 away the mapped integrand is
-        // analytic on a Bernstein ellipse of ρ ≳ 3 (4.97 at t* = −2.5).
-        const ex half_chord = pow(-D_, numeric(1, 2)) / (-a_);
-        const ex tiny = numeric(1, 4503599627370496);  // 2^−52: a clip below it counts as none
-        // One alternative for both sides (one call of the rule in the code):
-        // max(min(x, y), min(u, v)) ≥ 0 ⇔ (x, y ≥ 0) or (u, v ≥ 0).
-        const ex beyond_a = minimum(t_star - 2, maximum(symbols.lo.t - tiny, -(t_star - half_chord) - numeric(1, 10)));
-        const ex beyond_b =
-            minimum(-1 - t_star, maximum(1 - tiny - symbols.hi.t, t_star + half_chord - numeric(11, 10)));
-        Alternative far_vertex{{maximum(beyond_a, beyond_b)},
-                               "vertex t* ≥ 2 with the support clipping A's side or 1/10 short of it, or t* ≤ −1 "
-                               "likewise on B's side: every moment by segment_moments_gauss_sine<T, 30> "
-                               "(Gauss–Legendre after a sine map)",
-                               {}, {}, {}};
-        fill_from_helper(far_vertex, "M_far_vertex", "segment_moments_gauss_sine<T, 30>",
-                         {a_, b_, c_, symbols.lo.t, symbols.hi.t},
-                         [](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_sine_rule(30, m_lo, m_hi, k_max); });
-        choice.alternatives.push_back(std::move(far_vertex));
-      }
-      // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
-      const int bottom = kernel_index() - 2 * ((spec_.weight_degree + 1) / 2) - 2;
-      MomentRecurrence upward(symbols, {RecurrenceDirection::Mode::up_from_bottom, bottom});
-      choice.alternatives.push_back(
-          {{symbols.lo.slope * symbols.hi.slope, a_ * maximum(symbols.lo.q, symbols.hi.q) - kCompactOutsideRatio * D_},
-           "vertex of q outside [t0, t1], q_e < 17/20 q_max: recurrence (1) upwards from J_" +
-               std::to_string(bottom) + " = J_upward_compact(…)",
-           {},
-           values_from(upward),
-           {}});
-      MomentRecurrence downward(symbols);
-      choice.alternatives.push_back({{}, "recurrence (1) downwards from J_0, J_1", {}, values_from(downward), {}});
-      choice.generic = choice.alternatives.size() - 1;
+      push_compact_alternatives(choice);
     } else {
-      const MomentSymbols symbols = symbols_ = infinite_support_symbols();
-      const int top_index = highest_level();
-      if (high_moments_by_panels_) {
-        // High moments (SCALIS, k ≤ 10): the moment relations cancel by a
-        // factor ~(1 + D/(a² ⟨(t − t*)²⟩)) per step in k, measured up to 4e-8
-        // at k = 10, both at moderate distance and beyond an end (where
-        // segment_moments_beyond_end's far-end term has the opposite sign
-        // once the weight's mass sits at the far end, as for a cone). Gauss
-        // panels graded towards the roots of q add positive terms only
-        // (include/skelconv/detail/gauss_moments.hpp); the closed forms are kept
-        // near the line over the segment, where they are exact.
-        const std::string panels = "segment_moments_gauss_panels<T>";
-        Alternative away{{4 * D_ - pow(a_, 2)},
-                         "P at least |AB|/2 from the line (D ≥ a²/4): every moment by " + panels, {}, {}, {}};
-        fill_from_helper(away, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false);
-        choice.alternatives.push_back(std::move(away));
-        const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
-        // G_E by parts there: the difference Σ w_k (M_{k+1} − t* M_k) loses
-        // |t*|/|t − t*| where the weight's mass is (t* just beyond the near
-        // end: 4e-13 of ∇f measured 1.3e-3 |AB| beyond B of a segment of
-        // radius 5e-4 |AB|), while the parts formula's boundary term at the
-        // near end dominates its other terms.
-        // Beyond an end the recurrence upwards also cancels where ρ ≥ 7/10
-        // but P is not near the line (up to 1.3e-13 measured at D ≈ a²/2,
-        // inverse i = 10, a cone seen past its base; ≤ 3e-14 for D < a²/100).
-        Alternative beyond{{-b_ * a_minus_b_, maximum(kBeyondEndRho * a_ * near_q - D_, 100 * D_ - pow(a_, 2))},
-                           "P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by " + panels,
-                           {}, {}, {}};
-        fill_from_helper(beyond, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false,
-                         GE::by_parts);
-        choice.alternatives.push_back(std::move(beyond));
-        MomentRecurrence upward(symbols);
-        choice.alternatives.push_back(
-            {{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, values_from(upward), {}});
-        choice.generic = choice.alternatives.size() - 1;
-        program_.choose(std::move(choice));
-        return targets;
-      }
-      {
-        // Far from the line compared with |AB| (D ≥ 2a²): the kernel is nearly
-        // flat and the moment relations cancel; a 20-point Gauss–Legendre rule
-        // is exact to rounding there (include/skelconv/detail/gauss_moments.hpp).
-        // The same rule serves P beyond an end by at least 2|AB| along the
-        // line (t* = b/a ≥ 3 or ≤ −2): q's complex roots t* ± i√D/a are then
-        // at least 2 from [0, 1] (Bernstein ellipse ρ ≥ 5 + √24, so 20 nodes
-        // leave ~ρ^−40), while the moment relations there multiply rounding
-        // by up to |t*|^k (measured 1.0e-13 in f at t* ≈ 3.9, inverse i2 w3).
-        Alternative flat{{maximum(D_ - 2 * pow(a_, 2), maximum(b_ - 3 * a_, -b_ - 2 * a_))},
-                         "P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): "
-                         "every moment by segment_moments_gauss<T, 20>",
-                         {}, {}, {}};
-        fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, 0, 1}, gauss_rule_cost(20));
-        choice.alternatives.push_back(std::move(flat));
-      }
-      if (top_index >= 2) {
-        // Beyond an end, with ρ = D/(a min(q(0), q(1))) below `kBeyondEndRho`:
-        // recurrence (1) downwards (segment_moments.hpp, stable_recurrence.hpp).
-        const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
-        Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_}, "", {}, {}, {}};
-        if (lowest_level() >= highest_moment() + 2) {
-          // Every moment from segment_moments_beyond_end, centred at the near end.
-          fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>",
-                           {a_, b_, a_minus_b_, D_, symbols.lo.q, symbols.hi.q},
-                           helper_costs::moments_beyond_end, false, GE::by_parts);
-          beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, "
-                       "recurrence (1) downwards (segment_moments_beyond_end)";
-        } else {
-          MomentRecurrence downward(symbols, {RecurrenceDirection::Mode::down_from_top, top_index});
-          beyond.values = values_from(downward);
-          beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_" +
-                       std::to_string(top_index) + " = J_downward(…)";
-        }
-        choice.alternatives.push_back(std::move(beyond));
-      }
-      MomentRecurrence upward(symbols);
-      choice.alternatives.push_back({{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, values_from(upward), {}});
-      choice.generic = choice.alternatives.size() - 1;
+      push_infinite_support_alternatives(choice);
     }
     program_.choose(std::move(choice));
     return targets;
+  }
+
+  // The requested weighted moments (requests_) from `moments`.
+  std::vector<ex> moment_values(MomentRecurrence& moments) {
+    std::vector<ex> v;
+    for (const MomentRequest& r : requests_)
+      v.push_back(r.along_line ? along_line_moment(moments, r.level) : weighted_moment(moments, r.shift, r.level));
+    return v;
+  }
+
+  // Compact kernels: the support-root forms, then an exact Gauss rule (even
+  // degree, alone), or the rules and recurrences of odd degrees.
+  void push_compact_alternatives(Choice& choice) {
+    const MomentSymbols symbols = symbols_ = compact_symbols();
+    if (support_root_forms_) push_support_root_alternatives(choice);
+    if (spec_.degree % 2 == 0) {
+      push_exact_rule(choice, symbols);
+      return;
+    }
+    push_odd_degree_rules(choice, symbols);
+    push_compact_recurrences(choice, symbols);
+  }
+
+  void push_exact_rule(Choice& choice, const MomentSymbols& symbols) {
+    // t^k q^(i/2) is a polynomial of degree ≤ i + k: an N-point
+    // Gauss–Legendre rule with 2N − 1 ≥ i + k is exact and, all terms
+    // positive, stable.
+    const int polynomial_degree = spec_.degree + highest_moment();
+    const int nodes = exact_rule_nodes(polynomial_degree);
+    const std::string rule = "segment_moments_gauss<T, " + std::to_string(nodes) + ">";
+    push_helper_alternatives(choice, {}, "even degree: the integrand is a polynomial of degree " +
+                                 std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
+                             "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t}, gauss_rule_cost(nodes));
+    choice.generic = choice.alternatives.size() - 1;
+  }
+
+  void push_odd_degree_rules(Choice& choice, const MomentSymbols& symbols) {
+    // Odd degree, the sphere crossings t* ± √(−D)/|a| at least |AB|/4
+    // beyond both ends (so [t0, t1] = [0, 1]): q^(i/2) is analytic on a
+    // Bernstein ellipse of ρ ≥ 2.6 around the segment (2.6^−40 ≈ 2e-17),
+    // where the moment relations cancel or, near the line over the
+    // segment, carry rounding up through the weight's moments (measured
+    // with |AB|/2: ∇f 1.6e-12 per component, compact i13 w3, P 5e-6 |AB|
+    // from the line, the roots 0.32 |AB| beyond A); the 20-point
+    // Gauss–Legendre rule is exact to rounding
+    // (include/skelconv/detail/gauss_moments.hpp).
+    const ex t_star = b_ / a_;
+    const ex reach = maximum(t_star + numeric(1, 4), numeric(5, 4) - t_star);
+    push_helper_alternatives(choice, {-D_ - pow(a_, 2) * pow(reach, 2)},
+                             "support sphere at least |AB|/4 beyond both ends: every moment by "
+                             "segment_moments_gauss<T, 20>",
+                             "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                             gauss_rule_cost(20));
+    // The moment relations carry rounding up by a factor ~|t*|/⟨t⟩ per
+    // step in k where the vertex t* = b/a lies far outside [0, 1]
+    // (measured: f 1.1e-13, compact i7 w3, t* ≈ −2.8, a generic point).
+    // There the 30-point rule after the sine map of
+    // segment_moments_gauss_sine adds positive terms only. q's roots are
+    // t* ± h, h = √(−D)/|a|; the far one is at least 2 beyond [0, 1].
+    // The near one must be either the clipped end itself (t0 > 0 for t*
+    // ≥ 2: the map removes its branch point) or at least |AB|/10 beyond
+    // the end: a root just outside an unclipped end leaves a branch
+    // point ~√δ from the mapped interval (measured: ∇f 2.9e-11, compact
+    // i3, the support 1e-4 |AB| beyond A), and the recurrences keep
+    // those points. With the far root 2 away the mapped integrand is
+    // analytic on a Bernstein ellipse of ρ ≳ 3 (4.97 at t* = −2.5).
+    const ex half_chord = pow(-D_, numeric(1, 2)) / (-a_);
+    const ex tiny = numeric(1, 4503599627370496);  // 2^−52: a clip below it counts as none
+    // One alternative for both sides (one call of the rule in the code):
+    // max(min(x, y), min(u, v)) ≥ 0 ⇔ (x, y ≥ 0) or (u, v ≥ 0).
+    const ex beyond_a = minimum(t_star - 2, maximum(symbols.lo.t - tiny, -(t_star - half_chord) - numeric(1, 10)));
+    const ex beyond_b =
+        minimum(-1 - t_star, maximum(1 - tiny - symbols.hi.t, t_star + half_chord - numeric(11, 10)));
+    Alternative far_vertex{{maximum(beyond_a, beyond_b)},
+                           "vertex t* ≥ 2 with the support clipping A's side or 1/10 short of it, or t* ≤ −1 "
+                           "likewise on B's side: every moment by segment_moments_gauss_sine<T, 30> "
+                           "(Gauss–Legendre after a sine map)",
+                           {}, {}, {}};
+    fill_from_helper(far_vertex, "M_far_vertex", "segment_moments_gauss_sine<T, 30>",
+                     {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                     [](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_sine_rule(30, m_lo, m_hi, k_max); });
+    choice.alternatives.push_back(std::move(far_vertex));
+  }
+
+  void push_compact_recurrences(Choice& choice, const MomentSymbols& symbols) {
+    // The lowest J_n the moments reach: M_{k,n} calls M_{k−2,n−2}.
+    const int bottom = kernel_index() - 2 * ((spec_.weight_degree + 1) / 2) - 2;
+    MomentRecurrence upward(symbols, {RecurrenceDirection::Mode::up_from_bottom, bottom});
+    choice.alternatives.push_back(
+        {{symbols.lo.slope * symbols.hi.slope, a_ * maximum(symbols.lo.q, symbols.hi.q) - kCompactOutsideRatio * D_},
+         "vertex of q outside [t0, t1], q_e < 17/20 q_max: recurrence (1) upwards from J_" +
+             std::to_string(bottom) + " = J_upward_compact(…)",
+         {},
+         moment_values(upward),
+         {}});
+    MomentRecurrence downward(symbols);
+    choice.alternatives.push_back({{}, "recurrence (1) downwards from J_0, J_1", {}, moment_values(downward), {}});
+    choice.generic = choice.alternatives.size() - 1;
+  }
+
+  // Inverse and Cauchy kernels: Gauss panels (SCALIS high moments, alone), or
+  // the flat rule, the beyond-end forms and the upward recurrence.
+  void push_infinite_support_alternatives(Choice& choice) {
+    const MomentSymbols symbols = symbols_ = infinite_support_symbols();
+    const int top_index = highest_level();
+    if (high_moments_by_panels_) {
+      push_panel_alternatives(choice, symbols);
+      return;
+    }
+    push_flat_rule(choice);
+    if (top_index >= 2) push_beyond_end(choice, symbols, top_index);
+    MomentRecurrence upward(symbols);
+    choice.alternatives.push_back({{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, moment_values(upward), {}});
+    choice.generic = choice.alternatives.size() - 1;
+  }
+
+  void push_panel_alternatives(Choice& choice, const MomentSymbols& symbols) {
+    // High moments (SCALIS, k ≤ 10): the moment relations cancel by a
+    // factor ~(1 + D/(a² ⟨(t − t*)²⟩)) per step in k, measured up to 4e-8
+    // at k = 10, both at moderate distance and beyond an end (where
+    // segment_moments_beyond_end's far-end term has the opposite sign
+    // once the weight's mass sits at the far end, as for a cone). Gauss
+    // panels graded towards the roots of q add positive terms only
+    // (include/skelconv/detail/gauss_moments.hpp); the closed forms are kept
+    // near the line over the segment, where they are exact.
+    const std::string panels = "segment_moments_gauss_panels<T>";
+    Alternative away{{4 * D_ - pow(a_, 2)},
+                     "P at least |AB|/2 from the line (D ≥ a²/4): every moment by " + panels, {}, {}, {}};
+    fill_from_helper(away, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false);
+    choice.alternatives.push_back(std::move(away));
+    const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
+    // G_E by parts there: the difference Σ w_k (M_{k+1} − t* M_k) loses
+    // |t*|/|t − t*| where the weight's mass is (t* just beyond the near
+    // end: 4e-13 of ∇f measured 1.3e-3 |AB| beyond B of a segment of
+    // radius 5e-4 |AB|), while the parts formula's boundary term at the
+    // near end dominates its other terms.
+    // Beyond an end the recurrence upwards also cancels where ρ ≥ 7/10
+    // but P is not near the line (up to 1.3e-13 measured at D ≈ a²/2,
+    // inverse i = 10, a cone seen past its base; ≤ 3e-14 for D < a²/100).
+    Alternative beyond{{-b_ * a_minus_b_, maximum(kBeyondEndRho * a_ * near_q - D_, 100 * D_ - pow(a_, 2))},
+                       "P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by " + panels,
+                       {}, {}, {}};
+    fill_from_helper(beyond, "M_panels", panels, {a_, b_, a_minus_b_, D_}, helper_costs::gauss_panels, false,
+                     GE::by_parts);
+    choice.alternatives.push_back(std::move(beyond));
+    MomentRecurrence upward(symbols);
+    choice.alternatives.push_back(
+        {{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, moment_values(upward), {}});
+    choice.generic = choice.alternatives.size() - 1;
+  }
+
+  void push_flat_rule(Choice& choice) {
+    // Far from the line compared with |AB| (D ≥ 2a²): the kernel is nearly
+    // flat and the moment relations cancel; a 20-point Gauss–Legendre rule
+    // is exact to rounding there (include/skelconv/detail/gauss_moments.hpp).
+    // The same rule serves P beyond an end by at least 2|AB| along the
+    // line (t* = b/a ≥ 3 or ≤ −2): q's complex roots t* ± i√D/a are then
+    // at least 2 from [0, 1] (Bernstein ellipse ρ ≥ 5 + √24, so 20 nodes
+    // leave ~ρ^−40), while the moment relations there multiply rounding
+    // by up to |t*|^k (measured 1.0e-13 in f at t* ≈ 3.9, inverse i2 w3).
+    Alternative flat{{maximum(D_ - 2 * pow(a_, 2), maximum(b_ - 3 * a_, -b_ - 2 * a_))},
+                     "P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): "
+                     "every moment by segment_moments_gauss<T, 20>",
+                     {}, {}, {}};
+    fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, 0, 1}, gauss_rule_cost(20));
+    choice.alternatives.push_back(std::move(flat));
+  }
+
+  void push_beyond_end(Choice& choice, const MomentSymbols& symbols, int top_index) {
+    // Beyond an end, with ρ = D/(a min(q(0), q(1))) below `kBeyondEndRho`:
+    // recurrence (1) downwards (segment_moments.hpp, stable_recurrence.hpp).
+    const ex near_q = minimum(symbols.lo.q, symbols.hi.q);
+    Alternative beyond{{-b_ * a_minus_b_, kBeyondEndRho * a_ * near_q - D_}, "", {}, {}, {}};
+    if (lowest_level() >= highest_moment() + 2) {
+      // Every moment from segment_moments_beyond_end, centred at the near end.
+      fill_from_helper(beyond, "M_beyond", "segment_moments_beyond_end<T>",
+                       {a_, b_, a_minus_b_, D_, symbols.lo.q, symbols.hi.q},
+                       helper_costs::moments_beyond_end, false, GE::by_parts);
+      beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, "
+                   "recurrence (1) downwards (segment_moments_beyond_end)";
+    } else {
+      MomentRecurrence downward(symbols, {RecurrenceDirection::Mode::down_from_top, top_index});
+      beyond.values = moment_values(downward);
+      beyond.why = "P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_" +
+                   std::to_string(top_index) + " = J_downward(…)";
+    }
+    choice.alternatives.push_back(std::move(beyond));
   }
 
   // f = |AB| F and ∇f = −n α |AB| (AP G_ap − AB G_ab) = −n α |AB| (H G_ap −
