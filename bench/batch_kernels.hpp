@@ -57,7 +57,7 @@ inline void scalar_loop(const KernelRef& k, const Input& segment, PointsSoA p, F
     in.p = {p.x[j], p.y[j], p.z[j]};
     Vec g{0, 0, 0};
     double f = 0;
-    if (k.family == KernelFamily::compact) {
+    if (kernels::has_finite_support(k.family)) {
       const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
       if (clip) {
         in.t0 = clip->t0;

@@ -17,6 +17,7 @@
 
 #include "skelconv/detail/clip.hpp"
 #include "skelconv/kernels/op_count.hpp"
+#include "skelconv/kernels/read_trait.hpp"
 #include "skelconv/primitives/segment_input.hpp"
 
 namespace skelconv::bench {
@@ -43,11 +44,11 @@ const std::vector<KernelRef>& generated_kernels();
 /// nullptr when (family, degree, weight degree) was not generated.
 const KernelRef* find_kernel(KernelFamily family, int degree, int weight_degree);
 
-/// f at the point of `in`; for the compact family the clip interval moves
+/// f at the point of `in`; for a finite-support family the clip interval moves
 /// with P, so it is recomputed (an empty clip gives 0), as any caller of a
 /// finite-difference gradient would have to.
 inline double f_reclipped(const KernelRef& k, Input in) {
-  if (k.family == KernelFamily::compact) {
+  if (kernels::has_finite_support(k.family)) {
     const auto clip = clip_to_ball(in.a, in.b, in.p, in.R);
     if (!clip) return 0.0;
     in.t0 = clip->t0;

@@ -103,7 +103,7 @@ FieldSample quadrature(const ScalisSegment& segment, const Vec3& p, double toler
   // rule's first nodes can all miss a narrow support and return 0 with a
   // zero error estimate.
   double t_lo = 0, t_hi = 1;
-  if (family == KernelFamily::compact) {
+  if (kernels::has_finite_support(family)) {
     auto g = [&](double t) { return sigma * (segment.tau0() + dtau * t) - (p - (segment.a() + t * ab)).norm(); };
     double lo = 0, hi = 1;
     const double inv_phi = (std::sqrt(5.0) - 1) / 2;
