@@ -152,20 +152,24 @@ void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, 
   }
 }
 
+/// The node_at of add_moments_at_nodes for x ∈ [−1, 1] mapped linearly
+/// onto [t0, t1]; q_at(t) evaluates q ≥ 0.
+template <class T, class QuadraticAt>
+auto linear_node_map(const QuadraticAt& q_at, const T& t0, const T& t1) {
+  const T half_width = (t1 - t0) / 2;
+  const T middle = (t0 + t1) / 2;
+  return [half_width, middle, &q_at](const T& x) {
+    const T t = middle + half_width * x;
+    return MomentNode<T>{t, q_at(t), half_width};
+  };
+}
+
 /// Adds the N-point Gauss–Legendre rule on [t0, t1] for M_{k,m} (as
 /// add_moments_at_nodes); q_at(t) evaluates q ≥ 0.
 template <class T, unsigned N, class QuadraticAt, NodeMap map = NodeMap::linear>
 void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
                                T* out) {
-  const T half_width = (t1 - t0) / 2;
-  const T middle = (t0 + t1) / 2;
-  add_moments_at_nodes<T, N, map>(
-      m_lo, m_hi, k_max,
-      [&](const T& x) {
-        const T t = middle + half_width * x;
-        return MomentNode<T>{t, q_at(t), half_width};
-      },
-      out);
+  add_moments_at_nodes<T, N, map>(m_lo, m_hi, k_max, linear_node_map(q_at, t0, t1), out);
 }
 
 /// Writes M_{k,m} = ∫ t^k q^(−m/2) dt over [middle − half_width, middle +
@@ -234,6 +238,18 @@ inline constexpr double far_field_min_y_7_nodes = 22.0;
 inline constexpr double far_field_min_y_10_nodes = 7.0;
 inline constexpr double far_field_min_y_15_nodes = 3.0;
 
+/// Nodes per panel of segment_moments_gauss_panels: on an accepted panel
+/// the rule errs by ~ρ^(−2N) ≤ 4^(−2N) times a factor for the poles' order
+/// (up to 6) and the weight t^k (k ≤ 10) growing off the interval;
+/// measured: that factor is ~1e9 (ρ = 3.1 left 1e-11 with N = 20), so
+/// 4^(−40) ≈ 8e-25 is ~1e-15 in double; N = 25 for long double, 40 for
+/// binary128 and wider (4^(−80) ≈ 7e-49).
+template <class T>
+constexpr unsigned gauss_panel_points() {
+  constexpr int digits = std::numeric_limits<T>::digits;
+  return digits <= 53 ? 20u : digits <= 64 ? 25u : 40u;
+}
+
 namespace detail {
 /// The node count for a pole at "distance" x (a squared distance compared
 /// with the squared thresholds of the 7-, 10- and 15-node rules): 7, 10, 15,
@@ -245,15 +261,20 @@ int rule_nodes(const T& x, double x7, double x10, double x15, int most) {
   return x >= T(x7) ? 7 : x >= T(x10) ? 10 : x >= T(x15) ? 15 : most;
 }
 
-/// Adds the rule of `nodes` nodes (7, 10, 15, 20) on [t0, t1].
-template <class T, class QuadraticAt>
-void add_moments_by_rule(int nodes, int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
-                         T* out) {
-  switch (nodes) {
-    case 7: add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
-    case 10: add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
-    case 15: add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
-    default: add_segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+/// add_moments_at_nodes with `nodes` nodes (7, 10, 15, 20) in double; types
+/// wider than double keep gauss_panel_points<T>() (the constants are for
+/// double's rounding unit).
+template <class T, class NodeAt>
+void add_moments_with_nodes(int nodes, int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
+  if constexpr (gauss_panel_points<T>() != 20) {
+    add_moments_at_nodes<T, gauss_panel_points<T>(), NodeMap::linear>(m_lo, m_hi, k_max, node_at, out);
+  } else {
+    switch (nodes) {
+      case 7: add_moments_at_nodes<T, 7, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      case 10: add_moments_at_nodes<T, 10, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      case 15: add_moments_at_nodes<T, 15, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      default: add_moments_at_nodes<T, 20, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+    }
   }
 }
 
@@ -270,7 +291,7 @@ void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_a
     auto square = [](double y) { return y * y; };
     const int nodes = rule_nodes(y2, square(far_field_min_y_7_nodes), square(far_field_min_y_10_nodes),
                                  square(far_field_min_y_15_nodes), 20);
-    add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, t0, t1, out);
+    add_moments_with_nodes<T>(nodes, m_lo, m_hi, k_max, linear_node_map(q_at, t0, t1), out);
   } else {
     add_segment_moments_gauss<T, N_max>(m_lo, m_hi, k_max, q_at, t0, t1, out);
   }
@@ -330,7 +351,7 @@ bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T
   };
   const int nodes = rule_nodes(z2, square(beyond_end_min_z_7_nodes), square(beyond_end_min_z_10_nodes),
                                square(beyond_end_min_z_15_nodes), 20);
-  add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, T(0), T(1), out);
+  add_moments_with_nodes<T>(nodes, m_lo, m_hi, k_max, linear_node_map(q_at, T(0), T(1)), out);
   return true;
 }
 }  // namespace detail
@@ -373,18 +394,6 @@ template <class T, unsigned N>
 void segment_moments_gauss_sine(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c, const T& t0,
                                 const T& t1, T* out) {
   segment_moments_gauss<T, N, NodeMap::sine>(m_lo, m_hi, k_max, a, b, c, t0, t1, out);
-}
-
-/// Nodes per panel of segment_moments_gauss_panels: on an accepted panel
-/// the rule errs by ~ρ^(−2N) ≤ 4^(−2N) times a factor for the poles' order
-/// (up to 6) and the weight t^k (k ≤ 10) growing off the interval;
-/// measured: that factor is ~1e9 (ρ = 3.1 left 1e-11 with N = 20), so
-/// 4^(−40) ≈ 8e-25 is ~1e-15 in double; N = 25 for long double, 40 for
-/// binary128 and wider (4^(−80) ≈ 7e-49).
-template <class T>
-constexpr unsigned gauss_panel_points() {
-  constexpr int digits = std::numeric_limits<T>::digits;
-  return digits <= 53 ? 20u : digits <= 64 ? 25u : 40u;
 }
 
 namespace detail {
@@ -437,23 +446,6 @@ int panel_nodes(const T& x_star2, const T& y2, int k_max) {
                                      sq(high ? panel_high_weight_min_z_10_nodes : beyond_end_min_z_10_nodes),
                                      sq(high ? panel_high_weight_min_z_15_nodes : beyond_end_min_z_15_nodes), 20);
   return by_height < by_distance ? by_height : by_distance;
-}
-
-/// add_moments_at_nodes with `nodes` nodes (7, 10, 15, 20) in double; types
-/// wider than double keep gauss_panel_points<T>() (the constants are for
-/// double's rounding unit).
-template <class T, class NodeAt>
-void add_moments_with_nodes(int nodes, int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
-  if constexpr (gauss_panel_points<T>() != 20) {
-    add_moments_at_nodes<T, gauss_panel_points<T>(), NodeMap::linear>(m_lo, m_hi, k_max, node_at, out);
-  } else {
-    switch (nodes) {
-      case 7: add_moments_at_nodes<T, 7, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
-      case 10: add_moments_at_nodes<T, 10, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
-      case 15: add_moments_at_nodes<T, 15, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
-      default: add_moments_at_nodes<T, 20, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
-    }
-  }
 }
 }  // namespace detail
 
