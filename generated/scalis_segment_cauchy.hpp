@@ -25,7 +25,7 @@ namespace skelconv::generated {
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 47 +, 70 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 70057 +, 89408 ×, 25293 /, 541 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 54187 +, 68248 ×, 20003 /, 541 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -107,7 +107,7 @@ T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 63 +, 106 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 56620 +, 77066 ×, 12656 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43620 +, 58866 ×, 10056 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i2_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -225,7 +225,7 @@ std::array<T, 3> scalis_segment_cauchy_i2_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 65 +, 115 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 56621 +, 77070 ×, 12656 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43621 +, 58870 ×, 10056 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -349,7 +349,7 @@ T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 50 +, 84 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53966 +, 81239 ×, 16882 /, 7546 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41681 +, 61934 ×, 13372 /, 5791 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -453,7 +453,7 @@ T scalis_segment_cauchy_i3_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 68 +, 136 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 53880 +, 83131 ×, 10118 /, 4520 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 41520 +, 63561 ×, 8058 /, 3490 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i3_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -582,7 +582,7 @@ std::array<T, 3> scalis_segment_cauchy_i3_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 73 +, 158 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53883 +, 83145 ×, 10120 /, 4522 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41523 +, 63575 ×, 8060 /, 3492 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -734,7 +734,7 @@ T scalis_segment_cauchy_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 57 +, 103 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 45849 +, 60903 ×, 12650 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 35449 +, 46603 ×, 10050 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -832,7 +832,7 @@ T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 79 +, 166 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 52046 +, 69248 ×, 8426 /, 182 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40146 +, 53098 ×, 6726 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i4_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -966,7 +966,7 @@ std::array<T, 3> scalis_segment_cauchy_i4_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 85 +, 191 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 52049 +, 69258 ×, 8426 /, 182 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40149 +, 53108 ×, 6726 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1108,7 +1108,7 @@ T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 62 +, 133 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 40968 +, 65906 ×, 10114 /, 4522 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31698 +, 50456 ×, 8054 /, 3492 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i5_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

@@ -25,7 +25,7 @@ namespace skelconv::generated {
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 35 +, 48 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 70045 +, 89386 ×, 25293 /, 541 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 54175 +, 68226 ×, 20003 /, 541 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -97,7 +97,7 @@ T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 47 +, 75 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 56604 +, 77035 ×, 12654 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43604 +, 58835 ×, 10054 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -199,7 +199,7 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 49 +, 84 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 56605 +, 77039 ×, 12654 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43605 +, 58839 ×, 10054 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -308,7 +308,7 @@ T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 39 +, 66 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53955 +, 81221 ×, 16882 /, 7544 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41670 +, 61916 ×, 13372 /, 5789 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -406,7 +406,7 @@ T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 53 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 53865 +, 83104 ×, 10116 /, 4520 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 41505 +, 63534 ×, 8056 /, 3490 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -526,7 +526,7 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 58 +, 130 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53868 +, 83117 ×, 10118 /, 4520 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41508 +, 63547 ×, 8058 /, 3490 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -666,7 +666,7 @@ T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 45 +, 83 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 45837 +, 60883 ×, 12650 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 35437 +, 46583 ×, 10050 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -760,7 +760,7 @@ T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 63 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 52030 +, 69219 ×, 8424 /, 182 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40130 +, 53069 ×, 6724 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -884,7 +884,7 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 69 +, 162 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 52033 +, 69229 ×, 8424 /, 182 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40133 +, 53079 ×, 6724 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1015,7 +1015,7 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 51 +, 115 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 40957 +, 65888 ×, 10114 /, 4520 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31687 +, 50438 ×, 8054 /, 3490 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

@@ -243,9 +243,9 @@ inline int rule_nodes<SimdLanes>(const SimdLanes& x, double x7, double x10, doub
 }
 
 template <>
-inline int panel_nodes<SimdLanes>(const SimdLanes& x_star2, const SimdLanes& y2, int k_max) {
+inline int panel_nodes<SimdLanes>(const SimdLanes& x_star2, const SimdLanes& y2, const PanelNodeThresholds& c) {
   return simd::HWY_NAMESPACE::most_any_active_lane_needs(
-      [&](double x, double y) { return panel_nodes<double>(x, y, k_max); }, x_star2, y2);
+      [&](double x, double y) { return panel_nodes<double>(x, y, c); }, x_star2, y2);
 }
 
 /// SCALIS segments' Gauss panels (gauss_moments.hpp) with the pole so close

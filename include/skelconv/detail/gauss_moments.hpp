@@ -424,27 +424,61 @@ inline constexpr double panel_high_weight_min_z_7_nodes = 462.0;
 inline constexpr double panel_high_weight_min_z_10_nodes = 27.3;
 inline constexpr double panel_high_weight_min_z_15_nodes = 6.3;
 
+/// The SCALIS panels' node counts when the weights go up to t^4 and the
+/// orders only up to m = 6 (SCALIS inverse and Cauchy kernels of degree ≤ 4,
+/// f and ∇f), derived as the classical constants above with weights
+/// k ≤ 4 and orders m ≤ 6 (bench/tools/far_field_bound.cpp --low-order,
+/// and --low-order --radius): y ≥ 14.83 (N = 7), 5.04 (10), 2.229 (15);
+/// |z| ≥ 24.08 (7), 7.48 (10), 3.17 (15); rounded up here. A pole of
+/// lower order leaves a flatter integrand on the Bernstein ellipses, so the
+/// same bound holds with fewer nodes.
+inline constexpr double panel_low_order_min_y_7_nodes = 14.9;
+inline constexpr double panel_low_order_min_y_10_nodes = 5.1;
+inline constexpr double panel_low_order_min_y_15_nodes = 2.3;
+inline constexpr double panel_low_order_min_z_7_nodes = 24.1;
+inline constexpr double panel_low_order_min_z_10_nodes = 7.5;
+inline constexpr double panel_low_order_min_z_15_nodes = 3.2;
+
 namespace detail {
+/// The squared thresholds of panel_nodes for one call of
+/// segment_moments_gauss_panels: y² (imaginary distance) and |z|²
+/// (distance) above which 7, 10 or 15 nodes suffice.
+struct PanelNodeThresholds {
+  double y7, y10, y15, z7, z10, z15;
+};
+
+constexpr double squared(double v) { return v * v; }
+
+/// The thresholds whose derivation covers weights t^k, k ≤ k_max, and pole
+/// orders m ≤ m_hi: the high-weight constants (k_max > 4), the low-order
+/// ones (m_hi ≤ 6), else the classical far-field and beyond-end constants
+/// (k ≤ 4, m ≤ 18).
+inline const PanelNodeThresholds& panel_node_thresholds(int k_max, int m_hi) {
+  static constexpr PanelNodeThresholds high_weight{
+      squared(panel_high_weight_min_y_7_nodes), squared(panel_high_weight_min_y_10_nodes),
+      squared(panel_high_weight_min_y_15_nodes), squared(panel_high_weight_min_z_7_nodes),
+      squared(panel_high_weight_min_z_10_nodes), squared(panel_high_weight_min_z_15_nodes)};
+  static constexpr PanelNodeThresholds low_order{
+      squared(panel_low_order_min_y_7_nodes), squared(panel_low_order_min_y_10_nodes),
+      squared(panel_low_order_min_y_15_nodes), squared(panel_low_order_min_z_7_nodes),
+      squared(panel_low_order_min_z_10_nodes), squared(panel_low_order_min_z_15_nodes)};
+  static constexpr PanelNodeThresholds classical{
+      squared(far_field_min_y_7_nodes),  squared(far_field_min_y_10_nodes),  squared(far_field_min_y_15_nodes),
+      squared(beyond_end_min_z_7_nodes), squared(beyond_end_min_z_10_nodes), squared(beyond_end_min_z_15_nodes)};
+  return k_max > 4 ? high_weight : m_hi <= 6 ? low_order : classical;
+}
+
 /// The fewest nodes (7, 10, 15, 20) for a Gauss panel whose poles lie at
 /// x* ± i y in the panel's own coordinate x ∈ [−1, 1], from x*² and y²: the
-/// imaginary-distance bound (far_field_min_y_*, valid for |x*| ≤ 6, the
-/// positions it was derived for) or the distance bound (beyond_end_min_z_*,
-/// any direction), whichever allows fewer. More nodes than needed only make
-/// the rule more exact. The vector batches (src/simd/lanes-inl.hpp)
-/// specialise it to the largest count any active lane needs.
+/// imaginary-distance bound (valid for |x*| ≤ 6, the positions it was
+/// derived for) or the distance bound (any direction), whichever allows
+/// fewer. More nodes than needed only make the rule more exact. The vector
+/// batches (src/simd/lanes-inl.hpp) specialise it to the largest count any
+/// active lane needs.
 template <class T>
-int panel_nodes(const T& x_star2, const T& y2, int k_max) {
-  const bool high = k_max > 4;
-  auto sq = [](double v) { return v * v; };
-  const int by_height =
-      x_star2 <= T(36)
-          ? rule_nodes(y2, sq(high ? panel_high_weight_min_y_7_nodes : far_field_min_y_7_nodes),
-                       sq(high ? panel_high_weight_min_y_10_nodes : far_field_min_y_10_nodes),
-                       sq(high ? panel_high_weight_min_y_15_nodes : far_field_min_y_15_nodes), 20)
-          : 20;
-  const int by_distance = rule_nodes(x_star2 + y2, sq(high ? panel_high_weight_min_z_7_nodes : beyond_end_min_z_7_nodes),
-                                     sq(high ? panel_high_weight_min_z_10_nodes : beyond_end_min_z_10_nodes),
-                                     sq(high ? panel_high_weight_min_z_15_nodes : beyond_end_min_z_15_nodes), 20);
+int panel_nodes(const T& x_star2, const T& y2, const PanelNodeThresholds& c) {
+  const int by_height = x_star2 <= T(36) ? rule_nodes(y2, c.y7, c.y10, c.y15, 20) : 20;
+  const int by_distance = rule_nodes(x_star2 + y2, c.z7, c.z10, c.z15, 20);
   return by_height < by_distance ? by_height : by_distance;
 }
 }  // namespace detail
@@ -510,6 +544,7 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
   // poles' position relative to the panel allows (detail::panel_nodes).
   const T pole_offset = t_star - pivot;
   const T pole_height2 = D / (a * a);
+  const detail::PanelNodeThresholds& thresholds = detail::panel_node_thresholds(k_max, m_hi);
   auto add_panel = [&](const T& lo, const T& hi) {
     const T half_width = (hi - lo) / 2;
     const T middle = (lo + hi) / 2;
@@ -519,7 +554,7 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
     };
     const T width2 = half_width * half_width;
     const T pole_along = pole_offset - middle;
-    const int nodes = detail::panel_nodes<T>(pole_along * pole_along / width2, pole_height2 / width2, k_max);
+    const int nodes = detail::panel_nodes<T>(pole_along * pole_along / width2, pole_height2 / width2, thresholds);
     detail::add_moments_with_nodes<T>(nodes, m_lo, m_hi, k_max, node_at, out);
   };
   const T offset_A = -pivot, offset_B = one - pivot;  // exact for pivot ≥ 1/2 (Sterbenz), else to ε
