@@ -110,7 +110,7 @@ class SegmentProgramBuilder {
     } else {
       push_infinite_support_alternatives(choice);
     }
-    program_.choose(std::move(choice));
+    choose(std::move(choice));
     return targets;
   }
 
@@ -224,7 +224,7 @@ class SegmentProgramBuilder {
     push_flat_rule(choice);
     if (top_index >= 2) push_beyond_end(choice, symbols, top_index);
     MomentRecurrence upward(symbols);
-    choice.alternatives.push_back({{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, moment_values(upward), {}});
+    choice.alternatives.push_back({{}, "recurrence (1) upwards from J_1, J_2", {}, moment_values(upward), {}});
     choice.generic = choice.alternatives.size() - 1;
   }
 
@@ -259,7 +259,7 @@ class SegmentProgramBuilder {
     choice.alternatives.push_back(std::move(beyond));
     MomentRecurrence upward(symbols);
     choice.alternatives.push_back(
-        {{}, "recurrence (1) upwards from J_1, J_2", upward_steps_, moment_values(upward), {}});
+        {{}, "recurrence (1) upwards from J_1, J_2", {}, moment_values(upward), {}});
     choice.generic = choice.alternatives.size() - 1;
   }
 
@@ -644,6 +644,32 @@ class SegmentProgramBuilder {
     if (minus) alt.calls.push_back(std::move(*minus));
   }
 
+  // program_.choose(choice), with each of lazy_steps_ defined inside the
+  // alternatives that read it (in their branch of the generated code), and
+  // nowhere else.
+  void choose(Choice choice) {
+    for (Alternative& alt : choice.alternatives) {
+      std::vector<std::pair<symbol, ex>> read;
+      for (const auto& step : lazy_steps_)
+        if (reads(alt, step.first)) read.push_back(step);
+      alt.steps.insert(alt.steps.begin(), read.begin(), read.end());
+    }
+    program_.choose(std::move(choice));
+  }
+
+  static bool reads(const Alternative& alt, const symbol& s) {
+    auto has = [&](const std::vector<ex>& list) {
+      return std::any_of(list.begin(), list.end(), [&](const ex& e) { return e.has(s); });
+    };
+    if (has(alt.conditions) || has(alt.values)) return true;
+    if (alt.refinement && (has(alt.refinement->conditions) || has(alt.refinement->values))) return true;
+    for (const auto& step : alt.steps)
+      if (step.second.has(s)) return true;
+    for (const ArrayCall& call : alt.calls)
+      if (has(call.args)) return true;
+    return false;
+  }
+
   int kernel_index() const { return generated_family(spec_.family).compact_support ? -spec_.degree : spec_.degree; }
 
   ex define(const std::string& name, const ex& value) {
@@ -835,11 +861,13 @@ class SegmentProgramBuilder {
       // atans of Hubert §3.1 summed into one, exact for all P off the line.
       const ex c_minus_b = define("c_minus_b", c_minus_b_value_);
       const ex root_D = pow(D_, numeric(1, 2));
-      // Only the upward recurrence reads it: it is 0/0 on the line.
-      symbol J2("J2");
-      upward_steps_.emplace_back(J2, GiNaC::atan2(root_D, c_minus_b) / root_D);
+      // Only the recurrences read J_2 (0/0 on the line) and ln(q(1)/q(0)):
+      // the forms by Gauss rules do not pay for an atan2 and a log.
+      symbol J2("J2"), log_ratio("log_ratio");
+      lazy_steps_.emplace_back(J2, GiNaC::atan2(root_D, c_minus_b) / root_D);
+      lazy_steps_.emplace_back(log_ratio, GiNaC::log(q1 / c_));
       m.J2 = J2;
-      m.log_ratio = define("log_ratio", GiNaC::log(q1 / c_));
+      m.log_ratio = log_ratio;
     }
     return m;
   }
@@ -912,7 +940,7 @@ class SegmentProgramBuilder {
   ex a_minus_b_value_, q1_value_, c_minus_b_value_;  // set by define_quadratic
   ex output_scale_ = 1;                              // multiplies f and ∇f (σ^i for SCALIS)
   bool high_moments_by_panels_ = false;              // SCALIS: see choose_moments
-  std::vector<std::pair<symbol, ex>> upward_steps_;  // definitions only the upward form reads
+  std::vector<std::pair<symbol, ex>> lazy_steps_;    // definitions only some forms read (choose)
   std::vector<MomentRequest> requests_;               // what choose_moments computes
   MomentSymbols symbols_;                             // the base symbols it defined
 };

@@ -25,7 +25,7 @@ namespace skelconv::generated {
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 47 +, 70 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 70057 +, 89408 ×, 25294 /, 541 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 54187 +, 68248 ×, 20003 /, 541 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -79,7 +79,6 @@ T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
   const T a_minus_b = sigma2 * tau_hi * delta_tau - ab_bp;
   const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
   const T c_minus_b = ap_bp + sigma2 * tau_hi * tau_lo;
-  const T log_ratio = log(q1 / c);
   T F;
   const T t1 = T(4) * D - a * a;
   const T t2 = -a_minus_b * b;
@@ -98,6 +97,7 @@ T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(D);
     const T J2 = atan2(t4, c_minus_b) / t4;
+    const T log_ratio = log(q1 / c);
     F = (T(1) / T(2)) * (log_ratio + T(2) * J2 * b) * delta_tau / a + J2 * tau_lo;
   }
   f = sigma2 * length * F;
@@ -107,7 +107,7 @@ T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 63 +, 106 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 56620 +, 77066 ×, 12656 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43620 +, 58866 ×, 10056 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i2_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -225,7 +225,7 @@ std::array<T, 3> scalis_segment_cauchy_i2_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 65 +, 115 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 56621 +, 77071 ×, 12656 /, 272 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 43621 +, 58870 ×, 10056 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -290,30 +290,29 @@ T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
   const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
   const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
   const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = T(4) * D - a * a;
-  const T t5 = -a_minus_b * b;
-  const T t6 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * D - a * a;
+  const T t4 = -a_minus_b * b;
+  const T t5 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(2, 4, 2, a, b, a_minus_b, D, M_panels.data());
     F = tau_lo * M_panels[0] + M_panels[1] * delta_tau;
-    const T t7 = M_panels[4] * delta_tau + M_panels[3] * tau_lo;
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = M_panels[4] * tau_lo + delta_tau * M_panels[5] - t8 * t7 * b;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_panels[4] * delta_tau + M_panels[3] * tau_lo;
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = M_panels[4] * tau_lo + delta_tau * M_panels[5] - t7 * t6 * b;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(2, 4, 2, a, b, a_minus_b, D, M_panels.data());
     F = tau_lo * M_panels[0] + M_panels[1] * delta_tau;
     G_ap = M_panels[4] * delta_tau + tau_lo * M_panels[3];
-    const T t9 = t3 * tau_lo;
+    const T t8 = T(1) / c;
+    const T t9 = t8 * tau_lo;
     const T t10 = T(1) / q1;
     const T t11 = T(1) / a;
     G_E = (T(1) / T(2)) * (delta_tau * M_panels[0] + t9 - t10 * (delta_tau + tau_lo)) * t11;
@@ -322,18 +321,20 @@ T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
     const T t12 = sqrt(D);
     const T t13 = T(1) / t12;
     const T J2 = atan2(t12, c_minus_b) * t13;
-    const T t14 = T(1) / a;
-    F = (T(1) / T(2)) * delta_tau * (T(2) * J2 * b + log_ratio) * t14 + J2 * tau_lo;
-    const T t15 = T(1) / D;
-    const T t16 = T(1) / q1;
-    const T t17 = t16 * a_minus_b + J2 * a + t3 * b;
-    G_ap = (T(1) / T(2)) * delta_tau * t14 * (t15 * b * t17 + t3 - t16) + (T(1) / T(2)) * tau_lo * t15 * t17;
-    const T t18 = t3 * tau_lo;
-    G_E = (T(1) / T(2)) * t14 * (J2 * delta_tau + t18 - t16 * (delta_tau + tau_lo));
+    const T t14 = T(1) / c;
+    const T log_ratio = log(q1 * t14);
+    const T t15 = T(1) / a;
+    F = (T(1) / T(2)) * delta_tau * (T(2) * J2 * b + log_ratio) * t15 + J2 * tau_lo;
+    const T t16 = T(1) / D;
+    const T t17 = T(1) / q1;
+    const T t18 = t17 * a_minus_b + J2 * a + t14 * b;
+    G_ap = (T(1) / T(2)) * delta_tau * t15 * (t16 * b * t18 + t14 - t17) + (T(1) / T(2)) * tau_lo * t16 * t18;
+    const T t19 = t14 * tau_lo;
+    G_E = (T(1) / T(2)) * t15 * (J2 * delta_tau + t19 - t17 * (delta_tau + tau_lo));
   }
-  const T t19 = T(1) / ab_ab;
-  const T t20 = T(1) / a;
-  const T foot_offset = t19 * delta_tau * (ab_ap * delta_tau + ab_ab * tau_lo) * t20 * sigma2;
+  const T t20 = T(1) / ab_ab;
+  const T t21 = T(1) / a;
+  const T foot_offset = t20 * delta_tau * (ab_ap * delta_tau + ab_ab * tau_lo) * t21 * sigma2;
   const T foot_h0 = foot0 + ab0 * foot_offset;
   const T foot_h1 = ab1 * foot_offset + foot1;
   const T foot_h2 = foot2 + ab2 * foot_offset;
@@ -348,7 +349,7 @@ T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 50 +, 84 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53966 +, 81239 ×, 16882 /, 7546 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41681 +, 61934 ×, 13372 /, 5791 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -452,7 +453,7 @@ T scalis_segment_cauchy_i3_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 68 +, 136 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 53880 +, 83131 ×, 10118 /, 4520 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 41520 +, 63561 ×, 8058 /, 3490 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i3_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -581,7 +582,7 @@ std::array<T, 3> scalis_segment_cauchy_i3_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 73 +, 158 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53883 +, 83145 ×, 10120 /, 4522 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41523 +, 63575 ×, 8060 /, 3492 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -733,7 +734,7 @@ T scalis_segment_cauchy_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 57 +, 103 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 45849 +, 60904 ×, 12651 /, 272 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 35449 +, 46603 ×, 10050 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -789,36 +790,36 @@ T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
   const T a_minus_b = sigma2 * tau_hi * delta_tau - ab_bp;
   const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
   const T c_minus_b = sigma2 * tau_hi * tau_lo + ap_bp;
-  const T t3 = T(1) / c;
-  const T log_ratio = log(t3 * q1);
   T F;
-  const T t4 = T(4) * D - a * a;
-  const T t5 = -b * a_minus_b;
-  const T t6 = max(T((T(7) / T(10)) * a * min(T(c), T(q1)) - D), T(T(100) * D - a * a));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * D - a * a;
+  const T t4 = -b * a_minus_b;
+  const T t5 = max(T((T(7) / T(10)) * a * min(T(c), T(q1)) - D), T(T(100) * D - a * a));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 4> M_panels;
     segment_moments_gauss_panels<T>(4, 4, 3, a, b, a_minus_b, D, M_panels.data());
-    const T t7 = t1 * delta_tau;
-    const T t8 = t2 * tau_lo;
-    F = T(3) * M_panels[1] * delta_tau * t2 + M_panels[3] * t7 + T(3) * M_panels[2] * t1 * tau_lo + M_panels[0] * t8;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = t1 * delta_tau;
+    const T t7 = t2 * tau_lo;
+    F = T(3) * M_panels[1] * delta_tau * t2 + M_panels[3] * t6 + T(3) * M_panels[2] * t1 * tau_lo + M_panels[0] * t7;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 4> M_panels;
     segment_moments_gauss_panels<T>(4, 4, 3, a, b, a_minus_b, D, M_panels.data());
-    const T t9 = t1 * delta_tau;
-    const T t10 = t2 * tau_lo;
-    F = T(3) * M_panels[2] * t1 * tau_lo + T(3) * M_panels[1] * delta_tau * t2 + M_panels[3] * t9 + M_panels[0] * t10;
+    const T t8 = t1 * delta_tau;
+    const T t9 = t2 * tau_lo;
+    F = T(3) * M_panels[2] * t1 * tau_lo + T(3) * M_panels[1] * delta_tau * t2 + M_panels[3] * t8 + M_panels[0] * t9;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t11 = sqrt(D);
-    const T t12 = T(1) / t11;
-    const T J2 = t12 * atan2(t11, c_minus_b);
+    const T t10 = sqrt(D);
+    const T t11 = T(1) / t10;
+    const T J2 = t11 * atan2(t10, c_minus_b);
+    const T t12 = T(1) / c;
+    const T log_ratio = log(t12 * q1);
     const T t13 = T(1) / D;
     const T t14 = T(1) / q1;
-    const T t15 = a * J2 + b * t3 + a_minus_b * t14;
+    const T t15 = a * J2 + b * t12 + a_minus_b * t14;
     const T t16 = t2 * tau_lo;
-    const T t17 = t13 * b * t15 + t3 - t14;
+    const T t17 = t13 * b * t15 + t12 - t14;
     const T t18 = T(1) / a;
     const T t19 = T(2) * J2 + T(2) * t17 * t18 * b - t13 * t15 * c;
     const T t20 = t1 * delta_tau;
@@ -831,7 +832,7 @@ T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 79 +, 166 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 52046 +, 69248 ×, 8426 /, 182 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40146 +, 53098 ×, 6726 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i4_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -965,7 +966,7 @@ std::array<T, 3> scalis_segment_cauchy_i4_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 85 +, 191 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 52049 +, 69259 ×, 8426 /, 182 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 40149 +, 53108 ×, 6726 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1032,71 +1033,72 @@ T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
   const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
   const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
   const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
-  const T t5 = T(1) / c;
-  const T log_ratio = log(q1 * t5);
   T F;
   T G_ap;
   T G_E;
-  const T t6 = T(4) * D - a * a;
-  const T t7 = -a_minus_b * b;
-  const T t8 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
-  if (t6 >= T(0)) {
+  const T t5 = T(4) * D - a * a;
+  const T t6 = -a_minus_b * b;
+  const T t7 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
+  if (t5 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(4, 6, 4, a, b, a_minus_b, D, M_panels.data());
-    const T t9 = t4 * tau_lo;
-    const T t10 = t3 * delta_tau;
-    F = T(3) * M_panels[1] * delta_tau * t4 + T(3) * t3 * tau_lo * M_panels[2] + t9 * M_panels[0] + t10 * M_panels[3];
-    const T t11 = t9 * M_panels[5] + T(3) * M_panels[7] * t3 * tau_lo + T(3) * delta_tau * t4 * M_panels[6] + t10 * M_panels[8];
-    G_ap = t11;
-    const T t12 = T(1) / a;
-    G_E = T(3) * M_panels[7] * delta_tau * t4 + t10 * M_panels[9] + T(3) * t3 * M_panels[8] * tau_lo + t9 * M_panels[6] - t11 * t12 * b;
-  } else if (t7 >= T(0) && t8 >= T(0)) {
+    const T t8 = t4 * tau_lo;
+    const T t9 = t3 * delta_tau;
+    F = T(3) * M_panels[1] * delta_tau * t4 + T(3) * t3 * tau_lo * M_panels[2] + t8 * M_panels[0] + t9 * M_panels[3];
+    const T t10 = t8 * M_panels[5] + T(3) * M_panels[7] * t3 * tau_lo + T(3) * delta_tau * t4 * M_panels[6] + t9 * M_panels[8];
+    G_ap = t10;
+    const T t11 = T(1) / a;
+    G_E = T(3) * M_panels[7] * delta_tau * t4 + t9 * M_panels[9] + T(3) * t3 * M_panels[8] * tau_lo + t8 * M_panels[6] - t10 * t11 * b;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(4, 6, 4, a, b, a_minus_b, D, M_panels.data());
-    const T t13 = t3 * delta_tau;
-    const T t14 = t4 * tau_lo;
-    F = T(3) * delta_tau * t4 * M_panels[1] + M_panels[3] * t13 + M_panels[0] * t14 + T(3) * t3 * tau_lo * M_panels[2];
-    G_ap = T(3) * M_panels[6] * delta_tau * t4 + t14 * M_panels[5] + t13 * M_panels[8] + T(3) * M_panels[7] * t3 * tau_lo;
-    const T t15 = T(1) / a;
-    const T t16 = t5 * t5;
+    const T t12 = t3 * delta_tau;
+    const T t13 = t4 * tau_lo;
+    F = T(3) * delta_tau * t4 * M_panels[1] + M_panels[3] * t12 + M_panels[0] * t13 + T(3) * t3 * tau_lo * M_panels[2];
+    G_ap = T(3) * M_panels[6] * delta_tau * t4 + t13 * M_panels[5] + t12 * M_panels[8] + T(3) * M_panels[7] * t3 * tau_lo;
+    const T t14 = T(1) / a;
+    const T t15 = T(1) / c;
+    const T t16 = t15 * t15;
     const T t17 = T(1) / q1;
     const T t18 = t17 * t17;
-    const T t19 = T(3) * delta_tau * t4 + T(3) * t3 * tau_lo + t14 + t13;
-    G_E = (T(1) / T(4)) * t15 * (t16 * t14 + T(3) * t13 * M_panels[2] + T(6) * t3 * tau_lo * M_panels[1] + T(3) * M_panels[0] * delta_tau * t4 - t18 * t19);
+    const T t19 = T(3) * delta_tau * t4 + T(3) * t3 * tau_lo + t13 + t12;
+    G_E = (T(1) / T(4)) * t14 * (t16 * t13 + T(3) * t12 * M_panels[2] + T(6) * t3 * tau_lo * M_panels[1] + T(3) * M_panels[0] * delta_tau * t4 - t18 * t19);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t20 = sqrt(D);
     const T t21 = T(1) / t20;
     const T J2 = t21 * atan2(t20, c_minus_b);
-    const T t22 = t3 * delta_tau;
-    const T t23 = T(1) / a;
-    const T t24 = T(1) / q1;
-    const T t25 = T(1) / D;
-    const T t26 = J2 * a + t5 * b + t24 * a_minus_b;
-    const T t27 = t24 - t5 - t25 * t26 * b;
-    const T t28 = c * t25 * t26 + T(2) * t23 * t27 * b - T(2) * J2;
-    const T t29 = t4 * tau_lo;
-    F = (T(1) / T(2)) * t22 * t23 * (c * t23 * t27 + (T(2) * J2 * b + log_ratio) * t23 - T(2) * t28 * t23 * b) + (T(1) / T(2)) * t29 * t25 * t26 - (T(3) / T(2)) * delta_tau * t4 * t23 * t27 - (T(3) / T(2)) * t28 * t3 * tau_lo * t23;
-    const T t30 = t24 * t24;
-    const T t31 = t5 * t5;
-    const T t32 = T(3) * t25 * t26 * a + T(2) * t30 * a_minus_b + T(2) * t31 * b;
-    const T t33 = T(2) * t31 + t32 * t25 * b - T(2) * t30;
-    const T t34 = t32 * c * t25 - T(4) * t25 * t26 - T(2) * t33 * t23 * b;
-    G_ap = (T(1) / T(8)) * t32 * t29 * t25 + (T(3) / T(8)) * t33 * delta_tau * t4 * t23 - (T(3) / T(8)) * t34 * t3 * tau_lo * t23 - (T(1) / T(8)) * t22 * (t33 * c * t23 + T(4) * t23 * t27 + T(2) * t34 * t23 * b) * t23;
-    const T t35 = T(3) * delta_tau * t4 + T(3) * t3 * tau_lo + t29 + t22;
-    G_E = (T(1) / T(8)) * (T(3) * delta_tau * t4 * t25 * t26 + T(2) * t31 * t29 - T(6) * t3 * tau_lo * t23 * t27 - T(2) * t30 * t35 - T(3) * t28 * t22 * t23) * t23;
+    const T t22 = T(1) / c;
+    const T log_ratio = log(q1 * t22);
+    const T t23 = t3 * delta_tau;
+    const T t24 = T(1) / a;
+    const T t25 = T(1) / q1;
+    const T t26 = T(1) / D;
+    const T t27 = J2 * a + t22 * b + t25 * a_minus_b;
+    const T t28 = t25 - t22 - t26 * t27 * b;
+    const T t29 = c * t26 * t27 + T(2) * t24 * t28 * b - T(2) * J2;
+    const T t30 = t4 * tau_lo;
+    F = (T(1) / T(2)) * t23 * t24 * (c * t24 * t28 + (T(2) * J2 * b + log_ratio) * t24 - T(2) * t29 * t24 * b) + (T(1) / T(2)) * t30 * t26 * t27 - (T(3) / T(2)) * delta_tau * t4 * t24 * t28 - (T(3) / T(2)) * t29 * t3 * tau_lo * t24;
+    const T t31 = t25 * t25;
+    const T t32 = t22 * t22;
+    const T t33 = T(3) * t26 * t27 * a + T(2) * t31 * a_minus_b + T(2) * t32 * b;
+    const T t34 = T(2) * t32 + t33 * t26 * b - T(2) * t31;
+    const T t35 = t33 * c * t26 - T(4) * t26 * t27 - T(2) * t34 * t24 * b;
+    G_ap = (T(1) / T(8)) * t33 * t30 * t26 + (T(3) / T(8)) * t34 * delta_tau * t4 * t24 - (T(3) / T(8)) * t35 * t3 * tau_lo * t24 - (T(1) / T(8)) * t23 * (t34 * c * t24 + T(4) * t24 * t28 + T(2) * t35 * t24 * b) * t24;
+    const T t36 = T(3) * delta_tau * t4 + T(3) * t3 * tau_lo + t30 + t23;
+    G_E = (T(1) / T(8)) * (T(3) * delta_tau * t4 * t26 * t27 + T(2) * t32 * t30 - T(6) * t3 * tau_lo * t24 * t28 - T(2) * t31 * t36 - T(3) * t29 * t23 * t24) * t24;
   }
-  const T t36 = T(1) / a;
-  const T t37 = T(1) / ab_ab;
-  const T foot_offset = delta_tau * (tau_lo * ab_ab + ab_ap * delta_tau) * t36 * sigma2 * t37;
+  const T t37 = T(1) / a;
+  const T t38 = T(1) / ab_ab;
+  const T foot_offset = delta_tau * (tau_lo * ab_ab + ab_ap * delta_tau) * t37 * sigma2 * t38;
   const T foot_h0 = foot0 + ab0 * foot_offset;
   const T foot_h1 = foot1 + foot_offset * ab1;
   const T foot_h2 = foot2 + foot_offset * ab2;
-  const T t38 = sigma2 * sigma2;
-  const T g_factor = -T(4) * length * t38;
-  f = length * t38 * F;
+  const T t39 = sigma2 * sigma2;
+  const T g_factor = -T(4) * length * t39;
+  f = length * t39 * F;
   grad[0] = g_factor * (G_ap * foot_h0 - ab0 * G_E);
   grad[1] = -(G_E * ab1 - G_ap * foot_h1) * g_factor;
   grad[2] = (G_ap * foot_h2 - G_E * ab2) * g_factor;
@@ -1106,7 +1108,7 @@ T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 62 +, 133 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 40968 +, 65906 ×, 10114 /, 4522 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31698 +, 50456 ×, 8054 /, 3492 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i5_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1557,7 +1559,7 @@ T scalis_segment_cauchy_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 71 +, 157 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 37711 +, 51315 ×, 8421 /, 182 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 37711 +, 51314 ×, 8420 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i6_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1613,45 +1615,45 @@ T scalis_segment_cauchy_i6_f(const ScalisSegmentInput<T>& in) {
   const T a_minus_b = tau_hi * sigma2 * delta_tau - ab_bp;
   const T q1 = bp_bp + tau_hi * tau_hi * sigma2;
   const T c_minus_b = tau_hi * sigma2 * tau_lo + ap_bp;
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
-  const T t4 = T(4) * D - a * a;
-  const T t5 = -b * a_minus_b;
-  const T t6 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * D - a * a;
+  const T t4 = -b * a_minus_b;
+  const T t5 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(6, 6, 5, a, b, a_minus_b, D, M_panels.data());
-    const T t7 = t2 * t2;
-    const T t8 = t1 * t1;
-    const T t9 = t7 * tau_lo;
-    const T t10 = t8 * delta_tau;
-    const T t11 = t1 * delta_tau;
-    const T t12 = t2 * tau_lo;
-    F = T(5) * M_panels[1] * t7 * delta_tau + T(5) * M_panels[4] * tau_lo * t8 + M_panels[0] * t9 + t10 * M_panels[5] + T(10) * M_panels[3] * t2 * t11 + T(10) * t12 * M_panels[2] * t1;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = t2 * t2;
+    const T t7 = t1 * t1;
+    const T t8 = t6 * tau_lo;
+    const T t9 = t7 * delta_tau;
+    const T t10 = t1 * delta_tau;
+    const T t11 = t2 * tau_lo;
+    F = T(5) * M_panels[1] * t6 * delta_tau + T(5) * M_panels[4] * tau_lo * t7 + M_panels[0] * t8 + t9 * M_panels[5] + T(10) * M_panels[3] * t2 * t10 + T(10) * t11 * M_panels[2] * t1;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(6, 6, 5, a, b, a_minus_b, D, M_panels.data());
-    const T t13 = t1 * t1;
-    const T t14 = t2 * t2;
-    const T t15 = t2 * tau_lo;
-    const T t16 = t13 * delta_tau;
-    const T t17 = t14 * tau_lo;
-    const T t18 = t1 * delta_tau;
-    F = T(5) * M_panels[4] * tau_lo * t13 + T(5) * M_panels[1] * t14 * delta_tau + T(10) * M_panels[2] * t15 * t1 + M_panels[5] * t16 + M_panels[0] * t17 + T(10) * M_panels[3] * t2 * t18;
+    const T t12 = t1 * t1;
+    const T t13 = t2 * t2;
+    const T t14 = t2 * tau_lo;
+    const T t15 = t12 * delta_tau;
+    const T t16 = t13 * tau_lo;
+    const T t17 = t1 * delta_tau;
+    F = T(5) * M_panels[4] * tau_lo * t12 + T(5) * M_panels[1] * t13 * delta_tau + T(10) * M_panels[2] * t14 * t1 + M_panels[5] * t15 + M_panels[0] * t16 + T(10) * M_panels[3] * t2 * t17;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t19 = sqrt(D);
-    const T t20 = T(1) / t19;
-    const T J2 = atan2(t19, c_minus_b) * t20;
+    const T t18 = sqrt(D);
+    const T t19 = T(1) / t18;
+    const T J2 = atan2(t18, c_minus_b) * t19;
+    const T t20 = T(1) / c;
+    const T log_ratio = log(q1 * t20);
     const T t21 = T(1) / q1;
     const T t22 = T(1) / D;
-    const T t23 = t21 * a_minus_b + b * t3 + J2 * a;
-    const T t24 = t21 - t3 - b * t22 * t23;
+    const T t23 = t21 * a_minus_b + b * t20 + J2 * a;
+    const T t24 = t21 - t20 - b * t22 * t23;
     const T t25 = T(1) / a;
-    const T t26 = t3 * t3;
+    const T t26 = t20 * t20;
     const T t27 = t21 * t21;
     const T t28 = T(3) * t22 * t23 * a + T(2) * b * t26 + T(2) * t27 * a_minus_b;
     const T t29 = b * t22 * t28 + T(2) * t26 - T(2) * t27;
@@ -1834,7 +1836,7 @@ std::array<T, 3> scalis_segment_cauchy_i6_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 109 +, 279 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 49727 +, 65318 ×, 6311 /, 137 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 49727 +, 65317 ×, 6311 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1901,95 +1903,96 @@ T scalis_segment_cauchy_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
   const T a_minus_b = sigma2 * tau_hi * delta_tau - ab_bp;
   const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
   const T c_minus_b = ap_bp + tau_lo * sigma2 * tau_hi;
-  const T t5 = T(1) / c;
-  const T log_ratio = log(q1 * t5);
   T F;
   T G_ap;
   T G_E;
-  const T t6 = T(4) * D - a * a;
-  const T t7 = -a_minus_b * b;
-  const T t8 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
-  if (t6 >= T(0)) {
+  const T t5 = T(4) * D - a * a;
+  const T t6 = -a_minus_b * b;
+  const T t7 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
+  if (t5 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 14> M_panels;
     segment_moments_gauss_panels<T>(6, 8, 6, a, b, a_minus_b, D, M_panels.data());
-    const T t9 = t3 * delta_tau;
-    const T t10 = t3 * t3;
-    const T t11 = t10 * delta_tau;
-    const T t12 = t4 * t4;
-    const T t13 = t12 * tau_lo;
-    const T t14 = t4 * tau_lo;
-    F = T(10) * t4 * M_panels[3] * t9 + t11 * M_panels[5] + T(5) * tau_lo * M_panels[4] * t10 + t13 * M_panels[0] + T(10) * t14 * M_panels[2] * t3 + T(5) * t12 * M_panels[1] * delta_tau;
-    const T t15 = T(10) * t4 * M_panels[10] * t9 + T(10) * t14 * M_panels[9] * t3 + t13 * M_panels[7] + T(5) * tau_lo * M_panels[11] * t10 + M_panels[12] * t11 + T(5) * t12 * M_panels[8] * delta_tau;
-    G_ap = t15;
-    const T t16 = T(1) / a;
-    G_E = T(10) * t4 * M_panels[11] * t9 + M_panels[13] * t11 + t13 * M_panels[8] + T(10) * t14 * M_panels[10] * t3 + T(5) * tau_lo * M_panels[12] * t10 + T(5) * t12 * M_panels[9] * delta_tau - t16 * b * t15;
-  } else if (t7 >= T(0) && t8 >= T(0)) {
+    const T t8 = t3 * delta_tau;
+    const T t9 = t3 * t3;
+    const T t10 = t9 * delta_tau;
+    const T t11 = t4 * t4;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t4 * tau_lo;
+    F = T(10) * t4 * M_panels[3] * t8 + t10 * M_panels[5] + T(5) * tau_lo * M_panels[4] * t9 + t12 * M_panels[0] + T(10) * t13 * M_panels[2] * t3 + T(5) * t11 * M_panels[1] * delta_tau;
+    const T t14 = T(10) * t4 * M_panels[10] * t8 + T(10) * t13 * M_panels[9] * t3 + t12 * M_panels[7] + T(5) * tau_lo * M_panels[11] * t9 + M_panels[12] * t10 + T(5) * t11 * M_panels[8] * delta_tau;
+    G_ap = t14;
+    const T t15 = T(1) / a;
+    G_E = T(10) * t4 * M_panels[11] * t8 + M_panels[13] * t10 + t12 * M_panels[8] + T(10) * t13 * M_panels[10] * t3 + T(5) * tau_lo * M_panels[12] * t9 + T(5) * t11 * M_panels[9] * delta_tau - t15 * b * t14;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 14> M_panels;
     segment_moments_gauss_panels<T>(6, 8, 6, a, b, a_minus_b, D, M_panels.data());
-    const T t17 = t3 * delta_tau;
-    const T t18 = t3 * t3;
-    const T t19 = t4 * tau_lo;
-    const T t20 = t4 * t4;
-    const T t21 = t18 * delta_tau;
-    const T t22 = t20 * tau_lo;
-    F = T(10) * t4 * M_panels[3] * t17 + T(5) * tau_lo * M_panels[4] * t18 + T(10) * t19 * M_panels[2] * t3 + T(5) * t20 * M_panels[1] * delta_tau + M_panels[5] * t21 + t22 * M_panels[0];
-    G_ap = T(10) * t19 * M_panels[9] * t3 + M_panels[12] * t21 + T(10) * t4 * t17 * M_panels[10] + T(5) * tau_lo * M_panels[11] * t18 + t22 * M_panels[7] + T(5) * t20 * M_panels[8] * delta_tau;
-    const T t23 = T(1) / a;
-    const T t24 = t5 * t5;
-    const T t25 = t24 * t5;
-    const T t26 = T(10) * t19 * t3 + t21 + T(5) * tau_lo * t18 + T(10) * t4 * t17 + T(5) * t20 * delta_tau + t22;
+    const T t16 = t3 * delta_tau;
+    const T t17 = t3 * t3;
+    const T t18 = t4 * tau_lo;
+    const T t19 = t4 * t4;
+    const T t20 = t17 * delta_tau;
+    const T t21 = t19 * tau_lo;
+    F = T(10) * t4 * M_panels[3] * t16 + T(5) * tau_lo * M_panels[4] * t17 + T(10) * t18 * M_panels[2] * t3 + T(5) * t19 * M_panels[1] * delta_tau + M_panels[5] * t20 + t21 * M_panels[0];
+    G_ap = T(10) * t18 * M_panels[9] * t3 + M_panels[12] * t20 + T(10) * t4 * t16 * M_panels[10] + T(5) * tau_lo * M_panels[11] * t17 + t21 * M_panels[7] + T(5) * t19 * M_panels[8] * delta_tau;
+    const T t22 = T(1) / a;
+    const T t23 = T(1) / c;
+    const T t24 = t23 * t23;
+    const T t25 = t24 * t23;
+    const T t26 = T(10) * t18 * t3 + t20 + T(5) * tau_lo * t17 + T(10) * t4 * t16 + T(5) * t19 * delta_tau + t21;
     const T t27 = T(1) / q1;
     const T t28 = t27 * t27;
     const T t29 = t28 * t27;
-    G_E = (T(1) / T(6)) * t23 * (T(20) * tau_lo * M_panels[3] * t18 + t22 * t25 + T(5) * M_panels[4] * t21 + T(20) * t19 * M_panels[1] * t3 + T(5) * t20 * M_panels[0] * delta_tau + T(30) * t4 * M_panels[2] * t17 - t26 * t29);
+    G_E = (T(1) / T(6)) * t22 * (T(20) * tau_lo * M_panels[3] * t17 + t21 * t25 + T(5) * M_panels[4] * t20 + T(20) * t18 * M_panels[1] * t3 + T(5) * t19 * M_panels[0] * delta_tau + T(30) * t4 * M_panels[2] * t16 - t26 * t29);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t30 = sqrt(D);
     const T t31 = T(1) / t30;
     const T J2 = atan2(t30, c_minus_b) * t31;
-    const T t32 = T(1) / a;
-    const T t33 = T(1) / q1;
-    const T t34 = a_minus_b * t33 + b * t5 + a * J2;
-    const T t35 = T(1) / D;
-    const T t36 = t5 * t5;
-    const T t37 = t33 * t33;
-    const T t38 = T(2) * b * t36 + T(2) * a_minus_b * t37 + T(3) * a * t34 * t35;
-    const T t39 = T(2) * t36 + t38 * b * t35 - T(2) * t37;
-    const T t40 = T(4) * t34 * t35 + T(2) * t32 * b * t39 - t38 * c * t35;
-    const T t41 = t33 - t34 * b * t35 - t5;
-    const T t42 = T(2) * t32 * b * t40 - T(4) * t32 * t41 - t32 * c * t39;
-    const T t43 = T(2) * t32 * b * t41 + t34 * c * t35 - T(2) * J2;
-    const T t44 = T(2) * t42 * t32 * b - t32 * t40 * c - T(4) * t32 * t43;
-    const T t45 = t3 * t3;
-    const T t46 = t45 * delta_tau;
-    const T t47 = t4 * t4;
-    const T t48 = t3 * delta_tau;
-    const T t49 = t47 * tau_lo;
-    const T t50 = t4 * tau_lo;
-    F = (T(1) / T(8)) * t32 * (T(2) * t32 * t44 * b + T(4) * t32 * (t32 * (log_ratio + T(2) * b * J2) + t32 * c * t41 - T(2) * t32 * t43 * b) - t42 * t32 * c) * t46 + (T(5) / T(8)) * t47 * t32 * t39 * delta_tau + (T(5) / T(4)) * t42 * t4 * t32 * t48 + (T(1) / T(8)) * t49 * t38 * t35 + (T(5) / T(8)) * tau_lo * t32 * t44 * t45 + (T(5) / T(4)) * t50 * t32 * t40 * t3;
-    const T t51 = t36 * t5;
-    const T t52 = t37 * t33;
-    const T t53 = T(8) * b * t51 + T(8) * a_minus_b * t52 + T(5) * a * t38 * t35;
-    const T t54 = T(8) * t51 + b * t35 * t53 - T(8) * t52;
-    const T t55 = T(6) * t38 * t35 + T(2) * t32 * b * t54 - c * t35 * t53;
-    const T t56 = T(2) * t32 * t55 * b + T(6) * t32 * t39 - t32 * c * t54;
-    const T t57 = T(6) * t32 * t40 + T(2) * t32 * t56 * b - t32 * t55 * c;
-    G_ap = (T(5) / T(48)) * t47 * t32 * t54 * delta_tau + (T(5) / T(24)) * t50 * t32 * t55 * t3 + (T(1) / T(48)) * t49 * t35 * t53 + (T(1) / T(48)) * t32 * (T(2) * t32 * b * t57 + T(6) * t42 * t32 - t32 * t56 * c) * t46 + (T(5) / T(24)) * t4 * t32 * t56 * t48 + (T(5) / T(48)) * tau_lo * t32 * t57 * t45;
-    const T t58 = T(10) * t50 * t3 + t46 + T(5) * tau_lo * t45 + T(10) * t4 * t48 + T(5) * t47 * delta_tau + t49;
-    G_E = (T(1) / T(48)) * (T(8) * t49 * t51 + T(20) * t42 * tau_lo * t32 * t45 + T(5) * t47 * t38 * t35 * delta_tau + T(5) * t32 * t44 * t46 + T(30) * t4 * t32 * t40 * t48 + T(20) * t50 * t32 * t39 * t3 - T(8) * t58 * t52) * t32;
+    const T t32 = T(1) / c;
+    const T log_ratio = log(q1 * t32);
+    const T t33 = T(1) / a;
+    const T t34 = T(1) / q1;
+    const T t35 = a_minus_b * t34 + b * t32 + a * J2;
+    const T t36 = T(1) / D;
+    const T t37 = t32 * t32;
+    const T t38 = t34 * t34;
+    const T t39 = T(2) * b * t37 + T(2) * a_minus_b * t38 + T(3) * a * t35 * t36;
+    const T t40 = T(2) * t37 + t39 * b * t36 - T(2) * t38;
+    const T t41 = T(4) * t35 * t36 + T(2) * t33 * b * t40 - t39 * c * t36;
+    const T t42 = t34 - t35 * b * t36 - t32;
+    const T t43 = T(2) * t33 * b * t41 - T(4) * t33 * t42 - t33 * c * t40;
+    const T t44 = T(2) * t33 * b * t42 + t35 * c * t36 - T(2) * J2;
+    const T t45 = T(2) * t43 * t33 * b - t33 * t41 * c - T(4) * t33 * t44;
+    const T t46 = t3 * t3;
+    const T t47 = t46 * delta_tau;
+    const T t48 = t4 * t4;
+    const T t49 = t3 * delta_tau;
+    const T t50 = t48 * tau_lo;
+    const T t51 = t4 * tau_lo;
+    F = (T(1) / T(8)) * t33 * (T(2) * t33 * t45 * b + T(4) * t33 * (t33 * (log_ratio + T(2) * b * J2) + t33 * c * t42 - T(2) * t33 * t44 * b) - t43 * t33 * c) * t47 + (T(5) / T(8)) * t48 * t33 * t40 * delta_tau + (T(5) / T(4)) * t43 * t4 * t33 * t49 + (T(1) / T(8)) * t50 * t39 * t36 + (T(5) / T(8)) * tau_lo * t33 * t45 * t46 + (T(5) / T(4)) * t51 * t33 * t41 * t3;
+    const T t52 = t37 * t32;
+    const T t53 = t38 * t34;
+    const T t54 = T(8) * b * t52 + T(8) * a_minus_b * t53 + T(5) * a * t39 * t36;
+    const T t55 = T(8) * t52 + b * t36 * t54 - T(8) * t53;
+    const T t56 = T(6) * t39 * t36 + T(2) * t33 * b * t55 - c * t36 * t54;
+    const T t57 = T(2) * t33 * t56 * b + T(6) * t33 * t40 - t33 * c * t55;
+    const T t58 = T(6) * t33 * t41 + T(2) * t33 * t57 * b - t33 * t56 * c;
+    G_ap = (T(5) / T(48)) * t48 * t33 * t55 * delta_tau + (T(5) / T(24)) * t51 * t33 * t56 * t3 + (T(1) / T(48)) * t50 * t36 * t54 + (T(1) / T(48)) * t33 * (T(2) * t33 * b * t58 + T(6) * t43 * t33 - t33 * t57 * c) * t47 + (T(5) / T(24)) * t4 * t33 * t57 * t49 + (T(5) / T(48)) * tau_lo * t33 * t58 * t46;
+    const T t59 = T(10) * t51 * t3 + t47 + T(5) * tau_lo * t46 + T(10) * t4 * t49 + T(5) * t48 * delta_tau + t50;
+    G_E = (T(1) / T(48)) * (T(8) * t50 * t52 + T(20) * t43 * tau_lo * t33 * t46 + T(5) * t48 * t39 * t36 * delta_tau + T(5) * t33 * t45 * t47 + T(30) * t4 * t33 * t41 * t49 + T(20) * t51 * t33 * t40 * t3 - T(8) * t59 * t53) * t33;
   }
-  const T t59 = T(1) / a;
-  const T t60 = T(1) / ab_ab;
-  const T foot_offset = t59 * (ab_ap * delta_tau + tau_lo * ab_ab) * sigma2 * t60 * delta_tau;
+  const T t60 = T(1) / a;
+  const T t61 = T(1) / ab_ab;
+  const T foot_offset = t60 * (ab_ap * delta_tau + tau_lo * ab_ab) * sigma2 * t61 * delta_tau;
   const T foot_h0 = foot_offset * ab0 + foot0;
   const T foot_h1 = foot1 + foot_offset * ab1;
   const T foot_h2 = foot2 + foot_offset * ab2;
-  const T t61 = sigma2 * sigma2;
-  const T t62 = t61 * sigma2;
-  const T g_factor = -T(6) * t62 * length;
-  f = F * t62 * length;
+  const T t62 = sigma2 * sigma2;
+  const T t63 = t62 * sigma2;
+  const T g_factor = -T(6) * t63 * length;
+  f = F * t63 * length;
   grad[0] = (G_ap * foot_h0 - ab0 * G_E) * g_factor;
   grad[1] = -(ab1 * G_E - G_ap * foot_h1) * g_factor;
   grad[2] = -(ab2 * G_E - foot_h2 * G_ap) * g_factor;
@@ -2526,7 +2529,7 @@ T scalis_segment_cauchy_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 89 +, 224 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 33623 +, 46495 ×, 6306 /, 137 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 33623 +, 46494 ×, 6305 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i8_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2582,64 +2585,64 @@ T scalis_segment_cauchy_i8_f(const ScalisSegmentInput<T>& in) {
   const T a_minus_b = tau_hi * delta_tau * sigma2 - ab_bp;
   const T q1 = tau_hi * tau_hi * sigma2 + bp_bp;
   const T c_minus_b = tau_hi * tau_lo * sigma2 + ap_bp;
-  const T t3 = T(1) / c;
-  const T log_ratio = log(t3 * q1);
   T F;
-  const T t4 = T(4) * D - a * a;
-  const T t5 = -b * a_minus_b;
-  const T t6 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * D - a * a;
+  const T t4 = -b * a_minus_b;
+  const T t5 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
     segment_moments_gauss_panels<T>(8, 8, 7, a, b, a_minus_b, D, M_panels.data());
-    const T t7 = t1 * t1;
-    const T t8 = t2 * tau_lo;
-    const T t9 = t1 * delta_tau;
-    const T t10 = t9 * t9;
-    const T t11 = t8 * t8;
-    const T t12 = t2 * t2;
-    const T t13 = t12 * tau_lo;
-    const T t14 = t11 * tau_lo;
-    const T t15 = t7 * delta_tau;
-    const T t16 = t10 * delta_tau;
-    F = T(35) * t7 * t8 * M_panels[4] + T(7) * M_panels[6] * t10 * tau_lo + T(7) * delta_tau * t11 * M_panels[1] + T(21) * M_panels[2] * t1 * t13 + M_panels[0] * t14 + T(21) * M_panels[5] * t15 * t2 + T(35) * M_panels[3] * t9 * t12 + t16 * M_panels[7];
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = t1 * t1;
+    const T t7 = t2 * tau_lo;
+    const T t8 = t1 * delta_tau;
+    const T t9 = t8 * t8;
+    const T t10 = t7 * t7;
+    const T t11 = t2 * t2;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t10 * tau_lo;
+    const T t14 = t6 * delta_tau;
+    const T t15 = t9 * delta_tau;
+    F = T(35) * t6 * t7 * M_panels[4] + T(7) * M_panels[6] * t9 * tau_lo + T(7) * delta_tau * t10 * M_panels[1] + T(21) * M_panels[2] * t1 * t12 + M_panels[0] * t13 + T(21) * M_panels[5] * t14 * t2 + T(35) * M_panels[3] * t8 * t11 + t15 * M_panels[7];
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
     segment_moments_gauss_panels<T>(8, 8, 7, a, b, a_minus_b, D, M_panels.data());
-    const T t17 = t1 * delta_tau;
-    const T t18 = t2 * t2;
-    const T t19 = t1 * t1;
-    const T t20 = t19 * delta_tau;
-    const T t21 = t17 * t17;
-    const T t22 = t2 * tau_lo;
-    const T t23 = t21 * delta_tau;
-    const T t24 = t18 * tau_lo;
-    const T t25 = t22 * t22;
-    const T t26 = t25 * tau_lo;
-    F = T(35) * M_panels[3] * t17 * t18 + T(21) * t20 * M_panels[5] * t2 + T(7) * M_panels[6] * t21 * tau_lo + T(35) * M_panels[4] * t19 * t22 + M_panels[7] * t23 + T(21) * t1 * t24 * M_panels[2] + T(7) * M_panels[1] * delta_tau * t25 + M_panels[0] * t26;
+    const T t16 = t1 * delta_tau;
+    const T t17 = t2 * t2;
+    const T t18 = t1 * t1;
+    const T t19 = t18 * delta_tau;
+    const T t20 = t16 * t16;
+    const T t21 = t2 * tau_lo;
+    const T t22 = t20 * delta_tau;
+    const T t23 = t17 * tau_lo;
+    const T t24 = t21 * t21;
+    const T t25 = t24 * tau_lo;
+    F = T(35) * M_panels[3] * t16 * t17 + T(21) * t19 * M_panels[5] * t2 + T(7) * M_panels[6] * t20 * tau_lo + T(35) * M_panels[4] * t18 * t21 + M_panels[7] * t22 + T(21) * t1 * t23 * M_panels[2] + T(7) * M_panels[1] * delta_tau * t24 + M_panels[0] * t25;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t27 = sqrt(D);
-    const T t28 = T(1) / t27;
-    const T J2 = atan2(t27, c_minus_b) * t28;
+    const T t26 = sqrt(D);
+    const T t27 = T(1) / t26;
+    const T J2 = atan2(t26, c_minus_b) * t27;
+    const T t28 = T(1) / c;
+    const T log_ratio = log(t28 * q1);
     const T t29 = t1 * delta_tau;
     const T t30 = t29 * t29;
     const T t31 = t30 * delta_tau;
     const T t32 = T(1) / a;
     const T t33 = T(1) / q1;
-    const T t34 = a_minus_b * t33 + b * t3 + a * J2;
+    const T t34 = a_minus_b * t33 + b * t28 + a * J2;
     const T t35 = T(1) / D;
-    const T t36 = t3 + b * t34 * t35 - t33;
+    const T t36 = t28 + b * t34 * t35 - t33;
     const T t37 = T(2) * b * t36 * t32 + T(2) * J2 - t34 * c * t35;
     const T t38 = t33 * t33;
-    const T t39 = t3 * t3;
+    const T t39 = t28 * t28;
     const T t40 = T(3) * t34 * t35 * a + T(2) * b * t39 + T(2) * a_minus_b * t38;
     const T t41 = T(2) * t38 - b * t40 * t35 - T(2) * t39;
     const T t42 = T(2) * b * t41 * t32 + t40 * c * t35 - T(4) * t34 * t35;
     const T t43 = T(4) * t36 * t32 + c * t41 * t32 - T(2) * b * t42 * t32;
     const T t44 = T(4) * t37 * t32 + T(2) * b * t43 * t32 + t42 * c * t32;
-    const T t45 = t39 * t3;
+    const T t45 = t39 * t28;
     const T t46 = t38 * t33;
     const T t47 = T(5) * t40 * t35 * a + T(8) * b * t45 + T(8) * a_minus_b * t46;
     const T t48 = T(8) * t46 - T(8) * t45 - b * t35 * t47;
@@ -2846,7 +2849,7 @@ std::array<T, 3> scalis_segment_cauchy_i8_grad(const ScalisSegmentInput<T>& in) 
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 137 +, 380 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 48755 +, 63508 ×, 5089 /, 111 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48755 +, 63507 ×, 5089 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2913,118 +2916,119 @@ T scalis_segment_cauchy_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
   const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
   const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
   const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
-  const T t5 = T(1) / c;
-  const T log_ratio = log(t5 * q1);
   T F;
   T G_ap;
   T G_E;
-  const T t6 = T(4) * D - a * a;
-  const T t7 = -b * a_minus_b;
-  const T t8 = max(T((T(7) / T(10)) * a * min(T(c), T(q1)) - D), T(T(100) * D - a * a));
-  if (t6 >= T(0)) {
+  const T t5 = T(4) * D - a * a;
+  const T t6 = -b * a_minus_b;
+  const T t7 = max(T((T(7) / T(10)) * a * min(T(c), T(q1)) - D), T(T(100) * D - a * a));
+  if (t5 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 18> M_panels;
     segment_moments_gauss_panels<T>(8, 10, 8, a, b, a_minus_b, D, M_panels.data());
-    const T t9 = t3 * delta_tau;
-    const T t10 = t4 * t4;
-    const T t11 = t9 * t9;
-    const T t12 = t10 * tau_lo;
-    const T t13 = t11 * delta_tau;
-    const T t14 = t4 * tau_lo;
-    const T t15 = t14 * t14;
-    const T t16 = t15 * tau_lo;
-    const T t17 = t3 * t3;
-    const T t18 = t17 * delta_tau;
-    F = T(35) * t9 * t10 * M_panels[3] + T(7) * t11 * tau_lo * M_panels[6] + T(21) * t3 * t12 * M_panels[2] + t13 * M_panels[7] + t16 * M_panels[0] + T(35) * t17 * t14 * M_panels[4] + T(7) * M_panels[1] * delta_tau * t15 + T(21) * t18 * t4 * M_panels[5];
-    const T t19 = T(35) * t9 * t10 * M_panels[12] + T(7) * t11 * tau_lo * M_panels[15] + T(21) * t3 * t12 * M_panels[11] + T(7) * delta_tau * t15 * M_panels[10] + T(21) * t18 * M_panels[14] * t4 + T(35) * t17 * t14 * M_panels[13] + t13 * M_panels[16] + t16 * M_panels[9];
-    G_ap = t19;
-    const T t20 = T(1) / a;
-    G_E = T(7) * delta_tau * t15 * M_panels[11] + t16 * M_panels[10] + T(35) * t17 * M_panels[14] * t14 + T(21) * t18 * t4 * M_panels[15] + T(21) * t3 * t12 * M_panels[12] + M_panels[17] * t13 + T(7) * t11 * tau_lo * M_panels[16] + T(35) * t9 * t10 * M_panels[13] - t19 * t20 * b;
-  } else if (t7 >= T(0) && t8 >= T(0)) {
+    const T t8 = t3 * delta_tau;
+    const T t9 = t4 * t4;
+    const T t10 = t8 * t8;
+    const T t11 = t9 * tau_lo;
+    const T t12 = t10 * delta_tau;
+    const T t13 = t4 * tau_lo;
+    const T t14 = t13 * t13;
+    const T t15 = t14 * tau_lo;
+    const T t16 = t3 * t3;
+    const T t17 = t16 * delta_tau;
+    F = T(35) * t8 * t9 * M_panels[3] + T(7) * t10 * tau_lo * M_panels[6] + T(21) * t3 * t11 * M_panels[2] + t12 * M_panels[7] + t15 * M_panels[0] + T(35) * t16 * t13 * M_panels[4] + T(7) * M_panels[1] * delta_tau * t14 + T(21) * t17 * t4 * M_panels[5];
+    const T t18 = T(35) * t8 * t9 * M_panels[12] + T(7) * t10 * tau_lo * M_panels[15] + T(21) * t3 * t11 * M_panels[11] + T(7) * delta_tau * t14 * M_panels[10] + T(21) * t17 * M_panels[14] * t4 + T(35) * t16 * t13 * M_panels[13] + t12 * M_panels[16] + t15 * M_panels[9];
+    G_ap = t18;
+    const T t19 = T(1) / a;
+    G_E = T(7) * delta_tau * t14 * M_panels[11] + t15 * M_panels[10] + T(35) * t16 * M_panels[14] * t13 + T(21) * t17 * t4 * M_panels[15] + T(21) * t3 * t11 * M_panels[12] + M_panels[17] * t12 + T(7) * t10 * tau_lo * M_panels[16] + T(35) * t8 * t9 * M_panels[13] - t18 * t19 * b;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 18> M_panels;
     segment_moments_gauss_panels<T>(8, 10, 8, a, b, a_minus_b, D, M_panels.data());
-    const T t21 = t4 * tau_lo;
-    const T t22 = t21 * t21;
-    const T t23 = t22 * tau_lo;
-    const T t24 = t3 * t3;
-    const T t25 = t24 * delta_tau;
-    const T t26 = t3 * delta_tau;
-    const T t27 = t26 * t26;
-    const T t28 = t27 * delta_tau;
-    const T t29 = t4 * t4;
-    const T t30 = t29 * tau_lo;
-    F = T(7) * delta_tau * t22 * M_panels[1] + t23 * M_panels[0] + T(21) * M_panels[5] * t25 * t4 + T(35) * t24 * t21 * M_panels[4] + t28 * M_panels[7] + T(21) * t3 * t30 * M_panels[2] + T(35) * t26 * t29 * M_panels[3] + T(7) * t27 * tau_lo * M_panels[6];
-    G_ap = T(21) * t3 * t30 * M_panels[11] + T(35) * t26 * t29 * M_panels[12] + t23 * M_panels[9] + T(7) * delta_tau * t22 * M_panels[10] + T(7) * t27 * M_panels[15] * tau_lo + T(35) * t24 * t21 * M_panels[13] + t28 * M_panels[16] + T(21) * t25 * t4 * M_panels[14];
-    const T t31 = T(1) / a;
-    const T t32 = t5 * t5;
+    const T t20 = t4 * tau_lo;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * tau_lo;
+    const T t23 = t3 * t3;
+    const T t24 = t23 * delta_tau;
+    const T t25 = t3 * delta_tau;
+    const T t26 = t25 * t25;
+    const T t27 = t26 * delta_tau;
+    const T t28 = t4 * t4;
+    const T t29 = t28 * tau_lo;
+    F = T(7) * delta_tau * t21 * M_panels[1] + t22 * M_panels[0] + T(21) * M_panels[5] * t24 * t4 + T(35) * t23 * t20 * M_panels[4] + t27 * M_panels[7] + T(21) * t3 * t29 * M_panels[2] + T(35) * t25 * t28 * M_panels[3] + T(7) * t26 * tau_lo * M_panels[6];
+    G_ap = T(21) * t3 * t29 * M_panels[11] + T(35) * t25 * t28 * M_panels[12] + t22 * M_panels[9] + T(7) * delta_tau * t21 * M_panels[10] + T(7) * t26 * M_panels[15] * tau_lo + T(35) * t23 * t20 * M_panels[13] + t27 * M_panels[16] + T(21) * t24 * t4 * M_panels[14];
+    const T t30 = T(1) / a;
+    const T t31 = T(1) / c;
+    const T t32 = t31 * t31;
     const T t33 = t32 * t32;
-    const T t34 = T(7) * t27 * tau_lo + T(21) * t25 * t4 + T(35) * t26 * t29 + T(35) * t24 * t21 + T(21) * t3 * t30 + t23 + T(7) * delta_tau * t22 + t28;
+    const T t34 = T(7) * t26 * tau_lo + T(21) * t24 * t4 + T(35) * t25 * t28 + T(35) * t23 * t20 + T(21) * t3 * t29 + t22 + T(7) * delta_tau * t21 + t27;
     const T t35 = T(1) / q1;
     const T t36 = t35 * t35;
     const T t37 = t36 * t36;
-    G_E = (T(1) / T(8)) * t31 * (T(42) * M_panels[5] * t27 * tau_lo + t23 * t33 + T(105) * t25 * t4 * M_panels[4] + T(140) * t24 * t21 * M_panels[3] + T(7) * delta_tau * t22 * M_panels[0] + T(105) * t26 * t29 * M_panels[2] + T(42) * t3 * t30 * M_panels[1] + T(7) * t28 * M_panels[6] - t34 * t37);
+    G_E = (T(1) / T(8)) * t30 * (T(42) * M_panels[5] * t26 * tau_lo + t22 * t33 + T(105) * t24 * t4 * M_panels[4] + T(140) * t23 * t20 * M_panels[3] + T(7) * delta_tau * t21 * M_panels[0] + T(105) * t25 * t28 * M_panels[2] + T(42) * t3 * t29 * M_panels[1] + T(7) * t27 * M_panels[6] - t34 * t37);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t38 = sqrt(D);
     const T t39 = T(1) / t38;
     const T J2 = t39 * atan2(t38, c_minus_b);
-    const T t40 = t4 * tau_lo;
-    const T t41 = t40 * t40;
-    const T t42 = T(1) / a;
-    const T t43 = T(1) / D;
-    const T t44 = T(1) / q1;
-    const T t45 = J2 * a + b * t5 + a_minus_b * t44;
-    const T t46 = t44 * t44;
-    const T t47 = t5 * t5;
-    const T t48 = T(3) * t45 * a * t43 + T(2) * a_minus_b * t46 + T(2) * b * t47;
-    const T t49 = t47 * t5;
-    const T t50 = t46 * t44;
-    const T t51 = T(5) * a * t43 * t48 + T(8) * b * t49 + T(8) * a_minus_b * t50;
-    const T t52 = t51 * t43 * b + T(8) * t49 - T(8) * t50;
-    const T t53 = t3 * delta_tau;
-    const T t54 = t4 * t4;
-    const T t55 = T(2) * t42 * b * t52 + T(6) * t43 * t48 - t51 * t43 * c;
-    const T t56 = t43 * t48 * b + T(2) * t47 - T(2) * t46;
-    const T t57 = T(2) * t55 * t42 * b + T(6) * t42 * t56 - t42 * t52 * c;
-    const T t58 = t54 * tau_lo;
-    const T t59 = t3 * t3;
-    const T t60 = T(2) * t42 * b * t56 + T(4) * t45 * t43 - t43 * t48 * c;
-    const T t61 = T(2) * t42 * t57 * b + T(6) * t60 * t42 - t55 * t42 * c;
-    const T t62 = t41 * tau_lo;
-    const T t63 = t59 * delta_tau;
-    const T t64 = t44 - t5 - t45 * t43 * b;
-    const T t65 = t42 * t56 * c + T(4) * t64 * t42 - T(2) * t60 * t42 * b;
-    const T t66 = t42 * t57 * c + T(6) * t65 * t42 - T(2) * t42 * b * t61;
-    const T t67 = t53 * t53;
-    const T t68 = T(2) * J2 - T(2) * t64 * t42 * b - t45 * t43 * c;
-    const T t69 = t60 * t42 * c + T(2) * t65 * t42 * b - T(4) * t68 * t42;
-    const T t70 = T(2) * t42 * b * t66 + T(6) * t69 * t42 + t42 * t61 * c;
-    const T t71 = t67 * delta_tau;
-    F = (T(7) / T(48)) * delta_tau * t41 * t42 * t52 + (T(35) / T(48)) * t53 * t54 * t42 * t57 + (T(7) / T(16)) * t55 * t3 * t58 * t42 + (T(35) / T(48)) * t59 * t40 * t42 * t61 + (T(1) / T(48)) * t62 * t51 * t43 - (T(7) / T(16)) * t63 * t4 * t42 * t66 - (T(7) / T(48)) * t67 * t70 * tau_lo * t42 - (T(1) / T(48)) * t71 * (T(6) * t42 * (T(2) * t69 * t42 * b - t65 * t42 * c - T(4) * t42 * (t64 * t42 * c + T(2) * t68 * t42 * b + t42 * (log_ratio + T(2) * J2 * b))) + T(2) * t70 * t42 * b - t42 * t66 * c) * t42;
-    const T t72 = t46 * t46;
+    const T t40 = T(1) / c;
+    const T log_ratio = log(t40 * q1);
+    const T t41 = t4 * tau_lo;
+    const T t42 = t41 * t41;
+    const T t43 = T(1) / a;
+    const T t44 = T(1) / D;
+    const T t45 = T(1) / q1;
+    const T t46 = J2 * a + b * t40 + a_minus_b * t45;
+    const T t47 = t45 * t45;
+    const T t48 = t40 * t40;
+    const T t49 = T(3) * t46 * a * t44 + T(2) * a_minus_b * t47 + T(2) * b * t48;
+    const T t50 = t48 * t40;
+    const T t51 = t47 * t45;
+    const T t52 = T(5) * a * t44 * t49 + T(8) * b * t50 + T(8) * a_minus_b * t51;
+    const T t53 = t52 * t44 * b + T(8) * t50 - T(8) * t51;
+    const T t54 = t3 * delta_tau;
+    const T t55 = t4 * t4;
+    const T t56 = T(2) * t43 * b * t53 + T(6) * t44 * t49 - t52 * t44 * c;
+    const T t57 = t44 * t49 * b + T(2) * t48 - T(2) * t47;
+    const T t58 = T(2) * t56 * t43 * b + T(6) * t43 * t57 - t43 * t53 * c;
+    const T t59 = t55 * tau_lo;
+    const T t60 = t3 * t3;
+    const T t61 = T(2) * t43 * b * t57 + T(4) * t46 * t44 - t44 * t49 * c;
+    const T t62 = T(2) * t43 * t58 * b + T(6) * t61 * t43 - t56 * t43 * c;
+    const T t63 = t42 * tau_lo;
+    const T t64 = t60 * delta_tau;
+    const T t65 = t45 - t40 - t46 * t44 * b;
+    const T t66 = t43 * t57 * c + T(4) * t65 * t43 - T(2) * t61 * t43 * b;
+    const T t67 = t43 * t58 * c + T(6) * t66 * t43 - T(2) * t43 * b * t62;
+    const T t68 = t54 * t54;
+    const T t69 = T(2) * J2 - T(2) * t65 * t43 * b - t46 * t44 * c;
+    const T t70 = t61 * t43 * c + T(2) * t66 * t43 * b - T(4) * t69 * t43;
+    const T t71 = T(2) * t43 * b * t67 + T(6) * t70 * t43 + t43 * t62 * c;
+    const T t72 = t68 * delta_tau;
+    F = (T(7) / T(48)) * delta_tau * t42 * t43 * t53 + (T(35) / T(48)) * t54 * t55 * t43 * t58 + (T(7) / T(16)) * t56 * t3 * t59 * t43 + (T(35) / T(48)) * t60 * t41 * t43 * t62 + (T(1) / T(48)) * t63 * t52 * t44 - (T(7) / T(16)) * t64 * t4 * t43 * t67 - (T(7) / T(48)) * t68 * t71 * tau_lo * t43 - (T(1) / T(48)) * t72 * (T(6) * t43 * (T(2) * t70 * t43 * b - t66 * t43 * c - T(4) * t43 * (t65 * t43 * c + T(2) * t69 * t43 * b + t43 * (log_ratio + T(2) * J2 * b))) + T(2) * t71 * t43 * b - t43 * t67 * c) * t43;
     const T t73 = t47 * t47;
-    const T t74 = T(48) * b * t73 + T(7) * a * t51 * t43 + T(48) * a_minus_b * t72;
-    const T t75 = T(48) * t72 - T(48) * t73 - t43 * b * t74;
-    const T t76 = T(8) * t51 * t43 - T(2) * t42 * t75 * b - t43 * t74 * c;
-    const T t77 = t42 * t75 * c + T(2) * t76 * t42 * b + T(8) * t42 * t52;
-    const T t78 = t76 * t42 * c - T(2) * t42 * b * t77 - T(8) * t55 * t42;
-    const T t79 = T(2) * t42 * b * t78 + t42 * c * t77 - T(8) * t42 * t57;
-    const T t80 = T(8) * t42 * t61 + t42 * t78 * c - T(2) * t79 * t42 * b;
-    G_ap = (T(35) / T(384)) * t53 * t54 * t42 * t77 + (T(1) / T(384)) * t71 * t42 * (t79 * t42 * c + T(2) * t42 * t80 * b - T(8) * t42 * t66) + (T(7) / T(384)) * t67 * tau_lo * t42 * t80 + (T(1) / T(384)) * t62 * t43 * t74 + (T(7) / T(128)) * t76 * t3 * t58 * t42 - (T(7) / T(384)) * delta_tau * t41 * t42 * t75 - (T(35) / T(384)) * t59 * t40 * t42 * t78 - (T(7) / T(128)) * t63 * t4 * t79 * t42;
-    const T t81 = T(7) * t67 * tau_lo + T(21) * t63 * t4 + T(35) * t53 * t54 + T(35) * t59 * t40 + T(21) * t3 * t58 + t62 + T(7) * delta_tau * t41 + t71;
-    G_E = -(T(1) / T(384)) * t42 * (T(42) * t67 * tau_lo * t42 * t66 + T(7) * t71 * t70 * t42 + T(48) * t81 * t72 - T(105) * t55 * t53 * t54 * t42 - T(48) * t62 * t73 - T(140) * t59 * t40 * t42 * t57 - T(42) * t3 * t58 * t42 * t52 - T(7) * delta_tau * t41 * t51 * t43 - T(105) * t63 * t4 * t42 * t61);
+    const T t74 = t48 * t48;
+    const T t75 = T(48) * b * t74 + T(7) * a * t52 * t44 + T(48) * a_minus_b * t73;
+    const T t76 = T(48) * t73 - T(48) * t74 - t44 * b * t75;
+    const T t77 = T(8) * t52 * t44 - T(2) * t43 * t76 * b - t44 * t75 * c;
+    const T t78 = t43 * t76 * c + T(2) * t77 * t43 * b + T(8) * t43 * t53;
+    const T t79 = t77 * t43 * c - T(2) * t43 * b * t78 - T(8) * t56 * t43;
+    const T t80 = T(2) * t43 * b * t79 + t43 * c * t78 - T(8) * t43 * t58;
+    const T t81 = T(8) * t43 * t62 + t43 * t79 * c - T(2) * t80 * t43 * b;
+    G_ap = (T(35) / T(384)) * t54 * t55 * t43 * t78 + (T(1) / T(384)) * t72 * t43 * (t80 * t43 * c + T(2) * t43 * t81 * b - T(8) * t43 * t67) + (T(7) / T(384)) * t68 * tau_lo * t43 * t81 + (T(1) / T(384)) * t63 * t44 * t75 + (T(7) / T(128)) * t77 * t3 * t59 * t43 - (T(7) / T(384)) * delta_tau * t42 * t43 * t76 - (T(35) / T(384)) * t60 * t41 * t43 * t79 - (T(7) / T(128)) * t64 * t4 * t80 * t43;
+    const T t82 = T(7) * t68 * tau_lo + T(21) * t64 * t4 + T(35) * t54 * t55 + T(35) * t60 * t41 + T(21) * t3 * t59 + t63 + T(7) * delta_tau * t42 + t72;
+    G_E = -(T(1) / T(384)) * t43 * (T(42) * t68 * tau_lo * t43 * t67 + T(7) * t72 * t71 * t43 + T(48) * t82 * t73 - T(105) * t56 * t54 * t55 * t43 - T(48) * t63 * t74 - T(140) * t60 * t41 * t43 * t58 - T(42) * t3 * t59 * t43 * t53 - T(7) * delta_tau * t42 * t52 * t44 - T(105) * t64 * t4 * t43 * t62);
   }
-  const T t82 = T(1) / a;
-  const T t83 = T(1) / ab_ab;
-  const T foot_offset = delta_tau * (delta_tau * ab_ap + tau_lo * ab_ab) * t82 * sigma2 * t83;
+  const T t83 = T(1) / a;
+  const T t84 = T(1) / ab_ab;
+  const T foot_offset = delta_tau * (delta_tau * ab_ap + tau_lo * ab_ab) * t83 * sigma2 * t84;
   const T foot_h0 = foot0 + foot_offset * ab0;
   const T foot_h1 = foot_offset * ab1 + foot1;
   const T foot_h2 = foot_offset * ab2 + foot2;
-  const T t84 = sigma2 * sigma2;
-  const T t85 = t84 * t84;
-  const T g_factor = -T(8) * t85 * length;
-  f = t85 * F * length;
+  const T t85 = sigma2 * sigma2;
+  const T t86 = t85 * t85;
+  const T g_factor = -T(8) * t86 * length;
+  f = t86 * F * length;
   grad[0] = g_factor * (foot_h0 * G_ap - G_E * ab0);
   grad[1] = -g_factor * (G_E * ab1 - foot_h1 * G_ap);
   grad[2] = -g_factor * (G_E * ab2 - foot_h2 * G_ap);
@@ -3630,7 +3634,7 @@ T scalis_segment_cauchy_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 111 +, 306 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 31445 +, 43990 ×, 5084 /, 111 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31445 +, 43989 ×, 5083 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i10_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3686,68 +3690,68 @@ T scalis_segment_cauchy_i10_f(const ScalisSegmentInput<T>& in) {
   const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
   const T q1 = sigma2 * tau_hi * tau_hi + bp_bp;
   const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
-  const T t3 = T(1) / c;
-  const T log_ratio = log(t3 * q1);
   T F;
-  const T t4 = T(4) * D - a * a;
-  const T t5 = -b * a_minus_b;
-  const T t6 = max(T((T(7) / T(10)) * a * min(T(c), T(q1)) - D), T(T(100) * D - a * a));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * D - a * a;
+  const T t4 = -b * a_minus_b;
+  const T t5 = max(T((T(7) / T(10)) * a * min(T(c), T(q1)) - D), T(T(100) * D - a * a));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(10, 10, 9, a, b, a_minus_b, D, M_panels.data());
-    const T t7 = t1 * t1;
-    const T t8 = t7 * t7;
-    const T t9 = t8 * delta_tau;
-    const T t10 = t2 * tau_lo;
-    const T t11 = t10 * t10;
-    const T t12 = t11 * tau_lo;
-    const T t13 = t1 * delta_tau;
-    const T t14 = t13 * t13;
-    const T t15 = t14 * delta_tau;
-    const T t16 = t2 * t2;
-    const T t17 = t16 * tau_lo;
-    const T t18 = t16 * t16;
-    const T t19 = t18 * tau_lo;
-    const T t20 = t7 * delta_tau;
-    F = T(9) * t8 * tau_lo * M_panels[8] + M_panels[9] * t9 + T(36) * t1 * t12 * M_panels[2] + T(36) * t15 * t2 * M_panels[7] + T(126) * t7 * t17 * M_panels[4] + M_panels[0] * t19 + T(84) * M_panels[3] * t13 * t11 + T(9) * delta_tau * t18 * M_panels[1] + T(84) * t14 * M_panels[6] * t10 + T(126) * t20 * t16 * M_panels[5];
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = t1 * t1;
+    const T t7 = t6 * t6;
+    const T t8 = t7 * delta_tau;
+    const T t9 = t2 * tau_lo;
+    const T t10 = t9 * t9;
+    const T t11 = t10 * tau_lo;
+    const T t12 = t1 * delta_tau;
+    const T t13 = t12 * t12;
+    const T t14 = t13 * delta_tau;
+    const T t15 = t2 * t2;
+    const T t16 = t15 * tau_lo;
+    const T t17 = t15 * t15;
+    const T t18 = t17 * tau_lo;
+    const T t19 = t6 * delta_tau;
+    F = T(9) * t7 * tau_lo * M_panels[8] + M_panels[9] * t8 + T(36) * t1 * t11 * M_panels[2] + T(36) * t14 * t2 * M_panels[7] + T(126) * t6 * t16 * M_panels[4] + M_panels[0] * t18 + T(84) * M_panels[3] * t12 * t10 + T(9) * delta_tau * t17 * M_panels[1] + T(84) * t13 * M_panels[6] * t9 + T(126) * t19 * t15 * M_panels[5];
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(10, 10, 9, a, b, a_minus_b, D, M_panels.data());
-    const T t21 = t2 * tau_lo;
-    const T t22 = t21 * t21;
-    const T t23 = t22 * tau_lo;
-    const T t24 = t2 * t2;
-    const T t25 = t24 * t24;
-    const T t26 = t1 * t1;
-    const T t27 = t26 * delta_tau;
-    const T t28 = t1 * delta_tau;
-    const T t29 = t28 * t28;
-    const T t30 = t29 * delta_tau;
-    const T t31 = t26 * t26;
-    const T t32 = t31 * delta_tau;
+    const T t20 = t2 * tau_lo;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * tau_lo;
+    const T t23 = t2 * t2;
+    const T t24 = t23 * t23;
+    const T t25 = t1 * t1;
+    const T t26 = t25 * delta_tau;
+    const T t27 = t1 * delta_tau;
+    const T t28 = t27 * t27;
+    const T t29 = t28 * delta_tau;
+    const T t30 = t25 * t25;
+    const T t31 = t30 * delta_tau;
+    const T t32 = t23 * tau_lo;
     const T t33 = t24 * tau_lo;
-    const T t34 = t25 * tau_lo;
-    F = T(36) * t1 * t23 * M_panels[2] + T(9) * delta_tau * t25 * M_panels[1] + T(126) * t27 * t24 * M_panels[5] + T(36) * t30 * t2 * M_panels[7] + t32 * M_panels[9] + T(84) * t28 * t22 * M_panels[3] + T(9) * t31 * tau_lo * M_panels[8] + T(126) * t26 * t33 * M_panels[4] + T(84) * t29 * t21 * M_panels[6] + t34 * M_panels[0];
+    F = T(36) * t1 * t22 * M_panels[2] + T(9) * delta_tau * t24 * M_panels[1] + T(126) * t26 * t23 * M_panels[5] + T(36) * t29 * t2 * M_panels[7] + t31 * M_panels[9] + T(84) * t27 * t21 * M_panels[3] + T(9) * t30 * tau_lo * M_panels[8] + T(126) * t25 * t32 * M_panels[4] + T(84) * t28 * t20 * M_panels[6] + t33 * M_panels[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t35 = sqrt(D);
-    const T t36 = T(1) / t35;
-    const T J2 = t36 * atan2(t35, c_minus_b);
+    const T t34 = sqrt(D);
+    const T t35 = T(1) / t34;
+    const T J2 = t35 * atan2(t34, c_minus_b);
+    const T t36 = T(1) / c;
+    const T log_ratio = log(t36 * q1);
     const T t37 = t1 * delta_tau;
     const T t38 = t37 * t37;
     const T t39 = t38 * delta_tau;
     const T t40 = T(1) / a;
     const T t41 = T(1) / D;
     const T t42 = T(1) / q1;
-    const T t43 = t42 * a_minus_b + a * J2 + t3 * b;
-    const T t44 = t3 * t3;
+    const T t43 = t42 * a_minus_b + a * J2 + t36 * b;
+    const T t44 = t36 * t36;
     const T t45 = t42 * t42;
     const T t46 = T(2) * t44 * b + T(2) * t45 * a_minus_b + T(3) * t41 * a * t43;
     const T t47 = T(2) * t44 + t41 * t46 * b - T(2) * t45;
     const T t48 = T(4) * t41 * t43 + T(2) * t40 * t47 * b - c * t41 * t46;
-    const T t49 = t44 * t3;
+    const T t49 = t44 * t36;
     const T t50 = t45 * t42;
     const T t51 = T(8) * t49 * b + T(5) * t41 * a * t46 + T(8) * t50 * a_minus_b;
     const T t52 = T(8) * t49 + t41 * t51 * b - T(8) * t50;
@@ -3763,7 +3767,7 @@ T scalis_segment_cauchy_i10_f(const ScalisSegmentInput<T>& in) {
     const T t62 = T(8) * t53 * t40 + T(2) * t40 * b * t61 - c * t40 * t60;
     const T t63 = T(2) * t40 * t62 * b + T(8) * t54 * t40 - c * t40 * t61;
     const T t64 = T(8) * t40 * t55 + T(2) * t40 * t63 * b - c * t40 * t62;
-    const T t65 = t42 - t3 - t41 * b * t43;
+    const T t65 = t42 - t36 - t41 * b * t43;
     const T t66 = T(4) * t40 * t65 + c * t40 * t47 - T(2) * t48 * t40 * b;
     const T t67 = c * t54 * t40 + T(6) * t66 * t40 - T(2) * t40 * t55 * b;
     const T t68 = T(2) * t40 * t64 * b - c * t40 * t63 - T(8) * t40 * t67;
@@ -4001,7 +4005,7 @@ std::array<T, 3> scalis_segment_cauchy_i10_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 169 +, 498 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 47863 +, 61989 ×, 4243 /, 93 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 47863 +, 61988 ×, 4243 /, 93 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4068,146 +4072,147 @@ T scalis_segment_cauchy_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   const T a_minus_b = delta_tau * sigma2 * tau_hi - ab_bp;
   const T q1 = bp_bp + sigma2 * tau_hi * tau_hi;
   const T c_minus_b = tau_lo * sigma2 * tau_hi + ap_bp;
-  const T t5 = T(1) / c;
-  const T log_ratio = log(q1 * t5);
   T F;
   T G_ap;
   T G_E;
-  const T t6 = T(4) * D - a * a;
-  const T t7 = -a_minus_b * b;
-  const T t8 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
-  if (t6 >= T(0)) {
+  const T t5 = T(4) * D - a * a;
+  const T t6 = -a_minus_b * b;
+  const T t7 = max(T((T(7) / T(10)) * min(T(c), T(q1)) * a - D), T(T(100) * D - a * a));
+  if (t5 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 22> M_panels;
     segment_moments_gauss_panels<T>(10, 12, 10, a, b, a_minus_b, D, M_panels.data());
-    const T t9 = t3 * delta_tau;
-    const T t10 = t9 * t9;
-    const T t11 = t10 * delta_tau;
-    const T t12 = t4 * tau_lo;
-    const T t13 = t12 * t12;
-    const T t14 = t13 * tau_lo;
-    const T t15 = t4 * t4;
-    const T t16 = t15 * t15;
-    const T t17 = t16 * tau_lo;
-    const T t18 = t3 * t3;
-    const T t19 = t15 * tau_lo;
-    const T t20 = t18 * t18;
-    const T t21 = t20 * delta_tau;
-    const T t22 = t18 * delta_tau;
-    F = T(36) * M_panels[7] * t11 * t4 + T(36) * t3 * t14 * M_panels[2] + T(84) * t9 * t13 * M_panels[3] + t17 * M_panels[0] + T(84) * M_panels[6] * t10 * t12 + T(9) * M_panels[1] * delta_tau * t16 + T(126) * M_panels[4] * t18 * t19 + t21 * M_panels[9] + T(9) * t20 * tau_lo * M_panels[8] + T(126) * t22 * M_panels[5] * t15;
-    const T t23 = T(9) * delta_tau * t16 * M_panels[12] + T(9) * M_panels[19] * t20 * tau_lo + T(126) * M_panels[16] * t22 * t15 + T(84) * M_panels[17] * t10 * t12 + T(36) * M_panels[13] * t3 * t14 + T(84) * t9 * M_panels[14] * t13 + t17 * M_panels[11] + T(126) * t18 * t19 * M_panels[15] + M_panels[20] * t21 + T(36) * t11 * t4 * M_panels[18];
-    G_ap = t23;
-    const T t24 = T(1) / a;
-    G_E = T(9) * M_panels[13] * delta_tau * t16 + T(84) * t9 * t13 * M_panels[15] + T(36) * M_panels[19] * t11 * t4 + t21 * M_panels[21] + T(9) * M_panels[20] * t20 * tau_lo + t17 * M_panels[12] + T(126) * M_panels[16] * t18 * t19 + T(126) * M_panels[17] * t22 * t15 + T(36) * t3 * M_panels[14] * t14 + T(84) * t10 * t12 * M_panels[18] - t24 * t23 * b;
-  } else if (t7 >= T(0) && t8 >= T(0)) {
+    const T t8 = t3 * delta_tau;
+    const T t9 = t8 * t8;
+    const T t10 = t9 * delta_tau;
+    const T t11 = t4 * tau_lo;
+    const T t12 = t11 * t11;
+    const T t13 = t12 * tau_lo;
+    const T t14 = t4 * t4;
+    const T t15 = t14 * t14;
+    const T t16 = t15 * tau_lo;
+    const T t17 = t3 * t3;
+    const T t18 = t14 * tau_lo;
+    const T t19 = t17 * t17;
+    const T t20 = t19 * delta_tau;
+    const T t21 = t17 * delta_tau;
+    F = T(36) * M_panels[7] * t10 * t4 + T(36) * t3 * t13 * M_panels[2] + T(84) * t8 * t12 * M_panels[3] + t16 * M_panels[0] + T(84) * M_panels[6] * t9 * t11 + T(9) * M_panels[1] * delta_tau * t15 + T(126) * M_panels[4] * t17 * t18 + t20 * M_panels[9] + T(9) * t19 * tau_lo * M_panels[8] + T(126) * t21 * M_panels[5] * t14;
+    const T t22 = T(9) * delta_tau * t15 * M_panels[12] + T(9) * M_panels[19] * t19 * tau_lo + T(126) * M_panels[16] * t21 * t14 + T(84) * M_panels[17] * t9 * t11 + T(36) * M_panels[13] * t3 * t13 + T(84) * t8 * M_panels[14] * t12 + t16 * M_panels[11] + T(126) * t17 * t18 * M_panels[15] + M_panels[20] * t20 + T(36) * t10 * t4 * M_panels[18];
+    G_ap = t22;
+    const T t23 = T(1) / a;
+    G_E = T(9) * M_panels[13] * delta_tau * t15 + T(84) * t8 * t12 * M_panels[15] + T(36) * M_panels[19] * t10 * t4 + t20 * M_panels[21] + T(9) * M_panels[20] * t19 * tau_lo + t16 * M_panels[12] + T(126) * M_panels[16] * t17 * t18 + T(126) * M_panels[17] * t21 * t14 + T(36) * t3 * M_panels[14] * t13 + T(84) * t9 * t11 * M_panels[18] - t23 * t22 * b;
+  } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 22> M_panels;
     segment_moments_gauss_panels<T>(10, 12, 10, a, b, a_minus_b, D, M_panels.data());
-    const T t25 = t4 * t4;
-    const T t26 = t25 * t25;
-    const T t27 = t26 * tau_lo;
-    const T t28 = t3 * t3;
-    const T t29 = t28 * delta_tau;
-    const T t30 = t4 * tau_lo;
-    const T t31 = t30 * t30;
-    const T t32 = t31 * tau_lo;
-    const T t33 = t3 * delta_tau;
-    const T t34 = t28 * t28;
-    const T t35 = t33 * t33;
-    const T t36 = t25 * tau_lo;
+    const T t24 = t4 * t4;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * tau_lo;
+    const T t27 = t3 * t3;
+    const T t28 = t27 * delta_tau;
+    const T t29 = t4 * tau_lo;
+    const T t30 = t29 * t29;
+    const T t31 = t30 * tau_lo;
+    const T t32 = t3 * delta_tau;
+    const T t33 = t27 * t27;
+    const T t34 = t32 * t32;
+    const T t35 = t24 * tau_lo;
+    const T t36 = t33 * delta_tau;
     const T t37 = t34 * delta_tau;
-    const T t38 = t35 * delta_tau;
-    F = M_panels[0] * t27 + T(126) * t29 * t25 * M_panels[5] + T(36) * t3 * t32 * M_panels[2] + T(84) * M_panels[3] * t33 * t31 + T(9) * t34 * tau_lo * M_panels[8] + T(84) * t35 * t30 * M_panels[6] + T(126) * M_panels[4] * t28 * t36 + t37 * M_panels[9] + T(36) * M_panels[7] * t38 * t4 + T(9) * M_panels[1] * delta_tau * t26;
-    G_ap = T(36) * M_panels[13] * t3 * t32 + T(9) * M_panels[19] * t34 * tau_lo + T(126) * M_panels[16] * t29 * t25 + M_panels[20] * t37 + T(9) * delta_tau * t26 * M_panels[12] + T(84) * M_panels[17] * t35 * t30 + T(126) * t28 * t36 * M_panels[15] + M_panels[11] * t27 + T(84) * M_panels[14] * t33 * t31 + T(36) * t38 * t4 * M_panels[18];
-    const T t39 = T(1) / a;
-    const T t40 = t5 * t5;
+    F = M_panels[0] * t26 + T(126) * t28 * t24 * M_panels[5] + T(36) * t3 * t31 * M_panels[2] + T(84) * M_panels[3] * t32 * t30 + T(9) * t33 * tau_lo * M_panels[8] + T(84) * t34 * t29 * M_panels[6] + T(126) * M_panels[4] * t27 * t35 + t36 * M_panels[9] + T(36) * M_panels[7] * t37 * t4 + T(9) * M_panels[1] * delta_tau * t25;
+    G_ap = T(36) * M_panels[13] * t3 * t31 + T(9) * M_panels[19] * t33 * tau_lo + T(126) * M_panels[16] * t28 * t24 + M_panels[20] * t36 + T(9) * delta_tau * t25 * M_panels[12] + T(84) * M_panels[17] * t34 * t29 + T(126) * t27 * t35 * M_panels[15] + M_panels[11] * t26 + T(84) * M_panels[14] * t32 * t30 + T(36) * t37 * t4 * M_panels[18];
+    const T t38 = T(1) / a;
+    const T t39 = T(1) / c;
+    const T t40 = t39 * t39;
     const T t41 = t40 * t40;
-    const T t42 = t41 * t5;
+    const T t42 = t41 * t39;
     const T t43 = T(1) / q1;
     const T t44 = t43 * t43;
     const T t45 = t44 * t44;
     const T t46 = t45 * t43;
-    const T t47 = T(126) * t28 * t36 + T(126) * t29 * t25 + t27 + T(36) * t3 * t32 + T(36) * t38 * t4 + T(84) * t35 * t30 + T(9) * t34 * tau_lo + T(84) * t33 * t31 + t37 + T(9) * delta_tau * t26;
-    G_E = (T(1) / T(10)) * t39 * (T(504) * t35 * t30 * M_panels[5] + T(9) * t37 * M_panels[8] + T(504) * M_panels[3] * t28 * t36 + T(9) * M_panels[0] * delta_tau * t26 + t42 * t27 + T(252) * t38 * t4 * M_panels[6] + T(72) * M_panels[1] * t3 * t32 + T(72) * M_panels[7] * t34 * tau_lo + T(252) * t33 * t31 * M_panels[2] + T(630) * M_panels[4] * t29 * t25 - t46 * t47);
+    const T t47 = T(126) * t27 * t35 + T(126) * t28 * t24 + t26 + T(36) * t3 * t31 + T(36) * t37 * t4 + T(84) * t34 * t29 + T(9) * t33 * tau_lo + T(84) * t32 * t30 + t36 + T(9) * delta_tau * t25;
+    G_E = (T(1) / T(10)) * t38 * (T(504) * t34 * t29 * M_panels[5] + T(9) * t36 * M_panels[8] + T(504) * M_panels[3] * t27 * t35 + T(9) * M_panels[0] * delta_tau * t25 + t42 * t26 + T(252) * t37 * t4 * M_panels[6] + T(72) * M_panels[1] * t3 * t31 + T(72) * M_panels[7] * t33 * tau_lo + T(252) * t32 * t30 * M_panels[2] + T(630) * M_panels[4] * t28 * t24 - t46 * t47);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t48 = sqrt(D);
     const T t49 = T(1) / t48;
     const T J2 = t49 * atan2(t48, c_minus_b);
-    const T t50 = t4 * tau_lo;
-    const T t51 = t50 * t50;
-    const T t52 = t51 * tau_lo;
-    const T t53 = T(1) / a;
-    const T t54 = T(1) / D;
-    const T t55 = t5 * t5;
-    const T t56 = t55 * t5;
-    const T t57 = T(1) / q1;
-    const T t58 = t57 * t57;
-    const T t59 = t58 * t57;
-    const T t60 = t57 * a_minus_b + J2 * a + t5 * b;
-    const T t61 = T(3) * t54 * a * t60 + T(2) * t55 * b + T(2) * t58 * a_minus_b;
-    const T t62 = T(8) * t56 * b + T(8) * t59 * a_minus_b + T(5) * t54 * t61 * a;
-    const T t63 = t58 * t58;
-    const T t64 = t55 * t55;
-    const T t65 = T(48) * t63 * a_minus_b + T(48) * t64 * b + T(7) * t54 * a * t62;
-    const T t66 = T(48) * t63 - t65 * t54 * b - T(48) * t64;
-    const T t67 = T(8) * t54 * t62 - T(2) * t53 * t66 * b - c * t65 * t54;
-    const T t68 = t3 * t3;
-    const T t69 = t68 * t68;
-    const T t70 = t54 * t61 * b + T(2) * t55 - T(2) * t58;
-    const T t71 = c * t54 * t61 - T(4) * t54 * t60 - T(2) * t53 * b * t70;
-    const T t72 = T(8) * t56 + t54 * t62 * b - T(8) * t59;
-    const T t73 = T(6) * t54 * t61 + T(2) * t72 * t53 * b - c * t54 * t62;
-    const T t74 = T(6) * t53 * t70 + T(2) * t73 * t53 * b - c * t72 * t53;
-    const T t75 = T(6) * t53 * t71 + c * t73 * t53 - T(2) * t74 * t53 * b;
-    const T t76 = T(8) * t72 * t53 + c * t53 * t66 + T(2) * t53 * b * t67;
-    const T t77 = T(8) * t73 * t53 + T(2) * t76 * t53 * b - c * t53 * t67;
-    const T t78 = T(2) * t53 * t77 * b + T(8) * t74 * t53 - t76 * c * t53;
-    const T t79 = T(8) * t75 * t53 + c * t53 * t77 - T(2) * t53 * b * t78;
-    const T t80 = t54 * t60 * b + t5 - t57;
-    const T t81 = T(2) * t53 * t71 * b + c * t53 * t70 - T(4) * t53 * t80;
-    const T t82 = c * t74 * t53 + T(6) * t81 * t53 + T(2) * t75 * t53 * b;
-    const T t83 = T(2) * t79 * t53 * b + T(8) * t82 * t53 + c * t53 * t78;
-    const T t84 = T(2) * J2 + T(2) * t53 * t80 * b - c * t54 * t60;
-    const T t85 = T(2) * t81 * t53 * b - T(4) * t53 * t84 - c * t53 * t71;
-    const T t86 = T(2) * t82 * t53 * b + T(6) * t53 * t85 - t75 * c * t53;
-    const T t87 = c * t79 * t53 - T(2) * t53 * t83 * b - T(8) * t53 * t86;
-    const T t88 = t69 * delta_tau;
-    const T t89 = t3 * delta_tau;
-    const T t90 = t4 * t4;
-    const T t91 = t90 * tau_lo;
-    const T t92 = t90 * t90;
-    const T t93 = t92 * tau_lo;
-    const T t94 = t68 * delta_tau;
-    const T t95 = t89 * t89;
-    const T t96 = t95 * delta_tau;
-    F = (T(3) / T(32)) * t3 * t52 * t53 * t67 + (T(3) / T(128)) * t69 * t87 * tau_lo * t53 + (T(1) / T(384)) * (c * t53 * t83 + T(8) * t53 * (t82 * c * t53 - T(6) * t53 * (T(2) * t53 * t85 * b - T(4) * t53 * ((T(2) * J2 * b + log_ratio) * t53 + T(2) * t53 * b * t84 - c * t53 * t80) - c * t81 * t53) - T(2) * t53 * t86 * b) + T(2) * t87 * t53 * b) * t88 * t53 + (T(7) / T(32)) * t76 * t89 * t51 * t53 + (T(21) / T(64)) * t68 * t91 * t53 * t77 + (T(1) / T(384)) * t65 * t54 * t93 + (T(21) / T(64)) * t94 * t90 * t53 * t78 - (T(3) / T(32)) * t96 * t4 * t53 * t83 - (T(3) / T(128)) * delta_tau * t92 * t53 * t66 - (T(7) / T(32)) * t79 * t95 * t50 * t53;
-    const T t97 = t63 * t57;
-    const T t98 = t64 * t5;
-    const T t99 = T(128) * t97 * a_minus_b + T(3) * t65 * t54 * a + T(128) * t98 * b;
-    const T t100 = T(128) * t97 - T(128) * t98 - t99 * t54 * b;
-    const T t101 = T(10) * t65 * t54 - T(3) * c * t99 * t54 - T(6) * t53 * b * t100;
-    const T t102 = T(10) * t53 * t66 - T(2) * t53 * t101 * b - T(3) * c * t53 * t100;
-    const T t103 = c * t53 * t101 + T(2) * t53 * t102 * b - T(10) * t53 * t67;
-    const T t104 = T(2) * t103 * t53 * b - T(10) * t76 * t53 - c * t53 * t102;
-    const T t105 = t103 * c * t53 + T(10) * t53 * t77 - T(2) * t53 * t104 * b;
-    const T t106 = T(10) * t53 * t78 + T(2) * t53 * b * t105 + c * t53 * t104;
-    const T t107 = c * t53 * t105 + T(10) * t79 * t53 - T(2) * t53 * b * t106;
-    G_ap = (T(3) / T(320)) * t3 * t52 * t53 * t101 + (T(7) / T(320)) * t95 * t50 * t53 * t105 + (T(1) / T(1280)) * t99 * t54 * t93 + (T(3) / T(320)) * t96 * t4 * t53 * t106 - (T(3) / T(1280)) * t107 * t69 * tau_lo * t53 - (T(7) / T(320)) * t89 * t51 * t53 * t102 - (T(9) / T(1280)) * delta_tau * t92 * t53 * t100 - (T(21) / T(640)) * t103 * t68 * t91 * t53 - (T(21) / T(640)) * t94 * t90 * t53 * t104 - (T(1) / T(3840)) * (c * t53 * t106 + T(2) * t107 * t53 * b + T(10) * t53 * t83) * t88 * t53;
-    const T t108 = T(126) * t68 * t91 + T(126) * t94 * t90 + t93 + T(36) * t3 * t52 + T(36) * t96 * t4 + T(84) * t95 * t50 + T(9) * t69 * tau_lo + T(84) * t89 * t51 + t88 + T(9) * delta_tau * t92;
-    G_E = (T(1) / T(1280)) * (T(3) * t88 * t87 * t53 + T(168) * t76 * t68 * t91 * t53 + T(84) * t89 * t51 * t53 * t67 + T(210) * t94 * t90 * t53 * t77 + T(128) * t98 * t93 + T(168) * t95 * t50 * t53 * t78 + T(3) * t65 * t54 * delta_tau * t92 - T(24) * t3 * t52 * t53 * t66 - T(128) * t97 * t108 - T(24) * t69 * tau_lo * t53 * t83 - T(84) * t79 * t96 * t4 * t53) * t53;
+    const T t50 = T(1) / c;
+    const T log_ratio = log(q1 * t50);
+    const T t51 = t4 * tau_lo;
+    const T t52 = t51 * t51;
+    const T t53 = t52 * tau_lo;
+    const T t54 = T(1) / a;
+    const T t55 = T(1) / D;
+    const T t56 = t50 * t50;
+    const T t57 = t56 * t50;
+    const T t58 = T(1) / q1;
+    const T t59 = t58 * t58;
+    const T t60 = t59 * t58;
+    const T t61 = t58 * a_minus_b + J2 * a + t50 * b;
+    const T t62 = T(3) * t55 * a * t61 + T(2) * t56 * b + T(2) * t59 * a_minus_b;
+    const T t63 = T(8) * t57 * b + T(8) * t60 * a_minus_b + T(5) * t55 * t62 * a;
+    const T t64 = t59 * t59;
+    const T t65 = t56 * t56;
+    const T t66 = T(48) * t64 * a_minus_b + T(48) * t65 * b + T(7) * t55 * a * t63;
+    const T t67 = T(48) * t64 - t66 * t55 * b - T(48) * t65;
+    const T t68 = T(8) * t55 * t63 - T(2) * t54 * t67 * b - c * t66 * t55;
+    const T t69 = t3 * t3;
+    const T t70 = t69 * t69;
+    const T t71 = t55 * t62 * b + T(2) * t56 - T(2) * t59;
+    const T t72 = c * t55 * t62 - T(4) * t55 * t61 - T(2) * t54 * b * t71;
+    const T t73 = T(8) * t57 + t55 * t63 * b - T(8) * t60;
+    const T t74 = T(6) * t55 * t62 + T(2) * t73 * t54 * b - c * t55 * t63;
+    const T t75 = T(6) * t54 * t71 + T(2) * t74 * t54 * b - c * t73 * t54;
+    const T t76 = T(6) * t54 * t72 + c * t74 * t54 - T(2) * t75 * t54 * b;
+    const T t77 = T(8) * t73 * t54 + c * t54 * t67 + T(2) * t54 * b * t68;
+    const T t78 = T(8) * t74 * t54 + T(2) * t77 * t54 * b - c * t54 * t68;
+    const T t79 = T(2) * t54 * t78 * b + T(8) * t75 * t54 - t77 * c * t54;
+    const T t80 = T(8) * t76 * t54 + c * t54 * t78 - T(2) * t54 * b * t79;
+    const T t81 = t55 * t61 * b + t50 - t58;
+    const T t82 = T(2) * t54 * t72 * b + c * t54 * t71 - T(4) * t54 * t81;
+    const T t83 = c * t75 * t54 + T(6) * t82 * t54 + T(2) * t76 * t54 * b;
+    const T t84 = T(2) * t80 * t54 * b + T(8) * t83 * t54 + c * t54 * t79;
+    const T t85 = T(2) * J2 + T(2) * t54 * t81 * b - c * t55 * t61;
+    const T t86 = T(2) * t82 * t54 * b - T(4) * t54 * t85 - c * t54 * t72;
+    const T t87 = T(2) * t83 * t54 * b + T(6) * t54 * t86 - t76 * c * t54;
+    const T t88 = c * t80 * t54 - T(2) * t54 * t84 * b - T(8) * t54 * t87;
+    const T t89 = t70 * delta_tau;
+    const T t90 = t3 * delta_tau;
+    const T t91 = t4 * t4;
+    const T t92 = t91 * tau_lo;
+    const T t93 = t91 * t91;
+    const T t94 = t93 * tau_lo;
+    const T t95 = t69 * delta_tau;
+    const T t96 = t90 * t90;
+    const T t97 = t96 * delta_tau;
+    F = (T(3) / T(32)) * t3 * t53 * t54 * t68 + (T(3) / T(128)) * t70 * t88 * tau_lo * t54 + (T(1) / T(384)) * (c * t54 * t84 + T(8) * t54 * (t83 * c * t54 - T(6) * t54 * (T(2) * t54 * t86 * b - T(4) * t54 * ((T(2) * J2 * b + log_ratio) * t54 + T(2) * t54 * b * t85 - c * t54 * t81) - c * t82 * t54) - T(2) * t54 * t87 * b) + T(2) * t88 * t54 * b) * t89 * t54 + (T(7) / T(32)) * t77 * t90 * t52 * t54 + (T(21) / T(64)) * t69 * t92 * t54 * t78 + (T(1) / T(384)) * t66 * t55 * t94 + (T(21) / T(64)) * t95 * t91 * t54 * t79 - (T(3) / T(32)) * t97 * t4 * t54 * t84 - (T(3) / T(128)) * delta_tau * t93 * t54 * t67 - (T(7) / T(32)) * t80 * t96 * t51 * t54;
+    const T t98 = t64 * t58;
+    const T t99 = t65 * t50;
+    const T t100 = T(128) * t98 * a_minus_b + T(3) * t66 * t55 * a + T(128) * t99 * b;
+    const T t101 = T(128) * t98 - T(128) * t99 - t100 * t55 * b;
+    const T t102 = T(10) * t66 * t55 - T(3) * c * t100 * t55 - T(6) * t54 * b * t101;
+    const T t103 = T(10) * t54 * t67 - T(2) * t54 * t102 * b - T(3) * c * t54 * t101;
+    const T t104 = c * t54 * t102 + T(2) * t54 * t103 * b - T(10) * t54 * t68;
+    const T t105 = T(2) * t104 * t54 * b - T(10) * t77 * t54 - c * t54 * t103;
+    const T t106 = t104 * c * t54 + T(10) * t54 * t78 - T(2) * t54 * t105 * b;
+    const T t107 = T(10) * t54 * t79 + T(2) * t54 * b * t106 + c * t54 * t105;
+    const T t108 = c * t54 * t106 + T(10) * t80 * t54 - T(2) * t54 * b * t107;
+    G_ap = (T(3) / T(320)) * t3 * t53 * t54 * t102 + (T(7) / T(320)) * t96 * t51 * t54 * t106 + (T(1) / T(1280)) * t100 * t55 * t94 + (T(3) / T(320)) * t97 * t4 * t54 * t107 - (T(3) / T(1280)) * t108 * t70 * tau_lo * t54 - (T(7) / T(320)) * t90 * t52 * t54 * t103 - (T(9) / T(1280)) * delta_tau * t93 * t54 * t101 - (T(21) / T(640)) * t104 * t69 * t92 * t54 - (T(21) / T(640)) * t95 * t91 * t54 * t105 - (T(1) / T(3840)) * (c * t54 * t107 + T(2) * t108 * t54 * b + T(10) * t54 * t84) * t89 * t54;
+    const T t109 = T(126) * t69 * t92 + T(126) * t95 * t91 + t94 + T(36) * t3 * t53 + T(36) * t97 * t4 + T(84) * t96 * t51 + T(9) * t70 * tau_lo + T(84) * t90 * t52 + t89 + T(9) * delta_tau * t93;
+    G_E = (T(1) / T(1280)) * (T(3) * t89 * t88 * t54 + T(168) * t77 * t69 * t92 * t54 + T(84) * t90 * t52 * t54 * t68 + T(210) * t95 * t91 * t54 * t78 + T(128) * t99 * t94 + T(168) * t96 * t51 * t54 * t79 + T(3) * t66 * t55 * delta_tau * t93 - T(24) * t3 * t53 * t54 * t67 - T(128) * t98 * t109 - T(24) * t70 * tau_lo * t54 * t84 - T(84) * t80 * t97 * t4 * t54) * t54;
   }
-  const T t109 = T(1) / ab_ab;
-  const T t110 = T(1) / a;
-  const T foot_offset = t109 * delta_tau * t110 * (ab_ab * tau_lo + ab_ap * delta_tau) * sigma2;
+  const T t110 = T(1) / ab_ab;
+  const T t111 = T(1) / a;
+  const T foot_offset = t110 * delta_tau * t111 * (ab_ab * tau_lo + ab_ap * delta_tau) * sigma2;
   const T foot_h0 = foot_offset * ab0 + foot0;
   const T foot_h1 = foot_offset * ab1 + foot1;
   const T foot_h2 = foot_offset * ab2 + foot2;
-  const T t111 = sigma2 * sigma2;
-  const T t112 = t111 * t111;
-  const T t113 = t112 * sigma2;
-  const T g_factor = -T(10) * length * t113;
-  f = length * t113 * F;
+  const T t112 = sigma2 * sigma2;
+  const T t113 = t112 * t112;
+  const T t114 = t113 * sigma2;
+  const T g_factor = -T(10) * length * t114;
+  f = length * t114 * F;
   grad[0] = (G_ap * foot_h0 - ab0 * G_E) * g_factor;
   grad[1] = (G_ap * foot_h1 - ab1 * G_E) * g_factor;
   grad[2] = g_factor * (G_ap * foot_h2 - ab2 * G_E);

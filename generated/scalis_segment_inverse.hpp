@@ -25,7 +25,7 @@ namespace skelconv::generated {
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 35 +, 48 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 70045 +, 89386 ×, 25294 /, 541 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 54175 +, 68226 ×, 20003 /, 541 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -69,7 +69,6 @@ T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
   const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T log_ratio = log(bp_bp / ap_ap);
   T F;
   const T t1 = T(4) * cross_cross - ab_ab * ab_ab;
   const T t2 = -ab_ap * a_minus_b;
@@ -88,6 +87,7 @@ T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = sqrt(cross_cross);
     const T J2 = atan2(t4, ap_bp) / t4;
+    const T log_ratio = log(bp_bp / ap_ap);
     F = (T(1) / T(2)) * delta_tau * (log_ratio + T(2) * ab_ap * J2) / ab_ab + tau_lo * J2;
   }
   f = length * in.sigma * in.sigma * F;
@@ -97,7 +97,7 @@ T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 47 +, 75 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 56604 +, 77035 ×, 12654 /, 272 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43604 +, 58835 ×, 10054 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -199,7 +199,7 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 49 +, 84 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 56605 +, 77040 ×, 12654 /, 272 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 43605 +, 58839 ×, 10054 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -254,50 +254,51 @@ T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(2, 4, 2, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     F = delta_tau * M_panels[1] + tau_lo * M_panels[0];
-    const T t7 = tau_lo * M_panels[3] + delta_tau * M_panels[4];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = M_panels[5] * delta_tau + tau_lo * M_panels[4] - t8 * t7 * ab_ap;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = tau_lo * M_panels[3] + delta_tau * M_panels[4];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = M_panels[5] * delta_tau + tau_lo * M_panels[4] - t7 * t6 * ab_ap;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(2, 4, 2, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
     F = tau_lo * M_panels[0] + delta_tau * M_panels[1];
     G_ap = tau_lo * M_panels[3] + delta_tau * M_panels[4];
-    const T t9 = T(1) / ab_ab;
+    const T t8 = T(1) / ab_ab;
+    const T t9 = T(1) / ap_ap;
     const T t10 = tau_lo + delta_tau;
     const T t11 = T(1) / bp_bp;
-    G_E = (T(1) / T(2)) * t9 * (delta_tau * M_panels[0] + tau_lo * t3 - t10 * t11);
+    G_E = (T(1) / T(2)) * t8 * (delta_tau * M_panels[0] + tau_lo * t9 - t10 * t11);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t12 = sqrt(cross_cross);
     const T t13 = T(1) / t12;
     const T J2 = atan2(t12, ap_bp) * t13;
-    const T t14 = T(1) / ab_ab;
-    F = (T(1) / T(2)) * delta_tau * t14 * (log_ratio + T(2) * ab_ap * J2) + tau_lo * J2;
-    const T t15 = T(1) / cross_cross;
-    const T t16 = T(1) / bp_bp;
-    const T t17 = ab_ap * t3 + t16 * a_minus_b + ab_ab * J2;
-    G_ap = (T(1) / T(2)) * tau_lo * t15 * t17 + (T(1) / T(2)) * (t3 + t15 * ab_ap * t17 - t16) * delta_tau * t14;
-    const T t18 = tau_lo + delta_tau;
-    G_E = -(T(1) / T(2)) * t14 * (t18 * t16 - delta_tau * J2 - tau_lo * t3);
+    const T t14 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t14);
+    const T t15 = T(1) / ab_ab;
+    F = (T(1) / T(2)) * delta_tau * t15 * (log_ratio + T(2) * ab_ap * J2) + tau_lo * J2;
+    const T t16 = T(1) / cross_cross;
+    const T t17 = T(1) / bp_bp;
+    const T t18 = ab_ap * t14 + t17 * a_minus_b + ab_ab * J2;
+    G_ap = (T(1) / T(2)) * tau_lo * t16 * t18 + (T(1) / T(2)) * (t14 + t16 * ab_ap * t18 - t17) * delta_tau * t15;
+    const T t19 = tau_lo + delta_tau;
+    G_E = -(T(1) / T(2)) * t15 * (t19 * t17 - delta_tau * J2 - tau_lo * t14);
   }
-  const T t19 = in.sigma * in.sigma;
-  const T g_factor = -T(2) * length * t19;
-  f = F * length * t19;
+  const T t20 = in.sigma * in.sigma;
+  const T g_factor = -T(2) * length * t20;
+  f = F * length * t20;
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
   grad[1] = g_factor * (foot1 * G_ap - ab1 * G_E);
   grad[2] = (G_ap * foot2 - ab2 * G_E) * g_factor;
@@ -307,7 +308,7 @@ T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 39 +, 66 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53955 +, 81221 ×, 16882 /, 7544 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41670 +, 61916 ×, 13372 /, 5789 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -405,7 +406,7 @@ T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 53 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 53865 +, 83104 ×, 10116 /, 4520 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 41505 +, 63534 ×, 8056 /, 3490 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -525,7 +526,7 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 58 +, 130 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 53868 +, 83117 ×, 10118 /, 4520 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41508 +, 63547 ×, 8058 /, 3490 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -665,7 +666,7 @@ T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 45 +, 83 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 45837 +, 60884 ×, 12651 /, 272 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 35437 +, 46583 ×, 10050 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -709,41 +710,41 @@ T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
   const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T F;
-  const T t2 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t3 = -a_minus_b * ab_ap;
-  const T t4 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t2 >= T(0)) {
+  const T t1 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t2 = -a_minus_b * ab_ap;
+  const T t3 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t1 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 4> M_panels;
     segment_moments_gauss_panels<T>(4, 4, 3, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t5 = delta_tau * delta_tau;
-    const T t6 = t5 * delta_tau;
-    const T t7 = tau_lo * tau_lo;
-    const T t8 = t7 * tau_lo;
-    F = t6 * M_panels[3] + t8 * M_panels[0] + T(3) * tau_lo * t5 * M_panels[2] + T(3) * t7 * delta_tau * M_panels[1];
-  } else if (t3 >= T(0) && t4 >= T(0)) {
+    const T t4 = delta_tau * delta_tau;
+    const T t5 = t4 * delta_tau;
+    const T t6 = tau_lo * tau_lo;
+    const T t7 = t6 * tau_lo;
+    F = t5 * M_panels[3] + t7 * M_panels[0] + T(3) * tau_lo * t4 * M_panels[2] + T(3) * t6 * delta_tau * M_panels[1];
+  } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 4> M_panels;
     segment_moments_gauss_panels<T>(4, 4, 3, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t9 = delta_tau * delta_tau;
-    const T t10 = tau_lo * tau_lo;
-    const T t11 = t9 * delta_tau;
-    const T t12 = t10 * tau_lo;
-    F = T(3) * tau_lo * t9 * M_panels[2] + T(3) * t10 * delta_tau * M_panels[1] + t11 * M_panels[3] + t12 * M_panels[0];
+    const T t8 = delta_tau * delta_tau;
+    const T t9 = tau_lo * tau_lo;
+    const T t10 = t8 * delta_tau;
+    const T t11 = t9 * tau_lo;
+    F = T(3) * tau_lo * t8 * M_panels[2] + T(3) * t9 * delta_tau * M_panels[1] + t10 * M_panels[3] + t11 * M_panels[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t13 = sqrt(cross_cross);
-    const T t14 = T(1) / t13;
-    const T J2 = atan2(t13, ap_bp) * t14;
+    const T t12 = sqrt(cross_cross);
+    const T t13 = T(1) / t12;
+    const T J2 = atan2(t12, ap_bp) * t13;
+    const T t14 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t14);
     const T t15 = tau_lo * tau_lo;
     const T t16 = T(1) / ab_ab;
     const T t17 = T(1) / bp_bp;
-    const T t18 = ab_ab * J2 + a_minus_b * t17 + ab_ap * t1;
+    const T t18 = ab_ab * J2 + a_minus_b * t17 + ab_ap * t14;
     const T t19 = T(1) / cross_cross;
-    const T t20 = t1 + t18 * ab_ap * t19 - t17;
+    const T t20 = t14 + t18 * ab_ap * t19 - t17;
     const T t21 = t15 * tau_lo;
     const T t22 = T(2) * J2 + T(2) * t16 * ab_ap * t20 - t18 * t19 * ap_ap;
     const T t23 = delta_tau * delta_tau;
@@ -759,7 +760,7 @@ T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
 /// its gradient ∇_P f, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 63 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 52030 +, 69219 ×, 8424 /, 182 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40130 +, 53069 ×, 6724 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -883,7 +884,7 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 69 +, 162 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 52033 +, 69230 ×, 8424 /, 182 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 40133 +, 53079 ×, 6724 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -938,72 +939,73 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   const T ap_bp = ap1 * bp1 + ap0 * bp0 + bp2 * ap2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(t3 * bp_bp);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t5 = -a_minus_b * ab_ap;
-  const T t6 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t4 = -a_minus_b * ab_ap;
+  const T t5 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(4, 6, 4, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t7 = delta_tau * delta_tau;
-    const T t8 = tau_lo * tau_lo;
-    const T t9 = t8 * tau_lo;
-    const T t10 = t7 * delta_tau;
-    F = T(3) * t7 * tau_lo * M_panels[2] + t9 * M_panels[0] + t10 * M_panels[3] + T(3) * M_panels[1] * delta_tau * t8;
-    const T t11 = T(3) * t7 * tau_lo * M_panels[7] + M_panels[8] * t10 + T(3) * delta_tau * t8 * M_panels[6] + M_panels[5] * t9;
-    G_ap = t11;
-    const T t12 = T(1) / ab_ab;
-    G_E = T(3) * delta_tau * t8 * M_panels[7] + t10 * M_panels[9] + T(3) * M_panels[8] * t7 * tau_lo + t9 * M_panels[6] - t11 * t12 * ab_ap;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = delta_tau * delta_tau;
+    const T t7 = tau_lo * tau_lo;
+    const T t8 = t7 * tau_lo;
+    const T t9 = t6 * delta_tau;
+    F = T(3) * t6 * tau_lo * M_panels[2] + t8 * M_panels[0] + t9 * M_panels[3] + T(3) * M_panels[1] * delta_tau * t7;
+    const T t10 = T(3) * t6 * tau_lo * M_panels[7] + M_panels[8] * t9 + T(3) * delta_tau * t7 * M_panels[6] + M_panels[5] * t8;
+    G_ap = t10;
+    const T t11 = T(1) / ab_ab;
+    G_E = T(3) * delta_tau * t7 * M_panels[7] + t9 * M_panels[9] + T(3) * M_panels[8] * t6 * tau_lo + t8 * M_panels[6] - t10 * t11 * ab_ap;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(4, 6, 4, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t13 = tau_lo * tau_lo;
-    const T t14 = t13 * tau_lo;
-    const T t15 = delta_tau * delta_tau;
-    const T t16 = t15 * delta_tau;
-    F = t14 * M_panels[0] + t16 * M_panels[3] + T(3) * delta_tau * M_panels[1] * t13 + T(3) * t15 * tau_lo * M_panels[2];
-    G_ap = t14 * M_panels[5] + t16 * M_panels[8] + T(3) * delta_tau * t13 * M_panels[6] + T(3) * M_panels[7] * t15 * tau_lo;
-    const T t17 = T(1) / ab_ab;
-    const T t18 = t3 * t3;
-    const T t19 = T(3) * t15 * tau_lo + t14 + t16 + T(3) * delta_tau * t13;
+    const T t12 = tau_lo * tau_lo;
+    const T t13 = t12 * tau_lo;
+    const T t14 = delta_tau * delta_tau;
+    const T t15 = t14 * delta_tau;
+    F = t13 * M_panels[0] + t15 * M_panels[3] + T(3) * delta_tau * M_panels[1] * t12 + T(3) * t14 * tau_lo * M_panels[2];
+    G_ap = t13 * M_panels[5] + t15 * M_panels[8] + T(3) * delta_tau * t12 * M_panels[6] + T(3) * M_panels[7] * t14 * tau_lo;
+    const T t16 = T(1) / ab_ab;
+    const T t17 = T(1) / ap_ap;
+    const T t18 = t17 * t17;
+    const T t19 = T(3) * t14 * tau_lo + t13 + t15 + T(3) * delta_tau * t12;
     const T t20 = T(1) / bp_bp;
     const T t21 = t20 * t20;
-    G_E = (T(1) / T(4)) * t17 * (t18 * t14 + T(3) * delta_tau * t13 * M_panels[0] + T(6) * t15 * M_panels[1] * tau_lo + T(3) * t16 * M_panels[2] - t19 * t21);
+    G_E = (T(1) / T(4)) * t16 * (t18 * t13 + T(3) * delta_tau * t12 * M_panels[0] + T(6) * t14 * M_panels[1] * tau_lo + T(3) * t15 * M_panels[2] - t19 * t21);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t22 = sqrt(cross_cross);
     const T t23 = T(1) / t22;
     const T J2 = t23 * atan2(t22, ap_bp);
-    const T t24 = delta_tau * delta_tau;
-    const T t25 = T(1) / ab_ab;
-    const T t26 = T(1) / bp_bp;
-    const T t27 = J2 * ab_ab + t3 * ab_ap + a_minus_b * t26;
-    const T t28 = T(1) / cross_cross;
-    const T t29 = t27 * t28 * ab_ap + t3 - t26;
-    const T t30 = T(2) * J2 + T(2) * t25 * t29 * ab_ap - ap_ap * t27 * t28;
-    const T t31 = tau_lo * tau_lo;
-    const T t32 = t31 * tau_lo;
-    const T t33 = t24 * delta_tau;
-    F = (T(3) / T(2)) * t24 * tau_lo * t30 * t25 + (T(1) / T(2)) * t32 * t27 * t28 + (T(3) / T(2)) * delta_tau * t31 * t25 * t29 - (T(1) / T(2)) * t33 * t25 * (ap_ap * t25 * t29 - T(2) * t30 * t25 * ab_ap - t25 * (T(2) * J2 * ab_ap + log_ratio));
-    const T t34 = t3 * t3;
-    const T t35 = t26 * t26;
-    const T t36 = T(3) * t27 * ab_ab * t28 + T(2) * a_minus_b * t35 + T(2) * t34 * ab_ap;
-    const T t37 = T(2) * t34 + t28 * ab_ap * t36 - T(2) * t35;
-    const T t38 = ap_ap * t28 * t36 - T(4) * t27 * t28 - T(2) * t37 * t25 * ab_ap;
-    G_ap = (T(1) / T(8)) * (T(4) * t25 * t29 - ap_ap * t37 * t25 - T(2) * t25 * t38 * ab_ap) * t33 * t25 + (T(1) / T(8)) * t32 * t28 * t36 + (T(3) / T(8)) * t37 * delta_tau * t31 * t25 - (T(3) / T(8)) * t24 * tau_lo * t25 * t38;
-    const T t39 = T(3) * t24 * tau_lo + t32 + t33 + T(3) * delta_tau * t31;
-    G_E = (T(1) / T(8)) * t25 * (T(2) * t34 * t32 + T(6) * t24 * tau_lo * t25 * t29 + T(3) * delta_tau * t31 * t27 * t28 + T(3) * t33 * t30 * t25 - T(2) * t39 * t35);
+    const T t24 = T(1) / ap_ap;
+    const T log_ratio = log(t24 * bp_bp);
+    const T t25 = delta_tau * delta_tau;
+    const T t26 = T(1) / ab_ab;
+    const T t27 = T(1) / bp_bp;
+    const T t28 = J2 * ab_ab + t24 * ab_ap + a_minus_b * t27;
+    const T t29 = T(1) / cross_cross;
+    const T t30 = t28 * t29 * ab_ap + t24 - t27;
+    const T t31 = T(2) * J2 + T(2) * t26 * t30 * ab_ap - ap_ap * t28 * t29;
+    const T t32 = tau_lo * tau_lo;
+    const T t33 = t32 * tau_lo;
+    const T t34 = t25 * delta_tau;
+    F = (T(3) / T(2)) * t25 * tau_lo * t31 * t26 + (T(1) / T(2)) * t33 * t28 * t29 + (T(3) / T(2)) * delta_tau * t32 * t26 * t30 - (T(1) / T(2)) * t34 * t26 * (ap_ap * t26 * t30 - T(2) * t31 * t26 * ab_ap - t26 * (T(2) * J2 * ab_ap + log_ratio));
+    const T t35 = t24 * t24;
+    const T t36 = t27 * t27;
+    const T t37 = T(3) * t28 * ab_ab * t29 + T(2) * a_minus_b * t36 + T(2) * t35 * ab_ap;
+    const T t38 = T(2) * t35 + t29 * ab_ap * t37 - T(2) * t36;
+    const T t39 = ap_ap * t29 * t37 - T(4) * t28 * t29 - T(2) * t38 * t26 * ab_ap;
+    G_ap = (T(1) / T(8)) * (T(4) * t26 * t30 - ap_ap * t38 * t26 - T(2) * t26 * t39 * ab_ap) * t34 * t26 + (T(1) / T(8)) * t33 * t29 * t37 + (T(3) / T(8)) * t38 * delta_tau * t32 * t26 - (T(3) / T(8)) * t25 * tau_lo * t26 * t39;
+    const T t40 = T(3) * t25 * tau_lo + t33 + t34 + T(3) * delta_tau * t32;
+    G_E = (T(1) / T(8)) * t26 * (T(2) * t35 * t33 + T(6) * t25 * tau_lo * t26 * t30 + T(3) * delta_tau * t32 * t28 * t29 + T(3) * t34 * t31 * t26 - T(2) * t40 * t36);
   }
-  const T t40 = in.sigma * in.sigma;
-  const T t41 = t40 * t40;
-  const T g_factor = -T(4) * length * t41;
-  f = F * length * t41;
+  const T t41 = in.sigma * in.sigma;
+  const T t42 = t41 * t41;
+  const T g_factor = -T(4) * length * t42;
+  f = F * length * t42;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
   grad[1] = -g_factor * (ab1 * G_E - foot1 * G_ap);
   grad[2] = -g_factor * (ab2 * G_E - G_ap * foot2);
@@ -1013,7 +1015,7 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 51 +, 115 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 40957 +, 65888 ×, 10114 /, 4520 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31687 +, 50438 ×, 8054 /, 3490 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1439,7 +1441,7 @@ T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 59 +, 137 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 37699 +, 51295 ×, 8421 /, 182 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 37699 +, 51294 ×, 8420 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1483,47 +1485,47 @@ T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
   const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T F;
-  const T t2 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t3 = -ab_ap * a_minus_b;
-  const T t4 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t2 >= T(0)) {
+  const T t1 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t2 = -ab_ap * a_minus_b;
+  const T t3 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t1 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(6, 6, 5, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t5 = delta_tau * delta_tau;
-    const T t6 = t5 * delta_tau;
-    const T t7 = tau_lo * tau_lo;
-    const T t8 = t7 * t7;
-    const T t9 = t5 * t5;
-    const T t10 = t9 * delta_tau;
+    const T t4 = delta_tau * delta_tau;
+    const T t5 = t4 * delta_tau;
+    const T t6 = tau_lo * tau_lo;
+    const T t7 = t6 * t6;
+    const T t8 = t4 * t4;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t6 * tau_lo;
     const T t11 = t7 * tau_lo;
-    const T t12 = t8 * tau_lo;
-    F = T(10) * M_panels[3] * t6 * t7 + T(5) * delta_tau * M_panels[1] * t8 + M_panels[5] * t10 + T(10) * M_panels[2] * t5 * t11 + T(5) * t9 * tau_lo * M_panels[4] + M_panels[0] * t12;
-  } else if (t3 >= T(0) && t4 >= T(0)) {
+    F = T(10) * M_panels[3] * t5 * t6 + T(5) * delta_tau * M_panels[1] * t7 + M_panels[5] * t9 + T(10) * M_panels[2] * t4 * t10 + T(5) * t8 * tau_lo * M_panels[4] + M_panels[0] * t11;
+  } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 6> M_panels;
     segment_moments_gauss_panels<T>(6, 6, 5, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t13 = tau_lo * tau_lo;
-    const T t14 = t13 * t13;
-    const T t15 = delta_tau * delta_tau;
-    const T t16 = t15 * t15;
-    const T t17 = t16 * delta_tau;
-    const T t18 = t15 * delta_tau;
+    const T t12 = tau_lo * tau_lo;
+    const T t13 = t12 * t12;
+    const T t14 = delta_tau * delta_tau;
+    const T t15 = t14 * t14;
+    const T t16 = t15 * delta_tau;
+    const T t17 = t14 * delta_tau;
+    const T t18 = t12 * tau_lo;
     const T t19 = t13 * tau_lo;
-    const T t20 = t14 * tau_lo;
-    F = T(5) * delta_tau * M_panels[1] * t14 + t17 * M_panels[5] + T(10) * M_panels[3] * t18 * t13 + T(5) * M_panels[4] * t16 * tau_lo + T(10) * M_panels[2] * t15 * t19 + M_panels[0] * t20;
+    F = T(5) * delta_tau * M_panels[1] * t13 + t16 * M_panels[5] + T(10) * M_panels[3] * t17 * t12 + T(5) * M_panels[4] * t15 * tau_lo + T(10) * M_panels[2] * t14 * t18 + M_panels[0] * t19;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t21 = sqrt(cross_cross);
-    const T t22 = T(1) / t21;
-    const T J2 = t22 * atan2(t21, ap_bp);
+    const T t20 = sqrt(cross_cross);
+    const T t21 = T(1) / t20;
+    const T J2 = t21 * atan2(t20, ap_bp);
+    const T t22 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t22);
     const T t23 = T(1) / cross_cross;
     const T t24 = T(1) / bp_bp;
-    const T t25 = ab_ap * t1 + t24 * a_minus_b + J2 * ab_ab;
-    const T t26 = t1 * t1;
+    const T t25 = ab_ap * t22 + t24 * a_minus_b + J2 * ab_ab;
+    const T t26 = t22 * t22;
     const T t27 = t24 * t24;
     const T t28 = T(3) * t23 * t25 * ab_ab + T(2) * ab_ap * t26 + T(2) * t27 * a_minus_b;
     const T t29 = tau_lo * tau_lo;
@@ -1535,7 +1537,7 @@ T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
     const T t35 = t34 * t34;
     const T t36 = t35 * delta_tau;
     const T t37 = t23 * t28 * ap_ap - T(2) * ab_ap * t32 * t33 - T(4) * t23 * t25;
-    const T t38 = t24 - t1 - t23 * t25 * ab_ap;
+    const T t38 = t24 - t22 - t23 * t25 * ab_ap;
     const T t39 = T(2) * ab_ap * t37 * t32 + T(4) * t38 * t32 + ap_ap * t32 * t33;
     const T t40 = T(2) * ab_ap * t38 * t32 + t23 * t25 * ap_ap - T(2) * J2;
     const T t41 = T(4) * t40 * t32 + T(2) * ab_ap * t39 * t32 - ap_ap * t37 * t32;
@@ -1700,7 +1702,7 @@ std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 93 +, 250 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 49711 +, 65289 ×, 6309 /, 137 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 49711 +, 65288 ×, 6309 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1755,96 +1757,97 @@ T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 14> M_panels;
     segment_moments_gauss_panels<T>(6, 8, 6, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t7 = tau_lo * tau_lo;
-    const T t8 = t7 * t7;
-    const T t9 = t8 * tau_lo;
-    const T t10 = delta_tau * delta_tau;
-    const T t11 = t10 * delta_tau;
-    const T t12 = t10 * t10;
-    const T t13 = t12 * delta_tau;
-    const T t14 = t7 * tau_lo;
-    F = M_panels[0] * t9 + T(5) * M_panels[1] * delta_tau * t8 + T(10) * M_panels[3] * t11 * t7 + t13 * M_panels[5] + T(10) * M_panels[2] * t10 * t14 + T(5) * M_panels[4] * t12 * tau_lo;
-    const T t15 = M_panels[12] * t13 + T(5) * M_panels[8] * delta_tau * t8 + T(5) * M_panels[11] * t12 * tau_lo + T(10) * M_panels[10] * t11 * t7 + T(10) * M_panels[9] * t10 * t14 + M_panels[7] * t9;
-    G_ap = t15;
-    const T t16 = T(1) / ab_ab;
-    G_E = T(10) * M_panels[10] * t10 * t14 + M_panels[8] * t9 + M_panels[13] * t13 + T(5) * M_panels[9] * delta_tau * t8 + T(10) * M_panels[11] * t11 * t7 + T(5) * M_panels[12] * t12 * tau_lo - ab_ap * t15 * t16;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = tau_lo * tau_lo;
+    const T t7 = t6 * t6;
+    const T t8 = t7 * tau_lo;
+    const T t9 = delta_tau * delta_tau;
+    const T t10 = t9 * delta_tau;
+    const T t11 = t9 * t9;
+    const T t12 = t11 * delta_tau;
+    const T t13 = t6 * tau_lo;
+    F = M_panels[0] * t8 + T(5) * M_panels[1] * delta_tau * t7 + T(10) * M_panels[3] * t10 * t6 + t12 * M_panels[5] + T(10) * M_panels[2] * t9 * t13 + T(5) * M_panels[4] * t11 * tau_lo;
+    const T t14 = M_panels[12] * t12 + T(5) * M_panels[8] * delta_tau * t7 + T(5) * M_panels[11] * t11 * tau_lo + T(10) * M_panels[10] * t10 * t6 + T(10) * M_panels[9] * t9 * t13 + M_panels[7] * t8;
+    G_ap = t14;
+    const T t15 = T(1) / ab_ab;
+    G_E = T(10) * M_panels[10] * t9 * t13 + M_panels[8] * t8 + M_panels[13] * t12 + T(5) * M_panels[9] * delta_tau * t7 + T(10) * M_panels[11] * t10 * t6 + T(5) * M_panels[12] * t11 * tau_lo - ab_ap * t14 * t15;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 14> M_panels;
     segment_moments_gauss_panels<T>(6, 8, 6, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t17 = delta_tau * delta_tau;
-    const T t18 = t17 * t17;
-    const T t19 = tau_lo * tau_lo;
-    const T t20 = t19 * tau_lo;
-    const T t21 = t17 * delta_tau;
-    const T t22 = t19 * t19;
-    const T t23 = t22 * tau_lo;
-    const T t24 = t18 * delta_tau;
-    F = T(5) * t18 * M_panels[4] * tau_lo + T(10) * M_panels[2] * t17 * t20 + T(10) * M_panels[3] * t21 * t19 + T(5) * delta_tau * t22 * M_panels[1] + M_panels[0] * t23 + M_panels[5] * t24;
-    G_ap = t23 * M_panels[7] + T(10) * M_panels[9] * t17 * t20 + T(10) * t21 * M_panels[10] * t19 + T(5) * M_panels[8] * delta_tau * t22 + M_panels[12] * t24 + T(5) * M_panels[11] * t18 * tau_lo;
-    const T t25 = t3 * t3;
-    const T t26 = t25 * t3;
-    const T t27 = T(5) * delta_tau * t22 + t23 + T(10) * t17 * t20 + t24 + T(10) * t21 * t19 + T(5) * t18 * tau_lo;
+    const T t16 = delta_tau * delta_tau;
+    const T t17 = t16 * t16;
+    const T t18 = tau_lo * tau_lo;
+    const T t19 = t18 * tau_lo;
+    const T t20 = t16 * delta_tau;
+    const T t21 = t18 * t18;
+    const T t22 = t21 * tau_lo;
+    const T t23 = t17 * delta_tau;
+    F = T(5) * t17 * M_panels[4] * tau_lo + T(10) * M_panels[2] * t16 * t19 + T(10) * M_panels[3] * t20 * t18 + T(5) * delta_tau * t21 * M_panels[1] + M_panels[0] * t22 + M_panels[5] * t23;
+    G_ap = t22 * M_panels[7] + T(10) * M_panels[9] * t16 * t19 + T(10) * t20 * M_panels[10] * t18 + T(5) * M_panels[8] * delta_tau * t21 + M_panels[12] * t23 + T(5) * M_panels[11] * t17 * tau_lo;
+    const T t24 = T(1) / ap_ap;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * t24;
+    const T t27 = T(5) * delta_tau * t21 + t22 + T(10) * t16 * t19 + t23 + T(10) * t20 * t18 + T(5) * t17 * tau_lo;
     const T t28 = T(1) / bp_bp;
     const T t29 = t28 * t28;
     const T t30 = t29 * t28;
     const T t31 = T(1) / ab_ab;
-    G_E = (T(1) / T(6)) * (T(30) * M_panels[2] * t21 * t19 + T(20) * M_panels[3] * t18 * tau_lo + T(5) * M_panels[0] * delta_tau * t22 + T(5) * t24 * M_panels[4] + t26 * t23 + T(20) * t17 * t20 * M_panels[1] - t27 * t30) * t31;
+    G_E = (T(1) / T(6)) * (T(30) * M_panels[2] * t20 * t18 + T(20) * M_panels[3] * t17 * tau_lo + T(5) * M_panels[0] * delta_tau * t21 + T(5) * t23 * M_panels[4] + t26 * t22 + T(20) * t16 * t19 * M_panels[1] - t27 * t30) * t31;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t32 = sqrt(cross_cross);
     const T t33 = T(1) / t32;
     const T J2 = t33 * atan2(t32, ap_bp);
-    const T t34 = t3 * t3;
-    const T t35 = T(1) / cross_cross;
-    const T t36 = T(1) / bp_bp;
-    const T t37 = J2 * ab_ab + t36 * a_minus_b + ab_ap * t3;
-    const T t38 = t36 * t36;
-    const T t39 = T(3) * t37 * t35 * ab_ab + T(2) * ab_ap * t34 + T(2) * t38 * a_minus_b;
-    const T t40 = T(2) * t34 + t35 * ab_ap * t39 - T(2) * t38;
-    const T t41 = tau_lo * tau_lo;
-    const T t42 = t41 * t41;
-    const T t43 = T(1) / ab_ab;
-    const T t44 = delta_tau * delta_tau;
-    const T t45 = T(2) * ab_ap * t40 * t43 + T(4) * t37 * t35 - t35 * ap_ap * t39;
-    const T t46 = t41 * tau_lo;
+    const T t34 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t34);
+    const T t35 = t34 * t34;
+    const T t36 = T(1) / cross_cross;
+    const T t37 = T(1) / bp_bp;
+    const T t38 = J2 * ab_ab + t37 * a_minus_b + ab_ap * t34;
+    const T t39 = t37 * t37;
+    const T t40 = T(3) * t38 * t36 * ab_ab + T(2) * ab_ap * t35 + T(2) * t39 * a_minus_b;
+    const T t41 = T(2) * t35 + t36 * ab_ap * t40 - T(2) * t39;
+    const T t42 = tau_lo * tau_lo;
+    const T t43 = t42 * t42;
+    const T t44 = T(1) / ab_ab;
+    const T t45 = delta_tau * delta_tau;
+    const T t46 = T(2) * ab_ap * t41 * t44 + T(4) * t38 * t36 - t36 * ap_ap * t40;
     const T t47 = t42 * tau_lo;
-    const T t48 = t36 - t37 * t35 * ab_ap - t3;
-    const T t49 = T(4) * t48 * t43 + ap_ap * t40 * t43 - T(2) * ab_ap * t45 * t43;
-    const T t50 = T(2) * J2 - t37 * t35 * ap_ap - T(2) * t48 * ab_ap * t43;
-    const T t51 = ap_ap * t45 * t43 + T(2) * ab_ap * t49 * t43 - T(4) * t50 * t43;
-    const T t52 = t44 * t44;
-    const T t53 = t52 * delta_tau;
-    const T t54 = t44 * delta_tau;
-    F = (T(5) / T(8)) * t40 * delta_tau * t42 * t43 + (T(5) / T(4)) * t44 * t45 * t46 * t43 + (T(1) / T(8)) * t35 * t39 * t47 + (T(1) / T(8)) * (t49 * ap_ap * t43 + T(4) * (T(2) * t50 * ab_ap * t43 + (T(2) * ab_ap * J2 + log_ratio) * t43 + t48 * ap_ap * t43) * t43 - T(2) * ab_ap * t51 * t43) * t53 * t43 - (T(5) / T(4)) * t49 * t54 * t41 * t43 - (T(5) / T(8)) * t51 * t52 * tau_lo * t43;
-    const T t55 = t34 * t3;
-    const T t56 = t38 * t36;
-    const T t57 = T(8) * ab_ap * t55 + T(5) * t35 * t39 * ab_ab + T(8) * t56 * a_minus_b;
-    const T t58 = T(8) * t55 + t35 * ab_ap * t57 - T(8) * t56;
-    const T t59 = T(2) * ab_ap * t58 * t43 + T(6) * t35 * t39 - t35 * ap_ap * t57;
-    const T t60 = ap_ap * t58 * t43 - T(2) * ab_ap * t59 * t43 - T(6) * t40 * t43;
-    const T t61 = T(6) * t45 * t43 - T(2) * ab_ap * t60 * t43 - ap_ap * t59 * t43;
-    G_ap = (T(5) / T(48)) * t61 * t52 * tau_lo * t43 + (T(1) / T(48)) * (T(2) * ab_ap * t61 * t43 + t60 * ap_ap * t43 - T(6) * t49 * t43) * t53 * t43 + (T(5) / T(24)) * t44 * t59 * t46 * t43 + (T(1) / T(48)) * t35 * t47 * t57 + (T(5) / T(48)) * delta_tau * t58 * t42 * t43 - (T(5) / T(24)) * t60 * t54 * t41 * t43;
-    const T t62 = T(5) * delta_tau * t42 + t47 + T(10) * t44 * t46 + t53 + T(10) * t54 * t41 + T(5) * t52 * tau_lo;
-    G_E = (T(1) / T(48)) * (T(5) * t35 * delta_tau * t39 * t42 + T(20) * t40 * t44 * t46 * t43 + T(30) * t54 * t45 * t41 * t43 + T(8) * t55 * t47 - T(5) * t51 * t53 * t43 - T(8) * t62 * t56 - T(20) * t49 * t52 * tau_lo * t43) * t43;
+    const T t48 = t43 * tau_lo;
+    const T t49 = t37 - t38 * t36 * ab_ap - t34;
+    const T t50 = T(4) * t49 * t44 + ap_ap * t41 * t44 - T(2) * ab_ap * t46 * t44;
+    const T t51 = T(2) * J2 - t38 * t36 * ap_ap - T(2) * t49 * ab_ap * t44;
+    const T t52 = ap_ap * t46 * t44 + T(2) * ab_ap * t50 * t44 - T(4) * t51 * t44;
+    const T t53 = t45 * t45;
+    const T t54 = t53 * delta_tau;
+    const T t55 = t45 * delta_tau;
+    F = (T(5) / T(8)) * t41 * delta_tau * t43 * t44 + (T(5) / T(4)) * t45 * t46 * t47 * t44 + (T(1) / T(8)) * t36 * t40 * t48 + (T(1) / T(8)) * (t50 * ap_ap * t44 + T(4) * (T(2) * t51 * ab_ap * t44 + (T(2) * ab_ap * J2 + log_ratio) * t44 + t49 * ap_ap * t44) * t44 - T(2) * ab_ap * t52 * t44) * t54 * t44 - (T(5) / T(4)) * t50 * t55 * t42 * t44 - (T(5) / T(8)) * t52 * t53 * tau_lo * t44;
+    const T t56 = t35 * t34;
+    const T t57 = t39 * t37;
+    const T t58 = T(8) * ab_ap * t56 + T(5) * t36 * t40 * ab_ab + T(8) * t57 * a_minus_b;
+    const T t59 = T(8) * t56 + t36 * ab_ap * t58 - T(8) * t57;
+    const T t60 = T(2) * ab_ap * t59 * t44 + T(6) * t36 * t40 - t36 * ap_ap * t58;
+    const T t61 = ap_ap * t59 * t44 - T(2) * ab_ap * t60 * t44 - T(6) * t41 * t44;
+    const T t62 = T(6) * t46 * t44 - T(2) * ab_ap * t61 * t44 - ap_ap * t60 * t44;
+    G_ap = (T(5) / T(48)) * t62 * t53 * tau_lo * t44 + (T(1) / T(48)) * (T(2) * ab_ap * t62 * t44 + t61 * ap_ap * t44 - T(6) * t50 * t44) * t54 * t44 + (T(5) / T(24)) * t45 * t60 * t47 * t44 + (T(1) / T(48)) * t36 * t48 * t58 + (T(5) / T(48)) * delta_tau * t59 * t43 * t44 - (T(5) / T(24)) * t61 * t55 * t42 * t44;
+    const T t63 = T(5) * delta_tau * t43 + t48 + T(10) * t45 * t47 + t54 + T(10) * t55 * t42 + T(5) * t53 * tau_lo;
+    G_E = (T(1) / T(48)) * (T(5) * t36 * delta_tau * t40 * t43 + T(20) * t41 * t45 * t47 * t44 + T(30) * t55 * t46 * t42 * t44 + T(8) * t56 * t48 - T(5) * t52 * t54 * t44 - T(8) * t63 * t57 - T(20) * t50 * t53 * tau_lo * t44) * t44;
   }
-  const T t63 = in.sigma * in.sigma;
-  const T t64 = t63 * in.sigma;
-  const T t65 = t64 * t64;
-  const T g_factor = -T(6) * length * t65;
-  f = length * t65 * F;
+  const T t64 = in.sigma * in.sigma;
+  const T t65 = t64 * in.sigma;
+  const T t66 = t65 * t65;
+  const T g_factor = -T(6) * length * t66;
+  f = length * t66 * F;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
   grad[1] = g_factor * (foot1 * G_ap - ab1 * G_E);
   grad[2] = -g_factor * (G_E * ab2 - foot2 * G_ap);
@@ -2354,7 +2357,7 @@ T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 77 +, 204 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 33611 +, 46475 ×, 6306 /, 137 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 33611 +, 46474 ×, 6305 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2398,59 +2401,59 @@ T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
   const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T F;
-  const T t2 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t3 = -a_minus_b * ab_ap;
-  const T t4 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t2 >= T(0)) {
+  const T t1 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t2 = -a_minus_b * ab_ap;
+  const T t3 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t1 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
     segment_moments_gauss_panels<T>(8, 8, 7, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t5 = delta_tau * delta_tau;
-    const T t6 = t5 * t5;
-    const T t7 = tau_lo * tau_lo;
-    const T t8 = t7 * tau_lo;
-    const T t9 = t7 * t7;
-    const T t10 = t9 * tau_lo;
-    const T t11 = t5 * delta_tau;
-    const T t12 = t11 * t11;
-    const T t13 = t12 * delta_tau;
-    const T t14 = t6 * delta_tau;
-    const T t15 = t8 * t8;
-    const T t16 = t15 * tau_lo;
-    F = T(35) * M_panels[4] * t6 * t8 + T(21) * M_panels[2] * t5 * t10 + t13 * M_panels[7] + T(21) * M_panels[5] * t14 * t7 + T(35) * M_panels[3] * t11 * t9 + T(7) * delta_tau * M_panels[1] * t15 + M_panels[0] * t16 + T(7) * M_panels[6] * t12 * tau_lo;
-  } else if (t3 >= T(0) && t4 >= T(0)) {
+    const T t4 = delta_tau * delta_tau;
+    const T t5 = t4 * t4;
+    const T t6 = tau_lo * tau_lo;
+    const T t7 = t6 * tau_lo;
+    const T t8 = t6 * t6;
+    const T t9 = t8 * tau_lo;
+    const T t10 = t4 * delta_tau;
+    const T t11 = t10 * t10;
+    const T t12 = t11 * delta_tau;
+    const T t13 = t5 * delta_tau;
+    const T t14 = t7 * t7;
+    const T t15 = t14 * tau_lo;
+    F = T(35) * M_panels[4] * t5 * t7 + T(21) * M_panels[2] * t4 * t9 + t12 * M_panels[7] + T(21) * M_panels[5] * t13 * t6 + T(35) * M_panels[3] * t10 * t8 + T(7) * delta_tau * M_panels[1] * t14 + M_panels[0] * t15 + T(7) * M_panels[6] * t11 * tau_lo;
+  } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 8> M_panels;
     segment_moments_gauss_panels<T>(8, 8, 7, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t17 = delta_tau * delta_tau;
-    const T t18 = t17 * t17;
-    const T t19 = t18 * delta_tau;
-    const T t20 = tau_lo * tau_lo;
-    const T t21 = t17 * delta_tau;
-    const T t22 = t20 * t20;
-    const T t23 = t22 * tau_lo;
-    const T t24 = t21 * t21;
-    const T t25 = t20 * tau_lo;
-    const T t26 = t25 * t25;
-    const T t27 = t26 * tau_lo;
-    const T t28 = t24 * delta_tau;
-    F = T(21) * M_panels[5] * t19 * t20 + T(35) * M_panels[3] * t21 * t22 + T(21) * M_panels[2] * t17 * t23 + T(7) * M_panels[6] * t24 * tau_lo + M_panels[0] * t27 + T(7) * M_panels[1] * delta_tau * t26 + T(35) * M_panels[4] * t18 * t25 + M_panels[7] * t28;
+    const T t16 = delta_tau * delta_tau;
+    const T t17 = t16 * t16;
+    const T t18 = t17 * delta_tau;
+    const T t19 = tau_lo * tau_lo;
+    const T t20 = t16 * delta_tau;
+    const T t21 = t19 * t19;
+    const T t22 = t21 * tau_lo;
+    const T t23 = t20 * t20;
+    const T t24 = t19 * tau_lo;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * tau_lo;
+    const T t27 = t23 * delta_tau;
+    F = T(21) * M_panels[5] * t18 * t19 + T(35) * M_panels[3] * t20 * t21 + T(21) * M_panels[2] * t16 * t22 + T(7) * M_panels[6] * t23 * tau_lo + M_panels[0] * t26 + T(7) * M_panels[1] * delta_tau * t25 + T(35) * M_panels[4] * t17 * t24 + M_panels[7] * t27;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t29 = sqrt(cross_cross);
-    const T t30 = T(1) / t29;
-    const T J2 = atan2(t29, ap_bp) * t30;
+    const T t28 = sqrt(cross_cross);
+    const T t29 = T(1) / t28;
+    const T J2 = atan2(t28, ap_bp) * t29;
+    const T t30 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t30);
     const T t31 = T(1) / cross_cross;
     const T t32 = T(1) / bp_bp;
     const T t33 = t32 * t32;
     const T t34 = t33 * t32;
-    const T t35 = ab_ap * t1 + J2 * ab_ab + a_minus_b * t32;
-    const T t36 = t1 * t1;
+    const T t35 = ab_ap * t30 + J2 * ab_ab + a_minus_b * t32;
+    const T t36 = t30 * t30;
     const T t37 = T(3) * ab_ab * t31 * t35 + T(2) * a_minus_b * t33 + T(2) * ab_ap * t36;
-    const T t38 = t36 * t1;
+    const T t38 = t36 * t30;
     const T t39 = T(8) * a_minus_b * t34 + T(5) * ab_ab * t31 * t37 + T(8) * ab_ap * t38;
     const T t40 = tau_lo * tau_lo;
     const T t41 = t40 * tau_lo;
@@ -2463,7 +2466,7 @@ T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
     const T t48 = T(2) * t46 * t44 * ab_ap + t44 * t45 * ap_ap - T(6) * t44 * t47;
     const T t49 = t31 * t37 * ap_ap - T(4) * t31 * t35 - T(2) * t44 * t47 * ab_ap;
     const T t50 = T(2) * t44 * ab_ap * t48 + T(6) * t49 * t44 - t46 * t44 * ap_ap;
-    const T t51 = t31 * t35 * ab_ap + t1 - t32;
+    const T t51 = t31 * t35 * ab_ap + t30 - t32;
     const T t52 = t44 * t47 * ap_ap + T(2) * t49 * t44 * ab_ap - T(4) * t44 * t51;
     const T t53 = T(2) * t50 * t44 * ab_ap + T(6) * t44 * t52 - t44 * ap_ap * t48;
     const T t54 = T(2) * J2 + T(2) * t44 * ab_ap * t51 - t31 * t35 * ap_ap;
@@ -2658,7 +2661,7 @@ std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in)
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 121 +, 351 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 48739 +, 63479 ×, 5087 /, 111 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48739 +, 63478 ×, 5087 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2713,119 +2716,120 @@ T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
   const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 18> M_panels;
     segment_moments_gauss_panels<T>(8, 10, 8, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t7 = delta_tau * delta_tau;
-    const T t8 = t7 * delta_tau;
-    const T t9 = t8 * t8;
-    const T t10 = t9 * delta_tau;
-    const T t11 = t7 * t7;
-    const T t12 = tau_lo * tau_lo;
-    const T t13 = t12 * tau_lo;
-    const T t14 = t12 * t12;
-    const T t15 = t11 * delta_tau;
-    const T t16 = t14 * tau_lo;
-    const T t17 = t13 * t13;
-    const T t18 = t17 * tau_lo;
-    F = M_panels[7] * t10 + T(35) * M_panels[4] * t11 * t13 + T(7) * M_panels[6] * t9 * tau_lo + T(35) * M_panels[3] * t8 * t14 + T(21) * M_panels[5] * t15 * t12 + T(21) * M_panels[2] * t7 * t16 + T(7) * M_panels[1] * delta_tau * t17 + M_panels[0] * t18;
-    const T t19 = M_panels[16] * t10 + T(35) * M_panels[12] * t8 * t14 + T(21) * M_panels[14] * t15 * t12 + T(21) * M_panels[11] * t7 * t16 + T(35) * M_panels[13] * t11 * t13 + T(7) * M_panels[10] * delta_tau * t17 + M_panels[9] * t18 + T(7) * t9 * tau_lo * M_panels[15];
-    G_ap = t19;
-    const T t20 = T(1) / ab_ab;
-    G_E = T(21) * M_panels[12] * t7 * t16 + M_panels[17] * t10 + T(7) * M_panels[11] * delta_tau * t17 + T(7) * M_panels[16] * t9 * tau_lo + T(35) * M_panels[14] * t11 * t13 + M_panels[10] * t18 + T(21) * t15 * t12 * M_panels[15] + T(35) * M_panels[13] * t8 * t14 - ab_ap * t19 * t20;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = delta_tau * delta_tau;
+    const T t7 = t6 * delta_tau;
+    const T t8 = t7 * t7;
+    const T t9 = t8 * delta_tau;
+    const T t10 = t6 * t6;
+    const T t11 = tau_lo * tau_lo;
+    const T t12 = t11 * tau_lo;
+    const T t13 = t11 * t11;
+    const T t14 = t10 * delta_tau;
+    const T t15 = t13 * tau_lo;
+    const T t16 = t12 * t12;
+    const T t17 = t16 * tau_lo;
+    F = M_panels[7] * t9 + T(35) * M_panels[4] * t10 * t12 + T(7) * M_panels[6] * t8 * tau_lo + T(35) * M_panels[3] * t7 * t13 + T(21) * M_panels[5] * t14 * t11 + T(21) * M_panels[2] * t6 * t15 + T(7) * M_panels[1] * delta_tau * t16 + M_panels[0] * t17;
+    const T t18 = M_panels[16] * t9 + T(35) * M_panels[12] * t7 * t13 + T(21) * M_panels[14] * t14 * t11 + T(21) * M_panels[11] * t6 * t15 + T(35) * M_panels[13] * t10 * t12 + T(7) * M_panels[10] * delta_tau * t16 + M_panels[9] * t17 + T(7) * t8 * tau_lo * M_panels[15];
+    G_ap = t18;
+    const T t19 = T(1) / ab_ab;
+    G_E = T(21) * M_panels[12] * t6 * t15 + M_panels[17] * t9 + T(7) * M_panels[11] * delta_tau * t16 + T(7) * M_panels[16] * t8 * tau_lo + T(35) * M_panels[14] * t10 * t12 + M_panels[10] * t17 + T(21) * t14 * t11 * M_panels[15] + T(35) * M_panels[13] * t7 * t13 - ab_ap * t18 * t19;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 18> M_panels;
     segment_moments_gauss_panels<T>(8, 10, 8, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t21 = delta_tau * delta_tau;
-    const T t22 = t21 * delta_tau;
-    const T t23 = tau_lo * tau_lo;
-    const T t24 = t23 * t23;
-    const T t25 = t21 * t21;
-    const T t26 = t25 * delta_tau;
-    const T t27 = t23 * tau_lo;
-    const T t28 = t27 * t27;
-    const T t29 = t28 * tau_lo;
-    const T t30 = t22 * t22;
-    const T t31 = t30 * delta_tau;
-    const T t32 = t24 * tau_lo;
-    F = T(35) * M_panels[3] * t22 * t24 + T(21) * M_panels[5] * t26 * t23 + T(7) * M_panels[1] * delta_tau * t28 + T(35) * M_panels[4] * t25 * t27 + M_panels[0] * t29 + M_panels[7] * t31 + T(21) * M_panels[2] * t21 * t32 + T(7) * t30 * M_panels[6] * tau_lo;
-    G_ap = T(35) * M_panels[12] * t22 * t24 + T(21) * M_panels[14] * t26 * t23 + M_panels[9] * t29 + T(7) * M_panels[10] * delta_tau * t28 + T(35) * M_panels[13] * t25 * t27 + t31 * M_panels[16] + T(7) * M_panels[15] * t30 * tau_lo + T(21) * M_panels[11] * t21 * t32;
-    const T t33 = t3 * t3;
+    const T t20 = delta_tau * delta_tau;
+    const T t21 = t20 * delta_tau;
+    const T t22 = tau_lo * tau_lo;
+    const T t23 = t22 * t22;
+    const T t24 = t20 * t20;
+    const T t25 = t24 * delta_tau;
+    const T t26 = t22 * tau_lo;
+    const T t27 = t26 * t26;
+    const T t28 = t27 * tau_lo;
+    const T t29 = t21 * t21;
+    const T t30 = t29 * delta_tau;
+    const T t31 = t23 * tau_lo;
+    F = T(35) * M_panels[3] * t21 * t23 + T(21) * M_panels[5] * t25 * t22 + T(7) * M_panels[1] * delta_tau * t27 + T(35) * M_panels[4] * t24 * t26 + M_panels[0] * t28 + M_panels[7] * t30 + T(21) * M_panels[2] * t20 * t31 + T(7) * t29 * M_panels[6] * tau_lo;
+    G_ap = T(35) * M_panels[12] * t21 * t23 + T(21) * M_panels[14] * t25 * t22 + M_panels[9] * t28 + T(7) * M_panels[10] * delta_tau * t27 + T(35) * M_panels[13] * t24 * t26 + t30 * M_panels[16] + T(7) * M_panels[15] * t29 * tau_lo + T(21) * M_panels[11] * t20 * t31;
+    const T t32 = T(1) / ap_ap;
+    const T t33 = t32 * t32;
     const T t34 = t33 * t33;
-    const T t35 = T(7) * delta_tau * t28 + t29 + t31 + T(21) * t26 * t23 + T(35) * t22 * t24 + T(35) * t25 * t27 + T(7) * t30 * tau_lo + T(21) * t21 * t32;
+    const T t35 = T(7) * delta_tau * t27 + t28 + t30 + T(21) * t25 * t22 + T(35) * t21 * t23 + T(35) * t24 * t26 + T(7) * t29 * tau_lo + T(21) * t20 * t31;
     const T t36 = T(1) / bp_bp;
     const T t37 = t36 * t36;
     const T t38 = t37 * t37;
     const T t39 = T(1) / ab_ab;
-    G_E = (T(1) / T(8)) * (T(140) * M_panels[3] * t25 * t27 + T(7) * delta_tau * M_panels[0] * t28 + T(42) * M_panels[5] * t30 * tau_lo + T(42) * M_panels[1] * t21 * t32 + T(105) * M_panels[2] * t22 * t24 + T(7) * t31 * M_panels[6] + T(105) * M_panels[4] * t26 * t23 + t34 * t29 - t35 * t38) * t39;
+    G_E = (T(1) / T(8)) * (T(140) * M_panels[3] * t24 * t26 + T(7) * delta_tau * M_panels[0] * t27 + T(42) * M_panels[5] * t29 * tau_lo + T(42) * M_panels[1] * t20 * t31 + T(105) * M_panels[2] * t21 * t23 + T(7) * t30 * M_panels[6] + T(105) * M_panels[4] * t25 * t22 + t34 * t28 - t35 * t38) * t39;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t40 = sqrt(cross_cross);
     const T t41 = T(1) / t40;
     const T J2 = t41 * atan2(t40, ap_bp);
-    const T t42 = T(1) / cross_cross;
-    const T t43 = t3 * t3;
-    const T t44 = T(1) / bp_bp;
-    const T t45 = t44 * t44;
-    const T t46 = J2 * ab_ab + t44 * a_minus_b + ab_ap * t3;
-    const T t47 = T(2) * ab_ap * t43 + T(2) * t45 * a_minus_b + T(3) * t42 * t46 * ab_ab;
-    const T t48 = t43 * t3;
-    const T t49 = t45 * t44;
-    const T t50 = T(8) * ab_ap * t48 + T(8) * t49 * a_minus_b + T(5) * t42 * t47 * ab_ab;
-    const T t51 = t42 * ab_ap * t50 + T(8) * t48 - T(8) * t49;
-    const T t52 = T(1) / ab_ab;
-    const T t53 = T(6) * t42 * t47 + T(2) * t51 * ab_ap * t52 - t42 * t50 * ap_ap;
-    const T t54 = delta_tau * delta_tau;
-    const T t55 = tau_lo * tau_lo;
-    const T t56 = t55 * t55;
-    const T t57 = t56 * tau_lo;
-    const T t58 = t55 * tau_lo;
-    const T t59 = t58 * t58;
-    const T t60 = t59 * tau_lo;
-    const T t61 = T(2) * t43 + t42 * ab_ap * t47 - T(2) * t45;
-    const T t62 = T(2) * ab_ap * t61 * t52 + T(4) * t42 * t46 - t42 * ap_ap * t47;
-    const T t63 = t44 - t42 * ab_ap * t46 - t3;
-    const T t64 = T(2) * t62 * ab_ap * t52 - ap_ap * t61 * t52 - T(4) * t63 * t52;
-    const T t65 = T(2) * t63 * ab_ap * t52 + t42 * t46 * ap_ap - T(2) * J2;
-    const T t66 = T(4) * t65 * t52 + t62 * ap_ap * t52 - T(2) * ab_ap * t64 * t52;
-    const T t67 = t51 * ap_ap * t52 - T(2) * ab_ap * t53 * t52 - T(6) * t61 * t52;
-    const T t68 = T(2) * ab_ap * t67 * t52 + ap_ap * t53 * t52 - T(6) * t62 * t52;
-    const T t69 = T(2) * t68 * ab_ap * t52 - ap_ap * t67 * t52 - T(6) * t64 * t52;
-    const T t70 = T(2) * ab_ap * t69 * t52 + T(6) * t66 * t52 - t68 * ap_ap * t52;
-    const T t71 = t54 * delta_tau;
-    const T t72 = t71 * t71;
-    const T t73 = t72 * delta_tau;
-    const T t74 = t54 * t54;
-    const T t75 = t74 * delta_tau;
-    F = (T(7) / T(16)) * t53 * t54 * t57 * t52 + (T(7) / T(48)) * t51 * delta_tau * t59 * t52 + (T(1) / T(48)) * t42 * t50 * t60 - (T(1) / T(48)) * (T(6) * (ap_ap * t64 * t52 + T(2) * ab_ap * t66 * t52 - T(4) * (t63 * ap_ap * t52 + (T(2) * ab_ap * J2 + log_ratio) * t52 - T(2) * t65 * ab_ap * t52) * t52) * t52 + T(2) * t70 * ab_ap * t52 - t69 * ap_ap * t52) * t73 * t52 - (T(7) / T(48)) * t70 * t72 * tau_lo * t52 - (T(35) / T(48)) * t68 * t74 * t58 * t52 - (T(7) / T(16)) * t69 * t75 * t55 * t52 - (T(35) / T(48)) * t71 * t67 * t56 * t52;
-    const T t76 = t43 * t43;
-    const T t77 = t45 * t45;
-    const T t78 = T(7) * t42 * t50 * ab_ab + T(48) * ab_ap * t76 + T(48) * t77 * a_minus_b;
-    const T t79 = t42 * ab_ap * t78 + T(48) * t76 - T(48) * t77;
-    const T t80 = t42 * ap_ap * t78 - T(2) * ab_ap * t79 * t52 - T(8) * t42 * t50;
-    const T t81 = T(8) * t51 * t52 - T(2) * ab_ap * t80 * t52 - t79 * ap_ap * t52;
-    const T t82 = T(8) * t53 * t52 + T(2) * t81 * ab_ap * t52 + t80 * ap_ap * t52;
-    const T t83 = T(2) * ab_ap * t82 * t52 - T(8) * t67 * t52 - t81 * ap_ap * t52;
-    const T t84 = T(8) * t68 * t52 + ap_ap * t82 * t52 - T(2) * t83 * ab_ap * t52;
-    G_ap = (T(7) / T(128)) * t83 * t75 * t55 * t52 + (T(7) / T(384)) * t79 * delta_tau * t59 * t52 + (T(35) / T(384)) * t81 * t71 * t56 * t52 + (T(35) / T(384)) * t82 * t74 * t58 * t52 + (T(1) / T(384)) * t42 * t78 * t60 - (T(1) / T(384)) * (T(8) * t69 * t52 + T(2) * ab_ap * t84 * t52 + t83 * ap_ap * t52) * t73 * t52 - (T(7) / T(128)) * t80 * t54 * t57 * t52 - (T(7) / T(384)) * t84 * t72 * tau_lo * t52;
-    const T t85 = T(7) * delta_tau * t59 + t60 + t73 + T(21) * t75 * t55 + T(35) * t71 * t56 + T(35) * t74 * t58 + T(7) * t72 * tau_lo + T(21) * t54 * t57;
-    G_E = (T(1) / T(384)) * (T(42) * t51 * t54 * t57 * t52 + T(7) * t42 * t50 * delta_tau * t59 + T(105) * t53 * t71 * t56 * t52 + T(48) * t76 * t60 - T(105) * t68 * t75 * t55 * t52 - T(42) * t69 * t72 * tau_lo * t52 - T(140) * t74 * t67 * t58 * t52 - T(48) * t85 * t77 - T(7) * t70 * t73 * t52) * t52;
+    const T t42 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t42);
+    const T t43 = T(1) / cross_cross;
+    const T t44 = t42 * t42;
+    const T t45 = T(1) / bp_bp;
+    const T t46 = t45 * t45;
+    const T t47 = J2 * ab_ab + t45 * a_minus_b + ab_ap * t42;
+    const T t48 = T(2) * ab_ap * t44 + T(2) * t46 * a_minus_b + T(3) * t43 * t47 * ab_ab;
+    const T t49 = t44 * t42;
+    const T t50 = t46 * t45;
+    const T t51 = T(8) * ab_ap * t49 + T(8) * t50 * a_minus_b + T(5) * t43 * t48 * ab_ab;
+    const T t52 = t43 * ab_ap * t51 + T(8) * t49 - T(8) * t50;
+    const T t53 = T(1) / ab_ab;
+    const T t54 = T(6) * t43 * t48 + T(2) * t52 * ab_ap * t53 - t43 * t51 * ap_ap;
+    const T t55 = delta_tau * delta_tau;
+    const T t56 = tau_lo * tau_lo;
+    const T t57 = t56 * t56;
+    const T t58 = t57 * tau_lo;
+    const T t59 = t56 * tau_lo;
+    const T t60 = t59 * t59;
+    const T t61 = t60 * tau_lo;
+    const T t62 = T(2) * t44 + t43 * ab_ap * t48 - T(2) * t46;
+    const T t63 = T(2) * ab_ap * t62 * t53 + T(4) * t43 * t47 - t43 * ap_ap * t48;
+    const T t64 = t45 - t43 * ab_ap * t47 - t42;
+    const T t65 = T(2) * t63 * ab_ap * t53 - ap_ap * t62 * t53 - T(4) * t64 * t53;
+    const T t66 = T(2) * t64 * ab_ap * t53 + t43 * t47 * ap_ap - T(2) * J2;
+    const T t67 = T(4) * t66 * t53 + t63 * ap_ap * t53 - T(2) * ab_ap * t65 * t53;
+    const T t68 = t52 * ap_ap * t53 - T(2) * ab_ap * t54 * t53 - T(6) * t62 * t53;
+    const T t69 = T(2) * ab_ap * t68 * t53 + ap_ap * t54 * t53 - T(6) * t63 * t53;
+    const T t70 = T(2) * t69 * ab_ap * t53 - ap_ap * t68 * t53 - T(6) * t65 * t53;
+    const T t71 = T(2) * ab_ap * t70 * t53 + T(6) * t67 * t53 - t69 * ap_ap * t53;
+    const T t72 = t55 * delta_tau;
+    const T t73 = t72 * t72;
+    const T t74 = t73 * delta_tau;
+    const T t75 = t55 * t55;
+    const T t76 = t75 * delta_tau;
+    F = (T(7) / T(16)) * t54 * t55 * t58 * t53 + (T(7) / T(48)) * t52 * delta_tau * t60 * t53 + (T(1) / T(48)) * t43 * t51 * t61 - (T(1) / T(48)) * (T(6) * (ap_ap * t65 * t53 + T(2) * ab_ap * t67 * t53 - T(4) * (t64 * ap_ap * t53 + (T(2) * ab_ap * J2 + log_ratio) * t53 - T(2) * t66 * ab_ap * t53) * t53) * t53 + T(2) * t71 * ab_ap * t53 - t70 * ap_ap * t53) * t74 * t53 - (T(7) / T(48)) * t71 * t73 * tau_lo * t53 - (T(35) / T(48)) * t69 * t75 * t59 * t53 - (T(7) / T(16)) * t70 * t76 * t56 * t53 - (T(35) / T(48)) * t72 * t68 * t57 * t53;
+    const T t77 = t44 * t44;
+    const T t78 = t46 * t46;
+    const T t79 = T(7) * t43 * t51 * ab_ab + T(48) * ab_ap * t77 + T(48) * t78 * a_minus_b;
+    const T t80 = t43 * ab_ap * t79 + T(48) * t77 - T(48) * t78;
+    const T t81 = t43 * ap_ap * t79 - T(2) * ab_ap * t80 * t53 - T(8) * t43 * t51;
+    const T t82 = T(8) * t52 * t53 - T(2) * ab_ap * t81 * t53 - t80 * ap_ap * t53;
+    const T t83 = T(8) * t54 * t53 + T(2) * t82 * ab_ap * t53 + t81 * ap_ap * t53;
+    const T t84 = T(2) * ab_ap * t83 * t53 - T(8) * t68 * t53 - t82 * ap_ap * t53;
+    const T t85 = T(8) * t69 * t53 + ap_ap * t83 * t53 - T(2) * t84 * ab_ap * t53;
+    G_ap = (T(7) / T(128)) * t84 * t76 * t56 * t53 + (T(7) / T(384)) * t80 * delta_tau * t60 * t53 + (T(35) / T(384)) * t82 * t72 * t57 * t53 + (T(35) / T(384)) * t83 * t75 * t59 * t53 + (T(1) / T(384)) * t43 * t79 * t61 - (T(1) / T(384)) * (T(8) * t70 * t53 + T(2) * ab_ap * t85 * t53 + t84 * ap_ap * t53) * t74 * t53 - (T(7) / T(128)) * t81 * t55 * t58 * t53 - (T(7) / T(384)) * t85 * t73 * tau_lo * t53;
+    const T t86 = T(7) * delta_tau * t60 + t61 + t74 + T(21) * t76 * t56 + T(35) * t72 * t57 + T(35) * t75 * t59 + T(7) * t73 * tau_lo + T(21) * t55 * t58;
+    G_E = (T(1) / T(384)) * (T(42) * t52 * t55 * t58 * t53 + T(7) * t43 * t51 * delta_tau * t60 + T(105) * t54 * t72 * t57 * t53 + T(48) * t77 * t61 - T(105) * t69 * t76 * t56 * t53 - T(42) * t70 * t73 * tau_lo * t53 - T(140) * t75 * t68 * t59 * t53 - T(48) * t86 * t78 - T(7) * t71 * t74 * t53) * t53;
   }
-  const T t86 = in.sigma * in.sigma;
-  const T t87 = t86 * t86;
+  const T t87 = in.sigma * in.sigma;
   const T t88 = t87 * t87;
-  const T g_factor = -T(8) * length * t88;
-  f = length * t88 * F;
+  const T t89 = t88 * t88;
+  const T g_factor = -T(8) * length * t89;
+  f = length * t89 * F;
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
   grad[1] = -(ab1 * G_E - foot1 * G_ap) * g_factor;
   grad[2] = (foot2 * G_ap - ab2 * G_E) * g_factor;
@@ -3404,7 +3408,7 @@ T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 /// the field, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 99 +, 286 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 31433 +, 43970 ×, 5084 /, 111 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31433 +, 43969 ×, 5083 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3448,70 +3452,70 @@ T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
   const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T F;
-  const T t2 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t3 = -a_minus_b * ab_ap;
-  const T t4 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t2 >= T(0)) {
+  const T t1 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t2 = -a_minus_b * ab_ap;
+  const T t3 = max(T((T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t1 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(10, 10, 9, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t5 = tau_lo * tau_lo;
-    const T t6 = t5 * t5;
-    const T t7 = t6 * tau_lo;
-    const T t8 = delta_tau * delta_tau;
-    const T t9 = t8 * t8;
-    const T t10 = t5 * tau_lo;
-    const T t11 = t8 * delta_tau;
-    const T t12 = t11 * t11;
-    const T t13 = t9 * delta_tau;
-    const T t14 = t6 * t6;
-    const T t15 = t14 * tau_lo;
-    const T t16 = t10 * t10;
-    const T t17 = t16 * tau_lo;
-    const T t18 = t12 * delta_tau;
-    const T t19 = t9 * t9;
-    const T t20 = t19 * delta_tau;
-    F = T(126) * t7 * M_panels[4] * t9 + T(84) * t10 * M_panels[6] * t12 + T(126) * t6 * M_panels[5] * t13 + t15 * M_panels[0] + T(9) * M_panels[1] * t14 * delta_tau + T(36) * t17 * M_panels[2] * t8 + T(36) * t5 * M_panels[7] * t18 + T(84) * t16 * M_panels[3] * t11 + M_panels[9] * t20 + T(9) * tau_lo * M_panels[8] * t19;
-  } else if (t3 >= T(0) && t4 >= T(0)) {
+    const T t4 = tau_lo * tau_lo;
+    const T t5 = t4 * t4;
+    const T t6 = t5 * tau_lo;
+    const T t7 = delta_tau * delta_tau;
+    const T t8 = t7 * t7;
+    const T t9 = t4 * tau_lo;
+    const T t10 = t7 * delta_tau;
+    const T t11 = t10 * t10;
+    const T t12 = t8 * delta_tau;
+    const T t13 = t5 * t5;
+    const T t14 = t13 * tau_lo;
+    const T t15 = t9 * t9;
+    const T t16 = t15 * tau_lo;
+    const T t17 = t11 * delta_tau;
+    const T t18 = t8 * t8;
+    const T t19 = t18 * delta_tau;
+    F = T(126) * t6 * M_panels[4] * t8 + T(84) * t9 * M_panels[6] * t11 + T(126) * t5 * M_panels[5] * t12 + t14 * M_panels[0] + T(9) * M_panels[1] * t13 * delta_tau + T(36) * t16 * M_panels[2] * t7 + T(36) * t4 * M_panels[7] * t17 + T(84) * t15 * M_panels[3] * t10 + M_panels[9] * t19 + T(9) * tau_lo * M_panels[8] * t18;
+  } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 10> M_panels;
     segment_moments_gauss_panels<T>(10, 10, 9, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t21 = tau_lo * tau_lo;
+    const T t20 = tau_lo * tau_lo;
+    const T t21 = t20 * t20;
     const T t22 = t21 * t21;
-    const T t23 = t22 * t22;
-    const T t24 = t23 * tau_lo;
-    const T t25 = delta_tau * delta_tau;
-    const T t26 = t25 * t25;
-    const T t27 = t26 * delta_tau;
-    const T t28 = t26 * t26;
-    const T t29 = t28 * delta_tau;
-    const T t30 = t22 * tau_lo;
-    const T t31 = t25 * delta_tau;
-    const T t32 = t31 * t31;
-    const T t33 = t32 * delta_tau;
-    const T t34 = t21 * tau_lo;
-    const T t35 = t34 * t34;
-    const T t36 = t35 * tau_lo;
-    F = t24 * M_panels[0] + T(126) * t22 * M_panels[5] * t27 + M_panels[9] * t29 + T(126) * t30 * M_panels[4] * t26 + T(9) * t23 * M_panels[1] * delta_tau + T(36) * t21 * M_panels[7] * t33 + T(9) * tau_lo * M_panels[8] * t28 + T(84) * t35 * M_panels[3] * t31 + T(36) * t36 * M_panels[2] * t25 + T(84) * t34 * M_panels[6] * t32;
+    const T t23 = t22 * tau_lo;
+    const T t24 = delta_tau * delta_tau;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * delta_tau;
+    const T t27 = t25 * t25;
+    const T t28 = t27 * delta_tau;
+    const T t29 = t21 * tau_lo;
+    const T t30 = t24 * delta_tau;
+    const T t31 = t30 * t30;
+    const T t32 = t31 * delta_tau;
+    const T t33 = t20 * tau_lo;
+    const T t34 = t33 * t33;
+    const T t35 = t34 * tau_lo;
+    F = t23 * M_panels[0] + T(126) * t21 * M_panels[5] * t26 + M_panels[9] * t28 + T(126) * t29 * M_panels[4] * t25 + T(9) * t22 * M_panels[1] * delta_tau + T(36) * t20 * M_panels[7] * t32 + T(9) * tau_lo * M_panels[8] * t27 + T(84) * t34 * M_panels[3] * t30 + T(36) * t35 * M_panels[2] * t24 + T(84) * t33 * M_panels[6] * t31;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t37 = sqrt(cross_cross);
-    const T t38 = T(1) / t37;
-    const T J2 = t38 * atan2(t37, ap_bp);
+    const T t36 = sqrt(cross_cross);
+    const T t37 = T(1) / t36;
+    const T J2 = t37 * atan2(t36, ap_bp);
+    const T t38 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t38);
     const T t39 = T(1) / ab_ab;
     const T t40 = T(1) / bp_bp;
     const T t41 = t40 * t40;
-    const T t42 = t1 * t1;
+    const T t42 = t38 * t38;
     const T t43 = T(1) / cross_cross;
-    const T t44 = J2 * ab_ab + ab_ap * t1 + a_minus_b * t40;
+    const T t44 = J2 * ab_ab + ab_ap * t38 + a_minus_b * t40;
     const T t45 = T(2) * a_minus_b * t41 + T(2) * ab_ap * t42 + T(3) * ab_ab * t43 * t44;
     const T t46 = T(2) * t41 - T(2) * t42 - t43 * t45 * ab_ap;
     const T t47 = T(2) * t39 * ab_ap * t46 + t43 * t45 * ap_ap - T(4) * t43 * t44;
     const T t48 = t41 * t40;
-    const T t49 = t42 * t1;
+    const T t49 = t42 * t38;
     const T t50 = T(5) * ab_ab * t43 * t45 + T(8) * a_minus_b * t48 + T(8) * ab_ap * t49;
     const T t51 = t50 * t43 * ab_ap + T(8) * t49 - T(8) * t48;
     const T t52 = T(6) * t43 * t45 + T(2) * t39 * t51 * ab_ap - t50 * t43 * ap_ap;
@@ -3526,7 +3530,7 @@ T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
     const T t61 = T(2) * t60 * t39 * ab_ap - t39 * t59 * ap_ap - T(8) * t39 * t52;
     const T t62 = T(2) * t39 * ab_ap * t61 - t60 * t39 * ap_ap - T(8) * t39 * t53;
     const T t63 = T(8) * t39 * t54 + T(2) * t39 * t62 * ab_ap - t39 * ap_ap * t61;
-    const T t64 = t1 + t43 * ab_ap * t44 - t40;
+    const T t64 = t38 + t43 * ab_ap * t44 - t40;
     const T t65 = T(4) * t39 * t64 + t39 * ap_ap * t46 - T(2) * t39 * t47 * ab_ap;
     const T t66 = T(2) * J2 + T(2) * t39 * ab_ap * t64 - t43 * t44 * ap_ap;
     const T t67 = t39 * t47 * ap_ap + T(2) * t39 * t65 * ab_ap + T(4) * t39 * t66;
@@ -3759,7 +3763,7 @@ std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in
 /// the field and its gradient, where
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 153 +, 469 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 47847 +, 61960 ×, 4241 /, 93 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 47847 +, 61959 ×, 4241 /, 93 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3814,147 +3818,148 @@ T scalis_segment_inverse_i10_f_and_grad(const ScalisSegmentInput<T>& in, std::ar
   const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = T(4) * cross_cross - ab_ab * ab_ab;
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
-  if (t4 >= T(0)) {
+  const T t3 = T(4) * cross_cross - ab_ab * ab_ab;
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = max(T((T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross), T(T(100) * cross_cross - ab_ab * ab_ab));
+  if (t3 >= T(0)) {
     // P at least |AB|/2 from the line (D ≥ a²/4): every moment by segment_moments_gauss_panels<T>
     std::array<T, 22> M_panels;
     segment_moments_gauss_panels<T>(10, 12, 10, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t7 = delta_tau * delta_tau;
-    const T t8 = t7 * delta_tau;
-    const T t9 = tau_lo * tau_lo;
-    const T t10 = t9 * tau_lo;
-    const T t11 = t10 * t10;
-    const T t12 = t8 * t8;
-    const T t13 = t12 * delta_tau;
-    const T t14 = t7 * t7;
-    const T t15 = t14 * delta_tau;
-    const T t16 = t9 * t9;
-    const T t17 = t16 * tau_lo;
-    const T t18 = t16 * t16;
-    const T t19 = t14 * t14;
-    const T t20 = t19 * delta_tau;
-    const T t21 = t18 * tau_lo;
-    const T t22 = t11 * tau_lo;
-    F = T(84) * M_panels[3] * t8 * t11 + T(36) * M_panels[7] * t13 * t9 + T(126) * t15 * M_panels[5] * t16 + T(126) * M_panels[4] * t14 * t17 + T(9) * M_panels[1] * delta_tau * t18 + T(84) * t12 * t10 * M_panels[6] + t20 * M_panels[9] + M_panels[0] * t21 + T(36) * t7 * t22 * M_panels[2] + T(9) * M_panels[8] * t19 * tau_lo;
-    const T t23 = M_panels[11] * t21 + T(36) * t13 * t9 * M_panels[18] + T(84) * M_panels[14] * t8 * t11 + T(9) * delta_tau * t18 * M_panels[12] + T(126) * t14 * t17 * M_panels[15] + T(84) * M_panels[17] * t12 * t10 + T(9) * M_panels[19] * t19 * tau_lo + T(126) * M_panels[16] * t15 * t16 + M_panels[20] * t20 + T(36) * M_panels[13] * t7 * t22;
-    G_ap = t23;
-    const T t24 = T(1) / ab_ab;
-    G_E = T(84) * t8 * t11 * M_panels[15] + T(84) * t12 * t10 * M_panels[18] + T(9) * M_panels[20] * t19 * tau_lo + T(36) * M_panels[14] * t7 * t22 + T(126) * M_panels[17] * t15 * t16 + T(36) * M_panels[19] * t13 * t9 + T(9) * M_panels[13] * delta_tau * t18 + T(126) * M_panels[16] * t14 * t17 + t20 * M_panels[21] + t21 * M_panels[12] - ab_ap * t24 * t23;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = delta_tau * delta_tau;
+    const T t7 = t6 * delta_tau;
+    const T t8 = tau_lo * tau_lo;
+    const T t9 = t8 * tau_lo;
+    const T t10 = t9 * t9;
+    const T t11 = t7 * t7;
+    const T t12 = t11 * delta_tau;
+    const T t13 = t6 * t6;
+    const T t14 = t13 * delta_tau;
+    const T t15 = t8 * t8;
+    const T t16 = t15 * tau_lo;
+    const T t17 = t15 * t15;
+    const T t18 = t13 * t13;
+    const T t19 = t18 * delta_tau;
+    const T t20 = t17 * tau_lo;
+    const T t21 = t10 * tau_lo;
+    F = T(84) * M_panels[3] * t7 * t10 + T(36) * M_panels[7] * t12 * t8 + T(126) * t14 * M_panels[5] * t15 + T(126) * M_panels[4] * t13 * t16 + T(9) * M_panels[1] * delta_tau * t17 + T(84) * t11 * t9 * M_panels[6] + t19 * M_panels[9] + M_panels[0] * t20 + T(36) * t6 * t21 * M_panels[2] + T(9) * M_panels[8] * t18 * tau_lo;
+    const T t22 = M_panels[11] * t20 + T(36) * t12 * t8 * M_panels[18] + T(84) * M_panels[14] * t7 * t10 + T(9) * delta_tau * t17 * M_panels[12] + T(126) * t13 * t16 * M_panels[15] + T(84) * M_panels[17] * t11 * t9 + T(9) * M_panels[19] * t18 * tau_lo + T(126) * M_panels[16] * t14 * t15 + M_panels[20] * t19 + T(36) * M_panels[13] * t6 * t21;
+    G_ap = t22;
+    const T t23 = T(1) / ab_ab;
+    G_E = T(84) * t7 * t10 * M_panels[15] + T(84) * t11 * t9 * M_panels[18] + T(9) * M_panels[20] * t18 * tau_lo + T(36) * M_panels[14] * t6 * t21 + T(126) * M_panels[17] * t14 * t15 + T(36) * M_panels[19] * t12 * t8 + T(9) * M_panels[13] * delta_tau * t17 + T(126) * M_panels[16] * t13 * t16 + t19 * M_panels[21] + t20 * M_panels[12] - ab_ap * t23 * t22;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)) or D ≥ a²/100: every moment by segment_moments_gauss_panels<T>
     std::array<T, 22> M_panels;
     segment_moments_gauss_panels<T>(10, 12, 10, ab_ab, ab_ap, a_minus_b, cross_cross, M_panels.data());
-    const T t25 = delta_tau * delta_tau;
+    const T t24 = delta_tau * delta_tau;
+    const T t25 = t24 * t24;
     const T t26 = t25 * t25;
-    const T t27 = t26 * t26;
-    const T t28 = t27 * delta_tau;
-    const T t29 = t25 * delta_tau;
-    const T t30 = t29 * t29;
-    const T t31 = tau_lo * tau_lo;
-    const T t32 = t31 * tau_lo;
-    const T t33 = t31 * t31;
-    const T t34 = t33 * t33;
-    const T t35 = t34 * tau_lo;
-    const T t36 = t32 * t32;
-    const T t37 = t36 * tau_lo;
-    const T t38 = t30 * delta_tau;
-    const T t39 = t33 * tau_lo;
-    const T t40 = t26 * delta_tau;
-    F = t28 * M_panels[9] + T(84) * t30 * t32 * M_panels[6] + M_panels[0] * t35 + T(36) * t25 * M_panels[2] * t37 + T(36) * M_panels[7] * t38 * t31 + T(126) * M_panels[4] * t26 * t39 + T(84) * t29 * t36 * M_panels[3] + T(9) * M_panels[8] * t27 * tau_lo + T(126) * M_panels[5] * t40 * t33 + T(9) * M_panels[1] * delta_tau * t34;
-    G_ap = M_panels[11] * t35 + T(126) * M_panels[16] * t40 * t33 + T(84) * M_panels[17] * t30 * t32 + T(36) * M_panels[13] * t25 * t37 + M_panels[20] * t28 + T(126) * t26 * t39 * M_panels[15] + T(9) * delta_tau * t34 * M_panels[12] + T(9) * t27 * tau_lo * M_panels[19] + T(84) * M_panels[14] * t29 * t36 + T(36) * t38 * t31 * M_panels[18];
-    const T t41 = t3 * t3;
+    const T t27 = t26 * delta_tau;
+    const T t28 = t24 * delta_tau;
+    const T t29 = t28 * t28;
+    const T t30 = tau_lo * tau_lo;
+    const T t31 = t30 * tau_lo;
+    const T t32 = t30 * t30;
+    const T t33 = t32 * t32;
+    const T t34 = t33 * tau_lo;
+    const T t35 = t31 * t31;
+    const T t36 = t35 * tau_lo;
+    const T t37 = t29 * delta_tau;
+    const T t38 = t32 * tau_lo;
+    const T t39 = t25 * delta_tau;
+    F = t27 * M_panels[9] + T(84) * t29 * t31 * M_panels[6] + M_panels[0] * t34 + T(36) * t24 * M_panels[2] * t36 + T(36) * M_panels[7] * t37 * t30 + T(126) * M_panels[4] * t25 * t38 + T(84) * t28 * t35 * M_panels[3] + T(9) * M_panels[8] * t26 * tau_lo + T(126) * M_panels[5] * t39 * t32 + T(9) * M_panels[1] * delta_tau * t33;
+    G_ap = M_panels[11] * t34 + T(126) * M_panels[16] * t39 * t32 + T(84) * M_panels[17] * t29 * t31 + T(36) * M_panels[13] * t24 * t36 + M_panels[20] * t27 + T(126) * t25 * t38 * M_panels[15] + T(9) * delta_tau * t33 * M_panels[12] + T(9) * t26 * tau_lo * M_panels[19] + T(84) * M_panels[14] * t28 * t35 + T(36) * t37 * t30 * M_panels[18];
+    const T t40 = T(1) / ap_ap;
+    const T t41 = t40 * t40;
     const T t42 = t41 * t41;
-    const T t43 = t42 * t3;
+    const T t43 = t42 * t40;
     const T t44 = T(1) / bp_bp;
     const T t45 = t44 * t44;
     const T t46 = t45 * t45;
     const T t47 = t46 * t44;
-    const T t48 = T(9) * delta_tau * t34 + t28 + T(84) * t29 * t36 + T(9) * t27 * tau_lo + t35 + T(84) * t30 * t32 + T(36) * t38 * t31 + T(36) * t25 * t37 + T(126) * t40 * t33 + T(126) * t26 * t39;
+    const T t48 = T(9) * delta_tau * t33 + t27 + T(84) * t28 * t35 + T(9) * t26 * tau_lo + t34 + T(84) * t29 * t31 + T(36) * t37 * t30 + T(36) * t24 * t36 + T(126) * t39 * t32 + T(126) * t25 * t38;
     const T t49 = T(1) / ab_ab;
-    G_E = (T(1) / T(10)) * (T(504) * t26 * t39 * M_panels[3] + T(72) * M_panels[7] * t27 * tau_lo + T(252) * t38 * t31 * M_panels[6] + T(9) * M_panels[0] * delta_tau * t34 + T(504) * M_panels[5] * t30 * t32 + T(9) * M_panels[8] * t28 + T(252) * t29 * M_panels[2] * t36 + T(72) * M_panels[1] * t25 * t37 + T(630) * M_panels[4] * t40 * t33 + t43 * t35 - t47 * t48) * t49;
+    G_E = (T(1) / T(10)) * (T(504) * t25 * t38 * M_panels[3] + T(72) * M_panels[7] * t26 * tau_lo + T(252) * t37 * t30 * M_panels[6] + T(9) * M_panels[0] * delta_tau * t33 + T(504) * M_panels[5] * t29 * t31 + T(9) * M_panels[8] * t27 + T(252) * t28 * M_panels[2] * t35 + T(72) * M_panels[1] * t24 * t36 + T(630) * M_panels[4] * t39 * t32 + t43 * t34 - t47 * t48) * t49;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t50 = sqrt(cross_cross);
     const T t51 = T(1) / t50;
     const T J2 = t51 * atan2(t50, ap_bp);
-    const T t52 = delta_tau * delta_tau;
-    const T t53 = t52 * t52;
-    const T t54 = t53 * delta_tau;
-    const T t55 = tau_lo * tau_lo;
-    const T t56 = t55 * t55;
-    const T t57 = T(1) / cross_cross;
-    const T t58 = T(1) / bp_bp;
-    const T t59 = ab_ap * t3 + J2 * ab_ab + t58 * a_minus_b;
-    const T t60 = t58 * t58;
-    const T t61 = t3 * t3;
-    const T t62 = T(3) * t57 * t59 * ab_ab + T(2) * t60 * a_minus_b + T(2) * ab_ap * t61;
-    const T t63 = t57 * ab_ap * t62 + T(2) * t61 - T(2) * t60;
-    const T t64 = T(1) / ab_ab;
-    const T t65 = t60 * t58;
-    const T t66 = t61 * t3;
-    const T t67 = T(5) * t57 * t62 * ab_ab + T(8) * t65 * a_minus_b + T(8) * ab_ap * t66;
-    const T t68 = t57 * t67 * ab_ap + T(8) * t66 - T(8) * t65;
-    const T t69 = t57 * t67 * ap_ap - T(2) * t68 * ab_ap * t64 - T(6) * t57 * t62;
-    const T t70 = T(6) * t63 * t64 - t68 * ap_ap * t64 - T(2) * ab_ap * t69 * t64;
-    const T t71 = t60 * t60;
+    const T t52 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t52);
+    const T t53 = delta_tau * delta_tau;
+    const T t54 = t53 * t53;
+    const T t55 = t54 * delta_tau;
+    const T t56 = tau_lo * tau_lo;
+    const T t57 = t56 * t56;
+    const T t58 = T(1) / cross_cross;
+    const T t59 = T(1) / bp_bp;
+    const T t60 = ab_ap * t52 + J2 * ab_ab + t59 * a_minus_b;
+    const T t61 = t59 * t59;
+    const T t62 = t52 * t52;
+    const T t63 = T(3) * t58 * t60 * ab_ab + T(2) * t61 * a_minus_b + T(2) * ab_ap * t62;
+    const T t64 = t58 * ab_ap * t63 + T(2) * t62 - T(2) * t61;
+    const T t65 = T(1) / ab_ab;
+    const T t66 = t61 * t59;
+    const T t67 = t62 * t52;
+    const T t68 = T(5) * t58 * t63 * ab_ab + T(8) * t66 * a_minus_b + T(8) * ab_ap * t67;
+    const T t69 = t58 * t68 * ab_ap + T(8) * t67 - T(8) * t66;
+    const T t70 = t58 * t68 * ap_ap - T(2) * t69 * ab_ap * t65 - T(6) * t58 * t63;
+    const T t71 = T(6) * t64 * t65 - t69 * ap_ap * t65 - T(2) * ab_ap * t70 * t65;
     const T t72 = t61 * t61;
-    const T t73 = T(48) * t71 * a_minus_b + T(7) * t57 * t67 * ab_ab + T(48) * ab_ap * t72;
-    const T t74 = T(48) * t72 + t57 * ab_ap * t73 - T(48) * t71;
-    const T t75 = t57 * ap_ap * t73 - T(8) * t57 * t67 - T(2) * ab_ap * t74 * t64;
-    const T t76 = T(2) * t75 * ab_ap * t64 + ap_ap * t74 * t64 - T(8) * t68 * t64;
-    const T t77 = T(2) * ab_ap * t64 * t76 + T(8) * t69 * t64 - t75 * ap_ap * t64;
-    const T t78 = T(8) * t70 * t64 + ap_ap * t64 * t76 - T(2) * ab_ap * t77 * t64;
-    const T t79 = t56 * t56;
-    const T t80 = t79 * tau_lo;
-    const T t81 = T(4) * t57 * t59 + T(2) * ab_ap * t63 * t64 - t57 * ap_ap * t62;
-    const T t82 = ap_ap * t69 * t64 + T(6) * t81 * t64 + T(2) * ab_ap * t70 * t64;
-    const T t83 = ap_ap * t77 * t64 + T(8) * t82 * t64 + T(2) * ab_ap * t78 * t64;
-    const T t84 = t58 - t3 - t57 * ab_ap * t59;
-    const T t85 = T(2) * ab_ap * t81 * t64 - ap_ap * t63 * t64 - T(4) * t84 * t64;
-    const T t86 = T(6) * t85 * t64 + T(2) * ab_ap * t82 * t64 - ap_ap * t70 * t64;
-    const T t87 = T(2) * ab_ap * t83 * t64 + T(8) * t64 * t86 - ap_ap * t78 * t64;
-    const T t88 = t52 * delta_tau;
-    const T t89 = t88 * t88;
-    const T t90 = t89 * delta_tau;
-    const T t91 = t55 * tau_lo;
-    const T t92 = T(2) * t84 * ab_ap * t64 + t57 * ap_ap * t59 - T(2) * J2;
-    const T t93 = t81 * ap_ap * t64 + T(4) * t92 * t64 - T(2) * ab_ap * t85 * t64;
-    const T t94 = T(2) * ab_ap * t64 * t86 - T(6) * t64 * t93 - t82 * ap_ap * t64;
-    const T t95 = T(8) * t94 * t64 + T(2) * t87 * ab_ap * t64 - t83 * ap_ap * t64;
-    const T t96 = t53 * t53;
-    const T t97 = t91 * t91;
-    const T t98 = t97 * tau_lo;
-    const T t99 = t96 * delta_tau;
-    const T t100 = t56 * tau_lo;
-    F = (T(21) / T(64)) * t54 * t56 * t78 * t64 + (T(1) / T(384)) * t57 * t80 * t73 + (T(3) / T(32)) * t87 * t90 * t55 * t64 + (T(7) / T(32)) * t83 * t89 * t91 * t64 + (T(3) / T(128)) * t74 * delta_tau * t79 * t64 + (T(3) / T(128)) * t95 * t96 * tau_lo * t64 - (T(7) / T(32)) * t88 * t97 * t64 * t76 - (T(3) / T(32)) * t75 * t52 * t98 * t64 - (T(1) / T(384)) * t99 * (T(8) * (T(6) * (T(2) * ab_ap * t64 * t93 + T(4) * (T(2) * ab_ap * t92 * t64 - t84 * ap_ap * t64 - (T(2) * ab_ap * J2 + log_ratio) * t64) * t64 + t85 * ap_ap * t64) * t64 + ap_ap * t64 * t86 - T(2) * ab_ap * t94 * t64) * t64 + t87 * ap_ap * t64 - T(2) * ab_ap * t95 * t64) * t64 - (T(21) / T(64)) * t53 * t100 * t77 * t64;
-    const T t101 = t72 * t3;
-    const T t102 = t71 * t58;
-    const T t103 = T(128) * t102 * a_minus_b + T(3) * t57 * ab_ab * t73 + T(128) * ab_ap * t101;
-    const T t104 = T(128) * t101 + t57 * ab_ap * t103 - T(128) * t102;
-    const T t105 = T(10) * t57 * t73 + T(6) * ab_ap * t104 * t64 - T(3) * t57 * ap_ap * t103;
-    const T t106 = T(10) * t74 * t64 + T(2) * ab_ap * t105 * t64 - T(3) * t104 * ap_ap * t64;
-    const T t107 = T(2) * t106 * ab_ap * t64 - t105 * ap_ap * t64 - T(10) * t75 * t64;
-    const T t108 = T(2) * ab_ap * t107 * t64 - t106 * ap_ap * t64 - T(10) * t64 * t76;
-    const T t109 = T(10) * t77 * t64 + t107 * ap_ap * t64 - T(2) * ab_ap * t108 * t64;
-    const T t110 = T(10) * t78 * t64 - T(2) * ab_ap * t109 * t64 - t108 * ap_ap * t64;
-    const T t111 = T(2) * ab_ap * t64 * t110 + T(10) * t83 * t64 + ap_ap * t109 * t64;
-    G_ap = (T(3) / T(1280)) * t96 * tau_lo * t111 * t64 + (T(1) / T(1280)) * t57 * t80 * t103 + (T(3) / T(320)) * t105 * t52 * t98 * t64 + (T(1) / T(3840)) * (T(2) * ab_ap * t111 * t64 + T(10) * t87 * t64 - ap_ap * t64 * t110) * t99 * t64 + (T(21) / T(640)) * t107 * t53 * t100 * t64 + (T(7) / T(320)) * t106 * t88 * t97 * t64 + (T(9) / T(1280)) * t104 * delta_tau * t79 * t64 + (T(21) / T(640)) * t108 * t54 * t56 * t64 + (T(3) / T(320)) * t90 * t55 * t64 * t110 - (T(7) / T(320)) * t89 * t91 * t109 * t64;
-    const T t112 = T(9) * delta_tau * t79 + t99 + T(84) * t88 * t97 + T(9) * t96 * tau_lo + t80 + T(84) * t89 * t91 + T(36) * t90 * t55 + T(36) * t52 * t98 + T(126) * t54 * t56 + T(126) * t53 * t100;
-    G_E = -(T(1) / T(1280)) * (T(210) * t54 * t56 * t77 * t64 + T(168) * t53 * t100 * t64 * t76 + T(128) * t102 * t112 + T(84) * t75 * t88 * t97 * t64 - T(168) * t89 * t91 * t78 * t64 - T(84) * t83 * t90 * t55 * t64 - T(24) * t74 * t52 * t98 * t64 - T(3) * t57 * delta_tau * t79 * t73 - T(3) * t95 * t99 * t64 - T(24) * t87 * t96 * tau_lo * t64 - T(128) * t101 * t80) * t64;
+    const T t73 = t62 * t62;
+    const T t74 = T(48) * t72 * a_minus_b + T(7) * t58 * t68 * ab_ab + T(48) * ab_ap * t73;
+    const T t75 = T(48) * t73 + t58 * ab_ap * t74 - T(48) * t72;
+    const T t76 = t58 * ap_ap * t74 - T(8) * t58 * t68 - T(2) * ab_ap * t75 * t65;
+    const T t77 = T(2) * t76 * ab_ap * t65 + ap_ap * t75 * t65 - T(8) * t69 * t65;
+    const T t78 = T(2) * ab_ap * t65 * t77 + T(8) * t70 * t65 - t76 * ap_ap * t65;
+    const T t79 = T(8) * t71 * t65 + ap_ap * t65 * t77 - T(2) * ab_ap * t78 * t65;
+    const T t80 = t57 * t57;
+    const T t81 = t80 * tau_lo;
+    const T t82 = T(4) * t58 * t60 + T(2) * ab_ap * t64 * t65 - t58 * ap_ap * t63;
+    const T t83 = ap_ap * t70 * t65 + T(6) * t82 * t65 + T(2) * ab_ap * t71 * t65;
+    const T t84 = ap_ap * t78 * t65 + T(8) * t83 * t65 + T(2) * ab_ap * t79 * t65;
+    const T t85 = t59 - t52 - t58 * ab_ap * t60;
+    const T t86 = T(2) * ab_ap * t82 * t65 - ap_ap * t64 * t65 - T(4) * t85 * t65;
+    const T t87 = T(6) * t86 * t65 + T(2) * ab_ap * t83 * t65 - ap_ap * t71 * t65;
+    const T t88 = T(2) * ab_ap * t84 * t65 + T(8) * t65 * t87 - ap_ap * t79 * t65;
+    const T t89 = t53 * delta_tau;
+    const T t90 = t89 * t89;
+    const T t91 = t90 * delta_tau;
+    const T t92 = t56 * tau_lo;
+    const T t93 = T(2) * t85 * ab_ap * t65 + t58 * ap_ap * t60 - T(2) * J2;
+    const T t94 = t82 * ap_ap * t65 + T(4) * t93 * t65 - T(2) * ab_ap * t86 * t65;
+    const T t95 = T(2) * ab_ap * t65 * t87 - T(6) * t65 * t94 - t83 * ap_ap * t65;
+    const T t96 = T(8) * t95 * t65 + T(2) * t88 * ab_ap * t65 - t84 * ap_ap * t65;
+    const T t97 = t54 * t54;
+    const T t98 = t92 * t92;
+    const T t99 = t98 * tau_lo;
+    const T t100 = t97 * delta_tau;
+    const T t101 = t57 * tau_lo;
+    F = (T(21) / T(64)) * t55 * t57 * t79 * t65 + (T(1) / T(384)) * t58 * t81 * t74 + (T(3) / T(32)) * t88 * t91 * t56 * t65 + (T(7) / T(32)) * t84 * t90 * t92 * t65 + (T(3) / T(128)) * t75 * delta_tau * t80 * t65 + (T(3) / T(128)) * t96 * t97 * tau_lo * t65 - (T(7) / T(32)) * t89 * t98 * t65 * t77 - (T(3) / T(32)) * t76 * t53 * t99 * t65 - (T(1) / T(384)) * t100 * (T(8) * (T(6) * (T(2) * ab_ap * t65 * t94 + T(4) * (T(2) * ab_ap * t93 * t65 - t85 * ap_ap * t65 - (T(2) * ab_ap * J2 + log_ratio) * t65) * t65 + t86 * ap_ap * t65) * t65 + ap_ap * t65 * t87 - T(2) * ab_ap * t95 * t65) * t65 + t88 * ap_ap * t65 - T(2) * ab_ap * t96 * t65) * t65 - (T(21) / T(64)) * t54 * t101 * t78 * t65;
+    const T t102 = t73 * t52;
+    const T t103 = t72 * t59;
+    const T t104 = T(128) * t103 * a_minus_b + T(3) * t58 * ab_ab * t74 + T(128) * ab_ap * t102;
+    const T t105 = T(128) * t102 + t58 * ab_ap * t104 - T(128) * t103;
+    const T t106 = T(10) * t58 * t74 + T(6) * ab_ap * t105 * t65 - T(3) * t58 * ap_ap * t104;
+    const T t107 = T(10) * t75 * t65 + T(2) * ab_ap * t106 * t65 - T(3) * t105 * ap_ap * t65;
+    const T t108 = T(2) * t107 * ab_ap * t65 - t106 * ap_ap * t65 - T(10) * t76 * t65;
+    const T t109 = T(2) * ab_ap * t108 * t65 - t107 * ap_ap * t65 - T(10) * t65 * t77;
+    const T t110 = T(10) * t78 * t65 + t108 * ap_ap * t65 - T(2) * ab_ap * t109 * t65;
+    const T t111 = T(10) * t79 * t65 - T(2) * ab_ap * t110 * t65 - t109 * ap_ap * t65;
+    const T t112 = T(2) * ab_ap * t65 * t111 + T(10) * t84 * t65 + ap_ap * t110 * t65;
+    G_ap = (T(3) / T(1280)) * t97 * tau_lo * t112 * t65 + (T(1) / T(1280)) * t58 * t81 * t104 + (T(3) / T(320)) * t106 * t53 * t99 * t65 + (T(1) / T(3840)) * (T(2) * ab_ap * t112 * t65 + T(10) * t88 * t65 - ap_ap * t65 * t111) * t100 * t65 + (T(21) / T(640)) * t108 * t54 * t101 * t65 + (T(7) / T(320)) * t107 * t89 * t98 * t65 + (T(9) / T(1280)) * t105 * delta_tau * t80 * t65 + (T(21) / T(640)) * t109 * t55 * t57 * t65 + (T(3) / T(320)) * t91 * t56 * t65 * t111 - (T(7) / T(320)) * t90 * t92 * t110 * t65;
+    const T t113 = T(9) * delta_tau * t80 + t100 + T(84) * t89 * t98 + T(9) * t97 * tau_lo + t81 + T(84) * t90 * t92 + T(36) * t91 * t56 + T(36) * t53 * t99 + T(126) * t55 * t57 + T(126) * t54 * t101;
+    G_E = -(T(1) / T(1280)) * (T(210) * t55 * t57 * t78 * t65 + T(168) * t54 * t101 * t65 * t77 + T(128) * t103 * t113 + T(84) * t76 * t89 * t98 * t65 - T(168) * t90 * t92 * t79 * t65 - T(84) * t84 * t91 * t56 * t65 - T(24) * t75 * t53 * t99 * t65 - T(3) * t58 * delta_tau * t80 * t74 - T(3) * t96 * t100 * t65 - T(24) * t88 * t97 * tau_lo * t65 - T(128) * t102 * t81) * t65;
   }
-  const T t113 = in.sigma * in.sigma;
-  const T t114 = t113 * t113;
-  const T t115 = t114 * in.sigma;
-  const T t116 = t115 * t115;
-  const T g_factor = -T(10) * length * t116;
-  f = length * t116 * F;
+  const T t114 = in.sigma * in.sigma;
+  const T t115 = t114 * t114;
+  const T t116 = t115 * in.sigma;
+  const T t117 = t116 * t116;
+  const T g_factor = -T(10) * length * t117;
+  f = length * t117 * F;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = (foot1 * G_ap - G_E * ab1) * g_factor;
   grad[2] = -(G_E * ab2 - foot2 * G_ap) * g_factor;

@@ -2137,7 +2137,6 @@ T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T log_ratio = log(q1 / c);
   T F;
   const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
   const T t2 = -a_minus_b * b;
@@ -2149,6 +2148,7 @@ T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
+    const T log_ratio = log(q1 / c);
     const T t4 = -b;
     const T t5 = J_downward<T>(2, a, D, t4, c, a_minus_b, q1);
     const T t6 = T(1) / a;
@@ -2157,6 +2157,7 @@ T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
     // recurrence (1) upwards from J_1, J_2
     const T t7 = sqrt(D);
     const T J2 = atan2(t7, c_minus_b) / t7;
+    const T log_ratio = log(q1 / c);
     const T t8 = T(1) / a;
     F = (T(1) / T(2)) * in.w[1] * t8 * (log_ratio + T(2) * J2 * b) + in.w[0] * J2;
   }
@@ -2326,47 +2327,49 @@ T segment_cauchy_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
-  const T t5 = -a_minus_b * b;
-  const T t6 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 2, a, b, c, T(0), T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
-    const T t7 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] - t8 * b * t7;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] - t7 * b * t6;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / c;
+    const T log_ratio = log(q1 * t8);
     const T t9 = T(1) / a;
     const T t10 = -b;
     const T t11 = J_downward<T>(4, a, D, t10, c, a_minus_b, q1);
     const T t12 = T(1) / q1;
-    const T t13 = T(2) * t11 * D - a_minus_b * t12 - b * t3;
+    const T t13 = T(2) * t11 * D - a_minus_b * t12 - b * t8;
     F = t9 * t13 * in.w[0] + (T(1) / T(2)) * in.w[1] * t9 * (log_ratio + T(2) * t9 * b * t13);
-    G_ap = t11 * in.w[0] + (T(1) / T(2)) * in.w[1] * t9 * (t3 + T(2) * t11 * b - t12);
-    const T t14 = in.w[0] * t3;
+    G_ap = t11 * in.w[0] + (T(1) / T(2)) * in.w[1] * t9 * (t8 + T(2) * t11 * b - t12);
+    const T t14 = in.w[0] * t8;
     G_E = (T(1) / T(2)) * t9 * (in.w[1] * t9 * t13 + t14 - (in.w[1] + in.w[0]) * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(D);
     const T t16 = T(1) / t15;
     const T J2 = t16 * atan2(t15, c_minus_b);
-    const T t17 = T(1) / a;
-    F = in.w[0] * J2 + (T(1) / T(2)) * in.w[1] * t17 * (T(2) * b * J2 + log_ratio);
-    const T t18 = T(1) / D;
-    const T t19 = T(1) / q1;
-    const T t20 = a_minus_b * t19 + a * J2 + b * t3;
-    G_ap = (T(1) / T(2)) * in.w[1] * (t3 + t18 * b * t20 - t19) * t17 + (T(1) / T(2)) * t18 * t20 * in.w[0];
-    const T t21 = in.w[0] * t3;
-    G_E = (T(1) / T(2)) * (t21 + in.w[1] * J2 - (in.w[1] + in.w[0]) * t19) * t17;
+    const T t17 = T(1) / c;
+    const T log_ratio = log(q1 * t17);
+    const T t18 = T(1) / a;
+    F = in.w[0] * J2 + (T(1) / T(2)) * in.w[1] * t18 * (T(2) * b * J2 + log_ratio);
+    const T t19 = T(1) / D;
+    const T t20 = T(1) / q1;
+    const T t21 = a_minus_b * t20 + a * J2 + b * t17;
+    G_ap = (T(1) / T(2)) * in.w[1] * (t17 + t19 * b * t21 - t20) * t18 + (T(1) / T(2)) * t19 * t21 * in.w[0];
+    const T t22 = in.w[0] * t17;
+    G_E = (T(1) / T(2)) * (t22 + in.w[1] * J2 - (in.w[1] + in.w[0]) * t20) * t18;
   }
   const T g_factor = -T(2) * length * in.s;
   f = F * length;
@@ -2433,45 +2436,45 @@ bool segment_cauchy_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
-  const T t5 = -a_minus_b * b;
-  const T t6 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 2, a, b, c, T(0), T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
-    const T t7 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = in.w[0] * M_flat[4] + M_flat[5] * in.w[1] - t8 * t7 * b;
+    const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = in.w[0] * M_flat[4] + M_flat[5] * in.w[1] - t7 * t6 * b;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t9 = sqrt(D);
-    const T t10 = T(1) / t9;
-    const T J2 = atan2(t9, c_minus_b) * t10;
+    const T t8 = sqrt(D);
+    const T t9 = T(1) / t8;
+    const T J2 = atan2(t8, c_minus_b) * t9;
+    const T t10 = T(1) / c;
+    const T log_ratio = log(q1 * t10);
     const T t11 = T(1) / a;
     F = (T(1) / T(2)) * t11 * (log_ratio + T(2) * b * J2) * in.w[1] + in.w[0] * J2;
     const T t12 = T(1) / q1;
     const T t13 = a_minus_b * t12;
-    const T t14 = b * t3;
+    const T t14 = b * t10;
     const T t15 = t13 + t14 + a * J2;
     const T t16 = T(1) / D;
-    G_ap = (T(1) / T(2)) * in.w[0] * t15 * t16 - (T(1) / T(2)) * t11 * (t12 - t3 - b * t15 * t16) * in.w[1];
+    G_ap = (T(1) / T(2)) * in.w[0] * t15 * t16 - (T(1) / T(2)) * t11 * (t12 - t10 - b * t15 * t16) * in.w[1];
     const T t17 = in.w[0] + in.w[1];
-    G_E = (T(1) / T(2)) * t11 * (in.w[1] * J2 + in.w[0] * t3 - t17 * t12);
+    G_E = (T(1) / T(2)) * t11 * (in.w[1] * J2 + in.w[0] * t10 - t17 * t12);
   }
   const T g_factor = -T(2) * length * in.s;
   f = F * length;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
   grad[1] = -g_factor * (ab1 * G_E - G_ap * foot1);
   grad[2] = g_factor * (foot2 * G_ap - ab2 * G_E);
-  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -2520,7 +2523,6 @@ T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T log_ratio = log(q1 / c);
   T F;
   const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
   const T t2 = -b * a_minus_b;
@@ -2532,6 +2534,7 @@ T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
     F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
+    const T log_ratio = log(q1 / c);
     const T t4 = T(1) / a;
     const T t5 = -b;
     const T t6 = J_downward<T>(2, a, D, t5, c, a_minus_b, q1);
@@ -2541,6 +2544,7 @@ T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = sqrt(D);
     const T J2 = atan2(t8, c_minus_b) / t8;
+    const T log_ratio = log(q1 / c);
     const T t9 = T(1) / a;
     const T t10 = log_ratio + T(2) * J2 * b;
     F = t9 * (t9 * b * t10 + T(1) - J2 * c) * in.w[2] + (T(1) / T(2)) * t9 * t10 * in.w[1] + in.w[0] * J2;
@@ -2606,45 +2610,47 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(t3 * q1);
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
-  const T t5 = -a_minus_b * b;
-  const T t6 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 3, a, b, c, T(0), T(1), M_flat.data());
-    const T t7 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] - t8 * t7 * b;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] - t7 * t6 * b;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / c;
+    const T log_ratio = log(t8 * q1);
     const T t9 = T(1) / a;
     const T t10 = -b;
     const T t11 = J_downward<T>(4, a, D, t10, c, a_minus_b, q1);
     const T t12 = T(1) / q1;
-    const T t13 = T(2) * b * t11 + t3 - t12;
-    const T t14 = T(2) * D * t11 - t3 * b - a_minus_b * t12;
+    const T t13 = T(2) * b * t11 + t8 - t12;
+    const T t14 = T(2) * D * t11 - t8 * b - a_minus_b * t12;
     G_ap = (T(1) / T(2)) * t9 * t13 * in.w[1] + in.w[0] * t11 - in.w[2] * t9 * (c * t11 - t9 * t13 * b - t9 * t14);
-    const T t15 = t3 * in.w[0];
+    const T t15 = t8 * in.w[0];
     G_E = (T(1) / T(2)) * (t9 * in.w[1] * t14 + t15 + in.w[2] * t9 * (log_ratio + T(2) * t9 * b * t14) - (in.w[2] + in.w[0] + in.w[1]) * t12) * t9;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t16 = sqrt(D);
     const T t17 = T(1) / t16;
     const T J2 = atan2(t16, c_minus_b) * t17;
-    const T t18 = T(1) / q1;
-    const T t19 = t3 * b + a * J2 + a_minus_b * t18;
-    const T t20 = T(1) / D;
-    const T t21 = T(1) / a;
-    const T t22 = t18 - t3 - t19 * t20 * b;
-    G_ap = (T(1) / T(2)) * t19 * t20 * in.w[0] - (T(1) / T(2)) * in.w[2] * (T(2) * t21 * t22 * b + c * t19 * t20 - T(2) * J2) * t21 - (T(1) / T(2)) * t21 * t22 * in.w[1];
-    const T t23 = t3 * in.w[0];
-    G_E = (T(1) / T(2)) * (t23 + in.w[2] * t21 * (T(2) * b * J2 + log_ratio) + in.w[1] * J2 - (in.w[2] + in.w[0] + in.w[1]) * t18) * t21;
+    const T t18 = T(1) / c;
+    const T log_ratio = log(t18 * q1);
+    const T t19 = T(1) / q1;
+    const T t20 = t18 * b + a * J2 + a_minus_b * t19;
+    const T t21 = T(1) / D;
+    const T t22 = T(1) / a;
+    const T t23 = t19 - t18 - t20 * t21 * b;
+    G_ap = (T(1) / T(2)) * t20 * t21 * in.w[0] - (T(1) / T(2)) * in.w[2] * (T(2) * t22 * t23 * b + c * t20 * t21 - T(2) * J2) * t22 - (T(1) / T(2)) * t22 * t23 * in.w[1];
+    const T t24 = t18 * in.w[0];
+    G_E = (T(1) / T(2)) * (t24 + in.w[2] * t22 * (T(2) * b * J2 + log_ratio) + in.w[1] * J2 - (in.w[2] + in.w[0] + in.w[1]) * t19) * t22;
   }
   const T g_factor = -T(2) * in.s * length;
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
@@ -2710,26 +2716,26 @@ T segment_cauchy_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
-  const T t5 = -b * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = -b * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 3, a, b, c, T(0), T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
-    const T t7 = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = M_flat[6] * in.w[1] + M_flat[7] * in.w[2] + in.w[0] * M_flat[5] - b * t7 * t8;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = M_flat[6] * in.w[1] + M_flat[7] * in.w[2] + in.w[0] * M_flat[5] - b * t6 * t7;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
-    const T t9 = b * t3;
+    const T t8 = T(1) / c;
+    const T log_ratio = log(q1 * t8);
+    const T t9 = b * t8;
     const T t10 = T(1) / q1;
     const T t11 = t10 * a_minus_b;
     const T t12 = -b;
@@ -2738,27 +2744,29 @@ T segment_cauchy_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
     const T t15 = T(1) / a;
     const T t16 = T(2) * b * t14 * t15 - log_ratio;
     F = (c * t14 * t15 + T(1) - b * t16 * t15) * in.w[2] * t15 - in.w[0] * t14 * t15 - (T(1) / T(2)) * t16 * in.w[1] * t15;
-    const T t17 = T(2) * t13 * b + t3 - t10;
+    const T t17 = T(2) * t13 * b + t8 - t10;
     G_ap = (T(1) / T(2)) * t17 * in.w[1] * t15 + in.w[0] * t13 + (b * t17 * t15 - t13 * c - t14 * t15) * in.w[2] * t15;
     const T t18 = t10 * (in.w[0] + in.w[1] + in.w[2]);
-    G_E = -(T(1) / T(2)) * t15 * (t18 + in.w[1] * t14 * t15 + t16 * in.w[2] * t15 - in.w[0] * t3);
+    G_E = -(T(1) / T(2)) * t15 * (t18 + in.w[1] * t14 * t15 + t16 * in.w[2] * t15 - in.w[0] * t8);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = sqrt(D);
     const T t20 = T(1) / t19;
     const T J2 = atan2(t19, c_minus_b) * t20;
-    const T t21 = log_ratio + T(2) * b * J2;
-    const T t22 = T(1) / a;
-    F = in.w[0] * J2 + (T(1) / T(2)) * in.w[1] * t21 * t22 + in.w[2] * t22 * (b * t21 * t22 + T(1) - c * J2);
-    const T t23 = b * t3;
-    const T t24 = T(1) / q1;
-    const T t25 = t24 * a_minus_b;
-    const T t26 = J2 * a + t23 + t25;
-    const T t27 = T(1) / D;
-    const T t28 = t3 + b * t26 * t27 - t24;
-    G_ap = (T(1) / T(2)) * in.w[1] * t22 * t28 + (T(1) / T(2)) * in.w[0] * t26 * t27 + (T(1) / T(2)) * (T(2) * b * t22 * t28 + T(2) * J2 - c * t26 * t27) * in.w[2] * t22;
-    const T t29 = t24 * (in.w[0] + in.w[1] + in.w[2]);
-    G_E = -(T(1) / T(2)) * (t29 - t21 * in.w[2] * t22 - in.w[0] * t3 - in.w[1] * J2) * t22;
+    const T t21 = T(1) / c;
+    const T log_ratio = log(q1 * t21);
+    const T t22 = log_ratio + T(2) * b * J2;
+    const T t23 = T(1) / a;
+    F = in.w[0] * J2 + (T(1) / T(2)) * in.w[1] * t22 * t23 + in.w[2] * t23 * (b * t22 * t23 + T(1) - c * J2);
+    const T t24 = b * t21;
+    const T t25 = T(1) / q1;
+    const T t26 = t25 * a_minus_b;
+    const T t27 = J2 * a + t24 + t26;
+    const T t28 = T(1) / D;
+    const T t29 = t21 + b * t27 * t28 - t25;
+    G_ap = (T(1) / T(2)) * in.w[1] * t23 * t29 + (T(1) / T(2)) * in.w[0] * t27 * t28 + (T(1) / T(2)) * (T(2) * b * t23 * t29 + T(2) * J2 - c * t27 * t28) * in.w[2] * t23;
+    const T t30 = t25 * (in.w[0] + in.w[1] + in.w[2]);
+    G_E = -(T(1) / T(2)) * (t30 - t22 * in.w[2] * t23 - in.w[0] * t21 - in.w[1] * J2) * t23;
   }
   const T g_factor = -T(2) * length * in.s;
   f = F * length;
@@ -2825,47 +2833,47 @@ bool segment_cauchy_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T a_minus_b = -ab_bp * in.s;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
-  const T t5 = -a_minus_b * b;
-  const T t6 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 3, a, b, c, T(0), T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
-    const T t7 = in.w[1] * M_flat[5] + M_flat[4] * in.w[0] + in.w[2] * M_flat[6];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6] - t7 * t8 * b;
+    const T t6 = in.w[1] * M_flat[5] + M_flat[4] * in.w[0] + in.w[2] * M_flat[6];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6] - t6 * t7 * b;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t9 = sqrt(D);
-    const T t10 = T(1) / t9;
-    const T J2 = atan2(t9, c_minus_b) * t10;
+    const T t8 = sqrt(D);
+    const T t9 = T(1) / t8;
+    const T J2 = atan2(t8, c_minus_b) * t9;
+    const T t10 = T(1) / c;
+    const T log_ratio = log(q1 * t10);
     const T t11 = T(2) * J2 * b + log_ratio;
     const T t12 = T(1) / a;
     F = J2 * in.w[0] + (t11 * t12 * b + T(1) - c * J2) * in.w[2] * t12 + (T(1) / T(2)) * in.w[1] * t11 * t12;
-    const T t13 = t3 * b;
+    const T t13 = t10 * b;
     const T t14 = T(1) / q1;
     const T t15 = t14 * a_minus_b;
     const T t16 = t13 + t15 + J2 * a;
     const T t17 = T(1) / D;
-    const T t18 = t3 + t16 * t17 * b - t14;
+    const T t18 = t10 + t16 * t17 * b - t14;
     G_ap = (T(1) / T(2)) * in.w[1] * t12 * t18 + (T(1) / T(2)) * (T(2) * t12 * t18 * b + T(2) * J2 - t16 * c * t17) * in.w[2] * t12 + (T(1) / T(2)) * t16 * t17 * in.w[0];
     const T t19 = in.w[1] + in.w[2] + in.w[0];
-    G_E = (T(1) / T(2)) * (t3 * in.w[0] + t11 * in.w[2] * t12 + in.w[1] * J2 - t14 * t19) * t12;
+    G_E = (T(1) / T(2)) * (t10 * in.w[0] + t11 * in.w[2] * t12 + in.w[1] * J2 - t14 * t19) * t12;
   }
   const T g_factor = -T(2) * length * in.s;
   f = length * F;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
   grad[2] = -(G_E * ab2 - G_ap * foot2) * g_factor;
-  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -2914,7 +2922,6 @@ T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T log_ratio = log(q1 / c);
   T F;
   const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
   const T t2 = -a_minus_b * b;
@@ -2926,6 +2933,7 @@ T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
     F = M_flat[2] * in.w[2] + M_flat[3] * in.w[3] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
+    const T log_ratio = log(q1 / c);
     const T t4 = -b;
     const T t5 = J_downward<T>(2, a, D, t4, c, a_minus_b, q1);
     const T t6 = T(1) / a;
@@ -2936,6 +2944,7 @@ T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
     // recurrence (1) upwards from J_1, J_2
     const T t9 = sqrt(D);
     const T J2 = atan2(t9, c_minus_b) / t9;
+    const T log_ratio = log(q1 / c);
     const T t10 = T(1) / a;
     const T t11 = log_ratio + T(2) * J2 * b;
     const T t12 = t11 * t10 * b + T(1) - c * J2;
@@ -3002,53 +3011,55 @@ std::array<T, 3> segment_cauchy_i2_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp * in.s;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
-  const T t5 = -b * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = -b * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 4, a, b, c, T(0), T(1), M_flat.data());
-    const T t7 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + in.w[2] * M_flat[8] + in.w[1] * M_flat[7] - t8 * b * t7;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + in.w[2] * M_flat[8] + in.w[1] * M_flat[7] - t7 * b * t6;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / c;
+    const T log_ratio = log(q1 * t8);
     const T t9 = -b;
     const T t10 = J_downward<T>(4, a, D, t9, c, a_minus_b, q1);
     const T t11 = T(1) / a;
     const T t12 = T(1) / q1;
-    const T t13 = t12 - T(2) * t10 * b - t3;
-    const T t14 = b * t3;
+    const T t13 = t12 - T(2) * t10 * b - t8;
+    const T t14 = b * t8;
     const T t15 = t12 * a_minus_b;
     const T t16 = t14 + t15 - T(2) * D * t10;
     const T t17 = t11 * t13 * b + t10 * c + t11 * t16;
     const T t18 = T(2) * t11 * t16 * b - log_ratio;
     G_ap = t10 * in.w[0] - (T(1) / T(2)) * t11 * (T(4) * t11 * b * t17 + t11 * t18 - t11 * t13 * c) * in.w[3] - (T(1) / T(2)) * t11 * t13 * in.w[1] - t11 * t17 * in.w[2];
     const T t19 = in.w[1] + in.w[2] + in.w[0] + in.w[3];
-    G_E = -(T(1) / T(2)) * t11 * (t12 * t19 + t11 * t16 * in.w[1] + T(3) * t11 * (t11 * b * t18 - t11 * t16 * c - T(1)) * in.w[3] + t11 * t18 * in.w[2] - t3 * in.w[0]);
+    G_E = -(T(1) / T(2)) * t11 * (t12 * t19 + t11 * t16 * in.w[1] + T(3) * t11 * (t11 * b * t18 - t11 * t16 * c - T(1)) * in.w[3] + t11 * t18 * in.w[2] - t8 * in.w[0]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t20 = sqrt(D);
     const T t21 = T(1) / t20;
     const T J2 = t21 * atan2(t20, c_minus_b);
-    const T t22 = T(1) / D;
-    const T t23 = b * t3;
-    const T t24 = T(1) / q1;
-    const T t25 = t24 * a_minus_b;
-    const T t26 = t23 + t25 + a * J2;
-    const T t27 = T(1) / a;
-    const T t28 = t24 - t22 * t26 * b - t3;
-    const T t29 = t22 * t26 * c + T(2) * t27 * b * t28 - T(2) * J2;
-    const T t30 = T(2) * b * J2 + log_ratio;
-    G_ap = (T(1) / T(2)) * t22 * t26 * in.w[0] - (T(1) / T(2)) * t27 * t29 * in.w[2] - (T(1) / T(2)) * (T(2) * t27 * t29 * b - t27 * t30 - t27 * t28 * c) * t27 * in.w[3] - (T(1) / T(2)) * t27 * in.w[1] * t28;
-    const T t31 = in.w[1] + in.w[2] + in.w[0] + in.w[3];
-    G_E = (T(1) / T(2)) * t27 * (t27 * t30 * in.w[2] + t3 * in.w[0] + T(3) * (t27 * t30 * b + T(1) - J2 * c) * t27 * in.w[3] + in.w[1] * J2 - t24 * t31);
+    const T t22 = T(1) / c;
+    const T log_ratio = log(q1 * t22);
+    const T t23 = T(1) / D;
+    const T t24 = b * t22;
+    const T t25 = T(1) / q1;
+    const T t26 = t25 * a_minus_b;
+    const T t27 = t24 + t26 + a * J2;
+    const T t28 = T(1) / a;
+    const T t29 = t25 - t23 * t27 * b - t22;
+    const T t30 = t23 * t27 * c + T(2) * t28 * b * t29 - T(2) * J2;
+    const T t31 = T(2) * b * J2 + log_ratio;
+    G_ap = (T(1) / T(2)) * t23 * t27 * in.w[0] - (T(1) / T(2)) * t28 * t30 * in.w[2] - (T(1) / T(2)) * (T(2) * t28 * t30 * b - t28 * t31 - t28 * t29 * c) * t28 * in.w[3] - (T(1) / T(2)) * t28 * in.w[1] * t29;
+    const T t32 = in.w[1] + in.w[2] + in.w[0] + in.w[3];
+    G_E = (T(1) / T(2)) * t28 * (t28 * t31 * in.w[2] + t22 * in.w[0] + T(3) * (t28 * t31 * b + T(1) - J2 * c) * t28 * in.w[3] + in.w[1] * J2 - t25 * t32);
   }
   const T g_factor = -T(2) * length * in.s;
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
@@ -3114,57 +3125,59 @@ T segment_cauchy_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
-  const T t5 = -b * a_minus_b;
-  const T t6 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = -b * a_minus_b;
+  const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 4, a, b, c, T(0), T(1), M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
-    const T t7 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = M_flat[8] * in.w[2] + in.w[3] * M_flat[9] + M_flat[7] * in.w[1] + in.w[0] * M_flat[6] - t8 * b * t7;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = M_flat[8] * in.w[2] + in.w[3] * M_flat[9] + M_flat[7] * in.w[1] + in.w[0] * M_flat[6] - t7 * b * t6;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / c;
+    const T log_ratio = log(q1 * t8);
     const T t9 = -b;
     const T t10 = J_downward<T>(4, a, D, t9, c, a_minus_b, q1);
     const T t11 = T(1) / q1;
-    const T t12 = T(2) * D * t10 - t3 * b - t11 * a_minus_b;
+    const T t12 = T(2) * D * t10 - t8 * b - t11 * a_minus_b;
     const T t13 = T(1) / a;
     const T t14 = log_ratio + T(2) * t12 * t13 * b;
     const T t15 = t13 * t14 * b + T(1) - t12 * c * t13;
     const T t16 = q1 + T(2) * b - c;
     F = t12 * in.w[0] * t13 + t15 * t13 * in.w[2] + (T(1) / T(2)) * t13 * t14 * in.w[1] - (T(1) / T(2)) * in.w[3] * t13 * (c * t13 * t14 - t13 * t16 - T(4) * t15 * t13 * b);
-    const T t17 = T(2) * t10 * b + t3 - t11;
+    const T t17 = T(2) * t10 * b + t8 - t11;
     const T t18 = t13 * b * t17 + t12 * t13 - c * t10;
     G_ap = (T(1) / T(2)) * in.w[3] * t13 * (T(4) * t13 * t18 * b + t13 * t14 - c * t13 * t17) + t13 * t18 * in.w[2] + (T(1) / T(2)) * t13 * in.w[1] * t17 + in.w[0] * t10;
     const T t19 = in.w[3] + in.w[0] + in.w[1] + in.w[2];
-    G_E = -(T(1) / T(2)) * t13 * (t11 * t19 - t3 * in.w[0] - t13 * t14 * in.w[2] - t12 * t13 * in.w[1] - T(3) * t15 * in.w[3] * t13);
+    G_E = -(T(1) / T(2)) * t13 * (t11 * t19 - t8 * in.w[0] - t13 * t14 * in.w[2] - t12 * t13 * in.w[1] - T(3) * t15 * in.w[3] * t13);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t20 = sqrt(D);
     const T t21 = T(1) / t20;
     const T J2 = atan2(t20, c_minus_b) * t21;
-    const T t22 = T(1) / a;
-    const T t23 = T(2) * J2 * b + log_ratio;
-    const T t24 = q1 + T(2) * b - c;
-    const T t25 = c * J2 - t22 * t23 * b - T(1);
-    F = J2 * in.w[0] + (T(1) / T(2)) * t22 * t23 * in.w[1] + (T(1) / T(2)) * in.w[3] * t22 * (t22 * t24 - T(4) * t22 * t25 * b - c * t22 * t23) - t22 * t25 * in.w[2];
-    const T t26 = T(1) / q1;
-    const T t27 = t3 * b + J2 * a + t26 * a_minus_b;
-    const T t28 = T(1) / D;
-    const T t29 = t27 * t28 * b + t3 - t26;
-    const T t30 = T(2) * t29 * t22 * b + T(2) * J2 - c * t27 * t28;
-    G_ap = (T(1) / T(2)) * t22 * t30 * in.w[2] + (T(1) / T(2)) * t27 * in.w[0] * t28 + (T(1) / T(2)) * t29 * t22 * in.w[1] - (T(1) / T(2)) * in.w[3] * t22 * (c * t29 * t22 - t22 * t23 - T(2) * t22 * b * t30);
-    const T t31 = in.w[3] + in.w[0] + in.w[1] + in.w[2];
-    G_E = (T(1) / T(2)) * t22 * (J2 * in.w[1] + t22 * t23 * in.w[2] + t3 * in.w[0] - t26 * t31 - T(3) * in.w[3] * t22 * t25);
+    const T t22 = T(1) / c;
+    const T log_ratio = log(q1 * t22);
+    const T t23 = T(1) / a;
+    const T t24 = T(2) * J2 * b + log_ratio;
+    const T t25 = q1 + T(2) * b - c;
+    const T t26 = c * J2 - t23 * t24 * b - T(1);
+    F = J2 * in.w[0] + (T(1) / T(2)) * t23 * t24 * in.w[1] + (T(1) / T(2)) * in.w[3] * t23 * (t23 * t25 - T(4) * t23 * t26 * b - c * t23 * t24) - t23 * t26 * in.w[2];
+    const T t27 = T(1) / q1;
+    const T t28 = t22 * b + J2 * a + t27 * a_minus_b;
+    const T t29 = T(1) / D;
+    const T t30 = t28 * t29 * b + t22 - t27;
+    const T t31 = T(2) * t30 * t23 * b + T(2) * J2 - c * t28 * t29;
+    G_ap = (T(1) / T(2)) * t23 * t31 * in.w[2] + (T(1) / T(2)) * t28 * in.w[0] * t29 + (T(1) / T(2)) * t30 * t23 * in.w[1] - (T(1) / T(2)) * in.w[3] * t23 * (c * t30 * t23 - t23 * t24 - T(2) * t23 * b * t31);
+    const T t32 = in.w[3] + in.w[0] + in.w[1] + in.w[2];
+    G_E = (T(1) / T(2)) * t23 * (J2 * in.w[1] + t23 * t24 * in.w[2] + t22 * in.w[0] - t27 * t32 - T(3) * in.w[3] * t23 * t26);
   }
   const T g_factor = -T(2) * in.s * length;
   f = length * F;
@@ -3231,28 +3244,28 @@ bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
-  const T t5 = -a_minus_b * b;
-  const T t6 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 4, a, b, c, T(0), T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
-    const T t7 = in.w[2] * M_flat[7] + M_flat[8] * in.w[3] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = in.w[1] * M_flat[7] + M_flat[9] * in.w[3] + in.w[0] * M_flat[6] + M_flat[8] * in.w[2] - t8 * t7 * b;
+    const T t6 = in.w[2] * M_flat[7] + M_flat[8] * in.w[3] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = in.w[1] * M_flat[7] + M_flat[9] * in.w[3] + in.w[0] * M_flat[6] + M_flat[8] * in.w[2] - t7 * t6 * b;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t9 = sqrt(D);
-    const T t10 = T(1) / t9;
-    const T J2 = t10 * atan2(t9, c_minus_b);
+    const T t8 = sqrt(D);
+    const T t9 = T(1) / t8;
+    const T J2 = t9 * atan2(t8, c_minus_b);
+    const T t10 = T(1) / c;
+    const T log_ratio = log(q1 * t10);
     const T t11 = T(1) / a;
     const T t12 = t11 * (T(2) * b + q1 - c);
     const T t13 = log_ratio + T(2) * b * J2;
@@ -3261,20 +3274,20 @@ bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
     const T t15 = T(1) / D;
     const T t16 = T(1) / q1;
     const T t17 = a_minus_b * t16;
-    const T t18 = b * t3;
+    const T t18 = b * t10;
     const T t19 = t17 + t18 + a * J2;
-    const T t20 = t15 * b * t19 + t3 - t16;
+    const T t20 = t15 * b * t19 + t10 - t16;
     const T t21 = t15 * c * t19 - T(2) * t20 * t11 * b - T(2) * J2;
     G_ap = (T(1) / T(2)) * t15 * in.w[0] * t19 + (T(1) / T(2)) * t20 * t11 * in.w[1] - (T(1) / T(2)) * t11 * (T(2) * t11 * b * t21 + t20 * t11 * c - t11 * t13) * in.w[3] - (T(1) / T(2)) * t11 * t21 * in.w[2];
     const T t22 = in.w[0] + in.w[1] + in.w[2] + in.w[3];
-    G_E = (T(1) / T(2)) * t11 * (in.w[1] * J2 + t11 * in.w[2] * t13 + in.w[0] * t3 - T(3) * t11 * t14 * in.w[3] - t22 * t16);
+    G_E = (T(1) / T(2)) * t11 * (in.w[1] * J2 + t11 * in.w[2] * t13 + in.w[0] * t10 - T(3) * t11 * t14 * in.w[3] - t22 * t16);
   }
   const T g_factor = -T(2) * length * in.s;
   f = F * length;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = (foot1 * G_ap - G_E * ab1) * g_factor;
   grad[2] = (foot2 * G_ap - G_E * ab2) * g_factor;
-  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -6278,26 +6291,26 @@ T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp * in.s;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t1 = T(1) / c;
-  const T log_ratio = log(t1 * q1);
   T F;
-  const T t2 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
-  const T t3 = -b * a_minus_b;
-  const T t4 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  if (t2 >= T(0)) {
+  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t2 = -b * a_minus_b;
+  const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t1 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(4, 4, 3, a, b, c, T(0), T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1];
-  } else if (t3 >= T(0) && t4 >= T(0)) {
+  } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t4 = T(1) / c;
+    const T log_ratio = log(t4 * q1);
     const T t5 = -b;
     const T t6 = J_downward<T>(4, a, D, t5, c, a_minus_b, q1);
     const T t7 = T(1) / a;
     const T t8 = T(1) / q1;
-    const T t9 = T(2) * b * t6 + t1 - t8;
+    const T t9 = T(2) * b * t6 + t4 - t8;
     const T t10 = a_minus_b * t8;
-    const T t11 = b * t1;
+    const T t11 = b * t4;
     const T t12 = t10 + t11 - T(2) * D * t6;
     const T t13 = c * t6 + t7 * t12 - b * t7 * t9;
     F = in.w[0] * t6 + (T(1) / T(2)) * in.w[1] * t7 * t9 + (T(1) / T(2)) * in.w[3] * t7 * (t7 * (log_ratio - T(2) * b * t7 * t12) - T(4) * b * t13 * t7 - c * t7 * t9) - in.w[2] * t13 * t7;
@@ -6306,15 +6319,17 @@ T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
     const T t14 = sqrt(D);
     const T t15 = T(1) / t14;
     const T J2 = atan2(t14, c_minus_b) * t15;
-    const T t16 = T(1) / q1;
-    const T t17 = a_minus_b * t16;
-    const T t18 = b * t1;
-    const T t19 = t17 + t18 + a * J2;
-    const T t20 = T(1) / D;
-    const T t21 = t1 + b * t19 * t20 - t16;
-    const T t22 = T(1) / a;
-    const T t23 = t19 * c * t20 - T(2) * J2 - T(2) * b * t21 * t22;
-    F = (T(1) / T(2)) * t19 * in.w[0] * t20 + (T(1) / T(2)) * in.w[1] * t21 * t22 - (T(1) / T(2)) * t23 * in.w[2] * t22 - (T(1) / T(2)) * (t21 * c * t22 + T(2) * b * t23 * t22 - (log_ratio + T(2) * b * J2) * t22) * in.w[3] * t22;
+    const T t16 = T(1) / c;
+    const T log_ratio = log(t16 * q1);
+    const T t17 = T(1) / q1;
+    const T t18 = a_minus_b * t17;
+    const T t19 = b * t16;
+    const T t20 = t18 + t19 + a * J2;
+    const T t21 = T(1) / D;
+    const T t22 = t16 + b * t20 * t21 - t17;
+    const T t23 = T(1) / a;
+    const T t24 = t20 * c * t21 - T(2) * J2 - T(2) * b * t22 * t23;
+    F = (T(1) / T(2)) * t20 * in.w[0] * t21 + (T(1) / T(2)) * in.w[1] * t22 * t23 - (T(1) / T(2)) * t24 * in.w[2] * t23 - (T(1) / T(2)) * (t22 * c * t23 + T(2) * b * t24 * t23 - (log_ratio + T(2) * b * J2) * t23) * in.w[3] * t23;
   }
   f = F * length;
   return f;
@@ -6490,34 +6505,34 @@ T segment_cauchy_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
-  const T t5 = -a_minus_b * b;
-  const T t6 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = -a_minus_b * b;
+  const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(4, 6, 4, a, b, c, T(0), T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1] + M_flat[3] * in.w[3];
-    const T t7 = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + M_flat[8] * in.w[3] + in.w[1] * M_flat[6];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = M_flat[8] * in.w[2] + M_flat[9] * in.w[3] + in.w[0] * M_flat[6] + in.w[1] * M_flat[7] - t8 * t7 * b;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + M_flat[8] * in.w[3] + in.w[1] * M_flat[6];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = M_flat[8] * in.w[2] + M_flat[9] * in.w[3] + in.w[0] * M_flat[6] + in.w[1] * M_flat[7] - t7 * t6 * b;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
+    const T t8 = T(1) / c;
+    const T log_ratio = log(q1 * t8);
     const T t9 = T(1) / a;
     const T t10 = T(1) / q1;
     const T t11 = -b;
     const T t12 = J_downward<T>(6, a, D, t11, c, a_minus_b, q1);
-    const T t13 = t3 * t3;
+    const T t13 = t8 * t8;
     const T t14 = t10 * t10;
     const T t15 = T(4) * t12 * D - b * t13 - a_minus_b * t14;
-    const T t16 = T(3) * t10 - T(3) * t3 - T(2) * t9 * t15 * b;
-    const T t17 = T(3) * a_minus_b * t10 + T(3) * b * t3 - T(2) * t9 * t15 * D;
+    const T t16 = T(3) * t10 - T(3) * t8 - T(2) * t9 * t15 * b;
+    const T t17 = T(3) * a_minus_b * t10 + T(3) * b * t8 - T(2) * t9 * t15 * D;
     const T t18 = t9 * t15 * c + t9 * t17 + t9 * b * t16;
     F = (T(1) / T(6)) * t9 * (t9 * c * t16 + t9 * (T(3) * log_ratio - T(2) * t9 * b * t17) - T(4) * t9 * b * t18) * in.w[3] + (T(1) / T(3)) * in.w[0] * t9 * t15 - (T(1) / T(3)) * t9 * in.w[2] * t18 - (T(1) / T(6)) * t9 * in.w[1] * t16;
     const T t19 = t13 + T(4) * b * t12 - t14;
@@ -6530,21 +6545,23 @@ T segment_cauchy_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
     const T t22 = sqrt(D);
     const T t23 = T(1) / t22;
     const T J2 = atan2(t22, c_minus_b) * t23;
-    const T t24 = T(1) / q1;
-    const T t25 = a_minus_b * t24 + a * J2 + b * t3;
-    const T t26 = T(1) / D;
-    const T t27 = T(1) / a;
-    const T t28 = t24 - t25 * b * t26 - t3;
-    const T t29 = t25 * c * t26 + T(2) * t27 * b * t28 - T(2) * J2;
-    F = (T(1) / T(2)) * in.w[0] * t25 * t26 + (T(1) / T(2)) * t27 * (t27 * (log_ratio + T(2) * b * J2) + t27 * t28 * c - T(2) * t27 * b * t29) * in.w[3] - (T(1) / T(2)) * t27 * in.w[1] * t28 - (T(1) / T(2)) * t27 * in.w[2] * t29;
-    const T t30 = t3 * t3;
+    const T t24 = T(1) / c;
+    const T log_ratio = log(q1 * t24);
+    const T t25 = T(1) / q1;
+    const T t26 = a_minus_b * t25 + a * J2 + b * t24;
+    const T t27 = T(1) / D;
+    const T t28 = T(1) / a;
+    const T t29 = t25 - t26 * b * t27 - t24;
+    const T t30 = t26 * c * t27 + T(2) * t28 * b * t29 - T(2) * J2;
+    F = (T(1) / T(2)) * in.w[0] * t26 * t27 + (T(1) / T(2)) * t28 * (t28 * (log_ratio + T(2) * b * J2) + t28 * t29 * c - T(2) * t28 * b * t30) * in.w[3] - (T(1) / T(2)) * t28 * in.w[1] * t29 - (T(1) / T(2)) * t28 * in.w[2] * t30;
     const T t31 = t24 * t24;
-    const T t32 = T(2) * b * t30 + T(3) * a * t25 * t26 + T(2) * a_minus_b * t31;
-    const T t33 = t32 * b * t26 + T(2) * t30 - T(2) * t31;
-    const T t34 = T(2) * t27 * t33 * b + T(4) * t25 * t26 - t32 * c * t26;
-    G_ap = (T(1) / T(8)) * in.w[0] * t32 * t26 + (T(1) / T(8)) * t27 * t33 * in.w[1] + (T(1) / T(8)) * t27 * t34 * in.w[2] - (T(1) / T(8)) * t27 * (t27 * t33 * c + T(4) * t27 * t28 - T(2) * t27 * b * t34) * in.w[3];
-    const T t35 = in.w[0] + in.w[1] + in.w[2] + in.w[3];
-    G_E = -(T(1) / T(8)) * t27 * (T(3) * t27 * t29 * in.w[3] + T(2) * t31 * t35 + T(2) * t27 * t28 * in.w[2] - T(2) * in.w[0] * t30 - t25 * in.w[1] * t26);
+    const T t32 = t25 * t25;
+    const T t33 = T(2) * b * t31 + T(3) * a * t26 * t27 + T(2) * a_minus_b * t32;
+    const T t34 = t33 * b * t27 + T(2) * t31 - T(2) * t32;
+    const T t35 = T(2) * t28 * t34 * b + T(4) * t26 * t27 - t33 * c * t27;
+    G_ap = (T(1) / T(8)) * in.w[0] * t33 * t27 + (T(1) / T(8)) * t28 * t34 * in.w[1] + (T(1) / T(8)) * t28 * t35 * in.w[2] - (T(1) / T(8)) * t28 * (t28 * t34 * c + T(4) * t28 * t29 - T(2) * t28 * b * t35) * in.w[3];
+    const T t36 = in.w[0] + in.w[1] + in.w[2] + in.w[3];
+    G_E = -(T(1) / T(8)) * t28 * (T(3) * t28 * t30 * in.w[3] + T(2) * t32 * t36 + T(2) * t28 * t29 * in.w[2] - T(2) * in.w[0] * t31 - t26 * in.w[1] * t27);
   }
   const T g_factor = -T(4) * length * in.s;
   f = F * length;
@@ -6611,36 +6628,36 @@ bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   const T a_minus_b = -ab_bp * in.s;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t3 = T(1) / c;
-  const T log_ratio = log(q1 * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
-  const T t5 = -b * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = -b * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(4, 6, 4, a, b, c, T(0), T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0];
-    const T t7 = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5];
-    G_ap = t7;
-    const T t8 = T(1) / a;
-    G_E = M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + in.w[1] * M_flat[7] + in.w[2] * M_flat[8] - b * t7 * t8;
+    const T t6 = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5];
+    G_ap = t6;
+    const T t7 = T(1) / a;
+    G_E = M_flat[6] * in.w[0] + M_flat[9] * in.w[3] + in.w[1] * M_flat[7] + in.w[2] * M_flat[8] - b * t6 * t7;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t9 = sqrt(D);
-    const T t10 = T(1) / t9;
-    const T J2 = atan2(t9, c_minus_b) * t10;
+    const T t8 = sqrt(D);
+    const T t9 = T(1) / t8;
+    const T J2 = atan2(t8, c_minus_b) * t9;
+    const T t10 = T(1) / c;
+    const T log_ratio = log(q1 * t10);
     const T t11 = T(1) / q1;
-    const T t12 = t11 * a_minus_b + b * t3 + J2 * a;
+    const T t12 = t11 * a_minus_b + b * t10 + J2 * a;
     const T t13 = T(1) / D;
-    const T t14 = t12 * b * t13 + t3 - t11;
+    const T t14 = t12 * b * t13 + t10 - t11;
     const T t15 = T(1) / a;
     const T t16 = T(2) * b * t14 * t15 + T(2) * J2 - t12 * c * t13;
     F = (T(1) / T(2)) * in.w[2] * t16 * t15 + (T(1) / T(2)) * t12 * t13 * in.w[0] + (T(1) / T(2)) * in.w[1] * t14 * t15 - (T(1) / T(2)) * (c * t14 * t15 - (T(2) * b * J2 + log_ratio) * t15 - T(2) * b * t16 * t15) * in.w[3] * t15;
-    const T t17 = t3 * t3;
+    const T t17 = t10 * t10;
     const T t18 = t11 * t11;
     const T t19 = T(2) * b * t17 + T(2) * t18 * a_minus_b + T(3) * t12 * t13 * a;
     const T t20 = b * t19 * t13 + T(2) * t17 - T(2) * t18;
@@ -6654,7 +6671,7 @@ bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
   grad[1] = -g_factor * (G_E * ab1 - G_ap * foot1);
   grad[2] = -(G_E * ab2 - G_ap * foot2) * g_factor;
-  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -28921,12 +28938,12 @@ T segment_cauchy_i2_w1_fast_f(const SegmentInput<T>& in) {
   const T D = (ab_ab + cross_cross * in.s) * in.s;
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T log_ratio = log(q1 / c);
   T F;
   {
     // recurrence (1) upwards from J_1, J_2
     const T t0 = sqrt(D);
     const T J2 = atan2(t0, c_minus_b) / t0;
+    const T log_ratio = log(q1 / c);
     F = (T(1) / T(2)) * in.w[1] * (log_ratio + T(2) * b * J2) / a + in.w[0] * J2;
   }
   f = F * length;
@@ -29049,23 +29066,23 @@ T segment_cauchy_i2_w1_fast_f_and_grad(const SegmentInput<T>& in, std::array<T, 
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t1 = T(1) / c;
-  const T log_ratio = log(q1 * t1);
   T F;
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(D);
-    const T t3 = T(1) / t2;
-    const T J2 = atan2(t2, c_minus_b) * t3;
+    const T t1 = sqrt(D);
+    const T t2 = T(1) / t1;
+    const T J2 = atan2(t1, c_minus_b) * t2;
+    const T t3 = T(1) / c;
+    const T log_ratio = log(q1 * t3);
     const T t4 = T(1) / a;
     F = in.w[0] * J2 + (T(1) / T(2)) * (T(2) * b * J2 + log_ratio) * in.w[1] * t4;
     const T t5 = T(1) / D;
     const T t6 = T(1) / q1;
-    const T t7 = J2 * a + a_minus_b * t6 + b * t1;
-    G_ap = (T(1) / T(2)) * in.w[1] * t4 * (t1 + b * t5 * t7 - t6) + (T(1) / T(2)) * in.w[0] * t5 * t7;
-    G_E = (T(1) / T(2)) * (in.w[0] * t1 + in.w[1] * J2 - t6 * (in.w[0] + in.w[1])) * t4;
+    const T t7 = J2 * a + a_minus_b * t6 + b * t3;
+    G_ap = (T(1) / T(2)) * in.w[1] * t4 * (t3 + b * t5 * t7 - t6) + (T(1) / T(2)) * in.w[0] * t5 * t7;
+    G_E = (T(1) / T(2)) * (in.w[0] * t3 + in.w[1] * J2 - t6 * (in.w[0] + in.w[1])) * t4;
   }
   const T g_factor = -T(2) * length * in.s;
   f = F * length;
@@ -29113,12 +29130,12 @@ T segment_cauchy_i2_w2_fast_f(const SegmentInput<T>& in) {
   const T D = (cross_cross * in.s + ab_ab) * in.s;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T log_ratio = log(q1 / c);
   T F;
   {
     // recurrence (1) upwards from J_1, J_2
     const T t0 = sqrt(D);
     const T J2 = atan2(t0, c_minus_b) / t0;
+    const T log_ratio = log(q1 / c);
     const T t1 = T(1) / a;
     const T t2 = T(2) * J2 * b + log_ratio;
     F = J2 * in.w[0] + (T(1) / T(2)) * t1 * in.w[1] * t2 + t1 * (t1 * b * t2 + T(1) - J2 * c) * in.w[2];
@@ -29174,22 +29191,22 @@ std::array<T, 3> segment_cauchy_i2_w2_fast_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t1 = T(1) / c;
-  const T log_ratio = log(q1 * t1);
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(D);
-    const T t3 = T(1) / t2;
-    const T J2 = t3 * atan2(t2, c_minus_b);
+    const T t1 = sqrt(D);
+    const T t2 = T(1) / t1;
+    const T J2 = t2 * atan2(t1, c_minus_b);
+    const T t3 = T(1) / c;
+    const T log_ratio = log(q1 * t3);
     const T t4 = T(1) / D;
     const T t5 = T(1) / q1;
-    const T t6 = a * J2 + b * t1 + a_minus_b * t5;
+    const T t6 = a * J2 + b * t3 + a_minus_b * t5;
     const T t7 = T(1) / a;
-    const T t8 = t5 - t1 - t4 * b * t6;
+    const T t8 = t5 - t3 - t4 * b * t6;
     G_ap = (T(1) / T(2)) * t4 * in.w[0] * t6 - (T(1) / T(2)) * in.w[2] * t7 * (t4 * t6 * c + T(2) * t7 * t8 * b - T(2) * J2) - (T(1) / T(2)) * t7 * t8 * in.w[1];
-    G_E = (T(1) / T(2)) * t7 * (J2 * in.w[1] + in.w[2] * t7 * (log_ratio + T(2) * b * J2) + in.w[0] * t1 - (in.w[2] + in.w[0] + in.w[1]) * t5);
+    G_E = (T(1) / T(2)) * t7 * (J2 * in.w[1] + in.w[2] * t7 * (log_ratio + T(2) * b * J2) + in.w[0] * t3 - (in.w[2] + in.w[0] + in.w[1]) * t5);
   }
   const T g_factor = -T(2) * in.s * length;
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
@@ -29245,25 +29262,25 @@ T segment_cauchy_i2_w2_fast_f_and_grad(const SegmentInput<T>& in, std::array<T, 
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t1 = T(1) / c;
-  const T log_ratio = log(q1 * t1);
   T F;
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(D);
-    const T t3 = T(1) / t2;
-    const T J2 = t3 * atan2(t2, c_minus_b);
+    const T t1 = sqrt(D);
+    const T t2 = T(1) / t1;
+    const T J2 = t2 * atan2(t1, c_minus_b);
+    const T t3 = T(1) / c;
+    const T log_ratio = log(q1 * t3);
     const T t4 = T(1) / a;
     const T t5 = T(2) * J2 * b + log_ratio;
     F = (T(1) / T(2)) * in.w[1] * t4 * t5 + J2 * in.w[0] + in.w[2] * t4 * (t4 * t5 * b + T(1) - c * J2);
     const T t6 = T(1) / q1;
-    const T t7 = t1 * b + t6 * a_minus_b + J2 * a;
+    const T t7 = t3 * b + t6 * a_minus_b + J2 * a;
     const T t8 = T(1) / D;
-    const T t9 = t7 * t8 * b + t1 - t6;
+    const T t9 = t7 * t8 * b + t3 - t6;
     G_ap = (T(1) / T(2)) * t7 * t8 * in.w[0] + (T(1) / T(2)) * in.w[1] * t4 * t9 - (T(1) / T(2)) * in.w[2] * t4 * (t7 * c * t8 - T(2) * J2 - T(2) * t4 * t9 * b);
-    G_E = (T(1) / T(2)) * t4 * (t1 * in.w[0] + in.w[1] * J2 + in.w[2] * t4 * t5 - t6 * (in.w[1] + in.w[2] + in.w[0]));
+    G_E = (T(1) / T(2)) * t4 * (t3 * in.w[0] + in.w[1] * J2 + in.w[2] * t4 * t5 - t6 * (in.w[1] + in.w[2] + in.w[0]));
   }
   const T g_factor = -T(2) * length * in.s;
   f = length * F;
@@ -29311,12 +29328,12 @@ T segment_cauchy_i2_w3_fast_f(const SegmentInput<T>& in) {
   const T D = (cross_cross * in.s + ab_ab) * in.s;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T log_ratio = log(q1 / c);
   T F;
   {
     // recurrence (1) upwards from J_1, J_2
     const T t0 = sqrt(D);
     const T J2 = atan2(t0, c_minus_b) / t0;
+    const T log_ratio = log(q1 / c);
     const T t1 = T(2) * J2 * b + log_ratio;
     const T t2 = T(1) / a;
     const T t3 = b * t1 * t2 + T(1) - J2 * c;
@@ -29373,24 +29390,24 @@ std::array<T, 3> segment_cauchy_i2_w3_fast_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t1 = T(1) / c;
-  const T log_ratio = log(t1 * q1);
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(D);
-    const T t3 = T(1) / t2;
-    const T J2 = t3 * atan2(t2, c_minus_b);
+    const T t1 = sqrt(D);
+    const T t2 = T(1) / t1;
+    const T J2 = t2 * atan2(t1, c_minus_b);
+    const T t3 = T(1) / c;
+    const T log_ratio = log(t3 * q1);
     const T t4 = T(1) / a;
     const T t5 = T(1) / q1;
     const T t6 = T(1) / D;
-    const T t7 = a_minus_b * t5 + J2 * a + t1 * b;
-    const T t8 = t5 - t6 * b * t7 - t1;
+    const T t7 = a_minus_b * t5 + J2 * a + t3 * b;
+    const T t8 = t5 - t6 * b * t7 - t3;
     const T t9 = T(2) * J2 - T(2) * t8 * t4 * b - c * t6 * t7;
     const T t10 = T(2) * J2 * b + log_ratio;
     G_ap = (T(1) / T(2)) * in.w[2] * t4 * t9 + (T(1) / T(2)) * t6 * in.w[0] * t7 + (T(1) / T(2)) * (t10 * t4 + c * t8 * t4 + T(2) * t4 * t9 * b) * in.w[3] * t4 - (T(1) / T(2)) * t8 * t4 * in.w[1];
-    G_E = (T(1) / T(2)) * (T(3) * in.w[3] * t4 * (t10 * t4 * b + T(1) - J2 * c) + t1 * in.w[0] + J2 * in.w[1] + in.w[2] * t10 * t4 - (in.w[2] + in.w[3] + in.w[0] + in.w[1]) * t5) * t4;
+    G_E = (T(1) / T(2)) * (T(3) * in.w[3] * t4 * (t10 * t4 * b + T(1) - J2 * c) + t3 * in.w[0] + J2 * in.w[1] + in.w[2] * t10 * t4 - (in.w[2] + in.w[3] + in.w[0] + in.w[1]) * t5) * t4;
   }
   const T g_factor = -T(2) * length * in.s;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -29446,27 +29463,27 @@ T segment_cauchy_i2_w3_fast_f_and_grad(const SegmentInput<T>& in, std::array<T, 
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
-  const T t1 = T(1) / c;
-  const T log_ratio = log(q1 * t1);
   T F;
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(D);
-    const T t3 = T(1) / t2;
-    const T J2 = atan2(t2, c_minus_b) * t3;
+    const T t1 = sqrt(D);
+    const T t2 = T(1) / t1;
+    const T J2 = atan2(t1, c_minus_b) * t2;
+    const T t3 = T(1) / c;
+    const T log_ratio = log(q1 * t3);
     const T t4 = T(2) * J2 * b + log_ratio;
     const T t5 = T(1) / a;
     const T t6 = t4 * t5 * b + T(1) - c * J2;
     F = in.w[2] * t6 * t5 + (T(1) / T(2)) * t4 * t5 * in.w[1] + J2 * in.w[0] - (T(1) / T(2)) * in.w[3] * t5 * (c * t4 * t5 - (q1 + T(2) * b - c) * t5 - T(4) * t6 * t5 * b);
     const T t7 = T(1) / D;
     const T t8 = T(1) / q1;
-    const T t9 = t1 * b + t8 * a_minus_b + J2 * a;
-    const T t10 = t1 + t7 * t9 * b - t8;
+    const T t9 = t3 * b + t8 * a_minus_b + J2 * a;
+    const T t10 = t3 + t7 * t9 * b - t8;
     const T t11 = T(2) * J2 + T(2) * t10 * t5 * b - c * t7 * t9;
     G_ap = (T(1) / T(2)) * t11 * in.w[2] * t5 + (T(1) / T(2)) * (T(2) * t11 * t5 * b + t4 * t5 - c * t10 * t5) * in.w[3] * t5 + (T(1) / T(2)) * t10 * t5 * in.w[1] + (T(1) / T(2)) * t7 * in.w[0] * t9;
-    G_E = (T(1) / T(2)) * t5 * (J2 * in.w[1] + t1 * in.w[0] + T(3) * t6 * in.w[3] * t5 + in.w[2] * t4 * t5 - t8 * (in.w[2] + in.w[3] + in.w[0] + in.w[1]));
+    G_E = (T(1) / T(2)) * t5 * (J2 * in.w[1] + t3 * in.w[0] + T(3) * t6 * in.w[3] * t5 + in.w[2] * t4 * t5 - t8 * (in.w[2] + in.w[3] + in.w[0] + in.w[1]));
   }
   const T g_factor = -T(2) * length * in.s;
   f = length * F;
@@ -30981,19 +30998,19 @@ T segment_cauchy_i4_w3_fast_f(const SegmentInput<T>& in) {
   const T a_minus_b = -in.s * ab_bp;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T t0 = T(1) / c;
-  const T log_ratio = log(t0 * q1);
   T F;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t1 = sqrt(D);
-    const T t2 = T(1) / t1;
-    const T J2 = atan2(t1, c_minus_b) * t2;
+    const T t0 = sqrt(D);
+    const T t1 = T(1) / t0;
+    const T J2 = atan2(t0, c_minus_b) * t1;
+    const T t2 = T(1) / c;
+    const T log_ratio = log(t2 * q1);
     const T t3 = T(1) / q1;
-    const T t4 = a * J2 + a_minus_b * t3 + b * t0;
+    const T t4 = a * J2 + a_minus_b * t3 + b * t2;
     const T t5 = T(1) / D;
     const T t6 = T(1) / a;
-    const T t7 = t3 - b * t4 * t5 - t0;
+    const T t7 = t3 - b * t4 * t5 - t2;
     const T t8 = T(2) * t6 * b * t7 + t4 * c * t5 - T(2) * J2;
     F = (T(1) / T(2)) * t4 * in.w[0] * t5 - (T(1) / T(2)) * t6 * in.w[2] * t8 - (T(1) / T(2)) * t6 * in.w[1] * t7 - (T(1) / T(2)) * t6 * (T(2) * t6 * b * t8 - t6 * t7 * c - t6 * (T(2) * J2 * b + log_ratio)) * in.w[3];
   }
@@ -31123,24 +31140,24 @@ T segment_cauchy_i4_w3_fast_f_and_grad(const SegmentInput<T>& in, std::array<T, 
   const T a_minus_b = -ab_bp * in.s;
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
-  const T t1 = T(1) / c;
-  const T log_ratio = log(q1 * t1);
   T F;
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(D);
-    const T t3 = T(1) / t2;
-    const T J2 = t3 * atan2(t2, c_minus_b);
+    const T t1 = sqrt(D);
+    const T t2 = T(1) / t1;
+    const T J2 = t2 * atan2(t1, c_minus_b);
+    const T t3 = T(1) / c;
+    const T log_ratio = log(q1 * t3);
     const T t4 = T(1) / a;
     const T t5 = T(1) / D;
     const T t6 = T(1) / q1;
-    const T t7 = a_minus_b * t6 + J2 * a + b * t1;
-    const T t8 = t1 + t5 * t7 * b - t6;
+    const T t7 = a_minus_b * t6 + J2 * a + b * t3;
+    const T t8 = t3 + t5 * t7 * b - t6;
     const T t9 = T(2) * J2 + T(2) * t4 * t8 * b - t5 * t7 * c;
     F = (T(1) / T(2)) * t4 * t9 * in.w[2] + (T(1) / T(2)) * t4 * in.w[1] * t8 + (T(1) / T(2)) * t5 * in.w[0] * t7 - (T(1) / T(2)) * in.w[3] * t4 * (t4 * t8 * c - T(2) * t4 * b * t9 - t4 * (T(2) * J2 * b + log_ratio));
-    const T t10 = t1 * t1;
+    const T t10 = t3 * t3;
     const T t11 = t6 * t6;
     const T t12 = T(2) * b * t10 + T(3) * t5 * t7 * a + T(2) * a_minus_b * t11;
     const T t13 = T(2) * t11 - t5 * b * t12 - T(2) * t10;

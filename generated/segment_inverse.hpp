@@ -1989,7 +1989,6 @@ T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
   const T ap_bp = bp0 * ap0 + bp1 * ap1 + bp2 * ap2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T log_ratio = log(bp_bp / ap_ap);
   T F;
   const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
   const T t2 = -a_minus_b * ab_ap;
@@ -2001,6 +2000,7 @@ T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
+    const T log_ratio = log(bp_bp / ap_ap);
     const T t4 = T(1) / ab_ab;
     const T t5 = -ab_ap;
     const T t6 = J_downward<T>(2, ab_ab, cross_cross, t5, ap_ap, a_minus_b, bp_bp);
@@ -2009,6 +2009,7 @@ T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
     // recurrence (1) upwards from J_1, J_2
     const T t7 = sqrt(cross_cross);
     const T J2 = atan2(t7, ap_bp) / t7;
+    const T log_ratio = log(bp_bp / ap_ap);
     const T t8 = T(1) / ab_ab;
     F = (T(1) / T(2)) * in.w[1] * t8 * (T(2) * J2 * ab_ap + log_ratio) + J2 * in.w[0];
   }
@@ -2162,51 +2163,53 @@ T segment_inverse_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
-    const T t7 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] - t7 * ab_ap * t8;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] - t6 * ab_ap * t7;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t8);
     const T t9 = T(1) / ab_ab;
-    const T t10 = ab_ap * t3;
+    const T t10 = ab_ap * t8;
     const T t11 = T(1) / bp_bp;
     const T t12 = t11 * a_minus_b;
     const T t13 = -ab_ap;
     const T t14 = J_downward<T>(4, ab_ab, cross_cross, t13, ap_ap, a_minus_b, bp_bp);
     const T t15 = t10 + t12 - T(2) * cross_cross * t14;
     F = -in.w[0] * t9 * t15 - (T(1) / T(2)) * (T(2) * ab_ap * t9 * t15 - log_ratio) * in.w[1] * t9;
-    G_ap = (T(1) / T(2)) * (t3 + T(2) * t14 * ab_ap - t11) * in.w[1] * t9 + t14 * in.w[0];
+    G_ap = (T(1) / T(2)) * (t8 + T(2) * t14 * ab_ap - t11) * in.w[1] * t9 + t14 * in.w[0];
     const T t16 = in.w[0] + in.w[1];
-    G_E = -(T(1) / T(2)) * (in.w[1] * t9 * t15 + t16 * t11 - in.w[0] * t3) * t9;
+    G_E = -(T(1) / T(2)) * (in.w[1] * t9 * t15 + t16 * t11 - in.w[0] * t8) * t9;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = sqrt(cross_cross);
     const T t18 = T(1) / t17;
     const T J2 = atan2(t17, ap_bp) * t18;
-    const T t19 = T(1) / ab_ab;
-    F = in.w[0] * J2 + (T(1) / T(2)) * (T(2) * ab_ap * J2 + log_ratio) * in.w[1] * t19;
-    const T t20 = T(1) / cross_cross;
-    const T t21 = ab_ap * t3;
-    const T t22 = T(1) / bp_bp;
-    const T t23 = t22 * a_minus_b;
-    const T t24 = J2 * ab_ab + t21 + t23;
-    G_ap = (T(1) / T(2)) * t20 * in.w[0] * t24 + (T(1) / T(2)) * (t3 + t20 * ab_ap * t24 - t22) * in.w[1] * t19;
-    const T t25 = in.w[0] + in.w[1];
-    G_E = (T(1) / T(2)) * (J2 * in.w[1] + in.w[0] * t3 - t25 * t22) * t19;
+    const T t19 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t19);
+    const T t20 = T(1) / ab_ab;
+    F = in.w[0] * J2 + (T(1) / T(2)) * (T(2) * ab_ap * J2 + log_ratio) * in.w[1] * t20;
+    const T t21 = T(1) / cross_cross;
+    const T t22 = ab_ap * t19;
+    const T t23 = T(1) / bp_bp;
+    const T t24 = t23 * a_minus_b;
+    const T t25 = J2 * ab_ab + t22 + t24;
+    G_ap = (T(1) / T(2)) * t21 * in.w[0] * t25 + (T(1) / T(2)) * (t19 + t21 * ab_ap * t25 - t23) * in.w[1] * t20;
+    const T t26 = in.w[0] + in.w[1];
+    G_E = (T(1) / T(2)) * (J2 * in.w[1] + in.w[0] * t19 - t26 * t23) * t20;
   }
   const T g_factor = -T(2) * length;
   f = length * F;
@@ -2267,45 +2270,45 @@ bool segment_inverse_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T ap_bp = ap0 * bp0 + ap1 * bp1 + bp2 * ap2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 6> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
-    const T t7 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = M_flat[5] * in.w[1] + M_flat[4] * in.w[0] - ab_ap * t8 * t7;
+    const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = M_flat[5] * in.w[1] + M_flat[4] * in.w[0] - ab_ap * t7 * t6;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t9 = sqrt(cross_cross);
-    const T t10 = T(1) / t9;
-    const T J2 = t10 * atan2(t9, ap_bp);
+    const T t8 = sqrt(cross_cross);
+    const T t9 = T(1) / t8;
+    const T J2 = t9 * atan2(t8, ap_bp);
+    const T t10 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t10);
     const T t11 = T(1) / ab_ab;
     F = (T(1) / T(2)) * (T(2) * ab_ap * J2 + log_ratio) * in.w[1] * t11 + J2 * in.w[0];
-    const T t12 = ab_ap * t3;
+    const T t12 = ab_ap * t10;
     const T t13 = T(1) / bp_bp;
     const T t14 = t13 * a_minus_b;
     const T t15 = t12 + t14 + J2 * ab_ab;
     const T t16 = T(1) / cross_cross;
-    G_ap = (T(1) / T(2)) * in.w[0] * t15 * t16 + (T(1) / T(2)) * (ab_ap * t15 * t16 + t3 - t13) * in.w[1] * t11;
+    G_ap = (T(1) / T(2)) * in.w[0] * t15 * t16 + (T(1) / T(2)) * (ab_ap * t15 * t16 + t10 - t13) * in.w[1] * t11;
     const T t17 = in.w[0] + in.w[1];
-    G_E = (T(1) / T(2)) * (J2 * in.w[1] + in.w[0] * t3 - t17 * t13) * t11;
+    G_E = (T(1) / T(2)) * (J2 * in.w[1] + in.w[0] * t10 - t17 * t13) * t11;
   }
   const T g_factor = -T(2) * length;
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
   grad[1] = -(ab1 * G_E - foot1 * G_ap) * g_factor;
   grad[2] = (G_ap * foot2 - ab2 * G_E) * g_factor;
-  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -2348,7 +2351,6 @@ T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
   const T ap_bp = bp1 * ap1 + ap2 * bp2 + bp0 * ap0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T log_ratio = log(bp_bp / ap_ap);
   T F;
   const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
   const T t2 = -a_minus_b * ab_ap;
@@ -2360,6 +2362,7 @@ T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
+    const T log_ratio = log(bp_bp / ap_ap);
     const T t4 = T(1) / ab_ab;
     const T t5 = -ab_ap;
     const T t6 = J_downward<T>(2, ab_ab, cross_cross, t5, ap_ap, a_minus_b, bp_bp);
@@ -2369,6 +2372,7 @@ T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = sqrt(cross_cross);
     const T J2 = atan2(t8, ap_bp) / t8;
+    const T log_ratio = log(bp_bp / ap_ap);
     const T t9 = log_ratio + T(2) * J2 * ab_ap;
     const T t10 = T(1) / ab_ab;
     F = J2 * in.w[0] + (T(1) / T(2)) * in.w[1] * t9 * t10 - t10 * in.w[2] * (J2 * ap_ap - t9 * t10 * ab_ap - T(1));
@@ -2428,49 +2432,51 @@ std::array<T, 3> segment_inverse_i2_w2_grad(const SegmentInput<T>& in) {
   const T ap_bp = bp0 * ap0 + ap1 * bp1 + ap2 * bp2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
-    const T t7 = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6] - t8 * ab_ap * t7;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6] - t7 * ab_ap * t6;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t8);
     const T t9 = T(1) / ab_ab;
     const T t10 = -ab_ap;
     const T t11 = J_downward<T>(4, ab_ab, cross_cross, t10, ap_ap, a_minus_b, bp_bp);
     const T t12 = T(1) / bp_bp;
-    const T t13 = t3 + T(2) * ab_ap * t11 - t12;
-    const T t14 = ab_ap * t3;
+    const T t13 = t8 + T(2) * ab_ap * t11 - t12;
+    const T t14 = ab_ap * t8;
     const T t15 = a_minus_b * t12;
     const T t16 = t14 + t15 - T(2) * cross_cross * t11;
     G_ap = (T(1) / T(2)) * t9 * t13 * in.w[1] + in.w[2] * t9 * (t9 * t13 * ab_ap - t11 * ap_ap - t16 * t9) + in.w[0] * t11;
-    const T t17 = in.w[0] * t3;
+    const T t17 = in.w[0] * t8;
     G_E = (T(1) / T(2)) * t9 * (t17 - t12 * (in.w[2] + in.w[0] + in.w[1]) - in.w[2] * t9 * (T(2) * t16 * t9 * ab_ap - log_ratio) - t16 * t9 * in.w[1]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t18 = sqrt(cross_cross);
     const T t19 = T(1) / t18;
     const T J2 = t19 * atan2(t18, ap_bp);
-    const T t20 = T(1) / ab_ab;
-    const T t21 = ab_ap * t3;
-    const T t22 = T(1) / bp_bp;
-    const T t23 = a_minus_b * t22;
-    const T t24 = ab_ab * J2 + t21 + t23;
-    const T t25 = T(1) / cross_cross;
-    const T t26 = t24 * t25 * ab_ap + t3 - t22;
-    G_ap = (T(1) / T(2)) * in.w[2] * t20 * (T(2) * t20 * ab_ap * t26 + T(2) * J2 - t24 * t25 * ap_ap) + (T(1) / T(2)) * t20 * in.w[1] * t26 + (T(1) / T(2)) * t24 * in.w[0] * t25;
-    const T t27 = in.w[0] * t3;
-    G_E = (T(1) / T(2)) * t20 * (J2 * in.w[1] + t27 + in.w[2] * t20 * (T(2) * J2 * ab_ap + log_ratio) - t22 * (in.w[2] + in.w[0] + in.w[1]));
+    const T t20 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t20);
+    const T t21 = T(1) / ab_ab;
+    const T t22 = ab_ap * t20;
+    const T t23 = T(1) / bp_bp;
+    const T t24 = a_minus_b * t23;
+    const T t25 = ab_ab * J2 + t22 + t24;
+    const T t26 = T(1) / cross_cross;
+    const T t27 = t25 * t26 * ab_ap + t20 - t23;
+    G_ap = (T(1) / T(2)) * in.w[2] * t21 * (T(2) * t21 * ab_ap * t27 + T(2) * J2 - t25 * t26 * ap_ap) + (T(1) / T(2)) * t21 * in.w[1] * t27 + (T(1) / T(2)) * t25 * in.w[0] * t26;
+    const T t28 = in.w[0] * t20;
+    G_E = (T(1) / T(2)) * t21 * (J2 * in.w[1] + t28 + in.w[2] * t21 * (T(2) * J2 * ab_ap + log_ratio) - t23 * (in.w[2] + in.w[0] + in.w[1]));
   }
   const T g_factor = -T(2) * length;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -2530,55 +2536,57 @@ T segment_inverse_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(t3 * bp_bp);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
-  const T t5 = -a_minus_b * ab_ap;
-  const T t6 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = -a_minus_b * ab_ap;
+  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
-    const T t7 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] - t8 * t7 * ab_ap;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] - t7 * t6 * ab_ap;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / ap_ap;
+    const T log_ratio = log(t8 * bp_bp);
     const T t9 = T(1) / ab_ab;
     const T t10 = T(1) / bp_bp;
     const T t11 = a_minus_b * t10;
-    const T t12 = t3 * ab_ap;
+    const T t12 = t8 * ab_ap;
     const T t13 = -ab_ap;
     const T t14 = J_downward<T>(4, ab_ab, cross_cross, t13, ap_ap, a_minus_b, bp_bp);
     const T t15 = t11 + t12 - T(2) * t14 * cross_cross;
     const T t16 = log_ratio - T(2) * t9 * t15 * ab_ap;
     F = in.w[2] * t9 * (ap_ap * t9 * t15 + t9 * t16 * ab_ap + T(1)) + (T(1) / T(2)) * t9 * t16 * in.w[1] - t9 * t15 * in.w[0];
-    const T t17 = t10 - t3 - T(2) * ab_ap * t14;
+    const T t17 = t10 - t8 - T(2) * ab_ap * t14;
     G_ap = in.w[0] * t14 - (T(1) / T(2)) * t9 * t17 * in.w[1] - in.w[2] * t9 * (t9 * t15 + ap_ap * t14 + t9 * t17 * ab_ap);
-    const T t18 = t3 * in.w[0];
+    const T t18 = t8 * in.w[0];
     G_E = (T(1) / T(2)) * t9 * (t18 + in.w[2] * t9 * t16 - t10 * (in.w[2] + in.w[0] + in.w[1]) - t9 * t15 * in.w[1]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = sqrt(cross_cross);
     const T t20 = T(1) / t19;
     const T J2 = atan2(t19, ap_bp) * t20;
-    const T t21 = T(1) / ab_ab;
-    const T t22 = T(2) * ab_ap * J2 + log_ratio;
-    F = in.w[0] * J2 + (T(1) / T(2)) * t21 * t22 * in.w[1] + in.w[2] * t21 * (t21 * ab_ap * t22 + T(1) - ap_ap * J2);
-    const T t23 = T(1) / bp_bp;
-    const T t24 = a_minus_b * t23;
-    const T t25 = t3 * ab_ap;
-    const T t26 = t24 + t25 + ab_ab * J2;
-    const T t27 = T(1) / cross_cross;
-    const T t28 = t23 - t26 * ab_ap * t27 - t3;
-    G_ap = (T(1) / T(2)) * t26 * in.w[0] * t27 - (T(1) / T(2)) * (T(2) * t21 * t28 * ab_ap + ap_ap * t26 * t27 - T(2) * J2) * in.w[2] * t21 - (T(1) / T(2)) * t21 * t28 * in.w[1];
-    const T t29 = t3 * in.w[0];
-    G_E = (T(1) / T(2)) * (in.w[2] * t21 * t22 + t29 + in.w[1] * J2 - t23 * (in.w[2] + in.w[0] + in.w[1])) * t21;
+    const T t21 = T(1) / ap_ap;
+    const T log_ratio = log(t21 * bp_bp);
+    const T t22 = T(1) / ab_ab;
+    const T t23 = T(2) * ab_ap * J2 + log_ratio;
+    F = in.w[0] * J2 + (T(1) / T(2)) * t22 * t23 * in.w[1] + in.w[2] * t22 * (t22 * ab_ap * t23 + T(1) - ap_ap * J2);
+    const T t24 = T(1) / bp_bp;
+    const T t25 = a_minus_b * t24;
+    const T t26 = t21 * ab_ap;
+    const T t27 = t25 + t26 + ab_ab * J2;
+    const T t28 = T(1) / cross_cross;
+    const T t29 = t24 - t27 * ab_ap * t28 - t21;
+    G_ap = (T(1) / T(2)) * t27 * in.w[0] * t28 - (T(1) / T(2)) * (T(2) * t22 * t29 * ab_ap + ap_ap * t27 * t28 - T(2) * J2) * in.w[2] * t22 - (T(1) / T(2)) * t22 * t29 * in.w[1];
+    const T t30 = t21 * in.w[0];
+    G_E = (T(1) / T(2)) * (in.w[2] * t22 * t23 + t30 + in.w[1] * J2 - t24 * (in.w[2] + in.w[0] + in.w[1])) * t22;
   }
   const T g_factor = -T(2) * length;
   f = F * length;
@@ -2639,37 +2647,37 @@ bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 8> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
-    const T t7 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5] - t7 * ab_ap * t8;
+    const T t6 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5] - t6 * ab_ap * t7;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t9 = sqrt(cross_cross);
-    const T t10 = T(1) / t9;
-    const T J2 = t10 * atan2(t9, ap_bp);
+    const T t8 = sqrt(cross_cross);
+    const T t9 = T(1) / t8;
+    const T J2 = t9 * atan2(t8, ap_bp);
+    const T t10 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t10);
     const T t11 = log_ratio + T(2) * ab_ap * J2;
     const T t12 = T(1) / ab_ab;
     F = in.w[0] * J2 + (ab_ap * t11 * t12 + T(1) - J2 * ap_ap) * in.w[2] * t12 + (T(1) / T(2)) * t11 * in.w[1] * t12;
     const T t13 = T(1) / cross_cross;
     const T t14 = T(1) / bp_bp;
-    const T t15 = J2 * ab_ab + t14 * a_minus_b + ab_ap * t3;
-    const T t16 = t14 - t3 - t13 * ab_ap * t15;
+    const T t15 = J2 * ab_ab + t14 * a_minus_b + ab_ap * t10;
+    const T t16 = t14 - t10 - t13 * ab_ap * t15;
     G_ap = (T(1) / T(2)) * t13 * in.w[0] * t15 + (T(1) / T(2)) * (T(2) * J2 - t13 * ap_ap * t15 - T(2) * ab_ap * t16 * t12) * in.w[2] * t12 - (T(1) / T(2)) * t16 * in.w[1] * t12;
-    const T t17 = in.w[0] * t3;
+    const T t17 = in.w[0] * t10;
     G_E = (T(1) / T(2)) * (J2 * in.w[1] + t11 * in.w[2] * t12 + t17 - t14 * (in.w[0] + in.w[1] + in.w[2])) * t12;
   }
   const T g_factor = -T(2) * length;
@@ -2677,7 +2685,7 @@ bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
   grad[1] = (foot1 * G_ap - ab1 * G_E) * g_factor;
   grad[2] = -g_factor * (G_E * ab2 - foot2 * G_ap);
-  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -2720,7 +2728,6 @@ T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
   const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T log_ratio = log(bp_bp / ap_ap);
   T F;
   const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
   const T t2 = -ab_ap * a_minus_b;
@@ -2732,6 +2739,7 @@ T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
     F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
+    const T log_ratio = log(bp_bp / ap_ap);
     const T t4 = T(2) * ab_ap + bp_bp - ap_ap;
     const T t5 = T(1) / ab_ab;
     const T t6 = -ab_ap;
@@ -2743,6 +2751,7 @@ T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
     // recurrence (1) upwards from J_1, J_2
     const T t10 = sqrt(cross_cross);
     const T J2 = atan2(t10, ap_bp) / t10;
+    const T log_ratio = log(bp_bp / ap_ap);
     const T t11 = T(2) * ab_ap * J2 + log_ratio;
     const T t12 = T(1) / ab_ab;
     const T t13 = ap_ap * J2 - ab_ap * t11 * t12 - T(1);
@@ -2804,53 +2813,55 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const SegmentInput<T>& in) {
   const T ap_bp = bp2 * ap2 + bp1 * ap1 + bp0 * ap0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(t3 * bp_bp);
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
-  const T t5 = -a_minus_b * ab_ap;
-  const T t6 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = -a_minus_b * ab_ap;
+  const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
-    const T t7 = in.w[2] * M_flat[7] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = M_flat[7] * in.w[1] + M_flat[9] * in.w[3] + M_flat[6] * in.w[0] + in.w[2] * M_flat[8] - t7 * t8 * ab_ap;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = in.w[2] * M_flat[7] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = M_flat[7] * in.w[1] + M_flat[9] * in.w[3] + M_flat[6] * in.w[0] + in.w[2] * M_flat[8] - t6 * t7 * ab_ap;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / ap_ap;
+    const T log_ratio = log(t8 * bp_bp);
     const T t9 = -ab_ap;
     const T t10 = J_downward<T>(4, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
     const T t11 = T(1) / bp_bp;
-    const T t12 = T(2) * t10 * ab_ap + t3 - t11;
+    const T t12 = T(2) * t10 * ab_ap + t8 - t11;
     const T t13 = T(1) / ab_ab;
     const T t14 = a_minus_b * t11;
-    const T t15 = t3 * ab_ap;
+    const T t15 = t8 * ab_ap;
     const T t16 = t14 + t15 - T(2) * t10 * cross_cross;
     const T t17 = log_ratio - T(2) * t16 * t13 * ab_ap;
     const T t18 = t16 * t13 + ap_ap * t10 - t12 * t13 * ab_ap;
     G_ap = (T(1) / T(2)) * t12 * t13 * in.w[1] + t10 * in.w[0] + (T(1) / T(2)) * (t13 * t17 - t12 * ap_ap * t13 - T(4) * t18 * t13 * ab_ap) * in.w[3] * t13 - in.w[2] * t18 * t13;
-    const T t19 = t3 * in.w[0];
+    const T t19 = t8 * in.w[0];
     G_E = (T(1) / T(2)) * (T(3) * in.w[3] * (t13 * t17 * ab_ap + ap_ap * t16 * t13 + T(1)) * t13 + in.w[2] * t13 * t17 + t19 - (in.w[2] + in.w[3] + in.w[0] + in.w[1]) * t11 - t16 * t13 * in.w[1]) * t13;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t20 = sqrt(cross_cross);
     const T t21 = T(1) / t20;
     const T J2 = atan2(t20, ap_bp) * t21;
-    const T t22 = T(1) / bp_bp;
-    const T t23 = a_minus_b * t22;
-    const T t24 = t3 * ab_ap;
-    const T t25 = t23 + ab_ab * J2 + t24;
-    const T t26 = T(1) / cross_cross;
-    const T t27 = log_ratio + T(2) * J2 * ab_ap;
-    const T t28 = T(1) / ab_ab;
-    const T t29 = t22 - t25 * t26 * ab_ap - t3;
-    const T t30 = T(2) * t28 * t29 * ab_ap + ap_ap * t25 * t26 - T(2) * J2;
-    G_ap = (T(1) / T(2)) * in.w[0] * t25 * t26 + (T(1) / T(2)) * (t27 * t28 + ap_ap * t28 * t29 - T(2) * t28 * ab_ap * t30) * in.w[3] * t28 - (T(1) / T(2)) * in.w[2] * t28 * t30 - (T(1) / T(2)) * t28 * t29 * in.w[1];
-    const T t31 = t3 * in.w[0];
-    G_E = (T(1) / T(2)) * t28 * (in.w[2] * t27 * t28 + J2 * in.w[1] + T(3) * (t27 * t28 * ab_ap + T(1) - ap_ap * J2) * in.w[3] * t28 + t31 - (in.w[2] + in.w[3] + in.w[0] + in.w[1]) * t22);
+    const T t22 = T(1) / ap_ap;
+    const T log_ratio = log(t22 * bp_bp);
+    const T t23 = T(1) / bp_bp;
+    const T t24 = a_minus_b * t23;
+    const T t25 = t22 * ab_ap;
+    const T t26 = t24 + ab_ab * J2 + t25;
+    const T t27 = T(1) / cross_cross;
+    const T t28 = log_ratio + T(2) * J2 * ab_ap;
+    const T t29 = T(1) / ab_ab;
+    const T t30 = t23 - t26 * t27 * ab_ap - t22;
+    const T t31 = T(2) * t29 * t30 * ab_ap + ap_ap * t26 * t27 - T(2) * J2;
+    G_ap = (T(1) / T(2)) * in.w[0] * t26 * t27 + (T(1) / T(2)) * (t28 * t29 + ap_ap * t29 * t30 - T(2) * t29 * ab_ap * t31) * in.w[3] * t29 - (T(1) / T(2)) * in.w[2] * t29 * t31 - (T(1) / T(2)) * t29 * t30 * in.w[1];
+    const T t32 = t22 * in.w[0];
+    G_E = (T(1) / T(2)) * t29 * (in.w[2] * t28 * t29 + J2 * in.w[1] + T(3) * (t28 * t29 * ab_ap + T(1) - ap_ap * J2) * in.w[3] * t29 + t32 - (in.w[2] + in.w[3] + in.w[0] + in.w[1]) * t23);
   }
   const T g_factor = -T(2) * length;
   grad[0] = (G_ap * foot0 - G_E * ab0) * g_factor;
@@ -2910,28 +2921,28 @@ T segment_inverse_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = in.w[3] * M_flat[3] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
-    const T t7 = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = in.w[2] * M_flat[8] + in.w[0] * M_flat[6] + in.w[3] * M_flat[9] + M_flat[7] * in.w[1] - ab_ap * t8 * t7;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = in.w[2] * M_flat[8] + in.w[0] * M_flat[6] + in.w[3] * M_flat[9] + M_flat[7] * in.w[1] - ab_ap * t7 * t6;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t8 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t8);
     const T t9 = T(1) / bp_bp;
     const T t10 = t9 * a_minus_b;
-    const T t11 = ab_ap * t3;
+    const T t11 = ab_ap * t8;
     const T t12 = -ab_ap;
     const T t13 = J_downward<T>(4, ab_ab, cross_cross, t12, ap_ap, a_minus_b, bp_bp);
     const T t14 = t10 + t11 - T(2) * t13 * cross_cross;
@@ -2940,31 +2951,33 @@ T segment_inverse_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t17 = ap_ap * t14 * t15 + T(1) - ab_ap * t16 * t15;
     const T t18 = T(2) * ab_ap + bp_bp - ap_ap;
     F = in.w[2] * t17 * t15 + (T(1) / T(2)) * in.w[3] * t15 * (ap_ap * t16 * t15 + t18 * t15 + T(4) * ab_ap * t17 * t15) - t14 * in.w[0] * t15 - (T(1) / T(2)) * t16 * t15 * in.w[1];
-    const T t19 = t3 + T(2) * ab_ap * t13 - t9;
+    const T t19 = t8 + T(2) * ab_ap * t13 - t9;
     const T t20 = ab_ap * t19 * t15 - t14 * t15 - t13 * ap_ap;
     G_ap = t13 * in.w[0] + in.w[2] * t15 * t20 + (T(1) / T(2)) * t19 * t15 * in.w[1] - (T(1) / T(2)) * in.w[3] * t15 * (ap_ap * t19 * t15 + t16 * t15 - T(4) * ab_ap * t15 * t20);
     const T t21 = in.w[2] + in.w[3] + in.w[0] + in.w[1];
-    G_E = -(T(1) / T(2)) * t15 * (t14 * t15 * in.w[1] + in.w[2] * t16 * t15 + t21 * t9 - T(3) * t17 * in.w[3] * t15 - t3 * in.w[0]);
+    G_E = -(T(1) / T(2)) * t15 * (t14 * t15 * in.w[1] + in.w[2] * t16 * t15 + t21 * t9 - T(3) * t17 * in.w[3] * t15 - t8 * in.w[0]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t22 = sqrt(cross_cross);
     const T t23 = T(1) / t22;
     const T J2 = atan2(t22, ap_bp) * t23;
-    const T t24 = T(2) * ab_ap * J2 + log_ratio;
-    const T t25 = T(1) / ab_ab;
-    const T t26 = J2 * ap_ap - ab_ap * t24 * t25 - T(1);
-    const T t27 = T(2) * ab_ap + bp_bp - ap_ap;
-    F = J2 * in.w[0] + (T(1) / T(2)) * t24 * t25 * in.w[1] - in.w[2] * t25 * t26 - (T(1) / T(2)) * in.w[3] * t25 * (t24 * ap_ap * t25 + T(4) * ab_ap * t25 * t26 - t27 * t25);
-    const T t28 = T(1) / bp_bp;
-    const T t29 = t28 * a_minus_b;
-    const T t30 = ab_ap * t3;
-    const T t31 = t29 + t30 + J2 * ab_ab;
-    const T t32 = T(1) / cross_cross;
-    const T t33 = t3 + ab_ap * t31 * t32 - t28;
-    const T t34 = t31 * ap_ap * t32 - T(2) * ab_ap * t33 * t25 - T(2) * J2;
-    G_ap = (T(1) / T(2)) * t31 * in.w[0] * t32 + (T(1) / T(2)) * t33 * t25 * in.w[1] - (T(1) / T(2)) * t34 * in.w[2] * t25 - (T(1) / T(2)) * (ap_ap * t33 * t25 + T(2) * t34 * ab_ap * t25 - t24 * t25) * in.w[3] * t25;
-    const T t35 = in.w[2] + in.w[3] + in.w[0] + in.w[1];
-    G_E = (T(1) / T(2)) * (in.w[2] * t24 * t25 + J2 * in.w[1] + t3 * in.w[0] - t35 * t28 - T(3) * in.w[3] * t25 * t26) * t25;
+    const T t24 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t24);
+    const T t25 = T(2) * ab_ap * J2 + log_ratio;
+    const T t26 = T(1) / ab_ab;
+    const T t27 = J2 * ap_ap - ab_ap * t25 * t26 - T(1);
+    const T t28 = T(2) * ab_ap + bp_bp - ap_ap;
+    F = J2 * in.w[0] + (T(1) / T(2)) * t25 * t26 * in.w[1] - in.w[2] * t26 * t27 - (T(1) / T(2)) * in.w[3] * t26 * (t25 * ap_ap * t26 + T(4) * ab_ap * t26 * t27 - t28 * t26);
+    const T t29 = T(1) / bp_bp;
+    const T t30 = t29 * a_minus_b;
+    const T t31 = ab_ap * t24;
+    const T t32 = t30 + t31 + J2 * ab_ab;
+    const T t33 = T(1) / cross_cross;
+    const T t34 = t24 + ab_ap * t32 * t33 - t29;
+    const T t35 = t32 * ap_ap * t33 - T(2) * ab_ap * t34 * t26 - T(2) * J2;
+    G_ap = (T(1) / T(2)) * t32 * in.w[0] * t33 + (T(1) / T(2)) * t34 * t26 * in.w[1] - (T(1) / T(2)) * t35 * in.w[2] * t26 - (T(1) / T(2)) * (ap_ap * t34 * t26 + T(2) * t35 * ab_ap * t26 - t25 * t26) * in.w[3] * t26;
+    const T t36 = in.w[2] + in.w[3] + in.w[0] + in.w[1];
+    G_E = (T(1) / T(2)) * (in.w[2] * t25 * t26 + J2 * in.w[1] + t24 * in.w[0] - t36 * t29 - T(3) * in.w[3] * t26 * t27) * t26;
   }
   const T g_factor = -T(2) * length;
   f = length * F;
@@ -3025,28 +3038,28 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(2, 4, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
-    const T t7 = M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = in.w[2] * M_flat[8] + in.w[3] * M_flat[9] + in.w[1] * M_flat[7] + in.w[0] * M_flat[6] - t8 * ab_ap * t7;
+    const T t6 = M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = in.w[2] * M_flat[8] + in.w[3] * M_flat[9] + in.w[1] * M_flat[7] + in.w[0] * M_flat[6] - t7 * ab_ap * t6;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t9 = sqrt(cross_cross);
-    const T t10 = T(1) / t9;
-    const T J2 = t10 * atan2(t9, ap_bp);
+    const T t8 = sqrt(cross_cross);
+    const T t9 = T(1) / t8;
+    const T J2 = t9 * atan2(t8, ap_bp);
+    const T t10 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t10);
     const T t11 = T(1) / ab_ab;
     const T t12 = T(2) * ab_ap * J2 + log_ratio;
     const T t13 = t12 * t11 * ab_ap + T(1) - J2 * ap_ap;
@@ -3054,13 +3067,13 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
     F = in.w[0] * J2 + t11 * t13 * in.w[2] + (T(1) / T(2)) * t12 * t11 * in.w[1] + (T(1) / T(2)) * in.w[3] * t11 * (T(4) * t11 * ab_ap * t13 + t14 - t12 * t11 * ap_ap);
     const T t15 = T(1) / bp_bp;
     const T t16 = t15 * a_minus_b;
-    const T t17 = ab_ap * t3;
+    const T t17 = ab_ap * t10;
     const T t18 = ab_ab * J2 + t16 + t17;
     const T t19 = T(1) / cross_cross;
-    const T t20 = t3 + t18 * t19 * ab_ap - t15;
+    const T t20 = t10 + t18 * t19 * ab_ap - t15;
     const T t21 = t18 * t19 * ap_ap - T(2) * t11 * t20 * ab_ap - T(2) * J2;
     G_ap = (T(1) / T(2)) * t11 * t20 * in.w[1] + (T(1) / T(2)) * in.w[0] * t18 * t19 - (T(1) / T(2)) * in.w[3] * t11 * (t11 * t20 * ap_ap + T(2) * t11 * ab_ap * t21 - t12 * t11) - (T(1) / T(2)) * t11 * in.w[2] * t21;
-    const T t22 = in.w[0] * t3;
+    const T t22 = in.w[0] * t10;
     G_E = (T(1) / T(2)) * t11 * (t22 + t12 * t11 * in.w[2] + T(3) * in.w[3] * t11 * t13 + in.w[1] * J2 - (in.w[3] + in.w[0] + in.w[1] + in.w[2]) * t15);
   }
   const T g_factor = -T(2) * length;
@@ -3068,7 +3081,7 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
   grad[1] = g_factor * (G_ap * foot1 - ab1 * G_E);
   grad[2] = -(ab2 * G_E - G_ap * foot2) * g_factor;
-  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -5883,27 +5896,27 @@ T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
   const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T F;
-  const T t2 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
-  const T t3 = -a_minus_b * ab_ap;
-  const T t4 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
-  if (t2 >= T(0)) {
+  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t2 = -a_minus_b * ab_ap;
+  const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
+  if (t1 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 4> M_flat;
     segment_moments_gauss<T, 20>(4, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1];
-  } else if (t3 >= T(0) && t4 >= T(0)) {
+  } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
+    const T t4 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t4);
     const T t5 = T(1) / ab_ab;
     const T t6 = T(1) / bp_bp;
     const T t7 = a_minus_b * t6;
-    const T t8 = ab_ap * t1;
+    const T t8 = ab_ap * t4;
     const T t9 = -ab_ap;
     const T t10 = J_downward<T>(4, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
     const T t11 = t7 + t8 - T(2) * cross_cross * t10;
-    const T t12 = t6 - T(2) * ab_ap * t10 - t1;
+    const T t12 = t6 - T(2) * ab_ap * t10 - t4;
     const T t13 = t5 * t11 + t10 * ap_ap + t5 * ab_ap * t12;
     F = (T(1) / T(2)) * t5 * (t5 * (log_ratio - T(2) * t5 * ab_ap * t11) + t5 * t12 * ap_ap - T(4) * t5 * ab_ap * t13) * in.w[3] + t10 * in.w[0] - (T(1) / T(2)) * t5 * in.w[1] * t12 - t5 * in.w[2] * t13;
   } else {
@@ -5911,15 +5924,17 @@ T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
     const T t14 = sqrt(cross_cross);
     const T t15 = T(1) / t14;
     const T J2 = atan2(t14, ap_bp) * t15;
-    const T t16 = T(1) / ab_ab;
-    const T t17 = T(1) / bp_bp;
-    const T t18 = T(1) / cross_cross;
-    const T t19 = a_minus_b * t17;
-    const T t20 = ab_ap * t1;
-    const T t21 = ab_ab * J2 + t19 + t20;
-    const T t22 = t17 - t18 * ab_ap * t21 - t1;
-    const T t23 = T(2) * J2 - T(2) * t16 * ab_ap * t22 - t18 * t21 * ap_ap;
-    F = (T(1) / T(2)) * t16 * t23 * in.w[2] + (T(1) / T(2)) * t16 * (t16 * t22 * ap_ap + T(2) * t16 * t23 * ab_ap + t16 * (log_ratio + T(2) * J2 * ab_ap)) * in.w[3] + (T(1) / T(2)) * t18 * t21 * in.w[0] - (T(1) / T(2)) * t16 * in.w[1] * t22;
+    const T t16 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t16);
+    const T t17 = T(1) / ab_ab;
+    const T t18 = T(1) / bp_bp;
+    const T t19 = T(1) / cross_cross;
+    const T t20 = a_minus_b * t18;
+    const T t21 = ab_ap * t16;
+    const T t22 = ab_ab * J2 + t20 + t21;
+    const T t23 = t18 - t19 * ab_ap * t22 - t16;
+    const T t24 = T(2) * J2 - T(2) * t17 * ab_ap * t23 - t19 * t22 * ap_ap;
+    F = (T(1) / T(2)) * t17 * t24 * in.w[2] + (T(1) / T(2)) * t17 * (t17 * t23 * ap_ap + T(2) * t17 * t24 * ab_ap + t17 * (log_ratio + T(2) * J2 * ab_ap)) * in.w[3] + (T(1) / T(2)) * t19 * t22 * in.w[0] - (T(1) / T(2)) * t17 * in.w[1] * t23;
   }
   f = length * F;
   return f;
@@ -6083,34 +6098,34 @@ T segment_inverse_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(4, 6, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + in.w[3] * M_flat[3];
-    const T t7 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = in.w[1] * M_flat[7] + M_flat[6] * in.w[0] + in.w[2] * M_flat[8] + in.w[3] * M_flat[9] - t7 * ab_ap * t8;
-  } else if (t5 >= T(0) && t6 >= T(0)) {
+    const T t6 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = in.w[1] * M_flat[7] + M_flat[6] * in.w[0] + in.w[2] * M_flat[8] + in.w[3] * M_flat[9] - t6 * ab_ap * t7;
+  } else if (t4 >= T(0) && t5 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
+    const T t8 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t8);
     const T t9 = T(1) / bp_bp;
-    const T t10 = t3 * t3;
+    const T t10 = t8 * t8;
     const T t11 = t9 * t9;
     const T t12 = -ab_ap;
     const T t13 = J_downward<T>(6, ab_ab, cross_cross, t12, ap_ap, a_minus_b, bp_bp);
     const T t14 = ab_ap * t10 + t11 * a_minus_b - T(4) * cross_cross * t13;
     const T t15 = T(1) / ab_ab;
-    const T t16 = T(3) * t9 + T(2) * ab_ap * t14 * t15 - T(3) * t3;
-    const T t17 = T(2) * cross_cross * t14 * t15 + T(3) * t9 * a_minus_b + T(3) * ab_ap * t3;
+    const T t16 = T(3) * t9 + T(2) * ab_ap * t14 * t15 - T(3) * t8;
+    const T t17 = T(2) * cross_cross * t14 * t15 + T(3) * t9 * a_minus_b + T(3) * ab_ap * t8;
     const T t18 = t16 * ab_ap * t15 + t17 * t15 - t14 * ap_ap * t15;
     F = -(T(1) / T(6)) * in.w[1] * t16 * t15 - (T(1) / T(3)) * t14 * in.w[0] * t15 - (T(1) / T(6)) * ((T(2) * t17 * ab_ap * t15 - T(3) * log_ratio) * t15 + T(4) * ab_ap * t18 * t15 - t16 * ap_ap * t15) * in.w[3] * t15 - (T(1) / T(3)) * in.w[2] * t18 * t15;
     const T t19 = T(4) * ab_ap * t13 + t10 - t11;
@@ -6123,21 +6138,23 @@ T segment_inverse_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
     const T t22 = sqrt(cross_cross);
     const T t23 = T(1) / t22;
     const T J2 = t23 * atan2(t22, ap_bp);
-    const T t24 = T(1) / cross_cross;
-    const T t25 = T(1) / bp_bp;
-    const T t26 = J2 * ab_ab + t25 * a_minus_b + ab_ap * t3;
-    const T t27 = t25 - t24 * ab_ap * t26 - t3;
-    const T t28 = T(1) / ab_ab;
-    const T t29 = T(2) * t27 * ab_ap * t28 + t24 * ap_ap * t26 - T(2) * J2;
-    F = (T(1) / T(2)) * t24 * t26 * in.w[0] + (T(1) / T(2)) * (t27 * ap_ap * t28 + (log_ratio + T(2) * ab_ap * J2) * t28 - T(2) * ab_ap * t29 * t28) * in.w[3] * t28 - (T(1) / T(2)) * in.w[2] * t29 * t28 - (T(1) / T(2)) * t27 * in.w[1] * t28;
-    const T t30 = t3 * t3;
-    const T t31 = t25 * t25;
-    const T t32 = T(2) * ab_ap * t30 + T(2) * t31 * a_minus_b + T(3) * t24 * t26 * ab_ab;
-    const T t33 = t24 * ab_ap * t32 + T(2) * t30 - T(2) * t31;
-    const T t34 = T(4) * t24 * t26 + T(2) * ab_ap * t28 * t33 - t24 * ap_ap * t32;
-    G_ap = (T(1) / T(8)) * t24 * t32 * in.w[0] + (T(1) / T(8)) * t34 * in.w[2] * t28 + (T(1) / T(8)) * (T(2) * t34 * ab_ap * t28 - ap_ap * t28 * t33 - T(4) * t27 * t28) * in.w[3] * t28 + (T(1) / T(8)) * in.w[1] * t28 * t33;
-    const T t35 = in.w[1] + in.w[2] + in.w[3] + in.w[0];
-    G_E = -(T(1) / T(8)) * t28 * (T(3) * t29 * in.w[3] * t28 + T(2) * t27 * in.w[2] * t28 + T(2) * t31 * t35 - T(2) * t30 * in.w[0] - t24 * in.w[1] * t26);
+    const T t24 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t24);
+    const T t25 = T(1) / cross_cross;
+    const T t26 = T(1) / bp_bp;
+    const T t27 = J2 * ab_ab + t26 * a_minus_b + ab_ap * t24;
+    const T t28 = t26 - t25 * ab_ap * t27 - t24;
+    const T t29 = T(1) / ab_ab;
+    const T t30 = T(2) * t28 * ab_ap * t29 + t25 * ap_ap * t27 - T(2) * J2;
+    F = (T(1) / T(2)) * t25 * t27 * in.w[0] + (T(1) / T(2)) * (t28 * ap_ap * t29 + (log_ratio + T(2) * ab_ap * J2) * t29 - T(2) * ab_ap * t30 * t29) * in.w[3] * t29 - (T(1) / T(2)) * in.w[2] * t30 * t29 - (T(1) / T(2)) * t28 * in.w[1] * t29;
+    const T t31 = t24 * t24;
+    const T t32 = t26 * t26;
+    const T t33 = T(2) * ab_ap * t31 + T(2) * t32 * a_minus_b + T(3) * t25 * t27 * ab_ab;
+    const T t34 = t25 * ab_ap * t33 + T(2) * t31 - T(2) * t32;
+    const T t35 = T(4) * t25 * t27 + T(2) * ab_ap * t29 * t34 - t25 * ap_ap * t33;
+    G_ap = (T(1) / T(8)) * t25 * t33 * in.w[0] + (T(1) / T(8)) * t35 * in.w[2] * t29 + (T(1) / T(8)) * (T(2) * t35 * ab_ap * t29 - ap_ap * t29 * t34 - T(4) * t28 * t29) * in.w[3] * t29 + (T(1) / T(8)) * in.w[1] * t29 * t34;
+    const T t36 = in.w[1] + in.w[2] + in.w[3] + in.w[0];
+    G_E = -(T(1) / T(8)) * t29 * (T(3) * t30 * in.w[3] * t29 + T(2) * t28 * in.w[2] * t29 + T(2) * t32 * t36 - T(2) * t31 * in.w[0] - t25 * in.w[1] * t27);
   }
   const T g_factor = -T(4) * length;
   f = length * F;
@@ -6198,36 +6215,36 @@ bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   const T ap_bp = bp1 * ap1 + bp0 * ap0 + bp2 * ap2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t3 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t3);
   T F;
   T G_ap;
   T G_E;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
-  const T t5 = -ab_ap * a_minus_b;
-  const T t6 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
-  if (t4 >= T(0)) {
+  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = -ab_ap * a_minus_b;
+  const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
+  if (t3 >= T(0)) {
     // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
     std::array<T, 10> M_flat;
     segment_moments_gauss<T, 20>(4, 6, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1];
-    const T t7 = M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
-    G_ap = t7;
-    const T t8 = T(1) / ab_ab;
-    G_E = in.w[0] * M_flat[6] + in.w[3] * M_flat[9] + in.w[1] * M_flat[7] + M_flat[8] * in.w[2] - t8 * t7 * ab_ap;
+    const T t6 = M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
+    G_ap = t6;
+    const T t7 = T(1) / ab_ab;
+    G_E = in.w[0] * M_flat[6] + in.w[3] * M_flat[9] + in.w[1] * M_flat[7] + M_flat[8] * in.w[2] - t7 * t6 * ab_ap;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t9 = sqrt(cross_cross);
-    const T t10 = T(1) / t9;
-    const T J2 = atan2(t9, ap_bp) * t10;
+    const T t8 = sqrt(cross_cross);
+    const T t9 = T(1) / t8;
+    const T J2 = atan2(t8, ap_bp) * t9;
+    const T t10 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t10);
     const T t11 = T(1) / ab_ab;
     const T t12 = T(1) / cross_cross;
     const T t13 = T(1) / bp_bp;
-    const T t14 = t13 * a_minus_b + ab_ap * t3 + J2 * ab_ab;
-    const T t15 = t12 * ab_ap * t14 + t3 - t13;
+    const T t14 = t13 * a_minus_b + ab_ap * t10 + J2 * ab_ab;
+    const T t15 = t12 * ab_ap * t14 + t10 - t13;
     const T t16 = T(2) * J2 + T(2) * t11 * t15 * ab_ap - t12 * t14 * ap_ap;
     F = (T(1) / T(2)) * t11 * in.w[1] * t15 + (T(1) / T(2)) * t16 * t11 * in.w[2] + (T(1) / T(2)) * in.w[0] * t12 * t14 + (T(1) / T(2)) * ((log_ratio + T(2) * J2 * ab_ap) * t11 + T(2) * t16 * t11 * ab_ap - t11 * t15 * ap_ap) * in.w[3] * t11;
-    const T t17 = t3 * t3;
+    const T t17 = t10 * t10;
     const T t18 = t13 * t13;
     const T t19 = T(3) * ab_ab * t12 * t14 + T(2) * ab_ap * t17 + T(2) * t18 * a_minus_b;
     const T t20 = t12 * ab_ap * t19 + T(2) * t17 - T(2) * t18;
@@ -6241,7 +6258,7 @@ bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
   grad[1] = -g_factor * (ab1 * G_E - foot1 * G_ap);
   grad[2] = g_factor * (G_ap * foot2 - ab2 * G_E);
-  return !(((t5 >= T(0) && t6 >= T(0)) && !(t4 >= T(0))));
+  return !(((t4 >= T(0) && t5 >= T(0)) && !(t3 >= T(0))));
 }
 
 /// the field, where
@@ -27353,12 +27370,12 @@ T segment_inverse_i2_w1_fast_f(const SegmentInput<T>& in) {
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T length = sqrt(ab_ab);
-  const T log_ratio = log(bp_bp / ap_ap);
   T F;
   {
     // recurrence (1) upwards from J_1, J_2
     const T t0 = sqrt(cross_cross);
     const T J2 = atan2(t0, ap_bp) / t0;
+    const T log_ratio = log(bp_bp / ap_ap);
     F = (T(1) / T(2)) * (log_ratio + T(2) * ab_ap * J2) * in.w[1] / ab_ab + in.w[0] * J2;
   }
   f = length * F;
@@ -27469,23 +27486,23 @@ T segment_inverse_i2_w1_fast_f_and_grad(const SegmentInput<T>& in, std::array<T,
   const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T F;
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(cross_cross);
-    const T t3 = T(1) / t2;
-    const T J2 = atan2(t2, ap_bp) * t3;
+    const T t1 = sqrt(cross_cross);
+    const T t2 = T(1) / t1;
+    const T J2 = atan2(t1, ap_bp) * t2;
+    const T t3 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t3);
     const T t4 = T(1) / ab_ab;
     F = (T(1) / T(2)) * (log_ratio + T(2) * ab_ap * J2) * in.w[1] * t4 + J2 * in.w[0];
     const T t5 = T(1) / bp_bp;
-    const T t6 = ab_ap * t1 + J2 * ab_ab + t5 * a_minus_b;
+    const T t6 = ab_ap * t3 + J2 * ab_ab + t5 * a_minus_b;
     const T t7 = T(1) / cross_cross;
-    G_ap = (T(1) / T(2)) * t6 * in.w[0] * t7 + (T(1) / T(2)) * (t6 * ab_ap * t7 + t1 - t5) * in.w[1] * t4;
-    G_E = (T(1) / T(2)) * (J2 * in.w[1] + in.w[0] * t1 - t5 * (in.w[0] + in.w[1])) * t4;
+    G_ap = (T(1) / T(2)) * t6 * in.w[0] * t7 + (T(1) / T(2)) * (t6 * ab_ap * t7 + t3 - t5) * in.w[1] * t4;
+    G_E = (T(1) / T(2)) * (J2 * in.w[1] + in.w[0] * t3 - t5 * (in.w[0] + in.w[1])) * t4;
   }
   const T g_factor = -T(2) * length;
   f = length * F;
@@ -27527,12 +27544,12 @@ T segment_inverse_i2_w2_fast_f(const SegmentInput<T>& in) {
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ap_bp = bp2 * ap2 + bp0 * ap0 + ap1 * bp1;
   const T length = sqrt(ab_ab);
-  const T log_ratio = log(bp_bp / ap_ap);
   T F;
   {
     // recurrence (1) upwards from J_1, J_2
     const T t0 = sqrt(cross_cross);
     const T J2 = atan2(t0, ap_bp) / t0;
+    const T log_ratio = log(bp_bp / ap_ap);
     const T t1 = T(1) / ab_ab;
     const T t2 = log_ratio + T(2) * J2 * ab_ap;
     F = (T(1) / T(2)) * t1 * t2 * in.w[1] + J2 * in.w[0] - in.w[2] * t1 * (J2 * ap_ap - t1 * t2 * ab_ap - T(1));
@@ -27582,22 +27599,22 @@ std::array<T, 3> segment_inverse_i2_w2_fast_grad(const SegmentInput<T>& in) {
   const T ap_bp = bp1 * ap1 + ap2 * bp2 + bp0 * ap0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(cross_cross);
-    const T t3 = T(1) / t2;
-    const T J2 = atan2(t2, ap_bp) * t3;
+    const T t1 = sqrt(cross_cross);
+    const T t2 = T(1) / t1;
+    const T J2 = atan2(t1, ap_bp) * t2;
+    const T t3 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t3);
     const T t4 = T(1) / ab_ab;
     const T t5 = T(1) / bp_bp;
-    const T t6 = ab_ab * J2 + ab_ap * t1 + a_minus_b * t5;
+    const T t6 = ab_ab * J2 + ab_ap * t3 + a_minus_b * t5;
     const T t7 = T(1) / cross_cross;
-    const T t8 = t1 + t6 * t7 * ab_ap - t5;
+    const T t8 = t3 + t6 * t7 * ab_ap - t5;
     G_ap = (T(1) / T(2)) * in.w[2] * t4 * (T(2) * t4 * ab_ap * t8 + T(2) * J2 - t6 * t7 * ap_ap) + (T(1) / T(2)) * t4 * t8 * in.w[1] + (T(1) / T(2)) * t6 * in.w[0] * t7;
-    G_E = (T(1) / T(2)) * t4 * (in.w[2] * t4 * (T(2) * J2 * ab_ap + log_ratio) + J2 * in.w[1] + in.w[0] * t1 - t5 * (in.w[2] + in.w[0] + in.w[1]));
+    G_E = (T(1) / T(2)) * t4 * (in.w[2] * t4 * (T(2) * J2 * ab_ap + log_ratio) + J2 * in.w[1] + in.w[0] * t3 - t5 * (in.w[2] + in.w[0] + in.w[1]));
   }
   const T g_factor = -T(2) * length;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
@@ -27647,25 +27664,25 @@ T segment_inverse_i2_w2_fast_f_and_grad(const SegmentInput<T>& in, std::array<T,
   const T ap_bp = bp2 * ap2 + ap0 * bp0 + bp1 * ap1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(t1 * bp_bp);
   T F;
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(cross_cross);
-    const T t3 = T(1) / t2;
-    const T J2 = atan2(t2, ap_bp) * t3;
+    const T t1 = sqrt(cross_cross);
+    const T t2 = T(1) / t1;
+    const T J2 = atan2(t1, ap_bp) * t2;
+    const T t3 = T(1) / ap_ap;
+    const T log_ratio = log(t3 * bp_bp);
     const T t4 = T(1) / ab_ab;
     const T t5 = log_ratio + T(2) * J2 * ab_ap;
     F = (T(1) / T(2)) * in.w[1] * t4 * t5 + J2 * in.w[0] - in.w[2] * (J2 * ap_ap - t4 * t5 * ab_ap - T(1)) * t4;
     const T t6 = T(1) / bp_bp;
-    const T t7 = t1 * ab_ap + J2 * ab_ab + a_minus_b * t6;
+    const T t7 = t3 * ab_ap + J2 * ab_ab + a_minus_b * t6;
     const T t8 = T(1) / cross_cross;
-    const T t9 = t1 + t7 * t8 * ab_ap - t6;
+    const T t9 = t3 + t7 * t8 * ab_ap - t6;
     G_ap = (T(1) / T(2)) * in.w[1] * t4 * t9 + (T(1) / T(2)) * in.w[2] * t4 * (T(2) * J2 + T(2) * t4 * t9 * ab_ap - ap_ap * t7 * t8) + (T(1) / T(2)) * t7 * t8 * in.w[0];
-    G_E = (T(1) / T(2)) * t4 * (J2 * in.w[1] + t1 * in.w[0] + in.w[2] * t4 * t5 - t6 * (in.w[1] + in.w[2] + in.w[0]));
+    G_E = (T(1) / T(2)) * t4 * (J2 * in.w[1] + t3 * in.w[0] + in.w[2] * t4 * t5 - t6 * (in.w[1] + in.w[2] + in.w[0]));
   }
   const T g_factor = -T(2) * length;
   f = F * length;
@@ -27707,12 +27724,12 @@ T segment_inverse_i2_w3_fast_f(const SegmentInput<T>& in) {
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T length = sqrt(ab_ab);
-  const T log_ratio = log(bp_bp / ap_ap);
   T F;
   {
     // recurrence (1) upwards from J_1, J_2
     const T t0 = sqrt(cross_cross);
     const T J2 = atan2(t0, ap_bp) / t0;
+    const T log_ratio = log(bp_bp / ap_ap);
     const T t1 = T(1) / ab_ab;
     const T t2 = T(2) * J2 * ab_ap + log_ratio;
     const T t3 = ap_ap * J2 - t1 * t2 * ab_ap - T(1);
@@ -27763,24 +27780,24 @@ std::array<T, 3> segment_inverse_i2_w3_fast_grad(const SegmentInput<T>& in) {
   const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(cross_cross);
-    const T t3 = T(1) / t2;
-    const T J2 = t3 * atan2(t2, ap_bp);
+    const T t1 = sqrt(cross_cross);
+    const T t2 = T(1) / t1;
+    const T J2 = t2 * atan2(t1, ap_bp);
+    const T t3 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t3);
     const T t4 = T(1) / ab_ab;
     const T t5 = T(1) / cross_cross;
     const T t6 = T(1) / bp_bp;
-    const T t7 = a_minus_b * t6 + ab_ap * t1 + ab_ab * J2;
-    const T t8 = t1 + t5 * ab_ap * t7 - t6;
+    const T t7 = a_minus_b * t6 + ab_ap * t3 + ab_ab * J2;
+    const T t8 = t3 + t5 * ab_ap * t7 - t6;
     const T t9 = t5 * ap_ap * t7 - T(2) * t4 * t8 * ab_ap - T(2) * J2;
     const T t10 = T(2) * J2 * ab_ap + log_ratio;
     G_ap = (T(1) / T(2)) * t4 * t8 * in.w[1] + (T(1) / T(2)) * in.w[0] * t5 * t7 - (T(1) / T(2)) * t4 * (t4 * t8 * ap_ap + T(2) * t4 * t9 * ab_ap - t4 * t10) * in.w[3] - (T(1) / T(2)) * t4 * t9 * in.w[2];
-    G_E = (T(1) / T(2)) * t4 * (t4 * t10 * in.w[2] + in.w[0] * t1 + J2 * in.w[1] + T(3) * t4 * (t4 * t10 * ab_ap + T(1) - J2 * ap_ap) * in.w[3] - (in.w[0] + in.w[1] + in.w[2] + in.w[3]) * t6);
+    G_E = (T(1) / T(2)) * t4 * (t4 * t10 * in.w[2] + in.w[0] * t3 + J2 * in.w[1] + T(3) * t4 * (t4 * t10 * ab_ap + T(1) - J2 * ap_ap) * in.w[3] - (in.w[0] + in.w[1] + in.w[2] + in.w[3]) * t6);
   }
   const T g_factor = -T(2) * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -27830,27 +27847,27 @@ T segment_inverse_i2_w3_fast_f_and_grad(const SegmentInput<T>& in, std::array<T,
   const T ap_bp = bp1 * ap1 + bp0 * ap0 + ap2 * bp2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T F;
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(cross_cross);
-    const T t3 = T(1) / t2;
-    const T J2 = t3 * atan2(t2, ap_bp);
+    const T t1 = sqrt(cross_cross);
+    const T t2 = T(1) / t1;
+    const T J2 = t2 * atan2(t1, ap_bp);
+    const T t3 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t3);
     const T t4 = T(1) / ab_ab;
     const T t5 = T(2) * ab_ap * J2 + log_ratio;
     const T t6 = J2 * ap_ap - t4 * ab_ap * t5 - T(1);
     F = (T(1) / T(2)) * t4 * in.w[1] * t5 + in.w[0] * J2 - t4 * t6 * in.w[2] - (T(1) / T(2)) * in.w[3] * t4 * (t4 * ap_ap * t5 + T(4) * t4 * t6 * ab_ap - t4 * (T(2) * ab_ap + bp_bp - ap_ap));
     const T t7 = T(1) / cross_cross;
     const T t8 = T(1) / bp_bp;
-    const T t9 = ab_ab * J2 + ab_ap * t1 + t8 * a_minus_b;
-    const T t10 = t1 + t7 * ab_ap * t9 - t8;
+    const T t9 = ab_ab * J2 + ab_ap * t3 + t8 * a_minus_b;
+    const T t10 = t3 + t7 * ab_ap * t9 - t8;
     const T t11 = T(2) * t4 * ab_ap * t10 + T(2) * J2 - t7 * ap_ap * t9;
     G_ap = (T(1) / T(2)) * t11 * t4 * in.w[2] + (T(1) / T(2)) * t4 * in.w[1] * t10 + (T(1) / T(2)) * in.w[0] * t7 * t9 + (T(1) / T(2)) * in.w[3] * (t4 * t5 + T(2) * t11 * t4 * ab_ap - t4 * t10 * ap_ap) * t4;
-    G_E = -(T(1) / T(2)) * t4 * (T(3) * in.w[3] * t4 * t6 + (in.w[3] + in.w[0] + in.w[1] + in.w[2]) * t8 - in.w[1] * J2 - t4 * in.w[2] * t5 - in.w[0] * t1);
+    G_E = -(T(1) / T(2)) * t4 * (T(3) * in.w[3] * t4 * t6 + (in.w[3] + in.w[0] + in.w[1] + in.w[2]) * t8 - in.w[1] * J2 - t4 * in.w[2] * t5 - in.w[0] * t3);
   }
   const T g_factor = -T(2) * length;
   f = length * F;
@@ -29240,19 +29257,19 @@ T segment_inverse_i4_w3_fast_f(const SegmentInput<T>& in) {
   const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t0 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t0);
   T F;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t1 = sqrt(cross_cross);
-    const T t2 = T(1) / t1;
-    const T J2 = t2 * atan2(t1, ap_bp);
+    const T t0 = sqrt(cross_cross);
+    const T t1 = T(1) / t0;
+    const T J2 = t1 * atan2(t0, ap_bp);
+    const T t2 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t2);
     const T t3 = T(1) / ab_ab;
     const T t4 = T(1) / bp_bp;
     const T t5 = T(1) / cross_cross;
-    const T t6 = a_minus_b * t4 + ab_ap * t0 + ab_ab * J2;
-    const T t7 = t4 - t5 * ab_ap * t6 - t0;
+    const T t6 = a_minus_b * t4 + ab_ap * t2 + ab_ab * J2;
+    const T t7 = t4 - t5 * ab_ap * t6 - t2;
     const T t8 = t5 * ap_ap * t6 + T(2) * t3 * ab_ap * t7 - T(2) * J2;
     F = (T(1) / T(2)) * t3 * (t3 * (log_ratio + T(2) * ab_ap * J2) + t3 * ap_ap * t7 - T(2) * t3 * ab_ap * t8) * in.w[3] + (T(1) / T(2)) * t5 * in.w[0] * t6 - (T(1) / T(2)) * t3 * in.w[1] * t7 - (T(1) / T(2)) * t3 * t8 * in.w[2];
   }
@@ -29370,25 +29387,25 @@ T segment_inverse_i4_w3_fast_f_and_grad(const SegmentInput<T>& in, std::array<T,
   const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
-  const T t1 = T(1) / ap_ap;
-  const T log_ratio = log(bp_bp * t1);
   T F;
   T G_ap;
   T G_E;
   {
     // recurrence (1) upwards from J_1, J_2
-    const T t2 = sqrt(cross_cross);
-    const T t3 = T(1) / t2;
-    const T J2 = t3 * atan2(t2, ap_bp);
+    const T t1 = sqrt(cross_cross);
+    const T t2 = T(1) / t1;
+    const T J2 = t2 * atan2(t1, ap_bp);
+    const T t3 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t3);
     const T t4 = T(1) / cross_cross;
     const T t5 = T(1) / bp_bp;
-    const T t6 = ab_ap * t1 + J2 * ab_ab + t5 * a_minus_b;
+    const T t6 = ab_ap * t3 + J2 * ab_ab + t5 * a_minus_b;
     const T t7 = T(1) / ab_ab;
-    const T t8 = t5 - t4 * ab_ap * t6 - t1;
+    const T t8 = t5 - t4 * ab_ap * t6 - t3;
     const T t9 = T(2) * ab_ap * t7 * t8 + t4 * ap_ap * t6 - T(2) * J2;
     F = (T(1) / T(2)) * t4 * in.w[0] * t6 + (T(1) / T(2)) * ((T(2) * ab_ap * J2 + log_ratio) * t7 + ap_ap * t7 * t8 - T(2) * ab_ap * t7 * t9) * in.w[3] * t7 - (T(1) / T(2)) * in.w[1] * t7 * t8 - (T(1) / T(2)) * in.w[2] * t7 * t9;
     const T t10 = t5 * t5;
-    const T t11 = t1 * t1;
+    const T t11 = t3 * t3;
     const T t12 = T(2) * t10 * a_minus_b + T(3) * t4 * t6 * ab_ab + T(2) * ab_ap * t11;
     const T t13 = t12 * t4 * ab_ap + T(2) * t11 - T(2) * t10;
     const T t14 = T(2) * ab_ap * t13 * t7 + T(4) * t4 * t6 - t12 * t4 * ap_ap;

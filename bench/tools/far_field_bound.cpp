@@ -9,7 +9,9 @@
 // Not built by CMake (a derivation, a few minutes):
 //   g++ -O2 -std=c++20 bench/tools/far_field_bound.cpp -o /tmp/far_field_bound && /tmp/far_field_bound [--radius] [--panels]
 // --panels widens the weights and orders to the SCALIS segments' Gauss
-// panels (gauss_moments.hpp, panel_rule_nodes).
+// panels with weights up to t^10 (gauss_moments.hpp, panel_node_thresholds);
+// --low-order narrows the orders to m ≤ 6 (weights t^k, k ≤ 4: the SCALIS
+// kernels of degree ≤ 4).
 #include <boost/math/quadrature/gauss.hpp>
 
 #include <algorithm>
@@ -92,6 +94,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if (option == "--radius") by_radius = true;
+    if (option == "--low-order") orders_m = {1, 2, 3, 4, 5, 6};
     if (option == "--panels") {
       weights_k = {0, 1, 4, 10};
       orders_m = {1, 2, 3, 12, 18};

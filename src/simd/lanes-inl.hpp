@@ -48,6 +48,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "skelconv/detail/gauss_moments.hpp"
 #include "skelconv/not_converged.hpp"
@@ -176,6 +177,28 @@ inline Lanes cos(Lanes a) {
 }
 #endif
 
+/// The largest of count(v…) over the active lanes, v the lanes' values of
+/// `values`: the Gauss rules chosen by the poles' distance
+/// (gauss_moments.hpp) take the most nodes any active lane needs, so that
+/// the lanes stay together (more nodes only make a lane's rule more exact:
+/// its result differs from the scalar path's by rounding).
+template <class Count, class... Values>
+int most_any_active_lane_needs(const Count& count, const Values&... values) {
+  constexpr std::size_t n = sizeof...(Values);
+  alignas(64) double lanes[n][max_lanes];
+  std::size_t i = 0;
+  (hn::Store(values.v, LaneTag(), lanes[i++]), ...);
+  const Divergence& divergence = *current_divergence;
+  int most = 0;
+  for (std::size_t k = 0; k < lane_count(); ++k) {
+    if (!(divergence.active() >> k & 1u)) continue;
+    const int needs = [&]<std::size_t... j>(std::index_sequence<j...>) {
+      return count(lanes[j][k]...);
+    }(std::make_index_sequence<n>{});
+    most = std::max(most, needs);
+  }
+  return most;
+}
 }  // namespace skelconv::simd::HWY_NAMESPACE
 
 namespace boost::math::quadrature {
@@ -210,36 +233,19 @@ inline int miller_steps<SimdLanes>(const SimdLanes& rho) {
   }
   return steps;
 }
-}  // namespace detail
 
-namespace detail {
-/// The Gauss rules chosen by the poles' distance (gauss_moments.hpp): the
-/// most nodes any active lane needs, so that the lanes stay together (more
-/// nodes only make a lane's rule more exact: its result differs from the
-/// scalar path's by rounding).
+/// The Gauss rules chosen by the poles' distance: the most nodes any active
+/// lane needs (most_any_active_lane_needs).
 template <>
 inline int rule_nodes<SimdLanes>(const SimdLanes& x, double x7, double x10, double x15, int most) {
-  const simd::Divergence& divergence = *simd::HWY_NAMESPACE::current_divergence;
-  alignas(64) double v[simd::max_lanes];
-  hwy::HWY_NAMESPACE::Store(x.v, simd::HWY_NAMESPACE::LaneTag(), v);
-  int nodes = 0;
-  for (std::size_t k = 0; k < simd::HWY_NAMESPACE::lane_count(); ++k)
-    if (divergence.active() >> k & 1u) nodes = std::max(nodes, rule_nodes<double>(v[k], x7, x10, x15, most));
-  return nodes;
+  return simd::HWY_NAMESPACE::most_any_active_lane_needs(
+      [&](double v) { return rule_nodes<double>(v, x7, x10, x15, most); }, x);
 }
 
-/// The node count of a SCALIS Gauss panel (gauss_moments.hpp), likewise the
-/// most any active lane needs.
 template <>
-inline int panel_nodes<SimdLanes>(const SimdLanes& x_star2, const SimdLanes& y2, int k_max) {
-  const simd::Divergence& divergence = *simd::HWY_NAMESPACE::current_divergence;
-  alignas(64) double x[simd::max_lanes], y[simd::max_lanes];
-  hwy::HWY_NAMESPACE::Store(x_star2.v, simd::HWY_NAMESPACE::LaneTag(), x);
-  hwy::HWY_NAMESPACE::Store(y2.v, simd::HWY_NAMESPACE::LaneTag(), y);
-  int nodes = 0;
-  for (std::size_t k = 0; k < simd::HWY_NAMESPACE::lane_count(); ++k)
-    if (divergence.active() >> k & 1u) nodes = std::max(nodes, panel_nodes<double>(x[k], y[k], k_max));
-  return nodes;
+inline int panel_nodes<SimdLanes>(const SimdLanes& x_star2, const SimdLanes& y2, const PanelNodeThresholds& c) {
+  return simd::HWY_NAMESPACE::most_any_active_lane_needs(
+      [&](double x, double y) { return panel_nodes<double>(x, y, c); }, x_star2, y2);
 }
 
 /// SCALIS segments' Gauss panels (gauss_moments.hpp) with the pole so close

@@ -152,20 +152,24 @@ void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, 
   }
 }
 
+/// The node_at of add_moments_at_nodes for x ∈ [−1, 1] mapped linearly
+/// onto [t0, t1]; q_at(t) evaluates q ≥ 0.
+template <class T, class QuadraticAt>
+auto linear_node_map(const QuadraticAt& q_at, const T& t0, const T& t1) {
+  const T half_width = (t1 - t0) / 2;
+  const T middle = (t0 + t1) / 2;
+  return [half_width, middle, &q_at](const T& x) {
+    const T t = middle + half_width * x;
+    return MomentNode<T>{t, q_at(t), half_width};
+  };
+}
+
 /// Adds the N-point Gauss–Legendre rule on [t0, t1] for M_{k,m} (as
 /// add_moments_at_nodes); q_at(t) evaluates q ≥ 0.
 template <class T, unsigned N, class QuadraticAt, NodeMap map = NodeMap::linear>
 void add_segment_moments_gauss(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
                                T* out) {
-  const T half_width = (t1 - t0) / 2;
-  const T middle = (t0 + t1) / 2;
-  add_moments_at_nodes<T, N, map>(
-      m_lo, m_hi, k_max,
-      [&](const T& x) {
-        const T t = middle + half_width * x;
-        return MomentNode<T>{t, q_at(t), half_width};
-      },
-      out);
+  add_moments_at_nodes<T, N, map>(m_lo, m_hi, k_max, linear_node_map(q_at, t0, t1), out);
 }
 
 /// Writes M_{k,m} = ∫ t^k q^(−m/2) dt over [middle − half_width, middle +
@@ -234,6 +238,18 @@ inline constexpr double far_field_min_y_7_nodes = 22.0;
 inline constexpr double far_field_min_y_10_nodes = 7.0;
 inline constexpr double far_field_min_y_15_nodes = 3.0;
 
+/// Nodes per panel of segment_moments_gauss_panels: on an accepted panel
+/// the rule errs by ~ρ^(−2N) ≤ 4^(−2N) times a factor for the poles' order
+/// (up to 6) and the weight t^k (k ≤ 10) growing off the interval;
+/// measured: that factor is ~1e9 (ρ = 3.1 left 1e-11 with N = 20), so
+/// 4^(−40) ≈ 8e-25 is ~1e-15 in double; N = 25 for long double, 40 for
+/// binary128 and wider (4^(−80) ≈ 7e-49).
+template <class T>
+constexpr unsigned gauss_panel_points() {
+  constexpr int digits = std::numeric_limits<T>::digits;
+  return digits <= 53 ? 20u : digits <= 64 ? 25u : 40u;
+}
+
 namespace detail {
 /// The node count for a pole at "distance" x (a squared distance compared
 /// with the squared thresholds of the 7-, 10- and 15-node rules): 7, 10, 15,
@@ -245,15 +261,20 @@ int rule_nodes(const T& x, double x7, double x10, double x15, int most) {
   return x >= T(x7) ? 7 : x >= T(x10) ? 10 : x >= T(x15) ? 15 : most;
 }
 
-/// Adds the rule of `nodes` nodes (7, 10, 15, 20) on [t0, t1].
-template <class T, class QuadraticAt>
-void add_moments_by_rule(int nodes, int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& t0, const T& t1,
-                         T* out) {
-  switch (nodes) {
-    case 7: add_segment_moments_gauss<T, 7>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
-    case 10: add_segment_moments_gauss<T, 10>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
-    case 15: add_segment_moments_gauss<T, 15>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
-    default: add_segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, q_at, t0, t1, out); break;
+/// add_moments_at_nodes with `nodes` nodes (7, 10, 15, 20) in double; types
+/// wider than double keep gauss_panel_points<T>() (the constants are for
+/// double's rounding unit).
+template <class T, class NodeAt>
+void add_moments_with_nodes(int nodes, int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
+  if constexpr (gauss_panel_points<T>() != 20) {
+    add_moments_at_nodes<T, gauss_panel_points<T>(), NodeMap::linear>(m_lo, m_hi, k_max, node_at, out);
+  } else {
+    switch (nodes) {
+      case 7: add_moments_at_nodes<T, 7, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      case 10: add_moments_at_nodes<T, 10, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      case 15: add_moments_at_nodes<T, 15, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+      default: add_moments_at_nodes<T, 20, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
+    }
   }
 }
 
@@ -270,7 +291,7 @@ void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_a
     auto square = [](double y) { return y * y; };
     const int nodes = rule_nodes(y2, square(far_field_min_y_7_nodes), square(far_field_min_y_10_nodes),
                                  square(far_field_min_y_15_nodes), 20);
-    add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, t0, t1, out);
+    add_moments_with_nodes<T>(nodes, m_lo, m_hi, k_max, linear_node_map(q_at, t0, t1), out);
   } else {
     add_segment_moments_gauss<T, N_max>(m_lo, m_hi, k_max, q_at, t0, t1, out);
   }
@@ -330,7 +351,7 @@ bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T
   };
   const int nodes = rule_nodes(z2, square(beyond_end_min_z_7_nodes), square(beyond_end_min_z_10_nodes),
                                square(beyond_end_min_z_15_nodes), 20);
-  add_moments_by_rule(nodes, m_lo, m_hi, k_max, q_at, T(0), T(1), out);
+  add_moments_with_nodes<T>(nodes, m_lo, m_hi, k_max, linear_node_map(q_at, T(0), T(1)), out);
   return true;
 }
 }  // namespace detail
@@ -375,18 +396,6 @@ void segment_moments_gauss_sine(int m_lo, int m_hi, int k_max, const T& a, const
   segment_moments_gauss<T, N, NodeMap::sine>(m_lo, m_hi, k_max, a, b, c, t0, t1, out);
 }
 
-/// Nodes per panel of segment_moments_gauss_panels: on an accepted panel
-/// the rule errs by ~ρ^(−2N) ≤ 4^(−2N) times a factor for the poles' order
-/// (up to 6) and the weight t^k (k ≤ 10) growing off the interval;
-/// measured: that factor is ~1e9 (ρ = 3.1 left 1e-11 with N = 20), so
-/// 4^(−40) ≈ 8e-25 is ~1e-15 in double; N = 25 for long double, 40 for
-/// binary128 and wider (4^(−80) ≈ 7e-49).
-template <class T>
-constexpr unsigned gauss_panel_points() {
-  constexpr int digits = std::numeric_limits<T>::digits;
-  return digits <= 53 ? 20u : digits <= 64 ? 25u : 40u;
-}
-
 namespace detail {
 /// segment_moments_gauss_panels with the pole so close to the segment that
 /// q underflows there (closer than ~1e-154 |AB|, where the field is far
@@ -415,45 +424,62 @@ inline constexpr double panel_high_weight_min_z_7_nodes = 462.0;
 inline constexpr double panel_high_weight_min_z_10_nodes = 27.3;
 inline constexpr double panel_high_weight_min_z_15_nodes = 6.3;
 
+/// The SCALIS panels' node counts when the weights go up to t^4 and the
+/// orders only up to m = 6 (SCALIS inverse and Cauchy kernels of degree ≤ 4,
+/// f and ∇f), derived as the classical constants above with weights
+/// k ≤ 4 and orders m ≤ 6 (bench/tools/far_field_bound.cpp --low-order,
+/// and --low-order --radius): y ≥ 14.83 (N = 7), 5.04 (10), 2.229 (15);
+/// |z| ≥ 24.08 (7), 7.48 (10), 3.17 (15); rounded up here. A pole of
+/// lower order leaves a flatter integrand on the Bernstein ellipses, so the
+/// same bound holds with fewer nodes.
+inline constexpr double panel_low_order_min_y_7_nodes = 14.9;
+inline constexpr double panel_low_order_min_y_10_nodes = 5.1;
+inline constexpr double panel_low_order_min_y_15_nodes = 2.3;
+inline constexpr double panel_low_order_min_z_7_nodes = 24.1;
+inline constexpr double panel_low_order_min_z_10_nodes = 7.5;
+inline constexpr double panel_low_order_min_z_15_nodes = 3.2;
+
 namespace detail {
-/// The fewest nodes (7, 10, 15, 20) for a Gauss panel whose poles lie at
-/// x* ± i y in the panel's own coordinate x ∈ [−1, 1], from x*² and y²: the
-/// imaginary-distance bound (far_field_min_y_*, valid for |x*| ≤ 6, the
-/// positions it was derived for) or the distance bound (beyond_end_min_z_*,
-/// any direction), whichever allows fewer. More nodes than needed only make
-/// the rule more exact. The vector batches (src/simd/lanes-inl.hpp)
-/// specialise it to the largest count any active lane needs.
-template <class T>
-int panel_nodes(const T& x_star2, const T& y2, int k_max) {
-  const bool high = k_max > 4;
-  auto sq = [](double v) { return v * v; };
-  const int by_height =
-      x_star2 <= T(36)
-          ? rule_nodes(y2, sq(high ? panel_high_weight_min_y_7_nodes : far_field_min_y_7_nodes),
-                       sq(high ? panel_high_weight_min_y_10_nodes : far_field_min_y_10_nodes),
-                       sq(high ? panel_high_weight_min_y_15_nodes : far_field_min_y_15_nodes), 20)
-          : 20;
-  const int by_distance = rule_nodes(x_star2 + y2, sq(high ? panel_high_weight_min_z_7_nodes : beyond_end_min_z_7_nodes),
-                                     sq(high ? panel_high_weight_min_z_10_nodes : beyond_end_min_z_10_nodes),
-                                     sq(high ? panel_high_weight_min_z_15_nodes : beyond_end_min_z_15_nodes), 20);
-  return by_height < by_distance ? by_height : by_distance;
+/// The squared thresholds of panel_nodes for one call of
+/// segment_moments_gauss_panels: y² (imaginary distance) and |z|²
+/// (distance) above which 7, 10 or 15 nodes suffice.
+struct PanelNodeThresholds {
+  double y7, y10, y15, z7, z10, z15;
+};
+
+constexpr double squared(double v) { return v * v; }
+
+/// The thresholds whose derivation covers weights t^k, k ≤ k_max, and pole
+/// orders m ≤ m_hi: the high-weight constants (k_max > 4), the low-order
+/// ones (m_hi ≤ 6), else the classical far-field and beyond-end constants
+/// (k ≤ 4, m ≤ 18).
+inline const PanelNodeThresholds& panel_node_thresholds(int k_max, int m_hi) {
+  static constexpr PanelNodeThresholds high_weight{
+      squared(panel_high_weight_min_y_7_nodes), squared(panel_high_weight_min_y_10_nodes),
+      squared(panel_high_weight_min_y_15_nodes), squared(panel_high_weight_min_z_7_nodes),
+      squared(panel_high_weight_min_z_10_nodes), squared(panel_high_weight_min_z_15_nodes)};
+  static constexpr PanelNodeThresholds low_order{
+      squared(panel_low_order_min_y_7_nodes), squared(panel_low_order_min_y_10_nodes),
+      squared(panel_low_order_min_y_15_nodes), squared(panel_low_order_min_z_7_nodes),
+      squared(panel_low_order_min_z_10_nodes), squared(panel_low_order_min_z_15_nodes)};
+  static constexpr PanelNodeThresholds classical{
+      squared(far_field_min_y_7_nodes),  squared(far_field_min_y_10_nodes),  squared(far_field_min_y_15_nodes),
+      squared(beyond_end_min_z_7_nodes), squared(beyond_end_min_z_10_nodes), squared(beyond_end_min_z_15_nodes)};
+  return k_max > 4 ? high_weight : m_hi <= 6 ? low_order : classical;
 }
 
-/// add_moments_at_nodes with `nodes` nodes (7, 10, 15, 20) in double; types
-/// wider than double keep gauss_panel_points<T>() (the constants are for
-/// double's rounding unit).
-template <class T, class NodeAt>
-void add_moments_with_nodes(int nodes, int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
-  if constexpr (gauss_panel_points<T>() != 20) {
-    add_moments_at_nodes<T, gauss_panel_points<T>(), NodeMap::linear>(m_lo, m_hi, k_max, node_at, out);
-  } else {
-    switch (nodes) {
-      case 7: add_moments_at_nodes<T, 7, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
-      case 10: add_moments_at_nodes<T, 10, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
-      case 15: add_moments_at_nodes<T, 15, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
-      default: add_moments_at_nodes<T, 20, NodeMap::linear>(m_lo, m_hi, k_max, node_at, out); break;
-    }
-  }
+/// The fewest nodes (7, 10, 15, 20) for a Gauss panel whose poles lie at
+/// x* ± i y in the panel's own coordinate x ∈ [−1, 1], from x*² and y²: the
+/// imaginary-distance bound (valid for |x*| ≤ 6, the positions it was
+/// derived for) or the distance bound (any direction), whichever allows
+/// fewer. More nodes than needed only make the rule more exact. The vector
+/// batches (src/simd/lanes-inl.hpp) specialise it to the largest count any
+/// active lane needs.
+template <class T>
+int panel_nodes(const T& x_star2, const T& y2, const PanelNodeThresholds& c) {
+  const int by_height = x_star2 <= T(36) ? rule_nodes(y2, c.y7, c.y10, c.y15, 20) : 20;
+  const int by_distance = rule_nodes(x_star2 + y2, c.z7, c.z10, c.z15, 20);
+  return by_height < by_distance ? by_height : by_distance;
 }
 }  // namespace detail
 
@@ -518,6 +544,7 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
   // poles' position relative to the panel allows (detail::panel_nodes).
   const T pole_offset = t_star - pivot;
   const T pole_height2 = D / (a * a);
+  const detail::PanelNodeThresholds& thresholds = detail::panel_node_thresholds(k_max, m_hi);
   auto add_panel = [&](const T& lo, const T& hi) {
     const T half_width = (hi - lo) / 2;
     const T middle = (lo + hi) / 2;
@@ -527,7 +554,7 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
     };
     const T width2 = half_width * half_width;
     const T pole_along = pole_offset - middle;
-    const int nodes = detail::panel_nodes<T>(pole_along * pole_along / width2, pole_height2 / width2, k_max);
+    const int nodes = detail::panel_nodes<T>(pole_along * pole_along / width2, pole_height2 / width2, thresholds);
     detail::add_moments_with_nodes<T>(nodes, m_lo, m_hi, k_max, node_at, out);
   };
   const T offset_A = -pivot, offset_B = one - pivot;  // exact for pivot ≥ 1/2 (Sterbenz), else to ε
