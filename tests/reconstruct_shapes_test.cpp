@@ -21,7 +21,9 @@ namespace {
 
 Reconstruction run(const char* name) {
   const TriangleMesh mesh = read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / name);
-  return reconstruct(mesh, ReconstructOptions{});
+  ReconstructOptions options;
+  options.method = SkeletonMethod::curve;  // the known branches are the curve path's
+  return reconstruct(mesh, options);
 }
 
 /// The documented goal for the fitted stage of a noise-free shape

@@ -27,8 +27,13 @@ std::string summary(const reconstruct::Reconstruction& r, const std::string& out
                                  output, r.samples, r.medial_vertices, r.pruning.vertices_removed,
                                  r.pruning.branches_removed, r.spurs_removed);
   for (const auto& s : r.stages) {
-    text += fmt::format("stage {}: branches {}, ends {}, junctions {}, points {}\n", s.name, s.branches.size(),
-                        s.ends, s.junctions, s.points);
+    if (s.name == "medial") {
+      text += fmt::format("stage medial: spheres {}, triangles {}, edges {}, isolated {}\n", s.medial.spheres.size(),
+                          s.medial.triangles.size(), s.medial.edges.size(), s.medial.isolated.size());
+    } else {
+      text += fmt::format("stage {}: branches {}, ends {}, junctions {}, points {}\n", s.name, s.branches.size(),
+                          s.ends, s.junctions, s.points);
+    }
   }
   const reconstruct::PrimitiveCounts n = reconstruct::primitive_counts(r.stages.back(), options);
   return text + fmt::format("result: {} ({} scalis_segment, {} scalis_triangle, {} point)\n", r.stages.back().name,
@@ -85,10 +90,27 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
 
 CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   CLI::App* command =
-      app.add_subcommand("skeletonize", "Reconstruct a skeleton file of SCALIS segments from a closed mesh");
-  command->add_option("INPUT", options.input_path, "Closed mesh: .ply (ASCII or binary) or .obj")->required();
+      app.add_subcommand("skeletonize", "Reconstruct a skeleton file of SCALIS primitives from a closed mesh");
+  command->add_option("INPUT", options.input_path, "Closed mesh: .ply (ASCII or binary), .obj or .off")->required();
   command->add_option("-o,--output", options.output_path, "Output skeleton file (JSON)")->required();
-  command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees (default 90)");
+  command->add_option("--method", options.method,
+                      "auto (default): build both skeletons below and keep the one closer to the input; curve: "
+                      "Ferley's curve skeleton (tubes, branches, junctions); medial: a medial mesh (sheets as SCALIS "
+                      "triangles, tubes as SCALIS segments)")
+      ->check(CLI::IsMember({"auto", "curve", "medial"}));
+  command->add_option("--budget", options.budget,
+                      "At most this many primitives in the medial mesh (default 500): fewer primitives, larger error")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
+  command->add_option("--medial-prune-angle", options.medial.prune_angle_degrees,
+                      fmt::format("Pruning threshold θ in degrees of the medial path (default {})",
+                                  options.medial.prune_angle_degrees));
+  command->add_option("--medial-prune-span", options.medial.prune_span,
+                      fmt::format("The medial path also prunes Voronoi vertices whose contact samples span less than "
+                                  "this × the diagonal (default {})", options.medial.prune_span));
+  command->add_option("--medial-spacing", options.medial.spacing,
+                      fmt::format("Spheres of the medial mesh about this many local radii apart (default {})",
+                                  options.medial.spacing));
+  command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "
                       "(default 0; about 4 × the noise amplitude for noisy samples)");
@@ -118,6 +140,11 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     if (std::filesystem::path(options.output_path).extension() != ".json")
       throw InputError("the skeleton file must end in .json", options.output_path);
     reconstruct::ReconstructOptions ro;
+    ro.method = options.method == "curve"    ? reconstruct::SkeletonMethod::curve
+                : options.method == "medial" ? reconstruct::SkeletonMethod::medial
+                                             : reconstruct::SkeletonMethod::automatic;
+    ro.medial = options.medial;
+    ro.medial.budget = options.budget;
     ro.prune_angle_degrees = options.prune_angle;
     ro.prune_span = options.prune_span;
     ro.epsilon = options.epsilon;

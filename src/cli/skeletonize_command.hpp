@@ -21,6 +21,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/surface_samples.hpp"
 
 namespace skelconv::cli {
@@ -30,6 +31,9 @@ struct SkeletonizeOptions {
   std::string output_path;
   std::optional<std::string> report_path;
   bool report_result_only = false;  ///< --report-stages result: mesh and measure the result stage only
+  std::string method = "auto";  ///< --method: auto, curve or medial (ReconstructOptions::method)
+  std::size_t budget = 500;     ///< --budget: the medial path's primitives (MedialOptions::budget)
+  reconstruct::MedialOptions medial;  ///< --medial-*: the medial path's other options
   double prune_angle = 90.0;
   double prune_span = 0.0;  ///< × the diagonal (ReconstructOptions::prune_span)
   double epsilon = 0.02;

@@ -309,15 +309,106 @@ TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const 
   return mesh;
 }
 
+
+// ---------------------------------------------------------------- OFF ---
+
+/// The next number of an OFF file, skipping `#` comments to the end of a
+/// line; `what` names it in the message when it is missing or malformed.
+class OffWords {
+ public:
+  OffWords(const std::string& text, std::string where) : where_(std::move(where)) {
+    std::istringstream lines(text);
+    std::string line;
+    for (int number = 1; std::getline(lines, line); ++number) {
+      std::istringstream words(line.substr(0, line.find('#')));
+      for (std::string word; words >> word;) words_.push_back({word, number});
+    }
+  }
+  bool done() const { return next_ >= words_.size(); }
+  std::string word(const std::string& what) {
+    if (done()) throw InputError("the file ends before " + what, where_);
+    return words_[next_++].text;
+  }
+  double number(const std::string& what) {
+    const std::string text = word(what);
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (*end != '\0' || !std::isfinite(value))
+      throw InputError("\"" + text + "\" is not a finite number (" + what + ")", at());
+    return value;
+  }
+  std::int64_t count(const std::string& what) {
+    const double value = number(what);
+    if (!(value >= 0.0 && value < 1e9 && value == std::floor(value)))
+      throw InputError(fmt::format("{} must be a whole number ≥ 0, got {}", what, value), at());
+    return static_cast<std::int64_t>(value);
+  }
+  std::string at() const { return fmt::format("{}: line {}", where_, words_[next_ - 1].line); }
+  /// Skips the rest of the line of the last word read (a colour).
+  void skip_rest_of_line() {
+    while (!done() && words_[next_].line == words_[next_ - 1].line) ++next_;
+  }
+
+ private:
+  struct Word {
+    std::string text;
+    int line;
+  };
+  std::vector<Word> words_;
+  std::size_t next_ = 0;
+  std::string where_;
+};
+
+/// OFF (Geomview): "OFF" (or "COFF"), then the vertex, face and edge
+/// counts, one vertex "x y z" per line, one face "n i0 … i(n−1)" (0-based)
+/// per line; what follows on a vertex's or a face's line (a colour) is
+/// ignored.
+TriangleMesh read_off(const std::string& text, std::size_t max_triangles, const std::string& where) {
+  OffWords words(text, where);
+  std::string keyword = words.word("the OFF keyword");
+  if (keyword != "OFF" && keyword != "COFF")
+    throw InputError("an OFF file starts with \"OFF\" or \"COFF\", got \"" + keyword + "\"", words.at());
+  const std::int64_t vertex_count = words.count("the vertex count");
+  const std::int64_t face_count = words.count("the face count");
+  words.count("the edge count");
+  if (static_cast<double>(face_count) > static_cast<double>(max_triangles)) throw too_many_triangles(max_triangles, words.at());
+  TriangleMesh mesh;
+  mesh.vertices.reserve(static_cast<std::size_t>(vertex_count));
+  for (std::int64_t v = 0; v < vertex_count; ++v) {
+    const std::string what = fmt::format("vertex {}", v);
+    Vec3 point;
+    for (int k = 0; k < 3; ++k) point[k] = words.number(what);
+    words.skip_rest_of_line();
+    mesh.vertices.push_back(point);
+  }
+  std::vector<std::int64_t> face;
+  for (std::int64_t f = 0; f < face_count; ++f) {
+    const std::string what = fmt::format("face {}", f);
+    const std::int64_t corners = words.count(what + "'s corner count");
+    if (corners < 3) throw InputError(what + " needs at least 3 corners", words.at());
+    face.clear();
+    for (std::int64_t k = 0; k < corners; ++k) {
+      const std::int64_t index = words.count(what + "'s corner");
+      if (index >= vertex_count)
+        throw InputError(fmt::format("{} has vertex index {} outside [0, {})", what, index, vertex_count), words.at());
+      face.push_back(index);
+    }
+    add_polygon(mesh, face, max_triangles, words.at());
+    words.skip_rest_of_line();
+  }
+  return mesh;
+}
+
 }  // namespace
 
 TriangleMesh read_mesh(const std::filesystem::path& path, std::size_t max_triangles) {
   const std::string extension = lower(path.extension().string());
-  if (extension != ".ply" && extension != ".obj")
-    throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply or .obj)", path.string());
+  if (extension != ".ply" && extension != ".obj" && extension != ".off")
+    throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply, .obj or .off)", path.string());
   const std::string bytes = read_whole_file(path);
-  return extension == ".ply" ? read_ply(bytes, max_triangles, path.string())
-                             : read_obj(bytes, max_triangles, path.string());
+  if (extension == ".ply") return read_ply(bytes, max_triangles, path.string());
+  if (extension == ".off") return read_off(bytes, max_triangles, path.string());
+  return read_obj(bytes, max_triangles, path.string());
 }
 
 }  // namespace skelconv

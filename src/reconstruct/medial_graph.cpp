@@ -65,9 +65,9 @@ bool circumcentre_is_computable(const Delaunay::Cell_handle& cell) {
 
 }  // namespace
 
-MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples) {
+MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples, const SamplingOptions& sampling) {
   MedialGraph graph;
-  graph.samples = surface_samples(surface);
+  graph.samples = surface_samples(surface, sampling);
   check_surface(surface, graph.samples, minimum_samples);
   const SurfaceMesh mesh = cgal::to_surface_mesh(surface);
   const CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel> side(mesh);

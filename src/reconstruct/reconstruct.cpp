@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
+#include "skelconv/mesh/mesh_topology.hpp"
 #include "skelconv/reconstruct/ball_fit.hpp"
 #include "skelconv/reconstruct/bspline.hpp"
 #include "skelconv/reconstruct/medial_graph.hpp"
@@ -32,7 +33,11 @@ void check_options(const ReconstructOptions& o) {
 }
 
 Stage make_stage(std::string name, const BranchGraph& graph) {
-  Stage stage{std::move(name), graph.branches, {}, {}, graph.ends, graph.junctions, 0, 0.0};
+  Stage stage;
+  stage.name = std::move(name);
+  stage.branches = graph.branches;
+  stage.ends = graph.ends;
+  stage.junctions = graph.junctions;
   for (const Branch& b : stage.branches) stage.points += b.points.size();
   return stage;
 }
@@ -60,7 +65,11 @@ double skeleton_size(const Stage& stage) {
 Stage branches_of(const MedialGraph& graph, const ReconstructOptions& o, std::string name, std::size_t* spurs,
                   const std::vector<WeightedPoint>* surface = nullptr) {
   // No inner ball left (pruned away): no branch; reconstruct() falls back to a ball.
-  if (graph.vertices.empty()) return Stage{std::move(name), {}, {}, {}, 0, 0, 0, 0.0};
+  if (graph.vertices.empty()) {
+    Stage empty;
+    empty.name = std::move(name);
+    return empty;
+  }
   std::vector<double> radii;
   for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
@@ -162,19 +171,10 @@ std::vector<Vec4> balls_missed(const Stage& stage, const std::vector<Vec4>& ball
   return missed;
 }
 
-}  // namespace
-
-Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& o) {
-  check_options(o);
-  Reconstruction result;
-  Stopwatch clock;
-  MedialGraph graph = medial_graph(surface);
-  result.samples = graph.samples.size();
-  result.medial_vertices = graph.vertices.size();
-  result.medial_edges = graph.edges.size();
-  result.medial_seconds = clock.lap();
-  say(o, fmt::format("medial graph: {} samples, {} inner Voronoi vertices, {} edges", result.samples,
-                     result.medial_vertices, result.medial_edges));
+/// Ferley's curve path (reconstruct.hpp): the stages raw … fitted, or a
+/// ball when no branch is left or one fits better.
+void curve_stages(MedialGraph graph, const TriangleMesh& surface, const ReconstructOptions& o, Reconstruction& result,
+                  Stopwatch& clock) {
   result.stages.push_back(branches_of(graph, o, "raw", nullptr));
   result.stages.back().seconds = clock.lap();
   result.pruning = prune_medial_graph(graph, o.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
@@ -203,7 +203,7 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
     say(o, fmt::format("no branch left: {} point primitive(s), the least-squares sphere of each part; the first at "
                        "({:.4g}, {:.4g}, {:.4g}), radius {:.4g}", result.stages.back().balls.size(), ball.x(), ball.y(),
                        ball.z(), ball.w()));
-    return result;
+    return;
   }
   result.tolerance = o.epsilon * skeleton_size(pruned);
   const double tolerance = result.tolerance;
@@ -244,6 +244,80 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
     result.stages.push_back(std::move(ball));
     result.stages.back().seconds = clock.lap();
   }
+}
+
+/// How well a stage's meshed surface matches the input: whether it keeps
+/// the input's Euler characteristic, and its two-sided Hausdorff distance.
+struct Match {
+  bool same_topology = false;
+  double hausdorff = 0.0;
+};
+
+Match match(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& o) {
+  TriangleMesh mesh;
+  const SurfaceDistance d = measure_stage(surface, stage, o, 0.0, &mesh);
+  return {mesh_topology(mesh).euler_characteristic == mesh_topology(surface).euler_characteristic, d.hausdorff};
+}
+
+/// Whether the medial stage is better than the curve path's result: when
+/// both can be meshed within the measuring budget, the one whose surface
+/// keeps the input's Euler characteristic (a detached foot or a tunnel
+/// is worse than a larger distance), then the smaller two-sided Hausdorff
+/// distance; otherwise the smaller first-order RMS distance on the same
+/// area-weighted points (cheap, blind to topology).
+bool choose_between(const Stage& curve, const Stage& medial, const TriangleMesh& surface, const ReconstructOptions& o) {
+  const double diagonal = bounding_diagonal(surface.vertices);
+  const auto measurable = [&](const Stage& s) {
+    return over_measure_budget(measure_work(surface, s, o), o.measure_budget).empty();
+  };
+  if (measurable(curve) && measurable(medial)) {
+    const Match c = match(surface, curve, o), m = match(surface, medial, o);
+    const bool better = m.same_topology != c.same_topology ? m.same_topology : m.hausdorff < c.hausdorff;
+    say(o, fmt::format("{}: Hausdorff {:.3g}, Euler characteristic {}kept; medial mesh: {:.3g}, {}kept: the result is the {}",
+                       curve.name, c.hausdorff / diagonal, c.same_topology ? "" : "not ", m.hausdorff / diagonal,
+                       m.same_topology ? "" : "not ", better ? "medial mesh" : curve.name));
+    return better;
+  }
+  const std::vector<WeightedPoint> points = area_weighted_points(surface, diagonal / 32);
+  const double curve_error = first_order_rms(parse_skeleton_json(skeleton_file_text(curve, o)), points, diagonal);
+  const double medial_error = first_order_rms(parse_skeleton_json(skeleton_file_text(medial, o)), points, diagonal);
+  say(o, fmt::format("first-order RMS distance: {} {:.3g}, medial mesh {:.3g} of the diagonal: the result is the {}",
+                     curve.name, curve_error / diagonal, medial_error / diagonal,
+                     medial_error < curve_error ? "medial mesh" : curve.name));
+  return medial_error < curve_error;
+}
+
+}  // namespace
+
+Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& o) {
+  check_options(o);
+  Reconstruction result;
+  Stopwatch clock;
+  if (o.method != SkeletonMethod::medial) {
+    MedialGraph graph = medial_graph(surface);
+    result.samples = graph.samples.size();
+    result.medial_vertices = graph.vertices.size();
+    result.medial_edges = graph.edges.size();
+    result.medial_seconds = clock.lap();
+    say(o, fmt::format("medial graph: {} samples, {} inner Voronoi vertices, {} edges", result.samples,
+                       result.medial_vertices, result.medial_edges));
+    curve_stages(std::move(graph), surface, o, result, clock);
+    if (o.method == SkeletonMethod::curve) return result;
+  }
+  Stage medial = medial_stage(surface, o, &result.medial_path);
+  medial.seconds = clock.lap();
+  if (primitive_counts(medial, o).total() == 0) {
+    say(o, "medial mesh: pruning left no inner ball");
+    if (o.method == SkeletonMethod::medial) result.stages.push_back(ball_stage(surface));
+    return result;
+  }
+  if (o.method == SkeletonMethod::medial) {
+    result.stages.push_back(std::move(medial));
+    return result;
+  }
+  // Both paths ran: keep the better (choose_between).
+  if (choose_between(result.stages.back(), medial, surface, o)) result.stages.push_back(std::move(medial));
+  else result.stages.insert(result.stages.end() - 1, std::move(medial));
   return result;
 }
 
@@ -278,6 +352,40 @@ std::vector<std::string> blend_children(const Stage& stage, const ReconstructOpt
                                    a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), radius, radius,
                                    radius, kernel));
     ++n.triangles;
+  }
+  const MedialMesh& m = stage.medial;
+  const auto sphere = [&m](std::int32_t i) -> const Vec4& { return m.spheres[std::size_t(i)]; };
+  // The medial mesh's primitives have the compact kernel (MedialOptions):
+  // finite support, so the field's index evaluates only the few near a point.
+  const double sigma = o.medial.kernel_sigma;
+  const std::string compact = fmt::format(R"("kernel": {{"family": "compact", "degree": 4, "sigma": {:.17g}}})", sigma);
+  for (const auto& [i, j] : m.edges) {
+    const Vec4 &p = sphere(i), &q = sphere(j);
+    children.push_back(fmt::format("{{\"type\": \"scalis_segment\", \"a\": [{:.17g}, {:.17g}, {:.17g}], "
+                                   "\"b\": [{:.17g}, {:.17g}, {:.17g}], \"radius\": [{:.17g}, {:.17g}], {}}}",
+                                   p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), p.w(), q.w(), compact));
+    ++n.segments;
+  }
+  for (const auto& t : m.triangles) {
+    const Vec4 &a = sphere(t[0]), &b = sphere(t[1]), &c = sphere(t[2]);
+    // One radius, the mean: the closed form (a varying radius costs the
+    // certified quadrature, far too slow to mesh).
+    const double radius = (a.w() + b.w() + c.w()) / 3;
+    children.push_back(fmt::format("{{\"type\": \"scalis_triangle\", \"vertices\": [[{:.17g}, {:.17g}, {:.17g}], "
+                                   "[{:.17g}, {:.17g}, {:.17g}], [{:.17g}, {:.17g}, {:.17g}]], \"radius\": [{:.17g}, {:.17g}, {:.17g}], {}}}",
+                                   a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), radius, radius,
+                                   radius, compact));
+    ++n.triangles;
+  }
+  // An isolated sphere: a compact point w (1 − r²/R²)², R = σ ρ, with w =
+  // (1 − 1/σ²)^−2 so that f = iso = 1 at r = ρ.
+  for (const std::int32_t i : m.isolated) {
+    const Vec4& ball = sphere(i);
+    children.push_back(fmt::format("{{\"type\": \"point\", \"center\": [{:.17g}, {:.17g}, {:.17g}], "
+                                   "\"kernel\": {{\"family\": \"compact\", \"degree\": 4, \"R\": {:.17g}}}, \"weight\": {:.17g}}}",
+                                   ball.x(), ball.y(), ball.z(), sigma * ball.w(),
+                                   1.0 / ((1.0 - 1.0 / (sigma * sigma)) * (1.0 - 1.0 / (sigma * sigma)))));
+    ++n.points;
   }
   // A point of Cauchy kernel degree 4 is w (1 + s r²)^−2 (docs/cli_blends.md):
   // with w = 4 and s = 1/R², f = iso = 1 exactly at r = R, and |∇f| there is

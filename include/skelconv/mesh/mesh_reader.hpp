@@ -1,4 +1,4 @@
-// skelconv/mesh/mesh_reader.hpp — reading a triangle mesh (PLY or OBJ) as a
+// skelconv/mesh/mesh_reader.hpp — reading a triangle mesh (PLY, OBJ or OFF) as a
 // user would give it; the reading half of triangle_mesh.hpp's write_mesh.
 //
 //   * PLY: "ascii 1.0", "binary_little_endian 1.0" or "binary_big_endian
@@ -9,7 +9,10 @@
 //     recomputes what it needs);
 //   * OBJ: "v x y z" and "f i j k …" lines (i, i/t, i//n, i/t/n; negative
 //     indices count from the end), polygons fan-triangulated, other lines
-//     ignored.
+//     ignored;
+//   * OFF: "OFF" or "COFF", the counts, one vertex and one face ("n i0 …",
+//     0-based) per line, colours and "#" comments ignored, polygons
+//     fan-triangulated (CGAL's sample meshes are OFF files).
 // Errors are InputError located at the path and, where there is one, the line
 // ("mesh.obj: line 12: face index 40 outside [1, 39]"). Faces are optional:
 // a point set is a mesh without triangles.
@@ -23,7 +26,7 @@
 
 namespace skelconv {
 
-/// Reads `path` (.ply or .obj, by extension, case insensitive). The returned
+/// Reads `path` (.ply, .obj or .off, by extension, case insensitive). The returned
 /// mesh has no normals. Throws InputError for an unknown extension, an
 /// unreadable file, a malformed header or body, a non-finite coordinate or a
 /// face index out of range, and (naming the option --max-triangles of the

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "skelconv/mesh/triangle_mesh.hpp"
+#include "skelconv/reconstruct/surface_samples.hpp"
 
 namespace skelconv::reconstruct {
 
@@ -55,6 +56,8 @@ struct MedialGraph {
 /// which must be a closed triangle mesh (the inside test needs one). Throws
 /// InputError if it has fewer than `minimum_samples` distinct samples, no
 /// triangles, or is not closed (an edge not shared by exactly two triangles).
-MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples = 20);
+/// `sampling` sets how densely (surface_samples.hpp).
+MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples = 20,
+                         const SamplingOptions& sampling = {});
 
 }  // namespace skelconv::reconstruct

@@ -12,12 +12,54 @@
 
 #include "skelconv/reconstruct/bezier_triangle.hpp"
 #include "skelconv/reconstruct/branch_graph.hpp"
+#include "skelconv/reconstruct/medial_fit.hpp"
+#include "skelconv/reconstruct/medial_mesh.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
 #include "skelconv/reconstruct/surface_fit.hpp"
 
 namespace skelconv::reconstruct {
 
+/// Which skeleton `reconstruct` builds: Ferley's curve skeleton (tubes,
+/// branches, junctions), a medial mesh (sheets as SCALIS triangles, tubes as
+/// segments: medial_mesh.hpp), or both, keeping the one that fits better.
+enum class SkeletonMethod { curve, medial, automatic };
+
+/// The medial-mesh path (docs/reconstruction_medial.md).
+struct MedialOptions {
+  /// At most this many primitives (SCALIS triangles, segments, points).
+  std::size_t budget = 500;
+  /// Pruning angle θ_min of the medial path, degrees. Lower than the curve
+  /// path's 90°: on a sheet that meets the surface at a right-angled edge
+  /// (a box) the contacts subtend exactly 90°, and the sheet must stay.
+  double prune_angle_degrees = 60.0;
+  /// Also pruned: Voronoi vertices whose contact samples span less than
+  /// this × the diagonal (pruning.hpp, the λ-medial axis): the spikes a
+  /// coarse mesh's every sharp vertex sends into the medial axis.
+  double prune_span = 0.0;
+  /// Spheres about this many local radii apart (medial_mesh.hpp), and the
+  /// floor of that radius unit, × the diagonal.
+  double spacing = 1.0;
+  double radius_floor = 0.01;
+  /// A tube's free end is extended by one sphere this many radii beyond it
+  /// (the medial axis stops short of a cap); 0 = none.
+  double end_extension = 1.0;
+  /// The primitives' kernel: compact, degree 4, this σ (docs/cli_skeleton.md:
+  /// support σ × the radius). Compact, not Cauchy: the field's index then
+  /// evaluates only the primitives near a point, and a medial mesh has
+  /// hundreds (341 Cauchy primitives on a hand took 110 s to mesh).
+  double kernel_sigma = 2.0;
+  /// The medial graph's samples are at most the diagonal / this apart
+  /// (surface_samples.hpp; the curve path's 12 leaves a coarse mesh's large
+  /// triangles with few samples, and the medial sheets full of holes).
+  double sample_divisions = 40.0;
+  /// The fit's points are about this × the diagonal apart.
+  double fit_spacing = 1.0 / 64.0;
+  MedialFitOptions fit;
+};
+
 struct ReconstructOptions {
+  SkeletonMethod method = SkeletonMethod::automatic;
+  MedialOptions medial;
   /// Ferley's pruning threshold θ_min, degrees, in [0, 180).
   double prune_angle_degrees = 90.0;
   /// Pruning also removes the Voronoi vertices whose contact samples span
@@ -92,15 +134,27 @@ struct ReconstructOptions {
 
 /// One stage's skeleton: its branches as polylines of (x, y, z, r).
 struct Stage {
-  std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed, fitted; or ball
+  std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed, fitted; or ball; or medial
   std::vector<Branch> branches;
   std::vector<Facet> facets;  ///< junction patches (fitted stage, if asked)
   /// Point primitives (x, y, z, radius): the `ball` stage of a shape
   /// without branches (ball_fit.hpp); the iso-surface of each alone is the
   /// sphere of that radius.
   std::vector<Vec4> balls;
+  /// The `medial` stage's medial mesh: each triangle a SCALIS triangle (at
+  /// the mean radius of its spheres: the closed form), each edge a SCALIS
+  /// segment, each isolated sphere a point, all of MedialOptions' compact
+  /// kernel.
+  MedialMesh medial;
   std::size_t ends = 0, junctions = 0, points = 0;
   double seconds = 0.0;  ///< wall time spent computing this stage
+};
+
+/// What the medial path saw and did (medial_stage).
+struct MedialPathReport {
+  std::size_t samples = 0, vertices = 0;  ///< its own medial graph (denser samples)
+  std::size_t pruned = 0, spheres = 0;
+  MedialFitReport fit;
 };
 
 /// The primitives a stage's skeleton file holds.
@@ -116,6 +170,7 @@ struct Reconstruction {
   PruningReport pruning;
   std::size_t spurs_removed = 0;
   FitReport fit;
+  MedialPathReport medial_path;
   std::vector<Stage> stages;  ///< in the order above; the last is the result
   double tolerance = 0.0;     ///< ε × skeleton size, absolute
 };
@@ -123,6 +178,12 @@ struct Reconstruction {
 /// Runs every step on `surface` (a closed mesh). Throws InputError for bad
 /// options (located at "--prune-angle", "--epsilon") or a bad mesh.
 Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& options);
+
+/// The `medial` stage of `surface`: its inner Voronoi graph (sampled at
+/// options.medial.sample_divisions), pruned at options.medial's angle,
+/// simplified to a medial mesh within the budget, tube ends extended, radii
+/// fitted.
+Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& options, MedialPathReport* report);
 
 /// The skelconv skeleton file (JSON text) of a stage: one "scalis_segment"
 /// per polyline segment (plus the end extensions), one "scalis_triangle"

@@ -1,0 +1,104 @@
+// The `medial` stage of reconstruct.hpp: the inner Voronoi graph pruned,
+// simplified to a medial mesh, its tube ends extended and its radii fitted
+// (docs/reconstruction_medial.md).
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "skelconv/reconstruct/ball_fit.hpp"
+#include "skelconv/reconstruct/medial_graph.hpp"
+#include "skelconv/reconstruct/pruning.hpp"
+#include "skelconv/reconstruct/reconstruct.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+double diagonal_of(const std::vector<Vec3>& points) {
+  Vec3 lo = points.front(), hi = lo;
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).norm();
+}
+
+/// Each tube end (a sphere on one edge and no triangle) gets one more
+/// sphere `factor` radii beyond it along the edge, at its radius: the
+/// pruned medial axis stops about a radius short of a cap, and a SCALIS
+/// segment's surface falls short of its radius near its end.
+void extend_tube_ends(MedialMesh& mesh, double factor) {
+  if (factor <= 0.0) return;
+  std::vector<int> edges(mesh.spheres.size(), 0);
+  std::vector<bool> on_sheet(mesh.spheres.size(), false);
+  for (const auto& e : mesh.edges) ++edges[std::size_t(e[0])], ++edges[std::size_t(e[1])];
+  for (const auto& t : mesh.triangles)
+    for (const std::int32_t i : t) on_sheet[std::size_t(i)] = true;
+  const std::size_t edge_count = mesh.edges.size();
+  for (std::size_t k = 0; k < edge_count; ++k) {
+    for (int side = 0; side < 2; ++side) {
+      const std::int32_t end = mesh.edges[k][std::size_t(side)], other = mesh.edges[k][std::size_t(1 - side)];
+      if (edges[std::size_t(end)] != 1 || on_sheet[std::size_t(end)]) continue;
+      const Vec4 tip = mesh.spheres[std::size_t(end)];
+      const Vec3 direction = tip.head<3>() - mesh.spheres[std::size_t(other)].head<3>();
+      if (!(direction.norm() > 0.0)) continue;
+      const Vec3 beyond = tip.head<3>() + factor * tip.w() * direction.normalized();
+      mesh.spheres.push_back(Vec4(beyond.x(), beyond.y(), beyond.z(), tip.w()));
+      mesh.edges.push_back({end, std::int32_t(mesh.spheres.size() - 1)});
+    }
+  }
+}
+
+std::size_t primitives(const MedialMesh& mesh) {
+  return mesh.edges.size() + mesh.triangles.size() + mesh.isolated.size();
+}
+
+}  // namespace
+
+Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, MedialPathReport* report) {
+  const MedialOptions& m = o.medial;
+  const double diagonal = diagonal_of(surface.vertices);
+  SamplingOptions sampling;
+  sampling.diagonal_divisions = m.sample_divisions;
+  MedialGraph graph = medial_graph(surface, 20, sampling);
+  if (o.progress)
+    o.progress(fmt::format("medial path: {} samples, {} inner Voronoi vertices", graph.samples.size(),
+                           graph.vertices.size()));
+  MedialPathReport r;
+  r.samples = graph.samples.size();
+  r.vertices = graph.vertices.size();
+  r.pruned = prune_medial_graph(graph, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
+                     std::max(m.prune_span, o.prune_span) * diagonal)
+                 .vertices_removed;
+  MedialMeshOptions mesh_options;
+  mesh_options.spacing = m.spacing;
+  mesh_options.radius_floor = m.radius_floor * diagonal;
+  // A sheet of n spheres has about 2n triangles, a tube about n edges: start
+  // at budget / 2 spheres and shrink until the primitives fit.
+  const auto build = [&graph, &mesh_options, &m](std::size_t spheres) {
+    mesh_options.max_spheres = std::max<std::size_t>(1, spheres);
+    MedialMesh mesh = simplify_medial_graph(graph, mesh_options);
+    extend_tube_ends(mesh, m.end_extension);
+    return mesh;
+  };
+  MedialMesh mesh = build(m.budget / 2);
+  while (primitives(mesh) > m.budget && mesh_options.max_spheres > 1)
+    mesh = build(mesh_options.max_spheres * m.budget / primitives(mesh) * 9 / 10);
+  if (o.progress)
+    o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} primitives)",
+                           mesh.spheres.size(), mesh.triangles.size(), mesh.edges.size(), mesh.isolated.size(),
+                           m.budget));
+  Stage stage;
+  stage.name = "medial";
+  const std::vector<WeightedPoint> points =
+      merged_in_cells(area_weighted_points(surface, m.fit_spacing * diagonal), m.fit_spacing * diagonal);
+  const MedialField field_of = [&o](const MedialMesh& medial) {
+    Stage s;
+    s.medial = medial;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+  if (!mesh.spheres.empty()) stage.medial = fit_medial_radii(mesh, points, field_of, m.fit, &r.fit, o.progress);
+  stage.points = r.spheres = stage.medial.spheres.size();
+  if (report != nullptr) *report = r;
+  return stage;
+}
+
+}  // namespace skelconv::reconstruct
