@@ -27,6 +27,7 @@ if [ "${1:-}" = "--main-job" ]; then
   packages+=(
     clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer harnesses of the PLY/OBJ reader and the point lines (clang's -fsanitize=fuzzer)
     chromium                     # tests/view/check_view_browser.py (ctest label long): the `skelconv view` page rendered headless (WebGL2 on SwiftShader)
+    libcgal-demo                 # tests/reconstruct/real_shapes.py (ctest label long): CGAL's sample meshes (hand, homer, dino, …), the real shapes of docs/reconstruction_medial.md
   )
 fi
 

@@ -64,7 +64,7 @@ def draw_shape(ctx, figure, name, known, plane, mesh_args=(), noise=0.0):
     with tempfile.TemporaryDirectory() as tmp:
         mesh = _input_mesh(ctx, name, list(mesh_args), tmp)
         out, report = os.path.join(tmp, "out.json"), os.path.join(tmp, "report.json")
-        args = [ctx.skelconv, "skeletonize", mesh, "-o", out, "--quiet"]
+        args = [ctx.skelconv, "skeletonize", mesh, "-o", out, "--method", "curve", "--quiet"]
         if noise > 0:
             args += ["--noise", str(noise)]
         full = not ctx.quick
