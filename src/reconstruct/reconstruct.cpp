@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -271,7 +272,19 @@ bool choose_between(const Stage& curve, const Stage& medial, const TriangleMesh&
     return over_measure_budget(measure_work(surface, s, o), o.measure_budget).empty();
   };
   if (measurable(curve) && measurable(medial)) {
-    const Match c = match(surface, curve, o), m = match(surface, medial, o);
+    // A surface the mesher cannot finish (a vertex it cannot project: an
+    // EvaluationError) loses; the error is said, not thrown.
+    const auto try_match = [&](const Stage& s) -> std::optional<Match> {
+      try {
+        return match(surface, s, o);
+      } catch (const EvaluationError& error) {
+        say(o, fmt::format("{}: not meshed ({}): the other path is kept", s.name, error.what()));
+        return std::nullopt;
+      }
+    };
+    const std::optional<Match> cm = try_match(curve), mm = try_match(medial);
+    if (!cm || !mm) return bool(mm);
+    const Match &c = *cm, &m = *mm;
     const bool better = m.same_topology != c.same_topology ? m.same_topology : m.hausdorff < c.hausdorff;
     say(o, fmt::format("{}: Hausdorff {:.3g}, Euler characteristic {}kept; medial mesh: {:.3g}, {}kept: the result is the {}",
                        curve.name, c.hausdorff / diagonal, c.same_topology ? "" : "not ", m.hausdorff / diagonal,
