@@ -31,6 +31,18 @@ void check_options(const ReconstructOptions& o) {
     throw InputError(fmt::format("must be in [0, 0.5) (× the bounding-box diagonal), got {}", o.prune_span), "--prune-span");
   if (!(o.epsilon >= 0.0 && o.epsilon < 1.0))
     throw InputError(fmt::format("must be in [0, 1), got {}", o.epsilon), "--epsilon");
+  const MedialOptions& m = o.medial;
+  if (!(m.prune_angle_degrees >= 0.0 && m.prune_angle_degrees < 180.0))
+    throw InputError(fmt::format("must be in [0, 180) degrees, got {}", m.prune_angle_degrees), "--medial-prune-angle");
+  if (!(m.prune_span >= 0.0 && m.prune_span < 0.5))
+    throw InputError(fmt::format("must be in [0, 0.5) (× the bounding-box diagonal), got {}", m.prune_span),
+                     "--medial-prune-span");
+  if (!(m.spacing > 0.0 && m.spacing <= 100.0))
+    throw InputError(fmt::format("must be in (0, 100] local radii, got {}", m.spacing), "--medial-spacing");
+  if (m.budget == 0) throw InputError("must be at least 1", "--budget");
+  if (o.method == SkeletonMethod::medial && o.junction_triangles)
+    throw InputError("joins the branches of a curve skeleton: use it with --method curve or auto, not medial",
+                     "--bezier-junctions");
 }
 
 Stage make_stage(std::string name, const BranchGraph& graph) {
