@@ -31,7 +31,12 @@ start=$SECONDS
 build/asan/tests/skelconv_tests --gtest_brief=1
 echo "sanitize: unit tests $((SECONDS - start)) s"
 start=$SECONDS
-ctest --test-dir build/asan --output-on-failure -j2 -R '^cli\.'
+# The three shape cases with --report (cube, tetrahedron, sphere) mesh and
+# measure both reconstruction paths: 4–6 min each at -O1 under ASan. Their
+# code runs here in the smaller cases (skeletonize.medial_small: the medial
+# path; skeletonize.segment, off_tetrahedron: the curve path); they run in
+# CI at full speed.
+ctest --test-dir build/asan --output-on-failure -j2 -R '^cli\.' -E '^cli\.skeletonize\.(cube|tetrahedron|sphere)$'
 echo "sanitize: command-line cases $((SECONDS - start)) s"
 start=$SECONDS
 "$driver" build/asan/src/skelconv tests/data/good --iterations "$iterations" --seed 36
