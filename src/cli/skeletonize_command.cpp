@@ -83,7 +83,18 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
   for (std::size_t k = 0; k < r.stages.size(); ++k)
     text += (k == 0 ? "\n  " : ",\n  ") +
             stage_report(r.stages[k], input, options, progress, !result_only || k + 1 == r.stages.size());
-  return text + "]}\n";
+  text += "]";
+  if (options.method != reconstruct::SkeletonMethod::curve) {
+    // The medial path's own graph and its fit, round by round (absolute
+    // first-order RMS distances: reconstruct/medial_fit.hpp).
+    const reconstruct::MedialPathReport& m = r.medial_path;
+    text += fmt::format(",\n \"medial_path\": {{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
+                        "\"spheres\": {}, \"fit_rms\": [",
+                        m.samples, m.vertices, m.pruned, m.spheres);
+    for (std::size_t k = 0; k < m.fit.rms.size(); ++k) text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.rms[k]);
+    text += "]}";
+  }
+  return text + "}\n";
 }
 
 }  // namespace

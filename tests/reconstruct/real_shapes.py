@@ -9,7 +9,7 @@ two-sided Hausdorff and RMS distances (% of the bounding-box diagonal), the
 Euler characteristic in and out, the primitives and the seconds of each path,
 the path `--method auto` keeps (the one whose surface keeps the Euler
 characteristic, then the smaller Hausdorff distance: reconstruct.cpp,
-choose_between) and whether that meets the goal of issue 38 (H <= 1%, RMS <=
+choose_between) and whether that meets the goal for a reconstruction (H <= 1%, RMS <=
 0.2%, the Euler characteristic kept). Refused meshes get their message.
 
 The table between the markers in the docs must be what this run measures
