@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "skelconv/mesh/bounding_region.hpp"
 #include "skelconv/reconstruct/ball_fit.hpp"
 #include "skelconv/reconstruct/medial_graph.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
@@ -14,12 +15,6 @@
 
 namespace skelconv::reconstruct {
 namespace {
-
-double diagonal_of(const std::vector<Vec3>& points) {
-  Vec3 lo = points.front(), hi = lo;
-  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  return (hi - lo).norm();
-}
 
 /// Each tube end (a sphere on one edge and no triangle) gets one more
 /// sphere `factor` radii beyond it along the edge, at its radius: the
@@ -55,7 +50,7 @@ std::size_t primitives(const MedialMesh& mesh) {
 
 Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, MedialPathReport* report) {
   const MedialOptions& m = o.medial;
-  const double diagonal = diagonal_of(surface.vertices);
+  const double diagonal = bounding_box(surface.vertices).diagonal();
   SamplingOptions sampling;
   sampling.diagonal_divisions = m.sample_divisions;
   MedialGraph graph = medial_graph(surface, 20, sampling);
