@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# README command 1: install what is missing, build, regenerate the kernels
-# and diff them against generated/, run every test that CI does not run at
-# the main job's sizes (the ctest label `long`: the verification sweeps and
-# their baseline compares, the SCALIS accuracy test, the reconstruction
-# quality table, the long fuzz run, the package test, the slow figure
-# claims, the browser test; docs/checks.md says what each size covers),
+# README command 1: install what is missing, build (CI's build and the
+# benchmark programs), regenerate the kernels and diff them against
+# generated/, run every test that CI does not run at the main job's sizes
+# (the ctest label `long`: the verification sweeps and their baseline
+# compares, the SCALIS accuracy test, the reconstruction quality table, the
+# long fuzz run, the package test, the slow figure claims, the browser test,
+# the benchmarks' smoke tests; docs/checks.md says what each size covers),
 # then the sanitizer run (scripts/sanitize.sh) and the libFuzzer harnesses
 # (scripts/fuzz.sh), and print the segment sweep's summary table.
 # `ctest -N -L long` lists exactly what the long-test step runs.
@@ -28,8 +29,8 @@ start=$SECONDS
 stage() { echo "== [$((SECONDS - start)) s] $*"; }
 
 scripts/install_dependencies.sh --main-job
-stage "building everything (the long tests need the command, the test programs and the verifiers)"
-scripts/build.sh
+stage "building everything: CI's build and the benchmark programs (the long tests need the command, the test programs, the verifiers and the benchmarks)"
+scripts/build.sh --target all skelconv_bench
 
 stage "regenerating the kernels and diffing them against generated/"
 ctest --test-dir build/release -R codegen_regeneration_is_byte_identical --output-on-failure
