@@ -1,7 +1,6 @@
 // Implementation of skeletonize_command.hpp.
 #include "skeletonize_command.hpp"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -58,12 +57,11 @@ std::string stage_report(const reconstruct::Stage& s, const TriangleMesh& input,
     if (progress) progress(fmt::format("stage {}: {}", s.name, refused));
     return text + fmt::format(", \"not_measured\": \"{}\"}}", refused);
   }
-  if (progress) progress(fmt::format("measuring {}: {} primitives", s.name, n.total()));
-  const auto start = std::chrono::steady_clock::now();
-  TriangleMesh mesh;
-  const reconstruct::SurfaceDistance d = reconstruct::measure_stage(input, s, options, 0.0, &mesh);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const long long euler = mesh_topology(mesh).euler_characteristic;
+  if (progress && !s.measured) progress(fmt::format("measuring {}: {} primitives", s.name, n.total()));
+  const reconstruct::StageMeasure m = reconstruct::measure(input, s, options);
+  const reconstruct::SurfaceDistance& d = m.distance;
+  const long long euler = m.euler_characteristic;
+  const double seconds = m.seconds;
   if (progress) progress(fmt::format("measured {}: Hausdorff {:.4g}, RMS {:.4g} of the diagonal, Euler characteristic {}",
                                      s.name, d.hausdorff / d.diagonal, d.rms / d.diagonal, euler));
   return text + fmt::format(", \"hausdorff\": {:.6g}, \"rms\": {:.6g}, \"diagonal\": {:.17g}, \"euler_characteristic\": {}, "

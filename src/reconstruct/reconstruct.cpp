@@ -259,26 +259,14 @@ void curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
   }
 }
 
-/// How well a stage's meshed surface matches the input: whether it keeps
-/// the input's Euler characteristic, and its two-sided Hausdorff distance.
-struct Match {
-  bool same_topology = false;
-  double hausdorff = 0.0;
-};
-
-Match match(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& o) {
-  TriangleMesh mesh;
-  const SurfaceDistance d = measure_stage(surface, stage, o, 0.0, &mesh);
-  return {mesh_topology(mesh).euler_characteristic == mesh_topology(surface).euler_characteristic, d.hausdorff};
-}
-
 /// Whether the medial stage is better than the curve path's result: when
 /// both can be meshed within the measuring budget, the one whose surface
 /// keeps the input's Euler characteristic (a detached foot or a tunnel
 /// is worse than a larger distance), then the smaller two-sided Hausdorff
 /// distance; otherwise the smaller first-order RMS distance on the same
-/// area-weighted points (cheap, blind to topology).
-bool choose_between(const Stage& curve, const Stage& medial, const TriangleMesh& surface, const ReconstructOptions& o) {
+/// area-weighted points (cheap, blind to topology). The measures taken are
+/// kept in the stages (Stage::measured), for a report to reuse.
+bool choose_between(Stage& curve, Stage& medial, const TriangleMesh& surface, const ReconstructOptions& o) {
   const double diagonal = bounding_diagonal(surface.vertices);
   const auto measurable = [&](const Stage& s) {
     return over_measure_budget(measure_work(surface, s, o), o.measure_budget).empty();
@@ -286,21 +274,24 @@ bool choose_between(const Stage& curve, const Stage& medial, const TriangleMesh&
   if (measurable(curve) && measurable(medial)) {
     // A surface the mesher cannot finish (a vertex it cannot project: an
     // EvaluationError) loses; the error is said, not thrown.
-    const auto try_match = [&](const Stage& s) -> std::optional<Match> {
+    const auto try_measure = [&](Stage& s) {
       try {
-        return match(surface, s, o);
+        s.measured = measure(surface, s, o);
       } catch (const EvaluationError& error) {
         say(o, fmt::format("{}: not meshed ({}): the other path is kept", s.name, error.what()));
-        return std::nullopt;
       }
+      return s.measured.has_value();
     };
-    const std::optional<Match> cm = try_match(curve), mm = try_match(medial);
-    if (!cm || !mm) return bool(mm);
-    const Match &c = *cm, &m = *mm;
-    const bool better = m.same_topology != c.same_topology ? m.same_topology : m.hausdorff < c.hausdorff;
+    const bool curve_meshed = try_measure(curve), medial_meshed = try_measure(medial);
+    if (!curve_meshed || !medial_meshed) return medial_meshed;
+    const long long input_euler = mesh_topology(surface).euler_characteristic;
+    const bool c_kept = curve.measured->euler_characteristic == input_euler;
+    const bool m_kept = medial.measured->euler_characteristic == input_euler;
+    const double c = curve.measured->distance.hausdorff, m = medial.measured->distance.hausdorff;
+    const bool better = m_kept != c_kept ? m_kept : m < c;
     say(o, fmt::format("{}: Hausdorff {:.3g}, Euler characteristic {}kept; medial mesh: {:.3g}, {}kept: the result is the {}",
-                       curve.name, c.hausdorff / diagonal, c.same_topology ? "" : "not ", m.hausdorff / diagonal,
-                       m.same_topology ? "" : "not ", better ? "medial mesh" : curve.name));
+                       curve.name, c / diagonal, c_kept ? "" : "not ", m / diagonal, m_kept ? "" : "not ",
+                       better ? "medial mesh" : curve.name));
     return better;
   }
   const std::vector<WeightedPoint> points = area_weighted_points(surface, diagonal / 32);
@@ -494,6 +485,17 @@ SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, c
   const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), mesh_options);
   if (mesh_out != nullptr) *mesh_out = mesh;
   return surface_distance(surface, mesh);
+}
+
+StageMeasure measure(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options) {
+  if (stage.measured) return *stage.measured;
+  const auto start = std::chrono::steady_clock::now();
+  TriangleMesh mesh;
+  StageMeasure m;
+  m.distance = measure_stage(surface, stage, options, 0.0, &mesh);
+  m.euler_characteristic = mesh_topology(mesh).euler_characteristic;
+  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return m;
 }
 
 }  // namespace skelconv::reconstruct

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "skelconv/reconstruct/medial_fit.hpp"
 #include "skelconv/reconstruct/medial_mesh.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
+#include "skelconv/reconstruct/surface_distance.hpp"
 #include "skelconv/reconstruct/surface_fit.hpp"
 
 namespace skelconv::reconstruct {
@@ -133,6 +135,15 @@ struct ReconstructOptions {
 };
 
 /// One stage's skeleton: its branches as polylines of (x, y, z, r).
+/// A stage's skeleton meshed at the default size and measured against the
+/// input (measure): distances, the Euler characteristic of its surface, and
+/// the seconds meshing and measuring took.
+struct StageMeasure {
+  SurfaceDistance distance;
+  long long euler_characteristic = 0;
+  double seconds = 0.0;
+};
+
 struct Stage {
   std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed, fitted; or ball; or medial
   std::vector<Branch> branches;
@@ -148,6 +159,9 @@ struct Stage {
   MedialMesh medial;
   std::size_t ends = 0, junctions = 0, points = 0;
   double seconds = 0.0;  ///< wall time spent computing this stage
+  /// Its measure, when reconstruct() took it to choose between the two
+  /// paths (`auto`); measure() returns it instead of meshing again.
+  std::optional<StageMeasure> measured;
 };
 
 /// What the medial path saw and did (medial_stage).
@@ -192,12 +206,6 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& option
 /// (reconstruct() never returns one: it falls back to a ball).
 std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& options);
 
-}  // namespace skelconv::reconstruct
-
-#include "skelconv/reconstruct/surface_distance.hpp"
-
-namespace skelconv::reconstruct {
-
 /// What measuring a stage costs, estimated before meshing it. Every
 /// primitive of a stage (a Cauchy SCALIS segment, triangle or point) has
 /// infinite support, so each field evaluation visits all of them, and the
@@ -226,5 +234,10 @@ std::string over_measure_budget(const MeasureWork& work, double budget);
 /// that measure every stage check first and skip that one.
 SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
                               double size = 0.0, TriangleMesh* mesh_out = nullptr);
+
+/// measure_stage at the default size, with the Euler characteristic of the
+/// meshed surface and the time taken; `stage.measured` when it is set.
+/// Throws as measure_stage does.
+StageMeasure measure(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options);
 
 }  // namespace skelconv::reconstruct
