@@ -28,7 +28,8 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 for name in mesh_reader point_lines; do
   mkdir -p "$out/corpus/$name"
-  "$out/fuzz_$name" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$out/crashes/${name}-" \
+  # -timeout: an input that takes over 10 s is a finding (a reader that hangs).
+  "$out/fuzz_$name" -max_total_time="$seconds" -timeout=10 -print_final_stats=1 -artifact_prefix="$out/crashes/${name}-" \
     "$out/corpus/$name" "tests/data/fuzz/$name" 2> "$out/$name.log" \
     || { tail -40 "$out/$name.log"; echo "fuzz: $name failed (input in $out/crashes/)"; exit 1; }
   echo "fuzz: $name clean, $(grep -o 'Done [0-9]* runs' "$out/$name.log") in ${seconds} s"

@@ -418,5 +418,20 @@ TEST(MeshReader, BigEndianFloatQuadsAndObjPolygons) {
   EXPECT_THROW(read_mesh(temporary("x.stl")), InputError);
 }
 
+// An element without properties holds no data, whatever count its header
+// declares: it is skipped, not looped over (libFuzzer found a header
+// declaring 10^14 items of one, tests/data/fuzz/mesh_reader/, on which the
+// reader never returned).
+TEST(MeshReader, ElementWithoutPropertiesIsSkipped) {
+  const auto ply = temporary("empty_element.ply");
+  std::ofstream(ply) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                        "property float z\nelement unused 111111111111111\nelement face 1\n"
+                        "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const TriangleMesh mesh = read_mesh(ply);
+  EXPECT_EQ(mesh.vertices.size(), 3u);
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+  std::filesystem::remove(ply);
+}
+
 }  // namespace
 }  // namespace skelconv::reconstruct

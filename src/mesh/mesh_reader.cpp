@@ -207,6 +207,10 @@ void read_ply_element(const PlyElement& element, PlyBody& body, TriangleMesh& me
   const int x = find_property(element, {"x"}), y = find_property(element, {"y"}), z = find_property(element, {"z"});
   const int indices = find_property(element, {"vertex_indices", "vertex_index"});
   if (is_vertex && (x < 0 || y < 0 || z < 0)) throw InputError("the vertex element lacks x, y or z", where);
+  // An element without properties holds no bytes, whatever its count: there
+  // is nothing to read (looping over a count of 10^14 would never end).
+  if (element.properties.empty()) return;
+  std::vector<double> values;  // one list property's entries
   std::vector<std::int64_t> face;
   for (std::size_t item = 0; item < element.count; ++item) {
     Vec3 point = Vec3::Zero();
@@ -219,13 +223,17 @@ void read_ply_element(const PlyElement& element, PlyBody& body, TriangleMesh& me
       }
       const double count = body.next(property.count_type);
       if (!(count >= 0 && count < 1e6)) throw InputError(fmt::format("{} {}: bad list length", element.name, item), where);
-      face.assign(std::size_t(count), 0);
-      for (auto& index : face) index = std::int64_t(body.next(property.type));
+      values.resize(std::size_t(count));
+      for (double& value : values) value = body.next(property.type);
       if (!(is_face && int(p) == indices)) continue;
-      for (std::int64_t index : face) {
-        if (index < 0 || index >= std::int64_t(mesh.vertices.size()))
-          throw InputError(fmt::format("face {} has vertex index {} outside [0, {})", item, index, mesh.vertices.size()),
+      // Checked as doubles, before the conversion: a float property can hold
+      // 1e58 or NaN, whose conversion to an integer is undefined.
+      face.clear();
+      for (const double value : values) {
+        if (!(value >= 0 && value < double(mesh.vertices.size())))
+          throw InputError(fmt::format("face {} has vertex index {} outside [0, {})", item, value, mesh.vertices.size()),
                            where);
+        face.push_back(std::int64_t(value));
       }
       add_polygon(mesh, face, max_triangles, where);
     }
@@ -344,6 +352,7 @@ class OffWords {
     return static_cast<std::int64_t>(value);
   }
   std::string at() const { return fmt::format("{}: line {}", where_, words_[next_ - 1].line); }
+  std::size_t words_left() const { return words_.size() - next_; }
   /// Skips the rest of the line of the last word read (a colour).
   void skip_rest_of_line() {
     while (!done() && words_[next_].line == words_[next_ - 1].line) ++next_;
@@ -373,7 +382,10 @@ TriangleMesh read_off(const std::string& text, std::size_t max_triangles, const 
   words.count("the edge count");
   if (static_cast<double>(face_count) > static_cast<double>(max_triangles)) throw too_many_triangles(max_triangles, words.at());
   TriangleMesh mesh;
-  mesh.vertices.reserve(static_cast<std::size_t>(vertex_count));
+  // Room for the vertices the file can hold (three words each), not for
+  // what a header claims: a count of 10^8 over a short body is refused at
+  // its end, after reading what is there, not after reserving gigabytes.
+  mesh.vertices.reserve(std::min(static_cast<std::size_t>(vertex_count), words.words_left() / 3));
   for (std::int64_t v = 0; v < vertex_count; ++v) {
     const std::string what = fmt::format("vertex {}", v);
     Vec3 point;
