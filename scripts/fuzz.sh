@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # libFuzzer runs (clang++-14, -fsanitize=fuzzer,address,undefined, -O1) of
-# the readers of untrusted text: the PLY/OBJ reader (tests/fuzz/fuzz_mesh_reader.cpp)
+# the readers of untrusted text: the PLY/OBJ/OFF reader (tests/fuzz/fuzz_mesh_reader.cpp)
 # and `skelconv eval`'s point lines (tests/fuzz/fuzz_point_lines.cpp), each
 # for SKELCONV_FUZZ_SECONDS (default 30) seconds. Each harness is compiled
 # from the few sources it needs (no CMake build: no runtime library is built

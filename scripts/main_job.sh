@@ -49,7 +49,7 @@ ctest --test-dir build/release -L "$labels" --output-on-failure -j2
 stage "sanitizers: ASan + UBSan build of the runtime, the command and the unit tests"
 scripts/sanitize.sh
 
-stage "libFuzzer: the PLY/OBJ reader and the point lines, ${SKELCONV_FUZZ_SECONDS:-30} s each"
+stage "libFuzzer: the PLY/OBJ/OFF reader and the point lines, ${SKELCONV_FUZZ_SECONDS:-30} s each"
 scripts/fuzz.sh
 
 stage "summary of the segment sweep (build/release/verify/$report.json)"
