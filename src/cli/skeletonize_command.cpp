@@ -60,13 +60,11 @@ std::string stage_report(const reconstruct::Stage& s, const TriangleMesh& input,
   if (progress && !s.measured) progress(fmt::format("measuring {}: {} primitives", s.name, n.total()));
   const reconstruct::StageMeasure m = reconstruct::measure(input, s, options);
   const reconstruct::SurfaceDistance& d = m.distance;
-  const long long euler = m.euler_characteristic;
-  const double seconds = m.seconds;
   if (progress) progress(fmt::format("measured {}: Hausdorff {:.4g}, RMS {:.4g} of the diagonal, Euler characteristic {}",
-                                     s.name, d.hausdorff / d.diagonal, d.rms / d.diagonal, euler));
+                                     s.name, d.hausdorff / d.diagonal, d.rms / d.diagonal, m.euler_characteristic));
   return text + fmt::format(", \"hausdorff\": {:.6g}, \"rms\": {:.6g}, \"diagonal\": {:.17g}, \"euler_characteristic\": {}, "
                             "\"measure_seconds\": {:.3g}}}",
-                            d.hausdorff / d.diagonal, d.rms / d.diagonal, d.diagonal, euler, seconds);
+                            d.hausdorff / d.diagonal, d.rms / d.diagonal, d.diagonal, m.euler_characteristic, m.seconds);
 }
 
 std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh& input,

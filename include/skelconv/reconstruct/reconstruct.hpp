@@ -134,7 +134,6 @@ struct ReconstructOptions {
   std::function<void(std::string_view)> progress;
 };
 
-/// One stage's skeleton: its branches as polylines of (x, y, z, r).
 /// A stage's skeleton meshed at the default size and measured against the
 /// input (measure): distances, the Euler characteristic of its surface, and
 /// the seconds meshing and measuring took.
@@ -144,6 +143,7 @@ struct StageMeasure {
   double seconds = 0.0;
 };
 
+/// One stage's skeleton: its branches as polylines of (x, y, z, r).
 struct Stage {
   std::string name;  ///< raw, pruned, simplified, simplified_3d, smoothed, fitted; or ball; or medial
   std::vector<Branch> branches;
