@@ -4,6 +4,7 @@
 #include <ginac/version.h>
 
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -104,7 +105,8 @@ std::string fast_table_text(const std::vector<EmittedKernel>& kernels, const Gen
                    "the fast forms of the segment kernels, for the filter of skelconv/kernels/segment_filter.hpp.",
                    request)
     << "#pragma once\n\n#include <array>\n#include <span>\n\n"
-    << "#include <skelconv/kernels/relative_error.hpp>\n\n#include \"generated/segment_table.hpp\"\n\n"
+    << "#include <skelconv/kernels/relative_error.hpp>\n\n#include \"generated/segment_inverse.hpp\"\n"
+    << "#include \"generated/segment_cauchy.hpp\"\n#include \"generated/segment_compact.hpp\"\n\n"
     << "namespace skelconv::generated {\n\n"
     << "using FastScalar = RelativeError<double>;\n\n"
     << "/// One kernel's fast forms (nullptr where it has none: its generic path calls a helper).\n"
@@ -173,7 +175,17 @@ std::string opcount_csv_row(const std::string& kernel_name, const std::string& f
   return csv.str();
 }
 
+// A file whose bytes are already `text` is left alone: its time stamp stays,
+// so that a build after regenerating recompiles only what includes a file
+// that changed (a formula change in one family rebuilds that family).
 void write_file(const std::filesystem::path& path, const std::string& text) {
+  {
+    std::ifstream existing(path, std::ios::binary);
+    if (existing) {
+      const std::string old_text{std::istreambuf_iterator<char>(existing), std::istreambuf_iterator<char>()};
+      if (old_text == text) return;
+    }
+  }
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) throw std::runtime_error("cannot write " + path.string());
@@ -206,31 +218,51 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
 
   for (EmittedKernel& k : kernels) family_bodies[k.spec.family] += fast_functions_text(k);
 
-  // One header per family.
+  // One header per family: its functions, then its part of the lookup
+  // table (segment_<family>_kernels<T>(), declared in segment_table.hpp).
+  // A formula change in one family changes that family's header only, so
+  // only the files that instantiate that family recompile (the double table
+  // of the runtime, the binary128 table of the verifier, one file each).
+  // The table holds f, ∇f and both; the generic-only functions are not in
+  // it (only the benchmarks call them, by name), so instantiating the table
+  // does not compile them.
   for (const auto& [family, body] : family_bodies) {
     const std::string file = "segment_" + std::string(family_name(family)) + ".hpp";
     std::ostringstream os;
     os << file_header(file, "segment kernels of the " + std::string(family_name(family)) + " family.", request)
-       << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n\n"
+       << "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cmath>\n#include <span>\n\n"
        << "#include <skelconv/detail/exact_cross.hpp>\n#include <skelconv/detail/gauss_moments.hpp>\n#include <skelconv/primitives/segment_input.hpp>\n"
        << "#include <skelconv/detail/stable_recurrence.hpp>\n#include <skelconv/detail/support_gap.hpp>\n\n"
+       << "#include \"generated/segment_table.hpp\"\n\n"
        << "namespace skelconv::generated {\n\n"
-       << body << "}  // namespace skelconv::generated\n";
+       << body
+       << "/// The " << family_name(family) << " family's kernels, sorted by degree and weight degree.\n"
+       << "template <class T>\nstd::span<const SegmentKernel<T>> segment_" << family_name(family) << "_kernels() {\n"
+       << "  static const SegmentKernel<T> table[] = {\n";
+    for (const EmittedKernel& k : kernels) {
+      if (k.spec.family != family) continue;
+      const std::string n = k.spec.name();
+      os << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", "
+         << k.spec.weight_degree << ", &" << n << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, \""
+         << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", "
+         << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << "},\n";
+    }
+    os << "  };\n  return table;\n}\n\n"
+       << "}  // namespace skelconv::generated\n";
     write_file(folder / file, os.str());
   }
 
-  // The lookup table: one function per family, so that each family's
-  // instantiation (double in the runtime, binary128 in the verifier) can be
-  // compiled in its own translation unit, in parallel. The table holds f, ∇f
-  // and both; the generic-only functions are not in it (only the benchmarks'
-  // batch baseline calls them, by name), so instantiating the table does not
-  // compile them.
+  // The lookup table's types and declarations, with no formula in it: one
+  // function per family, each defined at the end of the family's header and
+  // instantiated in a translation unit of its own (double in the runtime,
+  // binary128 in the verifier), so that the families compile in parallel
+  // and a file that only looks kernels up never parses the formulas.
   std::ostringstream table;
-  table << file_header("segment_table.hpp", "every generated segment kernel, for lookup at run time.", request)
-        << "#pragma once\n\n#include <array>\n#include <span>\n#include <vector>\n\n";
-  for (const auto& [family, body] : family_bodies)
-    table << "#include \"generated/segment_" << family_name(family) << ".hpp\"\n";
-  table << "\nnamespace skelconv::generated {\n\n"
+  table << file_header("segment_table.hpp", "the lookup table of the generated segment kernels (declarations).", request)
+        << "#pragma once\n\n#include <array>\n#include <span>\n#include <vector>\n\n"
+        << "#include <skelconv/kernels/kernel_family.hpp>\n#include <skelconv/kernels/op_count.hpp>\n"
+        << "#include <skelconv/primitives/segment_input.hpp>\n\n"
+        << "namespace skelconv::generated {\n\n"
         << "/// One generated kernel: f, ∇f and both, with their operation counts.\n"
         << "template <class T>\nstruct SegmentKernel {\n"
         << "  KernelFamily family;\n  int degree;\n  int weight_degree;\n"
@@ -239,21 +271,10 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "  T (*f_and_grad)(const SegmentInput<T>&, std::array<T, 3>&);\n"
         << "  const char* name;\n  const char* equation;\n"
         << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n";
-  for (const auto& [family, body] : family_bodies) {
-    table << "/// The " << family_name(family) << " family's kernels, sorted by degree and weight degree.\n"
-          << "template <class T>\nstd::span<const SegmentKernel<T>> segment_" << family_name(family)
-          << "_kernels() {\n"
-          << "  static const SegmentKernel<T> table[] = {\n";
-    for (const EmittedKernel& k : kernels) {
-      if (k.spec.family != family) continue;
-      const std::string n = k.spec.name();
-      table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", "
-            << k.spec.weight_degree << ", &" << n << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, \""
-            << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", "
-            << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << "},\n";
-    }
-    table << "  };\n  return table;\n}\n\n";
-  }
+  for (const auto& [family, body] : family_bodies)
+    table << "/// The " << family_name(family) << " family's kernels (defined in generated/segment_"
+          << family_name(family) << ".hpp).\n"
+          << "template <class T>\nstd::span<const SegmentKernel<T>> segment_" << family_name(family) << "_kernels();\n\n";
   table << "/// Every generated kernel, sorted by family, degree and weight degree.\n"
         << "template <class T>\nstd::span<const SegmentKernel<T>> segment_kernels() {\n"
         << "  static const std::vector<SegmentKernel<T>> table = [] {\n"

@@ -10,12 +10,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 #include <skelconv/detail/exact_cross.hpp>
 #include <skelconv/detail/gauss_moments.hpp>
 #include <skelconv/primitives/segment_input.hpp>
 #include <skelconv/detail/stable_recurrence.hpp>
 #include <skelconv/detail/support_gap.hpp>
+
+#include "generated/segment_table.hpp"
 
 namespace skelconv::generated {
 
@@ -56633,6 +56636,134 @@ T segment_compact_i15_w3_fast_f_and_grad(const SegmentInput<T>& in, std::array<T
   grad[1] = (foot1 * G_ap - ab1 * G_E) * g_factor;
   grad[2] = (foot2 * G_ap - ab2 * G_E) * g_factor;
   return f;
+}
+
+/// The compact family's kernels, sorted by degree and weight degree.
+template <class T>
+std::span<const SegmentKernel<T>> segment_compact_kernels() {
+  static const SegmentKernel<T> table[] = {
+      {KernelFamily::compact, 2, 0, &segment_compact_i2_w0_f<T>, &segment_compact_i2_w0_grad<T>, &segment_compact_i2_w0_f_and_grad<T>, "segment_compact_i2_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt", {59, 78, 3, 1, 0, 0, 0}, {95, 133, 5, 1, 0, 0, 0}, {95, 135, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 2, 1, &segment_compact_i2_w1_f<T>, &segment_compact_i2_w1_grad<T>, &segment_compact_i2_w1_f_and_grad<T>, "segment_compact_i2_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {67, 86, 3, 1, 0, 0, 0}, {111, 148, 5, 1, 0, 0, 0}, {112, 151, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 2, 2, &segment_compact_i2_w2_f<T>, &segment_compact_i2_w2_grad<T>, &segment_compact_i2_w2_f_and_grad<T>, "segment_compact_i2_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {75, 94, 3, 1, 0, 0, 0}, {127, 164, 5, 1, 0, 0, 0}, {129, 168, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 2, 3, &segment_compact_i2_w3_f<T>, &segment_compact_i2_w3_grad<T>, &segment_compact_i2_w3_f_and_grad<T>, "segment_compact_i2_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {83, 102, 3, 1, 0, 0, 0}, {143, 180, 5, 1, 0, 0, 0}, {146, 185, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 3, 0, &segment_compact_i3_w0_f<T>, &segment_compact_i3_w0_grad<T>, &segment_compact_i3_w0_f_and_grad<T>, "segment_compact_i3_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(3/2) dt", {87, 75, 3, 4, 2, 0, 0}, {92, 88, 4, 4, 2, 0, 0}, {94, 101, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 3, 1, &segment_compact_i3_w1_f<T>, &segment_compact_i3_w1_grad<T>, &segment_compact_i3_w1_f_and_grad<T>, "segment_compact_i3_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(3/2) dt", {90, 87, 3, 4, 2, 0, 0}, {100, 113, 4, 4, 2, 0, 0}, {103, 129, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 3, 2, &segment_compact_i3_w2_f<T>, &segment_compact_i3_w2_grad<T>, &segment_compact_i3_w2_f_and_grad<T>, "segment_compact_i3_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(3/2) dt", {95, 107, 3, 4, 2, 0, 0}, {108, 141, 4, 4, 2, 0, 0}, {114, 168, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 3, 3, &segment_compact_i3_w3_f<T>, &segment_compact_i3_w3_grad<T>, &segment_compact_i3_w3_f_and_grad<T>, "segment_compact_i3_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(3/2) dt", {100, 127, 3, 4, 2, 0, 0}, {118, 175, 4, 4, 2, 0, 0}, {125, 206, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 4, 0, &segment_compact_i4_w0_f<T>, &segment_compact_i4_w0_grad<T>, &segment_compact_i4_w0_f_and_grad<T>, "segment_compact_i4_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt", {59, 85, 3, 1, 0, 0, 0}, {95, 140, 5, 1, 0, 0, 0}, {95, 142, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 4, 1, &segment_compact_i4_w1_f<T>, &segment_compact_i4_w1_grad<T>, &segment_compact_i4_w1_f_and_grad<T>, "segment_compact_i4_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {67, 93, 3, 1, 0, 0, 0}, {111, 155, 5, 1, 0, 0, 0}, {112, 158, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 4, 2, &segment_compact_i4_w2_f<T>, &segment_compact_i4_w2_grad<T>, &segment_compact_i4_w2_f_and_grad<T>, "segment_compact_i4_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {75, 101, 3, 1, 0, 0, 0}, {127, 171, 5, 1, 0, 0, 0}, {129, 175, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 4, 3, &segment_compact_i4_w3_f<T>, &segment_compact_i4_w3_grad<T>, &segment_compact_i4_w3_f_and_grad<T>, "segment_compact_i4_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {83, 109, 3, 1, 0, 0, 0}, {143, 187, 5, 1, 0, 0, 0}, {146, 192, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 5, 0, &segment_compact_i5_w0_f<T>, &segment_compact_i5_w0_grad<T>, &segment_compact_i5_w0_f_and_grad<T>, "segment_compact_i5_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(5/2) dt", {89, 86, 3, 4, 2, 0, 0}, {94, 99, 4, 4, 2, 0, 0}, {96, 112, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 5, 1, &segment_compact_i5_w1_f<T>, &segment_compact_i5_w1_grad<T>, &segment_compact_i5_w1_f_and_grad<T>, "segment_compact_i5_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(5/2) dt", {92, 100, 3, 4, 2, 0, 0}, {102, 124, 4, 4, 2, 0, 0}, {105, 140, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 5, 2, &segment_compact_i5_w2_f<T>, &segment_compact_i5_w2_grad<T>, &segment_compact_i5_w2_f_and_grad<T>, "segment_compact_i5_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(5/2) dt", {97, 120, 3, 4, 2, 0, 0}, {110, 152, 4, 4, 2, 0, 0}, {116, 179, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 5, 3, &segment_compact_i5_w3_f<T>, &segment_compact_i5_w3_grad<T>, &segment_compact_i5_w3_f_and_grad<T>, "segment_compact_i5_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(5/2) dt", {102, 139, 3, 4, 2, 0, 0}, {120, 187, 4, 4, 2, 0, 0}, {127, 219, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 6, 0, &segment_compact_i6_w0_f<T>, &segment_compact_i6_w0_grad<T>, &segment_compact_i6_w0_f_and_grad<T>, "segment_compact_i6_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt", {59, 92, 3, 1, 0, 0, 0}, {95, 147, 5, 1, 0, 0, 0}, {95, 149, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 6, 1, &segment_compact_i6_w1_f<T>, &segment_compact_i6_w1_grad<T>, &segment_compact_i6_w1_f_and_grad<T>, "segment_compact_i6_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {67, 100, 3, 1, 0, 0, 0}, {111, 162, 5, 1, 0, 0, 0}, {112, 165, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 6, 2, &segment_compact_i6_w2_f<T>, &segment_compact_i6_w2_grad<T>, &segment_compact_i6_w2_f_and_grad<T>, "segment_compact_i6_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {75, 108, 3, 1, 0, 0, 0}, {127, 178, 5, 1, 0, 0, 0}, {129, 182, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 6, 3, &segment_compact_i6_w3_f<T>, &segment_compact_i6_w3_grad<T>, &segment_compact_i6_w3_f_and_grad<T>, "segment_compact_i6_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {83, 116, 3, 1, 0, 0, 0}, {143, 194, 5, 1, 0, 0, 0}, {146, 199, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 7, 0, &segment_compact_i7_w0_f<T>, &segment_compact_i7_w0_grad<T>, &segment_compact_i7_w0_f_and_grad<T>, "segment_compact_i7_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(7/2) dt", {91, 99, 3, 4, 2, 0, 0}, {96, 112, 4, 4, 2, 0, 0}, {98, 125, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 7, 1, &segment_compact_i7_w1_f<T>, &segment_compact_i7_w1_grad<T>, &segment_compact_i7_w1_f_and_grad<T>, "segment_compact_i7_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(7/2) dt", {94, 111, 3, 4, 2, 0, 0}, {104, 136, 4, 4, 2, 0, 0}, {107, 151, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 7, 2, &segment_compact_i7_w2_f<T>, &segment_compact_i7_w2_grad<T>, &segment_compact_i7_w2_f_and_grad<T>, "segment_compact_i7_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(7/2) dt", {99, 129, 3, 4, 2, 0, 0}, {112, 165, 4, 4, 2, 0, 0}, {118, 191, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 7, 3, &segment_compact_i7_w3_f<T>, &segment_compact_i7_w3_grad<T>, &segment_compact_i7_w3_f_and_grad<T>, "segment_compact_i7_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(7/2) dt", {104, 150, 3, 4, 2, 0, 0}, {122, 200, 4, 4, 2, 0, 0}, {129, 229, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 8, 0, &segment_compact_i8_w0_f<T>, &segment_compact_i8_w0_grad<T>, &segment_compact_i8_w0_f_and_grad<T>, "segment_compact_i8_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt", {59, 99, 3, 1, 0, 0, 0}, {95, 154, 5, 1, 0, 0, 0}, {95, 156, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 8, 1, &segment_compact_i8_w1_f<T>, &segment_compact_i8_w1_grad<T>, &segment_compact_i8_w1_f_and_grad<T>, "segment_compact_i8_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {67, 107, 3, 1, 0, 0, 0}, {111, 169, 5, 1, 0, 0, 0}, {112, 172, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 8, 2, &segment_compact_i8_w2_f<T>, &segment_compact_i8_w2_grad<T>, &segment_compact_i8_w2_f_and_grad<T>, "segment_compact_i8_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {75, 115, 3, 1, 0, 0, 0}, {127, 185, 5, 1, 0, 0, 0}, {129, 189, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 8, 3, &segment_compact_i8_w3_f<T>, &segment_compact_i8_w3_grad<T>, &segment_compact_i8_w3_f_and_grad<T>, "segment_compact_i8_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {83, 123, 3, 1, 0, 0, 0}, {143, 201, 5, 1, 0, 0, 0}, {146, 206, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 9, 0, &segment_compact_i9_w0_f<T>, &segment_compact_i9_w0_grad<T>, &segment_compact_i9_w0_f_and_grad<T>, "segment_compact_i9_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(9/2) dt", {93, 109, 3, 4, 2, 0, 0}, {98, 122, 4, 4, 2, 0, 0}, {100, 134, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 9, 1, &segment_compact_i9_w1_f<T>, &segment_compact_i9_w1_grad<T>, &segment_compact_i9_w1_f_and_grad<T>, "segment_compact_i9_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(9/2) dt", {96, 120, 3, 4, 2, 0, 0}, {106, 146, 4, 4, 2, 0, 0}, {109, 162, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 9, 2, &segment_compact_i9_w2_f<T>, &segment_compact_i9_w2_grad<T>, &segment_compact_i9_w2_f_and_grad<T>, "segment_compact_i9_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(9/2) dt", {101, 140, 3, 4, 2, 0, 0}, {114, 176, 4, 4, 2, 0, 0}, {120, 201, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 9, 3, &segment_compact_i9_w3_f<T>, &segment_compact_i9_w3_grad<T>, &segment_compact_i9_w3_f_and_grad<T>, "segment_compact_i9_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(9/2) dt", {106, 161, 3, 4, 2, 0, 0}, {124, 210, 4, 4, 2, 0, 0}, {131, 240, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 10, 0, &segment_compact_i10_w0_f<T>, &segment_compact_i10_w0_grad<T>, &segment_compact_i10_w0_f_and_grad<T>, "segment_compact_i10_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt", {59, 106, 3, 1, 0, 0, 0}, {95, 161, 5, 1, 0, 0, 0}, {95, 163, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 10, 1, &segment_compact_i10_w1_f<T>, &segment_compact_i10_w1_grad<T>, &segment_compact_i10_w1_f_and_grad<T>, "segment_compact_i10_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {67, 114, 3, 1, 0, 0, 0}, {111, 176, 5, 1, 0, 0, 0}, {112, 179, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 10, 2, &segment_compact_i10_w2_f<T>, &segment_compact_i10_w2_grad<T>, &segment_compact_i10_w2_f_and_grad<T>, "segment_compact_i10_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {75, 122, 3, 1, 0, 0, 0}, {127, 192, 5, 1, 0, 0, 0}, {129, 196, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 10, 3, &segment_compact_i10_w3_f<T>, &segment_compact_i10_w3_grad<T>, &segment_compact_i10_w3_f_and_grad<T>, "segment_compact_i10_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {83, 130, 3, 1, 0, 0, 0}, {182, 271, 5, 1, 0, 0, 0}, {185, 276, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 11, 0, &segment_compact_i11_w0_f<T>, &segment_compact_i11_w0_grad<T>, &segment_compact_i11_w0_f_and_grad<T>, "segment_compact_i11_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(11/2) dt", {95, 121, 3, 4, 2, 0, 0}, {100, 133, 4, 4, 2, 0, 0}, {102, 146, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 11, 1, &segment_compact_i11_w1_f<T>, &segment_compact_i11_w1_grad<T>, &segment_compact_i11_w1_f_and_grad<T>, "segment_compact_i11_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(11/2) dt", {98, 131, 3, 4, 2, 0, 0}, {108, 157, 4, 4, 2, 0, 0}, {111, 174, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 11, 2, &segment_compact_i11_w2_f<T>, &segment_compact_i11_w2_grad<T>, &segment_compact_i11_w2_f_and_grad<T>, "segment_compact_i11_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(11/2) dt", {103, 151, 3, 4, 2, 0, 0}, {116, 185, 4, 4, 2, 0, 0}, {122, 212, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 11, 3, &segment_compact_i11_w3_f<T>, &segment_compact_i11_w3_grad<T>, &segment_compact_i11_w3_f_and_grad<T>, "segment_compact_i11_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(11/2) dt", {108, 172, 3, 4, 2, 0, 0}, {126, 221, 4, 4, 2, 0, 0}, {133, 250, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 12, 0, &segment_compact_i12_w0_f<T>, &segment_compact_i12_w0_grad<T>, &segment_compact_i12_w0_f_and_grad<T>, "segment_compact_i12_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt", {59, 113, 3, 1, 0, 0, 0}, {95, 168, 5, 1, 0, 0, 0}, {95, 170, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 12, 1, &segment_compact_i12_w1_f<T>, &segment_compact_i12_w1_grad<T>, &segment_compact_i12_w1_f_and_grad<T>, "segment_compact_i12_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {67, 121, 3, 1, 0, 0, 0}, {138, 237, 5, 1, 0, 0, 0}, {139, 240, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 12, 2, &segment_compact_i12_w2_f<T>, &segment_compact_i12_w2_grad<T>, &segment_compact_i12_w2_f_and_grad<T>, "segment_compact_i12_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {93, 174, 3, 1, 0, 0, 0}, {160, 259, 5, 1, 0, 0, 0}, {162, 263, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 12, 3, &segment_compact_i12_w3_f<T>, &segment_compact_i12_w3_grad<T>, &segment_compact_i12_w3_f_and_grad<T>, "segment_compact_i12_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {104, 185, 3, 1, 0, 0, 0}, {182, 281, 5, 1, 0, 0, 0}, {185, 286, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 13, 0, &segment_compact_i13_w0_f<T>, &segment_compact_i13_w0_grad<T>, &segment_compact_i13_w0_f_and_grad<T>, "segment_compact_i13_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(13/2) dt", {97, 130, 3, 4, 2, 0, 0}, {102, 144, 4, 4, 2, 0, 0}, {104, 157, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 13, 1, &segment_compact_i13_w1_f<T>, &segment_compact_i13_w1_grad<T>, &segment_compact_i13_w1_f_and_grad<T>, "segment_compact_i13_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(13/2) dt", {100, 141, 3, 4, 2, 0, 0}, {110, 168, 4, 4, 2, 0, 0}, {113, 183, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 13, 2, &segment_compact_i13_w2_f<T>, &segment_compact_i13_w2_grad<T>, &segment_compact_i13_w2_f_and_grad<T>, "segment_compact_i13_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(13/2) dt", {105, 160, 3, 4, 2, 0, 0}, {118, 194, 4, 4, 2, 0, 0}, {124, 220, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 13, 3, &segment_compact_i13_w3_f<T>, &segment_compact_i13_w3_grad<T>, &segment_compact_i13_w3_f_and_grad<T>, "segment_compact_i13_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(13/2) dt", {110, 180, 3, 4, 2, 0, 0}, {128, 230, 4, 4, 2, 0, 0}, {135, 260, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 14, 0, &segment_compact_i14_w0_f<T>, &segment_compact_i14_w0_grad<T>, &segment_compact_i14_w0_f_and_grad<T>, "segment_compact_i14_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt", {71, 162, 3, 1, 0, 0, 0}, {116, 226, 5, 1, 0, 0, 0}, {116, 228, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 14, 1, &segment_compact_i14_w1_f<T>, &segment_compact_i14_w1_grad<T>, &segment_compact_i14_w1_f_and_grad<T>, "segment_compact_i14_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {82, 173, 3, 1, 0, 0, 0}, {138, 247, 5, 1, 0, 0, 0}, {139, 250, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 14, 2, &segment_compact_i14_w2_f<T>, &segment_compact_i14_w2_grad<T>, &segment_compact_i14_w2_f_and_grad<T>, "segment_compact_i14_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {93, 184, 3, 1, 0, 0, 0}, {160, 269, 5, 1, 0, 0, 0}, {162, 273, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 14, 3, &segment_compact_i14_w3_f<T>, &segment_compact_i14_w3_grad<T>, &segment_compact_i14_w3_f_and_grad<T>, "segment_compact_i14_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {104, 195, 3, 1, 0, 0, 0}, {182, 291, 5, 1, 0, 0, 0}, {185, 296, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 15, 0, &segment_compact_i15_w0_f<T>, &segment_compact_i15_w0_grad<T>, &segment_compact_i15_w0_f_and_grad<T>, "segment_compact_i15_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(15/2) dt", {99, 140, 3, 4, 2, 0, 0}, {104, 154, 4, 4, 2, 0, 0}, {106, 166, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 15, 1, &segment_compact_i15_w1_f<T>, &segment_compact_i15_w1_grad<T>, &segment_compact_i15_w1_f_and_grad<T>, "segment_compact_i15_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(15/2) dt", {102, 152, 3, 4, 2, 0, 0}, {112, 177, 4, 4, 2, 0, 0}, {115, 193, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 15, 2, &segment_compact_i15_w2_f<T>, &segment_compact_i15_w2_grad<T>, &segment_compact_i15_w2_f_and_grad<T>, "segment_compact_i15_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(15/2) dt", {107, 172, 3, 4, 2, 0, 0}, {120, 205, 4, 4, 2, 0, 0}, {126, 232, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 15, 3, &segment_compact_i15_w3_f<T>, &segment_compact_i15_w3_grad<T>, &segment_compact_i15_w3_f_and_grad<T>, "segment_compact_i15_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(15/2) dt", {112, 192, 3, 4, 2, 0, 0}, {130, 240, 4, 4, 2, 0, 0}, {137, 270, 4, 4, 2, 0, 0}},
+      {KernelFamily::compact, 16, 0, &segment_compact_i16_w0_f<T>, &segment_compact_i16_w0_grad<T>, &segment_compact_i16_w0_f_and_grad<T>, "segment_compact_i16_w0",
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt", {71, 172, 3, 1, 0, 0, 0}, {116, 236, 5, 1, 0, 0, 0}, {116, 238, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 16, 1, &segment_compact_i16_w1_f<T>, &segment_compact_i16_w1_grad<T>, &segment_compact_i16_w1_f_and_grad<T>, "segment_compact_i16_w1",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {82, 183, 3, 1, 0, 0, 0}, {138, 257, 5, 1, 0, 0, 0}, {139, 260, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 16, 2, &segment_compact_i16_w2_f<T>, &segment_compact_i16_w2_grad<T>, &segment_compact_i16_w2_f_and_grad<T>, "segment_compact_i16_w2",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {93, 194, 3, 1, 0, 0, 0}, {160, 279, 5, 1, 0, 0, 0}, {162, 283, 5, 1, 0, 0, 0}},
+      {KernelFamily::compact, 16, 3, &segment_compact_i16_w3_f<T>, &segment_compact_i16_w3_grad<T>, &segment_compact_i16_w3_f_and_grad<T>, "segment_compact_i16_w3",
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {104, 205, 3, 1, 0, 0, 0}, {247, 421, 5, 1, 0, 0, 0}, {250, 426, 5, 1, 0, 0, 0}},
+  };
+  return table;
 }
 
 }  // namespace skelconv::generated

@@ -12,7 +12,9 @@
 
 #include <skelconv/kernels/relative_error.hpp>
 
-#include "generated/segment_table.hpp"
+#include "generated/segment_inverse.hpp"
+#include "generated/segment_cauchy.hpp"
+#include "generated/segment_compact.hpp"
 
 namespace skelconv::generated {
 

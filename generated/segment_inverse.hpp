@@ -10,12 +10,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 #include <skelconv/detail/exact_cross.hpp>
 #include <skelconv/detail/gauss_moments.hpp>
 #include <skelconv/primitives/segment_input.hpp>
 #include <skelconv/detail/stable_recurrence.hpp>
 #include <skelconv/detail/support_gap.hpp>
+
+#include "generated/segment_table.hpp"
 
 namespace skelconv::generated {
 
@@ -39784,6 +39787,142 @@ T segment_inverse_i16_w3_fast_f_and_grad(const SegmentInput<T>& in, std::array<T
   grad[1] = g_factor * (foot1 * G_ap - ab1 * G_E);
   grad[2] = g_factor * (G_ap * foot2 - ab2 * G_E);
   return f;
+}
+
+/// The inverse family's kernels, sorted by degree and weight degree.
+template <class T>
+std::span<const SegmentKernel<T>> segment_inverse_kernels() {
+  static const SegmentKernel<T> table[] = {
+      {KernelFamily::inverse, 1, 0, &segment_inverse_i1_w0_f<T>, &segment_inverse_i1_w0_grad<T>, &segment_inverse_i1_w0_f_and_grad<T>, "segment_inverse_i1_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt", {36, 44, 2, 3, 0, 1, 0}, {44, 62, 5, 3, 0, 0, 0}, {45, 71, 7, 3, 0, 1, 0}},
+      {KernelFamily::inverse, 1, 1, &segment_inverse_i1_w1_f<T>, &segment_inverse_i1_w1_grad<T>, &segment_inverse_i1_w1_f_and_grad<T>, "segment_inverse_i1_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt", {39, 48, 3, 3, 0, 1, 0}, {50, 74, 7, 3, 0, 1, 0}, {53, 79, 7, 3, 0, 1, 0}},
+      {KernelFamily::inverse, 1, 2, &segment_inverse_i1_w2_f<T>, &segment_inverse_i1_w2_grad<T>, &segment_inverse_i1_w2_f_and_grad<T>, "segment_inverse_i1_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt", {44, 60, 3, 3, 0, 1, 0}, {57, 85, 7, 3, 0, 1, 0}, {63, 101, 7, 3, 0, 1, 0}},
+      {KernelFamily::inverse, 1, 3, &segment_inverse_i1_w3_f<T>, &segment_inverse_i1_w3_grad<T>, &segment_inverse_i1_w3_f_and_grad<T>, "segment_inverse_i1_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt", {49, 77, 3, 3, 0, 1, 0}, {66, 109, 7, 3, 0, 1, 0}, {73, 133, 7, 3, 0, 1, 0}},
+      {KernelFamily::inverse, 2, 0, &segment_inverse_i2_w0_f<T>, &segment_inverse_i2_w0_grad<T>, &segment_inverse_i2_w0_f_and_grad<T>, "segment_inverse_i2_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt", {38, 46, 1, 2, 1, 0, 0}, {47, 71, 6, 2, 1, 0, 0}, {47, 73, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 2, 1, &segment_inverse_i2_w1_f<T>, &segment_inverse_i2_w1_grad<T>, &segment_inverse_i2_w1_f_and_grad<T>, "segment_inverse_i2_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt", {40, 51, 3, 2, 1, 1, 0}, {52, 77, 6, 2, 1, 0, 0}, {54, 85, 6, 2, 1, 1, 0}},
+      {KernelFamily::inverse, 2, 2, &segment_inverse_i2_w2_f<T>, &segment_inverse_i2_w2_grad<T>, &segment_inverse_i2_w2_f_and_grad<T>, "segment_inverse_i2_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt", {43, 56, 3, 2, 1, 1, 0}, {58, 91, 6, 2, 1, 1, 0}, {62, 101, 6, 2, 1, 1, 0}},
+      {KernelFamily::inverse, 2, 3, &segment_inverse_i2_w3_f<T>, &segment_inverse_i2_w3_grad<T>, &segment_inverse_i2_w3_f_and_grad<T>, "segment_inverse_i2_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt", {48, 66, 3, 2, 1, 1, 0}, {65, 106, 6, 2, 1, 1, 0}, {72, 123, 6, 2, 1, 1, 0}},
+      {KernelFamily::inverse, 3, 0, &segment_inverse_i3_w0_f<T>, &segment_inverse_i3_w0_grad<T>, &segment_inverse_i3_w0_f_and_grad<T>, "segment_inverse_i3_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt", {37, 43, 3, 3, 0, 0, 0}, {46, 75, 7, 3, 0, 0, 0}, {46, 78, 7, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 3, 1, &segment_inverse_i3_w1_f<T>, &segment_inverse_i3_w1_grad<T>, &segment_inverse_i3_w1_f_and_grad<T>, "segment_inverse_i3_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt", {40, 49, 4, 3, 0, 0, 0}, {51, 88, 5, 3, 0, 0, 0}, {54, 95, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 3, 2, &segment_inverse_i3_w2_f<T>, &segment_inverse_i3_w2_grad<T>, &segment_inverse_i3_w2_f_and_grad<T>, "segment_inverse_i3_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt", {44, 63, 6, 3, 0, 1, 0}, {58, 103, 5, 3, 0, 0, 0}, {63, 121, 7, 3, 0, 1, 0}},
+      {KernelFamily::inverse, 3, 3, &segment_inverse_i3_w3_f<T>, &segment_inverse_i3_w3_grad<T>, &segment_inverse_i3_w3_f_and_grad<T>, "segment_inverse_i3_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt", {49, 72, 6, 3, 0, 1, 0}, {66, 127, 7, 3, 0, 1, 0}, {73, 143, 7, 3, 0, 1, 0}},
+      {KernelFamily::inverse, 4, 0, &segment_inverse_i4_w0_f<T>, &segment_inverse_i4_w0_grad<T>, &segment_inverse_i4_w0_f_and_grad<T>, "segment_inverse_i4_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt", {40, 50, 4, 2, 1, 0, 0}, {49, 80, 6, 2, 1, 0, 0}, {49, 84, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 4, 1, &segment_inverse_i4_w1_f<T>, &segment_inverse_i4_w1_grad<T>, &segment_inverse_i4_w1_f_and_grad<T>, "segment_inverse_i4_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt", {43, 56, 5, 2, 1, 0, 0}, {54, 91, 6, 2, 1, 0, 0}, {57, 100, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 4, 2, &segment_inverse_i4_w2_f<T>, &segment_inverse_i4_w2_grad<T>, &segment_inverse_i4_w2_f_and_grad<T>, "segment_inverse_i4_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt", {46, 66, 5, 2, 1, 0, 0}, {61, 106, 6, 2, 1, 0, 0}, {65, 122, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 4, 3, &segment_inverse_i4_w3_f<T>, &segment_inverse_i4_w3_grad<T>, &segment_inverse_i4_w3_f_and_grad<T>, "segment_inverse_i4_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt", {50, 78, 5, 2, 1, 1, 0}, {68, 125, 6, 2, 1, 0, 0}, {74, 147, 6, 2, 1, 1, 0}},
+      {KernelFamily::inverse, 5, 0, &segment_inverse_i5_w0_f<T>, &segment_inverse_i5_w0_grad<T>, &segment_inverse_i5_w0_f_and_grad<T>, "segment_inverse_i5_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt", {39, 52, 5, 3, 0, 0, 0}, {48, 92, 5, 3, 0, 0, 0}, {48, 96, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 5, 1, &segment_inverse_i5_w1_f<T>, &segment_inverse_i5_w1_grad<T>, &segment_inverse_i5_w1_f_and_grad<T>, "segment_inverse_i5_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt", {42, 62, 4, 3, 0, 0, 0}, {53, 105, 5, 3, 0, 0, 0}, {56, 116, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 5, 2, &segment_inverse_i5_w2_f<T>, &segment_inverse_i5_w2_grad<T>, &segment_inverse_i5_w2_f_and_grad<T>, "segment_inverse_i5_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt", {45, 73, 4, 3, 0, 0, 0}, {60, 122, 5, 3, 0, 0, 0}, {64, 139, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 5, 3, &segment_inverse_i5_w3_f<T>, &segment_inverse_i5_w3_grad<T>, &segment_inverse_i5_w3_f_and_grad<T>, "segment_inverse_i5_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt", {50, 85, 4, 3, 0, 0, 0}, {67, 142, 5, 3, 0, 0, 0}, {74, 164, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 6, 0, &segment_inverse_i6_w0_f<T>, &segment_inverse_i6_w0_grad<T>, &segment_inverse_i6_w0_f_and_grad<T>, "segment_inverse_i6_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt", {42, 61, 4, 2, 1, 0, 0}, {51, 89, 6, 2, 1, 0, 0}, {51, 93, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 6, 1, &segment_inverse_i6_w1_f<T>, &segment_inverse_i6_w1_grad<T>, &segment_inverse_i6_w1_f_and_grad<T>, "segment_inverse_i6_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt", {45, 67, 5, 2, 1, 0, 0}, {56, 100, 6, 2, 1, 0, 0}, {59, 111, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 6, 2, &segment_inverse_i6_w2_f<T>, &segment_inverse_i6_w2_grad<T>, &segment_inverse_i6_w2_f_and_grad<T>, "segment_inverse_i6_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt", {48, 78, 5, 2, 1, 0, 0}, {63, 117, 6, 2, 1, 0, 0}, {67, 134, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 6, 3, &segment_inverse_i6_w3_f<T>, &segment_inverse_i6_w3_grad<T>, &segment_inverse_i6_w3_f_and_grad<T>, "segment_inverse_i6_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt", {53, 90, 5, 2, 1, 0, 0}, {70, 137, 6, 2, 1, 0, 0}, {77, 159, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 7, 0, &segment_inverse_i7_w0_f<T>, &segment_inverse_i7_w0_grad<T>, &segment_inverse_i7_w0_f_and_grad<T>, "segment_inverse_i7_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt", {41, 67, 3, 3, 0, 0, 0}, {50, 105, 5, 3, 0, 0, 0}, {50, 109, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 7, 1, &segment_inverse_i7_w1_f<T>, &segment_inverse_i7_w1_grad<T>, &segment_inverse_i7_w1_f_and_grad<T>, "segment_inverse_i7_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt", {44, 75, 4, 3, 0, 0, 0}, {55, 118, 5, 3, 0, 0, 0}, {58, 131, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 7, 2, &segment_inverse_i7_w2_f<T>, &segment_inverse_i7_w2_grad<T>, &segment_inverse_i7_w2_f_and_grad<T>, "segment_inverse_i7_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt", {47, 86, 4, 3, 0, 0, 0}, {62, 138, 5, 3, 0, 0, 0}, {66, 155, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 7, 3, &segment_inverse_i7_w3_f<T>, &segment_inverse_i7_w3_grad<T>, &segment_inverse_i7_w3_f_and_grad<T>, "segment_inverse_i7_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt", {52, 100, 4, 3, 0, 0, 0}, {69, 159, 5, 3, 0, 0, 0}, {76, 183, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 8, 0, &segment_inverse_i8_w0_f<T>, &segment_inverse_i8_w0_grad<T>, &segment_inverse_i8_w0_f_and_grad<T>, "segment_inverse_i8_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt", {44, 70, 4, 2, 1, 0, 0}, {53, 98, 6, 2, 1, 0, 0}, {53, 102, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 8, 1, &segment_inverse_i8_w1_f<T>, &segment_inverse_i8_w1_grad<T>, &segment_inverse_i8_w1_f_and_grad<T>, "segment_inverse_i8_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt", {47, 76, 5, 2, 1, 0, 0}, {58, 109, 6, 2, 1, 0, 0}, {61, 120, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 8, 2, &segment_inverse_i8_w2_f<T>, &segment_inverse_i8_w2_grad<T>, &segment_inverse_i8_w2_f_and_grad<T>, "segment_inverse_i8_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt", {50, 87, 5, 2, 1, 0, 0}, {65, 126, 6, 2, 1, 0, 0}, {69, 143, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 8, 3, &segment_inverse_i8_w3_f<T>, &segment_inverse_i8_w3_grad<T>, &segment_inverse_i8_w3_f_and_grad<T>, "segment_inverse_i8_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt", {55, 101, 5, 2, 1, 0, 0}, {72, 146, 6, 2, 1, 0, 0}, {79, 170, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 9, 0, &segment_inverse_i9_w0_f<T>, &segment_inverse_i9_w0_grad<T>, &segment_inverse_i9_w0_f_and_grad<T>, "segment_inverse_i9_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt", {43, 78, 3, 3, 0, 0, 0}, {52, 116, 5, 3, 0, 0, 0}, {52, 120, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 9, 1, &segment_inverse_i9_w1_f<T>, &segment_inverse_i9_w1_grad<T>, &segment_inverse_i9_w1_f_and_grad<T>, "segment_inverse_i9_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt", {46, 86, 4, 3, 0, 0, 0}, {57, 129, 5, 3, 0, 0, 0}, {60, 142, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 9, 2, &segment_inverse_i9_w2_f<T>, &segment_inverse_i9_w2_grad<T>, &segment_inverse_i9_w2_f_and_grad<T>, "segment_inverse_i9_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt", {49, 98, 4, 3, 0, 0, 0}, {64, 148, 5, 3, 0, 0, 0}, {68, 166, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 9, 3, &segment_inverse_i9_w3_f<T>, &segment_inverse_i9_w3_grad<T>, &segment_inverse_i9_w3_f_and_grad<T>, "segment_inverse_i9_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt", {54, 115, 4, 3, 0, 0, 0}, {71, 168, 5, 3, 0, 0, 0}, {78, 195, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 10, 0, &segment_inverse_i10_w0_f<T>, &segment_inverse_i10_w0_grad<T>, &segment_inverse_i10_w0_f_and_grad<T>, "segment_inverse_i10_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt", {46, 79, 4, 2, 1, 0, 0}, {55, 107, 6, 2, 1, 0, 0}, {55, 111, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 10, 1, &segment_inverse_i10_w1_f<T>, &segment_inverse_i10_w1_grad<T>, &segment_inverse_i10_w1_f_and_grad<T>, "segment_inverse_i10_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt", {49, 85, 5, 2, 1, 0, 0}, {60, 118, 6, 2, 1, 0, 0}, {63, 129, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 10, 2, &segment_inverse_i10_w2_f<T>, &segment_inverse_i10_w2_grad<T>, &segment_inverse_i10_w2_f_and_grad<T>, "segment_inverse_i10_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt", {52, 96, 5, 2, 1, 0, 0}, {67, 136, 6, 2, 1, 0, 0}, {71, 153, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 10, 3, &segment_inverse_i10_w3_f<T>, &segment_inverse_i10_w3_grad<T>, &segment_inverse_i10_w3_f_and_grad<T>, "segment_inverse_i10_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt", {57, 110, 5, 2, 1, 0, 0}, {74, 157, 6, 2, 1, 0, 0}, {81, 181, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 11, 0, &segment_inverse_i11_w0_f<T>, &segment_inverse_i11_w0_grad<T>, &segment_inverse_i11_w0_f_and_grad<T>, "segment_inverse_i11_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt", {45, 89, 3, 3, 0, 0, 0}, {54, 129, 5, 3, 0, 0, 0}, {54, 133, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 11, 1, &segment_inverse_i11_w1_f<T>, &segment_inverse_i11_w1_grad<T>, &segment_inverse_i11_w1_f_and_grad<T>, "segment_inverse_i11_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt", {48, 97, 4, 3, 0, 0, 0}, {59, 142, 5, 3, 0, 0, 0}, {62, 155, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 11, 2, &segment_inverse_i11_w2_f<T>, &segment_inverse_i11_w2_grad<T>, &segment_inverse_i11_w2_f_and_grad<T>, "segment_inverse_i11_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt", {51, 108, 4, 3, 0, 0, 0}, {66, 162, 5, 3, 0, 0, 0}, {70, 179, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 11, 3, &segment_inverse_i11_w3_f<T>, &segment_inverse_i11_w3_grad<T>, &segment_inverse_i11_w3_f_and_grad<T>, "segment_inverse_i11_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt", {56, 124, 4, 3, 0, 0, 0}, {73, 183, 5, 3, 0, 0, 0}, {80, 209, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 12, 0, &segment_inverse_i12_w0_f<T>, &segment_inverse_i12_w0_grad<T>, &segment_inverse_i12_w0_f_and_grad<T>, "segment_inverse_i12_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt", {48, 88, 4, 2, 1, 0, 0}, {57, 116, 6, 2, 1, 0, 0}, {57, 120, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 12, 1, &segment_inverse_i12_w1_f<T>, &segment_inverse_i12_w1_grad<T>, &segment_inverse_i12_w1_f_and_grad<T>, "segment_inverse_i12_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt", {51, 94, 5, 2, 1, 0, 0}, {62, 127, 6, 2, 1, 0, 0}, {65, 138, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 12, 2, &segment_inverse_i12_w2_f<T>, &segment_inverse_i12_w2_grad<T>, &segment_inverse_i12_w2_f_and_grad<T>, "segment_inverse_i12_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt", {54, 106, 5, 2, 1, 0, 0}, {69, 144, 6, 2, 1, 0, 0}, {73, 162, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 12, 3, &segment_inverse_i12_w3_f<T>, &segment_inverse_i12_w3_grad<T>, &segment_inverse_i12_w3_f_and_grad<T>, "segment_inverse_i12_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt", {59, 121, 5, 2, 1, 0, 0}, {76, 164, 6, 2, 1, 0, 0}, {83, 189, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 13, 0, &segment_inverse_i13_w0_f<T>, &segment_inverse_i13_w0_grad<T>, &segment_inverse_i13_w0_f_and_grad<T>, "segment_inverse_i13_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt", {47, 100, 3, 3, 0, 0, 0}, {56, 140, 5, 3, 0, 0, 0}, {56, 144, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 13, 1, &segment_inverse_i13_w1_f<T>, &segment_inverse_i13_w1_grad<T>, &segment_inverse_i13_w1_f_and_grad<T>, "segment_inverse_i13_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt", {50, 108, 4, 3, 0, 0, 0}, {61, 153, 5, 3, 0, 0, 0}, {64, 166, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 13, 2, &segment_inverse_i13_w2_f<T>, &segment_inverse_i13_w2_grad<T>, &segment_inverse_i13_w2_f_and_grad<T>, "segment_inverse_i13_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt", {53, 120, 4, 3, 0, 0, 0}, {68, 173, 5, 3, 0, 0, 0}, {72, 191, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 13, 3, &segment_inverse_i13_w3_f<T>, &segment_inverse_i13_w3_grad<T>, &segment_inverse_i13_w3_f_and_grad<T>, "segment_inverse_i13_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt", {58, 137, 4, 3, 0, 0, 0}, {75, 196, 5, 3, 0, 0, 0}, {82, 223, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 14, 0, &segment_inverse_i14_w0_f<T>, &segment_inverse_i14_w0_grad<T>, &segment_inverse_i14_w0_f_and_grad<T>, "segment_inverse_i14_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt", {50, 97, 4, 2, 1, 0, 0}, {59, 125, 6, 2, 1, 0, 0}, {59, 129, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 14, 1, &segment_inverse_i14_w1_f<T>, &segment_inverse_i14_w1_grad<T>, &segment_inverse_i14_w1_f_and_grad<T>, "segment_inverse_i14_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt", {53, 103, 5, 2, 1, 0, 0}, {64, 136, 6, 2, 1, 0, 0}, {67, 147, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 14, 2, &segment_inverse_i14_w2_f<T>, &segment_inverse_i14_w2_grad<T>, &segment_inverse_i14_w2_f_and_grad<T>, "segment_inverse_i14_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt", {56, 114, 5, 2, 1, 0, 0}, {71, 153, 6, 2, 1, 0, 0}, {75, 170, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 14, 3, &segment_inverse_i14_w3_f<T>, &segment_inverse_i14_w3_grad<T>, &segment_inverse_i14_w3_f_and_grad<T>, "segment_inverse_i14_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt", {61, 128, 5, 2, 1, 0, 0}, {78, 173, 6, 2, 1, 0, 0}, {85, 197, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 15, 0, &segment_inverse_i15_w0_f<T>, &segment_inverse_i15_w0_grad<T>, &segment_inverse_i15_w0_f_and_grad<T>, "segment_inverse_i15_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt", {49, 111, 3, 3, 0, 0, 0}, {58, 153, 5, 3, 0, 0, 0}, {58, 157, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 15, 1, &segment_inverse_i15_w1_f<T>, &segment_inverse_i15_w1_grad<T>, &segment_inverse_i15_w1_f_and_grad<T>, "segment_inverse_i15_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt", {52, 119, 4, 3, 0, 0, 0}, {63, 166, 5, 3, 0, 0, 0}, {66, 179, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 15, 2, &segment_inverse_i15_w2_f<T>, &segment_inverse_i15_w2_grad<T>, &segment_inverse_i15_w2_f_and_grad<T>, "segment_inverse_i15_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt", {55, 131, 4, 3, 0, 0, 0}, {70, 186, 5, 3, 0, 0, 0}, {74, 204, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 15, 3, &segment_inverse_i15_w3_f<T>, &segment_inverse_i15_w3_grad<T>, &segment_inverse_i15_w3_f_and_grad<T>, "segment_inverse_i15_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt", {60, 148, 4, 3, 0, 0, 0}, {77, 207, 5, 3, 0, 0, 0}, {84, 234, 5, 3, 0, 0, 0}},
+      {KernelFamily::inverse, 16, 0, &segment_inverse_i16_w0_f<T>, &segment_inverse_i16_w0_grad<T>, &segment_inverse_i16_w0_f_and_grad<T>, "segment_inverse_i16_w0",
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt", {52, 106, 4, 2, 1, 0, 0}, {61, 133, 6, 2, 1, 0, 0}, {61, 137, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 16, 1, &segment_inverse_i16_w1_f<T>, &segment_inverse_i16_w1_grad<T>, &segment_inverse_i16_w1_f_and_grad<T>, "segment_inverse_i16_w1",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt", {55, 112, 5, 2, 1, 0, 0}, {66, 144, 6, 2, 1, 0, 0}, {69, 155, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 16, 2, &segment_inverse_i16_w2_f<T>, &segment_inverse_i16_w2_grad<T>, &segment_inverse_i16_w2_f_and_grad<T>, "segment_inverse_i16_w2",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt", {58, 123, 5, 2, 1, 0, 0}, {73, 162, 6, 2, 1, 0, 0}, {77, 179, 6, 2, 1, 0, 0}},
+      {KernelFamily::inverse, 16, 3, &segment_inverse_i16_w3_f<T>, &segment_inverse_i16_w3_grad<T>, &segment_inverse_i16_w3_f_and_grad<T>, "segment_inverse_i16_w3",
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt", {63, 137, 5, 2, 1, 0, 0}, {80, 183, 6, 2, 1, 0, 0}, {87, 207, 6, 2, 1, 0, 0}},
+  };
+  return table;
 }
 
 }  // namespace skelconv::generated

@@ -15,7 +15,9 @@
 
 #include <cmath>
 
-#include "generated/segment_table.hpp"
+#include "generated/segment_cauchy.hpp"
+#include "generated/segment_compact.hpp"
+#include "generated/segment_inverse.hpp"
 #include "skelconv/primitives/polygon_field.hpp"
 
 namespace {

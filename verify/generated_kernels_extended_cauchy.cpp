@@ -1,5 +1,6 @@
 // The binary128 instantiation of the cauchy family's generated segment kernels
 // (generated_kernels_extended.cpp says why it has its own file).
+#include "generated/segment_cauchy.hpp"  // the formulas, instantiated here
 #include "generated_kernels.hpp"
 
 namespace skelconv::generated {

@@ -1,5 +1,6 @@
 // The one double-precision instantiation of the compact family's segment
 // kernels (skelconv/kernels/segment_kernel_tables.hpp says why it has its own file).
+#include "generated/segment_compact.hpp"  // the formulas, instantiated here
 #include "skelconv/kernels/segment_kernel_tables.hpp"
 
 namespace skelconv::generated {
