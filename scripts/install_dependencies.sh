@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages skelconv builds with, if any is missing;
-# with --main-job, also those only README's main job uses (clang for the
-# libFuzzer harnesses, Chromium for the viewer's browser test).
+# with --checks, also those only the check suite (scripts/checks.sh) uses:
+# clang for the libFuzzer harnesses, Chromium for the viewer's browser
+# test, CGAL's sample meshes for the reconstruction table.
 # Needs root (or sudo) only when something has to be installed.
 set -euo pipefail
 
@@ -11,6 +12,7 @@ packages=(
   libeigen3-dev libboost-dev libboost-math-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libbenchmark-dev libcgal-dev
+  ccache                  # compiler cache: a rebuild after a branch switch or a regeneration costs what changed (CMakeLists.txt uses it when present)
   valgrind                # bench/: instruction counts
   libhwy-dev libsleef-dev # src/simd/: vector batches (Highway: run-time dispatch AVX-512/AVX2/portable; SLEEF: vector atan2, log, asinh)
   libflint-arb-dev        # verify/: Arb ball arithmetic and acb_calc_integrate, the certified references (verify_certified_references)
@@ -22,8 +24,8 @@ packages=(
   glslang-tools           # tests/glsl: glslangValidator compiles generated/glsl as GLSL ES 3.00 (WebGL2) and 4.50 (ctest glsl_compiles)
   pybind11-dev python3-pybind11 python3-dev  # python/: the `import skelconv` module (pybind11 headers and CMake config, Python.h); its tests need python3-numpy
 )
-# Only README's main job (scripts/main_job.sh, --main-job) runs these; CI does not install them.
-if [ "${1:-}" = "--main-job" ]; then
+# Only the check suite (scripts/checks.sh, --checks) runs these; CI and the main job do not install them.
+if [ "${1:-}" = "--checks" ]; then
   packages+=(
     clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer harnesses of the PLY/OBJ reader and the point lines (clang's -fsanitize=fuzzer)
     chromium                     # tests/view/check_view_browser.py (ctest label long): the `skelconv view` page rendered headless (WebGL2 on SwiftShader)
