@@ -15,6 +15,7 @@ The gallery links an interactive page (`skelconv view`, docs/view.md) per
 skeleton file a figure lists, papers_figures/views/NAME.html: --gallery
 writes them, and so does --views alone (with --skelconv; seconds)."""
 import argparse
+import concurrent.futures
 import importlib
 import json
 import os
@@ -167,6 +168,7 @@ def main():
     parser.add_argument("--skelconv", help="the skelconv binary (needed unless --gallery-only)")
     parser.add_argument("--out", help="results folder (PNGs, claims.json; needed unless --gallery-only)")
     parser.add_argument("--only", nargs="*", help="module names (default: every registered one)")
+    parser.add_argument("--jobs", type=int, default=1, help="figures drawn at a time, each in its own process")
     parser.add_argument("--quick", action="store_true", help="reduced resolution (ctest)")
     parser.add_argument("--no-images", action="store_true", help="check claims only")
     parser.add_argument("--check", action="store_true", help="exit 1 unless every claim is as expected "
@@ -186,6 +188,8 @@ def main():
         return write_gallery(args.gallery_only, compare=args.check)
     if not args.skelconv or not args.out:
         parser.error("--skelconv and --out are needed to draw")
+    if args.jobs < 1:
+        parser.error("--jobs must be at least 1")
     if args.gallery and (args.quick or args.no_images):
         print("run.py: --gallery needs full-resolution images (no --quick, no --no-images)", file=sys.stderr)
         return 2
@@ -197,11 +201,15 @@ def main():
         return 2
     start = time.monotonic()
     results = []
-    for k, name in enumerate(names, 1):
-        print(f"[{k}/{len(names)}] {name}", flush=True)
-        results.append(run_one(name, args))
-        print(f"[{k}/{len(names)}] {name} done in {results[-1]['seconds']:.1f} s "
-              f"({time.monotonic() - start:.0f} s so far)", flush=True)
+    # Each figure is independent of the others (its own files, its own
+    # `skelconv` processes): with --jobs N they run N at a time in worker
+    # processes; results, records and the gallery keep figures.txt's order.
+    with concurrent.futures.ProcessPoolExecutor(max_workers=args.jobs) as pool:
+        futures = [pool.submit(run_one, name, args) for name in names]
+        for k, (name, future) in enumerate(zip(names, futures), 1):
+            results.append(future.result())
+            print(f"[{k}/{len(names)}] {name} done in {results[-1]['seconds']:.1f} s "
+                  f"({time.monotonic() - start:.0f} s so far)", flush=True)
     elapsed = time.monotonic() - start
     summary = [{"name": r["name"], "heading": r["figure"].heading, "seconds": round(r["seconds"], 1),
                 "claims": [{"statement": c.statement, "measured": c.measured, "agrees": c.agrees,

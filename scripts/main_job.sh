@@ -1,57 +1,73 @@
 #!/usr/bin/env bash
-# README command 1: install what is missing, build (CI's build and the
-# benchmark programs), regenerate the kernels and diff them against
-# generated/, run every test that CI does not run at the main job's sizes
-# (the ctest label `long`: the verification sweeps and their baseline
-# compares, the SCALIS accuracy test, the reconstruction quality table, the
-# long fuzz run, the package test, the slow figure claims, the browser test,
-# the benchmarks' smoke tests; docs/checks.md says what each size covers),
-# then the sanitizer run (scripts/sanitize.sh) and the libFuzzer harnesses
-# (scripts/fuzz.sh), and print the segment sweep's summary table.
-# `ctest -N -L long` lists exactly what the long-test step runs.
-#
-#   scripts/main_job.sh          the main job
-#   scripts/main_job.sh --full   the same, plus the full sizes: the tests
-#                                labelled `full` (default-size sweeps and
-#                                their baselines, 2,000 SCALIS accuracy
-#                                samples, 20,000 fuzzed skeleton files), 400
-#                                fuzzed files under the sanitizers, 60 s per
-#                                libFuzzer harness
-set -euo pipefail
+# README command 1, the main job: what skelconv exists for, end to end.
+#   1. install what is missing and build (the command, the generator, the
+#      verifiers, the tests' programs);
+#   2. regenerate the kernels with the generator and diff them against
+#      generated/ (same input, same bytes);
+#   3. verify every generated function against float128 quadrature of its
+#      definition integral (segments, polygons, SCALIS segments) at the main
+#      job's sizes, compare with the committed baselines, and print the
+#      accuracy per family and region;
+#   4. print the operation counts beside Zanni et al. 2013, Table 4;
+#   5. redraw every figure and table of the papers, each claim checked;
+#   6. write the summary page, build/summary/index.html (and index.md): for
+#      each result, what was checked and whether it holds.
+# A stage that fails is reported and the job goes on to the summary (a failed
+# build stops it); the exit status is 0 only when every stage passed.
+# The long tests, the sanitizers and the fuzzers are the check suite
+# (scripts/checks.sh); CI runs scripts/test.sh. docs/build.md gives the time
+# of each stage.
+set -uo pipefail
 cd "$(dirname "$0")/.."
-full=0
-case "${1:-}" in
-  --full) full=1 ;;
-  "") ;;
-  *) echo "usage: scripts/main_job.sh [--full]" >&2; exit 2 ;;
-esac
+[ $# -eq 0 ] || { echo "usage: scripts/main_job.sh (no arguments; the full sizes are in scripts/checks.sh --full)" >&2; exit 2; }
+
+summary=build/summary
+mkdir -p "$summary"
+stages="$summary/stages.tsv"
+: > "$stages"
 start=$SECONDS
-stage() { echo "== [$((SECONDS - start)) s] $*"; }
+failed=0
+# run_stage NAME COMMAND...: prints a progress line with the elapsed time,
+# runs the command, records its time and status for the summary page.
+run_stage() {
+  local name="$1"; shift
+  local stage_start=$SECONDS
+  echo "== main job [$((SECONDS - start)) s] $name"
+  "$@"
+  local status=$?
+  printf '%s\t%d\t%d\n' "$name" "$((SECONDS - stage_start))" "$status" >> "$stages"
+  if [ "$status" -ne 0 ]; then
+    echo "== main job: '$name' FAILED (exit status $status)"
+    failed=1
+  fi
+  return "$status"
+}
 
-scripts/install_dependencies.sh --main-job
-stage "building everything: CI's build and the benchmark programs (the long tests need the command, the test programs, the verifiers and the benchmarks)"
-scripts/build.sh --target all skelconv_bench
+run_stage "installing missing packages" scripts/install_dependencies.sh || exit 1
+run_stage "building" scripts/build.sh || { echo "== main job: the build failed; nothing else can run" >&2; exit 1; }
 
-stage "regenerating the kernels and diffing them against generated/"
-ctest --test-dir build/release -R codegen_regeneration_is_byte_identical --output-on-failure
+run_stage "regenerating the kernels and diffing them against generated/" \
+  ctest --test-dir build/release -R '^codegen_regeneration_is_byte_identical$' --output-on-failure
 
-labels=long
-report=verify_sweep_main
-if [ "$full" = 1 ]; then
-  labels='long|full'
-  report=verify_sweep_default
-  export SKELCONV_SANITIZE_FUZZ_ITERATIONS="${SKELCONV_SANITIZE_FUZZ_ITERATIONS:-400}"
-  export SKELCONV_FUZZ_SECONDS="${SKELCONV_FUZZ_SECONDS:-60}"
+# The sweeps at the main job's size and their baseline comparisons (ctest
+# label `main`: `ctest -N -L main` lists them).
+run_stage "verifying against quadrature of the definitions: $(ctest --test-dir build/release -N -L main | grep -c 'Test *#') tests" \
+  ctest --test-dir build/release -L main --output-on-failure -j2
+if [ -f build/release/verify/verify_sweep_main.json ]; then
+  build/release/verify/skelconv-verify markdown build/release/verify/verify_sweep_main.json > "$summary/segment_accuracy.md" \
+    && echo "segment accuracy per kernel and region: $summary/segment_accuracy.md"
 fi
-stage "the long tests: $(ctest --test-dir build/release -N -L "$labels" | grep -c 'Test *#') tests (ctest -L '$labels')"
-ctest --test-dir build/release -L "$labels" --output-on-failure -j2
 
-stage "sanitizers: ASan + UBSan build of the runtime, the command and the unit tests"
-scripts/sanitize.sh
+run_stage "drawing the papers' figures and tables, checking their claims" \
+  /usr/bin/python3 papers_figures/run.py --skelconv build/release/src/skelconv --out build/figures --check --jobs 2
 
-stage "libFuzzer: the PLY/OBJ/OFF reader and the point lines, ${SKELCONV_FUZZ_SECONDS:-30} s each"
-scripts/fuzz.sh
-
-stage "summary of the segment sweep (build/release/verify/$report.json)"
-build/release/verify/skelconv-verify markdown "build/release/verify/$report.json" | head -60
-stage "main job done"
+# The summary page prints the accuracy per family and region and the
+# operation counts beside Table 4; it fails when a result does not hold.
+run_stage "writing the summary page" \
+  /usr/bin/python3 scripts/summary_page.py --out "$summary" --stages "$stages" \
+    --sweep build/release/verify/verify_sweep_main.json \
+    --polygon-sweep build/release/verify/verify_polygon_sweep_main.json \
+    --scalis-report build/release/verify/verify_scalis_properties_main.json --opcounts generated/opcounts.csv --figures build/figures
+sed -n '/^## Accuracy of the segment kernels/,/^## The papers/p' "$summary/index.md" | sed '$d'
+echo "== main job [$((SECONDS - start)) s] done: $([ "$failed" = 0 ] && echo 'every stage passed' || echo 'a stage FAILED'); open $summary/index.html"
+exit "$failed"

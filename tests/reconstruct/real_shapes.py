@@ -90,7 +90,7 @@ def main():
     write = "--write" in sys.argv[4:]
     if not CGAL_DATA.exists():
         sys.exit(f"{CGAL_DATA} is missing: install the Debian package libcgal-demo "
-                 "(scripts/install_dependencies.sh --main-job does)")
+                 "(scripts/install_dependencies.sh --checks does)")
     work.mkdir(parents=True, exist_ok=True)
     with tarfile.open(CGAL_DATA) as archive:
         for name, _ in CGAL_SHAPES:
