@@ -1,5 +1,5 @@
 // bench/batch_kernels.hpp — the kernels the batch benchmarks instantiate
-// (shared by batch_bench.cpp and instruction_counts.cpp): SPEC Table 4's
+// (shared by batch_bench.cpp and instruction_counts.cpp): Zanni et al. 2013 Table 4's
 // classical rows, the compact family, and inverse i3 w2, whose generated
 // code has a run-time branch between two forms.
 #pragma once

@@ -79,7 +79,7 @@ double f_and_fd_gradient(const KernelRef& k, Input in, Vec& g) {
   return f;
 }
 
-/// The kernels compared in detail: SPEC Table 4's three classical rows, and
+/// The kernels compared in detail: Zanni et al. 2013 Table 4's three classical rows, and
 /// the compact family (even degrees are polynomial; odd ones need sqrt and
 /// atan).
 struct KernelKey {
@@ -141,7 +141,7 @@ inline constexpr std::size_t generic_region_points = 256;
 inline constexpr double generic_region_compact_R = 5.0;  // × |AB|
 std::vector<Input> generic_region_inputs(KernelFamily family, double d);
 
-// --- Adaptive quadrature of the definition (SPEC §2) ---------------------------
+// --- Adaptive quadrature of the definition (docs/mathematics.md §2) ---------------------------
 
 struct QuadratureResult {
   double f = 0;

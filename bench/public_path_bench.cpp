@@ -1,8 +1,8 @@
 // bench/public_path_bench.cpp — the public evaluation paths against the
 // generated function they wrap, on the same points, in one run.
 //
-// Skeletons of Cauchy 4 segments, SCALIS (SPEC §4; argument kind 0) or
-// classical convolution with s = 1 (SPEC §2; kind 1): 1 segment, the 24 of
+// Skeletons of Cauchy 4 segments, SCALIS (docs/mathematics.md §4; argument kind 0) or
+// classical convolution with s = 1 (docs/mathematics.md §2; kind 1): 1 segment, the 24 of
 // Zanni's ant (papers_figures/skeletons/zanni_table1_ant.json; its axes for
 // the classical kind) and 1,000 random ones; arguments kind, primitives.
 // Every benchmark reports ns_per_primitive_point (time per point divided by

@@ -1,7 +1,7 @@
 // bench/scalis_bench.cpp — per-evaluation cost of SCALIS segments:
 // skelconv::ScalisSegment::value_and_gradient (the generated inverse and
 // Cauchy kernels, scalis_compact_F for the compact family) against adaptive
-// Gauss–Kronrod quadrature of the definition (SPEC §4), the numerical route.
+// Gauss–Kronrod quadrature of the definition (docs/mathematics.md §4), the numerical route.
 //
 //   scalis/<kernel>/<near|far>/closed_form     f and ∇f, one point
 //   scalis/<kernel>/<near|far>/quadrature/tol:<1e-08|1e-12>
@@ -9,7 +9,7 @@
 //                                              4 adaptive integrals (f, ∇f),
 //                                              that relative tolerance (compact:
 //                                              over its support, found first)
-// <kernel>: SPEC Table 4's SCALIS rows (inverse 3, Cauchy 4, compact 4 and 6)
+// <kernel>: Zanni et al. 2013 Table 4's SCALIS rows (inverse 3, Cauchy 4, compact 4 and 6)
 // and compact 3 (odd: two panels). Workloads: 1024 points at 0.05–0.4 |AB|
 // from the segment ("near": the inverse and Cauchy closed forms run the
 // recurrence there) or 0.6–2 |AB| ("far": they take the Gauss panels of
@@ -76,7 +76,7 @@ FieldSample quadrature(const ScalisSegment& segment, const Vec3& p, double toler
   const double sigma = segment.kernel().sigma, dtau = segment.tau1() - segment.tau0();
   const int i = segment.kernel().degree;
   const KernelFamily family = segment.kernel().family;
-  // K(x/σ) and its x-derivative over x, x = d/τ (SPEC §1, SCALIS kernels):
+  // K(x/σ) and its x-derivative over x, x = d/τ (docs/mathematics.md §1, SCALIS kernels):
   // the family's trait at s = 1, R = 1 (skelconv/kernels/).
   KernelSpec spec;
   spec.family = family;

@@ -1,6 +1,6 @@
 // bench/scalis_compact_opcounts.cpp — operation counts of the compact SCALIS
 // segment (include/skelconv/primitives/scalis_compact.hpp), the one SCALIS family that
-// is hand-written rather than generated (its rows of SPEC §4's Table 4).
+// is hand-written rather than generated (its rows of docs/mathematics.md §4's Table 4).
 //
 //   skelconv_scalis_compact_opcounts [--points N]
 //

@@ -24,7 +24,7 @@ import os
 import re
 import sys
 
-# SPEC §4, Table 4 of Zanni et al. 2013: (add, mul, div, (sqrt, atan, log)) for
+# docs/mathematics.md §4, Table 4 of Zanni et al. 2013: (add, mul, div, (sqrt, atan, log)) for
 # f, ∇f, f and ∇f. The "kernel" column names the generated function, or None.
 PAPER_TABLE4 = [
     ("SCALIS Cauchy 4", "scalis_segment_cauchy_i4", [(29, 38, 4, 1, 2, 1), (38, 62, 6, 1, 2, 0), (47, 81, 6, 1, 2, 1)]),
@@ -745,7 +745,7 @@ def skeleton_section(data, md, goals):
 def table4_section(data, md, goals):
     """§6: operation counts against Zanni et al. 2013 Table 4, and where the extra operations go."""
     ops_by_name, scalis_compact, op_generic, longest, generated = data.ops_by_name, data.scalis_compact, data.op_generic, data.longest, data.generated
-    md.append("## 6. Operation counts against SPEC Table 4 (Zanni et al. 2013)\n")
+    md.append("## 6. Operation counts against Zanni et al. 2013, Table 4\n")
     md.append("Format: +, ×, / (√, atan, ln). Ours: the generated function's count of its generic path (the table's "
               "`OpCount`), with the longest path (stable-form branch) from generated/opcounts.csv when it differs; "
               "the longest path counts every helper call (Gauss rules and panels, `J_downward`, "

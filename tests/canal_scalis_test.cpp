@@ -17,7 +17,7 @@ ScalisDeviation measure(double tau0, double tau1, const ScalisKernel& kernel) {
 
 TEST(CanalScalis, CompactCylinderIsExactlyTheCanalSurfaceInTheMiddle) {
   // Zanni §4.3: with |AB| ≥ 2τ√(σ² − 1) the compact kernel's surface is
-  // exactly at distance τ away from the ends (SPEC §4). The measurement must
+  // exactly at distance τ away from the ends (docs/mathematics.md §4). The measurement must
   // find 0 to its bisection tolerance (1e-10 τ): this checks the probes too.
   const ScalisDeviation deviation = measure(0.1, 0.1, ScalisKernel::compact(4, 1.5));
   EXPECT_LT(std::abs(deviation.middle.extreme), 1e-9);

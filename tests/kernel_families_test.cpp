@@ -346,7 +346,7 @@ TEST(KernelFamilies, PolynomialPointsFromAFileMatchTheDefinition) {
   EXPECT_GT(inside_both, 5);  // the sample reaches the overlap of the two supports
 }
 
-// (1 − r²/R²)^k is the compact kernel of degree 2k (SPEC §1), whose point
+// (1 − r²/R²)^k is the compact kernel of degree 2k (docs/mathematics.md §1), whose point
 // field is checked against its own definition (point_primitive_test.cpp):
 // the two families agree to the last bits everywhere.
 TEST(KernelFamilies, PolynomialIsCompactOfTwiceTheDegree) {

@@ -1,5 +1,5 @@
 // The point primitive (skelconv/primitives/point.hpp): values against the
-// kernels' definitions (SPEC §1, written out here independently of the
+// kernels' definitions (docs/mathematics.md §1, written out here independently of the
 // traits), gradients against 50-digit central differences
 // (extended_difference.hpp), the singular centre, the compact support, and
 // the validation of every field.
@@ -21,7 +21,7 @@ namespace {
 
 using test::Extended;
 
-/// SPEC §1 in long double, straight from the definitions.
+/// docs/mathematics.md §1 in long double, straight from the definitions.
 long double reference_kernel(const KernelSpec& k, long double r) {
   switch (k.family) {
     case KernelFamily::inverse: return std::pow(r, -(long double)k.degree);

@@ -111,7 +111,7 @@ TEST(PolygonValidation, SelfIntersection) {
 TEST(PolygonValidation, Kernel) {
   expect_input_error([] { Polygon(unit_square, KernelSpec::inverse(2)); }, "kernel.degree",
                      "degree 2 of the inverse family is not available on a polygon: the contour formula of the "
-                     "polygon closed forms (SPEC §3, Hubert 2012 §6) excludes it; supported: 3..12");
+                     "polygon closed forms (docs/mathematics.md §3, Hubert 2012 §6) excludes it; supported: 3..12");
   expect_input_error([] { Polygon(unit_square, KernelSpec::inverse(1)); }, "kernel.degree",
                      "unsupported degree 1 for the inverse family on a polygon; supported: 3..12");
   expect_input_error([] { Polygon(unit_square, KernelSpec::inverse(13)); }, "kernel.degree",

@@ -2,9 +2,9 @@
 // minutes, not run by CI): every test shape, noise-free and with noise
 // 0.005 × the diagonal on its samples, through the whole reconstruction;
 // the recovered skeleton has the known numbers of branches, ends and
-// junctions, and, noise-free, the fitted surface is within the issue's
-// targets of the input: two-sided Hausdorff ≤ 2% and RMS ≤ 0.5% of the
-// bounding-box diagonal. Every stage's distances are printed (the table).
+// junctions, and, noise-free, the fitted surface is within the targets of
+// docs/reconstruction_results.md: two-sided Hausdorff ≤ 2% and RMS ≤ 0.5%
+// of the bounding-box diagonal. Every stage's distances are printed (the table).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>

@@ -1,7 +1,7 @@
 // tests/reference_quadrature.hpp — reference values for the tests, computed
-// from the DEFINITION integral (SPEC §2) by composite Gauss–Legendre
+// from the DEFINITION integral (docs/mathematics.md §2) by composite Gauss–Legendre
 // quadrature in long double. It shares no code with the generated closed
-// forms or the runtime: SPEC says closed forms are checked against
+// forms or the runtime: closed forms are checked against
 // quadrature of the definition, never against another closed form.
 //
 //     f(P)  = |AB| ∫ w(t) K(q(t)) dt,           q(t) = |P − Γ(t)|²

@@ -5,7 +5,7 @@
 // highest degrees; every weight degree) and one kernel for cpp_bin_float_50,
 // and checks that each agrees with double at a point in general position: the
 // same formula evaluated with more digits must agree to double's accuracy
-// there (SPEC §2; verify/ holds the comparison against quadrature of the
+// there (docs/mathematics.md §2; verify/ holds the comparison against quadrature of the
 // definition). The whole table is instantiated in binary128 by the verifier
 // (verify/generated_kernels_extended_<family>.cpp); instantiating it here again in
 // long double cost 110 s of compiling for no further check.

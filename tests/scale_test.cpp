@@ -33,12 +33,15 @@
 namespace skelconv {
 namespace {
 
-/// The exponents k of the scales 2^k the issue names.
+/// The exponents k of the scales 2^k: far beyond any modelling scale, and
+/// still inside the double range for these skeletons' fields (docs/stable_forms.md,
+/// "Any scale").
 constexpr int scale_exponents[] = {-400, -200, 0, 200, 400};
 
 /// f_k against 2^(m k) f_0, relative. The frame makes the scaled and the
 /// unscaled evaluations run on bit-identical frame coordinates, so the
-/// measured difference is 0; 1e-13 is the issue's accuracy target.
+/// measured difference is 0; 1e-13 is the closed forms' accuracy target for f
+/// (docs/verify_reference.md), the most a scaling may cost.
 constexpr double relative_tolerance = 1e-13;
 
 /// Segments against long-double quadrature at the scaled coordinates:

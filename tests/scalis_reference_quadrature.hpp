@@ -1,5 +1,5 @@
 // tests/scalis_reference_quadrature.hpp — reference values of the SCALIS
-// segment field from its DEFINITION (SPEC §4, Zanni 2013 eq. 13), by
+// segment field from its DEFINITION (docs/mathematics.md §4, Zanni 2013 eq. 13), by
 // adaptive Gauss–Legendre quadrature in long double. It shares no code with
 // the generated closed forms or the runtime (only the rule's nodes, from
 // reference_quadrature.hpp):
@@ -29,7 +29,7 @@ struct ScalisReferenceSegment {
   int degree = 4;
 };
 
-/// K(x) and K'(x) of the SCALIS kernel (SPEC §1), x = d/τ ≥ 0.
+/// K(x) and K'(x) of the SCALIS kernel (docs/mathematics.md §1), x = d/τ ≥ 0.
 inline std::array<Real, 2> scalis_kernel(ScalisReferenceFamily family, int degree, Real sigma, Real x) {
   const Real y = x / sigma, half_i = Real(degree) / 2;
   switch (family) {

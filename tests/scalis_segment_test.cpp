@@ -1,4 +1,4 @@
-// ScalisSegment (SPEC §4): values against quadrature of the definition, the
+// ScalisSegment (docs/mathematics.md §4): values against quadrature of the definition, the
 // normalisation h, the thickness of a long constant-radius segment, scale
 // invariance, divergent points and validation.
 #include "skelconv/primitives/scalis_segment.hpp"
@@ -247,7 +247,7 @@ TEST(ScalisSegmentNormalisation, ThicknessOfALongConstantRadiusSegment) {
 }
 
 // ---------------------------------------------------------------------------
-// Scale invariance (SPEC §4): f_{ατ, αS}(αP) = f_{τ,S}(P), ∇ scaled by 1/α.
+// Scale invariance (docs/mathematics.md §4): f_{ατ, αS}(αP) = f_{τ,S}(P), ∇ scaled by 1/α.
 
 TEST(ScalisSegmentProperties, ScaleInvariance) {
   const Vec3 a(0.1, -0.2, 0.3), b(2.0, 0.5, -0.1), p(0.7, 0.9, 0.2);

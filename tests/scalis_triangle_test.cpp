@@ -54,7 +54,7 @@ struct ReferenceField {
   RPoint gradient{0, 0, 0};
 };
 
-/// K(d)/τ² and (K'(d)/d)/τ⁴ of the SCALIS kernel (SPEC §1), long double.
+/// K(d)/τ² and (K'(d)/d)/τ⁴ of the SCALIS kernel (docs/mathematics.md §1), long double.
 void kernel_terms(const ReferenceTriangle& t, Real distance, Real tau, Real& value, Real& derivative_over_d) {
   const Real d = distance / tau, x = d / t.sigma, i = t.degree;
   switch (t.family) {

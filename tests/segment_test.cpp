@@ -132,8 +132,8 @@ std::vector<Vec3> points_off_line() {
 
 /// Points on (to rounding) or very near the segment's line but outside the
 /// segment: there b² ≈ ac and the general closed forms divide 0 by 0
-/// (SPEC §2: "On the line of the segment (b² = ac) the paper gives separate
-/// closed forms"). The field is smooth there, so the same accuracy applies.
+/// (on the line, b² = ac, Hubert 2012 §3 gives separate closed forms). The
+/// field is smooth there, so the same accuracy applies.
 std::vector<Vec3> points_near_line_outside_segment() {
   return {
       on_line(1.4),                   // on the line beyond B (to rounding)

@@ -222,7 +222,7 @@ TEST(SkeletonFileErrors, ValuesCheckedByThePolygon) {
                "itself (from the last vertex back to the first), list each vertex once");
   expect_error(segment_then_polygon(unit_square, R"({"family": "inverse", "degree": 2})"),
                "primitives[1].kernel.degree: degree 2 of the inverse family is not available on a polygon: the "
-               "contour formula of the polygon closed forms (SPEC §3, Hubert 2012 §6) excludes it; supported: 3..12");
+               "contour formula of the polygon closed forms (docs/mathematics.md §3, Hubert 2012 §6) excludes it; supported: 3..12");
   expect_error(segment_then_polygon(unit_square, R"({"family": "compact", "degree": 4, "R": 0})"),
                "primitives[1].kernel.R: must be > 0, got 0");
 }

@@ -152,7 +152,7 @@ TEST(SkeletonIndex, GridVisitsExactlyTheBoxesHoldingThePoint) {
 
 /// Every point of `points` is outside `box` and there the primitive is
 /// exactly 0 with a zero gradient: the kernel vanishes beyond its support
-/// radius R (K(r) = 0 for r ≥ R, SPEC §1), and the box holds the support.
+/// radius R (K(r) = 0 for r ≥ R, docs/mathematics.md §1), and the box holds the support.
 template <class P>
 void expect_zero_outside(const P& primitive, const SupportBox& box, std::initializer_list<Vec3> points) {
   for (const Vec3& p : points) {

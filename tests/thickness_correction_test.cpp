@@ -28,7 +28,8 @@ namespace thickness_correction_test {
 // Zanni's practice (§4.3): compact kernel of degree 6 with support σ τ, σ = 2.
 constexpr double tau = 0.5;
 constexpr double support = 2 * tau;
-// The claim of the issue: within 2% of τ after; more than 2% somewhere before.
+// The claim checked (docs/thickness_correction.md): within 2% of τ after;
+// more than 2% somewhere before, so that the correction had work to do.
 constexpr double claim = 0.02;
 // Reference samples per length τ (the optimiser uses 4, ends included).
 constexpr int reference_per_tau = 7;

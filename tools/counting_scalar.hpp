@@ -4,7 +4,7 @@
 // not generated code, so generated/opcounts.csv has no row for it. Its
 // operation count is path dependent (the number of Gauss panels depends on
 // P), so it is measured by running the same template on this type: every
-// +, −, ×, / and √ executed is tallied, in the units of SPEC §4's Table 4
+// +, −, ×, / and √ executed is tallied, in the units of docs/mathematics.md §4's Table 4
 // (+, ×, / then (√, atan, log)). Conventions: negation, comparisons, abs,
 // min/max and frexp are free (sign or exponent manipulation); ldexp is
 // counted as a ×. The arithmetic is the double arithmetic, operation for

@@ -11,7 +11,7 @@
 // integrand is not analytic across a point (the support of k_R^i), the
 // interval is split there, so that each piece is.
 //
-// Segments (SPEC §2). X(t) = P − A − t (B − A), r² = X·X (a polynomial in t,
+// Segments (docs/mathematics.md §2). X(t) = P − A − t (B − A), r² = X·X (a polynomial in t,
 // continued to complex t; no a, b, c, no J recurrence):
 //  * p^i:   K = (r²)^(−i/2),       K'/r = −i (r²)^(−(i+2)/2)
 //  * c_s^i: K = (1 + s r²)^(−i/2), K'/r = −i s (1 + s r²)^(−(i+2)/2)
@@ -30,7 +30,7 @@
 // integrating between their midpoints and adding rad · sup|integrand| over
 // the endpoint ball.
 //
-// Polygons (SPEC §3), exactly planar (ExactPolygon), unit normal n, height
+// Polygons (docs/mathematics.md §3), exactly planar (ExactPolygon), unit normal n, height
 // z = (P − Q₀)·n, foot P̄ = P − z n, edges Q_m → Q_{m+1} = Q_m + E_m.
 // Fan about P̄: Q = P̄ + τ (Γ_m(t) − P̄), Γ_m(t) = Q_m + t E_m, has the signed
 // area element τ σ_m dτ dt with σ_m = ((Q_m − P̄) × (Q_{m+1} − P̄))·n, constant

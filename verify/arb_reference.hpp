@@ -1,16 +1,16 @@
 // verify/arb_reference.hpp — certified references: the
-// definition integrals of SPEC §2 (segments) and §3 (planar polygons)
+// definition integrals of docs/mathematics.md §2 (segments) and §3 (planar polygons)
 // enclosed in Arb's ball arithmetic (acb_calc_integrate: Gauss–Legendre with
 // rigorous error bounds from the integrand's analytic extension). The result
 // is a ball [mid ± rad] that provably contains the exact field of the exact
 // double inputs; mid is returned in binary128 with the certified relative
 // radius. Arb stays inside arb_reference.cpp: this header needs none of it.
 //
-// Segments (SPEC §2, w(t) = Σ_k w_k t^k):
+// Segments (docs/mathematics.md §2, w(t) = Σ_k w_k t^k):
 //     f  = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt
 //     ∇f = |AB| ∫_{t0}^{t1} w(t) K'(r)/r (P − Γ(t)) dt
-// with the kernels of SPEC §1 written out (not the runtime's traits).
-// Polygons (SPEC §3): ∬_Ω K(|P − Q|) dQ reduced to 1-D edge integrals by an
+// with the kernels of docs/mathematics.md §1 written out (not the runtime's traits).
+// Polygons (docs/mathematics.md §3): ∬_Ω K(|P − Q|) dQ reduced to 1-D edge integrals by an
 // exact derivation (arb_reference.cpp, "Polygons"), each integrated with
 // acb_calc_integrate. See docs/verify_certified.md, "Certified references (Arb)".
 #pragma once

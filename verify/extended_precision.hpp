@@ -1,6 +1,6 @@
 // verify/extended_precision.hpp — the extended-precision type of the verifier.
 //
-// The reference integrals (SPEC §2 definition, by quadrature) and the
+// The reference integrals (docs/mathematics.md §2 definition, by quadrature) and the
 // "extended" evaluation of the generated code use IEEE binary128 (113-bit
 // significand, ≈34 decimal digits) through Boost.Multiprecision's float128
 // wrapper of GCC's __float128 (libquadmath). The brief requires ≥ 30 digits so

@@ -1,4 +1,4 @@
-// verify/kernel_definitions.hpp — the kernels of SPEC §1 and the soft objects, as
+// verify/kernel_definitions.hpp — the kernels of docs/mathematics.md §1 and the soft objects, as
 // functions of the distance r with their derivatives, taken from the one
 // description of each family (its trait, skelconv/kernels/). This is the
 // ground truth of the verifier: it shares no algebra with the closed forms.
@@ -59,7 +59,7 @@ struct KernelDefinition {
     return kernels::make_radial_kernel(spec);
   }
 
-  /// K(r). The three families of SPEC §1 are written here in T with their
+  /// K(r). The three families of docs/mathematics.md §1 are written here in T with their
   /// parameters in T: the SCALIS and thickness references pass parameters
   /// that are not doubles (s = 1/(σ²τ²), R = στ in binary128), which the
   /// trait (double members) would round. The verifier's own definitions,
@@ -79,7 +79,7 @@ struct KernelDefinition {
       default: return std::visit([&](const auto& k) { return k.template value<T>(r); }, trait());
     }
   }
-  /// K'(r)/r, so that ∇_P K(|P − Γ|) = K'(r)/r · (P − Γ) (SPEC §2, gradient
+  /// K'(r)/r, so that ∇_P K(|P − Γ|) = K'(r)/r · (P − Γ) (docs/mathematics.md §2, gradient
   /// under the integral); r > 0.
   ///   p^i:   K'/r = -i r^(-i-2)
   ///   c_s^i: K'/r = -i s (1+sr²)^(-(i+2)/2)

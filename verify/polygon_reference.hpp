@@ -1,5 +1,5 @@
 // verify/polygon_reference.hpp — the reference value of a polygon field and its
-// gradient, by adaptive 2-D quadrature of the DEFINITION integral (SPEC §3)
+// gradient, by adaptive 2-D quadrature of the DEFINITION integral (docs/mathematics.md §3)
 //
 //     f(P)  = ∬_Ω K(|P − Q|) dQ
 //     ∇f(P) = ∬_Ω K'(r)/r (P − Q) dQ,        r = |P − Q|

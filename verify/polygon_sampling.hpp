@@ -1,7 +1,7 @@
 // verify/polygon_sampling.hpp — deterministic random polygons and query
 // points for the polygon accuracy sweep (verify/polygon_sweep.cpp).
 //
-// Each region stresses one way the contour formulas (SPEC §3) can lose
+// Each region stresses one way the contour formulas (docs/mathematics.md §3) can lose
 // digits: the 1/ζ² of the recurrence near the plane, P̄ near an edge or a
 // vertex (h → 0, the fan angle jumps), the cancelling fans far away, and for
 // the compact family the support sphere cutting the edges. Every sample has

@@ -1,5 +1,5 @@
 // verify/reference_quadrature.hpp — the reference value of a segment field and
-// its gradient, by adaptive quadrature of the DEFINITION integral (SPEC §2)
+// its gradient, by adaptive quadrature of the DEFINITION integral (docs/mathematics.md §2)
 //
 //     f(P)  = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt,           Γ(t) = A + t AB
 //     ∇f(P) = |AB| ∫_{t0}^{t1} w(t) K'(r)/r (P − Γ(t)) dt,       r = |P − Γ(t)|

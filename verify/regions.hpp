@@ -1,6 +1,6 @@
 // verify/regions.hpp — the named regions of the accuracy sweep.
 //
-// Each region stresses one way a closed form can lose digits (SPEC §2): the
+// Each region stresses one way a closed form can lose digits (docs/mathematics.md §2): the
 // discriminant ac − b² → 0 near the segment's line, large cancellations in
 // the far field, the end points, and for the compact family the places where
 // the support sphere cuts the segment.

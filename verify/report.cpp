@@ -184,7 +184,7 @@ GenericVerdict generic_verdict(const SweepResult& result, const ExclusionLimits&
 
 void write_text_report(std::ostream& out, const SweepOptions& options, const SweepResult& result) {
   out << "skelconv-verify: max relative error of the generated segment functions against binary128\n"
-         "quadrature of the definition integral (SPEC §2). Rows: family, kernel degree i, weight degree w.\n"
+         "quadrature of the definition integral (docs/mathematics.md §2). Rows: family, kernel degree i, weight degree w.\n"
       << "seed " << options.seed << ", samples per (family, degree, region): generic " << options.counts.generic
       << ", other regions " << options.counts.other << "; shard " << options.shard_index << "/"
       << options.shard_count << " (" << result.items_run << " of " << result.items_total << " items)";

@@ -211,7 +211,7 @@ inline SweepProblem draw_problem(std::uint64_t seed, KernelFamily family, int de
     }
     case Region::support_grazing:
       // The ball reaches 1e-6–1e-2 R past P's distance to the segment: the
-      // clipped interval is short and f ~ ε^((i+2)/2) is tiny (SPEC §1 k_R^i).
+      // clipped interval is short and f ~ ε^((i+2)/2) is tiny (docs/mathematics.md §1 k_R^i).
       pb.R = L * rng.uniform(0.3, 2);
       radius_set = true;
       pb.p = detail::point_at_distance(rng, seg, pb.R * (1 - rng.log_uniform(1e-6, 1e-2)));

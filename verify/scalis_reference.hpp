@@ -1,10 +1,10 @@
-// verify/scalis_reference.hpp — reference F and ∇F of a SCALIS segment (SPEC §4,
+// verify/scalis_reference.hpp — reference F and ∇F of a SCALIS segment (docs/mathematics.md §4,
 // Zanni et al. 2013 eq. 13), by adaptive quadrature of the DEFINITION
 //
 //     F(P)  = |AB| ∫_0^1 K(d(t)) / τ(t) dt,                d(t) = |P − Γ(t)| / τ(t)
 //     ∇F(P) = |AB| ∫_0^1 (K'(d)/d) (P − Γ(t)) / τ(t)³ dt   (∇_P d = (P − Γ)/(|P − Γ| τ))
 //
-// in binary128, for the three SCALIS kernels of SPEC §1 written from their
+// in binary128, for the three SCALIS kernels of docs/mathematics.md §1 written from their
 // definitions (ScalisKernel below). Nothing here uses the quadratic Q of the
 // evaluators, their roots or any closed form: distances are Euclidean norms of
 // coordinates, and the compact support is found by bisection on the concave
@@ -44,7 +44,7 @@
 
 namespace skelconv::verify {
 
-/// A SCALIS kernel of SPEC §1 (Zanni eq. 6–8), from its definition, written
+/// A SCALIS kernel of docs/mathematics.md §1 (Zanni eq. 6–8), from its definition, written
 /// here in T (the verifier's own, independent of the runtime traits: their
 /// K'(x)/x form is 0/0 at the cone tip d = 0, where K'/d below is finite).
 template <class T>

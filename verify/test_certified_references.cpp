@@ -292,7 +292,7 @@ void check_polygon(const PolygonProblem& pb, const Vec3<double>& exact_normal, i
 
 /// Samples checked besides the first --polygon-points of their cell: ones
 /// that a wider run found hard (docs/verify.md). Compact support_crossing
-/// #39: the support disc holds a corner 0.0038 diam deep, where the chord
+/// sample 39: the support disc holds a corner 0.0038 diam deep, where the chord
 /// form's q = w − (d²/R²)(1 + u²) lost 2.3e-13 before it was formed from
 /// distances to the rim.
 struct ExtraSample {

@@ -1,5 +1,5 @@
 // The properties the contour formulas for polygons must have
-// (SPEC §3), and the paper's cases (Hubert 2012 §6.4, §7, §8.2; figs 6–9).
+// (docs/mathematics.md §3), and the paper's cases (Hubert 2012 §6.4, §7, §8.2; figs 6–9).
 //
 // Reference values come from 2-D quadrature of the definition in binary128
 // (verify/polygon_reference.hpp) or from a closed form printed in the paper
@@ -192,7 +192,7 @@ TEST(PolygonPaperCases, EquilateralTriangleIsASumOfThreeStepFunctions) {
 // written out here from the paper (not from the generator), for a regular
 // pentagon and a non-convex polygon, and checked against quadrature too.
 // §6.4 prints the wedge as Q_m P ∧ Q_m Q_{m+1}, the opposite order to §6.3
-// and SPEC §3: with counter-clockwise vertices that gives −f (this test saw
+// and docs/mathematics.md §3: with counter-clockwise vertices that gives −f (this test saw
 // it), so we use the order of §6.3.
 double hubert_p4(const std::vector<V>& polygon, const V& p) {
   long double sum = 0;

@@ -1,11 +1,11 @@
 // verify/test_properties.cpp — properties the papers promise, checked on the
-// generated segment functions (SPEC §2):
+// generated segment functions (docs/mathematics.md §2):
 //   * additivity: splitting [A,B] into pieces, with the weight re-parameterised
 //     to each piece, leaves f and ∇f unchanged;
 //   * thickness (Hubert & Cani Prop. 4.1, Hubert §3.2–3.4): the level κ of the
-//     SPEC formula is reached at distance τ on the bisector, and nowhere
+//     formula of docs/mathematics.md §2 is reached at distance τ on the bisector, and nowhere
 //     farther; for k_R^i the middle part is an exact cylinder;
-//   * recurrence (1) of SPEC §2 between generated J_i and J_{i−2}.
+//   * recurrence (1) of docs/mathematics.md §2 between generated J_i and J_{i−2}.
 // Each property is checked in double against the sweep's generic targets, at
 // points that are generic for every evaluation involved, and in binary128
 // against `binary128_identity_tolerance`.
@@ -209,7 +209,7 @@ TEST(Properties, AdditivityUnderSplitting) {
 // ----------------------------------------------------------------- thickness
 
 /// J_i(a, b, c) = ∫_0^1 (a t² − 2 b t + c)^(−i/2) dt by binary128 tanh-sinh,
-/// split at the minimum of the quadratic: the (a, b, c) form of SPEC §2,
+/// split at the minimum of the quadratic: the (a, b, c) form of docs/mathematics.md §2,
 /// independent of both the geometric reference and the generated code.
 extended j_by_quadrature(int i, const extended& a, const extended& b, const extended& c) {
   static thread_local boost::math::quadrature::tanh_sinh<extended> quadrature;
@@ -289,7 +289,7 @@ Vec3<double> point_on_tube(const ExactSegment& seg, double tau, DeterministicRan
 
 TEST(Properties, ThicknessInverseAndCauchy) {
   for (const auto& [family, degree] : generated_pairs()) {
-    // κ below is SPEC's formula for p^i and c_s^i only.
+    // κ below is the formula (docs/mathematics.md §2) for p^i and c_s^i only.
     if (family != KernelFamily::inverse && family != KernelFamily::cauchy) continue;
     const auto* kd = find_generated_double(family, degree, 0);
     const auto* ke = find_generated_extended(family, degree, 0);
@@ -308,7 +308,7 @@ TEST(Properties, ThicknessInverseAndCauchy) {
       const Vec3<double> bisector = seg.exact_point(128, q, side);
       const double s = rng.log_uniform(0.2, 5);
       const extended L(l), T(tau), S(s);
-      // κ by SPEC's formula, the J integral by quadrature in (a, b, c) form:
+      // κ by the formula, the J integral by quadrature in (a, b, c) form:
       //   p^i:   κ = l J_i(l², l²/2, l²/4 + τ²)
       //   c_s^i: κ = l J_i(s l², s l²/2, 1 + s(l²/4 + τ²))
       const extended kappa = family == KernelFamily::inverse
@@ -319,7 +319,7 @@ TEST(Properties, ThicknessInverseAndCauchy) {
       const ReferenceField def = integrator.field(
           integrator.moments({family, degree, S, extended(1)}, widen(seg.a), widen(seg.b), widen(bisector)),
           {1, 0, 0, 0}, 0);
-      EXPECT_LE(static_cast<double>(abs(def.f / kappa - 1)), 1e-25) << what << ": SPEC κ formula vs definition";
+      EXPECT_LE(static_cast<double>(abs(def.f / kappa - 1)), 1e-25) << what << ": κ formula vs definition";
       // Generated f at the bisector point is κ.
       const std::array<double, 4> unit_w{1, 0, 0, 0};
       const Field<double> fd = evaluate(*kd, seg.a, seg.b, bisector, unit_w, s, 1.0);
@@ -336,7 +336,7 @@ TEST(Properties, ThicknessInverseAndCauchy) {
         EXPECT_LE(at.f, static_cast<double>(kappa) * (1 + double_targets.generic_f)) << what << " tube point " << k;
       }
       if (family == KernelFamily::cauchy) {
-        // SPEC: the level set crosses the segment for l J_i(sl², 0, 1) ≤ κ ≤
+        // Hubert 2012 §3.3: the level set crosses the segment for l J_i(sl², 0, 1) ≤ κ ≤
         // l J_i(sl², sl²/2, 1 + sl²/4): those bounds are f at A and f at the
         // midpoint of the segment (both exact points).
         const extended at_end = L * j_by_quadrature(degree, S * L * L, 0, 1);
@@ -366,7 +366,7 @@ TEST(Properties, ThicknessCompactCylindricalMiddle) {
       const int q = static_cast<int>(rng.uniform(0.3, 0.9) * R / (5 * ExactSegment::h));
       const double tau = 5 * q * ExactSegment::h;
       const double half_chord = std::sqrt(R * R - tau * tau);  // the ball at height τ cuts the line over ±half_chord
-      // l > 2√(R² − τ²): a cylindrical middle part exists (SPEC §2, k_R^i).
+      // l > 2√(R² − τ²): a cylindrical middle part exists (docs/mathematics.md §2, k_R^i).
       const int m = static_cast<int>(std::ceil((2 * half_chord + R * rng.uniform(0.5, 3)) / (13 * ExactSegment::h)));
       const ExactSegment seg = exact_segment(m, rng);
       const double l = seg.length();
@@ -408,7 +408,7 @@ struct Quadratic {
   extended a, b, c;  ///< q(t) = a t² − 2 b t + c
 };
 
-/// Relative residual of SPEC §2 recurrence (1) at index n,
+/// Relative residual of docs/mathematics.md §2 recurrence (1) at index n,
 ///   (n−2)(ca − b²) J_n + a(3−n) J_{n−2} = (a−b) q(1)^((2−n)/2) + b q(0)^((2−n)/2),
 /// divided by the sum of the magnitudes of its four terms.
 extended recurrence_residual(int n, const Quadratic& q, const extended& j_n, const extended& j_n_minus_2) {
@@ -421,7 +421,7 @@ extended recurrence_residual(int n, const Quadratic& q, const extended& j_n, con
   return abs(t1 + t2 - r1 - r0) / (abs(t1) + abs(t2) + abs(r1) + abs(r0));
 }
 
-/// J_i of a generated weight-degree-0 kernel: f / |AB| with w = 1 (SPEC §2:
+/// J_i of a generated weight-degree-0 kernel: f / |AB| with w = 1 (docs/mathematics.md §2:
 /// p^i: C = |AB| J_i(|AB|², AB·AP, |AP|²); c_s^i: C = |AB| J_i(s|AB|², s AB·AP, 1 + s|AP|²)).
 extended generated_j(KernelFamily family, int degree, const SweepProblem& pb) {
   const auto* kernel = find_generated_extended(family, degree, 0);
@@ -451,7 +451,7 @@ TEST(Properties, RecurrenceInverseAndCauchy) {
 
 TEST(Properties, RecurrenceCompactNegativeIndices) {
   // k_R^i on the clipped [A_P, B_P] is |A_PB_P| J_{−i}(a, b, c) with
-  // a = −|A_PB_P|²/R², b = −A_PP·A_PB_P/R², c = 1 − |A_PP|²/R² (SPEC §2), so
+  // a = −|A_PB_P|²/R², b = −A_PP·A_PB_P/R², c = 1 − |A_PP|²/R² (docs/mathematics.md §2), so
   // recurrence (1) at n = −i links degrees i and i + 2.
   for (const auto& [family, degree] : generated_pairs()) {
     if (family != KernelFamily::compact || !find_generated_extended(family, degree + 2, 0)) continue;

@@ -2,10 +2,10 @@
 //
 // The sweep judges generated code by verify/reference_quadrature.hpp. Here that
 // reference is checked against things that share none of its machinery:
-//  1. closed forms of J_i written independently here from SPEC §2 (J_1 with
+//  1. closed forms of J_i written independently here from docs/mathematics.md §2 (J_1 with
 //     asinh, J_2 with atan, J_3 algebraic; the a < 0 form of J_1 and the
 //     recurrence downwards for compact kernels; J_{-2}, J_{-4} as
-//     polynomials), through SPEC §2's mapping of each family to J;
+//     polynomials), through docs/mathematics.md §2's mapping of each family to J;
 //  2. the gradient against 4th-order central differences of the reference f
 //     (checks the hand-written K'(r)/r of kernel_definitions.hpp);
 //  3. an independent quadrature: 50-digit cpp_bin_float with adaptive
@@ -57,7 +57,7 @@ struct Abc {
   extended a, b, c;
 };
 
-// ---- closed forms, SPEC §2 (Hubert 2012 §3.1), written independently ----
+// ---- closed forms, docs/mathematics.md §2 (Hubert 2012 §3.1), written independently ----
 
 extended j1_positive(const Abc& q) {  // a > 0, ac − b² > 0
   const extended d = sqrt(q.a * q.c - q.b * q.b);

@@ -1,4 +1,4 @@
-// verify/test_scalis_properties.cpp — SCALIS segment evaluators (SPEC §4,
+// verify/test_scalis_properties.cpp — SCALIS segment evaluators (docs/mathematics.md §4,
 // Zanni et al. 2013 §3–4) against binary128 quadrature of the definition
 // (verify/scalis_reference.hpp), and the properties the paper promises.
 //
@@ -7,10 +7,10 @@
 //   * scale invariance F_{ατ,αS}(αP) = F_{τ,S}(P) (Zanni §3.1: F is invariant
 //     as defined, since d = |PΓ|/τ and ds/τ are both ratios of lengths);
 //   * additivity: splitting [A,B] at t with τ interpolated leaves F unchanged.
-// Compact-kernel checks (TEST): normalisation h (SPEC §4, Table 5) by
+// Compact-kernel checks (TEST): normalisation h (docs/mathematics.md §4, Table 5) by
 // quadrature, exact thickness beyond l = 2τ√(σ²−1) (Zanni §4.3), what the
 // iso-surface does at a cone tip, continuity order across the support
-// boundary (SPEC §6 lists conflicting claims).
+// boundary (the papers state conflicting orders: docs/mathematics.md §9).
 // Compact only, at the targets too: accuracy near the support boundary and
 // near a cone tip. Reported, not asserted: thickness below the guaranteed
 // length, time per evaluation.
@@ -487,10 +487,10 @@ TEST(ScalisReference, AgreesWithTheClassicalSegmentReference) {
 
 // ------------------------------------------------- compact: normalisation h
 
-/// V_i = ∫_{−1}^{1} (1 − x²)^(i/2) dx by the recurrence of SPEC §4.
+/// V_i = ∫_{−1}^{1} (1 − x²)^(i/2) dx by the recurrence of docs/mathematics.md §4.
 double V(int i) { return i == 0 ? 2.0 : i == 1 ? std::numbers::pi / 2 : i / (i + 1.0) * V(i - 2); }
 
-/// SPEC §4: h = σ (1 − 1/σ²)^((i+1)/2) V_i.
+/// docs/mathematics.md §4: h = σ (1 − 1/σ²)^((i+1)/2) V_i.
 double compact_h(int i, double sigma) { return sigma * std::pow(1 - 1 / (sigma * sigma), (i + 1) / 2.0) * V(i); }
 
 TEST(ScalisCompact, NormalisationMatchesQuadrature) {

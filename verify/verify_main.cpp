@@ -1,5 +1,5 @@
 // skelconv-verify — accuracy sweep of the generated segment functions against
-// binary128 quadrature of the definition integral (SPEC §2), and the tools
+// binary128 quadrature of the definition integral (docs/mathematics.md §2), and the tools
 // around its JSON report: merge shard reports, compare two reports, render one
 // as Markdown. See docs/verify.md.
 //

@@ -21,7 +21,7 @@ from ply import read_ply  # noqa: E402
 
 DATA = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
                     "tests", "data", "reconstruct")
-HAUSDORFF_TARGET, RMS_TARGET = 0.02, 0.005   # the targets, × the bounding-box diagonal
+HAUSDORFF_TARGET, RMS_TARGET = 0.02, 0.005   # the targets of docs/reconstruction_results.md, × the bounding-box diagonal
 STAGES = ["raw", "pruned", "simplified", "simplified_3d", "smoothed", "fitted"]
 
 

@@ -8,7 +8,7 @@ from .quadrature import gauss_legendre
 
 
 def kernel(family, degree, s=None, R=None):
-    """K(r) of SPEC §1 as a vectorised function."""
+    """K(r) of docs/mathematics.md §1 as a vectorised function."""
     if family == "inverse":
         return lambda r: np.asarray(r, float) ** -degree
     if family == "cauchy":
@@ -38,7 +38,7 @@ def segment_on_bisector(K, length, tau, weight=1.0, support=None, rtol=1e-13):
 
 
 def j2(a, b, c):
-    """J_2(a,b,c) = ∫_0^1 (a t² − 2 b t + c)^(-1) dt, its atan closed form (SPEC §2), for ac − b² > 0."""
+    """J_2(a,b,c) = ∫_0^1 (a t² − 2 b t + c)^(-1) dt, its atan closed form (docs/mathematics.md §2), for ac − b² > 0."""
     root = np.sqrt(a * c - b * b)
     return (np.arctan((a - b) / root) + np.arctan(b / root)) / root
 

@@ -4,7 +4,7 @@ radius τ(t)) as skelconv primitives, and the thickness of a classical
 infinite segment in closed form (for levels and checks)."""
 import numpy as np
 
-# W_i = ∫ (1 + u²)^(-i/2) du over ℝ (SPEC §4): W_2 = π, W_3 = 2, W_i = (i−3)/(i−2) W_{i−2}.
+# W_i = ∫ (1 + u²)^(-i/2) du over ℝ (docs/mathematics.md §4): W_2 = π, W_3 = 2, W_i = (i−3)/(i−2) W_{i−2}.
 def w_integral(i):
     w = {2: np.pi, 3: 2.0}
     for k in range(4, i + 1):

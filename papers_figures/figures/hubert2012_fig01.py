@@ -3,7 +3,7 @@
 Each curve is f/|AB| of a very short segment [A,B] (|AB| = 1e-4) seen from
 distance r along its bisector, which is the kernel K(r) up to O(|AB|²/r²):
 so the graphs show the kernels skelconv actually evaluates, and the claim
-check compares them with the formulas of Hubert §2.1 (SPEC §1).
+check compares them with the formulas of Hubert §2.1 (docs/mathematics.md §1).
 """
 import numpy as np
 

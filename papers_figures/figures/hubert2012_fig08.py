@@ -6,7 +6,7 @@ step-function-like contribution of one side: the m-th term of Hubert §7,
     D^{c_s²}_{[AB]}(P) = J_2(s|AB|², s AB·AP, 1 + s|AP|²),
 
 written in Python from the paper (figlib/reference.py, J_2 by its atan
-closed form, SPEC §2) and checked against skelconv's polygon field."""
+closed form, docs/mathematics.md §2) and checked against skelconv's polygon field."""
 import numpy as np
 
 from figlib import plot

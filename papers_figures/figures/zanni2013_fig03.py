@@ -19,7 +19,7 @@ TINY = np.finfo(float).tiny
 
 
 def h_compact(degree, sigma):
-    """SCALIS compact normalisation h = σ(1 − 1/σ²)^((i+1)/2) V_i (SPEC §4); only σ > 1."""
+    """SCALIS compact normalisation h = σ(1 − 1/σ²)^((i+1)/2) V_i (docs/mathematics.md §4); only σ > 1."""
     v = {0: 2.0, 1: np.pi / 2}
     for k in range(2, degree + 1):
         v[k] = k / (k + 1) * v[k - 2]

@@ -26,7 +26,7 @@ from figlib.levelset import crossing
 
 TAU, R, DEGREE = 0.5, 1.0, 6
 KERNEL = {"family": "compact", "degree": DEGREE, "R": R}
-AFTER_WITHIN = 0.01      # the correction's tolerance (skelconv thickness --tolerance default): |r/τ − 1| < 1% everywhere along the skeleton (the issue asks 2%)
+AFTER_WITHIN = 0.01      # the correction's tolerance (skelconv thickness --tolerance default): |r/τ − 1| < 1% everywhere along the skeleton (docs/thickness_correction.md claims 2%)
 END_THINNER = 0.9        # uncorrected: the free ends fall below 0.9 τ (half the skeleton is missing there)
 JUNCTION_BULGE = 1.05    # uncorrected: the fork's junction rises above 1.05 τ (three fields add)
 Y_ARMS = (90.0, 210.0, 330.0)

@@ -15,7 +15,7 @@ from figlib.figure import Figure
 from figlib import thickness as th
 
 TAU_MAX = 0.5
-AFTER_WITHIN = 0.02    # the goal: |r/τ − 1| < 2% along every segment (the fit's own tolerance is 1%)
+AFTER_WITHIN = 0.02    # the claim of docs/thickness_correction.md: |r/τ − 1| < 2% along every segment, between the fit's samples too (it holds 1% at them)
 BEFORE_OFF = 0.05      # each example needs the correction: uncorrected, somewhere more than 5% from τ(t)
 
 

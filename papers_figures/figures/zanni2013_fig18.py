@@ -16,7 +16,7 @@ from figlib.figure import Figure
 from figlib import thickness as th
 
 TAU_MAX = 0.5
-AFTER_WITHIN = 0.02     # the goal: |r/τ − 1| < 2% along every segment (the fit's own tolerance is 1%)
+AFTER_WITHIN = 0.02     # the claim of docs/thickness_correction.md: |r/τ − 1| < 2% along every segment, between the fit's samples too (it holds 1% at them)
 POINTED = 0.05          # pointed: the surface ends within 0.05 τ_max beyond the tip (a round cap would reach ~τ there)
 ROUND = (0.9, 1.1)      # round: beyond the thick end the surface reaches τ_end ± 10% (a hemispherical cap)
 THIN_END = 0.9          # uncorrected: the thick end's thickness falls below 0.9 τ_end (half the skeleton is missing)

@@ -73,7 +73,7 @@ def printed(family, i, sigma, p):
 
 
 def normalisation(family, i, sigma):
-    """h = ∫ K(√(1 + u²)) du (eq. 14's normalisation, SPEC §4), by quadrature."""
+    """h = ∫ K(√(1 + u²)) du (eq. 14's normalisation, docs/mathematics.md §4), by quadrature."""
     if family == "cauchy":
         return over_real_line(lambda u: (1 + (1 + u * u) / sigma ** 2) ** (-i / 2))[0]
     if family == "inverse":

@@ -1,7 +1,7 @@
 """Zanni et al. 2013, Table 4: operation counts of the analytic formulas.
 Produced by the benchmarks (scripts/bench.sh, docs/bench.md): this entry
 includes §6 of bench/results/SUMMARY.md as it was last committed, and checks
-that the paper's numbers printed there are the ones in SPEC §4."""
+that the paper's numbers printed there are the ones in docs/mathematics.md §4."""
 import os
 import re
 
@@ -10,7 +10,7 @@ from figlib.figure import HERE, Figure
 
 SUMMARY = os.path.join(os.path.dirname(HERE), "bench", "results", "SUMMARY.md")
 SECTION = "## 6."
-# The paper's Table 4 (SPEC §4), f column: +, ×, / (√, atan, ln).
+# The paper's Table 4 (docs/mathematics.md §4), f column: +, ×, / (√, atan, ln).
 PAPER_F = {"SCALIS Cauchy 4": "29, 38, 4 (1,2,1)", "SCALIS inverse 3": "25, 33, 5 (5,0,1)",
            "SCALIS compact 4": "43, 82, 3 (0,0,1)", "SCALIS compact 6": "71, 144, 3 (0,0,1)",
            "classical inverse 3, linear weight": "18, 20, 4 (2,0,0)",
@@ -58,7 +58,7 @@ def draw(ctx):
                 ratios[cells[0]] = float(cells[5][:-1])
     mismatched = [k for k, v in PAPER_F.items() if found.get(k) != v]
     return [Claim("the paper's operation counts (Table 4, f column) as the bench summary quotes them",
-                  f"{len(PAPER_F) - len(mismatched)} of {len(PAPER_F)} rows match SPEC §4"
+                  f"{len(PAPER_F) - len(mismatched)} of {len(PAPER_F)} rows match docs/mathematics.md §4"
                   + (f"; differing: {', '.join(mismatched)}" if mismatched else ""),
                   not mismatched),
             Claim("the closed forms cost the paper's operation counts (f)",

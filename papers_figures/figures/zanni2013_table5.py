@@ -96,7 +96,7 @@ def draw(ctx):
     checked = skelconv_check(ctx)
     rec = max(worst.values())
     # §4.2 as printed: f = F / N_K(c) with N_K(c) = c / h(1,1); at distance τ_c, F = h(τ_c, τ_c) = h(1,1)
-    # (scale invariance), so f = h(1,1)² / c there, not c (SPEC §9). Values from quadrature, c = 1.
+    # (scale invariance), so f = h(1,1)² / c there, not c (docs/mathematics.md §9). Values from quadrature, c = 1.
     iso = 1.0
     printed = {name: by_quadrature(fam, i, 1.0, 1.0, sigma) ** 2 / iso
                for name, fam, i, sigma in (("Cauchy 4, σ = 1", "cauchy", 4, 1.0), ("inverse 3, σ = 1", "inverse", 3, 1.0),
@@ -114,5 +114,5 @@ def draw(ctx):
               "f = F/N_K(c) at distance τ_c, c = 1: " + ", ".join(f"{k}: {fmt(v, 4)}" for k, v in printed.items()) +
               " (should be 1); the intended f = c·F/h(1,1) is what skelconv uses (previous row)",
               all(abs(v - iso) < 1e-6 for v in printed.values()), expect_agreement=False,
-              note="a misprint (SPEC §9): F/N_K(c) = F·h(1,1)/c is c only when h(1,1) = c"),
+              note="a misprint (docs/mathematics.md §9): F/N_K(c) = F·h(1,1)/c is c only when h(1,1) = c"),
     ]

@@ -66,7 +66,7 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element) {
   field.value_and_gradient = [&skeleton](const Vec3& p) { return skeleton.value_and_gradient(p); };
   field.value = [&skeleton](const Vec3& p) { return skeleton.value(p); };
   field.skeleton_points = skeleton.skeleton_points(points_per_element);
-  field.far_field = 0.0;  // every kernel family (SPEC §1, §4) decays to 0 at infinity
+  field.far_field = 0.0;  // every kernel family (docs/mathematics.md §1, §4) decays to 0 at infinity
   field.support_boxes = support_boxes_of(skeleton);
   field.enclosure = [&skeleton](const Eigen::AlignedBox3d& box) {
     const interval::Interval f =

@@ -316,7 +316,7 @@ Primitive read_polygon(const Json& value, const std::string& path) {
   return construct_located(path, [&] { return Polygon(vertices, kernel); });
 }
 
-// --- SCALIS segment (SPEC §4) ---------------------------------------------
+// --- SCALIS segment (docs/mathematics.md §4) ---------------------------------------------
 
 /// {"family": "inverse" | "cauchy" | "compact", "degree": i, "sigma": σ}.
 ScalisKernel read_scalis_kernel(const Json& value, const std::string& path, std::string_view what) {
@@ -361,7 +361,7 @@ Primitive read_scalis_segment(const Json& value, const std::string& path) {
   return construct_located(path, [&] { return ScalisSegment(a, b, radius[0], radius[1], kernel, iso); });
 }
 
-// --- SCALIS triangle (SPEC §4, Zanni §5.2) ----------------------------------
+// --- SCALIS triangle (docs/mathematics.md §4, Zanni §5.2) ----------------------------------
 
 /// {"type": "scalis_triangle", "vertices": [P, P, P], "radius": [τ0, τ1, τ2], "kernel": K, "iso": c (optional, 1)}.
 Primitive read_scalis_triangle(const Json& value, const std::string& path) {

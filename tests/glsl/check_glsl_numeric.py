@@ -31,7 +31,7 @@ beta)^(-n/2) (codegen/segment_families.hpp), grad f = -n alpha |AB| int w(t)
 24 nodes per panel on panels graded towards the nearest point of AB
 (graded_edges; compact: 64 even panels of the clipped interval).
 
-SCALIS segments (SPEC sec. 4): F = sigma^i |AB| int_0^1 tau(t)^(i-1)
+SCALIS segments (docs/mathematics.md sec. 4): F = sigma^i |AB| int_0^1 tau(t)^(i-1)
 (|P - G(t)|^2 + k sigma^2 tau(t)^2)^(-i/2) dt (k = 0 inverse, 1 Cauchy), the
 generated functions' unnormalised F; A, B, P as for segments, tau0, tau1
 uniform in [0.1, 1.5] |AB|, sigma 1 (inverse: the runtime's choice) or

@@ -2,7 +2,7 @@
 // iso-surface lies from its ideal shape, the canal surface of the spheres
 // (Γ(t), τ(t)) (docs/canal.md §5).
 //
-// A SCALIS segment [A, B] with radius τ(t) = τ0 + (τ1 − τ0) t (SPEC §4) is
+// A SCALIS segment [A, B] with radius τ(t) = τ0 + (τ1 − τ0) t (docs/mathematics.md §4) is
 // meant to have thickness τ (Zanni et al. §3–4): its surface f = iso should
 // be the envelope of the spheres of centre Γ(t) and radius τ(t), a cone
 // frustum closed by the two end spheres. Both are surfaces of revolution

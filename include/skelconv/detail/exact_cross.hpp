@@ -4,7 +4,7 @@
 // Near the segment's line, AB × AP is a difference of nearly equal products,
 // and in plain arithmetic each difference B − A, P − A already rounds by
 // ε|AB|, ε|AP|: the cross product then carries an absolute error ~ε|AB||AP|,
-// i.e. a relative error ε / sin∠(AB, AP). D = |AB × AP|² (SPEC §2) enters
+// i.e. a relative error ε / sin∠(AB, AP). D = |AB × AP|² (docs/mathematics.md §2) enters
 // every closed form near the line, so f lost up to 1e-10 at 1e-6 |AB| from
 // the line (verify/baselines/sweep_default.json, before this header).
 //

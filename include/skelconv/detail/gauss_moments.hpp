@@ -2,7 +2,7 @@
 // where the recurrences cancel and the rule is exact (to rounding).
 //
 // Generated segment kernels need M_{k,m} = ∫_{t0}^{t1} t^k q(t)^(−m/2) dt with
-// q = a t² − 2 b t + c (SPEC §2). Three places where recurrence (1) and the
+// q = a t² − 2 b t + c (docs/mathematics.md §2). Three places where recurrence (1) and the
 // moment relations lose digits are better served by an N-point
 // Gauss–Legendre rule, whose positive weights and positive integrand leave
 // nothing to cancel:

@@ -5,7 +5,7 @@
 //
 // For an edge E = Q_{m+1} − Q_m seen from P̄ (the projection of P on the
 // plane, at in-plane distance d from the edge's line) the generated polygon
-// kernels need (codegen/polygon_families.hpp, SPEC §3)
+// kernels need (codegen/polygon_families.hpp, docs/mathematics.md §3)
 //
 //     H_n = α h ∫_0^1 dt / (α ρ(t)² q(t)^(n/2)),   q = α ρ² + ζ²,
 //

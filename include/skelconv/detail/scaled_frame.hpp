@@ -19,7 +19,7 @@
 // A query point P farther than ~2^1000 L from the origin overflows in the
 // frame, where the field is far outside the double range anyway.
 //
-// The field is brought back by the kernel's homogeneity (SPEC §1–4): a
+// The field is brought back by the kernel's homogeneity (docs/mathematics.md §1–4): a
 // quantity with units length^m is q' = q·2^(−m e) in the frame (the kernel
 // parameters too: the Cauchy s has m = −2, s' = s·2^(2e); R has m = 1), and
 // f = f'·2^(m e). The value power m of f:

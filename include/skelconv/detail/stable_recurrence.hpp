@@ -1,7 +1,7 @@
 // skelconv/detail/stable_recurrence.hpp — J_n where recurrence (1) is unstable.
 //
 // Generated segment kernels evaluate J_n = ∫_{t0}^{t1} q(t)^(-n/2) dt,
-// q = a t² − 2 b t + c, D = ac − b² ≥ 0 (SPEC §2), by recurrence (1) of
+// q = a t² − 2 b t + c, D = ac − b² ≥ 0 (docs/mathematics.md §2), by recurrence (1) of
 // Hubert & Cani. Upwards from J_1, J_2 it divides by D at every step. When P
 // projects beyond an end of the segment and lies close to its line, J_n is
 // the *minimal* solution of the recurrence: going up multiplies rounding

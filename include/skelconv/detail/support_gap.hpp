@@ -5,7 +5,7 @@
 // Where the ball |X − P| ≤ R only grazes the segment, R and the distance d
 // from P to the segment (to its line, or to an end) agree in their leading
 // digits: R² − d² = δ R² with δ as small as the user likes. The field there
-// is f ~ δ^((i+2)/2) (SPEC §1, k_R^i), so each relative error of δ comes
+// is f ~ δ^((i+2)/2) (docs/mathematics.md §1, k_R^i), so each relative error of δ comes
 // back (i+2)/2 times larger. In plain arithmetic δ R² is a difference of
 // two numbers ~R², each rounded (P − E, B − A, the squares, the cross
 // product): an absolute error ~ε R², i.e. ε/δ relative, 1e-10 at δ = 1e-6

@@ -2,7 +2,7 @@
 // field over an axis-aligned box (docs/bound.md).
 //
 // "Sound": for every point P of the box, the exact field f(P) (of the
-// primitives as defined in SPEC, with the double-precision parameters
+// primitives as defined in docs/mathematics.md, with the double-precision parameters
 // stored in them) lies in [lo, hi], rounding included: everything is
 // computed in outward-rounded interval arithmetic (interval.hpp).
 //

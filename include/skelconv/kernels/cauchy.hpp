@@ -1,5 +1,5 @@
 // skelconv/kernels/cauchy.hpp — the Cauchy kernel c_s^i(r) = (1 + s r²)^(−i/2)
-// (SPEC §1, Hubert 2012 §2.1) as a radial kernel trait (radial_kernel.hpp).
+// (docs/mathematics.md §1, Hubert 2012 §2.1) as a radial kernel trait (radial_kernel.hpp).
 #pragma once
 
 #include <array>

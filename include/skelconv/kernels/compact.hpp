@@ -1,5 +1,5 @@
 // skelconv/kernels/compact.hpp — the compact-support kernel
-// k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0 (SPEC §1, Hubert 2012 §2.1)
+// k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0 (docs/mathematics.md §1, Hubert 2012 §2.1)
 // as a radial kernel trait (radial_kernel.hpp).
 #pragma once
 

@@ -1,5 +1,5 @@
 // skelconv/kernels/inverse.hpp — the power-inverse kernel p^i(r) = r^(−i)
-// (SPEC §1, Hubert 2012 §2.1) as a radial kernel trait (radial_kernel.hpp).
+// (docs/mathematics.md §1, Hubert 2012 §2.1) as a radial kernel trait (radial_kernel.hpp).
 #pragma once
 
 #include <array>
@@ -37,18 +37,18 @@ struct InverseKernel {
   /// r^(−i) has no length of its own: λ^(−i) K(r/λ) (radial_kernel.hpp).
   int scaling_power() const { return -degree; }
   /// K = (α r² + β)^(−i/2) with α = 1, β = 0: the form the polygon closed
-  /// forms take (SPEC §3, skelconv/primitives/polygon_field.hpp).
+  /// forms take (docs/mathematics.md §3, skelconv/primitives/polygon_field.hpp).
   template <class T>
   static std::array<T, 2> quadratic_form(const T& /*s*/) {
     return {T(1), T(0)};
   }
   /// The one degree the polygon closed forms leave out, and why (the
   /// polygon's message, src/primitives/polygon.cpp): the contour recurrence
-  /// of SPEC §3, i z² G^(i+2) − (i − 2) G^i = (u² + v² + z²)^(−i/2), reaches
+  /// of docs/mathematics.md §3, i z² G^(i+2) − (i − 2) G^i = (u² + v² + z²)^(−i/2), reaches
   /// every i ≥ 3 from C^(p³) and C^(p⁴) and excludes i = 2.
   static constexpr int polygon_excluded_degree = 2;
   static constexpr std::string_view polygon_excluded_reason =
-      "the contour formula of the polygon closed forms (SPEC §3, Hubert 2012 §6) excludes it";
+      "the contour formula of the polygon closed forms (docs/mathematics.md §3, Hubert 2012 §6) excludes it";
   double length_scale() const { return 1.0; }
   double max_value() const { return std::numeric_limits<double>::infinity(); }  ///< K(0) = +inf
   double max_slope() const { return std::numeric_limits<double>::infinity(); }

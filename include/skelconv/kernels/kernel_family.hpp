@@ -9,7 +9,7 @@
 
 namespace skelconv {
 
-/// Kernel families of SPEC §1 (Hubert 2012 §2.1).
+/// Kernel families of docs/mathematics.md §1 (Hubert 2012 §2.1).
 enum class KernelFamily {
   inverse,  ///< p^i(r) = r^-i
   cauchy,   ///< c_s^i(r) = (1 + s r²)^(-i/2)

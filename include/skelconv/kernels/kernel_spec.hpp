@@ -1,6 +1,6 @@
 // skelconv/kernels/kernel_spec.hpp — which kernel a primitive convolves with.
 //
-// The kernels of SPEC §1 (Hubert 2012 §2.1), for a distance r ≥ 0:
+// The kernels of docs/mathematics.md §1 (Hubert 2012 §2.1), for a distance r ≥ 0:
 //   inverse  p^i(r)   = r^(-i)
 //   cauchy   c_s^i(r) = (1 + s r²)^(-i/2),                 s > 0
 //   compact  k_R^i(r) = (1 − r²/R²)^(i/2) for r < R, else 0, R > 0
@@ -28,7 +28,7 @@ namespace skelconv {
 /// Values are checked where the kernel is used (Segment's constructor).
 struct KernelSpec {
   KernelFamily family = KernelFamily::inverse;
-  int degree = 3;  ///< the exponent i of SPEC §1
+  int degree = 3;  ///< the exponent i of docs/mathematics.md §1
   double s = 1.0;  ///< Cauchy sharpness, > 0 (cauchy only)
   double R = 1.0;  ///< support radius, > 0 (compact, soft, wyvill, ferley, polynomial)
   double e = 0.5;  ///< Ferley's coating thickness, 0 < e < R (ferley only)

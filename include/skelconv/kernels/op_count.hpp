@@ -16,7 +16,7 @@
 //    polygon_angle_integrals.hpp) counts what the helper executes, measured
 //    by running it on a counting scalar (codegen/helper_costs.hpp); a loop
 //    whose length depends on P counts at its longest.
-// Table 4 of Zanni 2013 (SPEC §4) counts +, ×, / and (√, atan, ln); asinh is
+// Table 4 of Zanni 2013 (docs/mathematics.md §4) counts +, ×, / and (√, atan, ln); asinh is
 // a log in disguise and goes in the log column.
 #pragma once
 

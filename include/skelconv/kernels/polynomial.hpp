@@ -1,7 +1,7 @@
 // skelconv/kernels/polynomial.hpp — the polynomial kernel
 //     K(r) = (1 − r²/R²)^k for r < R, 0 beyond,
 // k ≥ 1 an integer (JSON "degree") and R > 0 the support radius. It is the
-// compact kernel k_R^(2k) of SPEC §1 written with the exponent of the
+// compact kernel k_R^(2k) of docs/mathematics.md §1 written with the exponent of the
 // polynomial itself (k = 2 is the soft kernel, k = 3 the "poly6" kernel of
 // smoothed-particle hydrodynamics); a family of its own so that a skeleton
 // file says the polynomial it means. Points only (primitives below): a

@@ -73,7 +73,7 @@ namespace skelconv::kernels {
 /// The primitives a family has a field on, as bits of a trait's
 /// `primitives`: points always (f = w K(r)); segments and polygons where a
 /// closed form exists (generated, or a combination of generated ones);
-/// SCALIS segments and triangles only for the families of SPEC §4.
+/// SCALIS segments and triangles only for the families of docs/mathematics.md §4.
 enum PrimitiveKind : unsigned {
   on_points = 1u << 0,
   on_segments = 1u << 1,
@@ -82,7 +82,7 @@ enum PrimitiveKind : unsigned {
 };
 
 /// One term (numerator / denominator) · k_R^degree of a kernel that is an
-/// exact combination of compact levels (SPEC §1 k_R^i with the trait's R):
+/// exact combination of compact levels (docs/mathematics.md §1 k_R^i with the trait's R):
 /// soft = k_R^4, Wyvill = 5/9 k_R^4 + 4/9 k_R^6. Its segment and polygon
 /// fields are the same combination of the generated compact closed forms
 /// (skelconv/kernels/derived_segment_kernels.hpp, Polygon). The coefficient is a

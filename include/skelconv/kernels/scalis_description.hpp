@@ -1,5 +1,5 @@
-// skelconv/kernels/scalis_description.hpp — what the SCALIS primitives (SPEC
-// §4, Zanni et al. 2013) need of a kernel family, for the traits that have
+// skelconv/kernels/scalis_description.hpp — what the SCALIS primitives
+// (docs/mathematics.md §4, Zanni et al. 2013) need of a kernel family, for the traits that have
 // a SCALIS field (inverse, cauchy, compact: `primitives` has on_scalis).
 //
 // A SCALIS kernel of scale σ is K(d/σ), with the family's K at s = 1 or
@@ -46,7 +46,7 @@ struct ScalisPolygonKernel {
 };
 
 /// W_i = ∫ (1 + u²)^(−i/2) du over ℝ (i ≥ 2): W_2 = π, W_3 = 2,
-/// W_i = (i − 3)/(i − 2) W_{i−2} (SPEC §4, Zanni Table 5).
+/// W_i = (i − 3)/(i − 2) W_{i−2} (docs/mathematics.md §4, Zanni Table 5).
 inline double inverse_line_integral(int i) {
   double w = i % 2 == 0 ? std::numbers::pi : 2.0;
   for (int m = i % 2 == 0 ? 4 : 5; m <= i; m += 2) w *= double(m - 3) / double(m - 2);

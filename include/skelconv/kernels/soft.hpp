@@ -1,5 +1,5 @@
 // skelconv/kernels/soft.hpp — the "soft object" kernel of the exam notes
-// (implicit-surfaces-exam-notes.fr.txt, part 3b):
+// (docs/mathematics.md §1 and References, the exam notes part 3b):
 //     K(r) = (1 − r²/R²)² for r < R, 0 beyond,
 // i.e. the compact kernel k_R^4 under its own name and with no degree. The
 // notes parameterise it by the radius ρ of the primitive's surface at iso c:
@@ -23,7 +23,7 @@ struct SoftKernel {
   static constexpr std::array<std::string_view, 1> parameters{"R"};
   static constexpr bool has_degree = false;
   /// Not on SCALIS primitives: their kernel is scaled by the radius τ and
-  /// normalised per family (SPEC §4); only inverse, Cauchy, compact are.
+  /// normalised per family (docs/mathematics.md §4); only inverse, Cauchy, compact are.
   static constexpr unsigned primitives = on_points | on_segments | on_polygons;
   /// K = k_R^4 exactly: segments and polygons use the generated compact i = 4.
   static constexpr std::array<CompactLevel, 1> compact_levels{{{1, 1, 4}}};

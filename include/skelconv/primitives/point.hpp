@@ -1,6 +1,6 @@
 // skelconv/primitives/point.hpp — the point primitive: a weighted radial
 // kernel around a centre C (Blinn's and Wyvill's "blobs"; the kernels of
-// SPEC §1 through their traits, skelconv/kernels/).
+// docs/mathematics.md §1 through their traits, skelconv/kernels/).
 //
 //     f(P) = w K(r),   ∇f(P) = w K'(r) (P − C) / r,   r = |P − C|
 //

@@ -1,5 +1,5 @@
 // skelconv/primitives/polygon.hpp — the polygon primitive: the convolution field of a
-// planar polygon (SPEC §3, Hubert 2012 §5–8).
+// planar polygon (docs/mathematics.md §3, Hubert 2012 §5–8).
 //
 //     f(P) = ∬_Ω K(|P − Q|) dQ
 //
@@ -56,7 +56,7 @@
 //     the normal's largest coordinate axis);
 //   - a kernel degree the closed forms offer (polygon_supported_degrees):
 //     inverse 3…12, cauchy 3…12, compact 4, 6, …, 12; inverse degree 2 is
-//     excluded by the contour formula (SPEC §3); s > 0 (cauchy), R > 0
+//     excluded by the contour formula (docs/mathematics.md §3); s > 0 (cauchy), R > 0
 //     (compact).
 //
 // Orientation: the field does not depend on it, so either boundary order is

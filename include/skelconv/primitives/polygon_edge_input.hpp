@@ -3,7 +3,7 @@
 // (generated/polygon_*.hpp).
 //
 // The field of a planar polygon Ω is a sum over its edges (Green's theorem,
-// Hubert 2012 §5, SPEC §3). With P̄ the projection of P on the plane, z the
+// Hubert 2012 §5, docs/mathematics.md §3). With P̄ the projection of P on the plane, z the
 // height of P above it and, for edge m from Q_m to Q_{m+1},
 //
 //     h_m = ((Q_m − P̄) × (Q_{m+1} − Q_m)) · n      (twice the signed area of

@@ -1,5 +1,5 @@
 // skelconv/primitives/polygon_field.hpp — the convolution field of a planar polygon
-// (SPEC §3, Hubert 2012 §5–8), by the contour formula: a sum over the edges,
+// (docs/mathematics.md §3, Hubert 2012 §5–8), by the contour formula: a sum over the edges,
 // no triangulation.
 //
 //     f(P) = ∬_Ω K(|P − Q|) dQ
@@ -59,7 +59,7 @@ struct PolygonInput {
   std::span<const std::array<T, 3>> vertices;  ///< boundary order, CCW about normal
   std::array<T, 3> normal{};                   ///< unit normal of the plane
   KernelFamily family = KernelFamily::inverse;
-  int degree = 3;  ///< i of SPEC §1
+  int degree = 3;  ///< i of docs/mathematics.md §1
   T s = T(1);      ///< Cauchy sharpness (cauchy only)
   T R = T(1);      ///< support radius (compact only)
 };

@@ -1,7 +1,7 @@
 // skelconv/primitives/primitive.hpp — one skeleton element, any type.
 //
-// Segments (SPEC §2), polygons (SPEC §3), SCALIS segments and triangles
-// (SPEC §4) and points (primitives/point.hpp); every alternative provides
+// Segments (docs/mathematics.md §2), polygons (docs/mathematics.md §3), SCALIS segments and triangles
+// (docs/mathematics.md §4) and points (primitives/point.hpp); every alternative provides
 // value(), gradient() and value_and_gradient() at a Vec3.
 #pragma once
 

@@ -1,5 +1,5 @@
 // skelconv/primitives/scalis_compact.hpp — the SCALIS segment with the compact kernel
-// (SPEC §4, Zanni et al. 2013 §4.1–4.3): F and ∇F, exact to rounding.
+// (docs/mathematics.md §4, Zanni et al. 2013 §4.1–4.3): F and ∇F, exact to rounding.
 //
 // F(P) = ∫_0^1 K(|P − Γ(t)| / τ(t)) |AB| dt / τ(t),  K(d) = (1 − (d/σ)²)^(i/2)
 // for d < σ (else 0), τ(t) = τ0 + Δτ t, i = degree ∈ 2..10 (any i ≥ 2 works).

@@ -1,9 +1,9 @@
 // skelconv/primitives/scalis_segment.hpp — the SCALIS segment primitive: a
 // scale-invariant integral surface along a segment whose radius varies
-// linearly (SPEC §4, Zanni et al. 2013 §3–4).
+// linearly (docs/mathematics.md §4, Zanni et al. 2013 §3–4).
 //
 // With Γ(t) = A + t (B − A), the radius τ(t) = τ0 + (τ1 − τ0) t and the SCALIS
-// kernel K of scale σ (SPEC §1)
+// kernel K of scale σ (docs/mathematics.md §1)
 //
 //     inverse  K(d) = (d/σ)^(−i)
 //     cauchy   K(d) = (1 + (d/σ)²)^(−i/2)
@@ -56,7 +56,7 @@ template <class T>
 struct ScalisSegmentKernel;  // generated/scalis_segment_table.hpp
 }  // namespace generated
 
-/// A SCALIS kernel: family, degree i and scale σ (SPEC §1).
+/// A SCALIS kernel: family, degree i and scale σ (docs/mathematics.md §1).
 struct ScalisKernel {
   KernelFamily family = KernelFamily::cauchy;
   int degree = 4;

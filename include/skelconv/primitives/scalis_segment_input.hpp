@@ -1,13 +1,13 @@
 // skelconv/primitives/scalis_segment_input.hpp — the contract between the runtime and
-// the SCALIS segment kernels (SPEC §4, Zanni et al. 2013 §3–4).
+// the SCALIS segment kernels (docs/mathematics.md §4, Zanni et al. 2013 §3–4).
 //
 // A SCALIS segment [A,B] has the radius τ(t) = τ0 + (τ1 − τ0) t, t ∈ [0, 1],
-// and the SCALIS kernel K of SPEC §1 with scale σ. Every SCALIS segment
+// and the SCALIS kernel K of docs/mathematics.md §1 with scale σ. Every SCALIS segment
 // function computes the UNNORMALISED field
 //
 //     F(P) = ∫_0^1 K(|P − Γ(t)| / τ(t)) |AB| dt / τ(t),   Γ(t) = A + t (B − A)
 //
-// and/or ∇_P F. The runtime multiplies by c / h (SPEC §4) so that f = c at
+// and/or ∇_P F. The runtime multiplies by c / h (docs/mathematics.md §4) so that f = c at
 // distance τ from an infinite line of constant radius τ.
 #pragma once
 

@@ -1,10 +1,10 @@
 // skelconv/primitives/scalis_triangle.hpp — the SCALIS triangle primitive: a
 // scale-invariant integral surface over a triangle whose radius is given at
-// the vertices and interpolated linearly (SPEC §4, Zanni et al. 2013 §5.2,
+// the vertices and interpolated linearly (docs/mathematics.md §4, Zanni et al. 2013 §5.2,
 // eq. 15).
 //
 // With τ(Q) the barycentric interpolation of the vertex radii τ0, τ1, τ2 and
-// the SCALIS kernel K of scale σ (SPEC §1)
+// the SCALIS kernel K of scale σ (docs/mathematics.md §1)
 //
 //     inverse  K(d) = (d/σ)^(−i)
 //     cauchy   K(d) = (1 + (d/σ)²)^(−i/2)

@@ -1,5 +1,5 @@
 // skelconv/primitives/segment.hpp — the segment primitive: a convolution surface field
-// of a weighted line segment (SPEC §2, Hubert 2012 §3).
+// of a weighted line segment (docs/mathematics.md §2, Hubert 2012 §3).
 //
 //     f(P) = |AB| ∫_0^1 w(t) K(|P − Γ(t)|) dt,   Γ(t) = A + t (B − A)
 //

@@ -5,7 +5,7 @@
 //
 //     f(P) = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt,   Γ(t) = A + t (B − A)
 //
-// (SPEC §2), and/or ∇_P f. One struct for all families keeps the generated
+// (docs/mathematics.md §2), and/or ∇_P f. One struct for all families keeps the generated
 // table uniform: a family reads only the fields it needs.
 #pragma once
 
@@ -34,7 +34,7 @@ struct SegmentInput {
   T gaussian_b = T(1);  ///< Gaussian height b > 0 (gaussian only)
   /// Compact only: the part [t0, t1] ⊆ [0, 1] of the segment inside the ball
   /// of radius R around P (see skelconv/detail/clip.hpp). The kernel vanishes at a
-  /// clipped end, so the moving bounds add nothing to ∇f (SPEC §2).
+  /// clipped end, so the moving bounds add nothing to ∇f (docs/mathematics.md §2).
   T t0 = T(0);
   T t1 = T(1);
 };

@@ -1,5 +1,5 @@
 // skelconv/skeleton/blend.hpp — the blend operators of a skeleton's node
-// tree (SPEC §6, Ferley 1996 §2.2), f and ∇f by the exact chain rule, on any
+// tree (docs/mathematics.md §6, Ferley 1996 §2.2), f and ∇f by the exact chain rule, on any
 // scalar type.
 //
 // A skelconv field f has its surface at f = c (the iso value) and is larger
@@ -37,7 +37,7 @@
 // super_elliptic with "angle_weighted" (binary only, Ferley §2.2.3 after
 // Rockwood): r_k is replaced by r_k a, a = 1 − cos θ, θ the angle between
 // ∇V_1 and ∇V_2 (= the angle between ∇f_1 and ∇f_2); both terms are
-// subtracted (Ferley prints "+" before the second: a misprint, SPEC §9):
+// subtracted (Ferley prints "+" before the second: a misprint, docs/mathematics.md §9):
 //     f = c ([1 − V_1/(r_1 a)]₊^t + [1 − V_2/(r_2 a)]₊^t).
 // Where the children's surfaces are tangent (θ = 0) the band vanishes and
 // the blend is their union; at θ = 90° it is the plain blend; past 90° the

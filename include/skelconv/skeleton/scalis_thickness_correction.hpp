@@ -1,6 +1,6 @@
 // skelconv/skeleton/scalis_thickness_correction.hpp — the thickness
 // correction of Zanni et al. 2013 §5.1 on what the paper corrects: a graph of
-// SCALIS segments (SPEC §4) blended by their sum (docs/thickness_correction.md).
+// SCALIS segments (docs/mathematics.md §4) blended by their sum (docs/thickness_correction.md).
 //
 // A SCALIS segment of radius τ(t) has the thickness τ(t) only where it has
 // enough skeleton to integrate: at a free end of non-zero radius and at a
@@ -35,7 +35,7 @@
 //      with the exact derivative of the measured thickness.
 //
 // Why this variant: the paper mixes its point corrections by Barthe blends
-// whose operators it does not give (SPEC §6) and chooses their influence
+// whose operators it does not give (docs/mathematics.md §6) and chooses their influence
 // from the radius variation at the node (Figure 13). Here the points enter
 // the sum, and their weights and the ramps' hat weights are fitted to the
 // thickness the radii ask for. The ramps are classical segments because a

@@ -3,7 +3,7 @@
 // the graph nodes that need correction") for a graph of classical
 // convolution segments blended by their sum (docs/thickness_correction.md).
 //
-// A classical segment (SPEC §2) of constant weight w has, on a long straight
+// A classical segment (docs/mathematics.md §2) of constant weight w has, on a long straight
 // skeleton, a constant thickness r(w); where segments meet, their fields add
 // and the surface bulges (a fork, a corner), and at a free end half the
 // skeleton is missing and it thins. The correction:
@@ -37,7 +37,7 @@
 // Why this variant: the paper corrects SCALIS surfaces by point primitives
 // at the extremities and thickness maxima, whose weights are chosen from the
 // radius variation of the segments leaving the node (Figure 13), mixed by
-// Barthe blends whose operators the text does not give (SPEC §6). For
+// Barthe blends whose operators the text does not give (docs/mathematics.md §6). For
 // classical convolution with the sum blend the node weights and the point
 // weights enter the field linearly, so one local fit handles both the thin
 // free ends (a missing half-skeleton) and the bulging junctions (fields that
