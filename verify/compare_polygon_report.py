@@ -16,7 +16,9 @@ not only the generic one the sweep's own verdict asserts:
 - a cell whose exclusions went beyond the limits fails;
 - a cell only in NEW is listed as new and does not fail.
 
-Exit status 0 when nothing failed, 1 otherwise, 2 on unreadable input.
+Exit status 0 when nothing failed, 1 otherwise (with the line
+"CHECK-FAILED: worse or lost in regions: R, ..." naming every failing
+region), 2 on unreadable input.
 """
 import argparse
 import json
@@ -59,19 +61,23 @@ def main():
     parser.add_argument("--floor", type=float, default=16 * 2.0**-52, help="maxima below this never fail")
     args = parser.parse_args()
     base, new = cells(args.base), cells(args.new)
-    failed = 0
+    failed, regions = 0, set()
     for key, before in sorted(base.items()):
         if key not in new:
             print(f"  lost: {key[0]} i={key[1]} {key[2]} (in BASE, not in NEW)")
             failed += 1
+            regions.add(key[2])
             continue
         reasons = failures(before, new[key], args.factor, args.floor)
         if reasons:
             print(f"  worse: {key[0]} i={key[1]} {key[2]}: " + "; ".join(reasons))
             failed += 1
+            regions.add(key[2])
     for key in sorted(set(new) - set(base)):
         print(f"  new: {key[0]} i={key[1]} {key[2]} (not in BASE)")
     print(f"compare: {len(base)} cells compared, {failed} worse or lost, factor {args.factor}, floor {args.floor:.2e}")
+    if failed:
+        print(f"CHECK-FAILED: worse or lost in regions: {', '.join(sorted(regions))}")
     return 1 if failed else 0
 
 
