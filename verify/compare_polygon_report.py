@@ -15,6 +15,7 @@ not only the generic one the sweep's own verdict asserts:
 - any non-finite result where BASE had none fails;
 - a cell whose exclusions went beyond the limits fails;
 - a cell only in NEW is listed as new and does not fail.
+- a BASE without any cell fails (a comparison of nothing proves nothing).
 
 Exit status 0 when nothing failed, 1 otherwise (with the line
 "CHECK-FAILED: worse or lost in regions: R, ..." naming every failing
@@ -78,7 +79,9 @@ def main():
     print(f"compare: {len(base)} cells compared, {failed} worse or lost, factor {args.factor}, floor {args.floor:.2e}")
     if failed:
         print(f"CHECK-FAILED: worse or lost in regions: {', '.join(sorted(regions))}")
-    return 1 if failed else 0
+    if not base:
+        print(f"CHECK-FAILED: no cell compared: {args.base} holds none")
+    return 1 if failed or not base else 0
 
 
 if __name__ == "__main__":
