@@ -21,7 +21,7 @@ not a command (a span that does not start with one of the forms above).
     scripts/check_docs_commands.py BUILD_DIR [FILE.md ...]
 
 Exit status 0 when every command checks, 1 with one line per problem
-(file:line: what is wrong) otherwise.
+(file:line: what is wrong) and "CHECK-FAILED: N stale commands" otherwise.
 """
 from __future__ import annotations
 
@@ -141,6 +141,8 @@ def main(argv: list[str]) -> int:
     kinds = ", ".join(f"{n} {kind}" for kind, n in checker.checked.items())
     print(f"check_docs_commands: {len(files)} files, {count} code lines and spans, commands checked: {kinds}; "
           f"{len(checker.problems)} problems")
+    if checker.problems:
+        print(f"CHECK-FAILED: {len(checker.problems)} stale commands")
     return 1 if checker.problems else 0
 
 

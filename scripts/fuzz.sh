@@ -7,7 +7,8 @@
 # twice). Seeds and every input that once failed: tests/data/fuzz/NAME/
 # (libFuzzer replays them first); a new failing input is written to
 # build/fuzz/crashes/ and fails the run (fix the reader, then add the input
-# to tests/data/fuzz/NAME/). Part of README's main job; runs alone too.
+# to tests/data/fuzz/NAME/, which the ctests fuzz_replay_NAME replay in CI).
+# Part of README's main job; runs alone too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${SKELCONV_FUZZ_SECONDS:-30}"
@@ -19,11 +20,22 @@ declare -A sources=(
   [mesh_reader]="src/mesh/mesh_reader.cpp src/mesh/triangle_mesh.cpp src/errors.cpp"
   [point_lines]="src/cli/point_lines.cpp src/errors.cpp"
 )
+# The two compiles run side by side; each is waited for on its own and any
+# failure stops the run (a bare `wait` returns 0, and a stale binary from an
+# earlier run would then be fuzzed and reported clean), and the old binary is
+# removed first.
+declare -A compiles=()
 for name in mesh_reader point_lines; do
+  rm -f "$out/fuzz_$name"
   # shellcheck disable=SC2086  # the source list is split on purpose
   clang++-14 "${flags[@]}" "tests/fuzz/fuzz_${name}.cpp" ${sources[$name]} -lfmt -o "$out/fuzz_$name" &
+  compiles[$name]=$!
 done
-wait
+failed=0
+for name in mesh_reader point_lines; do
+  wait "${compiles[$name]}" || { echo "fuzz: the $name harness does not compile"; failed=1; }
+done
+[ "$failed" = 0 ] || exit 1
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 for name in mesh_reader point_lines; do

@@ -15,8 +15,11 @@ not only the generic one the sweep's own verdict asserts:
 - any non-finite result where BASE had none fails;
 - a cell whose exclusions went beyond the limits fails;
 - a cell only in NEW is listed as new and does not fail.
+- a BASE without any cell fails (a comparison of nothing proves nothing).
 
-Exit status 0 when nothing failed, 1 otherwise, 2 on unreadable input.
+Exit status 0 when nothing failed, 1 otherwise (with the line
+"CHECK-FAILED: worse or lost in regions: R, ..." naming every failing
+region), 2 on unreadable input.
 """
 import argparse
 import json
@@ -59,20 +62,26 @@ def main():
     parser.add_argument("--floor", type=float, default=16 * 2.0**-52, help="maxima below this never fail")
     args = parser.parse_args()
     base, new = cells(args.base), cells(args.new)
-    failed = 0
+    failed, regions = 0, set()
     for key, before in sorted(base.items()):
         if key not in new:
             print(f"  lost: {key[0]} i={key[1]} {key[2]} (in BASE, not in NEW)")
             failed += 1
+            regions.add(key[2])
             continue
         reasons = failures(before, new[key], args.factor, args.floor)
         if reasons:
             print(f"  worse: {key[0]} i={key[1]} {key[2]}: " + "; ".join(reasons))
             failed += 1
+            regions.add(key[2])
     for key in sorted(set(new) - set(base)):
         print(f"  new: {key[0]} i={key[1]} {key[2]} (not in BASE)")
     print(f"compare: {len(base)} cells compared, {failed} worse or lost, factor {args.factor}, floor {args.floor:.2e}")
-    return 1 if failed else 0
+    if failed:
+        print(f"CHECK-FAILED: worse or lost in regions: {', '.join(sorted(regions))}")
+    if not base:
+        print(f"CHECK-FAILED: no cell compared: {args.base} holds none")
+    return 1 if failed or not base else 0
 
 
 if __name__ == "__main__":

@@ -4,7 +4,8 @@
     worsen_polygon_report.py IN.json OUT.json REGION FACTOR
 
 Every cell of REGION gets its max_f multiplied by FACTOR: the purpose-built
-broken input that shows compare_polygon_report.py failing (ctest WILL_FAIL).
+broken input that shows compare_polygon_report.py failing on that region
+alone (ctest verify_compare_polygon_catches_worsened).
 """
 import json
 import sys

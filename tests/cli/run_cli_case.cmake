@@ -10,7 +10,9 @@
 #                       which must be four finite numbers "f gx gy gz"
 #   CASE_STDERR         if set: a substring of the expected error message
 # Failing cases must leave stdout empty and print exactly one line,
-# "skelconv: error: ...", on stderr.
+# "skelconv: error: ...", on stderr. A case that does not hold stops with
+# "CHECK-FAILED: <what differs>" (matched by the test of this checker,
+# cli_checker_refuses_truncated_output).
 cmake_minimum_required(VERSION 3.25)
 
 include(${CASE})
@@ -25,27 +27,27 @@ execute_process(
 set(report "skelconv ${CASE_ARGS} < ${CASE_STDIN}\nexit code: ${exit_code}\nstdout:\n${stdout}\nstderr:\n${stderr}")
 
 if(NOT exit_code STREQUAL CASE_EXIT)
-  message(FATAL_ERROR "expected exit code ${CASE_EXIT}\n${report}")
+  message(FATAL_ERROR "CHECK-FAILED: expected exit code ${CASE_EXIT}\n${report}")
 endif()
 
 if(NOT CASE_EXIT EQUAL 0)
   if(NOT stdout STREQUAL "")
-    message(FATAL_ERROR "a failing run must write nothing on stdout\n${report}")
+    message(FATAL_ERROR "CHECK-FAILED: a failing run must write nothing on stdout\n${report}")
   endif()
   if(NOT stderr MATCHES "^skelconv: error: [^\n]+\n$")
-    message(FATAL_ERROR "stderr must be one line \"skelconv: error: ...\"\n${report}")
+    message(FATAL_ERROR "CHECK-FAILED: stderr must be one line \"skelconv: error: ...\"\n${report}")
   endif()
 endif()
 
 if(DEFINED CASE_STDERR)
   string(FIND "${stderr}" "${CASE_STDERR}" found)
   if(found EQUAL -1)
-    message(FATAL_ERROR "stderr does not contain: ${CASE_STDERR}\n${report}")
+    message(FATAL_ERROR "CHECK-FAILED: stderr does not contain: ${CASE_STDERR}\n${report}")
   endif()
 endif()
 
 if(DEFINED CASE_STDOUT AND NOT stdout STREQUAL CASE_STDOUT)
-  message(FATAL_ERROR "stdout differs; expected:\n${CASE_STDOUT}\n${report}")
+  message(FATAL_ERROR "CHECK-FAILED: stdout differs; expected:\n${CASE_STDOUT}\n${report}")
 endif()
 
 if(DEFINED CASE_STDOUT_LINES)
@@ -54,11 +56,11 @@ if(DEFINED CASE_STDOUT_LINES)
   string(REGEX MATCHALL "[^\n]*\n" lines "${stdout}")
   list(LENGTH lines count)
   if(NOT count EQUAL CASE_STDOUT_LINES)
-    message(FATAL_ERROR "expected ${CASE_STDOUT_LINES} output lines, got ${count}\n${report}")
+    message(FATAL_ERROR "CHECK-FAILED: expected ${CASE_STDOUT_LINES} output lines, got ${count}\n${report}")
   endif()
   foreach(line IN LISTS lines)
     if(NOT line MATCHES "^${number} ${number} ${number} ${number}\n$")
-      message(FATAL_ERROR "not four finite numbers: ${line}\n${report}")
+      message(FATAL_ERROR "CHECK-FAILED: not four finite numbers: ${line}\n${report}")
     endif()
   endforeach()
 endif()

@@ -8,8 +8,10 @@
 #
 #   check_glsl_compiles.sh GLSL_FOLDER [--inject-fault]
 #
-# --inject-fault appends a call of an undeclared function to each shader: the
-# check must then fail (ctest glsl_compile_check_can_fail, WILL_FAIL).
+# --inject-fault checks copies of the files, each with one more kernel
+# function, which calls an undeclared function: the check must then fail on
+# every file and print "CHECK-FAILED: shader does not compile: ..." with the
+# validator's error (ctest glsl_compile_check_can_fail).
 set -euo pipefail
 folder=$1
 fault=${2:-}
@@ -25,6 +27,15 @@ files=("$folder"/*.glsl)
 if [ ${#files[@]} -eq 0 ]; then
   echo "check_glsl_compiles: no .glsl file in $folder" >&2
   exit 1
+fi
+if [ "$fault" = "--inject-fault" ]; then
+  mkdir "$scratch/faulty"
+  for file in "${files[@]}"; do
+    copy="$scratch/faulty/$(basename "$file")"
+    input=$(sed -n 's/^struct \([A-Za-z]*Input\) {$/\1/p' "$file" | head -1)
+    { cat "$file"; printf 'float injected_fault(%s x) {\n  return undeclared_kernel(0.0);\n}\n' "$input"; } > "$copy"
+  done
+  files=("$scratch/faulty"/*.glsl)
 fi
 status=0
 for file in "${files[@]}"; do
@@ -51,13 +62,13 @@ for file in "${files[@]}"; do
       echo "  vec3 grad = vec3(0.0);"
       for f in "${values[@]}"; do echo "  sum += $f;"; done
       for f in "${both[@]}"; do echo "  sum += $f + grad.x + grad.y + grad.z;"; done
-      [ "$fault" = "--inject-fault" ] && echo "  sum += undeclared_kernel(0.0);"
       echo "  colour = vec4(sum);"
       echo "}"
     } > "$shader"
     if "$validator" "$shader" > "$scratch/log" 2>&1; then
       echo "check_glsl_compiles: $(basename "$file") as GLSL $version: ${#values[@]} f and ${#both[@]} f+grad functions compile"
     else
+      echo "CHECK-FAILED: shader does not compile: $(basename "$file") as GLSL $version: $(grep -m1 '^ERROR:' "$scratch/log")"
       echo "check_glsl_compiles: $(basename "$file") as GLSL $version does not compile:" >&2
       head -20 "$scratch/log" >&2
       status=1

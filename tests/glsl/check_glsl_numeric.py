@@ -14,7 +14,11 @@ renderer SwiftShader (the GPU path: its own sqrt, exp, log, sinh); --backend
 cpu compiles them as C++ in float (glsl_as_cpp.hpp; no browser: the ctest
 glsl_numeric), where it also checks NAME_f beside NAME_f_and_grad.
 --break-kernel NAME multiplies that kernel's results by 1 + 1e-4, a fault
-the check must catch.
+the check must catch (NAME must be one of the kernels run).
+
+A segment's SegmentInput is made by the page's segment_input() (taken from
+src/view/view_march.glsl, --view-march): the compact clip [t0, t1] the
+shader computes is the one checked.
 
 Segments are drawn like the verifier's (verify/sampling.hpp): A uniform in
 [-2, 2]^3, |AB| log-uniform in [0.2, 5], weights uniform in [0.2, 2], Cauchy
@@ -42,8 +46,12 @@ r log-uniform in [0.1, 3]; supported kernels r uniform in [0.05, 0.95] R
 away from Ferley's e by 0.02 R; Gaussian a r^2 uniform in [0.01, 9]).
 
 Exit status 0 when every relative error (|f - f_ref| / |f_ref| and
-|g - g_ref| / |g_ref|) in the checked regions is at most the tolerance;
-prints the worst per family, degree and region, the reported regions too.
+|g - g_ref| / |g_ref|) in the checked regions is at most the tolerance and
+every checked region compared at least one point; prints the worst per
+family, degree and region, the reported regions too, and the points compared
+per region. A failure prints "CHECK-FAILED: f or grad f above the tolerance
+in kernels: NAME, ... (N of M points)" (every failing kernel, sorted) or
+"CHECK-FAILED: no point compared in region ...".
 """
 import argparse
 import html
@@ -75,14 +83,34 @@ def field_function(text, name):
     return m.group(0) if m else ""
 
 
-def kernels(folder):
+# The family code of a segment in the page's primitive rows (view_march.glsl:
+# texel 1's w); segment_input() clips AB to the support ball for code 1.
+SEGMENT_CODE = {"inverse": 0.0, "compact": 1.0, "cauchy": 2.0}
+VIEW_MARCH = pathlib.Path(__file__).resolve().parents[2] / "src" / "view" / "view_march.glsl"
+
+
+def view_segment_input(path):
+    """The page's Row and segment_input() (src/view/view_march.glsl), in a
+    guarded block of their own: the segments' inputs, and the compact clip,
+    come from the shader's code, not from this script."""
+    text = pathlib.Path(path).read_text()
+    row = re.search(r"^struct Row \{\n.*?^\};\n", text, re.M | re.S)
+    function = re.search(r"^SegmentInput segment_input\(Row r, vec3 p\) \{\n.*?^\}\n", text, re.M | re.S)
+    if not row or not function:
+        sys.exit(f"check_glsl_numeric: {path}: no struct Row or no segment_input(Row r, vec3 p)")
+    return ("#ifndef SKELCONV_VIEW_SEGMENT_INPUT\n#define SKELCONV_VIEW_SEGMENT_INPUT\n"
+            + row.group(0) + function.group(0) + "#endif\n")
+
+
+def kernels(folder, view_march):
     """(kind, family, degree, weight degree, name, source) of every kernel."""
     folder = pathlib.Path(folder)
+    segment_input = view_segment_input(view_march)
     for path in sorted(folder.glob("segment_*.glsl")):
         text = path.read_text()
         for m in FUNCTION.finditer(text):
             yield ("segment", m.group(2), int(m.group(3)), int(m.group(4)), m.group(1),
-                   guarded_blocks(text) + "\n" + field_function(text, m.group(1)) + m.group(0))
+                   guarded_blocks(text) + "\n" + segment_input + field_function(text, m.group(1)) + m.group(0))
     for path in sorted(folder.glob("scalis_segment_*.glsl")):
         text = path.read_text()
         for m in SCALIS_FUNCTION.finditer(text):
@@ -282,7 +310,7 @@ def reference(family, degree, wdeg, row):
     if family == "compact":
         c = clip(a, b, p, R)
         if c is None:
-            return 0.0, np.zeros(3), (1.0, 0.0)
+            return 0.0, np.zeros(3)
         lo, hi = c
     edges = np.linspace(lo, hi, 65) if family == "compact" else graded_edges(a, b, p)
     t = ((edges[:-1, None] + edges[1:, None]) / 2 + (edges[1:, None] - edges[:-1, None]) / 2 * NODES[None, :]).ravel()
@@ -293,13 +321,16 @@ def reference(family, degree, wdeg, row):
     length = np.linalg.norm(b - a)
     f = length * np.sum(wq * weight * q ** (-n / 2))
     g = -n * alpha * length * np.sum((wq * weight * q ** (-(n + 2) / 2))[:, None] * diff, axis=0)
-    return f, g, (lo, hi)
+    return f, g
 
 
-# The input of each kind from the texels t0 .. t4 (20 floats per row).
+# The input of each kind from the texels t0 .. t4 (20 floats per row). A
+# segment's row is A, B, P, w, s, R and the page's family code
+# (SEGMENT_CODE); its SegmentInput, with the compact clip [t0, t1], is made
+# by the page's own segment_input() (view_segment_input()).
 SETUP = {
-    "segment": "SegmentInput si; si.a = t0.xyz; si.b = vec3(t0.w, t1.xy); si.p = vec3(t1.zw, t2.x); "
-               "si.w = vec4(t2.yzw, t3.x); si.s = t3.y; si.R = t3.z; si.t0 = t3.w; si.t1 = t4.x;",
+    "segment": "Row r = Row(vec4(t0.xyz, 0.0), vec4(t0.w, t1.xy, t3.w), vec4(t2.yzw, t3.x), vec4(t3.y, t3.z, 1.0, 0.0)); "
+               "SegmentInput si = segment_input(r, vec3(t1.zw, t2.x));",
     "scalis": "ScalisSegmentInput si = ScalisSegmentInput(t0.xyz, vec3(t0.w, t1.xy), vec3(t1.zw, t2.x), t2.y, t2.z, t2.w);",
     "point": "PointInput si = PointInput(t0.xyz, vec3(t0.w, t1.xy), t1.z, t1.w, t2.x, t2.y, t2.z, t2.w, t3.x);",
 }
@@ -373,9 +404,9 @@ CHROMIUM_FLAGS = ["--headless=new", "--use-gl=angle", "--use-angle=swiftshader",
 # The inputs of each kind from the 20 floats of a row (`in`), for the cpu
 # backend (the same fields as SETUP).
 CPU_SETUP = {
-    "segment": "SegmentInput si; si.a = vec3(in[0], in[1], in[2]); si.b = vec3(in[3], in[4], in[5]); "
-               "si.p = vec3(in[6], in[7], in[8]); si.w = vec4(in[9], in[10], in[11], in[12]); si.s = in[13]; "
-               "si.R = in[14]; si.t0 = in[15]; si.t1 = in[16];",
+    "segment": "Row r{vec4(in[0], in[1], in[2], 0.0f), vec4(in[3], in[4], in[5], in[15]), "
+               "vec4(in[9], in[10], in[11], in[12]), vec4(in[13], in[14], 1.0f, 0.0f)}; "
+               "SegmentInput si = segment_input(r, vec3(in[6], in[7], in[8]));",
     "scalis": "ScalisSegmentInput si{vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), vec3(in[6], in[7], in[8]), "
               "in[9], in[10], in[11]};",
     "point": "PointInput si{vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), in[6], in[7], in[8], in[9], in[10], "
@@ -387,6 +418,9 @@ CPU_SETUP = {
 # a float in GLSL, a double in C++ (the suffix f keeps the arithmetic in
 # float).
 OUT_PARAMETER = re.compile(r"\b(?:out|inout) (float|vec3) (\w+)")
+# The swizzles of segment_input()'s row texels (r.t0 .. r.t3): .xyz a method
+# of glsl_as_cpp.hpp's vec4, one component an index.
+ROW_SWIZZLE = re.compile(r"\b(r\.t[0-3])\.(xyz|[xyzw])\b")
 ARRAY_INITIALISER = re.compile(r"float\[\d+\]\(([^;]*)\);", re.S)
 FLOAT_LITERAL = re.compile(r"(?<![\w.])(\d+\.\d*(?:[eE][+-]?\d+)?|\d+[eE][+-]?\d+)(?![\w.])")
 
@@ -396,6 +430,8 @@ def glsl_to_cpp(source):
     for line in source.splitlines():
         code, sep, comment = line.partition("//")
         code = OUT_PARAMETER.sub(r"\1& \2", code)
+        code = ROW_SWIZZLE.sub(lambda m: m.group(1) + (".xyz()" if m.group(2) == "xyz" else f"[{'xyzw'.index(m.group(2))}]"),
+                               code)
         out.append(FLOAT_LITERAL.sub(r"\1f", code) + sep + comment)
     return ARRAY_INITIALISER.sub(r"{\1};", "\n".join(out) + "\n")
 
@@ -468,7 +504,7 @@ def make_jobs(args):
     """The kernels' jobs (inputs) and their references, per region."""
     rng = np.random.default_rng(args.seed)
     jobs, refs = [], {}
-    for kind, family, degree, wdeg, name, source in kernels(args.folder):
+    for kind, family, degree, wdeg, name, source in kernels(args.folder, args.view_march):
         if not re.search(args.kernels, name):
             continue
         regions = args.regions + args.report_regions
@@ -477,8 +513,8 @@ def make_jobs(args):
             flat, expected = [], []
             if kind == "segment":
                 for row in draw(rng, family, args.points, region):
-                    f, g, (t0, t1) = reference(family, degree, wdeg, row)
-                    flat += list(row[:15]) + [t0, t1, 0.0, 0.0, 0.0]
+                    f, g = reference(family, degree, wdeg, row)
+                    flat += list(row[:15]) + [SEGMENT_CODE[family], 0.0, 0.0, 0.0, 0.0]
                     expected.append((f, g))
             else:
                 rows = (draw_scalis(rng, family, args.points, region) if kind == "scalis"
@@ -508,6 +544,7 @@ def main():
     ap.add_argument("--backend", choices=("chromium", "cpu"), default="chromium")
     ap.add_argument("--chromium", default="/usr/bin/chromium")
     ap.add_argument("--compiler", default="c++", help="C++ compiler of the cpu backend")
+    ap.add_argument("--view-march", default=str(VIEW_MARCH), help="the page's shader, for its segment_input()")
     ap.add_argument("--kernels", default="", help="only the kernels whose name matches this regular expression")
     ap.add_argument("--regions", default="beside,beyond,far",
                     help="segments: the regions checked against the tolerance, a comma-separated subset of " + ",".join(REGIONS))
@@ -535,11 +572,19 @@ def main():
     with tempfile.TemporaryDirectory() as scratch:
         results = (run_cpu(jobs, args.compiler, scratch) if args.backend == "cpu"
                    else run_chromium(jobs, args.chromium, scratch))
-    worst, per_degree, failures, count, out_of_range = {}, {}, 0, 0, {}
+    worst, per_degree, out_of_range = {}, {}, {}
+    compared = {}   # region: points compared against the tolerance
+    failing = {}    # kernel name: points above the tolerance
     width = 5 if args.backend == "cpu" else 4
-    for key, values in results.items():
-        family, degree, region, expected = refs[key]
+    for key, (family, degree, region, expected) in refs.items():
         checked = region not in args.report_regions
+        if checked:
+            compared.setdefault(region, 0)
+        values = results.get(key)
+        if values is None or len(values) < width * len(expected):
+            failing[key.split("@")[0]] = failing.get(key.split("@")[0], 0) + len(expected)
+            print(f"check_glsl_numeric: {key}: no result from the {args.backend} backend")
+            continue
         for k, (f, g) in enumerate(expected):
             if not all(FLOAT_RANGE[0] <= v <= FLOAT_RANGE[1] for v in (abs(f), np.linalg.norm(g)) if v != 0):
                 out_of_range[region] = out_of_range.get(region, 0) + 1
@@ -551,8 +596,10 @@ def main():
             eg = relative_error(got[1:4], g)
             ef, eg = (math.inf if e != e else e for e in (ef, eg))  # NaN: fails
             if checked:
-                count += 1
-                failures += not (ef <= args.tolerance and eg <= args.tolerance)
+                compared[region] += 1
+                if not (ef <= args.tolerance and eg <= args.tolerance):
+                    name = key.split("@")[0]
+                    failing[name] = failing.get(name, 0) + 1
             d = per_degree.setdefault((family, degree, region), [0.0, 0.0])
             d[0], d[1] = max(d[0], ef), max(d[1], eg)
             w = worst.setdefault((family, checked), [0.0, "", 0.0, ""])
@@ -574,9 +621,17 @@ def main():
         print(f"    {family:16s} i={degree:2d} {REGION_TITLE.get(region, region):14s} {ef:.1e} / {eg:.1e}{mark}")
     for region, n in sorted(out_of_range.items()):
         print(f"  {region}: {n} points left out, the reference outside [{FLOAT_RANGE[0]:g}, {FLOAT_RANGE[1]:g}]")
-    if failures:
-        print(f"check_glsl_numeric: {failures} of {count} checked points above the tolerance")
-    return 1 if failures else 0
+    # A check that compared nothing proves nothing: every checked region of
+    # the selected kernels must have compared points.
+    print("  points compared per checked region: "
+          + ", ".join(f"{REGION_TITLE.get(r, r)} {n}" for r, n in sorted(compared.items())))
+    empty = [r for r, n in sorted(compared.items()) if n == 0]
+    if empty or not compared:
+        print(f"CHECK-FAILED: no point compared in region {', '.join(empty) or '(none checked)'}")
+    if failing:
+        print(f"CHECK-FAILED: f or grad f above the tolerance in kernels: {', '.join(sorted(failing))} "
+              f"({sum(failing.values())} of {sum(compared.values())} points)")
+    return 1 if failing or empty or not compared else 0
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -1,8 +1,9 @@
 // tests/glsl/glsl_as_cpp.hpp — the part of GLSL that generated/glsl/ uses,
 // in C++ and IEEE single precision, so that check_glsl_numeric.py --backend
-// cpu can compile the generated files themselves (after two rewrites: `out`
+// cpu can compile the generated files themselves (after three rewrites: `out`
 // and `inout` parameters become references, a float[N](...) array
-// initialiser a braced list) and run them without a GPU.
+// initialiser a braced list, a swizzle of the page's row texels a method or
+// an index) and run them, and the page's segment_input(), without a GPU.
 //
 // What this measures is the forms' rounding in float: every operation
 // rounded once to float (x86-64 SSE, no excess precision; the script
@@ -29,6 +30,7 @@ struct vec4 {
   float v[4];
   vec4() : v{0, 0, 0, 0} {}
   vec4(float a, float b, float c, float d) : v{a, b, c, d} {}
+  vec3 xyz() const { return {v[0], v[1], v[2]}; }  // the swizzle .xyz
   float& operator[](int i) { return v[i]; }
   float operator[](int i) const { return v[i]; }
 };

@@ -19,8 +19,12 @@ passed in the page's query string; basis() in view_template.html).
 (SwiftShader on this machine's CPU: an upper bound for any GPU).
 --timing-only skips the silhouettes: only the frame time (--frames, default 10)
 of each page, the measurement of docs/view.md's table.
---inject-fault renders the page at 0.8 x the file's iso against the mesh of
-the file's iso: the check must then fail (the main job runs both).
+--inject-fault renders the page at 0.8 x the file's iso (the page's own iso
+parameter) against the mesh of the file's iso: the check must then fail, a
+page silhouette larger than the mesh's (the main job runs both).
+A view whose silhouettes differ prints "CHECK-FAILED: silhouette IoU ...
+below ..., page larger/smaller than the mesh: NAME view K"; a blank page or
+a mesh with no pixel prints "CHECK-FAILED: nothing to compare".
 --out DIR keeps the screenshots and mask images (PNG) there.
 Needs /usr/bin/chromium (Debian package chromium) and python3-numpy.
 """
@@ -148,6 +152,13 @@ def mesh_mask(vertices, faces, data, view, width, height):
     return mask
 
 
+def silhouette_iou(mesh, page):
+    """Intersection over union of two silhouettes (boolean masks); 0 when
+    both are empty."""
+    union = np.count_nonzero(mesh | page)
+    return np.count_nonzero(mesh & page) / union if union else 0.0
+
+
 def screenshot(chromium, page, query, width, height, png, profile, dump=False):
     url = pathlib.Path(page).resolve().as_uri() + "?" + query
     mode = ["--dump-dom"] if dump else [f"--screenshot={png}"]
@@ -197,11 +208,18 @@ def check_skeleton(args, skeleton, scratch, out):
         page_mask = (read_png(png)[:, :, 1:] < 250).any(axis=2)
         mask = mesh_mask(vertices, faces, data, (yaw, pitch, data["distance"]), width, height)
         write_mask_png(mask ^ page_mask, pathlib.Path(out) / f"{name}_view{k}_difference.png")
-        union = np.count_nonzero(mask | page_mask)
-        iou = np.count_nonzero(mask & page_mask) / union if union else 0.0
+        iou = silhouette_iou(mask, page_mask)
         worst = min(worst, iou)
+        page_px, mesh_px = np.count_nonzero(page_mask), np.count_nonzero(mask)
         print(f"check_view_browser: {name} view {k} (yaw {yaw}, pitch {pitch}): IoU {iou:.4f} "
-              f"(page {np.count_nonzero(page_mask)} px, mesh {np.count_nonzero(mask)} px)")
+              f"(page {page_px} px, mesh {mesh_px} px)")
+        # A blank page (a shader that failed) or an empty mesh compares
+        # nothing: a failure of its own, not a silhouette mismatch.
+        if page_px == 0 or mesh_px == 0:
+            print(f"CHECK-FAILED: nothing to compare: {name} view {k}: page {page_px} px, mesh {mesh_px} px")
+        elif iou < args.iou:
+            print(f"CHECK-FAILED: silhouette IoU {iou:.4f} below {args.iou}, page "
+                  f"{'larger' if page_px > mesh_px else 'smaller'} than the mesh: {name} view {k}")
     if args.frames:
         frame_time(args, page, data, name, scratch)
     return worst

@@ -24,8 +24,10 @@ For every file of BAD_FOLDER (invalid skeletons, tests/data/bad) the view
 must fail like `skelconv mesh` on the same file (the same message from the
 same reader, exit 2) and write nothing.
 
---inject-fault appends a call of an undeclared function to each extracted
-shader: the check must then fail (ctest view_pages_check_can_fail).
+--inject-fault writes a call of an undeclared function into the fragment
+shader of each ray-marched page skelconv wrote, before the page is read: the
+check must then fail at the compile, on every such page, and print
+"CHECK-FAILED: shader does not compile: ..." (ctest view_pages_check_can_fail).
 Python 3 standard library only.
 """
 import json
@@ -107,7 +109,18 @@ def compile_es300(shader, scratch, validator):
     return run.returncode == 0, run.stdout[-1500:] + run.stderr[-500:]
 
 
-def check_page(path, html, skeleton, terms, scratch, validator, fault):
+def inject_fault(page):
+    """The page file with a call of an undeclared function at the end of its
+    fragment shader: a page a broken `skelconv view` could have written."""
+    html = page.read_text()
+    match = SHADER.search(html)
+    if match:
+        end = match.end(1)
+        html = html[:end] + "void injected_fault() { undeclared_kernel(); }\n" + html[end:]
+    page.write_text(html)
+
+
+def check_page(path, html, skeleton, terms, scratch, validator):
     problems = []
     shader_match, data_match = SHADER.search(html), DATA.search(html)
     if not shader_match or not data_match:
@@ -140,10 +153,10 @@ def check_page(path, html, skeleton, terms, scratch, validator, fault):
                 r"return " + name + r"\(\w+_input\(r, p\), grad\)", shader_match.group(1)):
             problems.append(f"{path}: the shader does not call {name}")
     shader = shader_match.group(1).replace("<\\/", "</")
-    if fault:
-        shader = shader.rstrip() + "\nvoid injected_fault() { undeclared_kernel(); }\n"
     ok, log = compile_es300(shader, scratch, validator)
     if not ok:
+        error = next((line for line in log.splitlines() if line.startswith("ERROR:")), log.strip()[:200])
+        print(f"CHECK-FAILED: shader does not compile: {path}: {error}")
         problems.append(f"{path}: the page's shader does not compile as GLSL ES 3.00:\n{log}")
     return problems
 
@@ -201,7 +214,9 @@ def check_folder(skelconv, folder, scratch, validator, fault):
                 problems.append(f"{path.name}: skelconv view failed (status {run.returncode}): {run.stderr.strip()}")
                 continue
             shown += 1
-            problems += check_page(path.name, output.read_text(), skeleton, terms, scratch, validator, fault)
+            if fault:
+                inject_fault(output)
+            problems += check_page(path.name, output.read_text(), skeleton, terms, scratch, validator)
             if shown == 1:
                 # --mesh-preview: the preview even where the page could ray-march.
                 forced = subprocess.run([skelconv, "view", str(path), "-o", str(output), "--mesh-preview"],
@@ -215,10 +230,7 @@ def check_folder(skelconv, folder, scratch, validator, fault):
                 problems.append(f"{path.name}: expected a mesh preview (ray marcher refused at {refused_at}), got "
                                 f"status {run.returncode}, stderr {run.stderr.strip()!r}")
                 continue
-            found = check_preview(path.name, output.read_text(), refused_at, run.stdout)
-            if fault:
-                found.append(f"{path.name}: injected fault")
-            problems += found
+            problems += check_preview(path.name, output.read_text(), refused_at, run.stdout)
             print(f"check_view_pages: {path.name}: mesh preview, {output.stat().st_size} bytes, "
                   + run.stdout.strip().splitlines()[-1])
     if shown == 0:
