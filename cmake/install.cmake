@@ -19,6 +19,10 @@
 #   skelconv::mesh     iso-surface meshing (CGAL Mesh_3; OpenVDB in the module
 #                      lib/skelconv/libskelconv_grid_mesher.so, opened on use), PLY/OBJ
 #   skelconv::skelconv both: what <skelconv/skelconv.hpp> declares
+#   skelconv::reconstruct  skeletons from closed meshes (<skelconv/reconstruct/...>,
+#                      docs/reconstruction.md; CGAL's Delaunay, linked in)
+#   skelconv::canal    canal surfaces in the Lorentz space of spheres
+#                      (<skelconv/canal/...>, docs/canal.md)
 #   skelconv::kernels  the header-only generated kernels (templates on the scalar type)
 #   skelconv::segment_tables  the double segment table the runtime is built on
 #                      (linked by skelconv::runtime; the verifiers use it alone)
@@ -37,6 +41,8 @@ set_target_properties(skelconv_runtime PROPERTIES EXPORT_NAME runtime)
 set_target_properties(skelconv_segment_tables PROPERTIES EXPORT_NAME segment_tables)
 set_target_properties(skelconv_mesh PROPERTIES EXPORT_NAME mesh)
 set_target_properties(skelconv_kernels PROPERTIES EXPORT_NAME kernels)
+set_target_properties(skelconv_reconstruct PROPERTIES EXPORT_NAME reconstruct)
+set_target_properties(skelconv_canal PROPERTIES EXPORT_NAME canal)
 
 # The public headers: include/skelconv/ without detail/. detail/ holds the
 # internals (numerical helpers, no API); only those that an installed header
@@ -57,9 +63,16 @@ set(SKELCONV_INSTALLED_DETAIL_HEADERS
   scaled_frame.hpp
   stable_recurrence.hpp
   support_gap.hpp)
+# Every installed header belongs to an installed library. Not installed,
+# with their libraries: view/ (the HTML page of `skelconv view`, the
+# command's own) and simd/ (the Highway batches, docs/simd.md: a library
+# of the source tree, for the benchmarks; field/batch.hpp is the installed
+# way to evaluate many points).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/skelconv
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp"
-        PATTERN detail EXCLUDE)
+        PATTERN detail EXCLUDE
+        PATTERN view EXCLUDE
+        PATTERN simd EXCLUDE)
 list(TRANSFORM SKELCONV_INSTALLED_DETAIL_HEADERS
      PREPEND ${PROJECT_SOURCE_DIR}/include/skelconv/detail/
      OUTPUT_VARIABLE skelconv_detail_files)
@@ -68,15 +81,16 @@ install(FILES ${skelconv_detail_files}
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/generated
         DESTINATION ${SKELCONV_GENERATED_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 
-# The OBJECT library that confines CGAL to its own translation unit
-# (src/CMakeLists.txt) is linked privately into the static library; it is
-# exported for its link dependencies (CGAL's GMP), its objects are already
-# inside the archive. The OpenVDB module of the grid method is opened at run
+# The OBJECT libraries that confine CGAL to their own translation units
+# (src/CMakeLists.txt) are linked privately into the static libraries; they
+# are exported for their link dependencies (CGAL's GMP), their objects are
+# already inside the archives. The OpenVDB module of the grid method is opened at run
 # time from <libdir>/skelconv/ (src/mesh/grid_mesher_loader.cpp): installed
 # there, not linked.
 install(TARGETS skelconv_grid_mesher LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/skelconv)
 install(TARGETS skelconv_all skelconv_runtime skelconv_segment_tables skelconv_mesh skelconv_kernels
-                skelconv_planar_polygon skelconv_cgal_mesher
+                skelconv_reconstruct skelconv_canal
+                skelconv_planar_polygon skelconv_cgal_mesher skelconv_cgal_reconstruct
         EXPORT skelconv-targets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -2,7 +2,7 @@
 //
 //     import numpy as np, skelconv
 //     skeleton = skelconv.load_skeleton_file("skel.json")   # or parse_skeleton_json(text),
-//                                                           # or skelconv.Skeleton({...})
+//                                                           # or skelconv.Skeleton([...primitives...])
 //     f, grad = skeleton.field(np.array([[0.5, 0.2, 0.0]]))  # f: (N,), grad: (N, 3)
 //
 // Each call crosses into C++ once: the points are copied into the library's
@@ -12,38 +12,26 @@
 // skelconv.EvaluationError (an ArithmeticError) with the message the CLI
 // prints after "skelconv: error: "; a failing point is located at
 // "points[k]" where the CLI says "line N".
-#include <pybind11/numpy.h>
-#include <pybind11/pybind11.h>
+//
+// This file: the module, Skeleton, its field and its enclosures (`skelconv
+// eval`, `skelconv bound`); skeleton_nodes.cpp: skeletons from Python
+// values; mesh_bindings.cpp: meshing and reconstruction.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <array>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <optional>
 #include <string>
-#include <vector>
 
-#include <fmt/format.h>
-
+#include "bindings.hpp"
 #include "skelconv/skelconv.hpp"
-
-namespace py = pybind11;
 
 namespace skelconv::python {
 namespace {
-
-/// numpy float64, C order; anything convertible is converted (a list of
-/// lists, float32, a strided view).
-using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-/// Throws InputError located at `name` unless `array` is (N, columns).
-void require_rows_of(const DoubleArray& array, py::ssize_t columns, const char* name) {
-  if (array.ndim() == 2 && array.shape(1) == columns) return;
-  std::string shape;
-  for (py::ssize_t k = 0; k < array.ndim(); ++k) shape += fmt::format("{}{}", k ? ", " : "", array.shape(k));
-  if (array.ndim() == 1) shape += ",";
-  throw InputError(fmt::format("must be an (N, {}) array of numbers, got shape ({})", columns, shape), name);
-}
 
 /// f (N,) and ∇f (N, 3) at the rows of `points`, through evaluate_batch.
 py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned threads) {
@@ -65,10 +53,18 @@ py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned th
   return py::make_tuple(values, gradients);
 }
 
+/// Throws InputError ("iso") for a given iso that is not finite, as `skelconv bound --iso`.
+void require_finite_iso(std::optional<double> iso) {
+  if (iso && !std::isfinite(*iso)) throw InputError("must be finite", "iso");
+}
+
 /// Sound enclosures [lo, hi] of f over the boxes (rows x0 y0 z0 x1 y1 z1),
-/// as `skelconv bound` (docs/bound.md).
-py::tuple bound(const Skeleton& skeleton, const DoubleArray& boxes) {
+/// as `skelconv bound` (docs/bound.md); with `iso`, also each box's
+/// classification against it ("inside", "outside", "undetermined"), as
+/// `skelconv bound --iso`.
+py::tuple bound(const Skeleton& skeleton, const DoubleArray& boxes, std::optional<double> iso) {
   require_rows_of(boxes, 6, "boxes");
+  require_finite_iso(iso);
   const auto n = static_cast<std::size_t>(boxes.shape(0));
   DoubleArray lo(static_cast<py::ssize_t>(n)), hi(static_cast<py::ssize_t>(n));
   const double* in = boxes.data();
@@ -86,58 +82,43 @@ py::tuple bound(const Skeleton& skeleton, const DoubleArray& boxes) {
       }
     }
   }
-  return py::make_tuple(lo, hi);
-}
-
-/// A TriangleMesh as numpy arrays: vertices (V, 3), triangles (T, 3) int32
-/// (counter-clockwise seen from outside), normals (V, 3).
-py::tuple mesh_arrays(const TriangleMesh& mesh) {
-  const auto v = static_cast<py::ssize_t>(mesh.vertices.size());
-  const auto t = static_cast<py::ssize_t>(mesh.triangles.size());
-  DoubleArray vertices({v, py::ssize_t(3)}), normals({v, py::ssize_t(3)});
-  py::array_t<std::int32_t> triangles({t, py::ssize_t(3)});
-  for (py::ssize_t k = 0; k < v; ++k) {
-    for (int c = 0; c < 3; ++c) {
-      vertices.mutable_at(k, c) = mesh.vertices[k][c];
-      normals.mutable_at(k, c) = mesh.normals.empty() ? 0.0 : mesh.normals[k][c];
-    }
+  if (!iso) return py::make_tuple(lo, hi);
+  py::list names;
+  for (std::size_t k = 0; k < n; ++k) {
+    const interval::Interval f(out_lo[k], out_hi[k]);
+    names.append(interval::classification_name(interval::classify(f, *iso)));
   }
-  for (py::ssize_t k = 0; k < t; ++k)
-    for (int c = 0; c < 3; ++c) triangles.mutable_at(k, c) = mesh.triangles[k][c];
-  return py::make_tuple(vertices, triangles, normals);
+  return py::make_tuple(lo, hi, py::module_::import("numpy").attr("array")(names, py::arg("dtype") = "U12"));
 }
 
-/// The surface f = iso (default: the skeleton's iso), as `skelconv mesh`.
-py::tuple mesh(const Skeleton& skeleton, std::optional<double> iso, const std::string& method,
-               std::optional<double> size, std::optional<double> distance) {
-  if (method != "cgal" && method != "grid")
-    throw InputError(fmt::format("{} not in {{cgal,grid}}", method), "method");
-  MeshOptions options;
-  options.iso = iso.value_or(skeleton.iso());
-  options.method = method == "grid" ? MeshMethod::grid : MeshMethod::cgal;
-  options.size = size;
-  options.distance = distance;
-  TriangleMesh result;
+/// Cells of an octree over `box` classified against iso (default the
+/// skeleton's), as `skelconv bound --octree DEPTH --box ...`: an
+/// (depth + 1, 3) int64 array, row d = inside, outside, undetermined cells
+/// of level d.
+py::array_t<std::int64_t> octree(const Skeleton& skeleton, const std::array<double, 6>& corners, int depth,
+                                 std::optional<double> iso) {
+  require_finite_iso(iso);
+  interval::Box box;
+  try {
+    box = interval::box_from_corners(corners);
+  } catch (const InputError& error) {
+    throw InputError(error.what(), "box");
+  }
+  if (depth < 0 || depth > interval::max_octree_depth)
+    throw InputError(fmt::format("must be 0..{}, got {}", interval::max_octree_depth, depth), "depth");
+  std::vector<interval::LevelCounts> counts;
   {
     py::gil_scoped_release release;
-    result = mesh_iso_surface(skeleton_field(skeleton), options);
+    counts = interval::classify_octree(skeleton, box, depth, iso.value_or(skeleton.iso()));
   }
-  return mesh_arrays(result);
-}
-
-/// A Skeleton from Python objects: the skeleton file's schema (docs/cli_skeleton.md)
-/// as dicts and lists (numpy arrays allowed), or just the list of
-/// primitives. Read by the same JSON reader, so the same checks and messages.
-Skeleton skeleton_from_objects(const py::object& data) {
-  const py::module_ json = py::module_::import("json");
-  const py::object skeleton_dict = py::isinstance<py::dict>(data) ? data : py::object(py::dict(py::arg("primitives") = data));
-  const py::cpp_function to_list([](const py::object& value) -> py::object {
-    if (py::hasattr(value, "tolist")) return value.attr("tolist")();
-    throw InputError(fmt::format("cannot be written as JSON: {}", py::str(py::type::of(value)).cast<std::string>()),
-                     "skeleton");
-  });
-  const std::string text = json.attr("dumps")(skeleton_dict, py::arg("default") = to_list).cast<std::string>();
-  return parse_skeleton_json(text);
+  py::array_t<std::int64_t> result({static_cast<py::ssize_t>(counts.size()), py::ssize_t(3)});
+  for (std::size_t level = 0; level < counts.size(); ++level) {
+    const auto row = static_cast<py::ssize_t>(level);
+    result.mutable_at(row, 0) = static_cast<std::int64_t>(counts[level].inside);
+    result.mutable_at(row, 1) = static_cast<std::int64_t>(counts[level].outside);
+    result.mutable_at(row, 2) = static_cast<std::int64_t>(counts[level].undetermined);
+  }
+  return result;
 }
 
 }  // namespace
@@ -152,15 +133,20 @@ PYBIND11_MODULE(skelconv, m) {
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<EvaluationError>(m, "EvaluationError", PyExc_ArithmeticError);
 
-  py::class_<Skeleton>(m, "Skeleton", "A skeleton: primitives and blend nodes, and the field they define.")
-      .def(py::init<>(), "An empty skeleton (f = 0).")
-      .def(py::init(&skeleton_from_objects), py::arg("data"),
-           "From Python objects: a dict with the skeleton file's schema ({\"primitives\": [...], \"iso\": 1}) "
-           "or the list of primitives; numbers may be numpy arrays.")
+  add_skeleton_nodes(m);
+
+  py::class_<Skeleton> skeleton(m, "Skeleton", "A skeleton: primitives and blend nodes, and the field they define.");
+  skeleton.def(py::init<>(), "An empty skeleton (f = 0).")
+      .def(py::init(&skeleton_from_objects), py::arg("data"), py::arg("iso") = py::none(),
+           "From Python values: a list of primitives and blend nodes (Segment, Point, Blend, ... or dicts in the "
+           "skeleton file's schema), or a dict of the whole file ({\"primitives\": [...], \"iso\": 1}); numbers "
+           "may be numpy arrays. iso: the level of the surface (default the dict's, else 1). Read by the file "
+           "reader: the same checks and messages.")
       .def("__len__", &Skeleton::size, "The number of primitives.")
       .def_property_readonly("iso", &Skeleton::iso, "The level of the surface (the file's \"iso\", default 1).")
       .def("field", &field, py::arg("points"), py::arg("threads") = 0u,
-           "f (N,) and grad f (N, 3) at the rows of an (N, 3) array, on `threads` cores (0: all).")
+           "f (N,) and grad f (N, 3) at the rows of an (N, 3) array, on `threads` cores (0: all), as "
+           "`skelconv eval`.")
       .def(
           "value_and_gradient",
           [](const Skeleton& skeleton, const std::array<double, 3>& p) {
@@ -168,11 +154,15 @@ PYBIND11_MODULE(skelconv, m) {
             return py::make_tuple(sample.value, DoubleArray(3, sample.gradient.data()));
           },
           py::arg("point"), "f and grad f (3,) at one point.")
-      .def("bound", &bound, py::arg("boxes"),
-           "Sound enclosures (lo (N,), hi (N,)) of f over the boxes, rows x0 y0 z0 x1 y1 z1 (docs/bound.md).")
-      .def("mesh", &mesh, py::arg("iso") = py::none(), py::arg("method") = "cgal", py::arg("size") = py::none(),
-           py::arg("distance") = py::none(),
-           "The surface f = iso: (vertices (V, 3), triangles (T, 3) int32, normals (V, 3)) (docs/mesh.md).");
+      .def("bound", &bound, py::arg("boxes"), py::arg("iso") = py::none(),
+           "Sound enclosures (lo (N,), hi (N,)) of f over the boxes, rows x0 y0 z0 x1 y1 z1, as `skelconv bound` "
+           "(docs/bound.md). With iso: (lo, hi, labels), labels[k] \"inside\" (lo > iso), \"outside\" (hi < iso) "
+           "or \"undetermined\".")
+      .def("octree", &octree, py::arg("box"), py::arg("depth"), py::arg("iso") = py::none(),
+           "Classifies an octree of the box [x0, y0, z0, x1, y1, z1] against iso (default the skeleton's), as "
+           "`skelconv bound --octree DEPTH --box ...`: an (depth + 1, 3) int64 array, row d = the inside, "
+           "outside and undetermined cells of level d (those of level d + 1 split the undetermined ones).");
+  add_mesh_bindings(m, skeleton);
 
   m.def("parse_skeleton_json", &parse_skeleton_json, py::arg("text"), "A Skeleton from the JSON text of a skeleton file.");
   m.def(

@@ -23,6 +23,7 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev  # skelconv mesh --method grid (OpenVDB volumeToMesh; its CMake module needs Boost.Iostreams)
   glslang-tools           # tests/glsl: glslangValidator compiles generated/glsl as GLSL ES 3.00 (WebGL2) and 4.50 (ctest glsl_compiles)
   pybind11-dev python3-pybind11 python3-dev  # python/: the `import skelconv` module (pybind11 headers and CMake config, Python.h); its tests need python3-numpy
+  python3-setuptools python3-wheel python3-venv  # `pip install --no-build-isolation .` (pyproject.toml, setup.py: the build backend) into a venv (docs/python.md)
 )
 # Only the check suite (scripts/checks.sh, --checks) runs these; CI and the main job do not install them.
 if [ "${1:-}" = "--checks" ]; then

@@ -159,6 +159,70 @@ class SkeletonFromText(unittest.TestCase):
         self.assertEqual(len(skelconv.Skeleton()), 0)
 
 
+PRIMITIVE_CLASSES = {"segment": skelconv.Segment, "polygon": skelconv.Polygon,
+                     "scalis_segment": skelconv.ScalisSegment, "scalis_triangle": skelconv.ScalisTriangle,
+                     "point": skelconv.Point}
+
+
+def node_from_file_object(node):
+    """The module's object for one primitive or blend node of a skeleton file."""
+    fields = dict(node)
+    if "blend" in fields:
+        kind = fields.pop("blend")
+        children = [node_from_file_object(child) for child in fields.pop("children")]
+        return skelconv.Blend(kind, children, **fields)
+    return PRIMITIVE_CLASSES[fields.pop("type")](**fields)
+
+
+class PrimitivesFromPythonValues(unittest.TestCase):
+    def test_every_good_skeleton_rebuilt_from_objects(self):
+        # Each file's primitives and blend nodes made by the module's classes:
+        # the field equals the command's on the file itself.
+        for k, path in enumerate(GOOD):
+            with self.subTest(skeleton=os.path.basename(path)):
+                with open(path, encoding="utf-8") as f:
+                    data = json.load(f)
+                nodes = [node_from_file_object(node) for node in data["primitives"]]
+                skeleton = skelconv.Skeleton(nodes, iso=data.get("iso"))
+                self.assertEqual(skeleton.iso, data.get("iso", 1))
+                points = random_points(path, 100, seed=100 + k)
+                status, out, message = run_cli("eval", path, stdin=rows_text(points))
+                self.assertEqual(status, 0, message)
+                expected = cli_numbers(out, 4)
+                f, grad = skeleton.field(points)
+                np.testing.assert_array_equal(f, expected[:, 0])
+                np.testing.assert_array_equal(grad, expected[:, 1:])
+                self.assertEqual([n.data for n in nodes], data["primitives"])
+
+    def test_numpy_values_and_repr(self):
+        segment = skelconv.Segment(np.zeros(3), np.array([1.0, 0, 0]),
+                                   {"family": "cauchy", "degree": np.int64(4), "s": np.float32(2)}, weight=[1, 0.5])
+        self.assertEqual(segment.data, {"type": "segment", "a": [0.0, 0.0, 0.0], "b": [1.0, 0.0, 0.0],
+                                        "kernel": {"family": "cauchy", "degree": 4, "s": 2.0}, "weight": [1, 0.5]})
+        self.assertTrue(repr(segment).startswith('skelconv.Segment({"type": "segment"'))
+        self.assertIsInstance(segment, skelconv.Node)
+        blend = skelconv.Blend("union", [segment, skelconv.Point([2, 0, 0], {"family": "soft", "R": 1.5})])
+        self.assertEqual(len(skelconv.Skeleton([blend])), 2)
+        self.assertEqual(len(skelconv.Skeleton(segment)), 1)
+
+    def test_errors_are_the_readers_at_the_argument(self):
+        # compact_R_negative.json's third segment, made alone: the file's
+        # message, located at the argument instead of the file's path.
+        path = os.path.join(DATA, "bad", "compact_R_negative.json")
+        _, _, message = run_cli("eval", path, stdin="0 0 0\n")
+        prefix = path + ": primitives[2]."
+        self.assertTrue(message.startswith(prefix), message)
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.Segment([0, 2, 0], [1, 2, 1], {"family": "compact", "degree": 6, "R": -1})
+        self.assertEqual(str(raised.exception), message[len(prefix):])
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.Blend("super_elliptic", [skelconv.Point([0, 0, 0], {"family": "soft", "R": 1})], t=0, r=1)
+        self.assertEqual(str(raised.exception), "t: must be > 0, got 0")
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.Point([0, 0, 0], {"family": "soft", "R": 1, "s": 2})
+        self.assertTrue(str(raised.exception).startswith("kernel.s: "), str(raised.exception))
+
+
 class ErrorsCarryTheCliMessage(unittest.TestCase):
     def test_every_bad_skeleton_file(self):
         bad = sorted(glob.glob(os.path.join(DATA, "bad", "*.json")))
@@ -233,6 +297,49 @@ class BoundAgreesWithCli(unittest.TestCase):
         self.assertEqual(str(raised.exception), "boxes[1]: " + message[len("line 2: "):])
 
 
+class BoundIsoAndOctreeAgreeWithCli(unittest.TestCase):
+    def test_classification(self):
+        path = os.path.join(DATA, "good", "three_primitives.json")
+        rng = np.random.default_rng(4)
+        lo = random_points(path, 60, seed=4)
+        boxes = np.hstack([lo, lo + 0.5 * rng.random((60, 3))])
+        status, out, message = run_cli("bound", path, "--iso", "0.3", stdin=rows_text(boxes))
+        self.assertEqual(status, 0, message)
+        got_lo, got_hi, labels = skelconv.load_skeleton_file(path).bound(boxes, iso=0.3)
+        expected = [line.split() for line in out.splitlines()]
+        np.testing.assert_array_equal(got_lo, [float(e[0]) for e in expected])
+        np.testing.assert_array_equal(got_hi, [float(e[1]) for e in expected])
+        self.assertEqual(list(labels), [e[2] for e in expected])
+        self.assertEqual(len(set(labels)), 3, "every classification occurs")
+
+    def test_octree(self):
+        path = os.path.join(DATA, "mesh", "ring.json")
+        box = [-2.5, -2.5, -1.5, 2.5, 2.5, 1.5]
+        status, out, message = run_cli("bound", path, "--octree", "4", "--iso", "0.38", "--box", *map(str, box))
+        self.assertEqual(status, 0, message)
+        expected = np.array([[int(x) for x in line.split()[1:]] for line in out.splitlines()])
+        got = skelconv.load_skeleton_file(path).octree(box, 4, iso=0.38)
+        self.assertEqual(got.shape, (5, 3))
+        np.testing.assert_array_equal(got, expected)
+
+    def test_bad_octree_arguments(self):
+        path = os.path.join(DATA, "mesh", "ring.json")
+        skeleton = skelconv.load_skeleton_file(path)
+        box = ["0", "0", "0", "1", "1", "1"]
+        _, _, message = run_cli("bound", path, "--octree", "11", "--box", *box)
+        with self.assertRaises(skelconv.InputError) as raised:
+            skeleton.octree([0, 0, 0, 1, 1, 1], 11)
+        self.assertEqual("--octree: " + str(raised.exception)[len("depth: "):], message)
+        _, _, message = run_cli("bound", path, "--octree", "2", "--box", "1", "0", "0", "0", "1", "1")
+        with self.assertRaises(skelconv.InputError) as raised:
+            skeleton.octree([1, 0, 0, 0, 1, 1], 2)
+        self.assertEqual("--" + str(raised.exception), message)
+        _, _, message = run_cli("bound", path, "--iso", "inf", stdin="0 0 0 1 1 1\n")
+        with self.assertRaises(skelconv.InputError) as raised:
+            skeleton.bound([[0, 0, 0, 1, 1, 1]], iso=float("inf"))
+        self.assertEqual("--" + str(raised.exception), message)
+
+
 def read_ascii_ply(path):
     with open(path, encoding="ascii") as f:
         lines = f.read().splitlines()
@@ -261,12 +368,131 @@ class MeshAgreesWithCli(unittest.TestCase):
                 np.testing.assert_array_equal(triangles, expected[1])
                 np.testing.assert_array_equal(normals, expected[2])
 
+    def test_topology_and_max_triangles(self):
+        path = os.path.join(DATA, "mesh", "ring.json")
+        skeleton = skelconv.load_skeleton_file(path)
+        with tempfile.TemporaryDirectory() as tmp:
+            status, out, message = run_cli("mesh", path, "--iso", "0.38", "--size", "0.2", "--quiet",
+                                           "-o", os.path.join(tmp, "ring.ply"))
+        self.assertEqual(status, 0, message)
+        printed = dict(line.split(": ", 1) for line in out.splitlines())
+        vertices, triangles, _ = skeleton.mesh(iso=0.38, size=0.2)
+        topology = skelconv.mesh_topology(vertices, triangles)
+        for key in ("triangles", "vertices", "components", "euler_characteristic"):
+            self.assertEqual(str(topology[key]), printed[key], key)
+        for key in ("closed", "manifold"):
+            self.assertEqual("yes" if topology[key] else "no", printed[key], key)
+        self.assertEqual(topology["euler_characteristic"], 0)  # a torus
+        _, _, message = run_cli("mesh", path, "--iso", "0.38", "--size", "0.01", "--max-triangles", "1000",
+                                "--quiet", "-o", os.path.join(DATA, "unused.ply"))
+        with self.assertRaises(skelconv.InputError) as raised:
+            skeleton.mesh(iso=0.38, size=0.01, max_triangles=1000)
+        # The library locates it at the option, "--size"; the module at the argument.
+        self.assertEqual("--" + str(raised.exception), message)
+
+    def test_no_surface(self):
+        path = os.path.join(DATA, "mesh", "ring.json")
+        _, _, message = run_cli("mesh", path, "--iso", "1000", "--quiet", "-o", os.path.join(DATA, "unused.ply"))
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.load_skeleton_file(path).mesh(iso=1000)
+        self.assertEqual(str(raised.exception), message)
+
+    def test_bad_topology_input(self):
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.mesh_topology(np.zeros((3, 3)), [[0, 1, 3]])
+        self.assertEqual(str(raised.exception), "triangles[0]: vertex index 3 outside [0, 3)")
+
     def test_bad_method(self):
         skeleton = skelconv.load_skeleton_file(os.path.join(DATA, "mesh", "ring.json"))
         with self.assertRaises(skelconv.InputError) as raised:
             skeleton.mesh(iso=0.38, method="marching")
         # The CLI says "--method: marching not in {cgal,grid}".
         self.assertEqual(str(raised.exception), "method: marching not in {cgal,grid}")
+
+
+PLY_TYPES = {"float": "<f4", "double": "<f8", "int": "<i4", "uchar": "u1", "uint": "<u4"}
+
+
+def read_ply_or_off(path):
+    """Vertices (V, 3) and triangles (T, 3) of an OFF or PLY file of triangles
+    (ASCII, or binary little-endian with one vertex element of scalar properties)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if not data.startswith(b"ply"):
+        lines = [l.split(b"#")[0].split() for l in data.splitlines()]
+        lines = [l for l in lines if l]
+        assert lines[0] == [b"OFF"]
+        v, t = int(lines[1][0]), int(lines[1][1])
+        vertices = np.array([[float(x) for x in l[:3]] for l in lines[2:2 + v]])
+        return vertices, np.array([[int(x) for x in l[1:4]] for l in lines[2 + v:2 + v + t]])
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = [l.split() for l in data[:end].decode("ascii").splitlines()]
+    v = int(next(l for l in header if l[:2] == ["element", "vertex"])[2])
+    t = int(next(l for l in header if l[:2] == ["element", "face"])[2])
+    if ["format", "ascii", "1.0"] in header:
+        body = [l.split() for l in data[end:].decode("ascii").splitlines() if l.strip()]
+        vertices = np.array([[float(x) for x in l[:3]] for l in body[:v]])
+        return vertices, np.array([[int(x) for x in l[1:4]] for l in body[v:v + t]])
+    first_face = next(k for k, l in enumerate(header) if l[:2] == ["element", "face"])
+    properties = [l for l in header if l[0] == "property"]
+    vertex_type = np.dtype([(l[2], PLY_TYPES[l[1]]) for l in header[:first_face] if l[0] == "property"])
+    _, _, count, index, _ = next(l for l in header[first_face:] if l[:2] == ["property", "list"])
+    face_type = np.dtype([("n", PLY_TYPES[count]), ("i", PLY_TYPES[index], 3)])
+    assert len(properties) == len(vertex_type.names) + 1, "one vertex element, then the faces"
+    vertex_rows = np.frombuffer(data, vertex_type, v, end)
+    faces = np.frombuffer(data, face_type, t, end + v * vertex_type.itemsize)
+    assert (faces["n"] == 3).all()
+    return np.stack([vertex_rows["x"], vertex_rows["y"], vertex_rows["z"]], axis=1).astype(float), faces["i"]
+
+
+class SkeletonizeAgreesWithCli(unittest.TestCase):
+    CASES = (("segment.ply", {}, ()),
+             ("tetrahedron.off", {"method": "curve"}, ("--method", "curve")),
+             ("tetrahedron.off", {"method": "medial", "budget": 40}, ("--method", "medial", "--budget", "40")))
+
+    def test_same_skeleton_as_the_command(self):
+        for name, arguments, options in self.CASES:
+            with self.subTest(mesh=name, options=options), tempfile.TemporaryDirectory() as tmp:
+                path = os.path.join(DATA, "reconstruct", name)
+                out = os.path.join(tmp, "skeleton.json")
+                status, _, message = run_cli("skeletonize", path, "-o", out, "--quiet", *options)
+                self.assertEqual(status, 0, message)
+                expected = skelconv.load_skeleton_file(out)
+                vertices, triangles = read_ply_or_off(path)
+                got = skelconv.skeletonize(vertices, triangles, **arguments)
+                self.assertGreater(len(got), 0)
+                self.assertEqual(len(got), len(expected))
+                self.assertEqual(got.iso, expected.iso)
+                points = vertices.min(axis=0) + (vertices.max(axis=0) - vertices.min(axis=0)) * \
+                    np.random.default_rng(9).random((200, 3))
+                for a, b in zip(got.field(points), expected.field(points)):
+                    np.testing.assert_array_equal(a, b)
+
+    def test_errors(self):
+        path = os.path.join(DATA, "reconstruct", "open_grid.obj")
+        _, _, message = run_cli("skeletonize", path, "-o", os.path.join(DATA, "unused.json"), "--quiet")
+        with open(path, encoding="ascii") as f:
+            words = [l.split() for l in f if l.strip() and not l.startswith("#")]
+        vertices = np.array([[float(x) for x in w[1:4]] for w in words if w[0] == "v"])
+        faces = [[int(x) - 1 for x in w[1:]] for w in words if w[0] == "f"]
+        triangles = np.array([[f[0], f[k], f[k + 1]] for f in faces for k in range(1, len(f) - 1)])
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.skeletonize(vertices, triangles)
+        self.assertEqual(path + ": " + str(raised.exception), message)
+
+        path = os.path.join(DATA, "reconstruct", "segment.ply")
+        vertices, triangles = read_ply_or_off(path)
+        _, _, message = run_cli("skeletonize", path, "-o", os.path.join(DATA, "unused.json"), "--quiet",
+                                "--prune-angle", "180")
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.skeletonize(vertices, triangles, prune_angle=180)
+        self.assertEqual(str(raised.exception), "prune_angle: " + message[len("--prune-angle: "):])
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.skeletonize(vertices, triangles + len(vertices))
+        self.assertTrue(str(raised.exception).startswith("triangles[0]: vertex index "), str(raised.exception))
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.skeletonize(vertices, triangles, max_triangles=10)
+        self.assertIn("more than the limit 10 (--max-triangles)", str(raised.exception))
 
 
 if __name__ == "__main__":

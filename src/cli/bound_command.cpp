@@ -18,10 +18,6 @@
 namespace skelconv::cli {
 namespace {
 
-/// Deepest octree: 8 levels already means up to 8^8 cells near a surface
-/// of fractal area; 10 keeps a run within minutes.
-constexpr int max_octree_depth = 10;
-
 /// Parses one line; nullopt for a blank one.
 std::optional<interval::Box> parse_box_line(std::string_view line) {
   std::vector<double> values;
@@ -84,8 +80,8 @@ std::string octree_lines(const Skeleton& skeleton, const BoundOptions& options) 
     throw InputError(error.what(), "--box");
   }
   const int depth = *options.octree_depth;
-  if (depth < 0 || depth > max_octree_depth) {
-    throw InputError(fmt::format("must be 0..{}, got {}", max_octree_depth, depth), "--octree");
+  if (depth < 0 || depth > interval::max_octree_depth) {
+    throw InputError(fmt::format("must be 0..{}, got {}", interval::max_octree_depth, depth), "--octree");
   }
   const double iso = options.iso.value_or(skeleton.iso());
   std::string output;

@@ -160,14 +160,8 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       std::fprintf(stderr, "skelconv skeletonize: %.*s\n", int(line.size()), line.data());
     };
     const TriangleMesh input = read_mesh(options.input_path, options.max_triangles);
-    if (input.vertices.size() > options.max_triangles) {
-      throw InputError(fmt::format("the mesh has {} vertices, more than the limit {} (--max-triangles; every "
-                                   "vertex is a sample of the medial graph): raise --max-triangles if the time "
-                                   "and memory are there",
-                                   input.vertices.size(), options.max_triangles),
-                       options.input_path);
-    }
     try {
+      reconstruct::check_mesh_size(input, options.max_triangles);
       reconstruct::check_closed_mesh(input);
     } catch (const InputError& error) {
       throw error.inside(options.input_path);

@@ -12,7 +12,10 @@
 //   1. the path in the environment variable SKELCONV_GRID_MESHER;
 //   2. where this build wrote it (SKELCONV_GRID_MESHER_BUILD_PATH);
 //   3. where `cmake --install` puts it (SKELCONV_GRID_MESHER_INSTALL_PATH,
-//      <libdir>/skelconv/libskelconv_grid_mesher.so under the configured prefix).
+//      <libdir>/skelconv/libskelconv_grid_mesher.so under the configured prefix);
+//   4. beside the program or shared object that holds this code: the Python
+//      module installed by pip (setup.py) carries the module next to itself,
+//      wherever the environment is.
 // If none opens, the grid method fails with an EvaluationError naming them.
 #include <dlfcn.h>
 
@@ -20,6 +23,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -31,6 +35,17 @@ namespace skelconv::detail {
 namespace {
 
 using GridMeshEntry = void (*)(const GridSurfaceRequest*, TriangleMesh*);
+
+/// The module's path beside the file (program or shared object) this
+/// function was loaded from; empty if the loader cannot tell.
+std::string beside_this_binary() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&beside_this_binary), &info) == 0 || info.dli_fname == nullptr) return {};
+  const std::string self = info.dli_fname;
+  const std::size_t slash = self.rfind('/');
+  const std::string directory = slash == std::string::npos ? "." : self.substr(0, slash);
+  return directory + "/" + std::string(SKELCONV_GRID_MESHER_FILE_NAME);
+}
 
 /// The module's entry point, opened once (thread-safe); throws if no
 /// candidate path holds a loadable module.
@@ -44,6 +59,7 @@ GridMeshEntry grid_mesher_entry() {
       candidates.emplace_back(path);
     candidates.emplace_back(SKELCONV_GRID_MESHER_BUILD_PATH);
     candidates.emplace_back(SKELCONV_GRID_MESHER_INSTALL_PATH);
+    if (std::string beside = beside_this_binary(); !beside.empty()) candidates.push_back(std::move(beside));
     std::string tried;
     for (const std::string& path : candidates) {
       // RTLD_LOCAL: OpenVDB's symbols stay inside the module.

@@ -74,6 +74,20 @@ std::vector<double> component_volumes(const TriangleMesh& mesh,
 
 }  // namespace
 
+void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles) {
+  if (mesh.triangles.size() > max_triangles) {
+    throw InputError(fmt::format("the mesh has {} triangles, more than the limit {} (--max-triangles): raise "
+                                 "--max-triangles if the time and memory are there",
+                                 mesh.triangles.size(), max_triangles));
+  }
+  if (mesh.vertices.size() > max_triangles) {
+    throw InputError(fmt::format("the mesh has {} vertices, more than the limit {} (--max-triangles; every "
+                                 "vertex is a sample of the medial graph): raise --max-triangles if the time "
+                                 "and memory are there",
+                                 mesh.vertices.size(), max_triangles));
+  }
+}
+
 void check_closed_mesh(const TriangleMesh& mesh) {
   const auto triangles = proper_triangles(mesh);
   if (triangles.empty()) throw InputError("the mesh is empty: it has no triangle");

@@ -12,6 +12,11 @@
 
 namespace skelconv::interval {
 
+/// The deepest octree `skelconv bound --octree` and the Python module
+/// accept: 8 levels already mean up to 8^8 cells near a surface of fractal
+/// area; 10 keeps a run within minutes.
+inline constexpr int max_octree_depth = 10;
+
 struct LevelCounts {
   std::size_t inside = 0, outside = 0, undetermined = 0;
 };

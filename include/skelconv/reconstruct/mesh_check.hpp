@@ -5,9 +5,17 @@
 // without self-intersections.
 #pragma once
 
+#include <cstddef>
+
 #include "skelconv/mesh/triangle_mesh.hpp"
 
 namespace skelconv::reconstruct {
+
+/// Throws InputError unless `mesh` has at most `max_triangles` triangles and
+/// as many vertices: the work of a reconstruction grows with the number of
+/// samples, and every vertex is one (the messages name the option
+/// --max-triangles of `skelconv skeletonize`, which passes the limit).
+void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles);
 
 /// Throws InputError naming the first problem of `mesh`:
 /// - empty: no triangle (or a triangle with a repeated vertex only);
