@@ -15,8 +15,6 @@
 //   eval/<kernel>/f_and_grad/near
 //   quadrature/<kernel>/tol:<1e-08|1e-12>[/near]
 //   degree/<family>/w0/i:<i>/<f|f_and_grad>
-//   batch/<kernel>/<scalar|simd>
-//   filter/<kernel>/<stable|fast|filtered>/<f|f_and_grad> (filter_regions)
 //   generic/<kernel>/d:<d>/<beside|beyond>: the generic region
 //       (bench_support.hpp: generic_region_inputs; inverse and Cauchy
 //       i = 1…8, weight degree 0), split by where P's foot on the line
@@ -30,18 +28,13 @@
 #include <string>
 #include <vector>
 
-#include "batch_kernels.hpp"
 #include "bench_support.hpp"
-#include "fast_forms.hpp"
-
-#include <skelconv/kernels/segment_filter.hpp>
 
 namespace skelconv::bench {
 namespace {
 
 std::size_t kernel_points = 256;
 std::size_t quadrature_points = 32;
-std::size_t batch_points = 1024;
 
 volatile double sink;  // keeps results alive
 
@@ -52,26 +45,6 @@ void region(const std::string& name, std::size_t n, Body body) {
   CALLGRIND_ZERO_STATS;
   for (std::size_t j = 0; j < n; ++j) body(j);
   CALLGRIND_DUMP_STATS_AT(description.c_str());
-}
-
-/// filter/<kernel>/<stable|fast|filtered>/<f|f_and_grad>: the paths of
-/// bench/filter_bench.cpp on the eval points, for instructions per
-/// evaluation against the fast form's counted operations.
-void filter_regions() {
-  for (const KernelKey& key : detailed_kernels) {
-    const std::optional<FilterPaths> paths = filter_paths(key);
-    if (!paths) continue;
-    const auto [k, ref, fast] = *paths;
-    const std::vector<Input> in = make_inputs(key.family, kernel_points);
-    const std::string base = "filter/" + ref->name + "/";
-    Vec g;
-    region(base + "stable/f", in.size(), [&](std::size_t j) { sink = k->stable_f(in[j]); });
-    region(base + "fast/f", in.size(), [&](std::size_t j) { sink = fast->f(in[j]); });
-    region(base + "filtered/f", in.size(), [&](std::size_t j) { sink = k->f(in[j]); });
-    region(base + "stable/f_and_grad", in.size(), [&](std::size_t j) { sink = k->stable_f_and_grad(in[j], g) + g[0]; });
-    region(base + "fast/f_and_grad", in.size(), [&](std::size_t j) { sink = fast->f_and_grad(in[j], g) + g[0]; });
-    region(base + "filtered/f_and_grad", in.size(), [&](std::size_t j) { sink = k->f_and_grad(in[j], g) + g[0]; });
-  }
 }
 
 void run_regions() {
@@ -110,7 +83,6 @@ void run_regions() {
       }
     }
   }
-  filter_regions();
   for (const KernelRef& k : generated_kernels()) {
     if (k.weight_degree != 0) continue;
     const std::vector<Input> in = make_inputs(k.family, kernel_points);
@@ -145,22 +117,6 @@ void run_regions() {
       }
     }
   }
-  for (const BatchEntry& e : batch_entries) {
-    const KernelRef* k = find_kernel(e.key.family, e.key.degree, e.key.weight_degree);
-    if (!k) continue;
-    Batch batch(batch_points);
-    const Input segment = segment_input(k->family);
-    // One region call evaluates the whole batch; report it per point.
-    // (Named strings: the client request reads the text after the statement.)
-    const std::string scalar_name = "batch/" + k->name + "/scalar|" + std::to_string(batch_points);
-    const std::string simd_name = "batch/" + k->name + "/simd|" + std::to_string(batch_points);
-    CALLGRIND_ZERO_STATS;
-    scalar_loop(*k, segment, batch.points(), batch.field());
-    CALLGRIND_DUMP_STATS_AT(scalar_name.c_str());
-    e.batch(segment, batch.points(), batch.field());
-    CALLGRIND_DUMP_STATS_AT(simd_name.c_str());
-    sink = batch.f[0];
-  }
 }
 
 std::string json_ops(const OpCount& o) {
@@ -178,20 +134,11 @@ int write_opcounts(const char* path) {
   }
   out << "[\n";
   const auto& kernels = generated_kernels();
-  // The fast forms' counts (generated/segment_fast_table.hpp, through the
-  // filter), beside the stable functions' generic-path counts.
-  const auto fast_ops = [](const KernelRef& k) {
-    const FilteredSegmentKernel* f = FilteredSegmentKernel::find(k.family, k.degree, k.weight_degree);
-    if (!f || !f->has_fast_form()) return std::string();
-    return ", \"fast_f\": " + json_ops(f->fast_operation_count(0)) + ", \"fast_grad\": " +
-           json_ops(f->fast_operation_count(1)) + ", \"fast_f_and_grad\": " + json_ops(f->fast_operation_count(2));
-  };
   for (std::size_t j = 0; j < kernels.size(); ++j) {
     const KernelRef& k = kernels[j];
     out << "  {\"name\": \"" << k.name << "\", \"family\": \"" << family_name(k.family) << "\", \"degree\": " << k.degree
         << ", \"weight_degree\": " << k.weight_degree << ", \"f\": " << json_ops(k.ops_f)
-        << ", \"grad\": " << json_ops(k.ops_grad) << ", \"f_and_grad\": " << json_ops(k.ops_f_and_grad) << fast_ops(k)
-        << "}"
+        << ", \"grad\": " << json_ops(k.ops_grad) << ", \"f_and_grad\": " << json_ops(k.ops_f_and_grad) << "}"
         << (j + 1 < kernels.size() ? ",\n" : "\n");
   }
   out << "]\n";
@@ -208,7 +155,6 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[j], "--smoke") == 0) {
       kernel_points = 4;
       quadrature_points = 2;
-      batch_points = 16;
     } else {
       std::fprintf(stderr, "usage: %s [--smoke] | --opcounts FILE\n", argv[0]);
       return 2;

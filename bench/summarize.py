@@ -2,14 +2,13 @@
 """bench/summarize.py — turns one benchmark run into Markdown.
 
 Reads, from --results (bench/results/):
-  kernels.json, batch.json, skeleton.json   Google Benchmark JSON (medians of
+  kernels.json, skeleton.json              Google Benchmark JSON (medians of
                                             the repetitions are used)
   opcounts.json                             every generated kernel's OpCount
                                             (skelconv_bench_counts --opcounts)
   machine.txt                               lscpu and compiler, by scripts/bench.sh
 and --callgrind DIR (callgrind dumps of skelconv_bench_counts, one per region,
-described "<name>|<points>"), --disassembly FILE (objdump -d -C of
-skelconv_bench_batch), --opcounts-csv (generated/opcounts.csv, for the
+described "<name>|<points>"), --opcounts-csv (generated/opcounts.csv, for the
 longest-path counts when it has them).
 
 Writes SUMMARY.md (the tables and the goals) and OPCOUNTS.md (every generated
@@ -97,8 +96,6 @@ def sum_ops(it):
 OUTPUTS = ("f", "grad", "f_and_grad")
 GOAL_FG_OVER_F = 1.5
 GOAL_QUADRATURE = 200.0
-GOAL_BATCH = 3.0
-GOAL_HIGHWAY = 4.0   # goal: the Highway batch against the scalar loop
 GOAL_GSL = 200.0     # goal: closed form against GSL QAG-61, every distance and family
 GOAL_GENERIC_NS = 25.0  # goal: f and ∇f at generic distances, inverse and Cauchy i ≤ 8
 GOAL_PUBLIC_PATH = 1.3  # every public path within 1.3× the generated function, per primitive and point
@@ -152,35 +149,6 @@ def load_callgrind(directory):
             region, points = name.rsplit("|", 1)
             counts[region] = total / int(points)
     return counts
-
-
-def vectorisation(disassembly_path):
-    """batch function kernel name -> (packed ymm instructions, scalar sd instructions)."""
-    result = {}
-    if not disassembly_path or not os.path.exists(disassembly_path):
-        return result
-    current = None
-    header = re.compile(r"^[0-9a-f]+ <(.*)>:$")
-    with open(disassembly_path, errors="replace") as f:
-        for line in f:
-            m = header.match(line.strip())
-            if m:
-                current = None
-                # f_and_grad_batch<&(bool …::<name>_f_and_grad_generic<double>(…)), &(…)>; the
-                # scalar fix-up (full_lane<…>) is a separate function, not counted.
-                k = re.search(r"f_and_grad_batch<&\(bool skelconv::generated::(segment_\w+?)_f_and_grad_generic<double>",
-                              m.group(1))
-                if k:
-                    current = k.group(1)
-                    result.setdefault(current, [0, 0])
-                continue
-            if current is None:
-                continue
-            if "%ymm" in line:
-                result[current][0] += 1
-            elif re.search(r"\bv?\w+sd\b", line) and "%xmm" in line:
-                result[current][1] += 1
-    return {k: tuple(v) for k, v in result.items()}
 
 
 def fmt_ops(o):
@@ -259,68 +227,6 @@ def public_path_section(res, md, goals):
                       all(ok), f"{sum(ok)} of {len(ok)} (path, skeleton) pairs"))
 
 
-def filter_section(res, md, goals, ir, ops_by_name):
-    """§4d: bench/filter_bench.cpp, the filter against the stable function and the fast form alone."""
-    runs, context = load_benchmarks(os.path.join(res, "filter.json"))
-    if not runs:
-        return
-    md.append("## 4d. The filter: fast form, error bound, stable fallback\n")
-    md.append(f"Run {context.get('date')}, load average "
-              f"{', '.join(f'{x:.2f}' for x in context.get('load_avg', []))} at start.\n")
-    md.append("`skelconv_bench_filter` (docs/filter.md): ns per evaluation, one thread, 1,024 points per band of distance "
-              "from the segment (every direction, beyond the ends too). *stable*: the runtime's generated function (the "
-              "fallback); *fast*: the fast form alone on double, no bound (what the formula costs); *filtered*: fast "
-              "form on `RelativeError<double>`, the floating-point scope, and the stable function where the bound "
-              "rejects. All three from code built for the same instruction set (the compiler's default). *speed-up*: "
-              "stable / filtered (above 1: the filter is faster). *bound cost*: (filtered − fast) / fast at full "
-              "acceptance, roughly what the bound and the scope add per flop of the formula.\n")
-    rows, speedups = [], []
-    kernels = sorted({n.split("/")[1] for n in runs if n.startswith("filter/")})
-    for kernel in kernels:
-        for out in ("f", "f_and_grad"):
-            for band in ("0.01-0.1", "0.1-1", "1-10"):
-                base = f"filter/{kernel}/{band}/"
-                st, fa, fi = (runs.get(base + p + "/" + out) for p in ("stable", "fast", "filtered"))
-                if not (st and fa and fi):
-                    continue
-                sp = ns(st) / ns(fi)
-                speedups.append((sp, f"{kernel.replace('segment_', '')} {out} {band}"))
-                rows.append([kernel.replace("segment_", ""), out, band, f"{ns(st):.1f}", f"{ns(fa):.1f}",
-                             f"{ns(fi):.1f}", f"{fi.get('accepted', 0):.2f}", f"{sp:.2f}",
-                             f"{(ns(fi) - ns(fa)) / ns(fa):.1f}"])
-    md.append(table(["kernel", "output", "band |AB|", "stable", "fast", "filtered", "accepted", "speed-up",
-                     "bound cost"], rows))
-    # Instructions (callgrind) against the fast form's counted operations.
-    irows, per_op = [], []
-    for kernel in kernels:
-        for out in ("f", "f_and_grad"):
-            counts = [ir.get(f"filter/{kernel}/{p}/{out}") for p in ("stable", "fast", "filtered")]
-            ops = ops_by_name.get(kernel, {}).get("fast_" + out)
-            if None in counts or not ops:
-                continue
-            total = sum(ops_tuple(ops))
-            per_op.append((counts[1] / total, f"{kernel.replace('segment_', '')} {out}"))
-            irows.append([kernel.replace("segment_", ""), out, f"{total}", f"{counts[1]:.0f}",
-                          f"{counts[1] / total:.2f}", f"{counts[2]:.0f}", f"{counts[0]:.0f}"])
-    if irows:
-        md.append("Instructions per evaluation (callgrind, the eval points of §1): the fast form's counted operations "
-                  "(+, ×, /, calls; generated/segment_fast_table.hpp), its instructions alone, per counted operation, "
-                  "and the filtered and stable paths.\n")
-        md.append(table(["kernel", "output", "fast: counted ops", "fast: instructions", "per op",
-                         "filtered: instructions", "stable: instructions"], irows))
-    if speedups:
-        ok = [x >= 1 for x, _ in speedups]
-        low = min(speedups)
-        goals.append(("the filtered path faster than the stable function (every kernel, output, band)",
-                      f"lowest {low[0]:.2f}× ({low[1]}), highest {max(speedups)[0]:.2f}×", all(ok),
-                      f"{sum(ok)} of {len(ok)}"))
-    if per_op:
-        ok = [x <= 2 for x, _ in per_op]
-        worst = max(per_op)
-        goals.append(("≤ 2 instructions per counted operation on the fast path",
-                      f"worst {worst[0]:.2f} ({worst[1]})", all(ok), f"{sum(ok)} of {len(ok)}"))
-
-
 def mesh_ant_section(res, md, goals):
     """§9: scripts/bench.sh's three runs of `skelconv mesh` on Zanni's ant (mesh_ant.txt)."""
     path = os.path.join(res, "mesh_ant.txt")
@@ -365,7 +271,6 @@ def load_results(args):
     """Every input of one run (--results and the optional files), loaded once."""
     res = args.results
     kernels, context = load_benchmarks(os.path.join(res, "kernels.json"))
-    batch, _ = load_benchmarks(os.path.join(res, "batch.json"))
     gsl, _ = load_benchmarks(os.path.join(res, "gsl.json")) if os.path.exists(os.path.join(res, "gsl.json")) else ({}, None)
     # The hand-written compact SCALIS segment's measured counts (median point).
     scalis_compact = {}
@@ -399,20 +304,13 @@ def load_results(args):
                 op_generic[row["function"]] = tuple(int(row[c]) for c in ("add", "mul", "div", "sqrt", "atan", "log"))
                 if "longest_add" in row:
                     longest[row["function"]] = tuple(int(row["longest_" + c]) for c in ("add", "mul", "div", "sqrt", "atan", "log"))
-    vec = vectorisation(args.disassembly)
-    if vec:
-        with open(os.path.join(res, "vectorisation.json"), "w") as f:
-            json.dump({k: {"ymm": v[0], "scalar_sd": v[1]} for k, v in sorted(vec.items())}, f, indent=1)
-    elif os.path.exists(os.path.join(res, "vectorisation.json")):
-        with open(os.path.join(res, "vectorisation.json")) as f:
-            vec = {k: (v["ymm"], v["scalar_sd"]) for k, v in json.load(f).items()}
     machine = ""
     if os.path.exists(os.path.join(res, "machine.txt")):
         with open(os.path.join(res, "machine.txt")) as f:
             machine = f.read().strip()
-    r = argparse.Namespace(kernels=kernels, context=context, batch=batch, gsl=gsl, scalis_compact=scalis_compact,
+    r = argparse.Namespace(kernels=kernels, context=context, gsl=gsl, scalis_compact=scalis_compact,
                            skeleton=skeleton, scalis=scalis, ir=ir, opcounts=opcounts, ops_by_name=ops_by_name,
-                           longest=longest, op_generic=op_generic, vec=vec, machine=machine, generated=args.generated)
+                           longest=longest, op_generic=op_generic, machine=machine, generated=args.generated)
     # The kernels of the detailed benchmarks, in Table 4's order, then by name.
     table4_kernels = [row[1] for row in PAPER_TABLE4]
     r.detailed = sorted({n.split("/")[1] for n in kernels if n.startswith("eval/")},
@@ -525,86 +423,6 @@ def degree_section(data, md, goals):
         if rows:
             md.append(f"**{family}**\n\n" + table(["i", "f", "f_and_grad", "fg/f", "Ir f", "Ir f_and_grad", "ops f",
                                                     "ops f_and_grad"], rows))
-
-
-def batch_section(data, md, goals):
-    """§4: the GCC-vectorised batch against the scalar loop."""
-    batch, ir, vec = data.batch, data.ir, data.vec
-    md.append("## 4. Batch (structure of arrays) against the scalar loop\n")
-    md.append("4,096 points uniform in the segment's box grown by 1.5 R (about a third outside the compact support). "
-              "*scalar*: one call per point through the table's function pointer, compact kernels clipped by "
-              "`clip_to_ball` (branches, no call when empty). *batch*: `bench/batch_eval.hpp`: the generated "
-              "`<kernel>_f_and_grad_generic` inlined in a loop left to GCC's vectoriser for every lane (branch-free "
-              "clip for compact kernels), then the full `<kernel>_f_and_grad`, scalar and out of line, for the lanes "
-              "where the generic forms do not apply (*fallback*: their share of the 4,096 points). *ymm / sd*: packed "
-              "256-bit instructions and scalar double instructions in the batch function's machine code (the "
-              "scalar epilogue included) — 0 ymm means the loop was **not** vectorised. *max rel diff*: batch "
-              "against scalar, per point (the batch program fails beyond 1e-13 relative + 1e-15 of the batch's "
-              "largest value).\n")
-    rows = []
-    speedups = []
-    for name in sorted({n.split("/")[1] for n in batch}):
-        s = batch.get(f"batch/{name}/scalar")
-        b = batch.get(f"batch/{name}/simd")  # (no GCC-vectorised batch for SCALIS rows: skipped)
-        if not s or not b:
-            continue
-        s_rate = s.get("items_per_second")
-        b_rate = b.get("items_per_second")
-        sp = ratio(b_rate, s_rate)
-        speedups.append((name, sp))
-        v = vec.get(name)
-        fb = b.get("fallback_fraction")
-        rows.append([name, f"{s_rate / 1e6:.1f}", f"{b_rate / 1e6:.1f}", fmt_ratio(sp),
-                     f"{100 * fb:.0f} %" if fb is not None else "–",
-                     f"{v[0]} / {v[1]}" if v else "–",
-                     fmt_int(ir.get(f"batch/{name}/scalar")), fmt_int(ir.get(f"batch/{name}/simd")),
-                     f"{b.get('max_rel_diff', 0):.0e}"])
-    md.append(table(["kernel", "scalar Mpoints/s", "batch Mpoints/s", "speed-up", "fallback", "ymm / sd", "Ir/pt scalar",
-                     "Ir/pt batch", "max rel diff"], rows))
-    goals.append((f"batch ≥ {GOAL_BATCH:.0f}× scalar throughput",
-                  "; ".join(f"{k.replace('segment_', '')}: {x:.2f}×" for k, x in speedups),
-                  bool(speedups) and all(x >= GOAL_BATCH for _, x in speedups),
-                  f"{sum(1 for _, x in speedups if x >= GOAL_BATCH)} of {len(speedups)} kernels"))
-
-
-def highway_section(data, md, goals):
-    """§4, Highway: the vector batches of skelconv::simd."""
-    batch = data.batch
-    hw_rows = []
-    hw_speedups = []
-    for name in sorted({n.split("/")[1] for n in batch}):
-        s_run, r_run = batch.get(f"batch/{name}/scalar"), batch.get(f"batch/{name}/runtime")
-        h_run, h2_run = batch.get(f"batch/{name}/highway"), batch.get(f"batch/{name}/highway_avx2")
-        if not h_run or not (s_run or r_run):
-            continue
-        rate = lambda r: r.get("items_per_second") if r else None
-        # SCALIS rows have no bench-compiled scalar loop: against the runtime.
-        sp = ratio(rate(h_run), rate(s_run or r_run))
-        hw_speedups.append((name, sp))
-        hw_rows.append([name, f"{rate(s_run) / 1e6:.1f}" if s_run else "–", f"{rate(r_run) / 1e6:.1f}" if r_run else "–",
-                        f"{rate(h_run) / 1e6:.1f}", fmt_ratio(sp), fmt_ratio(ratio(rate(h_run), rate(r_run))),
-                        f"{rate(h2_run) / 1e6:.1f}" if h2_run else "–", fmt_ratio(ratio(rate(h2_run), rate(s_run or r_run))),
-                        f"{100 * h_run.get('set_aside_fraction', 0):.0f} %",
-                        f"{100 * h_run.get('scalar_fraction', 0):.1f} %", f"{h_run.get('max_rel_diff', 0):.0e}"])
-    if hw_rows:
-        md.append("### Highway batches (`skelconv::simd`, src/simd/, docs/simd.md)\n")
-        md.append("The same 4,096 points through `skelconv::simd::value_and_gradient(const Segment&, …)`: the "
-                  "generated full `f_and_grad` on a Highway vector type (8 lanes with AVX-512, 4 with AVX2), "
-                  "lanes that take another branch set aside and re-run together (*set aside*: re-runs per point), "
-                  "SLEEF for atan2/log/asinh, run-time dispatch; `scalis_*` rows: SCALIS segments (radius 0.1 → 0.3, σ = 1.5), "
-                  "`polygon_*` rows: a tilted quadrilateral across the segment (`simd::value_and_gradient(const Polygon&, …)`, "
-                  "the contour sum on lanes), both with ratios against the runtime. *scalar*: the loop above (bench flags, AVX2 + FMA); "
-                  "*runtime*: `Segment::value_and_gradient` per point (what the batch reproduces; ctest "
-                  "`SimdSegmentBatch` checks ≤ 1e-13 relative on every form and target, measured ≤ 6e-16). "
-                  "*max rel diff* here is against the runtime path as linked into this program, whose generated "
-                  "kernels are the bench's FMA-contracted instantiations (one copy per template; rim points of the "
-                  "compact support, f ~ 1e-10 of its maximum).\n")
-        md.append(table(["kernel", "scalar Mpts/s", "runtime Mpts/s", "AVX-512 Mpts/s", "/ scalar", "/ runtime",
-                         "AVX2 Mpts/s", "AVX2 / scalar", "set aside", "scalar path", "max rel diff"], hw_rows))
-        goals.append((f"Highway batch ≥ {GOAL_HIGHWAY:.0f}× scalar throughput per core",
-                      "; ".join(f"{k.replace('segment_', '')}: {x:.2f}×" for k, x in hw_speedups if x),
-                      bool(hw_speedups) and all(x and x >= GOAL_HIGHWAY for _, x in hw_speedups),
-                      f"{sum(1 for _, x in hw_speedups if x and x >= GOAL_HIGHWAY)} of {len(hw_speedups)} kernels"))
 
 
 def gsl_section(data, md, goals):
@@ -773,16 +591,10 @@ def table4_section(data, md, goals):
             lng = longest.get(f"{kernel}_{out}")
             r = sum(ours[:3]) / sum(p[:3])
             calls = "fewer" if sum(ours[3:]) < sum(p[3:]) else ("same" if sum(ours[3:]) == sum(p[3:]) else "more")
-            fast = ops_tuple(o["fast_" + out]) if o and ("fast_" + out) in o else None
             rows.append([label, out, fmt_ops(p), fmt_ops(ours), fmt_ops(lng) if lng and lng != ours else "same",
-                         f"{r:.2f}×", calls, fmt_ops(fast) if fast else "–",
-                         f"{sum(fast[:3]) / sum(p[:3]):.2f}×" if fast else ""])
+                         f"{r:.2f}×", calls])
             t4_ok.append(r < 1.0)
-    md.append(table(["Table 4 row", "output", "paper", "ours (generic)", "ours (longest)", "ratio +×/", "calls",
-                     "fast form (filter)", "fast: ratio +×/"], rows))
-    md.append("*fast form*: the formula the filter evaluates (docs/filter.md), the generic path without the "
-              "conditions that choose the stable forms; its error bound's cost is not an operation of this count "
-              "but is measured in instructions (§4d, *filtered* against *fast*).\n")
+    md.append(table(["Table 4 row", "output", "paper", "ours (generic)", "ours (longest)", "ratio +×/", "calls"], rows))
     goals.append(("op counts below the paper's on every Table 4 row",
                   f"{sum(t4_ok)} of {len(t4_ok)} (row, output) pairs below (SCALIS compact: measured, "
                   "bench/scalis_compact_opcounts.cpp)",
@@ -875,7 +687,6 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--results", default="bench/results")
     ap.add_argument("--callgrind", default=None)
-    ap.add_argument("--disassembly", default=None)
     ap.add_argument("--opcounts-csv", default="generated/opcounts.csv")
     ap.add_argument("--command", default="scripts/bench.sh")
     ap.add_argument("--generated", default="generated", help="directory of the generated headers (op breakdown)")
@@ -883,10 +694,9 @@ def main():
     data = load_results(args)
     md, goals = [], []
     header_section(data, md, args)
-    for section in (quadrature_section, gradient_cost_section, degree_section, batch_section, highway_section,
+    for section in (quadrature_section, gradient_cost_section, degree_section,
                     gsl_section, generic_path_section, skeleton_section, table4_section, scalis_section):
         section(data, md, goals)
-    filter_section(args.results, md, goals, data.ir, data.ops_by_name)
     public_path_section(args.results, md, goals)
     mesh_ant_section(args.results, md, goals)
     write_summary(args.results, md, goals)

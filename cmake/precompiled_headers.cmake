@@ -46,7 +46,7 @@ target_precompile_headers(skelconv_pch_donor PRIVATE
 foreach(target IN ITEMS
     skelconv_tests skelconv_scalar_types_test
     skelconv_scalis_scalar_types_test skelconv_canal_tests skelconv_reconstruct_tests
-    skelconv_reconstruct_table_tests skelconv_simd_tests
+    skelconv_reconstruct_table_tests
     verify_reference_selfcheck verify_properties verify_base_cases verify_verdict verify_report_tools
     verify_scalis_properties verify_polygon_reference verify_polygon_properties)
   if(TARGET ${target})

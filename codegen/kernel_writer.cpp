@@ -49,35 +49,15 @@ struct EmittedKernel {
   SegmentKernelSpec spec;
   OpCount ops[3];          // f, grad, f_and_grad: generic path
   OpCount ops_longest[3];  // the same, longest path
-  bool fast = false;       // has <name>_fast_{f,grad,f_and_grad}
-  OpCount ops_fast[3];     // their counts (on double; the bound's are extra)
 };
-
-// The fast forms of one kernel (Forms::fast): the shortest formula, no
-// choice of stable form. Instantiated on RelativeError<double>
-// (skelconv/kernels/relative_error.hpp) they also bound their own rounding,
-// and the filter (skelconv/kernels/segment_filter.hpp) falls back to
-// <name>_{f,grad,f_and_grad} where that bound exceeds the tolerance.
-// Returns "" where the generic path calls a helper (no fast form).
-std::string fast_functions_text(EmittedKernel& k) {
-  std::string text;
-  for (int which = 0; which < 3; ++which) {
-    const EmittedCode code = build_segment_program(k.spec, kOutputs[which]).emit(Forms::fast);
-    if (!code.fast_available) return "";
-    k.ops_fast[which] = code.ops;
-    text += "/// Fast form (no stable rewrites; filtered by its running error bound):\n" +
-            kernel_function_text(k.spec.name() + "_fast", k.spec.equation(), "SegmentInput", which, code);
-  }
-  k.fast = true;
-  return text;
-}
 
 std::string function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {
   return kernel_function_text(spec.name(), spec.equation(), "SegmentInput", which, code);
 }
 
-// f and ∇f on the generic forms only: straight-line code for batch (SIMD)
-// evaluation; returns false where the full function would take another form,
+// f and ∇f on the generic forms only: straight-line code whose operations
+// bench/summarize.py splits by section (preamble, conditions, forms, result);
+// returns false where the full function would take another form,
 // and the caller must then call <name>_f_and_grad.
 std::string generic_function_text(const SegmentKernelSpec& spec, const EmittedCode& code) {
   const std::string name = spec.name() + "_" + kGenericSuffix;
@@ -92,49 +72,6 @@ std::string generic_function_text(const SegmentKernelSpec& spec, const EmittedCo
      << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n"
      << code.body << "  return " << code.generic_applies << ";\n}\n\n";
   return os.str();
-}
-
-// generated/segment_fast_table.hpp: the fast forms on RelativeError<double>,
-// beside each kernel's stable entry of segment_table.hpp, in a constexpr
-// array so that the filter can take each function as a template argument
-// (and flatten it into its wrapper). One translation unit
-// (src/kernels/segment_filter.cpp) includes it.
-std::string fast_table_text(const std::vector<EmittedKernel>& kernels, const GeneratorRequest& request) {
-  std::ostringstream t;
-  t << file_header("segment_fast_table.hpp",
-                   "the fast forms of the segment kernels, for the filter of skelconv/kernels/segment_filter.hpp.",
-                   request)
-    << "#pragma once\n\n#include <array>\n#include <span>\n\n"
-    << "#include <skelconv/kernels/relative_error.hpp>\n\n#include \"generated/segment_inverse.hpp\"\n"
-    << "#include \"generated/segment_cauchy.hpp\"\n#include \"generated/segment_compact.hpp\"\n\n"
-    << "namespace skelconv::generated {\n\n"
-    << "using FastScalar = RelativeError<double>;\n\n"
-    << "/// One kernel's fast forms (nullptr where it has none: its generic path calls a helper).\n"
-    << "struct SegmentFastKernel {\n"
-    << "  KernelFamily family;\n  int degree;\n  int weight_degree;\n"
-    << "  FastScalar (*f)(const SegmentInput<FastScalar>&);\n"
-    << "  std::array<FastScalar, 3> (*grad)(const SegmentInput<FastScalar>&);\n"
-    << "  FastScalar (*f_and_grad)(const SegmentInput<FastScalar>&, std::array<FastScalar, 3>&);\n"
-    << "  OpCount ops_f, ops_grad, ops_f_and_grad;  ///< on double, without the bound\n};\n\n"
-    << "/// Every segment kernel of segment_kernels<double>(), in the same order.\n"
-    << "inline constexpr SegmentFastKernel segment_fast_kernel_table[] = {\n";
-  std::map<KernelFamily, std::string> rows;
-  for (const EmittedKernel& k : kernels) {
-    const std::string n = k.spec.name() + "_fast";
-    std::string& r = rows[k.spec.family];
-    r += "    {KernelFamily::" + std::string(family_name(k.spec.family)) + ", " + std::to_string(k.spec.degree) +
-         ", " + std::to_string(k.spec.weight_degree) + ", ";
-    if (k.fast)
-      r += "&" + n + "_f<FastScalar>, &" + n + "_grad<FastScalar>, &" + n + "_f_and_grad<FastScalar>, " +
-           ops_initializer(k.ops_fast[0]) + ", " + ops_initializer(k.ops_fast[1]) + ", " +
-           ops_initializer(k.ops_fast[2]) + "},\n";
-    else
-      r += "nullptr, nullptr, nullptr, {}, {}, {}},\n";
-  }
-  for (const auto& [family, r] : rows) t << r;  // segment_kernels' order: by family
-  t << "};\n\ninline std::span<const SegmentFastKernel> segment_fast_kernels() { return segment_fast_kernel_table; }\n\n"
-    << "}  // namespace skelconv::generated\n";
-  return t.str();
 }
 
 }  // namespace
@@ -211,12 +148,9 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
   }
 
   // Polygon edges and SCALIS segments: their own headers and tables
-  // (polygon_writer.cpp, scalis_segment_writer.cpp). Before the fast forms,
-  // so that building those (new GiNaC symbols) leaves these bytes alone.
+  // (polygon_writer.cpp, scalis_segment_writer.cpp).
   const std::string polygon_csv_rows = write_polygon_files(request, folder);
   const std::string scalis_csv_rows = write_scalis_segment_files(request, folder);
-
-  for (EmittedKernel& k : kernels) family_bodies[k.spec.family] += fast_functions_text(k);
 
   // One header per family: its functions, then its part of the lookup
   // table (segment_<family>_kernels<T>(), declared in segment_table.hpp).
@@ -290,7 +224,6 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "  return nullptr;\n}\n\n"
         << "}  // namespace skelconv::generated\n";
   write_file(folder / "segment_table.hpp", table.str());
-  write_file(folder / "segment_fast_table.hpp", fast_table_text(kernels, request));
 
   // The operation counts, machine-readable.
   std::ostringstream csv;

@@ -102,7 +102,7 @@ class Emitter {
     }
     for (const auto& [lhs, value] : program_.outputs_) line(lhs + " = " + emit(value).s + ";");
     return {body_.str(), scopes_.back().generic, scopes_.back().longest,
-            special_forms_.empty() ? "true" : "!(" + special_forms_ + ")", fast_available_};
+            special_forms_.empty() ? "true" : "!(" + special_forms_ + ")"};
   }
 
  private:
@@ -146,14 +146,6 @@ class Emitter {
             pruned.alternatives[a].values.push_back(full.values[j]);
             if (full.refinement) pruned.alternatives[a].refinement->values.push_back(full.refinement->values[j]);
           }
-        }
-        if (forms_ == Forms::fast) {
-          // The generic form alone: the others' conditions and steps are dead.
-          Alternative generic = std::move(pruned.alternatives[pruned.generic]);
-          generic.conditions.clear();
-          generic.refinement.reset();
-          pruned.alternatives = {std::move(generic)};
-          pruned.generic = 0;
         }
         for (const auto& alt : pruned.alternatives)
           for_each_expression(alt, [&](const ex& e) { collect_symbols(e, needed); });
@@ -515,10 +507,6 @@ class Emitter {
   // ---- run-time choice between forms
   void emit_choice(const Choice& choice) {
     for (const symbol& t : choice.targets) line("T " + t.get_name() + ";");
-    if (forms_ == Forms::fast) {
-      emit_fast_choice(choice);
-      return;
-    }
     // Conditions are computed up front, so no branch hides another's temporaries.
     std::vector<std::string> conditions;
     for (size_t i = 0; i + 1 < choice.alternatives.size(); ++i) {
@@ -574,25 +562,6 @@ class Emitter {
     for (const symbol& t : choice.targets) names_[t] = t.get_name();
   }
 
-  // Forms::fast: the generic alternative alone, without its conditions. A
-  // helper call there (a Gauss rule, a loop) has rounding the running error
-  // type does not see: such a program has no fast form.
-  void emit_fast_choice(const Choice& choice) {
-    const Alternative& alt = choice.alternatives[choice.generic];
-    auto calls_helper = [](const Alternative& a) {
-      if (!a.calls.empty()) return true;
-      for (const auto& [s, v] : a.steps)
-        if (calls_loop_helper(v)) return true;
-      return std::any_of(a.values.begin(), a.values.end(), calls_loop_helper);
-    };
-    if (calls_helper(alt)) fast_available_ = false;
-    const Scope branch = emit_alternative(choice, choice.generic, "{");
-    line("}");
-    scopes_.back().generic += branch.generic;
-    scopes_.back().longest += branch.generic;
-    for (const symbol& t : choice.targets) names_[t] = t.get_name();
-  }
-
   // One alternative of a choice, in its own scope; returns that scope.
   Scope emit_alternative(const Choice& choice, size_t i, const std::string& opening) {
     const Alternative& alt = choice.alternatives[i];
@@ -601,7 +570,7 @@ class Emitter {
     line("// " + alt.why);
     for (const auto& [s, v] : alt.steps) define(s, v);
     for (const ArrayCall& call : alt.calls) emit_array_call(call);
-    if (alt.refinement && forms_ != Forms::fast)
+    if (alt.refinement)
       emit_refinement(choice.targets, alt);
     else
       assign(choice.targets, alt.values);
@@ -651,7 +620,6 @@ class Emitter {
   const StraightLineProgram& program_;
   Forms forms_;
   std::string special_forms_;  // generic_only: where a non-generic form is due
-  bool fast_available_ = true;  // fast: no helper call on the generic path
   std::ostringstream body_;
   std::vector<Scope> scopes_;
   std::map<ex, int, ex_is_less> uses_;

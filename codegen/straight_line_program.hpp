@@ -79,9 +79,6 @@ struct EmittedCode {
   /// generic_only: a C++ bool expression, true where the generic forms are
   /// the ones the full program would take.
   std::string generic_applies = "true";
-  /// fast: false where the generic path calls a helper (a Gauss rule, a
-  /// loop), whose rounding a running error bound cannot follow.
-  bool fast_available = true;
 };
 
 /// What `emit` writes.
@@ -90,9 +87,6 @@ enum class Forms {
   generic_only,  ///< without the alternatives that call a helper with a
                  ///< loop of run-time length (fixed rules stay): code a
                  ///< compiler can vectorise, plus where it is exact
-  fast,          ///< the generic alternative of every choice, unconditionally:
-                 ///< the shortest formula, for a filter (the scalar type
-                 ///< RelativeError bounds its rounding; kernel_writer.cpp)
 };
 
 class StraightLineProgram {

@@ -65,26 +65,20 @@ gbench=(--benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions"
         --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
         --benchmark_out_format=json)
 
-step "1/7 kernel suite: closed form, finite differences, quadrature, degrees (~2 min)"
+step "1/6 kernel suite: closed form, finite differences, quadrature, degrees (~2 min)"
 "$bin/skelconv_bench_kernels" "${gbench[@]}" --benchmark_out="$results/kernels.json"
 
-step "2/7 batch suite: scalar loop, GCC-vectorised batch, Highway batches (~1 min)"
-"$bin/skelconv_bench_batch" "${gbench[@]}" --benchmark_out="$results/batch.json"
-
-step "3/7 whole skeleton: 1,000 primitives, 128^3 grid (~10 s; progress below)"
+step "2/6 whole skeleton: 1,000 primitives, 128^3 grid (~10 s; progress below)"
 "$bin/skelconv_bench_skeleton" --benchmark_out="$results/skeleton.json" --benchmark_out_format=json
 
-step "4/7 SCALIS segments against quadrature (~30 s)"
+step "3/6 SCALIS segments against quadrature (~30 s)"
 "$bin/skelconv_bench_scalis" "${gbench[@]}" --benchmark_out="$results/scalis.json"
 "$bin/skelconv_scalis_compact_opcounts" > "$results/scalis_compact_opcounts.md"
 
-step "4b/7 the filter: stable, fast form alone, filtered, three distance bands (~1 min)"
-"$bin/skelconv_bench_filter" "${gbench[@]}" --benchmark_out="$results/filter.json"
-
-step "5/7 closed forms against GSL's adaptive QAG (61-point rule), 0.1-3 |AB| (~1 min)"
+step "4/6 closed forms against GSL's adaptive QAG (61-point rule), 0.1-3 |AB| (~1 min)"
 "$bin/skelconv_bench_gsl" "${gbench[@]}" --benchmark_out="$results/gsl.json"
 
-step "5b/7 public paths against the generated function; the mesher on Zanni's ant (~2 min)"
+step "4b/6 public paths against the generated function; the mesher on Zanni's ant (~2 min)"
 "$bin/skelconv_bench_public_path" --benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions" \
   --benchmark_report_aggregates_only=true --benchmark_out_format=json --benchmark_out="$results/public_path.json"
 # Zanni Table 1's ant at its triangle count (--size 0.04: ~95k triangles), one
@@ -95,14 +89,13 @@ for run in 1 2 3; do
     --size 0.04 --method grid -o "$scratch/ant.ply" --quiet 2>&1
 done > "$results/mesh_ant.txt"
 
-step "6/7 callgrind instruction counts (~10 s)"
+step "5/6 callgrind instruction counts (~10 s)"
 valgrind --tool=callgrind --callgrind-out-file="$scratch/callgrind.out.%p" --dump-instr=no \
   --collect-jumps=no "$bin/skelconv_bench_counts" 2> "$scratch/valgrind.log" \
   || { cat "$scratch/valgrind.log" >&2; exit 1; }
 "$bin/skelconv_bench_counts" --opcounts "$results/opcounts.json"
-objdump -d -C --no-show-raw-insn "$bin/skelconv_bench_batch" > "$scratch/batch.asm"
 
-step "7/7 summary"
-python3 bench/summarize.py --results "$results" --callgrind "$scratch" --disassembly "$scratch/batch.asm" \
+step "6/6 summary"
+python3 bench/summarize.py --results "$results" --callgrind "$scratch" \
   --command "$(echo "scripts/bench.sh $*" | sed 's/ *$//')"
 step "done: $results/SUMMARY.md"

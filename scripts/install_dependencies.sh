@@ -14,7 +14,6 @@ packages=(
   libgtest-dev libbenchmark-dev libcgal-dev
   ccache                  # compiler cache: a rebuild after a branch switch or a regeneration costs what changed (CMakeLists.txt uses it when present)
   valgrind                # bench/: instruction counts
-  libhwy-dev libsleef-dev # src/simd/: vector batches (Highway: run-time dispatch AVX-512/AVX2/portable; SLEEF: vector atan2, log, asinh)
   libflint-arb-dev        # verify/: Arb ball arithmetic and acb_calc_integrate, the certified references (verify_certified_references)
   libgsl-dev              # bench/ only: GSL's adaptive QAG (61-point rule), the quadrature baseline
   python3-matplotlib python3-numpy  # papers_figures/: 2-D figures (Agg backend) and their claim checks; verify/heatmap.py

@@ -261,14 +261,6 @@ PolygonInput<double> Polygon::closed_form_input(const KernelSpec& level) const {
   return input;
 }
 
-bool Polygon::single_closed_form(PolygonInput<double>& input, int& frame_exponent, int& value_power) const {
-  if (levels_.size() != 1 || levels_.front().first != 1.0) return false;
-  input = closed_form_input(levels_.front().second);
-  frame_exponent = frame_.exponent();
-  value_power = value_power_;
-  return true;
-}
-
 Polygon::Case Polygon::prepare(const Vec3& p, Vec3& frame_p) const {
   detail::require_finite_query_point(p);
   frame_p = frame_.point(p);

@@ -28,8 +28,8 @@
 //
 // Any scalar type with round-to-nearest +, −, × and an exact fused
 // multiply-add found as `fma` (std::fma for double and long double,
-// Boost.Multiprecision's for binary128, Highway's MulAdd for SIMD lanes:
-// src/simd/lanes-inl.hpp) gives these guarantees in its own precision.
+// Boost.Multiprecision's for binary128) gives these guarantees in its own
+// precision.
 #pragma once
 
 #include <cmath>

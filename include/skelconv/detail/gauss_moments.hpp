@@ -53,7 +53,7 @@ enum class NodeMap {
 };
 
 /// Boost's N-point Gauss–Legendre table (nonnegative nodes) after the sine
-/// map of NodeMap::sine, computed once per table type (double for SIMD lanes).
+/// map of NodeMap::sine, computed once per table type.
 template <class T, unsigned N>
 const auto& sine_mapped_rule() {
   using Table = std::decay_t<decltype(boost::math::quadrature::gauss<T, N>::abscissa())>;
@@ -253,9 +253,9 @@ constexpr unsigned gauss_panel_points() {
 namespace detail {
 /// The node count for a pole at "distance" x (a squared distance compared
 /// with the squared thresholds of the 7-, 10- and 15-node rules): 7, 10, 15,
-/// or `most`. The vector batches (src/simd/lanes-inl.hpp) specialise it to
-/// the largest count any active lane needs, so that the lanes stay together
-/// (more nodes only make a lane's rule more exact).
+/// or `most`. More nodes than needed only make the rule more exact.
+///
+///
 template <class T>
 int rule_nodes(const T& x, double x7, double x10, double x15, int most) {
   return x >= T(x7) ? 7 : x >= T(x10) ? 10 : x >= T(x15) ? 15 : most;
@@ -400,8 +400,8 @@ namespace detail {
 /// segment_moments_gauss_panels with the pole so close to the segment that
 /// q underflows there (closer than ~1e-154 |AB|, where the field is far
 /// outside the double range anyway): the integral is not resolvable in T.
-/// Throws NotConvergedError (the vector batches, src/simd/lanes-inl.hpp,
-/// specialise it to hand their lanes to the scalar path, which then throws).
+/// Throws NotConvergedError.
+///
 template <class T>
 void pole_too_close(const T& distance) {
   throw NotConvergedError("Gauss panels: the pole of the kernel is " + std::to_string(static_cast<double>(distance)) +
@@ -472,9 +472,9 @@ inline const PanelNodeThresholds& panel_node_thresholds(int k_max, int m_hi) {
 /// x* ± i y in the panel's own coordinate x ∈ [−1, 1], from x*² and y²: the
 /// imaginary-distance bound (valid for |x*| ≤ 6, the positions it was
 /// derived for) or the distance bound (any direction), whichever allows
-/// fewer. More nodes than needed only make the rule more exact. The vector
-/// batches (src/simd/lanes-inl.hpp) specialise it to the largest count any
-/// active lane needs.
+/// fewer. More nodes than needed only make the rule more exact.
+///
+///
 template <class T>
 int panel_nodes(const T& x_star2, const T& y2, const PanelNodeThresholds& c) {
   const int by_height = x_star2 <= T(36) ? rule_nodes(y2, c.y7, c.y10, c.y15, 20) : 20;

@@ -43,8 +43,8 @@
 
 namespace skelconv {
 
-/// z = (P − V₀)·n in plain arithmetic: the driver's height, and the one its
-/// SIMD lanes compute (src/simd/polygon_batch.cpp), in the same order.
+/// z = (P − V₀)·n in plain arithmetic: the driver's height, in the order
+/// every caller computes it.
 template <class T>
 T plain_plane_height(const std::array<T, 3>& p, const std::array<T, 3>& first_vertex, const std::array<T, 3>& n) {
   return (p[0] - first_vertex[0]) * n[0] + (p[1] - first_vertex[1]) * n[1] + (p[2] - first_vertex[2]) * n[2];

@@ -24,7 +24,7 @@
 //
 // Any scalar type with round-to-nearest +, −, × and an exact fused
 // multiply-add (see skelconv/detail/exact_cross.hpp) gets these guarantees in its
-// own precision: double, long double, binary128, the SIMD lanes.
+// own precision: double, long double, binary128.
 #pragma once
 
 #include <cmath>

@@ -132,13 +132,6 @@ class Polygon {
   /// f(P) and ∇f(P) together.
   FieldSample value_and_gradient(const Vec3& p) const;
 
-  /// For the vector batches (src/simd/polygon_batch.cpp), which run the
-  /// closed forms as value_and_gradient does: the closed forms' input in the
-  /// frame, the frame's exponent e (a world point x is x·2^−e there) and the
-  /// value power m (f = f'·2^(m e)). False when the field is a weighted sum
-  /// of several generated kernels (a trait with compact levels).
-  bool single_closed_form(PolygonInput<double>& input, int& frame_exponent, int& value_power) const;
-
  private:
   /// What an evaluation at P has to do (see the file comment).
   enum class Case {
