@@ -64,15 +64,12 @@ set(SKELCONV_INSTALLED_DETAIL_HEADERS
   stable_recurrence.hpp
   support_gap.hpp)
 # Every installed header belongs to an installed library. Not installed,
-# with their libraries: view/ (the HTML page of `skelconv view`, the
-# command's own) and simd/ (the Highway batches, docs/simd.md: a library
-# of the source tree, for the benchmarks; field/batch.hpp is the installed
-# way to evaluate many points).
+# with its library: view/ (the HTML page of `skelconv view`, the command's
+# own).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/skelconv
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp"
         PATTERN detail EXCLUDE
-        PATTERN view EXCLUDE
-        PATTERN simd EXCLUDE)
+        PATTERN view EXCLUDE)
 list(TRANSFORM SKELCONV_INSTALLED_DETAIL_HEADERS
      PREPEND ${PROJECT_SOURCE_DIR}/include/skelconv/detail/
      OUTPUT_VARIABLE skelconv_detail_files)
