@@ -31,6 +31,7 @@
 #include "bench_main.hpp"
 #include "bench_support.hpp"  // bench_a, bench_b, distance_to_segment
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/kernels/read_trait.hpp"
 #include "skelconv/primitives/scalis_segment.hpp"
 
 namespace skelconv::bench {
@@ -179,7 +180,7 @@ void register_all() {
     const std::string kernel = std::string(family_name(row.family)) + "_i" + std::to_string(row.degree);
     for (const Workload& w : workloads) {
       // The compact support reaches σ τ1 = 0.45 < 0.6 |AB|: no far points.
-      if (row.family == KernelFamily::compact && w.lo > 0.5) continue;
+      if (kernels::has_finite_support(row.family) && w.lo > 0.5) continue;
       const std::string base = "scalis/" + kernel + "/" + w.name + "/";
       benchmark::RegisterBenchmark((base + "closed_form").c_str(), bench_closed_form, row.family, row.degree, w);
       for (double tolerance : {1e-8, 1e-12}) {

@@ -2,7 +2,7 @@
 // generated/glsl/point.glsl (see glsl_writer.hpp).
 //
 // A point's field is w K(r), r = |P − C|, and its gradient w K'(r) (P − C)/r
-// (skelconv/primitives/point.hpp), for every radial kernel of SPEC §1 that
+// (skelconv/primitives/point.hpp), for every radial kernel of docs/mathematics.md §1 that
 // a point takes (include/skelconv/kernels/: inverse, cauchy, compact, soft,
 // wyvill, ferley, gaussian). There is no integral to unroll: each family is
 // its trait's value() and derivative(), written once more in GLSL, with the
@@ -179,7 +179,7 @@ void write_glsl_points(const GeneratorRequest& request, const std::filesystem::p
      << "//\n"
      << "// GENERATED FILE: DO NOT EDIT. Regenerate with\n"
      << "//     " << request.command_line << " --out generated\n"
-     << "// From: codegen/glsl_point_writer.cpp, the radial kernels of SPEC sec. 1 as the\n"
+     << "// From: codegen/glsl_point_writer.cpp, the radial kernels of docs/mathematics.md sec. 1 as the\n"
      << "// traits of include/skelconv/kernels/ define them: f = w K(r) and\n"
      << "// grad f = w K'(r) (p - c) / r, r = |p - c| (skelconv/primitives/point.hpp).\n\n"
      << kPointInput << kPointFunctions;

@@ -17,7 +17,7 @@ const std::string& glsl_rule_block();
 /// weight degree), each a call of skelconv_segment_rule.
 std::string glsl_segment_rule_functions(const SegmentKernelSpec& spec);
 
-/// The same for a SCALIS segment kernel (unnormalised F, SPEC §4).
+/// The same for a SCALIS segment kernel (unnormalised F, docs/mathematics.md §4).
 std::string glsl_scalis_rule_functions(const ScalisKernelSpec& spec);
 
 }  // namespace skelconv::codegen

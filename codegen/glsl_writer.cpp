@@ -55,7 +55,7 @@ constexpr const char* kGlslScalisInput =
     "#ifndef SKELCONV_SCALIS_SEGMENT_INPUT\n"
     "#define SKELCONV_SCALIS_SEGMENT_INPUT\n"
     "// The segment AB, the query point p, the radii tau0 at A and tau1 at B\n"
-    "// (>= 0, not both 0) and the kernel scale sigma (SPEC sec. 4).\n"
+    "// (>= 0, not both 0) and the kernel scale sigma (docs/mathematics.md sec. 4).\n"
     "struct ScalisSegmentInput {\n"
     "  vec3 a;\n  vec3 b;\n  vec3 p;\n  float tau0;\n  float tau1;\n  float sigma;\n"
     "};\n"
@@ -81,7 +81,7 @@ constexpr const char* kGlslHelpers =
     "#endif\n\n";
 
 // generated/glsl/scalis_segment_<family>.glsl: the SCALIS segment kernels
-// (SPEC sec. 4), unnormalised F as the C++ target's (f = c F / h is the
+// (docs/mathematics.md sec. 4), unnormalised F as the C++ target's (f = c F / h is the
 // caller's).
 void write_glsl_scalis(const GeneratorRequest& request, const std::filesystem::path& folder) {
   std::map<KernelFamily, std::string> bodies;

@@ -24,7 +24,7 @@ std::string file_header(const std::string& file, const std::string& what, const 
      << "// Generator: skelconv-codegen " << SKELCONV_VERSION << " (GiNaC " << GINACLIB_MAJOR_VERSION << '.'
      << GINACLIB_MINOR_VERSION << '.' << GINACLIB_MICRO_VERSION << ")\n"
      << "// From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp\n"
-     << "// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).\n";
+     << "// (recurrence (1) of Hubert & Cani unrolled; docs/mathematics.md §2, Hubert 2012 §3).\n";
   return os.str();
 }
 

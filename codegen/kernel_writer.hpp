@@ -14,8 +14,8 @@ namespace skelconv::codegen {
 /// What to generate; the command line (main.cpp) fills it.
 struct GeneratorRequest {
   std::vector<SegmentKernelSpec> segment_kernels;
-  std::vector<PolygonKernelSpec> polygon_kernels;        ///< SPEC §3 (polygon_writer.cpp)
-  std::vector<ScalisKernelSpec> scalis_segment_kernels;  ///< SPEC §4 (scalis_segment_writer.cpp)
+  std::vector<PolygonKernelSpec> polygon_kernels;        ///< docs/mathematics.md §3 (polygon_writer.cpp)
+  std::vector<ScalisKernelSpec> scalis_segment_kernels;  ///< docs/mathematics.md §4 (scalis_segment_writer.cpp)
   std::string command_line;  ///< recorded in every file header (without --out)
 };
 

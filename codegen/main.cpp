@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   app.add_option("--polygon-cauchy", polygon_cauchy, "polygon Cauchy degrees (i ≥ 3)")->capture_default_str();
   app.add_option("--polygon-compact", polygon_compact, "polygon compact degrees (even i ≥ 2; odd ones skipped)")
       ->capture_default_str();
-  // SCALIS segments (SPEC §4): the weight τ(t)^(i−1) has degree i − 1.
+  // SCALIS segments (docs/mathematics.md §4): the weight τ(t)^(i−1) has degree i − 1.
   std::string scalis_inverse = "2:10", scalis_cauchy = "2:10";
   app.add_option("--scalis-inverse", scalis_inverse, "SCALIS inverse segment degrees i (i ≥ 2)")->capture_default_str();
   app.add_option("--scalis-cauchy", scalis_cauchy, "SCALIS Cauchy segment degrees i (i ≥ 2)")->capture_default_str();
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
       for (int i = range.first; i <= range.last; ++i)
         for (int d = w.first; d <= w.last; ++d) request.segment_kernels.push_back({family, i, d});
     }
-    // Polygons (SPEC §3): i = 2 diverges for inverse kernels and is excluded
+    // Polygons (docs/mathematics.md §3): i = 2 diverges for inverse kernels and is excluded
     // by Hubert 2012 §6; compact kernels k_R^{2j} only (§8).
     const std::pair<KernelFamily, DegreeRange> polygon_families[] = {
         {KernelFamily::inverse, parse_range(polygon_inverse, "--polygon-inverse")},

@@ -2,7 +2,7 @@
 //
 // The field of a planar polygon, C(P) = ∬_Ω K(|P − Q|) dQ, is by Green's
 // theorem a sum over the edges of the fan triangles (P̄, Q_m, Q_{m+1})
-// (Hubert 2012 §5, SPEC §3). In polar coordinates about P̄ the radial
+// (Hubert 2012 §5, docs/mathematics.md §3). In polar coordinates about P̄ the radial
 // integral has a closed form, and what is left on edge m, with h_m the
 // doubled signed fan area and θ_m the angle it subtends, is for
 // K = (α r² + β)^(−i/2) (inverse α = 1, β = 0; Cauchy α = s, β = 1) and

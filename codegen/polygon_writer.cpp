@@ -1,4 +1,4 @@
-// codegen/polygon_writer.cpp — writes the polygon edge kernels (SPEC §3):
+// codegen/polygon_writer.cpp — writes the polygon edge kernels (docs/mathematics.md §3):
 // generated/polygon_{inverse,cauchy,compact}.hpp and generated/polygon_table.hpp.
 // See kernel_writer.hpp and polygon_families.hpp.
 #include <map>
@@ -11,7 +11,7 @@ namespace skelconv::codegen {
 namespace {
 
 const char* const kPolygonSources =
-    "// Polygons (SPEC §3, Hubert 2012 §5–8): the terms of one edge of the contour sum\n"
+    "// Polygons (docs/mathematics.md §3, Hubert 2012 §5–8): the terms of one edge of the contour sum\n"
     "// (codegen/polygon_families.cpp), on the segment forms of the edge;\n"
     "// skelconv/primitives/polygon_field.hpp adds them up.\n";
 

@@ -1,5 +1,5 @@
 // codegen/scalis_segment_writer.cpp — writes the SCALIS segment kernels
-// (SPEC §4): generated/scalis_segment_{inverse,cauchy}.hpp and
+// (docs/mathematics.md §4): generated/scalis_segment_{inverse,cauchy}.hpp and
 // generated/scalis_segment_table.hpp. See kernel_writer.hpp.
 #include <map>
 #include <sstream>
@@ -11,7 +11,7 @@ namespace skelconv::codegen {
 namespace {
 
 // The ends ordered so that τ grows from end_a to end_b: Δτ ≥ 0 keeps every
-// coefficient of the weight τ(t)^(i−1) non-negative (SPEC §4). F and ∇_P F
+// coefficient of the weight τ(t)^(i−1) non-negative (docs/mathematics.md §4). F and ∇_P F
 // do not depend on the direction of the segment.
 constexpr const char* kScalisPrologue =
     "  // Ends ordered so that tau_lo <= tau_hi (Δτ ≥ 0: no cancellation in the weight).\n"
@@ -47,7 +47,7 @@ std::string write_scalis_segment_files(const GeneratorRequest& request, const st
   }
 
   const std::string from =
-      "// SCALIS segments (SPEC §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of\n"
+      "// SCALIS segments (docs/mathematics.md §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of\n"
       "// degree i with the weight σ^i τ(t)^(i−1), and for Cauchy q = |P − Γ(t)|² + σ²τ(t)²\n"
       "// (codegen/segment_families.cpp, ScalisKernelSpec). Unnormalised: f = c F / h is\n"
       "// the runtime's (skelconv/primitives/scalis_segment.hpp).\n";

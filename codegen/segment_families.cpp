@@ -24,7 +24,7 @@ std::string weight_text(int weight_degree) {
   return s + ")";
 }
 
-// SCALIS segment (SPEC §4, Zanni 2013 Table 3): with the radius
+// SCALIS segment (docs/mathematics.md §4, Zanni 2013 Table 3): with the radius
 // τ(t) = τ0 + Δτ t and scale σ, both the inverse and the Cauchy kernel give
 //     F = σ^i |AB| ∫_0^1 τ(t)^(i−1) q(t)^(−i/2) dt,
 //     q = |P − Γ(t)|² + s2 τ(t)²,   s2 = σ² (Cauchy), 0 (inverse),
@@ -125,7 +125,7 @@ std::string ScalisKernelSpec::equation() const {
   const std::string kernel = family == KernelFamily::cauchy ? "(1 + (d/σ)²)^(−" + i + "/2)" : "(d/σ)^(−" + i + ")";
   return "F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = " + kernel +
          ", τ(t) = τ0 + (τ1 − τ0) t  [= σ^" + i + " |AB| ∫_0^1 τ^" + std::to_string(degree - 1) + " (|P − Γ|²" +
-         (family == KernelFamily::cauchy ? " + σ²τ²" : "") + ")^(−" + i + "/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]";
+         (family == KernelFamily::cauchy ? " + σ²τ²" : "") + ")^(−" + i + "/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]";
 }
 
 StraightLineProgram build_scalis_segment_program(const ScalisKernelSpec& spec, SegmentOutputs outputs) {

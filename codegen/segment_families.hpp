@@ -1,6 +1,6 @@
 // codegen/segment_families.hpp — the segment kernel families, described once.
 //
-// Every family of SPEC §1 writes its kernel as a power of a quadratic in the
+// Every family of docs/mathematics.md §1 writes its kernel as a power of a quadratic in the
 // squared distance, K = (α |P − Γ(t)|² + β)^(−n/2):
 //
 //     inverse p^i    α = 1,      β = 0,  n = i
@@ -12,7 +12,7 @@
 //
 //     ∇f = −n α |AB| ( AP Σ_k w_k M_{k,n+2} − AB Σ_k w_k M_{k+1,n+2} )
 //
-// which shares its base terms with f = |AB| Σ_k w_k M_{k,n} (SPEC §2).
+// which shares its base terms with f = |AB| Σ_k w_k M_{k,n} (docs/mathematics.md §2).
 #pragma once
 
 #include <string>
@@ -40,7 +40,7 @@ enum class SegmentOutputs { value, gradient, value_and_gradient };
 /// the C++ lvalues `f` and `grad[0..2]`.
 StraightLineProgram build_segment_program(const SegmentKernelSpec& spec, SegmentOutputs outputs);
 
-/// One generated SCALIS segment kernel (SPEC §4, Zanni 2013 §3–4): the
+/// One generated SCALIS segment kernel (docs/mathematics.md §4, Zanni 2013 §3–4): the
 /// inverse or Cauchy family, degree i ≥ 2, radius τ(t) = τ0 + (τ1 − τ0) t.
 /// It is the segment kernel of degree i with the weight σ^i τ(t)^(i−1) and,
 /// for Cauchy, q(t) = |P − Γ(t)|² + σ²τ(t)² (the same choices of stable

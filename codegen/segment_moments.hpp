@@ -1,6 +1,6 @@
 // codegen/segment_moments.hpp — the Hubert–Cani recurrences, unrolled.
 //
-// With q(t) = a t² − 2 b t + c and D = ac − b² (SPEC §2), this builds the
+// With q(t) = a t² − 2 b t + c and D = ac − b² (docs/mathematics.md §2), this builds the
 // moments
 //
 //     M_{k,n} = ∫_{t0}^{t1} t^k q(t)^(-n/2) dt        (J_n = M_{0,n})

@@ -74,7 +74,7 @@ class SegmentProgramBuilder {
     const int n = kernel_index();
     // What the outputs need: F = Σ w_k M_{k,n} for f = |AB| F, and
     // G_ap = Σ w_k M_{k,n+2}, G_ab = Σ w_k M_{k+1,n+2} for
-    // ∇f = −n α |AB| (AP G_ap − AB G_ab) (SPEC §2).
+    // ∇f = −n α |AB| (AP G_ap − AB G_ab) (docs/mathematics.md §2).
     //
     // Written as ∇f = −n α |AB| (H G_ap − AB G_E) with H = AP − t* AB (the
     // foot of P on the line: exact from AB × AP near the line, define_foot)
@@ -95,7 +95,7 @@ class SegmentProgramBuilder {
   }
 
  protected:
-  // The run-time choice of stable forms (SPEC §2) for the weighted moments
+  // The run-time choice of stable forms (docs/mathematics.md §2) for the weighted moments
   // Σ_k w_k M_{k+shift,level} of `requests`: one target symbol each. The
   // alternatives are tried in the order pushed, the last is the generic one;
   // the steps below push them in the order of the generated code (GiNaC
@@ -302,7 +302,7 @@ class SegmentProgramBuilder {
   }
 
   // f = |AB| F and ∇f = −n α |AB| (AP G_ap − AB G_ab) = −n α |AB| (H G_ap −
-  // AB G_E), SPEC §2 (build() says why the second form).
+  // AB G_E), docs/mathematics.md §2 (build() says why the second form).
   void add_outputs(const std::vector<symbol>& targets, bool value, bool gradient) {
     if (value) program_.add_output("f", output_scale_ * length_ * targets[0]);
     if (gradient) {

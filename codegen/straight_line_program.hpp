@@ -64,7 +64,7 @@ struct Alternative {
 };
 
 /// Quantities with several forms chosen at run time (e.g. stable rewrites
-/// near the segment's line, SPEC §2).
+/// near the segment's line, docs/mathematics.md §2).
 struct Choice {
   std::vector<GiNaC::symbol> targets;
   std::vector<Alternative> alternatives;

@@ -4,8 +4,8 @@
 //     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
 // Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
 // From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
-// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
-// SCALIS segments (SPEC §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of
+// (recurrence (1) of Hubert & Cani unrolled; docs/mathematics.md §2, Hubert 2012 §3).
+// SCALIS segments (docs/mathematics.md §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of
 // degree i with the weight σ^i τ(t)^(i−1), and for Cauchy q = |P − Γ(t)|² + σ²τ(t)²
 // (codegen/segment_families.cpp, ScalisKernelSpec). Unnormalised: f = c F / h is
 // the runtime's (skelconv/primitives/scalis_segment.hpp).
@@ -23,7 +23,7 @@
 namespace skelconv::generated {
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 47 +, 70 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 54187 +, 68248 ×, 20003 /, 541 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -105,7 +105,7 @@ T scalis_segment_cauchy_i2_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 63 +, 106 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 43620 +, 58866 ×, 10056 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -223,7 +223,7 @@ std::array<T, 3> scalis_segment_cauchy_i2_grad(const ScalisSegmentInput<T>& in) 
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 65 +, 115 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 43621 +, 58870 ×, 10056 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -347,7 +347,7 @@ T scalis_segment_cauchy_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 50 +, 84 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 41681 +, 61934 ×, 13372 /, 5791 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -451,7 +451,7 @@ T scalis_segment_cauchy_i3_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 68 +, 136 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
 /// Longest path: 41520 +, 63561 ×, 8058 /, 3490 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -580,7 +580,7 @@ std::array<T, 3> scalis_segment_cauchy_i3_grad(const ScalisSegmentInput<T>& in) 
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 73 +, 158 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 41523 +, 63575 ×, 8060 /, 3492 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -732,7 +732,7 @@ T scalis_segment_cauchy_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 57 +, 103 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 35449 +, 46603 ×, 10050 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -830,7 +830,7 @@ T scalis_segment_cauchy_i4_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 79 +, 166 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 40146 +, 53098 ×, 6726 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -964,7 +964,7 @@ std::array<T, 3> scalis_segment_cauchy_i4_grad(const ScalisSegmentInput<T>& in) 
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 85 +, 191 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 40149 +, 53108 ×, 6726 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1106,7 +1106,7 @@ T scalis_segment_cauchy_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 62 +, 133 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 31698 +, 50456 ×, 8054 /, 3492 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -1228,7 +1228,7 @@ T scalis_segment_cauchy_i5_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 86 +, 210 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
 /// Longest path: 50956 +, 78088 ×, 7251 /, 3239 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1380,7 +1380,7 @@ std::array<T, 3> scalis_segment_cauchy_i5_grad(const ScalisSegmentInput<T>& in) 
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 95 +, 249 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 50961 +, 78108 ×, 7253 /, 3241 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -1557,7 +1557,7 @@ T scalis_segment_cauchy_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 71 +, 157 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 37711 +, 51314 ×, 8420 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1676,7 +1676,7 @@ T scalis_segment_cauchy_i6_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 99 +, 239 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 49722 +, 65301 ×, 6311 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1834,7 +1834,7 @@ std::array<T, 3> scalis_segment_cauchy_i6_grad(const ScalisSegmentInput<T>& in) 
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 109 +, 279 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 49727 +, 65317 ×, 6311 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -2000,7 +2000,7 @@ T scalis_segment_cauchy_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 78 +, 196 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 35540 +, 59571 ×, 7247 /, 3241 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -2144,7 +2144,7 @@ T scalis_segment_cauchy_i7_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 108 +, 298 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
 /// Longest path: 48932 +, 74681 ×, 5606 /, 2504 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -2323,7 +2323,7 @@ std::array<T, 3> scalis_segment_cauchy_i7_grad(const ScalisSegmentInput<T>& in) 
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 121 +, 350 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 48939 +, 74707 ×, 5608 /, 2506 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -2527,7 +2527,7 @@ T scalis_segment_cauchy_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 89 +, 224 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 33623 +, 46494 ×, 6305 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -2667,7 +2667,7 @@ T scalis_segment_cauchy_i8_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 123 +, 325 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 48748 +, 63485 ×, 5089 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -2847,7 +2847,7 @@ std::array<T, 3> scalis_segment_cauchy_i8_grad(const ScalisSegmentInput<T>& in) 
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 137 +, 380 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 48755 +, 63507 ×, 5089 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -3036,7 +3036,7 @@ T scalis_segment_cauchy_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 98 +, 278 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 32252 +, 55591 ×, 5602 /, 2506 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -3202,7 +3202,7 @@ T scalis_segment_cauchy_i9_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 134 +, 395 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
 /// Longest path: 48168 +, 73315 ×, 4619 /, 2063 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -3404,7 +3404,7 @@ std::array<T, 3> scalis_segment_cauchy_i9_grad(const ScalisSegmentInput<T>& in) 
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 151 +, 464 ×, 9 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 48177 +, 73347 ×, 4621 /, 2065 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -3632,7 +3632,7 @@ T scalis_segment_cauchy_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arra
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 111 +, 306 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 31445 +, 43989 ×, 5083 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -3796,7 +3796,7 @@ T scalis_segment_cauchy_i10_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 151 +, 428 ×, 8 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 47854 +, 61960 ×, 4243 /, 93 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -4003,7 +4003,7 @@ std::array<T, 3> scalis_segment_cauchy_i10_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 169 +, 498 ×, 8 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 47863 +, 61988 ×, 4243 /, 93 sqrt, 0 atan, 0 log/asinh.
 template <class T>

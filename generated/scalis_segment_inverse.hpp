@@ -4,8 +4,8 @@
 //     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
 // Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
 // From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
-// (recurrence (1) of Hubert & Cani unrolled; SPEC §2, Hubert 2012 §3).
-// SCALIS segments (SPEC §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of
+// (recurrence (1) of Hubert & Cani unrolled; docs/mathematics.md §2, Hubert 2012 §3).
+// SCALIS segments (docs/mathematics.md §4, Zanni et al. 2013 §3–4, Table 3): the segment kernel of
 // degree i with the weight σ^i τ(t)^(i−1), and for Cauchy q = |P − Γ(t)|² + σ²τ(t)²
 // (codegen/segment_families.cpp, ScalisKernelSpec). Unnormalised: f = c F / h is
 // the runtime's (skelconv/primitives/scalis_segment.hpp).
@@ -23,7 +23,7 @@
 namespace skelconv::generated {
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 35 +, 48 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 54175 +, 68226 ×, 20003 /, 541 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -95,7 +95,7 @@ T scalis_segment_inverse_i2_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 47 +, 75 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 43604 +, 58835 ×, 10054 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -197,7 +197,7 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 49 +, 84 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 43605 +, 58839 ×, 10054 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -306,7 +306,7 @@ T scalis_segment_inverse_i2_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 39 +, 66 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 41670 +, 61916 ×, 13372 /, 5789 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -404,7 +404,7 @@ T scalis_segment_inverse_i3_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 53 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
 /// Longest path: 41505 +, 63534 ×, 8056 /, 3490 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -524,7 +524,7 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 58 +, 130 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 41508 +, 63547 ×, 8058 /, 3490 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -664,7 +664,7 @@ T scalis_segment_inverse_i3_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 45 +, 83 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 35437 +, 46583 ×, 10050 /, 272 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -758,7 +758,7 @@ T scalis_segment_inverse_i4_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 63 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 40130 +, 53069 ×, 6724 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -882,7 +882,7 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 69 +, 162 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 40133 +, 53079 ×, 6724 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1013,7 +1013,7 @@ T scalis_segment_inverse_i4_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 51 +, 115 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 31687 +, 50438 ×, 8054 /, 3490 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -1130,7 +1130,7 @@ T scalis_segment_inverse_i5_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 71 +, 183 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
 /// Longest path: 50941 +, 78061 ×, 7249 /, 3239 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1274,7 +1274,7 @@ std::array<T, 3> scalis_segment_inverse_i5_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 80 +, 221 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 50946 +, 78080 ×, 7251 /, 3239 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -1439,7 +1439,7 @@ T scalis_segment_inverse_i5_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 59 +, 137 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 37699 +, 51294 ×, 8420 /, 182 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1553,7 +1553,7 @@ T scalis_segment_inverse_i6_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 83 +, 210 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 49706 +, 65272 ×, 6309 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1700,7 +1700,7 @@ std::array<T, 3> scalis_segment_inverse_i6_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 93 +, 250 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 49711 +, 65288 ×, 6309 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -1855,7 +1855,7 @@ T scalis_segment_inverse_i6_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 67 +, 178 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 35529 +, 59553 ×, 7247 /, 3239 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -1993,7 +1993,7 @@ T scalis_segment_inverse_i7_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 93 +, 271 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
 /// Longest path: 48917 +, 74654 ×, 5604 /, 2504 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -2163,7 +2163,7 @@ std::array<T, 3> scalis_segment_inverse_i7_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 106 +, 322 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 48924 +, 74679 ×, 5606 /, 2504 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -2355,7 +2355,7 @@ T scalis_segment_inverse_i7_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 77 +, 204 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 33611 +, 46474 ×, 6305 /, 137 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -2490,7 +2490,7 @@ T scalis_segment_inverse_i8_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 107 +, 296 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 48732 +, 63456 ×, 5087 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -2659,7 +2659,7 @@ std::array<T, 3> scalis_segment_inverse_i8_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 121 +, 351 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 48739 +, 63478 ×, 5087 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -2837,7 +2837,7 @@ T scalis_segment_inverse_i8_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 87 +, 260 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 32241 +, 55573 ×, 5602 /, 2504 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -2997,7 +2997,7 @@ T scalis_segment_inverse_i9_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 119 +, 368 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
 /// Longest path: 48153 +, 73288 ×, 4617 /, 2063 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -3190,7 +3190,7 @@ std::array<T, 3> scalis_segment_inverse_i9_grad(const ScalisSegmentInput<T>& in)
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 136 +, 436 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
 /// Longest path: 48162 +, 73319 ×, 4619 /, 2063 sqrt, 0 atan, 1 log/asinh.
 template <class T>
@@ -3406,7 +3406,7 @@ T scalis_segment_inverse_i9_f_and_grad(const ScalisSegmentInput<T>& in, std::arr
 }
 
 /// the field, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 99 +, 286 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 31433 +, 43969 ×, 5083 /, 111 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -3565,7 +3565,7 @@ T scalis_segment_inverse_i10_f(const ScalisSegmentInput<T>& in) {
 }
 
 /// its gradient ∇_P f, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 135 +, 399 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
 /// Longest path: 47838 +, 61931 ×, 4241 /, 93 sqrt, 0 atan, 0 log/asinh.
 template <class T>
@@ -3761,7 +3761,7 @@ std::array<T, 3> scalis_segment_inverse_i10_grad(const ScalisSegmentInput<T>& in
 }
 
 /// the field and its gradient, where
-///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; SPEC §4, Zanni 2013 eq. 13, Table 3]
+///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// Operations: 153 +, 469 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
 /// Longest path: 47847 +, 61959 ×, 4241 /, 93 sqrt, 0 atan, 0 log/asinh.
 template <class T>

@@ -4,14 +4,14 @@
 //     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
 // Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
 // From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
-// (recurrence (1) of Hubert & Cani unrolled; SPEC sec. 2, Hubert 2012 sec. 3).
+// (recurrence (1) of Hubert & Cani unrolled; docs/mathematics.md sec. 2, Hubert 2012 sec. 3).
 // Unnormalised, as generated/scalis_segment_inverse.hpp: f = c F / h is the caller's
 // (skelconv/primitives/scalis_segment.hpp).
 
 #ifndef SKELCONV_SCALIS_SEGMENT_INPUT
 #define SKELCONV_SCALIS_SEGMENT_INPUT
 // The segment AB, the query point p, the radii tau0 at A and tau1 at B
-// (>= 0, not both 0) and the kernel scale sigma (SPEC sec. 4).
+// (>= 0, not both 0) and the kernel scale sigma (docs/mathematics.md sec. 4).
 struct ScalisSegmentInput {
   vec3 a;
   vec3 b;
@@ -144,7 +144,7 @@ float skelconv_segment_rule(vec3 a, vec3 b, vec3 p, vec4 w, float tau0, float ta
 #endif
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-2), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^2 |AB| int_0^1 tau^1 (|P - Gamma|^2)^(-2/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-2), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^2 |AB| int_0^1 tau^1 (|P - Gamma|^2)^(-2/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i2_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -152,14 +152,14 @@ float scalis_segment_inverse_i2_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-2), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^2 |AB| int_0^1 tau^1 (|P - Gamma|^2)^(-2/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-2), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^2 |AB| int_0^1 tau^1 (|P - Gamma|^2)^(-2/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i2_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -4), 0.0, 0.0, 0.0), si.tau0, si.tau1, 1, 1.0, 0.0, 0.0, 2, 0.0, 1.0, grad);
 }
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-3), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^3 |AB| int_0^1 tau^2 (|P - Gamma|^2)^(-3/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-3), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^3 |AB| int_0^1 tau^2 (|P - Gamma|^2)^(-3/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i3_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -167,14 +167,14 @@ float scalis_segment_inverse_i3_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-3), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^3 |AB| int_0^1 tau^2 (|P - Gamma|^2)^(-3/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-3), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^3 |AB| int_0^1 tau^2 (|P - Gamma|^2)^(-3/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i3_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -6), 0.0, 0.0, 0.0), si.tau0, si.tau1, 2, 1.0, 0.0, 0.0, 3, 0.0, 1.0, grad);
 }
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-4), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^4 |AB| int_0^1 tau^3 (|P - Gamma|^2)^(-4/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-4), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^4 |AB| int_0^1 tau^3 (|P - Gamma|^2)^(-4/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i4_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -182,14 +182,14 @@ float scalis_segment_inverse_i4_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-4), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^4 |AB| int_0^1 tau^3 (|P - Gamma|^2)^(-4/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-4), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^4 |AB| int_0^1 tau^3 (|P - Gamma|^2)^(-4/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i4_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -8), 0.0, 0.0, 0.0), si.tau0, si.tau1, 3, 1.0, 0.0, 0.0, 4, 0.0, 1.0, grad);
 }
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-5), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^5 |AB| int_0^1 tau^4 (|P - Gamma|^2)^(-5/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-5), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^5 |AB| int_0^1 tau^4 (|P - Gamma|^2)^(-5/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i5_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -197,14 +197,14 @@ float scalis_segment_inverse_i5_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-5), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^5 |AB| int_0^1 tau^4 (|P - Gamma|^2)^(-5/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-5), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^5 |AB| int_0^1 tau^4 (|P - Gamma|^2)^(-5/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i5_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -10), 0.0, 0.0, 0.0), si.tau0, si.tau1, 4, 1.0, 0.0, 0.0, 5, 0.0, 1.0, grad);
 }
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-6), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^6 |AB| int_0^1 tau^5 (|P - Gamma|^2)^(-6/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-6), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^6 |AB| int_0^1 tau^5 (|P - Gamma|^2)^(-6/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i6_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -212,14 +212,14 @@ float scalis_segment_inverse_i6_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-6), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^6 |AB| int_0^1 tau^5 (|P - Gamma|^2)^(-6/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-6), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^6 |AB| int_0^1 tau^5 (|P - Gamma|^2)^(-6/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i6_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -12), 0.0, 0.0, 0.0), si.tau0, si.tau1, 5, 1.0, 0.0, 0.0, 6, 0.0, 1.0, grad);
 }
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-7), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^7 |AB| int_0^1 tau^6 (|P - Gamma|^2)^(-7/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-7), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^7 |AB| int_0^1 tau^6 (|P - Gamma|^2)^(-7/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i7_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -227,14 +227,14 @@ float scalis_segment_inverse_i7_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-7), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^7 |AB| int_0^1 tau^6 (|P - Gamma|^2)^(-7/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-7), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^7 |AB| int_0^1 tau^6 (|P - Gamma|^2)^(-7/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i7_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -14), 0.0, 0.0, 0.0), si.tau0, si.tau1, 6, 1.0, 0.0, 0.0, 7, 0.0, 1.0, grad);
 }
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-8), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^8 |AB| int_0^1 tau^7 (|P - Gamma|^2)^(-8/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-8), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^8 |AB| int_0^1 tau^7 (|P - Gamma|^2)^(-8/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i8_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -242,14 +242,14 @@ float scalis_segment_inverse_i8_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-8), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^8 |AB| int_0^1 tau^7 (|P - Gamma|^2)^(-8/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-8), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^8 |AB| int_0^1 tau^7 (|P - Gamma|^2)^(-8/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i8_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -16), 0.0, 0.0, 0.0), si.tau0, si.tau1, 7, 1.0, 0.0, 0.0, 8, 0.0, 1.0, grad);
 }
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-9), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^9 |AB| int_0^1 tau^8 (|P - Gamma|^2)^(-9/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-9), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^9 |AB| int_0^1 tau^8 (|P - Gamma|^2)^(-9/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i9_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -257,14 +257,14 @@ float scalis_segment_inverse_i9_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-9), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^9 |AB| int_0^1 tau^8 (|P - Gamma|^2)^(-9/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-9), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^9 |AB| int_0^1 tau^8 (|P - Gamma|^2)^(-9/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i9_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -18), 0.0, 0.0, 0.0), si.tau0, si.tau1, 8, 1.0, 0.0, 0.0, 9, 0.0, 1.0, grad);
 }
 
 // the field, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-10), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^10 |AB| int_0^1 tau^9 (|P - Gamma|^2)^(-10/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-10), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^10 |AB| int_0^1 tau^9 (|P - Gamma|^2)^(-10/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i10_f(ScalisSegmentInput si) {
   vec3 grad;
@@ -272,7 +272,7 @@ float scalis_segment_inverse_i10_f(ScalisSegmentInput si) {
 }
 
 // the field and its gradient, where
-//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-10), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^10 |AB| int_0^1 tau^9 (|P - Gamma|^2)^(-10/2) dt; SPEC sec. 4, Zanni 2013 eq. 13, Table 3]
+//     F(P) = int_0^1 K(|P - Gamma(t)|/tau(t)) |AB| dt/tau(t), K(d) = (d/sigma)^(-10), tau(t) = tau0 + (tau1 - tau0) t  [= sigma^10 |AB| int_0^1 tau^9 (|P - Gamma|^2)^(-10/2) dt; docs/mathematics.md sec. 4, Zanni 2013 eq. 13, Table 3]
 // Form: the definition integral by skelconv_segment_rule (24 nodes per side).
 float scalis_segment_inverse_i10_f_and_grad(ScalisSegmentInput si, out vec3 grad) {
   return skelconv_segment_rule(si.a, si.b, si.p, vec4(skelconv_rule_power(si.sigma, -20), 0.0, 0.0, 0.0), si.tau0, si.tau1, 9, 1.0, 0.0, 0.0, 10, 0.0, 1.0, grad);

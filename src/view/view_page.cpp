@@ -5,6 +5,7 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,7 @@
 #include "page_text.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/kernels/kernel_list.hpp"
+#include "skelconv/kernels/read_trait.hpp"
 
 namespace skelconv {
 
@@ -253,30 +255,38 @@ struct PageTerm {
   double peak = 1;
 };
 
-/// The shader's code of a segment or a point of `family` (view_march.glsl
-/// evaluates and bounds each code its own way): the view's one dispatch on
-/// the family. Families without a GLSL form never get here (check_term
-/// refuses them first).
+/// The shader's codes of a segment and a point (view_march.glsl takes its
+/// step bound by code), read off the family's trait (radial_kernel.hpp): a
+/// finite support takes the Lipschitz step inside the support and the gap
+/// beyond it; an infinite support that still vanishes far (the Gaussian)
+/// the Lipschitz step everywhere; a power of a quadratic (α r² + β)^(−i/2)
+/// (the trait's quadratic_form) the ratio step of the inverse (β = 0) or
+/// the Cauchy (β = 1) kernel. Families without a GLSL form never get here
+/// (check_term refuses them first).
 struct ShaderCodes {
-  KernelFamily family;
   Code segment, point;
 };
-constexpr ShaderCodes shader_codes[] = {
-    {KernelFamily::inverse, Code::inverse_segment, Code::inverse_point},
-    {KernelFamily::cauchy, Code::cauchy_segment, Code::cauchy_point},
-    {KernelFamily::compact, Code::compact_segment, Code::supported_point},
-    {KernelFamily::soft, Code::compact_segment, Code::supported_point},
-    {KernelFamily::wyvill, Code::compact_segment, Code::supported_point},
-    {KernelFamily::ferley, Code::compact_segment, Code::supported_point},
-    {KernelFamily::gaussian, Code::compact_segment, Code::gaussian_point},
-};
-const ShaderCodes& shader_code(KernelFamily family) {
-  const auto found = std::find_if(std::begin(shader_codes), std::end(shader_codes),
-                                  [&](const ShaderCodes& c) { return c.family == family; });
-  // A GLSL form without its code here is a programming error (check_term
-  // refuses the families without a GLSL form before this).
-  if (found == std::end(shader_codes)) throw std::logic_error("no shader code for " + std::string(family_name(family)));
-  return *found;
+ShaderCodes shader_code(KernelFamily family) {
+  const std::optional<ShaderCodes> codes = kernels::read_trait<std::optional<ShaderCodes>>(
+      family,
+      [](auto trait) -> std::optional<ShaderCodes> {
+        using K = typename decltype(trait)::type;
+        if constexpr (K::finite_support) {
+          return ShaderCodes{Code::compact_segment, Code::supported_point};
+        } else if constexpr (K::vanishes_far) {
+          return ShaderCodes{Code::compact_segment, Code::gaussian_point};
+        } else if constexpr (requires { K::quadratic_form(1.0); }) {
+          if (K::quadratic_form(1.0)[1] == 0.0) return ShaderCodes{Code::inverse_segment, Code::inverse_point};
+          return ShaderCodes{Code::cauchy_segment, Code::cauchy_point};
+        } else {
+          return std::nullopt;
+        }
+      },
+      std::nullopt);
+  // A GLSL form whose step bound the rules above do not give is a
+  // programming error (check_term refuses the families without a GLSL form).
+  if (!codes) throw std::logic_error("no shader code for " + std::string(family_name(family)));
+  return *codes;
 }
 
 bool is_supported(Code code) { return code == Code::compact_segment || code == Code::supported_point; }
