@@ -10,10 +10,12 @@ Fails (exit 1, one line per problem) when
     compile from an installed tree, where src/ does not exist);
   - a file of src/A/ includes a private header of another folder src/B/
     (shared private headers live in src/detail/, which every folder may use);
-  - an installed header (include/skelconv/ outside detail/, the detail/
+  - an installed header (include/skelconv/ outside detail/ and the folders
+    cmake/install.cmake excludes with `PATTERN name EXCLUDE`, the detail/
     headers listed in cmake/install.cmake's SKELCONV_INSTALLED_DETAIL_HEADERS,
-    generated/*.hpp) includes a detail/ header that is not installed, or the
-    list names a detail/ header that no installed header includes.
+    generated/*.hpp) includes a detail/ header that is not installed, or a
+    header of an excluded folder, or the list names a detail/ header that no
+    installed header includes.
 System headers and third-party libraries are not followed: only includes that
 start with "skelconv/", "generated/", "src/", "tools/" or are relative to the
 including file are project includes.
@@ -89,6 +91,12 @@ def installed_detail(root):
     return {pathlib.Path("include/skelconv/detail") / n for n in m.group(1).split()}
 
 
+def excluded_folders(root):
+    """The folders of include/skelconv/ that cmake/install.cmake does not install."""
+    text = (root / "cmake" / "install.cmake").read_text(encoding="utf-8")
+    return set(re.findall(r"PATTERN\s+(\w+)\s+EXCLUDE", text))
+
+
 def main():
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else
                         pathlib.Path(__file__).resolve().parent.parent)
@@ -108,9 +116,15 @@ def main():
     if detail_list is None:
         problems.append("cmake/install.cmake: no SKELCONV_INSTALLED_DETAIL_HEADERS list")
     else:
+        excluded = excluded_folders(root)
         installed = {f for f in edges if f.parts[0] == "generated" or
-                     (f.parts[:2] == ("include", "skelconv") and "detail" not in f.parts)}
+                     (f.parts[:2] == ("include", "skelconv") and not excluded.intersection(f.parts[2:-1]))}
         installed = {f for f in installed if f.suffix == ".hpp"}
+        for f in sorted(installed):
+            for t in edges[f]:
+                if t.parts[:2] == ("include", "skelconv") and excluded.intersection(t.parts[2:-1]) \
+                        and "detail" not in t.parts:
+                    problems.append(f"{f} (installed) includes {t}, which cmake/install.cmake does not install")
         reached = set()
         for f in installed | detail_list:
             for t in edges.get(f, []):
