@@ -26,16 +26,17 @@ DEGREE, SIGMA = 6, 3.0                   # compact SCALIS kernel, support σ τ
 KERNEL = {"family": "compact", "degree": DEGREE, "sigma": SIGMA}
 APEX = np.array([0.0, 0.0, 0.0])
 ARM = np.array([2.4, 8.0, 0.0])          # one arm ends at (±2.4, 8, 0): half-angle atan 0.3 = 16.7°
-# Radius / distance from the apex: half of the half-angle's tangent, so that on the V's
-# axis each arm is seen at 2 τ (its field there ~0.19 of the level, the two together
-# ~0.4: the crotch stays open, and the supports σ τ = 3 τ overlap there: a blend).
-SLOPE = 0.15
+# Radius / distance from the apex: 0.57 of the half-angle's tangent, so that on the V's axis
+# each arm is seen at 1.75 τ: its field there is below half the level, so the crotch stays
+# open under max and under + (measured: the claims print f on the axis), while the supports
+# σ τ = 3 τ overlap there and the + blend's fuller crotch shows.
+SLOPE = 0.17
 TAU_END = SLOPE * float(np.linalg.norm(ARM))
 # The identity is checked at points of a cross-section of the V (station y = 1.5, across
 # both arms and the crotch, and above the plane) against the same points scaled by 1/3
 # (the thin end, y = 0.5) and by 2 (y = 3): every station is far enough from the arms'
-# ends (8.35 long) that the supports (reaching arm parameters up to 1/(1 − 0.45) of their
-# own) do not see them.
+# ends (8.35 long) that the supports (reaching arm parameters up to 1/(1 − 3 × 0.17) of
+# their own) do not see them.
 STATION = 1.5
 SCALES = (1.0 / 3.0, 2.0)
 # An exact identity: the tolerance is the evaluation's accuracy (closed forms and Gauss
@@ -104,7 +105,8 @@ def draw(ctx):
             f"{label} blend: the same blend at the thin and at the thick end (SCALIS: f(λP) = f(P) about the apex)",
             f"max |f(λP) − f(P)| / max f, λ = 1/3 and 2, over {len(probes())} points of the section y = {STATION:g} "
             f"(so at y = 0.5, 1.5, 3): {fmt(departure)} (tolerance {INVARIANCE_TOLERANCE:g}; max f there {fmt(peak)}); "
-            f"f on the V's axis there: {', '.join(fmt(v, 6) for v in on_axis)} (below 1: the V is open); mesh "
+            f"f on the V's axis there: {', '.join(fmt(v, 6) for v in on_axis)} "
+            f"({'below 1: the V is open' if on_axis.max() < 1 else 'above 1: the crotch is filled'}); mesh "
             f"{m.stats['triangles']} triangles, closed {m.stats['closed']}",
             departure < INVARIANCE_TOLERANCE and m.closed))
         claims.append(Claim(
