@@ -27,7 +27,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-from figlib import gallery  # noqa: E402
+from figlib import gallery, plot  # noqa: E402
 from figlib.claims import Claim  # noqa: E402
 from figlib.field import Field  # noqa: E402
 from figlib.figure import Context  # noqa: E402
@@ -194,6 +194,7 @@ def main():
         print("run.py: --gallery needs full-resolution images (no --quick, no --no-images)", file=sys.stderr)
         return 2
     os.makedirs(args.out, exist_ok=True)
+    plot.print_size(not args.quick)
     names = args.only or registered()
     unknown = [n for n in names if n not in registered()]
     if unknown:

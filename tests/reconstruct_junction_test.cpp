@@ -157,7 +157,7 @@ TEST(Branches, ParallelPathsWithoutHoleAreRemoved) {
 // J = (0,0,0) through (1, 0.1), tip (2, 0), (1, -0.1) (two other branches
 // leave J towards (-2, 0) and (0, -2)). Radius 0.5: each half runs inside
 // the other's tube, so one half goes and the tip (2, 0) becomes an end,
-// as the tree's outermost branches need (ferley1996_tree). With radius 0.1
+// as the tree's outermost branches need (experiment_ferley1996_tree). With radius 0.1
 // and the halves 1 apart (through (1, ±1): a ring on a stick) the loop
 // encloses a hole and stays.
 TEST(Branches, BranchSplitIntoALoopBecomesOneBranch) {

@@ -1,6 +1,8 @@
 """Plotting conventions shared by every figure: Agg backend, one font size,
-one colour cycle, 100 dpi (so the pixel size is the Figure.size), and PNGs
-without timestamps or software tags (same input, same bytes)."""
+one colour cycle, a layout at 100 dpi (Figure.size is the layout in pixels at
+that density), saved at least PRINT_WIDTH pixels wide (the layout scaled up:
+fonts and lines keep their proportions), and PNGs without timestamps or
+software tags (same input, same bytes)."""
 import matplotlib
 import numpy as np
 
@@ -8,6 +10,17 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 DPI = 100
+# Print size: every gallery image at least this wide, so that a figure shows at
+# print resolution what its claim names (a thin primitive, a fold, a corner). A
+# layout narrower than this is saved at a proportionally higher dpi. Quick runs
+# (ctest's smoke renders) save the layout as it is: the same drawing, cheaper.
+PRINT_WIDTH = 1600
+_print = {"enabled": True}
+
+
+def print_size(enabled):
+    """Full runs save at print size (the default); run.py --quick turns it off."""
+    _print["enabled"] = bool(enabled)
 STYLE = {
     "font.size": 9,
     "axes.titlesize": 9,
@@ -35,13 +48,18 @@ def new_figure(size, rows=1, cols=1, **kwargs):
     return fig, axes
 
 
+def print_scale(size):
+    """How much a layout of size=(width_px, height_px) is enlarged when saved (≥ 1)."""
+    return max(1.0, PRINT_WIDTH / size[0]) if _print["enabled"] else 1.0
+
+
 def save(fig, path, size):
-    """Writes fig as PNG at exactly size pixels, without metadata."""
+    """Writes fig as PNG, the layout of size pixels enlarged by print_scale(size), without metadata."""
     if path is None:
         plt.close(fig)
         return
     fig.set_size_inches(size[0] / DPI, size[1] / DPI)
-    fig.savefig(path, dpi=DPI, metadata={"Software": None}, format="png")
+    fig.savefig(path, dpi=DPI * print_scale(size), metadata={"Software": None}, format="png")
     plt.close(fig)
 
 

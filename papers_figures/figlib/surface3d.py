@@ -82,6 +82,19 @@ def render_one(mesh_, png, width, height, frame=None, colours=None, view=None, o
                   view=view, overlay=overlay)
 
 
+def picture(ax, m, size, layout_px, frame=None, view=None, colours=None, title=None):
+    """Renders mesh m into the matplotlib axes ax of a figure of layout size `size`, at
+    layout_px = (width, height) layout pixels (enlarged like the saved image), no axes drawn."""
+    scale = plot.print_scale(size)
+    with tempfile.TemporaryDirectory() as tmp:
+        png = os.path.join(tmp, "panel.png")
+        render_one(m, png, round(layout_px[0] * scale), round(layout_px[1] * scale), frame, colours, view)
+        ax.imshow(plot.plt.imread(png), interpolation="nearest")
+    ax.set_axis_off()
+    if title:
+        ax.set_title(title)
+
+
 def overlay(primitives, tube_radius):
     """The skeleton drawn inside a translucent surface (povray.skeleton_overlay): pass it to panels()."""
     return povray.skeleton_overlay(primitives, tube_radius)
@@ -99,6 +112,7 @@ def panels(ctx, items, size, shared_frame=True, rows=1, frame=None, view=None, o
     cols = -(-len(items) // rows)
     title_px = 22
     width, height = size[0] // cols, size[1] // rows - title_px
+    scale = plot.print_scale(size)            # POV-Ray renders at the saved image's pixel size
     radius = max(povray.framing(item[0].vertices)[1] for item in items)
     fig, axes = plot.new_figure(size, rows, cols, squeeze=False)
     fig.subplots_adjust(left=0, right=1, bottom=0, top=1 - title_px / size[1], wspace=0, hspace=title_px / height)
@@ -108,7 +122,8 @@ def panels(ctx, items, size, shared_frame=True, rows=1, frame=None, view=None, o
             colours = item[2] if len(item) > 2 else None
             png = os.path.join(tmp, f"panel{k}.png")
             own = frame if frame is not None else (povray.framing(m.vertices)[0], radius) if shared_frame else None
-            render_one(m, png, width, height, own, colours, view, overlays[k] if overlays else None)
+            render_one(m, png, round(width * scale), round(height * scale), own, colours, view,
+                       overlays[k] if overlays else None)
             ax.imshow(plot.plt.imread(png), interpolation="nearest")
             ax.set_title(title)
     for ax in axes.flat:

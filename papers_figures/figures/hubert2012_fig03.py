@@ -1,7 +1,10 @@
 """Hubert 2012, Figure 3: curves of prescribed thickness τ around one segment,
-power inverse p^i (left) and compact k_R^i (right), varying i. The diamonds
-are the segment's ends, with the circles of radius R around them: outside
-both circles the compact kernel's curve is exactly the line at height τ."""
+power inverse p^i (left) and compact k_R^i (right), varying i. As in the
+caption, the diamonds are on the compact kernel's curves, at (±(l/2 − √(R² − τ²)), τ):
+the ends of the part of the curve that is exactly the line at height τ. The
+arcs are the circles of radius R centred at the diamonds: each passes through
+the segment's end, so a diamond is the last point whose support (radius R)
+still holds the whole of its stretch of segment, as it would on an infinite line."""
 import numpy as np
 
 from figlib import plot
@@ -62,19 +65,24 @@ def draw(ctx):
             else:
                 inverse_drop[i] = float(TAU - yf[0])
         plot.draw_segment(ax, (-LENGTH / 2, 0), (LENGTH / 2, 0))
-        ax.plot([-LENGTH / 2, LENGTH / 2], [0, 0], "D", color="black", ms=5, clip_on=False)
         ax.axhline(TAU, color="grey", lw=0.6, ls=":")
         ax.set_aspect("equal")
         ax.set_ylim(0, 1.1)
         ax.set_ylabel("y")
         ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=7)
-    theta = np.linspace(0, np.pi, 200)
-    for cx in (-LENGTH / 2, LENGTH / 2):
-        axes[1].plot(cx + R * np.cos(theta), R * np.sin(theta), color="grey", lw=0.8, ls="--")
-    for x in (-flat_end, flat_end):
-        axes[1].axvline(x, color="grey", lw=0.6, ls=":")
+    # The relevant arcs: the quarter of the circle of radius R around each diamond that runs from
+    # the diamond's height down to the segment's end (on the side away from the middle).
+    theta = np.linspace(-np.pi / 2, 0, 361)
+    for side, cx in ((-1, -flat_end), (1, flat_end)):
+        arc_x, arc_y = cx + side * R * np.cos(theta), TAU + R * np.sin(theta)
+        keep = arc_y >= 0
+        axes[1].plot(arc_x[keep], arc_y[keep], color="grey", lw=0.9, ls="--")
+    axes[1].plot([-flat_end, flat_end], [TAU, TAU], color="black", lw=2.4, solid_capstyle="butt", zorder=4)
+    axes[1].plot([-flat_end, flat_end], [TAU, TAU], "D", color="black", ms=7, zorder=5, clip_on=False)
+    axes[1].plot([-LENGTH / 2, LENGTH / 2], [0, 0], "o", color="grey", ms=4)
     axes[0].set_title(f"power inverse $p^i$: curves of thickness τ = {TAU} (upper half)")
-    axes[1].set_title(f"compact $k_R^i$, R = {R}: flat (y = τ) between the dotted lines (outside the circles)")
+    axes[1].set_title(f"compact $k_R^i$, R = {R}: every curve contains the line y = τ between the diamonds;\n"
+                      "dashed: arcs of radius R around the diamonds, through the segment's ends")
     axes[1].set_xlabel("x")
     plot.save(fig, ctx.image_path, FIGURE.size)
 

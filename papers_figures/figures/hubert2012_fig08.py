@@ -24,7 +24,11 @@ FIGURE = Figure(
     caption="An equilateral triangle (left), the graph of the convolution function above it (middle) and "
             "the step-function like contribution of a side of the triangle to it (right).",
     skeletons=[SKELETON], kernel="classical Cauchy c_s⁴, s = 1", view="f on the plane z = 0, x, y in [−3, 3]",
-    size=(640, 250))
+    size=(1600, 560))
+# Where the three panels sit (figure fractions: left, bottom, width, height): the two 3-D
+# graphs get most of the width.
+PANELS = ([0.04, 0.12, 0.2, 0.76], [0.25, 0.02, 0.37, 0.93], [0.62, 0.02, 0.37, 0.93])
+BOX_ZOOM = 1.0
 
 
 def edge_term(m, points):
@@ -47,7 +51,7 @@ def draw(ctx):
     mismatch_off = float(np.max(np.abs(sum(edge_term(m, off) for m in range(3)) - field.f(off))) / np.max(f))
 
     fig = plot.plt.figure(figsize=(FIGURE.size[0] / plot.DPI, FIGURE.size[1] / plot.DPI), dpi=plot.DPI)
-    ax0 = fig.add_subplot(1, 3, 1)
+    ax0 = fig.add_axes(PANELS[0])
     closed = np.vstack([VERTICES, VERTICES[:1]])
     ax0.fill(closed[:, 0], closed[:, 1], color="0.85", edgecolor="black")
     ax0.plot(closed[1:3, 0], closed[1:3, 1], color="tab:red", lw=2.5, label="the side of the right plot")
@@ -57,18 +61,18 @@ def draw(ctx):
     ax0.set_xlabel("x")
     ax0.set_ylabel("y")
     ax0.set_title("triangle Ω")
-    ax0.legend(loc="lower center", fontsize=6)
+    ax0.legend(loc="lower center", fontsize=8)
     for k, (values, title) in enumerate(((f, "f(x, y, 0), $c_s^4$, s = 1"),
                                          (terms[1], "contribution of one side"))):
-        ax = fig.add_subplot(1, 3, 2 + k, projection="3d")
+        ax = fig.add_axes(PANELS[1 + k], projection="3d")
+        ax.set_box_aspect(None, zoom=BOX_ZOOM)
         ax.plot_surface(gx, gy, values.reshape(gx.shape), cmap="viridis", linewidth=0, antialiased=False,
                         rcount=n, ccount=n)
         ax.view_init(elev=30, azim=-60)
-        ax.set_xlabel("x", labelpad=-8)
-        ax.set_ylabel("y", labelpad=-8)
-        ax.tick_params(labelsize=6, pad=-2)
-        ax.set_title(title, fontsize=8)
-    fig.subplots_adjust(left=0.08, right=0.98, bottom=0.12, top=0.9, wspace=0.15)
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.tick_params(labelsize=8)
+        ax.set_title(title, fontsize=10, y=0.98)
     plot.save(fig, ctx.image_path, FIGURE.size)
 
     # Across the side [Q1 Q2] (x = −1), along y = 0, at distances ±d from it.

@@ -65,4 +65,7 @@ def draw(ctx):
         "eq. (9) changes the kernel's support with τ, eq. (10) only its weight",
         f"support radius for τ = {', '.join(map(str, TAUS))}: eq. (9) {', '.join(fmt(s, 6) for s in s9)} "
         f"(σ τ = {', '.join(fmt(sigma * t, 6) for t in taus)}); eq. (10) {', '.join(fmt(s, 6) for s in s10)} (σ = {sigma})",
-        bool(np.all(np.abs(s9 - sigma * taus) < 1e-6) and np.all(np.abs(s10 - sigma) < 1e-6)))]
+        bool(np.all(np.abs(s9 - sigma * taus) < 1e-6) and np.all(np.abs(s10 - sigma) < 1e-6)),
+        note="what the formulas and this figure show; the paper's text (§2.3) swaps the two words: \"eq. (9) and "
+             "(10) correspond respectively to varying the weight of the kernel, or its support\", while eq. (9), "
+             "K(d/τ), scales the support and eq. (10), τ K(d), the weight")]

@@ -36,8 +36,9 @@ def smoothing_claim(tau, classical, scalis, where):
     return Claim(
         "details (thin primitives blended with a thick one) are smoothed by classical convolution, kept by SCALIS",
         f"radius of the 3 thin primitives at y = {PROBE_Y:g} {where}(their own radius {tau:g}): SCALIS "
-        f"{describe(scalis)} (+{fmt(np.max(excess_s) / tau * 100, 2)} % at most); classical {describe(classical)} "
-        f"(none: merged into the thick one's surface); classical widening ≥ {SMOOTHER:g} × SCALIS's for each: "
+        f"{describe(scalis)} (+{fmt(np.max(excess_s) / tau * 100, 2)} % at most); classical {describe(classical)}"
+        + (" (none: merged into the thick one's surface)" if np.any(np.isnan(classical) | (classical <= 0)) else "")
+        + f"; classical widening ≥ {SMOOTHER:g} × SCALIS's for each: "
         f"{'yes' if np.all(excess_c >= SMOOTHER * excess_s) else 'no'}",
         bool(np.all(np.isfinite(excess_s)) and np.all(excess_c >= SMOOTHER * excess_s)))
 
@@ -92,7 +93,7 @@ def draw(ctx):
     alone = float(classical_cauchy_radius(thin_w, ISO_CLASSICAL, DEGREE, SIGMA))
     tau_min = ISO_CLASSICAL / classical_cauchy_line(0.0, 1.0, DEGREE, SIGMA)
     return [Claim(
-        "set-up: each thin classical primitive exists on its own (weight above τ_min) with the thin radius",
+        "(ours) set-up: each thin classical primitive exists on its own (weight above τ_min) with the thin radius",
         f"thin weight {fmt(thin_w)}, τ_min {fmt(tau_min)}; an infinite line of that weight has radius {fmt(alone)} "
         f"(wanted {fmt(thin[0]['radius'][0])})", thin_w > tau_min and abs(alone - thin[0]["radius"][0]) < 1e-9),
         smoothing_claim(tau, c, s, "")]

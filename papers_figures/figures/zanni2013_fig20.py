@@ -35,6 +35,7 @@ ISO_CLASSICAL = classical_cauchy_line(TAU, TAU, DEGREE, SIGMA_CLASSICAL)   # rad
 FORK_CUT = 2.5            # the cut y = 2.5, where the branches' axes are 2.67 apart (far more than 2 radii)
 CUT_SAMPLES = 2001        # samples of f along x ∈ [−4, 4] on the cut (step 0.004, far below a branch's width)
 SAME_WIDTH = 0.05         # |width at the fork / 2τ − 1| below this: the fork keeps the trunk's width
+VIEW = [0.0, -0.3, 1.0]   # front-on: looking down on the fork's plane z = 0, tilted a little
 BRANCHES = {"(a) classical, τ1 + τ2 = τ": TAU / 2, "(b) SCALIS, τ1 + τ2 = τ": TAU / 2,
             "(c) SCALIS, τ1² + τ2² = τ²": TAU / np.sqrt(2)}
 
@@ -50,7 +51,7 @@ FIGURE = Figure(
     kernel="Cauchy 4; SCALIS σ = 1; classical c_s⁴ with σ = τ/1.2 = 0.5 (s = 1/σ² = 4), weights τ: τ/2 is above "
            "the classical τ_min, so the branches exist",
     iso=f"SCALIS 1; classical {ISO_CLASSICAL:.5g} (radius τ around a line of weight τ)",
-    view="the fixed camera of render3d, one scale for all panels", size=(640, 260))
+    view="front-on (from above the skeleton's plane z = 0), one scale for all panels", size=(1600, 760))
 
 
 def branching(label, tau_branch):
@@ -87,15 +88,15 @@ def draw(ctx):
         ratios[label[:3]] = w[1] / (2 * TAU)
         texts.append(f"{label[:3]} {fmt(w[1] / (2 * TAU))} (trunk at y = {STATIONS[0]:g}: {fmt(w[0] / (2 * TAU))}; "
                      f"{m.stats['triangles']} triangles, closed {m.stats['closed']})")
-        meshes.append((m, label))
-    surface3d.panels(ctx, meshes, FIGURE.size)
+        meshes.append((m, f"{label}: width at the fork {w[1] / (2 * TAU):.2f} × 2τ"))
+    surface3d.panels(ctx, meshes, FIGURE.size, view=VIEW)
     measured = f"width at y = {STATIONS[1]:g} / 2τ: " + "; ".join(texts)
     closed = all(m.closed for m, _ in meshes)
     def describe(c):
         return "cut not closed" if c is None else f"{len(c)} (" + ", ".join(f"x ∈ [{a:.2f}, {b:.2f}]" for a, b in c) + ")"
     forks = all(c is not None and len(c) == 2 for c in comps.values())
     return [
-        Claim(f"each panel is a fork: the cut y = {FORK_CUT:g} above it meets the shape in two components, one per branch",
+        Claim(f"(ours) each panel is a fork: the cut y = {FORK_CUT:g} above it meets the shape in two components, one per branch",
               "; ".join(f"{k} {describe(c)}" for k, c in comps.items()), forks),
         Claim("(a) classical convolution is superposable: τ1 + τ2 = τ keeps the trunk's width at the fork",
               measured, abs(ratios["(a)"] - 1) < SAME_WIDTH and closed),

@@ -1,4 +1,6 @@
-"""Zanni et al. 2013, Figure 10 (§4.1): the space deformation taken to the limit.
+"""Experiment (not a figure of the paper): the limit that Zanni et al. 2013's
+Figure 10 sketches (§4.1; the figure itself is a conceptual diagram, listed
+in pending.txt with Figures 8, 9 and 13), checked in numbers.
 A segment of varying radius is approximated by N segments of constant radius,
 each a homothetic primitive of §3 (one homothety per piece); as N → ∞ their sum
 becomes eq. (13), f(P) = ∫ K(|Γ(s)P| / τ(s)) ds / τ(s), which the runtime's
@@ -25,9 +27,10 @@ LIMIT_ERROR = 1e-4          # the limit, extrapolated from N = 32 and 64 (Richar
 ORDER = (1.8, 2.2)          # the midpoint rule's order 2, from the last doublings
 
 FIGURE = Figure(
-    paper="Zanni et al. 2013", kind="Figure", number="10",
-    caption="Taking the space deformation to the limit.",
-    original_caption="Passage de la déformation de l'espace à la limite.",
+    paper="Zanni et al. 2013", kind="Figure", number="the limit of §4.1 (Figure 10's space deformation)",
+    experiment=True,
+    caption="The space deformation of Figure 10 (\"Taking the space deformation to the limit\") in numbers: a "
+            "segment of varying radius as N homothetic pieces of constant radius, against eq. (13) as N grows.",
     section="the limit drawn and measured: a linear-radius segment approximated by N homothetic constant-radius "
             "pieces; (a) iso-curves f = 1 for N = 1, 2, 4 and the limit eq. (13); (b) the largest relative "
             "difference to eq. (13) against N",
@@ -65,8 +68,8 @@ def draw(ctx):
     if ctx.image_path:
         draw_image(ctx, xs, ys, limit, grids, errors)
     return [
-        Claim("approximating a varying radius by constant-radius homothetic pieces and passing to the limit gives "
-              "eq. (13) (the runtime's linear-radius closed form)",
+        Claim("(§4.1) approximating a varying radius by constant-radius homothetic pieces and passing to the limit "
+              "gives eq. (13) (the runtime's linear-radius closed form)",
               f"max |f_N / f − 1| where f ≥ {FLOOR:g}: " + ", ".join(f"N = {n}: {fmt(e)}" for n, e in zip(PIECES, errors))
               + f"; the limit extrapolated from N = {PIECES[-2]}, {PIECES[-1]}: {fmt(limit_error)} (below {LIMIT_ERROR:g})",
               limit_error < LIMIT_ERROR),

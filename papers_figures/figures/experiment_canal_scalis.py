@@ -85,7 +85,7 @@ def colour_bar(fig, above, span):
 def draw(ctx):
     canal = canal_mesh(ctx, ctx.res(96, 24))
     scalis = surface3d.mesh(ctx, {"primitives": [scalis_segment(A, B, TAU0, TAU1, "cauchy", DEGREE, SIGMA)]}, 1.0,
-                            ctx.res(0.01, 0.03), "canal_fig01_scalis")
+                            ctx.res(0.01, 0.03), "canal_scalis")
     canal_d, _, _ = deviation(canal.vertices)
     d, tau, t = deviation(scalis.vertices)
     rel = d / tau
@@ -99,11 +99,12 @@ def draw(ctx):
         fig, axes = plot.new_figure(FIGURE.size, 1, 3, squeeze=False)
         fig.subplots_adjust(left=0.0, right=0.98, bottom=0.16, top=0.9, wspace=0.32)
         frame = surface3d.common_frame([canal, scalis])
+        scale = plot.print_scale(FIGURE.size)     # the panels at the saved image's pixel size
         with tempfile.TemporaryDirectory() as tmp:
             for ax, m, c, title in ((axes[0, 0], canal, None, "(a) canal surface"),
                                     (axes[0, 1], scalis, colours, "(b) SCALIS, colour δ/τ")):
                 png = os.path.join(tmp, "panel.png")
-                surface3d.render_one(m, png, 260, 220, frame, c)
+                surface3d.render_one(m, png, round(260 * scale), round(220 * scale), frame, c)
                 ax.imshow(plot.plt.imread(png), interpolation="nearest")
                 ax.set_title(title)
                 ax.set_axis_off()
