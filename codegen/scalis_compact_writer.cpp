@@ -16,26 +16,28 @@
 // dy / (1 − κy), with ζ = 1/(1 + λ) = τ(t1)/τ(t2) and κ = λ/(1 + λ) = Δτ w/τ(t2):
 //     ∫_0^1 p(x) (1 + λx)^−(i+1) dx = Σ_k d_k ζ^(k+1) K_k,
 //     K_k = ∫_0^1 y^k (1 − y)^(i−k) / (1 − κy) dy.
-// Since (1 − y) + ζy = 1 − κy, K_k = β_k − ζ K_(k+1) with β_k = k!(i−1−k)!/i!,
-// run downwards from K_i = ∫_0^1 y^i/(1 − κy) dy = Σ_r κ^r/(i+1+r): the one
-// function of one variable κ ∈ [0, 1) the forms need. Where κ is near 1 (the
+// Since (1 − y) + ζy = 1 − κy, K_k = β_k − ζ K_(k+1) with β_k = k!(i−1−k)!/i!:
+// one K_s (a function of one variable κ ∈ [0, 1)) gives the others, downwards
+// below s and upwards above. K_i = ∫_0^1 y^i/(1 − κy) dy = Σ_r κ^r/(i+1+r).
+// Where κ is near 1 (the
 // cone's tip near the support) it has the partial-fraction form of the paper,
 // (ln(1 + λ) − Σ_{r=1}^{i} κ^r/r) / κ^(i+1), with its one logarithm; the
 // difference cancels as κ decreases (Δτ w → 0), and there K_i is a
 // polynomial in κ instead: Chebyshev interpolants on the pieces
 // ζ ∈ [2^−p−1, 2^−p] (p = 0, 1, …), each with a proven bound.
 //
-// Accuracy. A relative error δ in K_i moves the sum Σ d_k ζ^(k+1) K_k by at
-// most δ A(κ), A(κ) = max_k ζ^(i−k) K_i/K_k (the homogeneous solution of the
-// recurrence, (−ζ)^(i−k), meets Σ_k d_k (−1)^(i−k), the x^i coefficient of
-// p, which is at most Σ_k d_k for nonnegative d). A is C(i, m) at κ = 0 (6
-// for i = 4, 252 for i = 10) and decreases with κ.
+// Accuracy. A relative error δ in K_s moves the sum Σ d_k ζ^(k+1) K_k by at
+// most δ A_s(κ), A_s(κ) = max_k ζ^(s−k) K_s/K_k (the homogeneous solution of
+// the recurrence, (−ζ)^(s−k), meets Σ_k d_k (−1)^(i−k), the x^i coefficient
+// of p, which is at most Σ_k d_k for nonnegative d). A_i is C(i, m) at κ = 0
+// (6 for i = 4, 252 for i = 10) and decreases with κ; each interpolant's s
+// is the one of least A_s over its piece (≤ 1.33 for i ≤ 10).
 //  * Interpolants: for K_i analytic inside the Bernstein ellipse E_ρ of a
 //    piece, the interpolant at R + 1 Chebyshev points errs by at most
 //    4Mρ^−R/(ρ − 1) (Trefethen, Approximation Theory and Approximation
-//    Practice, Thm 8.2). K_i's only singularity is at κ = 1, and on E_ρ
+//    Practice, Thm 8.2). K_s's only singularity is at κ = 1, and on E_ρ
 //    |1 − κy| ≥ 1 − x_max (x_max the ellipse's rightmost point), so M ≤
-//    1/((i+1)(1 − x_max)) while K_i ≥ 1/(i+1) on the piece: R is the
+//    β/(1 − x_max) while K_s ≥ β = ∫ y^s (1 − y)^(i−s) on the piece: R is the
 //    smallest degree whose bound, minimised over ρ, is below 2^−56 relative.
 //  * Partial fractions: ln and the polynomial are each accurate to rounding,
 //    so K_i errs by at most u((ℓ + 2iP)/(ℓ − P) + i + 2) relative (ℓ = ln(1+λ),
@@ -98,6 +100,26 @@ Real beta(int i, int k) {
   return b;
 }
 
+/// K_0 … K_i at κ (downwards from K_i; at most C(i, i/2) = 252 of the ~45
+/// digits are lost).
+std::vector<Real> all_moments(int i, const Real& kappa) {
+  std::vector<Real> K(i + 1);
+  K[i] = top_moment(i, kappa);
+  for (int k = i - 1; k >= 0; --k) K[k] = beta(i, k) - (Real(1) - kappa) * K[k + 1];
+  return K;
+}
+
+/// A_s(κ) = max_k ζ^(s−k) K_s/K_k: how much a relative error in K_s moves
+/// Σ d_k ζ^(k+1) K_k (file comment) when the others come from K_s by the
+/// recurrence, downwards below s and upwards above.
+double amplification(int i, int s, const Real& kappa) {
+  const std::vector<Real> K = all_moments(i, kappa);
+  const Real zeta = Real(1) - kappa;
+  Real worst = 0;
+  for (int k = 0; k <= i; ++k) worst = std::max(worst, Real(pow(zeta, s - k) * K[s] / K[k]));
+  return static_cast<double>(worst);
+}
+
 /// The bound of the partial-fraction form at κ (file comment), relative.
 double partial_fraction_bound(int i, const Real& kappa) {
   const Real zeta = Real(1) - kappa;
@@ -133,10 +155,12 @@ int partial_fraction_piece(int i) {
 
 // ------------------------------------------------------ Chebyshev pieces
 
-/// K_i on ζ ∈ [2^−p−1, 2^−p], i.e. κ = c + h s, s ∈ [−1, 1], c = 1 − 3h,
-/// h = 2^−p−2: K_i ≈ Σ_j a_j s^j.
+/// K_s on ζ ∈ [2^−p−1, 2^−p], i.e. κ = c + h s, s ∈ [−1, 1], c = 1 − 3h,
+/// h = 2^−p−2: K_s ≈ Σ_j a_j s^j, s the start index of least amplification.
 struct Piece {
   int p;
+  int start;                 ///< s: the interpolant is K_s, the others by the recurrence
+  double amplification;      ///< max of A_s over the piece
   double kappa_hi;           ///< 1 − 2^−p−1
   double center, inv_half;   ///< c and 1/h
   int degree;                ///< R
@@ -170,12 +194,24 @@ Piece chebyshev_piece(int i, int p) {
   while (interpolation_bound(p, R) > target) ++R;
   piece.degree = R;
   piece.bound = interpolation_bound(p, R);
+  // The start index with the smallest amplification over the piece (on a
+  // grid of 17 points): from 252 (i = 10, s = i) down to about 1.3 near κ = 0.
+  piece.start = i;
+  piece.amplification = 1e300;
+  for (int start = 0; start <= i; ++start) {
+    double worst = 0;
+    for (int g = 0; g <= 16; ++g) worst = std::max(worst, amplification(i, start, c + h * Real(-1 + g / 8.0)));
+    if (worst < piece.amplification) {
+      piece.amplification = worst;
+      piece.start = start;
+    }
+  }
   // Chebyshev coefficients from the values at the R + 1 points of the first kind.
   const Real pi = boost::math::constants::pi<Real>();
   std::vector<Real> values(R + 1), nodes(R + 1);
   for (int j = 0; j <= R; ++j) {
     nodes[j] = cos(pi * (Real(j) + Real(0.5)) / Real(R + 1));
-    values[j] = top_moment(i, c + h * nodes[j]);
+    values[j] = all_moments(i, c + h * nodes[j])[piece.start];
   }
   std::vector<Real> cheb(R + 1);
   for (int k = 0; k <= R; ++k) {
@@ -210,7 +246,7 @@ Piece chebyshev_piece(int i, int p) {
     const double s = -1 + j / 32.0;
     double v = piece.monomial[R];
     for (int k = R - 1; k >= 0; --k) v = v * s + piece.monomial[k];
-    const Real exact = top_moment(i, c + h * Real(s));
+    const Real exact = all_moments(i, c + h * Real(s))[piece.start];
     worst = std::max(worst, static_cast<double>(abs((Real(v) - exact) / exact)));
   }
   if (worst > std::ldexp(1.0, -50))
@@ -348,35 +384,54 @@ std::string function_text(int i, int which, const std::vector<Piece>& pieces, in
   common.line("const T inv_tau_hi = T(1) / in.tau_hi;");
   common.line("const T zeta = in.tau_lo * inv_tau_hi;");
   common.line("const T kappa = in.rise * inv_tau_hi;");
-  const std::string top = "k" + std::to_string(i);
-  common.line("T " + top + ";  // ∫_0^1 y^" + std::to_string(i) + "/(1 − κ y) dy");
-  // One block per form of K_i.
+  common.line("const T inv_tau_lo = T(1) / in.tau_lo;");
+  std::string declared = "T k0";
+  for (int k = 1; k <= i; ++k) declared += ", k" + std::to_string(k);
+  common.line(declared + ";  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy");
+  // The recurrence from K_start: downwards K_k = β_k − ζ K_(k+1), upwards
+  // K_(k+1) = (β_k − K_k)/ζ, 1/ζ = τ(t2)/τ(t1).
+  auto recurrence = [&](Block& f, int start) {
+    if (start < i) f.line("const T inv_zeta = in.tau_hi * inv_tau_lo;");
+    for (int k = start - 1; k >= 0; --k)
+      f.line("k" + std::to_string(k) + " = " + literal(static_cast<double>(beta(i, k))) + " - zeta * k" +
+             std::to_string(k + 1) + ";");
+    for (int k = start; k < i; ++k)
+      f.line("k" + std::to_string(k + 1) + " = (" + literal(static_cast<double>(beta(i, k))) + " - k" +
+             std::to_string(k) + ") * inv_zeta;");
+  };
+  // One block per form.
   std::vector<Block> forms;
-  std::ostringstream chain;
   for (const Piece& piece : pieces) {
     Block f(2);
-    char why[200];
-    std::snprintf(why, sizeof why, "κ ≤ %.17g: Chebyshev interpolant of degree %d (bound %.1e relative)",
-                  piece.kappa_hi, piece.degree, piece.bound);
+    char why[240];
+    std::snprintf(why, sizeof why,
+                  "κ ≤ %.17g: K_%d by a Chebyshev interpolant of degree %d (bound %.1e relative), the others by "
+                  "the recurrence (amplification ≤ %.2f)",
+                  piece.kappa_hi, piece.start, piece.degree, piece.bound, piece.amplification);
     f.comment(why);
+    const std::string top = "k" + std::to_string(piece.start);
     f.line("const T s = (kappa - " + literal(piece.center) + ") * " + literal(piece.inv_half) + ";");
     f.line(top + " = " + literal(piece.monomial[piece.degree]) + ";");
     for (int k = piece.degree - 1; k >= 0; --k) f.line(top + " = " + top + " * s + " + literal(piece.monomial[k]) + ";");
+    recurrence(f, piece.start);
     forms.push_back(f);
   }
   {
     Block f(2);
     char why[200];
     std::snprintf(why, sizeof why,
-                  "κ > %.17g: partial fractions, (ln(1 + λ) − Σ_{r=1}^{%d} κ^r/r) / κ^%d, bound %.0e with A(κ)",
-                  1 - std::ldexp(1.0, -closed_piece), i, i + 1, kPartialFractionTarget);
+                  "κ > %.17g: partial fractions, K_%d = (ln(1 + λ) − Σ_{r=1}^{%d} κ^r/r) / κ^%d (bound %.0e with "
+                  "the recurrence)",
+                  1 - std::ldexp(1.0, -closed_piece), i, i, i + 1, kPartialFractionTarget);
     f.comment(why);
-    f.line("const T ell = log(in.tau_hi / in.tau_lo);");
+    const std::string top = "k" + std::to_string(i);
+    f.line("const T ell = log(in.tau_hi * inv_tau_lo);");
     f.line("T partial = " + literal(1.0 / i) + ";");
     for (int r = i - 1; r >= 1; --r) f.line("partial = partial * kappa + " + literal(1.0 / r) + ";");
     f.line("partial = partial * kappa;");
     const std::string kp = power(f, "kappa", i + 1, "kappa_power");
     f.line(top + " = (ell - partial) / " + kp + ";");
+    recurrence(f, i);
     forms.push_back(f);
   }
   Block body(1);
@@ -396,10 +451,6 @@ std::string function_text(int i, int which, const std::vector<Piece>& pieces, in
   generic += forms[0].ops();
   longest += longest_form;
   Block rest(1);
-  rest.comment("K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!");
-  for (int k = i - 1; k >= 0; --k)
-    rest.line("const T k" + std::to_string(k) + " = " + literal(static_cast<double>(beta(i, k))) + " - zeta * k" +
-              std::to_string(k + 1) + ";");
   rest.comment("Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products");
   const Poly q = {"in.b0", "q1", "in.b2"};
   rest.line("const T q1 = in.b1 + in.b1;");
@@ -407,7 +458,6 @@ std::string function_text(int i, int which, const std::vector<Piece>& pieces, in
   if (m >= 2) lower = q;
   for (int j = 2; j <= m - 1; ++j) lower = multiply(rest, lower, q, "qp" + std::to_string(j) + "_");
   rest.comment("1/τ(t1)^(i+1), 1/σ^(i−2)");
-  rest.line("const T inv_tau_lo = T(1) / in.tau_lo;");
   const std::string tau_power = power(rest, "inv_tau_lo", i + 1, "inv_tau_lo_power");
   std::string sigma_lower = "T(1)";
   if (m >= 2) sigma_lower = power(rest, "in.inv_sigma2", m - 1, "inv_sigma_power");

@@ -17,8 +17,8 @@ namespace skelconv::generated {
 
 /// f of the compact SCALIS segment of degree 2 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 31 +, 42 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 31 +, 42 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 98 +, 121 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 31 +, 43 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 31 +, 43 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 98 +, 122 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i2_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -27,39 +27,43 @@ bool scalis_segment_compact_i2_f(const ScalisCompactSupport<T>& in, ScalisCompac
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k2;  // ∫_0^1 y^2/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_1 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.25)) * T(4);
-    k2 = T(8.7327318129972441e-14);
-    k2 = k2 * s + T(2.7145750769525988e-13);
-    k2 = k2 * s + T(2.7731170122242929e-13);
-    k2 = k2 * s + T(8.6922017222719871e-13);
-    k2 = k2 * s + T(4.3617006115559428e-12);
-    k2 = k2 * s + T(1.3663631848436027e-11);
-    k2 = k2 * s + T(4.015576161758183e-11);
-    k2 = k2 * s + T(1.2641413869031562e-10);
-    k2 = k2 * s + T(4.0188085275368428e-10);
-    k2 = k2 * s + T(1.2714849420510505e-09);
-    k2 = k2 * s + T(4.0326173001596244e-09);
-    k2 = k2 * s + T(1.2839430876245294e-08);
-    k2 = k2 * s + T(4.1034032550269262e-08);
-    k2 = k2 * s + T(1.3169744618926884e-07);
-    k2 = k2 * s + T(4.2473840034880446e-07);
-    k2 = k2 * s + T(1.377538017846316e-06);
-    k2 = k2 * s + T(4.4970809002829059e-06);
-    k2 = k2 * s + T(1.4795211423052237e-05);
-    k2 = k2 * s + T(4.913014697495775e-05);
-    k2 = k2 * s + T(0.00016500871716465065);
-    k2 = k2 * s + T(0.00056211451836768315);
-    k2 = k2 * s + T(0.0019500475368508512);
-    k2 = k2 * s + T(0.0069304209836632286);
-    k2 = k2 * s + T(0.02547137703943169);
-    k2 = k2 * s + T(0.09837542259139527);
-    k2 = k2 * s + T(0.41165263691397935);
+    k1 = T(2.3688883263356394e-15);
+    k1 = k1 * s + T(7.6416864953676277e-15);
+    k1 = k1 * s + T(9.3212671399777169e-15);
+    k1 = k1 * s + T(3.0527709330121722e-14);
+    k1 = k1 * s + T(1.4463250344204948e-13);
+    k1 = k1 * s + T(4.7414343563173757e-13);
+    k1 = k1 * s + T(1.4867134593925306e-12);
+    k1 = k1 * s + T(4.9223585210421649e-12);
+    k1 = k1 * s + T(1.6460595947499414e-11);
+    k1 = k1 * s + T(5.5077758260643212e-11);
+    k1 = k1 * s + T(1.8539474394160507e-10);
+    k1 = k1 * s + T(6.2866641050383229e-10);
+    k1 = k1 * s + T(2.1488371346152642e-09);
+    k1 = k1 * s + T(7.4116073244187987e-09);
+    k1 = k1 * s + T(2.5830704199975667e-08);
+    k1 = k1 * s + T(9.1116690630346469e-08);
+    k1 = k1 * s + T(3.2599218055087973e-07);
+    k1 = k1 * s + T(1.186128179546678e-06);
+    k1 = k1 * s + T(4.4045690599443475e-06);
+    k1 = k1 * s + T(1.6772091718161879e-05);
+    k1 = k1 * s + T(6.5925995436950442e-05);
+    k1 = k1 * s + T(0.00027006959327768106);
+    k1 = k1 * s + T(0.0011700285221105014);
+    k1 = k1 * s + T(0.0054903228682750471);
+    k1 = k1 * s + T(0.029131592284948389);
+    k1 = k1 * s + T(0.19126052231451549);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k0 = T(0.5) - zeta * k1;
+    k2 = (T(0.5) - k1) * inv_zeta;
   } else {
-    // κ > 0.5: partial fractions, (ln(1 + λ) − Σ_{r=1}^{2} κ^r/r) / κ^3, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.5: partial fractions, K_2 = (ln(1 + λ) − Σ_{r=1}^{2} κ^r/r) / κ^3 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.5);
     partial = partial * kappa + T(1);
     partial = partial * kappa;
@@ -67,14 +71,12 @@ bool scalis_segment_compact_i2_f(const ScalisCompactSupport<T>& in, ScalisCompac
     const T kappa_power_1 = kappa * kappa_power_sq1;
     const T kappa_power = kappa_power_1;
     k2 = (ell - partial) / kappa_power;
+    k1 = T(0.5) - zeta * k2;
+    k0 = T(0.5) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k1 = T(0.5) - zeta * k2;
-  const T k0 = T(0.5) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power = inv_tau_lo_power_1;
@@ -89,8 +91,8 @@ bool scalis_segment_compact_i2_f(const ScalisCompactSupport<T>& in, ScalisCompac
 
 /// g0 and g1 of the compact SCALIS segment of degree 2 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 34 +, 48 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 34 +, 48 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 104 +, 140 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 34 +, 49 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 34 +, 49 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 104 +, 141 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i2_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -99,39 +101,43 @@ bool scalis_segment_compact_i2_grad(const ScalisCompactSupport<T>& in, ScalisCom
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k2;  // ∫_0^1 y^2/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_1 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.25)) * T(4);
-    k2 = T(8.7327318129972441e-14);
-    k2 = k2 * s + T(2.7145750769525988e-13);
-    k2 = k2 * s + T(2.7731170122242929e-13);
-    k2 = k2 * s + T(8.6922017222719871e-13);
-    k2 = k2 * s + T(4.3617006115559428e-12);
-    k2 = k2 * s + T(1.3663631848436027e-11);
-    k2 = k2 * s + T(4.015576161758183e-11);
-    k2 = k2 * s + T(1.2641413869031562e-10);
-    k2 = k2 * s + T(4.0188085275368428e-10);
-    k2 = k2 * s + T(1.2714849420510505e-09);
-    k2 = k2 * s + T(4.0326173001596244e-09);
-    k2 = k2 * s + T(1.2839430876245294e-08);
-    k2 = k2 * s + T(4.1034032550269262e-08);
-    k2 = k2 * s + T(1.3169744618926884e-07);
-    k2 = k2 * s + T(4.2473840034880446e-07);
-    k2 = k2 * s + T(1.377538017846316e-06);
-    k2 = k2 * s + T(4.4970809002829059e-06);
-    k2 = k2 * s + T(1.4795211423052237e-05);
-    k2 = k2 * s + T(4.913014697495775e-05);
-    k2 = k2 * s + T(0.00016500871716465065);
-    k2 = k2 * s + T(0.00056211451836768315);
-    k2 = k2 * s + T(0.0019500475368508512);
-    k2 = k2 * s + T(0.0069304209836632286);
-    k2 = k2 * s + T(0.02547137703943169);
-    k2 = k2 * s + T(0.09837542259139527);
-    k2 = k2 * s + T(0.41165263691397935);
+    k1 = T(2.3688883263356394e-15);
+    k1 = k1 * s + T(7.6416864953676277e-15);
+    k1 = k1 * s + T(9.3212671399777169e-15);
+    k1 = k1 * s + T(3.0527709330121722e-14);
+    k1 = k1 * s + T(1.4463250344204948e-13);
+    k1 = k1 * s + T(4.7414343563173757e-13);
+    k1 = k1 * s + T(1.4867134593925306e-12);
+    k1 = k1 * s + T(4.9223585210421649e-12);
+    k1 = k1 * s + T(1.6460595947499414e-11);
+    k1 = k1 * s + T(5.5077758260643212e-11);
+    k1 = k1 * s + T(1.8539474394160507e-10);
+    k1 = k1 * s + T(6.2866641050383229e-10);
+    k1 = k1 * s + T(2.1488371346152642e-09);
+    k1 = k1 * s + T(7.4116073244187987e-09);
+    k1 = k1 * s + T(2.5830704199975667e-08);
+    k1 = k1 * s + T(9.1116690630346469e-08);
+    k1 = k1 * s + T(3.2599218055087973e-07);
+    k1 = k1 * s + T(1.186128179546678e-06);
+    k1 = k1 * s + T(4.4045690599443475e-06);
+    k1 = k1 * s + T(1.6772091718161879e-05);
+    k1 = k1 * s + T(6.5925995436950442e-05);
+    k1 = k1 * s + T(0.00027006959327768106);
+    k1 = k1 * s + T(0.0011700285221105014);
+    k1 = k1 * s + T(0.0054903228682750471);
+    k1 = k1 * s + T(0.029131592284948389);
+    k1 = k1 * s + T(0.19126052231451549);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k0 = T(0.5) - zeta * k1;
+    k2 = (T(0.5) - k1) * inv_zeta;
   } else {
-    // κ > 0.5: partial fractions, (ln(1 + λ) − Σ_{r=1}^{2} κ^r/r) / κ^3, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.5: partial fractions, K_2 = (ln(1 + λ) − Σ_{r=1}^{2} κ^r/r) / κ^3 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.5);
     partial = partial * kappa + T(1);
     partial = partial * kappa;
@@ -139,14 +145,12 @@ bool scalis_segment_compact_i2_grad(const ScalisCompactSupport<T>& in, ScalisCom
     const T kappa_power_1 = kappa * kappa_power_sq1;
     const T kappa_power = kappa_power_1;
     k2 = (ell - partial) / kappa_power;
+    k1 = T(0.5) - zeta * k2;
+    k0 = T(0.5) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k1 = T(0.5) - zeta * k2;
-  const T k0 = T(0.5) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power = inv_tau_lo_power_1;
@@ -169,8 +173,8 @@ bool scalis_segment_compact_i2_grad(const ScalisCompactSupport<T>& in, ScalisCom
 
 /// f, g0 and g1 of the compact SCALIS segment of degree 2 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 36 +, 56 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 36 +, 56 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 106 +, 148 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 36 +, 57 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 36 +, 57 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 106 +, 149 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i2_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -179,39 +183,43 @@ bool scalis_segment_compact_i2_f_and_grad(const ScalisCompactSupport<T>& in, Sca
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k2;  // ∫_0^1 y^2/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_1 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.25)) * T(4);
-    k2 = T(8.7327318129972441e-14);
-    k2 = k2 * s + T(2.7145750769525988e-13);
-    k2 = k2 * s + T(2.7731170122242929e-13);
-    k2 = k2 * s + T(8.6922017222719871e-13);
-    k2 = k2 * s + T(4.3617006115559428e-12);
-    k2 = k2 * s + T(1.3663631848436027e-11);
-    k2 = k2 * s + T(4.015576161758183e-11);
-    k2 = k2 * s + T(1.2641413869031562e-10);
-    k2 = k2 * s + T(4.0188085275368428e-10);
-    k2 = k2 * s + T(1.2714849420510505e-09);
-    k2 = k2 * s + T(4.0326173001596244e-09);
-    k2 = k2 * s + T(1.2839430876245294e-08);
-    k2 = k2 * s + T(4.1034032550269262e-08);
-    k2 = k2 * s + T(1.3169744618926884e-07);
-    k2 = k2 * s + T(4.2473840034880446e-07);
-    k2 = k2 * s + T(1.377538017846316e-06);
-    k2 = k2 * s + T(4.4970809002829059e-06);
-    k2 = k2 * s + T(1.4795211423052237e-05);
-    k2 = k2 * s + T(4.913014697495775e-05);
-    k2 = k2 * s + T(0.00016500871716465065);
-    k2 = k2 * s + T(0.00056211451836768315);
-    k2 = k2 * s + T(0.0019500475368508512);
-    k2 = k2 * s + T(0.0069304209836632286);
-    k2 = k2 * s + T(0.02547137703943169);
-    k2 = k2 * s + T(0.09837542259139527);
-    k2 = k2 * s + T(0.41165263691397935);
+    k1 = T(2.3688883263356394e-15);
+    k1 = k1 * s + T(7.6416864953676277e-15);
+    k1 = k1 * s + T(9.3212671399777169e-15);
+    k1 = k1 * s + T(3.0527709330121722e-14);
+    k1 = k1 * s + T(1.4463250344204948e-13);
+    k1 = k1 * s + T(4.7414343563173757e-13);
+    k1 = k1 * s + T(1.4867134593925306e-12);
+    k1 = k1 * s + T(4.9223585210421649e-12);
+    k1 = k1 * s + T(1.6460595947499414e-11);
+    k1 = k1 * s + T(5.5077758260643212e-11);
+    k1 = k1 * s + T(1.8539474394160507e-10);
+    k1 = k1 * s + T(6.2866641050383229e-10);
+    k1 = k1 * s + T(2.1488371346152642e-09);
+    k1 = k1 * s + T(7.4116073244187987e-09);
+    k1 = k1 * s + T(2.5830704199975667e-08);
+    k1 = k1 * s + T(9.1116690630346469e-08);
+    k1 = k1 * s + T(3.2599218055087973e-07);
+    k1 = k1 * s + T(1.186128179546678e-06);
+    k1 = k1 * s + T(4.4045690599443475e-06);
+    k1 = k1 * s + T(1.6772091718161879e-05);
+    k1 = k1 * s + T(6.5925995436950442e-05);
+    k1 = k1 * s + T(0.00027006959327768106);
+    k1 = k1 * s + T(0.0011700285221105014);
+    k1 = k1 * s + T(0.0054903228682750471);
+    k1 = k1 * s + T(0.029131592284948389);
+    k1 = k1 * s + T(0.19126052231451549);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k0 = T(0.5) - zeta * k1;
+    k2 = (T(0.5) - k1) * inv_zeta;
   } else {
-    // κ > 0.5: partial fractions, (ln(1 + λ) − Σ_{r=1}^{2} κ^r/r) / κ^3, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.5: partial fractions, K_2 = (ln(1 + λ) − Σ_{r=1}^{2} κ^r/r) / κ^3 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.5);
     partial = partial * kappa + T(1);
     partial = partial * kappa;
@@ -219,14 +227,12 @@ bool scalis_segment_compact_i2_f_and_grad(const ScalisCompactSupport<T>& in, Sca
     const T kappa_power_1 = kappa * kappa_power_sq1;
     const T kappa_power = kappa_power_1;
     k2 = (ell - partial) / kappa_power;
+    k1 = T(0.5) - zeta * k2;
+    k0 = T(0.5) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k1 = T(0.5) - zeta * k2;
-  const T k0 = T(0.5) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power = inv_tau_lo_power_1;
@@ -254,8 +260,8 @@ bool scalis_segment_compact_i2_f_and_grad(const ScalisCompactSupport<T>& in, Sca
 
 /// f of the compact SCALIS segment of degree 4 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 39 +, 59 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 40 +, 60 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 106 +, 138 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 39 +, 60 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 40 +, 61 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 106 +, 139 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i4_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -264,98 +270,114 @@ bool scalis_segment_compact_i4_f(const ScalisCompactSupport<T>& in, ScalisCompac
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k4;  // ∫_0^1 y^4/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_2 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.18)
     const T s = (kappa - T(0.25)) * T(4);
-    k4 = T(8.2949693071525262e-14);
-    k4 = k4 * s + T(2.573768414545058e-13);
-    k4 = k4 * s + T(2.6036070913410795e-13);
-    k4 = k4 * s + T(8.139263840173202e-13);
-    k4 = k4 * s + T(4.0988961316642485e-12);
-    k4 = k4 * s + T(1.2805778611518695e-11);
-    k4 = k4 * s + T(3.7481986343799797e-11);
-    k4 = k4 * s + T(1.1760774878132207e-10);
-    k4 = k4 * s + T(3.7259587422722209e-10);
-    k4 = k4 * s + T(1.1741205616045212e-09);
-    k4 = k4 * s + T(3.7072157925531099e-09);
-    k4 = k4 * s + T(1.1744792842826679e-08);
-    k4 = k4 * s + T(3.7326095751382308e-08);
-    k4 = k4 * s + T(1.190391167159731e-07);
-    k4 = k4 * s + T(3.8113984252752036e-07);
-    k4 = k4 * s + T(1.225838555900937e-06);
-    k4 = k4 * s + T(3.9629975312520614e-06);
-    k4 = k4 * s + T(1.2888775075363494e-05);
-    k4 = k4 * s + T(4.2212746710782652e-05);
-    k4 = k4 * s + T(0.00013940911421187353);
-    k4 = k4 * s + T(0.0004650513764658237);
-    k4 = k4 * s + T(0.0015706276074961422);
-    k4 = k4 * s + T(0.0053875257024247761);
-    k4 = k4 * s + T(0.018855081577267688);
-    k4 = k4 * s + T(0.067789046881651507);
-    k4 = k4 * s + T(0.25310885729033639);
+    k2 = T(1.1374393848218077e-16);
+    k2 = k2 * s + T(3.7907137300167201e-16);
+    k2 = k2 * s + T(5.2886378082313532e-16);
+    k2 = k2 * s + T(1.7964930407988084e-15);
+    k2 = k2 * s + T(8.2593716287192863e-15);
+    k2 = k2 * s + T(2.8142939098651015e-14);
+    k2 = k2 * s + T(9.2880398820689671e-14);
+    k2 = k2 * s + T(3.2066209354398797e-13);
+    k2 = k2 * s + T(1.1185090650346994e-12);
+    k2 = k2 * s + T(3.9168995419691859e-12);
+    k2 = k2 * s + T(1.3828775022839111e-11);
+    k2 = k2 * s + T(4.9289635484873844e-11);
+    k2 = k2 * s + T(1.7752206797386518e-10);
+    k2 = k2 * s + T(6.4690873676555595e-10);
+    k2 = k2 * s + T(2.3890436620961274e-09);
+    k2 = k2 * s + T(8.9585701710461057e-09);
+    k2 = k2 * s + T(3.419212822718953e-08);
+    k2 = k2 * s + T(1.3322559946026122e-07);
+    k2 = k2 * s + T(5.3196322441231071e-07);
+    k2 = k2 * s + T(2.187586038190266e-06);
+    k2 = k2 * s + T(9.3264028525239059e-06);
+    k2 = k2 * s + T(4.1598489386511124e-05);
+    k2 = k2 * s + T(0.00019664304624177268);
+    k2 = k2 * s + T(0.0010043943872397809);
+    k2 = k2 * s + T(0.0057155173870528384);
+    k2 = k2 * s + T(0.038207065559147539);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k3 = (T(0.083333333333333329) - k2) * inv_zeta;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_3 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.625)) * T(8);
-    k4 = T(8.8415838419682643e-14);
-    k4 = k4 * s + T(2.7495730647370463e-13);
-    k4 = k4 * s + T(2.8151685115713363e-13);
-    k4 = k4 * s + T(8.829280883091384e-13);
-    k4 = k4 * s + T(4.426879452939822e-12);
-    k4 = k4 * s + T(1.3876232221263385e-11);
-    k4 = k4 * s + T(4.0817692463434426e-11);
-    k4 = k4 * s + T(1.2859209125781337e-10);
-    k4 = k4 * s + T(4.0911524436708688e-10);
-    k4 = k4 * s + T(1.295504459381943e-09);
-    k4 = k4 * s + T(4.1127633749697959e-09);
-    k4 = k4 * s + T(1.3108521479463353e-08);
-    k4 = k4 * s + T(4.1943432141598947e-08);
-    k4 = k4 * s + T(1.3479324387031139e-07);
-    k4 = k4 * s + T(4.3536397706349484e-07);
-    k4 = k4 * s + T(1.4143476354931831e-06);
-    k4 = k4 * s + T(4.6259513827791935e-06);
-    k4 = k4 * s + T(1.5251868868254454e-05);
-    k4 = k4 * s + T(5.0770963969623163e-05);
-    k4 = k4 * s + T(0.00017099956615239061);
-    k4 = k4 * s + T(0.00058439499152806106);
-    k4 = k4 * s + T(0.0020346595457096917);
-    k4 = k4 * s + T(0.0072590301480714896);
-    k4 = k4 * s + T(0.026772977725031993);
-    k4 = k4 * s + T(0.10352651860642816);
-    k4 = k4 * s + T(0.42980681472690518);
+    k3 = T(1.2137239018320873e-15);
+    k3 = k3 * s + T(3.9184851829946205e-15);
+    k3 = k3 * s + T(4.7971918547171735e-15);
+    k3 = k3 * s + T(1.5728025943073502e-14);
+    k3 = k3 * s + T(7.4449232805489765e-14);
+    k3 = k3 * s + T(2.443442181512461e-13);
+    k3 = k3 * s + T(7.6737673343876063e-13);
+    k3 = k3 * s + T(2.5441511468922954e-12);
+    k3 = k3 * s + T(8.5198407850852924e-12);
+    k3 = k3 * s + T(2.8553167160752862e-11);
+    k3 = k3 * s + T(9.6278919319245878e-11);
+    k3 = k3 * s + T(3.2709750412223232e-10);
+    k3 = k3 * s + T(1.1203684306893191e-09);
+    k3 = k3 * s + T(3.8730771937839064e-09);
+    k3 = k3 * s + T(1.3531963037837332e-08);
+    k3 = k3 * s + T(4.7863548878406471e-08);
+    k3 = k3 * s + T(1.717518399896093e-07);
+    k3 = k3 * s + T(6.2691967217498185e-07);
+    k3 = k3 * s + T(2.3358342804401424e-06);
+    k3 = k3 * s + T(8.9245366337239939e-06);
+    k3 = k3 * s + T(3.5184321390688552e-05);
+    k3 = k3 * s + T(0.00014438143886780813);
+    k3 = k3 * s + T(0.00062448591010219026);
+    k3 = k3 * s + T(0.0029009481789165231);
+    k3 = k3 * s + T(0.014903407363452586);
+    k3 = k3 * s + T(0.088822444477410556);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_3 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.27)
     const T s = (kappa - T(0.8125)) * T(16);
-    k4 = T(3.02278409360644e-14);
-    k4 = k4 * s + T(9.3992674903293191e-14);
-    k4 = k4 * s + T(8.8621692984061435e-14);
-    k4 = k4 * s + T(2.7810420915884838e-13);
-    k4 = k4 * s + T(1.4865861196353652e-12);
-    k4 = k4 * s + T(4.6590653433767148e-12);
-    k4 = k4 * s + T(1.3555751054622213e-11);
-    k4 = k4 * s + T(4.2704660419948702e-11);
-    k4 = k4 * s + T(1.3609626680645038e-10);
-    k4 = k4 * s + T(4.3093560031028249e-10);
-    k4 = k4 * s + T(1.3677508144966173e-09);
-    k4 = k4 * s + T(4.359155854965401e-09);
-    k4 = k4 * s + T(1.394744148214872e-08);
-    k4 = k4 * s + T(4.4820712326891331e-08);
-    k4 = k4 * s + T(1.4475984426015163e-07);
-    k4 = k4 * s + T(4.7026787668803741e-07);
-    k4 = k4 * s + T(1.5381439811281926e-06);
-    k4 = k4 * s + T(5.0716205384251881e-06);
-    k4 = k4 * s + T(1.6884970163158857e-05);
-    k4 = k4 * s + T(5.6884645619372328e-05);
-    k4 = k4 * s + T(0.00019449592562301206);
-    k4 = k4 * s + T(0.00067771916011313111);
-    k4 = k4 * s + T(0.0024213195546471714);
-    k4 = k4 * s + T(0.0089527809194847423);
-    k4 = k4 * s + T(0.034776305247526805);
-    k4 = k4 * s + T(0.14559897355701348);
-    k4 = k4 * s + T(0.68810933541843167);
+    k3 = T(2.0682200594374976e-16);
+    k3 = k3 * s + T(6.6759966203853432e-16);
+    k3 = k3 * s + T(7.649456379165038e-16);
+    k3 = k3 * s + T(2.5099820752197477e-15);
+    k3 = k3 * s + T(1.2456686529413706e-14);
+    k3 = k3 * s + T(4.0875307987217857e-14);
+    k3 = k3 * s + T(1.2733795350512882e-13);
+    k3 = k3 * s + T(4.2217936850593327e-13);
+    k3 = k3 * s + T(1.4154249931832099e-12);
+    k3 = k3 * s + T(4.7436281422461618e-12);
+    k3 = k3 * s + T(1.5993963217221779e-11);
+    k3 = k3 * s + T(5.4341190018614037e-11);
+    k3 = k3 * s + T(1.8614924252782316e-10);
+    k3 = k3 * s + T(6.4361877239597848e-10);
+    k3 = k3 * s + T(2.2492714942239058e-09);
+    k3 = k3 * s + T(7.9587688452568953e-09);
+    k3 = k3 * s + T(2.8574287190038096e-08);
+    k3 = k3 * s + T(1.0438178476830344e-07);
+    k3 = k3 * s + T(3.8935844561848526e-07);
+    k3 = k3 * s + T(1.49012429775029e-06);
+    k3 = k3 * s + T(5.8894614527559308e-06);
+    k3 = k3 * s + T(2.4260129644239461e-05);
+    k3 = k3 * s + T(0.00010555139097145175);
+    k3 = k3 * s + T(0.00049487265556703592);
+    k3 = k3 * s + T(0.0025793786134020668);
+    k3 = k3 * s + T(0.015707025921711949);
+    k3 = k3 * s + T(0.12097949960904407);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else {
-    // κ > 0.875: partial fractions, (ln(1 + λ) − Σ_{r=1}^{4} κ^r/r) / κ^5, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.875: partial fractions, K_4 = (ln(1 + λ) − Σ_{r=1}^{4} κ^r/r) / κ^5 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.25);
     partial = partial * kappa + T(0.33333333333333331);
     partial = partial * kappa + T(0.5);
@@ -366,16 +388,14 @@ bool scalis_segment_compact_i4_f(const ScalisCompactSupport<T>& in, ScalisCompac
     const T kappa_power_2 = kappa * kappa_power_sq2;
     const T kappa_power = kappa_power_2;
     k4 = (ell - partial) / kappa_power;
+    k3 = T(0.25) - zeta * k4;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k3 = T(0.25) - zeta * k4;
-  const T k2 = T(0.083333333333333329) - zeta * k3;
-  const T k1 = T(0.083333333333333329) - zeta * k2;
-  const T k0 = T(0.25) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_2 = inv_tau_lo * inv_tau_lo_power_sq2;
@@ -398,8 +418,8 @@ bool scalis_segment_compact_i4_f(const ScalisCompactSupport<T>& in, ScalisCompac
 
 /// g0 and g1 of the compact SCALIS segment of degree 4 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 49 +, 66 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 50 +, 67 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 119 +, 158 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 49 +, 67 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 50 +, 68 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 119 +, 159 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i4_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -408,98 +428,114 @@ bool scalis_segment_compact_i4_grad(const ScalisCompactSupport<T>& in, ScalisCom
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k4;  // ∫_0^1 y^4/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_2 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.18)
     const T s = (kappa - T(0.25)) * T(4);
-    k4 = T(8.2949693071525262e-14);
-    k4 = k4 * s + T(2.573768414545058e-13);
-    k4 = k4 * s + T(2.6036070913410795e-13);
-    k4 = k4 * s + T(8.139263840173202e-13);
-    k4 = k4 * s + T(4.0988961316642485e-12);
-    k4 = k4 * s + T(1.2805778611518695e-11);
-    k4 = k4 * s + T(3.7481986343799797e-11);
-    k4 = k4 * s + T(1.1760774878132207e-10);
-    k4 = k4 * s + T(3.7259587422722209e-10);
-    k4 = k4 * s + T(1.1741205616045212e-09);
-    k4 = k4 * s + T(3.7072157925531099e-09);
-    k4 = k4 * s + T(1.1744792842826679e-08);
-    k4 = k4 * s + T(3.7326095751382308e-08);
-    k4 = k4 * s + T(1.190391167159731e-07);
-    k4 = k4 * s + T(3.8113984252752036e-07);
-    k4 = k4 * s + T(1.225838555900937e-06);
-    k4 = k4 * s + T(3.9629975312520614e-06);
-    k4 = k4 * s + T(1.2888775075363494e-05);
-    k4 = k4 * s + T(4.2212746710782652e-05);
-    k4 = k4 * s + T(0.00013940911421187353);
-    k4 = k4 * s + T(0.0004650513764658237);
-    k4 = k4 * s + T(0.0015706276074961422);
-    k4 = k4 * s + T(0.0053875257024247761);
-    k4 = k4 * s + T(0.018855081577267688);
-    k4 = k4 * s + T(0.067789046881651507);
-    k4 = k4 * s + T(0.25310885729033639);
+    k2 = T(1.1374393848218077e-16);
+    k2 = k2 * s + T(3.7907137300167201e-16);
+    k2 = k2 * s + T(5.2886378082313532e-16);
+    k2 = k2 * s + T(1.7964930407988084e-15);
+    k2 = k2 * s + T(8.2593716287192863e-15);
+    k2 = k2 * s + T(2.8142939098651015e-14);
+    k2 = k2 * s + T(9.2880398820689671e-14);
+    k2 = k2 * s + T(3.2066209354398797e-13);
+    k2 = k2 * s + T(1.1185090650346994e-12);
+    k2 = k2 * s + T(3.9168995419691859e-12);
+    k2 = k2 * s + T(1.3828775022839111e-11);
+    k2 = k2 * s + T(4.9289635484873844e-11);
+    k2 = k2 * s + T(1.7752206797386518e-10);
+    k2 = k2 * s + T(6.4690873676555595e-10);
+    k2 = k2 * s + T(2.3890436620961274e-09);
+    k2 = k2 * s + T(8.9585701710461057e-09);
+    k2 = k2 * s + T(3.419212822718953e-08);
+    k2 = k2 * s + T(1.3322559946026122e-07);
+    k2 = k2 * s + T(5.3196322441231071e-07);
+    k2 = k2 * s + T(2.187586038190266e-06);
+    k2 = k2 * s + T(9.3264028525239059e-06);
+    k2 = k2 * s + T(4.1598489386511124e-05);
+    k2 = k2 * s + T(0.00019664304624177268);
+    k2 = k2 * s + T(0.0010043943872397809);
+    k2 = k2 * s + T(0.0057155173870528384);
+    k2 = k2 * s + T(0.038207065559147539);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k3 = (T(0.083333333333333329) - k2) * inv_zeta;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_3 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.625)) * T(8);
-    k4 = T(8.8415838419682643e-14);
-    k4 = k4 * s + T(2.7495730647370463e-13);
-    k4 = k4 * s + T(2.8151685115713363e-13);
-    k4 = k4 * s + T(8.829280883091384e-13);
-    k4 = k4 * s + T(4.426879452939822e-12);
-    k4 = k4 * s + T(1.3876232221263385e-11);
-    k4 = k4 * s + T(4.0817692463434426e-11);
-    k4 = k4 * s + T(1.2859209125781337e-10);
-    k4 = k4 * s + T(4.0911524436708688e-10);
-    k4 = k4 * s + T(1.295504459381943e-09);
-    k4 = k4 * s + T(4.1127633749697959e-09);
-    k4 = k4 * s + T(1.3108521479463353e-08);
-    k4 = k4 * s + T(4.1943432141598947e-08);
-    k4 = k4 * s + T(1.3479324387031139e-07);
-    k4 = k4 * s + T(4.3536397706349484e-07);
-    k4 = k4 * s + T(1.4143476354931831e-06);
-    k4 = k4 * s + T(4.6259513827791935e-06);
-    k4 = k4 * s + T(1.5251868868254454e-05);
-    k4 = k4 * s + T(5.0770963969623163e-05);
-    k4 = k4 * s + T(0.00017099956615239061);
-    k4 = k4 * s + T(0.00058439499152806106);
-    k4 = k4 * s + T(0.0020346595457096917);
-    k4 = k4 * s + T(0.0072590301480714896);
-    k4 = k4 * s + T(0.026772977725031993);
-    k4 = k4 * s + T(0.10352651860642816);
-    k4 = k4 * s + T(0.42980681472690518);
+    k3 = T(1.2137239018320873e-15);
+    k3 = k3 * s + T(3.9184851829946205e-15);
+    k3 = k3 * s + T(4.7971918547171735e-15);
+    k3 = k3 * s + T(1.5728025943073502e-14);
+    k3 = k3 * s + T(7.4449232805489765e-14);
+    k3 = k3 * s + T(2.443442181512461e-13);
+    k3 = k3 * s + T(7.6737673343876063e-13);
+    k3 = k3 * s + T(2.5441511468922954e-12);
+    k3 = k3 * s + T(8.5198407850852924e-12);
+    k3 = k3 * s + T(2.8553167160752862e-11);
+    k3 = k3 * s + T(9.6278919319245878e-11);
+    k3 = k3 * s + T(3.2709750412223232e-10);
+    k3 = k3 * s + T(1.1203684306893191e-09);
+    k3 = k3 * s + T(3.8730771937839064e-09);
+    k3 = k3 * s + T(1.3531963037837332e-08);
+    k3 = k3 * s + T(4.7863548878406471e-08);
+    k3 = k3 * s + T(1.717518399896093e-07);
+    k3 = k3 * s + T(6.2691967217498185e-07);
+    k3 = k3 * s + T(2.3358342804401424e-06);
+    k3 = k3 * s + T(8.9245366337239939e-06);
+    k3 = k3 * s + T(3.5184321390688552e-05);
+    k3 = k3 * s + T(0.00014438143886780813);
+    k3 = k3 * s + T(0.00062448591010219026);
+    k3 = k3 * s + T(0.0029009481789165231);
+    k3 = k3 * s + T(0.014903407363452586);
+    k3 = k3 * s + T(0.088822444477410556);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_3 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.27)
     const T s = (kappa - T(0.8125)) * T(16);
-    k4 = T(3.02278409360644e-14);
-    k4 = k4 * s + T(9.3992674903293191e-14);
-    k4 = k4 * s + T(8.8621692984061435e-14);
-    k4 = k4 * s + T(2.7810420915884838e-13);
-    k4 = k4 * s + T(1.4865861196353652e-12);
-    k4 = k4 * s + T(4.6590653433767148e-12);
-    k4 = k4 * s + T(1.3555751054622213e-11);
-    k4 = k4 * s + T(4.2704660419948702e-11);
-    k4 = k4 * s + T(1.3609626680645038e-10);
-    k4 = k4 * s + T(4.3093560031028249e-10);
-    k4 = k4 * s + T(1.3677508144966173e-09);
-    k4 = k4 * s + T(4.359155854965401e-09);
-    k4 = k4 * s + T(1.394744148214872e-08);
-    k4 = k4 * s + T(4.4820712326891331e-08);
-    k4 = k4 * s + T(1.4475984426015163e-07);
-    k4 = k4 * s + T(4.7026787668803741e-07);
-    k4 = k4 * s + T(1.5381439811281926e-06);
-    k4 = k4 * s + T(5.0716205384251881e-06);
-    k4 = k4 * s + T(1.6884970163158857e-05);
-    k4 = k4 * s + T(5.6884645619372328e-05);
-    k4 = k4 * s + T(0.00019449592562301206);
-    k4 = k4 * s + T(0.00067771916011313111);
-    k4 = k4 * s + T(0.0024213195546471714);
-    k4 = k4 * s + T(0.0089527809194847423);
-    k4 = k4 * s + T(0.034776305247526805);
-    k4 = k4 * s + T(0.14559897355701348);
-    k4 = k4 * s + T(0.68810933541843167);
+    k3 = T(2.0682200594374976e-16);
+    k3 = k3 * s + T(6.6759966203853432e-16);
+    k3 = k3 * s + T(7.649456379165038e-16);
+    k3 = k3 * s + T(2.5099820752197477e-15);
+    k3 = k3 * s + T(1.2456686529413706e-14);
+    k3 = k3 * s + T(4.0875307987217857e-14);
+    k3 = k3 * s + T(1.2733795350512882e-13);
+    k3 = k3 * s + T(4.2217936850593327e-13);
+    k3 = k3 * s + T(1.4154249931832099e-12);
+    k3 = k3 * s + T(4.7436281422461618e-12);
+    k3 = k3 * s + T(1.5993963217221779e-11);
+    k3 = k3 * s + T(5.4341190018614037e-11);
+    k3 = k3 * s + T(1.8614924252782316e-10);
+    k3 = k3 * s + T(6.4361877239597848e-10);
+    k3 = k3 * s + T(2.2492714942239058e-09);
+    k3 = k3 * s + T(7.9587688452568953e-09);
+    k3 = k3 * s + T(2.8574287190038096e-08);
+    k3 = k3 * s + T(1.0438178476830344e-07);
+    k3 = k3 * s + T(3.8935844561848526e-07);
+    k3 = k3 * s + T(1.49012429775029e-06);
+    k3 = k3 * s + T(5.8894614527559308e-06);
+    k3 = k3 * s + T(2.4260129644239461e-05);
+    k3 = k3 * s + T(0.00010555139097145175);
+    k3 = k3 * s + T(0.00049487265556703592);
+    k3 = k3 * s + T(0.0025793786134020668);
+    k3 = k3 * s + T(0.015707025921711949);
+    k3 = k3 * s + T(0.12097949960904407);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else {
-    // κ > 0.875: partial fractions, (ln(1 + λ) − Σ_{r=1}^{4} κ^r/r) / κ^5, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.875: partial fractions, K_4 = (ln(1 + λ) − Σ_{r=1}^{4} κ^r/r) / κ^5 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.25);
     partial = partial * kappa + T(0.33333333333333331);
     partial = partial * kappa + T(0.5);
@@ -510,16 +546,14 @@ bool scalis_segment_compact_i4_grad(const ScalisCompactSupport<T>& in, ScalisCom
     const T kappa_power_2 = kappa * kappa_power_sq2;
     const T kappa_power = kappa_power_2;
     k4 = (ell - partial) / kappa_power;
+    k3 = T(0.25) - zeta * k4;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k3 = T(0.25) - zeta * k4;
-  const T k2 = T(0.083333333333333329) - zeta * k3;
-  const T k1 = T(0.083333333333333329) - zeta * k2;
-  const T k0 = T(0.25) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_2 = inv_tau_lo * inv_tau_lo_power_sq2;
@@ -563,8 +597,8 @@ bool scalis_segment_compact_i4_grad(const ScalisCompactSupport<T>& in, ScalisCom
 
 /// f, g0 and g1 of the compact SCALIS segment of degree 4 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 57 +, 88 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 58 +, 89 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 127 +, 180 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 57 +, 89 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 58 +, 90 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 127 +, 181 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i4_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -573,98 +607,114 @@ bool scalis_segment_compact_i4_f_and_grad(const ScalisCompactSupport<T>& in, Sca
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k4;  // ∫_0^1 y^4/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_2 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.18)
     const T s = (kappa - T(0.25)) * T(4);
-    k4 = T(8.2949693071525262e-14);
-    k4 = k4 * s + T(2.573768414545058e-13);
-    k4 = k4 * s + T(2.6036070913410795e-13);
-    k4 = k4 * s + T(8.139263840173202e-13);
-    k4 = k4 * s + T(4.0988961316642485e-12);
-    k4 = k4 * s + T(1.2805778611518695e-11);
-    k4 = k4 * s + T(3.7481986343799797e-11);
-    k4 = k4 * s + T(1.1760774878132207e-10);
-    k4 = k4 * s + T(3.7259587422722209e-10);
-    k4 = k4 * s + T(1.1741205616045212e-09);
-    k4 = k4 * s + T(3.7072157925531099e-09);
-    k4 = k4 * s + T(1.1744792842826679e-08);
-    k4 = k4 * s + T(3.7326095751382308e-08);
-    k4 = k4 * s + T(1.190391167159731e-07);
-    k4 = k4 * s + T(3.8113984252752036e-07);
-    k4 = k4 * s + T(1.225838555900937e-06);
-    k4 = k4 * s + T(3.9629975312520614e-06);
-    k4 = k4 * s + T(1.2888775075363494e-05);
-    k4 = k4 * s + T(4.2212746710782652e-05);
-    k4 = k4 * s + T(0.00013940911421187353);
-    k4 = k4 * s + T(0.0004650513764658237);
-    k4 = k4 * s + T(0.0015706276074961422);
-    k4 = k4 * s + T(0.0053875257024247761);
-    k4 = k4 * s + T(0.018855081577267688);
-    k4 = k4 * s + T(0.067789046881651507);
-    k4 = k4 * s + T(0.25310885729033639);
+    k2 = T(1.1374393848218077e-16);
+    k2 = k2 * s + T(3.7907137300167201e-16);
+    k2 = k2 * s + T(5.2886378082313532e-16);
+    k2 = k2 * s + T(1.7964930407988084e-15);
+    k2 = k2 * s + T(8.2593716287192863e-15);
+    k2 = k2 * s + T(2.8142939098651015e-14);
+    k2 = k2 * s + T(9.2880398820689671e-14);
+    k2 = k2 * s + T(3.2066209354398797e-13);
+    k2 = k2 * s + T(1.1185090650346994e-12);
+    k2 = k2 * s + T(3.9168995419691859e-12);
+    k2 = k2 * s + T(1.3828775022839111e-11);
+    k2 = k2 * s + T(4.9289635484873844e-11);
+    k2 = k2 * s + T(1.7752206797386518e-10);
+    k2 = k2 * s + T(6.4690873676555595e-10);
+    k2 = k2 * s + T(2.3890436620961274e-09);
+    k2 = k2 * s + T(8.9585701710461057e-09);
+    k2 = k2 * s + T(3.419212822718953e-08);
+    k2 = k2 * s + T(1.3322559946026122e-07);
+    k2 = k2 * s + T(5.3196322441231071e-07);
+    k2 = k2 * s + T(2.187586038190266e-06);
+    k2 = k2 * s + T(9.3264028525239059e-06);
+    k2 = k2 * s + T(4.1598489386511124e-05);
+    k2 = k2 * s + T(0.00019664304624177268);
+    k2 = k2 * s + T(0.0010043943872397809);
+    k2 = k2 * s + T(0.0057155173870528384);
+    k2 = k2 * s + T(0.038207065559147539);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k3 = (T(0.083333333333333329) - k2) * inv_zeta;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_3 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.625)) * T(8);
-    k4 = T(8.8415838419682643e-14);
-    k4 = k4 * s + T(2.7495730647370463e-13);
-    k4 = k4 * s + T(2.8151685115713363e-13);
-    k4 = k4 * s + T(8.829280883091384e-13);
-    k4 = k4 * s + T(4.426879452939822e-12);
-    k4 = k4 * s + T(1.3876232221263385e-11);
-    k4 = k4 * s + T(4.0817692463434426e-11);
-    k4 = k4 * s + T(1.2859209125781337e-10);
-    k4 = k4 * s + T(4.0911524436708688e-10);
-    k4 = k4 * s + T(1.295504459381943e-09);
-    k4 = k4 * s + T(4.1127633749697959e-09);
-    k4 = k4 * s + T(1.3108521479463353e-08);
-    k4 = k4 * s + T(4.1943432141598947e-08);
-    k4 = k4 * s + T(1.3479324387031139e-07);
-    k4 = k4 * s + T(4.3536397706349484e-07);
-    k4 = k4 * s + T(1.4143476354931831e-06);
-    k4 = k4 * s + T(4.6259513827791935e-06);
-    k4 = k4 * s + T(1.5251868868254454e-05);
-    k4 = k4 * s + T(5.0770963969623163e-05);
-    k4 = k4 * s + T(0.00017099956615239061);
-    k4 = k4 * s + T(0.00058439499152806106);
-    k4 = k4 * s + T(0.0020346595457096917);
-    k4 = k4 * s + T(0.0072590301480714896);
-    k4 = k4 * s + T(0.026772977725031993);
-    k4 = k4 * s + T(0.10352651860642816);
-    k4 = k4 * s + T(0.42980681472690518);
+    k3 = T(1.2137239018320873e-15);
+    k3 = k3 * s + T(3.9184851829946205e-15);
+    k3 = k3 * s + T(4.7971918547171735e-15);
+    k3 = k3 * s + T(1.5728025943073502e-14);
+    k3 = k3 * s + T(7.4449232805489765e-14);
+    k3 = k3 * s + T(2.443442181512461e-13);
+    k3 = k3 * s + T(7.6737673343876063e-13);
+    k3 = k3 * s + T(2.5441511468922954e-12);
+    k3 = k3 * s + T(8.5198407850852924e-12);
+    k3 = k3 * s + T(2.8553167160752862e-11);
+    k3 = k3 * s + T(9.6278919319245878e-11);
+    k3 = k3 * s + T(3.2709750412223232e-10);
+    k3 = k3 * s + T(1.1203684306893191e-09);
+    k3 = k3 * s + T(3.8730771937839064e-09);
+    k3 = k3 * s + T(1.3531963037837332e-08);
+    k3 = k3 * s + T(4.7863548878406471e-08);
+    k3 = k3 * s + T(1.717518399896093e-07);
+    k3 = k3 * s + T(6.2691967217498185e-07);
+    k3 = k3 * s + T(2.3358342804401424e-06);
+    k3 = k3 * s + T(8.9245366337239939e-06);
+    k3 = k3 * s + T(3.5184321390688552e-05);
+    k3 = k3 * s + T(0.00014438143886780813);
+    k3 = k3 * s + T(0.00062448591010219026);
+    k3 = k3 * s + T(0.0029009481789165231);
+    k3 = k3 * s + T(0.014903407363452586);
+    k3 = k3 * s + T(0.088822444477410556);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_3 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.27)
     const T s = (kappa - T(0.8125)) * T(16);
-    k4 = T(3.02278409360644e-14);
-    k4 = k4 * s + T(9.3992674903293191e-14);
-    k4 = k4 * s + T(8.8621692984061435e-14);
-    k4 = k4 * s + T(2.7810420915884838e-13);
-    k4 = k4 * s + T(1.4865861196353652e-12);
-    k4 = k4 * s + T(4.6590653433767148e-12);
-    k4 = k4 * s + T(1.3555751054622213e-11);
-    k4 = k4 * s + T(4.2704660419948702e-11);
-    k4 = k4 * s + T(1.3609626680645038e-10);
-    k4 = k4 * s + T(4.3093560031028249e-10);
-    k4 = k4 * s + T(1.3677508144966173e-09);
-    k4 = k4 * s + T(4.359155854965401e-09);
-    k4 = k4 * s + T(1.394744148214872e-08);
-    k4 = k4 * s + T(4.4820712326891331e-08);
-    k4 = k4 * s + T(1.4475984426015163e-07);
-    k4 = k4 * s + T(4.7026787668803741e-07);
-    k4 = k4 * s + T(1.5381439811281926e-06);
-    k4 = k4 * s + T(5.0716205384251881e-06);
-    k4 = k4 * s + T(1.6884970163158857e-05);
-    k4 = k4 * s + T(5.6884645619372328e-05);
-    k4 = k4 * s + T(0.00019449592562301206);
-    k4 = k4 * s + T(0.00067771916011313111);
-    k4 = k4 * s + T(0.0024213195546471714);
-    k4 = k4 * s + T(0.0089527809194847423);
-    k4 = k4 * s + T(0.034776305247526805);
-    k4 = k4 * s + T(0.14559897355701348);
-    k4 = k4 * s + T(0.68810933541843167);
+    k3 = T(2.0682200594374976e-16);
+    k3 = k3 * s + T(6.6759966203853432e-16);
+    k3 = k3 * s + T(7.649456379165038e-16);
+    k3 = k3 * s + T(2.5099820752197477e-15);
+    k3 = k3 * s + T(1.2456686529413706e-14);
+    k3 = k3 * s + T(4.0875307987217857e-14);
+    k3 = k3 * s + T(1.2733795350512882e-13);
+    k3 = k3 * s + T(4.2217936850593327e-13);
+    k3 = k3 * s + T(1.4154249931832099e-12);
+    k3 = k3 * s + T(4.7436281422461618e-12);
+    k3 = k3 * s + T(1.5993963217221779e-11);
+    k3 = k3 * s + T(5.4341190018614037e-11);
+    k3 = k3 * s + T(1.8614924252782316e-10);
+    k3 = k3 * s + T(6.4361877239597848e-10);
+    k3 = k3 * s + T(2.2492714942239058e-09);
+    k3 = k3 * s + T(7.9587688452568953e-09);
+    k3 = k3 * s + T(2.8574287190038096e-08);
+    k3 = k3 * s + T(1.0438178476830344e-07);
+    k3 = k3 * s + T(3.8935844561848526e-07);
+    k3 = k3 * s + T(1.49012429775029e-06);
+    k3 = k3 * s + T(5.8894614527559308e-06);
+    k3 = k3 * s + T(2.4260129644239461e-05);
+    k3 = k3 * s + T(0.00010555139097145175);
+    k3 = k3 * s + T(0.00049487265556703592);
+    k3 = k3 * s + T(0.0025793786134020668);
+    k3 = k3 * s + T(0.015707025921711949);
+    k3 = k3 * s + T(0.12097949960904407);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
+    k4 = (T(0.25) - k3) * inv_zeta;
   } else {
-    // κ > 0.875: partial fractions, (ln(1 + λ) − Σ_{r=1}^{4} κ^r/r) / κ^5, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.875: partial fractions, K_4 = (ln(1 + λ) − Σ_{r=1}^{4} κ^r/r) / κ^5 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.25);
     partial = partial * kappa + T(0.33333333333333331);
     partial = partial * kappa + T(0.5);
@@ -675,16 +725,14 @@ bool scalis_segment_compact_i4_f_and_grad(const ScalisCompactSupport<T>& in, Sca
     const T kappa_power_2 = kappa * kappa_power_sq2;
     const T kappa_power = kappa_power_2;
     k4 = (ell - partial) / kappa_power;
+    k3 = T(0.25) - zeta * k4;
+    k2 = T(0.083333333333333329) - zeta * k3;
+    k1 = T(0.083333333333333329) - zeta * k2;
+    k0 = T(0.25) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k3 = T(0.25) - zeta * k4;
-  const T k2 = T(0.083333333333333329) - zeta * k3;
-  const T k1 = T(0.083333333333333329) - zeta * k2;
-  const T k0 = T(0.25) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_2 = inv_tau_lo * inv_tau_lo_power_sq2;
@@ -740,8 +788,8 @@ bool scalis_segment_compact_i4_f_and_grad(const ScalisCompactSupport<T>& in, Sca
 
 /// f of the compact SCALIS segment of degree 6 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 51 +, 82 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 52 +, 83 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 118 +, 161 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 51 +, 83 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 52 +, 84 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 118 +, 162 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i6_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -750,97 +798,119 @@ bool scalis_segment_compact_i6_f(const ScalisCompactSupport<T>& in, ScalisCompac
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k6;  // ∫_0^1 y^6/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_4 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.33)
     const T s = (kappa - T(0.25)) * T(4);
-    k6 = T(7.8993850417018179e-14);
-    k6 = k6 * s + T(2.4469810718881281e-13);
-    k6 = k6 * s + T(2.4534499663914225e-13);
-    k6 = k6 * s + T(7.6518361065647537e-13);
-    k6 = k6 * s + T(3.8662567078616613e-12);
-    k6 = k6 * s + T(1.2050316155324321e-11);
-    k6 = k6 * s + T(3.5144422704760326e-11);
-    k6 = k6 * s + T(1.0995678078723941e-10);
-    k6 = k6 * s + T(3.4732138252177295e-10);
-    k6 = k6 * s + T(1.0907229456483271e-09);
-    k6 = k6 * s + T(3.4308231873841128e-09);
-    k6 = k6 * s + T(1.0823652178686133e-08);
-    k6 = k6 * s + T(3.4238296899309889e-08);
-    k6 = k6 * s + T(1.0862139325120581e-07);
-    k6 = k6 * s + T(3.4573611617508448e-07);
-    k6 = k6 * s + T(1.1045305471525446e-06);
-    k6 = k6 * s + T(3.5434403461455362e-06);
-    k6 = k6 * s + T(1.1422006043340504e-05);
-    k6 = k6 * s + T(3.7020508056002706e-05);
-    k6 = k6 * s + T(0.00012075737899335689);
-    k6 = k6 * s + T(0.00039686868133078631);
-    k6 = k6 * s + T(0.0013160510857400443);
-    k6 = k6 * s + T(0.0044118511706422595);
-    k6 = k6 * s + T(0.014990288292913486);
-    k6 = k6 * s + T(0.051807983482327187);
-    k6 = k6 * s + T(0.18307504997871515);
+    k4 = T(9.7564685627937616e-17);
+    k4 = k4 * s + T(3.2338287403199023e-16);
+    k4 = k4 * s + T(4.4140212544137975e-16);
+    k4 = k4 * s + T(1.4886252487408768e-15);
+    k4 = k4 * s + T(6.8664079329191157e-15);
+    k4 = k4 * s + T(2.321214512201881e-14);
+    k4 = k4 * s + T(7.5807302560252928e-14);
+    k4 = k4 * s + T(2.5924056416298052e-13);
+    k4 = k4 * s + T(8.950926639450299e-13);
+    k4 = k4 * s + T(3.0986775201215231e-12);
+    k4 = k4 * s + T(1.080129690209982e-11);
+    k4 = k4 * s + T(3.7956364123057112e-11);
+    k4 = k4 * s + T(1.3454757543434537e-10);
+    k4 = k4 * s + T(4.8158903137829798e-10);
+    k4 = k4 * s + T(1.742627038790303e-09);
+    k4 = k4 * s + T(6.3836944971332332e-09);
+    k4 = k4 * s + T(2.371468265457724e-08);
+    k4 = k4 * s + T(8.9524063430527582e-08);
+    k4 = k4 * s + T(3.4431124210556248e-07);
+    k4 = k4 * s + T(1.3534630436489862e-06);
+    k4 = k4 * s + T(5.4601742611946477e-06);
+    k4 = k4 * s + T(2.2727565045012408e-05);
+    k4 = k4 * s + T(9.8307141289162979e-05);
+    k4 = k4 * s + T(0.00044623398256083926);
+    k4 = k4 * s + T(0.0021555136334575212);
+    k4 = k4 * s + T(0.011313048946360614);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k5 = (T(0.033333333333333333) - k4) * inv_zeta;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_4 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.625)) * T(8);
-    k6 = T(8.6086633833665765e-14);
-    k6 = k6 * s + T(2.6744939679632014e-13);
-    k6 = k6 * s + T(2.7239072513601601e-13);
-    k6 = k6 * s + T(8.5307316468457655e-13);
-    k6 = k6 * s + T(4.2853226685770178e-12);
-    k6 = k6 * s + T(1.3412742149197784e-11);
-    k6 = k6 * s + T(3.936689926713599e-11);
-    k6 = k6 * s + T(1.237961891699237e-10);
-    k6 = k6 * s + T(3.9310504955361981e-10);
-    k6 = k6 * s + T(1.2420413091932045e-09);
-    k6 = k6 * s + T(3.9332182748803897e-09);
-    k6 = k6 * s + T(1.2501309387991065e-08);
-    k6 = k6 * s + T(3.9874364263066854e-08);
-    k6 = k6 * s + T(1.2768287762211912e-07);
-    k6 = k6 * s + T(4.1069141196920783e-07);
-    k6 = k6 * s + T(1.3277767989425092e-06);
-    k6 = k6 * s + T(4.3182413264343795e-06);
-    k6 = k6 * s + T(1.4141416521857948e-05);
-    k6 = k6 * s + T(4.6690690106219696e-05);
-    k6 = k6 * s + T(0.00015567729329960992);
-    k6 = k6 * s + T(0.00052530150840535909);
-    k6 = k6 * s + T(0.0017990248172231635);
-    k6 = k6 * s + T(0.0062784935754302473);
-    k6 = k6 * s + T(0.022457654740538065);
-    k6 = k6 * s + T(0.083039042685438533);
-    k6 = k6 * s + T(0.32163877903421056);
+    k4 = T(3.1830762186163604e-17);
+    k4 = k4 * s + T(1.0649601091371909e-16);
+    k4 = k4 * s + T(1.508787019855282e-16);
+    k4 = k4 * s + T(5.151224353969574e-16);
+    k4 = k4 * s + T(2.3632484961220116e-15);
+    k4 = k4 * s + T(8.0974885276024458e-15);
+    k4 = k4 * s + T(2.6920354169503533e-14);
+    k4 = k4 * s + T(9.3557894790808314e-14);
+    k4 = k4 * s + T(3.2865468038079387e-13);
+    k4 = k4 * s + T(1.160054903386902e-12);
+    k4 = k4 * s + T(4.1314592519321891e-12);
+    k4 = k4 * s + T(1.4867820928952674e-11);
+    k4 = k4 * s + T(5.4121670302453302e-11);
+    k4 = k4 * s + T(1.9958089866410287e-10);
+    k4 = k4 * s + T(7.4692433556559355e-10);
+    k4 = k4 * s + T(2.8431249054603684e-09);
+    k4 = k4 * s + T(1.103692070611137e-08);
+    k4 = k4 * s + T(4.3842208182617514e-08);
+    k4 = k4 * s + T(1.7896811816575744e-07);
+    k4 = k4 * s + T(7.5486572641545689e-07);
+    k4 = k4 * s + T(3.3134101209304201e-06);
+    k4 = k4 * s + T(1.5279947546326731e-05);
+    k4 = k4 * s + T(7.4993069079412009e-05);
+    k4 = k4 * s + T(0.0003988033685378434);
+    k4 = k4 * s + T(0.0023570631765158852);
+    k4 = k4 * s + T(0.016063786635019197);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k5 = (T(0.033333333333333333) - k4) * inv_zeta;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_5 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.8125)) * T(16);
-    k6 = T(2.9822781772453164e-14);
-    k6 = k6 * s + T(9.2686255123011315e-14);
-    k6 = k6 * s + T(8.7130749925548867e-14);
-    k6 = k6 * s + T(2.7321773824401849e-13);
-    k6 = k6 * s + T(1.4623068030496645e-12);
-    k6 = k6 * s + T(4.5794941715723508e-12);
-    k6 = k6 * s + T(1.3308309792630994e-11);
-    k6 = k6 * s + T(4.1885550028307911e-11);
-    k6 = k6 * s + T(1.3335458232594236e-10);
-    k6 = k6 * s + T(4.217647099500662e-10);
-    k6 = k6 * s + T(1.3368961782394316e-09);
-    k6 = k6 * s + T(4.2545791811595543e-09);
-    k6 = k6 * s + T(1.3590203656021373e-08);
-    k6 = k6 * s + T(4.3589508357424409e-08);
-    k6 = k6 * s + T(1.404731937778635e-07);
-    k6 = k6 * s + T(4.5516686024545481e-07);
-    k6 = k6 * s + T(1.4842120646341912e-06);
-    k6 = k6 * s + T(4.8758647928481438e-06);
-    k6 = k6 * s + T(1.6160535623290429e-05);
-    k6 = k6 * s + T(5.4139781398456124e-05);
-    k6 = k6 * s + T(0.00018378752507360407);
-    k6 = k6 * s + T(0.00063437057033209664);
-    k6 = k6 * s + T(0.0022372303934174334);
-    k6 = k6 * s + T(0.0081194883739824312);
-    k6 = k6 * s + T(0.03065917177858642);
-    k6 = k6 * s + T(0.12257991394181636);
-    k6 = k6 * s + T(0.53425635029853147);
+    k5 = T(2.0111936285323943e-16);
+    k5 = k5 * s + T(6.4848509503586034e-16);
+    k5 = k5 * s + T(7.390930292107413e-16);
+    k5 = k5 * s + T(2.4213910890895373e-15);
+    k5 = k5 * s + T(1.2035860151459811e-14);
+    k5 = k5 * s + T(3.9429120978875185e-14);
+    k5 = k5 * s + T(1.2253879065093291e-13);
+    k5 = k5 * s + T(4.0543526298245125e-13);
+    k5 = k5 * s + T(1.3563101857649428e-12);
+    k5 = k5 * s + T(4.5339563009447433e-12);
+    k5 = k5 * s + T(1.5243165402578676e-11);
+    k5 = k5 * s + T(5.1622383440189266e-11);
+    k5 = k5 * s + T(1.7618108683501807e-10);
+    k5 = k5 * s + T(6.0655369982204014e-10);
+    k5 = k5 * s + T(2.1092049319915229e-09);
+    k5 = k5 * s + T(7.4194646888563835e-09);
+    k5 = k5 * s + T(2.6451787434098134e-08);
+    k5 = k5 * s + T(9.5808828315179324e-08);
+    k5 = k5 * s + T(3.5363590803655272e-07);
+    k5 = k5 * s + T(1.3355113048348256e-06);
+    k5 = k5 * s + T(5.1879996944552727e-06);
+    k5 = k5 * s + T(2.088241765132476e-05);
+    k5 = k5 * s + T(8.7987324608133148e-05);
+    k5 = k5 * s + T(0.00039379416603994529);
+    k5 = k5 * s + T(0.001912649912878569);
+    k5 = k5 * s + T(0.010407288029567653);
+    k5 = k5 * s + T(0.066493600985692);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_6 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.10)
     const T s = (kappa - T(0.90625)) * T(32);
     k6 = T(3.0536569462495802e-14);
     k6 = k6 * s + T(9.4989020663744695e-14);
@@ -869,9 +939,15 @@ bool scalis_segment_compact_i6_f(const ScalisCompactSupport<T>& in, ScalisCompac
     k6 = k6 * s + T(0.038350859259386839);
     k6 = k6 * s + T(0.16640071481388985);
     k6 = k6 * s + T(0.83443513386626589);
+    k5 = T(0.16666666666666666) - zeta * k6;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
   } else {
-    // κ > 0.9375: partial fractions, (ln(1 + λ) − Σ_{r=1}^{6} κ^r/r) / κ^7, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.9375: partial fractions, K_6 = (ln(1 + λ) − Σ_{r=1}^{6} κ^r/r) / κ^7 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.16666666666666666);
     partial = partial * kappa + T(0.20000000000000001);
     partial = partial * kappa + T(0.25);
@@ -885,14 +961,13 @@ bool scalis_segment_compact_i6_f(const ScalisCompactSupport<T>& in, ScalisCompac
     const T kappa_power_2 = kappa_power_1 * kappa_power_sq2;
     const T kappa_power = kappa_power_2;
     k6 = (ell - partial) / kappa_power;
+    k5 = T(0.16666666666666666) - zeta * k6;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k5 = T(0.16666666666666666) - zeta * k6;
-  const T k4 = T(0.033333333333333333) - zeta * k5;
-  const T k3 = T(0.016666666666666666) - zeta * k4;
-  const T k2 = T(0.016666666666666666) - zeta * k3;
-  const T k1 = T(0.033333333333333333) - zeta * k2;
-  const T k0 = T(0.16666666666666666) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -901,7 +976,6 @@ bool scalis_segment_compact_i6_f(const ScalisCompactSupport<T>& in, ScalisCompac
   const T qp2_3 = q1 * in.b2 + in.b2 * q1;
   const T qp2_4 = in.b2 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
@@ -931,8 +1005,8 @@ bool scalis_segment_compact_i6_f(const ScalisCompactSupport<T>& in, ScalisCompac
 
 /// g0 and g1 of the compact SCALIS segment of degree 6 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 67 +, 91 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 68 +, 92 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 137 +, 183 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 67 +, 92 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 68 +, 93 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 137 +, 184 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i6_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -941,97 +1015,119 @@ bool scalis_segment_compact_i6_grad(const ScalisCompactSupport<T>& in, ScalisCom
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k6;  // ∫_0^1 y^6/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_4 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.33)
     const T s = (kappa - T(0.25)) * T(4);
-    k6 = T(7.8993850417018179e-14);
-    k6 = k6 * s + T(2.4469810718881281e-13);
-    k6 = k6 * s + T(2.4534499663914225e-13);
-    k6 = k6 * s + T(7.6518361065647537e-13);
-    k6 = k6 * s + T(3.8662567078616613e-12);
-    k6 = k6 * s + T(1.2050316155324321e-11);
-    k6 = k6 * s + T(3.5144422704760326e-11);
-    k6 = k6 * s + T(1.0995678078723941e-10);
-    k6 = k6 * s + T(3.4732138252177295e-10);
-    k6 = k6 * s + T(1.0907229456483271e-09);
-    k6 = k6 * s + T(3.4308231873841128e-09);
-    k6 = k6 * s + T(1.0823652178686133e-08);
-    k6 = k6 * s + T(3.4238296899309889e-08);
-    k6 = k6 * s + T(1.0862139325120581e-07);
-    k6 = k6 * s + T(3.4573611617508448e-07);
-    k6 = k6 * s + T(1.1045305471525446e-06);
-    k6 = k6 * s + T(3.5434403461455362e-06);
-    k6 = k6 * s + T(1.1422006043340504e-05);
-    k6 = k6 * s + T(3.7020508056002706e-05);
-    k6 = k6 * s + T(0.00012075737899335689);
-    k6 = k6 * s + T(0.00039686868133078631);
-    k6 = k6 * s + T(0.0013160510857400443);
-    k6 = k6 * s + T(0.0044118511706422595);
-    k6 = k6 * s + T(0.014990288292913486);
-    k6 = k6 * s + T(0.051807983482327187);
-    k6 = k6 * s + T(0.18307504997871515);
+    k4 = T(9.7564685627937616e-17);
+    k4 = k4 * s + T(3.2338287403199023e-16);
+    k4 = k4 * s + T(4.4140212544137975e-16);
+    k4 = k4 * s + T(1.4886252487408768e-15);
+    k4 = k4 * s + T(6.8664079329191157e-15);
+    k4 = k4 * s + T(2.321214512201881e-14);
+    k4 = k4 * s + T(7.5807302560252928e-14);
+    k4 = k4 * s + T(2.5924056416298052e-13);
+    k4 = k4 * s + T(8.950926639450299e-13);
+    k4 = k4 * s + T(3.0986775201215231e-12);
+    k4 = k4 * s + T(1.080129690209982e-11);
+    k4 = k4 * s + T(3.7956364123057112e-11);
+    k4 = k4 * s + T(1.3454757543434537e-10);
+    k4 = k4 * s + T(4.8158903137829798e-10);
+    k4 = k4 * s + T(1.742627038790303e-09);
+    k4 = k4 * s + T(6.3836944971332332e-09);
+    k4 = k4 * s + T(2.371468265457724e-08);
+    k4 = k4 * s + T(8.9524063430527582e-08);
+    k4 = k4 * s + T(3.4431124210556248e-07);
+    k4 = k4 * s + T(1.3534630436489862e-06);
+    k4 = k4 * s + T(5.4601742611946477e-06);
+    k4 = k4 * s + T(2.2727565045012408e-05);
+    k4 = k4 * s + T(9.8307141289162979e-05);
+    k4 = k4 * s + T(0.00044623398256083926);
+    k4 = k4 * s + T(0.0021555136334575212);
+    k4 = k4 * s + T(0.011313048946360614);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k5 = (T(0.033333333333333333) - k4) * inv_zeta;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_4 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.625)) * T(8);
-    k6 = T(8.6086633833665765e-14);
-    k6 = k6 * s + T(2.6744939679632014e-13);
-    k6 = k6 * s + T(2.7239072513601601e-13);
-    k6 = k6 * s + T(8.5307316468457655e-13);
-    k6 = k6 * s + T(4.2853226685770178e-12);
-    k6 = k6 * s + T(1.3412742149197784e-11);
-    k6 = k6 * s + T(3.936689926713599e-11);
-    k6 = k6 * s + T(1.237961891699237e-10);
-    k6 = k6 * s + T(3.9310504955361981e-10);
-    k6 = k6 * s + T(1.2420413091932045e-09);
-    k6 = k6 * s + T(3.9332182748803897e-09);
-    k6 = k6 * s + T(1.2501309387991065e-08);
-    k6 = k6 * s + T(3.9874364263066854e-08);
-    k6 = k6 * s + T(1.2768287762211912e-07);
-    k6 = k6 * s + T(4.1069141196920783e-07);
-    k6 = k6 * s + T(1.3277767989425092e-06);
-    k6 = k6 * s + T(4.3182413264343795e-06);
-    k6 = k6 * s + T(1.4141416521857948e-05);
-    k6 = k6 * s + T(4.6690690106219696e-05);
-    k6 = k6 * s + T(0.00015567729329960992);
-    k6 = k6 * s + T(0.00052530150840535909);
-    k6 = k6 * s + T(0.0017990248172231635);
-    k6 = k6 * s + T(0.0062784935754302473);
-    k6 = k6 * s + T(0.022457654740538065);
-    k6 = k6 * s + T(0.083039042685438533);
-    k6 = k6 * s + T(0.32163877903421056);
+    k4 = T(3.1830762186163604e-17);
+    k4 = k4 * s + T(1.0649601091371909e-16);
+    k4 = k4 * s + T(1.508787019855282e-16);
+    k4 = k4 * s + T(5.151224353969574e-16);
+    k4 = k4 * s + T(2.3632484961220116e-15);
+    k4 = k4 * s + T(8.0974885276024458e-15);
+    k4 = k4 * s + T(2.6920354169503533e-14);
+    k4 = k4 * s + T(9.3557894790808314e-14);
+    k4 = k4 * s + T(3.2865468038079387e-13);
+    k4 = k4 * s + T(1.160054903386902e-12);
+    k4 = k4 * s + T(4.1314592519321891e-12);
+    k4 = k4 * s + T(1.4867820928952674e-11);
+    k4 = k4 * s + T(5.4121670302453302e-11);
+    k4 = k4 * s + T(1.9958089866410287e-10);
+    k4 = k4 * s + T(7.4692433556559355e-10);
+    k4 = k4 * s + T(2.8431249054603684e-09);
+    k4 = k4 * s + T(1.103692070611137e-08);
+    k4 = k4 * s + T(4.3842208182617514e-08);
+    k4 = k4 * s + T(1.7896811816575744e-07);
+    k4 = k4 * s + T(7.5486572641545689e-07);
+    k4 = k4 * s + T(3.3134101209304201e-06);
+    k4 = k4 * s + T(1.5279947546326731e-05);
+    k4 = k4 * s + T(7.4993069079412009e-05);
+    k4 = k4 * s + T(0.0003988033685378434);
+    k4 = k4 * s + T(0.0023570631765158852);
+    k4 = k4 * s + T(0.016063786635019197);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k5 = (T(0.033333333333333333) - k4) * inv_zeta;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_5 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.8125)) * T(16);
-    k6 = T(2.9822781772453164e-14);
-    k6 = k6 * s + T(9.2686255123011315e-14);
-    k6 = k6 * s + T(8.7130749925548867e-14);
-    k6 = k6 * s + T(2.7321773824401849e-13);
-    k6 = k6 * s + T(1.4623068030496645e-12);
-    k6 = k6 * s + T(4.5794941715723508e-12);
-    k6 = k6 * s + T(1.3308309792630994e-11);
-    k6 = k6 * s + T(4.1885550028307911e-11);
-    k6 = k6 * s + T(1.3335458232594236e-10);
-    k6 = k6 * s + T(4.217647099500662e-10);
-    k6 = k6 * s + T(1.3368961782394316e-09);
-    k6 = k6 * s + T(4.2545791811595543e-09);
-    k6 = k6 * s + T(1.3590203656021373e-08);
-    k6 = k6 * s + T(4.3589508357424409e-08);
-    k6 = k6 * s + T(1.404731937778635e-07);
-    k6 = k6 * s + T(4.5516686024545481e-07);
-    k6 = k6 * s + T(1.4842120646341912e-06);
-    k6 = k6 * s + T(4.8758647928481438e-06);
-    k6 = k6 * s + T(1.6160535623290429e-05);
-    k6 = k6 * s + T(5.4139781398456124e-05);
-    k6 = k6 * s + T(0.00018378752507360407);
-    k6 = k6 * s + T(0.00063437057033209664);
-    k6 = k6 * s + T(0.0022372303934174334);
-    k6 = k6 * s + T(0.0081194883739824312);
-    k6 = k6 * s + T(0.03065917177858642);
-    k6 = k6 * s + T(0.12257991394181636);
-    k6 = k6 * s + T(0.53425635029853147);
+    k5 = T(2.0111936285323943e-16);
+    k5 = k5 * s + T(6.4848509503586034e-16);
+    k5 = k5 * s + T(7.390930292107413e-16);
+    k5 = k5 * s + T(2.4213910890895373e-15);
+    k5 = k5 * s + T(1.2035860151459811e-14);
+    k5 = k5 * s + T(3.9429120978875185e-14);
+    k5 = k5 * s + T(1.2253879065093291e-13);
+    k5 = k5 * s + T(4.0543526298245125e-13);
+    k5 = k5 * s + T(1.3563101857649428e-12);
+    k5 = k5 * s + T(4.5339563009447433e-12);
+    k5 = k5 * s + T(1.5243165402578676e-11);
+    k5 = k5 * s + T(5.1622383440189266e-11);
+    k5 = k5 * s + T(1.7618108683501807e-10);
+    k5 = k5 * s + T(6.0655369982204014e-10);
+    k5 = k5 * s + T(2.1092049319915229e-09);
+    k5 = k5 * s + T(7.4194646888563835e-09);
+    k5 = k5 * s + T(2.6451787434098134e-08);
+    k5 = k5 * s + T(9.5808828315179324e-08);
+    k5 = k5 * s + T(3.5363590803655272e-07);
+    k5 = k5 * s + T(1.3355113048348256e-06);
+    k5 = k5 * s + T(5.1879996944552727e-06);
+    k5 = k5 * s + T(2.088241765132476e-05);
+    k5 = k5 * s + T(8.7987324608133148e-05);
+    k5 = k5 * s + T(0.00039379416603994529);
+    k5 = k5 * s + T(0.001912649912878569);
+    k5 = k5 * s + T(0.010407288029567653);
+    k5 = k5 * s + T(0.066493600985692);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_6 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.10)
     const T s = (kappa - T(0.90625)) * T(32);
     k6 = T(3.0536569462495802e-14);
     k6 = k6 * s + T(9.4989020663744695e-14);
@@ -1060,9 +1156,15 @@ bool scalis_segment_compact_i6_grad(const ScalisCompactSupport<T>& in, ScalisCom
     k6 = k6 * s + T(0.038350859259386839);
     k6 = k6 * s + T(0.16640071481388985);
     k6 = k6 * s + T(0.83443513386626589);
+    k5 = T(0.16666666666666666) - zeta * k6;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
   } else {
-    // κ > 0.9375: partial fractions, (ln(1 + λ) − Σ_{r=1}^{6} κ^r/r) / κ^7, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.9375: partial fractions, K_6 = (ln(1 + λ) − Σ_{r=1}^{6} κ^r/r) / κ^7 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.16666666666666666);
     partial = partial * kappa + T(0.20000000000000001);
     partial = partial * kappa + T(0.25);
@@ -1076,14 +1178,13 @@ bool scalis_segment_compact_i6_grad(const ScalisCompactSupport<T>& in, ScalisCom
     const T kappa_power_2 = kappa_power_1 * kappa_power_sq2;
     const T kappa_power = kappa_power_2;
     k6 = (ell - partial) / kappa_power;
+    k5 = T(0.16666666666666666) - zeta * k6;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k5 = T(0.16666666666666666) - zeta * k6;
-  const T k4 = T(0.033333333333333333) - zeta * k5;
-  const T k3 = T(0.016666666666666666) - zeta * k4;
-  const T k2 = T(0.016666666666666666) - zeta * k3;
-  const T k1 = T(0.033333333333333333) - zeta * k2;
-  const T k0 = T(0.16666666666666666) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -1092,7 +1193,6 @@ bool scalis_segment_compact_i6_grad(const ScalisCompactSupport<T>& in, ScalisCom
   const T qp2_3 = q1 * in.b2 + in.b2 * q1;
   const T qp2_4 = in.b2 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
@@ -1151,8 +1251,8 @@ bool scalis_segment_compact_i6_grad(const ScalisCompactSupport<T>& in, ScalisCom
 
 /// f, g0 and g1 of the compact SCALIS segment of degree 6 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 81 +, 123 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 82 +, 124 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 151 +, 215 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 81 +, 124 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 82 +, 125 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 151 +, 216 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i6_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -1161,97 +1261,119 @@ bool scalis_segment_compact_i6_f_and_grad(const ScalisCompactSupport<T>& in, Sca
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k6;  // ∫_0^1 y^6/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_4 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.33)
     const T s = (kappa - T(0.25)) * T(4);
-    k6 = T(7.8993850417018179e-14);
-    k6 = k6 * s + T(2.4469810718881281e-13);
-    k6 = k6 * s + T(2.4534499663914225e-13);
-    k6 = k6 * s + T(7.6518361065647537e-13);
-    k6 = k6 * s + T(3.8662567078616613e-12);
-    k6 = k6 * s + T(1.2050316155324321e-11);
-    k6 = k6 * s + T(3.5144422704760326e-11);
-    k6 = k6 * s + T(1.0995678078723941e-10);
-    k6 = k6 * s + T(3.4732138252177295e-10);
-    k6 = k6 * s + T(1.0907229456483271e-09);
-    k6 = k6 * s + T(3.4308231873841128e-09);
-    k6 = k6 * s + T(1.0823652178686133e-08);
-    k6 = k6 * s + T(3.4238296899309889e-08);
-    k6 = k6 * s + T(1.0862139325120581e-07);
-    k6 = k6 * s + T(3.4573611617508448e-07);
-    k6 = k6 * s + T(1.1045305471525446e-06);
-    k6 = k6 * s + T(3.5434403461455362e-06);
-    k6 = k6 * s + T(1.1422006043340504e-05);
-    k6 = k6 * s + T(3.7020508056002706e-05);
-    k6 = k6 * s + T(0.00012075737899335689);
-    k6 = k6 * s + T(0.00039686868133078631);
-    k6 = k6 * s + T(0.0013160510857400443);
-    k6 = k6 * s + T(0.0044118511706422595);
-    k6 = k6 * s + T(0.014990288292913486);
-    k6 = k6 * s + T(0.051807983482327187);
-    k6 = k6 * s + T(0.18307504997871515);
+    k4 = T(9.7564685627937616e-17);
+    k4 = k4 * s + T(3.2338287403199023e-16);
+    k4 = k4 * s + T(4.4140212544137975e-16);
+    k4 = k4 * s + T(1.4886252487408768e-15);
+    k4 = k4 * s + T(6.8664079329191157e-15);
+    k4 = k4 * s + T(2.321214512201881e-14);
+    k4 = k4 * s + T(7.5807302560252928e-14);
+    k4 = k4 * s + T(2.5924056416298052e-13);
+    k4 = k4 * s + T(8.950926639450299e-13);
+    k4 = k4 * s + T(3.0986775201215231e-12);
+    k4 = k4 * s + T(1.080129690209982e-11);
+    k4 = k4 * s + T(3.7956364123057112e-11);
+    k4 = k4 * s + T(1.3454757543434537e-10);
+    k4 = k4 * s + T(4.8158903137829798e-10);
+    k4 = k4 * s + T(1.742627038790303e-09);
+    k4 = k4 * s + T(6.3836944971332332e-09);
+    k4 = k4 * s + T(2.371468265457724e-08);
+    k4 = k4 * s + T(8.9524063430527582e-08);
+    k4 = k4 * s + T(3.4431124210556248e-07);
+    k4 = k4 * s + T(1.3534630436489862e-06);
+    k4 = k4 * s + T(5.4601742611946477e-06);
+    k4 = k4 * s + T(2.2727565045012408e-05);
+    k4 = k4 * s + T(9.8307141289162979e-05);
+    k4 = k4 * s + T(0.00044623398256083926);
+    k4 = k4 * s + T(0.0021555136334575212);
+    k4 = k4 * s + T(0.011313048946360614);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k5 = (T(0.033333333333333333) - k4) * inv_zeta;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_4 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.625)) * T(8);
-    k6 = T(8.6086633833665765e-14);
-    k6 = k6 * s + T(2.6744939679632014e-13);
-    k6 = k6 * s + T(2.7239072513601601e-13);
-    k6 = k6 * s + T(8.5307316468457655e-13);
-    k6 = k6 * s + T(4.2853226685770178e-12);
-    k6 = k6 * s + T(1.3412742149197784e-11);
-    k6 = k6 * s + T(3.936689926713599e-11);
-    k6 = k6 * s + T(1.237961891699237e-10);
-    k6 = k6 * s + T(3.9310504955361981e-10);
-    k6 = k6 * s + T(1.2420413091932045e-09);
-    k6 = k6 * s + T(3.9332182748803897e-09);
-    k6 = k6 * s + T(1.2501309387991065e-08);
-    k6 = k6 * s + T(3.9874364263066854e-08);
-    k6 = k6 * s + T(1.2768287762211912e-07);
-    k6 = k6 * s + T(4.1069141196920783e-07);
-    k6 = k6 * s + T(1.3277767989425092e-06);
-    k6 = k6 * s + T(4.3182413264343795e-06);
-    k6 = k6 * s + T(1.4141416521857948e-05);
-    k6 = k6 * s + T(4.6690690106219696e-05);
-    k6 = k6 * s + T(0.00015567729329960992);
-    k6 = k6 * s + T(0.00052530150840535909);
-    k6 = k6 * s + T(0.0017990248172231635);
-    k6 = k6 * s + T(0.0062784935754302473);
-    k6 = k6 * s + T(0.022457654740538065);
-    k6 = k6 * s + T(0.083039042685438533);
-    k6 = k6 * s + T(0.32163877903421056);
+    k4 = T(3.1830762186163604e-17);
+    k4 = k4 * s + T(1.0649601091371909e-16);
+    k4 = k4 * s + T(1.508787019855282e-16);
+    k4 = k4 * s + T(5.151224353969574e-16);
+    k4 = k4 * s + T(2.3632484961220116e-15);
+    k4 = k4 * s + T(8.0974885276024458e-15);
+    k4 = k4 * s + T(2.6920354169503533e-14);
+    k4 = k4 * s + T(9.3557894790808314e-14);
+    k4 = k4 * s + T(3.2865468038079387e-13);
+    k4 = k4 * s + T(1.160054903386902e-12);
+    k4 = k4 * s + T(4.1314592519321891e-12);
+    k4 = k4 * s + T(1.4867820928952674e-11);
+    k4 = k4 * s + T(5.4121670302453302e-11);
+    k4 = k4 * s + T(1.9958089866410287e-10);
+    k4 = k4 * s + T(7.4692433556559355e-10);
+    k4 = k4 * s + T(2.8431249054603684e-09);
+    k4 = k4 * s + T(1.103692070611137e-08);
+    k4 = k4 * s + T(4.3842208182617514e-08);
+    k4 = k4 * s + T(1.7896811816575744e-07);
+    k4 = k4 * s + T(7.5486572641545689e-07);
+    k4 = k4 * s + T(3.3134101209304201e-06);
+    k4 = k4 * s + T(1.5279947546326731e-05);
+    k4 = k4 * s + T(7.4993069079412009e-05);
+    k4 = k4 * s + T(0.0003988033685378434);
+    k4 = k4 * s + T(0.0023570631765158852);
+    k4 = k4 * s + T(0.016063786635019197);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k5 = (T(0.033333333333333333) - k4) * inv_zeta;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_5 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.8125)) * T(16);
-    k6 = T(2.9822781772453164e-14);
-    k6 = k6 * s + T(9.2686255123011315e-14);
-    k6 = k6 * s + T(8.7130749925548867e-14);
-    k6 = k6 * s + T(2.7321773824401849e-13);
-    k6 = k6 * s + T(1.4623068030496645e-12);
-    k6 = k6 * s + T(4.5794941715723508e-12);
-    k6 = k6 * s + T(1.3308309792630994e-11);
-    k6 = k6 * s + T(4.1885550028307911e-11);
-    k6 = k6 * s + T(1.3335458232594236e-10);
-    k6 = k6 * s + T(4.217647099500662e-10);
-    k6 = k6 * s + T(1.3368961782394316e-09);
-    k6 = k6 * s + T(4.2545791811595543e-09);
-    k6 = k6 * s + T(1.3590203656021373e-08);
-    k6 = k6 * s + T(4.3589508357424409e-08);
-    k6 = k6 * s + T(1.404731937778635e-07);
-    k6 = k6 * s + T(4.5516686024545481e-07);
-    k6 = k6 * s + T(1.4842120646341912e-06);
-    k6 = k6 * s + T(4.8758647928481438e-06);
-    k6 = k6 * s + T(1.6160535623290429e-05);
-    k6 = k6 * s + T(5.4139781398456124e-05);
-    k6 = k6 * s + T(0.00018378752507360407);
-    k6 = k6 * s + T(0.00063437057033209664);
-    k6 = k6 * s + T(0.0022372303934174334);
-    k6 = k6 * s + T(0.0081194883739824312);
-    k6 = k6 * s + T(0.03065917177858642);
-    k6 = k6 * s + T(0.12257991394181636);
-    k6 = k6 * s + T(0.53425635029853147);
+    k5 = T(2.0111936285323943e-16);
+    k5 = k5 * s + T(6.4848509503586034e-16);
+    k5 = k5 * s + T(7.390930292107413e-16);
+    k5 = k5 * s + T(2.4213910890895373e-15);
+    k5 = k5 * s + T(1.2035860151459811e-14);
+    k5 = k5 * s + T(3.9429120978875185e-14);
+    k5 = k5 * s + T(1.2253879065093291e-13);
+    k5 = k5 * s + T(4.0543526298245125e-13);
+    k5 = k5 * s + T(1.3563101857649428e-12);
+    k5 = k5 * s + T(4.5339563009447433e-12);
+    k5 = k5 * s + T(1.5243165402578676e-11);
+    k5 = k5 * s + T(5.1622383440189266e-11);
+    k5 = k5 * s + T(1.7618108683501807e-10);
+    k5 = k5 * s + T(6.0655369982204014e-10);
+    k5 = k5 * s + T(2.1092049319915229e-09);
+    k5 = k5 * s + T(7.4194646888563835e-09);
+    k5 = k5 * s + T(2.6451787434098134e-08);
+    k5 = k5 * s + T(9.5808828315179324e-08);
+    k5 = k5 * s + T(3.5363590803655272e-07);
+    k5 = k5 * s + T(1.3355113048348256e-06);
+    k5 = k5 * s + T(5.1879996944552727e-06);
+    k5 = k5 * s + T(2.088241765132476e-05);
+    k5 = k5 * s + T(8.7987324608133148e-05);
+    k5 = k5 * s + T(0.00039379416603994529);
+    k5 = k5 * s + T(0.001912649912878569);
+    k5 = k5 * s + T(0.010407288029567653);
+    k5 = k5 * s + T(0.066493600985692);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
+    k6 = (T(0.16666666666666666) - k5) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_6 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.10)
     const T s = (kappa - T(0.90625)) * T(32);
     k6 = T(3.0536569462495802e-14);
     k6 = k6 * s + T(9.4989020663744695e-14);
@@ -1280,9 +1402,15 @@ bool scalis_segment_compact_i6_f_and_grad(const ScalisCompactSupport<T>& in, Sca
     k6 = k6 * s + T(0.038350859259386839);
     k6 = k6 * s + T(0.16640071481388985);
     k6 = k6 * s + T(0.83443513386626589);
+    k5 = T(0.16666666666666666) - zeta * k6;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
   } else {
-    // κ > 0.9375: partial fractions, (ln(1 + λ) − Σ_{r=1}^{6} κ^r/r) / κ^7, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.9375: partial fractions, K_6 = (ln(1 + λ) − Σ_{r=1}^{6} κ^r/r) / κ^7 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.16666666666666666);
     partial = partial * kappa + T(0.20000000000000001);
     partial = partial * kappa + T(0.25);
@@ -1296,14 +1424,13 @@ bool scalis_segment_compact_i6_f_and_grad(const ScalisCompactSupport<T>& in, Sca
     const T kappa_power_2 = kappa_power_1 * kappa_power_sq2;
     const T kappa_power = kappa_power_2;
     k6 = (ell - partial) / kappa_power;
+    k5 = T(0.16666666666666666) - zeta * k6;
+    k4 = T(0.033333333333333333) - zeta * k5;
+    k3 = T(0.016666666666666666) - zeta * k4;
+    k2 = T(0.016666666666666666) - zeta * k3;
+    k1 = T(0.033333333333333333) - zeta * k2;
+    k0 = T(0.16666666666666666) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k5 = T(0.16666666666666666) - zeta * k6;
-  const T k4 = T(0.033333333333333333) - zeta * k5;
-  const T k3 = T(0.016666666666666666) - zeta * k4;
-  const T k2 = T(0.016666666666666666) - zeta * k3;
-  const T k1 = T(0.033333333333333333) - zeta * k2;
-  const T k0 = T(0.16666666666666666) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -1312,7 +1439,6 @@ bool scalis_segment_compact_i6_f_and_grad(const ScalisCompactSupport<T>& in, Sca
   const T qp2_3 = q1 * in.b2 + in.b2 * q1;
   const T qp2_4 = in.b2 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
@@ -1387,8 +1513,8 @@ bool scalis_segment_compact_i6_f_and_grad(const ScalisCompactSupport<T>& in, Sca
 
 /// f of the compact SCALIS segment of degree 8 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 67 +, 110 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 68 +, 111 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 134 +, 189 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 67 +, 111 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 68 +, 112 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 134 +, 190 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i8_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -1397,128 +1523,165 @@ bool scalis_segment_compact_i8_f(const ScalisCompactSupport<T>& in, ScalisCompac
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k8;  // ∫_0^1 y^8/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6, k7, k8;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_5 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.25)
     const T s = (kappa - T(0.25)) * T(4);
-    k8 = T(7.5401161737605329e-14);
-    k8 = k8 * s + T(2.332201902790778e-13);
-    k8 = k8 * s + T(2.3195251308209521e-13);
-    k8 = k8 * s + T(7.2189815917486211e-13);
-    k8 = k8 * s + T(3.6588303247659566e-12);
-    k8 = k8 * s + T(1.1379799687580097e-11);
-    k8 = k8 * s + T(3.3083035035255961e-11);
-    k8 = k8 * s + T(1.0324648446872076e-10);
-    k8 = k8 * s + T(3.2528102119105207e-10);
-    k8 = k8 * s + T(1.0184682260239348e-09);
-    k8 = k8 * s + T(3.1930695134484909e-09);
-    k8 = k8 * s + T(1.0037511573534811e-08);
-    k8 = k8 * s + T(3.1626005904458168e-08);
-    k8 = k8 * s + T(9.9893635628485735e-08);
-    k8 = k8 * s + T(3.1639915590203393e-07);
-    k8 = k8 * s + T(1.0052487284294902e-06);
-    k8 = k8 * s + T(3.2048813187607633e-06);
-    k8 = k8 * s + T(1.0257477758859067e-05);
-    k8 = k8 * s + T(3.2975208691155498e-05);
-    k8 = k8 * s + T(0.00010654420149781193);
-    k8 = k8 * s + T(0.00034626451721019968);
-    k8 = k8 * s + T(0.0011330448279802648);
-    k8 = k8 * s + T(0.0037375447281218091);
-    k8 = k8 * s + T(0.01244868308761661);
-    k8 = k8 * s + T(0.041954707826921123);
-    k8 = k8 * s + T(0.14348651394515691);
+    k5 = T(6.2904253102295591e-18);
+    k5 = k5 * s + T(2.1462030832799607e-17);
+    k5 = k5 * s + T(3.265301710038859e-17);
+    k5 = k5 * s + T(1.136490452282558e-16);
+    k5 = k5 * s + T(5.1527670509496531e-16);
+    k5 = k5 * s + T(1.8011423878371902e-15);
+    k5 = k5 * s + T(6.1373514455408872e-15);
+    k5 = k5 * s + T(2.1750500901602981e-14);
+    k5 = k5 * s + T(7.784869739422962e-14);
+    k5 = k5 * s + T(2.8000674748253056e-13);
+    k5 = k5 * s + T(1.0155811542090355e-12);
+    k5 = k5 * s + T(3.7186524735438264e-12);
+    k5 = k5 * s + T(1.3757084949022623e-11);
+    k5 = k5 * s + T(5.1476727807855357e-11);
+    k5 = k5 * s + T(1.9507465326308381e-10);
+    k5 = k5 * s + T(7.4981524342067286e-10);
+    k5 = k5 * s + T(2.9285483890116485e-09);
+    k5 = k5 * s + T(1.1647484287714873e-08);
+    k5 = k5 * s + T(4.7296544901849839e-08);
+    k5 = k5 * s + T(1.9671563321502664e-07);
+    k5 = k5 * s + T(8.4138945799737016e-07);
+    k5 = k5 * s + T(3.7196459717765695e-06);
+    k5 = k5 * s + T(1.7107487644163348e-05);
+    k5 = k5 * s + T(8.2563163356399929e-05);
+    k5 = k5 * s + T(0.00042301642041643822);
+    k5 = k5 * s + T(0.0023386507389107371);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k6 = (T(0.0059523809523809521) - k5) * inv_zeta;
+    k7 = (T(0.017857142857142856) - k6) * inv_zeta;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_6 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.08)
     const T s = (kappa - T(0.625)) * T(8);
-    k8 = T(8.3879628111510698e-14);
-    k8 = k8 * s + T(2.6034969007223168e-13);
-    k8 = k8 * s + T(2.6383937911970499e-13);
-    k8 = k8 * s + T(8.2517653924394527e-13);
-    k8 = k8 * s + T(4.1527570886068013e-12);
-    k8 = k8 * s + T(1.2979988509209646e-11);
-    k8 = k8 * s + T(3.8017978864799479e-11);
-    k8 = k8 * s + T(1.1935333625921831e-10);
-    k8 = k8 * s + T(3.783312946072835e-10);
-    k8 = k8 * s + T(1.192927398544147e-09);
-    k8 = k8 * s + T(3.7691030870672515e-09);
-    k8 = k8 * s + T(1.1949385099012644e-08);
-    k8 = k8 * s + T(3.8005573292407634e-08);
-    k8 = k8 * s + T(1.2130696185957378e-07);
-    k8 = k8 * s + T(3.887500089232628e-07);
-    k8 = k8 * s + T(1.2515254063421251e-06);
-    k8 = k8 * s + T(4.0502461604239387e-06);
-    k8 = k8 * s + T(1.318711942959613e-05);
-    k8 = k8 * s + T(4.3240096573343851e-05);
-    k8 = k8 * s + T(0.00014297170576967457);
-    k8 = k8 * s + T(0.00047748469476875948);
-    k8 = k8 * s + T(0.0016142071792592163);
-    k8 = k8 * s + T(0.0055401073761317844);
-    k8 = k8 * s + T(0.019381335059483595);
-    k8 = k8 * s + T(0.069507553829405294);
-    k8 = k8 * s + T(0.25768098861329336);
+    k6 = T(2.9304287730164863e-17);
+    k6 = k6 * s + T(9.7733817131086587e-17);
+    k6 = k6 * s + T(1.3674554510341147e-16);
+    k6 = k6 * s + T(4.6489530535396354e-16);
+    k6 = k6 * s + T(2.1362691229063384e-15);
+    k6 = k6 * s + T(7.285401479704541e-15);
+    k6 = k6 * s + T(2.4070486131545651e-14);
+    k6 = k6 * s + T(8.317538398576249e-14);
+    k6 = k6 * s + T(2.9037626576222276e-13);
+    k6 = k6 * s + T(1.0177543551398599e-12);
+    k6 = k6 * s + T(3.5962283604155915e-12);
+    k6 = k6 * s + T(1.2827756853601958e-11);
+    k6 = k6 * s + T(4.6230475071501274e-11);
+    k6 = k6 * s + T(1.6854667463816303e-10);
+    k6 = k6 * s + T(6.2255815286086887e-10);
+    k6 = k6 * s + T(2.3339274753576274e-09);
+    k6 = k6 * s + T(8.8999289293624244e-09);
+    k6 = k6 * s + T(3.4612518148782077e-08);
+    k6 = k6 * s + T(1.3773952046509009e-07);
+    k6 = k6 * s + T(5.6319316526164397e-07);
+    k6 = k6 * s + T(2.3785398983651464e-06);
+    k6 = k6 * s + T(1.0446178375401522e-05);
+    k6 = k6 * s + T(4.8132966526402986e-05);
+    k6 = k6 * s + T(0.00023543251831584263);
+    k6 = k6 * s + T(0.0012419070747638676);
+    k6 = k6 * s + T(0.0072185318808872349);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k7 = (T(0.017857142857142856) - k6) * inv_zeta;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_7 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.04)
     const T s = (kappa - T(0.8125)) * T(16);
-    k8 = T(2.9428766268996774e-14);
-    k8 = k8 * s + T(9.1416804732330146e-14);
-    k8 = k8 * s + T(8.5689538931242656e-14);
-    k8 = k8 * s + T(2.6850138736263083e-13);
-    k8 = k8 * s + T(1.4388363470792865e-12);
-    k8 = k8 * s + T(4.5026972385791595e-12);
-    k8 = k8 * s + T(1.307005039634242e-11);
-    k8 = k8 * s + T(4.109839734410553e-11);
-    k8 = k8 * s + T(1.307254278340086e-10);
-    k8 = k8 * s + T(4.1299174469280777e-10);
-    k8 = k8 * s + T(1.3074615927844556e-09);
-    k8 = k8 * s + T(4.1551249940067166e-09);
-    k8 = k8 * s + T(1.3251663870700487e-08);
-    k8 = k8 * s + T(4.2427475792495165e-08);
-    k8 = k8 * s + T(1.3644638321340716e-07);
-    k8 = k8 * s + T(4.4105929575500487e-07);
-    k8 = k8 * s + T(1.4341572026674913e-06);
-    k8 = k8 * s + T(4.6956093746973435e-06);
-    k8 = k8 * s + T(1.5499877545228705e-05);
-    k8 = k8 * s + T(5.1666586231026006e-05);
-    k8 = k8 * s + T(0.00017428657241288871);
-    k8 = k8 * s + T(0.00059668008225149884);
-    k8 = k8 * s + T(0.0020814935425254315);
-    k8 = k8 * s + T(0.0074410999988507014);
-    k8 = k8 * s + T(0.027489972057946836);
-    k8 = k8 * s + T(0.106303850427116);
-    k8 = k8 * s + T(0.4390425864200917);
+    k7 = T(1.9565662033373922e-16);
+    k7 = k7 * s + T(6.3020606562377683e-16);
+    k7 = k7 * s + T(7.1454816055642963e-16);
+    k7 = k7 * s + T(2.337479252763082e-15);
+    k7 = k7 * s + T(1.1636762333831253e-14);
+    k7 = k7 * s + T(3.8061187844943354e-14);
+    k7 = k7 * s + T(1.1801538469239156e-13);
+    k7 = k7 * s + T(3.8970418453782562e-13);
+    k7 = k7 * s + T(1.3009663244238749e-12);
+    k7 = k7 * s + T(4.3384484626479913e-12);
+    k7 = k7 * s + T(1.4546263478334354e-11);
+    k7 = k7 * s + T(4.9111726407922536e-11);
+    k7 = k7 * s + T(1.6703026127460655e-10);
+    k7 = k7 * s + T(5.7275898817057897e-10);
+    k7 = k7 * s + T(1.9825091321739602e-09);
+    k7 = k7 * s + T(6.9362041982561542e-09);
+    k7 = k7 * s + T(2.4571110418429337e-08);
+    k7 = k7 * s + T(8.8315589332745723e-08);
+    k7 = k7 * s + T(3.229345997087428e-07);
+    k7 = k7 * s + T(1.2054258574339875e-06);
+    k7 = k7 * s + T(4.6137728133020462e-06);
+    k7 = k7 * s + T(1.8215830985686658e-05);
+    k7 = k7 * s + T(7.4788710704650461e-05);
+    k7 = k7 * s + T(0.00032291700383717069);
+    k7 = k7 * s + T(0.001489620890829718);
+    k7 = k7 * s + T(0.0075081896961714818);
+    k7 = k7 * s + T(0.042679515046232804);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_7 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.22)
     const T s = (kappa - T(0.90625)) * T(32);
-    k8 = T(3.0327611198637772e-14);
-    k8 = k8 * s + T(9.4314261158139071e-14);
-    k8 = k8 * s + T(8.898758877846469e-14);
-    k8 = k8 * s + T(2.793023294445302e-13);
-    k8 = k8 * s + T(1.492544475720585e-12);
-    k8 = k8 * s + T(4.6785739942014569e-12);
-    k8 = k8 * s + T(1.3616331833422203e-11);
-    k8 = k8 * s + T(4.2904958606033373e-11);
-    k8 = k8 * s + T(1.367658153712527e-10);
-    k8 = k8 * s + T(4.3317178892897045e-10);
-    k8 = k8 * s + T(1.3752610805646657e-09);
-    k8 = k8 * s + T(4.3845595749857244e-09);
-    k8 = k8 * s + T(1.4034019757484685e-08);
-    k8 = k8 * s + T(4.5118287388112683e-08);
-    k8 = k8 * s + T(1.4579255358782841e-07);
-    k8 = k8 * s + T(4.7389174071919935e-07);
-    k8 = k8 * s + T(1.5510245439252969e-06);
-    k8 = k8 * s + T(5.1180940239413503e-06);
-    k8 = k8 * s + T(1.7055640591782102e-05);
-    k8 = k8 * s + T(5.7524791969282818e-05);
-    k8 = k8 * s + T(0.00019695887311076075);
-    k8 = k8 * s + T(0.00068749311987000928);
-    k8 = k8 * s + T(0.0024615954167080808);
-    k8 = k8 * s + T(0.0091263883380770291);
-    k8 = k8 * s + T(0.035562672706589429);
-    k8 = k8 * s + T(0.14929205385733688);
-    k8 = k8 * s + T(0.7041330116448774);
+    k7 = T(1.0410711131955507e-16);
+    k7 = k7 * s + T(3.3613065296413798e-16);
+    k7 = k7 * s + T(3.8561134716050471e-16);
+    k7 = k7 * s + T(1.2657300192056109e-15);
+    k7 = k7 * s + T(6.2793927199906819e-15);
+    k7 = k7 * s + T(2.0612793531073978e-14);
+    k7 = k7 * s + T(6.4248847055211356e-14);
+    k7 = k7 * s + T(2.131085213863797e-13);
+    k7 = k7 * s + T(7.1482321297538451e-13);
+    k7 = k7 * s + T(2.3969656059188617e-12);
+    k7 = k7 * s + T(8.086760415366491e-12);
+    k7 = k7 * s + T(2.7494514255177117e-11);
+    k7 = k7 * s + T(9.4257128614332141e-11);
+    k7 = k7 * s + T(3.2618391061331405e-10);
+    k7 = k7 * s + T(1.1410649986160676e-09);
+    k7 = k7 * s + T(4.0421647520067678e-09);
+    k7 = k7 * s + T(1.453188725517063e-08);
+    k7 = k7 * s + T(5.3167454012355281e-08);
+    k7 = k7 * s + T(1.9868344356051595e-07);
+    k7 = k7 * s + T(7.6201553756309236e-07);
+    k7 = k7 * s + T(3.0192656418039666e-06);
+    k7 = k7 * s + T(1.2472376784315823e-05);
+    k7 = k7 * s + T(5.4425065248524562e-05);
+    k7 = k7 * s + T(0.00025573461538619814);
+    k7 = k7 * s + T(0.001331376116799019);
+    k7 = k7 * s + T(0.0080080265647770876);
+    k7 = k7 * s + T(0.058987530158292736);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else {
-    // κ > 0.9375: partial fractions, (ln(1 + λ) − Σ_{r=1}^{8} κ^r/r) / κ^9, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.9375: partial fractions, K_8 = (ln(1 + λ) − Σ_{r=1}^{8} κ^r/r) / κ^9 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.125);
     partial = partial * kappa + T(0.14285714285714285);
     partial = partial * kappa + T(0.16666666666666666);
@@ -1534,16 +1697,15 @@ bool scalis_segment_compact_i8_f(const ScalisCompactSupport<T>& in, ScalisCompac
     const T kappa_power_3 = kappa * kappa_power_sq3;
     const T kappa_power = kappa_power_3;
     k8 = (ell - partial) / kappa_power;
+    k7 = T(0.125) - zeta * k8;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k7 = T(0.125) - zeta * k8;
-  const T k6 = T(0.017857142857142856) - zeta * k7;
-  const T k5 = T(0.0059523809523809521) - zeta * k6;
-  const T k4 = T(0.0035714285714285713) - zeta * k5;
-  const T k3 = T(0.0035714285714285713) - zeta * k4;
-  const T k2 = T(0.0059523809523809521) - zeta * k3;
-  const T k1 = T(0.017857142857142856) - zeta * k2;
-  const T k0 = T(0.125) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -1559,7 +1721,6 @@ bool scalis_segment_compact_i8_f(const ScalisCompactSupport<T>& in, ScalisCompac
   const T qp3_5 = qp2_3 * in.b2 + qp2_4 * q1;
   const T qp3_6 = qp2_4 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq3 = inv_tau_lo_power_sq2 * inv_tau_lo_power_sq2;
@@ -1594,8 +1755,8 @@ bool scalis_segment_compact_i8_f(const ScalisCompactSupport<T>& in, ScalisCompac
 
 /// g0 and g1 of the compact SCALIS segment of degree 8 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 89 +, 121 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 90 +, 122 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 159 +, 213 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 89 +, 122 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 90 +, 123 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 159 +, 214 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i8_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -1604,128 +1765,165 @@ bool scalis_segment_compact_i8_grad(const ScalisCompactSupport<T>& in, ScalisCom
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k8;  // ∫_0^1 y^8/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6, k7, k8;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_5 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.25)
     const T s = (kappa - T(0.25)) * T(4);
-    k8 = T(7.5401161737605329e-14);
-    k8 = k8 * s + T(2.332201902790778e-13);
-    k8 = k8 * s + T(2.3195251308209521e-13);
-    k8 = k8 * s + T(7.2189815917486211e-13);
-    k8 = k8 * s + T(3.6588303247659566e-12);
-    k8 = k8 * s + T(1.1379799687580097e-11);
-    k8 = k8 * s + T(3.3083035035255961e-11);
-    k8 = k8 * s + T(1.0324648446872076e-10);
-    k8 = k8 * s + T(3.2528102119105207e-10);
-    k8 = k8 * s + T(1.0184682260239348e-09);
-    k8 = k8 * s + T(3.1930695134484909e-09);
-    k8 = k8 * s + T(1.0037511573534811e-08);
-    k8 = k8 * s + T(3.1626005904458168e-08);
-    k8 = k8 * s + T(9.9893635628485735e-08);
-    k8 = k8 * s + T(3.1639915590203393e-07);
-    k8 = k8 * s + T(1.0052487284294902e-06);
-    k8 = k8 * s + T(3.2048813187607633e-06);
-    k8 = k8 * s + T(1.0257477758859067e-05);
-    k8 = k8 * s + T(3.2975208691155498e-05);
-    k8 = k8 * s + T(0.00010654420149781193);
-    k8 = k8 * s + T(0.00034626451721019968);
-    k8 = k8 * s + T(0.0011330448279802648);
-    k8 = k8 * s + T(0.0037375447281218091);
-    k8 = k8 * s + T(0.01244868308761661);
-    k8 = k8 * s + T(0.041954707826921123);
-    k8 = k8 * s + T(0.14348651394515691);
+    k5 = T(6.2904253102295591e-18);
+    k5 = k5 * s + T(2.1462030832799607e-17);
+    k5 = k5 * s + T(3.265301710038859e-17);
+    k5 = k5 * s + T(1.136490452282558e-16);
+    k5 = k5 * s + T(5.1527670509496531e-16);
+    k5 = k5 * s + T(1.8011423878371902e-15);
+    k5 = k5 * s + T(6.1373514455408872e-15);
+    k5 = k5 * s + T(2.1750500901602981e-14);
+    k5 = k5 * s + T(7.784869739422962e-14);
+    k5 = k5 * s + T(2.8000674748253056e-13);
+    k5 = k5 * s + T(1.0155811542090355e-12);
+    k5 = k5 * s + T(3.7186524735438264e-12);
+    k5 = k5 * s + T(1.3757084949022623e-11);
+    k5 = k5 * s + T(5.1476727807855357e-11);
+    k5 = k5 * s + T(1.9507465326308381e-10);
+    k5 = k5 * s + T(7.4981524342067286e-10);
+    k5 = k5 * s + T(2.9285483890116485e-09);
+    k5 = k5 * s + T(1.1647484287714873e-08);
+    k5 = k5 * s + T(4.7296544901849839e-08);
+    k5 = k5 * s + T(1.9671563321502664e-07);
+    k5 = k5 * s + T(8.4138945799737016e-07);
+    k5 = k5 * s + T(3.7196459717765695e-06);
+    k5 = k5 * s + T(1.7107487644163348e-05);
+    k5 = k5 * s + T(8.2563163356399929e-05);
+    k5 = k5 * s + T(0.00042301642041643822);
+    k5 = k5 * s + T(0.0023386507389107371);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k6 = (T(0.0059523809523809521) - k5) * inv_zeta;
+    k7 = (T(0.017857142857142856) - k6) * inv_zeta;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_6 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.08)
     const T s = (kappa - T(0.625)) * T(8);
-    k8 = T(8.3879628111510698e-14);
-    k8 = k8 * s + T(2.6034969007223168e-13);
-    k8 = k8 * s + T(2.6383937911970499e-13);
-    k8 = k8 * s + T(8.2517653924394527e-13);
-    k8 = k8 * s + T(4.1527570886068013e-12);
-    k8 = k8 * s + T(1.2979988509209646e-11);
-    k8 = k8 * s + T(3.8017978864799479e-11);
-    k8 = k8 * s + T(1.1935333625921831e-10);
-    k8 = k8 * s + T(3.783312946072835e-10);
-    k8 = k8 * s + T(1.192927398544147e-09);
-    k8 = k8 * s + T(3.7691030870672515e-09);
-    k8 = k8 * s + T(1.1949385099012644e-08);
-    k8 = k8 * s + T(3.8005573292407634e-08);
-    k8 = k8 * s + T(1.2130696185957378e-07);
-    k8 = k8 * s + T(3.887500089232628e-07);
-    k8 = k8 * s + T(1.2515254063421251e-06);
-    k8 = k8 * s + T(4.0502461604239387e-06);
-    k8 = k8 * s + T(1.318711942959613e-05);
-    k8 = k8 * s + T(4.3240096573343851e-05);
-    k8 = k8 * s + T(0.00014297170576967457);
-    k8 = k8 * s + T(0.00047748469476875948);
-    k8 = k8 * s + T(0.0016142071792592163);
-    k8 = k8 * s + T(0.0055401073761317844);
-    k8 = k8 * s + T(0.019381335059483595);
-    k8 = k8 * s + T(0.069507553829405294);
-    k8 = k8 * s + T(0.25768098861329336);
+    k6 = T(2.9304287730164863e-17);
+    k6 = k6 * s + T(9.7733817131086587e-17);
+    k6 = k6 * s + T(1.3674554510341147e-16);
+    k6 = k6 * s + T(4.6489530535396354e-16);
+    k6 = k6 * s + T(2.1362691229063384e-15);
+    k6 = k6 * s + T(7.285401479704541e-15);
+    k6 = k6 * s + T(2.4070486131545651e-14);
+    k6 = k6 * s + T(8.317538398576249e-14);
+    k6 = k6 * s + T(2.9037626576222276e-13);
+    k6 = k6 * s + T(1.0177543551398599e-12);
+    k6 = k6 * s + T(3.5962283604155915e-12);
+    k6 = k6 * s + T(1.2827756853601958e-11);
+    k6 = k6 * s + T(4.6230475071501274e-11);
+    k6 = k6 * s + T(1.6854667463816303e-10);
+    k6 = k6 * s + T(6.2255815286086887e-10);
+    k6 = k6 * s + T(2.3339274753576274e-09);
+    k6 = k6 * s + T(8.8999289293624244e-09);
+    k6 = k6 * s + T(3.4612518148782077e-08);
+    k6 = k6 * s + T(1.3773952046509009e-07);
+    k6 = k6 * s + T(5.6319316526164397e-07);
+    k6 = k6 * s + T(2.3785398983651464e-06);
+    k6 = k6 * s + T(1.0446178375401522e-05);
+    k6 = k6 * s + T(4.8132966526402986e-05);
+    k6 = k6 * s + T(0.00023543251831584263);
+    k6 = k6 * s + T(0.0012419070747638676);
+    k6 = k6 * s + T(0.0072185318808872349);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k7 = (T(0.017857142857142856) - k6) * inv_zeta;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_7 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.04)
     const T s = (kappa - T(0.8125)) * T(16);
-    k8 = T(2.9428766268996774e-14);
-    k8 = k8 * s + T(9.1416804732330146e-14);
-    k8 = k8 * s + T(8.5689538931242656e-14);
-    k8 = k8 * s + T(2.6850138736263083e-13);
-    k8 = k8 * s + T(1.4388363470792865e-12);
-    k8 = k8 * s + T(4.5026972385791595e-12);
-    k8 = k8 * s + T(1.307005039634242e-11);
-    k8 = k8 * s + T(4.109839734410553e-11);
-    k8 = k8 * s + T(1.307254278340086e-10);
-    k8 = k8 * s + T(4.1299174469280777e-10);
-    k8 = k8 * s + T(1.3074615927844556e-09);
-    k8 = k8 * s + T(4.1551249940067166e-09);
-    k8 = k8 * s + T(1.3251663870700487e-08);
-    k8 = k8 * s + T(4.2427475792495165e-08);
-    k8 = k8 * s + T(1.3644638321340716e-07);
-    k8 = k8 * s + T(4.4105929575500487e-07);
-    k8 = k8 * s + T(1.4341572026674913e-06);
-    k8 = k8 * s + T(4.6956093746973435e-06);
-    k8 = k8 * s + T(1.5499877545228705e-05);
-    k8 = k8 * s + T(5.1666586231026006e-05);
-    k8 = k8 * s + T(0.00017428657241288871);
-    k8 = k8 * s + T(0.00059668008225149884);
-    k8 = k8 * s + T(0.0020814935425254315);
-    k8 = k8 * s + T(0.0074410999988507014);
-    k8 = k8 * s + T(0.027489972057946836);
-    k8 = k8 * s + T(0.106303850427116);
-    k8 = k8 * s + T(0.4390425864200917);
+    k7 = T(1.9565662033373922e-16);
+    k7 = k7 * s + T(6.3020606562377683e-16);
+    k7 = k7 * s + T(7.1454816055642963e-16);
+    k7 = k7 * s + T(2.337479252763082e-15);
+    k7 = k7 * s + T(1.1636762333831253e-14);
+    k7 = k7 * s + T(3.8061187844943354e-14);
+    k7 = k7 * s + T(1.1801538469239156e-13);
+    k7 = k7 * s + T(3.8970418453782562e-13);
+    k7 = k7 * s + T(1.3009663244238749e-12);
+    k7 = k7 * s + T(4.3384484626479913e-12);
+    k7 = k7 * s + T(1.4546263478334354e-11);
+    k7 = k7 * s + T(4.9111726407922536e-11);
+    k7 = k7 * s + T(1.6703026127460655e-10);
+    k7 = k7 * s + T(5.7275898817057897e-10);
+    k7 = k7 * s + T(1.9825091321739602e-09);
+    k7 = k7 * s + T(6.9362041982561542e-09);
+    k7 = k7 * s + T(2.4571110418429337e-08);
+    k7 = k7 * s + T(8.8315589332745723e-08);
+    k7 = k7 * s + T(3.229345997087428e-07);
+    k7 = k7 * s + T(1.2054258574339875e-06);
+    k7 = k7 * s + T(4.6137728133020462e-06);
+    k7 = k7 * s + T(1.8215830985686658e-05);
+    k7 = k7 * s + T(7.4788710704650461e-05);
+    k7 = k7 * s + T(0.00032291700383717069);
+    k7 = k7 * s + T(0.001489620890829718);
+    k7 = k7 * s + T(0.0075081896961714818);
+    k7 = k7 * s + T(0.042679515046232804);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_7 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.22)
     const T s = (kappa - T(0.90625)) * T(32);
-    k8 = T(3.0327611198637772e-14);
-    k8 = k8 * s + T(9.4314261158139071e-14);
-    k8 = k8 * s + T(8.898758877846469e-14);
-    k8 = k8 * s + T(2.793023294445302e-13);
-    k8 = k8 * s + T(1.492544475720585e-12);
-    k8 = k8 * s + T(4.6785739942014569e-12);
-    k8 = k8 * s + T(1.3616331833422203e-11);
-    k8 = k8 * s + T(4.2904958606033373e-11);
-    k8 = k8 * s + T(1.367658153712527e-10);
-    k8 = k8 * s + T(4.3317178892897045e-10);
-    k8 = k8 * s + T(1.3752610805646657e-09);
-    k8 = k8 * s + T(4.3845595749857244e-09);
-    k8 = k8 * s + T(1.4034019757484685e-08);
-    k8 = k8 * s + T(4.5118287388112683e-08);
-    k8 = k8 * s + T(1.4579255358782841e-07);
-    k8 = k8 * s + T(4.7389174071919935e-07);
-    k8 = k8 * s + T(1.5510245439252969e-06);
-    k8 = k8 * s + T(5.1180940239413503e-06);
-    k8 = k8 * s + T(1.7055640591782102e-05);
-    k8 = k8 * s + T(5.7524791969282818e-05);
-    k8 = k8 * s + T(0.00019695887311076075);
-    k8 = k8 * s + T(0.00068749311987000928);
-    k8 = k8 * s + T(0.0024615954167080808);
-    k8 = k8 * s + T(0.0091263883380770291);
-    k8 = k8 * s + T(0.035562672706589429);
-    k8 = k8 * s + T(0.14929205385733688);
-    k8 = k8 * s + T(0.7041330116448774);
+    k7 = T(1.0410711131955507e-16);
+    k7 = k7 * s + T(3.3613065296413798e-16);
+    k7 = k7 * s + T(3.8561134716050471e-16);
+    k7 = k7 * s + T(1.2657300192056109e-15);
+    k7 = k7 * s + T(6.2793927199906819e-15);
+    k7 = k7 * s + T(2.0612793531073978e-14);
+    k7 = k7 * s + T(6.4248847055211356e-14);
+    k7 = k7 * s + T(2.131085213863797e-13);
+    k7 = k7 * s + T(7.1482321297538451e-13);
+    k7 = k7 * s + T(2.3969656059188617e-12);
+    k7 = k7 * s + T(8.086760415366491e-12);
+    k7 = k7 * s + T(2.7494514255177117e-11);
+    k7 = k7 * s + T(9.4257128614332141e-11);
+    k7 = k7 * s + T(3.2618391061331405e-10);
+    k7 = k7 * s + T(1.1410649986160676e-09);
+    k7 = k7 * s + T(4.0421647520067678e-09);
+    k7 = k7 * s + T(1.453188725517063e-08);
+    k7 = k7 * s + T(5.3167454012355281e-08);
+    k7 = k7 * s + T(1.9868344356051595e-07);
+    k7 = k7 * s + T(7.6201553756309236e-07);
+    k7 = k7 * s + T(3.0192656418039666e-06);
+    k7 = k7 * s + T(1.2472376784315823e-05);
+    k7 = k7 * s + T(5.4425065248524562e-05);
+    k7 = k7 * s + T(0.00025573461538619814);
+    k7 = k7 * s + T(0.001331376116799019);
+    k7 = k7 * s + T(0.0080080265647770876);
+    k7 = k7 * s + T(0.058987530158292736);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else {
-    // κ > 0.9375: partial fractions, (ln(1 + λ) − Σ_{r=1}^{8} κ^r/r) / κ^9, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.9375: partial fractions, K_8 = (ln(1 + λ) − Σ_{r=1}^{8} κ^r/r) / κ^9 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.125);
     partial = partial * kappa + T(0.14285714285714285);
     partial = partial * kappa + T(0.16666666666666666);
@@ -1741,16 +1939,15 @@ bool scalis_segment_compact_i8_grad(const ScalisCompactSupport<T>& in, ScalisCom
     const T kappa_power_3 = kappa * kappa_power_sq3;
     const T kappa_power = kappa_power_3;
     k8 = (ell - partial) / kappa_power;
+    k7 = T(0.125) - zeta * k8;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k7 = T(0.125) - zeta * k8;
-  const T k6 = T(0.017857142857142856) - zeta * k7;
-  const T k5 = T(0.0059523809523809521) - zeta * k6;
-  const T k4 = T(0.0035714285714285713) - zeta * k5;
-  const T k3 = T(0.0035714285714285713) - zeta * k4;
-  const T k2 = T(0.0059523809523809521) - zeta * k3;
-  const T k1 = T(0.017857142857142856) - zeta * k2;
-  const T k0 = T(0.125) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -1766,7 +1963,6 @@ bool scalis_segment_compact_i8_grad(const ScalisCompactSupport<T>& in, ScalisCom
   const T qp3_5 = qp2_3 * in.b2 + qp2_4 * q1;
   const T qp3_6 = qp2_4 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq3 = inv_tau_lo_power_sq2 * inv_tau_lo_power_sq2;
@@ -1838,8 +2034,8 @@ bool scalis_segment_compact_i8_grad(const ScalisCompactSupport<T>& in, ScalisCom
 
 /// f, g0 and g1 of the compact SCALIS segment of degree 8 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 109 +, 163 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 110 +, 164 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 179 +, 255 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 109 +, 164 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 110 +, 165 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 179 +, 256 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i8_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -1848,128 +2044,165 @@ bool scalis_segment_compact_i8_f_and_grad(const ScalisCompactSupport<T>& in, Sca
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k8;  // ∫_0^1 y^8/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6, k7, k8;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_5 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.25)
     const T s = (kappa - T(0.25)) * T(4);
-    k8 = T(7.5401161737605329e-14);
-    k8 = k8 * s + T(2.332201902790778e-13);
-    k8 = k8 * s + T(2.3195251308209521e-13);
-    k8 = k8 * s + T(7.2189815917486211e-13);
-    k8 = k8 * s + T(3.6588303247659566e-12);
-    k8 = k8 * s + T(1.1379799687580097e-11);
-    k8 = k8 * s + T(3.3083035035255961e-11);
-    k8 = k8 * s + T(1.0324648446872076e-10);
-    k8 = k8 * s + T(3.2528102119105207e-10);
-    k8 = k8 * s + T(1.0184682260239348e-09);
-    k8 = k8 * s + T(3.1930695134484909e-09);
-    k8 = k8 * s + T(1.0037511573534811e-08);
-    k8 = k8 * s + T(3.1626005904458168e-08);
-    k8 = k8 * s + T(9.9893635628485735e-08);
-    k8 = k8 * s + T(3.1639915590203393e-07);
-    k8 = k8 * s + T(1.0052487284294902e-06);
-    k8 = k8 * s + T(3.2048813187607633e-06);
-    k8 = k8 * s + T(1.0257477758859067e-05);
-    k8 = k8 * s + T(3.2975208691155498e-05);
-    k8 = k8 * s + T(0.00010654420149781193);
-    k8 = k8 * s + T(0.00034626451721019968);
-    k8 = k8 * s + T(0.0011330448279802648);
-    k8 = k8 * s + T(0.0037375447281218091);
-    k8 = k8 * s + T(0.01244868308761661);
-    k8 = k8 * s + T(0.041954707826921123);
-    k8 = k8 * s + T(0.14348651394515691);
+    k5 = T(6.2904253102295591e-18);
+    k5 = k5 * s + T(2.1462030832799607e-17);
+    k5 = k5 * s + T(3.265301710038859e-17);
+    k5 = k5 * s + T(1.136490452282558e-16);
+    k5 = k5 * s + T(5.1527670509496531e-16);
+    k5 = k5 * s + T(1.8011423878371902e-15);
+    k5 = k5 * s + T(6.1373514455408872e-15);
+    k5 = k5 * s + T(2.1750500901602981e-14);
+    k5 = k5 * s + T(7.784869739422962e-14);
+    k5 = k5 * s + T(2.8000674748253056e-13);
+    k5 = k5 * s + T(1.0155811542090355e-12);
+    k5 = k5 * s + T(3.7186524735438264e-12);
+    k5 = k5 * s + T(1.3757084949022623e-11);
+    k5 = k5 * s + T(5.1476727807855357e-11);
+    k5 = k5 * s + T(1.9507465326308381e-10);
+    k5 = k5 * s + T(7.4981524342067286e-10);
+    k5 = k5 * s + T(2.9285483890116485e-09);
+    k5 = k5 * s + T(1.1647484287714873e-08);
+    k5 = k5 * s + T(4.7296544901849839e-08);
+    k5 = k5 * s + T(1.9671563321502664e-07);
+    k5 = k5 * s + T(8.4138945799737016e-07);
+    k5 = k5 * s + T(3.7196459717765695e-06);
+    k5 = k5 * s + T(1.7107487644163348e-05);
+    k5 = k5 * s + T(8.2563163356399929e-05);
+    k5 = k5 * s + T(0.00042301642041643822);
+    k5 = k5 * s + T(0.0023386507389107371);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k6 = (T(0.0059523809523809521) - k5) * inv_zeta;
+    k7 = (T(0.017857142857142856) - k6) * inv_zeta;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_6 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.08)
     const T s = (kappa - T(0.625)) * T(8);
-    k8 = T(8.3879628111510698e-14);
-    k8 = k8 * s + T(2.6034969007223168e-13);
-    k8 = k8 * s + T(2.6383937911970499e-13);
-    k8 = k8 * s + T(8.2517653924394527e-13);
-    k8 = k8 * s + T(4.1527570886068013e-12);
-    k8 = k8 * s + T(1.2979988509209646e-11);
-    k8 = k8 * s + T(3.8017978864799479e-11);
-    k8 = k8 * s + T(1.1935333625921831e-10);
-    k8 = k8 * s + T(3.783312946072835e-10);
-    k8 = k8 * s + T(1.192927398544147e-09);
-    k8 = k8 * s + T(3.7691030870672515e-09);
-    k8 = k8 * s + T(1.1949385099012644e-08);
-    k8 = k8 * s + T(3.8005573292407634e-08);
-    k8 = k8 * s + T(1.2130696185957378e-07);
-    k8 = k8 * s + T(3.887500089232628e-07);
-    k8 = k8 * s + T(1.2515254063421251e-06);
-    k8 = k8 * s + T(4.0502461604239387e-06);
-    k8 = k8 * s + T(1.318711942959613e-05);
-    k8 = k8 * s + T(4.3240096573343851e-05);
-    k8 = k8 * s + T(0.00014297170576967457);
-    k8 = k8 * s + T(0.00047748469476875948);
-    k8 = k8 * s + T(0.0016142071792592163);
-    k8 = k8 * s + T(0.0055401073761317844);
-    k8 = k8 * s + T(0.019381335059483595);
-    k8 = k8 * s + T(0.069507553829405294);
-    k8 = k8 * s + T(0.25768098861329336);
+    k6 = T(2.9304287730164863e-17);
+    k6 = k6 * s + T(9.7733817131086587e-17);
+    k6 = k6 * s + T(1.3674554510341147e-16);
+    k6 = k6 * s + T(4.6489530535396354e-16);
+    k6 = k6 * s + T(2.1362691229063384e-15);
+    k6 = k6 * s + T(7.285401479704541e-15);
+    k6 = k6 * s + T(2.4070486131545651e-14);
+    k6 = k6 * s + T(8.317538398576249e-14);
+    k6 = k6 * s + T(2.9037626576222276e-13);
+    k6 = k6 * s + T(1.0177543551398599e-12);
+    k6 = k6 * s + T(3.5962283604155915e-12);
+    k6 = k6 * s + T(1.2827756853601958e-11);
+    k6 = k6 * s + T(4.6230475071501274e-11);
+    k6 = k6 * s + T(1.6854667463816303e-10);
+    k6 = k6 * s + T(6.2255815286086887e-10);
+    k6 = k6 * s + T(2.3339274753576274e-09);
+    k6 = k6 * s + T(8.8999289293624244e-09);
+    k6 = k6 * s + T(3.4612518148782077e-08);
+    k6 = k6 * s + T(1.3773952046509009e-07);
+    k6 = k6 * s + T(5.6319316526164397e-07);
+    k6 = k6 * s + T(2.3785398983651464e-06);
+    k6 = k6 * s + T(1.0446178375401522e-05);
+    k6 = k6 * s + T(4.8132966526402986e-05);
+    k6 = k6 * s + T(0.00023543251831584263);
+    k6 = k6 * s + T(0.0012419070747638676);
+    k6 = k6 * s + T(0.0072185318808872349);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k7 = (T(0.017857142857142856) - k6) * inv_zeta;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_7 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.04)
     const T s = (kappa - T(0.8125)) * T(16);
-    k8 = T(2.9428766268996774e-14);
-    k8 = k8 * s + T(9.1416804732330146e-14);
-    k8 = k8 * s + T(8.5689538931242656e-14);
-    k8 = k8 * s + T(2.6850138736263083e-13);
-    k8 = k8 * s + T(1.4388363470792865e-12);
-    k8 = k8 * s + T(4.5026972385791595e-12);
-    k8 = k8 * s + T(1.307005039634242e-11);
-    k8 = k8 * s + T(4.109839734410553e-11);
-    k8 = k8 * s + T(1.307254278340086e-10);
-    k8 = k8 * s + T(4.1299174469280777e-10);
-    k8 = k8 * s + T(1.3074615927844556e-09);
-    k8 = k8 * s + T(4.1551249940067166e-09);
-    k8 = k8 * s + T(1.3251663870700487e-08);
-    k8 = k8 * s + T(4.2427475792495165e-08);
-    k8 = k8 * s + T(1.3644638321340716e-07);
-    k8 = k8 * s + T(4.4105929575500487e-07);
-    k8 = k8 * s + T(1.4341572026674913e-06);
-    k8 = k8 * s + T(4.6956093746973435e-06);
-    k8 = k8 * s + T(1.5499877545228705e-05);
-    k8 = k8 * s + T(5.1666586231026006e-05);
-    k8 = k8 * s + T(0.00017428657241288871);
-    k8 = k8 * s + T(0.00059668008225149884);
-    k8 = k8 * s + T(0.0020814935425254315);
-    k8 = k8 * s + T(0.0074410999988507014);
-    k8 = k8 * s + T(0.027489972057946836);
-    k8 = k8 * s + T(0.106303850427116);
-    k8 = k8 * s + T(0.4390425864200917);
+    k7 = T(1.9565662033373922e-16);
+    k7 = k7 * s + T(6.3020606562377683e-16);
+    k7 = k7 * s + T(7.1454816055642963e-16);
+    k7 = k7 * s + T(2.337479252763082e-15);
+    k7 = k7 * s + T(1.1636762333831253e-14);
+    k7 = k7 * s + T(3.8061187844943354e-14);
+    k7 = k7 * s + T(1.1801538469239156e-13);
+    k7 = k7 * s + T(3.8970418453782562e-13);
+    k7 = k7 * s + T(1.3009663244238749e-12);
+    k7 = k7 * s + T(4.3384484626479913e-12);
+    k7 = k7 * s + T(1.4546263478334354e-11);
+    k7 = k7 * s + T(4.9111726407922536e-11);
+    k7 = k7 * s + T(1.6703026127460655e-10);
+    k7 = k7 * s + T(5.7275898817057897e-10);
+    k7 = k7 * s + T(1.9825091321739602e-09);
+    k7 = k7 * s + T(6.9362041982561542e-09);
+    k7 = k7 * s + T(2.4571110418429337e-08);
+    k7 = k7 * s + T(8.8315589332745723e-08);
+    k7 = k7 * s + T(3.229345997087428e-07);
+    k7 = k7 * s + T(1.2054258574339875e-06);
+    k7 = k7 * s + T(4.6137728133020462e-06);
+    k7 = k7 * s + T(1.8215830985686658e-05);
+    k7 = k7 * s + T(7.4788710704650461e-05);
+    k7 = k7 * s + T(0.00032291700383717069);
+    k7 = k7 * s + T(0.001489620890829718);
+    k7 = k7 * s + T(0.0075081896961714818);
+    k7 = k7 * s + T(0.042679515046232804);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_7 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.22)
     const T s = (kappa - T(0.90625)) * T(32);
-    k8 = T(3.0327611198637772e-14);
-    k8 = k8 * s + T(9.4314261158139071e-14);
-    k8 = k8 * s + T(8.898758877846469e-14);
-    k8 = k8 * s + T(2.793023294445302e-13);
-    k8 = k8 * s + T(1.492544475720585e-12);
-    k8 = k8 * s + T(4.6785739942014569e-12);
-    k8 = k8 * s + T(1.3616331833422203e-11);
-    k8 = k8 * s + T(4.2904958606033373e-11);
-    k8 = k8 * s + T(1.367658153712527e-10);
-    k8 = k8 * s + T(4.3317178892897045e-10);
-    k8 = k8 * s + T(1.3752610805646657e-09);
-    k8 = k8 * s + T(4.3845595749857244e-09);
-    k8 = k8 * s + T(1.4034019757484685e-08);
-    k8 = k8 * s + T(4.5118287388112683e-08);
-    k8 = k8 * s + T(1.4579255358782841e-07);
-    k8 = k8 * s + T(4.7389174071919935e-07);
-    k8 = k8 * s + T(1.5510245439252969e-06);
-    k8 = k8 * s + T(5.1180940239413503e-06);
-    k8 = k8 * s + T(1.7055640591782102e-05);
-    k8 = k8 * s + T(5.7524791969282818e-05);
-    k8 = k8 * s + T(0.00019695887311076075);
-    k8 = k8 * s + T(0.00068749311987000928);
-    k8 = k8 * s + T(0.0024615954167080808);
-    k8 = k8 * s + T(0.0091263883380770291);
-    k8 = k8 * s + T(0.035562672706589429);
-    k8 = k8 * s + T(0.14929205385733688);
-    k8 = k8 * s + T(0.7041330116448774);
+    k7 = T(1.0410711131955507e-16);
+    k7 = k7 * s + T(3.3613065296413798e-16);
+    k7 = k7 * s + T(3.8561134716050471e-16);
+    k7 = k7 * s + T(1.2657300192056109e-15);
+    k7 = k7 * s + T(6.2793927199906819e-15);
+    k7 = k7 * s + T(2.0612793531073978e-14);
+    k7 = k7 * s + T(6.4248847055211356e-14);
+    k7 = k7 * s + T(2.131085213863797e-13);
+    k7 = k7 * s + T(7.1482321297538451e-13);
+    k7 = k7 * s + T(2.3969656059188617e-12);
+    k7 = k7 * s + T(8.086760415366491e-12);
+    k7 = k7 * s + T(2.7494514255177117e-11);
+    k7 = k7 * s + T(9.4257128614332141e-11);
+    k7 = k7 * s + T(3.2618391061331405e-10);
+    k7 = k7 * s + T(1.1410649986160676e-09);
+    k7 = k7 * s + T(4.0421647520067678e-09);
+    k7 = k7 * s + T(1.453188725517063e-08);
+    k7 = k7 * s + T(5.3167454012355281e-08);
+    k7 = k7 * s + T(1.9868344356051595e-07);
+    k7 = k7 * s + T(7.6201553756309236e-07);
+    k7 = k7 * s + T(3.0192656418039666e-06);
+    k7 = k7 * s + T(1.2472376784315823e-05);
+    k7 = k7 * s + T(5.4425065248524562e-05);
+    k7 = k7 * s + T(0.00025573461538619814);
+    k7 = k7 * s + T(0.001331376116799019);
+    k7 = k7 * s + T(0.0080080265647770876);
+    k7 = k7 * s + T(0.058987530158292736);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
+    k8 = (T(0.125) - k7) * inv_zeta;
   } else {
-    // κ > 0.9375: partial fractions, (ln(1 + λ) − Σ_{r=1}^{8} κ^r/r) / κ^9, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.9375: partial fractions, K_8 = (ln(1 + λ) − Σ_{r=1}^{8} κ^r/r) / κ^9 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.125);
     partial = partial * kappa + T(0.14285714285714285);
     partial = partial * kappa + T(0.16666666666666666);
@@ -1985,16 +2218,15 @@ bool scalis_segment_compact_i8_f_and_grad(const ScalisCompactSupport<T>& in, Sca
     const T kappa_power_3 = kappa * kappa_power_sq3;
     const T kappa_power = kappa_power_3;
     k8 = (ell - partial) / kappa_power;
+    k7 = T(0.125) - zeta * k8;
+    k6 = T(0.017857142857142856) - zeta * k7;
+    k5 = T(0.0059523809523809521) - zeta * k6;
+    k4 = T(0.0035714285714285713) - zeta * k5;
+    k3 = T(0.0035714285714285713) - zeta * k4;
+    k2 = T(0.0059523809523809521) - zeta * k3;
+    k1 = T(0.017857142857142856) - zeta * k2;
+    k0 = T(0.125) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k7 = T(0.125) - zeta * k8;
-  const T k6 = T(0.017857142857142856) - zeta * k7;
-  const T k5 = T(0.0059523809523809521) - zeta * k6;
-  const T k4 = T(0.0035714285714285713) - zeta * k5;
-  const T k3 = T(0.0035714285714285713) - zeta * k4;
-  const T k2 = T(0.0059523809523809521) - zeta * k3;
-  const T k1 = T(0.017857142857142856) - zeta * k2;
-  const T k0 = T(0.125) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -2010,7 +2242,6 @@ bool scalis_segment_compact_i8_f_and_grad(const ScalisCompactSupport<T>& in, Sca
   const T qp3_5 = qp2_3 * in.b2 + qp2_4 * q1;
   const T qp3_6 = qp2_4 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq3 = inv_tau_lo_power_sq2 * inv_tau_lo_power_sq2;
@@ -2102,8 +2333,8 @@ bool scalis_segment_compact_i8_f_and_grad(const ScalisCompactSupport<T>& in, Sca
 
 /// f of the compact SCALIS segment of degree 10 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 87 +, 144 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 89 +, 146 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 154 +, 223 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 87 +, 145 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 89 +, 146 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 154 +, 224 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i10_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -2112,127 +2343,172 @@ bool scalis_segment_compact_i10_f(const ScalisCompactSupport<T>& in, ScalisCompa
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k10;  // ∫_0^1 y^10/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6, k7, k8, k9, k10;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_6 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.20)
     const T s = (kappa - T(0.25)) * T(4);
-    k10 = T(7.2123458108399468e-14);
-    k10 = k10 * s + T(2.2277895983518176e-13);
-    k10 = k10 * s + T(2.1993473231832583e-13);
-    k10 = k10 * s + T(6.8320642565553663e-13);
-    k10 = k10 * s + T(3.4726997490848396e-12);
-    k10 = k10 * s + T(1.0780560681693967e-11);
-    k10 = k10 * s + T(3.1251352159829163e-11);
-    k10 = k10 * s + T(9.7312501814678243e-11);
-    k10 = k10 * s + T(3.0588778014735944e-10);
-    k10 = k10 * s + T(9.55249981181031e-10);
-    k10 = k10 * s + T(2.9863341059189124e-09);
-    k10 = k10 * s + T(9.3585432964878751e-09);
-    k10 = k10 * s + T(2.9386578761595445e-08);
-    k10 = k10 * s + T(9.2472999420316324e-08);
-    k10 = k10 * s + T(2.9168321333781086e-07);
-    k10 = k10 * s + T(9.2245719933286798e-07);
-    k10 = k10 * s + T(2.9257889519882501e-06);
-    k10 = k10 * s + T(9.3099449055394907e-06);
-    k10 = k10 * s + T(2.9732422326875676e-05);
-    k10 = k10 * s + T(9.5344854530398794e-05);
-    k10 = k10 * s + T(0.00030718120767170981);
-    k10 = k10 * s + T(0.00099499995409572722);
-    k10 = k10 * s + T(0.0032430511594999899);
-    k10 = k10 * s + T(0.010647614974588321);
-    k10 = k10 * s + T(0.035262434541272314);
-    k10 = k10 * s + T(0.11800644534473281);
+    k6 = T(5.0899078530700703e-19);
+    k6 = k6 * s + T(1.7841847494731205e-18);
+    k6 = k6 * s + T(2.97721921969493e-18);
+    k6 = k6 * s + T(1.0666052204498233e-17);
+    k6 = k6 * s + T(4.796241738009341e-17);
+    k6 = k6 * s + T(1.7288358184307535e-16);
+    k6 = k6 * s + T(6.1159764114004822e-16);
+    k6 = k6 * s + T(2.2390524657363444e-15);
+    k6 = k6 * s + T(8.2812720675389293e-15);
+    k6 = k6 * s + T(3.0832111143624047e-14);
+    k6 = k6 * s + T(1.1588460388184046e-13);
+    k6 = k6 * s + T(4.4019245130526225e-13);
+    k6 = k6 * s + T(1.6913727986558849e-12);
+    k6 = k6 * s + T(6.5812970033641481e-12);
+    k6 = k6 * s + T(2.5967922895680051e-11);
+    k6 = k6 * s + T(1.0406083066336207e-10);
+    k6 = k6 * s + T(4.242755507941763e-10);
+    k6 = k6 * s + T(1.7637986811822181e-09);
+    k6 = k6 * s + T(7.4954835694889044e-09);
+    k6 = k6 * s + T(3.2661602337832107e-08);
+    k6 = k6 * s + T(1.4648530579276167e-07);
+    k6 = k6 * s + T(6.7933801948552803e-07);
+    k6 = k6 * s + T(3.2767490463740181e-06);
+    k6 = k6 * s + T(1.6561362803101014e-05);
+    k6 = k6 * s + T(8.856332704306346e-05);
+    k6 = k6 * s + T(0.00050761970449972587);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k7 = (T(0.0011904761904761906) - k6) * inv_zeta;
+    k8 = (T(0.0027777777777777779) - k7) * inv_zeta;
+    k9 = (T(0.011111111111111112) - k8) * inv_zeta;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_7 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.625)) * T(8);
-    k10 = T(8.1785256139983424e-14);
-    k10 = k10 * s + T(2.5362508233900457e-13);
-    k10 = k10 * s + T(2.5580980733716078e-13);
-    k10 = k10 * s + T(7.9905034847365458e-13);
-    k10 = k10 * s + T(4.0283335696114956e-12);
-    k10 = k10 * s + T(1.2574942571025731e-11);
-    k10 = k10 * s + T(3.6760343676661718e-11);
-    k10 = k10 * s + T(1.1522510350395132e-10);
-    k10 = k10 * s + T(3.6465287015411878e-10);
-    k10 = k10 * s + T(1.1476405292239156e-09);
-    k10 = k10 * s + T(3.6184636039466824e-09);
-    k10 = k10 * s + T(1.1445342119811117e-08);
-    k10 = k10 * s + T(3.6308592377939517e-08);
-    k10 = k10 * s + T(1.1555435062061096e-07);
-    k10 = k10 * s + T(3.6909803086656022e-07);
-    k10 = k10 * s + T(1.183801975522368e-06);
-    k10 = k10 * s + T(3.8145301230786819e-06);
-    k10 = k10 * s + T(1.235727642043341e-05);
-    k10 = k10 * s + T(4.0279736974231273e-05);
-    k10 = k10 * s + T(0.00013224636308903622);
-    k10 = k10 * s + T(0.00043790912544887709);
-    k10 = k10 * s + T(0.0014649388375577929);
-    k10 = k10 * s + T(0.0049619039534007049);
-    k10 = k10 * s + T(0.017066748999637362);
-    k10 = k10 * s + T(0.059851783241042941);
-    k10 = k10 * s + T(0.21521888640558653);
+    k7 = T(1.0994938032750566e-18);
+    k7 = k7 * s + T(3.792948289164676e-18);
+    k7 = k7 * s + T(6.0040938299249478e-18);
+    k7 = k7 * s + T(2.1189805028971133e-17);
+    k7 = k7 * s + T(9.5815754760700915e-17);
+    k7 = k7 * s + T(3.4012059140543847e-16);
+    k7 = k7 * s + T(1.1817595642785977e-15);
+    k7 = k7 * s + T(4.2644575470006305e-15);
+    k7 = k7 * s + T(1.5559969542381992e-14);
+    k7 = k7 * s + T(5.7172419847813425e-14);
+    k7 = k7 * s + T(2.1225397437488001e-13);
+    k7 = k7 * s + T(7.9727619404016817e-13);
+    k7 = k7 * s + T(3.0334764047742705e-12);
+    k7 = k7 * s + T(1.170826514980819e-11);
+    k7 = k7 * s + T(4.5922429144619581e-11);
+    k7 = k7 * s + T(1.8341503576071953e-10);
+    k7 = k7 * s + T(7.4781304903788345e-10);
+    k7 = k7 * s + T(3.1216654300821822e-09);
+    k7 = k7 * s + T(1.3389870358633612e-08);
+    k7 = k7 * s + T(5.9275388842712806e-08);
+    k7 = k7 * s + T(2.72296183538035e-07);
+    k7 = k7 * s + T(1.3068366641908199e-06);
+    k7 = k7 * s + T(6.6086982120895828e-06);
+    k7 = k7 * s + T(3.5597552475921164e-05);
+    k7 = k7 * s + T(0.00020707596983161807);
+    k7 = k7 * s + T(0.0013241776483165083);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k8 = (T(0.0027777777777777779) - k7) * inv_zeta;
+    k9 = (T(0.011111111111111112) - k8) * inv_zeta;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_9 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.8125)) * T(16);
-    k10 = T(2.904533526958691e-14);
-    k10 = k10 * s + T(9.0182727431353228e-14);
-    k10 = k10 * s + T(8.4295578018090214e-14);
-    k10 = k10 * s + T(2.6394629713333858e-13);
-    k10 = k10 * s + T(1.4161335950832043e-12);
-    k10 = k10 * s + T(4.4285267270583707e-12);
-    k10 = k10 * s + T(1.2840453810829876e-11);
-    k10 = k10 * s + T(4.0341301981334704e-11);
-    k10 = k10 * s + T(1.2820175537233089e-10);
-    k10 = k10 * s + T(4.0459034327953513e-10);
-    k10 = k10 * s + T(1.2793472272845042e-09);
-    k10 = k10 * s + T(4.0604098226783704e-09);
-    k10 = k10 * s + T(1.2930325687197256e-08);
-    k10 = k10 * s + T(4.1328669779143312e-08);
-    k10 = k10 * s + T(1.326553099796016e-07);
-    k10 = k10 * s + T(4.2784515102895253e-07);
-    k10 = k10 * s + T(1.3875528369287791e-06);
-    k10 = k10 * s + T(4.5289768146906251e-06);
-    k10 = k10 * s + T(1.4894417251877287e-05);
-    k10 = k10 * s + T(4.9424069455810264e-05);
-    k10 = k10 * s + T(0.00016578633016107593);
-    k10 = k10 * s + T(0.00056353375294765037);
-    k10 = k10 * s + T(0.0019475951638387166);
-    k10 = k10 * s + T(0.0068754225484226848);
-    k10 = k10 * s + T(0.024957777938777528);
-    k10 = k10 * s + T(0.094072962614130173);
-    k10 = k10 * s + T(0.37367134721360373);
+    k9 = T(1.9042010141203112e-16);
+    k9 = k9 * s + T(6.1271304960888572e-16);
+    k9 = k9 * s + T(6.9122269244174511e-16);
+    k9 = k9 * s + T(2.2579165296283598e-15);
+    k9 = k9 * s + T(1.1257871363047337e-14);
+    k9 = k9 * s + T(3.6765762408939754e-14);
+    k9 = k9 * s + T(1.137462843028172e-13);
+    k9 = k9 * s + T(3.7490312341901873e-13);
+    k9 = k9 * s + T(1.2490673226589047e-12);
+    k9 = k9 * s + T(4.1558070297349924e-12);
+    k9 = k9 * s + T(1.3898008801553609e-11);
+    k9 = k9 * s + T(4.6787592754166504e-11);
+    k9 = k9 * s + T(1.5860579484697153e-10);
+    k9 = k9 * s + T(5.4184288548952899e-10);
+    k9 = k9 * s + T(1.8674513181342349e-09);
+    k9 = k9 * s + T(6.501083514996418e-09);
+    k9 = k9 * s + T(2.2894893994017999e-08);
+    k9 = k9 * s + T(8.1717925992874693e-08);
+    k9 = k9 * s + T(2.9630110626115001e-07);
+    k9 = k9 * s + T(1.0946326120493464e-06);
+    k9 = k9 * s + T(4.1359226540264087e-06);
+    k9 = k9 * s + T(1.6062119062238543e-05);
+    k9 = k9 * s + T(6.4539816056658446e-05);
+    k9 = k9 * s + T(0.00027071939334434201);
+    k9 = k9 * s + T(0.0011999767998623493);
+    k9 = k9 * s + T(0.0057157787107008267);
+    k9 = k9 * s + T(0.029936622397449299);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_9 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.02)
     const T s = (kappa - T(0.90625)) * T(32);
-    k10 = T(3.0121596471557811e-14);
-    k10 = k10 * s + T(9.3649380418993128e-14);
-    k10 = k10 * s + T(8.8226394340340178e-14);
-    k10 = k10 * s + T(2.7680528537837444e-13);
-    k10 = k10 * s + T(1.4801490455250787e-12);
-    k10 = k10 * s + T(4.637910716860737e-12);
-    k10 = k10 * s + T(1.3489704348900477e-11);
-    k10 = k10 * s + T(4.2485279964515311e-11);
-    k10 = k10 * s + T(1.3535930360137297e-10);
-    k10 = k10 * s + T(4.2846012009633191e-10);
-    k10 = k10 * s + T(1.3593829623478383e-09);
-    k10 = k10 * s + T(4.3306436875262766e-09);
-    k10 = k10 * s + T(1.3849454354432674e-08);
-    k10 = k10 * s + T(4.4480664069334138e-08);
-    k10 = k10 * s + T(1.4356641116483027e-07);
-    k10 = k10 * s + T(4.6602419816322856e-07);
-    k10 = k10 * s + T(1.5228196402126255e-06);
-    k10 = k10 * s + T(5.0152557255524318e-06);
-    k10 = k10 * s + T(1.6672983470264779e-05);
-    k10 = k10 * s + T(5.606517353889674e-05);
-    k10 = k10 * s + T(0.00019121680223706919);
-    k10 = k10 * s + T(0.00066400150063765546);
-    k10 = k10 * s + T(0.0023604683470597547);
-    k10 = k10 * s + T(0.0086605285811521531);
-    k10 = k10 * s + T(0.033209169124995989);
-    k10 = k10 * s + T(0.13578531219214904);
-    k10 = k10 * s + T(0.61171751028130406);
+    k9 = T(1.0264346888499029e-16);
+    k9 = k9 * s + T(3.3121966457425093e-16);
+    k9 = k9 * s + T(3.7894069866730926e-16);
+    k9 = k9 * s + T(1.2428394012784284e-15);
+    k9 = k9 * s + T(6.1707368839219138e-15);
+    k9 = k9 * s + T(2.0238816336965879e-14);
+    k9 = k9 * s + T(6.3005216181683695e-14);
+    k9 = k9 * s + T(2.0876131761253421e-13);
+    k9 = k9 * s + T(6.9944404038165502e-13);
+    k9 = k9 * s + T(2.3422901728704589e-12);
+    k9 = k9 * s + T(7.8904625150862995e-12);
+    k9 = k9 * s + T(2.6781569518209242e-11);
+    k9 = k9 * s + T(9.1634406438628503e-11);
+    k9 = k9 * s + T(3.1639410490795405e-10);
+    k9 = k9 * s + T(1.103905145898055e-09);
+    k9 = k9 * s + T(3.8983436361591358e-09);
+    k9 = k9 * s + T(1.396240015357984e-08);
+    k9 = k9 * s + T(5.0850509437109038e-08);
+    k9 = k9 * s + T(1.8894447275319995e-07);
+    k9 = k9 * s + T(7.1941505060911548e-07);
+    k9 = k9 * s + T(2.8234716852014975e-06);
+    k9 = k9 * s + T(1.1514495160838788e-05);
+    k9 = k9 * s + T(4.934761062415277e-05);
+    k9 = k9 * s + T(0.00022586198067311018);
+    k9 = k9 * s + T(0.0011299314005362834);
+    k9 = k9 * s + T(0.0063862991782767812);
+    k9 = k9 * s + T(0.04265148341112774);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.96875)) {
-    // κ ≤ 0.96875: Chebyshev interpolant of degree 27 (bound 3.1e-18 relative)
+    // κ ≤ 0.96875: K_10 by a Chebyshev interpolant of degree 27 (bound 3.1e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.953125)) * T(64);
     k10 = T(1.0149195935767546e-14);
     k10 = k10 * s + T(3.153428976708831e-14);
@@ -2262,9 +2538,19 @@ bool scalis_segment_compact_i10_f(const ScalisCompactSupport<T>& in, ScalisCompa
     k10 = k10 * s + T(0.040565931269147468);
     k10 = k10 * s + T(0.18017229135625998);
     k10 = k10 * s + T(0.94025668732740675);
+    k9 = T(0.10000000000000001) - zeta * k10;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
   } else {
-    // κ > 0.96875: partial fractions, (ln(1 + λ) − Σ_{r=1}^{10} κ^r/r) / κ^11, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.96875: partial fractions, K_10 = (ln(1 + λ) − Σ_{r=1}^{10} κ^r/r) / κ^11 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.10000000000000001);
     partial = partial * kappa + T(0.1111111111111111);
     partial = partial * kappa + T(0.125);
@@ -2283,18 +2569,17 @@ bool scalis_segment_compact_i10_f(const ScalisCompactSupport<T>& in, ScalisCompa
     const T kappa_power_3 = kappa_power_1 * kappa_power_sq3;
     const T kappa_power = kappa_power_3;
     k10 = (ell - partial) / kappa_power;
+    k9 = T(0.10000000000000001) - zeta * k10;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k9 = T(0.10000000000000001) - zeta * k10;
-  const T k8 = T(0.011111111111111112) - zeta * k9;
-  const T k7 = T(0.0027777777777777779) - zeta * k8;
-  const T k6 = T(0.0011904761904761906) - zeta * k7;
-  const T k5 = T(0.00079365079365079365) - zeta * k6;
-  const T k4 = T(0.00079365079365079365) - zeta * k5;
-  const T k3 = T(0.0011904761904761906) - zeta * k4;
-  const T k2 = T(0.0027777777777777779) - zeta * k3;
-  const T k1 = T(0.011111111111111112) - zeta * k2;
-  const T k0 = T(0.10000000000000001) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -2319,7 +2604,6 @@ bool scalis_segment_compact_i10_f(const ScalisCompactSupport<T>& in, ScalisCompa
   const T qp4_7 = qp3_5 * in.b2 + qp3_6 * q1;
   const T qp4_8 = qp3_6 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
@@ -2359,8 +2643,8 @@ bool scalis_segment_compact_i10_f(const ScalisCompactSupport<T>& in, ScalisCompa
 
 /// g0 and g1 of the compact SCALIS segment of degree 10 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 115 +, 157 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 117 +, 159 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 185 +, 249 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 115 +, 158 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 117 +, 159 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 185 +, 250 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i10_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -2369,127 +2653,172 @@ bool scalis_segment_compact_i10_grad(const ScalisCompactSupport<T>& in, ScalisCo
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k10;  // ∫_0^1 y^10/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6, k7, k8, k9, k10;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_6 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.20)
     const T s = (kappa - T(0.25)) * T(4);
-    k10 = T(7.2123458108399468e-14);
-    k10 = k10 * s + T(2.2277895983518176e-13);
-    k10 = k10 * s + T(2.1993473231832583e-13);
-    k10 = k10 * s + T(6.8320642565553663e-13);
-    k10 = k10 * s + T(3.4726997490848396e-12);
-    k10 = k10 * s + T(1.0780560681693967e-11);
-    k10 = k10 * s + T(3.1251352159829163e-11);
-    k10 = k10 * s + T(9.7312501814678243e-11);
-    k10 = k10 * s + T(3.0588778014735944e-10);
-    k10 = k10 * s + T(9.55249981181031e-10);
-    k10 = k10 * s + T(2.9863341059189124e-09);
-    k10 = k10 * s + T(9.3585432964878751e-09);
-    k10 = k10 * s + T(2.9386578761595445e-08);
-    k10 = k10 * s + T(9.2472999420316324e-08);
-    k10 = k10 * s + T(2.9168321333781086e-07);
-    k10 = k10 * s + T(9.2245719933286798e-07);
-    k10 = k10 * s + T(2.9257889519882501e-06);
-    k10 = k10 * s + T(9.3099449055394907e-06);
-    k10 = k10 * s + T(2.9732422326875676e-05);
-    k10 = k10 * s + T(9.5344854530398794e-05);
-    k10 = k10 * s + T(0.00030718120767170981);
-    k10 = k10 * s + T(0.00099499995409572722);
-    k10 = k10 * s + T(0.0032430511594999899);
-    k10 = k10 * s + T(0.010647614974588321);
-    k10 = k10 * s + T(0.035262434541272314);
-    k10 = k10 * s + T(0.11800644534473281);
+    k6 = T(5.0899078530700703e-19);
+    k6 = k6 * s + T(1.7841847494731205e-18);
+    k6 = k6 * s + T(2.97721921969493e-18);
+    k6 = k6 * s + T(1.0666052204498233e-17);
+    k6 = k6 * s + T(4.796241738009341e-17);
+    k6 = k6 * s + T(1.7288358184307535e-16);
+    k6 = k6 * s + T(6.1159764114004822e-16);
+    k6 = k6 * s + T(2.2390524657363444e-15);
+    k6 = k6 * s + T(8.2812720675389293e-15);
+    k6 = k6 * s + T(3.0832111143624047e-14);
+    k6 = k6 * s + T(1.1588460388184046e-13);
+    k6 = k6 * s + T(4.4019245130526225e-13);
+    k6 = k6 * s + T(1.6913727986558849e-12);
+    k6 = k6 * s + T(6.5812970033641481e-12);
+    k6 = k6 * s + T(2.5967922895680051e-11);
+    k6 = k6 * s + T(1.0406083066336207e-10);
+    k6 = k6 * s + T(4.242755507941763e-10);
+    k6 = k6 * s + T(1.7637986811822181e-09);
+    k6 = k6 * s + T(7.4954835694889044e-09);
+    k6 = k6 * s + T(3.2661602337832107e-08);
+    k6 = k6 * s + T(1.4648530579276167e-07);
+    k6 = k6 * s + T(6.7933801948552803e-07);
+    k6 = k6 * s + T(3.2767490463740181e-06);
+    k6 = k6 * s + T(1.6561362803101014e-05);
+    k6 = k6 * s + T(8.856332704306346e-05);
+    k6 = k6 * s + T(0.00050761970449972587);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k7 = (T(0.0011904761904761906) - k6) * inv_zeta;
+    k8 = (T(0.0027777777777777779) - k7) * inv_zeta;
+    k9 = (T(0.011111111111111112) - k8) * inv_zeta;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_7 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.625)) * T(8);
-    k10 = T(8.1785256139983424e-14);
-    k10 = k10 * s + T(2.5362508233900457e-13);
-    k10 = k10 * s + T(2.5580980733716078e-13);
-    k10 = k10 * s + T(7.9905034847365458e-13);
-    k10 = k10 * s + T(4.0283335696114956e-12);
-    k10 = k10 * s + T(1.2574942571025731e-11);
-    k10 = k10 * s + T(3.6760343676661718e-11);
-    k10 = k10 * s + T(1.1522510350395132e-10);
-    k10 = k10 * s + T(3.6465287015411878e-10);
-    k10 = k10 * s + T(1.1476405292239156e-09);
-    k10 = k10 * s + T(3.6184636039466824e-09);
-    k10 = k10 * s + T(1.1445342119811117e-08);
-    k10 = k10 * s + T(3.6308592377939517e-08);
-    k10 = k10 * s + T(1.1555435062061096e-07);
-    k10 = k10 * s + T(3.6909803086656022e-07);
-    k10 = k10 * s + T(1.183801975522368e-06);
-    k10 = k10 * s + T(3.8145301230786819e-06);
-    k10 = k10 * s + T(1.235727642043341e-05);
-    k10 = k10 * s + T(4.0279736974231273e-05);
-    k10 = k10 * s + T(0.00013224636308903622);
-    k10 = k10 * s + T(0.00043790912544887709);
-    k10 = k10 * s + T(0.0014649388375577929);
-    k10 = k10 * s + T(0.0049619039534007049);
-    k10 = k10 * s + T(0.017066748999637362);
-    k10 = k10 * s + T(0.059851783241042941);
-    k10 = k10 * s + T(0.21521888640558653);
+    k7 = T(1.0994938032750566e-18);
+    k7 = k7 * s + T(3.792948289164676e-18);
+    k7 = k7 * s + T(6.0040938299249478e-18);
+    k7 = k7 * s + T(2.1189805028971133e-17);
+    k7 = k7 * s + T(9.5815754760700915e-17);
+    k7 = k7 * s + T(3.4012059140543847e-16);
+    k7 = k7 * s + T(1.1817595642785977e-15);
+    k7 = k7 * s + T(4.2644575470006305e-15);
+    k7 = k7 * s + T(1.5559969542381992e-14);
+    k7 = k7 * s + T(5.7172419847813425e-14);
+    k7 = k7 * s + T(2.1225397437488001e-13);
+    k7 = k7 * s + T(7.9727619404016817e-13);
+    k7 = k7 * s + T(3.0334764047742705e-12);
+    k7 = k7 * s + T(1.170826514980819e-11);
+    k7 = k7 * s + T(4.5922429144619581e-11);
+    k7 = k7 * s + T(1.8341503576071953e-10);
+    k7 = k7 * s + T(7.4781304903788345e-10);
+    k7 = k7 * s + T(3.1216654300821822e-09);
+    k7 = k7 * s + T(1.3389870358633612e-08);
+    k7 = k7 * s + T(5.9275388842712806e-08);
+    k7 = k7 * s + T(2.72296183538035e-07);
+    k7 = k7 * s + T(1.3068366641908199e-06);
+    k7 = k7 * s + T(6.6086982120895828e-06);
+    k7 = k7 * s + T(3.5597552475921164e-05);
+    k7 = k7 * s + T(0.00020707596983161807);
+    k7 = k7 * s + T(0.0013241776483165083);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k8 = (T(0.0027777777777777779) - k7) * inv_zeta;
+    k9 = (T(0.011111111111111112) - k8) * inv_zeta;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_9 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.8125)) * T(16);
-    k10 = T(2.904533526958691e-14);
-    k10 = k10 * s + T(9.0182727431353228e-14);
-    k10 = k10 * s + T(8.4295578018090214e-14);
-    k10 = k10 * s + T(2.6394629713333858e-13);
-    k10 = k10 * s + T(1.4161335950832043e-12);
-    k10 = k10 * s + T(4.4285267270583707e-12);
-    k10 = k10 * s + T(1.2840453810829876e-11);
-    k10 = k10 * s + T(4.0341301981334704e-11);
-    k10 = k10 * s + T(1.2820175537233089e-10);
-    k10 = k10 * s + T(4.0459034327953513e-10);
-    k10 = k10 * s + T(1.2793472272845042e-09);
-    k10 = k10 * s + T(4.0604098226783704e-09);
-    k10 = k10 * s + T(1.2930325687197256e-08);
-    k10 = k10 * s + T(4.1328669779143312e-08);
-    k10 = k10 * s + T(1.326553099796016e-07);
-    k10 = k10 * s + T(4.2784515102895253e-07);
-    k10 = k10 * s + T(1.3875528369287791e-06);
-    k10 = k10 * s + T(4.5289768146906251e-06);
-    k10 = k10 * s + T(1.4894417251877287e-05);
-    k10 = k10 * s + T(4.9424069455810264e-05);
-    k10 = k10 * s + T(0.00016578633016107593);
-    k10 = k10 * s + T(0.00056353375294765037);
-    k10 = k10 * s + T(0.0019475951638387166);
-    k10 = k10 * s + T(0.0068754225484226848);
-    k10 = k10 * s + T(0.024957777938777528);
-    k10 = k10 * s + T(0.094072962614130173);
-    k10 = k10 * s + T(0.37367134721360373);
+    k9 = T(1.9042010141203112e-16);
+    k9 = k9 * s + T(6.1271304960888572e-16);
+    k9 = k9 * s + T(6.9122269244174511e-16);
+    k9 = k9 * s + T(2.2579165296283598e-15);
+    k9 = k9 * s + T(1.1257871363047337e-14);
+    k9 = k9 * s + T(3.6765762408939754e-14);
+    k9 = k9 * s + T(1.137462843028172e-13);
+    k9 = k9 * s + T(3.7490312341901873e-13);
+    k9 = k9 * s + T(1.2490673226589047e-12);
+    k9 = k9 * s + T(4.1558070297349924e-12);
+    k9 = k9 * s + T(1.3898008801553609e-11);
+    k9 = k9 * s + T(4.6787592754166504e-11);
+    k9 = k9 * s + T(1.5860579484697153e-10);
+    k9 = k9 * s + T(5.4184288548952899e-10);
+    k9 = k9 * s + T(1.8674513181342349e-09);
+    k9 = k9 * s + T(6.501083514996418e-09);
+    k9 = k9 * s + T(2.2894893994017999e-08);
+    k9 = k9 * s + T(8.1717925992874693e-08);
+    k9 = k9 * s + T(2.9630110626115001e-07);
+    k9 = k9 * s + T(1.0946326120493464e-06);
+    k9 = k9 * s + T(4.1359226540264087e-06);
+    k9 = k9 * s + T(1.6062119062238543e-05);
+    k9 = k9 * s + T(6.4539816056658446e-05);
+    k9 = k9 * s + T(0.00027071939334434201);
+    k9 = k9 * s + T(0.0011999767998623493);
+    k9 = k9 * s + T(0.0057157787107008267);
+    k9 = k9 * s + T(0.029936622397449299);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_9 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.02)
     const T s = (kappa - T(0.90625)) * T(32);
-    k10 = T(3.0121596471557811e-14);
-    k10 = k10 * s + T(9.3649380418993128e-14);
-    k10 = k10 * s + T(8.8226394340340178e-14);
-    k10 = k10 * s + T(2.7680528537837444e-13);
-    k10 = k10 * s + T(1.4801490455250787e-12);
-    k10 = k10 * s + T(4.637910716860737e-12);
-    k10 = k10 * s + T(1.3489704348900477e-11);
-    k10 = k10 * s + T(4.2485279964515311e-11);
-    k10 = k10 * s + T(1.3535930360137297e-10);
-    k10 = k10 * s + T(4.2846012009633191e-10);
-    k10 = k10 * s + T(1.3593829623478383e-09);
-    k10 = k10 * s + T(4.3306436875262766e-09);
-    k10 = k10 * s + T(1.3849454354432674e-08);
-    k10 = k10 * s + T(4.4480664069334138e-08);
-    k10 = k10 * s + T(1.4356641116483027e-07);
-    k10 = k10 * s + T(4.6602419816322856e-07);
-    k10 = k10 * s + T(1.5228196402126255e-06);
-    k10 = k10 * s + T(5.0152557255524318e-06);
-    k10 = k10 * s + T(1.6672983470264779e-05);
-    k10 = k10 * s + T(5.606517353889674e-05);
-    k10 = k10 * s + T(0.00019121680223706919);
-    k10 = k10 * s + T(0.00066400150063765546);
-    k10 = k10 * s + T(0.0023604683470597547);
-    k10 = k10 * s + T(0.0086605285811521531);
-    k10 = k10 * s + T(0.033209169124995989);
-    k10 = k10 * s + T(0.13578531219214904);
-    k10 = k10 * s + T(0.61171751028130406);
+    k9 = T(1.0264346888499029e-16);
+    k9 = k9 * s + T(3.3121966457425093e-16);
+    k9 = k9 * s + T(3.7894069866730926e-16);
+    k9 = k9 * s + T(1.2428394012784284e-15);
+    k9 = k9 * s + T(6.1707368839219138e-15);
+    k9 = k9 * s + T(2.0238816336965879e-14);
+    k9 = k9 * s + T(6.3005216181683695e-14);
+    k9 = k9 * s + T(2.0876131761253421e-13);
+    k9 = k9 * s + T(6.9944404038165502e-13);
+    k9 = k9 * s + T(2.3422901728704589e-12);
+    k9 = k9 * s + T(7.8904625150862995e-12);
+    k9 = k9 * s + T(2.6781569518209242e-11);
+    k9 = k9 * s + T(9.1634406438628503e-11);
+    k9 = k9 * s + T(3.1639410490795405e-10);
+    k9 = k9 * s + T(1.103905145898055e-09);
+    k9 = k9 * s + T(3.8983436361591358e-09);
+    k9 = k9 * s + T(1.396240015357984e-08);
+    k9 = k9 * s + T(5.0850509437109038e-08);
+    k9 = k9 * s + T(1.8894447275319995e-07);
+    k9 = k9 * s + T(7.1941505060911548e-07);
+    k9 = k9 * s + T(2.8234716852014975e-06);
+    k9 = k9 * s + T(1.1514495160838788e-05);
+    k9 = k9 * s + T(4.934761062415277e-05);
+    k9 = k9 * s + T(0.00022586198067311018);
+    k9 = k9 * s + T(0.0011299314005362834);
+    k9 = k9 * s + T(0.0063862991782767812);
+    k9 = k9 * s + T(0.04265148341112774);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.96875)) {
-    // κ ≤ 0.96875: Chebyshev interpolant of degree 27 (bound 3.1e-18 relative)
+    // κ ≤ 0.96875: K_10 by a Chebyshev interpolant of degree 27 (bound 3.1e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.953125)) * T(64);
     k10 = T(1.0149195935767546e-14);
     k10 = k10 * s + T(3.153428976708831e-14);
@@ -2519,9 +2848,19 @@ bool scalis_segment_compact_i10_grad(const ScalisCompactSupport<T>& in, ScalisCo
     k10 = k10 * s + T(0.040565931269147468);
     k10 = k10 * s + T(0.18017229135625998);
     k10 = k10 * s + T(0.94025668732740675);
+    k9 = T(0.10000000000000001) - zeta * k10;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
   } else {
-    // κ > 0.96875: partial fractions, (ln(1 + λ) − Σ_{r=1}^{10} κ^r/r) / κ^11, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.96875: partial fractions, K_10 = (ln(1 + λ) − Σ_{r=1}^{10} κ^r/r) / κ^11 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.10000000000000001);
     partial = partial * kappa + T(0.1111111111111111);
     partial = partial * kappa + T(0.125);
@@ -2540,18 +2879,17 @@ bool scalis_segment_compact_i10_grad(const ScalisCompactSupport<T>& in, ScalisCo
     const T kappa_power_3 = kappa_power_1 * kappa_power_sq3;
     const T kappa_power = kappa_power_3;
     k10 = (ell - partial) / kappa_power;
+    k9 = T(0.10000000000000001) - zeta * k10;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k9 = T(0.10000000000000001) - zeta * k10;
-  const T k8 = T(0.011111111111111112) - zeta * k9;
-  const T k7 = T(0.0027777777777777779) - zeta * k8;
-  const T k6 = T(0.0011904761904761906) - zeta * k7;
-  const T k5 = T(0.00079365079365079365) - zeta * k6;
-  const T k4 = T(0.00079365079365079365) - zeta * k5;
-  const T k3 = T(0.0011904761904761906) - zeta * k4;
-  const T k2 = T(0.0027777777777777779) - zeta * k3;
-  const T k1 = T(0.011111111111111112) - zeta * k2;
-  const T k0 = T(0.10000000000000001) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -2576,7 +2914,6 @@ bool scalis_segment_compact_i10_grad(const ScalisCompactSupport<T>& in, ScalisCo
   const T qp4_7 = qp3_5 * in.b2 + qp3_6 * q1;
   const T qp4_8 = qp3_6 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
@@ -2661,8 +2998,8 @@ bool scalis_segment_compact_i10_grad(const ScalisCompactSupport<T>& in, ScalisCo
 
 /// f, g0 and g1 of the compact SCALIS segment of degree 10 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 141 +, 209 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 143 +, 211 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 211 +, 301 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// Operations here: 141 +, 210 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 143 +, 211 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it: 211 +, 302 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i10_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -2671,127 +3008,172 @@ bool scalis_segment_compact_i10_f_and_grad(const ScalisCompactSupport<T>& in, Sc
   const T inv_tau_hi = T(1) / in.tau_hi;
   const T zeta = in.tau_lo * inv_tau_hi;
   const T kappa = in.rise * inv_tau_hi;
-  T k10;  // ∫_0^1 y^10/(1 − κ y) dy
+  const T inv_tau_lo = T(1) / in.tau_lo;
+  T k0, k1, k2, k3, k4, k5, k6, k7, k8, k9, k10;  // K_k = ∫_0^1 y^k (1 − y)^(i−k)/(1 − κ y) dy
   if (kappa <= T(0.5)) {
-    // κ ≤ 0.5: Chebyshev interpolant of degree 25 (bound 6.2e-18 relative)
+    // κ ≤ 0.5: K_6 by a Chebyshev interpolant of degree 25 (bound 6.2e-18 relative), the others by the recurrence (amplification ≤ 1.20)
     const T s = (kappa - T(0.25)) * T(4);
-    k10 = T(7.2123458108399468e-14);
-    k10 = k10 * s + T(2.2277895983518176e-13);
-    k10 = k10 * s + T(2.1993473231832583e-13);
-    k10 = k10 * s + T(6.8320642565553663e-13);
-    k10 = k10 * s + T(3.4726997490848396e-12);
-    k10 = k10 * s + T(1.0780560681693967e-11);
-    k10 = k10 * s + T(3.1251352159829163e-11);
-    k10 = k10 * s + T(9.7312501814678243e-11);
-    k10 = k10 * s + T(3.0588778014735944e-10);
-    k10 = k10 * s + T(9.55249981181031e-10);
-    k10 = k10 * s + T(2.9863341059189124e-09);
-    k10 = k10 * s + T(9.3585432964878751e-09);
-    k10 = k10 * s + T(2.9386578761595445e-08);
-    k10 = k10 * s + T(9.2472999420316324e-08);
-    k10 = k10 * s + T(2.9168321333781086e-07);
-    k10 = k10 * s + T(9.2245719933286798e-07);
-    k10 = k10 * s + T(2.9257889519882501e-06);
-    k10 = k10 * s + T(9.3099449055394907e-06);
-    k10 = k10 * s + T(2.9732422326875676e-05);
-    k10 = k10 * s + T(9.5344854530398794e-05);
-    k10 = k10 * s + T(0.00030718120767170981);
-    k10 = k10 * s + T(0.00099499995409572722);
-    k10 = k10 * s + T(0.0032430511594999899);
-    k10 = k10 * s + T(0.010647614974588321);
-    k10 = k10 * s + T(0.035262434541272314);
-    k10 = k10 * s + T(0.11800644534473281);
+    k6 = T(5.0899078530700703e-19);
+    k6 = k6 * s + T(1.7841847494731205e-18);
+    k6 = k6 * s + T(2.97721921969493e-18);
+    k6 = k6 * s + T(1.0666052204498233e-17);
+    k6 = k6 * s + T(4.796241738009341e-17);
+    k6 = k6 * s + T(1.7288358184307535e-16);
+    k6 = k6 * s + T(6.1159764114004822e-16);
+    k6 = k6 * s + T(2.2390524657363444e-15);
+    k6 = k6 * s + T(8.2812720675389293e-15);
+    k6 = k6 * s + T(3.0832111143624047e-14);
+    k6 = k6 * s + T(1.1588460388184046e-13);
+    k6 = k6 * s + T(4.4019245130526225e-13);
+    k6 = k6 * s + T(1.6913727986558849e-12);
+    k6 = k6 * s + T(6.5812970033641481e-12);
+    k6 = k6 * s + T(2.5967922895680051e-11);
+    k6 = k6 * s + T(1.0406083066336207e-10);
+    k6 = k6 * s + T(4.242755507941763e-10);
+    k6 = k6 * s + T(1.7637986811822181e-09);
+    k6 = k6 * s + T(7.4954835694889044e-09);
+    k6 = k6 * s + T(3.2661602337832107e-08);
+    k6 = k6 * s + T(1.4648530579276167e-07);
+    k6 = k6 * s + T(6.7933801948552803e-07);
+    k6 = k6 * s + T(3.2767490463740181e-06);
+    k6 = k6 * s + T(1.6561362803101014e-05);
+    k6 = k6 * s + T(8.856332704306346e-05);
+    k6 = k6 * s + T(0.00050761970449972587);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k7 = (T(0.0011904761904761906) - k6) * inv_zeta;
+    k8 = (T(0.0027777777777777779) - k7) * inv_zeta;
+    k9 = (T(0.011111111111111112) - k8) * inv_zeta;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.75)) {
-    // κ ≤ 0.75: Chebyshev interpolant of degree 25 (bound 1.2e-17 relative)
+    // κ ≤ 0.75: K_7 by a Chebyshev interpolant of degree 25 (bound 1.2e-17 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.625)) * T(8);
-    k10 = T(8.1785256139983424e-14);
-    k10 = k10 * s + T(2.5362508233900457e-13);
-    k10 = k10 * s + T(2.5580980733716078e-13);
-    k10 = k10 * s + T(7.9905034847365458e-13);
-    k10 = k10 * s + T(4.0283335696114956e-12);
-    k10 = k10 * s + T(1.2574942571025731e-11);
-    k10 = k10 * s + T(3.6760343676661718e-11);
-    k10 = k10 * s + T(1.1522510350395132e-10);
-    k10 = k10 * s + T(3.6465287015411878e-10);
-    k10 = k10 * s + T(1.1476405292239156e-09);
-    k10 = k10 * s + T(3.6184636039466824e-09);
-    k10 = k10 * s + T(1.1445342119811117e-08);
-    k10 = k10 * s + T(3.6308592377939517e-08);
-    k10 = k10 * s + T(1.1555435062061096e-07);
-    k10 = k10 * s + T(3.6909803086656022e-07);
-    k10 = k10 * s + T(1.183801975522368e-06);
-    k10 = k10 * s + T(3.8145301230786819e-06);
-    k10 = k10 * s + T(1.235727642043341e-05);
-    k10 = k10 * s + T(4.0279736974231273e-05);
-    k10 = k10 * s + T(0.00013224636308903622);
-    k10 = k10 * s + T(0.00043790912544887709);
-    k10 = k10 * s + T(0.0014649388375577929);
-    k10 = k10 * s + T(0.0049619039534007049);
-    k10 = k10 * s + T(0.017066748999637362);
-    k10 = k10 * s + T(0.059851783241042941);
-    k10 = k10 * s + T(0.21521888640558653);
+    k7 = T(1.0994938032750566e-18);
+    k7 = k7 * s + T(3.792948289164676e-18);
+    k7 = k7 * s + T(6.0040938299249478e-18);
+    k7 = k7 * s + T(2.1189805028971133e-17);
+    k7 = k7 * s + T(9.5815754760700915e-17);
+    k7 = k7 * s + T(3.4012059140543847e-16);
+    k7 = k7 * s + T(1.1817595642785977e-15);
+    k7 = k7 * s + T(4.2644575470006305e-15);
+    k7 = k7 * s + T(1.5559969542381992e-14);
+    k7 = k7 * s + T(5.7172419847813425e-14);
+    k7 = k7 * s + T(2.1225397437488001e-13);
+    k7 = k7 * s + T(7.9727619404016817e-13);
+    k7 = k7 * s + T(3.0334764047742705e-12);
+    k7 = k7 * s + T(1.170826514980819e-11);
+    k7 = k7 * s + T(4.5922429144619581e-11);
+    k7 = k7 * s + T(1.8341503576071953e-10);
+    k7 = k7 * s + T(7.4781304903788345e-10);
+    k7 = k7 * s + T(3.1216654300821822e-09);
+    k7 = k7 * s + T(1.3389870358633612e-08);
+    k7 = k7 * s + T(5.9275388842712806e-08);
+    k7 = k7 * s + T(2.72296183538035e-07);
+    k7 = k7 * s + T(1.3068366641908199e-06);
+    k7 = k7 * s + T(6.6086982120895828e-06);
+    k7 = k7 * s + T(3.5597552475921164e-05);
+    k7 = k7 * s + T(0.00020707596983161807);
+    k7 = k7 * s + T(0.0013241776483165083);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k8 = (T(0.0027777777777777779) - k7) * inv_zeta;
+    k9 = (T(0.011111111111111112) - k8) * inv_zeta;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.875)) {
-    // κ ≤ 0.875: Chebyshev interpolant of degree 26 (bound 4.4e-18 relative)
+    // κ ≤ 0.875: K_9 by a Chebyshev interpolant of degree 26 (bound 4.4e-18 relative), the others by the recurrence (amplification ≤ 1.31)
     const T s = (kappa - T(0.8125)) * T(16);
-    k10 = T(2.904533526958691e-14);
-    k10 = k10 * s + T(9.0182727431353228e-14);
-    k10 = k10 * s + T(8.4295578018090214e-14);
-    k10 = k10 * s + T(2.6394629713333858e-13);
-    k10 = k10 * s + T(1.4161335950832043e-12);
-    k10 = k10 * s + T(4.4285267270583707e-12);
-    k10 = k10 * s + T(1.2840453810829876e-11);
-    k10 = k10 * s + T(4.0341301981334704e-11);
-    k10 = k10 * s + T(1.2820175537233089e-10);
-    k10 = k10 * s + T(4.0459034327953513e-10);
-    k10 = k10 * s + T(1.2793472272845042e-09);
-    k10 = k10 * s + T(4.0604098226783704e-09);
-    k10 = k10 * s + T(1.2930325687197256e-08);
-    k10 = k10 * s + T(4.1328669779143312e-08);
-    k10 = k10 * s + T(1.326553099796016e-07);
-    k10 = k10 * s + T(4.2784515102895253e-07);
-    k10 = k10 * s + T(1.3875528369287791e-06);
-    k10 = k10 * s + T(4.5289768146906251e-06);
-    k10 = k10 * s + T(1.4894417251877287e-05);
-    k10 = k10 * s + T(4.9424069455810264e-05);
-    k10 = k10 * s + T(0.00016578633016107593);
-    k10 = k10 * s + T(0.00056353375294765037);
-    k10 = k10 * s + T(0.0019475951638387166);
-    k10 = k10 * s + T(0.0068754225484226848);
-    k10 = k10 * s + T(0.024957777938777528);
-    k10 = k10 * s + T(0.094072962614130173);
-    k10 = k10 * s + T(0.37367134721360373);
+    k9 = T(1.9042010141203112e-16);
+    k9 = k9 * s + T(6.1271304960888572e-16);
+    k9 = k9 * s + T(6.9122269244174511e-16);
+    k9 = k9 * s + T(2.2579165296283598e-15);
+    k9 = k9 * s + T(1.1257871363047337e-14);
+    k9 = k9 * s + T(3.6765762408939754e-14);
+    k9 = k9 * s + T(1.137462843028172e-13);
+    k9 = k9 * s + T(3.7490312341901873e-13);
+    k9 = k9 * s + T(1.2490673226589047e-12);
+    k9 = k9 * s + T(4.1558070297349924e-12);
+    k9 = k9 * s + T(1.3898008801553609e-11);
+    k9 = k9 * s + T(4.6787592754166504e-11);
+    k9 = k9 * s + T(1.5860579484697153e-10);
+    k9 = k9 * s + T(5.4184288548952899e-10);
+    k9 = k9 * s + T(1.8674513181342349e-09);
+    k9 = k9 * s + T(6.501083514996418e-09);
+    k9 = k9 * s + T(2.2894893994017999e-08);
+    k9 = k9 * s + T(8.1717925992874693e-08);
+    k9 = k9 * s + T(2.9630110626115001e-07);
+    k9 = k9 * s + T(1.0946326120493464e-06);
+    k9 = k9 * s + T(4.1359226540264087e-06);
+    k9 = k9 * s + T(1.6062119062238543e-05);
+    k9 = k9 * s + T(6.4539816056658446e-05);
+    k9 = k9 * s + T(0.00027071939334434201);
+    k9 = k9 * s + T(0.0011999767998623493);
+    k9 = k9 * s + T(0.0057157787107008267);
+    k9 = k9 * s + T(0.029936622397449299);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.9375)) {
-    // κ ≤ 0.9375: Chebyshev interpolant of degree 26 (bound 8.8e-18 relative)
+    // κ ≤ 0.9375: K_9 by a Chebyshev interpolant of degree 26 (bound 8.8e-18 relative), the others by the recurrence (amplification ≤ 1.02)
     const T s = (kappa - T(0.90625)) * T(32);
-    k10 = T(3.0121596471557811e-14);
-    k10 = k10 * s + T(9.3649380418993128e-14);
-    k10 = k10 * s + T(8.8226394340340178e-14);
-    k10 = k10 * s + T(2.7680528537837444e-13);
-    k10 = k10 * s + T(1.4801490455250787e-12);
-    k10 = k10 * s + T(4.637910716860737e-12);
-    k10 = k10 * s + T(1.3489704348900477e-11);
-    k10 = k10 * s + T(4.2485279964515311e-11);
-    k10 = k10 * s + T(1.3535930360137297e-10);
-    k10 = k10 * s + T(4.2846012009633191e-10);
-    k10 = k10 * s + T(1.3593829623478383e-09);
-    k10 = k10 * s + T(4.3306436875262766e-09);
-    k10 = k10 * s + T(1.3849454354432674e-08);
-    k10 = k10 * s + T(4.4480664069334138e-08);
-    k10 = k10 * s + T(1.4356641116483027e-07);
-    k10 = k10 * s + T(4.6602419816322856e-07);
-    k10 = k10 * s + T(1.5228196402126255e-06);
-    k10 = k10 * s + T(5.0152557255524318e-06);
-    k10 = k10 * s + T(1.6672983470264779e-05);
-    k10 = k10 * s + T(5.606517353889674e-05);
-    k10 = k10 * s + T(0.00019121680223706919);
-    k10 = k10 * s + T(0.00066400150063765546);
-    k10 = k10 * s + T(0.0023604683470597547);
-    k10 = k10 * s + T(0.0086605285811521531);
-    k10 = k10 * s + T(0.033209169124995989);
-    k10 = k10 * s + T(0.13578531219214904);
-    k10 = k10 * s + T(0.61171751028130406);
+    k9 = T(1.0264346888499029e-16);
+    k9 = k9 * s + T(3.3121966457425093e-16);
+    k9 = k9 * s + T(3.7894069866730926e-16);
+    k9 = k9 * s + T(1.2428394012784284e-15);
+    k9 = k9 * s + T(6.1707368839219138e-15);
+    k9 = k9 * s + T(2.0238816336965879e-14);
+    k9 = k9 * s + T(6.3005216181683695e-14);
+    k9 = k9 * s + T(2.0876131761253421e-13);
+    k9 = k9 * s + T(6.9944404038165502e-13);
+    k9 = k9 * s + T(2.3422901728704589e-12);
+    k9 = k9 * s + T(7.8904625150862995e-12);
+    k9 = k9 * s + T(2.6781569518209242e-11);
+    k9 = k9 * s + T(9.1634406438628503e-11);
+    k9 = k9 * s + T(3.1639410490795405e-10);
+    k9 = k9 * s + T(1.103905145898055e-09);
+    k9 = k9 * s + T(3.8983436361591358e-09);
+    k9 = k9 * s + T(1.396240015357984e-08);
+    k9 = k9 * s + T(5.0850509437109038e-08);
+    k9 = k9 * s + T(1.8894447275319995e-07);
+    k9 = k9 * s + T(7.1941505060911548e-07);
+    k9 = k9 * s + T(2.8234716852014975e-06);
+    k9 = k9 * s + T(1.1514495160838788e-05);
+    k9 = k9 * s + T(4.934761062415277e-05);
+    k9 = k9 * s + T(0.00022586198067311018);
+    k9 = k9 * s + T(0.0011299314005362834);
+    k9 = k9 * s + T(0.0063862991782767812);
+    k9 = k9 * s + T(0.04265148341112774);
+    const T inv_zeta = in.tau_hi * inv_tau_lo;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
+    k10 = (T(0.10000000000000001) - k9) * inv_zeta;
   } else if (kappa <= T(0.96875)) {
-    // κ ≤ 0.96875: Chebyshev interpolant of degree 27 (bound 3.1e-18 relative)
+    // κ ≤ 0.96875: K_10 by a Chebyshev interpolant of degree 27 (bound 3.1e-18 relative), the others by the recurrence (amplification ≤ 1.00)
     const T s = (kappa - T(0.953125)) * T(64);
     k10 = T(1.0149195935767546e-14);
     k10 = k10 * s + T(3.153428976708831e-14);
@@ -2821,9 +3203,19 @@ bool scalis_segment_compact_i10_f_and_grad(const ScalisCompactSupport<T>& in, Sc
     k10 = k10 * s + T(0.040565931269147468);
     k10 = k10 * s + T(0.18017229135625998);
     k10 = k10 * s + T(0.94025668732740675);
+    k9 = T(0.10000000000000001) - zeta * k10;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
   } else {
-    // κ > 0.96875: partial fractions, (ln(1 + λ) − Σ_{r=1}^{10} κ^r/r) / κ^11, bound 1e-14 with A(κ)
-    const T ell = log(in.tau_hi / in.tau_lo);
+    // κ > 0.96875: partial fractions, K_10 = (ln(1 + λ) − Σ_{r=1}^{10} κ^r/r) / κ^11 (bound 1e-14 with the recurrence)
+    const T ell = log(in.tau_hi * inv_tau_lo);
     T partial = T(0.10000000000000001);
     partial = partial * kappa + T(0.1111111111111111);
     partial = partial * kappa + T(0.125);
@@ -2842,18 +3234,17 @@ bool scalis_segment_compact_i10_f_and_grad(const ScalisCompactSupport<T>& in, Sc
     const T kappa_power_3 = kappa_power_1 * kappa_power_sq3;
     const T kappa_power = kappa_power_3;
     k10 = (ell - partial) / kappa_power;
+    k9 = T(0.10000000000000001) - zeta * k10;
+    k8 = T(0.011111111111111112) - zeta * k9;
+    k7 = T(0.0027777777777777779) - zeta * k8;
+    k6 = T(0.0011904761904761906) - zeta * k7;
+    k5 = T(0.00079365079365079365) - zeta * k6;
+    k4 = T(0.00079365079365079365) - zeta * k5;
+    k3 = T(0.0011904761904761906) - zeta * k4;
+    k2 = T(0.0027777777777777779) - zeta * k3;
+    k1 = T(0.011111111111111112) - zeta * k2;
+    k0 = T(0.10000000000000001) - zeta * k1;
   }
-  // K_k = β_k − ζ K_(k+1), β_k = k!(i−1−k)!/i!
-  const T k9 = T(0.10000000000000001) - zeta * k10;
-  const T k8 = T(0.011111111111111112) - zeta * k9;
-  const T k7 = T(0.0027777777777777779) - zeta * k8;
-  const T k6 = T(0.0011904761904761906) - zeta * k7;
-  const T k5 = T(0.00079365079365079365) - zeta * k6;
-  const T k4 = T(0.00079365079365079365) - zeta * k5;
-  const T k3 = T(0.0011904761904761906) - zeta * k4;
-  const T k2 = T(0.0027777777777777779) - zeta * k3;
-  const T k1 = T(0.011111111111111112) - zeta * k2;
-  const T k0 = T(0.10000000000000001) - zeta * k1;
   // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
   const T q1 = in.b1 + in.b1;
   const T qp2_0 = in.b0 * in.b0;
@@ -2878,7 +3269,6 @@ bool scalis_segment_compact_i10_f_and_grad(const ScalisCompactSupport<T>& in, Sc
   const T qp4_7 = qp3_5 * in.b2 + qp3_6 * q1;
   const T qp4_8 = qp3_6 * in.b2;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
-  const T inv_tau_lo = T(1) / in.tau_lo;
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
   const T inv_tau_lo_power_sq2 = inv_tau_lo_power_sq1 * inv_tau_lo_power_sq1;
