@@ -1,6 +1,7 @@
 // bench/scalis_compact_opcounts.cpp — operation counts of the compact SCALIS
-// segment (include/skelconv/primitives/scalis_compact.hpp), the one SCALIS family that
-// is hand-written rather than generated (its rows of docs/mathematics.md §4's Table 4).
+// segment (include/skelconv/primitives/scalis_compact.hpp) as executed: the
+// support by hand-written code, the integral by the generated closed form
+// (even degrees; generated/opcounts.csv has those rows) or by Gauss panels.
 //
 //   skelconv_scalis_compact_opcounts [--points N]
 //

@@ -13,6 +13,7 @@
 #include <skelconv/detail/polygon_angle_integrals.hpp>
 #include <skelconv/detail/stable_recurrence.hpp>
 #include <skelconv/detail/support_gap.hpp>
+#include <skelconv/primitives/scalis_compact_support.hpp>
 
 #include "tools/counting_scalar.hpp"  // the same counting scalar the benchmarks use
 
@@ -197,6 +198,27 @@ OpCount exact_cross() {
   return tally_of([&] {
     segment_exact_cross<Counted>(Counted(0.1), Counted(0.2), Counted(0.3), Counted(1.1), Counted(0.7), Counted(0.4),
                                  Counted(0.6), Counted(0.45), Counted(0.35), cross);
+  });
+}
+
+OpCount scalis_compact_around_closed_form(int degree, bool with_grad) {
+  // A = 0, B = (1, 0, 0), τ 0.5 → 0.6, σ = 2, P = (0.4, 0.3, 0.1): Q(0) and
+  // Q(1) > 0, so the support is the whole segment.
+  ScalisSegmentInput<Counted> in;
+  in.a = {Counted(0), Counted(0), Counted(0)};
+  in.b = {Counted(1), Counted(0), Counted(0)};
+  in.p = {Counted(0.4), Counted(0.3), Counted(0.1)};
+  in.tau0 = Counted(0.5);
+  in.tau1 = Counted(0.6);
+  in.sigma = Counted(2);
+  return tally_of([&] {
+    using namespace scalis_compact_detail;
+    const Prepared<Counted> pr = prepare(degree, in);
+    if (pr.done || pr.support.root_at_t1 >= 0 || pr.support.root_at_t2 >= 0)
+      throw std::logic_error("scalis_compact_around_closed_form: the sample point is not generic");
+    (void)closed_form_input(pr);
+    std::array<Counted, 3> grad;
+    (void)finish(pr, Sums<Counted>{Counted(1), Counted(1), Counted(1)}, with_grad ? &grad : nullptr);
   });
 }
 

@@ -16,6 +16,7 @@ struct GeneratorRequest {
   std::vector<SegmentKernelSpec> segment_kernels;
   std::vector<PolygonKernelSpec> polygon_kernels;        ///< docs/mathematics.md §3 (polygon_writer.cpp)
   std::vector<ScalisKernelSpec> scalis_segment_kernels;  ///< docs/mathematics.md §4 (scalis_segment_writer.cpp)
+  std::vector<int> scalis_compact_degrees;  ///< even; docs/mathematics.md §4 (scalis_compact_writer.cpp)
   std::string command_line;  ///< recorded in every file header (without --out)
 };
 
@@ -47,8 +48,10 @@ void write_file(const std::filesystem::path& path, const std::string& text);
 /// polygon_table.hpp; returns their rows of opcounts.csv.
 std::string write_polygon_files(const GeneratorRequest& request, const std::filesystem::path& folder);
 
-/// Writes generated/scalis_segment_{inverse,cauchy}.hpp and
-/// scalis_segment_table.hpp; returns their rows of opcounts.csv.
+/// Writes generated/scalis_segment_{inverse,cauchy}.hpp,
+/// scalis_segment_table.hpp and (write_scalis_compact_file)
+/// scalis_segment_compact.hpp; returns their rows of opcounts.csv.
 std::string write_scalis_segment_files(const GeneratorRequest& request, const std::filesystem::path& folder);
+std::string write_scalis_compact_file(const GeneratorRequest& request, const std::filesystem::path& folder);
 
 }  // namespace skelconv::codegen

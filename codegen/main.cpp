@@ -5,6 +5,7 @@
 //                    [--compact 2:16] [--weights 0:3] [--polygon-inverse 3:12]
 //                    [--polygon-cauchy 3:12] [--polygon-compact 4:12]
 //                    [--scalis-inverse 2:10] [--scalis-cauchy 2:10]
+//                    [--scalis-compact 2:10]
 #include <CLI/CLI.hpp>
 
 #include <sys/personality.h>
@@ -70,6 +71,10 @@ int main(int argc, char** argv) {
   std::string scalis_inverse = "2:10", scalis_cauchy = "2:10";
   app.add_option("--scalis-inverse", scalis_inverse, "SCALIS inverse segment degrees i (i ≥ 2)")->capture_default_str();
   app.add_option("--scalis-cauchy", scalis_cauchy, "SCALIS Cauchy segment degrees i (i ≥ 2)")->capture_default_str();
+  // Compact SCALIS segments: closed forms for the even degrees of the range.
+  std::string scalis_compact = "2:10";
+  app.add_option("--scalis-compact", scalis_compact, "SCALIS compact segment degrees i (even i ≥ 2; odd ones skipped)")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -77,7 +82,7 @@ int main(int argc, char** argv) {
     request.command_line = "skelconv-codegen --inverse " + inverse + " --cauchy " + cauchy + " --compact " + compact +
                            " --weights " + weights + " --polygon-inverse " + polygon_inverse + " --polygon-cauchy " +
                            polygon_cauchy + " --polygon-compact " + polygon_compact + " --scalis-inverse " +
-                           scalis_inverse + " --scalis-cauchy " + scalis_cauchy;
+                           scalis_inverse + " --scalis-cauchy " + scalis_cauchy;  // TEMP
     const DegreeRange w = parse_range(weights, "--weights");
     if (w.last > skelconv::max_weight_degree)
       throw CLI::ValidationError("--weights", "SegmentInput holds weights up to degree " +
@@ -116,6 +121,13 @@ int main(int argc, char** argv) {
       const DegreeRange range = parse_range(text, option);
       if (range.last >= range.first && range.first < 2) throw CLI::ValidationError(option, "SCALIS degrees start at 2");
       for (int i = range.first; i <= range.last; ++i) request.scalis_segment_kernels.push_back({family, i});
+    }
+    {
+      const DegreeRange range = parse_range(scalis_compact, "--scalis-compact");
+      if (range.last >= range.first && range.first < 2)
+        throw CLI::ValidationError("--scalis-compact", "SCALIS degrees start at 2");
+      for (int i = range.first; i <= range.last; ++i)
+        if (i % 2 == 0) request.scalis_compact_degrees.push_back(i);
     }
     skelconv::codegen::write_generated_folder(request, out);
     // After the C++ files (glsl_writer.hpp says why): the shader target.

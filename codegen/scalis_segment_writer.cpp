@@ -1,6 +1,7 @@
 // codegen/scalis_segment_writer.cpp — writes the SCALIS segment kernels
 // (docs/mathematics.md §4): generated/scalis_segment_{inverse,cauchy}.hpp and
-// generated/scalis_segment_table.hpp. See kernel_writer.hpp.
+// generated/scalis_segment_table.hpp, and through scalis_compact_writer.cpp
+// the compact family's closed forms. See kernel_writer.hpp.
 #include <map>
 #include <sstream>
 
@@ -31,7 +32,8 @@ struct EmittedScalisKernel {
 }  // namespace
 
 std::string write_scalis_segment_files(const GeneratorRequest& request, const std::filesystem::path& folder) {
-  if (request.scalis_segment_kernels.empty()) return "";
+  const std::string compact_rows = request.scalis_compact_degrees.empty() ? "" : write_scalis_compact_file(request, folder);
+  if (request.scalis_segment_kernels.empty()) return compact_rows;
   std::vector<EmittedScalisKernel> kernels;
   std::map<KernelFamily, std::string> family_bodies;
   for (const ScalisKernelSpec& spec : request.scalis_segment_kernels) {
@@ -106,7 +108,7 @@ std::string write_scalis_segment_files(const GeneratorRequest& request, const st
     for (int which = 0; which < 3; ++which)
       csv << opcount_csv_row(k.spec.name(), scalis_family_name(k.spec.family), k.spec.degree, k.spec.degree - 1,
                              which, k.ops[which], k.ops_longest[which]);
-  return csv.str();
+  return csv.str() + compact_rows;
 }
 
 }  // namespace skelconv::codegen

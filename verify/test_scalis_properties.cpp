@@ -345,6 +345,80 @@ TEST_P(ScalisProperties, NearBoundaryAndNearTip) {
   }
 }
 
+// ------------------------------------------- compact: closed-form regions
+
+/// Even degrees take the generated closed forms (generated/scalis_segment_compact.hpp,
+/// codegen/scalis_compact_writer.cpp) wherever they are proven accurate;
+/// these are the places where their forms change or could cancel, against
+/// the reference at the generic targets:
+///   * Δτ near 0 (τ1 = τ0 (1 + δ), δ ∈ [1e-12, 1e-3]): λ = Δτ w/τ → 0, where
+///     partial fractions would cancel completely;
+///   * α = 0 exactly (σΔτ = |AB|, Q linear: one root) and near it
+///     (σΔτ = |AB| (1 ± δ), δ ∈ [1e-10, 1e-3]);
+///   * strong taper (τ_small/τ_large ∈ [1e-6, 1e-1], P near the thin end):
+///     κ = Δτ w/τ(t2) across every piece of the interpolants and into the
+///     partial-fraction form with its logarithm.
+/// Each region must also have taken the closed form at some of its points
+/// (counted by calling it as scalis_compact_F does): otherwise it would
+/// check only the panels.
+TEST(ScalisCompact, ClosedFormRegions) {
+  ScalisReferenceIntegrator reference(reference_tolerances);
+  const char* names[] = {"dtau near 0", "alpha = 0", "alpha near 0", "strong taper"};
+  for (int degree = 2; degree <= 10; degree += 2)
+    for (int region = 0; region < 4; ++region) {
+      ErrorSummary summary;
+      int closed = 0;
+      for (int k = 0; k < 60; ++k) {
+        DeterministicRandom rng(splitmix64(9300007ULL * degree + 1000 * region + k));
+        ScalisSegmentInput<double> in;
+        in.sigma = rng.log_uniform(1.05, 4.0);
+        if (region == 1) {
+          // Dyadic inputs: |AB| = 1, σ = 2, Δτ = 1/2 make α = (σΔτ − |AB|)(σΔτ + |AB|) exactly 0.
+          in.a = {0.25 * std::floor(8 * rng.uniform01()), 0.125, -0.5};
+          in.b = {in.a[0] + 1, in.a[1], in.a[2]};
+          in.sigma = 2;
+          in.tau0 = std::ldexp(std::floor(1 + 63 * rng.uniform01()), -7);
+          in.tau1 = in.tau0 + 0.5;
+        } else {
+          in = random_segment(rng, Radii::growing, in.sigma, in.sigma);
+          const double length = norm(sub(in.b, in.a));
+          if (region == 0) in.tau1 = in.tau0 * (1 + rng.log_uniform(1e-12, 1e-3));
+          if (region == 2) {
+            const double delta = rng.log_uniform(1e-10, 1e-3) * (k % 2 ? 1 : -1);
+            in.tau1 = in.tau0 + length / in.sigma * (1 + delta);
+          }
+          if (region == 3) in.tau0 = in.tau1 * rng.log_uniform(1e-6, 1e-1);
+        }
+        if (k % 2) std::swap(in.tau0, in.tau1);  // both orientations
+        if (region == 3) {
+          // Near the thin end, inside the support.
+          const double t = in.tau0 < in.tau1 ? rng.uniform(0, 0.1) : rng.uniform(0.9, 1);
+          in.p = axpy(in.sigma * tau_at(in, t) * rng.uniform(0.05, 0.97), rng.unit_vector(), point_on(in, t));
+        } else {
+          ASSERT_TRUE(point_within_reach(rng, in));
+        }
+        std::array<double, 3> g;
+        const double F = scalis_compact_F(degree, in, &g);
+        const ScalisReference ref = reference.evaluate({KernelFamily::compact, degree}, widen(in));
+        if (ref.empty) continue;
+        summary.add(F, g, ref);
+        const auto prepared = scalis_compact_detail::prepare(degree, in);
+        ScalisCompactIntegrals<double> integrals{};
+        if (!prepared.done &&
+            generated::scalis_segment_compact_closed_form(degree, 2, scalis_compact_detail::closed_form_input(prepared),
+                                                          integrals))
+          ++closed;
+      }
+      std::printf("[compact i=%d %s] %s, closed form at %d\n", degree, names[region], summary.str().c_str(), closed);
+      const std::string where = std::string(names[region]) + ", i=" + std::to_string(degree);
+      EXPECT_GT(summary.points, 0) << where;
+      EXPECT_GT(closed, 0) << where;
+      EXPECT_EQ(summary.nonfinite, 0) << where;
+      EXPECT_LE(summary.f, generic_f_tolerance) << where;
+      EXPECT_LE(summary.grad, generic_tolerance) << where;
+    }
+}
+
 // ---------------------------------------------------------- scale invariance
 
 /// The larger deviation, NaN counted as the worst: std::max(worst, NaN)

@@ -52,7 +52,7 @@ def correct(ctx, primitives):
 # graph nodes that need one (free ends of non-zero radius and nodes of maximal radius), mixed
 # with each other by a symmetric Barthe blend "set to limit their blend", and the result mixed
 # with the SCALIS surfaces by an asymmetric Barthe blend. The text gives neither the Barthe
-# operators (SPEC §6) nor their parameters, nor how the points' influence is chosen beyond
+# operators (docs/mathematics.md §6) nor their parameters, nor how the points' influence is chosen beyond
 # "from the radius variations of the segments leaving the node" (Figure 13). Built here with
 # what skelconv has of that family: Rockwood's super-elliptic blend (a Barthe blend's special
 # case, docs/cli_blends.md), exponent BLEND_T, and band widths (in field units, level 1) that

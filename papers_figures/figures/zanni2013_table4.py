@@ -24,7 +24,7 @@ ROOT = os.path.dirname(HERE)
 OPCOUNTS = os.path.join(ROOT, "generated", "opcounts.csv")
 COMPACT_MEASURED = os.path.join(ROOT, "bench", "results", "scalis_compact_opcounts.md")
 sys.path.insert(0, os.path.join(ROOT, "bench"))
-from summarize import OUTPUTS, PAPER_TABLE4, fmt_ops  # noqa: E402  (the paper's Table 4, SPEC §4: one copy)
+from summarize import OUTPUTS, PAPER_TABLE4, fmt_ops  # noqa: E402  (the paper's Table 4, docs/mathematics.md §4: one copy)
 
 CALLS = ("add", "mul", "div", "sqrt", "atan", "log")
 CONVENTION = (
