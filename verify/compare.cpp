@@ -152,7 +152,8 @@ void write_comparison(std::ostream& out, const Comparison& comparison, const Swe
         << " cells, not in BASE)\n";
   out << "\ncompare: " << comparison.cells.size() << " cells compared, " << comparison.failed_cells() << " worse, "
       << comparison.removed.size() << " disappeared, " << comparison.added.size() << " new: "
-      << (comparison.passed() ? "PASSED" : "FAILED") << '\n';
+      << (comparison.passed() ? "PASSED" : "FAILED") << (comparison.cells.empty() ? " (no cell in both reports)" : "")
+      << '\n';
 }
 
 }  // namespace skelconv::verify

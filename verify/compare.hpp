@@ -55,7 +55,8 @@ struct Comparison {
   std::vector<CellKey> removed;       ///< only in BASE: a failure
   double double_floor = 0, extended_floor = 0, tolerance_factor = 0;
   std::size_t failed_cells() const;
-  bool passed() const { return failed_cells() == 0 && removed.empty(); }
+  /// A comparison of no cell at all proves nothing: it fails.
+  bool passed() const { return !cells.empty() && failed_cells() == 0 && removed.empty(); }
 };
 
 /// Throws ReportError when the two reports did not sweep the same samples

@@ -97,6 +97,11 @@ TEST(Compare, LostComparisonsFail) {
   EXPECT_FALSE(compare_reports(base, report({{cauchy_generic, excluded_all}}), {}).passed());
 }
 
+TEST(Compare, NothingComparedFails) {
+  const SweepReport empty = report({});
+  EXPECT_FALSE(compare_reports(empty, empty, {}).passed());
+}
+
 TEST(Compare, RefusesDifferentSamples) {
   const SweepReport base = report({{cauchy_generic, cell(1e-14)}});
   SweepReport other = base;
