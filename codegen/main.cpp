@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     request.command_line = "skelconv-codegen --inverse " + inverse + " --cauchy " + cauchy + " --compact " + compact +
                            " --weights " + weights + " --polygon-inverse " + polygon_inverse + " --polygon-cauchy " +
                            polygon_cauchy + " --polygon-compact " + polygon_compact + " --scalis-inverse " +
-                           scalis_inverse + " --scalis-cauchy " + scalis_cauchy;  // TEMP
+                           scalis_inverse + " --scalis-cauchy " + scalis_cauchy + " --scalis-compact " + scalis_compact;
     const DegreeRange w = parse_range(weights, "--weights");
     if (w.last > skelconv::max_weight_degree)
       throw CLI::ValidationError("--weights", "SegmentInput holds weights up to degree " +

@@ -1,7 +1,7 @@
 // generated/glsl/segment_cauchy.glsl - segment kernels of the cauchy family in GLSL (float; ES 3.00 and 4.50), by a Gauss-Legendre rule.
 //
 // GENERATED FILE: DO NOT EDIT. Regenerate with
-//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
+//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --scalis-compact 2:10 --out generated
 // Generator: skelconv-codegen 0.1.0 (GiNaC 1.8.6)
 // From: codegen/segment_families.cpp (the families) and codegen/segment_moments.cpp
 // (recurrence (1) of Hubert & Cani unrolled; docs/mathematics.md sec. 2, Hubert 2012 sec. 3).

@@ -103,10 +103,10 @@
 //    from the nearer end of the segment (2.5e-13 at i = 10 before, a short
 //    support at an end), and the width between two roots is 2√disc/|α|.
 //    Cost (callgrind, F and ∇F, i = 4 or 6, P inside the support of a
-//    segment with τ 0.2 → 0.3): the closed form ~2,400 instructions, of
-//    which ~2,000 are the support (prepare, closed_form_input) and ~450 the
-//    generated form; the panels ~4,800 (one panel of 25 nodes for even i,
-//    two for odd i, more only near a cone tip). Operation counts:
+//    segment with τ 0.2 → 0.3): the closed form ~1,700 instructions, of
+//    which ~1,360 are the support (prepare, closed_form_input) and ~320–440
+//    the generated form; the panels ~4,100–4,250 (one panel of 25 nodes for
+//    even i, two for odd i, more only near a cone tip). Operation counts:
 //    generated/opcounts.csv, rows scalis_segment_compact_i*.
 #pragma once
 

@@ -26,6 +26,25 @@ namespace skelconv {
 
 namespace scalis_compact_detail {
 
+/// Multiplication by 2^−e, the scale of the frame: x · 2^−e is correctly
+/// rounded like ldexp(x, −e), so the two give the same bits, and the product
+/// avoids ldexp's library call (measured: ~40 instructions each, a third of
+/// the support's cost). 2^−e itself must be a finite T, which holds with a
+/// margin for e > min_exponent + 3 (−1018 in double); below, ldexp.
+template <class T>
+struct DownScale {
+  int e = 0;
+  T unit = T(1);  ///< 2^−e, or 0 where it is not finite
+  explicit DownScale(int exponent) : e(exponent) {
+    using std::ldexp;
+    unit = e > std::numeric_limits<T>::min_exponent + 3 ? ldexp(T(1), -e) : T(0);
+  }
+  T operator()(const T& x) const {
+    using std::ldexp;
+    return unit != T(0) ? x * unit : ldexp(x, -e);
+  }
+};
+
 /// Gauss–Legendre points for the precision of T (see the bound above).
 template <class T>
 constexpr unsigned gauss_points() {
@@ -241,10 +260,10 @@ SupportDepths<T> exact_support_depths(const std::array<T, 3>& A, const std::arra
 /// for degree 4, bench/results/scalis_compact_opcounts.md).
 template <class T>
 SupportDepths<T> support_depths(const std::array<T, 3>& A, const std::array<T, 3>& B, const std::array<T, 3>& P,
-                                const T& tau_a, const T& tau_b, const T& sigma, int e, const std::array<T, 3>& ab,
-                                const std::array<T, 3>& ap, const T& tau0, const T& dtau) {
+                                const T& tau_a, const T& tau_b, const T& sigma, const DownScale<T>& down,
+                                const std::array<T, 3>& ab, const std::array<T, 3>& ap, const T& tau0,
+                                const T& dtau) {
   using std::abs;
-  using std::ldexp;
   using std::sqrt;
   auto length = [](const std::array<T, 3>& v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
   bool shallow = false;
@@ -254,17 +273,17 @@ SupportDepths<T> support_depths(const std::array<T, 3>& A, const std::array<T, 3
   };
   std::array<T, 3> bp, w, x;
   for (int c = 0; c < 3; ++c) {
-    bp[c] = ldexp(P[c] - B[c], -e);
+    bp[c] = down(P[c] - B[c]);
     w[c] = dtau * ap[c] + tau0 * ab[c];
   }
   x = {ab[1] * ap[2] - ab[2] * ap[1], ab[2] * ap[0] - ab[0] * ap[2], ab[0] * ap[1] - ab[1] * ap[0]};
   SupportDepths<T> out;
   out.q_at_a = difference_of_squares(sigma * tau0, length(ap));
-  out.q_at_b = difference_of_squares(sigma * ldexp(tau_b, -e), length(bp));
+  out.q_at_b = difference_of_squares(sigma * down(tau_b), length(bp));
   out.disc = difference_of_squares(sigma * length(w), length(x));
   out.ab_bp = ab[0] * bp[0] + ab[1] * bp[1] + ab[2] * bp[2];
   if (!shallow) return out;
-  SupportDepths<T> exact = exact_support_depths(A, B, P, tau_a, tau_b, sigma, e);
+  SupportDepths<T> exact = exact_support_depths(A, B, P, tau_a, tau_b, sigma, down.e);
   exact.ab_bp = out.ab_bp;
   return exact;
 }
@@ -333,27 +352,29 @@ struct Scaled {
   const std::array<T, 3>* A;  ///< the caller's end at t = 0 after orienting
   const std::array<T, 3>* B;  ///< the caller's end at t = 1
   T tau_a, tau_b;             ///< the caller's radii at A and B
-  int e = 0;                  ///< the scale 2^−e
+  DownScale<T> down{0};       ///< the scale 2^−e
   std::array<T, 3> ab, ap;    ///< B − A and P − A, scaled
-  T tau0, dtau;               ///< τ(0) and τ(1) − τ(0), scaled
+  T tau0, tau1, dtau;         ///< τ(0), τ(1) and τ(1) − τ(0), scaled
 };
 template <class T>
 Scaled<T> orient_and_scale(const ScalisSegmentInput<T>& in) {
   using std::frexp;
-  using std::ldexp;
   const bool swap = in.tau1 < in.tau0;
   Scaled<T> s;
   s.A = swap ? &in.b : &in.a;
   s.B = swap ? &in.a : &in.b;
   s.tau_a = swap ? in.tau1 : in.tau0;
   s.tau_b = swap ? in.tau0 : in.tau1;
-  (void)frexp(s.tau_b, &s.e);
+  int e = 0;
+  (void)frexp(s.tau_b, &e);
+  s.down = DownScale<T>(e);
   for (int c = 0; c < 3; ++c) {
-    s.ab[c] = ldexp((*s.B)[c] - (*s.A)[c], -s.e);
-    s.ap[c] = ldexp(in.p[c] - (*s.A)[c], -s.e);
+    s.ab[c] = s.down((*s.B)[c] - (*s.A)[c]);
+    s.ap[c] = s.down(in.p[c] - (*s.A)[c]);
   }
-  s.tau0 = ldexp(s.tau_a, -s.e);
-  s.dtau = ldexp(s.tau_b, -s.e) - s.tau0;
+  s.tau0 = s.down(s.tau_a);
+  s.tau1 = s.down(s.tau_b);
+  s.dtau = s.tau1 - s.tau0;
   return s;
 }
 
@@ -557,7 +578,6 @@ struct Prepared {
 /// sections 1 and 4).
 template <class T>
 Prepared<T> prepare(int degree, const ScalisSegmentInput<T>& in) {
-  using std::ldexp;
   using std::sqrt;
   Prepared<T> pr;
   pr.sc = orient_and_scale(in);
@@ -597,7 +617,7 @@ Prepared<T> prepare(int degree, const ScalisSegmentInput<T>& in) {
   if (sc.tau0 == T(0) && c2 == T(0)) return at_tip();
 
   const T beta = pr.beta = fr.sigma2 * sc.dtau * sc.tau0 + b;
-  pr.depths = support_depths(*sc.A, *sc.B, in.p, sc.tau_a, sc.tau_b, sigma, sc.e, ab, ap, sc.tau0, sc.dtau);
+  pr.depths = support_depths(*sc.A, *sc.B, in.p, sc.tau_a, sc.tau_b, sigma, sc.down, ab, ap, sc.tau0, sc.dtau);
   T disc = pr.depths.disc;
   if (!(disc > T(0))) {
     // α ≤ 0: Q ≤ 0 everywhere (empty support, or a tangent point).
@@ -615,7 +635,7 @@ Prepared<T> prepare(int degree, const ScalisSegmentInput<T>& in) {
   // which Q(t_tip) ≤ 0 excludes unless γ ≤ 0.
   if (q == T(0)) return alpha > T(0) && sc.tau0 == T(0) ? at_tip() : pr;
 
-  pr.roots = support_roots(fr, pr.depths, q, sign_beta, sd, ldexp(sc.tau_b, -sc.e));
+  pr.roots = support_roots(fr, pr.depths, q, sign_beta, sd, sc.tau1);
   pr.support = clip_to_support(pr.roots, alpha, beta);
   if (!(pr.support.t1 < pr.support.t2)) return pr;
   pr.done = false;
@@ -632,13 +652,11 @@ Prepared<T> prepare(int degree, const ScalisSegmentInput<T>& in) {
 /// τ(t1) is τ at t1's end plus Δτ times t1's offset from it.
 template <class T>
 ScalisCompactSupport<T> closed_form_input(const Prepared<T>& pr) {
-  using std::ldexp;
   const Frame<T>& fr = pr.fr;
   const Support<T>& sp = pr.support;
   ScalisCompactSupport<T> s;
   s.width = support_width(fr, sp, pr.sd);
-  const T tau_at_b = ldexp(pr.sc.tau_b, -pr.sc.e);
-  s.tau_lo = (sp.end1.end == T(0) ? fr.tau0 : tau_at_b) + fr.dtau * sp.end1.offset;
+  s.tau_lo = (sp.end1.end == T(0) ? fr.tau0 : pr.sc.tau1) + fr.dtau * sp.end1.offset;
   s.rise = fr.dtau * s.width;
   s.tau_hi = s.tau_lo + s.rise;
   s.b0 = sp.root_at_t1 >= 0 ? T(0) : pr.depths.q_at_a;
@@ -658,11 +676,10 @@ ScalisCompactSupport<T> closed_form_input(const Prepared<T>& pr) {
 /// 1/scale).
 template <class T>
 T finish(const Prepared<T>& pr, const Sums<T>& sums, std::array<T, 3>* grad) {
-  using std::ldexp;
   if (grad != nullptr) {
     const T factor = -T(pr.fr.degree) * pr.length / pr.fr.sigma2;
     for (int c = 0; c < 3; ++c)
-      (*grad)[c] = ldexp(factor * (pr.fr.h[c] * sums.g0 - pr.fr.ab[c] * sums.g1), -pr.sc.e);
+      (*grad)[c] = pr.sc.down(factor * (pr.fr.h[c] * sums.g0 - pr.fr.ab[c] * sums.g1));
   }
   return pr.length * sums.f;
 }
