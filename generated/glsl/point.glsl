@@ -1,7 +1,7 @@
 // generated/glsl/point.glsl - point kernels in GLSL (float; ES 3.00 and 4.50).
 //
 // GENERATED FILE: DO NOT EDIT. Regenerate with
-//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --out generated
+//     skelconv-codegen --inverse 1:16 --cauchy 1:16 --compact 2:16 --weights 0:3 --polygon-inverse 3:12 --polygon-cauchy 3:12 --polygon-compact 4:12 --scalis-inverse 2:10 --scalis-cauchy 2:10 --scalis-compact 2:10 --out generated
 // From: codegen/glsl_point_writer.cpp, the radial kernels of docs/mathematics.md sec. 1 as the
 // traits of include/skelconv/kernels/ define them: f = w K(r) and
 // grad f = w K'(r) (p - c) / r, r = |p - c| (skelconv/primitives/point.hpp).
