@@ -12,7 +12,7 @@ numbers we measured. A claim marked **disagrees** is one our numbers do not
 support; the note says why. ctest (`ctest -L figures`) re-checks every claim
 at reduced resolution.
 
-- Everything: `scripts/figures.sh` (about 10 minutes on 2 cores).
+- Everything: `scripts/figures.sh` (about 20 minutes for the papers' figures on a loaded 2-core machine, docs/figures.md "Time").
 - Some figures, their entries refreshed: `scripts/figures.sh --only NAME... --gallery`.
 - This page alone, from the committed records (`results/NAME.json`) and
   images, in seconds: `scripts/figures.sh --gallery-only`.

@@ -111,14 +111,14 @@ def draw_polygon_p4_3d(ctx, figure, skeleton_name):
     mesh_distance = MESH_DISTANCE_PER_SIZE * size
     follows = depth <= mesh_distance if polygon_depth < CONVEX else depth >= NOTCH_FRACTION * polygon_depth
     return [
-        Claim("the p⁴ convolution surface of the polygon is one closed surface around it",
+        Claim("(ours) the p⁴ convolution surface of the polygon is one closed surface around it",
               f"{m.stats['triangles']} triangles, components {m.stats['components']}, Euler characteristic "
               f"{m.stats['euler_characteristic']}, closed {m.stats['closed']}, manifold {m.stats['manifold']}",
               m.closed and m.stats["components"] == "1" and m.stats["euler_characteristic"] == "2"),
-        Claim("the surface is the level set of the paper's p⁴ formula (§6.4: 1/(2|PP̄|²) Σ edge terms of D^{p²})",
+        Claim("(ours) the surface is the level set of the paper's p⁴ formula (§6.4: 1/(2|PP̄|²) Σ edge terms of D^{p²})",
               f"the formula (Python) at the {len(off_plane)} mesh vertices with |z| ≥ {FORMULA_MIN_Z:g}: "
               f"max |f − κ|/κ = {fmt(on_level)} (threshold {ON_LEVEL:g})", on_level < ON_LEVEL),
-        Claim("the surface follows the polygon's shape: its outline in the polygon's plane is convex for a convex "
+        Claim("(ours) the surface follows the polygon's shape: its outline in the polygon's plane is convex for a convex "
               "polygon and has the notch of a non-convex one",
               f"depth of the outline's deepest point inside its convex hull: {fmt(depth)} (the polygon's own: "
               f"{fmt(polygon_depth)}; " + (f"convex up to the mesh's chords, size/5 = {fmt(mesh_distance)})" if polygon_depth < CONVEX

@@ -128,7 +128,7 @@ def draw(ctx):
               f"{' and rays without a crossing' if np.isnan(c_leg).any() else ''}",
               bool(np.all(np.abs(s_leg - 1) <= RELATIVE_TOLERANCE)
                    and (np.isnan(c_leg).any() or np.nanmax(np.abs(c_leg - 1)) > BULGE))),
-        Claim("the ant and its branch are one smooth closed surface: one component, genus 5 (six legs joining "
+        Claim("(ours) the ant and its branch are one smooth closed surface: one component, genus 5 (six legs joining "
               "body and branch)",
               f"{m.stats['triangles']} triangles, components {m.stats.get('components')}, closed {m.stats['closed']}, "
               f"manifold {m.stats['manifold']}, Euler characteristic {euler} (genus {(2 - euler) / 2:g}); wrong model "

@@ -90,7 +90,7 @@ def draw(ctx):
               "mesh half-length: " + ", ".join(fmt(r["half"]) for r in s) + "; radius at the middle: " +
               ", ".join(fmt(r["radius"]) for r in s),
               all(r["half"] > LENGTH / 2 and abs(r["radius"] - t) < 0.1 * t for r, t in zip(s, TAUS_AB))),
-        Claim("the shaded shapes are the section figure's (the meshes' extents against the field)",
+        Claim("(ours) the shaded shapes are the section figure's (the meshes' extents against the field)",
               f"{len(meshes)} meshes, all closed: {all(m.closed for m in meshes)}; f ≥ iso at {fmt(tolerance)} "
               f"(the facet distance) inside each half-length and middle radius on the axes, f < iso that far "
               f"outside: {agree}",

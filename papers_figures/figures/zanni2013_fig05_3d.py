@@ -79,10 +79,12 @@ def draw(ctx):
         tau = TAU0 * (1 - middle[:, 0] / LENGTH)
         measured[kind] = dict(tip=float(m.vertices[:, 0].max()), dev=float(np.max(np.abs(r - tau))))
     # the cross-check runs in ctest too, at a smaller picture (the claim needs no image file)
-    w, h = ctx.res((320, 228), (120, 86))
+    # each panel's pixels at the saved image's size (the layout's 320 × 228 enlarged to print size)
+    scale = plot.print_scale(FIGURE.size)
+    w, h = ctx.res((round(320 * scale), round(228 * scale)), (120, 86))
     frame = surface3d.common_frame([classical, scalis])     # both panels at one scale and place
     agree, mesh_pixels, iso_pixels = cross_check(classical, frame, w, h)
-    claims = [Claim("cross-check: the mesh of (a) and POV-Ray's isosurface{} of the same field "
+    claims = [Claim("(ours) cross-check: the mesh of (a) and POV-Ray's isosurface{} of the same field "
                     f"({QUADRATURE_NODES}-point Gauss–Legendre quadrature of eq. 10) have the same silhouette",
                     f"{agree:.2%} of the {w}×{h} pixels agree (threshold {SILHOUETTE_AGREEMENT:.0%})",
                     agree >= SILHOUETTE_AGREEMENT)]

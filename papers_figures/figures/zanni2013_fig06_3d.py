@@ -1,8 +1,10 @@
 """Zanni et al. 2013, Figure 6, shaded: three thin primitives blended by sum
 with a thick one, (a) classical convolution, (b) SCALIS (the section
 figure's skeleton and levels). Measured on the meshes: the radius of each
-thin primitive at the height PROBE_Y of the section figure, half the extent across it of the
-mesh's section there (0 where the surface does not reach)."""
+thin primitive at the height PROBE_Y of the section figure, as the section figure measures it
+(from the axis along +x to the surface, in the plane z = 0), read off the mesh's section: none
+when no surface is within MERGED of the axis (merged into the thick one's lump). Drawn
+front-on (looking down on the skeleton's plane), so that the thin primitives show."""
 import numpy as np
 
 from figlib import surface3d
@@ -23,16 +25,26 @@ FIGURE = Figure(
     section="shaded surfaces of the section figure's skeleton (thin radius 0.25, thick radius 1)",
     skeletons=[SKELETON], kernel="Cauchy 4, σ = 1 (classical: c_s⁴ with s = 1; the thick one weight 1, each thin one the weight that gives it radius 0.25 alone, 0.387, above τ_min = 0.354)",
     iso=f"SCALIS 1; classical {ISO_CLASSICAL:.5g} (radius 1 around the thick segment alone)",
-    view="the fixed camera of render3d, one scale for both panels", size=(640, 300))
+    view="front-on (from above the skeleton's plane), one scale for both panels", size=(1600, 620))
 
 
-def thin_radii(m, thin):
-    """Half the width of the mesh's section y = PROBE_Y across each thin primitive, near it."""
+# The section figure's rays stop at 0.99 from the thin axis: a surface reaching that far is not
+# the thin primitive's own (the thin ones are 2 apart; a radius of 0.99 is ~4 τ).
+MERGED = 0.99
+VIEW = [0.0, -0.35, 1.0]          # front-on, from above the skeleton's plane z = 0, tilted a little
+
+
+def thin_radii(m, thin, facet):
+    """Per thin primitive, what the section figure's ray measures, on the mesh: the distance from its
+    axis at y = PROBE_Y along +x to the nearest mesh point of the section near the plane z = 0
+    (within a facet); NaN when there is none within MERGED (merged into the thick one's lump)."""
+    section = surface3d.section(m, 1, PROBE_Y)
+    near_plane = section[np.abs(section[:, 2]) < facet]
     out = []
     for p in thin:
-        a, b = np.asarray(p["a"], float), np.asarray(p["b"], float)
-        probe = np.array([a[0], PROBE_Y, a[2]])
-        out.append(0.5 * surface3d.widths(m, 1, 0, [probe[1]], near=probe[0], half_range=0.9)[0])
+        ahead = near_plane[:, 0] - p["a"][0]
+        ahead = ahead[(ahead > 0) & (ahead < MERGED)]
+        out.append(float(ahead.min()) if len(ahead) else np.nan)
     return np.array(out)
 
 
@@ -44,9 +56,10 @@ def draw(ctx):
     size = ctx.res(0.06, 0.1)
     a = surface3d.mesh(ctx, {"primitives": classical}, ISO_CLASSICAL, size, "fig6a_classical")
     b = surface3d.mesh(ctx, {"primitives": scalis}, 1.0, size, "fig6b_scalis")
-    surface3d.panels(ctx, [(a, f"(a) classical, iso {ISO_CLASSICAL:.4g}"), (b, "(b) SCALIS, iso 1")], FIGURE.size)
+    surface3d.panels(ctx, [(a, f"(a) classical, iso {ISO_CLASSICAL:.4g}"), (b, "(b) SCALIS, iso 1")], FIGURE.size,
+                     view=VIEW)
     tau = thin[0]["radius"][0]
-    c, s = thin_radii(a, thin), thin_radii(b, thin)
+    c, s = thin_radii(a, thin, size), thin_radii(b, thin, size)
     if not (a.closed and b.closed):
         raise surface3d.MeshError(f"fig. 6 meshes not closed: {a.stats['closed']}, {b.stats['closed']}")
     return [smoothing_claim(tau, c, s, "on the meshes ")]

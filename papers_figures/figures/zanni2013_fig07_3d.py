@@ -23,7 +23,7 @@ FIGURE = replace(
     SECTIONS, number="7 (3-D)",
     section="shaded surfaces of the section figure's T skeleton (our own) at scales 1, 1/3, 1/6, each drawn "
             "scaled back to size 1",
-    view="the fixed camera of render3d, one framing for all six panels", size=(640, 330))
+    view="the fixed camera of render3d, one framing for all six panels", size=(1600, 820))
 
 
 def scaled_back(m, alpha):
@@ -52,7 +52,7 @@ def draw(ctx):
             if alpha != 1.0:
                 measured[kind].append((float(np.max(distance_to(unscaled, level, m.vertices))) / SIZE, m.closed))
             label = "(a) classical" if kind == "classical" else "(b) SCALIS"
-            items.append((m, f"{label}, scale " + ("1" if alpha == 1 else f"1/{round(1 / alpha)}, drawn ×{round(1 / alpha)}")))
+            items.append((m, f"{label}, scale " + ("1" if alpha == 1 else f"1/{round(1 / alpha)} (drawn ×{round(1 / alpha)})")))
     frame = surface3d.common_frame([m for m, _ in items[:1]])
     surface3d.panels(ctx, items, FIGURE.size, rows=2, frame=frame)
     c, s = measured["classical"], measured["scalis"]

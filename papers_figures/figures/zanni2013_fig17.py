@@ -90,7 +90,7 @@ def draw(ctx):
               f"f on the mandibles {', '.join(fmt(v) for v in c_f)} (level 1: "
               f"{'absent' if np.all(c_f < 1) else 'inside the head’s surface up to 10 τ' if np.all(c_f >= 1) else 'both'})",
               bool(np.isnan(c_err).any() or np.max(np.abs(c_err)) > 1e3 * RELATIVE_TOLERANCE)),
-        Claim("the head region is a closed manifold surface at the paper's high-resolution class (Table 1: 64 756 "
+        Claim("(ours) the head region is a closed manifold surface at the paper's high-resolution class (Table 1: 64 756 "
               "triangles)",
               f"{len(part)} of the {len(prims)} primitives reach the region; {m.stats['triangles']} triangles, closed "
               f"{m.stats['closed']}, manifold {m.stats['manifold']}",

@@ -115,9 +115,8 @@ def draw(ctx):
         f"{PAPER_MACHINE})",
         f"{rate:,.0f} triangles/s ({ant.stats['triangles']} in {ant.seconds:.2f} s, --method grid on "
         f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}): {rate / PAPER_ANT_RATE:.3f} × the paper's",
-        rate >= RATE_GOAL * PAPER_ANT_RATE, expect_agreement=False,
-        note="a known shortfall: every primitive is evaluated at every point (no culling) and the mesher refines "
-             "and projects with the exact gradient; measured on this branch's mesher, under the load shown"),
+        rate >= RATE_GOAL * PAPER_ANT_RATE,
+        note="a wall-clock rate: measured under the load shown (full runs only; ctest does not time)"),
         Claim(f"(goal) the ant of Fig. 1, the paper's skeleton class, meshes at ≥ {RATE_GOAL:g} × the paper's rate "
               f"on one thread as the paper used one core",
               f"{compact_rate:,.0f} triangles/s ({compact.stats['triangles']} in {compact.seconds:.2f} s, --method cgal, "
@@ -126,9 +125,9 @@ def draw(ctx):
               note="a known shortfall: CGAL's Delaunay refinement with exact projection is slower per triangle than "
                    "a non-adaptive marching triangles; the compact supports keep the field's share small "
                    "(the field time is in the table)")]
-    return timing + [Claim("every mesh of the table is a closed manifold",
+    return timing + [Claim("(ours) every mesh of the table is a closed manifold",
                   ", ".join(f"{m.stats['triangles']} triangles closed {m.stats['closed']}" for m in meshes),
                   all(m.closed for m in meshes)),
-            Claim("the finer mesh is of the paper's large class (~100k triangles)",
+            Claim("(ours) the finer mesh is of the paper's large class (~100k triangles)",
                   f"{large} triangles (at least {LARGE_TRIANGLES} asked; quick runs use a coarser size)",
                   large >= (LARGE_TRIANGLES if not ctx.quick else 1000))]
