@@ -26,10 +26,19 @@
 // Single thread. Points: uniform in the skeleton's box grown by its largest
 // radius or segment length (the region a mesher samples).
 // Compiled with the runtime's flags (bench/CMakeLists.txt says why).
+//
+// `--counts`: instead of timing, one pass of each path but the mesher's
+// over the first count_points points of every skeleton, each between
+// callgrind client requests described "public/<kind>/<primitives>/<path>|<evaluations>"
+// (scripts/bench.sh runs it under callgrind; bench/summarize.py divides by
+// the evaluations: instructions per primitive and point, repeatable where
+// the times are not).
 #include <benchmark/benchmark.h>
+#include <valgrind/callgrind.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <map>
 #include <random>
@@ -305,6 +314,54 @@ void bench_mesher_value_and_gradient(benchmark::State& state) {
   });
 }
 
+/// Points per skeleton in --counts mode: enough that the one-off costs of
+/// a pass (the batch's vector, the index's first use) are a few percent.
+constexpr std::size_t count_points = 200;
+
+/// --counts: the callgrind regions (file comment).
+int run_counts() {
+  for (int kind : {0, 1}) {
+    for (std::size_t n : {std::size_t(1), std::size_t(24), std::size_t(1000)}) {
+      const Skeleton& skeleton = skeleton_of(kind, n);
+      skeleton.prepare();
+      const std::vector<Vec3> points(points_of(n).begin(), points_of(n).begin() + count_points);
+      const std::string base = "public/" + std::to_string(kind) + "/" + std::to_string(n) + "/";
+      const std::string evaluations = "|" + std::to_string(count_points * n);
+      double sink = 0;
+      const auto region = [&](const std::string& path, auto&& pass) {
+        const std::string description = base + path + evaluations;
+        CALLGRIND_ZERO_STATS;
+        sink += pass();
+        CALLGRIND_DUMP_STATS_AT(description.c_str());
+      };
+      const GeneratedPass<true> generated_f_and_grad(kind, n);
+      const GeneratedPass<false> generated_f(kind, n);
+      region("generated_f_and_grad", [&] { return generated_f_and_grad(points); });
+      region("generated_f", [&] { return generated_f(points); });
+      region("value_and_gradient", [&] {
+        double sum = 0;
+        for (const Vec3& p : points) sum += skeleton.value_and_gradient(p).value;
+        return sum;
+      });
+      region("value", [&] {
+        double sum = 0;
+        for (const Vec3& p : points) sum += skeleton.value(p);
+        return sum;
+      });
+      std::vector<double> xyz;
+      for (const Vec3& p : points) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+      std::vector<double> values(points.size()), gradients(xyz.size());
+      region("batch_into", [&] {
+        (void)evaluate_batch_into(skeleton, xyz, values, gradients, {.threads = 1});
+        return values.back();
+      });
+      benchmark::DoNotOptimize(sink);
+    }
+  }
+  std::printf("done: %s\n", RUNNING_ON_VALGRIND ? "under valgrind" : "not under valgrind (client requests ignored)");
+  return 0;
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   b->ArgsProduct({{0, 1}, {1, 24, 1000}})->ArgNames({"kind", "primitives"})->Unit(benchmark::kMillisecond);
 }
@@ -320,4 +377,7 @@ BENCHMARK(bench_mesher_value_and_gradient)->Name("mesher_value_and_gradient")->A
 }  // namespace
 }  // namespace skelconv::bench
 
-int main(int argc, char** argv) { return skelconv::bench::run_registered_benchmarks(argc, argv); }
+int main(int argc, char** argv) {
+  if (skelconv::bench::take_flag(argc, argv, "--counts")) return skelconv::bench::run_counts();
+  return skelconv::bench::run_registered_benchmarks(argc, argv);
+}

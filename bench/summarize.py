@@ -185,7 +185,7 @@ def table(header, rows):
     return "\n".join(out) + "\n"
 
 
-def public_path_section(res, md, goals):
+def public_path_section(res, md, goals, ir):
     """§8: bench/public_path_bench.cpp, every public path over the generated function."""
     runs, context = load_benchmarks(os.path.join(res, "public_path.json"))
     if not runs:
@@ -219,6 +219,27 @@ def public_path_section(res, md, goals):
                     worst.append((ratio_, f"{path} {row[0]}"))
             rows.append(row)
     md.append(table(["skeleton", "generated f+∇f", "generated f"] + paths, rows))
+    # Instructions (callgrind, skelconv_bench_public_path --counts): what each
+    # path adds to the generated function, repeatable where times are not.
+    counted = ["value_and_gradient", "value", "batch_into"]
+    irows = []
+    for kind in (0, 1):
+        for n in (1, 24, 1000):
+            base = f"public/{kind}/{n}/"
+            g, f = ir.get(base + "generated_f_and_grad"), ir.get(base + "generated_f")
+            if g is None or f is None:
+                continue
+            row = [("SCALIS" if kind == 0 else "classical") + f" × {n}", fmt_int(g), fmt_int(f)]
+            for path in counted:
+                c = ir.get(base + path)
+                over = c - (f if path == "value" else g) if c is not None else None
+                row.append(f"{fmt_int(c)} (+{over:.0f})" if c is not None else "–")
+            irows.append(row)
+    if irows:
+        md.append("Instructions per primitive and point (callgrind, `skelconv_bench_public_path --counts`, 200 points "
+                  "of the same sets), and in brackets what the path adds to the generated function (f+∇f paths over "
+                  "`f_and_grad`, *value* over `f`).\n")
+        md.append(table(["skeleton", "generated f+∇f", "generated f"] + counted, irows))
     if worst:
         ok = [r <= GOAL_PUBLIC_PATH for r, _ in worst]
         top = max(worst)
@@ -697,7 +718,7 @@ def main():
     for section in (quadrature_section, gradient_cost_section, degree_section,
                     gsl_section, generic_path_section, skeleton_section, table4_section, scalis_section):
         section(data, md, goals)
-    public_path_section(args.results, md, goals)
+    public_path_section(args.results, md, goals, data.ir)
     mesh_ant_section(args.results, md, goals)
     write_summary(args.results, md, goals)
     if data.opcounts:

@@ -89,10 +89,14 @@ for run in 1 2 3; do
     --size 0.04 --method grid -o "$scratch/ant.ply" --quiet 2>&1
 done > "$results/mesh_ant.txt"
 
-step "5/6 callgrind instruction counts (~10 s)"
+step "5/6 callgrind instruction counts (~1 min)"
 valgrind --tool=callgrind --callgrind-out-file="$scratch/callgrind.out.%p" --dump-instr=no \
   --collect-jumps=no "$bin/skelconv_bench_counts" 2> "$scratch/valgrind.log" \
   || { cat "$scratch/valgrind.log" >&2; exit 1; }
+# The public paths' instructions per primitive and point (public/… regions).
+valgrind --tool=callgrind --callgrind-out-file="$scratch/callgrind.out.%p" --dump-instr=no \
+  --collect-jumps=no "$bin/skelconv_bench_public_path" --counts 2> "$scratch/valgrind_public.log" \
+  || { cat "$scratch/valgrind_public.log" >&2; exit 1; }
 "$bin/skelconv_bench_counts" --opcounts "$results/opcounts.json"
 
 step "6/6 summary"

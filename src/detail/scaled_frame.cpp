@@ -16,20 +16,26 @@ namespace {
 
 constexpr double smallest_normal = std::numeric_limits<double>::min();
 
+/// Whether 2^n is a normal double.
+bool normal_power_of_two(int n) {
+  return n >= std::numeric_limits<double>::min_exponent - 1 && n <= std::numeric_limits<double>::max_exponent - 1;
+}
+/// 2^n for normal_power_of_two(n) (IEEE binary64: biased exponent n + 1023).
+double power_of_two(int n) { return std::bit_cast<double>(std::uint64_t(n + 1023) << 52); }
+
 /// x·2^n, the same double as std::ldexp(x, n) (both round the exact product
 /// once, to nearest), by one product when 2^n is a normal double: the
 /// per-point frame changes then cost a multiplication, not a libm call.
 double times_power_of_two(double x, int n) {
-  if (n < std::numeric_limits<double>::min_exponent - 1 || n > std::numeric_limits<double>::max_exponent - 1)
-    return std::ldexp(x, n);
-  return x * std::bit_cast<double>(std::uint64_t(n + 1023) << 52);  // IEEE binary64: biased exponent n + 1023
+  if (!normal_power_of_two(n)) return std::ldexp(x, n);
+  return x * power_of_two(n);
 }
 
-[[noreturn]] void throw_out_of_range(const char* what, const Vec3& p, double frame_value, int power_of_two) {
+[[noreturn]] void throw_out_of_range(const char* what, const Vec3& p, double frame_value, int exponent) {
   throw EvaluationError(fmt::format(
       "{} at P = {} is {}, outside the range of double precision (normal doubles are {:g} to {:g}): the field of "
       "this primitive cannot be returned at that point",
-      what, detail::format_point(p), format_scaled(frame_value, power_of_two), smallest_normal,
+      what, detail::format_point(p), format_scaled(frame_value, exponent), smallest_normal,
       std::numeric_limits<double>::max()));
 }
 
@@ -39,17 +45,18 @@ ScaledFrame::ScaledFrame(double size) : exponent_(std::ilogb(size)) {}
 
 Vec3 ScaledFrame::point(const Vec3& x) const {
   // |e| ≤ 1022 for every frame of a normal length: one factor for all three.
-  if (-exponent_ >= std::numeric_limits<double>::min_exponent - 1 && -exponent_ <= std::numeric_limits<double>::max_exponent - 1)
-    return x * times_power_of_two(1.0, -exponent_);
+  if (normal_power_of_two(-exponent_)) return x * power_of_two(-exponent_);
   return {times_power_of_two(x.x(), -exponent_), times_power_of_two(x.y(), -exponent_),
           times_power_of_two(x.z(), -exponent_)};
 }
 
-double ScaledFrame::restore_value(double value, int power, bool may_vanish, const char* what, const Vec3& p) const {
-  const int shift = power * exponent_;
-  // The common case first: a normal value in a frame of scale 1 comes back
-  // as it is (the checks below would all pass and return it unchanged).
-  if (shift == 0 && std::isnormal(value)) return value;
+namespace {
+
+// The cases restore_value and restore_gradient do not settle on their first
+// test, out of line: the error messages' formatting stays off the path every
+// evaluation takes.
+[[gnu::noinline, gnu::cold]] double restore_value_rare(double value, int shift, bool may_vanish, const char* what,
+                                                       const Vec3& p) {
   if (value == std::numeric_limits<double>::infinity()) return value;
   if (!std::isfinite(value)) {
     throw EvaluationError(fmt::format("{} returned {} at P = {}, where the field is finite: the closed form failed "
@@ -62,17 +69,12 @@ double ScaledFrame::restore_value(double value, int power, bool may_vanish, cons
   throw_out_of_range(what, p, value, shift);
 }
 
-Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const {
-  // The common case first, with the checks below written out on the three
-  // components: all finite, the largest a normal double, and so is the
-  // largest after the shift (a product by 2^shift scales every component
-  // alike, so the largest stays the largest).
+[[gnu::noinline, gnu::cold]] Vec3 restore_gradient_rare(const Vec3& gradient, int shift, const char* what,
+                                                        const Vec3& p) {
   const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
   constexpr double largest_finite = std::numeric_limits<double>::max();
   if (ax <= largest_finite && ay <= largest_finite && az <= largest_finite) {  // false for NaN
     const double largest = std::max({ax, ay, az});
-    const int shift = power * exponent_;
-    if (shift == 0 && largest >= smallest_normal) return gradient;
     if (largest >= smallest_normal) {
       const double world_largest = times_power_of_two(largest, shift);
       if (world_largest >= smallest_normal && world_largest <= largest_finite) {
@@ -87,7 +89,6 @@ Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* 
                                       "form failed in double precision",
                                       what, detail::format_point(gradient), detail::format_point(p)));
   }
-  const int shift = power * exponent_;
   const Vec3 world{times_power_of_two(gradient.x(), shift), times_power_of_two(gradient.y(), shift),
                    times_power_of_two(gradient.z(), shift)};
   const double largest = gradient.cwiseAbs().maxCoeff();
@@ -96,6 +97,37 @@ Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* 
     throw_out_of_range(fmt::format("the gradient of {}", what).c_str(), p, largest, shift);
   }
   return world;
+}
+
+}  // namespace
+
+double ScaledFrame::restore_value(double value, int power, bool may_vanish, const char* what, const Vec3& p) const {
+  // The common case first: a normal value that stays normal in the world,
+  // by one product (the same double as std::ldexp); anything else, the
+  // singular marker included, is decided by restore_value_rare.
+  const int shift = power * exponent_;
+  if (std::isnormal(value) && normal_power_of_two(shift)) {
+    const double world = value * power_of_two(shift);
+    if (std::isnormal(world)) return world;
+  }
+  return restore_value_rare(value, shift, may_vanish, what, p);
+}
+
+Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const {
+  // The common case first: all components finite, the largest a normal
+  // double, and so is the largest after the shift (a product by 2^shift
+  // scales every component alike, so the largest stays the largest).
+  const int shift = power * exponent_;
+  const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
+  constexpr double largest_finite = std::numeric_limits<double>::max();
+  if (ax <= largest_finite && ay <= largest_finite && az <= largest_finite && normal_power_of_two(shift)) {
+    const double largest = std::max({ax, ay, az});  // (the test above is false for NaN)
+    const double factor = power_of_two(shift);
+    const double world_largest = largest * factor;
+    if (largest >= smallest_normal && world_largest >= smallest_normal && world_largest <= largest_finite)
+      return gradient * factor;
+  }
+  return restore_gradient_rare(gradient, shift, what, p);
 }
 
 std::string format_scaled(double mantissa, int power_of_two) {

@@ -63,6 +63,13 @@ void require_parameter_in_frame(std::string_view key, const SegmentInput<double>
   }
 }
 
+/// The EvaluationError of a P whose frame coordinates overflow.
+[[noreturn, gnu::cold, gnu::noinline]] void throw_too_far(const Vec3& p) {
+  throw EvaluationError(fmt::format("P = {} is too far from the segment (more than ~2^1000 times its length "
+                                    "from the origin): the field is outside the range of double precision",
+                                    format_point(p)));
+}
+
 }  // namespace
 
 Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::span<const double> weight)
@@ -122,15 +129,15 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
   return degrees;
 }
 
+// `input` comes in as a copy of input_ (the caller's initialiser: one copy,
+// no default construction first); P, and for a compact kernel the clip, are
+// filled in here. It runs once per primitive and point: the error's
+// formatting is out of line (throw_too_far), which leaves prepare small
+// enough for the compiler to inline into its three callers.
 Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const {
   detail::require_finite_query_point(p);
-  input = input_;
   const Vec3 frame_p = frame_.point(p);
-  if (!frame_p.allFinite()) {
-    throw EvaluationError(fmt::format("P = {} is too far from the segment (more than ~2^1000 times its length "
-                                      "from the origin): the field is outside the range of double precision",
-                                      format_point(p)));
-  }
+  if (!frame_p.allFinite()) throw_too_far(p);
   input.p = to_array(frame_p);
 
   if (singular_at_zero_) {
@@ -162,7 +169,7 @@ Vec3 Segment::restore_gradient(const std::array<double, 3>& g, const Vec3& p) co
 }
 
 double Segment::value(const Vec3& p) const {
-  SegmentInput<double> input;
+  SegmentInput<double> input = input_;
   switch (prepare(p, input)) {
     case Case::outside_compact_support: return 0.0;
     case Case::on_inverse_singularity: return infinity;
@@ -172,7 +179,7 @@ double Segment::value(const Vec3& p) const {
 }
 
 Vec3 Segment::gradient(const Vec3& p) const {
-  SegmentInput<double> input;
+  SegmentInput<double> input = input_;
   switch (prepare(p, input)) {
     case Case::outside_compact_support: return Vec3::Zero();
     case Case::on_inverse_singularity: return Vec3::Constant(infinity);
@@ -182,7 +189,7 @@ Vec3 Segment::gradient(const Vec3& p) const {
 }
 
 FieldSample Segment::value_and_gradient(const Vec3& p) const {
-  SegmentInput<double> input;
+  SegmentInput<double> input = input_;
   switch (prepare(p, input)) {
     case Case::outside_compact_support: return {0.0, Vec3::Zero()};
     case Case::on_inverse_singularity: return {infinity, Vec3::Constant(infinity)};

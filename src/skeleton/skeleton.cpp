@@ -1,10 +1,12 @@
 // Implementation of skelconv/skeleton/skeleton.hpp.
 #include "skelconv/skeleton/skeleton.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <span>
 #include <type_traits>
 
+#include <boost/container/small_vector.hpp>
 #include <fmt/format.h>
 
 #include "skeleton_index.hpp"
@@ -17,6 +19,24 @@ namespace {
 
 ScalarSample<double> to_scalar(const FieldSample& s) { return {s.value, to_array(s.gradient)}; }
 FieldSample from_scalar(const ScalarSample<double>& s) { return {s.value, to_vec3(s.gradient)}; }
+
+/// Children of a union or super-elliptic node held on the stack during an
+/// evaluation (more are allocated): no allocation per point for the blends
+/// a file usually has.
+constexpr std::size_t small_blend_children = 16;
+
+/// What an evaluation of `primitive` at P produces: f (∇f = 0 in the
+/// sample), ∇f (f = 0) or both, as `need` (a Skeleton::Need) asks. Always
+/// inlined: it is the whole of a leaf's dispatch, once per primitive and point.
+template <class P, class Need>
+[[gnu::always_inline]] inline FieldSample sample_of(const P& primitive, const Vec3& p, Need need) {
+  switch (need) {
+    case Need::value: return {primitive.value(p), Vec3::Zero()};
+    case Need::gradient: return {0.0, primitive.gradient(p)};
+    case Need::both: break;
+  }
+  return primitive.value_and_gradient(p);
+}
 
 /// +inf with gradient (+inf, +inf, +inf): an inverse primitive on its own
 /// skeleton somewhere below (blend.hpp, "Markers").
@@ -108,8 +128,17 @@ void Skeleton::prepare() const {
     validate();
     auto index = std::make_unique<detail::SkeletonIndex>();
     index->grids.resize(nodes_.size());
+    index->one_primitive_type.assign(nodes_.size(), false);
     for (NodeId id = 0; id < nodes_.size(); ++id) {
       const Node& node = nodes_[id];
+      // (A single child gains nothing from the loop, which costs a little
+      // more to enter than evaluate_child.)
+      index->one_primitive_type[id] =
+          node.blend.kind == BlendKind::sum && node.children.size() >= 2 &&
+          std::all_of(node.children.begin(), node.children.end(), [&](const Child& child) {
+            return !child.is_blend &&
+                   primitives_[child.index].index() == primitives_[node.children.front().index].index();
+          });
       // Every sum, union and plain super-elliptic node: a child outside its
       // support is an exact zero in each (docs/field.md, "Union and
       // super-elliptic nodes"). The angle-weighted blend has two children.
@@ -160,14 +189,7 @@ FieldSample Skeleton::evaluate_child(const Child& child, const Vec3& p, Need nee
 FieldSample Skeleton::evaluate_leaf(std::size_t k, const Vec3& p, Need need) const {
   try {
     return std::visit(
-        [&](const auto& primitive) -> FieldSample {
-          switch (need) {
-            case Need::value: return {primitive.value(p), Vec3::Zero()};
-            case Need::gradient: return {0.0, primitive.gradient(p)};
-            case Need::both: break;
-          }
-          return primitive.value_and_gradient(p);
-        },
+        [&](const auto& primitive) { return sample_of(primitive, p, need); },
         primitives_[k]);
   } catch (const InputError& error) {
     throw error.inside(primitive_locations_[k]);
@@ -189,7 +211,7 @@ FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const d
       // in its place, so that the operator sees the same list as the plain
       // evaluation (docs/field.md, "Union and super-elliptic nodes").
       const Need child_need = need == Need::value ? Need::value : Need::both;
-      std::vector<ScalarSample<double>> children(node.children.size());
+      boost::container::small_vector<ScalarSample<double>, small_blend_children> children(node.children.size());
       const auto evaluate_at = [&](std::size_t position) {
         children[position] = to_scalar(evaluate_child(node.children[position], p, child_need, index));
       };
@@ -199,7 +221,7 @@ FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const d
       } else {
         for (std::size_t position = 0; position < node.children.size(); ++position) evaluate_at(position);
       }
-      const std::span<const ScalarSample<double>> view(children);
+      const std::span<const ScalarSample<double>> view(children.data(), children.size());
       if (node.blend.kind == BlendKind::union_max) return from_scalar(blend_union(view));  // one child's sample
       const FieldSample result = from_scalar(blend_super_elliptic(node.blend, view));
       if (!blend_detail::any_infinite(view)) {
@@ -213,29 +235,57 @@ FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const d
 
 FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const detail::SkeletonIndex* index) const {
   const Node& node = nodes_[id];
+  const std::optional<SupportGrid>* grid = index != nullptr ? &index->grids[id] : nullptr;
+  const SupportGrid* active = grid != nullptr && grid->has_value() ? &**grid : nullptr;
   FieldSample total;
   bool marker = false;
   const bool unweighted = node.blend.weights.empty();
   // Left to right, from +0: the same additions whether or not the index
   // skips children (their terms are exactly 0; x + 0 = x for every x the
-  // running total can hold, since it is never −0).
-  const auto add = [&](std::size_t position) {
-    const FieldSample term = evaluate_child(node.children[position], p, need, index);
-    marker = marker || is_marker(term);
-    if (unweighted) {  // weight 1: 1·x = x exactly, so the same sums without the products
-      total.value += term.value;
-      if (need != Need::value) total.gradient += term.gradient;  // else every term's gradient is 0
-      return;
+  // running total can hold, since it is never −0), and whichever way
+  // term_at reaches the child.
+  const auto sum_terms = [&](auto&& term_at) {
+    const auto add = [&](std::size_t position) {
+      const FieldSample term = term_at(position);
+      marker = marker || is_marker(term);
+      if (unweighted) {  // weight 1: 1·x = x exactly, so the same sums without the products
+        total.value += term.value;
+        if (need != Need::value) total.gradient += term.gradient;  // else every term's gradient is 0
+        return;
+      }
+      const double weight = node.blend.weight_of(position);
+      total.value += weight * term.value;
+      total.gradient += weight * term.gradient;
+    };
+    if (active != nullptr) {
+      active->for_each_active(p, add);
+    } else {
+      for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
     }
-    const double weight = node.blend.weight_of(position);
-    total.value += weight * term.value;
-    total.gradient += weight * term.gradient;
   };
-  const std::optional<SupportGrid>* grid = index != nullptr ? &index->grids[id] : nullptr;
-  if (grid != nullptr && grid->has_value()) {
-    (*grid)->for_each_active(p, add);
+  if (index != nullptr && index->one_primitive_type[id]) {
+    // Every child a primitive of one type: one loop over them with that
+    // type's evaluation, without choosing between blend node and primitive
+    // and between primitive types at every child (evaluate_child,
+    // evaluate_leaf); errors located as evaluate_leaf locates them.
+    std::visit(
+        [&](const auto& first) {
+          using P = std::decay_t<decltype(first)>;
+          std::size_t k = node.children.front().index;  // the primitive being evaluated
+          try {
+            sum_terms([&](std::size_t position) {
+              k = node.children[position].index;
+              return sample_of(*std::get_if<P>(&primitives_[k]), p, need);
+            });
+          } catch (const InputError& error) {
+            throw error.inside(primitive_locations_[k]);
+          } catch (const EvaluationError& error) {
+            throw error.inside(primitive_locations_[k]);
+          }
+        },
+        primitives_[node.children.front().index]);
   } else {
-    for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
+    sum_terms([&](std::size_t position) { return evaluate_child(node.children[position], p, need, index); });
   }
   if (marker) return {infinity, Vec3::Constant(infinity)};
   require_finite_blend(total, need != Need::gradient, need != Need::value,

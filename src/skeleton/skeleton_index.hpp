@@ -1,5 +1,6 @@
 // src/skeleton/skeleton_index.hpp — the bounding-volume index of a Skeleton
-// (one SupportGrid per large sum node) and its once-only lazy construction.
+// (one SupportGrid per large sum node), which sum nodes hold primitives of
+// one type only, and its once-only lazy construction.
 // Internal to skelconv_runtime.
 #pragma once
 
@@ -17,6 +18,10 @@ struct SkeletonIndex {
   /// grids[id]: the grid of node id's children, or none (not a sum node,
   /// too few children, or no compact-support primitive child).
   std::vector<std::optional<SupportGrid>> grids;
+  /// one_primitive_type[id]: node id is a sum whose children are all
+  /// primitives of one type (Skeleton::evaluate_sum loops over them with
+  /// that type's evaluation).
+  std::vector<bool> one_primitive_type;
 };
 
 /// Built once per version of the skeleton; std::call_once lets any number
