@@ -26,7 +26,11 @@
 #include <optional>
 #include <string>
 
-#include "generated/segment_table.hpp"
+// The formulas of every family, for the table of segment_value_and_gradient<T>
+// and for calls of one kernel by name.
+#include "generated/segment_cauchy.hpp"
+#include "generated/segment_compact.hpp"
+#include "generated/segment_inverse.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/detail/clip.hpp"
 #include "skelconv/kernels/read_trait.hpp"
