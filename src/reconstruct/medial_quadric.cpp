@@ -317,18 +317,37 @@ class Simplifier {
   std::map<Index, std::vector<Index>> blocked_;  // lookup only: never iterated
 };
 
-/// A triangle too thin for the skeleton file's polygon rule (area ≥ 1e-8 ×
-/// diameter², docs/cli_skeleton.md), with margin.
-bool degenerate(const Vec4& a, const Vec4& b, const Vec4& c) {
+/// Whether the segment p q is too short for the skeleton file (its length
+/// below 1e-8 × the largest coordinate magnitude, docs/cli_skeleton.md),
+/// with margin.
+bool too_short(const Vec3& p, const Vec3& q) {
+  return (p - q).norm() <= 1e-6 * std::max(p.cwiseAbs().maxCoeff(), q.cwiseAbs().maxCoeff());
+}
+
+/// A triangle better given as its longest side: too thin for the skeleton
+/// file's polygon rule (area ≥ 1e-8 × diameter², docs/cli_skeleton.md), or
+/// narrower than `thin` × its smallest radius and × its longest side. Along a tube the Voronoi
+/// faces are a narrow tangle about the axis, and their simplified triangles
+/// strips far narrower than the tube: a SCALIS triangle's field is
+/// normalised for a wide sheet, and a strip of them falls short of a tube
+/// that a segment of the same radius makes.
+bool degenerate(const Vec4& a, const Vec4& b, const Vec4& c, double thin) {
   const Vec3 p = a.head<3>(), q = b.head<3>(), r = c.head<3>();
+  if (too_short(p, q) || too_short(q, r) || too_short(p, r)) return true;
   const double diameter = std::max({(q - p).norm(), (r - q).norm(), (p - r).norm()});
-  return (q - p).cross(r - p).norm() / 2 < 1e-6 * diameter * diameter;
+  const double area = (q - p).cross(r - p).norm() / 2;
+  // The smallest altitude is 2 × area / the longest side; a strip is also
+  // narrow for its length (a sheet's triangles, small beside its radius
+  // where it is thick, are not).
+  const double altitude = 2 * area / diameter;
+  return area < 1e-6 * diameter * diameter ||
+         (altitude < thin * std::min({a.w(), b.w(), c.w()}) && altitude < thin * diameter);
 }
 
 /// The live complex as a MedialMesh, renumbered in order. A degenerate
 /// triangle gives its longest side as a tube edge (if no other triangle
-/// holds it); an edge whose ends coincide is dropped.
-MedialMesh to_mesh(const Complex& k) {
+/// holds it); an edge too short for the skeleton file is dropped.
+MedialMesh to_mesh(const Complex& k, double thin_fraction) {
   MedialMesh mesh;
   std::vector<Index> number(k.sphere.size(), -1);
   for (std::size_t i = 0; i < k.sphere.size(); ++i)
@@ -338,7 +357,7 @@ MedialMesh to_mesh(const Complex& k) {
   for (const Triangle& t : k.triangles) {
     const Triangle r{number[std::size_t(t[0])], number[std::size_t(t[1])], number[std::size_t(t[2])]};
     const auto& s = mesh.spheres;
-    if (degenerate(s[std::size_t(r[0])], s[std::size_t(r[1])], s[std::size_t(r[2])])) {
+    if (degenerate(s[std::size_t(r[0])], s[std::size_t(r[1])], s[std::size_t(r[2])], thin_fraction)) {
       thin.push_back(r);
       continue;
     }
@@ -364,7 +383,7 @@ MedialMesh to_mesh(const Complex& k) {
     for (const Index i : t) used[std::size_t(i)] = true;
   for (const auto& e : tube_edges) {
     if (sheet_edges.count(e)) continue;
-    if (mesh.spheres[std::size_t(e[0])].head<3>() == mesh.spheres[std::size_t(e[1])].head<3>()) continue;
+    if (too_short(mesh.spheres[std::size_t(e[0])].head<3>(), mesh.spheres[std::size_t(e[1])].head<3>())) continue;
     mesh.edges.push_back(e);
     used[std::size_t(e[0])] = used[std::size_t(e[1])] = true;
   }
@@ -387,7 +406,7 @@ MedialMesh quadric_medial_mesh(const MedialGraph& graph, const QuadricOptions& o
   }
   r.euler_after = k.euler_characteristic();
   if (report != nullptr) *report = r;
-  return to_mesh(k);
+  return to_mesh(k, o.thin_triangle);
 }
 
 }  // namespace skelconv::reconstruct

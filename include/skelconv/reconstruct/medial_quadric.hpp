@@ -61,6 +61,11 @@ struct QuadricOptions {
   /// shortest edges then go first, and the spheres stay evenly spread. Small:
   /// it counts like an error of 1% of the edge's length at each plane.
   double length_weight = 1e-4;
+  /// A triangle whose smallest altitude is below this × its smallest
+  /// radius and this × its longest side becomes that side, a tube edge: along a tube the
+  /// Voronoi faces simplify to strips narrower than the tube, which SCALIS
+  /// triangles (normalised for a wide sheet) make too thin.
+  double thin_triangle = 0.25;
 };
 
 struct QuadricReport {
