@@ -63,8 +63,9 @@ std::string stage_report(const reconstruct::Stage& s, const TriangleMesh& input,
   if (progress) progress(fmt::format("measured {}: Hausdorff {:.4g}, RMS {:.4g} of the diagonal, Euler characteristic {}",
                                      s.name, d.hausdorff / d.diagonal, d.rms / d.diagonal, m.euler_characteristic));
   return text + fmt::format(", \"hausdorff\": {:.6g}, \"rms\": {:.6g}, \"diagonal\": {:.17g}, \"euler_characteristic\": {}, "
-                            "\"measure_seconds\": {:.3g}}}",
-                            d.hausdorff / d.diagonal, d.rms / d.diagonal, d.diagonal, m.euler_characteristic, m.seconds);
+                            "\"components\": {}, \"measure_seconds\": {:.3g}}}",
+                            d.hausdorff / d.diagonal, d.rms / d.diagonal, d.diagonal, m.euler_characteristic,
+                            m.components, m.seconds);
 }
 
 std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh& input,
@@ -72,10 +73,12 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
                         const std::function<void(std::string_view)>& progress, bool result_only) {
   std::string text = fmt::format("{{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
                                  "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, "
-                                 "\"input_euler_characteristic\": {}, \"medial_seconds\": {:.3g}, \"result\": \"{}\", \"stages\": [",
+                                 "\"input_euler_characteristic\": {}, \"input_components\": {}, \"medial_seconds\": {:.3g}, "
+                                 "\"result\": \"{}\", \"stages\": [",
                                  r.samples, r.medial_vertices, r.pruning.vertices_removed,
                                  r.pruning.branches_removed, r.spurs_removed, r.tolerance,
-                                 mesh_topology(input).euler_characteristic, r.medial_seconds, r.stages.back().name);
+                                 mesh_topology(input).euler_characteristic, mesh_topology(input).components,
+                                 r.medial_seconds, r.stages.back().name);
   for (std::size_t k = 0; k < r.stages.size(); ++k)
     text += (k == 0 ? "\n  " : ",\n  ") +
             stage_report(r.stages[k], input, options, progress, !result_only || k + 1 == r.stages.size());
@@ -114,9 +117,6 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("--medial-prune-span", options.medial.prune_span,
                       fmt::format("The medial path also prunes Voronoi vertices whose contact samples span less than "
                                   "this × the diagonal (default {})", options.medial.prune_span));
-  command->add_option("--medial-spacing", options.medial.spacing,
-                      fmt::format("Spheres of the medial mesh about this many local radii apart (default {})",
-                                  options.medial.spacing));
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "
@@ -128,6 +128,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                "all (default): mesh and measure every stage; result: the result stage only (the others keep their "
                "counts and times)")
       ->check(CLI::IsMember({"all", "result"}));
+  command->add_option("--measure-divisions", options.measure_divisions,
+                      "--report and --method auto mesh the skeleton with facets of the diagonal / this (default 100)")
+      ->check(CLI::Range(10.0, 1000.0));
   command->add_flag("--bezier-junctions", options.bezier_junctions,
                     "Join three branches by a cubic Bézier triangle (Ferley §2.4) of SCALIS triangles");
   command->add_option("--noise", options.noise,
@@ -156,6 +159,7 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     ro.prune_span = options.prune_span;
     ro.epsilon = options.epsilon;
     ro.junction_triangles = options.bezier_junctions;
+    ro.measure_divisions = options.measure_divisions;
     if (!options.quiet) ro.progress = [](std::string_view line) {
       std::fprintf(stderr, "skelconv skeletonize: %.*s\n", int(line.size()), line.data());
     };

@@ -39,6 +39,7 @@ struct SkeletonizeOptions {
   double epsilon = 0.02;
   bool bezier_junctions = false;
   double noise = 0.0;
+  double measure_divisions = 100.0;  ///< --measure-divisions (ReconstructOptions::measure_divisions)
   bool quiet = false;
   /// --max-triangles. The medial graph is the Delaunay triangulation of the
   /// samples: the vertices plus points spread over coarse triangles, at most

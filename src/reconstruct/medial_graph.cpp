@@ -107,6 +107,24 @@ MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_sample
       graph.edges.push_back(edge);
     }
   }
+  // Voronoi faces: the cells around each Delaunay edge, in the order the
+  // circulator gives (cyclic), kept when every one is an inner vertex.
+  std::vector<std::int32_t> polygon;
+  for (auto edge = delaunay.finite_edges_begin(); edge != delaunay.finite_edges_end(); ++edge) {
+    polygon.clear();
+    bool inner = true;
+    auto cell = delaunay.incident_cells(*edge);
+    const auto first = cell;
+    do {
+      const auto found = number.find(cell);
+      if (found == number.end()) {
+        inner = false;
+        break;
+      }
+      polygon.push_back(found->second);
+    } while (++cell != first);
+    if (inner && polygon.size() >= 3) graph.faces.push_back(polygon);
+  }
   return graph;
 }
 

@@ -9,6 +9,7 @@
 #include "skelconv/mesh/bounding_region.hpp"
 #include "skelconv/reconstruct/ball_fit.hpp"
 #include "skelconv/reconstruct/medial_graph.hpp"
+#include "skelconv/reconstruct/medial_quadric.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
@@ -63,24 +64,24 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   r.pruned = prune_medial_graph(graph, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
                      std::max(m.prune_span, o.prune_span) * diagonal)
                  .vertices_removed;
-  MedialMeshOptions mesh_options;
-  mesh_options.spacing = m.spacing;
-  mesh_options.radius_floor = m.radius_floor * diagonal;
-  // A sheet of n spheres has about 2n triangles, a tube about n edges: start
-  // at budget / 2 spheres and shrink until the primitives fit.
-  const auto build = [&graph, &mesh_options, &m](std::size_t spheres) {
-    mesh_options.max_spheres = std::max<std::size_t>(1, spheres);
-    MedialMesh mesh = simplify_medial_graph(graph, mesh_options);
+  QuadricOptions quadric;
+  quadric.budget = m.budget;
+  QuadricReport q;
+  MedialMesh mesh = quadric_medial_mesh(graph, quadric, &q);
+  extend_tube_ends(mesh, m.end_extension);
+  // Each tube end got one more edge: simplified further where that
+  // overruns the budget.
+  while (primitives(mesh) > m.budget && quadric.budget > 1) {
+    quadric.budget -= std::min(quadric.budget - 1, primitives(mesh) - m.budget);
+    mesh = quadric_medial_mesh(graph, quadric, &q);
     extend_tube_ends(mesh, m.end_extension);
-    return mesh;
-  };
-  MedialMesh mesh = build(m.budget / 2);
-  while (primitives(mesh) > m.budget && mesh_options.max_spheres > 1)
-    mesh = build(mesh_options.max_spheres * m.budget / primitives(mesh) * 9 / 10);
+  }
   if (o.progress)
-    o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} primitives)",
+    o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} "
+                           "primitives); {} collapses ({} refused by the link condition, {} covered loops closed), "
+                           "Euler characteristic of the medial complex {} -> {}",
                            mesh.spheres.size(), mesh.triangles.size(), mesh.edges.size(), mesh.isolated.size(),
-                           m.budget));
+                           m.budget, q.collapses, q.refused_by_link, q.loops_closed, q.euler_before, q.euler_after));
   Stage stage;
   stage.name = "medial";
   const std::vector<WeightedPoint> points =

@@ -35,7 +35,7 @@ std::size_t count_pieces(const std::vector<std::int32_t>& root) {
 }
 
 /// Keeps the vertices with keep[v], renumbered in their order, and the edges
-/// between two of them.
+/// and faces whose vertices are all kept.
 void compact(MedialGraph& graph, const std::vector<bool>& keep) {
   std::vector<std::int32_t> new_index(graph.vertices.size(), -1);
   std::vector<MedialVertex> vertices;
@@ -50,8 +50,15 @@ void compact(MedialGraph& graph, const std::vector<bool>& keep) {
     e.a = new_index[e.a], e.b = new_index[e.b];
     edges.push_back(e);
   }
+  std::vector<std::vector<std::int32_t>> faces;
+  for (std::vector<std::int32_t> f : graph.faces) {
+    bool kept = true;
+    for (std::int32_t& v : f) kept = kept && (v = new_index[std::size_t(v)]) >= 0;
+    if (kept) faces.push_back(std::move(f));
+  }
   graph.vertices = std::move(vertices);
   graph.edges = std::move(edges);
+  graph.faces = std::move(faces);
 }
 
 /// θ = 2 asin(|p⁻p⁺| / 2ρ) from the span |p⁻p⁺|, the ratio clamped to 1.

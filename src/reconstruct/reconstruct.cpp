@@ -37,8 +37,6 @@ void check_options(const ReconstructOptions& o) {
   if (!(m.prune_span >= 0.0 && m.prune_span < 0.5))
     throw InputError(fmt::format("must be in [0, 0.5) (× the bounding-box diagonal), got {}", m.prune_span),
                      "--medial-prune-span");
-  if (!(m.spacing > 0.0 && m.spacing <= 100.0))
-    throw InputError(fmt::format("must be in (0, 100] local radii, got {}", m.spacing), "--medial-spacing");
   if (m.budget == 0) throw InputError("must be at least 1", "--budget");
   if (o.method == SkeletonMethod::medial && o.junction_triangles)
     throw InputError("joins the branches of a curve skeleton: use it with --method curve or auto, not medial",
@@ -261,8 +259,9 @@ void curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
 
 /// Whether the medial stage is better than the curve path's result: when
 /// both can be meshed within the measuring budget, the one whose surface
-/// keeps the input's Euler characteristic (a detached foot or a tunnel
-/// is worse than a larger distance), then the smaller two-sided Hausdorff
+/// keeps the input's Euler characteristic and component count (a detached
+/// foot or a tunnel is worse than a larger distance; but one ball only
+/// where it is also closer), then the smaller two-sided Hausdorff
 /// distance; otherwise the smaller first-order RMS distance on the same
 /// area-weighted points (cheap, blind to topology). The measures taken are
 /// kept in the stages (Stage::measured), for a report to reuse.
@@ -284,12 +283,17 @@ bool choose_between(Stage& curve, Stage& medial, const TriangleMesh& surface, co
     };
     const bool curve_meshed = try_measure(curve), medial_meshed = try_measure(medial);
     if (!curve_meshed || !medial_meshed) return medial_meshed;
-    const long long input_euler = mesh_topology(surface).euler_characteristic;
-    const bool c_kept = curve.measured->euler_characteristic == input_euler;
-    const bool m_kept = medial.measured->euler_characteristic == input_euler;
+    const MeshTopology input = mesh_topology(surface);
+    const auto kept = [&input](const Stage& s) {
+      return s.measured->euler_characteristic == input.euler_characteristic && s.measured->components == input.components;
+    };
+    const bool c_kept = kept(curve), m_kept = kept(medial);
     const double c = curve.measured->distance.hausdorff, m = medial.measured->distance.hausdorff;
-    const bool better = m_kept != c_kept ? m_kept : m < c;
-    say(o, fmt::format("{}: Hausdorff {:.3g}, Euler characteristic {}kept; medial mesh: {:.3g}, {}kept: the result is the {}",
+    // One ball is kept only where it is closer: a ball keeps a genus-0
+    // input's topology whatever the shape, so topology alone must not
+    // choose it over a medial mesh (a fist, a CAD part).
+    const bool better = curve.name == "ball" ? !(c_kept && c < m) : m_kept != c_kept ? m_kept : m < c;
+    say(o, fmt::format("{}: Hausdorff {:.3g}, topology {}kept; medial mesh: {:.3g}, {}kept: the result is the {}",
                        curve.name, c / diagonal, c_kept ? "" : "not ", m / diagonal, m_kept ? "" : "not ",
                        better ? "medial mesh" : curve.name));
     return better;
@@ -440,8 +444,11 @@ namespace skelconv::reconstruct {
 
 namespace {
 
-/// The facet size measure_stage meshes at: `size`, or the diagonal / 100.
-double measure_size(const Vec3& lo, const Vec3& hi, double size) { return size > 0.0 ? size : (hi - lo).norm() / 100.0; }
+/// The facet size measure_stage meshes at: `size`, or the diagonal /
+/// ReconstructOptions::measure_divisions.
+double measure_size(const Vec3& lo, const Vec3& hi, double size, const ReconstructOptions& o) {
+  return size > 0.0 ? size : (hi - lo).norm() / o.measure_divisions;
+}
 
 std::pair<Vec3, Vec3> bounding_box(const TriangleMesh& surface) {
   Vec3 lo = surface.vertices.front(), hi = lo;
@@ -454,7 +461,7 @@ std::pair<Vec3, Vec3> bounding_box(const TriangleMesh& surface) {
 MeasureWork measure_work(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
                          double size) {
   const auto [lo, hi] = bounding_box(surface);
-  const double h = measure_size(lo, hi, size);
+  const double h = measure_size(lo, hi, size, options);
   MeasureWork work;
   work.primitives = primitive_counts(stage, options).total();
   // Nodes of the box at spacing h, one voxel of margin each side (the
@@ -481,7 +488,7 @@ SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, c
   MeshOptions mesh_options;
   mesh_options.iso = skeleton.iso();
   mesh_options.method = MeshMethod::grid;
-  mesh_options.size = measure_size(lo, hi, size);
+  mesh_options.size = measure_size(lo, hi, size, options);
   const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), mesh_options);
   if (mesh_out != nullptr) *mesh_out = mesh;
   return surface_distance(surface, mesh);
@@ -493,7 +500,9 @@ StageMeasure measure(const TriangleMesh& surface, const Stage& stage, const Reco
   TriangleMesh mesh;
   StageMeasure m;
   m.distance = measure_stage(surface, stage, options, 0.0, &mesh);
-  m.euler_characteristic = mesh_topology(mesh).euler_characteristic;
+  const MeshTopology topology = mesh_topology(mesh);
+  m.euler_characteristic = topology.euler_characteristic;
+  m.components = topology.components;
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return m;
 }

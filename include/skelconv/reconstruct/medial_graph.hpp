@@ -18,7 +18,13 @@
 // farthest Voronoi vertex of each sample's cell) are a subset of these; we
 // keep them all because only the full set is connected along the medial
 // axis (the poles alone are scattered points). The graph's edges are the
-// Voronoi edges between two kept vertices.
+// Voronoi edges between two kept vertices; its faces the Voronoi faces
+// (each dual to a Delaunay edge, a polygon of the cells around it) whose
+// vertices are all kept. A face whose polygon leaves the shape lies across
+// the surface (its Delaunay edge joins two neighbouring samples); the faces
+// left are the inner ones, the medial axis as a 2-complex of the shape's
+// homotopy type when the samples are dense (Amenta, Choi & Kolluri's inner
+// Voronoi diagram).
 #pragma once
 
 #include <array>
@@ -49,6 +55,9 @@ struct MedialGraph {
   std::vector<Vec3> samples;  ///< the input points, indexed by the fields above
   std::vector<MedialVertex> vertices;
   std::vector<MedialEdge> edges;
+  /// Voronoi faces: polygons of vertex indices in cyclic order (each
+  /// consecutive pair, and the last with the first, joined by an edge).
+  std::vector<std::vector<std::int32_t>> faces;
 };
 
 /// The inner Voronoi graph of the surface samples of `surface`

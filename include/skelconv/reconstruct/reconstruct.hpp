@@ -38,10 +38,6 @@ struct MedialOptions {
   /// this × the diagonal (pruning.hpp, the λ-medial axis): the spikes a
   /// coarse mesh's every sharp vertex sends into the medial axis.
   double prune_span = 0.0;
-  /// Spheres about this many local radii apart (medial_mesh.hpp), and the
-  /// floor of that radius unit, × the diagonal.
-  double spacing = 1.0;
-  double radius_floor = 0.01;
   /// A tube's free end is extended by one sphere this many radii beyond it
   /// (the medial axis stops short of a cap); 0 = none.
   double end_extension = 1.0;
@@ -130,16 +126,21 @@ struct ReconstructOptions {
   /// noisy tree (32 313 segments from the unpruned Voronoi graph) needs
   /// 5·10⁹, fifty times as much.
   double measure_budget = 2e8;
+  /// Measuring meshes a stage with facets of the diagonal / this (and
+  /// `auto` chooses on those measures): the resolution at which the
+  /// output's Euler characteristic must be the input's.
+  double measure_divisions = 100.0;
   /// Called with one line per step ("medial graph: 5230 vertices, ...").
   std::function<void(std::string_view)> progress;
 };
 
 /// A stage's skeleton meshed at the default size and measured against the
-/// input (measure): distances, the Euler characteristic of its surface, and
-/// the seconds meshing and measuring took.
+/// input (measure): distances, the Euler characteristic and the connected
+/// components of its surface, and the seconds meshing and measuring took.
 struct StageMeasure {
   SurfaceDistance distance;
   long long euler_characteristic = 0;
+  std::size_t components = 0;
   double seconds = 0.0;
 };
 
@@ -227,8 +228,8 @@ MeasureWork measure_work(const TriangleMesh& surface, const Stage& stage, const 
 std::string over_measure_budget(const MeasureWork& work, double budget);
 
 /// Meshes the skeleton file of `stage` at its iso (skelconv's mesher, grid
-/// method with facet size `size`, the input's diagonal / 100 when 0) and
-/// measures it against `surface`. `mesh_out`, if given, receives the mesh.
+/// method with facet size `size`, the input's diagonal /
+/// options.measure_divisions when 0) and measures it against `surface`. `mesh_out`, if given, receives the mesh.
 /// Throws InputError (located at the stage's name) when the estimated work
 /// exceeds options.measure_budget (over_measure_budget says why): callers
 /// that measure every stage check first and skip that one.

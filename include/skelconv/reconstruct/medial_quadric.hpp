@@ -1,0 +1,82 @@
+// skelconv/reconstruct/medial_quadric.hpp — the inner Voronoi medial mesh
+// simplified by edge collapses under the spherical quadric error (Q-MAT:
+// Li et al., "Q-MAT: Computing Medial Axis Transform by Quadratic Error
+// Minimization", ACM TOG 2015). docs/reconstruction_medial.md describes it.
+//
+// The start is the medial graph's 2-complex (medial_graph.hpp): its inner
+// Voronoi vertices as spheres (c, r), its Voronoi edges, and its Voronoi
+// faces cut into triangles (a fan from each polygon's first vertex).
+//
+// The error of a sphere s = (c, r) against a plane through q with unit
+// normal n (pointing out of the shape) is the signed distance between the
+// plane and the sphere, d(s) = n·(q − c) − r = k − ñ·s with ñ = (n, 1) and
+// k = n·q: zero when the sphere touches the plane from inside. Its square is
+// a quadric in s ∈ R⁴, sᵀ A s − 2 bᵀ s + k² with A = ñ ñᵀ, b = k ñ (the
+// SQEM). Each Voronoi ball touches the surface at its four samples; the
+// tangent planes there are the surface's, and a vertex's quadric is the sum
+// over them. A collapse of the edge (u, v) gives the merged sphere the sum
+// of both quadrics, minimised by the 4 × 4 system A s = b; where that is
+// singular (a tube's planes all contain its axis, so the centre may slide
+// along it) a small pull toward the edge's midpoint decides, and where the
+// solution is not finite or its radius not positive, the better of the two
+// ends and the midpoint is taken.
+//
+// Collapses go cheapest first. The link condition (Dey et al. 1999: the
+// common neighbours of u and v are exactly the apexes of the triangles on
+// the edge, and no triangle outside the edge is shared by the two links)
+// refuses every collapse that would change the complex's topology, so its
+// Euler characteristic stays, with two exceptions where the complex's
+// topology is not the shape's: a loop of three edges without its triangle
+// whose balls cover the triangle (at its centroid and the midpoints of its
+// sides: a hole in a sheet where pruning or a sliver left a Voronoi vertex
+// out; the balls are inside the shape, and a tunnel of the shape is not) is
+// closed, and a closed tetrahedron inside its balls (a cavity: a solid has
+// none) is flattened. Spikes (the medial axis's
+// response to every sharp vertex or noisy sample: a chain of shrinking balls
+// each nearly inside the next) are collapsed first: an edge's cost is its
+// quadric error times its stability ratio squared, (|c_u − c_v| − |r_u −
+// r_v|) / |c_u − c_v| ∈ [0, 1], which is near 0 for a ball inside its
+// neighbour and 1 across a sheet (a small term in the edge's length keeps
+// the spheres evenly spread where the error is zero). The collapses stop when the primitives
+// (triangles, edges in no triangle, spheres in no edge) fit the budget.
+#pragma once
+
+#include <cstddef>
+
+#include "skelconv/reconstruct/medial_graph.hpp"
+#include "skelconv/reconstruct/medial_mesh.hpp"
+
+namespace skelconv::reconstruct {
+
+struct QuadricOptions {
+  /// Collapse until the primitives are at most this many.
+  std::size_t budget = 500;
+  /// The pull toward the edge's midpoint, × the trace of the summed
+  /// quadric: small enough not to move a well-determined sphere (a relative
+  /// change of about this), large enough to fix a tube's free direction.
+  double regularisation = 1e-4;
+  /// Added to every cost before the stability ratio scales it: this × the
+  /// number of planes in the summed quadric × the edge's squared length.
+  /// Along a tube or across a flat sheet every collapse costs no error; the
+  /// shortest edges then go first, and the spheres stay evenly spread. Small:
+  /// it counts like an error of 1% of the edge's length at each plane.
+  double length_weight = 1e-4;
+  /// A triangle whose smallest altitude is below this × its smallest
+  /// radius and this × its longest side becomes that side, a tube edge: along a tube the
+  /// Voronoi faces simplify to strips narrower than the tube, which SCALIS
+  /// triangles (normalised for a wide sheet) make too thin.
+  double thin_triangle = 0.25;
+};
+
+struct QuadricReport {
+  std::size_t vertices_before = 0, triangles_before = 0;
+  long long euler_before = 0, euler_after = 0;  ///< V − E + T of the complex
+  std::size_t collapses = 0, refused_by_link = 0;
+  std::size_t loops_closed = 0;  ///< covered loops the collapses closed (the header)
+};
+
+/// The medial mesh of `graph` (its faces included) simplified as described
+/// above. Same graph, same mesh. Empty for an empty graph.
+MedialMesh quadric_medial_mesh(const MedialGraph& graph, const QuadricOptions& options, QuadricReport* report = nullptr);
+
+}  // namespace skelconv::reconstruct

@@ -1,0 +1,412 @@
+// Implementation of skelconv/reconstruct/medial_quadric.hpp.
+#include "skelconv/reconstruct/medial_quadric.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <queue>
+#include <set>
+#include <tuple>
+
+#include <Eigen/Dense>
+
+namespace skelconv::reconstruct {
+namespace {
+
+using Index = std::int32_t;
+using Triangle = std::array<Index, 3>;
+
+/// The spherical quadric sᵀ A s − 2 bᵀ s + c of the header.
+struct Quadric {
+  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d b = Eigen::Vector4d::Zero();
+  double c = 0.0;
+
+  /// The squared distance to the plane through q with outward unit normal n.
+  void add_plane(const Vec3& q, const Vec3& n) {
+    const Eigen::Vector4d m(n.x(), n.y(), n.z(), 1.0);
+    const double k = n.dot(q);
+    A += m * m.transpose();
+    b += k * m;
+    c += k * k;
+  }
+  Quadric& operator+=(const Quadric& o) {
+    A += o.A, b += o.b, c += o.c;
+    return *this;
+  }
+  double error(const Vec4& s) const { return std::max(0.0, s.dot(A * s) - 2.0 * b.dot(s) + c); }
+};
+
+Triangle sorted(Index a, Index b, Index c) {
+  Triangle t{a, b, c};
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+/// (|c_u − c_v| − |r_u − r_v|) / |c_u − c_v|, clamped to [0, 1]; 0 for
+/// coincident centres.
+double stability_ratio(const Vec4& u, const Vec4& v) {
+  const double d = (u.head<3>() - v.head<3>()).norm();
+  if (!(d > 0.0)) return 0.0;
+  return std::clamp((d - std::abs(u.w() - v.w())) / d, 0.0, 1.0);
+}
+
+/// The 2-complex being simplified: spheres with their quadrics, the
+/// neighbours of each (edges) and the triangles through each.
+class Complex {
+ public:
+  std::vector<Vec4> sphere;
+  std::vector<Quadric> quadric;
+  std::vector<std::vector<Index>> neighbours;  // sorted
+  std::vector<std::vector<Triangle>> triangles_at;
+  std::set<Triangle> triangles;
+  std::vector<bool> alive;
+  std::vector<unsigned> stamp;  // bumped whenever a vertex changes
+
+  bool has_edge(Index u, Index v) const {
+    const auto& n = neighbours[std::size_t(u)];
+    return std::binary_search(n.begin(), n.end(), v);
+  }
+  void add_edge(Index u, Index v) {
+    if (u == v) return;
+    for (const auto& [p, q] : {std::pair{u, v}, std::pair{v, u}}) {
+      auto& n = neighbours[std::size_t(p)];
+      const auto at = std::lower_bound(n.begin(), n.end(), q);
+      if (at == n.end() || *at != q) n.insert(at, q);
+    }
+  }
+  void remove_edge(Index u, Index v) {
+    for (const auto& [p, q] : {std::pair{u, v}, std::pair{v, u}}) {
+      auto& n = neighbours[std::size_t(p)];
+      const auto at = std::lower_bound(n.begin(), n.end(), q);
+      if (at != n.end() && *at == q) n.erase(at);
+    }
+  }
+  void add_triangle(const Triangle& t) {
+    if (t[0] == t[1] || t[1] == t[2] || !triangles.insert(t).second) return;
+    for (const Index i : t) triangles_at[std::size_t(i)].push_back(t);
+    add_edge(t[0], t[1]), add_edge(t[1], t[2]), add_edge(t[0], t[2]);
+  }
+  void remove_triangle(const Triangle& t) {
+    if (triangles.erase(t) == 0) return;
+    for (const Index i : t) std::erase(triangles_at[std::size_t(i)], t);
+  }
+
+  /// Whether the balls of a triangle's corners cover it, tested at its
+  /// centroid and the midpoints of its sides (each inside one of the three
+  /// balls). The balls are inside the shape: a triangle across a tunnel of
+  /// the shape crosses the tunnel, outside them.
+  bool covered(const std::array<Index, 3>& t) const {
+    const Vec4 &a = sphere[std::size_t(t[0])], &b = sphere[std::size_t(t[1])], &c = sphere[std::size_t(t[2])];
+    const auto inside = [&](const Vec3& p) {
+      for (const Vec4* s : {&a, &b, &c})
+        if ((p - s->head<3>()).norm() <= s->w()) return true;
+      return false;
+    };
+    const Vec3 pa = a.head<3>(), pb = b.head<3>(), pc = c.head<3>();
+    return inside((pa + pb + pc) / 3) && inside((pa + pb) / 2) && inside((pb + pc) / 2) && inside((pa + pc) / 2);
+  }
+
+  /// The link condition for collapsing (u, v) (the header), except where
+  /// the topology it would keep is not the shape's: a loop u–v–w without
+  /// its triangle, inside the balls of its corners (a hole in a sheet where
+  /// the Voronoi faces had a sliver, not a tunnel of the shape), and a
+  /// closed tetrahedron inside them (a cavity, which a solid has none of).
+  /// Such loops are returned in `fill`: the collapse closes them.
+  bool link_condition(Index u, Index v, std::vector<Index>& fill) const {
+    fill.clear();
+    std::vector<Index> apexes;
+    for (const Triangle& t : triangles_at[std::size_t(u)])
+      if (std::find(t.begin(), t.end(), v) != t.end())
+        for (const Index w : t)
+          if (w != u && w != v) apexes.push_back(w);
+    std::sort(apexes.begin(), apexes.end());
+    const auto& nu = neighbours[std::size_t(u)];
+    const auto& nv = neighbours[std::size_t(v)];
+    std::vector<Index> common;
+    std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
+    for (const Index w : common) {
+      if (std::binary_search(apexes.begin(), apexes.end(), w)) continue;
+      if (!covered({u, v, w})) return false;
+      fill.push_back(w);
+    }
+    // A triangle (u, w, x) whose opposite edge also spans (v, w, x): the
+    // four bound a tetrahedron, which the collapse flattens.
+    for (const Triangle& t : triangles_at[std::size_t(u)]) {
+      if (std::find(t.begin(), t.end(), v) != t.end()) continue;
+      Index w = -1, x = -1;
+      for (const Index i : t)
+        if (i != u) (w < 0 ? w : x) = i;
+      if (triangles.count(sorted(v, w, x)) && !(covered({u, v, w}) && covered({u, w, x}) && covered({v, w, x})))
+        return false;
+    }
+    return true;
+  }
+
+  long long euler_characteristic() const {
+    long long v = 0, e = 0;
+    for (std::size_t i = 0; i < sphere.size(); ++i) {
+      if (!alive[i]) continue;
+      ++v;
+      for (const Index j : neighbours[i]) e += Index(i) < j;
+    }
+    return v - e + (long long)triangles.size();
+  }
+
+  /// Triangles + edges in no triangle + spheres in no edge.
+  std::size_t primitives() const {
+    std::size_t count = triangles.size();
+    for (std::size_t i = 0; i < sphere.size(); ++i) {
+      if (!alive[i]) continue;
+      if (neighbours[i].empty()) ++count;
+      for (const Index j : neighbours[i]) {
+        if (j < Index(i)) continue;
+        bool in_triangle = false;
+        for (const Triangle& t : triangles_at[i]) in_triangle = in_triangle || std::find(t.begin(), t.end(), j) != t.end();
+        count += !in_triangle;
+      }
+    }
+    return count;
+  }
+};
+
+Complex initial_complex(const MedialGraph& graph) {
+  Complex k;
+  const std::size_t n = graph.vertices.size();
+  k.sphere.resize(n);
+  k.quadric.resize(n);
+  k.neighbours.resize(n);
+  k.triangles_at.resize(n);
+  k.alive.assign(n, true);
+  k.stamp.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const MedialVertex& m = graph.vertices[i];
+    k.sphere[i] = Vec4(m.centre.x(), m.centre.y(), m.centre.z(), m.radius);
+    // Contact planes only where the samples are known (a graph built by
+    // hand has none: the vertex then starts with a zero quadric).
+    if (graph.samples.empty()) continue;
+    for (const std::int32_t s : m.samples) {
+      const Vec3& q = graph.samples[std::size_t(s)];
+      const Vec3 out = q - m.centre;
+      if (out.norm() > 0.0) k.quadric[i].add_plane(q, out.normalized());
+    }
+  }
+  for (const MedialEdge& e : graph.edges) k.add_edge(e.a, e.b);
+  for (const auto& face : graph.faces)
+    for (std::size_t j = 1; j + 1 < face.size(); ++j) k.add_triangle(sorted(face[0], face[j], face[j + 1]));
+  return k;
+}
+
+struct Candidate {
+  double cost = 0.0;
+  Index u = 0, v = 0;
+  unsigned stamp_u = 0, stamp_v = 0;
+  Vec4 merged;
+  bool operator>(const Candidate& o) const { return std::tie(cost, u, v) > std::tie(o.cost, o.u, o.v); }
+};
+
+class Simplifier {
+ public:
+  Simplifier(Complex& k, const QuadricOptions& o) : k_(k), o_(o) {
+    for (Index u = 0; u < Index(k.sphere.size()); ++u)
+      for (const Index v : k.neighbours[std::size_t(u)])
+        if (u < v) push(u, v);
+  }
+
+  /// Collapses until the primitives fit the budget or no collapse is left.
+  void run(QuadricReport& report) {
+    std::size_t live = std::size_t(std::count(k_.alive.begin(), k_.alive.end(), true));
+    std::size_t uncounted = 0;  // collapses before the primitives are counted again
+    std::vector<Index> fill;
+    while (!queue_.empty()) {
+      // Counting the primitives is linear in the complex: only near the
+      // end, and no more often than needed (a collapse removes at most a
+      // few: the triangles and the edge on it).
+      if (live <= 4 * o_.budget && uncounted == 0) {
+        const std::size_t p = k_.primitives();
+        if (p <= o_.budget) break;
+        uncounted = (p - o_.budget) / 4;
+      } else if (uncounted > 0) {
+        --uncounted;
+      }
+      const Candidate c = queue_.top();
+      queue_.pop();
+      if (!k_.alive[std::size_t(c.u)] || !k_.alive[std::size_t(c.v)] || k_.stamp[std::size_t(c.u)] != c.stamp_u ||
+          k_.stamp[std::size_t(c.v)] != c.stamp_v || !k_.has_edge(c.u, c.v))
+        continue;
+      if (!k_.link_condition(c.u, c.v, fill)) {
+        ++report.refused_by_link;
+        blocked_[c.u].push_back(c.v);
+        blocked_[c.v].push_back(c.u);
+        continue;
+      }
+      // A covered loop is closed by its triangle, which the collapse removes
+      // with the edge: u–w and v–w become one edge.
+      for (const Index w : fill) k_.add_triangle(sorted(c.u, c.v, w));
+      report.loops_closed += fill.size();
+      collapse(c);
+      ++report.collapses;
+      --live;
+    }
+  }
+
+ private:
+  /// The merged sphere of (u, v) and its cost.
+  void push(Index u, Index v) {
+    const Vec4 &su = k_.sphere[std::size_t(u)], &sv = k_.sphere[std::size_t(v)];
+    Quadric q = k_.quadric[std::size_t(u)];
+    q += k_.quadric[std::size_t(v)];
+    const Vec4 mid = 0.5 * (su + sv);
+    const double lambda = o_.regularisation * std::max(q.A.trace(), 1e-300);
+    const Eigen::Matrix4d A = q.A + lambda * Eigen::Matrix4d::Identity();
+    const Vec4 solved = A.ldlt().solve(q.b + lambda * mid);
+    Vec4 best = mid;
+    double best_error = std::numeric_limits<double>::infinity();
+    const double smallest = 0.5 * std::min(su.w(), sv.w());
+    if (solved.allFinite() && solved.w() > smallest) best = solved, best_error = q.error(solved);
+    for (const Vec4& s : {su, sv, mid}) {
+      const double e = q.error(s);
+      if (e < best_error) best = s, best_error = e;
+    }
+    Candidate c;
+    const double length = o_.length_weight * 0.5 * q.A.trace() * (su.head<3>() - sv.head<3>()).squaredNorm();
+    c.cost = (best_error + length) * std::pow(stability_ratio(su, sv), 2);
+    c.u = u, c.v = v;
+    c.stamp_u = k_.stamp[std::size_t(u)], c.stamp_v = k_.stamp[std::size_t(v)];
+    c.merged = best;
+    queue_.push(c);
+  }
+
+  /// v merged into u at the candidate's sphere.
+  void collapse(const Candidate& c) {
+    const Index u = c.u, v = c.v;
+    const std::vector<Triangle> through_v = k_.triangles_at[std::size_t(v)];
+    for (const Triangle& t : through_v) k_.remove_triangle(t);
+    const std::vector<Index> next_v = k_.neighbours[std::size_t(v)];
+    for (const Index w : next_v) k_.remove_edge(v, w);
+    for (const Index w : next_v) k_.add_edge(u, w);
+    for (const Triangle& t : through_v) {
+      if (std::find(t.begin(), t.end(), u) != t.end()) continue;  // on the edge: gone
+      Triangle moved = t;
+      for (Index& i : moved)
+        if (i == v) i = u;
+      k_.add_triangle(sorted(moved[0], moved[1], moved[2]));
+    }
+    k_.alive[std::size_t(v)] = false;
+    k_.quadric[std::size_t(u)] += k_.quadric[std::size_t(v)];
+    k_.sphere[std::size_t(u)] = c.merged;
+    ++k_.stamp[std::size_t(u)];
+    for (const Index w : k_.neighbours[std::size_t(u)]) push(u, w);
+    // Collapses the link condition refused near u may be allowed now.
+    std::vector<Index> around = k_.neighbours[std::size_t(u)];
+    around.push_back(u);
+    for (const Index w : around) {
+      auto found = blocked_.find(w);
+      if (found == blocked_.end()) continue;
+      const std::vector<Index> others = std::move(found->second);
+      blocked_.erase(found);
+      for (const Index x : others)
+        if (x != u && w != u && k_.alive[std::size_t(x)] && k_.has_edge(w, x)) push(std::min(w, x), std::max(w, x));
+    }
+  }
+
+  Complex& k_;
+  const QuadricOptions& o_;
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> queue_;
+  std::map<Index, std::vector<Index>> blocked_;  // lookup only: never iterated
+};
+
+/// Whether the segment p q is too short for the skeleton file (its length
+/// below 1e-8 × the largest coordinate magnitude, docs/cli_skeleton.md),
+/// with margin.
+bool too_short(const Vec3& p, const Vec3& q) {
+  return (p - q).norm() <= 1e-6 * std::max(p.cwiseAbs().maxCoeff(), q.cwiseAbs().maxCoeff());
+}
+
+/// A triangle better given as its longest side: too thin for the skeleton
+/// file's polygon rule (area ≥ 1e-8 × diameter², docs/cli_skeleton.md), or
+/// narrower than `thin` × its smallest radius and × its longest side. Along a tube the Voronoi
+/// faces are a narrow tangle about the axis, and their simplified triangles
+/// strips far narrower than the tube: a SCALIS triangle's field is
+/// normalised for a wide sheet, and a strip of them falls short of a tube
+/// that a segment of the same radius makes.
+bool degenerate(const Vec4& a, const Vec4& b, const Vec4& c, double thin) {
+  const Vec3 p = a.head<3>(), q = b.head<3>(), r = c.head<3>();
+  if (too_short(p, q) || too_short(q, r) || too_short(p, r)) return true;
+  const double diameter = std::max({(q - p).norm(), (r - q).norm(), (p - r).norm()});
+  const double area = (q - p).cross(r - p).norm() / 2;
+  // The smallest altitude is 2 × area / the longest side; a strip is also
+  // narrow for its length (a sheet's triangles, small beside its radius
+  // where it is thick, are not).
+  const double altitude = 2 * area / diameter;
+  return area < 1e-6 * diameter * diameter ||
+         (altitude < thin * std::min({a.w(), b.w(), c.w()}) && altitude < thin * diameter);
+}
+
+/// The live complex as a MedialMesh, renumbered in order. A degenerate
+/// triangle gives its longest side as a tube edge (if no other triangle
+/// holds it); an edge too short for the skeleton file is dropped.
+MedialMesh to_mesh(const Complex& k, double thin_fraction) {
+  MedialMesh mesh;
+  std::vector<Index> number(k.sphere.size(), -1);
+  for (std::size_t i = 0; i < k.sphere.size(); ++i)
+    if (k.alive[i]) number[i] = Index(mesh.spheres.size()), mesh.spheres.push_back(k.sphere[i]);
+  std::set<std::array<Index, 2>> sheet_edges, tube_edges;
+  std::vector<Triangle> thin;
+  for (const Triangle& t : k.triangles) {
+    const Triangle r{number[std::size_t(t[0])], number[std::size_t(t[1])], number[std::size_t(t[2])]};
+    const auto& s = mesh.spheres;
+    if (degenerate(s[std::size_t(r[0])], s[std::size_t(r[1])], s[std::size_t(r[2])], thin_fraction)) {
+      thin.push_back(r);
+      continue;
+    }
+    mesh.triangles.push_back(r);
+    sheet_edges.insert({r[0], r[1]}), sheet_edges.insert({r[1], r[2]}), sheet_edges.insert({r[0], r[2]});
+  }
+  for (std::size_t i = 0; i < k.sphere.size(); ++i)
+    for (const Index j : k.neighbours[i])
+      if (Index(i) < j) tube_edges.insert({number[i], number[std::size_t(j)]});
+  for (const Triangle& t : thin) {
+    // Its longest side, the other two dropped (they run along it).
+    std::array<Index, 2> longest{t[0], t[1]};
+    double length = -1.0;
+    for (const auto& e : {std::array<Index, 2>{t[0], t[1]}, std::array<Index, 2>{t[1], t[2]}, std::array<Index, 2>{t[0], t[2]}}) {
+      const double l = (mesh.spheres[std::size_t(e[0])].head<3>() - mesh.spheres[std::size_t(e[1])].head<3>()).norm();
+      if (l > length) length = l, longest = e;
+      tube_edges.erase(e);
+    }
+    tube_edges.insert(longest);
+  }
+  std::vector<bool> used(mesh.spheres.size(), false);
+  for (const Triangle& t : mesh.triangles)
+    for (const Index i : t) used[std::size_t(i)] = true;
+  for (const auto& e : tube_edges) {
+    if (sheet_edges.count(e)) continue;
+    if (too_short(mesh.spheres[std::size_t(e[0])].head<3>(), mesh.spheres[std::size_t(e[1])].head<3>())) continue;
+    mesh.edges.push_back(e);
+    used[std::size_t(e[0])] = used[std::size_t(e[1])] = true;
+  }
+  for (Index i = 0; i < Index(mesh.spheres.size()); ++i)
+    if (!used[std::size_t(i)]) mesh.isolated.push_back(i);
+  return mesh;
+}
+
+}  // namespace
+
+MedialMesh quadric_medial_mesh(const MedialGraph& graph, const QuadricOptions& o, QuadricReport* report) {
+  QuadricReport r;
+  Complex k = initial_complex(graph);
+  r.vertices_before = k.sphere.size();
+  r.triangles_before = k.triangles.size();
+  r.euler_before = k.euler_characteristic();
+  if (!k.sphere.empty()) {
+    Simplifier simplifier(k, o);
+    simplifier.run(r);
+  }
+  r.euler_after = k.euler_characteristic();
+  if (report != nullptr) *report = r;
+  return to_mesh(k, o.thin_triangle);
+}
+
+}  // namespace skelconv::reconstruct
