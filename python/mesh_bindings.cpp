@@ -168,7 +168,7 @@ void add_mesh_bindings(py::module_& m, py::class_<Skeleton>& skeleton) {
       "skeletonize",
       [](const DoubleArray& vertices, const IndexArray& triangles, const std::string& method, std::size_t budget,
          std::optional<double> medial_prune_angle, std::optional<double> medial_prune_span,
-         std::optional<double> medial_spacing, std::optional<double> prune_angle, std::optional<double> prune_span,
+         std::optional<double> prune_angle, std::optional<double> prune_span,
          std::optional<double> epsilon, bool bezier_junctions, double noise, std::optional<std::size_t> max_triangles) {
         // The library's defaults are the command's; an argument given replaces one.
         reconstruct::ReconstructOptions options;
@@ -176,7 +176,6 @@ void add_mesh_bindings(py::module_& m, py::class_<Skeleton>& skeleton) {
         options.medial.budget = budget;
         options.medial.prune_angle_degrees = medial_prune_angle.value_or(options.medial.prune_angle_degrees);
         options.medial.prune_span = medial_prune_span.value_or(options.medial.prune_span);
-        options.medial.spacing = medial_spacing.value_or(options.medial.spacing);
         options.prune_angle_degrees = prune_angle.value_or(options.prune_angle_degrees);
         options.prune_span = prune_span.value_or(options.prune_span);
         options.epsilon = epsilon.value_or(options.epsilon);
@@ -187,7 +186,7 @@ void add_mesh_bindings(py::module_& m, py::class_<Skeleton>& skeleton) {
       },
       py::arg("vertices"), py::arg("triangles"), py::arg("method") = "auto",
       py::arg("budget") = reconstruct::MedialOptions{}.budget, py::arg("medial_prune_angle") = py::none(),
-      py::arg("medial_prune_span") = py::none(), py::arg("medial_spacing") = py::none(),
+      py::arg("medial_prune_span") = py::none(),
       py::arg("prune_angle") = py::none(), py::arg("prune_span") = py::none(), py::arg("epsilon") = py::none(),
       py::arg("bezier_junctions") = false, py::arg("noise") = 0.0, py::arg("max_triangles") = py::none(),
       "The skeleton of SCALIS primitives whose surface approximates a closed mesh, as `skelconv skeletonize` "
