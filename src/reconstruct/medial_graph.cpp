@@ -8,6 +8,7 @@
 #include <set>
 
 #include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Random.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
@@ -77,6 +78,13 @@ MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_sample
     const Vec3& v = graph.samples[k];
     points.emplace_back(Point(v.x(), v.y(), v.z()), std::int32_t(k));
   }
+  // The range insertion sorts the points along a space-filling curve with a
+  // random shuffle drawn from CGAL's global generator, whose state the
+  // previous calls of the process moved: the cell order, and with it the
+  // order of the medial vertices and every tie after, would depend on what
+  // ran before. Reseeding makes the graph a function of the input alone
+  // (the command and the Python module give the same skeleton).
+  CGAL::get_default_random() = CGAL::Random(0);
   const Delaunay delaunay(points.begin(), points.end());
 
   // Inner Voronoi vertices, numbered in the triangulation's cell order (a
