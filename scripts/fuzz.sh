@@ -8,7 +8,7 @@
 # (libFuzzer replays them first); a new failing input is written to
 # build/fuzz/crashes/ and fails the run (fix the reader, then add the input
 # to tests/data/fuzz/NAME/, which the ctests fuzz_replay_NAME replay in CI).
-# Part of README's main job; runs alone too.
+# Part of the check suite (scripts/checks.sh); runs alone too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${SKELCONV_FUZZ_SECONDS:-30}"

@@ -8,14 +8,14 @@
 # mutation fuzzer over skeleton files (tests/fuzz_skeletons.cpp) for a fixed
 # number of iterations. Any report fails the run: UBSan does not recover,
 # ASan aborts.
-# Part of README's main job (scripts/main_job.sh); runs alone too.
+# Part of the check suite (scripts/checks.sh); runs alone too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 iterations="${SKELCONV_SANITIZE_FUZZ_ITERATIONS:-400}"
 
 # The fuzzer's driver only mutates files and starts the command under test
 # (build/asan/src/skelconv): the release build's driver serves when it is
-# there (the main job builds it), so the ASan build compiles the runtime,
+# there (the check suite builds it), so the ASan build compiles the runtime,
 # the command and the unit tests only.
 driver=build/release/tests/skelconv_fuzz_skeletons
 targets=(skelconv skelconv_tests skelconv_reconstruct_tests skelconv_mesh_test
