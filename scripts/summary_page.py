@@ -21,25 +21,13 @@ import os
 import shutil
 import sys
 
-# Zanni et al. 2013, Table 4, as printed (checked against the paper's PDF):
-# +, ×, / and (√, atan, ln) per evaluation of f, ∇f, and f and ∇f together.
-PAPER_TABLE4 = [
-    ("SCALIS Cauchy 4", "scalis_segment_cauchy_i4",
-     [(29, 38, 4, 1, 2, 1), (38, 62, 6, 1, 2, 0), (47, 81, 6, 1, 2, 1)]),
-    ("SCALIS inverse 3", "scalis_segment_inverse_i3",
-     [(25, 33, 5, 5, 0, 1), (32, 58, 5, 2, 0, 0), (40, 71, 5, 5, 0, 1)]),
-    ("SCALIS compact 4", "scalis_segment_compact_i4",
-     [(43, 82, 3, 0, 0, 1), (37, 67, 3, 0, 0, 0), (50, 102, 3, 0, 0, 1)]),
-    ("SCALIS compact 6", "scalis_segment_compact_i6",
-     [(71, 144, 3, 0, 0, 1), (62, 125, 3, 0, 0, 0), (83, 172, 3, 0, 0, 1)]),
-    ("classical inverse 3, linear weight", "segment_inverse_i3_w1",
-     [(18, 20, 4, 2, 0, 0), (26, 46, 4, 2, 0, 0), (29, 50, 4, 2, 0, 0)]),
-    ("classical Cauchy 4, linear weight", "segment_cauchy_i4_w1",
-     [(21, 26, 4, 1, 2, 0), (29, 40, 6, 1, 2, 0), (32, 58, 6, 1, 2, 0)]),
-    ("classical Cauchy 4, cubic weight", "segment_cauchy_i4_w3",
-     [(27, 34, 4, 1, 2, 1), (36, 59, 6, 1, 2, 0), (45, 77, 6, 1, 2, 1)]),
-]
-OUTPUTS = ["f", "grad", "f_and_grad"]
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "bench"))
+sys.path.insert(0, os.path.join(ROOT, "papers_figures"))
+from summarize import OUTPUTS, PAPER_TABLE4, fmt_ops  # noqa: E402  (the paper's Table 4: one copy)
+from figures.zanni2013_table4 import FUNCTIONS  # noqa: E402  (each row's generated function)
+
+OUTPUT_LABELS = {"f": "f", "grad": "∇f", "f_and_grad": "f and ∇f"}
 # A goal the code does not meet yet: reported as measured, not a failure.
 SHORTFALL = "shortfall"
 OUTPUT_LABELS = {"f": "f", "grad": "∇f", "f_and_grad": "f and ∇f"}
@@ -91,10 +79,6 @@ def opcount_rows(path):
         for row in csv.DictReader(handle):
             counts[row["function"]] = tuple(int(row[k]) for k in ("add", "mul", "div", "sqrt", "atan", "log"))
     return counts
-
-
-def fmt_ops(ops):
-    return f"{ops[0]}, {ops[1]}, {ops[2]} ({ops[3]},{ops[4]},{ops[5]})"
 
 
 class Page:
@@ -176,9 +160,9 @@ def main():
 
     counts = opcount_rows(args.opcounts)
     op_rows, below, compared, generated = [], 0, 0, 0
-    for label, function, paper in PAPER_TABLE4:
+    for label, _, paper in PAPER_TABLE4:
         for output, theirs in zip(OUTPUTS, paper):
-            ours = counts.get(f"{function}_{output}")
+            ours = counts.get(f"{FUNCTIONS[label]}_{output}")
             if ours is None:
                 op_rows.append((label, OUTPUT_LABELS[output], fmt_ops(theirs), "not generated", ""))
                 continue
