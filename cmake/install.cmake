@@ -61,6 +61,7 @@ set(SKELCONV_INSTALLED_DETAIL_HEADERS
   polygon_angle_integrals.hpp
   polygon_far_field.hpp
   scaled_frame.hpp
+  scalis_compact_support.hpp
   stable_recurrence.hpp
   support_gap.hpp)
 # Every installed header belongs to an installed library. Not installed,

@@ -13,7 +13,7 @@
 #include <skelconv/detail/polygon_angle_integrals.hpp>
 #include <skelconv/detail/stable_recurrence.hpp>
 #include <skelconv/detail/support_gap.hpp>
-#include <skelconv/primitives/scalis_compact_support.hpp>
+#include <skelconv/detail/scalis_compact_support.hpp>
 
 #include "tools/counting_scalar.hpp"  // the same counting scalar the benchmarks use
 
@@ -212,7 +212,7 @@ OpCount scalis_compact_around_closed_form(int degree, bool with_grad) {
   in.tau1 = Counted(0.6);
   in.sigma = Counted(2);
   return tally_of([&] {
-    using namespace scalis_compact_detail;
+    using namespace detail;
     const Prepared<Counted> pr = prepare(degree, in);
     if (pr.done || pr.support.root_at_t1 >= 0 || pr.support.root_at_t2 >= 0)
       throw std::logic_error("scalis_compact_around_closed_form: the sample point is not generic");

@@ -61,7 +61,7 @@ OpCount point_support_gap();
 OpCount line_support_gap();
 
 /// The compact SCALIS segment's work around its generated closed form
-/// (skelconv/primitives/scalis_compact_support.hpp): prepare, closed_form_input
+/// (skelconv/detail/scalis_compact_support.hpp): prepare, closed_form_input
 /// and finish, at a point inside the support with both ends of the segment
 /// inside it (the generic path: the plain products of support_depths, no
 /// root clips the segment), F alone or F and ∇F.

@@ -29,7 +29,7 @@ namespace {
 using LD = long double;
 
 TEST(GaussianSegment, MatchesTheDefinitionIntegral) {
-  static const gaussian_segment::GaussLegendre<LD, 20> rule;
+  static const detail::gaussian_segment::GaussLegendre<LD, 20> rule;
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> U(0, 1);
   for (int n = 0; n < 800; ++n) {
@@ -78,8 +78,8 @@ TEST(GaussianSegment, MatchesTheDefinitionIntegral) {
     f *= L;
     for (LD& gi : g) gi *= L;
     std::array<double, 3> grad{};
-    const double value = constant_weight ? gaussian_segment::ClosedForm<double, 0>::f_and_grad(in, grad)
-                                         : gaussian_segment::ClosedForm<double, 3>::f_and_grad(in, grad);
+    const double value = constant_weight ? detail::gaussian_segment::ClosedForm<double, 0>::f_and_grad(in, grad)
+                                         : detail::gaussian_segment::ClosedForm<double, 3>::f_and_grad(in, grad);
     EXPECT_NEAR(value, double(f), 1e-13 * double(f)) << "sample " << n;
     const double gnorm = double(std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]));
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(grad[i], double(g[i]), 1e-12 * gnorm) << "sample " << n;

@@ -402,10 +402,10 @@ TEST(ScalisCompact, ClosedFormRegions) {
         const ScalisReference ref = reference.evaluate({KernelFamily::compact, degree}, widen(in));
         if (ref.empty) continue;
         summary.add(F, g, ref);
-        const auto prepared = scalis_compact_detail::prepare(degree, in);
+        const auto prepared = skelconv::detail::prepare(degree, in);
         ScalisCompactIntegrals<double> integrals{};
         if (!prepared.done &&
-            generated::scalis_segment_compact_closed_form(degree, 2, scalis_compact_detail::closed_form_input(prepared),
+            generated::scalis_segment_compact_closed_form(degree, 2, skelconv::detail::closed_form_input(prepared),
                                                           integrals))
           ++closed;
       }

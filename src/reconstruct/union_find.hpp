@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace skelconv::reconstruct::detail {
+namespace skelconv::detail {
 
 /// The root of x in the forest `parent` (parent[r] == r at a root), halving
 /// the path on the way (every node visited then points to its grandparent).
@@ -15,4 +15,4 @@ inline std::int32_t find_root(std::vector<std::int32_t>& parent, std::int32_t x)
   return x;
 }
 
-}  // namespace skelconv::reconstruct::detail
+}  // namespace skelconv::detail

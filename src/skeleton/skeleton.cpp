@@ -224,7 +224,7 @@ FieldSample Skeleton::evaluate_node(NodeId id, const Vec3& p, Need need, const d
       const std::span<const ScalarSample<double>> view(children.data(), children.size());
       if (node.blend.kind == BlendKind::union_max) return from_scalar(blend_union(view));  // one child's sample
       const FieldSample result = from_scalar(blend_super_elliptic(node.blend, view));
-      if (!blend_detail::any_infinite(view)) {
+      if (!detail::any_infinite(view)) {
         require_finite_blend(result, need != Need::gradient, need != Need::value, node.location.c_str(), p);
       }
       return result;

@@ -18,7 +18,7 @@
 #include "skelconv/mesh/implicit_field.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
 
-namespace skelconv::view_detail {
+namespace skelconv::detail {
 namespace {
 
 static_assert(std::endian::native == std::endian::little,
@@ -119,4 +119,4 @@ std::string mesh_preview_page(const Skeleton& skeleton, const ViewPageOptions& o
   return fill(page, "/*@@SKELETON_DATA@@*/", script_safe(data.dump(1)));
 }
 
-}  // namespace skelconv::view_detail
+}  // namespace skelconv::detail

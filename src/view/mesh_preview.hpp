@@ -6,7 +6,7 @@
 
 #include "skelconv/view/view_page.hpp"
 
-namespace skelconv::view_detail {
+namespace skelconv::detail {
 
 /// A triangle mesh of f = iso (mesh_iso_surface, default size and distance)
 /// embedded in the page (base64 float32 positions and normals, uint32
@@ -14,4 +14,4 @@ namespace skelconv::view_detail {
 /// camera. Fills report.triangles. Throws InputError when the mesh is empty.
 std::string mesh_preview_page(const Skeleton& skeleton, const ViewPageOptions& options, ViewPageReport& report);
 
-}  // namespace skelconv::view_detail
+}  // namespace skelconv::detail

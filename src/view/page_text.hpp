@@ -12,7 +12,7 @@
 #include "skelconv/geometry.hpp"
 #include "skelconv/skeleton/skeleton.hpp"
 
-namespace skelconv::view_detail {
+namespace skelconv::detail {
 
 /// The camera's vertical field of view, radians (about 40 degrees: little
 /// perspective distortion, the object large in the window).
@@ -41,4 +41,4 @@ struct Frame {
 /// `cross` through its centre.
 nlohmann::json overlay_lines(const Skeleton& skeleton, const Frame& frame, double cross);
 
-}  // namespace skelconv::view_detail
+}  // namespace skelconv::detail

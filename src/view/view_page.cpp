@@ -25,11 +25,11 @@
 
 namespace skelconv {
 
-using view_detail::field_of_view;
-using view_detail::fill;
-using view_detail::Frame;
-using view_detail::script_safe;
-using view_detail::vec_json;
+using detail::field_of_view;
+using detail::fill;
+using detail::Frame;
+using detail::script_safe;
+using detail::vec_json;
 
 namespace {
 
@@ -575,7 +575,7 @@ std::string ray_march_page(const Skeleton& skeleton, const ViewPageOptions& opti
                                {"distance", 1.25 * view_radius / std::sin(0.5 * field_of_view)},
                                {"mode", "ray marching"},
                                // Points: a cross 1/50 of the sphere's radius.
-                               {"overlay", view_detail::overlay_lines(skeleton, frame, 0.02 * radius)},
+                               {"overlay", detail::overlay_lines(skeleton, frame, 0.02 * radius)},
                                {"primitives", primitives}};
   std::string shader = embedded::view_march_glsl;
   shader = fill(shader, "//@@KERNELS@@", kernels_text(kernels));
@@ -602,10 +602,10 @@ std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& opti
     r.mesh_preview = true;
     r.reason = refusal.what();
   }
-  return view_detail::mesh_preview_page(skeleton, options, r);
+  return detail::mesh_preview_page(skeleton, options, r);
 }
 
-namespace view_detail {
+namespace detail {
 
 std::string fill(std::string text, std::string_view marker, const std::string& value) {
   const std::size_t at = text.find(marker);
@@ -641,5 +641,5 @@ nlohmann::json overlay_lines(const Skeleton& skeleton, const Frame& frame, doubl
   return lines;
 }
 
-}  // namespace view_detail
+}  // namespace detail
 }  // namespace skelconv

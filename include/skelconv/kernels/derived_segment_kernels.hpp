@@ -34,7 +34,7 @@
 
 namespace skelconv {
 
-namespace derived_detail {
+namespace detail {
 
 /// "w0", "(w0 + w1 t)", … as in the generated equations.
 inline std::string weight_text(int weight_degree) {
@@ -151,7 +151,7 @@ void add_family(std::vector<generated::SegmentKernel<T>>& out) {
   }
 }
 
-}  // namespace derived_detail
+}  // namespace detail
 
 /// Every derived segment kernel (file comment), in the order of
 /// kernels::RadialKernel, then by weight degree.
@@ -160,7 +160,7 @@ std::span<const generated::SegmentKernel<T>> derived_segment_kernels() {
   static const std::vector<generated::SegmentKernel<T>> table = [] {
     std::vector<generated::SegmentKernel<T>> out;
     [&]<std::size_t... index>(std::index_sequence<index...>) {
-      (derived_detail::add_family<std::variant_alternative_t<index, kernels::RadialKernel>, T>(out), ...);
+      (detail::add_family<std::variant_alternative_t<index, kernels::RadialKernel>, T>(out), ...);
     }(std::make_index_sequence<std::variant_size_v<kernels::RadialKernel>>{});
     return out;
   }();

@@ -30,7 +30,7 @@ struct GaussianKernel {
   static constexpr unsigned primitives = on_points | on_segments;
   /// Its segment field, f and ∇f for weight degree W (hand-written: see there).
   template <class T, int W>
-  using SegmentClosedForm = gaussian_segment::ClosedForm<T, W>;
+  using SegmentClosedForm = detail::gaussian_segment::ClosedForm<T, W>;
   static constexpr const char* segment_equation = "b |AB| ∫_0^1 w(t) exp(−a |P − Γ(t)|²) dt";
   static constexpr int min_degree = 0, max_degree = 0;  ///< no degree
   static constexpr bool singular_at_zero = false;

@@ -115,7 +115,7 @@
 #include <type_traits>
 
 #include "generated/scalis_segment_compact.hpp"
-#include "skelconv/primitives/scalis_compact_support.hpp"
+#include "skelconv/detail/scalis_compact_support.hpp"
 
 namespace skelconv {
 
@@ -125,7 +125,7 @@ namespace skelconv {
 /// (T is deduced from `in` alone, so `grad` may be a literal nullptr.)
 template <class T>
 T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identity_t<std::array<T, 3>>* grad) {
-  using namespace scalis_compact_detail;
+  using namespace detail;
   const bool with_grad = grad != nullptr;
   if (with_grad) *grad = {T(0), T(0), T(0)};
   const Prepared<T> pr = prepare(degree, in);

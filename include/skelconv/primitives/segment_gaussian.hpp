@@ -68,7 +68,7 @@
 #include "skelconv/primitives/segment_input.hpp"
 #include "skelconv/detail/double_word.hpp"
 
-namespace skelconv::gaussian_segment {
+namespace skelconv::detail::gaussian_segment {
 
 /// Gauss–Legendre nodes and weights on [0, 1] with `n` points, in T.
 template <class T, int n>
@@ -318,4 +318,4 @@ struct ClosedForm {
   static T f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g) { return field<T, W>(in, &g); }
 };
 
-}  // namespace skelconv::gaussian_segment
+}  // namespace skelconv::detail::gaussian_segment

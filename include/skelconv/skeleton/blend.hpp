@@ -140,7 +140,7 @@ struct Blend {
 /// "weights", "weights[1]", "t", "r", "r[0]", "iso", "angle_weighted").
 void validate_blend(const Blend& blend, std::size_t child_count);
 
-namespace blend_detail {
+namespace detail {
 template <class T>
 bool any_infinite(std::span<const ScalarSample<T>> children) {
   for (const auto& child : children)
@@ -168,17 +168,17 @@ std::pair<T, T> positive_power(const T& x, const T& t) {
   const T power = pow(x, t - T(1));
   return {power * x, t * power};
 }
-}  // namespace blend_detail
+}  // namespace detail
 
 /// Σ w_k f_k (file comment).
 template <class T>
 ScalarSample<T> blend_sum(const Blend& blend, std::span<const ScalarSample<T>> children) {
-  if (blend_detail::any_infinite(children)) return blend_detail::infinite_marker<T>();
+  if (detail::any_infinite(children)) return detail::infinite_marker<T>();
   ScalarSample<T> total;
   for (std::size_t k = 0; k < children.size(); ++k) {
     const T w(blend.weight_of(k));
     total.value += w * children[k].value;
-    blend_detail::add_scaled(total.gradient, w, children[k].gradient);
+    detail::add_scaled(total.gradient, w, children[k].gradient);
   }
   return total;
 }
@@ -195,14 +195,14 @@ ScalarSample<T> blend_union(std::span<const ScalarSample<T>> children) {
 /// Rockwood's blend without the angle (file comment).
 template <class T>
 ScalarSample<T> blend_super_elliptic(const Blend& blend, std::span<const ScalarSample<T>> children) {
-  if (blend_detail::any_infinite(children)) return blend_detail::infinite_marker<T>();
+  if (detail::any_infinite(children)) return detail::infinite_marker<T>();
   const T c(blend.iso), t(blend.t);
   ScalarSample<T> total;
   for (std::size_t k = 0; k < children.size(); ++k) {
     const T r(blend.r_of(k));
-    const auto [term, slope] = blend_detail::positive_power((children[k].value - c + r) / r, t);
+    const auto [term, slope] = detail::positive_power((children[k].value - c + r) / r, t);
     total.value += c * term;
-    blend_detail::add_scaled(total.gradient, c * slope / r, children[k].gradient);
+    detail::add_scaled(total.gradient, c * slope / r, children[k].gradient);
   }
   return total;
 }
@@ -217,10 +217,10 @@ struct AngleHessianProducts {
 template <class T>
 T gradient_cosine(const ScalarSample<T>& first, const ScalarSample<T>& second) {
   using std::sqrt;
-  const T n1 = sqrt(blend_detail::dot(first.gradient, first.gradient));
-  const T n2 = sqrt(blend_detail::dot(second.gradient, second.gradient));
+  const T n1 = sqrt(detail::dot(first.gradient, first.gradient));
+  const T n2 = sqrt(detail::dot(second.gradient, second.gradient));
   if (n1 == T(0) || n2 == T(0)) return T(0);
-  return blend_detail::dot(first.gradient, second.gradient) / (n1 * n2);
+  return detail::dot(first.gradient, second.gradient) / (n1 * n2);
 }
 
 /// Rockwood's θ-weighted binary blend (file comment); `hessian` may be
@@ -231,12 +231,12 @@ ScalarSample<T> blend_super_elliptic_angle(const Blend& blend, const ScalarSampl
                                            const ScalarSample<T>& second, const AngleHessianProducts<T>* hessian) {
   using std::sqrt;
   const std::array<ScalarSample<T>, 2> children{first, second};
-  if (blend_detail::any_infinite(std::span<const ScalarSample<T>>(children))) {
-    return blend_detail::infinite_marker<T>();
+  if (detail::any_infinite(std::span<const ScalarSample<T>>(children))) {
+    return detail::infinite_marker<T>();
   }
   const T c(blend.iso), t(blend.t);
-  const T n1sq = blend_detail::dot(first.gradient, first.gradient);
-  const T n2sq = blend_detail::dot(second.gradient, second.gradient);
+  const T n1sq = detail::dot(first.gradient, first.gradient);
+  const T n2sq = detail::dot(second.gradient, second.gradient);
   const bool has_angle = n1sq != T(0) && n2sq != T(0);
   const T cosine = gradient_cosine(first, second);
   const T raw_factor = T(1) - cosine;
@@ -257,10 +257,10 @@ ScalarSample<T> blend_super_elliptic_angle(const Blend& blend, const ScalarSampl
   for (std::size_t k = 0; k < 2; ++k) {
     const T r(blend.r_of(k));
     const T v = c - children[k].value;  // Ferley's V_k
-    const auto [term, slope] = blend_detail::positive_power(T(1) - v / (r * a), t);
+    const auto [term, slope] = detail::positive_power(T(1) - v / (r * a), t);
     total.value += c * term;
-    blend_detail::add_scaled(total.gradient, c * slope / (r * a), children[k].gradient);
-    blend_detail::add_scaled(total.gradient, c * slope * v / (r * a * a), grad_a);
+    detail::add_scaled(total.gradient, c * slope / (r * a), children[k].gradient);
+    detail::add_scaled(total.gradient, c * slope * v / (r * a * a), grad_a);
   }
   return total;
 }

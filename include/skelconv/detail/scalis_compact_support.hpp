@@ -1,4 +1,4 @@
-// skelconv/primitives/scalis_compact_support.hpp — the compact SCALIS
+// skelconv/detail/scalis_compact_support.hpp — the compact SCALIS
 // segment's support and its Gauss panels (docs/mathematics.md §4, Zanni et al. 2013 §4.3):
 // everything scalis_compact_F (skelconv/primitives/scalis_compact.hpp, whose
 // header comment explains the method) does before and around the integral,
@@ -24,7 +24,7 @@
 
 namespace skelconv {
 
-namespace scalis_compact_detail {
+namespace detail {
 
 /// Multiplication by 2^−e, the scale of the frame: x · 2^−e is correctly
 /// rounded like ldexp(x, −e), so the two give the same bits, and the product
@@ -684,6 +684,6 @@ T finish(const Prepared<T>& pr, const Sums<T>& sums, std::array<T, 3>* grad) {
   return pr.length * sums.f;
 }
 
-}  // namespace scalis_compact_detail
+}  // namespace detail
 
 }  // namespace skelconv
