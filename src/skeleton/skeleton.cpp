@@ -42,16 +42,23 @@ template <class P, class Need>
 /// skeleton somewhere below (blend.hpp, "Markers").
 bool is_marker(const FieldSample& s) { return s.value == infinity || s.gradient.x() == infinity; }
 
-/// A blend of finite children must be finite: otherwise it overflowed
-/// double (a weight times a huge value, a large power), which is an
-/// EvaluationError located at the node, never a value that could pass for
-/// the +inf marker. Only the parts `need` asked for are checked.
-void require_finite_blend(const FieldSample& result, bool value_wanted, bool gradient_wanted,
-                          const char* location, const Vec3& p) {  // a C string: no std::string per evaluation
-  if ((!value_wanted || std::isfinite(result.value)) && (!gradient_wanted || result.gradient.allFinite())) return;
+/// The EvaluationError of require_finite_blend, out of line (cold path).
+[[noreturn, gnu::cold, gnu::noinline]] void throw_blend_overflow(const FieldSample& result, const char* location,
+                                                               const Vec3& p) {
   throw EvaluationError(fmt::format("the blend overflowed double precision at P = {} (value {}, gradient {})",
                                     detail::format_point(p), result.value, detail::format_point(result.gradient)),
                         location);
+}
+
+/// A blend of finite children must be finite: otherwise it overflowed
+/// double (a weight times a huge value, a large power), which is an
+/// EvaluationError located at the node, never a value that could pass for
+/// the +inf marker. Only the parts `need` asked for are checked. Inline:
+/// every evaluation of a skeleton runs it at its root.
+inline void require_finite_blend(const FieldSample& result, bool value_wanted, bool gradient_wanted,
+                                 const char* location, const Vec3& p) {  // a C string: no std::string per evaluation
+  if ((!value_wanted || std::isfinite(result.value)) && (!gradient_wanted || result.gradient.allFinite())) return;
+  throw_blend_overflow(result, location, p);
 }
 
 }  // namespace
@@ -131,10 +138,8 @@ void Skeleton::prepare() const {
     index->one_primitive_type.assign(nodes_.size(), false);
     for (NodeId id = 0; id < nodes_.size(); ++id) {
       const Node& node = nodes_[id];
-      // (A single child gains nothing from the loop, which costs a little
-      // more to enter than evaluate_child.)
       index->one_primitive_type[id] =
-          node.blend.kind == BlendKind::sum && node.children.size() >= 2 &&
+          node.blend.kind == BlendKind::sum && !node.children.empty() &&
           std::all_of(node.children.begin(), node.children.end(), [&](const Child& child) {
             return !child.is_blend &&
                    primitives_[child.index].index() == primitives_[node.children.front().index].index();
@@ -263,7 +268,30 @@ FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const de
       for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
     }
   };
-  if (index != nullptr && index->one_primitive_type[id]) {
+  if (index != nullptr && index->one_primitive_type[id] && unweighted && active == nullptr) {
+    // The common skeleton (a file's list of primitives of one type, none
+    // skipped by an index): one tight loop over them with that type's
+    // evaluation, the same additions in the same order as sum_terms.
+    std::visit(
+        [&](const auto& first) {
+          using P = std::decay_t<decltype(first)>;
+          std::size_t k = node.children.front().index;  // the primitive being evaluated
+          try {
+            for (const Child& child : node.children) {
+              k = child.index;
+              const FieldSample term = sample_of(*std::get_if<P>(&primitives_[k]), p, need);
+              marker = marker || is_marker(term);
+              total.value += term.value;
+              if (need != Need::value) total.gradient += term.gradient;
+            }
+          } catch (const InputError& error) {
+            throw error.inside(primitive_locations_[k]);
+          } catch (const EvaluationError& error) {
+            throw error.inside(primitive_locations_[k]);
+          }
+        },
+        primitives_[node.children.front().index]);
+  } else if (index != nullptr && index->one_primitive_type[id]) {
     // Every child a primitive of one type: one loop over them with that
     // type's evaluation, without choosing between blend node and primitive
     // and between primitive types at every child (evaluate_child,
