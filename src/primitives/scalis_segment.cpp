@@ -113,9 +113,9 @@ std::string ScalisSegment::evaluator_name() const { return name_; }
 
 [[gnu::always_inline]] inline double ScalisSegment::evaluate(const Vec3& p, bool want_value,
                                                              std::array<double, 3>* grad) const {
-  if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", detail::format_point(p)));
+  detail::require_finite_query_point(p);
   const Vec3 frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
-  if (!frame_p.allFinite()) {
+  if (factors_.to_frame > 1.0 && !frame_p.allFinite()) {  // a factor 2^−e ≤ 1 keeps a finite P finite
     throw EvaluationError(fmt::format("P = {} is too far from the SCALIS segment (more than ~2^1000 times its "
                                       "length from the origin): the field is outside the range of double precision",
                                       detail::format_point(p)));

@@ -138,7 +138,8 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
 [[gnu::always_inline]] inline Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const {
   detail::require_finite_query_point(p);
   const Vec3 frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
-  if (!frame_p.allFinite()) throw_too_far(p);
+  // A factor 2^−e ≤ 1 cannot take a finite P out of the double range.
+  if (factors_.to_frame > 1.0 && !frame_p.allFinite()) throw_too_far(p);
   input.p = to_array(frame_p);
 
   if (singular_at_zero_) {
