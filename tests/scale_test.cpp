@@ -156,6 +156,28 @@ test::ReferenceSample segment_reference(const Vec3& a, const Vec3& b, const Segm
   return test::integrate_definition(reference, to_reference(p));
 }
 
+// A segment whose frame factor 2^−e is not a normal double (e = 1023: |AB|
+// ≥ 2^1023) takes the frame's careful product instead of the factor
+// prepared at construction: the same frame coordinates, so exactly the
+// scaled field (compact: f has units length, ∇f none).
+TEST(AnyScale, ASegmentAtTheTopOfTheDoubleRangeScalesExactly) {
+  const Vec3 a(-0.4, 0.1, 0.2), b(0.9, 0.5, -0.3);  // |AB| in [1, 2)
+  const KernelSpec kernel = KernelSpec::compact(3, 1.8);
+  const int k = 1023;
+  const Segment unit(a, b, kernel);
+  const Segment scaled(std::ldexp(1.0, k) * a, std::ldexp(1.0, k) * b, scaled_kernel(kernel, k));
+  int inside = 0;
+  for (const Vec3& p : generic_points) {
+    if (p.cwiseAbs().maxCoeff() >= 2.0) continue;  // 2·2^1023 overflows
+    const FieldSample u = unit.value_and_gradient(p);
+    const FieldSample o = scaled.value_and_gradient(std::ldexp(1.0, k) * p);
+    EXPECT_EQ(o.value, std::ldexp(u.value, k)) << p.transpose();
+    EXPECT_EQ(o.gradient, u.gradient) << p.transpose();
+    inside += u.value != 0.0;
+  }
+  EXPECT_GE(inside, 2);
+}
+
 TEST(AnyScale, SegmentsScaleByTheirHomogeneity) {
   const Vec3 a(-0.4, 0.1, 0.2), b(0.9, 0.5, -0.3);
   Worst worst;

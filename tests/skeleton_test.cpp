@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -49,6 +50,57 @@ TEST(Skeleton, FieldIsTheSumOfThePrimitiveFields) {
     const FieldSample both = skeleton.value_and_gradient(p);
     expect_close(both.value, value, 1e-14);
     expect_close(both.gradient, gradient, 1e-14);
+  }
+}
+
+/// The left-to-right sums from +0 of the primitives' own value_and_gradient
+/// (`both`), value and gradient (each may be a different generated function).
+struct OrderedSums {
+  FieldSample both;
+  double value = 0.0;
+  Vec3 gradient = Vec3::Zero();
+};
+OrderedSums ordered_sums(const Skeleton& skeleton, const Vec3& p) {
+  OrderedSums sums;
+  for (const Primitive& primitive : skeleton.primitives()) {
+    std::visit(
+        [&](const auto& q) {
+          const FieldSample term = q.value_and_gradient(p);
+          sums.both.value += term.value;
+          sums.both.gradient += term.gradient;
+          sums.value += q.value(p);
+          sums.gradient += q.gradient(p);
+        },
+        primitive);
+  }
+  return sums;
+}
+
+// Skeleton sums a list of primitives of one type in one loop over them, and
+// any other list child by child: either way the same additions in the same
+// order as the primitives' own evaluations, so the same bits.
+TEST(Skeleton, EveryListIsTheOrderedSumOfItsPrimitivesBitForBit) {
+  const Segment cauchy(Vec3(0, 1, 0), Vec3(1, 1, 0), KernelSpec::cauchy(4, 2.0));
+  const ScalisSegment scalis(Vec3(0, 0, 0.5), Vec3(1, 0.2, 0.4), 0.3, 0.2, ScalisKernel::cauchy(4, 1.0));
+  const std::vector<Skeleton> skeletons{
+      Skeleton({cauchy}),                                           // one primitive
+      example_skeleton(),                                           // three segments, three kernels
+      Skeleton({scalis, Segment(Vec3(0, 0, 0), Vec3(1, 0.3, 0), KernelSpec::compact(4, 2.0))}),
+      Skeleton({scalis, scalis, scalis}),
+  };
+  for (const Skeleton& skeleton : skeletons) {
+    for (const Vec3& p : sample_points) {
+      const OrderedSums sums = ordered_sums(skeleton, p);
+      const FieldSample& expected = sums.both;
+      const FieldSample both = skeleton.value_and_gradient(p);
+      EXPECT_EQ(both.value, expected.value) << p.transpose();
+      EXPECT_EQ(both.gradient, expected.gradient) << p.transpose();
+      EXPECT_EQ(skeleton.value(p), sums.value) << p.transpose();
+      EXPECT_EQ(skeleton.gradient(p), sums.gradient) << p.transpose();
+      const FieldSample plain = skeleton.value_and_gradient(p, Skeleton::Acceleration::plain);
+      EXPECT_EQ(plain.value, expected.value) << p.transpose();
+      EXPECT_EQ(plain.gradient, expected.gradient) << p.transpose();
+    }
   }
 }
 

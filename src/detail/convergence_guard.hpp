@@ -20,7 +20,7 @@ namespace skelconv::detail {
 /// ("<evaluator> did not converge at P = (…): <helper's message>"). A C
 /// string: a string_view would measure it at every evaluation.
 template <class Evaluate>
-decltype(auto) evaluate_converged(const char* evaluator, const Vec3& p, Evaluate&& evaluate) {
+[[gnu::always_inline]] inline decltype(auto) evaluate_converged(const char* evaluator, const Vec3& p, Evaluate&& evaluate) {
   try {
     return std::forward<Evaluate>(evaluate)();
   } catch (const NotConvergedError& error) {

@@ -41,7 +41,14 @@ double times_power_of_two(double x, int n) {
 
 }  // namespace
 
+double normal_power_of_two_or_zero(int n) { return normal_power_of_two(n) ? power_of_two(n) : 0.0; }
+
 ScaledFrame::ScaledFrame(double size) : exponent_(std::ilogb(size)) {}
+
+FrameFactors ScaledFrame::factors(int value_power) const {
+  return {normal_power_of_two_or_zero(-exponent_), normal_power_of_two_or_zero(value_power * exponent_),
+          normal_power_of_two_or_zero((value_power - 1) * exponent_)};
+}
 
 Vec3 ScaledFrame::point(const Vec3& x) const {
   // |e| ≤ 1022 for every frame of a normal length: one factor for all three.
@@ -106,10 +113,8 @@ double ScaledFrame::restore_value(double value, int power, bool may_vanish, cons
   // by one product (the same double as std::ldexp); anything else, the
   // singular marker included, is decided by restore_value_rare.
   const int shift = power * exponent_;
-  if (std::isnormal(value) && normal_power_of_two(shift)) {
-    const double world = value * power_of_two(shift);
-    if (std::isnormal(world)) return world;
-  }
+  double world;
+  if (restore_value_common(value, normal_power_of_two_or_zero(shift), world)) return world;
   return restore_value_rare(value, shift, may_vanish, what, p);
 }
 
@@ -118,15 +123,8 @@ Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* 
   // double, and so is the largest after the shift (a product by 2^shift
   // scales every component alike, so the largest stays the largest).
   const int shift = power * exponent_;
-  const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
-  constexpr double largest_finite = std::numeric_limits<double>::max();
-  if (ax <= largest_finite && ay <= largest_finite && az <= largest_finite && normal_power_of_two(shift)) {
-    const double largest = std::max({ax, ay, az});  // (the test above is false for NaN)
-    const double factor = power_of_two(shift);
-    const double world_largest = largest * factor;
-    if (largest >= smallest_normal && world_largest >= smallest_normal && world_largest <= largest_finite)
-      return gradient * factor;
-  }
+  Vec3 world;
+  if (restore_gradient_common(gradient, normal_power_of_two_or_zero(shift), world)) return world;
   return restore_gradient_rare(gradient, shift, what, p);
 }
 

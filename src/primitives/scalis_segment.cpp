@@ -73,6 +73,7 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
   // The segment's frame (skelconv/detail/scaled_frame.hpp): F is scale invariant
   // when the radii scale with the coordinates, so F' = F and ∇F = ∇'F'·2^−e.
   frame_ = ScaledFrame(scale_safe_norm(b - a));
+  factors_ = frame_.factors(0);
   input_.a = to_array(frame_.point(a));
   input_.b = to_array(frame_.point(b));
   input_.tau0 = frame_.length(tau0);
@@ -98,7 +99,7 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
 
 std::string ScalisSegment::evaluator_name() const { return name_; }
 
-bool ScalisSegment::is_divergent_point(const Vec3& p, const Vec3& frame_p) const {
+[[gnu::always_inline]] inline bool ScalisSegment::is_divergent_point(const Vec3& p, const Vec3& frame_p) const {
   if (diverges_on_segment_) {
     // P on the closed segment, exactly on the frame's doubles (as Segment does).
     const Vec3 ab = to_vec3(input_.b) - to_vec3(input_.a);
@@ -110,10 +111,11 @@ bool ScalisSegment::is_divergent_point(const Vec3& p, const Vec3& frame_p) const
   return false;  // compact: left to scalis_compact_F
 }
 
-double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double, 3>* grad) const {
-  if (!p.allFinite()) throw InputError(fmt::format("query point must be finite, got {}", detail::format_point(p)));
-  const Vec3 frame_p = frame_.point(p);
-  if (!frame_p.allFinite()) {
+[[gnu::always_inline]] inline double ScalisSegment::evaluate(const Vec3& p, bool want_value,
+                                                             std::array<double, 3>* grad) const {
+  detail::require_finite_query_point(p);
+  const Vec3 frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
+  if (factors_.to_frame > 1.0 && !frame_p.allFinite()) {  // a factor 2^−e ≤ 1 keeps a finite P finite
     throw EvaluationError(fmt::format("P = {} is too far from the SCALIS segment (more than ~2^1000 times its "
                                       "length from the origin): the field is outside the range of double precision",
                                       detail::format_point(p)));
@@ -136,8 +138,17 @@ double ScalisSegment::evaluate(const Vec3& p, bool want_value, std::array<double
   // Normalised in the frame, then brought back (F is scale invariant, ∇F
   // has units length^−1); a result outside the double range is an error.
   const double scale = field_scale_;
-  if (grad != nullptr) *grad = to_array(frame_.restore_gradient(scale * to_vec3(*grad), -1, name_, p));
-  return want_value ? frame_.restore_value(scale * F, 0, may_vanish_, name_, p) : 0.0;
+  if (grad != nullptr) {
+    const Vec3 scaled = scale * to_vec3(*grad);
+    Vec3 world;
+    *grad = to_array(restore_gradient_common(scaled, factors_.gradient, world)
+                         ? world
+                         : frame_.restore_gradient(scaled, -1, name_, p));
+  }
+  if (!want_value) return 0.0;
+  double world;
+  return restore_value_common(scale * F, factors_.value, world) ? world
+                                                                : frame_.restore_value(scale * F, 0, may_vanish_, name_, p);
 }
 
 double ScalisSegment::value(const Vec3& p) const { return evaluate(p, true, nullptr); }

@@ -100,6 +100,7 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   frame_ = ScaledFrame(scale_safe_norm(b - a));
   // f scales as |AB| K: λ^(1 + p) (the trait's scaling_power, radial_kernel.hpp).
   value_power_ = 1 + kernels::scaling_power(kernel);
+  factors_ = frame_.factors(value_power_);
   // A positive kernel and weight give f > 0, so a 0 there is an underflow;
   // except where the kernel itself vanishes or underflows (beyond a finite
   // support, far from a Gaussian: 0 is then the correctly rounded value).
@@ -134,10 +135,11 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
 // filled in here. It runs once per primitive and point: the error's
 // formatting is out of line (throw_too_far), which leaves prepare small
 // enough for the compiler to inline into its three callers.
-Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const {
+[[gnu::always_inline]] inline Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const {
   detail::require_finite_query_point(p);
-  const Vec3 frame_p = frame_.point(p);
-  if (!frame_p.allFinite()) throw_too_far(p);
+  const Vec3 frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
+  // A factor 2^−e ≤ 1 cannot take a finite P out of the double range.
+  if (factors_.to_frame > 1.0 && !frame_p.allFinite()) throw_too_far(p);
   input.p = to_array(frame_p);
 
   if (singular_at_zero_) {
@@ -160,11 +162,15 @@ Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const
   return Case::call_generated;
 }
 
-double Segment::restore_value(double f, const Vec3& p) const {
+[[gnu::always_inline]] inline double Segment::restore_value(double f, const Vec3& p) const {
+  double world;
+  if (restore_value_common(f, factors_.value, world)) return world;
   return frame_.restore_value(f, value_power_, may_vanish_, generated_->name, p);
 }
 
-Vec3 Segment::restore_gradient(const std::array<double, 3>& g, const Vec3& p) const {
+[[gnu::always_inline]] inline Vec3 Segment::restore_gradient(const std::array<double, 3>& g, const Vec3& p) const {
+  Vec3 world;
+  if (restore_gradient_common(to_vec3(g), factors_.gradient, world)) return world;
   return frame_.restore_gradient(to_vec3(g), value_power_ - 1, generated_->name, p);
 }
 

@@ -42,16 +42,48 @@ template <class P, class Need>
 /// skeleton somewhere below (blend.hpp, "Markers").
 bool is_marker(const FieldSample& s) { return s.value == infinity || s.gradient.x() == infinity; }
 
-/// A blend of finite children must be finite: otherwise it overflowed
-/// double (a weight times a huge value, a large power), which is an
-/// EvaluationError located at the node, never a value that could pass for
-/// the +inf marker. Only the parts `need` asked for are checked.
-void require_finite_blend(const FieldSample& result, bool value_wanted, bool gradient_wanted,
-                          const char* location, const Vec3& p) {  // a C string: no std::string per evaluation
-  if ((!value_wanted || std::isfinite(result.value)) && (!gradient_wanted || result.gradient.allFinite())) return;
+/// Adds the samples of the primitives primitives[index_of(0)], …,
+/// primitives[index_of(count − 1)], all of type P, to `total`, left to right,
+/// and notes a marker among them: one loop with P's own evaluation, no
+/// choice between blend node and primitive or between types per primitive.
+/// A primitive's error is rethrown at its location, as evaluate_leaf does.
+template <class P, class Need, class IndexOf>
+void add_primitives_of_one_type(const std::vector<Primitive>& primitives, const std::vector<std::string>& locations,
+                                std::size_t count, IndexOf index_of, const Vec3& p, Need need, FieldSample& total,
+                                bool& marker) {
+  std::size_t k = 0;  // the primitive being evaluated
+  try {
+    for (std::size_t position = 0; position < count; ++position) {
+      k = index_of(position);
+      const FieldSample term = sample_of(*std::get_if<P>(&primitives[k]), p, need);
+      marker = marker || is_marker(term);
+      total.value += term.value;
+      if (need != Need::value) total.gradient += term.gradient;  // else every term's gradient is 0
+    }
+  } catch (const InputError& error) {
+    throw error.inside(locations[k]);
+  } catch (const EvaluationError& error) {
+    throw error.inside(locations[k]);
+  }
+}
+
+/// The EvaluationError of require_finite_blend, out of line (cold path).
+[[noreturn, gnu::cold, gnu::noinline]] void throw_blend_overflow(const FieldSample& result, const char* location,
+                                                               const Vec3& p) {
   throw EvaluationError(fmt::format("the blend overflowed double precision at P = {} (value {}, gradient {})",
                                     detail::format_point(p), result.value, detail::format_point(result.gradient)),
                         location);
+}
+
+/// A blend of finite children must be finite: otherwise it overflowed
+/// double (a weight times a huge value, a large power), which is an
+/// EvaluationError located at the node, never a value that could pass for
+/// the +inf marker. Only the parts `need` asked for are checked. Inline:
+/// every evaluation of a skeleton runs it at its root.
+inline void require_finite_blend(const FieldSample& result, bool value_wanted, bool gradient_wanted,
+                                 const char* location, const Vec3& p) {  // a C string: no std::string per evaluation
+  if ((!value_wanted || std::isfinite(result.value)) && (!gradient_wanted || result.gradient.allFinite())) return;
+  throw_blend_overflow(result, location, p);
 }
 
 }  // namespace
@@ -131,10 +163,8 @@ void Skeleton::prepare() const {
     index->one_primitive_type.assign(nodes_.size(), false);
     for (NodeId id = 0; id < nodes_.size(); ++id) {
       const Node& node = nodes_[id];
-      // (A single child gains nothing from the loop, which costs a little
-      // more to enter than evaluate_child.)
       index->one_primitive_type[id] =
-          node.blend.kind == BlendKind::sum && node.children.size() >= 2 &&
+          node.blend.kind == BlendKind::sum && !node.children.empty() &&
           std::all_of(node.children.begin(), node.children.end(), [&](const Child& child) {
             return !child.is_blend &&
                    primitives_[child.index].index() == primitives_[node.children.front().index].index();
@@ -151,6 +181,11 @@ void Skeleton::prepare() const {
       }
       if (any_bounded) index->grids[id].emplace(boxes);
     }
+    // The common skeleton: a list of primitives of one type, no blend node,
+    // no weight, no grid (every primitive is then a child of the root, in
+    // order).
+    index->primitive_list = nodes_.size() == 1 && nodes_[root].blend.weights.empty() && !index->grids[root] &&
+                            index->one_primitive_type[root];
     cache.index = std::move(index);
     cache.built.store(true, std::memory_order_release);
   });
@@ -164,7 +199,25 @@ const detail::SkeletonIndex* Skeleton::index_for(Acceleration acceleration) cons
 FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration acceleration) const {
   // Checked once here, so that a bad point is not blamed on a primitive.
   detail::require_finite_query_point(p);
-  return evaluate_node(root, p, need, index_for(acceleration));
+  const detail::SkeletonIndex* index = index_for(acceleration);
+  if (cache_->index->primitive_list) return evaluate_primitive_list(p, need);
+  return evaluate_node(root, p, need, index);
+}
+
+FieldSample Skeleton::evaluate_primitive_list(const Vec3& p, Need need) const {
+  // What evaluate_sum does for the root, without walking the tree.
+  FieldSample total;
+  bool marker = false;
+  std::visit(
+      [&](const auto& first) {
+        add_primitives_of_one_type<std::decay_t<decltype(first)>>(
+            primitives_, primitive_locations_, primitives_.size(), [](std::size_t position) { return position; }, p,
+            need, total, marker);
+      },
+      primitives_.front());
+  if (marker) return {infinity, Vec3::Constant(infinity)};
+  require_finite_blend(total, need != Need::gradient, need != Need::value, "primitives", p);
+  return total;
 }
 
 double Skeleton::value(const Vec3& p) const { return evaluate(p, Need::value, Acceleration::indexed).value; }
@@ -263,7 +316,18 @@ FieldSample Skeleton::evaluate_sum(NodeId id, const Vec3& p, Need need, const de
       for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
     }
   };
-  if (index != nullptr && index->one_primitive_type[id]) {
+  if (index != nullptr && index->one_primitive_type[id] && unweighted && active == nullptr) {
+    // The common skeleton (a file's list of primitives of one type, none
+    // skipped by an index): one tight loop over them with that type's
+    // evaluation, the same additions in the same order as sum_terms.
+    std::visit(
+        [&](const auto& first) {
+          add_primitives_of_one_type<std::decay_t<decltype(first)>>(
+              primitives_, primitive_locations_, node.children.size(),
+              [&](std::size_t position) { return node.children[position].index; }, p, need, total, marker);
+        },
+        primitives_[node.children.front().index]);
+  } else if (index != nullptr && index->one_primitive_type[id]) {
     // Every child a primitive of one type: one loop over them with that
     // type's evaluation, without choosing between blend node and primitive
     // and between primitive types at every child (evaluate_child,

@@ -22,6 +22,10 @@ struct SkeletonIndex {
   /// primitives of one type (Skeleton::evaluate_sum loops over them with
   /// that type's evaluation).
   std::vector<bool> one_primitive_type;
+  /// The skeleton is a list of primitives of one type: no blend node below
+  /// the root, no weight, no grid (Skeleton::evaluate loops over the
+  /// primitives without walking the tree).
+  bool primitive_list = false;
 };
 
 /// Built once per version of the skeleton; std::call_once lets any number

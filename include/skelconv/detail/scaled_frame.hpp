@@ -35,12 +35,50 @@
 // EvaluationError naming the value as m·2^k, never a wrong number.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "skelconv/geometry.hpp"
 
 namespace skelconv {
+
+/// 2^n when that is a normal double (−1022 ≤ n ≤ 1023), else 0.
+double normal_power_of_two_or_zero(int n);
+
+/// A primitive's frame factors for a field of value power m, computed once
+/// per primitive (ScaledFrame::factors), so that an evaluation scales by
+/// products alone. A factor that is not a normal double is 0: the primitive
+/// then takes ScaledFrame's careful functions, which handle every case.
+struct FrameFactors {
+  double to_frame = 0;  ///< 2^−e: ScaledFrame::point is P·to_frame
+  double value = 0;     ///< 2^(m e): restore_value's product
+  double gradient = 0;  ///< 2^((m − 1) e): restore_gradient's product
+};
+
+/// restore_value's common case: f' and f'·factor both normal doubles (a
+/// factor of 0 never is). Sets `world` and returns true there; false sends
+/// the caller to ScaledFrame::restore_value, which decides every other case.
+inline bool restore_value_common(double value, double factor, double& world) {
+  world = value * factor;
+  return std::isnormal(value) && std::isnormal(world);
+}
+
+/// restore_gradient's common case: every component finite, the largest a
+/// normal double, and still one after the product (a product by a power of
+/// two scales every component alike, so the largest stays the largest).
+inline bool restore_gradient_common(const Vec3& gradient, double factor, Vec3& world) {
+  constexpr double largest_finite = std::numeric_limits<double>::max();
+  constexpr double smallest_normal = std::numeric_limits<double>::min();
+  const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
+  // (false for NaN)
+  if (!(ax <= largest_finite && ay <= largest_finite && az <= largest_finite) || factor == 0.0) return false;
+  const double largest = std::max({ax, ay, az});
+  const double world_largest = largest * factor;
+  world = gradient * factor;
+  return largest >= smallest_normal && world_largest >= smallest_normal && world_largest <= largest_finite;
+}
 
 /// x' = x · 2^−exponent (see the file comment).
 class ScaledFrame {
@@ -51,6 +89,9 @@ class ScaledFrame {
 
   /// e: a length l of the world is l·2^−e in the frame.
   int exponent() const { return exponent_; }
+
+  /// The factors of a field of value power `value_power` (file comment).
+  FrameFactors factors(int value_power) const;
 
   /// A point (or vector) of the world in the frame: x·2^−e componentwise.
   /// Not finite when it overflows (P ≳ 2^1000 sizes away).

@@ -119,6 +119,7 @@ class ScalisSegment {
   /// The segment's frame (skelconv/detail/scaled_frame.hpp): |AB| scaled into
   /// [1, 2); F is scale invariant.
   ScaledFrame frame_;
+  FrameFactors factors_;  ///< of F (value power 0)
   ScalisSegmentInput<double> input_;  ///< everything but P, in the frame
   const generated::ScalisSegmentKernel<double>* generated_ = nullptr;  ///< null for compact
   /// Resolved once here, not per point: evaluator_name() (a C string, so

@@ -116,8 +116,9 @@ class Segment {
   Vec3 a_, b_;
   KernelSpec kernel_;
   int weight_degree_ = 0;
-  /// The segment's frame: |AB| scaled into [1, 2).
+  /// The segment's frame: |AB| scaled into [1, 2), and its factors for f.
   ScaledFrame frame_;
+  FrameFactors factors_;
   /// f has units length^value_power_: 1 − i (inverse) or 1.
   int value_power_ = 1;
   /// f can be 0 or tiny (compact kernel, a negative weight coefficient);

@@ -148,6 +148,7 @@ class Skeleton {
   void changed();
   const detail::SkeletonIndex* index_for(Acceleration acceleration) const;
   FieldSample evaluate(const Vec3& p, Need need, Acceleration acceleration) const;
+  FieldSample evaluate_primitive_list(const Vec3& p, Need need) const;
   FieldSample evaluate_child(const Child& child, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
   FieldSample evaluate_leaf(std::size_t k, const Vec3& p, Need need) const;
   FieldSample evaluate_node(NodeId id, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
