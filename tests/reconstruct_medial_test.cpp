@@ -158,6 +158,18 @@ TEST(MedialMesh, BudgetIsRespected) {
   }
 }
 
+TEST(MedialMesh, SameInputSameBytesInOneProcess) {
+  // The command runs the path once per process, the Python module many
+  // times in one: the second run must not see anything the first left.
+  const TriangleMesh tetrahedron =
+      read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / "tetrahedron.off");
+  ReconstructOptions o;
+  o.method = SkeletonMethod::medial;
+  o.medial.budget = 40;
+  const std::string first = skeleton_file_text(reconstruct(tetrahedron, o).stages.back(), o);
+  EXPECT_EQ(skeleton_file_text(reconstruct(tetrahedron, o).stages.back(), o), first);
+}
+
 TEST(MedialFit, PlateIsASheetAndTheFitNeverRaisesTheDistance) {
   // The unit cube flattened to 1 × 1 × 0.2: its medial axis is a sheet.
   TriangleMesh plate = read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / "cube.ply");

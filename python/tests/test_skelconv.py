@@ -456,12 +456,6 @@ class SkeletonizeAgreesWithCli(unittest.TestCase):
     def test_same_skeleton_as_the_command(self):
         self.check_cases(self.CASES)
 
-    # A known bug: the medial path's result depends on what ran before in the
-    # same process (four calls in one Python process on the same tetrahedron
-    # give 39, 38, 40 and 40 primitives; the command, one call per process,
-    # gives the same bytes every run). This fails until it is found and fixed;
-    # then the unexpected success fails the suite and the marker goes.
-    @unittest.expectedFailure
     def test_same_medial_skeleton_as_the_command(self):
         self.check_cases(self.MEDIAL_CASES)
 

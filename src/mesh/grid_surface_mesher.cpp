@@ -130,20 +130,25 @@ class SurfaceCells {
       : request_(request), accessor_(grid.getAccessor()), count_(count) {}
 
   /// Samples the crossing cells reached from the cells around each seed.
+  /// Seeds lie a fraction of a voxel apart on the same surface: a seed
+  /// whose own cell the continuation from an earlier seed has already
+  /// reached (sampled, crossing) adds nothing and is skipped, which spares
+  /// sampling the 27 cells around each of thousands of seeds.
   void sample_from_seeds() {
     for (const Vec3& seed : request_.seeds) {
       const Vec3 at = (seed - request_.box.lo) / request_.voxel;
       const openvdb::Coord cell(int(std::floor(at.x())), int(std::floor(at.y())), int(std::floor(at.z())));
+      if (reached(cell)) continue;
       // The seed's own cell may have corners of one sign (the surface dips
       // into it between them); then a neighbour's corners change sign.
       for (int i = -1; i <= 1; ++i)
         for (int j = -1; j <= 1; ++j)
           for (int k = -1; k <= 1; ++k) visit(cell.offsetBy(i, j, k));
-    }
-    while (!queue_.empty()) {
-      const openvdb::Coord cell = queue_.back();
-      queue_.pop_back();
-      spread_from(cell);
+      while (!queue_.empty()) {
+        const openvdb::Coord crossing = queue_.back();
+        queue_.pop_back();
+        spread_from(crossing);
+      }
     }
   }
 
@@ -190,6 +195,12 @@ class SurfaceCells {
   static bool changes_sign(std::span<const float> values) {
     const bool first = values[0] < 0;
     return std::any_of(values.begin() + 1, values.end(), [first](float v) { return (v < 0) != first; });
+  }
+
+  /// Whether a cell was sampled and crosses the surface (then the
+  /// continuation has spread from it).
+  bool reached(const openvdb::Coord& cell) {
+    return visited_.count(key(cell)) != 0 && changes_sign(corners(cell));
   }
 
   /// Samples a cell the first time it is met; queues it if it crosses.

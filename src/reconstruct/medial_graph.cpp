@@ -2,6 +2,7 @@
 // to this translation unit (its own OBJECT library, src/CMakeLists.txt).
 #include "skelconv/reconstruct/medial_graph.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -64,6 +65,15 @@ bool circumcentre_is_computable(const Delaunay::Cell_handle& cell) {
   return std::abs(det) > 64 * std::numeric_limits<double>::epsilon() * a.norm() * b.norm() * c.norm();
 }
 
+/// The cyclic polygon started at its smallest vertex and run towards the
+/// smaller of that vertex's two neighbours: the same polygon whatever
+/// vertex and direction it was read from.
+std::vector<std::int32_t> canonical_polygon(std::vector<std::int32_t> polygon) {
+  std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
+  if (polygon.back() < polygon[1]) std::reverse(polygon.begin() + 1, polygon.end());
+  return polygon;
+}
+
 }  // namespace
 
 MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_samples, const SamplingOptions& sampling) {
@@ -117,6 +127,12 @@ MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_sample
   }
   // Voronoi faces: the cells around each Delaunay edge, in the order the
   // circulator gives (cyclic), kept when every one is an inner vertex.
+  // CGAL's edge iterator reports each edge from the incident cell it ranks
+  // first by handle, that is by memory address: which edge comes when, and
+  // at which cell each circulation starts, depend on the allocator's state,
+  // so on what the process ran before. Each polygon is therefore turned to
+  // start at its smallest vertex (the faces are cut into triangles from
+  // their first vertex) and the list sorted.
   std::vector<std::int32_t> polygon;
   for (auto edge = delaunay.finite_edges_begin(); edge != delaunay.finite_edges_end(); ++edge) {
     polygon.clear();
@@ -131,8 +147,9 @@ MedialGraph medial_graph(const TriangleMesh& surface, std::size_t minimum_sample
       }
       polygon.push_back(found->second);
     } while (++cell != first);
-    if (inner && polygon.size() >= 3) graph.faces.push_back(polygon);
+    if (inner && polygon.size() >= 3) graph.faces.push_back(canonical_polygon(polygon));
   }
+  std::sort(graph.faces.begin(), graph.faces.end());
   return graph;
 }
 

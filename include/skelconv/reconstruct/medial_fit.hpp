@@ -1,5 +1,5 @@
 // skelconv/reconstruct/medial_fit.hpp — the radii of a medial mesh fitted to
-// the input surface (docs/reconstruction_medial.md, "Fit").
+// the input surface (docs/reconstruction_medial.md, "The fit").
 //
 // The skeleton's primitives are normalised so that f = iso at distance r
 // from a long segment or a wide triangle of radius r: near a sphere of the
@@ -8,14 +8,18 @@
 // whole skeleton at area-weighted points of the input, takes each point's
 // first-order signed distance δ = (f − iso) / |∇f| (> 0: the point is inside
 // the reconstruction, which is too fat there) and gives each point to the
-// sphere whose surface is nearest (|p − c| − r smallest). Then every radius
-// takes a damped Gauss–Newton step on its own points' Σ w δ², with
-// ∂δ/∂r_i = (∂f/∂r_i) / |∇f| from a forward difference of the primitives
-// that use sphere i, clamped to [r/2, 2r]: a Jacobi iteration with the
-// diagonal of the Jacobian. The steps ignore how neighbouring spheres share
-// points, so all of them together can overshoot: the round takes the steps
-// × 1, 1/2, … 1/16, the first that lowers the weighted RMS of δ, and the fit
-// stops when none does (the RMS never rises). The derivative is needed, not assumed: a
+// sphere whose surface is nearest (|p − c| − r smallest), which bounds δ
+// (clamped to that radius). Then all radii take one Levenberg–Marquardt
+// step together on Σ w δ²: the Jacobian ∂δ_k/∂r_i = (∂f/∂r_i) / |∇f| from a
+// forward difference of the primitives that use sphere i (the others do
+// not depend on r_i), evaluated at the points inside their supports; the
+// normal equations (JᵀWJ + λ diag) Δr = −JᵀWδ, sparse (a sphere couples
+// only with the spheres whose primitives reach the same points), solved by
+// Eigen's sparse LDLᵀ, each step clamped to [−r/2, r]. A step
+// that does not lower the weighted RMS of δ is retried with λ × 10; the fit
+// stops when none does (the RMS never rises). Neighbouring spheres share
+// points, so a step per sphere on its own points alone overshoots and
+// stalls; the joint step does not. The derivative is needed, not assumed: a
 // triangle or segment much shorter than its radius has a field that
 // *falls* as the radius grows (F → K(0) area / τ² for a triangle), so
 // "grow where the surface is short" diverges there. The skeleton is
@@ -36,9 +40,11 @@ struct MedialFitOptions {
   int rounds = 8;
   /// The forward difference of ∂f/∂r_i uses r_i × (1 + this).
   double relative_step = 1e-4;
-  /// A sphere whose radius moves its points' surface by less than this per
-  /// unit of radius (∂δ/∂r_i) is left alone that round.
-  double minimum_slope = 0.05;
+  /// The Levenberg–Marquardt damping λ of the first round (relative to the
+  /// diagonal of JᵀWJ), and how many times a round may multiply it by 10
+  /// before it gives up (the step then barely moves: the fit has stopped).
+  double initial_damping = 1e-3;
+  int damping_attempts = 6;
 };
 
 struct MedialFitReport {

@@ -44,8 +44,11 @@ struct MedialOptions {
   /// The primitives' kernel: compact, degree 4, this σ (docs/cli_skeleton.md:
   /// support σ × the radius). Compact, not Cauchy: the field's index then
   /// evaluates only the primitives near a point, and a medial mesh has
-  /// hundreds (341 Cauchy primitives on a hand took 110 s to mesh).
-  double kernel_sigma = 2.0;
+  /// hundreds (341 Cauchy primitives on a hand took 110 s to mesh). 1.5:
+  /// a support narrower than 2 radii adds less of one sheet's field to its
+  /// neighbours' (less bulging where sheets fold or lie close; measured in
+  /// docs/reconstruction_medial.md), and fewer primitives reach each point.
+  double kernel_sigma = 1.5;
   /// The medial graph's samples are at most the diagonal / this apart
   /// (surface_samples.hpp; the curve path's 12 leaves a coarse mesh's large
   /// triangles with few samples, and the medial sheets full of holes).
