@@ -36,6 +36,7 @@
 #include <string>
 #include <type_traits>
 
+#include "skelconv/detail/far_field_series.hpp"
 #include "skelconv/not_converged.hpp"
 
 namespace skelconv {
@@ -278,13 +279,18 @@ void add_moments_with_nodes(int nodes, int m_lo, int m_hi, int k_max, const Node
   }
 }
 
-/// The far-field rule of segment_moments_gauss: N_max nodes, or fewer where
-/// the bound above allows it (double only: the constants are for its
-/// rounding unit; wider types keep N_max).
+/// The far-field rule of segment_moments_gauss: the series about the
+/// midpoint where it applies (far_field_series.hpp: P far enough from the
+/// midpoint, on [0, 1]), else N_max nodes, or fewer where the bound above
+/// allows it (double only: the constants are for its rounding unit; wider
+/// types keep N_max).
 template <class T, unsigned N_max, class QuadraticAt>
 void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& a, const T& b,
                            const T& c, const T& t0, const T& t1, T* out) {
   if constexpr (std::numeric_limits<T>::digits <= 53 && N_max == 20) {
+    // out is zero here (segment_moments_gauss), so writing the series' values adds them
+    if constexpr (std::is_same_v<T, double>)
+      if (t0 == 0 && t1 == 1 && segment_moments_far_series(m_lo, m_hi, k_max, a, b, c, out) != 0) return;
     // y² = 4D/(a (t1 − t0))² ≥ y_N²
     const T a_width = a * (t1 - t0);
     const T y2 = T(4) * (a * c - b * b) / (a_width * a_width);
@@ -343,6 +349,16 @@ bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T
   const T z2 = T(2) * (q_near + q_far) / a - T(1);
   auto square = [](double r) { return r * r; };
   if (!(z2 >= T(square(beyond_end_rule_min_z)))) return false;
+  if constexpr (std::is_same_v<T, double>) {
+    // The series about the midpoint (far_field_series.hpp) where it applies,
+    // from the near end's quantities: Q = q(½) = q_near − b_near + a/4, a sum
+    // of positive terms (b_near < 0); P changes sign with the direction of t.
+    const double Q = q_near - b_near + 0.25 * a;
+    const double P_from_near = 0.5 * (0.5 * a - b_near) / Q;
+    if (far_series_moments_about_midpoint(m_lo, m_hi, k_max, Q, beyond_B ? -P_from_near : P_from_near,
+                                          0.25 * a / Q, out) != 0)
+      return true;
+  }
   const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
   for (int i = 0; i < count; ++i) out[i] = T(0);
   auto q_at = [&](const T& t) {
