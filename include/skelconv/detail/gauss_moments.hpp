@@ -279,18 +279,13 @@ void add_moments_with_nodes(int nodes, int m_lo, int m_hi, int k_max, const Node
   }
 }
 
-/// The far-field rule of segment_moments_gauss: the series about the
-/// midpoint where it applies (far_field_series.hpp: P far enough from the
-/// midpoint, on [0, 1]), else N_max nodes, or fewer where the bound above
-/// allows it (double only: the constants are for its rounding unit; wider
-/// types keep N_max).
+/// The far-field rule of segment_moments_gauss: N_max nodes, or fewer where
+/// the bound above allows it (double only: the constants are for its
+/// rounding unit; wider types keep N_max).
 template <class T, unsigned N_max, class QuadraticAt>
 void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_at, const T& a, const T& b,
                            const T& c, const T& t0, const T& t1, T* out) {
   if constexpr (std::numeric_limits<T>::digits <= 53 && N_max == 20) {
-    // out is zero here (segment_moments_gauss), so writing the series' values adds them
-    if constexpr (std::is_same_v<T, double>)
-      if (t0 == 0 && t1 == 1 && segment_moments_far_series(m_lo, m_hi, k_max, a, b, c, out) != 0) return;
     // y² = 4D/(a (t1 − t0))² ≥ y_N²
     const T a_width = a * (t1 - t0);
     const T y2 = T(4) * (a * c - b * b) / (a_width * a_width);
@@ -398,6 +393,29 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
     constexpr unsigned nodes = N >= 20 && std::numeric_limits<T>::digits > 64 ? 2 * N : N;
     add_segment_moments_gauss<T, nodes, decltype(q_at), map>(m_lo, m_hi, k_max, q_at, t0, t1, out);
   }
+}
+
+/// M_{k,m} on [0, 1] (layout of segment_moments_gauss, m > 0: inverse and
+/// Cauchy kernels, q = α|P − Γ(t)|² + β) far from the segment: in double
+/// the series about the midpoint (far_field_series.hpp, remainder bound
+/// below 2^−53) where P itself is far enough from the midpoint for it,
+/// α|P − M|² = c_minus_beta − b + a/4 ≥ a/(4 ρ²_max) (then ρ² = a/(4 q(½))
+/// is smaller still); else, and in other types, the 20-point far-field rule
+/// of segment_moments_gauss. The test is on P's position, not on q(½): a
+/// Cauchy kernel wide compared with |AB| (β ≫ α|AB|²) makes ρ small beside
+/// the segment too, where the generated ∇f takes the difference
+/// Σ w_k (M_{k+1} − t* M_k) of moments, which the rule's moments keep
+/// more exact (codegen/segment_program_builder.hpp, push_flat_rule).
+template <class T>
+void segment_moments_far_field(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c,
+                               const T& c_minus_beta, T* out) {
+  if constexpr (std::is_same_v<T, double>) {
+    const double far = c_minus_beta - b + 0.25 * a;  // α|P − M|²
+    if (far > 0 && detail::far_series_applies(m_hi, 0.25 * a / far) &&
+        detail::segment_moments_far_series(m_lo, m_hi, k_max, a, b, c, out) != 0)
+      return;
+  }
+  segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, a, b, c, T(0), T(1), out);
 }
 
 /// M_{k,m} on [t0, t1] (layout of segment_moments_gauss, m ≤ 0: compact
