@@ -534,7 +534,8 @@ def generic_path_section(data, md, goals):
                       "per level); at d = 3 beside (D ≥ 2a²) the far-field Gauss–Legendre rule (15 nodes "
                       "there: a √ or a division per node and level); beyond an end the Miller recurrence "
                       "downwards (`segment_moments_beyond_end`, its step count growing as P nears the line) "
-                      "or, 2 |AB| past an end, the Gauss rule.")
+                      "or, 2 |AB| or more from the midpoint, the series about the midpoint (or the Gauss rule where it does "
+                      "not apply).")
             rates = []  # instructions per ns where beside and beyond cost about the same (d = 3)
             for k in generic:
                 b, e, t = ir.get(f"generic/{k}/d:3/beside"), ir.get(f"generic/{k}/d:3/beyond"), generic[k].get("3")

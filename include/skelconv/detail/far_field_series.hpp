@@ -50,12 +50,23 @@
 
 namespace skelconv::detail {
 
-/// The series is used where ρ² = a/(4 q(½)) ≤ this, i.e. P at least 2 |AB|
-/// from the midpoint for the inverse kernel (further still for Cauchy), as
-/// far in as the generated far branch (D ≥ 2a²: ρ ≤ 0.35) mostly reaches;
-/// there it takes ≤ 39 terms, and costs 0.3–0.6 of the Gauss–Legendre rule
-/// of gauss_moments.hpp that it replaces (docs/bench.md).
+/// The series converges and keeps its digits where ρ² = a/(4 q(½)) ≤ this,
+/// i.e. P at least 2 |AB| from the midpoint for the inverse kernel (further
+/// still for Cauchy), with ≤ 38 terms.
 inline constexpr double far_series_max_rho2 = 0.0625;
+
+/// Where it is also cheaper than the Gauss–Legendre rule of
+/// gauss_moments.hpp, which is used otherwise: for odd pole orders (the
+/// rule then takes a square root and a division per node) with at most
+/// this order; for even orders the rule's nodes cost a division only, and
+/// it was the cheaper at every distance measured. Measured (-O3, moments of
+/// levels m, m + 2, one run): odd m, series/rule 1.0 at N = 25 (3 |AB|
+/// from M), 0.75–0.86 at N ≤ 19 (5 |AB|), 0.65–0.93 at N ≤ 17 (10 |AB|),
+/// 0.60–0.93 at N ≤ 13 (30 |AB|); even m, 1.3–2.2 up to 10 |AB|, 0.9–1.0
+/// at 30 |AB|.
+inline constexpr int far_series_cheaper_order = 21;
+
+inline bool far_series_cheaper(int m_hi, int N) { return m_hi % 2 == 1 && N <= far_series_cheaper_order; }
 
 /// ... and where ρ m ≤ this (m the upper pole order): beyond it the terms'
 /// signs alternate over a range of magnitudes ((1 + ρ)/(1 − ρ))^m ≈ e^(2ρm)
@@ -230,16 +241,18 @@ void far_series_moments(int m_lo, int m_hi, int k_max, const T& Q, const T& P, c
 /// the series above, given Q = q(½) > 0, P and S = ρ² (each formed by the
 /// caller without cancellation where it can), truncated at the order
 /// far_series_order picks; returns that order N, or 0 (out untouched) where
-/// the series is not used (far_series_applies false, other levels or
-/// weights).
+/// the series is not used: far_series_applies false, other levels or
+/// weights, or (only_where_cheaper) where the Gauss rule costs less
+/// (far_series_cheaper).
 inline int far_series_moments_about_midpoint(int m_lo, int m_hi, int k_max, double Q, double P, double S,
-                                             double* out, double max_rho2 = far_series_max_rho2) {
+                                             double* out, double max_rho2 = far_series_max_rho2,
+                                             bool only_where_cheaper = true) {
   if (m_lo < 1 || m_hi > far_series_max_m || m_hi < m_lo || m_hi - m_lo > 2 || (m_hi - m_lo) % 2 != 0 ||
       k_max < 0 || k_max > far_series_max_k)
     return 0;
   if (!(Q > 0) || !far_series_applies(m_hi, S, max_rho2)) return 0;
   const int N = far_series_order(m_hi, S);
-  if (N == 0) return 0;
+  if (N == 0 || (only_where_cheaper && !far_series_cheaper(m_hi, N))) return 0;
   far_series_moments<double>(m_lo, m_hi, k_max, Q, P, S, N, out);
   return N;
 }
@@ -247,12 +260,12 @@ inline int far_series_moments_about_midpoint(int m_lo, int m_hi, int k_max, doub
 /// far_series_moments_about_midpoint for q = a t² − 2 b t + c (a > 0): Q =
 /// c − b + a/4, P = (a/2 − b)/(2Q), S = a/(4Q).
 inline int segment_moments_far_series(int m_lo, int m_hi, int k_max, double a, double b, double c, double* out,
-                                      double max_rho2 = far_series_max_rho2) {
+                                      double max_rho2 = far_series_max_rho2, bool only_where_cheaper = true) {
   const double Q = c - b + 0.25 * a;
   if (!(Q > 0) || !(a > 0)) return 0;
   const double inverse_Q = 1.0 / Q;
   return far_series_moments_about_midpoint(m_lo, m_hi, k_max, Q, 0.5 * (0.5 * a - b) * inverse_Q,
-                                           0.25 * a * inverse_Q, out, max_rho2);
+                                           0.25 * a * inverse_Q, out, max_rho2, only_where_cheaper);
 }
 
 }  // namespace skelconv::detail

@@ -400,8 +400,9 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
 /// the series about the midpoint (far_field_series.hpp, remainder bound
 /// below 2^−53) where P itself is far enough from the midpoint for it,
 /// α|P − M|² = c_minus_beta − b + a/4 ≥ a/(4 ρ²_max) (then ρ² = a/(4 q(½))
-/// is smaller still); else, and in other types, the 20-point far-field rule
-/// of segment_moments_gauss. The test is on P's position, not on q(½): a
+/// is smaller still), and where it is the cheaper (far_series_cheaper);
+/// else, and in other types, the 20-point far-field rule of
+/// segment_moments_gauss. The test is on P's position, not on q(½): a
 /// Cauchy kernel wide compared with |AB| (β ≫ α|AB|²) makes ρ small beside
 /// the segment too, where the generated ∇f takes the difference
 /// Σ w_k (M_{k+1} − t* M_k) of moments, which the rule's moments keep
