@@ -38,8 +38,9 @@
 // relative. The terms t_n = binom(n + m − 1, n) ρ^n fall by the ratio
 // ρ (n + m)/(n + 1), which decreases in n, so T_N ≤ t_{N+1}/(1 − r) with
 // r = ρ (N + 1 + m)/(N + 2) < 1. The series below stops at the first odd N
-// (h_0 … h_N: whole pairs of terms) with that bound ≤ 2^−53, checked at run
-// time for each point.
+// (h_0 … h_N: whole pairs of terms) with that bound ≤ 2^−53: B_N grows with
+// ρ, so N comes from a table, per m, of the largest ρ² at which each B_N is
+// ≤ 2^−53 (far_series_order_row, computed from far_series_bound).
 #pragma once
 
 #include <array>
@@ -55,6 +56,13 @@ namespace skelconv::detail {
 /// still for Cauchy), with ≤ 38 terms.
 inline constexpr double far_series_max_rho2 = 0.0625;
 
+/// ... and where ρ m ≤ this (m the upper pole order): beyond it the terms'
+/// signs alternate over a range of magnitudes ((1 + ρ)/(1 − ρ))^m ≈ e^(2ρm)
+/// wide, and their sum loses digits (measured on M_{k,m}, k ≤ 4, m ≤ 18,
+/// against long-double quadrature: at most 2.4e-15, the rounding of Q itself,
+/// up to ρm = 1.6; 3.4e-15 at 1.8–2, 1.4e-14 at 3).
+inline constexpr double far_series_max_rho_m = 1.6;
+
 /// Where it is also cheaper than the Gauss–Legendre rule of
 /// gauss_moments.hpp, which is used otherwise: for odd pole orders (the
 /// rule then takes a square root and a division per node) with at most
@@ -67,13 +75,6 @@ inline constexpr double far_series_max_rho2 = 0.0625;
 inline constexpr int far_series_cheaper_order = 21;
 
 inline bool far_series_cheaper(int m_hi, int N) { return m_hi % 2 == 1 && N <= far_series_cheaper_order; }
-
-/// ... and where ρ m ≤ this (m the upper pole order): beyond it the terms'
-/// signs alternate over a range of magnitudes ((1 + ρ)/(1 − ρ))^m ≈ e^(2ρm)
-/// wide, and their sum loses digits (measured on M_{k,m}, k ≤ 4, m ≤ 18,
-/// against long-double quadrature: at most 2.4e-15, the rounding of Q itself,
-/// up to ρm = 1.6; 3.4e-15 at 1.8–2, 1.4e-14 at 3).
-inline constexpr double far_series_max_rho_m = 1.6;
 
 /// The pole orders (m ≤ 20: inverse and Cauchy degree ≤ 18 with ∇f) and the
 /// weights (t^k, k ≤ 4: weight degree 3 with ∇f) the order table covers.
