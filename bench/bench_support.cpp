@@ -115,6 +115,34 @@ std::vector<Input> generic_region_inputs(KernelFamily family, double d) {
   return inputs;
 }
 
+std::vector<Input> band_inputs(KernelFamily family, DistanceBand band) {
+  std::mt19937_64 random(std::uint64_t(1000 * band.lo) + 29);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  double L = 0;
+  for (int c = 0; c < 3; ++c) L += (bench_b[c] - bench_a[c]) * (bench_b[c] - bench_a[c]);
+  L = std::sqrt(L);
+  std::vector<Input> inputs;
+  while (inputs.size() < generic_region_points) {
+    // the target distance log-uniform in the band, then a point at ±10 % of it
+    const double target = L * band.lo * std::pow(band.hi / band.lo, 0.5 + 0.5 * u(random));
+    const double t = 0.5 + 0.5 * u(random);
+    Vec dir{u(random), u(random), u(random)};
+    const double n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    if (n > 1 || n < 1e-3) continue;
+    const double r = target * (1.0 + 0.5 * u(random));
+    Vec p;
+    for (int c = 0; c < 3; ++c) p[c] = bench_a[c] + t * (bench_b[c] - bench_a[c]) + r * dir[c] / n;
+    const double distance = distance_to_segment(p);
+    if (distance < 0.9 * target || distance > 1.1 * target) continue;
+    Input in = segment_input(family);
+    in.p = p;
+    if (kernels::family_facts(family).finite_support) in.R = (band.hi + 2) * L;
+    if (!clip_compact_support(family, in)) continue;
+    inputs.push_back(in);
+  }
+  return inputs;
+}
+
 std::vector<Input> make_inputs(KernelFamily family, std::size_t count, std::uint64_t seed, double min_distance,
                                double max_distance) {
   BoxSampler sampler(bench_R, seed);

@@ -141,6 +141,17 @@ inline constexpr std::size_t generic_region_points = 256;
 inline constexpr double generic_region_compact_R = 5.0;  // × |AB|
 std::vector<Input> generic_region_inputs(KernelFamily family, double d);
 
+/// The distance bands of the GSL comparison (gsl_bench.cpp): 256 inputs at
+/// distance d |AB| from the segment, d log-uniform in [lo, hi], every
+/// direction (beyond the ends too). Compact kernels get R = (hi + 2) |AB|, so
+/// that the support holds the whole segment at every distance, and come
+/// clipped.
+struct DistanceBand {
+  double lo, hi;  // × |AB|
+};
+inline constexpr std::array<DistanceBand, 3> distance_bands{{{0.01, 0.1}, {0.1, 1.0}, {1.0, 10.0}}};
+std::vector<Input> band_inputs(KernelFamily family, DistanceBand band);
+
 // --- Adaptive quadrature of the definition (docs/mathematics.md §2) ---------------------------
 
 struct QuadratureResult {

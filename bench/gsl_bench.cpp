@@ -7,7 +7,9 @@
 //   gsl/<kernel>/d:<d>/closed      the generated f_and_grad (table pointer)
 //   gsl/<kernel>/d:<d>/qag:<tol>   the 4 QAG integrals
 // and the closed form alone for inverse and Cauchy i = 1…8, weight degree 0
-// (the generic-path goal: ≤ 25 ns at every distance).
+// (the generic-path goal: ≤ 25 ns at every distance); and per distance band
+// (0.01–0.1, 0.1–1, 1–10 |AB|, distances log-uniform: the ≥ 300× goal)
+//   gsl/<kernel>/band:<lo>-<hi>/closed, …/qag:1e-08.
 // Points: 256 per distance, every direction (beyond the ends too): P at
 // distance within 10 % of d|AB| from the segment. The compact kernel has
 // R = 5 |AB| here, so that every distance is inside its support; its inputs
@@ -75,6 +77,29 @@ void bench_qag(benchmark::State& state, const KernelRef* k, double d, double tol
   state.counters["max_rel_diff_grad"] = diff_g;
 }
 
+/// The closed form and QAG 1e-8 over one distance band (bench_support.hpp,
+/// distance_bands): gsl/<kernel>/band:<lo>-<hi>/<closed|qag:1e-08>.
+void bench_band_closed(benchmark::State& state, const KernelRef* k, DistanceBand band) {
+  const std::vector<Input> inputs = band_inputs(k->family, band);
+  std::size_t j = 0;
+  for (auto _ : state) {
+    Vec g;
+    benchmark::DoNotOptimize(k->f_and_grad(inputs[j], g));
+    benchmark::DoNotOptimize(g);
+    j = (j + 1) % inputs.size();
+  }
+}
+
+void bench_band_qag(benchmark::State& state, const KernelRef* k, DistanceBand band) {
+  const std::vector<Input> inputs = band_inputs(k->family, band);
+  std::size_t j = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        quadrature(k->family, k->degree, k->weight_degree, inputs[j], 1e-8, true, AdaptiveRule::gsl_qag_61));
+    j = (j + 1) % inputs.size();
+  }
+}
+
 void register_all() {
   for (const KernelFamily family : {KernelFamily::inverse, KernelFamily::cauchy}) {
     for (int degree = 1; degree <= generic_max_degree; ++degree) {
@@ -93,6 +118,13 @@ void register_all() {
   for (const Case& c : cases) {
     const KernelRef* k = find_kernel(c.family, c.degree, c.weight_degree);
     if (!k) continue;
+    for (const DistanceBand band : distance_bands) {
+      char name[32];
+      std::snprintf(name, sizeof name, "band:%g-%g", band.lo, band.hi);
+      const std::string base = "gsl/" + k->name + "/" + name + "/";
+      benchmark::RegisterBenchmark((base + "closed").c_str(), bench_band_closed, k, band);
+      benchmark::RegisterBenchmark((base + "qag:1e-08").c_str(), bench_band_qag, k, band);
+    }
     for (const double d : generic_region_distances) {
       char distance[16];
       std::snprintf(distance, sizeof distance, "d:%g", d);

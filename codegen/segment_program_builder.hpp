@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "helper_costs.hpp"
 #include "segment_families.hpp"
 #include "segment_moments.hpp"
+#include "skelconv/detail/far_field_series.hpp"
 
 namespace skelconv::codegen {
 
@@ -25,6 +27,23 @@ using GiNaC::ex;
 using GiNaC::numeric;
 using GiNaC::pow;
 using GiNaC::symbol;
+
+/// The κ of the series' condition c − β − b − κ a ≥ 0 for highest pole order
+/// m: α|P − M|² ≥ a/(4 ρ²_max), with ρ²_max the largest ρ² at which
+/// the far-field series serves order m (far_series_applies), κ rounded up to
+/// a sixteenth so that the series applies throughout the branch.
+inline ex far_series_flat_kappa(int m) {
+  const double rho2_max = std::min(detail::far_series_max_rho2,
+                                   detail::far_series_max_rho_m * detail::far_series_max_rho_m / (double(m) * m));
+  const double kappa = 1 / (4 * rho2_max) - 0.25;
+  return numeric(static_cast<long>(std::ceil(16 * kappa)), 16);
+}
+
+inline std::string to_string(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
 
 // max(0, x), written as such in C++: q at a clipped end is 0 up to rounding
 // and must not go negative under a square root.
@@ -272,11 +291,29 @@ class SegmentProgramBuilder {
     // at least 2 from [0, 1] (Bernstein ellipse ρ ≥ 5 + √24, so 20 nodes
     // leave ~ρ^−40), while the moment relations there multiply rounding
     // by up to |t*|^k (measured 1.0e-13 in f at t* ≈ 3.9, inverse i2 w3).
-    Alternative flat{{maximum(D_ - 2 * pow(a_, 2), maximum(b_ - 3 * a_, -b_ - 2 * a_))},
-                     "P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): "
-                     "every moment by segment_moments_gauss<T, 20>",
+    // And P far from the midpoint, wherever the series about the midpoint
+    // applies to this kernel's highest pole order (include/skelconv/detail/
+    // far_field_series.hpp, far_series_applies: ρ² = a/(4 q(½)) ≤ 1/16 and
+    // ρ m ≤ 8/5): α|P − M|² = c − β − b + a/4 ≥ a/(4 ρ²_max), i.e.
+    // c − β − b − κ a ≥ 0 (2.2e-14 in f at 2.4 |AB| from M, Cauchy i3 w3,
+    // by the moment relations beyond an end). segment_moments_far_field
+    // takes the series there, by the same geometric test (it gets c − β),
+    // and the rule elsewhere: a Cauchy kernel wide compared with |AB| has
+    // D ≥ 2a² beside the segment, where ∇f is its along-line part
+    // Σ w_k (M_{k+1} − t* M_k), a difference the series' moments leave 8×
+    // less exact than the rule's (3.6e-14 against 4.7e-15, Cauchy i9 w2,
+    // 1e-4 |AB| from the line). The test of c − β adds no temporary, so the
+    // rest of the generated code keeps its names and GiNaC its order of terms.
+    const ex kappa = far_series_flat_kappa(highest_level());
+    Alternative flat{{maximum(maximum(D_ - 2 * pow(a_, 2), maximum(b_ - 3 * a_, -b_ - 2 * a_)),
+                              c_ - beta_ - b_ - kappa * a_)},
+                     "P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the "
+                     "midpoint (|P − M|² ≥ " +
+                         to_string(kappa + GiNaC::numeric(1, 4)) +
+                         " |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, "
+                         "or segment_moments_gauss<T, 20>)",
                      {}, {}, {}};
-    fill_from_helper(flat, "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, 0, 1}, gauss_rule_cost(20));
+    fill_from_helper(flat, "M_flat", "segment_moments_far_field<T>", {a_, b_, c_, c_ - beta_}, gauss_rule_cost(20));
     choice.alternatives.push_back(std::move(flat));
   }
 

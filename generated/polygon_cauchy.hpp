@@ -112,8 +112,8 @@ void polygon_edge_cauchy_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
-/// Operations per edge: 57 +, 73 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 531 +, 1065 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 73 +, 87 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 547 +, 1079 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -177,14 +177,14 @@ void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T J_3;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
   } else if (t5 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -220,8 +220,8 @@ void polygon_edge_cauchy_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−3/2) dQ
-/// Operations per edge: 57 +, 73 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 553 +, 1068 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 73 +, 87 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 569 +, 1082 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -285,14 +285,14 @@ void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T J_3;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
   } else if (t5 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -332,8 +332,8 @@ void polygon_edge_cauchy_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
-/// Operations per edge: 55 +, 65 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 532 +, 1024 ×, 145 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 71 +, 79 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 548 +, 1038 ×, 145 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -396,14 +396,14 @@ void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T q1 = zeta2 + bp_bp * in.s;
   const T c_minus_b = zeta2 + ap_bp * in.s;
   T J_2;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(15) / T(4)) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
   } else if (t5 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -438,8 +438,8 @@ void polygon_edge_cauchy_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
-/// Operations per edge: 58 +, 72 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 538 +, 1058 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 74 +, 86 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 554 +, 1072 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -503,14 +503,14 @@ void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T c_minus_b = in.s * ap_bp + zeta2;
   T J_2;
   T J_4;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -553,8 +553,8 @@ void polygon_edge_cauchy_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−4/2) dQ
-/// Operations per edge: 58 +, 72 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 558 +, 1079 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 74 +, 86 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 574 +, 1093 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -618,14 +618,14 @@ void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T c_minus_b = in.s * ap_bp + zeta2;
   T J_2;
   T J_4;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -672,8 +672,8 @@ void polygon_edge_cauchy_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
-/// Operations per edge: 57 +, 73 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 531 +, 1065 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 73 +, 87 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 547 +, 1079 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -737,14 +737,14 @@ void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T J_3;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(15) / T(4)) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
   } else if (t5 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -779,8 +779,8 @@ void polygon_edge_cauchy_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
-/// Operations per edge: 60 +, 86 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 535 +, 1117 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 76 +, 100 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 551 +, 1131 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -845,14 +845,14 @@ void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   const T r1 = sqrt(q1);
   T J_3;
   T J_5;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(15) / T(4)) * a - b));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -897,8 +897,8 @@ void polygon_edge_cauchy_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−5/2) dQ
-/// Operations per edge: 60 +, 86 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 555 +, 1118 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 76 +, 100 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 571 +, 1132 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -963,14 +963,14 @@ void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   const T r1 = sqrt(q1);
   T J_3;
   T J_5;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(15) / T(4)) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -1019,8 +1019,8 @@ void polygon_edge_cauchy_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
-/// Operations per edge: 58 +, 72 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 538 +, 1058 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 74 +, 86 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 554 +, 1072 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1084,14 +1084,14 @@ void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T c_minus_b = in.s * ap_bp + zeta2;
   T J_2;
   T J_4;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -1133,8 +1133,8 @@ void polygon_edge_cauchy_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
-/// Operations per edge: 61 +, 87 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 546 +, 1095 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 77 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 562 +, 1109 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1199,14 +1199,14 @@ void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   T J_2;
   T J_4;
   T J_6;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(2, 6, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 6, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -1258,8 +1258,8 @@ void polygon_edge_cauchy_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−6/2) dQ
-/// Operations per edge: 61 +, 87 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 562 +, 1112 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 77 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 578 +, 1126 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1324,14 +1324,14 @@ void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   T J_2;
   T J_4;
   T J_6;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(2, 6, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 6, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -1387,8 +1387,8 @@ void polygon_edge_cauchy_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
-/// Operations per edge: 60 +, 86 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 539 +, 1121 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 76 +, 100 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 555 +, 1135 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1453,14 +1453,14 @@ void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   const T r1 = sqrt(q1);
   T J_3;
   T J_5;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -1504,8 +1504,8 @@ void polygon_edge_cauchy_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
-/// Operations per edge: 63 +, 105 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 541 +, 1172 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 79 +, 119 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 557 +, 1186 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1571,14 +1571,14 @@ void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   T J_3;
   T J_5;
   T J_7;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - zeta2));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(3, 7, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 7, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -1632,8 +1632,8 @@ void polygon_edge_cauchy_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−7/2) dQ
-/// Operations per edge: 63 +, 105 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 561 +, 1173 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 79 +, 119 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 577 +, 1187 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1699,14 +1699,14 @@ void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   T J_3;
   T J_5;
   T J_7;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(73) / T(16)) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(3, 7, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 7, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -1764,8 +1764,8 @@ void polygon_edge_cauchy_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
-/// Operations per edge: 61 +, 87 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 540 +, 1089 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 77 +, 101 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 556 +, 1103 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1830,14 +1830,14 @@ void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   T J_2;
   T J_4;
   T J_6;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(15) / T(4)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(2, 6, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 6, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -1888,8 +1888,8 @@ void polygon_edge_cauchy_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
-/// Operations per edge: 64 +, 100 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 546 +, 1125 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 80 +, 114 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 562 +, 1139 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1955,14 +1955,14 @@ void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   T J_4;
   T J_6;
   T J_8;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - zeta2));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 8, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 8, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2021,8 +2021,8 @@ void polygon_edge_cauchy_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−8/2) dQ
-/// Operations per edge: 64 +, 100 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 564 +, 1144 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 80 +, 114 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 580 +, 1158 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2088,14 +2088,14 @@ void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   T J_4;
   T J_6;
   T J_8;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - T(6) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 8, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 8, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2158,8 +2158,8 @@ void polygon_edge_cauchy_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
-/// Operations per edge: 63 +, 105 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 539 +, 1170 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 79 +, 119 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 555 +, 1184 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2225,14 +2225,14 @@ void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
   T J_3;
   T J_5;
   T J_7;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(73) / T(16)) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(3, 7, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 7, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -2285,8 +2285,8 @@ void polygon_edge_cauchy_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
-/// Operations per edge: 66 +, 120 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 543 +, 1223 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 82 +, 134 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 559 +, 1237 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2353,14 +2353,14 @@ void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
   T J_5;
   T J_7;
   T J_9;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - zeta2));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 9, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 9, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -2421,8 +2421,8 @@ void polygon_edge_cauchy_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−9/2) dQ
-/// Operations per edge: 66 +, 120 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 563 +, 1224 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 82 +, 134 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 579 +, 1238 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2489,14 +2489,14 @@ void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
   T J_5;
   T J_7;
   T J_9;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(123) / T(16)) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 9, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 9, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -2561,8 +2561,8 @@ void polygon_edge_cauchy_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdg
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
-/// Operations per edge: 64 +, 100 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 544 +, 1123 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 80 +, 114 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 560 +, 1137 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2628,14 +2628,14 @@ void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   T J_4;
   T J_6;
   T J_8;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - T(6) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 8, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 8, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2693,8 +2693,8 @@ void polygon_edge_cauchy_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
-/// Operations per edge: 67 +, 113 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 550 +, 1159 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 83 +, 127 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 566 +, 1173 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2761,14 +2761,14 @@ void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T J_6;
   T J_8;
   T J_10;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - zeta2));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(2, 10, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 10, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2834,8 +2834,8 @@ void polygon_edge_cauchy_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−10/2) dQ
-/// Operations per edge: 67 +, 113 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 574 +, 1184 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 83 +, 127 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 590 +, 1198 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2902,14 +2902,14 @@ void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T J_6;
   T J_8;
   T J_10;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(153) / T(16)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(2, 10, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 10, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2979,8 +2979,8 @@ void polygon_edge_cauchy_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
-/// Operations per edge: 66 +, 120 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 547 +, 1227 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 82 +, 134 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 563 +, 1241 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3047,14 +3047,14 @@ void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   T J_5;
   T J_7;
   T J_9;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - zeta2));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 9, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 9, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -3114,8 +3114,8 @@ void polygon_edge_cauchy_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
-/// Operations per edge: 69 +, 135 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 553 +, 1283 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 85 +, 149 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 569 +, 1297 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3183,14 +3183,14 @@ void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T J_7;
   T J_9;
   T J_11;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(93) / T(8)) * a - b));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(3, 11, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 11, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -3258,8 +3258,8 @@ void polygon_edge_cauchy_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−11/2) dQ
-/// Operations per edge: 69 +, 135 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 569 +, 1280 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 85 +, 149 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 585 +, 1294 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3327,14 +3327,14 @@ void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T J_7;
   T J_9;
   T J_11;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - zeta2));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(3, 11, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 11, 0, a, b, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -3406,8 +3406,8 @@ void polygon_edge_cauchy_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
-/// Operations per edge: 67 +, 113 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 548 +, 1157 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 83 +, 127 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 564 +, 1171 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3474,14 +3474,14 @@ void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   T J_6;
   T J_8;
   T J_10;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - zeta2 - (T(153) / T(16)) * a));
   const T t5 = -b * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * a - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(2, 10, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 10, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -3546,8 +3546,8 @@ void polygon_edge_cauchy_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
-/// Operations per edge: 70 +, 126 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 552 +, 1192 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 86 +, 140 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 568 +, 1206 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3615,14 +3615,14 @@ void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T J_8;
   T J_10;
   T J_12;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(221) / T(16)) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 12, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 12, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -3695,8 +3695,8 @@ void polygon_edge_cauchy_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 + s |P − Q|²)^(−12/2) dQ
-/// Operations per edge: 70 +, 126 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 572 +, 1213 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 86 +, 140 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 588 +, 1227 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_cauchy_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3764,14 +3764,14 @@ void polygon_edge_cauchy_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T J_8;
   T J_10;
   T J_12;
-  const T t4 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t4 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - zeta2 - (T(221) / T(16)) * a - b));
   const T t5 = -a_minus_b * b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * a * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 12, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 12, 0, a, b, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];

@@ -109,8 +109,8 @@ void polygon_edge_inverse_i3_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
-/// Operations per edge: 56 +, 64 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 532 +, 1058 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 72 +, 78 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 548 +, 1072 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -172,14 +172,14 @@ void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T J_3;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(15) / T(4)) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
   } else if (t5 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -214,8 +214,8 @@ void polygon_edge_inverse_i3_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−3) dQ
-/// Operations per edge: 56 +, 64 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 552 +, 1059 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 72 +, 78 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 568 +, 1073 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -277,14 +277,14 @@ void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T J_3;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
   } else if (t5 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -323,8 +323,8 @@ void polygon_edge_inverse_i3_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
-/// Operations per edge: 54 +, 55 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 535 +, 1018 ×, 145 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 70 +, 69 ×, 2 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 551 +, 1032 ×, 145 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -385,14 +385,14 @@ void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T q1 = bp_bp + zeta2;
   const T c_minus_b = ap_bp + zeta2;
   T J_2;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(15) / T(4)) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
   } else if (t5 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -426,8 +426,8 @@ void polygon_edge_inverse_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
-/// Operations per edge: 57 +, 62 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 535 +, 1046 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 73 +, 76 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 551 +, 1060 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -489,14 +489,14 @@ void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T c_minus_b = ap_bp + zeta2;
   T J_2;
   T J_4;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - (T(15) / T(4)) * ab_ab - ab_ap - zeta2));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -538,8 +538,8 @@ void polygon_edge_inverse_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−4) dQ
-/// Operations per edge: 57 +, 62 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 557 +, 1069 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 73 +, 76 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 573 +, 1083 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -601,14 +601,14 @@ void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T c_minus_b = zeta2 + ap_bp;
   T J_2;
   T J_4;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -654,8 +654,8 @@ void polygon_edge_inverse_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
-/// Operations per edge: 56 +, 64 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 530 +, 1056 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 72 +, 78 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 546 +, 1070 ×, 145 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -717,14 +717,14 @@ void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T J_3;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
   } else if (t5 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -758,8 +758,8 @@ void polygon_edge_inverse_i5_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
-/// Operations per edge: 59 +, 77 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 534 +, 1108 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 75 +, 91 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 550 +, 1122 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -822,14 +822,14 @@ void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T r1 = sqrt(q1);
   T J_3;
   T J_5;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - (T(15) / T(4)) * ab_ab - ab_ap - zeta2));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -873,8 +873,8 @@ void polygon_edge_inverse_i5_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−5) dQ
-/// Operations per edge: 59 +, 77 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 558 +, 1113 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 75 +, 91 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 574 +, 1127 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -937,14 +937,14 @@ void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T r1 = sqrt(q1);
   T J_3;
   T J_5;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -992,8 +992,8 @@ void polygon_edge_inverse_i5_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
-/// Operations per edge: 57 +, 62 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 535 +, 1046 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 73 +, 76 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 551 +, 1060 ×, 147 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1055,14 +1055,14 @@ void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T c_minus_b = zeta2 + ap_bp;
   T J_2;
   T J_4;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(15) / T(4)) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -1103,8 +1103,8 @@ void polygon_edge_inverse_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
-/// Operations per edge: 60 +, 77 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 541 +, 1081 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 76 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 557 +, 1095 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1167,14 +1167,14 @@ void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T J_2;
   T J_4;
   T J_6;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(2, 6, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 6, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -1225,8 +1225,8 @@ void polygon_edge_inverse_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−6) dQ
-/// Operations per edge: 60 +, 77 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 563 +, 1104 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 76 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 579 +, 1118 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1289,14 +1289,14 @@ void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T J_2;
   T J_4;
   T J_6;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(15) / T(4)) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(2, 6, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 6, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -1351,8 +1351,8 @@ void polygon_edge_inverse_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
-/// Operations per edge: 59 +, 77 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 538 +, 1112 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 75 +, 91 ×, 7 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 554 +, 1126 ×, 147 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1415,14 +1415,14 @@ void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T r1 = sqrt(q1);
   T J_3;
   T J_5;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
   } else if (t5 >= T(0) && t7 >= T(0)) {
@@ -1465,8 +1465,8 @@ void polygon_edge_inverse_i7_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
-/// Operations per edge: 62 +, 96 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 538 +, 1161 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 78 +, 110 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 554 +, 1175 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1530,14 +1530,14 @@ void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T J_3;
   T J_5;
   T J_7;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - (T(73) / T(16)) * ab_ab - ab_ap - zeta2));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(3, 7, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 7, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -1590,8 +1590,8 @@ void polygon_edge_inverse_i7_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−7) dQ
-/// Operations per edge: 62 +, 96 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 562 +, 1166 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 78 +, 110 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 578 +, 1180 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1655,14 +1655,14 @@ void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T J_3;
   T J_5;
   T J_7;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(3, 7, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 7, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -1719,8 +1719,8 @@ void polygon_edge_inverse_i7_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
-/// Operations per edge: 60 +, 77 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 541 +, 1081 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 76 +, 91 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 557 +, 1095 ×, 149 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1783,14 +1783,14 @@ void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   T J_2;
   T J_4;
   T J_6;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - (T(15) / T(4)) * ab_ab - ab_ap - zeta2));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(2, 6, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 6, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -1840,8 +1840,8 @@ void polygon_edge_inverse_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
-/// Operations per edge: 63 +, 90 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 547 +, 1117 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 79 +, 104 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 563 +, 1131 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1905,14 +1905,14 @@ void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T J_4;
   T J_6;
   T J_8;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - T(6) * ab_ab - ab_ap - zeta2));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 8, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 8, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -1970,8 +1970,8 @@ void polygon_edge_inverse_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−8) dQ
-/// Operations per edge: 63 +, 90 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 569 +, 1140 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 79 +, 104 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 585 +, 1154 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2035,14 +2035,14 @@ void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T J_4;
   T J_6;
   T J_8;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - T(6) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 8, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 8, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2104,8 +2104,8 @@ void polygon_edge_inverse_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
-/// Operations per edge: 62 +, 96 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 540 +, 1163 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 78 +, 110 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 556 +, 1177 ×, 149 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2169,14 +2169,14 @@ void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   T J_3;
   T J_5;
   T J_7;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(3, 7, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 7, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -2228,8 +2228,8 @@ void polygon_edge_inverse_i9_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
-/// Operations per edge: 65 +, 111 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 546 +, 1218 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 81 +, 125 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 562 +, 1232 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2294,14 +2294,14 @@ void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T J_5;
   T J_7;
   T J_9;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(123) / T(16)) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 9, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 9, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -2361,8 +2361,8 @@ void polygon_edge_inverse_i9_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−9) dQ
-/// Operations per edge: 65 +, 111 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 562 +, 1215 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 81 +, 125 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 578 +, 1229 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2427,14 +2427,14 @@ void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T J_5;
   T J_7;
   T J_9;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - (T(123) / T(16)) * ab_ab - ab_ap - zeta2));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 9, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 9, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -2498,8 +2498,8 @@ void polygon_edge_inverse_i9_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
-/// Operations per edge: 63 +, 90 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 547 +, 1117 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 79 +, 104 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 563 +, 1131 ×, 151 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2563,14 +2563,14 @@ void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   T J_4;
   T J_6;
   T J_8;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - T(6) * ab_ab - ab_ap));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 8, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 8, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2627,8 +2627,8 @@ void polygon_edge_inverse_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
-/// Operations per edge: 66 +, 103 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 551 +, 1151 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 82 +, 117 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 567 +, 1165 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2693,14 +2693,14 @@ void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   T J_6;
   T J_8;
   T J_10;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - (T(153) / T(16)) * ab_ab - zeta2 - ab_ap));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(2, 10, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 10, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2765,8 +2765,8 @@ void polygon_edge_inverse_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−10) dQ
-/// Operations per edge: 66 +, 103 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 569 +, 1170 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 82 +, 117 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 585 +, 1184 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2831,14 +2831,14 @@ void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   T J_6;
   T J_8;
   T J_10;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - (T(153) / T(16)) * ab_ab - ab_ap - zeta2));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(2, 10, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 10, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -2907,8 +2907,8 @@ void polygon_edge_inverse_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
-/// Operations per edge: 65 +, 111 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 546 +, 1218 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 81 +, 125 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 562 +, 1232 ×, 151 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2973,14 +2973,14 @@ void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   T J_5;
   T J_7;
   T J_9;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 9, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 9, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -3039,8 +3039,8 @@ void polygon_edge_inverse_i11_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
-/// Operations per edge: 68 +, 126 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 548 +, 1270 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 84 +, 140 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 564 +, 1284 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3106,14 +3106,14 @@ void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   T J_7;
   T J_9;
   T J_11;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(93) / T(8)) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(3, 11, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 11, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -3180,8 +3180,8 @@ void polygon_edge_inverse_i11_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−11) dQ
-/// Operations per edge: 68 +, 126 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 568 +, 1271 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 84 +, 140 ×, 5 /, 3 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 584 +, 1285 ×, 153 /, 24 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3247,14 +3247,14 @@ void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   T J_7;
   T J_9;
   T J_11;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(c - zeta2 - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * ab_ab * t6 - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(3, 11, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 11, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_3 = M_flat[0];
     J_5 = M_flat[1];
     J_7 = M_flat[2];
@@ -3325,8 +3325,8 @@ void polygon_edge_inverse_i11_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
-/// Operations per edge: 66 +, 103 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 549 +, 1149 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 82 +, 117 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 565 +, 1163 ×, 153 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3391,14 +3391,14 @@ void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   T J_6;
   T J_8;
   T J_10;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(153) / T(16)) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 5> M_flat;
-    segment_moments_gauss<T, 20>(2, 10, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 10, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -3462,8 +3462,8 @@ void polygon_edge_inverse_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
-/// Operations per edge: 69 +, 116 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 555 +, 1186 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 85 +, 130 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 571 +, 1200 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3529,14 +3529,14 @@ void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   T J_8;
   T J_10;
   T J_12;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(221) / T(16)) * ab_ab));
   const T t5 = -a_minus_b * ab_ap;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 12, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 12, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];
@@ -3608,8 +3608,8 @@ void polygon_edge_inverse_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω |P − Q|^(−12) dQ
-/// Operations per edge: 69 +, 116 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 573 +, 1205 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
+/// Operations per edge: 85 +, 130 ×, 5 /, 1 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Longest path: 589 +, 1219 ×, 155 /, 2 sqrt, 3 atan, 2 log/asinh, 20 other.
 template <class T>
 void polygon_edge_inverse_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3675,14 +3675,14 @@ void polygon_edge_inverse_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   T J_8;
   T J_10;
   T J_12;
-  const T t4 = max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(D - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(c - ab_ap - zeta2 - (T(221) / T(16)) * ab_ab));
   const T t5 = -ab_ap * a_minus_b;
   const T t6 = min(T(c), T(q1));
   const T t7 = (T(7) / T(10)) * t6 * ab_ab - D;
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 12, 0, ab_ab, ab_ap, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 12, 0, ab_ab, ab_ap, c, c - zeta2, M_flat.data());
     J_2 = M_flat[0];
     J_4 = M_flat[1];
     J_6 = M_flat[2];

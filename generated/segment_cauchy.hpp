@@ -24,8 +24,8 @@ namespace skelconv::generated {
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 39 +, 51 ×, 2 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 189 +, 243 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 55 +, 65 ×, 2 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 206 +, 257 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -84,11 +84,11 @@ T segment_cauchy_i1_w0_f(const SegmentInput<T>& in) {
   const T t6 = sqrt(a);
   const T J1 = asinh(X) / t6;
   T F;
-  const T t7 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t7 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   if (t7 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(1, 1, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 1, 0, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -100,8 +100,8 @@ T segment_cauchy_i1_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 47 +, 70 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 341 +, 1015 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 63 +, 84 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 357 +, 1029 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i1_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -157,13 +157,13 @@ std::array<T, 3> segment_cauchy_i1_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
     G_E = M_flat[3] * in.w[0] - in.w[0] * t6 * b * M_flat[2];
@@ -194,8 +194,8 @@ std::array<T, 3> segment_cauchy_i1_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 48 +, 79 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 342 +, 1023 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 64 +, 93 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 358 +, 1037 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i1_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -269,13 +269,13 @@ T segment_cauchy_i1_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t14 = T(1) / a;
@@ -315,7 +315,7 @@ T segment_cauchy_i1_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Returns false where segment_cauchy_i1_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 48 +, 79 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 64 +, 93 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -388,13 +388,13 @@ bool segment_cauchy_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t14 = T(1) / a;
@@ -421,8 +421,8 @@ bool segment_cauchy_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 42 +, 55 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 210 +, 265 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 58 +, 69 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 227 +, 279 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -482,11 +482,11 @@ T segment_cauchy_i1_w1_f(const SegmentInput<T>& in) {
   const T t7 = T(1) / t6;
   const T J1 = asinh(X) * t7;
   T F;
-  const T t8 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t8 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(1, 1, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 1, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -499,8 +499,8 @@ T segment_cauchy_i1_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 53 +, 82 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 347 +, 1025 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 69 +, 96 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 363 +, 1039 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i1_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -573,13 +573,13 @@ std::array<T, 3> segment_cauchy_i1_w1_grad(const SegmentInput<T>& in) {
   const T J1 = asinh(X) * t10;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 2, a, b, c, c - T(1), M_flat.data());
     const T t14 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t14;
     const T t15 = T(1) / a;
@@ -614,8 +614,8 @@ std::array<T, 3> segment_cauchy_i1_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 56 +, 87 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 350 +, 1030 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 72 +, 101 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 366 +, 1044 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i1_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -689,13 +689,13 @@ T segment_cauchy_i1_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
     const T t14 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t14;
@@ -738,7 +738,7 @@ T segment_cauchy_i1_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Returns false where segment_cauchy_i1_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 56 +, 87 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 72 +, 101 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -811,13 +811,13 @@ bool segment_cauchy_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t14 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t14;
@@ -846,8 +846,8 @@ bool segment_cauchy_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 47 +, 67 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 231 +, 286 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 63 +, 81 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 248 +, 300 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -907,11 +907,11 @@ T segment_cauchy_i1_w2_f(const SegmentInput<T>& in) {
   const T t7 = T(1) / t6;
   const T J1 = t7 * asinh(X);
   T F;
-  const T t8 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t8 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(1, 1, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 1, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -925,8 +925,8 @@ T segment_cauchy_i1_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 60 +, 93 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 354 +, 1035 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 76 +, 107 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 370 +, 1049 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i1_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -999,13 +999,13 @@ std::array<T, 3> segment_cauchy_i1_w2_grad(const SegmentInput<T>& in) {
   const T J1 = t10 * asinh(X);
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 3, a, b, c, c - T(1), M_flat.data());
     const T t14 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + M_flat[4] * in.w[0];
     G_ap = t14;
     const T t15 = T(1) / a;
@@ -1042,8 +1042,8 @@ std::array<T, 3> segment_cauchy_i1_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 66 +, 109 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 360 +, 1051 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 82 +, 123 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 376 +, 1065 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i1_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1117,13 +1117,13 @@ T segment_cauchy_i1_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0];
     const T t14 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
     G_ap = t14;
@@ -1170,7 +1170,7 @@ T segment_cauchy_i1_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Returns false where segment_cauchy_i1_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 66 +, 109 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 82 +, 123 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1243,13 +1243,13 @@ bool segment_cauchy_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t14 = in.w[2] * M_flat[6] + in.w[0] * M_flat[4] + in.w[1] * M_flat[5];
     G_ap = t14;
@@ -1280,8 +1280,8 @@ bool segment_cauchy_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 52 +, 84 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 252 +, 307 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 68 +, 98 ×, 3 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 269 +, 321 ×, 25 /, 25 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1341,11 +1341,11 @@ T segment_cauchy_i1_w3_f(const SegmentInput<T>& in) {
   const T t7 = T(1) / t6;
   const T J1 = asinh(X) * t7;
   T F;
-  const T t8 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t8 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(1, 1, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 1, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[1] * in.w[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -1361,8 +1361,8 @@ T segment_cauchy_i1_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 69 +, 117 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 363 +, 1059 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 85 +, 131 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 379 +, 1073 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i1_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1435,13 +1435,13 @@ std::array<T, 3> segment_cauchy_i1_w3_grad(const SegmentInput<T>& in) {
   const T J1 = t10 * asinh(X);
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 4, a, b, c, c - T(1), M_flat.data());
     const T t14 = M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5];
     G_ap = t14;
     const T t15 = T(1) / a;
@@ -1482,8 +1482,8 @@ std::array<T, 3> segment_cauchy_i1_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt
-/// Operations: 76 +, 141 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 370 +, 1083 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 92 +, 155 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 386 +, 1097 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i1_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1557,13 +1557,13 @@ T segment_cauchy_i1_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t12 = -b * a_minus_b;
   const T t13 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
     const T t14 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + in.w[1] * M_flat[6] + M_flat[7] * in.w[2];
     G_ap = t14;
@@ -1618,7 +1618,7 @@ T segment_cauchy_i1_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// Returns false where segment_cauchy_i1_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 76 +, 141 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 92 +, 155 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1691,13 +1691,13 @@ bool segment_cauchy_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t14 = in.w[3] * M_flat[8] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
     G_ap = t14;
@@ -1731,8 +1731,8 @@ bool segment_cauchy_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 42 +, 54 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 886 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 58 +, 68 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 468 +, 900 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1776,13 +1776,13 @@ T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -1801,8 +1801,8 @@ T segment_cauchy_i2_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 51 +, 80 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 344 +, 1023 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 94 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 360 +, 1037 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1858,13 +1858,13 @@ std::array<T, 3> segment_cauchy_i2_w0_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - b * M_flat[2] * in.w[0] * t6;
@@ -1899,8 +1899,8 @@ std::array<T, 3> segment_cauchy_i2_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 51 +, 82 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 346 +, 1030 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 96 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 362 +, 1044 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1957,13 +1957,13 @@ T segment_cauchy_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -2005,7 +2005,7 @@ T segment_cauchy_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Returns false where segment_cauchy_i2_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 51 +, 82 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 67 +, 96 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2061,13 +2061,13 @@ bool segment_cauchy_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -2096,8 +2096,8 @@ bool segment_cauchy_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 44 +, 59 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 339 +, 1001 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 60 +, 73 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 355 +, 1015 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2141,13 +2141,13 @@ T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
@@ -2170,8 +2170,8 @@ T segment_cauchy_i2_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 56 +, 86 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 351 +, 1034 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 100 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 367 +, 1048 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2227,13 +2227,13 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -2275,8 +2275,8 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 58 +, 94 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 353 +, 1044 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 74 +, 108 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 369 +, 1058 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2333,13 +2333,13 @@ T segment_cauchy_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -2386,7 +2386,7 @@ T segment_cauchy_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Returns false where segment_cauchy_i2_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 58 +, 94 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
+/// Operations: 74 +, 108 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2442,13 +2442,13 @@ bool segment_cauchy_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -2482,8 +2482,8 @@ bool segment_cauchy_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 47 +, 64 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 342 +, 1006 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 63 +, 78 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 358 +, 1020 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2527,13 +2527,13 @@ T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
@@ -2558,8 +2558,8 @@ T segment_cauchy_i2_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 62 +, 100 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 357 +, 1046 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 78 +, 114 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 373 +, 1060 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2615,13 +2615,13 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -2664,8 +2664,8 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 66 +, 110 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 361 +, 1058 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 82 +, 124 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 377 +, 1072 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2722,13 +2722,13 @@ T segment_cauchy_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -2783,7 +2783,7 @@ T segment_cauchy_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Returns false where segment_cauchy_i2_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 66 +, 110 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
+/// Operations: 82 +, 124 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2839,13 +2839,13 @@ bool segment_cauchy_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[1] * M_flat[5] + M_flat[4] * in.w[0] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -2881,8 +2881,8 @@ bool segment_cauchy_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 52 +, 74 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 347 +, 1016 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 68 +, 88 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 363 +, 1030 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2926,13 +2926,13 @@ T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[3] * in.w[3] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
@@ -2959,8 +2959,8 @@ T segment_cauchy_i2_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 69 +, 115 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 364 +, 1062 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 85 +, 129 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 380 +, 1076 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i2_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3016,13 +3016,13 @@ std::array<T, 3> segment_cauchy_i2_w3_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -3073,8 +3073,8 @@ std::array<T, 3> segment_cauchy_i2_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
-/// Operations: 76 +, 132 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 371 +, 1080 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 92 +, 146 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 387 +, 1094 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3131,13 +3131,13 @@ T segment_cauchy_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
     const T t6 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6];
     G_ap = t6;
@@ -3194,7 +3194,7 @@ T segment_cauchy_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt
 /// Returns false where segment_cauchy_i2_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 76 +, 132 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
+/// Operations: 92 +, 146 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3250,13 +3250,13 @@ bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
     const T t6 = in.w[2] * M_flat[7] + M_flat[8] * in.w[3] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6];
     G_ap = t6;
@@ -3295,8 +3295,8 @@ bool segment_cauchy_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 40 +, 50 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 884 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 56 +, 64 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 465 +, 898 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3340,13 +3340,13 @@ T segment_cauchy_i3_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 0, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -3363,8 +3363,8 @@ T segment_cauchy_i3_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 49 +, 83 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1623 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 97 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1637 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3420,13 +3420,13 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = M_flat[3] * in.w[0] - b * M_flat[2] * in.w[0] * t6;
@@ -3467,8 +3467,8 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 49 +, 86 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1625 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 100 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1639 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3525,13 +3525,13 @@ T segment_cauchy_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -3579,7 +3579,7 @@ T segment_cauchy_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Returns false where segment_cauchy_i3_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 49 +, 86 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 65 +, 100 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3635,13 +3635,13 @@ bool segment_cauchy_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -3672,8 +3672,8 @@ bool segment_cauchy_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 43 +, 56 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 680 +, 1574 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 59 +, 70 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 696 +, 1588 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3717,13 +3717,13 @@ T segment_cauchy_i3_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -3744,8 +3744,8 @@ T segment_cauchy_i3_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 54 +, 96 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 348 +, 1043 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 110 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 364 +, 1057 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3801,13 +3801,13 @@ std::array<T, 3> segment_cauchy_i3_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -3861,8 +3861,8 @@ std::array<T, 3> segment_cauchy_i3_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 57 +, 103 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 351 +, 1054 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 117 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 367 +, 1068 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3919,13 +3919,13 @@ T segment_cauchy_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -3986,7 +3986,7 @@ T segment_cauchy_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Returns false where segment_cauchy_i3_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 57 +, 103 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 73 +, 117 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4042,13 +4042,13 @@ bool segment_cauchy_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -4084,8 +4084,8 @@ bool segment_cauchy_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 47 +, 70 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 341 +, 1009 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 63 +, 84 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 357 +, 1023 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i3_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4146,13 +4146,13 @@ T segment_cauchy_i3_w2_f(const SegmentInput<T>& in) {
   const T t8 = T(1) / t7;
   const T J1 = t8 * asinh(X);
   T F;
-  const T t9 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t9 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t10 = -a_minus_b * b;
   const T t11 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t9 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
   } else if (t10 >= T(0) && t11 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
@@ -4179,8 +4179,8 @@ T segment_cauchy_i3_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 61 +, 111 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 355 +, 1060 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 125 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 371 +, 1074 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4236,13 +4236,13 @@ std::array<T, 3> segment_cauchy_i3_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + M_flat[4] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -4299,8 +4299,8 @@ std::array<T, 3> segment_cauchy_i3_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 66 +, 129 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 360 +, 1082 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 82 +, 143 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 376 +, 1096 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4374,13 +4374,13 @@ T segment_cauchy_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1];
     const T t14 = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
     G_ap = t14;
@@ -4445,7 +4445,7 @@ T segment_cauchy_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Returns false where segment_cauchy_i3_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 66 +, 129 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 82 +, 143 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4518,13 +4518,13 @@ bool segment_cauchy_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t14 = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
     G_ap = t14;
@@ -4564,8 +4564,8 @@ bool segment_cauchy_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 52 +, 79 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 346 +, 1018 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 68 +, 93 ×, 6 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 362 +, 1032 ×, 126 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i3_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4626,13 +4626,13 @@ T segment_cauchy_i3_w3_f(const SegmentInput<T>& in) {
   const T t8 = T(1) / t7;
   const T J1 = asinh(X) * t8;
   T F;
-  const T t9 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t9 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t10 = -a_minus_b * b;
   const T t11 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t9 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0];
   } else if (t10 >= T(0) && t11 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
@@ -4663,8 +4663,8 @@ T segment_cauchy_i3_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 69 +, 135 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 363 +, 1086 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 85 +, 149 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 379 +, 1100 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i3_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4737,13 +4737,13 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const SegmentInput<T>& in) {
   const T J1 = t10 * asinh(X);
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 4, a, b, c, c - T(1), M_flat.data());
     const T t14 = in.w[0] * M_flat[5] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + M_flat[8] * in.w[3];
     G_ap = t14;
     const T t15 = T(1) / a;
@@ -4804,8 +4804,8 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt
-/// Operations: 76 +, 151 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 370 +, 1107 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 92 +, 165 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 386 +, 1121 ×, 127 /, 7 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4879,13 +4879,13 @@ T segment_cauchy_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t12 = -a_minus_b * b;
   const T t13 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
     const T t14 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1];
     G_ap = t14;
@@ -4956,7 +4956,7 @@ T segment_cauchy_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt
 /// Returns false where segment_cauchy_i3_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 76 +, 151 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 92 +, 165 ×, 7 /, 5 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5029,13 +5029,13 @@ bool segment_cauchy_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t11 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t11 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t12 = -b * a_minus_b;
   const T t13 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t11 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1] + in.w[3] * M_flat[3] + in.w[2] * M_flat[2];
     const T t14 = M_flat[6] * in.w[1] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
     G_ap = t14;
@@ -5078,8 +5078,8 @@ bool segment_cauchy_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 44 +, 58 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 890 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 60 +, 72 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 468 +, 904 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5123,13 +5123,13 @@ T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(4, 4, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 4, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -5150,8 +5150,8 @@ T segment_cauchy_i4_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 53 +, 89 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1628 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 103 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1642 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5207,13 +5207,13 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - M_flat[2] * in.w[0] * t6 * b;
@@ -5253,8 +5253,8 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 53 +, 93 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1630 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 107 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1644 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5311,13 +5311,13 @@ T segment_cauchy_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -5364,7 +5364,7 @@ T segment_cauchy_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Returns false where segment_cauchy_i4_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 53 +, 93 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 69 +, 107 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5420,13 +5420,13 @@ bool segment_cauchy_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -5458,8 +5458,8 @@ bool segment_cauchy_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 47 +, 64 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 683 +, 1580 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 63 +, 78 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 699 +, 1594 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5503,13 +5503,13 @@ T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(4, 4, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 4, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -5533,8 +5533,8 @@ T segment_cauchy_i4_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 58 +, 100 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 74 +, 114 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 952 +, 2348 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5590,13 +5590,13 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -5639,8 +5639,8 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 61 +, 109 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 937 +, 2337 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 123 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 953 +, 2351 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5697,13 +5697,13 @@ T segment_cauchy_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -5752,7 +5752,7 @@ T segment_cauchy_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Returns false where segment_cauchy_i4_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 61 +, 109 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 77 +, 123 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5808,13 +5808,13 @@ bool segment_cauchy_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -5848,8 +5848,8 @@ bool segment_cauchy_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 50 +, 74 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 915 +, 2272 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 88 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 931 +, 2286 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5893,13 +5893,13 @@ T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(4, 4, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 4, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -5925,8 +5925,8 @@ T segment_cauchy_i4_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 65 +, 115 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 358 +, 1058 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 374 +, 1072 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5982,13 +5982,13 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + M_flat[5] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -6034,8 +6034,8 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 69 +, 131 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 364 +, 1080 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 145 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 380 +, 1094 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6092,13 +6092,13 @@ T segment_cauchy_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[1] * M_flat[5] + M_flat[6] * in.w[2] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -6152,7 +6152,7 @@ T segment_cauchy_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Returns false where segment_cauchy_i4_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 69 +, 131 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 85 +, 145 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6208,13 +6208,13 @@ bool segment_cauchy_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + in.w[2] * M_flat[2];
     const T t6 = M_flat[6] * in.w[2] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -6250,8 +6250,8 @@ bool segment_cauchy_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 54 +, 86 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 349 +, 1028 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 70 +, 100 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 365 +, 1042 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6295,13 +6295,13 @@ T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(4, 4, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 4, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
@@ -6340,8 +6340,8 @@ T segment_cauchy_i4_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 72 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 367 +, 1084 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 88 +, 148 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 383 +, 1098 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i4_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6397,13 +6397,13 @@ std::array<T, 3> segment_cauchy_i4_w3_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[6] * in.w[1] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -6453,8 +6453,8 @@ std::array<T, 3> segment_cauchy_i4_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
-/// Operations: 78 +, 156 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 373 +, 1108 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 94 +, 170 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 389 +, 1122 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_cauchy_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6511,13 +6511,13 @@ T segment_cauchy_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1] + M_flat[3] * in.w[3];
     const T t6 = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + M_flat[8] * in.w[3] + in.w[1] * M_flat[6];
     G_ap = t6;
@@ -6578,7 +6578,7 @@ T segment_cauchy_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt
 /// Returns false where segment_cauchy_i4_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 78 +, 156 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
+/// Operations: 94 +, 170 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
 template <class T>
 bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6634,13 +6634,13 @@ bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0];
     const T t6 = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5];
     G_ap = t6;
@@ -6679,8 +6679,8 @@ bool segment_cauchy_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 42 +, 59 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 887 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 58 +, 73 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 465 +, 901 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6724,13 +6724,13 @@ T segment_cauchy_i5_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(5, 5, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 5, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -6750,8 +6750,8 @@ T segment_cauchy_i5_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 51 +, 100 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1629 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 114 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1643 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6807,13 +6807,13 @@ std::array<T, 3> segment_cauchy_i5_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - in.w[0] * t6 * b * M_flat[2];
@@ -6862,8 +6862,8 @@ std::array<T, 3> segment_cauchy_i5_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 51 +, 104 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1631 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 118 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1645 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6920,13 +6920,13 @@ T segment_cauchy_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(73) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -6982,7 +6982,7 @@ T segment_cauchy_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Returns false where segment_cauchy_i5_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 51 +, 104 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 67 +, 118 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7038,13 +7038,13 @@ bool segment_cauchy_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -7081,8 +7081,8 @@ bool segment_cauchy_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 45 +, 69 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 680 +, 1577 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 61 +, 83 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 696 +, 1591 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7126,13 +7126,13 @@ T segment_cauchy_i5_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(5, 5, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 5, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -7155,8 +7155,8 @@ T segment_cauchy_i5_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 56 +, 113 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 127 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 949 +, 2349 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7212,13 +7212,13 @@ std::array<T, 3> segment_cauchy_i5_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -7270,8 +7270,8 @@ std::array<T, 3> segment_cauchy_i5_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 59 +, 124 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2338 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 138 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 950 +, 2352 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7328,13 +7328,13 @@ T segment_cauchy_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
@@ -7392,7 +7392,7 @@ T segment_cauchy_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Returns false where segment_cauchy_i5_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 59 +, 124 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 75 +, 138 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7448,13 +7448,13 @@ bool segment_cauchy_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(73) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -7493,8 +7493,8 @@ bool segment_cauchy_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 48 +, 80 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 912 +, 2269 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 94 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 928 +, 2283 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7538,13 +7538,13 @@ T segment_cauchy_i5_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(5, 5, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 5, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -7570,8 +7570,8 @@ T segment_cauchy_i5_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 63 +, 130 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1174 +, 3046 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 144 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1190 +, 3060 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7627,13 +7627,13 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + M_flat[5] * in.w[1] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -7686,8 +7686,8 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 67 +, 147 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3050 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 161 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1192 +, 3064 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7744,13 +7744,13 @@ T segment_cauchy_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
     const T t6 = in.w[2] * M_flat[6] + in.w[1] * M_flat[5] + M_flat[4] * in.w[0];
     G_ap = t6;
@@ -7811,7 +7811,7 @@ T segment_cauchy_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Returns false where segment_cauchy_i5_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 147 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 83 +, 161 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7867,13 +7867,13 @@ bool segment_cauchy_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(73) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + M_flat[2] * in.w[2];
     const T t6 = in.w[1] * M_flat[5] + M_flat[4] * in.w[0] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -7915,8 +7915,8 @@ bool segment_cauchy_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 53 +, 92 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1145 +, 2963 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 106 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1161 +, 2977 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7960,13 +7960,13 @@ T segment_cauchy_i5_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(5, 5, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 5, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -7993,8 +7993,8 @@ T segment_cauchy_i5_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 70 +, 150 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 364 +, 1102 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 86 +, 164 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 380 +, 1116 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i5_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8050,13 +8050,13 @@ std::array<T, 3> segment_cauchy_i5_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(73) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[8] * in.w[3] + in.w[2] * M_flat[7] + M_flat[5] * in.w[0] + in.w[1] * M_flat[6];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -8120,8 +8120,8 @@ std::array<T, 3> segment_cauchy_i5_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt
-/// Operations: 77 +, 172 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 371 +, 1127 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 93 +, 186 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 387 +, 1141 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8178,13 +8178,13 @@ T segment_cauchy_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
     const T t6 = in.w[1] * M_flat[6] + M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7];
     G_ap = t6;
@@ -8257,7 +8257,7 @@ T segment_cauchy_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt
 /// Returns false where segment_cauchy_i5_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 77 +, 172 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 93 +, 186 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8313,13 +8313,13 @@ bool segment_cauchy_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(73) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + in.w[1] * M_flat[6];
     G_ap = t6;
@@ -8363,8 +8363,8 @@ bool segment_cauchy_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 46 +, 69 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 893 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 62 +, 83 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 468 +, 907 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8408,13 +8408,13 @@ T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(6, 6, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 6, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -8439,8 +8439,8 @@ T segment_cauchy_i6_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 55 +, 98 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1634 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 112 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1648 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8496,13 +8496,13 @@ std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - M_flat[2] * in.w[0] * t6 * b;
@@ -8546,8 +8546,8 @@ std::array<T, 3> segment_cauchy_i6_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 55 +, 102 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1636 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 116 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1650 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8604,13 +8604,13 @@ T segment_cauchy_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -8661,7 +8661,7 @@ T segment_cauchy_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Returns false where segment_cauchy_i6_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 55 +, 102 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 71 +, 116 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8717,13 +8717,13 @@ bool segment_cauchy_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -8757,8 +8757,8 @@ bool segment_cauchy_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 49 +, 75 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 683 +, 1583 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 89 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 699 +, 1597 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8802,13 +8802,13 @@ T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(15) / T(4)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(6, 6, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 6, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -8834,8 +8834,8 @@ T segment_cauchy_i6_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 60 +, 109 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2340 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 76 +, 123 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 952 +, 2354 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8891,13 +8891,13 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(6) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -8944,8 +8944,8 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 63 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 937 +, 2343 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 953 +, 2357 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9002,13 +9002,13 @@ T segment_cauchy_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -9061,7 +9061,7 @@ T segment_cauchy_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Returns false where segment_cauchy_i6_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 63 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 79 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9117,13 +9117,13 @@ bool segment_cauchy_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(6) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -9159,8 +9159,8 @@ bool segment_cauchy_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 52 +, 86 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 915 +, 2275 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 100 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 931 +, 2289 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9204,13 +9204,13 @@ T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(6, 6, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 6, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -9239,8 +9239,8 @@ T segment_cauchy_i6_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 67 +, 126 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3051 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 140 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1193 +, 3065 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9296,13 +9296,13 @@ std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[2] * M_flat[6] + in.w[0] * M_flat[4] + in.w[1] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -9350,8 +9350,8 @@ std::array<T, 3> segment_cauchy_i6_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 71 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3055 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 87 +, 157 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1195 +, 3069 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9408,13 +9408,13 @@ T segment_cauchy_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1];
     const T t6 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + M_flat[5] * in.w[1];
     G_ap = t6;
@@ -9470,7 +9470,7 @@ T segment_cauchy_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Returns false where segment_cauchy_i6_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 71 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 87 +, 157 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9526,13 +9526,13 @@ bool segment_cauchy_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -9571,8 +9571,8 @@ bool segment_cauchy_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 57 +, 98 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1148 +, 2969 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 112 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1164 +, 2983 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9616,13 +9616,13 @@ T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(15) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(6, 6, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 6, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + M_flat[3] * in.w[3];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -9652,8 +9652,8 @@ T segment_cauchy_i6_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 74 +, 146 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3766 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 90 +, 160 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3780 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9709,13 +9709,13 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(6) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[6] * in.w[1] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -9766,8 +9766,8 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
-/// Operations: 81 +, 168 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1423 +, 3771 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 97 +, 182 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1439 +, 3785 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9824,13 +9824,13 @@ T segment_cauchy_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[3] * M_flat[3] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
     const T t6 = in.w[2] * M_flat[7] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6];
     G_ap = t6;
@@ -9888,7 +9888,7 @@ T segment_cauchy_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt
 /// Returns false where segment_cauchy_i6_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 81 +, 168 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 97 +, 182 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9944,13 +9944,13 @@ bool segment_cauchy_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
     const T t6 = in.w[0] * M_flat[5] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6] + in.w[3] * M_flat[8];
     G_ap = t6;
@@ -9991,8 +9991,8 @@ bool segment_cauchy_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 44 +, 74 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 890 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 60 +, 88 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 465 +, 904 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10036,13 +10036,13 @@ T segment_cauchy_i7_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(7, 7, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 7, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -10066,8 +10066,8 @@ T segment_cauchy_i7_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 53 +, 113 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1634 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 127 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1648 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10123,13 +10123,13 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - in.w[0] * t6 * b * M_flat[2];
@@ -10184,8 +10184,8 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 53 +, 117 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1636 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 131 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1650 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10242,13 +10242,13 @@ T segment_cauchy_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -10310,7 +10310,7 @@ T segment_cauchy_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Returns false where segment_cauchy_i7_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 53 +, 117 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 69 +, 131 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10366,13 +10366,13 @@ bool segment_cauchy_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -10413,8 +10413,8 @@ bool segment_cauchy_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 47 +, 82 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 680 +, 1580 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 63 +, 96 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 696 +, 1594 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10458,13 +10458,13 @@ T segment_cauchy_i7_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(7, 7, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 7, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -10489,8 +10489,8 @@ T segment_cauchy_i7_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 58 +, 126 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2340 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 74 +, 140 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 949 +, 2354 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10546,13 +10546,13 @@ std::array<T, 3> segment_cauchy_i7_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -10610,8 +10610,8 @@ std::array<T, 3> segment_cauchy_i7_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 61 +, 139 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 153 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 950 +, 2357 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10668,13 +10668,13 @@ T segment_cauchy_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -10738,7 +10738,7 @@ T segment_cauchy_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Returns false where segment_cauchy_i7_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 61 +, 139 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 77 +, 153 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10794,13 +10794,13 @@ bool segment_cauchy_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(123) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -10843,8 +10843,8 @@ bool segment_cauchy_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 50 +, 93 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 912 +, 2272 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 107 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 928 +, 2286 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10888,13 +10888,13 @@ T segment_cauchy_i7_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(73) / T(16)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(7, 7, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 7, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -10922,8 +10922,8 @@ T segment_cauchy_i7_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 65 +, 146 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1174 +, 3051 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 160 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1190 +, 3065 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10979,13 +10979,13 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[6] * in.w[2] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -11044,8 +11044,8 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 69 +, 163 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3055 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 177 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1192 +, 3069 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11102,13 +11102,13 @@ T segment_cauchy_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(123) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -11175,7 +11175,7 @@ T segment_cauchy_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Returns false where segment_cauchy_i7_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 69 +, 163 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 85 +, 177 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11231,13 +11231,13 @@ bool segment_cauchy_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(123) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[0] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -11283,8 +11283,8 @@ bool segment_cauchy_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 55 +, 107 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1145 +, 2966 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 121 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1161 +, 2980 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11328,13 +11328,13 @@ T segment_cauchy_i7_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(73) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(7, 7, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 7, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -11363,8 +11363,8 @@ T segment_cauchy_i7_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 72 +, 167 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 88 +, 181 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3780 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i7_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11420,13 +11420,13 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(123) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[8] * in.w[3] + in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -11488,8 +11488,8 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
-/// Operations: 79 +, 191 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3771 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 95 +, 205 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3785 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11546,13 +11546,13 @@ T segment_cauchy_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + M_flat[3] * in.w[3];
     const T t6 = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5];
     G_ap = t6;
@@ -11621,7 +11621,7 @@ T segment_cauchy_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt
 /// Returns false where segment_cauchy_i7_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 79 +, 191 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 95 +, 205 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11677,13 +11677,13 @@ bool segment_cauchy_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(123) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = M_flat[8] * in.w[3] + in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -11731,8 +11731,8 @@ bool segment_cauchy_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 48 +, 78 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 896 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 92 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 468 +, 910 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11776,13 +11776,13 @@ T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(6) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(8, 8, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 8, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -11809,8 +11809,8 @@ T segment_cauchy_i8_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 57 +, 107 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1637 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 121 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1651 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11866,13 +11866,13 @@ std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = M_flat[3] * in.w[0] - t6 * b * M_flat[2] * in.w[0];
@@ -11918,8 +11918,8 @@ std::array<T, 3> segment_cauchy_i8_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 57 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1639 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1653 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11976,13 +11976,13 @@ T segment_cauchy_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(153) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -12035,7 +12035,7 @@ T segment_cauchy_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Returns false where segment_cauchy_i8_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 57 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 73 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12091,13 +12091,13 @@ bool segment_cauchy_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -12133,8 +12133,8 @@ bool segment_cauchy_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 51 +, 84 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 683 +, 1586 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 98 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 699 +, 1600 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12178,13 +12178,13 @@ T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(8, 8, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 8, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -12212,8 +12212,8 @@ T segment_cauchy_i8_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 62 +, 118 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2343 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 78 +, 132 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 952 +, 2357 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12269,13 +12269,13 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(153) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -12324,8 +12324,8 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 65 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 937 +, 2346 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 953 +, 2360 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12382,13 +12382,13 @@ T segment_cauchy_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -12443,7 +12443,7 @@ T segment_cauchy_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Returns false where segment_cauchy_i8_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 65 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 81 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12499,13 +12499,13 @@ bool segment_cauchy_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -12543,8 +12543,8 @@ bool segment_cauchy_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 54 +, 95 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 915 +, 2278 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 931 +, 2292 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12588,13 +12588,13 @@ T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(6) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(8, 8, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 8, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -12625,8 +12625,8 @@ T segment_cauchy_i8_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 69 +, 135 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3054 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 149 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1193 +, 3068 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12682,13 +12682,13 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + M_flat[4] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -12738,8 +12738,8 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 73 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 89 +, 166 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1195 +, 3072 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12796,13 +12796,13 @@ T segment_cauchy_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(153) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[1] * M_flat[5] + M_flat[4] * in.w[0] + M_flat[6] * in.w[2];
     G_ap = t6;
@@ -12860,7 +12860,7 @@ T segment_cauchy_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Returns false where segment_cauchy_i8_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 73 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 89 +, 166 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12916,13 +12916,13 @@ bool segment_cauchy_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] + M_flat[6] * in.w[2];
     G_ap = t6;
@@ -12963,8 +12963,8 @@ bool segment_cauchy_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 59 +, 109 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1148 +, 2972 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1164 +, 2986 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13008,13 +13008,13 @@ T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(6) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(8, 8, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 8, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + M_flat[3] * in.w[3];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -13046,8 +13046,8 @@ T segment_cauchy_i8_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 76 +, 155 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3769 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 92 +, 169 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3783 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13103,13 +13103,13 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(153) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[6] * in.w[1] + in.w[2] * M_flat[7] + in.w[3] * M_flat[8] + M_flat[5] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -13162,8 +13162,8 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
-/// Operations: 83 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1423 +, 3774 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 99 +, 193 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1439 +, 3788 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13220,13 +13220,13 @@ T segment_cauchy_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(153) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + M_flat[3] * in.w[3];
     const T t6 = in.w[1] * M_flat[6] + in.w[2] * M_flat[7] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5];
     G_ap = t6;
@@ -13286,7 +13286,7 @@ T segment_cauchy_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt
 /// Returns false where segment_cauchy_i8_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 83 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 99 +, 193 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13342,13 +13342,13 @@ bool segment_cauchy_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[2] * M_flat[2];
     const T t6 = in.w[0] * M_flat[5] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6] + in.w[3] * M_flat[8];
     G_ap = t6;
@@ -13391,8 +13391,8 @@ bool segment_cauchy_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 46 +, 85 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 892 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 62 +, 99 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 465 +, 906 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13436,13 +13436,13 @@ T segment_cauchy_i9_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(9, 9, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 9, 0, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -13468,8 +13468,8 @@ T segment_cauchy_i9_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 55 +, 124 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1637 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 138 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1651 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13525,13 +13525,13 @@ std::array<T, 3> segment_cauchy_i9_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = M_flat[3] * in.w[0] - M_flat[2] * in.w[0] * t6 * b;
@@ -13588,8 +13588,8 @@ std::array<T, 3> segment_cauchy_i9_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 55 +, 128 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1639 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 142 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1653 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13646,13 +13646,13 @@ T segment_cauchy_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -13716,7 +13716,7 @@ T segment_cauchy_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Returns false where segment_cauchy_i9_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 55 +, 128 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 71 +, 142 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13772,13 +13772,13 @@ bool segment_cauchy_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(93) / T(8)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -13821,8 +13821,8 @@ bool segment_cauchy_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 49 +, 93 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 680 +, 1582 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 107 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 696 +, 1596 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13866,13 +13866,13 @@ T segment_cauchy_i9_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(123) / T(16)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(9, 9, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 9, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -13899,8 +13899,8 @@ T segment_cauchy_i9_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 60 +, 137 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 76 +, 151 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 949 +, 2357 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13956,13 +13956,13 @@ std::array<T, 3> segment_cauchy_i9_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -14022,8 +14022,8 @@ std::array<T, 3> segment_cauchy_i9_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 63 +, 150 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2346 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 164 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 950 +, 2360 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14080,13 +14080,13 @@ T segment_cauchy_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(93) / T(8)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -14152,7 +14152,7 @@ T segment_cauchy_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Returns false where segment_cauchy_i9_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 63 +, 150 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 79 +, 164 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14208,13 +14208,13 @@ bool segment_cauchy_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(93) / T(8)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -14259,8 +14259,8 @@ bool segment_cauchy_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 52 +, 105 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 912 +, 2274 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 119 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 928 +, 2288 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14304,13 +14304,13 @@ T segment_cauchy_i9_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(123) / T(16)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(9, 9, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 9, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -14340,8 +14340,8 @@ T segment_cauchy_i9_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 67 +, 156 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1174 +, 3054 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 170 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1190 +, 3068 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14397,13 +14397,13 @@ std::array<T, 3> segment_cauchy_i9_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + in.w[1] * M_flat[5] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -14464,8 +14464,8 @@ std::array<T, 3> segment_cauchy_i9_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 71 +, 174 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 87 +, 188 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1192 +, 3072 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14522,13 +14522,13 @@ T segment_cauchy_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -14597,7 +14597,7 @@ T segment_cauchy_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Returns false where segment_cauchy_i9_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 71 +, 174 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 87 +, 188 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14653,13 +14653,13 @@ bool segment_cauchy_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(93) / T(8)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
     const T t6 = M_flat[4] * in.w[0] + M_flat[5] * in.w[1] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -14707,8 +14707,8 @@ bool segment_cauchy_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 57 +, 122 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1145 +, 2968 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 136 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1161 +, 2982 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14752,13 +14752,13 @@ T segment_cauchy_i9_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(123) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(9, 9, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 9, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -14789,8 +14789,8 @@ T segment_cauchy_i9_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 74 +, 176 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3769 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 90 +, 190 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3783 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i9_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14846,13 +14846,13 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(93) / T(8)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[2] * M_flat[7] + M_flat[8] * in.w[3] + in.w[1] * M_flat[6] + M_flat[5] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -14916,8 +14916,8 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
-/// Operations: 81 +, 203 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 97 +, 217 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3788 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14974,13 +14974,13 @@ T segment_cauchy_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
     const T t6 = M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5] + M_flat[8] * in.w[3];
     G_ap = t6;
@@ -15051,7 +15051,7 @@ T segment_cauchy_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& g
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt
 /// Returns false where segment_cauchy_i9_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 81 +, 203 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 97 +, 217 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15107,13 +15107,13 @@ bool segment_cauchy_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(93) / T(8)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1] + in.w[3] * M_flat[3] + in.w[2] * M_flat[2];
     const T t6 = M_flat[6] * in.w[1] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -15163,8 +15163,8 @@ bool segment_cauchy_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, st
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 50 +, 87 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 898 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 101 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 468 +, 912 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15208,13 +15208,13 @@ T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(10, 10, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 10, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -15243,8 +15243,8 @@ T segment_cauchy_i10_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 59 +, 116 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1642 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 130 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1656 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15300,13 +15300,13 @@ std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - M_flat[2] * in.w[0] * t6 * b;
@@ -15356,8 +15356,8 @@ std::array<T, 3> segment_cauchy_i10_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 59 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1644 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1658 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15414,13 +15414,13 @@ T segment_cauchy_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -15477,7 +15477,7 @@ T segment_cauchy_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Returns false where segment_cauchy_i10_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 59 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 75 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15533,13 +15533,13 @@ bool segment_cauchy_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -15577,8 +15577,8 @@ bool segment_cauchy_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 53 +, 93 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 683 +, 1588 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 107 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 699 +, 1602 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15622,13 +15622,13 @@ T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(10, 10, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 10, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -15658,8 +15658,8 @@ T segment_cauchy_i10_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 64 +, 127 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2348 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 80 +, 141 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 952 +, 2362 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15715,13 +15715,13 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(221) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -15774,8 +15774,8 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 67 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 937 +, 2351 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 953 +, 2365 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15832,13 +15832,13 @@ T segment_cauchy_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -15897,7 +15897,7 @@ T segment_cauchy_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Returns false where segment_cauchy_i10_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 83 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15953,13 +15953,13 @@ bool segment_cauchy_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(221) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -15999,8 +15999,8 @@ bool segment_cauchy_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 56 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 915 +, 2280 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 118 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 931 +, 2294 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16044,13 +16044,13 @@ T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(10, 10, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 10, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -16083,8 +16083,8 @@ T segment_cauchy_i10_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 71 +, 145 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3059 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 87 +, 159 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1193 +, 3073 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16140,13 +16140,13 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -16200,8 +16200,8 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 75 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3063 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 91 +, 176 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1195 +, 3077 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16258,13 +16258,13 @@ T segment_cauchy_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1];
     const T t6 = M_flat[5] * in.w[1] + M_flat[6] * in.w[2] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -16326,7 +16326,7 @@ T segment_cauchy_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Returns false where segment_cauchy_i10_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 75 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 91 +, 176 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16382,13 +16382,13 @@ bool segment_cauchy_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = M_flat[4] * in.w[0] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -16431,8 +16431,8 @@ bool segment_cauchy_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 61 +, 118 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1148 +, 2974 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 132 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1164 +, 2988 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16476,13 +16476,13 @@ T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(153) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(10, 10, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 10, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + M_flat[2] * in.w[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -16516,8 +16516,8 @@ T segment_cauchy_i10_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 78 +, 166 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3774 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 94 +, 180 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3788 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16573,13 +16573,13 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[6] * in.w[1] + M_flat[8] * in.w[3] + in.w[0] * M_flat[5] + M_flat[7] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -16636,8 +16636,8 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
-/// Operations: 85 +, 190 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1423 +, 3779 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 101 +, 204 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1439 +, 3793 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16694,13 +16694,13 @@ T segment_cauchy_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(221) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
     const T t6 = in.w[2] * M_flat[7] + in.w[3] * M_flat[8] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6];
     G_ap = t6;
@@ -16764,7 +16764,7 @@ T segment_cauchy_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt
 /// Returns false where segment_cauchy_i10_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 85 +, 190 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 101 +, 204 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16820,13 +16820,13 @@ bool segment_cauchy_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + M_flat[1] * in.w[1];
     const T t6 = M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1];
     G_ap = t6;
@@ -16871,8 +16871,8 @@ bool segment_cauchy_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 48 +, 96 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 895 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 110 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 465 +, 909 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16916,13 +16916,13 @@ T segment_cauchy_i11_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(11, 11, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 11, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -16950,8 +16950,8 @@ T segment_cauchy_i11_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 57 +, 137 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1642 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 151 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1656 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17007,13 +17007,13 @@ std::array<T, 3> segment_cauchy_i11_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - in.w[0] * t6 * b * M_flat[2];
@@ -17076,8 +17076,8 @@ std::array<T, 3> segment_cauchy_i11_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 57 +, 141 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1644 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 155 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1658 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17134,13 +17134,13 @@ T segment_cauchy_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(261) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -17210,7 +17210,7 @@ T segment_cauchy_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Returns false where segment_cauchy_i11_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 57 +, 141 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 73 +, 155 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17266,13 +17266,13 @@ bool segment_cauchy_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -17319,8 +17319,8 @@ bool segment_cauchy_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 51 +, 104 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 680 +, 1585 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 118 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 696 +, 1599 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17364,13 +17364,13 @@ T segment_cauchy_i11_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(93) / T(8)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(11, 11, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 11, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -17399,8 +17399,8 @@ T segment_cauchy_i11_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 62 +, 150 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2348 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 78 +, 164 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 949 +, 2362 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17456,13 +17456,13 @@ std::array<T, 3> segment_cauchy_i11_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -17528,8 +17528,8 @@ std::array<T, 3> segment_cauchy_i11_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 65 +, 163 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2351 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 177 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 950 +, 2365 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17586,13 +17586,13 @@ T segment_cauchy_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -17664,7 +17664,7 @@ T segment_cauchy_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Returns false where segment_cauchy_i11_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 65 +, 163 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 81 +, 177 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17720,13 +17720,13 @@ bool segment_cauchy_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -17775,8 +17775,8 @@ bool segment_cauchy_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 54 +, 115 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 912 +, 2277 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 129 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 928 +, 2291 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17820,13 +17820,13 @@ T segment_cauchy_i11_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(11, 11, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 11, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -17858,8 +17858,8 @@ T segment_cauchy_i11_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 69 +, 170 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1174 +, 3059 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 184 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1190 +, 3073 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17915,13 +17915,13 @@ std::array<T, 3> segment_cauchy_i11_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + M_flat[5] * in.w[1] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -17988,8 +17988,8 @@ std::array<T, 3> segment_cauchy_i11_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 73 +, 187 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3063 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 89 +, 201 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1192 +, 3077 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18046,13 +18046,13 @@ T segment_cauchy_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(261) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -18127,7 +18127,7 @@ T segment_cauchy_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Returns false where segment_cauchy_i11_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 73 +, 187 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 89 +, 201 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18183,13 +18183,13 @@ bool segment_cauchy_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(261) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + M_flat[4] * in.w[0];
     G_ap = t6;
@@ -18241,8 +18241,8 @@ bool segment_cauchy_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 59 +, 131 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1145 +, 2971 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 145 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1161 +, 2985 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18286,13 +18286,13 @@ T segment_cauchy_i11_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(93) / T(8)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(11, 11, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 11, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + M_flat[2] * in.w[2] + M_flat[3] * in.w[3];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -18325,8 +18325,8 @@ T segment_cauchy_i11_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 76 +, 191 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 92 +, 205 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3788 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i11_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18382,13 +18382,13 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[3] * M_flat[8] + M_flat[6] * in.w[1] + in.w[2] * M_flat[7] + in.w[0] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -18458,8 +18458,8 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
-/// Operations: 83 +, 217 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3779 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 99 +, 231 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3793 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18516,13 +18516,13 @@ T segment_cauchy_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3];
     const T t6 = M_flat[6] * in.w[1] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3];
     G_ap = t6;
@@ -18599,7 +18599,7 @@ T segment_cauchy_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt
 /// Returns false where segment_cauchy_i11_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 83 +, 217 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 99 +, 231 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18655,13 +18655,13 @@ bool segment_cauchy_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[3] * M_flat[3] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[3] * M_flat[8] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -18715,8 +18715,8 @@ bool segment_cauchy_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 52 +, 96 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 901 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 110 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 468 +, 915 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18760,13 +18760,13 @@ T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(12, 12, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 12, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -18797,8 +18797,8 @@ T segment_cauchy_i12_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 61 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1645 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 139 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1659 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18854,13 +18854,13 @@ std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - M_flat[2] * in.w[0] * t6 * b;
@@ -18912,8 +18912,8 @@ std::array<T, 3> segment_cauchy_i12_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 61 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1647 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1661 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18970,13 +18970,13 @@ T segment_cauchy_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -19035,7 +19035,7 @@ T segment_cauchy_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Returns false where segment_cauchy_i12_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 61 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 77 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19091,13 +19091,13 @@ bool segment_cauchy_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -19137,8 +19137,8 @@ bool segment_cauchy_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 55 +, 102 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 683 +, 1591 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 116 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 699 +, 1605 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19182,13 +19182,13 @@ T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(12, 12, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 12, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -19220,8 +19220,8 @@ T segment_cauchy_i12_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 66 +, 136 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2351 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 82 +, 150 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 952 +, 2365 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19277,13 +19277,13 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -19338,8 +19338,8 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 69 +, 147 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 937 +, 2354 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 161 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 953 +, 2368 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19396,13 +19396,13 @@ T segment_cauchy_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(303) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -19463,7 +19463,7 @@ T segment_cauchy_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Returns false where segment_cauchy_i12_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 69 +, 147 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 85 +, 161 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19519,13 +19519,13 @@ bool segment_cauchy_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -19567,8 +19567,8 @@ bool segment_cauchy_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 58 +, 114 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 915 +, 2283 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 74 +, 128 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 931 +, 2297 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19612,13 +19612,13 @@ T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(12, 12, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 12, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -19653,8 +19653,8 @@ T segment_cauchy_i12_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 73 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 89 +, 167 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1193 +, 3076 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19710,13 +19710,13 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(303) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -19772,8 +19772,8 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 77 +, 171 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3066 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 93 +, 185 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1195 +, 3080 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19830,13 +19830,13 @@ T segment_cauchy_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
     const T t6 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + M_flat[4] * in.w[0];
     G_ap = t6;
@@ -19900,7 +19900,7 @@ T segment_cauchy_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Returns false where segment_cauchy_i12_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 77 +, 171 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 93 +, 185 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19956,13 +19956,13 @@ bool segment_cauchy_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
     const T t6 = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -20007,8 +20007,8 @@ bool segment_cauchy_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 63 +, 129 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1148 +, 2977 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 143 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1164 +, 2991 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20052,13 +20052,13 @@ T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(221) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(12, 12, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 12, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -20094,8 +20094,8 @@ T segment_cauchy_i12_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 80 +, 173 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3777 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 96 +, 187 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3791 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20151,13 +20151,13 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2] + in.w[0] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -20216,8 +20216,8 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
-/// Operations: 87 +, 198 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1423 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 103 +, 212 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1439 +, 3796 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20274,13 +20274,13 @@ T segment_cauchy_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(303) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + M_flat[3] * in.w[3];
     const T t6 = in.w[2] * M_flat[7] + in.w[1] * M_flat[6] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8];
     G_ap = t6;
@@ -20346,7 +20346,7 @@ T segment_cauchy_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt
 /// Returns false where segment_cauchy_i12_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 87 +, 198 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 103 +, 212 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20402,13 +20402,13 @@ bool segment_cauchy_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(303) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + in.w[2] * M_flat[2];
     const T t6 = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + M_flat[6] * in.w[1] + in.w[3] * M_flat[8];
     G_ap = t6;
@@ -20455,8 +20455,8 @@ bool segment_cauchy_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 50 +, 107 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 897 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 121 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 465 +, 911 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20500,13 +20500,13 @@ T segment_cauchy_i13_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(261) / T(16)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(13, 13, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 13, 0, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -20536,8 +20536,8 @@ T segment_cauchy_i13_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 59 +, 148 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1645 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 162 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1659 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20593,13 +20593,13 @@ std::array<T, 3> segment_cauchy_i13_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
     G_E = in.w[0] * M_flat[3] - in.w[0] * t6 * b * M_flat[2];
@@ -20664,8 +20664,8 @@ std::array<T, 3> segment_cauchy_i13_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 59 +, 152 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1647 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1661 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20722,13 +20722,13 @@ T segment_cauchy_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -20800,7 +20800,7 @@ T segment_cauchy_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Returns false where segment_cauchy_i13_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 59 +, 152 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 75 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20856,13 +20856,13 @@ bool segment_cauchy_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -20911,8 +20911,8 @@ bool segment_cauchy_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 53 +, 115 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 680 +, 1587 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 129 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 696 +, 1601 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20956,13 +20956,13 @@ T segment_cauchy_i13_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(261) / T(16)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(13, 13, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 13, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -20993,8 +20993,8 @@ T segment_cauchy_i13_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 64 +, 161 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2351 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 80 +, 175 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 949 +, 2365 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21050,13 +21050,13 @@ std::array<T, 3> segment_cauchy_i13_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -21124,8 +21124,8 @@ std::array<T, 3> segment_cauchy_i13_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 67 +, 174 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2354 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 188 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 950 +, 2368 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21182,13 +21182,13 @@ T segment_cauchy_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(87) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -21262,7 +21262,7 @@ T segment_cauchy_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Returns false where segment_cauchy_i13_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 174 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 83 +, 188 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21318,13 +21318,13 @@ bool segment_cauchy_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -21375,8 +21375,8 @@ bool segment_cauchy_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 56 +, 127 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 912 +, 2279 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 141 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 928 +, 2293 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21420,13 +21420,13 @@ T segment_cauchy_i13_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(13, 13, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 13, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -21460,8 +21460,8 @@ T segment_cauchy_i13_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 71 +, 181 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1174 +, 3062 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 87 +, 195 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1190 +, 3076 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21517,13 +21517,13 @@ std::array<T, 3> segment_cauchy_i13_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + M_flat[5] * in.w[1] + in.w[2] * M_flat[6];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -21592,8 +21592,8 @@ std::array<T, 3> segment_cauchy_i13_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 75 +, 199 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3066 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 91 +, 213 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1192 +, 3080 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21650,13 +21650,13 @@ T segment_cauchy_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(87) / T(4)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
     const T t6 = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -21733,7 +21733,7 @@ T segment_cauchy_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Returns false where segment_cauchy_i13_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 75 +, 199 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 91 +, 213 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21789,13 +21789,13 @@ bool segment_cauchy_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(87) / T(4)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
     const T t6 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -21849,8 +21849,8 @@ bool segment_cauchy_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 61 +, 144 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1145 +, 2973 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 158 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1161 +, 2987 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21894,13 +21894,13 @@ T segment_cauchy_i13_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(261) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(13, 13, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 13, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -21935,8 +21935,8 @@ T segment_cauchy_i13_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 78 +, 204 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3777 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 94 +, 218 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3791 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i13_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21992,13 +21992,13 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + in.w[0] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -22070,8 +22070,8 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
-/// Operations: 85 +, 231 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3782 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 101 +, 245 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3796 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22128,13 +22128,13 @@ T segment_cauchy_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[2] * in.w[2] + in.w[3] * M_flat[3] + in.w[0] * M_flat[0];
     const T t6 = in.w[3] * M_flat[8] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -22213,7 +22213,7 @@ T segment_cauchy_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt
 /// Returns false where segment_cauchy_i13_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 85 +, 231 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 101 +, 245 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22269,13 +22269,13 @@ bool segment_cauchy_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
     const T t6 = M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1];
     G_ap = t6;
@@ -22331,8 +22331,8 @@ bool segment_cauchy_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 54 +, 105 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 903 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 119 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 468 +, 917 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22376,13 +22376,13 @@ T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(303) / T(16)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(14, 14, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 14, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -22415,8 +22415,8 @@ T segment_cauchy_i14_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 63 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1650 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 148 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1664 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22472,13 +22472,13 @@ std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(99) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = M_flat[3] * in.w[0] - b * M_flat[2] * in.w[0] * t6;
@@ -22534,8 +22534,8 @@ std::array<T, 3> segment_cauchy_i14_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 63 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1652 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1666 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22592,13 +22592,13 @@ T segment_cauchy_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(99) / T(4)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -22661,7 +22661,7 @@ T segment_cauchy_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Returns false where segment_cauchy_i14_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 63 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 79 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22717,13 +22717,13 @@ bool segment_cauchy_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(99) / T(4)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -22765,8 +22765,8 @@ bool segment_cauchy_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 57 +, 111 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 683 +, 1593 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 125 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 699 +, 1607 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22810,13 +22810,13 @@ T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(14, 14, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 14, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -22850,8 +22850,8 @@ T segment_cauchy_i14_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 68 +, 145 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2356 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 84 +, 159 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 952 +, 2370 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22907,13 +22907,13 @@ std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -22972,8 +22972,8 @@ std::array<T, 3> segment_cauchy_i14_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 71 +, 156 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 937 +, 2359 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 87 +, 170 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 953 +, 2373 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23030,13 +23030,13 @@ T segment_cauchy_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
     G_ap = t6;
@@ -23101,7 +23101,7 @@ T segment_cauchy_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Returns false where segment_cauchy_i14_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 71 +, 156 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 87 +, 170 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23157,13 +23157,13 @@ bool segment_cauchy_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -23207,8 +23207,8 @@ bool segment_cauchy_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 60 +, 122 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 915 +, 2285 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 76 +, 136 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 931 +, 2299 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23252,13 +23252,13 @@ T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(303) / T(16)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(14, 14, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 14, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -23295,8 +23295,8 @@ T segment_cauchy_i14_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 75 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3067 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 91 +, 176 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1193 +, 3081 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23352,13 +23352,13 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -23418,8 +23418,8 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 79 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3071 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 95 +, 193 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1195 +, 3085 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23476,13 +23476,13 @@ T segment_cauchy_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
     const T t6 = M_flat[4] * in.w[0] + in.w[1] * M_flat[5] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -23550,7 +23550,7 @@ T segment_cauchy_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Returns false where segment_cauchy_i14_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 79 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 95 +, 193 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23606,13 +23606,13 @@ bool segment_cauchy_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(99) / T(4)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[1] * M_flat[5] + in.w[0] * M_flat[4] + M_flat[6] * in.w[2];
     G_ap = t6;
@@ -23659,8 +23659,8 @@ bool segment_cauchy_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 65 +, 136 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1148 +, 2979 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 150 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1164 +, 2993 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23704,13 +23704,13 @@ T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = ap_bp * in.s + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(303) / T(16)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(14, 14, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 14, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -23748,8 +23748,8 @@ T segment_cauchy_i14_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 82 +, 182 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 98 +, 196 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3796 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23805,13 +23805,13 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(99) / T(4)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + in.w[1] * M_flat[6];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -23874,8 +23874,8 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
-/// Operations: 89 +, 206 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1423 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 105 +, 220 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1439 +, 3801 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23932,13 +23932,13 @@ T segment_cauchy_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6];
     G_ap = t6;
@@ -24008,7 +24008,7 @@ T segment_cauchy_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt
 /// Returns false where segment_cauchy_i14_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 89 +, 206 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 105 +, 220 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24064,13 +24064,13 @@ bool segment_cauchy_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3];
     const T t6 = in.w[3] * M_flat[8] + in.w[1] * M_flat[6] + M_flat[7] * in.w[2] + in.w[0] * M_flat[5];
     G_ap = t6;
@@ -24119,8 +24119,8 @@ bool segment_cauchy_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 52 +, 118 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 449 +, 900 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 132 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 465 +, 914 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24164,13 +24164,13 @@ T segment_cauchy_i15_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(15, 15, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 15, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -24202,8 +24202,8 @@ T segment_cauchy_i15_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 61 +, 161 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1649 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 175 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1663 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24259,13 +24259,13 @@ std::array<T, 3> segment_cauchy_i15_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(28) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
     G_E = M_flat[3] * in.w[0] - in.w[0] * t6 * b * M_flat[2];
@@ -24336,8 +24336,8 @@ std::array<T, 3> segment_cauchy_i15_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 61 +, 165 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 694 +, 1651 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 179 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 710 +, 1665 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24394,13 +24394,13 @@ T segment_cauchy_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(28) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -24478,7 +24478,7 @@ T segment_cauchy_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Returns false where segment_cauchy_i15_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 61 +, 165 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 77 +, 179 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24534,13 +24534,13 @@ bool segment_cauchy_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(28) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -24593,8 +24593,8 @@ bool segment_cauchy_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 55 +, 126 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 680 +, 1590 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 140 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 696 +, 1604 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24638,13 +24638,13 @@ T segment_cauchy_i15_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(15, 15, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 15, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -24677,8 +24677,8 @@ T segment_cauchy_i15_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 66 +, 174 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2355 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 82 +, 188 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 949 +, 2369 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24734,13 +24734,13 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(28) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -24814,8 +24814,8 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 69 +, 187 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 934 +, 2358 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 201 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 950 +, 2372 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24872,13 +24872,13 @@ T segment_cauchy_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(28) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -24958,7 +24958,7 @@ T segment_cauchy_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Returns false where segment_cauchy_i15_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 69 +, 187 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 85 +, 201 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25014,13 +25014,13 @@ bool segment_cauchy_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(28) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -25075,8 +25075,8 @@ bool segment_cauchy_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 58 +, 138 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 912 +, 2282 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 74 +, 152 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 928 +, 2296 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25120,13 +25120,13 @@ T segment_cauchy_i15_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(87) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(15, 15, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 15, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -25162,8 +25162,8 @@ T segment_cauchy_i15_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 73 +, 194 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1174 +, 3066 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 89 +, 208 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1190 +, 3080 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25219,13 +25219,13 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(28) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + in.w[1] * M_flat[5] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -25300,8 +25300,8 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 77 +, 212 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1176 +, 3070 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 93 +, 226 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1192 +, 3084 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25358,13 +25358,13 @@ T segment_cauchy_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(28) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
     const T t6 = in.w[2] * M_flat[6] + in.w[0] * M_flat[4] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -25447,7 +25447,7 @@ T segment_cauchy_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Returns false where segment_cauchy_i15_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 77 +, 212 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 93 +, 226 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25503,13 +25503,13 @@ bool segment_cauchy_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(28) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + M_flat[2] * in.w[2];
     const T t6 = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -25567,8 +25567,8 @@ bool segment_cauchy_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 63 +, 155 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1145 +, 2976 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 169 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1161 +, 2990 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25612,13 +25612,13 @@ T segment_cauchy_i15_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(87) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(15, 15, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 15, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -25655,8 +25655,8 @@ T segment_cauchy_i15_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 80 +, 215 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3781 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 96 +, 229 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3795 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i15_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25712,13 +25712,13 @@ std::array<T, 3> segment_cauchy_i15_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(28) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7] + in.w[1] * M_flat[6];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -25796,8 +25796,8 @@ std::array<T, 3> segment_cauchy_i15_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
-/// Operations: 87 +, 242 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3786 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 103 +, 256 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3800 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25854,13 +25854,13 @@ T segment_cauchy_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - T(28) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + M_flat[3] * in.w[3];
     const T t6 = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2];
     G_ap = t6;
@@ -25945,7 +25945,7 @@ T segment_cauchy_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt
 /// Returns false where segment_cauchy_i15_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 87 +, 242 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 103 +, 256 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26001,13 +26001,13 @@ bool segment_cauchy_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - T(28) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[3] * M_flat[3];
     const T t6 = in.w[2] * M_flat[7] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -26067,8 +26067,8 @@ bool segment_cauchy_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 56 +, 114 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 452 +, 906 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 128 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 468 +, 920 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26112,13 +26112,13 @@ T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
   const T q1 = bp_bp * in.s + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(99) / T(4)) * a - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(16, 16, 0, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 16, 0, a, b, c, c - T(1), M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -26153,8 +26153,8 @@ T segment_cauchy_i16_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 65 +, 142 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1650 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 156 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1664 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26210,13 +26210,13 @@ std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
   const T c_minus_b = ap_bp * in.s + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(503) / T(16)) * a - b - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
     G_E = M_flat[3] * in.w[0] - t6 * b * M_flat[2] * in.w[0];
@@ -26272,8 +26272,8 @@ std::array<T, 3> segment_cauchy_i16_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 65 +, 146 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 697 +, 1652 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 160 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 713 +, 1666 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26330,13 +26330,13 @@ T segment_cauchy_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(503) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / a;
@@ -26399,7 +26399,7 @@ T segment_cauchy_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Returns false where segment_cauchy_i16_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 65 +, 146 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 81 +, 160 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26455,13 +26455,13 @@ bool segment_cauchy_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(503) / T(16)) * a - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / a;
@@ -26505,8 +26505,8 @@ bool segment_cauchy_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 59 +, 120 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 683 +, 1596 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 134 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 699 +, 1610 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26550,13 +26550,13 @@ T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(16, 16, 1, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 16, 1, a, b, c, c - T(1), M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -26592,8 +26592,8 @@ T segment_cauchy_i16_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 70 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 936 +, 2356 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 86 +, 167 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 952 +, 2370 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26649,13 +26649,13 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(503) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 2, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -26714,8 +26714,8 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 73 +, 164 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 937 +, 2359 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 89 +, 178 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 953 +, 2373 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26772,13 +26772,13 @@ T segment_cauchy_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(503) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -26843,7 +26843,7 @@ T segment_cauchy_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Returns false where segment_cauchy_i16_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 73 +, 164 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 89 +, 178 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26899,13 +26899,13 @@ bool segment_cauchy_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(503) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 2, a, b, c, c - T(1), M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -26951,8 +26951,8 @@ bool segment_cauchy_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 62 +, 131 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 915 +, 2288 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 78 +, 145 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 931 +, 2302 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26996,13 +26996,13 @@ T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(16, 16, 2, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 16, 2, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -27041,8 +27041,8 @@ T segment_cauchy_i16_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 77 +, 171 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1177 +, 3067 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 93 +, 185 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1193 +, 3081 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27098,13 +27098,13 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(503) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 3, a, b, c, c - T(1), M_flat.data());
     const T t6 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -27164,8 +27164,8 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 81 +, 188 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1179 +, 3071 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 97 +, 202 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1195 +, 3085 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27222,13 +27222,13 @@ T segment_cauchy_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(503) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[0] + M_flat[5] * in.w[1] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -27296,7 +27296,7 @@ T segment_cauchy_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Returns false where segment_cauchy_i16_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 81 +, 188 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 97 +, 202 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27352,13 +27352,13 @@ bool segment_cauchy_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(503) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 3, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -27407,8 +27407,8 @@ bool segment_cauchy_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 67 +, 145 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1148 +, 2982 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 159 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1164 +, 2996 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27452,13 +27452,13 @@ T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
   const T q1 = in.s * bp_bp + T(1);
   const T c_minus_b = in.s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t1 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(99) / T(4)) * a - b - T(1)));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(16, 16, 3, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 16, 3, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -27498,8 +27498,8 @@ T segment_cauchy_i16_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 84 +, 192 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1420 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 100 +, 206 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1436 +, 3796 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27555,13 +27555,13 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
   const T c_minus_b = in.s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(503) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 4, a, b, c, c - T(1), M_flat.data());
     const T t6 = M_flat[5] * in.w[0] + in.w[3] * M_flat[8] + in.w[2] * M_flat[7] + M_flat[6] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / a;
@@ -27624,8 +27624,8 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
-/// Operations: 91 +, 216 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1423 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 107 +, 230 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1439 +, 3801 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_cauchy_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27682,13 +27682,13 @@ T segment_cauchy_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-b - T(2) * a))))), T(c - b - (T(503) / T(16)) * a - T(1)));
   const T t4 = -b * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 4, a, b, c, c - T(1), M_flat.data());
     F = M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[1] * M_flat[6] + in.w[0] * M_flat[5] + in.w[2] * M_flat[7] + in.w[3] * M_flat[8];
     G_ap = t6;
@@ -27758,7 +27758,7 @@ T segment_cauchy_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt
 /// Returns false where segment_cauchy_i16_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 91 +, 216 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 107 +, 230 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_cauchy_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -27814,13 +27814,13 @@ bool segment_cauchy_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))));
+  const T t3 = max(T(max(T(D - T(2) * a * a), T(max(T(b - T(3) * a), T(-T(2) * a - b))))), T(c - (T(503) / T(16)) * a - b - T(1)));
   const T t4 = -a_minus_b * b;
   const T t5 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 4, a, b, c, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 4, a, b, c, c - T(1), M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6] + in.w[3] * M_flat[8];
     G_ap = t6;
@@ -27874,133 +27874,133 @@ template <class T>
 std::span<const SegmentKernel<T>> segment_cauchy_kernels() {
   static const SegmentKernel<T> table[] = {
       {KernelFamily::cauchy, 1, 0, &segment_cauchy_i1_w0_f<T>, &segment_cauchy_i1_w0_grad<T>, &segment_cauchy_i1_w0_f_and_grad<T>, "segment_cauchy_i1_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt", {39, 51, 2, 5, 0, 1, 0}, {47, 70, 5, 3, 0, 0, 0}, {48, 79, 7, 5, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt", {55, 65, 2, 5, 0, 1, 0}, {63, 84, 5, 3, 0, 0, 0}, {64, 93, 7, 5, 0, 1, 0}},
       {KernelFamily::cauchy, 1, 1, &segment_cauchy_i1_w1_f<T>, &segment_cauchy_i1_w1_grad<T>, &segment_cauchy_i1_w1_f_and_grad<T>, "segment_cauchy_i1_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt", {42, 55, 3, 5, 0, 1, 0}, {53, 82, 7, 5, 0, 1, 0}, {56, 87, 7, 5, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt", {58, 69, 3, 5, 0, 1, 0}, {69, 96, 7, 5, 0, 1, 0}, {72, 101, 7, 5, 0, 1, 0}},
       {KernelFamily::cauchy, 1, 2, &segment_cauchy_i1_w2_f<T>, &segment_cauchy_i1_w2_grad<T>, &segment_cauchy_i1_w2_f_and_grad<T>, "segment_cauchy_i1_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt", {47, 67, 3, 5, 0, 1, 0}, {60, 93, 7, 5, 0, 1, 0}, {66, 109, 7, 5, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt", {63, 81, 3, 5, 0, 1, 0}, {76, 107, 7, 5, 0, 1, 0}, {82, 123, 7, 5, 0, 1, 0}},
       {KernelFamily::cauchy, 1, 3, &segment_cauchy_i1_w3_f<T>, &segment_cauchy_i1_w3_grad<T>, &segment_cauchy_i1_w3_f_and_grad<T>, "segment_cauchy_i1_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt", {52, 84, 3, 5, 0, 1, 0}, {69, 117, 7, 5, 0, 1, 0}, {76, 141, 7, 5, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt", {68, 98, 3, 5, 0, 1, 0}, {85, 131, 7, 5, 0, 1, 0}, {92, 155, 7, 5, 0, 1, 0}},
       {KernelFamily::cauchy, 2, 0, &segment_cauchy_i2_w0_f<T>, &segment_cauchy_i2_w0_grad<T>, &segment_cauchy_i2_w0_f_and_grad<T>, "segment_cauchy_i2_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt", {42, 54, 1, 2, 1, 0, 0}, {51, 80, 6, 2, 1, 0, 0}, {51, 82, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−2/2) dt", {58, 68, 1, 2, 1, 0, 0}, {67, 94, 6, 2, 1, 0, 0}, {67, 96, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 2, 1, &segment_cauchy_i2_w1_f<T>, &segment_cauchy_i2_w1_grad<T>, &segment_cauchy_i2_w1_f_and_grad<T>, "segment_cauchy_i2_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt", {44, 59, 3, 2, 1, 1, 0}, {56, 86, 6, 2, 1, 0, 0}, {58, 94, 6, 2, 1, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−2/2) dt", {60, 73, 3, 2, 1, 1, 0}, {72, 100, 6, 2, 1, 0, 0}, {74, 108, 6, 2, 1, 1, 0}},
       {KernelFamily::cauchy, 2, 2, &segment_cauchy_i2_w2_f<T>, &segment_cauchy_i2_w2_grad<T>, &segment_cauchy_i2_w2_f_and_grad<T>, "segment_cauchy_i2_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt", {47, 64, 3, 2, 1, 1, 0}, {62, 100, 6, 2, 1, 1, 0}, {66, 110, 6, 2, 1, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−2/2) dt", {63, 78, 3, 2, 1, 1, 0}, {78, 114, 6, 2, 1, 1, 0}, {82, 124, 6, 2, 1, 1, 0}},
       {KernelFamily::cauchy, 2, 3, &segment_cauchy_i2_w3_f<T>, &segment_cauchy_i2_w3_grad<T>, &segment_cauchy_i2_w3_f_and_grad<T>, "segment_cauchy_i2_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt", {52, 74, 3, 2, 1, 1, 0}, {69, 115, 6, 2, 1, 1, 0}, {76, 132, 6, 2, 1, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−2/2) dt", {68, 88, 3, 2, 1, 1, 0}, {85, 129, 6, 2, 1, 1, 0}, {92, 146, 6, 2, 1, 1, 0}},
       {KernelFamily::cauchy, 3, 0, &segment_cauchy_i3_w0_f<T>, &segment_cauchy_i3_w0_grad<T>, &segment_cauchy_i3_w0_f_and_grad<T>, "segment_cauchy_i3_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt", {40, 50, 3, 3, 0, 0, 0}, {49, 83, 7, 3, 0, 0, 0}, {49, 86, 7, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−3/2) dt", {56, 64, 3, 3, 0, 0, 0}, {65, 97, 7, 3, 0, 0, 0}, {65, 100, 7, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 3, 1, &segment_cauchy_i3_w1_f<T>, &segment_cauchy_i3_w1_grad<T>, &segment_cauchy_i3_w1_f_and_grad<T>, "segment_cauchy_i3_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt", {43, 56, 4, 3, 0, 0, 0}, {54, 96, 5, 3, 0, 0, 0}, {57, 103, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−3/2) dt", {59, 70, 4, 3, 0, 0, 0}, {70, 110, 5, 3, 0, 0, 0}, {73, 117, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 3, 2, &segment_cauchy_i3_w2_f<T>, &segment_cauchy_i3_w2_grad<T>, &segment_cauchy_i3_w2_f_and_grad<T>, "segment_cauchy_i3_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt", {47, 70, 6, 5, 0, 1, 0}, {61, 111, 5, 3, 0, 0, 0}, {66, 129, 7, 5, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−3/2) dt", {63, 84, 6, 5, 0, 1, 0}, {77, 125, 5, 3, 0, 0, 0}, {82, 143, 7, 5, 0, 1, 0}},
       {KernelFamily::cauchy, 3, 3, &segment_cauchy_i3_w3_f<T>, &segment_cauchy_i3_w3_grad<T>, &segment_cauchy_i3_w3_f_and_grad<T>, "segment_cauchy_i3_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt", {52, 79, 6, 5, 0, 1, 0}, {69, 135, 7, 5, 0, 1, 0}, {76, 151, 7, 5, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−3/2) dt", {68, 93, 6, 5, 0, 1, 0}, {85, 149, 7, 5, 0, 1, 0}, {92, 165, 7, 5, 0, 1, 0}},
       {KernelFamily::cauchy, 4, 0, &segment_cauchy_i4_w0_f<T>, &segment_cauchy_i4_w0_grad<T>, &segment_cauchy_i4_w0_f_and_grad<T>, "segment_cauchy_i4_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt", {44, 58, 4, 2, 1, 0, 0}, {53, 89, 6, 2, 1, 0, 0}, {53, 93, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−4/2) dt", {60, 72, 4, 2, 1, 0, 0}, {69, 103, 6, 2, 1, 0, 0}, {69, 107, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 4, 1, &segment_cauchy_i4_w1_f<T>, &segment_cauchy_i4_w1_grad<T>, &segment_cauchy_i4_w1_f_and_grad<T>, "segment_cauchy_i4_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt", {47, 64, 5, 2, 1, 0, 0}, {58, 100, 6, 2, 1, 0, 0}, {61, 109, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−4/2) dt", {63, 78, 5, 2, 1, 0, 0}, {74, 114, 6, 2, 1, 0, 0}, {77, 123, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 4, 2, &segment_cauchy_i4_w2_f<T>, &segment_cauchy_i4_w2_grad<T>, &segment_cauchy_i4_w2_f_and_grad<T>, "segment_cauchy_i4_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt", {50, 74, 5, 2, 1, 0, 0}, {65, 115, 6, 2, 1, 0, 0}, {69, 131, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−4/2) dt", {66, 88, 5, 2, 1, 0, 0}, {81, 129, 6, 2, 1, 0, 0}, {85, 145, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 4, 3, &segment_cauchy_i4_w3_f<T>, &segment_cauchy_i4_w3_grad<T>, &segment_cauchy_i4_w3_f_and_grad<T>, "segment_cauchy_i4_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt", {54, 86, 5, 2, 1, 1, 0}, {72, 134, 6, 2, 1, 0, 0}, {78, 156, 6, 2, 1, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−4/2) dt", {70, 100, 5, 2, 1, 1, 0}, {88, 148, 6, 2, 1, 0, 0}, {94, 170, 6, 2, 1, 1, 0}},
       {KernelFamily::cauchy, 5, 0, &segment_cauchy_i5_w0_f<T>, &segment_cauchy_i5_w0_grad<T>, &segment_cauchy_i5_w0_f_and_grad<T>, "segment_cauchy_i5_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt", {42, 59, 5, 3, 0, 0, 0}, {51, 100, 5, 3, 0, 0, 0}, {51, 104, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−5/2) dt", {58, 73, 5, 3, 0, 0, 0}, {67, 114, 5, 3, 0, 0, 0}, {67, 118, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 5, 1, &segment_cauchy_i5_w1_f<T>, &segment_cauchy_i5_w1_grad<T>, &segment_cauchy_i5_w1_f_and_grad<T>, "segment_cauchy_i5_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt", {45, 69, 4, 3, 0, 0, 0}, {56, 113, 5, 3, 0, 0, 0}, {59, 124, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−5/2) dt", {61, 83, 4, 3, 0, 0, 0}, {72, 127, 5, 3, 0, 0, 0}, {75, 138, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 5, 2, &segment_cauchy_i5_w2_f<T>, &segment_cauchy_i5_w2_grad<T>, &segment_cauchy_i5_w2_f_and_grad<T>, "segment_cauchy_i5_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt", {48, 80, 4, 3, 0, 0, 0}, {63, 130, 5, 3, 0, 0, 0}, {67, 147, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−5/2) dt", {64, 94, 4, 3, 0, 0, 0}, {79, 144, 5, 3, 0, 0, 0}, {83, 161, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 5, 3, &segment_cauchy_i5_w3_f<T>, &segment_cauchy_i5_w3_grad<T>, &segment_cauchy_i5_w3_f_and_grad<T>, "segment_cauchy_i5_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt", {53, 92, 4, 3, 0, 0, 0}, {70, 150, 5, 3, 0, 0, 0}, {77, 172, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−5/2) dt", {69, 106, 4, 3, 0, 0, 0}, {86, 164, 5, 3, 0, 0, 0}, {93, 186, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 6, 0, &segment_cauchy_i6_w0_f<T>, &segment_cauchy_i6_w0_grad<T>, &segment_cauchy_i6_w0_f_and_grad<T>, "segment_cauchy_i6_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt", {46, 69, 4, 2, 1, 0, 0}, {55, 98, 6, 2, 1, 0, 0}, {55, 102, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−6/2) dt", {62, 83, 4, 2, 1, 0, 0}, {71, 112, 6, 2, 1, 0, 0}, {71, 116, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 6, 1, &segment_cauchy_i6_w1_f<T>, &segment_cauchy_i6_w1_grad<T>, &segment_cauchy_i6_w1_f_and_grad<T>, "segment_cauchy_i6_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt", {49, 75, 5, 2, 1, 0, 0}, {60, 109, 6, 2, 1, 0, 0}, {63, 120, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−6/2) dt", {65, 89, 5, 2, 1, 0, 0}, {76, 123, 6, 2, 1, 0, 0}, {79, 134, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 6, 2, &segment_cauchy_i6_w2_f<T>, &segment_cauchy_i6_w2_grad<T>, &segment_cauchy_i6_w2_f_and_grad<T>, "segment_cauchy_i6_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt", {52, 86, 5, 2, 1, 0, 0}, {67, 126, 6, 2, 1, 0, 0}, {71, 143, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−6/2) dt", {68, 100, 5, 2, 1, 0, 0}, {83, 140, 6, 2, 1, 0, 0}, {87, 157, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 6, 3, &segment_cauchy_i6_w3_f<T>, &segment_cauchy_i6_w3_grad<T>, &segment_cauchy_i6_w3_f_and_grad<T>, "segment_cauchy_i6_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt", {57, 98, 5, 2, 1, 0, 0}, {74, 146, 6, 2, 1, 0, 0}, {81, 168, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−6/2) dt", {73, 112, 5, 2, 1, 0, 0}, {90, 160, 6, 2, 1, 0, 0}, {97, 182, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 7, 0, &segment_cauchy_i7_w0_f<T>, &segment_cauchy_i7_w0_grad<T>, &segment_cauchy_i7_w0_f_and_grad<T>, "segment_cauchy_i7_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt", {44, 74, 3, 3, 0, 0, 0}, {53, 113, 5, 3, 0, 0, 0}, {53, 117, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−7/2) dt", {60, 88, 3, 3, 0, 0, 0}, {69, 127, 5, 3, 0, 0, 0}, {69, 131, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 7, 1, &segment_cauchy_i7_w1_f<T>, &segment_cauchy_i7_w1_grad<T>, &segment_cauchy_i7_w1_f_and_grad<T>, "segment_cauchy_i7_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt", {47, 82, 4, 3, 0, 0, 0}, {58, 126, 5, 3, 0, 0, 0}, {61, 139, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−7/2) dt", {63, 96, 4, 3, 0, 0, 0}, {74, 140, 5, 3, 0, 0, 0}, {77, 153, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 7, 2, &segment_cauchy_i7_w2_f<T>, &segment_cauchy_i7_w2_grad<T>, &segment_cauchy_i7_w2_f_and_grad<T>, "segment_cauchy_i7_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt", {50, 93, 4, 3, 0, 0, 0}, {65, 146, 5, 3, 0, 0, 0}, {69, 163, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−7/2) dt", {66, 107, 4, 3, 0, 0, 0}, {81, 160, 5, 3, 0, 0, 0}, {85, 177, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 7, 3, &segment_cauchy_i7_w3_f<T>, &segment_cauchy_i7_w3_grad<T>, &segment_cauchy_i7_w3_f_and_grad<T>, "segment_cauchy_i7_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt", {55, 107, 4, 3, 0, 0, 0}, {72, 167, 5, 3, 0, 0, 0}, {79, 191, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−7/2) dt", {71, 121, 4, 3, 0, 0, 0}, {88, 181, 5, 3, 0, 0, 0}, {95, 205, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 8, 0, &segment_cauchy_i8_w0_f<T>, &segment_cauchy_i8_w0_grad<T>, &segment_cauchy_i8_w0_f_and_grad<T>, "segment_cauchy_i8_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt", {48, 78, 4, 2, 1, 0, 0}, {57, 107, 6, 2, 1, 0, 0}, {57, 111, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−8/2) dt", {64, 92, 4, 2, 1, 0, 0}, {73, 121, 6, 2, 1, 0, 0}, {73, 125, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 8, 1, &segment_cauchy_i8_w1_f<T>, &segment_cauchy_i8_w1_grad<T>, &segment_cauchy_i8_w1_f_and_grad<T>, "segment_cauchy_i8_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt", {51, 84, 5, 2, 1, 0, 0}, {62, 118, 6, 2, 1, 0, 0}, {65, 129, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−8/2) dt", {67, 98, 5, 2, 1, 0, 0}, {78, 132, 6, 2, 1, 0, 0}, {81, 143, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 8, 2, &segment_cauchy_i8_w2_f<T>, &segment_cauchy_i8_w2_grad<T>, &segment_cauchy_i8_w2_f_and_grad<T>, "segment_cauchy_i8_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt", {54, 95, 5, 2, 1, 0, 0}, {69, 135, 6, 2, 1, 0, 0}, {73, 152, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−8/2) dt", {70, 109, 5, 2, 1, 0, 0}, {85, 149, 6, 2, 1, 0, 0}, {89, 166, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 8, 3, &segment_cauchy_i8_w3_f<T>, &segment_cauchy_i8_w3_grad<T>, &segment_cauchy_i8_w3_f_and_grad<T>, "segment_cauchy_i8_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt", {59, 109, 5, 2, 1, 0, 0}, {76, 155, 6, 2, 1, 0, 0}, {83, 179, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−8/2) dt", {75, 123, 5, 2, 1, 0, 0}, {92, 169, 6, 2, 1, 0, 0}, {99, 193, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 9, 0, &segment_cauchy_i9_w0_f<T>, &segment_cauchy_i9_w0_grad<T>, &segment_cauchy_i9_w0_f_and_grad<T>, "segment_cauchy_i9_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt", {46, 85, 3, 3, 0, 0, 0}, {55, 124, 5, 3, 0, 0, 0}, {55, 128, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−9/2) dt", {62, 99, 3, 3, 0, 0, 0}, {71, 138, 5, 3, 0, 0, 0}, {71, 142, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 9, 1, &segment_cauchy_i9_w1_f<T>, &segment_cauchy_i9_w1_grad<T>, &segment_cauchy_i9_w1_f_and_grad<T>, "segment_cauchy_i9_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt", {49, 93, 4, 3, 0, 0, 0}, {60, 137, 5, 3, 0, 0, 0}, {63, 150, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−9/2) dt", {65, 107, 4, 3, 0, 0, 0}, {76, 151, 5, 3, 0, 0, 0}, {79, 164, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 9, 2, &segment_cauchy_i9_w2_f<T>, &segment_cauchy_i9_w2_grad<T>, &segment_cauchy_i9_w2_f_and_grad<T>, "segment_cauchy_i9_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt", {52, 105, 4, 3, 0, 0, 0}, {67, 156, 5, 3, 0, 0, 0}, {71, 174, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−9/2) dt", {68, 119, 4, 3, 0, 0, 0}, {83, 170, 5, 3, 0, 0, 0}, {87, 188, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 9, 3, &segment_cauchy_i9_w3_f<T>, &segment_cauchy_i9_w3_grad<T>, &segment_cauchy_i9_w3_f_and_grad<T>, "segment_cauchy_i9_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt", {57, 122, 4, 3, 0, 0, 0}, {74, 176, 5, 3, 0, 0, 0}, {81, 203, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−9/2) dt", {73, 136, 4, 3, 0, 0, 0}, {90, 190, 5, 3, 0, 0, 0}, {97, 217, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 10, 0, &segment_cauchy_i10_w0_f<T>, &segment_cauchy_i10_w0_grad<T>, &segment_cauchy_i10_w0_f_and_grad<T>, "segment_cauchy_i10_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt", {50, 87, 4, 2, 1, 0, 0}, {59, 116, 6, 2, 1, 0, 0}, {59, 120, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−10/2) dt", {66, 101, 4, 2, 1, 0, 0}, {75, 130, 6, 2, 1, 0, 0}, {75, 134, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 10, 1, &segment_cauchy_i10_w1_f<T>, &segment_cauchy_i10_w1_grad<T>, &segment_cauchy_i10_w1_f_and_grad<T>, "segment_cauchy_i10_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt", {53, 93, 5, 2, 1, 0, 0}, {64, 127, 6, 2, 1, 0, 0}, {67, 138, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−10/2) dt", {69, 107, 5, 2, 1, 0, 0}, {80, 141, 6, 2, 1, 0, 0}, {83, 152, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 10, 2, &segment_cauchy_i10_w2_f<T>, &segment_cauchy_i10_w2_grad<T>, &segment_cauchy_i10_w2_f_and_grad<T>, "segment_cauchy_i10_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt", {56, 104, 5, 2, 1, 0, 0}, {71, 145, 6, 2, 1, 0, 0}, {75, 162, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−10/2) dt", {72, 118, 5, 2, 1, 0, 0}, {87, 159, 6, 2, 1, 0, 0}, {91, 176, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 10, 3, &segment_cauchy_i10_w3_f<T>, &segment_cauchy_i10_w3_grad<T>, &segment_cauchy_i10_w3_f_and_grad<T>, "segment_cauchy_i10_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt", {61, 118, 5, 2, 1, 0, 0}, {78, 166, 6, 2, 1, 0, 0}, {85, 190, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−10/2) dt", {77, 132, 5, 2, 1, 0, 0}, {94, 180, 6, 2, 1, 0, 0}, {101, 204, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 11, 0, &segment_cauchy_i11_w0_f<T>, &segment_cauchy_i11_w0_grad<T>, &segment_cauchy_i11_w0_f_and_grad<T>, "segment_cauchy_i11_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt", {48, 96, 3, 3, 0, 0, 0}, {57, 137, 5, 3, 0, 0, 0}, {57, 141, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−11/2) dt", {64, 110, 3, 3, 0, 0, 0}, {73, 151, 5, 3, 0, 0, 0}, {73, 155, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 11, 1, &segment_cauchy_i11_w1_f<T>, &segment_cauchy_i11_w1_grad<T>, &segment_cauchy_i11_w1_f_and_grad<T>, "segment_cauchy_i11_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt", {51, 104, 4, 3, 0, 0, 0}, {62, 150, 5, 3, 0, 0, 0}, {65, 163, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−11/2) dt", {67, 118, 4, 3, 0, 0, 0}, {78, 164, 5, 3, 0, 0, 0}, {81, 177, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 11, 2, &segment_cauchy_i11_w2_f<T>, &segment_cauchy_i11_w2_grad<T>, &segment_cauchy_i11_w2_f_and_grad<T>, "segment_cauchy_i11_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt", {54, 115, 4, 3, 0, 0, 0}, {69, 170, 5, 3, 0, 0, 0}, {73, 187, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−11/2) dt", {70, 129, 4, 3, 0, 0, 0}, {85, 184, 5, 3, 0, 0, 0}, {89, 201, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 11, 3, &segment_cauchy_i11_w3_f<T>, &segment_cauchy_i11_w3_grad<T>, &segment_cauchy_i11_w3_f_and_grad<T>, "segment_cauchy_i11_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt", {59, 131, 4, 3, 0, 0, 0}, {76, 191, 5, 3, 0, 0, 0}, {83, 217, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−11/2) dt", {75, 145, 4, 3, 0, 0, 0}, {92, 205, 5, 3, 0, 0, 0}, {99, 231, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 12, 0, &segment_cauchy_i12_w0_f<T>, &segment_cauchy_i12_w0_grad<T>, &segment_cauchy_i12_w0_f_and_grad<T>, "segment_cauchy_i12_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt", {52, 96, 4, 2, 1, 0, 0}, {61, 125, 6, 2, 1, 0, 0}, {61, 129, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−12/2) dt", {68, 110, 4, 2, 1, 0, 0}, {77, 139, 6, 2, 1, 0, 0}, {77, 143, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 12, 1, &segment_cauchy_i12_w1_f<T>, &segment_cauchy_i12_w1_grad<T>, &segment_cauchy_i12_w1_f_and_grad<T>, "segment_cauchy_i12_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt", {55, 102, 5, 2, 1, 0, 0}, {66, 136, 6, 2, 1, 0, 0}, {69, 147, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−12/2) dt", {71, 116, 5, 2, 1, 0, 0}, {82, 150, 6, 2, 1, 0, 0}, {85, 161, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 12, 2, &segment_cauchy_i12_w2_f<T>, &segment_cauchy_i12_w2_grad<T>, &segment_cauchy_i12_w2_f_and_grad<T>, "segment_cauchy_i12_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt", {58, 114, 5, 2, 1, 0, 0}, {73, 153, 6, 2, 1, 0, 0}, {77, 171, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−12/2) dt", {74, 128, 5, 2, 1, 0, 0}, {89, 167, 6, 2, 1, 0, 0}, {93, 185, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 12, 3, &segment_cauchy_i12_w3_f<T>, &segment_cauchy_i12_w3_grad<T>, &segment_cauchy_i12_w3_f_and_grad<T>, "segment_cauchy_i12_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt", {63, 129, 5, 2, 1, 0, 0}, {80, 173, 6, 2, 1, 0, 0}, {87, 198, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−12/2) dt", {79, 143, 5, 2, 1, 0, 0}, {96, 187, 6, 2, 1, 0, 0}, {103, 212, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 13, 0, &segment_cauchy_i13_w0_f<T>, &segment_cauchy_i13_w0_grad<T>, &segment_cauchy_i13_w0_f_and_grad<T>, "segment_cauchy_i13_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt", {50, 107, 3, 3, 0, 0, 0}, {59, 148, 5, 3, 0, 0, 0}, {59, 152, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−13/2) dt", {66, 121, 3, 3, 0, 0, 0}, {75, 162, 5, 3, 0, 0, 0}, {75, 166, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 13, 1, &segment_cauchy_i13_w1_f<T>, &segment_cauchy_i13_w1_grad<T>, &segment_cauchy_i13_w1_f_and_grad<T>, "segment_cauchy_i13_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt", {53, 115, 4, 3, 0, 0, 0}, {64, 161, 5, 3, 0, 0, 0}, {67, 174, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−13/2) dt", {69, 129, 4, 3, 0, 0, 0}, {80, 175, 5, 3, 0, 0, 0}, {83, 188, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 13, 2, &segment_cauchy_i13_w2_f<T>, &segment_cauchy_i13_w2_grad<T>, &segment_cauchy_i13_w2_f_and_grad<T>, "segment_cauchy_i13_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt", {56, 127, 4, 3, 0, 0, 0}, {71, 181, 5, 3, 0, 0, 0}, {75, 199, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−13/2) dt", {72, 141, 4, 3, 0, 0, 0}, {87, 195, 5, 3, 0, 0, 0}, {91, 213, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 13, 3, &segment_cauchy_i13_w3_f<T>, &segment_cauchy_i13_w3_grad<T>, &segment_cauchy_i13_w3_f_and_grad<T>, "segment_cauchy_i13_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt", {61, 144, 4, 3, 0, 0, 0}, {78, 204, 5, 3, 0, 0, 0}, {85, 231, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−13/2) dt", {77, 158, 4, 3, 0, 0, 0}, {94, 218, 5, 3, 0, 0, 0}, {101, 245, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 14, 0, &segment_cauchy_i14_w0_f<T>, &segment_cauchy_i14_w0_grad<T>, &segment_cauchy_i14_w0_f_and_grad<T>, "segment_cauchy_i14_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt", {54, 105, 4, 2, 1, 0, 0}, {63, 134, 6, 2, 1, 0, 0}, {63, 138, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−14/2) dt", {70, 119, 4, 2, 1, 0, 0}, {79, 148, 6, 2, 1, 0, 0}, {79, 152, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 14, 1, &segment_cauchy_i14_w1_f<T>, &segment_cauchy_i14_w1_grad<T>, &segment_cauchy_i14_w1_f_and_grad<T>, "segment_cauchy_i14_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt", {57, 111, 5, 2, 1, 0, 0}, {68, 145, 6, 2, 1, 0, 0}, {71, 156, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−14/2) dt", {73, 125, 5, 2, 1, 0, 0}, {84, 159, 6, 2, 1, 0, 0}, {87, 170, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 14, 2, &segment_cauchy_i14_w2_f<T>, &segment_cauchy_i14_w2_grad<T>, &segment_cauchy_i14_w2_f_and_grad<T>, "segment_cauchy_i14_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt", {60, 122, 5, 2, 1, 0, 0}, {75, 162, 6, 2, 1, 0, 0}, {79, 179, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−14/2) dt", {76, 136, 5, 2, 1, 0, 0}, {91, 176, 6, 2, 1, 0, 0}, {95, 193, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 14, 3, &segment_cauchy_i14_w3_f<T>, &segment_cauchy_i14_w3_grad<T>, &segment_cauchy_i14_w3_f_and_grad<T>, "segment_cauchy_i14_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt", {65, 136, 5, 2, 1, 0, 0}, {82, 182, 6, 2, 1, 0, 0}, {89, 206, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−14/2) dt", {81, 150, 5, 2, 1, 0, 0}, {98, 196, 6, 2, 1, 0, 0}, {105, 220, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 15, 0, &segment_cauchy_i15_w0_f<T>, &segment_cauchy_i15_w0_grad<T>, &segment_cauchy_i15_w0_f_and_grad<T>, "segment_cauchy_i15_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt", {52, 118, 3, 3, 0, 0, 0}, {61, 161, 5, 3, 0, 0, 0}, {61, 165, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−15/2) dt", {68, 132, 3, 3, 0, 0, 0}, {77, 175, 5, 3, 0, 0, 0}, {77, 179, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 15, 1, &segment_cauchy_i15_w1_f<T>, &segment_cauchy_i15_w1_grad<T>, &segment_cauchy_i15_w1_f_and_grad<T>, "segment_cauchy_i15_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt", {55, 126, 4, 3, 0, 0, 0}, {66, 174, 5, 3, 0, 0, 0}, {69, 187, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−15/2) dt", {71, 140, 4, 3, 0, 0, 0}, {82, 188, 5, 3, 0, 0, 0}, {85, 201, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 15, 2, &segment_cauchy_i15_w2_f<T>, &segment_cauchy_i15_w2_grad<T>, &segment_cauchy_i15_w2_f_and_grad<T>, "segment_cauchy_i15_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt", {58, 138, 4, 3, 0, 0, 0}, {73, 194, 5, 3, 0, 0, 0}, {77, 212, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−15/2) dt", {74, 152, 4, 3, 0, 0, 0}, {89, 208, 5, 3, 0, 0, 0}, {93, 226, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 15, 3, &segment_cauchy_i15_w3_f<T>, &segment_cauchy_i15_w3_grad<T>, &segment_cauchy_i15_w3_f_and_grad<T>, "segment_cauchy_i15_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt", {63, 155, 4, 3, 0, 0, 0}, {80, 215, 5, 3, 0, 0, 0}, {87, 242, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−15/2) dt", {79, 169, 4, 3, 0, 0, 0}, {96, 229, 5, 3, 0, 0, 0}, {103, 256, 5, 3, 0, 0, 0}},
       {KernelFamily::cauchy, 16, 0, &segment_cauchy_i16_w0_f<T>, &segment_cauchy_i16_w0_grad<T>, &segment_cauchy_i16_w0_f_and_grad<T>, "segment_cauchy_i16_w0",
-       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt", {56, 114, 4, 2, 1, 0, 0}, {65, 142, 6, 2, 1, 0, 0}, {65, 146, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−16/2) dt", {72, 128, 4, 2, 1, 0, 0}, {81, 156, 6, 2, 1, 0, 0}, {81, 160, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 16, 1, &segment_cauchy_i16_w1_f<T>, &segment_cauchy_i16_w1_grad<T>, &segment_cauchy_i16_w1_f_and_grad<T>, "segment_cauchy_i16_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt", {59, 120, 5, 2, 1, 0, 0}, {70, 153, 6, 2, 1, 0, 0}, {73, 164, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−16/2) dt", {75, 134, 5, 2, 1, 0, 0}, {86, 167, 6, 2, 1, 0, 0}, {89, 178, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 16, 2, &segment_cauchy_i16_w2_f<T>, &segment_cauchy_i16_w2_grad<T>, &segment_cauchy_i16_w2_f_and_grad<T>, "segment_cauchy_i16_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt", {62, 131, 5, 2, 1, 0, 0}, {77, 171, 6, 2, 1, 0, 0}, {81, 188, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−16/2) dt", {78, 145, 5, 2, 1, 0, 0}, {93, 185, 6, 2, 1, 0, 0}, {97, 202, 6, 2, 1, 0, 0}},
       {KernelFamily::cauchy, 16, 3, &segment_cauchy_i16_w3_f<T>, &segment_cauchy_i16_w3_grad<T>, &segment_cauchy_i16_w3_f_and_grad<T>, "segment_cauchy_i16_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt", {67, 145, 5, 2, 1, 0, 0}, {84, 192, 6, 2, 1, 0, 0}, {91, 216, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−16/2) dt", {83, 159, 5, 2, 1, 0, 0}, {100, 206, 6, 2, 1, 0, 0}, {107, 230, 6, 2, 1, 0, 0}},
   };
   return table;
 }

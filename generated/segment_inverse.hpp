@@ -24,8 +24,8 @@ namespace skelconv::generated {
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt
-/// Operations: 36 +, 44 ×, 2 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 186 +, 236 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 50 +, 58 ×, 2 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 200 +, 250 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -76,11 +76,11 @@ T segment_inverse_i1_w0_f(const SegmentInput<T>& in) {
   }
   const T J1 = asinh(X) / length;
   T F;
-  const T t4 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t4 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   if (t4 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(1, 1, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 1, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -92,8 +92,8 @@ T segment_inverse_i1_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt
-/// Operations: 44 +, 62 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 338 +, 1007 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 58 +, 76 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 352 +, 1021 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i1_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -144,13 +144,13 @@ std::array<T, 3> segment_inverse_i1_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - M_flat[2] * in.w[0] * t6 * ab_ap;
@@ -181,8 +181,8 @@ std::array<T, 3> segment_inverse_i1_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt
-/// Operations: 45 +, 71 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 339 +, 1015 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 59 +, 85 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 353 +, 1029 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i1_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -248,13 +248,13 @@ T segment_inverse_i1_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t11 = T(1) / ab_ab;
@@ -294,7 +294,7 @@ T segment_inverse_i1_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt
 /// Returns false where segment_inverse_i1_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 45 +, 71 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 59 +, 85 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -359,13 +359,13 @@ bool segment_inverse_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -a_minus_b * ab_ap;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t11 = T(1) / ab_ab;
@@ -392,8 +392,8 @@ bool segment_inverse_i1_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt
-/// Operations: 39 +, 48 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 207 +, 258 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 53 +, 62 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 221 +, 272 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -445,11 +445,11 @@ T segment_inverse_i1_w1_f(const SegmentInput<T>& in) {
   const T t4 = T(1) / length;
   const T J1 = asinh(X) * t4;
   T F;
-  const T t5 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t5 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   if (t5 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(1, 1, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 1, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -462,8 +462,8 @@ T segment_inverse_i1_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt
-/// Operations: 50 +, 74 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 344 +, 1017 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 64 +, 88 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 358 +, 1031 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i1_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -528,13 +528,13 @@ std::array<T, 3> segment_inverse_i1_w1_grad(const SegmentInput<T>& in) {
   const T J1 = asinh(X) * t7;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t9 = -a_minus_b * ab_ap;
   const T t10 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t11 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t11;
     const T t12 = T(1) / ab_ab;
@@ -569,8 +569,8 @@ std::array<T, 3> segment_inverse_i1_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt
-/// Operations: 53 +, 79 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 347 +, 1022 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 67 +, 93 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 361 +, 1036 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i1_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -636,13 +636,13 @@ T segment_inverse_i1_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t11 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t11;
@@ -685,7 +685,7 @@ T segment_inverse_i1_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt
 /// Returns false where segment_inverse_i1_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 53 +, 79 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 67 +, 93 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -750,13 +750,13 @@ bool segment_inverse_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t11 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t11;
@@ -785,8 +785,8 @@ bool segment_inverse_i1_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt
-/// Operations: 44 +, 60 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 228 +, 279 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 58 +, 74 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 242 +, 293 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -838,11 +838,11 @@ T segment_inverse_i1_w2_f(const SegmentInput<T>& in) {
   const T t4 = T(1) / length;
   const T J1 = t4 * asinh(X);
   T F;
-  const T t5 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t5 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   if (t5 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(1, 1, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 1, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -856,8 +856,8 @@ T segment_inverse_i1_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt
-/// Operations: 57 +, 85 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 351 +, 1027 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 71 +, 99 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 365 +, 1041 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i1_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -922,13 +922,13 @@ std::array<T, 3> segment_inverse_i1_w2_grad(const SegmentInput<T>& in) {
   const T J1 = asinh(X) * t7;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -a_minus_b * ab_ap;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t11 = M_flat[4] * in.w[0] + M_flat[6] * in.w[2] + M_flat[5] * in.w[1];
     G_ap = t11;
     const T t12 = T(1) / ab_ab;
@@ -965,8 +965,8 @@ std::array<T, 3> segment_inverse_i1_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt
-/// Operations: 63 +, 101 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 357 +, 1043 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 77 +, 115 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 371 +, 1057 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i1_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1032,13 +1032,13 @@ T segment_inverse_i1_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -a_minus_b * ab_ap;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
     const T t11 = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + in.w[1] * M_flat[5];
     G_ap = t11;
@@ -1085,7 +1085,7 @@ T segment_inverse_i1_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt
 /// Returns false where segment_inverse_i1_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 63 +, 101 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 77 +, 115 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1150,13 +1150,13 @@ bool segment_inverse_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t11 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
     G_ap = t11;
@@ -1187,8 +1187,8 @@ bool segment_inverse_i1_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt
-/// Operations: 49 +, 77 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 249 +, 300 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 63 +, 91 ×, 3 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 263 +, 314 ×, 25 /, 23 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1240,11 +1240,11 @@ T segment_inverse_i1_w3_f(const SegmentInput<T>& in) {
   const T t4 = T(1) / length;
   const T J1 = asinh(X) * t4;
   T F;
-  const T t5 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t5 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   if (t5 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(1, 1, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 1, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + in.w[1] * M_flat[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -1260,8 +1260,8 @@ T segment_inverse_i1_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt
-/// Operations: 66 +, 109 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 360 +, 1051 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 80 +, 123 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 374 +, 1065 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i1_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1326,13 +1326,13 @@ std::array<T, 3> segment_inverse_i1_w3_grad(const SegmentInput<T>& in) {
   const T J1 = asinh(X) * t7;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -a_minus_b * ab_ap;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t11 = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7] + M_flat[8] * in.w[3];
     G_ap = t11;
     const T t12 = T(1) / ab_ab;
@@ -1375,8 +1375,8 @@ std::array<T, 3> segment_inverse_i1_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt
-/// Operations: 73 +, 133 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 367 +, 1075 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 87 +, 147 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 381 +, 1089 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i1_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1442,13 +1442,13 @@ T segment_inverse_i1_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3];
     const T t11 = in.w[1] * M_flat[6] + M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2];
     G_ap = t11;
@@ -1503,7 +1503,7 @@ T segment_inverse_i1_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt
 /// Returns false where segment_inverse_i1_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 73 +, 133 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 87 +, 147 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1568,13 +1568,13 @@ bool segment_inverse_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(1, 3, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(1, 3, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t11 = M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1];
     G_ap = t11;
@@ -1609,8 +1609,8 @@ bool segment_inverse_i1_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
-/// Operations: 38 +, 46 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 878 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 52 +, 60 ×, 1 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 462 +, 892 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1648,13 +1648,13 @@ T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -1673,8 +1673,8 @@ T segment_inverse_i2_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
-/// Operations: 47 +, 71 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 340 +, 1014 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 61 +, 85 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 354 +, 1028 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1724,13 +1724,13 @@ std::array<T, 3> segment_inverse_i2_w0_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
     G_E = M_flat[3] * in.w[0] - in.w[0] * t6 * ab_ap * M_flat[2];
@@ -1765,8 +1765,8 @@ std::array<T, 3> segment_inverse_i2_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
-/// Operations: 47 +, 73 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 342 +, 1021 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 61 +, 87 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 356 +, 1035 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1817,13 +1817,13 @@ T segment_inverse_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -1869,7 +1869,7 @@ T segment_inverse_i2_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt
 /// Returns false where segment_inverse_i2_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 47 +, 73 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 61 +, 87 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1919,13 +1919,13 @@ bool segment_inverse_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -1954,8 +1954,8 @@ bool segment_inverse_i2_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
-/// Operations: 40 +, 51 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 335 +, 993 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 54 +, 65 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 349 +, 1007 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1993,13 +1993,13 @@ T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
@@ -2022,8 +2022,8 @@ T segment_inverse_i2_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
-/// Operations: 52 +, 77 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 347 +, 1025 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 91 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 361 +, 1039 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2073,13 +2073,13 @@ std::array<T, 3> segment_inverse_i2_w1_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -2117,8 +2117,8 @@ std::array<T, 3> segment_inverse_i2_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
-/// Operations: 54 +, 85 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 349 +, 1035 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 68 +, 99 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 363 +, 1049 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2169,13 +2169,13 @@ T segment_inverse_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -2226,7 +2226,7 @@ T segment_inverse_i2_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt
 /// Returns false where segment_inverse_i2_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 54 +, 85 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
+/// Operations: 68 +, 99 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2276,13 +2276,13 @@ bool segment_inverse_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -2316,8 +2316,8 @@ bool segment_inverse_i2_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
-/// Operations: 43 +, 56 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 338 +, 998 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 57 +, 70 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 352 +, 1012 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2355,13 +2355,13 @@ T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
@@ -2386,8 +2386,8 @@ T segment_inverse_i2_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
-/// Operations: 58 +, 91 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 353 +, 1037 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 72 +, 105 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 367 +, 1051 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2437,13 +2437,13 @@ std::array<T, 3> segment_inverse_i2_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[2] * M_flat[6] + M_flat[4] * in.w[0] + M_flat[5] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -2490,8 +2490,8 @@ std::array<T, 3> segment_inverse_i2_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
-/// Operations: 62 +, 101 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 357 +, 1049 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 76 +, 115 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 371 +, 1063 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2542,13 +2542,13 @@ T segment_inverse_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
     const T t6 = M_flat[5] * in.w[1] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -2603,7 +2603,7 @@ T segment_inverse_i2_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt
 /// Returns false where segment_inverse_i2_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 62 +, 101 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
+/// Operations: 76 +, 115 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2653,13 +2653,13 @@ bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -2693,8 +2693,8 @@ bool segment_inverse_i2_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
-/// Operations: 48 +, 66 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 343 +, 1008 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 62 +, 80 ×, 3 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 357 +, 1022 ×, 123 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2732,13 +2732,13 @@ T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(2, 2, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 2, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_2 = J_downward(…)
@@ -2767,8 +2767,8 @@ T segment_inverse_i2_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
-/// Operations: 65 +, 106 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 360 +, 1053 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 79 +, 120 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 374 +, 1067 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i2_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2818,13 +2818,13 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[2] * M_flat[7] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -2875,8 +2875,8 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
-/// Operations: 72 +, 123 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 367 +, 1071 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 86 +, 137 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 381 +, 1085 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2927,13 +2927,13 @@ T segment_inverse_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[3] * M_flat[3] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
     const T t6 = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -2994,7 +2994,7 @@ T segment_inverse_i2_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt
 /// Returns false where segment_inverse_i2_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 72 +, 123 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
+/// Operations: 86 +, 137 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3044,13 +3044,13 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(2, 4, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(2, 4, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1];
     G_ap = t6;
@@ -3089,8 +3089,8 @@ bool segment_inverse_i2_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
-/// Operations: 37 +, 43 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 446 +, 877 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 51 +, 57 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 460 +, 891 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3129,13 +3129,13 @@ T segment_inverse_i3_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -3152,8 +3152,8 @@ T segment_inverse_i3_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
-/// Operations: 46 +, 75 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1615 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 60 +, 89 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1629 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3204,13 +3204,13 @@ std::array<T, 3> segment_inverse_i3_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - in.w[0] * t6 * ab_ap * M_flat[2];
@@ -3251,8 +3251,8 @@ std::array<T, 3> segment_inverse_i3_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
-/// Operations: 46 +, 78 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1617 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 60 +, 92 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1631 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3304,13 +3304,13 @@ T segment_inverse_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -3358,7 +3358,7 @@ T segment_inverse_i3_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt
 /// Returns false where segment_inverse_i3_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 46 +, 78 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 60 +, 92 ×, 7 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3409,13 +3409,13 @@ bool segment_inverse_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -3446,8 +3446,8 @@ bool segment_inverse_i3_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt
-/// Operations: 40 +, 49 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 1567 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 54 +, 63 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 691 +, 1581 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3486,13 +3486,13 @@ T segment_inverse_i3_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -3513,8 +3513,8 @@ T segment_inverse_i3_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt
-/// Operations: 51 +, 88 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 345 +, 1035 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 102 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 359 +, 1049 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3565,13 +3565,13 @@ std::array<T, 3> segment_inverse_i3_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -3625,8 +3625,8 @@ std::array<T, 3> segment_inverse_i3_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt
-/// Operations: 54 +, 95 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 348 +, 1046 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 362 +, 1060 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3678,13 +3678,13 @@ T segment_inverse_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -3743,7 +3743,7 @@ T segment_inverse_i3_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt
 /// Returns false where segment_inverse_i3_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 54 +, 95 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 68 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3794,13 +3794,13 @@ bool segment_inverse_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -3838,8 +3838,8 @@ bool segment_inverse_i3_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt
-/// Operations: 44 +, 63 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 338 +, 1002 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 58 +, 77 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 352 +, 1016 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i3_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3892,13 +3892,13 @@ T segment_inverse_i3_w2_f(const SegmentInput<T>& in) {
   const T t5 = T(1) / length;
   const T J1 = t5 * asinh(X);
   T F;
-  const T t6 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t6 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t7 = -a_minus_b * ab_ap;
   const T t8 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t6 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
   } else if (t7 >= T(0) && t8 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
@@ -3925,8 +3925,8 @@ T segment_inverse_i3_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt
-/// Operations: 58 +, 103 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 352 +, 1052 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 117 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 366 +, 1066 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3977,13 +3977,13 @@ std::array<T, 3> segment_inverse_i3_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + M_flat[6] * in.w[2] + M_flat[5] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -4040,8 +4040,8 @@ std::array<T, 3> segment_inverse_i3_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt
-/// Operations: 63 +, 121 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 357 +, 1074 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 77 +, 135 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 371 +, 1088 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4107,13 +4107,13 @@ T segment_inverse_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t11 = M_flat[4] * in.w[0] + in.w[1] * M_flat[5] + in.w[2] * M_flat[6];
     G_ap = t11;
@@ -4178,7 +4178,7 @@ T segment_inverse_i3_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt
 /// Returns false where segment_inverse_i3_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 63 +, 121 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 77 +, 135 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4243,13 +4243,13 @@ bool segment_inverse_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t11 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + in.w[0] * M_flat[4];
     G_ap = t11;
@@ -4289,8 +4289,8 @@ bool segment_inverse_i3_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt
-/// Operations: 49 +, 72 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 343 +, 1011 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 63 +, 86 ×, 6 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 357 +, 1025 ×, 126 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i3_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4343,13 +4343,13 @@ T segment_inverse_i3_w3_f(const SegmentInput<T>& in) {
   const T t5 = T(1) / length;
   const T J1 = t5 * asinh(X);
   T F;
-  const T t6 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t6 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t7 = -a_minus_b * ab_ap;
   const T t8 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t6 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(3, 3, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 3, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + M_flat[3] * in.w[3] + M_flat[1] * in.w[1];
   } else if (t7 >= T(0) && t8 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
@@ -4380,8 +4380,8 @@ T segment_inverse_i3_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt
-/// Operations: 66 +, 127 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 360 +, 1078 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 80 +, 141 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 374 +, 1092 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i3_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4446,13 +4446,13 @@ std::array<T, 3> segment_inverse_i3_w3_grad(const SegmentInput<T>& in) {
   const T J1 = asinh(X) * t7;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t11 = M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7];
     G_ap = t11;
     const T t12 = T(1) / ab_ab;
@@ -4509,8 +4509,8 @@ std::array<T, 3> segment_inverse_i3_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt
-/// Operations: 73 +, 143 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 367 +, 1099 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 87 +, 157 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh (generic form).
+/// Longest path: 381 +, 1113 ×, 127 /, 5 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4576,13 +4576,13 @@ T segment_inverse_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -ab_ap * a_minus_b;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + M_flat[0] * in.w[0] + in.w[2] * M_flat[2];
     const T t11 = M_flat[6] * in.w[1] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
     G_ap = t11;
@@ -4649,7 +4649,7 @@ T segment_inverse_i3_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt
 /// Returns false where segment_inverse_i3_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 73 +, 143 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
+/// Operations: 87 +, 157 ×, 7 /, 3 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4714,13 +4714,13 @@ bool segment_inverse_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t8 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t8 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t9 = -a_minus_b * ab_ap;
   const T t10 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t8 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(3, 5, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(3, 5, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2] + in.w[3] * M_flat[3];
     const T t11 = M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
     G_ap = t11;
@@ -4761,8 +4761,8 @@ bool segment_inverse_i3_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
-/// Operations: 40 +, 50 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 882 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 54 +, 64 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 462 +, 896 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4800,13 +4800,13 @@ T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(4, 4, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 4, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -4827,8 +4827,8 @@ T segment_inverse_i4_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
-/// Operations: 49 +, 80 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1619 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 63 +, 94 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1633 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4878,13 +4878,13 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - M_flat[2] * in.w[0] * t6 * ab_ap;
@@ -4924,8 +4924,8 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
-/// Operations: 49 +, 84 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1621 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 63 +, 98 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1635 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4976,13 +4976,13 @@ T segment_inverse_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -5029,7 +5029,7 @@ T segment_inverse_i4_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt
 /// Returns false where segment_inverse_i4_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 49 +, 84 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 63 +, 98 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5079,13 +5079,13 @@ bool segment_inverse_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -5117,8 +5117,8 @@ bool segment_inverse_i4_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
-/// Operations: 43 +, 56 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1572 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 57 +, 70 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 693 +, 1586 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5156,13 +5156,13 @@ T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(4, 4, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 4, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -5186,8 +5186,8 @@ T segment_inverse_i4_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
-/// Operations: 54 +, 91 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2325 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 105 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 946 +, 2339 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5237,13 +5237,13 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -5286,8 +5286,8 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
-/// Operations: 57 +, 100 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2328 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 114 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 947 +, 2342 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5338,13 +5338,13 @@ T segment_inverse_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -5393,7 +5393,7 @@ T segment_inverse_i4_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt
 /// Returns false where segment_inverse_i4_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 57 +, 100 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 71 +, 114 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5443,13 +5443,13 @@ bool segment_inverse_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -5483,8 +5483,8 @@ bool segment_inverse_i4_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
-/// Operations: 46 +, 66 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2264 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 60 +, 80 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 925 +, 2278 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5522,13 +5522,13 @@ T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(4, 4, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 4, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -5554,8 +5554,8 @@ T segment_inverse_i4_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
-/// Operations: 61 +, 106 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 354 +, 1049 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 368 +, 1063 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5605,13 +5605,13 @@ std::array<T, 3> segment_inverse_i4_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -5657,8 +5657,8 @@ std::array<T, 3> segment_inverse_i4_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
-/// Operations: 65 +, 122 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 360 +, 1071 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 136 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 374 +, 1085 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5709,13 +5709,13 @@ T segment_inverse_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + M_flat[4] * in.w[0];
     G_ap = t6;
@@ -5769,7 +5769,7 @@ T segment_inverse_i4_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt
 /// Returns false where segment_inverse_i4_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 65 +, 122 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 79 +, 136 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5819,13 +5819,13 @@ bool segment_inverse_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
     const T t6 = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] + M_flat[6] * in.w[2];
     G_ap = t6;
@@ -5861,8 +5861,8 @@ bool segment_inverse_i4_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
-/// Operations: 50 +, 78 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 345 +, 1020 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 64 +, 92 ×, 5 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 359 +, 1034 ×, 124 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5900,13 +5900,13 @@ T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(4, 4, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 4, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
@@ -5945,8 +5945,8 @@ T segment_inverse_i4_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
-/// Operations: 68 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 363 +, 1075 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 82 +, 139 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 377 +, 1089 ×, 125 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i4_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -5996,13 +5996,13 @@ std::array<T, 3> segment_inverse_i4_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[2] * M_flat[7] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -6052,8 +6052,8 @@ std::array<T, 3> segment_inverse_i4_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
-/// Operations: 74 +, 147 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 369 +, 1099 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
+/// Operations: 88 +, 161 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh (generic form).
+/// Longest path: 383 +, 1113 ×, 125 /, 3 sqrt, 0 atan, 3 log/asinh.
 template <class T>
 T segment_inverse_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6104,13 +6104,13 @@ T segment_inverse_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + in.w[3] * M_flat[3];
     const T t6 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
     G_ap = t6;
@@ -6171,7 +6171,7 @@ T segment_inverse_i4_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt
 /// Returns false where segment_inverse_i4_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 74 +, 147 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
+/// Operations: 88 +, 161 ×, 6 /, 2 sqrt, 1 atan, 1 log/asinh.
 template <class T>
 bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6221,13 +6221,13 @@ bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(4, 6, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(4, 6, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1];
     const T t6 = M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -6266,8 +6266,8 @@ bool segment_inverse_i4_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
-/// Operations: 39 +, 52 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 446 +, 880 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 53 +, 66 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 460 +, 894 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6306,13 +6306,13 @@ T segment_inverse_i5_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(5, 5, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 5, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -6332,8 +6332,8 @@ T segment_inverse_i5_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
-/// Operations: 48 +, 92 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1621 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 62 +, 106 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1635 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6384,13 +6384,13 @@ std::array<T, 3> segment_inverse_i5_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - t6 * ab_ap * M_flat[2] * in.w[0];
@@ -6439,8 +6439,8 @@ std::array<T, 3> segment_inverse_i5_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
-/// Operations: 48 +, 96 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1623 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 62 +, 110 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1637 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6492,13 +6492,13 @@ T segment_inverse_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -6554,7 +6554,7 @@ T segment_inverse_i5_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt
 /// Returns false where segment_inverse_i5_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 48 +, 96 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 62 +, 110 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6605,13 +6605,13 @@ bool segment_inverse_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -6648,8 +6648,8 @@ bool segment_inverse_i5_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
-/// Operations: 42 +, 62 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 1570 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 56 +, 76 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 691 +, 1584 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6688,13 +6688,13 @@ T segment_inverse_i5_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(5, 5, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 5, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -6717,8 +6717,8 @@ T segment_inverse_i5_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
-/// Operations: 53 +, 105 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 930 +, 2327 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 119 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 944 +, 2341 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6769,13 +6769,13 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(73) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -6827,8 +6827,8 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
-/// Operations: 56 +, 116 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 931 +, 2330 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 130 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 945 +, 2344 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6880,13 +6880,13 @@ T segment_inverse_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -6944,7 +6944,7 @@ T segment_inverse_i5_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt
 /// Returns false where segment_inverse_i5_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 56 +, 116 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 70 +, 130 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6995,13 +6995,13 @@ bool segment_inverse_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -7040,8 +7040,8 @@ bool segment_inverse_i5_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
-/// Operations: 45 +, 73 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 909 +, 2262 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 59 +, 87 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 923 +, 2276 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7080,13 +7080,13 @@ T segment_inverse_i5_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(5, 5, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 5, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -7112,8 +7112,8 @@ T segment_inverse_i5_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
-/// Operations: 60 +, 122 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1171 +, 3038 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 74 +, 136 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1185 +, 3052 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7164,13 +7164,13 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(73) / T(16)) * ab_ab));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] + in.w[2] * M_flat[6];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -7223,8 +7223,8 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
-/// Operations: 64 +, 139 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3042 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 78 +, 153 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3056 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7276,13 +7276,13 @@ T segment_inverse_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
     const T t6 = in.w[1] * M_flat[5] + in.w[2] * M_flat[6] + M_flat[4] * in.w[0];
     G_ap = t6;
@@ -7343,7 +7343,7 @@ T segment_inverse_i5_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt
 /// Returns false where segment_inverse_i5_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 64 +, 139 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 78 +, 153 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7394,13 +7394,13 @@ bool segment_inverse_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(73) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
     const T t6 = M_flat[4] * in.w[0] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -7442,8 +7442,8 @@ bool segment_inverse_i5_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt
-/// Operations: 50 +, 85 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1142 +, 2956 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 99 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1156 +, 2970 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7482,13 +7482,13 @@ T segment_inverse_i5_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(5, 5, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 5, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -7515,8 +7515,8 @@ T segment_inverse_i5_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt
-/// Operations: 67 +, 142 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 361 +, 1094 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 156 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 375 +, 1108 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i5_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7567,13 +7567,13 @@ std::array<T, 3> segment_inverse_i5_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[8] * in.w[3] + in.w[0] * M_flat[5] + in.w[1] * M_flat[6] + M_flat[7] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -7637,8 +7637,8 @@ std::array<T, 3> segment_inverse_i5_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt
-/// Operations: 74 +, 164 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 368 +, 1119 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 88 +, 178 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 382 +, 1133 ×, 125 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7690,13 +7690,13 @@ T segment_inverse_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3];
     const T t6 = M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8];
     G_ap = t6;
@@ -7769,7 +7769,7 @@ T segment_inverse_i5_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt
 /// Returns false where segment_inverse_i5_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 74 +, 164 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 88 +, 178 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7820,13 +7820,13 @@ bool segment_inverse_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(5, 7, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(5, 7, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1];
     const T t6 = M_flat[7] * in.w[2] + in.w[0] * M_flat[5] + M_flat[6] * in.w[1] + in.w[3] * M_flat[8];
     G_ap = t6;
@@ -7870,8 +7870,8 @@ bool segment_inverse_i5_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
-/// Operations: 42 +, 61 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 885 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 56 +, 75 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 462 +, 899 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7909,13 +7909,13 @@ T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(6, 6, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 6, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -7940,8 +7940,8 @@ T segment_inverse_i6_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
-/// Operations: 51 +, 89 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1625 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 103 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1639 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7991,13 +7991,13 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(6) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = M_flat[3] * in.w[0] - ab_ap * M_flat[2] * in.w[0] * t6;
@@ -8041,8 +8041,8 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
-/// Operations: 51 +, 93 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1627 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 107 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1641 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8093,13 +8093,13 @@ T segment_inverse_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -8150,7 +8150,7 @@ T segment_inverse_i6_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt
 /// Returns false where segment_inverse_i6_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 51 +, 93 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 65 +, 107 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8200,13 +8200,13 @@ bool segment_inverse_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -8240,8 +8240,8 @@ bool segment_inverse_i6_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
-/// Operations: 45 +, 67 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1575 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 59 +, 81 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 693 +, 1589 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8279,13 +8279,13 @@ T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(6, 6, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 6, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -8311,8 +8311,8 @@ T segment_inverse_i6_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
-/// Operations: 56 +, 100 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2331 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 114 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 946 +, 2345 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8362,13 +8362,13 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -8415,8 +8415,8 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
-/// Operations: 59 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 947 +, 2348 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8467,13 +8467,13 @@ T segment_inverse_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(6) * ab_ab));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
@@ -8526,7 +8526,7 @@ T segment_inverse_i6_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt
 /// Returns false where segment_inverse_i6_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 59 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 73 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8576,13 +8576,13 @@ bool segment_inverse_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(6) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -8618,8 +8618,8 @@ bool segment_inverse_i6_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
-/// Operations: 48 +, 78 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2267 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 62 +, 92 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 925 +, 2281 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8657,13 +8657,13 @@ T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(15) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(6, 6, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 6, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -8692,8 +8692,8 @@ T segment_inverse_i6_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
-/// Operations: 63 +, 117 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3042 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 131 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3056 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8743,13 +8743,13 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[5] * in.w[1] + M_flat[4] * in.w[0] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -8797,8 +8797,8 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
-/// Operations: 67 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3046 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 148 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1189 +, 3060 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8849,13 +8849,13 @@ T segment_inverse_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[4] + M_flat[5] * in.w[1] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -8911,7 +8911,7 @@ T segment_inverse_i6_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt
 /// Returns false where segment_inverse_i6_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 81 +, 148 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8961,13 +8961,13 @@ bool segment_inverse_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -9006,8 +9006,8 @@ bool segment_inverse_i6_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
-/// Operations: 53 +, 90 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2961 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 104 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1158 +, 2975 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9045,13 +9045,13 @@ T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(15) / T(4)) * ab_ab));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(6, 6, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 6, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -9081,8 +9081,8 @@ T segment_inverse_i6_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
-/// Operations: 70 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3757 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 84 +, 151 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1430 +, 3771 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9132,13 +9132,13 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(6) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + in.w[3] * M_flat[8] + in.w[2] * M_flat[7];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -9189,8 +9189,8 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
-/// Operations: 77 +, 159 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3762 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 91 +, 173 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3776 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9241,13 +9241,13 @@ T segment_inverse_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + in.w[3] * M_flat[3];
     const T t6 = M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -9305,7 +9305,7 @@ T segment_inverse_i6_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt
 /// Returns false where segment_inverse_i6_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 77 +, 159 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 91 +, 173 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9355,13 +9355,13 @@ bool segment_inverse_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(6, 8, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(6, 8, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -9402,8 +9402,8 @@ bool segment_inverse_i6_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
-/// Operations: 41 +, 67 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 446 +, 883 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 55 +, 81 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 460 +, 897 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9442,13 +9442,13 @@ T segment_inverse_i7_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(7, 7, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 7, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -9472,8 +9472,8 @@ T segment_inverse_i7_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
-/// Operations: 50 +, 105 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1626 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 119 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1640 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9524,13 +9524,13 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = M_flat[3] * in.w[0] - t6 * ab_ap * M_flat[2] * in.w[0];
@@ -9585,8 +9585,8 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
-/// Operations: 50 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1628 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 123 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1642 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9638,13 +9638,13 @@ T segment_inverse_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(123) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -9706,7 +9706,7 @@ T segment_inverse_i7_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt
 /// Returns false where segment_inverse_i7_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 50 +, 109 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 64 +, 123 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9757,13 +9757,13 @@ bool segment_inverse_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(123) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -9804,8 +9804,8 @@ bool segment_inverse_i7_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
-/// Operations: 44 +, 75 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 1573 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 58 +, 89 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 691 +, 1587 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9844,13 +9844,13 @@ T segment_inverse_i7_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(73) / T(16)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(7, 7, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 7, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -9875,8 +9875,8 @@ T segment_inverse_i7_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
-/// Operations: 55 +, 118 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 930 +, 2332 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 132 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 944 +, 2346 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9927,13 +9927,13 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -9991,8 +9991,8 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
-/// Operations: 58 +, 131 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 931 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 145 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 945 +, 2349 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10044,13 +10044,13 @@ T segment_inverse_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -10114,7 +10114,7 @@ T segment_inverse_i7_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt
 /// Returns false where segment_inverse_i7_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 58 +, 131 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 72 +, 145 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10165,13 +10165,13 @@ bool segment_inverse_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -10214,8 +10214,8 @@ bool segment_inverse_i7_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
-/// Operations: 47 +, 86 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 909 +, 2265 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 61 +, 100 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 923 +, 2279 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10254,13 +10254,13 @@ T segment_inverse_i7_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(73) / T(16)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(7, 7, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 7, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -10288,8 +10288,8 @@ T segment_inverse_i7_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
-/// Operations: 62 +, 138 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1171 +, 3043 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 76 +, 152 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1185 +, 3057 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10340,13 +10340,13 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[5] * in.w[1] + M_flat[4] * in.w[0] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -10405,8 +10405,8 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
-/// Operations: 66 +, 155 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3047 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 80 +, 169 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3061 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10458,13 +10458,13 @@ T segment_inverse_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(123) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[0] + in.w[2] * M_flat[6] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -10531,7 +10531,7 @@ T segment_inverse_i7_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt
 /// Returns false where segment_inverse_i7_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 66 +, 155 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 80 +, 169 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10582,13 +10582,13 @@ bool segment_inverse_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(123) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
     const T t6 = in.w[2] * M_flat[6] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -10634,8 +10634,8 @@ bool segment_inverse_i7_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
-/// Operations: 52 +, 100 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1142 +, 2959 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 114 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1156 +, 2973 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10674,13 +10674,13 @@ T segment_inverse_i7_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(73) / T(16)) * ab_ab - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 77/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(7, 7, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 7, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -10709,8 +10709,8 @@ T segment_inverse_i7_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
-/// Operations: 69 +, 159 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1414 +, 3758 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 173 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1428 +, 3772 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i7_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10761,13 +10761,13 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7] + M_flat[8] * in.w[3];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -10829,8 +10829,8 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
-/// Operations: 76 +, 183 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3763 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 90 +, 197 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1431 +, 3777 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -10882,13 +10882,13 @@ T segment_inverse_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3];
     const T t6 = M_flat[6] * in.w[1] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -10957,7 +10957,7 @@ T segment_inverse_i7_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt
 /// Returns false where segment_inverse_i7_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 76 +, 183 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 90 +, 197 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11008,13 +11008,13 @@ bool segment_inverse_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(7, 9, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(7, 9, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + in.w[0] * M_flat[0];
     const T t6 = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7] + M_flat[8] * in.w[3];
     G_ap = t6;
@@ -11062,8 +11062,8 @@ bool segment_inverse_i7_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
-/// Operations: 44 +, 70 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 888 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 58 +, 84 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 462 +, 902 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11101,13 +11101,13 @@ T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(8, 8, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 8, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -11134,8 +11134,8 @@ T segment_inverse_i8_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
-/// Operations: 53 +, 98 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1628 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 112 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1642 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11185,13 +11185,13 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
     G_E = M_flat[3] * in.w[0] - in.w[0] * t6 * ab_ap * M_flat[2];
@@ -11237,8 +11237,8 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
-/// Operations: 53 +, 102 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1630 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 116 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1644 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11289,13 +11289,13 @@ T segment_inverse_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -11348,7 +11348,7 @@ T segment_inverse_i8_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt
 /// Returns false where segment_inverse_i8_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 53 +, 102 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 67 +, 116 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11398,13 +11398,13 @@ bool segment_inverse_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(153) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -11440,8 +11440,8 @@ bool segment_inverse_i8_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
-/// Operations: 47 +, 76 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1578 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 61 +, 90 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 693 +, 1592 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11479,13 +11479,13 @@ T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(6) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(8, 8, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 8, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -11513,8 +11513,8 @@ T segment_inverse_i8_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
-/// Operations: 58 +, 109 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2334 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 123 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 946 +, 2348 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11564,13 +11564,13 @@ std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(153) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -11619,8 +11619,8 @@ std::array<T, 3> segment_inverse_i8_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
-/// Operations: 61 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2337 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 947 +, 2351 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11671,13 +11671,13 @@ T segment_inverse_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(153) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -11732,7 +11732,7 @@ T segment_inverse_i8_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt
 /// Returns false where segment_inverse_i8_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 61 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 75 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11782,13 +11782,13 @@ bool segment_inverse_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -11826,8 +11826,8 @@ bool segment_inverse_i8_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
-/// Operations: 50 +, 87 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2270 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 101 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 925 +, 2284 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11865,13 +11865,13 @@ T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(8, 8, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 8, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -11902,8 +11902,8 @@ T segment_inverse_i8_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
-/// Operations: 65 +, 126 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3045 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 140 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3059 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -11953,13 +11953,13 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -12009,8 +12009,8 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
-/// Operations: 69 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3049 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 157 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1189 +, 3063 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12061,13 +12061,13 @@ T segment_inverse_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -12125,7 +12125,7 @@ T segment_inverse_i8_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt
 /// Returns false where segment_inverse_i8_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 69 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 83 +, 157 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12175,13 +12175,13 @@ bool segment_inverse_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[6] * in.w[2] + in.w[0] * M_flat[4] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -12222,8 +12222,8 @@ bool segment_inverse_i8_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
-/// Operations: 55 +, 101 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2964 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 115 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1158 +, 2978 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12261,13 +12261,13 @@ T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(6) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(8, 8, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 8, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -12299,8 +12299,8 @@ T segment_inverse_i8_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
-/// Operations: 72 +, 146 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3760 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 86 +, 160 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1430 +, 3774 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12350,13 +12350,13 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -12409,8 +12409,8 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
-/// Operations: 79 +, 170 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3765 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 93 +, 184 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3779 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12461,13 +12461,13 @@ T segment_inverse_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(153) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3];
     const T t6 = M_flat[6] * in.w[1] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -12527,7 +12527,7 @@ T segment_inverse_i8_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt
 /// Returns false where segment_inverse_i8_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 79 +, 170 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 93 +, 184 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12577,13 +12577,13 @@ bool segment_inverse_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(8, 10, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(8, 10, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
     const T t6 = M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + in.w[2] * M_flat[7];
     G_ap = t6;
@@ -12626,8 +12626,8 @@ bool segment_inverse_i8_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
-/// Operations: 43 +, 78 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 446 +, 885 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 57 +, 92 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 460 +, 899 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12666,13 +12666,13 @@ T segment_inverse_i9_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(9, 9, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 9, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -12698,8 +12698,8 @@ T segment_inverse_i9_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
-/// Operations: 52 +, 116 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1629 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 130 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1643 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12750,13 +12750,13 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - in.w[0] * t6 * ab_ap * M_flat[2];
@@ -12813,8 +12813,8 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
-/// Operations: 52 +, 120 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1631 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 134 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1645 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12866,13 +12866,13 @@ T segment_inverse_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(93) / T(8)) * ab_ab));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -12936,7 +12936,7 @@ T segment_inverse_i9_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt
 /// Returns false where segment_inverse_i9_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 52 +, 120 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 66 +, 134 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -12987,13 +12987,13 @@ bool segment_inverse_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -13036,8 +13036,8 @@ bool segment_inverse_i9_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
-/// Operations: 46 +, 86 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 1575 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 60 +, 100 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 691 +, 1589 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13076,13 +13076,13 @@ T segment_inverse_i9_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(9, 9, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 9, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -13109,8 +13109,8 @@ T segment_inverse_i9_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
-/// Operations: 57 +, 129 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 930 +, 2335 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 143 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 944 +, 2349 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13161,13 +13161,13 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -13227,8 +13227,8 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
-/// Operations: 60 +, 142 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 931 +, 2338 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 74 +, 156 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 945 +, 2352 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13280,13 +13280,13 @@ T segment_inverse_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(93) / T(8)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
     G_ap = t6;
@@ -13352,7 +13352,7 @@ T segment_inverse_i9_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt
 /// Returns false where segment_inverse_i9_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 60 +, 142 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 74 +, 156 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13403,13 +13403,13 @@ bool segment_inverse_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -13454,8 +13454,8 @@ bool segment_inverse_i9_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
-/// Operations: 49 +, 98 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 909 +, 2267 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 63 +, 112 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 923 +, 2281 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13494,13 +13494,13 @@ T segment_inverse_i9_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(123) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(9, 9, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 9, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -13530,8 +13530,8 @@ T segment_inverse_i9_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
-/// Operations: 64 +, 148 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1171 +, 3046 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 78 +, 162 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1185 +, 3060 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13582,13 +13582,13 @@ std::array<T, 3> segment_inverse_i9_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[5] * in.w[1] + M_flat[4] * in.w[0] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -13649,8 +13649,8 @@ std::array<T, 3> segment_inverse_i9_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
-/// Operations: 68 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3050 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 82 +, 180 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3064 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13702,13 +13702,13 @@ T segment_inverse_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = in.w[2] * M_flat[6] + in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
     G_ap = t6;
@@ -13777,7 +13777,7 @@ T segment_inverse_i9_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt
 /// Returns false where segment_inverse_i9_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 68 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 82 +, 180 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13828,13 +13828,13 @@ bool segment_inverse_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[2] * M_flat[6] + in.w[0] * M_flat[4] + M_flat[5] * in.w[1];
     G_ap = t6;
@@ -13882,8 +13882,8 @@ bool segment_inverse_i9_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
-/// Operations: 54 +, 115 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1142 +, 2961 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 129 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1156 +, 2975 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13922,13 +13922,13 @@ T segment_inverse_i9_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(123) / T(16)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 127/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(9, 9, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 9, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -13959,8 +13959,8 @@ T segment_inverse_i9_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
-/// Operations: 71 +, 168 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1414 +, 3761 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 182 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1428 +, 3775 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i9_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14011,13 +14011,13 @@ std::array<T, 3> segment_inverse_i9_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(93) / T(8)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[5] * in.w[0] + in.w[2] * M_flat[7] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -14081,8 +14081,8 @@ std::array<T, 3> segment_inverse_i9_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
-/// Operations: 78 +, 195 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 92 +, 209 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1431 +, 3780 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14134,13 +14134,13 @@ T segment_inverse_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[3] * in.w[3] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
     const T t6 = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3];
     G_ap = t6;
@@ -14211,7 +14211,7 @@ T segment_inverse_i9_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& 
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt
 /// Returns false where segment_inverse_i9_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 78 +, 195 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 92 +, 209 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14262,13 +14262,13 @@ bool segment_inverse_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(93) / T(8)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(9, 11, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(9, 11, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1];
     const T t6 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
     G_ap = t6;
@@ -14318,8 +14318,8 @@ bool segment_inverse_i9_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, s
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
-/// Operations: 46 +, 79 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 890 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 60 +, 93 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 462 +, 904 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14357,13 +14357,13 @@ T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(10, 10, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 10, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -14392,8 +14392,8 @@ T segment_inverse_i10_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
-/// Operations: 55 +, 107 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1633 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 121 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1647 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14443,13 +14443,13 @@ std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - in.w[0] * t6 * ab_ap * M_flat[2];
@@ -14499,8 +14499,8 @@ std::array<T, 3> segment_inverse_i10_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
-/// Operations: 55 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1635 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1649 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14551,13 +14551,13 @@ T segment_inverse_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(221) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -14614,7 +14614,7 @@ T segment_inverse_i10_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt
 /// Returns false where segment_inverse_i10_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 55 +, 111 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 69 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14664,13 +14664,13 @@ bool segment_inverse_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -14708,8 +14708,8 @@ bool segment_inverse_i10_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
-/// Operations: 49 +, 85 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1580 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 63 +, 99 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 693 +, 1594 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14747,13 +14747,13 @@ T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(153) / T(16)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(10, 10, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 10, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -14783,8 +14783,8 @@ T segment_inverse_i10_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
-/// Operations: 60 +, 118 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2339 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 74 +, 132 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 946 +, 2353 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14834,13 +14834,13 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(221) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -14893,8 +14893,8 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
-/// Operations: 63 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2342 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 947 +, 2356 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14945,13 +14945,13 @@ T segment_inverse_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -15010,7 +15010,7 @@ T segment_inverse_i10_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt
 /// Returns false where segment_inverse_i10_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 63 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 77 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15060,13 +15060,13 @@ bool segment_inverse_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -15106,8 +15106,8 @@ bool segment_inverse_i10_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
-/// Operations: 52 +, 96 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2272 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 110 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 925 +, 2286 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15145,13 +15145,13 @@ T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(153) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(10, 10, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 10, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -15184,8 +15184,8 @@ T segment_inverse_i10_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
-/// Operations: 67 +, 136 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3050 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 150 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3064 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15235,13 +15235,13 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(221) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[5] * in.w[1] + M_flat[6] * in.w[2] + in.w[0] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -15295,8 +15295,8 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
-/// Operations: 71 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3054 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 167 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1189 +, 3068 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15347,13 +15347,13 @@ T segment_inverse_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
     const T t6 = M_flat[4] * in.w[0] + in.w[1] * M_flat[5] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -15415,7 +15415,7 @@ T segment_inverse_i10_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt
 /// Returns false where segment_inverse_i10_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 71 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 85 +, 167 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15465,13 +15465,13 @@ bool segment_inverse_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(221) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[1] * M_flat[5] + M_flat[4] * in.w[0] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -15514,8 +15514,8 @@ bool segment_inverse_i10_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
-/// Operations: 57 +, 110 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2966 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 124 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1158 +, 2980 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15553,13 +15553,13 @@ T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(153) / T(16)) * ab_ab));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 157/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(10, 10, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 10, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -15593,8 +15593,8 @@ T segment_inverse_i10_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
-/// Operations: 74 +, 157 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3765 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 88 +, 171 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1430 +, 3779 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15644,13 +15644,13 @@ std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[8] * in.w[3] + in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -15707,8 +15707,8 @@ std::array<T, 3> segment_inverse_i10_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
-/// Operations: 81 +, 181 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3770 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 95 +, 195 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3784 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15759,13 +15759,13 @@ T segment_inverse_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0];
     const T t6 = M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + in.w[2] * M_flat[7];
     G_ap = t6;
@@ -15829,7 +15829,7 @@ T segment_inverse_i10_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt
 /// Returns false where segment_inverse_i10_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 81 +, 181 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 95 +, 195 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15879,13 +15879,13 @@ bool segment_inverse_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(221) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(10, 12, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(10, 12, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -15930,8 +15930,8 @@ bool segment_inverse_i10_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
-/// Operations: 45 +, 89 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 446 +, 888 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 59 +, 103 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 460 +, 902 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15970,13 +15970,13 @@ T segment_inverse_i11_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(11, 11, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 11, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -16004,8 +16004,8 @@ T segment_inverse_i11_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
-/// Operations: 54 +, 129 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1634 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 143 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1648 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16056,13 +16056,13 @@ std::array<T, 3> segment_inverse_i11_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - M_flat[2] * in.w[0] * t6 * ab_ap;
@@ -16125,8 +16125,8 @@ std::array<T, 3> segment_inverse_i11_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
-/// Operations: 54 +, 133 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1636 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 147 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1650 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16178,13 +16178,13 @@ T segment_inverse_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -16254,7 +16254,7 @@ T segment_inverse_i11_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt
 /// Returns false where segment_inverse_i11_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 54 +, 133 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 68 +, 147 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16305,13 +16305,13 @@ bool segment_inverse_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(261) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -16358,8 +16358,8 @@ bool segment_inverse_i11_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
-/// Operations: 48 +, 97 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 1578 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 62 +, 111 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 691 +, 1592 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16398,13 +16398,13 @@ T segment_inverse_i11_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(11, 11, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 11, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -16433,8 +16433,8 @@ T segment_inverse_i11_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
-/// Operations: 59 +, 142 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 930 +, 2340 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 156 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 944 +, 2354 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16485,13 +16485,13 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -16557,8 +16557,8 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
-/// Operations: 62 +, 155 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 931 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 76 +, 169 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 945 +, 2357 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16610,13 +16610,13 @@ T segment_inverse_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -16688,7 +16688,7 @@ T segment_inverse_i11_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt
 /// Returns false where segment_inverse_i11_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 62 +, 155 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 76 +, 169 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16739,13 +16739,13 @@ bool segment_inverse_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(261) / T(16)) * ab_ab));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
@@ -16794,8 +16794,8 @@ bool segment_inverse_i11_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
-/// Operations: 51 +, 108 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 909 +, 2270 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 122 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 923 +, 2284 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16834,13 +16834,13 @@ T segment_inverse_i11_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(11, 11, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 11, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -16872,8 +16872,8 @@ T segment_inverse_i11_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
-/// Operations: 66 +, 162 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1171 +, 3051 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 80 +, 176 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1185 +, 3065 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16924,13 +16924,13 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[0] * M_flat[4] + in.w[1] * M_flat[5] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -16997,8 +16997,8 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
-/// Operations: 70 +, 179 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3055 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 84 +, 193 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3069 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17050,13 +17050,13 @@ T segment_inverse_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(261) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
     const T t6 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -17131,7 +17131,7 @@ T segment_inverse_i11_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt
 /// Returns false where segment_inverse_i11_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 70 +, 179 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 84 +, 193 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17182,13 +17182,13 @@ bool segment_inverse_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
     const T t6 = in.w[1] * M_flat[5] + M_flat[6] * in.w[2] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -17240,8 +17240,8 @@ bool segment_inverse_i11_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
-/// Operations: 56 +, 124 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1142 +, 2964 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 138 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1156 +, 2978 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17280,13 +17280,13 @@ T segment_inverse_i11_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(93) / T(8)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 95/8 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(11, 11, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 11, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[3] * M_flat[3] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -17319,8 +17319,8 @@ T segment_inverse_i11_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
-/// Operations: 73 +, 183 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1414 +, 3766 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 87 +, 197 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1428 +, 3780 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i11_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17371,13 +17371,13 @@ std::array<T, 3> segment_inverse_i11_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[7] * in.w[2] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1] + in.w[0] * M_flat[5];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -17447,8 +17447,8 @@ std::array<T, 3> segment_inverse_i11_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
-/// Operations: 80 +, 209 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3771 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 94 +, 223 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1431 +, 3785 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17500,13 +17500,13 @@ T segment_inverse_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(261) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[1] * in.w[1] + M_flat[2] * in.w[2];
     const T t6 = M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + in.w[2] * M_flat[7];
     G_ap = t6;
@@ -17583,7 +17583,7 @@ T segment_inverse_i11_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt
 /// Returns false where segment_inverse_i11_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 80 +, 209 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 94 +, 223 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17634,13 +17634,13 @@ bool segment_inverse_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(261) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(11, 13, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(11, 13, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[3] * in.w[3];
     const T t6 = in.w[1] * M_flat[6] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2];
     G_ap = t6;
@@ -17694,8 +17694,8 @@ bool segment_inverse_i11_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
-/// Operations: 48 +, 88 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 893 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 62 +, 102 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 462 +, 907 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17733,13 +17733,13 @@ T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(221) / T(16)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(12, 12, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 12, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -17770,8 +17770,8 @@ T segment_inverse_i12_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
-/// Operations: 57 +, 116 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1636 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 130 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1650 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17821,13 +17821,13 @@ std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(303) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = M_flat[3] * in.w[0] - ab_ap * M_flat[2] * in.w[0] * t6;
@@ -17879,8 +17879,8 @@ std::array<T, 3> segment_inverse_i12_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
-/// Operations: 57 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1638 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 71 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1652 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -17931,13 +17931,13 @@ T segment_inverse_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -17996,7 +17996,7 @@ T segment_inverse_i12_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt
 /// Returns false where segment_inverse_i12_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 57 +, 120 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 71 +, 134 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18046,13 +18046,13 @@ bool segment_inverse_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -18092,8 +18092,8 @@ bool segment_inverse_i12_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
-/// Operations: 51 +, 94 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1583 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 65 +, 108 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 693 +, 1597 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18131,13 +18131,13 @@ T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(12, 12, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 12, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -18169,8 +18169,8 @@ T segment_inverse_i12_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
-/// Operations: 62 +, 127 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2342 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 76 +, 141 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 946 +, 2356 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18220,13 +18220,13 @@ std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -18281,8 +18281,8 @@ std::array<T, 3> segment_inverse_i12_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
-/// Operations: 65 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2345 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 79 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 947 +, 2359 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18333,13 +18333,13 @@ T segment_inverse_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(303) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[3] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -18400,7 +18400,7 @@ T segment_inverse_i12_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt
 /// Returns false where segment_inverse_i12_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 65 +, 138 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 79 +, 152 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18450,13 +18450,13 @@ bool segment_inverse_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
@@ -18498,8 +18498,8 @@ bool segment_inverse_i12_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
-/// Operations: 54 +, 106 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2275 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 68 +, 120 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 925 +, 2289 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18537,13 +18537,13 @@ T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(12, 12, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 12, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -18578,8 +18578,8 @@ T segment_inverse_i12_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
-/// Operations: 69 +, 144 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3053 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 158 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3067 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18629,13 +18629,13 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(303) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + M_flat[6] * in.w[2] + M_flat[5] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -18691,8 +18691,8 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
-/// Operations: 73 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3057 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 87 +, 176 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1189 +, 3071 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18743,13 +18743,13 @@ T segment_inverse_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(303) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1] + in.w[2] * M_flat[2];
     const T t6 = in.w[2] * M_flat[6] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -18813,7 +18813,7 @@ T segment_inverse_i12_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt
 /// Returns false where segment_inverse_i12_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 73 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 87 +, 176 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18863,13 +18863,13 @@ bool segment_inverse_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(303) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[1] * M_flat[5] + M_flat[6] * in.w[2] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -18914,8 +18914,8 @@ bool segment_inverse_i12_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
-/// Operations: 59 +, 121 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2969 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 135 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1158 +, 2983 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -18953,13 +18953,13 @@ T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(221) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 225/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(12, 12, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 12, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -18995,8 +18995,8 @@ T segment_inverse_i12_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
-/// Operations: 76 +, 164 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3768 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 90 +, 178 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1430 +, 3782 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19046,13 +19046,13 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + in.w[1] * M_flat[6];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -19111,8 +19111,8 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
-/// Operations: 83 +, 189 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 97 +, 203 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19163,13 +19163,13 @@ T segment_inverse_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[3] * in.w[3] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = M_flat[6] * in.w[1] + M_flat[7] * in.w[2] + M_flat[8] * in.w[3] + in.w[0] * M_flat[5];
     G_ap = t6;
@@ -19235,7 +19235,7 @@ T segment_inverse_i12_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt
 /// Returns false where segment_inverse_i12_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 83 +, 189 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 97 +, 203 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19285,13 +19285,13 @@ bool segment_inverse_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(303) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(12, 14, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(12, 14, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[3] * M_flat[3] + in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3] + in.w[1] * M_flat[6];
     G_ap = t6;
@@ -19338,8 +19338,8 @@ bool segment_inverse_i12_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
-/// Operations: 47 +, 100 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 446 +, 890 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 61 +, 114 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 460 +, 904 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19378,13 +19378,13 @@ T segment_inverse_i13_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(13, 13, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 13, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -19414,8 +19414,8 @@ T segment_inverse_i13_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
-/// Operations: 56 +, 140 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1637 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 154 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1651 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19466,13 +19466,13 @@ std::array<T, 3> segment_inverse_i13_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - M_flat[2] * in.w[0] * t6 * ab_ap;
@@ -19537,8 +19537,8 @@ std::array<T, 3> segment_inverse_i13_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
-/// Operations: 56 +, 144 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1639 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 158 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1653 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19590,13 +19590,13 @@ T segment_inverse_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -19668,7 +19668,7 @@ T segment_inverse_i13_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt
 /// Returns false where segment_inverse_i13_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 56 +, 144 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 70 +, 158 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19719,13 +19719,13 @@ bool segment_inverse_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -19774,8 +19774,8 @@ bool segment_inverse_i13_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
-/// Operations: 50 +, 108 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 1580 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 122 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 691 +, 1594 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19814,13 +19814,13 @@ T segment_inverse_i13_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(13, 13, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 13, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -19851,8 +19851,8 @@ T segment_inverse_i13_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
-/// Operations: 61 +, 153 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 930 +, 2343 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 167 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 944 +, 2357 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -19903,13 +19903,13 @@ std::array<T, 3> segment_inverse_i13_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(87) / T(4)) * ab_ab));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -19977,8 +19977,8 @@ std::array<T, 3> segment_inverse_i13_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
-/// Operations: 64 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 931 +, 2346 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 78 +, 180 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 945 +, 2360 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20030,13 +20030,13 @@ T segment_inverse_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(87) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -20110,7 +20110,7 @@ T segment_inverse_i13_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt
 /// Returns false where segment_inverse_i13_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 64 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 78 +, 180 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20161,13 +20161,13 @@ bool segment_inverse_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[0] * M_flat[3] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -20218,8 +20218,8 @@ bool segment_inverse_i13_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
-/// Operations: 53 +, 120 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 909 +, 2272 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 134 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 923 +, 2286 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20258,13 +20258,13 @@ T segment_inverse_i13_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(13, 13, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 13, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -20298,8 +20298,8 @@ T segment_inverse_i13_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
-/// Operations: 68 +, 173 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1171 +, 3054 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 82 +, 187 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1185 +, 3068 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20350,13 +20350,13 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + M_flat[6] * in.w[2] + M_flat[5] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -20425,8 +20425,8 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
-/// Operations: 72 +, 191 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 86 +, 205 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3072 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20478,13 +20478,13 @@ T segment_inverse_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = in.w[0] * M_flat[4] + M_flat[6] * in.w[2] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -20561,7 +20561,7 @@ T segment_inverse_i13_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt
 /// Returns false where segment_inverse_i13_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 72 +, 191 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 86 +, 205 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20612,13 +20612,13 @@ bool segment_inverse_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[1] * M_flat[1];
     const T t6 = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -20672,8 +20672,8 @@ bool segment_inverse_i13_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
-/// Operations: 58 +, 137 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1142 +, 2966 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 151 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1156 +, 2980 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20712,13 +20712,13 @@ T segment_inverse_i13_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(261) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 265/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(13, 13, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 13, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -20753,8 +20753,8 @@ T segment_inverse_i13_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
-/// Operations: 75 +, 196 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1414 +, 3769 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 89 +, 210 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1428 +, 3783 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i13_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20805,13 +20805,13 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + in.w[1] * M_flat[6] + M_flat[5] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -20883,8 +20883,8 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
-/// Operations: 82 +, 223 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3774 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 96 +, 237 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1431 +, 3788 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -20936,13 +20936,13 @@ T segment_inverse_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + in.w[1] * M_flat[1] + M_flat[2] * in.w[2];
     const T t6 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
     G_ap = t6;
@@ -21021,7 +21021,7 @@ T segment_inverse_i13_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt
 /// Returns false where segment_inverse_i13_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 82 +, 223 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 96 +, 237 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21072,13 +21072,13 @@ bool segment_inverse_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(13, 15, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(13, 15, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3];
     const T t6 = M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0] + M_flat[8] * in.w[3];
     G_ap = t6;
@@ -21134,8 +21134,8 @@ bool segment_inverse_i13_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
-/// Operations: 50 +, 97 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 895 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 64 +, 111 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 462 +, 909 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21173,13 +21173,13 @@ T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(303) / T(16)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(14, 14, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 14, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -21212,8 +21212,8 @@ T segment_inverse_i14_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
-/// Operations: 59 +, 125 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1641 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 139 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1655 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21263,13 +21263,13 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(99) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - ab_ap * M_flat[2] * in.w[0] * t6;
@@ -21325,8 +21325,8 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
-/// Operations: 59 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1643 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 73 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1657 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21377,13 +21377,13 @@ T segment_inverse_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -21446,7 +21446,7 @@ T segment_inverse_i14_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt
 /// Returns false where segment_inverse_i14_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 59 +, 129 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 73 +, 143 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21496,13 +21496,13 @@ bool segment_inverse_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -21544,8 +21544,8 @@ bool segment_inverse_i14_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
-/// Operations: 53 +, 103 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1585 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 67 +, 117 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 693 +, 1599 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21583,13 +21583,13 @@ T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(14, 14, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 14, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -21623,8 +21623,8 @@ T segment_inverse_i14_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
-/// Operations: 64 +, 136 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2347 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 78 +, 150 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 946 +, 2361 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21674,13 +21674,13 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[3] * in.w[0] + M_flat[4] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -21739,8 +21739,8 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
-/// Operations: 67 +, 147 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2350 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 81 +, 161 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 947 +, 2364 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21791,13 +21791,13 @@ T segment_inverse_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[1] * M_flat[1];
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -21862,7 +21862,7 @@ T segment_inverse_i14_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt
 /// Returns false where segment_inverse_i14_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 67 +, 147 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 81 +, 161 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21912,13 +21912,13 @@ bool segment_inverse_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(99) / T(4)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -21962,8 +21962,8 @@ bool segment_inverse_i14_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
-/// Operations: 56 +, 114 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2277 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 70 +, 128 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 925 +, 2291 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22001,13 +22001,13 @@ T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(14, 14, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 14, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + in.w[1] * M_flat[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -22044,8 +22044,8 @@ T segment_inverse_i14_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
-/// Operations: 71 +, 153 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 85 +, 167 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3072 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22095,13 +22095,13 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[1] * M_flat[5] + M_flat[6] * in.w[2] + in.w[0] * M_flat[4];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -22161,8 +22161,8 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
-/// Operations: 75 +, 170 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 89 +, 184 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1189 +, 3076 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22213,13 +22213,13 @@ T segment_inverse_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
     const T t6 = in.w[2] * M_flat[6] + M_flat[5] * in.w[1] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -22287,7 +22287,7 @@ T segment_inverse_i14_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt
 /// Returns false where segment_inverse_i14_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 75 +, 170 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 89 +, 184 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22337,13 +22337,13 @@ bool segment_inverse_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + in.w[2] * M_flat[2];
     const T t6 = M_flat[6] * in.w[2] + in.w[0] * M_flat[4] + in.w[1] * M_flat[5];
     G_ap = t6;
@@ -22390,8 +22390,8 @@ bool segment_inverse_i14_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
-/// Operations: 61 +, 128 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2971 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 142 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1158 +, 2985 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22429,13 +22429,13 @@ T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(303) / T(16)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 307/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(14, 14, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 14, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + in.w[3] * M_flat[3];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -22473,8 +22473,8 @@ T segment_inverse_i14_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
-/// Operations: 78 +, 173 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 92 +, 187 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1430 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22524,13 +22524,13 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -22593,8 +22593,8 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
-/// Operations: 85 +, 197 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3778 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 99 +, 211 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3792 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22645,13 +22645,13 @@ T segment_inverse_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + M_flat[1] * in.w[1];
     const T t6 = M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1];
     G_ap = t6;
@@ -22721,7 +22721,7 @@ T segment_inverse_i14_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt
 /// Returns false where segment_inverse_i14_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 85 +, 197 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 99 +, 211 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22771,13 +22771,13 @@ bool segment_inverse_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(14, 16, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(14, 16, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2] + in.w[3] * M_flat[3];
     const T t6 = M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[7] * in.w[2];
     G_ap = t6;
@@ -22826,8 +22826,8 @@ bool segment_inverse_i14_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
-/// Operations: 49 +, 111 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 446 +, 893 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 63 +, 125 ×, 3 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 460 +, 907 ×, 122 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22866,13 +22866,13 @@ T segment_inverse_i15_w0_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(15, 15, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 15, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -22904,8 +22904,8 @@ T segment_inverse_i15_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
-/// Operations: 58 +, 153 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1641 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 167 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1655 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22956,13 +22956,13 @@ std::array<T, 3> segment_inverse_i15_w0_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(28) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
     G_E = in.w[0] * M_flat[3] - in.w[0] * t6 * ab_ap * M_flat[2];
@@ -23033,8 +23033,8 @@ std::array<T, 3> segment_inverse_i15_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
-/// Operations: 58 +, 157 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 691 +, 1643 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 171 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 705 +, 1657 ×, 247 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23086,13 +23086,13 @@ T segment_inverse_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(28) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -23170,7 +23170,7 @@ T segment_inverse_i15_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt
 /// Returns false where segment_inverse_i15_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 58 +, 157 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 72 +, 171 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23221,13 +23221,13 @@ bool segment_inverse_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(28) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
@@ -23280,8 +23280,8 @@ bool segment_inverse_i15_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
-/// Operations: 52 +, 119 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 1583 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 133 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 691 +, 1597 ×, 238 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23320,13 +23320,13 @@ T segment_inverse_i15_w1_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(87) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(15, 15, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 15, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -23359,8 +23359,8 @@ T segment_inverse_i15_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
-/// Operations: 63 +, 166 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 930 +, 2347 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 180 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 944 +, 2361 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23411,13 +23411,13 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(28) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -23491,8 +23491,8 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
-/// Operations: 66 +, 179 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 931 +, 2350 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 80 +, 193 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 945 +, 2364 ×, 368 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23544,13 +23544,13 @@ T segment_inverse_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(28) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[0] * M_flat[0];
     const T t6 = M_flat[4] * in.w[1] + in.w[0] * M_flat[3];
     G_ap = t6;
@@ -23630,7 +23630,7 @@ T segment_inverse_i15_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt
 /// Returns false where segment_inverse_i15_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 66 +, 179 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 80 +, 193 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23681,13 +23681,13 @@ bool segment_inverse_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(28) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -23742,8 +23742,8 @@ bool segment_inverse_i15_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
-/// Operations: 55 +, 131 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 909 +, 2275 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 145 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 923 +, 2289 ×, 355 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23782,13 +23782,13 @@ T segment_inverse_i15_w2_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(87) / T(4)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(15, 15, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 15, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + M_flat[2] * in.w[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -23824,8 +23824,8 @@ T segment_inverse_i15_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
-/// Operations: 70 +, 186 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1171 +, 3058 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 84 +, 200 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1185 +, 3072 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23876,13 +23876,13 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(28) * ab_ab));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[4] * in.w[0] + M_flat[5] * in.w[1] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -23957,8 +23957,8 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
-/// Operations: 74 +, 204 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3062 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 88 +, 218 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3076 ×, 491 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24010,13 +24010,13 @@ T segment_inverse_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(28) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[2] * in.w[2] + M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = in.w[0] * M_flat[4] + in.w[2] * M_flat[6] + M_flat[5] * in.w[1];
     G_ap = t6;
@@ -24099,7 +24099,7 @@ T segment_inverse_i15_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt
 /// Returns false where segment_inverse_i15_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 74 +, 204 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 88 +, 218 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24150,13 +24150,13 @@ bool segment_inverse_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(28) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
     const T t6 = M_flat[5] * in.w[1] + in.w[0] * M_flat[4] + in.w[2] * M_flat[6];
     G_ap = t6;
@@ -24214,8 +24214,8 @@ bool segment_inverse_i15_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
-/// Operations: 60 +, 148 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1142 +, 2969 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 74 +, 162 ×, 4 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1156 +, 2983 ×, 473 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24254,13 +24254,13 @@ T segment_inverse_i15_w3_f(const SegmentInput<T>& in) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(87) / T(4)) * ab_ab));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 22 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(15, 15, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 15, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[3] * in.w[3] + M_flat[2] * in.w[2] + M_flat[1] * in.w[1];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -24297,8 +24297,8 @@ T segment_inverse_i15_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
-/// Operations: 77 +, 207 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1414 +, 3773 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 91 +, 221 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1428 +, 3787 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i15_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24349,13 +24349,13 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const SegmentInput<T>& in) {
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(28) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[2] * M_flat[7] + M_flat[8] * in.w[3] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -24433,8 +24433,8 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
-/// Operations: 84 +, 234 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 1417 +, 3778 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 98 +, 248 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 1431 +, 3792 ×, 616 /, 5 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24486,13 +24486,13 @@ T segment_inverse_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - T(28) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[3] * in.w[3] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
     const T t6 = M_flat[8] * in.w[3] + M_flat[7] * in.w[2] + M_flat[6] * in.w[1] + M_flat[5] * in.w[0];
     G_ap = t6;
@@ -24577,7 +24577,7 @@ T segment_inverse_i15_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt
 /// Returns false where segment_inverse_i15_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 84 +, 234 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 98 +, 248 ×, 5 /, 3 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24628,13 +24628,13 @@ bool segment_inverse_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - T(28) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 113/4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(15, 17, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(15, 17, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[0] * M_flat[0] + in.w[3] * M_flat[3] + M_flat[1] * in.w[1];
     const T t6 = M_flat[5] * in.w[0] + M_flat[6] * in.w[1] + M_flat[8] * in.w[3] + M_flat[7] * in.w[2];
     G_ap = t6;
@@ -24694,8 +24694,8 @@ bool segment_inverse_i15_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
-/// Operations: 52 +, 106 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 448 +, 898 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 66 +, 120 ×, 4 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 462 +, 912 ×, 122 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24733,13 +24733,13 @@ T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
-    segment_moments_gauss<T, 20>(16, 16, 0, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 16, 0, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -24774,8 +24774,8 @@ T segment_inverse_i16_w0_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
-/// Operations: 61 +, 133 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1641 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 147 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1655 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24825,13 +24825,13 @@ std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(503) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = in.w[0] * M_flat[2];
     const T t6 = T(1) / ab_ab;
     G_E = M_flat[3] * in.w[0] - in.w[0] * t6 * ab_ap * M_flat[2];
@@ -24887,8 +24887,8 @@ std::array<T, 3> segment_inverse_i16_w0_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
-/// Operations: 61 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 693 +, 1643 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 75 +, 151 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 707 +, 1657 ×, 247 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -24939,13 +24939,13 @@ T segment_inverse_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(503) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -25008,7 +25008,7 @@ T segment_inverse_i16_w0_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt
 /// Returns false where segment_inverse_i16_w0_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 61 +, 137 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 75 +, 151 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25058,13 +25058,13 @@ bool segment_inverse_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(503) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0];
     G_ap = M_flat[2] * in.w[0];
     const T t6 = T(1) / ab_ab;
@@ -25108,8 +25108,8 @@ bool segment_inverse_i16_w0_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
-/// Operations: 55 +, 112 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 679 +, 1588 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 69 +, 126 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 693 +, 1602 ×, 238 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25147,13 +25147,13 @@ T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
-    segment_moments_gauss<T, 20>(16, 16, 1, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 16, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -25189,8 +25189,8 @@ T segment_inverse_i16_w1_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
-/// Operations: 66 +, 144 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 932 +, 2347 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 80 +, 158 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 946 +, 2361 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25240,13 +25240,13 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(503) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[1] * M_flat[4] + M_flat[3] * in.w[0];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -25305,8 +25305,8 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
-/// Operations: 69 +, 155 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 2350 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 83 +, 169 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 947 +, 2364 ×, 368 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25357,13 +25357,13 @@ T segment_inverse_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(503) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0];
     const T t6 = M_flat[3] * in.w[0] + in.w[1] * M_flat[4];
     G_ap = t6;
@@ -25428,7 +25428,7 @@ T segment_inverse_i16_w1_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt
 /// Returns false where segment_inverse_i16_w1_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 69 +, 155 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 83 +, 169 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25478,13 +25478,13 @@ bool segment_inverse_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(503) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 6> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1];
     const T t6 = M_flat[4] * in.w[1] + M_flat[3] * in.w[0];
     G_ap = t6;
@@ -25530,8 +25530,8 @@ bool segment_inverse_i16_w1_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
-/// Operations: 58 +, 123 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 911 +, 2280 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 72 +, 137 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 925 +, 2294 ×, 355 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25569,13 +25569,13 @@ T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
-    segment_moments_gauss<T, 20>(16, 16, 2, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 16, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + in.w[1] * M_flat[1] + in.w[0] * M_flat[0];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -25614,8 +25614,8 @@ T segment_inverse_i16_w2_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
-/// Operations: 73 +, 162 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1173 +, 3058 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 87 +, 176 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1187 +, 3072 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25665,13 +25665,13 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(503) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = M_flat[5] * in.w[1] + M_flat[4] * in.w[0] + M_flat[6] * in.w[2];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -25731,8 +25731,8 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
-/// Operations: 77 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1175 +, 3062 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 91 +, 193 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1189 +, 3076 ×, 491 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25783,13 +25783,13 @@ T segment_inverse_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(503) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + in.w[0] * M_flat[0] + in.w[2] * M_flat[2];
     const T t6 = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -25857,7 +25857,7 @@ T segment_inverse_i16_w2_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt
 /// Returns false where segment_inverse_i16_w2_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 77 +, 179 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 91 +, 193 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -25907,13 +25907,13 @@ bool segment_inverse_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(503) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 8> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + M_flat[0] * in.w[0];
     const T t6 = M_flat[6] * in.w[2] + in.w[1] * M_flat[5] + in.w[0] * M_flat[4];
     G_ap = t6;
@@ -25962,8 +25962,8 @@ bool segment_inverse_i16_w2_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
 
 /// the field, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
-/// Operations: 63 +, 137 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1144 +, 2974 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 77 +, 151 ×, 5 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1158 +, 2988 ×, 473 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26001,13 +26001,13 @@ T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
   const T length = sqrt(ab_ab);
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t1 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(99) / T(4)) * ab_ab - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 25 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
-    segment_moments_gauss<T, 20>(16, 16, 3, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 16, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[2] * M_flat[2] + M_flat[1] * in.w[1] + M_flat[0] * in.w[0] + M_flat[3] * in.w[3];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
@@ -26047,8 +26047,8 @@ T segment_inverse_i16_w3_f(const SegmentInput<T>& in) {
 
 /// its gradient ∇_P f, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
-/// Operations: 80 +, 183 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1416 +, 3773 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 94 +, 197 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1430 +, 3787 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26098,13 +26098,13 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(503) / T(16)) * ab_ab - ab_ap));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t6 = in.w[2] * M_flat[7] + in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1];
     G_ap = t6;
     const T t7 = T(1) / ab_ab;
@@ -26167,8 +26167,8 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const SegmentInput<T>& in) {
 
 /// the field and its gradient, where
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
-/// Operations: 87 +, 207 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 1419 +, 3778 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
+/// Operations: 101 +, 221 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh (generic form).
+/// Longest path: 1433 +, 3792 ×, 616 /, 3 sqrt, 0 atan, 2 log/asinh.
 template <class T>
 T segment_inverse_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26219,13 +26219,13 @@ T segment_inverse_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-ab_ap - T(2) * ab_ab))))), T(ap_ap - ab_ap - (T(503) / T(16)) * ab_ab));
   const T t4 = -ab_ap * a_minus_b;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = in.w[1] * M_flat[1] + M_flat[0] * in.w[0] + in.w[2] * M_flat[2] + in.w[3] * M_flat[3];
     const T t6 = in.w[1] * M_flat[6] + M_flat[8] * in.w[3] + M_flat[5] * in.w[0] + M_flat[7] * in.w[2];
     G_ap = t6;
@@ -26295,7 +26295,7 @@ T segment_inverse_i16_w3_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>&
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt
 /// Returns false where segment_inverse_i16_w3_f_and_grad takes another form: its values
 /// then are not to be used.
-/// Operations: 87 +, 207 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
+/// Operations: 101 +, 221 ×, 6 /, 2 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 bool segment_inverse_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -26345,13 +26345,13 @@ bool segment_inverse_i16_w3_f_and_grad_generic(const SegmentInput<T>& in, T& f, 
   T F;
   T G_ap;
   T G_E;
-  const T t3 = max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))));
+  const T t3 = max(T(max(T(cross_cross - T(2) * ab_ab * ab_ab), T(max(T(ab_ap - T(3) * ab_ab), T(-T(2) * ab_ab - ab_ap))))), T(ap_ap - (T(503) / T(16)) * ab_ab - ab_ap));
   const T t4 = -a_minus_b * ab_ap;
   const T t5 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t3 >= T(0)) {
-    // P far from the line (D ≥ 2a²) or beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2): every moment by segment_moments_gauss<T, 20>
+    // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 507/16 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 10> M_flat;
-    segment_moments_gauss<T, 20>(16, 18, 4, ab_ab, ab_ap, ap_ap, T(0), T(1), M_flat.data());
+    segment_moments_far_field<T>(16, 18, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * in.w[0] + M_flat[1] * in.w[1] + in.w[2] * M_flat[2] + M_flat[3] * in.w[3];
     const T t6 = in.w[0] * M_flat[5] + in.w[3] * M_flat[8] + M_flat[6] * in.w[1] + in.w[2] * M_flat[7];
     G_ap = t6;
@@ -26405,133 +26405,133 @@ template <class T>
 std::span<const SegmentKernel<T>> segment_inverse_kernels() {
   static const SegmentKernel<T> table[] = {
       {KernelFamily::inverse, 1, 0, &segment_inverse_i1_w0_f<T>, &segment_inverse_i1_w0_grad<T>, &segment_inverse_i1_w0_f_and_grad<T>, "segment_inverse_i1_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt", {36, 44, 2, 3, 0, 1, 0}, {44, 62, 5, 3, 0, 0, 0}, {45, 71, 7, 3, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt", {50, 58, 2, 3, 0, 1, 0}, {58, 76, 5, 3, 0, 0, 0}, {59, 85, 7, 3, 0, 1, 0}},
       {KernelFamily::inverse, 1, 1, &segment_inverse_i1_w1_f<T>, &segment_inverse_i1_w1_grad<T>, &segment_inverse_i1_w1_f_and_grad<T>, "segment_inverse_i1_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt", {39, 48, 3, 3, 0, 1, 0}, {50, 74, 7, 3, 0, 1, 0}, {53, 79, 7, 3, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt", {53, 62, 3, 3, 0, 1, 0}, {64, 88, 7, 3, 0, 1, 0}, {67, 93, 7, 3, 0, 1, 0}},
       {KernelFamily::inverse, 1, 2, &segment_inverse_i1_w2_f<T>, &segment_inverse_i1_w2_grad<T>, &segment_inverse_i1_w2_f_and_grad<T>, "segment_inverse_i1_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt", {44, 60, 3, 3, 0, 1, 0}, {57, 85, 7, 3, 0, 1, 0}, {63, 101, 7, 3, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt", {58, 74, 3, 3, 0, 1, 0}, {71, 99, 7, 3, 0, 1, 0}, {77, 115, 7, 3, 0, 1, 0}},
       {KernelFamily::inverse, 1, 3, &segment_inverse_i1_w3_f<T>, &segment_inverse_i1_w3_grad<T>, &segment_inverse_i1_w3_f_and_grad<T>, "segment_inverse_i1_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt", {49, 77, 3, 3, 0, 1, 0}, {66, 109, 7, 3, 0, 1, 0}, {73, 133, 7, 3, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt", {63, 91, 3, 3, 0, 1, 0}, {80, 123, 7, 3, 0, 1, 0}, {87, 147, 7, 3, 0, 1, 0}},
       {KernelFamily::inverse, 2, 0, &segment_inverse_i2_w0_f<T>, &segment_inverse_i2_w0_grad<T>, &segment_inverse_i2_w0_f_and_grad<T>, "segment_inverse_i2_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt", {38, 46, 1, 2, 1, 0, 0}, {47, 71, 6, 2, 1, 0, 0}, {47, 73, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−2) dt", {52, 60, 1, 2, 1, 0, 0}, {61, 85, 6, 2, 1, 0, 0}, {61, 87, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 2, 1, &segment_inverse_i2_w1_f<T>, &segment_inverse_i2_w1_grad<T>, &segment_inverse_i2_w1_f_and_grad<T>, "segment_inverse_i2_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt", {40, 51, 3, 2, 1, 1, 0}, {52, 77, 6, 2, 1, 0, 0}, {54, 85, 6, 2, 1, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−2) dt", {54, 65, 3, 2, 1, 1, 0}, {66, 91, 6, 2, 1, 0, 0}, {68, 99, 6, 2, 1, 1, 0}},
       {KernelFamily::inverse, 2, 2, &segment_inverse_i2_w2_f<T>, &segment_inverse_i2_w2_grad<T>, &segment_inverse_i2_w2_f_and_grad<T>, "segment_inverse_i2_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt", {43, 56, 3, 2, 1, 1, 0}, {58, 91, 6, 2, 1, 1, 0}, {62, 101, 6, 2, 1, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−2) dt", {57, 70, 3, 2, 1, 1, 0}, {72, 105, 6, 2, 1, 1, 0}, {76, 115, 6, 2, 1, 1, 0}},
       {KernelFamily::inverse, 2, 3, &segment_inverse_i2_w3_f<T>, &segment_inverse_i2_w3_grad<T>, &segment_inverse_i2_w3_f_and_grad<T>, "segment_inverse_i2_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt", {48, 66, 3, 2, 1, 1, 0}, {65, 106, 6, 2, 1, 1, 0}, {72, 123, 6, 2, 1, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−2) dt", {62, 80, 3, 2, 1, 1, 0}, {79, 120, 6, 2, 1, 1, 0}, {86, 137, 6, 2, 1, 1, 0}},
       {KernelFamily::inverse, 3, 0, &segment_inverse_i3_w0_f<T>, &segment_inverse_i3_w0_grad<T>, &segment_inverse_i3_w0_f_and_grad<T>, "segment_inverse_i3_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt", {37, 43, 3, 3, 0, 0, 0}, {46, 75, 7, 3, 0, 0, 0}, {46, 78, 7, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−3) dt", {51, 57, 3, 3, 0, 0, 0}, {60, 89, 7, 3, 0, 0, 0}, {60, 92, 7, 3, 0, 0, 0}},
       {KernelFamily::inverse, 3, 1, &segment_inverse_i3_w1_f<T>, &segment_inverse_i3_w1_grad<T>, &segment_inverse_i3_w1_f_and_grad<T>, "segment_inverse_i3_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt", {40, 49, 4, 3, 0, 0, 0}, {51, 88, 5, 3, 0, 0, 0}, {54, 95, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−3) dt", {54, 63, 4, 3, 0, 0, 0}, {65, 102, 5, 3, 0, 0, 0}, {68, 109, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 3, 2, &segment_inverse_i3_w2_f<T>, &segment_inverse_i3_w2_grad<T>, &segment_inverse_i3_w2_f_and_grad<T>, "segment_inverse_i3_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt", {44, 63, 6, 3, 0, 1, 0}, {58, 103, 5, 3, 0, 0, 0}, {63, 121, 7, 3, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−3) dt", {58, 77, 6, 3, 0, 1, 0}, {72, 117, 5, 3, 0, 0, 0}, {77, 135, 7, 3, 0, 1, 0}},
       {KernelFamily::inverse, 3, 3, &segment_inverse_i3_w3_f<T>, &segment_inverse_i3_w3_grad<T>, &segment_inverse_i3_w3_f_and_grad<T>, "segment_inverse_i3_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt", {49, 72, 6, 3, 0, 1, 0}, {66, 127, 7, 3, 0, 1, 0}, {73, 143, 7, 3, 0, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−3) dt", {63, 86, 6, 3, 0, 1, 0}, {80, 141, 7, 3, 0, 1, 0}, {87, 157, 7, 3, 0, 1, 0}},
       {KernelFamily::inverse, 4, 0, &segment_inverse_i4_w0_f<T>, &segment_inverse_i4_w0_grad<T>, &segment_inverse_i4_w0_f_and_grad<T>, "segment_inverse_i4_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt", {40, 50, 4, 2, 1, 0, 0}, {49, 80, 6, 2, 1, 0, 0}, {49, 84, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−4) dt", {54, 64, 4, 2, 1, 0, 0}, {63, 94, 6, 2, 1, 0, 0}, {63, 98, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 4, 1, &segment_inverse_i4_w1_f<T>, &segment_inverse_i4_w1_grad<T>, &segment_inverse_i4_w1_f_and_grad<T>, "segment_inverse_i4_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt", {43, 56, 5, 2, 1, 0, 0}, {54, 91, 6, 2, 1, 0, 0}, {57, 100, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−4) dt", {57, 70, 5, 2, 1, 0, 0}, {68, 105, 6, 2, 1, 0, 0}, {71, 114, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 4, 2, &segment_inverse_i4_w2_f<T>, &segment_inverse_i4_w2_grad<T>, &segment_inverse_i4_w2_f_and_grad<T>, "segment_inverse_i4_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt", {46, 66, 5, 2, 1, 0, 0}, {61, 106, 6, 2, 1, 0, 0}, {65, 122, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−4) dt", {60, 80, 5, 2, 1, 0, 0}, {75, 120, 6, 2, 1, 0, 0}, {79, 136, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 4, 3, &segment_inverse_i4_w3_f<T>, &segment_inverse_i4_w3_grad<T>, &segment_inverse_i4_w3_f_and_grad<T>, "segment_inverse_i4_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt", {50, 78, 5, 2, 1, 1, 0}, {68, 125, 6, 2, 1, 0, 0}, {74, 147, 6, 2, 1, 1, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−4) dt", {64, 92, 5, 2, 1, 1, 0}, {82, 139, 6, 2, 1, 0, 0}, {88, 161, 6, 2, 1, 1, 0}},
       {KernelFamily::inverse, 5, 0, &segment_inverse_i5_w0_f<T>, &segment_inverse_i5_w0_grad<T>, &segment_inverse_i5_w0_f_and_grad<T>, "segment_inverse_i5_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt", {39, 52, 5, 3, 0, 0, 0}, {48, 92, 5, 3, 0, 0, 0}, {48, 96, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−5) dt", {53, 66, 5, 3, 0, 0, 0}, {62, 106, 5, 3, 0, 0, 0}, {62, 110, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 5, 1, &segment_inverse_i5_w1_f<T>, &segment_inverse_i5_w1_grad<T>, &segment_inverse_i5_w1_f_and_grad<T>, "segment_inverse_i5_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt", {42, 62, 4, 3, 0, 0, 0}, {53, 105, 5, 3, 0, 0, 0}, {56, 116, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−5) dt", {56, 76, 4, 3, 0, 0, 0}, {67, 119, 5, 3, 0, 0, 0}, {70, 130, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 5, 2, &segment_inverse_i5_w2_f<T>, &segment_inverse_i5_w2_grad<T>, &segment_inverse_i5_w2_f_and_grad<T>, "segment_inverse_i5_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt", {45, 73, 4, 3, 0, 0, 0}, {60, 122, 5, 3, 0, 0, 0}, {64, 139, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−5) dt", {59, 87, 4, 3, 0, 0, 0}, {74, 136, 5, 3, 0, 0, 0}, {78, 153, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 5, 3, &segment_inverse_i5_w3_f<T>, &segment_inverse_i5_w3_grad<T>, &segment_inverse_i5_w3_f_and_grad<T>, "segment_inverse_i5_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt", {50, 85, 4, 3, 0, 0, 0}, {67, 142, 5, 3, 0, 0, 0}, {74, 164, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−5) dt", {64, 99, 4, 3, 0, 0, 0}, {81, 156, 5, 3, 0, 0, 0}, {88, 178, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 6, 0, &segment_inverse_i6_w0_f<T>, &segment_inverse_i6_w0_grad<T>, &segment_inverse_i6_w0_f_and_grad<T>, "segment_inverse_i6_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt", {42, 61, 4, 2, 1, 0, 0}, {51, 89, 6, 2, 1, 0, 0}, {51, 93, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−6) dt", {56, 75, 4, 2, 1, 0, 0}, {65, 103, 6, 2, 1, 0, 0}, {65, 107, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 6, 1, &segment_inverse_i6_w1_f<T>, &segment_inverse_i6_w1_grad<T>, &segment_inverse_i6_w1_f_and_grad<T>, "segment_inverse_i6_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt", {45, 67, 5, 2, 1, 0, 0}, {56, 100, 6, 2, 1, 0, 0}, {59, 111, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−6) dt", {59, 81, 5, 2, 1, 0, 0}, {70, 114, 6, 2, 1, 0, 0}, {73, 125, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 6, 2, &segment_inverse_i6_w2_f<T>, &segment_inverse_i6_w2_grad<T>, &segment_inverse_i6_w2_f_and_grad<T>, "segment_inverse_i6_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt", {48, 78, 5, 2, 1, 0, 0}, {63, 117, 6, 2, 1, 0, 0}, {67, 134, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−6) dt", {62, 92, 5, 2, 1, 0, 0}, {77, 131, 6, 2, 1, 0, 0}, {81, 148, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 6, 3, &segment_inverse_i6_w3_f<T>, &segment_inverse_i6_w3_grad<T>, &segment_inverse_i6_w3_f_and_grad<T>, "segment_inverse_i6_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt", {53, 90, 5, 2, 1, 0, 0}, {70, 137, 6, 2, 1, 0, 0}, {77, 159, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−6) dt", {67, 104, 5, 2, 1, 0, 0}, {84, 151, 6, 2, 1, 0, 0}, {91, 173, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 7, 0, &segment_inverse_i7_w0_f<T>, &segment_inverse_i7_w0_grad<T>, &segment_inverse_i7_w0_f_and_grad<T>, "segment_inverse_i7_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt", {41, 67, 3, 3, 0, 0, 0}, {50, 105, 5, 3, 0, 0, 0}, {50, 109, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−7) dt", {55, 81, 3, 3, 0, 0, 0}, {64, 119, 5, 3, 0, 0, 0}, {64, 123, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 7, 1, &segment_inverse_i7_w1_f<T>, &segment_inverse_i7_w1_grad<T>, &segment_inverse_i7_w1_f_and_grad<T>, "segment_inverse_i7_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt", {44, 75, 4, 3, 0, 0, 0}, {55, 118, 5, 3, 0, 0, 0}, {58, 131, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−7) dt", {58, 89, 4, 3, 0, 0, 0}, {69, 132, 5, 3, 0, 0, 0}, {72, 145, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 7, 2, &segment_inverse_i7_w2_f<T>, &segment_inverse_i7_w2_grad<T>, &segment_inverse_i7_w2_f_and_grad<T>, "segment_inverse_i7_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt", {47, 86, 4, 3, 0, 0, 0}, {62, 138, 5, 3, 0, 0, 0}, {66, 155, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−7) dt", {61, 100, 4, 3, 0, 0, 0}, {76, 152, 5, 3, 0, 0, 0}, {80, 169, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 7, 3, &segment_inverse_i7_w3_f<T>, &segment_inverse_i7_w3_grad<T>, &segment_inverse_i7_w3_f_and_grad<T>, "segment_inverse_i7_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt", {52, 100, 4, 3, 0, 0, 0}, {69, 159, 5, 3, 0, 0, 0}, {76, 183, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−7) dt", {66, 114, 4, 3, 0, 0, 0}, {83, 173, 5, 3, 0, 0, 0}, {90, 197, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 8, 0, &segment_inverse_i8_w0_f<T>, &segment_inverse_i8_w0_grad<T>, &segment_inverse_i8_w0_f_and_grad<T>, "segment_inverse_i8_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt", {44, 70, 4, 2, 1, 0, 0}, {53, 98, 6, 2, 1, 0, 0}, {53, 102, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−8) dt", {58, 84, 4, 2, 1, 0, 0}, {67, 112, 6, 2, 1, 0, 0}, {67, 116, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 8, 1, &segment_inverse_i8_w1_f<T>, &segment_inverse_i8_w1_grad<T>, &segment_inverse_i8_w1_f_and_grad<T>, "segment_inverse_i8_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt", {47, 76, 5, 2, 1, 0, 0}, {58, 109, 6, 2, 1, 0, 0}, {61, 120, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−8) dt", {61, 90, 5, 2, 1, 0, 0}, {72, 123, 6, 2, 1, 0, 0}, {75, 134, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 8, 2, &segment_inverse_i8_w2_f<T>, &segment_inverse_i8_w2_grad<T>, &segment_inverse_i8_w2_f_and_grad<T>, "segment_inverse_i8_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt", {50, 87, 5, 2, 1, 0, 0}, {65, 126, 6, 2, 1, 0, 0}, {69, 143, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−8) dt", {64, 101, 5, 2, 1, 0, 0}, {79, 140, 6, 2, 1, 0, 0}, {83, 157, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 8, 3, &segment_inverse_i8_w3_f<T>, &segment_inverse_i8_w3_grad<T>, &segment_inverse_i8_w3_f_and_grad<T>, "segment_inverse_i8_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt", {55, 101, 5, 2, 1, 0, 0}, {72, 146, 6, 2, 1, 0, 0}, {79, 170, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−8) dt", {69, 115, 5, 2, 1, 0, 0}, {86, 160, 6, 2, 1, 0, 0}, {93, 184, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 9, 0, &segment_inverse_i9_w0_f<T>, &segment_inverse_i9_w0_grad<T>, &segment_inverse_i9_w0_f_and_grad<T>, "segment_inverse_i9_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt", {43, 78, 3, 3, 0, 0, 0}, {52, 116, 5, 3, 0, 0, 0}, {52, 120, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−9) dt", {57, 92, 3, 3, 0, 0, 0}, {66, 130, 5, 3, 0, 0, 0}, {66, 134, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 9, 1, &segment_inverse_i9_w1_f<T>, &segment_inverse_i9_w1_grad<T>, &segment_inverse_i9_w1_f_and_grad<T>, "segment_inverse_i9_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt", {46, 86, 4, 3, 0, 0, 0}, {57, 129, 5, 3, 0, 0, 0}, {60, 142, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−9) dt", {60, 100, 4, 3, 0, 0, 0}, {71, 143, 5, 3, 0, 0, 0}, {74, 156, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 9, 2, &segment_inverse_i9_w2_f<T>, &segment_inverse_i9_w2_grad<T>, &segment_inverse_i9_w2_f_and_grad<T>, "segment_inverse_i9_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt", {49, 98, 4, 3, 0, 0, 0}, {64, 148, 5, 3, 0, 0, 0}, {68, 166, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−9) dt", {63, 112, 4, 3, 0, 0, 0}, {78, 162, 5, 3, 0, 0, 0}, {82, 180, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 9, 3, &segment_inverse_i9_w3_f<T>, &segment_inverse_i9_w3_grad<T>, &segment_inverse_i9_w3_f_and_grad<T>, "segment_inverse_i9_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt", {54, 115, 4, 3, 0, 0, 0}, {71, 168, 5, 3, 0, 0, 0}, {78, 195, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−9) dt", {68, 129, 4, 3, 0, 0, 0}, {85, 182, 5, 3, 0, 0, 0}, {92, 209, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 10, 0, &segment_inverse_i10_w0_f<T>, &segment_inverse_i10_w0_grad<T>, &segment_inverse_i10_w0_f_and_grad<T>, "segment_inverse_i10_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt", {46, 79, 4, 2, 1, 0, 0}, {55, 107, 6, 2, 1, 0, 0}, {55, 111, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−10) dt", {60, 93, 4, 2, 1, 0, 0}, {69, 121, 6, 2, 1, 0, 0}, {69, 125, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 10, 1, &segment_inverse_i10_w1_f<T>, &segment_inverse_i10_w1_grad<T>, &segment_inverse_i10_w1_f_and_grad<T>, "segment_inverse_i10_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt", {49, 85, 5, 2, 1, 0, 0}, {60, 118, 6, 2, 1, 0, 0}, {63, 129, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−10) dt", {63, 99, 5, 2, 1, 0, 0}, {74, 132, 6, 2, 1, 0, 0}, {77, 143, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 10, 2, &segment_inverse_i10_w2_f<T>, &segment_inverse_i10_w2_grad<T>, &segment_inverse_i10_w2_f_and_grad<T>, "segment_inverse_i10_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt", {52, 96, 5, 2, 1, 0, 0}, {67, 136, 6, 2, 1, 0, 0}, {71, 153, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−10) dt", {66, 110, 5, 2, 1, 0, 0}, {81, 150, 6, 2, 1, 0, 0}, {85, 167, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 10, 3, &segment_inverse_i10_w3_f<T>, &segment_inverse_i10_w3_grad<T>, &segment_inverse_i10_w3_f_and_grad<T>, "segment_inverse_i10_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt", {57, 110, 5, 2, 1, 0, 0}, {74, 157, 6, 2, 1, 0, 0}, {81, 181, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−10) dt", {71, 124, 5, 2, 1, 0, 0}, {88, 171, 6, 2, 1, 0, 0}, {95, 195, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 11, 0, &segment_inverse_i11_w0_f<T>, &segment_inverse_i11_w0_grad<T>, &segment_inverse_i11_w0_f_and_grad<T>, "segment_inverse_i11_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt", {45, 89, 3, 3, 0, 0, 0}, {54, 129, 5, 3, 0, 0, 0}, {54, 133, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−11) dt", {59, 103, 3, 3, 0, 0, 0}, {68, 143, 5, 3, 0, 0, 0}, {68, 147, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 11, 1, &segment_inverse_i11_w1_f<T>, &segment_inverse_i11_w1_grad<T>, &segment_inverse_i11_w1_f_and_grad<T>, "segment_inverse_i11_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt", {48, 97, 4, 3, 0, 0, 0}, {59, 142, 5, 3, 0, 0, 0}, {62, 155, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−11) dt", {62, 111, 4, 3, 0, 0, 0}, {73, 156, 5, 3, 0, 0, 0}, {76, 169, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 11, 2, &segment_inverse_i11_w2_f<T>, &segment_inverse_i11_w2_grad<T>, &segment_inverse_i11_w2_f_and_grad<T>, "segment_inverse_i11_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt", {51, 108, 4, 3, 0, 0, 0}, {66, 162, 5, 3, 0, 0, 0}, {70, 179, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−11) dt", {65, 122, 4, 3, 0, 0, 0}, {80, 176, 5, 3, 0, 0, 0}, {84, 193, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 11, 3, &segment_inverse_i11_w3_f<T>, &segment_inverse_i11_w3_grad<T>, &segment_inverse_i11_w3_f_and_grad<T>, "segment_inverse_i11_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt", {56, 124, 4, 3, 0, 0, 0}, {73, 183, 5, 3, 0, 0, 0}, {80, 209, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−11) dt", {70, 138, 4, 3, 0, 0, 0}, {87, 197, 5, 3, 0, 0, 0}, {94, 223, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 12, 0, &segment_inverse_i12_w0_f<T>, &segment_inverse_i12_w0_grad<T>, &segment_inverse_i12_w0_f_and_grad<T>, "segment_inverse_i12_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt", {48, 88, 4, 2, 1, 0, 0}, {57, 116, 6, 2, 1, 0, 0}, {57, 120, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−12) dt", {62, 102, 4, 2, 1, 0, 0}, {71, 130, 6, 2, 1, 0, 0}, {71, 134, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 12, 1, &segment_inverse_i12_w1_f<T>, &segment_inverse_i12_w1_grad<T>, &segment_inverse_i12_w1_f_and_grad<T>, "segment_inverse_i12_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt", {51, 94, 5, 2, 1, 0, 0}, {62, 127, 6, 2, 1, 0, 0}, {65, 138, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−12) dt", {65, 108, 5, 2, 1, 0, 0}, {76, 141, 6, 2, 1, 0, 0}, {79, 152, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 12, 2, &segment_inverse_i12_w2_f<T>, &segment_inverse_i12_w2_grad<T>, &segment_inverse_i12_w2_f_and_grad<T>, "segment_inverse_i12_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt", {54, 106, 5, 2, 1, 0, 0}, {69, 144, 6, 2, 1, 0, 0}, {73, 162, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−12) dt", {68, 120, 5, 2, 1, 0, 0}, {83, 158, 6, 2, 1, 0, 0}, {87, 176, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 12, 3, &segment_inverse_i12_w3_f<T>, &segment_inverse_i12_w3_grad<T>, &segment_inverse_i12_w3_f_and_grad<T>, "segment_inverse_i12_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt", {59, 121, 5, 2, 1, 0, 0}, {76, 164, 6, 2, 1, 0, 0}, {83, 189, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−12) dt", {73, 135, 5, 2, 1, 0, 0}, {90, 178, 6, 2, 1, 0, 0}, {97, 203, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 13, 0, &segment_inverse_i13_w0_f<T>, &segment_inverse_i13_w0_grad<T>, &segment_inverse_i13_w0_f_and_grad<T>, "segment_inverse_i13_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt", {47, 100, 3, 3, 0, 0, 0}, {56, 140, 5, 3, 0, 0, 0}, {56, 144, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−13) dt", {61, 114, 3, 3, 0, 0, 0}, {70, 154, 5, 3, 0, 0, 0}, {70, 158, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 13, 1, &segment_inverse_i13_w1_f<T>, &segment_inverse_i13_w1_grad<T>, &segment_inverse_i13_w1_f_and_grad<T>, "segment_inverse_i13_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt", {50, 108, 4, 3, 0, 0, 0}, {61, 153, 5, 3, 0, 0, 0}, {64, 166, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−13) dt", {64, 122, 4, 3, 0, 0, 0}, {75, 167, 5, 3, 0, 0, 0}, {78, 180, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 13, 2, &segment_inverse_i13_w2_f<T>, &segment_inverse_i13_w2_grad<T>, &segment_inverse_i13_w2_f_and_grad<T>, "segment_inverse_i13_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt", {53, 120, 4, 3, 0, 0, 0}, {68, 173, 5, 3, 0, 0, 0}, {72, 191, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−13) dt", {67, 134, 4, 3, 0, 0, 0}, {82, 187, 5, 3, 0, 0, 0}, {86, 205, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 13, 3, &segment_inverse_i13_w3_f<T>, &segment_inverse_i13_w3_grad<T>, &segment_inverse_i13_w3_f_and_grad<T>, "segment_inverse_i13_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt", {58, 137, 4, 3, 0, 0, 0}, {75, 196, 5, 3, 0, 0, 0}, {82, 223, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−13) dt", {72, 151, 4, 3, 0, 0, 0}, {89, 210, 5, 3, 0, 0, 0}, {96, 237, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 14, 0, &segment_inverse_i14_w0_f<T>, &segment_inverse_i14_w0_grad<T>, &segment_inverse_i14_w0_f_and_grad<T>, "segment_inverse_i14_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt", {50, 97, 4, 2, 1, 0, 0}, {59, 125, 6, 2, 1, 0, 0}, {59, 129, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−14) dt", {64, 111, 4, 2, 1, 0, 0}, {73, 139, 6, 2, 1, 0, 0}, {73, 143, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 14, 1, &segment_inverse_i14_w1_f<T>, &segment_inverse_i14_w1_grad<T>, &segment_inverse_i14_w1_f_and_grad<T>, "segment_inverse_i14_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt", {53, 103, 5, 2, 1, 0, 0}, {64, 136, 6, 2, 1, 0, 0}, {67, 147, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−14) dt", {67, 117, 5, 2, 1, 0, 0}, {78, 150, 6, 2, 1, 0, 0}, {81, 161, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 14, 2, &segment_inverse_i14_w2_f<T>, &segment_inverse_i14_w2_grad<T>, &segment_inverse_i14_w2_f_and_grad<T>, "segment_inverse_i14_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt", {56, 114, 5, 2, 1, 0, 0}, {71, 153, 6, 2, 1, 0, 0}, {75, 170, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−14) dt", {70, 128, 5, 2, 1, 0, 0}, {85, 167, 6, 2, 1, 0, 0}, {89, 184, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 14, 3, &segment_inverse_i14_w3_f<T>, &segment_inverse_i14_w3_grad<T>, &segment_inverse_i14_w3_f_and_grad<T>, "segment_inverse_i14_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt", {61, 128, 5, 2, 1, 0, 0}, {78, 173, 6, 2, 1, 0, 0}, {85, 197, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−14) dt", {75, 142, 5, 2, 1, 0, 0}, {92, 187, 6, 2, 1, 0, 0}, {99, 211, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 15, 0, &segment_inverse_i15_w0_f<T>, &segment_inverse_i15_w0_grad<T>, &segment_inverse_i15_w0_f_and_grad<T>, "segment_inverse_i15_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt", {49, 111, 3, 3, 0, 0, 0}, {58, 153, 5, 3, 0, 0, 0}, {58, 157, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−15) dt", {63, 125, 3, 3, 0, 0, 0}, {72, 167, 5, 3, 0, 0, 0}, {72, 171, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 15, 1, &segment_inverse_i15_w1_f<T>, &segment_inverse_i15_w1_grad<T>, &segment_inverse_i15_w1_f_and_grad<T>, "segment_inverse_i15_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt", {52, 119, 4, 3, 0, 0, 0}, {63, 166, 5, 3, 0, 0, 0}, {66, 179, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−15) dt", {66, 133, 4, 3, 0, 0, 0}, {77, 180, 5, 3, 0, 0, 0}, {80, 193, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 15, 2, &segment_inverse_i15_w2_f<T>, &segment_inverse_i15_w2_grad<T>, &segment_inverse_i15_w2_f_and_grad<T>, "segment_inverse_i15_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt", {55, 131, 4, 3, 0, 0, 0}, {70, 186, 5, 3, 0, 0, 0}, {74, 204, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−15) dt", {69, 145, 4, 3, 0, 0, 0}, {84, 200, 5, 3, 0, 0, 0}, {88, 218, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 15, 3, &segment_inverse_i15_w3_f<T>, &segment_inverse_i15_w3_grad<T>, &segment_inverse_i15_w3_f_and_grad<T>, "segment_inverse_i15_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt", {60, 148, 4, 3, 0, 0, 0}, {77, 207, 5, 3, 0, 0, 0}, {84, 234, 5, 3, 0, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−15) dt", {74, 162, 4, 3, 0, 0, 0}, {91, 221, 5, 3, 0, 0, 0}, {98, 248, 5, 3, 0, 0, 0}},
       {KernelFamily::inverse, 16, 0, &segment_inverse_i16_w0_f<T>, &segment_inverse_i16_w0_grad<T>, &segment_inverse_i16_w0_f_and_grad<T>, "segment_inverse_i16_w0",
-       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt", {52, 106, 4, 2, 1, 0, 0}, {61, 133, 6, 2, 1, 0, 0}, {61, 137, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−16) dt", {66, 120, 4, 2, 1, 0, 0}, {75, 147, 6, 2, 1, 0, 0}, {75, 151, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 16, 1, &segment_inverse_i16_w1_f<T>, &segment_inverse_i16_w1_grad<T>, &segment_inverse_i16_w1_f_and_grad<T>, "segment_inverse_i16_w1",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt", {55, 112, 5, 2, 1, 0, 0}, {66, 144, 6, 2, 1, 0, 0}, {69, 155, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−16) dt", {69, 126, 5, 2, 1, 0, 0}, {80, 158, 6, 2, 1, 0, 0}, {83, 169, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 16, 2, &segment_inverse_i16_w2_f<T>, &segment_inverse_i16_w2_grad<T>, &segment_inverse_i16_w2_f_and_grad<T>, "segment_inverse_i16_w2",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt", {58, 123, 5, 2, 1, 0, 0}, {73, 162, 6, 2, 1, 0, 0}, {77, 179, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−16) dt", {72, 137, 5, 2, 1, 0, 0}, {87, 176, 6, 2, 1, 0, 0}, {91, 193, 6, 2, 1, 0, 0}},
       {KernelFamily::inverse, 16, 3, &segment_inverse_i16_w3_f<T>, &segment_inverse_i16_w3_grad<T>, &segment_inverse_i16_w3_f_and_grad<T>, "segment_inverse_i16_w3",
-       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt", {63, 137, 5, 2, 1, 0, 0}, {80, 183, 6, 2, 1, 0, 0}, {87, 207, 6, 2, 1, 0, 0}},
+       "f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−16) dt", {77, 151, 5, 2, 1, 0, 0}, {94, 197, 6, 2, 1, 0, 0}, {101, 221, 6, 2, 1, 0, 0}},
   };
   return table;
 }

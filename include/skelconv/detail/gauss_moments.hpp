@@ -36,6 +36,7 @@
 #include <string>
 #include <type_traits>
 
+#include "skelconv/detail/far_field_series.hpp"
 #include "skelconv/not_converged.hpp"
 
 namespace skelconv {
@@ -343,6 +344,16 @@ bool beyond_end_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T
   const T z2 = T(2) * (q_near + q_far) / a - T(1);
   auto square = [](double r) { return r * r; };
   if (!(z2 >= T(square(beyond_end_rule_min_z)))) return false;
+  if constexpr (std::is_same_v<T, double>) {
+    // The series about the midpoint (far_field_series.hpp) where it applies,
+    // from the near end's quantities: Q = q(½) = q_near − b_near + a/4, a sum
+    // of positive terms (b_near < 0); P changes sign with the direction of t.
+    const double Q = q_near - b_near + 0.25 * a;
+    const double P_from_near = 0.5 * (0.5 * a - b_near) / Q;
+    if (far_series_moments_about_midpoint(m_lo, m_hi, k_max, Q, beyond_B ? -P_from_near : P_from_near,
+                                          0.25 * a / Q, out) != 0)
+      return true;
+  }
   const int count = ((m_hi - m_lo) / 2 + 1) * (k_max + 1);
   for (int i = 0; i < count; ++i) out[i] = T(0);
   auto q_at = [&](const T& t) {
@@ -382,6 +393,30 @@ void segment_moments_gauss(int m_lo, int m_hi, int k_max, const T& a, const T& b
     constexpr unsigned nodes = N >= 20 && std::numeric_limits<T>::digits > 64 ? 2 * N : N;
     add_segment_moments_gauss<T, nodes, decltype(q_at), map>(m_lo, m_hi, k_max, q_at, t0, t1, out);
   }
+}
+
+/// M_{k,m} on [0, 1] (layout of segment_moments_gauss, m > 0: inverse and
+/// Cauchy kernels, q = α|P − Γ(t)|² + β) far from the segment: in double
+/// the series about the midpoint (far_field_series.hpp, remainder bound
+/// below 2^−53) where P itself is far enough from the midpoint for it,
+/// α|P − M|² = c_minus_beta − b + a/4 ≥ a/(4 ρ²_max) (then ρ² = a/(4 q(½))
+/// is smaller still), and where it is the cheaper (far_series_cheaper);
+/// else, and in other types, the 20-point far-field rule of
+/// segment_moments_gauss. The test is on P's position, not on q(½): a
+/// Cauchy kernel wide compared with |AB| (β ≫ α|AB|²) makes ρ small beside
+/// the segment too, where the generated ∇f takes the difference
+/// Σ w_k (M_{k+1} − t* M_k) of moments, which the rule's moments keep
+/// more exact (codegen/segment_program_builder.hpp, push_flat_rule).
+template <class T>
+void segment_moments_far_field(int m_lo, int m_hi, int k_max, const T& a, const T& b, const T& c,
+                               const T& c_minus_beta, T* out) {
+  if constexpr (std::is_same_v<T, double>) {
+    const double far = c_minus_beta - b + 0.25 * a;  // α|P − M|²
+    if (far > 0 && detail::far_series_applies(m_hi, 0.25 * a / far) &&
+        detail::segment_moments_far_series(m_lo, m_hi, k_max, a, b, c, out) != 0)
+      return;
+  }
+  segment_moments_gauss<T, 20>(m_lo, m_hi, k_max, a, b, c, T(0), T(1), out);
 }
 
 /// M_{k,m} on [t0, t1] (layout of segment_moments_gauss, m ≤ 0: compact
