@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -88,57 +89,57 @@ bool clip_compact_support(KernelFamily family, Input& in) {
   return true;
 }
 
+namespace {
+
+double bench_segment_length() {
+  double L = 0;
+  for (int c = 0; c < 3; ++c) L += (bench_b[c] - bench_a[c]) * (bench_b[c] - bench_a[c]);
+  return std::sqrt(L);
+}
+
+/// One draw of a point at `target` (± 10 %) from the bench segment, in any
+/// direction from a point of its middle half; none where the draw is
+/// rejected (a degenerate direction, a distance off the target, a compact
+/// support that misses the segment). Compact kernels get R = compact_R.
+std::optional<Input> point_near_distance(KernelFamily family, double target, double compact_R,
+                                         std::mt19937_64& random, std::uniform_real_distribution<double>& u) {
+  const double t = 0.5 + 0.5 * u(random);
+  Vec dir{u(random), u(random), u(random)};
+  const double n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  if (n > 1 || n < 1e-3) return std::nullopt;
+  const double r = target * (1.0 + 0.5 * u(random));
+  Vec p;
+  for (int c = 0; c < 3; ++c) p[c] = bench_a[c] + t * (bench_b[c] - bench_a[c]) + r * dir[c] / n;
+  const double distance = distance_to_segment(p);
+  if (distance < 0.9 * target || distance > 1.1 * target) return std::nullopt;
+  Input in = segment_input(family);
+  in.p = p;
+  if (kernels::family_facts(family).finite_support) in.R = compact_R;
+  if (!clip_compact_support(family, in)) return std::nullopt;
+  return in;
+}
+
+}  // namespace
+
 std::vector<Input> generic_region_inputs(KernelFamily family, double d) {
   std::mt19937_64 random(std::uint64_t(1000 * d) + 15);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  double L = 0;
-  for (int c = 0; c < 3; ++c) L += (bench_b[c] - bench_a[c]) * (bench_b[c] - bench_a[c]);
-  L = std::sqrt(L);
-  const double target = d * L;
+  const double L = bench_segment_length();
   std::vector<Input> inputs;
-  while (inputs.size() < generic_region_points) {
-    const double t = 0.5 + 0.5 * u(random);
-    Vec dir{u(random), u(random), u(random)};
-    const double n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-    if (n > 1 || n < 1e-3) continue;
-    const double r = target * (1.0 + 0.5 * u(random));
-    Vec p;
-    for (int c = 0; c < 3; ++c) p[c] = bench_a[c] + t * (bench_b[c] - bench_a[c]) + r * dir[c] / n;
-    const double distance = distance_to_segment(p);
-    if (distance < 0.9 * target || distance > 1.1 * target) continue;
-    Input in = segment_input(family);
-    in.p = p;
-    if (kernels::family_facts(family).finite_support) in.R = generic_region_compact_R * L;
-    if (!clip_compact_support(family, in)) continue;
-    inputs.push_back(in);
-  }
+  while (inputs.size() < generic_region_points)
+    if (auto in = point_near_distance(family, d * L, generic_region_compact_R * L, random, u)) inputs.push_back(*in);
   return inputs;
 }
 
 std::vector<Input> band_inputs(KernelFamily family, DistanceBand band) {
   std::mt19937_64 random(std::uint64_t(1000 * band.lo) + 29);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  double L = 0;
-  for (int c = 0; c < 3; ++c) L += (bench_b[c] - bench_a[c]) * (bench_b[c] - bench_a[c]);
-  L = std::sqrt(L);
+  const double L = bench_segment_length();
   std::vector<Input> inputs;
   while (inputs.size() < generic_region_points) {
-    // the target distance log-uniform in the band, then a point at ±10 % of it
+    // the target distance log-uniform in the band
     const double target = L * band.lo * std::pow(band.hi / band.lo, 0.5 + 0.5 * u(random));
-    const double t = 0.5 + 0.5 * u(random);
-    Vec dir{u(random), u(random), u(random)};
-    const double n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-    if (n > 1 || n < 1e-3) continue;
-    const double r = target * (1.0 + 0.5 * u(random));
-    Vec p;
-    for (int c = 0; c < 3; ++c) p[c] = bench_a[c] + t * (bench_b[c] - bench_a[c]) + r * dir[c] / n;
-    const double distance = distance_to_segment(p);
-    if (distance < 0.9 * target || distance > 1.1 * target) continue;
-    Input in = segment_input(family);
-    in.p = p;
-    if (kernels::family_facts(family).finite_support) in.R = (band.hi + 2) * L;
-    if (!clip_compact_support(family, in)) continue;
-    inputs.push_back(in);
+    if (auto in = point_near_distance(family, target, (band.hi + 2) * L, random, u)) inputs.push_back(*in);
   }
   return inputs;
 }

@@ -41,8 +41,8 @@ constexpr Case cases[] = {{KernelFamily::inverse, 3, 1}, {KernelFamily::inverse,
 /// 0, every degree (gsl/<kernel>/d:<d>/closed without QAG rows).
 constexpr int generic_max_degree = 8;
 
-void bench_closed(benchmark::State& state, const KernelRef* k, double d) {
-  const std::vector<Input> inputs = generic_region_inputs(k->family, d);
+/// Times f and ∇f of the closed form over `inputs`, one point per iteration.
+void time_closed(benchmark::State& state, const KernelRef* k, const std::vector<Input>& inputs) {
   std::size_t j = 0;
   for (auto _ : state) {
     Vec g;
@@ -50,6 +50,20 @@ void bench_closed(benchmark::State& state, const KernelRef* k, double d) {
     benchmark::DoNotOptimize(g);
     j = (j + 1) % inputs.size();
   }
+}
+
+/// Times GSL QAG-61 at `tolerance` over `inputs`, one point per iteration.
+void time_qag(benchmark::State& state, const KernelRef* k, const std::vector<Input>& inputs, double tolerance) {
+  std::size_t j = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        quadrature(k->family, k->degree, k->weight_degree, inputs[j], tolerance, true, AdaptiveRule::gsl_qag_61));
+    j = (j + 1) % inputs.size();
+  }
+}
+
+void bench_closed(benchmark::State& state, const KernelRef* k, double d) {
+  time_closed(state, k, generic_region_inputs(k->family, d));
 }
 
 void bench_qag(benchmark::State& state, const KernelRef* k, double d, double tolerance) {
@@ -66,12 +80,7 @@ void bench_qag(benchmark::State& state, const KernelRef* k, double d, double tol
     for (int c = 0; c < 3; ++c) diff_g = std::max(diff_g, std::abs(q.grad[c] - g[c]) / gn);
     evaluations += double(q.evaluations) / double(inputs.size());
   }
-  std::size_t j = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(
-        quadrature(k->family, k->degree, k->weight_degree, inputs[j], tolerance, true, AdaptiveRule::gsl_qag_61));
-    j = (j + 1) % inputs.size();
-  }
+  time_qag(state, k, inputs, tolerance);
   state.counters["integrand_evals"] = evaluations;
   state.counters["max_rel_diff_f"] = diff_f;
   state.counters["max_rel_diff_grad"] = diff_g;
@@ -80,24 +89,11 @@ void bench_qag(benchmark::State& state, const KernelRef* k, double d, double tol
 /// The closed form and QAG 1e-8 over one distance band (bench_support.hpp,
 /// distance_bands): gsl/<kernel>/band:<lo>-<hi>/<closed|qag:1e-08>.
 void bench_band_closed(benchmark::State& state, const KernelRef* k, DistanceBand band) {
-  const std::vector<Input> inputs = band_inputs(k->family, band);
-  std::size_t j = 0;
-  for (auto _ : state) {
-    Vec g;
-    benchmark::DoNotOptimize(k->f_and_grad(inputs[j], g));
-    benchmark::DoNotOptimize(g);
-    j = (j + 1) % inputs.size();
-  }
+  time_closed(state, k, band_inputs(k->family, band));
 }
 
 void bench_band_qag(benchmark::State& state, const KernelRef* k, DistanceBand band) {
-  const std::vector<Input> inputs = band_inputs(k->family, band);
-  std::size_t j = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(
-        quadrature(k->family, k->degree, k->weight_degree, inputs[j], 1e-8, true, AdaptiveRule::gsl_qag_61));
-    j = (j + 1) % inputs.size();
-  }
+  time_qag(state, k, band_inputs(k->family, band), 1e-8);
 }
 
 void register_all() {
