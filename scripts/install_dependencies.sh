@@ -18,6 +18,7 @@ packages=(
   libgsl-dev              # bench/ only: GSL's adaptive QAG (61-point rule), the quadrature baseline
   python3-matplotlib python3-numpy  # papers_figures/: 2-D figures (Agg backend) and their claim checks; verify/heatmap.py
   python3-yaml            # verify/check_cluster_files.py: parses the GitHub Actions sweep workflow (ctest verify_cluster_files)
+  libpng-dev              # skelconv skeletonize --report-image: the picture is written as PNG
   povray                  # papers_figures/render3d: headless shaded renders of meshes
   libopenvdb-dev libboost-iostreams-dev  # skelconv mesh --method grid (OpenVDB volumeToMesh; its CMake module needs Boost.Iostreams)
   glslang-tools           # tests/glsl: glslangValidator compiles generated/glsl as GLSL ES 3.00 (WebGL2) and 4.50 (ctest glsl_compiles)

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "exit_status.hpp"
-#include "text_output.hpp"
+#include "report_image.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/mesh_reader.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
@@ -123,6 +123,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "(default 0; about 4 × the noise amplitude for noisy samples)");
   command->add_option("--epsilon", options.epsilon, "Pavlidis tolerance × skeleton size (default 0.02)");
   command->add_option("--report", options.report_path, "Also mesh every stage and write its primitive counts, two-sided Hausdorff and RMS distances to the input, Euler characteristics and times (JSON)");
+  command->add_option("--report-image", options.report_image_path,
+                      "Also write a picture (PNG): the input, the skeleton, and its meshed surface coloured by the "
+                      "distance to the input, with the Hausdorff and RMS distances and the Euler characteristics");
   command->add_option_function<std::string>(
                "--report-stages", [&options](const std::string& which) { options.report_result_only = which == "result"; },
                "all (default): mesh and measure every stage; result: the result stage only (the others keep their "
@@ -149,6 +152,8 @@ int run_skeletonize(const SkeletonizeOptions& options) {
   return print_all_or_nothing([&] {
     if (std::filesystem::path(options.output_path).extension() != ".json")
       throw InputError("the skeleton file must end in .json", options.output_path);
+    if (options.report_image_path && std::filesystem::path(*options.report_image_path).extension() != ".png")
+      throw InputError("the report image must end in .png", *options.report_image_path);
     reconstruct::ReconstructOptions ro;
     ro.method = options.method == "curve"    ? reconstruct::SkeletonMethod::curve
                 : options.method == "medial" ? reconstruct::SkeletonMethod::medial
@@ -172,7 +177,7 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     }
     if (ro.progress) ro.progress(fmt::format("read {} vertices, {} triangles", input.vertices.size(), input.triangles.size()));
     const TriangleMesh samples = reconstruct::with_sample_noise(input, options.noise);
-    const reconstruct::Reconstruction r = [&] {
+    reconstruct::Reconstruction r = [&] {
       try {
         return reconstruct::reconstruct(samples, ro);
       } catch (const InputError& error) {
@@ -181,11 +186,24 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       }
     }();
     const std::string skeleton = reconstruct::skeleton_file_text(r.stages.back(), ro);
+    std::string image;
+    if (options.report_image_path) {
+      // Measured once: the JSON report reads the same measure.
+      reconstruct::Stage& result = r.stages.back();
+      if (!result.measured) {
+        if (ro.progress) ro.progress(fmt::format("measuring {} for the report image", result.name));
+        result.measured = reconstruct::measure(input, result, ro);
+      }
+      image = report_image_png(input, result, *result.measured, ro);
+    }
     std::string report;
     if (options.report_path) report = report_json(r, input, ro, ro.progress, options.report_result_only);
     write_text_atomically(skeleton, options.output_path);
     if (options.report_path) write_text_atomically(report, *options.report_path);
-    return summary(r, options.output_path, ro);
+    if (options.report_image_path) write_text_atomically(image, *options.report_image_path);
+    std::string text = summary(r, options.output_path, ro);
+    if (options.report_image_path) text += fmt::format("report_image: {}\n", *options.report_image_path);
+    return text;
   });
 }
 

@@ -30,6 +30,7 @@ struct SkeletonizeOptions {
   std::string input_path;
   std::string output_path;
   std::optional<std::string> report_path;
+  std::optional<std::string> report_image_path;  ///< --report-image: a PNG (report_image.hpp)
   bool report_result_only = false;  ///< --report-stages result: mesh and measure the result stage only
   std::string method = "auto";  ///< --method: auto, curve or medial (ReconstructOptions::method)
   std::size_t budget = 500;     ///< --budget: the medial path's primitives (MedialOptions::budget)

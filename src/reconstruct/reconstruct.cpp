@@ -497,10 +497,9 @@ SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, c
 StageMeasure measure(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options) {
   if (stage.measured) return *stage.measured;
   const auto start = std::chrono::steady_clock::now();
-  TriangleMesh mesh;
   StageMeasure m;
-  m.distance = measure_stage(surface, stage, options, 0.0, &mesh);
-  const MeshTopology topology = mesh_topology(mesh);
+  m.distance = measure_stage(surface, stage, options, 0.0, &m.surface);
+  const MeshTopology topology = mesh_topology(m.surface);
   m.euler_characteristic = topology.euler_characteristic;
   m.components = topology.components;
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

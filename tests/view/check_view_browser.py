@@ -42,6 +42,9 @@ import zlib
 
 import numpy as np
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+from read_png import read_png  # noqa: E402  (tests/read_png.py)
+
 CHROMIUM_FLAGS = ["--headless=new", "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                   "--no-sandbox", "--disable-gpu-sandbox", "--disable-background-networking",
                   "--disable-component-update", "--disable-sync", "--no-first-run", "--hide-scrollbars"]
@@ -50,49 +53,13 @@ DATA = re.compile(r'<script id="skeleton_data" type="application/json">\n(.*?)</
 VIEWS = [(0.6, 0.5), (0.0, 1.45), (1.5707963, 0.0)]
 
 
-def read_png(path):
-    """RGB(A) 8-bit non-interlaced PNG (what Chromium writes) as an array."""
-    data = pathlib.Path(path).read_bytes()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
-    at, chunks, header = 8, [], None
-    while at < len(data):
-        length, kind = struct.unpack(">I4s", data[at:at + 8])
-        body = data[at + 8:at + 8 + length]
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            chunks.append(body)
-        at += 12 + length
-    width, height, depth, colour, _, _, interlace = header
-    if depth != 8 or colour not in (2, 6) or interlace:
-        sys.exit(f"check_view_browser: {path}: unsupported PNG (depth {depth}, colour {colour})")
-    channels = 4 if colour == 6 else 3
-    raw = zlib.decompress(b"".join(chunks))
-    stride = width * channels
-    image = np.zeros((height, stride), dtype=np.int32)
-    previous = np.zeros(stride, dtype=np.int32)
-    for row in range(height):
-        kind = raw[row * (stride + 1)]
-        line = np.frombuffer(raw, dtype=np.uint8, count=stride, offset=row * (stride + 1) + 1).astype(np.int32)
-        out = np.zeros(stride, dtype=np.int32)
-        if kind in (0, 2):
-            out = (line + (previous if kind == 2 else 0)) & 255
-        else:  # 1 sub, 3 average, 4 Paeth: sequential along the row
-            for x in range(stride):
-                left = out[x - channels] if x >= channels else 0
-                up = previous[x]
-                up_left = previous[x - channels] if x >= channels else 0
-                if kind == 1:
-                    predictor = left
-                elif kind == 3:
-                    predictor = (left + up) // 2
-                else:
-                    p = left + up - up_left
-                    pa, pb, pc = abs(p - left), abs(p - up), abs(p - up_left)
-                    predictor = left if pa <= pb and pa <= pc else (up if pb <= pc else up_left)
-                out[x] = (line[x] + predictor) & 255
-        image[row] = out
-        previous = out
+def read_png_array(path):
+    """The RGB channels of a PNG (what Chromium writes) as an array."""
+    try:
+        width, height, channels, rows = read_png(pathlib.Path(path).read_bytes())
+    except ValueError as error:
+        sys.exit(f"check_view_browser: {path}: {error}")
+    image = np.frombuffer(b"".join(rows), dtype=np.uint8).astype(np.int32)
     return image.reshape(height, width, channels)[:, :, :3]
 
 
@@ -205,7 +172,7 @@ def check_skeleton(args, skeleton, scratch, out):
         if png.exists():
             png.unlink()
         screenshot(args.chromium, page, query, width, height, png, pathlib.Path(scratch) / "profile")
-        page_mask = (read_png(png)[:, :, 1:] < 250).any(axis=2)
+        page_mask = (read_png_array(png)[:, :, 1:] < 250).any(axis=2)
         mask = mesh_mask(vertices, faces, data, (yaw, pitch, data["distance"]), width, height)
         write_mask_png(mask ^ page_mask, pathlib.Path(out) / f"{name}_view{k}_difference.png")
         iou = silhouette_iou(mask, page_mask)

@@ -139,9 +139,11 @@ struct ReconstructOptions {
 
 /// A stage's skeleton meshed at the default size and measured against the
 /// input (measure): distances, the Euler characteristic and the connected
-/// components of its surface, and the seconds meshing and measuring took.
+/// components of its surface, the surface itself, and the seconds meshing
+/// and measuring took.
 struct StageMeasure {
   SurfaceDistance distance;
+  TriangleMesh surface;  ///< the skeleton's iso-surface, meshed at the default size
   long long euler_characteristic = 0;
   std::size_t components = 0;
   double seconds = 0.0;
