@@ -28,6 +28,7 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/implicit_field.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
+#include "skelconv/mesh/surface_projection.hpp"
 #include "skelconv/mesh/surface_seeds.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
 
@@ -431,6 +432,46 @@ TEST(MeshCommand, WritesAsciiPlyAndObjWithNormalsAndPrintsTheTopology) {
   EXPECT_EQ(v, vn);
   EXPECT_NE(output.find("triangles: " + std::to_string(f) + "\n"), std::string::npos) << output;
   std::filesystem::remove_all(directory);
+}
+
+// A field of compact support, f(p) = (1 − |p|²)³ inside the unit ball, 0
+// outside: the level 1/2 is the sphere of radius √(1 − 2^(−1/3)).
+ImplicitField compact_bump() {
+  ImplicitField field;
+  field.value_and_gradient = [](const Vec3& p) {
+    const double u = 1.0 - p.squaredNorm();
+    if (u <= 0.0) return FieldSample{0.0, Vec3::Zero()};
+    return FieldSample{u * u * u, -6.0 * u * u * p};
+  };
+  field.value = [](const Vec3& p) { return std::pow(std::max(0.0, 1.0 - p.squaredNorm()), 3); };
+  return field;
+}
+
+// A vertex outside every support (f = 0, ∇f = 0: Newton has no direction)
+// but within max_step of the surface ends on it, within the tolerance, with
+// the outward normal; one farther than max_step is still an error.
+TEST(MeshProjection, AVertexOutsideEverySupportReachesTheSurfaceByBisection) {
+  const ImplicitField field = compact_bump();
+  const double radius = std::sqrt(1.0 - std::cbrt(0.5));
+  const ProjectionOptions options{.tolerance = 1e-10, .max_step = 1.0};
+  TriangleMesh mesh;
+  mesh.vertices = {Vec3(1.2, 0.0, 0.0), Vec3(0.0, -0.3, 1.1)};
+  mesh.triangles = {{0, 1, 0}};
+  project_to_surface(mesh, field, 0.5, options);
+  for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
+    EXPECT_NEAR(mesh.vertices[k].norm(), radius, options.tolerance) << "vertex " << k;
+    EXPECT_NEAR(mesh.normals[k].dot(mesh.vertices[k].normalized()), 1.0, 1e-12) << "vertex " << k;
+  }
+  TriangleMesh far;
+  far.vertices = {Vec3(3.0, 0.0, 0.0)};
+  far.triangles = {{0, 0, 0}};
+  try {
+    project_to_surface(far, field, 0.5, options);
+    ADD_FAILURE() << "a vertex 2.5 from the surface with max_step 1 was projected";
+  } catch (const EvaluationError& error) {
+    EXPECT_NE(std::string(error.what()).find("no point on the other side of the level"), std::string::npos)
+        << error.what();
+  }
 }
 
 }  // namespace

@@ -8,6 +8,11 @@
 // step is never longer than `max_step` and is halved while it does not
 // reduce |f − iso| (Newton from a vertex already close to the surface
 // converges quadratically; the safeguards only matter near critical points).
+// Where Newton cannot go on (outside every compact support f = 0 and
+// ∇f = 0; or steps that stop reducing |f − iso| at a kink), a point on the
+// other side of the level is looked for within `max_step` and the segment
+// to it bisected down to `tolerance`: the surface crosses it, so the vertex
+// ends within the tolerance of the surface all the same.
 // The normal written is the exact outward unit normal −∇f/|∇f| at the final
 // position (f is larger inside).
 #pragma once
@@ -25,7 +30,8 @@ struct ProjectionOptions {
 
 /// Projects every vertex of `mesh` onto f = iso and fills mesh.normals.
 /// Throws EvaluationError naming the vertex if one cannot be brought within
-/// the tolerance (zero gradient, no convergence).
+/// the tolerance (no point on the other side of the level within max_step,
+/// or a zero gradient at the end).
 void project_to_surface(TriangleMesh& mesh, const ImplicitField& field, double iso, const ProjectionOptions& options);
 
 }  // namespace skelconv
