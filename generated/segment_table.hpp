@@ -22,8 +22,8 @@ namespace skelconv::generated {
 /// segment alone into an array of `prepared_size` values, once per segment, and
 /// `f_at`, `grad_at`, `f_and_grad_at` read it at each point. `f`, `grad` and
 /// `f_and_grad` do both for one point (prepared_f below). The ops_* counts are
-/// per point; ops_prepare is the preparation's, once per segment. Entries not
-/// split so (derived_segment_kernels.hpp) have prepared_size 0 and no `prepare`.
+/// per point; ops_prepare is the preparation's, once per segment. The derived
+/// Gaussian entry (derived_segment_kernels.hpp) is not split: no `prepare`.
 template <class T>
 struct SegmentKernel {
   KernelFamily family;

@@ -167,7 +167,7 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
 
 namespace {
 
-// The derived kernels (derived_segment_kernels.hpp) have no preparation:
+// The derived Gaussian kernel (derived_segment_kernels.hpp) has no preparation:
 // they read the whole SegmentInput (`segment`, with the point's P and clip)
 // at each point.
 [[gnu::always_inline]] inline SegmentInput<double> input_at(const SegmentInput<double>& segment,

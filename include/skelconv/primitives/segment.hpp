@@ -110,7 +110,8 @@ class Segment {
   /// P in the frame, and for a compact kernel the clip [t0, t1] of its support.
   Case locate(const Vec3& p, SegmentPoint<double>& point) const;
   /// The generated f, ∇f or both at `point`: from prepared_ where the kernel
-  /// is split (every generated one), else from input_ (the derived kernels).
+  /// is split (every generated one, and the compact combinations of soft and
+  /// Wyvill), else from input_ (the Gaussian).
   double call_f(const SegmentPoint<double>& point) const;
   std::array<double, 3> call_grad(const SegmentPoint<double>& point) const;
   double call_f_and_grad(const SegmentPoint<double>& point, std::array<double, 3>& g) const;
