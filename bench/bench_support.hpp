@@ -36,7 +36,8 @@ struct KernelRef {
   Vec (*grad)(const Input&);
   double (*f_and_grad)(const Input&, Vec&);
   std::string name;  // e.g. "segment_cauchy_i4_w1"
-  OpCount ops_f, ops_grad, ops_f_and_grad;
+  OpCount ops_f, ops_grad, ops_f_and_grad;  // per point
+  OpCount ops_prepare;                       // once per segment
 };
 
 /// Every generated kernel, in the table's order.

@@ -138,7 +138,8 @@ int write_opcounts(const char* path) {
     const KernelRef& k = kernels[j];
     out << "  {\"name\": \"" << k.name << "\", \"family\": \"" << family_name(k.family) << "\", \"degree\": " << k.degree
         << ", \"weight_degree\": " << k.weight_degree << ", \"f\": " << json_ops(k.ops_f)
-        << ", \"grad\": " << json_ops(k.ops_grad) << ", \"f_and_grad\": " << json_ops(k.ops_f_and_grad) << "}"
+        << ", \"grad\": " << json_ops(k.ops_grad) << ", \"f_and_grad\": " << json_ops(k.ops_f_and_grad)
+        << ", \"prepare\": " << json_ops(k.ops_prepare) << "}"
         << (j + 1 < kernels.size() ? ",\n" : "\n");
   }
   out << "]\n";

@@ -13,7 +13,9 @@
 //                            or segment_cauchy_i4_w0) for f+∇f,
 //                            called directly on inputs prepared once per
 //                            primitive (frame points by one power-of-two
-//                            product), summed over the primitives;
+//                            product; the classical kernel's `prepare`
+//                            once, then its per-point part), summed over
+//                            the primitives;
 //   generated_f/N            the same, f alone;
 //   value_and_gradient/N     Skeleton::value_and_gradient, point by point;
 //   batch/N                  evaluate_batch (field/batch.hpp), one thread,
@@ -43,6 +45,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "bench_main.hpp"
@@ -130,11 +133,13 @@ const std::vector<Vec3>& points_of(std::size_t primitives) {
 }
 
 /// One primitive as the generated function sees it: its input in its own
-/// frame (scaled_frame.hpp) but for P, and the factor 2^−e of that frame.
+/// frame (scaled_frame.hpp) but for P, the factor 2^−e of that frame, and
+/// for a classical segment its kernel's preparation (`prepare`, once).
 template <class Input>
 struct RawPrimitive {
   Input input;
   double to_frame = 1;
+  std::vector<double> prepared;
 };
 
 std::vector<RawPrimitive<ScalisSegmentInput<double>>> raw_scalis(std::size_t primitives) {
@@ -165,6 +170,9 @@ std::vector<RawPrimitive<SegmentInput<double>>> raw_classical(std::size_t primit
     r.input.w = {1.0, 0.0, 0.0, 0.0};
     r.input.s = frame.scaled(s.kernel().s, -2);
     r.to_frame = std::ldexp(1.0, -frame.exponent());
+    const auto* kernel = find_any_segment_kernel<double>(KernelFamily::cauchy, 4, 0);
+    r.prepared.resize(kernel->prepared_size);
+    kernel->prepare(r.input, r.prepared.data());
     raw.push_back(r);
   }
   return raw;
@@ -177,6 +185,17 @@ double run_generated(const Kernel* kernel, const std::vector<RawPrimitive<Input>
   double sum = 0;
   for (const Vec3& p : points) {
     for (const RawPrimitive<Input>& r : raw) {
+      if constexpr (std::is_same_v<Input, SegmentInput<double>>) {
+        // The classical segment's per-point part, on its preparation.
+        const SegmentPoint<double> point{{p.x() * r.to_frame, p.y() * r.to_frame, p.z() * r.to_frame}};
+        if constexpr (with_gradient) {
+          std::array<double, 3> g;
+          sum += kernel->f_and_grad_at(r.prepared.data(), point, g) + g[0];
+        } else {
+          sum += kernel->f_at(r.prepared.data(), point);
+        }
+        continue;
+      }
       Input input = r.input;
       input.p = {p.x() * r.to_frame, p.y() * r.to_frame, p.z() * r.to_frame};
       if constexpr (with_gradient) {

@@ -322,9 +322,16 @@ def load_results(args):
     if os.path.exists(args.opcounts_csv):
         with open(args.opcounts_csv) as f:
             for row in csv.DictReader(f):
-                op_generic[row["function"]] = tuple(int(row[c]) for c in ("add", "mul", "div", "sqrt", "atan", "log"))
+                def counts(prefix):
+                    return tuple(int(row[prefix + c]) for c in ("add", "mul", "div", "sqrt", "atan", "log"))
+                # Per point where the generator splits the function (point_*:
+                # without the preparation once per primitive, primitive_*),
+                # else one evaluation.
+                split = bool(row.get("point_add"))
+                op_generic[row["function"]] = counts("point_") if split else counts("")
                 if "longest_add" in row:
-                    longest[row["function"]] = tuple(int(row["longest_" + c]) for c in ("add", "mul", "div", "sqrt", "atan", "log"))
+                    longest[row["function"]] = (tuple(a - b for a, b in zip(counts("longest_"), counts("primitive_")))
+                                                if split else counts("longest_"))
     machine = ""
     if os.path.exists(os.path.join(res, "machine.txt")):
         with open(os.path.join(res, "machine.txt")) as f:
@@ -596,8 +603,10 @@ def table4_section(data, md, goals):
     """§6: operation counts against Zanni et al. 2013 Table 4, and where the extra operations go."""
     ops_by_name, scalis_compact, op_generic, longest, generated = data.ops_by_name, data.scalis_compact, data.op_generic, data.longest, data.generated
     md.append("## 6. Operation counts against Zanni et al. 2013, Table 4\n")
-    md.append("Format: +, ×, / (√, atan, ln). Ours: the generated function's count of its generic path (the table's "
-              "`OpCount`), with the longest path (stable-form branch) from generated/opcounts.csv when it differs; "
+    md.append("Format: +, ×, / (√, atan, ln). Ours: the generated function's count of its generic path per point (the "
+              "table's `OpCount`: for the classical segments, what depends on the segment alone is prepared once "
+              "per segment and counted apart, the `primitive_*` columns of generated/opcounts.csv), with the longest "
+              "path (stable-form branch) from generated/opcounts.csv when it differs; "
               "the longest path counts every helper call (Gauss rules and panels, `J_downward`, "
               "`J_upward_compact`, `segment_moments_beyond_end`) at its longest loop, as measured on the helper "
               "itself (codegen/helper_costs.hpp). Counting rules: "
@@ -706,13 +715,15 @@ def write_summary(res, md, goals):
 def write_opcounts(res, opcounts):
     """OPCOUNTS.md: every generated kernel's operation count."""
     rows = [[k["name"], k["family"], k["degree"], k["weight_degree"], fmt_ops(ops_tuple(k["f"])),
-             fmt_ops(ops_tuple(k["grad"])), fmt_ops(ops_tuple(k["f_and_grad"]))] for k in opcounts]
+             fmt_ops(ops_tuple(k["grad"])), fmt_ops(ops_tuple(k["f_and_grad"])),
+             fmt_ops(ops_tuple(k["prepare"])) if "prepare" in k else "–"] for k in opcounts]
     with open(os.path.join(res, "OPCOUNTS.md"), "w") as f:
         f.write("# Operation counts of every generated kernel\n\n"
                 "From the generated table (`OpCount` of `generated/segment_table.hpp`, generic path), written by "
-                "`skelconv_bench_counts --opcounts`. Format: +, ×, / (√, atan, ln); counting rules in "
-                "include/skelconv/kernels/op_count.hpp.\n\n")
-        f.write(table(["function", "family", "i", "weight degree", "f", "∇f", "f and ∇f"], rows))
+                "`skelconv_bench_counts --opcounts`: f, ∇f and both per point (the per-point functions), and the "
+                "preparation of what depends on the segment alone, once per segment (`<kernel>_prepare`). "
+                "Format: +, ×, / (√, atan, ln); counting rules in include/skelconv/kernels/op_count.hpp.\n\n")
+        f.write(table(["function", "family", "i", "weight degree", "f", "∇f", "f and ∇f", "per segment"], rows))
 
 
 def main():

@@ -47,12 +47,45 @@ namespace {
 
 struct EmittedKernel {
   SegmentKernelSpec spec;
-  OpCount ops[3];          // f, grad, f_and_grad: generic path
-  OpCount ops_longest[3];  // the same, longest path
+  OpCount ops[3];            // f, grad, f_and_grad per point: generic path
+  OpCount ops_longest[3];    // the same, longest path
+  OpCount ops_primitive[3];  // what each of them reads from the preparation, once per primitive
+  OpCount ops_prepare;       // the whole preparation (what any of the three reads)
+  std::size_t prepared_size = 0;
 };
 
-std::string function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code) {
-  return kernel_function_text(spec.name(), spec.equation(), "SegmentInput", which, code);
+// A segment kernel's inputs that are the same at every point: all but P
+// and the compact clip [t0, t1] (which depends on P).
+bool per_primitive_input(const std::string& cpp) {
+  return cpp.rfind("in.p[", 0) != 0 && cpp != "in.t0" && cpp != "in.t1";
+}
+// The per-point inputs, read from the evaluation's SegmentPoint: in.p[0] → point.p[0].
+std::string point_input(const std::string& cpp) { return "point" + cpp.substr(2); }
+
+constexpr const char* kEvaluateParameters = "const T* pre, const SegmentPoint<T>& point";
+
+// The preparation of one kernel: what its f, ∇f and both read that depends
+// on the segment alone, into pre[0 .. size).
+std::string prepare_function_text(const SegmentKernelSpec& spec, std::size_t size, const EmittedCode& code) {
+  std::ostringstream os;
+  os << "/// How many values " << spec.name() << "_prepare writes.\n"
+     << "inline constexpr std::size_t " << spec.name() << "_prepared_size = " << size << ";\n\n"
+     << "/// What " << spec.name() << "_f, _grad and _f_and_grad read that depends on the segment\n"
+     << "/// alone (A, B, the weight, the kernel's parameter), into pre[0 .. " << size << "): computed once per\n"
+     << "/// segment; in.p, in.t0 and in.t1 are not read.\n"
+     << "/// Operations: " << ops_text(code.ops) << ".\n"
+     << "template <class T>\n"
+     << "void " << spec.name() << "_prepare(const SegmentInput<T>& in, T* pre) {\n"
+     << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n"
+     << code.body << "}\n\n";
+  return os.str();
+}
+
+std::string function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code,
+                          const PreparedQuantities& prepared) {
+  return kernel_function_text_reading(
+      spec.name(), spec.equation(), kEvaluateParameters, which, code, prepared.read_fields_text(code.inputs_read),
+      "/// At one point, from the segment's pre[] (" + spec.name() + "_prepare); operations per point.\n");
 }
 
 // f and ∇f on the generic forms only: straight-line code whose operations
@@ -79,19 +112,27 @@ std::string generic_function_text(const SegmentKernelSpec& spec, const EmittedCo
 std::string kernel_function_text(const std::string& kernel_name, const std::string& equation,
                                  const std::string& input_type, int which, const EmittedCode& code,
                                  const std::string& prologue) {
+  return kernel_function_text_reading(kernel_name, equation, "const " + input_type + "<T>& in", which, code, prologue,
+                                      "");
+}
+
+std::string kernel_function_text_reading(const std::string& kernel_name, const std::string& equation,
+                                         const std::string& parameters, int which, const EmittedCode& code,
+                                         const std::string& prologue, const std::string& note) {
   const std::string name = kernel_name + "_" + kFunctionSuffix[which];
   std::ostringstream os;
   static const char* kWhat[] = {"the field", "its gradient ∇_P f", "the field and its gradient"};
   os << "/// " << kWhat[which] << ", where\n"
      << "///     " << equation << "\n"
+     << note
      << "/// Operations: " << ops_text(code.ops) << " (generic form).\n";
   if (!(code.ops_longest == code.ops)) os << "/// Longest path: " << ops_text(code.ops_longest) << ".\n";
   os
      << "template <class T>\n";
   switch (which) {
-    case 0: os << "T " << name << "(const " << input_type << "<T>& in) {\n"; break;
-    case 1: os << "std::array<T, 3> " << name << "(const " << input_type << "<T>& in) {\n"; break;
-    default: os << "T " << name << "(const " << input_type << "<T>& in, std::array<T, 3>& grad) {\n"; break;
+    case 0: os << "T " << name << "(" << parameters << ") {\n"; break;
+    case 1: os << "std::array<T, 3> " << name << "(" << parameters << ") {\n"; break;
+    default: os << "T " << name << "(" << parameters << ", std::array<T, 3>& grad) {\n"; break;
   }
   os << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n";
   if (which != 1) os << "  T f;\n";
@@ -102,13 +143,23 @@ std::string kernel_function_text(const std::string& kernel_name, const std::stri
 }
 
 std::string opcount_csv_row(const std::string& kernel_name, const std::string& family, int degree, int weight_degree,
-                            int which, const OpCount& o, const OpCount& l) {
+                            int which, const OpCount& o, const OpCount& l, const OpCount* point,
+                            const OpCount* primitive) {
   std::ostringstream csv;
+  auto cells = [&](const OpCount* c) {
+    if (c)
+      csv << ',' << c->add << ',' << c->mul << ',' << c->div << ',' << c->sqrt << ',' << c->atan << ',' << c->log
+          << ',' << c->other;
+    else
+      csv << ",,,,,,,";
+  };
   csv << kernel_name << '_' << kFunctionSuffix[which] << ',' << family << ',' << degree << ',' << weight_degree << ','
-      << kFunctionSuffix[which] << ',' << o.add << ',' << o.mul << ',' << o.div << ',' << o.sqrt << ',' << o.atan
-      << ',' << o.log << ',' << o.other;
-  csv << ',' << l.add << ',' << l.mul << ',' << l.div << ',' << l.sqrt << ',' << l.atan << ',' << l.log << ','
-      << l.other << '\n';
+      << kFunctionSuffix[which];
+  cells(&o);
+  cells(&l);
+  cells(point);
+  cells(primitive);
+  csv << '\n';
   return csv.str();
 }
 
@@ -133,24 +184,48 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
   std::vector<EmittedKernel> kernels;
   std::map<KernelFamily, std::string> family_bodies;
 
+  // The programs first, in the order of the kernels, and the split into a
+  // preparation and a per-point part after the other writers: GiNaC orders
+  // terms by its symbols' serial numbers, and the split makes symbols of
+  // its own, which would otherwise reorder the polygon and SCALIS code.
+  struct Programs {
+    StraightLineProgram outputs[3];  // f, grad, f_and_grad
+    std::string generic_text;
+  };
+  std::vector<Programs> programs;
   for (const SegmentKernelSpec& spec : request.segment_kernels) {
-    EmittedKernel k{spec, {}, {}};
-    std::string& body = family_bodies[spec.family];
-    for (int which = 0; which < 3; ++which) {
-      const EmittedCode code = build_segment_program(spec, kOutputs[which]).emit();
-      k.ops[which] = code.ops;
-      k.ops_longest[which] = code.ops_longest;
-      body += function_text(spec, which, code);
-    }
-    body += generic_function_text(
+    Programs& p = programs.emplace_back();
+    for (int which = 0; which < 3; ++which) p.outputs[which] = build_segment_program(spec, kOutputs[which]);
+    p.generic_text = generic_function_text(
         spec, build_segment_program(spec, SegmentOutputs::value_and_gradient).emit(Forms::generic_only));
-    kernels.push_back(k);
   }
 
   // Polygon edges and SCALIS segments: their own headers and tables
   // (polygon_writer.cpp, scalis_segment_writer.cpp).
   const std::string polygon_csv_rows = write_polygon_files(request, folder);
   const std::string scalis_csv_rows = write_scalis_segment_files(request, folder);
+
+  for (std::size_t i = 0; i < request.segment_kernels.size(); ++i) {
+    const SegmentKernelSpec& spec = request.segment_kernels[i];
+    EmittedKernel k{spec, {}, {}, {}, {}};
+    std::string& body = family_bodies[spec.family];
+    // f and ∇f first: it reads the most, so its quantities come first in pre[].
+    PreparedQuantities prepared(per_primitive_input);
+    EmittedCode code[3];
+    for (const int which : {2, 0, 1}) code[which] = prepared.per_point_part(programs[i].outputs[which], point_input).emit();
+    const EmittedCode preparation = prepared.prepare_program().emit();
+    k.ops_prepare = preparation.ops;
+    k.prepared_size = prepared.size();
+    body += prepare_function_text(spec, prepared.size(), preparation);
+    for (int which = 0; which < 3; ++which) {
+      k.ops[which] = code[which].ops;
+      k.ops_longest[which] = code[which].ops_longest;
+      k.ops_primitive[which] = prepared.prepare_program(&code[which].inputs_read).emit().ops;
+      body += function_text(spec, which, code[which], prepared);
+    }
+    body += programs[i].generic_text;
+    kernels.push_back(k);
+  }
 
   // One header per family: its functions, then its part of the lookup
   // table (segment_<family>_kernels<T>(), declared in segment_table.hpp).
@@ -176,10 +251,18 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
     for (const EmittedKernel& k : kernels) {
       if (k.spec.family != family) continue;
       const std::string n = k.spec.name();
+      const std::string size = n + "_prepared_size";
+      auto at_one_point = [&](const char* wrapper, int which) {
+        return "&" + std::string(wrapper) + "<T, " + size + ", &" + n + "_prepare<T>, &" + n + "_" +
+               kFunctionSuffix[which] + "<T>>";
+      };
       os << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", "
-         << k.spec.weight_degree << ", &" << n << "_f<T>, &" << n << "_grad<T>, &" << n << "_f_and_grad<T>, \""
+         << k.spec.weight_degree << ",\n       " << at_one_point("prepared_f", 0) << ",\n       "
+         << at_one_point("prepared_grad", 1) << ",\n       " << at_one_point("prepared_f_and_grad", 2) << ",\n       \""
          << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", "
-         << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << "},\n";
+         << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << ",\n       "
+         << ops_initializer(k.ops_prepare) << ", " << size << ", &" << n << "_prepare<T>, &" << n << "_f<T>, &" << n
+         << "_grad<T>, &" << n << "_f_and_grad<T>},\n";
     }
     os << "  };\n  return table;\n}\n\n"
        << "}  // namespace skelconv::generated\n";
@@ -198,13 +281,39 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "#include <skelconv/primitives/segment_input.hpp>\n\n"
         << "namespace skelconv::generated {\n\n"
         << "/// One generated kernel: f, ∇f and both, with their operation counts.\n"
+        << "/// A generated kernel is split in two: `prepare` computes what depends on the\n"
+        << "/// segment alone into an array of `prepared_size` values, once per segment, and\n"
+        << "/// `f_at`, `grad_at`, `f_and_grad_at` read it at each point. `f`, `grad` and\n"
+        << "/// `f_and_grad` do both for one point (prepared_f below). The ops_* counts are\n"
+        << "/// per point; ops_prepare is the preparation's, once per segment. The derived\n"
+        << "/// Gaussian entry (derived_segment_kernels.hpp) is not split: no `prepare`.\n"
         << "template <class T>\nstruct SegmentKernel {\n"
         << "  KernelFamily family;\n  int degree;\n  int weight_degree;\n"
         << "  T (*f)(const SegmentInput<T>&);\n"
         << "  std::array<T, 3> (*grad)(const SegmentInput<T>&);\n"
         << "  T (*f_and_grad)(const SegmentInput<T>&, std::array<T, 3>&);\n"
         << "  const char* name;\n  const char* equation;\n"
-        << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n";
+        << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n"
+        << "  OpCount ops_prepare{};\n"
+        << "  std::size_t prepared_size = 0;\n"
+        << "  void (*prepare)(const SegmentInput<T>&, T*) = nullptr;\n"
+        << "  T (*f_at)(const T*, const SegmentPoint<T>&) = nullptr;\n"
+        << "  std::array<T, 3> (*grad_at)(const T*, const SegmentPoint<T>&) = nullptr;\n"
+        << "  T (*f_and_grad_at)(const T*, const SegmentPoint<T>&, std::array<T, 3>&) = nullptr;\n};\n\n"
+        << "/// A split kernel's f, ∇f, or both at one point of a SegmentInput: its\n"
+        << "/// preparation, then its evaluation (one entry point for the callers that\n"
+        << "/// evaluate a segment once: the verifier, the tests, the benchmarks).\n"
+        << "template <class T>\nSegmentPoint<T> point_of(const SegmentInput<T>& in) {\n"
+        << "  return {in.p, in.t0, in.t1};\n}\n"
+        << "template <class T, std::size_t N, auto prepare, auto evaluate>\n"
+        << "T prepared_f(const SegmentInput<T>& in) {\n"
+        << "  std::array<T, N> pre;\n  prepare(in, pre.data());\n  return evaluate(pre.data(), point_of(in));\n}\n"
+        << "template <class T, std::size_t N, auto prepare, auto evaluate>\n"
+        << "std::array<T, 3> prepared_grad(const SegmentInput<T>& in) {\n"
+        << "  std::array<T, N> pre;\n  prepare(in, pre.data());\n  return evaluate(pre.data(), point_of(in));\n}\n"
+        << "template <class T, std::size_t N, auto prepare, auto evaluate>\n"
+        << "T prepared_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {\n"
+        << "  std::array<T, N> pre;\n  prepare(in, pre.data());\n  return evaluate(pre.data(), point_of(in), grad);\n}\n\n";
   for (const auto& [family, body] : family_bodies)
     table << "/// The " << family_name(family) << " family's kernels (defined in generated/segment_"
           << family_name(family) << ".hpp).\n"
@@ -227,12 +336,22 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
 
   // The operation counts, machine-readable.
   std::ostringstream csv;
+  // One evaluation (the first two groups) is the preparation of what the
+  // output reads plus the per-point code; point_* is the per-point code
+  // alone and primitive_* that preparation, once per primitive. Rows
+  // without the split (polygon edges, SCALIS) leave the last two empty.
   csv << "function,family,degree,weight_degree,outputs,add,mul,div,sqrt,atan,log,other,"
-         "longest_add,longest_mul,longest_div,longest_sqrt,longest_atan,longest_log,longest_other\n";
+         "longest_add,longest_mul,longest_div,longest_sqrt,longest_atan,longest_log,longest_other,"
+         "point_add,point_mul,point_div,point_sqrt,point_atan,point_log,point_other,"
+         "primitive_add,primitive_mul,primitive_div,primitive_sqrt,primitive_atan,primitive_log,primitive_other\n";
   for (const EmittedKernel& k : kernels)
-    for (int which = 0; which < 3; ++which)
+    for (int which = 0; which < 3; ++which) {
+      OpCount one = k.ops[which], longest = k.ops_longest[which];
+      one += k.ops_primitive[which];
+      longest += k.ops_primitive[which];
       csv << opcount_csv_row(k.spec.name(), std::string(family_name(k.spec.family)), k.spec.degree,
-                             k.spec.weight_degree, which, k.ops[which], k.ops_longest[which]);
+                             k.spec.weight_degree, which, one, longest, &k.ops[which], &k.ops_primitive[which]);
+    }
   csv << polygon_csv_rows << scalis_csv_rows;
   write_file(folder / "opcounts.csv", csv.str());
 }

@@ -39,9 +39,18 @@ std::string ops_initializer(const OpCount& o);
 std::string kernel_function_text(const std::string& kernel_name, const std::string& equation,
                                  const std::string& input_type, int which, const EmittedCode& code,
                                  const std::string& prologue = "");
-/// One row of opcounts.csv: generic-path counts `o`, longest-path counts `l`.
+/// The same with the C++ parameter list `parameters` (before `grad`), and
+/// `note` (comment lines) after the equation.
+std::string kernel_function_text_reading(const std::string& kernel_name, const std::string& equation,
+                                         const std::string& parameters, int which, const EmittedCode& code,
+                                         const std::string& prologue, const std::string& note);
+/// One row of opcounts.csv: one evaluation's generic-path counts `o` and
+/// longest-path counts `l`; for a kernel split into a preparation and a
+/// per-point evaluation, the per-point counts and the preparation's (once
+/// per primitive), else empty cells.
 std::string opcount_csv_row(const std::string& kernel_name, const std::string& family, int degree, int weight_degree,
-                            int which, const OpCount& o, const OpCount& l);
+                            int which, const OpCount& o, const OpCount& l, const OpCount* point = nullptr,
+                            const OpCount* primitive = nullptr);
 void write_file(const std::filesystem::path& path, const std::string& text);
 
 /// Writes generated/polygon_{inverse,cauchy,compact}.hpp and

@@ -16,8 +16,10 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -79,6 +81,8 @@ struct EmittedCode {
   /// generic_only: a C++ bool expression, true where the generic forms are
   /// the ones the full program would take.
   std::string generic_applies = "true";
+  /// The C++ text of every input the code reads.
+  std::set<std::string> inputs_read;
 };
 
 /// What `emit` writes.
@@ -119,6 +123,54 @@ class StraightLineProgram {
   std::map<GiNaC::symbol, GiNaC::symbol, GiNaC::ex_is_less> square_of_root_;
 
   friend class Emitter;
+  friend class PreparedQuantities;
+};
+
+/// The quantities of one kernel that depend on the primitive only: every
+/// input `per_primitive` accepts, every definition computed from those
+/// alone, and every sub-expression of the per-point code (a whole term or
+/// factor, or the per-primitive terms of a sum) that reads nothing else. `per_point_part` takes them out of a
+/// program, which then reads them from the array `pre` (`const T name =
+/// pre[i];`); `prepare_program` computes them, once per primitive. One
+/// instance serves a kernel's f, ∇f and both, so that one array holds what
+/// any of the three reads: quantities are shared by name (the three programs
+/// are built from fresh symbols of the same names).
+class PreparedQuantities {
+ public:
+  explicit PreparedQuantities(std::function<bool(const std::string& cpp)> per_primitive_input)
+      : per_primitive_input_(std::move(per_primitive_input)) {}
+
+  /// `program` without its per-primitive work; its per-point inputs are
+  /// read from `rename(cpp)` instead of `cpp`.
+  StraightLineProgram per_point_part(const StraightLineProgram& program,
+                                     const std::function<std::string(const std::string&)>& rename);
+
+  std::size_t size() const { return fields_.size(); }
+  /// The local name the per-point code gives pre[i].
+  const std::string& field_name(std::size_t i) const { return fields_[i].name; }
+  /// `const T name = pre[i];` for each field in `read` (EmittedCode::inputs_read), in index order.
+  std::string read_fields_text(const std::set<std::string>& read) const;
+  /// The program that writes `pre[i] = …;` for every field, or only for
+  /// those in `only` (to count what one output needs).
+  StraightLineProgram prepare_program(const std::set<std::string>* only = nullptr) const;
+
+ private:
+  struct Field {
+    std::string name;
+    GiNaC::ex value;  // in the canonical symbols
+  };
+  GiNaC::ex canonical(const GiNaC::ex& e) const;
+  std::string field_for(const GiNaC::ex& e, const std::string& name);
+
+  std::function<bool(const std::string&)> per_primitive_input_;
+  std::map<std::string, GiNaC::symbol> canonical_;            // by name: the first program's symbols
+  std::vector<std::pair<GiNaC::symbol, std::string>> inputs_;  // per-primitive inputs, canonical
+  std::vector<std::pair<GiNaC::symbol, GiNaC::ex>> steps_;     // per-primitive definitions, canonical
+  std::set<std::string> defined_;                             // names in inputs_ and steps_
+  std::vector<Field> fields_;
+  std::map<std::string, std::size_t> field_by_key_;  // printed canonical value → index
+  int seg_count_ = 0;                                 // fields named seg0, seg1, …
+  std::map<GiNaC::symbol, GiNaC::symbol, GiNaC::ex_is_less> root_of_square_;
 };
 
 }  // namespace skelconv::codegen

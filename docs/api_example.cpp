@@ -24,7 +24,10 @@ double segment_value_in(const skelconv::Segment& segment, const std::array<T, 3>
   const std::optional<skelconv::SegmentInput<T>> input = skelconv::segment_input(segment, p);
   if (!input) return 0.0;  // outside a compact kernel's support
   std::array<T, 3> gradient;
-  return static_cast<double>(skelconv::generated::segment_cauchy_i4_w0_f_and_grad<T>(*input, gradient));
+  std::array<T, skelconv::generated::segment_cauchy_i4_w0_prepared_size> prepared;  // depends on the segment alone
+  skelconv::generated::segment_cauchy_i4_w0_prepare<T>(*input, prepared.data());
+  return static_cast<double>(skelconv::generated::segment_cauchy_i4_w0_f_and_grad<T>(
+      prepared.data(), skelconv::generated::point_of(*input), gradient));
 }
 
 }  // namespace

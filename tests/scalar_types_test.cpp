@@ -45,8 +45,12 @@ struct KernelPair {
   T (*f_and_grad_t)(const skelconv::SegmentInput<T>&, std::array<T, 3>&);
 };
 
+// A kernel's f and ∇f at one point in U: its preparation, then its per-point function.
+#define SKELCONV_AT_ONE_POINT(U, name, which)                                                          \
+  &skelconv::generated::prepared_##which<U, skelconv::generated::name##_prepared_size,                  \
+                                         &skelconv::generated::name##_prepare<U>, &skelconv::generated::name##_##which<U>>
 #define SKELCONV_KERNEL_PAIR(name) \
-  KernelPair<T> { #name, &skelconv::generated::name##_f_and_grad<double>, &skelconv::generated::name##_f_and_grad<T> }
+  KernelPair<T> { #name, SKELCONV_AT_ONE_POINT(double, name, f_and_grad), SKELCONV_AT_ONE_POINT(T, name, f_and_grad) }
 
 template <class T>
 void expect_agrees_with_double(double tolerance) {
@@ -81,10 +85,11 @@ TEST(ScalarTypes, CppBinFloat50CompilesForOneFamily) {
   using Big = boost::multiprecision::cpp_bin_float_50;
   const auto in_big = general_position_input<Big>();
   const auto in_d = general_position_input<double>();
-  const Big f_big = skelconv::generated::segment_cauchy_i4_w3_f(in_big);
-  const double f_d = skelconv::generated::segment_cauchy_i4_w3_f(in_d);
+  const Big f_big = (SKELCONV_AT_ONE_POINT(Big, segment_cauchy_i4_w3, f))(in_big);
+  const double f_d = (SKELCONV_AT_ONE_POINT(double, segment_cauchy_i4_w3, f))(in_d);
   EXPECT_LE(std::abs(f_d - static_cast<double>(f_big)), 1e-13 * std::abs(f_d));
 }
+#undef SKELCONV_AT_ONE_POINT
 
 }  // namespace
 

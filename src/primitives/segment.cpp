@@ -116,6 +116,10 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
   singular_at_zero_ = facts.singular_at_zero;
   for (std::string_view key : facts.parameters) require_parameter_in_frame(key, input_);
+  if (generated_->prepare != nullptr) {
+    prepared_.resize(generated_->prepared_size);
+    generated_->prepare(input_, prepared_.data());
+  }
 }
 
 std::string Segment::generated_name() const { return generated_->name; }
@@ -130,22 +134,21 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
   return degrees;
 }
 
-// `input` comes in as a copy of input_ (the caller's initialiser: one copy,
-// no default construction first); P, and for a compact kernel the clip, are
-// filled in here. It runs once per primitive and point: the error's
-// formatting is out of line (throw_too_far), which leaves prepare small
-// enough for the compiler to inline into its three callers.
-[[gnu::always_inline]] inline Segment::Case Segment::prepare(const Vec3& p, SegmentInput<double>& input) const {
+// P, and for a compact kernel the clip, in the frame. It runs once per
+// primitive and point: the error's formatting is out of line
+// (throw_too_far), which leaves locate small enough for the compiler to
+// inline into its three callers.
+[[gnu::always_inline]] inline Segment::Case Segment::locate(const Vec3& p, SegmentPoint<double>& point) const {
   detail::require_finite_query_point(p);
   const Vec3 frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
   // A factor 2^−e ≤ 1 cannot take a finite P out of the double range.
   if (factors_.to_frame > 1.0 && !frame_p.allFinite()) throw_too_far(p);
-  input.p = to_array(frame_p);
+  point.p = to_array(frame_p);
 
   if (singular_at_zero_) {
     // Exact test on the frame's doubles (see the file comment of segment.hpp).
-    const Vec3 ab = to_vec3(input.b) - to_vec3(input.a);
-    const Vec3 ap = frame_p - to_vec3(input.a);
+    const Vec3 ab = to_vec3(input_.b) - to_vec3(input_.a);
+    const Vec3 ap = frame_p - to_vec3(input_.a);
     const double projection = ab.dot(ap);  // t |AB|²
     if (ab.cross(ap) == Vec3::Zero() && projection >= 0.0 && projection <= ab.squaredNorm()) {
       return Case::on_inverse_singularity;
@@ -154,12 +157,44 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
   if (std::isfinite(support_radius_)) {
     // Hubert 2012 §3.4: only the part of [A,B] inside the ball of radius R
     // around P contributes; the generated code integrates over [t0, t1].
-    const std::optional<ParameterInterval<double>> inside = clip_to_ball(input.a, input.b, input.p, input.R);  // R in the frame
+    const std::optional<ParameterInterval<double>> inside = clip_to_ball(input_.a, input_.b, point.p, input_.R);  // R in the frame
     if (!inside) return Case::outside_compact_support;
-    input.t0 = inside->t0;
-    input.t1 = inside->t1;
+    point.t0 = inside->t0;
+    point.t1 = inside->t1;
   }
   return Case::call_generated;
+}
+
+namespace {
+
+// The derived Gaussian kernel (derived_segment_kernels.hpp) has no preparation:
+// they read the whole SegmentInput (`segment`, with the point's P and clip)
+// at each point.
+[[gnu::always_inline]] inline SegmentInput<double> input_at(const SegmentInput<double>& segment,
+                                                           const SegmentPoint<double>& point) {
+  SegmentInput<double> input = segment;
+  input.p = point.p;
+  input.t0 = point.t0;
+  input.t1 = point.t1;
+  return input;
+}
+
+}  // namespace
+
+[[gnu::always_inline]] inline double Segment::call_f(const SegmentPoint<double>& point) const {
+  if (!prepared_.empty()) return generated_->f_at(prepared_.data(), point);
+  return generated_->f(input_at(input_, point));
+}
+
+[[gnu::always_inline]] inline std::array<double, 3> Segment::call_grad(const SegmentPoint<double>& point) const {
+  if (!prepared_.empty()) return generated_->grad_at(prepared_.data(), point);
+  return generated_->grad(input_at(input_, point));
+}
+
+[[gnu::always_inline]] inline double Segment::call_f_and_grad(const SegmentPoint<double>& point,
+                                                              std::array<double, 3>& g) const {
+  if (!prepared_.empty()) return generated_->f_and_grad_at(prepared_.data(), point, g);
+  return generated_->f_and_grad(input_at(input_, point), g);
 }
 
 [[gnu::always_inline]] inline double Segment::restore_value(double f, const Vec3& p) const {
@@ -175,34 +210,34 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
 }
 
 double Segment::value(const Vec3& p) const {
-  SegmentInput<double> input = input_;
-  switch (prepare(p, input)) {
+  SegmentPoint<double> point;
+  switch (locate(p, point)) {
     case Case::outside_compact_support: return 0.0;
     case Case::on_inverse_singularity: return infinity;
     case Case::call_generated: break;
   }
-  return restore_value(detail::evaluate_converged(generated_->name, p, [&] { return generated_->f(input); }), p);
+  return restore_value(detail::evaluate_converged(generated_->name, p, [&] { return call_f(point); }), p);
 }
 
 Vec3 Segment::gradient(const Vec3& p) const {
-  SegmentInput<double> input = input_;
-  switch (prepare(p, input)) {
+  SegmentPoint<double> point;
+  switch (locate(p, point)) {
     case Case::outside_compact_support: return Vec3::Zero();
     case Case::on_inverse_singularity: return Vec3::Constant(infinity);
     case Case::call_generated: break;
   }
-  return restore_gradient(detail::evaluate_converged(generated_->name, p, [&] { return generated_->grad(input); }), p);
+  return restore_gradient(detail::evaluate_converged(generated_->name, p, [&] { return call_grad(point); }), p);
 }
 
 FieldSample Segment::value_and_gradient(const Vec3& p) const {
-  SegmentInput<double> input = input_;
-  switch (prepare(p, input)) {
+  SegmentPoint<double> point;
+  switch (locate(p, point)) {
     case Case::outside_compact_support: return {0.0, Vec3::Zero()};
     case Case::on_inverse_singularity: return {infinity, Vec3::Constant(infinity)};
     case Case::call_generated: break;
   }
   std::array<double, 3> g{};
-  const double f = detail::evaluate_converged(generated_->name, p, [&] { return generated_->f_and_grad(input, g); });
+  const double f = detail::evaluate_converged(generated_->name, p, [&] { return call_f_and_grad(point, g); });
   return {restore_value(f, p), restore_gradient(g, p)};
 }
 

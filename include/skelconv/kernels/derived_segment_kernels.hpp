@@ -12,9 +12,11 @@
 // Entries have the generated table's type (generated::SegmentKernel), with
 // degree 0 (these families have no degree), so the runtime (Segment), the
 // verifier and the benchmarks take them from find_any_segment_kernel() like
-// generated ones. Operation counts: a combination adds its levels' counts
-// plus one multiplication per level and one addition between levels; the
-// hand-written Gaussian is not counted (zeros).
+// generated ones. A combination is split like its levels (their
+// preparations side by side); the Gaussian is not (no `prepare`: it reads
+// the whole SegmentInput at each point). Operation counts: a combination
+// adds its levels' counts plus one multiplication per level and one
+// addition between levels; the hand-written Gaussian is not counted (zeros).
 //
 // Adding a family here is adding its trait to kernels::RadialKernel with
 // one of those two members: the table below is built from that list.
@@ -86,6 +88,47 @@ struct CompactCombination {
     }
     return sum;
   }
+  // Split like the generated kernels: the levels' preparations one after
+  // the other in pre[], each level's per-point function reading its own.
+  static std::size_t prepared_size() {
+    std::size_t size = 0;
+    for (const Level* level : levels()) size += level->prepared_size;
+    return size;
+  }
+  static void prepare(const SegmentInput<T>& in, T* pre) {
+    for (const Level* level : levels()) {
+      level->prepare(in, pre);
+      pre += level->prepared_size;
+    }
+  }
+  static T f_at(const T* pre, const SegmentPoint<T>& point) {
+    T sum(0);
+    for (std::size_t j = 0; j < count; ++j) {
+      sum += coefficient(j) * levels()[j]->f_at(pre, point);
+      pre += levels()[j]->prepared_size;
+    }
+    return sum;
+  }
+  static std::array<T, 3> grad_at(const T* pre, const SegmentPoint<T>& point) {
+    std::array<T, 3> sum{};
+    for (std::size_t j = 0; j < count; ++j) {
+      const std::array<T, 3> g = levels()[j]->grad_at(pre, point);
+      for (int i = 0; i < 3; ++i) sum[i] += coefficient(j) * g[i];
+      pre += levels()[j]->prepared_size;
+    }
+    return sum;
+  }
+  static T f_and_grad_at(const T* pre, const SegmentPoint<T>& point, std::array<T, 3>& grad_out) {
+    T sum(0);
+    grad_out = {};
+    for (std::size_t j = 0; j < count; ++j) {
+      std::array<T, 3> g{};
+      sum += coefficient(j) * levels()[j]->f_and_grad_at(pre, point, g);
+      for (int i = 0; i < 3; ++i) grad_out[i] += coefficient(j) * g[i];
+      pre += levels()[j]->prepared_size;
+    }
+    return sum;
+  }
   static std::string equation() {
     std::string sum;
     for (const kernels::CompactLevel& level : Kernel::compact_levels) {
@@ -132,8 +175,11 @@ void add_entry(std::vector<generated::SegmentKernel<T>>& out) {
   if constexpr (requires { Kernel::compact_levels; }) {
     using C = CompactCombination<Kernel, T, W>;
     using L = generated::SegmentKernel<T>;
-    out.push_back({Kernel::family, 0, W, &C::f, &C::grad, &C::f_and_grad, name,
-                   keep(C::equation()), C::ops(&L::ops_f), C::ops(&L::ops_grad), C::ops(&L::ops_f_and_grad)});
+    OpCount ops_prepare;
+    for (const L* level : C::levels()) ops_prepare += level->ops_prepare;
+    out.push_back({Kernel::family, 0, W, &C::f, &C::grad, &C::f_and_grad, name, keep(C::equation()),
+                   C::ops(&L::ops_f), C::ops(&L::ops_grad), C::ops(&L::ops_f_and_grad), ops_prepare,
+                   C::prepared_size(), &C::prepare, &C::f_at, &C::grad_at, &C::f_and_grad_at});
   } else if constexpr (requires { typename Kernel::template SegmentClosedForm<T, W>; }) {
     using E = ClosedFormEntry<Kernel, T, W>;
     using Form = typename E::Form;

@@ -14,8 +14,9 @@
 // of thousands of lines; minutes to compile for long double or
 // Boost.Multiprecision), so include this header in one translation unit. To
 // compile only one kernel, call it by name instead, e.g.
-// generated::segment_cauchy_i4_w0_f_and_grad<T>(input, gradient) from
-// generated/segment_cauchy.hpp.
+// generated::segment_cauchy_i4_w0_prepare<T>(input, pre), then
+// generated::segment_cauchy_i4_w0_f_and_grad<T>(pre, point_of(input), gradient)
+// from generated/segment_cauchy.hpp (docs/generated_api.md).
 //
 // Unlike Segment (double), nothing here checks the result: a point on an
 // inverse-kernel segment gives inf or NaN, and lower precisions overflow

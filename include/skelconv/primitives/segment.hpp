@@ -103,11 +103,18 @@ class Segment {
  private:
   /// What an evaluation at P has to do (see the file comment).
   enum class Case {
-    call_generated,          ///< the closed form applies; input is filled in
+    call_generated,          ///< the closed form applies; point is filled in
     outside_compact_support, ///< compact kernel, P farther than R: f = 0
     on_inverse_singularity,  ///< inverse kernel, P on the segment: f = +inf
   };
-  Case prepare(const Vec3& p, SegmentInput<double>& input) const;
+  /// P in the frame, and for a compact kernel the clip [t0, t1] of its support.
+  Case locate(const Vec3& p, SegmentPoint<double>& point) const;
+  /// The generated f, ∇f or both at `point`: from prepared_ where the kernel
+  /// is split (every generated one, and the compact combinations of soft and
+  /// Wyvill), else from input_ (the Gaussian).
+  double call_f(const SegmentPoint<double>& point) const;
+  std::array<double, 3> call_grad(const SegmentPoint<double>& point) const;
+  double call_f_and_grad(const SegmentPoint<double>& point, std::array<double, 3>& g) const;
 
   /// f' of the frame → f (and ∇f, with value_power_ − 1), see scaled_frame.hpp.
   double restore_value(double f, const Vec3& p) const;
@@ -127,6 +134,9 @@ class Segment {
   /// Everything but P (and the compact clip interval), filled once, in the frame.
   SegmentInput<double> input_;
   const generated::SegmentKernel<double>* generated_ = nullptr;
+  /// The generated kernel's per-segment quantities (its `prepare`, once, at
+  /// construction): every evaluation reads them and does the per-point work only.
+  std::vector<double> prepared_;
   /// From the kernel's trait: K = 0 beyond this (+inf: no clip), and K(0) = +inf.
   double support_radius_ = 0.0;
   bool singular_at_zero_ = false;

@@ -1,12 +1,15 @@
 // skelconv/primitives/segment_input.hpp — the contract between the runtime and the
 // generated segment kernels (generated/segment_*.hpp).
 //
-// Every generated segment function reads one SegmentInput and computes
+// Every generated segment kernel computes
 //
 //     f(P) = |AB| ∫_{t0}^{t1} w(t) K(|P − Γ(t)|) dt,   Γ(t) = A + t (B − A)
 //
-// (docs/mathematics.md §2), and/or ∇_P f. One struct for all families keeps the generated
-// table uniform: a family reads only the fields it needs.
+// (docs/mathematics.md §2), and/or ∇_P f, in two steps: its `prepare` reads
+// the segment's part of a SegmentInput (A, B, w and the kernel's parameter)
+// once per segment, and its evaluations read that preparation and a
+// SegmentPoint (P and the clip) at each point. One struct for all families
+// keeps the generated table uniform: a family reads only the fields it needs.
 #pragma once
 
 #include <array>
@@ -35,6 +38,15 @@ struct SegmentInput {
   /// Compact only: the part [t0, t1] ⊆ [0, 1] of the segment inside the ball
   /// of radius R around P (see skelconv/detail/clip.hpp). The kernel vanishes at a
   /// clipped end, so the moving bounds add nothing to ∇f (docs/mathematics.md §2).
+  T t0 = T(0);
+  T t1 = T(1);
+};
+
+/// What a generated segment evaluation reads at each point (SegmentInput's
+/// per-point fields): P, and for a compact kernel the clip [t0, t1].
+template <class T>
+struct SegmentPoint {
+  std::array<T, 3> p{};
   T t0 = T(0);
   T t1 = T(1);
 };
