@@ -123,9 +123,11 @@ Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& poin
 /// reweighted least squares: (JᵀWJ + λ (diag JᵀWJ + μ)) Δθ = −JᵀWδ with W
 /// the weights times ψ(δ)/δ, μ a trace-relative floor that keeps an unknown
 /// no point sees at 0. Each radius step is clamped to [−r/2, r] (radii stay
-/// positive), each centre step to a length of r/2.
+/// positive) and to end at min_radius or above, each centre step to a
+/// length of r/2 and to end within the sphere's starting ball (`start`).
 std::vector<double> joint_step(const MedialMesh& mesh, const std::vector<WeightedPoint>& points, const Evaluation& e,
-                               const Jacobian& j, double lambda, double huber) {
+                               const Jacobian& j, double lambda, double huber, double min_radius,
+                               const std::vector<Vec4>& start) {
   const Eigen::Index n = Eigen::Index(per_sphere * mesh.spheres.size());
   // J and the weighted residual as sparse matrices, JᵀWJ as their product:
   // its size is that of the unknown pairs sharing a point, never the sum over
@@ -158,8 +160,11 @@ std::vector<double> joint_step(const MedialMesh& mesh, const std::vector<Weighte
     Vec3 move = solution.segment<3>(at);
     if (!move.allFinite()) move.setZero();
     if (move.norm() > 0.5 * radius) move *= 0.5 * radius / move.norm();
+    const Vec3 from_start = mesh.spheres[i].head<3>() + move - start[i].head<3>();
+    if (from_start.norm() > start[i].w()) move -= from_start * (1.0 - start[i].w() / from_start.norm());
     for (std::size_t c = 0; c < 3; ++c) step[per_sphere * i + c] = move[Eigen::Index(c)];
-    if (std::isfinite(solution[at + 3])) step[per_sphere * i + 3] = std::clamp(solution[at + 3], -0.5 * radius, radius);
+    if (std::isfinite(solution[at + 3]))
+      step[per_sphere * i + 3] = std::clamp(solution[at + 3], std::max(-0.5 * radius, min_radius - radius), radius);
   }
   return step;
 }
@@ -177,6 +182,12 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& po
                            const MedialFitOptions& o, MedialFitReport* report,
                            const std::function<void(std::string_view)>& progress) {
   MedialFitReport r;
+  // Each centre stays within its medial ball, which is inside the input:
+  // nothing in the fit pulls back a sphere that wanders out of it (the
+  // input's points see only where the surface misses them, not where a
+  // spike of the reconstruction sticks out into empty space).
+  const std::vector<Vec4> start = mesh.spheres;
+  for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
   Evaluation now = evaluate(mesh, points, field_of);
   r.rms.push_back(now.rms);
   if (progress) progress(fmt::format("medial fit: first-order RMS distance {:.4g} before fitting", now.rms));
@@ -188,7 +199,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& po
     const Jacobian j = jacobian(mesh, points, now, o.fit_centres);
     bool better = false;
     for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
-      const std::vector<double> step = joint_step(mesh, points, now, j, lambda, huber);
+      const std::vector<double> step = joint_step(mesh, points, now, j, lambda, huber, o.min_radius, start);
       MedialMesh trial = mesh;
       for (std::size_t i = 0; i < trial.spheres.size(); ++i)
         for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];

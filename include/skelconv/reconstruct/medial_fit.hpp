@@ -15,8 +15,9 @@
 // and ∇f (medial_derivatives.hpp), sparse (a sphere couples only with the
 // spheres whose primitives reach the same points); the normal equations
 // (JᵀWJ + λ diag) Δθ = −JᵀWδ are solved by Eigen's sparse LDLᵀ, each radius
-// step clamped to [−r/2, r] (radii stay positive), each centre step to a
-// length of r/2. A step is kept only if it lowers the weighted RMS of δ;
+// step clamped to [−r/2, r] and above min_radius (radii stay positive),
+// each centre step to a length of r/2, and each centre to its starting
+// ball (the medial ball, inside the input). A step is kept only if it lowers the weighted RMS of δ;
 // otherwise it is retried with λ × 10, and the fit stops when none does (the
 // RMS never rises). Neighbouring spheres share points, so a step per sphere
 // on its own points alone overshoots and stalls; the joint step does not.
@@ -37,7 +38,9 @@
 namespace skelconv::reconstruct {
 
 struct MedialFitOptions {
-  int rounds = 8;
+  /// Rounds at most. The RMS distance still falls by ~10% a round after 8
+  /// on the hand; 14 rounds take the elephant from 1.66% to 1.40% (Hausdorff).
+  int rounds = 14;
   /// The Levenberg–Marquardt damping λ of the first round (relative to the
   /// diagonal of JᵀWJ), and how many times a round may multiply it by 10
   /// before it gives up (the step then barely moves: the fit has stopped).
@@ -48,6 +51,10 @@ struct MedialFitOptions {
   /// Huber's loss is quadratic in δ up to this × the points' bounding-box
   /// diagonal, linear beyond.
   double huber_scale = 0.005;
+  /// No radius ends below this (absolute length; radii below it start at
+  /// it): a tube thinner than the resolution it is meshed at comes back in
+  /// pieces, or not at all (docs/reconstruction_medial.md, "Topology").
+  double min_radius = 0.0;
 };
 
 struct MedialFitReport {
