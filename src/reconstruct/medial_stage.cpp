@@ -1,5 +1,5 @@
 // The `medial` stage of reconstruct.hpp: the inner Voronoi graph pruned,
-// simplified to a medial mesh, its tube ends extended and its radii fitted
+// simplified to a medial mesh, its tube ends extended and its spheres (centres and radii) fitted
 // (docs/reconstruction_medial.md).
 #include <cmath>
 #include <numbers>

@@ -59,8 +59,8 @@ struct MedialOptions {
   /// measuring mesh (diagonal / ReconstructOptions::measure_divisions;
   /// MedialFitOptions::min_radius). A thinner tube (a dinosaur's claw, a
   /// spike the fit shrank) falls between the mesher's samples and comes back
-  /// in pieces: on the dino, 10 components at 0.5, 3 at 0.75, 2 at 1.0 (where
-  /// the thin parts grow fat enough to cost Hausdorff 2.4% instead of 1.6%).
+  /// in pieces; a higher floor makes thin parts too fat (the dino's
+  /// measurements in docs/reconstruction_medial.md, "The fit").
   double min_radius_facets = 0.75;
   MedialFitOptions fit;
 };
