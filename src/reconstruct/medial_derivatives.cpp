@@ -21,18 +21,24 @@ int compact_half_degree(const ScalisKernel& kernel) {
   return kernel.degree / 2;
 }
 
+/// x^k for a small k ≥ 0 (std::pow is the fit's hottest call otherwise).
+double power(double x, int k) {
+  double result = 1.0;
+  for (int i = 0; i < k; ++i) result *= x;
+  return result;
+}
+
 /// ∫ ((w² − t²)/R²)^m (α + β t) dt over [t0, t1], expanded in powers of t.
 double polynomial_integral(int m, double w2, double r2, double alpha, double beta, double t0, double t1) {
   double sum = 0.0, binomial = 1.0;  // C(m, j)
   for (int j = 0; j <= m; ++j) {
     // C(m, j) w^{2(m−j)} (−t²)^j, times α + β t.
-    const double c = binomial * std::pow(w2, m - j) * (j % 2 == 0 ? 1.0 : -1.0);
+    const double c = binomial * power(w2, m - j) * (j % 2 == 0 ? 1.0 : -1.0);
     const int even = 2 * j + 1, odd = 2 * j + 2;
-    sum += c * (alpha * (std::pow(t1, even) - std::pow(t0, even)) / even +
-                beta * (std::pow(t1, odd) - std::pow(t0, odd)) / odd);
+    sum += c * (alpha * (power(t1, even) - power(t0, even)) / even + beta * (power(t1, odd) - power(t0, odd)) / odd);
     binomial = binomial * (m - j) / (j + 1);
   }
-  return sum / std::pow(r2, m);
+  return sum / power(r2, m);
 }
 
 /// ∫ over the edge from `from` (λ = 1) to `to` (λ = 0) of K(|P − Q|/τ) λ(Q) ds,
@@ -55,7 +61,7 @@ double weighted_edge_integral(const Vec3& p, const Vec3& from, const Vec3& to, d
 /// K(|x|/τ) for the compact kernel of half degree m and scale σ.
 double compact_kernel(const Vec3& x, double tau, double sigma, int m) {
   const double q = 1.0 - x.squaredNorm() / (sigma * sigma * tau * tau);
-  return q > 0.0 ? std::pow(q, m) : 0.0;
+  return q > 0.0 ? power(q, m) : 0.0;
 }
 
 }  // namespace

@@ -117,18 +117,20 @@ Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& poin
   return j;
 }
 
-/// The Levenberg–Marquardt step of all unknowns together on the Huber cost
-/// Σ w ρ(δ) (ρ = δ² up to `huber`, linear beyond: a point the sum of
-/// primitives cannot reach, in a crease, does not drag its neighbours), as
-/// reweighted least squares: (JᵀWJ + λ (diag JᵀWJ + μ)) Δθ = −JᵀWδ with W
-/// the weights times ψ(δ)/δ, μ a trace-relative floor that keeps an unknown
-/// no point sees at 0. Each radius step is clamped to [−r/2, r] (radii stay
-/// positive) and to end at min_radius or above, each centre step to a
-/// length of r/2 and to end within the sphere's starting ball (`start`).
-std::vector<double> joint_step(const MedialMesh& mesh, const std::vector<WeightedPoint>& points, const Evaluation& e,
-                               const Jacobian& j, double lambda, double huber, double min_radius,
-                               const std::vector<Vec4>& start) {
-  const Eigen::Index n = Eigen::Index(per_sphere * mesh.spheres.size());
+/// The normal equations of the Levenberg–Marquardt step of all unknowns
+/// together on the Huber cost Σ w ρ(δ) (ρ = δ² up to `huber`, linear
+/// beyond: a point the sum of primitives cannot reach, in a crease, does not
+/// drag its neighbours), as reweighted least squares: JᵀWJ and JᵀWδ with W
+/// the weights times ψ(δ)/δ. They do not depend on the damping λ, so a round
+/// builds them once for all its attempts.
+struct NormalEquations {
+  Eigen::SparseMatrix<double> normal;  ///< JᵀWJ
+  Eigen::VectorXd gradient, diagonal;  ///< JᵀWδ, diag JᵀWJ
+  double floor = 0.0;  ///< μ, a trace-relative floor that keeps an unknown no point sees at 0
+};
+
+NormalEquations normal_equations(const std::vector<WeightedPoint>& points, const Evaluation& e, const Jacobian& j,
+                                 double huber, Eigen::Index n) {
   // J and the weighted residual as sparse matrices, JᵀWJ as their product:
   // its size is that of the unknown pairs sharing a point, never the sum over
   // points of their squared row lengths (spheres crowded about one centre,
@@ -145,14 +147,28 @@ std::vector<double> joint_step(const MedialMesh& mesh, const std::vector<Weighte
   Eigen::SparseMatrix<double> scaled(Eigen::Index(points.size()), n);  // W^½ J
   scaled.setFromTriplets(entries.begin(), entries.end());
   const Eigen::SparseMatrix<double> transposed = scaled.transpose();
-  Eigen::SparseMatrix<double> normal = transposed * scaled;
-  const Eigen::VectorXd gradient = transposed * weighted_delta;
-  const Eigen::VectorXd diagonal = normal.diagonal();
-  const double floor = 1e-9 * std::max(diagonal.sum(), std::numeric_limits<double>::min()) / double(std::max<Eigen::Index>(n, 1));
-  for (Eigen::Index i = 0; i < n; ++i) normal.coeffRef(i, i) += lambda * (diagonal[i] + floor);
+  NormalEquations equations;
+  equations.normal = transposed * scaled;
+  equations.gradient = transposed * weighted_delta;
+  equations.diagonal = equations.normal.diagonal();
+  equations.floor = 1e-9 * std::max(equations.diagonal.sum(), std::numeric_limits<double>::min()) /
+                    double(std::max<Eigen::Index>(n, 1));
+  return equations;
+}
+
+/// The step: (JᵀWJ + λ (diag JᵀWJ + μ)) Δθ = −JᵀWδ. Each radius step is
+/// clamped to [−r/2, r] (radii stay positive) and to end at min_radius or
+/// above, each centre step to a length of r/2 and to end within the
+/// sphere's starting ball (`start`).
+std::vector<double> joint_step(const MedialMesh& mesh, const NormalEquations& equations, double lambda,
+                               double min_radius, const std::vector<Vec4>& start) {
+  const Eigen::Index n = Eigen::Index(per_sphere * mesh.spheres.size());
+  Eigen::SparseMatrix<double> normal = equations.normal;
+  for (Eigen::Index i = 0; i < n; ++i) normal.coeffRef(i, i) += lambda * (equations.diagonal[i] + equations.floor);
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-  const Eigen::VectorXd solution = solver.info() == Eigen::Success ? Eigen::VectorXd(solver.solve(-gradient))
-                                                                    : Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd solution = solver.info() == Eigen::Success
+                                       ? Eigen::VectorXd(solver.solve(-equations.gradient))
+                                       : Eigen::VectorXd::Zero(n);
   std::vector<double> step(std::size_t(n), 0.0);
   for (std::size_t i = 0; i < mesh.spheres.size(); ++i) {
     const double radius = mesh.spheres[i].w();
@@ -196,10 +212,12 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& po
   // raises the RMS distance, shrinks after a step that lowers it.
   double lambda = o.initial_damping;
   for (int round = 1; round <= o.rounds; ++round) {
-    const Jacobian j = jacobian(mesh, points, now, o.fit_centres);
+    const NormalEquations equations =
+        normal_equations(points, now, jacobian(mesh, points, now, o.fit_centres), huber,
+                         Eigen::Index(per_sphere * mesh.spheres.size()));
     bool better = false;
     for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
-      const std::vector<double> step = joint_step(mesh, points, now, j, lambda, huber, o.min_radius, start);
+      const std::vector<double> step = joint_step(mesh, equations, lambda, o.min_radius, start);
       MedialMesh trial = mesh;
       for (std::size_t i = 0; i < trial.spheres.size(); ++i)
         for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
