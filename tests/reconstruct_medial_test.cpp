@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "skelconv/mesh/mesh_reader.hpp"
+#include "skelconv/reconstruct/medial_derivatives.hpp"
 #include "skelconv/reconstruct/medial_mesh.hpp"
 #include "skelconv/reconstruct/medial_quadric.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
@@ -151,6 +152,7 @@ TEST(MedialMesh, BudgetIsRespected) {
     ReconstructOptions o;
     o.method = SkeletonMethod::medial;
     o.medial.budget = budget;
+    o.medial.fit.rounds = 0;  // the budget is the medial mesh's; the fit moves spheres, never adds primitives
     const Reconstruction r = reconstruct(cube, o);
     ASSERT_EQ(r.stages.back().name, "medial");
     EXPECT_LE(primitive_counts(r.stages.back(), o).total(), budget);
@@ -182,6 +184,95 @@ TEST(MedialFit, PlateIsASheetAndTheFitNeverRaisesTheDistance) {
   const std::vector<double>& rms = r.medial_path.fit.rms;
   ASSERT_GE(rms.size(), 1u);
   for (std::size_t k = 1; k < rms.size(); ++k) EXPECT_LT(rms[k], rms[k - 1]) << "round " << k;
+}
+
+// --- The fit's derivatives (medial_derivatives.hpp) against central
+// differences of the primitives themselves, at points inside, outside and
+// across the supports' rims.
+
+/// (field(+h) − field(−h)) / 2h.
+template <class Field>
+double central(const Field& field, double h) {
+  return (field(h) - field(-h)) / (2 * h);
+}
+
+/// Points about a triangle or segment: near its plane, beyond its edges, far.
+std::vector<Vec3> probe_points() {
+  return {Vec3(0.3, 0.2, 0.25), Vec3(0.1, 0.6, -0.4), Vec3(1.1, 0.5, 0.3), Vec3(-0.3, -0.2, 0.1),
+          Vec3(0.5, 0.4, 0.05), Vec3(0.9, -0.1, -0.6), Vec3(0.2, 1.05, 0.0)};
+}
+
+/// A central difference of step h is off by ~h² f''' and ~ε f / h, both
+/// far below 1e-6 here (f and its derivatives are of order 1), and 1e-6 is
+/// far below any error in the formulas (which would be of the derivative's
+/// own size).
+constexpr double derivative_step = 1e-6, derivative_tolerance = 1e-6;
+
+TEST(MedialDerivatives, TriangleVerticesAndRadiusAreTheCentralDifferences) {
+  const ScalisKernel kernel = ScalisKernel::compact(4, 1.5);
+  const std::array<Vec3, 3> v{Vec3(0, 0, 0), Vec3(1, 0.1, 0), Vec3(0.2, 0.9, 0.15)};
+  const double tau = 0.3;
+  const ScalisTriangle triangle(v, {tau, tau, tau}, kernel);
+  for (const Vec3& p : probe_points()) {
+    const PrimitiveDerivatives<3> d = derivatives(triangle, p);
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 3; ++c) {
+        const double expected = central(
+            [&](double h) {
+              std::array<Vec3, 3> moved = v;
+              moved[std::size_t(i)][c] += h;
+              return ScalisTriangle(moved, {tau, tau, tau}, kernel).value(p);
+            },
+            derivative_step);
+        EXPECT_NEAR(d.vertex[std::size_t(i)][c], expected, derivative_tolerance)
+            << "vertex " << i << " axis " << c << " at " << p.transpose();
+      }
+    const double expected = central(
+        [&](double h) { return ScalisTriangle(v, {tau + h, tau + h, tau + h}, kernel).value(p); }, derivative_step);
+    EXPECT_NEAR(d.radius[0], expected, derivative_tolerance) << "radius at " << p.transpose();
+  }
+}
+
+TEST(MedialDerivatives, SegmentEndsAndRadiiAreTheCentralDifferences) {
+  const ScalisKernel kernel = ScalisKernel::compact(4, 1.5);
+  const std::array<Vec3, 2> v{Vec3(0, 0, 0), Vec3(1, 0.2, 0.1)};
+  const std::array<double, 2> tau{0.25, 0.4};
+  const auto segment = [&](const std::array<Vec3, 2>& e, const std::array<double, 2>& r) {
+    return ScalisSegment(e[0], e[1], r[0], r[1], kernel);
+  };
+  // The radius derivatives are forward differences (relative error ~1e-6),
+  // and enter the ends' derivatives along the axis.
+  constexpr double forward_tolerance = 1e-5;
+  for (const Vec3& p : probe_points()) {
+    const PrimitiveDerivatives<2> d = derivatives(segment(v, tau), p);
+    for (int i = 0; i < 2; ++i) {
+      for (int c = 0; c < 3; ++c) {
+        const double expected = central(
+            [&](double h) {
+              std::array<Vec3, 2> moved = v;
+              moved[std::size_t(i)][c] += h;
+              return segment(moved, tau).value(p);
+            },
+            derivative_step);
+        EXPECT_NEAR(d.vertex[std::size_t(i)][c], expected, forward_tolerance)
+            << "end " << i << " axis " << c << " at " << p.transpose();
+      }
+      const double expected = central(
+          [&](double h) {
+            std::array<double, 2> grown = tau;
+            grown[std::size_t(i)] += h;
+            return segment(v, grown).value(p);
+          },
+          derivative_step);
+      EXPECT_NEAR(d.radius[std::size_t(i)], expected, forward_tolerance) << "radius " << i << " at " << p.transpose();
+    }
+  }
+}
+
+TEST(MedialDerivatives, OtherKernelsAreRefused) {
+  const ScalisTriangle cauchy({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {0.3, 0.3, 0.3},
+                              ScalisKernel::cauchy(4, 1.5));
+  EXPECT_THROW(derivatives(cauchy, Vec3(0.2, 0.2, 0.3)), InputError);
 }
 
 }  // namespace

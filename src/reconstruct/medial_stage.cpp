@@ -1,5 +1,5 @@
 // The `medial` stage of reconstruct.hpp: the inner Voronoi graph pruned,
-// simplified to a medial mesh, its tube ends extended and its radii fitted
+// simplified to a medial mesh, its tube ends extended and its spheres (centres and radii) fitted
 // (docs/reconstruction_medial.md).
 #include <cmath>
 #include <numbers>
@@ -91,7 +91,9 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     s.medial = medial;
     return parse_skeleton_json(skeleton_file_text(s, o));
   };
-  if (!mesh.spheres.empty()) stage.medial = fit_medial_radii(mesh, points, field_of, m.fit, &r.fit, o.progress);
+  MedialFitOptions fit = m.fit;
+  fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
+  if (!mesh.spheres.empty()) stage.medial = fit_medial_mesh(mesh, points, field_of, fit, &r.fit, o.progress);
   stage.points = r.spheres = stage.medial.spheres.size();
   if (report != nullptr) *report = r;
   return stage;

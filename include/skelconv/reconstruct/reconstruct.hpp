@@ -55,6 +55,13 @@ struct MedialOptions {
   double sample_divisions = 40.0;
   /// The fit's points are about this × the diagonal apart.
   double fit_spacing = 1.0 / 64.0;
+  /// No sphere's radius ends below this × the facet size of the
+  /// measuring mesh (diagonal / ReconstructOptions::measure_divisions;
+  /// MedialFitOptions::min_radius). A thinner tube (a dinosaur's claw, a
+  /// spike the fit shrank) falls between the mesher's samples and comes back
+  /// in pieces; a higher floor makes thin parts too fat (the dino's
+  /// measurements in docs/reconstruction_medial.md, "The fit").
+  double min_radius_facets = 0.75;
   MedialFitOptions fit;
 };
 
