@@ -104,7 +104,8 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("INPUT", options.input_path, "Closed mesh: .ply (ASCII or binary), .obj or .off")->required();
   command->add_option("-o,--output", options.output_path, "Output skeleton file (JSON)")->required();
   command->add_option("--method", options.method,
-                      "auto (default): build both skeletons below and keep the one closer to the input; curve: "
+                      "auto (default): the curve skeleton when it is within 1% (Hausdorff) and 0.2% (RMS) of the diagonal "
+                      "with the input's topology, else both skeletons below and keep the one closer to the input; curve: "
                       "Ferley's curve skeleton (tubes, branches, junctions); medial: a medial mesh (sheets as SCALIS "
                       "triangles, tubes as SCALIS segments)")
       ->check(CLI::IsMember({"auto", "curve", "medial"}));

@@ -307,6 +307,30 @@ bool choose_between(Stage& curve, Stage& medial, const TriangleMesh& surface, co
   return medial_error < curve_error;
 }
 
+/// Whether `auto` may keep the curve path's result `curve` without the
+/// medial path: measurable, meshed, keeping the input's topology, within
+/// ReconstructOptions::curve_accepted_hausdorff and _rms. The measure taken
+/// stays in the stage (Stage::measured) for a report to reuse.
+bool curve_is_good_enough(Stage& curve, const TriangleMesh& surface, const ReconstructOptions& o) {
+  if (!over_measure_budget(measure_work(surface, curve, o), o.measure_budget).empty()) return false;
+  try {
+    curve.measured = measure(surface, curve, o);
+  } catch (const EvaluationError&) {
+    return false;  // choose_between says why, after the medial path
+  }
+  const MeshTopology input = mesh_topology(surface);
+  const StageMeasure& m = *curve.measured;
+  const double diagonal = m.distance.diagonal;
+  const bool good = m.euler_characteristic == input.euler_characteristic && m.components == input.components &&
+                    m.distance.hausdorff <= o.curve_accepted_hausdorff * diagonal &&
+                    m.distance.rms <= o.curve_accepted_rms * diagonal;
+  if (good)
+    say(o, fmt::format("{}: Hausdorff {:.3g}, RMS {:.3g} of the diagonal, topology kept: within the curve path's goal, "
+                       "the result (no medial mesh)", curve.name, m.distance.hausdorff / diagonal,
+                       m.distance.rms / diagonal));
+  return good;
+}
+
 }  // namespace
 
 Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions& o) {
@@ -323,6 +347,7 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
                        result.medial_vertices, result.medial_edges));
     curve_stages(std::move(graph), surface, o, result, clock);
     if (o.method == SkeletonMethod::curve) return result;
+    if (curve_is_good_enough(result.stages.back(), surface, o)) return result;
   }
   Stage medial = medial_stage(surface, o, &result.medial_path);
   medial.seconds = clock.lap();
