@@ -4,7 +4,8 @@
 // tolerance 1e-8 or 1e-12, four integrals (f and the three components of
 // ∇f), at distances 0.1, 0.3, 1 and 3 |AB| from the segment, for every
 // family (inverse i3 and i8, Cauchy i4 and i8, compact i6).
-//   gsl/<kernel>/d:<d>/closed      the generated f_and_grad (table pointer)
+//   gsl/<kernel>/d:<d>/closed      the generated f_and_grad per point (the segment
+//                                  prepared beforehand, as Segment does)
 //   gsl/<kernel>/d:<d>/qag:<tol>   the 4 QAG integrals
 // and the closed form alone for inverse and Cauchy i = 1…8, weight degree 0
 // (the generic-path goal: ≤ 25 ns at every distance); and per distance band
@@ -41,12 +42,14 @@ constexpr Case cases[] = {{KernelFamily::inverse, 3, 1}, {KernelFamily::inverse,
 /// 0, every degree (gsl/<kernel>/d:<d>/closed without QAG rows).
 constexpr int generic_max_degree = 8;
 
-/// Times f and ∇f of the closed form over `inputs`, one point per iteration.
+/// Times f and ∇f of the closed form over `inputs`, one point per iteration,
+/// each segment prepared before the timing (PreparedPoints).
 void time_closed(benchmark::State& state, const KernelRef* k, const std::vector<Input>& inputs) {
+  const PreparedPoints points(*k, inputs);
   std::size_t j = 0;
   for (auto _ : state) {
     Vec g;
-    benchmark::DoNotOptimize(k->f_and_grad(inputs[j], g));
+    benchmark::DoNotOptimize(points.f_and_grad(j, g));
     benchmark::DoNotOptimize(g);
     j = (j + 1) % inputs.size();
   }

@@ -10,7 +10,8 @@
 // Without valgrind the client requests do nothing (--smoke: tiny sizes, for
 // CTest).
 //
-// Regions (same names as the timing benchmarks):
+// Regions (same names as the timing benchmarks; the closed forms per point,
+// each segment prepared before the region, as Segment prepares it):
 //   eval/<kernel>/<f|grad|f_and_grad|f+central_fd|f+forward_fd>, and
 //   eval/<kernel>/f_and_grad/near
 //   quadrature/<kernel>/tol:<1e-08|1e-12>[/near]
@@ -53,11 +54,12 @@ void run_regions() {
     if (!k) continue;
     const std::vector<Input> in = make_inputs(k->family, kernel_points);
     const std::string base = "eval/" + k->name + "/";
-    region(base + "f", in.size(), [&](std::size_t j) { sink = k->f(in[j]); });
-    region(base + "grad", in.size(), [&](std::size_t j) { sink = k->grad(in[j])[0]; });
+    const PreparedPoints prepared(*k, in);
+    region(base + "f", in.size(), [&](std::size_t j) { sink = prepared.f(j); });
+    region(base + "grad", in.size(), [&](std::size_t j) { sink = prepared.grad(j)[0]; });
     region(base + "f_and_grad", in.size(), [&](std::size_t j) {
       Vec g;
-      sink = k->f_and_grad(in[j], g) + g[0];
+      sink = prepared.f_and_grad(j, g) + g[0];
     });
     region(base + "f+central_fd", in.size(), [&](std::size_t j) {
       Vec g;
@@ -68,9 +70,10 @@ void run_regions() {
       sink = f_and_fd_gradient<false>(*k, in[j], g) + g[0];
     });
     const std::vector<Input> near = make_inputs(k->family, kernel_points, 43, near_min_distance, near_max_distance);
+    const PreparedPoints prepared_near(*k, near);
     region(base + "f_and_grad/near", near.size(), [&](std::size_t j) {
       Vec g;
-      sink = k->f_and_grad(near[j], g) + g[0];
+      sink = prepared_near.f_and_grad(j, g) + g[0];
     });
     for (bool is_near : {false, true}) {
       const std::vector<Input> qin = is_near ? make_inputs(k->family, quadrature_points, 43, near_min_distance,
@@ -87,10 +90,11 @@ void run_regions() {
     if (k.weight_degree != 0) continue;
     const std::vector<Input> in = make_inputs(k.family, kernel_points);
     const std::string base = "degree/" + std::string(family_name(k.family)) + "/w0/i:" + std::to_string(k.degree) + "/";
-    region(base + "f", in.size(), [&](std::size_t j) { sink = k.f(in[j]); });
+    const PreparedPoints prepared(k, in);
+    region(base + "f", in.size(), [&](std::size_t j) { sink = prepared.f(j); });
     region(base + "f_and_grad", in.size(), [&](std::size_t j) {
       Vec g;
-      sink = k.f_and_grad(in[j], g) + g[0];
+      sink = prepared.f_and_grad(j, g) + g[0];
     });
   }
   for (const KernelRef& k : generated_kernels()) {
@@ -110,9 +114,10 @@ void run_regions() {
       const std::string base = "generic/" + k.name + "/" + distance + "/";
       for (const auto& [part, points] : {std::pair{"beside", &beside}, std::pair{"beyond", &beyond}}) {
         if (points->empty()) continue;
+        const PreparedPoints prepared(k, *points);
         region(base + part, points->size(), [&](std::size_t j) {
           Vec g;
-          sink = k.f_and_grad((*points)[j], g) + g[0];
+          sink = prepared.f_and_grad(j, g) + g[0];
         });
       }
     }

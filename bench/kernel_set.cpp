@@ -12,7 +12,8 @@ const std::vector<KernelRef>& generated_kernels() {
     std::vector<KernelRef> out;
     for (const auto& k : generated::segment_kernels<double>()) {
       out.push_back(KernelRef{k.family, k.degree, k.weight_degree, k.f, k.grad, k.f_and_grad, k.name,
-                              k.ops_f, k.ops_grad, k.ops_f_and_grad, k.ops_prepare});
+                              k.ops_f, k.ops_grad, k.ops_f_and_grad, k.ops_prepare, k.prepared_size,
+                              k.prepare, k.f_at, k.grad_at, k.f_and_grad_at});
     }
     return out;
   }();

@@ -10,7 +10,8 @@
 //   degree/<family>/w0/i:<i>/<f|f_and_grad>   cost as the degree grows;
 //   preamble/cross/<plain|exact>, eval/<kernel>/f_and_grad/beside   the
 //                                  exact preamble's cost (below).
-// One iteration is one evaluation at one point; the points cycle through
+// One iteration is one evaluation at one point, the segment prepared
+// beforehand as Segment prepares it (PreparedPoints); the points cycle through
 // 1024 fixed query points around one segment (bench_support.hpp), so the
 // branches of the closed forms see a realistic mix. Compare times within one
 // run only (bench/summarize.py makes the ratios).
@@ -65,31 +66,31 @@ const std::vector<Input>& inputs_for(KernelFamily family, bool near) {
 }
 
 void bench_f(benchmark::State& state, const KernelRef* k) {
-  const auto& in = inputs_for(k->family);
+  const PreparedPoints in(*k, inputs_for(k->family));
   std::size_t idx = 0;
   for (auto _ : state) {
-    double f = k->f(in[idx++ & (point_count - 1)]);
+    double f = in.f(idx++ & (point_count - 1));
     benchmark::DoNotOptimize(f);
   }
   state.SetItemsProcessed(state.iterations());
 }
 
 void bench_grad(benchmark::State& state, const KernelRef* k) {
-  const auto& in = inputs_for(k->family);
+  const PreparedPoints in(*k, inputs_for(k->family));
   std::size_t idx = 0;
   for (auto _ : state) {
-    Vec g = k->grad(in[idx++ & (point_count - 1)]);
+    Vec g = in.grad(idx++ & (point_count - 1));
     benchmark::DoNotOptimize(g);
   }
   state.SetItemsProcessed(state.iterations());
 }
 
 void bench_f_and_grad(benchmark::State& state, const KernelRef* k, Workload workload = Workload::default_points) {
-  const auto& in = inputs_for(k->family, workload);
+  const PreparedPoints in(*k, inputs_for(k->family, workload));
   std::size_t idx = 0;
   for (auto _ : state) {
     Vec g;
-    double f = k->f_and_grad(in[idx++ & (point_count - 1)], g);
+    double f = in.f_and_grad(idx++ & (point_count - 1), g);
     benchmark::DoNotOptimize(f);
     benchmark::DoNotOptimize(g);
   }
