@@ -122,6 +122,10 @@ class ScalisSegment {
   FrameFactors factors_;  ///< of F (value power 0)
   ScalisSegmentInput<double> input_;  ///< everything but P, in the frame
   const generated::ScalisSegmentKernel<double>* generated_ = nullptr;  ///< null for compact
+  /// The generated kernel's per-segment quantities (its `prepare`, once, at
+  /// construction, from input_): every evaluation reads them and does the
+  /// per-point work only.
+  std::vector<double> prepared_;
   /// Resolved once here, not per point: evaluator_name() (a C string, so
   /// that an evaluation allocates nothing) and where F diverges
   /// (is_divergent_point: on the segment itself, or at an end of radius 0).
