@@ -92,6 +92,8 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
   if (generated_ != nullptr) {
     prepared_.resize(generated_->prepared_size);
     generated_->prepare(input_, prepared_.data());
+  } else {
+    compact_ = std::make_shared<const detail::CompactSegment<double>>(detail::prepare_segment(kernel.degree, input_));
   }
   if (!std::isnormal(evaluation_normalisation_)) {
     throw InputError(fmt::format("the normalisation h of the SCALIS {} kernel of degree {} is {} for sigma = {}, "
@@ -130,11 +132,7 @@ std::string ScalisSegment::evaluator_name() const { return name_; }
   }
   const std::array<double, 3> point = to_array(frame_p);
   const double F = detail::evaluate_converged(name_, p, [&] {
-    if (generated_ == nullptr) {
-      ScalisSegmentInput<double> input = input_;
-      input.p = point;
-      return scalis_compact_F(kernel_.degree, input, grad);
-    }
+    if (generated_ == nullptr) return scalis_compact_F(*compact_, point, grad);
     if (grad == nullptr) return generated_->f_at(prepared_.data(), point);
     if (!want_value) {
       *grad = generated_->grad_at(prepared_.data(), point);
