@@ -13,9 +13,8 @@
 //                            or segment_cauchy_i4_w0) for f+∇f,
 //                            called directly on inputs prepared once per
 //                            primitive (frame points by one power-of-two
-//                            product; the classical kernel's `prepare`
-//                            once, then its per-point part), summed over
-//                            the primitives;
+//                            product; the kernel's `prepare` once, then
+//                            its per-point part), summed over the primitives;
 //   generated_f/N            the same, f alone;
 //   value_and_gradient/N     Skeleton::value_and_gradient, point by point;
 //   batch/N                  evaluate_batch (field/batch.hpp), one thread,
@@ -154,6 +153,9 @@ std::vector<RawPrimitive<ScalisSegmentInput<double>>> raw_scalis(std::size_t pri
     r.input.tau1 = frame.length(s.tau1());
     r.input.sigma = s.kernel().sigma;
     r.to_frame = std::ldexp(1.0, -frame.exponent());
+    const auto* kernel = generated::find_scalis_segment_kernel<double>(KernelFamily::cauchy, 4);
+    r.prepared.resize(kernel->prepared_size);
+    kernel->prepare(r.input, r.prepared.data());
     raw.push_back(r);
   }
   return raw;
@@ -185,24 +187,20 @@ double run_generated(const Kernel* kernel, const std::vector<RawPrimitive<Input>
   double sum = 0;
   for (const Vec3& p : points) {
     for (const RawPrimitive<Input>& r : raw) {
-      if constexpr (std::is_same_v<Input, SegmentInput<double>>) {
-        // The classical segment's per-point part, on its preparation.
-        const SegmentPoint<double> point{{p.x() * r.to_frame, p.y() * r.to_frame, p.z() * r.to_frame}};
-        if constexpr (with_gradient) {
-          std::array<double, 3> g;
-          sum += kernel->f_and_grad_at(r.prepared.data(), point, g) + g[0];
-        } else {
-          sum += kernel->f_at(r.prepared.data(), point);
-        }
-        continue;
-      }
-      Input input = r.input;
-      input.p = {p.x() * r.to_frame, p.y() * r.to_frame, p.z() * r.to_frame};
+      // The kernel's per-point part, on its preparation: it reads P (and a
+      // classical segment the clip, [0, 1] for Cauchy).
+      const std::array<double, 3> frame_p{p.x() * r.to_frame, p.y() * r.to_frame, p.z() * r.to_frame};
+      const auto point = [&] {
+        if constexpr (std::is_same_v<Input, SegmentInput<double>>)
+          return SegmentPoint<double>{frame_p};
+        else
+          return frame_p;
+      }();
       if constexpr (with_gradient) {
         std::array<double, 3> g;
-        sum += kernel->f_and_grad(input, g) + g[0];
+        sum += kernel->f_and_grad_at(r.prepared.data(), point, g) + g[0];
       } else {
-        sum += kernel->f(input);
+        sum += kernel->f_at(r.prepared.data(), point);
       }
     }
   }

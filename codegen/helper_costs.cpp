@@ -201,9 +201,10 @@ OpCount exact_cross() {
   });
 }
 
-OpCount scalis_compact_around_closed_form(int degree, bool with_grad) {
-  // A = 0, B = (1, 0, 0), τ 0.5 → 0.6, σ = 2, P = (0.4, 0.3, 0.1): Q(0) and
-  // Q(1) > 0, so the support is the whole segment.
+namespace {
+// A = 0, B = (1, 0, 0), τ 0.5 → 0.6, σ = 2, P = (0.4, 0.3, 0.1): Q(0) and
+// Q(1) > 0, so the support is the whole segment.
+ScalisSegmentInput<Counted> scalis_compact_sample() {
   ScalisSegmentInput<Counted> in;
   in.a = {Counted(0), Counted(0), Counted(0)};
   in.b = {Counted(1), Counted(0), Counted(0)};
@@ -211,9 +212,21 @@ OpCount scalis_compact_around_closed_form(int degree, bool with_grad) {
   in.tau0 = Counted(0.5);
   in.tau1 = Counted(0.6);
   in.sigma = Counted(2);
+  return in;
+}
+}  // namespace
+
+OpCount scalis_compact_segment_preparation(int degree) {
+  const ScalisSegmentInput<Counted> in = scalis_compact_sample();
+  return tally_of([&] { (void)detail::prepare_segment(degree, in); });
+}
+
+OpCount scalis_compact_around_closed_form(int degree, bool with_grad) {
+  const ScalisSegmentInput<Counted> in = scalis_compact_sample();
+  const detail::CompactSegment<Counted> segment = detail::prepare_segment(degree, in);
   return tally_of([&] {
     using namespace detail;
-    const Prepared<Counted> pr = prepare(degree, in);
+    const Prepared<Counted> pr = prepare(segment, in.p);
     if (pr.done || pr.support.root_at_t1 >= 0 || pr.support.root_at_t2 >= 0)
       throw std::logic_error("scalis_compact_around_closed_form: the sample point is not generic");
     (void)closed_form_input(pr);

@@ -61,10 +61,12 @@ OpCount point_support_gap();
 OpCount line_support_gap();
 
 /// The compact SCALIS segment's work around its generated closed form
-/// (skelconv/detail/scalis_compact_support.hpp): prepare, closed_form_input
-/// and finish, at a point inside the support with both ends of the segment
-/// inside it (the generic path: the plain products of support_depths, no
-/// root clips the segment), F alone or F and ∇F.
+/// (skelconv/detail/scalis_compact_support.hpp), per point: prepare,
+/// closed_form_input and finish, at a point inside the support with both
+/// ends of the segment inside it (the generic path: the plain products of
+/// support_depths, no root clips the segment), F alone or F and ∇F.
 OpCount scalis_compact_around_closed_form(int degree, bool with_grad);
+/// Its preparation, once per segment: prepare_segment.
+OpCount scalis_compact_segment_preparation(int degree);
 
 }  // namespace skelconv::codegen::helper_costs

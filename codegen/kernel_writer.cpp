@@ -47,11 +47,7 @@ namespace {
 
 struct EmittedKernel {
   SegmentKernelSpec spec;
-  OpCount ops[3];            // f, grad, f_and_grad per point: generic path
-  OpCount ops_longest[3];    // the same, longest path
-  OpCount ops_primitive[3];  // what each of them reads from the preparation, once per primitive
-  OpCount ops_prepare;       // the whole preparation (what any of the three reads)
-  std::size_t prepared_size = 0;
+  SplitKernel split;
 };
 
 // A segment kernel's inputs that are the same at every point: all but P
@@ -62,30 +58,35 @@ bool per_primitive_input(const std::string& cpp) {
 // The per-point inputs, read from the evaluation's SegmentPoint: in.p[0] → point.p[0].
 std::string point_input(const std::string& cpp) { return "point" + cpp.substr(2); }
 
-constexpr const char* kEvaluateParameters = "const T* pre, const SegmentPoint<T>& point";
-
-// The preparation of one kernel: what its f, ∇f and both read that depends
-// on the segment alone, into pre[0 .. size).
-std::string prepare_function_text(const SegmentKernelSpec& spec, std::size_t size, const EmittedCode& code) {
-  std::ostringstream os;
-  os << "/// How many values " << spec.name() << "_prepare writes.\n"
-     << "inline constexpr std::size_t " << spec.name() << "_prepared_size = " << size << ";\n\n"
-     << "/// What " << spec.name() << "_f, _grad and _f_and_grad read that depends on the segment\n"
-     << "/// alone (A, B, the weight, the kernel's parameter), into pre[0 .. " << size << "): computed once per\n"
-     << "/// segment; in.p, in.t0 and in.t1 are not read.\n"
-     << "/// Operations: " << ops_text(code.ops) << ".\n"
-     << "template <class T>\n"
-     << "void " << spec.name() << "_prepare(const SegmentInput<T>& in, T* pre) {\n"
-     << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n"
-     << code.body << "}\n\n";
-  return os.str();
+// The classical segments' split: everything but P and the compact clip is
+// the segment's.
+KernelSplit classical_split() {
+  return {"SegmentInput",
+          "const T* pre, const SegmentPoint<T>& point",
+          "const SegmentPoint<T>&",
+          "A, B, the weight, the kernel's parameter",
+          "in.p, in.t0 and in.t1 are",
+          "",
+          per_primitive_input,
+          point_input};
 }
 
-std::string function_text(const SegmentKernelSpec& spec, int which, const EmittedCode& code,
-                          const PreparedQuantities& prepared) {
-  return kernel_function_text_reading(
-      spec.name(), spec.equation(), kEvaluateParameters, which, code, prepared.read_fields_text(code.inputs_read),
-      "/// At one point, from the segment's pre[] (" + spec.name() + "_prepare); operations per point.\n");
+// The preparation of one kernel: what its f, ∇f and both read that depends
+// on the primitive alone, into pre[0 .. size).
+std::string prepare_function_text(const std::string& name, const KernelSplit& how, std::size_t size,
+                                  const EmittedCode& code) {
+  std::ostringstream os;
+  os << "/// How many values " << name << "_prepare writes.\n"
+     << "inline constexpr std::size_t " << name << "_prepared_size = " << size << ";\n\n"
+     << "/// What " << name << "_f, _grad and _f_and_grad read that depends on the segment\n"
+     << "/// alone (" << how.prepared_what << "), into pre[0 .. " << size << "): computed once per\n"
+     << "/// segment; " << how.not_read << " not read.\n"
+     << "/// Operations: " << ops_text(code.ops) << ".\n"
+     << "template <class T>\n"
+     << "void " << name << "_prepare(const " << how.input_type << "<T>& in, T* pre) {\n"
+     << "  using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;\n"
+     << how.prologue << code.body << "}\n\n";
+  return os.str();
 }
 
 // f and ∇f on the generic forms only: straight-line code whose operations
@@ -142,6 +143,67 @@ std::string kernel_function_text_reading(const std::string& kernel_name, const s
   return os.str();
 }
 
+SplitKernel split_kernel(const std::string& kernel_name, const std::string& equation,
+                         const std::array<StraightLineProgram, 3>& outputs, const KernelSplit& how) {
+  SplitKernel k;
+  // f and ∇f first: it reads the most, so its quantities come first in pre[].
+  PreparedQuantities prepared(how.per_primitive_input);
+  EmittedCode code[3];
+  for (const int which : {2, 0, 1}) code[which] = prepared.per_point_part(outputs[which], how.point_input).emit();
+  const EmittedCode preparation = prepared.prepare_program().emit();
+  k.ops_prepare = preparation.ops;
+  k.prepared_size = prepared.size();
+  k.text = prepare_function_text(kernel_name, how, prepared.size(), preparation);
+  for (int which = 0; which < 3; ++which) {
+    k.ops[which] = code[which].ops;
+    k.ops_longest[which] = code[which].ops_longest;
+    k.ops_primitive[which] = prepared.prepare_program(&code[which].inputs_read).emit().ops;
+    k.text += kernel_function_text_reading(
+        kernel_name, equation, how.evaluate_parameters, which, code[which],
+        prepared.read_fields_text(code[which].inputs_read),
+        "/// At one point, from the segment's pre[] (" + kernel_name + "_prepare); operations per point.\n");
+  }
+  return k;
+}
+
+std::string split_table_members(const KernelSplit& how) {
+  const std::string point = how.point_type;
+  return "  OpCount ops_prepare{};\n"
+         "  std::size_t prepared_size = 0;\n"
+         "  void (*prepare)(const " + how.input_type + "<T>&, T*) = nullptr;\n"
+         "  T (*f_at)(const T*, " + point + ") = nullptr;\n"
+         "  std::array<T, 3> (*grad_at)(const T*, " + point + ") = nullptr;\n"
+         "  T (*f_and_grad_at)(const T*, " + point + ", std::array<T, 3>&) = nullptr;\n";
+}
+
+std::string one_point_entries(const std::string& n) {
+  const std::string size = n + "_prepared_size";
+  auto at_one_point = [&](const char* wrapper, int which) {
+    return "&" + std::string(wrapper) + "<T, " + size + ", &" + n + "_prepare<T>, &" + n + "_" +
+           kFunctionSuffix[which] + "<T>>";
+  };
+  return at_one_point("prepared_f", 0) + ",\n       " + at_one_point("prepared_grad", 1) + ",\n       " +
+         at_one_point("prepared_f_and_grad", 2);
+}
+
+std::string split_entries(const std::string& n, const OpCount& ops_prepare) {
+  return ops_initializer(ops_prepare) + ", " + n + "_prepared_size, &" + n + "_prepare<T>, &" + n + "_f<T>, &" + n +
+         "_grad<T>, &" + n + "_f_and_grad<T>";
+}
+
+std::string split_csv_rows(const std::string& kernel_name, const std::string& family, int degree,
+                           int weight_degree, const SplitKernel& k) {
+  std::string rows;
+  for (int which = 0; which < 3; ++which) {
+    OpCount one = k.ops[which], longest = k.ops_longest[which];
+    one += k.ops_primitive[which];
+    longest += k.ops_primitive[which];
+    rows += opcount_csv_row(kernel_name, family, degree, weight_degree, which, one, longest, &k.ops[which],
+                            &k.ops_primitive[which]);
+  }
+  return rows;
+}
+
 std::string opcount_csv_row(const std::string& kernel_name, const std::string& family, int degree, int weight_degree,
                             int which, const OpCount& o, const OpCount& l, const OpCount* point,
                             const OpCount* primitive) {
@@ -189,7 +251,7 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
   // terms by its symbols' serial numbers, and the split makes symbols of
   // its own, which would otherwise reorder the polygon and SCALIS code.
   struct Programs {
-    StraightLineProgram outputs[3];  // f, grad, f_and_grad
+    std::array<StraightLineProgram, 3> outputs;  // f, grad, f_and_grad
     std::string generic_text;
   };
   std::vector<Programs> programs;
@@ -201,31 +263,19 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
   }
 
   // Polygon edges and SCALIS segments: their own headers and tables
-  // (polygon_writer.cpp, scalis_segment_writer.cpp).
+  // (polygon_writer.cpp, scalis_segment_writer.cpp); the SCALIS kernels are
+  // split after the classical ones.
   const std::string polygon_csv_rows = write_polygon_files(request, folder);
-  const std::string scalis_csv_rows = write_scalis_segment_files(request, folder);
+  const std::vector<std::array<StraightLineProgram, 3>> scalis_programs = build_scalis_segment_programs(request);
 
+  const KernelSplit split = classical_split();
   for (std::size_t i = 0; i < request.segment_kernels.size(); ++i) {
     const SegmentKernelSpec& spec = request.segment_kernels[i];
-    EmittedKernel k{spec, {}, {}, {}, {}};
-    std::string& body = family_bodies[spec.family];
-    // f and ∇f first: it reads the most, so its quantities come first in pre[].
-    PreparedQuantities prepared(per_primitive_input);
-    EmittedCode code[3];
-    for (const int which : {2, 0, 1}) code[which] = prepared.per_point_part(programs[i].outputs[which], point_input).emit();
-    const EmittedCode preparation = prepared.prepare_program().emit();
-    k.ops_prepare = preparation.ops;
-    k.prepared_size = prepared.size();
-    body += prepare_function_text(spec, prepared.size(), preparation);
-    for (int which = 0; which < 3; ++which) {
-      k.ops[which] = code[which].ops;
-      k.ops_longest[which] = code[which].ops_longest;
-      k.ops_primitive[which] = prepared.prepare_program(&code[which].inputs_read).emit().ops;
-      body += function_text(spec, which, code[which], prepared);
-    }
-    body += programs[i].generic_text;
+    EmittedKernel k{spec, split_kernel(spec.name(), spec.equation(), programs[i].outputs, split)};
+    family_bodies[spec.family] += k.split.text + programs[i].generic_text;
     kernels.push_back(k);
   }
+  const std::string scalis_csv_rows = write_scalis_segment_files(request, folder, scalis_programs);
 
   // One header per family: its functions, then its part of the lookup
   // table (segment_<family>_kernels<T>(), declared in segment_table.hpp).
@@ -251,18 +301,11 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
     for (const EmittedKernel& k : kernels) {
       if (k.spec.family != family) continue;
       const std::string n = k.spec.name();
-      const std::string size = n + "_prepared_size";
-      auto at_one_point = [&](const char* wrapper, int which) {
-        return "&" + std::string(wrapper) + "<T, " + size + ", &" + n + "_prepare<T>, &" + n + "_" +
-               kFunctionSuffix[which] + "<T>>";
-      };
       os << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", "
-         << k.spec.weight_degree << ",\n       " << at_one_point("prepared_f", 0) << ",\n       "
-         << at_one_point("prepared_grad", 1) << ",\n       " << at_one_point("prepared_f_and_grad", 2) << ",\n       \""
-         << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.ops[0]) << ", "
-         << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2]) << ",\n       "
-         << ops_initializer(k.ops_prepare) << ", " << size << ", &" << n << "_prepare<T>, &" << n << "_f<T>, &" << n
-         << "_grad<T>, &" << n << "_f_and_grad<T>},\n";
+         << k.spec.weight_degree << ",\n       " << one_point_entries(n) << ",\n       \""
+         << n << "\",\n       \"" << k.spec.equation() << "\", " << ops_initializer(k.split.ops[0]) << ", "
+         << ops_initializer(k.split.ops[1]) << ", " << ops_initializer(k.split.ops[2]) << ",\n       "
+         << split_entries(n, k.split.ops_prepare) << "},\n";
     }
     os << "  };\n  return table;\n}\n\n"
        << "}  // namespace skelconv::generated\n";
@@ -278,13 +321,13 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
   table << file_header("segment_table.hpp", "the lookup table of the generated segment kernels (declarations).", request)
         << "#pragma once\n\n#include <array>\n#include <span>\n#include <vector>\n\n"
         << "#include <skelconv/kernels/kernel_family.hpp>\n#include <skelconv/kernels/op_count.hpp>\n"
-        << "#include <skelconv/primitives/segment_input.hpp>\n\n"
+        << "#include <skelconv/primitives/prepared_kernel.hpp>\n#include <skelconv/primitives/segment_input.hpp>\n\n"
         << "namespace skelconv::generated {\n\n"
         << "/// One generated kernel: f, ∇f and both, with their operation counts.\n"
         << "/// A generated kernel is split in two: `prepare` computes what depends on the\n"
         << "/// segment alone into an array of `prepared_size` values, once per segment, and\n"
         << "/// `f_at`, `grad_at`, `f_and_grad_at` read it at each point. `f`, `grad` and\n"
-        << "/// `f_and_grad` do both for one point (prepared_f below). The ops_* counts are\n"
+        << "/// `f_and_grad` do both for one point (prepared_f, prepared_kernel.hpp). The ops_* counts are\n"
         << "/// per point; ops_prepare is the preparation's, once per segment. The derived\n"
         << "/// Gaussian entry (derived_segment_kernels.hpp) is not split: no `prepare`.\n"
         << "template <class T>\nstruct SegmentKernel {\n"
@@ -294,26 +337,7 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
         << "  T (*f_and_grad)(const SegmentInput<T>&, std::array<T, 3>&);\n"
         << "  const char* name;\n  const char* equation;\n"
         << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n"
-        << "  OpCount ops_prepare{};\n"
-        << "  std::size_t prepared_size = 0;\n"
-        << "  void (*prepare)(const SegmentInput<T>&, T*) = nullptr;\n"
-        << "  T (*f_at)(const T*, const SegmentPoint<T>&) = nullptr;\n"
-        << "  std::array<T, 3> (*grad_at)(const T*, const SegmentPoint<T>&) = nullptr;\n"
-        << "  T (*f_and_grad_at)(const T*, const SegmentPoint<T>&, std::array<T, 3>&) = nullptr;\n};\n\n"
-        << "/// A split kernel's f, ∇f, or both at one point of a SegmentInput: its\n"
-        << "/// preparation, then its evaluation (one entry point for the callers that\n"
-        << "/// evaluate a segment once: the verifier, the tests, the benchmarks).\n"
-        << "template <class T>\nSegmentPoint<T> point_of(const SegmentInput<T>& in) {\n"
-        << "  return {in.p, in.t0, in.t1};\n}\n"
-        << "template <class T, std::size_t N, auto prepare, auto evaluate>\n"
-        << "T prepared_f(const SegmentInput<T>& in) {\n"
-        << "  std::array<T, N> pre;\n  prepare(in, pre.data());\n  return evaluate(pre.data(), point_of(in));\n}\n"
-        << "template <class T, std::size_t N, auto prepare, auto evaluate>\n"
-        << "std::array<T, 3> prepared_grad(const SegmentInput<T>& in) {\n"
-        << "  std::array<T, N> pre;\n  prepare(in, pre.data());\n  return evaluate(pre.data(), point_of(in));\n}\n"
-        << "template <class T, std::size_t N, auto prepare, auto evaluate>\n"
-        << "T prepared_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {\n"
-        << "  std::array<T, N> pre;\n  prepare(in, pre.data());\n  return evaluate(pre.data(), point_of(in), grad);\n}\n\n";
+        << split_table_members(split) << "};\n\n";
   for (const auto& [family, body] : family_bodies)
     table << "/// The " << family_name(family) << " family's kernels (defined in generated/segment_"
           << family_name(family) << ".hpp).\n"
@@ -339,19 +363,14 @@ void write_generated_folder(const GeneratorRequest& request, const std::filesyst
   // One evaluation (the first two groups) is the preparation of what the
   // output reads plus the per-point code; point_* is the per-point code
   // alone and primitive_* that preparation, once per primitive. Rows
-  // without the split (polygon edges, SCALIS) leave the last two empty.
+  // without the split (polygon edges) leave the last two empty.
   csv << "function,family,degree,weight_degree,outputs,add,mul,div,sqrt,atan,log,other,"
          "longest_add,longest_mul,longest_div,longest_sqrt,longest_atan,longest_log,longest_other,"
          "point_add,point_mul,point_div,point_sqrt,point_atan,point_log,point_other,"
          "primitive_add,primitive_mul,primitive_div,primitive_sqrt,primitive_atan,primitive_log,primitive_other\n";
   for (const EmittedKernel& k : kernels)
-    for (int which = 0; which < 3; ++which) {
-      OpCount one = k.ops[which], longest = k.ops_longest[which];
-      one += k.ops_primitive[which];
-      longest += k.ops_primitive[which];
-      csv << opcount_csv_row(k.spec.name(), std::string(family_name(k.spec.family)), k.spec.degree,
-                             k.spec.weight_degree, which, one, longest, &k.ops[which], &k.ops_primitive[which]);
-    }
+    csv << split_csv_rows(k.spec.name(), std::string(family_name(k.spec.family)), k.spec.degree, k.spec.weight_degree,
+                          k.split);
   csv << polygon_csv_rows << scalis_csv_rows;
   write_file(folder / "opcounts.csv", csv.str());
 }

@@ -2,7 +2,9 @@
 // lookup table and the operation-count table.
 #pragma once
 
+#include <array>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -53,14 +55,55 @@ std::string opcount_csv_row(const std::string& kernel_name, const std::string& f
                             const OpCount* primitive = nullptr);
 void write_file(const std::filesystem::path& path, const std::string& text);
 
+/// How a family's kernels are split into a preparation, once per primitive,
+/// and per-point functions (PreparedQuantities): the C++ the split writes.
+struct KernelSplit {
+  std::string input_type;           ///< the one-point input, e.g. "SegmentInput"
+  std::string evaluate_parameters;  ///< the per-point functions' parameters (before `grad`)
+  std::string point_type;           ///< the per-point argument's type, e.g. "const SegmentPoint<T>&"
+  std::string prepared_what;        ///< the preparation's comment: what it reads
+  std::string not_read;             ///< the preparation's comment: the per-point inputs it does not read
+  std::string prologue;             ///< C++ statements before the preparation's body
+  std::function<bool(const std::string& cpp)> per_primitive_input;
+  std::function<std::string(const std::string& cpp)> point_input;  ///< a per-point input's C++ in the evaluation
+};
+/// One kernel split: <name>_prepared_size, <name>_prepare and <name>_f,
+/// _grad, _f_and_grad (per point), with the operation counts.
+struct SplitKernel {
+  std::string text;
+  OpCount ops[3], ops_longest[3];  ///< f, grad, f_and_grad per point: generic path, longest path
+  OpCount ops_primitive[3];        ///< what each of them reads from the preparation, once per primitive
+  OpCount ops_prepare;             ///< the whole preparation (what any of the three reads)
+  std::size_t prepared_size = 0;
+};
+/// Splits the programs of a kernel's f, ∇f and both (built from fresh
+/// symbols of the same names) as `how` says.
+SplitKernel split_kernel(const std::string& kernel_name, const std::string& equation,
+                         const std::array<StraightLineProgram, 3>& outputs, const KernelSplit& how);
+/// The members a split kernel adds to its table's struct (after the one-point
+/// functions and their counts), and its entry's values for them and for the
+/// one-point functions (generic wrappers, skelconv/primitives/prepared_kernel.hpp).
+std::string split_table_members(const KernelSplit& how);
+std::string one_point_entries(const std::string& kernel_name);
+std::string split_entries(const std::string& kernel_name, const OpCount& ops_prepare);
+/// The opcounts.csv rows of a split kernel: one evaluation (the preparation of
+/// what the output reads plus the per-point code), then per point and per primitive.
+std::string split_csv_rows(const std::string& kernel_name, const std::string& family, int degree,
+                           int weight_degree, const SplitKernel& k);
+
 /// Writes generated/polygon_{inverse,cauchy,compact}.hpp and
 /// polygon_table.hpp; returns their rows of opcounts.csv.
 std::string write_polygon_files(const GeneratorRequest& request, const std::filesystem::path& folder);
 
-/// Writes generated/scalis_segment_{inverse,cauchy}.hpp,
+/// The programs of the SCALIS segment kernels (f, grad, f_and_grad each),
+/// built before the classical kernels are split: GiNaC orders terms by its
+/// symbols' serial numbers, and the split makes symbols of its own.
+std::vector<std::array<StraightLineProgram, 3>> build_scalis_segment_programs(const GeneratorRequest& request);
+/// Splits them and writes generated/scalis_segment_{inverse,cauchy}.hpp,
 /// scalis_segment_table.hpp and (write_scalis_compact_file)
 /// scalis_segment_compact.hpp; returns their rows of opcounts.csv.
-std::string write_scalis_segment_files(const GeneratorRequest& request, const std::filesystem::path& folder);
+std::string write_scalis_segment_files(const GeneratorRequest& request, const std::filesystem::path& folder,
+                                       const std::vector<std::array<StraightLineProgram, 3>>& programs);
 std::string write_scalis_compact_file(const GeneratorRequest& request, const std::filesystem::path& folder);
 
 }  // namespace skelconv::codegen

@@ -49,12 +49,13 @@
 // in the frame where τ_max ≈ 1), τ(t1)^−(i+1) could leave the double range:
 // the functions return false and the runtime's Gauss panels take the point.
 //
-// Operation counts (opcounts.csv, family scalis_compact): the code below,
-// counted on the text written (op_count.hpp's rules), plus the runtime's work
-// around it (prepare, closed_form_input, finish), measured on the counting
-// scalar (helper_costs.hpp); the generic path is the first piece (κ ≤ 1/2,
-// radii varying by less than a factor 2 over the support), the longest the
-// partial-fraction form.
+// Operation counts (opcounts.csv, family scalis_compact): per point, the
+// code below, counted on the text written (op_count.hpp's rules), plus the
+// runtime's work around it (prepare, closed_form_input, finish), measured on
+// the counting scalar (helper_costs.hpp); per primitive, the runtime's
+// prepare_segment, once per segment. The generic path is the first piece
+// (κ ≤ 1/2, radii varying by less than a factor 2 over the support), the
+// longest the partial-fraction form.
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -366,16 +367,11 @@ std::string weighted_sum(Block& b, const Poly& d, const std::string& name) {
   return name;
 }
 
-struct CompactKernel {
-  int degree;
-  OpCount ops[3], ops_longest[3];
-};
-
 std::string kernel_name(int i) { return "scalis_segment_compact_i" + std::to_string(i); }
 
 /// One function: `which` 0 f, 1 g0 and g1, 2 all three.
 std::string function_text(int i, int which, const std::vector<Piece>& pieces, int closed_piece,
-                          CompactKernel& kernel) {
+                          SplitKernel& kernel) {
   const int m = i / 2;
   const bool value = which != 1, gradient = which != 0;
   Block common(1);
@@ -490,6 +486,7 @@ std::string function_text(int i, int which, const std::vector<Piece>& pieces, in
   const OpCount around = helper_costs::scalis_compact_around_closed_form(i, gradient);
   kernel.ops[which] = generic + around;
   kernel.ops_longest[which] = longest + around;
+  kernel.ops_primitive[which] = helper_costs::scalis_compact_segment_preparation(i);
 
   static const char* kWhat[] = {"f", "g0 and g1", "f, g0 and g1"};
   std::ostringstream os;
@@ -497,7 +494,8 @@ std::string function_text(int i, int which, const std::vector<Piece>& pieces, in
      << " over its support (file comment); false where\n"
      << "/// no form is proven accurate (P near a cone tip).\n"
      << "/// Operations here: " << ops_text(generic) << " (generic form), longest " << ops_text(longest)
-     << ";\n/// with the runtime's work around it: " << ops_text(kernel.ops[which]) << ".\n"
+     << ";\n/// with the runtime's work around it, per point: " << ops_text(kernel.ops[which])
+     << ";\n/// once per segment (prepare_segment): " << ops_text(kernel.ops_primitive[which]) << ".\n"
      << "template <class T>\n"
      << "bool " << kernel_name(i) << "_" << kFunctionSuffix[which]
      << "(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {\n"
@@ -515,13 +513,11 @@ std::string write_scalis_compact_file(const GeneratorRequest& request, const std
     const int closed_piece = partial_fraction_piece(i);
     std::vector<Piece> pieces;
     for (int p = 0; p < closed_piece; ++p) pieces.push_back(chebyshev_piece(i, p));
-    CompactKernel kernel{i, {}, {}};
+    SplitKernel kernel;
     for (int which = 0; which < 3; ++which) body << function_text(i, which, pieces, closed_piece, kernel);
     dispatch << "    case " << i << ":\n      return which == 0 ? " << kernel_name(i) << "_f(in, out) : which == 1 ? "
              << kernel_name(i) << "_grad(in, out) : " << kernel_name(i) << "_f_and_grad(in, out);\n";
-    for (int which = 0; which < 3; ++which)
-      csv << opcount_csv_row(kernel_name(i), "scalis_compact", i, 0, which, kernel.ops[which],
-                             kernel.ops_longest[which]);
+    csv << split_csv_rows(kernel_name(i), "scalis_compact", i, 0, kernel);
   }
   std::ostringstream os;
   os << file_header("scalis_segment_compact.hpp",

@@ -24,27 +24,46 @@ constexpr const char* kScalisPrologue =
 
 std::string scalis_family_name(KernelFamily family) { return "scalis_" + std::string(family_name(family)); }
 
+// The SCALIS segments' split: everything but P is the segment's; the
+// preparation orders the ends (kScalisPrologue) once.
+KernelSplit scalis_split() {
+  return {"ScalisSegmentInput",
+          "const T* pre, const std::array<T, 3>& p",
+          "const std::array<T, 3>&",
+          "A, B, the radii, σ",
+          "in.p is",
+          kScalisPrologue,
+          [](const std::string& cpp) { return cpp.rfind("in.p[", 0) != 0; },
+          [](const std::string& cpp) { return cpp.substr(3); }};  // in.p[0] → p[0]
+}
+
 struct EmittedScalisKernel {
   ScalisKernelSpec spec;
-  OpCount ops[3], ops_longest[3];
+  SplitKernel split;
 };
 
 }  // namespace
 
-std::string write_scalis_segment_files(const GeneratorRequest& request, const std::filesystem::path& folder) {
+std::vector<std::array<StraightLineProgram, 3>> build_scalis_segment_programs(const GeneratorRequest& request) {
+  std::vector<std::array<StraightLineProgram, 3>> programs;
+  for (const ScalisKernelSpec& spec : request.scalis_segment_kernels) {
+    std::array<StraightLineProgram, 3>& p = programs.emplace_back();
+    for (int which = 0; which < 3; ++which) p[which] = build_scalis_segment_program(spec, kOutputs[which]);
+  }
+  return programs;
+}
+
+std::string write_scalis_segment_files(const GeneratorRequest& request, const std::filesystem::path& folder,
+                                       const std::vector<std::array<StraightLineProgram, 3>>& programs) {
   const std::string compact_rows = request.scalis_compact_degrees.empty() ? "" : write_scalis_compact_file(request, folder);
   if (request.scalis_segment_kernels.empty()) return compact_rows;
   std::vector<EmittedScalisKernel> kernels;
   std::map<KernelFamily, std::string> family_bodies;
-  for (const ScalisKernelSpec& spec : request.scalis_segment_kernels) {
-    EmittedScalisKernel k{spec, {}, {}};
-    for (int which = 0; which < 3; ++which) {
-      const EmittedCode code = build_scalis_segment_program(spec, kOutputs[which]).emit();
-      k.ops[which] = code.ops;
-      k.ops_longest[which] = code.ops_longest;
-      family_bodies[spec.family] +=
-          kernel_function_text(spec.name(), spec.equation(), "ScalisSegmentInput", which, code, kScalisPrologue);
-    }
+  const KernelSplit split = scalis_split();
+  for (std::size_t i = 0; i < request.scalis_segment_kernels.size(); ++i) {
+    const ScalisKernelSpec& spec = request.scalis_segment_kernels[i];
+    EmittedScalisKernel k{spec, split_kernel(spec.name(), spec.equation(), programs[i], split)};
+    family_bodies[spec.family] += k.split.text;
     kernels.push_back(k);
   }
 
@@ -70,27 +89,32 @@ std::string write_scalis_segment_files(const GeneratorRequest& request, const st
   table << file_header("scalis_segment_table.hpp", "every generated SCALIS segment kernel, for lookup at run time.",
                        request)
         << from << "#pragma once\n\n#include <array>\n#include <span>\n\n#include <skelconv/kernels/op_count.hpp>\n"
-        << "#include <skelconv/primitives/segment_input.hpp>\n\n";
+        << "#include <skelconv/primitives/prepared_kernel.hpp>\n#include <skelconv/primitives/segment_input.hpp>\n\n";
   for (const auto& [family, body] : family_bodies)
     table << "#include \"generated/scalis_segment_" << family_name(family) << ".hpp\"\n";
   table << "\nnamespace skelconv::generated {\n\n"
         << "/// One generated SCALIS segment kernel: F, ∇F and both (unnormalised), with their operation counts.\n"
+        << "/// Split in two like SegmentKernel (segment_table.hpp): `prepare` once per segment,\n"
+        << "/// `f_at`, `grad_at`, `f_and_grad_at` at each point P (in the input's frame); `f`,\n"
+        << "/// `grad` and `f_and_grad` do both for one point. The ops_* counts are per point;\n"
+        << "/// ops_prepare is the preparation's, once per segment.\n"
         << "template <class T>\nstruct ScalisSegmentKernel {\n"
         << "  KernelFamily family;\n  int degree;\n"
         << "  T (*f)(const ScalisSegmentInput<T>&);\n"
         << "  std::array<T, 3> (*grad)(const ScalisSegmentInput<T>&);\n"
         << "  T (*f_and_grad)(const ScalisSegmentInput<T>&, std::array<T, 3>&);\n"
         << "  const char* name;\n  const char* equation;\n"
-        << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n};\n\n"
+        << "  OpCount ops_f, ops_grad, ops_f_and_grad;\n"
+        << split_table_members(split) << "};\n\n"
         << "/// Every generated SCALIS segment kernel, sorted by family and degree.\n"
         << "template <class T>\nstd::span<const ScalisSegmentKernel<T>> scalis_segment_kernels() {\n"
         << "  static const ScalisSegmentKernel<T> table[] = {\n";
   for (const EmittedScalisKernel& k : kernels) {
     const std::string n = k.spec.name();
-    table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ", &" << n << "_f<T>, &"
-          << n << "_grad<T>, &" << n << "_f_and_grad<T>, \"" << n << "\",\n       \"" << k.spec.equation() << "\", "
-          << ops_initializer(k.ops[0]) << ", " << ops_initializer(k.ops[1]) << ", " << ops_initializer(k.ops[2])
-          << "},\n";
+    table << "      {KernelFamily::" << family_name(k.spec.family) << ", " << k.spec.degree << ",\n       "
+          << one_point_entries(n) << ",\n       \"" << n << "\",\n       \"" << k.spec.equation() << "\", "
+          << ops_initializer(k.split.ops[0]) << ", " << ops_initializer(k.split.ops[1]) << ", "
+          << ops_initializer(k.split.ops[2]) << ",\n       " << split_entries(n, k.split.ops_prepare) << "},\n";
   }
   table << "  };\n  return table;\n}\n\n"
         << "/// The SCALIS segment kernel for (family, degree), or nullptr if it was not generated.\n"
@@ -105,9 +129,8 @@ std::string write_scalis_segment_files(const GeneratorRequest& request, const st
   // Rows of opcounts.csv (same columns as the segment rows; weight degree i − 1).
   std::ostringstream csv;
   for (const EmittedScalisKernel& k : kernels)
-    for (int which = 0; which < 3; ++which)
-      csv << opcount_csv_row(k.spec.name(), scalis_family_name(k.spec.family), k.spec.degree, k.spec.degree - 1,
-                             which, k.ops[which], k.ops_longest[which]);
+    csv << split_csv_rows(k.spec.name(), scalis_family_name(k.spec.family), k.spec.degree, k.spec.degree - 1,
+                          k.split);
   return csv.str() + compact_rows;
 }
 

@@ -18,7 +18,8 @@ namespace skelconv::generated {
 /// f of the compact SCALIS segment of degree 2 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 31 +, 43 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 31 +, 43 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 98 +, 123 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 90 +, 106 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i2_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -92,7 +93,8 @@ bool scalis_segment_compact_i2_f(const ScalisCompactSupport<T>& in, ScalisCompac
 /// g0 and g1 of the compact SCALIS segment of degree 2 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 34 +, 49 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 34 +, 49 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 104 +, 142 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 96 +, 124 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i2_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -174,7 +176,8 @@ bool scalis_segment_compact_i2_grad(const ScalisCompactSupport<T>& in, ScalisCom
 /// f, g0 and g1 of the compact SCALIS segment of degree 2 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 36 +, 57 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 36 +, 57 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 106 +, 150 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 98 +, 132 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i2_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -261,7 +264,8 @@ bool scalis_segment_compact_i2_f_and_grad(const ScalisCompactSupport<T>& in, Sca
 /// f of the compact SCALIS segment of degree 4 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 39 +, 60 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 40 +, 61 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 106 +, 140 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 98 +, 123 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i4_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -419,7 +423,8 @@ bool scalis_segment_compact_i4_f(const ScalisCompactSupport<T>& in, ScalisCompac
 /// g0 and g1 of the compact SCALIS segment of degree 4 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 49 +, 67 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 50 +, 68 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 119 +, 160 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 111 +, 142 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i4_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -598,7 +603,8 @@ bool scalis_segment_compact_i4_grad(const ScalisCompactSupport<T>& in, ScalisCom
 /// f, g0 and g1 of the compact SCALIS segment of degree 4 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 57 +, 89 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 58 +, 90 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 127 +, 182 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 119 +, 164 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i4_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -789,7 +795,8 @@ bool scalis_segment_compact_i4_f_and_grad(const ScalisCompactSupport<T>& in, Sca
 /// f of the compact SCALIS segment of degree 6 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 51 +, 83 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 52 +, 84 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 118 +, 163 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 110 +, 146 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i6_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -1006,7 +1013,8 @@ bool scalis_segment_compact_i6_f(const ScalisCompactSupport<T>& in, ScalisCompac
 /// g0 and g1 of the compact SCALIS segment of degree 6 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 67 +, 92 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 68 +, 93 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 137 +, 185 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 129 +, 167 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i6_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -1252,7 +1260,8 @@ bool scalis_segment_compact_i6_grad(const ScalisCompactSupport<T>& in, ScalisCom
 /// f, g0 and g1 of the compact SCALIS segment of degree 6 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 81 +, 124 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 82 +, 125 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 151 +, 217 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 143 +, 199 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i6_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -1514,7 +1523,8 @@ bool scalis_segment_compact_i6_f_and_grad(const ScalisCompactSupport<T>& in, Sca
 /// f of the compact SCALIS segment of degree 8 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 67 +, 111 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 68 +, 112 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 134 +, 191 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 126 +, 174 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i8_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -1756,7 +1766,8 @@ bool scalis_segment_compact_i8_f(const ScalisCompactSupport<T>& in, ScalisCompac
 /// g0 and g1 of the compact SCALIS segment of degree 8 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 89 +, 122 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 90 +, 123 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 159 +, 215 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 151 +, 197 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i8_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -2035,7 +2046,8 @@ bool scalis_segment_compact_i8_grad(const ScalisCompactSupport<T>& in, ScalisCom
 /// f, g0 and g1 of the compact SCALIS segment of degree 8 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 109 +, 164 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 110 +, 165 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 179 +, 257 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 171 +, 239 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i8_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -2334,7 +2346,8 @@ bool scalis_segment_compact_i8_f_and_grad(const ScalisCompactSupport<T>& in, Sca
 /// f of the compact SCALIS segment of degree 10 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 87 +, 145 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 89 +, 146 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 154 +, 225 ×, 8 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 146 +, 208 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i10_f(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -2644,7 +2657,8 @@ bool scalis_segment_compact_i10_f(const ScalisCompactSupport<T>& in, ScalisCompa
 /// g0 and g1 of the compact SCALIS segment of degree 10 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 115 +, 158 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 117 +, 159 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 185 +, 251 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 177 +, 233 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i10_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;
@@ -2999,7 +3013,8 @@ bool scalis_segment_compact_i10_grad(const ScalisCompactSupport<T>& in, ScalisCo
 /// f, g0 and g1 of the compact SCALIS segment of degree 10 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
 /// Operations here: 141 +, 210 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 143 +, 211 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it: 211 +, 303 ×, 9 /, 6 sqrt, 0 atan, 0 log/asinh.
+/// with the runtime's work around it, per point: 203 +, 285 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i10_f_and_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
   using std::log;

@@ -13,6 +13,7 @@
 
 #include <skelconv/kernels/kernel_family.hpp>
 #include <skelconv/kernels/op_count.hpp>
+#include <skelconv/primitives/prepared_kernel.hpp>
 #include <skelconv/primitives/segment_input.hpp>
 
 namespace skelconv::generated {
@@ -21,7 +22,7 @@ namespace skelconv::generated {
 /// A generated kernel is split in two: `prepare` computes what depends on the
 /// segment alone into an array of `prepared_size` values, once per segment, and
 /// `f_at`, `grad_at`, `f_and_grad_at` read it at each point. `f`, `grad` and
-/// `f_and_grad` do both for one point (prepared_f below). The ops_* counts are
+/// `f_and_grad` do both for one point (prepared_f, prepared_kernel.hpp). The ops_* counts are
 /// per point; ops_prepare is the preparation's, once per segment. The derived
 /// Gaussian entry (derived_segment_kernels.hpp) is not split: no `prepare`.
 template <class T>
@@ -42,32 +43,6 @@ struct SegmentKernel {
   std::array<T, 3> (*grad_at)(const T*, const SegmentPoint<T>&) = nullptr;
   T (*f_and_grad_at)(const T*, const SegmentPoint<T>&, std::array<T, 3>&) = nullptr;
 };
-
-/// A split kernel's f, ∇f, or both at one point of a SegmentInput: its
-/// preparation, then its evaluation (one entry point for the callers that
-/// evaluate a segment once: the verifier, the tests, the benchmarks).
-template <class T>
-SegmentPoint<T> point_of(const SegmentInput<T>& in) {
-  return {in.p, in.t0, in.t1};
-}
-template <class T, std::size_t N, auto prepare, auto evaluate>
-T prepared_f(const SegmentInput<T>& in) {
-  std::array<T, N> pre;
-  prepare(in, pre.data());
-  return evaluate(pre.data(), point_of(in));
-}
-template <class T, std::size_t N, auto prepare, auto evaluate>
-std::array<T, 3> prepared_grad(const SegmentInput<T>& in) {
-  std::array<T, N> pre;
-  prepare(in, pre.data());
-  return evaluate(pre.data(), point_of(in));
-}
-template <class T, std::size_t N, auto prepare, auto evaluate>
-T prepared_f_and_grad(const SegmentInput<T>& in, std::array<T, 3>& grad) {
-  std::array<T, N> pre;
-  prepare(in, pre.data());
-  return evaluate(pre.data(), point_of(in), grad);
-}
 
 /// The inverse family's kernels (defined in generated/segment_inverse.hpp).
 template <class T>

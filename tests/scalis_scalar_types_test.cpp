@@ -53,8 +53,12 @@ TEST(ScalisScalarTypes, CppBinFloat50CompilesForOneFunction) {
   using Big = boost::multiprecision::cpp_bin_float_50;
   const auto in_big = general_position_input<Big>(0.3, 0.8);
   const auto in_d = general_position_input<double>(0.3, 0.8);
-  const Big f_big = skelconv::generated::scalis_segment_cauchy_i4_f(in_big);
-  const double f_d = skelconv::generated::scalis_segment_cauchy_i4_f(in_d);
+  using namespace skelconv::generated;
+  constexpr std::size_t n = scalis_segment_cauchy_i4_prepared_size;
+  const Big f_big =
+      prepared_f<Big, n, &scalis_segment_cauchy_i4_prepare<Big>, &scalis_segment_cauchy_i4_f<Big>>(in_big);
+  const double f_d =
+      prepared_f<double, n, &scalis_segment_cauchy_i4_prepare<double>, &scalis_segment_cauchy_i4_f<double>>(in_d);
   EXPECT_LE(std::abs(f_d - static_cast<double>(f_big)), 1e-13 * std::abs(f_d));
 }
 

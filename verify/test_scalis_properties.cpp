@@ -402,7 +402,8 @@ TEST(ScalisCompact, ClosedFormRegions) {
         const ScalisReference ref = reference.evaluate({KernelFamily::compact, degree}, widen(in));
         if (ref.empty) continue;
         summary.add(F, g, ref);
-        const auto prepared = skelconv::detail::prepare(degree, in);
+        const auto segment = skelconv::detail::prepare_segment(degree, in);
+        const auto prepared = skelconv::detail::prepare(segment, in.p);
         ScalisCompactIntegrals<double> integrals{};
         if (!prepared.done &&
             generated::scalis_segment_compact_closed_form(degree, 2, skelconv::detail::closed_form_input(prepared),

@@ -89,6 +89,12 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
     evaluation_normalisation_ = normalisation(kernel.family, kernel.degree, 1.0);
   }
   field_scale_ = iso_ / evaluation_normalisation_;
+  if (generated_ != nullptr) {
+    prepared_.resize(generated_->prepared_size);
+    generated_->prepare(input_, prepared_.data());
+  } else {
+    compact_ = std::make_shared<const detail::CompactSegment<double>>(detail::prepare_segment(kernel.degree, input_));
+  }
   if (!std::isnormal(evaluation_normalisation_)) {
     throw InputError(fmt::format("the normalisation h of the SCALIS {} kernel of degree {} is {} for sigma = {}, "
                                  "outside the normal range of double precision: choose sigma nearer 1",
@@ -124,16 +130,15 @@ std::string ScalisSegment::evaluator_name() const { return name_; }
     if (grad != nullptr) *grad = {infinity, infinity, infinity};
     return infinity;
   }
-  ScalisSegmentInput<double> input = input_;
-  input.p = to_array(frame_p);
+  const std::array<double, 3> point = to_array(frame_p);
   const double F = detail::evaluate_converged(name_, p, [&] {
-    if (generated_ == nullptr) return scalis_compact_F(kernel_.degree, input, grad);
-    if (grad == nullptr) return generated_->f(input);
+    if (generated_ == nullptr) return scalis_compact_F(*compact_, point, grad);
+    if (grad == nullptr) return generated_->f_at(prepared_.data(), point);
     if (!want_value) {
-      *grad = generated_->grad(input);
+      *grad = generated_->grad_at(prepared_.data(), point);
       return 0.0;
     }
-    return generated_->f_and_grad(input, *grad);
+    return generated_->f_and_grad_at(prepared_.data(), point, *grad);
   });
   // Normalised in the frame, then brought back (F is scale invariant, ∇F
   // has units length^−1); a result outside the double range is an error.

@@ -344,37 +344,52 @@ void add_piece(const Frame<T>& fr, const Piece<T>& pc, const T* t_sing, int n_si
   }
 }
 
-/// The segment oriented so that Δτ ≥ 0 (the tip, if any, at t ≤ 0: F is
-/// symmetric in A ↔ B), translated to A and scaled by 2^−e (exact) so that
-/// τ_max ∈ [1/2, 1).
+/// What the evaluation reads of the segment alone: the segment oriented so
+/// that Δτ ≥ 0 (the tip, if any, at t ≤ 0: F is symmetric in A ↔ B),
+/// translated to A and scaled by 2^−e (exact) so that τ_max ∈ [1/2, 1), and
+/// the coefficients of Q, ∇F and the closed forms that do not depend on P.
+/// prepare_segment computes it once per segment (ScalisSegment's
+/// constructor; scalis_compact_F of a whole ScalisSegmentInput at each call).
 template <class T>
-struct Scaled {
-  const std::array<T, 3>* A;  ///< the caller's end at t = 0 after orienting
-  const std::array<T, 3>* B;  ///< the caller's end at t = 1
+struct CompactSegment {
+  int degree = 0;
+  std::array<T, 3> A{}, B{};  ///< the caller's ends at t = 0 and t = 1 after orienting
   T tau_a, tau_b;             ///< the caller's radii at A and B
   DownScale<T> down{0};       ///< the scale 2^−e
-  std::array<T, 3> ab, ap;    ///< B − A and P − A, scaled
+  std::array<T, 3> ab;        ///< B − A, scaled
   T tau0, tau1, dtau;         ///< τ(0), τ(1) and τ(1) − τ(0), scaled
+  T a2, length;               ///< |AB|², |AB|
+  T sigma, sigma2, inv_sigma2;  ///< σ, σ², 1/σ²
+  T alpha;                    ///< σ²Δτ² − |AB|², the leading coefficient of Q
+  T sigma2_dtau;              ///< σ²Δτ: β = σ²Δτ τ0 + AB·AP, Q'(1)/2 = σ²Δτ τ1 + AB·BP
+  T gradient_factor;          ///< −i |AB|/σ² (finish)
 };
 template <class T>
-Scaled<T> orient_and_scale(const ScalisSegmentInput<T>& in) {
+CompactSegment<T> prepare_segment(int degree, const ScalisSegmentInput<T>& in) {
   using std::frexp;
+  using std::sqrt;
   const bool swap = in.tau1 < in.tau0;
-  Scaled<T> s;
-  s.A = swap ? &in.b : &in.a;
-  s.B = swap ? &in.a : &in.b;
+  CompactSegment<T> s;
+  s.degree = degree;
+  s.A = swap ? in.b : in.a;
+  s.B = swap ? in.a : in.b;
   s.tau_a = swap ? in.tau1 : in.tau0;
   s.tau_b = swap ? in.tau0 : in.tau1;
   int e = 0;
   (void)frexp(s.tau_b, &e);
   s.down = DownScale<T>(e);
-  for (int c = 0; c < 3; ++c) {
-    s.ab[c] = s.down((*s.B)[c] - (*s.A)[c]);
-    s.ap[c] = s.down(in.p[c] - (*s.A)[c]);
-  }
+  for (int c = 0; c < 3; ++c) s.ab[c] = s.down(s.B[c] - s.A[c]);
   s.tau0 = s.down(s.tau_a);
   s.tau1 = s.down(s.tau_b);
   s.dtau = s.tau1 - s.tau0;
+  s.a2 = s.ab[0] * s.ab[0] + s.ab[1] * s.ab[1] + s.ab[2] * s.ab[2];
+  s.length = sqrt(s.a2);
+  s.sigma = in.sigma;
+  s.sigma2 = in.sigma * in.sigma;
+  s.inv_sigma2 = T(1) / s.sigma2;
+  s.alpha = (in.sigma * s.dtau - s.length) * (in.sigma * s.dtau + s.length);
+  s.sigma2_dtau = s.sigma2 * s.dtau;
+  s.gradient_factor = -T(degree) * s.length / s.sigma2;
   return s;
 }
 
@@ -403,7 +418,7 @@ struct QRoots {
 /// (Near t = 0 the root itself is its offset.)
 template <class T>
 QRoots<T> support_roots(const Frame<T>& fr, const SupportDepths<T>& depths, const T& q, const T& sign_beta,
-                        const T& sd, const T& tau1) {
+                        const T& sd, const T& sigma2_dtau, const T& tau1) {
   using std::abs;
   QRoots<T> r;
   r.at[r.n] = depths.q_at_a / q;
@@ -416,7 +431,7 @@ QRoots<T> support_roots(const Frame<T>& fr, const SupportDepths<T>& depths, cons
     std::swap(r.at[0], r.at[1]);
     std::swap(r.slope[0], r.slope[1]);
   }
-  const T half_slope_at_b = r.half_slope_at_b = fr.sigma2 * fr.dtau * tau1 + depths.ab_bp;  // α + β
+  const T half_slope_at_b = r.half_slope_at_b = sigma2_dtau * tau1 + depths.ab_bp;  // α + β
   const T q_b = half_slope_at_b + (half_slope_at_b < T(0) ? -sd : sd);
   for (int k = 0; k < r.n; ++k) {
     r.offset[k] = {T(0), r.at[k]};
@@ -556,17 +571,16 @@ Sums<T> integrate_support(const Frame<T>& fr, const QRoots<T>& r, const Support<
 }
 
 
-/// What scalis_compact_F knows before the integral: the frame, the roots of Q
-/// and the support; or, where no integral is needed (an empty support, P at
-/// a cone tip), the answer itself.
+/// What scalis_compact_F knows before the integral: the segment, the frame,
+/// the roots of Q and the support; or, where no integral is needed (an empty
+/// support, P at a cone tip), the answer itself.
 template <class T>
 struct Prepared {
   bool done = false;     ///< F is `value` (0, or +∞ at a cone tip), ∇F is 0 or NaN
   T value = T(0);
   bool grad_nan = false;  ///< with done: ∇F is NaN (F = +∞ at a cone tip)
-  Scaled<T> sc;
+  const CompactSegment<T>* segment = nullptr;
   Frame<T> fr;
-  T length = T(0);      ///< |AB| in the scaled frame
   T beta = T(0);        ///< Q'(0)/2
   SupportDepths<T> depths{};
   T sd = T(0);          ///< √disc
@@ -574,31 +588,29 @@ struct Prepared {
   Support<T> support;
 };
 
-/// Everything before the integral (header comment of scalis_compact.hpp,
-/// sections 1 and 4).
+/// Everything before the integral at P (header comment of scalis_compact.hpp,
+/// sections 1 and 4), from the segment's preparation.
 template <class T>
-Prepared<T> prepare(int degree, const ScalisSegmentInput<T>& in) {
+Prepared<T> prepare(const CompactSegment<T>& sg, const std::array<T, 3>& p) {
   using std::sqrt;
   Prepared<T> pr;
-  pr.sc = orient_and_scale(in);
-  const Scaled<T>& sc = pr.sc;
-  const std::array<T, 3>& ab = sc.ab;
-  const std::array<T, 3>& ap = sc.ap;
-  const T sigma = in.sigma;
-  const T a2 = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];  // |AB|²
+  pr.segment = &sg;
+  const std::array<T, 3>& ab = sg.ab;
+  std::array<T, 3> ap;
+  for (int c = 0; c < 3; ++c) ap[c] = sg.down(p[c] - sg.A[c]);
+  const T a2 = sg.a2;
   pr.done = true;
   if (!(a2 > T(0))) return pr;
-  const T length = pr.length = sqrt(a2);
   const T b = ab[0] * ap[0] + ab[1] * ap[1] + ab[2] * ap[2];
   const T c2 = ap[0] * ap[0] + ap[1] * ap[1] + ap[2] * ap[2];  // |AP|²
 
   Frame<T>& fr = pr.fr;
-  fr.degree = degree;
-  fr.tau0 = sc.tau0;
-  fr.dtau = sc.dtau;
-  fr.sigma = sigma;
-  fr.sigma2 = sigma * sigma;
-  fr.alpha = (sigma * sc.dtau - length) * (sigma * sc.dtau + length);
+  fr.degree = sg.degree;
+  fr.tau0 = sg.tau0;
+  fr.dtau = sg.dtau;
+  fr.sigma = sg.sigma;
+  fr.sigma2 = sg.sigma2;
+  fr.alpha = sg.alpha;
   fr.t_star = b / a2;
   fr.ab = ab;
   for (int c = 0; c < 3; ++c) fr.h[c] = ap[c] - fr.t_star * ab[c];
@@ -614,10 +626,10 @@ Prepared<T> prepare(int degree, const ScalisSegmentInput<T>& in) {
     }
     return pr;
   };
-  if (sc.tau0 == T(0) && c2 == T(0)) return at_tip();
+  if (sg.tau0 == T(0) && c2 == T(0)) return at_tip();
 
-  const T beta = pr.beta = fr.sigma2 * sc.dtau * sc.tau0 + b;
-  pr.depths = support_depths(*sc.A, *sc.B, in.p, sc.tau_a, sc.tau_b, sigma, sc.down, ab, ap, sc.tau0, sc.dtau);
+  const T beta = pr.beta = sg.sigma2_dtau * sg.tau0 + b;
+  pr.depths = support_depths(sg.A, sg.B, p, sg.tau_a, sg.tau_b, sg.sigma, sg.down, ab, ap, sg.tau0, sg.dtau);
   T disc = pr.depths.disc;
   if (!(disc > T(0))) {
     // α ≤ 0: Q ≤ 0 everywhere (empty support, or a tangent point).
@@ -633,9 +645,9 @@ Prepared<T> prepare(int degree, const ScalisSegmentInput<T>& in) {
   // Q(t_tip) ≤ 0 that root is the tip (τ0 = 0, P = A: handled above unless
   // rounded), or Q ≤ 0 throughout (α ≤ 0); α = 0 as well would make Q ≡ γ,
   // which Q(t_tip) ≤ 0 excludes unless γ ≤ 0.
-  if (q == T(0)) return alpha > T(0) && sc.tau0 == T(0) ? at_tip() : pr;
+  if (q == T(0)) return alpha > T(0) && sg.tau0 == T(0) ? at_tip() : pr;
 
-  pr.roots = support_roots(fr, pr.depths, q, sign_beta, sd, sc.tau1);
+  pr.roots = support_roots(fr, pr.depths, q, sign_beta, sd, sg.sigma2_dtau, sg.tau1);
   pr.support = clip_to_support(pr.roots, alpha, beta);
   if (!(pr.support.t1 < pr.support.t2)) return pr;
   pr.done = false;
@@ -656,7 +668,7 @@ ScalisCompactSupport<T> closed_form_input(const Prepared<T>& pr) {
   const Support<T>& sp = pr.support;
   ScalisCompactSupport<T> s;
   s.width = support_width(fr, sp, pr.sd);
-  s.tau_lo = (sp.end1.end == T(0) ? fr.tau0 : pr.sc.tau1) + fr.dtau * sp.end1.offset;
+  s.tau_lo = (sp.end1.end == T(0) ? fr.tau0 : pr.segment->tau1) + fr.dtau * sp.end1.offset;
   s.rise = fr.dtau * s.width;
   s.tau_hi = s.tau_lo + s.rise;
   s.b0 = sp.root_at_t1 >= 0 ? T(0) : pr.depths.q_at_a;
@@ -666,7 +678,7 @@ ScalisCompactSupport<T> closed_form_input(const Prepared<T>& pr) {
   s.b1 = half_slope_lo >= T(0) ? s.b0 + half_slope_lo * s.width : s.b2 - half_slope_hi * s.width;
   s.e0 = (sp.end1.end - fr.t_star) + sp.end1.offset;
   s.e1 = (sp.end2.end - fr.t_star) + sp.end2.offset;
-  s.inv_sigma2 = T(1) / fr.sigma2;
+  s.inv_sigma2 = pr.segment->inv_sigma2;
   return s;
 }
 
@@ -676,12 +688,12 @@ ScalisCompactSupport<T> closed_form_input(const Prepared<T>& pr) {
 /// 1/scale).
 template <class T>
 T finish(const Prepared<T>& pr, const Sums<T>& sums, std::array<T, 3>* grad) {
+  const CompactSegment<T>& sg = *pr.segment;
   if (grad != nullptr) {
-    const T factor = -T(pr.fr.degree) * pr.length / pr.fr.sigma2;
     for (int c = 0; c < 3; ++c)
-      (*grad)[c] = pr.sc.down(factor * (pr.fr.h[c] * sums.g0 - pr.fr.ab[c] * sums.g1));
+      (*grad)[c] = sg.down(sg.gradient_factor * (pr.fr.h[c] * sums.g0 - pr.fr.ab[c] * sums.g1));
   }
-  return pr.length * sums.f;
+  return sg.length * sums.f;
 }
 
 }  // namespace detail

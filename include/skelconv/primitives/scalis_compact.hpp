@@ -120,15 +120,16 @@
 namespace skelconv {
 
 /// Unnormalised compact SCALIS field F(P) = ∫_0^1 K(|P−Γ(t)|/τ(t)) |AB| dt/τ(t),
-/// K(d) = (1 − (d/σ)²)^(i/2) for d < σ, else 0, i = degree ∈ 2..10; writes
-/// ∇_P F to *grad when grad != nullptr. Method and accuracy: header comment.
-/// (T is deduced from `in` alone, so `grad` may be a literal nullptr.)
+/// K(d) = (1 − (d/σ)²)^(i/2) for d < σ, else 0, i = degree ∈ 2..10, at P = p
+/// from the segment's preparation (detail::prepare_segment, once per segment);
+/// writes ∇_P F to *grad when grad != nullptr. Method and accuracy: header comment.
 template <class T>
-T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identity_t<std::array<T, 3>>* grad) {
+T scalis_compact_F(const detail::CompactSegment<T>& segment, const std::array<T, 3>& p,
+                   std::type_identity_t<std::array<T, 3>>* grad) {
   using namespace detail;
   const bool with_grad = grad != nullptr;
   if (with_grad) *grad = {T(0), T(0), T(0)};
-  const Prepared<T> pr = prepare(degree, in);
+  const Prepared<T> pr = prepare(segment, p);
   if (pr.done) {
     if (with_grad && pr.grad_nan) grad->fill(std::numeric_limits<T>::quiet_NaN());
     return pr.value;
@@ -137,11 +138,19 @@ T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identi
   // panels. They decline (false) where no form is proven accurate.
   if constexpr (std::numeric_limits<T>::digits == 53) {
     ScalisCompactIntegrals<T> closed{};
-    if (degree % 2 == 0 &&
-        generated::scalis_segment_compact_closed_form(degree, with_grad ? 2 : 0, closed_form_input(pr), closed))
+    if (segment.degree % 2 == 0 &&
+        generated::scalis_segment_compact_closed_form(segment.degree, with_grad ? 2 : 0, closed_form_input(pr),
+                                                      closed))
       return finish(pr, Sums<T>{closed.f, closed.g0, closed.g1}, grad);
   }
   return finish(pr, integrate_support(pr.fr, pr.roots, pr.support, pr.sd, with_grad), grad);
+}
+
+/// The same at the point of `in`, its segment prepared for this one call.
+/// (T is deduced from `in` alone, so `grad` may be a literal nullptr.)
+template <class T>
+T scalis_compact_F(int degree, const ScalisSegmentInput<T>& in, std::type_identity_t<std::array<T, 3>>* grad) {
+  return scalis_compact_F(detail::prepare_segment(degree, in), in.p, grad);
 }
 
 }  // namespace skelconv

@@ -40,6 +40,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,10 @@ namespace generated {
 template <class T>
 struct ScalisSegmentKernel;  // generated/scalis_segment_table.hpp
 }  // namespace generated
+namespace detail {
+template <class T>
+struct CompactSegment;  // skelconv/detail/scalis_compact_support.hpp
+}  // namespace detail
 
 /// A SCALIS kernel: family, degree i and scale σ (docs/mathematics.md §1).
 struct ScalisKernel {
@@ -122,6 +127,13 @@ class ScalisSegment {
   FrameFactors factors_;  ///< of F (value power 0)
   ScalisSegmentInput<double> input_;  ///< everything but P, in the frame
   const generated::ScalisSegmentKernel<double>* generated_ = nullptr;  ///< null for compact
+  /// The generated kernel's per-segment quantities (its `prepare`, once, at
+  /// construction, from input_): every evaluation reads them and does the
+  /// per-point work only.
+  std::vector<double> prepared_;
+  /// The compact family's per-segment quantities (prepare_segment, once, at
+  /// construction; null for the generated families).
+  std::shared_ptr<const detail::CompactSegment<double>> compact_;
   /// Resolved once here, not per point: evaluator_name() (a C string, so
   /// that an evaluation allocates nothing) and where F diverges
   /// (is_divergent_point: on the segment itself, or at an end of radius 0).
