@@ -48,7 +48,8 @@ struct KernelPair {
 // A kernel's f and ∇f at one point in U: its preparation, then its per-point function.
 #define SKELCONV_AT_ONE_POINT(U, name, which)                                                          \
   &skelconv::generated::prepared_##which<U, skelconv::generated::name##_prepared_size,                  \
-                                         &skelconv::generated::name##_prepare<U>, &skelconv::generated::name##_##which<U>>
+                                         &skelconv::generated::name##_prepare<U>, &skelconv::generated::name##_##which<U>, \
+                                         skelconv::SegmentInput<U>>
 #define SKELCONV_KERNEL_PAIR(name) \
   KernelPair<T> { #name, SKELCONV_AT_ONE_POINT(double, name, f_and_grad), SKELCONV_AT_ONE_POINT(T, name, f_and_grad) }
 
