@@ -108,7 +108,8 @@ TEST(BallFit, PointsMergedOnTheSurfaceStayOnIt) {
     return std::min({p.x(), 1 - p.x(), p.y(), 1 - p.y(), p.z(), 1 - p.z()});
   };
   double worst_centroid = 0.0;
-  for (const WeightedPoint& p : merged_in_cells(points, 0.3)) worst_centroid = std::max(worst_centroid, off_the_faces(p.point));
+  for (const WeightedPoint& p : merged_in_cells(points, 0.3))
+    worst_centroid = std::max(worst_centroid, off_the_faces(p.point));
   EXPECT_GT(worst_centroid, 0.01) << "the corner cells' centroids lie inside";
   double area = 0.0;
   const std::vector<WeightedPoint> merged = merged_in_cells(points, 0.3, true);

@@ -295,7 +295,8 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const std::ve
     lambda = std::max(lambda / 30.0, o.initial_damping);  // the loop's last ×10, then ÷3
     values.push_back(value);
     if (progress)
-      progress(fmt::format("medial fit, {}, round {} of {}: {:.4g} (RMS distance {:.4g}, largest {:.4g}), damping {:.2g}",
+      progress(fmt::format("medial fit, {}, round {} of {}: {:.4g} (RMS distance {:.4g}, largest {:.4g}), "
+                           "damping {:.2g}",
                            stage.name, round, stage.rounds, value, now.rms, now.largest, lambda));
   }
 }
