@@ -2,6 +2,7 @@
 // graph (docs/reconstruction.md, "Input" and "Samples") and of the ball
 // fallback: surface samples, least-squares spheres, self-intersection.
 // Expected values are derived by hand in the comments.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -95,6 +96,29 @@ TEST(BallFit, AreaWeightedPointsCarryTheArea) {
   for (const WeightedPoint& p : points) area += p.weight, moment += p.weight * p.point;
   EXPECT_NEAR(area, 6.0, 1e-11);
   EXPECT_LT((moment / area - Vec3::Constant(0.5)).norm(), 1e-11);
+}
+
+// Merged in cells of 0.3, the cube's corner cells hold points of three
+// faces, whose centroid lies inside the cube, off every face. On the
+// surface, each cell's point is one of its own points: on a face (one
+// coordinate 0 or 1), and the area (6) is kept.
+TEST(BallFit, PointsMergedOnTheSurfaceStayOnIt) {
+  const std::vector<WeightedPoint> points = area_weighted_points(unit_cube(), 0.1);
+  const auto off_the_faces = [](const Vec3& p) {
+    return std::min({p.x(), 1 - p.x(), p.y(), 1 - p.y(), p.z(), 1 - p.z()});
+  };
+  double worst_centroid = 0.0;
+  for (const WeightedPoint& p : merged_in_cells(points, 0.3))
+    worst_centroid = std::max(worst_centroid, off_the_faces(p.point));
+  EXPECT_GT(worst_centroid, 0.01) << "the corner cells' centroids lie inside";
+  double area = 0.0;
+  const std::vector<WeightedPoint> merged = merged_in_cells(points, 0.3, true);
+  EXPECT_EQ(merged.size(), merged_in_cells(points, 0.3).size());
+  for (const WeightedPoint& p : merged) {
+    EXPECT_LT(off_the_faces(p.point), 1e-15) << p.point.transpose();
+    area += p.weight;
+  }
+  EXPECT_NEAR(area, 6.0, 1e-11);
 }
 
 // Points exactly on a sphere (a Fibonacci spiral, centre (0.3, −0.2, 0.1),

@@ -85,12 +85,16 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
   text += "]";
   if (options.method != reconstruct::SkeletonMethod::curve) {
     // The medial path's own graph and its fit, round by round (absolute
-    // first-order RMS distances: reconstruct/medial_fit.hpp).
+    // distances: the RMS of the first stage, the L^p mean of the second;
+    // reconstruct/medial_fit.hpp).
     const reconstruct::MedialPathReport& m = r.medial_path;
     text += fmt::format(",\n \"medial_path\": {{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
                         "\"spheres\": {}, \"fit_rms\": [",
                         m.samples, m.vertices, m.pruned, m.spheres);
     for (std::size_t k = 0; k < m.fit.rms.size(); ++k) text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.rms[k]);
+    text += "], \"fit_worst\": [";
+    for (std::size_t k = 0; k < m.fit.worst.size(); ++k)
+      text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.worst[k]);
     text += "]}";
   }
   return text + "}\n";

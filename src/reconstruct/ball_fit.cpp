@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 
 #include <Eigen/Dense>
@@ -88,21 +89,34 @@ std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double
   return out;
 }
 
-std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h) {
+std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h, bool on_surface) {
+  const auto cell_of = [h](const Vec3& p) {
+    return std::array<std::int64_t, 3>{std::int64_t(std::floor(p.x() / h)), std::int64_t(std::floor(p.y() / h)),
+                                       std::int64_t(std::floor(p.z() / h))};
+  };
   std::map<std::array<std::int64_t, 3>, std::size_t> cell_index;
   std::vector<WeightedPoint> sums;  // weighted sums of the points, then centroids
   for (const WeightedPoint& p : points) {
-    const std::array<std::int64_t, 3> cell{std::int64_t(std::floor(p.point.x() / h)),
-                                           std::int64_t(std::floor(p.point.y() / h)),
-                                           std::int64_t(std::floor(p.point.z() / h))};
-    const auto [it, added] = cell_index.emplace(cell, sums.size());
+    const auto [it, added] = cell_index.emplace(cell_of(p.point), sums.size());
     if (added) sums.push_back({Vec3::Zero(), 0.0});
     sums[it->second].point += p.weight * p.point;
     sums[it->second].weight += p.weight;
   }
+  for (WeightedPoint& s : sums)
+    if (s.weight > 0.0) s.point /= s.weight;
+  if (on_surface) {
+    std::vector<double> nearest(sums.size(), std::numeric_limits<double>::infinity());
+    std::vector<Vec3> chosen(sums.size());
+    for (const WeightedPoint& p : points) {
+      const std::size_t i = cell_index.at(cell_of(p.point));
+      const double d = (p.point - sums[i].point).squaredNorm();
+      if (d < nearest[i]) nearest[i] = d, chosen[i] = p.point;
+    }
+    for (std::size_t i = 0; i < sums.size(); ++i) sums[i].point = chosen[i];
+  }
   std::vector<WeightedPoint> merged;
   for (const WeightedPoint& s : sums)
-    if (s.weight > 0.0) merged.push_back({s.point / s.weight, s.weight});
+    if (s.weight > 0.0) merged.push_back(s);
   return merged;
 }
 

@@ -29,36 +29,68 @@ std::size_t nearest_sphere(const MedialMesh& mesh, const Vec3& p) {
   return best;
 }
 
-/// The skeleton's fit to the points: each point's signed first-order
-/// distance δ and slope |∇f|, and the weighted RMS of δ.
+/// The skeleton's fit to the points: each point's signed distance δ to the
+/// surface f = iso (> 0: the point is inside, the reconstruction is too fat
+/// there), where its last Newton step started (`foot`, where its Jacobian
+/// row is taken) and the slope there, the weighted RMS of δ and its largest
+/// magnitude.
 struct Evaluation {
   Skeleton skeleton;
   std::vector<double> delta, slope;
-  std::vector<bool> clamped;  ///< δ held at ± the radius: no first-order information
+  std::vector<Vec3> foot;
+  std::vector<bool> outside;  ///< outside every support (f = 0): no first-order information, no row
   double rms = 0.0;
+  double largest = 0.0;
 };
 
-Evaluation evaluate(const MedialMesh& mesh, const std::vector<WeightedPoint>& points, const MedialField& field_of) {
+/// One Newton step's length toward f = iso from a point where the field is
+/// `s`: (f − iso) / √(|∇f|² + ((f − iso)/R)²). The bare first-order
+/// distance (f − iso)/|∇f| grows without bound where ∇f is small (deep
+/// inside, where the fields of close sheets add up) and is infinite where
+/// it vanishes; the second term keeps the step within R, the radius of the
+/// sphere whose surface is nearest, and keeps it a smooth function of f, so
+/// that a point farther than R still has a row and the fit sees it come
+/// closer. Near the surface it is the first-order distance.
+double newton_step(const FieldSample& s, double iso, double radius, double* slope) {
+  const double excess = s.value - iso;
+  *slope = std::hypot(s.gradient.norm(), excess / radius);
+  return excess / *slope;
+}
+
+Evaluation evaluate(const MedialMesh& mesh, const std::vector<WeightedPoint>& points, const MedialField& field_of,
+                    int newton_steps) {
   Evaluation e;
   e.skeleton = field_of(mesh);
+  const double iso = e.skeleton.iso();
   e.delta.resize(points.size());
   e.slope.resize(points.size());
-  e.clamped.resize(points.size());
+  e.foot.resize(points.size());
+  e.outside.resize(points.size());
   double sum = 0.0, total = 0.0;
   for (std::size_t k = 0; k < points.size(); ++k) {
-    const std::size_t i = nearest_sphere(mesh, points[k].point);
-    const FieldSample s = e.skeleton.value_and_gradient(points[k].point);
-    const double radius = mesh.spheres[i].w();
-    e.slope[k] = s.gradient.norm();
-    // Far from the surface the first-order distance means little, and it
-    // is infinite where ∇f vanishes (outside every compact support): it is
-    // clamped to the radius of the sphere whose surface is nearest, with
-    // the sign of f − iso.
-    const double excess = s.value - e.skeleton.iso();
-    const double d = e.slope[k] > 0.0 ? excess / e.slope[k] : std::copysign(radius, excess);
-    e.delta[k] = std::isfinite(d) ? std::clamp(d, -radius, radius) : std::copysign(radius, excess);
-    e.clamped[k] = !(std::abs(d) < radius);
+    const double radius = mesh.spheres[nearest_sphere(mesh, points[k].point)].w();
+    FieldSample s = e.skeleton.value_and_gradient(points[k].point);
+    e.foot[k] = points[k].point;
+    e.outside[k] = !(s.value != 0.0) || !std::isfinite(s.value) || !s.gradient.allFinite();
+    if (e.outside[k]) {
+      e.delta[k] = -radius, e.slope[k] = iso / radius;
+    } else {
+      // Newton's steps along the gradient: the first-order distance falls
+      // short where the field saturates (deep inside a crease the blend
+      // filled, the points that make the Hausdorff distance).
+      double step = newton_step(s, iso, radius, &e.slope[k]);
+      e.delta[k] = step;
+      for (int n = 0; n < newton_steps && s.gradient.norm() > 0.0; ++n) {
+        const Vec3 next = e.foot[k] - step * s.gradient.normalized();
+        const FieldSample t = e.skeleton.value_and_gradient(next);
+        if (!(t.value != 0.0) || !std::isfinite(t.value) || !t.gradient.allFinite()) break;
+        double slope = 0.0;
+        step = newton_step(t, iso, radius, &slope);
+        e.delta[k] += step, e.foot[k] = next, e.slope[k] = slope, s = t;
+      }
+    }
     sum += points[k].weight * e.delta[k] * e.delta[k], total += points[k].weight;
+    e.largest = std::max(e.largest, std::abs(e.delta[k]));
   }
   e.rms = total > 0.0 ? std::sqrt(sum / total) : 0.0;
   return e;
@@ -72,9 +104,10 @@ constexpr std::size_t per_sphere = 4;
 /// support holds the point (medial_derivatives.hpp), each derivative put on
 /// the spheres the primitive was made of (field_of's order: edges,
 /// triangles, isolated spheres; a triangle's radius is the mean of its
-/// spheres'). Points whose δ is clamped (outside every support, or farther
-/// than a radius) have no row: the first-order distance says nothing there.
-/// Without `centres`, the centres' columns stay empty.
+/// spheres'), at the point's foot (where its last Newton step started: to
+/// first order the distance to the surface changes as f does there). Points
+/// outside every support have no row. Without `centres`, the centres'
+/// columns stay empty.
 struct Jacobian {
   std::vector<std::vector<std::pair<std::size_t, double>>> rows;  ///< per point: (unknown, ∂δ/∂θ)
 };
@@ -96,8 +129,8 @@ Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& poin
   for (std::size_t q = 0; q < primitives.size(); ++q) {
     const std::optional<SupportBox> box = support_box(primitives[q]);
     for (std::size_t k = 0; k < points.size(); ++k) {
-      const Vec3& p = points[k].point;
-      if (e.clamped[k] || (box && !box->contains(p))) continue;
+      const Vec3& p = e.foot[k];
+      if (e.outside[k] || (box && !box->contains(p))) continue;
       if (q < mesh.edges.size()) {
         const auto& edge = mesh.edges[q];
         const PrimitiveDerivatives<2> d = derivatives(std::get<ScalisSegment>(primitives[q]), p);
@@ -117,12 +150,28 @@ Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& poin
   return j;
 }
 
+/// How much a point's δ counts in a round, on top of its area weight: the
+/// round minimises Σ w ρ(δ) as reweighted least squares, W = w ψ(δ)/δ.
+using Reweighting = std::function<double(double delta)>;
+
+/// Huber's loss: quadratic up to `huber`, linear beyond, so that a point the
+/// sum of primitives cannot reach (in a crease) does not drag its
+/// neighbours.
+Reweighting huber_weights(double huber) {
+  return [huber](double delta) { return std::abs(delta) > huber ? huber / std::abs(delta) : 1.0; };
+}
+
+/// The L^p loss |δ|^p, p > 2: the larger a point's distance, the more it
+/// counts, so the worst points, which make the Hausdorff distance, lead.
+/// `scale` (the current L^p norm) only keeps the weights near 1.
+Reweighting power_weights(double exponent, double scale) {
+  return [exponent, scale](double delta) { return std::pow(std::abs(delta) / scale, exponent - 2.0); };
+}
+
 /// The normal equations of the Levenberg–Marquardt step of all unknowns
-/// together on the Huber cost Σ w ρ(δ) (ρ = δ² up to `huber`, linear
-/// beyond: a point the sum of primitives cannot reach, in a crease, does not
-/// drag its neighbours), as reweighted least squares: JᵀWJ and JᵀWδ with W
-/// the weights times ψ(δ)/δ. They do not depend on the damping λ, so a round
-/// builds them once for all its attempts.
+/// together on Σ w ρ(δ), as reweighted least squares: JᵀWJ and JᵀWδ with W
+/// the area weights times `reweighting`. They do not depend on the damping
+/// λ, so a round builds them once for all its attempts.
 struct NormalEquations {
   Eigen::SparseMatrix<double> normal;  ///< JᵀWJ
   Eigen::VectorXd gradient, diagonal;  ///< JᵀWδ, diag JᵀWJ
@@ -130,7 +179,7 @@ struct NormalEquations {
 };
 
 NormalEquations normal_equations(const std::vector<WeightedPoint>& points, const Evaluation& e, const Jacobian& j,
-                                 double huber, Eigen::Index n) {
+                                 const Reweighting& reweighting, Eigen::Index n) {
   // J and the weighted residual as sparse matrices, JᵀWJ as their product:
   // its size is that of the unknown pairs sharing a point, never the sum over
   // points of their squared row lengths (spheres crowded about one centre,
@@ -138,9 +187,7 @@ NormalEquations normal_equations(const std::vector<WeightedPoint>& points, const
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::VectorXd weighted_delta(Eigen::Index(points.size()));
   for (std::size_t k = 0; k < points.size(); ++k) {
-    const double magnitude = std::abs(e.delta[k]);
-    const double robust = magnitude > huber ? huber / magnitude : 1.0;
-    const double root = std::sqrt(points[k].weight * robust);
+    const double root = std::sqrt(points[k].weight * reweighting(e.delta[k]));
     weighted_delta[Eigen::Index(k)] = root * e.delta[k];
     for (const auto& [i, d] : j.rows[k]) entries.emplace_back(Eigen::Index(k), Eigen::Index(i), root * d);
   }
@@ -192,6 +239,68 @@ double diagonal_of(const std::vector<WeightedPoint>& points) {
   return (hi - lo).norm();
 }
 
+/// The weighted L^p mean of δ, (Σ w |δ|^p / Σ w)^(1/p).
+double power_mean(const std::vector<WeightedPoint>& points, const Evaluation& e, double exponent) {
+  double sum = 0.0, total = 0.0, largest = 0.0;
+  for (const double d : e.delta) largest = std::max(largest, std::abs(d));
+  if (!(largest > 0.0)) return 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    sum += points[k].weight * std::pow(std::abs(e.delta[k]) / largest, exponent), total += points[k].weight;
+  return total > 0.0 ? largest * std::pow(sum / total, 1.0 / exponent) : 0.0;
+}
+
+/// One stage of Levenberg–Marquardt rounds: each round reweights the points
+/// (`weights` of the current evaluation) and keeps a step only if it lowers
+/// `objective` without raising the RMS distance above `rms_limit`, so the
+/// stage never ends worse than it started, whatever the weights made of the
+/// step. It stops after `rounds` or when no step is kept.
+struct Rounds {
+  std::string name;  ///< in the progress lines
+  int rounds = 0;
+  std::function<Reweighting(const Evaluation&)> weights;
+  std::function<double(const Evaluation&)> objective;
+  double rms_limit = std::numeric_limits<double>::infinity();
+};
+
+/// Runs `stage` from `now` (and `mesh`, which it describes); the objective
+/// before and after each round taken goes to `values`. λ carries over from
+/// one stage to the next.
+void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const std::vector<WeightedPoint>& points,
+                const MedialField& field_of, const MedialFitOptions& o, const std::vector<Vec4>& start,
+                const Rounds& stage, std::vector<double>& values,
+                const std::function<void(std::string_view)>& progress) {
+  double value = stage.objective(now);
+  values.push_back(value);
+  for (int round = 1; round <= stage.rounds; ++round) {
+    const NormalEquations equations =
+        normal_equations(points, now, jacobian(mesh, points, now, o.fit_centres), stage.weights(now),
+                         Eigen::Index(per_sphere * mesh.spheres.size()));
+    bool better = false;
+    for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
+      const std::vector<double> step = joint_step(mesh, equations, lambda, o.min_radius, start);
+      MedialMesh trial = mesh;
+      for (std::size_t i = 0; i < trial.spheres.size(); ++i)
+        for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
+      Evaluation next = evaluate(trial, points, field_of, o.newton_steps);
+      const double next_value = stage.objective(next);
+      if (next_value < value && next.rms <= stage.rms_limit) {
+        value = next_value, better = true;
+        mesh = std::move(trial), now = std::move(next);
+      }
+    }
+    if (!better) {
+      if (progress) progress(fmt::format("medial fit, {}, round {}: no step lowers it; stopped", stage.name, round));
+      break;
+    }
+    lambda = std::max(lambda / 30.0, o.initial_damping);  // the loop's last ×10, then ÷3
+    values.push_back(value);
+    if (progress)
+      progress(fmt::format("medial fit, {}, round {} of {}: {:.4g} (RMS distance {:.4g}, largest {:.4g}), "
+                           "damping {:.2g}",
+                           stage.name, round, stage.rounds, value, now.rms, now.largest, lambda));
+  }
+}
+
 }  // namespace
 
 MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& points, const MedialField& field_of,
@@ -204,37 +313,32 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& po
   // spike of the reconstruction sticks out into empty space).
   const std::vector<Vec4> start = mesh.spheres;
   for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
-  Evaluation now = evaluate(mesh, points, field_of);
-  r.rms.push_back(now.rms);
-  if (progress) progress(fmt::format("medial fit: first-order RMS distance {:.4g} before fitting", now.rms));
-  const double huber = o.huber_scale * diagonal_of(points);
+  Evaluation now = evaluate(mesh, points, field_of, o.newton_steps);
+  if (progress)
+    progress(fmt::format("medial fit: RMS distance {:.4g}, largest {:.4g} before fitting ({} points)", now.rms,
+                         now.largest, points.size()));
   // λ starts small (nearly Gauss–Newton) and grows tenfold while a step
-  // raises the RMS distance, shrinks after a step that lowers it.
+  // raises the objective, shrinks after a step that lowers it.
   double lambda = o.initial_damping;
-  for (int round = 1; round <= o.rounds; ++round) {
-    const NormalEquations equations =
-        normal_equations(points, now, jacobian(mesh, points, now, o.fit_centres), huber,
-                         Eigen::Index(per_sphere * mesh.spheres.size()));
-    bool better = false;
-    for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
-      const std::vector<double> step = joint_step(mesh, equations, lambda, o.min_radius, start);
-      MedialMesh trial = mesh;
-      for (std::size_t i = 0; i < trial.spheres.size(); ++i)
-        for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
-      Evaluation next = evaluate(trial, points, field_of);
-      // Kept only if the RMS distance falls: the fit never ends worse than
-      // it started, whatever the robust weights made of the step.
-      if (next.rms < now.rms) mesh = std::move(trial), now = std::move(next), better = true;
-    }
-    if (!better) {
-      if (progress) progress(fmt::format("medial fit, round {}: no step lowers the RMS distance; stopped", round));
-      break;
-    }
-    lambda = std::max(lambda / 30.0, o.initial_damping);  // the loop's last ×10, then ÷3
-    r.rms.push_back(now.rms);
-    if (progress)
-      progress(fmt::format("medial fit, round {} of {}: first-order RMS distance {:.4g}, damping {:.2g}", round,
-                           o.rounds, now.rms, lambda));
+  Rounds least_squares;
+  least_squares.name = "RMS distance (Huber)", least_squares.rounds = o.rounds;
+  const double huber = o.huber_scale * diagonal_of(points);
+  least_squares.weights = [huber](const Evaluation&) { return huber_weights(huber); };
+  least_squares.objective = [](const Evaluation& e) { return e.rms; };
+  run_rounds(mesh, now, lambda, points, field_of, o, start, least_squares, r.rms, progress);
+  // Then the worst points: the least squares leave a few places (a crease
+  // the blend fills, a rim it rounds) far off while the RMS is low, and
+  // those make the Hausdorff distance.
+  if (o.worst_rounds > 0) {
+    const double p = o.worst_exponent;
+    Rounds worst;
+    worst.name = fmt::format("L{} mean", p), worst.rounds = o.worst_rounds;
+    worst.weights = [&points, p](const Evaluation& e) {
+      return power_weights(p, std::max(power_mean(points, e, p), std::numeric_limits<double>::min()));
+    };
+    worst.objective = [&points, p](const Evaluation& e) { return power_mean(points, e, p); };
+    worst.rms_limit = (1.0 + o.worst_rms_growth) * now.rms;
+    run_rounds(mesh, now, lambda, points, field_of, o, start, worst, r.worst, progress);
   }
   if (report != nullptr) *report = r;
   return mesh;

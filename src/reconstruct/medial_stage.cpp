@@ -84,8 +84,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                            m.budget, q.collapses, q.refused_by_link, q.loops_closed, q.euler_before, q.euler_after));
   Stage stage;
   stage.name = "medial";
-  const std::vector<WeightedPoint> points =
-      merged_in_cells(area_weighted_points(surface, m.fit_spacing * diagonal), m.fit_spacing * diagonal);
+  // The fit's points on the input itself (one per cell, not the cell's
+  // centroid): a centroid in a crease lies in the air above it, and the fit
+  // would fill the crease to reach it.
+  const bool on_surface = true;
+  const std::vector<WeightedPoint> points = merged_in_cells(area_weighted_points(surface, m.fit_spacing * diagonal),
+                                                            m.fit_spacing * diagonal, on_surface);
   const MedialField field_of = [&o](const MedialMesh& medial) {
     Stage s;
     s.medial = medial;

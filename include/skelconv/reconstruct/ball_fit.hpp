@@ -32,7 +32,13 @@ std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double
 /// centroid with their total weight, in the order of each cell's first
 /// point. The area is kept and the count bounded by about the area / h²
 /// (a fine mesh gives at least one point per triangle).
-std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h);
+/// With `on_surface`, each cell's point is instead the one of its points
+/// nearest to that centroid (the first of equals): where the surface bends
+/// within a cell the centroid leaves it, into the air above a crease and
+/// under a ridge, and a fit to such points fills creases and flattens
+/// ridges by as much.
+std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h,
+                                           bool on_surface = false);
 
 /// One least-squares sphere per connected component of `mesh` (triangles
 /// sharing a vertex), in the order of each component's first triangle,
