@@ -41,6 +41,8 @@ CGAL_SHAPES = [
     ("femur.off", "a bone (genus 2)", "organic"),
     ("eight.off", "a figure eight (genus 2)", "cad"),
     ("fandisk.off", "a CAD part, sharp edges", "cad"),
+    ("bunny00.off", "a bunny, scanned", "organic"),
+    ("couplingdown.off", "a CAD coupling with nine holes (genus 9)", "cad"),
     ("elk.off", "a CAD part with a hole", "cad"),
     ("cow.off", "a toy cow", "organic"),
     ("head.off", "a cartoon head", "organic"),
@@ -63,6 +65,8 @@ SHORTFALLS = {
     "dino.off": ["components"],
     "blobby.off": ["H"],
     "femur.off": ["H", "χ"],
+    "bunny00.off": ["H"],
+    "couplingdown.off": ["H", "RMS", "χ"],
 }
 BEGIN, END = "<!-- real-shapes table: tests/reconstruct/real_shapes.py -->", "<!-- end of the real-shapes table -->"
 
@@ -107,11 +111,16 @@ def missed_goals(r, kind):
 
 def row(name, what, kind, r):
     if "refused" in r:
-        return f"| {name} | {what} | refused: {r['refused']} | | | | | | |", []
+        return f"| {name} | {what} | refused: {r['refused']} | | | | | | | |", []
     missed = missed_goals(r, kind)
     return (f"| {name} | {what} | {kind} | {r['chi_in']} → {r['chi_out']} | {r['parts_in']} → {r['parts_out']} | "
             f"{r['h']:.2f} / {r['rms']:.3f} | {r['primitives']} {r['stage']} | "
-            f"{'yes' if not missed else 'no: ' + ', '.join(text for _, text in missed)} |"), missed
+            f"{'yes' if not missed else 'no: ' + ', '.join(text for _, text in missed)} | {r['seconds']:.0f} |"), missed
+
+
+def without_seconds(table):
+    """The table without its last column, the seconds, which the machine's load decides."""
+    return [line.rsplit("|", 2)[0] for line in table.splitlines()]
 
 
 def main():
@@ -127,14 +136,14 @@ def main():
             (work / name).write_bytes(archive.extractfile(member).read())
     data = pathlib.Path(__file__).resolve().parent.parent / "data" / "reconstruct"
     shapes = [(work / n, n, w, k) for n, w, k in CGAL_SHAPES] + [(data / n, n, w, k) for n, w, k in TEST_SHAPES]
-    lines = ["| input | what | kind | χ in → out | components | H / RMS % | primitives, stage | goal met |",
-             "|---|---|---|---|---|---|---|---|"]
+    lines = ["| input | what | kind | χ in → out | components | H / RMS % | primitives, stage | goal met | s |",
+             "|---|---|---|---|---|---|---|---|---|"]
     failures = []
     for path, name, what, kind in shapes:
         print(f"real_shapes: {name} ...", file=sys.stderr, flush=True)
         r = run(skelconv, path, work)
         line, missed = row(name, what, kind, r)
-        print(line + (f"   [{r['seconds']:.0f} s]" if "seconds" in r else ""), flush=True)
+        print(line, flush=True)
         lines.append(line)
         named = sorted(SHORTFALLS.get(name, []))
         if sorted(goal for goal, _ in missed) != named:
@@ -149,7 +158,7 @@ def main():
     if write:
         docs.write_text(text[:found.start(1)] + table + text[found.end(1):])
         print(f"real_shapes: wrote the table of {docs}")
-    elif found.group(1) != table:
+    elif without_seconds(found.group(1)) != without_seconds(table):
         failures.append(f"{docs}: its table differs from this run's; if the code changed on purpose, rerun with "
                         f"--write.\nmeasured:\n{table}\ndocumented:\n{found.group(1)}")
     if failures:
