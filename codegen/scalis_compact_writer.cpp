@@ -447,9 +447,13 @@ std::string function_text(int i, int which, const std::vector<Piece>& pieces, in
   generic += forms[0].ops();
   longest += longest_form;
   Block rest(1);
-  rest.comment("Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products");
   const Poly q = {"in.b0", "q1", "in.b2"};
-  rest.line("const T q1 = in.b1 + in.b1;");
+  // Q is read by f and, from degree 4 on, by ∇f (through Q^(m−1)); the
+  // gradient of degree 2 has the constant coefficients d0 below instead.
+  if (value || m >= 2) {
+    rest.comment("Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products");
+    rest.line("const T q1 = in.b1 + in.b1;");
+  }
   Poly lower = {"T(1)"};  // Q^(m−1)
   if (m >= 2) lower = q;
   for (int j = 2; j <= m - 1; ++j) lower = multiply(rest, lower, q, "qp" + std::to_string(j) + "_");

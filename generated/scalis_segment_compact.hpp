@@ -92,8 +92,8 @@ bool scalis_segment_compact_i2_f(const ScalisCompactSupport<T>& in, ScalisCompac
 
 /// g0 and g1 of the compact SCALIS segment of degree 2 over its support (file comment); false where
 /// no form is proven accurate (P near a cone tip).
-/// Operations here: 34 +, 49 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 34 +, 49 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
-/// with the runtime's work around it, per point: 96 +, 124 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
+/// Operations here: 33 +, 49 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form), longest 33 +, 49 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh;
+/// with the runtime's work around it, per point: 95 +, 124 ×, 7 /, 5 sqrt, 0 atan, 0 log/asinh;
 /// once per segment (prepare_segment): 8 +, 16 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 bool scalis_segment_compact_i2_grad(const ScalisCompactSupport<T>& in, ScalisCompactIntegrals<T>& out) {
@@ -150,8 +150,6 @@ bool scalis_segment_compact_i2_grad(const ScalisCompactSupport<T>& in, ScalisCom
     k1 = T(0.5) - zeta * k2;
     k0 = T(0.5) - zeta * k1;
   }
-  // Q's Bernstein coefficients, unnormalised (the 2 of 2 b1 x(1 − x) in q1), and their products
-  const T q1 = in.b1 + in.b1;
   // 1/τ(t1)^(i+1), 1/σ^(i−2)
   const T inv_tau_lo_power_sq1 = inv_tau_lo * inv_tau_lo;
   const T inv_tau_lo_power_1 = inv_tau_lo * inv_tau_lo_power_sq1;
