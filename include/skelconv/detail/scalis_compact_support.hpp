@@ -114,7 +114,7 @@ T operator-(const EndOffset<T>& x, const EndOffset<T>& y) {
 /// Everything the integrand needs, in the translated, scaled, oriented frame.
 template <class T>
 struct Frame {
-  int degree;
+  int degree = 0;
   T tau0, dtau;          ///< τ(t) = τ0 + Δτ t, Δτ ≥ 0
   T sigma, sigma2;       ///< σ, σ²
   T alpha;               ///< leading coefficient of Q
