@@ -84,15 +84,81 @@ struct MomentNode {
   T jacobian;
 };
 
-/// sum + terms[0] + terms[1] + … in this order: the order in which the
-/// nodes were always added, so that every moment rounds as it did when
-/// each node was added to `out` in turn (the verifier's baselines). The
-/// moments of different k and m are independent chains, which the
-/// processor overlaps.
-template <class T, std::size_t N>
-T add_in_order(T sum, const std::array<T, N>& terms) {
-  for (std::size_t j = 0; j < N; ++j) sum += terms[j];
-  return sum;
+/// The moment sums of add_moments_at_nodes for two orders m, m + 2 and
+/// weights t^0 … t^K in double (a SCALIS ∇f: m_hi = m_lo + 2), node by node:
+/// out[l (K + 1) + k] + term(node 0) + term(node 1) + … in node order, where
+/// term = weight · q^(1 − l) · t^k, each power formed by one product per
+/// step (weight × q, then × t per k), as add_moments_at_nodes forms every
+/// moment (the verifier's baselines). The two orders sit side by side in one
+/// SSE2 register, so one addition and one product serve both, and the 2(K +
+/// 1) sums stay in registers for the whole pass over the nodes: the same
+/// operations on each moment, in the same order, hence the same bits, in
+/// half the instructions.
+template <unsigned N, int K>
+void add_two_order_sums(const std::array<double, N>& t, const std::array<double, N>& q,
+                        const std::array<double, N>& weight, double* out) {
+  using Pair = double __attribute__((vector_size(16)));  // {order m + 2, order m}
+  Pair sums[K + 1];
+  for (int k = 0; k <= K; ++k) sums[k] = Pair{out[(K + 1) + k], out[k]};
+  for (unsigned j = 0; j < N; ++j) {
+    Pair term{weight[j], weight[j] * q[j]};
+    const Pair tj{t[j], t[j]};
+    for (int k = 0; k <= K; ++k) {
+      sums[k] += term;
+      term *= tj;
+    }
+  }
+  for (int k = 0; k <= K; ++k) {
+    out[(K + 1) + k] = sums[k][0];
+    out[k] = sums[k][1];
+  }
+}
+
+/// The same for one order m (f alone): the K + 1 sums in registers for the
+/// whole pass over the nodes, each term one product from the last.
+template <class T, unsigned N, int K>
+void add_one_order_sums(const std::array<T, N>& t, const std::array<T, N>& weight, T* out) {
+  T sums[K + 1];
+  for (int k = 0; k <= K; ++k) sums[k] = out[k];
+  for (unsigned j = 0; j < N; ++j) {
+    T term = weight[j];
+    for (int k = 0; k <= K; ++k) {
+      sums[k] += term;
+      term *= t[j];
+    }
+  }
+  for (int k = 0; k <= K; ++k) out[k] = sums[k];
+}
+
+/// The sums of add_moments_at_nodes in registers where the shape allows it:
+/// one order (f) or, in double, two (f and ∇f), with weights up to t^4
+/// (every inverse and Cauchy kernel up to the SCALIS degree 4); false
+/// otherwise, for the caller's moment-by-moment sums.
+template <class T, unsigned N>
+bool add_sums_in_registers(int levels, int k_max, const std::array<T, N>& t, const std::array<T, N>& q,
+                           const std::array<T, N>& weight, T* out) {
+  if (levels == 1) {
+    switch (k_max) {
+      case 0: add_one_order_sums<T, N, 0>(t, weight, out); return true;
+      case 1: add_one_order_sums<T, N, 1>(t, weight, out); return true;
+      case 2: add_one_order_sums<T, N, 2>(t, weight, out); return true;
+      case 3: add_one_order_sums<T, N, 3>(t, weight, out); return true;
+      case 4: add_one_order_sums<T, N, 4>(t, weight, out); return true;
+      default: return false;
+    }
+  }
+  if constexpr (std::is_same_v<T, double>) {
+    if (levels != 2) return false;
+    switch (k_max) {
+      case 0: add_two_order_sums<N, 0>(t, q, weight, out); return true;
+      case 1: add_two_order_sums<N, 1>(t, q, weight, out); return true;
+      case 2: add_two_order_sums<N, 2>(t, q, weight, out); return true;
+      case 3: add_two_order_sums<N, 3>(t, q, weight, out); return true;
+      case 4: add_two_order_sums<N, 4>(t, q, weight, out); return true;
+      default: return false;
+    }
+  }
+  return false;
 }
 
 /// Adds the N-point Gauss–Legendre rule over x ∈ [−1, 1] (after `map`) for
@@ -142,11 +208,14 @@ void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, 
   for (int i = 0; i < power; ++i)
     for (unsigned j = 0; j < N; ++j) weight[j] *= base[j];
   const int levels = (m_hi - m_lo) / 2 + 1;
+  if (add_sums_in_registers<T, N>(levels, k_max, t, q, weight, out)) return;
   const int per_level = k_max + 1;
   for (int l = levels - 1; l >= 0; --l) {
     std::array<T, N> term = weight;
     for (int k = 0; k <= k_max; ++k) {
-      out[l * per_level + k] = add_in_order(out[l * per_level + k], term);
+      T sum = out[l * per_level + k];
+      for (unsigned j = 0; j < N; ++j) sum += term[j];
+      out[l * per_level + k] = sum;
       for (unsigned j = 0; j < N; ++j) term[j] *= t[j];
     }
     for (unsigned j = 0; j < N; ++j) weight[j] *= q[j];
