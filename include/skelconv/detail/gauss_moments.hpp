@@ -76,6 +76,41 @@ const auto& sine_mapped_rule() {
   return mapped;
 }
 
+/// An N-point rule's nodes x ∈ [−1, 1] and weights g in the order every
+/// moment adds them: the middle node (odd N), then +x_j, −x_j for Boost's
+/// nonnegative nodes x_j in its order.
+template <class T, unsigned N>
+struct RuleInNodeOrder {
+  std::array<T, N> x, g;
+};
+
+/// Boost's N-point Gauss–Legendre table (after the sine map for
+/// NodeMap::sine) in node order (RuleInNodeOrder), laid out once per type:
+/// one loop over the nodes then places them all alike.
+template <class T, unsigned N, NodeMap map>
+const RuleInNodeOrder<T, N>& rule_in_node_order() {
+  static const RuleInNodeOrder<T, N> rule = [] {
+    using Rule = boost::math::quadrature::gauss<T, N>;
+    const auto& x = map == NodeMap::linear ? Rule::abscissa() : sine_mapped_rule<T, N>().abscissa;
+    const auto& g = map == NodeMap::linear ? Rule::weights() : sine_mapped_rule<T, N>().weights;
+    RuleInNodeOrder<T, N> r;
+    unsigned n = 0, first = 0;
+    if (N % 2 == 1) {
+      r.x[n] = T(0);
+      r.g[n++] = g[0];
+      first = 1;
+    }
+    for (unsigned j = first; j < x.size(); ++j) {
+      r.x[n] = x[j];
+      r.g[n++] = g[j];
+      r.x[n] = -x[j];
+      r.g[n++] = g[j];
+    }
+    return r;
+  }();
+  return rule;
+}
+
 /// One node of a rule: the parameter t, q(t) ≥ 0 and dt/dx there.
 template <class T>
 struct MomentNode {
@@ -100,6 +135,9 @@ void add_two_order_sums(const std::array<double, N>& t, const std::array<double,
   using Pair = double __attribute__((vector_size(16)));  // {order m + 2, order m}
   Pair sums[K + 1];
   for (int k = 0; k <= K; ++k) sums[k] = Pair{out[(K + 1) + k], out[k]};
+  // One node per iteration: unrolled over the nodes, the compiler forms
+  // every node's terms ahead of the sums and spills them.
+#pragma GCC unroll 1
   for (unsigned j = 0; j < N; ++j) {
     Pair term{weight[j], weight[j] * q[j]};
     const Pair tj{t[j], t[j]};
@@ -120,6 +158,7 @@ template <class T, unsigned N, int K>
 void add_one_order_sums(const std::array<T, N>& t, const std::array<T, N>& weight, T* out) {
   T sums[K + 1];
   for (int k = 0; k <= K; ++k) sums[k] = out[k];
+#pragma GCC unroll 1
   for (unsigned j = 0; j < N; ++j) {
     T term = weight[j];
     for (int k = 0; k <= K; ++k) {
@@ -173,27 +212,14 @@ bool add_sums_in_registers(int levels, int k_max, const std::array<T, N>& t, con
 template <class T, unsigned N, NodeMap map, class NodeAt>
 void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
   using std::sqrt;
-  using Rule = boost::math::quadrature::gauss<T, N>;
-  const auto& x = map == NodeMap::linear ? Rule::abscissa() : sine_mapped_rule<T, N>().abscissa;
-  const auto& g = map == NodeMap::linear ? Rule::weights() : sine_mapped_rule<T, N>().weights;
-  // t, q and the weight g dt/dx at the nodes: the middle one (odd N), then ±x_j.
+  // t, q and the weight g dt/dx at the nodes, in the rule's node order.
+  const RuleInNodeOrder<T, N>& rule = rule_in_node_order<T, N, map>();
   std::array<T, N> t, q, weight;
-  unsigned n = 0;
-  auto place = [&](const T& xj, const T& gj) {
-    const MomentNode<T> node = node_at(xj);
+  for (unsigned n = 0; n < N; ++n) {
+    const MomentNode<T> node = node_at(rule.x[n]);
     t[n] = node.t;
     q[n] = node.q;
-    weight[n] = node.jacobian * gj;
-    ++n;
-  };
-  unsigned first = 0;
-  if (N % 2 == 1) {
-    place(T(0), g[0]);
-    first = 1;
-  }
-  for (unsigned j = first; j < x.size(); ++j) {
-    place(x[j], g[j]);
-    place(-x[j], g[j]);
+    weight[n] = node.jacobian * rule.g[n];
   }
   // weight × q^(−m_hi/2) from integer powers of q (even m) or of √q (odd
   // m), then × q per level down to m_lo: no division by a q that may be 0
