@@ -721,7 +721,7 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
       else
         add_panel(y, x);
       x = y;
-      delta_x = delta(x);
+      if (x != end) delta_x = delta(x);  // for the next panel (none after the end)
     }
   }
 }
