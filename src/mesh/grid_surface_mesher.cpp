@@ -160,8 +160,8 @@ class SurfaceCells {
   /// max instead of 512 stored nodes. volumeToMesh reads the same value at
   /// every node (a leaf of −float max or a tile of it: no sign change inside
   /// either, and the sampled leaves' neighbours are read by value), so the
-  /// mesh is the same; a solid shape's interior then costs no memory and
-  /// no page faults.
+  /// mesh is the same; a solid shape's interior then costs a tile per block
+  /// instead of a leaf of 512 values (~2 KB, written page by page).
   void fill_signs() {
     const float limit = std::numeric_limits<float>::max();
     for (int bi = 0; bi < count_.x(); bi += block) {
