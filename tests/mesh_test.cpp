@@ -361,6 +361,26 @@ TEST(MeshGrid, SamplingFromTheSeedsGivesTheDenseSamplingsMesh) {
   }
 }
 
+TEST(MeshGrid, ASolidInteriorFilledByTilesGivesTheDenseSamplingsMesh) {
+  // A ball of radius 1 (f = 2 − |p|², iso 1) at 1/20 of its radius: most of
+  // its interior lies in blocks of 8³ nodes that the continuation from the
+  // seeds never reaches, which the sign filling stores as tiles rather than
+  // node by node (grid_surface_mesher.cpp, fill_signs). The mesh must be
+  // the dense sampling's, which stores every node's own value.
+  ImplicitField field;
+  field.value = [](const Vec3& p) { return 2.0 - p.squaredNorm(); };
+  field.value_and_gradient = [](const Vec3& p) { return FieldSample{2.0 - p.squaredNorm(), -2.0 * p}; };
+  field.skeleton_points = {Vec3::Zero()};
+  MeshOptions options = options_at(1.0, 0.05);
+  options.method = MeshMethod::grid;
+  const TriangleMesh seeded = mesh_iso_surface(field, options);
+  options.grid_from_seeds = false;
+  const TriangleMesh reference = mesh_iso_surface(field, options);
+  ASSERT_GT(seeded.triangles.size(), 5000u);
+  EXPECT_EQ(seeded.vertices, reference.vertices);
+  EXPECT_EQ(seeded.triangles, reference.triangles);
+}
+
 TEST(MeshBadInput, NoSurfaceUnboundedAndBadSizes) {
   const Skeleton skeleton = load("segment");
   const ImplicitField field = skeleton_field(skeleton);

@@ -154,18 +154,42 @@ class SurfaceCells {
 
   /// Gives every node not sampled the sign of the node below it (−z), the
   /// nodes on the box's bottom face outside (+float max, the background).
+  /// Column by column, a block of nodes at a time: a block (an OpenVDB
+  /// leaf's 8³ nodes) inside the grid that holds no sampled node, and that
+  /// all its 8 × 8 columns enter inside, becomes one inactive tile of −float
+  /// max instead of 512 stored nodes. volumeToMesh reads the same value at
+  /// every node (a leaf of −float max or a tile of it: no sign change inside
+  /// either, and the sampled leaves' neighbours are read by value), so the
+  /// mesh is the same; a solid shape's interior then costs a tile per block
+  /// instead of a leaf of 512 values (~2 KB, written page by page).
   void fill_signs() {
     const float limit = std::numeric_limits<float>::max();
-    for (int i = 0; i < count_.x(); ++i) {
-      for (int j = 0; j < count_.y(); ++j) {
-        bool inside = false;
-        for (int k = 0; k < count_.z(); ++k) {
-          const openvdb::Coord node(i, j, k);
-          float value;
-          if (accessor_.probeValue(node, value)) {
-            inside = value < 0;
-          } else if (inside) {
-            accessor_.setValue(node, -limit);
+    for (int bi = 0; bi < count_.x(); bi += block) {
+      for (int bj = 0; bj < count_.y(); bj += block) {
+        // inside[a][b]: the sign carried up column (bi + a, bj + b).
+        std::array<std::array<bool, block>, block> inside{};
+        const int ni = std::min(block, count_.x() - bi), nj = std::min(block, count_.y() - bj);
+        for (int bk = 0; bk < count_.z(); bk += block) {
+          const openvdb::Coord origin(bi, bj, bk);
+          const bool whole = ni == block && nj == block && bk + block <= count_.z();
+          if (whole && accessor_.probeConstLeaf(origin) == nullptr && all_inside(inside)) {
+            accessor_.addTile(/*level of a leaf-sized tile*/ 1, origin, -limit, /*active*/ false);
+            continue;
+          }
+          const int nk = std::min(block, count_.z() - bk);
+          for (int a = 0; a < ni; ++a) {
+            for (int b = 0; b < nj; ++b) {
+              bool& in = inside[a][b];
+              for (int c = 0; c < nk; ++c) {
+                const openvdb::Coord node(bi + a, bj + b, bk + c);
+                float value;
+                if (accessor_.probeValue(node, value)) {
+                  in = value < 0;
+                } else if (in) {
+                  accessor_.setValue(node, -limit);
+                }
+              }
+            }
           }
         }
       }
@@ -190,6 +214,13 @@ class SurfaceCells {
     value = float(std::clamp(request_.level(p), -double(limit), double(limit)));
     accessor_.setValue(node, value);
     return value;
+  }
+
+  static bool all_inside(const std::array<std::array<bool, block>, block>& inside) {
+    for (const auto& row : inside)
+      for (bool in : row)
+        if (!in) return false;
+    return true;
   }
 
   static bool changes_sign(std::span<const float> values) {

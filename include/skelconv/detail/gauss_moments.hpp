@@ -76,6 +76,41 @@ const auto& sine_mapped_rule() {
   return mapped;
 }
 
+/// An N-point rule's nodes x ∈ [−1, 1] and weights g in the order every
+/// moment adds them: the middle node (odd N), then +x_j, −x_j for Boost's
+/// nonnegative nodes x_j in its order.
+template <class T, unsigned N>
+struct RuleInNodeOrder {
+  std::array<T, N> x, g;
+};
+
+/// Boost's N-point Gauss–Legendre table (after the sine map for
+/// NodeMap::sine) in node order (RuleInNodeOrder), laid out once per type:
+/// one loop over the nodes then places them all alike.
+template <class T, unsigned N, NodeMap map>
+const RuleInNodeOrder<T, N>& rule_in_node_order() {
+  static const RuleInNodeOrder<T, N> rule = [] {
+    using Rule = boost::math::quadrature::gauss<T, N>;
+    const auto& x = map == NodeMap::linear ? Rule::abscissa() : sine_mapped_rule<T, N>().abscissa;
+    const auto& g = map == NodeMap::linear ? Rule::weights() : sine_mapped_rule<T, N>().weights;
+    RuleInNodeOrder<T, N> r;
+    unsigned n = 0, first = 0;
+    if (N % 2 == 1) {
+      r.x[n] = T(0);
+      r.g[n++] = g[0];
+      first = 1;
+    }
+    for (unsigned j = first; j < x.size(); ++j) {
+      r.x[n] = x[j];
+      r.g[n++] = g[j];
+      r.x[n] = -x[j];
+      r.g[n++] = g[j];
+    }
+    return r;
+  }();
+  return rule;
+}
+
 /// One node of a rule: the parameter t, q(t) ≥ 0 and dt/dx there.
 template <class T>
 struct MomentNode {
@@ -84,15 +119,85 @@ struct MomentNode {
   T jacobian;
 };
 
-/// sum + terms[0] + terms[1] + … in this order: the order in which the
-/// nodes were always added, so that every moment rounds as it did when
-/// each node was added to `out` in turn (the verifier's baselines). The
-/// moments of different k and m are independent chains, which the
-/// processor overlaps.
-template <class T, std::size_t N>
-T add_in_order(T sum, const std::array<T, N>& terms) {
-  for (std::size_t j = 0; j < N; ++j) sum += terms[j];
-  return sum;
+/// The moment sums of add_moments_at_nodes for two orders m, m + 2 and
+/// weights t^0 … t^K in double (a SCALIS ∇f: m_hi = m_lo + 2), node by node:
+/// out[l (K + 1) + k] + term(node 0) + term(node 1) + … in node order, where
+/// term = weight · q^(1 − l) · t^k, each power formed by one product per
+/// step (weight × q, then × t per k), as add_moments_at_nodes forms every
+/// moment (the verifier's baselines). The two orders sit side by side in one
+/// SSE2 register, so one addition and one product serve both, and the 2(K +
+/// 1) sums stay in registers for the whole pass over the nodes: the same
+/// operations on each moment, in the same order, hence the same bits, in
+/// half the instructions.
+template <unsigned N, int K>
+void add_two_order_sums(const std::array<double, N>& t, const std::array<double, N>& q,
+                        const std::array<double, N>& weight, double* out) {
+  using Pair = double __attribute__((vector_size(16)));  // {order m + 2, order m}
+  Pair sums[K + 1];
+  for (int k = 0; k <= K; ++k) sums[k] = Pair{out[(K + 1) + k], out[k]};
+  // One node per iteration: unrolled over the nodes, the compiler forms
+  // every node's terms ahead of the sums and spills them.
+#pragma GCC unroll 1
+  for (unsigned j = 0; j < N; ++j) {
+    Pair term{weight[j], weight[j] * q[j]};
+    const Pair tj{t[j], t[j]};
+    for (int k = 0; k <= K; ++k) {
+      sums[k] += term;
+      term *= tj;
+    }
+  }
+  for (int k = 0; k <= K; ++k) {
+    out[(K + 1) + k] = sums[k][0];
+    out[k] = sums[k][1];
+  }
+}
+
+/// The same for one order m (f alone): the K + 1 sums in registers for the
+/// whole pass over the nodes, each term one product from the last.
+template <class T, unsigned N, int K>
+void add_one_order_sums(const std::array<T, N>& t, const std::array<T, N>& weight, T* out) {
+  T sums[K + 1];
+  for (int k = 0; k <= K; ++k) sums[k] = out[k];
+#pragma GCC unroll 1
+  for (unsigned j = 0; j < N; ++j) {
+    T term = weight[j];
+    for (int k = 0; k <= K; ++k) {
+      sums[k] += term;
+      term *= t[j];
+    }
+  }
+  for (int k = 0; k <= K; ++k) out[k] = sums[k];
+}
+
+/// The sums of add_moments_at_nodes in registers where the shape allows it:
+/// one order (f) or, in double, two (f and ∇f), with weights up to t^4
+/// (every inverse and Cauchy kernel up to the SCALIS degree 4); false
+/// otherwise, for the caller's moment-by-moment sums.
+template <class T, unsigned N>
+bool add_sums_in_registers(int levels, int k_max, const std::array<T, N>& t, const std::array<T, N>& q,
+                           const std::array<T, N>& weight, T* out) {
+  if (levels == 1) {
+    switch (k_max) {
+      case 0: add_one_order_sums<T, N, 0>(t, weight, out); return true;
+      case 1: add_one_order_sums<T, N, 1>(t, weight, out); return true;
+      case 2: add_one_order_sums<T, N, 2>(t, weight, out); return true;
+      case 3: add_one_order_sums<T, N, 3>(t, weight, out); return true;
+      case 4: add_one_order_sums<T, N, 4>(t, weight, out); return true;
+      default: return false;
+    }
+  }
+  if constexpr (std::is_same_v<T, double>) {
+    if (levels != 2) return false;
+    switch (k_max) {
+      case 0: add_two_order_sums<N, 0>(t, q, weight, out); return true;
+      case 1: add_two_order_sums<N, 1>(t, q, weight, out); return true;
+      case 2: add_two_order_sums<N, 2>(t, q, weight, out); return true;
+      case 3: add_two_order_sums<N, 3>(t, q, weight, out); return true;
+      case 4: add_two_order_sums<N, 4>(t, q, weight, out); return true;
+      default: return false;
+    }
+  }
+  return false;
 }
 
 /// Adds the N-point Gauss–Legendre rule over x ∈ [−1, 1] (after `map`) for
@@ -107,27 +212,14 @@ T add_in_order(T sum, const std::array<T, N>& terms) {
 template <class T, unsigned N, NodeMap map, class NodeAt>
 void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, T* out) {
   using std::sqrt;
-  using Rule = boost::math::quadrature::gauss<T, N>;
-  const auto& x = map == NodeMap::linear ? Rule::abscissa() : sine_mapped_rule<T, N>().abscissa;
-  const auto& g = map == NodeMap::linear ? Rule::weights() : sine_mapped_rule<T, N>().weights;
-  // t, q and the weight g dt/dx at the nodes: the middle one (odd N), then ±x_j.
+  // t, q and the weight g dt/dx at the nodes, in the rule's node order.
+  const RuleInNodeOrder<T, N>& rule = rule_in_node_order<T, N, map>();
   std::array<T, N> t, q, weight;
-  unsigned n = 0;
-  auto place = [&](const T& xj, const T& gj) {
-    const MomentNode<T> node = node_at(xj);
+  for (unsigned n = 0; n < N; ++n) {
+    const MomentNode<T> node = node_at(rule.x[n]);
     t[n] = node.t;
     q[n] = node.q;
-    weight[n] = node.jacobian * gj;
-    ++n;
-  };
-  unsigned first = 0;
-  if (N % 2 == 1) {
-    place(T(0), g[0]);
-    first = 1;
-  }
-  for (unsigned j = first; j < x.size(); ++j) {
-    place(x[j], g[j]);
-    place(-x[j], g[j]);
+    weight[n] = node.jacobian * rule.g[n];
   }
   // weight × q^(−m_hi/2) from integer powers of q (even m) or of √q (odd
   // m), then × q per level down to m_lo: no division by a q that may be 0
@@ -142,11 +234,14 @@ void add_moments_at_nodes(int m_lo, int m_hi, int k_max, const NodeAt& node_at, 
   for (int i = 0; i < power; ++i)
     for (unsigned j = 0; j < N; ++j) weight[j] *= base[j];
   const int levels = (m_hi - m_lo) / 2 + 1;
+  if (add_sums_in_registers<T, N>(levels, k_max, t, q, weight, out)) return;
   const int per_level = k_max + 1;
   for (int l = levels - 1; l >= 0; --l) {
     std::array<T, N> term = weight;
     for (int k = 0; k <= k_max; ++k) {
-      out[l * per_level + k] = add_in_order(out[l * per_level + k], term);
+      T sum = out[l * per_level + k];
+      for (unsigned j = 0; j < N; ++j) sum += term[j];
+      out[l * per_level + k] = sum;
       for (unsigned j = 0; j < N; ++j) term[j] *= t[j];
     }
     for (unsigned j = 0; j < N; ++j) weight[j] *= q[j];
@@ -626,7 +721,7 @@ void segment_moments_gauss_panels(int m_lo, int m_hi, int k_max, const T& a, con
       else
         add_panel(y, x);
       x = y;
-      delta_x = delta(x);
+      if (x != end) delta_x = delta(x);  // for the next panel (none after the end)
     }
   }
 }
