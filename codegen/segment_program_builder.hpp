@@ -145,6 +145,7 @@ class SegmentProgramBuilder {
   // degree, alone), or the rules and recurrences of odd degrees.
   void push_compact_alternatives(Choice& choice) {
     const MomentSymbols symbols = symbols_ = compact_symbols();
+    rule_c_ = support_root_forms_ ? define_rule_constant() : c_;
     if (support_root_forms_) push_support_root_alternatives(choice);
     if (spec_.degree % 2 == 0) {
       push_exact_rule(choice, symbols);
@@ -163,8 +164,56 @@ class SegmentProgramBuilder {
     const std::string rule = "segment_moments_gauss<T, " + std::to_string(nodes) + ">";
     push_helper_alternatives(choice, {}, "even degree: the integrand is a polynomial of degree " +
                                  std::to_string(polynomial_degree) + ", integrated exactly by " + rule,
-                             "M_exact", rule, {a_, b_, c_, symbols.lo.t, symbols.hi.t}, gauss_rule_cost(nodes));
+                             "M_exact", rule, {a_, b_, rule_c_, symbols.lo.t, symbols.hi.t}, gauss_rule_cost(nodes));
     choice.generic = choice.alternatives.size() - 1;
+  }
+
+  // The constant term of q that the Gauss rules of compact kernels read:
+  // c = q(0) = (R² − |AP|²)/R². As 1 − |AP|²/R² it is a difference of
+  // rounded numbers, off by ~ε|AP|²/R², i.e. ~ε(1 − c)/c relative, which
+  // the rule's q^(i/2) carries i/2 times. Where P is far from the segment
+  // compared with |AB|, q ≈ c all along it and that is f's error (measured:
+  // 1.4e-14 in f, compact i14, the verifier's far region, c ≈ 0.21). So
+  // wherever A and B are inside the ball (no clip) and c ≤ 1/2, where the
+  // loss (1 − c)/c exceeds one rounding, c is R² − |AP|² rounded once from
+  // the exact inputs (support_gap.hpp), over R². Near the segment the rest
+  // of q, −2bt + at², is as large as c and rounds like it: the exact c
+  // gains less there. The tests compare with constants (no operation on
+  // the generic path).
+  //
+  // G_E by parts (push_helper_alternatives) adds the rule's moments to
+  // boundary terms in q(t0), q(t1), which nearly cancel near the line
+  // beside the segment: they must be values of the quadratic the rule
+  // integrates, or the two c's rounding differences come back divided by
+  // a (measured: ∇f 9e-14 → 2.6e-13, compact i5 w2, near the line). So q
+  // and √q at the ends are chosen with c (rule_ends_); with no clip t0 = 0
+  // and t1 = 1.
+  ex define_rule_constant() {
+    const bool odd = spec_.degree % 2 != 0;
+    const symbol rule_c("rule_c"), q_lo("rule_q0"), q_hi("rule_q1"), root_lo("rule_r0"), root_hi("rule_r1");
+    std::vector<symbol> targets{rule_c, q_lo, q_hi};
+    if (odd) targets.insert(targets.end(), {root_lo, root_hi});
+    Choice choice{targets, {}};
+    Alternative exact{{-symbols_.lo.t, symbols_.hi.t - 1, numeric(1, 2) - c_},
+                      "A and B inside the ball, c ≤ 1/2: c = (R² − |AP|²)/R², R² − |AP|² rounded once "
+                      "(support_gap.hpp), and q(0) = c, q(1) = c + a − 2b",
+                      {}, {}, {}};
+    ArrayCall gap = end_gap_call(false);
+    const ex c_exact = end_q(gap);
+    const ex q1 = nonnegative_part(c_exact + a_ - 2 * b_);
+    exact.values = {c_exact, c_exact, q1};
+    if (odd) exact.values.insert(exact.values.end(), {pow(c_exact, numeric(1, 2)), pow(q1, numeric(1, 2))});
+    exact.calls.push_back(std::move(gap));
+    Alternative plain{{}, "c = 1 − |AP|²/R²", {}, {c_, symbols_.lo.q, symbols_.hi.q}, {}};
+    if (odd) plain.values.insert(plain.values.end(), {symbols_.lo.root, symbols_.hi.root});
+    choice.alternatives.push_back(std::move(exact));
+    choice.alternatives.push_back(std::move(plain));
+    choice.generic = 1;
+    program_.choose(std::move(choice));
+    const QuadraticEnd lo{symbols_.lo.t, q_lo, odd ? ex(root_lo) : symbols_.lo.root, symbols_.lo.slope};
+    const QuadraticEnd hi{symbols_.hi.t, q_hi, odd ? ex(root_hi) : symbols_.hi.root, symbols_.hi.slope};
+    rule_ends_ = PartsEnds{lo, hi};
+    return rule_c;
   }
 
   void push_odd_degree_rules(Choice& choice, const MomentSymbols& symbols) {
@@ -182,7 +231,7 @@ class SegmentProgramBuilder {
     push_helper_alternatives(choice, {-D_ - pow(a_, 2) * pow(reach, 2)},
                              "support sphere at least |AB|/4 beyond both ends: every moment by "
                              "segment_moments_gauss<T, 20>",
-                             "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                             "M_flat", "segment_moments_gauss<T, 20>", {a_, b_, rule_c_, symbols.lo.t, symbols.hi.t},
                              gauss_rule_cost(20));
     // The moment relations carry rounding up by a factor ~|t*|/⟨t⟩ per
     // step in k where the vertex t* = b/a lies far outside [0, 1]
@@ -210,7 +259,7 @@ class SegmentProgramBuilder {
                            "(Gauss–Legendre after a sine map)",
                            {}, {}, {}};
     fill_from_helper(far_vertex, "M_far_vertex", "segment_moments_gauss_sine<T, 30>",
-                     {a_, b_, c_, symbols.lo.t, symbols.hi.t},
+                     {a_, b_, rule_c_, symbols.lo.t, symbols.hi.t},
                      [](int m_lo, int m_hi, int k_max) { return helper_costs::gauss_sine_rule(30, m_lo, m_hi, k_max); });
     choice.alternatives.push_back(std::move(far_vertex));
   }
@@ -397,7 +446,9 @@ class SegmentProgramBuilder {
       return w;
     };
     auto q_power = [&](const QuadraticEnd& end) {  // q^(−n/2)
-      return n % 2 != 0 ? pow(end.root, -n) : pow(end.q, numeric(-n, 2));
+      if (n % 2 == 0) return pow(end.q, numeric(-n, 2));
+      // Compact kernels (n < 0): q^((−n−1)/2) √q, so that q is read where it is a symbol of its own.
+      return n < 0 ? pow(end.q, numeric(-n - 1, 2)) * end.root : pow(end.root, -n);
     };
     return (derivative_part + weight_at(lo.t) * q_power(lo) - weight_at(hi.t) * q_power(hi)) / (a_ * n);
   }
@@ -624,7 +675,8 @@ class SegmentProgramBuilder {
                                 const HelperCost& cost) {
     const bool along_line = std::any_of(requests_.begin(), requests_.end(), [](const MomentRequest& r) { return r.along_line; });
     Alternative alt{conditions, why, {}, {}, {}};
-    fill_from_helper(alt, array, function, args, cost, true, along_line ? GE::by_parts_near_line : GE::difference);
+    fill_from_helper(alt, array, function, args, cost, true, along_line ? GE::by_parts_near_line : GE::difference,
+                     rule_ends_);
     choice.alternatives.push_back(std::move(alt));
   }
 
@@ -974,6 +1026,10 @@ class SegmentProgramBuilder {
   // read the segment's geometry (A, B, P, R); off for polygon edges.
   bool support_root_forms_ = true;
   ex a_, b_, c_, D_, a_minus_b_;
+  // Compact kernels: c as their Gauss rules read it, and q, √q at the ends
+  // of the same quadratic for G_E by parts (define_rule_constant).
+  ex rule_c_;
+  std::optional<PartsEnds> rule_ends_;
   ex a_minus_b_value_, q1_value_, c_minus_b_value_;  // set by define_quadratic
   ex output_scale_ = 1;                              // multiplies f and ∇f (σ^i for SCALIS)
   bool high_moments_by_panels_ = false;              // SCALIS: see choose_moments

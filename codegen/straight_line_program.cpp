@@ -510,6 +510,28 @@ class Emitter {
   }
 
   // ---- run-time choice between forms
+
+  // The C++ test of a condition c ≥ 0. Where c is ±y + m for a number m,
+  // the test compares y with the constant (y ≥ −m, y ≤ m) instead of
+  // computing c: no subtraction, and the same outcome for every y,
+  // NaN included, since rounding is monotonic and keeps the sign of y − m.
+  std::string condition_text(const ex& c) {
+    ex rest = c;
+    numeric offset = 0;
+    if (is_a<GiNaC::add>(c)) {
+      for (size_t i = 0; i < c.nops(); ++i)
+        if (is_a<numeric>(c.op(i))) offset = GiNaC::ex_to<numeric>(c.op(i));
+      rest = c - offset;
+    }
+    bool negated = false;
+    if (is_a<GiNaC::mul>(rest) && rest.nops() == 2 && rest.op(1).is_equal(-1)) {
+      negated = true;
+      rest = rest.op(0);
+    }
+    if (offset.is_zero() && !negated) return named(c) + " >= T(0)";
+    return named(rest) + (negated ? " <= " : " >= ") + constant(negated ? offset : -offset).s;
+  }
+
   void emit_choice(const Choice& choice) {
     for (const symbol& t : choice.targets) line("T " + t.get_name() + ";");
     // Conditions are computed up front, so no branch hides another's temporaries.
@@ -517,7 +539,7 @@ class Emitter {
     for (size_t i = 0; i + 1 < choice.alternatives.size(); ++i) {
       std::string all;
       for (const ex& c : choice.alternatives[i].conditions)
-        all += (all.empty() ? "" : " && ") + named(c) + " >= T(0)";
+        all += (all.empty() ? "" : " && ") + condition_text(c);
       conditions.push_back(all);
     }
     // In generic_only mode an alternative that calls a helper with a loop of
@@ -605,7 +627,7 @@ class Emitter {
       }
     }
     std::string all;
-    for (const ex& c : alt.refinement->conditions) all += (all.empty() ? "" : " && ") + named(c) + " >= T(0)";
+    for (const ex& c : alt.refinement->conditions) all += (all.empty() ? "" : " && ") + condition_text(c);
     auto branch = [&](const std::string& opening, const std::string& why, const std::vector<ex>& values) {
       line(opening);
       scopes_.emplace_back();

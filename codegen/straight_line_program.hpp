@@ -44,8 +44,9 @@ struct ArrayCall {
 };
 
 /// One alternative form of some quantities. It is taken when every
-/// condition is >= 0; the last alternative of a Choice is the fallback and
-/// has no conditions.
+/// condition is >= 0 (a condition ±y + m, m a number, is written as the
+/// comparison of y with m, without the subtraction); the last alternative
+/// of a Choice is the fallback and has no conditions.
 struct Alternative {
   /// Other values for the same targets where further conditions hold, from
   /// the same steps and helper calls (so the calls are written once): e.g.

@@ -41,12 +41,12 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
   const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ap1 * ab1 + ap2 * ab2 + ap0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
   const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T plain_cross0 = ap2 * ab1 - ap1 * ab2;
   const T plain_cross1 = ap0 * ab2 - ap2 * ab0;
   const T plain_cross2 = ap1 * ab0 - ap0 * ab1;
-  const T plain_cross_cross = plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0;
+  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
   T cross2;
@@ -64,15 +64,15 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
-  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -inv_R2 * ab_ab;
   const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross0 * in.normal[0] + in.normal[2] * cross2 + in.normal[1] * cross1;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = cross0 * in.normal[0] + in.normal[2] * cross2 + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus4;
   T J_minus2;
@@ -90,13 +90,13 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   T theta_in;
   T G_f;
   const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t2 = t1 - inv_R2 * h * h;
+  const T t3 = max(T(t1 - inv_R2 * h * h - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope1 * plane_slope0));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, t4 * in.t0 * ab_ab + ap_bp - ab_bp * in.t0 - t4 * ab_ap);
-    G_f = -h * (J_minus4 + zeta2 * zeta2 * J_minus0 + zeta2 * J_minus2) * inv_R2;
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + in.t0 * t4 * ab_ab - ab_ap * t4 - ab_bp * in.t0);
+    G_f = -inv_R2 * (J_minus0 * zeta2 * zeta2 + J_minus4 + zeta2 * J_minus2) * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -131,12 +131,12 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
   const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
   const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
   const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
   const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
   const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0;
+  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
   T cross0;
   T cross1;
   T cross2;
@@ -154,15 +154,15 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
-  const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
+  const T ab_bp = bp0 * ab0 + ab1 * bp1 + ab2 * bp2;
+  const T ap_bp = bp0 * ap0 + ap1 * bp1 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[1] * cross1 + in.normal[0] * cross0 + cross2 * in.normal[2];
+  const T h = cross2 * in.normal[2] + in.normal[0] * cross0 + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus4;
   T J_minus2;
@@ -175,7 +175,7 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_minus2 = M_exact[1];
     J_minus0 = M_exact[2];
   }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
   T G_g;
@@ -185,8 +185,8 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(h * (in.t1 - in.t0), ap_bp + ab_ab * t4 * in.t0 - t4 * ab_ap - ab_bp * in.t0);
-    G_g = -h * inv_R2 * (J_minus0 * zeta2 + J_minus2);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t4 - ab_ap * t4 - in.t0 * ab_bp);
+    G_g = -(J_minus0 * zeta2 + J_minus2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -222,12 +222,12 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
   const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ap1 * ab1 + ab2 * ap2 + ap0 * ab0;
-  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
-  const T plain_cross0 = ab1 * ap2 - ap1 * ab2;
-  const T plain_cross1 = ap0 * ab2 - ab0 * ap2;
+  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T plain_cross0 = ap2 * ab1 - ap1 * ab2;
+  const T plain_cross1 = ap0 * ab2 - ap2 * ab0;
   const T plain_cross2 = ap1 * ab0 - ap0 * ab1;
-  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
+  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
   T cross2;
@@ -245,15 +245,15 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
-  const T ap_bp = bp2 * ap2 + ap1 * bp1 + ap0 * bp0;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
-  const T b = -ab_ap * inv_R2;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross1 * in.normal[1] + in.normal[2] * cross2 + cross0 * in.normal[0];
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -inv_R2 * ab_ab;
+  const T b = -inv_R2 * ab_ap;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = cross0 * in.normal[0] + in.normal[2] * cross2 + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus4;
   T J_minus2;
@@ -272,14 +272,14 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T G_f;
   T G_g;
   const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
-  const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t2 = t1 - inv_R2 * h * h;
+  const T t3 = max(T(t1 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - inv_R2 * h * h), T(-plane_slope1 * plane_slope0));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + t4 * in.t0 * ab_ab - ab_bp * in.t0 - t4 * ab_ap);
-    G_f = -(zeta2 * J_minus2 + J_minus4 + J_minus0 * zeta2 * zeta2) * h * inv_R2;
-    G_g = -(J_minus0 * zeta2 + J_minus2) * h * inv_R2;
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + in.t0 * t4 * ab_ab - ab_bp * in.t0 - t4 * ab_ap);
+    G_f = -inv_R2 * (zeta2 * J_minus2 + J_minus0 * zeta2 * zeta2 + J_minus4) * h;
+    G_g = -(J_minus0 * zeta2 + J_minus2) * inv_R2 * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -302,7 +302,7 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
-/// Operations per edge: 95 +, 160 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 95 +, 161 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 846 +, 1095 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
@@ -316,12 +316,12 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
-  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
-  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
-  const T plain_cross0 = ap2 * ab1 - ap1 * ab2;
-  const T plain_cross1 = ap0 * ab2 - ap2 * ab0;
-  const T plain_cross2 = ap1 * ab0 - ap0 * ab1;
+  const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
+  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
+  const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
+  const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
   const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
@@ -340,15 +340,15 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
-  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
+  const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - inv_R2 * in.z * in.z;
   const T a = -inv_R2 * ab_ab;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[1] * cross1 + cross2 * in.normal[2] + cross0 * in.normal[0];
+  const T h = in.normal[1] * cross1 + cross2 * in.normal[2] + in.normal[0] * cross0;
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -363,20 +363,20 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_minus2 = M_exact[2];
     J_minus0 = M_exact[3];
   }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_f;
   const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t3 = max(T(t1 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(h * (in.t1 - in.t0), t4 * ab_ab * in.t0 + ap_bp - ab_ap * t4 - ab_bp * in.t0);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * t4 * ab_ab - ab_ap * t4 - in.t0 * ab_bp);
     const T t5 = zeta2 * zeta2;
     const T t6 = t5 * zeta2;
-    G_f = -h * inv_R2 * (t6 * J_minus0 + J_minus6 + J_minus4 * zeta2 + J_minus2 * t5);
+    G_f = -h * (J_minus2 * zeta2 * zeta2 + J_minus4 * zeta2 + J_minus6 + t6 * J_minus0) * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -410,13 +410,13 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
-  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ap2 * ab2;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T plain_cross0 = ab1 * ap2 - ap1 * ab2;
-  const T plain_cross1 = ap0 * ab2 - ab0 * ap2;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ab0 * ap0;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
+  const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
+  const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
   const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0;
+  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
   T cross0;
   T cross1;
   T cross2;
@@ -434,15 +434,15 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
-  const T ap_bp = ap1 * bp1 + ap2 * bp2 + ap0 * bp0;
+  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - inv_R2 * in.z * in.z;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross0 * in.normal[0] + in.normal[1] * cross1 + cross2 * in.normal[2];
+  const T h = cross2 * in.normal[2] + in.normal[0] * cross0 + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -463,12 +463,12 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   T G_g;
   const T t1 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t3 = max(T(t1 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, ab_ab * in.t0 * t4 + ap_bp - in.t0 * ab_bp - ab_ap * t4);
-    G_g = -h * inv_R2 * (J_minus4 + J_minus2 * zeta2 + zeta2 * zeta2 * J_minus0);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + t4 * ab_ab * in.t0 - t4 * ab_ap - in.t0 * ab_bp);
+    G_g = -h * (zeta2 * zeta2 * J_minus0 + J_minus4 + J_minus2 * zeta2) * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -503,13 +503,13 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
   const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
   const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
   const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
+  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
   T cross2;
@@ -527,15 +527,15 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = ab2 * bp2 + ab1 * bp1 + bp0 * ab0;
-  const T ap_bp = ap1 * bp1 + bp0 * ap0 + ap2 * bp2;
+  const T ab_bp = bp0 * ab0 + ab2 * bp2 + bp1 * ab1;
+  const T ap_bp = ap2 * bp2 + bp1 * ap1 + bp0 * ap0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross1 * in.normal[1] + in.normal[0] * cross0 + cross2 * in.normal[2];
+  const T h = cross2 * in.normal[2] + cross1 * in.normal[1] + in.normal[0] * cross0;
   const T theta = atan2(h, ap_bp);
   T J_minus6;
   T J_minus4;
@@ -557,15 +557,15 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   T G_g;
   const T t1 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
+  const T t3 = max(T(t1 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + ab_ab * t4 * in.t0 - t4 * ab_ap - in.t0 * ab_bp);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + ab_ab * in.t0 * t4 - ab_bp * in.t0 - t4 * ab_ap);
     const T t5 = zeta2 * zeta2;
     const T t6 = t5 * zeta2;
-    G_f = -h * inv_R2 * (J_minus6 + t6 * J_minus0 + J_minus2 * t5 + J_minus4 * zeta2);
-    G_g = -(J_minus2 * zeta2 + t5 * J_minus0 + J_minus4) * h * inv_R2;
+    G_f = -(J_minus4 * zeta2 + J_minus6 + J_minus2 * t5 + J_minus0 * t6) * h * inv_R2;
+    G_g = -h * inv_R2 * (J_minus4 + J_minus0 * t5 + J_minus2 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -603,16 +603,16 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
   const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
-  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
+  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
   const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
   const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
   const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
   const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0;
+  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
   T cross0;
   T cross1;
   T cross2;
-  const T t0 = T(256) * plain_cross_cross - ap_ap * ab_ab;
+  const T t0 = T(256) * plain_cross_cross - ab_ab * ap_ap;
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross0 = plain_cross0;
@@ -626,15 +626,15 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
-  const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
+  const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
+  const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[0] * cross0 + in.normal[2] * cross2 + cross1 * in.normal[1];
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = cross2 * in.normal[2] + in.normal[0] * cross0 + in.normal[1] * cross1;
   const T theta = atan2(h, ap_bp);
   T J_minus8;
   T J_minus6;
@@ -652,20 +652,20 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     J_minus0 = M_exact[4];
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
+  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
   T G_f;
-  const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
+  const T t1 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t3 = max(T(t1 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2((in.t1 - in.t0) * h, ap_bp + t4 * ab_ab * in.t0 - t4 * ab_ap - ab_bp * in.t0);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + ab_ab * t4 * in.t0 - in.t0 * ab_bp - ab_ap * t4);
     const T t5 = zeta2 * zeta2;
     const T t6 = t5 * t5;
     const T t7 = t5 * zeta2;
-    G_f = -(t6 * J_minus0 + zeta2 * J_minus6 + J_minus8 + t7 * J_minus2 + J_minus4 * t5) * h * inv_R2;
+    G_f = -(J_minus8 + J_minus0 * t6 + t7 * J_minus2 + J_minus4 * t5 + J_minus6 * zeta2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -700,16 +700,16 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
   const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab2 * ap2 + ab1 * ap1 + ab0 * ap0;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T ab_ap = ab1 * ap1 + ab2 * ap2 + ap0 * ab0;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
   const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
-  const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
-  const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
+  const T plain_cross1 = ap0 * ab2 - ab0 * ap2;
+  const T plain_cross2 = ab0 * ap1 - ap0 * ab1;
+  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
   T cross0;
   T cross1;
   T cross2;
-  const T t0 = T(256) * plain_cross_cross - ab_ab * ap_ap;
+  const T t0 = T(256) * plain_cross_cross - ap_ap * ab_ab;
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross0 = plain_cross0;
@@ -723,15 +723,15 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = ab1 * bp1 + bp0 * ab0 + ab2 * bp2;
-  const T ap_bp = bp0 * ap0 + ap1 * bp1 + ap2 * bp2;
+  const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
+  const T ap_bp = bp2 * ap2 + ap0 * bp0 + bp1 * ap1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
-  const T b = -ab_ap * inv_R2;
-  const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross2 * in.normal[2] + cross1 * in.normal[1] + in.normal[0] * cross0;
+  const T b = -inv_R2 * ab_ap;
+  const T c = zeta2 - ap_ap * inv_R2;
+  const T h = in.normal[1] * cross1 + in.normal[2] * cross2 + cross0 * in.normal[0];
   const T theta = atan2(h, ap_bp);
   T J_minus8;
   T J_minus6;
@@ -748,20 +748,20 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     J_minus2 = M_exact[3];
     J_minus0 = M_exact[4];
   }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_g;
   const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t3 = max(T(t1 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(h * (in.t1 - in.t0), ap_bp + t4 * ab_ab * in.t0 - t4 * ab_ap - in.t0 * ab_bp);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t4 - t4 * ab_ap - in.t0 * ab_bp);
     const T t5 = zeta2 * zeta2;
     const T t6 = t5 * zeta2;
-    G_g = -(t6 * J_minus0 + J_minus6 + zeta2 * J_minus4 + t5 * J_minus2) * h * inv_R2;
+    G_g = -h * inv_R2 * (t6 * J_minus0 + J_minus4 * zeta2 + t5 * J_minus2 + J_minus6);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -796,13 +796,13 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab0 * ap0 + ab2 * ap2 + ab1 * ap1;
-  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
   const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
   const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
+  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
   T cross2;
@@ -820,15 +820,15 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
-  const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross2 * in.normal[2] + in.normal[1] * cross1 + in.normal[0] * cross0;
+  const T h = in.normal[0] * cross0 + cross1 * in.normal[1] + cross2 * in.normal[2];
   const T theta = atan2(h, ap_bp);
   T J_minus8;
   T J_minus6;
@@ -846,22 +846,22 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     J_minus0 = M_exact[4];
   }
   const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_f;
   T G_g;
   const T t1 = (T(1) / T(4)) * ab_ab * zeta2;
-  const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t2 = t1 - inv_R2 * h * h;
+  const T t3 = max(T(t1 - inv_R2 * h * h - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + ab_ab * t4 * in.t0 - in.t0 * ab_bp - t4 * ab_ap);
+    theta_in = atan2(h * (in.t1 - in.t0), t4 * ab_ab * in.t0 + ap_bp - t4 * ab_ap - ab_bp * in.t0);
     const T t5 = zeta2 * zeta2;
-    const T t6 = t5 * t5;
-    const T t7 = t5 * zeta2;
-    G_f = -h * inv_R2 * (J_minus0 * t6 + J_minus4 * t5 + J_minus6 * zeta2 + J_minus8 + t7 * J_minus2);
-    G_g = -h * inv_R2 * (J_minus4 * zeta2 + J_minus6 + t5 * J_minus2 + J_minus0 * t7);
+    const T t6 = t5 * zeta2;
+    const T t7 = t5 * t5;
+    G_f = -inv_R2 * (J_minus2 * t6 + J_minus8 + J_minus0 * t7 + J_minus6 * zeta2 + t5 * J_minus4) * h;
+    G_g = -(zeta2 * J_minus4 + J_minus2 * t5 + J_minus0 * t6 + J_minus6) * inv_R2 * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -884,7 +884,7 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 111 +, 193 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 111 +, 192 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 860 +, 1283 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
@@ -899,12 +899,12 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
   const T ab_ab = ab2 * ab2 + ab0 * ab0 + ab1 * ab1;
-  const T ab_ap = ap0 * ab0 + ab2 * ap2 + ap1 * ab1;
-  const T ap_ap = ap0 * ap0 + ap1 * ap1 + ap2 * ap2;
-  const T plain_cross0 = ab1 * ap2 - ap1 * ab2;
-  const T plain_cross1 = ap0 * ab2 - ab0 * ap2;
+  const T ab_ap = ap2 * ab2 + ap0 * ab0 + ap1 * ab1;
+  const T ap_ap = ap2 * ap2 + ap0 * ap0 + ap1 * ap1;
+  const T plain_cross0 = ap2 * ab1 - ap1 * ab2;
+  const T plain_cross1 = ap0 * ab2 - ap2 * ab0;
   const T plain_cross2 = ap1 * ab0 - ap0 * ab1;
-  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
+  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
   T cross2;
@@ -922,15 +922,15 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
-  const T ap_bp = ap1 * bp1 + bp2 * ap2 + ap0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -inv_R2 * ab_ab;
   const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[2] * cross2 + cross1 * in.normal[1] + cross0 * in.normal[0];
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = cross2 * in.normal[2] + cross0 * in.normal[0] + in.normal[1] * cross1;
   const T theta = atan2(h, ap_bp);
   T J_minus10;
   T J_minus8;
@@ -955,16 +955,16 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   T G_f;
   const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope1 * plane_slope0));
+  const T t3 = max(T(t1 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + t4 * in.t0 * ab_ab - t4 * ab_ap - in.t0 * ab_bp);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * t4 * ab_ab - in.t0 * ab_bp - ab_ap * t4);
     const T t5 = zeta2 * zeta2;
     const T t6 = t5 * zeta2;
     const T t7 = t5 * t5;
     const T t8 = t7 * zeta2;
-    G_f = -(zeta2 * J_minus8 + J_minus6 * zeta2 * zeta2 + J_minus10 + t6 * J_minus4 + t7 * J_minus2 + J_minus0 * t8) * h * inv_R2;
+    G_f = -h * inv_R2 * (t6 * J_minus4 + t7 * J_minus2 + J_minus0 * t8 + J_minus10 + J_minus8 * zeta2 + J_minus6 * t5);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -984,7 +984,7 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
-/// Operations per edge: 110 +, 190 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
+/// Operations per edge: 110 +, 191 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
 /// Longest path: 860 +, 1203 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
@@ -998,13 +998,13 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
-  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
-  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
+  const T ab_ab = ab1 * ab1 + ab2 * ab2 + ab0 * ab0;
+  const T ab_ap = ab0 * ap0 + ab1 * ap1 + ab2 * ap2;
+  const T ap_ap = ap1 * ap1 + ap2 * ap2 + ap0 * ap0;
   const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
   const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
   const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
+  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
   T cross2;
@@ -1022,15 +1022,15 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = ab2 * bp2 + ab0 * bp0 + ab1 * bp1;
-  const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = bp1 * ap1 + bp2 * ap2 + bp0 * ap0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross0 * in.normal[0] + in.normal[1] * cross1 + cross2 * in.normal[2];
+  const T h = cross2 * in.normal[2] + in.normal[0] * cross0 + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus10;
   T J_minus8;
@@ -1049,21 +1049,21 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     J_minus2 = M_exact[4];
     J_minus0 = M_exact[5];
   }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_g;
   const T t1 = (T(1) / T(4)) * ab_ab * zeta2;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - h * h * inv_R2 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t3 = max(T(t1 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(h * (in.t1 - in.t0), t4 * ab_ab * in.t0 + ap_bp - t4 * ab_ap - in.t0 * ab_bp);
+    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + in.t0 * ab_ab * t4 - t4 * ab_ap - in.t0 * ab_bp);
     const T t5 = zeta2 * zeta2;
-    const T t6 = t5 * t5;
-    const T t7 = t5 * zeta2;
-    G_g = -(J_minus6 * zeta2 + J_minus8 + J_minus0 * t6 + t5 * J_minus4 + J_minus2 * t7) * h * inv_R2;
+    const T t6 = t5 * zeta2;
+    const T t7 = t5 * t5;
+    G_g = -h * inv_R2 * (J_minus4 * zeta2 * zeta2 + J_minus2 * t6 + J_minus0 * t7 + J_minus8 + J_minus6 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -1098,13 +1098,13 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab1 * ab1 + ab0 * ab0 + ab2 * ab2;
-  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
+  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
+  const T ab_ap = ap0 * ab0 + ap2 * ab2 + ap1 * ab1;
   const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
-  const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
-  const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
-  const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0;
+  const T plain_cross0 = ap2 * ab1 - ap1 * ab2;
+  const T plain_cross1 = ap0 * ab2 - ap2 * ab0;
+  const T plain_cross2 = ap1 * ab0 - ap0 * ab1;
+  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
   T cross2;
@@ -1122,15 +1122,15 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
-  const T ap_bp = bp0 * ap0 + bp1 * ap1 + bp2 * ap2;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -inv_R2 * ab_ab;
   const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - ap_ap * inv_R2;
-  const T h = in.normal[2] * cross2 + cross1 * in.normal[1] + in.normal[0] * cross0;
+  const T c = zeta2 - inv_R2 * ap_ap;
+  const T h = cross0 * in.normal[0] + cross1 * in.normal[1] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus10;
   T J_minus8;
@@ -1149,24 +1149,24 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
     J_minus2 = M_exact[4];
     J_minus0 = M_exact[5];
   }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
   const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_f;
   T G_g;
   const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t3 = max(T(t1 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2((in.t1 - in.t0) * h, ap_bp + t4 * ab_ab * in.t0 - t4 * ab_ap - ab_bp * in.t0);
+    theta_in = atan2(-h * (in.t0 - in.t1), t4 * in.t0 * ab_ab + ap_bp - in.t0 * ab_bp - ab_ap * t4);
     const T t5 = zeta2 * zeta2;
     const T t6 = t5 * zeta2;
     const T t7 = t5 * t5;
     const T t8 = t7 * zeta2;
-    G_f = -(t6 * J_minus4 + t8 * J_minus0 + J_minus10 + t5 * J_minus6 + zeta2 * J_minus8 + t7 * J_minus2) * h * inv_R2;
-    G_g = -(t7 * J_minus0 + t5 * J_minus4 + t6 * J_minus2 + zeta2 * J_minus6 + J_minus8) * h * inv_R2;
+    G_f = -h * inv_R2 * (t6 * J_minus4 + zeta2 * J_minus8 + J_minus0 * t8 + t7 * J_minus2 + J_minus10 + J_minus6 * t5);
+    G_g = -h * inv_R2 * (J_minus0 * t7 + t5 * J_minus4 + t6 * J_minus2 + J_minus6 * zeta2 + J_minus8);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -1203,17 +1203,17 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
-  const T ap_ap = ap1 * ap1 + ap0 * ap0 + ap2 * ap2;
-  const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
-  const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
-  const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ap1 * ab1 + ap2 * ab2 + ab0 * ap0;
+  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T plain_cross0 = ap2 * ab1 - ap1 * ab2;
+  const T plain_cross1 = ap0 * ab2 - ab0 * ap2;
+  const T plain_cross2 = ab0 * ap1 - ap0 * ab1;
+  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
   T cross0;
   T cross1;
   T cross2;
-  const T t0 = T(256) * plain_cross_cross - ab_ab * ap_ap;
+  const T t0 = T(256) * plain_cross_cross - ap_ap * ab_ab;
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross0 = plain_cross0;
@@ -1227,15 +1227,15 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
+  const T ab_bp = ab0 * bp0 + bp2 * ab2 + bp1 * ab1;
   const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
-  const T zeta2 = T(1) - in.z * in.z * inv_R2;
-  const T a = -ab_ab * inv_R2;
+  const T zeta2 = T(1) - inv_R2 * in.z * in.z;
+  const T a = -inv_R2 * ab_ab;
   const T b = -inv_R2 * ab_ap;
   const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = in.normal[0] * cross0 + cross2 * in.normal[2] + cross1 * in.normal[1];
+  const T h = in.normal[2] * cross2 + in.normal[1] * cross1 + cross0 * in.normal[0];
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -1256,23 +1256,23 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     J_minus2 = M_exact[5];
     J_minus0 = M_exact[6];
   }
-  const T plane_slope0 = ab_ab * in.t0 - ab_ap;
-  const T plane_slope1 = ab_ab * in.t1 - ab_ap;
+  const T plane_slope0 = in.t0 * ab_ab - ab_ap;
+  const T plane_slope1 = in.t1 * ab_ab - ab_ap;
   T theta_in;
   T G_f;
-  const T t1 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t3 = max(T(t1 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-h * (in.t0 - in.t1), ab_ab * in.t0 * t4 + ap_bp - in.t0 * ab_bp - ab_ap * t4);
+    theta_in = atan2(-h * (in.t0 - in.t1), t4 * in.t0 * ab_ab + ap_bp - ab_ap * t4 - in.t0 * ab_bp);
     const T t5 = zeta2 * zeta2;
-    const T t6 = t5 * zeta2;
-    const T t7 = t5 * t5;
-    const T t8 = t6 * t6;
-    const T t9 = t7 * zeta2;
-    G_f = -h * inv_R2 * (t6 * J_minus6 + J_minus4 * t7 + J_minus8 * t5 + t8 * J_minus0 + J_minus10 * zeta2 + J_minus2 * t9 + J_minus12);
+    const T t6 = t5 * t5;
+    const T t7 = t6 * zeta2;
+    const T t8 = t5 * zeta2;
+    const T t9 = t8 * t8;
+    G_f = -h * inv_R2 * (t7 * J_minus2 + zeta2 * J_minus10 + t8 * J_minus6 + t6 * J_minus4 + J_minus12 + J_minus8 * t5 + J_minus0 * t9);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -1306,17 +1306,17 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T ab2 = in.b[2] - in.a[2];
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
-  const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
+  const T ab_ab = ab0 * ab0 + ab2 * ab2 + ab1 * ab1;
+  const T ab_ap = ab1 * ap1 + ab0 * ap0 + ab2 * ap2;
   const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
   const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
   const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
   const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2;
+  const T plain_cross_cross = plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0;
   T cross0;
   T cross1;
   T cross2;
-  const T t0 = T(256) * plain_cross_cross - ab_ab * ap_ap;
+  const T t0 = T(256) * plain_cross_cross - ap_ap * ab_ab;
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross0 = plain_cross0;
@@ -1330,15 +1330,15 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = bp0 * ab0 + ab2 * bp2 + bp1 * ab1;
-  const T ap_bp = bp1 * ap1 + ap2 * bp2 + bp0 * ap0;
+  const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
+  const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -inv_R2 * ab_ap;
-  const T c = zeta2 - inv_R2 * ap_ap;
-  const T h = cross2 * in.normal[2] + cross1 * in.normal[1] + in.normal[0] * cross0;
+  const T c = zeta2 - ap_ap * inv_R2;
+  const T h = in.normal[0] * cross0 + in.normal[2] * cross2 + cross1 * in.normal[1];
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -1363,18 +1363,18 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
   const T plane_slope1 = ab_ab * in.t1 - ab_ap;
   T theta_in;
   T G_g;
-  const T t1 = (T(1) / T(4)) * ab_ab * zeta2;
+  const T t1 = (T(1) / T(4)) * zeta2 * ab_ab;
   const T t2 = t1 - h * h * inv_R2;
-  const T t3 = max(T(t1 - min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1)) * inv_R2 - h * h * inv_R2), T(-plane_slope0 * plane_slope1));
+  const T t3 = max(T(t1 - h * h * inv_R2 - inv_R2 * min(T(plane_slope0 * plane_slope0), T(plane_slope1 * plane_slope1))), T(-plane_slope0 * plane_slope1));
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-h * (in.t0 - in.t1), ap_bp + ab_ab * in.t0 * t4 - in.t0 * ab_bp - t4 * ab_ap);
+    theta_in = atan2(-(in.t0 - in.t1) * h, t4 * ab_ab * in.t0 + ap_bp - ab_bp * in.t0 - t4 * ab_ap);
     const T t5 = zeta2 * zeta2;
-    const T t6 = t5 * t5;
-    const T t7 = t6 * zeta2;
-    const T t8 = t5 * zeta2;
-    G_g = -(J_minus8 * zeta2 + J_minus0 * t7 + J_minus10 + J_minus2 * t6 + J_minus6 * t5 + J_minus4 * t8) * h * inv_R2;
+    const T t6 = t5 * zeta2;
+    const T t7 = t5 * t5;
+    const T t8 = t7 * zeta2;
+    G_g = -(t6 * J_minus4 + t8 * J_minus0 + J_minus10 + zeta2 * J_minus8 + t5 * J_minus6 + t7 * J_minus2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;
@@ -1410,12 +1410,12 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   const T ap2 = in.p[2] - in.a[2];
   const T bp2 = in.p[2] - in.b[2];
   const T ab_ab = ab2 * ab2 + ab1 * ab1 + ab0 * ab0;
-  const T ab_ap = ab2 * ap2 + ab0 * ap0 + ab1 * ap1;
-  const T ap_ap = ap2 * ap2 + ap1 * ap1 + ap0 * ap0;
+  const T ab_ap = ap0 * ab0 + ab1 * ap1 + ab2 * ap2;
+  const T ap_ap = ap0 * ap0 + ap2 * ap2 + ap1 * ap1;
   const T plain_cross0 = ab1 * ap2 - ab2 * ap1;
-  const T plain_cross1 = ab2 * ap0 - ab0 * ap2;
-  const T plain_cross2 = ab0 * ap1 - ab1 * ap0;
-  const T plain_cross_cross = plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1 + plain_cross0 * plain_cross0;
+  const T plain_cross1 = ap0 * ab2 - ab0 * ap2;
+  const T plain_cross2 = ab0 * ap1 - ap0 * ab1;
+  const T plain_cross_cross = plain_cross0 * plain_cross0 + plain_cross2 * plain_cross2 + plain_cross1 * plain_cross1;
   T cross0;
   T cross1;
   T cross2;
@@ -1433,15 +1433,15 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
     cross1 = exact_cross[1];
     cross2 = exact_cross[2];
   }
-  const T ab_bp = ab2 * bp2 + bp0 * ab0 + bp1 * ab1;
-  const T ap_bp = ap2 * bp2 + bp1 * ap1 + bp0 * ap0;
+  const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
+  const T ap_bp = bp1 * ap1 + bp2 * ap2 + ap0 * bp0;
   const T inv_R = T(1) / in.R;
   const T inv_R2 = inv_R * inv_R;
   const T zeta2 = T(1) - in.z * in.z * inv_R2;
   const T a = -ab_ab * inv_R2;
   const T b = -ab_ap * inv_R2;
   const T c = zeta2 - ap_ap * inv_R2;
-  const T h = cross1 * in.normal[1] + cross2 * in.normal[2] + in.normal[0] * cross0;
+  const T h = cross1 * in.normal[1] + cross0 * in.normal[0] + in.normal[2] * cross2;
   const T theta = atan2(h, ap_bp);
   T J_minus12;
   T J_minus10;
@@ -1473,14 +1473,14 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
   if (t2 >= T(0) && t3 >= T(0)) {
     // chord within half the disc radius of P̄: θ_in = atan2(…), G^(p) − w^p θ_in = −(h/R²) Σ_k w^k J_{−2(p−1−k)}
     const T t4 = in.t1 - T(1);
-    theta_in = atan2(-(in.t0 - in.t1) * h, ab_ab * in.t0 * t4 + ap_bp - ab_ap * t4 - ab_bp * in.t0);
+    theta_in = atan2(-(in.t0 - in.t1) * h, ap_bp + ab_ab * t4 * in.t0 - ab_bp * in.t0 - t4 * ab_ap);
     const T t5 = zeta2 * zeta2;
-    const T t6 = t5 * zeta2;
-    const T t7 = t6 * t6;
-    const T t8 = t5 * t5;
-    const T t9 = t8 * zeta2;
-    G_f = -(t7 * J_minus0 + t5 * J_minus8 + J_minus12 + zeta2 * J_minus10 + t6 * J_minus6 + t9 * J_minus2 + t8 * J_minus4) * h * inv_R2;
-    G_g = -(t6 * J_minus4 + t9 * J_minus0 + J_minus10 + t8 * J_minus2 + t5 * J_minus6 + zeta2 * J_minus8) * h * inv_R2;
+    const T t6 = t5 * t5;
+    const T t7 = t6 * zeta2;
+    const T t8 = t5 * zeta2;
+    const T t9 = t8 * t8;
+    G_f = -(t7 * J_minus2 + t9 * J_minus0 + J_minus12 + t6 * J_minus4 + zeta2 * J_minus10 + t8 * J_minus6 + t5 * J_minus8) * h * inv_R2;
+    G_g = -(zeta2 * J_minus8 + t7 * J_minus0 + t6 * J_minus2 + t8 * J_minus4 + t5 * J_minus6 + J_minus10) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
     std::array<T, 1> gap_A;

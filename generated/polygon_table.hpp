@@ -79,11 +79,11 @@ std::span<const PolygonEdgeKernel<T>> polygon_edge_kernels() {
       {KernelFamily::compact, 4, &polygon_edge_compact_i4_f<T>, &polygon_edge_compact_i4_grad<T>, &polygon_edge_compact_i4_f_and_grad<T>, "polygon_edge_compact_i4",
        "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ", {87, 144, 3, 0, 2, 0, 0}, {86, 142, 3, 0, 2, 0, 0}, {88, 147, 3, 0, 2, 0, 0}},
       {KernelFamily::compact, 6, &polygon_edge_compact_i6_f<T>, &polygon_edge_compact_i6_grad<T>, &polygon_edge_compact_i6_f_and_grad<T>, "polygon_edge_compact_i6",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {95, 160, 3, 0, 2, 0, 0}, {94, 158, 3, 0, 2, 0, 0}, {97, 164, 3, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ", {95, 161, 3, 0, 2, 0, 0}, {94, 158, 3, 0, 2, 0, 0}, {97, 164, 3, 0, 2, 0, 0}},
       {KernelFamily::compact, 8, &polygon_edge_compact_i8_f<T>, &polygon_edge_compact_i8_grad<T>, &polygon_edge_compact_i8_f_and_grad<T>, "polygon_edge_compact_i8",
        "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ", {103, 176, 3, 0, 2, 0, 0}, {102, 174, 3, 0, 2, 0, 0}, {106, 181, 3, 0, 2, 0, 0}},
       {KernelFamily::compact, 10, &polygon_edge_compact_i10_f<T>, &polygon_edge_compact_i10_grad<T>, &polygon_edge_compact_i10_f_and_grad<T>, "polygon_edge_compact_i10",
-       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {111, 193, 3, 0, 2, 0, 0}, {110, 190, 3, 0, 2, 0, 0}, {115, 198, 3, 0, 2, 0, 0}},
+       "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ", {111, 192, 3, 0, 2, 0, 0}, {110, 191, 3, 0, 2, 0, 0}, {115, 198, 3, 0, 2, 0, 0}},
       {KernelFamily::compact, 12, &polygon_edge_compact_i12_f<T>, &polygon_edge_compact_i12_grad<T>, &polygon_edge_compact_i12_f_and_grad<T>, "polygon_edge_compact_i12",
        "C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ", {119, 208, 3, 0, 2, 0, 0}, {118, 206, 3, 0, 2, 0, 0}, {124, 215, 3, 0, 2, 0, 0}},
   };

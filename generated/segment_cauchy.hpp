@@ -138,11 +138,11 @@ T segment_cauchy_i1_w0_f(const T* pre, const SegmentPoint<T>& point) {
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t3 = b * r1;
-    X = seg1 * (b - a_minus_b) / (t3 - a_minus_b * r0);
+    X = (b - a_minus_b) * seg1 / (t3 - a_minus_b * r0);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
-  const T t4 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t4 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
   if (t4 >= T(0)) {
     // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 1> M_flat;
@@ -205,15 +205,15 @@ std::array<T, 3> segment_cauchy_i1_w0_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
     foot1 = -seg0 * (ab2 * exact_cross[0] - ab0 * exact_cross[2]);
     foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
@@ -228,7 +228,7 @@ std::array<T, 3> segment_cauchy_i1_w0_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -236,21 +236,21 @@ std::array<T, 3> segment_cauchy_i1_w0_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(1, 3, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = w0 * M_flat[2];
-    G_E = M_flat[3] * w0 - w0 * seg7 * b * M_flat[2];
+    G_E = M_flat[3] * w0 - w0 * b * M_flat[2] * seg7;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
     const T t4 = -b;
     G_ap = w0 * J_downward<T>(3, a, D, t4, c, a_minus_b, q1);
     const T t5 = T(1) / r0;
     const T t6 = T(1) / r1;
-    const T t7 = seg7 * (w0 * t5 - w0 * t6);
+    const T t7 = (w0 * t5 - w0 * t6) * seg7;
     G_E = t7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t8 = T(1) / r0;
     const T t9 = T(1) / r1;
     G_ap = w0 * (b * t8 + t9 * a_minus_b) / D;
-    const T t10 = seg7 * (w0 * t8 - w0 * t9);
+    const T t10 = (w0 * t8 - w0 * t9) * seg7;
     G_E = t10;
   }
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
@@ -320,7 +320,7 @@ T segment_cauchy_i1_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
     foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -338,17 +338,17 @@ T segment_cauchy_i1_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = r1 * b;
     const T t3 = T(1) / D;
-    X = (t2 + r0 * a_minus_b) * t3 * seg1;
+    X = (t2 + r0 * a_minus_b) * seg1 * t3;
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * b;
     X = -seg1 * (a_minus_b - b) / (t4 - r0 * a_minus_b);
   }
-  const T J1 = seg2 * asinh(X);
+  const T J1 = asinh(X) * seg2;
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t5 >= T(0)) {
@@ -357,7 +357,7 @@ T segment_cauchy_i1_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_moments_far_field<T>(1, 3, 1, a, b, c, c - T(1), M_flat.data());
     F = w0 * M_flat[0];
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - M_flat[2] * w0 * seg7 * b;
+    G_E = w0 * M_flat[3] - M_flat[2] * seg7 * w0 * b;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
     const T t8 = J1 * w0;
@@ -616,9 +616,9 @@ T segment_cauchy_i1_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t3 = r0 * a_minus_b;
     X = -(b - a_minus_b) * seg1 / (t3 - b * r1);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
-  const T t4 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t4 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
   if (t4 >= T(0)) {
     // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
@@ -626,7 +626,7 @@ T segment_cauchy_i1_w1_f(const T* pre, const SegmentPoint<T>& point) {
     F = w0 * M_flat[0] + w1 * M_flat[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
-    F = J1 * w0 - seg7 * (r0 - J1 * b - r1) * w1;
+    F = J1 * w0 - (r0 - J1 * b - r1) * w1 * seg7;
   }
   f = F * length;
   return f;
@@ -685,9 +685,9 @@ std::array<T, 3> segment_cauchy_i1_w1_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -712,16 +712,16 @@ std::array<T, 3> segment_cauchy_i1_w1_grad(const T* pre, const SegmentPoint<T>& 
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / D;
     const T t3 = r1 * b;
-    X = t2 * (t3 + a_minus_b * r0) * seg1;
+    X = t2 * seg1 * (t3 + a_minus_b * r0);
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * b;
     X = -seg1 * (a_minus_b - b) / (t4 - a_minus_b * r0);
   }
-  const T J1 = seg2 * asinh(X);
+  const T J1 = asinh(X) * seg2;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t5 >= T(0)) {
@@ -730,24 +730,24 @@ std::array<T, 3> segment_cauchy_i1_w1_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(1, 3, 2, a, b, c, c - T(1), M_flat.data());
     const T t8 = w1 * M_flat[4] + M_flat[3] * w0;
     G_ap = t8;
-    G_E = M_flat[4] * w0 + w1 * M_flat[5] - t8 * b * seg7;
+    G_E = M_flat[4] * w0 + w1 * M_flat[5] - t8 * seg7 * b;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
     const T t9 = -b;
     const T t10 = J_downward<T>(3, a, D, t9, c, a_minus_b, q1);
     const T t11 = T(1) / r0;
     const T t12 = T(1) / r1;
-    G_ap = t10 * w0 + w1 * (t11 + t10 * b - t12) * seg7;
-    const T t13 = seg7 * (w0 * t11 + w1 * J1 - seg8 * t12);
+    G_ap = t10 * w0 + w1 * seg7 * (t11 + t10 * b - t12);
+    const T t13 = seg7 * (w0 * t11 + w1 * J1 - t12 * seg8);
     G_E = t13;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t14 = T(1) / r1;
-    const T t15 = T(1) / r0;
-    const T t16 = t14 * a_minus_b + b * t15;
+    const T t14 = T(1) / r0;
+    const T t15 = T(1) / r1;
+    const T t16 = t15 * a_minus_b + b * t14;
     const T t17 = T(1) / D;
-    G_ap = t16 * t17 * w0 + w1 * (t15 + t16 * t17 * b - t14) * seg7;
-    const T t18 = seg7 * (w0 * t15 + w1 * J1 - seg8 * t14);
+    G_ap = w1 * (t14 + t16 * t17 * b - t15) * seg7 + t16 * t17 * w0;
+    const T t18 = seg7 * (w0 * t14 + w1 * J1 - t15 * seg8);
     G_E = t18;
   }
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
@@ -820,7 +820,7 @@ T segment_cauchy_i1_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -837,17 +837,17 @@ T segment_cauchy_i1_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / D;
     const T t3 = r1 * b;
-    X = t2 * (t3 + r0 * a_minus_b) * seg1;
+    X = t2 * seg1 * (t3 + r0 * a_minus_b);
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * b;
     X = -seg1 * (a_minus_b - b) / (t4 - r0 * a_minus_b);
   }
-  const T J1 = seg2 * asinh(X);
+  const T J1 = asinh(X) * seg2;
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
+  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t5 >= T(0)) {
@@ -857,28 +857,28 @@ T segment_cauchy_i1_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = w1 * M_flat[1] + M_flat[0] * w0;
     const T t8 = M_flat[3] * w0 + w1 * M_flat[4];
     G_ap = t8;
-    G_E = M_flat[4] * w0 + M_flat[5] * w1 - t8 * seg7 * b;
+    G_E = M_flat[4] * w0 + M_flat[5] * w1 - seg7 * t8 * b;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
-    const T t9 = J1 * w0 - w1 * (r0 - r1 - J1 * b) * seg7;
+    const T t9 = J1 * w0 - w1 * seg7 * (r0 - r1 - J1 * b);
     F = t9;
     const T t10 = -b;
     const T t11 = J_downward<T>(3, a, D, t10, c, a_minus_b, q1);
     const T t12 = T(1) / r0;
     const T t13 = T(1) / r1;
     G_ap = t11 * w0 + (t12 + b * t11 - t13) * w1 * seg7;
-    const T t14 = -(t13 * seg8 - J1 * w1 - t12 * w0) * seg7;
+    const T t14 = seg7 * (J1 * w1 + t12 * w0 - t13 * seg8);
     G_E = t14;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t15 = J1 * w0 - w1 * (r0 - r1 - J1 * b) * seg7;
+    const T t15 = J1 * w0 - w1 * seg7 * (r0 - r1 - J1 * b);
     F = t15;
     const T t16 = T(1) / r0;
     const T t17 = T(1) / r1;
     const T t18 = t17 * a_minus_b + t16 * b;
     const T t19 = T(1) / D;
     G_ap = w1 * seg7 * (t16 + t18 * t19 * b - t17) + t18 * t19 * w0;
-    const T t20 = -(t17 * seg8 - J1 * w1 - t16 * w0) * seg7;
+    const T t20 = seg7 * (J1 * w1 + t16 * w0 - t17 * seg8);
     G_E = t20;
   }
   f = F * length;
@@ -1116,15 +1116,15 @@ T segment_cauchy_i1_w2_f(const T* pre, const SegmentPoint<T>& point) {
   if (t1 >= T(0)) {
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = b * r1;
-    X = seg1 * (t2 + r0 * a_minus_b) / D;
+    X = (t2 + r0 * a_minus_b) * seg1 / D;
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t3 = b * r1;
-    X = seg1 * (b - a_minus_b) / (t3 - r0 * a_minus_b);
+    X = (b - a_minus_b) * seg1 / (t3 - r0 * a_minus_b);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
-  const T t4 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
+  const T t4 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
   if (t4 >= T(0)) {
     // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
@@ -1133,7 +1133,7 @@ T segment_cauchy_i1_w2_f(const T* pre, const SegmentPoint<T>& point) {
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t5 = J1 * b + r1 - r0;
-    F = w0 * J1 + (T(1) / T(2)) * seg7 * w2 * (seg7 * (D * J1 + a_minus_b * r1 + r0 * b) + T(4) * seg7 * t5 * b - T(2) * J1 * c) + seg7 * t5 * w1;
+    F = (T(1) / T(2)) * w2 * ((D * J1 + a_minus_b * r1 + r0 * b) * seg7 + T(4) * t5 * b * seg7 - T(2) * J1 * c) * seg7 + w0 * J1 + t5 * seg7 * w1;
   }
   f = F * length;
   return f;
@@ -1203,7 +1203,7 @@ std::array<T, 3> segment_cauchy_i1_w2_grad(const T* pre, const SegmentPoint<T>& 
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -1229,7 +1229,7 @@ std::array<T, 3> segment_cauchy_i1_w2_grad(const T* pre, const SegmentPoint<T>& 
   const T J1 = seg2 * asinh(X);
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t5 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t5 >= T(0)) {
@@ -1238,7 +1238,7 @@ std::array<T, 3> segment_cauchy_i1_w2_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(1, 3, 3, a, b, c, c - T(1), M_flat.data());
     const T t8 = M_flat[5] * w1 + w2 * M_flat[6] + M_flat[4] * w0;
     G_ap = t8;
-    G_E = w2 * M_flat[7] + w0 * M_flat[5] + w1 * M_flat[6] - b * seg7 * t8;
+    G_E = w2 * M_flat[7] + w0 * M_flat[5] + w1 * M_flat[6] - seg7 * b * t8;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
     const T t9 = T(1) / r0;
@@ -1246,8 +1246,8 @@ std::array<T, 3> segment_cauchy_i1_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t11 = J_downward<T>(3, a, D, t10, c, a_minus_b, q1);
     const T t12 = T(1) / r1;
     const T t13 = t9 + t11 * b - t12;
-    G_ap = t13 * seg7 * w1 + t11 * w0 - w2 * (t11 * c - T(2) * t13 * b * seg7 - J1) * seg7;
-    const T t14 = (T(2) * w2 * seg7 * (r1 + b * J1 - r0) + w0 * t9 + J1 * w1 - t12 * seg8) * seg7;
+    G_ap = seg7 * t13 * w1 + t11 * w0 - w2 * seg7 * (t11 * c - J1 - T(2) * seg7 * t13 * b);
+    const T t14 = -(t12 * seg8 - w0 * t9 - J1 * w1 - T(2) * w2 * seg7 * (r1 + b * J1 - r0)) * seg7;
     G_E = t14;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -1256,8 +1256,8 @@ std::array<T, 3> segment_cauchy_i1_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t17 = T(1) / r1;
     const T t18 = b * t15 + t17 * a_minus_b;
     const T t19 = t15 + t16 * b * t18 - t17;
-    G_ap = t19 * seg7 * w1 + t16 * w0 * t18 - w2 * seg7 * (t16 * t18 * c - T(2) * t19 * b * seg7 - J1);
-    const T t20 = (T(2) * w2 * seg7 * (r1 + b * J1 - r0) + w0 * t15 + J1 * w1 - t17 * seg8) * seg7;
+    G_ap = t19 * seg7 * w1 + t16 * w0 * t18 - w2 * (t16 * t18 * c - J1 - T(2) * t19 * seg7 * b) * seg7;
+    const T t20 = -(t17 * seg8 - w0 * t15 - J1 * w1 - T(2) * w2 * seg7 * (r1 + b * J1 - r0)) * seg7;
     G_E = t20;
   }
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
@@ -1321,17 +1321,17 @@ T segment_cauchy_i1_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
@@ -1348,7 +1348,7 @@ T segment_cauchy_i1_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / D;
     const T t3 = r1 * b;
-    X = t2 * seg1 * (t3 + r0 * a_minus_b);
+    X = seg1 * t2 * (t3 + r0 * a_minus_b);
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * b;
@@ -1358,7 +1358,7 @@ T segment_cauchy_i1_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t5 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t5 >= T(0)) {
@@ -1372,28 +1372,28 @@ T segment_cauchy_i1_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
     const T t9 = J1 * b + r1 - r0;
-    const T t10 = J1 * w0 + (T(1) / T(2)) * ((r0 * b + r1 * a_minus_b + J1 * D) * seg7 + T(4) * t9 * seg7 * b - T(2) * c * J1) * w2 * seg7 + t9 * seg7 * w1;
+    const T t10 = J1 * w0 + seg7 * t9 * w1 - (T(1) / T(2)) * seg7 * w2 * (T(2) * c * J1 - seg7 * (r0 * b + r1 * a_minus_b + J1 * D) - T(4) * seg7 * t9 * b);
     F = t10;
     const T t11 = -b;
     const T t12 = J_downward<T>(3, a, D, t11, c, a_minus_b, q1);
     const T t13 = T(1) / r0;
     const T t14 = T(1) / r1;
     const T t15 = t12 * b + t13 - t14;
-    G_ap = seg7 * t15 * w1 + t12 * w0 - (c * t12 - J1 - T(2) * seg7 * b * t15) * w2 * seg7;
-    const T t16 = (t13 * w0 + T(2) * w2 * t9 * seg7 + J1 * w1 - t14 * seg8) * seg7;
+    G_ap = t12 * w0 + seg7 * t15 * w1 - seg7 * w2 * (c * t12 - J1 - T(2) * seg7 * b * t15);
+    const T t16 = seg7 * (t13 * w0 + J1 * w1 + T(2) * seg7 * w2 * t9 - t14 * seg8);
     G_E = t16;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = J1 * b + r1 - r0;
-    const T t18 = J1 * w0 + (T(1) / T(2)) * ((r0 * b + r1 * a_minus_b + J1 * D) * seg7 + T(4) * t17 * seg7 * b - T(2) * c * J1) * w2 * seg7 + t17 * seg7 * w1;
+    const T t18 = J1 * w0 + seg7 * t17 * w1 - (T(1) / T(2)) * seg7 * w2 * (T(2) * c * J1 - seg7 * (r0 * b + r1 * a_minus_b + J1 * D) - T(4) * seg7 * t17 * b);
     F = t18;
-    const T t19 = T(1) / r0;
-    const T t20 = T(1) / r1;
-    const T t21 = t19 * b + t20 * a_minus_b;
+    const T t19 = T(1) / r1;
+    const T t20 = T(1) / r0;
+    const T t21 = t20 * b + t19 * a_minus_b;
     const T t22 = T(1) / D;
-    const T t23 = t20 - t21 * t22 * b - t19;
-    G_ap = (J1 - c * t21 * t22 - T(2) * t23 * seg7 * b) * w2 * seg7 + t21 * t22 * w0 - t23 * seg7 * w1;
-    const T t24 = (t19 * w0 + T(2) * w2 * t17 * seg7 + J1 * w1 - t20 * seg8) * seg7;
+    const T t23 = t19 - t21 * t22 * b - t20;
+    G_ap = seg7 * w2 * (J1 - T(2) * t23 * seg7 * b - c * t21 * t22) + t21 * t22 * w0 - t23 * seg7 * w1;
+    const T t24 = seg7 * (t20 * w0 + J1 * w1 + T(2) * seg7 * w2 * t17 - t19 * seg8);
     G_E = t24;
   }
   f = F * length;
@@ -1639,11 +1639,11 @@ T segment_cauchy_i1_w3_f(const T* pre, const SegmentPoint<T>& point) {
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t3 = b * r1;
-    X = seg1 * (b - a_minus_b) / (t3 - a_minus_b * r0);
+    X = (b - a_minus_b) * seg1 / (t3 - a_minus_b * r0);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
-  const T t4 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t4 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   if (t4 >= T(0)) {
     // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 4> M_flat;
@@ -1653,8 +1653,8 @@ T segment_cauchy_i1_w3_f(const T* pre, const SegmentPoint<T>& point) {
     // recurrence (1) upwards from J_1, J_2
     const T t5 = r1 + b * J1 - r0;
     const T t6 = D * J1 + r1 * a_minus_b + b * r0;
-    const T t7 = T(4) * seg7 * b * t5 + seg7 * t6 - T(2) * c * J1;
-    F = (T(1) / T(2)) * t7 * seg7 * w2 + w0 * J1 + seg7 * t5 * w1 - (T(1) / T(6)) * seg7 * w3 * (T(6) * seg7 * c * t5 + seg7 * (T(2) * c * r0 - T(3) * seg7 * b * t6 - T(2) * r1 * q1) - T(6) * t7 * seg7 * b);
+    const T t7 = T(4) * b * t5 * seg7 + seg7 * t6 - T(2) * c * J1;
+    F = t5 * seg7 * w1 + (T(1) / T(2)) * t7 * w2 * seg7 + w0 * J1 - (T(1) / T(6)) * w3 * (T(6) * c * t5 * seg7 - seg7 * (T(3) * b * seg7 * t6 + T(2) * r1 * q1 - T(2) * c * r0) - T(6) * b * t7 * seg7) * seg7;
   }
   f = length * F;
   return f;
@@ -1716,14 +1716,14 @@ std::array<T, 3> segment_cauchy_i1_w3_grad(const T* pre, const SegmentPoint<T>& 
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
     foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
@@ -1742,16 +1742,16 @@ std::array<T, 3> segment_cauchy_i1_w3_grad(const T* pre, const SegmentPoint<T>& 
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / D;
     const T t3 = r1 * b;
-    X = t2 * (t3 + a_minus_b * r0) * seg1;
+    X = t2 * seg1 * (t3 + a_minus_b * r0);
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * b;
     X = -(a_minus_b - b) * seg1 / (t4 - a_minus_b * r0);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t5 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t5 >= T(0)) {
@@ -1760,7 +1760,7 @@ std::array<T, 3> segment_cauchy_i1_w3_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(1, 3, 4, a, b, c, c - T(1), M_flat.data());
     const T t8 = M_flat[7] * w2 + w1 * M_flat[6] + w3 * M_flat[8] + w0 * M_flat[5];
     G_ap = t8;
-    G_E = M_flat[8] * w2 + w0 * M_flat[6] + M_flat[7] * w1 + w3 * M_flat[9] - b * seg7 * t8;
+    G_E = M_flat[8] * w2 + w0 * M_flat[6] + M_flat[7] * w1 + w3 * M_flat[9] - seg7 * b * t8;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
     const T t9 = -b;
@@ -1768,23 +1768,25 @@ std::array<T, 3> segment_cauchy_i1_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t11 = T(1) / r0;
     const T t12 = T(1) / r1;
     const T t13 = t11 + t10 * b - t12;
-    const T t14 = T(2) * b * seg7 * t13 + J1 - t10 * c;
+    const T t14 = T(2) * seg7 * b * t13 + J1 - t10 * c;
     const T t15 = r1 + b * J1 - r0;
-    G_ap = w0 * t10 + seg7 * t14 * w2 + w1 * seg7 * t13 - w3 * (seg7 * t13 * c - T(2) * b * seg7 * t14 - t15 * seg7) * seg7;
-    const T t16 = -(T(1) / T(2)) * (T(2) * t12 * seg8 - T(2) * w1 * J1 - T(4) * t15 * seg7 * w2 - T(2) * w0 * t11 - T(3) * w3 * seg7 * (T(4) * t15 * b * seg7 + (a_minus_b * r1 + b * r0 + D * J1) * seg7 - T(2) * J1 * c)) * seg7;
-    G_E = t16;
+    const T t16 = seg7 * t15;
+    G_ap = w0 * t10 + seg7 * w1 * t13 + seg7 * t14 * w2 + w3 * seg7 * (t16 + T(2) * seg7 * b * t14 - seg7 * t13 * c);
+    const T t17 = (T(1) / T(2)) * seg7 * (T(4) * seg7 * t15 * w2 + T(2) * w1 * J1 + T(2) * w0 * t11 - T(2) * t12 * seg8 - T(3) * w3 * seg7 * (T(2) * J1 * c - T(4) * seg7 * t15 * b - seg7 * (a_minus_b * r1 + b * r0 + D * J1)));
+    G_E = t17;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t17 = T(1) / D;
-    const T t18 = T(1) / r0;
-    const T t19 = T(1) / r1;
-    const T t20 = b * t18 + a_minus_b * t19;
-    const T t21 = t17 * b * t20 + t18 - t19;
-    const T t22 = t17 * t20 * c - J1 - T(2) * t21 * b * seg7;
+    const T t18 = T(1) / D;
+    const T t19 = T(1) / r0;
+    const T t20 = T(1) / r1;
+    const T t21 = b * t19 + a_minus_b * t20;
+    const T t22 = t18 * b * t21 + t19 - t20;
     const T t23 = r1 + b * J1 - r0;
-    G_ap = t21 * w1 * seg7 + t17 * w0 * t20 - t22 * seg7 * w2 - w3 * seg7 * (t21 * seg7 * c + T(2) * t22 * b * seg7 - t23 * seg7);
-    const T t24 = -(T(1) / T(2)) * (T(2) * t19 * seg8 - T(2) * w1 * J1 - T(4) * t23 * seg7 * w2 - T(2) * w0 * t18 - T(3) * w3 * seg7 * (T(4) * t23 * b * seg7 + (a_minus_b * r1 + b * r0 + D * J1) * seg7 - T(2) * J1 * c)) * seg7;
-    G_E = t24;
+    const T t24 = seg7 * t23;
+    const T t25 = t18 * t21 * c - J1 - T(2) * seg7 * t22 * b;
+    G_ap = seg7 * t22 * w1 + w3 * seg7 * (t24 - seg7 * t22 * c - T(2) * seg7 * t25 * b) + t18 * w0 * t21 - seg7 * t25 * w2;
+    const T t26 = (T(1) / T(2)) * seg7 * (T(4) * seg7 * t23 * w2 + T(2) * w1 * J1 + T(2) * w0 * t19 - T(2) * t20 * seg8 - T(3) * w3 * seg7 * (T(2) * J1 * c - T(4) * seg7 * t23 * b - seg7 * (a_minus_b * r1 + b * r0 + D * J1)));
+    G_E = t26;
   }
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
   grad[1] = -g_factor * (ab1 * G_E - foot1 * G_ap);
@@ -1848,17 +1850,17 @@ T segment_cauchy_i1_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * seg0 * ab0;
-    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot0 = ap0 - ab_ap * ab0 * seg0;
+    foot1 = ap1 - ab_ap * ab1 * seg0;
     foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (ab2 * exact_cross[1] - ab1 * exact_cross[2]);
-    foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
-    foot2 = seg0 * (exact_cross[0] * ab1 - ab0 * exact_cross[1]);
+    foot0 = (ab2 * exact_cross[1] - ab1 * exact_cross[2]) * seg0;
+    foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
+    foot2 = (exact_cross[0] * ab1 - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = bp0 * ab0 + ab1 * bp1 + ab2 * bp2;
@@ -1875,17 +1877,17 @@ T segment_cauchy_i1_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = b * r1;
     const T t3 = T(1) / D;
-    X = (t2 + r0 * a_minus_b) * seg1 * t3;
+    X = seg1 * (t2 + r0 * a_minus_b) * t3;
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = b * r1;
-    X = (b - a_minus_b) * seg1 / (t4 - r0 * a_minus_b);
+    X = seg1 * (b - a_minus_b) / (t4 - r0 * a_minus_b);
   }
   const T J1 = seg2 * asinh(X);
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t5 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t6 = -b * a_minus_b;
   const T t7 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t5 >= T(0)) {
@@ -1898,37 +1900,37 @@ T segment_cauchy_i1_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     G_E = M_flat[8] * w2 + w0 * M_flat[6] + M_flat[7] * w1 + w3 * M_flat[9] - b * seg7 * t8;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
-    const T t9 = J1 * D + r1 * a_minus_b + b * r0;
-    const T t10 = b * J1 + r1 - r0;
-    const T t11 = seg7 * t9 + T(4) * b * seg7 * t10 - T(2) * c * J1;
-    const T t12 = (T(1) / T(2)) * seg7 * t11 * w2 + seg7 * w1 * t10 + w0 * J1 - (T(1) / T(6)) * w3 * seg7 * (T(6) * c * seg7 * t10 - seg7 * (T(3) * b * seg7 * t9 + T(2) * q1 * r1 - T(2) * c * r0) - T(6) * b * seg7 * t11);
+    const T t9 = b * J1 + r1 - r0;
+    const T t10 = J1 * D + r1 * a_minus_b + b * r0;
+    const T t11 = T(4) * b * seg7 * t9 + seg7 * t10 - T(2) * c * J1;
+    const T t12 = (T(1) / T(2)) * t11 * seg7 * w2 + seg7 * w1 * t9 + (T(1) / T(6)) * seg7 * w3 * (seg7 * (T(3) * b * seg7 * t10 + T(2) * q1 * r1 - T(2) * c * r0) + T(6) * b * t11 * seg7 - T(6) * seg7 * c * t9) + w0 * J1;
     F = t12;
     const T t13 = -b;
     const T t14 = J_downward<T>(3, a, D, t13, c, a_minus_b, q1);
-    const T t15 = seg7 * t10;
-    const T t16 = T(1) / r0;
-    const T t17 = T(1) / r1;
-    const T t18 = b * t14 + t16 - t17;
-    const T t19 = t14 * c - J1 - T(2) * b * seg7 * t18;
-    G_ap = t14 * w0 + w3 * seg7 * (t15 - c * seg7 * t18 - T(2) * b * t19 * seg7) + seg7 * w1 * t18 - t19 * seg7 * w2;
-    const T t20 = (T(1) / T(2)) * (T(2) * w0 * t16 + T(2) * w1 * J1 + T(4) * seg7 * w2 * t10 + T(3) * w3 * seg7 * t11 - T(2) * seg8 * t17) * seg7;
+    const T t15 = T(1) / r0;
+    const T t16 = T(1) / r1;
+    const T t17 = b * t14 + t15 - t16;
+    const T t18 = T(2) * b * seg7 * t17 + J1 - t14 * c;
+    const T t19 = seg7 * t9;
+    G_ap = seg7 * w1 * t17 + seg7 * t18 * w2 + t14 * w0 + seg7 * w3 * (t19 + T(2) * b * seg7 * t18 - seg7 * c * t17);
+    const T t20 = (T(1) / T(2)) * seg7 * (T(4) * seg7 * w2 * t9 + T(2) * w0 * t15 + T(2) * w1 * J1 + T(3) * t11 * seg7 * w3 - T(2) * seg8 * t16);
     G_E = t20;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t21 = J1 * D + r1 * a_minus_b + b * r0;
-    const T t22 = b * J1 + r1 - r0;
-    const T t23 = seg7 * t21 + T(4) * b * seg7 * t22 - T(2) * c * J1;
-    const T t24 = (T(1) / T(2)) * seg7 * t23 * w2 + seg7 * w1 * t22 + w0 * J1 - (T(1) / T(6)) * w3 * seg7 * (T(6) * c * seg7 * t22 - seg7 * (T(3) * b * seg7 * t21 + T(2) * q1 * r1 - T(2) * c * r0) - T(6) * b * seg7 * t23);
+    const T t21 = b * J1 + r1 - r0;
+    const T t22 = J1 * D + r1 * a_minus_b + b * r0;
+    const T t23 = T(4) * b * seg7 * t21 + seg7 * t22 - T(2) * c * J1;
+    const T t24 = (T(1) / T(2)) * t23 * seg7 * w2 + seg7 * w1 * t21 + (T(1) / T(6)) * seg7 * w3 * (seg7 * (T(3) * b * seg7 * t22 + T(2) * q1 * r1 - T(2) * c * r0) + T(6) * b * t23 * seg7 - T(6) * seg7 * c * t21) + w0 * J1;
     F = t24;
-    const T t25 = seg7 * t22;
+    const T t25 = T(1) / r0;
     const T t26 = T(1) / r1;
-    const T t27 = T(1) / r0;
-    const T t28 = b * t27 + t26 * a_minus_b;
-    const T t29 = T(1) / D;
-    const T t30 = t26 - b * t28 * t29 - t27;
-    const T t31 = T(2) * b * seg7 * t30 + c * t28 * t29 - J1;
-    G_ap = w3 * (t25 + c * seg7 * t30 - T(2) * b * seg7 * t31) * seg7 + w0 * t28 * t29 - seg7 * t31 * w2 - seg7 * w1 * t30;
-    const T t32 = (T(1) / T(2)) * (T(2) * w0 * t27 + T(2) * w1 * J1 + T(4) * seg7 * w2 * t22 + T(3) * w3 * seg7 * t23 - T(2) * seg8 * t26) * seg7;
+    const T t27 = b * t25 + t26 * a_minus_b;
+    const T t28 = T(1) / D;
+    const T t29 = t26 - b * t27 * t28 - t25;
+    const T t30 = J1 - T(2) * b * seg7 * t29 - c * t27 * t28;
+    const T t31 = seg7 * t21;
+    G_ap = w0 * t27 * t28 + seg7 * w3 * (seg7 * c * t29 + T(2) * b * seg7 * t30 + t31) + seg7 * t30 * w2 - seg7 * w1 * t29;
+    const T t32 = (T(1) / T(2)) * seg7 * (T(4) * seg7 * w2 * t21 + T(2) * w0 * t25 + T(2) * w1 * J1 + T(3) * t23 * seg7 * w3 - T(2) * seg8 * t26);
     G_E = t32;
   }
   f = F * length;
@@ -2155,7 +2157,7 @@ T segment_cauchy_i2_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -2227,16 +2229,16 @@ std::array<T, 3> segment_cauchy_i2_w0_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - seg0 * ab_ap * ab1;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = seg0 * (exact_cross[0] * ab1 - ab0 * exact_cross[1]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
@@ -2250,7 +2252,7 @@ std::array<T, 3> segment_cauchy_i2_w0_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -2258,7 +2260,7 @@ std::array<T, 3> segment_cauchy_i2_w0_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(2, 4, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - b * M_flat[2] * w0 * seg5;
+    G_E = w0 * M_flat[3] - b * M_flat[2] * seg5 * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t4 = -b;
@@ -2335,17 +2337,17 @@ T segment_cauchy_i2_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
@@ -2359,7 +2361,7 @@ T segment_cauchy_i2_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -2368,14 +2370,14 @@ T segment_cauchy_i2_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_moments_far_field<T>(2, 4, 1, a, b, c, c - T(1), M_flat.data());
     F = w0 * M_flat[0];
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * M_flat[2] * b * seg5;
+    G_E = w0 * M_flat[3] - w0 * M_flat[2] * seg5 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t4 = -b;
     const T t5 = J_downward<T>(4, a, D, t4, c, a_minus_b, q1);
     const T t6 = T(1) / q1;
     const T t7 = T(1) / c;
-    F = w0 * (T(2) * D * t5 - t6 * a_minus_b - t7 * b) * seg5;
+    F = w0 * seg5 * (T(2) * D * t5 - t6 * a_minus_b - t7 * b);
     G_ap = w0 * t5;
     const T t8 = -(T(1) / T(2)) * (t6 * w0 - t7 * w0) * seg5;
     G_E = t8;
@@ -2598,7 +2600,7 @@ T segment_cauchy_i2_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -2611,7 +2613,7 @@ T segment_cauchy_i2_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T log_ratio = log(q1 / c);
     const T t4 = -b;
     const T t5 = J_downward<T>(2, a, D, t4, c, a_minus_b, q1);
-    F = (T(1) / T(2)) * w1 * (log_ratio + T(2) * t5 * b) * seg5 + w0 * t5;
+    F = w0 * t5 + (T(1) / T(2)) * w1 * seg5 * (log_ratio + T(2) * t5 * b);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t6 = sqrt(D);
@@ -2674,17 +2676,17 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - ab1 * exact_cross[2]);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot0 = (ab2 * exact_cross[1] - ab1 * exact_cross[2]) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
@@ -2697,7 +2699,7 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = ap_bp * s + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -2706,7 +2708,7 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(2, 4, 2, a, b, c, c - T(1), M_flat.data());
     const T t4 = w0 * M_flat[3] + M_flat[4] * w1;
     G_ap = t4;
-    G_E = M_flat[5] * w1 + M_flat[4] * w0 - b * seg5 * t4;
+    G_E = M_flat[5] * w1 + M_flat[4] * w0 - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t5 = -b;
@@ -2714,10 +2716,10 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t7 = T(1) / q1;
     const T t8 = T(1) / c;
     G_ap = w0 * t6 - (T(1) / T(2)) * (t7 - t8 - T(2) * b * t6) * seg5 * w1;
-    const T t9 = t7 * seg6;
+    const T t9 = w0 * t8;
     const T t10 = b * t8;
     const T t11 = t7 * a_minus_b;
-    G_E = -(T(1) / T(2)) * (t9 + (t10 + t11 - T(2) * D * t6) * seg5 * w1 - w0 * t8) * seg5;
+    G_E = (T(1) / T(2)) * (t9 - seg5 * (t10 + t11 - T(2) * D * t6) * w1 - t7 * seg6) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t12 = sqrt(D);
@@ -2730,8 +2732,8 @@ std::array<T, 3> segment_cauchy_i2_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t18 = t17 * a_minus_b;
     const T t19 = t16 + t18 + a * J2;
     G_ap = (T(1) / T(2)) * t14 * t19 * w0 - (T(1) / T(2)) * seg5 * w1 * (t17 - t15 - t14 * t19 * b);
-    const T t20 = t17 * seg6;
-    G_E = -(T(1) / T(2)) * seg5 * (t20 - w0 * t15 - J2 * w1);
+    const T t20 = w0 * t15;
+    G_E = (T(1) / T(2)) * seg5 * (t20 + J2 * w1 - t17 * seg6);
   }
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
   grad[1] = -(ab1 * G_E - G_ap * foot1) * g_factor;
@@ -2791,17 +2793,17 @@ T segment_cauchy_i2_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
   const T ab_bp = ab2 * bp2 + bp0 * ab0 + bp1 * ab1;
@@ -2834,10 +2836,10 @@ T segment_cauchy_i2_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t7 = J_downward<T>(4, a, D, t6, c, a_minus_b, q1);
     const T t8 = T(1) / q1;
     const T t9 = T(2) * t7 * D - a_minus_b * t8 - b * t5;
-    F = (T(1) / T(2)) * w1 * (log_ratio + T(2) * b * t9 * seg5) * seg5 + t9 * w0 * seg5;
-    G_ap = (T(1) / T(2)) * w1 * (t5 + T(2) * t7 * b - t8) * seg5 + t7 * w0;
-    const T t10 = seg6 * t8;
-    G_E = -(T(1) / T(2)) * (t10 - w0 * t5 - w1 * t9 * seg5) * seg5;
+    F = t9 * seg5 * w0 + (T(1) / T(2)) * w1 * (log_ratio + T(2) * b * t9 * seg5) * seg5;
+    G_ap = t7 * w0 + (T(1) / T(2)) * w1 * (t5 + T(2) * t7 * b - t8) * seg5;
+    const T t10 = w0 * t5;
+    G_E = (T(1) / T(2)) * seg5 * (w1 * t9 * seg5 + t10 - t8 * seg6);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
@@ -2849,9 +2851,9 @@ T segment_cauchy_i2_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t14 = T(1) / D;
     const T t15 = T(1) / q1;
     const T t16 = a_minus_b * t15 + a * J2 + b * t13;
-    G_ap = (T(1) / T(2)) * w1 * (t13 + t14 * b * t16 - t15) * seg5 + (T(1) / T(2)) * t14 * t16 * w0;
-    const T t17 = seg6 * t15;
-    G_E = -(T(1) / T(2)) * (t17 - w0 * t13 - w1 * J2) * seg5;
+    G_ap = (T(1) / T(2)) * t14 * t16 * w0 + (T(1) / T(2)) * w1 * (t13 + t14 * b * t16 - t15) * seg5;
+    const T t17 = w0 * t13;
+    G_E = (T(1) / T(2)) * seg5 * (t17 + w1 * J2 - t15 * seg6);
   }
   f = F * length;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
@@ -3080,14 +3082,14 @@ T segment_cauchy_i2_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = -b;
     const T t5 = J_downward<T>(2, a, D, t4, c, a_minus_b, q1);
     const T t6 = T(2) * b * t5 + log_ratio;
-    F = w0 * t5 + (T(1) / T(2)) * t6 * w1 * seg5 - (c * t5 - t6 * b * seg5 - T(1)) * seg5 * w2;
+    F = seg5 * (t6 * seg5 * b + T(1) - c * t5) * w2 + (T(1) / T(2)) * t6 * seg5 * w1 + w0 * t5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t7 = sqrt(D);
     const T J2 = atan2(t7, c_minus_b) / t7;
     const T log_ratio = log(q1 / c);
     const T t8 = log_ratio + T(2) * J2 * b;
-    F = (b * t8 * seg5 + T(1) - J2 * c) * seg5 * w2 + (T(1) / T(2)) * t8 * w1 * seg5 + w0 * J2;
+    F = (T(1) / T(2)) * seg5 * t8 * w1 + w0 * J2 - seg5 * (J2 * c - seg5 * b * t8 - T(1)) * w2;
   }
   f = F * length;
   return f;
@@ -3145,17 +3147,17 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - ab0 * exact_cross[2]);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - ab0 * exact_cross[2]) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
@@ -3168,7 +3170,7 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -3177,7 +3179,7 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(2, 4, 3, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[5] * w1 + w2 * M_flat[6] + w0 * M_flat[4];
     G_ap = t4;
-    G_E = w2 * M_flat[7] + M_flat[5] * w0 + M_flat[6] * w1 - t4 * b * seg5;
+    G_E = w2 * M_flat[7] + M_flat[5] * w0 + M_flat[6] * w1 - seg5 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t5 = T(1) / c;
@@ -3187,9 +3189,9 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t8 = T(1) / q1;
     const T t9 = T(2) * b * t7 + t5 - t8;
     const T t10 = T(2) * D * t7 - t5 * b - a_minus_b * t8;
-    G_ap = w0 * t7 + (T(1) / T(2)) * t9 * seg5 * w1 - w2 * (c * t7 - t9 * b * seg5 - seg5 * t10) * seg5;
+    G_ap = (T(1) / T(2)) * seg5 * t9 * w1 + w0 * t7 + (seg5 * t10 + seg5 * t9 * b - c * t7) * w2 * seg5;
     const T t11 = t5 * w0;
-    G_E = (T(1) / T(2)) * (t11 + w2 * (T(2) * b * seg5 * t10 + log_ratio) * seg5 + seg5 * w1 * t10 - seg6 * t8) * seg5;
+    G_E = (T(1) / T(2)) * (seg5 * w1 * t10 + t11 + w2 * seg5 * (log_ratio + T(2) * seg5 * b * t10) - t8 * seg6) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t12 = sqrt(D);
@@ -3201,9 +3203,9 @@ std::array<T, 3> segment_cauchy_i2_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t16 = t14 * b + a * J2 + a_minus_b * t15;
     const T t17 = T(1) / D;
     const T t18 = t15 - t14 - t16 * t17 * b;
-    G_ap = (T(1) / T(2)) * t16 * t17 * w0 - (T(1) / T(2)) * t18 * seg5 * w1 - (T(1) / T(2)) * w2 * (T(2) * t18 * b * seg5 + c * t16 * t17 - T(2) * J2) * seg5;
+    G_ap = (T(1) / T(2)) * t16 * t17 * w0 - (T(1) / T(2)) * seg5 * t18 * w1 - (T(1) / T(2)) * w2 * (T(2) * seg5 * t18 * b + c * t16 * t17 - T(2) * J2) * seg5;
     const T t19 = t14 * w0;
-    G_E = (T(1) / T(2)) * seg5 * (t19 + w1 * J2 + w2 * (T(2) * b * J2 + log_ratio) * seg5 - seg6 * t15);
+    G_E = (T(1) / T(2)) * seg5 * (t19 + w1 * J2 + w2 * seg5 * (T(2) * b * J2 + log_ratio) - t15 * seg6);
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
   grad[1] = -g_factor * (G_E * ab1 - foot1 * G_ap);
@@ -3264,17 +3266,17 @@ T segment_cauchy_i2_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - seg0 * ab_ap * ab1;
-    foot2 = ap2 - seg0 * ab_ap * ab2;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - ab0 * exact_cross[2]);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - exact_cross[0] * ab1);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot1 = -(exact_cross[0] * ab2 - ab0 * exact_cross[2]) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + bp2 * ab2 + bp1 * ab1;
@@ -3288,7 +3290,7 @@ T segment_cauchy_i2_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -3309,30 +3311,28 @@ T segment_cauchy_i2_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t9 = -b;
     const T t10 = J_downward<T>(4, a, D, t9, c, a_minus_b, q1);
     const T t11 = t6 + t8 - T(2) * t10 * D;
-    const T t12 = T(2) * b * t11 * seg5 - log_ratio;
-    F = -w2 * (b * t12 * seg5 - c * t11 * seg5 - T(1)) * seg5 - (T(1) / T(2)) * t12 * w1 * seg5 - w0 * t11 * seg5;
+    const T t12 = T(2) * b * seg5 * t11 - log_ratio;
+    F = -(T(1) / T(2)) * t12 * w1 * seg5 - seg5 * (t12 * b * seg5 - c * seg5 * t11 - T(1)) * w2 - w0 * seg5 * t11;
     const T t13 = T(2) * t10 * b + t5 - t7;
-    G_ap = w0 * t10 + (T(1) / T(2)) * t13 * w1 * seg5 - (t11 * seg5 + t10 * c - b * t13 * seg5) * w2 * seg5;
-    const T t14 = seg6 * t7;
-    G_E = -(T(1) / T(2)) * (t12 * w2 * seg5 + t14 + w1 * t11 * seg5 - w0 * t5) * seg5;
+    G_ap = w0 * t10 + (T(1) / T(2)) * t13 * w1 * seg5 + seg5 * w2 * (b * t13 * seg5 - seg5 * t11 - t10 * c);
+    G_E = -(T(1) / T(2)) * seg5 * (w1 * seg5 * t11 + t12 * seg5 * w2 + t7 * seg6 - w0 * t5);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t15 = sqrt(D);
-    const T t16 = T(1) / t15;
-    const T J2 = atan2(t15, c_minus_b) * t16;
-    const T t17 = T(1) / c;
-    const T log_ratio = log(q1 * t17);
-    const T t18 = log_ratio + T(2) * b * J2;
-    F = w0 * J2 + (T(1) / T(2)) * w1 * t18 * seg5 - w2 * seg5 * (c * J2 - b * t18 * seg5 - T(1));
-    const T t19 = b * t17;
-    const T t20 = T(1) / q1;
-    const T t21 = t20 * a_minus_b;
-    const T t22 = J2 * a + t19 + t21;
-    const T t23 = T(1) / D;
-    const T t24 = t17 + b * t22 * t23 - t20;
-    G_ap = (T(1) / T(2)) * w0 * t22 * t23 + (T(1) / T(2)) * w2 * (T(2) * b * t24 * seg5 + T(2) * J2 - c * t22 * t23) * seg5 + (T(1) / T(2)) * w1 * t24 * seg5;
-    const T t25 = seg6 * t20;
-    G_E = -(T(1) / T(2)) * (t25 - w0 * t17 - t18 * w2 * seg5 - w1 * J2) * seg5;
+    const T t14 = sqrt(D);
+    const T t15 = T(1) / t14;
+    const T J2 = atan2(t14, c_minus_b) * t15;
+    const T t16 = T(1) / c;
+    const T log_ratio = log(q1 * t16);
+    const T t17 = log_ratio + T(2) * b * J2;
+    F = w0 * J2 + (T(1) / T(2)) * w1 * t17 * seg5 + seg5 * w2 * (b * t17 * seg5 + T(1) - c * J2);
+    const T t18 = b * t16;
+    const T t19 = T(1) / q1;
+    const T t20 = t19 * a_minus_b;
+    const T t21 = J2 * a + t18 + t20;
+    const T t22 = T(1) / D;
+    const T t23 = t16 + b * t21 * t22 - t19;
+    G_ap = (T(1) / T(2)) * w0 * t21 * t22 + (T(1) / T(2)) * w1 * seg5 * t23 - (T(1) / T(2)) * (c * t21 * t22 - T(2) * J2 - T(2) * b * seg5 * t23) * seg5 * w2;
+    G_E = (T(1) / T(2)) * (w0 * t16 + w1 * J2 + t17 * seg5 * w2 - t19 * seg6) * seg5;
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -3551,7 +3551,7 @@ T segment_cauchy_i2_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -3565,18 +3565,18 @@ T segment_cauchy_i2_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = -b;
     const T t5 = J_downward<T>(2, a, D, t4, c, a_minus_b, q1);
     const T t6 = log_ratio + T(2) * t5 * b;
-    const T t7 = t6 * seg5 * b + T(1) - t5 * c;
-    const T t8 = c - q1 - T(2) * b;
-    F = t5 * w0 + (T(1) / T(2)) * (T(4) * seg5 * t7 * b - c * t6 * seg5 - t8 * seg5) * w3 * seg5 + (T(1) / T(2)) * t6 * seg5 * w1 + w2 * seg5 * t7;
+    const T t7 = seg5 * t6 * b + T(1) - t5 * c;
+    const T t8 = (c - q1 - T(2) * b) * seg5;
+    F = t5 * w0 + (T(1) / T(2)) * seg5 * t6 * w1 + w2 * seg5 * t7 - (T(1) / T(2)) * seg5 * w3 * (c * seg5 * t6 + t8 - T(4) * seg5 * t7 * b);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t9 = sqrt(D);
     const T J2 = atan2(t9, c_minus_b) / t9;
     const T log_ratio = log(q1 / c);
     const T t10 = log_ratio + T(2) * J2 * b;
-    const T t11 = c - q1 - T(2) * b;
-    const T t12 = c * J2 - t10 * seg5 * b - T(1);
-    F = (T(1) / T(2)) * t10 * seg5 * w1 + w0 * J2 - (T(1) / T(2)) * (t11 * seg5 + T(4) * t12 * seg5 * b + c * t10 * seg5) * w3 * seg5 - w2 * t12 * seg5;
+    const T t11 = c * J2 - seg5 * t10 * b - T(1);
+    const T t12 = (c - q1 - T(2) * b) * seg5;
+    F = (T(1) / T(2)) * seg5 * t10 * w1 + w0 * J2 - t11 * w2 * seg5 - (T(1) / T(2)) * seg5 * w3 * (T(4) * t11 * seg5 * b + c * seg5 * t10 + t12);
   }
   f = F * length;
   return f;
@@ -3635,17 +3635,17 @@ std::array<T, 3> segment_cauchy_i2_w3_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
+    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
@@ -3667,22 +3667,22 @@ std::array<T, 3> segment_cauchy_i2_w3_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(2, 4, 4, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[8] * w3 + M_flat[5] * w0 + M_flat[7] * w2 + M_flat[6] * w1;
     G_ap = t4;
-    G_E = M_flat[6] * w0 + M_flat[9] * w3 + w2 * M_flat[8] + w1 * M_flat[7] - b * seg5 * t4;
+    G_E = M_flat[6] * w0 + M_flat[9] * w3 + w2 * M_flat[8] + w1 * M_flat[7] - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t5 = T(1) / c;
     const T log_ratio = log(q1 * t5);
-    const T t6 = -b;
-    const T t7 = J_downward<T>(4, a, D, t6, c, a_minus_b, q1);
-    const T t8 = b * t5;
-    const T t9 = T(1) / q1;
-    const T t10 = t9 * a_minus_b;
-    const T t11 = t8 + t10 - T(2) * D * t7;
-    const T t12 = t9 - T(2) * t7 * b - t5;
-    const T t13 = t11 * seg5 + t12 * b * seg5 + t7 * c;
-    const T t14 = T(2) * t11 * b * seg5 - log_ratio;
-    G_ap = t7 * w0 - w2 * seg5 * t13 - (T(1) / T(2)) * (T(4) * b * seg5 * t13 + t14 * seg5 - t12 * c * seg5) * seg5 * w3 - (T(1) / T(2)) * t12 * w1 * seg5;
-    G_E = -(T(1) / T(2)) * (seg6 * t9 + w2 * t14 * seg5 + t11 * w1 * seg5 - t5 * w0 - T(3) * (t11 * c * seg5 + T(1) - b * t14 * seg5) * seg5 * w3) * seg5;
+    const T t6 = T(1) / q1;
+    const T t7 = -b;
+    const T t8 = J_downward<T>(4, a, D, t7, c, a_minus_b, q1);
+    const T t9 = t6 - T(2) * t8 * b - t5;
+    const T t10 = b * t5;
+    const T t11 = t6 * a_minus_b;
+    const T t12 = t10 + t11 - T(2) * D * t8;
+    const T t13 = log_ratio - T(2) * t12 * seg5 * b;
+    const T t14 = t8 * c + t12 * seg5 + t9 * seg5 * b;
+    G_ap = (T(1) / T(2)) * (t9 * seg5 * c + t13 * seg5 - T(4) * seg5 * b * t14) * seg5 * w3 + t8 * w0 - (T(1) / T(2)) * t9 * w1 * seg5 - seg5 * w2 * t14;
+    G_E = -(T(1) / T(2)) * seg5 * (t12 * w1 * seg5 + t6 * seg6 - t5 * w0 - t13 * seg5 * w2 - T(3) * (t13 * seg5 * b + t12 * seg5 * c + T(1)) * seg5 * w3);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(D);
@@ -3690,16 +3690,16 @@ std::array<T, 3> segment_cauchy_i2_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T J2 = t16 * atan2(t15, c_minus_b);
     const T t17 = T(1) / c;
     const T log_ratio = log(q1 * t17);
-    const T t18 = T(1) / D;
-    const T t19 = b * t17;
-    const T t20 = T(1) / q1;
-    const T t21 = t20 * a_minus_b;
-    const T t22 = t19 + t21 + a * J2;
-    const T t23 = t20 - t18 * t22 * b - t17;
-    const T t24 = t18 * t22 * c + T(2) * b * t23 * seg5 - T(2) * J2;
-    const T t25 = T(2) * b * J2 + log_ratio;
-    G_ap = (T(1) / T(2)) * t18 * t22 * w0 - (T(1) / T(2)) * t24 * w2 * seg5 - (T(1) / T(2)) * w1 * t23 * seg5 - (T(1) / T(2)) * (T(2) * t24 * b * seg5 - t25 * seg5 - t23 * c * seg5) * seg5 * w3;
-    G_E = (T(1) / T(2)) * seg5 * (t25 * w2 * seg5 + T(3) * (t25 * b * seg5 + T(1) - J2 * c) * seg5 * w3 + t17 * w0 + w1 * J2 - seg6 * t20);
+    const T t18 = T(2) * b * J2 + log_ratio;
+    const T t19 = T(1) / q1;
+    const T t20 = T(1) / D;
+    const T t21 = b * t17;
+    const T t22 = t19 * a_minus_b;
+    const T t23 = t21 + t22 + a * J2;
+    const T t24 = t19 - t20 * t23 * b - t17;
+    const T t25 = t20 * t23 * c + T(2) * seg5 * b * t24 - T(2) * J2;
+    G_ap = (T(1) / T(2)) * seg5 * (t18 * seg5 + seg5 * t24 * c - T(2) * seg5 * b * t25) * w3 + (T(1) / T(2)) * t20 * t23 * w0 - (T(1) / T(2)) * seg5 * w2 * t25 - (T(1) / T(2)) * w1 * seg5 * t24;
+    G_E = (T(1) / T(2)) * seg5 * (t18 * seg5 * w2 + t17 * w0 + w1 * J2 - T(3) * (J2 * c - t18 * seg5 * b - T(1)) * seg5 * w3 - t19 * seg6);
   }
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
   grad[1] = -(ab1 * G_E - G_ap * foot1) * g_factor;
@@ -3785,7 +3785,7 @@ T segment_cauchy_i2_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -3795,41 +3795,43 @@ T segment_cauchy_i2_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = w3 * M_flat[3] + w0 * M_flat[0] + M_flat[1] * w1 + M_flat[2] * w2;
     const T t4 = w0 * M_flat[5] + w3 * M_flat[8] + M_flat[7] * w2 + w1 * M_flat[6];
     G_ap = t4;
-    G_E = M_flat[8] * w2 + w3 * M_flat[9] + M_flat[7] * w1 + w0 * M_flat[6] - b * t4 * seg5;
+    G_E = M_flat[8] * w2 + w3 * M_flat[9] + M_flat[7] * w1 + w0 * M_flat[6] - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t5 = T(1) / c;
     const T log_ratio = log(q1 * t5);
-    const T t6 = (q1 + T(2) * b - c) * seg5;
-    const T t7 = -b;
-    const T t8 = J_downward<T>(4, a, D, t7, c, a_minus_b, q1);
-    const T t9 = T(1) / q1;
-    const T t10 = T(2) * D * t8 - t5 * b - t9 * a_minus_b;
-    const T t11 = T(2) * t10 * b * seg5 + log_ratio;
-    const T t12 = t10 * c * seg5 - t11 * b * seg5 - T(1);
-    F = (T(1) / T(2)) * (t6 - T(4) * t12 * b * seg5 - c * t11 * seg5) * w3 * seg5 + t10 * w0 * seg5 + (T(1) / T(2)) * t11 * w1 * seg5 - t12 * w2 * seg5;
-    const T t13 = T(2) * t8 * b + t5 - t9;
-    const T t14 = b * t13 * seg5 + t10 * seg5 - c * t8;
-    G_ap = t14 * w2 * seg5 + w0 * t8 + (T(1) / T(2)) * w1 * t13 * seg5 - (T(1) / T(2)) * w3 * (c * t13 * seg5 - t11 * seg5 - T(4) * t14 * b * seg5) * seg5;
-    G_E = -(T(1) / T(2)) * (T(3) * w3 * t12 * seg5 + t9 * seg6 - t11 * w2 * seg5 - t5 * w0 - t10 * w1 * seg5) * seg5;
+    const T t6 = -b;
+    const T t7 = J_downward<T>(4, a, D, t6, c, a_minus_b, q1);
+    const T t8 = T(1) / q1;
+    const T t9 = T(2) * D * t7 - t5 * b - t8 * a_minus_b;
+    const T t10 = T(2) * t9 * seg5 * b + log_ratio;
+    const T t11 = t10 * seg5 * b + T(1) - t9 * c * seg5;
+    const T t12 = seg5 * (q1 + T(2) * b - c);
+    F = (T(1) / T(2)) * t10 * seg5 * w1 + seg5 * t11 * w2 + (T(1) / T(2)) * w3 * (t12 + T(4) * seg5 * b * t11 - c * t10 * seg5) * seg5 + t9 * w0 * seg5;
+    const T t13 = T(2) * t7 * b + t5 - t8;
+    const T t14 = seg5 * b * t13 + t9 * seg5 - c * t7;
+    G_ap = (T(1) / T(2)) * w3 * (t10 * seg5 + T(4) * t14 * seg5 * b - c * seg5 * t13) * seg5 + t14 * seg5 * w2 + (T(1) / T(2)) * seg5 * w1 * t13 + w0 * t7;
+    const T t15 = t5 * w0;
+    G_E = (T(1) / T(2)) * seg5 * (t9 * seg5 * w1 + T(3) * w3 * seg5 * t11 + t15 + t10 * seg5 * w2 - t8 * seg6);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t15 = sqrt(D);
-    const T t16 = T(1) / t15;
-    const T J2 = atan2(t15, c_minus_b) * t16;
-    const T t17 = T(1) / c;
-    const T log_ratio = log(q1 * t17);
-    const T t18 = T(2) * J2 * b + log_ratio;
-    const T t19 = (q1 + T(2) * b - c) * seg5;
-    const T t20 = c * J2 - t18 * b * seg5 - T(1);
-    F = (T(1) / T(2)) * t18 * w1 * seg5 + J2 * w0 + (T(1) / T(2)) * w3 * seg5 * (t19 - T(4) * t20 * b * seg5 - c * t18 * seg5) - t20 * w2 * seg5;
-    const T t21 = T(1) / q1;
-    const T t22 = t17 * b + J2 * a + t21 * a_minus_b;
-    const T t23 = T(1) / D;
-    const T t24 = t22 * t23 * b + t17 - t21;
-    const T t25 = T(2) * J2 + T(2) * t24 * b * seg5 - c * t22 * t23;
-    G_ap = (T(1) / T(2)) * t22 * w0 * t23 + (T(1) / T(2)) * t24 * w1 * seg5 + (T(1) / T(2)) * t25 * w2 * seg5 - (T(1) / T(2)) * w3 * (c * t24 * seg5 - T(2) * b * t25 * seg5 - t18 * seg5) * seg5;
-    G_E = (T(1) / T(2)) * (J2 * w1 + t17 * w0 + t18 * w2 * seg5 - T(3) * w3 * t20 * seg5 - t21 * seg6) * seg5;
+    const T t16 = sqrt(D);
+    const T t17 = T(1) / t16;
+    const T J2 = atan2(t16, c_minus_b) * t17;
+    const T t18 = T(1) / c;
+    const T log_ratio = log(q1 * t18);
+    const T t19 = T(2) * J2 * b + log_ratio;
+    const T t20 = seg5 * (q1 + T(2) * b - c);
+    const T t21 = c * J2 - seg5 * t19 * b - T(1);
+    F = (T(1) / T(2)) * seg5 * t19 * w1 + J2 * w0 + (T(1) / T(2)) * w3 * seg5 * (t20 - c * seg5 * t19 - T(4) * t21 * seg5 * b) - t21 * seg5 * w2;
+    const T t22 = T(1) / q1;
+    const T t23 = t18 * b + J2 * a + t22 * a_minus_b;
+    const T t24 = T(1) / D;
+    const T t25 = t23 * t24 * b + t18 - t22;
+    const T t26 = T(2) * J2 + T(2) * t25 * seg5 * b - c * t23 * t24;
+    G_ap = (T(1) / T(2)) * t26 * seg5 * w2 + (T(1) / T(2)) * t23 * w0 * t24 + (T(1) / T(2)) * (seg5 * t19 + T(2) * t26 * seg5 * b - c * t25 * seg5) * w3 * seg5 + (T(1) / T(2)) * t25 * seg5 * w1;
+    const T t27 = t18 * w0;
+    G_E = (T(1) / T(2)) * (J2 * w1 + seg5 * t19 * w2 + t27 - t22 * seg6 - T(3) * t21 * w3 * seg5) * seg5;
   }
   f = length * F;
   grad[0] = -g_factor * (G_E * ab0 - G_ap * foot0);
@@ -4140,7 +4142,7 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -4148,7 +4150,7 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(3, 5, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - b * M_flat[2] * w0 * seg7;
+    G_E = M_flat[3] * w0 - b * M_flat[2] * seg7 * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -4160,7 +4162,7 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const T* pre, const SegmentPoint<T>& 
     const T t7 = T(1) / r1;
     const T t8 = t7 * t7;
     const T t9 = t8 * t7;
-    const T t10 = (T(1) / T(3)) * (t6 * w0 - t9 * w0) * seg7;
+    const T t10 = (T(1) / T(3)) * seg7 * (t6 * w0 - t9 * w0);
     G_E = t10;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -4172,7 +4174,7 @@ std::array<T, 3> segment_cauchy_i3_w0_grad(const T* pre, const SegmentPoint<T>& 
     const T t15 = t14 * t12;
     const T t16 = t11 * t11;
     const T t17 = t16 * t11;
-    const T t18 = (T(1) / T(3)) * (t15 * w0 - t17 * w0) * seg7;
+    const T t18 = (T(1) / T(3)) * seg7 * (t15 * w0 - t17 * w0);
     G_E = t18;
   }
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
@@ -4240,8 +4242,8 @@ T segment_cauchy_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
-    foot1 = (ab0 * exact_cross[2] - ab2 * exact_cross[0]) * seg0;
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot1 = seg0 * (ab0 * exact_cross[2] - ab2 * exact_cross[0]);
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
@@ -4255,7 +4257,7 @@ T segment_cauchy_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -4264,7 +4266,7 @@ T segment_cauchy_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_moments_far_field<T>(3, 5, 1, a, b, c, c - T(1), M_flat.data());
     F = w0 * M_flat[0];
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - M_flat[2] * w0 * seg7 * b;
+    G_E = w0 * M_flat[3] - seg7 * M_flat[2] * w0 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -4277,7 +4279,7 @@ T segment_cauchy_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t7 = T(1) / r1;
     const T t8 = t7 * t7;
     const T t9 = t8 * t7;
-    const T t10 = (T(1) / T(3)) * (w0 * t6 - w0 * t9) * seg7;
+    const T t10 = (T(1) / T(3)) * seg7 * (w0 * t6 - w0 * t9);
     G_E = t10;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -4291,7 +4293,7 @@ T segment_cauchy_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t16 = t15 * t13;
     const T t17 = t12 * t12;
     const T t18 = t17 * t12;
-    const T t19 = (T(1) / T(3)) * (w0 * t16 - w0 * t18) * seg7;
+    const T t19 = (T(1) / T(3)) * seg7 * (w0 * t16 - w0 * t18);
     G_E = t19;
   }
   f = F * length;
@@ -4506,7 +4508,7 @@ T segment_cauchy_i3_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -4583,16 +4585,16 @@ std::array<T, 3> segment_cauchy_i3_w1_grad(const T* pre, const SegmentPoint<T>& 
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot1 = ap1 - ab_ap * ab1 * seg0;
     foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
     foot1 = -(exact_cross[0] * ab2 - ab0 * exact_cross[2]) * seg0;
-    foot2 = -seg0 * (ab0 * exact_cross[1] - exact_cross[0] * ab1);
+    foot2 = -(ab0 * exact_cross[1] - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + ab0 * bp0 + bp2 * ab2;
@@ -4605,7 +4607,7 @@ std::array<T, 3> segment_cauchy_i3_w1_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -4625,13 +4627,13 @@ std::array<T, 3> segment_cauchy_i3_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
     G_ap = w0 * t6 + (T(1) / T(3)) * seg7 * w1 * (t9 + T(3) * b * t6 - t11 * t10);
-    const T t12 = t10 * t10;
-    const T t13 = t12 * t10;
+    const T t12 = t7 * t7;
+    const T t13 = t12 * t7;
     const T t14 = b * t7 * t8;
     const T t15 = t11 * t10 * a_minus_b;
-    const T t16 = t7 * t7;
-    const T t17 = t16 * t7;
-    G_E = -(T(1) / T(6)) * (T(2) * t13 * seg8 + (t14 + t15 - T(3) * t6 * D) * seg7 * w1 - T(2) * w0 * t17) * seg7;
+    const T t16 = t10 * t10;
+    const T t17 = t16 * t10;
+    G_E = (T(1) / T(6)) * seg7 * (T(2) * w0 * t13 - seg7 * (t14 + t15 - T(3) * t6 * D) * w1 - T(2) * seg8 * t17);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t18 = T(1) / r0;
@@ -4645,11 +4647,11 @@ std::array<T, 3> segment_cauchy_i3_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t26 = b * t18 + t22 * a_minus_b;
     const T t27 = t21 + t24 + T(2) * t25 * a * t26;
     G_ap = (T(1) / T(3)) * seg7 * (t20 + t27 * b * t25 - t23 * t22) * w1 + (T(1) / T(3)) * t27 * w0 * t25;
-    const T t28 = t22 * t22;
-    const T t29 = t28 * t22;
-    const T t30 = t18 * t18;
-    const T t31 = t30 * t18;
-    G_E = -(T(1) / T(3)) * seg7 * (t29 * seg8 - w0 * t31 - w1 * t25 * t26);
+    const T t28 = t18 * t18;
+    const T t29 = t28 * t18;
+    const T t30 = t22 * t22;
+    const T t31 = t30 * t22;
+    G_E = (T(1) / T(3)) * seg7 * (w0 * t29 + w1 * t25 * t26 - seg8 * t31);
   }
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -4709,16 +4711,16 @@ T segment_cauchy_i3_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -4733,7 +4735,7 @@ T segment_cauchy_i3_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -4743,45 +4745,45 @@ T segment_cauchy_i3_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = M_flat[0] * w0 + w1 * M_flat[1];
     const T t4 = M_flat[3] * w0 + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w1 * M_flat[5] + M_flat[4] * w0 - b * t4 * seg7;
+    G_E = w1 * M_flat[5] + M_flat[4] * w0 - seg7 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
-    const T t5 = T(1) / r0;
-    const T t6 = T(1) / r1;
-    const T t7 = t6 * t6;
-    const T t8 = t6 * a_minus_b * t7;
-    const T t9 = t5 * t5;
-    const T t10 = b * t9 * t5;
+    const T t5 = T(1) / r1;
+    const T t6 = t5 * t5;
+    const T t7 = t5 * a_minus_b * t6;
+    const T t8 = T(1) / r0;
+    const T t9 = t8 * t8;
+    const T t10 = b * t9 * t8;
     const T t11 = -b;
     const T t12 = J_downward<T>(5, a, D, t11, c, a_minus_b, q1);
-    const T t13 = t8 + t10 - T(3) * D * t12;
-    F = (T(1) / T(2)) * w1 * (T(2) * t5 - T(2) * t6 - t13 * b * seg7) * seg7 - (T(1) / T(2)) * t13 * seg7 * w0;
-    const T t14 = t9 * t5;
-    G_ap = t12 * w0 + (T(1) / T(3)) * w1 * (t14 + T(3) * t12 * b - t6 * t7) * seg7;
-    const T t15 = t6 * t6;
-    const T t16 = t15 * t6;
-    const T t17 = t5 * t5;
-    const T t18 = t17 * t5;
-    G_E = -(T(1) / T(6)) * (T(2) * t16 * seg8 + w1 * t13 * seg7 - T(2) * w0 * t18) * seg7;
+    const T t13 = t7 + t10 - T(3) * D * t12;
+    F = -(T(1) / T(2)) * w1 * seg7 * (t13 * seg7 * b + T(2) * t5 - T(2) * t8) - (T(1) / T(2)) * t13 * seg7 * w0;
+    const T t14 = t9 * t8;
+    G_ap = t12 * w0 + (T(1) / T(3)) * w1 * seg7 * (t14 + T(3) * t12 * b - t5 * t6);
+    const T t15 = t5 * t5;
+    const T t16 = t15 * t5;
+    const T t17 = t8 * t8;
+    const T t18 = t17 * t8;
+    G_E = -(T(1) / T(6)) * seg7 * (T(2) * t16 * seg8 + w1 * t13 * seg7 - T(2) * w0 * t18);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / D;
     const T t20 = T(1) / r0;
     const T t21 = T(1) / r1;
     const T t22 = b * t20 + t21 * a_minus_b;
-    F = t19 * t22 * w0 + w1 * seg7 * (t19 * t22 * b + t20 - t21);
+    F = w1 * seg7 * (t19 * t22 * b + t20 - t21) + t19 * t22 * w0;
     const T t23 = t21 * t21;
     const T t24 = t21 * a_minus_b * t23;
     const T t25 = t20 * t20;
     const T t26 = b * t25 * t20;
     const T t27 = t24 + t26 + T(2) * t19 * a * t22;
     const T t28 = t25 * t20;
-    G_ap = (T(1) / T(3)) * t19 * w0 * t27 + (T(1) / T(3)) * w1 * (t28 + t19 * b * t27 - t21 * t23) * seg7;
-    const T t29 = t20 * t20;
-    const T t30 = t29 * t20;
-    const T t31 = t21 * t21;
-    const T t32 = t31 * t21;
-    G_E = (T(1) / T(3)) * seg7 * (w1 * t19 * t22 + w0 * t30 - t32 * seg8);
+    G_ap = (T(1) / T(3)) * t19 * w0 * t27 + (T(1) / T(3)) * w1 * seg7 * (t28 + t19 * b * t27 - t21 * t23);
+    const T t29 = t21 * t21;
+    const T t30 = t29 * t21;
+    const T t31 = t20 * t20;
+    const T t32 = t31 * t20;
+    G_E = -(T(1) / T(3)) * seg7 * (t30 * seg8 - w1 * t19 * t22 - w0 * t32);
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
@@ -5009,15 +5011,15 @@ T segment_cauchy_i3_w2_f(const T* pre, const SegmentPoint<T>& point) {
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / D;
     const T t3 = b * r1;
-    X = seg1 * t2 * (t3 + a_minus_b * r0);
+    X = t2 * (t3 + a_minus_b * r0) * seg1;
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = b * r1;
-    X = -seg1 * (a_minus_b - b) / (t4 - a_minus_b * r0);
+    X = -(a_minus_b - b) * seg1 / (t4 - a_minus_b * r0);
   }
   const T J1 = seg2 * asinh(X);
   T F;
-  const T t5 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t5 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t5 >= T(0)) {
@@ -5032,7 +5034,7 @@ T segment_cauchy_i3_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t10 = T(1) / r1;
     const T t11 = T(1) / r0;
     const T t12 = t10 - b * t9 - t11;
-    F = w0 * t9 - w2 * (T(2) * b * t12 * seg7 + c * t9 - J1) * seg7 - t12 * w1 * seg7;
+    F = w0 * t9 - seg7 * t12 * w1 - w2 * (T(2) * b * seg7 * t12 + c * t9 - J1) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = T(1) / D;
@@ -5040,7 +5042,7 @@ T segment_cauchy_i3_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = T(1) / r0;
     const T t16 = a_minus_b * t14 + t15 * b;
     const T t17 = t14 - t13 * t16 * b - t15;
-    F = t13 * w0 * t16 - t17 * w1 * seg7 - w2 * (T(2) * b * t17 * seg7 + c * t13 * t16 - J1) * seg7;
+    F = t13 * w0 * t16 - seg7 * t17 * w1 - (T(2) * b * seg7 * t17 + c * t13 * t16 - J1) * w2 * seg7;
   }
   f = F * length;
   return f;
@@ -5106,7 +5108,7 @@ std::array<T, 3> segment_cauchy_i3_w2_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
+    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
@@ -5121,7 +5123,7 @@ std::array<T, 3> segment_cauchy_i3_w2_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -5130,7 +5132,7 @@ std::array<T, 3> segment_cauchy_i3_w2_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(3, 5, 3, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[5] * w1 + w2 * M_flat[6] + M_flat[4] * w0;
     G_ap = t4;
-    G_E = w0 * M_flat[5] + w2 * M_flat[7] + M_flat[6] * w1 - t4 * seg7 * b;
+    G_E = w0 * M_flat[5] + w2 * M_flat[7] + M_flat[6] * w1 - seg7 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
     const T t5 = -b;
@@ -5144,12 +5146,12 @@ std::array<T, 3> segment_cauchy_i3_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t13 = t10 * a_minus_b * t11;
     const T t14 = t8 * b * t7;
     const T t15 = t13 + t14 - T(3) * t6 * D;
-    G_ap = (T(1) / T(3)) * t12 * seg7 * w1 + t6 * w0 - (T(1) / T(6)) * w2 * (T(6) * c * t6 + T(3) * t15 * seg7 - T(4) * t12 * seg7 * b) * seg7;
-    const T t16 = t7 * t7;
-    const T t17 = t16 * t7;
-    const T t18 = t10 * t10;
-    const T t19 = t18 * t10;
-    G_E = (T(1) / T(6)) * seg7 * (T(2) * (T(2) * t7 - T(2) * t10 - t15 * seg7 * b) * w2 * seg7 + T(2) * w0 * t17 - t15 * seg7 * w1 - T(2) * t19 * seg8);
+    G_ap = (T(1) / T(3)) * t12 * seg7 * w1 + t6 * w0 - (T(1) / T(6)) * w2 * seg7 * (T(6) * c * t6 + T(3) * t15 * seg7 - T(4) * t12 * seg7 * b);
+    const T t16 = t10 * t10;
+    const T t17 = t16 * t10;
+    const T t18 = t7 * t7;
+    const T t19 = t18 * t7;
+    G_E = -(T(1) / T(6)) * (T(2) * t17 * seg8 + t15 * seg7 * w1 - T(2) * (T(2) * t7 - T(2) * t10 - t15 * seg7 * b) * w2 * seg7 - T(2) * w0 * t19) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t20 = T(1) / D;
@@ -5163,12 +5165,12 @@ std::array<T, 3> segment_cauchy_i3_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t28 = t23 + T(2) * a * t20 * t25 + t27;
     const T t29 = t26 * t24;
     const T t30 = t20 * b * t28 + t29 - t21 * t22;
-    G_ap = (T(1) / T(3)) * t20 * w0 * t28 + (T(1) / T(3)) * w2 * (T(2) * seg7 * b * t30 + T(3) * t20 * t25 - c * t20 * t28) * seg7 + (T(1) / T(3)) * seg7 * t30 * w1;
-    const T t31 = t24 * t24;
-    const T t32 = t31 * t24;
-    const T t33 = t21 * t21;
-    const T t34 = t33 * t21;
-    G_E = (T(1) / T(3)) * seg7 * (T(2) * w2 * seg7 * (t24 + t20 * t25 * b - t21) + t20 * t25 * w1 + w0 * t32 - t34 * seg8);
+    G_ap = (T(1) / T(3)) * t20 * w0 * t28 + (T(1) / T(3)) * seg7 * t30 * w1 - (T(1) / T(3)) * w2 * seg7 * (c * t20 * t28 - T(2) * seg7 * b * t30 - T(3) * t20 * t25);
+    const T t31 = t21 * t21;
+    const T t32 = t31 * t21;
+    const T t33 = t24 * t24;
+    const T t34 = t33 * t24;
+    G_E = -(T(1) / T(3)) * (t32 * seg8 - T(2) * w2 * seg7 * (t24 + t20 * t25 * b - t21) - t20 * t25 * w1 - w0 * t34) * seg7;
   }
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
   grad[1] = -(ab1 * G_E - foot1 * G_ap) * g_factor;
@@ -5231,16 +5233,16 @@ T segment_cauchy_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
@@ -5258,7 +5260,7 @@ T segment_cauchy_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / D;
     const T t3 = r1 * b;
-    X = t2 * seg1 * (t3 + r0 * a_minus_b);
+    X = seg1 * t2 * (t3 + r0 * a_minus_b);
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * b;
@@ -5268,7 +5270,7 @@ T segment_cauchy_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t5 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t5 >= T(0)) {
@@ -5291,15 +5293,15 @@ T segment_cauchy_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t16 = J_downward<T>(5, a, D, t15, c, a_minus_b, q1);
     const T t17 = t11 + t14 - T(3) * D * t16;
     const T t18 = T(2) * t9 - seg7 * t17 * b - T(2) * t12;
-    F = (T(1) / T(2)) * (T(2) * seg7 * t18 * b + c * seg7 * t17 + T(2) * J1) * w2 * seg7 + (T(1) / T(2)) * w1 * seg7 * t18 - (T(1) / T(2)) * seg7 * w0 * t17;
+    F = (T(1) / T(2)) * seg7 * w1 * t18 + (T(1) / T(2)) * seg7 * w2 * (T(2) * seg7 * t18 * b + T(2) * J1 + seg7 * c * t17) - (T(1) / T(2)) * seg7 * w0 * t17;
     const T t19 = t12 * t13;
     const T t20 = t19 - T(3) * t16 * b - t10 * t9;
-    G_ap = t16 * w0 - (T(1) / T(6)) * (T(6) * c * t16 + T(4) * t20 * seg7 * b + T(3) * seg7 * t17) * w2 * seg7 - (T(1) / T(3)) * w1 * t20 * seg7;
+    G_ap = t16 * w0 - (T(1) / T(6)) * seg7 * w2 * (T(6) * c * t16 + T(3) * seg7 * t17 + T(4) * seg7 * t20 * b) - (T(1) / T(3)) * seg7 * w1 * t20;
     const T t21 = t9 * t9;
     const T t22 = t21 * t9;
     const T t23 = t12 * t12;
     const T t24 = t23 * t12;
-    G_E = (T(1) / T(6)) * (T(2) * w2 * seg7 * t18 + T(2) * t22 * w0 - w1 * seg7 * t17 - T(2) * t24 * seg8) * seg7;
+    G_E = (T(1) / T(6)) * seg7 * (T(2) * t22 * w0 + T(2) * seg7 * t18 * w2 - seg7 * w1 * t17 - T(2) * seg8 * t24);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t25 = T(1) / r0;
@@ -5307,7 +5309,7 @@ T segment_cauchy_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t27 = t25 * b + a_minus_b * t26;
     const T t28 = T(1) / D;
     const T t29 = t25 + t27 * t28 * b - t26;
-    F = t27 * t28 * w0 + w1 * seg7 * t29 + (J1 + T(2) * seg7 * t29 * b - c * t27 * t28) * w2 * seg7;
+    F = seg7 * w1 * t29 + t27 * t28 * w0 + seg7 * (J1 + T(2) * seg7 * t29 * b - c * t27 * t28) * w2;
     const T t30 = t25 * t25;
     const T t31 = t30 * t25 * b;
     const T t32 = t26 * t26;
@@ -5315,12 +5317,12 @@ T segment_cauchy_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t34 = t31 + t33 + T(2) * t27 * t28 * a;
     const T t35 = t26 * t32;
     const T t36 = t35 - t30 * t25 - t28 * b * t34;
-    G_ap = (T(1) / T(3)) * t28 * w0 * t34 - (T(1) / T(3)) * w2 * seg7 * (c * t28 * t34 + T(2) * t36 * seg7 * b - T(3) * t27 * t28) - (T(1) / T(3)) * t36 * w1 * seg7;
+    G_ap = (T(1) / T(3)) * t28 * w0 * t34 - (T(1) / T(3)) * t36 * seg7 * w1 - (T(1) / T(3)) * seg7 * w2 * (c * t28 * t34 + T(2) * t36 * seg7 * b - T(3) * t27 * t28);
     const T t37 = t25 * t25;
     const T t38 = t37 * t25;
     const T t39 = t26 * t26;
     const T t40 = t39 * t26;
-    G_E = (T(1) / T(3)) * seg7 * (t38 * w0 + T(2) * w2 * seg7 * t29 + w1 * t27 * t28 - t40 * seg8);
+    G_E = (T(1) / T(3)) * seg7 * (t38 * w0 + T(2) * seg7 * w2 * t29 + w1 * t27 * t28 - seg8 * t40);
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -5577,9 +5579,9 @@ T segment_cauchy_i3_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = a_minus_b * r0;
     X = (a_minus_b - b) * seg1 / (t4 - r1 * b);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
-  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t5 >= T(0)) {
@@ -5596,17 +5598,17 @@ T segment_cauchy_i3_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t12 = b * t9 + t10 - t11;
     const T t13 = T(2) * t12 * seg7 * b + J1 - c * t9;
     const T t14 = r1 + J1 * b - r0;
-    F = t12 * seg7 * w1 + w3 * (T(2) * t13 * seg7 * b + t14 * seg7 - c * t12 * seg7) * seg7 + t13 * w2 * seg7 + w0 * t9;
+    F = t12 * seg7 * w1 + t13 * w2 * seg7 + w0 * t9 - (c * t12 * seg7 - T(2) * t13 * seg7 * b - t14 * seg7) * w3 * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r1;
     const T t16 = T(1) / r0;
     const T t17 = a_minus_b * t15 + t16 * b;
     const T t18 = T(1) / D;
-    const T t19 = t16 + t17 * t18 * b - t15;
-    const T t20 = t17 * c * t18 - T(2) * seg7 * t19 * b - J1;
-    const T t21 = r1 + J1 * b - r0;
-    F = t17 * w0 * t18 + seg7 * w1 * t19 - (T(2) * t20 * seg7 * b + c * seg7 * t19 - t21 * seg7) * w3 * seg7 - t20 * w2 * seg7;
+    const T t19 = r1 + J1 * b - r0;
+    const T t20 = t16 + t17 * t18 * b - t15;
+    const T t21 = t17 * c * t18 - T(2) * seg7 * t20 * b - J1;
+    F = t17 * w0 * t18 + (t19 * seg7 - T(2) * t21 * seg7 * b - c * seg7 * t20) * w3 * seg7 + seg7 * w1 * t20 - t21 * w2 * seg7;
   }
   f = length * F;
   return f;
@@ -5667,16 +5669,16 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = seg0 * (ab0 * exact_cross[2] - ab2 * exact_cross[0]);
+    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
+    foot1 = (ab0 * exact_cross[2] - ab2 * exact_cross[0]) * seg0;
     foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
@@ -5694,7 +5696,7 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const T* pre, const SegmentPoint<T>& 
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = a_minus_b * r0;
     const T t3 = T(1) / D;
-    X = (t2 + r1 * b) * t3 * seg1;
+    X = (t2 + r1 * b) * seg1 * t3;
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = a_minus_b * r0;
@@ -5703,7 +5705,7 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const T* pre, const SegmentPoint<T>& 
   const T J1 = seg2 * asinh(X);
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t5 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t5 >= T(0)) {
@@ -5712,7 +5714,7 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(3, 5, 4, a, b, c, c - T(1), M_flat.data());
     const T t8 = w0 * M_flat[5] + M_flat[7] * w2 + w1 * M_flat[6] + M_flat[8] * w3;
     G_ap = t8;
-    G_E = M_flat[8] * w2 + M_flat[9] * w3 + w0 * M_flat[6] + M_flat[7] * w1 - t8 * seg7 * b;
+    G_E = M_flat[8] * w2 + M_flat[9] * w3 + w0 * M_flat[6] + M_flat[7] * w1 - seg7 * t8 * b;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
     const T t9 = -b;
@@ -5727,13 +5729,13 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t18 = b * t11 * t12;
     const T t19 = t17 + t18 - T(3) * D * t10;
     const T t20 = T(6) * t10 * c + T(3) * seg7 * t19 - T(4) * seg7 * b * t16;
-    const T t21 = T(2) * t11 - seg7 * b * t19 - T(2) * t14;
-    G_ap = (T(1) / T(3)) * w1 * seg7 * t16 + w0 * t10 - (T(1) / T(6)) * seg7 * t20 * w2 - (T(1) / T(6)) * (T(2) * seg7 * c * t16 + T(2) * seg7 * b * t20 - T(3) * seg7 * t21) * seg7 * w3;
-    const T t22 = t14 * t14;
-    const T t23 = t22 * t14;
-    const T t24 = t11 * t11;
-    const T t25 = t24 * t11;
-    G_E = -(T(1) / T(6)) * seg7 * (w1 * seg7 * t19 + T(2) * t23 * seg8 - T(2) * seg7 * w2 * t21 - T(3) * (seg7 * c * t19 + T(2) * J1 + T(2) * seg7 * b * t21) * seg7 * w3 - T(2) * w0 * t25);
+    const T t21 = T(2) * t11 - T(2) * t14 - seg7 * b * t19;
+    G_ap = (T(1) / T(3)) * seg7 * w1 * t16 + w0 * t10 - (T(1) / T(6)) * (T(2) * seg7 * b * t20 + T(2) * seg7 * c * t16 - T(3) * seg7 * t21) * seg7 * w3 - (T(1) / T(6)) * seg7 * t20 * w2;
+    const T t22 = t11 * t11;
+    const T t23 = t22 * t11;
+    const T t24 = t14 * t14;
+    const T t25 = t24 * t14;
+    G_E = (T(1) / T(6)) * seg7 * (T(2) * seg7 * w2 * t21 + T(3) * seg7 * (T(2) * seg7 * b * t21 + T(2) * J1 + seg7 * c * t19) * w3 + T(2) * w0 * t23 - seg7 * w1 * t19 - T(2) * t25 * seg8);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t26 = T(1) / D;
@@ -5747,14 +5749,14 @@ std::array<T, 3> segment_cauchy_i3_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t34 = t29 + T(2) * t31 * a * t26 + t33;
     const T t35 = t30 * t32;
     const T t36 = t26 * t34 * b + t35 - t27 * t28;
-    const T t37 = T(2) * t36 * seg7 * b + T(3) * t31 * t26 - t26 * t34 * c;
+    const T t37 = T(3) * t31 * t26 + T(2) * seg7 * t36 * b - t26 * t34 * c;
     const T t38 = t30 + t31 * t26 * b - t27;
-    G_ap = (T(1) / T(3)) * w1 * t36 * seg7 + (T(1) / T(3)) * w0 * t26 * t34 + (T(1) / T(3)) * seg7 * t37 * w2 - (T(1) / T(3)) * (t36 * seg7 * c - T(2) * seg7 * b * t37 - T(3) * t38 * seg7) * seg7 * w3;
+    G_ap = (T(1) / T(3)) * seg7 * w1 * t36 + (T(1) / T(3)) * w0 * t26 * t34 + (T(1) / T(3)) * seg7 * t37 * w2 + (T(1) / T(3)) * seg7 * (T(3) * t38 * seg7 + T(2) * seg7 * t37 * b - seg7 * t36 * c) * w3;
     const T t39 = t30 * t30;
     const T t40 = t39 * t30;
     const T t41 = t27 * t27;
     const T t42 = t41 * t27;
-    G_E = (T(1) / T(3)) * seg7 * (T(2) * t38 * seg7 * w2 + t31 * t26 * w1 + w0 * t40 - T(3) * (t31 * t26 * c - T(2) * t38 * seg7 * b - J1) * seg7 * w3 - t42 * seg8);
+    G_E = (T(1) / T(3)) * seg7 * (t31 * t26 * w1 + T(2) * t38 * seg7 * w2 + w0 * t40 - t42 * seg8 - T(3) * seg7 * (t31 * t26 * c - T(2) * t38 * seg7 * b - J1) * w3);
   }
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
   grad[1] = -g_factor * (ab1 * G_E - foot1 * G_ap);
@@ -5818,17 +5820,17 @@ T segment_cauchy_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
@@ -5845,17 +5847,17 @@ T segment_cauchy_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / D;
     const T t3 = r0 * a_minus_b;
-    X = t2 * seg1 * (t3 + r1 * b);
+    X = seg1 * t2 * (t3 + r1 * b);
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r0 * a_minus_b;
     X = (a_minus_b - b) * seg1 / (t4 - r1 * b);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
+  const T t5 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t6 = -a_minus_b * b;
   const T t7 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t5 >= T(0)) {
@@ -5880,16 +5882,16 @@ T segment_cauchy_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t18 = T(2) * t12 + seg7 * t17 * b - T(2) * t9;
     const T t19 = T(2) * J1 + seg7 * t17 * c - T(2) * seg7 * b * t18;
     const T t20 = r0 - J1 * b - r1;
-    F = (T(1) / T(2)) * w3 * (T(2) * t19 * seg7 * b + seg7 * t18 * c - T(2) * seg7 * t20) * seg7 + (T(1) / T(2)) * t19 * seg7 * w2 - (T(1) / T(2)) * w0 * seg7 * t17 - (T(1) / T(2)) * seg7 * w1 * t18;
+    F = (T(1) / T(2)) * seg7 * w3 * (T(2) * seg7 * t19 * b + seg7 * t18 * c - T(2) * seg7 * t20) + (T(1) / T(2)) * seg7 * t19 * w2 - (T(1) / T(2)) * seg7 * w1 * t18 - (T(1) / T(2)) * seg7 * w0 * t17;
     const T t21 = t12 * t13;
     const T t22 = t21 - T(3) * t16 * b - t9 * t10;
     const T t23 = T(4) * seg7 * t22 * b + T(3) * seg7 * t17 + T(6) * t16 * c;
-    G_ap = t16 * w0 - (T(1) / T(3)) * seg7 * t22 * w1 - (T(1) / T(6)) * t23 * seg7 * w2 - (T(1) / T(6)) * w3 * seg7 * (T(3) * seg7 * t18 + T(2) * t23 * seg7 * b - T(2) * seg7 * t22 * c);
-    const T t24 = t12 * t12;
-    const T t25 = t24 * t12;
-    const T t26 = t9 * t9;
-    const T t27 = t26 * t9;
-    G_E = -(T(1) / T(6)) * seg7 * (seg7 * t17 * w1 + T(2) * t25 * seg8 + T(2) * seg7 * t18 * w2 - T(3) * w3 * t19 * seg7 - T(2) * t27 * w0);
+    G_ap = t16 * w0 - (T(1) / T(3)) * seg7 * t22 * w1 - (T(1) / T(6)) * seg7 * t23 * w2 - (T(1) / T(6)) * seg7 * w3 * (T(3) * seg7 * t18 + T(2) * seg7 * t23 * b - T(2) * seg7 * t22 * c);
+    const T t24 = t9 * t9;
+    const T t25 = t24 * t9;
+    const T t26 = t12 * t12;
+    const T t27 = t26 * t12;
+    G_E = (T(1) / T(6)) * seg7 * (T(3) * seg7 * w3 * t19 + T(2) * t25 * w0 - seg7 * t17 * w1 - T(2) * seg8 * t27 - T(2) * seg7 * t18 * w2);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t28 = T(1) / r0;
@@ -5899,7 +5901,7 @@ T segment_cauchy_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t32 = t30 * t31 * b + t28 - t29;
     const T t33 = J1 + T(2) * seg7 * b * t32 - t30 * t31 * c;
     const T t34 = r0 - J1 * b - r1;
-    F = seg7 * w2 * t33 + t30 * t31 * w0 + (T(2) * seg7 * b * t33 - seg7 * t32 * c - seg7 * t34) * w3 * seg7 + seg7 * w1 * t32;
+    F = seg7 * w3 * (T(2) * seg7 * b * t33 - seg7 * t32 * c - seg7 * t34) + t30 * t31 * w0 + seg7 * w2 * t33 + seg7 * w1 * t32;
     const T t35 = t28 * t28;
     const T t36 = t28 * b * t35;
     const T t37 = t29 * t29;
@@ -5907,13 +5909,13 @@ T segment_cauchy_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t39 = t36 + T(2) * t30 * t31 * a + t38;
     const T t40 = t29 * t37;
     const T t41 = t40 - t28 * t35 - t31 * b * t39;
-    const T t42 = T(3) * t30 * t31 - t31 * t39 * c - T(2) * t41 * seg7 * b;
-    G_ap = (T(1) / T(3)) * seg7 * w2 * t42 + (T(1) / T(3)) * (T(3) * seg7 * t32 + t41 * seg7 * c + T(2) * seg7 * b * t42) * w3 * seg7 + (T(1) / T(3)) * t31 * w0 * t39 - (T(1) / T(3)) * t41 * seg7 * w1;
+    const T t42 = T(3) * t30 * t31 - t31 * t39 * c - T(2) * seg7 * t41 * b;
+    G_ap = (T(1) / T(3)) * t42 * seg7 * w2 + (T(1) / T(3)) * seg7 * w3 * (T(3) * seg7 * t32 + seg7 * t41 * c + T(2) * t42 * seg7 * b) + (T(1) / T(3)) * t31 * w0 * t39 - (T(1) / T(3)) * seg7 * t41 * w1;
     const T t43 = t28 * t28;
     const T t44 = t43 * t28;
     const T t45 = t29 * t29;
     const T t46 = t45 * t29;
-    G_E = (T(1) / T(3)) * seg7 * (t30 * t31 * w1 + T(2) * seg7 * t32 * w2 + T(3) * w3 * seg7 * t33 + t44 * w0 - t46 * seg8);
+    G_E = (T(1) / T(3)) * seg7 * (t30 * t31 * w1 + T(2) * seg7 * t32 * w2 + T(3) * seg7 * w3 * t33 + t44 * w0 - seg8 * t46);
   }
   f = F * length;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
@@ -6148,7 +6150,7 @@ T segment_cauchy_i4_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = ap_bp * s + T(1);
   T F;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -6222,17 +6224,17 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
@@ -6245,7 +6247,7 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -6253,7 +6255,7 @@ std::array<T, 3> segment_cauchy_i4_w0_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(4, 6, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - M_flat[2] * w0 * b * seg5;
+    G_E = w0 * M_flat[3] - M_flat[2] * w0 * seg5 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -6335,17 +6337,17 @@ T segment_cauchy_i4_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = ab1 * bp1 + ab2 * bp2 + bp0 * ab0;
@@ -6359,7 +6361,7 @@ T segment_cauchy_i4_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -6606,7 +6608,7 @@ T segment_cauchy_i4_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = s * bp_bp + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -6685,17 +6687,17 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * ab0 * seg0;
-    foot1 = ap1 - ab_ap * ab1 * seg0;
-    foot2 = ap2 - ab_ap * ab2 * seg0;
+    foot0 = ap0 - ab_ap * seg0 * ab0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
-    foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
@@ -6708,7 +6710,7 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -6727,7 +6729,7 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t6 = t5 * t5;
     const T t7 = T(1) / q1;
     const T t8 = t7 * t7;
-    G_E = (T(1) / T(4)) * (w1 * M_beyond[0] + w0 * t6 - t8 * seg6) * seg5;
+    G_E = (T(1) / T(4)) * (w1 * M_beyond[0] + w0 * t6 - seg6 * t8) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t9 = sqrt(D);
@@ -6741,7 +6743,7 @@ std::array<T, 3> segment_cauchy_i4_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t16 = a_minus_b * t14 + t12 * b + J2 * a;
     const T t17 = T(2) * t13 * b + T(2) * a_minus_b * t15 + T(3) * t11 * a * t16;
     G_ap = (T(1) / T(8)) * w0 * t11 * t17 + (T(1) / T(8)) * seg5 * w1 * (T(2) * t13 + t11 * t17 * b - T(2) * t15);
-    G_E = (T(1) / T(8)) * (T(2) * w0 * t13 + w1 * t11 * t16 - T(2) * t15 * seg6) * seg5;
+    G_E = -(T(1) / T(8)) * seg5 * (T(2) * seg6 * t15 - T(2) * w0 * t13 - w1 * t11 * t16);
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = g_factor * (foot1 * G_ap - G_E * ab1);
@@ -6801,16 +6803,16 @@ T segment_cauchy_i4_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -6825,7 +6827,7 @@ T segment_cauchy_i4_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -6835,18 +6837,18 @@ T segment_cauchy_i4_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = M_flat[0] * w0 + w1 * M_flat[1];
     const T t4 = M_flat[3] * w0 + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w1 * M_flat[5] + w0 * M_flat[4] - b * seg5 * t4;
+    G_E = w1 * M_flat[5] + w0 * M_flat[4] - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(4, 6, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = w1 * M_beyond[1] + M_beyond[0] * w0;
     G_ap = M_beyond[3] * w0 + w1 * M_beyond[4];
-    const T t5 = T(1) / q1;
+    const T t5 = T(1) / c;
     const T t6 = t5 * t5;
-    const T t7 = T(1) / c;
+    const T t7 = T(1) / q1;
     const T t8 = t7 * t7;
-    G_E = -(T(1) / T(4)) * (seg6 * t6 - w0 * t8 - w1 * M_beyond[0]) * seg5;
+    G_E = (T(1) / T(4)) * seg5 * (w0 * t6 + w1 * M_beyond[0] - t8 * seg6);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t9 = sqrt(D);
@@ -6856,12 +6858,12 @@ T segment_cauchy_i4_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t12 = T(1) / c;
     const T t13 = T(1) / q1;
     const T t14 = a * J2 + b * t12 + a_minus_b * t13;
-    F = (T(1) / T(2)) * t11 * t14 * w0 + (T(1) / T(2)) * w1 * (t12 + t11 * b * t14 - t13) * seg5;
+    F = (T(1) / T(2)) * t11 * t14 * w0 + (T(1) / T(2)) * w1 * seg5 * (t12 + t11 * b * t14 - t13);
     const T t15 = t13 * t13;
     const T t16 = t12 * t12;
     const T t17 = T(2) * a_minus_b * t15 + T(2) * b * t16 + T(3) * t11 * a * t14;
     G_ap = (T(1) / T(8)) * t11 * w0 * t17 - (T(1) / T(8)) * w1 * seg5 * (T(2) * t15 - T(2) * t16 - t11 * b * t17);
-    G_E = -(T(1) / T(8)) * (T(2) * seg6 * t15 - w1 * t11 * t14 - T(2) * w0 * t16) * seg5;
+    G_E = (T(1) / T(8)) * seg5 * (w1 * t11 * t14 + T(2) * w0 * t16 - T(2) * t15 * seg6);
   }
   f = F * length;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
@@ -7076,7 +7078,7 @@ T segment_cauchy_i4_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -7099,7 +7101,7 @@ T segment_cauchy_i4_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t8 = a_minus_b * t6 + J2 * a + b * t7;
     const T t9 = T(1) / D;
     const T t10 = t6 - t8 * b * t9 - t7;
-    F = (T(1) / T(2)) * t8 * w0 * t9 - (T(1) / T(2)) * (T(2) * t10 * b * seg5 + t8 * c * t9 - T(2) * J2) * seg5 * w2 - (T(1) / T(2)) * t10 * w1 * seg5;
+    F = (T(1) / T(2)) * seg5 * (T(2) * J2 - t8 * c * t9 - T(2) * t10 * b * seg5) * w2 + (T(1) / T(2)) * t8 * w0 * t9 - (T(1) / T(2)) * t10 * seg5 * w1;
   }
   f = F * length;
   return f;
@@ -7165,8 +7167,8 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -7180,7 +7182,7 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -7189,7 +7191,7 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(4, 6, 3, a, b, c, c - T(1), M_flat.data());
     const T t4 = w0 * M_flat[4] + M_flat[6] * w2 + M_flat[5] * w1;
     G_ap = t4;
-    G_E = M_flat[6] * w1 + M_flat[5] * w0 + M_flat[7] * w2 - t4 * seg5 * b;
+    G_E = M_flat[6] * w1 + M_flat[5] * w0 + M_flat[7] * w2 - seg5 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
     const T t5 = -b;
@@ -7200,8 +7202,8 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t10 = t9 * t9;
     const T t11 = t8 + T(4) * t6 * b - t10;
     const T t12 = t8 * b + a_minus_b * t10 - T(4) * t6 * D;
-    G_ap = t6 * w0 + (T(1) / T(6)) * seg5 * (T(3) * t11 * seg5 * b - T(2) * seg5 * t12 - T(6) * t6 * c) * w2 + (T(1) / T(4)) * t11 * seg5 * w1;
-    G_E = -(T(1) / T(12)) * seg5 * (T(3) * t10 * seg6 + seg5 * w1 * t12 + (T(2) * seg5 * b * t12 + T(3) * t9 - T(3) * t7) * seg5 * w2 - T(3) * t8 * w0);
+    G_ap = t6 * w0 + (T(1) / T(4)) * seg5 * t11 * w1 + (T(1) / T(6)) * seg5 * (T(3) * seg5 * t11 * b - T(2) * seg5 * t12 - T(6) * t6 * c) * w2;
+    G_E = (T(1) / T(12)) * seg5 * (T(3) * t8 * w0 - seg5 * w1 * t12 - T(3) * seg6 * t10 - (T(2) * seg5 * b * t12 + T(3) * t9 - T(3) * t7) * seg5 * w2);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -7215,8 +7217,8 @@ std::array<T, 3> segment_cauchy_i4_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t20 = t15 * t15;
     const T t21 = T(3) * t17 * t18 * a + T(2) * t19 * b + T(2) * a_minus_b * t20;
     const T t22 = T(2) * t19 + t21 * t18 * b - T(2) * t20;
-    G_ap = (T(1) / T(8)) * seg5 * (T(4) * t17 * t18 + T(2) * t22 * seg5 * b - t21 * c * t18) * w2 + (T(1) / T(8)) * t21 * w0 * t18 + (T(1) / T(8)) * t22 * seg5 * w1;
-    G_E = -(T(1) / T(8)) * (T(2) * t20 * seg6 + T(2) * seg5 * (t15 - t17 * t18 * b - t16) * w2 - t17 * t18 * w1 - T(2) * t19 * w0) * seg5;
+    G_ap = (T(1) / T(8)) * t21 * w0 * t18 + (T(1) / T(8)) * seg5 * w2 * (T(2) * seg5 * t22 * b + T(4) * t17 * t18 - t21 * c * t18) + (T(1) / T(8)) * seg5 * t22 * w1;
+    G_E = (T(1) / T(8)) * (t17 * t18 * w1 + T(2) * t19 * w0 - T(2) * seg6 * t20 - T(2) * seg5 * (t15 - t17 * t18 * b - t16) * w2) * seg5;
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
   grad[1] = -g_factor * (G_E * ab1 - G_ap * foot1);
@@ -7277,17 +7279,17 @@ T segment_cauchy_i4_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
@@ -7314,18 +7316,18 @@ T segment_cauchy_i4_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     G_E = w0 * M_flat[5] + M_flat[7] * w2 + M_flat[6] * w1 - b * seg5 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
-    const T t5 = T(1) / q1;
-    const T t6 = T(1) / c;
-    const T t7 = t6 * t6;
-    const T t8 = t5 * t5;
+    const T t5 = T(1) / c;
+    const T t6 = t5 * t5;
+    const T t7 = T(1) / q1;
+    const T t8 = t7 * t7;
     const T t9 = -b;
     const T t10 = J_downward<T>(6, a, D, t9, c, a_minus_b, q1);
-    const T t11 = b * t7 + a_minus_b * t8 - T(4) * t10 * D;
-    const T t12 = T(3) * t5 + T(2) * b * t11 * seg5 - T(3) * t6;
-    F = -(T(1) / T(6)) * t12 * w1 * seg5 - (T(1) / T(3)) * w0 * t11 * seg5 - (T(1) / T(3)) * ((T(3) * a_minus_b * t5 + T(2) * t11 * seg5 * D + T(3) * b * t6) * seg5 + t12 * b * seg5 - t11 * c * seg5) * seg5 * w2;
-    const T t13 = t7 + T(4) * t10 * b - t8;
-    G_ap = t10 * w0 + (T(1) / T(4)) * t13 * w1 * seg5 - (T(1) / T(6)) * seg5 * w2 * (T(6) * t10 * c + T(2) * t11 * seg5 - T(3) * t13 * b * seg5);
-    G_E = -(T(1) / T(12)) * seg5 * (t12 * seg5 * w2 + w1 * t11 * seg5 + T(3) * seg6 * t8 - T(3) * w0 * t7);
+    const T t11 = b * t6 + a_minus_b * t8 - T(4) * t10 * D;
+    const T t12 = T(3) * t7 + T(2) * b * seg5 * t11 - T(3) * t5;
+    F = (T(1) / T(3)) * seg5 * (seg5 * t11 * c - seg5 * (T(3) * a_minus_b * t7 + T(2) * seg5 * t11 * D + T(3) * b * t5) - b * seg5 * t12) * w2 - (T(1) / T(6)) * seg5 * t12 * w1 - (T(1) / T(3)) * w0 * seg5 * t11;
+    const T t13 = t6 + T(4) * t10 * b - t8;
+    G_ap = t10 * w0 + (T(1) / T(4)) * t13 * seg5 * w1 + (T(1) / T(6)) * (T(3) * t13 * b * seg5 - T(6) * t10 * c - T(2) * seg5 * t11) * seg5 * w2;
+    G_E = (T(1) / T(12)) * seg5 * (T(3) * w0 * t6 - seg5 * t12 * w2 - seg5 * w1 * t11 - T(3) * t8 * seg6);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t14 = sqrt(D);
@@ -7336,13 +7338,13 @@ T segment_cauchy_i4_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t18 = T(1) / c;
     const T t19 = J2 * a + a_minus_b * t17 + b * t18;
     const T t20 = t17 - t18 - b * t16 * t19;
-    F = (T(1) / T(2)) * w0 * t16 * t19 - (T(1) / T(2)) * w1 * seg5 * t20 - (T(1) / T(2)) * (T(2) * b * seg5 * t20 + c * t16 * t19 - T(2) * J2) * seg5 * w2;
+    F = (T(1) / T(2)) * w0 * t16 * t19 - (T(1) / T(2)) * seg5 * w2 * (c * t16 * t19 + T(2) * b * seg5 * t20 - T(2) * J2) - (T(1) / T(2)) * seg5 * w1 * t20;
     const T t21 = t18 * t18;
     const T t22 = t17 * t17;
     const T t23 = T(2) * b * t21 + T(2) * a_minus_b * t22 + T(3) * a * t16 * t19;
     const T t24 = t23 * b * t16 + T(2) * t21 - T(2) * t22;
-    G_ap = (T(1) / T(8)) * w0 * t23 * t16 + (T(1) / T(8)) * t24 * w1 * seg5 - (T(1) / T(8)) * seg5 * w2 * (t23 * c * t16 - T(2) * t24 * b * seg5 - T(4) * t16 * t19);
-    G_E = (T(1) / T(8)) * (w1 * t16 * t19 + T(2) * w0 * t21 - T(2) * seg5 * w2 * t20 - T(2) * seg6 * t22) * seg5;
+    G_ap = (T(1) / T(8)) * w0 * t23 * t16 + (T(1) / T(8)) * t24 * seg5 * w1 - (T(1) / T(8)) * (t23 * c * t16 - T(4) * t16 * t19 - T(2) * t24 * b * seg5) * seg5 * w2;
+    G_E = -(T(1) / T(8)) * seg5 * (T(2) * seg5 * w2 * t20 + T(2) * t22 * seg6 - w1 * t16 * t19 - T(2) * w0 * t21);
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -7561,7 +7563,7 @@ T segment_cauchy_i4_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -7580,8 +7582,8 @@ T segment_cauchy_i4_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t9 = a_minus_b * t7;
     const T t10 = b * t4;
     const T t11 = t9 + t10 - T(2) * D * t6;
-    const T t12 = b * seg5 * t8 - c * t6 - seg5 * t11;
-    F = w0 * t6 + (T(1) / T(2)) * seg5 * w3 * (T(4) * b * seg5 * t12 - c * seg5 * t8 - (T(2) * b * seg5 * t11 - log_ratio) * seg5) + (T(1) / T(2)) * w1 * seg5 * t8 + w2 * seg5 * t12;
+    const T t12 = c * t6 + seg5 * t11 - b * seg5 * t8;
+    F = w0 * t6 + (T(1) / T(2)) * w1 * seg5 * t8 - (T(1) / T(2)) * seg5 * (seg5 * c * t8 + T(4) * b * seg5 * t12 - (log_ratio - T(2) * b * seg5 * t11) * seg5) * w3 - seg5 * w2 * t12;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -7595,8 +7597,8 @@ T segment_cauchy_i4_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t19 = t17 + t18 + a * J2;
     const T t20 = T(1) / D;
     const T t21 = t15 + b * t19 * t20 - t16;
-    const T t22 = t19 * c * t20 - T(2) * b * t21 * seg5 - T(2) * J2;
-    F = (T(1) / T(2)) * t19 * w0 * t20 + (T(1) / T(2)) * w1 * t21 * seg5 - (T(1) / T(2)) * w2 * seg5 * t22 - (T(1) / T(2)) * (t21 * c * seg5 + T(2) * b * seg5 * t22 - seg5 * (log_ratio + T(2) * b * J2)) * seg5 * w3;
+    const T t22 = T(2) * b * t21 * seg5 + T(2) * J2 - t19 * c * t20;
+    F = (T(1) / T(2)) * t19 * w0 * t20 + (T(1) / T(2)) * w1 * t21 * seg5 + (T(1) / T(2)) * seg5 * w3 * (seg5 * (log_ratio + T(2) * b * J2) + T(2) * b * seg5 * t22 - t21 * seg5 * c) + (T(1) / T(2)) * seg5 * w2 * t22;
   }
   f = F * length;
   return f;
@@ -7655,9 +7657,9 @@ std::array<T, 3> segment_cauchy_i4_w3_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * ab0 * seg0;
-    foot1 = ap1 - ab_ap * ab1 * seg0;
-    foot2 = ap2 - ab_ap * ab2 * seg0;
+    foot0 = ap0 - ab_ap * seg0 * ab0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -7678,7 +7680,7 @@ std::array<T, 3> segment_cauchy_i4_w3_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -7687,21 +7689,21 @@ std::array<T, 3> segment_cauchy_i4_w3_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(4, 6, 4, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[6] * w1 + M_flat[8] * w3 + M_flat[7] * w2 + M_flat[5] * w0;
     G_ap = t4;
-    G_E = w3 * M_flat[9] + w2 * M_flat[8] + M_flat[7] * w1 + w0 * M_flat[6] - b * t4 * seg5;
+    G_E = w3 * M_flat[9] + w2 * M_flat[8] + M_flat[7] * w1 + w0 * M_flat[6] - b * seg5 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
-    const T t5 = T(1) / c;
-    const T t6 = T(1) / q1;
-    const T t7 = t6 * t6;
-    const T t8 = t5 * t5;
-    const T t9 = -b;
-    const T t10 = J_downward<T>(6, a, D, t9, c, a_minus_b, q1);
-    const T t11 = a_minus_b * t7 + b * t8 - T(4) * t10 * D;
-    const T t12 = T(3) * t5 - T(3) * t6 - T(2) * b * seg5 * t11;
-    const T t13 = T(4) * b * t10 + t8 - t7;
-    const T t14 = T(6) * t10 * c + T(2) * seg5 * t11 - T(3) * b * seg5 * t13;
-    G_ap = (T(1) / T(12)) * (T(2) * seg5 * t12 - T(3) * c * seg5 * t13 - T(4) * b * seg5 * t14) * seg5 * w3 + (T(1) / T(4)) * seg5 * t13 * w1 + t10 * w0 - (T(1) / T(6)) * w2 * seg5 * t14;
-    G_E = (T(1) / T(12)) * seg5 * (w2 * seg5 * t12 + T(3) * t8 * w0 - seg5 * t11 * w1 - T(3) * (seg5 * (T(2) * seg5 * D * t11 + T(3) * b * t5 + T(3) * a_minus_b * t6) - c * seg5 * t11 - b * seg5 * t12) * seg5 * w3 - T(3) * seg6 * t7);
+    const T t5 = -b;
+    const T t6 = J_downward<T>(6, a, D, t5, c, a_minus_b, q1);
+    const T t7 = T(1) / c;
+    const T t8 = t7 * t7;
+    const T t9 = T(1) / q1;
+    const T t10 = t9 * t9;
+    const T t11 = T(4) * b * t6 + t8 - t10;
+    const T t12 = a_minus_b * t10 + b * t8 - T(4) * t6 * D;
+    const T t13 = T(3) * b * seg5 * t11 - T(6) * t6 * c - T(2) * seg5 * t12;
+    const T t14 = T(3) * t7 - T(2) * b * seg5 * t12 - T(3) * t9;
+    G_ap = (T(1) / T(4)) * seg5 * t11 * w1 + (T(1) / T(6)) * t13 * seg5 * w2 + (T(1) / T(12)) * seg5 * w3 * (T(2) * t14 * seg5 + T(4) * b * t13 * seg5 - T(3) * seg5 * c * t11) + t6 * w0;
+    G_E = -(T(1) / T(12)) * seg5 * (T(3) * seg6 * t10 + seg5 * t12 * w1 - t14 * seg5 * w2 - T(3) * t8 * w0 - T(3) * (t14 * b * seg5 + seg5 * c * t12 - seg5 * (T(2) * seg5 * D * t12 + T(3) * b * t7 + T(3) * a_minus_b * t9)) * seg5 * w3);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(D);
@@ -7715,10 +7717,10 @@ std::array<T, 3> segment_cauchy_i4_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t22 = t18 * t18;
     const T t23 = T(3) * t20 * t17 * a + T(2) * a_minus_b * t21 + T(2) * b * t22;
     const T t24 = T(2) * t21 - b * t17 * t23 - T(2) * t22;
-    const T t25 = t18 + t20 * b * t17 - t19;
-    const T t26 = c * t17 * t23 + T(2) * b * t24 * seg5 - T(4) * t20 * t17;
-    G_ap = (T(1) / T(8)) * t17 * w0 * t23 + (T(1) / T(8)) * (t24 * c * seg5 + T(4) * seg5 * t25 - T(2) * b * t26 * seg5) * seg5 * w3 - (T(1) / T(8)) * t24 * seg5 * w1 - (T(1) / T(8)) * t26 * w2 * seg5;
-    G_E = (T(1) / T(8)) * seg5 * (T(3) * (T(2) * J2 + T(2) * b * seg5 * t25 - t20 * c * t17) * seg5 * w3 + T(2) * t22 * w0 + t20 * t17 * w1 + T(2) * w2 * seg5 * t25 - T(2) * seg6 * t21);
+    const T t25 = c * t17 * t23 + T(2) * b * seg5 * t24 - T(4) * t20 * t17;
+    const T t26 = t18 + t20 * b * t17 - t19;
+    G_ap = (T(1) / T(8)) * t17 * w0 * t23 - (T(1) / T(8)) * seg5 * w3 * (T(2) * b * seg5 * t25 - T(4) * seg5 * t26 - seg5 * t24 * c) - (T(1) / T(8)) * seg5 * t24 * w1 - (T(1) / T(8)) * seg5 * w2 * t25;
+    G_E = -(T(1) / T(8)) * seg5 * (T(2) * seg6 * t21 - T(2) * t22 * w0 - t20 * t17 * w1 - T(3) * seg5 * (T(2) * J2 + T(2) * b * seg5 * t26 - t20 * c * t17) * w3 - T(2) * seg5 * w2 * t26);
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = -(G_E * ab1 - foot1 * G_ap) * g_factor;
@@ -7780,17 +7782,17 @@ T segment_cauchy_i4_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
+    foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
@@ -7825,14 +7827,14 @@ T segment_cauchy_i4_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t9 = T(1) / q1;
     const T t10 = t9 * t9;
     const T t11 = T(4) * t7 * D - b * t8 - a_minus_b * t10;
-    const T t12 = T(2) * t11 * b * seg5 + T(3) * t5 - T(3) * t9;
-    const T t13 = T(3) * a_minus_b * t9 + T(3) * b * t5 - T(2) * t11 * seg5 * D;
-    const T t14 = b * t12 * seg5 - t11 * c * seg5 - seg5 * t13;
-    F = (T(1) / T(3)) * w2 * t14 * seg5 + (T(1) / T(6)) * ((T(3) * log_ratio - T(2) * b * seg5 * t13) * seg5 + T(4) * b * t14 * seg5 - c * t12 * seg5) * seg5 * w3 + (T(1) / T(6)) * w1 * t12 * seg5 + (T(1) / T(3)) * w0 * t11 * seg5;
+    const T t12 = T(3) * a_minus_b * t9 + T(3) * b * t5 - T(2) * t11 * seg5 * D;
+    const T t13 = T(3) * t9 - T(2) * t11 * b * seg5 - T(3) * t5;
+    const T t14 = t11 * seg5 * c + t13 * b * seg5 + seg5 * t12;
+    F = (T(1) / T(3)) * w0 * t11 * seg5 + (T(1) / T(6)) * seg5 * (seg5 * (T(3) * log_ratio - T(2) * b * seg5 * t12) + t13 * seg5 * c - T(4) * b * seg5 * t14) * w3 - (T(1) / T(6)) * t13 * w1 * seg5 - (T(1) / T(3)) * seg5 * t14 * w2;
     const T t15 = t8 + T(4) * b * t7 - t10;
     const T t16 = T(2) * t11 * seg5 + T(3) * b * t15 * seg5 - T(6) * t7 * c;
-    G_ap = (T(1) / T(12)) * (T(4) * t16 * b * seg5 + T(2) * t12 * seg5 - T(3) * t15 * c * seg5) * seg5 * w3 + (T(1) / T(6)) * t16 * w2 * seg5 + w0 * t7 + (T(1) / T(4)) * w1 * t15 * seg5;
-    G_E = (T(1) / T(12)) * (T(3) * t14 * seg5 * w3 + T(3) * w0 * t8 + t11 * w1 * seg5 + w2 * t12 * seg5 - T(3) * seg6 * t10) * seg5;
+    G_ap = (T(1) / T(6)) * seg5 * w2 * t16 + (T(1) / T(4)) * w1 * t15 * seg5 + w0 * t7 - (T(1) / T(12)) * seg5 * (T(2) * t13 * seg5 + T(3) * t15 * seg5 * c - T(4) * b * seg5 * t16) * w3;
+    G_E = -(T(1) / T(12)) * seg5 * (T(3) * t10 * seg6 + T(3) * seg5 * t14 * w3 + t13 * seg5 * w2 - T(3) * w0 * t8 - t11 * w1 * seg5);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = sqrt(D);
@@ -7844,15 +7846,15 @@ T segment_cauchy_i4_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t21 = a_minus_b * t20 + a * J2 + b * t19;
     const T t22 = T(1) / D;
     const T t23 = t20 - t21 * b * t22 - t19;
-    const T t24 = t21 * c * t22 + T(2) * b * t23 * seg5 - T(2) * J2;
-    F = (T(1) / T(2)) * w0 * t21 * t22 - (T(1) / T(2)) * (T(2) * b * t24 * seg5 - t23 * c * seg5 - seg5 * (log_ratio + T(2) * b * J2)) * seg5 * w3 - (T(1) / T(2)) * w1 * t23 * seg5 - (T(1) / T(2)) * t24 * w2 * seg5;
+    const T t24 = t21 * c * t22 + T(2) * b * seg5 * t23 - T(2) * J2;
+    F = (T(1) / T(2)) * w0 * t21 * t22 + (T(1) / T(2)) * seg5 * (seg5 * t23 * c + seg5 * (log_ratio + T(2) * b * J2) - T(2) * t24 * b * seg5) * w3 - (T(1) / T(2)) * w1 * seg5 * t23 - (T(1) / T(2)) * t24 * seg5 * w2;
     const T t25 = t19 * t19;
     const T t26 = t20 * t20;
     const T t27 = T(2) * b * t25 + T(3) * a * t21 * t22 + T(2) * a_minus_b * t26;
     const T t28 = t27 * b * t22 + T(2) * t25 - T(2) * t26;
     const T t29 = T(4) * t21 * t22 + T(2) * t28 * b * seg5 - t27 * c * t22;
-    G_ap = (T(1) / T(8)) * w0 * t27 * t22 + (T(1) / T(8)) * t28 * w1 * seg5 + (T(1) / T(8)) * (T(2) * b * t29 * seg5 - t28 * c * seg5 - T(4) * t23 * seg5) * seg5 * w3 + (T(1) / T(8)) * w2 * t29 * seg5;
-    G_E = (T(1) / T(8)) * (T(2) * w0 * t25 + t21 * w1 * t22 - T(3) * t24 * seg5 * w3 - T(2) * seg6 * t26 - T(2) * t23 * w2 * seg5) * seg5;
+    G_ap = (T(1) / T(8)) * w0 * t27 * t22 + (T(1) / T(8)) * seg5 * (T(2) * b * seg5 * t29 - t28 * seg5 * c - T(4) * seg5 * t23) * w3 + (T(1) / T(8)) * t28 * w1 * seg5 + (T(1) / T(8)) * seg5 * w2 * t29;
+    G_E = -(T(1) / T(8)) * (T(2) * t26 * seg6 + T(3) * t24 * seg5 * w3 + T(2) * seg5 * t23 * w2 - T(2) * w0 * t25 - t21 * w1 * t22) * seg5;
   }
   f = F * length;
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
@@ -8071,7 +8073,7 @@ T segment_cauchy_i5_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg8 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg8 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -8144,16 +8146,16 @@ std::array<T, 3> segment_cauchy_i5_w0_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (ab1 * exact_cross[2] - ab2 * exact_cross[1]);
-    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
@@ -8267,15 +8269,15 @@ T segment_cauchy_i5_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
     foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -8290,7 +8292,7 @@ T segment_cauchy_i5_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -8556,7 +8558,7 @@ T segment_cauchy_i5_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg9 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg9 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -8577,7 +8579,7 @@ T segment_cauchy_i5_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t7 = t4 * t4;
     const T t8 = t5 * t5;
     const T t9 = T(2) * (b * t4 + t5 * a_minus_b) * a * t6 + b * t7 * t4 + t5 * a_minus_b * t8;
-    F = (T(1) / T(3)) * t9 * w0 * t6 + (T(1) / T(3)) * w1 * (b * t9 * t6 + t7 * t4 - t5 * t8) * seg7;
+    F = (T(1) / T(3)) * t9 * w0 * t6 + (T(1) / T(3)) * w1 * seg7 * (b * t9 * t6 + t7 * t4 - t5 * t8);
   }
   f = F * length;
   return f;
@@ -8634,17 +8636,17 @@ std::array<T, 3> segment_cauchy_i5_w1_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
@@ -8657,7 +8659,7 @@ std::array<T, 3> segment_cauchy_i5_w1_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -8680,7 +8682,7 @@ std::array<T, 3> segment_cauchy_i5_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(5)) * (M_beyond[0] * w1 + t8 * w0 - t12 * seg8) * seg7;
+    G_E = (T(1) / T(5)) * seg7 * (M_beyond[0] * w1 + t8 * w0 - t12 * seg8);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = T(1) / D;
@@ -8759,17 +8761,17 @@ T segment_cauchy_i5_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
     foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
+    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
@@ -8783,7 +8785,7 @@ T segment_cauchy_i5_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -9053,7 +9055,7 @@ T segment_cauchy_i5_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg9 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg9 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -9076,7 +9078,7 @@ T segment_cauchy_i5_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t9 = t7 * b + t5 * a_minus_b;
     const T t10 = t6 * t5 * a_minus_b + t7 * b * t8 + T(2) * t4 * a * t9;
     const T t11 = t6 * t5 - t7 * t8 - t4 * t10 * b;
-    F = (T(1) / T(3)) * t4 * t10 * w0 - (T(1) / T(3)) * seg7 * t11 * w1 - (T(1) / T(3)) * w2 * (t4 * t10 * c + T(2) * seg7 * t11 * b - T(3) * t4 * t9) * seg7;
+    F = (T(1) / T(3)) * t4 * t10 * w0 - (T(1) / T(3)) * t11 * seg7 * w1 - (T(1) / T(3)) * (t4 * t10 * c + T(2) * t11 * seg7 * b - T(3) * t4 * t9) * w2 * seg7;
   }
   f = F * length;
   return f;
@@ -9143,7 +9145,7 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const T* pre, const SegmentPoint<T>& 
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(ab1 * exact_cross[2] - ab2 * exact_cross[1]) * seg0;
-    foot1 = seg0 * (ab0 * exact_cross[2] - ab2 * exact_cross[0]);
+    foot1 = (ab0 * exact_cross[2] - ab2 * exact_cross[0]) * seg0;
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
@@ -9157,7 +9159,7 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -9166,21 +9168,21 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(5, 7, 3, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[4] * w0 + M_flat[5] * w1 + M_flat[6] * w2;
     G_ap = t4;
-    G_E = M_flat[7] * w2 + w0 * M_flat[5] + w1 * M_flat[6] - b * t4 * seg7;
+    G_E = M_flat[7] * w2 + w0 * M_flat[5] + w1 * M_flat[6] - seg7 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
     segment_moments_beyond_end<T>(5, 7, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[5] * w1 + w0 * M_beyond[4] + M_beyond[6] * w2;
-    const T t5 = T(1) / r1;
+    const T t5 = T(1) / r0;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t5;
-    const T t9 = T(1) / r0;
+    const T t9 = T(1) / r1;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = -(T(1) / T(5)) * seg7 * (seg8 * t8 - w0 * t12 - T(2) * M_beyond[1] * w2 - M_beyond[0] * w1);
+    G_E = (T(1) / T(5)) * seg7 * (w0 * t8 + T(2) * M_beyond[1] * w2 + M_beyond[0] * w1 - seg8 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = T(1) / D;
@@ -9193,14 +9195,14 @@ std::array<T, 3> segment_cauchy_i5_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t20 = t18 * t18;
     const T t21 = T(3) * b * t14 * t16 + T(4) * t13 * a * t19 + T(3) * a_minus_b * t20 * t17;
     const T t22 = T(3) * t20 * t17 - T(3) * t14 * t16 - t13 * b * t21;
-    G_ap = (T(1) / T(15)) * t13 * w0 * t21 - (T(1) / T(15)) * (t13 * c * t21 + T(2) * b * t22 * seg7 - T(5) * t13 * t19) * seg7 * w2 - (T(1) / T(15)) * t22 * w1 * seg7;
+    G_ap = (T(1) / T(15)) * t13 * w0 * t21 - (T(1) / T(15)) * seg7 * (t13 * c * t21 + T(2) * seg7 * b * t22 - T(5) * t13 * t19) * w2 - (T(1) / T(15)) * seg7 * t22 * w1;
     const T t23 = t14 * t14;
     const T t24 = t23 * t23;
     const T t25 = t24 * t14;
     const T t26 = t17 * t17;
     const T t27 = t26 * t26;
     const T t28 = t27 * t17;
-    G_E = (T(1) / T(15)) * (T(2) * (t13 * t19 * b + t14 * t15 - t18 * t17) * seg7 * w2 + T(3) * w0 * t25 + t13 * t19 * w1 - T(3) * seg8 * t28) * seg7;
+    G_E = (T(1) / T(15)) * seg7 * (T(3) * w0 * t25 + t13 * t19 * w1 + T(2) * seg7 * (t13 * t19 * b + t14 * t15 - t18 * t17) * w2 - T(3) * seg8 * t28);
   }
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
   grad[1] = -(ab1 * G_E - foot1 * G_ap) * g_factor;
@@ -9261,9 +9263,9 @@ T segment_cauchy_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * ab0 * seg0;
-    foot1 = ap1 - ab_ap * ab1 * seg0;
-    foot2 = ap2 - ab_ap * ab2 * seg0;
+    foot0 = ap0 - ab_ap * seg0 * ab0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -9285,7 +9287,7 @@ T segment_cauchy_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -9295,7 +9297,7 @@ T segment_cauchy_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = M_flat[0] * w0 + M_flat[2] * w2 + M_flat[1] * w1;
     const T t4 = w2 * M_flat[6] + w1 * M_flat[5] + M_flat[4] * w0;
     G_ap = t4;
-    G_E = w1 * M_flat[6] + w2 * M_flat[7] + M_flat[5] * w0 - t4 * seg7 * b;
+    G_E = w1 * M_flat[6] + w2 * M_flat[7] + M_flat[5] * w0 - seg7 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -9310,7 +9312,7 @@ T segment_cauchy_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(5)) * (T(2) * w2 * M_beyond[1] + t8 * w0 + w1 * M_beyond[0] - seg8 * t12) * seg7;
+    G_E = (T(1) / T(5)) * seg7 * (T(2) * w2 * M_beyond[1] + t8 * w0 + w1 * M_beyond[0] - seg8 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = T(1) / r0;
@@ -9321,19 +9323,19 @@ T segment_cauchy_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t18 = t14 * t14;
     const T t19 = t17 * t13 * b + T(2) * t15 * t16 * a + t18 * t14 * a_minus_b;
     const T t20 = t17 * t13 + t19 * t16 * b - t18 * t14;
-    F = (T(1) / T(3)) * (T(3) * t15 * t16 + T(2) * t20 * seg7 * b - c * t19 * t16) * w2 * seg7 + (T(1) / T(3)) * w1 * t20 * seg7 + (T(1) / T(3)) * t19 * t16 * w0;
+    F = (T(1) / T(3)) * seg7 * w2 * (T(3) * t15 * t16 + T(2) * seg7 * t20 * b - c * t19 * t16) + (T(1) / T(3)) * t19 * t16 * w0 + (T(1) / T(3)) * seg7 * w1 * t20;
     const T t21 = t18 * t18;
     const T t22 = t17 * t17;
     const T t23 = T(4) * t19 * t16 * a + T(3) * t21 * t14 * a_minus_b + T(3) * t22 * t13 * b;
     const T t24 = T(3) * t21 * t14 - T(3) * t22 * t13 - t16 * t23 * b;
-    G_ap = (T(1) / T(15)) * w2 * seg7 * (T(5) * t19 * t16 - c * t16 * t23 - T(2) * t24 * seg7 * b) + (T(1) / T(15)) * t16 * t23 * w0 - (T(1) / T(15)) * w1 * t24 * seg7;
+    G_ap = (T(1) / T(15)) * seg7 * (T(5) * t19 * t16 - c * t16 * t23 - T(2) * seg7 * t24 * b) * w2 + (T(1) / T(15)) * t16 * t23 * w0 - (T(1) / T(15)) * seg7 * w1 * t24;
     const T t25 = t13 * t13;
     const T t26 = t25 * t25;
     const T t27 = t26 * t13;
     const T t28 = t14 * t14;
     const T t29 = t28 * t28;
     const T t30 = t29 * t14;
-    G_E = (T(1) / T(15)) * (T(3) * t27 * w0 + T(2) * t20 * w2 * seg7 + w1 * t19 * t16 - T(3) * seg8 * t30) * seg7;
+    G_E = (T(1) / T(15)) * seg7 * (T(2) * seg7 * t20 * w2 + T(3) * t27 * w0 + w1 * t19 * t16 - T(3) * seg8 * t30);
   }
   f = length * F;
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
@@ -9563,7 +9565,7 @@ T segment_cauchy_i5_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg9 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg9 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -9578,16 +9580,16 @@ T segment_cauchy_i5_w3_f(const T* pre, const SegmentPoint<T>& point) {
     F = M_beyond[2] * w2 + M_beyond[0] * w0 + M_beyond[1] * w1 + M_beyond[3] * w3;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t4 = T(1) / D;
-    const T t5 = T(1) / r0;
+    const T t4 = T(1) / r0;
+    const T t5 = T(1) / D;
     const T t6 = T(1) / r1;
-    const T t7 = b * t5 + t6 * a_minus_b;
+    const T t7 = b * t4 + t6 * a_minus_b;
     const T t8 = t6 * t6;
-    const T t9 = t5 * t5;
-    const T t10 = T(2) * t4 * t7 * a + t8 * t6 * a_minus_b + b * t5 * t9;
-    const T t11 = t8 * t6 - t5 * t9 - t4 * t10 * b;
-    const T t12 = t4 * t10 * c + T(2) * t11 * seg7 * b - T(3) * t4 * t7;
-    F = (T(1) / T(3)) * t4 * t10 * w0 - (T(1) / T(3)) * seg7 * (T(2) * seg7 * b * t12 - T(3) * seg7 * (t5 + t4 * b * t7 - t6) - t11 * seg7 * c) * w3 - (T(1) / T(3)) * seg7 * w2 * t12 - (T(1) / T(3)) * t11 * w1 * seg7;
+    const T t9 = t4 * t4;
+    const T t10 = T(2) * t5 * t7 * a + t8 * t6 * a_minus_b + b * t4 * t9;
+    const T t11 = t8 * t6 - t4 * t9 - t5 * t10 * b;
+    const T t12 = t5 * t10 * c + T(2) * t11 * b * seg7 - T(3) * t5 * t7;
+    F = (T(1) / T(3)) * (T(3) * seg7 * (t4 + t5 * b * t7 - t6) + t11 * seg7 * c - T(2) * b * seg7 * t12) * seg7 * w3 + (T(1) / T(3)) * t5 * t10 * w0 - (T(1) / T(3)) * t11 * w1 * seg7 - (T(1) / T(3)) * seg7 * w2 * t12;
   }
   f = length * F;
   return f;
@@ -9654,7 +9656,7 @@ std::array<T, 3> segment_cauchy_i5_w3_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
+    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
     foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
     foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
@@ -9669,7 +9671,7 @@ std::array<T, 3> segment_cauchy_i5_w3_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -9691,16 +9693,16 @@ std::array<T, 3> segment_cauchy_i5_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t12 = t11 * t11;
     const T t13 = T(5) * b * t6 + t7 * t9 - t12 * t10;
     const T t14 = b * t7 * t9 + t12 * t10 * a_minus_b - T(5) * t6 * D;
-    const T t15 = T(8) * b * seg7 * t13 - T(20) * t6 * c - T(5) * t14 * seg7;
+    const T t15 = T(5) * t14 * seg7 + T(20) * t6 * c - T(8) * b * t13 * seg7;
     const T t16 = T(4) * t7 * t8 - T(4) * t11 * t10 - T(3) * t14 * b * seg7;
-    G_ap = (T(1) / T(60)) * (T(6) * b * t15 * seg7 + T(5) * t16 * seg7 - T(12) * c * seg7 * t13) * seg7 * w3 + t6 * w0 + (T(1) / T(20)) * t15 * w2 * seg7 + (T(1) / T(5)) * w1 * seg7 * t13;
+    G_ap = t6 * w0 + (T(1) / T(5)) * w1 * t13 * seg7 - (T(1) / T(60)) * w3 * seg7 * (T(6) * b * t15 * seg7 + T(12) * c * t13 * seg7 - T(5) * t16 * seg7) - (T(1) / T(20)) * w2 * t15 * seg7;
     const T t17 = t7 * t7;
     const T t18 = t17 * t17;
     const T t19 = t18 * t7;
     const T t20 = t10 * t10;
     const T t21 = t20 * t20;
     const T t22 = t21 * t10;
-    G_E = (T(1) / T(120)) * (T(24) * t19 * w0 + T(4) * w2 * t16 * seg7 + T(3) * (T(6) * t14 * c * seg7 + T(4) * b * t16 * seg7 - T(3) * (T(4) * t11 * t10 * a_minus_b + T(3) * t14 * seg7 * D + T(4) * b * t7 * t8) * seg7) * seg7 * w3 - T(24) * t22 * seg8 - T(6) * t14 * w1 * seg7) * seg7;
+    G_E = (T(1) / T(120)) * seg7 * (T(24) * t19 * w0 + T(4) * w2 * t16 * seg7 + T(3) * (T(4) * b * t16 * seg7 + T(6) * t14 * c * seg7 - T(3) * (T(4) * t11 * t10 * a_minus_b + T(3) * t14 * D * seg7 + T(4) * b * t7 * t8) * seg7) * w3 * seg7 - T(6) * t14 * w1 * seg7 - T(24) * seg8 * t22);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t23 = T(1) / r0;
@@ -9714,16 +9716,16 @@ std::array<T, 3> segment_cauchy_i5_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t31 = t27 * t27;
     const T t32 = T(3) * b * t23 * t25 + T(4) * t30 * t29 * a + T(3) * t31 * t26 * a_minus_b;
     const T t33 = b * t32 * t29 + T(3) * t23 * t25 - T(3) * t31 * t26;
-    const T t34 = T(2) * b * t33 * seg7 + T(5) * t30 * t29 - c * t32 * t29;
+    const T t34 = c * t32 * t29 - T(5) * t30 * t29 - T(2) * b * t33 * seg7;
     const T t35 = t23 * t24 + b * t30 * t29 - t27 * t26;
-    G_ap = (T(1) / T(15)) * w2 * seg7 * t34 + (T(1) / T(15)) * t32 * t29 * w0 + (T(1) / T(15)) * w1 * t33 * seg7 + (T(1) / T(15)) * (T(5) * seg7 * t35 + T(2) * b * seg7 * t34 - t33 * c * seg7) * seg7 * w3;
+    G_ap = (T(1) / T(15)) * w1 * t33 * seg7 + (T(1) / T(15)) * t32 * t29 * w0 - (T(1) / T(15)) * w3 * seg7 * (t33 * c * seg7 + T(2) * b * seg7 * t34 - T(5) * t35 * seg7) - (T(1) / T(15)) * w2 * seg7 * t34;
     const T t36 = t23 * t23;
     const T t37 = t36 * t36;
     const T t38 = t37 * t23;
     const T t39 = t26 * t26;
     const T t40 = t39 * t39;
     const T t41 = t40 * t26;
-    G_E = (T(1) / T(15)) * (T(3) * t38 * w0 + w1 * t30 * t29 + T(2) * w2 * seg7 * t35 - T(3) * (t30 * c * t29 - T(3) * t28 * t29 - T(2) * b * seg7 * t35) * seg7 * w3 - T(3) * t41 * seg8) * seg7;
+    G_E = (T(1) / T(15)) * (T(3) * t38 * w0 + w1 * t30 * t29 + T(2) * w2 * t35 * seg7 + T(3) * w3 * (T(2) * b * t35 * seg7 + T(3) * t28 * t29 - t30 * c * t29) * seg7 - T(3) * seg8 * t41) * seg7;
   }
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
   grad[1] = (G_ap * foot1 - ab1 * G_E) * g_factor;
@@ -9794,7 +9796,7 @@ T segment_cauchy_i5_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
-    foot1 = -seg0 * (exact_cross[0] * ab2 - ab0 * exact_cross[2]);
+    foot1 = -(exact_cross[0] * ab2 - ab0 * exact_cross[2]) * seg0;
     foot2 = -(ab0 * exact_cross[1] - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -9809,7 +9811,7 @@ T segment_cauchy_i5_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -9823,53 +9825,53 @@ T segment_cauchy_i5_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_7 = J_downward(…)
     const T t5 = T(1) / r0;
-    const T t6 = T(1) / r1;
+    const T t6 = t5 * t5;
     const T t7 = t6 * t6;
-    const T t8 = t5 * t5;
+    const T t8 = T(1) / r1;
     const T t9 = t8 * t8;
-    const T t10 = t7 * t7;
+    const T t10 = t9 * t9;
     const T t11 = -b;
     const T t12 = J_downward<T>(7, a, D, t11, c, a_minus_b, q1);
-    const T t13 = t9 * t5 * b + t10 * t6 * a_minus_b - T(5) * t12 * D;
-    const T t14 = T(4) * t7 * t6 * a_minus_b + T(3) * t13 * D * seg7 + T(4) * t8 * t5 * b;
-    const T t15 = T(3) * t13 * seg7 * b + T(4) * t7 * t6 - T(4) * t8 * t5;
-    const T t16 = T(4) * t15 * seg7 * b + T(3) * t14 * seg7 - T(6) * c * t13 * seg7;
-    F = (T(1) / T(24)) * (T(3) * (T(8) * t5 - t14 * seg7 * b - T(8) * t6) * seg7 + T(2) * t15 * c * seg7 - T(2) * t16 * seg7 * b) * seg7 * w3 - (T(1) / T(24)) * t16 * w2 * seg7 - (T(1) / T(4)) * t13 * seg7 * w0 - (T(1) / T(12)) * t15 * w1 * seg7;
-    const T t17 = T(5) * t12 * b + t9 * t5 - t10 * t6;
+    const T t13 = t7 * t5 * b + t10 * t8 * a_minus_b - T(5) * t12 * D;
+    const T t14 = T(4) * t9 * t8 * a_minus_b + T(4) * t6 * t5 * b + T(3) * t13 * D * seg7;
+    const T t15 = T(4) * t9 * t8 + T(3) * t13 * seg7 * b - T(4) * t6 * t5;
+    const T t16 = T(6) * c * t13 * seg7 - T(3) * t14 * seg7 - T(4) * t15 * seg7 * b;
+    F = (T(1) / T(24)) * w2 * t16 * seg7 - (T(1) / T(12)) * w1 * t15 * seg7 - (T(1) / T(24)) * (T(3) * (t14 * seg7 * b + T(8) * t8 - T(8) * t5) * seg7 - T(2) * c * t15 * seg7 - T(2) * t16 * seg7 * b) * w3 * seg7 - (T(1) / T(4)) * t13 * w0 * seg7;
+    const T t17 = T(5) * t12 * b + t7 * t5 - t10 * t8;
     const T t18 = T(20) * c * t12 + T(5) * t13 * seg7 - T(8) * seg7 * b * t17;
-    G_ap = t12 * w0 + (T(1) / T(5)) * w1 * seg7 * t17 - (T(1) / T(60)) * (T(5) * t15 * seg7 + T(6) * t18 * seg7 * b + T(12) * c * seg7 * t17) * seg7 * w3 - (T(1) / T(20)) * t18 * w2 * seg7;
-    const T t19 = t6 * t6;
+    G_ap = t12 * w0 + (T(1) / T(5)) * w1 * seg7 * t17 - (T(1) / T(20)) * w2 * t18 * seg7 - (T(1) / T(60)) * (T(12) * c * seg7 * t17 + T(6) * t18 * seg7 * b + T(5) * t15 * seg7) * w3 * seg7;
+    const T t19 = t8 * t8;
     const T t20 = t19 * t19;
-    const T t21 = t20 * t6;
+    const T t21 = t20 * t8;
     const T t22 = t5 * t5;
     const T t23 = t22 * t22;
     const T t24 = t23 * t5;
-    G_E = -(T(1) / T(120)) * (T(6) * w1 * t13 * seg7 + T(4) * t15 * w2 * seg7 + T(3) * t16 * seg7 * w3 + T(24) * t21 * seg8 - T(24) * t24 * w0) * seg7;
+    G_E = -(T(1) / T(120)) * (T(24) * seg8 * t21 + T(6) * w1 * t13 * seg7 + T(4) * w2 * t15 * seg7 - T(3) * t16 * w3 * seg7 - T(24) * t24 * w0) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t25 = T(1) / D;
-    const T t26 = T(1) / r0;
-    const T t27 = T(1) / r1;
-    const T t28 = t26 * b + t27 * a_minus_b;
-    const T t29 = t27 * t27;
-    const T t30 = t26 * t26;
-    const T t31 = t29 * t27 * a_minus_b + t30 * t26 * b + T(2) * t25 * a * t28;
-    const T t32 = t31 * t25 * b + t30 * t26 - t29 * t27;
-    const T t33 = t31 * c * t25 - T(2) * t32 * seg7 * b - T(3) * t25 * t28;
-    F = (T(1) / T(3)) * (T(3) * (t25 * t28 * b + t26 - t27) * seg7 - T(2) * t33 * seg7 * b - c * t32 * seg7) * seg7 * w3 + (T(1) / T(3)) * t31 * t25 * w0 + (T(1) / T(3)) * w1 * t32 * seg7 - (T(1) / T(3)) * t33 * w2 * seg7;
-    const T t34 = t30 * t30;
-    const T t35 = t29 * t29;
-    const T t36 = T(3) * t34 * t26 * b + T(3) * t35 * t27 * a_minus_b + T(4) * t31 * t25 * a;
-    const T t37 = t36 * t25 * b + T(3) * t34 * t26 - T(3) * t35 * t27;
-    const T t38 = T(2) * t37 * seg7 * b + T(5) * t31 * t25 - c * t36 * t25;
-    G_ap = (T(1) / T(15)) * w1 * t37 * seg7 + (T(1) / T(15)) * t38 * w2 * seg7 + (T(1) / T(15)) * seg7 * w3 * (T(5) * t32 * seg7 + T(2) * t38 * seg7 * b - c * t37 * seg7) + (T(1) / T(15)) * t36 * t25 * w0;
+    const T t25 = T(1) / r1;
+    const T t26 = t25 * t25;
+    const T t27 = T(1) / r0;
+    const T t28 = t27 * t27;
+    const T t29 = T(1) / D;
+    const T t30 = t27 * b + t25 * a_minus_b;
+    const T t31 = t26 * t25 * a_minus_b + t28 * t27 * b + T(2) * t29 * a * t30;
+    const T t32 = t31 * t29 * b + t28 * t27 - t26 * t25;
+    const T t33 = T(2) * t32 * seg7 * b + T(3) * t29 * t30 - t31 * c * t29;
+    F = (T(1) / T(3)) * w1 * t32 * seg7 + (T(1) / T(3)) * t31 * t29 * w0 + (T(1) / T(3)) * w2 * t33 * seg7 + (T(1) / T(3)) * (T(2) * t33 * seg7 * b + T(3) * (t29 * t30 * b + t27 - t25) * seg7 - c * t32 * seg7) * w3 * seg7;
+    const T t34 = t28 * t28;
+    const T t35 = t26 * t26;
+    const T t36 = T(3) * t34 * t27 * b + T(3) * t35 * t25 * a_minus_b + T(4) * t31 * t29 * a;
+    const T t37 = t36 * t29 * b + T(3) * t34 * t27 - T(3) * t35 * t25;
+    const T t38 = c * t36 * t29 - T(2) * t37 * seg7 * b - T(5) * t31 * t29;
+    G_ap = (T(1) / T(15)) * w1 * t37 * seg7 + (T(1) / T(15)) * t36 * t29 * w0 - (T(1) / T(15)) * (c * t37 * seg7 + T(2) * seg7 * b * t38 - T(5) * t32 * seg7) * w3 * seg7 - (T(1) / T(15)) * w2 * seg7 * t38;
     const T t39 = t27 * t27;
     const T t40 = t39 * t39;
     const T t41 = t40 * t27;
-    const T t42 = t26 * t26;
+    const T t42 = t25 * t25;
     const T t43 = t42 * t42;
-    const T t44 = t43 * t26;
-    G_E = -(T(1) / T(15)) * (T(3) * t33 * seg7 * w3 + T(3) * t41 * seg8 - T(2) * w2 * t32 * seg7 - T(3) * t44 * w0 - t31 * w1 * t25) * seg7;
+    const T t44 = t43 * t25;
+    G_E = (T(1) / T(15)) * (T(3) * t33 * w3 * seg7 + T(2) * w2 * t32 * seg7 + T(3) * t41 * w0 + t31 * w1 * t29 - T(3) * seg8 * t44) * seg7;
   }
   f = F * length;
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
@@ -10089,7 +10091,7 @@ T segment_cauchy_i6_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = s * bp_bp + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -10190,7 +10192,7 @@ std::array<T, 3> segment_cauchy_i6_w0_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -10293,7 +10295,7 @@ T segment_cauchy_i6_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
-    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
+    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
     foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -10317,7 +10319,7 @@ T segment_cauchy_i6_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_moments_far_field<T>(6, 8, 1, a, b, c, c - T(1), M_flat.data());
     F = w0 * M_flat[0];
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * M_flat[2] * b * seg5;
+    G_E = w0 * M_flat[3] - seg5 * w0 * M_flat[2] * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -10330,7 +10332,7 @@ T segment_cauchy_i6_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t7 = T(1) / c;
     const T t8 = t7 * t7;
     const T t9 = t8 * t7;
-    const T t10 = -(T(1) / T(6)) * (t6 * w0 - t9 * w0) * seg5;
+    const T t10 = -(T(1) / T(6)) * seg5 * (t6 * w0 - t9 * w0);
     G_E = t10;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -10347,7 +10349,7 @@ T segment_cauchy_i6_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t19 = t14 * t13;
     const T t20 = t16 * t15;
     G_ap = (T(1) / T(48)) * (T(8) * t19 * a_minus_b + T(5) * t18 * a * t17 + T(8) * t20 * b) * w0 * t17;
-    const T t21 = -(T(1) / T(6)) * (t19 * w0 - t20 * w0) * seg5;
+    const T t21 = -(T(1) / T(6)) * seg5 * (t19 * w0 - t20 * w0);
     G_E = t21;
   }
   f = F * length;
@@ -10562,7 +10564,7 @@ T segment_cauchy_i6_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = ap_bp * s + T(1);
   T F;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg7 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg7 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -10586,7 +10588,7 @@ T segment_cauchy_i6_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t9 = T(1) / c;
     const T t10 = t9 * t9;
     const T t11 = T(2) * t8 * a_minus_b + T(3) * a * t6 * (b * t9 + t7 * a_minus_b + a * J2) + T(2) * b * t10;
-    F = (T(1) / T(8)) * t6 * t11 * w0 + (T(1) / T(8)) * w1 * (T(2) * t10 + t6 * b * t11 - T(2) * t8) * seg5;
+    F = (T(1) / T(8)) * t6 * t11 * w0 + (T(1) / T(8)) * w1 * seg5 * (T(2) * t10 + t6 * b * t11 - T(2) * t8);
   }
   f = F * length;
   return f;
@@ -10651,7 +10653,7 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
+    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
@@ -10666,7 +10668,7 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = ap_bp * s + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -10675,7 +10677,7 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(6, 8, 2, a, b, c, c - T(1), M_flat.data());
     const T t4 = w1 * M_flat[4] + w0 * M_flat[3];
     G_ap = t4;
-    G_E = M_flat[4] * w0 + w1 * M_flat[5] - b * t4 * seg5;
+    G_E = M_flat[4] * w0 + w1 * M_flat[5] - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -10687,23 +10689,23 @@ std::array<T, 3> segment_cauchy_i6_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * (w1 * M_beyond[0] + t7 * w0 - t10 * seg6) * seg5;
+    G_E = (T(1) / T(6)) * seg5 * (w1 * M_beyond[0] + t7 * w0 - t10 * seg6);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
     const T t12 = T(1) / t11;
     const T J2 = atan2(t11, c_minus_b) * t12;
-    const T t13 = T(1) / c;
+    const T t13 = T(1) / q1;
     const T t14 = t13 * t13;
     const T t15 = t14 * t13;
-    const T t16 = T(1) / q1;
+    const T t16 = T(1) / c;
     const T t17 = t16 * t16;
-    const T t18 = t17 * t16;
-    const T t19 = T(1) / D;
-    const T t20 = T(2) * t17 * a_minus_b + T(2) * b * t14 + T(3) * (b * t13 + J2 * a + t16 * a_minus_b) * t19 * a;
-    const T t21 = T(8) * t18 * a_minus_b + T(5) * t20 * t19 * a + T(8) * b * t15;
-    G_ap = (T(1) / T(48)) * (T(8) * t15 + b * t21 * t19 - T(8) * t18) * w1 * seg5 + (T(1) / T(48)) * t21 * w0 * t19;
-    G_E = -(T(1) / T(48)) * (T(8) * t18 * seg6 - w1 * t20 * t19 - T(8) * t15 * w0) * seg5;
+    const T t18 = T(1) / D;
+    const T t19 = T(2) * t14 * a_minus_b + T(2) * b * t17 + T(3) * (b * t16 + J2 * a + t13 * a_minus_b) * t18 * a;
+    const T t20 = t17 * t16;
+    const T t21 = T(8) * t15 * a_minus_b + T(5) * t19 * t18 * a + T(8) * b * t20;
+    G_ap = (T(1) / T(48)) * t21 * w0 * t18 + (T(1) / T(48)) * seg5 * (T(8) * t20 + b * t21 * t18 - T(8) * t15) * w1;
+    G_E = -(T(1) / T(48)) * seg5 * (T(8) * t15 * seg6 - w1 * t19 * t18 - T(8) * t20 * w0);
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -10763,15 +10765,15 @@ T segment_cauchy_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
+    foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
     foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
@@ -10787,7 +10789,7 @@ T segment_cauchy_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -10797,20 +10799,20 @@ T segment_cauchy_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = M_flat[0] * w0 + w1 * M_flat[1];
     const T t4 = M_flat[3] * w0 + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w1 * M_flat[5] + w0 * M_flat[4] - seg5 * t4 * b;
+    G_E = w1 * M_flat[5] + w0 * M_flat[4] - t4 * seg5 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(6, 8, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * w0 + w1 * M_beyond[1];
     G_ap = M_beyond[3] * w0 + w1 * M_beyond[4];
-    const T t5 = T(1) / q1;
+    const T t5 = T(1) / c;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
-    const T t8 = T(1) / c;
+    const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = -(T(1) / T(6)) * seg5 * (seg6 * t7 - w1 * M_beyond[0] - w0 * t10);
+    G_E = (T(1) / T(6)) * seg5 * (w1 * M_beyond[0] + w0 * t7 - seg6 * t10);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
@@ -10822,12 +10824,12 @@ T segment_cauchy_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t16 = t15 * t15;
     const T t17 = t14 * t14;
     const T t18 = T(3) * a * t13 * (a_minus_b * t14 + b * t15 + a * J2) + T(2) * b * t16 + T(2) * a_minus_b * t17;
-    F = (T(1) / T(8)) * w1 * seg5 * (t13 * t18 * b + T(2) * t16 - T(2) * t17) + (T(1) / T(8)) * t13 * t18 * w0;
+    F = (T(1) / T(8)) * t13 * t18 * w0 + (T(1) / T(8)) * w1 * seg5 * (t13 * t18 * b + T(2) * t16 - T(2) * t17);
     const T t19 = t17 * t14;
     const T t20 = t16 * t15;
     const T t21 = T(5) * a * t13 * t18 + T(8) * a_minus_b * t19 + T(8) * b * t20;
     G_ap = (T(1) / T(48)) * t21 * t13 * w0 - (T(1) / T(48)) * w1 * seg5 * (T(8) * t19 - T(8) * t20 - t21 * t13 * b);
-    G_E = -(T(1) / T(48)) * seg5 * (T(8) * seg6 * t19 - w1 * t13 * t18 - T(8) * w0 * t20);
+    G_E = (T(1) / T(48)) * seg5 * (w1 * t13 * t18 + T(8) * w0 * t20 - T(8) * seg6 * t19);
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -11045,7 +11047,7 @@ T segment_cauchy_i6_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = ap_bp * s + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg7 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg7 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -11064,14 +11066,14 @@ T segment_cauchy_i6_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t5 = T(1) / t4;
     const T J2 = atan2(t4, c_minus_b) * t5;
     const T t6 = T(1) / c;
-    const T t7 = t6 * t6;
-    const T t8 = T(1) / q1;
-    const T t9 = b * t6 + J2 * a + a_minus_b * t8;
-    const T t10 = T(1) / D;
-    const T t11 = t8 * t8;
-    const T t12 = T(3) * t9 * t10 * a + T(2) * a_minus_b * t11 + T(2) * b * t7;
-    const T t13 = T(2) * t7 + b * t12 * t10 - T(2) * t11;
-    F = (T(1) / T(8)) * t13 * w1 * seg5 + (T(1) / T(8)) * w0 * t12 * t10 - (T(1) / T(8)) * (t12 * c * t10 - T(2) * b * t13 * seg5 - T(4) * t9 * t10) * w2 * seg5;
+    const T t7 = T(1) / q1;
+    const T t8 = b * t6 + J2 * a + a_minus_b * t7;
+    const T t9 = T(1) / D;
+    const T t10 = t7 * t7;
+    const T t11 = t6 * t6;
+    const T t12 = T(3) * t8 * t9 * a + T(2) * a_minus_b * t10 + T(2) * b * t11;
+    const T t13 = T(2) * t11 + b * t12 * t9 - T(2) * t10;
+    F = (T(1) / T(8)) * w0 * t12 * t9 + (T(1) / T(8)) * seg5 * t13 * w1 + (T(1) / T(8)) * seg5 * (T(2) * seg5 * b * t13 + T(4) * t8 * t9 - t12 * c * t9) * w2;
   }
   f = F * length;
   return f;
@@ -11129,17 +11131,17 @@ std::array<T, 3> segment_cauchy_i6_w2_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = bp0 * ab0 + ab1 * bp1 + ab2 * bp2;
@@ -11173,24 +11175,24 @@ std::array<T, 3> segment_cauchy_i6_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * seg5 * (w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] + w0 * t7 - seg6 * t10);
+    G_E = (T(1) / T(6)) * (w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] + w0 * t7 - seg6 * t10) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
     const T t12 = T(1) / t11;
     const T J2 = t12 * atan2(t11, c_minus_b);
-    const T t13 = T(1) / c;
-    const T t14 = t13 * t13;
-    const T t15 = t14 * t13;
-    const T t16 = T(1) / D;
-    const T t17 = T(1) / q1;
+    const T t13 = T(1) / D;
+    const T t14 = T(1) / q1;
+    const T t15 = t14 * t14;
+    const T t16 = t15 * t14;
+    const T t17 = T(1) / c;
     const T t18 = t17 * t17;
-    const T t19 = t18 * t17;
-    const T t20 = T(3) * a * t16 * (b * t13 + a_minus_b * t17 + a * J2) + T(2) * a_minus_b * t18 + T(2) * b * t14;
-    const T t21 = T(8) * a_minus_b * t19 + T(5) * a * t16 * t20 + T(8) * b * t15;
-    const T t22 = T(8) * t15 + t16 * b * t21 - T(8) * t19;
-    G_ap = (T(1) / T(48)) * t22 * w1 * seg5 + (T(1) / T(48)) * t16 * w0 * t21 - (T(1) / T(48)) * w2 * (t16 * t21 * c - T(2) * b * t22 * seg5 - T(6) * t16 * t20) * seg5;
-    G_E = (T(1) / T(48)) * (t16 * t20 * w1 + T(2) * w2 * seg5 * (T(2) * t14 + t16 * t20 * b - T(2) * t18) + T(8) * w0 * t15 - T(8) * seg6 * t19) * seg5;
+    const T t19 = T(3) * a * t13 * (b * t17 + a_minus_b * t14 + a * J2) + T(2) * a_minus_b * t15 + T(2) * b * t18;
+    const T t20 = t18 * t17;
+    const T t21 = T(8) * a_minus_b * t16 + T(5) * a * t13 * t19 + T(8) * b * t20;
+    const T t22 = T(8) * t20 + t13 * b * t21 - T(8) * t16;
+    G_ap = (T(1) / T(48)) * t13 * w0 * t21 + (T(1) / T(48)) * t22 * seg5 * w1 - (T(1) / T(48)) * w2 * seg5 * (t13 * t21 * c - T(6) * t13 * t19 - T(2) * b * t22 * seg5);
+    G_E = (T(1) / T(48)) * seg5 * (t13 * t19 * w1 + T(2) * w2 * seg5 * (T(2) * t18 + t13 * t19 * b - T(2) * t15) + T(8) * w0 * t20 - T(8) * seg6 * t16);
   }
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
   grad[1] = -g_factor * (ab1 * G_E - foot1 * G_ap);
@@ -11275,7 +11277,7 @@ T segment_cauchy_i6_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -11312,12 +11314,12 @@ T segment_cauchy_i6_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t18 = t14 * t14;
     const T t19 = T(3) * a * t13 * t16 + T(2) * b * t17 + T(2) * a_minus_b * t18;
     const T t20 = T(2) * t18 - t13 * b * t19 - T(2) * t17;
-    F = (T(1) / T(8)) * t13 * w0 * t19 - (T(1) / T(8)) * seg5 * (T(2) * seg5 * t20 * b + t13 * t19 * c - T(4) * t13 * t16) * w2 - (T(1) / T(8)) * seg5 * t20 * w1;
+    F = (T(1) / T(8)) * t13 * w0 * t19 + (T(1) / T(8)) * seg5 * (T(4) * t13 * t16 - t13 * t19 * c - T(2) * seg5 * t20 * b) * w2 - (T(1) / T(8)) * seg5 * t20 * w1;
     const T t21 = t17 * t15;
     const T t22 = t18 * t14;
     const T t23 = T(5) * a * t13 * t19 + T(8) * b * t21 + T(8) * a_minus_b * t22;
     const T t24 = T(8) * t22 - t13 * t23 * b - T(8) * t21;
-    G_ap = (T(1) / T(48)) * t13 * t23 * w0 + (T(1) / T(48)) * seg5 * (T(6) * t13 * t19 - t13 * t23 * c - T(2) * seg5 * b * t24) * w2 - (T(1) / T(48)) * seg5 * w1 * t24;
+    G_ap = (T(1) / T(48)) * t13 * t23 * w0 - (T(1) / T(48)) * seg5 * w1 * t24 - (T(1) / T(48)) * seg5 * (T(2) * seg5 * b * t24 + t13 * t23 * c - T(6) * t13 * t19) * w2;
     G_E = (T(1) / T(48)) * seg5 * (t13 * w1 * t19 + T(8) * w0 * t21 - T(8) * seg6 * t22 - T(2) * seg5 * t20 * w2);
   }
   f = length * F;
@@ -11567,8 +11569,8 @@ T segment_cauchy_i6_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t11 = t9 * t9;
     const T t12 = T(2) * a_minus_b * t8 + T(3) * t6 * t10 * a + T(2) * b * t11;
     const T t13 = T(2) * t8 - T(2) * t11 - b * t6 * t12;
-    const T t14 = T(2) * b * t13 * seg5 + c * t6 * t12 - T(4) * t6 * t10;
-    F = (T(1) / T(8)) * w0 * t6 * t12 + (T(1) / T(8)) * w3 * (c * t13 * seg5 + T(4) * (t9 + b * t6 * t10 - t7) * seg5 - T(2) * b * t14 * seg5) * seg5 - (T(1) / T(8)) * w2 * t14 * seg5 - (T(1) / T(8)) * t13 * w1 * seg5;
+    const T t14 = c * t6 * t12 + T(2) * b * t13 * seg5 - T(4) * t6 * t10;
+    F = (T(1) / T(8)) * w0 * t6 * t12 - (T(1) / T(8)) * w3 * (T(2) * b * seg5 * t14 - T(4) * (t9 + b * t6 * t10 - t7) * seg5 - c * t13 * seg5) * seg5 - (T(1) / T(8)) * w2 * seg5 * t14 - (T(1) / T(8)) * t13 * seg5 * w1;
   }
   f = length * F;
   return f;
@@ -11635,7 +11637,7 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
+    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
     foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
@@ -11671,7 +11673,7 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * (t7 * w0 + M_beyond[0] * w1 + T(3) * w3 * M_beyond[2] + T(2) * w2 * M_beyond[1] - seg6 * t10) * seg5;
+    G_E = (T(1) / T(6)) * (t7 * w0 + M_beyond[0] * w1 + T(3) * w3 * M_beyond[2] + T(2) * w2 * M_beyond[1] - t10 * seg6) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
@@ -11681,17 +11683,17 @@ std::array<T, 3> segment_cauchy_i6_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t14 = t13 * t13;
     const T t15 = t14 * t13;
     const T t16 = T(1) / c;
-    const T t17 = b * t16 + a_minus_b * t13 + J2 * a;
-    const T t18 = T(1) / D;
-    const T t19 = t16 * t16;
-    const T t20 = T(2) * a_minus_b * t14 + T(3) * t17 * t18 * a + T(2) * b * t19;
-    const T t21 = t19 * t16;
-    const T t22 = T(8) * a_minus_b * t15 + T(5) * t20 * t18 * a + T(8) * b * t21;
-    const T t23 = T(8) * t15 - T(8) * t21 - b * t22 * t18;
-    const T t24 = T(2) * t14 - b * t20 * t18 - T(2) * t19;
-    const T t25 = T(2) * b * t23 * seg5 + t22 * c * t18 - T(6) * t20 * t18;
-    G_ap = (T(1) / T(48)) * t22 * t18 * w0 + (T(1) / T(48)) * (c * t23 * seg5 - T(6) * t24 * seg5 - T(2) * b * t25 * seg5) * w3 * seg5 - (T(1) / T(48)) * t23 * seg5 * w1 - (T(1) / T(48)) * w2 * t25 * seg5;
-    G_E = (T(1) / T(48)) * (T(8) * t21 * w0 + T(3) * (T(4) * t17 * t18 - c * t20 * t18 - T(2) * b * t24 * seg5) * w3 * seg5 + t20 * t18 * w1 - T(2) * w2 * t24 * seg5 - T(8) * seg6 * t15) * seg5;
+    const T t17 = t16 * t16;
+    const T t18 = t17 * t16;
+    const T t19 = b * t16 + a_minus_b * t13 + J2 * a;
+    const T t20 = T(1) / D;
+    const T t21 = T(2) * a_minus_b * t14 + T(3) * t19 * t20 * a + T(2) * b * t17;
+    const T t22 = T(8) * a_minus_b * t15 + T(5) * t21 * t20 * a + T(8) * b * t18;
+    const T t23 = T(8) * t15 - T(8) * t18 - b * t22 * t20;
+    const T t24 = T(6) * t21 * t20 - T(2) * b * seg5 * t23 - t22 * c * t20;
+    const T t25 = T(2) * t14 - b * t21 * t20 - T(2) * t17;
+    G_ap = (T(1) / T(48)) * (c * seg5 * t23 + T(2) * b * t24 * seg5 - T(6) * t25 * seg5) * w3 * seg5 + (T(1) / T(48)) * t22 * t20 * w0 + (T(1) / T(48)) * w2 * t24 * seg5 - (T(1) / T(48)) * seg5 * t23 * w1;
+    G_E = (T(1) / T(48)) * (T(8) * t18 * w0 + T(3) * w3 * seg5 * (T(4) * t19 * t20 - T(2) * b * t25 * seg5 - c * t21 * t20) + t21 * t20 * w1 - T(8) * t15 * seg6 - T(2) * w2 * t25 * seg5) * seg5;
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -11755,7 +11757,7 @@ T segment_cauchy_i6_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -11777,7 +11779,7 @@ T segment_cauchy_i6_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -11806,23 +11808,23 @@ T segment_cauchy_i6_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t11 = sqrt(D);
     const T t12 = T(1) / t11;
     const T J2 = t12 * atan2(t11, c_minus_b);
-    const T t13 = T(1) / q1;
-    const T t14 = T(1) / c;
-    const T t15 = a_minus_b * t13 + J2 * a + b * t14;
-    const T t16 = T(1) / D;
-    const T t17 = t14 * t14;
-    const T t18 = t13 * t13;
-    const T t19 = T(2) * b * t17 + T(2) * a_minus_b * t18 + T(3) * t15 * t16 * a;
-    const T t20 = t19 * t16 * b + T(2) * t17 - T(2) * t18;
-    const T t21 = T(4) * t15 * t16 + T(2) * t20 * b * seg5 - t19 * t16 * c;
-    F = (T(1) / T(8)) * w3 * (T(2) * b * seg5 * t21 - T(4) * (t13 - t14 - t15 * t16 * b) * seg5 - t20 * seg5 * c) * seg5 + (T(1) / T(8)) * t20 * w1 * seg5 + (T(1) / T(8)) * t19 * t16 * w0 + (T(1) / T(8)) * w2 * seg5 * t21;
-    const T t22 = t17 * t14;
-    const T t23 = t18 * t13;
-    const T t24 = T(8) * b * t22 + T(8) * a_minus_b * t23 + T(5) * t19 * t16 * a;
-    const T t25 = t16 * b * t24 + T(8) * t22 - T(8) * t23;
-    const T t26 = t16 * t24 * c - T(6) * t19 * t16 - T(2) * t25 * b * seg5;
-    G_ap = (T(1) / T(48)) * w3 * (T(6) * t20 * seg5 - t25 * seg5 * c - T(2) * t26 * b * seg5) * seg5 + (T(1) / T(48)) * t16 * w0 * t24 + (T(1) / T(48)) * t25 * w1 * seg5 - (T(1) / T(48)) * t26 * w2 * seg5;
-    G_E = (T(1) / T(48)) * (t19 * t16 * w1 + T(3) * w3 * seg5 * t21 + T(8) * w0 * t22 + T(2) * t20 * w2 * seg5 - T(8) * seg6 * t23) * seg5;
+    const T t13 = T(1) / c;
+    const T t14 = t13 * t13;
+    const T t15 = T(1) / q1;
+    const T t16 = t15 * t15;
+    const T t17 = a_minus_b * t15 + J2 * a + b * t13;
+    const T t18 = T(1) / D;
+    const T t19 = T(2) * b * t14 + T(2) * a_minus_b * t16 + T(3) * t17 * t18 * a;
+    const T t20 = t19 * t18 * b + T(2) * t14 - T(2) * t16;
+    const T t21 = T(4) * t17 * t18 + T(2) * t20 * b * seg5 - t19 * t18 * c;
+    F = (T(1) / T(8)) * t19 * t18 * w0 + (T(1) / T(8)) * t21 * seg5 * w2 + (T(1) / T(8)) * t20 * w1 * seg5 - (T(1) / T(8)) * w3 * (t20 * seg5 * c + T(4) * (t15 - t13 - t17 * t18 * b) * seg5 - T(2) * t21 * b * seg5) * seg5;
+    const T t22 = t14 * t13;
+    const T t23 = t16 * t15;
+    const T t24 = T(8) * b * t22 + T(8) * a_minus_b * t23 + T(5) * t19 * t18 * a;
+    const T t25 = t18 * b * t24 + T(8) * t22 - T(8) * t23;
+    const T t26 = t18 * t24 * c - T(2) * t25 * b * seg5 - T(6) * t19 * t18;
+    G_ap = (T(1) / T(48)) * t18 * w0 * t24 + (T(1) / T(48)) * t25 * w1 * seg5 - (T(1) / T(48)) * w3 * (t25 * seg5 * c + T(2) * b * seg5 * t26 - T(6) * t20 * seg5) * seg5 - (T(1) / T(48)) * seg5 * t26 * w2;
+    G_E = -(T(1) / T(48)) * seg5 * (T(8) * seg6 * t23 - t19 * t18 * w1 - T(2) * t20 * seg5 * w2 - T(3) * w3 * t21 * seg5 - T(8) * w0 * t22);
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -12043,7 +12045,7 @@ T segment_cauchy_i7_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg8 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg8 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -12129,7 +12131,7 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const T* pre, const SegmentPoint<T>& 
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
-    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
@@ -12143,7 +12145,7 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -12151,7 +12153,7 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(7, 9, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * seg7 * b * M_flat[2];
+    G_E = w0 * M_flat[3] - w0 * b * M_flat[2] * seg7;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -12167,7 +12169,7 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const T* pre, const SegmentPoint<T>& 
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
     const T t13 = t12 * t9;
-    const T t14 = (T(1) / T(7)) * seg7 * (w0 * t8 - w0 * t13);
+    const T t14 = (T(1) / T(7)) * (w0 * t8 - w0 * t13) * seg7;
     G_E = t14;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -12189,7 +12191,7 @@ std::array<T, 3> segment_cauchy_i7_w0_grad(const T* pre, const SegmentPoint<T>& 
     const T t29 = t28 * t20;
     const T t30 = t29 * t29;
     const T t31 = t30 * t20;
-    const T t32 = (T(1) / T(7)) * seg7 * (w0 * t27 - w0 * t31);
+    const T t32 = (T(1) / T(7)) * (w0 * t27 - w0 * t31) * seg7;
     G_E = t32;
   }
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
@@ -12272,7 +12274,7 @@ T segment_cauchy_i7_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -12571,7 +12573,7 @@ T segment_cauchy_i7_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t9 = t8 * t8;
     const T t10 = t6 * t6;
     const T t11 = T(4) * (t6 * t5 * b + t7 * a_minus_b * t8 + T(2) * t4 * a * (t5 * b + t7 * a_minus_b)) * t4 * a + T(3) * t7 * a_minus_b * t9 + T(3) * t10 * t5 * b;
-    F = (T(1) / T(15)) * w0 * t4 * t11 + (T(1) / T(15)) * seg7 * (T(3) * t10 * t5 + t4 * t11 * b - T(3) * t7 * t9) * w1;
+    F = (T(1) / T(15)) * w0 * t4 * t11 + (T(1) / T(15)) * (T(3) * t10 * t5 + t4 * t11 * b - T(3) * t7 * t9) * w1 * seg7;
   }
   f = length * F;
   return f;
@@ -12651,7 +12653,7 @@ std::array<T, 3> segment_cauchy_i7_w1_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -12660,23 +12662,23 @@ std::array<T, 3> segment_cauchy_i7_w1_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(7, 9, 2, a, b, c, c - T(1), M_flat.data());
     const T t4 = w0 * M_flat[3] + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w1 * M_flat[5] + w0 * M_flat[4] - t4 * seg7 * b;
+    G_E = w1 * M_flat[5] + w0 * M_flat[4] - seg7 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(7, 9, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / r1;
+    const T t10 = T(1) / r0;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(7)) * seg7 * (M_beyond[0] * w1 + w0 * t9 - seg8 * t14);
+    G_E = -(T(1) / T(7)) * (t9 * seg8 - M_beyond[0] * w1 - w0 * t14) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / D;
@@ -12691,15 +12693,15 @@ std::array<T, 3> segment_cauchy_i7_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t24 = t18 * t17;
     const T t25 = T(2) * t15 * t22 * a + T(5) * t19 * a_minus_b * t23 + T(5) * t24 * b * t16;
     G_ap = (T(1) / T(35)) * w0 * t15 * t25 + (T(1) / T(35)) * (T(5) * t24 * t16 + t15 * t25 * b - T(5) * t19 * t23) * w1 * seg7;
-    const T t26 = t16 * t16;
-    const T t27 = t26 * t16;
+    const T t26 = t19 * t19;
+    const T t27 = t26 * t19;
     const T t28 = t27 * t27;
-    const T t29 = t28 * t16;
-    const T t30 = t19 * t19;
-    const T t31 = t30 * t19;
+    const T t29 = t28 * t19;
+    const T t30 = t16 * t16;
+    const T t31 = t30 * t16;
     const T t32 = t31 * t31;
-    const T t33 = t32 * t19;
-    G_E = (T(1) / T(105)) * (w1 * t15 * t22 + T(15) * w0 * t29 - T(15) * seg8 * t33) * seg7;
+    const T t33 = t32 * t16;
+    G_E = -(T(1) / T(105)) * seg7 * (T(15) * t29 * seg8 - w1 * t15 * t22 - T(15) * w0 * t33);
   }
   grad[0] = g_factor * (G_ap * foot0 - G_E * ab0);
   grad[1] = -g_factor * (G_E * ab1 - foot1 * G_ap);
@@ -12768,8 +12770,8 @@ T segment_cauchy_i7_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
-    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
@@ -12783,7 +12785,7 @@ T segment_cauchy_i7_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -12800,17 +12802,17 @@ T segment_cauchy_i7_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_moments_beyond_end<T>(7, 9, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = w0 * M_beyond[0] + w1 * M_beyond[1];
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / r1;
+    const T t5 = T(1) / r0;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / r0;
+    const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(7)) * (seg8 * t9 - w1 * M_beyond[0] - w0 * t14) * seg7;
+    G_E = (T(1) / T(7)) * (w1 * M_beyond[0] + w0 * t9 - t14 * seg8) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r0;
@@ -12826,15 +12828,15 @@ T segment_cauchy_i7_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t24 = t20 * t19;
     const T t25 = T(2) * t22 * a * t21 + T(5) * t24 * t18 * a_minus_b + T(5) * t23 * t15 * b;
     G_ap = (T(1) / T(35)) * w1 * seg7 * (T(5) * t23 * t15 + t25 * t21 * b - T(5) * t24 * t18) + (T(1) / T(35)) * w0 * t25 * t21;
-    const T t26 = t18 * t18;
-    const T t27 = t26 * t18;
+    const T t26 = t15 * t15;
+    const T t27 = t26 * t15;
     const T t28 = t27 * t27;
-    const T t29 = t28 * t18;
-    const T t30 = t15 * t15;
-    const T t31 = t30 * t15;
+    const T t29 = t28 * t15;
+    const T t30 = t18 * t18;
+    const T t31 = t30 * t18;
     const T t32 = t31 * t31;
-    const T t33 = t32 * t15;
-    G_E = -(T(1) / T(105)) * (T(15) * seg8 * t29 - w1 * t22 * t21 - T(15) * w0 * t33) * seg7;
+    const T t33 = t32 * t18;
+    G_E = (T(1) / T(105)) * (w1 * t22 * t21 + T(15) * w0 * t29 - T(15) * t33 * seg8) * seg7;
   }
   f = F * length;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -13088,7 +13090,7 @@ T segment_cauchy_i7_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t11 = t8 * a_minus_b * t9 + b * t6 * t5 + T(2) * (b * t5 + t8 * a_minus_b) * t4 * a;
     const T t12 = T(3) * b * t7 * t5 + T(3) * t8 * a_minus_b * t10 + T(4) * t11 * t4 * a;
     const T t13 = T(3) * t7 * t5 + b * t4 * t12 - T(3) * t8 * t10;
-    F = (T(1) / T(15)) * t4 * t12 * w0 + (T(1) / T(15)) * seg7 * w1 * t13 + (T(1) / T(15)) * seg7 * w2 * (T(5) * t11 * t4 + T(2) * b * seg7 * t13 - c * t4 * t12);
+    F = (T(1) / T(15)) * t4 * t12 * w0 + (T(1) / T(15)) * (T(2) * b * t13 * seg7 + T(5) * t11 * t4 - c * t4 * t12) * w2 * seg7 + (T(1) / T(15)) * w1 * t13 * seg7;
   }
   f = length * F;
   return f;
@@ -13155,7 +13157,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const T* pre, const SegmentPoint<T>& 
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
     foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
@@ -13169,7 +13171,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -13178,7 +13180,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const T* pre, const SegmentPoint<T>& 
     segment_moments_far_field<T>(7, 9, 3, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[6] * w2 + M_flat[4] * w0 + w1 * M_flat[5];
     G_ap = t4;
-    G_E = w1 * M_flat[6] + w2 * M_flat[7] + w0 * M_flat[5] - t4 * seg7 * b;
+    G_E = w1 * M_flat[6] + w2 * M_flat[7] + w0 * M_flat[5] - seg7 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -13194,7 +13196,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(7)) * seg7 * (t9 * w0 + w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] - seg8 * t14);
+    G_E = (T(1) / T(7)) * seg7 * (t9 * w0 + w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] - t14 * seg8);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / D;
@@ -13209,7 +13211,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t24 = T(3) * t16 * a_minus_b * t18 + T(3) * t20 * t22 * b + T(4) * (T(2) * t15 * a * (t20 * b + t16 * a_minus_b) + t20 * t21 * b + t16 * a_minus_b * t17) * t15 * a;
     const T t25 = T(5) * t16 * a_minus_b * t19 + T(5) * t20 * t23 * b + T(2) * t24 * t15 * a;
     const T t26 = t15 * b * t25 + T(5) * t20 * t23 - T(5) * t16 * t19;
-    G_ap = (T(1) / T(35)) * w1 * seg7 * t26 + (T(1) / T(35)) * t15 * w0 * t25 - (T(1) / T(105)) * w2 * seg7 * (T(3) * c * t15 * t25 - T(6) * seg7 * b * t26 - T(7) * t24 * t15);
+    G_ap = (T(1) / T(35)) * w1 * seg7 * t26 + (T(1) / T(35)) * t15 * w0 * t25 - (T(1) / T(105)) * seg7 * w2 * (T(3) * c * t15 * t25 - T(6) * seg7 * b * t26 - T(7) * t24 * t15);
     const T t27 = t20 * t20;
     const T t28 = t27 * t20;
     const T t29 = t28 * t28;
@@ -13218,7 +13220,7 @@ std::array<T, 3> segment_cauchy_i7_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t32 = t31 * t16;
     const T t33 = t32 * t32;
     const T t34 = t33 * t16;
-    G_E = (T(1) / T(105)) * (w1 * t24 * t15 + T(15) * t30 * w0 + T(2) * w2 * (t24 * t15 * b + T(3) * t20 * t22 - T(3) * t16 * t18) * seg7 - T(15) * seg8 * t34) * seg7;
+    G_E = (T(1) / T(105)) * (T(2) * seg7 * w2 * (t24 * t15 * b + T(3) * t20 * t22 - T(3) * t16 * t18) + w1 * t24 * t15 + T(15) * t30 * w0 - T(15) * t34 * seg8) * seg7;
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
   grad[1] = g_factor * (foot1 * G_ap - G_E * ab1);
@@ -13330,7 +13332,7 @@ T segment_cauchy_i7_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(7)) * seg7 * (T(2) * w2 * M_beyond[1] + w0 * t9 + w1 * M_beyond[0] - t14 * seg8);
+    G_E = (T(1) / T(7)) * (T(2) * w2 * M_beyond[1] + w0 * t9 + w1 * M_beyond[0] - seg8 * t14) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r0;
@@ -13343,21 +13345,21 @@ T segment_cauchy_i7_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t22 = T(2) * (a_minus_b * t18 + b * t15) * a * t21 + a_minus_b * t19 * t18 + b * t16 * t15;
     const T t23 = T(3) * b * t17 * t15 + T(3) * a_minus_b * t20 * t18 + T(4) * t22 * a * t21;
     const T t24 = T(3) * t20 * t18 - b * t23 * t21 - T(3) * t17 * t15;
-    F = (T(1) / T(15)) * w0 * t23 * t21 - (T(1) / T(15)) * seg7 * w2 * (c * t23 * t21 + T(2) * b * t24 * seg7 - T(5) * t22 * t21) - (T(1) / T(15)) * w1 * t24 * seg7;
+    F = (T(1) / T(15)) * w0 * t23 * t21 - (T(1) / T(15)) * seg7 * (c * t23 * t21 + T(2) * b * seg7 * t24 - T(5) * t22 * t21) * w2 - (T(1) / T(15)) * seg7 * w1 * t24;
     const T t25 = t17 * t16;
     const T t26 = t20 * t19;
     const T t27 = T(5) * b * t25 * t15 + T(5) * a_minus_b * t26 * t18 + T(2) * t23 * a * t21;
     const T t28 = T(5) * t26 * t18 - b * t21 * t27 - T(5) * t25 * t15;
-    G_ap = (T(1) / T(105)) * (T(7) * t23 * t21 - T(3) * c * t21 * t27 - T(6) * b * seg7 * t28) * seg7 * w2 + (T(1) / T(35)) * w0 * t21 * t27 - (T(1) / T(35)) * w1 * seg7 * t28;
-    const T t29 = t18 * t18;
-    const T t30 = t29 * t18;
+    G_ap = (T(1) / T(35)) * w0 * t21 * t27 + (T(1) / T(105)) * seg7 * (T(7) * t23 * t21 - T(3) * c * t21 * t27 - T(6) * b * seg7 * t28) * w2 - (T(1) / T(35)) * seg7 * w1 * t28;
+    const T t29 = t15 * t15;
+    const T t30 = t29 * t15;
     const T t31 = t30 * t30;
-    const T t32 = t31 * t18;
-    const T t33 = t15 * t15;
-    const T t34 = t33 * t15;
+    const T t32 = t31 * t15;
+    const T t33 = t18 * t18;
+    const T t34 = t33 * t18;
     const T t35 = t34 * t34;
-    const T t36 = t35 * t15;
-    G_E = -(T(1) / T(105)) * seg7 * (T(2) * t24 * seg7 * w2 + T(15) * t32 * seg8 - T(15) * w0 * t36 - w1 * t23 * t21);
+    const T t36 = t35 * t18;
+    G_E = (T(1) / T(105)) * seg7 * (T(15) * w0 * t32 + w1 * t23 * t21 - T(15) * seg8 * t36 - T(2) * seg7 * t24 * w2);
   }
   f = F * length;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -13591,7 +13593,7 @@ T segment_cauchy_i7_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg9 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg9 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -13616,8 +13618,8 @@ T segment_cauchy_i7_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t11 = t4 * b * t5 + T(2) * a * t7 * (t4 * b + t8 * a_minus_b) + t9 * t8 * a_minus_b;
     const T t12 = T(3) * t10 * t8 * a_minus_b + T(4) * a * t7 * t11 + T(3) * t4 * b * t6;
     const T t13 = T(3) * t4 * t6 + t7 * t12 * b - T(3) * t10 * t8;
-    const T t14 = T(2) * seg7 * b * t13 + T(5) * t7 * t11 - t7 * t12 * c;
-    F = (T(1) / T(15)) * seg7 * w1 * t13 + (T(1) / T(15)) * (T(2) * seg7 * b * t14 - seg7 * c * t13 - T(5) * seg7 * (t9 * t8 - t4 * t5 - t7 * t11 * b)) * seg7 * w3 + (T(1) / T(15)) * t7 * t12 * w0 + (T(1) / T(15)) * seg7 * t14 * w2;
+    const T t14 = T(2) * b * t13 * seg7 + T(5) * t7 * t11 - t7 * t12 * c;
+    F = (T(1) / T(15)) * w1 * t13 * seg7 + (T(1) / T(15)) * t14 * w2 * seg7 + (T(1) / T(15)) * t7 * t12 * w0 - (T(1) / T(15)) * (T(5) * (t9 * t8 - t4 * t5 - t7 * t11 * b) * seg7 + c * t13 * seg7 - T(2) * t14 * b * seg7) * seg7 * w3;
   }
   f = F * length;
   return f;
@@ -13676,16 +13678,16 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = -(ab1 * exact_cross[2] - ab2 * exact_cross[1]) * seg0;
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
@@ -13724,7 +13726,7 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(7)) * (t9 * seg8 - w1 * M_beyond[0] - T(3) * M_beyond[2] * w3 - T(2) * M_beyond[1] * w2 - t14 * w0) * seg7;
+    G_E = -(T(1) / T(7)) * (seg8 * t9 - w1 * M_beyond[0] - T(3) * M_beyond[2] * w3 - T(2) * M_beyond[1] * w2 - t14 * w0) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r0;
@@ -13740,9 +13742,9 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t25 = t22 * t21;
     const T t26 = T(5) * b * t15 * t18 + T(2) * t19 * a * t24 + T(5) * t25 * a_minus_b * t20;
     const T t27 = T(5) * t25 * t20 - b * t26 * t19 - T(5) * t15 * t18;
-    const T t28 = T(6) * b * seg7 * t27 + T(3) * c * t26 * t19 - T(7) * t19 * t24;
+    const T t28 = T(3) * c * t26 * t19 + T(6) * b * seg7 * t27 - T(7) * t19 * t24;
     const T t29 = T(3) * t15 * t17 + b * t19 * t24 - T(3) * t22 * t20;
-    G_ap = (T(1) / T(35)) * t26 * t19 * w0 - (T(1) / T(35)) * w1 * seg7 * t27 - (T(1) / T(105)) * w2 * seg7 * t28 - (T(1) / T(105)) * seg7 * (T(2) * b * seg7 * t28 - T(7) * t29 * seg7 - T(3) * seg7 * c * t27) * w3;
+    G_ap = (T(1) / T(35)) * t26 * t19 * w0 - (T(1) / T(35)) * w1 * seg7 * t27 - (T(1) / T(105)) * seg7 * (T(2) * b * seg7 * t28 - T(3) * seg7 * c * t27 - T(7) * t29 * seg7) * w3 - (T(1) / T(105)) * seg7 * w2 * t28;
     const T t30 = t20 * t20;
     const T t31 = t30 * t20;
     const T t32 = t31 * t31;
@@ -13751,7 +13753,7 @@ std::array<T, 3> segment_cauchy_i7_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t35 = t34 * t15;
     const T t36 = t35 * t35;
     const T t37 = t36 * t15;
-    G_E = -(T(1) / T(105)) * (T(15) * t33 * seg8 + T(3) * seg7 * w3 * (c * t19 * t24 - T(2) * t29 * b * seg7 - T(5) * t19 * t23) - w1 * t19 * t24 - T(15) * t37 * w0 - T(2) * t29 * w2 * seg7) * seg7;
+    G_E = -(T(1) / T(105)) * seg7 * (T(15) * seg8 * t33 + T(3) * (c * t19 * t24 - T(2) * t29 * b * seg7 - T(5) * t19 * t23) * seg7 * w3 - w1 * t19 * t24 - T(2) * t29 * seg7 * w2 - T(15) * t37 * w0);
   }
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
   grad[1] = g_factor * (G_ap * foot1 - ab1 * G_E);
@@ -13813,9 +13815,9 @@ T segment_cauchy_i7_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -13837,7 +13839,7 @@ T segment_cauchy_i7_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -13847,7 +13849,7 @@ T segment_cauchy_i7_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = w1 * M_flat[1] + w2 * M_flat[2] + w0 * M_flat[0] + M_flat[3] * w3;
     const T t4 = M_flat[7] * w2 + M_flat[8] * w3 + M_flat[6] * w1 + w0 * M_flat[5];
     G_ap = t4;
-    G_E = M_flat[9] * w3 + w2 * M_flat[8] + w1 * M_flat[7] + w0 * M_flat[6] - b * t4 * seg7;
+    G_E = M_flat[9] * w3 + w2 * M_flat[8] + w1 * M_flat[7] + w0 * M_flat[6] - seg7 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -13877,23 +13879,23 @@ T segment_cauchy_i7_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t22 = T(2) * a * t21 * (t18 * b + t15 * a_minus_b) + t15 * a_minus_b * t16 + t18 * b * t19;
     const T t23 = T(3) * t15 * a_minus_b * t17 + T(3) * t18 * b * t20 + T(4) * t22 * a * t21;
     const T t24 = t23 * t21 * b + T(3) * t18 * t20 - T(3) * t15 * t17;
-    const T t25 = T(2) * b * seg7 * t24 + T(5) * t22 * t21 - t23 * t21 * c;
-    F = (T(1) / T(15)) * seg7 * (T(2) * b * seg7 * t25 + T(5) * (t18 * t19 + t22 * t21 * b - t15 * t16) * seg7 - seg7 * c * t24) * w3 + (T(1) / T(15)) * w0 * t23 * t21 + (T(1) / T(15)) * seg7 * w2 * t25 + (T(1) / T(15)) * w1 * seg7 * t24;
+    const T t25 = T(2) * seg7 * b * t24 + T(5) * t22 * t21 - t23 * t21 * c;
+    F = (T(1) / T(15)) * seg7 * t25 * w2 + (T(1) / T(15)) * w0 * t23 * t21 + (T(1) / T(15)) * seg7 * w1 * t24 - (T(1) / T(15)) * seg7 * (seg7 * c * t24 - T(5) * (t18 * t19 + t22 * t21 * b - t15 * t16) * seg7 - T(2) * seg7 * b * t25) * w3;
     const T t26 = t20 * t19;
     const T t27 = t17 * t16;
     const T t28 = T(5) * t18 * b * t26 + T(5) * t15 * a_minus_b * t27 + T(2) * a * t23 * t21;
     const T t29 = t21 * t28 * b + T(5) * t18 * t26 - T(5) * t15 * t27;
-    const T t30 = T(7) * t23 * t21 + T(6) * b * seg7 * t29 - T(3) * t21 * t28 * c;
-    G_ap = (T(1) / T(35)) * w1 * seg7 * t29 + (T(1) / T(105)) * seg7 * t30 * w2 + (T(1) / T(35)) * w0 * t21 * t28 - (T(1) / T(105)) * seg7 * (T(3) * seg7 * t29 * c - T(7) * seg7 * t24 - T(2) * b * seg7 * t30) * w3;
-    const T t31 = t18 * t18;
-    const T t32 = t31 * t18;
+    const T t30 = T(7) * t23 * t21 + T(6) * seg7 * b * t29 - T(3) * t21 * t28 * c;
+    G_ap = (T(1) / T(105)) * t30 * seg7 * w2 + (T(1) / T(105)) * seg7 * (T(7) * seg7 * t24 + T(2) * t30 * seg7 * b - T(3) * seg7 * t29 * c) * w3 + (T(1) / T(35)) * seg7 * w1 * t29 + (T(1) / T(35)) * w0 * t21 * t28;
+    const T t31 = t15 * t15;
+    const T t32 = t31 * t15;
     const T t33 = t32 * t32;
-    const T t34 = t33 * t18;
-    const T t35 = t15 * t15;
-    const T t36 = t35 * t15;
+    const T t34 = t33 * t15;
+    const T t35 = t18 * t18;
+    const T t36 = t35 * t18;
     const T t37 = t36 * t36;
-    const T t38 = t37 * t15;
-    G_E = (T(1) / T(105)) * seg7 * (T(3) * seg7 * t25 * w3 + t23 * t21 * w1 + T(15) * w0 * t34 + T(2) * seg7 * w2 * t24 - T(15) * t38 * seg8);
+    const T t38 = t37 * t18;
+    G_E = -(T(1) / T(105)) * seg7 * (T(15) * t34 * seg8 - t23 * t21 * w1 - T(2) * seg7 * w2 * t24 - T(15) * w0 * t38 - T(3) * seg7 * t25 * w3);
   }
   f = length * F;
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
@@ -14117,7 +14119,7 @@ T segment_cauchy_i8_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -14197,7 +14199,7 @@ std::array<T, 3> segment_cauchy_i8_w0_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - ab1 * seg0 * ab_ap;
     foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
@@ -14228,7 +14230,7 @@ std::array<T, 3> segment_cauchy_i8_w0_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(8, 10, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - b * M_flat[2] * seg5 * w0;
+    G_E = M_flat[3] * w0 - b * seg5 * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -14316,17 +14318,17 @@ T segment_cauchy_i8_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
@@ -14616,15 +14618,15 @@ T segment_cauchy_i8_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = sqrt(D);
     const T t5 = T(1) / t4;
     const T J2 = atan2(t4, c_minus_b) * t5;
-    const T t6 = T(1) / c;
-    const T t7 = t6 * t6;
-    const T t8 = t7 * t6;
-    const T t9 = T(1) / D;
-    const T t10 = T(1) / q1;
-    const T t11 = t10 * t10;
-    const T t12 = t11 * t10;
-    const T t13 = T(5) * a * t9 * (T(3) * (a * J2 + t6 * b + a_minus_b * t10) * a * t9 + T(2) * a_minus_b * t11 + T(2) * t7 * b) + T(8) * t8 * b + T(8) * a_minus_b * t12;
-    F = (T(1) / T(48)) * w1 * (T(8) * t8 + t13 * t9 * b - T(8) * t12) * seg5 + (T(1) / T(48)) * w0 * t13 * t9;
+    const T t6 = T(1) / D;
+    const T t7 = T(1) / c;
+    const T t8 = T(1) / q1;
+    const T t9 = t8 * t8;
+    const T t10 = t7 * t7;
+    const T t11 = t10 * t7;
+    const T t12 = t9 * t8;
+    const T t13 = T(5) * a * t6 * (T(3) * (a * J2 + t7 * b + a_minus_b * t8) * a * t6 + T(2) * a_minus_b * t9 + T(2) * t10 * b) + T(8) * t11 * b + T(8) * a_minus_b * t12;
+    F = (T(1) / T(48)) * w0 * t13 * t6 + (T(1) / T(48)) * w1 * seg5 * (T(8) * t11 + t13 * t6 * b - T(8) * t12);
   }
   f = F * length;
   return f;
@@ -14681,17 +14683,17 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab_ap * ab0;
-    foot1 = ap1 - seg0 * ab_ap * ab1;
-    foot2 = ap2 - seg0 * ab_ap * ab2;
+    foot0 = ap0 - ab_ap * seg0 * ab0;
+    foot1 = ap1 - ab_ap * ab1 * seg0;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
-    foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
+    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
+    foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
   const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
@@ -14719,13 +14721,13 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(8, 10, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * w1 + w0 * M_beyond[3];
-    const T t5 = T(1) / q1;
+    const T t5 = T(1) / c;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
-    const T t8 = T(1) / c;
+    const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = -(T(1) / T(8)) * (t7 * seg6 - w1 * M_beyond[0] - w0 * t10) * seg5;
+    G_E = (T(1) / T(8)) * seg5 * (w1 * M_beyond[0] + w0 * t7 - t10 * seg6);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
@@ -14743,7 +14745,7 @@ std::array<T, 3> segment_cauchy_i8_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t22 = t14 * t14;
     const T t23 = T(7) * t20 * t17 * a + T(48) * b * t21 + T(48) * t22 * a_minus_b;
     G_ap = (T(1) / T(384)) * t23 * w0 * t17 - (T(1) / T(384)) * seg5 * w1 * (T(48) * t22 - T(48) * t21 - t23 * b * t17);
-    G_E = -(T(1) / T(384)) * (T(48) * t22 * seg6 - w1 * t20 * t17 - T(48) * w0 * t21) * seg5;
+    G_E = -(T(1) / T(384)) * seg5 * (T(48) * t22 * seg6 - w1 * t20 * t17 - T(48) * w0 * t21);
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = -g_factor * (G_E * ab1 - G_ap * foot1);
@@ -14813,7 +14815,7 @@ T segment_cauchy_i8_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
+    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = bp0 * ab0 + ab1 * bp1 + ab2 * bp2;
@@ -14850,7 +14852,7 @@ T segment_cauchy_i8_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = (T(1) / T(8)) * (w1 * M_beyond[0] + w0 * t7 - seg6 * t10) * seg5;
+    G_E = (T(1) / T(8)) * seg5 * (w1 * M_beyond[0] + w0 * t7 - seg6 * t10);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
@@ -14864,12 +14866,12 @@ T segment_cauchy_i8_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t18 = t17 * t14;
     const T t19 = t16 * t15;
     const T t20 = T(5) * a * t13 * (T(3) * a * t13 * (a_minus_b * t14 + b * t15 + a * J2) + T(2) * b * t16 + T(2) * a_minus_b * t17) + T(8) * a_minus_b * t18 + T(8) * b * t19;
-    F = (T(1) / T(48)) * t13 * w0 * t20 - (T(1) / T(48)) * w1 * (T(8) * t18 - t13 * b * t20 - T(8) * t19) * seg5;
+    F = (T(1) / T(48)) * t13 * w0 * t20 - (T(1) / T(48)) * w1 * seg5 * (T(8) * t18 - t13 * b * t20 - T(8) * t19);
     const T t21 = t16 * t16;
     const T t22 = t17 * t17;
     const T t23 = T(7) * a * t13 * t20 + T(48) * b * t21 + T(48) * a_minus_b * t22;
-    G_ap = (T(1) / T(384)) * t13 * t23 * w0 + (T(1) / T(384)) * w1 * seg5 * (T(48) * t21 + t13 * t23 * b - T(48) * t22);
-    G_E = (T(1) / T(384)) * (w1 * t13 * t20 + T(48) * w0 * t21 - T(48) * seg6 * t22) * seg5;
+    G_ap = (T(1) / T(384)) * w1 * seg5 * (T(48) * t21 + t13 * t23 * b - T(48) * t22) + (T(1) / T(384)) * t13 * t23 * w0;
+    G_E = -(T(1) / T(384)) * (T(48) * seg6 * t22 - w1 * t13 * t20 - T(48) * w0 * t21) * seg5;
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -15089,7 +15091,7 @@ T segment_cauchy_i8_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = s * bp_bp + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg7 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg7 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -15117,7 +15119,7 @@ T segment_cauchy_i8_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t13 = t11 * t10;
     const T t14 = T(5) * t12 * t9 * a + T(8) * a_minus_b * t13 + T(8) * t8 * b;
     const T t15 = T(8) * t8 + t14 * t9 * b - T(8) * t13;
-    F = (T(1) / T(48)) * w1 * t15 * seg5 + (T(1) / T(48)) * w2 * (T(2) * t15 * b * seg5 + T(6) * t12 * t9 - t14 * c * t9) * seg5 + (T(1) / T(48)) * t14 * t9 * w0;
+    F = (T(1) / T(48)) * w1 * seg5 * t15 + (T(1) / T(48)) * t14 * t9 * w0 - (T(1) / T(48)) * w2 * seg5 * (t14 * c * t9 - T(6) * t12 * t9 - T(2) * seg5 * t15 * b);
   }
   f = F * length;
   return f;
@@ -15175,15 +15177,15 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * seg0 * ab0;
+    foot0 = ap0 - ab_ap * ab0 * seg0;
     foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
     foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
@@ -15198,7 +15200,7 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -15219,26 +15221,26 @@ std::array<T, 3> segment_cauchy_i8_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = (T(1) / T(8)) * (T(2) * w2 * M_beyond[1] + t7 * w0 + w1 * M_beyond[0] - t10 * seg6) * seg5;
+    G_E = (T(1) / T(8)) * seg5 * (T(2) * w2 * M_beyond[1] + t7 * w0 + w1 * M_beyond[0] - seg6 * t10);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
     const T t12 = T(1) / t11;
     const T J2 = atan2(t11, c_minus_b) * t12;
-    const T t13 = T(1) / c;
+    const T t13 = T(1) / q1;
     const T t14 = t13 * t13;
-    const T t15 = t14 * t14;
-    const T t16 = T(1) / D;
-    const T t17 = T(1) / q1;
-    const T t18 = t17 * t17;
-    const T t19 = t18 * t17;
-    const T t20 = t14 * t13;
-    const T t21 = T(8) * a_minus_b * t19 + T(5) * (T(2) * a_minus_b * t18 + T(3) * (t13 * b + a_minus_b * t17 + J2 * a) * a * t16 + T(2) * t14 * b) * a * t16 + T(8) * t20 * b;
-    const T t22 = t18 * t18;
-    const T t23 = T(7) * t21 * a * t16 + T(48) * a_minus_b * t22 + T(48) * t15 * b;
-    const T t24 = T(48) * t15 + t16 * t23 * b - T(48) * t22;
-    G_ap = (T(1) / T(384)) * w1 * t24 * seg5 + (T(1) / T(384)) * (T(8) * t21 * t16 + T(2) * t24 * seg5 * b - c * t16 * t23) * w2 * seg5 + (T(1) / T(384)) * t16 * t23 * w0;
-    G_E = (T(1) / T(384)) * (T(48) * t15 * w0 + t21 * w1 * t16 - T(2) * w2 * seg5 * (T(8) * t19 - t21 * t16 * b - T(8) * t20) - T(48) * t22 * seg6) * seg5;
+    const T t15 = t14 * t13;
+    const T t16 = T(1) / c;
+    const T t17 = T(1) / D;
+    const T t18 = t16 * t16;
+    const T t19 = t18 * t16;
+    const T t20 = T(8) * a_minus_b * t15 + T(5) * (T(2) * a_minus_b * t14 + T(3) * (t16 * b + a_minus_b * t13 + J2 * a) * a * t17 + T(2) * t18 * b) * a * t17 + T(8) * t19 * b;
+    const T t21 = t18 * t18;
+    const T t22 = t14 * t14;
+    const T t23 = T(7) * t20 * a * t17 + T(48) * a_minus_b * t22 + T(48) * t21 * b;
+    const T t24 = T(48) * t21 + t17 * t23 * b - T(48) * t22;
+    G_ap = (T(1) / T(384)) * seg5 * w2 * (T(8) * t20 * t17 + T(2) * seg5 * t24 * b - c * t17 * t23) + (T(1) / T(384)) * w1 * seg5 * t24 + (T(1) / T(384)) * t17 * t23 * w0;
+    G_E = -(T(1) / T(384)) * seg5 * (T(2) * seg5 * w2 * (T(8) * t15 - t20 * t17 * b - T(8) * t19) + T(48) * seg6 * t22 - T(48) * t21 * w0 - t20 * w1 * t17);
   }
   grad[0] = (G_ap * foot0 - G_E * ab0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -15340,13 +15342,13 @@ T segment_cauchy_i8_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_moments_beyond_end<T>(8, 10, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * w0 + M_beyond[1] * w1 + M_beyond[2] * w2;
     G_ap = w1 * M_beyond[5] + w0 * M_beyond[4] + w2 * M_beyond[6];
-    const T t5 = T(1) / q1;
+    const T t5 = T(1) / c;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
-    const T t8 = T(1) / c;
+    const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = -(T(1) / T(8)) * (t7 * seg6 - T(2) * M_beyond[1] * w2 - w1 * M_beyond[0] - t10 * w0) * seg5;
+    G_E = (T(1) / T(8)) * (T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] + t7 * w0 - seg6 * t10) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
@@ -15362,13 +15364,13 @@ T segment_cauchy_i8_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t20 = t17 * t14;
     const T t21 = T(5) * t18 * a * t13 + T(8) * b * t19 + T(8) * t20 * a_minus_b;
     const T t22 = T(8) * t19 + b * t21 * t13 - T(8) * t20;
-    F = (T(1) / T(48)) * t21 * t13 * w0 + (T(1) / T(48)) * w1 * t22 * seg5 + (T(1) / T(48)) * w2 * (T(2) * b * t22 * seg5 + T(6) * t18 * t13 - c * t21 * t13) * seg5;
+    F = (T(1) / T(48)) * t21 * t13 * w0 + (T(1) / T(48)) * w1 * t22 * seg5 - (T(1) / T(48)) * (c * t21 * t13 - T(2) * b * t22 * seg5 - T(6) * t18 * t13) * w2 * seg5;
     const T t23 = t17 * t17;
     const T t24 = t16 * t16;
     const T t25 = T(48) * t23 * a_minus_b + T(7) * t21 * a * t13 + T(48) * b * t24;
     const T t26 = T(48) * t23 - b * t25 * t13 - T(48) * t24;
-    G_ap = (T(1) / T(384)) * t25 * t13 * w0 - (T(1) / T(384)) * (t25 * c * t13 + T(2) * b * t26 * seg5 - T(8) * t21 * t13) * w2 * seg5 - (T(1) / T(384)) * w1 * t26 * seg5;
-    G_E = -(T(1) / T(384)) * (T(48) * t23 * seg6 - w1 * t21 * t13 - T(2) * t22 * w2 * seg5 - T(48) * t24 * w0) * seg5;
+    G_ap = (T(1) / T(384)) * t25 * t13 * w0 - (T(1) / T(384)) * w2 * (T(2) * b * t26 * seg5 + t25 * c * t13 - T(8) * t21 * t13) * seg5 - (T(1) / T(384)) * w1 * t26 * seg5;
+    G_E = (T(1) / T(384)) * (w1 * t21 * t13 + T(2) * t22 * w2 * seg5 + T(48) * t24 * w0 - T(48) * seg6 * t23) * seg5;
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -15593,7 +15595,7 @@ T segment_cauchy_i8_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg7 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg7 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -15613,16 +15615,16 @@ T segment_cauchy_i8_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T J2 = t5 * atan2(t4, c_minus_b);
     const T t6 = T(1) / q1;
     const T t7 = t6 * t6;
-    const T t8 = t7 * t6;
-    const T t9 = T(1) / c;
-    const T t10 = t9 * t9;
-    const T t11 = t10 * t9;
-    const T t12 = T(1) / D;
-    const T t13 = T(2) * a_minus_b * t7 + T(2) * b * t10 + T(3) * (b * t9 + a * J2 + a_minus_b * t6) * t12 * a;
-    const T t14 = T(8) * a_minus_b * t8 + T(8) * b * t11 + T(5) * t13 * t12 * a;
-    const T t15 = T(8) * t8 - T(8) * t11 - b * t14 * t12;
-    const T t16 = T(2) * b * t15 * seg5 + c * t14 * t12 - T(6) * t13 * t12;
-    F = (T(1) / T(48)) * t14 * w0 * t12 - (T(1) / T(48)) * t16 * w2 * seg5 - (T(1) / T(48)) * t15 * seg5 * w1 - (T(1) / T(48)) * (T(2) * b * t16 * seg5 - T(6) * (b * t13 * t12 + T(2) * t10 - T(2) * t7) * seg5 - c * t15 * seg5) * w3 * seg5;
+    const T t8 = T(1) / c;
+    const T t9 = t8 * t8;
+    const T t10 = T(1) / D;
+    const T t11 = T(2) * a_minus_b * t7 + T(2) * b * t9 + T(3) * (b * t8 + a * J2 + a_minus_b * t6) * t10 * a;
+    const T t12 = t7 * t6;
+    const T t13 = t9 * t8;
+    const T t14 = T(8) * a_minus_b * t12 + T(8) * b * t13 + T(5) * t11 * t10 * a;
+    const T t15 = T(8) * t12 - T(8) * t13 - b * t14 * t10;
+    const T t16 = c * t14 * t10 + T(2) * b * seg5 * t15 - T(6) * t11 * t10;
+    F = (T(1) / T(48)) * w3 * seg5 * (T(6) * (b * t11 * t10 + T(2) * t9 - T(2) * t7) * seg5 + c * seg5 * t15 - T(2) * b * seg5 * t16) + (T(1) / T(48)) * t14 * w0 * t10 - (T(1) / T(48)) * w2 * seg5 * t16 - (T(1) / T(48)) * seg5 * t15 * w1;
   }
   f = length * F;
   return f;
@@ -15683,14 +15685,14 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const T* pre, const SegmentPoint<T>& 
     cross_cross = plain_cross_cross;
     foot0 = ap0 - ab_ap * seg0 * ab0;
     foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp1 * bp1 + bp2 * bp2;
@@ -15704,7 +15706,7 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const T* pre, const SegmentPoint<T>& 
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -15725,29 +15727,29 @@ std::array<T, 3> segment_cauchy_i8_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = (T(1) / T(8)) * (M_beyond[0] * w1 + T(3) * M_beyond[2] * w3 + T(2) * w2 * M_beyond[1] + t7 * w0 - seg6 * t10) * seg5;
+    G_E = (T(1) / T(8)) * seg5 * (M_beyond[0] * w1 + T(3) * M_beyond[2] * w3 + T(2) * w2 * M_beyond[1] + t7 * w0 - seg6 * t10);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
     const T t12 = T(1) / t11;
     const T J2 = atan2(t11, c_minus_b) * t12;
-    const T t13 = T(1) / D;
-    const T t14 = T(1) / c;
-    const T t15 = T(1) / q1;
-    const T t16 = t15 * t15;
-    const T t17 = t14 * t14;
-    const T t18 = T(3) * (b * t14 + a_minus_b * t15 + J2 * a) * t13 * a + T(2) * a_minus_b * t16 + T(2) * b * t17;
-    const T t19 = t16 * t15;
-    const T t20 = t17 * t14;
-    const T t21 = T(5) * t13 * a * t18 + T(8) * a_minus_b * t19 + T(8) * b * t20;
-    const T t22 = b * t13 * t21 + T(8) * t20 - T(8) * t19;
-    const T t23 = t16 * t16;
-    const T t24 = t17 * t17;
-    const T t25 = T(48) * a_minus_b * t23 + T(7) * t13 * t21 * a + T(48) * b * t24;
-    const T t26 = b * t25 * t13 + T(48) * t24 - T(48) * t23;
-    const T t27 = T(2) * b * t26 * seg5 + T(8) * t13 * t21 - t25 * c * t13;
-    G_ap = (T(1) / T(384)) * w3 * seg5 * (T(8) * t22 * seg5 + T(2) * b * t27 * seg5 - c * t26 * seg5) + (T(1) / T(384)) * t26 * seg5 * w1 + (T(1) / T(384)) * t25 * t13 * w0 + (T(1) / T(384)) * w2 * t27 * seg5;
-    G_E = (T(1) / T(384)) * (t13 * t21 * w1 + T(2) * w2 * t22 * seg5 + T(3) * (T(2) * b * t22 * seg5 + T(6) * t13 * t18 - c * t13 * t21) * w3 * seg5 + T(48) * t24 * w0 - T(48) * seg6 * t23) * seg5;
+    const T t13 = T(1) / q1;
+    const T t14 = t13 * t13;
+    const T t15 = t14 * t14;
+    const T t16 = T(1) / D;
+    const T t17 = T(1) / c;
+    const T t18 = t17 * t17;
+    const T t19 = T(3) * (b * t17 + a_minus_b * t13 + J2 * a) * t16 * a + T(2) * a_minus_b * t14 + T(2) * b * t18;
+    const T t20 = t14 * t13;
+    const T t21 = t18 * t17;
+    const T t22 = T(5) * t16 * a * t19 + T(8) * a_minus_b * t20 + T(8) * b * t21;
+    const T t23 = t18 * t18;
+    const T t24 = T(48) * a_minus_b * t15 + T(7) * t16 * t22 * a + T(48) * b * t23;
+    const T t25 = b * t24 * t16 + T(48) * t23 - T(48) * t15;
+    const T t26 = T(2) * b * seg5 * t25 + T(8) * t16 * t22 - t24 * c * t16;
+    const T t27 = b * t16 * t22 + T(8) * t21 - T(8) * t20;
+    G_ap = (T(1) / T(384)) * t26 * w2 * seg5 + (T(1) / T(384)) * seg5 * t25 * w1 + (T(1) / T(384)) * t24 * t16 * w0 + (T(1) / T(384)) * (T(2) * b * t26 * seg5 + T(8) * seg5 * t27 - c * seg5 * t25) * seg5 * w3;
+    G_E = (T(1) / T(384)) * seg5 * (t16 * t22 * w1 + T(2) * w2 * seg5 * t27 + T(3) * seg5 * w3 * (T(2) * b * seg5 * t27 + T(6) * t16 * t19 - c * t16 * t22) + T(48) * t23 * w0 - T(48) * seg6 * t15);
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -15833,7 +15835,7 @@ T segment_cauchy_i8_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -15843,7 +15845,7 @@ T segment_cauchy_i8_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = w2 * M_flat[2] + M_flat[0] * w0 + w1 * M_flat[1] + M_flat[3] * w3;
     const T t4 = w1 * M_flat[6] + w2 * M_flat[7] + w3 * M_flat[8] + w0 * M_flat[5];
     G_ap = t4;
-    G_E = M_flat[9] * w3 + w1 * M_flat[7] + M_flat[6] * w0 + w2 * M_flat[8] - b * t4 * seg5;
+    G_E = M_flat[9] * w3 + w1 * M_flat[7] + M_flat[6] * w0 + w2 * M_flat[8] - b * seg5 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -15856,7 +15858,7 @@ T segment_cauchy_i8_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t8 = T(1) / q1;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = (T(1) / T(8)) * seg5 * (T(3) * w3 * M_beyond[2] + t7 * w0 + w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] - seg6 * t10);
+    G_E = (T(1) / T(8)) * (T(3) * w3 * M_beyond[2] + t7 * w0 + w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] - seg6 * t10) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(D);
@@ -15873,14 +15875,14 @@ T segment_cauchy_i8_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t21 = T(8) * b * t15 + T(5) * t19 * t16 * a + T(8) * t20 * a_minus_b;
     const T t22 = b * t21 * t16 + T(8) * t15 - T(8) * t20;
     const T t23 = c * t21 * t16 - T(6) * t19 * t16 - T(2) * b * t22 * seg5;
-    F = (T(1) / T(48)) * w1 * t22 * seg5 + (T(1) / T(48)) * t21 * t16 * w0 - (T(1) / T(48)) * (t22 * c * seg5 + T(2) * b * t23 * seg5 - T(6) * (T(2) * t14 + b * t19 * t16 - T(2) * t18) * seg5) * w3 * seg5 - (T(1) / T(48)) * t23 * w2 * seg5;
+    F = (T(1) / T(48)) * w1 * t22 * seg5 + (T(1) / T(48)) * w3 * seg5 * (T(6) * (T(2) * t14 + b * t19 * t16 - T(2) * t18) * seg5 - T(2) * t23 * b * seg5 - t22 * c * seg5) + (T(1) / T(48)) * t21 * t16 * w0 - (T(1) / T(48)) * t23 * w2 * seg5;
     const T t24 = t18 * t18;
     const T t25 = t14 * t14;
     const T t26 = T(48) * t24 * a_minus_b + T(7) * t21 * t16 * a + T(48) * b * t25;
     const T t27 = t26 * b * t16 + T(48) * t25 - T(48) * t24;
-    const T t28 = T(8) * t21 * t16 + T(2) * b * t27 * seg5 - t26 * c * t16;
-    G_ap = (T(1) / T(384)) * w2 * t28 * seg5 + (T(1) / T(384)) * w1 * t27 * seg5 + (T(1) / T(384)) * t26 * t16 * w0 - (T(1) / T(384)) * (c * t27 * seg5 - T(8) * t22 * seg5 - T(2) * b * t28 * seg5) * w3 * seg5;
-    G_E = (T(1) / T(384)) * (T(2) * t22 * w2 * seg5 + T(48) * t25 * w0 + w1 * t21 * t16 - T(3) * t23 * w3 * seg5 - T(48) * seg6 * t24) * seg5;
+    const T t28 = T(8) * t21 * t16 + T(2) * b * seg5 * t27 - t26 * c * t16;
+    G_ap = (T(1) / T(384)) * w2 * t28 * seg5 + (T(1) / T(384)) * w1 * seg5 * t27 + (T(1) / T(384)) * t26 * t16 * w0 - (T(1) / T(384)) * (c * seg5 * t27 - T(2) * b * t28 * seg5 - T(8) * t22 * seg5) * w3 * seg5;
+    G_E = (T(1) / T(384)) * (T(48) * t25 * w0 + T(2) * t22 * w2 * seg5 + w1 * t21 * t16 - T(3) * t23 * w3 * seg5 - T(48) * seg6 * t24) * seg5;
   }
   f = F * length;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
@@ -16182,9 +16184,9 @@ std::array<T, 3> segment_cauchy_i9_w0_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -16192,7 +16194,7 @@ std::array<T, 3> segment_cauchy_i9_w0_grad(const T* pre, const SegmentPoint<T>& 
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
     foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
-    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
+    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
@@ -16213,7 +16215,7 @@ std::array<T, 3> segment_cauchy_i9_w0_grad(const T* pre, const SegmentPoint<T>& 
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(9, 11, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - M_flat[2] * w0 * b * seg7;
+    G_E = M_flat[3] * w0 - M_flat[2] * w0 * seg7 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -16312,9 +16314,9 @@ T segment_cauchy_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -16322,7 +16324,7 @@ T segment_cauchy_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
+    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
@@ -16345,7 +16347,7 @@ T segment_cauchy_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_moments_far_field<T>(9, 11, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * w0;
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - b * seg7 * M_flat[2] * w0;
+    G_E = M_flat[3] * w0 - seg7 * b * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -16616,7 +16618,7 @@ T segment_cauchy_i9_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg9 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg9 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -16641,7 +16643,7 @@ T segment_cauchy_i9_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t11 = t10 * t9;
     const T t12 = T(1) / D;
     const T t13 = T(5) * b * t7 * t4 + T(5) * t8 * a_minus_b * t11 + T(2) * (T(3) * b * t6 * t4 + T(4) * t12 * a * (T(2) * (b * t4 + t8 * a_minus_b) * t12 * a + t8 * a_minus_b * t9 + b * t5 * t4) + T(3) * t8 * a_minus_b * t10) * t12 * a;
-    F = (T(1) / T(35)) * seg7 * (T(5) * t7 * t4 + b * t13 * t12 - T(5) * t8 * t11) * w1 + (T(1) / T(35)) * t13 * w0 * t12;
+    F = (T(1) / T(35)) * (T(5) * t7 * t4 + b * t13 * t12 - T(5) * t8 * t11) * seg7 * w1 + (T(1) / T(35)) * t13 * w0 * t12;
   }
   f = length * F;
   return f;
@@ -16707,7 +16709,7 @@ std::array<T, 3> segment_cauchy_i9_w1_grad(const T* pre, const SegmentPoint<T>& 
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
     foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -16746,7 +16748,7 @@ std::array<T, 3> segment_cauchy_i9_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(9)) * seg7 * (t9 * w0 + M_beyond[0] * w1 - t14 * seg8);
+    G_E = (T(1) / T(9)) * (t9 * w0 + M_beyond[0] * w1 - t14 * seg8) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r1;
@@ -16762,7 +16764,7 @@ std::array<T, 3> segment_cauchy_i9_w1_grad(const T* pre, const SegmentPoint<T>& 
     const T t25 = T(5) * t20 * t23 * b + T(2) * (T(3) * t20 * t22 * b + T(4) * t19 * a * (t15 * a_minus_b * t16 + T(2) * t19 * a * (t15 * a_minus_b + t20 * b) + t20 * t21 * b) + T(3) * t15 * a_minus_b * t17) * t19 * a + T(5) * t15 * a_minus_b * t24;
     const T t26 = t22 * t22;
     const T t27 = T(35) * t15 * a_minus_b * t18 + T(8) * t19 * a * t25 + T(35) * t20 * t26 * b;
-    G_ap = (T(1) / T(315)) * w0 * t27 * t19 - (T(1) / T(315)) * w1 * seg7 * (T(35) * t15 * t18 - T(35) * t20 * t26 - t27 * t19 * b);
+    G_ap = (T(1) / T(315)) * w0 * t27 * t19 - (T(1) / T(315)) * seg7 * w1 * (T(35) * t15 * t18 - T(35) * t20 * t26 - t27 * t19 * b);
     const T t28 = t20 * t20;
     const T t29 = t28 * t28;
     const T t30 = t29 * t29;
@@ -16855,7 +16857,7 @@ T segment_cauchy_i9_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -16872,17 +16874,17 @@ T segment_cauchy_i9_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     segment_moments_beyond_end<T>(9, 11, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = w0 * M_beyond[0] + M_beyond[1] * w1;
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / r1;
+    const T t10 = T(1) / r0;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(9)) * seg7 * (w0 * t9 + w1 * M_beyond[0] - t14 * seg8);
+    G_E = -(T(1) / T(9)) * (seg8 * t9 - w0 * t14 - w1 * M_beyond[0]) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r1;
@@ -16895,20 +16897,20 @@ T segment_cauchy_i9_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t22 = t21 * t20;
     const T t23 = T(1) / D;
     const T t24 = T(5) * t18 * t15 * a_minus_b + T(5) * b * t22 * t19 + T(2) * (T(3) * t17 * t15 * a_minus_b + T(4) * a * t23 * (b * t20 * t19 + T(2) * a * t23 * (t15 * a_minus_b + b * t19) + t16 * t15 * a_minus_b) + T(3) * b * t21 * t19) * a * t23;
-    F = (T(1) / T(35)) * w0 * t24 * t23 + (T(1) / T(35)) * w1 * seg7 * (T(5) * t22 * t19 + b * t24 * t23 - T(5) * t18 * t15);
+    F = (T(1) / T(35)) * w0 * t24 * t23 + (T(1) / T(35)) * seg7 * w1 * (T(5) * t22 * t19 + b * t24 * t23 - T(5) * t18 * t15);
     const T t25 = t21 * t21;
     const T t26 = t17 * t17;
     const T t27 = T(35) * b * t25 * t19 + T(35) * t26 * t15 * a_minus_b + T(8) * t24 * a * t23;
-    G_ap = (T(1) / T(315)) * w0 * t23 * t27 - (T(1) / T(315)) * w1 * (T(35) * t26 * t15 - T(35) * t25 * t19 - b * t23 * t27) * seg7;
-    const T t28 = t19 * t19;
+    G_ap = (T(1) / T(315)) * w0 * t23 * t27 - (T(1) / T(315)) * seg7 * w1 * (T(35) * t26 * t15 - T(35) * t25 * t19 - b * t23 * t27);
+    const T t28 = t15 * t15;
     const T t29 = t28 * t28;
     const T t30 = t29 * t29;
-    const T t31 = t30 * t19;
-    const T t32 = t15 * t15;
+    const T t31 = t30 * t15;
+    const T t32 = t19 * t19;
     const T t33 = t32 * t32;
     const T t34 = t33 * t33;
-    const T t35 = t34 * t15;
-    G_E = (T(1) / T(315)) * (T(35) * w0 * t31 + t24 * w1 * t23 - T(35) * t35 * seg8) * seg7;
+    const T t35 = t34 * t19;
+    G_E = -(T(1) / T(315)) * seg7 * (T(35) * seg8 * t31 - T(35) * w0 * t35 - t24 * w1 * t23);
   }
   f = length * F;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
@@ -17166,7 +17168,7 @@ T segment_cauchy_i9_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t13 = t10 * t9;
     const T t14 = T(2) * t11 * t4 * a + T(5) * t5 * a_minus_b * t12 + T(5) * b * t13 * t8;
     const T t15 = b * t4 * t14 + T(5) * t13 * t8 - T(5) * t5 * t12;
-    F = (T(1) / T(105)) * seg7 * (T(6) * seg7 * b * t15 + T(7) * t11 * t4 - T(3) * c * t4 * t14) * w2 + (T(1) / T(35)) * seg7 * w1 * t15 + (T(1) / T(35)) * w0 * t4 * t14;
+    F = (T(1) / T(105)) * (T(6) * b * t15 * seg7 + T(7) * t11 * t4 - T(3) * c * t4 * t14) * w2 * seg7 + (T(1) / T(35)) * w1 * t15 * seg7 + (T(1) / T(35)) * w0 * t4 * t14;
   }
   f = F * length;
   return f;
@@ -17272,7 +17274,7 @@ std::array<T, 3> segment_cauchy_i9_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(9)) * (M_beyond[0] * w1 + t9 * w0 + T(2) * M_beyond[1] * w2 - t14 * seg8) * seg7;
+    G_E = (T(1) / T(9)) * seg7 * (M_beyond[0] * w1 + t9 * w0 + T(2) * M_beyond[1] * w2 - t14 * seg8);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r0;
@@ -17289,16 +17291,16 @@ std::array<T, 3> segment_cauchy_i9_w2_grad(const T* pre, const SegmentPoint<T>& 
     const T t26 = t22 * t22;
     const T t27 = T(8) * t25 * t19 * a + T(35) * t20 * a_minus_b * t26 + T(35) * t15 * t18 * b;
     const T t28 = T(35) * t15 * t18 + t19 * t27 * b - T(35) * t20 * t26;
-    G_ap = (T(1) / T(315)) * seg7 * w2 * (T(2) * seg7 * t28 * b + T(9) * t25 * t19 - c * t19 * t27) + (T(1) / T(315)) * t19 * t27 * w0 + (T(1) / T(315)) * w1 * seg7 * t28;
-    const T t29 = t20 * t20;
+    G_ap = (T(1) / T(315)) * w1 * seg7 * t28 + (T(1) / T(315)) * t19 * t27 * w0 + (T(1) / T(315)) * (T(2) * seg7 * t28 * b + T(9) * t25 * t19 - c * t19 * t27) * seg7 * w2;
+    const T t29 = t15 * t15;
     const T t30 = t29 * t29;
     const T t31 = t30 * t30;
-    const T t32 = t31 * t20;
-    const T t33 = t15 * t15;
+    const T t32 = t31 * t15;
+    const T t33 = t20 * t20;
     const T t34 = t33 * t33;
     const T t35 = t34 * t34;
-    const T t36 = t35 * t15;
-    G_E = -(T(1) / T(315)) * seg7 * (T(35) * t32 * seg8 - T(35) * t36 * w0 - w1 * t25 * t19 - T(2) * seg7 * w2 * (T(5) * t15 * t24 + t25 * t19 * b - T(5) * t20 * t23));
+    const T t36 = t35 * t20;
+    G_E = (T(1) / T(315)) * (T(35) * t32 * w0 + w1 * t25 * t19 + T(2) * seg7 * w2 * (T(5) * t15 * t24 + t25 * t19 * b - T(5) * t20 * t23) - T(35) * t36 * seg8) * seg7;
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = g_factor * (foot1 * G_ap - G_E * ab1);
@@ -17383,7 +17385,7 @@ T segment_cauchy_i9_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -17425,7 +17427,7 @@ T segment_cauchy_i9_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t24 = T(3) * t16 * a_minus_b * t18 + T(3) * t20 * b * t22 + T(4) * (t20 * b * t21 + T(2) * a * t15 * (t20 * b + t16 * a_minus_b) + t16 * a_minus_b * t17) * a * t15;
     const T t25 = T(5) * t16 * a_minus_b * t19 + T(5) * t20 * b * t23 + T(2) * a * t15 * t24;
     const T t26 = t15 * b * t25 + T(5) * t20 * t23 - T(5) * t16 * t19;
-    F = (T(1) / T(35)) * t15 * w0 * t25 + (T(1) / T(35)) * seg7 * t26 * w1 - (T(1) / T(105)) * (T(3) * t15 * t25 * c - T(7) * t15 * t24 - T(6) * seg7 * t26 * b) * w2 * seg7;
+    F = (T(1) / T(35)) * t15 * w0 * t25 + (T(1) / T(35)) * seg7 * t26 * w1 - (T(1) / T(105)) * w2 * seg7 * (T(3) * t15 * t25 * c - T(6) * seg7 * t26 * b - T(7) * t15 * t24);
     const T t27 = t18 * t18;
     const T t28 = t22 * t22;
     const T t29 = T(35) * t16 * a_minus_b * t27 + T(8) * a * t15 * t25 + T(35) * t20 * b * t28;
@@ -17439,7 +17441,7 @@ T segment_cauchy_i9_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t36 = t35 * t35;
     const T t37 = t36 * t36;
     const T t38 = t37 * t16;
-    G_E = (T(1) / T(315)) * (t15 * t25 * w1 + T(2) * w2 * seg7 * t26 + T(35) * t34 * w0 - T(35) * t38 * seg8) * seg7;
+    G_E = (T(1) / T(315)) * seg7 * (T(2) * w2 * seg7 * t26 + t15 * t25 * w1 + T(35) * t34 * w0 - T(35) * t38 * seg8);
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -17690,20 +17692,20 @@ T segment_cauchy_i9_w3_f(const T* pre, const SegmentPoint<T>& point) {
     F = M_beyond[0] * w0 + M_beyond[1] * w1 + M_beyond[3] * w3 + M_beyond[2] * w2;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t4 = T(1) / r1;
-    const T t5 = t4 * t4;
+    const T t4 = T(1) / D;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
-    const T t7 = t6 * t5;
-    const T t8 = T(1) / D;
+    const T t7 = t6 * t6;
+    const T t8 = t7 * t6;
     const T t9 = T(1) / r0;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
-    const T t13 = T(3) * t9 * b * t11 + T(4) * a * t8 * (T(2) * a * t8 * (t9 * b + t4 * a_minus_b) + t9 * b * t10 + t4 * a_minus_b * t5) + T(3) * t4 * a_minus_b * t6;
-    const T t14 = T(5) * t4 * a_minus_b * t7 + T(5) * t9 * b * t12 + T(2) * a * t8 * t13;
-    const T t15 = T(5) * t4 * t7 - t8 * b * t14 - T(5) * t9 * t12;
-    const T t16 = T(3) * t8 * c * t14 + T(6) * b * t15 * seg7 - T(7) * t8 * t13;
-    F = (T(1) / T(105)) * (T(3) * c * t15 * seg7 - T(2) * b * seg7 * t16 - T(7) * (T(3) * t4 * t6 - T(3) * t9 * t11 - t8 * t13 * b) * seg7) * seg7 * w3 + (T(1) / T(35)) * t8 * w0 * t14 - (T(1) / T(105)) * w2 * seg7 * t16 - (T(1) / T(35)) * w1 * t15 * seg7;
+    const T t13 = T(3) * t9 * b * t11 + T(4) * a * t4 * (T(2) * a * t4 * (t9 * b + t5 * a_minus_b) + t9 * b * t10 + t5 * a_minus_b * t6) + T(3) * t5 * a_minus_b * t7;
+    const T t14 = T(5) * t5 * a_minus_b * t8 + T(5) * t9 * b * t12 + T(2) * a * t4 * t13;
+    const T t15 = T(5) * t5 * t8 - t4 * b * t14 - T(5) * t9 * t12;
+    const T t16 = T(3) * t4 * c * t14 + T(6) * b * seg7 * t15 - T(7) * t4 * t13;
+    F = (T(1) / T(35)) * t4 * w0 * t14 - (T(1) / T(105)) * (T(7) * (T(3) * t5 * t7 - T(3) * t9 * t11 - t4 * t13 * b) * seg7 + T(2) * b * seg7 * t16 - T(3) * seg7 * c * t15) * seg7 * w3 - (T(1) / T(35)) * w1 * seg7 * t15 - (T(1) / T(105)) * w2 * seg7 * t16;
   }
   f = F * length;
   return f;
@@ -17762,8 +17764,8 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const T* pre, const SegmentPoint<T>& 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
     foot2 = ap2 - seg0 * ab_ap * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
@@ -17785,7 +17787,7 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const T* pre, const SegmentPoint<T>& 
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -17810,7 +17812,7 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(9)) * (t9 * w0 + T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] + T(3) * M_beyond[2] * w3 - t14 * seg8) * seg7;
+    G_E = (T(1) / T(9)) * (t9 * w0 + T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] + T(3) * M_beyond[2] * w3 - seg8 * t14) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r0;
@@ -17830,16 +17832,16 @@ std::array<T, 3> segment_cauchy_i9_w3_grad(const T* pre, const SegmentPoint<T>& 
     const T t29 = T(35) * t15 * t18 + b * t28 * t22 - T(35) * t27 * t19;
     const T t30 = c * t28 * t22 - T(2) * b * seg7 * t29 - T(9) * t26 * t22;
     const T t31 = T(5) * t25 * t19 - T(5) * t15 * t24 - b * t26 * t22;
-    G_ap = (T(1) / T(315)) * w1 * seg7 * t29 + (T(1) / T(315)) * t28 * t22 * w0 - (T(1) / T(315)) * w2 * seg7 * t30 - (T(1) / T(315)) * seg7 * w3 * (T(2) * b * seg7 * t30 + seg7 * c * t29 + T(9) * t31 * seg7);
-    const T t32 = t15 * t15;
+    G_ap = (T(1) / T(315)) * w1 * seg7 * t29 + (T(1) / T(315)) * t28 * t22 * w0 - (T(1) / T(315)) * seg7 * t30 * w2 - (T(1) / T(315)) * seg7 * (T(2) * b * seg7 * t30 + seg7 * c * t29 + T(9) * seg7 * t31) * w3;
+    const T t32 = t19 * t19;
     const T t33 = t32 * t32;
     const T t34 = t33 * t33;
-    const T t35 = t34 * t15;
-    const T t36 = t19 * t19;
+    const T t35 = t34 * t19;
+    const T t36 = t15 * t15;
     const T t37 = t36 * t36;
     const T t38 = t37 * t37;
-    const T t39 = t38 * t19;
-    G_E = (T(1) / T(315)) * (T(35) * t35 * w0 + w1 * t26 * t22 - T(2) * t31 * w2 * seg7 - (T(6) * b * t31 * seg7 + T(3) * t26 * c * t22 - T(7) * t23 * t22) * seg7 * w3 - T(35) * t39 * seg8) * seg7;
+    const T t39 = t38 * t15;
+    G_E = -(T(1) / T(315)) * (T(2) * seg7 * t31 * w2 + seg7 * w3 * (T(6) * b * seg7 * t31 + T(3) * t26 * c * t22 - T(7) * t23 * t22) + T(35) * seg8 * t35 - T(35) * t39 * w0 - w1 * t26 * t22) * seg7;
   }
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
   grad[1] = g_factor * (G_ap * foot1 - ab1 * G_E);
@@ -17901,17 +17903,17 @@ T segment_cauchy_i9_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + ab2 * bp2 + ab1 * bp1;
@@ -17925,7 +17927,7 @@ T segment_cauchy_i9_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -17935,7 +17937,7 @@ T segment_cauchy_i9_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     F = M_flat[3] * w3 + w1 * M_flat[1] + w2 * M_flat[2] + w0 * M_flat[0];
     const T t4 = M_flat[7] * w2 + M_flat[6] * w1 + w0 * M_flat[5] + M_flat[8] * w3;
     G_ap = t4;
-    G_E = w2 * M_flat[8] + M_flat[9] * w3 + w1 * M_flat[7] + w0 * M_flat[6] - b * seg7 * t4;
+    G_E = w2 * M_flat[8] + M_flat[9] * w3 + w1 * M_flat[7] + w0 * M_flat[6] - seg7 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -17967,14 +17969,14 @@ T segment_cauchy_i9_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t24 = T(3) * t16 * b * t18 + T(3) * t20 * a_minus_b * t22 + T(4) * a * t15 * (T(2) * a * t15 * (t20 * a_minus_b + t16 * b) + t20 * a_minus_b * t21 + t16 * b * t17);
     const T t25 = T(5) * t16 * b * t19 + T(5) * t20 * a_minus_b * t23 + T(2) * a * t15 * t24;
     const T t26 = t15 * b * t25 + T(5) * t16 * t19 - T(5) * t20 * t23;
-    const T t27 = T(6) * t26 * b * seg7 + T(7) * t15 * t24 - T(3) * t15 * c * t25;
-    F = (T(1) / T(105)) * seg7 * (T(2) * b * seg7 * t27 + T(7) * seg7 * (t15 * t24 * b + T(3) * t16 * t18 - T(3) * t20 * t22) - T(3) * t26 * seg7 * c) * w3 + (T(1) / T(35)) * t26 * w1 * seg7 + (T(1) / T(105)) * seg7 * w2 * t27 + (T(1) / T(35)) * w0 * t15 * t25;
+    const T t27 = T(3) * t15 * c * t25 - T(6) * t26 * seg7 * b - T(7) * t15 * t24;
+    F = (T(1) / T(35)) * t26 * seg7 * w1 + (T(1) / T(35)) * w0 * t15 * t25 - (T(1) / T(105)) * seg7 * t27 * w2 - (T(1) / T(105)) * (T(2) * seg7 * b * t27 + T(3) * t26 * seg7 * c - T(7) * seg7 * (t15 * t24 * b + T(3) * t16 * t18 - T(3) * t20 * t22)) * seg7 * w3;
     const T t28 = t22 * t22;
     const T t29 = t18 * t18;
     const T t30 = T(35) * t20 * a_minus_b * t28 + T(35) * t16 * b * t29 + T(8) * a * t15 * t25;
     const T t31 = t15 * b * t30 + T(35) * t16 * t29 - T(35) * t20 * t28;
-    const T t32 = T(9) * t15 * t25 + T(2) * b * seg7 * t31 - t15 * c * t30;
-    G_ap = (T(1) / T(315)) * t32 * seg7 * w2 + (T(1) / T(315)) * w0 * t15 * t30 + (T(1) / T(315)) * w1 * seg7 * t31 - (T(1) / T(315)) * (seg7 * t31 * c - T(2) * t32 * b * seg7 - T(9) * t26 * seg7) * seg7 * w3;
+    const T t32 = T(9) * t15 * t25 + T(2) * seg7 * b * t31 - t15 * c * t30;
+    G_ap = (T(1) / T(315)) * seg7 * w2 * t32 + (T(1) / T(315)) * seg7 * w1 * t31 + (T(1) / T(315)) * w0 * t15 * t30 + (T(1) / T(315)) * seg7 * (T(9) * t26 * seg7 + T(2) * seg7 * b * t32 - seg7 * t31 * c) * w3;
     const T t33 = t16 * t16;
     const T t34 = t33 * t33;
     const T t35 = t34 * t34;
@@ -17983,7 +17985,7 @@ T segment_cauchy_i9_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, st
     const T t38 = t37 * t37;
     const T t39 = t38 * t38;
     const T t40 = t39 * t20;
-    G_E = (T(1) / T(315)) * (T(35) * w0 * t36 + seg7 * t27 * w3 + t15 * w1 * t25 + T(2) * t26 * seg7 * w2 - T(35) * t40 * seg8) * seg7;
+    G_E = (T(1) / T(315)) * seg7 * (T(35) * w0 * t36 + T(2) * t26 * seg7 * w2 + t15 * w1 * t25 - T(35) * t40 * seg8 - seg7 * t27 * w3);
   }
   f = length * F;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
@@ -18209,7 +18211,7 @@ T segment_cauchy_i10_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = s * bp_bp + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -18291,15 +18293,15 @@ std::array<T, 3> segment_cauchy_i10_w0_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * seg0 * ab0;
-    foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot0 = ap0 - seg0 * ab_ap * ab0;
+    foot1 = ap1 - seg0 * ab_ap * ab1;
+    foot2 = ap2 - seg0 * ab_ap * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
     foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
     foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
@@ -18314,7 +18316,7 @@ std::array<T, 3> segment_cauchy_i10_w0_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -18414,16 +18416,16 @@ T segment_cauchy_i10_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
+    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
     foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -18702,7 +18704,7 @@ T segment_cauchy_i10_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg7 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(seg7 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -18730,7 +18732,7 @@ T segment_cauchy_i10_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t13 = t8 * t8;
     const T t14 = t10 * t10;
     const T t15 = T(7) * (T(5) * a * t6 * (T(2) * a_minus_b * t8 + T(3) * (t9 * b + a_minus_b * t7 + a * J2) * a * t6 + T(2) * t10 * b) + T(8) * a_minus_b * t11 + T(8) * t12 * b) * a * t6 + T(48) * a_minus_b * t13 + T(48) * t14 * b;
-    F = (T(1) / T(384)) * w0 * t15 * t6 - (T(1) / T(384)) * (T(48) * t13 - t15 * t6 * b - T(48) * t14) * w1 * seg5;
+    F = (T(1) / T(384)) * w0 * t15 * t6 - (T(1) / T(384)) * (T(48) * t13 - t15 * t6 * b - T(48) * t14) * seg5 * w1;
   }
   f = F * length;
   return f;
@@ -18787,16 +18789,16 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab_ap * ab1;
-    foot2 = ap2 - seg0 * ab_ap * ab2;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
+    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
+    foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
     foot2 = -seg0 * (ab0 * exact_cross[1] - exact_cross[0] * ab1);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -18825,15 +18827,15 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(10, 12, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * w1 + w0 * M_beyond[3];
-    const T t5 = T(1) / c;
+    const T t5 = T(1) / q1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t5;
-    const T t9 = T(1) / q1;
+    const T t9 = T(1) / c;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * (w0 * t8 + w1 * M_beyond[0] - t12 * seg6) * seg5;
+    G_E = -(T(1) / T(10)) * seg5 * (t8 * seg6 - w0 * t12 - w1 * M_beyond[0]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -18853,7 +18855,7 @@ std::array<T, 3> segment_cauchy_i10_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t26 = t24 * t20;
     const T t27 = T(128) * b * t18 + T(3) * t25 * t23 * a + T(128) * t26 * a_minus_b;
     G_ap = (T(1) / T(1280)) * w0 * t27 * t23 + (T(1) / T(1280)) * seg5 * (T(128) * t18 + b * t27 * t23 - T(128) * t26) * w1;
-    G_E = (T(1) / T(3840)) * (t25 * w1 * t23 + T(384) * w0 * t18 - T(384) * t26 * seg6) * seg5;
+    G_E = -(T(1) / T(3840)) * seg5 * (T(384) * t26 * seg6 - t25 * w1 * t23 - T(384) * w0 * t18);
   }
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -18913,17 +18915,17 @@ T segment_cauchy_i10_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
@@ -18947,22 +18949,22 @@ T segment_cauchy_i10_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[0] * w0 + w1 * M_flat[1];
     const T t4 = w1 * M_flat[4] + M_flat[3] * w0;
     G_ap = t4;
-    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * b * seg5;
+    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * seg5 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(10, 12, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = w1 * M_beyond[1] + M_beyond[0] * w0;
     G_ap = M_beyond[3] * w0 + w1 * M_beyond[4];
-    const T t5 = T(1) / c;
+    const T t5 = T(1) / q1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t5;
-    const T t9 = T(1) / q1;
+    const T t9 = T(1) / c;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * (w1 * M_beyond[0] + w0 * t8 - seg6 * t12) * seg5;
+    G_E = -(T(1) / T(10)) * seg5 * (t8 * seg6 - w1 * M_beyond[0] - w0 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -18978,12 +18980,12 @@ T segment_cauchy_i10_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t22 = t21 * t20;
     const T t23 = t21 * t21;
     const T t24 = T(48) * a_minus_b * t18 + T(7) * a * t15 * (T(8) * a_minus_b * t19 + T(8) * b * t22 + T(5) * a * t15 * (T(2) * a_minus_b * t17 + T(3) * a * t15 * (b * t20 + J2 * a + a_minus_b * t16) + T(2) * b * t21)) + T(48) * b * t23;
-    F = (T(1) / T(384)) * t15 * t24 * w0 + (T(1) / T(384)) * w1 * (t15 * b * t24 + T(48) * t23 - T(48) * t18) * seg5;
+    F = (T(1) / T(384)) * t15 * t24 * w0 + (T(1) / T(384)) * w1 * seg5 * (t15 * b * t24 + T(48) * t23 - T(48) * t18);
     const T t25 = t18 * t16;
     const T t26 = t23 * t20;
     const T t27 = T(128) * a_minus_b * t25 + T(3) * a * t15 * t24 + T(128) * b * t26;
     G_ap = (T(1) / T(1280)) * t27 * t15 * w0 - (T(1) / T(1280)) * w1 * (T(128) * t25 - t27 * t15 * b - T(128) * t26) * seg5;
-    G_E = (T(1) / T(3840)) * (w1 * t15 * t24 + T(384) * w0 * t26 - T(384) * seg6 * t25) * seg5;
+    G_E = -(T(1) / T(3840)) * (T(384) * t25 * seg6 - w1 * t15 * t24 - T(384) * w0 * t26) * seg5;
   }
   f = F * length;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -19235,7 +19237,7 @@ T segment_cauchy_i10_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t11 * t11;
     const T t16 = T(48) * b * t8 + T(7) * a * t14 * t13 + T(48) * a_minus_b * t15;
     const T t17 = T(48) * t8 + t16 * b * t13 - T(48) * t15;
-    F = (T(1) / T(384)) * t16 * w0 * t13 + (T(1) / T(384)) * w1 * seg5 * t17 - (T(1) / T(384)) * (t16 * c * t13 - T(8) * t14 * t13 - T(2) * b * seg5 * t17) * seg5 * w2;
+    F = (T(1) / T(384)) * seg5 * w1 * t17 + (T(1) / T(384)) * t16 * w0 * t13 - (T(1) / T(384)) * (t16 * c * t13 - T(8) * t14 * t13 - T(2) * b * seg5 * t17) * seg5 * w2;
   }
   f = F * length;
   return f;
@@ -19293,17 +19295,17 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
   const T ab_bp = bp0 * ab0 + ab2 * bp2 + bp1 * ab1;
@@ -19316,7 +19318,7 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = ap_bp * s + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -19325,7 +19327,7 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(10, 12, 3, a, b, c, c - T(1), M_flat.data());
     const T t4 = w1 * M_flat[5] + w0 * M_flat[4] + w2 * M_flat[6];
     G_ap = t4;
-    G_E = w0 * M_flat[5] + w2 * M_flat[7] + M_flat[6] * w1 - b * t4 * seg5;
+    G_E = w0 * M_flat[5] + w2 * M_flat[7] + M_flat[6] * w1 - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -19339,28 +19341,28 @@ std::array<T, 3> segment_cauchy_i10_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * seg5 * (w0 * t8 + T(2) * w2 * M_beyond[1] + w1 * M_beyond[0] - t12 * seg6);
+    G_E = (T(1) / T(10)) * (w0 * t8 + T(2) * w2 * M_beyond[1] + w1 * M_beyond[0] - t12 * seg6) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
     const T t14 = T(1) / t13;
     const T J2 = t14 * atan2(t13, c_minus_b);
-    const T t15 = T(1) / c;
-    const T t16 = t15 * t15;
+    const T t15 = T(1) / D;
+    const T t16 = T(1) / q1;
     const T t17 = t16 * t16;
-    const T t18 = t17 * t15;
-    const T t19 = T(1) / D;
-    const T t20 = T(1) / q1;
-    const T t21 = t20 * t20;
-    const T t22 = t21 * t21;
-    const T t23 = t22 * t20;
-    const T t24 = t16 * t15;
-    const T t25 = t21 * t20;
-    const T t26 = T(48) * a_minus_b * t22 + T(7) * (T(8) * b * t24 + T(5) * a * t19 * (T(2) * b * t16 + T(2) * a_minus_b * t21 + T(3) * a * t19 * (a_minus_b * t20 + b * t15 + a * J2)) + T(8) * a_minus_b * t25) * a * t19 + T(48) * b * t17;
-    const T t27 = T(128) * b * t18 + T(128) * a_minus_b * t23 + T(3) * a * t19 * t26;
-    const T t28 = T(128) * t18 + t19 * t27 * b - T(128) * t23;
-    G_ap = (T(1) / T(1280)) * t28 * seg5 * w1 + (T(1) / T(3840)) * w2 * seg5 * (T(10) * t19 * t26 + T(6) * t28 * b * seg5 - T(3) * t19 * t27 * c) + (T(1) / T(1280)) * t19 * t27 * w0;
-    G_E = (T(1) / T(3840)) * seg5 * (T(384) * w0 * t18 + t19 * t26 * w1 + T(2) * w2 * (t19 * b * t26 + T(48) * t17 - T(48) * t22) * seg5 - T(384) * t23 * seg6);
+    const T t18 = t17 * t17;
+    const T t19 = T(1) / c;
+    const T t20 = t19 * t19;
+    const T t21 = t20 * t19;
+    const T t22 = t17 * t16;
+    const T t23 = t20 * t20;
+    const T t24 = T(48) * a_minus_b * t18 + T(7) * (T(8) * b * t21 + T(5) * a * t15 * (T(2) * b * t20 + T(2) * a_minus_b * t17 + T(3) * a * t15 * (a_minus_b * t16 + b * t19 + a * J2)) + T(8) * a_minus_b * t22) * a * t15 + T(48) * b * t23;
+    const T t25 = t23 * t19;
+    const T t26 = t18 * t16;
+    const T t27 = T(128) * b * t25 + T(128) * a_minus_b * t26 + T(3) * a * t15 * t24;
+    const T t28 = T(128) * t25 + t15 * t27 * b - T(128) * t26;
+    G_ap = (T(1) / T(3840)) * w2 * (T(10) * t15 * t24 + T(6) * seg5 * t28 * b - T(3) * t15 * t27 * c) * seg5 + (T(1) / T(1280)) * seg5 * t28 * w1 + (T(1) / T(1280)) * t15 * t27 * w0;
+    G_E = (T(1) / T(3840)) * seg5 * (T(384) * w0 * t25 + T(2) * w2 * (t15 * b * t24 + T(48) * t23 - T(48) * t18) * seg5 + t15 * t24 * w1 - T(384) * t26 * seg6);
   }
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
   grad[1] = -(ab1 * G_E - foot1 * G_ap) * g_factor;
@@ -19421,17 +19423,17 @@ T segment_cauchy_i10_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
+    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = ab2 * bp2 + ab1 * bp1 + bp0 * ab0;
@@ -19445,7 +19447,7 @@ T segment_cauchy_i10_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -19455,22 +19457,22 @@ T segment_cauchy_i10_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w0 * M_flat[0] + M_flat[2] * w2 + w1 * M_flat[1];
     const T t4 = M_flat[5] * w1 + M_flat[6] * w2 + w0 * M_flat[4];
     G_ap = t4;
-    G_E = M_flat[6] * w1 + M_flat[7] * w2 + M_flat[5] * w0 - b * seg5 * t4;
+    G_E = M_flat[6] * w1 + M_flat[7] * w2 + M_flat[5] * w0 - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
     segment_moments_beyond_end<T>(10, 12, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[0] * w0 + M_beyond[1] * w1 + M_beyond[2] * w2;
     G_ap = w1 * M_beyond[5] + M_beyond[6] * w2 + w0 * M_beyond[4];
-    const T t5 = T(1) / c;
+    const T t5 = T(1) / q1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t5;
-    const T t9 = T(1) / q1;
+    const T t9 = T(1) / c;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * (M_beyond[0] * w1 + T(2) * M_beyond[1] * w2 + w0 * t8 - seg6 * t12) * seg5;
+    G_E = -(T(1) / T(10)) * (t8 * seg6 - M_beyond[0] * w1 - T(2) * M_beyond[1] * w2 - w0 * t12) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -19488,13 +19490,13 @@ T segment_cauchy_i10_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t24 = t20 * t20;
     const T t25 = T(48) * a_minus_b * t18 + T(7) * a * t15 * t23 + T(48) * b * t24;
     const T t26 = T(48) * t18 - T(48) * t24 - t15 * t25 * b;
-    F = (T(1) / T(384)) * t15 * w0 * t25 - (T(1) / T(384)) * w1 * seg5 * t26 - (T(1) / T(384)) * (t15 * t25 * c + T(2) * b * seg5 * t26 - T(8) * t15 * t23) * seg5 * w2;
+    F = (T(1) / T(384)) * t15 * w0 * t25 - (T(1) / T(384)) * seg5 * w1 * t26 - (T(1) / T(384)) * (t15 * t25 * c + T(2) * seg5 * b * t26 - T(8) * t15 * t23) * seg5 * w2;
     const T t27 = t18 * t16;
     const T t28 = t24 * t19;
     const T t29 = T(128) * a_minus_b * t27 + T(3) * a * t15 * t25 + T(128) * b * t28;
     const T t30 = t15 * t29 * b + T(128) * t28 - T(128) * t27;
-    G_ap = (T(1) / T(1280)) * w1 * seg5 * t30 + (T(1) / T(1280)) * t15 * t29 * w0 - (T(1) / T(3840)) * (T(3) * t15 * t29 * c - T(10) * t15 * t25 - T(6) * b * seg5 * t30) * seg5 * w2;
-    G_E = (T(1) / T(3840)) * seg5 * (t15 * t25 * w1 + T(384) * w0 * t28 - T(2) * seg5 * t26 * w2 - T(384) * seg6 * t27);
+    G_ap = (T(1) / T(1280)) * seg5 * w1 * t30 + (T(1) / T(1280)) * t15 * t29 * w0 - (T(1) / T(3840)) * seg5 * (T(3) * t15 * t29 * c - T(6) * seg5 * b * t30 - T(10) * t15 * t25) * w2;
+    G_E = -(T(1) / T(3840)) * seg5 * (T(2) * seg5 * t26 * w2 + T(384) * t27 * seg6 - t15 * t25 * w1 - T(384) * w0 * t28);
   }
   f = length * F;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
@@ -19751,8 +19753,8 @@ T segment_cauchy_i10_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t11 * t11;
     const T t16 = T(7) * t6 * a * t13 + T(48) * t14 * a_minus_b + T(48) * b * t15;
     const T t17 = T(48) * t14 - T(48) * t15 - t6 * t16 * b;
-    const T t18 = t6 * t16 * c + T(2) * b * t17 * seg5 - T(8) * t6 * t13;
-    F = (T(1) / T(384)) * w0 * t6 * t16 - (T(1) / T(384)) * w3 * (T(8) * (T(8) * t9 - t6 * b * t13 - T(8) * t12) * seg5 + T(2) * b * seg5 * t18 - t17 * seg5 * c) * seg5 - (T(1) / T(384)) * seg5 * w2 * t18 - (T(1) / T(384)) * w1 * t17 * seg5;
+    const T t18 = t6 * t16 * c + T(2) * seg5 * b * t17 - T(8) * t6 * t13;
+    F = (T(1) / T(384)) * w0 * t6 * t16 - (T(1) / T(384)) * w3 * seg5 * (T(2) * t18 * seg5 * b + T(8) * seg5 * (T(8) * t9 - t6 * b * t13 - T(8) * t12) - seg5 * t17 * c) - (T(1) / T(384)) * t18 * seg5 * w2 - (T(1) / T(384)) * w1 * seg5 * t17;
   }
   f = F * length;
   return f;
@@ -19819,7 +19821,7 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
@@ -19834,7 +19836,7 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = ap_bp * s + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -19843,21 +19845,21 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(10, 12, 4, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[6] * w1 + M_flat[8] * w3 + w0 * M_flat[5] + M_flat[7] * w2;
     G_ap = t4;
-    G_E = w1 * M_flat[7] + M_flat[8] * w2 + w0 * M_flat[6] + w3 * M_flat[9] - b * seg5 * t4;
+    G_E = w1 * M_flat[7] + M_flat[8] * w2 + w0 * M_flat[6] + w3 * M_flat[9] - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(10, 12, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = w1 * M_beyond[6] + w3 * M_beyond[8] + w2 * M_beyond[7] + w0 * M_beyond[5];
-    const T t5 = T(1) / c;
+    const T t5 = T(1) / q1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t5;
-    const T t9 = T(1) / q1;
+    const T t9 = T(1) / c;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * seg5 * (w0 * t8 + w1 * M_beyond[0] + T(3) * w3 * M_beyond[2] + T(2) * w2 * M_beyond[1] - t12 * seg6);
+    G_E = -(T(1) / T(10)) * (t8 * seg6 - w0 * t12 - w1 * M_beyond[0] - T(3) * w3 * M_beyond[2] - T(2) * w2 * M_beyond[1]) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -19878,10 +19880,10 @@ std::array<T, 3> segment_cauchy_i10_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t27 = t25 * t20;
     const T t28 = T(128) * a_minus_b * t19 + T(3) * t15 * a * t26 + T(128) * b * t27;
     const T t29 = t15 * b * t28 + T(128) * t27 - T(128) * t19;
-    const T t30 = T(3) * t15 * t28 * c - T(6) * t29 * b * seg5 - T(10) * t15 * t26;
+    const T t30 = T(3) * t15 * t28 * c - T(6) * t29 * seg5 * b - T(10) * t15 * t26;
     const T t31 = t15 * t26 * b + T(48) * t25 - T(48) * t18;
-    G_ap = (T(1) / T(1280)) * t29 * w1 * seg5 + (T(1) / T(1280)) * t15 * w0 * t28 - (T(1) / T(3840)) * w3 * seg5 * (T(2) * t30 * b * seg5 + T(3) * t29 * seg5 * c - T(10) * t31 * seg5) - (T(1) / T(3840)) * t30 * seg5 * w2;
-    G_E = (T(1) / T(3840)) * seg5 * (T(3) * w3 * seg5 * (T(8) * t15 * t24 + T(2) * t31 * b * seg5 - t15 * t26 * c) + T(384) * w0 * t27 + T(2) * t31 * seg5 * w2 + t15 * t26 * w1 - T(384) * t19 * seg6);
+    G_ap = (T(1) / T(1280)) * t15 * w0 * t28 + (T(1) / T(1280)) * t29 * seg5 * w1 - (T(1) / T(3840)) * w3 * seg5 * (T(2) * seg5 * b * t30 + T(3) * t29 * seg5 * c - T(10) * seg5 * t31) - (T(1) / T(3840)) * seg5 * t30 * w2;
+    G_E = -(T(1) / T(3840)) * seg5 * (T(384) * t19 * seg6 - T(384) * w0 * t27 - T(2) * seg5 * t31 * w2 - T(3) * w3 * seg5 * (T(8) * t15 * t24 + T(2) * seg5 * t31 * b - t15 * t26 * c) - t15 * t26 * w1);
   }
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
   grad[1] = -(ab1 * G_E - foot1 * G_ap) * g_factor;
@@ -19945,15 +19947,15 @@ T segment_cauchy_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = plain_cross_cross;
     foot0 = ap0 - ab0 * ab_ap * seg0;
     foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
-    foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - exact_cross[0] * ab1);
+    foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + bp1 * ab1 + bp2 * ab2;
@@ -19977,7 +19979,7 @@ T segment_cauchy_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w2 * M_flat[2] + M_flat[3] * w3 + w1 * M_flat[1] + M_flat[0] * w0;
     const T t4 = w2 * M_flat[7] + w3 * M_flat[8] + w0 * M_flat[5] + w1 * M_flat[6];
     G_ap = t4;
-    G_E = M_flat[6] * w0 + w1 * M_flat[7] + w2 * M_flat[8] + M_flat[9] * w3 - b * t4 * seg5;
+    G_E = M_flat[6] * w0 + w1 * M_flat[7] + w2 * M_flat[8] + M_flat[9] * w3 - b * seg5 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -19992,7 +19994,7 @@ T segment_cauchy_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = -(T(1) / T(10)) * (seg6 * t8 - w1 * M_beyond[0] - t12 * w0 - T(2) * w2 * M_beyond[1] - T(3) * M_beyond[2] * w3) * seg5;
+    G_E = -(T(1) / T(10)) * seg5 * (t8 * seg6 - w1 * M_beyond[0] - t12 * w0 - T(2) * w2 * M_beyond[1] - T(3) * M_beyond[2] * w3);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -20010,15 +20012,15 @@ T segment_cauchy_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t24 = t20 * t20;
     const T t25 = T(48) * b * t17 + T(7) * t23 * t22 * a + T(48) * a_minus_b * t24;
     const T t26 = b * t25 * t22 + T(48) * t17 - T(48) * t24;
-    const T t27 = T(2) * b * t26 * seg5 + T(8) * t23 * t22 - t25 * c * t22;
-    F = (T(1) / T(384)) * w1 * t26 * seg5 + (T(1) / T(384)) * (T(2) * b * seg5 * t27 + T(8) * (T(8) * t18 + b * t23 * t22 - T(8) * t21) * seg5 - c * t26 * seg5) * seg5 * w3 + (T(1) / T(384)) * t25 * t22 * w0 + (T(1) / T(384)) * w2 * seg5 * t27;
+    const T t27 = t25 * c * t22 - T(8) * t23 * t22 - T(2) * b * seg5 * t26;
+    F = (T(1) / T(384)) * t25 * t22 * w0 + (T(1) / T(384)) * w1 * seg5 * t26 - (T(1) / T(384)) * t27 * w2 * seg5 - (T(1) / T(384)) * (T(2) * t27 * b * seg5 + c * seg5 * t26 - T(8) * seg5 * (T(8) * t18 + b * t23 * t22 - T(8) * t21)) * seg5 * w3;
     const T t28 = t17 * t15;
     const T t29 = t24 * t19;
     const T t30 = T(128) * b * t28 + T(3) * t25 * t22 * a + T(128) * a_minus_b * t29;
     const T t31 = b * t30 * t22 + T(128) * t28 - T(128) * t29;
-    const T t32 = T(3) * t30 * c * t22 - T(10) * t25 * t22 - T(6) * b * t31 * seg5;
-    G_ap = (T(1) / T(1280)) * w1 * t31 * seg5 + (T(1) / T(1280)) * t30 * t22 * w0 - (T(1) / T(3840)) * seg5 * (T(2) * b * t32 * seg5 + T(3) * t31 * c * seg5 - T(10) * t26 * seg5) * w3 - (T(1) / T(3840)) * w2 * t32 * seg5;
-    G_E = (T(1) / T(3840)) * (T(3) * seg5 * w3 * t27 + T(384) * t28 * w0 + T(2) * w2 * t26 * seg5 + w1 * t25 * t22 - T(384) * seg6 * t29) * seg5;
+    const T t32 = T(6) * b * t31 * seg5 + T(10) * t25 * t22 - T(3) * t30 * c * t22;
+    G_ap = (T(1) / T(3840)) * seg5 * w3 * (T(2) * t32 * b * seg5 + T(10) * seg5 * t26 - T(3) * t31 * c * seg5) + (T(1) / T(1280)) * w1 * t31 * seg5 + (T(1) / T(3840)) * t32 * w2 * seg5 + (T(1) / T(1280)) * t30 * t22 * w0;
+    G_E = (T(1) / T(3840)) * seg5 * (T(2) * w2 * seg5 * t26 + T(384) * t28 * w0 + w1 * t25 * t22 - T(3) * t27 * seg5 * w3 - T(384) * t29 * seg6);
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -20243,7 +20245,7 @@ T segment_cauchy_i11_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg8 + c - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg8 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -20324,17 +20326,17 @@ std::array<T, 3> segment_cauchy_i11_w0_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp0 * bp0 + bp1 * bp1 + bp2 * bp2;
   const T ab_bp = ab2 * bp2 + bp1 * ab1 + bp0 * ab0;
@@ -20460,15 +20462,15 @@ T segment_cauchy_i11_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
     foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
     foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
@@ -20484,7 +20486,7 @@ T segment_cauchy_i11_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -20881,7 +20883,7 @@ std::array<T, 3> segment_cauchy_i11_w1_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -20890,7 +20892,7 @@ std::array<T, 3> segment_cauchy_i11_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(11, 13, 2, a, b, c, c - T(1), M_flat.data());
     const T t4 = w0 * M_flat[3] + w1 * M_flat[4];
     G_ap = t4;
-    G_E = M_flat[5] * w1 + w0 * M_flat[4] - t4 * seg7 * b;
+    G_E = M_flat[5] * w1 + w0 * M_flat[4] - seg7 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -21021,7 +21023,7 @@ T segment_cauchy_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -21038,19 +21040,19 @@ T segment_cauchy_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_beyond_end<T>(11, 13, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = w1 * M_beyond[1] + w0 * M_beyond[0];
     G_ap = M_beyond[4] * w1 + M_beyond[3] * w0;
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t5;
     const T t9 = t8 * t8;
     const T t10 = t9 * t5;
-    const T t11 = T(1) / r1;
+    const T t11 = T(1) / r0;
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * seg7 * (t10 * w0 + M_beyond[0] * w1 - t16 * seg8);
+    G_E = -(T(1) / T(11)) * seg7 * (t10 * seg8 - t16 * w0 - M_beyond[0] * w1);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r0;
@@ -21070,17 +21072,17 @@ T segment_cauchy_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t30 = t20 * t18;
     const T t31 = T(63) * t22 * a_minus_b * t29 + T(63) * t17 * b * t30 + T(2) * a * t21 * t28;
     G_ap = (T(1) / T(693)) * w0 * t21 * t31 + (T(1) / T(693)) * seg7 * (t21 * b * t31 + T(63) * t17 * t30 - T(63) * t22 * t29) * w1;
-    const T t32 = t17 * t17;
+    const T t32 = t22 * t22;
     const T t33 = t32 * t32;
-    const T t34 = t33 * t17;
+    const T t34 = t33 * t22;
     const T t35 = t34 * t34;
-    const T t36 = t35 * t17;
-    const T t37 = t22 * t22;
+    const T t36 = t35 * t22;
+    const T t37 = t17 * t17;
     const T t38 = t37 * t37;
-    const T t39 = t38 * t22;
+    const T t39 = t38 * t17;
     const T t40 = t39 * t39;
-    const T t41 = t40 * t22;
-    G_E = (T(1) / T(3465)) * (T(315) * t36 * w0 + t21 * t28 * w1 - T(315) * t41 * seg8) * seg7;
+    const T t41 = t40 * t17;
+    G_E = -(T(1) / T(3465)) * seg7 * (T(315) * t36 * seg8 - T(315) * t41 * w0 - t21 * t28 * w1);
   }
   f = F * length;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
@@ -21315,7 +21317,7 @@ T segment_cauchy_i11_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg9 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg9 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -21344,7 +21346,7 @@ T segment_cauchy_i11_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t10 * t10;
     const T t16 = T(8) * t4 * a * t13 + T(35) * t14 * t5 * a_minus_b + T(35) * t8 * b * t15;
     const T t17 = T(35) * t14 * t5 - t16 * t4 * b - T(35) * t8 * t15;
-    F = (T(1) / T(315)) * t16 * t4 * w0 - (T(1) / T(315)) * w2 * seg7 * (t16 * t4 * c + T(2) * t17 * seg7 * b - T(9) * t4 * t13) - (T(1) / T(315)) * t17 * seg7 * w1;
+    F = (T(1) / T(315)) * t16 * t4 * w0 - (T(1) / T(315)) * t17 * seg7 * w1 - (T(1) / T(315)) * (t16 * t4 * c + T(2) * t17 * b * seg7 - T(9) * t4 * t13) * w2 * seg7;
   }
   f = F * length;
   return f;
@@ -21471,7 +21473,7 @@ std::array<T, 3> segment_cauchy_i11_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t30 = t26 * t24;
     const T t31 = T(63) * b * t17 * t21 + T(2) * t22 * a * t29 + T(63) * a_minus_b * t30 * t23;
     const T t32 = T(63) * t17 * t21 + t22 * t31 * b - T(63) * t30 * t23;
-    G_ap = (T(1) / T(693)) * seg7 * t32 * w1 + (T(1) / T(693)) * t22 * t31 * w0 - (T(1) / T(3465)) * seg7 * (T(5) * t22 * t31 * c - T(10) * seg7 * b * t32 - T(11) * t22 * t29) * w2;
+    G_ap = (T(1) / T(3465)) * seg7 * (T(10) * seg7 * b * t32 + T(11) * t22 * t29 - T(5) * t22 * t31 * c) * w2 + (T(1) / T(693)) * t22 * t31 * w0 + (T(1) / T(693)) * seg7 * t32 * w1;
     const T t33 = t17 * t17;
     const T t34 = t33 * t33;
     const T t35 = t34 * t17;
@@ -21482,7 +21484,7 @@ std::array<T, 3> segment_cauchy_i11_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t40 = t39 * t23;
     const T t41 = t40 * t40;
     const T t42 = t41 * t23;
-    G_E = (T(1) / T(3465)) * seg7 * (T(315) * w0 * t37 + t22 * t29 * w1 + T(2) * seg7 * (T(35) * t17 * t20 + t22 * t29 * b - T(35) * t26 * t23) * w2 - T(315) * seg8 * t42);
+    G_E = (T(1) / T(3465)) * seg7 * (T(2) * seg7 * (T(35) * t17 * t20 + t22 * t29 * b - T(35) * t26 * t23) * w2 + T(315) * w0 * t37 + t22 * t29 * w1 - T(315) * seg8 * t42);
   }
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
   grad[1] = -g_factor * (ab1 * G_E - G_ap * foot1);
@@ -21543,17 +21545,17 @@ T segment_cauchy_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab_ap * ab0;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab_ap * ab2;
+    foot0 = ap0 - ab_ap * seg0 * ab0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
-    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
-    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
+    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
+    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
+    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + ab1 * bp1 + bp2 * ab2;
@@ -21567,7 +21569,7 @@ T segment_cauchy_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -21577,7 +21579,7 @@ T segment_cauchy_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[1] * w1 + M_flat[2] * w2 + w0 * M_flat[0];
     const T t4 = w0 * M_flat[4] + w2 * M_flat[6] + w1 * M_flat[5];
     G_ap = t4;
-    G_E = w1 * M_flat[6] + M_flat[7] * w2 + w0 * M_flat[5] - b * t4 * seg7;
+    G_E = w1 * M_flat[6] + M_flat[7] * w2 + w0 * M_flat[5] - b * seg7 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -21596,7 +21598,7 @@ T segment_cauchy_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * (T(2) * w2 * M_beyond[1] + w0 * t10 + w1 * M_beyond[0] - seg8 * t16) * seg7;
+    G_E = (T(1) / T(11)) * seg7 * (T(2) * w2 * M_beyond[1] + w0 * t10 + w1 * M_beyond[0] - seg8 * t16);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r0;
@@ -21613,23 +21615,23 @@ T segment_cauchy_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t28 = t24 * t24;
     const T t29 = T(35) * b * t20 * t17 + T(8) * t27 * a * t21 + T(35) * a_minus_b * t28 * t22;
     const T t30 = b * t29 * t21 + T(35) * t20 * t17 - T(35) * t28 * t22;
-    F = (T(1) / T(315)) * w0 * t29 * t21 + (T(1) / T(315)) * w1 * t30 * seg7 - (T(1) / T(315)) * (c * t29 * t21 - T(9) * t27 * t21 - T(2) * b * t30 * seg7) * w2 * seg7;
+    F = (T(1) / T(315)) * seg7 * w1 * t30 + (T(1) / T(315)) * w0 * t29 * t21 - (T(1) / T(315)) * seg7 * (c * t29 * t21 - T(2) * b * seg7 * t30 - T(9) * t27 * t21) * w2;
     const T t31 = t20 * t18;
     const T t32 = t28 * t23;
     const T t33 = T(63) * b * t31 * t17 + T(2) * t29 * a * t21 + T(63) * a_minus_b * t32 * t22;
     const T t34 = b * t33 * t21 + T(63) * t31 * t17 - T(63) * t32 * t22;
-    G_ap = (T(1) / T(693)) * t34 * w1 * seg7 + (T(1) / T(693)) * w0 * t33 * t21 + (T(1) / T(3465)) * (T(11) * t29 * t21 + T(10) * b * t34 * seg7 - T(5) * t33 * c * t21) * w2 * seg7;
-    const T t35 = t17 * t17;
+    G_ap = (T(1) / T(693)) * w0 * t33 * t21 + (T(1) / T(693)) * seg7 * t34 * w1 + (T(1) / T(3465)) * seg7 * (T(10) * b * seg7 * t34 + T(11) * t29 * t21 - T(5) * t33 * c * t21) * w2;
+    const T t35 = t22 * t22;
     const T t36 = t35 * t35;
-    const T t37 = t36 * t17;
+    const T t37 = t36 * t22;
     const T t38 = t37 * t37;
-    const T t39 = t38 * t17;
-    const T t40 = t22 * t22;
+    const T t39 = t38 * t22;
+    const T t40 = t17 * t17;
     const T t41 = t40 * t40;
-    const T t42 = t41 * t22;
+    const T t42 = t41 * t17;
     const T t43 = t42 * t42;
-    const T t44 = t43 * t22;
-    G_E = (T(1) / T(3465)) * (T(2) * w2 * t30 * seg7 + T(315) * w0 * t39 + w1 * t29 * t21 - T(315) * seg8 * t44) * seg7;
+    const T t44 = t43 * t17;
+    G_E = -(T(1) / T(3465)) * seg7 * (T(315) * seg8 * t39 - T(315) * w0 * t44 - T(2) * seg7 * w2 * t30 - w1 * t29 * t21);
   }
   f = F * length;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -21869,7 +21871,7 @@ T segment_cauchy_i11_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg9 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg9 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -21884,22 +21886,22 @@ T segment_cauchy_i11_w3_f(const T* pre, const SegmentPoint<T>& point) {
     F = M_beyond[2] * w2 + M_beyond[3] * w3 + M_beyond[0] * w0 + M_beyond[1] * w1;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t4 = T(1) / r0;
-    const T t5 = t4 * t4;
+    const T t4 = T(1) / D;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
-    const T t8 = T(1) / D;
-    const T t9 = T(1) / r1;
+    const T t8 = t7 * t6;
+    const T t9 = T(1) / r0;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
-    const T t13 = t6 * t5;
-    const T t14 = T(5) * t12 * t9 * a_minus_b + T(5) * t4 * b * t13 + T(2) * a * t8 * (T(4) * a * t8 * (t10 * t9 * a_minus_b + t4 * b * t5 + T(2) * a * (t4 * b + t9 * a_minus_b) * t8) + T(3) * t4 * b * t6 + T(3) * t11 * t9 * a_minus_b);
+    const T t13 = T(5) * t8 * t5 * a_minus_b + T(5) * t9 * b * t12 + T(2) * a * t4 * (T(4) * a * t4 * (t6 * t5 * a_minus_b + t9 * b * t10 + T(2) * a * (t9 * b + t5 * a_minus_b) * t4) + T(3) * t9 * b * t11 + T(3) * t7 * t5 * a_minus_b);
+    const T t14 = t7 * t7;
     const T t15 = t11 * t11;
-    const T t16 = T(8) * a * t8 * t14 + T(35) * t15 * t9 * a_minus_b + T(35) * t4 * b * t7;
-    const T t17 = T(35) * t4 * t7 + t8 * b * t16 - T(35) * t15 * t9;
-    const T t18 = t8 * c * t16 - T(9) * t8 * t14 - T(2) * seg7 * b * t17;
-    F = (T(1) / T(315)) * w1 * seg7 * t17 + (T(1) / T(315)) * t8 * t16 * w0 + (T(1) / T(315)) * (T(9) * (T(5) * t4 * t13 + t8 * t14 * b - T(5) * t12 * t9) * seg7 - T(2) * t18 * seg7 * b - seg7 * t17 * c) * seg7 * w3 - (T(1) / T(315)) * t18 * seg7 * w2;
+    const T t16 = T(8) * a * t4 * t13 + T(35) * t14 * t5 * a_minus_b + T(35) * t9 * b * t15;
+    const T t17 = T(35) * t9 * t15 + t4 * b * t16 - T(35) * t14 * t5;
+    const T t18 = t4 * c * t16 - T(9) * t4 * t13 - T(2) * b * t17 * seg7;
+    F = (T(1) / T(315)) * t4 * t16 * w0 + (T(1) / T(315)) * (T(9) * (T(5) * t9 * t12 + t4 * t13 * b - T(5) * t8 * t5) * seg7 - T(2) * t18 * b * seg7 - t17 * seg7 * c) * seg7 * w3 + (T(1) / T(315)) * w1 * t17 * seg7 - (T(1) / T(315)) * t18 * seg7 * w2;
   }
   f = F * length;
   return f;
@@ -21958,7 +21960,7 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
     foot1 = ap1 - ab1 * seg0 * ab_ap;
     foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
@@ -21981,7 +21983,7 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -21990,7 +21992,7 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(11, 13, 4, a, b, c, c - T(1), M_flat.data());
     const T t4 = w3 * M_flat[8] + M_flat[6] * w1 + w2 * M_flat[7] + w0 * M_flat[5];
     G_ap = t4;
-    G_E = w2 * M_flat[8] + M_flat[9] * w3 + M_flat[7] * w1 + M_flat[6] * w0 - t4 * seg7 * b;
+    G_E = w2 * M_flat[8] + M_flat[9] * w3 + M_flat[7] * w1 + M_flat[6] * w0 - seg7 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -22008,7 +22010,7 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + t10 * w0 + T(3) * M_beyond[2] * w3 - seg8 * t16) * seg7;
+    G_E = (T(1) / T(11)) * seg7 * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + t10 * w0 + T(3) * M_beyond[2] * w3 - seg8 * t16);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / D;
@@ -22028,9 +22030,9 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t31 = t26 * t24;
     const T t32 = T(63) * a_minus_b * t18 * t22 + T(2) * t30 * t17 * a + T(63) * t23 * t31 * b;
     const T t33 = t17 * t32 * b + T(63) * t23 * t31 - T(63) * t18 * t22;
-    const T t34 = T(11) * t30 * t17 + T(10) * t33 * seg7 * b - T(5) * c * t17 * t32;
+    const T t34 = T(11) * t30 * t17 + T(10) * seg7 * t33 * b - T(5) * c * t17 * t32;
     const T t35 = T(35) * t18 * t21 - T(35) * t23 * t26 - t30 * t17 * b;
-    G_ap = (T(1) / T(693)) * t17 * w0 * t32 + (T(1) / T(3465)) * w2 * t34 * seg7 + (T(1) / T(693)) * t33 * w1 * seg7 - (T(1) / T(3465)) * w3 * seg7 * (T(5) * t33 * c * seg7 + T(11) * t35 * seg7 - T(2) * t34 * seg7 * b);
+    G_ap = (T(1) / T(693)) * t17 * w0 * t32 + (T(1) / T(693)) * seg7 * t33 * w1 + (T(1) / T(3465)) * seg7 * (T(2) * seg7 * b * t34 - T(11) * seg7 * t35 - T(5) * seg7 * t33 * c) * w3 + (T(1) / T(3465)) * seg7 * w2 * t34;
     const T t36 = t18 * t18;
     const T t37 = t36 * t36;
     const T t38 = t37 * t18;
@@ -22041,7 +22043,7 @@ std::array<T, 3> segment_cauchy_i11_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t43 = t42 * t23;
     const T t44 = t43 * t43;
     const T t45 = t44 * t23;
-    G_E = -(T(1) / T(3465)) * (T(315) * seg8 * t40 + T(3) * w3 * (T(2) * t35 * seg7 * b + c * t30 * t17 - T(9) * t29 * t17) * seg7 + T(2) * w2 * t35 * seg7 - T(315) * t45 * w0 - t30 * t17 * w1) * seg7;
+    G_E = -(T(1) / T(3465)) * seg7 * (T(2) * seg7 * w2 * t35 + T(3) * seg7 * w3 * (c * t30 * t17 + T(2) * seg7 * t35 * b - T(9) * t29 * t17) + T(315) * seg8 * t40 - T(315) * t45 * w0 - t30 * t17 * w1);
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = -(G_E * ab1 - foot1 * G_ap) * g_factor;
@@ -22137,7 +22139,7 @@ T segment_cauchy_i11_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w2 * M_flat[2] + M_flat[1] * w1 + w0 * M_flat[0] + w3 * M_flat[3];
     const T t4 = M_flat[6] * w1 + M_flat[7] * w2 + M_flat[5] * w0 + M_flat[8] * w3;
     G_ap = t4;
-    G_E = M_flat[7] * w1 + w0 * M_flat[6] + w2 * M_flat[8] + w3 * M_flat[9] - t4 * seg7 * b;
+    G_E = M_flat[7] * w1 + w0 * M_flat[6] + w2 * M_flat[8] + w3 * M_flat[9] - seg7 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -22156,7 +22158,7 @@ T segment_cauchy_i11_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * (T(3) * w3 * M_beyond[2] + M_beyond[0] * w1 + w0 * t10 + T(2) * w2 * M_beyond[1] - seg8 * t16) * seg7;
+    G_E = (T(1) / T(11)) * seg7 * (T(3) * w3 * M_beyond[2] + M_beyond[0] * w1 + w0 * t10 + T(2) * w2 * M_beyond[1] - seg8 * t16);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / D;
@@ -22173,14 +22175,14 @@ T segment_cauchy_i11_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t28 = t20 * t20;
     const T t29 = T(8) * a * t17 * t26 + T(35) * t27 * t22 * b + T(35) * a_minus_b * t28 * t18;
     const T t30 = T(35) * t27 * t22 + t29 * t17 * b - T(35) * t28 * t18;
-    const T t31 = T(9) * t17 * t26 + T(2) * t30 * seg7 * b - c * t29 * t17;
-    F = (T(1) / T(315)) * t29 * w0 * t17 + (T(1) / T(315)) * t30 * seg7 * w1 + (T(1) / T(315)) * t31 * w2 * seg7 - (T(1) / T(315)) * w3 * seg7 * (c * t30 * seg7 + T(9) * (T(5) * t21 * t18 - T(5) * t25 * t22 - t17 * t26 * b) * seg7 - T(2) * t31 * seg7 * b);
+    const T t31 = T(9) * t17 * t26 + T(2) * seg7 * t30 * b - c * t29 * t17;
+    F = (T(1) / T(315)) * seg7 * w2 * t31 + (T(1) / T(315)) * t29 * w0 * t17 + (T(1) / T(315)) * seg7 * t30 * w1 - (T(1) / T(315)) * seg7 * w3 * (seg7 * c * t30 + T(9) * seg7 * (T(5) * t21 * t18 - T(5) * t25 * t22 - t17 * t26 * b) - T(2) * seg7 * t31 * b);
     const T t32 = t27 * t23;
     const T t33 = t28 * t19;
     const T t34 = T(63) * t32 * t22 * b + T(2) * t29 * a * t17 + T(63) * a_minus_b * t33 * t18;
     const T t35 = t34 * t17 * b + T(63) * t32 * t22 - T(63) * t33 * t18;
-    const T t36 = T(5) * c * t34 * t17 - T(10) * t35 * seg7 * b - T(11) * t29 * t17;
-    G_ap = (T(1) / T(693)) * w0 * t34 * t17 + (T(1) / T(693)) * t35 * seg7 * w1 - (T(1) / T(3465)) * w2 * t36 * seg7 - (T(1) / T(3465)) * w3 * seg7 * (T(2) * t36 * seg7 * b + T(5) * c * t35 * seg7 - T(11) * t30 * seg7);
+    const T t36 = T(5) * c * t34 * t17 - T(11) * t29 * t17 - T(10) * seg7 * t35 * b;
+    G_ap = (T(1) / T(693)) * w0 * t34 * t17 + (T(1) / T(3465)) * seg7 * w3 * (T(11) * seg7 * t30 - T(2) * seg7 * t36 * b - T(5) * seg7 * c * t35) + (T(1) / T(693)) * seg7 * t35 * w1 - (T(1) / T(3465)) * seg7 * w2 * t36;
     const T t37 = t22 * t22;
     const T t38 = t37 * t37;
     const T t39 = t38 * t22;
@@ -22191,7 +22193,7 @@ T segment_cauchy_i11_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t44 = t43 * t18;
     const T t45 = t44 * t44;
     const T t46 = t45 * t18;
-    G_E = (T(1) / T(3465)) * (T(2) * w2 * t30 * seg7 + t29 * t17 * w1 + T(315) * w0 * t41 + T(3) * t31 * w3 * seg7 - T(315) * seg8 * t46) * seg7;
+    G_E = (T(1) / T(3465)) * seg7 * (T(2) * seg7 * w2 * t30 + T(3) * seg7 * w3 * t31 + t29 * t17 * w1 + T(315) * w0 * t41 - T(315) * seg8 * t46);
   }
   f = length * F;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -22528,7 +22530,7 @@ std::array<T, 3> segment_cauchy_i12_w0_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = ap_bp * s + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -22654,7 +22656,7 @@ T segment_cauchy_i12_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -22922,7 +22924,7 @@ T segment_cauchy_i12_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = ap_bp * s + T(1);
   T F;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg7 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg7 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -22952,7 +22954,7 @@ T segment_cauchy_i12_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t8 * t7;
     const T t16 = t12 * t11;
     const T t17 = T(128) * t10 * a_minus_b + T(128) * b * t14 + T(3) * a * t6 * (T(48) * t9 * a_minus_b + T(48) * b * t13 + T(7) * a * t6 * (T(8) * t15 * a_minus_b + T(5) * a * t6 * (T(3) * a * t6 * (b * t11 + t7 * a_minus_b + a * J2) + T(2) * t8 * a_minus_b + T(2) * b * t12) + T(8) * b * t16));
-    F = (T(1) / T(1280)) * t6 * t17 * w0 - (T(1) / T(1280)) * w1 * seg5 * (T(128) * t10 - t6 * t17 * b - T(128) * t14);
+    F = (T(1) / T(1280)) * t6 * t17 * w0 - (T(1) / T(1280)) * w1 * (T(128) * t10 - t6 * t17 * b - T(128) * t14) * seg5;
   }
   f = F * length;
   return f;
@@ -23010,8 +23012,8 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const T* pre, const SegmentPoint<T>&
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -23032,7 +23034,7 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = ap_bp * s + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -23041,7 +23043,7 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(12, 14, 2, a, b, c, c - T(1), M_flat.data());
     const T t4 = w1 * M_flat[4] + M_flat[3] * w0;
     G_ap = t4;
-    G_E = M_flat[5] * w1 + w0 * M_flat[4] - b * seg5 * t4;
+    G_E = M_flat[5] * w1 + w0 * M_flat[4] - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -23055,29 +23057,29 @@ std::array<T, 3> segment_cauchy_i12_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = -(T(1) / T(12)) * (seg6 * t8 - t12 * w0 - w1 * M_beyond[0]) * seg5;
+    G_E = -(T(1) / T(12)) * seg5 * (seg6 * t8 - t12 * w0 - w1 * M_beyond[0]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
     const T t14 = T(1) / t13;
     const T J2 = atan2(t13, c_minus_b) * t14;
-    const T t15 = T(1) / c;
-    const T t16 = t15 * t15;
-    const T t17 = t16 * t15;
-    const T t18 = t17 * t17;
-    const T t19 = T(1) / D;
-    const T t20 = T(1) / q1;
-    const T t21 = t20 * t20;
-    const T t22 = t21 * t20;
-    const T t23 = t16 * t16;
-    const T t24 = t21 * t21;
-    const T t25 = t23 * t15;
-    const T t26 = t24 * t20;
-    const T t27 = T(3) * t19 * a * (T(7) * t19 * a * (T(8) * a_minus_b * t22 + T(5) * (T(2) * a_minus_b * t21 + T(2) * t16 * b + T(3) * t19 * a * (a * J2 + t15 * b + a_minus_b * t20)) * t19 * a + T(8) * t17 * b) + T(48) * t23 * b + T(48) * a_minus_b * t24) + T(128) * t25 * b + T(128) * a_minus_b * t26;
-    const T t28 = t22 * t22;
-    const T t29 = T(11) * t19 * a * t27 + T(1280) * t18 * b + T(1280) * a_minus_b * t28;
-    G_ap = (T(1) / T(15360)) * w1 * (T(1280) * t18 + t19 * t29 * b - T(1280) * t28) * seg5 + (T(1) / T(15360)) * t19 * t29 * w0;
-    G_E = -(T(1) / T(15360)) * (T(1280) * seg6 * t28 - T(1280) * t18 * w0 - w1 * t19 * t27) * seg5;
+    const T t15 = T(1) / D;
+    const T t16 = T(1) / q1;
+    const T t17 = t16 * t16;
+    const T t18 = t17 * t16;
+    const T t19 = T(1) / c;
+    const T t20 = t19 * t19;
+    const T t21 = t20 * t19;
+    const T t22 = t20 * t20;
+    const T t23 = t17 * t17;
+    const T t24 = t22 * t19;
+    const T t25 = t23 * t16;
+    const T t26 = T(3) * t15 * a * (T(7) * t15 * a * (T(8) * a_minus_b * t18 + T(5) * (T(2) * a_minus_b * t17 + T(2) * t20 * b + T(3) * t15 * a * (a * J2 + t19 * b + a_minus_b * t16)) * t15 * a + T(8) * t21 * b) + T(48) * t22 * b + T(48) * a_minus_b * t23) + T(128) * t24 * b + T(128) * a_minus_b * t25;
+    const T t27 = t21 * t21;
+    const T t28 = t18 * t18;
+    const T t29 = T(11) * t15 * a * t26 + T(1280) * t27 * b + T(1280) * a_minus_b * t28;
+    G_ap = (T(1) / T(15360)) * t15 * t29 * w0 + (T(1) / T(15360)) * seg5 * w1 * (T(1280) * t27 + t15 * t29 * b - T(1280) * t28);
+    G_E = -(T(1) / T(15360)) * seg5 * (T(1280) * seg6 * t28 - T(1280) * t27 * w0 - w1 * t15 * t26);
   }
   grad[0] = -g_factor * (G_E * ab0 - G_ap * foot0);
   grad[1] = -g_factor * (G_E * ab1 - foot1 * G_ap);
@@ -23161,7 +23163,7 @@ T segment_cauchy_i12_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -23204,12 +23206,12 @@ T segment_cauchy_i12_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t24 = t21 * t21;
     const T t25 = t24 * t20;
     const T t26 = T(128) * t18 * a_minus_b + T(3) * a * t19 * (T(48) * t17 * a_minus_b + T(7) * (T(5) * (T(2) * t16 * a_minus_b + T(2) * b * t21 + T(3) * a * t19 * (b * t20 + J2 * a + t15 * a_minus_b)) * a * t19 + T(8) * b * t22 + T(8) * t23 * a_minus_b) * a * t19 + T(48) * b * t24) + T(128) * b * t25;
-    F = (T(1) / T(1280)) * w0 * t26 * t19 + (T(1) / T(1280)) * seg5 * (b * t26 * t19 + T(128) * t25 - T(128) * t18) * w1;
-    const T t27 = t23 * t23;
-    const T t28 = t22 * t22;
-    const T t29 = T(1280) * t27 * a_minus_b + T(11) * t26 * a * t19 + T(1280) * b * t28;
-    G_ap = (T(1) / T(15360)) * t29 * w0 * t19 + (T(1) / T(15360)) * seg5 * (T(1280) * t28 + b * t29 * t19 - T(1280) * t27) * w1;
-    G_E = (T(1) / T(15360)) * (t26 * w1 * t19 + T(1280) * w0 * t28 - T(1280) * t27 * seg6) * seg5;
+    F = (T(1) / T(1280)) * (b * t26 * t19 + T(128) * t25 - T(128) * t18) * seg5 * w1 + (T(1) / T(1280)) * w0 * t26 * t19;
+    const T t27 = t22 * t22;
+    const T t28 = t23 * t23;
+    const T t29 = T(1280) * t28 * a_minus_b + T(11) * t26 * a * t19 + T(1280) * b * t27;
+    G_ap = (T(1) / T(15360)) * (T(1280) * t27 + b * t29 * t19 - T(1280) * t28) * seg5 * w1 + (T(1) / T(15360)) * t29 * w0 * t19;
+    G_E = (T(1) / T(15360)) * seg5 * (t26 * w1 * t19 + T(1280) * w0 * t27 - T(1280) * t28 * seg6);
   }
   f = F * length;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -23465,7 +23467,7 @@ T segment_cauchy_i12_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t15 * t12;
     const T t18 = T(3) * t16 * t10 * a + T(128) * a_minus_b * t17 + T(128) * t9 * b;
     const T t19 = T(128) * t9 + t10 * b * t18 - T(128) * t17;
-    F = (T(1) / T(1280)) * seg5 * w1 * t19 + (T(1) / T(3840)) * seg5 * w2 * (T(6) * seg5 * t19 * b + T(10) * t16 * t10 - T(3) * c * t10 * t18) + (T(1) / T(1280)) * t10 * w0 * t18;
+    F = (T(1) / T(1280)) * w1 * seg5 * t19 + (T(1) / T(3840)) * (T(6) * seg5 * t19 * b + T(10) * t16 * t10 - T(3) * c * t10 * t18) * seg5 * w2 + (T(1) / T(1280)) * t10 * w0 * t18;
   }
   f = F * length;
   return f;
@@ -23546,7 +23548,7 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -23569,7 +23571,7 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(12)) * (t8 * w0 + T(2) * w2 * M_beyond[1] + w1 * M_beyond[0] - seg6 * t12) * seg5;
+    G_E = (T(1) / T(12)) * seg5 * (t8 * w0 + T(2) * w2 * M_beyond[1] + w1 * M_beyond[0] - seg6 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -23591,8 +23593,8 @@ std::array<T, 3> segment_cauchy_i12_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t28 = t22 * t22;
     const T t29 = T(1280) * a_minus_b * t27 + T(11) * t26 * a * t23 + T(1280) * b * t28;
     const T t30 = b * t23 * t29 + T(1280) * t28 - T(1280) * t27;
-    G_ap = (T(1) / T(15360)) * w2 * (T(12) * t26 * t23 + T(2) * b * t30 * seg5 - c * t23 * t29) * seg5 + (T(1) / T(15360)) * t23 * t29 * w0 + (T(1) / T(15360)) * t30 * w1 * seg5;
-    G_E = (T(1) / T(15360)) * (w1 * t26 * t23 + T(1280) * t28 * w0 + T(2) * (b * t26 * t23 + T(128) * t25 - T(128) * t18) * w2 * seg5 - T(1280) * seg6 * t27) * seg5;
+    G_ap = (T(1) / T(15360)) * seg5 * w2 * (T(12) * t26 * t23 + T(2) * b * t30 * seg5 - c * t23 * t29) + (T(1) / T(15360)) * t30 * seg5 * w1 + (T(1) / T(15360)) * t23 * t29 * w0;
+    G_E = (T(1) / T(15360)) * seg5 * (w1 * t26 * t23 + T(1280) * t28 * w0 + T(2) * (b * t26 * t23 + T(128) * t25 - T(128) * t18) * seg5 * w2 - T(1280) * seg6 * t27);
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -23655,7 +23657,7 @@ T segment_cauchy_i12_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = plain_cross_cross;
     foot0 = ap0 - ab_ap * seg0 * ab0;
     foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -23677,7 +23679,7 @@ T segment_cauchy_i12_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -23694,15 +23696,15 @@ T segment_cauchy_i12_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_beyond_end<T>(12, 14, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = w2 * M_beyond[2] + M_beyond[0] * w0 + w1 * M_beyond[1];
     G_ap = w1 * M_beyond[5] + M_beyond[6] * w2 + M_beyond[4] * w0;
-    const T t5 = T(1) / q1;
+    const T t5 = T(1) / c;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
-    const T t9 = T(1) / c;
+    const T t9 = T(1) / q1;
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = -(T(1) / T(12)) * seg5 * (seg6 * t8 - w1 * M_beyond[0] - t12 * w0 - T(2) * w2 * M_beyond[1]);
+    G_E = (T(1) / T(12)) * (w1 * M_beyond[0] + t8 * w0 + T(2) * w2 * M_beyond[1] - seg6 * t12) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -23722,13 +23724,13 @@ T segment_cauchy_i12_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t26 = t23 * t19;
     const T t27 = T(3) * t15 * t24 * a + T(128) * t25 * b + T(128) * a_minus_b * t26;
     const T t28 = T(128) * t25 + t15 * b * t27 - T(128) * t26;
-    F = (T(1) / T(3840)) * seg5 * w2 * (T(10) * t15 * t24 + T(6) * seg5 * t28 * b - T(3) * c * t15 * t27) + (T(1) / T(1280)) * seg5 * w1 * t28 + (T(1) / T(1280)) * t15 * w0 * t27;
+    F = (T(1) / T(3840)) * (T(10) * t15 * t24 + T(6) * seg5 * t28 * b - T(3) * c * t15 * t27) * seg5 * w2 + (T(1) / T(1280)) * t15 * w0 * t27 + (T(1) / T(1280)) * w1 * seg5 * t28;
     const T t29 = t21 * t21;
     const T t30 = t22 * t22;
     const T t31 = T(11) * t15 * a * t27 + T(1280) * t29 * b + T(1280) * a_minus_b * t30;
     const T t32 = T(1280) * t29 + t15 * t31 * b - T(1280) * t30;
-    G_ap = (T(1) / T(15360)) * seg5 * w2 * (T(2) * seg5 * t32 * b + T(12) * t15 * t27 - c * t15 * t31) + (T(1) / T(15360)) * t15 * t31 * w0 + (T(1) / T(15360)) * seg5 * w1 * t32;
-    G_E = -(T(1) / T(15360)) * seg5 * (T(1280) * seg6 * t30 - T(1280) * t29 * w0 - T(2) * seg5 * w2 * t28 - w1 * t15 * t27);
+    G_ap = (T(1) / T(15360)) * w1 * t32 * seg5 + (T(1) / T(15360)) * t15 * t31 * w0 + (T(1) / T(15360)) * seg5 * w2 * (T(12) * t15 * t27 + T(2) * t32 * seg5 * b - c * t15 * t31);
+    G_E = (T(1) / T(15360)) * (T(2) * seg5 * w2 * t28 + T(1280) * t29 * w0 + w1 * t15 * t27 - T(1280) * seg6 * t30) * seg5;
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -23989,8 +23991,8 @@ T segment_cauchy_i12_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t14 * t9;
     const T t18 = T(3) * t6 * a * t15 + T(128) * t16 * a_minus_b + T(128) * b * t17;
     const T t19 = T(128) * t16 - t6 * t18 * b - T(128) * t17;
-    const T t20 = T(10) * t6 * t15 - T(3) * t6 * t18 * c - T(6) * seg5 * b * t19;
-    F = (T(1) / T(1280)) * w0 * t6 * t18 + (T(1) / T(3840)) * seg5 * w2 * t20 + (T(1) / T(3840)) * seg5 * w3 * (T(3) * seg5 * c * t19 + T(2) * seg5 * b * t20 - T(10) * seg5 * (T(48) * t13 - t6 * b * t15 - T(48) * t14)) - (T(1) / T(1280)) * seg5 * w1 * t19;
+    const T t20 = T(6) * seg5 * b * t19 + T(3) * t6 * t18 * c - T(10) * t6 * t15;
+    F = (T(1) / T(1280)) * w0 * t6 * t18 - (T(1) / T(3840)) * w3 * (T(2) * t20 * seg5 * b + T(10) * seg5 * (T(48) * t13 - t6 * b * t15 - T(48) * t14) - T(3) * seg5 * c * t19) * seg5 - (T(1) / T(1280)) * seg5 * w1 * t19 - (T(1) / T(3840)) * t20 * seg5 * w2;
   }
   f = F * length;
   return f;
@@ -24049,9 +24051,9 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -24081,7 +24083,7 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(12, 14, 4, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[8] * w3 + M_flat[6] * w1 + M_flat[7] * w2 + w0 * M_flat[5];
     G_ap = t4;
-    G_E = w3 * M_flat[9] + M_flat[8] * w2 + w0 * M_flat[6] + w1 * M_flat[7] - t4 * b * seg5;
+    G_E = w3 * M_flat[9] + M_flat[8] * w2 + w0 * M_flat[6] + w1 * M_flat[7] - seg5 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -24095,33 +24097,33 @@ std::array<T, 3> segment_cauchy_i12_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(12)) * (w1 * M_beyond[0] + T(3) * w3 * M_beyond[2] + w0 * t8 + T(2) * M_beyond[1] * w2 - seg6 * t12) * seg5;
+    G_E = (T(1) / T(12)) * seg5 * (w1 * M_beyond[0] + T(3) * w3 * M_beyond[2] + w0 * t8 + T(2) * M_beyond[1] * w2 - seg6 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
     const T t14 = T(1) / t13;
     const T J2 = t14 * atan2(t13, c_minus_b);
-    const T t15 = T(1) / D;
-    const T t16 = T(1) / q1;
-    const T t17 = t16 * t16;
-    const T t18 = t17 * t16;
-    const T t19 = T(1) / c;
-    const T t20 = t19 * t19;
-    const T t21 = t20 * t19;
-    const T t22 = t17 * t17;
-    const T t23 = t20 * t20;
-    const T t24 = T(7) * t15 * a * (T(8) * a_minus_b * t18 + T(5) * (T(2) * a_minus_b * t17 + T(3) * t15 * a * (b * t19 + a * J2 + a_minus_b * t16) + T(2) * b * t20) * t15 * a + T(8) * b * t21) + T(48) * a_minus_b * t22 + T(48) * b * t23;
-    const T t25 = t22 * t16;
-    const T t26 = t23 * t19;
-    const T t27 = T(3) * t15 * a * t24 + T(128) * a_minus_b * t25 + T(128) * b * t26;
-    const T t28 = t18 * t18;
-    const T t29 = t21 * t21;
-    const T t30 = T(1280) * a_minus_b * t28 + T(11) * t15 * a * t27 + T(1280) * b * t29;
-    const T t31 = T(1280) * t28 - t15 * t30 * b - T(1280) * t29;
-    const T t32 = T(12) * t15 * t27 - t15 * t30 * c - T(2) * t31 * b * seg5;
-    const T t33 = T(128) * t25 - t15 * b * t27 - T(128) * t26;
-    G_ap = (T(1) / T(15360)) * t32 * w2 * seg5 + (T(1) / T(15360)) * t15 * w0 * t30 + (T(1) / T(15360)) * (t31 * c * seg5 + T(2) * t32 * b * seg5 - T(12) * t33 * seg5) * w3 * seg5 - (T(1) / T(15360)) * t31 * w1 * seg5;
-    G_E = -(T(1) / T(15360)) * (T(2) * w2 * t33 * seg5 + T(1280) * seg6 * t28 - w3 * (T(10) * t15 * t24 - T(3) * t15 * t27 * c - T(6) * b * t33 * seg5) * seg5 - T(1280) * w0 * t29 - t15 * w1 * t27) * seg5;
+    const T t15 = T(1) / q1;
+    const T t16 = t15 * t15;
+    const T t17 = t16 * t15;
+    const T t18 = t17 * t17;
+    const T t19 = T(1) / D;
+    const T t20 = T(1) / c;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * t20;
+    const T t23 = t16 * t16;
+    const T t24 = t21 * t21;
+    const T t25 = T(7) * t19 * a * (T(8) * a_minus_b * t17 + T(5) * (T(2) * a_minus_b * t16 + T(3) * t19 * a * (b * t20 + a * J2 + a_minus_b * t15) + T(2) * b * t21) * t19 * a + T(8) * b * t22) + T(48) * a_minus_b * t23 + T(48) * b * t24;
+    const T t26 = t23 * t15;
+    const T t27 = t24 * t20;
+    const T t28 = T(3) * t19 * a * t25 + T(128) * a_minus_b * t26 + T(128) * b * t27;
+    const T t29 = t22 * t22;
+    const T t30 = T(1280) * a_minus_b * t18 + T(11) * t19 * a * t28 + T(1280) * b * t29;
+    const T t31 = T(1280) * t18 - t19 * t30 * b - T(1280) * t29;
+    const T t32 = T(12) * t19 * t28 - t19 * t30 * c - T(2) * t31 * seg5 * b;
+    const T t33 = T(128) * t26 - t19 * b * t28 - T(128) * t27;
+    G_ap = (T(1) / T(15360)) * (t31 * seg5 * c + T(2) * t32 * seg5 * b - T(12) * seg5 * t33) * seg5 * w3 + (T(1) / T(15360)) * t19 * w0 * t30 + (T(1) / T(15360)) * t32 * seg5 * w2 - (T(1) / T(15360)) * t31 * seg5 * w1;
+    G_E = -(T(1) / T(15360)) * seg5 * (T(2) * seg5 * w2 * t33 + T(1280) * seg6 * t18 - seg5 * w3 * (T(10) * t19 * t25 - T(6) * seg5 * b * t33 - T(3) * t19 * t28 * c) - T(1280) * w0 * t29 - t19 * w1 * t28);
   }
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
   grad[1] = (foot1 * G_ap - ab1 * G_E) * g_factor;
@@ -24207,7 +24209,7 @@ T segment_cauchy_i12_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -24217,7 +24219,7 @@ T segment_cauchy_i12_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[2] * w2 + M_flat[0] * w0 + w1 * M_flat[1] + M_flat[3] * w3;
     const T t4 = w2 * M_flat[7] + w1 * M_flat[6] + w0 * M_flat[5] + w3 * M_flat[8];
     G_ap = t4;
-    G_E = M_flat[9] * w3 + w2 * M_flat[8] + M_flat[6] * w0 + w1 * M_flat[7] - seg5 * b * t4;
+    G_E = M_flat[9] * w3 + w2 * M_flat[8] + M_flat[6] * w0 + w1 * M_flat[7] - b * seg5 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -24252,15 +24254,15 @@ T segment_cauchy_i12_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t26 = T(48) * a_minus_b * t21 + T(7) * (T(8) * b * t24 + T(8) * a_minus_b * t25 + T(5) * (T(2) * b * t16 + T(2) * a_minus_b * t20 + T(3) * (J2 * a + a_minus_b * t19 + b * t15) * t23 * a) * t23 * a) * t23 * a + T(48) * b * t17;
     const T t27 = T(128) * a_minus_b * t22 + T(128) * b * t18 + T(3) * t23 * a * t26;
     const T t28 = T(128) * t18 + b * t27 * t23 - T(128) * t22;
-    const T t29 = T(3) * t27 * c * t23 - T(10) * t23 * t26 - T(6) * seg5 * b * t28;
-    F = (T(1) / T(1280)) * seg5 * w1 * t28 + (T(1) / T(1280)) * t27 * t23 * w0 - (T(1) / T(3840)) * seg5 * (T(2) * seg5 * t29 * b + T(3) * seg5 * c * t28 - T(10) * seg5 * (T(48) * t17 + b * t23 * t26 - T(48) * t21)) * w3 - (T(1) / T(3840)) * seg5 * t29 * w2;
-    const T t30 = t25 * t25;
-    const T t31 = t24 * t24;
-    const T t32 = T(1280) * a_minus_b * t30 + T(1280) * b * t31 + T(11) * t27 * t23 * a;
-    const T t33 = T(1280) * t31 + b * t32 * t23 - T(1280) * t30;
-    const T t34 = c * t32 * t23 - T(12) * t27 * t23 - T(2) * seg5 * b * t33;
-    G_ap = (T(1) / T(15360)) * t32 * t23 * w0 + (T(1) / T(15360)) * seg5 * w1 * t33 + (T(1) / T(15360)) * (T(12) * seg5 * t28 - seg5 * c * t33 - T(2) * seg5 * b * t34) * seg5 * w3 - (T(1) / T(15360)) * seg5 * t34 * w2;
-    G_E = (T(1) / T(15360)) * seg5 * (T(1280) * t31 * w0 + w1 * t27 * t23 + T(2) * seg5 * w2 * t28 - seg5 * t29 * w3 - T(1280) * t30 * seg6);
+    const T t29 = T(3) * t27 * c * t23 - T(6) * b * seg5 * t28 - T(10) * t23 * t26;
+    F = (T(1) / T(1280)) * w1 * seg5 * t28 + (T(1) / T(1280)) * t27 * t23 * w0 + (T(1) / T(3840)) * seg5 * (T(10) * seg5 * (T(48) * t17 + b * t23 * t26 - T(48) * t21) - T(2) * t29 * b * seg5 - T(3) * seg5 * c * t28) * w3 - (T(1) / T(3840)) * t29 * seg5 * w2;
+    const T t30 = t24 * t24;
+    const T t31 = t25 * t25;
+    const T t32 = T(1280) * a_minus_b * t31 + T(1280) * b * t30 + T(11) * t27 * t23 * a;
+    const T t33 = T(1280) * t30 + b * t32 * t23 - T(1280) * t31;
+    const T t34 = c * t32 * t23 - T(12) * t27 * t23 - T(2) * b * seg5 * t33;
+    G_ap = (T(1) / T(15360)) * w1 * seg5 * t33 + (T(1) / T(15360)) * t32 * t23 * w0 - (T(1) / T(15360)) * seg5 * w2 * t34 - (T(1) / T(15360)) * seg5 * (seg5 * c * t33 + T(2) * b * seg5 * t34 - T(12) * seg5 * t28) * w3;
+    G_E = (T(1) / T(15360)) * seg5 * (T(2) * seg5 * w2 * t28 + T(1280) * t30 * w0 + w1 * t27 * t23 - t29 * seg5 * w3 - T(1280) * t31 * seg6);
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -24487,7 +24489,7 @@ T segment_cauchy_i13_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg8 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg8 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -24578,7 +24580,7 @@ std::array<T, 3> segment_cauchy_i13_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
@@ -24593,7 +24595,7 @@ std::array<T, 3> segment_cauchy_i13_w0_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -24709,8 +24711,8 @@ T segment_cauchy_i13_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -24718,7 +24720,7 @@ T segment_cauchy_i13_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
     foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
+    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -24732,7 +24734,7 @@ T segment_cauchy_i13_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -24760,7 +24762,7 @@ T segment_cauchy_i13_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t13 = t12 * t12;
     const T t14 = t13 * t13;
     const T t15 = t14 * t10;
-    const T t16 = -(T(1) / T(13)) * seg7 * (w0 * t9 - t15 * w0);
+    const T t16 = -(T(1) / T(13)) * (w0 * t9 - t15 * w0) * seg7;
     G_E = t16;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -24792,7 +24794,7 @@ T segment_cauchy_i13_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t40 = t39 * t39;
     const T t41 = t40 * t40;
     const T t42 = t41 * t18;
-    const T t43 = -(T(1) / T(13)) * seg7 * (w0 * t37 - t42 * w0);
+    const T t43 = -(T(1) / T(13)) * (w0 * t37 - t42 * w0) * seg7;
     G_E = t43;
   }
   f = length * F;
@@ -25041,21 +25043,21 @@ T segment_cauchy_i13_w1_f(const T* pre, const SegmentPoint<T>& point) {
     F = w0 * M_beyond[0] + M_beyond[1] * w1;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t4 = T(1) / D;
-    const T t5 = T(1) / r0;
+    const T t4 = T(1) / r0;
+    const T t5 = t4 * t4;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
-    const T t8 = t7 * t6;
-    const T t9 = T(1) / r1;
-    const T t10 = t9 * t9;
-    const T t11 = t10 * t10;
-    const T t12 = t11 * t10;
-    const T t13 = t7 * t7;
-    const T t14 = t11 * t11;
-    const T t15 = t13 * t6;
-    const T t16 = t14 * t10;
-    const T t17 = T(2) * t4 * a * (T(8) * (T(5) * b * t8 * t5 + T(2) * t4 * (T(3) * b * t7 * t5 + T(4) * (T(2) * t4 * a * (b * t5 + t9 * a_minus_b) + t9 * a_minus_b * t10 + b * t6 * t5) * t4 * a + T(3) * t9 * a_minus_b * t11) * a + T(5) * t9 * a_minus_b * t12) * t4 * a + T(35) * b * t13 * t5 + T(35) * t9 * a_minus_b * t14) + T(63) * b * t15 * t5 + T(63) * t9 * a_minus_b * t16;
-    F = (T(1) / T(693)) * w0 * t17 * t4 + (T(1) / T(693)) * (T(63) * t15 * t5 + b * t17 * t4 - T(63) * t9 * t16) * seg7 * w1;
+    const T t8 = t7 * t5;
+    const T t9 = T(1) / D;
+    const T t10 = t6 * t5;
+    const T t11 = T(1) / r1;
+    const T t12 = t11 * t11;
+    const T t13 = t12 * t12;
+    const T t14 = t13 * t12;
+    const T t15 = t13 * t13;
+    const T t16 = t15 * t12;
+    const T t17 = T(2) * t9 * a * (T(8) * (T(5) * b * t10 * t4 + T(2) * t9 * (T(3) * b * t6 * t4 + T(4) * (T(2) * t9 * a * (b * t4 + t11 * a_minus_b) + t11 * a_minus_b * t12 + b * t5 * t4) * t9 * a + T(3) * t11 * a_minus_b * t13) * a + T(5) * t11 * a_minus_b * t14) * t9 * a + T(35) * b * t7 * t4 + T(35) * t11 * a_minus_b * t15) + T(63) * b * t8 * t4 + T(63) * t11 * a_minus_b * t16;
+    F = (T(1) / T(693)) * (T(63) * t8 * t4 + b * t17 * t9 - T(63) * t11 * t16) * seg7 * w1 + (T(1) / T(693)) * w0 * t17 * t9;
   }
   f = F * length;
   return f;
@@ -25113,8 +25115,8 @@ std::array<T, 3> segment_cauchy_i13_w1_grad(const T* pre, const SegmentPoint<T>&
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -25144,25 +25146,25 @@ std::array<T, 3> segment_cauchy_i13_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(13, 15, 2, a, b, c, c - T(1), M_flat.data());
     const T t4 = w0 * M_flat[3] + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * b * seg7;
+    G_E = w0 * M_flat[4] + w1 * M_flat[5] - seg7 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(13, 15, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = w1 * M_beyond[4] + w0 * M_beyond[3];
-    const T t5 = T(1) / r1;
+    const T t5 = T(1) / r0;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t8;
     const T t10 = t9 * t5;
-    const T t11 = T(1) / r0;
+    const T t11 = T(1) / r1;
     const T t12 = t11 * t11;
     const T t13 = t12 * t11;
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = -(T(1) / T(13)) * (seg8 * t10 - t16 * w0 - M_beyond[0] * w1) * seg7;
+    G_E = (T(1) / T(13)) * seg7 * (t10 * w0 + M_beyond[0] * w1 - seg8 * t16);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / D;
@@ -25182,18 +25184,18 @@ std::array<T, 3> segment_cauchy_i13_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t31 = t30 * t24;
     const T t32 = T(63) * t18 * t29 * b + T(63) * t23 * a_minus_b * t31 + T(2) * t17 * (T(35) * t18 * t28 * b + T(35) * t23 * a_minus_b * t30 + T(8) * t17 * a * (T(2) * t17 * a * (T(3) * t23 * a_minus_b * t25 + T(4) * t17 * a * (t18 * t19 * b + T(2) * (t18 * b + t23 * a_minus_b) * t17 * a + t23 * a_minus_b * t24) + T(3) * t18 * t20 * b) + T(5) * t23 * a_minus_b * t26 + T(5) * t18 * t21 * b)) * a;
     const T t33 = T(231) * t18 * t22 * b + T(231) * t23 * a_minus_b * t27 + T(4) * t17 * a * t32;
-    G_ap = (T(1) / T(3003)) * w0 * t17 * t33 + (T(1) / T(3003)) * w1 * (t17 * t33 * b + T(231) * t18 * t22 - T(231) * t23 * t27) * seg7;
-    const T t34 = t23 * t23;
-    const T t35 = t34 * t23;
+    G_ap = (T(1) / T(3003)) * w0 * t17 * t33 + (T(1) / T(3003)) * seg7 * w1 * (t17 * t33 * b + T(231) * t18 * t22 - T(231) * t23 * t27);
+    const T t34 = t18 * t18;
+    const T t35 = t34 * t18;
     const T t36 = t35 * t35;
     const T t37 = t36 * t36;
-    const T t38 = t37 * t23;
-    const T t39 = t18 * t18;
-    const T t40 = t39 * t18;
+    const T t38 = t37 * t18;
+    const T t39 = t23 * t23;
+    const T t40 = t39 * t23;
     const T t41 = t40 * t40;
     const T t42 = t41 * t41;
-    const T t43 = t42 * t18;
-    G_E = -(T(1) / T(9009)) * (T(693) * seg8 * t38 - w1 * t17 * t32 - T(693) * t43 * w0) * seg7;
+    const T t43 = t42 * t23;
+    G_E = (T(1) / T(9009)) * seg7 * (w1 * t17 * t32 + T(693) * t38 * w0 - T(693) * seg8 * t43);
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
   grad[1] = g_factor * (foot1 * G_ap - G_E * ab1);
@@ -25255,7 +25257,7 @@ T segment_cauchy_i13_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -25277,7 +25279,7 @@ T segment_cauchy_i13_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -25294,19 +25296,19 @@ T segment_cauchy_i13_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_beyond_end<T>(13, 15, 2, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = w0 * M_beyond[0] + M_beyond[1] * w1;
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / r1;
+    const T t5 = T(1) / r0;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t8;
     const T t10 = t9 * t5;
-    const T t11 = T(1) / r0;
+    const T t11 = T(1) / r1;
     const T t12 = t11 * t11;
     const T t13 = t12 * t11;
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = -(T(1) / T(13)) * (seg8 * t10 - w0 * t16 - w1 * M_beyond[0]) * seg7;
+    G_E = (T(1) / T(13)) * (w0 * t10 + w1 * M_beyond[0] - seg8 * t16) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r1;
@@ -25328,17 +25330,17 @@ T segment_cauchy_i13_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t32 = t29 * t29;
     const T t33 = T(231) * b * t31 * t22 + T(4) * t30 * a * t27 + T(231) * t32 * t17 * a_minus_b;
     G_ap = (T(1) / T(3003)) * (b * t33 * t27 + T(231) * t31 * t22 - T(231) * t32 * t17) * w1 * seg7 + (T(1) / T(3003)) * w0 * t33 * t27;
-    const T t34 = t17 * t17;
-    const T t35 = t34 * t17;
+    const T t34 = t22 * t22;
+    const T t35 = t34 * t22;
     const T t36 = t35 * t35;
     const T t37 = t36 * t36;
-    const T t38 = t37 * t17;
-    const T t39 = t22 * t22;
-    const T t40 = t39 * t22;
+    const T t38 = t37 * t22;
+    const T t39 = t17 * t17;
+    const T t40 = t39 * t17;
     const T t41 = t40 * t40;
     const T t42 = t41 * t41;
-    const T t43 = t42 * t22;
-    G_E = -(T(1) / T(9009)) * (T(693) * seg8 * t38 - T(693) * w0 * t43 - t30 * w1 * t27) * seg7;
+    const T t43 = t42 * t17;
+    G_E = (T(1) / T(9009)) * (T(693) * w0 * t38 + t30 * w1 * t27 - T(693) * seg8 * t43) * seg7;
   }
   f = F * length;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
@@ -25606,7 +25608,7 @@ T segment_cauchy_i13_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = T(35) * t13 * t10 * a_minus_b + T(35) * t8 * t5 * b + T(8) * (T(2) * t4 * a * (T(3) * t7 * t5 * b + T(3) * t12 * t10 * a_minus_b + T(4) * t4 * a * (t11 * t10 * a_minus_b + T(2) * t4 * a * (t5 * b + t10 * a_minus_b) + t6 * t5 * b)) + T(5) * t15 * t5 * b + T(5) * t16 * t10 * a_minus_b) * t4 * a;
     const T t18 = T(63) * t9 * t5 * b + T(63) * t14 * t10 * a_minus_b + T(2) * t17 * t4 * a;
     const T t19 = T(63) * t9 * t5 + t4 * t18 * b - T(63) * t14 * t10;
-    F = (T(1) / T(693)) * t4 * t18 * w0 + (T(1) / T(693)) * seg7 * t19 * w1 - (T(1) / T(3465)) * w2 * seg7 * (T(5) * c * t4 * t18 - T(10) * seg7 * t19 * b - T(11) * t17 * t4);
+    F = (T(1) / T(693)) * t4 * t18 * w0 + (T(1) / T(3465)) * w2 * (T(10) * seg7 * t19 * b + T(11) * t17 * t4 - T(5) * c * t4 * t18) * seg7 + (T(1) / T(693)) * seg7 * t19 * w1;
   }
   f = F * length;
   return f;
@@ -25702,19 +25704,19 @@ std::array<T, 3> segment_cauchy_i13_w2_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 8> M_beyond;
     segment_moments_beyond_end<T>(13, 15, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = w0 * M_beyond[4] + M_beyond[5] * w1 + w2 * M_beyond[6];
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t8;
     const T t10 = t9 * t5;
-    const T t11 = T(1) / r1;
+    const T t11 = T(1) / r0;
     const T t12 = t11 * t11;
     const T t13 = t12 * t11;
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(13)) * (T(2) * M_beyond[1] * w2 + w0 * t10 + M_beyond[0] * w1 - t16 * seg8) * seg7;
+    G_E = -(T(1) / T(13)) * (t10 * seg8 - T(2) * M_beyond[1] * w2 - w0 * t16 - M_beyond[0] * w1) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / D;
@@ -25731,11 +25733,11 @@ std::array<T, 3> segment_cauchy_i13_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t28 = t27 * t19;
     const T t29 = t26 * t23;
     const T t30 = T(2) * t17 * (T(8) * t17 * a * (T(5) * t18 * a_minus_b * t21 + T(5) * b * t22 * t25 + T(2) * t17 * a * (T(4) * t17 * a * (T(2) * t17 * a * (b * t22 + t18 * a_minus_b) + b * t22 * t23 + t18 * a_minus_b * t19) + T(3) * t18 * a_minus_b * t20 + T(3) * b * t22 * t24)) + T(35) * b * t22 * t26 + T(35) * t18 * a_minus_b * t27) * a + T(63) * t18 * a_minus_b * t28 + T(63) * b * t22 * t29;
-    const T t31 = t21 * t21;
-    const T t32 = t25 * t25;
-    const T t33 = T(4) * t17 * a * t30 + T(231) * b * t22 * t32 + T(231) * t18 * a_minus_b * t31;
-    const T t34 = T(231) * t18 * t31 - T(231) * t22 * t32 - t17 * t33 * b;
-    G_ap = (T(1) / T(9009)) * w2 * (T(13) * t17 * t30 - T(6) * t34 * b * seg7 - T(3) * t17 * t33 * c) * seg7 + (T(1) / T(3003)) * t17 * t33 * w0 - (T(1) / T(3003)) * t34 * w1 * seg7;
+    const T t31 = t25 * t25;
+    const T t32 = t21 * t21;
+    const T t33 = T(4) * t17 * a * t30 + T(231) * b * t22 * t31 + T(231) * t18 * a_minus_b * t32;
+    const T t34 = T(231) * t18 * t32 - T(231) * t22 * t31 - t17 * t33 * b;
+    G_ap = (T(1) / T(3003)) * t17 * t33 * w0 - (T(1) / T(9009)) * w2 * (T(6) * t34 * b * seg7 + T(3) * t17 * t33 * c - T(13) * t17 * t30) * seg7 - (T(1) / T(3003)) * t34 * w1 * seg7;
     const T t35 = t18 * t18;
     const T t36 = t35 * t18;
     const T t37 = t36 * t36;
@@ -25831,7 +25833,7 @@ T segment_cauchy_i13_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -25848,19 +25850,19 @@ T segment_cauchy_i13_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_beyond_end<T>(13, 15, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = w1 * M_beyond[1] + M_beyond[2] * w2 + w0 * M_beyond[0];
     G_ap = w0 * M_beyond[4] + M_beyond[5] * w1 + M_beyond[6] * w2;
-    const T t5 = T(1) / r1;
+    const T t5 = T(1) / r0;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t8;
     const T t10 = t9 * t5;
-    const T t11 = T(1) / r0;
+    const T t11 = T(1) / r1;
     const T t12 = t11 * t11;
     const T t13 = t12 * t11;
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = -(T(1) / T(13)) * (seg8 * t10 - w0 * t16 - w1 * M_beyond[0] - T(2) * w2 * M_beyond[1]) * seg7;
+    G_E = (T(1) / T(13)) * seg7 * (w0 * t10 + w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] - t16 * seg8);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r0;
@@ -25879,23 +25881,23 @@ T segment_cauchy_i13_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t30 = t24 * t22;
     const T t31 = T(2) * t28 * a * t25 + T(63) * b * t29 * t17 + T(63) * t21 * a_minus_b * t30;
     const T t32 = b * t31 * t25 + T(63) * t29 * t17 - T(63) * t21 * t30;
-    F = (T(1) / T(693)) * w0 * t31 * t25 + (T(1) / T(3465)) * seg7 * w2 * (T(10) * b * seg7 * t32 + T(11) * t28 * t25 - T(5) * t31 * c * t25) + (T(1) / T(693)) * w1 * seg7 * t32;
+    F = (T(1) / T(693)) * w0 * t31 * t25 + (T(1) / T(693)) * w1 * seg7 * t32 - (T(1) / T(3465)) * (T(5) * t31 * c * t25 - T(11) * t28 * t25 - T(10) * b * seg7 * t32) * w2 * seg7;
     const T t33 = t27 * t27;
     const T t34 = t26 * t26;
     const T t35 = T(231) * b * t33 * t17 + T(4) * t31 * a * t25 + T(231) * t21 * a_minus_b * t34;
     const T t36 = T(231) * t33 * t17 + b * t35 * t25 - T(231) * t21 * t34;
-    G_ap = (T(1) / T(9009)) * seg7 * (T(6) * b * seg7 * t36 + T(13) * t31 * t25 - T(3) * c * t35 * t25) * w2 + (T(1) / T(3003)) * w0 * t35 * t25 + (T(1) / T(3003)) * w1 * seg7 * t36;
-    const T t37 = t21 * t21;
-    const T t38 = t37 * t21;
+    G_ap = (T(1) / T(3003)) * w1 * seg7 * t36 + (T(1) / T(3003)) * w0 * t35 * t25 + (T(1) / T(9009)) * (T(13) * t31 * t25 + T(6) * b * seg7 * t36 - T(3) * c * t35 * t25) * w2 * seg7;
+    const T t37 = t17 * t17;
+    const T t38 = t37 * t17;
     const T t39 = t38 * t38;
     const T t40 = t39 * t39;
-    const T t41 = t40 * t21;
-    const T t42 = t17 * t17;
-    const T t43 = t42 * t17;
+    const T t41 = t40 * t17;
+    const T t42 = t21 * t21;
+    const T t43 = t42 * t21;
     const T t44 = t43 * t43;
     const T t45 = t44 * t44;
-    const T t46 = t45 * t17;
-    G_E = -(T(1) / T(9009)) * (T(693) * seg8 * t41 - T(2) * seg7 * w2 * t32 - T(693) * w0 * t46 - t31 * w1 * t25) * seg7;
+    const T t46 = t45 * t21;
+    G_E = (T(1) / T(9009)) * (T(693) * w0 * t41 + t31 * w1 * t25 + T(2) * w2 * seg7 * t32 - T(693) * t46 * seg8) * seg7;
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
@@ -26137,7 +26139,7 @@ T segment_cauchy_i13_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(seg9 + c - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg9 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -26169,7 +26171,7 @@ T segment_cauchy_i13_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t18 = T(63) * t9 * t5 * a_minus_b + T(63) * t10 * b * t14 + T(2) * a * t4 * t17;
     const T t19 = t4 * t18 * b + T(63) * t10 * t14 - T(63) * t9 * t5;
     const T t20 = T(5) * t4 * t18 * c - T(10) * seg7 * b * t19 - T(11) * t4 * t17;
-    F = (T(1) / T(693)) * w0 * t4 * t18 + (T(1) / T(693)) * seg7 * w1 * t19 - (T(1) / T(3465)) * seg7 * w2 * t20 - (T(1) / T(3465)) * w3 * (T(5) * seg7 * t19 * c + T(2) * seg7 * b * t20 - T(11) * seg7 * (t4 * b * t17 + T(35) * t10 * t13 - T(35) * t8 * t5)) * seg7;
+    F = (T(1) / T(693)) * seg7 * w1 * t19 + (T(1) / T(693)) * w0 * t4 * t18 - (T(1) / T(3465)) * seg7 * t20 * w2 - (T(1) / T(3465)) * w3 * seg7 * (T(2) * seg7 * t20 * b + T(5) * seg7 * t19 * c - T(11) * seg7 * (t4 * b * t17 + T(35) * t10 * t13 - T(35) * t8 * t5));
   }
   f = F * length;
   return f;
@@ -26228,9 +26230,9 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -26278,7 +26280,7 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(13)) * (w0 * t10 + T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] + T(3) * M_beyond[2] * w3 - seg8 * t16) * seg7;
+    G_E = (T(1) / T(13)) * seg7 * (w0 * t10 + T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] + T(3) * M_beyond[2] * w3 - seg8 * t16);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r1;
@@ -26300,9 +26302,9 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t33 = t26 * t26;
     const T t34 = T(231) * t21 * a_minus_b * t17 + T(4) * t22 * t32 * a + T(231) * b * t23 * t33;
     const T t35 = t34 * t22 * b + T(231) * t23 * t33 - T(231) * t21 * t17;
-    const T t36 = T(6) * b * seg7 * t35 + T(13) * t22 * t32 - T(3) * t34 * t22 * c;
-    const T t37 = T(63) * t30 * t17 - t22 * t32 * b - T(63) * t23 * t31;
-    G_ap = (T(1) / T(9009)) * w2 * t36 * seg7 + (T(1) / T(3003)) * t34 * t22 * w0 + (T(1) / T(3003)) * w1 * seg7 * t35 - (T(1) / T(9009)) * (T(3) * c * seg7 * t35 + T(13) * t37 * seg7 - T(2) * b * t36 * seg7) * seg7 * w3;
+    const T t36 = T(63) * t30 * t17 - t22 * t32 * b - T(63) * t23 * t31;
+    const T t37 = T(3) * t34 * t22 * c - T(6) * b * seg7 * t35 - T(13) * t22 * t32;
+    G_ap = (T(1) / T(3003)) * w1 * seg7 * t35 + (T(1) / T(3003)) * t34 * t22 * w0 - (T(1) / T(9009)) * (T(13) * t36 * seg7 + T(3) * c * seg7 * t35 + T(2) * t37 * b * seg7) * seg7 * w3 - (T(1) / T(9009)) * t37 * w2 * seg7;
     const T t38 = t23 * t23;
     const T t39 = t38 * t23;
     const T t40 = t39 * t39;
@@ -26313,7 +26315,7 @@ std::array<T, 3> segment_cauchy_i13_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t45 = t44 * t44;
     const T t46 = t45 * t45;
     const T t47 = t46 * t17;
-    G_E = (T(1) / T(45045)) * seg7 * (T(3465) * w0 * t42 + T(5) * t22 * t32 * w1 - T(10) * w2 * t37 * seg7 - T(3465) * seg8 * t47 - T(3) * (T(5) * t22 * t32 * c + T(10) * b * t37 * seg7 - T(11) * t22 * t29) * seg7 * w3);
+    G_E = (T(1) / T(45045)) * seg7 * (T(3465) * w0 * t42 + T(5) * t22 * t32 * w1 - T(3465) * seg8 * t47 - T(10) * w2 * t36 * seg7 - T(3) * (T(5) * t22 * t32 * c + T(10) * b * t36 * seg7 - T(11) * t22 * t29) * seg7 * w3);
   }
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - ab1 * G_E);
@@ -26375,8 +26377,8 @@ T segment_cauchy_i13_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
     foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
@@ -26399,7 +26401,7 @@ T segment_cauchy_i13_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(seg6 + c - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -26428,44 +26430,44 @@ T segment_cauchy_i13_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(13)) * (w0 * t10 + w1 * M_beyond[0] + T(3) * w3 * M_beyond[2] + T(2) * M_beyond[1] * w2 - t16 * seg8) * seg7;
+    G_E = (T(1) / T(13)) * (w0 * t10 + w1 * M_beyond[0] + T(3) * w3 * M_beyond[2] + T(2) * M_beyond[1] * w2 - seg8 * t16) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t17 = T(1) / r1;
-    const T t18 = t17 * t17;
+    const T t17 = T(1) / D;
+    const T t18 = T(1) / r0;
     const T t19 = t18 * t18;
     const T t20 = t19 * t19;
-    const T t21 = t20 * t18;
-    const T t22 = T(1) / r0;
-    const T t23 = t22 * t22;
+    const T t21 = t20 * t20;
+    const T t22 = t20 * t19;
+    const T t23 = T(1) / r1;
     const T t24 = t23 * t23;
     const T t25 = t24 * t24;
-    const T t26 = t25 * t23;
-    const T t27 = T(1) / D;
-    const T t28 = t24 * t23;
-    const T t29 = t19 * t18;
-    const T t30 = T(35) * t22 * b * t25 + T(8) * a * (T(5) * t22 * b * t28 + T(5) * t29 * t17 * a_minus_b + T(2) * a * (T(3) * t22 * b * t24 + T(4) * (T(2) * a * (t17 * a_minus_b + t22 * b) * t27 + t18 * t17 * a_minus_b + t22 * b * t23) * a * t27 + T(3) * t19 * t17 * a_minus_b) * t27) * t27 + T(35) * t20 * t17 * a_minus_b;
-    const T t31 = T(2) * a * t30 * t27 + T(63) * t22 * b * t26 + T(63) * t21 * t17 * a_minus_b;
-    const T t32 = T(63) * t21 * t17 - T(63) * t22 * t26 - b * t27 * t31;
-    const T t33 = T(10) * t32 * b * seg7 + T(5) * t27 * t31 * c - T(11) * t30 * t27;
-    F = (T(1) / T(3465)) * w3 * (T(5) * t32 * seg7 * c + T(11) * seg7 * (T(35) * t22 * t25 + t30 * b * t27 - T(35) * t20 * t17) - T(2) * t33 * b * seg7) * seg7 + (T(1) / T(693)) * w0 * t27 * t31 - (T(1) / T(3465)) * t33 * seg7 * w2 - (T(1) / T(693)) * t32 * w1 * seg7;
-    const T t34 = t28 * t28;
-    const T t35 = t29 * t29;
-    const T t36 = T(4) * a * t27 * t31 + T(231) * t22 * b * t34 + T(231) * t35 * t17 * a_minus_b;
-    const T t37 = T(231) * t22 * t34 + t36 * b * t27 - T(231) * t35 * t17;
-    const T t38 = T(3) * t36 * t27 * c - T(13) * t27 * t31 - T(6) * t37 * b * seg7;
-    G_ap = (T(1) / T(3003)) * t37 * w1 * seg7 + (T(1) / T(3003)) * w0 * t36 * t27 - (T(1) / T(9009)) * w3 * (T(2) * b * seg7 * t38 + T(3) * t37 * seg7 * c + T(13) * t32 * seg7) * seg7 - (T(1) / T(9009)) * seg7 * w2 * t38;
-    const T t39 = t22 * t22;
-    const T t40 = t39 * t22;
+    const T t26 = t25 * t24;
+    const T t27 = t25 * t25;
+    const T t28 = T(35) * t18 * b * t21 + T(8) * a * (T(5) * t18 * b * t22 + T(5) * t26 * t23 * a_minus_b + T(2) * a * (T(3) * t18 * b * t20 + T(4) * (T(2) * a * (t23 * a_minus_b + t18 * b) * t17 + t24 * t23 * a_minus_b + t18 * b * t19) * a * t17 + T(3) * t25 * t23 * a_minus_b) * t17) * t17 + T(35) * t27 * t23 * a_minus_b;
+    const T t29 = t21 * t19;
+    const T t30 = t27 * t24;
+    const T t31 = T(2) * a * t28 * t17 + T(63) * t18 * b * t29 + T(63) * t30 * t23 * a_minus_b;
+    const T t32 = T(63) * t30 * t23 - T(63) * t18 * t29 - b * t17 * t31;
+    const T t33 = T(5) * t17 * t31 * c + T(10) * t32 * b * seg7 - T(11) * t28 * t17;
+    F = (T(1) / T(693)) * w0 * t17 * t31 + (T(1) / T(3465)) * w3 * (T(11) * (T(35) * t18 * t21 + t28 * b * t17 - T(35) * t27 * t23) * seg7 + T(5) * t32 * seg7 * c - T(2) * b * t33 * seg7) * seg7 - (T(1) / T(693)) * t32 * w1 * seg7 - (T(1) / T(3465)) * t33 * seg7 * w2;
+    const T t34 = t22 * t22;
+    const T t35 = t26 * t26;
+    const T t36 = T(4) * a * t17 * t31 + T(231) * t18 * b * t34 + T(231) * t35 * t23 * a_minus_b;
+    const T t37 = T(231) * t18 * t34 + t36 * b * t17 - T(231) * t35 * t23;
+    const T t38 = T(6) * t37 * b * seg7 + T(13) * t17 * t31 - T(3) * t36 * t17 * c;
+    G_ap = (T(1) / T(3003)) * w0 * t36 * t17 + (T(1) / T(9009)) * t38 * seg7 * w2 + (T(1) / T(3003)) * t37 * w1 * seg7 - (T(1) / T(9009)) * w3 * (T(3) * t37 * seg7 * c + T(13) * t32 * seg7 - T(2) * t38 * b * seg7) * seg7;
+    const T t39 = t23 * t23;
+    const T t40 = t39 * t23;
     const T t41 = t40 * t40;
     const T t42 = t41 * t41;
-    const T t43 = t42 * t22;
-    const T t44 = t17 * t17;
-    const T t45 = t44 * t17;
+    const T t43 = t42 * t23;
+    const T t44 = t18 * t18;
+    const T t45 = t44 * t18;
     const T t46 = t45 * t45;
     const T t47 = t46 * t46;
-    const T t48 = t47 * t17;
-    G_E = (T(1) / T(45045)) * seg7 * (T(3465) * w0 * t43 + T(5) * w1 * t27 * t31 - T(10) * t32 * seg7 * w2 - T(3) * w3 * t33 * seg7 - T(3465) * t48 * seg8);
+    const T t48 = t47 * t18;
+    G_E = -(T(1) / T(45045)) * (T(3) * w3 * t33 * seg7 + T(3465) * seg8 * t43 + T(10) * t32 * seg7 * w2 - T(3465) * w0 * t48 - T(5) * w1 * t17 * t31) * seg7;
   }
   f = length * F;
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
@@ -26697,7 +26699,7 @@ T segment_cauchy_i14_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = bp_bp * s + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg6 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg6 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -26806,7 +26808,7 @@ std::array<T, 3> segment_cauchy_i14_w0_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = ap_bp * s + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -26814,7 +26816,7 @@ std::array<T, 3> segment_cauchy_i14_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(14, 16, 1, a, b, c, c - T(1), M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - seg5 * b * M_flat[2] * w0;
+    G_E = M_flat[3] * w0 - b * seg5 * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -26936,7 +26938,7 @@ T segment_cauchy_i14_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -27210,7 +27212,7 @@ T segment_cauchy_i14_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = s * bp_bp + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg7 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg7 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -27242,7 +27244,7 @@ T segment_cauchy_i14_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t15 * t15;
     const T t18 = t16 * t16;
     const T t19 = T(11) * (T(128) * b * t10 + T(128) * a_minus_b * t14 + T(3) * (T(48) * b * t9 + T(7) * a * t6 * (T(8) * b * t15 + T(5) * (T(2) * b * t8 + T(2) * a_minus_b * t12 + T(3) * (a_minus_b * t11 + a * J2 + b * t7) * a * t6) * a * t6 + T(8) * a_minus_b * t16) + T(48) * a_minus_b * t13) * a * t6) * a * t6 + T(1280) * b * t17 + T(1280) * a_minus_b * t18;
-    F = (T(1) / T(15360)) * (t6 * b * t19 + T(1280) * t17 - T(1280) * t18) * w1 * seg5 + (T(1) / T(15360)) * t6 * w0 * t19;
+    F = (T(1) / T(15360)) * (t6 * b * t19 + T(1280) * t17 - T(1280) * t18) * seg5 * w1 + (T(1) / T(15360)) * t6 * w0 * t19;
   }
   f = F * length;
   return f;
@@ -27322,7 +27324,7 @@ std::array<T, 3> segment_cauchy_i14_w1_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(seg4 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -27370,7 +27372,7 @@ std::array<T, 3> segment_cauchy_i14_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t31 = T(1280) * a_minus_b * t21 + T(11) * t17 * a * (T(128) * a_minus_b * t24 + T(3) * t17 * a * (T(7) * t17 * a * (T(8) * a_minus_b * t20 + T(8) * b * t27 + T(5) * t17 * a * (T(3) * t17 * a * (b * t25 + a * J2 + a_minus_b * t18) + T(2) * a_minus_b * t19 + T(2) * b * t26)) + T(48) * a_minus_b * t23 + T(48) * b * t28) + T(128) * b * t29) + T(1280) * b * t30;
     const T t32 = t30 * t25;
     const T t33 = T(15360) * a_minus_b * t22 + T(13) * t17 * a * t31 + T(15360) * b * t32;
-    G_ap = (T(1) / T(215040)) * w0 * t17 * t33 + (T(1) / T(215040)) * w1 * seg5 * (t17 * t33 * b + T(15360) * t32 - T(15360) * t22);
+    G_ap = (T(1) / T(215040)) * w0 * t17 * t33 + (T(1) / T(215040)) * w1 * (t17 * t33 * b + T(15360) * t32 - T(15360) * t22) * seg5;
     G_E = (T(1) / T(215040)) * (t17 * w1 * t31 + T(15360) * w0 * t32 - T(15360) * seg6 * t22) * seg5;
   }
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
@@ -27439,7 +27441,7 @@ T segment_cauchy_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
+    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
     foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
     foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
@@ -27465,7 +27467,7 @@ T segment_cauchy_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w0 * M_flat[0] + M_flat[1] * w1;
     const T t4 = M_flat[4] * w1 + w0 * M_flat[3];
     G_ap = t4;
-    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * b * seg5;
+    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * seg5 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -27482,7 +27484,7 @@ T segment_cauchy_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(14)) * (w0 * t9 + w1 * M_beyond[0] - t14 * seg6) * seg5;
+    G_E = (T(1) / T(14)) * seg5 * (w0 * t9 + w1 * M_beyond[0] - t14 * seg6);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(D);
@@ -27502,12 +27504,12 @@ T segment_cauchy_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t28 = t27 * t17;
     const T t29 = t26 * t21;
     const T t30 = T(1280) * t24 * a_minus_b + T(1280) * t20 * b + T(11) * (T(3) * (T(7) * a * t25 * (T(8) * t19 * b + T(8) * t23 * a_minus_b + T(5) * (T(2) * t18 * b + T(3) * (J2 * a + t21 * a_minus_b + t17 * b) * a * t25 + T(2) * t22 * a_minus_b) * a * t25) + T(48) * t26 * a_minus_b + T(48) * t27 * b) * a * t25 + T(128) * t28 * b + T(128) * t29 * a_minus_b) * a * t25;
-    F = (T(1) / T(15360)) * (T(1280) * t20 + t30 * t25 * b - T(1280) * t24) * w1 * seg5 + (T(1) / T(15360)) * w0 * t30 * t25;
+    F = (T(1) / T(15360)) * seg5 * (T(1280) * t20 + t30 * t25 * b - T(1280) * t24) * w1 + (T(1) / T(15360)) * w0 * t30 * t25;
     const T t31 = t20 * t17;
     const T t32 = t24 * t21;
     const T t33 = T(13) * t30 * a * t25 + T(15360) * t31 * b + T(15360) * t32 * a_minus_b;
-    G_ap = (T(1) / T(215040)) * (t25 * t33 * b + T(15360) * t31 - T(15360) * t32) * w1 * seg5 + (T(1) / T(215040)) * w0 * t25 * t33;
-    G_E = (T(1) / T(215040)) * (T(15360) * w0 * t31 + t30 * w1 * t25 - T(15360) * t32 * seg6) * seg5;
+    G_ap = (T(1) / T(215040)) * (t25 * t33 * b + T(15360) * t31 - T(15360) * t32) * seg5 * w1 + (T(1) / T(215040)) * w0 * t25 * t33;
+    G_E = (T(1) / T(215040)) * seg5 * (T(15360) * w0 * t31 + t30 * w1 * t25 - T(15360) * t32 * seg6);
   }
   f = F * length;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -27767,7 +27769,7 @@ T segment_cauchy_i14_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t19 = t15 * t15;
     const T t20 = T(1280) * b * t18 + T(11) * t17 * t14 * a + T(1280) * t19 * a_minus_b;
     const T t21 = t20 * t14 * b + T(1280) * t18 - T(1280) * t19;
-    F = (T(1) / T(15360)) * (T(12) * t17 * t14 + T(2) * t21 * b * seg5 - t20 * t14 * c) * w2 * seg5 + (T(1) / T(15360)) * t20 * t14 * w0 + (T(1) / T(15360)) * t21 * w1 * seg5;
+    F = (T(1) / T(15360)) * seg5 * w2 * (T(12) * t17 * t14 + T(2) * seg5 * t21 * b - t20 * t14 * c) + (T(1) / T(15360)) * t20 * t14 * w0 + (T(1) / T(15360)) * seg5 * t21 * w1;
   }
   f = F * length;
   return f;
@@ -27848,7 +27850,7 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -27863,17 +27865,17 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 8> M_beyond;
     segment_moments_beyond_end<T>(14, 16, 3, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[4] * w0 + M_beyond[6] * w2 + w1 * M_beyond[5];
-    const T t5 = T(1) / q1;
+    const T t5 = T(1) / c;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / c;
+    const T t10 = T(1) / q1;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(14)) * (seg6 * t9 - T(2) * w2 * M_beyond[1] - t14 * w0 - w1 * M_beyond[0]) * seg5;
+    G_E = (T(1) / T(14)) * (T(2) * w2 * M_beyond[1] + t9 * w0 + w1 * M_beyond[0] - seg6 * t14) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(D);
@@ -27897,8 +27899,8 @@ std::array<T, 3> segment_cauchy_i14_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t32 = t29 * t21;
     const T t33 = T(13) * a * t17 * t30 + T(15360) * t31 * b + T(15360) * a_minus_b * t32;
     const T t34 = t17 * b * t33 + T(15360) * t31 - T(15360) * t32;
-    G_ap = (T(1) / T(215040)) * w1 * t34 * seg5 + (T(1) / T(215040)) * t17 * w0 * t33 - (T(1) / T(215040)) * w2 * (c * t17 * t33 - T(2) * t34 * b * seg5 - T(14) * t17 * t30) * seg5;
-    G_E = (T(1) / T(215040)) * seg5 * (w1 * t17 * t30 + T(15360) * t31 * w0 + T(2) * w2 * (T(1280) * t28 + t17 * t30 * b - T(1280) * t29) * seg5 - T(15360) * seg6 * t32);
+    G_ap = (T(1) / T(215040)) * t17 * w0 * t33 + (T(1) / T(215040)) * w1 * t34 * seg5 - (T(1) / T(215040)) * (c * t17 * t33 - T(14) * t17 * t30 - T(2) * t34 * b * seg5) * w2 * seg5;
+    G_E = (T(1) / T(215040)) * (w1 * t17 * t30 + T(2) * w2 * (T(1280) * t28 + t17 * t30 * b - T(1280) * t29) * seg5 + T(15360) * t31 * w0 - T(15360) * seg6 * t32) * seg5;
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = (foot1 * G_ap - G_E * ab1) * g_factor;
@@ -27983,7 +27985,7 @@ T segment_cauchy_i14_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -28032,13 +28034,13 @@ T segment_cauchy_i14_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t30 = T(3) * a * t25 * (T(48) * t26 * b + T(7) * (T(8) * t23 * a_minus_b + T(5) * a * (T(3) * a * t25 * (t17 * b + J2 * a + t21 * a_minus_b) + T(2) * t22 * a_minus_b + T(2) * t18 * b) * t25 + T(8) * t19 * b) * a * t25 + T(48) * t27 * a_minus_b) + T(128) * t28 * b + T(128) * t29 * a_minus_b;
     const T t31 = T(1280) * t20 * b + T(1280) * t24 * a_minus_b + T(11) * a * t25 * t30;
     const T t32 = t31 * t25 * b + T(1280) * t20 - T(1280) * t24;
-    F = (T(1) / T(15360)) * w1 * seg5 * t32 + (T(1) / T(15360)) * seg5 * w2 * (T(2) * seg5 * t32 * b + T(12) * t25 * t30 - t31 * c * t25) + (T(1) / T(15360)) * t31 * t25 * w0;
+    F = (T(1) / T(15360)) * t31 * t25 * w0 + (T(1) / T(15360)) * w1 * seg5 * t32 - (T(1) / T(15360)) * (t31 * c * t25 - T(12) * t25 * t30 - T(2) * seg5 * t32 * b) * seg5 * w2;
     const T t33 = t20 * t17;
     const T t34 = t24 * t21;
     const T t35 = T(13) * t31 * a * t25 + T(15360) * t33 * b + T(15360) * t34 * a_minus_b;
     const T t36 = T(15360) * t34 - t25 * t35 * b - T(15360) * t33;
-    G_ap = (T(1) / T(215040)) * t25 * w0 * t35 - (T(1) / T(215040)) * w1 * t36 * seg5 - (T(1) / T(215040)) * seg5 * w2 * (c * t25 * t35 + T(2) * t36 * seg5 * b - T(14) * t31 * t25);
-    G_E = (T(1) / T(215040)) * seg5 * (T(2) * seg5 * w2 * t32 + w1 * t31 * t25 + T(15360) * t33 * w0 - T(15360) * t34 * seg6);
+    G_ap = (T(1) / T(215040)) * t25 * w0 * t35 - (T(1) / T(215040)) * seg5 * w2 * (c * t25 * t35 + T(2) * t36 * seg5 * b - T(14) * t31 * t25) - (T(1) / T(215040)) * w1 * t36 * seg5;
+    G_E = -(T(1) / T(215040)) * (T(15360) * t34 * seg6 - T(2) * seg5 * w2 * t32 - w1 * t31 * t25 - T(15360) * t33 * w0) * seg5;
   }
   f = length * F;
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
@@ -28303,8 +28305,8 @@ T segment_cauchy_i14_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t19 = t16 * t16;
     const T t20 = T(11) * t18 * t15 * a + T(1280) * b * t9 + T(1280) * a_minus_b * t19;
     const T t21 = T(1280) * t9 + b * t20 * t15 - T(1280) * t19;
-    const T t22 = T(12) * t18 * t15 + T(2) * b * t21 * seg5 - c * t20 * t15;
-    F = (T(1) / T(15360)) * w1 * t21 * seg5 + (T(1) / T(15360)) * w3 * (T(12) * (T(128) * t11 + b * t18 * t15 - T(128) * t17) * seg5 + T(2) * b * t22 * seg5 - t21 * c * seg5) * seg5 + (T(1) / T(15360)) * w2 * t22 * seg5 + (T(1) / T(15360)) * t20 * w0 * t15;
+    const T t22 = T(12) * t18 * t15 + T(2) * seg5 * b * t21 - c * t20 * t15;
+    F = (T(1) / T(15360)) * seg5 * w1 * t21 + (T(1) / T(15360)) * seg5 * w2 * t22 + (T(1) / T(15360)) * t20 * w0 * t15 + (T(1) / T(15360)) * (T(12) * seg5 * (T(128) * t11 + b * t18 * t15 - T(128) * t17) + T(2) * seg5 * b * t22 - seg5 * t21 * c) * seg5 * w3;
   }
   f = F * length;
   return f;
@@ -28363,15 +28365,15 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
+    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
@@ -28386,7 +28388,7 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = ap_bp * s + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -28411,35 +28413,35 @@ std::array<T, 3> segment_cauchy_i14_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(14)) * (T(2) * w2 * M_beyond[1] + t9 * w0 + T(3) * M_beyond[2] * w3 + w1 * M_beyond[0] - seg6 * t14) * seg5;
+    G_E = (T(1) / T(14)) * (T(2) * w2 * M_beyond[1] + t9 * w0 + T(3) * M_beyond[2] * w3 + w1 * M_beyond[0] - t14 * seg6) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(D);
     const T t16 = T(1) / t15;
     const T J2 = atan2(t15, c_minus_b) * t16;
-    const T t17 = T(1) / q1;
+    const T t17 = T(1) / c;
     const T t18 = t17 * t17;
     const T t19 = t18 * t17;
     const T t20 = t19 * t19;
-    const T t21 = t18 * t18;
-    const T t22 = t21 * t17;
-    const T t23 = T(1) / c;
+    const T t21 = T(1) / q1;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t21;
     const T t24 = t23 * t23;
-    const T t25 = t24 * t24;
-    const T t26 = t25 * t23;
-    const T t27 = t24 * t23;
-    const T t28 = T(1) / D;
-    const T t29 = T(128) * t22 * a_minus_b + T(128) * b * t26 + T(3) * (T(48) * t21 * a_minus_b + T(48) * b * t25 + T(7) * (T(8) * b * t27 + T(5) * (T(2) * b * t24 + T(3) * (t17 * a_minus_b + J2 * a + b * t23) * t28 * a + T(2) * t18 * a_minus_b) * t28 * a + T(8) * t19 * a_minus_b) * t28 * a) * t28 * a;
-    const T t30 = t27 * t27;
-    const T t31 = T(1280) * t20 * a_minus_b + T(11) * t29 * t28 * a + T(1280) * b * t30;
-    const T t32 = t30 * t23;
+    const T t25 = t22 * t22;
+    const T t26 = t25 * t21;
+    const T t27 = t18 * t18;
+    const T t28 = t27 * t17;
+    const T t29 = T(1) / D;
+    const T t30 = T(128) * t26 * a_minus_b + T(128) * b * t28 + T(3) * (T(48) * t25 * a_minus_b + T(48) * b * t27 + T(7) * (T(8) * b * t19 + T(5) * (T(2) * b * t18 + T(3) * (t21 * a_minus_b + J2 * a + b * t17) * t29 * a + T(2) * t22 * a_minus_b) * t29 * a + T(8) * t23 * a_minus_b) * t29 * a) * t29 * a;
+    const T t31 = T(1280) * t24 * a_minus_b + T(11) * t30 * t29 * a + T(1280) * b * t20;
+    const T t32 = T(1280) * t20 + b * t31 * t29 - T(1280) * t24;
     const T t33 = t20 * t17;
-    const T t34 = T(13) * t31 * t28 * a + T(15360) * b * t32 + T(15360) * t33 * a_minus_b;
-    const T t35 = T(15360) * t32 + t34 * b * t28 - T(15360) * t33;
-    const T t36 = T(14) * t31 * t28 + T(2) * b * seg5 * t35 - t34 * c * t28;
-    const T t37 = T(1280) * t30 + b * t31 * t28 - T(1280) * t20;
-    G_ap = (T(1) / T(215040)) * w2 * seg5 * t36 + (T(1) / T(215040)) * t34 * t28 * w0 + (T(1) / T(215040)) * w1 * seg5 * t35 - (T(1) / T(215040)) * seg5 * w3 * (c * seg5 * t35 - T(14) * t37 * seg5 - T(2) * b * seg5 * t36);
-    G_E = (T(1) / T(215040)) * (T(15360) * t32 * w0 + w1 * t31 * t28 + T(2) * t37 * w2 * seg5 + T(3) * (T(12) * t29 * t28 + T(2) * b * t37 * seg5 - c * t31 * t28) * seg5 * w3 - T(15360) * seg6 * t33) * seg5;
+    const T t34 = t24 * t21;
+    const T t35 = T(13) * t31 * t29 * a + T(15360) * b * t33 + T(15360) * t34 * a_minus_b;
+    const T t36 = T(15360) * t33 + t35 * b * t29 - T(15360) * t34;
+    const T t37 = T(14) * t31 * t29 + T(2) * b * t36 * seg5 - t35 * c * t29;
+    G_ap = (T(1) / T(215040)) * (T(14) * t32 * seg5 + T(2) * b * t37 * seg5 - c * t36 * seg5) * w3 * seg5 + (T(1) / T(215040)) * t35 * t29 * w0 + (T(1) / T(215040)) * w1 * t36 * seg5 + (T(1) / T(215040)) * t37 * w2 * seg5;
+    G_E = (T(1) / T(215040)) * (T(15360) * t33 * w0 + T(2) * t32 * w2 * seg5 + w1 * t31 * t29 + T(3) * (T(2) * b * t32 * seg5 + T(12) * t30 * t29 - c * t31 * t29) * w3 * seg5 - T(15360) * t34 * seg6) * seg5;
   }
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
   grad[1] = -(ab1 * G_E - G_ap * foot1) * g_factor;
@@ -28542,17 +28544,17 @@ T segment_cauchy_i14_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_beyond_end<T>(14, 16, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     F = M_beyond[1] * w1 + w2 * M_beyond[2] + M_beyond[3] * w3 + M_beyond[0] * w0;
     G_ap = w2 * M_beyond[7] + M_beyond[6] * w1 + w3 * M_beyond[8] + w0 * M_beyond[5];
-    const T t5 = T(1) / c;
+    const T t5 = T(1) / q1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / q1;
+    const T t10 = T(1) / c;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(14)) * seg5 * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + T(3) * w3 * M_beyond[2] + t9 * w0 - t14 * seg6);
+    G_E = -(T(1) / T(14)) * (t9 * seg6 - T(2) * w2 * M_beyond[1] - M_beyond[0] * w1 - T(3) * w3 * M_beyond[2] - t14 * w0) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(D);
@@ -28574,15 +28576,15 @@ T segment_cauchy_i14_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t30 = T(128) * t27 * b + T(3) * (T(48) * t26 * b + T(7) * (T(8) * t24 * a_minus_b + T(5) * t17 * a * (T(3) * t17 * a * (J2 * a + t18 * b + t22 * a_minus_b) + T(2) * t23 * a_minus_b + T(2) * t19 * b) + T(8) * t20 * b) * t17 * a + T(48) * t28 * a_minus_b) * t17 * a + T(128) * t29 * a_minus_b;
     const T t31 = T(1280) * t21 * b + T(1280) * t25 * a_minus_b + T(11) * t30 * t17 * a;
     const T t32 = t17 * t31 * b + T(1280) * t21 - T(1280) * t25;
-    const T t33 = c * t17 * t31 - T(12) * t30 * t17 - T(2) * seg5 * t32 * b;
-    F = (T(1) / T(15360)) * t17 * w0 * t31 + (T(1) / T(15360)) * seg5 * t32 * w1 - (T(1) / T(15360)) * seg5 * (seg5 * c * t32 + T(2) * seg5 * t33 * b - T(12) * seg5 * (t30 * t17 * b + T(128) * t27 - T(128) * t29)) * w3 - (T(1) / T(15360)) * seg5 * w2 * t33;
+    const T t33 = c * t17 * t31 - T(2) * seg5 * t32 * b - T(12) * t30 * t17;
+    F = (T(1) / T(15360)) * t17 * w0 * t31 + (T(1) / T(15360)) * seg5 * t32 * w1 - (T(1) / T(15360)) * (seg5 * c * t32 + T(2) * seg5 * b * t33 - T(12) * seg5 * (t30 * t17 * b + T(128) * t27 - T(128) * t29)) * seg5 * w3 - (T(1) / T(15360)) * seg5 * w2 * t33;
     const T t34 = t21 * t18;
     const T t35 = t25 * t22;
     const T t36 = T(15360) * t34 * b + T(15360) * t35 * a_minus_b + T(13) * t17 * t31 * a;
     const T t37 = T(15360) * t35 - t36 * t17 * b - T(15360) * t34;
-    const T t38 = T(2) * seg5 * t37 * b + c * t36 * t17 - T(14) * t17 * t31;
-    G_ap = (T(1) / T(215040)) * t36 * t17 * w0 - (T(1) / T(215040)) * seg5 * t37 * w1 - (T(1) / T(215040)) * seg5 * (T(2) * seg5 * t38 * b - T(14) * seg5 * t32 - seg5 * c * t37) * w3 - (T(1) / T(215040)) * seg5 * w2 * t38;
-    G_E = (T(1) / T(215040)) * seg5 * (t17 * t31 * w1 + T(2) * seg5 * w2 * t32 + T(15360) * t34 * w0 - T(3) * seg5 * w3 * t33 - T(15360) * t35 * seg6);
+    const T t38 = c * t36 * t17 + T(2) * seg5 * t37 * b - T(14) * t17 * t31;
+    G_ap = (T(1) / T(215040)) * t36 * t17 * w0 + (T(1) / T(215040)) * (T(14) * seg5 * t32 + seg5 * c * t37 - T(2) * t38 * seg5 * b) * seg5 * w3 - (T(1) / T(215040)) * seg5 * t37 * w1 - (T(1) / T(215040)) * t38 * seg5 * w2;
+    G_E = -(T(1) / T(215040)) * seg5 * (T(15360) * t35 * seg6 + T(3) * seg5 * w3 * t33 - t17 * t31 * w1 - T(15360) * t34 * w0 - T(2) * seg5 * w2 * t32);
   }
   f = length * F;
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
@@ -28811,7 +28813,7 @@ T segment_cauchy_i15_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg8 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg8 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -28919,7 +28921,7 @@ std::array<T, 3> segment_cauchy_i15_w0_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -29073,7 +29075,7 @@ T segment_cauchy_i15_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(15, 17, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * w0;
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - b * M_flat[2] * seg7 * w0;
+    G_E = M_flat[3] * w0 - b * M_flat[2] * w0 * seg7;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -29368,7 +29370,7 @@ T segment_cauchy_i15_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg9 - b));
+  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(seg9 + c - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -29399,7 +29401,7 @@ T segment_cauchy_i15_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t15 * t15;
     const T t18 = t14 * t14;
     const T t19 = T(4) * (T(63) * t9 * t5 * b + T(2) * t4 * a * (T(35) * t8 * t5 * b + T(35) * t10 * a_minus_b * t13 + T(8) * t4 * a * (T(2) * (T(3) * t7 * t5 * b + T(3) * t10 * a_minus_b * t12 + T(4) * t4 * a * (T(2) * (t5 * b + t10 * a_minus_b) * t4 * a + t10 * a_minus_b * t11 + t6 * t5 * b)) * t4 * a + T(5) * t10 * a_minus_b * t14 + T(5) * t15 * t5 * b)) + T(63) * t10 * a_minus_b * t16) * t4 * a + T(231) * t17 * t5 * b + T(231) * t10 * a_minus_b * t18;
-    F = (T(1) / T(3003)) * t4 * t19 * w0 + (T(1) / T(3003)) * seg7 * w1 * (T(231) * t17 * t5 + t4 * t19 * b - T(231) * t10 * t18);
+    F = (T(1) / T(3003)) * t4 * t19 * w0 + (T(1) / T(3003)) * w1 * seg7 * (T(231) * t17 * t5 + t4 * t19 * b - T(231) * t10 * t18);
   }
   f = length * F;
   return f;
@@ -29457,7 +29459,7 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const T* pre, const SegmentPoint<T>&
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
     foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
@@ -29488,7 +29490,7 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(15, 17, 2, a, b, c, c - T(1), M_flat.data());
     const T t4 = w0 * M_flat[3] + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * seg7 * b;
+    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * b * seg7;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -29508,7 +29510,7 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = -(T(1) / T(15)) * seg7 * (t11 * seg8 - M_beyond[0] * w1 - w0 * t18);
+    G_E = -(T(1) / T(15)) * (seg8 * t11 - M_beyond[0] * w1 - w0 * t18) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / D;
@@ -29543,7 +29545,7 @@ std::array<T, 3> segment_cauchy_i15_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t47 = t46 * t20;
     const T t48 = t47 * t47;
     const T t49 = t48 * t20;
-    G_E = -(T(1) / T(45045)) * seg7 * (T(3003) * t43 * seg8 - w1 * t19 * t36 - T(3003) * w0 * t49);
+    G_E = -(T(1) / T(45045)) * (T(3003) * seg8 * t43 - w1 * t19 * t36 - T(3003) * w0 * t49) * seg7;
   }
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
   grad[1] = -(ab1 * G_E - foot1 * G_ap) * g_factor;
@@ -29605,7 +29607,7 @@ T segment_cauchy_i15_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -29613,7 +29615,7 @@ T segment_cauchy_i15_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
     foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
-    foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
+    foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
@@ -29658,7 +29660,7 @@ T segment_cauchy_i15_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * (w1 * M_beyond[0] + t11 * w0 - t18 * seg8) * seg7;
+    G_E = (T(1) / T(15)) * (w1 * M_beyond[0] + t11 * w0 - seg8 * t18) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / r0;
@@ -29681,20 +29683,20 @@ T segment_cauchy_i15_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t35 = t23 * t20;
     const T t36 = t28 * t25;
     const T t37 = T(429) * t35 * t19 * b + T(2) * t34 * a * t29 + T(429) * t36 * t24 * a_minus_b;
-    G_ap = (T(1) / T(6435)) * t37 * t29 * w0 + (T(1) / T(6435)) * w1 * seg7 * (t37 * t29 * b + T(429) * t35 * t19 - T(429) * t36 * t24);
-    const T t38 = t19 * t19;
-    const T t39 = t38 * t19;
+    G_ap = (T(1) / T(6435)) * t37 * t29 * w0 + (T(1) / T(6435)) * w1 * (t37 * t29 * b + T(429) * t35 * t19 - T(429) * t36 * t24) * seg7;
+    const T t38 = t24 * t24;
+    const T t39 = t38 * t24;
     const T t40 = t39 * t39;
-    const T t41 = t40 * t19;
+    const T t41 = t40 * t24;
     const T t42 = t41 * t41;
-    const T t43 = t42 * t19;
-    const T t44 = t24 * t24;
-    const T t45 = t44 * t24;
+    const T t43 = t42 * t24;
+    const T t44 = t19 * t19;
+    const T t45 = t44 * t19;
     const T t46 = t45 * t45;
-    const T t47 = t46 * t24;
+    const T t47 = t46 * t19;
     const T t48 = t47 * t47;
-    const T t49 = t48 * t24;
-    G_E = (T(1) / T(45045)) * (w1 * t34 * t29 + T(3003) * t43 * w0 - T(3003) * t49 * seg8) * seg7;
+    const T t49 = t48 * t19;
+    G_E = -(T(1) / T(45045)) * (T(3003) * seg8 * t43 - w1 * t34 * t29 - T(3003) * t49 * w0) * seg7;
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -29953,22 +29955,22 @@ T segment_cauchy_i15_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = T(1) / r0;
     const T t5 = t4 * t4;
     const T t6 = t5 * t5;
-    const T t7 = t6 * t6;
-    const T t8 = T(1) / D;
-    const T t9 = t6 * t5;
-    const T t10 = T(1) / r1;
-    const T t11 = t10 * t10;
+    const T t7 = t6 * t5;
+    const T t8 = t7 * t7;
+    const T t9 = t6 * t6;
+    const T t10 = T(1) / D;
+    const T t11 = T(1) / r1;
     const T t12 = t11 * t11;
-    const T t13 = t12 * t11;
-    const T t14 = t12 * t12;
-    const T t15 = t14 * t11;
-    const T t16 = t7 * t5;
-    const T t17 = T(2) * (T(35) * t7 * t4 * b + T(8) * t8 * a * (T(5) * t9 * t4 * b + T(2) * (T(3) * t10 * a_minus_b * t12 + T(4) * t8 * a * (t5 * t4 * b + T(2) * (t4 * b + t10 * a_minus_b) * t8 * a + t10 * a_minus_b * t11) + T(3) * t6 * t4 * b) * t8 * a + T(5) * t10 * a_minus_b * t13) + T(35) * t10 * a_minus_b * t14) * t8 * a + T(63) * t10 * a_minus_b * t15 + T(63) * t16 * t4 * b;
-    const T t18 = t13 * t13;
-    const T t19 = t9 * t9;
-    const T t20 = T(231) * t19 * t4 * b + T(4) * t17 * t8 * a + T(231) * t10 * a_minus_b * t18;
-    const T t21 = T(231) * t10 * t18 - t20 * t8 * b - T(231) * t19 * t4;
-    F = (T(1) / T(9009)) * seg7 * (T(13) * t17 * t8 - T(6) * seg7 * t21 * b - T(3) * t20 * c * t8) * w2 + (T(1) / T(3003)) * t20 * t8 * w0 - (T(1) / T(3003)) * seg7 * w1 * t21;
+    const T t13 = t12 * t12;
+    const T t14 = t13 * t12;
+    const T t15 = t13 * t13;
+    const T t16 = t15 * t12;
+    const T t17 = t9 * t5;
+    const T t18 = T(2) * (T(35) * t9 * t4 * b + T(8) * t10 * a * (T(5) * t7 * t4 * b + T(2) * (T(3) * t11 * a_minus_b * t13 + T(4) * t10 * a * (t5 * t4 * b + T(2) * (t4 * b + t11 * a_minus_b) * t10 * a + t11 * a_minus_b * t12) + T(3) * t6 * t4 * b) * t10 * a + T(5) * t11 * a_minus_b * t14) + T(35) * t11 * a_minus_b * t15) * t10 * a + T(63) * t11 * a_minus_b * t16 + T(63) * t17 * t4 * b;
+    const T t19 = t14 * t14;
+    const T t20 = T(231) * t8 * t4 * b + T(4) * t18 * t10 * a + T(231) * t11 * a_minus_b * t19;
+    const T t21 = T(231) * t11 * t19 - t20 * t10 * b - T(231) * t8 * t4;
+    F = (T(1) / T(3003)) * t20 * t10 * w0 - (T(1) / T(9009)) * (T(6) * seg7 * t21 * b + T(3) * t20 * c * t10 - T(13) * t18 * t10) * seg7 * w2 - (T(1) / T(3003)) * seg7 * w1 * t21;
   }
   f = length * F;
   return f;
@@ -30026,9 +30028,9 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -30049,7 +30051,7 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(q1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg3), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg6 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg6 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -30058,7 +30060,7 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(15, 17, 3, a, b, c, c - T(1), M_flat.data());
     const T t4 = M_flat[4] * w0 + w1 * M_flat[5] + M_flat[6] * w2;
     G_ap = t4;
-    G_E = w1 * M_flat[6] + w0 * M_flat[5] + w2 * M_flat[7] - seg7 * b * t4;
+    G_E = w1 * M_flat[6] + w0 * M_flat[5] + w2 * M_flat[7] - b * seg7 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -30078,7 +30080,7 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * (T(2) * w2 * M_beyond[1] + t11 * w0 + w1 * M_beyond[0] - t18 * seg8) * seg7;
+    G_E = (T(1) / T(15)) * (T(2) * w2 * M_beyond[1] + t11 * w0 + w1 * M_beyond[0] - seg8 * t18) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / r1;
@@ -30101,7 +30103,7 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t36 = T(231) * t19 * a_minus_b * t23 + T(4) * t31 * a * (T(63) * t19 * a_minus_b * t33 + T(2) * (T(35) * t19 * a_minus_b * t32 + T(8) * t31 * a * (T(5) * t19 * a_minus_b * t22 + T(5) * t25 * t28 * b + T(2) * t31 * a * (T(3) * t19 * a_minus_b * t21 + T(3) * t25 * t27 * b + T(4) * t31 * (t25 * t26 * b + T(2) * t31 * a * (t19 * a_minus_b + t25 * b) + t19 * a_minus_b * t20) * a)) + T(35) * t25 * t34 * b) * t31 * a + T(63) * t25 * t35 * b) + T(231) * t25 * t29 * b;
     const T t37 = T(429) * t19 * a_minus_b * t24 + T(429) * t25 * t30 * b + T(2) * t31 * a * t36;
     const T t38 = T(429) * t19 * t24 - T(429) * t25 * t30 - t37 * t31 * b;
-    G_ap = (T(1) / T(6435)) * t37 * t31 * w0 - (T(1) / T(6435)) * w1 * t38 * seg7 - (T(1) / T(45045)) * w2 * (T(14) * t38 * seg7 * b + T(7) * c * t37 * t31 - T(15) * t31 * t36) * seg7;
+    G_ap = (T(1) / T(6435)) * t37 * t31 * w0 + (T(1) / T(45045)) * w2 * (T(15) * t31 * t36 - T(14) * t38 * b * seg7 - T(7) * c * t37 * t31) * seg7 - (T(1) / T(6435)) * w1 * t38 * seg7;
     const T t39 = t25 * t25;
     const T t40 = t39 * t25;
     const T t41 = t40 * t40;
@@ -30114,7 +30116,7 @@ std::array<T, 3> segment_cauchy_i15_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t48 = t47 * t19;
     const T t49 = t48 * t48;
     const T t50 = t49 * t19;
-    G_E = (T(1) / T(45045)) * (T(3003) * t44 * w0 + w1 * t31 * t36 + T(2) * w2 * (t31 * b * t36 + T(231) * t25 * t29 - T(231) * t19 * t23) * seg7 - T(3003) * t50 * seg8) * seg7;
+    G_E = (T(1) / T(45045)) * (T(2) * w2 * (t31 * b * t36 + T(231) * t25 * t29 - T(231) * t19 * t23) * seg7 + T(3003) * t44 * w0 + w1 * t31 * t36 - T(3003) * seg8 * t50) * seg7;
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = -(G_E * ab1 - foot1 * G_ap) * g_factor;
@@ -30184,7 +30186,7 @@ T segment_cauchy_i15_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
-    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -30230,7 +30232,7 @@ T segment_cauchy_i15_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * seg7 * (w1 * M_beyond[0] + t11 * w0 + T(2) * w2 * M_beyond[1] - t18 * seg8);
+    G_E = (T(1) / T(15)) * seg7 * (w1 * M_beyond[0] + t11 * w0 + T(2) * w2 * M_beyond[1] - seg8 * t18);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / D;
@@ -30251,12 +30253,12 @@ T segment_cauchy_i15_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t34 = t28 * t28;
     const T t35 = T(231) * t33 * t24 * a_minus_b + T(231) * t34 * t20 * b + T(4) * a * t19 * t32;
     const T t36 = t35 * t19 * b + T(231) * t34 * t20 - T(231) * t33 * t24;
-    F = (T(1) / T(9009)) * w2 * seg7 * (T(13) * t19 * t32 + T(6) * t36 * seg7 * b - T(3) * t35 * c * t19) + (T(1) / T(3003)) * t35 * t19 * w0 + (T(1) / T(3003)) * w1 * t36 * seg7;
+    F = (T(1) / T(9009)) * w2 * (T(13) * t19 * t32 + T(6) * t36 * seg7 * b - T(3) * t35 * c * t19) * seg7 + (T(1) / T(3003)) * t35 * t19 * w0 + (T(1) / T(3003)) * w1 * t36 * seg7;
     const T t37 = t33 * t25;
     const T t38 = t34 * t21;
     const T t39 = T(429) * t37 * t24 * a_minus_b + T(2) * t35 * a * t19 + T(429) * t38 * t20 * b;
     const T t40 = T(429) * t38 * t20 + t39 * t19 * b - T(429) * t37 * t24;
-    G_ap = (T(1) / T(6435)) * t39 * t19 * w0 + (T(1) / T(6435)) * w1 * t40 * seg7 - (T(1) / T(45045)) * (T(7) * c * t39 * t19 - T(14) * t40 * seg7 * b - T(15) * t35 * t19) * w2 * seg7;
+    G_ap = (T(1) / T(6435)) * t39 * t19 * w0 + (T(1) / T(45045)) * (T(14) * t40 * seg7 * b + T(15) * t35 * t19 - T(7) * c * t39 * t19) * w2 * seg7 + (T(1) / T(6435)) * w1 * t40 * seg7;
     const T t41 = t20 * t20;
     const T t42 = t41 * t20;
     const T t43 = t42 * t42;
@@ -30269,7 +30271,7 @@ T segment_cauchy_i15_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t50 = t49 * t24;
     const T t51 = t50 * t50;
     const T t52 = t51 * t24;
-    G_E = (T(1) / T(45045)) * seg7 * (T(3003) * t46 * w0 + T(2) * t36 * w2 * seg7 + t35 * w1 * t19 - T(3003) * t52 * seg8);
+    G_E = (T(1) / T(45045)) * (T(2) * t36 * w2 * seg7 + T(3003) * t46 * w0 + t35 * w1 * t19 - T(3003) * seg8 * t52) * seg7;
   }
   f = F * length;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -30515,7 +30517,7 @@ T segment_cauchy_i15_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(c);
   const T r1 = sqrt(q1);
   T F;
-  const T t1 = max(T(max(T(seg3 + D), T(max(T(seg4 + b), T(seg5 - b))))), T(c + seg9 - b));
+  const T t1 = max(T(max(T(D + seg3), T(max(T(b + seg4), T(seg5 - b))))), T(c + seg9 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -30548,8 +30550,8 @@ T segment_cauchy_i15_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t19 = T(63) * t4 * b * t15 + T(2) * (T(35) * t4 * b * t14 + T(8) * (T(2) * (T(3) * t4 * b * t6 + T(4) * (t9 * a_minus_b * t10 + t4 * b * t5 + T(2) * (t9 * a_minus_b + t4 * b) * a * t16) * a * t16 + T(3) * t9 * a_minus_b * t11) * a * t16 + T(5) * t4 * b * t7 + T(5) * t9 * a_minus_b * t12) * a * t16 + T(35) * t9 * a_minus_b * t17) * a * t16 + T(63) * t9 * a_minus_b * t18;
     const T t20 = T(231) * t4 * b * t8 + T(231) * t9 * a_minus_b * t13 + T(4) * t19 * a * t16;
     const T t21 = T(231) * t4 * t8 + b * t20 * t16 - T(231) * t9 * t13;
-    const T t22 = T(6) * seg7 * b * t21 + T(13) * t19 * t16 - T(3) * c * t20 * t16;
-    F = (T(1) / T(9009)) * seg7 * t22 * w2 + (T(1) / T(9009)) * seg7 * (T(13) * seg7 * (T(63) * t4 * t15 + t19 * b * t16 - T(63) * t9 * t18) + T(2) * seg7 * t22 * b - T(3) * seg7 * c * t21) * w3 + (T(1) / T(3003)) * t20 * w0 * t16 + (T(1) / T(3003)) * seg7 * w1 * t21;
+    const T t22 = T(13) * t19 * t16 + T(6) * seg7 * b * t21 - T(3) * c * t20 * t16;
+    F = (T(1) / T(3003)) * t20 * w0 * t16 + (T(1) / T(3003)) * w1 * seg7 * t21 + (T(1) / T(9009)) * seg7 * (T(2) * seg7 * b * t22 + T(13) * seg7 * (T(63) * t4 * t15 + t19 * b * t16 - T(63) * t9 * t18) - T(3) * seg7 * c * t21) * w3 + (T(1) / T(9009)) * seg7 * w2 * t22;
   }
   f = F * length;
   return f;
@@ -30617,8 +30619,8 @@ std::array<T, 3> segment_cauchy_i15_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
-    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
-    foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
+    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
+    foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
@@ -30646,21 +30648,21 @@ std::array<T, 3> segment_cauchy_i15_w3_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(15, 17, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[5] * w0 + w1 * M_beyond[6] + M_beyond[8] * w3 + w2 * M_beyond[7];
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
     const T t10 = t9 * t9;
     const T t11 = t10 * t5;
-    const T t12 = T(1) / r1;
+    const T t12 = T(1) / r0;
     const T t13 = t12 * t12;
     const T t14 = t13 * t12;
     const T t15 = t14 * t14;
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * seg7 * (T(3) * M_beyond[2] * w3 + w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] + t11 * w0 - seg8 * t18);
+    G_E = -(T(1) / T(15)) * (seg8 * t11 - T(3) * M_beyond[2] * w3 - w1 * M_beyond[0] - T(2) * w2 * M_beyond[1] - t18 * w0) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / D;
@@ -30684,22 +30686,22 @@ std::array<T, 3> segment_cauchy_i15_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t37 = T(231) * a_minus_b * t20 * t24 + T(231) * b * t26 * t30 + T(4) * t36 * t19 * a;
     const T t38 = T(429) * a_minus_b * t20 * t25 + T(429) * b * t26 * t31 + T(2) * t37 * t19 * a;
     const T t39 = b * t19 * t38 + T(429) * t26 * t31 - T(429) * t20 * t25;
-    const T t40 = T(14) * b * t39 * seg7 + T(15) * t37 * t19 - T(7) * c * t19 * t38;
+    const T t40 = T(15) * t37 * t19 + T(14) * b * t39 * seg7 - T(7) * c * t19 * t38;
     const T t41 = T(231) * t20 * t24 - T(231) * t26 * t30 - b * t37 * t19;
-    G_ap = (T(1) / T(6435)) * w1 * t39 * seg7 + (T(1) / T(45045)) * w2 * seg7 * t40 + (T(1) / T(6435)) * t19 * w0 * t38 - (T(1) / T(45045)) * w3 * (T(15) * t41 * seg7 + T(7) * t39 * c * seg7 - T(2) * b * seg7 * t40) * seg7;
-    const T t42 = t26 * t26;
-    const T t43 = t42 * t26;
+    G_ap = (T(1) / T(6435)) * w1 * t39 * seg7 + (T(1) / T(6435)) * t19 * w0 * t38 + (T(1) / T(45045)) * w2 * t40 * seg7 - (T(1) / T(45045)) * (T(7) * t39 * c * seg7 + T(15) * t41 * seg7 - T(2) * b * t40 * seg7) * w3 * seg7;
+    const T t42 = t20 * t20;
+    const T t43 = t42 * t20;
     const T t44 = t43 * t43;
-    const T t45 = t44 * t26;
+    const T t45 = t44 * t20;
     const T t46 = t45 * t45;
-    const T t47 = t46 * t26;
-    const T t48 = t20 * t20;
-    const T t49 = t48 * t20;
+    const T t47 = t46 * t20;
+    const T t48 = t26 * t26;
+    const T t49 = t48 * t26;
     const T t50 = t49 * t49;
-    const T t51 = t50 * t20;
+    const T t51 = t50 * t26;
     const T t52 = t51 * t51;
-    const T t53 = t52 * t20;
-    G_E = (T(1) / T(45045)) * (w1 * t37 * t19 + T(3003) * t47 * w0 - T(3003) * seg8 * t53 - (T(3) * c * t37 * t19 + T(6) * b * t41 * seg7 - T(13) * t36 * t19) * w3 * seg7 - T(2) * t41 * w2 * seg7) * seg7;
+    const T t53 = t52 * t26;
+    G_E = -(T(1) / T(45045)) * (T(2) * t41 * w2 * seg7 + T(3003) * seg8 * t47 + (T(6) * b * t41 * seg7 + T(3) * c * t37 * t19 - T(13) * t36 * t19) * w3 * seg7 - w1 * t37 * t19 - T(3003) * t53 * w0) * seg7;
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -30761,9 +30763,9 @@ T segment_cauchy_i15_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -30771,7 +30773,7 @@ T segment_cauchy_i15_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
@@ -30816,7 +30818,7 @@ T segment_cauchy_i15_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * (w1 * M_beyond[0] + w0 * t11 + T(2) * w2 * M_beyond[1] + T(3) * w3 * M_beyond[2] - t18 * seg8) * seg7;
+    G_E = (T(1) / T(15)) * (w1 * M_beyond[0] + w0 * t11 + T(2) * w2 * M_beyond[1] + T(3) * w3 * M_beyond[2] - seg8 * t18) * seg7;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / D;
@@ -30837,27 +30839,27 @@ T segment_cauchy_i15_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t34 = t29 * t29;
     const T t35 = T(4) * t19 * a * t32 + T(231) * b * t33 * t20 + T(231) * t25 * a_minus_b * t34;
     const T t36 = t19 * b * t35 + T(231) * t33 * t20 - T(231) * t25 * t34;
-    const T t37 = T(6) * b * seg7 * t36 + T(13) * t19 * t32 - T(3) * t19 * t35 * c;
-    F = (T(1) / T(3003)) * t19 * t35 * w0 + (T(1) / T(9009)) * w2 * seg7 * t37 + (T(1) / T(9009)) * seg7 * w3 * (T(2) * b * seg7 * t37 + T(13) * (t19 * b * t32 + T(63) * t24 * t20 - T(63) * t25 * t31) * seg7 - T(3) * c * seg7 * t36) + (T(1) / T(3003)) * w1 * seg7 * t36;
+    const T t37 = T(13) * t19 * t32 + T(6) * b * seg7 * t36 - T(3) * t19 * t35 * c;
+    F = (T(1) / T(3003)) * w1 * seg7 * t36 + (T(1) / T(3003)) * t19 * t35 * w0 + (T(1) / T(9009)) * (T(2) * b * t37 * seg7 + T(13) * (t19 * b * t32 + T(63) * t24 * t20 - T(63) * t25 * t31) * seg7 - T(3) * c * seg7 * t36) * seg7 * w3 + (T(1) / T(9009)) * t37 * w2 * seg7;
     const T t38 = t33 * t21;
     const T t39 = t34 * t26;
     const T t40 = T(2) * t19 * t35 * a + T(429) * b * t38 * t20 + T(429) * t25 * a_minus_b * t39;
     const T t41 = T(429) * t25 * t39 - t19 * b * t40 - T(429) * t38 * t20;
     const T t42 = T(14) * b * t41 * seg7 + T(7) * t19 * c * t40 - T(15) * t19 * t35;
-    G_ap = (T(1) / T(6435)) * t19 * w0 * t40 - (T(1) / T(45045)) * t42 * w2 * seg7 - (T(1) / T(6435)) * w1 * t41 * seg7 - (T(1) / T(45045)) * (T(2) * b * t42 * seg7 - T(7) * t41 * c * seg7 - T(15) * seg7 * t36) * seg7 * w3;
-    const T t43 = t25 * t25;
-    const T t44 = t43 * t25;
+    G_ap = (T(1) / T(6435)) * t19 * w0 * t40 + (T(1) / T(45045)) * (T(15) * seg7 * t36 + T(7) * t41 * c * seg7 - T(2) * b * t42 * seg7) * seg7 * w3 - (T(1) / T(45045)) * t42 * w2 * seg7 - (T(1) / T(6435)) * w1 * t41 * seg7;
+    const T t43 = t20 * t20;
+    const T t44 = t43 * t20;
     const T t45 = t44 * t44;
-    const T t46 = t45 * t25;
+    const T t46 = t45 * t20;
     const T t47 = t46 * t46;
-    const T t48 = t47 * t25;
-    const T t49 = t20 * t20;
-    const T t50 = t49 * t20;
+    const T t48 = t47 * t20;
+    const T t49 = t25 * t25;
+    const T t50 = t49 * t25;
     const T t51 = t50 * t50;
-    const T t52 = t51 * t20;
+    const T t52 = t51 * t25;
     const T t53 = t52 * t52;
-    const T t54 = t53 * t20;
-    G_E = -(T(1) / T(45045)) * (T(3003) * t48 * seg8 - T(2) * w2 * seg7 * t36 - t19 * w1 * t35 - T(3003) * w0 * t54 - seg7 * w3 * t37) * seg7;
+    const T t54 = t53 * t25;
+    G_E = (T(1) / T(45045)) * (t37 * seg7 * w3 + t19 * w1 * t35 + T(3003) * w0 * t48 + T(2) * w2 * seg7 * t36 - T(3003) * seg8 * t54) * seg7;
   }
   f = length * F;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
@@ -31181,9 +31183,9 @@ std::array<T, 3> segment_cauchy_i16_w0_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -31334,7 +31336,7 @@ T segment_cauchy_i16_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -31343,7 +31345,7 @@ T segment_cauchy_i16_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(16, 18, 1, a, b, c, c - T(1), M_flat.data());
     F = M_flat[0] * w0;
     G_ap = w0 * M_flat[2];
-    G_E = M_flat[3] * w0 - b * w0 * seg5 * M_flat[2];
+    G_E = M_flat[3] * w0 - b * w0 * M_flat[2] * seg5;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -31710,7 +31712,7 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
@@ -31724,7 +31726,7 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -31747,7 +31749,7 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = -(T(1) / T(16)) * seg5 * (seg6 * t8 - w0 * t12 - w1 * M_beyond[0]);
+    G_E = -(T(1) / T(16)) * (seg6 * t8 - w0 * t12 - w1 * M_beyond[0]) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -31772,7 +31774,7 @@ std::array<T, 3> segment_cauchy_i16_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t31 = t17 * t15;
     const T t32 = T(15360) * b * t26 + T(15360) * a_minus_b * t29 + T(13) * (T(1280) * b * t25 + T(1280) * a_minus_b * t28 + T(11) * t23 * a * (T(3) * (T(48) * a_minus_b * t21 + T(48) * b * t17 + T(7) * (T(8) * b * t24 + T(8) * a_minus_b * t27 + T(5) * (T(2) * a_minus_b * t20 + T(3) * (J2 * a + b * t15 + a_minus_b * t19) * t23 * a + T(2) * b * t16) * t23 * a) * t23 * a) * t23 * a + T(128) * a_minus_b * t30 + T(128) * b * t31)) * t23 * a;
     const T t33 = T(14336) * b * t18 + T(14336) * a_minus_b * t22 + t23 * a * t32;
-    G_ap = (T(1) / T(229376)) * w0 * t33 * t23 + (T(1) / T(229376)) * (b * t33 * t23 + T(14336) * t18 - T(14336) * t22) * w1 * seg5;
+    G_ap = (T(1) / T(229376)) * (b * t33 * t23 + T(14336) * t18 - T(14336) * t22) * w1 * seg5 + (T(1) / T(229376)) * w0 * t33 * t23;
     G_E = -(T(1) / T(3440640)) * (T(215040) * seg6 * t22 - T(215040) * w0 * t18 - w1 * t23 * t32) * seg5;
   }
   grad[0] = (G_ap * foot0 - G_E * ab0) * g_factor;
@@ -31833,16 +31835,16 @@ T segment_cauchy_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -31857,7 +31859,7 @@ T segment_cauchy_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(seg4 + c - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -31867,7 +31869,7 @@ T segment_cauchy_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[0] * w0 + M_flat[1] * w1;
     const T t4 = M_flat[4] * w1 + M_flat[3] * w0;
     G_ap = t4;
-    G_E = M_flat[5] * w1 + w0 * M_flat[4] - b * seg5 * t4;
+    G_E = M_flat[5] * w1 + w0 * M_flat[4] - seg5 * b * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -31882,7 +31884,7 @@ T segment_cauchy_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(16)) * (w0 * t8 + M_beyond[0] * w1 - seg6 * t12) * seg5;
+    G_E = (T(1) / T(16)) * seg5 * (w0 * t8 + M_beyond[0] * w1 - seg6 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -31904,12 +31906,12 @@ T segment_cauchy_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t28 = t26 * t16;
     const T t29 = t27 * t20;
     const T t30 = T(13) * a * t15 * (T(11) * a * t15 * (T(128) * a_minus_b * t19 + T(128) * b * t23 + T(3) * a * t15 * (T(7) * a * t15 * (T(8) * a_minus_b * t24 + T(8) * b * t25 + T(5) * (T(2) * a_minus_b * t17 + T(3) * a * t15 * (b * t20 + a * J2 + a_minus_b * t16) + T(2) * b * t21) * a * t15) + T(48) * a_minus_b * t18 + T(48) * b * t22)) + T(1280) * a_minus_b * t26 + T(1280) * b * t27) + T(15360) * a_minus_b * t28 + T(15360) * b * t29;
-    F = (T(1) / T(215040)) * t30 * t15 * w0 + (T(1) / T(215040)) * (T(15360) * t29 + t30 * t15 * b - T(15360) * t28) * seg5 * w1;
+    F = (T(1) / T(215040)) * t30 * t15 * w0 + (T(1) / T(215040)) * seg5 * (T(15360) * t29 + t30 * t15 * b - T(15360) * t28) * w1;
     const T t31 = t22 * t22;
     const T t32 = t18 * t18;
     const T t33 = T(14336) * b * t31 + a * t30 * t15 + T(14336) * a_minus_b * t32;
-    G_ap = (T(1) / T(229376)) * t15 * w0 * t33 + (T(1) / T(229376)) * (t15 * b * t33 + T(14336) * t31 - T(14336) * t32) * seg5 * w1;
-    G_E = (T(1) / T(3440640)) * (T(215040) * w0 * t31 + t30 * t15 * w1 - T(215040) * seg6 * t32) * seg5;
+    G_ap = (T(1) / T(229376)) * t15 * w0 * t33 + (T(1) / T(229376)) * seg5 * (t15 * b * t33 + T(14336) * t31 - T(14336) * t32) * w1;
+    G_E = (T(1) / T(3440640)) * seg5 * (T(215040) * w0 * t31 + t30 * t15 * w1 - T(215040) * seg6 * t32);
   }
   f = F * length;
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
@@ -32173,7 +32175,7 @@ T segment_cauchy_i16_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t21 = t14 * t11;
     const T t22 = T(13) * t19 * t6 * a + T(15360) * t20 * a_minus_b + T(15360) * b * t21;
     const T t23 = t6 * b * t22 + T(15360) * t21 - T(15360) * t20;
-    F = (T(1) / T(215040)) * t6 * w0 * t22 + (T(1) / T(215040)) * t23 * w1 * seg5 - (T(1) / T(215040)) * w2 * (t6 * t22 * c - T(2) * b * t23 * seg5 - T(14) * t19 * t6) * seg5;
+    F = (T(1) / T(215040)) * t6 * w0 * t22 + (T(1) / T(215040)) * t23 * w1 * seg5 - (T(1) / T(215040)) * w2 * (t6 * t22 * c - T(14) * t19 * t6 - T(2) * b * t23 * seg5) * seg5;
   }
   f = F * length;
   return f;
@@ -32254,7 +32256,7 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -32263,7 +32265,7 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(16, 18, 3, a, b, c, c - T(1), M_flat.data());
     const T t4 = w1 * M_flat[5] + w2 * M_flat[6] + w0 * M_flat[4];
     G_ap = t4;
-    G_E = M_flat[5] * w0 + w1 * M_flat[6] + w2 * M_flat[7] - t4 * seg5 * b;
+    G_E = M_flat[5] * w0 + w1 * M_flat[6] + w2 * M_flat[7] - t4 * b * seg5;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -32303,8 +32305,8 @@ std::array<T, 3> segment_cauchy_i16_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t32 = t28 * t28;
     const T t33 = T(14336) * t19 * b + a * t15 * t31 + T(14336) * a_minus_b * t32;
     const T t34 = T(14336) * t32 - t15 * t33 * b - T(14336) * t19;
-    G_ap = (T(1) / T(229376)) * t15 * t33 * w0 - (T(1) / T(3440640)) * w2 * seg5 * (T(15) * c * t15 * t33 + T(30) * t34 * seg5 * b - T(16) * t15 * t31) - (T(1) / T(229376)) * w1 * t34 * seg5;
-    G_E = (T(1) / T(3440640)) * seg5 * (w1 * t15 * t31 + T(215040) * t19 * w0 + T(2) * w2 * (T(15360) * t27 + t15 * t31 * b - T(15360) * t24) * seg5 - T(215040) * seg6 * t32);
+    G_ap = (T(1) / T(229376)) * t15 * t33 * w0 - (T(1) / T(229376)) * w1 * t34 * seg5 - (T(1) / T(3440640)) * w2 * seg5 * (T(30) * t34 * b * seg5 + T(15) * c * t15 * t33 - T(16) * t15 * t31);
+    G_E = (T(1) / T(3440640)) * (w1 * t15 * t31 + T(2) * w2 * (T(15360) * t27 + t15 * t31 * b - T(15360) * t24) * seg5 + T(215040) * t19 * w0 - T(215040) * seg6 * t32) * seg5;
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = (foot1 * G_ap - G_E * ab1) * g_factor;
@@ -32389,7 +32391,7 @@ T segment_cauchy_i16_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -32399,7 +32401,7 @@ T segment_cauchy_i16_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w2 * M_flat[2] + w0 * M_flat[0] + M_flat[1] * w1;
     const T t4 = M_flat[4] * w0 + M_flat[5] * w1 + w2 * M_flat[6];
     G_ap = t4;
-    G_E = M_flat[5] * w0 + M_flat[6] * w1 + M_flat[7] * w2 - t4 * seg5 * b;
+    G_E = M_flat[5] * w0 + M_flat[6] * w1 + M_flat[7] * w2 - seg5 * t4 * b;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -32414,7 +32416,7 @@ T segment_cauchy_i16_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(16)) * (t8 * w0 + T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 - t12 * seg6) * seg5;
+    G_E = (T(1) / T(16)) * seg5 * (t8 * w0 + T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 - t12 * seg6);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -32438,13 +32440,13 @@ T segment_cauchy_i16_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t30 = T(1280) * t18 * a_minus_b + T(1280) * t23 * b + T(11) * a * (T(128) * t27 * a_minus_b + T(3) * (T(48) * t26 * a_minus_b + T(7) * a * t25 * (T(5) * a * t25 * (T(3) * a * t25 * (t15 * a_minus_b + t20 * b + J2 * a) + T(2) * t21 * b + T(2) * t16 * a_minus_b) + T(8) * t22 * b + T(8) * t17 * a_minus_b) + T(48) * t28 * b) * a * t25 + T(128) * t29 * b) * t25;
     const T t31 = T(15360) * t19 * a_minus_b + T(15360) * t24 * b + T(13) * a * t25 * t30;
     const T t32 = T(15360) * t19 - T(15360) * t24 - t31 * t25 * b;
-    F = (T(1) / T(215040)) * t31 * t25 * w0 - (T(1) / T(215040)) * t32 * seg5 * w1 - (T(1) / T(215040)) * w2 * (T(2) * t32 * seg5 * b + t31 * c * t25 - T(14) * t25 * t30) * seg5;
+    F = (T(1) / T(215040)) * t31 * t25 * w0 - (T(1) / T(215040)) * seg5 * t32 * w1 - (T(1) / T(215040)) * seg5 * w2 * (T(2) * seg5 * t32 * b + t31 * c * t25 - T(14) * t25 * t30);
     const T t33 = t26 * t26;
     const T t34 = t28 * t28;
     const T t35 = T(14336) * t33 * a_minus_b + t31 * a * t25 + T(14336) * t34 * b;
     const T t36 = t35 * t25 * b + T(14336) * t34 - T(14336) * t33;
-    G_ap = (T(1) / T(229376)) * t36 * seg5 * w1 + (T(1) / T(229376)) * t35 * t25 * w0 - (T(1) / T(3440640)) * w2 * (T(15) * c * t35 * t25 - T(30) * t36 * seg5 * b - T(16) * t31 * t25) * seg5;
-    G_E = (T(1) / T(3440640)) * (T(215040) * t34 * w0 + t31 * t25 * w1 - T(2) * t32 * w2 * seg5 - T(215040) * t33 * seg6) * seg5;
+    G_ap = (T(1) / T(3440640)) * seg5 * w2 * (T(30) * seg5 * t36 * b + T(16) * t31 * t25 - T(15) * c * t35 * t25) + (T(1) / T(229376)) * seg5 * t36 * w1 + (T(1) / T(229376)) * t35 * t25 * w0;
+    G_E = (T(1) / T(3440640)) * seg5 * (T(215040) * t34 * w0 + t31 * t25 * w1 - T(2) * seg5 * t32 * w2 - T(215040) * t33 * seg6);
   }
   f = length * F;
   grad[0] = (G_ap * foot0 - G_E * ab0) * g_factor;
@@ -32677,7 +32679,7 @@ T segment_cauchy_i16_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T q1 = s * bp_bp + T(1);
   const T c_minus_b = s * ap_bp + T(1);
   T F;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg7 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg7 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -32695,26 +32697,26 @@ T segment_cauchy_i16_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = sqrt(D);
     const T t5 = T(1) / t4;
     const T J2 = t5 * atan2(t4, c_minus_b);
-    const T t6 = T(1) / D;
-    const T t7 = T(1) / q1;
-    const T t8 = t7 * t7;
-    const T t9 = t8 * t7;
-    const T t10 = t9 * t9;
-    const T t11 = T(1) / c;
-    const T t12 = t11 * t11;
-    const T t13 = t12 * t11;
-    const T t14 = t13 * t13;
-    const T t15 = t8 * t8;
-    const T t16 = t12 * t12;
-    const T t17 = t15 * t7;
-    const T t18 = t16 * t11;
-    const T t19 = T(1280) * a_minus_b * t10 + T(1280) * t14 * b + T(11) * t6 * a * (T(3) * t6 * a * (T(7) * t6 * a * (T(5) * (T(3) * t6 * a * (a_minus_b * t7 + a * J2 + t11 * b) + T(2) * t12 * b + T(2) * a_minus_b * t8) * t6 * a + T(8) * t13 * b + T(8) * a_minus_b * t9) + T(48) * a_minus_b * t15 + T(48) * t16 * b) + T(128) * a_minus_b * t17 + T(128) * t18 * b);
-    const T t20 = t10 * t7;
-    const T t21 = t14 * t11;
-    const T t22 = T(13) * t6 * a * t19 + T(15360) * a_minus_b * t20 + T(15360) * t21 * b;
-    const T t23 = T(15360) * t21 + t6 * t22 * b - T(15360) * t20;
-    const T t24 = c * t6 * t22 - T(14) * t6 * t19 - T(2) * t23 * b * seg5;
-    F = (T(1) / T(215040)) * w0 * t6 * t22 + (T(1) / T(215040)) * t23 * w1 * seg5 - (T(1) / T(215040)) * w2 * t24 * seg5 - (T(1) / T(215040)) * w3 * (t23 * c * seg5 + T(2) * b * t24 * seg5 - T(14) * (T(1280) * t14 + t6 * b * t19 - T(1280) * t10) * seg5) * seg5;
+    const T t6 = T(1) / c;
+    const T t7 = t6 * t6;
+    const T t8 = t7 * t6;
+    const T t9 = t8 * t8;
+    const T t10 = t9 * t6;
+    const T t11 = T(1) / D;
+    const T t12 = T(1) / q1;
+    const T t13 = t12 * t12;
+    const T t14 = t13 * t12;
+    const T t15 = t14 * t14;
+    const T t16 = t13 * t13;
+    const T t17 = t7 * t7;
+    const T t18 = t16 * t12;
+    const T t19 = t17 * t6;
+    const T t20 = T(1280) * a_minus_b * t15 + T(1280) * t9 * b + T(11) * t11 * a * (T(3) * t11 * a * (T(7) * t11 * a * (T(5) * (T(3) * t11 * a * (a_minus_b * t12 + a * J2 + t6 * b) + T(2) * t7 * b + T(2) * a_minus_b * t13) * t11 * a + T(8) * t8 * b + T(8) * a_minus_b * t14) + T(48) * a_minus_b * t16 + T(48) * t17 * b) + T(128) * a_minus_b * t18 + T(128) * t19 * b);
+    const T t21 = t15 * t12;
+    const T t22 = T(13) * t11 * a * t20 + T(15360) * a_minus_b * t21 + T(15360) * t10 * b;
+    const T t23 = T(15360) * t10 + t11 * t22 * b - T(15360) * t21;
+    const T t24 = c * t11 * t22 - T(2) * t23 * b * seg5 - T(14) * t11 * t20;
+    F = (T(1) / T(215040)) * t23 * w1 * seg5 + (T(1) / T(215040)) * w0 * t11 * t22 - (T(1) / T(215040)) * w2 * t24 * seg5 - (T(1) / T(215040)) * w3 * seg5 * (t23 * c * seg5 + T(2) * b * t24 * seg5 - T(14) * (T(1280) * t9 + t11 * b * t20 - T(1280) * t15) * seg5);
   }
   f = F * length;
   return f;
@@ -32796,7 +32798,7 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const T* pre, const SegmentPoint<T>&
   const T c_minus_b = s * ap_bp + T(1);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(D + seg1), T(max(T(seg2 + b), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -a_minus_b * b;
   const T t3 = (T(7) / T(10)) * a * min(T(c), T(q1)) - D;
   if (t1 >= T(0)) {
@@ -32811,15 +32813,15 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(16, 18, 4, a, b, a_minus_b, D, c, q1, M_beyond.data());
     G_ap = M_beyond[6] * w1 + w2 * M_beyond[7] + M_beyond[5] * w0 + M_beyond[8] * w3;
-    const T t5 = T(1) / c;
+    const T t5 = T(1) / q1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t7;
-    const T t9 = T(1) / q1;
+    const T t9 = T(1) / c;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(16)) * (T(3) * M_beyond[2] * w3 + M_beyond[0] * w1 + T(2) * w2 * M_beyond[1] + t8 * w0 - seg6 * t12) * seg5;
+    G_E = -(T(1) / T(16)) * seg5 * (seg6 * t8 - T(3) * M_beyond[2] * w3 - M_beyond[0] * w1 - T(2) * w2 * M_beyond[1] - t12 * w0);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -32848,8 +32850,8 @@ std::array<T, 3> segment_cauchy_i16_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t35 = T(14336) * t32 - t20 * t34 * b - T(14336) * t33;
     const T t36 = T(16) * t31 * t20 - T(30) * seg5 * b * t35 - T(15) * c * t20 * t34;
     const T t37 = T(15360) * t30 + t31 * t20 * b - T(15360) * t19;
-    G_ap = (T(1) / T(3440640)) * (T(2) * seg5 * b * t36 + T(15) * c * seg5 * t35 + T(16) * t37 * seg5) * w3 * seg5 + (T(1) / T(3440640)) * w2 * seg5 * t36 + (T(1) / T(229376)) * t20 * w0 * t34 - (T(1) / T(229376)) * seg5 * w1 * t35;
-    G_E = (T(1) / T(3440640)) * seg5 * (T(2) * t37 * w2 * seg5 + t31 * t20 * w1 + T(215040) * t33 * w0 - T(215040) * seg6 * t32 - T(3) * w3 * seg5 * (c * t31 * t20 - T(2) * t37 * seg5 * b - T(14) * t20 * t29));
+    G_ap = (T(1) / T(3440640)) * w2 * t36 * seg5 + (T(1) / T(3440640)) * w3 * (T(2) * t36 * seg5 * b + T(16) * t37 * seg5 + T(15) * c * seg5 * t35) * seg5 + (T(1) / T(229376)) * t20 * w0 * t34 - (T(1) / T(229376)) * w1 * seg5 * t35;
+    G_E = -(T(1) / T(3440640)) * seg5 * (T(215040) * seg6 * t32 + T(3) * w3 * seg5 * (c * t31 * t20 - T(14) * t20 * t29 - T(2) * t37 * seg5 * b) - t31 * t20 * w1 - T(2) * t37 * w2 * seg5 - T(215040) * t33 * w0);
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = -(G_E * ab1 - foot1 * G_ap) * g_factor;
@@ -32921,7 +32923,7 @@ T segment_cauchy_i16_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
     foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
+    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -32935,7 +32937,7 @@ T segment_cauchy_i16_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + D), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
+  const T t1 = max(T(max(T(D + seg1), T(max(T(b + seg2), T(seg3 - b))))), T(c + seg4 - b));
   const T t2 = -b * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(c), T(q1)) * a - D;
   if (t1 >= T(0)) {
@@ -32960,7 +32962,7 @@ T segment_cauchy_i16_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(16)) * (T(2) * w2 * M_beyond[1] + T(3) * w3 * M_beyond[2] + t8 * w0 + w1 * M_beyond[0] - seg6 * t12) * seg5;
+    G_E = (T(1) / T(16)) * (T(2) * w2 * M_beyond[1] + T(3) * w3 * M_beyond[2] + t8 * w0 + w1 * M_beyond[0] - t12 * seg6) * seg5;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(D);
@@ -32985,14 +32987,14 @@ T segment_cauchy_i16_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t31 = T(13) * t15 * t28 * a + T(15360) * t29 * a_minus_b + T(15360) * b * t30;
     const T t32 = b * t31 * t15 + T(15360) * t30 - T(15360) * t29;
     const T t33 = T(14) * t15 * t28 + T(2) * t32 * b * seg5 - t31 * c * t15;
-    F = (T(1) / T(215040)) * w2 * t33 * seg5 + (T(1) / T(215040)) * w1 * t32 * seg5 + (T(1) / T(215040)) * t31 * t15 * w0 - (T(1) / T(215040)) * (T(14) * seg5 * (T(1280) * t19 - b * t15 * t28 - T(1280) * t27) + t32 * c * seg5 - T(2) * b * t33 * seg5) * w3 * seg5;
+    F = (T(1) / T(215040)) * w1 * t32 * seg5 + (T(1) / T(215040)) * w2 * t33 * seg5 + (T(1) / T(215040)) * t31 * t15 * w0 - (T(1) / T(215040)) * (T(14) * (T(1280) * t19 - b * t15 * t28 - T(1280) * t27) * seg5 + t32 * c * seg5 - T(2) * b * t33 * seg5) * w3 * seg5;
     const T t34 = t24 * t24;
     const T t35 = t23 * t23;
     const T t36 = t31 * t15 * a + T(14336) * b * t34 + T(14336) * t35 * a_minus_b;
     const T t37 = T(14336) * t34 + b * t36 * t15 - T(14336) * t35;
     const T t38 = T(15) * c * t36 * t15 - T(16) * t31 * t15 - T(30) * b * t37 * seg5;
-    G_ap = (T(1) / T(229376)) * t36 * t15 * w0 + (T(1) / T(229376)) * w1 * t37 * seg5 - (T(1) / T(3440640)) * t38 * w2 * seg5 - (T(1) / T(3440640)) * (T(15) * c * t37 * seg5 + T(2) * b * t38 * seg5 - T(16) * t32 * seg5) * w3 * seg5;
-    G_E = (T(1) / T(3440640)) * (w1 * t31 * t15 + T(215040) * t34 * w0 + T(2) * t32 * w2 * seg5 + T(3) * t33 * w3 * seg5 - T(215040) * seg6 * t35) * seg5;
+    G_ap = (T(1) / T(229376)) * t36 * t15 * w0 + (T(1) / T(229376)) * w1 * t37 * seg5 - (T(1) / T(3440640)) * w2 * t38 * seg5 - (T(1) / T(3440640)) * (T(2) * b * t38 * seg5 + T(15) * c * t37 * seg5 - T(16) * t32 * seg5) * w3 * seg5;
+    G_E = (T(1) / T(3440640)) * (T(3) * w3 * t33 * seg5 + w1 * t31 * t15 + T(215040) * t34 * w0 + T(2) * t32 * w2 * seg5 - T(215040) * t35 * seg6) * seg5;
   }
   f = length * F;
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;

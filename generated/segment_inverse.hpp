@@ -128,7 +128,7 @@ T segment_inverse_i1_w0_f(const T* pre, const SegmentPoint<T>& point) {
     const T t3 = r0 * a_minus_b;
     X = -seg1 * (ab_ap - a_minus_b) / (t3 - ab_ap * r1);
   }
-  const T J1 = seg2 * asinh(X);
+  const T J1 = asinh(X) * seg2;
   T F;
   const T t4 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   if (t4 >= T(0)) {
@@ -191,8 +191,8 @@ std::array<T, 3> segment_inverse_i1_w0_grad(const T* pre, const SegmentPoint<T>&
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -209,7 +209,7 @@ std::array<T, 3> segment_inverse_i1_w0_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -318,7 +318,7 @@ T segment_inverse_i1_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t4 = r1 * ab_ap;
     X = (ab_ap - a_minus_b) * seg1 / (t4 - a_minus_b * r0);
   }
-  const T J1 = seg2 * asinh(X);
+  const T J1 = asinh(X) * seg2;
   T F;
   T G_ap;
   T G_E;
@@ -572,7 +572,7 @@ T segment_inverse_i1_w1_f(const T* pre, const SegmentPoint<T>& point) {
   }
   const T J1 = asinh(X) * seg2;
   T F;
-  const T t4 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t4 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   if (t4 >= T(0)) {
     // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 2> M_flat;
@@ -580,7 +580,7 @@ T segment_inverse_i1_w1_f(const T* pre, const SegmentPoint<T>& point) {
     F = w0 * M_flat[0] + w1 * M_flat[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
-    F = (r1 + ab_ap * J1 - r0) * seg0 * w1 + w0 * J1;
+    F = seg0 * (r1 + ab_ap * J1 - r0) * w1 + w0 * J1;
   }
   f = F * length;
   return f;
@@ -645,8 +645,8 @@ std::array<T, 3> segment_inverse_i1_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
-    foot2 = (exact_cross[0] * ab1 - ab0 * exact_cross[1]) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot2 = seg0 * (exact_cross[0] * ab1 - ab0 * exact_cross[1]);
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + ab0 * bp0 + ab2 * bp2;
@@ -685,7 +685,7 @@ std::array<T, 3> segment_inverse_i1_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t11 = T(1) / r1;
     const T t12 = T(1) / r0;
     G_ap = w0 * t10 - seg0 * w1 * (t11 - t12 - ab_ap * t10);
-    const T t13 = seg0 * (J1 * w1 + w0 * t12 - t11 * seg7);
+    const T t13 = seg0 * (J1 * w1 + w0 * t12 - seg7 * t11);
     G_E = t13;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -694,7 +694,7 @@ std::array<T, 3> segment_inverse_i1_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t16 = T(1) / r1;
     const T t17 = ab_ap * t15 + a_minus_b * t16;
     G_ap = t14 * t17 * w0 - (t16 - t15 - t14 * ab_ap * t17) * seg0 * w1;
-    const T t18 = seg0 * (J1 * w1 + w0 * t15 - t16 * seg7);
+    const T t18 = seg0 * (J1 * w1 + w0 * t15 - seg7 * t16);
     G_E = t18;
   }
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
@@ -787,7 +787,7 @@ T segment_inverse_i1_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t5 >= T(0)) {
@@ -807,7 +807,7 @@ T segment_inverse_i1_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t12 = T(1) / r1;
     const T t13 = T(1) / r0;
     G_ap = w0 * t11 - (t12 - t13 - ab_ap * t11) * seg0 * w1;
-    const T t14 = -(seg7 * t12 - J1 * w1 - t13 * w0) * seg0;
+    const T t14 = seg0 * (J1 * w1 + t13 * w0 - t12 * seg7);
     G_E = t14;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -818,7 +818,7 @@ T segment_inverse_i1_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t18 = T(1) / r0;
     const T t19 = t17 * a_minus_b + t18 * ab_ap;
     G_ap = t16 * w0 * t19 - (t17 - t18 - t16 * ab_ap * t19) * seg0 * w1;
-    const T t20 = -(seg7 * t17 - J1 * w1 - t18 * w0) * seg0;
+    const T t20 = seg0 * (J1 * w1 + t18 * w0 - t17 * seg7);
     G_E = t20;
   }
   f = length * F;
@@ -1044,7 +1044,7 @@ T segment_inverse_i1_w2_f(const T* pre, const SegmentPoint<T>& point) {
   }
   const T J1 = asinh(X) * seg2;
   T F;
-  const T t4 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t4 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   if (t4 >= T(0)) {
     // P far from the line (D ≥ 2a²), beyond an end by 2|AB| (t* ≥ 3 or t* ≤ −2) or far from the midpoint (|P − M|² ≥ 4 |AB|²): every moment by segment_moments_far_field<T> (the series about the midpoint, or segment_moments_gauss<T, 20>)
     std::array<T, 3> M_flat;
@@ -1053,7 +1053,7 @@ T segment_inverse_i1_w2_f(const T* pre, const SegmentPoint<T>& point) {
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t5 = J1 * ab_ap + r1 - r0;
-    F = w1 * t5 * seg0 + J1 * w0 + (T(1) / T(2)) * w2 * seg0 * (T(4) * t5 * seg0 * ab_ap + (a_minus_b * r1 + cross_cross * J1 + r0 * ab_ap) * seg0 - T(2) * J1 * ap_ap);
+    F = J1 * w0 + w1 * t5 * seg0 + (T(1) / T(2)) * w2 * seg0 * (T(4) * t5 * seg0 * ab_ap + (a_minus_b * r1 + cross_cross * J1 + r0 * ab_ap) * seg0 - T(2) * J1 * ap_ap);
   }
   f = F * length;
   return f;
@@ -1159,8 +1159,8 @@ std::array<T, 3> segment_inverse_i1_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t11 = J_downward<T>(3, ab_ab, cross_cross, t10, ap_ap, a_minus_b, bp_bp);
     const T t12 = T(1) / r1;
     const T t13 = t9 + t11 * ab_ap - t12;
-    G_ap = w2 * (T(2) * t13 * ab_ap * seg0 + J1 - ap_ap * t11) * seg0 + t13 * w1 * seg0 + t11 * w0;
-    const T t14 = (T(2) * w2 * (r1 + ab_ap * J1 - r0) * seg0 + w0 * t9 + J1 * w1 - seg7 * t12) * seg0;
+    G_ap = t13 * seg0 * w1 + w2 * (T(2) * t13 * ab_ap * seg0 + J1 - ap_ap * t11) * seg0 + t11 * w0;
+    const T t14 = seg0 * (T(2) * w2 * (r1 + ab_ap * J1 - r0) * seg0 + w0 * t9 + J1 * w1 - t12 * seg7);
     G_E = t14;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -1169,8 +1169,8 @@ std::array<T, 3> segment_inverse_i1_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t17 = T(1) / r0;
     const T t18 = t16 * a_minus_b + ab_ap * t17;
     const T t19 = t17 + t15 * t18 * ab_ap - t16;
-    G_ap = t15 * w0 * t18 + w1 * t19 * seg0 - w2 * (ap_ap * t15 * t18 - T(2) * ab_ap * t19 * seg0 - J1) * seg0;
-    const T t20 = (T(2) * w2 * (r1 + ab_ap * J1 - r0) * seg0 + w0 * t17 + J1 * w1 - seg7 * t16) * seg0;
+    G_ap = t15 * w0 * t18 + seg0 * w1 * t19 + w2 * (T(2) * ab_ap * seg0 * t19 + J1 - ap_ap * t15 * t18) * seg0;
+    const T t20 = seg0 * (T(2) * w2 * (r1 + ab_ap * J1 - r0) * seg0 + w0 * t17 + J1 * w1 - t16 * seg7);
     G_E = t20;
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
@@ -1231,17 +1231,17 @@ T segment_inverse_i1_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - ab0 * exact_cross[2]);
-    foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot1 = -(exact_cross[0] * ab2 - ab0 * exact_cross[2]) * seg0;
+    foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
   const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
@@ -1258,13 +1258,13 @@ T segment_inverse_i1_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = a_minus_b * r0;
-    X = (a_minus_b - ab_ap) * seg1 / (t4 - r1 * ab_ap);
+    X = seg1 * (a_minus_b - ab_ap) / (t4 - r1 * ab_ap);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t6 = -a_minus_b * ab_ap;
   const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t5 >= T(0)) {
@@ -1274,32 +1274,32 @@ T segment_inverse_i1_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w1 * M_flat[1] + w0 * M_flat[0] + w2 * M_flat[2];
     const T t8 = w2 * M_flat[6] + M_flat[4] * w0 + w1 * M_flat[5];
     G_ap = t8;
-    G_E = w1 * M_flat[6] + w2 * M_flat[7] + M_flat[5] * w0 - seg0 * t8 * ab_ap;
+    G_E = w1 * M_flat[6] + w2 * M_flat[7] + M_flat[5] * w0 - t8 * seg0 * ab_ap;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
     const T t9 = J1 * ab_ap + r1 - r0;
-    const T t10 = w1 * seg0 * t9 + (T(1) / T(2)) * seg0 * w2 * (seg0 * (a_minus_b * r1 + r0 * ab_ap + J1 * cross_cross) + T(4) * seg0 * t9 * ab_ap - T(2) * ap_ap * J1) + J1 * w0;
+    const T t10 = (T(1) / T(2)) * (T(4) * t9 * seg0 * ab_ap + (a_minus_b * r1 + r0 * ab_ap + J1 * cross_cross) * seg0 - T(2) * ap_ap * J1) * w2 * seg0 + J1 * w0 + w1 * t9 * seg0;
     F = t10;
     const T t11 = -ab_ap;
     const T t12 = J_downward<T>(3, ab_ab, cross_cross, t11, ap_ap, a_minus_b, bp_bp);
     const T t13 = T(1) / r1;
     const T t14 = T(1) / r0;
     const T t15 = t13 - t14 - t12 * ab_ap;
-    G_ap = t12 * w0 - (T(2) * seg0 * t15 * ab_ap + t12 * ap_ap - J1) * seg0 * w2 - w1 * seg0 * t15;
-    const T t16 = seg0 * (t14 * w0 + T(2) * seg0 * w2 * t9 + w1 * J1 - seg7 * t13);
+    G_ap = t12 * w0 + w2 * (J1 - T(2) * t15 * seg0 * ab_ap - t12 * ap_ap) * seg0 - w1 * t15 * seg0;
+    const T t16 = (T(2) * w2 * t9 * seg0 + t14 * w0 + w1 * J1 - seg7 * t13) * seg0;
     G_E = t16;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = J1 * ab_ap + r1 - r0;
-    const T t18 = w1 * seg0 * t17 + (T(1) / T(2)) * seg0 * w2 * (seg0 * (a_minus_b * r1 + r0 * ab_ap + J1 * cross_cross) + T(4) * seg0 * t17 * ab_ap - T(2) * ap_ap * J1) + J1 * w0;
+    const T t18 = (T(1) / T(2)) * (T(4) * t17 * seg0 * ab_ap + (a_minus_b * r1 + r0 * ab_ap + J1 * cross_cross) * seg0 - T(2) * ap_ap * J1) * w2 * seg0 + J1 * w0 + w1 * t17 * seg0;
     F = t18;
     const T t19 = T(1) / cross_cross;
     const T t20 = T(1) / r0;
     const T t21 = T(1) / r1;
     const T t22 = t20 * ab_ap + a_minus_b * t21;
     const T t23 = t21 - t20 - t19 * t22 * ab_ap;
-    G_ap = seg0 * w2 * (J1 - ap_ap * t19 * t22 - T(2) * seg0 * t23 * ab_ap) + w0 * t19 * t22 - w1 * seg0 * t23;
-    const T t24 = seg0 * (t20 * w0 + T(2) * seg0 * w2 * t17 + w1 * J1 - seg7 * t21);
+    G_ap = w2 * (J1 - ap_ap * t19 * t22 - T(2) * t23 * seg0 * ab_ap) * seg0 + w0 * t19 * t22 - w1 * t23 * seg0;
+    const T t24 = (T(2) * w2 * t17 * seg0 + t20 * w0 + w1 * J1 - seg7 * t21) * seg0;
     G_E = t24;
   }
   f = F * length;
@@ -1537,10 +1537,10 @@ T segment_inverse_i1_w3_f(const T* pre, const SegmentPoint<T>& point) {
     F = M_flat[0] * w0 + M_flat[3] * w3 + M_flat[2] * w2 + w1 * M_flat[1];
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t5 = r0 - ab_ap * J1 - r1;
-    const T t6 = r1 * a_minus_b + cross_cross * J1 + ab_ap * r0;
-    const T t7 = T(2) * J1 * ap_ap + T(4) * ab_ap * t5 * seg0 - t6 * seg0;
-    F = J1 * w0 + (T(1) / T(6)) * seg0 * (T(6) * t5 * ap_ap * seg0 - (T(2) * r0 * ap_ap - T(2) * bp_bp * r1 - T(3) * ab_ap * t6 * seg0) * seg0 - T(6) * t7 * ab_ap * seg0) * w3 - w1 * t5 * seg0 - (T(1) / T(2)) * t7 * w2 * seg0;
+    const T t5 = r1 * a_minus_b + cross_cross * J1 + ab_ap * r0;
+    const T t6 = r0 - ab_ap * J1 - r1;
+    const T t7 = t5 * seg0 - T(2) * J1 * ap_ap - T(4) * ab_ap * t6 * seg0;
+    F = J1 * w0 + (T(1) / T(2)) * t7 * w2 * seg0 + (T(1) / T(6)) * (T(6) * ab_ap * t7 * seg0 + (T(3) * ab_ap * t5 * seg0 + T(2) * bp_bp * r1 - T(2) * r0 * ap_ap) * seg0 + T(6) * t6 * ap_ap * seg0) * seg0 * w3 - w1 * t6 * seg0;
   }
   f = length * F;
   return f;
@@ -1607,7 +1607,7 @@ std::array<T, 3> segment_inverse_i1_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
     foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
@@ -1630,7 +1630,7 @@ std::array<T, 3> segment_inverse_i1_w3_grad(const T* pre, const SegmentPoint<T>&
   const T J1 = asinh(X) * seg2;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t6 = -a_minus_b * ab_ap;
   const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t5 >= T(0)) {
@@ -1642,28 +1642,30 @@ std::array<T, 3> segment_inverse_i1_w3_grad(const T* pre, const SegmentPoint<T>&
     G_E = M_flat[7] * w1 + M_flat[8] * w2 + M_flat[9] * w3 + M_flat[6] * w0 - seg0 * t8 * ab_ap;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
-    const T t9 = J1 * ab_ap + r1 - r0;
-    const T t10 = T(1) / r1;
-    const T t11 = T(1) / r0;
-    const T t12 = -ab_ap;
-    const T t13 = J_downward<T>(3, ab_ab, cross_cross, t12, ap_ap, a_minus_b, bp_bp);
-    const T t14 = t10 - t11 - t13 * ab_ap;
-    const T t15 = T(2) * seg0 * t14 * ab_ap + ap_ap * t13 - J1;
-    G_ap = (seg0 * t9 + seg0 * t14 * ap_ap - T(2) * seg0 * t15 * ab_ap) * seg0 * w3 + w0 * t13 - seg0 * t14 * w1 - seg0 * w2 * t15;
-    const T t16 = (T(1) / T(2)) * seg0 * (T(4) * seg0 * w2 * t9 + T(2) * J1 * w1 + T(2) * t11 * w0 - T(3) * seg0 * w3 * (T(2) * J1 * ap_ap - T(4) * seg0 * t9 * ab_ap - (r0 * ab_ap + J1 * cross_cross + r1 * a_minus_b) * seg0) - T(2) * seg7 * t10);
-    G_E = t16;
+    const T t9 = -ab_ap;
+    const T t10 = J_downward<T>(3, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
+    const T t11 = T(1) / r1;
+    const T t12 = T(1) / r0;
+    const T t13 = t11 - t12 - t10 * ab_ap;
+    const T t14 = J1 * ab_ap + r1 - r0;
+    const T t15 = seg0 * t14;
+    const T t16 = T(2) * seg0 * t13 * ab_ap + ap_ap * t10 - J1;
+    G_ap = w0 * t10 + seg0 * (seg0 * t13 * ap_ap + t15 - T(2) * seg0 * t16 * ab_ap) * w3 - seg0 * t13 * w1 - seg0 * w2 * t16;
+    const T t17 = (T(1) / T(2)) * seg0 * (T(4) * seg0 * w2 * t14 + T(2) * J1 * w1 + T(2) * t12 * w0 + T(3) * seg0 * ((r0 * ab_ap + J1 * cross_cross + r1 * a_minus_b) * seg0 + T(4) * seg0 * t14 * ab_ap - T(2) * J1 * ap_ap) * w3 - T(2) * seg7 * t11);
+    G_E = t17;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t17 = T(1) / cross_cross;
-    const T t18 = T(1) / r1;
-    const T t19 = T(1) / r0;
-    const T t20 = t18 * a_minus_b + t19 * ab_ap;
-    const T t21 = t18 - t19 - t17 * ab_ap * t20;
-    const T t22 = ap_ap * t17 * t20 + T(2) * seg0 * t21 * ab_ap - J1;
+    const T t18 = T(1) / cross_cross;
+    const T t19 = T(1) / r1;
+    const T t20 = T(1) / r0;
+    const T t21 = t19 * a_minus_b + t20 * ab_ap;
+    const T t22 = t19 - t20 - t18 * ab_ap * t21;
     const T t23 = J1 * ab_ap + r1 - r0;
-    G_ap = w0 * t17 * t20 - seg0 * w2 * t22 - seg0 * (T(2) * seg0 * t22 * ab_ap - seg0 * t23 - seg0 * ap_ap * t21) * w3 - seg0 * t21 * w1;
-    const T t24 = (T(1) / T(2)) * seg0 * (T(4) * seg0 * w2 * t23 + T(2) * J1 * w1 + T(2) * t19 * w0 - T(3) * seg0 * w3 * (T(2) * J1 * ap_ap - T(4) * seg0 * t23 * ab_ap - (r0 * ab_ap + J1 * cross_cross + r1 * a_minus_b) * seg0) - T(2) * seg7 * t18);
-    G_E = t24;
+    const T t24 = seg0 * t23;
+    const T t25 = T(2) * seg0 * t22 * ab_ap + ap_ap * t18 * t21 - J1;
+    G_ap = w0 * t18 * t21 + seg0 * (seg0 * ap_ap * t22 + t24 - T(2) * t25 * seg0 * ab_ap) * w3 - t25 * seg0 * w2 - seg0 * t22 * w1;
+    const T t26 = (T(1) / T(2)) * seg0 * (T(4) * seg0 * w2 * t23 + T(2) * J1 * w1 + T(2) * t20 * w0 + T(3) * seg0 * ((r0 * ab_ap + J1 * cross_cross + r1 * a_minus_b) * seg0 + T(4) * seg0 * t23 * ab_ap - T(2) * J1 * ap_ap) * w3 - T(2) * seg7 * t19);
+    G_E = t26;
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -1733,7 +1735,7 @@ T segment_inverse_i1_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
+    foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
     foot2 = -seg0 * (ab0 * exact_cross[1] - exact_cross[0] * ab1);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -1753,7 +1755,7 @@ T segment_inverse_i1_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t4 = r1 * ab_ap;
     X = (ab_ap - a_minus_b) * seg1 / (t4 - a_minus_b * r0);
   }
-  const T J1 = seg2 * asinh(X);
+  const T J1 = asinh(X) * seg2;
   T F;
   T G_ap;
   T G_E;
@@ -1770,10 +1772,10 @@ T segment_inverse_i1_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     G_E = w1 * M_flat[7] + w0 * M_flat[6] + w2 * M_flat[8] + w3 * M_flat[9] - ab_ap * seg0 * t8;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_3 = J_downward(…)
-    const T t9 = r1 + ab_ap * J1 - r0;
-    const T t10 = ab_ap * r0 + cross_cross * J1 + r1 * a_minus_b;
-    const T t11 = t10 * seg0 + T(4) * ab_ap * t9 * seg0 - T(2) * ap_ap * J1;
-    const T t12 = w1 * t9 * seg0 + J1 * w0 + (T(1) / T(6)) * (seg0 * (T(3) * ab_ap * t10 * seg0 + T(2) * r1 * bp_bp - T(2) * ap_ap * r0) + T(6) * ab_ap * seg0 * t11 - T(6) * t9 * seg0 * ap_ap) * seg0 * w3 + (T(1) / T(2)) * seg0 * w2 * t11;
+    const T t9 = ab_ap * r0 + cross_cross * J1 + r1 * a_minus_b;
+    const T t10 = r1 + ab_ap * J1 - r0;
+    const T t11 = t9 * seg0 + T(4) * ab_ap * t10 * seg0 - T(2) * ap_ap * J1;
+    const T t12 = (T(1) / T(6)) * seg0 * (T(6) * ab_ap * seg0 * t11 + seg0 * (T(2) * r1 * bp_bp + T(3) * ab_ap * t9 * seg0 - T(2) * ap_ap * r0) - T(6) * t10 * seg0 * ap_ap) * w3 + w1 * t10 * seg0 + J1 * w0 + (T(1) / T(2)) * seg0 * w2 * t11;
     F = t12;
     const T t13 = T(1) / r0;
     const T t14 = -ab_ap;
@@ -1781,15 +1783,15 @@ T segment_inverse_i1_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t16 = T(1) / r1;
     const T t17 = t13 + ab_ap * t15 - t16;
     const T t18 = T(2) * t17 * ab_ap * seg0 + J1 - ap_ap * t15;
-    G_ap = w1 * t17 * seg0 + t18 * seg0 * w2 + t15 * w0 - (t17 * seg0 * ap_ap - t9 * seg0 - T(2) * ab_ap * t18 * seg0) * seg0 * w3;
-    const T t19 = (T(1) / T(2)) * (T(2) * t13 * w0 + T(3) * seg0 * t11 * w3 + T(2) * w1 * J1 + T(4) * t9 * seg0 * w2 - T(2) * t16 * seg7) * seg0;
+    G_ap = seg0 * w2 * t18 + (t10 * seg0 + T(2) * ab_ap * seg0 * t18 - t17 * seg0 * ap_ap) * seg0 * w3 + w1 * t17 * seg0 + t15 * w0;
+    const T t19 = (T(1) / T(2)) * seg0 * (T(2) * t13 * w0 + T(3) * seg0 * t11 * w3 + T(4) * t10 * seg0 * w2 + T(2) * w1 * J1 - T(2) * t16 * seg7);
     G_E = t19;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t20 = r1 + ab_ap * J1 - r0;
-    const T t21 = ab_ap * r0 + cross_cross * J1 + r1 * a_minus_b;
-    const T t22 = t21 * seg0 + T(4) * ab_ap * t20 * seg0 - T(2) * ap_ap * J1;
-    const T t23 = w1 * t20 * seg0 + J1 * w0 + (T(1) / T(6)) * (seg0 * (T(3) * ab_ap * t21 * seg0 + T(2) * r1 * bp_bp - T(2) * ap_ap * r0) + T(6) * ab_ap * seg0 * t22 - T(6) * t20 * seg0 * ap_ap) * seg0 * w3 + (T(1) / T(2)) * seg0 * w2 * t22;
+    const T t20 = ab_ap * r0 + cross_cross * J1 + r1 * a_minus_b;
+    const T t21 = r1 + ab_ap * J1 - r0;
+    const T t22 = t20 * seg0 + T(4) * ab_ap * t21 * seg0 - T(2) * ap_ap * J1;
+    const T t23 = (T(1) / T(6)) * seg0 * (T(6) * ab_ap * seg0 * t22 + seg0 * (T(2) * r1 * bp_bp + T(3) * ab_ap * t20 * seg0 - T(2) * ap_ap * r0) - T(6) * t21 * seg0 * ap_ap) * w3 + w1 * t21 * seg0 + J1 * w0 + (T(1) / T(2)) * seg0 * w2 * t22;
     F = t23;
     const T t24 = T(1) / cross_cross;
     const T t25 = T(1) / r1;
@@ -1797,8 +1799,8 @@ T segment_inverse_i1_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t27 = t25 * a_minus_b + ab_ap * t26;
     const T t28 = t26 + t24 * ab_ap * t27 - t25;
     const T t29 = T(2) * ab_ap * seg0 * t28 + J1 - t24 * ap_ap * t27;
-    G_ap = t24 * w0 * t27 + w1 * seg0 * t28 + (t20 * seg0 + T(2) * ab_ap * seg0 * t29 - seg0 * ap_ap * t28) * seg0 * w3 + seg0 * w2 * t29;
-    const T t30 = (T(1) / T(2)) * (T(2) * t26 * w0 + T(3) * seg0 * t22 * w3 + T(2) * w1 * J1 + T(4) * t20 * seg0 * w2 - T(2) * t25 * seg7) * seg0;
+    G_ap = t24 * w0 * t27 + seg0 * w2 * t29 + w1 * seg0 * t28 - seg0 * (seg0 * ap_ap * t28 - t21 * seg0 - T(2) * ab_ap * seg0 * t29) * w3;
+    const T t30 = (T(1) / T(2)) * seg0 * (T(2) * t26 * w0 + T(3) * seg0 * t22 * w3 + T(4) * t21 * seg0 * w2 + T(2) * w1 * J1 - T(2) * t25 * seg7);
     G_E = t30;
   }
   f = length * F;
@@ -2006,7 +2008,7 @@ T segment_inverse_i2_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -2093,7 +2095,7 @@ std::array<T, 3> segment_inverse_i2_w0_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -2101,7 +2103,7 @@ std::array<T, 3> segment_inverse_i2_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(2, 4, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = w0 * M_flat[2];
-    G_E = M_flat[3] * w0 - seg0 * w0 * ab_ap * M_flat[2];
+    G_E = M_flat[3] * w0 - w0 * seg0 * ab_ap * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t4 = -ab_ap;
@@ -2184,7 +2186,7 @@ T segment_inverse_i2_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
-    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
@@ -2194,7 +2196,7 @@ T segment_inverse_i2_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -2203,7 +2205,7 @@ T segment_inverse_i2_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(2, 4, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = w0 * M_flat[0];
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - ab_ap * seg0 * M_flat[2] * w0;
+    G_E = w0 * M_flat[3] - ab_ap * M_flat[2] * seg0 * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t4 = T(1) / ap_ap;
@@ -2432,13 +2434,13 @@ T segment_inverse_i2_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T log_ratio = log(bp_bp / ap_ap);
     const T t4 = -ab_ap;
     const T t5 = J_downward<T>(2, ab_ab, cross_cross, t4, ap_ap, a_minus_b, bp_bp);
-    F = t5 * w0 + (T(1) / T(2)) * w1 * (log_ratio + T(2) * t5 * ab_ap) * seg0;
+    F = t5 * w0 + (T(1) / T(2)) * w1 * seg0 * (log_ratio + T(2) * t5 * ab_ap);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t6 = sqrt(cross_cross);
     const T J2 = atan2(t6, ap_bp) / t6;
     const T log_ratio = log(bp_bp / ap_ap);
-    F = J2 * w0 + (T(1) / T(2)) * w1 * (T(2) * J2 * ab_ap + log_ratio) * seg0;
+    F = (T(1) / T(2)) * w1 * seg0 * (T(2) * J2 * ab_ap + log_ratio) + J2 * w0;
   }
   f = F * length;
   return f;
@@ -2502,7 +2504,7 @@ std::array<T, 3> segment_inverse_i2_w1_grad(const T* pre, const SegmentPoint<T>&
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
     foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
+    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -2510,7 +2512,7 @@ std::array<T, 3> segment_inverse_i2_w1_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -2526,9 +2528,9 @@ std::array<T, 3> segment_inverse_i2_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t6 = J_downward<T>(4, ab_ab, cross_cross, t5, ap_ap, a_minus_b, bp_bp);
     const T t7 = T(1) / ap_ap;
     const T t8 = T(1) / bp_bp;
-    G_ap = t6 * w0 + (T(1) / T(2)) * seg0 * (T(2) * t6 * ab_ap + t7 - t8) * w1;
+    G_ap = t6 * w0 + (T(1) / T(2)) * (T(2) * t6 * ab_ap + t7 - t8) * seg0 * w1;
     const T t9 = w0 * t7;
-    G_E = (T(1) / T(2)) * (t9 + seg0 * w1 * (T(2) * cross_cross * t6 - ab_ap * t7 - a_minus_b * t8) - t8 * seg5) * seg0;
+    G_E = (T(1) / T(2)) * (t9 + seg0 * w1 * (T(2) * cross_cross * t6 - ab_ap * t7 - a_minus_b * t8) - seg5 * t8) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t10 = sqrt(cross_cross);
@@ -2540,7 +2542,7 @@ std::array<T, 3> segment_inverse_i2_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t15 = ab_ab * J2 + ab_ap * t13 + a_minus_b * t14;
     G_ap = (T(1) / T(2)) * t12 * w0 * t15 + (T(1) / T(2)) * (t13 + t12 * ab_ap * t15 - t14) * seg0 * w1;
     const T t16 = w0 * t13;
-    G_E = (T(1) / T(2)) * seg0 * (t16 + w1 * J2 - t14 * seg5);
+    G_E = (T(1) / T(2)) * seg0 * (t16 + w1 * J2 - seg5 * t14);
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -2597,16 +2599,16 @@ T segment_inverse_i2_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (ab1 * exact_cross[2] - ab2 * exact_cross[1]);
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -2616,7 +2618,7 @@ T segment_inverse_i2_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -2626,7 +2628,7 @@ T segment_inverse_i2_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[1] * w1 + M_flat[0] * w0;
     const T t4 = M_flat[3] * w0 + M_flat[4] * w1;
     G_ap = t4;
-    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * ab_ap * seg0;
+    G_E = w0 * M_flat[4] + w1 * M_flat[5] - seg0 * t4 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t5 = T(1) / ap_ap;
@@ -2637,10 +2639,10 @@ T segment_inverse_i2_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t9 = -ab_ap;
     const T t10 = J_downward<T>(4, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
     const T t11 = t6 + t8 - T(2) * cross_cross * t10;
-    F = -w0 * seg0 * t11 - (T(1) / T(2)) * (T(2) * ab_ap * seg0 * t11 - log_ratio) * seg0 * w1;
-    G_ap = t10 * w0 + (T(1) / T(2)) * (t5 + T(2) * t10 * ab_ap - t7) * seg0 * w1;
+    F = -(T(1) / T(2)) * seg0 * (T(2) * seg0 * ab_ap * t11 - log_ratio) * w1 - seg0 * w0 * t11;
+    G_ap = (T(1) / T(2)) * seg0 * (t5 + T(2) * t10 * ab_ap - t7) * w1 + t10 * w0;
     const T t12 = w0 * t5;
-    G_E = (T(1) / T(2)) * (t12 - seg5 * t7 - seg0 * w1 * t11) * seg0;
+    G_E = (T(1) / T(2)) * seg0 * (t12 - seg0 * w1 * t11 - t7 * seg5);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -2648,15 +2650,15 @@ T segment_inverse_i2_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T J2 = atan2(t13, ap_bp) * t14;
     const T t15 = T(1) / ap_ap;
     const T log_ratio = log(bp_bp * t15);
-    F = w0 * J2 + (T(1) / T(2)) * (T(2) * ab_ap * J2 + log_ratio) * seg0 * w1;
+    F = w0 * J2 + (T(1) / T(2)) * seg0 * (T(2) * ab_ap * J2 + log_ratio) * w1;
     const T t16 = T(1) / cross_cross;
     const T t17 = ab_ap * t15;
     const T t18 = T(1) / bp_bp;
     const T t19 = t18 * a_minus_b;
     const T t20 = J2 * ab_ab + t17 + t19;
-    G_ap = (T(1) / T(2)) * t16 * w0 * t20 + (T(1) / T(2)) * (t15 + t16 * ab_ap * t20 - t18) * seg0 * w1;
+    G_ap = (T(1) / T(2)) * t16 * w0 * t20 + (T(1) / T(2)) * seg0 * (t15 + t16 * ab_ap * t20 - t18) * w1;
     const T t21 = w0 * t15;
-    G_E = (T(1) / T(2)) * seg0 * (J2 * w1 + t21 - seg5 * t18);
+    G_E = (T(1) / T(2)) * seg0 * (J2 * w1 + t21 - t18 * seg5);
   }
   f = length * F;
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
@@ -2853,7 +2855,7 @@ T segment_inverse_i2_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp1 * ap1 + ap2 * bp2 + bp0 * ap0;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -2867,14 +2869,14 @@ T segment_inverse_i2_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = -ab_ap;
     const T t5 = J_downward<T>(2, ab_ab, cross_cross, t4, ap_ap, a_minus_b, bp_bp);
     const T t6 = log_ratio + T(2) * t5 * ab_ap;
-    F = (T(1) / T(2)) * w1 * seg0 * t6 + t5 * w0 - seg0 * w2 * (t5 * ap_ap - seg0 * ab_ap * t6 - T(1));
+    F = t5 * w0 + (T(1) / T(2)) * w1 * seg0 * t6 - w2 * seg0 * (t5 * ap_ap - seg0 * ab_ap * t6 - T(1));
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t7 = sqrt(cross_cross);
     const T J2 = atan2(t7, ap_bp) / t7;
     const T log_ratio = log(bp_bp / ap_ap);
     const T t8 = log_ratio + T(2) * J2 * ab_ap;
-    F = (T(1) / T(2)) * w1 * t8 * seg0 + J2 * w0 - (J2 * ap_ap - t8 * seg0 * ab_ap - T(1)) * seg0 * w2;
+    F = (T(1) / T(2)) * w1 * t8 * seg0 + J2 * w0 - (J2 * ap_ap - t8 * seg0 * ab_ap - T(1)) * w2 * seg0;
   }
   f = length * F;
   return f;
@@ -2937,7 +2939,7 @@ std::array<T, 3> segment_inverse_i2_w2_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
+    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
     foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
   }
@@ -2947,7 +2949,7 @@ std::array<T, 3> segment_inverse_i2_w2_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -2968,23 +2970,25 @@ std::array<T, 3> segment_inverse_i2_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = ab_ap * t5;
     const T t11 = a_minus_b * t8;
     const T t12 = t10 + t11 - T(2) * cross_cross * t7;
-    G_ap = w0 * t7 + (T(1) / T(2)) * t9 * seg0 * w1 - w2 * (t12 * seg0 + t7 * ap_ap - t9 * ab_ap * seg0) * seg0;
-    G_E = -(T(1) / T(2)) * (t12 * seg0 * w1 + w2 * (T(2) * t12 * ab_ap * seg0 - log_ratio) * seg0 + seg5 * t8 - w0 * t5) * seg0;
+    G_ap = w0 * t7 + (T(1) / T(2)) * t9 * w1 * seg0 + w2 * (t9 * ab_ap * seg0 - t7 * ap_ap - t12 * seg0) * seg0;
+    const T t13 = w0 * t5;
+    G_E = (T(1) / T(2)) * (t13 - seg5 * t8 - t12 * w1 * seg0 - w2 * (T(2) * t12 * ab_ap * seg0 - log_ratio) * seg0) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t13 = sqrt(cross_cross);
-    const T t14 = T(1) / t13;
-    const T J2 = t14 * atan2(t13, ap_bp);
-    const T t15 = T(1) / ap_ap;
-    const T log_ratio = log(bp_bp * t15);
-    const T t16 = ab_ap * t15;
-    const T t17 = T(1) / bp_bp;
-    const T t18 = a_minus_b * t17;
-    const T t19 = ab_ab * J2 + t16 + t18;
-    const T t20 = T(1) / cross_cross;
-    const T t21 = t19 * t20 * ab_ap + t15 - t17;
-    G_ap = (T(1) / T(2)) * seg0 * w1 * t21 + (T(1) / T(2)) * w2 * seg0 * (T(2) * ab_ap * seg0 * t21 + T(2) * J2 - t19 * t20 * ap_ap) + (T(1) / T(2)) * t19 * w0 * t20;
-    G_E = (T(1) / T(2)) * (J2 * w1 + w0 * t15 + w2 * seg0 * (T(2) * J2 * ab_ap + log_ratio) - seg5 * t17) * seg0;
+    const T t14 = sqrt(cross_cross);
+    const T t15 = T(1) / t14;
+    const T J2 = t15 * atan2(t14, ap_bp);
+    const T t16 = T(1) / ap_ap;
+    const T log_ratio = log(bp_bp * t16);
+    const T t17 = ab_ap * t16;
+    const T t18 = T(1) / bp_bp;
+    const T t19 = a_minus_b * t18;
+    const T t20 = ab_ab * J2 + t17 + t19;
+    const T t21 = T(1) / cross_cross;
+    const T t22 = t20 * t21 * ab_ap + t16 - t18;
+    G_ap = (T(1) / T(2)) * w1 * seg0 * t22 + (T(1) / T(2)) * t20 * w0 * t21 - (T(1) / T(2)) * w2 * (t20 * t21 * ap_ap - T(2) * J2 - T(2) * ab_ap * seg0 * t22) * seg0;
+    const T t23 = w0 * t16;
+    G_E = (T(1) / T(2)) * (J2 * w1 + t23 + w2 * (T(2) * J2 * ab_ap + log_ratio) * seg0 - seg5 * t18) * seg0;
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -3044,7 +3048,7 @@ T segment_inverse_i2_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -3052,7 +3056,7 @@ T segment_inverse_i2_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
+    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
@@ -3061,7 +3065,7 @@ T segment_inverse_i2_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -3071,7 +3075,7 @@ T segment_inverse_i2_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w1 * M_flat[1] + w0 * M_flat[0] + w2 * M_flat[2];
     const T t4 = M_flat[5] * w1 + w2 * M_flat[6] + w0 * M_flat[4];
     G_ap = t4;
-    G_E = w2 * M_flat[7] + M_flat[5] * w0 + M_flat[6] * w1 - seg0 * t4 * ab_ap;
+    G_E = w2 * M_flat[7] + M_flat[5] * w0 + M_flat[6] * w1 - t4 * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t5 = T(1) / ap_ap;
@@ -3083,29 +3087,27 @@ T segment_inverse_i2_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t10 = J_downward<T>(4, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
     const T t11 = t7 + t8 - T(2) * t10 * cross_cross;
     const T t12 = log_ratio - T(2) * seg0 * t11 * ab_ap;
-    F = (T(1) / T(2)) * t12 * seg0 * w1 + seg0 * w2 * (ap_ap * seg0 * t11 + t12 * seg0 * ab_ap + T(1)) - seg0 * t11 * w0;
+    F = (T(1) / T(2)) * seg0 * w1 * t12 + w2 * seg0 * (ap_ap * seg0 * t11 + seg0 * ab_ap * t12 + T(1)) - seg0 * t11 * w0;
     const T t13 = t6 - t5 - T(2) * ab_ap * t10;
-    G_ap = w0 * t10 - seg0 * (seg0 * t11 + ap_ap * t10 + seg0 * t13 * ab_ap) * w2 - (T(1) / T(2)) * seg0 * t13 * w1;
-    const T t14 = t5 * w0;
-    G_E = (T(1) / T(2)) * (t14 + t12 * seg0 * w2 - seg5 * t6 - seg0 * t11 * w1) * seg0;
+    G_ap = w0 * t10 - (T(1) / T(2)) * t13 * seg0 * w1 - (t13 * seg0 * ab_ap + seg0 * t11 + ap_ap * t10) * w2 * seg0;
+    G_E = -(T(1) / T(2)) * (seg0 * t11 * w1 + t6 * seg5 - t5 * w0 - w2 * seg0 * t12) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t15 = sqrt(cross_cross);
-    const T t16 = T(1) / t15;
-    const T J2 = atan2(t15, ap_bp) * t16;
-    const T t17 = T(1) / ap_ap;
-    const T log_ratio = log(t17 * bp_bp);
-    const T t18 = T(2) * ab_ap * J2 + log_ratio;
-    F = (T(1) / T(2)) * seg0 * t18 * w1 + w0 * J2 + seg0 * w2 * (seg0 * ab_ap * t18 + T(1) - ap_ap * J2);
-    const T t19 = T(1) / bp_bp;
-    const T t20 = a_minus_b * t19;
-    const T t21 = t17 * ab_ap;
-    const T t22 = t20 + t21 + ab_ab * J2;
-    const T t23 = T(1) / cross_cross;
-    const T t24 = t19 - t22 * ab_ap * t23 - t17;
-    G_ap = (T(1) / T(2)) * t22 * w0 * t23 - (T(1) / T(2)) * seg0 * t24 * w1 - (T(1) / T(2)) * seg0 * w2 * (T(2) * seg0 * t24 * ab_ap + ap_ap * t22 * t23 - T(2) * J2);
-    const T t25 = t17 * w0;
-    G_E = (T(1) / T(2)) * (t25 + seg0 * w2 * t18 + w1 * J2 - seg5 * t19) * seg0;
+    const T t14 = sqrt(cross_cross);
+    const T t15 = T(1) / t14;
+    const T J2 = atan2(t14, ap_bp) * t15;
+    const T t16 = T(1) / ap_ap;
+    const T log_ratio = log(t16 * bp_bp);
+    const T t17 = T(2) * ab_ap * J2 + log_ratio;
+    F = (T(1) / T(2)) * seg0 * t17 * w1 + w0 * J2 - w2 * seg0 * (ap_ap * J2 - seg0 * ab_ap * t17 - T(1));
+    const T t18 = T(1) / bp_bp;
+    const T t19 = a_minus_b * t18;
+    const T t20 = t16 * ab_ap;
+    const T t21 = t19 + t20 + ab_ab * J2;
+    const T t22 = T(1) / cross_cross;
+    const T t23 = t18 - t21 * ab_ap * t22 - t16;
+    G_ap = (T(1) / T(2)) * t21 * w0 * t22 - (T(1) / T(2)) * t23 * seg0 * w1 - (T(1) / T(2)) * w2 * seg0 * (T(2) * t23 * seg0 * ab_ap + ap_ap * t21 * t22 - T(2) * J2);
+    G_E = (T(1) / T(2)) * seg0 * (t16 * w0 + w1 * J2 + w2 * seg0 * t17 - t18 * seg5);
   }
   f = F * length;
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
@@ -3304,7 +3306,7 @@ T segment_inverse_i2_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -3317,17 +3319,19 @@ T segment_inverse_i2_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T log_ratio = log(bp_bp / ap_ap);
     const T t4 = -ab_ap;
     const T t5 = J_downward<T>(2, ab_ab, cross_cross, t4, ap_ap, a_minus_b, bp_bp);
-    const T t6 = log_ratio + T(2) * ab_ap * t5;
-    const T t7 = ap_ap * t5 - ab_ap * t6 * seg0 - T(1);
-    F = (T(1) / T(2)) * t6 * seg0 * w1 + w0 * t5 - w2 * seg0 * t7 - (T(1) / T(2)) * (T(4) * ab_ap * seg0 * t7 + ap_ap * t6 * seg0 - (T(2) * ab_ap + bp_bp - ap_ap) * seg0) * w3 * seg0;
+    const T t6 = T(2) * ab_ap + bp_bp - ap_ap;
+    const T t7 = log_ratio + T(2) * ab_ap * t5;
+    const T t8 = ab_ap * t7 * seg0 + T(1) - ap_ap * t5;
+    F = w0 * t5 + (T(1) / T(2)) * w3 * (t6 * seg0 + T(4) * ab_ap * t8 * seg0 - ap_ap * t7 * seg0) * seg0 + w2 * t8 * seg0 + (T(1) / T(2)) * t7 * seg0 * w1;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t8 = sqrt(cross_cross);
-    const T J2 = atan2(t8, ap_bp) / t8;
+    const T t9 = sqrt(cross_cross);
+    const T J2 = atan2(t9, ap_bp) / t9;
     const T log_ratio = log(bp_bp / ap_ap);
-    const T t9 = T(2) * ab_ap * J2 + log_ratio;
-    const T t10 = ab_ap * t9 * seg0 + T(1) - ap_ap * J2;
-    F = t10 * w2 * seg0 + w0 * J2 + (T(1) / T(2)) * t9 * seg0 * w1 - (T(1) / T(2)) * (t9 * ap_ap * seg0 - (T(2) * ab_ap + bp_bp - ap_ap) * seg0 - T(4) * t10 * ab_ap * seg0) * w3 * seg0;
+    const T t10 = T(2) * ab_ap * J2 + log_ratio;
+    const T t11 = ap_ap * J2 - ab_ap * t10 * seg0 - T(1);
+    const T t12 = T(2) * ab_ap + bp_bp - ap_ap;
+    F = w0 * J2 + (T(1) / T(2)) * t10 * seg0 * w1 - t11 * w2 * seg0 - (T(1) / T(2)) * (T(4) * t11 * ab_ap * seg0 + t10 * ap_ap * seg0 - t12 * seg0) * w3 * seg0;
   }
   f = length * F;
   return f;
@@ -3383,17 +3387,17 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
-    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp1 * ab1 + bp2 * ab2;
@@ -3401,7 +3405,7 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -3410,7 +3414,7 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(2, 4, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w2 * M_flat[7] + M_flat[6] * w1 + w0 * M_flat[5] + w3 * M_flat[8];
     G_ap = t4;
-    G_E = M_flat[7] * w1 + M_flat[9] * w3 + M_flat[6] * w0 + w2 * M_flat[8] - t4 * ab_ap * seg0;
+    G_E = M_flat[7] * w1 + M_flat[9] * w3 + M_flat[6] * w0 + w2 * M_flat[8] - seg0 * t4 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t5 = T(1) / ap_ap;
@@ -3418,33 +3422,31 @@ std::array<T, 3> segment_inverse_i2_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t6 = -ab_ap;
     const T t7 = J_downward<T>(4, ab_ab, cross_cross, t6, ap_ap, a_minus_b, bp_bp);
     const T t8 = T(1) / bp_bp;
-    const T t9 = a_minus_b * t8;
-    const T t10 = t5 * ab_ap;
-    const T t11 = t9 + t10 - T(2) * t7 * cross_cross;
-    const T t12 = log_ratio - T(2) * t11 * ab_ap * seg0;
-    const T t13 = T(2) * t7 * ab_ap + t5 - t8;
-    const T t14 = t13 * ab_ap * seg0 - t11 * seg0 - ap_ap * t7;
-    G_ap = t7 * w0 + (T(1) / T(2)) * w3 * (t12 * seg0 + T(4) * t14 * ab_ap * seg0 - t13 * ap_ap * seg0) * seg0 + (T(1) / T(2)) * t13 * w1 * seg0 + w2 * t14 * seg0;
-    const T t15 = t5 * w0;
-    G_E = (T(1) / T(2)) * (w2 * t12 * seg0 + T(3) * w3 * (t12 * ab_ap * seg0 + ap_ap * t11 * seg0 + T(1)) * seg0 + t15 - t11 * w1 * seg0 - seg5 * t8) * seg0;
+    const T t9 = T(2) * t7 * ab_ap + t5 - t8;
+    const T t10 = a_minus_b * t8;
+    const T t11 = t5 * ab_ap;
+    const T t12 = t10 + t11 - T(2) * t7 * cross_cross;
+    const T t13 = seg0 * t12 + ap_ap * t7 - t9 * seg0 * ab_ap;
+    const T t14 = log_ratio - T(2) * seg0 * t12 * ab_ap;
+    G_ap = (T(1) / T(2)) * t9 * seg0 * w1 + t7 * w0 - t13 * w2 * seg0 - (T(1) / T(2)) * seg0 * (t9 * ap_ap * seg0 + T(4) * t13 * seg0 * ab_ap - seg0 * t14) * w3;
+    G_E = (T(1) / T(2)) * seg0 * (T(3) * seg0 * w3 * (ap_ap * seg0 * t12 + seg0 * t14 * ab_ap + T(1)) + w2 * seg0 * t14 + t5 * w0 - seg0 * t12 * w1 - seg5 * t8);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t16 = sqrt(cross_cross);
-    const T t17 = T(1) / t16;
-    const T J2 = atan2(t16, ap_bp) * t17;
-    const T t18 = T(1) / ap_ap;
-    const T log_ratio = log(t18 * bp_bp);
-    const T t19 = T(1) / bp_bp;
-    const T t20 = a_minus_b * t19;
-    const T t21 = t18 * ab_ap;
-    const T t22 = t20 + ab_ab * J2 + t21;
-    const T t23 = T(1) / cross_cross;
-    const T t24 = t19 - t22 * t23 * ab_ap - t18;
-    const T t25 = log_ratio + T(2) * J2 * ab_ap;
-    const T t26 = T(2) * t24 * ab_ap * seg0 + ap_ap * t22 * t23 - T(2) * J2;
-    G_ap = (T(1) / T(2)) * w3 * (ap_ap * t24 * seg0 + t25 * seg0 - T(2) * t26 * ab_ap * seg0) * seg0 + (T(1) / T(2)) * w0 * t22 * t23 - (T(1) / T(2)) * t24 * w1 * seg0 - (T(1) / T(2)) * t26 * w2 * seg0;
-    const T t27 = t18 * w0;
-    G_E = (T(1) / T(2)) * (w2 * t25 * seg0 + J2 * w1 + t27 + T(3) * (t25 * ab_ap * seg0 + T(1) - ap_ap * J2) * w3 * seg0 - seg5 * t19) * seg0;
+    const T t15 = sqrt(cross_cross);
+    const T t16 = T(1) / t15;
+    const T J2 = atan2(t15, ap_bp) * t16;
+    const T t17 = T(1) / ap_ap;
+    const T log_ratio = log(t17 * bp_bp);
+    const T t18 = T(1) / bp_bp;
+    const T t19 = a_minus_b * t18;
+    const T t20 = t17 * ab_ap;
+    const T t21 = t19 + ab_ab * J2 + t20;
+    const T t22 = T(1) / cross_cross;
+    const T t23 = log_ratio + T(2) * J2 * ab_ap;
+    const T t24 = t18 - t21 * t22 * ab_ap - t17;
+    const T t25 = T(2) * seg0 * t24 * ab_ap + ap_ap * t21 * t22 - T(2) * J2;
+    G_ap = (T(1) / T(2)) * w0 * t21 * t22 + (T(1) / T(2)) * seg0 * (seg0 * t23 + ap_ap * seg0 * t24 - T(2) * seg0 * ab_ap * t25) * w3 - (T(1) / T(2)) * w2 * seg0 * t25 - (T(1) / T(2)) * seg0 * t24 * w1;
+    G_E = -(T(1) / T(2)) * seg0 * (seg5 * t18 - J2 * w1 - t17 * w0 - T(3) * (seg0 * t23 * ab_ap + T(1) - ap_ap * J2) * seg0 * w3 - w2 * seg0 * t23);
   }
   grad[0] = (G_ap * foot0 - G_E * ab0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -3503,7 +3505,7 @@ T segment_inverse_i2_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * seg0 * ab0;
+    foot0 = ap0 - ab_ap * ab0 * seg0;
     foot1 = ap1 - ab_ap * seg0 * ab1;
     foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
@@ -3522,7 +3524,7 @@ T segment_inverse_i2_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -3537,21 +3539,21 @@ T segment_inverse_i2_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t5 = T(1) / ap_ap;
     const T log_ratio = log(bp_bp * t5);
-    const T t6 = T(1) / bp_bp;
-    const T t7 = t6 * a_minus_b;
-    const T t8 = ab_ap * t5;
-    const T t9 = -ab_ap;
-    const T t10 = J_downward<T>(4, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
-    const T t11 = t7 + t8 - T(2) * t10 * cross_cross;
-    const T t12 = log_ratio - T(2) * ab_ap * t11 * seg0;
-    const T t13 = ab_ap * t12 * seg0 + ap_ap * t11 * seg0 + T(1);
-    const T t14 = (T(2) * ab_ap + bp_bp - ap_ap) * seg0;
-    F = (T(1) / T(2)) * w3 * seg0 * (T(4) * ab_ap * t13 * seg0 + t14 - t12 * ap_ap * seg0) + (T(1) / T(2)) * t12 * seg0 * w1 + w2 * t13 * seg0 - t11 * w0 * seg0;
-    const T t15 = t5 + T(2) * ab_ap * t10 - t6;
-    const T t16 = ab_ap * t15 * seg0 - t10 * ap_ap - t11 * seg0;
-    G_ap = t10 * w0 + (T(1) / T(2)) * t15 * seg0 * w1 + w2 * t16 * seg0 - (T(1) / T(2)) * (ap_ap * t15 * seg0 - T(4) * ab_ap * t16 * seg0 - t12 * seg0) * w3 * seg0;
-    const T t17 = t5 * w0;
-    G_E = (T(1) / T(2)) * seg0 * (T(3) * w3 * t13 * seg0 + t17 + w2 * t12 * seg0 - t11 * seg0 * w1 - t6 * seg5);
+    const T t6 = T(2) * ab_ap + bp_bp - ap_ap;
+    const T t7 = T(1) / bp_bp;
+    const T t8 = t7 * a_minus_b;
+    const T t9 = ab_ap * t5;
+    const T t10 = -ab_ap;
+    const T t11 = J_downward<T>(4, ab_ab, cross_cross, t10, ap_ap, a_minus_b, bp_bp);
+    const T t12 = t8 + t9 - T(2) * t11 * cross_cross;
+    const T t13 = T(2) * ab_ap * t12 * seg0 - log_ratio;
+    const T t14 = ab_ap * t13 * seg0 - ap_ap * t12 * seg0 - T(1);
+    F = (T(1) / T(2)) * (t6 * seg0 + t13 * ap_ap * seg0 - T(4) * ab_ap * t14 * seg0) * w3 * seg0 - t12 * w0 * seg0 - (T(1) / T(2)) * t13 * seg0 * w1 - w2 * t14 * seg0;
+    const T t15 = t5 + T(2) * ab_ap * t11 - t7;
+    const T t16 = ab_ap * t15 * seg0 - t12 * seg0 - t11 * ap_ap;
+    G_ap = t11 * w0 + (T(1) / T(2)) * (T(4) * ab_ap * t16 * seg0 - ap_ap * t15 * seg0 - t13 * seg0) * w3 * seg0 + (T(1) / T(2)) * t15 * seg0 * w1 + w2 * t16 * seg0;
+    const T t17 = t7 * seg5;
+    G_E = -(T(1) / T(2)) * seg0 * (w2 * t13 * seg0 + T(3) * w3 * t14 * seg0 + t12 * seg0 * w1 + t17 - t5 * w0);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t18 = sqrt(cross_cross);
@@ -3560,19 +3562,19 @@ T segment_inverse_i2_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t20 = T(1) / ap_ap;
     const T log_ratio = log(bp_bp * t20);
     const T t21 = T(2) * ab_ap * J2 + log_ratio;
-    const T t22 = ab_ap * t21 * seg0 + T(1) - J2 * ap_ap;
-    const T t23 = (T(2) * ab_ap + bp_bp - ap_ap) * seg0;
-    F = J2 * w0 + (T(1) / T(2)) * (T(4) * ab_ap * seg0 * t22 + t23 - t21 * ap_ap * seg0) * w3 * seg0 + (T(1) / T(2)) * t21 * seg0 * w1 + w2 * seg0 * t22;
+    const T t22 = J2 * ap_ap - ab_ap * t21 * seg0 - T(1);
+    const T t23 = T(2) * ab_ap + bp_bp - ap_ap;
+    F = J2 * w0 + (T(1) / T(2)) * t21 * seg0 * w1 - (T(1) / T(2)) * (T(4) * ab_ap * t22 * seg0 + t21 * ap_ap * seg0 - t23 * seg0) * w3 * seg0 - w2 * t22 * seg0;
     const T t24 = T(1) / bp_bp;
     const T t25 = t24 * a_minus_b;
     const T t26 = ab_ap * t20;
     const T t27 = t25 + t26 + J2 * ab_ab;
     const T t28 = T(1) / cross_cross;
     const T t29 = t20 + ab_ap * t27 * t28 - t24;
-    const T t30 = t27 * ap_ap * t28 - T(2) * J2 - T(2) * ab_ap * t29 * seg0;
-    G_ap = (T(1) / T(2)) * t27 * w0 * t28 + (T(1) / T(2)) * t29 * seg0 * w1 - (T(1) / T(2)) * t30 * w2 * seg0 - (T(1) / T(2)) * (ap_ap * t29 * seg0 + T(2) * t30 * ab_ap * seg0 - t21 * seg0) * w3 * seg0;
-    const T t31 = t20 * w0;
-    G_E = (T(1) / T(2)) * (T(3) * w3 * seg0 * t22 + J2 * w1 + t31 + w2 * t21 * seg0 - t24 * seg5) * seg0;
+    const T t30 = T(2) * ab_ap * t29 * seg0 + T(2) * J2 - t27 * ap_ap * t28;
+    G_ap = (T(1) / T(2)) * t27 * w0 * t28 + (T(1) / T(2)) * t29 * seg0 * w1 + (T(1) / T(2)) * t30 * w2 * seg0 - (T(1) / T(2)) * (ap_ap * t29 * seg0 - t21 * seg0 - T(2) * t30 * ab_ap * seg0) * w3 * seg0;
+    const T t31 = t24 * seg5;
+    G_E = -(T(1) / T(2)) * seg0 * (T(3) * w3 * t22 * seg0 + t31 - w2 * t21 * seg0 - J2 * w1 - t20 * w0);
   }
   f = length * F;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
@@ -3772,7 +3774,7 @@ T segment_inverse_i3_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -3847,8 +3849,8 @@ std::array<T, 3> segment_inverse_i3_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
     foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
@@ -3858,7 +3860,7 @@ std::array<T, 3> segment_inverse_i3_w0_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -3946,17 +3948,17 @@ T segment_inverse_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab_ap * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
-    foot1 = -(exact_cross[0] * ab2 - ab0 * exact_cross[2]) * seg0;
-    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
+    foot1 = -seg0 * (exact_cross[0] * ab2 - ab0 * exact_cross[2]);
+    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
@@ -3966,7 +3968,7 @@ T segment_inverse_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -3975,7 +3977,7 @@ T segment_inverse_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(3, 5, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * w0;
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - ab_ap * M_flat[2] * w0 * seg0;
+    G_E = M_flat[3] * w0 - seg0 * ab_ap * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -3988,7 +3990,7 @@ T segment_inverse_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t7 = T(1) / r0;
     const T t8 = t7 * t7;
     const T t9 = t8 * t7;
-    const T t10 = -(T(1) / T(3)) * (t6 * w0 - w0 * t9) * seg0;
+    const T t10 = -(T(1) / T(3)) * seg0 * (t6 * w0 - w0 * t9);
     G_E = t10;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -4002,7 +4004,7 @@ T segment_inverse_i3_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t16 = t15 * t12;
     const T t17 = t13 * t13;
     const T t18 = t17 * t13;
-    const T t19 = -(T(1) / T(3)) * (t16 * w0 - w0 * t18) * seg0;
+    const T t19 = -(T(1) / T(3)) * seg0 * (t16 * w0 - w0 * t18);
     G_E = t19;
   }
   f = length * F;
@@ -4200,7 +4202,7 @@ T segment_inverse_i3_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -4281,8 +4283,8 @@ std::array<T, 3> segment_inverse_i3_w1_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -4292,7 +4294,7 @@ std::array<T, 3> segment_inverse_i3_w1_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -4311,14 +4313,14 @@ std::array<T, 3> segment_inverse_i3_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t9 = t8 * t7;
     const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
-    G_ap = (T(1) / T(3)) * w1 * (T(3) * t6 * ab_ap + t9 - t10 * t11) * seg0 + t6 * w0;
-    const T t12 = ab_ap * t8 * t7;
-    const T t13 = t10 * a_minus_b * t11;
+    G_ap = t6 * w0 + (T(1) / T(3)) * seg0 * w1 * (T(3) * t6 * ab_ap + t9 - t10 * t11);
+    const T t12 = t7 * t7;
+    const T t13 = t12 * t7;
     const T t14 = t10 * t10;
     const T t15 = t14 * t10;
-    const T t16 = t7 * t7;
-    const T t17 = t16 * t7;
-    G_E = -(T(1) / T(6)) * ((t12 + t13 - T(3) * cross_cross * t6) * w1 * seg0 + T(2) * t15 * seg7 - T(2) * w0 * t17) * seg0;
+    const T t16 = ab_ap * t8 * t7;
+    const T t17 = t10 * a_minus_b * t11;
+    G_E = (T(1) / T(6)) * (T(2) * w0 * t13 - T(2) * t15 * seg7 - (t16 + t17 - T(3) * cross_cross * t6) * seg0 * w1) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t18 = T(1) / cross_cross;
@@ -4331,12 +4333,12 @@ std::array<T, 3> segment_inverse_i3_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t25 = t22 * a_minus_b + ab_ap * t19;
     const T t26 = t21 + t24 + T(2) * ab_ab * t18 * t25;
     const T t27 = t20 * t19;
-    G_ap = (T(1) / T(3)) * (t18 * ab_ap * t26 + t27 - t22 * t23) * w1 * seg0 + (T(1) / T(3)) * t18 * t26 * w0;
+    G_ap = (T(1) / T(3)) * t18 * t26 * w0 + (T(1) / T(3)) * (t18 * ab_ap * t26 + t27 - t22 * t23) * seg0 * w1;
     const T t28 = t19 * t19;
     const T t29 = t28 * t19;
     const T t30 = t22 * t22;
     const T t31 = t30 * t22;
-    G_E = (T(1) / T(3)) * (t18 * t25 * w1 + w0 * t29 - t31 * seg7) * seg0;
+    G_E = (T(1) / T(3)) * seg0 * (t18 * t25 * w1 + w0 * t29 - t31 * seg7);
   }
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
   grad[1] = -g_factor * (ab1 * G_E - G_ap * foot1);
@@ -4393,7 +4395,7 @@ T segment_inverse_i3_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
     foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
@@ -4426,21 +4428,21 @@ T segment_inverse_i3_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     G_E = w1 * M_flat[5] + w0 * M_flat[4] - t4 * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
-    const T t5 = T(1) / r0;
-    const T t6 = T(1) / r1;
-    const T t7 = t6 * t6;
-    const T t8 = a_minus_b * t6 * t7;
-    const T t9 = t5 * t5;
-    const T t10 = t9 * t5 * ab_ap;
+    const T t5 = T(1) / r1;
+    const T t6 = t5 * t5;
+    const T t7 = a_minus_b * t5 * t6;
+    const T t8 = T(1) / r0;
+    const T t9 = t8 * t8;
+    const T t10 = t9 * t8 * ab_ap;
     const T t11 = -ab_ap;
     const T t12 = J_downward<T>(5, ab_ab, cross_cross, t11, ap_ap, a_minus_b, bp_bp);
-    const T t13 = t8 + t10 - T(3) * cross_cross * t12;
-    F = (T(1) / T(2)) * w1 * seg0 * (T(2) * t5 - seg0 * t13 * ab_ap - T(2) * t6) - (T(1) / T(2)) * seg0 * t13 * w0;
-    G_ap = t12 * w0 - (T(1) / T(3)) * w1 * seg0 * (t6 * t7 - T(3) * ab_ap * t12 - t9 * t5);
-    const T t14 = t6 * t6;
-    const T t15 = t14 * t6;
-    const T t16 = t5 * t5;
-    const T t17 = t16 * t5;
+    const T t13 = t7 + t10 - T(3) * cross_cross * t12;
+    F = -(T(1) / T(2)) * w1 * seg0 * (seg0 * t13 * ab_ap + T(2) * t5 - T(2) * t8) - (T(1) / T(2)) * seg0 * t13 * w0;
+    G_ap = t12 * w0 - (T(1) / T(3)) * w1 * seg0 * (t5 * t6 - T(3) * ab_ap * t12 - t9 * t8);
+    const T t14 = t5 * t5;
+    const T t15 = t14 * t5;
+    const T t16 = t8 * t8;
+    const T t17 = t16 * t8;
     G_E = -(T(1) / T(6)) * seg0 * (w1 * seg0 * t13 + T(2) * seg7 * t15 - T(2) * t17 * w0);
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -4459,7 +4461,7 @@ T segment_inverse_i3_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t28 = t27 * t19;
     const T t29 = t20 * t20;
     const T t30 = t29 * t20;
-    G_E = (T(1) / T(3)) * (w1 * t18 * t21 + t28 * w0 - seg7 * t30) * seg0;
+    G_E = (T(1) / T(3)) * seg0 * (w1 * t18 * t21 + t28 * w0 - seg7 * t30);
   }
   f = length * F;
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
@@ -4672,7 +4674,7 @@ T segment_inverse_i3_w2_f(const T* pre, const SegmentPoint<T>& point) {
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = r1 * ab_ap;
     const T t3 = T(1) / cross_cross;
-    X = seg1 * (t2 + a_minus_b * r0) * t3;
+    X = (t2 + a_minus_b * r0) * t3 * seg1;
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * ab_ap;
@@ -4680,7 +4682,7 @@ T segment_inverse_i3_w2_f(const T* pre, const SegmentPoint<T>& point) {
   }
   const T J1 = seg2 * asinh(X);
   T F;
-  const T t5 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t5 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t6 = -a_minus_b * ab_ap;
   const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t5 >= T(0)) {
@@ -4695,7 +4697,7 @@ T segment_inverse_i3_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t10 = T(1) / r0;
     const T t11 = T(1) / r1;
     const T t12 = t9 * ab_ap + t10 - t11;
-    F = t9 * w0 + (T(2) * t12 * ab_ap * seg0 + J1 - ap_ap * t9) * w2 * seg0 + w1 * t12 * seg0;
+    F = t9 * w0 + w1 * t12 * seg0 - (ap_ap * t9 - T(2) * t12 * seg0 * ab_ap - J1) * w2 * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = T(1) / r0;
@@ -4703,7 +4705,7 @@ T segment_inverse_i3_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t13 * ab_ap + t14 * a_minus_b;
     const T t16 = T(1) / cross_cross;
     const T t17 = t15 * t16 * ab_ap + t13 - t14;
-    F = w1 * seg0 * t17 + t15 * t16 * w0 - w2 * seg0 * (ap_ap * t15 * t16 - J1 - T(2) * ab_ap * seg0 * t17);
+    F = w2 * seg0 * (T(2) * seg0 * ab_ap * t17 + J1 - ap_ap * t15 * t16) + w1 * seg0 * t17 + t15 * t16 * w0;
   }
   f = F * length;
   return f;
@@ -4758,17 +4760,17 @@ std::array<T, 3> segment_inverse_i3_w2_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -4777,7 +4779,7 @@ std::array<T, 3> segment_inverse_i3_w2_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -4786,26 +4788,26 @@ std::array<T, 3> segment_inverse_i3_w2_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(3, 5, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[4] * w0 + M_flat[6] * w2 + M_flat[5] * w1;
     G_ap = t4;
-    G_E = w2 * M_flat[7] + M_flat[6] * w1 + w0 * M_flat[5] - seg0 * t4 * ab_ap;
+    G_E = w2 * M_flat[7] + M_flat[6] * w1 + w0 * M_flat[5] - t4 * ab_ap * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
-    const T t5 = T(1) / r0;
-    const T t6 = t5 * t5;
-    const T t7 = t5 * t6;
-    const T t8 = -ab_ap;
-    const T t9 = J_downward<T>(5, ab_ab, cross_cross, t8, ap_ap, a_minus_b, bp_bp);
+    const T t5 = -ab_ap;
+    const T t6 = J_downward<T>(5, ab_ab, cross_cross, t5, ap_ap, a_minus_b, bp_bp);
+    const T t7 = T(1) / r0;
+    const T t8 = t7 * t7;
+    const T t9 = t7 * t8;
     const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
-    const T t12 = t7 + T(3) * ab_ap * t9 - t10 * t11;
-    const T t13 = t5 * t6 * ab_ap;
+    const T t12 = t9 + T(3) * ab_ap * t6 - t10 * t11;
+    const T t13 = t7 * t8 * ab_ap;
     const T t14 = t10 * a_minus_b * t11;
-    const T t15 = t13 + t14 - T(3) * cross_cross * t9;
-    G_ap = (T(1) / T(3)) * seg0 * t12 * w1 + (T(1) / T(6)) * (T(4) * seg0 * t12 * ab_ap - T(3) * seg0 * t15 - T(6) * ap_ap * t9) * seg0 * w2 + w0 * t9;
-    const T t16 = t5 * t5;
-    const T t17 = t16 * t5;
+    const T t15 = t13 + t14 - T(3) * cross_cross * t6;
+    G_ap = w0 * t6 + (T(1) / T(3)) * t12 * seg0 * w1 + (T(1) / T(6)) * w2 * (T(4) * t12 * ab_ap * seg0 - T(3) * t15 * seg0 - T(6) * ap_ap * t6) * seg0;
+    const T t16 = t7 * t7;
+    const T t17 = t16 * t7;
     const T t18 = t10 * t10;
     const T t19 = t18 * t10;
-    G_E = (T(1) / T(6)) * seg0 * (T(2) * t17 * w0 - T(2) * t19 * seg7 - seg0 * t15 * w1 - T(2) * seg0 * w2 * (T(2) * t10 + seg0 * t15 * ab_ap - T(2) * t5));
+    G_E = (T(1) / T(6)) * (T(2) * t17 * w0 - T(2) * seg7 * t19 - T(2) * (T(2) * t10 + t15 * ab_ap * seg0 - T(2) * t7) * w2 * seg0 - t15 * seg0 * w1) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t20 = T(1) / r0;
@@ -4819,12 +4821,12 @@ std::array<T, 3> segment_inverse_i3_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t28 = t25 * a_minus_b * t27;
     const T t29 = t24 + T(2) * t26 * ab_ab * t23 + t28;
     const T t30 = t22 + t23 * ab_ap * t29 - t25 * t27;
-    G_ap = (T(1) / T(3)) * t30 * seg0 * w1 + (T(1) / T(3)) * t23 * w0 * t29 + (T(1) / T(3)) * seg0 * w2 * (T(3) * t26 * t23 + T(2) * t30 * seg0 * ab_ap - ap_ap * t23 * t29);
+    G_ap = (T(1) / T(3)) * t30 * seg0 * w1 + (T(1) / T(3)) * t23 * w0 * t29 + (T(1) / T(3)) * w2 * (T(3) * t26 * t23 + T(2) * t30 * ab_ap * seg0 - ap_ap * t23 * t29) * seg0;
     const T t31 = t20 * t20;
     const T t32 = t31 * t20;
     const T t33 = t25 * t25;
     const T t34 = t33 * t25;
-    G_E = (T(1) / T(3)) * seg0 * (t32 * w0 + t26 * t23 * w1 - T(2) * seg0 * (t25 - t26 * t23 * ab_ap - t20) * w2 - t34 * seg7);
+    G_E = (T(1) / T(3)) * seg0 * (t32 * w0 + t26 * t23 * w1 - seg7 * t34 - T(2) * (t25 - t26 * t23 * ab_ap - t20) * w2 * seg0);
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
@@ -4911,13 +4913,13 @@ T segment_inverse_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * ab_ap;
-    X = (ab_ap - a_minus_b) * seg1 / (t4 - a_minus_b * r0);
+    X = seg1 * (ab_ap - a_minus_b) / (t4 - a_minus_b * r0);
   }
-  const T J1 = seg2 * asinh(X);
+  const T J1 = asinh(X) * seg2;
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t5 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t5 >= T(0)) {
@@ -4939,16 +4941,16 @@ T segment_inverse_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t15 = -ab_ap;
     const T t16 = J_downward<T>(5, ab_ab, cross_cross, t15, ap_ap, a_minus_b, bp_bp);
     const T t17 = t11 + t14 - T(3) * t16 * cross_cross;
-    const T t18 = T(2) * t9 + ab_ap * t17 * seg0 - T(2) * t12;
-    F = (T(1) / T(2)) * w2 * seg0 * (t17 * ap_ap * seg0 + T(2) * J1 - T(2) * ab_ap * t18 * seg0) - (T(1) / T(2)) * t17 * seg0 * w0 - (T(1) / T(2)) * w1 * t18 * seg0;
+    const T t18 = ab_ap * t17 * seg0 + T(2) * t9 - T(2) * t12;
+    F = -(T(1) / T(2)) * t17 * seg0 * w0 - (T(1) / T(2)) * seg0 * (T(2) * ab_ap * seg0 * t18 - T(2) * J1 - t17 * seg0 * ap_ap) * w2 - (T(1) / T(2)) * w1 * seg0 * t18;
     const T t19 = t9 * t10;
     const T t20 = t19 - t13 * t12 - T(3) * ab_ap * t16;
-    G_ap = w0 * t16 - (T(1) / T(3)) * w1 * seg0 * t20 - (T(1) / T(6)) * (T(3) * t17 * seg0 + T(6) * ap_ap * t16 + T(4) * ab_ap * seg0 * t20) * w2 * seg0;
+    G_ap = w0 * t16 - (T(1) / T(3)) * w1 * seg0 * t20 - (T(1) / T(6)) * (T(6) * ap_ap * t16 + T(3) * t17 * seg0 + T(4) * ab_ap * seg0 * t20) * seg0 * w2;
     const T t21 = t9 * t9;
     const T t22 = t21 * t9;
     const T t23 = t12 * t12;
     const T t24 = t23 * t12;
-    G_E = -(T(1) / T(6)) * (w1 * t17 * seg0 + T(2) * t22 * seg7 + T(2) * t18 * w2 * seg0 - T(2) * t24 * w0) * seg0;
+    G_E = -(T(1) / T(6)) * seg0 * (T(2) * seg0 * w2 * t18 + T(2) * t22 * seg7 + w1 * t17 * seg0 - T(2) * t24 * w0);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t25 = T(1) / cross_cross;
@@ -4956,7 +4958,7 @@ T segment_inverse_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t27 = T(1) / r0;
     const T t28 = t26 * a_minus_b + ab_ap * t27;
     const T t29 = ab_ap * t25 * t28 + t27 - t26;
-    F = w0 * t25 * t28 + w2 * seg0 * (T(2) * ab_ap * seg0 * t29 + J1 - ap_ap * t25 * t28) + w1 * seg0 * t29;
+    F = w0 * t25 * t28 + seg0 * w2 * (T(2) * ab_ap * seg0 * t29 + J1 - ap_ap * t25 * t28) + w1 * seg0 * t29;
     const T t30 = t26 * t26;
     const T t31 = t26 * t30 * a_minus_b;
     const T t32 = t27 * t27;
@@ -4964,12 +4966,12 @@ T segment_inverse_i3_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t34 = t31 + t33 + T(2) * ab_ab * t25 * t28;
     const T t35 = t26 * t30;
     const T t36 = t35 - ab_ap * t34 * t25 - t32 * t27;
-    G_ap = (T(1) / T(3)) * w0 * t34 * t25 - (T(1) / T(3)) * (ap_ap * t34 * t25 + T(2) * ab_ap * seg0 * t36 - T(3) * t25 * t28) * w2 * seg0 - (T(1) / T(3)) * w1 * seg0 * t36;
+    G_ap = (T(1) / T(3)) * w0 * t34 * t25 - (T(1) / T(3)) * (ap_ap * t34 * t25 + T(2) * ab_ap * seg0 * t36 - T(3) * t25 * t28) * seg0 * w2 - (T(1) / T(3)) * w1 * seg0 * t36;
     const T t37 = t27 * t27;
     const T t38 = t37 * t27;
     const T t39 = t26 * t26;
     const T t40 = t39 * t26;
-    G_E = (T(1) / T(3)) * seg0 * (T(2) * w2 * seg0 * t29 + t38 * w0 + w1 * t25 * t28 - t40 * seg7);
+    G_E = (T(1) / T(3)) * seg0 * (T(2) * seg0 * w2 * t29 + t38 * w0 + w1 * t25 * t28 - t40 * seg7);
   }
   f = length * F;
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
@@ -5200,15 +5202,15 @@ T segment_inverse_i3_w3_f(const T* pre, const SegmentPoint<T>& point) {
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / cross_cross;
     const T t3 = a_minus_b * r0;
-    X = seg1 * t2 * (t3 + ab_ap * r1);
+    X = t2 * (t3 + ab_ap * r1) * seg1;
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = a_minus_b * r0;
-    X = seg1 * (a_minus_b - ab_ap) / (t4 - ab_ap * r1);
+    X = (a_minus_b - ab_ap) * seg1 / (t4 - ab_ap * r1);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
-  const T t5 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t6 = -a_minus_b * ab_ap;
   const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t5 >= T(0)) {
@@ -5223,19 +5225,19 @@ T segment_inverse_i3_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t10 = T(1) / r1;
     const T t11 = T(1) / r0;
     const T t12 = t10 - t11 - ab_ap * t9;
-    const T t13 = r0 - J1 * ab_ap - r1;
-    const T t14 = T(2) * seg0 * ab_ap * t12 + t9 * ap_ap - J1;
-    F = w0 * t9 + seg0 * (seg0 * ap_ap * t12 - seg0 * t13 - T(2) * seg0 * ab_ap * t14) * w3 - seg0 * w1 * t12 - seg0 * t14 * w2;
+    const T t13 = (r0 - J1 * ab_ap - r1) * seg0;
+    const T t14 = T(2) * ab_ap * t12 * seg0 + t9 * ap_ap - J1;
+    F = w0 * t9 - w1 * t12 * seg0 - (t13 + T(2) * ab_ap * t14 * seg0 - ap_ap * t12 * seg0) * seg0 * w3 - t14 * w2 * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / cross_cross;
     const T t16 = T(1) / r0;
     const T t17 = T(1) / r1;
     const T t18 = t16 * ab_ap + a_minus_b * t17;
-    const T t19 = r0 - J1 * ab_ap - r1;
-    const T t20 = t17 - t16 - t15 * t18 * ab_ap;
-    const T t21 = T(2) * t20 * seg0 * ab_ap + t15 * t18 * ap_ap - J1;
-    F = w0 * t15 * t18 - (seg0 * t19 + T(2) * seg0 * ab_ap * t21 - t20 * seg0 * ap_ap) * seg0 * w3 - seg0 * w2 * t21 - t20 * seg0 * w1;
+    const T t19 = t17 - t16 - t15 * t18 * ab_ap;
+    const T t20 = J1 - T(2) * t19 * ab_ap * seg0 - t15 * t18 * ap_ap;
+    const T t21 = (r0 - J1 * ab_ap - r1) * seg0;
+    F = w0 * t15 * t18 + t20 * w2 * seg0 - t19 * w1 * seg0 - (t21 - T(2) * t20 * ab_ap * seg0 - t19 * ap_ap * seg0) * seg0 * w3;
   }
   f = length * F;
   return f;
@@ -5303,7 +5305,7 @@ std::array<T, 3> segment_inverse_i3_w3_grad(const T* pre, const SegmentPoint<T>&
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
     foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
-    foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
+    foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
   const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
@@ -5316,16 +5318,16 @@ std::array<T, 3> segment_inverse_i3_w3_grad(const T* pre, const SegmentPoint<T>&
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / cross_cross;
     const T t3 = ab_ap * r1;
-    X = t2 * (t3 + a_minus_b * r0) * seg1;
+    X = t2 * seg1 * (t3 + a_minus_b * r0);
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = ab_ap * r1;
     X = (ab_ap - a_minus_b) * seg1 / (t4 - a_minus_b * r0);
   }
-  const T J1 = seg2 * asinh(X);
+  const T J1 = asinh(X) * seg2;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t5 >= T(0)) {
@@ -5334,45 +5336,45 @@ std::array<T, 3> segment_inverse_i3_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(3, 5, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t8 = M_flat[8] * w3 + M_flat[6] * w1 + M_flat[5] * w0 + w2 * M_flat[7];
     G_ap = t8;
-    G_E = M_flat[9] * w3 + M_flat[6] * w0 + M_flat[7] * w1 + M_flat[8] * w2 - ab_ap * t8 * seg0;
+    G_E = M_flat[9] * w3 + M_flat[6] * w0 + M_flat[7] * w1 + M_flat[8] * w2 - ab_ap * seg0 * t8;
   } else if (t6 >= T(0) && t7 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_5 = J_downward(…)
-    const T t9 = T(1) / r0;
-    const T t10 = t9 * t9;
-    const T t11 = t10 * t9;
-    const T t12 = -ab_ap;
-    const T t13 = J_downward<T>(5, ab_ab, cross_cross, t12, ap_ap, a_minus_b, bp_bp);
-    const T t14 = T(1) / r1;
-    const T t15 = t14 * t14;
-    const T t16 = t11 + T(3) * ab_ap * t13 - t15 * t14;
-    const T t17 = T(3) * cross_cross * t13 - a_minus_b * t15 * t14 - ab_ap * t10 * t9;
-    const T t18 = T(3) * seg0 * t17 + T(4) * ab_ap * seg0 * t16 - T(6) * t13 * ap_ap;
-    const T t19 = T(2) * t9 + ab_ap * seg0 * t17 - T(2) * t14;
-    G_ap = (T(1) / T(3)) * seg0 * t16 * w1 + t13 * w0 + (T(1) / T(6)) * w2 * t18 * seg0 + (T(1) / T(6)) * seg0 * w3 * (T(2) * ab_ap * t18 * seg0 + T(3) * t19 * seg0 - T(2) * ap_ap * seg0 * t16);
-    const T t20 = t14 * t14;
-    const T t21 = t20 * t14;
-    const T t22 = t9 * t9;
-    const T t23 = t22 * t9;
-    G_E = -(T(1) / T(6)) * (T(2) * t21 * seg7 - T(2) * w2 * t19 * seg0 - T(3) * (T(2) * J1 + T(2) * ab_ap * t19 * seg0 - ap_ap * seg0 * t17) * seg0 * w3 - T(2) * t23 * w0 - seg0 * t17 * w1) * seg0;
+    const T t9 = -ab_ap;
+    const T t10 = J_downward<T>(5, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
+    const T t11 = T(1) / r0;
+    const T t12 = T(1) / r1;
+    const T t13 = t12 * t12;
+    const T t14 = t11 * t11;
+    const T t15 = T(3) * cross_cross * t10 - a_minus_b * t13 * t12 - ab_ap * t14 * t11;
+    const T t16 = T(2) * t11 + ab_ap * seg0 * t15 - T(2) * t12;
+    const T t17 = t14 * t11;
+    const T t18 = t17 + T(3) * ab_ap * t10 - t13 * t12;
+    const T t19 = T(4) * ab_ap * seg0 * t18 + T(3) * seg0 * t15 - T(6) * t10 * ap_ap;
+    G_ap = t10 * w0 + (T(1) / T(6)) * seg0 * (T(3) * t16 * seg0 + T(2) * ab_ap * seg0 * t19 - T(2) * seg0 * ap_ap * t18) * w3 + (T(1) / T(3)) * seg0 * t18 * w1 + (T(1) / T(6)) * seg0 * w2 * t19;
+    const T t20 = t12 * t12;
+    const T t21 = t20 * t12;
+    const T t22 = t11 * t11;
+    const T t23 = t22 * t11;
+    G_E = -(T(1) / T(6)) * seg0 * (T(3) * seg0 * w3 * (seg0 * ap_ap * t15 - T(2) * J1 - T(2) * ab_ap * t16 * seg0) + T(2) * seg7 * t21 - T(2) * t16 * seg0 * w2 - seg0 * t15 * w1 - T(2) * t23 * w0);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t24 = T(1) / cross_cross;
-    const T t25 = T(1) / r0;
-    const T t26 = T(1) / r1;
-    const T t27 = ab_ap * t25 + a_minus_b * t26;
-    const T t28 = t26 * t26;
-    const T t29 = t25 * t25;
-    const T t30 = T(2) * t24 * t27 * ab_ab + a_minus_b * t28 * t26 + ab_ap * t29 * t25;
-    const T t31 = t24 * ab_ap * t27 + t25 - t26;
-    const T t32 = t29 * t25;
-    const T t33 = t32 + t24 * ab_ap * t30 - t28 * t26;
-    const T t34 = t24 * ap_ap * t30 - T(2) * ab_ap * t33 * seg0 - T(3) * t24 * t27;
-    G_ap = (T(1) / T(3)) * t24 * t30 * w0 + (T(1) / T(3)) * (T(3) * t31 * seg0 - t33 * ap_ap * seg0 - T(2) * ab_ap * t34 * seg0) * seg0 * w3 + (T(1) / T(3)) * t33 * seg0 * w1 - (T(1) / T(3)) * w2 * t34 * seg0;
-    const T t35 = t26 * t26;
-    const T t36 = t35 * t26;
-    const T t37 = t25 * t25;
-    const T t38 = t37 * t25;
-    G_E = -(T(1) / T(3)) * (t36 * seg7 - t24 * t27 * w1 - T(2) * t31 * w2 * seg0 - T(3) * (J1 + T(2) * ab_ap * t31 * seg0 - t24 * ap_ap * t27) * seg0 * w3 - t38 * w0) * seg0;
+    const T t24 = T(1) / r0;
+    const T t25 = t24 * t24;
+    const T t26 = t25 * t24;
+    const T t27 = T(1) / cross_cross;
+    const T t28 = T(1) / r1;
+    const T t29 = ab_ap * t24 + a_minus_b * t28;
+    const T t30 = t28 * t28;
+    const T t31 = T(2) * t27 * t29 * ab_ab + a_minus_b * t30 * t28 + ab_ap * t25 * t24;
+    const T t32 = t26 + t27 * ab_ap * t31 - t30 * t28;
+    const T t33 = T(2) * ab_ap * t32 * seg0 + T(3) * t27 * t29 - t27 * ap_ap * t31;
+    const T t34 = t27 * ab_ap * t29 + t24 - t28;
+    G_ap = (T(1) / T(3)) * t32 * seg0 * w1 + (T(1) / T(3)) * seg0 * w2 * t33 + (T(1) / T(3)) * t27 * t31 * w0 - (T(1) / T(3)) * seg0 * (t32 * seg0 * ap_ap - T(3) * seg0 * t34 - T(2) * ab_ap * seg0 * t33) * w3;
+    const T t35 = t24 * t24;
+    const T t36 = t35 * t24;
+    const T t37 = t28 * t28;
+    const T t38 = t37 * t28;
+    G_E = (T(1) / T(3)) * seg0 * (T(3) * (J1 + T(2) * ab_ap * seg0 * t34 - t27 * ap_ap * t29) * seg0 * w3 + t27 * t29 * w1 + T(2) * seg0 * t34 * w2 + t36 * w0 - seg7 * t38);
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
@@ -5441,7 +5443,7 @@ T segment_inverse_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -(ab1 * exact_cross[2] - ab2 * exact_cross[1]) * seg0;
+    foot0 = -seg0 * (ab1 * exact_cross[2] - ab2 * exact_cross[1]);
     foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
@@ -5456,17 +5458,17 @@ T segment_inverse_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     // P projects onto [A,B]: X = √a((a−b)r0 + b r1)/D
     const T t2 = T(1) / cross_cross;
     const T t3 = r1 * ab_ap;
-    X = seg1 * t2 * (t3 + a_minus_b * r0);
+    X = t2 * (t3 + a_minus_b * r0) * seg1;
   } else {
     // P projects beyond an end: X = √a(a−2b)/((a−b)r0 − b r1)
     const T t4 = r1 * ab_ap;
-    X = seg1 * (ab_ap - a_minus_b) / (t4 - a_minus_b * r0);
+    X = (ab_ap - a_minus_b) * seg1 / (t4 - a_minus_b * r0);
   }
-  const T J1 = asinh(X) * seg2;
+  const T J1 = seg2 * asinh(X);
   T F;
   T G_ap;
   T G_E;
-  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t5 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t6 = -ab_ap * a_minus_b;
   const T t7 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t5 >= T(0)) {
@@ -5486,19 +5488,19 @@ T segment_inverse_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t13 = T(1) / r1;
     const T t14 = t13 * t13;
     const T t15 = T(3) * t10 * cross_cross - ab_ap * t12 * t11 - t13 * t14 * a_minus_b;
-    const T t16 = ab_ap * t15 * seg0 + T(2) * t11 - T(2) * t13;
-    const T t17 = T(2) * ab_ap * t16 * seg0 + T(2) * J1 - ap_ap * t15 * seg0;
+    const T t16 = ab_ap * seg0 * t15 + T(2) * t11 - T(2) * t13;
+    const T t17 = T(2) * ab_ap * seg0 * t16 + T(2) * J1 - seg0 * ap_ap * t15;
     const T t18 = r1 + ab_ap * J1 - r0;
-    F = (T(1) / T(2)) * t15 * seg0 * w0 + (T(1) / T(2)) * w2 * t17 * seg0 + (T(1) / T(2)) * w1 * t16 * seg0 - (T(1) / T(2)) * (ap_ap * t16 * seg0 - T(2) * seg0 * t18 - T(2) * ab_ap * t17 * seg0) * w3 * seg0;
+    F = (T(1) / T(2)) * w1 * seg0 * t16 + (T(1) / T(2)) * seg0 * t15 * w0 + (T(1) / T(2)) * t17 * seg0 * w2 - (T(1) / T(2)) * seg0 * (seg0 * ap_ap * t16 - T(2) * t17 * ab_ap * seg0 - T(2) * seg0 * t18) * w3;
     const T t19 = t12 * t11;
     const T t20 = t19 + T(3) * t10 * ab_ap - t13 * t14;
-    const T t21 = T(4) * t20 * ab_ap * seg0 + T(3) * t15 * seg0 - T(6) * t10 * ap_ap;
-    G_ap = t10 * w0 + (T(1) / T(6)) * (T(2) * ab_ap * t21 * seg0 + T(3) * t16 * seg0 - T(2) * t20 * ap_ap * seg0) * w3 * seg0 + (T(1) / T(3)) * t20 * w1 * seg0 + (T(1) / T(6)) * w2 * t21 * seg0;
+    const T t21 = T(3) * seg0 * t15 + T(4) * t20 * ab_ap * seg0 - T(6) * t10 * ap_ap;
+    G_ap = t10 * w0 + (T(1) / T(3)) * t20 * w1 * seg0 + (T(1) / T(6)) * seg0 * w2 * t21 + (T(1) / T(6)) * seg0 * w3 * (T(2) * ab_ap * seg0 * t21 + T(3) * seg0 * t16 - T(2) * t20 * seg0 * ap_ap);
     const T t22 = t11 * t11;
     const T t23 = t22 * t11;
     const T t24 = t13 * t13;
     const T t25 = t24 * t13;
-    G_E = (T(1) / T(6)) * (T(2) * w2 * t16 * seg0 + T(2) * t23 * w0 + w1 * t15 * seg0 + T(3) * t17 * w3 * seg0 - T(2) * seg7 * t25) * seg0;
+    G_E = (T(1) / T(6)) * (w1 * seg0 * t15 + T(2) * t23 * w0 + T(3) * t17 * seg0 * w3 + T(2) * seg0 * w2 * t16 - T(2) * t25 * seg7) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t26 = T(1) / cross_cross;
@@ -5506,21 +5508,21 @@ T segment_inverse_i3_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t28 = T(1) / r0;
     const T t29 = t27 * a_minus_b + ab_ap * t28;
     const T t30 = t26 * t29 * ab_ap + t28 - t27;
-    const T t31 = J1 + T(2) * ab_ap * t30 * seg0 - t26 * t29 * ap_ap;
+    const T t31 = T(2) * ab_ap * t30 * seg0 + J1 - t26 * t29 * ap_ap;
     const T t32 = r1 + ab_ap * J1 - r0;
-    F = t31 * w2 * seg0 + t26 * t29 * w0 + w1 * t30 * seg0 - (t30 * ap_ap * seg0 - seg0 * t32 - T(2) * ab_ap * t31 * seg0) * w3 * seg0;
+    F = w1 * t30 * seg0 + t26 * t29 * w0 + t31 * seg0 * w2 - (t30 * seg0 * ap_ap - T(2) * t31 * ab_ap * seg0 - seg0 * t32) * seg0 * w3;
     const T t33 = t28 * t28;
     const T t34 = t27 * t27;
     const T t35 = T(2) * ab_ab * t26 * t29 + ab_ap * t33 * t28 + t27 * t34 * a_minus_b;
     const T t36 = t33 * t28;
     const T t37 = t26 * ab_ap * t35 + t36 - t27 * t34;
-    const T t38 = T(2) * ab_ap * t37 * seg0 + T(3) * t26 * t29 - t26 * ap_ap * t35;
-    G_ap = (T(1) / T(3)) * w1 * t37 * seg0 + (T(1) / T(3)) * t38 * w2 * seg0 + (T(1) / T(3)) * t26 * w0 * t35 + (T(1) / T(3)) * w3 * seg0 * (T(3) * t30 * seg0 + T(2) * t38 * ab_ap * seg0 - t37 * ap_ap * seg0);
+    const T t38 = T(2) * ab_ap * seg0 * t37 + T(3) * t26 * t29 - t26 * ap_ap * t35;
+    G_ap = (T(1) / T(3)) * seg0 * w2 * t38 + (T(1) / T(3)) * w1 * seg0 * t37 + (T(1) / T(3)) * t26 * w0 * t35 - (T(1) / T(3)) * (seg0 * t37 * ap_ap - T(2) * ab_ap * seg0 * t38 - T(3) * t30 * seg0) * seg0 * w3;
     const T t39 = t28 * t28;
     const T t40 = t39 * t28;
     const T t41 = t27 * t27;
     const T t42 = t41 * t27;
-    G_E = (T(1) / T(3)) * (T(3) * t31 * w3 * seg0 + t40 * w0 + T(2) * t30 * w2 * seg0 + t26 * w1 * t29 - seg7 * t42) * seg0;
+    G_E = (T(1) / T(3)) * seg0 * (T(3) * t31 * seg0 * w3 + t40 * w0 + T(2) * t30 * seg0 * w2 + t26 * w1 * t29 - t42 * seg7);
   }
   f = length * F;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -5733,7 +5735,7 @@ T segment_inverse_i4_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp2 * ap2 + bp1 * ap1 + bp0 * ap0;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -5804,15 +5806,15 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
     foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
@@ -5822,7 +5824,7 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -5830,7 +5832,7 @@ std::array<T, 3> segment_inverse_i4_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(4, 6, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - M_flat[2] * w0 * ab_ap * seg0;
+    G_E = w0 * M_flat[3] - M_flat[2] * w0 * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -5909,17 +5911,17 @@ T segment_inverse_i4_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(ab1 * exact_cross[2] - ab2 * exact_cross[1]) * seg0;
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + ab2 * bp2 + ab1 * bp1;
@@ -5928,7 +5930,7 @@ T segment_inverse_i4_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -5937,7 +5939,7 @@ T segment_inverse_i4_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(4, 6, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = w0 * M_flat[0];
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * M_flat[2] * seg0 * ab_ap;
+    G_E = w0 * M_flat[3] - w0 * M_flat[2] * ab_ap * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -5948,7 +5950,7 @@ T segment_inverse_i4_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t5 = t4 * t4;
     const T t6 = T(1) / ap_ap;
     const T t7 = t6 * t6;
-    const T t8 = -(T(1) / T(4)) * seg0 * (w0 * t5 - w0 * t7);
+    const T t8 = -(T(1) / T(4)) * (w0 * t5 - w0 * t7) * seg0;
     G_E = t8;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -5963,7 +5965,7 @@ T segment_inverse_i4_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t15 = t12 * t12;
     const T t16 = t13 * t13;
     G_ap = (T(1) / T(8)) * w0 * t11 * (T(3) * ab_ab * t11 * t14 + T(2) * t15 * a_minus_b + T(2) * ab_ap * t16);
-    const T t17 = -(T(1) / T(4)) * seg0 * (w0 * t15 - w0 * t16);
+    const T t17 = -(T(1) / T(4)) * (w0 * t15 - w0 * t16) * seg0;
     G_E = t17;
   }
   f = length * F;
@@ -6157,7 +6159,7 @@ T segment_inverse_i4_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -6233,16 +6235,16 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
@@ -6266,11 +6268,11 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(4, 6, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = w1 * M_beyond[4] + M_beyond[3] * w0;
-    const T t5 = T(1) / bp_bp;
+    const T t5 = T(1) / ap_ap;
     const T t6 = t5 * t5;
-    const T t7 = T(1) / ap_ap;
+    const T t7 = T(1) / bp_bp;
     const T t8 = t7 * t7;
-    G_E = -(T(1) / T(4)) * seg0 * (seg5 * t6 - M_beyond[0] * w1 - t8 * w0);
+    G_E = (T(1) / T(4)) * (M_beyond[0] * w1 + t6 * w0 - seg5 * t8) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t9 = sqrt(cross_cross);
@@ -6283,8 +6285,8 @@ std::array<T, 3> segment_inverse_i4_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t15 = t14 * t14;
     const T t16 = ab_ab * J2 + t14 * ab_ap + a_minus_b * t12;
     const T t17 = T(2) * a_minus_b * t13 + T(2) * t15 * ab_ap + T(3) * ab_ab * t11 * t16;
-    G_ap = (T(1) / T(8)) * t11 * t17 * w0 - (T(1) / T(8)) * seg0 * w1 * (T(2) * t13 - T(2) * t15 - t11 * ab_ap * t17);
-    G_E = -(T(1) / T(8)) * seg0 * (T(2) * seg5 * t13 - w1 * t11 * t16 - T(2) * t15 * w0);
+    G_ap = (T(1) / T(8)) * t11 * t17 * w0 - (T(1) / T(8)) * w1 * (T(2) * t13 - T(2) * t15 - t11 * ab_ap * t17) * seg0;
+    G_E = (T(1) / T(8)) * seg0 * (w1 * t11 * t16 + T(2) * t15 * w0 - T(2) * seg5 * t13);
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = (foot1 * G_ap - G_E * ab1) * g_factor;
@@ -6350,8 +6352,8 @@ T segment_inverse_i4_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
-    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
+    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -6360,7 +6362,7 @@ T segment_inverse_i4_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -6377,11 +6379,11 @@ T segment_inverse_i4_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_beyond_end<T>(4, 6, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = w0 * M_beyond[0] + w1 * M_beyond[1];
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / bp_bp;
+    const T t5 = T(1) / ap_ap;
     const T t6 = t5 * t5;
-    const T t7 = T(1) / ap_ap;
+    const T t7 = T(1) / bp_bp;
     const T t8 = t7 * t7;
-    G_E = -(T(1) / T(4)) * (seg5 * t6 - w0 * t8 - w1 * M_beyond[0]) * seg0;
+    G_E = (T(1) / T(4)) * seg0 * (w0 * t6 + w1 * M_beyond[0] - seg5 * t8);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t9 = sqrt(cross_cross);
@@ -6391,12 +6393,12 @@ T segment_inverse_i4_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t12 = T(1) / ap_ap;
     const T t13 = a_minus_b * t11 + J2 * ab_ab + t12 * ab_ap;
     const T t14 = T(1) / cross_cross;
-    F = (T(1) / T(2)) * w0 * t13 * t14 + (T(1) / T(2)) * (t13 * t14 * ab_ap + t12 - t11) * w1 * seg0;
+    F = (T(1) / T(2)) * (t13 * t14 * ab_ap + t12 - t11) * seg0 * w1 + (T(1) / T(2)) * w0 * t13 * t14;
     const T t15 = t12 * t12;
     const T t16 = t11 * t11;
     const T t17 = T(2) * t15 * ab_ap + T(3) * t13 * ab_ab * t14 + T(2) * a_minus_b * t16;
-    G_ap = (T(1) / T(8)) * w1 * seg0 * (T(2) * t15 + t17 * t14 * ab_ap - T(2) * t16) + (T(1) / T(8)) * w0 * t17 * t14;
-    G_E = -(T(1) / T(8)) * (T(2) * seg5 * t16 - T(2) * w0 * t15 - w1 * t13 * t14) * seg0;
+    G_ap = (T(1) / T(8)) * seg0 * w1 * (T(2) * t15 + t17 * t14 * ab_ap - T(2) * t16) + (T(1) / T(8)) * w0 * t17 * t14;
+    G_E = (T(1) / T(8)) * seg0 * (T(2) * w0 * t15 + w1 * t13 * t14 - T(2) * seg5 * t16);
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -6593,7 +6595,7 @@ T segment_inverse_i4_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp2 * ap2 + bp0 * ap0 + bp1 * ap1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -6616,7 +6618,7 @@ T segment_inverse_i4_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t8 = T(1) / ap_ap;
     const T t9 = J2 * ab_ab + a_minus_b * t7 + t8 * ab_ap;
     const T t10 = t7 - t8 - t6 * ab_ap * t9;
-    F = (T(1) / T(2)) * t6 * w0 * t9 - (T(1) / T(2)) * seg0 * w1 * t10 - (T(1) / T(2)) * seg0 * w2 * (ap_ap * t6 * t9 + T(2) * seg0 * ab_ap * t10 - T(2) * J2);
+    F = (T(1) / T(2)) * t6 * w0 * t9 - (T(1) / T(2)) * w2 * (ap_ap * t6 * t9 + T(2) * ab_ap * seg0 * t10 - T(2) * J2) * seg0 - (T(1) / T(2)) * seg0 * w1 * t10;
   }
   f = F * length;
   return f;
@@ -6673,7 +6675,7 @@ std::array<T, 3> segment_inverse_i4_w2_grad(const T* pre, const SegmentPoint<T>&
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -6689,7 +6691,7 @@ std::array<T, 3> segment_inverse_i4_w2_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -6709,23 +6711,23 @@ std::array<T, 3> segment_inverse_i4_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = t9 * t9;
     const T t11 = T(4) * ab_ap * t6 + t8 - t10;
     const T t12 = t8 * ab_ap + a_minus_b * t10 - T(4) * cross_cross * t6;
-    G_ap = (T(1) / T(4)) * seg0 * t11 * w1 + w0 * t6 - (T(1) / T(6)) * w2 * (T(2) * seg0 * t12 + T(6) * ap_ap * t6 - T(3) * seg0 * t11 * ab_ap) * seg0;
-    G_E = -(T(1) / T(12)) * (w2 * (T(3) * t9 + T(2) * seg0 * ab_ap * t12 - T(3) * t7) * seg0 + seg0 * t12 * w1 + T(3) * t10 * seg5 - T(3) * t8 * w0) * seg0;
+    G_ap = (T(1) / T(4)) * seg0 * t11 * w1 + (T(1) / T(6)) * seg0 * w2 * (T(3) * seg0 * t11 * ab_ap - T(2) * seg0 * t12 - T(6) * ap_ap * t6) + w0 * t6;
+    G_E = (T(1) / T(12)) * seg0 * (T(3) * t8 * w0 - seg0 * w2 * (T(3) * t9 + T(2) * seg0 * ab_ap * t12 - T(3) * t7) - seg0 * t12 * w1 - T(3) * seg5 * t10);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
     const T t14 = T(1) / t13;
     const T J2 = atan2(t13, ap_bp) * t14;
-    const T t15 = T(1) / cross_cross;
-    const T t16 = T(1) / ap_ap;
-    const T t17 = t16 * t16;
+    const T t15 = T(1) / ap_ap;
+    const T t16 = t15 * t15;
+    const T t17 = T(1) / cross_cross;
     const T t18 = T(1) / bp_bp;
     const T t19 = t18 * t18;
-    const T t20 = ab_ab * J2 + t16 * ab_ap + a_minus_b * t18;
-    const T t21 = T(2) * t17 * ab_ap + T(2) * a_minus_b * t19 + T(3) * ab_ab * t20 * t15;
-    const T t22 = T(2) * t17 + t15 * ab_ap * t21 - T(2) * t19;
-    G_ap = (T(1) / T(8)) * t15 * w0 * t21 + (T(1) / T(8)) * t22 * seg0 * w1 - (T(1) / T(8)) * (ap_ap * t15 * t21 - T(2) * t22 * seg0 * ab_ap - T(4) * t20 * t15) * w2 * seg0;
-    G_E = (T(1) / T(8)) * (T(2) * t17 * w0 + t20 * t15 * w1 - T(2) * t19 * seg5 - T(2) * w2 * seg0 * (t18 - t20 * t15 * ab_ap - t16)) * seg0;
+    const T t20 = ab_ab * J2 + t15 * ab_ap + a_minus_b * t18;
+    const T t21 = T(2) * t16 * ab_ap + T(2) * a_minus_b * t19 + T(3) * ab_ab * t20 * t17;
+    const T t22 = T(2) * t16 + t17 * ab_ap * t21 - T(2) * t19;
+    G_ap = (T(1) / T(8)) * seg0 * t22 * w1 + (T(1) / T(8)) * t17 * w0 * t21 - (T(1) / T(8)) * seg0 * (ap_ap * t17 * t21 - T(4) * t20 * t17 - T(2) * seg0 * t22 * ab_ap) * w2;
+    G_E = (T(1) / T(8)) * seg0 * (T(2) * t16 * w0 + t20 * t17 * w1 - T(2) * seg0 * w2 * (t18 - t20 * t17 * ab_ap - t15) - T(2) * seg5 * t19);
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -6783,9 +6785,9 @@ T segment_inverse_i4_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -6802,7 +6804,7 @@ T segment_inverse_i4_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -6812,7 +6814,7 @@ T segment_inverse_i4_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w2 * M_flat[2] + w1 * M_flat[1] + w0 * M_flat[0];
     const T t4 = w1 * M_flat[5] + w2 * M_flat[6] + M_flat[4] * w0;
     G_ap = t4;
-    G_E = M_flat[5] * w0 + M_flat[7] * w2 + w1 * M_flat[6] - t4 * seg0 * ab_ap;
+    G_E = M_flat[5] * w0 + M_flat[7] * w2 + w1 * M_flat[6] - seg0 * t4 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
     const T t5 = T(1) / ap_ap;
@@ -6822,11 +6824,11 @@ T segment_inverse_i4_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t9 = -ab_ap;
     const T t10 = J_downward<T>(6, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
     const T t11 = t7 * a_minus_b + t8 * ab_ap - T(4) * t10 * cross_cross;
-    const T t12 = T(3) * t5 - T(2) * t11 * seg0 * ab_ap - T(3) * t6;
-    F = (T(1) / T(6)) * w1 * t12 * seg0 + (T(1) / T(3)) * w2 * (t12 * seg0 * ab_ap + ap_ap * t11 * seg0 - (T(3) * t5 * ab_ap + T(2) * t11 * cross_cross * seg0 + T(3) * t6 * a_minus_b) * seg0) * seg0 - (T(1) / T(3)) * t11 * w0 * seg0;
+    const T t12 = T(3) * t5 - T(3) * t6 - T(2) * seg0 * t11 * ab_ap;
+    F = (T(1) / T(6)) * w1 * seg0 * t12 + (T(1) / T(3)) * w2 * seg0 * (ap_ap * seg0 * t11 + seg0 * t12 * ab_ap - (T(3) * t5 * ab_ap + T(2) * seg0 * t11 * cross_cross + T(3) * t6 * a_minus_b) * seg0) - (T(1) / T(3)) * seg0 * t11 * w0;
     const T t13 = t7 - T(4) * t10 * ab_ap - t8;
-    G_ap = t10 * w0 - (T(1) / T(4)) * w1 * t13 * seg0 - (T(1) / T(6)) * w2 * (T(3) * t13 * seg0 * ab_ap + T(6) * ap_ap * t10 + T(2) * t11 * seg0) * seg0;
-    G_E = -(T(1) / T(12)) * (T(3) * t7 * seg5 + w1 * t11 * seg0 - T(3) * t8 * w0 - w2 * t12 * seg0) * seg0;
+    G_ap = t10 * w0 - (T(1) / T(6)) * w2 * seg0 * (T(2) * seg0 * t11 + T(3) * seg0 * t13 * ab_ap + T(6) * ap_ap * t10) - (T(1) / T(4)) * w1 * seg0 * t13;
+    G_E = -(T(1) / T(12)) * (T(3) * t7 * seg5 + w1 * seg0 * t11 - T(3) * t8 * w0 - w2 * seg0 * t12) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t14 = sqrt(cross_cross);
@@ -6837,12 +6839,12 @@ T segment_inverse_i4_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t18 = t16 * ab_ap + J2 * ab_ab + t17 * a_minus_b;
     const T t19 = T(1) / cross_cross;
     const T t20 = t16 + t18 * t19 * ab_ap - t17;
-    F = (T(1) / T(2)) * w2 * (T(2) * J2 + T(2) * t20 * seg0 * ab_ap - ap_ap * t18 * t19) * seg0 + (T(1) / T(2)) * t18 * t19 * w0 + (T(1) / T(2)) * t20 * w1 * seg0;
+    F = (T(1) / T(2)) * w2 * seg0 * (T(2) * J2 + T(2) * t20 * seg0 * ab_ap - ap_ap * t18 * t19) + (T(1) / T(2)) * t20 * w1 * seg0 + (T(1) / T(2)) * t18 * t19 * w0;
     const T t21 = t17 * t17;
     const T t22 = t16 * t16;
     const T t23 = T(2) * t21 * a_minus_b + T(3) * ab_ab * t18 * t19 + T(2) * t22 * ab_ap;
     const T t24 = t23 * t19 * ab_ap + T(2) * t22 - T(2) * t21;
-    G_ap = (T(1) / T(8)) * t24 * w1 * seg0 + (T(1) / T(8)) * t23 * t19 * w0 + (T(1) / T(8)) * (T(2) * t24 * seg0 * ab_ap + T(4) * t18 * t19 - t23 * ap_ap * t19) * w2 * seg0;
+    G_ap = (T(1) / T(8)) * t23 * t19 * w0 + (T(1) / T(8)) * t24 * w1 * seg0 - (T(1) / T(8)) * w2 * seg0 * (t23 * ap_ap * t19 - T(4) * t18 * t19 - T(2) * t24 * seg0 * ab_ap);
     G_E = -(T(1) / T(8)) * (T(2) * t21 * seg5 - T(2) * t20 * w2 * seg0 - w1 * t18 * t19 - T(2) * t22 * w0) * seg0;
   }
   f = F * length;
@@ -7044,7 +7046,7 @@ T segment_inverse_i4_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -7056,15 +7058,15 @@ T segment_inverse_i4_w3_f(const T* pre, const SegmentPoint<T>& point) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_4 = J_downward(…)
     const T t4 = T(1) / ap_ap;
     const T log_ratio = log(bp_bp * t4);
-    const T t5 = -ab_ap;
-    const T t6 = J_downward<T>(4, ab_ab, cross_cross, t5, ap_ap, a_minus_b, bp_bp);
-    const T t7 = T(1) / bp_bp;
-    const T t8 = t7 - T(2) * ab_ap * t6 - t4;
-    const T t9 = a_minus_b * t7;
+    const T t5 = T(1) / bp_bp;
+    const T t6 = -ab_ap;
+    const T t7 = J_downward<T>(4, ab_ab, cross_cross, t6, ap_ap, a_minus_b, bp_bp);
+    const T t8 = t5 - T(2) * ab_ap * t7 - t4;
+    const T t9 = a_minus_b * t5;
     const T t10 = ab_ap * t4;
-    const T t11 = t9 + t10 - T(2) * cross_cross * t6;
-    const T t12 = t6 * ap_ap + seg0 * t11 + ab_ap * t8 * seg0;
-    F = t6 * w0 - (T(1) / T(2)) * w1 * t8 * seg0 - t12 * seg0 * w2 - (T(1) / T(2)) * seg0 * (T(4) * ab_ap * t12 * seg0 - seg0 * (log_ratio - T(2) * ab_ap * seg0 * t11) - t8 * seg0 * ap_ap) * w3;
+    const T t11 = t9 + t10 - T(2) * cross_cross * t7;
+    const T t12 = seg0 * ab_ap * t8 + t7 * ap_ap + seg0 * t11;
+    F = (T(1) / T(2)) * seg0 * (seg0 * t8 * ap_ap + seg0 * (log_ratio - T(2) * seg0 * ab_ap * t11) - T(4) * t12 * seg0 * ab_ap) * w3 + t7 * w0 - t12 * seg0 * w2 - (T(1) / T(2)) * seg0 * w1 * t8;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -7078,8 +7080,8 @@ T segment_inverse_i4_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t19 = ab_ap * t15;
     const T t20 = ab_ab * J2 + t18 + t19;
     const T t21 = t16 - t17 * ab_ap * t20 - t15;
-    const T t22 = T(2) * J2 - T(2) * ab_ap * seg0 * t21 - t17 * t20 * ap_ap;
-    F = (T(1) / T(2)) * (seg0 * (log_ratio + T(2) * J2 * ab_ap) + seg0 * t21 * ap_ap + T(2) * t22 * ab_ap * seg0) * seg0 * w3 + (T(1) / T(2)) * t17 * t20 * w0 + (T(1) / T(2)) * t22 * seg0 * w2 - (T(1) / T(2)) * w1 * seg0 * t21;
+    const T t22 = T(2) * J2 - T(2) * seg0 * ab_ap * t21 - t17 * t20 * ap_ap;
+    F = (T(1) / T(2)) * t22 * seg0 * w2 + (T(1) / T(2)) * seg0 * (seg0 * (log_ratio + T(2) * J2 * ab_ap) + seg0 * t21 * ap_ap + T(2) * t22 * seg0 * ab_ap) * w3 + (T(1) / T(2)) * t17 * t20 * w0 - (T(1) / T(2)) * seg0 * w1 * t21;
   }
   f = length * F;
   return f;
@@ -7137,7 +7139,7 @@ std::array<T, 3> segment_inverse_i4_w3_grad(const T* pre, const SegmentPoint<T>&
     cross_cross = plain_cross_cross;
     foot0 = ap0 - ab_ap * seg0 * ab0;
     foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * ab2 * seg0;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -7153,7 +7155,7 @@ std::array<T, 3> segment_inverse_i4_w3_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -7173,27 +7175,27 @@ std::array<T, 3> segment_inverse_i4_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = t9 * t9;
     const T t11 = t6 - T(4) * ab_ap * t8 - t10;
     const T t12 = t6 * a_minus_b + ab_ap * t10 - T(4) * t8 * cross_cross;
-    const T t13 = T(3) * ab_ap * t11 * seg0 + T(2) * t12 * seg0 + T(6) * ap_ap * t8;
-    const T t14 = T(2) * ab_ap * t12 * seg0 + T(3) * t5 - T(3) * t9;
-    G_ap = (T(1) / T(12)) * w3 * seg0 * (T(3) * ap_ap * t11 * seg0 - T(4) * ab_ap * seg0 * t13 - T(2) * seg0 * t14) + w0 * t8 - (T(1) / T(4)) * t11 * seg0 * w1 - (T(1) / T(6)) * w2 * seg0 * t13;
-    G_E = -(T(1) / T(12)) * (t12 * seg0 * w1 + T(3) * w3 * seg0 * ((T(2) * t12 * seg0 * cross_cross + T(3) * ab_ap * t9 + T(3) * t5 * a_minus_b) * seg0 + ab_ap * seg0 * t14 - ap_ap * t12 * seg0) + T(3) * t6 * seg5 + w2 * seg0 * t14 - T(3) * t10 * w0) * seg0;
+    const T t13 = T(2) * ab_ap * seg0 * t12 + T(3) * t5 - T(3) * t9;
+    const T t14 = T(3) * ab_ap * seg0 * t11 + T(2) * seg0 * t12 + T(6) * ap_ap * t8;
+    G_ap = (T(1) / T(12)) * seg0 * w3 * (T(3) * ap_ap * seg0 * t11 - T(2) * seg0 * t13 - T(4) * ab_ap * seg0 * t14) + w0 * t8 - (T(1) / T(4)) * seg0 * t11 * w1 - (T(1) / T(6)) * w2 * seg0 * t14;
+    G_E = (T(1) / T(12)) * (T(3) * t10 * w0 - seg0 * t12 * w1 - w2 * seg0 * t13 - T(3) * t6 * seg5 - T(3) * seg0 * w3 * (ab_ap * seg0 * t13 + seg0 * (T(2) * seg0 * t12 * cross_cross + T(3) * ab_ap * t9 + T(3) * t5 * a_minus_b) - ap_ap * seg0 * t12)) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(cross_cross);
     const T t16 = T(1) / t15;
     const T J2 = atan2(t15, ap_bp) * t16;
-    const T t17 = T(1) / ap_ap;
-    const T t18 = T(1) / bp_bp;
-    const T t19 = J2 * ab_ab + ab_ap * t17 + t18 * a_minus_b;
-    const T t20 = T(1) / cross_cross;
-    const T t21 = t18 * t18;
-    const T t22 = t17 * t17;
-    const T t23 = T(2) * t21 * a_minus_b + T(2) * ab_ap * t22 + T(3) * t19 * ab_ab * t20;
-    const T t24 = ab_ap * t23 * t20 + T(2) * t22 - T(2) * t21;
-    const T t25 = T(4) * t19 * t20 + T(2) * ab_ap * t24 * seg0 - t23 * ap_ap * t20;
-    const T t26 = t17 + ab_ap * t19 * t20 - t18;
-    G_ap = (T(1) / T(8)) * (T(2) * ab_ap * t25 * seg0 + T(4) * t26 * seg0 - t24 * ap_ap * seg0) * w3 * seg0 + (T(1) / T(8)) * t24 * seg0 * w1 + (T(1) / T(8)) * t23 * w0 * t20 + (T(1) / T(8)) * w2 * t25 * seg0;
-    G_E = (T(1) / T(8)) * (T(2) * t22 * w0 + T(2) * t26 * w2 * seg0 + t19 * w1 * t20 + T(3) * w3 * seg0 * (T(2) * J2 + T(2) * t26 * ab_ap * seg0 - ap_ap * t19 * t20) - T(2) * t21 * seg5) * seg0;
+    const T t17 = T(1) / bp_bp;
+    const T t18 = t17 * t17;
+    const T t19 = T(1) / ap_ap;
+    const T t20 = t19 * t19;
+    const T t21 = J2 * ab_ab + ab_ap * t19 + t17 * a_minus_b;
+    const T t22 = T(1) / cross_cross;
+    const T t23 = T(2) * t18 * a_minus_b + T(2) * ab_ap * t20 + T(3) * t21 * ab_ab * t22;
+    const T t24 = ab_ap * t23 * t22 + T(2) * t20 - T(2) * t18;
+    const T t25 = T(4) * t21 * t22 + T(2) * ab_ap * t24 * seg0 - t23 * ap_ap * t22;
+    const T t26 = t19 + ab_ap * t21 * t22 - t17;
+    G_ap = (T(1) / T(8)) * t24 * seg0 * w1 + (T(1) / T(8)) * w2 * seg0 * t25 + (T(1) / T(8)) * t23 * w0 * t22 + (T(1) / T(8)) * (T(2) * ab_ap * seg0 * t25 + T(4) * t26 * seg0 - t24 * ap_ap * seg0) * seg0 * w3;
+    G_E = (T(1) / T(8)) * (T(2) * t26 * w2 * seg0 + T(2) * t20 * w0 + t21 * w1 * t22 + T(3) * (T(2) * J2 + T(2) * t26 * ab_ap * seg0 - ap_ap * t21 * t22) * seg0 * w3 - T(2) * t18 * seg5) * seg0;
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -7252,17 +7254,17 @@ T segment_inverse_i4_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - seg0 * ab_ap * ab2;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
+    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
     foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
@@ -7271,7 +7273,7 @@ T segment_inverse_i4_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -7281,25 +7283,25 @@ T segment_inverse_i4_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w1 * M_flat[1] + w2 * M_flat[2] + M_flat[0] * w0 + w3 * M_flat[3];
     const T t4 = M_flat[8] * w3 + M_flat[5] * w0 + M_flat[6] * w1 + M_flat[7] * w2;
     G_ap = t4;
-    G_E = w1 * M_flat[7] + M_flat[6] * w0 + w2 * M_flat[8] + w3 * M_flat[9] - t4 * seg0 * ab_ap;
+    G_E = w1 * M_flat[7] + M_flat[6] * w0 + w2 * M_flat[8] + w3 * M_flat[9] - t4 * ab_ap * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_6 = J_downward(…)
     const T t5 = T(1) / ap_ap;
     const T log_ratio = log(bp_bp * t5);
-    const T t6 = t5 * t5;
-    const T t7 = T(1) / bp_bp;
-    const T t8 = t7 * t7;
+    const T t6 = T(1) / bp_bp;
+    const T t7 = t5 * t5;
+    const T t8 = t6 * t6;
     const T t9 = -ab_ap;
     const T t10 = J_downward<T>(6, ab_ab, cross_cross, t9, ap_ap, a_minus_b, bp_bp);
-    const T t11 = ab_ap * t6 + t8 * a_minus_b - T(4) * cross_cross * t10;
-    const T t12 = T(3) * t7 + T(2) * seg0 * ab_ap * t11 - T(3) * t5;
-    const T t13 = T(2) * cross_cross * seg0 * t11 + T(3) * t7 * a_minus_b + T(3) * ab_ap * t5;
-    const T t14 = seg0 * t11 * ap_ap - seg0 * ab_ap * t12 - seg0 * t13;
-    F = (T(1) / T(3)) * seg0 * w2 * t14 - (T(1) / T(6)) * w1 * seg0 * t12 - (T(1) / T(3)) * seg0 * t11 * w0 - (T(1) / T(6)) * seg0 * ((T(2) * seg0 * ab_ap * t13 - T(3) * log_ratio) * seg0 - T(4) * seg0 * ab_ap * t14 - seg0 * t12 * ap_ap) * w3;
-    const T t15 = T(4) * ab_ap * t10 + t6 - t8;
-    const T t16 = T(6) * ap_ap * t10 + T(2) * seg0 * t11 - T(3) * seg0 * ab_ap * t15;
-    G_ap = t10 * w0 + (T(1) / T(4)) * w1 * seg0 * t15 - (T(1) / T(6)) * t16 * seg0 * w2 - (T(1) / T(12)) * seg0 * (T(4) * t16 * seg0 * ab_ap + T(3) * seg0 * ap_ap * t15 + T(2) * seg0 * t12) * w3;
-    G_E = -(T(1) / T(12)) * seg0 * (w1 * seg0 * t11 + seg0 * t12 * w2 + T(3) * t8 * seg5 - T(3) * seg0 * t14 * w3 - T(3) * t6 * w0);
+    const T t11 = ab_ap * t7 + t8 * a_minus_b - T(4) * cross_cross * t10;
+    const T t12 = T(3) * t6 + T(2) * ab_ap * t11 * seg0 - T(3) * t5;
+    const T t13 = T(2) * cross_cross * t11 * seg0 + T(3) * t6 * a_minus_b + T(3) * ab_ap * t5;
+    const T t14 = t13 * seg0 + t12 * ab_ap * seg0 - t11 * ap_ap * seg0;
+    F = (T(1) / T(6)) * (t12 * ap_ap * seg0 - T(4) * ab_ap * t14 * seg0 - (T(2) * ab_ap * t13 * seg0 - T(3) * log_ratio) * seg0) * w3 * seg0 - (T(1) / T(3)) * t11 * w0 * seg0 - (T(1) / T(3)) * t14 * w2 * seg0 - (T(1) / T(6)) * t12 * w1 * seg0;
+    const T t15 = T(4) * ab_ap * t10 + t7 - t8;
+    const T t16 = T(6) * ap_ap * t10 + T(2) * t11 * seg0 - T(3) * ab_ap * seg0 * t15;
+    G_ap = t10 * w0 + (T(1) / T(4)) * w1 * seg0 * t15 - (T(1) / T(12)) * w3 * (T(4) * ab_ap * t16 * seg0 + T(2) * t12 * seg0 + T(3) * ap_ap * seg0 * t15) * seg0 - (T(1) / T(6)) * t16 * w2 * seg0;
+    G_E = -(T(1) / T(12)) * (T(3) * t8 * seg5 + T(3) * t14 * w3 * seg0 + t12 * w2 * seg0 + w1 * t11 * seg0 - T(3) * t7 * w0) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = sqrt(cross_cross);
@@ -7311,15 +7313,15 @@ T segment_inverse_i4_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t21 = T(1) / bp_bp;
     const T t22 = J2 * ab_ab + t21 * a_minus_b + ab_ap * t19;
     const T t23 = t21 - t20 * ab_ap * t22 - t19;
-    const T t24 = t20 * ap_ap * t22 + T(2) * t23 * seg0 * ab_ap - T(2) * J2;
-    F = (T(1) / T(2)) * t20 * t22 * w0 + (T(1) / T(2)) * (t23 * seg0 * ap_ap + seg0 * (log_ratio + T(2) * ab_ap * J2) - T(2) * seg0 * ab_ap * t24) * seg0 * w3 - (T(1) / T(2)) * t23 * w1 * seg0 - (T(1) / T(2)) * seg0 * w2 * t24;
+    const T t24 = t20 * ap_ap * t22 + T(2) * t23 * ab_ap * seg0 - T(2) * J2;
+    F = (T(1) / T(2)) * t20 * t22 * w0 - (T(1) / T(2)) * t23 * w1 * seg0 - (T(1) / T(2)) * (T(2) * t24 * ab_ap * seg0 - (log_ratio + T(2) * ab_ap * J2) * seg0 - t23 * ap_ap * seg0) * w3 * seg0 - (T(1) / T(2)) * t24 * w2 * seg0;
     const T t25 = t19 * t19;
     const T t26 = t21 * t21;
     const T t27 = T(2) * ab_ap * t25 + T(2) * t26 * a_minus_b + T(3) * t20 * t22 * ab_ab;
     const T t28 = t20 * ab_ap * t27 + T(2) * t25 - T(2) * t26;
-    const T t29 = T(4) * t20 * t22 + T(2) * seg0 * ab_ap * t28 - t20 * ap_ap * t27;
-    G_ap = (T(1) / T(8)) * t20 * t27 * w0 + (T(1) / T(8)) * seg0 * w2 * t29 + (T(1) / T(8)) * w1 * seg0 * t28 - (T(1) / T(8)) * seg0 * w3 * (T(4) * t23 * seg0 + seg0 * ap_ap * t28 - T(2) * seg0 * ab_ap * t29);
-    G_E = -(T(1) / T(8)) * seg0 * (T(2) * t23 * seg0 * w2 + T(3) * seg0 * w3 * t24 + T(2) * t26 * seg5 - T(2) * t25 * w0 - t20 * w1 * t22);
+    const T t29 = T(4) * t20 * t22 + T(2) * ab_ap * seg0 * t28 - t20 * ap_ap * t27;
+    G_ap = (T(1) / T(8)) * t29 * w2 * seg0 + (T(1) / T(8)) * w1 * seg0 * t28 + (T(1) / T(8)) * t20 * t27 * w0 - (T(1) / T(8)) * (T(4) * t23 * seg0 + ap_ap * seg0 * t28 - T(2) * t29 * ab_ap * seg0) * w3 * seg0;
+    G_E = -(T(1) / T(8)) * (T(3) * t24 * w3 * seg0 + T(2) * t26 * seg5 + T(2) * t23 * w2 * seg0 - T(2) * t25 * w0 - t20 * w1 * t22) * seg0;
   }
   f = length * F;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -7598,9 +7600,9 @@ std::array<T, 3> segment_inverse_i5_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[2] * exact_cross[2] + exact_cross[0] * exact_cross[0];
-    foot0 = -(ab1 * exact_cross[2] - ab2 * exact_cross[1]) * seg0;
-    foot1 = -(ab2 * exact_cross[0] - ab0 * exact_cross[2]) * seg0;
-    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
+    foot0 = -seg0 * (ab1 * exact_cross[2] - ab2 * exact_cross[1]);
+    foot1 = -seg0 * (ab2 * exact_cross[0] - ab0 * exact_cross[2]);
+    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab2 * bp2 + ab1 * bp1 + ab0 * bp0;
@@ -7609,7 +7611,7 @@ std::array<T, 3> segment_inverse_i5_w0_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -7617,7 +7619,7 @@ std::array<T, 3> segment_inverse_i5_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(5, 7, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - ab_ap * M_flat[2] * seg0 * w0;
+    G_E = w0 * M_flat[3] - ab_ap * seg0 * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -7714,7 +7716,7 @@ T segment_inverse_i5_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
     foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
@@ -7734,7 +7736,7 @@ T segment_inverse_i5_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(5, 7, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = w0 * M_flat[0];
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * M_flat[2] * seg0 * ab_ap;
+    G_E = w0 * M_flat[3] - seg0 * w0 * M_flat[2] * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -7749,7 +7751,7 @@ T segment_inverse_i5_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
     const T t11 = t10 * t8;
-    const T t12 = -(T(1) / T(5)) * (w0 * t7 - w0 * t11) * seg0;
+    const T t12 = -(T(1) / T(5)) * seg0 * (w0 * t7 - w0 * t11);
     G_E = t12;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -7769,7 +7771,7 @@ T segment_inverse_i5_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t24 = t13 * t13;
     const T t25 = t24 * t24;
     const T t26 = t25 * t13;
-    const T t27 = -(T(1) / T(5)) * (w0 * t23 - w0 * t26) * seg0;
+    const T t27 = -(T(1) / T(5)) * seg0 * (w0 * t23 - w0 * t26);
     G_E = t27;
   }
   f = F * length;
@@ -7974,7 +7976,7 @@ T segment_inverse_i5_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -7995,7 +7997,7 @@ T segment_inverse_i5_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t7 = t4 * t4;
     const T t8 = t5 * t5;
     const T t9 = T(2) * (t4 * a_minus_b + t5 * ab_ap) * ab_ab * t6 + t7 * t4 * a_minus_b + t5 * ab_ap * t8;
-    F = (T(1) / T(3)) * w0 * t9 * t6 - (T(1) / T(3)) * w1 * seg0 * (t7 * t4 - ab_ap * t9 * t6 - t5 * t8);
+    F = (T(1) / T(3)) * w0 * t9 * t6 - (T(1) / T(3)) * seg0 * w1 * (t7 * t4 - ab_ap * t9 * t6 - t5 * t8);
   }
   f = length * F;
   return f;
@@ -8050,15 +8052,15 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const T* pre, const SegmentPoint<T>&
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - ab_ap * seg0 * ab0;
-    foot1 = ap1 - ab_ap * ab1 * seg0;
-    foot2 = ap2 - ab_ap * ab2 * seg0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
     foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
@@ -8068,7 +8070,7 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -8077,7 +8079,7 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(5, 7, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w0 * M_flat[3] + w1 * M_flat[4];
     G_ap = t4;
-    G_E = M_flat[5] * w1 + w0 * M_flat[4] - ab_ap * t4 * seg0;
+    G_E = M_flat[5] * w1 + w0 * M_flat[4] - ab_ap * seg0 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -8103,7 +8105,7 @@ std::array<T, 3> segment_inverse_i5_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t19 = t17 * t17;
     const T t20 = t15 * t15;
     const T t21 = T(4) * t13 * t18 * ab_ab + T(3) * a_minus_b * t19 * t16 + T(3) * ab_ap * t20 * t14;
-    G_ap = (T(1) / T(15)) * (t13 * ab_ap * t21 + T(3) * t20 * t14 - T(3) * t19 * t16) * w1 * seg0 + (T(1) / T(15)) * t13 * t21 * w0;
+    G_ap = (T(1) / T(15)) * seg0 * (t13 * ab_ap * t21 + T(3) * t20 * t14 - T(3) * t19 * t16) * w1 + (T(1) / T(15)) * t13 * t21 * w0;
     const T t22 = t14 * t14;
     const T t23 = t22 * t22;
     const T t24 = t23 * t14;
@@ -8167,9 +8169,9 @@ T segment_inverse_i5_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -8187,7 +8189,7 @@ T segment_inverse_i5_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -8197,7 +8199,7 @@ T segment_inverse_i5_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[1] * w1 + M_flat[0] * w0;
     const T t4 = M_flat[4] * w1 + M_flat[3] * w0;
     G_ap = t4;
-    G_E = M_flat[5] * w1 + M_flat[4] * w0 - seg0 * ab_ap * t4;
+    G_E = M_flat[5] * w1 + M_flat[4] * w0 - ab_ap * seg0 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -8212,7 +8214,7 @@ T segment_inverse_i5_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = -(T(1) / T(5)) * seg0 * (t8 * seg7 - M_beyond[0] * w1 - w0 * t12);
+    G_E = -(T(1) / T(5)) * (t8 * seg7 - M_beyond[0] * w1 - w0 * t12) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = T(1) / cross_cross;
@@ -8221,18 +8223,18 @@ T segment_inverse_i5_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t16 = T(1) / r0;
     const T t17 = t16 * t16;
     const T t18 = t14 * t15 * a_minus_b + T(2) * ab_ab * t13 * (t14 * a_minus_b + ab_ap * t16) + ab_ap * t17 * t16;
-    F = (T(1) / T(3)) * t13 * w0 * t18 - (T(1) / T(3)) * seg0 * (t14 * t15 - t17 * t16 - t13 * ab_ap * t18) * w1;
+    F = (T(1) / T(3)) * t13 * w0 * t18 - (T(1) / T(3)) * (t14 * t15 - t17 * t16 - t13 * ab_ap * t18) * seg0 * w1;
     const T t19 = t17 * t17;
     const T t20 = t15 * t15;
     const T t21 = T(4) * ab_ab * t13 * t18 + T(3) * ab_ap * t19 * t16 + T(3) * t14 * t20 * a_minus_b;
-    G_ap = (T(1) / T(15)) * seg0 * (t13 * ab_ap * t21 + T(3) * t19 * t16 - T(3) * t14 * t20) * w1 + (T(1) / T(15)) * t13 * w0 * t21;
+    G_ap = (T(1) / T(15)) * t13 * w0 * t21 + (T(1) / T(15)) * (t13 * ab_ap * t21 + T(3) * t19 * t16 - T(3) * t14 * t20) * seg0 * w1;
     const T t22 = t14 * t14;
     const T t23 = t22 * t22;
     const T t24 = t23 * t14;
     const T t25 = t16 * t16;
     const T t26 = t25 * t25;
     const T t27 = t26 * t16;
-    G_E = -(T(1) / T(15)) * seg0 * (T(3) * t24 * seg7 - t13 * t18 * w1 - T(3) * w0 * t27);
+    G_E = -(T(1) / T(15)) * (T(3) * t24 * seg7 - t13 * t18 * w1 - T(3) * w0 * t27) * seg0;
   }
   f = length * F;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -8455,15 +8457,15 @@ T segment_inverse_i5_w2_f(const T* pre, const SegmentPoint<T>& point) {
     F = M_beyond[2] * w2 + w1 * M_beyond[1] + w0 * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t4 = T(1) / r0;
-    const T t5 = t4 * t4;
-    const T t6 = T(1) / cross_cross;
+    const T t4 = T(1) / cross_cross;
+    const T t5 = T(1) / r0;
+    const T t6 = t5 * t5;
     const T t7 = T(1) / r1;
     const T t8 = t7 * t7;
-    const T t9 = t4 * ab_ap + t7 * a_minus_b;
-    const T t10 = t4 * ab_ap * t5 + t8 * t7 * a_minus_b + T(2) * t6 * t9 * ab_ab;
-    const T t11 = t4 * t5 + t6 * ab_ap * t10 - t8 * t7;
-    F = (T(1) / T(3)) * (T(2) * ab_ap * t11 * seg0 + T(3) * t6 * t9 - t6 * t10 * ap_ap) * w2 * seg0 + (T(1) / T(3)) * t6 * w0 * t10 + (T(1) / T(3)) * w1 * t11 * seg0;
+    const T t9 = t5 * ab_ap + t7 * a_minus_b;
+    const T t10 = t5 * ab_ap * t6 + t8 * t7 * a_minus_b + T(2) * t4 * t9 * ab_ab;
+    const T t11 = t5 * t6 + t4 * ab_ap * t10 - t8 * t7;
+    F = (T(1) / T(3)) * t4 * w0 * t10 + (T(1) / T(3)) * w1 * seg0 * t11 + (T(1) / T(3)) * seg0 * w2 * (T(2) * ab_ap * seg0 * t11 + T(3) * t4 * t9 - t4 * t10 * ap_ap);
   }
   f = length * F;
   return f;
@@ -8518,17 +8520,17 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab_ap * ab0;
-    foot1 = ap1 - seg0 * ab_ap * ab1;
-    foot2 = ap2 - seg0 * ab_ap * ab2;
+    foot0 = ap0 - ab_ap * seg0 * ab0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
     foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
+    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
   const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
@@ -8537,7 +8539,7 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -8546,7 +8548,7 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(5, 7, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w0 * M_flat[4] + w1 * M_flat[5] + w2 * M_flat[6];
     G_ap = t4;
-    G_E = w1 * M_flat[6] + M_flat[7] * w2 + w0 * M_flat[5] - seg0 * ab_ap * t4;
+    G_E = w1 * M_flat[6] + M_flat[7] * w2 + w0 * M_flat[5] - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -8560,7 +8562,7 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(5)) * seg0 * (w0 * t8 + M_beyond[0] * w1 + T(2) * M_beyond[1] * w2 - seg7 * t12);
+    G_E = (T(1) / T(5)) * (w0 * t8 + M_beyond[0] * w1 + T(2) * M_beyond[1] * w2 - seg7 * t12) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = T(1) / cross_cross;
@@ -8573,14 +8575,14 @@ std::array<T, 3> segment_inverse_i5_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t20 = t15 * t15;
     const T t21 = T(4) * t13 * t18 * ab_ab + T(3) * a_minus_b * t19 * t16 + T(3) * ab_ap * t14 * t20;
     const T t22 = T(3) * t19 * t16 - t13 * ab_ap * t21 - T(3) * t14 * t20;
-    G_ap = (T(1) / T(15)) * w0 * t13 * t21 + (T(1) / T(15)) * (T(5) * t13 * t18 - T(2) * seg0 * t22 * ab_ap - t13 * ap_ap * t21) * seg0 * w2 - (T(1) / T(15)) * seg0 * t22 * w1;
+    G_ap = (T(1) / T(15)) * w0 * t13 * t21 - (T(1) / T(15)) * t22 * w1 * seg0 - (T(1) / T(15)) * (T(2) * t22 * ab_ap * seg0 + t13 * ap_ap * t21 - T(5) * t13 * t18) * w2 * seg0;
     const T t23 = t14 * t14;
     const T t24 = t23 * t23;
     const T t25 = t24 * t14;
     const T t26 = t16 * t16;
     const T t27 = t26 * t26;
     const T t28 = t27 * t16;
-    G_E = (T(1) / T(15)) * seg0 * (T(3) * w0 * t25 + T(2) * seg0 * w2 * (t14 * t15 + t13 * t18 * ab_ap - t17 * t16) + t13 * t18 * w1 - T(3) * seg7 * t28);
+    G_E = (T(1) / T(15)) * (T(3) * w0 * t25 + T(2) * w2 * seg0 * (t14 * t15 + t13 * t18 * ab_ap - t17 * t16) + t13 * t18 * w1 - T(3) * seg7 * t28) * seg0;
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -8647,7 +8649,7 @@ T segment_inverse_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
     foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -8658,7 +8660,7 @@ T segment_inverse_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -8668,7 +8670,7 @@ T segment_inverse_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[1] * w1 + w0 * M_flat[0] + M_flat[2] * w2;
     const T t4 = w1 * M_flat[5] + w2 * M_flat[6] + M_flat[4] * w0;
     G_ap = t4;
-    G_E = w1 * M_flat[6] + w2 * M_flat[7] + M_flat[5] * w0 - t4 * seg0 * ab_ap;
+    G_E = w1 * M_flat[6] + w2 * M_flat[7] + M_flat[5] * w0 - seg0 * t4 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -8683,7 +8685,7 @@ T segment_inverse_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(5)) * (w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] + t8 * w0 - seg7 * t12) * seg0;
+    G_E = (T(1) / T(5)) * seg0 * (w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] + t8 * w0 - seg7 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = T(1) / r1;
@@ -8694,19 +8696,19 @@ T segment_inverse_i5_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t18 = t15 * t15;
     const T t19 = a_minus_b * t13 * t14 + T(2) * t16 * ab_ab * t17 + t18 * t15 * ab_ap;
     const T t20 = t18 * t15 + t19 * t17 * ab_ap - t13 * t14;
-    F = (T(1) / T(3)) * t19 * w0 * t17 + (T(1) / T(3)) * seg0 * (T(2) * seg0 * t20 * ab_ap + T(3) * t16 * t17 - ap_ap * t19 * t17) * w2 + (T(1) / T(3)) * w1 * seg0 * t20;
-    const T t21 = t18 * t18;
-    const T t22 = t14 * t14;
-    const T t23 = T(3) * t21 * t15 * ab_ap + T(3) * a_minus_b * t13 * t22 + T(4) * ab_ab * t19 * t17;
-    const T t24 = T(3) * t13 * t22 - T(3) * t21 * t15 - t23 * t17 * ab_ap;
-    G_ap = (T(1) / T(15)) * t23 * w0 * t17 + (T(1) / T(15)) * seg0 * w2 * (T(5) * t19 * t17 - ap_ap * t23 * t17 - T(2) * t24 * seg0 * ab_ap) - (T(1) / T(15)) * t24 * w1 * seg0;
+    F = (T(1) / T(3)) * t19 * w0 * t17 + (T(1) / T(3)) * seg0 * w1 * t20 - (T(1) / T(3)) * seg0 * (ap_ap * t19 * t17 - T(3) * t16 * t17 - T(2) * seg0 * t20 * ab_ap) * w2;
+    const T t21 = t14 * t14;
+    const T t22 = t18 * t18;
+    const T t23 = T(3) * t22 * t15 * ab_ap + T(3) * a_minus_b * t13 * t21 + T(4) * ab_ab * t19 * t17;
+    const T t24 = T(3) * t13 * t21 - T(3) * t22 * t15 - t23 * t17 * ab_ap;
+    G_ap = (T(1) / T(15)) * seg0 * w2 * (T(5) * t19 * t17 - T(2) * seg0 * t24 * ab_ap - ap_ap * t23 * t17) + (T(1) / T(15)) * t23 * w0 * t17 - (T(1) / T(15)) * seg0 * t24 * w1;
     const T t25 = t15 * t15;
     const T t26 = t25 * t25;
     const T t27 = t26 * t15;
     const T t28 = t13 * t13;
     const T t29 = t28 * t28;
     const T t30 = t29 * t13;
-    G_E = (T(1) / T(15)) * (T(3) * t27 * w0 + T(2) * seg0 * w2 * t20 + w1 * t19 * t17 - T(3) * seg7 * t30) * seg0;
+    G_E = (T(1) / T(15)) * seg0 * (T(2) * seg0 * w2 * t20 + T(3) * t27 * w0 + w1 * t19 * t17 - T(3) * seg7 * t30);
   }
   f = F * length;
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
@@ -8919,7 +8921,7 @@ T segment_inverse_i5_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -8942,8 +8944,8 @@ T segment_inverse_i5_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t9 = t7 * t7;
     const T t10 = T(2) * ab_ab * t8 * t6 + t7 * ab_ap * t9 + a_minus_b * t5 * t4;
     const T t11 = t5 * t4 - t6 * t10 * ab_ap - t7 * t9;
-    const T t12 = T(2) * seg0 * ab_ap * t11 + t6 * t10 * ap_ap - T(3) * t8 * t6;
-    F = (T(1) / T(3)) * seg0 * (seg0 * ap_ap * t11 + T(3) * seg0 * (t7 + t8 * t6 * ab_ap - t4) - T(2) * seg0 * ab_ap * t12) * w3 + (T(1) / T(3)) * t6 * t10 * w0 - (T(1) / T(3)) * seg0 * t12 * w2 - (T(1) / T(3)) * seg0 * w1 * t11;
+    const T t12 = t6 * t10 * ap_ap + T(2) * ab_ap * seg0 * t11 - T(3) * t8 * t6;
+    F = (T(1) / T(3)) * (seg0 * ap_ap * t11 + T(3) * (t7 + t8 * t6 * ab_ap - t4) * seg0 - T(2) * ab_ap * seg0 * t12) * seg0 * w3 + (T(1) / T(3)) * t6 * t10 * w0 - (T(1) / T(3)) * w1 * seg0 * t11 - (T(1) / T(3)) * w2 * seg0 * t12;
   }
   f = length * F;
   return f;
@@ -8999,17 +9001,17 @@ std::array<T, 3> segment_inverse_i5_w3_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = (ab2 * exact_cross[1] - ab1 * exact_cross[2]) * seg0;
+    foot0 = seg0 * (ab2 * exact_cross[1] - ab1 * exact_cross[2]);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
+    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
@@ -9018,7 +9020,7 @@ std::array<T, 3> segment_inverse_i5_w3_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -9032,24 +9034,24 @@ std::array<T, 3> segment_inverse_i5_w3_grad(const T* pre, const SegmentPoint<T>&
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_7 = J_downward(…)
     const T t5 = -ab_ap;
     const T t6 = J_downward<T>(7, ab_ab, cross_cross, t5, ap_ap, a_minus_b, bp_bp);
-    const T t7 = T(1) / r1;
+    const T t7 = T(1) / r0;
     const T t8 = t7 * t7;
     const T t9 = t8 * t8;
-    const T t10 = T(1) / r0;
+    const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    const T t13 = t9 * t7 - T(5) * t6 * ab_ap - t10 * t12;
-    const T t14 = ab_ap * t10 * t12 + a_minus_b * t9 * t7 - T(5) * t6 * cross_cross;
-    const T t15 = T(8) * seg0 * ab_ap * t13 + T(5) * seg0 * t14 + T(20) * t6 * ap_ap;
-    const T t16 = T(4) * t10 * t11 - T(3) * seg0 * ab_ap * t14 - T(4) * t8 * t7;
-    G_ap = w0 * t6 - (T(1) / T(5)) * w1 * seg0 * t13 - (T(1) / T(60)) * (T(6) * t15 * seg0 * ab_ap - T(5) * t16 * seg0 - T(12) * seg0 * t13 * ap_ap) * seg0 * w3 - (T(1) / T(20)) * t15 * seg0 * w2;
-    const T t17 = t10 * t10;
+    const T t13 = ab_ap * t7 * t9 + a_minus_b * t12 * t10 - T(5) * t6 * cross_cross;
+    const T t14 = T(4) * t7 * t8 - T(3) * seg0 * ab_ap * t13 - T(4) * t11 * t10;
+    const T t15 = t12 * t10 - T(5) * t6 * ab_ap - t7 * t9;
+    const T t16 = T(8) * seg0 * ab_ap * t15 + T(5) * seg0 * t13 + T(20) * t6 * ap_ap;
+    G_ap = w0 * t6 + (T(1) / T(60)) * (T(5) * seg0 * t14 + T(12) * seg0 * t15 * ap_ap - T(6) * t16 * seg0 * ab_ap) * seg0 * w3 - (T(1) / T(20)) * t16 * seg0 * w2 - (T(1) / T(5)) * seg0 * w1 * t15;
+    const T t17 = t7 * t7;
     const T t18 = t17 * t17;
-    const T t19 = t18 * t10;
-    const T t20 = t7 * t7;
+    const T t19 = t18 * t7;
+    const T t20 = t10 * t10;
     const T t21 = t20 * t20;
-    const T t22 = t21 * t7;
-    G_E = (T(1) / T(120)) * seg0 * (T(24) * w0 * t19 + T(4) * t16 * seg0 * w2 - T(3) * seg0 * (T(3) * seg0 * (T(4) * a_minus_b * t8 * t7 + T(3) * cross_cross * seg0 * t14 + T(4) * ab_ap * t10 * t11) - T(6) * seg0 * t14 * ap_ap - T(4) * t16 * seg0 * ab_ap) * w3 - T(6) * w1 * seg0 * t14 - T(24) * seg7 * t22);
+    const T t22 = t21 * t10;
+    G_E = (T(1) / T(120)) * seg0 * (T(4) * seg0 * w2 * t14 + T(24) * w0 * t19 - T(24) * seg7 * t22 - T(3) * seg0 * (T(3) * seg0 * (T(4) * a_minus_b * t11 * t10 + T(4) * ab_ap * t7 * t8 + T(3) * seg0 * cross_cross * t13) - T(4) * seg0 * ab_ap * t14 - T(6) * seg0 * t13 * ap_ap) * w3 - T(6) * seg0 * w1 * t13);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t23 = T(1) / cross_cross;
@@ -9065,14 +9067,14 @@ std::array<T, 3> segment_inverse_i5_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t33 = t23 * ab_ap * t32 + T(3) * t26 * t30 - T(3) * t31 * t24;
     const T t34 = T(5) * t29 * t23 + T(2) * seg0 * ab_ap * t33 - t23 * ap_ap * t32;
     const T t35 = t29 * t23 * ab_ap + t26 * t27 - t25 * t24;
-    G_ap = (T(1) / T(15)) * w0 * t23 * t32 + (T(1) / T(15)) * t34 * seg0 * w2 + (T(1) / T(15)) * w1 * seg0 * t33 - (T(1) / T(15)) * (seg0 * ap_ap * t33 - T(5) * seg0 * t35 - T(2) * t34 * seg0 * ab_ap) * seg0 * w3;
+    G_ap = (T(1) / T(15)) * w0 * t23 * t32 + (T(1) / T(15)) * seg0 * w1 * t33 + (T(1) / T(15)) * seg0 * t34 * w2 - (T(1) / T(15)) * seg0 * (seg0 * ap_ap * t33 - T(2) * seg0 * t34 * ab_ap - T(5) * seg0 * t35) * w3;
     const T t36 = t26 * t26;
     const T t37 = t36 * t36;
     const T t38 = t37 * t26;
     const T t39 = t24 * t24;
     const T t40 = t39 * t39;
     const T t41 = t40 * t24;
-    G_E = (T(1) / T(15)) * (T(3) * w0 * t38 + t29 * t23 * w1 + T(2) * seg0 * w2 * t35 - T(3) * (t29 * t23 * ap_ap - T(3) * t23 * t28 - T(2) * seg0 * ab_ap * t35) * seg0 * w3 - T(3) * seg7 * t41) * seg0;
+    G_E = (T(1) / T(15)) * seg0 * (T(3) * w0 * t38 + t29 * t23 * w1 + T(2) * seg0 * w2 * t35 - T(3) * seg7 * t41 - T(3) * (t29 * t23 * ap_ap - T(2) * seg0 * ab_ap * t35 - T(3) * t23 * t28) * seg0 * w3);
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = -g_factor * (G_E * ab1 - G_ap * foot1);
@@ -9131,15 +9133,15 @@ T segment_inverse_i5_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
+    foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
   }
@@ -9151,7 +9153,7 @@ T segment_inverse_i5_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -9161,32 +9163,32 @@ T segment_inverse_i5_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[1] * w1 + M_flat[2] * w2 + w0 * M_flat[0] + w3 * M_flat[3];
     const T t4 = M_flat[7] * w2 + w1 * M_flat[6] + w0 * M_flat[5] + w3 * M_flat[8];
     G_ap = t4;
-    G_E = w3 * M_flat[9] + M_flat[7] * w1 + M_flat[8] * w2 + w0 * M_flat[6] - ab_ap * t4 * seg0;
+    G_E = w3 * M_flat[9] + M_flat[7] * w1 + M_flat[8] * w2 + w0 * M_flat[6] - seg0 * ab_ap * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): recurrence (1) downwards from J_7 = J_downward(…)
-    const T t5 = T(1) / r0;
-    const T t6 = t5 * t5;
-    const T t7 = -ab_ap;
-    const T t8 = J_downward<T>(7, ab_ab, cross_cross, t7, ap_ap, a_minus_b, bp_bp);
-    const T t9 = t6 * t6;
+    const T t5 = -ab_ap;
+    const T t6 = J_downward<T>(7, ab_ab, cross_cross, t5, ap_ap, a_minus_b, bp_bp);
+    const T t7 = T(1) / r0;
+    const T t8 = t7 * t7;
+    const T t9 = t8 * t8;
     const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    const T t13 = T(5) * cross_cross * t8 - ab_ap * t5 * t9 - t10 * a_minus_b * t12;
-    const T t14 = T(4) * t5 * t6 + T(3) * ab_ap * seg0 * t13 - T(4) * t10 * t11;
-    const T t15 = T(4) * t10 * a_minus_b * t11 + T(4) * ab_ap * t5 * t6 - T(3) * cross_cross * seg0 * t13;
-    const T t16 = T(4) * ab_ap * t14 * seg0 - T(6) * seg0 * t13 * ap_ap - T(3) * t15 * seg0;
-    F = (T(1) / T(24)) * t16 * seg0 * w2 + (T(1) / T(12)) * w1 * t14 * seg0 + (T(1) / T(4)) * w0 * seg0 * t13 - (T(1) / T(24)) * w3 * (T(3) * (t15 * ab_ap * seg0 + T(8) * t10 - T(8) * t5) * seg0 + T(2) * t14 * seg0 * ap_ap - T(2) * t16 * ab_ap * seg0) * seg0;
-    const T t17 = T(5) * ab_ap * t8 + t5 * t9 - t10 * t12;
-    const T t18 = T(8) * t17 * ab_ap * seg0 + T(5) * seg0 * t13 - T(20) * ap_ap * t8;
-    G_ap = (T(1) / T(20)) * t18 * seg0 * w2 + (T(1) / T(60)) * w3 * (T(5) * t14 * seg0 + T(6) * t18 * ab_ap * seg0 - T(12) * t17 * seg0 * ap_ap) * seg0 + (T(1) / T(5)) * t17 * w1 * seg0 + w0 * t8;
-    const T t19 = t5 * t5;
+    const T t13 = T(5) * cross_cross * t6 - ab_ap * t7 * t9 - t10 * a_minus_b * t12;
+    const T t14 = T(4) * t7 * t8 + T(3) * seg0 * ab_ap * t13 - T(4) * t10 * t11;
+    const T t15 = T(4) * t10 * a_minus_b * t11 + T(4) * ab_ap * t7 * t8 - T(3) * seg0 * cross_cross * t13;
+    const T t16 = T(3) * seg0 * t15 + T(6) * seg0 * t13 * ap_ap - T(4) * t14 * seg0 * ab_ap;
+    F = (T(1) / T(4)) * w0 * seg0 * t13 + (T(1) / T(12)) * t14 * seg0 * w1 - (T(1) / T(24)) * seg0 * t16 * w2 - (T(1) / T(24)) * w3 * (T(2) * t14 * seg0 * ap_ap + T(3) * seg0 * (T(8) * t10 + seg0 * t15 * ab_ap - T(8) * t7) + T(2) * seg0 * ab_ap * t16) * seg0;
+    const T t17 = T(5) * ab_ap * t6 + t7 * t9 - t10 * t12;
+    const T t18 = T(8) * t17 * seg0 * ab_ap + T(5) * seg0 * t13 - T(20) * ap_ap * t6;
+    G_ap = (T(1) / T(60)) * w3 * seg0 * (T(6) * t18 * seg0 * ab_ap + T(5) * t14 * seg0 - T(12) * t17 * seg0 * ap_ap) + (T(1) / T(20)) * t18 * seg0 * w2 + w0 * t6 + (T(1) / T(5)) * t17 * seg0 * w1;
+    const T t19 = t10 * t10;
     const T t20 = t19 * t19;
-    const T t21 = t20 * t5;
-    const T t22 = t10 * t10;
+    const T t21 = t20 * t10;
+    const T t22 = t7 * t7;
     const T t23 = t22 * t22;
-    const T t24 = t23 * t10;
-    G_E = (T(1) / T(120)) * (T(6) * w1 * seg0 * t13 + T(4) * t14 * seg0 * w2 + T(24) * w0 * t21 + T(3) * w3 * t16 * seg0 - T(24) * t24 * seg7) * seg0;
+    const T t24 = t23 * t7;
+    G_E = -(T(1) / T(120)) * seg0 * (T(24) * t21 * seg7 + T(3) * w3 * seg0 * t16 - T(24) * w0 * t24 - T(4) * t14 * seg0 * w2 - T(6) * seg0 * w1 * t13);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t25 = T(1) / r0;
@@ -9197,21 +9199,21 @@ T segment_inverse_i5_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t30 = t28 * a_minus_b + ab_ap * t25;
     const T t31 = t28 * a_minus_b * t29 + T(2) * ab_ab * t30 * t27 + ab_ap * t25 * t26;
     const T t32 = t25 * t26 + t27 * ab_ap * t31 - t28 * t29;
-    const T t33 = T(2) * ab_ap * t32 * seg0 + T(3) * t30 * t27 - t27 * t31 * ap_ap;
-    F = (T(1) / T(3)) * t33 * seg0 * w2 + (T(1) / T(3)) * w1 * t32 * seg0 + (T(1) / T(3)) * w0 * t27 * t31 - (T(1) / T(3)) * w3 * (t32 * seg0 * ap_ap + T(3) * seg0 * (t28 - t25 - t30 * t27 * ab_ap) - T(2) * t33 * ab_ap * seg0) * seg0;
+    const T t33 = T(2) * seg0 * ab_ap * t32 + T(3) * t30 * t27 - t27 * t31 * ap_ap;
+    F = (T(1) / T(3)) * seg0 * w1 * t32 + (T(1) / T(3)) * w3 * seg0 * (T(2) * seg0 * ab_ap * t33 - seg0 * t32 * ap_ap - T(3) * seg0 * (t28 - t25 - t30 * t27 * ab_ap)) + (T(1) / T(3)) * w0 * t27 * t31 + (T(1) / T(3)) * seg0 * w2 * t33;
     const T t34 = t26 * t26;
     const T t35 = t29 * t29;
     const T t36 = T(3) * ab_ap * t25 * t34 + T(4) * ab_ab * t27 * t31 + T(3) * t28 * a_minus_b * t35;
     const T t37 = t36 * t27 * ab_ap + T(3) * t25 * t34 - T(3) * t28 * t35;
-    const T t38 = T(5) * t27 * t31 + T(2) * ab_ap * t37 * seg0 - t36 * t27 * ap_ap;
-    G_ap = (T(1) / T(15)) * w1 * t37 * seg0 + (T(1) / T(15)) * w0 * t36 * t27 + (T(1) / T(15)) * t38 * seg0 * w2 - (T(1) / T(15)) * w3 * (t37 * seg0 * ap_ap - T(2) * t38 * ab_ap * seg0 - T(5) * t32 * seg0) * seg0;
+    const T t38 = T(5) * t27 * t31 + T(2) * seg0 * ab_ap * t37 - t36 * t27 * ap_ap;
+    G_ap = (T(1) / T(15)) * w0 * t36 * t27 + (T(1) / T(15)) * seg0 * w1 * t37 + (T(1) / T(15)) * w3 * seg0 * (T(5) * seg0 * t32 + T(2) * t38 * seg0 * ab_ap - seg0 * t37 * ap_ap) + (T(1) / T(15)) * t38 * seg0 * w2;
     const T t39 = t25 * t25;
     const T t40 = t39 * t39;
     const T t41 = t40 * t25;
     const T t42 = t28 * t28;
     const T t43 = t42 * t42;
     const T t44 = t43 * t28;
-    G_E = (T(1) / T(15)) * (w1 * t27 * t31 + T(3) * w0 * t41 + T(3) * w3 * t33 * seg0 + T(2) * t32 * seg0 * w2 - T(3) * t44 * seg7) * seg0;
+    G_E = (T(1) / T(15)) * seg0 * (T(2) * seg0 * t32 * w2 + w1 * t27 * t31 + T(3) * w0 * t41 + T(3) * w3 * seg0 * t33 - T(3) * t44 * seg7);
   }
   f = length * F;
   grad[0] = g_factor * (G_ap * foot0 - G_E * ab0);
@@ -9414,7 +9416,7 @@ T segment_inverse_i6_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg5 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg5 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -9498,7 +9500,7 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const T* pre, const SegmentPoint<T>&
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
-    foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
+    foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
     foot2 = -(ab0 * exact_cross[1] - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -9507,7 +9509,7 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -9515,7 +9517,7 @@ std::array<T, 3> segment_inverse_i6_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(6, 8, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - ab_ap * M_flat[2] * w0 * seg0;
+    G_E = M_flat[3] * w0 - ab_ap * M_flat[2] * seg0 * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -9598,9 +9600,9 @@ T segment_inverse_i6_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -9608,7 +9610,7 @@ T segment_inverse_i6_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
+    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
@@ -9617,7 +9619,7 @@ T segment_inverse_i6_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -9626,7 +9628,7 @@ T segment_inverse_i6_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(6, 8, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = w0 * M_flat[0];
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * M_flat[2] * ab_ap * seg0;
+    G_E = w0 * M_flat[3] - w0 * M_flat[2] * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -9853,7 +9855,7 @@ T segment_inverse_i6_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp1 * ap1 + bp2 * ap2 + ap0 * bp0;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -9877,7 +9879,7 @@ T segment_inverse_i6_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t9 = t8 * t8;
     const T t10 = T(1) / cross_cross;
     const T t11 = T(2) * t7 * ab_ap + T(2) * a_minus_b * t9 + T(3) * (ab_ab * J2 + a_minus_b * t8 + t6 * ab_ap) * ab_ab * t10;
-    F = (T(1) / T(8)) * w0 * t11 * t10 + (T(1) / T(8)) * (T(2) * t7 + t11 * t10 * ab_ap - T(2) * t9) * w1 * seg0;
+    F = (T(1) / T(8)) * w0 * t11 * t10 + (T(1) / T(8)) * (T(2) * t7 + t11 * t10 * ab_ap - T(2) * t9) * seg0 * w1;
   }
   f = length * F;
   return f;
@@ -9931,17 +9933,17 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
-    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
@@ -9949,7 +9951,7 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -9964,13 +9966,13 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(6, 8, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
-    const T t8 = T(1) / bp_bp;
+    const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * (w0 * t7 + M_beyond[0] * w1 - t10 * seg5) * seg0;
+    G_E = -(T(1) / T(6)) * seg0 * (t7 * seg5 - w0 * t10 - M_beyond[0] * w1);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
@@ -9985,8 +9987,8 @@ std::array<T, 3> segment_inverse_i6_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t19 = t17 * t15;
     const T t20 = t14 * t13;
     const T t21 = T(5) * t18 * ab_ab * t16 + T(8) * t19 * ab_ap + T(8) * t20 * a_minus_b;
-    G_ap = (T(1) / T(48)) * w1 * (t21 * t16 * ab_ap + T(8) * t19 - T(8) * t20) * seg0 + (T(1) / T(48)) * w0 * t21 * t16;
-    G_E = (T(1) / T(48)) * (T(8) * w0 * t19 + t18 * w1 * t16 - T(8) * t20 * seg5) * seg0;
+    G_ap = (T(1) / T(48)) * w0 * t21 * t16 + (T(1) / T(48)) * w1 * seg0 * (t21 * t16 * ab_ap + T(8) * t19 - T(8) * t20);
+    G_E = -(T(1) / T(48)) * (T(8) * t20 * seg5 - T(8) * w0 * t19 - t18 * w1 * t16) * seg0;
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -10043,16 +10045,16 @@ T segment_inverse_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * seg0 * ab0;
-    foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot0 = ap0 - ab_ap * ab0 * seg0;
+    foot1 = ap1 - ab_ap * ab1 * seg0;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
@@ -10062,7 +10064,7 @@ T segment_inverse_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -10072,7 +10074,7 @@ T segment_inverse_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w0 * M_flat[0] + w1 * M_flat[1];
     const T t4 = w1 * M_flat[4] + w0 * M_flat[3];
     G_ap = t4;
-    G_E = M_flat[5] * w1 + w0 * M_flat[4] - ab_ap * seg0 * t4;
+    G_E = M_flat[5] * w1 + w0 * M_flat[4] - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -10085,7 +10087,7 @@ T segment_inverse_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * seg0 * (M_beyond[0] * w1 + w0 * t7 - t10 * seg5);
+    G_E = (T(1) / T(6)) * (M_beyond[0] * w1 + w0 * t7 - seg5 * t10) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
@@ -10097,12 +10099,12 @@ T segment_inverse_i6_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t16 = t15 * t15;
     const T t17 = T(1) / cross_cross;
     const T t18 = T(2) * ab_ap * t14 + T(2) * a_minus_b * t16 + T(3) * (ab_ab * J2 + a_minus_b * t15 + ab_ap * t13) * ab_ab * t17;
-    F = (T(1) / T(8)) * seg0 * (ab_ap * t18 * t17 + T(2) * t14 - T(2) * t16) * w1 + (T(1) / T(8)) * w0 * t18 * t17;
+    F = (T(1) / T(8)) * (ab_ap * t18 * t17 + T(2) * t14 - T(2) * t16) * w1 * seg0 + (T(1) / T(8)) * w0 * t18 * t17;
     const T t19 = t14 * t13;
     const T t20 = t16 * t15;
     const T t21 = T(8) * ab_ap * t19 + T(5) * ab_ab * t18 * t17 + T(8) * a_minus_b * t20;
-    G_ap = (T(1) / T(48)) * t21 * w0 * t17 + (T(1) / T(48)) * seg0 * w1 * (T(8) * t19 + ab_ap * t21 * t17 - T(8) * t20);
-    G_E = (T(1) / T(48)) * seg0 * (w1 * t18 * t17 + T(8) * w0 * t19 - T(8) * t20 * seg5);
+    G_ap = (T(1) / T(48)) * t21 * w0 * t17 + (T(1) / T(48)) * w1 * (T(8) * t19 + ab_ap * t21 * t17 - T(8) * t20) * seg0;
+    G_E = (T(1) / T(48)) * (w1 * t18 * t17 + T(8) * w0 * t19 - T(8) * seg5 * t20) * seg0;
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -10302,7 +10304,7 @@ T segment_inverse_i6_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap0 * bp0 + ap1 * bp1 + bp2 * ap2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -10328,7 +10330,7 @@ T segment_inverse_i6_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t11 = T(1) / cross_cross;
     const T t12 = T(2) * t7 * ab_ap + T(2) * t9 * a_minus_b + T(3) * ab_ab * t10 * t11;
     const T t13 = T(2) * t9 - t12 * ab_ap * t11 - T(2) * t7;
-    F = (T(1) / T(8)) * t12 * w0 * t11 - (T(1) / T(8)) * w1 * t13 * seg0 - (T(1) / T(8)) * w2 * seg0 * (t12 * ap_ap * t11 + T(2) * t13 * ab_ap * seg0 - T(4) * t10 * t11);
+    F = (T(1) / T(8)) * t12 * w0 * t11 - (T(1) / T(8)) * (t12 * ap_ap * t11 + T(2) * seg0 * t13 * ab_ap - T(4) * t10 * t11) * w2 * seg0 - (T(1) / T(8)) * w1 * seg0 * t13;
   }
   f = length * F;
   return f;
@@ -10383,17 +10385,17 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -10401,7 +10403,7 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -10410,19 +10412,19 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(6, 8, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[5] * w1 + M_flat[4] * w0 + M_flat[6] * w2;
     G_ap = t4;
-    G_E = w2 * M_flat[7] + w1 * M_flat[6] + M_flat[5] * w0 - seg0 * t4 * ab_ap;
+    G_E = w2 * M_flat[7] + w1 * M_flat[6] + M_flat[5] * w0 - t4 * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
     segment_moments_beyond_end<T>(6, 8, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[4] * w0 + w2 * M_beyond[6] + w1 * M_beyond[5];
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
-    const T t8 = T(1) / bp_bp;
+    const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * seg0 * (T(2) * M_beyond[1] * w2 + M_beyond[0] * w1 + t7 * w0 - t10 * seg5);
+    G_E = -(T(1) / T(6)) * (t7 * seg5 - T(2) * M_beyond[1] * w2 - M_beyond[0] * w1 - t10 * w0) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
@@ -10438,8 +10440,8 @@ std::array<T, 3> segment_inverse_i6_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t20 = t17 * t16;
     const T t21 = T(8) * a_minus_b * t15 + T(5) * ab_ab * t19 * t18 + T(8) * t20 * ab_ap;
     const T t22 = T(8) * t15 - t21 * t18 * ab_ap - T(8) * t20;
-    G_ap = (T(1) / T(48)) * t21 * w0 * t18 - (T(1) / T(48)) * seg0 * w2 * (ap_ap * t21 * t18 + T(2) * seg0 * ab_ap * t22 - T(6) * t19 * t18) - (T(1) / T(48)) * w1 * seg0 * t22;
-    G_E = -(T(1) / T(48)) * seg0 * (T(2) * (T(2) * t14 - t19 * t18 * ab_ap - T(2) * t17) * seg0 * w2 + T(8) * t15 * seg5 - T(8) * t20 * w0 - w1 * t19 * t18);
+    G_ap = (T(1) / T(48)) * t21 * w0 * t18 - (T(1) / T(48)) * w1 * seg0 * t22 - (T(1) / T(48)) * w2 * (ap_ap * t21 * t18 + T(2) * seg0 * ab_ap * t22 - T(6) * t19 * t18) * seg0;
+    G_E = -(T(1) / T(48)) * (T(8) * t15 * seg5 + T(2) * (T(2) * t14 - t19 * t18 * ab_ap - T(2) * t17) * w2 * seg0 - T(8) * t20 * w0 - w1 * t19 * t18) * seg0;
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -10497,16 +10499,16 @@ T segment_inverse_i6_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
-    foot1 = (ab0 * exact_cross[2] - ab2 * exact_cross[0]) * seg0;
+    foot1 = seg0 * (ab0 * exact_cross[2] - ab2 * exact_cross[0]);
     foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
@@ -10516,7 +10518,7 @@ T segment_inverse_i6_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -10539,27 +10541,27 @@ T segment_inverse_i6_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + t7 * w0 - seg5 * t10) * seg0;
+    G_E = (T(1) / T(6)) * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + t7 * w0 - t10 * seg5) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
     const T t12 = T(1) / t11;
     const T J2 = atan2(t11, ap_bp) * t12;
-    const T t13 = T(1) / bp_bp;
-    const T t14 = T(1) / ap_ap;
-    const T t15 = a_minus_b * t13 + J2 * ab_ab + t14 * ab_ap;
-    const T t16 = T(1) / cross_cross;
-    const T t17 = t14 * t14;
-    const T t18 = t13 * t13;
-    const T t19 = T(3) * t15 * ab_ab * t16 + T(2) * t17 * ab_ap + T(2) * a_minus_b * t18;
-    const T t20 = T(2) * t17 + t19 * t16 * ab_ap - T(2) * t18;
-    F = (T(1) / T(8)) * t19 * w0 * t16 + (T(1) / T(8)) * t20 * seg0 * w1 + (T(1) / T(8)) * w2 * (T(2) * t20 * seg0 * ab_ap + T(4) * t15 * t16 - t19 * ap_ap * t16) * seg0;
-    const T t21 = t17 * t14;
-    const T t22 = t18 * t13;
-    const T t23 = T(8) * t21 * ab_ap + T(5) * t19 * ab_ab * t16 + T(8) * a_minus_b * t22;
-    const T t24 = T(8) * t21 + t16 * ab_ap * t23 - T(8) * t22;
-    G_ap = (T(1) / T(48)) * w0 * t16 * t23 + (T(1) / T(48)) * w2 * (T(2) * seg0 * ab_ap * t24 + T(6) * t19 * t16 - ap_ap * t16 * t23) * seg0 + (T(1) / T(48)) * seg0 * t24 * w1;
-    G_E = (T(1) / T(48)) * (t19 * t16 * w1 + T(8) * t21 * w0 + T(2) * w2 * t20 * seg0 - T(8) * seg5 * t22) * seg0;
+    const T t13 = T(1) / ap_ap;
+    const T t14 = t13 * t13;
+    const T t15 = T(1) / bp_bp;
+    const T t16 = a_minus_b * t15 + J2 * ab_ab + t13 * ab_ap;
+    const T t17 = T(1) / cross_cross;
+    const T t18 = t15 * t15;
+    const T t19 = T(3) * t16 * ab_ab * t17 + T(2) * t14 * ab_ap + T(2) * a_minus_b * t18;
+    const T t20 = T(2) * t14 + t19 * t17 * ab_ap - T(2) * t18;
+    F = (T(1) / T(8)) * w2 * seg0 * (T(2) * t20 * seg0 * ab_ap + T(4) * t16 * t17 - t19 * ap_ap * t17) + (T(1) / T(8)) * t19 * w0 * t17 + (T(1) / T(8)) * t20 * seg0 * w1;
+    const T t21 = t14 * t13;
+    const T t22 = t18 * t15;
+    const T t23 = T(8) * t21 * ab_ap + T(5) * t19 * ab_ab * t17 + T(8) * a_minus_b * t22;
+    const T t24 = T(8) * t21 + t17 * ab_ap * t23 - T(8) * t22;
+    G_ap = (T(1) / T(48)) * w0 * t17 * t23 + (T(1) / T(48)) * w2 * (T(2) * seg0 * ab_ap * t24 + T(6) * t19 * t17 - ap_ap * t17 * t23) * seg0 + (T(1) / T(48)) * seg0 * t24 * w1;
+    G_E = (T(1) / T(48)) * (T(2) * w2 * t20 * seg0 + t19 * t17 * w1 + T(8) * t21 * w0 - T(8) * t22 * seg5) * seg0;
   }
   f = F * length;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
@@ -10790,8 +10792,8 @@ T segment_inverse_i6_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t11 = t9 * t9;
     const T t12 = T(3) * t10 * t8 * ab_ab + T(2) * ab_ap * t7 + T(2) * a_minus_b * t11;
     const T t13 = T(2) * t7 + t8 * ab_ap * t12 - T(2) * t11;
-    const T t14 = T(2) * ab_ap * t13 * seg0 + T(4) * t10 * t8 - t8 * t12 * ap_ap;
-    F = (T(1) / T(8)) * seg0 * (T(2) * ab_ap * seg0 * t14 - t13 * seg0 * ap_ap - T(4) * seg0 * (t9 - t10 * t8 * ab_ap - t6)) * w3 + (T(1) / T(8)) * w1 * t13 * seg0 + (T(1) / T(8)) * t8 * t12 * w0 + (T(1) / T(8)) * seg0 * w2 * t14;
+    const T t14 = t8 * t12 * ap_ap - T(2) * seg0 * ab_ap * t13 - T(4) * t10 * t8;
+    F = (T(1) / T(8)) * seg0 * w1 * t13 + (T(1) / T(8)) * t8 * t12 * w0 - (T(1) / T(8)) * seg0 * (seg0 * t13 * ap_ap + T(2) * seg0 * ab_ap * t14 + T(4) * seg0 * (t9 - t10 * t8 * ab_ap - t6)) * w3 - (T(1) / T(8)) * seg0 * w2 * t14;
   }
   f = length * F;
   return f;
@@ -10855,7 +10857,7 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
+    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
     foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
     foot2 = -(ab0 * exact_cross[1] - exact_cross[0] * ab1) * seg0;
   }
@@ -10880,13 +10882,13 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(6, 8, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = w3 * M_beyond[8] + w2 * M_beyond[7] + w1 * M_beyond[6] + w0 * M_beyond[5];
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
-    const T t8 = T(1) / bp_bp;
+    const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * (T(3) * M_beyond[2] * w3 + T(2) * w2 * M_beyond[1] + t7 * w0 + w1 * M_beyond[0] - seg5 * t10) * seg0;
+    G_E = -(T(1) / T(6)) * (t7 * seg5 - T(3) * M_beyond[2] * w3 - T(2) * w2 * M_beyond[1] - t10 * w0 - w1 * M_beyond[0]) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
@@ -10903,10 +10905,10 @@ std::array<T, 3> segment_inverse_i6_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t21 = t19 * t17;
     const T t22 = T(8) * ab_ap * t16 + T(5) * t13 * t20 * ab_ab + T(8) * a_minus_b * t21;
     const T t23 = T(8) * t21 - t13 * ab_ap * t22 - T(8) * t16;
-    const T t24 = T(2) * t19 - t13 * ab_ap * t20 - T(2) * t15;
-    const T t25 = t13 * ap_ap * t22 + T(2) * ab_ap * t23 * seg0 - T(6) * t13 * t20;
-    G_ap = (T(1) / T(48)) * t13 * t22 * w0 - (T(1) / T(48)) * w1 * t23 * seg0 - (T(1) / T(48)) * (T(6) * t24 * seg0 + T(2) * t25 * ab_ap * seg0 - t23 * ap_ap * seg0) * seg0 * w3 - (T(1) / T(48)) * t25 * w2 * seg0;
-    G_E = -(T(1) / T(48)) * (T(3) * seg0 * (t13 * ap_ap * t20 + T(2) * t24 * ab_ap * seg0 - T(4) * t13 * t18) * w3 + T(8) * seg5 * t21 + T(2) * t24 * w2 * seg0 - T(8) * t16 * w0 - t13 * w1 * t20) * seg0;
+    const T t24 = t13 * ap_ap * t22 + T(2) * ab_ap * t23 * seg0 - T(6) * t13 * t20;
+    const T t25 = T(2) * t19 - t13 * ab_ap * t20 - T(2) * t15;
+    G_ap = (T(1) / T(48)) * t13 * t22 * w0 - (T(1) / T(48)) * t24 * seg0 * w2 - (T(1) / T(48)) * seg0 * w3 * (T(2) * t24 * ab_ap * seg0 + T(6) * t25 * seg0 - t23 * seg0 * ap_ap) - (T(1) / T(48)) * w1 * t23 * seg0;
+    G_E = -(T(1) / T(48)) * seg0 * (T(8) * t21 * seg5 + T(3) * (T(2) * t25 * ab_ap * seg0 + t13 * ap_ap * t20 - T(4) * t13 * t18) * seg0 * w3 + T(2) * t25 * seg0 * w2 - T(8) * t16 * w0 - t13 * w1 * t20);
   }
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -10966,16 +10968,16 @@ T segment_inverse_i6_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
+    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
     foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - exact_cross[0] * ab1);
+    foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -10984,7 +10986,7 @@ T segment_inverse_i6_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -11007,29 +11009,29 @@ T segment_inverse_i6_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
-    G_E = (T(1) / T(6)) * seg0 * (T(3) * w3 * M_beyond[2] + t7 * w0 + T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 - t10 * seg5);
+    G_E = (T(1) / T(6)) * (T(3) * w3 * M_beyond[2] + t7 * w0 + T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 - t10 * seg5) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
     const T t12 = T(1) / t11;
     const T J2 = atan2(t11, ap_bp) * t12;
-    const T t13 = T(1) / ap_ap;
-    const T t14 = T(1) / bp_bp;
-    const T t15 = t14 * a_minus_b + t13 * ab_ap + J2 * ab_ab;
+    const T t13 = T(1) / bp_bp;
+    const T t14 = T(1) / ap_ap;
+    const T t15 = t13 * a_minus_b + t14 * ab_ap + J2 * ab_ab;
     const T t16 = T(1) / cross_cross;
     const T t17 = t14 * t14;
     const T t18 = t13 * t13;
-    const T t19 = T(3) * ab_ab * t15 * t16 + T(2) * t18 * ab_ap + T(2) * t17 * a_minus_b;
-    const T t20 = T(2) * t17 - t19 * t16 * ab_ap - T(2) * t18;
-    const T t21 = T(2) * seg0 * t20 * ab_ap + ap_ap * t19 * t16 - T(4) * t15 * t16;
-    F = (T(1) / T(8)) * seg0 * (T(4) * seg0 * (t13 + t15 * t16 * ab_ap - t14) + seg0 * t20 * ap_ap - T(2) * t21 * seg0 * ab_ap) * w3 + (T(1) / T(8)) * w0 * t19 * t16 - (T(1) / T(8)) * seg0 * t20 * w1 - (T(1) / T(8)) * t21 * seg0 * w2;
-    const T t22 = t17 * t14;
-    const T t23 = t18 * t13;
+    const T t19 = T(3) * ab_ab * t15 * t16 + T(2) * t17 * ab_ap + T(2) * t18 * a_minus_b;
+    const T t20 = T(2) * t18 - t19 * t16 * ab_ap - T(2) * t17;
+    const T t21 = T(4) * t15 * t16 - ap_ap * t19 * t16 - T(2) * t20 * seg0 * ab_ap;
+    F = (T(1) / T(8)) * t21 * w2 * seg0 + (T(1) / T(8)) * (T(2) * t21 * seg0 * ab_ap + t20 * ap_ap * seg0 + T(4) * (t14 + t15 * t16 * ab_ap - t13) * seg0) * w3 * seg0 + (T(1) / T(8)) * w0 * t19 * t16 - (T(1) / T(8)) * t20 * seg0 * w1;
+    const T t22 = t18 * t13;
+    const T t23 = t17 * t14;
     const T t24 = T(8) * t22 * a_minus_b + T(5) * ab_ab * t19 * t16 + T(8) * t23 * ab_ap;
     const T t25 = T(8) * t22 - t24 * t16 * ab_ap - T(8) * t23;
-    const T t26 = ap_ap * t24 * t16 + T(2) * seg0 * t25 * ab_ap - T(6) * t19 * t16;
-    G_ap = (T(1) / T(48)) * w0 * t24 * t16 - (T(1) / T(48)) * seg0 * (T(2) * seg0 * t26 * ab_ap + T(6) * seg0 * t20 - seg0 * t25 * ap_ap) * w3 - (T(1) / T(48)) * seg0 * w2 * t26 - (T(1) / T(48)) * seg0 * t25 * w1;
-    G_E = -(T(1) / T(48)) * seg0 * (T(8) * t22 * seg5 + T(3) * t21 * seg0 * w3 + T(2) * seg0 * w2 * t20 - T(8) * t23 * w0 - t19 * t16 * w1);
+    const T t26 = ap_ap * t24 * t16 + T(2) * t25 * seg0 * ab_ap - T(6) * t19 * t16;
+    G_ap = (T(1) / T(48)) * w0 * t24 * t16 - (T(1) / T(48)) * (T(2) * t26 * seg0 * ab_ap + T(6) * t20 * seg0 - t25 * ap_ap * seg0) * w3 * seg0 - (T(1) / T(48)) * w2 * t26 * seg0 - (T(1) / T(48)) * t25 * seg0 * w1;
+    G_E = -(T(1) / T(48)) * seg0 * (T(2) * w2 * t20 * seg0 + T(8) * t22 * seg5 - T(8) * t23 * w0 - t19 * t16 * w1 - T(3) * t21 * w3 * seg0);
   }
   f = length * F;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
@@ -11232,7 +11234,7 @@ T segment_inverse_i7_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg7 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg7 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -11306,16 +11308,16 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(ab1 * exact_cross[2] - ab2 * exact_cross[1]) * seg0;
-    foot1 = -(ab2 * exact_cross[0] - ab0 * exact_cross[2]) * seg0;
+    foot1 = -seg0 * (ab2 * exact_cross[0] - ab0 * exact_cross[2]);
     foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
@@ -11325,7 +11327,7 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -11333,7 +11335,7 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(7, 9, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - ab_ap * seg0 * M_flat[2] * w0;
+    G_E = M_flat[3] * w0 - seg0 * ab_ap * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -11349,7 +11351,7 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const T* pre, const SegmentPoint<T>&
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
     const T t13 = t12 * t9;
-    const T t14 = -(T(1) / T(7)) * (t8 * w0 - t13 * w0) * seg0;
+    const T t14 = -(T(1) / T(7)) * seg0 * (t8 * w0 - t13 * w0);
     G_E = t14;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -11371,7 +11373,7 @@ std::array<T, 3> segment_inverse_i7_w0_grad(const T* pre, const SegmentPoint<T>&
     const T t29 = t28 * t20;
     const T t30 = t29 * t29;
     const T t31 = t30 * t20;
-    const T t32 = -(T(1) / T(7)) * (t27 * w0 - t31 * w0) * seg0;
+    const T t32 = -(T(1) / T(7)) * seg0 * (t27 * w0 - t31 * w0);
     G_E = t32;
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -11729,7 +11731,7 @@ T segment_inverse_i7_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t9 = t8 * t8;
     const T t10 = t6 * t6;
     const T t11 = T(4) * t4 * (t6 * t5 * a_minus_b + T(2) * t4 * (t7 * ab_ap + t5 * a_minus_b) * ab_ab + t7 * ab_ap * t8) * ab_ab + T(3) * t7 * ab_ap * t9 + T(3) * t10 * t5 * a_minus_b;
-    F = (T(1) / T(15)) * t4 * w0 * t11 - (T(1) / T(15)) * seg0 * (T(3) * t10 * t5 - t4 * ab_ap * t11 - T(3) * t7 * t9) * w1;
+    F = (T(1) / T(15)) * t4 * w0 * t11 - (T(1) / T(15)) * (T(3) * t10 * t5 - t4 * ab_ap * t11 - T(3) * t7 * t9) * w1 * seg0;
   }
   f = length * F;
   return f;
@@ -11793,7 +11795,7 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const T* pre, const SegmentPoint<T>&
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
     foot1 = seg0 * (ab0 * exact_cross[2] - ab2 * exact_cross[0]);
-    foot2 = (exact_cross[0] * ab1 - ab0 * exact_cross[1]) * seg0;
+    foot2 = seg0 * (exact_cross[0] * ab1 - ab0 * exact_cross[1]);
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
   const T ab_bp = ab0 * bp0 + bp1 * ab1 + bp2 * ab2;
@@ -11802,7 +11804,7 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -11827,7 +11829,7 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(7)) * (M_beyond[0] * w1 + t9 * w0 - t14 * seg7) * seg0;
+    G_E = (T(1) / T(7)) * seg0 * (M_beyond[0] * w1 + t9 * w0 - t14 * seg7);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r0;
@@ -11842,15 +11844,15 @@ std::array<T, 3> segment_inverse_i7_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t24 = t22 * t21;
     const T t25 = T(5) * t15 * t18 * ab_ap + T(2) * t23 * ab_ab * t20 + T(5) * t19 * a_minus_b * t24;
     G_ap = (T(1) / T(35)) * seg0 * (t25 * t20 * ab_ap + T(5) * t15 * t18 - T(5) * t19 * t24) * w1 + (T(1) / T(35)) * w0 * t25 * t20;
-    const T t26 = t15 * t15;
-    const T t27 = t26 * t15;
+    const T t26 = t19 * t19;
+    const T t27 = t26 * t19;
     const T t28 = t27 * t27;
-    const T t29 = t28 * t15;
-    const T t30 = t19 * t19;
-    const T t31 = t30 * t19;
+    const T t29 = t28 * t19;
+    const T t30 = t15 * t15;
+    const T t31 = t30 * t15;
     const T t32 = t31 * t31;
-    const T t33 = t32 * t19;
-    G_E = (T(1) / T(105)) * seg0 * (t23 * w1 * t20 + T(15) * t29 * w0 - T(15) * t33 * seg7);
+    const T t33 = t32 * t15;
+    G_E = -(T(1) / T(105)) * seg0 * (T(15) * t29 * seg7 - t23 * w1 * t20 - T(15) * t33 * w0);
   }
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -11907,15 +11909,15 @@ T segment_inverse_i7_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
     foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
@@ -11927,7 +11929,7 @@ T segment_inverse_i7_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -11944,17 +11946,17 @@ T segment_inverse_i7_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_beyond_end<T>(7, 9, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * w1 + w0 * M_beyond[0];
     G_ap = w1 * M_beyond[4] + w0 * M_beyond[3];
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / r1;
+    const T t10 = T(1) / r0;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(7)) * (w0 * t9 + w1 * M_beyond[0] - seg7 * t14) * seg0;
+    G_E = -(T(1) / T(7)) * seg0 * (seg7 * t9 - w0 * t14 - w1 * M_beyond[0]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / cross_cross;
@@ -11965,20 +11967,20 @@ T segment_inverse_i7_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t20 = t19 * t19;
     const T t21 = t20 * t20;
     const T t22 = T(3) * t18 * a_minus_b * t16 + T(3) * t21 * t19 * ab_ap + T(4) * (t17 * a_minus_b * t16 + t20 * t19 * ab_ap + T(2) * (a_minus_b * t16 + t19 * ab_ap) * ab_ab * t15) * ab_ab * t15;
-    F = (T(1) / T(15)) * w0 * t15 * t22 + (T(1) / T(15)) * (t15 * t22 * ab_ap + T(3) * t21 * t19 - T(3) * t18 * t16) * w1 * seg0;
+    F = (T(1) / T(15)) * w0 * t15 * t22 + (T(1) / T(15)) * (t15 * t22 * ab_ap + T(3) * t21 * t19 - T(3) * t18 * t16) * seg0 * w1;
     const T t23 = t21 * t20;
     const T t24 = t18 * t17;
     const T t25 = T(2) * ab_ab * t15 * t22 + T(5) * t23 * t19 * ab_ap + T(5) * t24 * a_minus_b * t16;
-    G_ap = (T(1) / T(35)) * w0 * t25 * t15 - (T(1) / T(35)) * (T(5) * t24 * t16 - t25 * t15 * ab_ap - T(5) * t23 * t19) * w1 * seg0;
-    const T t26 = t19 * t19;
-    const T t27 = t26 * t19;
+    G_ap = (T(1) / T(35)) * w0 * t25 * t15 - (T(1) / T(35)) * (T(5) * t24 * t16 - t25 * t15 * ab_ap - T(5) * t23 * t19) * seg0 * w1;
+    const T t26 = t16 * t16;
+    const T t27 = t26 * t16;
     const T t28 = t27 * t27;
-    const T t29 = t28 * t19;
-    const T t30 = t16 * t16;
-    const T t31 = t30 * t16;
+    const T t29 = t28 * t16;
+    const T t30 = t19 * t19;
+    const T t31 = t30 * t19;
     const T t32 = t31 * t31;
-    const T t33 = t32 * t16;
-    G_E = (T(1) / T(105)) * (T(15) * w0 * t29 + w1 * t15 * t22 - T(15) * seg7 * t33) * seg0;
+    const T t33 = t32 * t19;
+    G_E = -(T(1) / T(105)) * seg0 * (T(15) * seg7 * t29 - T(15) * w0 * t33 - w1 * t15 * t22);
   }
   f = F * length;
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
@@ -12190,7 +12192,7 @@ T segment_inverse_i7_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -12215,7 +12217,7 @@ T segment_inverse_i7_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t11 = t9 * t9;
     const T t12 = T(3) * t5 * ab_ap * t7 + T(4) * t4 * t10 * ab_ab + T(3) * t11 * t8 * a_minus_b;
     const T t13 = T(3) * t11 * t8 - T(3) * t5 * t7 - t4 * ab_ap * t12;
-    F = (T(1) / T(15)) * t4 * w0 * t12 - (T(1) / T(15)) * w1 * seg0 * t13 - (T(1) / T(15)) * (T(2) * ab_ap * seg0 * t13 + t4 * ap_ap * t12 - T(5) * t4 * t10) * seg0 * w2;
+    F = (T(1) / T(15)) * t4 * w0 * t12 - (T(1) / T(15)) * (T(2) * seg0 * ab_ap * t13 + t4 * ap_ap * t12 - T(5) * t4 * t10) * seg0 * w2 - (T(1) / T(15)) * seg0 * w1 * t13;
   }
   f = length * F;
   return f;
@@ -12289,7 +12291,7 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -12314,7 +12316,7 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(7)) * (T(2) * M_beyond[1] * w2 + w0 * t9 + M_beyond[0] * w1 - seg7 * t14) * seg0;
+    G_E = (T(1) / T(7)) * seg0 * (T(2) * M_beyond[1] * w2 + w0 * t9 + M_beyond[0] * w1 - seg7 * t14);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / cross_cross;
@@ -12329,7 +12331,7 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t24 = t21 * t20;
     const T t25 = T(2) * ab_ab * t22 * t15 + T(5) * a_minus_b * t23 * t16 + T(5) * ab_ap * t19 * t24;
     const T t26 = T(5) * t19 * t24 + t15 * ab_ap * t25 - T(5) * t23 * t16;
-    G_ap = (T(1) / T(35)) * t15 * w0 * t25 + (T(1) / T(35)) * w1 * t26 * seg0 + (T(1) / T(105)) * (T(6) * ab_ap * t26 * seg0 + T(7) * t22 * t15 - T(3) * t15 * ap_ap * t25) * w2 * seg0;
+    G_ap = (T(1) / T(35)) * t15 * w0 * t25 + (T(1) / T(105)) * (T(7) * t22 * t15 + T(6) * ab_ap * seg0 * t26 - T(3) * t15 * ap_ap * t25) * seg0 * w2 + (T(1) / T(35)) * seg0 * w1 * t26;
     const T t27 = t19 * t19;
     const T t28 = t27 * t19;
     const T t29 = t28 * t28;
@@ -12338,7 +12340,7 @@ std::array<T, 3> segment_inverse_i7_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t32 = t31 * t16;
     const T t33 = t32 * t32;
     const T t34 = t33 * t16;
-    G_E = (T(1) / T(105)) * (T(15) * w0 * t30 + t22 * t15 * w1 + T(2) * (t22 * t15 * ab_ap + T(3) * t19 * t21 - T(3) * t18 * t16) * w2 * seg0 - T(15) * seg7 * t34) * seg0;
+    G_E = (T(1) / T(105)) * seg0 * (T(2) * (t22 * t15 * ab_ap + T(3) * t19 * t21 - T(3) * t18 * t16) * seg0 * w2 + T(15) * w0 * t30 + t22 * t15 * w1 - T(15) * seg7 * t34);
   }
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
   grad[1] = (G_ap * foot1 - ab1 * G_E) * g_factor;
@@ -12398,14 +12400,14 @@ T segment_inverse_i7_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = plain_cross_cross;
     foot0 = ap0 - ab_ap * seg0 * ab0;
     foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp0 * bp0 + bp2 * bp2 + bp1 * bp1;
@@ -12416,7 +12418,7 @@ T segment_inverse_i7_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -12426,7 +12428,7 @@ T segment_inverse_i7_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[2] * w2 + M_flat[0] * w0 + M_flat[1] * w1;
     const T t4 = M_flat[4] * w0 + w2 * M_flat[6] + w1 * M_flat[5];
     G_ap = t4;
-    G_E = M_flat[7] * w2 + M_flat[5] * w0 + w1 * M_flat[6] - ab_ap * seg0 * t4;
+    G_E = M_flat[7] * w2 + M_flat[5] * w0 + w1 * M_flat[6] - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -12443,34 +12445,34 @@ T segment_inverse_i7_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(7)) * seg0 * (w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] + t9 * w0 - seg7 * t14);
+    G_E = (T(1) / T(7)) * (w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] + t9 * w0 - t14 * seg7) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t15 = T(1) / r1;
+    const T t15 = T(1) / r0;
     const T t16 = t15 * t15;
-    const T t17 = t16 * t16;
-    const T t18 = T(1) / r0;
-    const T t19 = t18 * t18;
-    const T t20 = t19 * t19;
-    const T t21 = T(1) / cross_cross;
-    const T t22 = ab_ap * t19 * t18 + t16 * a_minus_b * t15 + T(2) * (a_minus_b * t15 + ab_ap * t18) * ab_ab * t21;
-    const T t23 = T(3) * t17 * a_minus_b * t15 + T(3) * ab_ap * t20 * t18 + T(4) * t22 * ab_ab * t21;
-    const T t24 = T(3) * t17 * t15 - T(3) * t20 * t18 - ab_ap * t23 * t21;
-    F = (T(1) / T(15)) * t23 * t21 * w0 + (T(1) / T(15)) * seg0 * (T(5) * t22 * t21 - T(2) * ab_ap * seg0 * t24 - t23 * ap_ap * t21) * w2 - (T(1) / T(15)) * seg0 * w1 * t24;
-    const T t25 = t20 * t19;
-    const T t26 = t17 * t16;
-    const T t27 = T(5) * ab_ap * t25 * t18 + T(2) * t23 * ab_ab * t21 + T(5) * t26 * a_minus_b * t15;
-    const T t28 = T(5) * t26 * t15 - T(5) * t25 * t18 - ab_ap * t27 * t21;
-    G_ap = (T(1) / T(35)) * t27 * t21 * w0 - (T(1) / T(35)) * seg0 * w1 * t28 - (T(1) / T(105)) * seg0 * (T(3) * t27 * ap_ap * t21 + T(6) * ab_ap * seg0 * t28 - T(7) * t23 * t21) * w2;
-    const T t29 = t18 * t18;
-    const T t30 = t29 * t18;
+    const T t17 = T(1) / r1;
+    const T t18 = t17 * t17;
+    const T t19 = T(1) / cross_cross;
+    const T t20 = ab_ap * t16 * t15 + t18 * a_minus_b * t17 + T(2) * (a_minus_b * t17 + ab_ap * t15) * ab_ab * t19;
+    const T t21 = t18 * t18;
+    const T t22 = t16 * t16;
+    const T t23 = T(3) * t21 * a_minus_b * t17 + T(3) * ab_ap * t22 * t15 + T(4) * t20 * ab_ab * t19;
+    const T t24 = T(3) * t21 * t17 - T(3) * t22 * t15 - ab_ap * t23 * t19;
+    F = (T(1) / T(15)) * w2 * seg0 * (T(5) * t20 * t19 - t23 * ap_ap * t19 - T(2) * ab_ap * t24 * seg0) + (T(1) / T(15)) * t23 * t19 * w0 - (T(1) / T(15)) * w1 * t24 * seg0;
+    const T t25 = t22 * t16;
+    const T t26 = t21 * t18;
+    const T t27 = T(5) * ab_ap * t25 * t15 + T(2) * t23 * ab_ab * t19 + T(5) * t26 * a_minus_b * t17;
+    const T t28 = T(5) * t26 * t17 - T(5) * t25 * t15 - ab_ap * t27 * t19;
+    G_ap = (T(1) / T(35)) * t27 * t19 * w0 - (T(1) / T(105)) * (T(3) * t27 * ap_ap * t19 + T(6) * ab_ap * t28 * seg0 - T(7) * t23 * t19) * w2 * seg0 - (T(1) / T(35)) * w1 * t28 * seg0;
+    const T t29 = t15 * t15;
+    const T t30 = t29 * t15;
     const T t31 = t30 * t30;
-    const T t32 = t31 * t18;
-    const T t33 = t15 * t15;
-    const T t34 = t33 * t15;
+    const T t32 = t31 * t15;
+    const T t33 = t17 * t17;
+    const T t34 = t33 * t17;
     const T t35 = t34 * t34;
-    const T t36 = t35 * t15;
-    G_E = (T(1) / T(105)) * seg0 * (t23 * w1 * t21 + T(15) * t32 * w0 - T(2) * seg0 * t24 * w2 - T(15) * seg7 * t36);
+    const T t36 = t35 * t17;
+    G_E = (T(1) / T(105)) * (t23 * w1 * t19 + T(15) * t32 * w0 - T(2) * t24 * w2 * seg0 - T(15) * t36 * seg7) * seg0;
   }
   f = length * F;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -12687,7 +12689,7 @@ T segment_inverse_i7_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -12702,18 +12704,18 @@ T segment_inverse_i7_w3_f(const T* pre, const SegmentPoint<T>& point) {
     F = w0 * M_beyond[0] + w3 * M_beyond[3] + w1 * M_beyond[1] + M_beyond[2] * w2;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t4 = T(1) / cross_cross;
-    const T t5 = T(1) / r1;
+    const T t4 = T(1) / r0;
+    const T t5 = t4 * t4;
     const T t6 = t5 * t5;
-    const T t7 = T(1) / r0;
+    const T t7 = T(1) / r1;
     const T t8 = t7 * t7;
-    const T t9 = t6 * t5 * a_minus_b + t7 * ab_ap * t8 + T(2) * ab_ab * t4 * (t7 * ab_ap + t5 * a_minus_b);
-    const T t10 = t8 * t8;
-    const T t11 = t6 * t6;
-    const T t12 = T(3) * t7 * ab_ap * t10 + T(3) * t11 * t5 * a_minus_b + T(4) * ab_ab * t4 * t9;
-    const T t13 = T(3) * t7 * t10 + t12 * t4 * ab_ap - T(3) * t11 * t5;
-    const T t14 = T(5) * t4 * t9 + T(2) * ab_ap * t13 * seg0 - t12 * t4 * ap_ap;
-    F = (T(1) / T(15)) * w3 * (T(2) * t14 * ab_ap * seg0 - t13 * ap_ap * seg0 - T(5) * (t6 * t5 - t4 * ab_ap * t9 - t7 * t8) * seg0) * seg0 + (T(1) / T(15)) * t14 * w2 * seg0 + (T(1) / T(15)) * w0 * t12 * t4 + (T(1) / T(15)) * w1 * t13 * seg0;
+    const T t9 = t8 * t8;
+    const T t10 = T(1) / cross_cross;
+    const T t11 = t8 * t7 * a_minus_b + t4 * ab_ap * t5 + T(2) * ab_ab * t10 * (t4 * ab_ap + t7 * a_minus_b);
+    const T t12 = T(3) * t4 * ab_ap * t6 + T(3) * t9 * t7 * a_minus_b + T(4) * ab_ab * t10 * t11;
+    const T t13 = T(3) * t4 * t6 + t12 * t10 * ab_ap - T(3) * t9 * t7;
+    const T t14 = T(5) * t10 * t11 + T(2) * seg0 * ab_ap * t13 - t12 * t10 * ap_ap;
+    F = (T(1) / T(15)) * w1 * seg0 * t13 + (T(1) / T(15)) * w0 * t12 * t10 + (T(1) / T(15)) * seg0 * t14 * w2 - (T(1) / T(15)) * w3 * (seg0 * t13 * ap_ap + T(5) * seg0 * (t8 * t7 - t10 * ab_ap * t11 - t4 * t5) - T(2) * seg0 * ab_ap * t14) * seg0;
   }
   f = length * F;
   return f;
@@ -12769,15 +12771,15 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
     foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
     foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
@@ -12788,7 +12790,7 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -12797,7 +12799,7 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(7, 9, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[6] * w1 + M_flat[5] * w0 + w2 * M_flat[7] + M_flat[8] * w3;
     G_ap = t4;
-    G_E = M_flat[7] * w1 + M_flat[8] * w2 + M_flat[9] * w3 + M_flat[6] * w0 - seg0 * t4 * ab_ap;
+    G_E = M_flat[7] * w1 + M_flat[8] * w2 + M_flat[9] * w3 + M_flat[6] * w0 - t4 * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -12829,9 +12831,9 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t25 = T(4) * t24 * ab_ab * t23 + T(3) * t15 * t17 * ab_ap + T(3) * t21 * t19 * a_minus_b;
     const T t26 = T(5) * t15 * t18 * ab_ap + T(5) * t22 * t19 * a_minus_b + T(2) * t25 * ab_ab * t23;
     const T t27 = t26 * t23 * ab_ap + T(5) * t15 * t18 - T(5) * t22 * t19;
-    const T t28 = T(3) * ap_ap * t26 * t23 - T(6) * seg0 * t27 * ab_ap - T(7) * t25 * t23;
+    const T t28 = T(6) * t27 * seg0 * ab_ap + T(7) * t25 * t23 - T(3) * ap_ap * t26 * t23;
     const T t29 = t25 * t23 * ab_ap + T(3) * t15 * t17 - T(3) * t21 * t19;
-    G_ap = (T(1) / T(35)) * seg0 * t27 * w1 + (T(1) / T(35)) * w0 * t26 * t23 - (T(1) / T(105)) * seg0 * (T(3) * seg0 * ap_ap * t27 + T(2) * seg0 * t28 * ab_ap - T(7) * seg0 * t29) * w3 - (T(1) / T(105)) * seg0 * w2 * t28;
+    G_ap = (T(1) / T(35)) * t27 * seg0 * w1 + (T(1) / T(105)) * w3 * seg0 * (T(2) * seg0 * t28 * ab_ap + T(7) * t29 * seg0 - T(3) * ap_ap * t27 * seg0) + (T(1) / T(35)) * w0 * t26 * t23 + (T(1) / T(105)) * w2 * seg0 * t28;
     const T t30 = t15 * t15;
     const T t31 = t30 * t15;
     const T t32 = t31 * t31;
@@ -12840,7 +12842,7 @@ std::array<T, 3> segment_inverse_i7_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t35 = t34 * t19;
     const T t36 = t35 * t35;
     const T t37 = t36 * t19;
-    G_E = (T(1) / T(105)) * seg0 * (t25 * t23 * w1 + T(3) * seg0 * (T(5) * t24 * t23 + T(2) * seg0 * t29 * ab_ap - ap_ap * t25 * t23) * w3 + T(15) * t33 * w0 + T(2) * seg0 * w2 * t29 - T(15) * seg7 * t37);
+    G_E = (T(1) / T(105)) * seg0 * (t25 * t23 * w1 + T(2) * w2 * t29 * seg0 + T(15) * t33 * w0 + T(3) * w3 * (T(5) * t24 * t23 + T(2) * t29 * seg0 * ab_ap - ap_ap * t25 * t23) * seg0 - T(15) * seg7 * t37);
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = -g_factor * (G_E * ab1 - G_ap * foot1);
@@ -12899,9 +12901,9 @@ T segment_inverse_i7_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab_ap * ab1;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -12919,7 +12921,7 @@ T segment_inverse_i7_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -12929,53 +12931,53 @@ T segment_inverse_i7_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w2 * M_flat[2] + w1 * M_flat[1] + M_flat[0] * w0 + M_flat[3] * w3;
     const T t4 = M_flat[6] * w1 + M_flat[7] * w2 + M_flat[8] * w3 + M_flat[5] * w0;
     G_ap = t4;
-    G_E = M_flat[9] * w3 + w1 * M_flat[7] + M_flat[6] * w0 + w2 * M_flat[8] - t4 * ab_ap * seg0;
+    G_E = M_flat[9] * w3 + w1 * M_flat[7] + M_flat[6] * w0 + w2 * M_flat[8] - seg0 * t4 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(7, 9, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = w1 * M_beyond[1] + M_beyond[3] * w3 + w2 * M_beyond[2] + M_beyond[0] * w0;
     G_ap = w3 * M_beyond[8] + w0 * M_beyond[5] + w2 * M_beyond[7] + w1 * M_beyond[6];
-    const T t5 = T(1) / r1;
+    const T t5 = T(1) / r0;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / r0;
+    const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(7)) * seg0 * (t9 * seg7 - T(3) * w3 * M_beyond[2] - T(2) * w2 * M_beyond[1] - w0 * t14 - w1 * M_beyond[0]);
+    G_E = (T(1) / T(7)) * seg0 * (T(3) * w3 * M_beyond[2] + T(2) * w2 * M_beyond[1] + w0 * t9 + w1 * M_beyond[0] - t14 * seg7);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / cross_cross;
-    const T t16 = T(1) / r0;
+    const T t16 = T(1) / r1;
     const T t17 = t16 * t16;
-    const T t18 = T(1) / r1;
-    const T t19 = t18 * t18;
-    const T t20 = ab_ap * t17 * t16 + t18 * t19 * a_minus_b + T(2) * ab_ab * t15 * (ab_ap * t16 + t18 * a_minus_b);
-    const T t21 = t19 * t19;
-    const T t22 = t17 * t17;
-    const T t23 = T(3) * t18 * t21 * a_minus_b + T(4) * ab_ab * t15 * t20 + T(3) * ab_ap * t22 * t16;
-    const T t24 = t15 * ab_ap * t23 + T(3) * t22 * t16 - T(3) * t18 * t21;
-    const T t25 = T(5) * t15 * t20 + T(2) * t24 * ab_ap * seg0 - t15 * ap_ap * t23;
-    F = (T(1) / T(15)) * seg0 * w2 * t25 + (T(1) / T(15)) * t15 * t23 * w0 + (T(1) / T(15)) * w1 * t24 * seg0 + (T(1) / T(15)) * seg0 * (T(2) * ab_ap * seg0 * t25 + T(5) * seg0 * (t17 * t16 + t15 * ab_ap * t20 - t18 * t19) - t24 * seg0 * ap_ap) * w3;
-    const T t26 = t22 * t17;
-    const T t27 = t21 * t19;
-    const T t28 = T(5) * ab_ap * t26 * t16 + T(5) * t18 * t27 * a_minus_b + T(2) * ab_ab * t15 * t23;
-    const T t29 = t15 * ab_ap * t28 + T(5) * t26 * t16 - T(5) * t18 * t27;
-    const T t30 = T(3) * t15 * t28 * ap_ap - T(6) * ab_ap * seg0 * t29 - T(7) * t15 * t23;
-    G_ap = (T(1) / T(35)) * t15 * t28 * w0 + (T(1) / T(105)) * seg0 * (T(7) * t24 * seg0 - T(2) * t30 * ab_ap * seg0 - T(3) * seg0 * t29 * ap_ap) * w3 + (T(1) / T(35)) * w1 * seg0 * t29 - (T(1) / T(105)) * t30 * seg0 * w2;
-    const T t31 = t18 * t18;
-    const T t32 = t31 * t18;
+    const T t18 = t17 * t17;
+    const T t19 = T(1) / r0;
+    const T t20 = t19 * t19;
+    const T t21 = ab_ap * t20 * t19 + t16 * t17 * a_minus_b + T(2) * ab_ab * t15 * (ab_ap * t19 + t16 * a_minus_b);
+    const T t22 = t20 * t20;
+    const T t23 = T(3) * t16 * t18 * a_minus_b + T(4) * ab_ab * t15 * t21 + T(3) * ab_ap * t22 * t19;
+    const T t24 = t15 * ab_ap * t23 + T(3) * t22 * t19 - T(3) * t16 * t18;
+    const T t25 = T(2) * seg0 * t24 * ab_ap + T(5) * t15 * t21 - t15 * ap_ap * t23;
+    F = (T(1) / T(15)) * seg0 * w1 * t24 + (T(1) / T(15)) * t15 * t23 * w0 + (T(1) / T(15)) * seg0 * w3 * (T(5) * seg0 * (t20 * t19 + t15 * ab_ap * t21 - t16 * t17) + T(2) * seg0 * ab_ap * t25 - seg0 * t24 * ap_ap) + (T(1) / T(15)) * seg0 * w2 * t25;
+    const T t26 = t22 * t20;
+    const T t27 = t18 * t17;
+    const T t28 = T(5) * ab_ap * t26 * t19 + T(5) * t16 * t27 * a_minus_b + T(2) * ab_ab * t15 * t23;
+    const T t29 = t15 * ab_ap * t28 + T(5) * t26 * t19 - T(5) * t16 * t27;
+    const T t30 = T(6) * seg0 * ab_ap * t29 + T(7) * t15 * t23 - T(3) * t15 * t28 * ap_ap;
+    G_ap = (T(1) / T(35)) * t15 * t28 * w0 + (T(1) / T(105)) * seg0 * w2 * t30 + (T(1) / T(35)) * seg0 * w1 * t29 + (T(1) / T(105)) * seg0 * (T(7) * seg0 * t24 + T(2) * seg0 * ab_ap * t30 - T(3) * seg0 * t29 * ap_ap) * w3;
+    const T t31 = t19 * t19;
+    const T t32 = t31 * t19;
     const T t33 = t32 * t32;
-    const T t34 = t33 * t18;
+    const T t34 = t33 * t19;
     const T t35 = t16 * t16;
     const T t36 = t35 * t16;
     const T t37 = t36 * t36;
     const T t38 = t37 * t16;
-    G_E = -(T(1) / T(105)) * seg0 * (T(15) * t34 * seg7 - T(2) * t24 * seg0 * w2 - w1 * t15 * t23 - T(3) * seg0 * w3 * t25 - T(15) * w0 * t38);
+    G_E = (T(1) / T(105)) * seg0 * (T(3) * seg0 * t25 * w3 + T(2) * seg0 * t24 * w2 + w1 * t15 * t23 + T(15) * w0 * t34 - T(15) * t38 * seg7);
   }
   f = length * F;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -13182,7 +13184,7 @@ T segment_inverse_i8_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp1 * ap1 + bp0 * ap0 + bp2 * ap2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg5 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg5 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -13261,7 +13263,7 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const T* pre, const SegmentPoint<T>&
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -13277,7 +13279,7 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -13285,7 +13287,7 @@ std::array<T, 3> segment_inverse_i8_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(8, 10, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = w0 * M_flat[2];
-    G_E = M_flat[3] * w0 - w0 * seg0 * ab_ap * M_flat[2];
+    G_E = M_flat[3] * w0 - seg0 * w0 * ab_ap * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -13370,15 +13372,15 @@ T segment_inverse_i8_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
+    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
@@ -13389,7 +13391,7 @@ T segment_inverse_i8_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -13398,7 +13400,7 @@ T segment_inverse_i8_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(8, 10, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * w0;
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - ab_ap * seg0 * M_flat[2] * w0;
+    G_E = M_flat[3] * w0 - seg0 * ab_ap * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -13411,7 +13413,7 @@ T segment_inverse_i8_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t7 = T(1) / ap_ap;
     const T t8 = t7 * t7;
     const T t9 = t8 * t8;
-    const T t10 = -(T(1) / T(8)) * (t6 * w0 - t9 * w0) * seg0;
+    const T t10 = -(T(1) / T(8)) * seg0 * (t6 * w0 - t9 * w0);
     G_E = t10;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -13430,7 +13432,7 @@ T segment_inverse_i8_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t21 = t15 * t15;
     const T t22 = t17 * t17;
     G_ap = (T(1) / T(384)) * (T(48) * t21 * a_minus_b + T(7) * t20 * ab_ab * t13 + T(48) * ab_ap * t22) * t13 * w0;
-    const T t23 = -(T(1) / T(8)) * (t21 * w0 - t22 * w0) * seg0;
+    const T t23 = -(T(1) / T(8)) * seg0 * (t21 * w0 - t22 * w0);
     G_E = t23;
   }
   f = length * F;
@@ -13629,7 +13631,7 @@ T segment_inverse_i8_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap0 * bp0 + ap2 * bp2 + ap1 * bp1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -13655,7 +13657,7 @@ T segment_inverse_i8_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = T(8) * t9 * a_minus_b + T(8) * ab_ap * t12 + T(5) * t6 * ab_ab * (T(2) * ab_ap * t11 + T(2) * t8 * a_minus_b + T(3) * t6 * (J2 * ab_ab + t7 * a_minus_b + ab_ap * t10) * ab_ab);
-    F = (T(1) / T(48)) * t6 * w0 * t13 - (T(1) / T(48)) * (T(8) * t9 - T(8) * t12 - t6 * ab_ap * t13) * seg0 * w1;
+    F = (T(1) / T(48)) * t6 * w0 * t13 - (T(1) / T(48)) * seg0 * (T(8) * t9 - T(8) * t12 - t6 * ab_ap * t13) * w1;
   }
   f = length * F;
   return f;
@@ -13736,7 +13738,7 @@ std::array<T, 3> segment_inverse_i8_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(8, 10, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w0 * M_flat[3] + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w0 * M_flat[4] + M_flat[5] * w1 - ab_ap * t4 * seg0;
+    G_E = w0 * M_flat[4] + M_flat[5] * w1 - ab_ap * seg0 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -13766,7 +13768,7 @@ std::array<T, 3> segment_inverse_i8_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t22 = t16 * t16;
     const T t23 = T(7) * t13 * t20 * ab_ab + T(48) * a_minus_b * t21 + T(48) * ab_ap * t22;
     G_ap = (T(1) / T(384)) * t13 * w0 * t23 + (T(1) / T(384)) * seg0 * w1 * (t13 * ab_ap * t23 + T(48) * t22 - T(48) * t21);
-    G_E = -(T(1) / T(384)) * (T(48) * t21 * seg5 - t13 * t20 * w1 - T(48) * w0 * t22) * seg0;
+    G_E = (T(1) / T(384)) * seg0 * (t13 * t20 * w1 + T(48) * w0 * t22 - T(48) * t21 * seg5);
   }
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
@@ -13823,17 +13825,17 @@ T segment_inverse_i8_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
+    foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + ab2 * bp2 + ab1 * bp1;
@@ -13842,7 +13844,7 @@ T segment_inverse_i8_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -13852,7 +13854,7 @@ T segment_inverse_i8_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = M_flat[1] * w1 + M_flat[0] * w0;
     const T t4 = M_flat[3] * w0 + M_flat[4] * w1;
     G_ap = t4;
-    G_E = M_flat[4] * w0 + M_flat[5] * w1 - t4 * seg0 * ab_ap;
+    G_E = M_flat[4] * w0 + M_flat[5] * w1 - t4 * ab_ap * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -13865,7 +13867,7 @@ T segment_inverse_i8_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = -(T(1) / T(8)) * seg0 * (t7 * seg5 - w0 * t10 - M_beyond[0] * w1);
+    G_E = -(T(1) / T(8)) * (seg5 * t7 - w0 * t10 - M_beyond[0] * w1) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
@@ -13879,12 +13881,12 @@ T segment_inverse_i8_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t18 = t17 * t16;
     const T t19 = t15 * t14;
     const T t20 = T(5) * t13 * (T(2) * t15 * a_minus_b + T(3) * t13 * (ab_ap * t16 + t14 * a_minus_b + J2 * ab_ab) * ab_ab + T(2) * ab_ap * t17) * ab_ab + T(8) * ab_ap * t18 + T(8) * t19 * a_minus_b;
-    F = (T(1) / T(48)) * t13 * t20 * w0 + (T(1) / T(48)) * (T(8) * t18 + t13 * t20 * ab_ap - T(8) * t19) * seg0 * w1;
+    F = (T(1) / T(48)) * t13 * t20 * w0 + (T(1) / T(48)) * (T(8) * t18 + t13 * t20 * ab_ap - T(8) * t19) * w1 * seg0;
     const T t21 = t17 * t17;
     const T t22 = t15 * t15;
     const T t23 = T(48) * t22 * a_minus_b + T(7) * t13 * t20 * ab_ab + T(48) * ab_ap * t21;
-    G_ap = (T(1) / T(384)) * (T(48) * t21 + t13 * ab_ap * t23 - T(48) * t22) * seg0 * w1 + (T(1) / T(384)) * t13 * w0 * t23;
-    G_E = -(T(1) / T(384)) * seg0 * (T(48) * t22 * seg5 - T(48) * w0 * t21 - t13 * t20 * w1);
+    G_ap = (T(1) / T(384)) * (T(48) * t21 + t13 * ab_ap * t23 - T(48) * t22) * w1 * seg0 + (T(1) / T(384)) * t13 * w0 * t23;
+    G_E = -(T(1) / T(384)) * (T(48) * seg5 * t22 - T(48) * w0 * t21 - t13 * t20 * w1) * seg0;
   }
   f = length * F;
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
@@ -14086,7 +14088,7 @@ T segment_inverse_i8_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap2 * bp2 + bp1 * ap1 + bp0 * ap0;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -14114,7 +14116,7 @@ T segment_inverse_i8_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t13 = t11 * t10;
     const T t14 = T(8) * t9 * ab_ap + T(5) * ab_ab * t12 * t6 + T(8) * a_minus_b * t13;
     const T t15 = t6 * ab_ap * t14 + T(8) * t9 - T(8) * t13;
-    F = (T(1) / T(48)) * t6 * w0 * t14 + (T(1) / T(48)) * w2 * (T(6) * t12 * t6 + T(2) * t15 * ab_ap * seg0 - ap_ap * t6 * t14) * seg0 + (T(1) / T(48)) * t15 * seg0 * w1;
+    F = (T(1) / T(48)) * t6 * w0 * t14 + (T(1) / T(48)) * t15 * seg0 * w1 + (T(1) / T(48)) * w2 * seg0 * (T(6) * t12 * t6 + T(2) * t15 * seg0 * ab_ap - ap_ap * t6 * t14);
   }
   f = F * length;
   return f;
@@ -14187,7 +14189,7 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const T* pre, const SegmentPoint<T>&
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -14196,7 +14198,7 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(8, 10, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w0 * M_flat[4] + M_flat[6] * w2 + w1 * M_flat[5];
     G_ap = t4;
-    G_E = w2 * M_flat[7] + w0 * M_flat[5] + M_flat[6] * w1 - ab_ap * t4 * seg0;
+    G_E = w2 * M_flat[7] + w0 * M_flat[5] + M_flat[6] * w1 - ab_ap * seg0 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -14226,8 +14228,8 @@ std::array<T, 3> segment_inverse_i8_w2_grad(const T* pre, const SegmentPoint<T>&
     const T t22 = t18 * t18;
     const T t23 = T(48) * t16 * a_minus_b + T(7) * ab_ab * t13 * t21 + T(48) * ab_ap * t22;
     const T t24 = T(48) * t16 - t13 * ab_ap * t23 - T(48) * t22;
-    G_ap = (T(1) / T(384)) * w0 * t13 * t23 - (T(1) / T(384)) * w2 * (T(2) * ab_ap * t24 * seg0 + t13 * ap_ap * t23 - T(8) * t13 * t21) * seg0 - (T(1) / T(384)) * w1 * t24 * seg0;
-    G_E = -(T(1) / T(384)) * (T(2) * (T(8) * t20 - T(8) * t19 - t13 * ab_ap * t21) * w2 * seg0 + T(48) * seg5 * t16 - T(48) * w0 * t22 - t13 * w1 * t21) * seg0;
+    G_ap = (T(1) / T(384)) * w0 * t13 * t23 - (T(1) / T(384)) * w2 * (t13 * ap_ap * t23 + T(2) * ab_ap * seg0 * t24 - T(8) * t13 * t21) * seg0 - (T(1) / T(384)) * seg0 * w1 * t24;
+    G_E = -(T(1) / T(384)) * seg0 * (T(48) * seg5 * t16 + T(2) * (T(8) * t20 - T(8) * t19 - t13 * ab_ap * t21) * w2 * seg0 - T(48) * w0 * t22 - t13 * w1 * t21);
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = -g_factor * (G_E * ab1 - foot1 * G_ap);
@@ -14285,9 +14287,9 @@ T segment_inverse_i8_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -14304,7 +14306,7 @@ T segment_inverse_i8_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -14314,7 +14316,7 @@ T segment_inverse_i8_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w2 * M_flat[2] + w1 * M_flat[1] + w0 * M_flat[0];
     const T t4 = w0 * M_flat[4] + M_flat[6] * w2 + w1 * M_flat[5];
     G_ap = t4;
-    G_E = M_flat[7] * w2 + M_flat[6] * w1 + w0 * M_flat[5] - ab_ap * seg0 * t4;
+    G_E = M_flat[7] * w2 + M_flat[6] * w1 + w0 * M_flat[5] - seg0 * ab_ap * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -14327,29 +14329,29 @@ T segment_inverse_i8_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t8 = T(1) / bp_bp;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = (T(1) / T(8)) * seg0 * (w0 * t7 + T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] - seg5 * t10);
+    G_E = (T(1) / T(8)) * (w0 * t7 + T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] - t10 * seg5) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
     const T t12 = T(1) / t11;
     const T J2 = atan2(t11, ap_bp) * t12;
-    const T t13 = T(1) / bp_bp;
-    const T t14 = T(1) / ap_ap;
-    const T t15 = T(1) / cross_cross;
-    const T t16 = t14 * t14;
-    const T t17 = t13 * t13;
-    const T t18 = T(3) * (ab_ab * J2 + t13 * a_minus_b + ab_ap * t14) * ab_ab * t15 + T(2) * ab_ap * t16 + T(2) * t17 * a_minus_b;
-    const T t19 = t16 * t14;
-    const T t20 = t17 * t13;
-    const T t21 = T(5) * t18 * ab_ab * t15 + T(8) * t20 * a_minus_b + T(8) * ab_ap * t19;
-    const T t22 = T(8) * t19 + t21 * t15 * ab_ap - T(8) * t20;
-    F = (T(1) / T(48)) * seg0 * w2 * (T(6) * t18 * t15 + T(2) * t22 * ab_ap * seg0 - t21 * t15 * ap_ap) + (T(1) / T(48)) * t21 * t15 * w0 + (T(1) / T(48)) * t22 * seg0 * w1;
-    const T t23 = t17 * t17;
-    const T t24 = t16 * t16;
-    const T t25 = T(7) * t21 * ab_ab * t15 + T(48) * t23 * a_minus_b + T(48) * ab_ap * t24;
-    const T t26 = t15 * ab_ap * t25 + T(48) * t24 - T(48) * t23;
-    G_ap = (T(1) / T(384)) * t15 * w0 * t25 + (T(1) / T(384)) * seg0 * w1 * t26 + (T(1) / T(384)) * seg0 * (T(8) * t21 * t15 + T(2) * ab_ap * seg0 * t26 - t15 * ap_ap * t25) * w2;
-    G_E = (T(1) / T(384)) * (T(48) * w0 * t24 + T(2) * t22 * seg0 * w2 + t21 * t15 * w1 - T(48) * seg5 * t23) * seg0;
+    const T t13 = T(1) / ap_ap;
+    const T t14 = t13 * t13;
+    const T t15 = t14 * t13;
+    const T t16 = T(1) / bp_bp;
+    const T t17 = T(1) / cross_cross;
+    const T t18 = t16 * t16;
+    const T t19 = T(3) * (ab_ab * J2 + t16 * a_minus_b + ab_ap * t13) * ab_ab * t17 + T(2) * ab_ap * t14 + T(2) * t18 * a_minus_b;
+    const T t20 = t18 * t16;
+    const T t21 = T(5) * t19 * ab_ab * t17 + T(8) * t20 * a_minus_b + T(8) * ab_ap * t15;
+    const T t22 = T(8) * t15 + t21 * t17 * ab_ap - T(8) * t20;
+    F = (T(1) / T(48)) * seg0 * t22 * w1 + (T(1) / T(48)) * t21 * t17 * w0 + (T(1) / T(48)) * seg0 * (T(6) * t19 * t17 + T(2) * seg0 * t22 * ab_ap - t21 * t17 * ap_ap) * w2;
+    const T t23 = t18 * t18;
+    const T t24 = t14 * t14;
+    const T t25 = T(7) * t21 * ab_ab * t17 + T(48) * t23 * a_minus_b + T(48) * ab_ap * t24;
+    const T t26 = t17 * ab_ap * t25 + T(48) * t24 - T(48) * t23;
+    G_ap = (T(1) / T(384)) * t17 * w0 * t25 + (T(1) / T(384)) * seg0 * w1 * t26 + (T(1) / T(384)) * seg0 * (T(2) * seg0 * ab_ap * t26 + T(8) * t21 * t17 - t17 * ap_ap * t25) * w2;
+    G_E = (T(1) / T(384)) * seg0 * (T(48) * w0 * t24 + t21 * t17 * w1 + T(2) * seg0 * t22 * w2 - T(48) * t23 * seg5);
   }
   f = length * F;
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
@@ -14556,7 +14558,7 @@ T segment_inverse_i8_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp0 * ap0 + bp1 * ap1 + bp2 * ap2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -14584,8 +14586,8 @@ T segment_inverse_i8_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t13 = t10 * t9;
     const T t14 = T(5) * t11 * ab_ab * t8 + T(8) * a_minus_b * t12 + T(8) * t13 * ab_ap;
     const T t15 = T(8) * t13 + t14 * t8 * ab_ap - T(8) * t12;
-    const T t16 = T(2) * seg0 * ab_ap * t15 + T(6) * t11 * t8 - ap_ap * t14 * t8;
-    F = (T(1) / T(48)) * t14 * w0 * t8 + (T(1) / T(48)) * w3 * seg0 * (T(6) * (T(2) * t10 + t11 * t8 * ab_ap - T(2) * t7) * seg0 + T(2) * seg0 * t16 * ab_ap - ap_ap * seg0 * t15) + (T(1) / T(48)) * w2 * seg0 * t16 + (T(1) / T(48)) * seg0 * w1 * t15;
+    const T t16 = ap_ap * t14 * t8 - T(6) * t11 * t8 - T(2) * ab_ap * seg0 * t15;
+    F = (T(1) / T(48)) * t14 * w0 * t8 + (T(1) / T(48)) * (T(6) * (T(2) * t10 + t11 * t8 * ab_ap - T(2) * t7) * seg0 - ap_ap * seg0 * t15 - T(2) * t16 * ab_ap * seg0) * w3 * seg0 + (T(1) / T(48)) * w1 * seg0 * t15 - (T(1) / T(48)) * w2 * t16 * seg0;
   }
   f = F * length;
   return f;
@@ -14641,17 +14643,17 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
-    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
-    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
+    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
+    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp0 * ab0 + bp2 * ab2 + bp1 * ab1;
@@ -14668,19 +14670,19 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(8, 10, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w2 * M_flat[7] + w0 * M_flat[5] + w3 * M_flat[8] + M_flat[6] * w1;
     G_ap = t4;
-    G_E = M_flat[7] * w1 + M_flat[9] * w3 + M_flat[6] * w0 + w2 * M_flat[8] - t4 * ab_ap * seg0;
+    G_E = M_flat[7] * w1 + M_flat[9] * w3 + M_flat[6] * w0 + w2 * M_flat[8] - seg0 * t4 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(8, 10, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[6] * w1 + w2 * M_beyond[7] + w3 * M_beyond[8] + M_beyond[5] * w0;
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
-    const T t8 = T(1) / bp_bp;
+    const T t8 = T(1) / ap_ap;
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
-    G_E = (T(1) / T(8)) * (t7 * w0 + M_beyond[0] * w1 + T(2) * w2 * M_beyond[1] + T(3) * M_beyond[2] * w3 - seg5 * t10) * seg0;
+    G_E = -(T(1) / T(8)) * seg0 * (seg5 * t7 - t10 * w0 - M_beyond[0] * w1 - T(2) * w2 * M_beyond[1] - T(3) * M_beyond[2] * w3);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t11 = sqrt(cross_cross);
@@ -14699,10 +14701,10 @@ std::array<T, 3> segment_inverse_i8_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t23 = T(8) * t20 * ab_ap + T(5) * t21 * ab_ab * t16 + T(8) * a_minus_b * t22;
     const T t24 = T(48) * t15 * ab_ap + T(48) * a_minus_b * t19 + T(7) * ab_ab * t16 * t23;
     const T t25 = T(48) * t15 + t16 * ab_ap * t24 - T(48) * t19;
-    const T t26 = T(2) * t25 * ab_ap * seg0 + T(8) * t16 * t23 - ap_ap * t16 * t24;
+    const T t26 = ap_ap * t16 * t24 - T(2) * seg0 * t25 * ab_ap - T(8) * t16 * t23;
     const T t27 = T(8) * t20 + t16 * ab_ap * t23 - T(8) * t22;
-    G_ap = (T(1) / T(384)) * t25 * w1 * seg0 + (T(1) / T(384)) * w2 * t26 * seg0 + (T(1) / T(384)) * w0 * t16 * t24 - (T(1) / T(384)) * (ap_ap * t25 * seg0 - T(8) * seg0 * t27 - T(2) * t26 * ab_ap * seg0) * w3 * seg0;
-    G_E = (T(1) / T(384)) * (T(48) * t15 * w0 + T(3) * w3 * (T(2) * ab_ap * seg0 * t27 + T(6) * t21 * t16 - ap_ap * t16 * t23) * seg0 + t16 * w1 * t23 + T(2) * w2 * seg0 * t27 - T(48) * seg5 * t19) * seg0;
+    G_ap = (T(1) / T(384)) * seg0 * t25 * w1 + (T(1) / T(384)) * w0 * t16 * t24 - (T(1) / T(384)) * seg0 * w3 * (T(2) * seg0 * t26 * ab_ap + seg0 * ap_ap * t25 - T(8) * seg0 * t27) - (T(1) / T(384)) * w2 * seg0 * t26;
+    G_E = -(T(1) / T(384)) * seg0 * (T(48) * seg5 * t19 - T(48) * t15 * w0 - T(3) * seg0 * (T(2) * seg0 * ab_ap * t27 + T(6) * t21 * t16 - ap_ap * t16 * t23) * w3 - T(2) * w2 * seg0 * t27 - t16 * w1 * t23);
   }
   grad[0] = g_factor * (G_ap * foot0 - G_E * ab0);
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -14790,7 +14792,7 @@ T segment_inverse_i8_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     F = w2 * M_flat[2] + M_flat[1] * w1 + w0 * M_flat[0] + w3 * M_flat[3];
     const T t4 = M_flat[6] * w1 + M_flat[8] * w3 + M_flat[7] * w2 + M_flat[5] * w0;
     G_ap = t4;
-    G_E = w2 * M_flat[8] + w0 * M_flat[6] + w3 * M_flat[9] + M_flat[7] * w1 - ab_ap * seg0 * t4;
+    G_E = w2 * M_flat[8] + w0 * M_flat[6] + w3 * M_flat[9] + M_flat[7] * w1 - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -14819,15 +14821,15 @@ T segment_inverse_i8_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t20 = t17 * t16;
     const T t21 = T(8) * ab_ap * t15 + T(5) * t19 * ab_ab * t18 + T(8) * t20 * a_minus_b;
     const T t22 = T(8) * t20 - ab_ap * t21 * t18 - T(8) * t15;
-    const T t23 = t21 * ap_ap * t18 + T(2) * ab_ap * t22 * seg0 - T(6) * t19 * t18;
-    F = (T(1) / T(48)) * t21 * w0 * t18 - (T(1) / T(48)) * (T(2) * ab_ap * t23 * seg0 + T(6) * seg0 * (T(2) * t17 - ab_ap * t19 * t18 - T(2) * t14) - t22 * ap_ap * seg0) * seg0 * w3 - (T(1) / T(48)) * t22 * seg0 * w1 - (T(1) / T(48)) * t23 * w2 * seg0;
+    const T t23 = T(2) * ab_ap * t22 * seg0 + t21 * ap_ap * t18 - T(6) * t19 * t18;
+    F = (T(1) / T(48)) * t21 * w0 * t18 - (T(1) / T(48)) * t22 * seg0 * w1 - (T(1) / T(48)) * t23 * w2 * seg0 - (T(1) / T(48)) * (T(2) * ab_ap * t23 * seg0 + T(6) * (T(2) * t17 - ab_ap * t19 * t18 - T(2) * t14) * seg0 - t22 * ap_ap * seg0) * w3 * seg0;
     const T t24 = t17 * t17;
     const T t25 = t14 * t14;
     const T t26 = T(48) * t24 * a_minus_b + T(48) * ab_ap * t25 + T(7) * t21 * ab_ab * t18;
     const T t27 = T(48) * t24 - ab_ap * t26 * t18 - T(48) * t25;
     const T t28 = T(8) * t21 * t18 - T(2) * ab_ap * seg0 * t27 - ap_ap * t26 * t18;
-    G_ap = (T(1) / T(384)) * w0 * t26 * t18 + (T(1) / T(384)) * t28 * w2 * seg0 - (T(1) / T(384)) * seg0 * w3 * (T(8) * t22 * seg0 - ap_ap * seg0 * t27 - T(2) * ab_ap * t28 * seg0) - (T(1) / T(384)) * seg0 * t27 * w1;
-    G_E = -(T(1) / T(384)) * (T(48) * t24 * seg5 + T(3) * t23 * seg0 * w3 + T(2) * t22 * w2 * seg0 - t21 * t18 * w1 - T(48) * t25 * w0) * seg0;
+    G_ap = (T(1) / T(384)) * w0 * t26 * t18 + (T(1) / T(384)) * w2 * seg0 * t28 - (T(1) / T(384)) * seg0 * t27 * w1 - (T(1) / T(384)) * w3 * seg0 * (T(8) * t22 * seg0 - T(2) * ab_ap * seg0 * t28 - ap_ap * seg0 * t27);
+    G_E = -(T(1) / T(384)) * seg0 * (T(3) * t23 * w3 * seg0 + T(2) * t22 * w2 * seg0 + T(48) * t24 * seg5 - t21 * t18 * w1 - T(48) * t25 * w0);
   }
   f = length * F;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -15032,7 +15034,7 @@ T segment_inverse_i9_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg7 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg7 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -15108,17 +15110,17 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
-    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
+    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp0 * bp0 + bp1 * bp1 + bp2 * bp2;
   const T ab_bp = ab1 * bp1 + ab2 * bp2 + bp0 * ab0;
@@ -15127,7 +15129,7 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -15135,7 +15137,7 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(9, 11, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * ab_ap * M_flat[2] * seg0;
+    G_E = w0 * M_flat[3] - w0 * seg0 * ab_ap * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -15151,7 +15153,7 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const T* pre, const SegmentPoint<T>&
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
     const T t13 = t12 * t9;
-    const T t14 = -(T(1) / T(9)) * (w0 * t8 - w0 * t13) * seg0;
+    const T t14 = -(T(1) / T(9)) * seg0 * (w0 * t8 - w0 * t13);
     G_E = t14;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -15175,7 +15177,7 @@ std::array<T, 3> segment_inverse_i9_w0_grad(const T* pre, const SegmentPoint<T>&
     const T t31 = t30 * t30;
     const T t32 = t31 * t31;
     const T t33 = t32 * t21;
-    const T t34 = -(T(1) / T(9)) * (w0 * t29 - w0 * t33) * seg0;
+    const T t34 = -(T(1) / T(9)) * seg0 * (w0 * t29 - w0 * t33);
     G_E = t34;
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
@@ -15231,9 +15233,9 @@ T segment_inverse_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * seg0 * ab0;
-    foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot0 = ap0 - seg0 * ab_ap * ab0;
+    foot1 = ap1 - seg0 * ab_ap * ab1;
+    foot2 = ap2 - seg0 * ab_ap * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -15241,7 +15243,7 @@ T segment_inverse_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
@@ -15251,7 +15253,7 @@ T segment_inverse_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -15260,7 +15262,7 @@ T segment_inverse_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     segment_moments_far_field<T>(9, 11, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = w0 * M_flat[0];
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - ab_ap * M_flat[2] * w0 * seg0;
+    G_E = M_flat[3] * w0 - seg0 * ab_ap * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -15277,7 +15279,7 @@ T segment_inverse_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
     const T t13 = t12 * t9;
-    const T t14 = (T(1) / T(9)) * (t8 * w0 - w0 * t13) * seg0;
+    const T t14 = (T(1) / T(9)) * seg0 * (t8 * w0 - w0 * t13);
     G_E = t14;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -15303,7 +15305,7 @@ T segment_inverse_i9_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t32 = t31 * t31;
     const T t33 = t32 * t32;
     const T t34 = t33 * t15;
-    const T t35 = (T(1) / T(9)) * (t30 * w0 - w0 * t34) * seg0;
+    const T t35 = (T(1) / T(9)) * seg0 * (t30 * w0 - w0 * t34);
     G_E = t35;
   }
   f = F * length;
@@ -15514,7 +15516,7 @@ T segment_inverse_i9_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -15529,17 +15531,17 @@ T segment_inverse_i9_w1_f(const T* pre, const SegmentPoint<T>& point) {
     F = M_beyond[1] * w1 + M_beyond[0] * w0;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t4 = T(1) / r1;
+    const T t4 = T(1) / r0;
     const T t5 = t4 * t4;
-    const T t6 = T(1) / r0;
-    const T t7 = t6 * t6;
-    const T t8 = T(1) / cross_cross;
-    const T t9 = t7 * t7;
-    const T t10 = t5 * t5;
-    const T t11 = t10 * t5;
-    const T t12 = t9 * t7;
-    const T t13 = T(2) * (T(4) * ab_ab * (t5 * t4 * a_minus_b + t7 * ab_ap * t6 + T(2) * (ab_ap * t6 + t4 * a_minus_b) * ab_ab * t8) * t8 + T(3) * t9 * ab_ap * t6 + T(3) * t10 * t4 * a_minus_b) * ab_ab * t8 + T(5) * t11 * t4 * a_minus_b + T(5) * t12 * ab_ap * t6;
-    F = (T(1) / T(35)) * t13 * t8 * w0 + (T(1) / T(35)) * w1 * seg0 * (T(5) * t12 * t6 + t13 * t8 * ab_ap - T(5) * t11 * t4);
+    const T t6 = t5 * t5;
+    const T t7 = t6 * t5;
+    const T t8 = T(1) / r1;
+    const T t9 = t8 * t8;
+    const T t10 = T(1) / cross_cross;
+    const T t11 = t9 * t9;
+    const T t12 = t11 * t9;
+    const T t13 = T(2) * (T(4) * ab_ab * (t9 * t8 * a_minus_b + t5 * ab_ap * t4 + T(2) * (ab_ap * t4 + t8 * a_minus_b) * ab_ab * t10) * t10 + T(3) * t6 * ab_ap * t4 + T(3) * t11 * t8 * a_minus_b) * ab_ab * t10 + T(5) * t12 * t8 * a_minus_b + T(5) * t7 * ab_ap * t4;
+    F = (T(1) / T(35)) * w1 * seg0 * (T(5) * t7 * t4 + t13 * t10 * ab_ap - T(5) * t12 * t8) + (T(1) / T(35)) * t13 * t10 * w0;
   }
   f = F * length;
   return f;
@@ -15593,17 +15595,17 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
-    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
+    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -15612,7 +15614,7 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -15621,23 +15623,23 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const T* pre, const SegmentPoint<T>&
     segment_moments_far_field<T>(9, 11, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w1 * M_flat[4] + w0 * M_flat[3];
     G_ap = t4;
-    G_E = w0 * M_flat[4] + M_flat[5] * w1 - t4 * seg0 * ab_ap;
+    G_E = w0 * M_flat[4] + M_flat[5] * w1 - seg0 * t4 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(9, 11, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / r1;
+    const T t5 = T(1) / r0;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / r0;
+    const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(9)) * (seg7 * t9 - M_beyond[0] * w1 - w0 * t14) * seg0;
+    G_E = (T(1) / T(9)) * seg0 * (M_beyond[0] * w1 + w0 * t9 - seg7 * t14);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / cross_cross;
@@ -15653,7 +15655,7 @@ std::array<T, 3> segment_inverse_i9_w1_grad(const T* pre, const SegmentPoint<T>&
     const T t25 = t22 * t22;
     const T t26 = t18 * t18;
     const T t27 = T(8) * t24 * ab_ab * t15 + T(35) * t20 * t25 * ab_ap + T(35) * t26 * t16 * a_minus_b;
-    G_ap = (T(1) / T(315)) * w0 * t15 * t27 - (T(1) / T(315)) * (T(35) * t26 * t16 - T(35) * t20 * t25 - t15 * t27 * ab_ap) * w1 * seg0;
+    G_ap = (T(1) / T(315)) * w0 * t15 * t27 - (T(1) / T(315)) * seg0 * (T(35) * t26 * t16 - T(35) * t20 * t25 - t15 * t27 * ab_ap) * w1;
     const T t28 = t16 * t16;
     const T t29 = t28 * t28;
     const T t30 = t29 * t29;
@@ -15739,7 +15741,7 @@ T segment_inverse_i9_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -15772,27 +15774,27 @@ T segment_inverse_i9_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t15 = T(1) / r0;
     const T t16 = t15 * t15;
     const T t17 = t16 * t16;
-    const T t18 = t17 * t16;
-    const T t19 = T(1) / r1;
+    const T t18 = T(1) / r1;
+    const T t19 = t18 * t18;
     const T t20 = t19 * t19;
-    const T t21 = t20 * t20;
-    const T t22 = T(1) / cross_cross;
-    const T t23 = t21 * t20;
-    const T t24 = T(2) * ab_ab * (T(3) * ab_ap * t17 * t15 + T(3) * t19 * t21 * a_minus_b + T(4) * ab_ab * (t19 * t20 * a_minus_b + T(2) * (t19 * a_minus_b + ab_ap * t15) * ab_ab * t22 + ab_ap * t16 * t15) * t22) * t22 + T(5) * ab_ap * t18 * t15 + T(5) * t19 * t23 * a_minus_b;
-    F = (T(1) / T(35)) * seg0 * w1 * (T(5) * t18 * t15 + t24 * ab_ap * t22 - T(5) * t19 * t23) + (T(1) / T(35)) * t24 * w0 * t22;
-    const T t25 = t21 * t21;
+    const T t21 = T(1) / cross_cross;
+    const T t22 = t17 * t16;
+    const T t23 = t20 * t19;
+    const T t24 = T(2) * ab_ab * (T(3) * ab_ap * t17 * t15 + T(3) * t18 * t20 * a_minus_b + T(4) * ab_ab * (t18 * t19 * a_minus_b + T(2) * (t18 * a_minus_b + ab_ap * t15) * ab_ab * t21 + ab_ap * t16 * t15) * t21) * t21 + T(5) * ab_ap * t22 * t15 + T(5) * t18 * t23 * a_minus_b;
+    F = (T(1) / T(35)) * t24 * w0 * t21 + (T(1) / T(35)) * seg0 * w1 * (T(5) * t22 * t15 + t24 * ab_ap * t21 - T(5) * t18 * t23);
+    const T t25 = t20 * t20;
     const T t26 = t17 * t17;
-    const T t27 = T(35) * t19 * t25 * a_minus_b + T(8) * t24 * ab_ab * t22 + T(35) * ab_ap * t26 * t15;
-    G_ap = (T(1) / T(315)) * w0 * t27 * t22 + (T(1) / T(315)) * seg0 * w1 * (ab_ap * t27 * t22 + T(35) * t26 * t15 - T(35) * t19 * t25);
+    const T t27 = T(35) * t18 * t25 * a_minus_b + T(8) * t24 * ab_ab * t21 + T(35) * ab_ap * t26 * t15;
+    G_ap = (T(1) / T(315)) * w0 * t27 * t21 + (T(1) / T(315)) * seg0 * w1 * (ab_ap * t27 * t21 + T(35) * t26 * t15 - T(35) * t18 * t25);
     const T t28 = t15 * t15;
     const T t29 = t28 * t28;
     const T t30 = t29 * t29;
     const T t31 = t30 * t15;
-    const T t32 = t19 * t19;
+    const T t32 = t18 * t18;
     const T t33 = t32 * t32;
     const T t34 = t33 * t33;
-    const T t35 = t34 * t19;
-    G_E = (T(1) / T(315)) * seg0 * (T(35) * w0 * t31 + t24 * w1 * t22 - T(35) * t35 * seg7);
+    const T t35 = t34 * t18;
+    G_E = (T(1) / T(315)) * (T(35) * w0 * t31 + t24 * w1 * t21 - T(35) * t35 * seg7) * seg0;
   }
   f = length * F;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -16006,7 +16008,7 @@ T segment_inverse_i9_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -16033,7 +16035,7 @@ T segment_inverse_i9_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t13 = t10 * t9;
     const T t14 = T(2) * ab_ab * t4 * t11 + T(5) * a_minus_b * t12 * t5 + T(5) * t8 * ab_ap * t13;
     const T t15 = T(5) * t12 * t5 - t14 * t4 * ab_ap - T(5) * t8 * t13;
-    F = (T(1) / T(105)) * (T(7) * t4 * t11 - T(6) * ab_ap * seg0 * t15 - T(3) * t14 * t4 * ap_ap) * seg0 * w2 + (T(1) / T(35)) * t14 * w0 * t4 - (T(1) / T(35)) * w1 * seg0 * t15;
+    F = (T(1) / T(105)) * (T(7) * t4 * t11 - T(6) * ab_ap * t15 * seg0 - T(3) * t14 * t4 * ap_ap) * w2 * seg0 + (T(1) / T(35)) * t14 * w0 * t4 - (T(1) / T(35)) * w1 * t15 * seg0;
   }
   f = length * F;
   return f;
@@ -16088,9 +16090,9 @@ std::array<T, 3> segment_inverse_i9_w2_grad(const T* pre, const SegmentPoint<T>&
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -16107,7 +16109,7 @@ std::array<T, 3> segment_inverse_i9_w2_grad(const T* pre, const SegmentPoint<T>&
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -16136,29 +16138,29 @@ std::array<T, 3> segment_inverse_i9_w2_grad(const T* pre, const SegmentPoint<T>&
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / cross_cross;
-    const T t16 = T(1) / r1;
+    const T t16 = T(1) / r0;
     const T t17 = t16 * t16;
-    const T t18 = T(1) / r0;
+    const T t18 = t17 * t17;
     const T t19 = t18 * t18;
-    const T t20 = t19 * t19;
-    const T t21 = t17 * t17;
-    const T t22 = t20 * t19;
-    const T t23 = t21 * t17;
-    const T t24 = T(2) * ab_ab * (T(4) * ab_ab * t15 * (a_minus_b * t17 * t16 + T(2) * ab_ab * t15 * (ab_ap * t18 + a_minus_b * t16) + ab_ap * t18 * t19) + T(3) * ab_ap * t18 * t20 + T(3) * a_minus_b * t21 * t16) * t15 + T(5) * ab_ap * t18 * t22 + T(5) * a_minus_b * t23 * t16;
-    const T t25 = t20 * t20;
-    const T t26 = t21 * t21;
-    const T t27 = T(35) * ab_ap * t18 * t25 + T(35) * a_minus_b * t26 * t16 + T(8) * ab_ab * t24 * t15;
-    const T t28 = t15 * ab_ap * t27 + T(35) * t18 * t25 - T(35) * t26 * t16;
-    G_ap = (T(1) / T(315)) * seg0 * w2 * (T(9) * t24 * t15 + T(2) * seg0 * t28 * ab_ap - t15 * ap_ap * t27) + (T(1) / T(315)) * seg0 * t28 * w1 + (T(1) / T(315)) * t15 * w0 * t27;
-    const T t29 = t18 * t18;
+    const T t20 = T(1) / r1;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t22;
+    const T t24 = t18 * t17;
+    const T t25 = t22 * t21;
+    const T t26 = T(2) * ab_ab * (T(4) * ab_ab * t15 * (a_minus_b * t21 * t20 + T(2) * ab_ab * t15 * (ab_ap * t16 + a_minus_b * t20) + ab_ap * t16 * t17) + T(3) * ab_ap * t16 * t18 + T(3) * a_minus_b * t22 * t20) * t15 + T(5) * ab_ap * t16 * t24 + T(5) * a_minus_b * t25 * t20;
+    const T t27 = T(35) * ab_ap * t16 * t19 + T(35) * a_minus_b * t23 * t20 + T(8) * ab_ab * t26 * t15;
+    const T t28 = t15 * ab_ap * t27 + T(35) * t16 * t19 - T(35) * t23 * t20;
+    G_ap = (T(1) / T(315)) * seg0 * t28 * w1 + (T(1) / T(315)) * t15 * w0 * t27 + (T(1) / T(315)) * (T(2) * seg0 * t28 * ab_ap + T(9) * t26 * t15 - t15 * ap_ap * t27) * seg0 * w2;
+    const T t29 = t16 * t16;
     const T t30 = t29 * t29;
     const T t31 = t30 * t30;
-    const T t32 = t31 * t18;
-    const T t33 = t16 * t16;
+    const T t32 = t31 * t16;
+    const T t33 = t20 * t20;
     const T t34 = t33 * t33;
     const T t35 = t34 * t34;
-    const T t36 = t35 * t16;
-    G_E = (T(1) / T(315)) * seg0 * (T(35) * w0 * t32 + t24 * t15 * w1 - T(35) * seg7 * t36 - T(2) * seg0 * (T(5) * t23 * t16 - t24 * t15 * ab_ap - T(5) * t18 * t22) * w2);
+    const T t36 = t35 * t20;
+    G_E = (T(1) / T(315)) * seg0 * (T(35) * w0 * t32 + t26 * t15 * w1 - T(35) * seg7 * t36 - T(2) * seg0 * (T(5) * t25 * t20 - t26 * t15 * ab_ap - T(5) * t16 * t24) * w2);
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
@@ -16217,15 +16219,15 @@ T segment_inverse_i9_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
@@ -16263,7 +16265,7 @@ T segment_inverse_i9_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(9)) * (T(2) * w2 * M_beyond[1] + t9 * w0 + M_beyond[0] * w1 - t14 * seg7) * seg0;
+    G_E = (T(1) / T(9)) * seg0 * (T(2) * w2 * M_beyond[1] + t9 * w0 + M_beyond[0] * w1 - t14 * seg7);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / r1;
@@ -16283,7 +16285,7 @@ T segment_inverse_i9_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t28 = t17 * t17;
     const T t29 = T(8) * ab_ab * t25 * t19 + T(35) * t20 * ab_ap * t27 + T(35) * t15 * t28 * a_minus_b;
     const T t30 = T(35) * t20 * t27 + t19 * ab_ap * t29 - T(35) * t15 * t28;
-    G_ap = (T(1) / T(315)) * t19 * w0 * t29 + (T(1) / T(315)) * seg0 * w1 * t30 - (T(1) / T(315)) * (t19 * t29 * ap_ap - T(9) * t25 * t19 - T(2) * seg0 * ab_ap * t30) * w2 * seg0;
+    G_ap = (T(1) / T(315)) * seg0 * w1 * t30 + (T(1) / T(315)) * t19 * w0 * t29 - (T(1) / T(315)) * w2 * (t19 * t29 * ap_ap - T(9) * t25 * t19 - T(2) * seg0 * ab_ap * t30) * seg0;
     const T t31 = t20 * t20;
     const T t32 = t31 * t31;
     const T t33 = t32 * t32;
@@ -16511,7 +16513,7 @@ T segment_inverse_i9_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -16538,8 +16540,8 @@ T segment_inverse_i9_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t13 = t11 * t9;
     const T t14 = T(5) * t4 * ab_ap * t7 + T(2) * t12 * ab_ab * t10 + T(5) * t13 * t8 * a_minus_b;
     const T t15 = T(5) * t4 * t7 + ab_ap * t14 * t10 - T(5) * t13 * t8;
-    const T t16 = T(7) * t12 * t10 + T(6) * seg0 * ab_ap * t15 - T(3) * ap_ap * t14 * t10;
-    F = (T(1) / T(35)) * t14 * w0 * t10 + (T(1) / T(105)) * seg0 * (T(2) * t16 * seg0 * ab_ap + T(7) * seg0 * (T(3) * t4 * t6 + ab_ap * t12 * t10 - T(3) * t11 * t8) - T(3) * seg0 * ap_ap * t15) * w3 + (T(1) / T(35)) * seg0 * t15 * w1 + (T(1) / T(105)) * t16 * seg0 * w2;
+    const T t16 = T(7) * t12 * t10 + T(6) * ab_ap * t15 * seg0 - T(3) * ap_ap * t14 * t10;
+    F = (T(1) / T(35)) * t14 * w0 * t10 + (T(1) / T(35)) * t15 * seg0 * w1 + (T(1) / T(105)) * w2 * t16 * seg0 + (T(1) / T(105)) * (T(7) * (T(3) * t4 * t6 + ab_ap * t12 * t10 - T(3) * t11 * t8) * seg0 + T(2) * ab_ap * t16 * seg0 - T(3) * ap_ap * t15 * seg0) * w3 * seg0;
   }
   f = length * F;
   return f;
@@ -16629,17 +16631,17 @@ std::array<T, 3> segment_inverse_i9_w3_grad(const T* pre, const SegmentPoint<T>&
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(9, 11, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[7] * w2 + M_beyond[8] * w3 + M_beyond[5] * w0 + M_beyond[6] * w1;
-    const T t5 = T(1) / r1;
+    const T t5 = T(1) / r0;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / r0;
+    const T t10 = T(1) / r1;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(9)) * seg0 * (seg7 * t9 - T(2) * M_beyond[1] * w2 - T(3) * M_beyond[2] * w3 - t14 * w0 - M_beyond[0] * w1);
+    G_E = (T(1) / T(9)) * seg0 * (T(2) * M_beyond[1] * w2 + T(3) * M_beyond[2] * w3 + t9 * w0 + M_beyond[0] * w1 - seg7 * t14);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / cross_cross;
@@ -16658,17 +16660,17 @@ std::array<T, 3> segment_inverse_i9_w3_grad(const T* pre, const SegmentPoint<T>&
     const T t28 = T(35) * t19 * t16 * a_minus_b + T(8) * ab_ab * t26 * t15 + T(35) * ab_ap * t20 * t27;
     const T t29 = T(5) * t25 * t16 - ab_ap * t26 * t15 - T(5) * t20 * t24;
     const T t30 = T(35) * t19 * t16 - T(35) * t20 * t27 - ab_ap * t15 * t28;
-    const T t31 = T(2) * ab_ap * t30 * seg0 + ap_ap * t15 * t28 - T(9) * t26 * t15;
-    G_ap = (T(1) / T(315)) * w0 * t15 * t28 - (T(1) / T(315)) * (T(9) * t29 * seg0 + T(2) * ab_ap * seg0 * t31 - t30 * ap_ap * seg0) * seg0 * w3 - (T(1) / T(315)) * t30 * seg0 * w1 - (T(1) / T(315)) * w2 * seg0 * t31;
-    const T t32 = t16 * t16;
+    const T t31 = ap_ap * t15 * t28 + T(2) * ab_ap * t30 * seg0 - T(9) * t26 * t15;
+    G_ap = (T(1) / T(315)) * w0 * t15 * t28 - (T(1) / T(315)) * (T(9) * t29 * seg0 + T(2) * ab_ap * seg0 * t31 - t30 * seg0 * ap_ap) * seg0 * w3 - (T(1) / T(315)) * w2 * seg0 * t31 - (T(1) / T(315)) * t30 * seg0 * w1;
+    const T t32 = t20 * t20;
     const T t33 = t32 * t32;
     const T t34 = t33 * t33;
-    const T t35 = t34 * t16;
-    const T t36 = t20 * t20;
+    const T t35 = t34 * t20;
+    const T t36 = t16 * t16;
     const T t37 = t36 * t36;
     const T t38 = t37 * t37;
-    const T t39 = t38 * t20;
-    G_E = -(T(1) / T(315)) * seg0 * ((T(6) * ab_ap * t29 * seg0 + T(3) * ap_ap * t26 * t15 - T(7) * t15 * t23) * seg0 * w3 + T(2) * t29 * w2 * seg0 + T(35) * seg7 * t35 - t26 * t15 * w1 - T(35) * t39 * w0);
+    const T t39 = t38 * t16;
+    G_E = (T(1) / T(315)) * seg0 * (t26 * t15 * w1 + T(35) * t35 * w0 - T(2) * t29 * w2 * seg0 - T(35) * seg7 * t39 - seg0 * w3 * (T(3) * ap_ap * t26 * t15 + T(6) * ab_ap * t29 * seg0 - T(7) * t15 * t23));
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
@@ -16747,7 +16749,7 @@ T segment_inverse_i9_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -16774,38 +16776,38 @@ T segment_inverse_i9_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, s
     const T t12 = t11 * t11;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(9)) * seg0 * (T(2) * w2 * M_beyond[1] + t9 * w0 + w1 * M_beyond[0] + T(3) * M_beyond[2] * w3 - t14 * seg7);
+    G_E = (T(1) / T(9)) * (T(2) * w2 * M_beyond[1] + t9 * w0 + w1 * M_beyond[0] + T(3) * M_beyond[2] * w3 - seg7 * t14) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = T(1) / cross_cross;
-    const T t16 = T(1) / r1;
+    const T t16 = T(1) / r0;
     const T t17 = t16 * t16;
-    const T t18 = t17 * t17;
-    const T t19 = t18 * t17;
-    const T t20 = T(1) / r0;
-    const T t21 = t20 * t20;
-    const T t22 = t21 * t21;
-    const T t23 = T(4) * ab_ab * t15 * (ab_ap * t21 * t20 + t16 * t17 * a_minus_b + T(2) * ab_ab * t15 * (ab_ap * t20 + t16 * a_minus_b)) + T(3) * t16 * t18 * a_minus_b + T(3) * ab_ap * t22 * t20;
-    const T t24 = t22 * t21;
-    const T t25 = T(5) * t16 * t19 * a_minus_b + T(2) * ab_ab * t15 * t23 + T(5) * ab_ap * t24 * t20;
-    const T t26 = t15 * ab_ap * t25 + T(5) * t24 * t20 - T(5) * t16 * t19;
-    const T t27 = T(6) * ab_ap * seg0 * t26 + T(7) * t15 * t23 - T(3) * t15 * t25 * ap_ap;
-    F = (T(1) / T(35)) * w1 * seg0 * t26 + (T(1) / T(105)) * t27 * w2 * seg0 + (T(1) / T(35)) * t15 * t25 * w0 + (T(1) / T(105)) * (T(7) * (t15 * ab_ap * t23 + T(3) * t22 * t20 - T(3) * t16 * t18) * seg0 + T(2) * ab_ap * t27 * seg0 - T(3) * seg0 * ap_ap * t26) * seg0 * w3;
-    const T t28 = t18 * t18;
-    const T t29 = t22 * t22;
-    const T t30 = T(35) * ab_ap * t29 * t20 + T(35) * t16 * t28 * a_minus_b + T(8) * ab_ab * t15 * t25;
-    const T t31 = T(35) * t16 * t28 - T(35) * t29 * t20 - t15 * ab_ap * t30;
-    const T t32 = t15 * ap_ap * t30 + T(2) * ab_ap * seg0 * t31 - T(9) * t15 * t25;
-    G_ap = (T(1) / T(315)) * (T(9) * seg0 * t26 + seg0 * t31 * ap_ap - T(2) * ab_ap * seg0 * t32) * seg0 * w3 + (T(1) / T(315)) * t15 * t30 * w0 - (T(1) / T(315)) * w2 * seg0 * t32 - (T(1) / T(315)) * w1 * seg0 * t31;
-    const T t33 = t20 * t20;
+    const T t18 = T(1) / r1;
+    const T t19 = t18 * t18;
+    const T t20 = t19 * t19;
+    const T t21 = t17 * t17;
+    const T t22 = T(4) * ab_ab * t15 * (ab_ap * t17 * t16 + t18 * t19 * a_minus_b + T(2) * ab_ab * t15 * (ab_ap * t16 + t18 * a_minus_b)) + T(3) * t18 * t20 * a_minus_b + T(3) * ab_ap * t21 * t16;
+    const T t23 = t20 * t19;
+    const T t24 = t21 * t17;
+    const T t25 = T(5) * t18 * t23 * a_minus_b + T(2) * ab_ab * t15 * t22 + T(5) * ab_ap * t24 * t16;
+    const T t26 = t15 * ab_ap * t25 + T(5) * t24 * t16 - T(5) * t18 * t23;
+    const T t27 = T(7) * t15 * t22 + T(6) * ab_ap * seg0 * t26 - T(3) * t15 * t25 * ap_ap;
+    F = (T(1) / T(105)) * t27 * w2 * seg0 + (T(1) / T(35)) * t15 * t25 * w0 + (T(1) / T(35)) * w1 * seg0 * t26 - (T(1) / T(105)) * (T(3) * ap_ap * seg0 * t26 - T(2) * ab_ap * t27 * seg0 - T(7) * (t15 * ab_ap * t22 + T(3) * t21 * t16 - T(3) * t18 * t20) * seg0) * seg0 * w3;
+    const T t28 = t21 * t21;
+    const T t29 = t20 * t20;
+    const T t30 = T(35) * ab_ap * t28 * t16 + T(35) * t18 * t29 * a_minus_b + T(8) * ab_ab * t15 * t25;
+    const T t31 = T(35) * t18 * t29 - T(35) * t28 * t16 - t15 * ab_ap * t30;
+    const T t32 = t15 * ap_ap * t30 + T(2) * ab_ap * t31 * seg0 - T(9) * t15 * t25;
+    G_ap = (T(1) / T(315)) * t15 * t30 * w0 - (T(1) / T(315)) * (T(2) * ab_ap * t32 * seg0 - T(9) * seg0 * t26 - t31 * ap_ap * seg0) * seg0 * w3 - (T(1) / T(315)) * w1 * t31 * seg0 - (T(1) / T(315)) * w2 * t32 * seg0;
+    const T t33 = t16 * t16;
     const T t34 = t33 * t33;
     const T t35 = t34 * t34;
-    const T t36 = t35 * t20;
-    const T t37 = t16 * t16;
+    const T t36 = t35 * t16;
+    const T t37 = t18 * t18;
     const T t38 = t37 * t37;
     const T t39 = t38 * t38;
-    const T t40 = t39 * t16;
-    G_E = (T(1) / T(315)) * seg0 * (t27 * seg0 * w3 + T(35) * t36 * w0 + t15 * w1 * t25 + T(2) * w2 * seg0 * t26 - T(35) * t40 * seg7);
+    const T t40 = t39 * t18;
+    G_E = (T(1) / T(315)) * (T(2) * w2 * seg0 * t26 + t27 * seg0 * w3 + T(35) * t36 * w0 + t15 * w1 * t25 - T(35) * seg7 * t40) * seg0;
   }
   f = length * F;
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
@@ -17014,7 +17016,7 @@ T segment_inverse_i10_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp2 * ap2 + bp0 * ap0 + bp1 * ap1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg5 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg5 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -17111,7 +17113,7 @@ std::array<T, 3> segment_inverse_i10_w0_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -17119,7 +17121,7 @@ std::array<T, 3> segment_inverse_i10_w0_grad(const T* pre, const SegmentPoint<T>
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(10, 12, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * ab_ap * M_flat[2] * seg0;
+    G_E = w0 * M_flat[3] - w0 * ab_ap * seg0 * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -17209,8 +17211,8 @@ T segment_inverse_i10_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - ab_ap * seg0 * ab0;
-    foot1 = ap1 - ab_ap * ab1 * seg0;
-    foot2 = ap2 - ab_ap * ab2 * seg0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -17501,7 +17503,7 @@ T segment_inverse_i10_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t13 = t10 * t10;
     const T t14 = t9 * t9;
     const T t15 = T(7) * t6 * (T(5) * t6 * (T(3) * t6 * (ab_ap * t7 + t8 * a_minus_b + J2 * ab_ab) * ab_ab + T(2) * t9 * a_minus_b + T(2) * ab_ap * t10) * ab_ab + T(8) * t11 * a_minus_b + T(8) * ab_ap * t12) * ab_ab + T(48) * ab_ap * t13 + T(48) * t14 * a_minus_b;
-    F = (T(1) / T(384)) * t15 * t6 * w0 + (T(1) / T(384)) * (T(48) * t13 + t15 * t6 * ab_ap - T(48) * t14) * seg0 * w1;
+    F = (T(1) / T(384)) * t15 * t6 * w0 + (T(1) / T(384)) * seg0 * (T(48) * t13 + t15 * t6 * ab_ap - T(48) * t14) * w1;
   }
   f = length * F;
   return f;
@@ -17573,7 +17575,7 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -17588,15 +17590,15 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const T* pre, const SegmentPoint<T>
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(10, 12, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t5;
-    const T t9 = T(1) / bp_bp;
+    const T t9 = T(1) / ap_ap;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * (w0 * t8 + w1 * M_beyond[0] - t12 * seg5) * seg0;
+    G_E = -(T(1) / T(10)) * (seg5 * t8 - w0 * t12 - w1 * M_beyond[0]) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -17616,7 +17618,7 @@ std::array<T, 3> segment_inverse_i10_w1_grad(const T* pre, const SegmentPoint<T>
     const T t26 = T(7) * t15 * (T(5) * t15 * (T(3) * t15 * (J2 * ab_ab + a_minus_b * t20 + ab_ap * t16) * ab_ab + T(2) * ab_ap * t17 + T(2) * a_minus_b * t21) * ab_ab + T(8) * ab_ap * t24 + T(8) * a_minus_b * t25) * ab_ab + T(48) * ab_ap * t18 + T(48) * a_minus_b * t22;
     const T t27 = T(128) * ab_ap * t19 + T(128) * a_minus_b * t23 + T(3) * t15 * t26 * ab_ab;
     G_ap = (T(1) / T(1280)) * t15 * t27 * w0 + (T(1) / T(1280)) * (T(128) * t19 + t15 * ab_ap * t27 - T(128) * t23) * w1 * seg0;
-    G_E = (T(1) / T(3840)) * (T(384) * w0 * t19 + t15 * t26 * w1 - T(384) * t23 * seg5) * seg0;
+    G_E = -(T(1) / T(3840)) * (T(384) * seg5 * t23 - T(384) * w0 * t19 - t15 * t26 * w1) * seg0;
   }
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - ab1 * G_E);
@@ -17673,16 +17675,16 @@ T segment_inverse_i10_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
     foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
-    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
+    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -17942,7 +17944,7 @@ T segment_inverse_i10_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp0 * ap0 + bp2 * ap2 + bp1 * ap1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -17960,19 +17962,19 @@ T segment_inverse_i10_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = sqrt(cross_cross);
     const T t5 = T(1) / t4;
     const T J2 = atan2(t4, ap_bp) * t5;
-    const T t6 = T(1) / cross_cross;
-    const T t7 = T(1) / ap_ap;
+    const T t6 = T(1) / ap_ap;
+    const T t7 = t6 * t6;
     const T t8 = t7 * t7;
-    const T t9 = t8 * t7;
-    const T t10 = T(1) / bp_bp;
-    const T t11 = t10 * t10;
-    const T t12 = t11 * t10;
-    const T t13 = T(8) * t9 * ab_ap + T(8) * a_minus_b * t12 + T(5) * ab_ab * t6 * (T(2) * a_minus_b * t11 + T(3) * ab_ab * (t7 * ab_ap + a_minus_b * t10 + ab_ab * J2) * t6 + T(2) * t8 * ab_ap);
-    const T t14 = t11 * t11;
-    const T t15 = t8 * t8;
-    const T t16 = T(7) * ab_ab * t13 * t6 + T(48) * a_minus_b * t14 + T(48) * t15 * ab_ap;
-    const T t17 = T(48) * t15 + t6 * ab_ap * t16 - T(48) * t14;
-    F = (T(1) / T(384)) * t6 * w0 * t16 + (T(1) / T(384)) * t17 * w1 * seg0 - (T(1) / T(384)) * (ap_ap * t6 * t16 - T(2) * t17 * ab_ap * seg0 - T(8) * t13 * t6) * w2 * seg0;
+    const T t9 = T(1) / cross_cross;
+    const T t10 = t7 * t6;
+    const T t11 = T(1) / bp_bp;
+    const T t12 = t11 * t11;
+    const T t13 = t12 * t11;
+    const T t14 = T(8) * t10 * ab_ap + T(8) * a_minus_b * t13 + T(5) * ab_ab * t9 * (T(2) * a_minus_b * t12 + T(3) * ab_ab * (t6 * ab_ap + a_minus_b * t11 + ab_ab * J2) * t9 + T(2) * t7 * ab_ap);
+    const T t15 = t12 * t12;
+    const T t16 = T(7) * ab_ab * t14 * t9 + T(48) * a_minus_b * t15 + T(48) * t8 * ab_ap;
+    const T t17 = T(48) * t8 + t9 * ab_ap * t16 - T(48) * t15;
+    F = (T(1) / T(384)) * w2 * (T(2) * t17 * ab_ap * seg0 + T(8) * t14 * t9 - ap_ap * t9 * t16) * seg0 + (T(1) / T(384)) * t9 * w0 * t16 + (T(1) / T(384)) * t17 * seg0 * w1;
   }
   f = F * length;
   return f;
@@ -18027,17 +18029,17 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab_ap * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
-    foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
-    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
+    foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
+    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
@@ -18045,7 +18047,7 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -18054,42 +18056,42 @@ std::array<T, 3> segment_inverse_i10_w2_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(10, 12, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[5] * w1 + M_flat[6] * w2 + w0 * M_flat[4];
     G_ap = t4;
-    G_E = w1 * M_flat[6] + w0 * M_flat[5] + w2 * M_flat[7] - ab_ap * seg0 * t4;
+    G_E = w1 * M_flat[6] + w0 * M_flat[5] + w2 * M_flat[7] - seg0 * ab_ap * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
     segment_moments_beyond_end<T>(10, 12, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[6] * w2 + w0 * M_beyond[4] + w1 * M_beyond[5];
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t5;
-    const T t9 = T(1) / bp_bp;
+    const T t9 = T(1) / ap_ap;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * seg0 * (M_beyond[0] * w1 + w0 * t8 + T(2) * M_beyond[1] * w2 - t12 * seg5);
+    G_E = -(T(1) / T(10)) * (t8 * seg5 - M_beyond[0] * w1 - w0 * t12 - T(2) * M_beyond[1] * w2) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
     const T t14 = T(1) / t13;
     const T J2 = t14 * atan2(t13, ap_bp);
-    const T t15 = T(1) / ap_ap;
-    const T t16 = t15 * t15;
+    const T t15 = T(1) / cross_cross;
+    const T t16 = T(1) / ap_ap;
     const T t17 = t16 * t16;
-    const T t18 = t16 * t15;
-    const T t19 = T(1) / bp_bp;
-    const T t20 = t19 * t19;
-    const T t21 = t20 * t19;
-    const T t22 = T(1) / cross_cross;
-    const T t23 = t20 * t20;
-    const T t24 = T(48) * ab_ap * t17 + T(7) * (T(8) * ab_ap * t18 + T(8) * a_minus_b * t21 + T(5) * t22 * (T(3) * t22 * (a_minus_b * t19 + ab_ap * t15 + J2 * ab_ab) * ab_ab + T(2) * ab_ap * t16 + T(2) * a_minus_b * t20) * ab_ab) * t22 * ab_ab + T(48) * a_minus_b * t23;
-    const T t25 = t23 * t19;
-    const T t26 = t17 * t15;
-    const T t27 = T(128) * ab_ap * t26 + T(3) * t24 * t22 * ab_ab + T(128) * a_minus_b * t25;
-    const T t28 = T(128) * t25 - t22 * ab_ap * t27 - T(128) * t26;
-    G_ap = (T(1) / T(3840)) * seg0 * (T(10) * t24 * t22 - T(6) * ab_ap * seg0 * t28 - T(3) * t22 * t27 * ap_ap) * w2 + (T(1) / T(1280)) * w0 * t22 * t27 - (T(1) / T(1280)) * seg0 * w1 * t28;
-    G_E = (T(1) / T(3840)) * seg0 * (T(384) * w0 * t26 + T(2) * seg0 * w2 * (t24 * t22 * ab_ap + T(48) * t17 - T(48) * t23) + t24 * t22 * w1 - T(384) * t25 * seg5);
+    const T t18 = t17 * t17;
+    const T t19 = t18 * t16;
+    const T t20 = t17 * t16;
+    const T t21 = T(1) / bp_bp;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t21;
+    const T t24 = t22 * t22;
+    const T t25 = T(48) * ab_ap * t18 + T(7) * (T(8) * ab_ap * t20 + T(8) * a_minus_b * t23 + T(5) * t15 * (T(3) * t15 * (a_minus_b * t21 + ab_ap * t16 + J2 * ab_ab) * ab_ab + T(2) * ab_ap * t17 + T(2) * a_minus_b * t22) * ab_ab) * t15 * ab_ab + T(48) * a_minus_b * t24;
+    const T t26 = t24 * t21;
+    const T t27 = T(128) * ab_ap * t19 + T(3) * t25 * t15 * ab_ab + T(128) * a_minus_b * t26;
+    const T t28 = T(128) * t26 - t15 * ab_ap * t27 - T(128) * t19;
+    G_ap = (T(1) / T(1280)) * w0 * t15 * t27 - (T(1) / T(3840)) * seg0 * (T(6) * seg0 * ab_ap * t28 + T(3) * t15 * t27 * ap_ap - T(10) * t25 * t15) * w2 - (T(1) / T(1280)) * seg0 * w1 * t28;
+    G_E = -(T(1) / T(3840)) * seg0 * (T(384) * t26 * seg5 - T(384) * w0 * t19 - t25 * t15 * w1 - T(2) * seg0 * w2 * (t25 * t15 * ab_ap + T(48) * t18 - T(48) * t24));
   }
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
   grad[1] = (G_ap * foot1 - ab1 * G_E) * g_factor;
@@ -18147,16 +18149,16 @@ T segment_inverse_i10_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
-    foot1 = -(exact_cross[0] * ab2 - exact_cross[2] * ab0) * seg0;
+    foot1 = -seg0 * (exact_cross[0] * ab2 - exact_cross[2] * ab0);
     foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
@@ -18166,7 +18168,7 @@ T segment_inverse_i10_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -18191,7 +18193,7 @@ T segment_inverse_i10_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = -(T(1) / T(10)) * (seg5 * t8 - t12 * w0 - w1 * M_beyond[0] - T(2) * w2 * M_beyond[1]) * seg0;
+    G_E = -(T(1) / T(10)) * seg0 * (seg5 * t8 - t12 * w0 - w1 * M_beyond[0] - T(2) * w2 * M_beyond[1]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -18209,13 +18211,13 @@ T segment_inverse_i10_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t24 = t20 * t20;
     const T t25 = T(48) * a_minus_b * t17 + T(7) * ab_ab * t18 * t23 + T(48) * t24 * ab_ap;
     const T t26 = t25 * t18 * ab_ap + T(48) * t24 - T(48) * t17;
-    F = (T(1) / T(384)) * t25 * t18 * w0 + (T(1) / T(384)) * w2 * (T(8) * t18 * t23 + T(2) * t26 * seg0 * ab_ap - t25 * ap_ap * t18) * seg0 + (T(1) / T(384)) * t26 * w1 * seg0;
+    F = (T(1) / T(384)) * t25 * t18 * w0 + (T(1) / T(384)) * t26 * w1 * seg0 + (T(1) / T(384)) * (T(8) * t18 * t23 + T(2) * t26 * seg0 * ab_ap - t25 * ap_ap * t18) * w2 * seg0;
     const T t27 = t24 * t19;
     const T t28 = t17 * t15;
     const T t29 = T(128) * a_minus_b * t28 + T(3) * t25 * ab_ab * t18 + T(128) * t27 * ab_ap;
     const T t30 = T(128) * t27 + t29 * t18 * ab_ap - T(128) * t28;
-    G_ap = (T(1) / T(3840)) * w2 * (T(10) * t25 * t18 + T(6) * t30 * seg0 * ab_ap - T(3) * ap_ap * t29 * t18) * seg0 + (T(1) / T(1280)) * w1 * t30 * seg0 + (T(1) / T(1280)) * t29 * t18 * w0;
-    G_E = -(T(1) / T(3840)) * seg0 * (T(384) * seg5 * t28 - t25 * w1 * t18 - T(2) * t26 * w2 * seg0 - T(384) * t27 * w0);
+    G_ap = (T(1) / T(1280)) * w1 * seg0 * t30 + (T(1) / T(1280)) * t29 * t18 * w0 + (T(1) / T(3840)) * w2 * seg0 * (T(10) * t25 * t18 + T(6) * seg0 * t30 * ab_ap - T(3) * ap_ap * t29 * t18);
+    G_E = (T(1) / T(3840)) * (t25 * w1 * t18 + T(384) * t27 * w0 + T(2) * t26 * w2 * seg0 - T(384) * seg5 * t28) * seg0;
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -18424,7 +18426,7 @@ T segment_inverse_i10_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap2 * bp2 + ap1 * bp1 + ap0 * bp0;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -18454,8 +18456,8 @@ T segment_inverse_i10_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t8 * t8;
     const T t16 = T(7) * t6 * t13 * ab_ab + T(48) * a_minus_b * t14 + T(48) * ab_ap * t15;
     const T t17 = T(48) * t14 - T(48) * t15 - ab_ap * t6 * t16;
-    const T t18 = t6 * t16 * ap_ap + T(2) * ab_ap * seg0 * t17 - T(8) * t6 * t13;
-    F = (T(1) / T(384)) * t6 * t16 * w0 - (T(1) / T(384)) * seg0 * w2 * t18 - (T(1) / T(384)) * (T(2) * ab_ap * seg0 * t18 - seg0 * t17 * ap_ap - T(8) * seg0 * (ab_ap * t6 * t13 + T(8) * t11 - T(8) * t12)) * seg0 * w3 - (T(1) / T(384)) * w1 * seg0 * t17;
+    const T t18 = t6 * t16 * ap_ap + T(2) * seg0 * ab_ap * t17 - T(8) * t6 * t13;
+    F = (T(1) / T(384)) * t6 * t16 * w0 + (T(1) / T(384)) * seg0 * (seg0 * t17 * ap_ap + T(8) * seg0 * (ab_ap * t6 * t13 + T(8) * t11 - T(8) * t12) - T(2) * seg0 * t18 * ab_ap) * w3 - (T(1) / T(384)) * seg0 * w1 * t17 - (T(1) / T(384)) * seg0 * t18 * w2;
   }
   f = length * F;
   return f;
@@ -18552,7 +18554,7 @@ std::array<T, 3> segment_inverse_i10_w3_grad(const T* pre, const SegmentPoint<T>
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * (T(3) * M_beyond[2] * w3 + T(2) * M_beyond[1] * w2 + t8 * w0 + M_beyond[0] * w1 - seg5 * t12) * seg0;
+    G_E = (T(1) / T(10)) * seg0 * (T(3) * M_beyond[2] * w3 + T(2) * M_beyond[1] * w2 + t8 * w0 + M_beyond[0] * w1 - t12 * seg5);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -18573,10 +18575,10 @@ std::array<T, 3> segment_inverse_i10_w3_grad(const T* pre, const SegmentPoint<T>
     const T t27 = t25 * t21;
     const T t28 = T(3) * ab_ab * t19 * t26 + T(128) * ab_ap * t18 + T(128) * a_minus_b * t27;
     const T t29 = T(128) * t18 + t19 * ab_ap * t28 - T(128) * t27;
-    const T t30 = T(3) * t19 * t28 * ap_ap - T(10) * t19 * t26 - T(6) * t29 * ab_ap * seg0;
+    const T t30 = T(3) * t19 * t28 * ap_ap - T(6) * t29 * ab_ap * seg0 - T(10) * t19 * t26;
     const T t31 = T(48) * t17 + t19 * ab_ap * t26 - T(48) * t25;
-    G_ap = (T(1) / T(1280)) * t29 * w1 * seg0 + (T(1) / T(1280)) * t19 * t28 * w0 - (T(1) / T(3840)) * seg0 * (T(3) * t29 * ap_ap * seg0 + T(2) * ab_ap * t30 * seg0 - T(10) * seg0 * t31) * w3 - (T(1) / T(3840)) * t30 * w2 * seg0;
-    G_E = -(T(1) / T(3840)) * seg0 * (T(384) * seg5 * t27 - T(3) * seg0 * (T(8) * t19 * t24 + T(2) * ab_ap * seg0 * t31 - t19 * t26 * ap_ap) * w3 - T(2) * w2 * seg0 * t31 - T(384) * t18 * w0 - t19 * w1 * t26);
+    G_ap = (T(1) / T(1280)) * t29 * w1 * seg0 + (T(1) / T(1280)) * t19 * t28 * w0 - (T(1) / T(3840)) * t30 * seg0 * w2 - (T(1) / T(3840)) * (T(2) * t30 * ab_ap * seg0 + T(3) * t29 * seg0 * ap_ap - T(10) * seg0 * t31) * seg0 * w3;
+    G_E = (T(1) / T(3840)) * (T(3) * seg0 * (T(8) * t19 * t24 + T(2) * ab_ap * seg0 * t31 - t19 * t26 * ap_ap) * w3 + T(384) * t18 * w0 + T(2) * seg0 * w2 * t31 + t19 * w1 * t26 - T(384) * t27 * seg5) * seg0;
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = -g_factor * (G_E * ab1 - G_ap * foot1);
@@ -18635,17 +18637,17 @@ T segment_inverse_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -18654,7 +18656,7 @@ T segment_inverse_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -18664,7 +18666,7 @@ T segment_inverse_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = w3 * M_flat[3] + w1 * M_flat[1] + w2 * M_flat[2] + w0 * M_flat[0];
     const T t4 = M_flat[8] * w3 + M_flat[6] * w1 + M_flat[5] * w0 + w2 * M_flat[7];
     G_ap = t4;
-    G_E = w1 * M_flat[7] + w2 * M_flat[8] + w0 * M_flat[6] + w3 * M_flat[9] - seg0 * t4 * ab_ap;
+    G_E = w1 * M_flat[7] + w2 * M_flat[8] + w0 * M_flat[6] + w3 * M_flat[9] - t4 * ab_ap * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -18679,7 +18681,7 @@ T segment_inverse_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t9;
-    G_E = (T(1) / T(10)) * seg0 * (t8 * w0 + T(2) * w2 * M_beyond[1] + w1 * M_beyond[0] + T(3) * w3 * M_beyond[2] - t12 * seg5);
+    G_E = (T(1) / T(10)) * (t8 * w0 + T(2) * w2 * M_beyond[1] + w1 * M_beyond[0] + T(3) * w3 * M_beyond[2] - seg5 * t12) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -18687,25 +18689,25 @@ T segment_inverse_i10_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T J2 = t14 * atan2(t13, ap_bp);
     const T t15 = T(1) / ap_ap;
     const T t16 = t15 * t15;
-    const T t17 = t16 * t15;
-    const T t18 = T(1) / bp_bp;
-    const T t19 = t18 * t18;
-    const T t20 = t19 * t18;
-    const T t21 = T(1) / cross_cross;
-    const T t22 = T(8) * t17 * ab_ap + T(8) * a_minus_b * t20 + T(5) * (T(2) * t16 * ab_ap + T(2) * a_minus_b * t19 + T(3) * (ab_ab * J2 + a_minus_b * t18 + t15 * ab_ap) * ab_ab * t21) * ab_ab * t21;
-    const T t23 = t16 * t16;
-    const T t24 = t19 * t19;
-    const T t25 = T(7) * ab_ab * t22 * t21 + T(48) * t23 * ab_ap + T(48) * a_minus_b * t24;
-    const T t26 = T(48) * t23 + t21 * ab_ap * t25 - T(48) * t24;
-    const T t27 = T(8) * t22 * t21 + T(2) * seg0 * t26 * ab_ap - ap_ap * t21 * t25;
-    F = (T(1) / T(384)) * w2 * seg0 * t27 + (T(1) / T(384)) * seg0 * t26 * w1 + (T(1) / T(384)) * w0 * t21 * t25 + (T(1) / T(384)) * seg0 * w3 * (T(8) * seg0 * (T(8) * t17 + t22 * t21 * ab_ap - T(8) * t20) + T(2) * seg0 * t27 * ab_ap - ap_ap * seg0 * t26);
-    const T t28 = t23 * t15;
-    const T t29 = t24 * t18;
-    const T t30 = T(3) * ab_ab * t21 * t25 + T(128) * t28 * ab_ap + T(128) * a_minus_b * t29;
-    const T t31 = T(128) * t28 + t21 * ab_ap * t30 - T(128) * t29;
-    const T t32 = T(10) * t21 * t25 + T(6) * seg0 * ab_ap * t31 - T(3) * ap_ap * t21 * t30;
-    G_ap = (T(1) / T(3840)) * seg0 * w3 * (T(2) * seg0 * t32 * ab_ap + T(10) * seg0 * t26 - T(3) * ap_ap * seg0 * t31) + (T(1) / T(3840)) * w2 * seg0 * t32 + (T(1) / T(1280)) * w0 * t21 * t30 + (T(1) / T(1280)) * seg0 * w1 * t31;
-    G_E = (T(1) / T(3840)) * seg0 * (T(384) * t28 * w0 + t21 * w1 * t25 + T(3) * seg0 * w3 * t27 + T(2) * w2 * seg0 * t26 - T(384) * t29 * seg5);
+    const T t17 = t16 * t16;
+    const T t18 = T(1) / cross_cross;
+    const T t19 = t16 * t15;
+    const T t20 = T(1) / bp_bp;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * t20;
+    const T t23 = T(8) * t19 * ab_ap + T(8) * a_minus_b * t22 + T(5) * (T(2) * t16 * ab_ap + T(2) * a_minus_b * t21 + T(3) * (ab_ab * J2 + a_minus_b * t20 + t15 * ab_ap) * ab_ab * t18) * ab_ab * t18;
+    const T t24 = t21 * t21;
+    const T t25 = T(7) * ab_ab * t23 * t18 + T(48) * t17 * ab_ap + T(48) * a_minus_b * t24;
+    const T t26 = T(48) * t17 + t18 * ab_ap * t25 - T(48) * t24;
+    const T t27 = T(2) * t26 * ab_ap * seg0 + T(8) * t23 * t18 - ap_ap * t18 * t25;
+    F = (T(1) / T(384)) * w2 * t27 * seg0 + (T(1) / T(384)) * t26 * w1 * seg0 + (T(1) / T(384)) * w0 * t18 * t25 - (T(1) / T(384)) * w3 * (ap_ap * t26 * seg0 - T(8) * (T(8) * t19 + t23 * t18 * ab_ap - T(8) * t22) * seg0 - T(2) * t27 * ab_ap * seg0) * seg0;
+    const T t28 = t17 * t15;
+    const T t29 = t24 * t20;
+    const T t30 = T(3) * ab_ab * t18 * t25 + T(128) * t28 * ab_ap + T(128) * a_minus_b * t29;
+    const T t31 = T(128) * t28 + t18 * ab_ap * t30 - T(128) * t29;
+    const T t32 = T(6) * ab_ap * t31 * seg0 + T(10) * t18 * t25 - T(3) * ap_ap * t18 * t30;
+    G_ap = (T(1) / T(3840)) * w3 * (T(2) * ab_ap * t32 * seg0 + T(10) * t26 * seg0 - T(3) * ap_ap * t31 * seg0) * seg0 + (T(1) / T(1280)) * w0 * t18 * t30 + (T(1) / T(1280)) * w1 * t31 * seg0 + (T(1) / T(3840)) * w2 * t32 * seg0;
+    G_E = (T(1) / T(3840)) * (T(2) * w2 * t26 * seg0 + T(384) * t28 * w0 + t18 * w1 * t25 + T(3) * w3 * t27 * seg0 - T(384) * seg5 * t29) * seg0;
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
@@ -18912,7 +18914,7 @@ T segment_inverse_i11_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg7 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg7 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -18990,17 +18992,17 @@ std::array<T, 3> segment_inverse_i11_w0_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = bp2 * ab2 + bp0 * ab0 + bp1 * ab1;
@@ -19009,7 +19011,7 @@ std::array<T, 3> segment_inverse_i11_w0_grad(const T* pre, const SegmentPoint<T>
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -19119,9 +19121,9 @@ T segment_inverse_i11_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -19129,7 +19131,7 @@ T segment_inverse_i11_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = (ab2 * exact_cross[1] - ab1 * exact_cross[2]) * seg0;
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
+    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = ab2 * bp2 + ab0 * bp0 + ab1 * bp1;
@@ -19148,7 +19150,7 @@ T segment_inverse_i11_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     segment_moments_far_field<T>(11, 13, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * w0;
     G_ap = w0 * M_flat[2];
-    G_E = M_flat[3] * w0 - ab_ap * seg0 * w0 * M_flat[2];
+    G_E = M_flat[3] * w0 - seg0 * ab_ap * w0 * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -19412,7 +19414,7 @@ T segment_inverse_i11_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -19493,16 +19495,16 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
@@ -19512,7 +19514,7 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const T* pre, const SegmentPoint<T>
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -19521,7 +19523,7 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(11, 13, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[3] * w0 + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w1 * M_flat[5] + M_flat[4] * w0 - ab_ap * t4 * seg0;
+    G_E = w1 * M_flat[5] + M_flat[4] * w0 - seg0 * ab_ap * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -19539,7 +19541,7 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const T* pre, const SegmentPoint<T>
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * (w1 * M_beyond[0] + w0 * t10 - t16 * seg7) * seg0;
+    G_E = (T(1) / T(11)) * seg0 * (w1 * M_beyond[0] + w0 * t10 - t16 * seg7);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r1;
@@ -19557,18 +19559,18 @@ std::array<T, 3> segment_inverse_i11_w1_grad(const T* pre, const SegmentPoint<T>
     const T t29 = t24 * t23;
     const T t30 = T(35) * t17 * a_minus_b * t20 + T(8) * (T(5) * t17 * a_minus_b * t28 + T(2) * ab_ab * t27 * (T(3) * t17 * a_minus_b * t19 + T(4) * ab_ab * t27 * (ab_ap * t22 * t23 + T(2) * ab_ab * t27 * (t17 * a_minus_b + ab_ap * t22) + t17 * a_minus_b * t18) + T(3) * ab_ap * t22 * t24) + T(5) * ab_ap * t22 * t29) * ab_ab * t27 + T(35) * ab_ap * t22 * t25;
     const T t31 = T(63) * t17 * a_minus_b * t21 + T(63) * ab_ap * t22 * t26 + T(2) * ab_ab * t27 * t30;
-    G_ap = (T(1) / T(693)) * (t31 * t27 * ab_ap + T(63) * t22 * t26 - T(63) * t17 * t21) * w1 * seg0 + (T(1) / T(693)) * t31 * t27 * w0;
-    const T t32 = t22 * t22;
+    G_ap = (T(1) / T(693)) * t31 * t27 * w0 + (T(1) / T(693)) * (t31 * t27 * ab_ap + T(63) * t22 * t26 - T(63) * t17 * t21) * w1 * seg0;
+    const T t32 = t17 * t17;
     const T t33 = t32 * t32;
-    const T t34 = t33 * t22;
+    const T t34 = t33 * t17;
     const T t35 = t34 * t34;
-    const T t36 = t35 * t22;
-    const T t37 = t17 * t17;
+    const T t36 = t35 * t17;
+    const T t37 = t22 * t22;
     const T t38 = t37 * t37;
-    const T t39 = t38 * t17;
+    const T t39 = t38 * t22;
     const T t40 = t39 * t39;
-    const T t41 = t40 * t17;
-    G_E = (T(1) / T(3465)) * (T(315) * w0 * t36 + w1 * t27 * t30 - T(315) * t41 * seg7) * seg0;
+    const T t41 = t40 * t22;
+    G_E = -(T(1) / T(3465)) * seg0 * (T(315) * t36 * seg7 - T(315) * w0 * t41 - w1 * t27 * t30);
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
@@ -19625,9 +19627,9 @@ T segment_inverse_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -19645,7 +19647,7 @@ T segment_inverse_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -19655,7 +19657,7 @@ T segment_inverse_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = w1 * M_flat[1] + M_flat[0] * w0;
     const T t4 = w1 * M_flat[4] + M_flat[3] * w0;
     G_ap = t4;
-    G_E = M_flat[4] * w0 + M_flat[5] * w1 - t4 * ab_ap * seg0;
+    G_E = M_flat[4] * w0 + M_flat[5] * w1 - seg0 * t4 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -19674,7 +19676,7 @@ T segment_inverse_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * (t10 * w0 + w1 * M_beyond[0] - seg7 * t16) * seg0;
+    G_E = (T(1) / T(11)) * (t10 * w0 + w1 * M_beyond[0] - t16 * seg7) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r0;
@@ -19689,7 +19691,7 @@ T segment_inverse_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t26 = T(1) / cross_cross;
     const T t27 = t23 * t23;
     const T t28 = T(35) * t20 * t17 * ab_ap + T(8) * (T(5) * t21 * t24 * a_minus_b + T(5) * t25 * t17 * ab_ap + T(2) * ab_ab * t26 * (T(4) * (T(2) * ab_ab * t26 * (t21 * a_minus_b + t17 * ab_ap) + t21 * t22 * a_minus_b + t18 * t17 * ab_ap) * ab_ab * t26 + T(3) * t21 * t23 * a_minus_b + T(3) * t19 * t17 * ab_ap)) * ab_ab * t26 + T(35) * t21 * t27 * a_minus_b;
-    F = (T(1) / T(315)) * w1 * (t28 * t26 * ab_ap + T(35) * t20 * t17 - T(35) * t21 * t27) * seg0 + (T(1) / T(315)) * t28 * t26 * w0;
+    F = (T(1) / T(315)) * t28 * t26 * w0 + (T(1) / T(315)) * w1 * (t28 * t26 * ab_ap + T(35) * t20 * t17 - T(35) * t21 * t27) * seg0;
     const T t29 = t20 * t18;
     const T t30 = t27 * t22;
     const T t31 = T(2) * t28 * ab_ab * t26 + T(63) * t29 * t17 * ab_ap + T(63) * t21 * t30 * a_minus_b;
@@ -19704,7 +19706,7 @@ T segment_inverse_i11_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t39 = t38 * t21;
     const T t40 = t39 * t39;
     const T t41 = t40 * t21;
-    G_E = (T(1) / T(3465)) * (T(315) * t36 * w0 + t28 * w1 * t26 - T(315) * seg7 * t41) * seg0;
+    G_E = (T(1) / T(3465)) * (T(315) * t36 * w0 + t28 * w1 * t26 - T(315) * t41 * seg7) * seg0;
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
@@ -19951,7 +19953,7 @@ T segment_inverse_i11_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t11 * t11;
     const T t16 = T(8) * t13 * ab_ab * t4 + T(35) * a_minus_b * t14 * t5 + T(35) * t9 * ab_ap * t15;
     const T t17 = t4 * ab_ap * t16 + T(35) * t9 * t15 - T(35) * t14 * t5;
-    F = (T(1) / T(315)) * t4 * w0 * t16 + (T(1) / T(315)) * seg0 * w1 * t17 - (T(1) / T(315)) * (t4 * t16 * ap_ap - T(2) * ab_ap * seg0 * t17 - T(9) * t13 * t4) * seg0 * w2;
+    F = (T(1) / T(315)) * seg0 * w1 * t17 + (T(1) / T(315)) * t4 * w0 * t16 - (T(1) / T(315)) * seg0 * (t4 * t16 * ap_ap - T(2) * seg0 * ab_ap * t17 - T(9) * t13 * t4) * w2;
   }
   f = length * F;
   return f;
@@ -20025,7 +20027,7 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const T* pre, const SegmentPoint<T>
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -20052,7 +20054,7 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const T* pre, const SegmentPoint<T>
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * (M_beyond[0] * w1 + T(2) * M_beyond[1] * w2 + w0 * t10 - seg7 * t16) * seg0;
+    G_E = (T(1) / T(11)) * (M_beyond[0] * w1 + T(2) * M_beyond[1] * w2 + w0 * t10 - t16 * seg7) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r0;
@@ -20071,7 +20073,7 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const T* pre, const SegmentPoint<T>
     const T t30 = t28 * t24;
     const T t31 = T(63) * ab_ap * t21 * t17 + T(2) * ab_ab * t29 * t22 + T(63) * t23 * a_minus_b * t30;
     const T t32 = t31 * t22 * ab_ap + T(63) * t21 * t17 - T(63) * t23 * t30;
-    G_ap = (T(1) / T(693)) * t31 * t22 * w0 + (T(1) / T(693)) * w1 * t32 * seg0 + (T(1) / T(3465)) * seg0 * w2 * (T(11) * t29 * t22 + T(10) * ab_ap * t32 * seg0 - T(5) * t31 * t22 * ap_ap);
+    G_ap = (T(1) / T(693)) * w1 * t32 * seg0 + (T(1) / T(693)) * t31 * t22 * w0 + (T(1) / T(3465)) * (T(11) * t29 * t22 + T(10) * ab_ap * t32 * seg0 - T(5) * t31 * t22 * ap_ap) * seg0 * w2;
     const T t33 = t17 * t17;
     const T t34 = t33 * t33;
     const T t35 = t34 * t17;
@@ -20082,7 +20084,7 @@ std::array<T, 3> segment_inverse_i11_w2_grad(const T* pre, const SegmentPoint<T>
     const T t40 = t39 * t23;
     const T t41 = t40 * t40;
     const T t42 = t41 * t23;
-    G_E = (T(1) / T(3465)) * (T(2) * (T(35) * t20 * t17 + t29 * t22 * ab_ap - T(35) * t23 * t28) * seg0 * w2 + t29 * t22 * w1 + T(315) * w0 * t37 - T(315) * seg7 * t42) * seg0;
+    G_E = (T(1) / T(3465)) * seg0 * (t29 * t22 * w1 + T(315) * w0 * t37 + T(2) * seg0 * (T(35) * t20 * t17 + t29 * t22 * ab_ap - T(35) * t23 * t28) * w2 - T(315) * t42 * seg7);
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
   grad[1] = -g_factor * (G_E * ab1 - foot1 * G_ap);
@@ -20140,17 +20142,17 @@ T segment_inverse_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - seg0 * ab_ap * ab2;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - ab0 * exact_cross[2]);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
+    foot1 = -(exact_cross[0] * ab2 - ab0 * exact_cross[2]) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab0 * bp0 + ab1 * bp1 + bp2 * ab2;
@@ -20160,7 +20162,7 @@ T segment_inverse_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -20170,7 +20172,7 @@ T segment_inverse_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = M_flat[0] * w0 + M_flat[1] * w1 + M_flat[2] * w2;
     const T t4 = w0 * M_flat[4] + M_flat[6] * w2 + w1 * M_flat[5];
     G_ap = t4;
-    G_E = w0 * M_flat[5] + M_flat[7] * w2 + M_flat[6] * w1 - seg0 * ab_ap * t4;
+    G_E = w0 * M_flat[5] + M_flat[7] * w2 + M_flat[6] * w1 - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -20189,7 +20191,7 @@ T segment_inverse_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * seg0 * (w0 * t10 + w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] - t16 * seg7);
+    G_E = (T(1) / T(11)) * (w0 * t10 + w1 * M_beyond[0] + T(2) * w2 * M_beyond[1] - seg7 * t16) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / cross_cross;
@@ -20206,12 +20208,12 @@ T segment_inverse_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t28 = t24 * t24;
     const T t29 = T(35) * ab_ap * t21 * t18 + T(8) * t17 * t27 * ab_ab + T(35) * t22 * t28 * a_minus_b;
     const T t30 = t17 * ab_ap * t29 + T(35) * t21 * t18 - T(35) * t22 * t28;
-    F = (T(1) / T(315)) * seg0 * w1 * t30 + (T(1) / T(315)) * t17 * w0 * t29 + (T(1) / T(315)) * seg0 * (T(2) * seg0 * ab_ap * t30 + T(9) * t17 * t27 - t17 * ap_ap * t29) * w2;
+    F = (T(1) / T(315)) * t17 * w0 * t29 + (T(1) / T(315)) * (T(2) * ab_ap * t30 * seg0 + T(9) * t17 * t27 - t17 * ap_ap * t29) * w2 * seg0 + (T(1) / T(315)) * w1 * t30 * seg0;
     const T t31 = t21 * t19;
     const T t32 = t28 * t23;
     const T t33 = T(63) * ab_ap * t31 * t18 + T(2) * t17 * ab_ab * t29 + T(63) * t22 * t32 * a_minus_b;
     const T t34 = t17 * ab_ap * t33 + T(63) * t31 * t18 - T(63) * t22 * t32;
-    G_ap = (T(1) / T(693)) * t17 * w0 * t33 + (T(1) / T(693)) * seg0 * w1 * t34 + (T(1) / T(3465)) * seg0 * (T(10) * seg0 * ab_ap * t34 + T(11) * t17 * t29 - T(5) * t17 * t33 * ap_ap) * w2;
+    G_ap = (T(1) / T(693)) * w1 * t34 * seg0 + (T(1) / T(693)) * t17 * w0 * t33 + (T(1) / T(3465)) * (T(10) * ab_ap * t34 * seg0 + T(11) * t17 * t29 - T(5) * t17 * t33 * ap_ap) * w2 * seg0;
     const T t35 = t18 * t18;
     const T t36 = t35 * t35;
     const T t37 = t36 * t18;
@@ -20222,7 +20224,7 @@ T segment_inverse_i11_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t42 = t41 * t22;
     const T t43 = t42 * t42;
     const T t44 = t43 * t22;
-    G_E = (T(1) / T(3465)) * seg0 * (t17 * w1 * t29 + T(315) * w0 * t39 + T(2) * seg0 * t30 * w2 - T(315) * t44 * seg7);
+    G_E = (T(1) / T(3465)) * (t17 * w1 * t29 + T(315) * w0 * t39 + T(2) * t30 * w2 * seg0 - T(315) * seg7 * t44) * seg0;
   }
   f = length * F;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -20461,21 +20463,21 @@ T segment_inverse_i11_w3_f(const T* pre, const SegmentPoint<T>& point) {
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t4 = T(1) / cross_cross;
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
-    const T t8 = t7 * t7;
-    const T t9 = T(1) / r1;
+    const T t8 = t7 * t6;
+    const T t9 = T(1) / r0;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
-    const T t13 = t7 * t6;
-    const T t14 = T(5) * a_minus_b * t12 * t9 + T(2) * ab_ab * t4 * (T(4) * ab_ab * t4 * (T(2) * ab_ab * (t5 * ab_ap + a_minus_b * t9) * t4 + t6 * t5 * ab_ap + a_minus_b * t10 * t9) + T(3) * a_minus_b * t11 * t9 + T(3) * t7 * t5 * ab_ap) + T(5) * t13 * t5 * ab_ap;
-    const T t15 = t11 * t11;
-    const T t16 = T(35) * t8 * t5 * ab_ap + T(8) * ab_ab * t4 * t14 + T(35) * a_minus_b * t15 * t9;
-    const T t17 = t4 * t16 * ab_ap + T(35) * t8 * t5 - T(35) * t15 * t9;
-    const T t18 = T(2) * t17 * ab_ap * seg0 + T(9) * t4 * t14 - ap_ap * t4 * t16;
-    F = (T(1) / T(315)) * t18 * seg0 * w2 + (T(1) / T(315)) * w1 * t17 * seg0 + (T(1) / T(315)) * w0 * t4 * t16 - (T(1) / T(315)) * (ap_ap * t17 * seg0 - T(9) * (t4 * t14 * ab_ap + T(5) * t13 * t5 - T(5) * t12 * t9) * seg0 - T(2) * t18 * ab_ap * seg0) * w3 * seg0;
+    const T t13 = T(5) * a_minus_b * t8 * t5 + T(2) * ab_ab * t4 * (T(4) * ab_ab * t4 * (T(2) * ab_ab * (t9 * ab_ap + a_minus_b * t5) * t4 + t10 * t9 * ab_ap + a_minus_b * t6 * t5) + T(3) * a_minus_b * t7 * t5 + T(3) * t11 * t9 * ab_ap) + T(5) * t12 * t9 * ab_ap;
+    const T t14 = t11 * t11;
+    const T t15 = t7 * t7;
+    const T t16 = T(35) * t14 * t9 * ab_ap + T(8) * ab_ab * t4 * t13 + T(35) * a_minus_b * t15 * t5;
+    const T t17 = t4 * t16 * ab_ap + T(35) * t14 * t9 - T(35) * t15 * t5;
+    const T t18 = T(2) * t17 * seg0 * ab_ap + T(9) * t4 * t13 - ap_ap * t4 * t16;
+    F = (T(1) / T(315)) * w3 * seg0 * (T(9) * (t4 * t13 * ab_ap + T(5) * t12 * t9 - T(5) * t8 * t5) * seg0 + T(2) * t18 * seg0 * ab_ap - ap_ap * t17 * seg0) + (T(1) / T(315)) * w1 * t17 * seg0 + (T(1) / T(315)) * t18 * seg0 * w2 + (T(1) / T(315)) * w0 * t4 * t16;
   }
   f = F * length;
   return f;
@@ -20531,17 +20533,17 @@ std::array<T, 3> segment_inverse_i11_w3_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
@@ -20559,7 +20561,7 @@ std::array<T, 3> segment_inverse_i11_w3_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(11, 13, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[7] * w2 + w3 * M_flat[8] + M_flat[6] * w1 + w0 * M_flat[5];
     G_ap = t4;
-    G_E = M_flat[9] * w3 + M_flat[6] * w0 + M_flat[7] * w1 + M_flat[8] * w2 - seg0 * ab_ap * t4;
+    G_E = M_flat[9] * w3 + M_flat[6] * w0 + M_flat[7] * w1 + M_flat[8] * w2 - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -20577,40 +20579,40 @@ std::array<T, 3> segment_inverse_i11_w3_grad(const T* pre, const SegmentPoint<T>
     const T t14 = t13 * t11;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(11)) * seg0 * (T(2) * M_beyond[1] * w2 + T(3) * M_beyond[2] * w3 + M_beyond[0] * w1 + w0 * t10 - t16 * seg7);
+    G_E = (T(1) / T(11)) * (T(2) * M_beyond[1] * w2 + T(3) * M_beyond[2] * w3 + M_beyond[0] * w1 + w0 * t10 - seg7 * t16) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t17 = T(1) / cross_cross;
-    const T t18 = T(1) / r0;
+    const T t17 = T(1) / r1;
+    const T t18 = t17 * t17;
     const T t19 = t18 * t18;
     const T t20 = t19 * t19;
-    const T t21 = t20 * t20;
-    const T t22 = t21 * t19;
-    const T t23 = T(1) / r1;
+    const T t21 = T(1) / r0;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t22;
     const T t24 = t23 * t23;
-    const T t25 = t24 * t24;
-    const T t26 = t25 * t25;
-    const T t27 = t26 * t24;
-    const T t28 = t25 * t24;
-    const T t29 = t20 * t19;
-    const T t30 = T(5) * t23 * a_minus_b * t28 + T(2) * (T(3) * t20 * ab_ap * t18 + T(4) * ab_ab * t17 * (T(2) * ab_ab * t17 * (ab_ap * t18 + t23 * a_minus_b) + t23 * a_minus_b * t24 + t19 * ab_ap * t18) + T(3) * t23 * a_minus_b * t25) * ab_ab * t17 + T(5) * t29 * ab_ap * t18;
-    const T t31 = T(35) * t23 * a_minus_b * t26 + T(35) * t21 * ab_ap * t18 + T(8) * t30 * ab_ab * t17;
-    const T t32 = T(63) * t22 * ab_ap * t18 + T(63) * t23 * a_minus_b * t27 + T(2) * t31 * ab_ab * t17;
-    const T t33 = t17 * t32 * ab_ap + T(63) * t22 * t18 - T(63) * t23 * t27;
-    const T t34 = T(10) * seg0 * t33 * ab_ap + T(11) * t31 * t17 - T(5) * ap_ap * t17 * t32;
-    const T t35 = T(35) * t23 * t26 - t31 * t17 * ab_ap - T(35) * t21 * t18;
-    G_ap = (T(1) / T(693)) * w0 * t17 * t32 + (T(1) / T(3465)) * seg0 * t34 * w2 + (T(1) / T(693)) * seg0 * w1 * t33 - (T(1) / T(3465)) * seg0 * w3 * (T(11) * seg0 * t35 + T(5) * ap_ap * seg0 * t33 - T(2) * seg0 * t34 * ab_ap);
-    const T t36 = t18 * t18;
+    const T t25 = t19 * t18;
+    const T t26 = T(1) / cross_cross;
+    const T t27 = t23 * t22;
+    const T t28 = T(5) * t17 * a_minus_b * t25 + T(2) * (T(3) * t23 * ab_ap * t21 + T(4) * ab_ab * t26 * (T(2) * ab_ab * t26 * (ab_ap * t21 + t17 * a_minus_b) + t17 * a_minus_b * t18 + t22 * ab_ap * t21) + T(3) * t17 * a_minus_b * t19) * ab_ab * t26 + T(5) * t27 * ab_ap * t21;
+    const T t29 = T(35) * t17 * a_minus_b * t20 + T(35) * t24 * ab_ap * t21 + T(8) * t28 * ab_ab * t26;
+    const T t30 = t24 * t22;
+    const T t31 = t20 * t18;
+    const T t32 = T(63) * t30 * ab_ap * t21 + T(63) * t17 * a_minus_b * t31 + T(2) * t29 * ab_ab * t26;
+    const T t33 = t26 * t32 * ab_ap + T(63) * t30 * t21 - T(63) * t17 * t31;
+    const T t34 = T(11) * t29 * t26 + T(10) * t33 * ab_ap * seg0 - T(5) * ap_ap * t26 * t32;
+    const T t35 = T(35) * t17 * t20 - t29 * t26 * ab_ap - T(35) * t24 * t21;
+    G_ap = (T(1) / T(3465)) * t34 * w2 * seg0 + (T(1) / T(693)) * w0 * t26 * t32 + (T(1) / T(693)) * w1 * t33 * seg0 - (T(1) / T(3465)) * w3 * (T(11) * t35 * seg0 + T(5) * ap_ap * t33 * seg0 - T(2) * t34 * ab_ap * seg0) * seg0;
+    const T t36 = t21 * t21;
     const T t37 = t36 * t36;
-    const T t38 = t37 * t18;
+    const T t38 = t37 * t21;
     const T t39 = t38 * t38;
-    const T t40 = t39 * t18;
-    const T t41 = t23 * t23;
+    const T t40 = t39 * t21;
+    const T t41 = t17 * t17;
     const T t42 = t41 * t41;
-    const T t43 = t42 * t23;
+    const T t43 = t42 * t17;
     const T t44 = t43 * t43;
-    const T t45 = t44 * t23;
-    G_E = (T(1) / T(3465)) * seg0 * (T(3) * seg0 * w3 * (T(9) * t30 * t17 - T(2) * seg0 * t35 * ab_ap - ap_ap * t31 * t17) + T(315) * w0 * t40 + t31 * t17 * w1 - T(315) * t45 * seg7 - T(2) * seg0 * t35 * w2);
+    const T t45 = t44 * t17;
+    G_E = (T(1) / T(3465)) * (T(3) * w3 * (T(9) * t28 * t26 - ap_ap * t29 * t26 - T(2) * t35 * ab_ap * seg0) * seg0 + T(315) * w0 * t40 + t29 * t26 * w1 - T(315) * seg7 * t45 - T(2) * t35 * w2 * seg0) * seg0;
   }
   grad[0] = -(G_E * ab0 - G_ap * foot0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -20735,14 +20737,14 @@ T segment_inverse_i11_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t28 = T(2) * (T(3) * t24 * a_minus_b * t22 + T(3) * ab_ap * t20 * t18 + T(4) * (ab_ap * t19 * t18 + T(2) * ab_ab * (a_minus_b * t22 + ab_ap * t18) * t17 + t23 * a_minus_b * t22) * ab_ab * t17) * ab_ab * t17 + T(5) * t26 * a_minus_b * t22 + T(5) * ab_ap * t27 * t18;
     const T t29 = T(35) * ab_ap * t21 * t18 + T(35) * t25 * a_minus_b * t22 + T(8) * t28 * ab_ab * t17;
     const T t30 = ab_ap * t17 * t29 + T(35) * t21 * t18 - T(35) * t25 * t22;
-    const T t31 = T(2) * ab_ap * t30 * seg0 + T(9) * t28 * t17 - ap_ap * t17 * t29;
-    F = (T(1) / T(315)) * t30 * seg0 * w1 + (T(1) / T(315)) * w2 * seg0 * t31 + (T(1) / T(315)) * w0 * t17 * t29 - (T(1) / T(315)) * seg0 * (t30 * ap_ap * seg0 + T(9) * seg0 * (T(5) * t26 * t22 - T(5) * t27 * t18 - ab_ap * t28 * t17) - T(2) * ab_ap * seg0 * t31) * w3;
+    const T t31 = ap_ap * t17 * t29 - T(9) * t28 * t17 - T(2) * ab_ap * t30 * seg0;
+    F = (T(1) / T(315)) * w0 * t17 * t29 + (T(1) / T(315)) * t30 * seg0 * w1 - (T(1) / T(315)) * w2 * seg0 * t31 - (T(1) / T(315)) * (T(9) * seg0 * (T(5) * t26 * t22 - T(5) * t27 * t18 - ab_ap * t28 * t17) + T(2) * ab_ap * seg0 * t31 + t30 * seg0 * ap_ap) * seg0 * w3;
     const T t32 = t21 * t19;
     const T t33 = t25 * t23;
     const T t34 = T(63) * ab_ap * t32 * t18 + T(63) * t33 * a_minus_b * t22 + T(2) * ab_ab * t17 * t29;
     const T t35 = T(63) * t32 * t18 + ab_ap * t17 * t34 - T(63) * t33 * t22;
-    const T t36 = T(10) * ab_ap * seg0 * t35 + T(11) * t17 * t29 - T(5) * ap_ap * t17 * t34;
-    G_ap = (T(1) / T(693)) * seg0 * t35 * w1 + (T(1) / T(3465)) * w2 * seg0 * t36 + (T(1) / T(3465)) * seg0 * w3 * (T(11) * t30 * seg0 + T(2) * ab_ap * seg0 * t36 - T(5) * ap_ap * seg0 * t35) + (T(1) / T(693)) * w0 * t17 * t34;
+    const T t36 = T(11) * t17 * t29 + T(10) * ab_ap * seg0 * t35 - T(5) * ap_ap * t17 * t34;
+    G_ap = (T(1) / T(3465)) * w2 * seg0 * t36 + (T(1) / T(693)) * seg0 * t35 * w1 + (T(1) / T(3465)) * seg0 * w3 * (T(2) * ab_ap * seg0 * t36 + T(11) * t30 * seg0 - T(5) * seg0 * ap_ap * t35) + (T(1) / T(693)) * w0 * t17 * t34;
     const T t37 = t18 * t18;
     const T t38 = t37 * t37;
     const T t39 = t38 * t18;
@@ -20753,7 +20755,7 @@ T segment_inverse_i11_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t44 = t43 * t22;
     const T t45 = t44 * t44;
     const T t46 = t45 * t22;
-    G_E = (T(1) / T(3465)) * (t17 * t29 * w1 + T(3) * seg0 * w3 * t31 + T(315) * t41 * w0 + T(2) * w2 * t30 * seg0 - T(315) * seg7 * t46) * seg0;
+    G_E = (T(1) / T(3465)) * seg0 * (t17 * t29 * w1 + T(315) * t41 * w0 + T(2) * w2 * t30 * seg0 - T(315) * seg7 * t46 - T(3) * seg0 * w3 * t31);
   }
   f = F * length;
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
@@ -21087,7 +21089,7 @@ std::array<T, 3> segment_inverse_i12_w0_grad(const T* pre, const SegmentPoint<T>
     const T t9 = t8 * t8;
     const T t10 = t9 * t8;
     const T t11 = t10 * t10;
-    const T t12 = (T(1) / T(12)) * (t7 * w0 - t11 * w0) * seg0;
+    const T t12 = (T(1) / T(12)) * seg0 * (t7 * w0 - t11 * w0);
     G_E = t12;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -21108,7 +21110,7 @@ std::array<T, 3> segment_inverse_i12_w0_grad(const T* pre, const SegmentPoint<T>
     const T t26 = t25 * t22;
     const T t27 = t24 * t24;
     G_ap = (T(1) / T(15360)) * t15 * (T(1280) * a_minus_b * t19 + T(11) * t15 * (T(128) * a_minus_b * t21 + T(3) * t15 * (T(48) * a_minus_b * t20 + T(7) * t15 * ab_ab * (T(8) * a_minus_b * t18 + T(5) * t15 * (T(2) * a_minus_b * t17 + T(2) * ab_ap * t23 + T(3) * t15 * (J2 * ab_ab + ab_ap * t22 + a_minus_b * t16) * ab_ab) * ab_ab + T(8) * ab_ap * t24) + T(48) * ab_ap * t25) * ab_ab + T(128) * ab_ap * t26) * ab_ab + T(1280) * ab_ap * t27) * w0;
-    const T t28 = (T(1) / T(12)) * (t27 * w0 - t19 * w0) * seg0;
+    const T t28 = (T(1) / T(12)) * seg0 * (t27 * w0 - t19 * w0);
     G_E = t28;
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -21164,9 +21166,9 @@ T segment_inverse_i12_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -21183,7 +21185,7 @@ T segment_inverse_i12_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -21192,7 +21194,7 @@ T segment_inverse_i12_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     segment_moments_far_field<T>(12, 14, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = w0 * M_flat[0];
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * M_flat[2] * ab_ap * seg0;
+    G_E = w0 * M_flat[3] - w0 * M_flat[2] * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -21433,7 +21435,7 @@ T segment_inverse_i12_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp1 * ap1 + bp0 * ap0 + bp2 * ap2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -21463,7 +21465,7 @@ T segment_inverse_i12_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t13 * t9;
     const T t16 = t14 * t6;
     const T t17 = T(3) * (T(7) * (T(8) * t8 * ab_ap + T(8) * a_minus_b * t11 + T(5) * ab_ab * t12 * (T(2) * t7 * ab_ap + T(2) * a_minus_b * t10 + T(3) * (J2 * ab_ab + a_minus_b * t9 + t6 * ab_ap) * ab_ab * t12)) * ab_ab * t12 + T(48) * a_minus_b * t13 + T(48) * t14 * ab_ap) * ab_ab * t12 + T(128) * a_minus_b * t15 + T(128) * t16 * ab_ap;
-    F = (T(1) / T(1280)) * w1 * seg0 * (t17 * t12 * ab_ap + T(128) * t16 - T(128) * t15) + (T(1) / T(1280)) * t17 * t12 * w0;
+    F = (T(1) / T(1280)) * t17 * t12 * w0 + (T(1) / T(1280)) * seg0 * w1 * (t17 * t12 * ab_ap + T(128) * t16 - T(128) * t15);
   }
   f = F * length;
   return f;
@@ -21637,17 +21639,17 @@ T segment_inverse_i12_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab_ap * seg0 * ab0;
-    foot1 = ap1 - ab_ap * seg0 * ab1;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot0 = ap0 - ab_ap * ab0 * seg0;
+    foot1 = ap1 - ab_ap * ab1 * seg0;
+    foot2 = ap2 - ab_ap * ab2 * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
-    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
-    foot2 = seg0 * (exact_cross[0] * ab1 - exact_cross[1] * ab0);
+    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
+    foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
@@ -21656,7 +21658,7 @@ T segment_inverse_i12_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -21666,22 +21668,22 @@ T segment_inverse_i12_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = w0 * M_flat[0] + M_flat[1] * w1;
     const T t4 = w0 * M_flat[3] + M_flat[4] * w1;
     G_ap = t4;
-    G_E = w1 * M_flat[5] + w0 * M_flat[4] - ab_ap * seg0 * t4;
+    G_E = w1 * M_flat[5] + w0 * M_flat[4] - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(12, 14, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = w0 * M_beyond[0] + M_beyond[1] * w1;
     G_ap = w0 * M_beyond[3] + M_beyond[4] * w1;
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
-    const T t9 = T(1) / bp_bp;
+    const T t9 = T(1) / ap_ap;
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(12)) * seg0 * (w0 * t8 + w1 * M_beyond[0] - t12 * seg5);
+    G_E = -(T(1) / T(12)) * (t8 * seg5 - w0 * t12 - w1 * M_beyond[0]) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -21699,12 +21701,12 @@ T segment_inverse_i12_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t24 = t21 * t21;
     const T t25 = t24 * t19;
     const T t26 = T(128) * t18 * a_minus_b + T(3) * ab_ab * (T(7) * (T(5) * (T(2) * t16 * a_minus_b + T(3) * (ab_ap * t19 + J2 * ab_ab + t15 * a_minus_b) * ab_ab * t20 + T(2) * ab_ap * t21) * ab_ab * t20 + T(8) * t22 * a_minus_b + T(8) * ab_ap * t23) * ab_ab * t20 + T(48) * t17 * a_minus_b + T(48) * ab_ap * t24) * t20 + T(128) * ab_ap * t25;
-    F = (T(1) / T(1280)) * t26 * w0 * t20 + (T(1) / T(1280)) * (ab_ap * t26 * t20 + T(128) * t25 - T(128) * t18) * seg0 * w1;
+    F = (T(1) / T(1280)) * t26 * w0 * t20 + (T(1) / T(1280)) * (ab_ap * t26 * t20 + T(128) * t25 - T(128) * t18) * w1 * seg0;
     const T t27 = t22 * t22;
     const T t28 = t23 * t23;
     const T t29 = T(11) * t26 * ab_ab * t20 + T(1280) * t27 * a_minus_b + T(1280) * ab_ap * t28;
-    G_ap = (T(1) / T(15360)) * seg0 * (ab_ap * t29 * t20 + T(1280) * t28 - T(1280) * t27) * w1 + (T(1) / T(15360)) * w0 * t29 * t20;
-    G_E = (T(1) / T(15360)) * seg0 * (T(1280) * w0 * t28 + t26 * w1 * t20 - T(1280) * t27 * seg5);
+    G_ap = (T(1) / T(15360)) * w0 * t29 * t20 + (T(1) / T(15360)) * (ab_ap * t29 * t20 + T(1280) * t28 - T(1280) * t27) * w1 * seg0;
+    G_E = -(T(1) / T(15360)) * (T(1280) * t27 * seg5 - T(1280) * w0 * t28 - t26 * w1 * t20) * seg0;
   }
   f = length * F;
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -21910,7 +21912,7 @@ T segment_inverse_i12_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -21942,7 +21944,7 @@ T segment_inverse_i12_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t15 * t12;
     const T t18 = T(128) * ab_ap * t9 + T(3) * ab_ab * t10 * t16 + T(128) * a_minus_b * t17;
     const T t19 = t18 * t10 * ab_ap + T(128) * t9 - T(128) * t17;
-    F = (T(1) / T(1280)) * t19 * w1 * seg0 + (T(1) / T(1280)) * t18 * t10 * w0 + (T(1) / T(3840)) * (T(10) * t10 * t16 + T(6) * ab_ap * t19 * seg0 - T(3) * t18 * t10 * ap_ap) * seg0 * w2;
+    F = (T(1) / T(1280)) * t18 * t10 * w0 + (T(1) / T(3840)) * seg0 * w2 * (T(10) * t10 * t16 + T(6) * ab_ap * seg0 * t19 - T(3) * t18 * t10 * ap_ap) + (T(1) / T(1280)) * seg0 * t19 * w1;
   }
   f = length * F;
   return f;
@@ -21997,17 +21999,17 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - ab2 * exact_cross[1]);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
+    foot0 = -(exact_cross[2] * ab1 - ab2 * exact_cross[1]) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = ab1 * bp1 + ab0 * bp0 + ab2 * bp2;
@@ -22015,7 +22017,7 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -22024,44 +22026,44 @@ std::array<T, 3> segment_inverse_i12_w2_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(12, 14, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[4] * w0 + M_flat[6] * w2 + M_flat[5] * w1;
     G_ap = t4;
-    G_E = w0 * M_flat[5] + w1 * M_flat[6] + M_flat[7] * w2 - seg0 * ab_ap * t4;
+    G_E = w0 * M_flat[5] + w1 * M_flat[6] + M_flat[7] * w2 - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
     segment_moments_beyond_end<T>(12, 14, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = w1 * M_beyond[5] + M_beyond[6] * w2 + w0 * M_beyond[4];
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
-    const T t9 = T(1) / bp_bp;
+    const T t9 = T(1) / ap_ap;
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(12)) * seg0 * (T(2) * M_beyond[1] * w2 + M_beyond[0] * w1 + w0 * t8 - t12 * seg5);
+    G_E = -(T(1) / T(12)) * (t8 * seg5 - T(2) * M_beyond[1] * w2 - M_beyond[0] * w1 - w0 * t12) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
     const T t14 = T(1) / t13;
     const T J2 = t14 * atan2(t13, ap_bp);
-    const T t15 = T(1) / cross_cross;
-    const T t16 = T(1) / ap_ap;
-    const T t17 = t16 * t16;
-    const T t18 = t17 * t16;
-    const T t19 = t18 * t18;
+    const T t15 = T(1) / ap_ap;
+    const T t16 = t15 * t15;
+    const T t17 = t16 * t15;
+    const T t18 = t17 * t17;
+    const T t19 = T(1) / cross_cross;
     const T t20 = T(1) / bp_bp;
     const T t21 = t20 * t20;
     const T t22 = t21 * t20;
     const T t23 = t22 * t22;
-    const T t24 = t17 * t17;
-    const T t25 = t24 * t16;
+    const T t24 = t16 * t16;
+    const T t25 = t24 * t15;
     const T t26 = t21 * t21;
     const T t27 = t26 * t20;
-    const T t28 = T(128) * ab_ap * t25 + T(128) * a_minus_b * t27 + T(3) * (T(7) * t15 * (T(5) * t15 * (T(2) * ab_ap * t17 + T(3) * t15 * (a_minus_b * t20 + J2 * ab_ab + ab_ap * t16) * ab_ab + T(2) * a_minus_b * t21) * ab_ab + T(8) * ab_ap * t18 + T(8) * a_minus_b * t22) * ab_ab + T(48) * ab_ap * t24 + T(48) * a_minus_b * t26) * t15 * ab_ab;
-    const T t29 = T(1280) * ab_ap * t19 + T(1280) * a_minus_b * t23 + T(11) * t15 * t28 * ab_ab;
-    const T t30 = T(1280) * t19 + t15 * ab_ap * t29 - T(1280) * t23;
-    G_ap = (T(1) / T(15360)) * w0 * t15 * t29 + (T(1) / T(15360)) * seg0 * t30 * w1 + (T(1) / T(15360)) * seg0 * w2 * (T(12) * t15 * t28 + T(2) * seg0 * ab_ap * t30 - t15 * t29 * ap_ap);
-    G_E = (T(1) / T(15360)) * seg0 * (t15 * w1 * t28 + T(2) * seg0 * (T(128) * t25 + t15 * ab_ap * t28 - T(128) * t27) * w2 + T(1280) * w0 * t19 - T(1280) * t23 * seg5);
+    const T t28 = T(128) * ab_ap * t25 + T(128) * a_minus_b * t27 + T(3) * (T(7) * t19 * (T(5) * t19 * (T(2) * ab_ap * t16 + T(3) * t19 * (a_minus_b * t20 + J2 * ab_ab + ab_ap * t15) * ab_ab + T(2) * a_minus_b * t21) * ab_ab + T(8) * ab_ap * t17 + T(8) * a_minus_b * t22) * ab_ab + T(48) * ab_ap * t24 + T(48) * a_minus_b * t26) * t19 * ab_ab;
+    const T t29 = T(1280) * ab_ap * t18 + T(1280) * a_minus_b * t23 + T(11) * t19 * t28 * ab_ab;
+    const T t30 = T(1280) * t18 + t19 * ab_ap * t29 - T(1280) * t23;
+    G_ap = (T(1) / T(15360)) * t30 * w1 * seg0 + (T(1) / T(15360)) * w0 * t19 * t29 + (T(1) / T(15360)) * (T(12) * t19 * t28 + T(2) * ab_ap * t30 * seg0 - t19 * t29 * ap_ap) * seg0 * w2;
+    G_E = -(T(1) / T(15360)) * (T(1280) * t23 * seg5 - t19 * w1 * t28 - T(2) * (T(128) * t25 + t19 * ab_ap * t28 - T(128) * t27) * seg0 * w2 - T(1280) * w0 * t18) * seg0;
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
@@ -22128,7 +22130,7 @@ T segment_inverse_i12_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
-    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
     foot2 = (exact_cross[0] * ab1 - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
@@ -22148,7 +22150,7 @@ T segment_inverse_i12_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = w0 * M_flat[0] + w1 * M_flat[1] + w2 * M_flat[2];
     const T t4 = w2 * M_flat[6] + w1 * M_flat[5] + w0 * M_flat[4];
     G_ap = t4;
-    G_E = w0 * M_flat[5] + w1 * M_flat[6] + M_flat[7] * w2 - ab_ap * t4 * seg0;
+    G_E = w0 * M_flat[5] + w1 * M_flat[6] + M_flat[7] * w2 - ab_ap * seg0 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -22163,7 +22165,7 @@ T segment_inverse_i12_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(12)) * (T(2) * w2 * M_beyond[1] + w1 * M_beyond[0] + w0 * t8 - seg5 * t12) * seg0;
+    G_E = (T(1) / T(12)) * seg0 * (T(2) * w2 * M_beyond[1] + w1 * M_beyond[0] + w0 * t8 - t12 * seg5);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -22183,13 +22185,13 @@ T segment_inverse_i12_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t26 = t20 * t18;
     const T t27 = T(128) * ab_ap * t25 + T(3) * t24 * ab_ab * t22 + T(128) * t26 * a_minus_b;
     const T t28 = T(128) * t26 - T(128) * t25 - ab_ap * t27 * t22;
-    F = (T(1) / T(3840)) * (T(10) * t24 * t22 - T(3) * t27 * ap_ap * t22 - T(6) * ab_ap * t28 * seg0) * seg0 * w2 + (T(1) / T(1280)) * w0 * t27 * t22 - (T(1) / T(1280)) * w1 * t28 * seg0;
+    F = (T(1) / T(3840)) * seg0 * w2 * (T(10) * t24 * t22 - T(3) * t27 * ap_ap * t22 - T(6) * ab_ap * seg0 * t28) + (T(1) / T(1280)) * w0 * t27 * t22 - (T(1) / T(1280)) * w1 * seg0 * t28;
     const T t29 = t21 * t21;
     const T t30 = t23 * t23;
     const T t31 = T(11) * t27 * ab_ab * t22 + T(1280) * ab_ap * t29 + T(1280) * t30 * a_minus_b;
     const T t32 = T(1280) * t30 - ab_ap * t31 * t22 - T(1280) * t29;
-    G_ap = (T(1) / T(15360)) * w0 * t31 * t22 - (T(1) / T(15360)) * seg0 * w2 * (t31 * ap_ap * t22 + T(2) * ab_ap * t32 * seg0 - T(12) * t27 * t22) - (T(1) / T(15360)) * w1 * t32 * seg0;
-    G_E = (T(1) / T(15360)) * (t27 * w1 * t22 + T(1280) * w0 * t29 - T(1280) * seg5 * t30 - T(2) * t28 * seg0 * w2) * seg0;
+    G_ap = (T(1) / T(15360)) * w0 * t31 * t22 - (T(1) / T(15360)) * w1 * seg0 * t32 - (T(1) / T(15360)) * seg0 * (t31 * ap_ap * t22 + T(2) * ab_ap * seg0 * t32 - T(12) * t27 * t22) * w2;
+    G_E = (T(1) / T(15360)) * seg0 * (t27 * w1 * t22 + T(1280) * w0 * t29 - T(2) * seg0 * t28 * w2 - T(1280) * t30 * seg5);
   }
   f = length * F;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -22400,7 +22402,7 @@ T segment_inverse_i12_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap1 * bp1 + bp0 * ap0 + ap2 * bp2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -22432,8 +22434,8 @@ T segment_inverse_i12_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t14 * t11;
     const T t18 = T(3) * t15 * ab_ab * t9 + T(128) * a_minus_b * t16 + T(128) * ab_ap * t17;
     const T t19 = T(128) * t16 - t9 * ab_ap * t18 - T(128) * t17;
-    const T t20 = T(10) * t15 * t9 - T(6) * seg0 * t19 * ab_ap - T(3) * t9 * t18 * ap_ap;
-    F = (T(1) / T(3840)) * seg0 * t20 * w2 + (T(1) / T(1280)) * w0 * t9 * t18 - (T(1) / T(3840)) * w3 * seg0 * (T(10) * seg0 * (T(48) * t8 - t15 * t9 * ab_ap - T(48) * t14) - T(3) * seg0 * t19 * ap_ap - T(2) * seg0 * t20 * ab_ap) - (T(1) / T(1280)) * seg0 * t19 * w1;
+    const T t20 = T(10) * t15 * t9 - T(6) * t19 * ab_ap * seg0 - T(3) * t9 * t18 * ap_ap;
+    F = (T(1) / T(3840)) * (T(2) * ab_ap * seg0 * t20 + T(3) * t19 * seg0 * ap_ap - T(10) * (T(48) * t8 - t15 * t9 * ab_ap - T(48) * t14) * seg0) * w3 * seg0 + (T(1) / T(3840)) * w2 * seg0 * t20 + (T(1) / T(1280)) * w0 * t9 * t18 - (T(1) / T(1280)) * t19 * w1 * seg0;
   }
   f = F * length;
   return f;
@@ -22489,15 +22491,15 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
+    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
@@ -22507,7 +22509,7 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -22516,7 +22518,7 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(12, 14, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w2 * M_flat[7] + w0 * M_flat[5] + w3 * M_flat[8] + w1 * M_flat[6];
     G_ap = t4;
-    G_E = w3 * M_flat[9] + w0 * M_flat[6] + M_flat[8] * w2 + w1 * M_flat[7] - ab_ap * seg0 * t4;
+    G_E = w3 * M_flat[9] + w0 * M_flat[6] + M_flat[8] * w2 + w1 * M_flat[7] - seg0 * ab_ap * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -22530,7 +22532,7 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const T* pre, const SegmentPoint<T>
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(12)) * (T(3) * w3 * M_beyond[2] + w1 * M_beyond[0] + w0 * t8 + T(2) * M_beyond[1] * w2 - seg5 * t12) * seg0;
+    G_E = (T(1) / T(12)) * seg0 * (T(3) * w3 * M_beyond[2] + w1 * M_beyond[0] + w0 * t8 + T(2) * M_beyond[1] * w2 - t12 * seg5);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -22538,25 +22540,25 @@ std::array<T, 3> segment_inverse_i12_w3_grad(const T* pre, const SegmentPoint<T>
     const T J2 = t14 * atan2(t13, ap_bp);
     const T t15 = T(1) / ap_ap;
     const T t16 = t15 * t15;
-    const T t17 = t16 * t15;
-    const T t18 = t17 * t17;
-    const T t19 = T(1) / cross_cross;
-    const T t20 = T(1) / bp_bp;
+    const T t17 = t16 * t16;
+    const T t18 = t17 * t15;
+    const T t19 = T(1) / bp_bp;
+    const T t20 = t19 * t19;
     const T t21 = t20 * t20;
-    const T t22 = t21 * t20;
-    const T t23 = t22 * t22;
-    const T t24 = t16 * t16;
-    const T t25 = t24 * t15;
-    const T t26 = t21 * t21;
-    const T t27 = T(48) * ab_ap * t24 + T(48) * a_minus_b * t26 + T(7) * ab_ab * t19 * (T(8) * a_minus_b * t22 + T(8) * ab_ap * t17 + T(5) * ab_ab * (T(2) * ab_ap * t16 + T(2) * a_minus_b * t21 + T(3) * ab_ab * (J2 * ab_ab + a_minus_b * t20 + ab_ap * t15) * t19) * t19);
-    const T t28 = t26 * t20;
-    const T t29 = T(128) * ab_ap * t25 + T(3) * t27 * ab_ab * t19 + T(128) * a_minus_b * t28;
-    const T t30 = T(1280) * a_minus_b * t23 + T(1280) * ab_ap * t18 + T(11) * t29 * ab_ab * t19;
-    const T t31 = T(1280) * t18 + t19 * ab_ap * t30 - T(1280) * t23;
-    const T t32 = T(12) * t29 * t19 + T(2) * ab_ap * seg0 * t31 - t19 * t30 * ap_ap;
-    const T t33 = t29 * t19 * ab_ap + T(128) * t25 - T(128) * t28;
-    G_ap = (T(1) / T(15360)) * w1 * seg0 * t31 + (T(1) / T(15360)) * seg0 * w2 * t32 + (T(1) / T(15360)) * w0 * t19 * t30 + (T(1) / T(15360)) * w3 * seg0 * (T(12) * t33 * seg0 + T(2) * ab_ap * seg0 * t32 - seg0 * t31 * ap_ap);
-    G_E = (T(1) / T(15360)) * (t29 * t19 * w1 + T(1280) * w0 * t18 + T(2) * t33 * seg0 * w2 + w3 * seg0 * (T(6) * t33 * ab_ap * seg0 + T(10) * t27 * t19 - T(3) * t29 * t19 * ap_ap) - T(1280) * seg5 * t23) * seg0;
+    const T t22 = T(1) / cross_cross;
+    const T t23 = t20 * t19;
+    const T t24 = t16 * t15;
+    const T t25 = T(48) * ab_ap * t17 + T(48) * a_minus_b * t21 + T(7) * ab_ab * t22 * (T(8) * a_minus_b * t23 + T(8) * ab_ap * t24 + T(5) * ab_ab * (T(2) * ab_ap * t16 + T(2) * a_minus_b * t20 + T(3) * ab_ab * (J2 * ab_ab + a_minus_b * t19 + ab_ap * t15) * t22) * t22);
+    const T t26 = t21 * t19;
+    const T t27 = T(128) * ab_ap * t18 + T(3) * t25 * ab_ab * t22 + T(128) * a_minus_b * t26;
+    const T t28 = t24 * t24;
+    const T t29 = t23 * t23;
+    const T t30 = T(1280) * a_minus_b * t29 + T(1280) * ab_ap * t28 + T(11) * t27 * ab_ab * t22;
+    const T t31 = T(1280) * t28 + t22 * ab_ap * t30 - T(1280) * t29;
+    const T t32 = T(12) * t27 * t22 + T(2) * seg0 * ab_ap * t31 - t22 * t30 * ap_ap;
+    const T t33 = t27 * t22 * ab_ap + T(128) * t18 - T(128) * t26;
+    G_ap = (T(1) / T(15360)) * w3 * seg0 * (T(2) * seg0 * ab_ap * t32 + T(12) * t33 * seg0 - seg0 * t31 * ap_ap) + (T(1) / T(15360)) * seg0 * w2 * t32 + (T(1) / T(15360)) * w0 * t22 * t30 + (T(1) / T(15360)) * seg0 * w1 * t31;
+    G_E = (T(1) / T(15360)) * seg0 * (t27 * t22 * w1 + T(1280) * w0 * t28 + T(2) * t33 * seg0 * w2 + w3 * seg0 * (T(6) * t33 * seg0 * ab_ap + T(10) * t25 * t22 - T(3) * t27 * t22 * ap_ap) - T(1280) * t29 * seg5);
   }
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
   grad[1] = -(ab1 * G_E - G_ap * foot1) * g_factor;
@@ -22624,7 +22626,7 @@ T segment_inverse_i12_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -22634,7 +22636,7 @@ T segment_inverse_i12_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -22659,7 +22661,7 @@ T segment_inverse_i12_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t10 = t9 * t9;
     const T t11 = t10 * t9;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(12)) * (w1 * M_beyond[0] + w0 * t8 + T(2) * w2 * M_beyond[1] + T(3) * M_beyond[2] * w3 - t12 * seg5) * seg0;
+    G_E = (T(1) / T(12)) * seg0 * (w1 * M_beyond[0] + w0 * t8 + T(2) * w2 * M_beyond[1] + T(3) * M_beyond[2] * w3 - seg5 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -22680,14 +22682,14 @@ T segment_inverse_i12_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t27 = T(128) * t18 * a_minus_b + T(128) * ab_ap * t22 + T(3) * t26 * ab_ab * t23;
     const T t28 = t27 * t23 * ab_ap + T(128) * t22 - T(128) * t18;
     const T t29 = T(10) * t26 * t23 + T(6) * t28 * ab_ap * seg0 - T(3) * t27 * t23 * ap_ap;
-    F = (T(1) / T(1280)) * w0 * t27 * t23 + (T(1) / T(1280)) * t28 * w1 * seg0 + (T(1) / T(3840)) * t29 * w2 * seg0 - (T(1) / T(3840)) * (T(3) * t28 * ap_ap * seg0 - T(10) * (T(48) * t21 + t26 * t23 * ab_ap - T(48) * t17) * seg0 - T(2) * t29 * ab_ap * seg0) * seg0 * w3;
+    F = (T(1) / T(1280)) * w0 * t27 * t23 + (T(1) / T(3840)) * (T(2) * ab_ap * seg0 * t29 + T(10) * (T(48) * t21 + t26 * t23 * ab_ap - T(48) * t17) * seg0 - T(3) * t28 * ap_ap * seg0) * seg0 * w3 + (T(1) / T(1280)) * t28 * w1 * seg0 + (T(1) / T(3840)) * w2 * seg0 * t29;
     const T t30 = t25 * t25;
     const T t31 = t24 * t24;
     const T t32 = T(1280) * t31 * a_minus_b + T(11) * ab_ab * t27 * t23 + T(1280) * ab_ap * t30;
     const T t33 = T(1280) * t30 + t23 * ab_ap * t32 - T(1280) * t31;
     const T t34 = T(2) * t33 * ab_ap * seg0 + T(12) * t27 * t23 - t23 * ap_ap * t32;
-    G_ap = (T(1) / T(15360)) * t34 * w2 * seg0 + (T(1) / T(15360)) * t33 * w1 * seg0 + (T(1) / T(15360)) * w0 * t23 * t32 + (T(1) / T(15360)) * (T(2) * t34 * ab_ap * seg0 + T(12) * t28 * seg0 - t33 * ap_ap * seg0) * seg0 * w3;
-    G_E = (T(1) / T(15360)) * (t27 * t23 * w1 + T(2) * t28 * w2 * seg0 + T(1280) * w0 * t30 + t29 * seg0 * w3 - T(1280) * t31 * seg5) * seg0;
+    G_ap = (T(1) / T(15360)) * (T(2) * ab_ap * t34 * seg0 + T(12) * t28 * seg0 - t33 * ap_ap * seg0) * seg0 * w3 + (T(1) / T(15360)) * w0 * t23 * t32 + (T(1) / T(15360)) * t33 * w1 * seg0 + (T(1) / T(15360)) * t34 * w2 * seg0;
+    G_E = (T(1) / T(15360)) * (t27 * t23 * w1 + T(1280) * w0 * t30 + T(2) * t28 * w2 * seg0 + seg0 * t29 * w3 - T(1280) * seg5 * t31) * seg0;
   }
   f = length * F;
   grad[0] = (G_ap * foot0 - ab0 * G_E) * g_factor;
@@ -22896,7 +22898,7 @@ T segment_inverse_i13_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg7 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg7 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -23108,14 +23110,14 @@ T segment_inverse_i13_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = -(ab1 * exact_cross[2] - ab2 * exact_cross[1]) * seg0;
+    foot0 = -seg0 * (ab1 * exact_cross[2] - ab2 * exact_cross[1]);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
   }
@@ -23127,7 +23129,7 @@ T segment_inverse_i13_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -23404,7 +23406,7 @@ T segment_inverse_i13_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -23433,7 +23435,7 @@ T segment_inverse_i13_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t15 = t13 * t9;
     const T t16 = t14 * t6;
     const T t17 = T(2) * ab_ab * t4 * (T(8) * ab_ab * (T(2) * ab_ab * t4 * (T(3) * a_minus_b * t7 * t5 + T(4) * ab_ab * t4 * (t8 * ab_ap * t9 + a_minus_b * t6 * t5 + T(2) * ab_ab * t4 * (a_minus_b * t5 + t8 * ab_ap)) + T(3) * t8 * ab_ap * t10) + T(5) * a_minus_b * t11 * t5 + T(5) * t8 * ab_ap * t12) * t4 + T(35) * t8 * ab_ap * t13 + T(35) * a_minus_b * t14 * t5) + T(63) * t8 * ab_ap * t15 + T(63) * a_minus_b * t16 * t5;
-    F = (T(1) / T(693)) * seg0 * w1 * (t17 * t4 * ab_ap + T(63) * t8 * t15 - T(63) * t16 * t5) + (T(1) / T(693)) * t17 * t4 * w0;
+    F = (T(1) / T(693)) * w1 * (t17 * t4 * ab_ap + T(63) * t8 * t15 - T(63) * t16 * t5) * seg0 + (T(1) / T(693)) * t17 * t4 * w0;
   }
   f = length * F;
   return f;
@@ -23533,38 +23535,38 @@ std::array<T, 3> segment_inverse_i13_w1_grad(const T* pre, const SegmentPoint<T>
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(13)) * (w0 * t10 + M_beyond[0] * w1 - seg7 * t16) * seg0;
+    G_E = (T(1) / T(13)) * seg0 * (w0 * t10 + M_beyond[0] * w1 - seg7 * t16);
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t17 = T(1) / cross_cross;
-    const T t18 = T(1) / r0;
+    const T t17 = T(1) / r0;
+    const T t18 = t17 * t17;
     const T t19 = t18 * t18;
-    const T t20 = t19 * t19;
+    const T t20 = t19 * t18;
     const T t21 = t20 * t20;
-    const T t22 = T(1) / r1;
-    const T t23 = t22 * t22;
-    const T t24 = t23 * t23;
+    const T t22 = T(1) / cross_cross;
+    const T t23 = t19 * t19;
+    const T t24 = T(1) / r1;
     const T t25 = t24 * t24;
-    const T t26 = t24 * t23;
-    const T t27 = t20 * t19;
-    const T t28 = t21 * t19;
-    const T t29 = t25 * t23;
-    const T t30 = T(2) * t17 * (T(35) * ab_ap * t18 * t21 + T(35) * a_minus_b * t25 * t22 + T(8) * t17 * (T(5) * a_minus_b * t26 * t22 + T(2) * t17 * (T(3) * a_minus_b * t24 * t22 + T(4) * t17 * ab_ab * (ab_ap * t18 * t19 + T(2) * t17 * (a_minus_b * t22 + ab_ap * t18) * ab_ab + a_minus_b * t23 * t22) + T(3) * ab_ap * t18 * t20) * ab_ab + T(5) * ab_ap * t18 * t27) * ab_ab) * ab_ab + T(63) * ab_ap * t18 * t28 + T(63) * a_minus_b * t29 * t22;
-    const T t31 = t27 * t27;
-    const T t32 = t26 * t26;
-    const T t33 = T(4) * t17 * t30 * ab_ab + T(231) * ab_ap * t18 * t31 + T(231) * a_minus_b * t32 * t22;
-    G_ap = (T(1) / T(3003)) * t17 * w0 * t33 + (T(1) / T(3003)) * (T(231) * t18 * t31 + t17 * ab_ap * t33 - T(231) * t32 * t22) * seg0 * w1;
-    const T t34 = t18 * t18;
-    const T t35 = t34 * t18;
+    const T t26 = t25 * t25;
+    const T t27 = t26 * t26;
+    const T t28 = t26 * t25;
+    const T t29 = t23 * t18;
+    const T t30 = t27 * t25;
+    const T t31 = T(2) * t22 * (T(35) * ab_ap * t17 * t23 + T(35) * a_minus_b * t27 * t24 + T(8) * t22 * (T(5) * a_minus_b * t28 * t24 + T(2) * t22 * (T(3) * a_minus_b * t26 * t24 + T(4) * t22 * ab_ab * (ab_ap * t17 * t18 + T(2) * t22 * (a_minus_b * t24 + ab_ap * t17) * ab_ab + a_minus_b * t25 * t24) + T(3) * ab_ap * t17 * t19) * ab_ab + T(5) * ab_ap * t17 * t20) * ab_ab) * ab_ab + T(63) * ab_ap * t17 * t29 + T(63) * a_minus_b * t30 * t24;
+    const T t32 = t28 * t28;
+    const T t33 = T(4) * t22 * t31 * ab_ab + T(231) * ab_ap * t17 * t21 + T(231) * a_minus_b * t32 * t24;
+    G_ap = (T(1) / T(3003)) * (T(231) * t17 * t21 + t22 * ab_ap * t33 - T(231) * t32 * t24) * seg0 * w1 + (T(1) / T(3003)) * t22 * w0 * t33;
+    const T t34 = t17 * t17;
+    const T t35 = t34 * t17;
     const T t36 = t35 * t35;
     const T t37 = t36 * t36;
-    const T t38 = t37 * t18;
-    const T t39 = t22 * t22;
-    const T t40 = t39 * t22;
+    const T t38 = t37 * t17;
+    const T t39 = t24 * t24;
+    const T t40 = t39 * t24;
     const T t41 = t40 * t40;
     const T t42 = t41 * t41;
-    const T t43 = t42 * t22;
-    G_E = (T(1) / T(9009)) * seg0 * (T(693) * w0 * t38 + t17 * t30 * w1 - T(693) * seg7 * t43);
+    const T t43 = t42 * t24;
+    G_E = (T(1) / T(9009)) * (T(693) * w0 * t38 + t22 * t31 * w1 - T(693) * seg7 * t43) * seg0;
   }
   grad[0] = g_factor * (foot0 * G_ap - ab0 * G_E);
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -23651,7 +23653,7 @@ T segment_inverse_i13_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = M_flat[1] * w1 + M_flat[0] * w0;
     const T t4 = M_flat[4] * w1 + M_flat[3] * w0;
     G_ap = t4;
-    G_E = M_flat[5] * w1 + M_flat[4] * w0 - ab_ap * t4 * seg0;
+    G_E = M_flat[5] * w1 + M_flat[4] * w0 - ab_ap * seg0 * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -23702,7 +23704,7 @@ T segment_inverse_i13_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t41 = t40 * t40;
     const T t42 = t41 * t41;
     const T t43 = t42 * t23;
-    G_E = (T(1) / T(9009)) * (T(693) * w0 * t38 + t17 * t30 * w1 - T(693) * t43 * seg7) * seg0;
+    G_E = (T(1) / T(9009)) * seg0 * (T(693) * w0 * t38 + t17 * t30 * w1 - T(693) * t43 * seg7);
   }
   f = length * F;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -23922,7 +23924,7 @@ T segment_inverse_i13_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -23953,7 +23955,7 @@ T segment_inverse_i13_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t13 * t11;
     const T t18 = T(63) * t5 * ab_ap * t9 + T(2) * ab_ab * t4 * t16 + T(63) * a_minus_b * t17 * t10;
     const T t19 = t4 * ab_ap * t18 + T(63) * t5 * t9 - T(63) * t17 * t10;
-    F = (T(1) / T(693)) * seg0 * t19 * w1 + (T(1) / T(693)) * t4 * w0 * t18 - (T(1) / T(3465)) * w2 * seg0 * (T(5) * t4 * t18 * ap_ap - T(11) * t4 * t16 - T(10) * seg0 * ab_ap * t19);
+    F = (T(1) / T(693)) * t4 * w0 * t18 + (T(1) / T(693)) * seg0 * t19 * w1 - (T(1) / T(3465)) * w2 * seg0 * (T(5) * t4 * t18 * ap_ap - T(11) * t4 * t16 - T(10) * seg0 * ab_ap * t19);
   }
   f = length * F;
   return f;
@@ -24008,9 +24010,9 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -24027,7 +24029,7 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const T* pre, const SegmentPoint<T>
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -24036,7 +24038,7 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(13, 15, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[4] * w0 + M_flat[6] * w2 + M_flat[5] * w1;
     G_ap = t4;
-    G_E = w2 * M_flat[7] + M_flat[6] * w1 + w0 * M_flat[5] - t4 * ab_ap * seg0;
+    G_E = w2 * M_flat[7] + M_flat[6] * w1 + w0 * M_flat[5] - t4 * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -24075,18 +24077,18 @@ std::array<T, 3> segment_inverse_i13_w2_grad(const T* pre, const SegmentPoint<T>
     const T t32 = T(63) * t17 * a_minus_b * t29 + T(63) * t31 * ab_ap * t22 + T(2) * (T(35) * t17 * a_minus_b * t28 + T(35) * t30 * ab_ap * t22 + T(8) * ab_ab * t27 * (T(2) * ab_ab * (T(4) * (t23 * ab_ap * t22 + T(2) * ab_ab * t27 * (t17 * a_minus_b + ab_ap * t22) + t17 * a_minus_b * t18) * ab_ab * t27 + T(3) * t17 * a_minus_b * t19 + T(3) * t24 * ab_ap * t22) * t27 + T(5) * t17 * a_minus_b * t20 + T(5) * t25 * ab_ap * t22)) * ab_ab * t27;
     const T t33 = T(231) * t17 * a_minus_b * t21 + T(231) * t26 * ab_ap * t22 + T(4) * ab_ab * t27 * t32;
     const T t34 = t33 * t27 * ab_ap + T(231) * t26 * t22 - T(231) * t17 * t21;
-    G_ap = (T(1) / T(3003)) * t34 * seg0 * w1 + (T(1) / T(3003)) * t33 * t27 * w0 - (T(1) / T(9009)) * w2 * (T(3) * ap_ap * t33 * t27 - T(6) * t34 * ab_ap * seg0 - T(13) * t27 * t32) * seg0;
-    const T t35 = t17 * t17;
-    const T t36 = t35 * t17;
+    G_ap = (T(1) / T(3003)) * t34 * seg0 * w1 + (T(1) / T(3003)) * t33 * t27 * w0 - (T(1) / T(9009)) * w2 * (T(3) * ap_ap * t33 * t27 - T(6) * t34 * seg0 * ab_ap - T(13) * t27 * t32) * seg0;
+    const T t35 = t22 * t22;
+    const T t36 = t35 * t22;
     const T t37 = t36 * t36;
     const T t38 = t37 * t37;
-    const T t39 = t38 * t17;
-    const T t40 = t22 * t22;
-    const T t41 = t40 * t22;
+    const T t39 = t38 * t22;
+    const T t40 = t17 * t17;
+    const T t41 = t40 * t17;
     const T t42 = t41 * t41;
     const T t43 = t42 * t42;
-    const T t44 = t43 * t22;
-    G_E = -(T(1) / T(9009)) * (T(693) * t39 * seg7 - t27 * t32 * w1 - T(2) * w2 * (t27 * t32 * ab_ap + T(63) * t31 * t22 - T(63) * t17 * t29) * seg0 - T(693) * w0 * t44) * seg0;
+    const T t44 = t43 * t17;
+    G_E = (T(1) / T(9009)) * seg0 * (T(2) * w2 * (t27 * t32 * ab_ap + T(63) * t31 * t22 - T(63) * t17 * t29) * seg0 + t27 * t32 * w1 + T(693) * w0 * t39 - T(693) * t44 * seg7);
   }
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
   grad[1] = g_factor * (foot1 * G_ap - G_E * ab1);
@@ -24193,7 +24195,7 @@ T segment_inverse_i13_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(13)) * (T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] + t10 * w0 - seg7 * t16) * seg0;
+    G_E = (T(1) / T(13)) * (T(2) * M_beyond[1] * w2 + w1 * M_beyond[0] + t10 * w0 - t16 * seg7) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / cross_cross;
@@ -24212,23 +24214,23 @@ T segment_inverse_i13_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t30 = t27 * t22;
     const T t31 = T(2) * ab_ab * t17 * t28 + T(63) * t29 * t18 * a_minus_b + T(63) * t21 * ab_ap * t30;
     const T t32 = T(63) * t29 * t18 - t17 * ab_ap * t31 - T(63) * t21 * t30;
-    F = (T(1) / T(693)) * t17 * w0 * t31 - (T(1) / T(693)) * t32 * w1 * seg0 - (T(1) / T(3465)) * (T(10) * t32 * ab_ap * seg0 + T(5) * t17 * t31 * ap_ap - T(11) * t17 * t28) * w2 * seg0;
+    F = (T(1) / T(693)) * t17 * w0 * t31 - (T(1) / T(3465)) * (T(5) * t17 * t31 * ap_ap + T(10) * t32 * ab_ap * seg0 - T(11) * t17 * t28) * seg0 * w2 - (T(1) / T(693)) * t32 * w1 * seg0;
     const T t33 = t25 * t25;
     const T t34 = t24 * t24;
     const T t35 = T(231) * t21 * ab_ap * t33 + T(231) * t34 * t18 * a_minus_b + T(4) * ab_ab * t17 * t31;
     const T t36 = T(231) * t34 * t18 - t17 * ab_ap * t35 - T(231) * t21 * t33;
-    G_ap = (T(1) / T(3003)) * t17 * w0 * t35 - (T(1) / T(3003)) * t36 * w1 * seg0 - (T(1) / T(9009)) * (T(3) * t17 * ap_ap * t35 + T(6) * t36 * ab_ap * seg0 - T(13) * t17 * t31) * w2 * seg0;
-    const T t37 = t21 * t21;
-    const T t38 = t37 * t21;
+    G_ap = (T(1) / T(3003)) * t17 * w0 * t35 - (T(1) / T(3003)) * t36 * w1 * seg0 - (T(1) / T(9009)) * (T(6) * t36 * ab_ap * seg0 + T(3) * t17 * ap_ap * t35 - T(13) * t17 * t31) * seg0 * w2;
+    const T t37 = t18 * t18;
+    const T t38 = t37 * t18;
     const T t39 = t38 * t38;
     const T t40 = t39 * t39;
-    const T t41 = t40 * t21;
-    const T t42 = t18 * t18;
-    const T t43 = t42 * t18;
+    const T t41 = t40 * t18;
+    const T t42 = t21 * t21;
+    const T t43 = t42 * t21;
     const T t44 = t43 * t43;
     const T t45 = t44 * t44;
-    const T t46 = t45 * t18;
-    G_E = (T(1) / T(9009)) * (t17 * t31 * w1 + T(693) * t41 * w0 - T(693) * seg7 * t46 - T(2) * t32 * w2 * seg0) * seg0;
+    const T t46 = t45 * t21;
+    G_E = -(T(1) / T(9009)) * (T(2) * t32 * seg0 * w2 + T(693) * t41 * seg7 - t17 * t31 * w1 - T(693) * t46 * w0) * seg0;
   }
   f = length * F;
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
@@ -24453,7 +24455,7 @@ T segment_inverse_i13_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -24484,8 +24486,8 @@ T segment_inverse_i13_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t15 * t11;
     const T t18 = T(63) * a_minus_b * t9 * t5 + T(2) * t16 * ab_ab * t4 + T(63) * t10 * ab_ap * t17;
     const T t19 = T(63) * t9 * t5 - t4 * ab_ap * t18 - T(63) * t10 * t17;
-    const T t20 = T(5) * t4 * t18 * ap_ap + T(10) * t19 * ab_ap * seg0 - T(11) * t16 * t4;
-    F = (T(1) / T(693)) * t4 * w0 * t18 - (T(1) / T(693)) * t19 * w1 * seg0 - (T(1) / T(3465)) * w2 * seg0 * t20 - (T(1) / T(3465)) * w3 * seg0 * (T(2) * ab_ap * seg0 * t20 + T(11) * (T(35) * t8 * t5 - t16 * t4 * ab_ap - T(35) * t10 * t15) * seg0 - T(5) * t19 * seg0 * ap_ap);
+    const T t20 = T(10) * t19 * seg0 * ab_ap + T(5) * t4 * t18 * ap_ap - T(11) * t16 * t4;
+    F = (T(1) / T(693)) * t4 * w0 * t18 - (T(1) / T(3465)) * w2 * t20 * seg0 - (T(1) / T(693)) * t19 * seg0 * w1 - (T(1) / T(3465)) * (T(11) * seg0 * (T(35) * t8 * t5 - t16 * t4 * ab_ap - T(35) * t10 * t15) + T(2) * t20 * seg0 * ab_ap - T(5) * t19 * seg0 * ap_ap) * w3 * seg0;
   }
   f = length * F;
   return f;
@@ -24541,17 +24543,17 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
-    foot0 = seg0 * (ab2 * exact_cross[1] - ab1 * exact_cross[2]);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
+    foot0 = (ab2 * exact_cross[1] - ab1 * exact_cross[2]) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = ab1 * bp1 + ab2 * bp2 + ab0 * bp0;
@@ -24560,7 +24562,7 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const T* pre, const SegmentPoint<T>
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -24569,25 +24571,25 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(13, 15, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[8] * w3 + M_flat[7] * w2 + w1 * M_flat[6] + M_flat[5] * w0;
     G_ap = t4;
-    G_E = M_flat[7] * w1 + M_flat[6] * w0 + M_flat[8] * w2 + M_flat[9] * w3 - seg0 * ab_ap * t4;
+    G_E = M_flat[7] * w1 + M_flat[6] * w0 + M_flat[8] * w2 + M_flat[9] * w3 - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(13, 15, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[5] * w0 + M_beyond[8] * w3 + M_beyond[7] * w2 + M_beyond[6] * w1;
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t8;
     const T t10 = t9 * t5;
-    const T t11 = T(1) / r1;
+    const T t11 = T(1) / r0;
     const T t12 = t11 * t11;
     const T t13 = t12 * t11;
     const T t14 = t13 * t13;
     const T t15 = t14 * t14;
     const T t16 = t15 * t11;
-    G_E = (T(1) / T(13)) * seg0 * (T(3) * M_beyond[2] * w3 + t10 * w0 + T(2) * M_beyond[1] * w2 + M_beyond[0] * w1 - seg7 * t16);
+    G_E = -(T(1) / T(13)) * (t10 * seg7 - T(3) * M_beyond[2] * w3 - t16 * w0 - T(2) * M_beyond[1] * w2 - M_beyond[0] * w1) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t17 = T(1) / r0;
@@ -24609,9 +24611,9 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const T* pre, const SegmentPoint<T>
     const T t33 = t26 * t26;
     const T t34 = T(231) * ab_ap * t17 * t32 + T(231) * a_minus_b * t33 * t23 + T(4) * t31 * ab_ab * t22;
     const T t35 = T(231) * t17 * t32 + t34 * t22 * ab_ap - T(231) * t33 * t23;
-    const T t36 = T(13) * t31 * t22 + T(6) * seg0 * t35 * ab_ap - T(3) * t34 * t22 * ap_ap;
+    const T t36 = T(13) * t31 * t22 + T(6) * t35 * ab_ap * seg0 - T(3) * t34 * t22 * ap_ap;
     const T t37 = T(63) * t30 * t23 - T(63) * t17 * t21 - t31 * t22 * ab_ap;
-    G_ap = (T(1) / T(9009)) * seg0 * t36 * w2 + (T(1) / T(3003)) * t34 * t22 * w0 + (T(1) / T(3003)) * seg0 * w1 * t35 - (T(1) / T(9009)) * seg0 * (T(3) * seg0 * t35 * ap_ap + T(13) * seg0 * t37 - T(2) * seg0 * t36 * ab_ap) * w3;
+    G_ap = (T(1) / T(9009)) * (T(2) * t36 * ab_ap * seg0 - T(3) * t35 * ap_ap * seg0 - T(13) * t37 * seg0) * seg0 * w3 + (T(1) / T(3003)) * t34 * t22 * w0 + (T(1) / T(3003)) * w1 * t35 * seg0 + (T(1) / T(9009)) * t36 * w2 * seg0;
     const T t38 = t23 * t23;
     const T t39 = t38 * t23;
     const T t40 = t39 * t39;
@@ -24622,7 +24624,7 @@ std::array<T, 3> segment_inverse_i13_w3_grad(const T* pre, const SegmentPoint<T>
     const T t45 = t44 * t44;
     const T t46 = t45 * t45;
     const T t47 = t46 * t17;
-    G_E = -(T(1) / T(45045)) * seg0 * (T(10) * seg0 * t37 * w2 + T(3) * seg0 * (T(5) * t31 * t22 * ap_ap + T(10) * seg0 * t37 * ab_ap - T(11) * t22 * t29) * w3 + T(3465) * seg7 * t42 - T(3465) * t47 * w0 - T(5) * t31 * t22 * w1);
+    G_E = -(T(1) / T(45045)) * (T(3465) * t42 * seg7 + T(10) * t37 * w2 * seg0 + T(3) * seg0 * w3 * (T(5) * t31 * t22 * ap_ap + T(10) * t37 * ab_ap * seg0 - T(11) * t22 * t29) - T(3465) * t47 * w0 - T(5) * t31 * t22 * w1) * seg0;
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -24689,9 +24691,9 @@ T segment_inverse_i13_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
-    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
+    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -24701,7 +24703,7 @@ T segment_inverse_i13_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -24749,14 +24751,14 @@ T segment_inverse_i13_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t30 = t28 * t24;
     const T t31 = T(63) * t21 * t17 * ab_ap + T(2) * ab_ab * t22 * t29 + T(63) * a_minus_b * t23 * t30;
     const T t32 = t31 * t22 * ab_ap + T(63) * t21 * t17 - T(63) * t23 * t30;
-    const T t33 = T(10) * t32 * seg0 * ab_ap + T(11) * t22 * t29 - T(5) * ap_ap * t31 * t22;
-    F = (T(1) / T(3465)) * seg0 * w2 * t33 + (T(1) / T(693)) * t31 * w0 * t22 + (T(1) / T(693)) * t32 * seg0 * w1 - (T(1) / T(3465)) * (T(5) * ap_ap * t32 * seg0 - T(2) * seg0 * ab_ap * t33 - T(11) * (t22 * ab_ap * t29 + T(35) * t20 * t17 - T(35) * t23 * t28) * seg0) * seg0 * w3;
-    const T t34 = t26 * t26;
-    const T t35 = t27 * t27;
-    const T t36 = T(4) * t31 * ab_ab * t22 + T(231) * a_minus_b * t23 * t35 + T(231) * t34 * t17 * ab_ap;
-    const T t37 = T(231) * t34 * t17 + t36 * t22 * ab_ap - T(231) * t23 * t35;
-    const T t38 = T(13) * t31 * t22 + T(6) * t37 * seg0 * ab_ap - T(3) * ap_ap * t36 * t22;
-    G_ap = (T(1) / T(3003)) * t37 * seg0 * w1 + (T(1) / T(3003)) * w0 * t36 * t22 + (T(1) / T(9009)) * t38 * seg0 * w2 + (T(1) / T(9009)) * seg0 * w3 * (T(2) * t38 * seg0 * ab_ap + T(13) * t32 * seg0 - T(3) * ap_ap * t37 * seg0);
+    const T t33 = T(5) * ap_ap * t31 * t22 - T(11) * t22 * t29 - T(10) * seg0 * t32 * ab_ap;
+    F = (T(1) / T(693)) * seg0 * t32 * w1 + (T(1) / T(693)) * t31 * w0 * t22 - (T(1) / T(3465)) * seg0 * t33 * w2 - (T(1) / T(3465)) * seg0 * w3 * (T(2) * seg0 * t33 * ab_ap + T(5) * seg0 * ap_ap * t32 - T(11) * seg0 * (t22 * ab_ap * t29 + T(35) * t20 * t17 - T(35) * t23 * t28));
+    const T t34 = t27 * t27;
+    const T t35 = t26 * t26;
+    const T t36 = T(4) * t31 * ab_ab * t22 + T(231) * a_minus_b * t23 * t34 + T(231) * t35 * t17 * ab_ap;
+    const T t37 = T(231) * t35 * t17 + t36 * t22 * ab_ap - T(231) * t23 * t34;
+    const T t38 = T(6) * seg0 * t37 * ab_ap + T(13) * t31 * t22 - T(3) * ap_ap * t36 * t22;
+    G_ap = (T(1) / T(3003)) * w0 * t36 * t22 + (T(1) / T(9009)) * seg0 * t38 * w2 + (T(1) / T(9009)) * seg0 * w3 * (T(2) * seg0 * t38 * ab_ap + T(13) * seg0 * t32 - T(3) * seg0 * ap_ap * t37) + (T(1) / T(3003)) * seg0 * t37 * w1;
     const T t39 = t23 * t23;
     const T t40 = t39 * t23;
     const T t41 = t40 * t40;
@@ -24767,7 +24769,7 @@ T segment_inverse_i13_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t46 = t45 * t45;
     const T t47 = t46 * t46;
     const T t48 = t47 * t17;
-    G_E = -(T(1) / T(45045)) * seg0 * (T(3465) * seg7 * t43 - T(10) * t32 * seg0 * w2 - T(5) * t31 * t22 * w1 - T(3) * seg0 * w3 * t33 - T(3465) * t48 * w0);
+    G_E = -(T(1) / T(45045)) * seg0 * (T(3) * seg0 * t33 * w3 + T(3465) * seg7 * t43 - T(5) * t31 * t22 * w1 - T(10) * seg0 * t32 * w2 - T(3465) * t48 * w0);
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -24982,7 +24984,7 @@ T segment_inverse_i14_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg5 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg5 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -25065,16 +25067,16 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab_ap * seg0 * ab2;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab_ap * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
-    foot1 = (ab0 * exact_cross[2] - exact_cross[0] * ab2) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
+    foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
     foot2 = -(ab0 * exact_cross[1] - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -25083,7 +25085,7 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -25091,7 +25093,7 @@ std::array<T, 3> segment_inverse_i14_w0_grad(const T* pre, const SegmentPoint<T>
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(14, 16, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - ab_ap * seg0 * M_flat[2] * w0;
+    G_E = w0 * M_flat[3] - seg0 * ab_ap * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -25188,7 +25190,7 @@ T segment_inverse_i14_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -25205,7 +25207,7 @@ T segment_inverse_i14_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -25214,7 +25216,7 @@ T segment_inverse_i14_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     segment_moments_far_field<T>(14, 16, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = w0 * M_flat[0];
     G_ap = M_flat[2] * w0;
-    G_E = w0 * M_flat[3] - M_flat[2] * w0 * seg0 * ab_ap;
+    G_E = w0 * M_flat[3] - M_flat[2] * seg0 * w0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -25461,7 +25463,7 @@ T segment_inverse_i14_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap1 * bp1 + ap0 * bp0 + ap2 * bp2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -25493,7 +25495,7 @@ T segment_inverse_i14_w1_f(const T* pre, const SegmentPoint<T>& point) {
     const T t17 = t8 * t8;
     const T t18 = t17 * t7;
     const T t19 = T(1280) * a_minus_b * t10 + T(1280) * ab_ap * t14 + T(11) * ab_ab * t6 * (T(128) * ab_ap * t16 + T(128) * a_minus_b * t18 + T(3) * ab_ab * t6 * (T(48) * ab_ap * t15 + T(48) * a_minus_b * t17 + T(7) * ab_ab * t6 * (T(8) * a_minus_b * t9 + T(5) * ab_ab * t6 * (T(3) * ab_ab * (J2 * ab_ab + a_minus_b * t7 + ab_ap * t11) * t6 + T(2) * ab_ap * t12 + T(2) * a_minus_b * t8) + T(8) * ab_ap * t13)));
-    F = (T(1) / T(15360)) * t6 * w0 * t19 + (T(1) / T(15360)) * seg0 * (T(1280) * t14 + t6 * ab_ap * t19 - T(1280) * t10) * w1;
+    F = (T(1) / T(15360)) * t6 * w0 * t19 + (T(1) / T(15360)) * (T(1280) * t14 + t6 * ab_ap * t19 - T(1280) * t10) * seg0 * w1;
   }
   f = length * F;
   return f;
@@ -25547,9 +25549,9 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -25565,7 +25567,7 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -25574,23 +25576,23 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(14, 16, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[3] * w0 + M_flat[4] * w1;
     G_ap = t4;
-    G_E = M_flat[4] * w0 + M_flat[5] * w1 - ab_ap * seg0 * t4;
+    G_E = M_flat[4] * w0 + M_flat[5] * w1 - seg0 * ab_ap * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
     segment_moments_beyond_end<T>(14, 16, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = M_beyond[4] * w1 + w0 * M_beyond[3];
-    const T t5 = T(1) / ap_ap;
+    const T t5 = T(1) / bp_bp;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / bp_bp;
+    const T t10 = T(1) / ap_ap;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(14)) * (w1 * M_beyond[0] + w0 * t9 - t14 * seg5) * seg0;
+    G_E = -(T(1) / T(14)) * seg0 * (t9 * seg5 - w1 * M_beyond[0] - w0 * t14);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(cross_cross);
@@ -25613,8 +25615,8 @@ std::array<T, 3> segment_inverse_i14_w1_grad(const T* pre, const SegmentPoint<T>
     const T t31 = t30 * t17;
     const T t32 = T(11) * ab_ab * t22 * (T(128) * t29 * a_minus_b + T(3) * ab_ab * (T(7) * ab_ab * (T(5) * (T(3) * ab_ab * t22 * (ab_ap * t17 + t23 * a_minus_b + ab_ab * J2) + T(2) * t24 * a_minus_b + T(2) * ab_ap * t18) * ab_ab * t22 + T(8) * t25 * a_minus_b + T(8) * ab_ap * t19) * t22 + T(48) * t28 * a_minus_b + T(48) * ab_ap * t30) * t22 + T(128) * ab_ap * t31) + T(1280) * t26 * a_minus_b + T(1280) * ab_ap * t20;
     const T t33 = T(15360) * t27 * a_minus_b + T(13) * ab_ab * t22 * t32 + T(15360) * ab_ap * t21;
-    G_ap = (T(1) / T(215040)) * (T(15360) * t21 + t22 * ab_ap * t33 - T(15360) * t27) * seg0 * w1 + (T(1) / T(215040)) * t22 * t33 * w0;
-    G_E = (T(1) / T(215040)) * (t22 * w1 * t32 + T(15360) * w0 * t21 - T(15360) * t27 * seg5) * seg0;
+    G_ap = (T(1) / T(215040)) * seg0 * (T(15360) * t21 + t22 * ab_ap * t33 - T(15360) * t27) * w1 + (T(1) / T(215040)) * t22 * t33 * w0;
+    G_E = (T(1) / T(215040)) * seg0 * (t22 * w1 * t32 + T(15360) * w0 * t21 - T(15360) * t27 * seg5);
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -25671,9 +25673,9 @@ T segment_inverse_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -25690,7 +25692,7 @@ T segment_inverse_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -25700,7 +25702,7 @@ T segment_inverse_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = M_flat[0] * w0 + w1 * M_flat[1];
     const T t4 = w1 * M_flat[4] + M_flat[3] * w0;
     G_ap = t4;
-    G_E = M_flat[4] * w0 + M_flat[5] * w1 - t4 * ab_ap * seg0;
+    G_E = M_flat[4] * w0 + M_flat[5] * w1 - t4 * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -25717,7 +25719,7 @@ T segment_inverse_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(14)) * (w1 * M_beyond[0] + t9 * w0 - seg5 * t14) * seg0;
+    G_E = (T(1) / T(14)) * seg0 * (w1 * M_beyond[0] + t9 * w0 - seg5 * t14);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(cross_cross);
@@ -25737,12 +25739,12 @@ T segment_inverse_i14_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t28 = t26 * t24;
     const T t29 = t27 * t27;
     const T t30 = T(1280) * t20 * a_minus_b + T(11) * ab_ab * t21 * (T(128) * t23 * a_minus_b + T(3) * ab_ab * t21 * (T(48) * t22 * a_minus_b + T(48) * t26 * ab_ap + T(7) * ab_ab * t21 * (T(5) * ab_ab * (T(3) * ab_ab * t21 * (t17 * a_minus_b + ab_ab * J2 + t24 * ab_ap) + T(2) * t25 * ab_ap + T(2) * t18 * a_minus_b) * t21 + T(8) * t27 * ab_ap + T(8) * t19 * a_minus_b)) + T(128) * t28 * ab_ap) + T(1280) * t29 * ab_ap;
-    F = (T(1) / T(15360)) * t30 * t21 * w0 + (T(1) / T(15360)) * w1 * (T(1280) * t29 + t30 * t21 * ab_ap - T(1280) * t20) * seg0;
-    const T t31 = t20 * t17;
-    const T t32 = t29 * t24;
-    const T t33 = T(13) * ab_ab * t30 * t21 + T(15360) * t31 * a_minus_b + T(15360) * t32 * ab_ap;
-    G_ap = (T(1) / T(215040)) * t33 * t21 * w0 + (T(1) / T(215040)) * (T(15360) * t32 + t33 * t21 * ab_ap - T(15360) * t31) * w1 * seg0;
-    G_E = (T(1) / T(215040)) * (T(15360) * t32 * w0 + w1 * t30 * t21 - T(15360) * seg5 * t31) * seg0;
+    F = (T(1) / T(15360)) * t30 * t21 * w0 + (T(1) / T(15360)) * w1 * seg0 * (T(1280) * t29 + t30 * t21 * ab_ap - T(1280) * t20);
+    const T t31 = t29 * t24;
+    const T t32 = t20 * t17;
+    const T t33 = T(13) * ab_ab * t30 * t21 + T(15360) * t32 * a_minus_b + T(15360) * t31 * ab_ap;
+    G_ap = (T(1) / T(215040)) * (T(15360) * t31 + t33 * t21 * ab_ap - T(15360) * t32) * w1 * seg0 + (T(1) / T(215040)) * t33 * t21 * w0;
+    G_E = (T(1) / T(215040)) * (T(15360) * t31 * w0 + w1 * t30 * t21 - T(15360) * seg5 * t32) * seg0;
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
@@ -25950,7 +25952,7 @@ T segment_inverse_i14_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap0 * bp0 + ap1 * bp1 + bp2 * ap2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -25970,21 +25972,21 @@ T segment_inverse_i14_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T J2 = t5 * atan2(t4, ap_bp);
     const T t6 = T(1) / ap_ap;
     const T t7 = t6 * t6;
-    const T t8 = t7 * t6;
-    const T t9 = t8 * t8;
-    const T t10 = t7 * t7;
-    const T t11 = t10 * t6;
-    const T t12 = T(1) / bp_bp;
-    const T t13 = t12 * t12;
-    const T t14 = t13 * t13;
-    const T t15 = t14 * t12;
-    const T t16 = t13 * t12;
-    const T t17 = T(1) / cross_cross;
-    const T t18 = T(128) * t11 * ab_ap + T(128) * t15 * a_minus_b + T(3) * ab_ab * (T(48) * t10 * ab_ap + T(48) * t14 * a_minus_b + T(7) * ab_ab * (T(8) * t16 * a_minus_b + T(8) * t8 * ab_ap + T(5) * ab_ab * (T(2) * t13 * a_minus_b + T(2) * t7 * ab_ap + T(3) * (t6 * ab_ap + ab_ab * J2 + t12 * a_minus_b) * ab_ab * t17) * t17) * t17) * t17;
-    const T t19 = t16 * t16;
-    const T t20 = T(1280) * t9 * ab_ap + T(11) * t18 * ab_ab * t17 + T(1280) * t19 * a_minus_b;
-    const T t21 = T(1280) * t19 - T(1280) * t9 - t20 * t17 * ab_ap;
-    F = (T(1) / T(15360)) * t20 * t17 * w0 + (T(1) / T(15360)) * seg0 * w2 * (T(12) * t18 * t17 - T(2) * seg0 * t21 * ab_ap - ap_ap * t20 * t17) - (T(1) / T(15360)) * w1 * seg0 * t21;
+    const T t8 = t7 * t7;
+    const T t9 = t8 * t6;
+    const T t10 = T(1) / bp_bp;
+    const T t11 = t10 * t10;
+    const T t12 = t11 * t11;
+    const T t13 = t12 * t10;
+    const T t14 = t11 * t10;
+    const T t15 = t7 * t6;
+    const T t16 = T(1) / cross_cross;
+    const T t17 = T(128) * t9 * ab_ap + T(128) * t13 * a_minus_b + T(3) * ab_ab * (T(48) * t8 * ab_ap + T(48) * t12 * a_minus_b + T(7) * ab_ab * (T(8) * t14 * a_minus_b + T(8) * t15 * ab_ap + T(5) * ab_ab * (T(2) * t11 * a_minus_b + T(2) * t7 * ab_ap + T(3) * (t6 * ab_ap + ab_ab * J2 + t10 * a_minus_b) * ab_ab * t16) * t16) * t16) * t16;
+    const T t18 = t14 * t14;
+    const T t19 = t15 * t15;
+    const T t20 = T(1280) * t19 * ab_ap + T(11) * t17 * ab_ab * t16 + T(1280) * t18 * a_minus_b;
+    const T t21 = T(1280) * t18 - T(1280) * t19 - t20 * t16 * ab_ap;
+    F = (T(1) / T(15360)) * seg0 * w2 * (T(12) * t17 * t16 - T(2) * seg0 * t21 * ab_ap - ap_ap * t20 * t16) + (T(1) / T(15360)) * t20 * t16 * w0 - (T(1) / T(15360)) * w1 * seg0 * t21;
   }
   f = F * length;
   return f;
@@ -26040,8 +26042,8 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const T* pre, const SegmentPoint<T>
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -26057,7 +26059,7 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -26072,17 +26074,17 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const T* pre, const SegmentPoint<T>
     std::array<T, 8> M_beyond;
     segment_moments_beyond_end<T>(14, 16, 3, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     G_ap = w1 * M_beyond[5] + w2 * M_beyond[6] + M_beyond[4] * w0;
-    const T t5 = T(1) / bp_bp;
+    const T t5 = T(1) / ap_ap;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / ap_ap;
+    const T t10 = T(1) / bp_bp;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(14)) * (t9 * seg5 - M_beyond[0] * w1 - T(2) * M_beyond[1] * w2 - t14 * w0) * seg0;
+    G_E = (T(1) / T(14)) * seg0 * (M_beyond[0] * w1 + T(2) * M_beyond[1] * w2 + t9 * w0 - t14 * seg5);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(cross_cross);
@@ -26107,7 +26109,7 @@ std::array<T, 3> segment_inverse_i14_w2_grad(const T* pre, const SegmentPoint<T>
     const T t33 = T(13) * ab_ab * t30 * t25 + T(15360) * a_minus_b * t31 + T(15360) * t32 * ab_ap;
     const T t34 = T(15360) * t31 - T(15360) * t32 - ab_ap * t33 * t25;
     G_ap = (T(1) / T(215040)) * w0 * t33 * t25 - (T(1) / T(215040)) * (ap_ap * t33 * t25 + T(2) * t34 * seg0 * ab_ap - T(14) * t30 * t25) * w2 * seg0 - (T(1) / T(215040)) * w1 * t34 * seg0;
-    G_E = -(T(1) / T(215040)) * seg0 * (T(15360) * t31 * seg5 + T(2) * (T(1280) * t28 - T(1280) * t29 - t30 * ab_ap * t25) * w2 * seg0 - w1 * t30 * t25 - T(15360) * t32 * w0);
+    G_E = (T(1) / T(215040)) * (w1 * t30 * t25 + T(15360) * t32 * w0 - T(15360) * t31 * seg5 - T(2) * (T(1280) * t28 - T(1280) * t29 - t30 * ab_ap * t25) * w2 * seg0) * seg0;
   }
   grad[0] = (foot0 * G_ap - G_E * ab0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -26175,7 +26177,7 @@ T segment_inverse_i14_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
     foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
+    foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = bp1 * ab1 + bp0 * ab0 + bp2 * ab2;
@@ -26184,7 +26186,7 @@ T segment_inverse_i14_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -26211,7 +26213,7 @@ T segment_inverse_i14_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = (T(1) / T(14)) * seg0 * (T(2) * w2 * M_beyond[1] + t9 * w0 + M_beyond[0] * w1 - t14 * seg5);
+    G_E = (T(1) / T(14)) * seg0 * (T(2) * w2 * M_beyond[1] + t9 * w0 + M_beyond[0] * w1 - seg5 * t14);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(cross_cross);
@@ -26233,13 +26235,13 @@ T segment_inverse_i14_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t30 = T(128) * t27 * a_minus_b + T(128) * t29 * ab_ap + T(3) * ab_ab * t25 * (T(48) * t26 * a_minus_b + T(7) * ab_ab * t25 * (T(5) * ab_ab * t25 * (T(2) * t18 * ab_ap + T(3) * ab_ab * t25 * (ab_ab * J2 + t21 * a_minus_b + t17 * ab_ap) + T(2) * t22 * a_minus_b) + T(8) * t19 * ab_ap + T(8) * t23 * a_minus_b) + T(48) * t28 * ab_ap);
     const T t31 = T(1280) * t24 * a_minus_b + T(1280) * t20 * ab_ap + T(11) * ab_ab * t25 * t30;
     const T t32 = T(1280) * t20 + t31 * t25 * ab_ap - T(1280) * t24;
-    F = (T(1) / T(15360)) * t32 * seg0 * w1 + (T(1) / T(15360)) * t31 * t25 * w0 + (T(1) / T(15360)) * w2 * seg0 * (T(2) * t32 * seg0 * ab_ap + T(12) * t25 * t30 - ap_ap * t31 * t25);
+    F = (T(1) / T(15360)) * seg0 * w2 * (T(2) * seg0 * t32 * ab_ap + T(12) * t25 * t30 - ap_ap * t31 * t25) + (T(1) / T(15360)) * t31 * t25 * w0 + (T(1) / T(15360)) * seg0 * t32 * w1;
     const T t33 = t24 * t21;
     const T t34 = t20 * t17;
     const T t35 = T(13) * t31 * ab_ab * t25 + T(15360) * t33 * a_minus_b + T(15360) * t34 * ab_ap;
     const T t36 = t35 * t25 * ab_ap + T(15360) * t34 - T(15360) * t33;
-    G_ap = (T(1) / T(215040)) * t36 * seg0 * w1 + (T(1) / T(215040)) * t35 * t25 * w0 - (T(1) / T(215040)) * w2 * seg0 * (ap_ap * t35 * t25 - T(14) * t31 * t25 - T(2) * t36 * seg0 * ab_ap);
-    G_E = -(T(1) / T(215040)) * seg0 * (T(15360) * t33 * seg5 - t31 * t25 * w1 - T(15360) * t34 * w0 - T(2) * t32 * w2 * seg0);
+    G_ap = (T(1) / T(215040)) * seg0 * w2 * (T(2) * seg0 * t36 * ab_ap + T(14) * t31 * t25 - ap_ap * t35 * t25) + (T(1) / T(215040)) * t35 * t25 * w0 + (T(1) / T(215040)) * seg0 * t36 * w1;
+    G_E = (T(1) / T(215040)) * seg0 * (T(2) * seg0 * t32 * w2 + t31 * t25 * w1 + T(15360) * t34 * w0 - T(15360) * seg5 * t33);
   }
   f = F * length;
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
@@ -26486,8 +26488,8 @@ T segment_inverse_i14_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t19 = t15 * t15;
     const T t20 = T(11) * t17 * ab_ab * t14 + T(1280) * a_minus_b * t18 + T(1280) * t19 * ab_ap;
     const T t21 = T(1280) * t19 + t20 * t14 * ab_ap - T(1280) * t18;
-    const T t22 = T(12) * t17 * t14 + T(2) * t21 * ab_ap * seg0 - ap_ap * t20 * t14;
-    F = (T(1) / T(15360)) * t20 * w0 * t14 + (T(1) / T(15360)) * seg0 * w2 * t22 + (T(1) / T(15360)) * t21 * w1 * seg0 - (T(1) / T(15360)) * (ap_ap * t21 * seg0 - T(2) * ab_ap * seg0 * t22 - T(12) * (T(128) * t13 + t17 * t14 * ab_ap - T(128) * t9) * seg0) * w3 * seg0;
+    const T t22 = T(12) * t17 * t14 + T(2) * t21 * seg0 * ab_ap - ap_ap * t20 * t14;
+    F = (T(1) / T(15360)) * t20 * w0 * t14 + (T(1) / T(15360)) * (T(2) * t22 * seg0 * ab_ap + T(12) * (T(128) * t13 + t17 * t14 * ab_ap - T(128) * t9) * seg0 - ap_ap * t21 * seg0) * w3 * seg0 + (T(1) / T(15360)) * t22 * seg0 * w2 + (T(1) / T(15360)) * t21 * seg0 * w1;
   }
   f = F * length;
   return f;
@@ -26543,17 +26545,17 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
-    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
-    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
+    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
+    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
+    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
   const T ab_bp = bp1 * ab1 + bp2 * ab2 + bp0 * ab0;
@@ -26561,7 +26563,7 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -26570,7 +26572,7 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(14, 16, 4, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w0 * M_flat[5] + w3 * M_flat[8] + M_flat[6] * w1 + M_flat[7] * w2;
     G_ap = t4;
-    G_E = M_flat[9] * w3 + M_flat[7] * w1 + M_flat[6] * w0 + M_flat[8] * w2 - seg0 * t4 * ab_ap;
+    G_E = M_flat[9] * w3 + M_flat[7] * w1 + M_flat[6] * w0 + M_flat[8] * w2 - t4 * ab_ap * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
@@ -26586,7 +26588,7 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const T* pre, const SegmentPoint<T>
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(14)) * seg0 * (t9 * seg5 - t14 * w0 - M_beyond[0] * w1 - T(2) * M_beyond[1] * w2 - T(3) * M_beyond[2] * w3);
+    G_E = -(T(1) / T(14)) * (seg5 * t9 - t14 * w0 - M_beyond[0] * w1 - T(2) * M_beyond[1] * w2 - T(3) * M_beyond[2] * w3) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(cross_cross);
@@ -26610,11 +26612,11 @@ std::array<T, 3> segment_inverse_i14_w3_grad(const T* pre, const SegmentPoint<T>
     const T t32 = T(1280) * a_minus_b * t20 + T(1280) * t26 * ab_ap + T(11) * t31 * ab_ab * t22;
     const T t33 = t26 * t23;
     const T t34 = T(15360) * a_minus_b * t21 + T(13) * ab_ab * t22 * t32 + T(15360) * t33 * ab_ap;
-    const T t35 = T(1280) * t26 + t22 * ab_ap * t32 - T(1280) * t20;
-    const T t36 = T(15360) * t33 + t34 * t22 * ab_ap - T(15360) * t21;
-    const T t37 = ap_ap * t34 * t22 - T(14) * t22 * t32 - T(2) * seg0 * t36 * ab_ap;
-    G_ap = (T(1) / T(215040)) * w0 * t34 * t22 + (T(1) / T(215040)) * (T(14) * t35 * seg0 - ap_ap * seg0 * t36 - T(2) * seg0 * t37 * ab_ap) * seg0 * w3 + (T(1) / T(215040)) * seg0 * w1 * t36 - (T(1) / T(215040)) * seg0 * t37 * w2;
-    G_E = -(T(1) / T(215040)) * seg0 * (T(15360) * t21 * seg5 - T(15360) * t33 * w0 - t22 * w1 * t32 - T(3) * (T(2) * t35 * seg0 * ab_ap + T(12) * t31 * t22 - ap_ap * t22 * t32) * seg0 * w3 - T(2) * t35 * seg0 * w2);
+    const T t35 = T(15360) * t33 + t34 * t22 * ab_ap - T(15360) * t21;
+    const T t36 = ap_ap * t34 * t22 - T(14) * t22 * t32 - T(2) * t35 * ab_ap * seg0;
+    const T t37 = T(1280) * t26 + t22 * ab_ap * t32 - T(1280) * t20;
+    G_ap = (T(1) / T(215040)) * w0 * t34 * t22 + (T(1) / T(215040)) * w1 * t35 * seg0 - (T(1) / T(215040)) * t36 * seg0 * w2 - (T(1) / T(215040)) * (T(2) * ab_ap * t36 * seg0 + ap_ap * t35 * seg0 - T(14) * t37 * seg0) * w3 * seg0;
+    G_E = -(T(1) / T(215040)) * (T(15360) * seg5 * t21 + T(3) * (ap_ap * t22 * t32 - T(2) * t37 * ab_ap * seg0 - T(12) * t31 * t22) * w3 * seg0 - T(15360) * t33 * w0 - t22 * w1 * t32 - T(2) * t37 * seg0 * w2) * seg0;
   }
   grad[0] = (G_ap * foot0 - G_E * ab0) * g_factor;
   grad[1] = (G_ap * foot1 - G_E * ab1) * g_factor;
@@ -26675,7 +26677,7 @@ T segment_inverse_i14_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -26709,17 +26711,17 @@ T segment_inverse_i14_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     segment_moments_beyond_end<T>(14, 16, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[1] * w1 + M_beyond[3] * w3 + w2 * M_beyond[2] + M_beyond[0] * w0;
     G_ap = w3 * M_beyond[8] + w2 * M_beyond[7] + M_beyond[6] * w1 + w0 * M_beyond[5];
-    const T t5 = T(1) / bp_bp;
+    const T t5 = T(1) / ap_ap;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
-    const T t10 = T(1) / ap_ap;
+    const T t10 = T(1) / bp_bp;
     const T t11 = t10 * t10;
     const T t12 = t11 * t10;
     const T t13 = t12 * t12;
     const T t14 = t13 * t10;
-    G_E = -(T(1) / T(14)) * (t9 * seg5 - M_beyond[0] * w1 - T(2) * w2 * M_beyond[1] - T(3) * w3 * M_beyond[2] - t14 * w0) * seg0;
+    G_E = (T(1) / T(14)) * seg0 * (M_beyond[0] * w1 + T(2) * w2 * M_beyond[1] + T(3) * w3 * M_beyond[2] + t9 * w0 - t14 * seg5);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t15 = sqrt(cross_cross);
@@ -26741,15 +26743,15 @@ T segment_inverse_i14_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t30 = T(128) * t26 * ab_ap + T(3) * (T(7) * (T(5) * (T(3) * (J2 * ab_ab + t17 * a_minus_b + t21 * ab_ap) * ab_ab * t27 + T(2) * t22 * ab_ap + T(2) * t18 * a_minus_b) * ab_ab * t27 + T(8) * t23 * ab_ap + T(8) * t19 * a_minus_b) * ab_ab * t27 + T(48) * t28 * a_minus_b + T(48) * t25 * ab_ap) * ab_ab * t27 + T(128) * t29 * a_minus_b;
     const T t31 = T(1280) * t20 * a_minus_b + T(1280) * t24 * ab_ap + T(11) * ab_ab * t30 * t27;
     const T t32 = T(1280) * t20 - T(1280) * t24 - t31 * t27 * ab_ap;
-    const T t33 = ap_ap * t31 * t27 + T(2) * seg0 * ab_ap * t32 - T(12) * t30 * t27;
-    F = (T(1) / T(15360)) * w0 * t31 * t27 + (T(1) / T(15360)) * (T(12) * (t30 * t27 * ab_ap + T(128) * t26 - T(128) * t29) * seg0 + ap_ap * seg0 * t32 - T(2) * seg0 * t33 * ab_ap) * w3 * seg0 - (T(1) / T(15360)) * seg0 * w1 * t32 - (T(1) / T(15360)) * w2 * seg0 * t33;
+    const T t33 = T(2) * seg0 * ab_ap * t32 + ap_ap * t31 * t27 - T(12) * t30 * t27;
+    F = (T(1) / T(15360)) * w0 * t31 * t27 - (T(1) / T(15360)) * seg0 * w1 * t32 - (T(1) / T(15360)) * (T(2) * t33 * seg0 * ab_ap - T(12) * (t30 * t27 * ab_ap + T(128) * t26 - T(128) * t29) * seg0 - ap_ap * seg0 * t32) * seg0 * w3 - (T(1) / T(15360)) * t33 * w2 * seg0;
     const T t34 = t20 * t17;
     const T t35 = t24 * t21;
     const T t36 = T(13) * ab_ab * t31 * t27 + T(15360) * t35 * ab_ap + T(15360) * t34 * a_minus_b;
     const T t37 = T(15360) * t34 - t36 * t27 * ab_ap - T(15360) * t35;
-    const T t38 = T(14) * t31 * t27 - ap_ap * t36 * t27 - T(2) * t37 * seg0 * ab_ap;
-    G_ap = (T(1) / T(215040)) * (ap_ap * t37 * seg0 + T(2) * t38 * seg0 * ab_ap - T(14) * seg0 * t32) * w3 * seg0 + (T(1) / T(215040)) * w2 * t38 * seg0 + (T(1) / T(215040)) * w0 * t36 * t27 - (T(1) / T(215040)) * t37 * seg0 * w1;
-    G_E = -(T(1) / T(215040)) * (T(3) * w3 * seg0 * t33 + T(15360) * t34 * seg5 + T(2) * w2 * seg0 * t32 - t31 * t27 * w1 - T(15360) * t35 * w0) * seg0;
+    const T t38 = T(14) * t31 * t27 - T(2) * seg0 * t37 * ab_ap - ap_ap * t36 * t27;
+    G_ap = (T(1) / T(215040)) * (ap_ap * seg0 * t37 + T(2) * seg0 * t38 * ab_ap - T(14) * seg0 * t32) * seg0 * w3 + (T(1) / T(215040)) * w2 * seg0 * t38 + (T(1) / T(215040)) * w0 * t36 * t27 - (T(1) / T(215040)) * seg0 * t37 * w1;
+    G_E = -(T(1) / T(215040)) * seg0 * (T(15360) * t34 * seg5 + T(2) * w2 * seg0 * t32 + T(3) * t33 * seg0 * w3 - t31 * t27 * w1 - T(15360) * t35 * w0);
   }
   f = length * F;
   grad[0] = g_factor * (foot0 * G_ap - G_E * ab0);
@@ -26960,7 +26962,7 @@ T segment_inverse_i15_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg7 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg7 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -27050,7 +27052,7 @@ std::array<T, 3> segment_inverse_i15_w0_grad(const T* pre, const SegmentPoint<T>
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = (exact_cross[1] * ab2 - ab1 * exact_cross[2]) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - ab1 * exact_cross[2]);
     foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
     foot2 = seg0 * (ab1 * exact_cross[0] - exact_cross[1] * ab0);
   }
@@ -27061,7 +27063,7 @@ std::array<T, 3> segment_inverse_i15_w0_grad(const T* pre, const SegmentPoint<T>
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -27069,7 +27071,7 @@ std::array<T, 3> segment_inverse_i15_w0_grad(const T* pre, const SegmentPoint<T>
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(15, 17, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = w0 * M_flat[2];
-    G_E = w0 * M_flat[3] - w0 * seg0 * ab_ap * M_flat[2];
+    G_E = w0 * M_flat[3] - seg0 * w0 * ab_ap * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -27199,7 +27201,7 @@ T segment_inverse_i15_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -27229,7 +27231,7 @@ T segment_inverse_i15_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t15 = t14 * t11;
     const T t16 = t15 * t15;
     const T t17 = t16 * t11;
-    const T t18 = (T(1) / T(15)) * (t10 * w0 - t17 * w0) * seg0;
+    const T t18 = (T(1) / T(15)) * seg0 * (t10 * w0 - t17 * w0);
     G_E = t18;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -27265,7 +27267,7 @@ T segment_inverse_i15_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t46 = t45 * t24;
     const T t47 = t46 * t46;
     const T t48 = t47 * t24;
-    const T t49 = (T(1) / T(15)) * (t42 * w0 - t48 * w0) * seg0;
+    const T t49 = (T(1) / T(15)) * seg0 * (t42 * w0 - t48 * w0);
     G_E = t49;
   }
   f = length * F;
@@ -27486,7 +27488,7 @@ T segment_inverse_i15_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -27571,17 +27573,17 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
-    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
+    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
   const T ab_bp = bp2 * ab2 + bp1 * ab1 + bp0 * ab0;
@@ -27599,7 +27601,7 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(15, 17, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w1 * M_flat[4] + M_flat[3] * w0;
     G_ap = t4;
-    G_E = M_flat[4] * w0 + w1 * M_flat[5] - ab_ap * seg0 * t4;
+    G_E = M_flat[4] * w0 + w1 * M_flat[5] - seg0 * ab_ap * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -27619,7 +27621,7 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const T* pre, const SegmentPoint<T>
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * seg0 * (M_beyond[0] * w1 + t11 * w0 - t18 * seg7);
+    G_E = (T(1) / T(15)) * seg0 * (M_beyond[0] * w1 + t11 * w0 - seg7 * t18);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / cross_cross;
@@ -27641,7 +27643,7 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const T* pre, const SegmentPoint<T>
     const T t35 = t32 * t21;
     const T t36 = t33 * t26;
     const T t37 = T(2) * ab_ab * t19 * t34 + T(429) * t20 * t35 * ab_ap + T(429) * t25 * a_minus_b * t36;
-    G_ap = (T(1) / T(6435)) * t19 * t37 * w0 - (T(1) / T(6435)) * w1 * (T(429) * t25 * t36 - t19 * ab_ap * t37 - T(429) * t20 * t35) * seg0;
+    G_ap = (T(1) / T(6435)) * t19 * t37 * w0 - (T(1) / T(6435)) * seg0 * w1 * (T(429) * t25 * t36 - t19 * ab_ap * t37 - T(429) * t20 * t35);
     const T t38 = t20 * t20;
     const T t39 = t38 * t20;
     const T t40 = t39 * t39;
@@ -27654,7 +27656,7 @@ std::array<T, 3> segment_inverse_i15_w1_grad(const T* pre, const SegmentPoint<T>
     const T t47 = t46 * t25;
     const T t48 = t47 * t47;
     const T t49 = t48 * t25;
-    G_E = (T(1) / T(45045)) * seg0 * (w1 * t19 * t34 + T(3003) * t43 * w0 - T(3003) * t49 * seg7);
+    G_E = (T(1) / T(45045)) * seg0 * (w1 * t19 * t34 + T(3003) * t43 * w0 - T(3003) * seg7 * t49);
   }
   grad[0] = g_factor * (G_ap * foot0 - G_E * ab0);
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -27748,21 +27750,21 @@ T segment_inverse_i15_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     segment_moments_beyond_end<T>(15, 17, 2, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = w0 * M_beyond[0] + M_beyond[1] * w1;
     G_ap = w0 * M_beyond[3] + w1 * M_beyond[4];
-    const T t5 = T(1) / r0;
+    const T t5 = T(1) / r1;
     const T t6 = t5 * t5;
     const T t7 = t6 * t5;
     const T t8 = t7 * t7;
     const T t9 = t8 * t5;
     const T t10 = t9 * t9;
     const T t11 = t10 * t5;
-    const T t12 = T(1) / r1;
+    const T t12 = T(1) / r0;
     const T t13 = t12 * t12;
     const T t14 = t13 * t12;
     const T t15 = t14 * t14;
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * seg0 * (w0 * t11 + w1 * M_beyond[0] - seg7 * t18);
+    G_E = -(T(1) / T(15)) * seg0 * (seg7 * t11 - w0 * t18 - w1 * M_beyond[0]);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / r0;
@@ -27781,24 +27783,24 @@ T segment_inverse_i15_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t32 = t29 * t28;
     const T t33 = t32 * t32;
     const T t34 = T(4) * (T(63) * ab_ap * t26 * t19 + T(63) * t31 * a_minus_b * t27 + T(2) * (T(35) * ab_ap * t25 * t19 + T(35) * t30 * a_minus_b * t27 + T(8) * (T(2) * (T(3) * t29 * a_minus_b * t27 + T(3) * ab_ap * t21 * t19 + T(4) * ab_ab * (ab_ap * t20 * t19 + T(2) * ab_ab * t24 * (ab_ap * t19 + a_minus_b * t27) + t28 * a_minus_b * t27) * t24) * ab_ab * t24 + T(5) * t32 * a_minus_b * t27 + T(5) * ab_ap * t22 * t19) * ab_ab * t24) * ab_ab * t24) * ab_ab * t24 + T(231) * ab_ap * t23 * t19 + T(231) * t33 * a_minus_b * t27;
-    F = (T(1) / T(3003)) * w1 * seg0 * (T(231) * t23 * t19 + ab_ap * t24 * t34 - T(231) * t33 * t27) + (T(1) / T(3003)) * w0 * t24 * t34;
+    F = (T(1) / T(3003)) * seg0 * w1 * (T(231) * t23 * t19 + ab_ap * t24 * t34 - T(231) * t33 * t27) + (T(1) / T(3003)) * w0 * t24 * t34;
     const T t35 = t23 * t20;
     const T t36 = t33 * t28;
     const T t37 = T(429) * ab_ap * t35 * t19 + T(429) * t36 * a_minus_b * t27 + T(2) * ab_ab * t24 * t34;
-    G_ap = (T(1) / T(6435)) * w0 * t37 * t24 + (T(1) / T(6435)) * (ab_ap * t37 * t24 + T(429) * t35 * t19 - T(429) * t36 * t27) * w1 * seg0;
-    const T t38 = t19 * t19;
-    const T t39 = t38 * t19;
+    G_ap = (T(1) / T(6435)) * seg0 * (ab_ap * t37 * t24 + T(429) * t35 * t19 - T(429) * t36 * t27) * w1 + (T(1) / T(6435)) * w0 * t37 * t24;
+    const T t38 = t27 * t27;
+    const T t39 = t38 * t27;
     const T t40 = t39 * t39;
-    const T t41 = t40 * t19;
+    const T t41 = t40 * t27;
     const T t42 = t41 * t41;
-    const T t43 = t42 * t19;
-    const T t44 = t27 * t27;
-    const T t45 = t44 * t27;
+    const T t43 = t42 * t27;
+    const T t44 = t19 * t19;
+    const T t45 = t44 * t19;
     const T t46 = t45 * t45;
-    const T t47 = t46 * t27;
+    const T t47 = t46 * t19;
     const T t48 = t47 * t47;
-    const T t49 = t48 * t27;
-    G_E = (T(1) / T(45045)) * seg0 * (T(3003) * w0 * t43 + w1 * t24 * t34 - T(3003) * seg7 * t49);
+    const T t49 = t48 * t19;
+    G_E = -(T(1) / T(45045)) * seg0 * (T(3003) * seg7 * t43 - T(3003) * w0 * t49 - w1 * t24 * t34);
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - foot0 * G_ap) * g_factor;
@@ -28022,7 +28024,7 @@ T segment_inverse_i15_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg8 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -28037,25 +28039,25 @@ T segment_inverse_i15_w2_f(const T* pre, const SegmentPoint<T>& point) {
     F = M_beyond[2] * w2 + w1 * M_beyond[1] + w0 * M_beyond[0];
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t4 = T(1) / cross_cross;
-    const T t5 = T(1) / r0;
+    const T t4 = T(1) / r0;
+    const T t5 = t4 * t4;
     const T t6 = t5 * t5;
-    const T t7 = t6 * t6;
+    const T t7 = t6 * t5;
     const T t8 = t7 * t7;
-    const T t9 = T(1) / r1;
-    const T t10 = t9 * t9;
-    const T t11 = t10 * t10;
+    const T t9 = T(1) / cross_cross;
+    const T t10 = t6 * t6;
+    const T t11 = T(1) / r1;
     const T t12 = t11 * t11;
-    const T t13 = t7 * t6;
-    const T t14 = t11 * t10;
-    const T t15 = t8 * t6;
-    const T t16 = t12 * t10;
-    const T t17 = T(2) * (T(35) * t5 * ab_ap * t8 + T(35) * t12 * t9 * a_minus_b + T(8) * t4 * (T(5) * t5 * ab_ap * t13 + T(2) * t4 * (T(3) * t5 * ab_ap * t7 + T(4) * t4 * (t10 * t9 * a_minus_b + T(2) * t4 * (t5 * ab_ap + t9 * a_minus_b) * ab_ab + t5 * ab_ap * t6) * ab_ab + T(3) * t11 * t9 * a_minus_b) * ab_ab + T(5) * t14 * t9 * a_minus_b) * ab_ab) * t4 * ab_ab + T(63) * t5 * ab_ap * t15 + T(63) * t16 * t9 * a_minus_b;
-    const T t18 = t14 * t14;
-    const T t19 = t13 * t13;
-    const T t20 = T(4) * t4 * t17 * ab_ab + T(231) * t18 * t9 * a_minus_b + T(231) * t5 * ab_ap * t19;
-    const T t21 = T(231) * t5 * t19 + t4 * ab_ap * t20 - T(231) * t18 * t9;
-    F = (T(1) / T(3003)) * t4 * w0 * t20 + (T(1) / T(9009)) * (T(13) * t4 * t17 + T(6) * ab_ap * seg0 * t21 - T(3) * t4 * t20 * ap_ap) * seg0 * w2 + (T(1) / T(3003)) * w1 * seg0 * t21;
+    const T t13 = t12 * t12;
+    const T t14 = t13 * t13;
+    const T t15 = t13 * t12;
+    const T t16 = t10 * t5;
+    const T t17 = t14 * t12;
+    const T t18 = T(2) * (T(35) * t4 * ab_ap * t10 + T(35) * t14 * t11 * a_minus_b + T(8) * t9 * (T(5) * t4 * ab_ap * t7 + T(2) * t9 * (T(3) * t4 * ab_ap * t6 + T(4) * t9 * (t12 * t11 * a_minus_b + T(2) * t9 * (t4 * ab_ap + t11 * a_minus_b) * ab_ab + t4 * ab_ap * t5) * ab_ab + T(3) * t13 * t11 * a_minus_b) * ab_ab + T(5) * t15 * t11 * a_minus_b) * ab_ab) * t9 * ab_ab + T(63) * t4 * ab_ap * t16 + T(63) * t17 * t11 * a_minus_b;
+    const T t19 = t15 * t15;
+    const T t20 = T(4) * t9 * t18 * ab_ab + T(231) * t19 * t11 * a_minus_b + T(231) * t4 * ab_ap * t8;
+    const T t21 = T(231) * t4 * t8 + t9 * ab_ap * t20 - T(231) * t19 * t11;
+    F = (T(1) / T(3003)) * w1 * t21 * seg0 + (T(1) / T(3003)) * t9 * w0 * t20 + (T(1) / T(9009)) * (T(13) * t9 * t18 + T(6) * ab_ap * t21 * seg0 - T(3) * t9 * t20 * ap_ap) * w2 * seg0;
   }
   f = length * F;
   return f;
@@ -28110,7 +28112,7 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
     foot1 = ap1 - ab1 * seg0 * ab_ap;
     foot2 = ap2 - seg0 * ab_ap * ab2;
   } else {
@@ -28119,7 +28121,7 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const T* pre, const SegmentPoint<T>
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = seg0 * (exact_cross[2] * ab0 - exact_cross[0] * ab2);
+    foot1 = (exact_cross[2] * ab0 - exact_cross[0] * ab2) * seg0;
     foot2 = -seg0 * (ab0 * exact_cross[1] - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp2 * bp2 + bp0 * bp0;
@@ -28181,7 +28183,7 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const T* pre, const SegmentPoint<T>
     const T t36 = t33 * t28;
     const T t37 = T(2) * t19 * t34 * ab_ab + T(429) * a_minus_b * t35 * t20 + T(429) * ab_ap * t27 * t36;
     const T t38 = T(429) * t35 * t20 - T(429) * t27 * t36 - t19 * ab_ap * t37;
-    G_ap = (T(1) / T(6435)) * t19 * w0 * t37 + (T(1) / T(45045)) * seg0 * w2 * (T(15) * t19 * t34 - T(7) * t19 * ap_ap * t37 - T(14) * seg0 * ab_ap * t38) - (T(1) / T(6435)) * seg0 * t38 * w1;
+    G_ap = (T(1) / T(45045)) * (T(15) * t19 * t34 - T(7) * t19 * ap_ap * t37 - T(14) * seg0 * ab_ap * t38) * seg0 * w2 + (T(1) / T(6435)) * t19 * w0 * t37 - (T(1) / T(6435)) * seg0 * t38 * w1;
     const T t39 = t27 * t27;
     const T t40 = t39 * t27;
     const T t41 = t40 * t40;
@@ -28194,7 +28196,7 @@ std::array<T, 3> segment_inverse_i15_w2_grad(const T* pre, const SegmentPoint<T>
     const T t48 = t47 * t20;
     const T t49 = t48 * t48;
     const T t50 = t49 * t20;
-    G_E = (T(1) / T(45045)) * seg0 * (T(2) * seg0 * (t19 * t34 * ab_ap + T(231) * t27 * t33 - T(231) * t24 * t20) * w2 + t19 * t34 * w1 + T(3003) * w0 * t44 - T(3003) * seg7 * t50);
+    G_E = (T(1) / T(45045)) * seg0 * (t19 * t34 * w1 + T(2) * seg0 * (t19 * t34 * ab_ap + T(231) * t27 * t33 - T(231) * t24 * t20) * w2 + T(3003) * w0 * t44 - T(3003) * seg7 * t50);
   }
   grad[0] = (foot0 * G_ap - ab0 * G_E) * g_factor;
   grad[1] = g_factor * (G_ap * foot1 - ab1 * G_E);
@@ -28252,9 +28254,9 @@ T segment_inverse_i15_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * seg0 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -28303,7 +28305,7 @@ T segment_inverse_i15_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * seg0 * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + t11 * w0 - t18 * seg7);
+    G_E = (T(1) / T(15)) * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + t11 * w0 - t18 * seg7) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / r0;
@@ -28320,16 +28322,16 @@ T segment_inverse_i15_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t30 = t28 * t28;
     const T t31 = t30 * t27;
     const T t32 = T(63) * t19 * ab_ap * t23 + T(2) * ab_ab * (T(8) * ab_ab * t24 * (T(5) * t19 * ab_ap * t25 + T(5) * t26 * t29 * a_minus_b + T(2) * (T(4) * ab_ab * t24 * (T(2) * (t26 * a_minus_b + t19 * ab_ap) * ab_ab * t24 + t19 * ab_ap * t20 + t26 * t27 * a_minus_b) + T(3) * t26 * t28 * a_minus_b + T(3) * t19 * ab_ap * t21) * ab_ab * t24) + T(35) * t19 * ab_ap * t22 + T(35) * t26 * t30 * a_minus_b) * t24 + T(63) * t26 * t31 * a_minus_b;
-    const T t33 = t29 * t29;
-    const T t34 = t25 * t25;
-    const T t35 = T(231) * t19 * ab_ap * t34 + T(4) * ab_ab * t32 * t24 + T(231) * t26 * t33 * a_minus_b;
-    const T t36 = T(231) * t26 * t33 - T(231) * t19 * t34 - t35 * t24 * ab_ap;
-    F = (T(1) / T(9009)) * w2 * (T(13) * t32 * t24 - T(6) * seg0 * ab_ap * t36 - T(3) * t35 * t24 * ap_ap) * seg0 + (T(1) / T(3003)) * t35 * t24 * w0 - (T(1) / T(3003)) * seg0 * t36 * w1;
-    const T t37 = t34 * t20;
-    const T t38 = t33 * t27;
+    const T t33 = t25 * t25;
+    const T t34 = t29 * t29;
+    const T t35 = T(231) * t19 * ab_ap * t33 + T(4) * ab_ab * t32 * t24 + T(231) * t26 * t34 * a_minus_b;
+    const T t36 = T(231) * t26 * t34 - T(231) * t19 * t33 - t35 * t24 * ab_ap;
+    F = (T(1) / T(9009)) * (T(13) * t32 * t24 - T(3) * t35 * t24 * ap_ap - T(6) * seg0 * ab_ap * t36) * w2 * seg0 + (T(1) / T(3003)) * t35 * t24 * w0 - (T(1) / T(3003)) * seg0 * t36 * w1;
+    const T t37 = t33 * t20;
+    const T t38 = t34 * t27;
     const T t39 = T(429) * t19 * ab_ap * t37 + T(2) * ab_ab * t35 * t24 + T(429) * t26 * t38 * a_minus_b;
     const T t40 = T(429) * t26 * t38 - T(429) * t19 * t37 - t39 * t24 * ab_ap;
-    G_ap = (T(1) / T(6435)) * t39 * t24 * w0 - (T(1) / T(6435)) * seg0 * t40 * w1 - (T(1) / T(45045)) * w2 * seg0 * (T(7) * t39 * t24 * ap_ap + T(14) * seg0 * t40 * ab_ap - T(15) * t35 * t24);
+    G_ap = (T(1) / T(6435)) * t39 * t24 * w0 - (T(1) / T(6435)) * t40 * seg0 * w1 - (T(1) / T(45045)) * w2 * (T(7) * t39 * t24 * ap_ap + T(14) * t40 * seg0 * ab_ap - T(15) * t35 * t24) * seg0;
     const T t41 = t19 * t19;
     const T t42 = t41 * t19;
     const T t43 = t42 * t42;
@@ -28342,7 +28344,7 @@ T segment_inverse_i15_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t50 = t49 * t26;
     const T t51 = t50 * t50;
     const T t52 = t51 * t26;
-    G_E = (T(1) / T(45045)) * (t35 * t24 * w1 + T(3003) * t46 * w0 - T(3003) * t52 * seg7 - T(2) * w2 * seg0 * t36) * seg0;
+    G_E = (T(1) / T(45045)) * (t35 * t24 * w1 + T(3003) * t46 * w0 - T(2) * w2 * seg0 * t36 - T(3003) * t52 * seg7) * seg0;
   }
   f = length * F;
   grad[0] = g_factor * (G_ap * foot0 - ab0 * G_E);
@@ -28571,7 +28573,7 @@ T segment_inverse_i15_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T r0 = sqrt(ap_ap);
   const T r1 = sqrt(bp_bp);
   T F;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg8 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -28589,23 +28591,23 @@ T segment_inverse_i15_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = T(1) / r0;
     const T t5 = t4 * t4;
     const T t6 = t5 * t5;
-    const T t7 = t6 * t6;
-    const T t8 = t7 * t5;
+    const T t7 = t6 * t5;
+    const T t8 = t7 * t7;
     const T t9 = T(1) / r1;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
-    const T t12 = t11 * t11;
-    const T t13 = t12 * t10;
-    const T t14 = t11 * t10;
-    const T t15 = t6 * t5;
-    const T t16 = T(1) / cross_cross;
-    const T t17 = T(63) * t4 * ab_ap * t8 + T(63) * t13 * t9 * a_minus_b + T(2) * (T(8) * (T(5) * t14 * t9 * a_minus_b + T(5) * t4 * ab_ap * t15 + T(2) * (T(3) * t4 * ab_ap * t6 + T(3) * t11 * t9 * a_minus_b + T(4) * (T(2) * (t9 * a_minus_b + t4 * ab_ap) * ab_ab * t16 + t10 * t9 * a_minus_b + t4 * ab_ap * t5) * ab_ab * t16) * ab_ab * t16) * ab_ab * t16 + T(35) * t4 * ab_ap * t7 + T(35) * t12 * t9 * a_minus_b) * ab_ab * t16;
-    const T t18 = t14 * t14;
-    const T t19 = t15 * t15;
-    const T t20 = T(231) * t4 * ab_ap * t19 + T(231) * t18 * t9 * a_minus_b + T(4) * t17 * ab_ab * t16;
-    const T t21 = T(231) * t18 * t9 - ab_ap * t20 * t16 - T(231) * t4 * t19;
-    const T t22 = T(13) * t17 * t16 - T(6) * seg0 * ab_ap * t21 - T(3) * ap_ap * t20 * t16;
-    F = (T(1) / T(9009)) * seg0 * w2 * t22 + (T(1) / T(9009)) * seg0 * w3 * (T(2) * seg0 * ab_ap * t22 + T(3) * seg0 * ap_ap * t21 - T(13) * seg0 * (T(63) * t13 * t9 - T(63) * t4 * t8 - ab_ap * t17 * t16)) + (T(1) / T(3003)) * t20 * w0 * t16 - (T(1) / T(3003)) * seg0 * t21 * w1;
+    const T t12 = t11 * t10;
+    const T t13 = t12 * t12;
+    const T t14 = t6 * t6;
+    const T t15 = t14 * t5;
+    const T t16 = t11 * t11;
+    const T t17 = t16 * t10;
+    const T t18 = T(1) / cross_cross;
+    const T t19 = T(63) * t4 * ab_ap * t15 + T(63) * t17 * t9 * a_minus_b + T(2) * (T(8) * (T(5) * t12 * t9 * a_minus_b + T(5) * t4 * ab_ap * t7 + T(2) * (T(3) * t4 * ab_ap * t6 + T(3) * t11 * t9 * a_minus_b + T(4) * (T(2) * (t9 * a_minus_b + t4 * ab_ap) * ab_ab * t18 + t10 * t9 * a_minus_b + t4 * ab_ap * t5) * ab_ab * t18) * ab_ab * t18) * ab_ab * t18 + T(35) * t4 * ab_ap * t14 + T(35) * t16 * t9 * a_minus_b) * ab_ab * t18;
+    const T t20 = T(231) * t4 * ab_ap * t8 + T(231) * t13 * t9 * a_minus_b + T(4) * t19 * ab_ab * t18;
+    const T t21 = T(231) * t13 * t9 - ab_ap * t20 * t18 - T(231) * t4 * t8;
+    const T t22 = T(6) * ab_ap * seg0 * t21 + T(3) * ap_ap * t20 * t18 - T(13) * t19 * t18;
+    F = (T(1) / T(3003)) * t20 * w0 * t18 - (T(1) / T(3003)) * seg0 * t21 * w1 - (T(1) / T(9009)) * seg0 * w3 * (T(2) * ab_ap * seg0 * t22 + T(13) * seg0 * (T(63) * t17 * t9 - T(63) * t4 * t15 - ab_ap * t19 * t18) - T(3) * seg0 * ap_ap * t21) - (T(1) / T(9009)) * w2 * seg0 * t22;
   }
   f = length * F;
   return f;
@@ -28669,8 +28671,8 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const T* pre, const SegmentPoint<T>
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (ab1 * exact_cross[2] - exact_cross[1] * ab2);
-    foot1 = -seg0 * (exact_cross[0] * ab2 - ab0 * exact_cross[2]);
+    foot0 = -(ab1 * exact_cross[2] - exact_cross[1] * ab2) * seg0;
+    foot1 = -(exact_cross[0] * ab2 - ab0 * exact_cross[2]) * seg0;
     foot2 = -(exact_cross[1] * ab0 - exact_cross[0] * ab1) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
@@ -28680,7 +28682,7 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const T* pre, const SegmentPoint<T>
   const T r1 = sqrt(bp_bp);
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg3 + cross_cross), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -28709,7 +28711,7 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const T* pre, const SegmentPoint<T>
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * (T(2) * M_beyond[1] * w2 + t11 * w0 + T(3) * M_beyond[2] * w3 + M_beyond[0] * w1 - seg7 * t18) * seg0;
+    G_E = (T(1) / T(15)) * seg0 * (T(2) * M_beyond[1] * w2 + t11 * w0 + T(3) * M_beyond[2] * w3 + M_beyond[0] * w1 - t18 * seg7);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t19 = T(1) / r0;
@@ -28733,22 +28735,22 @@ std::array<T, 3> segment_inverse_i15_w3_grad(const T* pre, const SegmentPoint<T>
     const T t37 = t34 * t25;
     const T t38 = T(2) * t35 * ab_ab * t28 + T(429) * ab_ap * t36 * t19 + T(429) * a_minus_b * t37 * t24;
     const T t39 = ab_ap * t38 * t28 + T(429) * t36 * t19 - T(429) * t37 * t24;
-    const T t40 = ab_ap * t35 * t28 + T(231) * t23 * t19 - T(231) * t34 * t24;
-    const T t41 = T(7) * ap_ap * t38 * t28 - T(15) * t35 * t28 - T(14) * ab_ap * t39 * seg0;
-    G_ap = (T(1) / T(6435)) * t39 * seg0 * w1 + (T(1) / T(45045)) * (T(15) * t40 * seg0 - T(7) * t39 * ap_ap * seg0 - T(2) * ab_ap * t41 * seg0) * seg0 * w3 + (T(1) / T(6435)) * t38 * w0 * t28 - (T(1) / T(45045)) * t41 * w2 * seg0;
-    const T t42 = t19 * t19;
-    const T t43 = t42 * t19;
+    const T t40 = T(7) * ap_ap * t38 * t28 - T(14) * ab_ap * t39 * seg0 - T(15) * t35 * t28;
+    const T t41 = ab_ap * t35 * t28 + T(231) * t23 * t19 - T(231) * t34 * t24;
+    G_ap = (T(1) / T(6435)) * t39 * seg0 * w1 + (T(1) / T(6435)) * t38 * w0 * t28 - (T(1) / T(45045)) * w2 * seg0 * t40 - (T(1) / T(45045)) * w3 * (T(7) * t39 * ap_ap * seg0 + T(2) * ab_ap * seg0 * t40 - T(15) * t41 * seg0) * seg0;
+    const T t42 = t24 * t24;
+    const T t43 = t42 * t24;
     const T t44 = t43 * t43;
-    const T t45 = t44 * t19;
+    const T t45 = t44 * t24;
     const T t46 = t45 * t45;
-    const T t47 = t46 * t19;
-    const T t48 = t24 * t24;
-    const T t49 = t48 * t24;
+    const T t47 = t46 * t24;
+    const T t48 = t19 * t19;
+    const T t49 = t48 * t19;
     const T t50 = t49 * t49;
-    const T t51 = t50 * t24;
+    const T t51 = t50 * t19;
     const T t52 = t51 * t51;
-    const T t53 = t52 * t24;
-    G_E = (T(1) / T(45045)) * seg0 * (T(2) * t40 * w2 * seg0 + T(3003) * t47 * w0 + t35 * t28 * w1 + (T(6) * ab_ap * t40 * seg0 + T(13) * t33 * t28 - T(3) * ap_ap * t35 * t28) * seg0 * w3 - T(3003) * seg7 * t53);
+    const T t53 = t52 * t19;
+    G_E = -(T(1) / T(45045)) * seg0 * (w3 * seg0 * (T(3) * ap_ap * t35 * t28 - T(13) * t33 * t28 - T(6) * ab_ap * t41 * seg0) + T(3003) * t47 * seg7 - T(3003) * t53 * w0 - t35 * t28 * w1 - T(2) * t41 * w2 * seg0);
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
   grad[1] = -(G_E * ab1 - G_ap * foot1) * g_factor;
@@ -28817,7 +28819,7 @@ T segment_inverse_i15_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = (ab2 * exact_cross[1] - ab1 * exact_cross[2]) * seg0;
     foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
-    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
+    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = ab2 * bp2 + ab0 * bp0 + ab1 * bp1;
@@ -28827,7 +28829,7 @@ T segment_inverse_i15_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(ab_ap + seg4), T(seg5 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg3), T(max(T(seg4 + ab_ap), T(seg5 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -28858,48 +28860,48 @@ T segment_inverse_i15_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t16 = t15 * t12;
     const T t17 = t16 * t16;
     const T t18 = t17 * t12;
-    G_E = (T(1) / T(15)) * (T(2) * w2 * M_beyond[1] + T(3) * w3 * M_beyond[2] + t11 * w0 + w1 * M_beyond[0] - t18 * seg7) * seg0;
+    G_E = (T(1) / T(15)) * (T(2) * w2 * M_beyond[1] + T(3) * w3 * M_beyond[2] + t11 * w0 + w1 * M_beyond[0] - seg7 * t18) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
-    const T t19 = T(1) / r0;
-    const T t20 = t19 * t19;
+    const T t19 = T(1) / cross_cross;
+    const T t20 = T(1) / r1;
     const T t21 = t20 * t20;
-    const T t22 = t21 * t20;
-    const T t23 = t22 * t22;
-    const T t24 = T(1) / cross_cross;
-    const T t25 = T(1) / r1;
+    const T t22 = t21 * t21;
+    const T t23 = t22 * t21;
+    const T t24 = T(1) / r0;
+    const T t25 = t24 * t24;
     const T t26 = t25 * t25;
-    const T t27 = t26 * t26;
-    const T t28 = t27 * t26;
-    const T t29 = t21 * t21;
-    const T t30 = t27 * t27;
-    const T t31 = t29 * t20;
-    const T t32 = t30 * t26;
-    const T t33 = T(2) * ab_ab * t24 * (T(8) * ab_ab * t24 * (T(5) * t25 * t28 * a_minus_b + T(2) * (T(3) * t25 * t27 * a_minus_b + T(4) * ab_ab * (ab_ap * t20 * t19 + t25 * t26 * a_minus_b + T(2) * ab_ab * t24 * (t25 * a_minus_b + ab_ap * t19)) * t24 + T(3) * ab_ap * t21 * t19) * ab_ab * t24 + T(5) * ab_ap * t22 * t19) + T(35) * ab_ap * t29 * t19 + T(35) * t25 * t30 * a_minus_b) + T(63) * ab_ap * t31 * t19 + T(63) * t25 * t32 * a_minus_b;
-    const T t34 = t28 * t28;
-    const T t35 = T(231) * ab_ap * t23 * t19 + T(4) * ab_ab * t33 * t24 + T(231) * t25 * t34 * a_minus_b;
-    const T t36 = T(231) * t23 * t19 + t24 * t35 * ab_ap - T(231) * t25 * t34;
-    const T t37 = T(13) * t33 * t24 + T(6) * ab_ap * seg0 * t36 - T(3) * t24 * t35 * ap_ap;
-    F = (T(1) / T(3003)) * w1 * seg0 * t36 + (T(1) / T(9009)) * t37 * w2 * seg0 + (T(1) / T(3003)) * t24 * t35 * w0 + (T(1) / T(9009)) * (T(13) * (T(63) * t31 * t19 + t33 * t24 * ab_ap - T(63) * t25 * t32) * seg0 + T(2) * ab_ap * t37 * seg0 - T(3) * seg0 * ap_ap * t36) * seg0 * w3;
-    const T t38 = t23 * t20;
-    const T t39 = t34 * t26;
-    const T t40 = T(429) * ab_ap * t38 * t19 + T(2) * ab_ab * t24 * t35 + T(429) * t25 * t39 * a_minus_b;
-    const T t41 = T(429) * t38 * t19 + t24 * ab_ap * t40 - T(429) * t25 * t39;
-    const T t42 = T(7) * t24 * t40 * ap_ap - T(14) * t41 * ab_ap * seg0 - T(15) * t24 * t35;
-    G_ap = (T(1) / T(45045)) * (T(15) * seg0 * t36 - T(7) * t41 * seg0 * ap_ap - T(2) * ab_ap * t42 * seg0) * seg0 * w3 + (T(1) / T(6435)) * t24 * t40 * w0 + (T(1) / T(6435)) * t41 * w1 * seg0 - (T(1) / T(45045)) * w2 * t42 * seg0;
-    const T t43 = t19 * t19;
-    const T t44 = t43 * t19;
+    const T t27 = t26 * t25;
+    const T t28 = t26 * t26;
+    const T t29 = t22 * t22;
+    const T t30 = t28 * t25;
+    const T t31 = t29 * t21;
+    const T t32 = T(2) * ab_ab * t19 * (T(8) * ab_ab * t19 * (T(5) * t20 * t23 * a_minus_b + T(2) * (T(3) * t20 * t22 * a_minus_b + T(4) * ab_ab * (ab_ap * t25 * t24 + t20 * t21 * a_minus_b + T(2) * ab_ab * t19 * (t20 * a_minus_b + ab_ap * t24)) * t19 + T(3) * ab_ap * t26 * t24) * ab_ab * t19 + T(5) * ab_ap * t27 * t24) + T(35) * ab_ap * t28 * t24 + T(35) * t20 * t29 * a_minus_b) + T(63) * ab_ap * t30 * t24 + T(63) * t20 * t31 * a_minus_b;
+    const T t33 = t27 * t27;
+    const T t34 = t23 * t23;
+    const T t35 = T(231) * ab_ap * t33 * t24 + T(4) * ab_ab * t32 * t19 + T(231) * t20 * t34 * a_minus_b;
+    const T t36 = T(231) * t33 * t24 + t19 * t35 * ab_ap - T(231) * t20 * t34;
+    const T t37 = T(13) * t32 * t19 + T(6) * ab_ap * seg0 * t36 - T(3) * t19 * t35 * ap_ap;
+    F = (T(1) / T(9009)) * w2 * t37 * seg0 + (T(1) / T(9009)) * (T(2) * ab_ap * t37 * seg0 + T(13) * (T(63) * t30 * t24 + t32 * t19 * ab_ap - T(63) * t20 * t31) * seg0 - T(3) * ap_ap * seg0 * t36) * seg0 * w3 + (T(1) / T(3003)) * w1 * seg0 * t36 + (T(1) / T(3003)) * t19 * t35 * w0;
+    const T t38 = t33 * t25;
+    const T t39 = t34 * t21;
+    const T t40 = T(429) * ab_ap * t38 * t24 + T(2) * ab_ab * t19 * t35 + T(429) * t20 * t39 * a_minus_b;
+    const T t41 = T(429) * t38 * t24 + t19 * ab_ap * t40 - T(429) * t20 * t39;
+    const T t42 = T(7) * t19 * t40 * ap_ap - T(15) * t19 * t35 - T(14) * t41 * ab_ap * seg0;
+    G_ap = (T(1) / T(6435)) * t41 * w1 * seg0 + (T(1) / T(45045)) * (T(15) * seg0 * t36 - T(7) * t41 * ap_ap * seg0 - T(2) * ab_ap * seg0 * t42) * seg0 * w3 + (T(1) / T(6435)) * t19 * t40 * w0 - (T(1) / T(45045)) * w2 * seg0 * t42;
+    const T t43 = t20 * t20;
+    const T t44 = t43 * t20;
     const T t45 = t44 * t44;
-    const T t46 = t45 * t19;
+    const T t46 = t45 * t20;
     const T t47 = t46 * t46;
-    const T t48 = t47 * t19;
-    const T t49 = t25 * t25;
-    const T t50 = t49 * t25;
+    const T t48 = t47 * t20;
+    const T t49 = t24 * t24;
+    const T t50 = t49 * t24;
     const T t51 = t50 * t50;
-    const T t52 = t51 * t25;
+    const T t52 = t51 * t24;
     const T t53 = t52 * t52;
-    const T t54 = t53 * t25;
-    G_E = (T(1) / T(45045)) * seg0 * (t37 * seg0 * w3 + t24 * w1 * t35 + T(3003) * t48 * w0 + T(2) * w2 * seg0 * t36 - T(3003) * t54 * seg7);
+    const T t54 = t53 * t24;
+    G_E = -(T(1) / T(45045)) * (T(3003) * seg7 * t48 - T(2) * w2 * seg0 * t36 - t19 * w1 * t35 - t37 * seg0 * w3 - T(3003) * t54 * w0) * seg0;
   }
   f = length * F;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
@@ -29118,7 +29120,7 @@ T segment_inverse_i16_w0_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp2 * ap2 + bp0 * ap0 + bp1 * ap1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg5 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg5 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -29203,9 +29205,9 @@ std::array<T, 3> segment_inverse_i16_w0_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * seg0 * ab_ap;
-    foot1 = ap1 - ab1 * seg0 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -29229,7 +29231,7 @@ std::array<T, 3> segment_inverse_i16_w0_grad(const T* pre, const SegmentPoint<T>
     std::array<T, 4> M_flat;
     segment_moments_far_field<T>(16, 18, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     G_ap = w0 * M_flat[2];
-    G_E = M_flat[3] * w0 - w0 * seg0 * ab_ap * M_flat[2];
+    G_E = M_flat[3] * w0 - w0 * ab_ap * seg0 * M_flat[2];
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -29324,15 +29326,15 @@ T segment_inverse_i16_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
-    foot0 = (ab2 * exact_cross[1] - exact_cross[2] * ab1) * seg0;
+    foot0 = seg0 * (ab2 * exact_cross[1] - exact_cross[2] * ab1);
     foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
   }
@@ -29343,7 +29345,7 @@ T segment_inverse_i16_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -29352,7 +29354,7 @@ T segment_inverse_i16_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     segment_moments_far_field<T>(16, 18, 1, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     F = M_flat[0] * w0;
     G_ap = M_flat[2] * w0;
-    G_E = M_flat[3] * w0 - ab_ap * M_flat[2] * seg0 * w0;
+    G_E = M_flat[3] * w0 - seg0 * ab_ap * M_flat[2] * w0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 4> M_beyond;
@@ -29367,7 +29369,7 @@ T segment_inverse_i16_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t9 = t8 * t8;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
-    const T t12 = -(T(1) / T(16)) * (t7 * w0 - t11 * w0) * seg0;
+    const T t12 = -(T(1) / T(16)) * seg0 * (t7 * w0 - t11 * w0);
     G_E = t12;
   } else {
     // recurrence (1) upwards from J_1, J_2
@@ -29394,7 +29396,7 @@ T segment_inverse_i16_w0_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t31 = t26 * t26;
     const T t32 = t25 * t25;
     G_ap = (T(1) / T(229376)) * (t30 * t20 * ab_ab + T(14336) * t31 * a_minus_b + T(14336) * ab_ap * t32) * t20 * w0;
-    const T t33 = -(T(1) / T(16)) * (t31 * w0 - t32 * w0) * seg0;
+    const T t33 = -(T(1) / T(16)) * seg0 * (t31 * w0 - t32 * w0);
     G_E = t33;
   }
   f = length * F;
@@ -29601,7 +29603,7 @@ T segment_inverse_i16_w1_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap2 * bp2 + ap0 * bp0 + ap1 * bp1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -29689,17 +29691,17 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - ab0 * ab_ap * seg0;
-    foot1 = ap1 - ab1 * ab_ap * seg0;
-    foot2 = ap2 - ab2 * ab_ap * seg0;
+    foot0 = ap0 - seg0 * ab0 * ab_ap;
+    foot1 = ap1 - seg0 * ab1 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = (exact_cross[1] * ab2 - exact_cross[2] * ab1) * seg0;
-    foot1 = -(ab2 * exact_cross[0] - exact_cross[2] * ab0) * seg0;
-    foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
+    foot0 = seg0 * (exact_cross[1] * ab2 - exact_cross[2] * ab1);
+    foot1 = -seg0 * (ab2 * exact_cross[0] - exact_cross[2] * ab0);
+    foot2 = -seg0 * (exact_cross[1] * ab0 - ab1 * exact_cross[0]);
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
   const T ab_bp = ab2 * bp2 + bp0 * ab0 + bp1 * ab1;
@@ -29707,7 +29709,7 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -29716,7 +29718,7 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(16, 18, 2, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = w1 * M_flat[4] + M_flat[3] * w0;
     G_ap = t4;
-    G_E = w1 * M_flat[5] + M_flat[4] * w0 - ab_ap * t4 * seg0;
+    G_E = w1 * M_flat[5] + M_flat[4] * w0 - seg0 * ab_ap * t4;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -29730,7 +29732,7 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const T* pre, const SegmentPoint<T>
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(16)) * (w0 * t8 + w1 * M_beyond[0] - seg5 * t12) * seg0;
+    G_E = (T(1) / T(16)) * seg0 * (w0 * t8 + w1 * M_beyond[0] - seg5 * t12);
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -29755,7 +29757,7 @@ std::array<T, 3> segment_inverse_i16_w1_grad(const T* pre, const SegmentPoint<T>
     const T t31 = t26 * t26;
     const T t32 = t21 * t21;
     const T t33 = ab_ab * t15 * t30 + T(14336) * ab_ap * t31 + T(14336) * a_minus_b * t32;
-    G_ap = (T(1) / T(229376)) * t33 * t15 * w0 + (T(1) / T(229376)) * w1 * (T(14336) * t31 + t33 * t15 * ab_ap - T(14336) * t32) * seg0;
+    G_ap = (T(1) / T(229376)) * t33 * t15 * w0 + (T(1) / T(229376)) * seg0 * w1 * (T(14336) * t31 + t33 * t15 * ab_ap - T(14336) * t32);
     G_E = (T(1) / T(3440640)) * seg0 * (T(215040) * w0 * t31 + w1 * t15 * t30 - T(215040) * seg5 * t32);
   }
   grad[0] = -(G_E * ab0 - foot0 * G_ap) * g_factor;
@@ -29814,8 +29816,8 @@ T segment_inverse_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot1 = ap1 - ab1 * seg0 * ab_ap;
+    foot2 = ap2 - ab2 * seg0 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
@@ -29832,7 +29834,7 @@ T segment_inverse_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -29842,7 +29844,7 @@ T segment_inverse_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = w1 * M_flat[1] + M_flat[0] * w0;
     const T t4 = M_flat[3] * w0 + w1 * M_flat[4];
     G_ap = t4;
-    G_E = w0 * M_flat[4] + w1 * M_flat[5] - seg0 * t4 * ab_ap;
+    G_E = w0 * M_flat[4] + w1 * M_flat[5] - t4 * seg0 * ab_ap;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 6> M_beyond;
@@ -29857,7 +29859,7 @@ T segment_inverse_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(16)) * (w1 * M_beyond[0] + t8 * w0 - t12 * seg5) * seg0;
+    G_E = (T(1) / T(16)) * (w1 * M_beyond[0] + t8 * w0 - seg5 * t12) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -29884,7 +29886,7 @@ T segment_inverse_i16_w1_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t32 = t26 * t26;
     const T t33 = T(14336) * t31 * a_minus_b + T(14336) * t32 * ab_ap + t30 * ab_ab * t25;
     G_ap = (T(1) / T(229376)) * t33 * t25 * w0 - (T(1) / T(229376)) * (T(14336) * t31 - T(14336) * t32 - t33 * t25 * ab_ap) * w1 * seg0;
-    G_E = (T(1) / T(3440640)) * (T(215040) * t32 * w0 + t30 * w1 * t25 - T(215040) * t31 * seg5) * seg0;
+    G_E = (T(1) / T(3440640)) * (T(215040) * t32 * w0 + t30 * w1 * t25 - T(215040) * seg5 * t31) * seg0;
   }
   f = F * length;
   grad[0] = -(ab0 * G_E - G_ap * foot0) * g_factor;
@@ -30094,7 +30096,7 @@ T segment_inverse_i16_w2_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = ap0 * bp0 + ap1 * bp1 + ap2 * bp2;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg6 + ap_ap - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -30112,25 +30114,25 @@ T segment_inverse_i16_w2_f(const T* pre, const SegmentPoint<T>& point) {
     const T t4 = sqrt(cross_cross);
     const T t5 = T(1) / t4;
     const T J2 = atan2(t4, ap_bp) * t5;
-    const T t6 = T(1) / ap_ap;
+    const T t6 = T(1) / bp_bp;
     const T t7 = t6 * t6;
     const T t8 = t7 * t6;
     const T t9 = t8 * t8;
-    const T t10 = T(1) / bp_bp;
-    const T t11 = t10 * t10;
-    const T t12 = t11 * t10;
-    const T t13 = t12 * t12;
-    const T t14 = t7 * t7;
-    const T t15 = t14 * t6;
-    const T t16 = t11 * t11;
-    const T t17 = t16 * t10;
-    const T t18 = T(1) / cross_cross;
-    const T t19 = T(1280) * t9 * ab_ap + T(1280) * t13 * a_minus_b + T(11) * (T(128) * t15 * ab_ap + T(128) * t17 * a_minus_b + T(3) * ab_ab * t18 * (T(7) * ab_ab * (T(8) * t12 * a_minus_b + T(8) * t8 * ab_ap + T(5) * (T(3) * (J2 * ab_ab + t6 * ab_ap + t10 * a_minus_b) * ab_ab * t18 + T(2) * t7 * ab_ap + T(2) * t11 * a_minus_b) * ab_ab * t18) * t18 + T(48) * t14 * ab_ap + T(48) * t16 * a_minus_b)) * ab_ab * t18;
-    const T t20 = t13 * t10;
-    const T t21 = t9 * t6;
-    const T t22 = T(15360) * t20 * a_minus_b + T(15360) * t21 * ab_ap + T(13) * t19 * ab_ab * t18;
-    const T t23 = T(15360) * t20 - t22 * t18 * ab_ap - T(15360) * t21;
-    F = (T(1) / T(215040)) * (T(14) * t19 * t18 - T(2) * seg0 * t23 * ab_ap - ap_ap * t22 * t18) * w2 * seg0 + (T(1) / T(215040)) * t22 * t18 * w0 - (T(1) / T(215040)) * w1 * seg0 * t23;
+    const T t10 = t9 * t6;
+    const T t11 = T(1) / ap_ap;
+    const T t12 = t11 * t11;
+    const T t13 = t12 * t11;
+    const T t14 = t13 * t13;
+    const T t15 = t14 * t11;
+    const T t16 = t12 * t12;
+    const T t17 = t16 * t11;
+    const T t18 = t7 * t7;
+    const T t19 = t18 * t6;
+    const T t20 = T(1) / cross_cross;
+    const T t21 = T(1280) * t14 * ab_ap + T(1280) * t9 * a_minus_b + T(11) * (T(128) * t17 * ab_ap + T(128) * t19 * a_minus_b + T(3) * ab_ab * t20 * (T(7) * ab_ab * (T(8) * t8 * a_minus_b + T(8) * t13 * ab_ap + T(5) * (T(3) * (J2 * ab_ab + t11 * ab_ap + t6 * a_minus_b) * ab_ab * t20 + T(2) * t12 * ab_ap + T(2) * t7 * a_minus_b) * ab_ab * t20) * t20 + T(48) * t16 * ab_ap + T(48) * t18 * a_minus_b)) * ab_ab * t20;
+    const T t22 = T(15360) * t10 * a_minus_b + T(15360) * t15 * ab_ap + T(13) * t21 * ab_ab * t20;
+    const T t23 = T(15360) * t10 - t22 * t20 * ab_ap - T(15360) * t15;
+    F = (T(1) / T(215040)) * t22 * t20 * w0 + (T(1) / T(215040)) * (T(14) * t21 * t20 - T(2) * seg0 * t23 * ab_ap - ap_ap * t22 * t20) * w2 * seg0 - (T(1) / T(215040)) * w1 * seg0 * t23;
   }
   f = length * F;
   return f;
@@ -30185,16 +30187,16 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const T* pre, const SegmentPoint<T>
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - seg0 * ab2 * ab_ap;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab1 * ab_ap * seg0;
+    foot2 = ap2 - ab2 * ab_ap * seg0;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
+    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
+    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
     foot2 = -(exact_cross[1] * ab0 - ab1 * exact_cross[0]) * seg0;
   }
   const T bp_bp = bp1 * bp1 + bp0 * bp0 + bp2 * bp2;
@@ -30203,7 +30205,7 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -30212,7 +30214,7 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const T* pre, const SegmentPoint<T>
     segment_moments_far_field<T>(16, 18, 3, ab_ab, ab_ap, ap_ap, ap_ap, M_flat.data());
     const T t4 = M_flat[5] * w1 + M_flat[4] * w0 + M_flat[6] * w2;
     G_ap = t4;
-    G_E = w2 * M_flat[7] + M_flat[6] * w1 + w0 * M_flat[5] - seg0 * ab_ap * t4;
+    G_E = w2 * M_flat[7] + M_flat[6] * w1 + w0 * M_flat[5] - ab_ap * t4 * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 8> M_beyond;
@@ -30226,34 +30228,34 @@ std::array<T, 3> segment_inverse_i16_w2_grad(const T* pre, const SegmentPoint<T>
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(16)) * seg0 * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + w0 * t8 - t12 * seg5);
+    G_E = (T(1) / T(16)) * (T(2) * w2 * M_beyond[1] + M_beyond[0] * w1 + w0 * t8 - seg5 * t12) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
     const T t14 = T(1) / t13;
     const T J2 = atan2(t13, ap_bp) * t14;
-    const T t15 = T(1) / bp_bp;
-    const T t16 = t15 * t15;
+    const T t15 = T(1) / cross_cross;
+    const T t16 = T(1) / bp_bp;
     const T t17 = t16 * t16;
     const T t18 = t17 * t17;
-    const T t19 = T(1) / ap_ap;
-    const T t20 = t19 * t19;
+    const T t19 = t18 * t16;
+    const T t20 = T(1) / ap_ap;
     const T t21 = t20 * t20;
-    const T t22 = t21 * t21;
-    const T t23 = T(1) / cross_cross;
-    const T t24 = t17 * t15;
-    const T t25 = t20 * t19;
-    const T t26 = t16 * t15;
-    const T t27 = t21 * t19;
-    const T t28 = t26 * t26;
-    const T t29 = t25 * t25;
-    const T t30 = t28 * t15;
-    const T t31 = t29 * t19;
-    const T t32 = T(13) * (T(11) * ab_ab * t23 * (T(128) * a_minus_b * t24 + T(3) * (T(7) * ab_ab * t23 * (T(5) * ab_ab * t23 * (T(2) * ab_ap * t20 + T(3) * ab_ab * t23 * (a_minus_b * t15 + ab_ab * J2 + ab_ap * t19) + T(2) * a_minus_b * t16) + T(8) * ab_ap * t25 + T(8) * a_minus_b * t26) + T(48) * a_minus_b * t17 + T(48) * ab_ap * t21) * ab_ab * t23 + T(128) * ab_ap * t27) + T(1280) * a_minus_b * t28 + T(1280) * ab_ap * t29) * ab_ab * t23 + T(15360) * a_minus_b * t30 + T(15360) * ab_ap * t31;
-    const T t33 = T(14336) * a_minus_b * t18 + T(14336) * ab_ap * t22 + ab_ab * t32 * t23;
-    const T t34 = t33 * t23 * ab_ap + T(14336) * t22 - T(14336) * t18;
-    G_ap = (T(1) / T(3440640)) * seg0 * w2 * (T(30) * seg0 * t34 * ab_ap + T(16) * t32 * t23 - T(15) * t33 * t23 * ap_ap) + (T(1) / T(229376)) * seg0 * t34 * w1 + (T(1) / T(229376)) * t33 * w0 * t23;
-    G_E = -(T(1) / T(3440640)) * (T(215040) * t18 * seg5 - T(2) * seg0 * w2 * (t32 * t23 * ab_ap + T(15360) * t31 - T(15360) * t30) - t32 * t23 * w1 - T(215040) * w0 * t22) * seg0;
+    const T t22 = t21 * t20;
+    const T t23 = t17 * t16;
+    const T t24 = t21 * t21;
+    const T t25 = t24 * t20;
+    const T t26 = t23 * t23;
+    const T t27 = t22 * t22;
+    const T t28 = t26 * t16;
+    const T t29 = t27 * t20;
+    const T t30 = T(13) * (T(11) * ab_ab * t15 * (T(128) * a_minus_b * t19 + T(3) * (T(7) * ab_ab * t15 * (T(5) * ab_ab * t15 * (T(2) * ab_ap * t21 + T(3) * ab_ab * t15 * (a_minus_b * t16 + ab_ab * J2 + ab_ap * t20) + T(2) * a_minus_b * t17) + T(8) * ab_ap * t22 + T(8) * a_minus_b * t23) + T(48) * a_minus_b * t18 + T(48) * ab_ap * t24) * ab_ab * t15 + T(128) * ab_ap * t25) + T(1280) * a_minus_b * t26 + T(1280) * ab_ap * t27) * ab_ab * t15 + T(15360) * a_minus_b * t28 + T(15360) * ab_ap * t29;
+    const T t31 = t18 * t18;
+    const T t32 = t24 * t24;
+    const T t33 = T(14336) * a_minus_b * t31 + T(14336) * ab_ap * t32 + ab_ab * t30 * t15;
+    const T t34 = t33 * t15 * ab_ap + T(14336) * t32 - T(14336) * t31;
+    G_ap = (T(1) / T(3440640)) * w2 * (T(16) * t30 * t15 + T(30) * t34 * ab_ap * seg0 - T(15) * t33 * t15 * ap_ap) * seg0 + (T(1) / T(229376)) * t34 * w1 * seg0 + (T(1) / T(229376)) * t33 * w0 * t15;
+    G_E = (T(1) / T(3440640)) * (T(2) * w2 * (t30 * t15 * ab_ap + T(15360) * t29 - T(15360) * t28) * seg0 + t30 * t15 * w1 + T(215040) * w0 * t32 - T(215040) * seg5 * t31) * seg0;
   }
   grad[0] = -g_factor * (G_E * ab0 - foot0 * G_ap);
   grad[1] = g_factor * (foot1 * G_ap - G_E * ab1);
@@ -30321,7 +30323,7 @@ T segment_inverse_i16_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     cross_cross = exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1];
     foot0 = -(ab1 * exact_cross[2] - ab2 * exact_cross[1]) * seg0;
     foot1 = -(ab2 * exact_cross[0] - ab0 * exact_cross[2]) * seg0;
-    foot2 = seg0 * (ab1 * exact_cross[0] - ab0 * exact_cross[1]);
+    foot2 = (ab1 * exact_cross[0] - ab0 * exact_cross[1]) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp0 * bp0 + bp1 * bp1;
   const T ab_bp = ab0 * bp0 + ab2 * bp2 + ab1 * bp1;
@@ -30330,7 +30332,7 @@ T segment_inverse_i16_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -30379,13 +30381,13 @@ T segment_inverse_i16_w2_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     const T t30 = t28 * t23;
     const T t31 = T(15360) * ab_ap * t19 + T(13) * ab_ab * t20 * t29 + T(15360) * t30 * a_minus_b;
     const T t32 = T(15360) * t30 - T(15360) * t19 - t31 * t20 * ab_ap;
-    F = (T(1) / T(215040)) * t31 * t20 * w0 - (T(1) / T(215040)) * w1 * seg0 * t32 - (T(1) / T(215040)) * (t31 * t20 * ap_ap + T(2) * ab_ap * seg0 * t32 - T(14) * t20 * t29) * seg0 * w2;
+    F = (T(1) / T(215040)) * t31 * t20 * w0 - (T(1) / T(215040)) * (T(2) * ab_ap * seg0 * t32 + t31 * t20 * ap_ap - T(14) * t20 * t29) * w2 * seg0 - (T(1) / T(215040)) * w1 * seg0 * t32;
     const T t33 = t25 * t25;
     const T t34 = t21 * t21;
     const T t35 = ab_ab * t31 * t20 + T(14336) * t33 * a_minus_b + T(14336) * ab_ap * t34;
     const T t36 = T(14336) * t33 - t20 * ab_ap * t35 - T(14336) * t34;
-    G_ap = (T(1) / T(229376)) * t20 * w0 * t35 - (T(1) / T(3440640)) * seg0 * w2 * (T(30) * ab_ap * t36 * seg0 + T(15) * t20 * t35 * ap_ap - T(16) * t31 * t20) - (T(1) / T(229376)) * t36 * w1 * seg0;
-    G_E = -(T(1) / T(3440640)) * seg0 * (T(215040) * seg5 * t33 + T(2) * seg0 * w2 * t32 - T(215040) * w0 * t34 - t31 * t20 * w1);
+    G_ap = (T(1) / T(229376)) * t20 * w0 * t35 + (T(1) / T(3440640)) * (T(16) * t31 * t20 - T(15) * t20 * t35 * ap_ap - T(30) * ab_ap * t36 * seg0) * w2 * seg0 - (T(1) / T(229376)) * t36 * w1 * seg0;
+    G_E = -(T(1) / T(3440640)) * (T(215040) * seg5 * t33 + T(2) * w2 * seg0 * t32 - T(215040) * w0 * t34 - t31 * t20 * w1) * seg0;
   }
   f = length * F;
   grad[0] = -g_factor * (ab0 * G_E - G_ap * foot0);
@@ -30600,7 +30602,7 @@ T segment_inverse_i16_w3_f(const T* pre, const SegmentPoint<T>& point) {
   const T ap_bp = bp2 * ap2 + ap0 * bp0 + bp1 * ap1;
   const T a_minus_b = -ab_bp;
   T F;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg6 - ab_ap));
   const T t2 = -a_minus_b * ab_ap;
   const T t3 = (T(7) / T(10)) * min(T(ap_ap), T(bp_bp)) * ab_ab - cross_cross;
   if (t1 >= T(0)) {
@@ -30636,8 +30638,8 @@ T segment_inverse_i16_w3_f(const T* pre, const SegmentPoint<T>& point) {
     const T t21 = T(1280) * a_minus_b * t9 + T(1280) * t14 * ab_ap + T(11) * ab_ab * (T(128) * a_minus_b * t17 + T(128) * t19 * ab_ap + T(3) * ab_ab * t20 * (T(48) * a_minus_b * t16 + T(48) * t18 * ab_ap + T(7) * ab_ab * (T(8) * a_minus_b * t8 + T(5) * ab_ab * t20 * (T(2) * a_minus_b * t7 + T(3) * ab_ab * (ab_ab * J2 + t11 * ab_ap + a_minus_b * t6) * t20 + T(2) * t12 * ab_ap) + T(8) * t13 * ab_ap) * t20)) * t20;
     const T t22 = T(15360) * a_minus_b * t10 + T(15360) * t15 * ab_ap + T(13) * t21 * ab_ab * t20;
     const T t23 = t22 * t20 * ab_ap + T(15360) * t15 - T(15360) * t10;
-    const T t24 = ap_ap * t22 * t20 - T(2) * seg0 * t23 * ab_ap - T(14) * t21 * t20;
-    F = (T(1) / T(215040)) * w0 * t22 * t20 + (T(1) / T(215040)) * seg0 * t23 * w1 - (T(1) / T(215040)) * w2 * seg0 * t24 - (T(1) / T(215040)) * (T(2) * seg0 * ab_ap * t24 + seg0 * ap_ap * t23 - T(14) * seg0 * (t21 * t20 * ab_ap + T(1280) * t14 - T(1280) * t9)) * seg0 * w3;
+    const T t24 = ap_ap * t22 * t20 - T(14) * t21 * t20 - T(2) * t23 * ab_ap * seg0;
+    F = (T(1) / T(215040)) * w0 * t22 * t20 + (T(1) / T(215040)) * t23 * w1 * seg0 - (T(1) / T(215040)) * w2 * t24 * seg0 - (T(1) / T(215040)) * w3 * (T(2) * t24 * ab_ap * seg0 + ap_ap * t23 * seg0 - T(14) * (t21 * t20 * ab_ap + T(1280) * t14 - T(1280) * t9) * seg0) * seg0;
   }
   f = F * length;
   return f;
@@ -30695,14 +30697,14 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const T* pre, const SegmentPoint<T>
     cross_cross = plain_cross_cross;
     foot0 = ap0 - seg0 * ab0 * ab_ap;
     foot1 = ap1 - seg0 * ab1 * ab_ap;
-    foot2 = ap2 - ab2 * seg0 * ab_ap;
+    foot2 = ap2 - seg0 * ab2 * ab_ap;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[2] * exact_cross[2] + exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0];
     foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
-    foot1 = (exact_cross[2] * ab0 - ab2 * exact_cross[0]) * seg0;
+    foot1 = seg0 * (exact_cross[2] * ab0 - ab2 * exact_cross[0]);
     foot2 = (ab1 * exact_cross[0] - exact_cross[1] * ab0) * seg0;
   }
   const T bp_bp = bp2 * bp2 + bp1 * bp1 + bp0 * bp0;
@@ -30711,7 +30713,7 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const T* pre, const SegmentPoint<T>
   const T a_minus_b = -ab_bp;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(seg2 + ab_ap), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(ap_ap + seg4 - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -30734,7 +30736,7 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const T* pre, const SegmentPoint<T>
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = (T(1) / T(16)) * (t8 * w0 + T(3) * M_beyond[2] * w3 + M_beyond[0] * w1 + T(2) * w2 * M_beyond[1] - seg5 * t12) * seg0;
+    G_E = (T(1) / T(16)) * (t8 * w0 + T(3) * M_beyond[2] * w3 + M_beyond[0] * w1 + T(2) * w2 * M_beyond[1] - t12 * seg5) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
@@ -30763,8 +30765,8 @@ std::array<T, 3> segment_inverse_i16_w3_grad(const T* pre, const SegmentPoint<T>
     const T t35 = T(14336) * t18 - T(14336) * t22 - t34 * t23 * ab_ap;
     const T t36 = T(15360) * t26 + t23 * ab_ap * t33 - T(15360) * t32;
     const T t37 = T(15) * ap_ap * t34 * t23 + T(30) * seg0 * ab_ap * t35 - T(16) * t23 * t33;
-    G_ap = (T(1) / T(3440640)) * w3 * (T(15) * ap_ap * seg0 * t35 + T(16) * seg0 * t36 - T(2) * seg0 * ab_ap * t37) * seg0 + (T(1) / T(229376)) * t34 * w0 * t23 - (T(1) / T(229376)) * seg0 * w1 * t35 - (T(1) / T(3440640)) * w2 * seg0 * t37;
-    G_E = -(T(1) / T(3440640)) * (T(3) * (ap_ap * t23 * t33 - T(14) * t23 * t31 - T(2) * seg0 * ab_ap * t36) * w3 * seg0 + T(215040) * seg5 * t18 - T(215040) * t22 * w0 - t23 * w1 * t33 - T(2) * w2 * seg0 * t36) * seg0;
+    G_ap = (T(1) / T(3440640)) * (T(15) * ap_ap * seg0 * t35 + T(16) * seg0 * t36 - T(2) * seg0 * ab_ap * t37) * seg0 * w3 + (T(1) / T(229376)) * t34 * w0 * t23 - (T(1) / T(229376)) * seg0 * w1 * t35 - (T(1) / T(3440640)) * w2 * seg0 * t37;
+    G_E = (T(1) / T(3440640)) * seg0 * (T(215040) * t22 * w0 + t23 * w1 * t33 + T(2) * w2 * seg0 * t36 - T(215040) * t18 * seg5 - T(3) * (ap_ap * t23 * t33 - T(14) * t23 * t31 - T(2) * seg0 * ab_ap * t36) * seg0 * w3);
   }
   grad[0] = g_factor * (G_ap * foot0 - G_E * ab0);
   grad[1] = g_factor * (G_ap * foot1 - G_E * ab1);
@@ -30823,15 +30825,15 @@ T segment_inverse_i16_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   if (t0 >= T(0)) {
     // P away from the line (sin∠(AB, AP) ≥ 1/16)
     cross_cross = plain_cross_cross;
-    foot0 = ap0 - seg0 * ab0 * ab_ap;
-    foot1 = ap1 - seg0 * ab_ap * ab1;
-    foot2 = ap2 - seg0 * ab_ap * ab2;
+    foot0 = ap0 - ab0 * ab_ap * seg0;
+    foot1 = ap1 - ab_ap * seg0 * ab1;
+    foot2 = ap2 - ab_ap * seg0 * ab2;
   } else {
     // P near the line: AB × AP rounded once from the exact inputs (segment_exact_cross)
     std::array<T, 3> exact_cross;
     segment_exact_cross<T>(A0, A1, A2, B0, B1, B2, point.p[0], point.p[1], point.p[2], exact_cross.data());
     cross_cross = exact_cross[1] * exact_cross[1] + exact_cross[0] * exact_cross[0] + exact_cross[2] * exact_cross[2];
-    foot0 = -seg0 * (exact_cross[2] * ab1 - exact_cross[1] * ab2);
+    foot0 = -(exact_cross[2] * ab1 - exact_cross[1] * ab2) * seg0;
     foot1 = seg0 * (ab0 * exact_cross[2] - exact_cross[0] * ab2);
     foot2 = -(ab0 * exact_cross[1] - exact_cross[0] * ab1) * seg0;
   }
@@ -30842,7 +30844,7 @@ T segment_inverse_i16_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
   T F;
   T G_ap;
   T G_E;
-  const T t1 = max(T(max(T(cross_cross + seg1), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
+  const T t1 = max(T(max(T(seg1 + cross_cross), T(max(T(ab_ap + seg2), T(seg3 - ab_ap))))), T(seg4 + ap_ap - ab_ap));
   const T t2 = -ab_ap * a_minus_b;
   const T t3 = (T(7) / T(10)) * ab_ab * min(T(ap_ap), T(bp_bp)) - cross_cross;
   if (t1 >= T(0)) {
@@ -30852,54 +30854,54 @@ T segment_inverse_i16_w3_f_and_grad(const T* pre, const SegmentPoint<T>& point, 
     F = w1 * M_flat[1] + M_flat[0] * w0 + w2 * M_flat[2] + w3 * M_flat[3];
     const T t4 = w1 * M_flat[6] + M_flat[8] * w3 + M_flat[5] * w0 + M_flat[7] * w2;
     G_ap = t4;
-    G_E = w1 * M_flat[7] + w0 * M_flat[6] + w2 * M_flat[8] + w3 * M_flat[9] - seg0 * t4 * ab_ap;
+    G_E = w1 * M_flat[7] + w0 * M_flat[6] + w2 * M_flat[8] + w3 * M_flat[9] - t4 * ab_ap * seg0;
   } else if (t2 >= T(0) && t3 >= T(0)) {
     // P beyond an end, D < 7/10 a min(q(0), q(1)): moments centred at the near end, recurrence (1) downwards (segment_moments_beyond_end)
     std::array<T, 10> M_beyond;
     segment_moments_beyond_end<T>(16, 18, 4, ab_ab, ab_ap, a_minus_b, cross_cross, ap_ap, bp_bp, M_beyond.data());
     F = M_beyond[3] * w3 + w2 * M_beyond[2] + M_beyond[0] * w0 + w1 * M_beyond[1];
     G_ap = M_beyond[6] * w1 + M_beyond[7] * w2 + M_beyond[8] * w3 + M_beyond[5] * w0;
-    const T t5 = T(1) / bp_bp;
+    const T t5 = T(1) / ap_ap;
     const T t6 = t5 * t5;
     const T t7 = t6 * t6;
     const T t8 = t7 * t7;
-    const T t9 = T(1) / ap_ap;
+    const T t9 = T(1) / bp_bp;
     const T t10 = t9 * t9;
     const T t11 = t10 * t10;
     const T t12 = t11 * t11;
-    G_E = -(T(1) / T(16)) * seg0 * (t8 * seg5 - T(3) * w3 * M_beyond[2] - w1 * M_beyond[0] - t12 * w0 - T(2) * w2 * M_beyond[1]);
+    G_E = (T(1) / T(16)) * (T(3) * w3 * M_beyond[2] + w1 * M_beyond[0] + t8 * w0 + T(2) * w2 * M_beyond[1] - t12 * seg5) * seg0;
   } else {
     // recurrence (1) upwards from J_1, J_2
     const T t13 = sqrt(cross_cross);
     const T t14 = T(1) / t13;
     const T J2 = t14 * atan2(t13, ap_bp);
-    const T t15 = T(1) / ap_ap;
+    const T t15 = T(1) / bp_bp;
     const T t16 = t15 * t15;
     const T t17 = t16 * t15;
     const T t18 = t17 * t17;
     const T t19 = t18 * t15;
-    const T t20 = T(1) / cross_cross;
-    const T t21 = T(1) / bp_bp;
-    const T t22 = t21 * t21;
-    const T t23 = t22 * t21;
-    const T t24 = t16 * t16;
-    const T t25 = t22 * t22;
-    const T t26 = t24 * t15;
-    const T t27 = t25 * t21;
-    const T t28 = t23 * t23;
-    const T t29 = T(1280) * ab_ap * t18 + T(11) * t20 * ab_ab * (T(3) * t20 * (T(7) * t20 * ab_ab * (T(5) * t20 * ab_ab * (T(3) * (J2 * ab_ab + ab_ap * t15 + t21 * a_minus_b) * t20 * ab_ab + T(2) * t22 * a_minus_b + T(2) * ab_ap * t16) + T(8) * t23 * a_minus_b + T(8) * ab_ap * t17) + T(48) * ab_ap * t24 + T(48) * t25 * a_minus_b) * ab_ab + T(128) * ab_ap * t26 + T(128) * t27 * a_minus_b) + T(1280) * t28 * a_minus_b;
-    const T t30 = t28 * t21;
-    const T t31 = T(15360) * ab_ap * t19 + T(13) * t20 * t29 * ab_ab + T(15360) * t30 * a_minus_b;
-    const T t32 = T(15360) * t30 - t31 * t20 * ab_ap - T(15360) * t19;
-    const T t33 = T(2) * seg0 * ab_ap * t32 + t31 * t20 * ap_ap - T(14) * t20 * t29;
-    F = (T(1) / T(215040)) * t31 * t20 * w0 - (T(1) / T(215040)) * seg0 * t33 * w2 - (T(1) / T(215040)) * seg0 * (T(2) * seg0 * ab_ap * t33 - seg0 * ap_ap * t32 - T(14) * seg0 * (t20 * ab_ap * t29 + T(1280) * t18 - T(1280) * t28)) * w3 - (T(1) / T(215040)) * seg0 * w1 * t32;
-    const T t34 = t24 * t24;
-    const T t35 = t25 * t25;
-    const T t36 = T(14336) * ab_ap * t34 + t31 * t20 * ab_ab + T(14336) * t35 * a_minus_b;
-    const T t37 = T(14336) * t34 + t20 * ab_ap * t36 - T(14336) * t35;
-    const T t38 = T(15) * t20 * t36 * ap_ap - T(16) * t31 * t20 - T(30) * seg0 * ab_ap * t37;
-    G_ap = (T(1) / T(229376)) * t20 * t36 * w0 + (T(1) / T(229376)) * seg0 * w1 * t37 - (T(1) / T(3440640)) * seg0 * (T(16) * seg0 * t32 + T(2) * seg0 * t38 * ab_ap + T(15) * seg0 * ap_ap * t37) * w3 - (T(1) / T(3440640)) * seg0 * t38 * w2;
-    G_E = -(T(1) / T(3440640)) * seg0 * (T(215040) * t35 * seg5 + T(2) * seg0 * w2 * t32 + T(3) * seg0 * t33 * w3 - t31 * t20 * w1 - T(215040) * t34 * w0);
+    const T t20 = T(1) / ap_ap;
+    const T t21 = t20 * t20;
+    const T t22 = t21 * t20;
+    const T t23 = t22 * t22;
+    const T t24 = t23 * t20;
+    const T t25 = T(1) / cross_cross;
+    const T t26 = t21 * t21;
+    const T t27 = t16 * t16;
+    const T t28 = t26 * t20;
+    const T t29 = t27 * t15;
+    const T t30 = T(1280) * ab_ap * t23 + T(11) * t25 * ab_ab * (T(3) * t25 * (T(7) * t25 * ab_ab * (T(5) * t25 * ab_ab * (T(3) * (J2 * ab_ab + ab_ap * t20 + t15 * a_minus_b) * t25 * ab_ab + T(2) * t16 * a_minus_b + T(2) * ab_ap * t21) + T(8) * t17 * a_minus_b + T(8) * ab_ap * t22) + T(48) * ab_ap * t26 + T(48) * t27 * a_minus_b) * ab_ab + T(128) * ab_ap * t28 + T(128) * t29 * a_minus_b) + T(1280) * t18 * a_minus_b;
+    const T t31 = T(15360) * ab_ap * t24 + T(13) * t25 * t30 * ab_ab + T(15360) * t19 * a_minus_b;
+    const T t32 = T(15360) * t19 - t31 * t25 * ab_ap - T(15360) * t24;
+    const T t33 = T(2) * ab_ap * t32 * seg0 + t31 * t25 * ap_ap - T(14) * t25 * t30;
+    F = (T(1) / T(215040)) * (ap_ap * t32 * seg0 + T(14) * seg0 * (t25 * ab_ap * t30 + T(1280) * t23 - T(1280) * t18) - T(2) * ab_ap * seg0 * t33) * w3 * seg0 + (T(1) / T(215040)) * t31 * t25 * w0 - (T(1) / T(215040)) * w2 * seg0 * t33 - (T(1) / T(215040)) * w1 * t32 * seg0;
+    const T t34 = t26 * t26;
+    const T t35 = t27 * t27;
+    const T t36 = T(14336) * ab_ap * t34 + t31 * t25 * ab_ab + T(14336) * t35 * a_minus_b;
+    const T t37 = T(14336) * t34 + t25 * ab_ap * t36 - T(14336) * t35;
+    const T t38 = T(15) * t25 * t36 * ap_ap - T(16) * t31 * t25 - T(30) * ab_ap * t37 * seg0;
+    G_ap = (T(1) / T(229376)) * t25 * t36 * w0 + (T(1) / T(229376)) * w1 * t37 * seg0 - (T(1) / T(3440640)) * (T(2) * ab_ap * t38 * seg0 + T(15) * ap_ap * t37 * seg0 + T(16) * t32 * seg0) * w3 * seg0 - (T(1) / T(3440640)) * w2 * t38 * seg0;
+    G_E = -(T(1) / T(3440640)) * (T(2) * w2 * t32 * seg0 + T(3) * w3 * seg0 * t33 + T(215040) * t35 * seg5 - t31 * t25 * w1 - T(215040) * t34 * w0) * seg0;
   }
   f = length * F;
   grad[0] = -g_factor * (ab0 * G_E - foot0 * G_ap);
