@@ -84,7 +84,7 @@ void scalis_segment_cauchy_i2_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i2_prepare); operations per point.
 /// Operations: 40 +, 49 ×, 2 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 54180 +, 68226 ×, 20003 /, 540 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 54178 +, 60109 ×, 20001 /, 539 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -178,7 +178,7 @@ T scalis_segment_cauchy_i2_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i2_prepare); operations per point.
 /// Operations: 55 +, 81 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 43612 +, 58841 ×, 10052 /, 271 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43610 +, 58839 ×, 10050 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i2_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -303,7 +303,7 @@ std::array<T, 3> scalis_segment_cauchy_i2_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i2_prepare); operations per point.
 /// Operations: 57 +, 90 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 43613 +, 58845 ×, 10052 /, 271 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43611 +, 58843 ×, 10050 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -501,7 +501,7 @@ void scalis_segment_cauchy_i3_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i3_prepare); operations per point.
 /// Operations: 43 +, 64 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 41674 +, 61914 ×, 13371 /, 5788 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41672 +, 56487 ×, 13369 /, 5787 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -614,7 +614,7 @@ T scalis_segment_cauchy_i3_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i3_prepare); operations per point.
 /// Operations: 59 +, 110 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 41511 +, 63535 ×, 8054 /, 3489 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 41509 +, 63533 ×, 8052 /, 3488 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i3_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -749,7 +749,7 @@ std::array<T, 3> scalis_segment_cauchy_i3_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i3_prepare); operations per point.
 /// Operations: 64 +, 132 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 41514 +, 63549 ×, 8055 /, 3489 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41512 +, 63547 ×, 8053 /, 3488 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -975,7 +975,7 @@ void scalis_segment_cauchy_i4_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i4_prepare); operations per point.
 /// Operations: 50 +, 78 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 35442 +, 46578 ×, 10050 /, 271 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 35440 +, 42496 ×, 10048 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1081,7 +1081,7 @@ T scalis_segment_cauchy_i4_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i4_prepare); operations per point.
 /// Operations: 69 +, 134 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 40136 +, 53066 ×, 6722 /, 181 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40134 +, 53064 ×, 6720 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i4_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1216,7 +1216,7 @@ std::array<T, 3> scalis_segment_cauchy_i4_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i4_prepare); operations per point.
 /// Operations: 75 +, 159 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 40139 +, 53076 ×, 6722 /, 181 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40137 +, 53074 ×, 6720 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1436,7 +1436,7 @@ void scalis_segment_cauchy_i5_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i5_prepare); operations per point.
 /// Operations: 55 +, 108 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 31691 +, 50431 ×, 8053 /, 3489 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31689 +, 47159 ×, 8051 /, 3488 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i5_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1560,7 +1560,7 @@ T scalis_segment_cauchy_i5_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i5_prepare); operations per point.
 /// Operations: 75 +, 175 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 50945 +, 78053 ×, 7247 /, 3238 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 50943 +, 78051 ×, 7245 /, 3237 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i5_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1708,7 +1708,7 @@ std::array<T, 3> scalis_segment_cauchy_i5_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i5_prepare); operations per point.
 /// Operations: 84 +, 214 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 50950 +, 78073 ×, 7248 /, 3238 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 50948 +, 78071 ×, 7246 /, 3237 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i5_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1958,7 +1958,7 @@ void scalis_segment_cauchy_i6_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i6_prepare); operations per point.
 /// Operations: 64 +, 127 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 37704 +, 51284 ×, 8420 /, 181 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 37702 +, 51282 ×, 8418 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i6_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2075,7 +2075,7 @@ T scalis_segment_cauchy_i6_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i6_prepare); operations per point.
 /// Operations: 87 +, 198 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 49710 +, 65260 ×, 6307 /, 136 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 49708 +, 65258 ×, 6305 /, 135 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i6_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2224,7 +2224,7 @@ std::array<T, 3> scalis_segment_cauchy_i6_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−6/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|² + σ²τ²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i6_prepare); operations per point.
 /// Operations: 97 +, 238 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 49715 +, 65276 ×, 6307 /, 136 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 49713 +, 65274 ×, 6305 /, 135 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i6_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2468,7 +2468,7 @@ void scalis_segment_cauchy_i7_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i7_prepare); operations per point.
 /// Operations: 71 +, 166 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 35533 +, 59541 ×, 7246 /, 3238 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 35531 +, 59539 ×, 7244 /, 3237 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i7_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2604,7 +2604,7 @@ T scalis_segment_cauchy_i7_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i7_prepare); operations per point.
 /// Operations: 95 +, 254 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 48919 +, 74637 ×, 5602 /, 2503 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48917 +, 74635 ×, 5600 /, 2502 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i7_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2769,7 +2769,7 @@ std::array<T, 3> scalis_segment_cauchy_i7_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−7/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|² + σ²τ²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i7_prepare); operations per point.
 /// Operations: 108 +, 306 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 48926 +, 74663 ×, 5603 /, 2503 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48924 +, 74661 ×, 5601 /, 2502 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i7_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3045,7 +3045,7 @@ void scalis_segment_cauchy_i8_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i8_prepare); operations per point.
 /// Operations: 82 +, 190 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 33616 +, 46460 ×, 6305 /, 136 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 33614 +, 46458 ×, 6303 /, 135 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i8_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3175,7 +3175,7 @@ T scalis_segment_cauchy_i8_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i8_prepare); operations per point.
 /// Operations: 109 +, 276 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 48734 +, 63436 ×, 5085 /, 110 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48732 +, 63434 ×, 5083 /, 109 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i8_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3338,7 +3338,7 @@ std::array<T, 3> scalis_segment_cauchy_i8_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−8/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|² + σ²τ²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i8_prepare); operations per point.
 /// Operations: 123 +, 331 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 48741 +, 63458 ×, 5085 /, 110 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48739 +, 63456 ×, 5083 /, 109 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i8_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3605,7 +3605,7 @@ void scalis_segment_cauchy_i9_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i9_prepare); operations per point.
 /// Operations: 91 +, 244 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 32245 +, 55557 ×, 5601 /, 2503 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 32243 +, 55555 ×, 5599 /, 2502 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i9_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3755,7 +3755,7 @@ T scalis_segment_cauchy_i9_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i9_prepare); operations per point.
 /// Operations: 119 +, 343 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 48153 +, 73263 ×, 4615 /, 2062 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48151 +, 73261 ×, 4613 /, 2061 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i9_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3935,7 +3935,7 @@ std::array<T, 3> scalis_segment_cauchy_i9_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−9/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|² + σ²τ²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i9_prepare); operations per point.
 /// Operations: 136 +, 412 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 48162 +, 73295 ×, 4616 /, 2062 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48160 +, 73293 ×, 4614 /, 2061 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i9_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4236,7 +4236,7 @@ void scalis_segment_cauchy_i10_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i10_prepare); operations per point.
 /// Operations: 104 +, 267 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 31438 +, 43950 ×, 5083 /, 110 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 31436 +, 43948 ×, 5081 /, 109 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i10_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4381,7 +4381,7 @@ T scalis_segment_cauchy_i10_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i10_prepare); operations per point.
 /// Operations: 135 +, 370 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 47838 +, 61902 ×, 4239 /, 92 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 47836 +, 61900 ×, 4237 /, 91 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i10_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -4562,7 +4562,7 @@ std::array<T, 3> scalis_segment_cauchy_i10_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−10/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|² + σ²τ²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i10_prepare); operations per point.
 /// Operations: 153 +, 440 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 47847 +, 61930 ×, 4239 /, 92 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 47845 +, 61928 ×, 4237 /, 91 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i10_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

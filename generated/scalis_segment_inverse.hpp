@@ -71,7 +71,7 @@ void scalis_segment_inverse_i2_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i2_prepare); operations per point.
 /// Operations: 29 +, 42 ×, 2 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 54169 +, 68219 ×, 20003 /, 540 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 54167 +, 60102 ×, 20001 /, 539 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -148,7 +148,7 @@ T scalis_segment_inverse_i2_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i2_prepare); operations per point.
 /// Operations: 40 +, 66 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 43597 +, 58826 ×, 10052 /, 271 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43595 +, 58824 ×, 10050 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i2_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -249,7 +249,7 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i2_prepare); operations per point.
 /// Operations: 42 +, 75 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 43598 +, 58830 ×, 10052 /, 271 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 43596 +, 58828 ×, 10050 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -411,7 +411,7 @@ void scalis_segment_inverse_i3_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i3_prepare); operations per point.
 /// Operations: 33 +, 56 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 41664 +, 61906 ×, 13371 /, 5788 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41662 +, 56479 ×, 13369 /, 5787 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -508,7 +508,7 @@ T scalis_segment_inverse_i3_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i3_prepare); operations per point.
 /// Operations: 45 +, 95 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 41497 +, 63520 ×, 8054 /, 3489 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 41495 +, 63518 ×, 8052 /, 3488 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i3_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -621,7 +621,7 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i3_prepare); operations per point.
 /// Operations: 50 +, 116 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 41500 +, 63533 ×, 8055 /, 3489 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 41498 +, 63531 ×, 8053 /, 3488 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -811,7 +811,7 @@ void scalis_segment_inverse_i4_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i4_prepare); operations per point.
 /// Operations: 39 +, 71 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 35431 +, 46571 ×, 10050 /, 271 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 35429 +, 42489 ×, 10048 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -899,7 +899,7 @@ T scalis_segment_inverse_i4_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i4_prepare); operations per point.
 /// Operations: 54 +, 119 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 40121 +, 53051 ×, 6722 /, 181 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40119 +, 53049 ×, 6720 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i4_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1010,7 +1010,7 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i4_prepare); operations per point.
 /// Operations: 60 +, 144 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 40124 +, 53061 ×, 6722 /, 181 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 40122 +, 53059 ×, 6720 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1192,7 +1192,7 @@ void scalis_segment_inverse_i5_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i5_prepare); operations per point.
 /// Operations: 45 +, 100 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 31681 +, 50423 ×, 8053 /, 3489 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 31679 +, 47151 ×, 8051 /, 3488 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1299,7 +1299,7 @@ T scalis_segment_inverse_i5_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i5_prepare); operations per point.
 /// Operations: 61 +, 160 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 50931 +, 78038 ×, 7247 /, 3238 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 50929 +, 78036 ×, 7245 /, 3237 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i5_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1425,7 +1425,7 @@ std::array<T, 3> scalis_segment_inverse_i5_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i5_prepare); operations per point.
 /// Operations: 70 +, 198 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 50936 +, 78057 ×, 7248 /, 3238 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 50934 +, 78055 ×, 7246 /, 3237 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1638,7 +1638,7 @@ void scalis_segment_inverse_i6_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i6_prepare); operations per point.
 /// Operations: 53 +, 120 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 37693 +, 51277 ×, 8420 /, 181 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 37691 +, 51275 ×, 8418 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i6_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1737,7 +1737,7 @@ T scalis_segment_inverse_i6_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i6_prepare); operations per point.
 /// Operations: 72 +, 183 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 49695 +, 65245 ×, 6307 /, 136 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 49693 +, 65243 ×, 6305 /, 135 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i6_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1862,7 +1862,7 @@ std::array<T, 3> scalis_segment_inverse_i6_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−6), τ(t) = τ0 + (τ1 − τ0) t  [= σ^6 |AB| ∫_0^1 τ^5 (|P − Γ|²)^(−6/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i6_prepare); operations per point.
 /// Operations: 82 +, 223 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 49700 +, 65261 ×, 6307 /, 136 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 49698 +, 65259 ×, 6305 /, 135 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i6_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2068,7 +2068,7 @@ void scalis_segment_inverse_i7_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i7_prepare); operations per point.
 /// Operations: 61 +, 158 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 35523 +, 59533 ×, 7246 /, 3238 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 35521 +, 59531 ×, 7244 /, 3237 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i7_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2187,7 +2187,7 @@ T scalis_segment_inverse_i7_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i7_prepare); operations per point.
 /// Operations: 81 +, 239 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 48905 +, 74622 ×, 5602 /, 2503 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48903 +, 74620 ×, 5600 /, 2502 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i7_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2330,7 +2330,7 @@ std::array<T, 3> scalis_segment_inverse_i7_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−7), τ(t) = τ0 + (τ1 − τ0) t  [= σ^7 |AB| ∫_0^1 τ^6 (|P − Γ|²)^(−7/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i7_prepare); operations per point.
 /// Operations: 94 +, 290 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 48912 +, 74647 ×, 5603 /, 2503 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48910 +, 74645 ×, 5601 /, 2502 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i7_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2569,7 +2569,7 @@ void scalis_segment_inverse_i8_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i8_prepare); operations per point.
 /// Operations: 71 +, 183 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 33605 +, 46453 ×, 6305 /, 136 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 33603 +, 46451 ×, 6303 /, 135 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i8_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2681,7 +2681,7 @@ T scalis_segment_inverse_i8_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i8_prepare); operations per point.
 /// Operations: 94 +, 261 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 48719 +, 63421 ×, 5085 /, 110 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48717 +, 63419 ×, 5083 /, 109 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i8_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2820,7 +2820,7 @@ std::array<T, 3> scalis_segment_inverse_i8_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−8), τ(t) = τ0 + (τ1 − τ0) t  [= σ^8 |AB| ∫_0^1 τ^7 (|P − Γ|²)^(−8/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i8_prepare); operations per point.
 /// Operations: 108 +, 316 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 48726 +, 63443 ×, 5085 /, 110 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48724 +, 63441 ×, 5083 /, 109 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i8_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3049,7 +3049,7 @@ void scalis_segment_inverse_i9_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i9_prepare); operations per point.
 /// Operations: 81 +, 236 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 32235 +, 55549 ×, 5601 /, 2503 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 32233 +, 55547 ×, 5599 /, 2502 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i9_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3182,7 +3182,7 @@ T scalis_segment_inverse_i9_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i9_prepare); operations per point.
 /// Operations: 105 +, 328 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 48139 +, 73248 ×, 4615 /, 2062 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 48137 +, 73246 ×, 4613 /, 2061 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i9_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3340,7 +3340,7 @@ std::array<T, 3> scalis_segment_inverse_i9_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−9), τ(t) = τ0 + (τ1 − τ0) t  [= σ^9 |AB| ∫_0^1 τ^8 (|P − Γ|²)^(−9/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i9_prepare); operations per point.
 /// Operations: 122 +, 396 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 48148 +, 73279 ×, 4616 /, 2062 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 48146 +, 73277 ×, 4614 /, 2061 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i9_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3604,7 +3604,7 @@ void scalis_segment_inverse_i10_prepare(const ScalisSegmentInput<T>& in, T* pre)
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i10_prepare); operations per point.
 /// Operations: 93 +, 260 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 31427 +, 43943 ×, 5083 /, 110 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 31425 +, 43941 ×, 5081 /, 109 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i10_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3731,7 +3731,7 @@ T scalis_segment_inverse_i10_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i10_prepare); operations per point.
 /// Operations: 120 +, 355 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 47823 +, 61887 ×, 4239 /, 92 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 47821 +, 61885 ×, 4237 /, 91 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i10_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -3888,7 +3888,7 @@ std::array<T, 3> scalis_segment_inverse_i10_grad(const T* pre, const std::array<
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−10), τ(t) = τ0 + (τ1 − τ0) t  [= σ^10 |AB| ∫_0^1 τ^9 (|P − Γ|²)^(−10/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i10_prepare); operations per point.
 /// Operations: 138 +, 425 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 47832 +, 61915 ×, 4239 /, 92 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 47830 +, 61913 ×, 4237 /, 91 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i10_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

@@ -72,7 +72,7 @@ void segment_cauchy_i1_w0_prepare(const SegmentInput<T>& in, T* pre) {
 ///     f(P) = |AB| ∫_0^1 w0 (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// At one point, from the segment's pre[] (segment_cauchy_i1_w0_prepare); operations per point.
 /// Operations: 48 +, 36 ×, 1 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 199 +, 228 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 199 +, 208 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -546,7 +546,7 @@ void segment_cauchy_i1_w1_prepare(const SegmentInput<T>& in, T* pre) {
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// At one point, from the segment's pre[] (segment_cauchy_i1_w1_prepare); operations per point.
 /// Operations: 51 +, 39 ×, 1 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 220 +, 249 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 220 +, 229 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1051,7 +1051,7 @@ void segment_cauchy_i1_w2_prepare(const SegmentInput<T>& in, T* pre) {
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// At one point, from the segment's pre[] (segment_cauchy_i1_w2_prepare); operations per point.
 /// Operations: 56 +, 51 ×, 1 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 241 +, 270 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 241 +, 250 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1569,7 +1569,7 @@ void segment_cauchy_i1_w3_prepare(const SegmentInput<T>& in, T* pre) {
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 + s |P − Γ(t)|²)^(−1/2) dt
 /// At one point, from the segment's pre[] (segment_cauchy_i1_w3_prepare); operations per point.
 /// Operations: 61 +, 68 ×, 1 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 262 +, 291 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 262 +, 271 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_cauchy_i1_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

@@ -69,8 +69,8 @@ void segment_compact_i2_w0_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i2_w0_prepare); operations per point.
-/// Operations: 49 +, 73 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 574 +, 243 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 49 +, 66 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 574 +, 229 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i2_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -794,8 +794,8 @@ void segment_compact_i2_w1_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i2_w1_prepare); operations per point.
-/// Operations: 57 +, 81 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 591 +, 256 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 57 +, 74 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 591 +, 242 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i2_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1535,8 +1535,8 @@ void segment_compact_i2_w2_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i2_w2_prepare); operations per point.
-/// Operations: 65 +, 89 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 273 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 65 +, 82 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 606 +, 259 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i2_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -2283,8 +2283,8 @@ void segment_compact_i2_w3_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i2_w3_prepare); operations per point.
-/// Operations: 73 +, 97 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 623 +, 286 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 73 +, 90 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 623 +, 272 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i2_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -6929,8 +6929,8 @@ void segment_compact_i4_w0_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i4_w0_prepare); operations per point.
-/// Operations: 49 +, 80 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 575 +, 255 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 49 +, 73 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 575 +, 241 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i4_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -7663,8 +7663,8 @@ void segment_compact_i4_w1_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i4_w1_prepare); operations per point.
-/// Operations: 57 +, 88 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 590 +, 272 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 57 +, 81 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 590 +, 258 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i4_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -8411,8 +8411,8 @@ void segment_compact_i4_w2_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i4_w2_prepare); operations per point.
-/// Operations: 65 +, 96 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 285 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 65 +, 89 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 607 +, 271 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i4_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -9167,8 +9167,8 @@ void segment_compact_i4_w3_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i4_w3_prepare); operations per point.
-/// Operations: 73 +, 104 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 623 +, 300 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 73 +, 97 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 623 +, 286 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i4_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -13913,8 +13913,8 @@ void segment_compact_i6_w0_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i6_w0_prepare); operations per point.
-/// Operations: 49 +, 87 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 574 +, 271 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 49 +, 80 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 574 +, 257 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i6_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -14685,8 +14685,8 @@ void segment_compact_i6_w1_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i6_w1_prepare); operations per point.
-/// Operations: 57 +, 95 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 591 +, 284 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 57 +, 88 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 591 +, 270 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i6_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -15475,8 +15475,8 @@ void segment_compact_i6_w2_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i6_w2_prepare); operations per point.
-/// Operations: 65 +, 103 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 607 +, 299 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 65 +, 96 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 607 +, 285 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i6_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -16272,8 +16272,8 @@ void segment_compact_i6_w3_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i6_w3_prepare); operations per point.
-/// Operations: 73 +, 111 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 622 +, 316 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 73 +, 104 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 622 +, 302 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i6_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -21266,8 +21266,8 @@ void segment_compact_i8_w0_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i8_w0_prepare); operations per point.
-/// Operations: 49 +, 94 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 575 +, 283 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 49 +, 87 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 575 +, 269 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i8_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22040,8 +22040,8 @@ void segment_compact_i8_w1_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i8_w1_prepare); operations per point.
-/// Operations: 57 +, 102 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 590 +, 300 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 57 +, 95 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 590 +, 286 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i8_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -22827,8 +22827,8 @@ void segment_compact_i8_w2_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i8_w2_prepare); operations per point.
-/// Operations: 65 +, 110 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 315 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 65 +, 103 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 606 +, 301 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i8_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -23624,8 +23624,8 @@ void segment_compact_i8_w3_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i8_w3_prepare); operations per point.
-/// Operations: 73 +, 118 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 623 +, 328 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 73 +, 111 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 623 +, 314 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i8_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -28679,8 +28679,8 @@ void segment_compact_i10_w0_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i10_w0_prepare); operations per point.
-/// Operations: 49 +, 101 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 574 +, 299 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 49 +, 94 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 574 +, 285 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i10_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -29474,8 +29474,8 @@ void segment_compact_i10_w1_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i10_w1_prepare); operations per point.
-/// Operations: 57 +, 109 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 590 +, 314 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 57 +, 102 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 590 +, 300 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i10_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -30286,8 +30286,8 @@ void segment_compact_i10_w2_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i10_w2_prepare); operations per point.
-/// Operations: 65 +, 117 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 606 +, 329 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 65 +, 110 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 606 +, 315 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i10_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -31106,8 +31106,8 @@ void segment_compact_i10_w3_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i10_w3_prepare); operations per point.
-/// Operations: 73 +, 125 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 622 +, 344 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 73 +, 118 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 622 +, 330 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i10_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -36322,8 +36322,8 @@ void segment_compact_i12_w0_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i12_w0_prepare); operations per point.
-/// Operations: 49 +, 108 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 575 +, 311 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 49 +, 101 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 575 +, 297 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i12_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -37120,8 +37120,8 @@ void segment_compact_i12_w1_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i12_w1_prepare); operations per point.
-/// Operations: 57 +, 116 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 591 +, 326 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 57 +, 109 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 591 +, 312 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i12_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -37932,8 +37932,8 @@ void segment_compact_i12_w2_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i12_w2_prepare); operations per point.
-/// Operations: 83 +, 169 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 655 +, 437 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 83 +, 159 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 655 +, 417 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i12_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -38753,8 +38753,8 @@ void segment_compact_i12_w3_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i12_w3_prepare); operations per point.
-/// Operations: 94 +, 180 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 458 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 94 +, 170 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 677 +, 438 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i12_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -44019,8 +44019,8 @@ void segment_compact_i14_w0_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i14_w0_prepare); operations per point.
-/// Operations: 61 +, 157 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 610 +, 417 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 61 +, 147 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 610 +, 397 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i14_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -44840,8 +44840,8 @@ void segment_compact_i14_w1_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i14_w1_prepare); operations per point.
-/// Operations: 72 +, 168 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 632 +, 438 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 72 +, 158 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 632 +, 418 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i14_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -45676,8 +45676,8 @@ void segment_compact_i14_w2_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i14_w2_prepare); operations per point.
-/// Operations: 83 +, 179 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 655 +, 457 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 83 +, 169 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 655 +, 437 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i14_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -46518,8 +46518,8 @@ void segment_compact_i14_w3_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i14_w3_prepare); operations per point.
-/// Operations: 94 +, 190 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 676 +, 480 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 94 +, 180 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 676 +, 460 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i14_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -51933,8 +51933,8 @@ void segment_compact_i16_w0_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i16_w0_prepare); operations per point.
-/// Operations: 61 +, 167 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 611 +, 435 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 61 +, 157 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 611 +, 415 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i16_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -52730,8 +52730,8 @@ void segment_compact_i16_w1_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i16_w1_prepare); operations per point.
-/// Operations: 72 +, 178 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 632 +, 458 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 72 +, 168 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 632 +, 438 ×, 1 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i16_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -53542,8 +53542,8 @@ void segment_compact_i16_w2_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i16_w2_prepare); operations per point.
-/// Operations: 83 +, 189 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 655 +, 477 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 83 +, 179 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 655 +, 457 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i16_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -54362,8 +54362,8 @@ void segment_compact_i16_w3_prepare(const SegmentInput<T>& in, T* pre) {
 /// the field, where
 ///     f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt
 /// At one point, from the segment's pre[] (segment_compact_i16_w3_prepare); operations per point.
-/// Operations: 94 +, 200 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 677 +, 498 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
+/// Operations: 94 +, 190 ×, 2 /, 0 sqrt, 0 atan, 0 log/asinh (generic form).
+/// Longest path: 677 +, 478 ×, 2 /, 1 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T segment_compact_i16_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -55154,28 +55154,28 @@ std::span<const SegmentKernel<T>> segment_compact_kernels() {
        &prepared_grad<T, segment_compact_i2_w0_prepared_size, &segment_compact_i2_w0_prepare<T>, &segment_compact_i2_w0_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i2_w0_prepared_size, &segment_compact_i2_w0_prepare<T>, &segment_compact_i2_w0_f_and_grad<T>>,
        "segment_compact_i2_w0",
-       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt", {49, 73, 2, 0, 0, 0, 0}, {85, 126, 2, 0, 0, 0, 0}, {85, 128, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(2/2) dt", {49, 66, 2, 0, 0, 0, 0}, {85, 126, 2, 0, 0, 0, 0}, {85, 128, 2, 0, 0, 0, 0},
        {5, 8, 3, 1, 0, 0, 0}, segment_compact_i2_w0_prepared_size, &segment_compact_i2_w0_prepare<T>, &segment_compact_i2_w0_f<T>, &segment_compact_i2_w0_grad<T>, &segment_compact_i2_w0_f_and_grad<T>},
       {KernelFamily::compact, 2, 1,
        &prepared_f<T, segment_compact_i2_w1_prepared_size, &segment_compact_i2_w1_prepare<T>, &segment_compact_i2_w1_f<T>>,
        &prepared_grad<T, segment_compact_i2_w1_prepared_size, &segment_compact_i2_w1_prepare<T>, &segment_compact_i2_w1_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i2_w1_prepared_size, &segment_compact_i2_w1_prepare<T>, &segment_compact_i2_w1_f_and_grad<T>>,
        "segment_compact_i2_w1",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {57, 81, 2, 0, 0, 0, 0}, {101, 141, 2, 0, 0, 0, 0}, {102, 144, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {57, 74, 2, 0, 0, 0, 0}, {101, 141, 2, 0, 0, 0, 0}, {102, 144, 2, 0, 0, 0, 0},
        {6, 8, 3, 1, 0, 0, 0}, segment_compact_i2_w1_prepared_size, &segment_compact_i2_w1_prepare<T>, &segment_compact_i2_w1_f<T>, &segment_compact_i2_w1_grad<T>, &segment_compact_i2_w1_f_and_grad<T>},
       {KernelFamily::compact, 2, 2,
        &prepared_f<T, segment_compact_i2_w2_prepared_size, &segment_compact_i2_w2_prepare<T>, &segment_compact_i2_w2_f<T>>,
        &prepared_grad<T, segment_compact_i2_w2_prepared_size, &segment_compact_i2_w2_prepare<T>, &segment_compact_i2_w2_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i2_w2_prepared_size, &segment_compact_i2_w2_prepare<T>, &segment_compact_i2_w2_f_and_grad<T>>,
        "segment_compact_i2_w2",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {65, 89, 2, 0, 0, 0, 0}, {117, 157, 2, 0, 0, 0, 0}, {119, 161, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {65, 82, 2, 0, 0, 0, 0}, {117, 157, 2, 0, 0, 0, 0}, {119, 161, 2, 0, 0, 0, 0},
        {7, 8, 3, 1, 0, 0, 0}, segment_compact_i2_w2_prepared_size, &segment_compact_i2_w2_prepare<T>, &segment_compact_i2_w2_f<T>, &segment_compact_i2_w2_grad<T>, &segment_compact_i2_w2_f_and_grad<T>},
       {KernelFamily::compact, 2, 3,
        &prepared_f<T, segment_compact_i2_w3_prepared_size, &segment_compact_i2_w3_prepare<T>, &segment_compact_i2_w3_f<T>>,
        &prepared_grad<T, segment_compact_i2_w3_prepared_size, &segment_compact_i2_w3_prepare<T>, &segment_compact_i2_w3_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i2_w3_prepared_size, &segment_compact_i2_w3_prepare<T>, &segment_compact_i2_w3_f_and_grad<T>>,
        "segment_compact_i2_w3",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {73, 97, 2, 0, 0, 0, 0}, {133, 173, 2, 0, 0, 0, 0}, {136, 178, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(2/2) dt", {73, 90, 2, 0, 0, 0, 0}, {133, 173, 2, 0, 0, 0, 0}, {136, 178, 2, 0, 0, 0, 0},
        {8, 8, 3, 1, 0, 0, 0}, segment_compact_i2_w3_prepared_size, &segment_compact_i2_w3_prepare<T>, &segment_compact_i2_w3_f<T>, &segment_compact_i2_w3_grad<T>, &segment_compact_i2_w3_f_and_grad<T>},
       {KernelFamily::compact, 3, 0,
        &prepared_f<T, segment_compact_i3_w0_prepared_size, &segment_compact_i3_w0_prepare<T>, &segment_compact_i3_w0_f<T>>,
@@ -55210,28 +55210,28 @@ std::span<const SegmentKernel<T>> segment_compact_kernels() {
        &prepared_grad<T, segment_compact_i4_w0_prepared_size, &segment_compact_i4_w0_prepare<T>, &segment_compact_i4_w0_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i4_w0_prepared_size, &segment_compact_i4_w0_prepare<T>, &segment_compact_i4_w0_f_and_grad<T>>,
        "segment_compact_i4_w0",
-       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt", {49, 80, 2, 0, 0, 0, 0}, {85, 133, 2, 0, 0, 0, 0}, {85, 135, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(4/2) dt", {49, 73, 2, 0, 0, 0, 0}, {85, 133, 2, 0, 0, 0, 0}, {85, 135, 2, 0, 0, 0, 0},
        {5, 9, 3, 1, 0, 0, 0}, segment_compact_i4_w0_prepared_size, &segment_compact_i4_w0_prepare<T>, &segment_compact_i4_w0_f<T>, &segment_compact_i4_w0_grad<T>, &segment_compact_i4_w0_f_and_grad<T>},
       {KernelFamily::compact, 4, 1,
        &prepared_f<T, segment_compact_i4_w1_prepared_size, &segment_compact_i4_w1_prepare<T>, &segment_compact_i4_w1_f<T>>,
        &prepared_grad<T, segment_compact_i4_w1_prepared_size, &segment_compact_i4_w1_prepare<T>, &segment_compact_i4_w1_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i4_w1_prepared_size, &segment_compact_i4_w1_prepare<T>, &segment_compact_i4_w1_f_and_grad<T>>,
        "segment_compact_i4_w1",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {57, 88, 2, 0, 0, 0, 0}, {101, 148, 2, 0, 0, 0, 0}, {102, 151, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {57, 81, 2, 0, 0, 0, 0}, {101, 148, 2, 0, 0, 0, 0}, {102, 151, 2, 0, 0, 0, 0},
        {6, 9, 3, 1, 0, 0, 0}, segment_compact_i4_w1_prepared_size, &segment_compact_i4_w1_prepare<T>, &segment_compact_i4_w1_f<T>, &segment_compact_i4_w1_grad<T>, &segment_compact_i4_w1_f_and_grad<T>},
       {KernelFamily::compact, 4, 2,
        &prepared_f<T, segment_compact_i4_w2_prepared_size, &segment_compact_i4_w2_prepare<T>, &segment_compact_i4_w2_f<T>>,
        &prepared_grad<T, segment_compact_i4_w2_prepared_size, &segment_compact_i4_w2_prepare<T>, &segment_compact_i4_w2_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i4_w2_prepared_size, &segment_compact_i4_w2_prepare<T>, &segment_compact_i4_w2_f_and_grad<T>>,
        "segment_compact_i4_w2",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {65, 96, 2, 0, 0, 0, 0}, {117, 164, 2, 0, 0, 0, 0}, {119, 168, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {65, 89, 2, 0, 0, 0, 0}, {117, 164, 2, 0, 0, 0, 0}, {119, 168, 2, 0, 0, 0, 0},
        {7, 9, 3, 1, 0, 0, 0}, segment_compact_i4_w2_prepared_size, &segment_compact_i4_w2_prepare<T>, &segment_compact_i4_w2_f<T>, &segment_compact_i4_w2_grad<T>, &segment_compact_i4_w2_f_and_grad<T>},
       {KernelFamily::compact, 4, 3,
        &prepared_f<T, segment_compact_i4_w3_prepared_size, &segment_compact_i4_w3_prepare<T>, &segment_compact_i4_w3_f<T>>,
        &prepared_grad<T, segment_compact_i4_w3_prepared_size, &segment_compact_i4_w3_prepare<T>, &segment_compact_i4_w3_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i4_w3_prepared_size, &segment_compact_i4_w3_prepare<T>, &segment_compact_i4_w3_f_and_grad<T>>,
        "segment_compact_i4_w3",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {73, 104, 2, 0, 0, 0, 0}, {133, 180, 2, 0, 0, 0, 0}, {136, 185, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(4/2) dt", {73, 97, 2, 0, 0, 0, 0}, {133, 180, 2, 0, 0, 0, 0}, {136, 185, 2, 0, 0, 0, 0},
        {8, 9, 3, 1, 0, 0, 0}, segment_compact_i4_w3_prepared_size, &segment_compact_i4_w3_prepare<T>, &segment_compact_i4_w3_f<T>, &segment_compact_i4_w3_grad<T>, &segment_compact_i4_w3_f_and_grad<T>},
       {KernelFamily::compact, 5, 0,
        &prepared_f<T, segment_compact_i5_w0_prepared_size, &segment_compact_i5_w0_prepare<T>, &segment_compact_i5_w0_f<T>>,
@@ -55266,28 +55266,28 @@ std::span<const SegmentKernel<T>> segment_compact_kernels() {
        &prepared_grad<T, segment_compact_i6_w0_prepared_size, &segment_compact_i6_w0_prepare<T>, &segment_compact_i6_w0_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i6_w0_prepared_size, &segment_compact_i6_w0_prepare<T>, &segment_compact_i6_w0_f_and_grad<T>>,
        "segment_compact_i6_w0",
-       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt", {49, 87, 2, 0, 0, 0, 0}, {85, 140, 2, 0, 0, 0, 0}, {85, 142, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(6/2) dt", {49, 80, 2, 0, 0, 0, 0}, {85, 140, 2, 0, 0, 0, 0}, {85, 142, 2, 0, 0, 0, 0},
        {5, 10, 3, 1, 0, 0, 0}, segment_compact_i6_w0_prepared_size, &segment_compact_i6_w0_prepare<T>, &segment_compact_i6_w0_f<T>, &segment_compact_i6_w0_grad<T>, &segment_compact_i6_w0_f_and_grad<T>},
       {KernelFamily::compact, 6, 1,
        &prepared_f<T, segment_compact_i6_w1_prepared_size, &segment_compact_i6_w1_prepare<T>, &segment_compact_i6_w1_f<T>>,
        &prepared_grad<T, segment_compact_i6_w1_prepared_size, &segment_compact_i6_w1_prepare<T>, &segment_compact_i6_w1_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i6_w1_prepared_size, &segment_compact_i6_w1_prepare<T>, &segment_compact_i6_w1_f_and_grad<T>>,
        "segment_compact_i6_w1",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {57, 95, 2, 0, 0, 0, 0}, {101, 155, 2, 0, 0, 0, 0}, {102, 158, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {57, 88, 2, 0, 0, 0, 0}, {101, 155, 2, 0, 0, 0, 0}, {102, 158, 2, 0, 0, 0, 0},
        {6, 10, 3, 1, 0, 0, 0}, segment_compact_i6_w1_prepared_size, &segment_compact_i6_w1_prepare<T>, &segment_compact_i6_w1_f<T>, &segment_compact_i6_w1_grad<T>, &segment_compact_i6_w1_f_and_grad<T>},
       {KernelFamily::compact, 6, 2,
        &prepared_f<T, segment_compact_i6_w2_prepared_size, &segment_compact_i6_w2_prepare<T>, &segment_compact_i6_w2_f<T>>,
        &prepared_grad<T, segment_compact_i6_w2_prepared_size, &segment_compact_i6_w2_prepare<T>, &segment_compact_i6_w2_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i6_w2_prepared_size, &segment_compact_i6_w2_prepare<T>, &segment_compact_i6_w2_f_and_grad<T>>,
        "segment_compact_i6_w2",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {65, 103, 2, 0, 0, 0, 0}, {117, 171, 2, 0, 0, 0, 0}, {119, 175, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {65, 96, 2, 0, 0, 0, 0}, {117, 171, 2, 0, 0, 0, 0}, {119, 175, 2, 0, 0, 0, 0},
        {7, 10, 3, 1, 0, 0, 0}, segment_compact_i6_w2_prepared_size, &segment_compact_i6_w2_prepare<T>, &segment_compact_i6_w2_f<T>, &segment_compact_i6_w2_grad<T>, &segment_compact_i6_w2_f_and_grad<T>},
       {KernelFamily::compact, 6, 3,
        &prepared_f<T, segment_compact_i6_w3_prepared_size, &segment_compact_i6_w3_prepare<T>, &segment_compact_i6_w3_f<T>>,
        &prepared_grad<T, segment_compact_i6_w3_prepared_size, &segment_compact_i6_w3_prepare<T>, &segment_compact_i6_w3_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i6_w3_prepared_size, &segment_compact_i6_w3_prepare<T>, &segment_compact_i6_w3_f_and_grad<T>>,
        "segment_compact_i6_w3",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {73, 111, 2, 0, 0, 0, 0}, {133, 187, 2, 0, 0, 0, 0}, {136, 192, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(6/2) dt", {73, 104, 2, 0, 0, 0, 0}, {133, 187, 2, 0, 0, 0, 0}, {136, 192, 2, 0, 0, 0, 0},
        {8, 10, 3, 1, 0, 0, 0}, segment_compact_i6_w3_prepared_size, &segment_compact_i6_w3_prepare<T>, &segment_compact_i6_w3_f<T>, &segment_compact_i6_w3_grad<T>, &segment_compact_i6_w3_f_and_grad<T>},
       {KernelFamily::compact, 7, 0,
        &prepared_f<T, segment_compact_i7_w0_prepared_size, &segment_compact_i7_w0_prepare<T>, &segment_compact_i7_w0_f<T>>,
@@ -55322,28 +55322,28 @@ std::span<const SegmentKernel<T>> segment_compact_kernels() {
        &prepared_grad<T, segment_compact_i8_w0_prepared_size, &segment_compact_i8_w0_prepare<T>, &segment_compact_i8_w0_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i8_w0_prepared_size, &segment_compact_i8_w0_prepare<T>, &segment_compact_i8_w0_f_and_grad<T>>,
        "segment_compact_i8_w0",
-       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt", {49, 94, 2, 0, 0, 0, 0}, {85, 147, 2, 0, 0, 0, 0}, {85, 149, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(8/2) dt", {49, 87, 2, 0, 0, 0, 0}, {85, 147, 2, 0, 0, 0, 0}, {85, 149, 2, 0, 0, 0, 0},
        {5, 10, 3, 1, 0, 0, 0}, segment_compact_i8_w0_prepared_size, &segment_compact_i8_w0_prepare<T>, &segment_compact_i8_w0_f<T>, &segment_compact_i8_w0_grad<T>, &segment_compact_i8_w0_f_and_grad<T>},
       {KernelFamily::compact, 8, 1,
        &prepared_f<T, segment_compact_i8_w1_prepared_size, &segment_compact_i8_w1_prepare<T>, &segment_compact_i8_w1_f<T>>,
        &prepared_grad<T, segment_compact_i8_w1_prepared_size, &segment_compact_i8_w1_prepare<T>, &segment_compact_i8_w1_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i8_w1_prepared_size, &segment_compact_i8_w1_prepare<T>, &segment_compact_i8_w1_f_and_grad<T>>,
        "segment_compact_i8_w1",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {57, 102, 2, 0, 0, 0, 0}, {101, 162, 2, 0, 0, 0, 0}, {102, 165, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {57, 95, 2, 0, 0, 0, 0}, {101, 162, 2, 0, 0, 0, 0}, {102, 165, 2, 0, 0, 0, 0},
        {6, 10, 3, 1, 0, 0, 0}, segment_compact_i8_w1_prepared_size, &segment_compact_i8_w1_prepare<T>, &segment_compact_i8_w1_f<T>, &segment_compact_i8_w1_grad<T>, &segment_compact_i8_w1_f_and_grad<T>},
       {KernelFamily::compact, 8, 2,
        &prepared_f<T, segment_compact_i8_w2_prepared_size, &segment_compact_i8_w2_prepare<T>, &segment_compact_i8_w2_f<T>>,
        &prepared_grad<T, segment_compact_i8_w2_prepared_size, &segment_compact_i8_w2_prepare<T>, &segment_compact_i8_w2_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i8_w2_prepared_size, &segment_compact_i8_w2_prepare<T>, &segment_compact_i8_w2_f_and_grad<T>>,
        "segment_compact_i8_w2",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {65, 110, 2, 0, 0, 0, 0}, {117, 178, 2, 0, 0, 0, 0}, {119, 182, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {65, 103, 2, 0, 0, 0, 0}, {117, 178, 2, 0, 0, 0, 0}, {119, 182, 2, 0, 0, 0, 0},
        {7, 10, 3, 1, 0, 0, 0}, segment_compact_i8_w2_prepared_size, &segment_compact_i8_w2_prepare<T>, &segment_compact_i8_w2_f<T>, &segment_compact_i8_w2_grad<T>, &segment_compact_i8_w2_f_and_grad<T>},
       {KernelFamily::compact, 8, 3,
        &prepared_f<T, segment_compact_i8_w3_prepared_size, &segment_compact_i8_w3_prepare<T>, &segment_compact_i8_w3_f<T>>,
        &prepared_grad<T, segment_compact_i8_w3_prepared_size, &segment_compact_i8_w3_prepare<T>, &segment_compact_i8_w3_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i8_w3_prepared_size, &segment_compact_i8_w3_prepare<T>, &segment_compact_i8_w3_f_and_grad<T>>,
        "segment_compact_i8_w3",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {73, 118, 2, 0, 0, 0, 0}, {133, 194, 2, 0, 0, 0, 0}, {136, 199, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(8/2) dt", {73, 111, 2, 0, 0, 0, 0}, {133, 194, 2, 0, 0, 0, 0}, {136, 199, 2, 0, 0, 0, 0},
        {8, 10, 3, 1, 0, 0, 0}, segment_compact_i8_w3_prepared_size, &segment_compact_i8_w3_prepare<T>, &segment_compact_i8_w3_f<T>, &segment_compact_i8_w3_grad<T>, &segment_compact_i8_w3_f_and_grad<T>},
       {KernelFamily::compact, 9, 0,
        &prepared_f<T, segment_compact_i9_w0_prepared_size, &segment_compact_i9_w0_prepare<T>, &segment_compact_i9_w0_f<T>>,
@@ -55378,28 +55378,28 @@ std::span<const SegmentKernel<T>> segment_compact_kernels() {
        &prepared_grad<T, segment_compact_i10_w0_prepared_size, &segment_compact_i10_w0_prepare<T>, &segment_compact_i10_w0_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i10_w0_prepared_size, &segment_compact_i10_w0_prepare<T>, &segment_compact_i10_w0_f_and_grad<T>>,
        "segment_compact_i10_w0",
-       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt", {49, 101, 2, 0, 0, 0, 0}, {85, 154, 2, 0, 0, 0, 0}, {85, 156, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(10/2) dt", {49, 94, 2, 0, 0, 0, 0}, {85, 154, 2, 0, 0, 0, 0}, {85, 156, 2, 0, 0, 0, 0},
        {5, 11, 3, 1, 0, 0, 0}, segment_compact_i10_w0_prepared_size, &segment_compact_i10_w0_prepare<T>, &segment_compact_i10_w0_f<T>, &segment_compact_i10_w0_grad<T>, &segment_compact_i10_w0_f_and_grad<T>},
       {KernelFamily::compact, 10, 1,
        &prepared_f<T, segment_compact_i10_w1_prepared_size, &segment_compact_i10_w1_prepare<T>, &segment_compact_i10_w1_f<T>>,
        &prepared_grad<T, segment_compact_i10_w1_prepared_size, &segment_compact_i10_w1_prepare<T>, &segment_compact_i10_w1_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i10_w1_prepared_size, &segment_compact_i10_w1_prepare<T>, &segment_compact_i10_w1_f_and_grad<T>>,
        "segment_compact_i10_w1",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {57, 109, 2, 0, 0, 0, 0}, {101, 169, 2, 0, 0, 0, 0}, {102, 172, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {57, 102, 2, 0, 0, 0, 0}, {101, 169, 2, 0, 0, 0, 0}, {102, 172, 2, 0, 0, 0, 0},
        {6, 11, 3, 1, 0, 0, 0}, segment_compact_i10_w1_prepared_size, &segment_compact_i10_w1_prepare<T>, &segment_compact_i10_w1_f<T>, &segment_compact_i10_w1_grad<T>, &segment_compact_i10_w1_f_and_grad<T>},
       {KernelFamily::compact, 10, 2,
        &prepared_f<T, segment_compact_i10_w2_prepared_size, &segment_compact_i10_w2_prepare<T>, &segment_compact_i10_w2_f<T>>,
        &prepared_grad<T, segment_compact_i10_w2_prepared_size, &segment_compact_i10_w2_prepare<T>, &segment_compact_i10_w2_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i10_w2_prepared_size, &segment_compact_i10_w2_prepare<T>, &segment_compact_i10_w2_f_and_grad<T>>,
        "segment_compact_i10_w2",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {65, 117, 2, 0, 0, 0, 0}, {117, 185, 2, 0, 0, 0, 0}, {119, 189, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {65, 110, 2, 0, 0, 0, 0}, {117, 185, 2, 0, 0, 0, 0}, {119, 189, 2, 0, 0, 0, 0},
        {7, 11, 3, 1, 0, 0, 0}, segment_compact_i10_w2_prepared_size, &segment_compact_i10_w2_prepare<T>, &segment_compact_i10_w2_f<T>, &segment_compact_i10_w2_grad<T>, &segment_compact_i10_w2_f_and_grad<T>},
       {KernelFamily::compact, 10, 3,
        &prepared_f<T, segment_compact_i10_w3_prepared_size, &segment_compact_i10_w3_prepare<T>, &segment_compact_i10_w3_f<T>>,
        &prepared_grad<T, segment_compact_i10_w3_prepared_size, &segment_compact_i10_w3_prepare<T>, &segment_compact_i10_w3_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i10_w3_prepared_size, &segment_compact_i10_w3_prepare<T>, &segment_compact_i10_w3_f_and_grad<T>>,
        "segment_compact_i10_w3",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {73, 125, 2, 0, 0, 0, 0}, {172, 264, 2, 0, 0, 0, 0}, {175, 269, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(10/2) dt", {73, 118, 2, 0, 0, 0, 0}, {172, 264, 2, 0, 0, 0, 0}, {175, 269, 2, 0, 0, 0, 0},
        {8, 11, 3, 1, 0, 0, 0}, segment_compact_i10_w3_prepared_size, &segment_compact_i10_w3_prepare<T>, &segment_compact_i10_w3_f<T>, &segment_compact_i10_w3_grad<T>, &segment_compact_i10_w3_f_and_grad<T>},
       {KernelFamily::compact, 11, 0,
        &prepared_f<T, segment_compact_i11_w0_prepared_size, &segment_compact_i11_w0_prepare<T>, &segment_compact_i11_w0_f<T>>,
@@ -55434,28 +55434,28 @@ std::span<const SegmentKernel<T>> segment_compact_kernels() {
        &prepared_grad<T, segment_compact_i12_w0_prepared_size, &segment_compact_i12_w0_prepare<T>, &segment_compact_i12_w0_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i12_w0_prepared_size, &segment_compact_i12_w0_prepare<T>, &segment_compact_i12_w0_f_and_grad<T>>,
        "segment_compact_i12_w0",
-       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt", {49, 108, 2, 0, 0, 0, 0}, {85, 161, 2, 0, 0, 0, 0}, {85, 163, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(12/2) dt", {49, 101, 2, 0, 0, 0, 0}, {85, 161, 2, 0, 0, 0, 0}, {85, 163, 2, 0, 0, 0, 0},
        {5, 11, 3, 1, 0, 0, 0}, segment_compact_i12_w0_prepared_size, &segment_compact_i12_w0_prepare<T>, &segment_compact_i12_w0_f<T>, &segment_compact_i12_w0_grad<T>, &segment_compact_i12_w0_f_and_grad<T>},
       {KernelFamily::compact, 12, 1,
        &prepared_f<T, segment_compact_i12_w1_prepared_size, &segment_compact_i12_w1_prepare<T>, &segment_compact_i12_w1_f<T>>,
        &prepared_grad<T, segment_compact_i12_w1_prepared_size, &segment_compact_i12_w1_prepare<T>, &segment_compact_i12_w1_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i12_w1_prepared_size, &segment_compact_i12_w1_prepare<T>, &segment_compact_i12_w1_f_and_grad<T>>,
        "segment_compact_i12_w1",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {57, 116, 2, 0, 0, 0, 0}, {128, 230, 2, 0, 0, 0, 0}, {129, 233, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {57, 109, 2, 0, 0, 0, 0}, {128, 230, 2, 0, 0, 0, 0}, {129, 233, 2, 0, 0, 0, 0},
        {6, 11, 3, 1, 0, 0, 0}, segment_compact_i12_w1_prepared_size, &segment_compact_i12_w1_prepare<T>, &segment_compact_i12_w1_f<T>, &segment_compact_i12_w1_grad<T>, &segment_compact_i12_w1_f_and_grad<T>},
       {KernelFamily::compact, 12, 2,
        &prepared_f<T, segment_compact_i12_w2_prepared_size, &segment_compact_i12_w2_prepare<T>, &segment_compact_i12_w2_f<T>>,
        &prepared_grad<T, segment_compact_i12_w2_prepared_size, &segment_compact_i12_w2_prepare<T>, &segment_compact_i12_w2_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i12_w2_prepared_size, &segment_compact_i12_w2_prepare<T>, &segment_compact_i12_w2_f_and_grad<T>>,
        "segment_compact_i12_w2",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {83, 169, 2, 0, 0, 0, 0}, {150, 252, 2, 0, 0, 0, 0}, {152, 256, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {83, 159, 2, 0, 0, 0, 0}, {150, 252, 2, 0, 0, 0, 0}, {152, 256, 2, 0, 0, 0, 0},
        {7, 11, 3, 1, 0, 0, 0}, segment_compact_i12_w2_prepared_size, &segment_compact_i12_w2_prepare<T>, &segment_compact_i12_w2_f<T>, &segment_compact_i12_w2_grad<T>, &segment_compact_i12_w2_f_and_grad<T>},
       {KernelFamily::compact, 12, 3,
        &prepared_f<T, segment_compact_i12_w3_prepared_size, &segment_compact_i12_w3_prepare<T>, &segment_compact_i12_w3_f<T>>,
        &prepared_grad<T, segment_compact_i12_w3_prepared_size, &segment_compact_i12_w3_prepare<T>, &segment_compact_i12_w3_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i12_w3_prepared_size, &segment_compact_i12_w3_prepare<T>, &segment_compact_i12_w3_f_and_grad<T>>,
        "segment_compact_i12_w3",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {94, 180, 2, 0, 0, 0, 0}, {172, 274, 2, 0, 0, 0, 0}, {175, 279, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(12/2) dt", {94, 170, 2, 0, 0, 0, 0}, {172, 274, 2, 0, 0, 0, 0}, {175, 279, 2, 0, 0, 0, 0},
        {8, 11, 3, 1, 0, 0, 0}, segment_compact_i12_w3_prepared_size, &segment_compact_i12_w3_prepare<T>, &segment_compact_i12_w3_f<T>, &segment_compact_i12_w3_grad<T>, &segment_compact_i12_w3_f_and_grad<T>},
       {KernelFamily::compact, 13, 0,
        &prepared_f<T, segment_compact_i13_w0_prepared_size, &segment_compact_i13_w0_prepare<T>, &segment_compact_i13_w0_f<T>>,
@@ -55490,28 +55490,28 @@ std::span<const SegmentKernel<T>> segment_compact_kernels() {
        &prepared_grad<T, segment_compact_i14_w0_prepared_size, &segment_compact_i14_w0_prepare<T>, &segment_compact_i14_w0_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i14_w0_prepared_size, &segment_compact_i14_w0_prepare<T>, &segment_compact_i14_w0_f_and_grad<T>>,
        "segment_compact_i14_w0",
-       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt", {61, 157, 2, 0, 0, 0, 0}, {106, 219, 2, 0, 0, 0, 0}, {106, 221, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(14/2) dt", {61, 147, 2, 0, 0, 0, 0}, {106, 219, 2, 0, 0, 0, 0}, {106, 221, 2, 0, 0, 0, 0},
        {5, 12, 3, 1, 0, 0, 0}, segment_compact_i14_w0_prepared_size, &segment_compact_i14_w0_prepare<T>, &segment_compact_i14_w0_f<T>, &segment_compact_i14_w0_grad<T>, &segment_compact_i14_w0_f_and_grad<T>},
       {KernelFamily::compact, 14, 1,
        &prepared_f<T, segment_compact_i14_w1_prepared_size, &segment_compact_i14_w1_prepare<T>, &segment_compact_i14_w1_f<T>>,
        &prepared_grad<T, segment_compact_i14_w1_prepared_size, &segment_compact_i14_w1_prepare<T>, &segment_compact_i14_w1_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i14_w1_prepared_size, &segment_compact_i14_w1_prepare<T>, &segment_compact_i14_w1_f_and_grad<T>>,
        "segment_compact_i14_w1",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {72, 168, 2, 0, 0, 0, 0}, {128, 240, 2, 0, 0, 0, 0}, {129, 243, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {72, 158, 2, 0, 0, 0, 0}, {128, 240, 2, 0, 0, 0, 0}, {129, 243, 2, 0, 0, 0, 0},
        {6, 12, 3, 1, 0, 0, 0}, segment_compact_i14_w1_prepared_size, &segment_compact_i14_w1_prepare<T>, &segment_compact_i14_w1_f<T>, &segment_compact_i14_w1_grad<T>, &segment_compact_i14_w1_f_and_grad<T>},
       {KernelFamily::compact, 14, 2,
        &prepared_f<T, segment_compact_i14_w2_prepared_size, &segment_compact_i14_w2_prepare<T>, &segment_compact_i14_w2_f<T>>,
        &prepared_grad<T, segment_compact_i14_w2_prepared_size, &segment_compact_i14_w2_prepare<T>, &segment_compact_i14_w2_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i14_w2_prepared_size, &segment_compact_i14_w2_prepare<T>, &segment_compact_i14_w2_f_and_grad<T>>,
        "segment_compact_i14_w2",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {83, 179, 2, 0, 0, 0, 0}, {150, 262, 2, 0, 0, 0, 0}, {152, 266, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {83, 169, 2, 0, 0, 0, 0}, {150, 262, 2, 0, 0, 0, 0}, {152, 266, 2, 0, 0, 0, 0},
        {7, 12, 3, 1, 0, 0, 0}, segment_compact_i14_w2_prepared_size, &segment_compact_i14_w2_prepare<T>, &segment_compact_i14_w2_f<T>, &segment_compact_i14_w2_grad<T>, &segment_compact_i14_w2_f_and_grad<T>},
       {KernelFamily::compact, 14, 3,
        &prepared_f<T, segment_compact_i14_w3_prepared_size, &segment_compact_i14_w3_prepare<T>, &segment_compact_i14_w3_f<T>>,
        &prepared_grad<T, segment_compact_i14_w3_prepared_size, &segment_compact_i14_w3_prepare<T>, &segment_compact_i14_w3_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i14_w3_prepared_size, &segment_compact_i14_w3_prepare<T>, &segment_compact_i14_w3_f_and_grad<T>>,
        "segment_compact_i14_w3",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {94, 190, 2, 0, 0, 0, 0}, {172, 284, 2, 0, 0, 0, 0}, {175, 289, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(14/2) dt", {94, 180, 2, 0, 0, 0, 0}, {172, 284, 2, 0, 0, 0, 0}, {175, 289, 2, 0, 0, 0, 0},
        {8, 12, 3, 1, 0, 0, 0}, segment_compact_i14_w3_prepared_size, &segment_compact_i14_w3_prepare<T>, &segment_compact_i14_w3_f<T>, &segment_compact_i14_w3_grad<T>, &segment_compact_i14_w3_f_and_grad<T>},
       {KernelFamily::compact, 15, 0,
        &prepared_f<T, segment_compact_i15_w0_prepared_size, &segment_compact_i15_w0_prepare<T>, &segment_compact_i15_w0_f<T>>,
@@ -55546,28 +55546,28 @@ std::span<const SegmentKernel<T>> segment_compact_kernels() {
        &prepared_grad<T, segment_compact_i16_w0_prepared_size, &segment_compact_i16_w0_prepare<T>, &segment_compact_i16_w0_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i16_w0_prepared_size, &segment_compact_i16_w0_prepare<T>, &segment_compact_i16_w0_f_and_grad<T>>,
        "segment_compact_i16_w0",
-       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt", {61, 167, 2, 0, 0, 0, 0}, {106, 229, 2, 0, 0, 0, 0}, {106, 231, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 w0 (1 − |P − Γ(t)|²/R²)^(16/2) dt", {61, 157, 2, 0, 0, 0, 0}, {106, 229, 2, 0, 0, 0, 0}, {106, 231, 2, 0, 0, 0, 0},
        {5, 11, 3, 1, 0, 0, 0}, segment_compact_i16_w0_prepared_size, &segment_compact_i16_w0_prepare<T>, &segment_compact_i16_w0_f<T>, &segment_compact_i16_w0_grad<T>, &segment_compact_i16_w0_f_and_grad<T>},
       {KernelFamily::compact, 16, 1,
        &prepared_f<T, segment_compact_i16_w1_prepared_size, &segment_compact_i16_w1_prepare<T>, &segment_compact_i16_w1_f<T>>,
        &prepared_grad<T, segment_compact_i16_w1_prepared_size, &segment_compact_i16_w1_prepare<T>, &segment_compact_i16_w1_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i16_w1_prepared_size, &segment_compact_i16_w1_prepare<T>, &segment_compact_i16_w1_f_and_grad<T>>,
        "segment_compact_i16_w1",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {72, 178, 2, 0, 0, 0, 0}, {128, 250, 2, 0, 0, 0, 0}, {129, 253, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {72, 168, 2, 0, 0, 0, 0}, {128, 250, 2, 0, 0, 0, 0}, {129, 253, 2, 0, 0, 0, 0},
        {6, 11, 3, 1, 0, 0, 0}, segment_compact_i16_w1_prepared_size, &segment_compact_i16_w1_prepare<T>, &segment_compact_i16_w1_f<T>, &segment_compact_i16_w1_grad<T>, &segment_compact_i16_w1_f_and_grad<T>},
       {KernelFamily::compact, 16, 2,
        &prepared_f<T, segment_compact_i16_w2_prepared_size, &segment_compact_i16_w2_prepare<T>, &segment_compact_i16_w2_f<T>>,
        &prepared_grad<T, segment_compact_i16_w2_prepared_size, &segment_compact_i16_w2_prepare<T>, &segment_compact_i16_w2_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i16_w2_prepared_size, &segment_compact_i16_w2_prepare<T>, &segment_compact_i16_w2_f_and_grad<T>>,
        "segment_compact_i16_w2",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {83, 189, 2, 0, 0, 0, 0}, {150, 272, 2, 0, 0, 0, 0}, {152, 276, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {83, 179, 2, 0, 0, 0, 0}, {150, 272, 2, 0, 0, 0, 0}, {152, 276, 2, 0, 0, 0, 0},
        {7, 11, 3, 1, 0, 0, 0}, segment_compact_i16_w2_prepared_size, &segment_compact_i16_w2_prepare<T>, &segment_compact_i16_w2_f<T>, &segment_compact_i16_w2_grad<T>, &segment_compact_i16_w2_f_and_grad<T>},
       {KernelFamily::compact, 16, 3,
        &prepared_f<T, segment_compact_i16_w3_prepared_size, &segment_compact_i16_w3_prepare<T>, &segment_compact_i16_w3_f<T>>,
        &prepared_grad<T, segment_compact_i16_w3_prepared_size, &segment_compact_i16_w3_prepare<T>, &segment_compact_i16_w3_grad<T>>,
        &prepared_f_and_grad<T, segment_compact_i16_w3_prepared_size, &segment_compact_i16_w3_prepare<T>, &segment_compact_i16_w3_f_and_grad<T>>,
        "segment_compact_i16_w3",
-       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {94, 200, 2, 0, 0, 0, 0}, {237, 414, 2, 0, 0, 0, 0}, {240, 419, 2, 0, 0, 0, 0},
+       "f(P) = |AB| ∫_t0^t1 (w0 + w1 t + w2 t^2 + w3 t^3) (1 − |P − Γ(t)|²/R²)^(16/2) dt", {94, 190, 2, 0, 0, 0, 0}, {237, 414, 2, 0, 0, 0, 0}, {240, 419, 2, 0, 0, 0, 0},
        {8, 11, 3, 1, 0, 0, 0}, segment_compact_i16_w3_prepared_size, &segment_compact_i16_w3_prepare<T>, &segment_compact_i16_w3_f<T>, &segment_compact_i16_w3_grad<T>, &segment_compact_i16_w3_f_and_grad<T>},
   };
   return table;

@@ -66,7 +66,7 @@ void segment_inverse_i1_w0_prepare(const SegmentInput<T>& in, T* pre) {
 ///     f(P) = |AB| ∫_0^1 w0 |P − Γ(t)|^(−1) dt
 /// At one point, from the segment's pre[] (segment_inverse_i1_w0_prepare); operations per point.
 /// Operations: 45 +, 30 ×, 1 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 195 +, 222 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 195 +, 202 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w0_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -506,7 +506,7 @@ void segment_inverse_i1_w1_prepare(const SegmentInput<T>& in, T* pre) {
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t) |P − Γ(t)|^(−1) dt
 /// At one point, from the segment's pre[] (segment_inverse_i1_w1_prepare); operations per point.
 /// Operations: 48 +, 33 ×, 1 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 216 +, 243 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 216 +, 223 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w1_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -977,7 +977,7 @@ void segment_inverse_i1_w2_prepare(const SegmentInput<T>& in, T* pre) {
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2) |P − Γ(t)|^(−1) dt
 /// At one point, from the segment's pre[] (segment_inverse_i1_w2_prepare); operations per point.
 /// Operations: 53 +, 45 ×, 1 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 237 +, 264 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 237 +, 244 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w2_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1461,7 +1461,7 @@ void segment_inverse_i1_w3_prepare(const SegmentInput<T>& in, T* pre) {
 ///     f(P) = |AB| ∫_0^1 (w0 + w1 t + w2 t^2 + w3 t^3) |P − Γ(t)|^(−1) dt
 /// At one point, from the segment's pre[] (segment_inverse_i1_w3_prepare); operations per point.
 /// Operations: 58 +, 62 ×, 1 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 258 +, 285 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 258 +, 265 ×, 24 /, 22 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T segment_inverse_i1_w3_f(const T* pre, const SegmentPoint<T>& point) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
