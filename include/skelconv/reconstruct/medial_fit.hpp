@@ -33,6 +33,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -80,6 +81,11 @@ struct MedialFitOptions {
   /// The second stage keeps no step that raises the RMS distance above
   /// (1 + this) × where the first stage left it.
   double worst_rms_growth = 0.25;
+  /// When the fit loses the input's topology (fit_medial_mesh's
+  /// keeps_topology), it resumes from the last round that kept it with
+  /// each step tested, at most this many tests (each meshes the skeleton:
+  /// about 3 s for 500 primitives at diagonal / 120).
+  int topology_checks = 10;
 };
 
 struct MedialFitReport {
@@ -89,18 +95,27 @@ struct MedialFitReport {
   /// The L^p mean of δ before the second stage and after each of its rounds
   /// (absolute; decreasing; empty without a second stage).
   std::vector<double> worst;
+  /// When the fit went back to an earlier round to keep the topology: how
+  /// many rounds (of both stages) it kept.
+  std::optional<std::size_t> rounds_kept;
 };
 
 /// The field of a medial mesh.
 using MedialField = std::function<Skeleton(const MedialMesh&)>;
+
+/// Whether the surface of a medial mesh has the input's topology (its
+/// components and Euler characteristic, meshed at the user's resolution).
+using TopologyCheck = std::function<bool(const MedialMesh&)>;
 
 /// `mesh` with its spheres fitted to `points` as described above. `field_of`
 /// must turn a medial mesh into its edges' SCALIS segments, its triangles'
 /// SCALIS triangles (at the mean radius) and its isolated spheres' points,
 /// in that order, all of a compact kernel of even degree (as
 /// skeleton_file_text does). `progress` (if set) gets one line per round.
-MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& points, const MedialField& field_of,
+MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& points,
+                           const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& options, MedialFitReport* report,
-                           const std::function<void(std::string_view)>& progress = {});
+                           const std::function<void(std::string_view)>& progress = {},
+                           const TopologyCheck& keeps_topology = {});
 
 }  // namespace skelconv::reconstruct
