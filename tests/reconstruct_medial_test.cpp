@@ -281,8 +281,8 @@ TEST(MedialFit, GoesBackToTheLastRoundThatKeepsTheTopology) {
   ASSERT_GT(free.spheres[0].w(), 1.15) << "the unconstrained fit must cross the test's limit";
   EXPECT_FALSE(report.rounds_kept.has_value());
   int tests = 0;
-  const TopologyCheck below = [&tests](const MedialMesh& m) { return ++tests, m.spheres[0].w() <= 1.15; };
-  const MedialMesh kept = fit_medial_mesh(ball, points, {}, field_of, fit, &report, {}, below);
+  const TopologyError above = [&tests](const MedialMesh& m) { return ++tests, m.spheres[0].w() > 1.15 ? 1LL : 0LL; };
+  const MedialMesh kept = fit_medial_mesh(ball, points, {}, field_of, fit, &report, {}, above);
   EXPECT_LE(kept.spheres[0].w(), 1.15);
   EXPECT_GT(kept.spheres[0].w(), 1.0);
   ASSERT_TRUE(report.rounds_kept.has_value());

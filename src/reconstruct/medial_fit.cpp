@@ -283,10 +283,12 @@ struct Rounds {
   double rms_limit = std::numeric_limits<double>::infinity();
 };
 
-/// A step must keep the topology (`keeps`, when set) as well, and at most
-/// `checks_left` steps are tested; the stage stops when none is left.
+/// A step must also leave the topology error (`error`, when set) at most
+/// `allowed`, and at most `checks_left` steps are tested; the stage stops
+/// when none is left.
 struct Guard {
-  TopologyCheck keeps;
+  TopologyError error;
+  long long allowed = 0;
   int checks_left = 0;
 };
 
@@ -313,12 +315,12 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
       Evaluation next = evaluate(trial, points, field_of, o.newton_steps);
       const double next_value = stage.objective(next);
       if (next_value < value && next.rms <= stage.rms_limit) {
-        if (guard.keeps) {
+        if (guard.error) {
           if (guard.checks_left-- <= 0) {
             if (progress) progress(fmt::format("medial fit, {}, round {}: topology tests spent; stopped", stage.name, round));
             return;
           }
-          if (!guard.keeps(trial)) continue;
+          if (guard.error(trial) > guard.allowed) continue;
         }
         value = next_value, better = true;
         mesh = std::move(trial), now = std::move(next);
@@ -343,7 +345,7 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
 MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& surface_points,
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& o, MedialFitReport* report,
-                           const std::function<void(std::string_view)>& progress, const TopologyCheck& keeps_topology) {
+                           const std::function<void(std::string_view)>& progress, const TopologyError& topology_error) {
   MedialFitReport r;
   FitPoints points;
   points.all = surface_points;
@@ -400,34 +402,36 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   run_stages(o.rounds, o.worst_rounds, unguarded);
   // The points see distances, not topology: a round may pinch a neck, fuse
   // two parts that nearly touch or open a hole through a thin sheet. Where
-  // the fitted spheres lose the topology the unfitted ones had, the fit
-  // goes back to the last round that keeps it, found by bisection over the
-  // rounds (a topology lost stays lost in the rounds after, mostly; each
-  // test meshes the skeleton once), and resumes from there with every step
-  // tested (a step that loses it is refused as one that raises the
-  // objective is), within topology_checks tests.
-  if (keeps_topology && history.size() > 1) {
+  // the fitted spheres end farther from the input's topology than the
+  // unfitted ones, the fit goes back to the last round that was not, found
+  // by bisection over the rounds (a topology lost stays lost in the rounds
+  // after, mostly; each test meshes the skeleton once), and resumes from
+  // there with every step tested (a step that goes farther is refused as
+  // one that raises the objective is), within topology_checks tests.
+  if (topology_error && history.size() > 1) {
     const auto at_round = [&](std::size_t k) {
       MedialMesh m = mesh;
       m.spheres = history[k];
       return m;
     };
-    if (!keeps_topology(mesh) && keeps_topology(at_round(0))) {
+    const long long final_error = topology_error(mesh);
+    const long long allowed = final_error > 0 ? topology_error(at_round(0)) : final_error;
+    if (final_error > allowed) {
       std::size_t kept = 0, lost = history.size() - 1;
       while (lost - kept > 1) {
         const std::size_t middle = (kept + lost) / 2;
-        (keeps_topology(at_round(middle)) ? kept : lost) = middle;
+        (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
       }
       mesh = at_round(kept);
       now = evaluate(mesh, points, field_of, o.newton_steps);
       r.rounds_kept = kept;
       if (progress)
-        progress(fmt::format("medial fit: round {} of {} loses the input's topology; resumed after round {} "
-                             "(RMS distance {:.4g}) with each step tested",
+        progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than the "
+                             "unfitted spheres'; resumed after round {} (RMS distance {:.4g}) with each step tested",
                              lost, history.size() - 1, kept, now.rms));
       // The rounds taken of each stage up to `kept`.
       const std::size_t first_taken = r.rms.size() - 1;
-      Guard guard{keeps_topology, o.topology_checks};
+      Guard guard{topology_error, allowed, o.topology_checks};
       lambda = o.initial_damping;
       if (kept <= first_taken) {
         r.rms.resize(kept + 1), r.worst.clear();

@@ -2,6 +2,7 @@
 // simplified to a medial mesh, its tube ends extended and its spheres (centres and radii) fitted
 // (docs/reconstruction_medial.md).
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -112,19 +113,21 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   std::vector<Vec3> inside;
   for (const WeightedPoint& p : merged_in_cells(centres, m.fit_spacing * diagonal, on_surface))
     inside.push_back(p.point);
+  // The topology error: each component too many or too few, and each
+  // tunnel (χ by 2) or cavity too many or too few, counts one.
   const MeshTopology input_topology = mesh_topology(surface);
-  const TopologyCheck keeps_topology = [&](const MedialMesh& medial) {
+  const TopologyError topology_error = [&](const MedialMesh& medial) {
     Stage s;
     s.name = "medial";
     s.medial = medial;
     const MeshTopology t = mesh_topology(mesh_stage(surface, s, o));
-    return t.components == input_topology.components &&
-           t.euler_characteristic == input_topology.euler_characteristic;
+    return std::llabs((long long)t.components - (long long)input_topology.components) +
+           std::llabs(t.euler_characteristic - input_topology.euler_characteristic) / 2;
   };
   MedialFitOptions fit = m.fit;
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
   if (!mesh.spheres.empty())
-    stage.medial = fit_medial_mesh(mesh, points, inside, field_of, fit, &r.fit, o.progress, keeps_topology);
+    stage.medial = fit_medial_mesh(mesh, points, inside, field_of, fit, &r.fit, o.progress, topology_error);
   stage.points = r.spheres = stage.medial.spheres.size();
   if (report != nullptr) *report = r;
   return stage;

@@ -81,10 +81,10 @@ struct MedialFitOptions {
   /// The second stage keeps no step that raises the RMS distance above
   /// (1 + this) × where the first stage left it.
   double worst_rms_growth = 0.25;
-  /// When the fit loses the input's topology (fit_medial_mesh's
-  /// keeps_topology), it resumes from the last round that kept it with
-  /// each step tested, at most this many tests (each meshes the skeleton:
-  /// about 3 s for 500 primitives at diagonal / 120).
+  /// When the fit ends farther from the input's topology than it started
+  /// (fit_medial_mesh's topology_error), it resumes from the last round
+  /// that was not, with each step tested, at most this many tests (each
+  /// meshes the skeleton: about 3 s for 500 primitives at diagonal / 120).
   int topology_checks = 10;
 };
 
@@ -103,9 +103,10 @@ struct MedialFitReport {
 /// The field of a medial mesh.
 using MedialField = std::function<Skeleton(const MedialMesh&)>;
 
-/// Whether the surface of a medial mesh has the input's topology (its
-/// components and Euler characteristic, meshed at the user's resolution).
-using TopologyCheck = std::function<bool(const MedialMesh&)>;
+/// How far the surface of a medial mesh is from the input's topology
+/// (meshed at the user's resolution): 0 when its components and Euler
+/// characteristic are the input's, more the more they differ.
+using TopologyError = std::function<long long(const MedialMesh&)>;
 
 /// `mesh` with its spheres fitted to `points` as described above. `field_of`
 /// must turn a medial mesh into its edges' SCALIS segments, its triangles'
@@ -116,6 +117,6 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& po
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& options, MedialFitReport* report,
                            const std::function<void(std::string_view)>& progress = {},
-                           const TopologyCheck& keeps_topology = {});
+                           const TopologyError& topology_error = {});
 
 }  // namespace skelconv::reconstruct
