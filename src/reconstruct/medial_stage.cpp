@@ -97,9 +97,10 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     s.medial = medial;
     return parse_skeleton_json(skeleton_file_text(s, o));
   };
-  // The fit's inside points: the pruned medial graph's vertices deeper
-  // than `inside_depth_facets` facets of the measuring mesh, one per cell
-  // of the fit's spacing. The surface points see only where the
+  // The fit's inside points (with MedialOptions::inside_points): the
+  // pruned medial graph's vertices deeper than `inside_depth_facets`
+  // facets of the measuring mesh, one per cell of the fit's spacing. The
+  // surface points see only where the
   // reconstruction misses the input's surface, never a cavity opening
   // deep inside it (a sheet's radius shrunk below what the sheets around
   // it leave covered), which the meshed surface then shows as an inner
@@ -109,7 +110,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   std::vector<WeightedPoint> centres;
   const double facet = diagonal / o.measure_divisions;
   for (const MedialVertex& v : graph.vertices)
-    if (v.radius >= m.inside_depth_facets * facet) centres.push_back({v.centre, 1.0});
+    if (m.inside_points && v.radius >= m.inside_depth_facets * facet) centres.push_back({v.centre, 1.0});
   std::vector<Vec3> inside;
   for (const WeightedPoint& p : merged_in_cells(centres, m.fit_spacing * diagonal, on_surface))
     inside.push_back(p.point);
