@@ -30,6 +30,11 @@
 // much shorter than its radius has a field that *falls* as the radius grows
 // (F → K(0) area / τ² for a triangle), so "grow where the surface is short"
 // diverges there. The skeleton is rebuilt in memory each round (no files).
+// Inside points (optional) add a residual where the reconstruction has
+// left a point of the input's inside outside (a cavity); a topology error
+// (optional) sends the fit back to the last round that did not end farther
+// from the input's topology than it started, and resumes it from there
+// with each step tested.
 #pragma once
 
 #include <functional>
