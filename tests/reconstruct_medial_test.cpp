@@ -216,13 +216,77 @@ TEST(MedialFit, NewtonStepsFindTheDistanceInsideABall) {
   fit.rounds = 0, fit.worst_rounds = 0;  // the distance before any round
   MedialFitReport report;
   fit.newton_steps = 0;
-  fit_medial_mesh(ball, points, field_of, fit, &report);
+  fit_medial_mesh(ball, points, {}, field_of, fit, &report);
   ASSERT_EQ(report.rms.size(), 1u);
   EXPECT_NEAR(report.rms[0], 1.56 / std::hypot(2.56, 1.56), 2e-3) << "one bounded step";
   fit.newton_steps = 2;
-  fit_medial_mesh(ball, points, field_of, fit, &report);
+  fit_medial_mesh(ball, points, {}, field_of, fit, &report);
   ASSERT_EQ(report.rms.size(), 1u);
   EXPECT_NEAR(report.rms[0], 0.5, 1e-3);
+}
+
+// The same ball with three points on its surface (δ = 0) and one inside
+// point: where the ball covers it (0.5 from the centre) it counts nothing;
+// 1.2 from the centre, outside the ball (a cavity where the input is
+// solid), it counts its bounded step: f = 3.24 (1 − 1.44/2.25)² = 0.4199,
+// |∇f| = 4 × 3.24 × 0.36 × 1.2 / 2.25 = 2.488, δ = −0.5801 / √(2.488² +
+// 0.5801²) = −0.2271, weighed as one surface point: the objective is
+// |δ| / √4.
+TEST(MedialFit, AnInsidePointCountsOnlyWhenLeftOutside) {
+  MedialMesh ball;
+  ball.spheres = {Vec4(0.2, -0.1, 0.3, 1.0)};
+  ball.isolated = {0};
+  const Vec3 centre = ball.spheres[0].head<3>();
+  std::vector<WeightedPoint> points;
+  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8)}) points.push_back({centre + d, 2.0});
+  const ReconstructOptions o;
+  const MedialField field_of = [&o](const MedialMesh& medial) {
+    Stage s;
+    s.medial = medial;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+  MedialFitOptions fit;
+  fit.rounds = 0, fit.worst_rounds = 0;  // the objective before any round
+  MedialFitReport report;
+  fit_medial_mesh(ball, points, {centre + Vec3(0, 0, 0.5)}, field_of, fit, &report);
+  ASSERT_EQ(report.rms.size(), 1u);
+  EXPECT_NEAR(report.rms[0], 0.0, 1e-9);
+  fit_medial_mesh(ball, points, {centre + Vec3(0, 0, 1.2)}, field_of, fit, &report);
+  ASSERT_EQ(report.rms.size(), 1u);
+  EXPECT_NEAR(report.rms[0], 0.2271 / 2.0, 2e-4);
+}
+
+// Points 1.3 from the ball's centre (inside its support, 1.5) pull its
+// radius from 1 towards 1.3; a topology test that fails above radius 1.15 (standing in for a neck that
+// pinches or a gap that closes) sends the fit back to the last round below
+// it, and the fit resumes from there with each step tested: it ends
+// between 1 and 1.15, and says from which round it resumed.
+TEST(MedialFit, GoesBackToTheLastRoundThatKeepsTheTopology) {
+  MedialMesh ball;
+  ball.spheres = {Vec4(0.0, 0.0, 0.0, 1.0)};
+  ball.isolated = {0};
+  std::vector<WeightedPoint> points;
+  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8), Vec3(-0.8, 0, 0.6)})
+    points.push_back({1.3 * d, 1.0});
+  const ReconstructOptions o;
+  const MedialField field_of = [&o](const MedialMesh& medial) {
+    Stage s;
+    s.medial = medial;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+  MedialFitOptions fit;
+  fit.fit_centres = false;
+  MedialFitReport report;
+  const MedialMesh free = fit_medial_mesh(ball, points, {}, field_of, fit, &report);
+  ASSERT_GT(free.spheres[0].w(), 1.15) << "the unconstrained fit must cross the test's limit";
+  EXPECT_FALSE(report.rounds_kept.has_value());
+  int tests = 0;
+  const TopologyError above = [&tests](const MedialMesh& m) { return ++tests, m.spheres[0].w() > 1.15 ? 1LL : 0LL; };
+  const MedialMesh kept = fit_medial_mesh(ball, points, {}, field_of, fit, &report, {}, above);
+  EXPECT_LE(kept.spheres[0].w(), 1.15);
+  EXPECT_GT(kept.spheres[0].w(), 1.0);
+  ASSERT_TRUE(report.rounds_kept.has_value());
+  EXPECT_LE(tests, 2 + 5 + fit.topology_checks) << "final, unfitted, bisection, tested steps";
 }
 
 // --- The fit's derivatives (medial_derivatives.hpp) against central

@@ -85,7 +85,8 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
   text += "]";
   if (options.method != reconstruct::SkeletonMethod::curve) {
     // The medial path's own graph and its fit, round by round (absolute
-    // distances: the RMS of the first stage, the L^p mean of the second;
+    // distances: the RMS of the first stage (the inside points' cavities
+    // included), the L^p mean of the second;
     // reconstruct/medial_fit.hpp).
     const reconstruct::MedialPathReport& m = r.medial_path;
     text += fmt::format(",\n \"medial_path\": {{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
@@ -95,7 +96,8 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
     text += "], \"fit_worst\": [";
     for (std::size_t k = 0; k < m.fit.worst.size(); ++k)
       text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.worst[k]);
-    text += "]}";
+    // The rounds kept when the fit went back to keep the topology, else null.
+    text += "], \"fit_rounds_kept\": " + (m.fit.rounds_kept ? fmt::format("{}", *m.fit.rounds_kept) : "null") + "}";
   }
   return text + "}\n";
 }

@@ -29,17 +29,31 @@ std::size_t nearest_sphere(const MedialMesh& mesh, const Vec3& p) {
   return best;
 }
 
-/// The skeleton's fit to the points: each point's signed distance δ to the
-/// surface f = iso (> 0: the point is inside, the reconstruction is too fat
-/// there), where its last Newton step started (`foot`, where its Jacobian
-/// row is taken) and the slope there, the weighted RMS of δ and its largest
-/// magnitude.
+/// The fit's points: the surface points first, then the inside points.
+struct FitPoints {
+  std::vector<WeightedPoint> all;
+  std::size_t surface = 0;
+  bool on_surface(std::size_t k) const { return k < surface; }
+};
+
+/// The skeleton's fit to the points: each point's residual δ: for a surface
+/// point its signed distance to the surface f = iso (> 0: the point is
+/// inside, the reconstruction is too fat there), for an inside point the
+/// same distance where it is negative (the point is outside the
+/// reconstruction: a cavity has opened there) and 0 where it is inside;
+/// where its last Newton step started (`foot`, where its Jacobian row is
+/// taken) and the slope there; the weighted RMS of the surface points' δ
+/// and its largest magnitude; `objective`, the weighted RMS of every
+/// point's δ (the inside points' weighs the cavities in).
 struct Evaluation {
   Skeleton skeleton;
   std::vector<double> delta, slope;
   std::vector<Vec3> foot;
-  std::vector<bool> outside;  ///< outside every support (f = 0): no first-order information, no row
+  /// No row: outside every support (f = 0, no first-order information), or
+  /// an inside point inside the reconstruction.
+  std::vector<bool> no_row;
   double rms = 0.0;
+  double objective = 0.0;
   double largest = 0.0;
 };
 
@@ -57,22 +71,23 @@ double newton_step(const FieldSample& s, double iso, double radius, double* slop
   return excess / *slope;
 }
 
-Evaluation evaluate(const MedialMesh& mesh, const std::vector<WeightedPoint>& points, const MedialField& field_of,
+Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const MedialField& field_of,
                     int newton_steps) {
+  const std::vector<WeightedPoint>& points = fit_points.all;
   Evaluation e;
   e.skeleton = field_of(mesh);
   const double iso = e.skeleton.iso();
   e.delta.resize(points.size());
   e.slope.resize(points.size());
   e.foot.resize(points.size());
-  e.outside.resize(points.size());
-  double sum = 0.0, total = 0.0;
+  e.no_row.resize(points.size());
+  double sum = 0.0, total = 0.0, inside_sum = 0.0, inside_total = 0.0;
   for (std::size_t k = 0; k < points.size(); ++k) {
     const double radius = mesh.spheres[nearest_sphere(mesh, points[k].point)].w();
     FieldSample s = e.skeleton.value_and_gradient(points[k].point);
     e.foot[k] = points[k].point;
-    e.outside[k] = !(s.value != 0.0) || !std::isfinite(s.value) || !s.gradient.allFinite();
-    if (e.outside[k]) {
+    e.no_row[k] = !(s.value != 0.0) || !std::isfinite(s.value) || !s.gradient.allFinite();
+    if (e.no_row[k]) {
       e.delta[k] = -radius, e.slope[k] = iso / radius;
     } else {
       // Newton's steps along the gradient: the first-order distance falls
@@ -89,10 +104,16 @@ Evaluation evaluate(const MedialMesh& mesh, const std::vector<WeightedPoint>& po
         e.delta[k] += step, e.foot[k] = next, e.slope[k] = slope, s = t;
       }
     }
+    if (!fit_points.on_surface(k)) {
+      if (e.delta[k] >= 0.0) e.delta[k] = 0.0, e.no_row[k] = true;
+      inside_sum += points[k].weight * e.delta[k] * e.delta[k], inside_total += points[k].weight;
+      continue;
+    }
     sum += points[k].weight * e.delta[k] * e.delta[k], total += points[k].weight;
     e.largest = std::max(e.largest, std::abs(e.delta[k]));
   }
   e.rms = total > 0.0 ? std::sqrt(sum / total) : 0.0;
+  e.objective = total + inside_total > 0.0 ? std::sqrt((sum + inside_sum) / (total + inside_total)) : 0.0;
   return e;
 }
 
@@ -130,7 +151,7 @@ Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& poin
     const std::optional<SupportBox> box = support_box(primitives[q]);
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Vec3& p = e.foot[k];
-      if (e.outside[k] || (box && !box->contains(p))) continue;
+      if (e.no_row[k] || (box && !box->contains(p))) continue;
       if (q < mesh.edges.size()) {
         const auto& edge = mesh.edges[q];
         const PrimitiveDerivatives<2> d = derivatives(std::get<ScalisSegment>(primitives[q]), p);
@@ -262,18 +283,28 @@ struct Rounds {
   double rms_limit = std::numeric_limits<double>::infinity();
 };
 
+/// A step must also leave the topology error (`error`, when set) at most
+/// `allowed`, and at most `checks_left` steps are tested; the stage stops
+/// when none is left.
+struct Guard {
+  TopologyError error;
+  long long allowed = 0;
+  int checks_left = 0;
+};
+
 /// Runs `stage` from `now` (and `mesh`, which it describes); the objective
-/// before and after each round taken goes to `values`. λ carries over from
-/// one stage to the next.
-void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const std::vector<WeightedPoint>& points,
+/// before (unless `values` holds it already) and after each round taken
+/// goes to `values`, the spheres after each round taken to `history`. λ
+/// carries over from one stage to the next.
+void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoints& points,
                 const MedialField& field_of, const MedialFitOptions& o, const std::vector<Vec4>& start,
-                const Rounds& stage, std::vector<double>& values,
-                const std::function<void(std::string_view)>& progress) {
+                const Rounds& stage, std::vector<double>& values, std::vector<std::vector<Vec4>>& history,
+                Guard& guard, const std::function<void(std::string_view)>& progress) {
   double value = stage.objective(now);
-  values.push_back(value);
+  if (values.empty()) values.push_back(value);
   for (int round = 1; round <= stage.rounds; ++round) {
     const NormalEquations equations =
-        normal_equations(points, now, jacobian(mesh, points, now, o.fit_centres), stage.weights(now),
+        normal_equations(points.all, now, jacobian(mesh, points.all, now, o.fit_centres), stage.weights(now),
                          Eigen::Index(per_sphere * mesh.spheres.size()));
     bool better = false;
     for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
@@ -284,6 +315,13 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const std::ve
       Evaluation next = evaluate(trial, points, field_of, o.newton_steps);
       const double next_value = stage.objective(next);
       if (next_value < value && next.rms <= stage.rms_limit) {
+        if (guard.error) {
+          if (guard.checks_left-- <= 0) {
+            if (progress) progress(fmt::format("medial fit, {}, round {}: topology tests spent; stopped", stage.name, round));
+            return;
+          }
+          if (guard.error(trial) > guard.allowed) continue;
+        }
         value = next_value, better = true;
         mesh = std::move(trial), now = std::move(next);
       }
@@ -294,6 +332,7 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const std::ve
     }
     lambda = std::max(lambda / 30.0, o.initial_damping);  // the loop's last ×10, then ÷3
     values.push_back(value);
+    history.push_back(mesh.spheres);
     if (progress)
       progress(fmt::format("medial fit, {}, round {} of {}: {:.4g} (RMS distance {:.4g}, largest {:.4g}), "
                            "damping {:.2g}",
@@ -303,10 +342,19 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const std::ve
 
 }  // namespace
 
-MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& points, const MedialField& field_of,
+MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& surface_points,
+                           const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& o, MedialFitReport* report,
-                           const std::function<void(std::string_view)>& progress) {
+                           const std::function<void(std::string_view)>& progress, const TopologyError& topology_error) {
   MedialFitReport r;
+  FitPoints points;
+  points.all = surface_points;
+  points.surface = surface_points.size();
+  // An inside point weighs as much as an average surface point.
+  double area = 0.0;
+  for (const WeightedPoint& p : surface_points) area += p.weight;
+  const double inside_weight = surface_points.empty() ? 1.0 : area / double(surface_points.size());
+  for (const Vec3& p : inside_points) points.all.push_back({p, inside_weight});
   // Each centre stays within its medial ball, which is inside the input:
   // nothing in the fit pulls back a sphere that wanders out of it (the
   // input's points see only where the surface misses them, not where a
@@ -315,30 +363,84 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& po
   for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
   Evaluation now = evaluate(mesh, points, field_of, o.newton_steps);
   if (progress)
-    progress(fmt::format("medial fit: RMS distance {:.4g}, largest {:.4g} before fitting ({} points)", now.rms,
-                         now.largest, points.size()));
+    progress(fmt::format("medial fit: RMS distance {:.4g}, largest {:.4g} before fitting ({} points on the surface, "
+                         "{} inside)",
+                         now.rms, now.largest, points.surface, inside_points.size()));
   // λ starts small (nearly Gauss–Newton) and grows tenfold while a step
   // raises the objective, shrinks after a step that lowers it.
   double lambda = o.initial_damping;
   Rounds least_squares;
-  least_squares.name = "RMS distance (Huber)", least_squares.rounds = o.rounds;
-  const double huber = o.huber_scale * diagonal_of(points);
+  least_squares.name = "RMS distance (Huber)";
+  const double huber = o.huber_scale * diagonal_of(surface_points);
   least_squares.weights = [huber](const Evaluation&) { return huber_weights(huber); };
-  least_squares.objective = [](const Evaluation& e) { return e.rms; };
-  run_rounds(mesh, now, lambda, points, field_of, o, start, least_squares, r.rms, progress);
+  least_squares.objective = [](const Evaluation& e) { return e.objective; };
   // Then the worst points: the least squares leave a few places (a crease
   // the blend fills, a rim it rounds) far off while the RMS is low, and
   // those make the Hausdorff distance.
-  if (o.worst_rounds > 0) {
-    const double p = o.worst_exponent;
-    Rounds worst;
-    worst.name = fmt::format("L{} mean", p), worst.rounds = o.worst_rounds;
-    worst.weights = [&points, p](const Evaluation& e) {
-      return power_weights(p, std::max(power_mean(points, e, p), std::numeric_limits<double>::min()));
+  const double p = o.worst_exponent;
+  Rounds worst;
+  worst.name = fmt::format("L{} mean", p);
+  worst.weights = [&points, p](const Evaluation& e) {
+    return power_weights(p, std::max(power_mean(points.all, e, p), std::numeric_limits<double>::min()));
+  };
+  worst.objective = [&points, p](const Evaluation& e) { return power_mean(points.all, e, p); };
+  std::vector<std::vector<Vec4>> history{mesh.spheres};  // before the fit, then after each round taken
+  double first_stage_rms = 0.0;
+  const auto run_stages = [&](int first_rounds, int worst_rounds, Guard& guard) {
+    if (first_rounds > 0 || r.rms.empty()) {  // the objective before the fit, rounds or not
+      least_squares.rounds = first_rounds;
+      run_rounds(mesh, now, lambda, points, field_of, o, start, least_squares, r.rms, history, guard, progress);
+      first_stage_rms = now.rms;
+    }
+    if (worst_rounds > 0) {
+      worst.rounds = worst_rounds;
+      worst.rms_limit = (1.0 + o.worst_rms_growth) * first_stage_rms;
+      run_rounds(mesh, now, lambda, points, field_of, o, start, worst, r.worst, history, guard, progress);
+    }
+  };
+  Guard unguarded;
+  run_stages(o.rounds, o.worst_rounds, unguarded);
+  // The points see distances, not topology: a round may pinch a neck, fuse
+  // two parts that nearly touch or open a hole through a thin sheet. Where
+  // the fitted spheres end farther from the input's topology than the
+  // unfitted ones, the fit goes back to the last round that was not, found
+  // by bisection over the rounds (a topology lost stays lost in the rounds
+  // after, mostly; each test meshes the skeleton once), and resumes from
+  // there with every step tested (a step that goes farther is refused as
+  // one that raises the objective is), within topology_checks tests.
+  if (topology_error && history.size() > 1) {
+    const auto at_round = [&](std::size_t k) {
+      MedialMesh m = mesh;
+      m.spheres = history[k];
+      return m;
     };
-    worst.objective = [&points, p](const Evaluation& e) { return power_mean(points, e, p); };
-    worst.rms_limit = (1.0 + o.worst_rms_growth) * now.rms;
-    run_rounds(mesh, now, lambda, points, field_of, o, start, worst, r.worst, progress);
+    const long long final_error = topology_error(mesh);
+    const long long allowed = final_error > 0 ? topology_error(at_round(0)) : final_error;
+    if (final_error > allowed) {
+      std::size_t kept = 0, lost = history.size() - 1;
+      while (lost - kept > 1) {
+        const std::size_t middle = (kept + lost) / 2;
+        (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
+      }
+      mesh = at_round(kept);
+      now = evaluate(mesh, points, field_of, o.newton_steps);
+      r.rounds_kept = kept;
+      if (progress)
+        progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than the "
+                             "unfitted spheres'; resumed after round {} (RMS distance {:.4g}) with each step tested",
+                             lost, history.size() - 1, kept, now.rms));
+      // The rounds taken of each stage up to `kept`.
+      const std::size_t first_taken = r.rms.size() - 1;
+      Guard guard{topology_error, allowed, o.topology_checks};
+      lambda = o.initial_damping;
+      if (kept <= first_taken) {
+        r.rms.resize(kept + 1), r.worst.clear();
+        run_stages(o.rounds - int(kept), o.worst_rounds, guard);
+      } else {
+        r.worst.resize(kept - first_taken + 1);
+        run_stages(0, o.worst_rounds - int(kept - first_taken), guard);
+      }
+    }
   }
   if (report != nullptr) *report = r;
   return mesh;

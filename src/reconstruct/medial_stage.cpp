@@ -2,11 +2,13 @@
 // simplified to a medial mesh, its tube ends extended and its spheres (centres and radii) fitted
 // (docs/reconstruction_medial.md).
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 
 #include <fmt/format.h>
 
 #include "skelconv/mesh/bounding_region.hpp"
+#include "skelconv/mesh/mesh_topology.hpp"
 #include "skelconv/reconstruct/ball_fit.hpp"
 #include "skelconv/reconstruct/medial_graph.hpp"
 #include "skelconv/reconstruct/medial_quadric.hpp"
@@ -95,9 +97,38 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     s.medial = medial;
     return parse_skeleton_json(skeleton_file_text(s, o));
   };
+  // The fit's inside points (with MedialOptions::inside_points): the
+  // pruned medial graph's vertices deeper than `inside_depth_facets`
+  // facets of the measuring mesh, one per cell of the fit's spacing. The
+  // surface points see only where the
+  // reconstruction misses the input's surface, never a cavity opening
+  // deep inside it (a sheet's radius shrunk below what the sheets around
+  // it leave covered), which the meshed surface then shows as an inner
+  // wall far from the input. The shallow vertices (the spikes towards
+  // ridges and corners, which the smooth surface rounds) are left out:
+  // holding the surface out to them would fatten it everywhere else.
+  std::vector<WeightedPoint> centres;
+  const double facet = diagonal / o.measure_divisions;
+  for (const MedialVertex& v : graph.vertices)
+    if (m.inside_points && v.radius >= m.inside_depth_facets * facet) centres.push_back({v.centre, 1.0});
+  std::vector<Vec3> inside;
+  for (const WeightedPoint& p : merged_in_cells(centres, m.fit_spacing * diagonal, on_surface))
+    inside.push_back(p.point);
+  // The topology error: each component too many or too few, and each
+  // tunnel (χ by 2) or cavity too many or too few, counts one.
+  const MeshTopology input_topology = mesh_topology(surface);
+  const TopologyError topology_error = [&](const MedialMesh& medial) {
+    Stage s;
+    s.name = "medial";
+    s.medial = medial;
+    const MeshTopology t = mesh_topology(mesh_stage(surface, s, o));
+    return std::llabs((long long)t.components - (long long)input_topology.components) +
+           std::llabs(t.euler_characteristic - input_topology.euler_characteristic) / 2;
+  };
   MedialFitOptions fit = m.fit;
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
-  if (!mesh.spheres.empty()) stage.medial = fit_medial_mesh(mesh, points, field_of, fit, &r.fit, o.progress);
+  if (!mesh.spheres.empty())
+    stage.medial = fit_medial_mesh(mesh, points, inside, field_of, fit, &r.fit, o.progress, topology_error);
   stage.points = r.spheres = stage.medial.spheres.size();
   if (report != nullptr) *report = r;
   return stage;

@@ -504,17 +504,22 @@ std::string over_measure_budget(const MeasureWork& work, double budget) {
                      work.primitives, work.grid_nodes, work.evaluations(), budget);
 }
 
-SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
-                              double size, TriangleMesh* mesh_out) {
-  const std::string refused = over_measure_budget(measure_work(surface, stage, options, size), options.measure_budget);
-  if (!refused.empty()) throw InputError(refused, "stage " + stage.name);
+TriangleMesh mesh_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                        double size) {
   const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
   const auto [lo, hi] = bounding_box(surface);
   MeshOptions mesh_options;
   mesh_options.iso = skeleton.iso();
   mesh_options.method = MeshMethod::grid;
   mesh_options.size = measure_size(lo, hi, size, options);
-  const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), mesh_options);
+  return mesh_iso_surface(skeleton_field(skeleton), mesh_options);
+}
+
+SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                              double size, TriangleMesh* mesh_out) {
+  const std::string refused = over_measure_budget(measure_work(surface, stage, options, size), options.measure_budget);
+  if (!refused.empty()) throw InputError(refused, "stage " + stage.name);
+  const TriangleMesh mesh = mesh_stage(surface, stage, options, size);
   if (mesh_out != nullptr) *mesh_out = mesh;
   return surface_distance(surface, mesh);
 }
