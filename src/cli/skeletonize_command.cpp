@@ -21,10 +21,19 @@ namespace {
 
 std::string summary(const reconstruct::Reconstruction& r, const std::string& output,
                     const reconstruct::ReconstructOptions& options) {
-  std::string text = fmt::format("output: {}\nsamples: {}\nmedial_vertices: {}\npruned_vertices: {}\n"
-                                 "pruned_branches: {}\nspurs_removed: {}\n",
-                                 output, r.samples, r.medial_vertices, r.pruning.vertices_removed,
-                                 r.pruning.branches_removed, r.spurs_removed);
+  std::string text = fmt::format("output: {}\n", output);
+  // Each path's own counts, only for the paths that ran (--method medial
+  // runs no curve path, --method curve no medial path).
+  if (options.method != reconstruct::SkeletonMethod::medial) {
+    text += fmt::format("samples: {}\nmedial_vertices: {}\npruned_vertices: {}\npruned_branches: {}\nspurs_removed: {}\n",
+                        r.samples, r.medial_vertices, r.pruning.vertices_removed, r.pruning.branches_removed,
+                        r.spurs_removed);
+  }
+  if (options.method != reconstruct::SkeletonMethod::curve) {
+    const reconstruct::MedialPathReport& m = r.medial_path;
+    text += fmt::format("medial_path_samples: {}\nmedial_path_vertices: {}\nmedial_path_pruned: {}\n", m.samples,
+                        m.vertices, m.pruned);
+  }
   for (const auto& s : r.stages) {
     if (s.name == "medial") {
       text += fmt::format("stage medial: spheres {}, triangles {}, edges {}, isolated {}\n", s.medial.spheres.size(),
@@ -124,6 +133,10 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("--medial-prune-span", options.medial.prune_span,
                       fmt::format("The medial path also prunes Voronoi vertices whose contact samples span less than "
                                   "this × the diagonal (default {})", options.medial.prune_span));
+  command->add_flag("--medial-inside-points", options.medial.inside_points,
+                    "The medial fit also keeps the medial vertices at least 3 facets deep inside the result (a fit "
+                    "that hollows a thick part out; better on some shapes, worse on others: "
+                    "docs/reconstruction_medial.md, \"Inside points\")");
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "
