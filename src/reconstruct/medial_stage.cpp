@@ -125,10 +125,19 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     return std::llabs((long long)t.components - (long long)input_topology.components) +
            std::llabs(t.euler_characteristic - input_topology.euler_characteristic) / 2;
   };
+  // The guard meshes the skeleton as the measure does, so it is off where
+  // the measure would refuse that work (--measure-budget): the fit never
+  // changes the primitive count, so one estimate holds for every round.
+  Stage estimate;
+  estimate.name = "medial";
+  estimate.medial = mesh;
+  const std::string too_much = over_measure_budget(measure_work(surface, estimate, o, 0.0), o.measure_budget);
+  if (!too_much.empty() && o.progress) o.progress("medial fit: topology not guarded: " + too_much);
   MedialFitOptions fit = m.fit;
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
   if (!mesh.spheres.empty())
-    stage.medial = fit_medial_mesh(mesh, points, inside, field_of, fit, &r.fit, o.progress, topology_error);
+    stage.medial = fit_medial_mesh(mesh, points, inside, field_of, fit, &r.fit, o.progress,
+                                   too_much.empty() ? topology_error : TopologyError{});
   stage.points = r.spheres = stage.medial.spheres.size();
   if (report != nullptr) *report = r;
   return stage;
