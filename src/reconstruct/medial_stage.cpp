@@ -117,11 +117,17 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // The topology error: each component too many or too few, and each
   // tunnel (χ by 2) or cavity too many or too few, counts one.
   const MeshTopology input_topology = mesh_topology(surface);
+  // Each surface it meshes is kept with its spheres (a few megabytes
+  // each, at most 2 + log2(rounds) + topology_checks of them): where the
+  // guard ran, the fit's result is one of them, and measuring the result
+  // (`auto`, the report) then meshes nothing again.
+  std::vector<std::pair<std::vector<Vec4>, TriangleMesh>> meshed;
   const TopologyError topology_error = [&](const MedialMesh& medial) {
     Stage s;
     s.name = "medial";
     s.medial = medial;
-    const MeshTopology t = mesh_topology(mesh_stage(surface, s, o));
+    meshed.emplace_back(medial.spheres, mesh_stage(surface, s, o));
+    const MeshTopology t = mesh_topology(meshed.back().second);
     return std::llabs((long long)t.components - (long long)input_topology.components) +
            std::llabs(t.euler_characteristic - input_topology.euler_characteristic) / 2;
   };
@@ -138,6 +144,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   if (!mesh.spheres.empty())
     stage.medial = fit_medial_mesh(mesh, points, inside, field_of, fit, &r.fit, o.progress,
                                    too_much.empty() ? topology_error : TopologyError{});
+  for (auto& [spheres, surface_mesh] : meshed)
+    if (spheres == stage.medial.spheres) stage.meshed = std::move(surface_mesh);
   stage.points = r.spheres = stage.medial.spheres.size();
   if (report != nullptr) *report = r;
   return stage;

@@ -528,7 +528,12 @@ StageMeasure measure(const TriangleMesh& surface, const Stage& stage, const Reco
   if (stage.measured) return *stage.measured;
   const auto start = std::chrono::steady_clock::now();
   StageMeasure m;
-  m.distance = measure_stage(surface, stage, options, 0.0, &m.surface);
+  if (stage.meshed) {
+    m.surface = *stage.meshed;
+    m.distance = surface_distance(surface, m.surface);
+  } else {
+    m.distance = measure_stage(surface, stage, options, 0.0, &m.surface);
+  }
   const MeshTopology topology = mesh_topology(m.surface);
   m.euler_characteristic = topology.euler_characteristic;
   m.components = topology.components;

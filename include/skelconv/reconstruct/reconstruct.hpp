@@ -192,6 +192,10 @@ struct Stage {
   /// Its measure, when reconstruct() took it to choose between the two
   /// paths (`auto`); measure() returns it instead of meshing again.
   std::optional<StageMeasure> measured;
+  /// Its skeleton meshed as measure() meshes it, when the medial fit's
+  /// topology guard meshed these very spheres already (medial_stage):
+  /// measure() measures that mesh instead of meshing again.
+  std::optional<TriangleMesh> meshed;
 };
 
 /// What the medial path saw and did (medial_stage).
@@ -270,7 +274,8 @@ SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, c
                               double size = 0.0, TriangleMesh* mesh_out = nullptr);
 
 /// measure_stage at the default size, with the Euler characteristic of the
-/// meshed surface and the time taken; `stage.measured` when it is set.
+/// meshed surface and the time taken; `stage.measured` when it is set, and
+/// `stage.meshed` measured (no meshing) when that is set.
 /// Throws as measure_stage does.
 StageMeasure measure(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options);
 
