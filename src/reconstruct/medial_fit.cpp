@@ -13,6 +13,7 @@
 
 #include "skelconv/field/support_box.hpp"
 #include "skelconv/reconstruct/medial_derivatives.hpp"
+#include "skelconv/reconstruct/medial_slope.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -312,6 +313,7 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
       MedialMesh trial = mesh;
       for (std::size_t i = 0; i < trial.spheres.size(); ++i)
         for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
+      limit_radius_slope(trial, o.max_radius_slope);
       Evaluation next = evaluate(trial, points, field_of, o.newton_steps);
       const double next_value = stage.objective(next);
       if (next_value < value && next.rms <= stage.rms_limit) {
@@ -361,6 +363,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   // spike of the reconstruction sticks out into empty space).
   const std::vector<Vec4> start = mesh.spheres;
   for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
+  limit_radius_slope(mesh, o.max_radius_slope);
   Evaluation now = evaluate(mesh, points, field_of, o.newton_steps);
   if (progress)
     progress(fmt::format("medial fit: RMS distance {:.4g}, largest {:.4g} before fitting ({} points on the surface, "
@@ -415,9 +418,22 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       return m;
     };
     const long long final_error = topology_error(mesh);
-    const long long allowed = final_error > 0 ? topology_error(at_round(0)) : final_error;
+    long long allowed = final_error;
+    std::size_t kept = 0;  // a round whose error is `allowed`
+    if (final_error > 0) {
+      allowed = topology_error(at_round(0));
+      // The unfitted spheres may be as far from it or farther (tubes
+      // thinner than the mesh come back in pieces before the fit thickens
+      // them), while the rounds between kept it better: the middle round
+      // is tested too.
+      const std::size_t middle = (history.size() - 1) / 2;
+      if (allowed >= final_error && middle > 0) {
+        const long long error = topology_error(at_round(middle));
+        if (error < final_error) allowed = error, kept = middle;
+      }
+    }
     if (final_error > allowed) {
-      std::size_t kept = 0, lost = history.size() - 1;
+      std::size_t lost = history.size() - 1;
       while (lost - kept > 1) {
         const std::size_t middle = (kept + lost) / 2;
         (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
@@ -426,9 +442,9 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       now = evaluate(mesh, points, field_of, o.newton_steps);
       r.rounds_kept = kept;
       if (progress)
-        progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than the "
-                             "unfitted spheres'; resumed after round {} (RMS distance {:.4g}) with each step tested",
-                             lost, history.size() - 1, kept, now.rms));
+        progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
+                             "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
+                             lost, history.size() - 1, kept, kept, now.rms));
       // The rounds taken of each stage up to `kept`.
       const std::size_t first_taken = r.rms.size() - 1;
       Guard guard{topology_error, allowed, o.topology_checks};

@@ -20,9 +20,11 @@
 // points); the normal equations (JᵀWJ + λ diag) Δθ = −JᵀWδ are solved by
 // Eigen's sparse LDLᵀ, each radius step clamped to [−r/2, r] and above
 // min_radius (radii stay positive), each centre step to a length of r/2,
-// and each centre to its starting ball (the medial ball, inside the input).
-// A step is kept only if it lowers the stage's objective (the first's: the
-// weighted RMS of δ; the second's: the L^p mean, within an RMS limit);
+// and each centre to its starting ball (the medial ball, inside the input);
+// then radii are lowered until no ball lies inside its neighbour's
+// (medial_slope.hpp). A step is kept only if it lowers the stage's
+// objective (the first's: the weighted RMS of δ; the second's: the L^p
+// mean, within an RMS limit);
 // otherwise it is retried with λ × 10, and a stage stops when none is kept
 // (its objective never rises). Neighbouring spheres share points, so a step
 // per sphere on its own points alone overshoots and stalls; the joint step
@@ -33,8 +35,8 @@
 // Inside points (optional) add a residual where the reconstruction has
 // left a point of the input's inside outside (a cavity); a topology error
 // (optional) sends the fit back to the last round that did not end farther
-// from the input's topology than it started, and resumes it from there
-// with each step tested.
+// from the input's topology than it started (or than its middle round,
+// where that was closer), and resumes it from there with each step tested.
 #pragma once
 
 #include <functional>
@@ -67,6 +69,10 @@ struct MedialFitOptions {
   /// it): a tube thinner than the resolution it is meshed at comes back in
   /// pieces, or not at all (docs/reconstruction_medial.md, "Topology").
   double min_radius = 0.0;
+  /// Along every edge of the mesh the radii differ by at most this × the
+  /// centres' distance (medial_slope.hpp: no ball inside its neighbour's,
+  /// as on a medial axis); each step's radii are lowered to keep it.
+  double max_radius_slope = 1.0;
   /// Newton steps along the gradient after the first, for each point's
   /// distance: where the field saturates (deep inside a crease the blend
   /// filled) the first-order distance falls short, by nearly half at the
