@@ -252,7 +252,7 @@ void Skeleton::prepare() const {
     // order).
     index->primitive_list = nodes_.size() == 1 && nodes_[root].blend.weights.empty() && !index->grids[root] &&
                             index->one_primitive_type[root];
-    if (index->primitive_list) {
+    if (index->primitive_list && primitives_.size() >= min_far_rule_segments) {
       for (const Primitive& primitive : primitives_) {
         const Segment* segment = std::get_if<Segment>(&primitive);
         if (segment == nullptr || segment->far_rule() == nullptr) {
