@@ -1,6 +1,7 @@
 // Implementation of skelconv/primitives/far_segment_rule.hpp.
 #include "skelconv/primitives/far_segment_rule.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -211,7 +212,9 @@ constexpr std::array<std::array<SumNodes, max_nodes / 2 + 1>, sizeof...(I) + 1> 
 
 std::optional<FarSegmentRule> FarSegmentRule::make(const Vec3& a, const Vec3& b, int degree, double s,
                                                    std::span<const double> weight) {
-  if (degree < 1 || degree > far_rule::max_degree || weight.empty() || weight.size() > 4) return std::nullopt;
+  if (degree < 1 || degree > far_rule::max_degree || weight.empty() || weight.size() > rule_weight_count) {
+    return std::nullopt;
+  }
   for (double w : weight) {
     if (!(w >= 0.0) || !std::isfinite(w)) return std::nullopt;
   }
@@ -224,7 +227,7 @@ std::optional<FarSegmentRule> FarSegmentRule::make(const Vec3& a, const Vec3& b,
   rule.degree_ = degree;
   rule.weight_degree_ = int(weight.size()) - 1;
   while (rule.weight_degree_ > 0 && weight[std::size_t(rule.weight_degree_)] == 0.0) --rule.weight_degree_;
-  for (std::size_t k = 0; k < weight.size(); ++k) rule.weight_[k] = weight[k];
+  std::copy(weight.begin(), weight.end(), rule.weight_.begin());
   // (s L²)^(i/2) / L, divided by w_0 where w is that constant.
   const double scaled = s * rule.length_ * rule.length_;
   double power = 1;
@@ -269,11 +272,6 @@ bool FarSegmentRule::evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSa
     out.gradient = Vec3::Zero();
   }
   return true;
-}
-
-bool FarSegmentRule::evaluate(const Vec3& p, double budget, bool gradient, FieldSample& out) const {
-  const int n = nodes(p, budget);
-  return n != 0 && evaluate_nodes(p, n, gradient, out);
 }
 
 }  // namespace skelconv

@@ -107,8 +107,6 @@ class FarSegmentRule {
   /// false (`out` unspecified) where the result would not be a normal double
   /// (the exact path then decides).
   bool evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const;
-  /// Both: false where nodes() gives 0 or evaluate_nodes() fails.
-  bool evaluate(const Vec3& p, double budget, bool gradient, FieldSample& out) const;
 
  private:
   FarSegmentRule() = default;
@@ -125,7 +123,8 @@ class FarSegmentRule {
   double length_ = 0, s_ = 0, inverse_s_ = 0;
   int degree_ = 0;  ///< i: q^(−i/2)
   int weight_degree_ = 0;
-  std::array<double, 4> weight_{};
+  static constexpr std::size_t rule_weight_count = 4;  ///< w_0 … w_3, as segments (segment.hpp)
+  std::array<double, rule_weight_count> weight_{};
   /// (s L²)^m / L, and √s L: the f budget over this is what the table's f
   /// bound must not exceed, and the ∇f one over this times it the table's ∇f
   /// bound (weight W divided out at each point where w is not constant).
