@@ -7,9 +7,11 @@
 // table row per run: triangles, total time, time inside the field (and the
 // number of evaluations and µs per evaluation), the rest (CGAL Mesh_3, the
 // box search, seeding and projection bookkeeping: "mesher"), and triangles
-// per second. The field is Skeleton::value, with the support index
-// (docs/field.md): compact primitives cost only where their support holds
-// the point, infinite-support (Cauchy) ones everywhere.
+// per second. The field is skeleton_field's, as `skelconv mesh` evaluates
+// it: Skeleton::value with the support index (docs/field.md: compact
+// primitives cost only where their support holds the point, infinite-support
+// ones everywhere) and the default tolerance (lists of 16 or more Cauchy
+// segments: docs/field.md, "Tolerance").
 //
 // Usage: skelconv_bench_mesh [--smoke] [--min-primitives N] [--max-primitives N]
 //                            [--size H] [--kind "segment compact"] [--method cgal|grid]

@@ -94,7 +94,8 @@ TriangleMesh triangle_mesh(const DoubleArray& vertices, const IndexArray& triang
 
 /// The surface f = iso (default: the skeleton's iso), as `skelconv mesh`.
 py::tuple mesh(const Skeleton& skeleton, std::optional<double> iso, const std::string& method,
-               std::optional<double> size, std::optional<double> distance, std::optional<std::size_t> max_triangles) {
+               std::optional<double> size, std::optional<double> distance, std::optional<std::size_t> max_triangles,
+               double tolerance) {
   if (method != "cgal" && method != "grid")
     throw InputError(fmt::format("{} not in {{cgal,grid}}", method), "method");
   MeshOptions options;
@@ -105,7 +106,7 @@ py::tuple mesh(const Skeleton& skeleton, std::optional<double> iso, const std::s
   if (max_triangles) options.max_triangles = *max_triangles;
   const TriangleMesh result = with_argument_names([&] {
     py::gil_scoped_release release;
-    return mesh_iso_surface(skeleton_field(skeleton), options);
+    return mesh_iso_surface(skeleton_field(skeleton, 4, tolerance), options);
   });
   return mesh_arrays(result);
 }
@@ -153,12 +154,14 @@ Skeleton skeletonize(const DoubleArray& vertices, const IndexArray& triangles,
 void add_mesh_bindings(py::module_& m, py::class_<Skeleton>& skeleton) {
   skeleton.def("mesh", &mesh, py::arg("iso") = py::none(), py::arg("method") = "cgal", py::arg("size") = py::none(),
                py::arg("distance") = py::none(), py::arg("max_triangles") = py::none(),
+               py::arg("tolerance") = Skeleton::default_tolerance,
                "The surface f = iso, as `skelconv mesh` (docs/mesh.md): returns (vertices (V, 3), triangles (T, 3) "
                "int32, counter-clockwise seen from outside, normals (V, 3) unit, outward).\n"
                "iso: default the skeleton's; method: \"cgal\" (closed manifold) or \"grid\" (OpenVDB, faster); "
                "size: largest facet circumradius (default box diagonal / 50); distance: largest facet-to-surface "
                "distance (default size / 10); max_triangles: refuse a size whose mesh would have more triangles "
-               "(default 4000000).");
+               "(default 4000000); tolerance: the field's relative tolerance (default 1e-12, 0: exact; "
+               "docs/field.md, \"Tolerance\").");
 
   m.def("mesh_topology", &topology, py::arg("vertices"), py::arg("triangles"),
         "What `skelconv mesh` prints about a mesh: a dict of triangles, vertices (used by a triangle), edges, "

@@ -34,7 +34,7 @@ namespace skelconv::python {
 namespace {
 
 /// f (N,) and ∇f (N, 3) at the rows of `points`, through evaluate_batch.
-py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned threads) {
+py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned threads, double tolerance) {
   require_rows_of(points, 3, "points");
   const auto n = static_cast<std::size_t>(points.shape(0));
   DoubleArray values(static_cast<py::ssize_t>(n));
@@ -47,6 +47,7 @@ py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned th
     py::gil_scoped_release release;
     BatchOptions options;
     options.threads = threads;
+    options.tolerance = tolerance;
     failure = evaluate_batch_into(skeleton, {in, 3 * n}, {f, n}, {g, 3 * n}, options);
   }
   if (failure) rethrow_located(failure->error, fmt::format("points[{}]", failure->index));
@@ -145,8 +146,10 @@ PYBIND11_MODULE(skelconv, m) {
       .def("__len__", &Skeleton::size, "The number of primitives.")
       .def_property_readonly("iso", &Skeleton::iso, "The level of the surface (the file's \"iso\", default 1).")
       .def("field", &field, py::arg("points"), py::arg("threads") = 0u,
+           py::arg("tolerance") = Skeleton::default_tolerance,
            "f (N,) and grad f (N, 3) at the rows of an (N, 3) array, on `threads` cores (0: all), as "
-           "`skelconv eval`.")
+           "`skelconv eval --tolerance`: within `tolerance` (default 1e-12) of f relative to f on lists of "
+           "Cauchy segments, 0 for the exact field (docs/field.md, \"Tolerance\").")
       .def(
           "value_and_gradient",
           [](const Skeleton& skeleton, const std::array<double, 3>& p) {

@@ -429,7 +429,8 @@ int main(int argc, char** argv) {
         }
         const double m = h * std::pow(s, -alpha) * std::pow(h * h * 0.98 * smallest, -alpha);
         for (int n = 1; n < best; ++n) {
-          if (64.0 / 15 * m * std::pow(r, -2.0 * n) / (r * r - 1) <= share) {
+          // n points: ATAP Thm 19.3 with its I_(n−1) (its I_m has m + 1 points): ρ^(2 − 2n).
+          if (64.0 / 15 * m * std::pow(r, 2.0 - 2.0 * n) / (r * r - 1) <= share) {
             best = n;
             break;
           }

@@ -77,7 +77,8 @@ class FieldAgreesWithCli(unittest.TestCase):
         for k, path in enumerate(GOOD):
             with self.subTest(skeleton=os.path.basename(path)):
                 points = random_points(path, 300, seed=k)
-                status, out, message = run_cli("eval", path, stdin=rows_text(points))
+                # field's default tolerance is eval's --tolerance (docs/field.md, "Tolerance").
+                status, out, message = run_cli("eval", path, "--tolerance", "1e-12", stdin=rows_text(points))
                 self.assertEqual(status, 0, message)
                 expected = cli_numbers(out, 4)
                 f, grad = skelconv.load_skeleton_file(path).field(points)

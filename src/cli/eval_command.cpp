@@ -68,10 +68,11 @@ PointList read_points(std::string_view input) {
 /// Evaluates every point line of `input` (all cores, field/batch.hpp),
 /// returning the output text. Throws InputError / EvaluationError located
 /// at "line N", the first failing line whatever the thread count.
-std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, unsigned threads) {
+std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, unsigned threads, double tolerance) {
   const PointList list = read_points(input);
   BatchOptions options;
   options.threads = threads;
+  options.tolerance = tolerance;
   const BatchResult result = evaluate_batch(skeleton, list.points, options);
   if (result.failure) rethrow_located(result.failure->error, fmt::format("line {}", list.line_numbers[result.failure->index]));
   if (list.bad_line) std::rethrow_exception(list.bad_line);
@@ -94,6 +95,9 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
   eval->add_option("--max-points", options.limits.max_points,
                    "Refuse more points than this (default 10000000): the points and their output lines are held "
                    "in memory until the last one is evaluated");
+  eval->add_option("--tolerance", options.tolerance,
+                   "Relative tolerance of the field (default 0: exact to rounding); > 0 lets Cauchy segments far "
+                   "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")");
   eval->footer(eval_footer);
   return eval;
 }
@@ -101,7 +105,8 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
 int run_eval(const EvalOptions& options) {
   return print_all_or_nothing([&] {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
-    return evaluate_lines(skeleton, read_point_input(stdin, options.limits), options.threads);
+    return evaluate_lines(skeleton, read_point_input(stdin, options.limits), options.threads,
+                          options.tolerance);
   });
 }
 

@@ -27,6 +27,7 @@ struct EvalOptions {
   std::string skeleton_path;
   unsigned threads = 0;  ///< --threads: 0 = every core (field/batch.hpp)
   PointInputLimits limits;  ///< --max-points (point_lines.hpp)
+  double tolerance = 0.0;   ///< --tolerance: Skeleton's tolerance mode, 0 = exact
 };
 
 /// Registers the `eval` subcommand on `app`, filling `options` when parsed.

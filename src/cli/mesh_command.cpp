@@ -83,6 +83,9 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
   mesh->add_option("--max-triangles", options.max_triangles,
                    "Refuse a --size whose mesh would have more triangles than this (estimated from the box "
                    "before meshing; default 4000000)");
+  mesh->add_option("--tolerance", options.tolerance,
+                   "Relative tolerance of the field (default 1e-12; 0: exact to rounding): Cauchy segments far "
+                   "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")");
   mesh->add_flag("--ascii", options.ascii, "Write ASCII PLY instead of binary");
   mesh->add_flag("--quiet", options.quiet, "No progress line on stderr");
   mesh->footer(mesh_footer);
@@ -106,7 +109,7 @@ int run_mesh(const MeshCommandOptions& options) {
       };
     }
     MeshReport report;
-    const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton), mesh_options, &report);
+    const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton, 4, options.tolerance), mesh_options, &report);
     write_mesh(mesh, options.output_path, options.ascii ? PlyEncoding::ascii : PlyEncoding::binary);
     return summary(mesh, report, options.output_path);
   });

@@ -18,6 +18,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "skelconv/skeleton/skeleton.hpp"
+
 namespace skelconv::cli {
 
 struct MeshCommandOptions {
@@ -30,6 +32,7 @@ struct MeshCommandOptions {
   std::optional<std::size_t> max_triangles;  ///< MeshOptions::max_triangles when set
   bool ascii = false;
   bool quiet = false;
+  double tolerance = Skeleton::default_tolerance;  ///< --tolerance (skeleton_field)
 };
 
 /// Registers the `mesh` subcommand on `app`, filling `options` when parsed.

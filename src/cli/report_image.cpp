@@ -8,6 +8,7 @@
 
 #include "raster_image.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
+#include "skelconv/reconstruct/surface_distance.hpp"
 #include "skelconv/reconstruct/surface_query.hpp"
 
 namespace skelconv::cli {
@@ -64,32 +65,6 @@ RasterImage skeleton_panel(const reconstruct::Stage& stage, const TriangleMesh& 
   return panel.downsampled(supersampling);
 }
 
-/// `mesh` with every triangle split uniformly (n × n pieces) until its
-/// edges are at most `edge` long, so that colours given per vertex follow a
-/// distance that varies inside a large flat face (a CAD part's, a
-/// tetrahedron's) instead of interpolating between its corners. Vertices
-/// are not shared between triangles: only for drawing.
-TriangleMesh refined(const TriangleMesh& mesh, double edge) {
-  TriangleMesh out;
-  for (const auto& t : mesh.triangles) {
-    const std::array<Vec3, 3> c = corners_of(mesh, t);
-    const double longest = std::max({(c[1] - c[0]).norm(), (c[2] - c[1]).norm(), (c[0] - c[2]).norm()});
-    const int n = std::clamp(int(std::ceil(longest / edge)), 1, 64);
-    const auto point = [&](int i, int j) { return c[0] + (double(i) / n) * (c[1] - c[0]) + (double(j) / n) * (c[2] - c[0]); };
-    const auto index = [&](int i, int j) {
-      out.vertices.push_back(point(i, j));
-      return std::int32_t(out.vertices.size() - 1);
-    };
-    for (int i = 0; i < n; ++i) {
-      for (int j = 0; i + j < n; ++j) {
-        out.triangles.push_back({index(i, j), index(i + 1, j), index(i, j + 1)});
-        if (i + j + 1 < n) out.triangles.push_back({index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
-      }
-    }
-  }
-  return out;
-}
-
 /// Each vertex's distance to the nearest point of `other`.
 std::vector<double> distances_to(const TriangleMesh& mesh, const TriangleMesh& other) {
   const reconstruct::SurfaceQuery query(other);
@@ -130,15 +105,17 @@ std::string report_image_png(const TriangleMesh& input, const reconstruct::Stage
   const TriangleMesh& result = measure.surface;
   const double diagonal = measure.distance.diagonal;
   // The input drawn finer than the result is meshed (diagonal / 100).
-  const TriangleMesh fine_input = refined(input, diagonal / 150);
+  const TriangleMesh fine_input = reconstruct::split_to_edge_length(input, reconstruct::dense_sample_spacing * diagonal);
   const std::vector<double> input_distance = distances_to(fine_input, result);
   const std::vector<double> result_distance = distances_to(result, input);
   double largest = 0.0;
   for (const double d : input_distance) largest = std::max(largest, d);
   for (const double d : result_distance) largest = std::max(largest, d);
-  // A surface that lies on the input (a sphere's one ball) still gets a
-  // scale: 0.01% of the diagonal at least.
-  largest = std::max(largest, 1e-4 * diagonal);
+  // The scale ends at the reported Hausdorff distance, which measures
+  // these same vertices (and random samples besides), so the picture and
+  // the numbers under it agree. A surface that lies on the input (a
+  // sphere's one ball) still gets a scale: 0.01% of the diagonal at least.
+  largest = std::max({largest, measure.distance.hausdorff, 1e-4 * diagonal});
 
   // Two rows: the front, and the back (the camera turned half round its up
   // direction), so that no part of either surface is out of sight.

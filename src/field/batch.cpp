@@ -61,11 +61,12 @@ std::optional<BatchFailure> run_blocks(std::size_t count, const BatchOptions& op
 }  // namespace
 
 BatchResult evaluate_batch(const Skeleton& skeleton, std::span<const Vec3> points, const BatchOptions& options) {
+  Skeleton::checked_tolerance(options.tolerance);  // a bad option is no point's failure
   skeleton.prepare();  // validates and builds the index before the threads share it
   BatchResult result;
   result.samples.resize(points.size());
   result.failure = run_blocks(points.size(), options, [&](std::size_t k) {
-    result.samples[k] = skeleton.value_and_gradient(points[k], options.acceleration);
+    result.samples[k] = skeleton.value_and_gradient(points[k], options.acceleration, options.tolerance);
   });
   return result;
 }
@@ -78,10 +79,12 @@ std::optional<BatchFailure> evaluate_batch_into(const Skeleton& skeleton, std::s
                                  "{}, {} and {}",
                                  xyz.size(), values.size(), gradients.size()));
   }
+  Skeleton::checked_tolerance(options.tolerance);
   skeleton.prepare();
   return run_blocks(values.size(), options, [&](std::size_t k) {
     const FieldSample s =
-        skeleton.value_and_gradient(Vec3(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]), options.acceleration);
+        skeleton.value_and_gradient(Vec3(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]), options.acceleration,
+                                    options.tolerance);
     values[k] = s.value;
     for (int c = 0; c < 3; ++c) gradients[3 * k + std::size_t(c)] = s.gradient[c];
   });

@@ -61,10 +61,13 @@ bool infinite_on_skeleton(const Skeleton& skeleton) {
 
 }  // namespace
 
-ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element) {
+ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element, double tolerance) {
+  Skeleton::checked_tolerance(tolerance);
   ImplicitField field;
-  field.value_and_gradient = [&skeleton](const Vec3& p) { return skeleton.value_and_gradient(p); };
-  field.value = [&skeleton](const Vec3& p) { return skeleton.value(p); };
+  field.value_and_gradient = [&skeleton, tolerance](const Vec3& p) {
+    return skeleton.value_and_gradient(p, tolerance);
+  };
+  field.value = [&skeleton, tolerance](const Vec3& p) { return skeleton.value(p, tolerance); };
   field.skeleton_points = skeleton.skeleton_points(points_per_element);
   field.far_field = 0.0;  // every kernel family (docs/mathematics.md §1, §4) decays to 0 at infinity
   field.support_boxes = support_boxes_of(skeleton);

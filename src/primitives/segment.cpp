@@ -120,6 +120,9 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
     prepared_.resize(generated_->prepared_size);
     generated_->prepare(input_, prepared_.data());
   }
+  if (kernel.family == KernelFamily::cauchy) {
+    far_rule_ = FarSegmentRule::make(a, b, kernel.degree, kernel.s, this->weight());
+  }
 }
 
 std::string Segment::generated_name() const { return generated_->name; }

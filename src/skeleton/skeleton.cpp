@@ -2,6 +2,8 @@
 #include "skelconv/skeleton/skeleton.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <type_traits>
@@ -64,6 +66,63 @@ void add_primitives_of_one_type(const std::vector<Primitive>& primitives, const 
     throw error.inside(locations[k]);
   } catch (const EvaluationError& error) {
     throw error.inside(locations[k]);
+  }
+}
+
+/// Segments whose rules are chosen before any is evaluated (a chunk on the
+/// stack): evaluated grouped by node count, each group's loops and calls
+/// alike from one segment to the next, which the processor predicts.
+constexpr std::size_t far_rule_chunk = 64;
+
+/// What add_primitives_of_one_type does for segments that all have a far
+/// rule (Segment::far_rule), in the tolerance mode (docs/field.md,
+/// "Tolerance"): f̲, the sum of the segments' lower bounds, is at most f, so
+/// granting each of the `count` segments an error of `tolerance` f̲ / count
+/// keeps the whole sum within `tolerance` f (and each component of ∇f within
+/// `tolerance` (i/2) √s f for the largest (i/2) √s). A segment whose rule
+/// would need more nodes than the longest takes the exact path. Within a
+/// chunk the terms are added by node count (the exact ones first), then
+/// in order: the same additions on every machine.
+template <class Need>
+void add_segments_within(const std::vector<Primitive>& primitives, const std::vector<std::string>& locations,
+                         const std::vector<FarSegmentRule>& rules, const Vec3& p, Need need, double tolerance,
+                         FieldSample& total) {
+  const std::size_t count = rules.size();
+  double lower = 0;
+  for (const FarSegmentRule& rule : rules) lower += rule.lower_bound(p);
+  const double budget = tolerance * lower / double(count);
+  constexpr std::size_t groups = FarSegmentRule::max_nodes / 2 + 1;  // 0 (exact), 2, 4, …, max_nodes nodes
+  std::size_t position = 0;  // the segment being evaluated
+  const auto add = [&](const FieldSample& term) {
+    if (need != Need::gradient) total.value += term.value;  // else the value is not asked for
+    if (need != Need::value) total.gradient += term.gradient;
+  };
+  try {
+    for (std::size_t first = 0; first < count; first += far_rule_chunk) {
+      const std::size_t size = std::min(far_rule_chunk, count - first);
+      std::array<std::uint8_t, far_rule_chunk> nodes;
+      std::array<std::uint8_t, far_rule_chunk> order;  // positions − first, grouped by node count
+      std::array<std::size_t, groups + 1> start{};
+      for (std::size_t k = 0; k < size; ++k) {
+        nodes[k] = std::uint8_t(budget > 0.0 ? rules[first + k].nodes(p, budget) : 0);
+        ++start[nodes[k] / 2 + 1];
+      }
+      for (std::size_t g = 1; g <= groups; ++g) start[g] += start[g - 1];
+      for (std::size_t k = 0; k < size; ++k) order[start[nodes[k] / 2]++] = std::uint8_t(k);
+      for (std::size_t j = 0; j < size; ++j) {
+        position = first + order[j];
+        FieldSample term;
+        const int n = nodes[order[j]];
+        if (n == 0 || !rules[position].evaluate_nodes(p, n, need != Need::value, term)) {
+          term = sample_of(*std::get_if<Segment>(&primitives[position]), p, need);
+        }
+        add(term);
+      }
+    }
+  } catch (const InputError& error) {
+    throw error.inside(locations[position]);
+  } catch (const EvaluationError& error) {
+    throw error.inside(locations[position]);
   }
 }
 
@@ -141,6 +200,13 @@ void Skeleton::set_iso(double iso) {
   iso_ = iso;
 }
 
+double Skeleton::checked_tolerance(double tolerance) {
+  if (!(tolerance >= 0.0 && tolerance < 1.0)) {
+    throw InputError(fmt::format("must be at least 0 (exact) and below 1, got {}", tolerance), "tolerance");
+  }
+  return tolerance;
+}
+
 void Skeleton::validate() const {
   for (NodeId id = 1; id < nodes_.size(); ++id) {  // the root may be empty: f = 0
     try {
@@ -186,6 +252,16 @@ void Skeleton::prepare() const {
     // order).
     index->primitive_list = nodes_.size() == 1 && nodes_[root].blend.weights.empty() && !index->grids[root] &&
                             index->one_primitive_type[root];
+    if (index->primitive_list && primitives_.size() >= min_far_rule_segments) {
+      for (const Primitive& primitive : primitives_) {
+        const Segment* segment = std::get_if<Segment>(&primitive);
+        if (segment == nullptr || segment->far_rule() == nullptr) {
+          index->far_rules.clear();
+          break;
+        }
+        index->far_rules.push_back(*segment->far_rule());
+      }
+    }
     cache.index = std::move(index);
     cache.built.store(true, std::memory_order_release);
   });
@@ -196,18 +272,23 @@ const detail::SkeletonIndex* Skeleton::index_for(Acceleration acceleration) cons
   return acceleration == Acceleration::indexed ? cache_->index.get() : nullptr;
 }
 
-FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration acceleration) const {
+FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration acceleration, double tolerance) const {
   // Checked once here, so that a bad point is not blamed on a primitive.
   detail::require_finite_query_point(p);
   const detail::SkeletonIndex* index = index_for(acceleration);
-  if (cache_->index->primitive_list) return evaluate_primitive_list(p, need);
-  return evaluate_node(root, p, need, index);
+  if (cache_->index->primitive_list) return evaluate_primitive_list(p, need, tolerance);
+  return evaluate_node(root, p, need, index);  // exact: the tolerance mode covers lists of segments only
 }
 
-FieldSample Skeleton::evaluate_primitive_list(const Vec3& p, Need need) const {
+FieldSample Skeleton::evaluate_primitive_list(const Vec3& p, Need need, double tolerance) const {
   // What evaluate_sum does for the root, without walking the tree.
   FieldSample total;
   bool marker = false;
+  if (tolerance > 0.0 && !cache_->index->far_rules.empty()) {
+    add_segments_within(primitives_, primitive_locations_, cache_->index->far_rules, p, need, tolerance, total);
+    require_finite_blend(total, need != Need::gradient, need != Need::value, "primitives", p);
+    return total;
+  }
   std::visit(
       [&](const auto& first) {
         add_primitives_of_one_type<std::decay_t<decltype(first)>>(
@@ -220,18 +301,26 @@ FieldSample Skeleton::evaluate_primitive_list(const Vec3& p, Need need) const {
   return total;
 }
 
-double Skeleton::value(const Vec3& p) const { return evaluate(p, Need::value, Acceleration::indexed).value; }
+double Skeleton::value(const Vec3& p) const { return evaluate(p, Need::value, Acceleration::indexed, 0.0).value; }
+
+double Skeleton::value(const Vec3& p, double tolerance) const {
+  return evaluate(p, Need::value, Acceleration::indexed, checked_tolerance(tolerance)).value;
+}
+
+FieldSample Skeleton::value_and_gradient(const Vec3& p, double tolerance) const {
+  return evaluate(p, Need::both, Acceleration::indexed, checked_tolerance(tolerance));
+}
 
 Vec3 Skeleton::gradient(const Vec3& p) const {
-  return evaluate(p, Need::gradient, Acceleration::indexed).gradient;
+  return evaluate(p, Need::gradient, Acceleration::indexed, 0.0).gradient;
 }
 
 FieldSample Skeleton::value_and_gradient(const Vec3& p) const {
-  return evaluate(p, Need::both, Acceleration::indexed);
+  return evaluate(p, Need::both, Acceleration::indexed, 0.0);
 }
 
-FieldSample Skeleton::value_and_gradient(const Vec3& p, Acceleration acceleration) const {
-  return evaluate(p, Need::both, acceleration);
+FieldSample Skeleton::value_and_gradient(const Vec3& p, Acceleration acceleration, double tolerance) const {
+  return evaluate(p, Need::both, acceleration, checked_tolerance(tolerance));
 }
 
 FieldSample Skeleton::evaluate_child(const Child& child, const Vec3& p, Need need,

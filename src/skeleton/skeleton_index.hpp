@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "skelconv/field/support_grid.hpp"
+#include "skelconv/primitives/far_segment_rule.hpp"
 
 namespace skelconv::detail {
 
@@ -22,6 +23,11 @@ struct SkeletonIndex {
   /// primitives of one type (Skeleton::evaluate_sum loops over them with
   /// that type's evaluation).
   std::vector<bool> one_primitive_type;
+  /// For a primitive list of segments that all have a far rule
+  /// (Segment::far_rule: Cauchy, no negative weight coefficient), copies of
+  /// those rules in order, side by side in memory for the tolerance mode's
+  /// passes over them; else empty.
+  std::vector<FarSegmentRule> far_rules;
   /// The skeleton is a list of primitives of one type: no blend node below
   /// the root, no weight, no grid (Skeleton::evaluate loops over the
   /// primitives without walking the tree).

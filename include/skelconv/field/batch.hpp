@@ -33,6 +33,9 @@ struct BatchOptions {
   /// to evaluating it, small enough to balance 2–64 threads on 10⁴ points.
   std::size_t block_size = 256;
   Skeleton::Acceleration acceleration = Skeleton::Acceleration::indexed;
+  /// The tolerance mode's relative tolerance (Skeleton::value_and_gradient;
+  /// docs/field.md, "Tolerance"); 0: exact.
+  double tolerance = 0.0;
 };
 
 struct BatchFailure {

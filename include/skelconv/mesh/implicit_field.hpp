@@ -14,10 +14,9 @@
 #include <vector>
 
 #include "skelconv/geometry.hpp"
+#include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv {
-
-class Skeleton;
 
 struct ImplicitField {
   /// f(p) and ∇f(p). May return +inf (on an inverse-kernel skeleton); may
@@ -55,7 +54,10 @@ struct ImplicitField {
 /// has compact support (field/support_box.hpp) and every blend node is a sum
 /// or a union: sums and maxima of exact zeros are zero (a super-elliptic
 /// node may add a constant where its children are 0, Ferley's r_k > c).
-/// enclosure is interval::enclose (interval/enclosure.hpp).
-ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element = 4);
+/// enclosure is interval::enclose (interval/enclosure.hpp). f and ∇f are
+/// Skeleton's tolerance mode at `tolerance` (0: exact; docs/field.md,
+/// "Tolerance"), the default for meshes.
+ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element = 4,
+                             double tolerance = Skeleton::default_tolerance);
 
 }  // namespace skelconv

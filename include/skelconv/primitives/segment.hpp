@@ -35,6 +35,7 @@
 
 #include <array>
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -43,6 +44,7 @@
 #include "skelconv/geometry.hpp"
 #include "skelconv/kernels/kernel_spec.hpp"
 #include "skelconv/detail/scaled_frame.hpp"
+#include "skelconv/primitives/far_segment_rule.hpp"
 #include "skelconv/primitives/segment_input.hpp"
 
 namespace skelconv {
@@ -100,6 +102,11 @@ class Segment {
   /// f(P) and ∇f(P) together; cheaper than both calls (shared terms).
   FieldSample value_and_gradient(const Vec3& p) const;
 
+  /// The short Gauss–Legendre rule of a Cauchy segment whose weight has no
+  /// negative coefficient (far_segment_rule.hpp), which Skeleton's tolerance
+  /// mode uses far from it; nullptr for every other segment.
+  const FarSegmentRule* far_rule() const { return far_rule_ ? &*far_rule_ : nullptr; }
+
  private:
   /// What an evaluation at P has to do (see the file comment).
   enum class Case {
@@ -140,6 +147,7 @@ class Segment {
   /// From the kernel's trait: K = 0 beyond this (+inf: no clip), and K(0) = +inf.
   double support_radius_ = 0.0;
   bool singular_at_zero_ = false;
+  std::optional<FarSegmentRule> far_rule_;
 };
 
 }  // namespace skelconv
