@@ -349,6 +349,35 @@ TEST(MedialSlope, NoBallInsideItsNeighbour) {
   EXPECT_EQ(m.spheres, within.spheres);
 }
 
+// A chain e–a–b–c–d, 0.1 apart, whose radii the fit left at 0.1, 1, 0.2,
+// 0.1 and 0.05, their centres 2, 1, 0.5, 0.15 and 0.01 from the input's
+// surface. Growing (largest first, each to at most its clearance): a (1)
+// asks e and b for 0.9; e takes 0.9, b its clearance 0.5; b asks c for 0.4,
+// c takes 0.15; c asks d for 0.05, d already has it (and is past its
+// clearance: it stays). Shrinking (smallest first): d 0.05 bounds c by
+// 0.15 (kept), c bounds b by 0.25, b bounds a by 0.35, a bounds e by 0.45.
+// Shrinking alone would end at 0.4, 0.3, 0.2, 0.1, 0.05: every ball but d
+// smaller.
+TEST(MedialSlope, TheSmallerBallGrowsWithinTheInputFirst) {
+  MedialMesh m;
+  m.spheres = {Vec4(-0.1, 0, 0, 0.1), Vec4(0, 0, 0, 1.0), Vec4(0.1, 0, 0, 0.2), Vec4(0.2, 0, 0, 0.1),
+               Vec4(0.3, 0, 0, 0.05)};
+  m.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}};
+  const std::vector<double> clearance = {2.0, 1.0, 0.5, 0.15, 0.01};
+  const Clearance room = [&](const Vec3& centre) {
+    for (std::size_t i = 0; i < m.spheres.size(); ++i)
+      if (centre == m.spheres[i].head<3>()) return clearance[i];
+    ADD_FAILURE() << "a clearance asked at a point that is no sphere's centre";
+    return 0.0;
+  };
+  const std::vector<double> expected = {0.45, 0.35, 0.25, 0.15, 0.05};
+  limit_radius_slope(m, 1.0, room);
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(m.spheres[i].w(), expected[i], 1e-12) << "sphere " << i;
+  const MedialMesh within = m;
+  limit_radius_slope(m, 1.0, room);
+  EXPECT_EQ(m.spheres, within.spheres);
+}
+
 // A foot (a capsule of radius 0.3) with a toe (a slab 0.12 thick, its
 // medial sheet 3 × 3 spheres) on a neck of radius 0.013, thinner than the
 // measuring mesh's facet (0.0178); the fit's points on the union's
@@ -356,7 +385,8 @@ TEST(MedialSlope, NoBallInsideItsNeighbour) {
 // its medial ball, its neighbours' balls inside it (on short triangles the
 // field falls as the radius grows), and moves the foot's end sphere into
 // the neck, the neck's first ball inside it. With the radii kept as a
-// medial axis's, no ball holds a neighbour's and the surface is one piece.
+// medial axis's (the larger ball shrunk, or the smaller first grown within
+// the input), no ball holds a neighbour's and the surface is one piece.
 // (Here that costs distance: the foot's end cannot reach into the neck,
 // and the RMS distance ends at 0.043 against 0.009 left alone.)
 TEST(MedialFit, ThinNeckAndSteepConesKeepTheToe) {
@@ -430,11 +460,18 @@ TEST(MedialFit, ThinNeckAndSteepConesKeepTheToe) {
   free.max_radius_slope = std::numeric_limits<double>::infinity();
   ASSERT_TRUE(swallows(fit_medial_mesh(m, points, {}, field_of, free, &report)))
       << "the case must be one the fit left alone gets wrong";
-  const MedialMesh fitted = fit_medial_mesh(m, points, {}, field_of, fit, &report);
-  EXPECT_FALSE(swallows(fitted));
-  Stage s;
-  s.medial = fitted;
-  EXPECT_EQ(mesh_topology(mesh_stage(box, s, o)).components, 1u);
+  // Shrinking the larger ball alone, and growing the smaller within the
+  // input first (its clearance: the distance to the union's surface).
+  const Clearance clearance = [&](const Vec3& p) { return std::max(0.0, -distance(p)); };
+  const MedialMesh shrunk = fit_medial_mesh(m, points, {}, field_of, fit, &report);
+  const MedialMesh grown = fit_medial_mesh(m, points, {}, field_of, fit, &report, {}, {}, clearance);
+  EXPECT_NE(shrunk.spheres, grown.spheres) << "growing within the input must change something here";
+  for (const MedialMesh& fitted : {shrunk, grown}) {
+    EXPECT_FALSE(swallows(fitted));
+    Stage s;
+    s.medial = fitted;
+    EXPECT_EQ(mesh_topology(mesh_stage(box, s, o)).components, 1u);
+  }
 }
 
 // --- The fit's derivatives (medial_derivatives.hpp) against central

@@ -137,6 +137,10 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "The medial fit also keeps the medial vertices at least 3 facets deep inside the result (a fit "
                     "that hollows a thick part out; better on some shapes, worse on others: "
                     "docs/reconstruction_medial.md, \"Inside points\")");
+  command->add_flag("--medial-grow-within-input", options.medial.grow_within_input,
+                    "Where the medial fit's radius bound finds a ball inside its neighbour's, it first grows the "
+                    "smaller up to its centre's distance to the input, then shrinks the larger (better on some "
+                    "shapes, worse on others: docs/reconstruction_medial.md, \"What limits it\")");
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "

@@ -300,7 +300,7 @@ struct Guard {
 void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoints& points,
                 const MedialField& field_of, const MedialFitOptions& o, const std::vector<Vec4>& start,
                 const Rounds& stage, std::vector<double>& values, std::vector<std::vector<Vec4>>& history,
-                Guard& guard, const std::function<void(std::string_view)>& progress) {
+                Guard& guard, const Clearance& clearance, const std::function<void(std::string_view)>& progress) {
   double value = stage.objective(now);
   if (values.empty()) values.push_back(value);
   for (int round = 1; round <= stage.rounds; ++round) {
@@ -313,7 +313,7 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
       MedialMesh trial = mesh;
       for (std::size_t i = 0; i < trial.spheres.size(); ++i)
         for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
-      limit_radius_slope(trial, o.max_radius_slope);
+      limit_radius_slope(trial, o.max_radius_slope, clearance);
       Evaluation next = evaluate(trial, points, field_of, o.newton_steps);
       const double next_value = stage.objective(next);
       if (next_value < value && next.rms <= stage.rms_limit) {
@@ -347,7 +347,8 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
 MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& surface_points,
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& o, MedialFitReport* report,
-                           const std::function<void(std::string_view)>& progress, const TopologyError& topology_error) {
+                           const std::function<void(std::string_view)>& progress, const TopologyError& topology_error,
+                           const Clearance& clearance) {
   MedialFitReport r;
   FitPoints points;
   points.all = surface_points;
@@ -363,7 +364,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   // spike of the reconstruction sticks out into empty space).
   const std::vector<Vec4> start = mesh.spheres;
   for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
-  limit_radius_slope(mesh, o.max_radius_slope);
+  limit_radius_slope(mesh, o.max_radius_slope, clearance);
   Evaluation now = evaluate(mesh, points, field_of, o.newton_steps);
   if (progress)
     progress(fmt::format("medial fit: RMS distance {:.4g}, largest {:.4g} before fitting ({} points on the surface, "
@@ -392,13 +393,14 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   const auto run_stages = [&](int first_rounds, int worst_rounds, Guard& guard) {
     if (first_rounds > 0 || r.rms.empty()) {  // the objective before the fit, rounds or not
       least_squares.rounds = first_rounds;
-      run_rounds(mesh, now, lambda, points, field_of, o, start, least_squares, r.rms, history, guard, progress);
+      run_rounds(mesh, now, lambda, points, field_of, o, start, least_squares, r.rms, history, guard, clearance,
+                 progress);
       first_stage_rms = now.rms;
     }
     if (worst_rounds > 0) {
       worst.rounds = worst_rounds;
       worst.rms_limit = (1.0 + o.worst_rms_growth) * first_stage_rms;
-      run_rounds(mesh, now, lambda, points, field_of, o, start, worst, r.worst, history, guard, progress);
+      run_rounds(mesh, now, lambda, points, field_of, o, start, worst, r.worst, history, guard, clearance, progress);
     }
   };
   Guard unguarded;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -14,6 +15,7 @@
 #include "skelconv/reconstruct/medial_quadric.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
+#include "skelconv/reconstruct/surface_query.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
@@ -139,11 +141,20 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   estimate.medial = mesh;
   const std::string too_much = over_measure_budget(measure_work(surface, estimate, o, 0.0), o.measure_budget);
   if (!too_much.empty() && o.progress) o.progress("medial fit: topology not guarded: " + too_much);
+  // With MedialOptions::grow_within_input, where a ball is out of the
+  // radius bound with its neighbour, the smaller first grows up to its
+  // centre's distance to the input's surface (medial_slope.hpp).
+  std::optional<SurfaceQuery> input;
+  Clearance clearance;
+  if (m.grow_within_input) {
+    input.emplace(surface);
+    clearance = [&input](const Vec3& centre) { return input->distance(centre); };
+  }
   MedialFitOptions fit = m.fit;
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
   if (!mesh.spheres.empty())
     stage.medial = fit_medial_mesh(mesh, points, inside, field_of, fit, &r.fit, o.progress,
-                                   too_much.empty() ? topology_error : TopologyError{});
+                                   too_much.empty() ? topology_error : TopologyError{}, clearance);
   for (auto& [spheres, surface_mesh] : meshed)
     if (spheres == stage.medial.spheres) stage.meshed = std::move(surface_mesh);
   stage.points = r.spheres = stage.medial.spheres.size();

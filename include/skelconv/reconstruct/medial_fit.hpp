@@ -22,7 +22,8 @@
 // min_radius (radii stay positive), each centre step to a length of r/2,
 // and each centre to its starting ball (the medial ball, inside the input);
 // then radii are lowered until no ball lies inside its neighbour's
-// (medial_slope.hpp). A step is kept only if it lowers the stage's
+// (medial_slope.hpp; with a clearance, the smaller ball of a pair first
+// grows within the input). A step is kept only if it lowers the stage's
 // objective (the first's: the weighted RMS of δ; the second's: the L^p
 // mean, within an RMS limit);
 // otherwise it is retried with λ × 10, and a stage stops when none is kept
@@ -45,6 +46,7 @@
 #include <vector>
 
 #include "skelconv/reconstruct/medial_mesh.hpp"
+#include "skelconv/reconstruct/medial_slope.hpp"
 #include "skelconv/reconstruct/weighted_point.hpp"
 #include "skelconv/skeleton/skeleton.hpp"
 
@@ -124,10 +126,13 @@ using TopologyError = std::function<long long(const MedialMesh&)>;
 /// SCALIS triangles (at the mean radius) and its isolated spheres' points,
 /// in that order, all of a compact kernel of even degree (as
 /// skeleton_file_text does). `progress` (if set) gets one line per round.
+/// `clearance` (if set), each centre's distance to the input's surface,
+/// lets the radius bound grow a smaller ball before it shrinks the larger
+/// (limit_radius_slope).
 MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& points,
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& options, MedialFitReport* report,
                            const std::function<void(std::string_view)>& progress = {},
-                           const TopologyError& topology_error = {});
+                           const TopologyError& topology_error = {}, const Clearance& clearance = {});
 
 }  // namespace skelconv::reconstruct

@@ -13,18 +13,37 @@
 // detached. The fitted radii are therefore kept within `slope` × the
 // centres' distance of each other along every edge of the mesh (tube edges
 // and triangle sides).
+//
+// Given each centre's clearance (its distance to the input's surface), a
+// pair out of the bound is mended from both ends where the input allows:
+// the smaller ball first grows, as far as the bound asks but not past its
+// clearance, then the larger shrinks by what is left. Shrinking alone sinks
+// a broad sheet whose radius falls steeply to its rim, where the smaller
+// balls are well inside the input; growing first cost as much elsewhere,
+// so the fit shrinks only by default (MedialOptions::grow_within_input).
 #pragma once
+
+#include <functional>
 
 #include "skelconv/reconstruct/medial_mesh.hpp"
 
 namespace skelconv::reconstruct {
 
-/// Lowers radii of `mesh` until |r_u − r_v| ≤ slope × |c_u − c_v| along every
-/// tube edge and triangle side: each radius becomes the smallest of r_v +
-/// slope × (the length of a path of edges from it to v) over the spheres v,
-/// its own radius included (the largest radii within the bound below the
-/// given ones; the spheres' centres and the smallest radius stay). Same
-/// mesh, same radii.
-void limit_radius_slope(MedialMesh& mesh, double slope);
+/// The distance from a point inside the input to the input's surface: the
+/// radius of the largest ball about it inside the input.
+using Clearance = std::function<double(const Vec3&)>;
+
+/// Keeps |r_u − r_v| ≤ slope × |c_u − c_v| along every tube edge and
+/// triangle side of `mesh`, the centres unmoved, in two passes:
+///  1. with `clearance`, each radius below its centre's clearance c_v grows
+///     to the largest of its own radius and min(c_v, r_u − slope × |c_u −
+///     c_v|) over its neighbours u, their radii themselves grown this way
+///     (never past c_v; a radius at or above c_v stays);
+///  2. each radius becomes the smallest of r_v + slope × (the length of a
+///     path of edges from it to v) over the spheres v, its own radius
+///     included (the largest radii within the bound below those of pass 1;
+///     the smallest radius stays).
+/// Same mesh, same radii; radii already within the bound stay.
+void limit_radius_slope(MedialMesh& mesh, double slope, const Clearance& clearance = {});
 
 }  // namespace skelconv::reconstruct
