@@ -15,10 +15,11 @@
 //    least √2 from the real axis in units of |AB|): the moment relations
 //    lose a factor ~ D/a² per step there (the kernel is nearly flat), while
 //    the rule's error, for an integrand with a pole of order m/2 outside the
-//    Bernstein ellipse of parameter ρ ≥ 5.8, is below N^(m/2) ρ^(−2N) ≈ 1e-19
-//    with N = 20 (Trefethen, Approximation Theory and Approximation
-//    Practice, ch. 19). The verifier checks both claims against quadrature
-//    of the definition;
+//    Bernstein ellipse of parameter ρ ≥ 5.8, is below 2^−55 of the integral
+//    with N = 20 (the N-point rule's bound (64/15) M ρ^(2−2N)/(ρ² − 1) of
+//    Trefethen, Approximation Theory and Approximation Practice, Thm 19.3:
+//    far_field_min_y_20_nodes below). The verifier checks both claims
+//    against quadrature of the definition;
 //  * SCALIS segments (weights τ(t)^(i−1), moments up to t^10), wherever P is
 //    not near the line beside the segment: segment_moments_gauss_panels
 //    below, on panels graded towards the roots of q.
