@@ -20,6 +20,7 @@
 #include "segment_families.hpp"
 #include "segment_moments.hpp"
 #include "skelconv/detail/far_field_series.hpp"
+#include "skelconv/detail/gauss_moments.hpp"
 
 namespace skelconv::codegen {
 
@@ -353,6 +354,15 @@ class SegmentProgramBuilder {
     // less exact than the rule's (3.6e-14 against 4.7e-15, Cauchy i9 w2,
     // 1e-4 |AB| from the line). The test of c − β adds no temporary, so the
     // rest of the generated code keeps its names and GiNaC its order of terms.
+    // Where the branch leaves the moments to the 20-point rule, its error
+    // bound (gauss_moments.hpp: far_field_min_y_20_nodes, poles at
+    // imaginary distance y = 2√D/a; beyond_end_min_z_20_nodes, at distance
+    // |z| from the midpoint in any direction) is ≤ 2^−55 of the integral:
+    // D ≥ 2a² puts the poles at y² = 4D/a² ≥ 8; t* ≥ 3 or ≤ −2 at |z| ≥ 5;
+    // the series' range at |z|² = 1/ρ² ≥ 1/ρ²_max.
+    static_assert(8 >= detail::squared(far_field_min_y_20_nodes));
+    static_assert(5 >= beyond_end_min_z_20_nodes);
+    static_assert(1 / detail::far_series_max_rho2 >= detail::squared(beyond_end_min_z_20_nodes));
     const ex kappa = far_series_flat_kappa(highest_level());
     Alternative flat{{maximum(maximum(D_ - 2 * pow(a_, 2), maximum(b_ - 3 * a_, -b_ - 2 * a_)),
                               c_ - beta_ - b_ - kappa * a_)},

@@ -84,7 +84,7 @@ void scalis_segment_cauchy_i2_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i2_prepare); operations per point.
 /// Operations: 40 +, 49 ×, 2 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 54178 +, 60109 ×, 20001 /, 539 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 70048 +, 78624 ×, 25291 /, 539 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -178,7 +178,7 @@ T scalis_segment_cauchy_i2_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i2_prepare); operations per point.
 /// Operations: 55 +, 81 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 43610 +, 58839 ×, 10050 /, 270 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 56610 +, 77039 ×, 12650 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i2_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -303,7 +303,7 @@ std::array<T, 3> scalis_segment_cauchy_i2_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−2/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|² + σ²τ²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i2_prepare); operations per point.
 /// Operations: 57 +, 90 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 43611 +, 58843 ×, 10050 /, 270 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 56611 +, 77043 ×, 12650 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i2_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -501,7 +501,7 @@ void scalis_segment_cauchy_i3_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i3_prepare); operations per point.
 /// Operations: 43 +, 64 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 41672 +, 56487 ×, 13369 /, 5787 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 53922 +, 73987 ×, 16869 /, 7537 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -614,7 +614,7 @@ T scalis_segment_cauchy_i3_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i3_prepare); operations per point.
 /// Operations: 59 +, 110 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 41509 +, 63533 ×, 8052 /, 3488 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 53869 +, 83103 ×, 10112 /, 4518 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i3_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -749,7 +749,7 @@ std::array<T, 3> scalis_segment_cauchy_i3_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−3/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|² + σ²τ²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i3_prepare); operations per point.
 /// Operations: 64 +, 132 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 41512 +, 63547 ×, 8053 /, 3488 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 53872 +, 83117 ×, 10113 /, 4518 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i3_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -975,7 +975,7 @@ void scalis_segment_cauchy_i4_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i4_prepare); operations per point.
 /// Operations: 50 +, 78 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 35440 +, 42496 ×, 10048 /, 270 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 45840 +, 55496 ×, 12648 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1081,7 +1081,7 @@ T scalis_segment_cauchy_i4_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i4_prepare); operations per point.
 /// Operations: 69 +, 134 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 40134 +, 53064 ×, 6720 /, 180 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 52034 +, 69214 ×, 8420 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_cauchy_i4_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1216,7 +1216,7 @@ std::array<T, 3> scalis_segment_cauchy_i4_grad(const T* pre, const std::array<T,
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−4/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|² + σ²τ²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i4_prepare); operations per point.
 /// Operations: 75 +, 159 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 40137 +, 53074 ×, 6720 /, 180 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 52037 +, 69224 ×, 8420 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i4_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1436,7 +1436,7 @@ void scalis_segment_cauchy_i5_prepare(const ScalisSegmentInput<T>& in, T* pre) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (1 + (d/σ)²)^(−5/2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|² + σ²τ²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_cauchy_i5_prepare); operations per point.
 /// Operations: 55 +, 108 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 31689 +, 47159 ×, 8051 /, 3488 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 40959 +, 61579 ×, 10111 /, 4518 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_cauchy_i5_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

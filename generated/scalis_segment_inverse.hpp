@@ -71,7 +71,7 @@ void scalis_segment_inverse_i2_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i2_prepare); operations per point.
 /// Operations: 29 +, 42 ×, 2 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 54167 +, 60102 ×, 20001 /, 539 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 70037 +, 78617 ×, 25291 /, 539 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -148,7 +148,7 @@ T scalis_segment_inverse_i2_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i2_prepare); operations per point.
 /// Operations: 40 +, 66 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 43595 +, 58824 ×, 10050 /, 270 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 56595 +, 77024 ×, 12650 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i2_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -249,7 +249,7 @@ std::array<T, 3> scalis_segment_inverse_i2_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−2), τ(t) = τ0 + (τ1 − τ0) t  [= σ^2 |AB| ∫_0^1 τ^1 (|P − Γ|²)^(−2/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i2_prepare); operations per point.
 /// Operations: 42 +, 75 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 43596 +, 58828 ×, 10050 /, 270 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 56596 +, 77028 ×, 12650 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i2_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -411,7 +411,7 @@ void scalis_segment_inverse_i3_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i3_prepare); operations per point.
 /// Operations: 33 +, 56 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 41662 +, 56479 ×, 13369 /, 5787 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 53912 +, 73979 ×, 16869 /, 7537 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -508,7 +508,7 @@ T scalis_segment_inverse_i3_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i3_prepare); operations per point.
 /// Operations: 45 +, 95 ×, 3 /, 2 sqrt, 0 atan, 0 log/asinh (generic form).
-/// Longest path: 41495 +, 63518 ×, 8052 /, 3488 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 53855 +, 83088 ×, 10112 /, 4518 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i3_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -621,7 +621,7 @@ std::array<T, 3> scalis_segment_inverse_i3_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−3), τ(t) = τ0 + (τ1 − τ0) t  [= σ^3 |AB| ∫_0^1 τ^2 (|P − Γ|²)^(−3/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i3_prepare); operations per point.
 /// Operations: 50 +, 116 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 41498 +, 63531 ×, 8053 /, 3488 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 53858 +, 83101 ×, 10113 /, 4518 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i3_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -811,7 +811,7 @@ void scalis_segment_inverse_i4_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i4_prepare); operations per point.
 /// Operations: 39 +, 71 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 35429 +, 42489 ×, 10048 /, 270 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 45829 +, 55489 ×, 12648 /, 270 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -899,7 +899,7 @@ T scalis_segment_inverse_i4_f(const T* pre, const std::array<T, 3>& p) {
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i4_prepare); operations per point.
 /// Operations: 54 +, 119 ×, 4 /, 1 sqrt, 1 atan, 0 log/asinh (generic form).
-/// Longest path: 40119 +, 53049 ×, 6720 /, 180 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 52019 +, 69199 ×, 8420 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 std::array<T, 3> scalis_segment_inverse_i4_grad(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1010,7 +1010,7 @@ std::array<T, 3> scalis_segment_inverse_i4_grad(const T* pre, const std::array<T
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−4), τ(t) = τ0 + (τ1 − τ0) t  [= σ^4 |AB| ∫_0^1 τ^3 (|P − Γ|²)^(−4/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i4_prepare); operations per point.
 /// Operations: 60 +, 144 ×, 4 /, 1 sqrt, 1 atan, 1 log/asinh (generic form).
-/// Longest path: 40122 +, 53059 ×, 6720 /, 180 sqrt, 0 atan, 0 log/asinh.
+/// Longest path: 52022 +, 69209 ×, 8420 /, 180 sqrt, 0 atan, 0 log/asinh.
 template <class T>
 T scalis_segment_inverse_i4_f_and_grad(const T* pre, const std::array<T, 3>& p, std::array<T, 3>& grad) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1192,7 +1192,7 @@ void scalis_segment_inverse_i5_prepare(const ScalisSegmentInput<T>& in, T* pre) 
 ///     F(P) = ∫_0^1 K(|P − Γ(t)|/τ(t)) |AB| dt/τ(t), K(d) = (d/σ)^(−5), τ(t) = τ0 + (τ1 − τ0) t  [= σ^5 |AB| ∫_0^1 τ^4 (|P − Γ|²)^(−5/2) dt; docs/mathematics.md §4, Zanni 2013 eq. 13, Table 3]
 /// At one point, from the segment's pre[] (scalis_segment_inverse_i5_prepare); operations per point.
 /// Operations: 45 +, 100 ×, 4 /, 2 sqrt, 0 atan, 1 log/asinh (generic form).
-/// Longest path: 31679 +, 47151 ×, 8051 /, 3488 sqrt, 0 atan, 1 log/asinh.
+/// Longest path: 40949 +, 61571 ×, 10111 /, 4518 sqrt, 0 atan, 1 log/asinh.
 template <class T>
 T scalis_segment_inverse_i5_f(const T* pre, const std::array<T, 3>& p) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;

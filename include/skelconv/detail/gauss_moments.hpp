@@ -15,10 +15,11 @@
 //    least √2 from the real axis in units of |AB|): the moment relations
 //    lose a factor ~ D/a² per step there (the kernel is nearly flat), while
 //    the rule's error, for an integrand with a pole of order m/2 outside the
-//    Bernstein ellipse of parameter ρ ≥ 5.8, is below N^(m/2) ρ^(−2N) ≈ 1e-19
-//    with N = 20 (Trefethen, Approximation Theory and Approximation
-//    Practice, ch. 19). The verifier checks both claims against quadrature
-//    of the definition;
+//    Bernstein ellipse of parameter ρ ≥ 5.8, is below 2^−55 of the integral
+//    with N = 20 (the N-point rule's bound (64/15) M ρ^(2−2N)/(ρ² − 1) of
+//    Trefethen, Approximation Theory and Approximation Practice, Thm 19.3:
+//    far_field_min_y_20_nodes below). The verifier checks both claims
+//    against quadrature of the definition;
 //  * SCALIS segments (weights τ(t)^(i−1), moments up to t^10), wherever P is
 //    not near the line beside the segment: segment_moments_gauss_panels
 //    below, on panels graded towards the roots of q.
@@ -312,9 +313,10 @@ void segment_moments_between_roots(int m_lo, int m_hi, int k_max, const T& minus
 /// [t0, t1].
 ///
 /// The bound (Trefethen, Approximation Theory and Approximation Practice,
-/// Theorem 19.3): on [−1, 1] (x = (2t − t0 − t1)/(t1 − t0)) the N-point
-/// rule errs by at most (64/15) M r^(−2N)/(r² − 1) for an integrand
-/// analytic inside the Bernstein ellipse E_r, |integrand| ≤ M there. The
+/// Theorem 19.3, whose I_n is the (n + 1)-point rule, exact to degree
+/// 2n + 1): on [−1, 1] (x = (2t − t0 − t1)/(t1 − t0)) the N-point rule
+/// errs by at most (64/15) M r^(2−2N)/(r² − 1) for an integrand analytic
+/// inside the Bernstein ellipse E_r, |integrand| ≤ M there. The
 /// poles sit at imaginary distance y = 2√D/(a (t1 − t0)) from the real axis
 /// in x, and at any real position x*. For each N the constant below is the
 /// smallest y for which that bound, minimised over r (E_r inside the pole's
@@ -324,15 +326,18 @@ void segment_moments_between_roots(int m_lo, int m_hi, int k_max, const T& minus
 /// kernels' range: k ≤ 4 for weight degree 3 and ∇f, m ≤ i + 2 for i ≤ 16):
 /// computed by bench/tools/far_field_bound.cpp (scans ∂E_r at 256 points,
 /// r at 40 steps, the integral by 8 panels of the 30-point rule); the
-/// minimal y were 21.4 (N = 7), 6.97 (N = 10), 2.97 (N = 15), 1.89
+/// minimal y are 41.05 (N = 7), 9.268 (N = 10), 3.357 (N = 15), 2.031
 /// (N = 20), rounded up here. The generated far branch starts at D ≥ 2a²,
-/// y = 2√2 ≈ 2.83 on [0, 1], inside the 20-node range. D = ac − b² is
+/// y = 2√2 ≈ 2.83 on [0, 1], inside the 20-node range (the generator
+/// checks it against far_field_min_y_20_nodes). D = ac − b² is
 /// formed here without the generated code's cross product: its rounding
 /// (~ε ac) matters only for a pole more than 100 |AB| along the line, where
-/// |z| ≥ 100 puts E_r for any N ≥ 7 far inside the pole's ellipse anyway.
-inline constexpr double far_field_min_y_7_nodes = 22.0;
-inline constexpr double far_field_min_y_10_nodes = 7.0;
-inline constexpr double far_field_min_y_15_nodes = 3.0;
+/// |z| ≥ 100 puts E_r for any N ≥ 10 far inside the pole's ellipse anyway
+/// (|z| ≥ 19.1 suffices for 10 nodes, below).
+inline constexpr double far_field_min_y_7_nodes = 41.1;
+inline constexpr double far_field_min_y_10_nodes = 9.3;
+inline constexpr double far_field_min_y_15_nodes = 3.4;
+inline constexpr double far_field_min_y_20_nodes = 2.1;
 
 /// Nodes per panel of segment_moments_gauss_panels: on an accepted panel
 /// the rule errs by ~ρ^(−2N) ≤ 4^(−2N) times a factor for the poles' order
@@ -399,21 +404,24 @@ void add_far_field_moments(int m_lo, int m_hi, int k_max, const QuadraticAt& q_a
 /// distance |z| from the midpoint in x = 2t − 1, in any direction (on the
 /// real axis too). The smallest |z| at which the N-point rule's bound (as
 /// above, now over every direction of the pole: bench/tools/
-/// far_field_bound.cpp --radius) is ≤ 2^−55: 49.3 (N = 7), 13.7 (N = 10),
-/// 5.04 (N = 15), 3.04 (N = 20), rounded up here. |z|² = 4 q(½)/a.
-inline constexpr double beyond_end_min_z_7_nodes = 50.0;
-inline constexpr double beyond_end_min_z_10_nodes = 14.0;
-inline constexpr double beyond_end_min_z_15_nodes = 5.1;
-inline constexpr double beyond_end_min_z_20_nodes = 3.1;
+/// far_field_bound.cpp --radius) is ≤ 2^−55: 102.1 (N = 7), 19.09
+/// (N = 10), 5.825 (N = 15), 3.29 (N = 20), rounded up here.
+/// |z|² = 4 q(½)/a.
+inline constexpr double beyond_end_min_z_7_nodes = 102.2;
+inline constexpr double beyond_end_min_z_10_nodes = 19.1;
+inline constexpr double beyond_end_min_z_15_nodes = 5.9;
+inline constexpr double beyond_end_min_z_20_nodes = 3.3;
 /// Where the rule is used instead of the recurrence: |z| ≥ 14 (P at least
-/// 7 |AB| from the midpoint), not from 3.1 where the bound first allows it.
-/// Between 3.1 and 14 the recurrence's cancellation is below 8e-14 (measured
+/// 7 |AB| from the midpoint; 15 nodes up to |z| = 19.1, then 10, then 7),
+/// not from 3.3 where the bound first allows it.
+/// Between 3.3 and 14 the recurrence's cancellation is below 8e-14 (measured
 /// above), and the rule did not do better on f: the verifier's default sweep
 /// measured 1.0e-13 for inverse i = 2, weights t³, at |z| ≈ 6.9 (generic
 /// region) with the rule, 5.1e-14 with the recurrence, 9.6e-15 with an exact
 /// preamble (the error there comes from the rounded q_near, b_near, which
 /// both forms inherit). Lower this once the preamble computes them exactly.
 inline constexpr double beyond_end_rule_min_z = 14.0;
+static_assert(beyond_end_rule_min_z >= beyond_end_min_z_20_nodes, "the rule's bound must hold where it is used");
 namespace detail {
 /// M_{k,m} on [0, 1] (layout of segment_moments_gauss) for P beyond an end,
 /// by the rule with the fewest nodes the bound above allows, when it allows
@@ -543,31 +551,32 @@ void pole_too_close(const T& distance) {
 /// (k_max > 4: kernels of degree 6 and above with ∇f), derived as the
 /// constants above with weights k ≤ 10 and orders m ≤ 18
 /// (bench/tools/far_field_bound.cpp --panels, and --panels --radius):
-/// y ≥ 161.8 (N = 7), 11.46 (10), 3.28 (15); |z| ≥ 461.6 (7), 27.2
-/// (10), 6.21 (15), 3.32 (20); rounded up here. With k_max ≤ 4 the
+/// y ≥ 1749 (N = 7), 19.41 (10), 3.836 (15), 2.098 (20); |z| ≥ 6446 (7),
+/// 49.39 (10), 7.509 (15), 3.652 (20); rounded up here. With k_max ≤ 4 the
 /// classical constants above hold (their weights and orders cover the
 /// SCALIS panels' m ≤ 12).
-inline constexpr double panel_high_weight_min_y_7_nodes = 162.0;
-inline constexpr double panel_high_weight_min_y_10_nodes = 11.5;
-inline constexpr double panel_high_weight_min_y_15_nodes = 3.3;
-inline constexpr double panel_high_weight_min_z_7_nodes = 462.0;
-inline constexpr double panel_high_weight_min_z_10_nodes = 27.3;
-inline constexpr double panel_high_weight_min_z_15_nodes = 6.3;
+inline constexpr double panel_high_weight_min_y_7_nodes = 1750.0;
+inline constexpr double panel_high_weight_min_y_10_nodes = 19.5;
+inline constexpr double panel_high_weight_min_y_15_nodes = 3.9;
+inline constexpr double panel_high_weight_min_z_7_nodes = 6450.0;
+inline constexpr double panel_high_weight_min_z_10_nodes = 49.4;
+inline constexpr double panel_high_weight_min_z_15_nodes = 7.6;
 
 /// The SCALIS panels' node counts when the weights go up to t^4 and the
 /// orders only up to m = 6 (SCALIS inverse and Cauchy kernels of degree ≤ 4,
 /// f and ∇f), derived as the classical constants above with weights
 /// k ≤ 4 and orders m ≤ 6 (bench/tools/far_field_bound.cpp --low-order,
-/// and --low-order --radius): y ≥ 14.83 (N = 7), 5.04 (10), 2.229 (15);
-/// |z| ≥ 24.08 (7), 7.48 (10), 3.17 (15); rounded up here. A pole of
+/// and --low-order --radius): y ≥ 27.97 (N = 7), 6.626 (10), 2.508 (15),
+/// 1.553 (20); |z| ≥ 47.71 (7), 10.06 (10), 3.571 (15), 2.256 (20);
+/// rounded up here. A pole of
 /// lower order leaves a flatter integrand on the Bernstein ellipses, so the
 /// same bound holds with fewer nodes.
-inline constexpr double panel_low_order_min_y_7_nodes = 14.9;
-inline constexpr double panel_low_order_min_y_10_nodes = 5.1;
-inline constexpr double panel_low_order_min_y_15_nodes = 2.3;
-inline constexpr double panel_low_order_min_z_7_nodes = 24.1;
-inline constexpr double panel_low_order_min_z_10_nodes = 7.5;
-inline constexpr double panel_low_order_min_z_15_nodes = 3.2;
+inline constexpr double panel_low_order_min_y_7_nodes = 28.0;
+inline constexpr double panel_low_order_min_y_10_nodes = 6.7;
+inline constexpr double panel_low_order_min_y_15_nodes = 2.6;
+inline constexpr double panel_low_order_min_z_7_nodes = 47.8;
+inline constexpr double panel_low_order_min_z_10_nodes = 10.1;
+inline constexpr double panel_low_order_min_z_15_nodes = 3.6;
 
 namespace detail {
 /// The squared thresholds of panel_nodes for one call of

@@ -60,8 +60,9 @@
 //        length ℓ costs ~log2(ℓ/δ) panels. (With two root ends, each square
 //        half sees the other root at ρ = 3.36: one panel each.)
 //    Error bound (Trefethen, Approximation Theory and Approximation Practice,
-//    Thm 19.3): for f analytic in the Bernstein ellipse E_ρ with |f| ≤ M
-//    there, the N-point rule errs by ≤ (64/15) M ρ^(−2N) / (ρ² − 1). On an
+//    Thm 19.3, whose I_n has n + 1 points): for f analytic in the Bernstein
+//    ellipse E_ρ with |f| ≤ M there, the N-point rule errs by
+//    ≤ (64/15) M ρ^(2−2N) / (ρ² − 1). On an
 //    accepted panel the nearest singularity is on or outside E_4. The rule's
 //    error on the bare pole (x0 − x)^(−(i+1)), x0 on E_4, is 9e-16 for i = 10
 //    and N = 20, 6e-21 for N = 25, 3e-26 for N = 30, 1e-33 for N = 40

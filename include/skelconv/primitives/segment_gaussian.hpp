@@ -49,8 +49,9 @@
 //    c h² ≤ 1/2 (φ grows by 2 = 2hφ'(mid) ≥ 4ch² across it), so on the
 //    Bernstein ellipse E_ρ (|u| ≤ (ρ + 1/ρ)/2) |e^(−φ)| ≤ e^(−φ(mid)) e^(|u| +
 //    |u|²/2); with ρ = 10.4 that factor is e^18.6 and 16-point
-//    Gauss–Legendre errs by < (64/15) e^18.6 ρ^(−32)/(ρ² − 1) ≈ 1e-25 times
-//    e^(−φ(mid)) h (Trefethen, ATAP Thm 19.3; the x^j factor, j ≤ 4, adds
+//    Gauss–Legendre errs by < (64/15) e^18.6 ρ^(−30)/(ρ² − 1) ≈ 1.5e-24 times
+//    e^(−φ(mid)) h (Trefethen, ATAP Thm 19.3, whose I_n has n + 1 points, so
+//    ρ^(2−2N) for N points; the x^j factor, j ≤ 4, adds
 //    at most (1 + |u|)^4 ≈ 2e3 on the first panel): far below rounding.
 //    Beyond exponent 60 the tail is below 60^4 e^(−60)/4! ≈ 5e-21 of H_j.
 //    The nodes are computed in T (Newton on P_12), so a binary128 instance
