@@ -335,13 +335,6 @@ bool FarSegmentRule::finish(const Vec3& a, const Vec3& b, int degree) {
   return true;
 }
 
-double FarSegmentRule::weight_bound(double focal_sum) const {
-  const double radius = 0.5 + 0.25 * focal_sum;
-  double w = integrand_.w[std::size_t(integrand_.weight_degree)];
-  for (int k = integrand_.weight_degree - 1; k >= 0; --k) w = w * radius + integrand_.w[std::size_t(k)];
-  return w * far_rule::power(bound_base_ + bound_slope_ * radius, bound_power_);
-}
-
 bool FarSegmentRule::evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const {
   using far_rule::sum_nodes_table;
   static constexpr auto values = sum_nodes_table<false, false>(std::make_integer_sequence<int, far_rule::max_degree>{});

@@ -123,12 +123,19 @@ class FarSegmentRule {
     if (weight_varies_) f_allowed /= weight_bound(focal_sum);
     const double gradient_allowed = f_allowed * gradient_factor_;
     const FarRuleBin& bound = bins_[bin_of(focal_sum)];
-    // The bounds decrease with n: the even rules that fail are 2 … n − 2.
-    int n = 2;
-    for (std::size_t k = 2; k <= std::size_t(longest_); k += 2) {
-      n += 2 * int(!(bound.f[k] <= f_allowed) | !(bound.gradient[k] <= gradient_allowed));
+    // The bounds decrease with n, so the rules that fit are the even n from
+    // some 2 j on: bisect for j in 1 … longest_/2 (longest_/2 + 1: none fits),
+    // with fit(low) false (low = 0 stands for that) and high fitting or past
+    // the end. Four halvings for 20 nodes, where a scan took ten steps.
+    int low = 0, high = longest_ / 2 + 1;
+    while (high - low > 1) {
+      const int middle = (low + high) / 2;
+      const std::size_t n = std::size_t(2 * middle);
+      // Both comparisons always (&, not &&): no branch to mispredict.
+      const bool fits = (bound.f[n] <= f_allowed) & (bound.gradient[n] <= gradient_allowed);
+      (fits ? high : low) = middle;
     }
-    return n > longest_ ? 0 : n;
+    return 2 * high > longest_ ? 0 : 2 * high;
   }
   /// f(P) and, with `gradient`, ∇f(P) by the n-node rule (n from nodes());
   /// false (`out` unspecified) where the result would not be a normal double
@@ -154,7 +161,14 @@ class FarSegmentRule {
   /// one of them is not a normal double.
   bool finish(const Vec3& a, const Vec3& b, int degree);
   /// W(S) (file comment): |ω| ≤ Ω W on the ellipse.
-  double weight_bound(double focal_sum) const;
+  double weight_bound(double focal_sum) const {
+    const double radius = 0.5 + 0.25 * focal_sum;
+    double w = integrand_.w[std::size_t(integrand_.weight_degree)];
+    for (int k = integrand_.weight_degree - 1; k >= 0; --k) w = w * radius + integrand_.w[std::size_t(k)];
+    const double linear = bound_base_ + bound_slope_ * radius;
+    for (int k = 0; k < bound_power_; ++k) w *= linear;
+    return w;
+  }
   /// The bin whose lower edge is the largest at or below S (S > 2, finite).
   static int bin_of(double focal_sum) {
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(focal_sum);
