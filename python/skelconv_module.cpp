@@ -149,7 +149,7 @@ PYBIND11_MODULE(skelconv, m) {
            py::arg("tolerance") = Skeleton::default_tolerance,
            "f (N,) and grad f (N, 3) at the rows of an (N, 3) array, on `threads` cores (0: all), as "
            "`skelconv eval --tolerance`: within `tolerance` (default 1e-12) of f relative to f on lists of "
-           "Cauchy segments, 0 for the exact field (docs/field.md, \"Tolerance\").")
+           "Cauchy segments, classical or SCALIS, 0 for the exact field (docs/field.md, \"Tolerance\").")
       .def(
           "value_and_gradient",
           [](const Skeleton& skeleton, const std::array<double, 3>& p) {

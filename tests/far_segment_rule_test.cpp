@@ -1,11 +1,16 @@
 // Skeleton's tolerance mode (docs/field.md, "Tolerance"; far_segment_rule.hpp)
-// against the exact field: on random walks of Cauchy segments of several
-// degrees, sharpnesses and weights, at points on and around them, every f
-// must be within tolerance · f of the exact sum and every component of ∇f
-// within tolerance · max (i/2) √s · f. The reference is the exact
-// evaluation (the generated functions, which verify/ checks against float128
-// quadrature), summed directly. The mesh half (the 1,000-segment walk's mesh
-// vertices) is far_segment_rule_mesh_test.cpp.
+// against the exact field: on random walks of classical Cauchy segments of
+// several degrees, sharpnesses and weights, of SCALIS Cauchy segments of
+// several degrees, scales and radii (a small one among them), and of both
+// mixed, at points on and around them, every f must be within tolerance · f
+// of the exact sum and every component of ∇f within tolerance · f times the
+// mean over the segments of (i/2) g (g = √s, or 1/(σ min τ) for SCALIS).
+// The reference is the exact evaluation (the generated functions, which
+// verify/ checks against float128 quadrature), summed directly; and each
+// SCALIS rule alone against its own budget, where the bound is tightest.
+// The mesh
+// half (mesh vertices of a walk and of Zanni's ant) is
+// far_segment_rule_mesh_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +20,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/field/batch.hpp"
+#include "skelconv/primitives/scalis_segment.hpp"
 #include "skelconv/primitives/segment.hpp"
 #include "skelconv/skeleton/skeleton.hpp"
 #include "walk_skeleton.hpp"
@@ -22,22 +28,25 @@
 namespace skelconv {
 namespace {
 
+/// A segment's end A, classical or SCALIS.
+Vec3 start_of(const Primitive& primitive) {
+  if (const Segment* segment = std::get_if<Segment>(&primitive)) return segment->a();
+  return std::get<ScalisSegment>(primitive).a();
+}
+
 /// Points near the skeleton (within 1.5 of a segment's end: where a mesh's
 /// surface lies) and across the whole box and beyond.
 std::vector<Vec3> probe_points(const Skeleton& skeleton, int count, unsigned seed) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   Eigen::AlignedBox3d box;
-  for (const Primitive& primitive : skeleton.primitives()) {
-    box.extend(std::get<Segment>(primitive).a());
-    box.extend(std::get<Segment>(primitive).b());
-  }
+  for (const Primitive& primitive : skeleton.primitives()) box.extend(start_of(primitive));
   std::vector<Vec3> points;
   for (int k = 0; k < count; ++k) {
-    const Segment& segment = std::get<Segment>(skeleton.primitives()[std::size_t(k) % skeleton.size()]);
+    const Vec3 a = start_of(skeleton.primitives()[std::size_t(k) % skeleton.size()]);
     const Vec3 offset(unit(random), unit(random), unit(random));
     if (k % 3 != 2) {
-      points.push_back(segment.a() + 1.5 * offset);
+      points.push_back(a + 1.5 * offset);
     } else {
       points.push_back(box.center() + 1.5 * offset.cwiseProduct(box.sizes()));  // to a box's width outside
     }
@@ -45,14 +54,20 @@ std::vector<Vec3> probe_points(const Skeleton& skeleton, int count, unsigned see
   return points;
 }
 
-/// The largest (i/2) √s of the skeleton's segments: ∇f's tolerance scale.
+/// ∇f's tolerance scale (docs/field.md, "Tolerance"): the mean over the
+/// segments of (i/2) g, the bound of |∇f|/f of each one's kernel: g = √s
+/// (classical), 1/(σ min(τ0, τ1)) (SCALIS).
 double gradient_scale(const Skeleton& skeleton) {
-  double scale = 0;
+  double sum = 0;
   for (const Primitive& primitive : skeleton.primitives()) {
-    const KernelSpec& kernel = std::get<Segment>(primitive).kernel();
-    scale = std::max(scale, kernel.degree / 2.0 * std::sqrt(kernel.s));
+    if (const Segment* segment = std::get_if<Segment>(&primitive)) {
+      sum += segment->kernel().degree / 2.0 * std::sqrt(segment->kernel().s);
+    } else {
+      const ScalisSegment& scalis = std::get<ScalisSegment>(primitive);
+      sum += scalis.kernel().degree / 2.0 / (scalis.kernel().sigma * std::min(scalis.tau0(), scalis.tau1()));
+    }
   }
-  return scale;
+  return sum / double(skeleton.size());
 }
 
 struct Worst {
@@ -76,6 +91,44 @@ Worst check_walk(const Skeleton& skeleton, const std::vector<Vec3>& points, doub
   return worst;
 }
 
+/// printf into a string, for the names of the walks.
+template <class... Args>
+std::string fmt_walk(const char* format, Args... args) {
+  char buffer[128];
+  std::snprintf(buffer, sizeof buffer, format, args...);
+  return buffer;
+}
+
+/// check_walk at 1e-12 … 1e-3, expecting every error within its allowance
+/// and the mode in use.
+void expect_within(const Skeleton& skeleton, const std::vector<Vec3>& points, const std::string& name) {
+  for (double tolerance : {1e-12, 1e-9, 1e-6, 1e-3}) {
+    const Worst worst = check_walk(skeleton, points, tolerance);
+    SCOPED_TRACE(testing::Message() << name << ", tolerance " << tolerance);
+    EXPECT_LE(worst.f, 1.0);
+    EXPECT_LE(worst.gradient, 1.0);
+    // The mode is used: at 1e-6 and above nearly every point takes a rule somewhere.
+    if (tolerance >= 1e-6) {
+      EXPECT_GT(worst.approximated, int(points.size()) / 2);
+    }
+    std::printf("%s, tolerance %.0e: worst error / allowance %.2e (f), %.2e (grad f); %d of %zu points "
+                "approximated\n",
+                name.c_str(), tolerance, worst.f, worst.gradient, worst.approximated, points.size());
+  }
+}
+
+/// expect_within on each walk's skeleton (`build(walk, seed)`, seeds from
+/// `seed` on), at 300 points around it.
+template <class W, class Build>
+void expect_walks_within(const std::vector<W>& walks, unsigned seed, Build build, const char* kind) {
+  for (const W& walk : walks) {
+    const Skeleton skeleton = build(walk, seed);
+    expect_within(skeleton, probe_points(skeleton, 300, seed + 100),
+                  fmt_walk("%d %s, i = %d", walk.count, kind, walk.degree));
+    ++seed;
+  }
+}
+
 TEST(FarSegmentRule, WithinTheToleranceOnRandomWalks) {
   const std::vector<Walk> walks = {
       {200, 4, 4.0, {1.0}},             // the benchmark's kernel
@@ -85,26 +138,54 @@ TEST(FarSegmentRule, WithinTheToleranceOnRandomWalks) {
       {80, 6, 0.5, {0.2, 0.0, 0.0, 1.5}},  // cubic weight
       {60, 16, 3.0, {1.0}},             // the highest degree
   };
-  unsigned seed = 1;
-  for (const Walk& walk : walks) {
-    const Skeleton skeleton = walk_skeleton(walk, seed);
-    const std::vector<Vec3> points = probe_points(skeleton, 300, seed + 100);
-    for (double tolerance : {1e-12, 1e-9, 1e-6, 1e-3}) {
-      const Worst worst = check_walk(skeleton, points, tolerance);
-      SCOPED_TRACE(testing::Message() << walk.count << " segments, degree " << walk.degree << ", tolerance "
-                                      << tolerance);
-      EXPECT_LE(worst.f, 1.0);
-      EXPECT_LE(worst.gradient, 1.0);
-      // The mode is used: at 1e-6 and above nearly every point takes a rule somewhere.
-      if (tolerance >= 1e-6) {
-        EXPECT_GT(worst.approximated, int(points.size()) / 2);
-      }
-      std::printf("%3d segments, i = %2d, tolerance %.0e: worst error / allowance %.2e (f), %.2e (grad f); "
-                  "%d of %zu points approximated\n",
-                  walk.count, walk.degree, tolerance, worst.f, worst.gradient, worst.approximated, points.size());
-    }
-    ++seed;
+  expect_walks_within(walks, 1, walk_skeleton, "segments");
+}
+
+TEST(FarSegmentRule, WithinTheToleranceOnScalisWalks) {
+  const std::vector<ScalisWalk> walks = {
+      {24, 4, 1.0, 0.25, 1.3},  // the ant's kernel, sizes and count
+      {40, 2, 1.0, 0.2, 1.0},   // the lowest degree: slow decay
+      {30, 3, 0.5, 0.3, 2.0},   // half-integer power, σ < 1
+      {30, 7, 2.0, 0.1, 0.6},   // σ > 1, thin
+      {20, 10, 1.0, 0.2, 1.2},  // the highest degree
+  };
+  expect_walks_within(walks, 11, scalis_walk_skeleton, "SCALIS segments");
+}
+
+TEST(FarSegmentRule, WithinTheToleranceWithASmallRadius) {
+  // A cone almost to a point: radius 0.01 at one end of one segment, probed
+  // around that end (the integrand's zeros come near [0, 1] there).
+  const Skeleton walk = scalis_walk_skeleton({24, 4, 1.0, 0.3, 1.0}, 21);
+  std::vector<Primitive> segments = walk.primitives();
+  const ScalisSegment tip = std::get<ScalisSegment>(segments[5]);
+  segments[5] = ScalisSegment(tip.a(), tip.b(), tip.tau0(), 0.01, tip.kernel());
+  const Skeleton skeleton(std::move(segments));
+  std::vector<Vec3> points = probe_points(skeleton, 150, 22);
+  std::mt19937_64 random(23);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int k = 0; k < 150; ++k) {
+    points.push_back(tip.b() + 0.05 * Vec3(unit(random), unit(random), unit(random)));
   }
+  expect_within(skeleton, points, "24 SCALIS segments, a radius 0.01");
+}
+
+TEST(FarSegmentRule, WithinTheToleranceOnMixedLists) {
+  // Classical and SCALIS segments alternating along one walk.
+  const std::vector<Vec3> points = walk_points(40, 31);
+  KernelSpec cauchy;
+  cauchy.family = KernelFamily::cauchy;
+  cauchy.degree = 4;
+  cauchy.s = 4.0;
+  std::vector<Primitive> segments;
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (k % 2 == 0) {
+      segments.emplace_back(Segment(points[k], points[k + 1], cauchy, {1.0, 0.5}));
+    } else {
+      segments.emplace_back(ScalisSegment(points[k], points[k + 1], 0.4, 0.7, ScalisKernel::cauchy(3, 1.0)));
+    }
+  }
+  const Skeleton skeleton(std::move(segments));
+  expect_within(skeleton, probe_points(skeleton, 300, 32), "40 classical and SCALIS segments");
 }
 
 TEST(FarSegmentRule, ZeroIsTheExactField) {
@@ -117,7 +198,7 @@ TEST(FarSegmentRule, ZeroIsTheExactField) {
   }
 }
 
-TEST(FarSegmentRule, OnlyListsOfCauchySegmentsWithoutNegativeWeights) {
+TEST(FarSegmentRule, OnlyListsOfCauchySegmentsWithoutNegativeWeightsOrZeroRadii) {
   KernelSpec cauchy;
   cauchy.family = KernelFamily::cauchy;
   cauchy.degree = 4;
@@ -135,6 +216,17 @@ TEST(FarSegmentRule, OnlyListsOfCauchySegmentsWithoutNegativeWeights) {
   const Skeleton mixed(std::move(segments));
   const Vec3 p(3, 5, 1);
   EXPECT_EQ(mixed.value_and_gradient(p, 1e-3).value, mixed.value_and_gradient(p).value);
+  // SCALIS: Cauchy with both radii positive; a radius 0 (a cone's tip,
+  // where the field diverges) leaves the whole list exact.
+  const ScalisKernel scalis = ScalisKernel::cauchy(4, 1.0);
+  EXPECT_NE(ScalisSegment(Vec3(0, 0, 0), Vec3(1, 0, 0), 0.5, 0.2, scalis).far_rule(), nullptr);
+  EXPECT_EQ(ScalisSegment(Vec3(0, 0, 0), Vec3(1, 0, 0), 0.5, 0.0, scalis).far_rule(), nullptr);
+  EXPECT_EQ(ScalisSegment(Vec3(0, 0, 0), Vec3(1, 0, 0), 0.5, 0.2, ScalisKernel::inverse(3, 1.0)).far_rule(), nullptr);
+  std::vector<Primitive> cone = scalis_walk_skeleton({20, 4, 1.0, 0.3, 1.0}, 41).primitives();
+  const ScalisSegment& last = std::get<ScalisSegment>(cone.back());
+  cone.back() = ScalisSegment(last.a(), last.b(), last.tau0(), 0.0, scalis);
+  const Skeleton with_tip(std::move(cone));
+  EXPECT_EQ(with_tip.value_and_gradient(p, 1e-3).value, with_tip.value_and_gradient(p).value);
 }
 
 TEST(FarSegmentRule, BadToleranceIsAnInputError) {
@@ -166,6 +258,64 @@ TEST(FarSegmentRule, BatchesGiveTheSameBytesOnAnyThreadCount) {
     EXPECT_EQ(a.samples[k].value, b.samples[k].value);
     EXPECT_EQ(a.samples[k].gradient, b.samples[k].gradient);
     EXPECT_EQ(a.samples[k].value, skeleton.value_and_gradient(points[k], 1e-12).value);
+  }
+}
+
+}  // namespace
+}  // namespace skelconv
+
+namespace skelconv {
+namespace {
+
+/// The largest |error| / budget of one segment's rule (f, and ∇f over
+/// (i/2) g), over points around it and budgets just at each rule's
+/// threshold: what the test below holds to 1, and how near the bound is.
+struct RuleWorst {
+  double f = 0, gradient = 0;
+};
+
+RuleWorst worst_rule_error(const ScalisSegment& segment, unsigned seed) {
+  const FarSegmentRule& rule = *segment.far_rule();
+  const double g = segment.kernel().degree / 2.0 / (segment.kernel().sigma * std::min(segment.tau0(), segment.tau1()));
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  RuleWorst worst;
+  const Vec3 middle = 0.5 * (segment.a() + segment.b());
+  for (int k = 0; k < 400; ++k) {
+    const double reach = std::pow(10.0, unit(random) + 1);  // 1 … 100 from the middle
+    const Vec3 p = middle + reach * Vec3(unit(random), unit(random), unit(random));
+    const FieldSample exact = segment.value_and_gradient(p);
+    int previous = -1;
+    // Budgets from 1e-2 f down to 1e-13 f (1e3 times the rounding of either
+    // sum) by factors 1.05: each rule's
+    // largest budget (the bound just at it) comes within 1.05 of its edge.
+    for (double budget = 1e-2 * exact.value; budget > 1e-13 * exact.value; budget /= 1.05) {
+      const int n = rule.nodes(p, budget);
+      if (n == 0 || n == previous) continue;
+      previous = n;
+      FieldSample within;
+      if (!rule.evaluate_nodes(p, n, true, within)) continue;
+      worst.f = std::max(worst.f, std::abs(within.value - exact.value) / budget);
+      worst.gradient = std::max(worst.gradient, (within.gradient - exact.gradient).cwiseAbs().maxCoeff() / (g * budget));
+    }
+  }
+  return worst;
+}
+
+TEST(FarSegmentRule, EachScalisRuleWithinItsBudget) {
+  // Degrees 2 … 10, radii near equal, ten times apart, small at one end.
+  const std::vector<std::array<double, 4>> cases = {  // degree, σ, τ0, τ1
+      {2, 1.0, 0.5, 0.6}, {4, 1.0, 0.6, 1.3}, {4, 1.0, 1.0, 0.1}, {3, 0.5, 0.3, 0.9},
+      {7, 2.0, 0.2, 0.4}, {10, 1.0, 0.8, 0.08}, {4, 1.0, 0.01, 0.5}};
+  unsigned seed = 51;
+  for (const auto& [degree, sigma, tau0, tau1] : cases) {
+    const ScalisSegment segment(Vec3(0.1, -0.2, 0.3), Vec3(1.2, 0.4, -0.1), tau0, tau1,
+                                ScalisKernel::cauchy(int(degree), sigma));
+    const RuleWorst worst = worst_rule_error(segment, seed++);
+    std::printf("SCALIS i = %d, sigma %.1f, radii %.2f, %.2f: worst rule error / budget %.2e (f), %.2e (grad f)\n",
+                int(degree), sigma, tau0, tau1, worst.f, worst.gradient);
+    EXPECT_LE(worst.f, 1.0);
+    EXPECT_LE(worst.gradient, 1.0);
   }
 }
 

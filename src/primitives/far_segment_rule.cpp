@@ -21,6 +21,9 @@ namespace {
 
 constexpr int max_nodes = FarSegmentRule::max_nodes;
 constexpr int max_degree = 16;  ///< Cauchy degrees on segments (kernels/cauchy.hpp)
+/// SCALIS Cauchy degrees with a rule: those of the generated table
+/// (generated/scalis_segment_table.hpp, 2–10); any other stays exact.
+constexpr int max_scalis_degree = 10;
 
 // ---------------------------------------------------------------------------
 // Gauss–Legendre rules of 1 … max_nodes nodes on [0, 1] (weights summing to
@@ -45,7 +48,7 @@ std::pair<long double, long double> legendre(int n, long double x) {
 
 std::array<Rule, max_nodes + 1> make_rules() {
   std::array<Rule, max_nodes + 1> rules{};
-  // The roots of P_n (n ≤ 10) are more than 0.02 apart: a scan of 4,095
+  // The roots of P_n (n ≤ 20) are more than 0.02 apart: a scan of 4,095
   // steps over [−1, 1] brackets each one alone, and (an odd count) never
   // lands on one (x = 0 for odd n).
   constexpr int steps = 4095;
@@ -140,21 +143,26 @@ template <int I>
   return result;
 }
 
-/// Σ_j g_j w(t_j) q_j^(−i/2) and, with Gradient, Σ_j g_j w(t_j) q_j^(−i/2−1) (P − Γ(t_j)).
+/// Σ_j g_j ω̂(t_j) Q̂_j^(−i/2) and, with Gradient, Σ_j g_j ω̂(t_j) Q̂_j^(−i/2−1) (P − Γ(t_j))
+/// (far_segment_rule.hpp, FarSegmentRule::front_).
 struct NodeSums {
   double f = 0;
   std::array<double, 3> g{};
 };
 
+using Integrand = FarSegmentRule::Integrand;
+
 /// The N-node rule (N even), two nodes at a time in SSE2 (x86-64's
 /// baseline: the same operations, in the same order, on every machine).
-/// Lanes are summed apart, then added.
-template <int I, bool Gradient, int N>
-NodeSums sum_nodes(const Rule& rule, const Vec3& pa, const Vec3& ab, double s, const std::array<double, 4>& w,
-                   int weight_degree) {
-  const __m128d one = _mm_set1_pd(1.0), sharpness = _mm_set1_pd(s);
+/// Lanes are summed apart, then added. Classical: Q̂ = 1 + s r², ω̂ the
+/// weight polynomial; Scalis: Q̂ = r² + c², ω̂ = c^(I−1), c = c0 + c1 t.
+template <int I, bool Gradient, int N, bool Scalis>
+NodeSums sum_nodes(const Rule& rule, const Vec3& pa, const Vec3& ab, const Integrand& integrand) {
+  const __m128d one = _mm_set1_pd(1.0), sharpness = _mm_set1_pd(integrand.s);
+  const __m128d c0 = _mm_set1_pd(integrand.c0), c1 = _mm_set1_pd(integrand.c1);
   const __m128d pa_x = _mm_set1_pd(pa.x()), pa_y = _mm_set1_pd(pa.y()), pa_z = _mm_set1_pd(pa.z());
   const __m128d ab_x = _mm_set1_pd(ab.x()), ab_y = _mm_set1_pd(ab.y()), ab_z = _mm_set1_pd(ab.z());
+  const int weight_degree = integrand.weight_degree;
   __m128d f = _mm_setzero_pd(), g_x = _mm_setzero_pd(), g_y = _mm_setzero_pd(), g_z = _mm_setzero_pd();
   for (int j = 0; j < N; j += 2) {  // N even, known here: no loop exit to predict
     const __m128d t = _mm_loadu_pd(&rule.t[std::size_t(j)]);
@@ -162,14 +170,21 @@ NodeSums sum_nodes(const Rule& rule, const Vec3& pa, const Vec3& ab, double s, c
     const __m128d y = _mm_sub_pd(pa_y, _mm_mul_pd(t, ab_y));
     const __m128d z = _mm_sub_pd(pa_z, _mm_mul_pd(t, ab_z));
     const __m128d r2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y)), _mm_mul_pd(z, z));
-    const __m128d inverse = _mm_div_pd(one, _mm_add_pd(one, _mm_mul_pd(sharpness, r2)));
     __m128d weight = _mm_loadu_pd(&rule.g[std::size_t(j)]);
-    if (weight_degree > 0) {
-      __m128d polynomial = _mm_set1_pd(w[std::size_t(weight_degree)]);
-      for (int k = weight_degree - 1; k >= 0; --k) {
-        polynomial = _mm_add_pd(_mm_mul_pd(polynomial, t), _mm_set1_pd(w[std::size_t(k)]));
+    __m128d inverse;
+    if constexpr (Scalis) {
+      const __m128d c = _mm_add_pd(c0, _mm_mul_pd(t, c1));
+      inverse = _mm_div_pd(one, _mm_add_pd(r2, _mm_mul_pd(c, c)));
+      for (int k = 1; k < I; ++k) weight = _mm_mul_pd(weight, c);
+    } else {
+      inverse = _mm_div_pd(one, _mm_add_pd(one, _mm_mul_pd(sharpness, r2)));
+      if (weight_degree > 0) {
+        __m128d polynomial = _mm_set1_pd(integrand.w[std::size_t(weight_degree)]);
+        for (int k = weight_degree - 1; k >= 0; --k) {
+          polynomial = _mm_add_pd(_mm_mul_pd(polynomial, t), _mm_set1_pd(integrand.w[std::size_t(k)]));
+        }
+        weight = _mm_mul_pd(weight, polynomial);
       }
-      weight = _mm_mul_pd(weight, polynomial);
     }
     const __m128d term = _mm_mul_pd(weight, negative_half_power<I>(inverse));
     f = _mm_add_pd(f, term);
@@ -191,20 +206,40 @@ NodeSums sum_nodes(const Rule& rule, const Vec3& pa, const Vec3& ab, double s, c
   return sums;
 }
 
-using SumNodes = NodeSums (*)(const Rule&, const Vec3&, const Vec3&, double, const std::array<double, 4>&, int);
+using SumNodes = NodeSums (*)(const Rule&, const Vec3&, const Vec3&, const Integrand&);
 
-/// sum_nodes for degree I + 1 and N = 2, 4, …, max_nodes nodes, at [N / 2].
-template <bool Gradient, int I, int... Pair>
+/// The longest rule of a kind.
+constexpr int longest(bool scalis) {
+  return scalis ? FarSegmentRule::max_scalis_nodes : FarSegmentRule::max_classical_nodes;
+}
+
+/// sum_nodes for degree I + 1 and N = 2, 4, …, longest(Scalis) nodes, at
+/// [N / 2] (nullptr beyond).
+template <bool Gradient, bool Scalis, int I, int... Pair>
 constexpr std::array<SumNodes, max_nodes / 2 + 1> sum_nodes_of_degree(std::integer_sequence<int, Pair...>) {
-  return {nullptr, &sum_nodes<I + 1, Gradient, 2 * (Pair + 1)>...};
+  return {nullptr, &sum_nodes<I + 1, Gradient, 2 * (Pair + 1), Scalis>...};
 }
 
 /// At [i][N / 2]: sum_nodes of degree i, N nodes.
-template <bool Gradient, int... I>
+template <bool Gradient, bool Scalis, int... I>
 constexpr std::array<std::array<SumNodes, max_nodes / 2 + 1>, sizeof...(I) + 1> sum_nodes_table(
     std::integer_sequence<int, I...>) {
   return {std::array<SumNodes, max_nodes / 2 + 1>{},
-          sum_nodes_of_degree<Gradient, I>(std::make_integer_sequence<int, max_nodes / 2>{})...};
+          sum_nodes_of_degree<Gradient, Scalis, I>(std::make_integer_sequence<int, longest(Scalis) / 2>{})...};
+}
+
+/// x^k for a small non-negative k, by multiplications.
+double power(double x, int k) {
+  double result = 1;
+  for (int j = 0; j < k; ++j) result *= x;
+  return result;
+}
+
+/// x^(i/2) for i ≥ 0.
+double half_power(double x, int i) {
+  double result = power(x, i / 2);
+  if (i % 2 == 1) result *= std::sqrt(x);
+  return result;
 }
 
 }  // namespace
@@ -212,60 +247,111 @@ constexpr std::array<std::array<SumNodes, max_nodes / 2 + 1>, sizeof...(I) + 1> 
 
 std::optional<FarSegmentRule> FarSegmentRule::make(const Vec3& a, const Vec3& b, int degree, double s,
                                                    std::span<const double> weight) {
-  if (degree < 1 || degree > far_rule::max_degree || weight.empty() || weight.size() > rule_weight_count) {
+  if (degree < 1 || degree > far_rule::max_degree || weight.empty() || weight.size() > Integrand::weight_count) {
     return std::nullopt;
   }
   for (double w : weight) {
     if (!(w >= 0.0) || !std::isfinite(w)) return std::nullopt;
   }
   FarSegmentRule rule;
-  rule.a_ = a;
-  rule.ab_ = b - a;
-  rule.length_ = rule.ab_.norm();
-  rule.s_ = s;
-  rule.inverse_s_ = 1 / s;
-  rule.degree_ = degree;
-  rule.weight_degree_ = int(weight.size()) - 1;
-  while (rule.weight_degree_ > 0 && weight[std::size_t(rule.weight_degree_)] == 0.0) --rule.weight_degree_;
-  std::copy(weight.begin(), weight.end(), rule.weight_.begin());
-  // (s L²)^(i/2) / L, divided by w_0 where w is that constant.
-  const double scaled = s * rule.length_ * rule.length_;
-  double power = 1;
-  for (int k = 0; k < degree / 2; ++k) power *= scaled;
-  if (degree % 2 == 1) power *= std::sqrt(scaled);
-  rule.f_factor_ = power / rule.length_;
-  if (rule.weight_degree_ == 0) rule.f_factor_ /= weight[0];
-  rule.gradient_factor_ = std::sqrt(s) * rule.length_;
-  rule.two_over_length_ = 2 / rule.length_;
-  const auto usable = [](double x) { return std::isnormal(x); };
-  if (!usable(rule.length_) || !usable(rule.inverse_s_) || !usable(rule.f_factor_) ||
-      !usable(rule.gradient_factor_) || !usable(rule.two_over_length_)) {
-    return std::nullopt;
+  Integrand& integrand = rule.integrand_;
+  integrand.s = s;
+  integrand.weight_degree = int(weight.size()) - 1;
+  while (integrand.weight_degree > 0 && weight[std::size_t(integrand.weight_degree)] == 0.0) {
+    --integrand.weight_degree;
   }
-  rule.bins_ = far_rule::table_for(degree).data();  // built here, once per degree, not at the first point
-  (void)far_rule::rules();
+  std::copy(weight.begin(), weight.end(), integrand.w.begin());
+  const double length = (b - a).norm();
+  rule.offset_a_ = rule.offset_b_ = rule.q_unit_ = 1 / s;
+  rule.two_over_length_ = 2 / length;
+  // ∫_0^1 w = Σ w_k / (k + 1); Ω q_unit^(−m) = 1 (times w_0 where constant).
+  double mean = 0;
+  for (int k = 0; k <= integrand.weight_degree; ++k) mean += integrand.w[std::size_t(k)] / (k + 1);
+  rule.lower_front_ = length * mean;
+  // L'^(2m) / (L Ω) = (s L²)^m / L, divided by w_0 where w is that constant.
+  rule.f_factor_ = far_rule::half_power(s * length * length, degree) / length;
+  rule.weight_varies_ = integrand.weight_degree > 0;
+  if (!rule.weight_varies_) rule.f_factor_ /= weight[0];
+  rule.gradient_factor_ = std::sqrt(s) * length;  // g L' = √s L
+  rule.front_ = rule.weight_varies_ ? length : length * weight[0];
+  rule.gradient_front_ = -double(degree) * s;  // ∂q^(−i/2)/∂P = −i s q^(−i/2−1) (P − Γ)
+  rule.longest_ = max_classical_nodes;
+  if (!rule.finish(a, b, degree)) return std::nullopt;
   return rule;
 }
 
-double FarSegmentRule::weight_bound(double focal_sum) const {
-  const double radius = 0.5 + 0.25 * focal_sum;
-  double w = weight_[std::size_t(weight_degree_)];
-  for (int k = weight_degree_ - 1; k >= 0; --k) w = w * radius + weight_[std::size_t(k)];
-  return w;
+std::optional<FarSegmentRule> FarSegmentRule::make_scalis(const Vec3& a, const Vec3& b, int degree, double sigma,
+                                                          double tau0, double tau1, double field_scale) {
+  if (degree < 1 || degree > far_rule::max_scalis_degree || !(tau0 > 0.0) || !(tau1 > 0.0)) return std::nullopt;
+  FarSegmentRule rule;
+  Integrand& integrand = rule.integrand_;
+  integrand.scalis = true;
+  integrand.c0 = sigma * tau0;
+  const double c_end = sigma * tau1;
+  integrand.c1 = c_end - integrand.c0;
+  integrand.w = {1.0, 0.0, 0.0, 0.0};
+  const double c_max = std::max(integrand.c0, c_end), c_min = std::min(integrand.c0, c_end);
+  const Vec3 ab = b - a;
+  const double length = ab.norm();
+  const double lifted = std::sqrt(ab.squaredNorm() + integrand.c1 * integrand.c1);  // L'
+  rule.offset_a_ = integrand.c0 * integrand.c0;
+  rule.offset_b_ = c_end * c_end;
+  rule.q_unit_ = c_max * c_max;
+  rule.two_over_length_ = 2 / lifted;
+  // ∫_0^1 (c/c_max)^(i−1) dt = (1/i) Σ_k u0^k u1^(i−1−k), u = c/c_max at the
+  // ends: no cancellation when the radii are close.
+  const double u0 = integrand.c0 / c_max, u1 = c_end / c_max;
+  double mean = 0;
+  for (int k = 0; k < degree; ++k) mean += far_rule::power(u0, k) * far_rule::power(u1, degree - 1 - k);
+  mean /= degree;
+  const double scale = field_scale * sigma;  // Ω = scale c_max^(i−1)
+  rule.lower_front_ = length * scale * mean / c_max;  // L Ω ∫(c/c_max)^(i−1) / c_max^i
+  // W = ((c_min + |c1| r)/c_max)^(i−1), 1 where the radius is constant.
+  rule.bound_base_ = c_min / c_max;
+  rule.bound_slope_ = std::abs(integrand.c1) / c_max;
+  rule.bound_power_ = degree - 1;
+  rule.weight_varies_ = integrand.c1 != 0.0 && degree > 1;
+  // L'^(2m) / (L Ω) = (L'/c_max)^(2m) c_max / (L scale).
+  rule.f_factor_ = far_rule::half_power(lifted * lifted / rule.q_unit_, degree) * c_max / (length * scale);
+  rule.gradient_factor_ = lifted / c_min;  // g L' = L' / (σ min τ)
+  rule.front_ = length * scale;
+  rule.gradient_front_ = -double(degree);  // ∂Q^(−i/2)/∂P = −i Q^(−i/2−1) (P − Γ)
+  rule.longest_ = max_scalis_nodes;
+  if (!rule.finish(a, b, degree)) return std::nullopt;
+  return rule;
+}
+
+bool FarSegmentRule::finish(const Vec3& a, const Vec3& b, int degree) {
+  a_ = a;
+  ab_ = b - a;
+  degree_ = degree;
+  const auto usable = [](double x) { return std::isnormal(x); };
+  for (double constant : {offset_a_, offset_b_, q_unit_, two_over_length_, lower_front_, f_factor_,
+                          gradient_factor_, front_, gradient_front_}) {
+    if (!usable(constant)) return false;
+  }
+  bins_ = far_rule::table_for(degree).data();  // built here, once per degree, not at the first point
+  (void)far_rule::rules();
+  return true;
 }
 
 bool FarSegmentRule::evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const {
-  static constexpr auto values = far_rule::sum_nodes_table<false>(std::make_integer_sequence<int, far_rule::max_degree>{});
-  static constexpr auto both = far_rule::sum_nodes_table<true>(std::make_integer_sequence<int, far_rule::max_degree>{});
-  const far_rule::SumNodes sum = (gradient ? both : values)[std::size_t(degree_)][std::size_t(n / 2)];
-  const far_rule::NodeSums sums = sum(far_rule::rules()[std::size_t(n)], p - a_, ab_, s_, weight_, weight_degree_);
-  // L, times w_0 where w is that constant (sum_nodes multiplies by w(t) only where it is not).
-  const double front = weight_degree_ == 0 ? length_ * weight_[0] : length_;
-  const double f = front * sums.f;
+  using far_rule::sum_nodes_table;
+  static constexpr auto values = sum_nodes_table<false, false>(std::make_integer_sequence<int, far_rule::max_degree>{});
+  static constexpr auto both = sum_nodes_table<true, false>(std::make_integer_sequence<int, far_rule::max_degree>{});
+  static constexpr auto scalis_values =
+      sum_nodes_table<false, true>(std::make_integer_sequence<int, far_rule::max_scalis_degree>{});
+  static constexpr auto scalis_both =
+      sum_nodes_table<true, true>(std::make_integer_sequence<int, far_rule::max_scalis_degree>{});
+  const std::size_t degree = std::size_t(degree_), pair = std::size_t(n / 2);
+  const far_rule::SumNodes sum = integrand_.scalis ? (gradient ? scalis_both : scalis_values)[degree][pair]
+                                                   : (gradient ? both : values)[degree][pair];
+  const far_rule::NodeSums sums = sum(far_rule::rules()[std::size_t(n)], p - a_, ab_, integrand_);
+  const double f = front_ * sums.f;
   if (!(f >= std::numeric_limits<double>::min() && f < infinity)) return false;
   out.value = f;
   if (gradient) {
-    const double factor = -double(degree_) * s_ * front;  // ∂q^(−i/2)/∂P = −i s q^(−i/2−1) (P − Γ)
+    const double factor = gradient_front_ * front_;
     out.gradient = Vec3(factor * sums.g[0], factor * sums.g[1], factor * sums.g[2]);
     if (!out.gradient.allFinite()) return false;
   } else {

@@ -101,6 +101,9 @@ ScalisSegment::ScalisSegment(const Vec3& a, const Vec3& b, double tau0, double t
                                  family_name(kernel.family), kernel.degree, evaluation_normalisation_, kernel.sigma),
                      "kernel.sigma");
   }
+  if (kernel.family == KernelFamily::cauchy) {
+    far_rule_ = FarSegmentRule::make_scalis(a, b, kernel.degree, kernel.sigma, tau0, tau1, field_scale_);
+  }
 }
 
 std::string ScalisSegment::evaluator_name() const { return name_; }

@@ -74,12 +74,27 @@ void add_primitives_of_one_type(const std::vector<Primitive>& primitives, const 
 /// alike from one segment to the next, which the processor predicts.
 constexpr std::size_t far_rule_chunk = 64;
 
-/// What add_primitives_of_one_type does for segments that all have a far
-/// rule (Segment::far_rule), in the tolerance mode (docs/field.md,
-/// "Tolerance"): f̲, the sum of the segments' lower bounds, is at most f, so
-/// granting each of the `count` segments an error of `tolerance` f̲ / count
-/// keeps the whole sum within `tolerance` f (and each component of ∇f within
-/// `tolerance` (i/2) √s f for the largest (i/2) √s). A segment whose rule
+/// The far rule of a classical or SCALIS segment that has one, else nullptr.
+const FarSegmentRule* far_rule_of(const Primitive& primitive) {
+  if (const Segment* segment = std::get_if<Segment>(&primitive)) return segment->far_rule();
+  if (const ScalisSegment* segment = std::get_if<ScalisSegment>(&primitive)) return segment->far_rule();
+  return nullptr;
+}
+
+/// The exact sample of a primitive that has a far rule (far_rule_of).
+template <class Need>
+FieldSample exact_sample_of_ruled(const Primitive& primitive, const Vec3& p, Need need) {
+  if (const Segment* segment = std::get_if<Segment>(&primitive)) return sample_of(*segment, p, need);
+  return sample_of(*std::get_if<ScalisSegment>(&primitive), p, need);
+}
+
+/// The sum of a list of segments that all have a far rule (far_rule_of:
+/// classical and SCALIS Cauchy, mixed or not), in the tolerance mode
+/// (docs/field.md, "Tolerance"): f̲, the sum of the segments' lower bounds,
+/// is at most f, so granting each of the `count` segments an error of
+/// `tolerance` f̲ / count keeps the whole sum within `tolerance` f (and each
+/// component of ∇f within `tolerance` f times the mean over the segments of
+/// their bound m g of |∇f|/f, far_segment_rule.hpp). A segment whose rule
 /// would need more nodes than the longest takes the exact path. Within a
 /// chunk the terms are added by node count (the exact ones first), then
 /// in order: the same additions on every machine.
@@ -114,7 +129,7 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
         FieldSample term;
         const int n = nodes[order[j]];
         if (n == 0 || !rules[position].evaluate_nodes(p, n, need != Need::value, term)) {
-          term = sample_of(*std::get_if<Segment>(&primitives[position]), p, need);
+          term = exact_sample_of_ruled(primitives[position], p, need);
         }
         add(term);
       }
@@ -250,16 +265,19 @@ void Skeleton::prepare() const {
     // The common skeleton: a list of primitives of one type, no blend node,
     // no weight, no grid (every primitive is then a child of the root, in
     // order).
-    index->primitive_list = nodes_.size() == 1 && nodes_[root].blend.weights.empty() && !index->grids[root] &&
-                            index->one_primitive_type[root];
-    if (index->primitive_list && primitives_.size() >= min_far_rule_segments) {
+    const bool plain_list = nodes_.size() == 1 && nodes_[root].blend.kind == BlendKind::sum &&
+                            nodes_[root].blend.weights.empty() && !index->grids[root];
+    index->primitive_list = plain_list && index->one_primitive_type[root];
+    // The tolerance mode: a plain list of segments that all have a far rule,
+    // of one kind or both.
+    if (plain_list && primitives_.size() >= min_far_rule_segments) {
       for (const Primitive& primitive : primitives_) {
-        const Segment* segment = std::get_if<Segment>(&primitive);
-        if (segment == nullptr || segment->far_rule() == nullptr) {
+        const FarSegmentRule* rule = far_rule_of(primitive);
+        if (rule == nullptr) {
           index->far_rules.clear();
           break;
         }
-        index->far_rules.push_back(*segment->far_rule());
+        index->far_rules.push_back(*rule);
       }
     }
     cache.index = std::move(index);
@@ -276,19 +294,21 @@ FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration accelerati
   // Checked once here, so that a bad point is not blamed on a primitive.
   detail::require_finite_query_point(p);
   const detail::SkeletonIndex* index = index_for(acceleration);
-  if (cache_->index->primitive_list) return evaluate_primitive_list(p, need, tolerance);
-  return evaluate_node(root, p, need, index);  // exact: the tolerance mode covers lists of segments only
-}
-
-FieldSample Skeleton::evaluate_primitive_list(const Vec3& p, Need need, double tolerance) const {
-  // What evaluate_sum does for the root, without walking the tree.
-  FieldSample total;
-  bool marker = false;
-  if (tolerance > 0.0 && !cache_->index->far_rules.empty()) {
-    add_segments_within(primitives_, primitive_locations_, cache_->index->far_rules, p, need, tolerance, total);
+  const detail::SkeletonIndex& built = *cache_->index;
+  if (tolerance > 0.0 && !built.far_rules.empty()) {
+    FieldSample total;
+    add_segments_within(primitives_, primitive_locations_, built.far_rules, p, need, tolerance, total);
     require_finite_blend(total, need != Need::gradient, need != Need::value, "primitives", p);
     return total;
   }
+  if (built.primitive_list) return evaluate_primitive_list(p, need);
+  return evaluate_node(root, p, need, index);  // exact: the tolerance mode covers lists of segments only
+}
+
+FieldSample Skeleton::evaluate_primitive_list(const Vec3& p, Need need) const {
+  // What evaluate_sum does for the root, without walking the tree.
+  FieldSample total;
+  bool marker = false;
   std::visit(
       [&](const auto& first) {
         add_primitives_of_one_type<std::decay_t<decltype(first)>>(

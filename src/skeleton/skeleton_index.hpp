@@ -23,10 +23,12 @@ struct SkeletonIndex {
   /// primitives of one type (Skeleton::evaluate_sum loops over them with
   /// that type's evaluation).
   std::vector<bool> one_primitive_type;
-  /// For a primitive list of segments that all have a far rule
-  /// (Segment::far_rule: Cauchy, no negative weight coefficient), copies of
-  /// those rules in order, side by side in memory for the tolerance mode's
-  /// passes over them; else empty.
+  /// For a plain list (the root sum, no weight, no blend node) of at least
+  /// Skeleton::min_far_rule_segments segments that all have a far rule
+  /// (Segment::far_rule: Cauchy, no negative weight coefficient;
+  /// ScalisSegment::far_rule: Cauchy, radii > 0), of one kind or both,
+  /// copies of those rules in order, side by side in memory for the
+  /// tolerance mode's passes over them; else empty.
   std::vector<FarSegmentRule> far_rules;
   /// The skeleton is a list of primitives of one type: no blend node below
   /// the root, no weight, no grid (Skeleton::evaluate loops over the

@@ -1,14 +1,25 @@
-// skelconv/primitives/far_segment_rule.hpp — a Cauchy segment far from P,
-// evaluated to a given absolute error by a short Gauss–Legendre rule whose
-// length an a-priori bound chooses (docs/field.md, "Tolerance").
+// skelconv/primitives/far_segment_rule.hpp — a Cauchy segment, classical or
+// SCALIS, far from P, evaluated to a given absolute error by a short
+// Gauss–Legendre rule whose length an a-priori bound chooses (docs/field.md,
+// "Tolerance").
 //
-// The segment's field is f(P) = L ∫_0^1 w(t) q(t)^(−m) dt with L = |AB|,
-// q(t) = 1 + s |P − Γ(t)|², m = i/2 (segment.hpp). In t, q has the complex
-// zeros t* ± i a, where t* is P's projection parameter and
-// L² a² = d² + 1/s (d: P's distance to the line). On [−1, 1]
-// (t = (1 + x)/2) they lie on the Bernstein ellipse whose focal sum is
+// Both kinds integrate, with L = |AB|, m = i/2 (i the kernel's degree),
 //
-//     S = |x − 1| + |x + 1| = 2 (√(|PA|² + 1/s) + √(|PB|² + 1/s)) / L,
+//     f(P) = L ∫_0^1 ω(t) Q(t)^(−m) dt,   Q(t) = |P − Γ(t)|² + c(t)²,
+//
+// c linear in t and ω ≥ 0 on [0, 1]:
+//   - classical (segment.hpp): q = 1 + s |P − Γ|² = s Q with c ≡ 1/√s, and
+//     ω(t) = s^(−m) w(t), w the weight polynomial;
+//   - SCALIS (scalis_segment.hpp): K(r/(στ))/τ = σ^i τ^(i−1) Q^(−m) with
+//     c(t) = σ τ(t), so ω(t) = (iso/h) σ c(t)^(i−1): a polynomial (i ≥ 1),
+//     no pole where τ vanishes, and ≥ 0 on [0, 1] for radii > 0.
+// Q is the squared distance in ℝ⁴ from P' = (P, 0) to the segment
+// Γ'(t) = (Γ(t), c(t)) of length L' = √(L² + c'²) (L' = L for classical
+// segments), so its zeros are t'* ± i d'/L' (t'* P''s projection parameter,
+// d' its distance to that line in ℝ⁴). On [−1, 1] (t = (1 + x)/2) they lie
+// on the Bernstein ellipse whose focal sum is
+//
+//     S = |x − 1| + |x + 1| = 2 (√(|PA|² + c(0)²) + √(|PB|² + c(1)²)) / L',
 //
 // and the n-point Gauss–Legendre rule errs by at most
 // (64/15) M ρ^(2−2n) / (ρ² − 1) for any smaller ellipse E_ρ (focal sum
@@ -16,17 +27,24 @@
 // Approximation Theory and Approximation Practice, Thm 19.3, whose I_n is
 // the (n + 1)-point rule, exact to degree 2n + 1: the Chebyshev terms it
 // misses start at T_(2n+2), |a_k| ≤ 2 M ρ^(−k)). On E_ρ every
-// t is at least (S − S_ρ)/4 from both zeros (confocal ellipses are that far
-// apart at least, on the major axis), so |q| ≥ s L² ((S − S_ρ)/4)², and
-//   f:   |error| ≤ L W (s L²)^(−m) · (32/15) δ^(−2m) ρ^(2−2n) / (ρ² − 1),
-//   ∇f:  |error of a component| ≤ W m (s L²)^(−m) · (64/15) δ^(−2m−2)
-//        ((3 S + S_ρ)/4) ρ^(2−2n) / (ρ² − 1),
-// with δ = (S − S_ρ)/4, |P − Γ(t)| ≤ L (3 S + S_ρ)/4 on E_ρ, and W a bound of
-// |w| there (Σ |w_k| (1/2 + S/4)^k). The factors in front depend on the
-// segment only; the rest, minimised over ρ, on S, m and n only: a table per
-// degree (FarRuleTable, built once from arithmetic and square roots alone,
-// so the same on every machine), read at the bin of S just below it (the
-// bound decreases as S grows).
+// t is at least δ = (S − S_ρ)/4 from both zeros (confocal ellipses are that
+// far apart at least, on the major axis), so |Q| ≥ L'² δ²; each component
+// of P − Γ(t) is at most |PA| + L |t| ≤ L' (3 S + S_ρ)/4 (|PA| ≤ L' S/2,
+// |t| ≤ 1/2 + S_ρ/4 ≤ S/4 + S_ρ/4); and |ω| ≤ Ω W(S), with Ω the constant
+// factor of ω and W = Σ w_k r^k (classical) or (c_min + |c'| r)^(i−1)
+// (SCALIS; c_min the smaller end's c), r = 1/2 + S/4 (|t| ≤ r and
+// |t − 1/2| ≤ S/4 on E_ρ). Hence
+//   f:   |error| ≤ L Ω W L'^(−2m) · (32/15) δ^(−2m) ρ^(2−2n) / (ρ² − 1),
+//   ∇f:  |error of a component| ≤ L Ω W m L'^(−2m−1) · (64/15) δ^(−2m−2)
+//        ((3 S + S_ρ)/4) ρ^(2−2n) / (ρ² − 1).
+// The factors in front depend on the segment only; the rest, minimised over
+// ρ, on S, m and n only: a table per degree (FarRuleBin, built once from
+// arithmetic and square roots alone, so the same on every machine), read at
+// the bin of S just below it (the bound decreases as S grows). Each segment
+// may err by `budget` in f and by m g · budget in each component of ∇f,
+// where m g bounds |∇f|/f for that segment's kernel: g = √s (classical,
+// |∂K/∂r| ≤ (i/2) √s K) or 1/(σ min τ) (SCALIS, since
+// |∇_P (σ²τ² + r²)^(−m)| ≤ (i/2) (σ²τ² + r²)^(−m) / (σ τ) at every t).
 #pragma once
 
 #include <algorithm>
@@ -42,76 +60,115 @@
 
 namespace skelconv {
 
-class FarSegmentRule;
-
 /// The bounds of one bin of S for n = 1 … max_nodes (index n; [0] unused),
 /// for f and for ∇f (far_segment_rule.cpp builds them).
 struct FarRuleBin {
-  std::array<double, 11> f, gradient;
+  std::array<double, 21> f, gradient;
 };
 
 class FarSegmentRule {
  public:
-  /// Longest rule used (even): beyond it the generated function (its own
-  /// far rule of 7–20 nodes, or a closed form) is about as cheap.
-  static constexpr int max_nodes = 10;
+  /// Longest rule of each kind (even): beyond it the exact function is
+  /// about as cheap. The generated classical functions (a far rule of
+  /// 7–20 nodes, or a closed form) cost about 10 nodes; the SCALIS ones
+  /// take 1.1 Gauss panels of 7–20 nodes each besides their frame and
+  /// checks, about 20 nodes (docs/field.md, "Tolerance").
+  static constexpr int max_classical_nodes = 10, max_scalis_nodes = 20;
+  static constexpr int max_nodes = std::max(max_classical_nodes, max_scalis_nodes);
   static_assert(max_nodes + 1 == std::tuple_size_v<decltype(FarRuleBin::f)>);
   /// The table's bins: 8 per octave of S from 2, the last one open.
   static constexpr int bins_per_octave = 8;  ///< the top 3 bits of S's mantissa
   static constexpr int max_exponent = 30;    ///< S up to 2^31: P ~10^9 |AB| away
   static constexpr int bin_count = max_exponent * bins_per_octave;
 
-
-  /// The rule of a Cauchy segment of degree `degree` and sharpness `s` with
-  /// weight coefficients `weight` (all ≥ 0), or nothing where it does not
-  /// apply (another kernel, a negative weight coefficient, constants
-  /// outside the range of normal doubles).
+  /// The rule of a classical Cauchy segment of degree `degree` and
+  /// sharpness `s` with weight coefficients `weight` (all ≥ 0), or nothing
+  /// where it does not apply (another kernel, a negative weight coefficient,
+  /// constants outside the range of normal doubles).
   static std::optional<FarSegmentRule> make(const Vec3& a, const Vec3& b, int degree, double s,
                                             std::span<const double> weight);
+  /// The rule of a SCALIS Cauchy segment of degree `degree`, scale `sigma`
+  /// and radii `tau0`, `tau1` (both > 0) whose field is `field_scale` · F
+  /// (iso/h, scalis_segment.hpp), or nothing where it does not apply (a
+  /// radius 0, a degree without a rule, constants outside the range of
+  /// normal doubles).
+  static std::optional<FarSegmentRule> make_scalis(const Vec3& a, const Vec3& b, int degree, double sigma,
+                                                   double tau0, double tau1, double field_scale);
 
-  /// A lower bound of f(P): L w_0 (1 + s r²)^(−m) with r the farther end's
-  /// distance (K decreases, and w ≥ w_0 on [0, 1] since no coefficient is
-  /// negative). Rounded like any f; 0 where it underflows.
+  /// A lower bound of f(P): L ∫ω · Q_max^(−m), with Q_max = max(Q(0), Q(1))
+  /// (Q is convex in t, ω ≥ 0), as L ∫ω q_unit^(−m) · (q_unit / Q_max)^m so
+  /// that neither factor leaves the double range for moderate inputs.
+  /// Rounded like any f; 0 where it underflows.
   double lower_bound(const Vec3& p) const {
     const Vec3 pa = p - a_;
     const Vec3 pb = pa - ab_;
-    const double inverse = 1 / (1 + s_ * std::max(pa.squaredNorm(), pb.squaredNorm()));
+    const double inverse = q_unit_ / std::max(pa.squaredNorm() + offset_a_, pb.squaredNorm() + offset_b_);
     double power = 1;
     for (int k = 0; k < degree_ / 2; ++k) power *= inverse;
     if (degree_ % 2 == 1) power *= std::sqrt(inverse);
-    return length_ * weight_[0] * power;
+    return lower_front_ * power;
   }
 
   /// The nodes n of the shortest rule with an even n (the rules run two
   /// nodes at a time) whose bound is at most `budget` for f and
-  /// m √s · budget for each component of ∇f; 0 where that takes more than
-  /// max_nodes nodes (or S is not finite).
+  /// m g · budget for each component of ∇f; 0 where that takes more than
+  /// the longest rule of its kind (or S is not finite).
   int nodes(const Vec3& p, double budget) const {
     const Vec3 pa = p - a_;
     const Vec3 pb = pa - ab_;
     const double focal_sum =
-        (std::sqrt(pa.squaredNorm() + inverse_s_) + std::sqrt(pb.squaredNorm() + inverse_s_)) * two_over_length_;
+        (std::sqrt(pa.squaredNorm() + offset_a_) + std::sqrt(pb.squaredNorm() + offset_b_)) * two_over_length_;
     if (!(focal_sum > 2.0 && focal_sum <= std::numeric_limits<double>::max())) return 0;
     double f_allowed = budget * f_factor_;
-    if (weight_degree_ > 0) f_allowed /= weight_bound(focal_sum);
+    if (weight_varies_) f_allowed /= weight_bound(focal_sum);
     const double gradient_allowed = f_allowed * gradient_factor_;
     const FarRuleBin& bound = bins_[bin_of(focal_sum)];
-    // The bounds decrease with n: the even rules that fail are 2 … n − 2.
-    int n = 2;
-    for (std::size_t k = 2; k <= max_nodes; k += 2) {
-      n += 2 * int(!(bound.f[k] <= f_allowed) | !(bound.gradient[k] <= gradient_allowed));
+    // The bounds decrease with n, so the rules that fit are the even n from
+    // some 2 j on: bisect for j in 1 … longest_/2 (longest_/2 + 1: none fits),
+    // with fit(low) false (low = 0 stands for that) and high fitting or past
+    // the end. Four halvings for 20 nodes, where a scan took ten steps.
+    int low = 0, high = longest_ / 2 + 1;
+    while (high - low > 1) {
+      const int middle = (low + high) / 2;
+      const std::size_t n = std::size_t(2 * middle);
+      // Both comparisons always (&, not &&): no branch to mispredict.
+      const bool fits = (bound.f[n] <= f_allowed) & (bound.gradient[n] <= gradient_allowed);
+      (fits ? high : low) = middle;
     }
-    return n > max_nodes ? 0 : n;
+    return 2 * high > longest_ ? 0 : 2 * high;
   }
   /// f(P) and, with `gradient`, ∇f(P) by the n-node rule (n from nodes());
   /// false (`out` unspecified) where the result would not be a normal double
   /// (the exact path then decides).
   bool evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const;
 
+  /// What the rule's nodes sum, besides P and the segment (file comment):
+  /// classical q = 1 + s |P − Γ|² with the weight w; SCALIS
+  /// Q = |P − Γ|² + c(t)², c(t) = c0 + c1 t, with the weight c(t)^(i−1).
+  struct Integrand {
+    bool scalis = false;
+    double s = 0;         ///< classical
+    double c0 = 0, c1 = 0;  ///< SCALIS
+    static constexpr std::size_t weight_count = 4;  ///< w_0 … w_3, as segments (segment.hpp)
+    std::array<double, weight_count> w{};  ///< classical; {1} for SCALIS
+    int weight_degree = 0;
+  };
+
  private:
   FarSegmentRule() = default;
-  /// W = Σ w_k (1/2 + S/4)^k: |w| on the ellipse, where |t| ≤ 1/2 + S/4.
-  double weight_bound(double focal_sum) const;
+  /// What make and make_scalis share once the integrand is set: the
+  /// constants of the bound and of the lower bound, the table; false where
+  /// one of them is not a normal double.
+  bool finish(const Vec3& a, const Vec3& b, int degree);
+  /// W(S) (file comment): |ω| ≤ Ω W on the ellipse.
+  double weight_bound(double focal_sum) const {
+    const double radius = 0.5 + 0.25 * focal_sum;
+    double w = integrand_.w[std::size_t(integrand_.weight_degree)];
+    for (int k = integrand_.weight_degree - 1; k >= 0; --k) w = w * radius + integrand_.w[std::size_t(k)];
+    const double linear = bound_base_ + bound_slope_ * radius;
+    for (int k = 0; k < bound_power_; ++k) w *= linear;
+    return w;
+  }
   /// The bin whose lower edge is the largest at or below S (S > 2, finite).
   static int bin_of(double focal_sum) {
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(focal_sum);
@@ -120,16 +177,31 @@ class FarSegmentRule {
     return (exponent - 1) * bins_per_octave + int((bits >> 49) & 7);
   }
   Vec3 a_, ab_;
-  double length_ = 0, s_ = 0, inverse_s_ = 0;
-  int degree_ = 0;  ///< i: q^(−i/2)
-  int weight_degree_ = 0;
-  static constexpr std::size_t rule_weight_count = 4;  ///< w_0 … w_3, as segments (segment.hpp)
-  std::array<double, rule_weight_count> weight_{};
-  /// (s L²)^m / L, and √s L: the f budget over this is what the table's f
-  /// bound must not exceed, and the ∇f one over this times it the table's ∇f
-  /// bound (weight W divided out at each point where w is not constant).
+  Integrand integrand_;
+  int degree_ = 0;  ///< i: Q^(−i/2)
+  int longest_ = 0;  ///< max_classical_nodes or max_scalis_nodes
+  double offset_a_ = 0, offset_b_ = 0;  ///< c(0)², c(1)²
+  double two_over_length_ = 0;  ///< 2 / L'
+  /// The unit of Q in lower_bound: 1/s (classical), c_max² (SCALIS, c_max
+  /// the larger end's c). Below, Ω is ω's constant factor: s^(−m) (times
+  /// w_0 where w is that constant; classical), (iso/h) σ c_max^(i−1) (SCALIS).
+  double q_unit_ = 0;
+  /// L Ω ∫_0^1 (ω/Ω) dt · q_unit^(−m): lower_bound's factor.
+  double lower_front_ = 0;
+  /// W(S) = Σ w_k r^k · (bound_base_ + bound_slope_ r)^bound_power_: the
+  /// polynomial is the classical weight (where it is not constant), the power
+  /// SCALIS (c_min/c_max, |c1|/c_max, i − 1: W relative to c_max^(i−1)).
+  double bound_base_ = 1, bound_slope_ = 0;
+  int bound_power_ = 0;
+  /// W varies with S (else it is 1: its constant is in Ω).
+  bool weight_varies_ = false;
+  /// L'^(2m) / (L Ω): the f budget times this (over W) is what the table's
+  /// f bound must not exceed; g L' times that is what its ∇f bound must not.
   double f_factor_ = 0, gradient_factor_ = 0;
-  double two_over_length_ = 0;
+  /// f = front · Σ_j g_j ω̂(t_j) Q̂_j^(−m) and ∇f = front · gradient_front ·
+  /// Σ_j g_j ω̂(t_j) Q̂_j^(−m−1) (P − Γ(t_j)), in what sum_nodes computes:
+  /// classical Q̂ = q, ω̂ = w (1 where constant); SCALIS Q̂ = Q, ω̂ = c^(i−1).
+  double front_ = 0, gradient_front_ = 0;
   /// The table of this degree (built once per degree, never freed).
   const FarRuleBin* bins_ = nullptr;
 };

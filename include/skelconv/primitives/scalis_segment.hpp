@@ -41,12 +41,14 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "skelconv/errors.hpp"
 #include "skelconv/geometry.hpp"
 #include "skelconv/detail/scaled_frame.hpp"
+#include "skelconv/primitives/far_segment_rule.hpp"
 #include "skelconv/primitives/scalis_segment_input.hpp"
 #include "skelconv/primitives/segment_input.hpp"  // KernelFamily
 
@@ -105,6 +107,11 @@ class ScalisSegment {
   Vec3 gradient(const Vec3& p) const;
   FieldSample value_and_gradient(const Vec3& p) const;
 
+  /// The short Gauss–Legendre rule of a Cauchy segment whose radii are both
+  /// positive (far_segment_rule.hpp), which Skeleton's tolerance mode uses
+  /// far from it; nullptr for every other SCALIS segment.
+  const FarSegmentRule* far_rule() const { return far_rule_ ? &*far_rule_ : nullptr; }
+
  private:
   /// f = iso·F/h and/or ∇f (normalised, back in the world); +inf at the
   /// divergent points.
@@ -141,6 +148,7 @@ class ScalisSegment {
   bool diverges_on_segment_ = false;
   bool diverges_at_zero_radius_ = false;
   bool may_vanish_ = false;  ///< F may be 0 in double: the kernel has a finite support
+  std::optional<FarSegmentRule> far_rule_;
 };
 
 }  // namespace skelconv

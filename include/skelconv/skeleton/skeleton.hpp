@@ -124,12 +124,14 @@ class Skeleton {
   FieldSample value_and_gradient(const Vec3& p, Acceleration acceleration, double tolerance = 0.0) const;
 
   /// The tolerance mode (docs/field.md, "Tolerance"): on a skeleton that is a
-  /// list of at least min_far_rule_segments Cauchy segments with no negative
-  /// weight coefficient, segments far from P are evaluated by short
-  /// Gauss–Legendre rules whose a-priori bounds keep f within tolerance · f
-  /// of the exact field (to rounding), and each component of ∇f within
-  /// tolerance · max_k (i_k/2) √s_k · f. Other skeletons, and tolerance 0,
-  /// give the exact evaluation above.
+  /// list of at least min_far_rule_segments Cauchy segments, classical (no
+  /// negative weight coefficient) or SCALIS (both radii > 0), of one kind or
+  /// both, segments far from P are evaluated by short Gauss–Legendre rules
+  /// whose a-priori bounds keep f within tolerance · f of the exact field
+  /// (to rounding), and each component of ∇f within tolerance · f times the
+  /// mean over the segments of (i_k/2) g_k, g_k = √s_k (classical) or
+  /// 1/(σ_k min τ_k) (SCALIS): the bound of |∇f|/f of each kernel. Other
+  /// skeletons, and tolerance 0, give the exact evaluation above.
   /// InputError ("tolerance") unless 0 ≤ tolerance < 1.
   double value(const Vec3& p, double tolerance) const;
   FieldSample value_and_gradient(const Vec3& p, double tolerance) const;
@@ -169,7 +171,7 @@ class Skeleton {
   void changed();
   const detail::SkeletonIndex* index_for(Acceleration acceleration) const;
   FieldSample evaluate(const Vec3& p, Need need, Acceleration acceleration, double tolerance) const;
-  FieldSample evaluate_primitive_list(const Vec3& p, Need need, double tolerance) const;
+  FieldSample evaluate_primitive_list(const Vec3& p, Need need) const;
   FieldSample evaluate_child(const Child& child, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
   FieldSample evaluate_leaf(std::size_t k, const Vec3& p, Need need) const;
   FieldSample evaluate_node(NodeId id, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
