@@ -63,11 +63,23 @@ ParsedNumber parse_coordinate(std::string_view token) {
   return {value, {}};
 }
 
+/// `text` with its control characters written as \xNN, so that a message
+/// stays one line and whole (a NUL byte would end it).
+std::string printable(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte < 0x20 && c != '\t') || byte == 0x7f) out += fmt::format("\\x{:02x}", byte);
+    else out += c;
+  }
+  return out;
+}
+
 /// Long lines are cut in messages, so that one message stays one line.
 std::string excerpt(std::string_view line) {
   constexpr std::size_t max_length = 60;
-  if (line.size() <= max_length) return std::string(line);
-  return std::string(line.substr(0, max_length - 3)) + "...";
+  if (line.size() <= max_length) return printable(line);
+  return printable(line.substr(0, max_length - 3)) + "...";
 }
 
 }  // namespace
@@ -78,7 +90,7 @@ std::optional<Vec3> parse_point_line(std::string_view line) {
   if (tokens.count == 0) return std::nullopt;
 
   const auto fail = [&](const std::string& detail) {
-    throw InputError(fmt::format("expected three numbers \"x y z\", got \"{}\" ({})", excerpt(line), detail));
+    throw InputError(fmt::format("expected three numbers \"x y z\", got \"{}\" ({})", excerpt(line), printable(detail)));
   };
   if (tokens.count != 3) fail(fmt::format("{} value{}", tokens.count, tokens.count == 1 ? "" : "s"));
   Vec3 point;
