@@ -4,10 +4,14 @@
 // family has no real circle, and writes the mesh.
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -89,6 +93,60 @@ TEST(CanalCli, APlanePoleKeepsTheMirrorSymmetryOfTheInput) {
   }
   EXPECT_TRUE(std::filesystem::exists(mesh));
   std::filesystem::remove(mesh);
+}
+
+// Translations and homotheties are Möbius maps (docs/canal.md): the family
+// of moved spheres about the moved pole is the moved family. Far from the
+// origin (1e4, spheres of radius ~0.3) the pole was once refused as tangent;
+// a sphere and a plane pole, the Lorentz and the linear families, at 1e4,
+// and scaled by 2^±20. The bound is the input's rounding in the unit frame:
+// ulp(1e4) / scale, with room for the conditioning of the family.
+TEST(CanalCli, MovedAndScaledInputsGiveTheMovedFamily) {
+  const auto json_of = [](const std::vector<Sphere<double>>& spheres, const std::string& pole) {
+    std::string text = "{\"spheres\": [";
+    for (std::size_t k = 0; k < spheres.size(); ++k) {
+      const Sphere<double>& s = spheres[k];
+      text += fmt::format("{}{{\"center\": [{:.17g}, {:.17g}, {:.17g}], \"radius\": {:.17g}}}", k ? ", " : "",
+                          s.center.x(), s.center.y(), s.center.z(), s.radius);
+    }
+    return text + "], " + pole + "\"samples\": 17}";
+  };
+  const std::vector<Sphere<double>> spheres{{{0, 0, 0}, 0.3}, {{0.5, 0.4, 0}, 0.35}, {{1, 0.5, 0.1}, 0.4},
+                                            {{1.5, 0.3, 0.2}, 0.35}, {{2, 0, 0.2}, 0.3}};
+  const auto pole_text = [](int kind, const Vec3& shift, double scale) {
+    if (kind == 0) {
+      const Vec3 c = scale * Vec3(-5, 4, 3) + shift;
+      return fmt::format("\"interpolation\": \"lorentz\", \"pole\": {{\"center\": [{:.17g}, {:.17g}, {:.17g}], "
+                         "\"radius\": {:.17g}}}, ", c.x(), c.y(), c.z(), scale);
+    }
+    if (kind == 1) {  // the plane z = −3, moved: z = −3 scale + shift.z
+      return fmt::format("\"interpolation\": \"lorentz\", \"pole\": {{\"normal\": [0, 0, 1], \"offset\": {:.17g}}}, ",
+                         -3 * scale + shift.z());
+    }
+    return std::string("\"interpolation\": \"linear\", ");
+  };
+  for (int kind = 0; kind < 3; ++kind) {
+    const std::vector<FamilySample<double>> reference = sample_canal(parse_canal_json(json_of(spheres, pole_text(kind, Vec3::Zero(), 1))));
+    using Move = std::pair<Vec3, double>;  // shift, scale
+    for (const auto& [shift, scale] : {Move{Vec3(1e4, -1e4, 1e4), 1.0}, Move{Vec3::Zero(), std::ldexp(1.0, 20)},
+                                       Move{Vec3::Zero(), std::ldexp(1.0, -20)}}) {
+      std::vector<Sphere<double>> moved;
+      for (const Sphere<double>& s : spheres) moved.push_back(Sphere<double>{Vec3(scale * s.center + shift), scale * s.radius});
+      const std::vector<FamilySample<double>> samples = sample_canal(parse_canal_json(json_of(moved, pole_text(kind, shift, scale))));
+      ASSERT_EQ(samples.size(), reference.size());
+      const double bound = shift.norm() > 0 ? 1e-10 : 1e-13;
+      for (std::size_t j = 0; j < samples.size(); ++j) {
+        const std::string where = fmt::format("pole kind {}, shift {}, scale {}, sample {}", kind, shift.x(), scale, j);
+        EXPECT_LT(((samples[j].sphere.center - shift) / scale - reference[j].sphere.center).norm(), bound) << where;
+        EXPECT_NEAR(samples[j].sphere.radius / scale, reference[j].sphere.radius, bound) << where;
+        ASSERT_EQ(samples[j].circle.has_value(), reference[j].circle.has_value()) << where;
+        if (!samples[j].circle) continue;
+        EXPECT_LT(((samples[j].circle->center - shift) / scale - reference[j].circle->center).norm(), bound) << where;
+        EXPECT_NEAR(samples[j].circle->radius / scale, reference[j].circle->radius, bound) << where;
+        EXPECT_LT((samples[j].circle->normal - reference[j].circle->normal).norm(), bound) << where;
+      }
+    }
+  }
 }
 
 TEST(CanalCli, LinearCirclesAreTheClosedFormAndNullAtAPoint) {

@@ -91,6 +91,25 @@ TEST(Interval, InverseKernelsNearTheirSkeleton) {
   EXPECT_NEAR(away.lower(), 1.0 / 8.0, 1e-15);
 }
 
+// A negative weight makes a primitive's enclosure [lo, 0] where the box
+// reaches beyond its compact support; the sums above it must keep lo.
+TEST(Interval, NegativeWeightBeyondTheSupport) {
+  const Skeleton skeleton = parse_skeleton_json(R"({"primitives": [
+      {"blend": "sum", "weights": [2], "children": [
+        {"type": "point", "center": [0, 0, 0], "weight": -1, "kernel": {"family": "soft", "R": 1}}]},
+      {"type": "segment", "a": [0, 3, 0], "b": [1, 3, 0], "weight": [-1],
+       "kernel": {"family": "compact", "degree": 4, "R": 1}}]})");
+  // The point's box holds its centre (f = 2 · −1 · K(0) = −2) and points
+  // beyond R (f = 0); the segment's box is the segment itself, where
+  // f = −∫ (1 − x²)² dx over [−t, 1 − t] ≤ −8/15 (t = 0, the end).
+  const Interval point_box = enclose(skeleton, Box{Vec3(0, 0, 0), Vec3(2, 2, 2)});
+  EXPECT_LE(point_box.lower(), -2.0);
+  EXPECT_GE(point_box.upper(), 0.0);
+  const Interval segment_box = enclose(skeleton, Box{Vec3(0, 3, 0), Vec3(1, 3, 0)});
+  EXPECT_LE(segment_box.lower(), -8.0 / 15.0);
+  EXPECT_GE(segment_box.upper(), -8.0 / 15.0);
+}
+
 TEST(Interval, OctreeUndeterminedCellsGrowLikeArea) {
   // One soft point: the surface is a sphere of radius 1 (R = √(2 + √2)).
   const Skeleton skeleton = parse_skeleton_json(

@@ -178,5 +178,21 @@ TEST(MeshCheck, SelfIntersection) {
   EXPECT_NO_THROW(check_closed_mesh(touching));
 }
 
+// The orientation test does not depend on where the mesh is: the unit
+// cube at 1e-3 of its size, 1e4 from the origin, is outward, and inside
+// out once flipped.
+TEST(MeshCheck, OrientationFarFromTheOrigin) {
+  TriangleMesh cube = unit_cube();
+  for (Vec3& v : cube.vertices) v = 1e-3 * v + Vec3(1e4, -1e4, 1e4);
+  EXPECT_NO_THROW(check_closed_mesh(cube));
+  for (auto& t : cube.triangles) std::swap(t[1], t[2]);
+  try {
+    check_closed_mesh(cube);
+    ADD_FAILURE() << "an inside-out cube accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the mesh is inside out"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace skelconv::reconstruct

@@ -122,6 +122,32 @@ TEST(ThicknessCorrection, YForkWithin2Percent) { expect_correction_matters_and_w
 TEST(ThicknessCorrection, LCornerWithin2Percent) { expect_correction_matters_and_works(l_corner()); }
 TEST(ThicknessCorrection, BentChainOfUnequalLengthsWithin2Percent) { expect_correction_matters_and_works(bent_chain()); }
 
+// Scaling the graph, R and τ by 2^6 (exact in double) scales the segment
+// weights by 2^−6 (a weight is a field per length) and leaves the point
+// weights (a field) and the fit alone: the fit's unknowns are dimensionless.
+TEST(ThicknessCorrection, TheSameFitAtEveryScale) {
+  const SegmentGraph graph = segment_graph_of(parse_skeleton_json(y_fork()));
+  ThicknessCorrectionOptions options;
+  options.thickness = tau;
+  const ThicknessCorrection c = correct_thickness(graph, options);
+  for (const double scale : {0.015625, 64.0}) {
+    SegmentGraph scaled = graph;
+    for (Vec3& node : scaled.nodes) node *= scale;
+    scaled.kernel.R *= scale;
+    ThicknessCorrectionOptions scaled_options = options;
+    scaled_options.thickness = tau * scale;
+    const ThicknessCorrection s = correct_thickness(scaled, scaled_options);
+    EXPECT_TRUE(s.converged) << scale;
+    EXPECT_EQ(s.iterations, c.iterations) << scale;
+    ASSERT_EQ(s.weights.size(), c.weights.size());
+    ASSERT_EQ(s.point_weights.size(), c.point_weights.size());
+    for (std::size_t k = 0; k < c.weights.size(); ++k) {
+      EXPECT_NEAR(s.weights[k] * scale, c.weights[k], 1e-9 * c.base_weight) << scale << " node " << k;
+      EXPECT_NEAR(s.point_weights[k], c.point_weights[k], 1e-9 * c.base_weight) << scale << " node " << k;
+    }
+  }
+}
+
 TEST(ThicknessCorrection, PointsOfTheSegmentsSupportStallAboveTolerance) {
   // Why the node points have their own support radius (point_support_ratio):
   // with the segments' R, the ramp cannot follow the missing half-line at a

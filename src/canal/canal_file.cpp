@@ -7,6 +7,7 @@
 // path.
 #include "skelconv/canal/canal_file.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -14,6 +15,8 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -136,21 +139,22 @@ Sphere<double> sphere(const Json& value, const std::string& path) {
 }
 
 /// A sphere, or {"normal": [nx, ny, nz], "offset": d} with n ≠ 0.
-Vector5<double> pole(const Json& value, const std::string& path) {
+Pole pole(const Json& value, const std::string& path) {
   if (value.is_object() && value.contains("normal")) {
     allow_only(value, path, {"normal", "offset"});
     const Plane<double> plane{point(field(value, path, "normal"), path + ".normal"),
                               number(field(value, path, "offset"), path + ".offset")};
     try {
-      return plane_vector(plane);
+      plane_vector(plane);  // validates the normal
     } catch (const InputError& error) {
       throw error.inside(path);
     }
+    return plane;
   }
   if (value.is_object() && !value.contains("center")) {
     throw InputError("must be a sphere {\"center\", \"radius\"} or a plane {\"normal\", \"offset\"}", path);
   }
-  return sphere_vector(sphere(value, path));
+  return sphere(value, path);
 }
 
 Interpolation interpolation(const Json& value, const std::string& path) {
@@ -189,6 +193,48 @@ CanalInput read_input(const Json& document) {
   return input;
 }
 
+/// The frame the family is computed in: x_local = (x − origin) / scale, the
+/// origin the centre of the spheres' bounding box, the scale a power of two
+/// near their size (centres' spread and radii), so scaling is exact. The
+/// Lorentz tolerances (sphere_interpolation.hpp, characteristic_circle.hpp)
+/// are relative to the Euclidean norm of the ℝ⁵ vectors, about |c|²/|r|: in
+/// world coordinates, spheres of radius 0.3 at 1e4 from the origin made a
+/// pole 7 away pass for tangent. Translations and homotheties are Möbius
+/// maps, linear on ℝ⁵ and preserving L, so the family and its circles are
+/// the same in either frame but for rounding.
+struct LocalFrame {
+  Vector3<double> origin;
+  double scale;
+
+  explicit LocalFrame(const std::vector<Sphere<double>>& spheres) {
+    Vector3<double> low = spheres.front().center, high = low;
+    double size = 0.0;
+    for (const Sphere<double>& s : spheres) {
+      low = low.cwiseMin(s.center);
+      high = high.cwiseMax(s.center);
+      size = std::max(size, std::abs(s.radius));
+    }
+    origin = 0.5 * (low + high);
+    size = std::max(size, 0.5 * (high - low).maxCoeff());
+    scale = std::exp2(std::round(std::log2(size)));  // size > 0: every radius is non-zero
+  }
+
+  Sphere<double> to_local(const Sphere<double>& s) const { return {(s.center - origin) / scale, s.radius / scale}; }
+  /// n·x = d becomes n·x_local = (d − n·origin) / scale.
+  Plane<double> to_local(const Plane<double>& p) const {
+    return {p.normal, (p.offset - p.normal.dot(origin)) / scale};
+  }
+  Vector3<double> to_world(const Vector3<double>& p) const { return origin + scale * p; }
+  FamilySample<double> to_world(FamilySample<double> sample) const {
+    sample.sphere = {to_world(sample.sphere.center), scale * sample.sphere.radius};
+    if (sample.circle) {
+      sample.circle->center = to_world(sample.circle->center);
+      sample.circle->radius *= scale;
+    }
+    return sample;
+  }
+};
+
 void append_point(std::string& text, const Vector3<double>& p) {
   fmt::format_to(std::back_inserter(text), "[{:.17g}, {:.17g}, {:.17g}]", p.x(), p.y(), p.z());
 }
@@ -208,18 +254,27 @@ CanalInput load_canal_file(const std::filesystem::path& path) {
 
 std::vector<FamilySample<double>> sample_canal(const CanalInput& input) {
   const auto t_of = [&input](int j) { return double(j) / double(input.samples - 1); };
+  if (input.spheres.empty()) throw InputError("at least 2 spheres are needed, got 0", "spheres");
+  const LocalFrame frame(input.spheres);
+  std::vector<Sphere<double>> local;
+  for (const Sphere<double>& sphere : input.spheres) local.push_back(frame.to_local(sphere));
   std::vector<FamilySample<double>> samples;
   if (input.interpolation == Interpolation::linear) {
-    const LinearSphereFamily<double> family(input.spheres);
-    for (int j = 0; j < input.samples; ++j) samples.push_back(family.sample(t_of(j)));
+    const LinearSphereFamily<double> family(local);
+    for (int j = 0; j < input.samples; ++j) samples.push_back(frame.to_world(family.sample(t_of(j))));
     return samples;
   }
   std::vector<Vector5<double>> spheres;
-  for (const Sphere<double>& sphere : input.spheres) spheres.push_back(sphere_vector(sphere));
-  const SphereInterpolation<double> family(spheres, *input.pole);
+  for (const Sphere<double>& sphere : local) spheres.push_back(sphere_vector(sphere));
+  const Vector5<double> pole =
+      std::visit([&frame](const auto& p) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(p)>, Plane<double>>) return plane_vector(frame.to_local(p));
+        else return sphere_vector(frame.to_local(p));
+      }, *input.pole);
+  const SphereInterpolation<double> family(spheres, pole);
   const long long pieces = (long long)input.spheres.size() - 1, steps = input.samples - 1;
   for (int j = 0; j < input.samples; ++j) {
-    samples.push_back(sample_family(family, t_of(j)));
+    samples.push_back(frame.to_world(sample_family(family, t_of(j))));
     // At a knot, the input sphere itself (its round trip through ℝ⁵ would
     // change the last digits of the centre and radius).
     if (j * pieces % steps == 0) samples.back().sphere = input.spheres[std::size_t(j * pieces / steps)];

@@ -18,25 +18,12 @@
 namespace skelconv::cli {
 namespace {
 
-/// Parses one line; nullopt for a blank one.
+/// Parses one line as `eval` parses its points (point_lines.hpp); nullopt
+/// for a blank one.
 std::optional<interval::Box> parse_box_line(std::string_view line) {
-  std::vector<double> values;
-  std::string text(line);
-  if (!text.empty() && text.back() == '\r') text.pop_back();
-  const char* cursor = text.c_str();
-  while (true) {
-    while (*cursor == ' ' || *cursor == '\t') ++cursor;
-    if (*cursor == '\0') break;
-    char* end = nullptr;
-    const double value = std::strtod(cursor, &end);
-    if (end == cursor || (*end != '\0' && *end != ' ' && *end != '\t')) {
-      throw InputError(fmt::format("not a number in \"{}\"", text));
-    }
-    values.push_back(value);
-    cursor = end;
-  }
-  if (values.empty()) return std::nullopt;
-  return interval::box_from_corners(values);
+  const std::optional<std::vector<double>> values = parse_number_line(line, 6, "six numbers \"x0 y0 z0 x1 y1 z1\"");
+  if (!values) return std::nullopt;
+  return interval::box_from_corners(*values);
 }
 
 /// Standard input, its lines bounded as `eval`'s (point_lines.hpp): input

@@ -12,6 +12,7 @@
 
 #include "exit_status.hpp"
 #include "point_lines.hpp"
+#include "tolerance_option.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/field/batch.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
@@ -97,7 +98,8 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
                    "in memory until the last one is evaluated");
   eval->add_option("--tolerance", options.tolerance,
                    "Relative tolerance of the field (default 0: exact to rounding); > 0 lets Cauchy segments far "
-                   "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")");
+                   "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")
+      ->check(tolerance_range());
   eval->footer(eval_footer);
   return eval;
 }

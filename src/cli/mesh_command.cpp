@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "exit_status.hpp"
+#include "tolerance_option.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/implicit_field.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
@@ -85,7 +86,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
                    "before meshing; default 4000000)");
   mesh->add_option("--tolerance", options.tolerance,
                    "Relative tolerance of the field (default 1e-12; 0: exact to rounding): Cauchy segments far "
-                   "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")");
+                   "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")
+      ->check(tolerance_range());
   mesh->add_flag("--ascii", options.ascii, "Write ASCII PLY instead of binary");
   mesh->add_flag("--quiet", options.quiet, "No progress line on stderr");
   mesh->footer(mesh_footer);

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -17,10 +18,13 @@ namespace {
 
 constexpr std::string_view blanks = " \t\r\v\f";
 
-/// The first three blank-separated tokens of a line and how many there are
-/// in all: a line of a million values costs no more memory than one of four.
+/// The most numbers a line holds: six, a box of `bound`.
+constexpr std::size_t max_numbers = 6;
+
+/// The first max_numbers blank-separated tokens of a line and how many there
+/// are in all: a line of a million values costs no more memory than one of seven.
 struct Tokens {
-  std::array<std::string_view, 3> first;
+  std::array<std::string_view, max_numbers> first;
   std::size_t count = 0;
 };
 
@@ -63,31 +67,50 @@ ParsedNumber parse_coordinate(std::string_view token) {
   return {value, {}};
 }
 
+/// `text` with its control characters written as \xNN, so that a message
+/// stays one line and whole (a NUL byte would end it).
+std::string printable(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte < 0x20 && c != '\t') || byte == 0x7f) out += fmt::format("\\x{:02x}", byte);
+    else out += c;
+  }
+  return out;
+}
+
 /// Long lines are cut in messages, so that one message stays one line.
 std::string excerpt(std::string_view line) {
   constexpr std::size_t max_length = 60;
-  if (line.size() <= max_length) return std::string(line);
-  return std::string(line.substr(0, max_length - 3)) + "...";
+  if (line.size() <= max_length) return printable(line);
+  return printable(line.substr(0, max_length - 3)) + "...";
 }
 
 }  // namespace
 
-std::optional<Vec3> parse_point_line(std::string_view line) {
+std::optional<std::vector<double>> parse_number_line(std::string_view line, std::size_t count,
+                                                     std::string_view expected) {
   if (line.ends_with('\r')) line.remove_suffix(1);
   const Tokens tokens = split_on_blanks(line);
   if (tokens.count == 0) return std::nullopt;
 
   const auto fail = [&](const std::string& detail) {
-    throw InputError(fmt::format("expected three numbers \"x y z\", got \"{}\" ({})", excerpt(line), detail));
+    throw InputError(fmt::format("expected {}, got \"{}\" ({})", expected, excerpt(line), printable(detail)));
   };
-  if (tokens.count != 3) fail(fmt::format("{} value{}", tokens.count, tokens.count == 1 ? "" : "s"));
-  Vec3 point;
-  for (int k = 0; k < 3; ++k) {
-    const ParsedNumber number = parse_coordinate(tokens.first[std::size_t(k)]);
+  if (tokens.count != count) fail(fmt::format("{} value{}", tokens.count, tokens.count == 1 ? "" : "s"));
+  std::vector<double> values;
+  for (std::size_t k = 0; k < count; ++k) {
+    const ParsedNumber number = parse_coordinate(tokens.first[k]);
     if (!number.problem.empty()) fail(number.problem);
-    point[k] = number.value;
+    values.push_back(number.value);
   }
-  return point;
+  return values;
+}
+
+std::optional<Vec3> parse_point_line(std::string_view line) {
+  const std::optional<std::vector<double>> values = parse_number_line(line, 3, "three numbers \"x y z\"");
+  if (!values) return std::nullopt;
+  return Vec3((*values)[0], (*values)[1], (*values)[2]);
 }
 
 std::string read_point_input(std::FILE* in, const PointInputLimits& limits) {

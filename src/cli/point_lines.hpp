@@ -1,4 +1,5 @@
-// src/cli/point_lines.hpp — parsing the "x y z" query lines of `skelconv eval`.
+// src/cli/point_lines.hpp — parsing the "x y z" query lines of `skelconv eval`
+// (and the box lines of `skelconv bound`).
 #pragma once
 
 #include <cstddef>
@@ -6,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "skelconv/geometry.hpp"
 
@@ -42,5 +44,10 @@ std::string read_point_input(std::FILE* in, const PointInputLimits& limits);
 /// Throws skelconv::InputError with the problem only (the caller adds the
 /// line number), e.g. `expected three numbers "x y z", got "1 2" (2 values)`.
 std::optional<Vec3> parse_point_line(std::string_view line);
+
+/// The same for a line of `count` numbers (at most 6), e.g. a box of `bound`:
+/// `expected` names them in messages ("six numbers \"x0 y0 z0 x1 y1 z1\"").
+std::optional<std::vector<double>> parse_number_line(std::string_view line, std::size_t count,
+                                                     std::string_view expected);
 
 }  // namespace skelconv::cli

@@ -49,7 +49,11 @@ struct Walker {
     for (std::size_t k = 0; k < children.size(); ++k) {
       // A child that may be +inf may make the sum the +inf marker.
       if (children[k].upper() == infinity) total = Interval(total.lower(), infinity);
-      total += safe_product(Interval(blend.weight_of(k)), Interval(children[k].lower(), std::min(children[k].upper(), std::numeric_limits<double>::max())));
+      // A plain product, not safe_product: a child may be negative (a
+      // negative weight below it), which safe_product's k ⊂ [0, +inf] does
+      // not allow, and the weight is finite and non-zero, so no 0 · inf.
+      total += Interval(blend.weight_of(k)) *
+               Interval(children[k].lower(), std::min(children[k].upper(), std::numeric_limits<double>::max()));
     }
     return total;
   }

@@ -255,7 +255,7 @@ SegmentGraph refine(const SegmentGraph& g, const std::vector<std::size_t>& corre
 /// The model of the fit (thickness_fit.hpp): unknown k is the relative
 /// change x of a free node's hat weight (weight w_τ (1 + x): basis w_τ times
 /// the hat, weight 1 at the node, linear to 0 at its neighbours) or the
-/// point weight at a corrected node (weight x w_τ ≥ 0). `node_of_unknown[k]`
+/// point weight at a corrected node (weight x w_τ R ≥ 0). `node_of_unknown[k]`
 /// is its node; `is_point[k]` says which kind.
 struct ClassicalModel {
   detail::LinearThicknessModel model;
@@ -263,13 +263,20 @@ struct ClassicalModel {
   std::vector<bool> is_point;
 };
 
+/// The point weight of x = 1: w_τ R, about the field of a segment of weight
+/// w_τ and length R. A segment's weight is a field per length (w_τ scales as
+/// 1/length) and a point's weight a field, so with w_τ alone the point's x
+/// would scale with the skeleton, and the penalty λ x² and the damping with
+/// it: the fit would not be the same at every scale.
+double point_unit(const ThicknessCorrection& c) { return c.base_weight * c.refined.kernel.R; }
+
 /// The weights of `c.refined` and its point weights for the fit's x.
 void apply(ThicknessCorrection& c, const ClassicalModel& m, const Eigen::VectorXd& x) {
   c.weights.assign(c.refined.nodes.size(), c.base_weight);
   c.point_weights.assign(c.refined.nodes.size(), 0.0);
   for (std::size_t k = 0; k < m.node_of_unknown.size(); ++k) {
     const auto xk = x(Eigen::Index(k));
-    if (m.is_point[k]) c.point_weights[m.node_of_unknown[k]] = xk * c.base_weight;
+    if (m.is_point[k]) c.point_weights[m.node_of_unknown[k]] = xk * point_unit(c);
     else c.weights[m.node_of_unknown[k]] = (1 + xk) * c.base_weight;
   }
 }
@@ -291,7 +298,7 @@ ClassicalModel classical_model(const ThicknessCorrection& c, const std::vector<b
   }
   for (std::size_t k : c.corrected_nodes) {
     Skeleton point({}, r.iso);
-    point.add(PointPrimitive(r.nodes[k], point_kernel, c.base_weight));
+    point.add(PointPrimitive(r.nodes[k], point_kernel, point_unit(c)));
     m.model.basis.push_back(std::move(point));
     m.model.lower.push_back(0.0);
     m.node_of_unknown.push_back(k), m.is_point.push_back(true);

@@ -513,7 +513,6 @@ namespace {
 std::string ray_march_page(const Skeleton& skeleton, const ViewPageOptions& options) {
   std::vector<Term> terms;
   collect_terms(skeleton, Skeleton::root, "primitives", 1.0, terms);
-  if (terms.empty()) throw InputError("no primitive: there is no surface to show", "primitives");
   // Every term in file order, so that a refusal names the first element
   // the ray marcher cannot show (its type or its kernel).
   for (const Term& term : terms) check_term(term);
@@ -591,6 +590,8 @@ std::string ray_march_page(const Skeleton& skeleton, const ViewPageOptions& opti
 
 std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& options, ViewPageReport* report) {
   skeleton.validate();  // bad input is refused here, whatever the page
+  // Refused before either page is tried: the mesh preview has no box to mesh in.
+  if (skeleton.primitives().empty()) throw InputError("no primitive: there is no surface to show", "primitives");
   ViewPageReport local;
   ViewPageReport& r = report ? *report : local;
   try {

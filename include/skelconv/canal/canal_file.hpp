@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "skelconv/canal/canal_family.hpp"
@@ -29,10 +30,13 @@ namespace skelconv::canal {
 
 enum class Interpolation { lorentz, linear };
 
+/// The pole of the Lorentz interpolation: a sphere or a plane.
+using Pole = std::variant<Sphere<double>, Plane<double>>;
+
 struct CanalInput {
   std::vector<Sphere<double>> spheres;
   Interpolation interpolation = Interpolation::lorentz;
-  std::optional<Vector5<double>> pole;  ///< on Λ⁴ (sphere_vector or plane_vector); lorentz only
+  std::optional<Pole> pole;  ///< lorentz only, as written in the file
   int samples = 2;
 };
 
@@ -49,6 +53,9 @@ CanalInput load_canal_file(const std::filesystem::path& path);
 /// Builds the family (InputError located at "spheres[k]" or "pole" for the
 /// refusals of SphereInterpolation and LinearSphereFamily) and samples it at
 /// t = j/(N − 1) (EvaluationError where a sample is a point or a plane).
+/// The family is computed in a frame centred on the spheres and scaled by a
+/// power of two to unit size, so that the result does not depend on where
+/// the spheres are or on their size but by rounding.
 std::vector<FamilySample<double>> sample_canal(const CanalInput& input);
 
 /// The output document, one sample per line.

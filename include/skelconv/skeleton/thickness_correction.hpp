@@ -102,7 +102,7 @@ struct ThicknessCorrectionOptions {
   /// Samples per length τ along each segment (ends included).
   double samples_per_thickness = 4.0;
   /// λ of the fit's penalty λ Σ x_k² on the relative changes x_k of the
-  /// unknowns (hat weight / w_τ − 1, point weight / w_τ). Without it the
+  /// unknowns (hat weight / w_τ − 1, point weight / (w_τ R)). Without it the
   /// fit trades a point primitive against a large negative end weight
   /// (both peak at the node) for little gain; 1e-5 keeps the weights within
   /// a few w_τ and costs a few tenths of a percent of thickness on the
