@@ -179,12 +179,24 @@ TEST(MeshCheck, SelfIntersection) {
 }
 
 // The orientation test does not depend on where the mesh is: the unit
-// cube at 1e-3 of its size, 1e4 from the origin, is outward, and inside
-// out once flipped.
-TEST(MeshCheck, OrientationFarFromTheOrigin) {
+// cube at 1e-3 of its size, 1e4 from the origin, is inside out once
+// flipped. Unflipped, it is refused for its position: a skeleton of a
+// mesh 1.7e-3 across could not be written 1e4 from the origin (skeleton
+// files refuse segments shorter than 1e-8 of their coordinates), while the
+// same cube 1 from the origin is accepted.
+TEST(MeshCheck, OrientationAndPositionFarFromTheOrigin) {
   TriangleMesh cube = unit_cube();
   for (Vec3& v : cube.vertices) v = 1e-3 * v + Vec3(1e4, -1e4, 1e4);
-  EXPECT_NO_THROW(check_closed_mesh(cube));
+  try {
+    check_closed_mesh(cube);
+    ADD_FAILURE() << "a cube 1.7e-3 across 1e4 from the origin accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lies 1e+04 from the origin"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("move the mesh near the origin"), std::string::npos) << e.what();
+  }
+  TriangleMesh near = unit_cube();
+  for (Vec3& v : near.vertices) v = 1e-3 * v + Vec3(1, -1, 1);
+  EXPECT_NO_THROW(check_closed_mesh(near));
   for (auto& t : cube.triangles) std::swap(t[1], t[2]);
   try {
     check_closed_mesh(cube);

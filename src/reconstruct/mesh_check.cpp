@@ -4,6 +4,7 @@
 #include "skelconv/reconstruct/mesh_check.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <utility>
@@ -12,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
+#include "skelconv/primitives/segment.hpp"
 #include "union_find.hpp"
 
 namespace skelconv::reconstruct {
@@ -78,6 +80,34 @@ std::vector<double> component_volumes(const TriangleMesh& mesh,
   return volume;
 }
 
+/// Throws InputError when the mesh is too small for its distance from the
+/// origin. A skeleton file refuses a segment shorter than
+/// Segment::degenerate_length_ratio times its largest coordinate (below
+/// that, its direction is lost to rounding), and a reconstruction's shortest
+/// pieces reach 5.5e-5 of the input's diagonal (homer's medial mesh; 1.6e-4
+/// on the bunny), so the diagonal must be at least 1e5 × that ratio × the
+/// largest coordinate (a margin of 5): a mesh 3.5e-3 across placed 1e4
+/// from the origin would otherwise run to the end and write a skeleton that
+/// skeleton files refuse.
+void check_position(const TriangleMesh& mesh, const std::vector<std::array<std::int32_t, 3>>& triangles) {
+  constexpr double shortest_piece = 1e-5;  // of the diagonal
+  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+  double largest_coordinate = 0.0;
+  for (const auto& t : triangles)
+    for (std::int32_t i : t) {
+      const Vec3& v = mesh.vertices[std::size_t(i)];
+      lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+      largest_coordinate = std::max(largest_coordinate, v.cwiseAbs().maxCoeff());
+    }
+  const double diagonal = (hi - lo).norm();
+  const double least = Segment::degenerate_length_ratio / shortest_piece * largest_coordinate;
+  if (!(diagonal >= least))
+    throw InputError(fmt::format("the mesh is {:.3g} across but lies {:.3g} from the origin: its skeleton could "
+                                 "not be written accurately in those coordinates (at that distance a skeleton "
+                                 "needs a mesh at least {:.3g} across); move the mesh near the origin",
+                                 diagonal, largest_coordinate, least));
+}
+
 }  // namespace
 
 void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles) {
@@ -112,6 +142,7 @@ void check_closed_mesh(const TriangleMesh& mesh) {
     throw InputError(fmt::format("the mesh has {} inward-facing part(s), i.e. cavities inside the solid; cavities "
                                  "are not supported",
                                  negative));
+  check_position(mesh, triangles);
   check_no_self_intersection(mesh);
 }
 

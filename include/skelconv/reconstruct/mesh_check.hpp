@@ -24,6 +24,10 @@ void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles);
 /// - inconsistently oriented: an edge used twice in the same direction;
 /// - inside out: a negative enclosed volume;
 /// - a cavity: a connected component with negative volume inside the others;
+/// - too far from the origin for its size: a diagonal below 1e5 ×
+///   Segment::degenerate_length_ratio × its largest coordinate magnitude
+///   (the skeleton's shortest pieces, down to ~5e-5 of the diagonal, could
+///   not be written at that position);
 /// - self-intersecting: two triangles cross (check_no_self_intersection).
 /// Degenerate triangles (a repeated index) are ignored, as the samplers do.
 void check_closed_mesh(const TriangleMesh& mesh);
