@@ -199,6 +199,16 @@ TEST(MedialFit, PlateIsASheetAndTheFitNeverRaisesTheDistance) {
   for (std::size_t k = 1; k < worst.size(); ++k) EXPECT_LT(worst[k], worst[k - 1]) << "round " << k;
 }
 
+/// The field of a medial mesh as the reconstruction writes it: the skeleton
+/// file of a medial stage under options `o`, read back.
+MedialField written_field(const ReconstructOptions& o) {
+  return [o](const MedialMesh& medial) {
+    Stage s;
+    s.medial = medial;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+}
+
 // A ball of radius 1 (an isolated sphere: a compact point primitive,
 // f = w (1 − r²/R²)², R = 1.5, w = (1 − 1/1.5²)⁻² = 3.24, f(1) = 1) and
 // points 0.5 from its centre, 0.5 inside its surface. There f = 2.56 and
@@ -214,11 +224,7 @@ TEST(MedialFit, NewtonStepsFindTheDistanceInsideABall) {
   for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8)})
     points.push_back({ball.spheres[0].head<3>() + 0.5 * d, 1.0});
   const ReconstructOptions o;
-  const MedialField field_of = [&o](const MedialMesh& medial) {
-    Stage s;
-    s.medial = medial;
-    return parse_skeleton_json(skeleton_file_text(s, o));
-  };
+  const MedialField field_of = written_field(o);
   MedialFitOptions fit;
   fit.rounds = 0, fit.worst_rounds = 0;  // the distance before any round
   MedialFitReport report;
@@ -247,11 +253,7 @@ TEST(MedialFit, AnInsidePointCountsOnlyWhenLeftOutside) {
   std::vector<WeightedPoint> points;
   for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8)}) points.push_back({centre + d, 2.0});
   const ReconstructOptions o;
-  const MedialField field_of = [&o](const MedialMesh& medial) {
-    Stage s;
-    s.medial = medial;
-    return parse_skeleton_json(skeleton_file_text(s, o));
-  };
+  const MedialField field_of = written_field(o);
   MedialFitOptions fit;
   fit.rounds = 0, fit.worst_rounds = 0;  // the objective before any round
   MedialFitReport report;
@@ -276,11 +278,7 @@ TEST(MedialFit, GoesBackToTheLastRoundThatKeepsTheTopology) {
   for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8), Vec3(-0.8, 0, 0.6)})
     points.push_back({1.3 * d, 1.0});
   const ReconstructOptions o;
-  const MedialField field_of = [&o](const MedialMesh& medial) {
-    Stage s;
-    s.medial = medial;
-    return parse_skeleton_json(skeleton_file_text(s, o));
-  };
+  const MedialField field_of = written_field(o);
   MedialFitOptions fit;
   fit.fit_centres = false;
   MedialFitReport report;
@@ -310,11 +308,7 @@ TEST(MedialFit, GoesBackToTheMiddleRoundWhereTheUnfittedSpheresAreNoCloser) {
   for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8), Vec3(-0.8, 0, 0.6)})
     points.push_back({1.3 * d, 1.0});
   const ReconstructOptions o;
-  const MedialField field_of = [&o](const MedialMesh& medial) {
-    Stage s;
-    s.medial = medial;
-    return parse_skeleton_json(skeleton_file_text(s, o));
-  };
+  const MedialField field_of = written_field(o);
   MedialFitOptions fit;
   fit.fit_centres = false;
   MedialFitReport report;
@@ -436,11 +430,7 @@ TEST(MedialFit, ThinNeckAndSteepConesKeepTheToe) {
     }
   ReconstructOptions o;
   o.measure_divisions = 120;
-  const MedialField field_of = [&o](const MedialMesh& medial) {
-    Stage s;
-    s.medial = medial;
-    return parse_skeleton_json(skeleton_file_text(s, o));
-  };
+  const MedialField field_of = written_field(o);
   TriangleMesh box;  // the measure meshes over the input's bounding box
   box.vertices = {Vec3(-0.3, -0.3, -0.3), Vec3(toe_from + toe_length + toe, 0.3, 0.3)};
   MedialFitOptions fit;
