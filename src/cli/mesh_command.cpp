@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "count_option.hpp"
 #include "exit_status.hpp"
 #include "tolerance_option.hpp"
 #include "skelconv/errors.hpp"
@@ -83,7 +84,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
   mesh->add_option("--distance", options.distance, "Largest facet-to-surface distance d (default h / 10)");
   mesh->add_option("--max-triangles", options.max_triangles,
                    "Refuse a --size whose mesh would have more triangles than this (estimated from the box "
-                   "before meshing; default 4000000)");
+                   "before meshing; default 4000000)")
+      ->check(count_option());
   mesh->add_option("--tolerance", options.tolerance,
                    "Relative tolerance of the field (default 1e-12; 0: exact to rounding): Cauchy segments far "
                    "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "count_option.hpp"
 #include "exit_status.hpp"
 #include "report_image.hpp"
 #include "skelconv/errors.hpp"
@@ -166,7 +167,8 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("--max-triangles", options.max_triangles,
                       fmt::format("Refuse a mesh of more triangles or vertices than this (default {}), while "
                                   "reading it: the work grows with the number of samples",
-                                  options.max_triangles));
+                                  options.max_triangles))
+      ->check(count_option());
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
