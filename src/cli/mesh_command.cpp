@@ -113,7 +113,17 @@ int run_mesh(const MeshCommandOptions& options) {
       };
     }
     MeshReport report;
-    const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton, 4, options.tolerance), mesh_options, &report);
+    const TriangleMesh mesh = [&] {
+      try {
+        return mesh_iso_surface(skeleton_field(skeleton, 4, options.tolerance), mesh_options, &report);
+      } catch (const InputError& error) {
+        // The mesher names its option; without --iso the level is the file's.
+        if (options.iso || error.where() != "--iso") throw;
+        throw InputError(fmt::format("iso: {} (the file's iso, 1 unless it sets one; --iso meshes another level)",
+                                     error.problem()),
+                         options.skeleton_path);
+      }
+    }();
     write_mesh(mesh, options.output_path, options.ascii ? PlyEncoding::ascii : PlyEncoding::binary);
     return summary(mesh, report, options.output_path);
   });
