@@ -58,8 +58,9 @@ void require_normal_in_frame(double value, const char* name, const char* where);
 /// JSON documents (skeleton and canal files) may nest objects and arrays
 /// this deep at most: their readers walk them recursively, and a document
 /// nested 100,000 deep would overflow the stack instead of being refused.
-/// 256 leaves room for a blend tree of 127 levels (each level is an object
-/// and its "children" array), far beyond any hand-written or generated file.
+/// 256 leaves room for 126 nested blend nodes (each an object and its
+/// "children" array, inside the document and its "primitives" array), far
+/// beyond any hand-written or generated file.
 inline constexpr std::size_t max_json_nesting = 256;
 
 /// Called by the JSON parsers as an object or array opens at `depth` (0 for
