@@ -13,6 +13,7 @@
 // the same reader, so every check, default and message is the file's; an
 // error is located at the argument ("kernel.R: must be > 0, got -1") where
 // the file names its path ("primitives[0].kernel.R: ...").
+#include <cmath>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -35,10 +36,37 @@ struct ScalisTriangleNode : Node {};
 struct PointNode : Node {};
 struct BlendNode : Node {};
 
+/// Throws InputError("must be finite, got nan", "a[0]") at the first float
+/// of `value` that is nan or ±inf (dicts by key, lists, tuples and numpy
+/// arrays by index; nodes were checked when made). json.dumps would write
+/// it as NaN or Infinity, which the reader refuses as malformed JSON at a
+/// column of text the caller never wrote.
+void require_finite_numbers(const py::handle& value, const std::string& where) {
+  if (py::isinstance<Node>(value)) return;
+  if (py::isinstance<py::float_>(value) || (py::hasattr(value, "dtype") && py::hasattr(value, "item") &&
+                                           py::len(value.attr("shape")) == 0)) {
+    const double number = value.attr("__float__")().cast<double>();
+    if (!std::isfinite(number)) throw InputError(fmt::format("must be finite, got {}", number), where);
+    return;
+  }
+  if (py::isinstance<py::dict>(value)) {
+    for (const auto& [key, item] : value.cast<py::dict>()) {
+      require_finite_numbers(item, join_location(where, py::str(key).cast<std::string>()));
+    }
+    return;
+  }
+  if (py::hasattr(value, "tolist")) return require_finite_numbers(value.attr("tolist")(), where);
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    std::size_t k = 0;
+    for (const py::handle item : value) require_finite_numbers(item, fmt::format("{}[{}]", where, k++));
+  }
+}
+
 /// json.dumps of Python objects: numpy arrays and numpy integers through
 /// their tolist(), nodes as their JSON objects. Anything else JSON cannot
-/// hold is an InputError.
+/// hold is an InputError, a non-finite number too (require_finite_numbers).
 std::string to_json(const py::object& value) {
+  require_finite_numbers(value, "");
   const py::module_ json = py::module_::import("json");
   const py::cpp_function convert([json](const py::object& item) -> py::object {
     if (py::isinstance<Node>(item)) return json.attr("loads")(item.cast<const Node&>().json);

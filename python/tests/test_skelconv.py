@@ -219,9 +219,25 @@ class PrimitivesFromPythonValues(unittest.TestCase):
         with self.assertRaises(skelconv.InputError) as raised:
             skelconv.Blend("super_elliptic", [skelconv.Point([0, 0, 0], {"family": "soft", "R": 1})], t=0, r=1)
         self.assertEqual(str(raised.exception), "t: must be > 0, got 0")
+        # A nan is refused at its argument, as the reader refuses one in a
+        # file (json.dumps would write NaN: "malformed JSON" at a column of
+        # text the caller never wrote).
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.Segment([0, np.nan, 0], [1, 2, 1], {"family": "compact", "degree": 6, "R": 1})
+        self.assertEqual(str(raised.exception), "a[1]: must be finite, got nan")
+        with self.assertRaises(skelconv.InputError) as raised:
+            skelconv.Skeleton({"primitives": [{"type": "point", "center": [0, 0, 0],
+                                               "kernel": {"family": "soft", "R": np.float32("inf")}}]})
+        self.assertEqual(str(raised.exception), "primitives[0].kernel.R: must be finite, got inf")
         with self.assertRaises(skelconv.InputError) as raised:
             skelconv.Point([0, 0, 0], {"family": "soft", "R": 1, "s": 2})
         self.assertEqual(str(raised.exception), 'kernel: unknown field "s" for the soft family (allowed: "family", "R")')
+
+
+def printable(text):
+    """The message as the CLI prints it: control characters (but tab) as \\xNN
+    (src/cli/exit_status.hpp), so that its line stays one line."""
+    return "".join(f"\\x{ord(c):02x}" if (ord(c) < 0x20 and c != "\t") or ord(c) == 0x7F else c for c in text)
 
 
 class ErrorsCarryTheCliMessage(unittest.TestCase):
@@ -234,14 +250,14 @@ class ErrorsCarryTheCliMessage(unittest.TestCase):
                 self.assertEqual(status, 2)
                 with self.assertRaises(skelconv.InputError) as raised:
                     skelconv.load_skeleton_file(path)
-                self.assertEqual(str(raised.exception), message)
+                self.assertEqual(printable(str(raised.exception)), message)
                 self.assertIsInstance(raised.exception, ValueError)
                 # The same text parsed from a string: the message without the file name.
                 with open(path, encoding="utf-8", errors="replace") as f:
                     text = f.read()
                 with self.assertRaises(skelconv.InputError) as parsed:
                     skelconv.parse_skeleton_json(text)
-                self.assertEqual(path + ": " + str(parsed.exception), message)
+                self.assertEqual(path + ": " + printable(str(parsed.exception)), message)
 
     def test_missing_file(self):
         path = os.path.join(DATA, "no_such_file.json")

@@ -23,6 +23,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/skeleton/text_file.hpp"
+#include "../detail/input_checks.hpp"
 
 namespace skelconv::canal {
 namespace {
@@ -57,6 +58,7 @@ std::string untagged(const char* what) {
 }
 
 Json parse_document(std::string_view text) {
+  detail::require_no_nul_byte(text);
   std::vector<OpenValue> open;
   auto next_element = [&open] {
     if (!open.empty() && !open.back().is_object) ++open.back().index;
@@ -64,6 +66,7 @@ Json parse_document(std::string_view text) {
   const Json::parser_callback_t callback = [&](int, Json::parse_event_t event, Json& parsed) {
     using Event = Json::parse_event_t;
     if (event == Event::object_start || event == Event::array_start) {
+      detail::require_json_nesting(open.size(), path_of(open, open.size()));
       open.emplace_back();
       open.back().is_object = event == Event::object_start;
     }

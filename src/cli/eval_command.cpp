@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "count_option.hpp"
 #include "exit_status.hpp"
 #include "point_lines.hpp"
 #include "tolerance_option.hpp"
@@ -92,10 +93,11 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
   eval->add_option("SKELETON", options.skeleton_path, "Skeleton file (JSON)")->required();
   eval->add_option("--threads", options.threads,
                    "Threads evaluating the points (0: every core); the output is the same for any value")
-      ->check(CLI::NonNegativeNumber);
+      ->check(count_option());
   eval->add_option("--max-points", options.limits.max_points,
                    "Refuse more points than this (default 10000000): the points and their output lines are held "
-                   "in memory until the last one is evaluated");
+                   "in memory until the last one is evaluated")
+      ->check(count_option());
   eval->add_option("--tolerance", options.tolerance,
                    "Relative tolerance of the field (default 0: exact to rounding); > 0 lets Cauchy segments far "
                    "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")

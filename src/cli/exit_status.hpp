@@ -20,9 +20,30 @@ enum ExitStatus : int {
   exit_bad_input = 2,
 };
 
+/// `text` with its control characters (but tab) written as \xNN: a message
+/// quotes the user's bytes (a point line, a JSON key, a file name), and a
+/// newline or escape sequence among them must not break its one line.
+inline std::string printable(std::string_view text) {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte < 0x20 && c != '\t') || byte == 0x7f) {
+      out += "\\x";
+      out += hex[byte >> 4];
+      out += hex[byte & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 /// Writes "skelconv: error: <message>" as one line on stderr.
 inline void report_error(std::string_view message) {
-  std::fprintf(stderr, "skelconv: error: %.*s\n", int(message.size()), message.data());
+  const std::string line = printable(message);
+  std::fprintf(stderr, "skelconv: error: %.*s\n", int(line.size()), line.data());
 }
 
 /// All of standard input. Throws InputError if it cannot be read.

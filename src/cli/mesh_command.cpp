@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "count_option.hpp"
 #include "exit_status.hpp"
 #include "tolerance_option.hpp"
 #include "skelconv/errors.hpp"
@@ -83,7 +84,8 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
   mesh->add_option("--distance", options.distance, "Largest facet-to-surface distance d (default h / 10)");
   mesh->add_option("--max-triangles", options.max_triangles,
                    "Refuse a --size whose mesh would have more triangles than this (estimated from the box "
-                   "before meshing; default 4000000)");
+                   "before meshing; default 4000000)")
+      ->check(count_option());
   mesh->add_option("--tolerance", options.tolerance,
                    "Relative tolerance of the field (default 1e-12; 0: exact to rounding): Cauchy segments far "
                    "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")
@@ -111,7 +113,17 @@ int run_mesh(const MeshCommandOptions& options) {
       };
     }
     MeshReport report;
-    const TriangleMesh mesh = mesh_iso_surface(skeleton_field(skeleton, 4, options.tolerance), mesh_options, &report);
+    const TriangleMesh mesh = [&] {
+      try {
+        return mesh_iso_surface(skeleton_field(skeleton, 4, options.tolerance), mesh_options, &report);
+      } catch (const InputError& error) {
+        // The mesher names its option; without --iso the level is the file's.
+        if (options.iso || error.where() != "--iso") throw;
+        throw InputError(fmt::format("iso: {} (the file's iso, 1 unless it sets one; --iso meshes another level)",
+                                     error.problem()),
+                         options.skeleton_path);
+      }
+    }();
     write_mesh(mesh, options.output_path, options.ascii ? PlyEncoding::ascii : PlyEncoding::binary);
     return summary(mesh, report, options.output_path);
   });

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
+#include "exit_status.hpp"
 
 namespace skelconv::cli {
 namespace {
@@ -65,18 +66,6 @@ ParsedNumber parse_coordinate(std::string_view token) {
   }
   if (!std::isfinite(value)) return {0.0, fmt::format("\"{}\" is not a finite number", token)};
   return {value, {}};
-}
-
-/// `text` with its control characters written as \xNN, so that a message
-/// stays one line and whole (a NUL byte would end it).
-std::string printable(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if ((byte < 0x20 && c != '\t') || byte == 0x7f) out += fmt::format("\\x{:02x}", byte);
-    else out += c;
-  }
-  return out;
 }
 
 /// Long lines are cut in messages, so that one message stays one line.

@@ -3,9 +3,13 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "count_option.hpp"
 #include "exit_status.hpp"
 #include "report_image.hpp"
 #include "skelconv/errors.hpp"
@@ -166,7 +170,8 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("--max-triangles", options.max_triangles,
                       fmt::format("Refuse a mesh of more triangles or vertices than this (default {}), while "
                                   "reading it: the work grows with the number of samples",
-                                  options.max_triangles));
+                                  options.max_triangles))
+      ->check(count_option());
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
@@ -178,6 +183,10 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       throw InputError("the skeleton file must end in .json", options.output_path);
     if (options.report_image_path && std::filesystem::path(*options.report_image_path).extension() != ".png")
       throw InputError("the report image must end in .png", *options.report_image_path);
+    // The outputs are probed before the work, which can take minutes.
+    check_writable(options.output_path);
+    if (options.report_path) check_writable(*options.report_path);
+    if (options.report_image_path) check_writable(*options.report_image_path);
     reconstruct::ReconstructOptions ro;
     ro.method = options.method == "curve"    ? reconstruct::SkeletonMethod::curve
                 : options.method == "medial" ? reconstruct::SkeletonMethod::medial
@@ -222,9 +231,10 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     }
     std::string report;
     if (options.report_path) report = report_json(r, input, ro, ro.progress, options.report_result_only);
-    write_text_atomically(skeleton, options.output_path);
-    if (options.report_path) write_text_atomically(report, *options.report_path);
-    if (options.report_image_path) write_text_atomically(image, *options.report_image_path);
+    std::vector<std::pair<std::string, std::filesystem::path>> files = {{skeleton, options.output_path}};
+    if (options.report_path) files.emplace_back(report, *options.report_path);
+    if (options.report_image_path) files.emplace_back(image, *options.report_image_path);
+    write_texts_atomically(files);
     std::string text = summary(r, options.output_path, ro);
     if (options.report_image_path) text += fmt::format("report_image: {}\n", *options.report_image_path);
     return text;

@@ -3,6 +3,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace skelconv::cli {
 
@@ -12,5 +14,17 @@ namespace skelconv::cli {
 /// same file (ctest -j) do not remove each other's, as in the mesh writer
 /// (triangle_mesh.cpp).
 void write_text_atomically(const std::string& text, const std::filesystem::path& path);
+
+/// Several files, all or none: every text is written to its temporary
+/// first, and the temporaries are renamed into place only when all were
+/// written (a report that cannot be written leaves no skeleton file behind).
+/// Throws InputError located at the first path that cannot be written.
+void write_texts_atomically(const std::vector<std::pair<std::string, std::filesystem::path>>& files);
+
+/// Throws InputError("cannot write the file", path) unless a file can be
+/// created at `path`: the temporary write_text_atomically would use, created
+/// empty and removed. Run before long work, so that a bad output path is
+/// refused at once rather than after it.
+void check_writable(const std::filesystem::path& path);
 
 }  // namespace skelconv::cli

@@ -26,6 +26,37 @@ void require_normal_in_frame(double value, const char* name, const char* where) 
                    where);
 }
 
+void require_json_nesting(std::size_t depth, const std::string& where) {
+  if (depth < max_json_nesting) return;
+  throw InputError(fmt::format("objects and arrays nested more than {} deep: the file is refused before it is "
+                               "read (a deeper document would exhaust the reader's stack)",
+                               max_json_nesting),
+                   where);
+}
+
+void require_no_nul_byte(std::string_view text) {
+  const std::size_t nul = text.find('\0');
+  if (nul == std::string_view::npos) return;
+  const std::string_view before = text.substr(0, nul);
+  const std::size_t line_start = before.rfind('\n');
+  const std::size_t line = 1 + std::size_t(std::count(before.begin(), before.end(), '\n'));
+  const std::size_t column = line_start == std::string_view::npos ? nul + 1 : nul - line_start;
+  throw InputError(fmt::format("malformed JSON: a NUL byte at line {}, column {} (JSON text holds none: is this a "
+                               "binary file?)",
+                               line, column));
+}
+
+void require_support_radius_in_frame(double R_in_frame, const char* unit) {
+  if (R_in_frame >= min_support_in_frame && R_in_frame <= max_support_in_frame) return;
+  const bool small = R_in_frame < min_support_in_frame;
+  throw InputError(fmt::format("R in units of the {} is {} in the primitive's own frame (lengths scaled by a power "
+                               "of two to about 1), {} {}: the support is too {} for the primitive's size to be "
+                               "evaluated in double precision",
+                               unit, R_in_frame, small ? "below" : "above",
+                               small ? "2^-48 (3.6e-15)" : "2^500 (3.3e150)", small ? "small" : "large"),
+                   "kernel.R");
+}
+
 void require_scalis_radius(double tau, int k) {
   const std::string where = fmt::format("radius[{}]", k);
   if (!std::isfinite(tau)) throw InputError(fmt::format("must be finite, got {}", tau), where);

@@ -8,7 +8,9 @@
 // the primitive's path.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "skelconv/errors.hpp"
@@ -52,6 +54,36 @@ void require_non_degenerate(const Vec3& a, const Vec3& b, double degenerate_leng
 /// normal double (the kernel is then too sharp or too wide for the
 /// primitive's size to be evaluated in double precision).
 void require_normal_in_frame(double value, const char* name, const char* where);
+
+/// JSON documents (skeleton and canal files) may nest objects and arrays
+/// this deep at most: their readers walk them recursively, and a document
+/// nested 100,000 deep would overflow the stack instead of being refused.
+/// 256 leaves room for 126 nested blend nodes (each an object and its
+/// "children" array, inside the document and its "primitives" array), far
+/// beyond any hand-written or generated file.
+inline constexpr std::size_t max_json_nesting = 256;
+
+/// Called by the JSON parsers as an object or array opens at `depth` (0 for
+/// the document itself): throws InputError at `where` beyond max_json_nesting.
+void require_json_nesting(std::size_t depth, const std::string& where);
+
+/// JSON text holds no NUL byte, but nlohmann's lexer reads one as the end of
+/// the input: `{"primitives": []}\0junk` would parse as a valid document.
+/// Throws InputError("a NUL byte at line L, column C ...") if `text` has one.
+void require_no_nul_byte(std::string_view text);
+
+/// The support radius R of a compact kernel (compact, soft, wyvill) on a
+/// segment or polygon, in the primitive's frame (R·2^−e, 2^e ≤ the length or
+/// diameter < 2^(e+1)): throws InputError at "kernel.R" unless it lies in
+/// [min_support_in_frame, max_support_in_frame]. Outside, the evaluation
+/// would print a wrong number rather than fail: a support 2^−48 of the
+/// segment's length spans a few units in the last place of the parameter
+/// t ∈ [0, 1] (the clipped chord, and so f, rounds to 0), and beyond 2^500
+/// the squares of R the clipping and the closed forms form overflow (the
+/// segment printed 0, the polygon 3e307, where f ≈ 1 and 0.5).
+inline constexpr double min_support_in_frame = 0x1p-48;
+inline constexpr double max_support_in_frame = 0x1p500;
+void require_support_radius_in_frame(double R_in_frame, const char* unit);
 
 /// A SCALIS radius τ_k ("radius[k]"): finite and >= 0.
 void require_scalis_radius(double tau, int k);

@@ -77,8 +77,22 @@ void check_options(const ImplicitField& field, const MeshOptions& options) {
   if (field.skeleton_points.empty()) throw InputError("the skeleton is empty: there is no surface to mesh");
 }
 
-/// Refuses a facet size whose mesh would exceed options.max_triangles.
-void check_output_size(const Box3& box, double size, const MeshOptions& options) {
+/// About how many triangles CGAL makes of a surface inside `box` at facet
+/// distance d whatever the facet size: the box's surface area over
+/// (diagonal × d). A facet of circumradius r on a surface of curvature
+/// radius ρ strays about r²/(2ρ) from it, so d allows r ≈ √(2ρd); a ball
+/// (ρ = diagonal / (2√3)) then makes about 0.7 times this estimate, and
+/// shapes with thinner parts more (twice, for two SCALIS segments of radii
+/// 0.2–0.6 across a diagonal of 6.8). Like estimate_triangles, an order of
+/// magnitude that refuses absurd distances before the work starts.
+double estimate_triangles_for_distance(const Box3& box, double distance) {
+  const double box_area = estimate_triangles(box, 1.0);  // area / h² at h = 1
+  return box_area / (box.diagonal() * distance);
+}
+
+/// Refuses a facet size, or for CGAL a facet distance, whose mesh would
+/// exceed options.max_triangles.
+void check_output_size(const Box3& box, double size, double distance, const MeshOptions& options) {
   const double estimate = estimate_triangles(box, size);
   if (!(estimate <= double(options.max_triangles))) {
     throw InputError(fmt::format("a facet size of {:g} in a box of diagonal {:g} makes about {:.2g} triangles, "
@@ -86,6 +100,15 @@ void check_output_size(const Box3& box, double size, const MeshOptions& options)
                                  "--max-triangles if the memory and time are there",
                                  size, box.diagonal(), estimate, options.max_triangles),
                      "--size");
+  }
+  if (options.method != MeshMethod::cgal) return;  // the grid has no facet distance
+  const double by_distance = estimate_triangles_for_distance(box, distance);
+  if (!(by_distance <= double(options.max_triangles))) {
+    throw InputError(fmt::format("a facet distance of {:g} in a box of diagonal {:g} makes about {:.2g} "
+                                 "triangles, more than the limit {} (--max-triangles): choose a larger --distance, "
+                                 "or raise --max-triangles if the memory and time are there",
+                                 distance, box.diagonal(), by_distance, options.max_triangles),
+                     "--distance");
   }
 }
 
@@ -151,7 +174,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   run.box = bounding_region(metered, iso);
   run.size = options.size.value_or(run.box.diagonal() / 50);
   run.distance = options.distance.value_or(run.size / 10);
-  check_output_size(run.box, run.size, options);
+  check_output_size(run.box, run.size, run.distance, options);
   // The seeds start CGAL's refinement and the grid's continuation; finding
   // none tells "no surface at this iso" apart from a surface a mesher misses.
   // The grid's continuation needs only the cell a seed lies in (it then

@@ -235,6 +235,9 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
   value_power_ = 2 + kernels::scaling_power(kernel);  // f ~ area · K: λ^(2 + p) (radial_kernel.hpp)
   support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
+  if (std::isfinite(support_radius_)) {
+    detail::require_support_radius_in_frame(frame_.scaled(kernel.R, 1), "polygon's diameter");
+  }
   singular_at_zero_ = facts.singular_at_zero;
   if (facts.compact_levels.empty()) {
     require_supported_degree(kernel);

@@ -41,8 +41,8 @@ int validated_weight_degree(std::span<const double> weight) {
 }
 
 /// A length parameter of the kernel, in the segment's frame: a normal
-/// double, or InputError at its key (s, a have units length^−2, R length;
-/// b has none and is not scaled).
+/// double, or InputError at its key (s, a have units length^−2, R length
+/// and a range of its own; b has none and is not scaled).
 void require_parameter_in_frame(std::string_view key, const SegmentInput<double>& input) {
   struct Scaled {
     std::string_view key;
@@ -53,14 +53,13 @@ void require_parameter_in_frame(std::string_view key, const SegmentInput<double>
   static constexpr Scaled scaled[] = {
       {"s", &SegmentInput<double>::s, "s in units of the segment's length (s·4^e, 2^e <= |b - a| < 2^(e+1))",
        "kernel.s"},
-      {"R", &SegmentInput<double>::R, "R in units of the segment's length (R·2^-e, 2^e <= |b - a| < 2^(e+1))",
-       "kernel.R"},
       {"a", &SegmentInput<double>::gaussian_a,
        "a in units of the segment's length (a·4^e, 2^e <= |b - a| < 2^(e+1))", "kernel.a"},
   };
   for (const Scaled& p : scaled) {
     if (p.key == key) detail::require_normal_in_frame(input.*p.field, p.description, p.where);
   }
+  if (key == "R") detail::require_support_radius_in_frame(input.R, "segment's length");
 }
 
 /// The EvaluationError of a P whose frame coordinates overflow.

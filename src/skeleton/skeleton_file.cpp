@@ -49,9 +49,11 @@ class ParsePathTracker {
   bool on_event(Json::parse_event_t event, const Json& parsed) {
     switch (event) {
       case Json::parse_event_t::object_start:
+        detail::require_json_nesting(levels_.size(), current_path());
         levels_.push_back({true, {}, 0, {}});
         break;
       case Json::parse_event_t::array_start:
+        detail::require_json_nesting(levels_.size(), current_path());
         levels_.push_back({false, {}, 0, {}});
         break;
       case Json::parse_event_t::key: {
@@ -113,6 +115,7 @@ std::string without_exception_tag(const char* what) {
 }
 
 Json parse_json(std::string_view text) {
+  detail::require_no_nul_byte(text);
   ParsePathTracker tracker;
   const Json::parser_callback_t callback = [&tracker](int /*depth*/, Json::parse_event_t event, Json& parsed) {
     return tracker.on_event(event, parsed);

@@ -5,6 +5,7 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -588,10 +589,40 @@ std::string ray_march_page(const Skeleton& skeleton, const ViewPageOptions& opti
 
 }  // namespace
 
+namespace {
+
+/// Refuses, at "iso", a skeleton whose field stays at or below its iso at
+/// every skeleton point (Skeleton::skeleton_points, where skelconv mesh
+/// looks for its surface, with the mesher's message): there is nothing to
+/// show, and the ray-marched page would open on an empty scene. A point
+/// where the field cannot be evaluated leaves the question to the page.
+void require_surface(const Skeleton& skeleton) {
+  const double iso = skeleton.iso();
+  double largest = -std::numeric_limits<double>::infinity();
+  Vec3 largest_at = Vec3::Zero();
+  for (const Vec3& p : skeleton.skeleton_points()) {
+    double f = 0.0;
+    try {
+      f = skeleton.value(p);
+    } catch (const EvaluationError&) {
+      return;
+    }
+    if (f > iso) return;
+    if (f > largest) largest = f, largest_at = p;
+  }
+  throw InputError(fmt::format("no surface at iso {}: the field is below it on the whole skeleton (largest value "
+                               "{:.6g} at ({}, {}, {}))",
+                               iso, largest, largest_at.x(), largest_at.y(), largest_at.z()),
+                   "iso");
+}
+
+}  // namespace
+
 std::string make_view_page(const Skeleton& skeleton, const ViewPageOptions& options, ViewPageReport* report) {
   skeleton.validate();  // bad input is refused here, whatever the page
   // Refused before either page is tried: the mesh preview has no box to mesh in.
   if (skeleton.primitives().empty()) throw InputError("no primitive: there is no surface to show", "primitives");
+  require_surface(skeleton);
   ViewPageReport local;
   ViewPageReport& r = report ? *report : local;
   try {

@@ -9,6 +9,8 @@
 #   CASE_STDOUT_LINES   if set: expected number of stdout lines, each of
 #                       which must be four finite numbers "f gx gy gz"
 #   CASE_STDERR         if set: a substring of the expected error message
+#   CASE_ABSENT         if set: a file the run must not leave behind (removed
+#                       before it), e.g. the output of a command that failed
 # Failing cases must leave stdout empty and print exactly one line,
 # "skelconv: error: ...", on stderr. A case that does not hold stops with
 # "CHECK-FAILED: <what differs>" (matched by the test of this checker,
@@ -16,6 +18,9 @@
 cmake_minimum_required(VERSION 3.25)
 
 include(${CASE})
+if(DEFINED CASE_ABSENT)
+  file(REMOVE ${CASE_ABSENT})
+endif()
 
 execute_process(
   COMMAND ${SKELCONV} ${CASE_ARGS}
@@ -39,6 +44,9 @@ if(NOT CASE_EXIT EQUAL 0)
   endif()
 endif()
 
+if(DEFINED CASE_ABSENT AND EXISTS ${CASE_ABSENT})
+  message(FATAL_ERROR "CHECK-FAILED: the run left ${CASE_ABSENT} behind\n${report}")
+endif()
 if(DEFINED CASE_STDERR)
   string(FIND "${stderr}" "${CASE_STDERR}" found)
   if(found EQUAL -1)
