@@ -4,6 +4,9 @@
 // Expected values are derived by hand in the comments.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 
@@ -203,6 +206,85 @@ TEST(MeshCheck, OrientationAndPositionFarFromTheOrigin) {
     ADD_FAILURE() << "an inside-out cube accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("the mesh is inside out"), std::string::npos) << e.what();
+  }
+}
+
+
+/// The unit cube as an STL triangle soup: every triangle's corners stored
+/// anew, in `path`, binary or ASCII.
+void write_cube_stl(const std::filesystem::path& path, bool binary) {
+  const TriangleMesh cube = unit_cube();
+  std::ofstream out(path, std::ios::binary);
+  if (binary) {
+    out << std::string(80, ' ');
+    const std::uint32_t count = std::uint32_t(cube.triangles.size());
+    for (int k = 0; k < 4; ++k) out.put(char(count >> (8 * k) & 0xff));
+    for (const auto& t : cube.triangles) {
+      float values[12] = {};  // the normal (ignored by readers), then the corners
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) values[3 + 3 * c + k] = float(cube.vertices[std::size_t(t[std::size_t(c)])][k]);
+      out.write(reinterpret_cast<const char*>(values), sizeof values);  // x86: little-endian
+      out.write("\0\0", 2);
+    }
+  } else {
+    out << "solid cube\n";
+    for (const auto& t : cube.triangles) {
+      out << "  facet normal 0 0 0\n    outer loop\n";
+      for (std::int32_t i : t) {
+        const Vec3& v = cube.vertices[std::size_t(i)];
+        out << "      vertex " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+      }
+      out << "    endloop\n  endfacet\n";
+    }
+    out << "endsolid cube\n";
+  }
+}
+
+// An STL cube reads as 36 corners, 12 triangles; merging the coincident
+// corners leaves the cube's 8 vertices (28 merged) and a closed mesh with
+// the same triangles up to renumbering. Without the merge every edge of
+// the soup is a boundary edge: 36 of them.
+TEST(MeshCheck, StlTriangleSoupIsMergedIntoAClosedMesh) {
+  for (const bool binary : {true, false}) {
+    SCOPED_TRACE(binary ? "binary" : "ascii");
+    const auto path = std::filesystem::path(::testing::TempDir()) / (binary ? "cube_binary.stl" : "cube_ascii.stl");
+    write_cube_stl(path, binary);
+    TriangleMesh soup = read_mesh(path);
+    ASSERT_EQ(soup.vertices.size(), 36u);
+    ASSERT_EQ(soup.triangles.size(), 12u);
+    try {
+      check_closed_mesh(soup);
+      ADD_FAILURE() << "an unmerged soup accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("the mesh is open: 36 boundary edges (holes) (e.g. between vertices"),
+                std::string::npos)
+          << e.what();
+    }
+    EXPECT_EQ(merge_coincident_vertices(soup), 28u);
+    EXPECT_EQ(soup.vertices.size(), 8u);
+    EXPECT_NO_THROW(check_closed_mesh(soup));
+    EXPECT_EQ(merge_coincident_vertices(soup), 0u);
+  }
+}
+
+// Positions a rounding apart are not merged, and an open mesh names one
+// of its boundary edges and the triangles with a repeated vertex it
+// ignored: the cube without triangle {0, 2, 1}, that triangle written as
+// {0, 0, 1} instead, has the three boundary edges of the missing one.
+TEST(MeshCheck, OpenMeshNamesAnEdgeAndTheIgnoredTriangles) {
+  TriangleMesh cube = unit_cube();
+  cube.vertices.push_back(Vec3(std::nextafter(1.0, 2.0), 0, 0));
+  EXPECT_EQ(merge_coincident_vertices(cube), 0u);
+  cube.triangles[0] = {0, 0, 1};
+  try {
+    check_closed_mesh(cube);
+    ADD_FAILURE() << "an open cube accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the mesh is open: 3 boundary edges (holes) (e.g. between vertices 0 and 1, counted from 0)"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("after ignoring 1 triangle(s) with a repeated vertex"), std::string::npos) << message;
   }
 }
 

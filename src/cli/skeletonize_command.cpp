@@ -120,7 +120,7 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
 CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   CLI::App* command =
       app.add_subcommand("skeletonize", "Reconstruct a skeleton file of SCALIS primitives from a closed mesh");
-  command->add_option("INPUT", options.input_path, "Closed mesh: .ply (ASCII or binary), .obj or .off")->required();
+  command->add_option("INPUT", options.input_path, "Closed mesh: .ply (ASCII or binary), .obj, .off or .stl (binary or ASCII)")->required();
   command->add_option("-o,--output", options.output_path, "Output skeleton file (JSON)")->required();
   command->add_option("--method", options.method,
                       "auto (default): the curve skeleton when it is within 1% (Hausdorff) and 0.2% (RMS) of the diagonal "
@@ -201,14 +201,19 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     if (!options.quiet) ro.progress = [](std::string_view line) {
       std::fprintf(stderr, "skelconv skeletonize: %.*s\n", int(line.size()), line.data());
     };
-    const TriangleMesh input = read_mesh(options.input_path, options.max_triangles);
+    TriangleMesh input = read_mesh(options.input_path, options.max_triangles);
+    const std::size_t merged = reconstruct::merge_coincident_vertices(input);
     try {
       reconstruct::check_mesh_size(input, options.max_triangles);
       reconstruct::check_closed_mesh(input);
     } catch (const InputError& error) {
       throw error.inside(options.input_path);
     }
-    if (ro.progress) ro.progress(fmt::format("read {} vertices, {} triangles", input.vertices.size(), input.triangles.size()));
+    if (ro.progress)
+      ro.progress(fmt::format("read {} vertices, {} triangles{}", input.vertices.size() + merged,
+                              input.triangles.size(),
+                              merged ? fmt::format(" ({} vertices at the position of another merged into it)", merged)
+                                     : std::string()));
     const TriangleMesh samples = reconstruct::with_sample_noise(input, options.noise);
     reconstruct::Reconstruction r = [&] {
       try {

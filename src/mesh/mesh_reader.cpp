@@ -2,6 +2,7 @@
 #include "skelconv/mesh/mesh_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cctype>
 #include <cmath>
@@ -30,6 +31,15 @@ std::string read_whole_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open the mesh file", path.string());
   return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// `word` as a finite number, or InputError at `at` ("… is not a finite number").
+double finite_number(const std::string& word, const std::string& at) {
+  char* end = nullptr;
+  const double value = std::strtod(word.c_str(), &end);
+  if (word.empty() || *end != '\0' || !std::isfinite(value))
+    throw InputError("\"" + word + "\" is not a finite number", at);
+  return value;
 }
 
 /// The refusal of a mesh beyond the caller's limit (read_mesh's max_triangles).
@@ -301,11 +311,7 @@ TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const 
       Vec3 point;
       std::string word[3];
       if (!(words >> word[0] >> word[1] >> word[2])) throw InputError("a vertex needs x y z", at);
-      for (int k = 0; k < 3; ++k) {
-        char* end = nullptr;
-        point[k] = std::strtod(word[k].c_str(), &end);
-        if (*end != '\0' || !std::isfinite(point[k])) throw InputError("\"" + word[k] + "\" is not a finite number", at);
-      }
+      for (int k = 0; k < 3; ++k) point[k] = finite_number(word[k], at);
       mesh.vertices.push_back(point);
     } else if (keyword == "f") {
       face.clear();
@@ -411,13 +417,115 @@ TriangleMesh read_off(const std::string& text, std::size_t max_triangles, const 
   return mesh;
 }
 
+
+// ---------------------------------------------------------------- STL ---
+
+/// Adds one STL facet's three corners as new vertices (STL stores no shared
+/// vertices: the consumer merges coincident ones where it needs a closed
+/// surface, as reconstruct::merge_coincident_vertices does).
+void add_stl_facet(TriangleMesh& mesh, const std::array<Vec3, 3>& corners, std::size_t max_triangles,
+                   const std::string& where) {
+  if (mesh.triangles.size() >= max_triangles) throw too_many_triangles(max_triangles, where);
+  const auto first = std::int32_t(mesh.vertices.size());
+  for (const Vec3& corner : corners) {
+    if (!corner.allFinite()) throw InputError("a vertex is not finite", where);
+    mesh.vertices.push_back(corner);
+  }
+  mesh.triangles.push_back({first, first + 1, first + 2});
+}
+
+/// Binary STL: an 80-byte header, a little-endian uint32 facet count, then
+/// 50 bytes a facet (normal, three corners: twelve float32; two attribute
+/// bytes). Chosen when the file's size is exactly 84 + 50 × count: ASCII
+/// files start with "solid", but so do many binary headers.
+bool is_binary_stl(const std::string& bytes) {
+  if (bytes.size() < 84) return false;
+  std::uint32_t count = 0;
+  for (int k = 3; k >= 0; --k) count = count << 8 | std::uint8_t(bytes[80 + std::size_t(k)]);
+  return bytes.size() == 84 + 50 * std::uint64_t(count);
+}
+
+float little_endian_float(const char* p) {
+  std::uint32_t bits = 0;
+  for (int k = 3; k >= 0; --k) bits = bits << 8 | std::uint8_t(p[k]);
+  return std::bit_cast<float>(bits);
+}
+
+TriangleMesh read_binary_stl(const std::string& bytes, std::size_t max_triangles, const std::string& where) {
+  const std::size_t count = (bytes.size() - 84) / 50;
+  if (count > max_triangles) throw too_many_triangles(max_triangles, where);
+  TriangleMesh mesh;
+  mesh.vertices.reserve(3 * count);
+  mesh.triangles.reserve(count);
+  for (std::size_t f = 0; f < count; ++f) {
+    const char* facet = bytes.data() + 84 + 50 * f + 12;  // past the normal
+    std::array<Vec3, 3> corners;
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) corners[std::size_t(c)][k] = little_endian_float(facet + 12 * c + 4 * k);
+    add_stl_facet(mesh, corners, max_triangles, fmt::format("{}: facet {}", where, f));
+  }
+  return mesh;
+}
+
+/// ASCII STL: "solid name", then per facet "facet normal nx ny nz", "outer
+/// loop", three "vertex x y z", "endloop", "endfacet"; "endsolid". The
+/// normals are ignored (the orientation is the corners' order), as are
+/// blank lines; anything else is refused at its line.
+TriangleMesh read_ascii_stl(const std::string& text, std::size_t max_triangles, const std::string& where) {
+  TriangleMesh mesh;
+  std::istringstream lines(text);
+  std::string line;
+  std::array<Vec3, 3> corners;
+  int corner = -1;  // -1: outside a loop
+  bool solid = false, ended = false;
+  for (int line_number = 1; std::getline(lines, line); ++line_number) {
+    const std::string at = fmt::format("{}: line {}", where, line_number);
+    std::istringstream words(line);
+    std::string keyword;
+    if (!(words >> keyword)) continue;
+    if (ended) throw InputError("text after \"endsolid\"", at);
+    if (!solid) {
+      if (keyword != "solid") throw InputError("an ASCII STL file starts with \"solid\", got \"" + keyword + "\"", at);
+      solid = true;
+    } else if (keyword == "facet" || keyword == "endloop") {
+      if (keyword == "endloop" && corner != 3) throw InputError("a loop needs exactly 3 vertices", at);
+    } else if (keyword == "outer") {
+      corner = 0;
+    } else if (keyword == "vertex") {
+      if (corner < 0 || corner >= 3) throw InputError("a vertex outside an \"outer loop\" of 3", at);
+      Vec3& v = corners[std::size_t(corner++)];
+      for (int k = 0; k < 3; ++k) {
+        std::string number;
+        if (!(words >> number)) throw InputError("a vertex needs x, y and z", at);
+        v[k] = finite_number(number, at);
+      }
+    } else if (keyword == "endfacet") {
+      if (corner != 3) throw InputError("a facet needs an \"outer loop\" of 3 vertices", at);
+      add_stl_facet(mesh, corners, max_triangles, at);
+      corner = -1;
+    } else if (keyword == "endsolid") {
+      if (corner != -1) throw InputError("\"endsolid\" inside a facet", at);
+      ended = true;
+    } else {
+      throw InputError("unknown STL keyword \"" + keyword + "\"", at);
+    }
+  }
+  if (!solid) throw InputError("the file is empty: an ASCII STL file starts with \"solid\"", where);
+  if (!ended) throw InputError("the file ends before \"endsolid\"", where);
+  return mesh;
+}
+
 }  // namespace
 
 TriangleMesh read_mesh(const std::filesystem::path& path, std::size_t max_triangles) {
   const std::string extension = lower(path.extension().string());
-  if (extension != ".ply" && extension != ".obj" && extension != ".off")
-    throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply, .obj or .off)", path.string());
+  if (extension != ".ply" && extension != ".obj" && extension != ".off" && extension != ".stl")
+    throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply, .obj, .off or .stl)",
+                     path.string());
   const std::string bytes = read_whole_file(path);
+  if (extension == ".stl")
+    return is_binary_stl(bytes) ? read_binary_stl(bytes, max_triangles, path.string())
+                                : read_ascii_stl(bytes, max_triangles, path.string());
   if (extension == ".ply") return read_ply(bytes, max_triangles, path.string());
   if (extension == ".off") return read_off(bytes, max_triangles, path.string());
   return read_obj(bytes, max_triangles, path.string());

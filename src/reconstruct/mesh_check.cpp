@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -29,30 +30,46 @@ std::vector<std::array<std::int32_t, 3>> proper_triangles(const TriangleMesh& me
   return out;
 }
 
+/// " (e.g. between vertices i and j)": one edge of a problem, so that a user
+/// can find it in a viewer (indices count from 0 in the file's order).
+std::string example_edge(const Edge& e) {
+  return fmt::format(" (e.g. between vertices {} and {}, counted from 0)", e.first, e.second);
+}
+
 /// Every directed edge's count; throws for open, non-manifold, inconsistent.
-void check_edges(const std::vector<std::array<std::int32_t, 3>>& triangles) {
+/// `dropped` (triangles with a repeated vertex, ignored) is named in the
+/// "open" message: dropping one can leave its neighbours' edges unmatched.
+void check_edges(const std::vector<std::array<std::int32_t, 3>>& triangles, std::size_t dropped) {
   std::map<Edge, int> directed;
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
   std::size_t open = 0, non_manifold = 0, inconsistent = 0;
+  Edge first_open{}, first_non_manifold{}, first_inconsistent{};
   for (const auto& [e, n] : directed) {
     const auto back = directed.find({e.second, e.first});
     const int reverse = back == directed.end() ? 0 : back->second;
-    if (n + reverse > 2) ++non_manifold;
-    else if (n == 2) ++inconsistent;
-    else if (reverse == 0) ++open;
+    if (n + reverse > 2) {
+      if (non_manifold++ == 0) first_non_manifold = e;
+    } else if (n == 2) {
+      if (inconsistent++ == 0) first_inconsistent = e;
+    } else if (reverse == 0) {
+      if (open++ == 0) first_open = e;
+    }
   }
   if (non_manifold)
-    throw InputError(fmt::format("the mesh is not manifold: {} edges are shared by more than two triangles",
-                                 non_manifold));
+    throw InputError(fmt::format("the mesh is not manifold: {} edges are shared by more than two triangles{}",
+                                 non_manifold, example_edge(first_non_manifold)));
   if (open)
-    throw InputError(fmt::format("the mesh is open: {} boundary edges (holes); reconstruction needs a closed "
+    throw InputError(fmt::format("the mesh is open: {} boundary edges (holes){}{}; reconstruction needs a closed "
                                  "surface",
-                                 open));
+                                 open, example_edge(first_open),
+                                 dropped ? fmt::format(", after ignoring {} triangle(s) with a repeated vertex",
+                                                       dropped)
+                                         : std::string()));
   if (inconsistent)
     throw InputError(fmt::format("the mesh's orientation is inconsistent: {} edges are used twice in the same "
-                                 "direction (some triangles are flipped)",
-                                 inconsistent));
+                                 "direction{} (some triangles are flipped)",
+                                 inconsistent, example_edge(first_inconsistent)));
 }
 
 /// Six times the signed volume enclosed by each connected component
@@ -110,6 +127,31 @@ void check_position(const TriangleMesh& mesh, const std::vector<std::array<std::
 
 }  // namespace
 
+std::size_t merge_coincident_vertices(TriangleMesh& mesh) {
+  // Exact equality of the coordinates: vertices a rounding apart are
+  // distinct points of the input, and merging them would be a guess.
+  std::map<std::array<double, 3>, std::int32_t> first;
+  std::vector<std::int32_t> new_index(mesh.vertices.size());
+  std::vector<Vec3> kept;
+  std::vector<Vec3> kept_normals;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vec3& v = mesh.vertices[i];
+    const auto [it, added] = first.emplace(std::array<double, 3>{v.x(), v.y(), v.z()}, std::int32_t(kept.size()));
+    new_index[i] = it->second;
+    if (!added) continue;
+    kept.push_back(v);
+    if (!mesh.normals.empty()) kept_normals.push_back(mesh.normals[i]);
+  }
+  const std::size_t merged = mesh.vertices.size() - kept.size();
+  if (merged == 0) return 0;
+  for (auto& t : mesh.triangles)
+    for (std::int32_t& i : t)
+      if (i >= 0 && std::size_t(i) < new_index.size()) i = new_index[std::size_t(i)];
+  mesh.vertices = std::move(kept);
+  mesh.normals = std::move(kept_normals);
+  return merged;
+}
+
 void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles) {
   if (mesh.triangles.size() > max_triangles) {
     throw InputError(fmt::format("the mesh has {} triangles, more than the limit {} (--max-triangles): raise "
@@ -127,7 +169,7 @@ void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles) {
 void check_closed_mesh(const TriangleMesh& mesh) {
   const auto triangles = proper_triangles(mesh);
   if (triangles.empty()) throw InputError("the mesh is empty: it has no triangle");
-  check_edges(triangles);
+  check_edges(triangles, mesh.triangles.size() - triangles.size());
   for (const auto& t : triangles)
     for (std::int32_t i : t)
       if (i < 0 || std::size_t(i) >= mesh.vertices.size())

@@ -1,5 +1,5 @@
-// libFuzzer harness for the PLY/OBJ/OFF reader (skelconv::read_mesh): the
-// input's first byte picks the format (modulo 3: .ply, .obj, .off), the rest
+// libFuzzer harness for the PLY/OBJ/OFF/STL reader (skelconv::read_mesh): the
+// input's first byte picks the format (modulo 4: .ply, .obj, .off, .stl), the rest
 // is the file.
 // read_mesh takes a path, so the bytes go to a file of this process first.
 // Any outcome but a mesh or an InputError is a finding (ASan, UBSan, an
@@ -27,8 +27,8 @@ std::filesystem::path scratch(const char* extension) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  static const char* const extensions[] = {".ply", ".obj", ".off"};
-  const auto path = scratch(extensions[data[0] % 3]);
+  static const char* const extensions[] = {".ply", ".obj", ".off", ".stl"};
+  const auto path = scratch(extensions[data[0] % 4]);
   if (std::FILE* file = std::fopen(path.c_str(), "wb")) {
     std::fwrite(data + 1, 1, size - 1, file);
     std::fclose(file);

@@ -1,4 +1,4 @@
-// skelconv/mesh/mesh_reader.hpp — reading a triangle mesh (PLY, OBJ or OFF) as a
+// skelconv/mesh/mesh_reader.hpp — reading a triangle mesh (PLY, OBJ, OFF or STL) as a
 // user would give it; the reading half of triangle_mesh.hpp's write_mesh.
 //
 //   * PLY: "ascii 1.0", "binary_little_endian 1.0" or "binary_big_endian
@@ -12,7 +12,11 @@
 //     ignored;
 //   * OFF: "OFF" or "COFF", the counts, one vertex and one face ("n i0 …",
 //     0-based) per line, colours and "#" comments ignored, polygons
-//     fan-triangulated (CGAL's sample meshes are OFF files).
+//     fan-triangulated (CGAL's sample meshes are OFF files);
+//   * STL: binary (when the size is 84 + 50 × the facet count) or ASCII
+//     ("solid" … "facet normal" / "outer loop" / three "vertex x y z" /
+//     "endloop" / "endfacet" … "endsolid"); every facet's corners are new
+//     vertices (STL shares none), normals ignored.
 // Errors are InputError located at the path and, where there is one, the line
 // ("mesh.obj: line 12: face index 40 outside [1, 39]"). Faces are optional:
 // a point set is a mesh without triangles.
@@ -26,7 +30,7 @@
 
 namespace skelconv {
 
-/// Reads `path` (.ply, .obj or .off, by extension, case insensitive). The returned
+/// Reads `path` (.ply, .obj, .off or .stl, by extension, case insensitive). The returned
 /// mesh has no normals. Throws InputError for an unknown extension, an
 /// unreadable file, a malformed header or body, a non-finite coordinate or a
 /// face index out of range, and (naming the option --max-triangles of the

@@ -17,7 +17,15 @@ namespace skelconv::reconstruct {
 /// --max-triangles of `skelconv skeletonize`, which passes the limit).
 void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles);
 
-/// Throws InputError naming the first problem of `mesh`:
+/// Merges the vertices of `mesh` that sit at exactly the same position into
+/// one (the first; triangles renumbered, the others removed) and returns how
+/// many were removed. Triangle soups (STL-style exports, some PLY writers)
+/// store every corner anew, and their surface would otherwise look open at
+/// every edge. Positions a rounding apart stay distinct.
+std::size_t merge_coincident_vertices(TriangleMesh& mesh);
+
+/// Throws InputError naming the first problem of `mesh` (for edges, one
+/// example edge by its two vertex indices):
 /// - empty: no triangle (or a triangle with a repeated vertex only);
 /// - open: an edge used by one triangle (a boundary);
 /// - non-manifold: an edge used by more than two triangles;
