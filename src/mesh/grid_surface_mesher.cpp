@@ -172,10 +172,15 @@ class SurfaceCells {
         for (int bk = 0; bk < count_.z(); bk += block) {
           const openvdb::Coord origin(bi, bj, bk);
           const bool whole = ni == block && nj == block && bk + block <= count_.z();
-          if (whole && accessor_.probeConstLeaf(origin) == nullptr && all_inside(inside)) {
+          const bool unsampled = accessor_.probeConstLeaf(origin) == nullptr;
+          if (whole && unsampled && all_inside(inside)) {
             accessor_.addTile(/*level of a leaf-sized tile*/ 1, origin, -limit, /*active*/ false);
             continue;
           }
+          // No sampled node and every column entering outside: every node
+          // keeps the background (+float max), and the columns leave as
+          // they came. Most of the box is such blocks.
+          if (unsampled && none_inside(inside)) continue;
           const int nk = std::min(block, count_.z() - bk);
           for (int a = 0; a < ni; ++a) {
             for (int b = 0; b < nj; ++b) {
@@ -220,6 +225,13 @@ class SurfaceCells {
     for (const auto& row : inside)
       for (bool in : row)
         if (!in) return false;
+    return true;
+  }
+
+  static bool none_inside(const std::array<std::array<bool, block>, block>& inside) {
+    for (const auto& row : inside)
+      for (bool in : row)
+        if (in) return false;
     return true;
   }
 
