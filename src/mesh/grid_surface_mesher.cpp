@@ -12,7 +12,6 @@
 #include <limits>
 #include <optional>
 #include <span>
-#include <unordered_set>
 #include <vector>
 
 #include <stdexcept>
@@ -201,8 +200,6 @@ class SurfaceCells {
     }
   }
 
-  std::size_t cells() const { return visited_.size(); }
-
  private:
   /// The corner values of a cell, sampled where not yet.
   std::array<float, 8> corners(const openvdb::Coord& cell) {
@@ -243,7 +240,7 @@ class SurfaceCells {
   /// Whether a cell was sampled and crosses the surface (then the
   /// continuation has spread from it).
   bool reached(const openvdb::Coord& cell) {
-    return visited_.count(key(cell)) != 0 && changes_sign(corners(cell));
+    return visited_.isValueOn(cell) && changes_sign(corners(cell));
   }
 
   /// Samples a cell the first time it is met; queues it if it crosses.
@@ -251,7 +248,8 @@ class SurfaceCells {
     if (cell.x() < 0 || cell.y() < 0 || cell.z() < 0 || cell.x() >= count_.x() - 1 || cell.y() >= count_.y() - 1 ||
         cell.z() >= count_.z() - 1)
       return;
-    if (!visited_.insert(key(cell)).second) return;
+    if (visited_.isValueOn(cell)) return;
+    visited_.setValueOn(cell);
     const std::array<float, 8> values = corners(cell);
     if (changes_sign(values)) queue_.push_back(cell);
   }
@@ -274,15 +272,13 @@ class SurfaceCells {
     }
   }
 
-  static std::uint64_t key(const openvdb::Coord& cell) {
-    return std::uint64_t(std::uint32_t(cell.x())) << 42 | std::uint64_t(std::uint32_t(cell.y())) << 21 |
-           std::uint64_t(std::uint32_t(cell.z()));
-  }
-
   const GridSurfaceRequest& request_;
   openvdb::FloatGrid::Accessor accessor_;
   openvdb::Coord count_;
-  std::unordered_set<std::uint64_t> visited_;
+  /// The cells met so far, one bit each in OpenVDB's blocks of 8³: no
+  /// allocation per cell (a hash set's node), and each lookup near the last.
+  openvdb::MaskTree visited_tree_;
+  openvdb::tree::ValueAccessor<openvdb::MaskTree> visited_{visited_tree_};
   std::vector<openvdb::Coord> queue_;
 };
 
