@@ -133,8 +133,8 @@ class FarSegmentRule {
     const double gradient_allowed = f_allowed * gradient_factor_;
     // The bounds decrease with n, so the rules that fit are the even n from
     // some 2 j on, and j − 1 is the number of even rules that do not fit:
-    // counted over the whole table, without a branch (a search branches on
-    // the data and mispredicts about every other step). Rules past the
+    // counted over the whole table, without a branch (a search's branches
+    // depend on the data). Rules past the
     // longest of this kind only add to a count that is already past it.
     const __m128d f_limit = _mm_set1_pd(f_allowed), gradient_limit = _mm_set1_pd(gradient_allowed);
     const FarRuleBin& bound = bins_[bin_of(focal_sum)];
