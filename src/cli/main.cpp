@@ -2,6 +2,8 @@
 //
 // Subcommands live in their own files (eval_command.*, mesh_command.*); add new ones next to
 // it and register them below. The verifier is a separate executable (verify/).
+#include <malloc.h>
+
 #include <exception>
 #include <string>
 #include <string_view>
@@ -46,6 +48,16 @@ bool first_argument_is_unknown_subcommand(CLI::App& app, int argc, char** argv) 
 
 int main(int argc, char** argv) {
   using namespace skelconv::cli;
+  // A command runs once and exits: memory it frees is worth keeping for its
+  // next allocations rather than handing back to the system, which maps
+  // fresh zeroed pages again at the next touch (a page fault each). glibc
+  // by default unmaps blocks above ~128 KiB on free and trims the heap's
+  // top above 128 KiB; `mesh` allocates and frees blocks of megabytes (the
+  // grid, the mesh, its topology, the PLY text) and took ~1,300 page faults
+  // fewer of ~6,800 with these (Zanni's ant at --size 0.04). 32 MiB is
+  // glibc's largest mmap threshold on 64-bit systems.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
 
   CLI::App app("Closed-form convolution-surface fields of skeleton primitives.", "skelconv");
   app.set_version_flag("--version", std::string("skelconv ") + SKELCONV_VERSION);

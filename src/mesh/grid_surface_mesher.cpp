@@ -12,7 +12,6 @@
 #include <limits>
 #include <optional>
 #include <span>
-#include <unordered_set>
 #include <vector>
 
 #include <stdexcept>
@@ -172,10 +171,15 @@ class SurfaceCells {
         for (int bk = 0; bk < count_.z(); bk += block) {
           const openvdb::Coord origin(bi, bj, bk);
           const bool whole = ni == block && nj == block && bk + block <= count_.z();
-          if (whole && accessor_.probeConstLeaf(origin) == nullptr && all_inside(inside)) {
+          const bool unsampled = accessor_.probeConstLeaf(origin) == nullptr;
+          if (whole && unsampled && all_inside(inside)) {
             accessor_.addTile(/*level of a leaf-sized tile*/ 1, origin, -limit, /*active*/ false);
             continue;
           }
+          // No sampled node and every column entering outside: every node
+          // keeps the background (+float max), and the columns leave as
+          // they came. Most of the box is such blocks.
+          if (unsampled && none_inside(inside)) continue;
           const int nk = std::min(block, count_.z() - bk);
           for (int a = 0; a < ni; ++a) {
             for (int b = 0; b < nj; ++b) {
@@ -195,8 +199,6 @@ class SurfaceCells {
       }
     }
   }
-
-  std::size_t cells() const { return visited_.size(); }
 
  private:
   /// The corner values of a cell, sampled where not yet.
@@ -223,6 +225,13 @@ class SurfaceCells {
     return true;
   }
 
+  static bool none_inside(const std::array<std::array<bool, block>, block>& inside) {
+    for (const auto& row : inside)
+      for (bool in : row)
+        if (in) return false;
+    return true;
+  }
+
   static bool changes_sign(std::span<const float> values) {
     const bool first = values[0] < 0;
     return std::any_of(values.begin() + 1, values.end(), [first](float v) { return (v < 0) != first; });
@@ -231,7 +240,7 @@ class SurfaceCells {
   /// Whether a cell was sampled and crosses the surface (then the
   /// continuation has spread from it).
   bool reached(const openvdb::Coord& cell) {
-    return visited_.count(key(cell)) != 0 && changes_sign(corners(cell));
+    return visited_.isValueOn(cell) && changes_sign(corners(cell));
   }
 
   /// Samples a cell the first time it is met; queues it if it crosses.
@@ -239,7 +248,8 @@ class SurfaceCells {
     if (cell.x() < 0 || cell.y() < 0 || cell.z() < 0 || cell.x() >= count_.x() - 1 || cell.y() >= count_.y() - 1 ||
         cell.z() >= count_.z() - 1)
       return;
-    if (!visited_.insert(key(cell)).second) return;
+    if (visited_.isValueOn(cell)) return;
+    visited_.setValueOn(cell);
     const std::array<float, 8> values = corners(cell);
     if (changes_sign(values)) queue_.push_back(cell);
   }
@@ -262,15 +272,13 @@ class SurfaceCells {
     }
   }
 
-  static std::uint64_t key(const openvdb::Coord& cell) {
-    return std::uint64_t(std::uint32_t(cell.x())) << 42 | std::uint64_t(std::uint32_t(cell.y())) << 21 |
-           std::uint64_t(std::uint32_t(cell.z()));
-  }
-
   const GridSurfaceRequest& request_;
   openvdb::FloatGrid::Accessor accessor_;
   openvdb::Coord count_;
-  std::unordered_set<std::uint64_t> visited_;
+  /// The cells met so far, one bit each in OpenVDB's blocks of 8³: no
+  /// allocation per cell (a hash set's node), and each lookup near the last.
+  openvdb::MaskTree visited_tree_;
+  openvdb::tree::ValueAccessor<openvdb::MaskTree> visited_{visited_tree_};
   std::vector<openvdb::Coord> queue_;
 };
 

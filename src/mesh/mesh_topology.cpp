@@ -22,23 +22,39 @@ struct DisjointSets {
 
 using Edge = std::pair<std::int32_t, std::int32_t>;  // (smaller, larger) vertex index
 
-/// (edge, triangle) for every side of every triangle, sorted by edge.
+/// (edge, triangle) for every side of every triangle, sorted by edge, then
+/// triangle. Placed by the edge's smaller vertex first (a counting sort: the
+/// triangles come in order, so each vertex's uses do too), then each
+/// vertex's few uses sorted by the larger: about linear in the triangles,
+/// where one sort of all the uses is n log n (mesh summaries of 10⁵ and more
+/// triangles run this on every `skelconv mesh`).
 std::vector<std::pair<Edge, std::size_t>> sorted_edge_uses(const TriangleMesh& mesh) {
-  std::vector<std::pair<Edge, std::size_t>> uses;
-  uses.reserve(3 * mesh.triangles.size());
+  const auto edge_of = [&mesh](std::size_t t, int k) {
+    const std::int32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+    return Edge{std::min(a, b), std::max(a, b)};
+  };
+  std::int32_t largest = -1;
+  for (const auto& t : mesh.triangles) largest = std::max({largest, t[0], t[1], t[2]});
+  std::vector<std::size_t> start(std::size_t(largest) + 2, 0);  // uses of smaller vertex v: [start[v], start[v + 1])
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) ++start[std::size_t(edge_of(t, k).first) + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::pair<Edge, std::size_t>> uses(3 * mesh.triangles.size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-      uses.push_back({{std::min(a, b), std::max(a, b)}, t});
+      const Edge edge = edge_of(t, k);
+      uses[next[std::size_t(edge.first)]++] = {edge, t};
     }
   }
-  std::sort(uses.begin(), uses.end());
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) std::sort(uses.begin() + start[v], uses.begin() + start[v + 1]);
   return uses;
 }
 
 /// True when the triangles around every vertex form one fan: the triangles
 /// at a vertex joined through the edges at that vertex they share.
 bool vertex_links_are_fans(const TriangleMesh& mesh, const std::vector<std::pair<Edge, std::size_t>>& uses) {
+  if (mesh.triangles.empty()) return true;
   DisjointSets corners(3 * mesh.triangles.size());  // corner (t, k) = 3t + k
   const auto corner_of = [&](std::size_t t, std::int32_t v) {
     const auto& tri = mesh.triangles[t];

@@ -119,8 +119,10 @@ std::vector<FarRuleBin> make_table(int degree) {
       double decay = 1;  // ρ^(−2(n − 1))
       for (int n = 1; n <= max_nodes; ++n) {
         if (n > 1) decay /= rho * rho;
-        bound.f[std::size_t(n)] = std::min(bound.f[std::size_t(n)], safety * f_front * decay);
-        bound.gradient[std::size_t(n)] = std::min(bound.gradient[std::size_t(n)], safety * gradient_front * decay);
+        if (n % 2 == 1) continue;  // only even rules run
+        const std::size_t at = std::size_t(n / 2 - 1);
+        bound.f[at] = std::min(bound.f[at], safety * f_front * decay);
+        bound.gradient[at] = std::min(bound.gradient[at], safety * gradient_front * decay);
       }
     }
   }

@@ -103,8 +103,14 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
                          const std::vector<FarSegmentRule>& rules, const Vec3& p, Need need, double tolerance,
                          FieldSample& total) {
   const std::size_t count = rules.size();
+  // Q at the ends of every segment, read by both the lower bound and the
+  // choice of rules.
+  boost::container::small_vector<FarSegmentRule::EndSquares, far_rule_chunk> ends(count);
   double lower = 0;
-  for (const FarSegmentRule& rule : rules) lower += rule.lower_bound(p);
+  for (std::size_t k = 0; k < count; ++k) {
+    ends[k] = rules[k].end_squares(p);
+    lower += rules[k].lower_bound(ends[k]);
+  }
   const double budget = tolerance * lower / double(count);
   constexpr std::size_t groups = FarSegmentRule::max_nodes / 2 + 1;  // 0 (exact), 2, 4, …, max_nodes nodes
   std::size_t position = 0;  // the segment being evaluated
@@ -119,7 +125,7 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
       std::array<std::uint8_t, far_rule_chunk> order;  // positions − first, grouped by node count
       std::array<std::size_t, groups + 1> start{};
       for (std::size_t k = 0; k < size; ++k) {
-        nodes[k] = std::uint8_t(budget > 0.0 ? rules[first + k].nodes(p, budget) : 0);
+        nodes[k] = std::uint8_t(budget > 0.0 ? rules[first + k].nodes(ends[first + k], budget) : 0);
         ++start[nodes[k] / 2 + 1];
       }
       for (std::size_t g = 1; g <= groups; ++g) start[g] += start[g - 1];

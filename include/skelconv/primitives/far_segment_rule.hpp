@@ -52,6 +52,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <emmintrin.h>
 #include <limits>
 #include <optional>
 #include <span>
@@ -60,10 +61,11 @@
 
 namespace skelconv {
 
-/// The bounds of one bin of S for n = 1 … max_nodes (index n; [0] unused),
-/// for f and for ∇f (far_segment_rule.cpp builds them).
+/// The bounds of one bin of S for the even rules n = 2, 4, …, max_nodes (at
+/// index n/2 − 1; the rules run two nodes at a time), for f and for ∇f
+/// (far_segment_rule.cpp builds them).
 struct FarRuleBin {
-  std::array<double, 21> f, gradient;
+  std::array<double, 10> f, gradient;
 };
 
 class FarSegmentRule {
@@ -75,7 +77,7 @@ class FarSegmentRule {
   /// checks, about 20 nodes (docs/field.md, "Tolerance").
   static constexpr int max_classical_nodes = 10, max_scalis_nodes = 20;
   static constexpr int max_nodes = std::max(max_classical_nodes, max_scalis_nodes);
-  static_assert(max_nodes + 1 == std::tuple_size_v<decltype(FarRuleBin::f)>);
+  static_assert(max_nodes / 2 == std::tuple_size_v<decltype(FarRuleBin::f)>);
   /// The table's bins: 8 per octave of S from 2, the last one open.
   static constexpr int bins_per_octave = 8;  ///< the top 3 bits of S's mantissa
   static constexpr int max_exponent = 30;    ///< S up to 2^31: P ~10^9 |AB| away
@@ -95,48 +97,59 @@ class FarSegmentRule {
   static std::optional<FarSegmentRule> make_scalis(const Vec3& a, const Vec3& b, int degree, double sigma,
                                                    double tau0, double tau1, double field_scale);
 
+  /// Q at the segment's ends, Q(0) = |P − A|² + c(0)² and Q(1): all that
+  /// lower_bound and nodes read of P, computed once for both.
+  struct EndSquares {
+    double a = 0, b = 0;
+  };
+  EndSquares end_squares(const Vec3& p) const {
+    const Vec3 pa = p - a_;
+    const Vec3 pb = pa - ab_;
+    return {pa.squaredNorm() + offset_a_, pb.squaredNorm() + offset_b_};
+  }
+
   /// A lower bound of f(P): L ∫ω · Q_max^(−m), with Q_max = max(Q(0), Q(1))
   /// (Q is convex in t, ω ≥ 0), as L ∫ω q_unit^(−m) · (q_unit / Q_max)^m so
   /// that neither factor leaves the double range for moderate inputs.
   /// Rounded like any f; 0 where it underflows.
-  double lower_bound(const Vec3& p) const {
-    const Vec3 pa = p - a_;
-    const Vec3 pb = pa - ab_;
-    const double inverse = q_unit_ / std::max(pa.squaredNorm() + offset_a_, pb.squaredNorm() + offset_b_);
+  double lower_bound(const EndSquares& q) const {
+    const double inverse = q_unit_ / std::max(q.a, q.b);
     double power = 1;
     for (int k = 0; k < degree_ / 2; ++k) power *= inverse;
     if (degree_ % 2 == 1) power *= std::sqrt(inverse);
     return lower_front_ * power;
   }
+  double lower_bound(const Vec3& p) const { return lower_bound(end_squares(p)); }
 
   /// The nodes n of the shortest rule with an even n (the rules run two
   /// nodes at a time) whose bound is at most `budget` for f and
   /// m g · budget for each component of ∇f; 0 where that takes more than
   /// the longest rule of its kind (or S is not finite).
-  int nodes(const Vec3& p, double budget) const {
-    const Vec3 pa = p - a_;
-    const Vec3 pb = pa - ab_;
-    const double focal_sum =
-        (std::sqrt(pa.squaredNorm() + offset_a_) + std::sqrt(pb.squaredNorm() + offset_b_)) * two_over_length_;
+  int nodes(const EndSquares& q, double budget) const {
+    const double focal_sum = (std::sqrt(q.a) + std::sqrt(q.b)) * two_over_length_;
     if (!(focal_sum > 2.0 && focal_sum <= std::numeric_limits<double>::max())) return 0;
     double f_allowed = budget * f_factor_;
     if (weight_varies_) f_allowed /= weight_bound(focal_sum);
     const double gradient_allowed = f_allowed * gradient_factor_;
-    const FarRuleBin& bound = bins_[bin_of(focal_sum)];
     // The bounds decrease with n, so the rules that fit are the even n from
-    // some 2 j on: bisect for j in 1 … longest_/2 (longest_/2 + 1: none fits),
-    // with fit(low) false (low = 0 stands for that) and high fitting or past
-    // the end. Four halvings for 20 nodes, where a scan took ten steps.
-    int low = 0, high = longest_ / 2 + 1;
-    while (high - low > 1) {
-      const int middle = (low + high) / 2;
-      const std::size_t n = std::size_t(2 * middle);
-      // Both comparisons always (&, not &&): no branch to mispredict.
-      const bool fits = (bound.f[n] <= f_allowed) & (bound.gradient[n] <= gradient_allowed);
-      (fits ? high : low) = middle;
+    // some 2 j on, and j − 1 is the number of even rules that do not fit:
+    // counted over the whole table, without a branch (a search's branches
+    // depend on the data). Rules past the
+    // longest of this kind only add to a count that is already past it.
+    const __m128d f_limit = _mm_set1_pd(f_allowed), gradient_limit = _mm_set1_pd(gradient_allowed);
+    const FarRuleBin& bound = bins_[bin_of(focal_sum)];
+    int fitting = 0;
+    for (std::size_t k = 0; k < bound.f.size(); k += 2) {
+      const __m128d fits = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(&bound.f[k]), f_limit),
+                                      _mm_cmple_pd(_mm_loadu_pd(&bound.gradient[k]), gradient_limit));
+      const int mask = _mm_movemask_pd(fits);  // bit k: lane k fits
+      fitting += (mask & 1) + (mask >> 1);
     }
-    return 2 * high > longest_ ? 0 : 2 * high;
+    const int n = 2 * (1 + int(bound.f.size()) - fitting);
+    return n > longest_ ? 0 : n;
   }
+  int nodes(const Vec3& p, double budget) const { return nodes(end_squares(p), budget); }
+
   /// f(P) and, with `gradient`, ∇f(P) by the n-node rule (n from nodes());
   /// false (`out` unspecified) where the result would not be a normal double
   /// (the exact path then decides).
