@@ -236,6 +236,15 @@ TEST(MedialFit, NewtonStepsFindTheDistanceInsideABall) {
   fit_medial_mesh(ball, points, {}, field_of, fit, &report);
   ASSERT_EQ(report.rms.size(), 1u);
   EXPECT_NEAR(report.rms[0], 0.5, 1e-3);
+  // The second stage alone takes its own Newton steps: the first stage's
+  // distances are first-order, the second's L⁴ mean (of three equal
+  // distances: the distance) starts from the Newton distance.
+  fit.newton_steps = 0, fit.worst_newton_steps = 2, fit.worst_rounds = 1;
+  fit_medial_mesh(ball, points, {}, field_of, fit, &report);
+  ASSERT_EQ(report.rms.size(), 1u);
+  EXPECT_NEAR(report.rms[0], 1.56 / std::hypot(2.56, 1.56), 2e-3) << "one bounded step";
+  ASSERT_GE(report.worst.size(), 1u);
+  EXPECT_NEAR(report.worst[0], 0.5, 1e-3);
 }
 
 // The same ball with three points on its surface (δ = 0) and one inside

@@ -56,6 +56,7 @@ struct Evaluation {
   double rms = 0.0;
   double objective = 0.0;
   double largest = 0.0;
+  int newton_steps = 0;  ///< the Newton steps each distance took
 };
 
 /// One Newton step's length toward f = iso from a point where the field is
@@ -76,6 +77,7 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
                     int newton_steps) {
   const std::vector<WeightedPoint>& points = fit_points.all;
   Evaluation e;
+  e.newton_steps = newton_steps;
   e.skeleton = field_of(mesh);
   const double iso = e.skeleton.iso();
   e.delta.resize(points.size());
@@ -282,6 +284,8 @@ struct Rounds {
   std::function<Reweighting(const Evaluation&)> weights;
   std::function<double(const Evaluation&)> objective;
   double rms_limit = std::numeric_limits<double>::infinity();
+  /// The Newton steps each point's distance takes in this stage.
+  int newton_steps = 0;
 };
 
 /// A step must also leave the topology error (`error`, when set) at most
@@ -314,7 +318,7 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
       for (std::size_t i = 0; i < trial.spheres.size(); ++i)
         for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
       limit_radius_slope(trial, o.max_radius_slope, clearance);
-      Evaluation next = evaluate(trial, points, field_of, o.newton_steps);
+      Evaluation next = evaluate(trial, points, field_of, stage.newton_steps);
       const double next_value = stage.objective(next);
       if (next_value < value && next.rms <= stage.rms_limit) {
         if (guard.error) {
@@ -378,6 +382,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   const double huber = o.huber_scale * diagonal_of(surface_points);
   least_squares.weights = [huber](const Evaluation&) { return huber_weights(huber); };
   least_squares.objective = [](const Evaluation& e) { return e.objective; };
+  least_squares.newton_steps = o.newton_steps;
   // Then the worst points: the least squares leave a few places (a crease
   // the blend fills, a rim it rounds) far off while the RMS is low, and
   // those make the Hausdorff distance.
@@ -388,17 +393,28 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
     return power_weights(p, std::max(power_mean(points.all, e, p), std::numeric_limits<double>::min()));
   };
   worst.objective = [&points, p](const Evaluation& e) { return power_mean(points.all, e, p); };
+  // The worst points are where the field saturates (a crease the blend
+  // filled), where the first-order distance falls short most: the second
+  // stage measures them with more Newton steps.
+  worst.newton_steps = std::max(o.newton_steps, o.worst_newton_steps);
+  const auto evaluate_for = [&](const Rounds& stage) {
+    if (now.newton_steps != stage.newton_steps) now = evaluate(mesh, points, field_of, stage.newton_steps);
+  };
   std::vector<std::vector<Vec4>> history{mesh.spheres};  // before the fit, then after each round taken
   double first_stage_rms = 0.0;
   const auto run_stages = [&](int first_rounds, int worst_rounds, Guard& guard) {
     if (first_rounds > 0 || r.rms.empty()) {  // the objective before the fit, rounds or not
       least_squares.rounds = first_rounds;
+      evaluate_for(least_squares);
       run_rounds(mesh, now, lambda, points, field_of, o, start, least_squares, r.rms, history, guard, clearance,
                  progress);
+      // The second stage's RMS limit is on its own distances.
+      if (worst_rounds > 0) evaluate_for(worst);
       first_stage_rms = now.rms;
     }
     if (worst_rounds > 0) {
       worst.rounds = worst_rounds;
+      evaluate_for(worst);
       worst.rms_limit = (1.0 + o.worst_rms_growth) * first_stage_rms;
       run_rounds(mesh, now, lambda, points, field_of, o, start, worst, r.worst, history, guard, clearance, progress);
     }
