@@ -134,13 +134,14 @@ reconstruct::SkeletonMethod skeleton_method(const std::string& name) {
 }
 
 /// The skeleton `skelconv skeletonize` writes for the closed mesh
-/// (vertices, triangles), as a Skeleton: the same checks of the mesh, the
-/// same noise, the same reconstruction and skeleton file.
+/// (vertices, triangles), as a Skeleton: the same merge of coincident
+/// vertices, checks of the mesh, noise, reconstruction and skeleton file.
 Skeleton skeletonize(const DoubleArray& vertices, const IndexArray& triangles,
                      const reconstruct::ReconstructOptions& options, double noise, std::size_t max_triangles) {
-  const TriangleMesh input = triangle_mesh(vertices, triangles);
+  TriangleMesh input = triangle_mesh(vertices, triangles);
   const std::string text = with_argument_names([&] {
     py::gil_scoped_release release;
+    reconstruct::merge_coincident_vertices(input);
     reconstruct::check_mesh_size(input, max_triangles);
     reconstruct::check_closed_mesh(input);
     const TriangleMesh samples = reconstruct::with_sample_noise(input, noise);
