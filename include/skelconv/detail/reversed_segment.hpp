@@ -6,8 +6,8 @@
 // whose coefficients, c = 1 − |AP|²/R² and the others, are of size (|AB|/R)².
 // For P near A they are O(1) on the support chord; for P near B they cancel
 // from (|AB|/R)² down to O(1), and a thin support (R ≪ |AB|) loses digits
-// there like ε (|AB|/R)² (2e-13 relative at R = |AB|/100, 1e-5 at
-// |AB|/10^6). The same segment read from B — ends swapped, weight
+// there like ε (|AB|/R)² (up to 6e-11 relative at R = |AB|/100, 3e-3 at
+// |AB|/10^6: tests/segment_thin_support_test.cpp). The same segment read from B — ends swapped, weight
 // re-expanded as w(1 − t) — has P near its start and the same f and ∇_P f.
 // The runtime evaluates from the end whose half of the segment holds P's
 // foot on the line, so the closed form always works from the nearer end.
