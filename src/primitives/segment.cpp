@@ -13,6 +13,7 @@
 #include "../detail/convergence_guard.hpp"
 #include "../detail/input_checks.hpp"
 #include "skelconv/detail/clip.hpp"
+#include "skelconv/detail/reversed_segment.hpp"
 #include "../detail/infinity.hpp"
 
 namespace skelconv {
@@ -118,6 +119,11 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   if (generated_->prepare != nullptr) {
     prepared_.resize(generated_->prepared_size);
     generated_->prepare(input_, prepared_.data());
+    if (std::isfinite(support_radius_)) {
+      input_from_b_ = detail::reversed_segment(input_);
+      prepared_from_b_.resize(generated_->prepared_size);
+      generated_->prepare(input_from_b_, prepared_from_b_.data());
+    }
   }
   if (kernel.family == KernelFamily::cauchy) {
     far_rule_ = FarSegmentRule::make(a, b, kernel.degree, kernel.s, this->weight());
@@ -140,12 +146,14 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
 // primitive and point: the error's formatting is out of line
 // (throw_too_far), which leaves locate small enough for the compiler to
 // inline into its three callers.
-[[gnu::always_inline]] inline Segment::Case Segment::locate(const Vec3& p, SegmentPoint<double>& point) const {
+[[gnu::always_inline]] inline Segment::Case Segment::locate(const Vec3& p, SegmentPoint<double>& point,
+                                                          const double*& prepared) const {
   detail::require_finite_query_point(p);
   const Vec3 frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
   // A factor 2^−e ≤ 1 cannot take a finite P out of the double range.
   if (factors_.to_frame > 1.0 && !frame_p.allFinite()) throw_too_far(p);
   point.p = to_array(frame_p);
+  prepared = prepared_.empty() ? nullptr : prepared_.data();
 
   if (singular_at_zero_) {
     // Exact test on the frame's doubles (see the file comment of segment.hpp).
@@ -157,9 +165,14 @@ std::vector<int> Segment::supported_degrees(KernelFamily family, int weight_degr
     }
   }
   if (std::isfinite(support_radius_)) {
+    // From the end nearer P (reversed_segment.hpp), where the kernel has a
+    // preparation (all finite-support ones do) and so prepared_from_b_.
+    const bool from_b = !prepared_from_b_.empty() && detail::foot_on_b_half(input_.a, input_.b, point.p);
+    const SegmentInput<double>& segment = from_b ? input_from_b_ : input_;
+    if (from_b) prepared = prepared_from_b_.data();
     // Hubert 2012 §3.4: only the part of [A,B] inside the ball of radius R
     // around P contributes; the generated code integrates over [t0, t1].
-    const std::optional<ParameterInterval<double>> inside = clip_to_ball(input_.a, input_.b, point.p, input_.R);  // R in the frame
+    const std::optional<ParameterInterval<double>> inside = clip_to_ball(segment.a, segment.b, point.p, segment.R);  // R in the frame
     if (!inside) return Case::outside_compact_support;
     point.t0 = inside->t0;
     point.t1 = inside->t1;
@@ -183,19 +196,20 @@ namespace {
 
 }  // namespace
 
-[[gnu::always_inline]] inline double Segment::call_f(const SegmentPoint<double>& point) const {
-  if (!prepared_.empty()) return generated_->f_at(prepared_.data(), point);
+[[gnu::always_inline]] inline double Segment::call_f(const SegmentPoint<double>& point, const double* prepared) const {
+  if (prepared != nullptr) return generated_->f_at(prepared, point);
   return generated_->f(input_at(input_, point));
 }
 
-[[gnu::always_inline]] inline std::array<double, 3> Segment::call_grad(const SegmentPoint<double>& point) const {
-  if (!prepared_.empty()) return generated_->grad_at(prepared_.data(), point);
+[[gnu::always_inline]] inline std::array<double, 3> Segment::call_grad(const SegmentPoint<double>& point,
+                                                                         const double* prepared) const {
+  if (prepared != nullptr) return generated_->grad_at(prepared, point);
   return generated_->grad(input_at(input_, point));
 }
 
-[[gnu::always_inline]] inline double Segment::call_f_and_grad(const SegmentPoint<double>& point,
+[[gnu::always_inline]] inline double Segment::call_f_and_grad(const SegmentPoint<double>& point, const double* prepared,
                                                               std::array<double, 3>& g) const {
-  if (!prepared_.empty()) return generated_->f_and_grad_at(prepared_.data(), point, g);
+  if (prepared != nullptr) return generated_->f_and_grad_at(prepared, point, g);
   return generated_->f_and_grad(input_at(input_, point), g);
 }
 
@@ -213,33 +227,36 @@ namespace {
 
 double Segment::value(const Vec3& p) const {
   SegmentPoint<double> point;
-  switch (locate(p, point)) {
+  const double* prepared = nullptr;
+  switch (locate(p, point, prepared)) {
     case Case::outside_compact_support: return 0.0;
     case Case::on_inverse_singularity: return infinity;
     case Case::call_generated: break;
   }
-  return restore_value(detail::evaluate_converged(generated_->name, p, [&] { return call_f(point); }), p);
+  return restore_value(detail::evaluate_converged(generated_->name, p, [&] { return call_f(point, prepared); }), p);
 }
 
 Vec3 Segment::gradient(const Vec3& p) const {
   SegmentPoint<double> point;
-  switch (locate(p, point)) {
+  const double* prepared = nullptr;
+  switch (locate(p, point, prepared)) {
     case Case::outside_compact_support: return Vec3::Zero();
     case Case::on_inverse_singularity: return Vec3::Constant(infinity);
     case Case::call_generated: break;
   }
-  return restore_gradient(detail::evaluate_converged(generated_->name, p, [&] { return call_grad(point); }), p);
+  return restore_gradient(detail::evaluate_converged(generated_->name, p, [&] { return call_grad(point, prepared); }), p);
 }
 
 FieldSample Segment::value_and_gradient(const Vec3& p) const {
   SegmentPoint<double> point;
-  switch (locate(p, point)) {
+  const double* prepared = nullptr;
+  switch (locate(p, point, prepared)) {
     case Case::outside_compact_support: return {0.0, Vec3::Zero()};
     case Case::on_inverse_singularity: return {infinity, Vec3::Constant(infinity)};
     case Case::call_generated: break;
   }
   std::array<double, 3> g{};
-  const double f = detail::evaluate_converged(generated_->name, p, [&] { return call_f_and_grad(point, g); });
+  const double f = detail::evaluate_converged(generated_->name, p, [&] { return call_f_and_grad(point, prepared, g); });
   return {restore_value(f, p), restore_gradient(g, p)};
 }
 

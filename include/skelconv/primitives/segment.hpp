@@ -11,7 +11,11 @@
 //   - finite-support kernels (compact, soft, wyvill: the trait's
 //     support_radius R): P farther than R from the whole segment. The clip of
 //     [A,B] to the ball of radius R around P (skelconv/detail/clip.hpp) is empty,
-//     and f = 0, ∇f = 0 exactly.
+//     and f = 0, ∇f = 0 exactly. Otherwise, when P's foot on the line lies
+//     on B's half of the segment, the generated code is given the segment
+//     read from B (ends swapped, weight w(1 − t), prepared once beside the
+//     direct one): the closed forms measure from their first end and lose
+//     ~ε (|AB|/R)² far from it (skelconv/detail/reversed_segment.hpp).
 //   - kernels singular at 0 (inverse): P on the segment itself. The integrand r^(-i) is not
 //     integrable there (i ≥ 1), f = +∞. By convention value() returns +inf
 //     and gradient() returns (+inf, +inf, +inf): there is no meaningful
@@ -114,14 +118,16 @@ class Segment {
     outside_compact_support, ///< compact kernel, P farther than R: f = 0
     on_inverse_singularity,  ///< inverse kernel, P on the segment: f = +inf
   };
-  /// P in the frame, and for a compact kernel the clip [t0, t1] of its support.
-  Case locate(const Vec3& p, SegmentPoint<double>& point) const;
-  /// The generated f, ∇f or both at `point`: from prepared_ where the kernel
+  /// P in the frame, and for a finite-support kernel the clip [t0, t1] of
+  /// its support on the segment read from the nearer end; `prepared` is that
+  /// reading's preparation (prepared_ or prepared_from_b_; null for the Gaussian).
+  Case locate(const Vec3& p, SegmentPoint<double>& point, const double*& prepared) const;
+  /// The generated f, ∇f or both at `point`: from `prepared` where the kernel
   /// is split (every generated one, and the compact combinations of soft and
   /// Wyvill), else from input_ (the Gaussian).
-  double call_f(const SegmentPoint<double>& point) const;
-  std::array<double, 3> call_grad(const SegmentPoint<double>& point) const;
-  double call_f_and_grad(const SegmentPoint<double>& point, std::array<double, 3>& g) const;
+  double call_f(const SegmentPoint<double>& point, const double* prepared) const;
+  std::array<double, 3> call_grad(const SegmentPoint<double>& point, const double* prepared) const;
+  double call_f_and_grad(const SegmentPoint<double>& point, const double* prepared, std::array<double, 3>& g) const;
 
   /// f' of the frame → f (and ∇f, with value_power_ − 1), see scaled_frame.hpp.
   double restore_value(double f, const Vec3& p) const;
@@ -144,6 +150,10 @@ class Segment {
   /// The generated kernel's per-segment quantities (its `prepare`, once, at
   /// construction): every evaluation reads them and does the per-point work only.
   std::vector<double> prepared_;
+  /// Finite-support kernels only: the same segment read from B (ends swapped,
+  /// weight w(1 − t)) and its preparation, for P on B's half.
+  SegmentInput<double> input_from_b_;
+  std::vector<double> prepared_from_b_;
   /// From the kernel's trait: K = 0 beyond this (+inf: no clip), and K(0) = +inf.
   double support_radius_ = 0.0;
   bool singular_at_zero_ = false;
