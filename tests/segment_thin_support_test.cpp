@@ -2,7 +2,7 @@
 // tube: R = |AB|/100 is an ordinary skeleton), near each end, beside and
 // beyond it, against a binary128 reference. The generated closed forms
 // measure from A and lose ~ε (|AB|/R)² near B; Segment reads the segment from
-// the nearer end (skelconv/detail/reversed_segment.hpp).
+// the nearer end (src/primitives/reversed_segment.hpp).
 //
 // The reference is the definition integral on the support chord in binary128
 // (GCC __float128, libquadmath), with the chord's parameter written as

@@ -13,7 +13,7 @@
 #include "../detail/convergence_guard.hpp"
 #include "../detail/input_checks.hpp"
 #include "skelconv/detail/clip.hpp"
-#include "skelconv/detail/reversed_segment.hpp"
+#include "reversed_segment.hpp"
 #include "../detail/infinity.hpp"
 
 namespace skelconv {

@@ -15,7 +15,7 @@
 //     on B's half of the segment, the generated code is given the segment
 //     read from B (ends swapped, weight w(1 − t), prepared once beside the
 //     direct one): the closed forms measure from their first end and lose
-//     ~ε (|AB|/R)² far from it (skelconv/detail/reversed_segment.hpp).
+//     ~ε (|AB|/R)² far from it (src/primitives/reversed_segment.hpp).
 //   - kernels singular at 0 (inverse): P on the segment itself. The integrand r^(-i) is not
 //     integrable there (i ≥ 1), f = +∞. By convention value() returns +inf
 //     and gradient() returns (+inf, +inf, +inf): there is no meaningful

@@ -1,4 +1,4 @@
-// skelconv/detail/reversed_segment.hpp — a segment read from its other end,
+// src/primitives/reversed_segment.hpp — a segment read from its other end,
 // for finite-support kernels evaluated near B.
 //
 // The generated compact closed forms (generated/segment_compact.hpp) measure
