@@ -29,8 +29,8 @@ start=$SECONDS
 stage() { echo "== checks [$((SECONDS - start)) s] $*"; }
 
 scripts/install_dependencies.sh --checks
-stage "building everything and the benchmark programs"
-scripts/build.sh --target all skelconv_bench
+stage "building everything, the benchmark programs and the programs only the check suite runs"
+scripts/build.sh --target all skelconv_bench skelconv_check_programs
 
 labels=long
 if [ "$full" = 1 ]; then
