@@ -77,7 +77,7 @@ namespace {
 }
 
 [[gnu::noinline, gnu::cold]] Vec3 restore_gradient_rare(const Vec3& gradient, int shift, const char* what,
-                                                        const Vec3& p) {
+                                                        const Vec3& p, const Vec3& frame_p) {
   const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
   constexpr double largest_finite = std::numeric_limits<double>::max();
   if (ax <= largest_finite && ay <= largest_finite && az <= largest_finite) {  // false for NaN
@@ -99,7 +99,21 @@ namespace {
   const Vec3 world{times_power_of_two(gradient.x(), shift), times_power_of_two(gradient.y(), shift),
                    times_power_of_two(gradient.z(), shift)};
   const double largest = gradient.cwiseAbs().maxCoeff();
-  if (largest == 0.0) return world;
+  if (largest == 0.0) {
+    // Beyond far_gradient_frame_distance the primitive (whose frame
+    // coordinates stay below ~1e8, file comment of scaled_frame.hpp) is a
+    // speck seen from P, and ∇f points towards it: it is not 0. The closed
+    // forms' intermediate powers of the distance underflow there before ∇f
+    // does (an inverse i = 3 segment at 1e70 lengths: f = 1e-210, ∇f about
+    // 3e-280, computed as 0), so a 0 is refused, never printed.
+    if (frame_p.cwiseAbs().maxCoeff() >= far_gradient_frame_distance) {
+      throw EvaluationError(fmt::format(
+          "the gradient of {} at P = {} underflows to 0 in its closed form, P being {} sizes of the primitive "
+          "from it (a gradient there is not 0): it cannot be returned at that point",
+          what, detail::format_point(p), fmt::format("{:.2g}", frame_p.cwiseAbs().maxCoeff())));
+    }
+    return world;
+  }
   if (!std::isnormal(largest) || !std::isnormal(world.cwiseAbs().maxCoeff())) {
     throw_out_of_range(fmt::format("the gradient of {}", what).c_str(), p, largest, shift);
   }
@@ -125,7 +139,7 @@ Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* 
   const int shift = power * exponent_;
   Vec3 world;
   if (restore_gradient_common(gradient, normal_power_of_two_or_zero(shift), world)) return world;
-  return restore_gradient_rare(gradient, shift, what, p);
+  return restore_gradient_rare(gradient, shift, what, p, point(p));
 }
 
 std::string format_scaled(double mantissa, int power_of_two) {
