@@ -28,6 +28,10 @@ std::string lower(std::string text) {
 }
 
 std::string read_whole_file(const std::filesystem::path& path) {
+  // An ifstream opens a directory, and its first read throws from inside
+  // the stream ("basic_filebuf::underflow"), an internal error.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw InputError("is a directory, not a mesh file", path.string());
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open the mesh file", path.string());
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -208,7 +212,10 @@ PlyHeader parse_ply_header(const std::string& bytes, const std::string& where) {
     } else if (keyword == "element") {
       PlyElement element;
       long long count = -1;
-      if (!(words >> element.name >> count) || count < 0) throw InputError("malformed element line", at);
+      std::string extra;
+      // "element vertex 4e3" would read 4 and leave "e3" unread.
+      if (!(words >> element.name >> count) || count < 0 || words >> extra)
+        throw InputError("malformed element line (expected \"element NAME COUNT\")", at);
       element.count = std::size_t(count);
       header.elements.push_back(element);
     } else if (keyword == "property") {
@@ -458,6 +465,12 @@ TriangleMesh read_off(const std::string& text, std::size_t max_triangles, const 
     add_polygon(mesh, face, max_triangles, words.at());
     words.skip_rest_of_line();
   }
+  // More than the counts declare: a wrong count, whose rest would be
+  // ignored silently (as a PLY body's, read_ply).
+  if (!words.done())
+    throw InputError(fmt::format("\"{}\" after the last face the header declares (more data than its counts)",
+                                 words.word("")),
+                     words.at());
   return mesh;
 }
 
