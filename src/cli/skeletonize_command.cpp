@@ -179,9 +179,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
 
 int run_skeletonize(const SkeletonizeOptions& options) {
   return print_all_or_nothing([&] {
-    if (std::filesystem::path(options.output_path).extension() != ".json")
+    if (!has_extension(options.output_path, ".json"))
       throw InputError("the skeleton file must end in .json", options.output_path);
-    if (options.report_image_path && std::filesystem::path(*options.report_image_path).extension() != ".png")
+    if (options.report_image_path && !has_extension(*options.report_image_path, ".png"))
       throw InputError("the report image must end in .png", *options.report_image_path);
     // The outputs are probed before the work, which can take minutes.
     check_writable(options.output_path);

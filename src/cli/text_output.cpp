@@ -1,6 +1,8 @@
 // Implementation of text_output.hpp.
 #include "text_output.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <fstream>
 
 #include <unistd.h>  // getpid
@@ -57,6 +59,13 @@ void check_writable(const std::filesystem::path& path) {
   std::error_code ignored;
   std::filesystem::remove(probe, ignored);
   if (!writable) throw InputError("cannot write the file", path.string());
+}
+
+bool has_extension(const std::filesystem::path& path, std::string_view extension) {
+  const std::string actual = path.extension().string();
+  return std::equal(actual.begin(), actual.end(), extension.begin(), extension.end(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+  });
 }
 
 }  // namespace skelconv::cli

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -26,5 +27,10 @@ void write_texts_atomically(const std::vector<std::pair<std::string, std::filesy
 /// empty and removed. Run before long work, so that a bad output path is
 /// refused at once rather than after it.
 void check_writable(const std::filesystem::path& path);
+
+/// Whether `path` ends in `extension` (".json", lower case) whatever the
+/// case of its letters: OUT.JSON and out.Json are JSON files too, as the
+/// mesh writer and reader take .PLY and .OBJ (triangle_mesh.cpp).
+bool has_extension(const std::filesystem::path& path, std::string_view extension);
 
 }  // namespace skelconv::cli

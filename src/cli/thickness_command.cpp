@@ -191,7 +191,7 @@ std::string run_scalis(const Skeleton& skeleton, const ThicknessOptions& options
 
 int run_thickness(const ThicknessOptions& options) {
   return print_all_or_nothing([&] {
-    if (std::filesystem::path(options.output_path).extension() != ".json")
+    if (!has_extension(options.output_path, ".json"))
       throw InputError("the skeleton file must end in .json", options.output_path);
     const Skeleton skeleton = load_skeleton_file(options.input_path);
     return is_scalis_graph(skeleton) ? run_scalis(skeleton, options) : run_classical(skeleton, options);

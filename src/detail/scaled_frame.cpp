@@ -63,7 +63,7 @@ namespace {
 // test, out of line: the error messages' formatting stays off the path every
 // evaluation takes.
 [[gnu::noinline, gnu::cold]] double restore_value_rare(double value, int shift, bool may_vanish, const char* what,
-                                                       const Vec3& p) {
+                                                       const Vec3& p, const Vec3& frame_p) {
   if (value == std::numeric_limits<double>::infinity()) return value;
   if (!std::isfinite(value)) {
     throw EvaluationError(fmt::format("{} returned {} at P = {}, where the field is finite: the closed form failed "
@@ -73,11 +73,20 @@ namespace {
   const double world = times_power_of_two(value, shift);
   if (std::isnormal(value) && std::isnormal(world)) return world;
   if (may_vanish && std::isfinite(world)) return world;
+  // A 0 far from the primitive is the closed form's underflow, not the
+  // field's value: a Cauchy i = 4 segment at 1e70 lengths has f = 1e-280.
+  const double distance = frame_p.cwiseAbs().maxCoeff();
+  if (value == 0.0 && distance >= far_frame_distance) {
+    throw EvaluationError(fmt::format("{} at P = {} underflows to 0 in its closed form, P being {:.2g} sizes of the "
+                                      "primitive from it (the field there can still be a normal double): it cannot "
+                                      "be returned at that point",
+                                      what, detail::format_point(p), distance));
+  }
   throw_out_of_range(what, p, value, shift);
 }
 
 [[gnu::noinline, gnu::cold]] Vec3 restore_gradient_rare(const Vec3& gradient, int shift, const char* what,
-                                                        const Vec3& p) {
+                                                        const Vec3& p, const Vec3& frame_p) {
   const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
   constexpr double largest_finite = std::numeric_limits<double>::max();
   if (ax <= largest_finite && ay <= largest_finite && az <= largest_finite) {  // false for NaN
@@ -99,7 +108,21 @@ namespace {
   const Vec3 world{times_power_of_two(gradient.x(), shift), times_power_of_two(gradient.y(), shift),
                    times_power_of_two(gradient.z(), shift)};
   const double largest = gradient.cwiseAbs().maxCoeff();
-  if (largest == 0.0) return world;
+  if (largest == 0.0) {
+    // Beyond far_frame_distance the primitive (whose frame
+    // coordinates stay below ~1e8, file comment of scaled_frame.hpp) is a
+    // speck seen from P, and ∇f points towards it: it is not 0. The closed
+    // forms' intermediate powers of the distance underflow there before ∇f
+    // does (an inverse i = 3 segment at 1e70 lengths: f = 1e-210, ∇f about
+    // 3e-280, computed as 0), so a 0 is refused, never printed.
+    if (frame_p.cwiseAbs().maxCoeff() >= far_frame_distance) {
+      throw EvaluationError(fmt::format(
+          "the gradient of {} at P = {} underflows to 0 in its closed form, P being {:.2g} sizes of the primitive "
+          "from it (a gradient there is not 0): it cannot be returned at that point",
+          what, detail::format_point(p), frame_p.cwiseAbs().maxCoeff()));
+    }
+    return world;
+  }
   if (!std::isnormal(largest) || !std::isnormal(world.cwiseAbs().maxCoeff())) {
     throw_out_of_range(fmt::format("the gradient of {}", what).c_str(), p, largest, shift);
   }
@@ -115,7 +138,7 @@ double ScaledFrame::restore_value(double value, int power, bool may_vanish, cons
   const int shift = power * exponent_;
   double world;
   if (restore_value_common(value, normal_power_of_two_or_zero(shift), world)) return world;
-  return restore_value_rare(value, shift, may_vanish, what, p);
+  return restore_value_rare(value, shift, may_vanish, what, p, point(p));
 }
 
 Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const {
@@ -125,7 +148,7 @@ Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* 
   const int shift = power * exponent_;
   Vec3 world;
   if (restore_gradient_common(gradient, normal_power_of_two_or_zero(shift), world)) return world;
-  return restore_gradient_rare(gradient, shift, what, p);
+  return restore_gradient_rare(gradient, shift, what, p, point(p));
 }
 
 std::string format_scaled(double mantissa, int power_of_two) {

@@ -57,14 +57,17 @@ Interval safe_product(const Interval& w, const Interval& k) {
   constexpr double infinity = std::numeric_limits<double>::infinity();
   if (k.upper() == 0.0 || (w.lower() == 0.0 && w.upper() == 0.0)) return Interval(0.0);
   if (k.upper() < infinity) return w * k;
-  if (k.lower() == infinity) {  // k = +inf exactly: w k is ±inf, or 0 where w = 0
-    const auto sign_infinity = [](double x) { return x > 0.0 ? infinity : x < 0.0 ? -infinity : 0.0; };
-    return Interval(sign_infinity(w.lower()), sign_infinity(w.upper()));
-  }
-  // k = [k0, +inf]: w k ranges over (−inf if w reaches below 0) … (+inf if
-  // w reaches above 0), with the finite ends from k0.
+  // k reaches +inf: the box touches an inverse kernel's skeleton, where the
+  // field evaluates to the +inf marker whatever the weight's sign
+  // (skeleton/blend.hpp, docs/cli.md). The enclosure holds what the field
+  // prints, so hi = +inf even for a negative weight, whose limit near the
+  // skeleton is −inf; k = +inf exactly (a point of the skeleton) is the
+  // marker alone.
+  if (k.lower() == infinity) return Interval(infinity);
+  // k = [k0, +inf]: w k ranges from −inf (if w reaches below 0) or w k0, to
+  // the marker +inf.
   const Interval finite = w * Interval(k.lower());
-  return Interval(w.lower() < 0.0 ? -infinity : finite.lower(), w.upper() > 0.0 ? infinity : finite.upper());
+  return Interval(w.lower() < 0.0 ? -infinity : finite.lower(), infinity);
 }
 
 Interval hull(const Interval& a, const Interval& b) { return boost::numeric::hull(a, b); }

@@ -28,6 +28,10 @@ std::string lower(std::string text) {
 }
 
 std::string read_whole_file(const std::filesystem::path& path) {
+  // An ifstream opens a directory, and its first read throws from inside
+  // the stream ("basic_filebuf::underflow"), an internal error.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw InputError("is a directory, not a mesh file", path.string());
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open the mesh file", path.string());
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -86,25 +90,25 @@ std::size_t ply_type_size(const std::string& type, const std::string& where) {
   throw InputError("unknown PLY property type \"" + type + "\"", where);
 }
 
-/// Reads the PLY scalars of the body, ASCII words or binary values.
+/// Reads the PLY scalars of the body, ASCII words or binary values. ASCII
+/// errors name the line (counted from the file's first), binary ones the
+/// byte offset.
 class PlyBody {
  public:
-  PlyBody(const std::string& bytes, std::size_t start, PlyFormat format, std::string where)
-      : bytes_(bytes), position_(start), format_(format), where_(std::move(where)) {
-    if (format_ == PlyFormat::ascii) words_.str(bytes.substr(start));
-  }
+  PlyBody(const std::string& bytes, std::size_t start, int start_line, PlyFormat format, std::string where)
+      : bytes_(bytes), position_(start), line_(start_line), format_(format), where_(std::move(where)) {}
 
   double next(const std::string& type) {
     if (format_ == PlyFormat::ascii) {
-      std::string word;
-      if (!(words_ >> word)) throw InputError("the PLY body ends early", where_);
+      const std::string word = next_word();
+      if (word.empty()) throw InputError("the PLY body ends early", where_);
       try {
         std::size_t used = 0;
         const double value = std::stod(word, &used);
         if (used == word.size()) return value;
       } catch (const std::exception&) {
       }
-      throw InputError("\"" + word + "\" is not a number in the PLY body", where_);
+      throw InputError("\"" + word + "\" is not a number in the PLY body", at());
     }
     const std::size_t size = ply_type_size(type, where_);
     if (position_ + size > bytes_.size()) throw InputError("the PLY body ends early", where_);
@@ -116,7 +120,39 @@ class PlyBody {
     return decode(raw, type);
   }
 
+  /// Refuses anything after the last element but white space (ASCII): a
+  /// body longer than its header declares was cut short by a wrong count,
+  /// or holds another mesh, and would be read as part of one silently.
+  void expect_end() {
+    if (format_ == PlyFormat::ascii) {
+      const std::string word = next_word();
+      if (!word.empty())
+        throw InputError("\"" + word + "\" after the last element the header declares (more data than its counts)",
+                         at());
+      return;
+    }
+    if (position_ < bytes_.size())
+      throw InputError(fmt::format("{} bytes after the last element the header declares (more data than its counts)",
+                                   bytes_.size() - position_),
+                       where_);
+  }
+
+  /// "FILE: line N", the line of the last word read (ASCII).
+  std::string at() const { return fmt::format("{}: line {}", where_, word_line_); }
+
  private:
+  /// The next white-space separated word of an ASCII body, or "" at its end.
+  std::string next_word() {
+    while (position_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[position_]))) {
+      if (bytes_[position_] == '\n') ++line_;
+      ++position_;
+    }
+    const std::size_t start = position_;
+    while (position_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[position_]))) ++position_;
+    word_line_ = line_;
+    return bytes_.substr(start, position_ - start);
+  }
+
   static double decode(const unsigned char* raw, const std::string& type) {
     const auto get = [raw](auto value) {
       std::memcpy(&value, raw, sizeof value);
@@ -134,15 +170,17 @@ class PlyBody {
 
   const std::string& bytes_;
   std::size_t position_;
+  int line_;           ///< the line at position_ (ASCII)
+  int word_line_ = 0;  ///< the line of the last word read (ASCII)
   PlyFormat format_;
   std::string where_;
-  std::istringstream words_;
 };
 
 struct PlyHeader {
   PlyFormat format = PlyFormat::ascii;
   std::vector<PlyElement> elements;
   std::size_t body_start = 0;
+  int body_line = 0;  ///< the line the body starts on (ASCII)
 };
 
 PlyHeader parse_ply_header(const std::string& bytes, const std::string& where) {
@@ -174,7 +212,10 @@ PlyHeader parse_ply_header(const std::string& bytes, const std::string& where) {
     } else if (keyword == "element") {
       PlyElement element;
       long long count = -1;
-      if (!(words >> element.name >> count) || count < 0) throw InputError("malformed element line", at);
+      std::string extra;
+      // "element vertex 4e3" would read 4 and leave "e3" unread.
+      if (!(words >> element.name >> count) || count < 0 || words >> extra)
+        throw InputError("malformed element line (expected \"element NAME COUNT\")", at);
       element.count = std::size_t(count);
       header.elements.push_back(element);
     } else if (keyword == "property") {
@@ -193,6 +234,7 @@ PlyHeader parse_ply_header(const std::string& bytes, const std::string& where) {
     } else if (keyword == "end_header") {
       if (!have_format) throw InputError("the PLY header has no format line", at);
       header.body_start = position;
+      header.body_line = line_number + 1;
       return header;
     } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
       throw InputError("unknown PLY header keyword \"" + keyword + "\"", at);
@@ -243,8 +285,16 @@ void read_ply_element(const PlyElement& element, PlyBody& body, TriangleMesh& me
         if (!(value >= 0 && value < double(mesh.vertices.size())))
           throw InputError(fmt::format("face {} has vertex index {} outside [0, {})", item, value, mesh.vertices.size()),
                            where);
+        // A float list can hold 2.5: no vertex of its own, not to be
+        // truncated into vertex 2.
+        if (value != std::floor(value))
+          throw InputError(fmt::format("face {} has vertex index {}, not a whole number", item, value), where);
         face.push_back(std::int64_t(value));
       }
+      // As the OBJ and OFF readers: a face of 1 or 2 corners is no
+      // triangle, and dropping it silently could hide a hole.
+      if (face.size() < 3)
+        throw InputError(fmt::format("face {} has {} corners, a face needs at least 3", item, face.size()), where);
       add_polygon(mesh, face, max_triangles, where);
     }
     if (is_vertex) {
@@ -266,7 +316,7 @@ TriangleMesh read_ply(const std::string& bytes, std::size_t max_triangles, const
                        where);
     }
   }
-  PlyBody body(bytes, header.body_start, header.format, where);
+  PlyBody body(bytes, header.body_start, header.body_line, header.format, where);
   TriangleMesh mesh;
   bool vertices_read = false;
   for (const PlyElement& element : header.elements) {
@@ -275,6 +325,7 @@ TriangleMesh read_ply(const std::string& bytes, std::size_t max_triangles, const
     read_ply_element(element, body, mesh, max_triangles, where);
     vertices_read = vertices_read || element.name == "vertex";
   }
+  body.expect_end();
   return mesh;
 }
 
@@ -414,6 +465,12 @@ TriangleMesh read_off(const std::string& text, std::size_t max_triangles, const 
     add_polygon(mesh, face, max_triangles, words.at());
     words.skip_rest_of_line();
   }
+  // More than the counts declare: a wrong count, whose rest would be
+  // ignored silently (as a PLY body's, read_ply).
+  if (!words.done())
+    throw InputError(fmt::format("\"{}\" after the last face the header declares (more data than its counts)",
+                                 words.word("")),
+                     words.at());
   return mesh;
 }
 

@@ -25,6 +25,15 @@ FieldSample PointPrimitive::value_and_gradient(const Vec3& p) const {
     throw EvaluationError(fmt::format("the point field overflowed double precision at P = {}, {} from its centre",
                                       detail::format_point(p), (p - center_).norm()));
   }
+  // Off the centre, inside the support, ∇f = w K'(r) (P − C)/r is not 0
+  // where f is not: a 0 is an underflow of K' (a Cauchy point at r = 1.4e100:
+  // K' about −7e-301, computed through (1 + s r²)^−2 = 0), refused as the
+  // frame of a segment or a polygon refuses it (scaled_frame.hpp).
+  if (p != center_ && result.value != 0.0 && result.gradient == Vec3::Zero()) {
+    throw EvaluationError(fmt::format("the gradient of the point field at P = {}, {} from its centre, underflows to "
+                                      "0 in double precision (f = {}): it cannot be returned at that point",
+                                      detail::format_point(p), (p - center_).norm(), result.value));
+  }
   return result;
 }
 

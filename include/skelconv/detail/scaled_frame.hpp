@@ -44,6 +44,13 @@
 
 namespace skelconv {
 
+/// A frame point farther than this (2^40, about 1e12 sizes of the primitive,
+/// whose own frame coordinates stay below ~1e8) is far from the primitive:
+/// ∇f there is never exactly 0, and a 0 from the closed form (f or ∇f) is
+/// its underflow, reported as such (ScaledFrame::restore_value,
+/// restore_gradient).
+inline constexpr double far_frame_distance = 0x1p40;
+
 /// 2^n when that is a normal double (−1022 ≤ n ≤ 1023), else 0.
 double normal_power_of_two_or_zero(int n);
 
@@ -111,8 +118,10 @@ class ScaledFrame {
   /// weights), where a finite 0 or subnormal value is returned as it is.
   double restore_value(double value, int power, bool may_vanish, const char* what, const Vec3& p) const;
   /// A frame gradient back in the world: g'·2^(power·e) componentwise. The
-  /// largest component must come back a normal double (or all be 0); the
-  /// others may underflow (they are below 2^−1022 of |∇f| relative to it).
+  /// largest component must come back a normal double (or all be 0, but
+  /// not at a P farther than far_frame_distance in the frame: an
+  /// underflow there); the others may underflow (they are below 2^−1022 of
+  /// |∇f| relative to it).
   Vec3 restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const;
 
  private:

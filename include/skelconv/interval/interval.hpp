@@ -77,7 +77,9 @@ Interval squared_distance(const IntervalPoint& p, const IntervalPoint& q);
 Interval interval_sqrt(const Interval& x);
 
 /// w · k for k ⊂ [0, +inf], w finite or not, without forming 0 · inf
-/// (0 · anything is 0: a zero factor contributes nothing).
+/// (0 · anything is 0: a zero factor contributes nothing). Where k reaches
+/// +inf (a box touching an inverse skeleton) the upper end is +inf whatever
+/// w's sign: on the skeleton the field is the +inf marker (docs/bound.md).
 Interval safe_product(const Interval& w, const Interval& k);
 
 /// The smallest interval holding a and b.

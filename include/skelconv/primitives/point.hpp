@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "skelconv/errors.hpp"
 #include "skelconv/geometry.hpp"
@@ -51,7 +52,15 @@ PointFieldSample<T> point_field(const Kernel& kernel, const std::array<T, 3>& ce
       return {weight * kernel.value(r), {T(0), T(0), T(0)}};
     }
   }
-  const T slope = weight * kernel.derivative(r) / r;  // w K'(r) / r
+  const T derivative = weight * kernel.derivative(r);  // w K'(r)
+  const T slope = derivative / r;
+  if constexpr (std::is_floating_point_v<T>) {
+    // Far from the centre w K'(r)/r underflows before w K'(r) (P − C)/r does
+    // (an inverse i = 3 point at r = 1e70: K' = −3e-280, K'/r = −3e-350):
+    // there the unit vector is formed first, so that ∇f keeps its digits.
+    if (derivative != T(0) && std::abs(slope) < std::numeric_limits<T>::min())
+      return {weight * kernel.value(r), {derivative * (d[0] / r), derivative * (d[1] / r), derivative * (d[2] / r)}};
+  }
   return {weight * kernel.value(r), {slope * d[0], slope * d[1], slope * d[2]}};
 }
 
