@@ -140,6 +140,47 @@ TEST(QuadricMedialMesh, TubeBecomesAChainOnItsAxis) {
   EXPECT_GT(high, 1.6);
 }
 
+/// A ring of n balls of radius rho around the z axis at distance R: the
+/// medial axis of a torus (a wall around a bore, cut across), each ball
+/// touching the torus on its outer and inner side and above and below.
+MedialGraph quadric_ring(int n, double R, double rho) {
+  MedialGraph g;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * std::acos(-1.0) * k / n;
+    const Vec3 radial(std::cos(angle), std::sin(angle), 0), c = R * radial;
+    const std::int32_t first = std::int32_t(g.samples.size());
+    for (const Vec3& d : {radial, Vec3(-radial), Vec3(0, 0, 1), Vec3(0, 0, -1)}) g.samples.push_back(c + rho * d);
+    g.vertices.push_back(MedialVertex{c, rho, {first, first + 1, first + 2, first + 3}});
+    add_edge(g, k, (k + 1) % n);
+  }
+  return g;
+}
+
+TEST(QuadricMedialMesh, MergedBallsStayInsideTheShapeWhenItsDepthIsKnown) {
+  // A ring collapsed to its last loop: each remaining sphere sums the
+  // planes of a third of the ring, and a sphere tangent to them all lies
+  // in the bore. With the torus's signed distance, every merged ball
+  // stays inside it.
+  const double R = 0.25, rho = 0.05;
+  const MedialGraph g = quadric_ring(120, R, rho);
+  const auto depth = [&](const Vec3& p) { return rho - std::hypot(std::hypot(p.x(), p.y()) - R, p.z()); };
+  QuadricOptions o;
+  o.budget = 3;
+  const MedialMesh free = quadric_medial_mesh(g, o);
+  ASSERT_EQ(free.spheres.size(), 3u) << "a loop needs three spheres";
+  double worst = 0.0;
+  for (const Vec4& s : free.spheres) worst = std::max(worst, s.w() - depth(s.head<3>()));
+  EXPECT_GT(worst, rho) << "without the depth, a merged ball leaves the torus (else this test shows nothing)";
+  o.depth = depth;
+  const MedialMesh kept = quadric_medial_mesh(g, o);
+  ASSERT_EQ(kept.spheres.size(), 3u);
+  EXPECT_EQ(kept.edges.size(), 3u) << "the loop stays";
+  for (const Vec4& s : kept.spheres) {
+    EXPECT_GT(depth(s.head<3>()), 0.0) << s.transpose();
+    EXPECT_LE(s.w(), depth(s.head<3>()) + 1e-12) << s.transpose();
+  }
+}
+
 TEST(QuadricMedialMesh, SameGraphSameMesh) {
   const MedialGraph g = quadric_sheet(15, 0.05, 0.3, 5, 9);
   QuadricOptions o;

@@ -264,10 +264,13 @@ class Simplifier {
     Vec4 best = mid;
     double best_error = std::numeric_limits<double>::infinity();
     const double smallest = 0.5 * std::min(su.w(), sv.w());
-    if (solved.allFinite() && solved.w() > smallest) best = solved, best_error = q.error(solved);
+    if (solved.allFinite() && solved.w() > smallest && inside_shape(solved, su, sv))
+      best = solved, best_error = q.error(solved);
+    // The ends are balls already; the midpoint is tested as the solution is.
+    const bool mid_allowed = inside_shape(mid, su, sv);
     for (const Vec4& s : {su, sv, mid}) {
       const double e = q.error(s);
-      if (e < best_error) best = s, best_error = e;
+      if (e < best_error && (s != mid || mid_allowed)) best = s, best_error = e;
     }
     Candidate c;
     const double length = o_.length_weight * 0.5 * q.A.trace() * (su.head<3>() - sv.head<3>()).squaredNorm();
@@ -276,6 +279,17 @@ class Simplifier {
     c.stamp_u = k_.stamp[std::size_t(u)], c.stamp_v = k_.stamp[std::size_t(v)];
     c.merged = best;
     queue_.push(c);
+  }
+
+  /// Whether `s`, merged from the balls `a` and `b`, is a ball of the shape
+  /// (QuadricOptions::depth). A ball inside one of the two is (they are
+  /// the shape's, or merged under this test), without a query.
+  bool inside_shape(const Vec4& s, const Vec4& a, const Vec4& b) const {
+    if (!o_.depth) return true;
+    for (const Vec4* ball : {&a, &b})
+      if ((s.head<3>() - ball->head<3>()).norm() + s.w() <= ball->w()) return true;
+    const double depth = o_.depth(s.head<3>());
+    return depth > 0.0 && s.w() <= depth + o_.overhang;
   }
 
   /// v merged into u at the candidate's sphere.

@@ -70,6 +70,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                  .vertices_removed;
   QuadricOptions quadric;
   quadric.budget = m.budget;
+  // The quadric knows planes, not the inside: a sphere merged from a sheet
+  // collapsed round a bore may be tangent to all its planes from inside the
+  // bore (CGAL's joint: 25 of 296 spheres, up to 18% of the diagonal out).
+  const SurfaceQuery shape(surface);
+  quadric.depth = [&shape](const Vec3& c) { return shape.signed_distance(c); };
+  quadric.overhang = m.merged_overhang * diagonal;
   QuadricReport q;
   MedialMesh mesh = quadric_medial_mesh(graph, quadric, &q);
   extend_tube_ends(mesh, m.end_extension);

@@ -7,6 +7,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Side_of_triangle_mesh.h>
 #include <boost/variant/get.hpp>  // CGAL 5's intersection results are boost::variant
 
 #include "skelconv/errors.hpp"
@@ -24,6 +25,9 @@ using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 struct SurfaceQuery::Tree {
   std::vector<Triangle> triangles;  // the tree points into this vector
   AabbTree tree;
+  TriangleMesh surface;  // for the side test, built when first asked
+  std::optional<cgal::SurfaceMesh> mesh;
+  std::optional<CGAL::Side_of_triangle_mesh<cgal::SurfaceMesh, Kernel>> side;
 };
 
 SurfaceQuery::SurfaceQuery(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
@@ -37,6 +41,7 @@ SurfaceQuery::SurfaceQuery(const TriangleMesh& surface) : tree_(std::make_unique
   tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
   tree_->tree.build();
   tree_->tree.accelerate_distance_queries();
+  tree_->surface = surface;
 }
 
 SurfaceQuery::~SurfaceQuery() = default;
@@ -58,6 +63,15 @@ std::optional<double> SurfaceQuery::ray_distance(const Vec3& origin, const Vec3&
 
 double SurfaceQuery::distance(const Vec3& point) const {
   return std::sqrt(CGAL::to_double(tree_->tree.squared_distance(to_point(point))));
+}
+
+double SurfaceQuery::signed_distance(const Vec3& point) const {
+  if (!tree_->side) {
+    tree_->mesh.emplace(cgal::to_surface_mesh(tree_->surface));
+    tree_->side.emplace(*tree_->mesh);
+  }
+  const double d = distance(point);
+  return (*tree_->side)(to_point(point)) == CGAL::ON_UNBOUNDED_SIDE ? -d : d;
 }
 
 }  // namespace skelconv::reconstruct

@@ -19,7 +19,10 @@
 // singular (a tube's planes all contain its axis, so the centre may slide
 // along it) a small pull toward the edge's midpoint decides, and where the
 // solution is not finite or its radius not positive, the better of the two
-// ends and the midpoint is taken.
+// ends and the midpoint is taken. Where the input's signed distance is
+// given, a merged sphere that is not a ball of the shape (its centre
+// outside, or its radius beyond its centre's depth) is refused the same
+// way.
 //
 // Collapses go cheapest first. The link condition (Dey et al. 1999: the
 // common neighbours of u and v are exactly the apexes of the triangles on
@@ -42,6 +45,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 
 #include "skelconv/reconstruct/medial_graph.hpp"
 #include "skelconv/reconstruct/medial_mesh.hpp"
@@ -66,6 +70,15 @@ struct QuadricOptions {
   /// Voronoi faces simplify to strips narrower than the tube, which SCALIS
   /// triangles (normalised for a wide sheet) make too thin.
   double thin_triangle = 0.25;
+  /// The input's signed distance (positive inside), if known. A merged
+  /// sphere must then be a ball of the shape: its centre inside and its
+  /// radius at most the centre's depth plus `overhang` (absolute), or the
+  /// collapse keeps one of its ends instead. The quadric alone does not
+  /// know the inside: where few planes remain (a sheet collapsed round a
+  /// bore), a sphere tangent to all of them lies anywhere, often in the
+  /// bore with a radius several times the wall's.
+  std::function<double(const Vec3&)> depth;
+  double overhang = 0.0;
 };
 
 struct QuadricReport {

@@ -49,6 +49,12 @@ struct MedialOptions {
   /// neighbours' (less bulging where sheets fold or lie close; measured in
   /// docs/reconstruction_medial.md), and fewer primitives reach each point.
   double kernel_sigma = 1.5;
+  /// A sphere the collapses merge must lie inside the input, reaching at
+  /// most this × the diagonal beyond its surface (QuadricOptions::overhang):
+  /// half the samples' spacing (sample_divisions), as far as the Voronoi
+  /// balls through samples themselves may reach past a curved surface
+  /// between them. Not tuned.
+  double merged_overhang = 0.0125;
   /// The medial graph's samples are at most the diagonal / this apart
   /// (surface_samples.hpp; the curve path's 12 leaves a coarse mesh's large
   /// triangles with few samples, and the medial sheets full of holes).

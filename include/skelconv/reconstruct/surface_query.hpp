@@ -26,6 +26,10 @@ class SurfaceQuery {
   std::optional<double> ray_distance(const Vec3& origin, const Vec3& direction) const;
   /// Distance from `point` to the nearest point of the surface.
   double distance(const Vec3& point) const;
+  /// The same distance, negative where `point` is outside the surface
+  /// (which must be closed: CGAL's side-of-triangle-mesh test, built on the
+  /// first call) and positive inside or on it.
+  double signed_distance(const Vec3& point) const;
 
  private:
   struct Tree;
