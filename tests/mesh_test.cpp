@@ -176,6 +176,10 @@ const std::vector<TopologyCase> topology_cases{
     // A SCALIS triangle of varying radius (the certified numerical path,
     // ~0.2 ms per evaluation): coarse, to keep the case under a second.
     {"scalis_triangle", 0.6, {2}, MeshMethod::cgal, 0.6, 0.15, 0.25},
+    // Two Gaussian segments 20 apart, blobs ~0.63 across: the box must not
+    // shrink between its face samples onto them. The grid needs a voxel
+    // below the blobs' size (the default, diagonal / 50, is 0.44).
+    {"gaussians_far_apart", 0.5, {2, 2}, MeshMethod::cgal, 0, 0, 0.1},
 };
 
 /// The same cases meshed by the grid method, except `blobs`: its small blob
