@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -67,6 +68,15 @@ void check_options(const ImplicitField& field, const MeshOptions& options) {
     throw InputError(fmt::format("the surface f = {} is unbounded: the field tends to {} far from the skeleton, "
                                  "so the iso must be above {}",
                                  options.iso, field.far_field, field.far_field),
+                     "--iso");
+  }
+  // Below the smallest normal double, f − iso and the gradients near the
+  // surface are subnormal or zero: the seeds' bisection, the grid's signs and
+  // the projection's Newton steps have no digits left to work with.
+  if (std::abs(options.iso) < std::numeric_limits<double>::min()) {
+    throw InputError(fmt::format("must be at least {} (the smallest normal double; the field near a smaller "
+                                 "level has no precision left), got {}",
+                                 std::numeric_limits<double>::min(), options.iso),
                      "--iso");
   }
   for (const auto& [value, name] : {std::pair{options.size, "--size"}, std::pair{options.distance, "--distance"}}) {
@@ -172,6 +182,15 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
 
   MeshReport run;
   run.box = bounding_region(metered, iso);
+  // A facet or voxel larger than the box holding the whole surface means
+  // nothing more than one of the box's size, and the projection, which looks
+  // for the surface within one facet size, would search far outside it.
+  if (options.size && !(*options.size <= run.box.diagonal())) {
+    throw InputError(fmt::format("must be at most {:.6g}, the diagonal of the box that holds the whole surface "
+                                 "(default: a fiftieth of it), got {:g}",
+                                 run.box.diagonal(), *options.size),
+                     "--size");
+  }
   run.size = options.size.value_or(run.box.diagonal() / 50);
   run.distance = options.distance.value_or(run.size / 10);
   check_output_size(run.box, run.size, run.distance, options);
@@ -219,7 +238,18 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                             });
   meter.report_progress(false);
   run.refine_seconds = seconds_since(refine_start);
-  if (mesh.triangles.empty()) throw EvaluationError("the mesher produced no triangles");
+  if (mesh.triangles.empty() && options.method == MeshMethod::grid) {
+    // The seeds prove a surface is there, but no grid node lies inside it:
+    // every part of it is thinner than the spacing.
+    throw InputError(fmt::format("no grid node of spacing {:g} lies inside the surface ({} surface points were "
+                                 "found): it is thinner than the spacing; choose a smaller --size (or "
+                                 "--method cgal)",
+                                 run.size, seeds.size()),
+                     "--size");
+  }
+  if (mesh.triangles.empty()) {
+    throw EvaluationError(fmt::format("the mesher produced no triangles from {} surface seeds", seeds.size()));
+  }
 
   const double diagonal = bounding_box(mesh.vertices).diagonal();
   // Half the required tolerance: the bounding box moves slightly with the
