@@ -165,6 +165,29 @@ std::function<int(const Eigen::AlignedBox3d&)> level_sign(const ImplicitField& f
   };
 }
 
+/// How far, in voxels, a grid node on an inverse primitive's skeleton looks
+/// for the field's side (see grid_level): far below what the grid resolves.
+constexpr double skeleton_node_nudge = 1e-3;
+
+/// The grid method's level iso − f. f = +inf marks a point on an inverse
+/// primitive's skeleton whatever the primitive's weight (docs/field.md), so
+/// a node there would count as inside even on a carving (negative-weight)
+/// primitive, where f tends to −inf: such a node takes the level of a point
+/// `skeleton_node_nudge` voxels away instead, which is on the side the
+/// field tends to (two fixed directions, in case the skeleton runs along
+/// the first).
+std::function<double(const Vec3&)> grid_level(const ImplicitField& field, double iso, double voxel) {
+  return [&field, iso, voxel](const Vec3& p) {
+    const double f = field.value(p);
+    if (!(f == std::numeric_limits<double>::infinity() && field.infinite_on_skeleton)) return iso - f;
+    for (const Vec3& d : {Vec3(0.36, 0.48, 0.8), Vec3(-0.8, 0.36, 0.48)}) {
+      const double near = field.value(p + skeleton_node_nudge * voxel * d);
+      if (std::isfinite(near)) return iso - near;
+    }
+    return iso - f;
+  };
+}
+
 }  // namespace
 
 double estimate_triangles(const Box3& box, double size) {
@@ -215,7 +238,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   meter.report_progress(true);
   const auto level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); };
   TriangleMesh mesh = options.method == MeshMethod::grid
-                          ? detail::grid_surface_mesh({.level = level,
+                          ? detail::grid_surface_mesh({.level = grid_level(metered, iso, run.size),
                                                        .box = run.box,
                                                        .voxel = run.size,
                                                        .support_boxes = field.support_boxes ? &*field.support_boxes
