@@ -27,6 +27,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/implicit_field.hpp"
+#include "skelconv/mesh/mesh_topology.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
 #include "skelconv/mesh/surface_projection.hpp"
 #include "skelconv/mesh/surface_seeds.hpp"
@@ -176,6 +177,10 @@ const std::vector<TopologyCase> topology_cases{
     // A SCALIS triangle of varying radius (the certified numerical path,
     // ~0.2 ms per evaluation): coarse, to keep the case under a second.
     {"scalis_triangle", 0.6, {2}, MeshMethod::cgal, 0.6, 0.15, 0.25},
+    // Two Gaussian segments 20 apart, blobs ~0.63 across: the box must not
+    // shrink between its face samples onto them. The grid needs a voxel
+    // below the blobs' size (the default, diagonal / 50, is 0.44).
+    {"gaussians_far_apart", 0.5, {2, 2}, MeshMethod::cgal, 0, 0, 0.1},
 };
 
 /// The same cases meshed by the grid method, except `blobs`: its small blob
@@ -379,6 +384,26 @@ TEST(MeshGrid, ASolidInteriorFilledByTilesGivesTheDenseSamplingsMesh) {
   ASSERT_GT(seeded.triangles.size(), 5000u);
   EXPECT_EQ(seeded.vertices, reference.vertices);
   EXPECT_EQ(seeded.triangles, reference.triangles);
+}
+
+// A Cauchy capsule carved by a negative-weight inverse segment (a cavity
+// about 0.08 in radius) whose skeleton, on the x axis, holds grid nodes at
+// these spacings. f = +inf marks an inverse primitive's skeleton whatever
+// its weight (docs/field.md); the grid must not take those nodes as inside
+// the surface, which made spurious pieces: 3, 2 (χ 2), 6 and 1 components at
+// these four spacings. The surface is the capsule and the cavity: two
+// spheres. (Not in the topology table: the cavity's boundary encloses a
+// negative volume.)
+TEST(MeshGrid, NodesOnACarvingInverseSkeletonAreOutside) {
+  const Skeleton skeleton = load("carved_segment");
+  for (const double size : {0.05, 0.0625, 0.08, 0.1}) {
+    MeshOptions options = options_at(0.5, size, 0);
+    options.method = MeshMethod::grid;
+    const MeshTopology topology = mesh_topology(mesh_iso_surface(skeleton_field(skeleton), options));
+    EXPECT_EQ(topology.components, 2u) << "size " << size;
+    EXPECT_EQ(topology.euler_characteristic, 4) << "size " << size;
+    EXPECT_TRUE(topology.closed) << "size " << size;
+  }
 }
 
 TEST(MeshBadInput, NoSurfaceUnboundedAndBadSizes) {

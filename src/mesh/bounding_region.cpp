@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -16,8 +18,31 @@ Box3 widened(const Box3& box, double margin) {
   return {box.lo - m, box.hi + m};
 }
 
-/// True when f < iso at every sample of the six faces of `box`.
-bool faces_below_iso(const ImplicitField& field, double iso, const Box3& box, int n) {
+/// A cube of the skeleton-point thinning, by its floored coordinates (kept
+/// as doubles: far from the box corner they exceed a long long).
+using SkeletonCube = std::tuple<double, double, double>;
+
+/// True when f < iso at every sample of the six faces of `box`, and at the
+/// points of the faces nearest the skeleton points (one per `cell`-sized
+/// cube of them). The n × n grid alone misses a small component far from
+/// the others: its bump of {f > iso} through a face can be narrower than
+/// the grid's spacing, which grows with the skeleton's extent while the
+/// bump's width is the margin. Every kernel decays away from its skeleton,
+/// so that bump is largest where the face is nearest the skeleton.
+bool faces_below_iso(const ImplicitField& field, double iso, const Box3& box, int n, double cell) {
+  std::set<SkeletonCube> used;
+  for (const Vec3& p : field.skeleton_points) {
+    const Vec3 c = ((p - box.lo) / cell).array().floor();
+    if (!used.insert({c.x(), c.y(), c.z()}).second) continue;
+    const Vec3 inside = p.cwiseMax(box.lo).cwiseMin(box.hi);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const double side : {box.lo[axis], box.hi[axis]}) {
+        Vec3 q = inside;
+        q[axis] = side;
+        if (!(field.value(q) < iso)) return false;
+      }
+    }
+  }
   const Vec3 extent = box.hi - box.lo;
   for (int axis = 0; axis < 3; ++axis) {
     const int u = (axis + 1) % 3;
@@ -53,7 +78,7 @@ Box3 bounding_region(const ImplicitField& field, double iso, const BoundingRegio
   const double diagonal = skeleton.diagonal();
   double margin = diagonal > 0 ? diagonal / 4 : 1.0;
   const auto passes = [&](double m) {
-    return faces_below_iso(field, iso, widened(skeleton, m), options.face_samples);
+    return faces_below_iso(field, iso, widened(skeleton, m), options.face_samples, m);
   };
   int rescalings = 0;
   if (passes(margin)) {

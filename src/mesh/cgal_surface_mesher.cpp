@@ -1,6 +1,7 @@
 // Implementation of cgal_surface_mesher.hpp (CGAL Mesh_3, CGAL 5.5 API).
 #include "cgal_surface_mesher.hpp"
 
+#include <CGAL/assertions_behaviour.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -58,6 +59,24 @@ TriangleMesh to_triangle_mesh(const CGAL::Surface_mesh<Point>& surface) {
   return mesh;
 }
 
+void ignore_warning(const char*, const char*, const char*, int, const char*) {}
+
+/// While alive, CGAL warnings are not printed. The one refine_mesh_3 can
+/// give (Mesher_3.h, unconditional: "The mesh refinement process can't
+/// start", when no facet of the seeds' triangulation meets the surface) is
+/// eight lines on stderr, where every message of the command is one line;
+/// the refinement then returns no facets, which the caller reports itself.
+class WarningsSilenced {
+ public:
+  WarningsSilenced() : previous_(CGAL::set_warning_handler(ignore_warning)) {}
+  ~WarningsSilenced() { CGAL::set_warning_handler(previous_); }
+  WarningsSilenced(const WarningsSilenced&) = delete;
+  WarningsSilenced& operator=(const WarningsSilenced&) = delete;
+
+ private:
+  CGAL::Failure_function previous_;
+};
+
 }  // namespace
 
 TriangleMesh cgal_surface_mesh(const CgalSurfaceRequest& request) {
@@ -75,7 +94,10 @@ TriangleMesh cgal_surface_mesh(const CgalSurfaceRequest& request) {
 
   Complex complex;
   insert_seeds(complex, domain, request.seeds);
-  CGAL::refine_mesh_3(complex, domain, criteria, params::no_perturb(), params::no_exude(), params::manifold());
+  {
+    const WarningsSilenced silenced;
+    CGAL::refine_mesh_3(complex, domain, criteria, params::no_perturb(), params::no_exude(), params::manifold());
+  }
 
   if (complex.number_of_facets_in_complex() == 0) return {};
   CGAL::Surface_mesh<Point> surface;

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -67,6 +68,15 @@ void check_options(const ImplicitField& field, const MeshOptions& options) {
     throw InputError(fmt::format("the surface f = {} is unbounded: the field tends to {} far from the skeleton, "
                                  "so the iso must be above {}",
                                  options.iso, field.far_field, field.far_field),
+                     "--iso");
+  }
+  // Below the smallest normal double, f − iso and the gradients near the
+  // surface are subnormal or zero: the seeds' bisection, the grid's signs and
+  // the projection's Newton steps have no digits left to work with.
+  if (std::abs(options.iso) < std::numeric_limits<double>::min()) {
+    throw InputError(fmt::format("must be at least {} (the smallest normal double; the field near a smaller "
+                                 "level has no precision left), got {}",
+                                 std::numeric_limits<double>::min(), options.iso),
                      "--iso");
   }
   for (const auto& [value, name] : {std::pair{options.size, "--size"}, std::pair{options.distance, "--distance"}}) {
@@ -155,6 +165,29 @@ std::function<int(const Eigen::AlignedBox3d&)> level_sign(const ImplicitField& f
   };
 }
 
+/// How far, in voxels, a grid node on an inverse primitive's skeleton looks
+/// for the field's side (see grid_level): far below what the grid resolves.
+constexpr double skeleton_node_nudge = 1e-3;
+
+/// The grid method's level iso − f. f = +inf marks a point on an inverse
+/// primitive's skeleton whatever the primitive's weight (docs/field.md), so
+/// a node there would count as inside even on a carving (negative-weight)
+/// primitive, where f tends to −inf: such a node takes the level of a point
+/// `skeleton_node_nudge` voxels away instead, which is on the side the
+/// field tends to (two fixed directions, in case the skeleton runs along
+/// the first).
+std::function<double(const Vec3&)> grid_level(const ImplicitField& field, double iso, double voxel) {
+  return [&field, iso, voxel](const Vec3& p) {
+    const double f = field.value(p);
+    if (!(f == std::numeric_limits<double>::infinity() && field.infinite_on_skeleton)) return iso - f;
+    for (const Vec3& d : {Vec3(0.36, 0.48, 0.8), Vec3(-0.8, 0.36, 0.48)}) {
+      const double near = field.value(p + skeleton_node_nudge * voxel * d);
+      if (std::isfinite(near)) return iso - near;
+    }
+    return iso - f;
+  };
+}
+
 }  // namespace
 
 double estimate_triangles(const Box3& box, double size) {
@@ -172,6 +205,15 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
 
   MeshReport run;
   run.box = bounding_region(metered, iso);
+  // A facet or voxel larger than the box holding the whole surface means
+  // nothing more than one of the box's size, and the projection, which looks
+  // for the surface within one facet size, would search far outside it.
+  if (options.size && !(*options.size <= run.box.diagonal())) {
+    throw InputError(fmt::format("must be at most {:.6g}, the diagonal of the box that holds the whole surface "
+                                 "(default: a fiftieth of it), got {:g}",
+                                 run.box.diagonal(), *options.size),
+                     "--size");
+  }
   run.size = options.size.value_or(run.box.diagonal() / 50);
   run.distance = options.distance.value_or(run.size / 10);
   check_output_size(run.box, run.size, run.distance, options);
@@ -196,7 +238,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   meter.report_progress(true);
   const auto level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); };
   TriangleMesh mesh = options.method == MeshMethod::grid
-                          ? detail::grid_surface_mesh({.level = level,
+                          ? detail::grid_surface_mesh({.level = grid_level(metered, iso, run.size),
                                                        .box = run.box,
                                                        .voxel = run.size,
                                                        .support_boxes = field.support_boxes ? &*field.support_boxes
@@ -219,7 +261,18 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                             });
   meter.report_progress(false);
   run.refine_seconds = seconds_since(refine_start);
-  if (mesh.triangles.empty()) throw EvaluationError("the mesher produced no triangles");
+  if (mesh.triangles.empty() && options.method == MeshMethod::grid) {
+    // The seeds prove a surface is there, but no grid node lies inside it:
+    // every part of it is thinner than the spacing.
+    throw InputError(fmt::format("no grid node of spacing {:g} lies inside the surface ({} surface points were "
+                                 "found): it is thinner than the spacing; choose a smaller --size (or "
+                                 "--method cgal)",
+                                 run.size, seeds.size()),
+                     "--size");
+  }
+  if (mesh.triangles.empty()) {
+    throw EvaluationError(fmt::format("the mesher produced no triangles from {} surface seeds", seeds.size()));
+  }
 
   const double diagonal = bounding_box(mesh.vertices).diagonal();
   // Half the required tolerance: the bounding box moves slightly with the

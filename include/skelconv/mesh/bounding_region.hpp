@@ -8,7 +8,9 @@
 // of the six faces and doubled while not, and the smallest passing margin is
 // then doubled once more, so that the faces stay about one surface thickness
 // away from the surface (a bump of the surface narrower than the sample
-// spacing would otherwise slip between samples). docs/mesh.md discusses it.
+// spacing would otherwise slip between samples). The faces are also sampled
+// at their points nearest the skeleton points, where a small component far
+// from the others bulges through them. docs/mesh.md discusses it.
 #pragma once
 
 #include "skelconv/geometry.hpp"
