@@ -227,6 +227,12 @@ TEST(SkeletonBatch, ReportsTheLowestFailingPoint) {
     ASSERT_TRUE(result.failure);
     EXPECT_EQ(result.failure->index, 37u) << threads << " threads";
     EXPECT_THROW(std::rethrow_exception(result.failure->error), InputError);
+    // One sample per point whatever failed, and those before the failure
+    // are the points' own (one thread constructs them in order).
+    ASSERT_EQ(result.samples.size(), points.size()) << threads << " threads";
+    for (std::size_t k = 0; k < result.failure->index; ++k) {
+      ASSERT_TRUE(same_bits(result.samples[k], skeleton.value_and_gradient(points[k]))) << k;
+    }
   }
 }
 

@@ -169,7 +169,6 @@ class Skeleton {
 
   std::string child_location(NodeId parent) const;
   void changed();
-  const detail::SkeletonIndex* index_for(Acceleration acceleration) const;
   FieldSample evaluate(const Vec3& p, Need need, Acceleration acceleration, double tolerance) const;
   FieldSample evaluate_primitive_list(const Vec3& p, Need need) const;
   FieldSample evaluate_child(const Child& child, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
