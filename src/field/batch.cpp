@@ -22,9 +22,6 @@ unsigned default_thread_count() { return std::max(1u, std::thread::hardware_conc
 
 namespace {
 
-/// Runs evaluate_point(k) for k in [0, count) on the threads of `options`,
-/// in blocks (batch.hpp, "Determinism" and "Errors"); returns the failure at
-/// the lowest index.
 /// The threads run_blocks starts for `count` points: never more than blocks.
 unsigned thread_count(std::size_t count, const BatchOptions& options) {
   const std::size_t block = std::max<std::size_t>(1, options.block_size);
@@ -33,6 +30,9 @@ unsigned thread_count(std::size_t count, const BatchOptions& options) {
                                         std::max<std::size_t>(1, blocks)));
 }
 
+/// Runs evaluate_point(k) for k in [0, count) on the threads of `options`,
+/// in blocks (batch.hpp, "Determinism" and "Errors"); returns the failure at
+/// the lowest index.
 template <class EvaluatePoint>
 std::optional<BatchFailure> run_blocks(std::size_t count, const BatchOptions& options, EvaluatePoint evaluate_point) {
   const std::size_t block = std::max<std::size_t>(1, options.block_size);
