@@ -348,6 +348,31 @@ std::int64_t obj_index(const std::string& corner, std::size_t vertex_count, cons
   return resolved;
 }
 
+/// OBJ statements that say nothing about the surface's shape: normals,
+/// texture and parameter-space vertices, grouping, smoothing, materials and
+/// display attributes. Their lines are skipped.
+bool obj_ignored_statement(const std::string& keyword) {
+  static constexpr const char* ignored[] = {"vn",     "vt",       "vp",       "g",          "o",          "s",
+                                            "mg",     "usemtl",   "mtllib",   "usemap",     "maplib",     "lod",
+                                            "bevel",  "c_interp", "d_interp", "shadow_obj", "trace_obj", "ctech",
+                                            "stech"};
+  return std::find(std::begin(ignored), std::end(ignored), keyword) != std::end(ignored);
+}
+
+/// OBJ statements of geometry other than polygonal faces: points, lines and
+/// free-form curves and surfaces. Skipping them would drop part of what the
+/// file describes without a word, so they are refused.
+bool obj_unsupported_geometry(const std::string& keyword) {
+  static constexpr const char* geometry[] = {"p",    "l",   "cstype", "deg",  "bmat", "step", "curv", "curv2",
+                                             "surf", "parm", "trim",  "hole", "scrv", "sp",   "end",  "con"};
+  return std::find(std::begin(geometry), std::end(geometry), keyword) != std::end(geometry);
+}
+
+/// OBJ: "v x y z" (then optionally w, or an r g b colour, as some exporters
+/// write) and "f i j k ..." lines, `#` comments (also at the end of a line),
+/// the statements of obj_ignored_statement skipped. Anything else is refused
+/// at its line: a binary file renamed .obj, a typo ("vv"), or geometry this
+/// reader does not take would otherwise be read as a smaller mesh silently.
 TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const std::string& where) {
   TriangleMesh mesh;
   std::istringstream lines(text);
@@ -355,7 +380,7 @@ TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const 
   std::vector<std::int64_t> face;
   for (int line_number = 1; std::getline(lines, line); ++line_number) {
     const std::string at = fmt::format("{}: line {}", where, line_number);
-    std::istringstream words(line);
+    std::istringstream words(line.substr(0, line.find('#')));
     std::string keyword;
     words >> keyword;
     if (keyword == "v") {
@@ -363,12 +388,28 @@ TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const 
       std::string word[3];
       if (!(words >> word[0] >> word[1] >> word[2])) throw InputError("a vertex needs x y z", at);
       for (int k = 0; k < 3; ++k) point[k] = finite_number(word[k], at);
+      int extra = 0;
+      for (std::string rest; words >> rest; ++extra) finite_number(rest, at);
+      if (extra != 0 && extra != 1 && extra != 3 && extra != 4)
+        throw InputError(fmt::format("a vertex has {} numbers: expected x y z, optionally followed by w or by a "
+                                     "colour r g b",
+                                     3 + extra),
+                         at);
       mesh.vertices.push_back(point);
     } else if (keyword == "f") {
       face.clear();
       for (std::string corner; words >> corner;) face.push_back(obj_index(corner, mesh.vertices.size(), at));
       if (face.size() < 3) throw InputError("a face needs at least 3 corners", at);
       add_polygon(mesh, face, max_triangles, at);
+    } else if (obj_unsupported_geometry(keyword)) {
+      throw InputError("\"" + keyword + "\" (point, line or free-form geometry) is not supported: the mesh must be "
+                       "made of polygonal faces (\"f\")",
+                       at);
+    } else if (!keyword.empty() && !obj_ignored_statement(keyword)) {
+      throw InputError(fmt::format("unknown OBJ statement \"{}\" (expected v, f, a comment, or one of vn, vt, "
+                                   "vp, g, o, s, usemtl, mtllib)",
+                                   keyword.size() > 40 ? keyword.substr(0, 40) + "..." : keyword),
+                       at);
     }
   }
   return mesh;
