@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -90,6 +91,22 @@ std::size_t ply_type_size(const std::string& type, const std::string& where) {
   throw InputError("unknown PLY property type \"" + type + "\"", where);
 }
 
+/// The values a PLY integer type holds.
+struct IntegerRange {
+  std::int64_t lo, hi;
+};
+
+/// The range of an integer PLY type, or nothing for float and double.
+std::optional<IntegerRange> ply_integer_range(const std::string& type) {
+  if (type == "char" || type == "int8") return IntegerRange{INT8_MIN, INT8_MAX};
+  if (type == "uchar" || type == "uint8") return IntegerRange{0, UINT8_MAX};
+  if (type == "short" || type == "int16") return IntegerRange{INT16_MIN, INT16_MAX};
+  if (type == "ushort" || type == "uint16") return IntegerRange{0, UINT16_MAX};
+  if (type == "int" || type == "int32") return IntegerRange{INT32_MIN, INT32_MAX};
+  if (type == "uint" || type == "uint32") return IntegerRange{0, UINT32_MAX};
+  return std::nullopt;
+}
+
 /// Reads the PLY scalars of the body, ASCII words or binary values. ASCII
 /// errors name the line (counted from the file's first), binary ones the
 /// byte offset.
@@ -102,6 +119,7 @@ class PlyBody {
     if (format_ == PlyFormat::ascii) {
       const std::string word = next_word();
       if (word.empty()) throw InputError("the PLY body ends early", where_);
+      if (const std::optional<IntegerRange> range = ply_integer_range(type)) return integer(word, type, *range);
       try {
         std::size_t used = 0;
         const double value = std::stod(word, &used);
@@ -151,6 +169,25 @@ class PlyBody {
     while (position_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[position_]))) ++position_;
     word_line_ = line_;
     return bytes_.substr(start, position_ - start);
+  }
+
+  /// An ASCII word of an integer property: whole-number text within the
+  /// declared type's range. "2.5" or "1e3" for an int, or 300 for a uchar,
+  /// would otherwise be read as a different number than the file's writer
+  /// could have stored (a binary file of that header cannot hold it).
+  double integer(const std::string& word, const std::string& type, const IntegerRange& range) const {
+    std::size_t digits = word[0] == '+' || word[0] == '-' ? 1 : 0;
+    const bool whole = digits < word.size() && std::all_of(word.begin() + std::ptrdiff_t(digits), word.end(),
+                                                           [](unsigned char c) { return std::isdigit(c) != 0; });
+    if (!whole)
+      throw InputError(fmt::format("\"{}\" is not a whole number, but the property's type is {}", word, type), at());
+    // Past 19 digits strtold still orders the value right against the range.
+    const long double value = std::strtold(word.c_str(), nullptr);
+    if (value < static_cast<long double>(range.lo) || value > static_cast<long double>(range.hi))
+      throw InputError(fmt::format("{} is outside the range of the property's type {} ([{}, {}])", word, type,
+                                   range.lo, range.hi),
+                       at());
+    return static_cast<double>(value);
   }
 
   static double decode(const unsigned char* raw, const std::string& type) {

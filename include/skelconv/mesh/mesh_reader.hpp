@@ -3,7 +3,8 @@
 //
 //   * PLY: "ascii 1.0", "binary_little_endian 1.0" or "binary_big_endian
 //     1.0"; the vertex element's x, y, z of any scalar type (char … double,
-//     also int8 … float64); faces from the list property "vertex_indices" (or
+//     also int8 … float64; in ASCII an integer type's words must be whole
+//     numbers within its range); faces from the list property "vertex_indices" (or
 //     "vertex_index"), polygons fan-triangulated; every other element and
 //     property is read past and ignored (normals are not read: the consumer
 //     recomputes what it needs);
