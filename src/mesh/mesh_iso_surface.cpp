@@ -5,6 +5,7 @@
 #include <array>
 #include <chrono>
 #include <map>
+#include <string>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -103,24 +104,31 @@ double estimate_triangles_for_distance(const Box3& box, double distance) {
   return box_area / (box.diagonal() * distance);
 }
 
+/// "about N" for a triangle estimate; an estimate that overflowed (a size of
+/// 1e-300: area / h² is inf) is "more than 1e+308", not "about inf".
+std::string about_count(double estimate) {
+  if (std::isfinite(estimate)) return fmt::format("about {:.2g}", estimate);
+  return fmt::format("more than {:.2g}", std::numeric_limits<double>::max());
+}
+
 /// Refuses a facet size, or for CGAL a facet distance, whose mesh would
 /// exceed options.max_triangles.
 void check_output_size(const Box3& box, double size, double distance, const MeshOptions& options) {
   const double estimate = estimate_triangles(box, size);
   if (!(estimate <= double(options.max_triangles))) {
-    throw InputError(fmt::format("a facet size of {:g} in a box of diagonal {:g} makes about {:.2g} triangles, "
+    throw InputError(fmt::format("a facet size of {:g} in a box of diagonal {:g} makes {} triangles, "
                                  "more than the limit {} (--max-triangles): choose a larger --size, or raise "
                                  "--max-triangles if the memory and time are there",
-                                 size, box.diagonal(), estimate, options.max_triangles),
+                                 size, box.diagonal(), about_count(estimate), options.max_triangles),
                      "--size");
   }
   if (options.method != MeshMethod::cgal) return;  // the grid has no facet distance
   const double by_distance = estimate_triangles_for_distance(box, distance);
   if (!(by_distance <= double(options.max_triangles))) {
-    throw InputError(fmt::format("a facet distance of {:g} in a box of diagonal {:g} makes about {:.2g} "
+    throw InputError(fmt::format("a facet distance of {:g} in a box of diagonal {:g} makes {} "
                                  "triangles, more than the limit {} (--max-triangles): choose a larger --distance, "
                                  "or raise --max-triangles if the memory and time are there",
-                                 distance, box.diagonal(), by_distance, options.max_triangles),
+                                 distance, box.diagonal(), about_count(by_distance), options.max_triangles),
                      "--distance");
   }
 }
