@@ -198,9 +198,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                                   "reading it: the work grows with the number of samples",
                                   options.max_triangles))
       ->check(count_option());
-  command->add_flag("--no-repair", options.no_repair,
-                    "Refuse a mesh whose triangles cross each other, instead of replacing it by the boolean union "
-                    "of its overlapping parts");
+  command->add_flag("--repair", options.repair,
+                    "A mesh whose triangles cross each other is replaced by the boolean union of its overlapping "
+                    "parts (or, where that fails, remeshed around the crossings) instead of refused");
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
@@ -237,14 +237,14 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     const auto repair_start = std::chrono::steady_clock::now();
     try {
       reconstruct::check_mesh_size(input, options.max_triangles);
-      if (options.no_repair) {
+      if (options.repair) {
+        repair = reconstruct::check_closed_mesh_joining_overlaps(input);
+      } else {
         reconstruct::check_closed_mesh(input, false);
         if (const auto found = reconstruct::find_self_intersections(input); found.pairs > 0)
           throw InputError(reconstruct::self_intersection_problem(found) +
-                           "; overlapping parts must be joined by a boolean union first (without --no-repair, "
-                           "skeletonize joins them itself)");
-      } else {
-        repair = reconstruct::check_closed_mesh_joining_overlaps(input);
+                           "; overlapping parts must be joined by a boolean union first (or pass --repair to let "
+                           "skeletonize join them)");
       }
     } catch (const InputError& error) {
       throw error.inside(options.input_path);
@@ -257,14 +257,13 @@ int run_skeletonize(const SkeletonizeOptions& options) {
                                      : std::string()));
       if (repair.method == reconstruct::CrossingRepair::boolean_union)
         ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): joined the overlapping parts "
-                                "(boolean union), +{}/-{} triangles, {} in all ({:.3g} s; --no-repair refuses "
-                                "such a mesh instead)",
+                                "(boolean union), +{}/-{} triangles, {} in all ({:.3g} s, --repair)",
                                 repair.crossing_pairs, repair.triangles_added, repair.triangles_removed,
                                 input.triangles.size(), repair_seconds));
       else if (repair.method == reconstruct::CrossingRepair::local_remesh)
         ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): the union of its overlapping parts "
                                 "failed ({}); remeshed around the crossings instead, +{}/-{} triangles, {} in all "
-                                "({:.3g} s; --no-repair refuses such a mesh instead)",
+                                "({:.3g} s, --repair)",
                                 repair.crossing_pairs, repair.union_failure, repair.triangles_added,
                                 repair.triangles_removed,                                 input.triangles.size(), repair_seconds));
     }

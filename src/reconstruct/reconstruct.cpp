@@ -251,7 +251,7 @@ void curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
   const double ball_error = first_order_rms(parse_skeleton_json(skeleton_file_text(ball, o)), points, diagonal);
   // A least-squares sphere wider than the whole surface is no ball of it:
   // on a long, flat part Gauss–Newton drifts towards a plane (CGAL's camel:
-  // a radius of 2,500 diagonals, closer than its branches by the
+  // a radius of about 1,400 diagonals, closer than its branches by the
   // first-order distance, and a ball the report could not mesh).
   const bool balls_fit = std::all_of(ball.balls.begin(), ball.balls.end(), [diagonal](const Vec4& b) {
     return b.w() <= diagonal;
