@@ -82,27 +82,13 @@ std::string stage_report(const reconstruct::Stage& s, const TriangleMesh& input,
                             m.components, m.seconds);
 }
 
-/// `text` as a JSON string: quotes, backslashes and control characters
-/// escaped (a CGAL exception's text is not ours).
-std::string json_string(std::string_view text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", int(c));
-    else out += c;
-  }
-  return out + "\"";
-}
-
-/// The report's "input_repair": null, or what was done to a mesh whose
+/// The report's "input_repair": null, or what --repair did to a mesh whose
 /// triangles cross (reconstruct::OverlapRepair).
 std::string repair_json(const reconstruct::OverlapRepair& repair, double seconds) {
-  if (repair.method == reconstruct::CrossingRepair::none) return "null";
-  const bool local = repair.method == reconstruct::CrossingRepair::local_remesh;
-  return fmt::format("{{\"problem\": \"self_intersection\", \"crossing_pairs\": {}, \"action\": \"{}\", "
-                     "\"triangles_removed\": {}, \"triangles_added\": {}, \"union_failure\": {}, \"seconds\": {:.3g}}}",
-                     repair.crossing_pairs, local ? "local_remesh" : "boolean_union", repair.triangles_removed,
-                     repair.triangles_added, local ? json_string(repair.union_failure) : "null", seconds);
+  if (repair.crossing_pairs == 0) return "null";
+  return fmt::format("{{\"problem\": \"self_intersection\", \"crossing_pairs\": {}, \"action\": \"boolean_union\", "
+                     "\"triangles_removed\": {}, \"triangles_added\": {}, \"seconds\": {:.3g}}}",
+                     repair.crossing_pairs, repair.triangles_removed, repair.triangles_added, seconds);
 }
 
 std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh& input,
@@ -200,7 +186,7 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
       ->check(count_option());
   command->add_flag("--repair", options.repair,
                     "A mesh whose triangles cross each other is replaced by the boolean union of its overlapping "
-                    "parts (or, where that fails, remeshed around the crossings) instead of refused");
+                    "parts instead of refused");
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
@@ -255,17 +241,11 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       ro.progress(fmt::format("read {} vertices, {} triangles{}", read_vertices, read_triangles,
                               merged ? fmt::format(" ({} vertices at the position of another merged into it)", merged)
                                      : std::string()));
-      if (repair.method == reconstruct::CrossingRepair::boolean_union)
+      if (repair.crossing_pairs > 0)
         ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): joined the overlapping parts "
                                 "(boolean union), +{}/-{} triangles, {} in all ({:.3g} s, --repair)",
                                 repair.crossing_pairs, repair.triangles_added, repair.triangles_removed,
                                 input.triangles.size(), repair_seconds));
-      else if (repair.method == reconstruct::CrossingRepair::local_remesh)
-        ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): the union of its overlapping parts "
-                                "failed ({}); remeshed around the crossings instead, +{}/-{} triangles, {} in all "
-                                "({:.3g} s, --repair)",
-                                repair.crossing_pairs, repair.union_failure, repair.triangles_added,
-                                repair.triangles_removed,                                 input.triangles.size(), repair_seconds));
     }
     const TriangleMesh samples = reconstruct::with_sample_noise(input, options.noise);
     reconstruct::Reconstruction r = [&] {

@@ -3,7 +3,11 @@
 // alone it compiles beside the others.
 #include "join_overlaps.hpp"
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <exception>
+#include <vector>
 
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <fmt/format.h>
@@ -22,7 +26,24 @@ JoinedMesh join_overlapping_parts(const TriangleMesh& mesh) {
   } catch (const std::exception& e) {
     return {std::nullopt, fmt::format("CGAL's autorefinement failed ({})", e.what())};
   }
-  return to_triangle_mesh(surface, "CGAL's autorefinement");
+  // Removed elements are skipped by vertices() and faces(); the others are
+  // renumbered in order.
+  TriangleMesh out;
+  std::vector<std::int32_t> index(surface.num_vertices() + surface.number_of_removed_vertices(), -1);
+  for (const auto v : surface.vertices()) {
+    index[std::size_t(v)] = std::int32_t(out.vertices.size());
+    const reconstruct::cgal::Point& p = surface.point(v);
+    out.vertices.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (const auto f : surface.faces()) {
+    if (surface.degree(f) != 3) return {std::nullopt, "CGAL's autorefinement returned a face that is not a triangle"};
+    std::array<std::int32_t, 3> t{};
+    std::size_t n = 0;
+    for (const auto v : vertices_around_face(surface.halfedge(f), surface)) t[n++] = index[std::size_t(v)];
+    out.triangles.push_back(t);
+  }
+  if (out.triangles.empty()) return {std::nullopt, "CGAL's autorefinement removed every triangle"};
+  return {std::move(out), {}};
 }
 
 }  // namespace skelconv::detail

@@ -210,20 +210,23 @@ TriangleKey triangle_key(const TriangleMesh& mesh, const std::array<std::int32_t
   return key;
 }
 
-/// Why `candidate`, a repair of `input`, is not a valid input, or empty.
-/// It must pass every check, crossings included, and keep the input's
-/// bounding box within `box_tolerance` × its diagonal.
-std::string repair_failure(const TriangleMesh& input, TriangleMesh& candidate, double box_tolerance) {
+/// Why `joined`, the union of `input`'s parts, is not a valid input, or
+/// empty. It must pass every check, crossings included, and keep the
+/// input's bounding box: an extreme point of a union is a vertex of one of
+/// its parts, so only the rounding of new vertices may move it.
+std::string union_failure(const TriangleMesh& input, TriangleMesh& joined) {
   // The cut splits the vertices where closed parts touch at one point, and
   // may round two new vertices to one position: joined again, as on input.
-  merge_coincident_vertices(candidate);
+  merge_coincident_vertices(joined);
   try {
-    check_closed_mesh(candidate, false);
+    check_closed_mesh(joined, false);
   } catch (const InputError& e) {
-    return e.problem();
+    // The fact, not its advice to the user ("; flip them"): the union is
+    // ours, not the user's mesh.
+    return e.problem().substr(0, e.problem().find("; "));
   }
   // Rounding new vertices to double can make triangles cross again.
-  if (const SelfIntersections left = find_self_intersections(candidate); left.pairs > 0)
+  if (const SelfIntersections left = find_self_intersections(joined); left.pairs > 0)
     return fmt::format("{} crossing pair(s) left", left.pairs);
   const auto box = [](const TriangleMesh& m) {
     Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
@@ -231,8 +234,9 @@ std::string repair_failure(const TriangleMesh& input, TriangleMesh& candidate, d
       for (std::int32_t i : t) lo = lo.cwiseMin(m.vertices[std::size_t(i)]), hi = hi.cwiseMax(m.vertices[std::size_t(i)]);
     return std::pair{lo, hi};
   };
+  constexpr double box_tolerance = 1e-9;  // of the diagonal: rounding only
   const auto [lo, hi] = box(input);
-  const auto [new_lo, new_hi] = box(candidate);
+  const auto [new_lo, new_hi] = box(joined);
   const double moved = std::max((new_lo - lo).cwiseAbs().maxCoeff(), (new_hi - hi).cwiseAbs().maxCoeff());
   if (!(moved <= box_tolerance * (hi - lo).norm()))
     return fmt::format("its bounding box moved by {:.3g} of the diagonal", moved / (hi - lo).norm());
@@ -245,24 +249,13 @@ OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
   check_closed_mesh(mesh, false);
   const SelfIntersections found = find_self_intersections(mesh);
   if (found.pairs == 0) return {};
-  // A union keeps the box exactly, but for the rounding of new vertices (an
-  // extreme point of the union is a vertex of one of the parts); the local
-  // remeshing moves only the triangles around the crossings.
-  constexpr double union_box_tolerance = 1e-9, remesh_box_tolerance = 1e-2;
-  OverlapRepair repair{CrossingRepair::boolean_union, found.pairs};
   detail::JoinedMesh joined = detail::join_overlapping_parts(mesh);
-  if (joined.mesh) joined.failure = repair_failure(mesh, *joined.mesh, union_box_tolerance);
-  if (!joined.failure.empty()) {
-    repair.method = CrossingRepair::local_remesh;
-    repair.union_failure = joined.failure;
-    joined = detail::remesh_crossings(mesh);
-    if (joined.mesh) joined.failure = repair_failure(mesh, *joined.mesh, remesh_box_tolerance);
-    if (!joined.failure.empty())
-      throw InputError(fmt::format("the mesh intersects itself ({} crossing pair(s), e.g. triangles {} and {}) and "
-                                   "could not be repaired: the union of its overlapping parts failed ({}), and so did "
-                                   "remeshing around the crossings ({}); join them by a boolean union first",
-                                   found.pairs, found.first, found.second, repair.union_failure, joined.failure));
-  }
+  if (joined.mesh) joined.failure = union_failure(mesh, *joined.mesh);
+  if (!joined.failure.empty())
+    throw InputError(fmt::format("the mesh intersects itself ({} crossing pair(s), e.g. triangles {} and {}) and the "
+                                 "union of its overlapping parts is not a valid mesh: {}; join them by a boolean "
+                                 "union in a modeller first",
+                                 found.pairs, found.first, found.second, joined.failure));
   std::map<TriangleKey, std::size_t> before;
   std::size_t proper = 0;
   for (const auto& t : proper_triangles(mesh)) ++before[triangle_key(mesh, t)], ++proper;
@@ -271,6 +264,8 @@ OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
     const auto it = before.find(triangle_key(*joined.mesh, t));
     if (it != before.end() && it->second > 0) --it->second, ++kept;
   }
+  OverlapRepair repair;
+  repair.crossing_pairs = found.pairs;
   repair.triangles_removed = proper - kept;
   repair.triangles_added = joined.mesh->triangles.size() - kept;
   mesh = std::move(*joined.mesh);

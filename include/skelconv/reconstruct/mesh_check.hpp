@@ -64,39 +64,27 @@ std::string self_intersection_problem(const SelfIntersections& found);
 /// two overlapping spheres stored as one mesh, a fold.
 void check_no_self_intersection(const TriangleMesh& mesh);
 
-/// How check_closed_mesh_joining_overlaps repaired a mesh.
-enum class CrossingRepair {
-  none,           ///< no triangles crossed: the mesh was left as it was
-  boolean_union,  ///< the boundary of the union of the overlapping parts
-  local_remesh,   ///< the union failed: the crossings' neighbourhood removed and refilled
-};
-
 /// What check_closed_mesh_joining_overlaps did to a mesh.
 struct OverlapRepair {
-  CrossingRepair method = CrossingRepair::none;
-  std::size_t crossing_pairs = 0;     ///< in the input
+  std::size_t crossing_pairs = 0;     ///< in the input; 0: none, the mesh was left as it was
   std::size_t triangles_removed = 0;  ///< input triangles not in the result (cut, or inside the union)
   std::size_t triangles_added = 0;    ///< result triangles not in the input (the pieces of cut ones)
-  std::string union_failure;          ///< local_remesh: why the union was not used
 };
 
-/// check_closed_mesh, except that a mesh whose triangles cross is repaired
-/// and then checked again, crossings included. Scanned and modelled meshes
-/// often overlap slightly where parts meet (a horn, a leg). First the
-/// boundary of the union of the solids its parts enclose (CGAL
+/// check_closed_mesh, except that a mesh whose triangles cross is replaced
+/// by the boundary of the union of the solids its parts enclose (CGAL
 /// Polygon_mesh_processing::experimental::autorefine_and_remove_self_intersections:
-/// the surface cut along its crossings, the pieces inside the solid
-/// dropped), which is what the refusal asks the user to compute; it must
-/// pass every check and keep the input's bounding box (a union does, to
-/// rounding). Where it does not (a fold, whose crossing curve ends inside
-/// the surface and bounds no part: CGAL's elk kept 8 of its 3,290
-/// triangles, inside out), the triangles around the crossings are removed
-/// and the holes refilled (experimental::remove_self_intersections), its
-/// box within 1% of the diagonal of the input's. Only crossings are
-/// repaired: an open, non-manifold, inverted or hollow mesh is refused as
-/// by check_closed_mesh, before any repair. Throws InputError naming both
-/// failures when neither gives a valid mesh (new vertices are rounded to
-/// double, which can make triangles cross again).
+/// the surface cut along its crossing curves, the pieces inside the solid
+/// dropped), which is then checked again, crossings included, and must keep
+/// the input's bounding box (a union does, to rounding). Scanned and
+/// modelled meshes often overlap slightly where parts meet (a horn, a leg);
+/// the union is what the refusal asks the user to compute. Only crossings
+/// are repaired: an open, non-manifold, inverted or hollow mesh is refused
+/// as by check_closed_mesh, before any repair. Throws InputError when the
+/// union cannot be computed or is not a valid input: its new vertices are
+/// rounded to double, and on a fold, whose crossing curve ends inside the
+/// surface and bounds no part, CGAL keeps the wrong side (CGAL's elk: 8 of
+/// its 3,290 triangles, inside out).
 OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh);
 
 }  // namespace skelconv::reconstruct
