@@ -181,6 +181,49 @@ TEST(MeshCheck, SelfIntersection) {
   EXPECT_NO_THROW(check_closed_mesh(touching));
 }
 
+/// Six times the volume a closed mesh encloses, Σ a·(b×c) over its
+/// triangles (divergence theorem, with the origin as apex).
+double six_volume(const TriangleMesh& m) {
+  double sum = 0.0;
+  for (const auto& t : m.triangles)
+    sum += m.vertices[std::size_t(t[0])].dot(m.vertices[std::size_t(t[1])].cross(m.vertices[std::size_t(t[2])]));
+  return sum;
+}
+
+// Two unit cubes, the second moved by (½, ½, ½), as one mesh: the union is
+// 1 + 1 − ⅛ = 1.875 (the overlap is [½, 1]³), its box [0, 1.5]³, and every
+// new vertex (edges through faces at ½ and 1) is exact in double. The
+// faces x, y, z = 0 of the first and x, y, z = 1.5 of the second stay
+// whole; both triangles of each of the other six faces reach into the other
+// cube and are cut: 12 of the 24 triangles are replaced.
+TEST(MeshCheck, OverlappingCubesAreJoined) {
+  TriangleMesh two = unit_cube();
+  const TriangleMesh other = unit_cube();
+  for (const Vec3& v : other.vertices) two.vertices.push_back(v + Vec3(0.5, 0.5, 0.5));
+  for (auto t : other.triangles) two.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  EXPECT_THROW(check_closed_mesh(two), InputError);
+  const OverlapRepair repair = check_closed_mesh_joining_overlaps(two);
+  EXPECT_GT(repair.crossing_pairs, 0u);
+  EXPECT_EQ(repair.triangles_removed, 12u);
+  EXPECT_EQ(two.triangles.size(), 12u + repair.triangles_added);
+  EXPECT_NEAR(six_volume(two) / 6.0, 1.875, 1e-12);
+  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+  for (const Vec3& v : two.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  EXPECT_EQ(lo, Vec3(0, 0, 0));
+  EXPECT_EQ(hi, Vec3(1.5, 1.5, 1.5));
+  EXPECT_NO_THROW(check_closed_mesh(two));  // closed, oriented, no crossing left
+
+  // A mesh without crossings is left as it was; a mesh with another problem
+  // is refused as before, not repaired.
+  TriangleMesh cube = unit_cube();
+  EXPECT_EQ(check_closed_mesh_joining_overlaps(cube).crossing_pairs, 0u);
+  EXPECT_EQ(cube.vertices, unit_cube().vertices);
+  EXPECT_EQ(cube.triangles, unit_cube().triangles);
+  TriangleMesh open = unit_cube();
+  open.triangles.pop_back();
+  EXPECT_THROW(check_closed_mesh_joining_overlaps(open), InputError);
+}
+
 // The orientation test does not depend on where the mesh is: the unit
 // cube at 1e-3 of its size, 1e4 from the origin, is inside out once
 // flipped. Unflipped, it is refused for its position: a skeleton of a

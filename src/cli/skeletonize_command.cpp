@@ -1,6 +1,7 @@
 // Implementation of skeletonize_command.hpp.
 #include "skeletonize_command.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -81,15 +82,26 @@ std::string stage_report(const reconstruct::Stage& s, const TriangleMesh& input,
                             m.components, m.seconds);
 }
 
+/// The report's "input_repair": null, or what --repair did to a mesh whose
+/// triangles cross (reconstruct::OverlapRepair).
+std::string repair_json(const reconstruct::OverlapRepair& repair, double seconds) {
+  if (repair.crossing_pairs == 0) return "null";
+  return fmt::format("{{\"problem\": \"self_intersection\", \"crossing_pairs\": {}, \"action\": \"boolean_union\", "
+                     "\"triangles_removed\": {}, \"triangles_added\": {}, \"seconds\": {:.3g}}}",
+                     repair.crossing_pairs, repair.triangles_removed, repair.triangles_added, seconds);
+}
+
 std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh& input,
                         const reconstruct::ReconstructOptions& options,
-                        const std::function<void(std::string_view)>& progress, bool result_only) {
+                        const std::function<void(std::string_view)>& progress, bool result_only,
+                        const std::string& input_repair) {
   std::string text = fmt::format("{{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
                                  "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, "
+                                 "\"input_repair\": {}, "
                                  "\"input_euler_characteristic\": {}, \"input_components\": {}, \"medial_seconds\": {:.3g}, "
                                  "\"result\": \"{}\", \"stages\": [",
                                  r.samples, r.medial_vertices, r.pruning.vertices_removed,
-                                 r.pruning.branches_removed, r.spurs_removed, r.tolerance,
+                                 r.pruning.branches_removed, r.spurs_removed, r.tolerance, input_repair,
                                  mesh_topology(input).euler_characteristic, mesh_topology(input).components,
                                  r.medial_seconds, r.stages.back().name);
   for (std::size_t k = 0; k < r.stages.size(); ++k)
@@ -172,6 +184,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                                   "reading it: the work grows with the number of samples",
                                   options.max_triangles))
       ->check(count_option());
+  command->add_flag("--repair", options.repair,
+                    "A mesh whose triangles cross each other is replaced by the boolean union of its overlapping "
+                    "parts instead of refused");
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
@@ -203,17 +218,35 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     };
     TriangleMesh input = read_mesh(options.input_path, options.max_triangles);
     const std::size_t merged = reconstruct::merge_coincident_vertices(input);
+    const std::size_t read_vertices = input.vertices.size() + merged, read_triangles = input.triangles.size();
+    reconstruct::OverlapRepair repair;
+    const auto repair_start = std::chrono::steady_clock::now();
     try {
       reconstruct::check_mesh_size(input, options.max_triangles);
-      reconstruct::check_closed_mesh(input);
+      if (options.repair) {
+        repair = reconstruct::check_closed_mesh_joining_overlaps(input);
+      } else {
+        reconstruct::check_closed_mesh(input, false);
+        if (const auto found = reconstruct::find_self_intersections(input); found.pairs > 0)
+          throw InputError(reconstruct::self_intersection_problem(found) +
+                           "; overlapping parts must be joined by a boolean union first (or pass --repair to let "
+                           "skeletonize join them)");
+      }
     } catch (const InputError& error) {
       throw error.inside(options.input_path);
     }
-    if (ro.progress)
-      ro.progress(fmt::format("read {} vertices, {} triangles{}", input.vertices.size() + merged,
-                              input.triangles.size(),
+    const double repair_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - repair_start).count();
+    if (ro.progress) {
+      ro.progress(fmt::format("read {} vertices, {} triangles{}", read_vertices, read_triangles,
                               merged ? fmt::format(" ({} vertices at the position of another merged into it)", merged)
                                      : std::string()));
+      if (repair.crossing_pairs > 0)
+        ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): joined the overlapping parts "
+                                "(boolean union), +{}/-{} triangles, {} in all ({:.3g} s, --repair)",
+                                repair.crossing_pairs, repair.triangles_added, repair.triangles_removed,
+                                input.triangles.size(), repair_seconds));
+    }
     const TriangleMesh samples = reconstruct::with_sample_noise(input, options.noise);
     reconstruct::Reconstruction r = [&] {
       try {
@@ -235,7 +268,8 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       image = report_image_png(input, result, *result.measured, ro);
     }
     std::string report;
-    if (options.report_path) report = report_json(r, input, ro, ro.progress, options.report_result_only);
+    if (options.report_path) report = report_json(r, input, ro, ro.progress, options.report_result_only,
+                                                      repair_json(repair, repair_seconds));
     std::vector<std::pair<std::string, std::filesystem::path>> files = {{skeleton, options.output_path}};
     if (options.report_path) files.emplace_back(report, *options.report_path);
     if (options.report_image_path) files.emplace_back(image, *options.report_image_path);

@@ -42,6 +42,9 @@ struct SkeletonizeOptions {
   double noise = 0.0;
   double measure_divisions = 100.0;  ///< --measure-divisions (ReconstructOptions::measure_divisions)
   bool quiet = false;
+  /// --repair: join the overlapping parts of a mesh whose triangles cross
+  /// (reconstruct::check_closed_mesh_joining_overlaps) instead of refusing it.
+  bool repair = false;
   /// --max-triangles. The medial graph is the Delaunay triangulation of the
   /// samples: the vertices plus points spread over coarse triangles, at most
   /// SamplingOptions::max_samples of them, unless the vertices alone are

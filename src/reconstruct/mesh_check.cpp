@@ -1,6 +1,7 @@
 // Implementation of skelconv/reconstruct/mesh_check.hpp: plain edge counting
 // (no CGAL) so that the check costs O(n log n) and compiles fast; the
-// self-intersection test, which needs CGAL, is in self_intersection.cpp.
+// self-intersection test and the union that repairs it, which need CGAL,
+// are in self_intersection.cpp and join_overlaps.cpp.
 #include "skelconv/reconstruct/mesh_check.hpp"
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/primitives/segment.hpp"
+#include "join_overlaps.hpp"
 #include "union_find.hpp"
 
 namespace skelconv::reconstruct {
@@ -166,7 +168,7 @@ void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles) {
   }
 }
 
-void check_closed_mesh(const TriangleMesh& mesh) {
+void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings) {
   const auto triangles = proper_triangles(mesh);
   if (triangles.empty()) throw InputError("the mesh is empty: it has no triangle");
   check_edges(triangles, mesh.triangles.size() - triangles.size());
@@ -185,7 +187,89 @@ void check_closed_mesh(const TriangleMesh& mesh) {
                                  "are not supported",
                                  negative));
   check_position(mesh, triangles);
-  check_no_self_intersection(mesh);
+  if (test_crossings) check_no_self_intersection(mesh);
+}
+
+namespace {
+
+/// A triangle by its corners' coordinates, starting at the least corner
+/// (the orientation kept): the same key in a mesh and in its repair, whose
+/// vertices are renumbered.
+using TriangleKey = std::array<double, 9>;
+
+TriangleKey triangle_key(const TriangleMesh& mesh, const std::array<std::int32_t, 3>& t) {
+  std::array<std::array<double, 3>, 3> c;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& v = mesh.vertices[std::size_t(t[std::size_t(k)])];
+    c[std::size_t(k)] = {v.x(), v.y(), v.z()};
+  }
+  const std::size_t least = std::size_t(std::min_element(c.begin(), c.end()) - c.begin());
+  TriangleKey key;
+  for (std::size_t k = 0; k < 3; ++k)
+    for (std::size_t i = 0; i < 3; ++i) key[3 * k + i] = c[(least + k) % 3][i];
+  return key;
+}
+
+/// Why `joined`, the union of `input`'s parts, is not a valid input, or
+/// empty. It must pass every check, crossings included, and keep the
+/// input's bounding box: an extreme point of a union is a vertex of one of
+/// its parts, so only the rounding of new vertices may move it.
+std::string union_failure(const TriangleMesh& input, TriangleMesh& joined) {
+  // The cut splits the vertices where closed parts touch at one point, and
+  // may round two new vertices to one position: joined again, as on input.
+  merge_coincident_vertices(joined);
+  try {
+    check_closed_mesh(joined, false);
+  } catch (const InputError& e) {
+    // The fact, not its advice to the user ("; flip them"): the union is
+    // ours, not the user's mesh.
+    return e.problem().substr(0, e.problem().find("; "));
+  }
+  // Rounding new vertices to double can make triangles cross again.
+  if (const SelfIntersections left = find_self_intersections(joined); left.pairs > 0)
+    return fmt::format("{} crossing pair(s) left", left.pairs);
+  const auto box = [](const TriangleMesh& m) {
+    Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+    for (const auto& t : proper_triangles(m))
+      for (std::int32_t i : t) lo = lo.cwiseMin(m.vertices[std::size_t(i)]), hi = hi.cwiseMax(m.vertices[std::size_t(i)]);
+    return std::pair{lo, hi};
+  };
+  constexpr double box_tolerance = 1e-9;  // of the diagonal: rounding only
+  const auto [lo, hi] = box(input);
+  const auto [new_lo, new_hi] = box(joined);
+  const double moved = std::max((new_lo - lo).cwiseAbs().maxCoeff(), (new_hi - hi).cwiseAbs().maxCoeff());
+  if (!(moved <= box_tolerance * (hi - lo).norm()))
+    return fmt::format("its bounding box moved by {:.3g} of the diagonal", moved / (hi - lo).norm());
+  return {};
+}
+
+}  // namespace
+
+OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
+  check_closed_mesh(mesh, false);
+  const SelfIntersections found = find_self_intersections(mesh);
+  if (found.pairs == 0) return {};
+  detail::JoinedMesh joined = detail::join_overlapping_parts(mesh);
+  if (joined.mesh) joined.failure = union_failure(mesh, *joined.mesh);
+  if (!joined.failure.empty())
+    throw InputError(fmt::format("the mesh intersects itself ({} crossing pair(s), e.g. triangles {} and {}) and the "
+                                 "union of its overlapping parts is not a valid mesh: {}; join them by a boolean "
+                                 "union in a modeller first",
+                                 found.pairs, found.first, found.second, joined.failure));
+  std::map<TriangleKey, std::size_t> before;
+  std::size_t proper = 0;
+  for (const auto& t : proper_triangles(mesh)) ++before[triangle_key(mesh, t)], ++proper;
+  std::size_t kept = 0;
+  for (const auto& t : joined.mesh->triangles) {
+    const auto it = before.find(triangle_key(*joined.mesh, t));
+    if (it != before.end() && it->second > 0) --it->second, ++kept;
+  }
+  OverlapRepair repair;
+  repair.crossing_pairs = found.pairs;
+  repair.triangles_removed = proper - kept;
+  repair.triangles_added = joined.mesh->triangles.size() - kept;
+  mesh = std::move(*joined.mesh);
+  return repair;
 }
 
 }  // namespace skelconv::reconstruct

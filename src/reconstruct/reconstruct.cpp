@@ -249,7 +249,16 @@ void curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
     say(o, fmt::format("{} part(s) of the surface hold no branch: one point primitive each", result.stages.back().balls.size()));
   const double curve_error = first_order_rms(parse_skeleton_json(skeleton_file_text(result.stages.back(), o)), points, diagonal);
   const double ball_error = first_order_rms(parse_skeleton_json(skeleton_file_text(ball, o)), points, diagonal);
-  if (ball_error < curve_error) {
+  // A least-squares sphere wider than the whole surface is no ball of it:
+  // on a long, flat part Gauss–Newton drifts towards a plane (CGAL's camel:
+  // a radius of about 1,400 diagonals, closer than its branches by the
+  // first-order distance, and a ball the report could not mesh).
+  const bool balls_fit = std::all_of(ball.balls.begin(), ball.balls.end(), [diagonal](const Vec4& b) {
+    return b.w() <= diagonal;
+  });
+  if (!balls_fit)
+    say(o, "a least-squares sphere is wider than the surface's diagonal: no ball, the branches stay");
+  if (balls_fit && ball_error < curve_error) {
     say(o, fmt::format("one ball fits better than the branches (first-order RMS {:.3g} against {:.3g} of the "
                        "diagonal): the result is the ball", ball_error / diagonal, curve_error / diagonal));
     result.stages.push_back(std::move(ball));

@@ -7,6 +7,10 @@
 #   MAX_HAUSDORFF=<h>     its two-sided Hausdorff distance / diagonal is below h
 #   MAX_RMS=<r>           its RMS distance / diagonal is below r
 #   SAME_EULER=ON         its meshed surface has the input's Euler characteristic
+#   INPUT_EULER=<n>       the input's Euler characteristic (after any repair) is n
+#   REPAIRED=ON           the report's input_repair names the boolean union of
+#                         crossing triangles; without it, input_repair must be null
+#   ARGS=<options>        more options for skeletonize, separated by spaces (e.g. "--method curve")
 #   EXIT=<code>, STDERR=<substring>: a refused input; then neither <prefix>.json
 #                         nor <prefix>_report.json may exist afterwards.
 # The measured numbers are printed, so that `ctest -V` shows them.
@@ -15,7 +19,9 @@ cmake_minimum_required(VERSION 3.25)
 set(skeleton ${OUT}.json)
 set(report ${OUT}_report.json)
 file(REMOVE ${skeleton} ${report})
+separate_arguments(args UNIX_COMMAND "${ARGS}")
 execute_process(COMMAND ${SKELCONV} skeletonize ${INPUT} -o ${skeleton} --report ${report} --report-stages result --quiet
+                        ${args}
                 OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr RESULT_VARIABLE exit_code)
 set(run "skelconv skeletonize ${INPUT}\nexit code: ${exit_code}\nstdout:\n${stdout}\nstderr:\n${stderr}")
 if(NOT DEFINED EXIT)
@@ -68,4 +74,21 @@ if(DEFINED MAX_RMS AND NOT rms LESS MAX_RMS)
 endif()
 if(SAME_EULER AND NOT euler_in EQUAL euler_out)
   message(FATAL_ERROR "Euler characteristic ${euler_in} in, ${euler_out} out\n${run}")
+endif()
+if(DEFINED INPUT_EULER AND NOT euler_in EQUAL INPUT_EULER)
+  message(FATAL_ERROR "the input's Euler characteristic is ${euler_in}, expected ${INPUT_EULER}\n${run}")
+endif()
+string(JSON repair_type TYPE "${json}" input_repair)
+if(REPAIRED)
+  if(NOT repair_type STREQUAL "OBJECT")
+    message(FATAL_ERROR "the report's input_repair is ${repair_type}, expected the repair\n${run}")
+  endif()
+  string(JSON action GET "${json}" input_repair action)
+  string(JSON pairs GET "${json}" input_repair crossing_pairs)
+  message(STATUS "input_repair: ${action}, ${pairs} crossing pairs")
+  if(NOT action STREQUAL "boolean_union" OR NOT pairs GREATER 0)
+    message(FATAL_ERROR "input_repair: ${action}, ${pairs} crossing pairs; expected boolean_union, > 0\n${run}")
+  endif()
+elseif(NOT repair_type STREQUAL "NULL")
+  message(FATAL_ERROR "the report's input_repair is ${repair_type}: the input was repaired\n${run}")
 endif()

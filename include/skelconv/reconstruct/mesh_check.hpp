@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include "skelconv/mesh/triangle_mesh.hpp"
 
@@ -36,15 +37,54 @@ std::size_t merge_coincident_vertices(TriangleMesh& mesh);
 ///   Segment::degenerate_length_ratio × its largest coordinate magnitude
 ///   (the skeleton's shortest pieces, down to ~5e-5 of the diagonal, could
 ///   not be written at that position);
-/// - self-intersecting: two triangles cross (check_no_self_intersection).
+/// - self-intersecting: two triangles cross (check_no_self_intersection),
+///   tested only when `test_crossings` (the last test, the only one that
+///   needs CGAL).
 /// Degenerate triangles (a repeated index) are ignored, as the samplers do.
-void check_closed_mesh(const TriangleMesh& mesh);
+void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings = true);
+
+/// Pairs of crossing triangles found by find_self_intersections.
+struct SelfIntersections {
+  std::size_t pairs = 0;  ///< crossing pairs in all; 0: none
+  std::size_t first = 0, second = 0;  ///< the first pair found, indices in mesh.triangles, first < second
+};
+
+/// The pairs of triangles of `mesh` that cross (CGAL
+/// Polygon_mesh_processing::self_intersections, exact predicates). Triangles
+/// that only share an edge or a vertex do not cross. Expects the edges
+/// checked by check_closed_mesh.
+SelfIntersections find_self_intersections(const TriangleMesh& mesh);
+
+/// "the mesh intersects itself: triangles I and J cross (N crossing pair(s)
+/// in all)": the problem, without what to do about it.
+std::string self_intersection_problem(const SelfIntersections& found);
 
 /// Throws InputError naming the first pair of crossing triangles (indices
-/// in `mesh.triangles`) and how many pairs cross: two overlapping spheres
-/// stored as one mesh, a fold. Triangles that only share an edge or a
-/// vertex do not cross (CGAL Polygon_mesh_processing::self_intersections,
-/// exact predicates). Expects the edges checked by check_closed_mesh.
+/// in `mesh.triangles`) and how many pairs cross (find_self_intersections):
+/// two overlapping spheres stored as one mesh, a fold.
 void check_no_self_intersection(const TriangleMesh& mesh);
+
+/// What check_closed_mesh_joining_overlaps did to a mesh.
+struct OverlapRepair {
+  std::size_t crossing_pairs = 0;     ///< in the input; 0: none, the mesh was left as it was
+  std::size_t triangles_removed = 0;  ///< input triangles not in the result (cut, or inside the union)
+  std::size_t triangles_added = 0;    ///< result triangles not in the input (the pieces of cut ones)
+};
+
+/// check_closed_mesh, except that a mesh whose triangles cross is replaced
+/// by the boundary of the union of the solids its parts enclose (CGAL
+/// Polygon_mesh_processing::experimental::autorefine_and_remove_self_intersections:
+/// the surface cut along its crossing curves, the pieces inside the solid
+/// dropped), which is then checked again, crossings included, and must keep
+/// the input's bounding box (a union does, to rounding). Scanned and
+/// modelled meshes often overlap slightly where parts meet (a horn, a leg);
+/// the union is what the refusal asks the user to compute. Only crossings
+/// are repaired: an open, non-manifold, inverted or hollow mesh is refused
+/// as by check_closed_mesh, before any repair. Throws InputError when the
+/// union cannot be computed or is not a valid input: its new vertices are
+/// rounded to double, and on a fold, whose crossing curve ends inside the
+/// surface and bounds no part, CGAL keeps the wrong side (CGAL's elk: 8 of
+/// its 3,290 triangles, inside out).
+OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh);
 
 }  // namespace skelconv::reconstruct

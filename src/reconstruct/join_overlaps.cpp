@@ -1,0 +1,49 @@
+// Implementation of join_overlaps.hpp. Out of the CGAL library's unity unit
+// (src/CMakeLists.txt): corefinement is the heaviest of its headers, and
+// alone it compiles beside the others.
+#include "join_overlaps.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <vector>
+
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <fmt/format.h>
+
+#include "cgal_soup.hpp"
+
+namespace skelconv::detail {
+
+JoinedMesh join_overlapping_parts(const TriangleMesh& mesh) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  reconstruct::cgal::SplitSurface split = reconstruct::cgal::to_split_surface_mesh(mesh);
+  reconstruct::cgal::SurfaceMesh& surface = split.mesh;
+  try {
+    if (!PMP::experimental::autorefine_and_remove_self_intersections(surface))
+      return {std::nullopt, "CGAL's autorefinement left crossings it could not remove"};
+  } catch (const std::exception& e) {
+    return {std::nullopt, fmt::format("CGAL's autorefinement failed ({})", e.what())};
+  }
+  // Removed elements are skipped by vertices() and faces(); the others are
+  // renumbered in order.
+  TriangleMesh out;
+  std::vector<std::int32_t> index(surface.num_vertices() + surface.number_of_removed_vertices(), -1);
+  for (const auto v : surface.vertices()) {
+    index[std::size_t(v)] = std::int32_t(out.vertices.size());
+    const reconstruct::cgal::Point& p = surface.point(v);
+    out.vertices.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (const auto f : surface.faces()) {
+    if (surface.degree(f) != 3) return {std::nullopt, "CGAL's autorefinement returned a face that is not a triangle"};
+    std::array<std::int32_t, 3> t{};
+    std::size_t n = 0;
+    for (const auto v : vertices_around_face(surface.halfedge(f), surface)) t[n++] = index[std::size_t(v)];
+    out.triangles.push_back(t);
+  }
+  if (out.triangles.empty()) return {std::nullopt, "CGAL's autorefinement removed every triangle"};
+  return {std::move(out), {}};
+}
+
+}  // namespace skelconv::detail
