@@ -85,8 +85,8 @@ namespace {
   throw_out_of_range(what, p, value, shift);
 }
 
-[[gnu::noinline, gnu::cold]] Vec3 restore_gradient_rare(const Vec3& gradient, int shift, const char* what,
-                                                        const Vec3& p, const Vec3& frame_p) {
+[[gnu::noinline, gnu::cold]] Vec3 restore_gradient_rare(const Vec3& gradient, int shift, bool may_vanish,
+                                                        const char* what, const Vec3& p, const Vec3& frame_p) {
   const double ax = std::abs(gradient.x()), ay = std::abs(gradient.y()), az = std::abs(gradient.z());
   constexpr double largest_finite = std::numeric_limits<double>::max();
   if (ax <= largest_finite && ay <= largest_finite && az <= largest_finite) {  // false for NaN
@@ -108,6 +108,13 @@ namespace {
   const Vec3 world{times_power_of_two(gradient.x(), shift), times_power_of_two(gradient.y(), shift),
                    times_power_of_two(gradient.z(), shift)};
   const double largest = gradient.cwiseAbs().maxCoeff();
+  // A kernel that vanishes or underflows far away (compact support, the
+  // Gaussian) has a gradient that does too: a 0 or subnormal in the frame is
+  // then its value rounded, as restore_value's may_vanish (a Gaussian
+  // segment at 27 widths: f = 1e-317, ∇f = 1e-315, then 0; a compact SCALIS
+  // segment 1e13 lengths from its support: 0). A normal frame gradient that
+  // the scale takes out of the double range is still refused below.
+  if (may_vanish && !(largest >= smallest_normal)) return world;
   if (largest == 0.0) {
     // Beyond far_frame_distance the primitive (whose frame
     // coordinates stay below ~1e8, file comment of scaled_frame.hpp) is a
@@ -141,14 +148,15 @@ double ScaledFrame::restore_value(double value, int power, bool may_vanish, cons
   return restore_value_rare(value, shift, may_vanish, what, p, point(p));
 }
 
-Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const {
+Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, bool may_vanish, const char* what,
+                                   const Vec3& p) const {
   // The common case first: all components finite, the largest a normal
   // double, and so is the largest after the shift (a product by 2^shift
   // scales every component alike, so the largest stays the largest).
   const int shift = power * exponent_;
   Vec3 world;
   if (restore_gradient_common(gradient, normal_power_of_two_or_zero(shift), world)) return world;
-  return restore_gradient_rare(gradient, shift, what, p, point(p));
+  return restore_gradient_rare(gradient, shift, may_vanish, what, p, point(p));
 }
 
 std::string format_scaled(double mantissa, int power_of_two) {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -90,6 +91,22 @@ std::size_t ply_type_size(const std::string& type, const std::string& where) {
   throw InputError("unknown PLY property type \"" + type + "\"", where);
 }
 
+/// The values a PLY integer type holds.
+struct IntegerRange {
+  std::int64_t lo, hi;
+};
+
+/// The range of an integer PLY type, or nothing for float and double.
+std::optional<IntegerRange> ply_integer_range(const std::string& type) {
+  if (type == "char" || type == "int8") return IntegerRange{INT8_MIN, INT8_MAX};
+  if (type == "uchar" || type == "uint8") return IntegerRange{0, UINT8_MAX};
+  if (type == "short" || type == "int16") return IntegerRange{INT16_MIN, INT16_MAX};
+  if (type == "ushort" || type == "uint16") return IntegerRange{0, UINT16_MAX};
+  if (type == "int" || type == "int32") return IntegerRange{INT32_MIN, INT32_MAX};
+  if (type == "uint" || type == "uint32") return IntegerRange{0, UINT32_MAX};
+  return std::nullopt;
+}
+
 /// Reads the PLY scalars of the body, ASCII words or binary values. ASCII
 /// errors name the line (counted from the file's first), binary ones the
 /// byte offset.
@@ -102,6 +119,7 @@ class PlyBody {
     if (format_ == PlyFormat::ascii) {
       const std::string word = next_word();
       if (word.empty()) throw InputError("the PLY body ends early", where_);
+      if (const std::optional<IntegerRange> range = ply_integer_range(type)) return integer(word, type, *range);
       try {
         std::size_t used = 0;
         const double value = std::stod(word, &used);
@@ -151,6 +169,25 @@ class PlyBody {
     while (position_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[position_]))) ++position_;
     word_line_ = line_;
     return bytes_.substr(start, position_ - start);
+  }
+
+  /// An ASCII word of an integer property: whole-number text within the
+  /// declared type's range. "2.5" or "1e3" for an int, or 300 for a uchar,
+  /// would otherwise be read as a different number than the file's writer
+  /// could have stored (a binary file of that header cannot hold it).
+  double integer(const std::string& word, const std::string& type, const IntegerRange& range) const {
+    std::size_t digits = word[0] == '+' || word[0] == '-' ? 1 : 0;
+    const bool whole = digits < word.size() && std::all_of(word.begin() + std::ptrdiff_t(digits), word.end(),
+                                                           [](unsigned char c) { return std::isdigit(c) != 0; });
+    if (!whole)
+      throw InputError(fmt::format("\"{}\" is not a whole number, but the property's type is {}", word, type), at());
+    // Past 19 digits strtold still orders the value right against the range.
+    const long double value = std::strtold(word.c_str(), nullptr);
+    if (value < static_cast<long double>(range.lo) || value > static_cast<long double>(range.hi))
+      throw InputError(fmt::format("{} is outside the range of the property's type {} ([{}, {}])", word, type,
+                                   range.lo, range.hi),
+                       at());
+    return static_cast<double>(value);
   }
 
   static double decode(const unsigned char* raw, const std::string& type) {
@@ -348,6 +385,31 @@ std::int64_t obj_index(const std::string& corner, std::size_t vertex_count, cons
   return resolved;
 }
 
+/// OBJ statements that say nothing about the surface's shape: normals,
+/// texture and parameter-space vertices, grouping, smoothing, materials and
+/// display attributes. Their lines are skipped.
+bool obj_ignored_statement(const std::string& keyword) {
+  static constexpr const char* ignored[] = {"vn",     "vt",       "vp",       "g",          "o",          "s",
+                                            "mg",     "usemtl",   "mtllib",   "usemap",     "maplib",     "lod",
+                                            "bevel",  "c_interp", "d_interp", "shadow_obj", "trace_obj", "ctech",
+                                            "stech"};
+  return std::find(std::begin(ignored), std::end(ignored), keyword) != std::end(ignored);
+}
+
+/// OBJ statements of geometry other than polygonal faces: points, lines and
+/// free-form curves and surfaces. Skipping them would drop part of what the
+/// file describes without a word, so they are refused.
+bool obj_unsupported_geometry(const std::string& keyword) {
+  static constexpr const char* geometry[] = {"p",    "l",   "cstype", "deg",  "bmat", "step", "curv", "curv2",
+                                             "surf", "parm", "trim",  "hole", "scrv", "sp",   "end",  "con"};
+  return std::find(std::begin(geometry), std::end(geometry), keyword) != std::end(geometry);
+}
+
+/// OBJ: "v x y z" (then optionally w, or an r g b colour, as some exporters
+/// write) and "f i j k ..." lines, `#` comments (also at the end of a line),
+/// the statements of obj_ignored_statement skipped. Anything else is refused
+/// at its line: a binary file renamed .obj, a typo ("vv"), or geometry this
+/// reader does not take would otherwise be read as a smaller mesh silently.
 TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const std::string& where) {
   TriangleMesh mesh;
   std::istringstream lines(text);
@@ -355,7 +417,7 @@ TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const 
   std::vector<std::int64_t> face;
   for (int line_number = 1; std::getline(lines, line); ++line_number) {
     const std::string at = fmt::format("{}: line {}", where, line_number);
-    std::istringstream words(line);
+    std::istringstream words(line.substr(0, line.find('#')));
     std::string keyword;
     words >> keyword;
     if (keyword == "v") {
@@ -363,12 +425,28 @@ TriangleMesh read_obj(const std::string& text, std::size_t max_triangles, const 
       std::string word[3];
       if (!(words >> word[0] >> word[1] >> word[2])) throw InputError("a vertex needs x y z", at);
       for (int k = 0; k < 3; ++k) point[k] = finite_number(word[k], at);
+      int extra = 0;
+      for (std::string rest; words >> rest; ++extra) finite_number(rest, at);
+      if (extra != 0 && extra != 1 && extra != 3 && extra != 4)
+        throw InputError(fmt::format("a vertex has {} numbers: expected x y z, optionally followed by w or by a "
+                                     "colour r g b",
+                                     3 + extra),
+                         at);
       mesh.vertices.push_back(point);
     } else if (keyword == "f") {
       face.clear();
       for (std::string corner; words >> corner;) face.push_back(obj_index(corner, mesh.vertices.size(), at));
       if (face.size() < 3) throw InputError("a face needs at least 3 corners", at);
       add_polygon(mesh, face, max_triangles, at);
+    } else if (obj_unsupported_geometry(keyword)) {
+      throw InputError("\"" + keyword + "\" (point, line or free-form geometry) is not supported: the mesh must be "
+                       "made of polygonal faces (\"f\")",
+                       at);
+    } else if (!keyword.empty() && !obj_ignored_statement(keyword)) {
+      throw InputError(fmt::format("unknown OBJ statement \"{}\" (expected v, f, a comment, or one of vn, vt, "
+                                   "vp, g, o, s, usemtl, mtllib)",
+                                   keyword.size() > 40 ? keyword.substr(0, 40) + "..." : keyword),
+                       at);
     }
   }
   return mesh;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "../detail/input_checks.hpp"
+#include "skelconv/kernels/kernel_list.hpp"
 
 namespace skelconv {
 
@@ -24,6 +25,24 @@ FieldSample PointPrimitive::value_and_gradient(const Vec3& p) const {
   if (!at_singular_centre && !(std::isfinite(result.value) && result.gradient.allFinite())) {
     throw EvaluationError(fmt::format("the point field overflowed double precision at P = {}, {} from its centre",
                                       detail::format_point(p), (p - center_).norm()));
+  }
+  // A kernel that neither vanishes nor underflows far away by design
+  // (inverse, Cauchy: powers of r) is positive at every r, so a 0 or
+  // subnormal off the centre is f outside the double range (an inverse
+  // i = 16 point at r = 1e25: f = 1e-400, which printed 0 0 0 0), refused
+  // as a segment refuses it (scaled_frame.hpp); so is a subnormal ∇f (at
+  // r = 1e19, f = 1e-304 but ∇f = −1.6e-322, two digits).
+  if (p != center_ && !kernels::family_facts(kernel_.family).vanishes_far) {
+    const double largest_slope = result.gradient.cwiseAbs().maxCoeff();
+    const bool value_out = !std::isnormal(result.value);
+    if (value_out || (largest_slope != 0.0 && !std::isnormal(largest_slope))) {
+      throw EvaluationError(fmt::format("{}the point field at P = {}, {} from its centre, is {}, outside the range of "
+                                        "double precision (normal doubles are {:g} to {:g}): it cannot be returned "
+                                        "at that point",
+                                        value_out ? "" : "the gradient of ", detail::format_point(p),
+                                        (p - center_).norm(), value_out ? result.value : largest_slope,
+                                        std::numeric_limits<double>::min(), std::numeric_limits<double>::max()));
+    }
   }
   // Off the centre, inside the support, ∇f = w K'(r) (P − C)/r is not 0
   // where f is not: a 0 is an underflow of K' (a Cauchy point at r = 1.4e100:

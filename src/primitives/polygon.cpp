@@ -328,7 +328,7 @@ double Polygon::restore_value(double f, const char* function, const Vec3& p) con
 }
 
 Vec3 Polygon::restore_gradient(const std::array<double, 3>& g, const char* function, const Vec3& p) const {
-  return frame_.restore_gradient(to_vec3(g), value_power_ - 1, function, p);
+  return frame_.restore_gradient(to_vec3(g), value_power_ - 1, std::isfinite(support_radius_), function, p);
 }
 
 double Polygon::value(const Vec3& p) const {

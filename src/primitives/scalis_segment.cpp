@@ -151,7 +151,7 @@ std::string ScalisSegment::evaluator_name() const { return name_; }
     Vec3 world;
     *grad = to_array(restore_gradient_common(scaled, factors_.gradient, world)
                          ? world
-                         : frame_.restore_gradient(scaled, -1, name_, p));
+                         : frame_.restore_gradient(scaled, -1, may_vanish_, name_, p));
   }
   if (!want_value) return 0.0;
   double world;

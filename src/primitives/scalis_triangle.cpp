@@ -174,7 +174,7 @@ FieldSample ScalisTriangle::restore(double F, const Vec3* grad, const Vec3& p) c
   const bool may_vanish = kernels::family_facts(kernel_.family).finite_support;  // outside its support
   FieldSample sample;
   sample.value = frame_.restore_value(scale * F, 0, may_vanish, what, p);
-  if (grad != nullptr) sample.gradient = frame_.restore_gradient(scale * *grad, -1, what, p);
+  if (grad != nullptr) sample.gradient = frame_.restore_gradient(scale * *grad, -1, may_vanish, what, p);
   return sample;
 }
 

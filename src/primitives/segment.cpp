@@ -105,6 +105,7 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   // except where the kernel itself vanishes or underflows (beyond a finite
   // support, far from a Gaussian: 0 is then the correctly rounded value).
   may_vanish_ = facts.vanishes_far || std::any_of(weight.begin(), weight.end(), [](double w) { return w < 0.0; });
+  kernel_vanishes_far_ = facts.vanishes_far;
   input_.a = to_array(frame_.point(a));
   input_.b = to_array(frame_.point(b));
   input_.w = {0.0, 0.0, 0.0, 0.0};
@@ -222,7 +223,7 @@ namespace {
 [[gnu::always_inline]] inline Vec3 Segment::restore_gradient(const std::array<double, 3>& g, const Vec3& p) const {
   Vec3 world;
   if (restore_gradient_common(to_vec3(g), factors_.gradient, world)) return world;
-  return frame_.restore_gradient(to_vec3(g), value_power_ - 1, generated_->name, p);
+  return frame_.restore_gradient(to_vec3(g), value_power_ - 1, kernel_vanishes_far_, generated_->name, p);
 }
 
 double Segment::value(const Vec3& p) const {

@@ -121,8 +121,10 @@ class ScaledFrame {
   /// largest component must come back a normal double (or all be 0, but
   /// not at a P farther than far_frame_distance in the frame: an
   /// underflow there); the others may underflow (they are below 2^−1022 of
-  /// |∇f| relative to it).
-  Vec3 restore_gradient(const Vec3& gradient, int power, const char* what, const Vec3& p) const;
+  /// |∇f| relative to it). With `may_vanish` (a kernel that is 0 or
+  /// underflows far away: compact support, the Gaussian) a frame gradient
+  /// that is 0 or subnormal is returned as it is.
+  Vec3 restore_gradient(const Vec3& gradient, int power, bool may_vanish, const char* what, const Vec3& p) const;
 
  private:
   int exponent_ = 0;

@@ -56,13 +56,36 @@ struct GaussianKernel {
 
   template <class T>
   T value(const T& r) const {
-    using std::exp;
-    return T(b) * exp(-T(a) * r * r);
+    return times_exp_minus(T(b), T(a) * r * r);
   }
   template <class T>
   T derivative(const T& r) const {
+    return times_exp_minus(T(-2) * T(a) * T(b) * r, T(a) * r * r);
+  }
+
+  /// c e^(−x), x ≥ 0. Far away (x above ~700 in double) e^(−x) alone is
+  /// subnormal or 0 while a large c (the height b) lifts the product back
+  /// into the normal range (b = 1e300 at r = 28/√a: 3.3e-41, computed as 0);
+  /// there e^(−x) is applied as 2 or 4 equal normal factors e^(−x/n) (x/n
+  /// exact), the first with c, so that only the last product rounds into
+  /// the subnormal range. Elsewhere the plain product, bit for bit; and
+  /// always for an enclosure type (Interval: no numeric_limits), whose
+  /// bounds are outward-rounded either way.
+  template <class T>
+  static T times_exp_minus(const T& c, const T& x) {
     using std::exp;
-    return T(-2) * T(a) * T(b) * r * exp(-T(a) * r * r);
+    if constexpr (!std::numeric_limits<T>::is_specialized) {
+      return c * exp(-x);
+    } else {
+      const T limit = T(0.69) * T(-std::numeric_limits<T>::min_exponent);  // e^(−limit) is normal
+      if (x < limit) return c * exp(-x);
+      if (!(x < T(4) * limit)) return T(0);  // below e^(−2800): 0 whatever c
+      const int pieces = x < T(2) * limit ? 2 : 4;
+      const T piece = exp(-x / T(pieces));
+      T product = c;
+      for (int k = 0; k < pieces; ++k) product *= piece;
+      return product;
+    }
   }
 
   /// Width of the peak of u ↦ K(√(d² + u²)) = K(d) e^(−a u²): 1/√a.

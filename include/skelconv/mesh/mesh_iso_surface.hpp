@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "skelconv/mesh/bounding_region.hpp"
 #include "skelconv/mesh/implicit_field.hpp"
@@ -67,6 +68,18 @@ struct MeshOptions {
   double progress_interval = 1.0;
 };
 
+/// A part of the surface the grid method lost: its seeds (surface points
+/// found from the skeleton) have no mesh vertex near them, because no grid
+/// node lies inside it (find_missed_parts in mesh_iso_surface.cpp).
+struct MissedPart {
+  Vec3 centre;          ///< the mean of its seeds, inside the part
+  /// The smallest side of its seeds' bounding box that is not 0 (the seeds
+  /// lie around the skeleton point they were shot from): about its
+  /// thickness; 0 when it has one seed.
+  double thickness = 0.0;
+  std::size_t seeds = 0;
+};
+
 /// What the run did and where the time went.
 struct MeshReport {
   Box3 box;                  ///< the box the surface was found in
@@ -77,6 +90,10 @@ struct MeshReport {
   double field_seconds = 0.0;   ///< inside the field (all steps)
   double total_seconds = 0.0;
   double refine_seconds = 0.0;  ///< step 4, field time included
+  /// MeshMethod::grid only: the parts of the surface the grid missed (every
+  /// one thinner than the spacing), thickest first. Empty with cgal, which
+  /// starts from every seed.
+  std::vector<MissedPart> missed_parts;
 };
 
 /// About how many triangles a mesh of facet size h makes of a surface inside

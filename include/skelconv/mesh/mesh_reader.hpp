@@ -3,13 +3,17 @@
 //
 //   * PLY: "ascii 1.0", "binary_little_endian 1.0" or "binary_big_endian
 //     1.0"; the vertex element's x, y, z of any scalar type (char … double,
-//     also int8 … float64); faces from the list property "vertex_indices" (or
+//     also int8 … float64; in ASCII an integer type's words must be whole
+//     numbers within its range); faces from the list property "vertex_indices" (or
 //     "vertex_index"), polygons fan-triangulated; every other element and
 //     property is read past and ignored (normals are not read: the consumer
 //     recomputes what it needs);
-//   * OBJ: "v x y z" and "f i j k …" lines (i, i/t, i//n, i/t/n; negative
-//     indices count from the end), polygons fan-triangulated, other lines
-//     ignored;
+//   * OBJ: "v x y z" (optionally w, or a colour r g b) and "f i j k …"
+//     lines (i, i/t, i//n, i/t/n; negative indices count from the end),
+//     polygons fan-triangulated; "#" comments and the statements that do not
+//     change the shape (vn, vt, vp, g, o, s, usemtl, mtllib and the other
+//     display attributes) skipped; points, lines, free-form geometry and
+//     unknown statements refused at their line;
 //   * OFF: "OFF" or "COFF", the counts, one vertex and one face ("n i0 …",
 //     0-based) per line, colours and "#" comments ignored, polygons
 //     fan-triangulated (CGAL's sample meshes are OFF files);

@@ -144,6 +144,7 @@ class Segment {
   /// f can be 0 or tiny (compact kernel, a negative weight coefficient);
   /// otherwise f > 0 and a 0 or subnormal result is an underflow (an error).
   bool may_vanish_ = false;
+  bool kernel_vanishes_far_ = false;  ///< ∇f may be 0 or subnormal: the kernel vanishes or underflows far away
   /// Everything but P (and the compact clip interval), filled once, in the frame.
   SegmentInput<double> input_;
   const generated::SegmentKernel<double>* generated_ = nullptr;
