@@ -288,7 +288,19 @@ class Simplifier {
     if (!o_.depth) return true;
     for (const Vec4* ball : {&a, &b})
       if ((s.head<3>() - ball->head<3>()).norm() + s.w() <= ball->w()) return true;
-    const double depth = o_.depth(s.head<3>());
+    // The signed distance is 1-Lipschitz: the depth at either end, less or
+    // plus the way to it, decides most candidates without a query (homer:
+    // all but about 900 of 248k a run). The margin, far above the
+    // queries' rounding, keeps every decision the query's own.
+    const Vec3 c = s.head<3>();
+    const double margin = 1e-9 * (c.cwiseAbs().maxCoeff() + s.w());
+    for (const Vec4* ball : {&a, &b}) {
+      const double at = o_.depth(ball->head<3>()), far = (c - ball->head<3>()).norm();
+      const double lower = at - far - margin, upper = at + far + margin;
+      if (lower > 0.0 && s.w() <= lower + o_.overhang) return true;
+      if (upper <= 0.0 || s.w() > upper + o_.overhang) return false;
+    }
+    const double depth = o_.depth(c);
     return depth > 0.0 && s.w() <= depth + o_.overhang;
   }
 

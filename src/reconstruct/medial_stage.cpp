@@ -1,8 +1,10 @@
 // The `medial` stage of reconstruct.hpp: the inner Voronoi graph pruned,
 // simplified to a medial mesh, its tube ends extended and its spheres (centres and radii) fitted
 // (docs/reconstruction_medial.md).
+#include <array>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <numbers>
 #include <optional>
 
@@ -73,8 +75,16 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // The quadric knows planes, not the inside: a sphere merged from a sheet
   // collapsed round a bore may be tangent to all its planes from inside the
   // bore (CGAL's joint: 25 of 296 spheres, up to 18% of the diagonal out).
+  // One query per centre: each candidate asks the depth at the centres of
+  // the two balls it merges, and the budget loop below reruns the
+  // simplification from the same graph, which asks the same centres again.
   const SurfaceQuery shape(surface);
-  quadric.depth = [&shape](const Vec3& c) { return shape.signed_distance(c); };
+  std::map<std::array<double, 3>, double> depth_at;
+  quadric.depth = [&shape, &depth_at](const Vec3& c) {
+    const std::array<double, 3> key{c.x(), c.y(), c.z()};
+    if (const auto at = depth_at.find(key); at != depth_at.end()) return at->second;
+    return depth_at.emplace(key, shape.signed_distance(c)).first->second;
+  };
   quadric.overhang = m.merged_overhang * diagonal;
   QuadricReport q;
   MedialMesh mesh = quadric_medial_mesh(graph, quadric, &q);

@@ -76,7 +76,11 @@ struct QuadricOptions {
   /// collapse keeps one of its ends instead. The quadric alone does not
   /// know the inside: where few planes remain (a sheet collapsed round a
   /// bore), a sphere tangent to all of them lies anywhere, often in the
-  /// bore with a radius several times the wall's.
+  /// bore with a radius several times the wall's. It must be 1-Lipschitz
+  /// (a signed distance is): a candidate is decided from the depths at the
+  /// centres of the two balls it merges where they bound it, which asks
+  /// those centres again for every candidate, so a costly `depth` should
+  /// remember its answers.
   std::function<double(const Vec3&)> depth;
   double overhang = 0.0;
 };
