@@ -91,10 +91,10 @@ void SurfaceQuery::Tree::build_pseudonormals() {
     corners.push_back({t[0], t[1], t[2]});
   }
   if (corners.size() != triangles.size()) return;  // a degenerate triangle left out of the tree
-  std::map<std::pair<std::int32_t, std::int32_t>, std::pair<std::size_t, int>> sides;
+  std::map<std::pair<std::int32_t, std::int32_t>, std::size_t> sides;  // directed side → its triangle
   for (std::size_t i = 0; i < corners.size(); ++i)
     for (int k = 0; k < 3; ++k)
-      if (!sides.emplace(std::pair{corners[i][k], corners[i][(k + 1) % 3]}, std::pair{i, k}).second) return;
+      if (!sides.emplace(std::pair{corners[i][k], corners[i][(k + 1) % 3]}, i).second) return;
   std::vector<Vec3> face(corners.size());
   std::vector<Vec3> at_vertex(surface.vertices.size(), Vec3::Zero());
   for (std::size_t i = 0; i < corners.size(); ++i) {
@@ -115,7 +115,7 @@ void SurfaceQuery::Tree::build_pseudonormals() {
       normals[i][std::size_t(k)] = at_vertex[std::size_t(corners[i][k])];
       const auto twin = sides.find({corners[i][(k + 1) % 3], corners[i][k]});
       if (twin == sides.end()) return;  // open or inconsistently oriented
-      normals[i][std::size_t(3 + k)] = face[i] + face[twin->second.first];
+      normals[i][std::size_t(3 + k)] = face[i] + face[twin->second];
     }
     normals[i][6] = face[i];
   }
