@@ -461,5 +461,42 @@ TEST(MeshRepair, HalfOpenBoxAndFlippedTrianglesAreRefused) {
   }
 }
 
+// Two closed parts that cross where they share an edge: the unit cube and
+// a triangular prism on its edge x = y = 1 whose wedge spans the directions
+// 250° to 20° around it (in the plane z = 0, from the edge), 20° of it
+// inside the cube's wedge (180° to 270°). By angle the four triangles at
+// the edge run 20° prism a → b, 180° cube b → a, 250° prism b → a, 270°
+// cube a → b: the wedges nest (250° to 270° inside 180° to 20°), each pair
+// glues a prism face to a cube face, and the fans of the edge's ends form
+// one disk each: no split of the vertices separates the edge. Refused,
+// naming that edge, not passed to the union (which crashed on split
+// vertices at one position: CGAL's diplodocus).
+TEST(MeshRepair, SheetsCrossingAtASplitEdgeAreRefused) {
+  TriangleMesh m = unit_cube();
+  const auto base = std::int32_t(m.vertices.size());
+  const double pi = std::numbers::pi;
+  for (const double z : {0.0, 1.0}) {
+    m.vertices.push_back(Vec3(1, 1, z));
+    m.vertices.push_back(Vec3(1 + std::cos(250 * pi / 180), 1 + std::sin(250 * pi / 180), z));
+    m.vertices.push_back(Vec3(1 + std::cos(20 * pi / 180), 1 + std::sin(20 * pi / 180), z));
+  }
+  // a, b, c counterclockwise seen from +z (sin(20° − 250°) > 0); primes on top
+  const std::int32_t a = base, b = base + 1, c = base + 2, a1 = base + 3, b1 = base + 4, c1 = base + 5;
+  m.triangles.insert(m.triangles.end(), {{a, c, b}, {a1, b1, c1}, {a, b, b1}, {a, b1, a1}, {b, c, c1}, {b, c1, b1},
+                                         {c, a, a1}, {c, a1, c1}});
+  EXPECT_EQ(merge_coincident_vertices(m), 2u);
+  try {
+    check_closed_mesh_repairing(m);
+    ADD_FAILURE() << "crossing sheets at a split edge accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the mesh is not manifold and could not be closed"), std::string::npos) << message;
+    EXPECT_NE(message.find("(the 4 triangles at the edge between vertices 2 and 6, counted from 0, do not bound "
+                           "separate wedges: sheets cross there)"),
+              std::string::npos)
+        << message;
+  }
+}
+
 }  // namespace
 }  // namespace skelconv::reconstruct

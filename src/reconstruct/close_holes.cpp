@@ -43,9 +43,10 @@ using Triangle = std::array<std::int32_t, 3>;
 /// a, u its direction away from the edge: the solid lies at decreasing
 /// angles of an a → b triangle and increasing ones of a b → a triangle).
 /// An edge with more triangles one way than the other is returned in
-/// `failure`.
+/// `failure`; the first edge whose wedges nest is described in `nested`.
 std::vector<std::array<std::int32_t, 3>> glue_sides(const TriangleMesh& mesh, const std::vector<Triangle>& triangles,
-                                                    std::set<std::int32_t>& non_manifold_ends, std::string& failure) {
+                                                    std::set<std::int32_t>& non_manifold_ends, std::string& nested,
+                                                    std::string& failure) {
   std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::pair<std::int32_t, int>>> at_edge;
   for (std::size_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
@@ -101,6 +102,10 @@ std::vector<std::array<std::int32_t, 3>> glue_sides(const TriangleMesh& mesh, co
         if (step < order.size()) open.push_back(k);
       } else if (!open.empty()) {
         const auto& opener = sides[order[open.back()].second];
+        if ((open.back() + 1) % order.size() != k && nested.empty())
+          nested = fmt::format(" (the {} triangles at the edge between vertices {} and {}, counted from 0, do not "
+                               "bound separate wedges: sheets cross there)",
+                               sides.size(), edge.first, edge.second);
         matched[k] = matched[open.back()] = true;
         open.pop_back();
         glued[std::size_t(opener.first)][std::size_t(opener.second)] = side.first;
@@ -124,7 +129,8 @@ struct Soup {
 
 Soup split_fans(const TriangleMesh& mesh, const std::vector<Triangle>& triangles, std::string& failure) {
   Soup soup;
-  const auto glued = glue_sides(mesh, triangles, soup.non_manifold_ends, failure);
+  std::string nested;
+  const auto glued = glue_sides(mesh, triangles, soup.non_manifold_ends, nested, failure);
   if (!failure.empty()) return soup;
   // Corner (t, k) is joined to the corner of the same vertex in the
   // triangle glued to either side of t at it: the classes are the fans.
@@ -166,7 +172,7 @@ Soup split_fans(const TriangleMesh& mesh, const std::vector<Triangle>& triangles
     soup.polygons[c / 3][c % 3] = std::size_t(index);
   }
   if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.polygons))
-    failure = "splitting its non-manifold edges and vertices did not give a manifold surface";
+    failure = "splitting its non-manifold edges and vertices did not give a manifold surface" + nested;
   return soup;
 }
 
