@@ -263,20 +263,25 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       ro.progress(fmt::format("read {} vertices, {} triangles{}", read_vertices, read_triangles,
                               merged ? fmt::format(" ({} vertices at the position of another merged into it)", merged)
                                      : std::string()));
-      if (const reconstruct::SurfaceRepair& s = repair.surface; s.repaired())
-        ro.progress(fmt::format(
-            "the mesh is {}: {}filled {} hole(s) ({} boundary edges, the largest {:.3g}% of the closed area{}), +{} "
-            "triangles, +{} vertices{} ({:.3g} s, --repair)",
-            s.non_manifold_edges ? (s.boundary_edges ? "not manifold and open" : "not manifold") : "open",
-            s.non_manifold_edges ? fmt::format("split {} non-manifold edge(s) ({} vertices left split), ",
-                                               s.non_manifold_edges, s.vertices_split)
-                                 : std::string(),
-            s.holes_filled, s.boundary_edges, 100.0 * s.largest_hole_area,
-            s.holes_not_faired ? fmt::format(", {} not faired", s.holes_not_faired) : std::string(), s.triangles_added,
-            s.vertices_added,
-            s.isolated_vertices_removed ? fmt::format(", {} vertices of no triangle removed", s.isolated_vertices_removed)
-                                        : std::string(),
-            repair_seconds));
+      if (const reconstruct::SurfaceRepair& s = repair.surface; s.repaired()) {
+        std::string done;
+        if (s.non_manifold_edges)
+          done += fmt::format("split {} edge(s) of more than two triangles ({} vertices left split)",
+                              s.non_manifold_edges, s.vertices_split);
+        if (s.holes_filled)
+          done += fmt::format("{}filled {} hole(s) ({} boundary edges, the largest {:.3g}% of the closed area{}), +{} "
+                              "triangles, +{} vertices",
+                              done.empty() ? "" : "; ", s.holes_filled, s.boundary_edges, 100.0 * s.largest_hole_area,
+                              s.holes_not_faired ? fmt::format(", {} not faired", s.holes_not_faired) : std::string(),
+                              s.triangles_added, s.vertices_added);
+        if (s.isolated_vertices_removed)
+          done += fmt::format("{}removed {} vertices of no triangle", done.empty() ? "" : "; ",
+                              s.isolated_vertices_removed);
+        ro.progress(fmt::format("the mesh is {}: {} ({:.3g} s, --repair)",
+                                s.non_manifold_edges ? (s.holes_filled ? "not manifold and open" : "not manifold")
+                                                     : "open",
+                                done, repair_seconds));
+      }
       if (const reconstruct::OverlapRepair& o = repair.overlaps; o.crossing_pairs > 0)
         ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): joined the overlapping parts "
                                 "(boolean union), +{}/-{} triangles, {} in all ({:.3g} s, --repair)",
