@@ -43,19 +43,26 @@ struct ClosedMesh {
 ///    wedge of the solid around it (by angle); then every vertex around
 ///    which the triangles do not form one disk or one half-disk is split,
 ///    one copy per fan (the copies at the original's position);
-/// 2. each boundary cycle is filled by
-///    Polygon_mesh_processing::triangulate_refine_and_fair_hole: a
-///    minimal-area triangulation of the cycle, refined to the density of
-///    the edges around it, and faired (its vertices moved to minimise the
-///    discrete bending energy, tangent to the surface at the cycle). When
-///    the fairing's linear system cannot be solved the refined patch is
-///    kept as it is (that is triangulate_and_refine_hole's result) and the
-///    hole says so (faired = false).
-/// 3. each copy is merged back into its vertex where no edge at it would
-///    have more than two triangles (holes that touched at a vertex);
-///    vertices_split counts those left.
-/// Fails on an edge with more triangles running one way than the other. The result's vertices are the
-/// used ones, in order, then the copies left and the patches' new vertices.
+/// 2. each boundary cycle of that split surface, cut where it passes twice
+///    through one input vertex (two holes touching there: the split
+///    surface runs from one's border into the other's), is filled by the
+///    steps of Polygon_mesh_processing::triangulate_refine_and_fair_hole:
+///    triangulate_hole_polyline (minimal area and dihedral angles, given
+///    the vertices across the cycle's edges), then, on the closed surface
+///    (split again only at edges of more than two triangles), refine (to
+///    the density of the edges around) and fair (the new vertices moved to
+///    minimise the discrete bending energy, tangent to the surface at the
+///    cycle). When the fairing's linear system cannot be solved the refined
+///    patch is kept as it is (triangulate_and_refine_hole's result) and
+///    the hole says so (faired = false);
+/// 3. copies made where the closed surface only touches itself at a vertex
+///    are that vertex again; vertices_split counts the copies left, at the
+///    ends of split edges.
+/// Fails on an edge with more triangles running one way than the other,
+/// on an edge whose wedges nest so that no split of its ends separates
+/// them (sheets crossing there), and when no triangulation of a hole is
+/// found. The result's vertices are the used ones, in order, then the
+/// copies left and the patches' new vertices.
 ClosedMesh close_holes(const TriangleMesh& mesh);
 
 }  // namespace skelconv::detail

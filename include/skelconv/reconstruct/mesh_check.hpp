@@ -125,20 +125,24 @@ struct InputRepair {
 inline constexpr double max_hole_area_fraction = 0.25;
 
 /// check_closed_mesh_joining_overlaps, after closing an open or
-/// edge-non-manifold surface (`skelconv skeletonize --repair`):
-/// 1. edges of more than two triangles are split, one vertex copy per fan
-///    of triangles (holes that touch at a vertex are split there too);
-/// 2. each hole (boundary cycle) is filled by a triangulation refined to
-///    the density around it and faired (CGAL's
+/// edge-non-manifold surface (`skelconv skeletonize --repair`;
+/// docs/reconstruction_input.md, "Open and non-manifold meshes"):
+/// 1. an edge of 2m triangles becomes m edges of two, each pair bounding
+///    one wedge of the solid around it, and each vertex whose triangles
+///    form several fans gets one copy per fan;
+/// 2. each hole (boundary cycle, cut where it passes twice through one
+///    vertex: holes that touch there) is triangulated, refined to the
+///    density around it and faired (the steps of CGAL's
 ///    triangulate_refine_and_fair_hole; close_holes.hpp in src/);
-/// 3. the copies of step 1 are merged back when no edge of the closed
-///    surface then has more than two triangles (holes that touched at a
-///    vertex); otherwise all are kept (the surface touches itself there);
-/// 4. then crossings as check_closed_mesh_joining_overlaps (a patch can
-///    cross the surface), and every check again.
+/// 3. copies where the closed surface only touches itself at a vertex are
+///    that vertex again; copies at a split edge stay (vertices_split), and
+///    if the split sheets cross, the mesh is refused (CGAL's union crashed
+///    on distinct vertices at one position);
+/// 4. then crossings as check_closed_mesh_joining_overlaps (a patch, or
+///    the input, can cross the surface), and every check again.
 /// Throws InputError for an inconsistent orientation (not repaired), when
-/// the hole filling fails, and for a hole whose patch is more than
-/// `max_hole_area` of the closed surface's area, naming its size: an
+/// the split or the hole filling fails, and for a hole whose patch is more
+/// than `max_hole_area` of the closed surface's area, naming its size: an
 /// opening that large is a shape left open, and a patch would invent a
 /// large part of the shape. Vertices of no triangle are dropped when the
 /// surface is repaired (each would be a sample of the medial graph).
