@@ -245,8 +245,9 @@ std::string union_failure(const TriangleMesh& input, TriangleMesh& joined) {
     return e.problem().substr(0, e.problem().find("; "));
   }
   // Rounding new vertices to double can make triangles cross again.
-  if (const SelfIntersections left = find_self_intersections(joined); left.pairs > 0)
-    return fmt::format("{} crossing pair(s) left", left.pairs);
+  if (const SelfIntersections left = find_self_intersections(joined); !left.none())
+    return left.degenerate ? fmt::format("{} triangle(s) of zero area made", left.degenerate)
+                           : fmt::format("{} crossing pair(s) left", left.pairs);
   const auto box = [](const TriangleMesh& m) {
     Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
     for (const auto& t : proper_triangles(m))
@@ -267,6 +268,13 @@ std::string union_failure(const TriangleMesh& input, TriangleMesh& joined) {
 OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
   check_closed_mesh(mesh, false);
   const SelfIntersections found = find_self_intersections(mesh);
+  // CGAL's autorefinement does not handle a triangle of zero area where it
+  // meets others: it threw "Non-handled triple intersection of input
+  // triangles" on one lying on another part's face.
+  if (found.degenerate > 0)
+    throw InputError(fmt::format("{}, and the boolean union of --repair cannot cut through such triangles; remove "
+                                 "them (collapse their shortest edge) first",
+                                 degenerate_triangle_problem(found)));
   if (found.pairs == 0) return {};
   detail::JoinedMesh joined = detail::join_overlapping_parts(mesh);
   if (joined.mesh) joined.failure = union_failure(mesh, *joined.mesh);
