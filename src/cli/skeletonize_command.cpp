@@ -257,6 +257,7 @@ int run_skeletonize(const SkeletonizeOptions& options) {
           throw InputError(reconstruct::self_intersection_problem(found) +
                            "; overlapping parts must be joined by a boolean union first (or pass --repair to let "
                            "skeletonize join them)");
+        reconstruct::check_no_nested_parts(input);
       }
     } catch (const InputError& error) {
       throw error.inside(options.input_path);

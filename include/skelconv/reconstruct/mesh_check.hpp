@@ -43,6 +43,17 @@ std::size_t merge_coincident_vertices(TriangleMesh& mesh);
 /// Degenerate triangles (a repeated index) are ignored, as the samplers do.
 void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings = true);
 
+/// Throws InputError when a closed part of `mesh` (triangles joined by
+/// edges) lies inside another: two spheres one in the other, both facing
+/// outwards, enclose the inner one's inside twice, which is not a solid (its
+/// surface is not the boundary of the enclosed volume). Tested by the
+/// winding number of the other parts at a point of each part (its largest
+/// triangle's centroid), so meaningful only for a mesh whose triangles do
+/// not cross (a part that overlaps another has points inside it). Expects a
+/// mesh check_closed_mesh accepts. Called by check_closed_mesh when it tests
+/// crossings.
+void check_no_nested_parts(const TriangleMesh& mesh);
+
 /// Pairs of crossing triangles found by find_self_intersections.
 struct SelfIntersections {
   std::size_t pairs = 0;  ///< crossing pairs in all; 0: none
