@@ -349,6 +349,11 @@ OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
     return {};
   }
   detail::JoinedMesh joined = detail::join_overlapping_parts(mesh);
+  if (joined.refused)
+    throw InputError(fmt::format("the mesh intersects itself ({} crossing pair(s), e.g. triangles {} and {}) through "
+                                 "a vertex where parts touch: {}; the boolean union of --repair cannot cut through "
+                                 "such a vertex; separate the parts there in a modeller first",
+                                 found.pairs, found.first, found.second, joined.failure));
   if (joined.mesh) joined.failure = union_failure(mesh, *joined.mesh);
   if (!joined.failure.empty())
     throw InputError(fmt::format("the mesh intersects itself ({} crossing pair(s), e.g. triangles {} and {}) and the "

@@ -14,6 +14,11 @@ itself somewhere, or nests:
                               nothing crosses, the inner one's inside is enclosed twice
   cubes_degenerate.ply        cubes [0,2]^3 and [1,3]^3 crossing, the first with a zero-area triangle: its edge
                               from (2,2,0) to (2,2,2) split at (2,2,1), on the second cube's face z = 1
+  cubes_vertex_box.ply        cubes_vertex_crossing.ply's two cubes and the box [1,1.8]x[0.5,1]x[0.5,1.5], which
+                              touches the first cube's face x = 1 and the second's y = 1, its edge through the
+                              corner (1,1,1) where the cubes touch
+  cubes_vertex_tetrahedron.ply  the two cubes and a tetrahedron crossing both, its edge from (0.5,0.5,0.5) to
+                              (1.5,1.5,1.5) through the corner where they touch
 """
 import math
 import sys
@@ -78,3 +83,11 @@ m = len(A) - 1
 FA = [t for t in FA if t != (2, 7, 6)] + [(2, 7, m), (m, 7, 6), (2, m, 6)]
 V, F = join((A, FA), (B, FB))
 write("cubes_degenerate.ply", V, F, "two crossing cubes, one with a zero-area triangle on the other's face")
+
+cubes = join(box((0, 0, 0), (1, 1, 1)), box((1, 1, 1), (2, 2, 2)))
+write("cubes_vertex_box.ply", *join(cubes, box((1, 0.5, 0.5), (1.8, 1, 1.5))),
+      "cubes touching at a corner, a box touching both along faces, its edge through the corner")
+# Corners chosen with a positive volume for the faces below (outward).
+T = [(0.5, 0.5, 0.5), (1.5, 1.5, 1.5), (1.5, 0.25, 0.75), (0.25, 1.5, 0.75)]
+write("cubes_vertex_tetrahedron.ply", *join(cubes, (T, [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)])),
+      "cubes touching at a corner, a tetrahedron crossing both through the corner")
