@@ -249,10 +249,15 @@ int run_skeletonize(const SkeletonizeOptions& options) {
           throw InputError(error.problem() + " (or pass --repair to let skeletonize split non-manifold edges and "
                                              "fill holes)");
         }
-        if (const auto found = reconstruct::find_self_intersections(input); found.pairs > 0)
+        const auto found = reconstruct::find_self_intersections(input);
+        if (found.degenerate > 0)
+          throw InputError(reconstruct::degenerate_triangle_problem(found) +
+                           "; remove them (collapse their shortest edge) first");
+        if (found.pairs > 0)
           throw InputError(reconstruct::self_intersection_problem(found) +
                            "; overlapping parts must be joined by a boolean union first (or pass --repair to let "
                            "skeletonize join them)");
+        reconstruct::check_no_nested_parts(input);
       }
     } catch (const InputError& error) {
       throw error.inside(options.input_path);

@@ -16,6 +16,9 @@ namespace skelconv::detail {
 struct JoinedMesh {
   std::optional<TriangleMesh> mesh;
   std::string failure;  ///< when !mesh: what went wrong, in the user's terms
+  /// The failure is a precondition of CGAL's autorefinement that the mesh
+  /// does not meet, found before running it.
+  bool refused = false;
 };
 
 /// `mesh` (closed, manifold, consistently oriented: check_closed_mesh
@@ -24,6 +27,13 @@ struct JoinedMesh {
 /// (CGAL::Polygon_mesh_processing::experimental::
 /// autorefine_and_remove_self_intersections). Vertices the cut adds are
 /// rounded to double: the caller checks the result again.
+/// Refused before the cut (`refused`): a position held by several vertices
+/// of the halfedge mesh (where closed parts touch at a single vertex, split
+/// for CGAL) that lies on a triangle with no corner there. The crossing
+/// curve then passes through two vertices at one point, and CGAL's
+/// corefinement crashed (a segmentation fault: two cubes touching at a
+/// corner and a box touching both along that corner's edges), returned a
+/// non-manifold union or left crossings.
 JoinedMesh join_overlapping_parts(const TriangleMesh& mesh);
 
 }  // namespace skelconv::detail

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -187,6 +188,74 @@ void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles) {
   }
 }
 
+void check_no_nested_parts(const TriangleMesh& mesh) {
+  const auto triangles = proper_triangles(mesh);
+  // Parts by shared edges, not vertices: parts that touch at a vertex only
+  // are distinct parts, and may nest.
+  std::vector<std::int32_t> parent(triangles.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::int32_t(i);
+  std::map<Edge, std::int32_t> first_at;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto [it, added] = first_at.emplace(std::minmax(triangles[t][std::size_t(k)], triangles[t][std::size_t((k + 1) % 3)]),
+                                                std::int32_t(t));
+      if (!added) parent[std::size_t(detail::find_root(parent, std::int32_t(t)))] = detail::find_root(parent, it->second);
+    }
+  struct Part {
+    std::vector<std::size_t> triangles;
+    Vec3 lo = Vec3::Constant(INFINITY), hi = -Vec3::Constant(INFINITY);
+  };
+  std::map<std::int32_t, Part> parts;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    Part& part = parts[detail::find_root(parent, std::int32_t(t))];
+    part.triangles.push_back(t);
+    for (std::int32_t i : triangles[t])
+      part.lo = part.lo.cwiseMin(mesh.vertices[std::size_t(i)]), part.hi = part.hi.cwiseMax(mesh.vertices[std::size_t(i)]);
+  }
+  if (parts.size() < 2) return;
+  const auto corner = [&](std::size_t t, int k) -> const Vec3& {
+    return mesh.vertices[std::size_t(triangles[t][std::size_t(k)])];
+  };
+  // The winding number of a closed part at p: its triangles' solid angles
+  // (Van Oosterom and Strackee) over 4π; 1 inside an outward part, 0 outside.
+  const auto winding = [&](const Part& part, const Vec3& p) {
+    if ((p.array() < part.lo.array()).any() || (p.array() > part.hi.array()).any()) return 0.0;
+    double sum = 0.0;
+    for (std::size_t t : part.triangles) {
+      const Vec3 a = corner(t, 0) - p, b = corner(t, 1) - p, c = corner(t, 2) - p;
+      const double la = a.norm(), lb = b.norm(), lc = c.norm();
+      sum += 2.0 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la);
+    }
+    return sum / (4.0 * std::numbers::pi);
+  };
+  std::size_t nested = 0, example = 0;
+  for (const auto& [root, part] : parts) {
+    // The centroid of the part's largest triangle: away from its edges and
+    // corners, where another part may touch it.
+    std::size_t largest = part.triangles.front();
+    double largest_area = -1.0;
+    for (std::size_t t : part.triangles)
+      if (const double area = (corner(t, 1) - corner(t, 0)).cross(corner(t, 2) - corner(t, 0)).norm(); area > largest_area)
+        largest = t, largest_area = area;
+    const Vec3 p = (corner(largest, 0) + corner(largest, 1) + corner(largest, 2)) / 3.0;
+    double w = 0.0;
+    for (const auto& [other_root, other] : parts)
+      if (other_root != root) w += winding(other, p);
+    // Halfway between 0 and 1: p on another part's face (touching) counts
+    // one half, and is not inside it.
+    if (w > 0.75 && nested++ == 0) example = largest;
+  }
+  if (nested)
+    throw InputError(fmt::format("the mesh has {} closed part(s) inside another part (e.g. the part of triangle {}, "
+                                 "counted from 0), crossing nothing: such a part encloses the inside of the solid "
+                                 "twice; remove it",
+                                 nested, [&] {
+                                   for (std::size_t k = 0; k < mesh.triangles.size(); ++k)
+                                     if (mesh.triangles[k] == triangles[example]) return k;
+                                   return example;
+                                 }()));
+}
+
 void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings) {
   const auto triangles = proper_triangles(mesh);
   if (triangles.empty()) throw InputError("the mesh is empty: it has no triangle");
@@ -206,7 +275,7 @@ void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings) {
                                  "are not supported",
                                  negative));
   check_position(mesh, triangles);
-  if (test_crossings) check_no_self_intersection(mesh);
+  if (test_crossings) check_no_self_intersection(mesh), check_no_nested_parts(mesh);
 }
 
 namespace {
@@ -245,8 +314,9 @@ std::string union_failure(const TriangleMesh& input, TriangleMesh& joined) {
     return e.problem().substr(0, e.problem().find("; "));
   }
   // Rounding new vertices to double can make triangles cross again.
-  if (const SelfIntersections left = find_self_intersections(joined); left.pairs > 0)
-    return fmt::format("{} crossing pair(s) left", left.pairs);
+  if (const SelfIntersections left = find_self_intersections(joined); !left.none())
+    return left.degenerate ? fmt::format("{} triangle(s) of zero area made", left.degenerate)
+                           : fmt::format("{} crossing pair(s) left", left.pairs);
   const auto box = [](const TriangleMesh& m) {
     Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
     for (const auto& t : proper_triangles(m))
@@ -267,8 +337,23 @@ std::string union_failure(const TriangleMesh& input, TriangleMesh& joined) {
 OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
   check_closed_mesh(mesh, false);
   const SelfIntersections found = find_self_intersections(mesh);
-  if (found.pairs == 0) return {};
+  // CGAL's autorefinement does not handle a triangle of zero area where it
+  // meets others: it threw "Non-handled triple intersection of input
+  // triangles" on one lying on another part's face.
+  if (found.degenerate > 0)
+    throw InputError(fmt::format("{}, and the boolean union of --repair cannot cut through such triangles; remove "
+                                 "them (collapse their shortest edge) first",
+                                 degenerate_triangle_problem(found)));
+  if (found.pairs == 0) {
+    check_no_nested_parts(mesh);
+    return {};
+  }
   detail::JoinedMesh joined = detail::join_overlapping_parts(mesh);
+  if (joined.refused)
+    throw InputError(fmt::format("the mesh intersects itself ({} crossing pair(s), e.g. triangles {} and {}) through "
+                                 "a vertex where parts touch: {}; the boolean union of --repair cannot cut through "
+                                 "such a vertex; separate the parts there in a modeller first",
+                                 found.pairs, found.first, found.second, joined.failure));
   if (joined.mesh) joined.failure = union_failure(mesh, *joined.mesh);
   if (!joined.failure.empty())
     throw InputError(fmt::format("the mesh intersects itself ({} crossing pair(s), e.g. triangles {} and {}) and the "
@@ -288,6 +373,9 @@ OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
   repair.triangles_removed = proper - kept;
   repair.triangles_added = joined.mesh->triangles.size() - kept;
   mesh = std::move(*joined.mesh);
+  // The union removes what lies inside another part only where parts
+  // cross: a part nested whole in another, crossing nothing, is kept.
+  check_no_nested_parts(mesh);
   return repair;
 }
 

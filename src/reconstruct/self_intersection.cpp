@@ -46,6 +46,10 @@ SelfIntersections find_self_intersections(const TriangleMesh& mesh) {
                           boost::make_function_output_iterator([&](const std::pair<Face, Face>& p) {
                             const std::size_t a = std::size_t(p.first), b = std::size_t(p.second);
                             const std::size_t ta = split.triangle_of[a], tb = split.triangle_of[b];
+                            if (a == b) {  // a degenerate face
+                              if (found.degenerate++ == 0) found.first_degenerate = ta;
+                              return;
+                            }
                             if (shared_positions(mesh.triangles[ta], mesh.triangles[tb]) >
                                 shared(split.polygons[a], split.polygons[b]))
                               return;
@@ -59,8 +63,16 @@ std::string self_intersection_problem(const SelfIntersections& found) {
                      found.second, found.pairs);
 }
 
+std::string degenerate_triangle_problem(const SelfIntersections& found) {
+  return fmt::format("the mesh has {} triangle(s) of zero area (e.g. triangle {}, counted from 0: its corners are "
+                     "collinear)",
+                     found.degenerate, found.first_degenerate);
+}
+
 void check_no_self_intersection(const TriangleMesh& mesh) {
   const SelfIntersections found = find_self_intersections(mesh);
+  if (found.degenerate > 0)
+    throw InputError(degenerate_triangle_problem(found) + "; remove them (collapse their shortest edge) first");
   if (found.pairs > 0)
     throw InputError(self_intersection_problem(found) + "; overlapping parts must be joined by a boolean union first");
 }

@@ -43,10 +43,26 @@ std::size_t merge_coincident_vertices(TriangleMesh& mesh);
 /// Degenerate triangles (a repeated index) are ignored, as the samplers do.
 void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings = true);
 
+/// Throws InputError when a closed part of `mesh` (triangles joined by
+/// edges) lies inside another: two spheres one in the other, both facing
+/// outwards, enclose the inner one's inside twice, which is not a solid (its
+/// surface is not the boundary of the enclosed volume). Tested by the
+/// winding number of the other parts at a point of each part (its largest
+/// triangle's centroid), so meaningful only for a mesh whose triangles do
+/// not cross (a part that overlaps another has points inside it). Expects a
+/// mesh check_closed_mesh accepts. Called by check_closed_mesh when it tests
+/// crossings.
+void check_no_nested_parts(const TriangleMesh& mesh);
+
 /// Pairs of crossing triangles found by find_self_intersections.
 struct SelfIntersections {
   std::size_t pairs = 0;  ///< crossing pairs in all; 0: none
   std::size_t first = 0, second = 0;  ///< the first pair found, indices in mesh.triangles, first < second
+  /// Triangles of zero area (collinear corners, exactly), which CGAL reports
+  /// as crossing themselves: not counted in `pairs`.
+  std::size_t degenerate = 0;
+  std::size_t first_degenerate = 0;  ///< index in mesh.triangles
+  bool none() const { return pairs == 0 && degenerate == 0; }
 };
 
 /// The pairs of triangles of `mesh` that cross (CGAL
@@ -58,6 +74,10 @@ SelfIntersections find_self_intersections(const TriangleMesh& mesh);
 /// "the mesh intersects itself: triangles I and J cross (N crossing pair(s)
 /// in all)": the problem, without what to do about it.
 std::string self_intersection_problem(const SelfIntersections& found);
+
+/// "the mesh has N triangle(s) of zero area (e.g. triangle I, ...)": the
+/// problem when found.degenerate > 0, without what to do about it.
+std::string degenerate_triangle_problem(const SelfIntersections& found);
 
 /// Throws InputError naming the first pair of crossing triangles (indices
 /// in `mesh.triangles`) and how many pairs cross (find_self_intersections):
