@@ -97,26 +97,31 @@ FieldSample exact_sample_of_ruled(const Primitive& primitive, const Vec3& p, Nee
 /// their bound m g of |∇f|/f, far_segment_rule.hpp). A segment whose rule
 /// would need more nodes than the longest takes the exact path. Within a
 /// chunk the terms are added by node count (the exact ones first), then
-/// in order: the same additions on every machine.
-template <class Need>
+/// in order: the same additions on every machine. `Degree` and `Scalis`:
+/// those of every rule when the list is of one kind and degree (the
+/// rules' loops then unrolled, and each n-node sum looked up once per
+/// group), else 0 and −1 (read per rule); the same operations either way.
+template <int Degree, int Scalis, class Need>
 void add_segments_within(const std::vector<Primitive>& primitives, const std::vector<std::string>& locations,
                          const std::vector<FarSegmentRule>& rules, const Vec3& p, Need need, double tolerance,
                          FieldSample& total) {
+  constexpr bool uniform = Degree > 0 && Scalis >= 0;
   const std::size_t count = rules.size();
+  const bool gradient = need != Need::value;
   // Q at the ends of every segment, read by both the lower bound and the
   // choice of rules.
   boost::container::small_vector<FarSegmentRule::EndSquares, far_rule_chunk> ends(count);
   double lower = 0;
   for (std::size_t k = 0; k < count; ++k) {
     ends[k] = rules[k].end_squares(p);
-    lower += rules[k].lower_bound(ends[k]);
+    lower += rules[k].template lower_bound<Degree>(ends[k]);
   }
   const double budget = tolerance * lower / double(count);
   constexpr std::size_t groups = FarSegmentRule::max_nodes / 2 + 1;  // 0 (exact), 2, 4, …, max_nodes nodes
   std::size_t position = 0;  // the segment being evaluated
   const auto add = [&](const FieldSample& term) {
     if (need != Need::gradient) total.value += term.value;  // else the value is not asked for
-    if (need != Need::value) total.gradient += term.gradient;
+    if (gradient) total.gradient += term.gradient;
   };
   try {
     for (std::size_t first = 0; first < count; first += far_rule_chunk) {
@@ -125,18 +130,31 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
       std::array<std::uint8_t, far_rule_chunk> order;  // positions − first, grouped by node count
       std::array<std::size_t, groups + 1> start{};
       for (std::size_t k = 0; k < size; ++k) {
-        nodes[k] = std::uint8_t(budget > 0.0 ? rules[first + k].nodes(ends[first + k], budget) : 0);
+        nodes[k] = std::uint8_t(budget > 0.0 ? rules[first + k].template nodes<Degree, Scalis>(ends[first + k], budget)
+                                             : 0);
         ++start[nodes[k] / 2 + 1];
       }
       for (std::size_t g = 1; g <= groups; ++g) start[g] += start[g - 1];
       for (std::size_t k = 0; k < size; ++k) order[start[nodes[k] / 2]++] = std::uint8_t(k);
+      FarSegmentRule::NodeRule rule;  // of rule_nodes nodes (uniform lists)
+      int rule_nodes = 0;
       for (std::size_t j = 0; j < size; ++j) {
         position = first + order[j];
         FieldSample term;
         const int n = nodes[order[j]];
-        if (n == 0 || !rules[position].evaluate_nodes(p, n, need != Need::value, term)) {
-          term = exact_sample_of_ruled(primitives[position], p, need);
+        bool done = false;
+        if (n != 0) {
+          if constexpr (uniform) {
+            if (n != rule_nodes) {
+              rule = FarSegmentRule::node_rule(Scalis == 1, Degree, n, gradient);
+              rule_nodes = n;
+            }
+          } else {
+            rule = rules[position].node_rule(n, gradient);
+          }
+          done = rules[position].evaluate_with(rule, p, gradient, term);
         }
+        if (!done) term = exact_sample_of_ruled(primitives[position], p, need);
         add(term);
       }
     }
@@ -145,6 +163,18 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
   } catch (const EvaluationError& error) {
     throw error.inside(locations[position]);
   }
+}
+
+/// add_segments_within for rules of one kind and degree: at [Degree] of the
+/// classical or the SCALIS table (FarSegmentRule's degrees: classical 1–16,
+/// SCALIS 1–10), [0] for a list of mixed kinds or degrees.
+template <class Need>
+using AddSegmentsWithin = void (*)(const std::vector<Primitive>&, const std::vector<std::string>&,
+                                   const std::vector<FarSegmentRule>&, const Vec3&, Need, double, FieldSample&);
+template <int Scalis, class Need, int... Degree>
+constexpr std::array<AddSegmentsWithin<Need>, sizeof...(Degree) + 1> add_segments_within_table(
+    std::integer_sequence<int, Degree...>) {
+  return {&add_segments_within<0, -1, Need>, &add_segments_within<Degree + 1, Scalis, Need>...};
 }
 
 /// The EvaluationError of require_finite_blend, out of line (cold path).
@@ -285,6 +315,15 @@ void Skeleton::prepare() const {
         }
         index->far_rules.push_back(*rule);
       }
+      // One kind and degree throughout: evaluate selects the loops made for it.
+      const auto same = [&](const FarSegmentRule& rule) {
+        return rule.degree() == index->far_rules.front().degree() &&
+               rule.scalis() == index->far_rules.front().scalis();
+      };
+      if (!index->far_rules.empty() && std::all_of(index->far_rules.begin(), index->far_rules.end(), same)) {
+        index->far_rule_degree = index->far_rules.front().degree();
+        index->far_rule_scalis = index->far_rules.front().scalis();
+      }
     }
     cache.index = std::move(index);
     cache.built.store(true, std::memory_order_release);
@@ -301,8 +340,13 @@ FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration accelerati
   const detail::SkeletonIndex& built = *cache.index;
   const detail::SkeletonIndex* index = acceleration == Acceleration::indexed ? &built : nullptr;
   if (tolerance > 0.0 && !built.far_rules.empty()) {
+    static constexpr auto classical = add_segments_within_table<0, Need>(std::make_integer_sequence<int, 16>{});
+    static constexpr auto scalis = add_segments_within_table<1, Need>(std::make_integer_sequence<int, 10>{});
+    const std::size_t degree = std::size_t(built.far_rule_degree);
+    const AddSegmentsWithin<Need> add = built.far_rule_scalis ? scalis[std::min(degree, scalis.size() - 1)]
+                                                              : classical[std::min(degree, classical.size() - 1)];
     FieldSample total;
-    add_segments_within(primitives_, primitive_locations_, built.far_rules, p, need, tolerance, total);
+    add(primitives_, primitive_locations_, built.far_rules, p, need, tolerance, total);
     require_finite_blend(total, need != Need::gradient, need != Need::value, "primitives", p);
     return total;
   }
