@@ -36,6 +36,16 @@ class FieldMeter {
     ImplicitField m = field_;
     m.value = [this](const Vec3& p) { return measure([&] { return field_.value(p); }); };
     m.value_and_gradient = [this](const Vec3& p) { return measure([&] { return field_.value_and_gradient(p); }); };
+    if (field_.value_and_gradient_near) {
+      // The shared work timed as the field's, its evaluations counted.
+      m.value_and_gradient_near = [this](const Vec3& centre, double radius) {
+        const Clock::time_point start = Clock::now();
+        auto near = field_.value_and_gradient_near(centre, radius);
+        seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+        return std::function<FieldSample(const Vec3&)>(
+            [this, near = std::move(near)](const Vec3& p) { return measure([&] { return near(p); }); });
+      };
+    }
     return m;
   }
   void report_progress(bool on) { reporting_ = on && bool(options_.progress); }

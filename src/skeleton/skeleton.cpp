@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -104,15 +105,15 @@ FieldSample exact_sample_of_ruled(const Primitive& primitive, const Vec3& p, Nee
 template <int Degree, int Scalis, class Need>
 void add_segments_within(const std::vector<Primitive>& primitives, const std::vector<std::string>& locations,
                          const std::vector<FarSegmentRule>& rules, const Vec3& p, Need need, double tolerance,
-                         FieldSample& total) {
+                         const std::uint8_t* chosen, FieldSample& total) {
   constexpr bool uniform = Degree > 0 && Scalis >= 0;
   const std::size_t count = rules.size();
   const bool gradient = need != Need::value;
   // Q at the ends of every segment, read by both the lower bound and the
-  // choice of rules.
-  boost::container::small_vector<FarSegmentRule::EndSquares, far_rule_chunk> ends(count);
+  // choice of rules (none where the rules are `chosen` already).
+  boost::container::small_vector<FarSegmentRule::EndSquares, far_rule_chunk> ends(chosen ? 0 : count);
   double lower = 0;
-  for (std::size_t k = 0; k < count; ++k) {
+  for (std::size_t k = 0; k < ends.size(); ++k) {
     ends[k] = rules[k].end_squares(p);
     lower += rules[k].template lower_bound<Degree>(ends[k]);
   }
@@ -130,14 +131,29 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
       std::array<std::uint8_t, far_rule_chunk> order;  // positions − first, grouped by node count
       std::array<std::size_t, groups + 1> start{};
       for (std::size_t k = 0; k < size; ++k) {
-        nodes[k] = std::uint8_t(budget > 0.0 ? rules[first + k].template nodes<Degree, Scalis>(ends[first + k], budget)
-                                             : 0);
+        if (chosen) {
+          nodes[k] = chosen[first + k];
+        } else {
+          nodes[k] = std::uint8_t(
+              budget > 0.0 ? rules[first + k].template nodes<Degree, Scalis>(ends[first + k], budget) : 0);
+        }
         ++start[nodes[k] / 2 + 1];
       }
       for (std::size_t g = 1; g <= groups; ++g) start[g] += start[g - 1];
       for (std::size_t k = 0; k < size; ++k) order[start[nodes[k] / 2]++] = std::uint8_t(k);
-      FarSegmentRule::NodeRule rule;  // of rule_nodes nodes (uniform lists)
-      int rule_nodes = 0;
+      FarSegmentRule::NodeRule rule;  // of its n nodes (lists of one kind and degree: looked up once)
+      static const std::array<std::array<FarSegmentRule::NodeRule, groups>, 2> uniform_rules = [] {
+        std::array<std::array<FarSegmentRule::NodeRule, groups>, 2> made{};
+        if constexpr (uniform) {
+          const int longest = Scalis == 1 ? FarSegmentRule::max_scalis_nodes : FarSegmentRule::max_classical_nodes;
+          for (int n = 2; n <= longest; n += 2) {
+            for (int gradient : {0, 1}) {
+              made[std::size_t(gradient)][std::size_t(n / 2)] = FarSegmentRule::node_rule(Scalis == 1, Degree, n, gradient);
+            }
+          }
+        }
+        return made;
+      }();
       for (std::size_t j = 0; j < size; ++j) {
         position = first + order[j];
         FieldSample term;
@@ -145,10 +161,7 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
         bool done = false;
         if (n != 0) {
           if constexpr (uniform) {
-            if (n != rule_nodes) {
-              rule = FarSegmentRule::node_rule(Scalis == 1, Degree, n, gradient);
-              rule_nodes = n;
-            }
+            rule = uniform_rules[gradient][std::size_t(n / 2)];
           } else {
             rule = rules[position].node_rule(n, gradient);
           }
@@ -170,11 +183,39 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
 /// SCALIS 1–10), [0] for a list of mixed kinds or degrees.
 template <class Need>
 using AddSegmentsWithin = void (*)(const std::vector<Primitive>&, const std::vector<std::string>&,
-                                   const std::vector<FarSegmentRule>&, const Vec3&, Need, double, FieldSample&);
+                                   const std::vector<FarSegmentRule>&, const Vec3&, Need, double,
+                                   const std::uint8_t*, FieldSample&);
 template <int Scalis, class Need, int... Degree>
 constexpr std::array<AddSegmentsWithin<Need>, sizeof...(Degree) + 1> add_segments_within_table(
     std::integer_sequence<int, Degree...>) {
   return {&add_segments_within<0, -1, Need>, &add_segments_within<Degree + 1, Scalis, Need>...};
+}
+
+/// The rules of add_segments_within chosen for every point within `radius`
+/// of `centre` (Skeleton::rules_near), into nodes[k]: Q at the ends bounded
+/// over the ball (FarSegmentRule::ball_nodes), so that f̲ is at most f at
+/// every point of it and each rule meets its share of ε f̲ there.
+/// `Degree`, `Scalis` as in add_segments_within.
+template <int Degree, int Scalis>
+void choose_near(const std::vector<FarSegmentRule>& rules, const Vec3& centre, double radius, double tolerance,
+                 std::uint8_t* nodes) {
+  const std::size_t count = rules.size();
+  boost::container::small_vector<FarSegmentRule::EndRoots, far_rule_chunk> roots(count);
+  double lower = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    roots[k] = rules[k].end_roots(rules[k].end_squares(centre));
+    lower += rules[k].template lower_bound<Degree>(FarSegmentRule::ball_far_squares(roots[k], radius));
+  }
+  const double budget = tolerance * lower / double(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    nodes[k] = std::uint8_t(budget > 0.0 ? rules[k].template ball_nodes<Degree, Scalis>(roots[k], radius, budget) : 0);
+  }
+}
+
+using ChooseNear = void (*)(const std::vector<FarSegmentRule>&, const Vec3&, double, double, std::uint8_t*);
+template <int Scalis, int... Degree>
+constexpr std::array<ChooseNear, sizeof...(Degree) + 1> choose_near_table(std::integer_sequence<int, Degree...>) {
+  return {&choose_near<0, -1>, &choose_near<Degree + 1, Scalis>...};
 }
 
 /// The EvaluationError of require_finite_blend, out of line (cold path).
@@ -330,7 +371,8 @@ void Skeleton::prepare() const {
   });
 }
 
-FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration acceleration, double tolerance) const {
+FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration acceleration, double tolerance,
+                               const std::uint8_t* chosen_nodes) const {
   // Checked once here, so that a bad point is not blamed on a primitive.
   detail::require_finite_query_point(p);
   // prepare()'s test inline: the out-of-line call was ~24 instructions of
@@ -346,7 +388,7 @@ FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration accelerati
     const AddSegmentsWithin<Need> add = built.far_rule_scalis ? scalis[std::min(degree, scalis.size() - 1)]
                                                               : classical[std::min(degree, classical.size() - 1)];
     FieldSample total;
-    add(primitives_, primitive_locations_, built.far_rules, p, need, tolerance, total);
+    add(primitives_, primitive_locations_, built.far_rules, p, need, tolerance, chosen_nodes, total);
     require_finite_blend(total, need != Need::gradient, need != Need::value, "primitives", p);
     return total;
   }
@@ -371,6 +413,34 @@ FieldSample Skeleton::evaluate_primitive_list(const Vec3& p, Need need) const {
 }
 
 double Skeleton::value(const Vec3& p) const { return evaluate(p, Need::value, Acceleration::indexed, 0.0).value; }
+
+Skeleton::NearbyRules Skeleton::rules_near(const Vec3& centre, double radius, double tolerance) const {
+  detail::require_finite_query_point(centre);
+  NearbyRules chosen;
+  chosen.tolerance_ = checked_tolerance(tolerance);
+  if (!(radius >= 0.0 && std::isfinite(radius))) return chosen;
+  const detail::IndexCache& cache = *cache_;
+  if (!cache.built.load(std::memory_order_acquire)) prepare();
+  const detail::SkeletonIndex& built = *cache.index;
+  if (tolerance == 0.0 || built.far_rules.empty()) return chosen;
+  static constexpr auto classical = choose_near_table<0>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto scalis = choose_near_table<1>(std::make_integer_sequence<int, 10>{});
+  const std::size_t degree = std::size_t(built.far_rule_degree);
+  const ChooseNear choose = built.far_rule_scalis ? scalis[std::min(degree, scalis.size() - 1)]
+                                                  : classical[std::min(degree, classical.size() - 1)];
+  chosen.nodes_.resize(built.far_rules.size());
+  choose(built.far_rules, centre, radius, tolerance, chosen.nodes_.data());
+  chosen.centre_ = centre;
+  chosen.radius_ = radius;
+  chosen.index_ = cache_;
+  return chosen;
+}
+
+FieldSample Skeleton::value_and_gradient(const Vec3& p, const NearbyRules& rules) const {
+  const bool inside =
+      rules.radius_ >= 0.0 && rules.index_ == cache_ && (p - rules.centre_).norm() <= rules.radius_;
+  return evaluate(p, Need::both, Acceleration::indexed, rules.tolerance_, inside ? rules.nodes_.data() : nullptr);
+}
 
 double Skeleton::value(const Vec3& p, double tolerance) const {
   return evaluate(p, Need::value, Acceleration::indexed, checked_tolerance(tolerance)).value;

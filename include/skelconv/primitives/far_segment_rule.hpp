@@ -159,9 +159,38 @@ class FarSegmentRule {
   template <int Degree = 0, int Scalis = -1>
   int nodes(const EndSquares& q, double budget) const {
     const double focal_sum = (std::sqrt(q.a) + std::sqrt(q.b)) * two_over_length_;
-    if (!(focal_sum > 2.0 && focal_sum <= std::numeric_limits<double>::max())) return 0;
+    return nodes_between<Degree, Scalis>(focal_sum, focal_sum, budget);
+  }
+  int nodes(const Vec3& p, double budget) const { return nodes(end_squares(p), budget); }
+
+  /// The square roots of Q at the ends (what nodes() takes of them), and
+  /// nodes() for every point within `radius` of P: each √Q(end) moves by
+  /// at most `radius` with P (√(x² + c²) is 1-Lipschitz in x), so S by at
+  /// most 4 radius / L'; the table's bound decreases as S grows and W
+  /// grows with it, so the table is read at the least S and W taken at the
+  /// largest. lower_bound of ball_far_squares bounds f over the ball.
+  struct EndRoots {
+    double a = 0, b = 0;
+  };
+  EndRoots end_roots(const EndSquares& q) const { return {std::sqrt(q.a), std::sqrt(q.b)}; }
+  static EndSquares ball_far_squares(const EndRoots& roots, double radius) {
+    const double largest = std::max(roots.a, roots.b) + radius;
+    return {largest * largest, largest * largest};
+  }
+  template <int Degree = 0, int Scalis = -1>
+  int ball_nodes(const EndRoots& roots, double radius, double budget) const {
+    const double sum = roots.a + roots.b;
+    return nodes_between<Degree, Scalis>((sum - 2 * radius) * two_over_length_, (sum + 2 * radius) * two_over_length_,
+                                         budget);
+  }
+
+  /// nodes() with S at least `focal_sum` for the table and at most
+  /// `focal_sum_weight` for W (the same S at a point).
+  template <int Degree = 0, int Scalis = -1>
+  int nodes_between(double focal_sum, double focal_sum_weight, double budget) const {
+    if (!(focal_sum > 2.0 && focal_sum_weight <= std::numeric_limits<double>::max())) return 0;
     double f_allowed = budget * f_factor_;
-    if (weight_varies_) f_allowed /= weight_bound<Degree, Scalis>(focal_sum);
+    if (weight_varies_) f_allowed /= weight_bound<Degree, Scalis>(focal_sum_weight);
     const double gradient_allowed = f_allowed * gradient_factor_;
     // The bounds decrease with n, so the rules that fit are the even n from
     // some 2 j on, and j − 1 is the number of even rules that do not fit:
@@ -181,7 +210,6 @@ class FarSegmentRule {
     const int longest = Scalis < 0 ? longest_ : Scalis == 1 ? max_scalis_nodes : max_classical_nodes;
     return n > longest ? 0 : n;
   }
-  int nodes(const Vec3& p, double budget) const { return nodes(end_squares(p), budget); }
 
   /// The n-node sum of rules of one kind and degree (n even, 2 … the
   /// longest of the kind), looked up once for a group of segments that
