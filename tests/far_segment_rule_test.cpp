@@ -237,7 +237,9 @@ TEST(FarSegmentRule, RulesChosenNearAPointHoldOverItsBall) {
                                         << tolerance);
         EXPECT_LE(worst.f, 1.0);
         EXPECT_LE(worst.gradient, 1.0);
-        if (tolerance >= 1e-6) EXPECT_GT(worst.approximated, int(centres.size()) * 8 / 2);
+        if (tolerance >= 1e-6) {
+          EXPECT_GT(worst.approximated, int(centres.size()) * 8 / 2);
+        }
         std::printf("near rules, skeleton %d, radius %g, tolerance %.0e: worst error / allowance %.2e (f), "
                     "%.2e (grad f); %d approximated\n",
                     case_index, radius, tolerance, worst.f, worst.gradient, worst.approximated);

@@ -74,6 +74,11 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element, d
         return skeleton.value_and_gradient(p, rules);
       };
     };
+    field.value_near = [&skeleton, tolerance](const Vec3& centre, double radius) {
+      return [&skeleton, rules = skeleton.rules_near(centre, radius, tolerance)](const Vec3& p) {
+        return skeleton.value(p, rules);
+      };
+    };
   }
   field.skeleton_points = skeleton.skeleton_points(points_per_element);
   field.far_field = 0.0;  // every kernel family (docs/mathematics.md §1, §4) decays to 0 at infinity

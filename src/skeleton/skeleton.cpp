@@ -442,6 +442,13 @@ FieldSample Skeleton::value_and_gradient(const Vec3& p, const NearbyRules& rules
   return evaluate(p, Need::both, Acceleration::indexed, rules.tolerance_, inside ? rules.nodes_.data() : nullptr);
 }
 
+double Skeleton::value(const Vec3& p, const NearbyRules& rules) const {
+  const bool inside =
+      rules.radius_ >= 0.0 && rules.index_ == cache_ && (p - rules.centre_).norm() <= rules.radius_;
+  return evaluate(p, Need::value, Acceleration::indexed, rules.tolerance_, inside ? rules.nodes_.data() : nullptr)
+      .value;
+}
+
 double Skeleton::value(const Vec3& p, double tolerance) const {
   return evaluate(p, Need::value, Acceleration::indexed, checked_tolerance(tolerance)).value;
 }

@@ -30,6 +30,8 @@ struct ImplicitField {
   /// necessarily the same bits. Points farther away are evaluated as
   /// value_and_gradient does. Unset: value_and_gradient everywhere.
   std::function<std::function<FieldSample(const Vec3&)>(const Vec3& centre, double radius)> value_and_gradient_near;
+  /// The same for value (a grid cell's corners).
+  std::function<std::function<double(const Vec3&)>(const Vec3& centre, double radius)> value_near;
   /// Points on the skeleton, so that every connected piece of the skeleton
   /// holds some. The mesher shoots rays from those inside the surface to
   /// seed every component (docs/mesh.md, "Seeding").

@@ -159,6 +159,7 @@ class Skeleton {
   };
   NearbyRules rules_near(const Vec3& centre, double radius, double tolerance) const;
   FieldSample value_and_gradient(const Vec3& p, const NearbyRules& rules) const;
+  double value(const Vec3& p, const NearbyRules& rules) const;
   /// The mesher's and the Python module's default (docs/field.md, "Tolerance").
   static constexpr double default_tolerance = 1e-12;
   /// Lists of fewer segments stay exact in the tolerance mode: choosing the
