@@ -188,6 +188,72 @@ TEST(FarSegmentRule, WithinTheToleranceOnMixedLists) {
   expect_within(skeleton, probe_points(skeleton, 300, 32), "40 classical and SCALIS segments");
 }
 
+/// Rules chosen near a centre (Skeleton::rules_near) against the exact
+/// field at points up to `radius` from it, and the plain mode beyond.
+Worst check_near(const Skeleton& skeleton, const std::vector<Vec3>& centres, double radius, double tolerance,
+                 unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Worst worst;
+  const double scale = gradient_scale(skeleton);
+  for (const Vec3& centre : centres) {
+    const Skeleton::NearbyRules rules = skeleton.rules_near(centre, radius, tolerance);
+    for (int k = 0; k < 8; ++k) {
+      Vec3 direction(unit(random), unit(random), unit(random));
+      direction.normalize();
+      // Half of them on the ball's sphere (just inside), where the rules
+      // chosen at the centre would be furthest from their bound.
+      const Vec3 p = centre + (k % 2 == 0 ? 0.999 : std::abs(unit(random))) * radius * direction;
+      const FieldSample exact = skeleton.value_and_gradient(p);
+      const FieldSample near = skeleton.value_and_gradient(p, rules);
+      worst.f = std::max(worst.f, std::abs(near.value - exact.value) / (tolerance * exact.value));
+      worst.gradient = std::max(
+          worst.gradient, (near.gradient - exact.gradient).cwiseAbs().maxCoeff() / (tolerance * scale * exact.value));
+      worst.approximated += near.value != exact.value;
+    }
+    const Vec3 beyond = centre + 1.5 * radius * Vec3::UnitX();  // outside: the plain mode, bit for bit
+    const FieldSample plain = skeleton.value_and_gradient(beyond, tolerance);
+    const FieldSample near = skeleton.value_and_gradient(beyond, rules);
+    EXPECT_EQ(near.value, plain.value);
+    EXPECT_EQ(near.gradient, plain.gradient);
+  }
+  return worst;
+}
+
+TEST(FarSegmentRule, RulesChosenNearAPointHoldOverItsBall) {
+  // Balls from a mesher's (a sixteenth of a facet) to two segment lengths:
+  // rules chosen for the centre alone would be far too short at the
+  // larger balls' edges, where P comes near segments.
+  const Skeleton classical = walk_skeleton({60, 4, 4.0, {1.0, 0.5}}, 41);
+  const Skeleton scalis = scalis_walk_skeleton({24, 4, 1.0, 0.25, 1.3}, 42);
+  const Skeleton scalis_thin = scalis_walk_skeleton({30, 7, 2.0, 0.1, 0.6}, 43);
+  int case_index = 0;
+  for (const Skeleton* skeleton : {&classical, &scalis, &scalis_thin}) {
+    const std::vector<Vec3> centres = probe_points(*skeleton, 60, 44 + unsigned(case_index));
+    for (double radius : {0.0025, 0.1, 0.5, 2.0}) {
+      for (double tolerance : {1e-12, 1e-6}) {
+        const Worst worst = check_near(*skeleton, centres, radius, tolerance, 45 + unsigned(case_index));
+        SCOPED_TRACE(testing::Message() << "skeleton " << case_index << ", radius " << radius << ", tolerance "
+                                        << tolerance);
+        EXPECT_LE(worst.f, 1.0);
+        EXPECT_LE(worst.gradient, 1.0);
+        if (tolerance >= 1e-6) {
+          EXPECT_GT(worst.approximated, int(centres.size()) * 8 / 2);
+        }
+        std::printf("near rules, skeleton %d, radius %g, tolerance %.0e: worst error / allowance %.2e (f), "
+                    "%.2e (grad f); %d approximated\n",
+                    case_index, radius, tolerance, worst.f, worst.gradient, worst.approximated);
+      }
+    }
+    ++case_index;
+  }
+  // A skeleton the mode does not cover (too few segments): the plain, exact field.
+  const Skeleton short_walk = walk_skeleton({5, 4, 4.0, {1.0}}, 46);
+  const Vec3 centre = probe_points(short_walk, 1, 47).front();
+  const Skeleton::NearbyRules rules = short_walk.rules_near(centre, 0.1, 1e-12);
+  EXPECT_EQ(short_walk.value_and_gradient(centre, rules).value, short_walk.value_and_gradient(centre).value);
+}
+
 TEST(FarSegmentRule, ZeroIsTheExactField) {
   const Skeleton skeleton = walk_skeleton({50, 4, 4.0, {1.0}}, 7);
   for (const Vec3& p : probe_points(skeleton, 100, 8)) {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -201,22 +202,43 @@ class SurfaceCells {
   }
 
  private:
-  /// The corner values of a cell, sampled where not yet.
+  /// The corner values of a cell, sampled where not yet: two or more
+  /// through request.level_near around the cell's centre (what the corners
+  /// share done once), one alone through request.level.
   std::array<float, 8> corners(const openvdb::Coord& cell) {
     std::array<float, 8> values;
-    for (int c = 0; c < 8; ++c) values[c] = node_value(cell.offsetBy(c & 1, c >> 1 & 1, c >> 2 & 1));
+    std::array<bool, 8> known;
+    int unknown = 0;
+    for (int c = 0; c < 8; ++c) {
+      known[c] = accessor_.probeValue(cell.offsetBy(c & 1, c >> 1 & 1, c >> 2 & 1), values[c]);
+      unknown += !known[c];
+    }
+    if (unknown == 0) return values;
+    std::function<double(const Vec3&)> near;
+    if (unknown >= 2 && request_.level_near) {
+      const Vec3 centre = request_.box.lo + request_.voxel * (Vec3(cell.x(), cell.y(), cell.z()) + Vec3::Constant(0.5));
+      near = request_.level_near(centre, corner_reach * request_.voxel);
+    }
+    const std::function<double(const Vec3&)>& level = near ? near : request_.level;
+    for (int c = 0; c < 8; ++c) {
+      if (!known[c]) values[c] = sample(cell.offsetBy(c & 1, c >> 1 & 1, c >> 2 & 1), level);
+    }
     return values;
   }
 
-  float node_value(const openvdb::Coord& node) {
-    float value;
-    if (accessor_.probeValue(node, value)) return value;
+  /// Samples `level` at a node and stores it.
+  float sample(const openvdb::Coord& node, const std::function<double(const Vec3&)>& level) {
     const float limit = std::numeric_limits<float>::max();
     const Vec3 p = request_.box.lo + request_.voxel * Vec3(node.x(), node.y(), node.z());
-    value = float(std::clamp(request_.level(p), -double(limit), double(limit)));
+    const float value = float(std::clamp(level(p), -double(limit), double(limit)));
     accessor_.setValue(node, value);
     return value;
   }
+
+  /// A cell's corners lie √3/2 voxel from its centre; a little more covers
+  /// the rounding of their coordinates (a corner found outside would only
+  /// be evaluated as usual).
+  static constexpr double corner_reach = 0.8661;
 
   static bool all_inside(const std::array<std::array<bool, block>, block>& inside) {
     for (const auto& row : inside)

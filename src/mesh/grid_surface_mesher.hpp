@@ -25,6 +25,10 @@ namespace skelconv::detail {
 struct GridSurfaceRequest {
   /// Negative inside, positive outside (iso − f).
   std::function<double(const Vec3&)> level;
+  /// Optional: `level` for points within `radius` of `centre` (a cell's
+  /// corners), with what they share done once (ImplicitField::value_near):
+  /// as accurate, not necessarily the same bits.
+  std::function<std::function<double(const Vec3&)>(const Vec3& centre, double radius)> level_near;
   Box3 box;  ///< contains the whole surface; level > 0 on its faces
   double voxel = 0;
   /// Optional: level = empty_level exactly at every point outside these

@@ -68,6 +68,18 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element, d
     return skeleton.value_and_gradient(p, tolerance);
   };
   field.value = [&skeleton, tolerance](const Vec3& p) { return skeleton.value(p, tolerance); };
+  if (tolerance > 0.0) {
+    field.value_and_gradient_near = [&skeleton, tolerance](const Vec3& centre, double radius) {
+      return [&skeleton, rules = skeleton.rules_near(centre, radius, tolerance)](const Vec3& p) {
+        return skeleton.value_and_gradient(p, rules);
+      };
+    };
+    field.value_near = [&skeleton, tolerance](const Vec3& centre, double radius) {
+      return [&skeleton, rules = skeleton.rules_near(centre, radius, tolerance)](const Vec3& p) {
+        return skeleton.value(p, rules);
+      };
+    };
+  }
   field.skeleton_points = skeleton.skeleton_points(points_per_element);
   field.far_field = 0.0;  // every kernel family (docs/mathematics.md §1, §4) decays to 0 at infinity
   field.support_boxes = support_boxes_of(skeleton);

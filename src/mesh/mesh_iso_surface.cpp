@@ -36,6 +36,25 @@ class FieldMeter {
     ImplicitField m = field_;
     m.value = [this](const Vec3& p) { return measure([&] { return field_.value(p); }); };
     m.value_and_gradient = [this](const Vec3& p) { return measure([&] { return field_.value_and_gradient(p); }); };
+    if (field_.value_and_gradient_near) {
+      // The shared work timed as the field's, its evaluations counted.
+      m.value_and_gradient_near = [this](const Vec3& centre, double radius) {
+        const Clock::time_point start = Clock::now();
+        auto near = field_.value_and_gradient_near(centre, radius);
+        seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+        return std::function<FieldSample(const Vec3&)>(
+            [this, near = std::move(near)](const Vec3& p) { return measure([&] { return near(p); }); });
+      };
+    }
+    if (field_.value_near) {
+      m.value_near = [this](const Vec3& centre, double radius) {
+        const Clock::time_point start = Clock::now();
+        auto near = field_.value_near(centre, radius);
+        seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+        return std::function<double(const Vec3&)>(
+            [this, near = std::move(near)](const Vec3& p) { return measure([&] { return near(p); }); });
+      };
+    }
     return m;
   }
   void report_progress(bool on) { reporting_ = on && bool(options_.progress); }
@@ -187,15 +206,27 @@ constexpr double skeleton_node_nudge = 1e-3;
 /// `skeleton_node_nudge` voxels away instead, which is on the side the
 /// field tends to (two fixed directions, in case the skeleton runs along
 /// the first).
-std::function<double(const Vec3&)> grid_level(const ImplicitField& field, double iso, double voxel) {
-  return [&field, iso, voxel](const Vec3& p) {
-    const double f = field.value(p);
+std::function<double(const Vec3&)> grid_level(const ImplicitField& field, double iso, double voxel,
+                                              std::function<double(const Vec3&)> value = {}) {
+  if (!value) value = field.value;
+  return [&field, iso, voxel, value = std::move(value)](const Vec3& p) {
+    const double f = value(p);
     if (!(f == std::numeric_limits<double>::infinity() && field.infinite_on_skeleton)) return iso - f;
     for (const Vec3& d : {Vec3(0.36, 0.48, 0.8), Vec3(-0.8, 0.36, 0.48)}) {
       const double near = field.value(p + skeleton_node_nudge * voxel * d);
       if (std::isfinite(near)) return iso - near;
     }
     return iso - f;
+  };
+}
+
+/// grid_level for points near `centre` (GridSurfaceRequest::level_near),
+/// through ImplicitField::value_near; none where the field has no value_near.
+std::function<std::function<double(const Vec3&)>(const Vec3&, double)> grid_level_near(const ImplicitField& field,
+                                                                                      double iso, double voxel) {
+  if (!field.value_near) return {};
+  return [&field, iso, voxel](const Vec3& centre, double radius) {
+    return grid_level(field, iso, voxel, field.value_near(centre, radius));
   };
 }
 
@@ -319,6 +350,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   const auto level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); };
   TriangleMesh mesh = options.method == MeshMethod::grid
                           ? detail::grid_surface_mesh({.level = grid_level(metered, iso, run.size),
+                                                       .level_near = grid_level_near(metered, iso, run.size),
                                                        .box = run.box,
                                                        .voxel = run.size,
                                                        .support_boxes = field.support_boxes ? &*field.support_boxes

@@ -2,6 +2,7 @@
 #include "skelconv/mesh/surface_projection.hpp"
 
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -17,9 +18,20 @@ double first_order_distance(const FieldSample& s, double iso) { return std::abs(
 
 bool usable(const FieldSample& s) { return std::isfinite(s.value) && s.gradient.allFinite() && s.gradient.norm() > 0; }
 
+/// The ball around a vertex's start in which Newton's iterates share the
+/// field's work (ImplicitField::value_and_gradient_near), as a fraction of
+/// max_step (the mesh's facet size): a grid vertex starts ~1% of the
+/// spacing from the surface and the steps shrink from there, so nearly
+/// every iterate stays inside; a larger ball would make the shared work
+/// hold over more space (longer rules) for nothing. An iterate outside is
+/// evaluated as usual.
+constexpr double shared_fraction = 1.0 / 16;
+
 /// Newton from p: the final sample if it is within the tolerance (p moved
-/// there), else nothing (p where Newton stopped).
-std::optional<FieldSample> newton(Vec3& p, FieldSample& s, const ImplicitField& field, double iso,
+/// there), else nothing (p where Newton stopped). `evaluate` is the field's
+/// f and ∇f near the start.
+template <class Evaluate>
+std::optional<FieldSample> newton(Vec3& p, FieldSample& s, const Evaluate& evaluate, double iso,
                                   const ProjectionOptions& options) {
   for (int iteration = 0; usable(s); ++iteration) {
     if (first_order_distance(s, iso) <= options.tolerance) return s;
@@ -28,7 +40,7 @@ std::optional<FieldSample> newton(Vec3& p, FieldSample& s, const ImplicitField& 
     if (step.norm() > options.max_step) step *= options.max_step / step.norm();
     // Halve the step until |f − iso| decreases (at most 40 times: 1e-12 of it).
     for (int halving = 0; halving < 40; ++halving, step /= 2) {
-      const FieldSample next = field.value_and_gradient(p + step);
+      const FieldSample next = evaluate(p + step);
       if (usable(next) && std::abs(next.value - iso) < std::abs(s.value - iso)) {
         p += step;
         s = next;
@@ -90,9 +102,12 @@ std::optional<FieldSample> bisect_to_surface(Vec3& p, const FieldSample& at_p, c
 /// p moved onto the surface; its final sample. Throws on failure.
 FieldSample project_point(Vec3& p, const ImplicitField& field, double iso, const ProjectionOptions& options) {
   const Vec3 start = p;
-  const FieldSample at_start = field.value_and_gradient(p);
+  const std::function<FieldSample(const Vec3&)> near =
+      field.value_and_gradient_near ? field.value_and_gradient_near(start, shared_fraction * options.max_step)
+                                    : field.value_and_gradient;
+  const FieldSample at_start = near(p);
   FieldSample s = at_start;
-  if (const auto done = newton(p, s, field, iso, options)) return *done;
+  if (const auto done = newton(p, s, near, iso, options)) return *done;
   // Bisection from where Newton started: its last point may have wandered.
   Vec3 q = start;
   if (const auto done = bisect_to_surface(q, at_start, field, iso, options)) {

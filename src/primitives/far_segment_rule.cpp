@@ -17,6 +17,12 @@ namespace skelconv {
 
 // Named, so that nothing here meets another file's names in a unity build.
 namespace far_rule {
+
+/// The n-node Gauss–Legendre rule on [0, 1] (weights summing to 1).
+struct Rule {
+  std::array<double, FarSegmentRule::max_nodes> t{}, g{};
+};
+
 namespace {
 
 constexpr int max_nodes = FarSegmentRule::max_nodes;
@@ -29,10 +35,6 @@ constexpr int max_scalis_degree = 10;
 // Gauss–Legendre rules of 1 … max_nodes nodes on [0, 1] (weights summing to
 // 1), from long double bisection on the Legendre recurrence: arithmetic only,
 // so the same doubles on every x86-64 machine whatever its libm.
-
-struct Rule {
-  std::array<double, max_nodes> t{}, g{};
-};
 
 /// P_n(x) and P_n'(x) by the three-term recurrence.
 std::pair<long double, long double> legendre(int n, long double x) {
@@ -144,13 +146,6 @@ template <int I>
   if constexpr (I % 2 == 1) result = _mm_mul_pd(result, _mm_sqrt_pd(inverse));
   return result;
 }
-
-/// Σ_j g_j ω̂(t_j) Q̂_j^(−i/2) and, with Gradient, Σ_j g_j ω̂(t_j) Q̂_j^(−i/2−1) (P − Γ(t_j))
-/// (far_segment_rule.hpp, FarSegmentRule::front_).
-struct NodeSums {
-  double f = 0;
-  std::array<double, 3> g{};
-};
 
 using Integrand = FarSegmentRule::Integrand;
 
@@ -337,7 +332,7 @@ bool FarSegmentRule::finish(const Vec3& a, const Vec3& b, int degree) {
   return true;
 }
 
-bool FarSegmentRule::evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const {
+FarSegmentRule::NodeRule FarSegmentRule::node_rule(bool scalis, int degree, int n, bool gradient) {
   using far_rule::sum_nodes_table;
   static constexpr auto values = sum_nodes_table<false, false>(std::make_integer_sequence<int, far_rule::max_degree>{});
   static constexpr auto both = sum_nodes_table<true, false>(std::make_integer_sequence<int, far_rule::max_degree>{});
@@ -345,21 +340,13 @@ bool FarSegmentRule::evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSa
       sum_nodes_table<false, true>(std::make_integer_sequence<int, far_rule::max_scalis_degree>{});
   static constexpr auto scalis_both =
       sum_nodes_table<true, true>(std::make_integer_sequence<int, far_rule::max_scalis_degree>{});
-  const std::size_t degree = std::size_t(degree_), pair = std::size_t(n / 2);
-  const far_rule::SumNodes sum = integrand_.scalis ? (gradient ? scalis_both : scalis_values)[degree][pair]
-                                                   : (gradient ? both : values)[degree][pair];
-  const far_rule::NodeSums sums = sum(far_rule::rules()[std::size_t(n)], p - a_, ab_, integrand_);
-  const double f = front_ * sums.f;
-  if (!(f >= std::numeric_limits<double>::min() && f < infinity)) return false;
-  out.value = f;
-  if (gradient) {
-    const double factor = gradient_front_ * front_;
-    out.gradient = Vec3(factor * sums.g[0], factor * sums.g[1], factor * sums.g[2]);
-    if (!out.gradient.allFinite()) return false;
-  } else {
-    out.gradient = Vec3::Zero();
-  }
-  return true;
+  const std::size_t at = std::size_t(degree), pair = std::size_t(n / 2);
+  return {scalis ? (gradient ? scalis_both : scalis_values)[at][pair] : (gradient ? both : values)[at][pair],
+          &far_rule::rules()[std::size_t(n)]};
+}
+
+bool FarSegmentRule::evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const {
+  return evaluate_with(node_rule(n, gradient), p, gradient, out);
 }
 
 }  // namespace skelconv

@@ -30,6 +30,10 @@ struct SkeletonIndex {
   /// copies of those rules in order, side by side in memory for the
   /// tolerance mode's passes over them; else empty.
   std::vector<FarSegmentRule> far_rules;
+  /// The degree and kind of every far rule when they share both, else 0
+  /// (Skeleton::evaluate then reads them per rule).
+  int far_rule_degree = 0;
+  bool far_rule_scalis = false;
   /// The skeleton is a list of primitives of one type: no blend node below
   /// the root, no weight, no grid (Skeleton::evaluate loops over the
   /// primitives without walking the tree).

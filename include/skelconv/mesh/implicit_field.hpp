@@ -24,6 +24,14 @@ struct ImplicitField {
   std::function<FieldSample(const Vec3&)> value_and_gradient;
   /// f(p) alone (cheaper where the gradient is not needed).
   std::function<double(const Vec3&)> value;
+  /// When set: f and ∇f for a run of points within `radius` of `centre`
+  /// (a Newton projection's iterates), with what they share done once
+  /// (Skeleton::rules_near); as accurate as value_and_gradient, not
+  /// necessarily the same bits. Points farther away are evaluated as
+  /// value_and_gradient does. Unset: value_and_gradient everywhere.
+  std::function<std::function<FieldSample(const Vec3&)>(const Vec3& centre, double radius)> value_and_gradient_near;
+  /// The same for value (a grid cell's corners).
+  std::function<std::function<double(const Vec3&)>(const Vec3& centre, double radius)> value_near;
   /// Points on the skeleton, so that every connected piece of the skeleton
   /// holds some. The mesher shoots rays from those inside the surface to
   /// seed every component (docs/mesh.md, "Seeding").

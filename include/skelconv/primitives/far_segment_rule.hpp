@@ -61,6 +61,16 @@
 
 namespace skelconv {
 
+namespace far_rule {
+struct Rule;  ///< the Gauss–Legendre nodes and weights of one n (far_segment_rule.cpp)
+/// Σ_j g_j ω̂(t_j) Q̂_j^(−i/2) and, with the gradient, Σ_j g_j ω̂(t_j)
+/// Q̂_j^(−i/2−1) (P − Γ(t_j)) (FarSegmentRule::front_).
+struct NodeSums {
+  double f = 0;
+  std::array<double, 3> g{};
+};
+}  // namespace far_rule
+
 /// The bounds of one bin of S for the even rules n = 2, 4, …, max_nodes (at
 /// index n/2 − 1; the rules run two nodes at a time), for f and for ∇f
 /// (far_segment_rule.cpp builds them).
@@ -97,6 +107,21 @@ class FarSegmentRule {
   static std::optional<FarSegmentRule> make_scalis(const Vec3& a, const Vec3& b, int degree, double sigma,
                                                    double tau0, double tau1, double field_scale);
 
+  /// What the rule's nodes sum, besides P and the segment (file comment):
+  /// classical q = 1 + s |P − Γ|² with the weight w; SCALIS
+  /// Q = |P − Γ|² + c(t)², c(t) = c0 + c1 t, with the weight c(t)^(i−1).
+  struct Integrand {
+    bool scalis = false;
+    double s = 0;         ///< classical
+    double c0 = 0, c1 = 0;  ///< SCALIS
+    static constexpr std::size_t weight_count = 4;  ///< w_0 … w_3, as segments (segment.hpp)
+    std::array<double, weight_count> w{};  ///< classical; {1} for SCALIS
+    int weight_degree = 0;
+  };
+
+  int degree() const { return degree_; }
+  bool scalis() const { return integrand_.scalis; }
+
   /// Q at the segment's ends, Q(0) = |P − A|² + c(0)² and Q(1): all that
   /// lower_bound and nodes read of P, computed once for both.
   struct EndSquares {
@@ -111,12 +136,16 @@ class FarSegmentRule {
   /// A lower bound of f(P): L ∫ω · Q_max^(−m), with Q_max = max(Q(0), Q(1))
   /// (Q is convex in t, ω ≥ 0), as L ∫ω q_unit^(−m) · (q_unit / Q_max)^m so
   /// that neither factor leaves the double range for moderate inputs.
-  /// Rounded like any f; 0 where it underflows.
+  /// Rounded like any f; 0 where it underflows. `Degree`: the rule's degree
+  /// when the caller knows it at compile time (the same operations, with
+  /// the loop unrolled), 0 to read it.
+  template <int Degree = 0>
   double lower_bound(const EndSquares& q) const {
+    const int degree = Degree > 0 ? Degree : degree_;
     const double inverse = q_unit_ / std::max(q.a, q.b);
     double power = 1;
-    for (int k = 0; k < degree_ / 2; ++k) power *= inverse;
-    if (degree_ % 2 == 1) power *= std::sqrt(inverse);
+    for (int k = 0; k < degree / 2; ++k) power *= inverse;
+    if (degree % 2 == 1) power *= std::sqrt(inverse);
     return lower_front_ * power;
   }
   double lower_bound(const Vec3& p) const { return lower_bound(end_squares(p)); }
@@ -124,12 +153,44 @@ class FarSegmentRule {
   /// The nodes n of the shortest rule with an even n (the rules run two
   /// nodes at a time) whose bound is at most `budget` for f and
   /// m g · budget for each component of ∇f; 0 where that takes more than
-  /// the longest rule of its kind (or S is not finite).
+  /// the longest rule of its kind (or S is not finite). `Degree` and
+  /// `Scalis` (1 SCALIS, 0 classical): the rule's, when the caller knows
+  /// them at compile time (the same operations), else 0 and −1.
+  template <int Degree = 0, int Scalis = -1>
   int nodes(const EndSquares& q, double budget) const {
     const double focal_sum = (std::sqrt(q.a) + std::sqrt(q.b)) * two_over_length_;
-    if (!(focal_sum > 2.0 && focal_sum <= std::numeric_limits<double>::max())) return 0;
+    return nodes_between<Degree, Scalis>(focal_sum, focal_sum, budget);
+  }
+  int nodes(const Vec3& p, double budget) const { return nodes(end_squares(p), budget); }
+
+  /// The square roots of Q at the ends (what nodes() takes of them), and
+  /// nodes() for every point within `radius` of P: each √Q(end) moves by
+  /// at most `radius` with P (√(x² + c²) is 1-Lipschitz in x), so S by at
+  /// most 4 radius / L'; the table's bound decreases as S grows and W
+  /// grows with it, so the table is read at the least S and W taken at the
+  /// largest. lower_bound of ball_far_squares bounds f over the ball.
+  struct EndRoots {
+    double a = 0, b = 0;
+  };
+  EndRoots end_roots(const EndSquares& q) const { return {std::sqrt(q.a), std::sqrt(q.b)}; }
+  static EndSquares ball_far_squares(const EndRoots& roots, double radius) {
+    const double largest = std::max(roots.a, roots.b) + radius;
+    return {largest * largest, largest * largest};
+  }
+  template <int Degree = 0, int Scalis = -1>
+  int ball_nodes(const EndRoots& roots, double radius, double budget) const {
+    const double sum = roots.a + roots.b;
+    return nodes_between<Degree, Scalis>((sum - 2 * radius) * two_over_length_, (sum + 2 * radius) * two_over_length_,
+                                         budget);
+  }
+
+  /// nodes() with S at least `focal_sum` for the table and at most
+  /// `focal_sum_weight` for W (the same S at a point).
+  template <int Degree = 0, int Scalis = -1>
+  int nodes_between(double focal_sum, double focal_sum_weight, double budget) const {
+    if (!(focal_sum > 2.0 && focal_sum_weight <= std::numeric_limits<double>::max())) return 0;
     double f_allowed = budget * f_factor_;
-    if (weight_varies_) f_allowed /= weight_bound(focal_sum);
+    if (weight_varies_) f_allowed /= weight_bound<Degree, Scalis>(focal_sum_weight);
     const double gradient_allowed = f_allowed * gradient_factor_;
     // The bounds decrease with n, so the rules that fit are the even n from
     // some 2 j on, and j − 1 is the number of even rules that do not fit:
@@ -146,26 +207,41 @@ class FarSegmentRule {
       fitting += (mask & 1) + (mask >> 1);
     }
     const int n = 2 * (1 + int(bound.f.size()) - fitting);
-    return n > longest_ ? 0 : n;
+    const int longest = Scalis < 0 ? longest_ : Scalis == 1 ? max_scalis_nodes : max_classical_nodes;
+    return n > longest ? 0 : n;
   }
-  int nodes(const Vec3& p, double budget) const { return nodes(end_squares(p), budget); }
+
+  /// The n-node sum of rules of one kind and degree (n even, 2 … the
+  /// longest of the kind), looked up once for a group of segments that
+  /// take the same n (Skeleton's tolerance mode evaluates them so).
+  struct NodeRule {
+    far_rule::NodeSums (*sum)(const far_rule::Rule&, const Vec3& pa, const Vec3& ab,
+                              const Integrand& integrand) = nullptr;
+    const far_rule::Rule* nodes = nullptr;
+  };
+  static NodeRule node_rule(bool scalis, int degree, int n, bool gradient);
+  NodeRule node_rule(int n, bool gradient) const { return node_rule(integrand_.scalis, degree_, n, gradient); }
+  /// evaluate_nodes with the n-node sum looked up already (node_rule of
+  /// this rule's kind and degree).
+  bool evaluate_with(const NodeRule& rule, const Vec3& p, bool gradient, FieldSample& out) const {
+    const far_rule::NodeSums sums = rule.sum(*rule.nodes, p - a_, ab_, integrand_);
+    const double f = front_ * sums.f;
+    if (!(f >= std::numeric_limits<double>::min() && f < std::numeric_limits<double>::infinity())) return false;
+    out.value = f;
+    if (gradient) {
+      const double factor = gradient_front_ * front_;
+      out.gradient = Vec3(factor * sums.g[0], factor * sums.g[1], factor * sums.g[2]);
+      if (!out.gradient.allFinite()) return false;
+    } else {
+      out.gradient = Vec3::Zero();
+    }
+    return true;
+  }
 
   /// f(P) and, with `gradient`, ∇f(P) by the n-node rule (n from nodes());
   /// false (`out` unspecified) where the result would not be a normal double
   /// (the exact path then decides).
   bool evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const;
-
-  /// What the rule's nodes sum, besides P and the segment (file comment):
-  /// classical q = 1 + s |P − Γ|² with the weight w; SCALIS
-  /// Q = |P − Γ|² + c(t)², c(t) = c0 + c1 t, with the weight c(t)^(i−1).
-  struct Integrand {
-    bool scalis = false;
-    double s = 0;         ///< classical
-    double c0 = 0, c1 = 0;  ///< SCALIS
-    static constexpr std::size_t weight_count = 4;  ///< w_0 … w_3, as segments (segment.hpp)
-    std::array<double, weight_count> w{};  ///< classical; {1} for SCALIS
-    int weight_degree = 0;
-  };
 
  private:
   FarSegmentRule() = default;
@@ -174,12 +250,18 @@ class FarSegmentRule {
   /// one of them is not a normal double.
   bool finish(const Vec3& a, const Vec3& b, int degree);
   /// W(S) (file comment): |ω| ≤ Ω W on the ellipse.
+  /// `Degree`, `Scalis` as in nodes(): a SCALIS weight is the power
+  /// (weight_degree 0, w_0 = 1, bound_power_ = i − 1), a classical one the
+  /// polynomial (bound_power_ = 0).
+  template <int Degree = 0, int Scalis = -1>
   double weight_bound(double focal_sum) const {
     const double radius = 0.5 + 0.25 * focal_sum;
-    double w = integrand_.w[std::size_t(integrand_.weight_degree)];
-    for (int k = integrand_.weight_degree - 1; k >= 0; --k) w = w * radius + integrand_.w[std::size_t(k)];
+    const int weight_degree = Scalis == 1 ? 0 : integrand_.weight_degree;
+    double w = integrand_.w[std::size_t(weight_degree)];
+    for (int k = weight_degree - 1; k >= 0; --k) w = w * radius + integrand_.w[std::size_t(k)];
     const double linear = bound_base_ + bound_slope_ * radius;
-    for (int k = 0; k < bound_power_; ++k) w *= linear;
+    const int bound_power = Scalis == 0 ? 0 : Scalis == 1 && Degree > 0 ? Degree - 1 : bound_power_;
+    for (int k = 0; k < bound_power; ++k) w *= linear;
     return w;
   }
   /// The bin whose lower edge is the largest at or below S (S > 2, finite).

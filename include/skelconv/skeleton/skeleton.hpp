@@ -28,6 +28,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -135,6 +136,30 @@ class Skeleton {
   /// InputError ("tolerance") unless 0 ≤ tolerance < 1.
   double value(const Vec3& p, double tolerance) const;
   FieldSample value_and_gradient(const Vec3& p, double tolerance) const;
+  /// The tolerance mode's rules chosen once for every point within `radius`
+  /// of `centre` (docs/field.md, "Tolerance", "Near a point"): each
+  /// segment's rule meets its bound at every point of that ball, so a
+  /// sequence of evaluations there (Newton's iterates towards the surface)
+  /// pays for the choice once. Evaluated at a point outside the ball, or on
+  /// a skeleton the tolerance mode does not cover, it is the plain
+  /// tolerance mode. InputError ("tolerance") as above.
+  class NearbyRules {
+   public:
+    NearbyRules() = default;
+
+   private:
+    friend class Skeleton;
+    Vec3 centre_ = Vec3::Zero();
+    double radius_ = -1;  ///< < 0: no choice made
+    double tolerance_ = 0;
+    std::vector<std::uint8_t> nodes_;  ///< per far rule, as the tolerance mode chooses them
+    /// The index they were chosen from (kept alive): a skeleton changed
+    /// since has another, and the choice no longer applies.
+    std::shared_ptr<const void> index_;
+  };
+  NearbyRules rules_near(const Vec3& centre, double radius, double tolerance) const;
+  FieldSample value_and_gradient(const Vec3& p, const NearbyRules& rules) const;
+  double value(const Vec3& p, const NearbyRules& rules) const;
   /// The mesher's and the Python module's default (docs/field.md, "Tolerance").
   static constexpr double default_tolerance = 1e-12;
   /// Lists of fewer segments stay exact in the tolerance mode: choosing the
@@ -169,7 +194,8 @@ class Skeleton {
 
   std::string child_location(NodeId parent) const;
   void changed();
-  FieldSample evaluate(const Vec3& p, Need need, Acceleration acceleration, double tolerance) const;
+  FieldSample evaluate(const Vec3& p, Need need, Acceleration acceleration, double tolerance,
+                       const std::uint8_t* chosen_nodes = nullptr) const;
   FieldSample evaluate_primitive_list(const Vec3& p, Need need) const;
   FieldSample evaluate_child(const Child& child, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
   FieldSample evaluate_leaf(std::size_t k, const Vec3& p, Need need) const;
