@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -83,7 +84,17 @@ std::optional<BatchFailure> run_blocks(std::size_t count, const BatchOptions& op
     work();
   } else {
     std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+    pool.reserve(threads);
+    try {
+      for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      // The system refused one more thread (a thread count far above the
+      // cores, or a memory limit on the stacks): those started, and this
+      // one, do the work, with the same results. The started threads must
+      // be joined whatever happens (a joinable std::thread destroyed calls
+      // std::terminate).
+      work();
+    }
     for (std::thread& thread : pool) thread.join();
   }
   return failure;
