@@ -106,6 +106,9 @@ int run_bound(const BoundOptions& options) {
   return print_all_or_nothing([&] {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     if (options.iso && !std::isfinite(*options.iso)) throw InputError("must be finite", "--iso");
+    // Ignored, it would leave the user waiting on standard input for boxes.
+    if (!options.octree_depth && !options.box.empty())
+      throw InputError("is the box of --octree DEPTH; without --octree the boxes are read from standard input", "--box");
     return options.octree_depth ? octree_lines(skeleton, options)
                                 : bound_lines(skeleton, read_box_input(), options.iso);
   });

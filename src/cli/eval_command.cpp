@@ -43,7 +43,7 @@ double precision. Schema of SKELETON.json: see docs/cli.md.)";
 
 /// The progress lines of a long run on stderr, as `skelconv mesh` prints
 /// its own: at most one a second, none in a run shorter than that, none with
-/// --quiet. Seconds count from the start of the command.
+/// --quiet. Seconds count from when the skeleton file was read.
 class Progress {
  public:
   explicit Progress(bool quiet) : quiet_(quiet) {}
@@ -157,8 +157,10 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
 
 int run_eval(const EvalOptions& options) {
   return print_all_or_nothing([&] {
-    Progress progress(options.quiet);
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
+    // From here: a skeleton file that takes seconds to read (10⁵ points)
+    // is not the points' time.
+    Progress progress(options.quiet);
     const std::string input = read_point_input(stdin, options.limits, [&](std::size_t points) {
       if (progress.due()) progress.print(fmt::format("read {} points", points));
     });
