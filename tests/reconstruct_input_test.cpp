@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -328,6 +329,172 @@ TEST(MeshCheck, OpenMeshNamesAnEdgeAndTheIgnoredTriangles) {
               std::string::npos)
         << message;
     EXPECT_NE(message.find("after ignoring 1 triangle(s) with a repeated vertex"), std::string::npos) << message;
+  }
+}
+
+/// `mesh`'s triangles as the sets of their corners' positions, sorted: the
+/// same surface whatever the vertex numbering and the first corner.
+std::vector<std::array<std::array<double, 3>, 3>> triangle_positions(const TriangleMesh& m) {
+  std::vector<std::array<std::array<double, 3>, 3>> out;
+  for (const auto& t : m.triangles) {
+    std::array<std::array<double, 3>, 3> c;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Vec3& v = m.vertices[std::size_t(t[k])];
+      c[k] = {v.x(), v.y(), v.z()};
+    }
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());  // keeps the orientation
+    out.push_back(c);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The unit cube without its bottom face (triangles {0, 2, 1} and {0, 3, 2},
+// z = 0): one hole of 4 edges, the unit square. Its patch must be the
+// square: any surface through the 4 corners other than the plane z = 0
+// would not be the least-area triangulation (2 triangles of area 1/2, each
+// in z = 0), so the closed mesh is the cube, volume 1 to rounding (the
+// terms are products of 0 and 1, exact), the patch 1/6 of the area.
+// Without --repair the mesh is refused as open, and
+// has_holes_or_non_manifold_edges says --repair would take it.
+TEST(MeshRepair, CubeWithoutAFaceIsClosed) {
+  TriangleMesh cube = unit_cube();
+  cube.triangles.erase(cube.triangles.begin(), cube.triangles.begin() + 2);
+  try {
+    check_closed_mesh(cube);
+    ADD_FAILURE() << "an open cube accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the mesh is open: 4 boundary edges"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(has_holes_or_non_manifold_edges(cube));
+  EXPECT_FALSE(has_holes_or_non_manifold_edges(unit_cube()));
+  const InputRepair repair = check_closed_mesh_repairing(cube);
+  EXPECT_EQ(repair.surface.holes_filled, 1u);
+  EXPECT_EQ(repair.surface.boundary_edges, 4u);
+  EXPECT_EQ(repair.surface.triangles_added, 2u);
+  EXPECT_EQ(repair.surface.vertices_added, 0u);
+  EXPECT_EQ(repair.surface.vertices_split, 0u);
+  EXPECT_NEAR(repair.surface.largest_hole_area, 1.0 / 6.0, 1e-15);
+  EXPECT_EQ(repair.overlaps.crossing_pairs, 0u);
+  EXPECT_NO_THROW(check_closed_mesh(cube));
+  EXPECT_NEAR(six_volume(cube) / 6.0, 1.0, 1e-15);
+  EXPECT_EQ(triangle_positions(cube).size(), 12u);
+  for (const auto& t : triangle_positions(cube)) {
+    // the patch lies in z = 0, as the missing face did
+    const bool bottom = t[0][2] == 0 && t[1][2] == 0 && t[2][2] == 0;
+    if (bottom) EXPECT_LT((Vec3(t[1][0], t[1][1], 0) - Vec3(t[0][0], t[0][1], 0)).cross(Vec3(t[2][0], t[2][1], 0) - Vec3(t[0][0], t[0][1], 0)).z(), 0.0);
+  }
+}
+
+// Two triangular holes that touch at one vertex: the cube without {0, 2, 1}
+// (bottom) and {1, 6, 5} (side x = 1), which share only vertex 1. A
+// triangle's only triangulation is itself, so the repair gives back the
+// cube, each hole filled by its own triangle and vertex 1 whole again (its
+// fans and the two patches make one disk). Filled as one border through
+// both copies of vertex 1, a 6-edge hole, the patch would cross the cube.
+TEST(MeshRepair, HolesTouchingAtAVertexAreFilledApart) {
+  TriangleMesh cube = unit_cube();
+  cube.triangles.erase(cube.triangles.begin() + 7);  // {1, 6, 5}
+  cube.triangles.erase(cube.triangles.begin());      // {0, 2, 1}
+  const InputRepair repair = check_closed_mesh_repairing(cube);
+  EXPECT_EQ(repair.surface.holes_filled, 2u);
+  EXPECT_EQ(repair.surface.triangles_added, 2u);
+  EXPECT_EQ(repair.surface.vertices_split, 0u);
+  EXPECT_EQ(repair.overlaps.crossing_pairs, 0u);
+  EXPECT_EQ(cube.vertices.size(), 8u);
+  EXPECT_EQ(triangle_positions(cube), triangle_positions(unit_cube()));
+}
+
+// Two unit cubes sharing the edge x = y = 1 (the second moved by (1, 1, 0),
+// its vertices at the first's positions merged): that edge has four
+// triangles. Around it, by angle, each cube's two faces bound its own
+// quarter of space, so the repair splits it into one edge per cube: its
+// two ends get one copy each (vertices_split 2), no hole, and the cubes
+// touch along the edge without crossing. Volume 2.
+TEST(MeshRepair, CubesSharingAnEdgeAreSplitThere) {
+  TriangleMesh two = unit_cube();
+  const TriangleMesh other = unit_cube();
+  for (const Vec3& v : other.vertices) two.vertices.push_back(v + Vec3(1, 1, 0));
+  for (auto t : other.triangles) two.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  EXPECT_EQ(merge_coincident_vertices(two), 2u);  // (1, 1, 0) and (1, 1, 1)
+  try {
+    check_closed_mesh(two);
+    ADD_FAILURE() << "a non-manifold edge accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the mesh is not manifold: 1 edges"), std::string::npos) << e.what();
+  }
+  const InputRepair repair = check_closed_mesh_repairing(two);
+  EXPECT_EQ(repair.surface.non_manifold_edges, 1u);
+  EXPECT_EQ(repair.surface.vertices_split, 2u);
+  EXPECT_EQ(repair.surface.holes_filled, 0u);
+  EXPECT_EQ(repair.overlaps.crossing_pairs, 0u);
+  EXPECT_EQ(two.vertices.size(), 16u);
+  EXPECT_NO_THROW(check_closed_mesh(two));
+  EXPECT_NEAR(six_volume(two) / 6.0, 2.0, 1e-15);
+}
+
+// Too large to be a hole: the cube without the three faces at the corner
+// (1, 1, 1) (x = 1, y = 1, z = 1) leaves one hole, a skew hexagon. Any
+// patch spanning it has at least the area of its projection along (1, 1,
+// 1), 3 × 1/√3 = √3, so it would be at least √3 / (3 + √3) = 36.6% of the
+// closed surface: refused, naming the cycle's size. A hole with a flipped
+// triangle beside it is refused for the orientation, not repaired.
+TEST(MeshRepair, HalfOpenBoxAndFlippedTrianglesAreRefused) {
+  TriangleMesh box = unit_cube();
+  box.triangles = {{0, 2, 1}, {0, 3, 2}, {0, 1, 5}, {0, 5, 4}, {3, 0, 4}, {3, 4, 7}};
+  try {
+    check_closed_mesh_repairing(box);
+    ADD_FAILURE() << "a half-open box filled";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("too large to fill: 6 boundary edges"), std::string::npos) << message;
+    EXPECT_NE(message.find("--repair fills up to 25%"), std::string::npos) << message;
+  }
+  TriangleMesh flipped = unit_cube();
+  flipped.triangles.erase(flipped.triangles.begin());
+  std::swap(flipped.triangles[5][1], flipped.triangles[5][2]);
+  try {
+    check_closed_mesh_repairing(flipped);
+    ADD_FAILURE() << "a flipped triangle repaired";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("(--repair does not flip triangles)"), std::string::npos) << e.what();
+  }
+}
+
+// Two closed parts that cross where they share an edge: the unit cube and
+// a triangular prism on its edge x = y = 1 whose wedge spans the directions
+// 250° to 20° around it (in the plane z = 0, from the edge), 20° of it
+// inside the cube's wedge (180° to 270°). By angle the four triangles at
+// the edge run 20° prism a → b, 180° cube b → a, 250° prism b → a, 270°
+// cube a → b: the wedges nest (250° to 270° inside 180° to 20°), each pair
+// glues a prism face to a cube face, and the fans of the edge's ends form
+// one disk each: no split of the vertices separates the edge. Refused,
+// naming that edge, not passed to the union (which crashed on split
+// vertices at one position: CGAL's diplodocus).
+TEST(MeshRepair, SheetsCrossingAtASplitEdgeAreRefused) {
+  TriangleMesh m = unit_cube();
+  const auto base = std::int32_t(m.vertices.size());
+  const double pi = std::numbers::pi;
+  for (const double z : {0.0, 1.0}) {
+    m.vertices.push_back(Vec3(1, 1, z));
+    m.vertices.push_back(Vec3(1 + std::cos(250 * pi / 180), 1 + std::sin(250 * pi / 180), z));
+    m.vertices.push_back(Vec3(1 + std::cos(20 * pi / 180), 1 + std::sin(20 * pi / 180), z));
+  }
+  // a, b, c counterclockwise seen from +z (sin(20° − 250°) > 0); primes on top
+  const std::int32_t a = base, b = base + 1, c = base + 2, a1 = base + 3, b1 = base + 4, c1 = base + 5;
+  m.triangles.insert(m.triangles.end(), {{a, c, b}, {a1, b1, c1}, {a, b, b1}, {a, b1, a1}, {b, c, c1}, {b, c1, b1},
+                                         {c, a, a1}, {c, a1, c1}});
+  EXPECT_EQ(merge_coincident_vertices(m), 2u);
+  try {
+    check_closed_mesh_repairing(m);
+    ADD_FAILURE() << "crossing sheets at a split edge accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the mesh is not manifold and could not be closed"), std::string::npos) << message;
+    EXPECT_NE(message.find("(the 4 triangles at the edge between vertices 2 and 6, counted from 0, do not bound "
+                           "separate wedges: sheets cross there)"),
+              std::string::npos)
+        << message;
   }
 }
 

@@ -82,13 +82,28 @@ std::string stage_report(const reconstruct::Stage& s, const TriangleMesh& input,
                             m.components, m.seconds);
 }
 
-/// The report's "input_repair": null, or what --repair did to a mesh whose
-/// triangles cross (reconstruct::OverlapRepair).
-std::string repair_json(const reconstruct::OverlapRepair& repair, double seconds) {
-  if (repair.crossing_pairs == 0) return "null";
-  return fmt::format("{{\"problem\": \"self_intersection\", \"crossing_pairs\": {}, \"action\": \"boolean_union\", "
-                     "\"triangles_removed\": {}, \"triangles_added\": {}, \"seconds\": {:.3g}}}",
-                     repair.crossing_pairs, repair.triangles_removed, repair.triangles_added, seconds);
+/// The report's "input_repair": null, or what --repair did to the mesh
+/// (reconstruct::InputRepair): "holes" (an open or non-manifold surface
+/// closed) and "self_intersection" (crossings joined), each null when not
+/// needed.
+std::string repair_json(const reconstruct::InputRepair& repair, double seconds) {
+  const reconstruct::SurfaceRepair& s = repair.surface;
+  const reconstruct::OverlapRepair& o = repair.overlaps;
+  if (!s.repaired() && o.crossing_pairs == 0) return "null";
+  const std::string holes =
+      s.repaired() ? fmt::format("{{\"non_manifold_edges\": {}, \"vertices_split\": {}, \"isolated_vertices_removed\": {}, "
+                                 "\"boundary_edges\": {}, \"holes_filled\": {}, \"holes_not_faired\": {}, "
+                                 "\"triangles_added\": {}, \"vertices_added\": {}, \"largest_hole_area\": {:.4g}}}",
+                                 s.non_manifold_edges, s.vertices_split, s.isolated_vertices_removed, s.boundary_edges,
+                                 s.holes_filled, s.holes_not_faired, s.triangles_added, s.vertices_added,
+                                 s.largest_hole_area)
+                   : "null";
+  const std::string union_ =
+      o.crossing_pairs > 0 ? fmt::format("{{\"crossing_pairs\": {}, \"action\": \"boolean_union\", "
+                                         "\"triangles_removed\": {}, \"triangles_added\": {}}}",
+                                         o.crossing_pairs, o.triangles_removed, o.triangles_added)
+                           : "null";
+  return fmt::format("{{\"holes\": {}, \"self_intersection\": {}, \"seconds\": {:.3g}}}", holes, union_, seconds);
 }
 
 std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh& input,
@@ -185,8 +200,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                                   options.max_triangles))
       ->check(count_option());
   command->add_flag("--repair", options.repair,
-                    "A mesh whose triangles cross each other is replaced by the boolean union of its overlapping "
-                    "parts instead of refused");
+                    "Repair the mesh instead of refusing it: split edges shared by more than two triangles, fill "
+                    "holes (each at most 25% of the closed surface's area), and replace a mesh whose triangles cross "
+                    "by the boolean union of its overlapping parts");
   command->add_flag("--quiet", options.quiet, "No progress lines on stderr");
   command->footer("Details: docs/reconstruction.md. Exit status 2 for bad input, 1 if a field cannot be evaluated.");
   return command;
@@ -219,14 +235,20 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     TriangleMesh input = read_mesh(options.input_path, options.max_triangles);
     const std::size_t merged = reconstruct::merge_coincident_vertices(input);
     const std::size_t read_vertices = input.vertices.size() + merged, read_triangles = input.triangles.size();
-    reconstruct::OverlapRepair repair;
+    reconstruct::InputRepair repair;
     const auto repair_start = std::chrono::steady_clock::now();
     try {
       reconstruct::check_mesh_size(input, options.max_triangles);
       if (options.repair) {
-        repair = reconstruct::check_closed_mesh_joining_overlaps(input);
+        repair = reconstruct::check_closed_mesh_repairing(input);
       } else {
-        reconstruct::check_closed_mesh(input, false);
+        try {
+          reconstruct::check_closed_mesh(input, false);
+        } catch (const InputError& error) {
+          if (!reconstruct::has_holes_or_non_manifold_edges(input)) throw;
+          throw InputError(error.problem() + " (or pass --repair to let skeletonize split non-manifold edges and "
+                                             "fill holes)");
+        }
         if (const auto found = reconstruct::find_self_intersections(input); found.pairs > 0)
           throw InputError(reconstruct::self_intersection_problem(found) +
                            "; overlapping parts must be joined by a boolean union first (or pass --repair to let "
@@ -241,11 +263,30 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       ro.progress(fmt::format("read {} vertices, {} triangles{}", read_vertices, read_triangles,
                               merged ? fmt::format(" ({} vertices at the position of another merged into it)", merged)
                                      : std::string()));
-      if (repair.crossing_pairs > 0)
+      if (const reconstruct::SurfaceRepair& s = repair.surface; s.repaired()) {
+        std::string done;
+        if (s.non_manifold_edges)
+          done += fmt::format("split {} edge(s) of more than two triangles ({} vertices left split)",
+                              s.non_manifold_edges, s.vertices_split);
+        if (s.holes_filled)
+          done += fmt::format("{}filled {} hole(s) ({} boundary edges, the largest {:.3g}% of the closed area{}), +{} "
+                              "triangles, +{} vertices",
+                              done.empty() ? "" : "; ", s.holes_filled, s.boundary_edges, 100.0 * s.largest_hole_area,
+                              s.holes_not_faired ? fmt::format(", {} not faired", s.holes_not_faired) : std::string(),
+                              s.triangles_added, s.vertices_added);
+        if (s.isolated_vertices_removed)
+          done += fmt::format("{}removed {} vertices of no triangle", done.empty() ? "" : "; ",
+                              s.isolated_vertices_removed);
+        ro.progress(fmt::format("the mesh is {}: {} ({:.3g} s, --repair)",
+                                s.non_manifold_edges ? (s.holes_filled ? "not manifold and open" : "not manifold")
+                                                     : "open",
+                                done, repair_seconds));
+      }
+      if (const reconstruct::OverlapRepair& o = repair.overlaps; o.crossing_pairs > 0)
         ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): joined the overlapping parts "
                                 "(boolean union), +{}/-{} triangles, {} in all ({:.3g} s, --repair)",
-                                repair.crossing_pairs, repair.triangles_added, repair.triangles_removed,
-                                input.triangles.size(), repair_seconds));
+                                o.crossing_pairs, o.triangles_added, o.triangles_removed, input.triangles.size(),
+                                repair_seconds));
     }
     const TriangleMesh samples = reconstruct::with_sample_noise(input, options.noise);
     reconstruct::Reconstruction r = [&] {

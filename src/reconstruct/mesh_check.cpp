@@ -1,7 +1,8 @@
 // Implementation of skelconv/reconstruct/mesh_check.hpp: plain edge counting
 // (no CGAL) so that the check costs O(n log n) and compiles fast; the
-// self-intersection test and the union that repairs it, which need CGAL,
-// are in self_intersection.cpp and join_overlaps.cpp.
+// self-intersection test, the union that repairs it and the hole filling,
+// which need CGAL, are in self_intersection.cpp, join_overlaps.cpp and
+// close_holes.cpp.
 #include "skelconv/reconstruct/mesh_check.hpp"
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/primitives/segment.hpp"
+#include "close_holes.hpp"
 #include "join_overlaps.hpp"
 #include "union_find.hpp"
 
@@ -38,40 +40,57 @@ std::string example_edge(const Edge& e) {
   return fmt::format(" (e.g. between vertices {} and {}, counted from 0)", e.first, e.second);
 }
 
-/// Every directed edge's count; throws for open, non-manifold, inconsistent.
-/// `dropped` (triangles with a repeated vertex, ignored) is named in the
-/// "open" message: dropping one can leave its neighbours' edges unmatched.
-void check_edges(const std::vector<std::array<std::int32_t, 3>>& triangles, std::size_t dropped) {
+/// The edges of a triangle list by how many triangles use them: an edge of
+/// more than two is non-manifold; of one, a boundary (open); of two in the
+/// same direction, inconsistently oriented. One example of each.
+struct EdgeCounts {
+  std::size_t open = 0, non_manifold = 0, inconsistent = 0;
+  Edge first_open{}, first_non_manifold{}, first_inconsistent{};
+};
+
+EdgeCounts count_edges(const std::vector<std::array<std::int32_t, 3>>& triangles) {
   std::map<Edge, int> directed;
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-  std::size_t open = 0, non_manifold = 0, inconsistent = 0;
-  Edge first_open{}, first_non_manifold{}, first_inconsistent{};
+  EdgeCounts c;
   for (const auto& [e, n] : directed) {
     const auto back = directed.find({e.second, e.first});
     const int reverse = back == directed.end() ? 0 : back->second;
     if (n + reverse > 2) {
-      if (non_manifold++ == 0) first_non_manifold = e;
+      // once per edge: both directions are in the map when both are used
+      if (reverse > 0 && e.first > e.second) continue;
+      if (c.non_manifold++ == 0) c.first_non_manifold = e;
     } else if (n == 2) {
-      if (inconsistent++ == 0) first_inconsistent = e;
+      if (c.inconsistent++ == 0) c.first_inconsistent = e;
     } else if (reverse == 0) {
-      if (open++ == 0) first_open = e;
+      if (c.open++ == 0) c.first_open = e;
     }
   }
-  if (non_manifold)
+  return c;
+}
+
+std::string inconsistent_problem(const EdgeCounts& c) {
+  return fmt::format("the mesh's orientation is inconsistent: {} edges are used twice in the same direction{} (some "
+                     "triangles are flipped)",
+                     c.inconsistent, example_edge(c.first_inconsistent));
+}
+
+/// Throws for open, non-manifold, inconsistent (count_edges).
+/// `dropped` (triangles with a repeated vertex, ignored) is named in the
+/// "open" message: dropping one can leave its neighbours' edges unmatched.
+void check_edges(const std::vector<std::array<std::int32_t, 3>>& triangles, std::size_t dropped) {
+  const EdgeCounts c = count_edges(triangles);
+  if (c.non_manifold)
     throw InputError(fmt::format("the mesh is not manifold: {} edges are shared by more than two triangles{}",
-                                 non_manifold, example_edge(first_non_manifold)));
-  if (open)
+                                 c.non_manifold, example_edge(c.first_non_manifold)));
+  if (c.open)
     throw InputError(fmt::format("the mesh is open: {} boundary edges (holes){}{}; reconstruction needs a closed "
                                  "surface",
-                                 open, example_edge(first_open),
+                                 c.open, example_edge(c.first_open),
                                  dropped ? fmt::format(", after ignoring {} triangle(s) with a repeated vertex",
                                                        dropped)
                                          : std::string()));
-  if (inconsistent)
-    throw InputError(fmt::format("the mesh's orientation is inconsistent: {} edges are used twice in the same "
-                                 "direction{} (some triangles are flipped)",
-                                 inconsistent, example_edge(first_inconsistent)));
+  if (c.inconsistent) throw InputError(inconsistent_problem(c));
 }
 
 /// Six times the signed volume enclosed by each connected component
@@ -269,6 +288,79 @@ OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
   repair.triangles_removed = proper - kept;
   repair.triangles_added = joined.mesh->triangles.size() - kept;
   mesh = std::move(*joined.mesh);
+  return repair;
+}
+
+bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh) {
+  const EdgeCounts c = count_edges(proper_triangles(mesh));
+  return (c.open > 0 || c.non_manifold > 0) && c.inconsistent == 0;
+}
+
+InputRepair check_closed_mesh_repairing(TriangleMesh& mesh, double max_hole_area) {
+  InputRepair repair;
+  const auto triangles = proper_triangles(mesh);
+  const EdgeCounts edges = count_edges(triangles);
+  if (edges.open > 0 || edges.non_manifold > 0) {
+    // A flipped triangle's edges would be split like non-manifold ones and
+    // the holes left filled: the orientation is the user's to fix.
+    if (edges.inconsistent) throw InputError(inconsistent_problem(edges) + " (--repair does not flip triangles)");
+    for (const auto& t : triangles)
+      for (std::int32_t i : t)
+        if (i < 0 || std::size_t(i) >= mesh.vertices.size())
+          throw InputError(fmt::format("a triangle refers to vertex {}, but the mesh has {}", i, mesh.vertices.size()));
+    detail::ClosedMesh closed = detail::close_holes(mesh);
+    if (!closed.mesh)
+      throw InputError(fmt::format("the mesh is {} and could not be closed: {}; close it in a modeller first",
+                                   edges.non_manifold ? "not manifold" : "open", closed.failure));
+    SurfaceRepair& s = repair.surface;
+    s.non_manifold_edges = edges.non_manifold;
+    s.isolated_vertices_removed = closed.isolated_vertices_removed;
+    s.holes_filled = closed.holes.size();
+    double patches = 0.0;
+    const detail::FilledHole* largest = nullptr;
+    for (const detail::FilledHole& h : closed.holes) {
+      s.boundary_edges += h.edges;
+      s.holes_not_faired += !h.faired;
+      s.triangles_added += h.triangles;
+      s.vertices_added += h.vertices;
+      patches += h.patch_area;
+      if (!largest || h.patch_area > largest->patch_area) largest = &h;
+    }
+    // The closed surface's area: the input's triangles and the patches.
+    double area = patches;
+    for (const auto& t : triangles) {
+      const Vec3& a = mesh.vertices[std::size_t(t[0])];
+      area += 0.5 * (mesh.vertices[std::size_t(t[1])] - a).cross(mesh.vertices[std::size_t(t[2])] - a).norm();
+    }
+    if (largest) {
+      s.largest_hole_area = largest->patch_area / area;
+      if (!(s.largest_hole_area <= max_hole_area)) {
+        Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+        for (const Vec3& v : closed.mesh->vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+        throw InputError(fmt::format(
+            "the mesh is open and one of its {} hole(s) is too large to fill: {} boundary edges, {:.3g} times the "
+            "diagonal long, whose patch would be {:.3g}% of the closed surface's area (--repair fills up to "
+            "{:.3g}%: a larger opening is a shape left open, not a missing piece); close it in a modeller first",
+            closed.holes.size(), largest->edges, largest->length / (hi - lo).norm(), 100.0 * s.largest_hole_area,
+            100.0 * max_hole_area));
+      }
+    }
+    s.vertices_split = closed.vertices_split;
+    mesh = std::move(*closed.mesh);
+    // CGAL's union crashed (a segmentation fault in its corefinement, on
+    // CGAL's diplodocus) on a surface with distinct vertices at one
+    // position: where the split sheets also cross, the mesh is refused.
+    if (s.vertices_split > 0)
+      if (const SelfIntersections found = find_self_intersections(mesh); found.pairs > 0)
+        throw InputError(fmt::format(
+            "the mesh is not manifold: {} edges are shared by more than two triangles{}; split along them ({} "
+            "vertices copied), its sheets cross each other ({} crossing pair(s), e.g. triangles {} and {} of the "
+            "split mesh), and the boolean union of --repair cannot join sheets that meet at split vertices; "
+            "separate them in a modeller first",
+            edges.non_manifold, example_edge(edges.first_non_manifold), s.vertices_split, found.pairs, found.first,
+            found.second));
+  }
+  repair.overlaps = check_closed_mesh_joining_overlaps(mesh);
   return repair;
 }
 

@@ -19,6 +19,7 @@
 #include "skelconv/reconstruct/pavlidis.hpp"
 #include "skelconv/reconstruct/surface_fit.hpp"
 #include "skelconv/reconstruct/surface_query.hpp"
+#include "skelconv/primitives/segment.hpp"  // Segment::degenerate_length_ratio
 #include "skelconv/skeleton/skeleton_file.hpp"
 
 namespace skelconv::reconstruct {
@@ -377,6 +378,18 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
 
 namespace {
 
+/// Whether a segment between two skeleton points is one that skeleton files
+/// accept (Segment::degenerate_length_ratio of the larger coordinate). Two
+/// points of a branch can come out of the fit equal to within rounding (an
+/// open box closed by --repair: 1.1e-16 apart); such a piece adds nothing to
+/// the field and would make the written skeleton unreadable, so it is left out
+/// (its neighbours still meet at the same point).
+bool representable_segment(const Vec3& a, const Vec3& b) {
+  const double length = (b - a).norm();
+  const double largest_coordinate = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  return length > 0 && length >= Segment::degenerate_length_ratio * largest_coordinate;
+}
+
 /// The children of a stage's sum blend, one JSON object each, counted by kind.
 std::vector<std::string> blend_children(const Stage& stage, const ReconstructOptions& o, PrimitiveCounts* counts) {
   std::vector<std::string> children;
@@ -387,7 +400,7 @@ std::vector<std::string> blend_children(const Stage& stage, const ReconstructOpt
     for (std::size_t k = 1; k < b.points.size(); ++k) {
       const Vec4& p = b.points[k - 1];
       const Vec4& q = b.points[k];
-      if (p.head<3>() == q.head<3>()) continue;  // a repeated point: no segment
+      if (!representable_segment(p.head<3>(), q.head<3>())) continue;
       children.push_back(fmt::format("{{\"type\": \"scalis_segment\", \"a\": [{:.17g}, {:.17g}, {:.17g}], "
                                      "\"b\": [{:.17g}, {:.17g}, {:.17g}], \"radius\": [{:.17g}, {:.17g}], {}}}",
                                      p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), p.w(), q.w(), kernel));
@@ -415,6 +428,7 @@ std::vector<std::string> blend_children(const Stage& stage, const ReconstructOpt
   const std::string compact = fmt::format(R"("kernel": {{"family": "compact", "degree": 4, "sigma": {:.17g}}})", sigma);
   for (const auto& [i, j] : m.edges) {
     const Vec4 &p = sphere(i), &q = sphere(j);
+    if (!representable_segment(p.head<3>(), q.head<3>())) continue;
     children.push_back(fmt::format("{{\"type\": \"scalis_segment\", \"a\": [{:.17g}, {:.17g}, {:.17g}], "
                                    "\"b\": [{:.17g}, {:.17g}, {:.17g}], \"radius\": [{:.17g}, {:.17g}], {}}}",
                                    p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), p.w(), q.w(), compact));

@@ -8,8 +8,9 @@
 #   MAX_RMS=<r>           its RMS distance / diagonal is below r
 #   SAME_EULER=ON         its meshed surface has the input's Euler characteristic
 #   INPUT_EULER=<n>       the input's Euler characteristic (after any repair) is n
-#   REPAIRED=ON           the report's input_repair names the boolean union of
-#                         crossing triangles; without it, input_repair must be null
+#   REPAIRED=union|holes  the report's input_repair names the boolean union of
+#                         crossing triangles (union) or the holes filled (holes);
+#                         without it, input_repair must be null
 #   ARGS=<options>        more options for skeletonize, separated by spaces (e.g. "--method curve")
 #   EXIT=<code>, STDERR=<substring>: a refused input; then neither <prefix>.json
 #                         nor <prefix>_report.json may exist afterwards.
@@ -79,16 +80,29 @@ if(DEFINED INPUT_EULER AND NOT euler_in EQUAL INPUT_EULER)
   message(FATAL_ERROR "the input's Euler characteristic is ${euler_in}, expected ${INPUT_EULER}\n${run}")
 endif()
 string(JSON repair_type TYPE "${json}" input_repair)
-if(REPAIRED)
+if(REPAIRED STREQUAL "union")
   if(NOT repair_type STREQUAL "OBJECT")
     message(FATAL_ERROR "the report's input_repair is ${repair_type}, expected the repair\n${run}")
   endif()
-  string(JSON action GET "${json}" input_repair action)
-  string(JSON pairs GET "${json}" input_repair crossing_pairs)
+  string(JSON action GET "${json}" input_repair self_intersection action)
+  string(JSON pairs GET "${json}" input_repair self_intersection crossing_pairs)
   message(STATUS "input_repair: ${action}, ${pairs} crossing pairs")
   if(NOT action STREQUAL "boolean_union" OR NOT pairs GREATER 0)
     message(FATAL_ERROR "input_repair: ${action}, ${pairs} crossing pairs; expected boolean_union, > 0\n${run}")
   endif()
+elseif(REPAIRED STREQUAL "holes")
+  if(NOT repair_type STREQUAL "OBJECT")
+    message(FATAL_ERROR "the report's input_repair is ${repair_type}, expected the repair\n${run}")
+  endif()
+  string(JSON holes GET "${json}" input_repair holes holes_filled)
+  string(JSON added GET "${json}" input_repair holes triangles_added)
+  string(JSON largest GET "${json}" input_repair holes largest_hole_area)
+  message(STATUS "input_repair: ${holes} hole(s) filled, +${added} triangles, the largest ${largest} of the area")
+  if(NOT holes GREATER 0 OR NOT added GREATER 0)
+    message(FATAL_ERROR "input_repair: ${holes} holes filled, +${added} triangles; expected > 0\n${run}")
+  endif()
+elseif(DEFINED REPAIRED)
+  message(FATAL_ERROR "REPAIRED=${REPAIRED}: expected union or holes")
 elseif(NOT repair_type STREQUAL "NULL")
   message(FATAL_ERROR "the report's input_repair is ${repair_type}: the input was repaired\n${run}")
 endif()

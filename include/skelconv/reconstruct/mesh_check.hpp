@@ -71,6 +71,12 @@ struct OverlapRepair {
   std::size_t triangles_added = 0;    ///< result triangles not in the input (the pieces of cut ones)
 };
 
+/// Whether `mesh`'s first problem for check_closed_mesh is one that
+/// check_closed_mesh_repairing repairs: an edge of more than two triangles,
+/// or a boundary edge, and no edge used twice in one direction (the
+/// messages of `skeletonize` name --repair for those).
+bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh);
+
 /// check_closed_mesh, except that a mesh whose triangles cross is replaced
 /// by the boundary of the union of the solids its parts enclose (CGAL
 /// Polygon_mesh_processing::experimental::autorefine_and_remove_self_intersections:
@@ -86,5 +92,60 @@ struct OverlapRepair {
 /// surface and bounds no part, CGAL keeps the wrong side (CGAL's elk: 8 of
 /// its 3,290 triangles, inside out).
 OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh);
+
+/// What check_closed_mesh_repairing did to an open or non-manifold surface
+/// (all 0: it was closed and edge-manifold, and left as it was).
+struct SurfaceRepair {
+  std::size_t non_manifold_edges = 0;  ///< in the input: edges of more than two triangles
+  std::size_t boundary_edges = 0;      ///< in the input, after splitting the non-manifold ones
+  /// Vertices left as two or more vertices at one position, one per fan of
+  /// triangles, where merging them back would leave an edge of more than
+  /// two triangles (the surface touches itself along an edge there).
+  std::size_t vertices_split = 0;
+  std::size_t isolated_vertices_removed = 0;  ///< vertices of no triangle: samples off the surface
+  std::size_t holes_filled = 0;
+  std::size_t holes_not_faired = 0;  ///< of those, filled without fairing (its linear system failed)
+  std::size_t triangles_added = 0;
+  std::size_t vertices_added = 0;  ///< inside the patches
+  double largest_hole_area = 0.0;  ///< the largest patch's area / the closed surface's area
+  bool repaired() const { return non_manifold_edges + boundary_edges + isolated_vertices_removed > 0; }
+};
+
+/// What check_closed_mesh_repairing did: the surface closed, then overlaps joined.
+struct InputRepair {
+  SurfaceRepair surface;
+  OverlapRepair overlaps;
+};
+
+/// The largest hole check_closed_mesh_repairing fills, as a fraction of the
+/// closed surface's area. Between the box with one face missing (1/6: a
+/// piece left out, filled) and the half-open shell (a hemisphere's opening
+/// is 1/3 of the closed surface, a sheet's 1/2: an open shape, not a
+/// missing piece, refused).
+inline constexpr double max_hole_area_fraction = 0.25;
+
+/// check_closed_mesh_joining_overlaps, after closing an open or
+/// edge-non-manifold surface (`skelconv skeletonize --repair`;
+/// docs/reconstruction_input.md, "Open and non-manifold meshes"):
+/// 1. an edge of 2m triangles becomes m edges of two, each pair bounding
+///    one wedge of the solid around it, and each vertex whose triangles
+///    form several fans gets one copy per fan;
+/// 2. each hole (boundary cycle, cut where it passes twice through one
+///    vertex: holes that touch there) is triangulated, refined to the
+///    density around it and faired (the steps of CGAL's
+///    triangulate_refine_and_fair_hole; close_holes.hpp in src/);
+/// 3. copies where the closed surface only touches itself at a vertex are
+///    that vertex again; copies at a split edge stay (vertices_split), and
+///    if the split sheets cross, the mesh is refused (CGAL's union crashed
+///    on distinct vertices at one position);
+/// 4. then crossings as check_closed_mesh_joining_overlaps (a patch, or
+///    the input, can cross the surface), and every check again.
+/// Throws InputError for an inconsistent orientation (not repaired), when
+/// the split or the hole filling fails, and for a hole whose patch is more
+/// than `max_hole_area` of the closed surface's area, naming its size: an
+/// opening that large is a shape left open, and a patch would invent a
+/// large part of the shape. Vertices of no triangle are dropped when the
+/// surface is repaired (each would be a sample of the medial graph).
+InputRepair check_closed_mesh_repairing(TriangleMesh& mesh, double max_hole_area = max_hole_area_fraction);
 
 }  // namespace skelconv::reconstruct

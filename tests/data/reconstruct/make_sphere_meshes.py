@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Writes three small closed test meshes of `skelconv skeletonize` (ASCII
+"""Writes small test meshes of `skelconv skeletonize` (ASCII
 PLY) into the current directory; standard library only, same bytes each run:
   sphere.ply               icosphere (3 subdivisions), radius 1: a ball, no curve skeleton
   cube.ply                 unit cube, 8 vertices, 12 triangles: a low-poly mesh
   spheres_overlapping.ply  two icospheres (2 subdivisions) overlapping, one mesh: self-intersecting
+  sphere_open.ply          sphere.ply without the triangles whose centroid is within 25 degrees of the
+                           pole (0, 0, 1): an open mesh of one hole, for `skeletonize --repair`
 """
 import math
 
@@ -56,3 +58,10 @@ V1, F1 = icosphere(2, 1.0, (0, 0, 0))
 V2, F2 = icosphere(2, 1.0, (1.2, 0, 0))
 write("spheres_overlapping.ply", V1 + V2, F1 + [tuple(i + len(V1) for i in t) for t in F2],
       "two overlapping icospheres (radius 1, centres 1.2 apart) in one mesh, no boolean: self-intersecting")
+cap = math.cos(math.radians(25))
+kept = [t for t in F if sum(V[i][2] for i in t) / 3 / math.sqrt(sum((sum(V[i][k] for i in t) / 3) ** 2
+                                                                   for k in range(3))) < cap]
+used = sorted({i for t in kept for i in t})
+renumber = {v: k for k, v in enumerate(used)}
+write("sphere_open.ply", [V[i] for i in used], [tuple(renumber[i] for i in t) for t in kept],
+      "sphere.ply without a polar cap of 25 degrees (the vertices of no triangle left out): one hole")
