@@ -181,21 +181,15 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
   }
 }
 
-/// The most thickness samples sample_layout makes. Each costs a root search
-/// per fit iteration (8,002 samples: 12.7 s for two unit segments at
-/// τ = 1e-3), so a τ far below the segments' length would run for hours;
-/// at τ = 1e-300 the count overflowed int and the fit returned NaN weights.
-constexpr double max_thickness_samples = 100'000;
-
 /// Sample feet: on each edge, t = j/n, j = 0..n, n ≥ samples_per_thickness · length / τ.
 std::vector<ThicknessSample> sample_layout(const SegmentGraph& g, const ThicknessCorrectionOptions& o) {
   double count = 0;
   for (const SegmentGraph::Edge& edge : g.edges)
     count += std::ceil(o.samples_per_thickness * (g.nodes[edge.b] - g.nodes[edge.a]).norm() / o.thickness) + 1;
-  if (!(count <= max_thickness_samples)) {
+  if (!(count <= detail::max_thickness_samples)) {
     throw InputError(fmt::format("{:.6g} asks for {:.3g} thickness samples ({} per thickness along the segments), "
                                  "more than {:.0f}: a thickness that small against the segments would take hours",
-                                 o.thickness, count, o.samples_per_thickness, max_thickness_samples),
+                                 o.thickness, count, o.samples_per_thickness, detail::max_thickness_samples),
                      "thickness");
   }
   std::vector<ThicknessSample> samples;
