@@ -55,6 +55,7 @@ set(SKELCONV_INSTALLED_DETAIL_HEADERS
   clip.hpp
   double_word.hpp
   exact_cross.hpp
+  exp_pieces.hpp
   far_field_series.hpp
   gauss_moments.hpp
   integer_power.hpp

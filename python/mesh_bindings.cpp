@@ -20,6 +20,7 @@
 #include "skelconv/mesh/implicit_field.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
+#include "skelconv/mesh/missed_parts.hpp"
 #include "skelconv/mesh/triangle_mesh.hpp"
 #include "skelconv/reconstruct/mesh_check.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
@@ -104,10 +105,18 @@ py::tuple mesh(const Skeleton& skeleton, std::optional<double> iso, const std::s
   options.size = size;
   options.distance = distance;
   if (max_triangles) options.max_triangles = *max_triangles;
+  MeshReport report;
   const TriangleMesh result = with_argument_names([&] {
     py::gil_scoped_release release;
-    return mesh_iso_surface(skeleton_field(skeleton, 4, tolerance), options);
+    return mesh_iso_surface(skeleton_field(skeleton, 4, tolerance), options, &report);
   });
+  // The command's warning for the parts a grid lost (skelconv/mesh/missed_parts.hpp),
+  // as a Python warning: the mesh is returned, and the caller's warning
+  // filters decide (an "error" filter raises it).
+  if (!report.missed_parts.empty()) {
+    const std::string message = fmt::format("size={:g}: {}", report.size, missed_parts_problem(skeleton, report));
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+  }
   return mesh_arrays(result);
 }
 

@@ -3,6 +3,7 @@
 // sum bit for bit, on every compact primitive type, at random points and at
 // points placed on and just beyond support boundaries; batches give the
 // same bytes for any thread count, and report the lowest failing point.
+#include <algorithm>
 #include <cstring>
 #include <optional>
 #include <random>
@@ -211,6 +212,35 @@ TEST(SkeletonBatch, SameBytesWhateverTheThreadCount) {
               0)
         << threads << " threads";
   }
+}
+
+// BatchOptions::progress: with no interval every block but the last is
+// reported, with the points evaluated so far (one thread: in order), and the
+// samples are those of a batch without it; from several threads the counts
+// grow and stay below the total.
+TEST(SkeletonBatch, ReportsProgressBetweenBlocks) {
+  const Skeleton skeleton = mixed_skeleton(20);
+  const std::vector<Vec3> points = probe_points(skeleton, 100);
+  BatchOptions options;
+  options.threads = 1;
+  options.block_size = 16;
+  const BatchResult quiet = evaluate_batch(skeleton, points, options);
+  std::vector<std::size_t> reported;
+  options.progress = [&](std::size_t evaluated) { reported.push_back(evaluated); };
+  options.progress_interval = 0.0;
+  const BatchResult reporting = evaluate_batch(skeleton, points, options);
+  std::vector<std::size_t> every_block;
+  for (std::size_t end = 16; end < points.size(); end += 16) every_block.push_back(end);
+  EXPECT_EQ(reported, every_block);
+  ASSERT_FALSE(reporting.failure);
+  ASSERT_EQ(std::memcmp(reporting.samples.data(), quiet.samples.data(), quiet.samples.size() * sizeof(FieldSample)),
+            0);
+  reported.clear();
+  options.threads = 3;
+  evaluate_batch(skeleton, points, options);
+  EXPECT_FALSE(reported.empty());
+  EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+  for (std::size_t evaluated : reported) EXPECT_LT(evaluated, points.size());
 }
 
 TEST(SkeletonBatch, ReportsTheLowestFailingPoint) {

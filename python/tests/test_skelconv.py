@@ -385,6 +385,24 @@ class MeshAgreesWithCli(unittest.TestCase):
                 np.testing.assert_array_equal(triangles, expected[1])
                 np.testing.assert_array_equal(normals, expected[2])
 
+    def test_grid_warns_of_a_missed_part(self):
+        # The command's warning for a blob thinner than the grid spacing
+        # (tests/CMakeLists.txt, cli.mesh.grid_missed_blob), as a
+        # RuntimeWarning: the mesh is still returned, the same as the
+        # command's.
+        path = os.path.join(DATA, "mesh", "blobs.json")
+        skeleton = skelconv.load_skeleton_file(path)
+        with tempfile.TemporaryDirectory() as tmp:
+            status, _, message = run_cli("mesh", path, "--iso", "0.5", "--method", "grid", "--quiet",
+                                         "-o", os.path.join(tmp, "blobs.ply"))
+        self.assertEqual(status, 0, message)
+        printed = message.strip().removeprefix("skelconv mesh: warning: --size ")
+        with self.assertWarns(RuntimeWarning) as caught:
+            vertices, triangles, _ = skeleton.mesh(iso=0.5, method="grid")
+        self.assertEqual(str(caught.warning), "size=" + printed)
+        self.assertIn("needs --size 0.041 or less", str(caught.warning))
+        self.assertGreater(len(triangles), 100)
+
     def test_topology_and_max_triangles(self):
         path = os.path.join(DATA, "mesh", "ring.json")
         skeleton = skelconv.load_skeleton_file(path)

@@ -51,7 +51,10 @@ std::string bound_lines(const Skeleton& skeleton, std::string_view input, std::o
     }
     if (!box) continue;
     const interval::Interval f = interval::enclose(skeleton, *box);
-    fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g}", f.lower(), f.upper());
+    // An end computed as −(−x − y) under directed rounding can be −0 (a box
+    // straddling a compact support): the same number, printed as 0.
+    const auto unsigned_zero = [](double x) { return x == 0.0 ? 0.0 : x; };
+    fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g}", unsigned_zero(f.lower()), unsigned_zero(f.upper()));
     if (iso) fmt::format_to(std::back_inserter(output), " {}", interval::classification_name(interval::classify(f, *iso)));
     output += '\n';
   }
@@ -103,6 +106,9 @@ int run_bound(const BoundOptions& options) {
   return print_all_or_nothing([&] {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     if (options.iso && !std::isfinite(*options.iso)) throw InputError("must be finite", "--iso");
+    // Ignored, it would leave the user waiting on standard input for boxes.
+    if (!options.octree_depth && !options.box.empty())
+      throw InputError("is the box of --octree DEPTH; without --octree the boxes are read from standard input", "--box");
     return options.octree_depth ? octree_lines(skeleton, options)
                                 : bound_lines(skeleton, read_box_input(), options.iso);
   });

@@ -1,6 +1,7 @@
 // Implementation of eval_command.hpp.
 #include "eval_command.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <iterator>
@@ -31,11 +32,44 @@ Output (stdout): one line "f gx gy gz" per point: the field f of the
                 is where f equals the file's "iso" (default 1).
                 Points are evaluated on every core (--threads), with the
                 same output bytes whatever the thread count.
+Progress (stderr): in a run longer than a second, about one line a second,
+                "skelconv eval: read N points, T s" (then parsed,
+                evaluated, formatted); none with --quiet.
                 On an inverse-kernel segment or polygon itself f and the
                 gradient are printed as "inf".
 On any error nothing is written to stdout and one "skelconv: error: ..." line
 to stderr; exit status 2 for bad input, 1 if a value cannot be computed in
 double precision. Schema of SKELETON.json: see docs/cli.md.)";
+
+/// The progress lines of a long run on stderr, as `skelconv mesh` prints
+/// its own: at most one a second, none in a run shorter than that, none with
+/// --quiet. Seconds count from when the skeleton file was read.
+class Progress {
+ public:
+  explicit Progress(bool quiet) : quiet_(quiet) {}
+  bool quiet() const { return quiet_; }
+  /// Whether a second has passed since the last line (or the start); then
+  /// the next line is due now.
+  bool due() {
+    if (quiet_) return false;
+    const Clock::time_point now = Clock::now();
+    if (now - last_ < std::chrono::seconds(1)) return false;
+    last_ = now;
+    return true;
+  }
+  void print(std::string_view what) const {
+    std::fprintf(stderr, "skelconv eval: %.*s, %.1f s\n", int(what.size()), what.data(),
+                 std::chrono::duration<double>(Clock::now() - start_).count());
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool quiet_;
+  Clock::time_point start_ = Clock::now(), last_ = start_;
+};
+
+/// Lines between two looks at the clock while the points are parsed.
+constexpr std::size_t lines_between_clock_reads = 1 << 16;
 
 /// The points of `input`, one per non-blank line, with their line numbers,
 /// up to the first bad line (whose InputError, located at "line N", is
@@ -46,7 +80,7 @@ struct PointList {
   std::exception_ptr bad_line;
 };
 
-PointList read_points(std::string_view input) {
+PointList read_points(std::string_view input, Progress& progress) {
   PointList list;
   std::size_t line_number = 0;
   while (!input.empty()) {
@@ -54,6 +88,8 @@ PointList read_points(std::string_view input) {
     const std::string_view line = input.substr(0, end);
     input.remove_prefix(end == std::string_view::npos ? input.size() : end + 1);
     ++line_number;
+    if (line_number % lines_between_clock_reads == 0 && progress.due())
+      progress.print(fmt::format("parsed {} points", list.points.size()));
     try {
       if (const std::optional<Vec3> point = parse_point_line(line)) {
         list.points.push_back(*point);
@@ -70,18 +106,30 @@ PointList read_points(std::string_view input) {
 /// Evaluates every point line of `input` (all cores, field/batch.hpp),
 /// returning the output text. Throws InputError / EvaluationError located
 /// at "line N", the first failing line whatever the thread count.
-std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, unsigned threads, double tolerance) {
-  const PointList list = read_points(input);
+std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, unsigned threads, double tolerance,
+                           Progress& progress) {
+  const PointList list = read_points(input, progress);
   BatchOptions options;
   options.threads = threads;
   options.tolerance = tolerance;
+  if (!progress.quiet()) {
+    // Asked after every block (one thread at a time), timed by `progress`
+    // with the other phases' lines.
+    options.progress_interval = 0.0;
+    options.progress = [&](std::size_t evaluated) {
+      if (progress.due()) progress.print(fmt::format("evaluated {} of {} points", evaluated, list.points.size()));
+    };
+  }
   const BatchResult result = evaluate_batch(skeleton, list.points, options);
   if (result.failure) rethrow_located(result.failure->error, fmt::format("line {}", list.line_numbers[result.failure->index]));
   if (list.bad_line) std::rethrow_exception(list.bad_line);
   std::string output;
-  for (const FieldSample& sample : result.samples) {
+  for (std::size_t k = 0; k < result.samples.size(); ++k) {
+    const FieldSample& sample = result.samples[k];
     fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g} {:.17g} {:.17g}\n", sample.value,
                    sample.gradient.x(), sample.gradient.y(), sample.gradient.z());
+    if ((k + 1) % lines_between_clock_reads == 0 && progress.due())
+      progress.print(fmt::format("formatted {} of {} output lines", k + 1, result.samples.size()));
   }
   return output;
 }
@@ -102,6 +150,7 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
                    "Relative tolerance of the field (default 0: exact to rounding); > 0 lets Cauchy segments far "
                    "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")
       ->check(tolerance_range());
+  eval->add_flag("--quiet", options.quiet, "No progress line on stderr");
   eval->footer(eval_footer);
   return eval;
 }
@@ -109,8 +158,13 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
 int run_eval(const EvalOptions& options) {
   return print_all_or_nothing([&] {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
-    return evaluate_lines(skeleton, read_point_input(stdin, options.limits), options.threads,
-                          options.tolerance);
+    // From here: a skeleton file that takes seconds to read (10⁵ points)
+    // is not the points' time.
+    Progress progress(options.quiet);
+    const std::string input = read_point_input(stdin, options.limits, [&](std::size_t points) {
+      if (progress.due()) progress.print(fmt::format("read {} points", points));
+    });
+    return evaluate_lines(skeleton, input, options.threads, options.tolerance, progress);
   });
 }
 

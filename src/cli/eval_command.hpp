@@ -10,7 +10,9 @@
 //
 // All-or-nothing: output is buffered and written only after every point has
 // been evaluated, so on any error stdout stays empty and stderr holds one
-// "skelconv: error: ..." line (exit codes in exit_status.hpp). So the input
+// "skelconv: error: ..." line (exit codes in exit_status.hpp), after the
+// progress lines of a run longer than a second (about one a second on
+// stderr while the points are read and evaluated; none with --quiet). So the input
 // is bounded before any point is evaluated: at most --max-points points, and
 // lines of at most 4096 characters (PointInputLimits).
 #pragma once
@@ -28,6 +30,7 @@ struct EvalOptions {
   unsigned threads = 0;  ///< --threads: 0 = every core (field/batch.hpp)
   PointInputLimits limits;  ///< --max-points (point_lines.hpp)
   double tolerance = 0.0;   ///< --tolerance: Skeleton's tolerance mode, 0 = exact
+  bool quiet = false;       ///< --quiet: no progress line on stderr
 };
 
 /// Registers the `eval` subcommand on `app`, filling `options` when parsed.

@@ -6,8 +6,6 @@
 #include <filesystem>
 #include <limits>
 #include <string>
-#include <tuple>
-#include <variant>
 
 #include <unistd.h>  // getpid
 
@@ -20,6 +18,7 @@
 #include "skelconv/mesh/implicit_field.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
+#include "skelconv/mesh/missed_parts.hpp"
 #include "skelconv/mesh/triangle_mesh.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
 
@@ -72,48 +71,6 @@ std::string summary(const TriangleMesh& mesh, const MeshReport& report, const st
                       report.field_seconds, report.field_evaluations, mesher_seconds);
   text += fmt::format("triangles_per_second: {:.0f}\n", double(topology.triangles) / report.total_seconds);
   return text;
-}
-
-/// The primitive whose own field is largest in magnitude at `p` (a point
-/// inside a part of the surface, or of a cavity a negative weight carves),
-/// as its JSON path, or "" when none can be evaluated there.
-std::string strongest_primitive(const Skeleton& skeleton, const Vec3& p) {
-  std::string location;
-  double largest = -std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < skeleton.size(); ++k) {
-    try {
-      const double f =
-          std::abs(std::visit([&](const auto& primitive) { return primitive.value(p); }, skeleton.primitives()[k]));
-      if (f > largest) std::tie(largest, location) = std::make_tuple(f, skeleton.location(k));
-    } catch (const std::exception&) {
-      // An inverse primitive's own skeleton, say: the others decide.
-    }
-  }
-  return location;
-}
-
-/// One line on stderr for the parts of the surface `--method grid` lost
-/// (MeshReport::missed_parts): the mesh is written, but a blob thinner than
-/// the spacing must not vanish without a word. Names the thickest part, the
-/// primitive that makes it and a --size that has a grid node inside it (a
-/// grid of spacing h has a node inside every ball of diameter above √3 h;
-/// half the thickness leaves a margin).
-std::string missed_parts_warning(const Skeleton& skeleton, const MeshReport& report) {
-  const MissedPart& part = report.missed_parts.front();
-  const std::string primitive = strongest_primitive(skeleton, part.centre);
-  const double suggested = part.thickness > 0.0 ? part.thickness / 2 : report.size / 4;
-  // Two significant digits, rounded down: the printed size is at most the one computed.
-  const double unit = std::pow(10.0, std::floor(std::log10(suggested)) - 1);
-  const double size = std::floor(suggested / unit) * unit;
-  return fmt::format("skelconv mesh: warning: --size {:g}: {} part{} of the surface {} missing from the mesh (no grid "
-                     "node lies inside {}); the thickest, {} near ({:.6g}, {:.6g}, {:.6g}){}, needs "
-                     "--size {:.2g} or less (or --method cgal, which seeds every part)\n",
-                     report.size, report.missed_parts.size(), report.missed_parts.size() == 1 ? "" : "s",
-                     report.missed_parts.size() == 1 ? "is" : "are", report.missed_parts.size() == 1 ? "it" : "them",
-                     part.thickness > 0.0 ? fmt::format("about {:.2g} thick", part.thickness)
-                                          : fmt::format("thinner than {:g}", report.size),
-                     part.centre.x(), part.centre.y(),
-                     part.centre.z(), primitive.empty() ? "" : ", from " + primitive, size);
 }
 
 }  // namespace
@@ -171,7 +128,11 @@ int run_mesh(const MeshCommandOptions& options) {
       }
     }();
     write_mesh(mesh, options.output_path, options.ascii ? PlyEncoding::ascii : PlyEncoding::binary);
-    if (!report.missed_parts.empty()) std::fputs(missed_parts_warning(skeleton, report).c_str(), stderr);
+    if (!report.missed_parts.empty()) {
+      std::fputs(fmt::format("skelconv mesh: warning: --size {:g}: {}\n", report.size,
+                             missed_parts_problem(skeleton, report)).c_str(),
+                 stderr);
+    }
     return summary(mesh, report, options.output_path);
   });
 }

@@ -102,7 +102,8 @@ std::optional<Vec3> parse_point_line(std::string_view line) {
   return Vec3((*values)[0], (*values)[1], (*values)[2]);
 }
 
-std::string read_point_input(std::FILE* in, const PointInputLimits& limits) {
+std::string read_point_input(std::FILE* in, const PointInputLimits& limits,
+                             const std::function<void(std::size_t)>& chunk_read) {
   std::string text;
   std::size_t line_number = 1, line_length = 0, points = 0;
   bool line_has_value = false;
@@ -133,6 +134,7 @@ std::string read_point_input(std::FILE* in, const PointInputLimits& limits) {
       }
     }
     text.append(chunk, count);
+    if (chunk_read) chunk_read(points);
   }
   if (std::ferror(in)) throw InputError("cannot read standard input");
   return text;

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,8 +36,11 @@ struct PointInputLimits {
 /// at "line N" as soon as line N is longer than limits.max_line_length
 /// characters (the line break and a CRLF file's '\r' not counted), or the
 /// input holds more than limits.max_points non-blank lines (the message
-/// names --max-points); InputError if `in` cannot be read.
-std::string read_point_input(std::FILE* in, const PointInputLimits& limits);
+/// names --max-points); InputError if `in` cannot be read. `chunk_read`, if
+/// set, is called after each chunk with the non-blank lines read so far
+/// (`eval`'s progress line).
+std::string read_point_input(std::FILE* in, const PointInputLimits& limits,
+                             const std::function<void(std::size_t)>& chunk_read = nullptr);
 
 /// Parses one input line: three finite decimal numbers separated by spaces or
 /// tabs (a trailing '\r' of a CRLF file is ignored; a leading '+' is

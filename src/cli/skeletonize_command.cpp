@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -242,21 +243,23 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       if (options.repair) {
         repair = reconstruct::check_closed_mesh_repairing(input);
       } else {
+        // The library's refusal, and what --repair would do about it.
+        const auto refusal = [](const InputError& error, std::string_view repair_does) {
+          return InputError(fmt::format("{} (or pass --repair to let skeletonize {})", error.problem(), repair_does));
+        };
         try {
           reconstruct::check_closed_mesh(input, false);
         } catch (const InputError& error) {
           if (!reconstruct::has_holes_or_non_manifold_edges(input)) throw;
-          throw InputError(error.problem() + " (or pass --repair to let skeletonize split non-manifold edges and "
-                                             "fill holes)");
+          throw refusal(error, "split non-manifold edges and fill holes");
         }
-        const auto found = reconstruct::find_self_intersections(input);
-        if (found.degenerate > 0)
-          throw InputError(reconstruct::degenerate_triangle_problem(found) +
-                           "; remove them (collapse their shortest edge) first");
-        if (found.pairs > 0)
-          throw InputError(reconstruct::self_intersection_problem(found) +
-                           "; overlapping parts must be joined by a boolean union first (or pass --repair to let "
-                           "skeletonize join them)");
+        try {
+          reconstruct::check_no_self_intersection(input);
+        } catch (const InputError& error) {
+          // --repair joins crossing parts; it refuses zero-area triangles too.
+          if (reconstruct::find_self_intersections(input).degenerate > 0) throw;
+          throw refusal(error, "join them");
+        }
         reconstruct::check_no_nested_parts(input);
       }
     } catch (const InputError& error) {

@@ -181,6 +181,8 @@ std::string run_scalis(const Skeleton& skeleton, const ThicknessOptions& options
   try {
     c = correct_scalis_thickness(graph, o);
   } catch (const InputError& error) {
+    // The radii are the file's: "file.json: primitives: ...".
+    if (error.where().starts_with("primitives")) throw InputError(error.what(), options.input_path);
     throw as_flag(error);
   }
   write_text_atomically(scalis_corrected_skeleton_json(graph, c), options.output_path);

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -43,6 +45,23 @@ std::optional<BatchFailure> run_blocks(std::size_t count, const BatchOptions& op
   std::atomic<std::size_t> lowest_failure{count};
   std::optional<BatchFailure> failure;
   std::mutex failure_mutex;
+  // BatchOptions::progress: whole blocks counted, one thread reporting at a
+  // time (a thread that finds another reporting goes on), the clock read
+  // once per block.
+  std::atomic<std::size_t> evaluated{0};
+  std::mutex progress_mutex;
+  auto last_report = std::chrono::steady_clock::now();
+  const auto block_done = [&](std::size_t points) {
+    evaluated += points;
+    const std::unique_lock<std::mutex> lock(progress_mutex, std::try_to_lock);
+    if (!lock.owns_lock()) return;
+    const std::size_t done = evaluated.load();  // read under the lock: the reported counts grow
+    if (done == count) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_report).count() < options.progress_interval) return;
+    last_report = now;
+    options.progress(done);
+  };
   const auto work = [&] {
     for (std::size_t b = next_block++; b < blocks; b = next_block++) {
       const std::size_t end = std::min(count, (b + 1) * block);
@@ -58,13 +77,24 @@ std::optional<BatchFailure> run_blocks(std::size_t count, const BatchOptions& op
           break;
         }
       }
+      if (options.progress) block_done(end - b * block);
     }
   };
   if (threads <= 1) {
     work();
   } else {
     std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+    pool.reserve(threads);
+    try {
+      for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      // The system refused one more thread (a thread count far above the
+      // cores, or a memory limit on the stacks): those started, and this
+      // one, do the work, with the same results. The started threads must
+      // be joined whatever happens (a joinable std::thread destroyed calls
+      // std::terminate).
+      work();
+    }
     for (std::thread& thread : pool) thread.join();
   }
   return failure;

@@ -99,21 +99,23 @@ void fill_region(const GridSurfaceRequest& request, Accessor& accessor, const op
       for (int k = first.z(); k <= last.z(); k += half) fill_region(request, accessor, {i, j, k}, count, half);
 }
 
-/// An empty OpenVDB float grid whose index (i, j, k) is the world point
-/// box.lo + voxel (i, j, k), background +float max (outside).
-openvdb::FloatGrid::Ptr empty_grid(const GridSurfaceRequest& request) {
-  openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(/*background: outside*/ std::numeric_limits<float>::max());
-  openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(request.voxel);
-  transform->postTranslate(openvdb::Vec3d(request.box.lo.x(), request.box.lo.y(), request.box.lo.z()));
-  grid->setTransform(transform);
-  return grid;
+/// An empty OpenVDB float grid, background +float max (outside). Its index
+/// (i, j, k) stands for the world point box.lo + voxel (i, j, k), but its
+/// transform is OpenVDB's identity: volumeToMesh then returns index-space
+/// points, which openvdb_surface_mesh moves to the world in double. A world
+/// transform made OpenVDB return world points in float (a surface 1e7 from
+/// the origin came back on float's grid of 1, every vertex at the ball's
+/// centre), and OpenVDB refused small voxels as a zero scale (8.2e-8, the
+/// default spacing of a segment 1e-6 long).
+openvdb::FloatGrid::Ptr empty_grid() {
+  return openvdb::FloatGrid::create(/*background: outside*/ std::numeric_limits<float>::max());
 }
 
 /// The level sampled on the grid nodes, as an OpenVDB float grid (as
 /// empty_grid). Values are clamped to ±float max (an inverse kernel's
 /// skeleton gives −inf).
 openvdb::FloatGrid::Ptr sample(const GridSurfaceRequest& request, const openvdb::Coord& count) {
-  openvdb::FloatGrid::Ptr grid = empty_grid(request);
+  openvdb::FloatGrid::Ptr grid = empty_grid();
   auto accessor = grid->getAccessor();
   int side = block;
   while (side < std::max({count.x(), count.y(), count.z()})) side *= 2;
@@ -307,7 +309,7 @@ class SurfaceCells {
 /// The level on the crossing cells reached from the seeds, every other node
 /// ±float max by its sign (SurfaceCells).
 openvdb::FloatGrid::Ptr sample_surface_cells(const GridSurfaceRequest& request, const openvdb::Coord& count) {
-  openvdb::FloatGrid::Ptr grid = empty_grid(request);
+  openvdb::FloatGrid::Ptr grid = empty_grid();
   SurfaceCells cells(request, *grid, count);
   cells.sample_from_seeds();
   cells.fill_signs();
@@ -331,7 +333,7 @@ TriangleMesh openvdb_surface_mesh(const GridSurfaceRequest& request) {
 
   TriangleMesh mesh;
   mesh.vertices.reserve(points.size());
-  for (const auto& p : points) mesh.vertices.emplace_back(p.x(), p.y(), p.z());
+  for (const auto& p : points) mesh.vertices.push_back(request.box.lo + request.voxel * Vec3(p.x(), p.y(), p.z()));
   // OpenVDB's polygons turn counter-clockwise seen from the positive side
   // (outside), as TriangleMesh's do (checked by tests/mesh_test.cpp).
   const auto add = [&mesh](unsigned a, unsigned b, unsigned c) {

@@ -86,6 +86,11 @@ std::optional<FieldSample> bisect_to_surface(Vec3& p, const FieldSample& at_p, c
       // (f(near) − iso) and (f(far) − iso) differ in sign: bisect.
       while ((far - near).norm() > options.tolerance) {
         const Vec3 middle = 0.5 * (near + far);
+        // Far from the origin the tolerance can be below the spacing of
+        // doubles (a ball of radius 0.5 at (1e7, 1e7, 1e7): doubles 1.9e-9
+        // apart, the tolerance 8.7e-10): the interval stops at neighbouring
+        // doubles, as near as coordinates get (the bisection never ended).
+        if (middle == near || middle == far) break;
         const double value = field.value_and_gradient(middle).value;
         if (!std::isfinite(value)) return std::nullopt;
         ((value > iso) == inside ? near : far) = middle;

@@ -45,6 +45,17 @@ std::vector<double> node_radii(const ScalisSegmentGraph& g) {
 }
 
 std::vector<ThicknessSample> sample_layout(const ScalisSegmentGraph& g, const ScalisThicknessCorrectionOptions& o) {
+  double count = 0;
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    const double mean = 0.5 * (g.radius[e][0] + g.radius[e][1]);
+    count += std::ceil(o.samples_per_thickness * (g.nodes[g.edges[e].b] - g.nodes[g.edges[e].a]).norm() / mean) + 1;
+  }
+  if (!(count <= detail::max_thickness_samples)) {
+    throw InputError(fmt::format("the radii ask for {:.3g} thickness samples ({} per mean radius along each "
+                                 "segment), more than {:.0f}: radii that small against the segments would take hours",
+                                 count, o.samples_per_thickness, detail::max_thickness_samples),
+                     "primitives");
+  }
   std::vector<ThicknessSample> samples;
   for (std::size_t e = 0; e < g.edges.size(); ++e) {
     const Vec3 a = g.nodes[g.edges[e].a], b = g.nodes[g.edges[e].b];

@@ -22,6 +22,7 @@
 #include <span>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -36,6 +37,17 @@ namespace skelconv {
 namespace {
 
 using Json = nlohmann::json;
+
+/// A name from the file (a key, a type, a family) as messages quote it: at
+/// most 40 bytes, cut before a UTF-8 continuation byte, then "...", as
+/// values are (excerpt below): a 5,000-character type was quoted whole.
+std::string shown_name(std::string_view name) {
+  constexpr std::size_t max_length = 40;
+  if (name.size() <= max_length) return std::string(name);
+  std::size_t end = max_length - 3;
+  while (end > 0 && (static_cast<unsigned char>(name[end]) & 0xC0) == 0x80) --end;
+  return std::string(name.substr(0, end)) + "...";
+}
 
 // ---------------------------------------------------------------------------
 // Pass 1: parsing, with the parser's position tracked as a JSON path.
@@ -60,7 +72,7 @@ class ParsePathTracker {
         Level& object = levels_.back();
         object.key = parsed.get<std::string>();
         if (!object.keys_seen.insert(object.key).second) {
-          throw InputError(fmt::format("duplicate field \"{}\"", object.key), path(levels_.size() - 1));
+          throw InputError(fmt::format("duplicate field \"{}\"", shown_name(object.key)), path(levels_.size() - 1));
         }
         break;
       }
@@ -175,7 +187,7 @@ void reject_unknown_keys(const Json& object, const std::string& path, std::span<
     bool known = false;
     for (std::string_view name : allowed) known = known || key == name;
     if (!known) {
-      throw InputError(fmt::format("unknown field \"{}\"{} (allowed: {})", key, context, quoted_list(allowed)), path);
+      throw InputError(fmt::format("unknown field \"{}\"{} (allowed: {})", shown_name(key), context, quoted_list(allowed)), path);
     }
   }
 }
@@ -240,7 +252,7 @@ KernelFamily read_family(const Json& kernel, const std::string& path) {
   const std::string family_text = read_string(require_field(kernel, path, "family"), path + ".family");
   const std::optional<KernelFamily> family = family_from_name(family_text);
   if (!family) {
-    throw InputError(fmt::format("unknown family \"{}\" (supported: {})", family_text, family_names()),
+    throw InputError(fmt::format("unknown family \"{}\" (supported: {})", shown_name(family_text), family_names()),
                      path + ".family");
   }
   return *family;
@@ -414,7 +426,7 @@ Primitive read_primitive(const Json& value, const std::string& path) {
   if (type == "scalis_segment") return read_scalis_segment(value, path);
   if (type == "scalis_triangle") return read_scalis_triangle(value, path);
   if (type == "point") return read_point_primitive(value, path);
-  throw InputError(fmt::format("unknown primitive type \"{}\" (supported: {})", type,
+  throw InputError(fmt::format("unknown primitive type \"{}\" (supported: {})", shown_name(type),
                                quoted_list({"segment", "polygon", "scalis_segment", "scalis_triangle", "point"})),
                    path + ".type");
 }
@@ -428,7 +440,7 @@ BlendKind read_blend_kind(const Json& value, const std::string& path) {
   const std::string name = read_string(value, path);
   const std::optional<BlendKind> kind = blend_from_name(name);
   if (!kind) {
-    throw InputError(fmt::format("unknown blend \"{}\" (supported: {})", name,
+    throw InputError(fmt::format("unknown blend \"{}\" (supported: {})", shown_name(name),
                                  quoted_list({"sum", "union", "super_elliptic"})),
                      path);
   }

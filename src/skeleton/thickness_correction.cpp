@@ -183,6 +183,15 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
 
 /// Sample feet: on each edge, t = j/n, j = 0..n, n ≥ samples_per_thickness · length / τ.
 std::vector<ThicknessSample> sample_layout(const SegmentGraph& g, const ThicknessCorrectionOptions& o) {
+  double count = 0;
+  for (const SegmentGraph::Edge& edge : g.edges)
+    count += std::ceil(o.samples_per_thickness * (g.nodes[edge.b] - g.nodes[edge.a]).norm() / o.thickness) + 1;
+  if (!(count <= detail::max_thickness_samples)) {
+    throw InputError(fmt::format("{:.6g} asks for {:.3g} thickness samples ({} per thickness along the segments), "
+                                 "more than {:.0f}: a thickness that small against the segments would take hours",
+                                 o.thickness, count, o.samples_per_thickness, detail::max_thickness_samples),
+                     "thickness");
+  }
   std::vector<ThicknessSample> samples;
   for (std::size_t e = 0; e < g.edges.size(); ++e) {
     const Vec3 a = g.nodes[g.edges[e].a], b = g.nodes[g.edges[e].b];

@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -36,6 +37,13 @@ struct BatchOptions {
   /// The tolerance mode's relative tolerance (Skeleton::value_and_gradient;
   /// docs/field.md, "Tolerance"); 0: exact.
   double tolerance = 0.0;
+  /// If set, called with the number of points evaluated so far (whole
+  /// blocks) at most once per `progress_interval` seconds, between blocks,
+  /// by one thread at a time; never for the last block (the caller knows
+  /// when the batch ends). `skelconv eval`'s progress line. The results do
+  /// not depend on it.
+  std::function<void(std::size_t evaluated)> progress;
+  double progress_interval = 1.0;
 };
 
 struct BatchFailure {

@@ -13,6 +13,7 @@
 #include <optional>
 #include <string_view>
 
+#include "skelconv/detail/exp_pieces.hpp"
 #include "skelconv/kernels/radial_kernel.hpp"
 #include "skelconv/primitives/segment_gaussian.hpp"
 
@@ -63,28 +64,18 @@ struct GaussianKernel {
     return times_exp_minus(T(-2) * T(a) * T(b) * r, T(a) * r * r);
   }
 
-  /// c e^(−x), x ≥ 0. Far away (x above ~700 in double) e^(−x) alone is
-  /// subnormal or 0 while a large c (the height b) lifts the product back
-  /// into the normal range (b = 1e300 at r = 28/√a: 3.3e-41, computed as 0);
-  /// there e^(−x) is applied as 2 or 4 equal normal factors e^(−x/n) (x/n
-  /// exact), the first with c, so that only the last product rounds into
-  /// the subnormal range. Elsewhere the plain product, bit for bit; and
-  /// always for an enclosure type (Interval: no numeric_limits), whose
-  /// bounds are outward-rounded either way.
+  /// c e^(−x), x ≥ 0: far away (x above ~700 in double) in normal pieces,
+  /// so that a large c (the height b) is not lost to the exponential's
+  /// underflow (detail/exp_pieces.hpp); elsewhere the plain product, bit for
+  /// bit. Always the plain product for an enclosure type (Interval: no
+  /// numeric_limits), whose bounds are outward-rounded either way.
   template <class T>
   static T times_exp_minus(const T& c, const T& x) {
     using std::exp;
     if constexpr (!std::numeric_limits<T>::is_specialized) {
       return c * exp(-x);
     } else {
-      const T limit = T(0.69) * T(-std::numeric_limits<T>::min_exponent);  // e^(−limit) is normal
-      if (x < limit) return c * exp(-x);
-      if (!(x < T(4) * limit)) return T(0);  // below e^(−2800): 0 whatever c
-      const int pieces = x < T(2) * limit ? 2 : 4;
-      const T piece = exp(-x / T(pieces));
-      T product = c;
-      for (int k = 0; k < pieces; ++k) product *= piece;
-      return product;
+      return detail::ExpPieces<T>(x).times(c);
     }
   }
 

@@ -68,6 +68,7 @@
 
 #include "skelconv/primitives/segment_input.hpp"
 #include "skelconv/detail/double_word.hpp"
+#include "skelconv/detail/exp_pieces.hpp"
 
 namespace skelconv::detail::gaussian_segment {
 
@@ -284,21 +285,18 @@ T field(const SegmentInput<T>& in, std::array<T, 3>* gradient) {
   // Far away (a r² above ~700 in double) e^(−a r²) alone is subnormal or
   // 0, while b, |AB| and the weights can lift the product back into the
   // normal range (b = 1e300 at 28 widths: f = 3e-41, computed as 0). There
-  // the exponential is applied as 2 or 4 equal factors e^(−a r²/n) (a r²/n
-  // exact), each normal, the first with b and the others last, so that only
-  // the final product rounds into the subnormal range: f then is within a
-  // few units of the smallest subnormal, and exactly 0 only where the
-  // product is below it.
-  const T exponent_limit = T(0.69) * T(-std::numeric_limits<T>::min_exponent);  // e^(−limit) is normal
-  const int pieces = exponent.hi < exponent_limit ? 1 : exponent.hi < T(2) * exponent_limit ? 2 : 4;
-  if (!(exponent.hi < T(4) * exponent_limit)) {
+  // the exponential is applied in normal pieces (detail/exp_pieces.hpp), the
+  // first with b and the others last, so that only the final product rounds
+  // into the subnormal range: f then is within a few units of the smallest
+  // subnormal, and exactly 0 only where the product is below it.
+  const ExpPieces<T> exponential(exponent.hi);
+  if (exponential.vanishes()) {
     // Below e^(−2800) f is 0 in double whatever b and the weights (and a r²
     // that overflows, at 1e200 lengths, would make the low word NaN).
     if (gradient != nullptr) *gradient = {T(0), T(0), T(0)};
     return T(0);
   }
-  const T piece = pieces == 1 ? T(1) : exp(-exponent.hi / T(pieces));
-  const T kernel_at_nearest = (pieces == 1 ? exp(-exponent.hi) : piece) * (T(1) - exponent.lo);
+  const T kernel_at_nearest = exponential.piece * (T(1) - exponent.lo);
   const T c = a * L2_rounded;
   const T beta = T(2) * c * (delta < T(0) ? -delta : delta);
   const std::array<T, W + 3> right = moments<T, W + 2>(right_length, beta, c);
@@ -322,16 +320,13 @@ T field(const SegmentInput<T>& in, std::array<T, 3>* gradient) {
   const T moved1 = sum1 + tau_lo * (T(2) * c * sum2 - sum0);         // S_1(τ_hi + τ_lo)
   const T scale = in.gaussian_b * sqrt(L2_rounded) * kernel_at_nearest;
   // The exponential's other pieces, applied last (kernel_at_nearest holds
-  // the first, or the whole exponential where pieces is 1).
-  const auto far_factor = [&](T x) {
-    for (int k = 1; k < pieces; ++k) x *= piece;
-    return x;
-  };
+  // the first, or the whole exponential where there is one piece).
   if (gradient != nullptr) {
     const T g = T(-2) * a * scale;
-    for (int i = 0; i < 3; ++i) (*gradient)[i] = far_factor(g * (qp[i] * moved0 - ab_rounded[i] * moved1));
+    for (int i = 0; i < 3; ++i)
+      (*gradient)[i] = exponential.times_rest(g * (qp[i] * moved0 - ab_rounded[i] * moved1));
   }
-  return far_factor(scale * moved0);
+  return exponential.times_rest(scale * moved0);
 }
 
 /// The three entry points of the generated kernels' contract, for weight
