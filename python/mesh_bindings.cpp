@@ -144,15 +144,18 @@ reconstruct::SkeletonMethod skeleton_method(const std::string& name) {
 
 /// The skeleton `skelconv skeletonize` writes for the closed mesh
 /// (vertices, triangles), as a Skeleton: the same merge of coincident
-/// vertices, checks of the mesh, noise, reconstruction and skeleton file.
+/// vertices, checks of the mesh (or repair: `--repair`), noise,
+/// reconstruction and skeleton file.
 Skeleton skeletonize(const DoubleArray& vertices, const IndexArray& triangles,
-                     const reconstruct::ReconstructOptions& options, double noise, std::size_t max_triangles) {
+                     const reconstruct::ReconstructOptions& options, double noise, std::size_t max_triangles,
+                     bool repair) {
   TriangleMesh input = triangle_mesh(vertices, triangles);
   const std::string text = with_argument_names([&] {
     py::gil_scoped_release release;
     reconstruct::merge_coincident_vertices(input);
     reconstruct::check_mesh_size(input, max_triangles);
-    reconstruct::check_closed_mesh(input);
+    if (repair) reconstruct::check_closed_mesh_repairing(input);
+    else reconstruct::check_closed_mesh_offering_repair(input, "repair=True");
     const TriangleMesh samples = reconstruct::with_sample_noise(input, noise);
     return reconstruct::skeleton_file_text(reconstruct::reconstruct(samples, options).stages.back(), options);
   });
@@ -182,7 +185,8 @@ void add_mesh_bindings(py::module_& m, py::class_<Skeleton>& skeleton) {
       [](const DoubleArray& vertices, const IndexArray& triangles, const std::string& method, std::size_t budget,
          std::optional<double> medial_prune_angle, std::optional<double> medial_prune_span,
          std::optional<double> prune_angle, std::optional<double> prune_span,
-         std::optional<double> epsilon, bool bezier_junctions, double noise, std::optional<std::size_t> max_triangles) {
+         std::optional<double> epsilon, bool bezier_junctions, double noise, std::optional<std::size_t> max_triangles,
+         bool repair) {
         // The library's defaults are the command's; an argument given replaces one.
         reconstruct::ReconstructOptions options;
         options.method = skeleton_method(method);
@@ -195,16 +199,18 @@ void add_mesh_bindings(py::module_& m, py::class_<Skeleton>& skeleton) {
         options.junction_triangles = bezier_junctions;
         // As the command's --max-triangles (skeletonize_command.hpp says why).
         const std::size_t limit = max_triangles.value_or(2 * reconstruct::SamplingOptions{}.max_samples);
-        return skeletonize(vertices, triangles, options, noise, limit);
+        return skeletonize(vertices, triangles, options, noise, limit, repair);
       },
       py::arg("vertices"), py::arg("triangles"), py::arg("method") = "auto",
       py::arg("budget") = reconstruct::MedialOptions{}.budget, py::arg("medial_prune_angle") = py::none(),
       py::arg("medial_prune_span") = py::none(),
       py::arg("prune_angle") = py::none(), py::arg("prune_span") = py::none(), py::arg("epsilon") = py::none(),
       py::arg("bezier_junctions") = false, py::arg("noise") = 0.0, py::arg("max_triangles") = py::none(),
+      py::arg("repair") = false,
       "The skeleton of SCALIS primitives whose surface approximates a closed mesh, as `skelconv skeletonize` "
       "(docs/reconstruction.md): vertices (V, 3), triangles (T, 3) counter-clockwise seen from outside. "
       "method: \"auto\" (both, the closer one), \"curve\" or \"medial\"; budget: the medial path's primitives; "
+      "repair: as --repair, close holes, split non-manifold edges and join crossing parts instead of refusing; "
       "the other options are the command's (--prune-angle is prune_angle; None: the command's default).");
 }
 

@@ -485,7 +485,8 @@ class SkeletonizeAgreesWithCli(unittest.TestCase):
     # method, auto, runs and measures both: 4 s on segment.ply, 30 s on the
     # tetrahedron).
     CASES = (("segment.ply", {"method": "curve"}, ("--method", "curve")),
-             ("tetrahedron.off", {"method": "curve"}, ("--method", "curve")))
+             ("tetrahedron.off", {"method": "curve"}, ("--method", "curve")),
+             ("sphere_open.ply", {"method": "curve", "repair": True}, ("--method", "curve", "--repair")))
     MEDIAL_CASES = (("tetrahedron.off", {"method": "medial", "budget": 40}, ("--method", "medial", "--budget", "40")),)
 
     def test_same_skeleton_as_the_command(self):
@@ -522,7 +523,9 @@ class SkeletonizeAgreesWithCli(unittest.TestCase):
         triangles = np.array([[f[0], f[k], f[k + 1]] for f in faces for k in range(1, len(f) - 1)])
         with self.assertRaises(skelconv.InputError) as raised:
             skelconv.skeletonize(vertices, triangles)
-        self.assertEqual(path + ": " + str(raised.exception), message)
+        # The same message, the repair offered in each one's spelling.
+        self.assertIn("(or pass repair=True to let skeletonize", str(raised.exception))
+        self.assertEqual(path + ": " + str(raised.exception).replace("repair=True", "--repair"), message)
 
         path = os.path.join(DATA, "reconstruct", "segment.ply")
         vertices, triangles = read_ply_or_off(path)

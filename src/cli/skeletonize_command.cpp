@@ -243,24 +243,7 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       if (options.repair) {
         repair = reconstruct::check_closed_mesh_repairing(input);
       } else {
-        // The library's refusal, and what --repair would do about it.
-        const auto refusal = [](const InputError& error, std::string_view repair_does) {
-          return InputError(fmt::format("{} (or pass --repair to let skeletonize {})", error.problem(), repair_does));
-        };
-        try {
-          reconstruct::check_closed_mesh(input, false);
-        } catch (const InputError& error) {
-          if (!reconstruct::has_holes_or_non_manifold_edges(input)) throw;
-          throw refusal(error, "split non-manifold edges and fill holes");
-        }
-        try {
-          reconstruct::check_no_self_intersection(input);
-        } catch (const InputError& error) {
-          // --repair joins crossing parts; it refuses zero-area triangles too.
-          if (reconstruct::find_self_intersections(input).degenerate > 0) throw;
-          throw refusal(error, "join them");
-        }
-        reconstruct::check_no_nested_parts(input);
+        reconstruct::check_closed_mesh_offering_repair(input, "--repair");
       }
     } catch (const InputError& error) {
       throw error.inside(options.input_path);

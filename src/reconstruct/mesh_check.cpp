@@ -11,6 +11,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -382,6 +383,27 @@ OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
 bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh) {
   const EdgeCounts c = count_edges(proper_triangles(mesh));
   return (c.open > 0 || c.non_manifold > 0) && c.inconsistent == 0;
+}
+
+void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_view repair_option) {
+  const auto offer = [repair_option](const InputError& error, std::string_view repair_does) {
+    return InputError(
+        fmt::format("{} (or pass {} to let skeletonize {})", error.problem(), repair_option, repair_does));
+  };
+  try {
+    check_closed_mesh(mesh, false);
+  } catch (const InputError& error) {
+    if (!has_holes_or_non_manifold_edges(mesh)) throw;
+    throw offer(error, "split non-manifold edges and fill holes");
+  }
+  try {
+    check_no_self_intersection(mesh);
+  } catch (const InputError& error) {
+    // The repair joins crossing parts; it refuses zero-area triangles too.
+    if (find_self_intersections(mesh).degenerate > 0) throw;
+    throw offer(error, "join them");
+  }
+  check_no_nested_parts(mesh);
 }
 
 InputRepair check_closed_mesh_repairing(TriangleMesh& mesh, double max_hole_area) {

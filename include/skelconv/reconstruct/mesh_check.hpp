@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 #include "skelconv/mesh/triangle_mesh.hpp"
 
@@ -96,6 +97,13 @@ struct OverlapRepair {
 /// or a boundary edge, and no edge used twice in one direction (the
 /// messages of `skeletonize` name --repair for those).
 bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh);
+
+/// check_closed_mesh for a caller that offers check_closed_mesh_repairing as
+/// an option: where the problem is one the repair fixes (holes, edges of more
+/// than two triangles, crossing triangles), the message ends "(or pass
+/// OPTION to let skeletonize ...)", OPTION in the caller's spelling
+/// ("--repair" for the command, "repair=True" for Python).
+void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_view repair_option);
 
 /// check_closed_mesh, except that a mesh whose triangles cross is replaced
 /// by the boundary of the union of the solids its parts enclose (CGAL
