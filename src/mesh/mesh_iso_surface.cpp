@@ -36,25 +36,8 @@ class FieldMeter {
     ImplicitField m = field_;
     m.value = [this](const Vec3& p) { return measure([&] { return field_.value(p); }); };
     m.value_and_gradient = [this](const Vec3& p) { return measure([&] { return field_.value_and_gradient(p); }); };
-    if (field_.value_and_gradient_near) {
-      // The shared work timed as the field's, its evaluations counted.
-      m.value_and_gradient_near = [this](const Vec3& centre, double radius) {
-        const Clock::time_point start = Clock::now();
-        auto near = field_.value_and_gradient_near(centre, radius);
-        seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
-        return std::function<FieldSample(const Vec3&)>(
-            [this, near = std::move(near)](const Vec3& p) { return measure([&] { return near(p); }); });
-      };
-    }
-    if (field_.value_near) {
-      m.value_near = [this](const Vec3& centre, double radius) {
-        const Clock::time_point start = Clock::now();
-        auto near = field_.value_near(centre, radius);
-        seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
-        return std::function<double(const Vec3&)>(
-            [this, near = std::move(near)](const Vec3& p) { return measure([&] { return near(p); }); });
-      };
-    }
+    m.value_and_gradient_near = metered_near(field_.value_and_gradient_near);
+    m.value_near = metered_near(field_.value_near);
     return m;
   }
   void report_progress(bool on) { reporting_ = on && bool(options_.progress); }
@@ -62,6 +45,22 @@ class FieldMeter {
   double seconds() const { return seconds_; }
 
  private:
+  /// A field's `..._near` metered: the shared work (choosing for the ball)
+  /// timed as the field's, each point's evaluation counted. Unset if unset.
+  template <class Sample>
+  using Near = std::function<std::function<Sample(const Vec3&)>(const Vec3& centre, double radius)>;
+  template <class Sample>
+  Near<Sample> metered_near(const Near<Sample>& near_of) {
+    if (!near_of) return {};
+    return [this, &near_of](const Vec3& centre, double radius) {
+      const Clock::time_point start = Clock::now();
+      auto near = near_of(centre, radius);
+      seconds_ += seconds_since(start);
+      return std::function<Sample(const Vec3&)>(
+          [this, near = std::move(near)](const Vec3& p) { return measure([&] { return near(p); }); });
+    };
+  }
+
   template <class Evaluate>
   std::invoke_result_t<Evaluate> measure(Evaluate evaluate) {
     const Clock::time_point start = Clock::now();
