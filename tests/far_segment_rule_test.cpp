@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "skelconv/errors.hpp"
@@ -385,5 +386,59 @@ TEST(FarSegmentRule, EachScalisRuleWithinItsBudget) {
   }
 }
 
+/// The lower bound from Q's mean (Jensen's inequality, far_segment_rule.hpp)
+/// at 400 points 0.01–100 segment lengths from the middle: at most the exact
+/// f, and at least the bound from Q's larger end, which it tightens; over
+/// balls, the bound of ball_mean_square at most f anywhere in the ball.
+/// Returns the largest ratio of the bound to f seen (< 1).
+template <class S>
+double expect_lower_bound_below_f(const S& segment, unsigned seed) {
+  const FarSegmentRule& rule = *segment.far_rule();
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Vec3 middle = 0.5 * (segment.a() + segment.b());
+  const double length = (segment.b() - segment.a()).norm();
+  double closest = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double reach = length * std::pow(10.0, 2 * unit(random));  // 0.01 … 100 lengths from the middle
+    const Vec3 p = middle + reach * Vec3(unit(random), unit(random), unit(random));
+    const double f = segment.value(p);
+    const double lower = rule.lower_bound(p);
+    const FarSegmentRule::EndSquares ends = rule.end_squares(p);
+    EXPECT_LE(lower, f * (1 + 1e-14)) << "at " << p.transpose();
+    EXPECT_GE(lower, rule.lower_bound(std::max(ends.a, ends.b)) * (1 - 1e-14)) << "at " << p.transpose();
+    closest = std::max(closest, lower / f);
+    const double radius = reach * 0.5 * (1 + unit(random));
+    const double ball_lower = rule.lower_bound(rule.ball_mean_square(p, radius));
+    for (int j = 0; j < 8; ++j) {
+      Vec3 offset(unit(random), unit(random), unit(random));
+      if (offset.norm() > 1) offset /= offset.norm();
+      const Vec3 q = p + radius * offset;
+      EXPECT_LE(ball_lower, segment.value(q) * (1 + 1e-14)) << "ball at " << p.transpose() << ", radius " << radius;
+    }
+  }
+  return closest;
+}
+
+TEST(FarSegmentRule, LowerBoundFromTheMeanOfQ) {
+  unsigned seed = 61;
+  for (const auto& [degree, s, weight] : std::vector<std::tuple<int, double, std::vector<double>>>{
+           {4, 4.0, {1.0}}, {3, 1.0, {1.0, 0.5}}, {8, 9.0, {0.2, 0.0, 1.0, 0.3}}, {16, 0.5, {1.0, 2.0}}}) {
+    const Segment segment(Vec3(0.1, -0.2, 0.3), Vec3(1.2, 0.4, -0.1), KernelSpec::cauchy(degree, s), weight);
+    ASSERT_NE(segment.far_rule(), nullptr);
+    const double closest = expect_lower_bound_below_f(segment, seed++);
+    std::printf("classical i = %d, s %.1f: largest lower bound / f %.3f\n", degree, s, closest);
+  }
+  for (const auto& [degree, sigma, tau0, tau1] : std::vector<std::array<double, 4>>{
+           {2, 1.0, 0.5, 0.6}, {4, 1.0, 0.6, 1.3}, {4, 1.0, 1.0, 0.1}, {7, 2.0, 0.2, 0.4}, {10, 1.0, 0.8, 0.08}}) {
+    const ScalisSegment segment(Vec3(0.1, -0.2, 0.3), Vec3(1.2, 0.4, -0.1), tau0, tau1,
+                                ScalisKernel::cauchy(int(degree), sigma));
+    ASSERT_NE(segment.far_rule(), nullptr);
+    const double closest = expect_lower_bound_below_f(segment, seed++);
+    std::printf("SCALIS i = %d, radii %.2f, %.2f: largest lower bound / f %.3f\n", int(degree), tau0, tau1, closest);
+  }
+}
+
 }  // namespace
 }  // namespace skelconv
+

@@ -322,6 +322,38 @@ bool FarSegmentRule::finish(const Vec3& a, const Vec3& b, int degree) {
   a_ = a;
   ab_ = b - a;
   degree_ = degree;
+  // The moments of mean_square under ω/∫ω by the longest Gauss rule, exact
+  // for these polynomials (ω t² and ω c² have degree at most 11, the rule
+  // 2 max_nodes − 1 = 39); the variance from the mean, a sum of squares.
+  {
+    const far_rule::Rule& rule = far_rule::rules()[std::size_t(max_nodes)];
+    const double c_max = std::sqrt(q_unit_);  // SCALIS: the larger end's c
+    std::array<double, max_nodes> weight{};
+    double mass = 0, first = 0;
+    for (std::size_t j = 0; j < std::size_t(max_nodes); ++j) {
+      const double t = rule.t[j];
+      double w = 1;
+      if (integrand_.scalis) {
+        w = far_rule::power((integrand_.c0 + integrand_.c1 * t) / c_max, degree - 1);
+      } else {
+        w = integrand_.w[std::size_t(integrand_.weight_degree)];
+        for (int k = integrand_.weight_degree - 1; k >= 0; --k) w = w * t + integrand_.w[std::size_t(k)];
+      }
+      weight[j] = rule.g[j] * w;
+      mass += weight[j];
+      first += weight[j] * t;
+    }
+    const double mean = first / mass;
+    double variance = 0, square = 0;  // E[(t − t̄)²], E[c²]
+    for (std::size_t j = 0; j < std::size_t(max_nodes); ++j) {
+      const double t = rule.t[j], c = integrand_.scalis ? integrand_.c0 + integrand_.c1 * t : 0.0;
+      variance += weight[j] * (t - mean) * (t - mean);
+      square += weight[j] * c * c;
+    }
+    centroid_ = a + mean * ab_;
+    spread_ = ab_.squaredNorm() * (variance / mass) + (integrand_.scalis ? square / mass : offset_a_);
+    if (!(mass > 0) || !std::isfinite(spread_) || !centroid_.allFinite()) return false;
+  }
   const auto usable = [](double x) { return std::isnormal(x); };
   for (double constant : {offset_a_, offset_b_, q_unit_, two_over_length_, lower_front_, f_factor_,
                           gradient_factor_, front_, gradient_front_}) {

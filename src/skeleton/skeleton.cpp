@@ -109,13 +109,13 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
   constexpr bool uniform = Degree > 0 && Scalis >= 0;
   const std::size_t count = rules.size();
   const bool gradient = need != Need::value;
-  // Q at the ends of every segment, read by both the lower bound and the
-  // choice of rules (none where the rules are `chosen` already).
+  // Q at the ends of every segment, read by the choice of rules, and the
+  // lower bound (none where the rules are `chosen` already).
   boost::container::small_vector<FarSegmentRule::EndSquares, far_rule_chunk> ends(chosen ? 0 : count);
   double lower = 0;
   for (std::size_t k = 0; k < ends.size(); ++k) {
     ends[k] = rules[k].end_squares(p);
-    lower += rules[k].template lower_bound<Degree>(ends[k]);
+    lower += rules[k].template lower_bound<Degree>(rules[k].mean_square(p));
   }
   const double budget = tolerance * lower / double(count);
   constexpr std::size_t groups = FarSegmentRule::max_nodes / 2 + 1;  // 0 (exact), 2, 4, …, max_nodes nodes
@@ -193,8 +193,9 @@ constexpr std::array<AddSegmentsWithin<Need>, sizeof...(Degree) + 1> add_segment
 
 /// The rules of add_segments_within chosen for every point within `radius`
 /// of `centre` (Skeleton::rules_near), into nodes[k]: Q at the ends bounded
-/// over the ball (FarSegmentRule::ball_nodes), so that f̲ is at most f at
-/// every point of it and each rule meets its share of ε f̲ there.
+/// over the ball (FarSegmentRule::ball_nodes) and Q's mean too
+/// (FarSegmentRule::ball_mean_square), so that f̲ is at most f at every
+/// point of it and each rule meets its share of ε f̲ there.
 /// `Degree`, `Scalis` as in add_segments_within.
 template <int Degree, int Scalis>
 void choose_near(const std::vector<FarSegmentRule>& rules, const Vec3& centre, double radius, double tolerance,
@@ -204,7 +205,7 @@ void choose_near(const std::vector<FarSegmentRule>& rules, const Vec3& centre, d
   double lower = 0;
   for (std::size_t k = 0; k < count; ++k) {
     roots[k] = rules[k].end_roots(rules[k].end_squares(centre));
-    lower += rules[k].template lower_bound<Degree>(FarSegmentRule::ball_far_squares(roots[k], radius));
+    lower += rules[k].template lower_bound<Degree>(rules[k].ball_mean_square(centre, radius));
   }
   const double budget = tolerance * lower / double(count);
   for (std::size_t k = 0; k < count; ++k) {

@@ -123,7 +123,7 @@ class FarSegmentRule {
   bool scalis() const { return integrand_.scalis; }
 
   /// Q at the segment's ends, Q(0) = |P − A|² + c(0)² and Q(1): all that
-  /// lower_bound and nodes read of P, computed once for both.
+  /// nodes reads of P.
   struct EndSquares {
     double a = 0, b = 0;
   };
@@ -133,22 +133,34 @@ class FarSegmentRule {
     return {pa.squaredNorm() + offset_a_, pb.squaredNorm() + offset_b_};
   }
 
-  /// A lower bound of f(P): L ∫ω · Q_max^(−m), with Q_max = max(Q(0), Q(1))
-  /// (Q is convex in t, ω ≥ 0), as L ∫ω q_unit^(−m) · (q_unit / Q_max)^m so
-  /// that neither factor leaves the double range for moderate inputs.
-  /// Rounded like any f; 0 where it underflows. `Degree`: the rule's degree
-  /// when the caller knows it at compile time (the same operations, with
-  /// the loop unrolled), 0 to read it.
+  /// Q's mean over the segment weighted by ω, E[Q] = ∫ω Q / ∫ω: since Q is
+  /// quadratic in t, |P − Γ(t̄)|² + L² Var(t) + E[c²] (t̄, Var and E[c²]
+  /// under the weight ω/∫ω, computed once per segment).
+  double mean_square(const Vec3& p) const { return (p - centroid_).squaredNorm() + spread_; }
+  /// The largest mean_square over the ball of `radius` around `centre`.
+  double ball_mean_square(const Vec3& centre, double radius) const {
+    const double far = (centre - centroid_).norm() + radius;
+    return far * far + spread_;
+  }
+
+  /// A lower bound of f(P) from Q's mean (mean_square): x^(−m) is convex
+  /// and ω/∫ω a probability density on [0, 1], so by Jensen's inequality
+  /// f = L ∫ω · E[Q^(−m)] ≥ L ∫ω · E[Q]^(−m); E[Q] ≤ max(Q(0), Q(1)) (Q is
+  /// convex in t), so this is never below the bound from the ends. As
+  /// L ∫ω q_unit^(−m) · (q_unit / E[Q])^m so that neither factor leaves
+  /// the double range for moderate inputs. Rounded like any f; 0 where it
+  /// underflows. `Degree`: the rule's degree when the caller knows it at
+  /// compile time (the same operations, with the loop unrolled), 0 to read it.
   template <int Degree = 0>
-  double lower_bound(const EndSquares& q) const {
+  double lower_bound(double mean_square) const {
     const int degree = Degree > 0 ? Degree : degree_;
-    const double inverse = q_unit_ / std::max(q.a, q.b);
+    const double inverse = q_unit_ / mean_square;
     double power = 1;
     for (int k = 0; k < degree / 2; ++k) power *= inverse;
     if (degree % 2 == 1) power *= std::sqrt(inverse);
     return lower_front_ * power;
   }
-  double lower_bound(const Vec3& p) const { return lower_bound(end_squares(p)); }
+  double lower_bound(const Vec3& p) const { return lower_bound(mean_square(p)); }
 
   /// The nodes n of the shortest rule with an even n (the rules run two
   /// nodes at a time) whose bound is at most `budget` for f and
@@ -168,15 +180,11 @@ class FarSegmentRule {
   /// at most `radius` with P (√(x² + c²) is 1-Lipschitz in x), so S by at
   /// most 4 radius / L'; the table's bound decreases as S grows and W
   /// grows with it, so the table is read at the least S and W taken at the
-  /// largest. lower_bound of ball_far_squares bounds f over the ball.
+  /// largest. lower_bound of ball_mean_square bounds f over the ball.
   struct EndRoots {
     double a = 0, b = 0;
   };
   EndRoots end_roots(const EndSquares& q) const { return {std::sqrt(q.a), std::sqrt(q.b)}; }
-  static EndSquares ball_far_squares(const EndRoots& roots, double radius) {
-    const double largest = std::max(roots.a, roots.b) + radius;
-    return {largest * largest, largest * largest};
-  }
   template <int Degree = 0, int Scalis = -1>
   int ball_nodes(const EndRoots& roots, double radius, double budget) const {
     const double sum = roots.a + roots.b;
@@ -283,6 +291,9 @@ class FarSegmentRule {
   double q_unit_ = 0;
   /// L Ω ∫_0^1 (ω/Ω) dt · q_unit^(−m): lower_bound's factor.
   double lower_front_ = 0;
+  /// Γ(t̄) and L² Var(t) + E[c²] under the weight ω/∫ω (mean_square).
+  Vec3 centroid_ = Vec3::Zero();
+  double spread_ = 0;
   /// W(S) = Σ w_k r^k · (bound_base_ + bound_slope_ r)^bound_power_: the
   /// polynomial is the classical weight (where it is not constant), the power
   /// SCALIS (c_min/c_max, |c1|/c_max, i − 1: W relative to c_max^(i−1)).
