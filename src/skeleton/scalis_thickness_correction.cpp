@@ -304,6 +304,7 @@ ScalisThicknessCorrection correct_scalis_thickness(const ScalisSegmentGraph& g,
   settings.reach = options.point_support_ratio * g.kernel.sigma * largest;
   settings.tolerance = options.tolerance, settings.max_iterations = options.max_iterations;
   settings.regularisation = options.regularisation;
+  settings.progress = options.progress;
   for (std::size_t e = 0; e < g.edges.size(); ++e) {  // the input, unsplit, for the measure before
     out.pieces.push_back({e, g.nodes[g.edges[e].a], g.nodes[g.edges[e].b], g.radius[e][0], g.radius[e][1], 1.0});
   }

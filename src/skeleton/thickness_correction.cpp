@@ -328,6 +328,7 @@ ThicknessCorrection correct_thickness(const SegmentGraph& graph, const Thickness
   settings.reach = std::max(graph.kernel.R, out.point_support);
   settings.tolerance = options.tolerance, settings.max_iterations = options.max_iterations;
   settings.regularisation = options.regularisation;
+  settings.progress = options.progress;
   out.before = sample_layout(graph, options);
   detail::measure_thickness(out.before,
                             weighted_skeleton(graph, std::vector<double>(graph.nodes.size(), out.base_weight)),
