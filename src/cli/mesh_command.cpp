@@ -88,7 +88,7 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
   mesh->add_option("--max-triangles", options.max_triangles,
                    "Refuse a --size whose mesh would have more triangles than this (estimated from the box "
                    "before meshing; default 4000000)")
-      ->check(count_option());
+      ->check(count_option(1));
   mesh->add_option("--tolerance", options.tolerance,
                    "Relative tolerance of the field (default 1e-12; 0: exact to rounding): Cauchy segments far "
                    "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")

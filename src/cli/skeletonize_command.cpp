@@ -199,7 +199,7 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       fmt::format("Refuse a mesh of more triangles or vertices than this (default {}), while "
                                   "reading it: the work grows with the number of samples",
                                   options.max_triangles))
-      ->check(count_option());
+      ->check(count_option(1));
   command->add_flag("--repair", options.repair,
                     "Repair the mesh instead of refusing it: split edges shared by more than two triangles, fill "
                     "holes (each at most 25% of the closed surface's area), and replace a mesh whose triangles cross "
