@@ -213,6 +213,7 @@ int run_thickness(const ThicknessOptions& options) {
   return print_all_or_nothing([&] {
     if (!has_extension(options.output_path, ".json"))
       throw InputError("the skeleton file must end in .json", options.output_path);
+    check_writable(options.output_path);  // before the fit's minutes, not after them
     ProgressLines lines("thickness", options.quiet);
     const Skeleton skeleton = load_skeleton_file(options.input_path);
     return is_scalis_graph(skeleton) ? run_scalis(skeleton, options, lines) : run_classical(skeleton, options, lines);
