@@ -189,7 +189,15 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
       ->check(CLI::IsMember({"all", "result"}));
   command->add_option("--measure-divisions", options.measure_divisions,
                       "--report and --method auto mesh the skeleton with facets of the diagonal / this (default 100)")
-      ->check(CLI::Range(10.0, 1000.0));
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            double value = 0.0;
+            // A non-number is left to CLI11's own conversion, which names it;
+            // its Range printed "Value 0 not in range 10.000000 to 1000.000000".
+            if (!CLI::detail::lexical_cast(text, value) || (value >= 10 && value <= 1000)) return {};
+            return "must be a number from 10 to 1000, got " + text;
+          },
+          "10..1000"));
   command->add_flag("--bezier-junctions", options.bezier_junctions,
                     "Join three branches by a cubic Bézier triangle (Ferley §2.4) of SCALIS triangles");
   command->add_option("--noise", options.noise,
