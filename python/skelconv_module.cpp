@@ -28,6 +28,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "skelconv/detail/unsigned_zero.hpp"
 #include "skelconv/skelconv.hpp"
 
 namespace skelconv::python {
@@ -51,6 +52,9 @@ py::tuple field(const Skeleton& skeleton, const DoubleArray& points, unsigned th
     failure = evaluate_batch_into(skeleton, {in, 3 * n}, {f, n}, {g, 3 * n}, options);
   }
   if (failure) rethrow_located(failure->error, fmt::format("points[{}]", failure->index));
+  // A zero as +0, as `skelconv eval` prints it (detail/unsigned_zero.hpp).
+  for (std::size_t k = 0; k < n; ++k) f[k] = detail::unsigned_zero(f[k]);
+  for (std::size_t k = 0; k < 3 * n; ++k) g[k] = detail::unsigned_zero(g[k]);
   return py::make_tuple(values, gradients);
 }
 
@@ -76,8 +80,9 @@ py::tuple bound(const Skeleton& skeleton, const DoubleArray& boxes, std::optiona
     for (std::size_t k = 0; k < n; ++k) {
       try {
         const interval::Interval f = interval::enclose(skeleton, interval::box_from_corners({in + 6 * k, 6}));
-        out_lo[k] = f.lower();
-        out_hi[k] = f.upper();
+        // −0 (directed rounding at a box straddling a compact support) as 0, as `skelconv bound` prints it.
+        out_lo[k] = detail::unsigned_zero(f.lower());
+        out_hi[k] = detail::unsigned_zero(f.upper());
       } catch (...) {
         rethrow_located(std::current_exception(), fmt::format("boxes[{}]", k));
       }

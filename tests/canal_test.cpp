@@ -369,7 +369,7 @@ TYPED_TEST(CanalTest, InterpolationRefusals) {
                   .starts_with("pole: is nested with one of spheres[0] and spheres[1] but not with the other"));
   // The same sphere twice.
   EXPECT_EQ(message([&] { SphereInterpolation<T>({sphere_vector(a), sphere_vector(a)}, far_pole<T>()); }),
-            "spheres[1]: repeats spheres[0]");
+            "spheres[1]: the same sphere as spheres[0] (centre and radius): consecutive spheres must differ, no canal surface joins a sphere to itself");
   // The linear family refuses nested spheres too.
   EXPECT_TRUE(message([&] { LinearSphereFamily<T>({a, nested}); }).starts_with("spheres[1]: spheres[0] and spheres[1] are nested"));
 }

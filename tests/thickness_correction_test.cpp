@@ -11,10 +11,12 @@
 // denser, and the root finder is plain bisection from its own scan.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "expect_input_error.hpp"
@@ -146,6 +148,27 @@ TEST(ThicknessCorrection, TheSameFitAtEveryScale) {
       EXPECT_NEAR(s.point_weights[k], c.point_weights[k], 1e-9 * c.base_weight) << scale << " node " << k;
     }
   }
+}
+
+// The progress callback sees iteration 0 (the thickness before the fit) and
+// then every iteration in order, the last report being the result's worst
+// departure; the result is the same bytes with or without it.
+TEST(ThicknessCorrection, ProgressReportsEveryIteration) {
+  const SegmentGraph graph = segment_graph_of(parse_skeleton_json(l_corner()));
+  ThicknessCorrectionOptions options;
+  options.thickness = tau;
+  const ThicknessCorrection plain = correct_thickness(graph, options);
+  std::vector<std::pair<int, double>> reports;
+  options.progress = [&](int iteration, double worst) { reports.emplace_back(iteration, worst); };
+  const ThicknessCorrection c = correct_thickness(graph, options);
+  ASSERT_GT(c.iterations, 0);
+  ASSERT_EQ(reports.size(), std::size_t(c.iterations) + 1);
+  for (std::size_t k = 0; k < reports.size(); ++k) EXPECT_EQ(reports[k].first, int(k));
+  double worst_after = 0;
+  for (const ThicknessSample& x : c.after) worst_after = std::max(worst_after, std::abs(x.thickness - x.target) / x.target);
+  EXPECT_EQ(reports.back().second, worst_after);
+  EXPECT_GT(reports.front().second, options.tolerance);
+  EXPECT_EQ(corrected_skeleton_json(c), corrected_skeleton_json(plain));
 }
 
 TEST(ThicknessCorrection, PointsOfTheSegmentsSupportStallAboveTolerance) {

@@ -9,6 +9,7 @@ must carry the CLI's message: what these tests check is the binding itself
 """
 import glob
 import json
+import math
 import os
 import subprocess
 import tempfile
@@ -96,6 +97,9 @@ class FieldAgreesWithCli(unittest.TestCase):
         f2, g2 = skeleton.field(points, threads=3)
         np.testing.assert_array_equal(f1, f2)
         np.testing.assert_array_equal(g1, g2)
+        # An absurd count is refused with the limit (it started what the system allowed).
+        with self.assertRaisesRegex(skelconv.InputError, r"^threads: at most 1024 threads \(0: every core, [0-9]+ here\), got 100000$"):
+            skeleton.field(points, threads=100000)
         f, g = skeleton.value_and_gradient(points[5])
         self.assertEqual(f, f1[5])
         np.testing.assert_array_equal(g, g1[5])
@@ -312,6 +316,30 @@ class BoundAgreesWithCli(unittest.TestCase):
         with self.assertRaises(skelconv.InputError) as raised:
             skelconv.load_skeleton_file(path).bound(flipped)
         self.assertEqual(str(raised.exception), "boxes[1]: " + message[len("line 2: "):])
+
+
+class NoNegativeZero(unittest.TestCase):
+    def test_bound_of_a_box_straddling_a_support(self):
+        # The enclosure's lower end comes out of directed rounding as -0 (the
+        # CLI's test bound.straddling_support prints "0 0.13099298158710004").
+        skeleton = skelconv.load_skeleton_file(os.path.join(DATA, "notes_soft_points.json"))
+        lo, hi = skeleton.bound([[2, 2, 2, 3, 3, 3]])
+        self.assertEqual(lo[0], 0.0)
+        self.assertFalse(math.copysign(1.0, lo[0]) < 0, "lo is -0")
+        self.assertEqual(hi[0], 0.13099298158710004)
+
+    def test_field_zeros_unsigned_negative_subnormal_kept(self):
+        # A compact point beyond its support: f and grad exactly 0, all +0;
+        # a negative Gaussian point 27 widths out: f a negative subnormal.
+        skeleton = skelconv.parse_skeleton_json(
+            '{"primitives": [{"type": "point", "center": [0, 0, 0], "kernel": {"family": "compact", "degree": 4, "R": 1}}]}')
+        f, g = skeleton.field([[5, -5, 0], [0, -3, 0]])
+        for value in list(f) + list(g.ravel()):
+            self.assertFalse(math.copysign(1.0, value) < 0, f"{value} is -0")
+        gaussian = skelconv.parse_skeleton_json(
+            '{"primitives": [{"type": "point", "center": [0, 0, 0], "kernel": {"family": "gaussian", "a": 1, "b": 1}, "weight": -1}]}')
+        f, _ = gaussian.field([[27, 0, 0]])
+        self.assertLess(f[0], 0.0)
 
 
 class BoundIsoAndOctreeAgreeWithCli(unittest.TestCase):

@@ -11,6 +11,7 @@
 
 #include "exit_status.hpp"
 #include "point_lines.hpp"
+#include "skelconv/detail/unsigned_zero.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/interval/octree.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
@@ -53,8 +54,8 @@ std::string bound_lines(const Skeleton& skeleton, std::string_view input, std::o
     const interval::Interval f = interval::enclose(skeleton, *box);
     // An end computed as −(−x − y) under directed rounding can be −0 (a box
     // straddling a compact support): the same number, printed as 0.
-    const auto unsigned_zero = [](double x) { return x == 0.0 ? 0.0 : x; };
-    fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g}", unsigned_zero(f.lower()), unsigned_zero(f.upper()));
+    fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g}", detail::unsigned_zero(f.lower()),
+                   detail::unsigned_zero(f.upper()));
     if (iso) fmt::format_to(std::back_inserter(output), " {}", interval::classification_name(interval::classify(f, *iso)));
     output += '\n';
   }

@@ -2,7 +2,8 @@
 // (--threads, --max-points, --max-triangles): a whole number written with
 // digits only. CLI11 reads "-1" into an unsigned option as the largest
 // value (a limit of -1 was no limit at all), and its NonNegativeNumber
-// names the range 0 to 1.8e308 in full.
+// names the range 0 to 1.8e308 in full. A limit of triangles must be at
+// least 1: with 0 every mesh was refused by a message naming --size.
 #pragma once
 
 #include <string>
@@ -11,11 +12,13 @@
 
 namespace skelconv::cli {
 
-inline CLI::Validator count_option() {
+/// `smallest`: 0 or 1 (a count of at least one).
+inline CLI::Validator count_option(int smallest = 0) {
   return CLI::Validator(
-      [](std::string& text) -> std::string {
-        if (!text.empty() && text.find_first_not_of("0123456789") == std::string::npos) return {};
-        return "must be a whole number >= 0 written with digits, got " + text;
+      [smallest](std::string& text) -> std::string {
+        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        if (digits && !(smallest > 0 && text.find_first_not_of('0') == std::string::npos)) return {};
+        return "must be a whole number >= " + std::to_string(smallest) + " written with digits, got " + text;
       },
       "COUNT");
 }

@@ -1,11 +1,12 @@
 // Implementation of eval_command.hpp.
 #include "eval_command.hpp"
 
-#include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <iterator>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -14,7 +15,9 @@
 #include "count_option.hpp"
 #include "exit_status.hpp"
 #include "point_lines.hpp"
+#include "progress_lines.hpp"
 #include "tolerance_option.hpp"
+#include "skelconv/detail/unsigned_zero.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/field/batch.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
@@ -41,33 +44,6 @@ On any error nothing is written to stdout and one "skelconv: error: ..." line
 to stderr; exit status 2 for bad input, 1 if a value cannot be computed in
 double precision. Schema of SKELETON.json: see docs/cli.md.)";
 
-/// The progress lines of a long run on stderr, as `skelconv mesh` prints
-/// its own: at most one a second, none in a run shorter than that, none with
-/// --quiet. Seconds count from when the skeleton file was read.
-class Progress {
- public:
-  explicit Progress(bool quiet) : quiet_(quiet) {}
-  bool quiet() const { return quiet_; }
-  /// Whether a second has passed since the last line (or the start); then
-  /// the next line is due now.
-  bool due() {
-    if (quiet_) return false;
-    const Clock::time_point now = Clock::now();
-    if (now - last_ < std::chrono::seconds(1)) return false;
-    last_ = now;
-    return true;
-  }
-  void print(std::string_view what) const {
-    std::fprintf(stderr, "skelconv eval: %.*s, %.1f s\n", int(what.size()), what.data(),
-                 std::chrono::duration<double>(Clock::now() - start_).count());
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  bool quiet_;
-  Clock::time_point start_ = Clock::now(), last_ = start_;
-};
-
 /// Lines between two looks at the clock while the points are parsed.
 constexpr std::size_t lines_between_clock_reads = 1 << 16;
 
@@ -80,7 +56,7 @@ struct PointList {
   std::exception_ptr bad_line;
 };
 
-PointList read_points(std::string_view input, Progress& progress) {
+PointList read_points(std::string_view input, ProgressLines& progress) {
   PointList list;
   std::size_t line_number = 0;
   while (!input.empty()) {
@@ -107,7 +83,7 @@ PointList read_points(std::string_view input, Progress& progress) {
 /// returning the output text. Throws InputError / EvaluationError located
 /// at "line N", the first failing line whatever the thread count.
 std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, unsigned threads, double tolerance,
-                           Progress& progress) {
+                           ProgressLines& progress) {
   const PointList list = read_points(input, progress);
   BatchOptions options;
   options.threads = threads;
@@ -126,8 +102,10 @@ std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, uns
   std::string output;
   for (std::size_t k = 0; k < result.samples.size(); ++k) {
     const FieldSample& sample = result.samples[k];
-    fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g} {:.17g} {:.17g}\n", sample.value,
-                   sample.gradient.x(), sample.gradient.y(), sample.gradient.z());
+    // A zero prints as 0 whatever its sign (detail/unsigned_zero.hpp).
+    fmt::format_to(std::back_inserter(output), "{:.17g} {:.17g} {:.17g} {:.17g}\n", detail::unsigned_zero(sample.value),
+                   detail::unsigned_zero(sample.gradient.x()), detail::unsigned_zero(sample.gradient.y()),
+                   detail::unsigned_zero(sample.gradient.z()));
     if ((k + 1) % lines_between_clock_reads == 0 && progress.due())
       progress.print(fmt::format("formatted {} of {} output lines", k + 1, result.samples.size()));
   }
@@ -140,8 +118,17 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
   CLI::App* eval = app.add_subcommand("eval", "Evaluate the field and its gradient at points read from stdin");
   eval->add_option("SKELETON", options.skeleton_path, "Skeleton file (JSON)")->required();
   eval->add_option("--threads", options.threads,
-                   "Threads evaluating the points (0: every core); the output is the same for any value")
-      ->check(count_option());
+                   "Threads evaluating the points (0: every core, at most 1024); the output is the same for any value")
+      ->check(count_option())
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            // count_option has passed: digits only. A count too long for
+            // unsigned is over the limit too (CLI11 said "Could not convert").
+            const std::size_t digits = text.size() - std::min(text.size(), text.find_first_not_of('0'));
+            if (digits <= 4 && std::stoul(text) <= max_batch_threads) return {};
+            return fmt::format("{}, got {}", thread_limit_text(), text);
+          },
+          "COUNT"));
   eval->add_option("--max-points", options.limits.max_points,
                    "Refuse more points than this (default 10000000): the points and their output lines are held "
                    "in memory until the last one is evaluated")
@@ -160,7 +147,7 @@ int run_eval(const EvalOptions& options) {
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     // From here: a skeleton file that takes seconds to read (10⁵ points)
     // is not the points' time.
-    Progress progress(options.quiet);
+    ProgressLines progress("eval", options.quiet);
     const std::string input = read_point_input(stdin, options.limits, [&](std::size_t points) {
       if (progress.due()) progress.print(fmt::format("read {} points", points));
     });

@@ -13,6 +13,7 @@
 
 #include "count_option.hpp"
 #include "exit_status.hpp"
+#include "text_output.hpp"
 #include "tolerance_option.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/implicit_field.hpp"
@@ -44,6 +45,7 @@ cannot be evaluated. Details: docs/mesh.md.)";
 /// written there: checks the extension and the directory with a probe file
 /// written by write_mesh itself, then removed.
 void check_output_path(const std::filesystem::path& path) {
+  require_not_directory(path);
   std::filesystem::path probe = path;
   // The process id keeps two runs writing to the same place (ctest -j) from
   // removing each other's probe.
@@ -88,7 +90,7 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
   mesh->add_option("--max-triangles", options.max_triangles,
                    "Refuse a --size whose mesh would have more triangles than this (estimated from the box "
                    "before meshing; default 4000000)")
-      ->check(count_option());
+      ->check(count_option(1));
   mesh->add_option("--tolerance", options.tolerance,
                    "Relative tolerance of the field (default 1e-12; 0: exact to rounding): Cauchy segments far "
                    "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")

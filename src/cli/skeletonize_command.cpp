@@ -189,7 +189,15 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
       ->check(CLI::IsMember({"all", "result"}));
   command->add_option("--measure-divisions", options.measure_divisions,
                       "--report and --method auto mesh the skeleton with facets of the diagonal / this (default 100)")
-      ->check(CLI::Range(10.0, 1000.0));
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            double value = 0.0;
+            // A non-number is left to CLI11's own conversion, which names it;
+            // its Range printed "Value 0 not in range 10.000000 to 1000.000000".
+            if (!CLI::detail::lexical_cast(text, value) || (value >= 10 && value <= 1000)) return {};
+            return "must be a number from 10 to 1000, got " + text;
+          },
+          "10..1000"));
   command->add_flag("--bezier-junctions", options.bezier_junctions,
                     "Join three branches by a cubic Bézier triangle (Ferley §2.4) of SCALIS triangles");
   command->add_option("--noise", options.noise,
@@ -199,7 +207,7 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       fmt::format("Refuse a mesh of more triangles or vertices than this (default {}), while "
                                   "reading it: the work grows with the number of samples",
                                   options.max_triangles))
-      ->check(count_option());
+      ->check(count_option(1));
   command->add_flag("--repair", options.repair,
                     "Repair the mesh instead of refusing it: split edges shared by more than two triangles, fill "
                     "holes (each at most 25% of the closed surface's area), and replace a mesh whose triangles cross "

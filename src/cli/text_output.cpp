@@ -31,6 +31,7 @@ void write_texts_atomically(const std::vector<std::pair<std::string, std::filesy
   const auto remove_temporaries = [&](std::size_t count) {
     for (std::size_t k = 0; k < count; ++k) std::filesystem::remove(temporary_for(files[k].second), ignored);
   };
+  for (const auto& file : files) require_not_directory(file.second);  // before any is written
   for (std::size_t k = 0; k < files.size(); ++k) {
     if (!write_whole(files[k].first, temporary_for(files[k].second))) {
       remove_temporaries(k + 1);
@@ -53,7 +54,14 @@ void write_text_atomically(const std::string& text, const std::filesystem::path&
   write_texts_atomically({{text, path}});
 }
 
+void require_not_directory(const std::filesystem::path& path) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored))
+    throw InputError("is a directory: the output must be a file name", path.string());
+}
+
 void check_writable(const std::filesystem::path& path) {
+  require_not_directory(path);
   const std::filesystem::path probe = temporary_for(path);
   const bool writable = write_whole(std::string(), probe);
   std::error_code ignored;

@@ -24,9 +24,16 @@ void write_texts_atomically(const std::vector<std::pair<std::string, std::filesy
 
 /// Throws InputError("cannot write the file", path) unless a file can be
 /// created at `path`: the temporary write_text_atomically would use, created
-/// empty and removed. Run before long work, so that a bad output path is
-/// refused at once rather than after it.
+/// empty and removed; and InputError("is a directory: ...") for a directory
+/// (whose sibling temporary is writable, but not the rename over it). Run
+/// before long work, so that a bad output path is refused at once rather
+/// than after it.
 void check_writable(const std::filesystem::path& path);
+
+/// InputError at `path` if it names a directory: the rename of a temporary
+/// over it fails only after all the work (skeletonize --report DIR.json ran
+/// its minutes, then failed and left the skeleton file written).
+void require_not_directory(const std::filesystem::path& path);
 
 /// Whether `path` ends in `extension` (".json", lower case) whatever the
 /// case of its letters: OUT.JSON and out.Json are JSON files too, as the

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "exit_status.hpp"
+#include "progress_lines.hpp"
 #include "text_output.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
@@ -30,7 +31,11 @@ FILE.json: a skeleton of "segment" primitives with one "compact" kernel, in one
 Output:    OUT.json, the corrected skeleton; on stdout the thickness (distance
            from the skeleton to the surface along the plane's normal) at the
            samples of each input segment, before (base weight w_tau everywhere)
-           and after the correction. See docs/thickness_correction.md.)";
+           and after the correction. See docs/thickness_correction.md.
+Progress:  in a run longer than a second, about one line a second on stderr,
+           "skelconv thickness: iteration K of at most N, worst departure
+           X%, T s" (each iteration re-measures every sample); none with
+           --quiet.)";
 
 /// min, max and worst |r − τ|/τ of the samples on edge `edge`.
 struct EdgeSummary {
@@ -122,11 +127,22 @@ CLI::App* add_thickness_command(CLI::App& app, ThicknessOptions& options) {
       ->each([&options](const std::string&) { options.ramp_nodes_given = true; });
   c->add_option("--regularisation", options.regularisation, "Penalty on the relative weight changes")->capture_default_str();
   c->add_option("--point-support", options.point_support, "Support radius of the node points, in units of R")->capture_default_str();
+  c->add_flag("--quiet", options.quiet, "No progress line on stderr");
   c->footer(thickness_footer);
   return c;
 }
 
 namespace {
+
+/// The options' progress callback: a line a second at most (ProgressLines).
+ThicknessProgress progress_printer(ProgressLines& lines, int max_iterations) {
+  if (lines.quiet()) return {};
+  return [&lines, max_iterations](int iteration, double worst) {
+    if (lines.due())
+      lines.print(fmt::format("iteration {} of at most {}, worst departure {:.2f}%", iteration, max_iterations,
+                              100 * worst));
+  };
+}
 
 /// Whether the file's top level holds SCALIS segments (then the radii are
 /// the targets and --tau is not used).
@@ -147,7 +163,7 @@ Graph located_graph(const ThicknessOptions& options, Build build) {
   }
 }
 
-std::string run_classical(const Skeleton& skeleton, const ThicknessOptions& options) {
+std::string run_classical(const Skeleton& skeleton, const ThicknessOptions& options, ProgressLines& lines) {
   const SegmentGraph graph = located_graph<SegmentGraph>(options, [&] { return segment_graph_of(skeleton); });
   if (!options.tau_given) throw InputError("required for a graph of classical segments", "--tau");
   ThicknessCorrectionOptions o;
@@ -157,6 +173,7 @@ std::string run_classical(const Skeleton& skeleton, const ThicknessOptions& opti
   o.ramp_nodes = options.ramp_nodes;
   o.regularisation = options.regularisation;
   o.point_support_ratio = options.point_support;
+  o.progress = progress_printer(lines, options.max_iterations);
   ThicknessCorrection c;
   try {
     c = correct_thickness(graph, o);
@@ -167,7 +184,7 @@ std::string run_classical(const Skeleton& skeleton, const ThicknessOptions& opti
   return report(graph, c, options.tau, options.tolerance, options.output_path);
 }
 
-std::string run_scalis(const Skeleton& skeleton, const ThicknessOptions& options) {
+std::string run_scalis(const Skeleton& skeleton, const ThicknessOptions& options, ProgressLines& lines) {
   const ScalisSegmentGraph graph =
       located_graph<ScalisSegmentGraph>(options, [&] { return scalis_segment_graph_of(skeleton); });
   if (options.tau_given) throw InputError("not used for SCALIS segments: their radii are the thickness", "--tau");
@@ -177,6 +194,7 @@ std::string run_scalis(const Skeleton& skeleton, const ThicknessOptions& options
   if (options.ramp_nodes_given) o.ramp_nodes = options.ramp_nodes;
   o.regularisation = options.regularisation;
   o.point_support_ratio = options.point_support;
+  o.progress = progress_printer(lines, options.max_iterations);
   ScalisThicknessCorrection c;
   try {
     c = correct_scalis_thickness(graph, o);
@@ -195,8 +213,10 @@ int run_thickness(const ThicknessOptions& options) {
   return print_all_or_nothing([&] {
     if (!has_extension(options.output_path, ".json"))
       throw InputError("the skeleton file must end in .json", options.output_path);
+    check_writable(options.output_path);  // before the fit's minutes, not after them
+    ProgressLines lines("thickness", options.quiet);
     const Skeleton skeleton = load_skeleton_file(options.input_path);
-    return is_scalis_graph(skeleton) ? run_scalis(skeleton, options) : run_classical(skeleton, options);
+    return is_scalis_graph(skeleton) ? run_scalis(skeleton, options, lines) : run_classical(skeleton, options, lines);
   });
 }
 

@@ -1,6 +1,6 @@
 // src/cli/thickness_command.hpp — `skelconv thickness FILE.json --tau T
 // -o OUT.json [--tolerance e] [--max-iterations n] [--ramp-nodes m]
-// [--regularisation l] [--point-support r]`.
+// [--regularisation l] [--point-support r] [--quiet]`.
 //
 // The thickness correction of Zanni et al. 2013 §5.1
 // (skelconv/skeleton/thickness_correction.hpp, docs/thickness_correction.md)
@@ -28,6 +28,7 @@ struct ThicknessOptions {
   bool ramp_nodes_given = false;  ///< else the SCALIS default (ScalisThicknessCorrectionOptions)
   double regularisation = 1e-5;
   double point_support = 1.25;  ///< ThicknessCorrectionOptions::point_support_ratio
+  bool quiet = false;           ///< no progress lines on stderr
 };
 
 CLI::App* add_thickness_command(CLI::App& app, ThicknessOptions& options);

@@ -35,6 +35,7 @@ int run_view(const ViewOptions& options) {
   return print_all_or_nothing([&] {
     const std::filesystem::path output(options.output_path);
     if (!has_extension(output, ".html")) throw InputError("the page must be an .html file", options.output_path);
+    check_writable(output);
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     ViewPageOptions page_options;
     page_options.name = std::filesystem::path(options.skeleton_path).filename().string();

@@ -22,6 +22,15 @@ namespace skelconv {
 
 unsigned default_thread_count() { return std::max(1u, std::thread::hardware_concurrency()); }
 
+std::string thread_limit_text() {
+  return fmt::format("at most {} threads (0: every core, {} here)", max_batch_threads, default_thread_count());
+}
+
+void check_thread_count(unsigned threads) {
+  if (threads <= max_batch_threads) return;
+  throw InputError(fmt::format("{}, got {}", thread_limit_text(), threads), "threads");
+}
+
 namespace {
 
 /// The threads run_blocks starts for `count` points: never more than blocks.
@@ -127,6 +136,7 @@ void advise_huge_pages(void* data, std::size_t bytes) {
 
 BatchResult evaluate_batch(const Skeleton& skeleton, std::span<const Vec3> points, const BatchOptions& options) {
   Skeleton::checked_tolerance(options.tolerance);  // a bad option is no point's failure
+  check_thread_count(options.threads);
   skeleton.prepare();  // validates and builds the index before the threads share it
   BatchResult result;
   result.samples.reserve(points.size());
@@ -157,6 +167,7 @@ std::optional<BatchFailure> evaluate_batch_into(const Skeleton& skeleton, std::s
                                  xyz.size(), values.size(), gradients.size()));
   }
   Skeleton::checked_tolerance(options.tolerance);
+  check_thread_count(options.threads);
   skeleton.prepare();
   return run_blocks(values.size(), options, [&](std::size_t k) {
     const FieldSample s =

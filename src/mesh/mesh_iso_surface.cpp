@@ -142,6 +142,26 @@ std::string about_count(double estimate) {
 /// exceed options.max_triangles.
 void check_output_size(const Box3& box, double size, double distance, const MeshOptions& options) {
   const double estimate = estimate_triangles(box, size);
+  if (!(estimate <= double(options.max_triangles)) && !options.size) {
+    // The user gave no --size: the limit is what they chose. The estimate
+    // goes as 1/h², so the size that meets it is h·√(estimate / limit),
+    // shown rounded up to 3 digits (rounded down it would be refused).
+    const double needed = size * std::sqrt(estimate / double(options.max_triangles));
+    const double digit = std::pow(10.0, std::floor(std::log10(needed)) - 2);
+    if (!(needed <= box.diagonal())) {
+      throw InputError(fmt::format("{} triangles are fewer than any facet size makes: the largest, the diagonal {:g} "
+                                   "of the box that holds the surface, makes {}; raise --max-triangles",
+                                   options.max_triangles, box.diagonal(),
+                                   about_count(estimate_triangles(box, box.diagonal()))),
+                       "--max-triangles");
+    }
+    throw InputError(fmt::format("the default facet size {:g} (the diagonal {:g} of the box that holds the surface "
+                                 "/ 50) makes {} triangles, more than the limit {}: raise --max-triangles, or "
+                                 "choose a --size of at least {:.3g}",
+                                 size, box.diagonal(), about_count(estimate), options.max_triangles,
+                                 std::ceil(needed / digit) * digit),
+                     "--max-triangles");
+  }
   if (!(estimate <= double(options.max_triangles))) {
     throw InputError(fmt::format("a facet size of {:g} in a box of diagonal {:g} makes {} triangles, "
                                  "more than the limit {} (--max-triangles): choose a larger --size, or raise "

@@ -111,6 +111,11 @@ std::string obj_text(const TriangleMesh& mesh) {
 /// Writes `bytes` to a temporary sibling of `path`, then renames it over
 /// `path`; on any failure removes the temporary and throws.
 void write_atomically(const std::string& bytes, const std::filesystem::path& path) {
+  // A directory's sibling temporary is writable, but not the rename over it.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw InputError("is a directory: the mesh must be a file name", path.string());
+  }
   std::filesystem::path temporary = path;
   // Per process: two runs writing the same file must not share a temporary.
   temporary += ".skelconv-partial-" + std::to_string(::getpid());

@@ -110,6 +110,7 @@ Segment::Segment(const Vec3& a, const Vec3& b, const KernelSpec& kernel, std::sp
   input_.b = to_array(frame_.point(b));
   input_.w = {0.0, 0.0, 0.0, 0.0};
   for (int k = 0; k <= weight_degree_; ++k) input_.w[std::size_t(k)] = weight[std::size_t(k)];
+  for (const double w : weight) largest_weight_ = std::max(largest_weight_, std::abs(w));
   input_.s = frame_.scaled(kernel.s, -2);
   input_.R = frame_.scaled(kernel.R, 1);
   input_.gaussian_a = frame_.scaled(kernel.a, -2);  // exp(−a d²): a has units length^−2
@@ -214,15 +215,28 @@ namespace {
   return generated_->f_and_grad(input_at(input_, point), g);
 }
 
+void Segment::require_weight_headroom(const std::string& what, const Vec3& p) const {
+  if (!(largest_weight_ >= weight_overflow_start)) return;
+  throw EvaluationError(fmt::format("a coefficient of magnitude {:g} overflows the closed form {} at P = {} (it "
+                                    "returned {}): weights from {:g} on leave no headroom in double precision; "
+                                    "divide the weights and the iso by a common factor",
+                                    largest_weight_, generated_->name, detail::format_point(p), what,
+                                    weight_overflow_start),
+                        "weight");
+}
+
 [[gnu::always_inline]] inline double Segment::restore_value(double f, const Vec3& p) const {
   double world;
   if (restore_value_common(f, factors_.value, world)) return world;
+  if (std::isnan(f) || f == -infinity) require_weight_headroom(fmt::format("{}", f), p);
   return frame_.restore_value(f, value_power_, may_vanish_, generated_->name, p);
 }
 
 [[gnu::always_inline]] inline Vec3 Segment::restore_gradient(const std::array<double, 3>& g, const Vec3& p) const {
   Vec3 world;
   if (restore_gradient_common(to_vec3(g), factors_.gradient, world)) return world;
+  if (!to_vec3(g).allFinite() && !(to_vec3(g).array() == infinity).all())
+    require_weight_headroom(fmt::format("the gradient {}", detail::format_point(to_vec3(g))), p);
   return frame_.restore_gradient(to_vec3(g), value_power_ - 1, kernel_vanishes_far_, generated_->name, p);
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include <Eigen/Dense>
@@ -159,7 +160,9 @@ void check_options(const ScalisThicknessCorrectionOptions& o) {
   if (!(o.ramp_reach > 0 && o.ramp_reach <= 4)) {
     throw InputError(fmt::format("must be in (0, 4], got {:.6g}", o.ramp_reach), "ramp_reach");
   }
-  if (!(o.regularisation >= 0)) throw InputError("must be >= 0", "regularisation");
+  // inf made NaN weights, refused as "--weight[0]: must be finite, got nan".
+  if (!(o.regularisation >= 0 && o.regularisation < std::numeric_limits<double>::infinity()))
+    throw InputError(fmt::format("must be a finite number >= 0, got {}", o.regularisation), "regularisation");
   if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {
     throw InputError("must be in [1, 100]", "samples_per_thickness");
   }
@@ -304,6 +307,7 @@ ScalisThicknessCorrection correct_scalis_thickness(const ScalisSegmentGraph& g,
   settings.reach = options.point_support_ratio * g.kernel.sigma * largest;
   settings.tolerance = options.tolerance, settings.max_iterations = options.max_iterations;
   settings.regularisation = options.regularisation;
+  settings.progress = options.progress;
   for (std::size_t e = 0; e < g.edges.size(); ++e) {  // the input, unsplit, for the measure before
     out.pieces.push_back({e, g.nodes[g.edges[e].a], g.nodes[g.edges[e].b], g.radius[e][0], g.radius[e][1], 1.0});
   }

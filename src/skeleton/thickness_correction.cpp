@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include <Eigen/Dense>
@@ -175,7 +176,9 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
   if (!(o.point_support_ratio >= 1 && o.point_support_ratio <= 4)) {
     throw InputError(fmt::format("must be in [1, 4], got {:.6g}", o.point_support_ratio), "point_support_ratio");
   }
-  if (!(o.regularisation >= 0)) throw InputError("must be >= 0", "regularisation");
+  // inf made NaN weights, refused as "--weight[0]: must be finite, got nan".
+  if (!(o.regularisation >= 0 && o.regularisation < std::numeric_limits<double>::infinity()))
+    throw InputError(fmt::format("must be a finite number >= 0, got {}", o.regularisation), "regularisation");
   if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {
     throw InputError("must be in [1, 100]", "samples_per_thickness");
   }
@@ -328,6 +331,7 @@ ThicknessCorrection correct_thickness(const SegmentGraph& graph, const Thickness
   settings.reach = std::max(graph.kernel.R, out.point_support);
   settings.tolerance = options.tolerance, settings.max_iterations = options.max_iterations;
   settings.regularisation = options.regularisation;
+  settings.progress = options.progress;
   out.before = sample_layout(graph, options);
   detail::measure_thickness(out.before,
                             weighted_skeleton(graph, std::vector<double>(graph.nodes.size(), out.base_weight)),

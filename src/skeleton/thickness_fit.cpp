@@ -174,10 +174,13 @@ ThicknessFitResult fit_thickness(const LinearThicknessModel& model, const Eigen:
   out.after = std::move(samples);
   measure_thickness(out.after, model.build(out.x), settings);
   double damping = damping_start;
+  if (settings.progress) settings.progress(0, worst_departure(out.after));
   while (!model.basis.empty() && worst_departure(out.after) > settings.tolerance &&
          out.iterations < settings.max_iterations) {
     ++out.iterations;
-    if (!improve(model, out, settings, damping)) break;
+    const bool improved = improve(model, out, settings, damping);
+    if (settings.progress) settings.progress(out.iterations, worst_departure(out.after));
+    if (!improved) break;
   }
   out.converged = worst_departure(out.after) <= settings.tolerance;
   return out;

@@ -45,6 +45,7 @@ struct ThicknessFitSettings {
   double tolerance = 0.01;
   int max_iterations = 30;
   double regularisation = 0.0;  ///< λ
+  ThicknessProgress progress;   ///< ThicknessCorrectionOptions::progress
 };
 
 struct ThicknessFitResult {

@@ -100,7 +100,7 @@ class LinearSphereFamily {
     const T centres = (second.center - first.center).squaredNorm();
     const T radii = (second.radius - first.radius) * (second.radius - first.radius);
     const std::string where = fmt::format("spheres[{}]", k + 1);
-    if (centres == T(0) && radii == T(0)) throw InputError(fmt::format("repeats spheres[{}]", k), where);
+    if (centres == T(0) && radii == T(0)) throw repeated_sphere_error(k);
     if (centres - radii <= tolerance * (centres + radii)) {
       throw InputError(fmt::format("spheres[{}] and spheres[{}] are nested: the distance of the centres {} is at "
                                    "most the difference of the radii {}, so no real envelope joins them (the "

@@ -40,6 +40,15 @@
 
 namespace skelconv::canal {
 
+/// The refusal of spheres[k + 1] equal to spheres[k] (centre and radius),
+/// the same for every family.
+inline InputError repeated_sphere_error(std::size_t k) {
+  return InputError(fmt::format("the same sphere as spheres[{}] (centre and radius): consecutive spheres must "
+                                "differ, no canal surface joins a sphere to itself",
+                                k),
+                    fmt::format("spheres[{}]", k + 1));
+}
+
 /// The tolerances of SphereInterpolation, relative (see is_light_like).
 template <class T>
 struct InterpolationTolerances {
@@ -155,7 +164,7 @@ class SphereInterpolation {
     if (lorentz_square(image_chord) > tolerance * image_chord.squaredNorm()) return;
     const std::string first = fmt::format("spheres[{}]", k), second = fmt::format("spheres[{}]", k + 1);
     const Vector5<T> chord = spheres[k + 1] - spheres[k];
-    if (chord.squaredNorm() == T(0)) throw InputError(fmt::format("repeats {}", first), second);
+    if (chord.squaredNorm() == T(0)) throw repeated_sphere_error(k);
     if (lorentz_square(chord) <= tolerance * chord.squaredNorm()) {
       throw InputError(fmt::format("{} and {} are nested (L = {} ≥ 1, as oriented spheres): their chord is "
                                    "time-like or light-like, so no real envelope joins them",

@@ -27,8 +27,14 @@
 
 namespace skelconv {
 
+/// The most threads a batch takes (BatchOptions::threads): above it the
+/// count is a typo, not a machine (each thread reserves a stack, 8 MB of
+/// address space on Linux, and the system may refuse thousands).
+inline constexpr unsigned max_batch_threads = 1024;
+
 struct BatchOptions {
   /// Number of threads; 0 = every core (std::thread::hardware_concurrency).
+  /// At most max_batch_threads (InputError at "threads" otherwise).
   unsigned threads = 0;
   /// Points per work item: large enough that taking one costs nothing next
   /// to evaluating it, small enough to balance 2–64 threads on 10⁴ points.
@@ -58,6 +64,14 @@ struct BatchResult {
 
 /// The number of threads `threads` = 0 stands for: every core, at least 1.
 unsigned default_thread_count();
+
+/// "at most 1024 threads (0: every core, N here)": the limit, as the
+/// refusals of a larger count say it.
+std::string thread_limit_text();
+
+/// Throws InputError located at "threads", "<thread_limit_text()>, got N",
+/// unless threads <= max_batch_threads.
+void check_thread_count(unsigned threads);
 
 /// f and ∇f at every point. Never throws for a point (see BatchResult);
 /// throws what Skeleton::prepare() throws for an invalid skeleton.

@@ -62,6 +62,12 @@ class Segment {
  public:
   /// Most weight coefficients w_0 … w_3 (weight degree ≤ max_weight_degree).
   static constexpr std::size_t max_weight_coefficients = max_weight_degree + 1;
+  /// Weight coefficients from this magnitude on leave the closed forms
+  /// little headroom in double: their terms reach about 1e5 times the
+  /// weight (a Cauchy i = 16 segment with weights [1e303, 1e303] returned a
+  /// NaN gradient at 0.5 lengths, [1e300, 1e300] did not). A NaN or an
+  /// infinity there is reported as the weight's, at `weight`.
+  static constexpr double weight_overflow_start = 1e280;
 
   /// A segment is degenerate, and rejected, when |B − A| is below this
   /// fraction of its largest coordinate magnitude max(|A|∞, |B|∞): the end
@@ -145,6 +151,12 @@ class Segment {
   /// otherwise f > 0 and a 0 or subnormal result is an underflow (an error).
   bool may_vanish_ = false;
   bool kernel_vanishes_far_ = false;  ///< ∇f may be 0 or subnormal: the kernel vanishes or underflows far away
+  /// The largest |w_k|: above weight_overflow_start, a NaN or infinity out of
+  /// the closed form is blamed on the weight (require_weight_headroom).
+  double largest_weight_ = 0.0;
+  /// Throws EvaluationError at "weight" when f or ∇f came out of the closed
+  /// form non-finite (`what`: that result) and the weight is that large.
+  void require_weight_headroom(const std::string& what, const Vec3& p) const;
   /// Everything but P (and the compact clip interval), filled once, in the frame.
   SegmentInput<double> input_;
   const generated::SegmentKernel<double>* generated_ = nullptr;

@@ -100,6 +100,8 @@ struct ScalisThicknessCorrectionOptions {
   /// A node point's support in units of σ τ_n (the reason for > 1: the
   /// file comment of thickness_correction.hpp).
   double point_support_ratio = 1.25;
+  /// As ThicknessCorrectionOptions::progress.
+  ThicknessProgress progress;
 };
 
 struct ScalisThicknessCorrection {

@@ -54,6 +54,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,9 @@ inline constexpr double node_merge_ratio = 1e-9;
 /// for a skeleton without segments ("primitives: ...").
 SegmentGraph segment_graph_of(const Skeleton& skeleton);
 
+/// ThicknessCorrectionOptions::progress: (iteration, worst departure).
+using ThicknessProgress = std::function<void(int iteration, double worst_departure)>;
+
 struct ThicknessCorrectionOptions {
   double thickness = 0.0;  ///< τ > 0, below the kernel's support radius R
   /// Relative departure |r − τ|/τ above which a sample makes its nodes need
@@ -118,6 +122,13 @@ struct ThicknessCorrectionOptions {
   /// ~1.2% to τ (least squares) there. With 1.25 R the same ramp reaches
   /// ~0.2% for τ/R from 0.3 to 0.7 (docs/thickness_correction.md).
   double point_support_ratio = 1.25;
+  /// If set, called after the thickness before the fit is measured
+  /// (iteration 0) and after each fit iteration, with the worst relative
+  /// departure |r − τ|/τ of the samples then: every iteration re-measures
+  /// every sample, seconds each at tens of thousands of samples, so a
+  /// caller can show that the work goes on (`skelconv thickness`'s
+  /// progress lines). The result does not depend on it.
+  ThicknessProgress progress;
 };
 
 /// One thickness measurement: on edge `edge` of the graph it belongs to, at

@@ -48,20 +48,26 @@ def write(path, V, F, comment):
             f.write("3 " + " ".join(map(str, t)) + "\n")
 
 
-V, F = icosphere(3)
-write("sphere.ply", V, F, "icosphere (3 subdivisions of an icosahedron), radius 1: skeletonize's ball case")
-cube = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
-CF = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6),
-      (3, 0, 4), (3, 4, 7)]
-write("cube.ply", cube, CF, "unit cube, 8 vertices, 12 triangles, outward: skeletonize's low-poly case")
-V1, F1 = icosphere(2, 1.0, (0, 0, 0))
-V2, F2 = icosphere(2, 1.0, (1.2, 0, 0))
-write("spheres_overlapping.ply", V1 + V2, F1 + [tuple(i + len(V1) for i in t) for t in F2],
-      "two overlapping icospheres (radius 1, centres 1.2 apart) in one mesh, no boolean: self-intersecting")
-cap = math.cos(math.radians(25))
-kept = [t for t in F if sum(V[i][2] for i in t) / 3 / math.sqrt(sum((sum(V[i][k] for i in t) / 3) ** 2
-                                                                   for k in range(3))) < cap]
-used = sorted({i for t in kept for i in t})
-renumber = {v: k for k, v in enumerate(used)}
-write("sphere_open.ply", [V[i] for i in used], [tuple(renumber[i] for i in t) for t in kept],
-      "sphere.ply without a polar cap of 25 degrees (the vertices of no triangle left out): one hole")
+def main():
+    """Writes the meshes of the module docstring into the current directory (importing writes nothing)."""
+    V, F = icosphere(3)
+    write("sphere.ply", V, F, "icosphere (3 subdivisions of an icosahedron), radius 1: skeletonize's ball case")
+    cube = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+    CF = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6),
+          (3, 0, 4), (3, 4, 7)]
+    write("cube.ply", cube, CF, "unit cube, 8 vertices, 12 triangles, outward: skeletonize's low-poly case")
+    V1, F1 = icosphere(2, 1.0, (0, 0, 0))
+    V2, F2 = icosphere(2, 1.0, (1.2, 0, 0))
+    write("spheres_overlapping.ply", V1 + V2, F1 + [tuple(i + len(V1) for i in t) for t in F2],
+          "two overlapping icospheres (radius 1, centres 1.2 apart) in one mesh, no boolean: self-intersecting")
+    cap = math.cos(math.radians(25))
+    kept = [t for t in F if sum(V[i][2] for i in t) / 3 / math.sqrt(sum((sum(V[i][k] for i in t) / 3) ** 2
+                                                                       for k in range(3))) < cap]
+    used = sorted({i for t in kept for i in t})
+    renumber = {v: k for k, v in enumerate(used)}
+    write("sphere_open.ply", [V[i] for i in used], [tuple(renumber[i] for i in t) for t in kept],
+          "sphere.ply without a polar cap of 25 degrees (the vertices of no triangle left out): one hole")
+
+
+if __name__ == "__main__":
+    main()

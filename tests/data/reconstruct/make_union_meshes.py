@@ -24,7 +24,7 @@ import math
 import sys
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0] if "/" in __file__ else ".")
-from make_sphere_meshes import icosphere, write  # noqa: E402  (writes make_sphere_meshes' files too: same bytes)
+from make_sphere_meshes import icosphere, write  # noqa: E402
 
 CUBE_FACES = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7),
               (2, 7, 6), (3, 0, 4), (3, 4, 7)]
@@ -43,51 +43,57 @@ def join(*parts):
     return V, F
 
 
-crossing = box((0.25, 0.25, -0.5), (0.75, 0.75, 0.5))  # crosses the bottom face z = 0 of [0,1]^3
-V, F = join(box((0, 0, 0), (1, 1, 1)), box((1, 1, 1), (2, 2, 2)), crossing)
-write("cubes_vertex_crossing.ply", V, F, "cubes touching at one corner (two vertex indices there), a box crossing one")
-V, F = join(box((0, 0, 0), (1, 1, 1)), box((1, 1, 0), (2, 2, 1)), crossing)
-write("cubes_edge_crossing.ply", V, F, "cubes sharing one edge, a box crossing one of them")
+def main():
+    """Writes the meshes of the module docstring into the current directory (importing writes nothing)."""
+    crossing = box((0.25, 0.25, -0.5), (0.75, 0.75, 0.5))  # crosses the bottom face z = 0 of [0,1]^3
+    V, F = join(box((0, 0, 0), (1, 1, 1)), box((1, 1, 1), (2, 2, 2)), crossing)
+    write("cubes_vertex_crossing.ply", V, F, "cubes touching at one corner (two vertex indices there), a box crossing one")
+    V, F = join(box((0, 0, 0), (1, 1, 1)), box((1, 1, 0), (2, 2, 1)), crossing)
+    write("cubes_edge_crossing.ply", V, F, "cubes sharing one edge, a box crossing one of them")
 
-V1, F1 = icosphere(2, 1.0, (0, 0, 0))
-V2, F2 = icosphere(2, 1.0, (1.2, 0, 0))
-# The third sphere: the first mirrored through its vertex p (v -> 2p - v, which reverses the orientation, so each
-# triangle is flipped); p itself is shared, so the two touch at p only (the first lies in x.p <= 1).
-p = max(range(len(V1)), key=lambda i: (-V1[i][0], V1[i][1], V1[i][2]))  # a vertex on the side away from sphere 2
-V3 = [tuple(2 * V1[p][k] - v[k] for k in range(3)) for v in V1]
-F3 = [tuple(p if i == p else i + len(V1) + len(V2) for i in (t[0], t[2], t[1])) for t in F1]
-V, F = join((V1, F1), (V2, F2))
-V += V3
-F += F3
-used = sorted({i for t in F for i in t})
-renumber = {v: k for k, v in enumerate(used)}
-write("spheres_touching.ply", [V[i] for i in used], [tuple(renumber[i] for i in t) for t in F],
-      "two overlapping icospheres and a third touching the first at one vertex")
+    V1, F1 = icosphere(2, 1.0, (0, 0, 0))
+    V2, F2 = icosphere(2, 1.0, (1.2, 0, 0))
+    # The third sphere: the first mirrored through its vertex p (v -> 2p - v, which reverses the orientation, so each
+    # triangle is flipped); p itself is shared, so the two touch at p only (the first lies in x.p <= 1).
+    p = max(range(len(V1)), key=lambda i: (-V1[i][0], V1[i][1], V1[i][2]))  # a vertex on the side away from sphere 2
+    V3 = [tuple(2 * V1[p][k] - v[k] for k in range(3)) for v in V1]
+    F3 = [tuple(p if i == p else i + len(V1) + len(V2) for i in (t[0], t[2], t[1])) for t in F1]
+    V, F = join((V1, F1), (V2, F2))
+    V += V3
+    F += F3
+    used = sorted({i for t in F for i in t})
+    renumber = {v: k for k, v in enumerate(used)}
+    write("spheres_touching.ply", [V[i] for i in used], [tuple(renumber[i] for i in t) for t in F],
+          "two overlapping icospheres and a third touching the first at one vertex")
 
-V, F = join((V1, F1), (V2, F2))
-around = [k for k, t in enumerate(F) if 0 in t]
-V = V + [V[0]]
-F = [tuple(len(V) - 1 if (i == 0 and k in around[:2]) else i for i in t) for k, t in enumerate(F)]
-write("spheres_duplicate_vertex.ply", V, F, "spheres_overlapping.ply with vertex 0 stored twice")
+    V, F = join((V1, F1), (V2, F2))
+    around = [k for k, t in enumerate(F) if 0 in t]
+    V = V + [V[0]]
+    F = [tuple(len(V) - 1 if (i == 0 and k in around[:2]) else i for i in t) for k, t in enumerate(F)]
+    write("spheres_duplicate_vertex.ply", V, F, "spheres_overlapping.ply with vertex 0 stored twice")
 
-Vi, Fi = icosphere(2, 0.5, (0.1, 0, 0))
-V, F = join((V1, F1), (Vi, Fi))
-write("spheres_nested.ply", V, F, "a sphere inside another, both facing outwards, crossing nothing")
+    Vi, Fi = icosphere(2, 0.5, (0.1, 0, 0))
+    V, F = join((V1, F1), (Vi, Fi))
+    write("spheres_nested.ply", V, F, "a sphere inside another, both facing outwards, crossing nothing")
 
-A, FA = box((0, 0, 0), (2, 2, 2))
-B, FB = box((1, 1, 1), (3, 3, 3))
-# Split the edge 2 -> 6 ((2,2,0) -> (2,2,2)) at m: the triangle (2, 7, 6) that runs 6 -> 2 becomes (2, 7, m) and
-# (m, 7, 6); the triangle (1, 2, 6) that runs 2 -> 6 stays, and the zero-area triangle (2, m, 6) closes it.
-A.append((2, 2, 1))
-m = len(A) - 1
-FA = [t for t in FA if t != (2, 7, 6)] + [(2, 7, m), (m, 7, 6), (2, m, 6)]
-V, F = join((A, FA), (B, FB))
-write("cubes_degenerate.ply", V, F, "two crossing cubes, one with a zero-area triangle on the other's face")
+    A, FA = box((0, 0, 0), (2, 2, 2))
+    B, FB = box((1, 1, 1), (3, 3, 3))
+    # Split the edge 2 -> 6 ((2,2,0) -> (2,2,2)) at m: the triangle (2, 7, 6) that runs 6 -> 2 becomes (2, 7, m) and
+    # (m, 7, 6); the triangle (1, 2, 6) that runs 2 -> 6 stays, and the zero-area triangle (2, m, 6) closes it.
+    A.append((2, 2, 1))
+    m = len(A) - 1
+    FA = [t for t in FA if t != (2, 7, 6)] + [(2, 7, m), (m, 7, 6), (2, m, 6)]
+    V, F = join((A, FA), (B, FB))
+    write("cubes_degenerate.ply", V, F, "two crossing cubes, one with a zero-area triangle on the other's face")
 
-cubes = join(box((0, 0, 0), (1, 1, 1)), box((1, 1, 1), (2, 2, 2)))
-write("cubes_vertex_box.ply", *join(cubes, box((1, 0.5, 0.5), (1.8, 1, 1.5))),
-      "cubes touching at a corner, a box touching both along faces, its edge through the corner")
-# Corners chosen with a positive volume for the faces below (outward).
-T = [(0.5, 0.5, 0.5), (1.5, 1.5, 1.5), (1.5, 0.25, 0.75), (0.25, 1.5, 0.75)]
-write("cubes_vertex_tetrahedron.ply", *join(cubes, (T, [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)])),
-      "cubes touching at a corner, a tetrahedron crossing both through the corner")
+    cubes = join(box((0, 0, 0), (1, 1, 1)), box((1, 1, 1), (2, 2, 2)))
+    write("cubes_vertex_box.ply", *join(cubes, box((1, 0.5, 0.5), (1.8, 1, 1.5))),
+          "cubes touching at a corner, a box touching both along faces, its edge through the corner")
+    # Corners chosen with a positive volume for the faces below (outward).
+    T = [(0.5, 0.5, 0.5), (1.5, 1.5, 1.5), (1.5, 0.25, 0.75), (0.25, 1.5, 0.75)]
+    write("cubes_vertex_tetrahedron.ply", *join(cubes, (T, [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)])),
+          "cubes touching at a corner, a tetrahedron crossing both through the corner")
+
+
+if __name__ == "__main__":
+    main()
