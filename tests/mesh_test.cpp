@@ -221,6 +221,26 @@ ImplicitField scaled(const Skeleton& skeleton, double alpha) {
 // A seed ray that meets an evaluation failure is skipped only where the field
 // is infinite on its skeleton (an inverse kernel); on a field finite
 // everywhere the failure is a real one and must reach the caller.
+// Against a torus (one component, χ 0, one handle): a torus and a sphere
+// apart (2 components, χ 2) is one defect, a piece; a double torus
+// (χ −2) one, a handle; a double torus with a cavity (2 components, χ 0,
+// the torus's own χ) two, though neither the χ nor (by one) the component
+// count tells them apart from a torus with a piece off; a sphere (χ 2) one.
+TEST(MeshTopologyDefects, EachComponentAndEachHandleCountsOne) {
+  const auto topology = [](std::size_t components, long long euler) {
+    MeshTopology t;
+    t.components = components, t.euler_characteristic = euler;
+    return t;
+  };
+  const MeshTopology torus = topology(1, 0);
+  EXPECT_EQ(topology_defects(torus, torus), 0);
+  EXPECT_EQ(topology_defects(torus, topology(2, 2)), 1);
+  EXPECT_EQ(topology_defects(torus, topology(1, -2)), 1);
+  EXPECT_EQ(topology_defects(torus, topology(2, 0)), 2);
+  EXPECT_EQ(topology_defects(torus, topology(1, 2)), 1);
+  EXPECT_EQ(topology_defects(topology(1, 2), topology(4, 4)), 5);  // three pieces more, two handles
+}
+
 TEST(MeshSeeds, EvaluationErrorsSurfaceUnlessTheFieldIsInfiniteOnItsSkeleton) {
   ImplicitField field;
   // A ball of radius 1 (f = 2 − |p|², iso 1) whose evaluation fails on the

@@ -2,6 +2,7 @@
 #include "skelconv/mesh/mesh_topology.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -110,6 +111,14 @@ MeshTopology mesh_topology(const TriangleMesh& mesh) {
   topology.closed = closed && !mesh.triangles.empty();
   topology.manifold = at_most_two && !repeated_vertex && vertex_links_are_fans(mesh, uses);
   return topology;
+}
+
+long long topology_defects(const MeshTopology& reference, const MeshTopology& result) {
+  const auto doubled_handles = [](const MeshTopology& t) {
+    return 2 * (long long)t.components - t.euler_characteristic;
+  };
+  return std::llabs((long long)result.components - (long long)reference.components) +
+         std::llabs(doubled_handles(result) - doubled_handles(reference)) / 2;
 }
 
 }  // namespace skelconv

@@ -132,8 +132,11 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   std::vector<Vec3> inside;
   for (const WeightedPoint& p : merged_in_cells(centres, m.fit_spacing * diagonal, on_surface))
     inside.push_back(p.point);
-  // The topology error: each component too many or too few, and each
-  // tunnel (χ by 2) or cavity too many or too few, counts one.
+  // The topology error: each component and each handle too many or too
+  // few counts one (topology_defects). Measured by χ and the component
+  // count alone, a tunnel and a cavity opened together would cancel
+  // (CGAL's camel: its hind legs fused and a hollow opened in its head,
+  // which the fit's guard took for one defect, fewer than a detached hoof's).
   const MeshTopology input_topology = mesh_topology(surface);
   // Each surface it meshes is kept with its spheres (a few megabytes
   // each, at most 2 + log2(rounds) + topology_checks of them): where the
@@ -146,8 +149,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     s.medial = medial;
     meshed.emplace_back(medial.spheres, mesh_stage(surface, s, o));
     const MeshTopology t = mesh_topology(meshed.back().second);
-    return std::llabs((long long)t.components - (long long)input_topology.components) +
-           std::llabs(t.euler_characteristic - input_topology.euler_characteristic) / 2;
+    return topology_defects(input_topology, t);
   };
   // The guard meshes the skeleton as the measure does, so it is off where
   // the measure would refuse that work (--measure-budget): the fit never

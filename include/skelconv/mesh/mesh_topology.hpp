@@ -30,4 +30,12 @@ struct MeshTopology {
 
 MeshTopology mesh_topology(const TriangleMesh& mesh);
 
+/// How many defects separate the topology of closed surfaces `result` from
+/// `reference`'s: each component too many or too few counts one, and each
+/// handle (tunnel) too many or too few counts one, the handles summed over
+/// the components (2·components − χ = 2 Σ g). A detached piece or a cavity
+/// (one more component of genus 0) is one defect, and an extra tunnel with
+/// a cavity is two: the difference in χ alone would let them cancel.
+long long topology_defects(const MeshTopology& reference, const MeshTopology& result);
+
 }  // namespace skelconv
