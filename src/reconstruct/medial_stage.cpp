@@ -86,13 +86,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   };
   prune(graph);
   if (const double thin = median_radius(graph), h = diagonal / m.sample_divisions;
-      m.thin_wall_samples > 0.0 && thin > 0.0 && thin < m.thin_wall_samples * h) {
-    sampling.diagonal_divisions =
-        m.sample_divisions * std::min(m.thin_wall_max_refinement, m.thin_wall_samples * h / thin);
+      thin > 0.0 && thin < m.thin_wall_radius * h) {
+    sampling.diagonal_divisions = m.sample_divisions * std::min(m.thin_wall_max_refinement, h / thin);
     if (o.progress)
-      o.progress(fmt::format("medial path: median medial radius {:.3g} of the diagonal, below {} samples' spacing: "
+      o.progress(fmt::format("medial path: median medial radius {:.3g} × the samples' spacing (thin walls): "
                              "sampled again at the diagonal / {:.1f}",
-                             thin / diagonal, m.thin_wall_samples, sampling.diagonal_divisions));
+                             thin / h, sampling.diagonal_divisions));
     graph = medial_graph(surface, 20, sampling);
     prune(graph);
   }
