@@ -1,6 +1,7 @@
 // The `medial` stage of reconstruct.hpp: the inner Voronoi graph pruned,
 // simplified to a medial mesh, its tube ends extended and its spheres (centres and radii) fitted
 // (docs/reconstruction_medial.md).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -49,6 +50,17 @@ void extend_tube_ends(MedialMesh& mesh, double factor) {
   }
 }
 
+/// The median radius of the graph's vertices (0 for none): the thickness
+/// of most of the shape, its thin walls where they make up most of it.
+double median_radius(const MedialGraph& graph) {
+  std::vector<double> radii;
+  for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
+  if (radii.empty()) return 0.0;
+  const auto middle = radii.begin() + std::ptrdiff_t(radii.size() / 2);
+  std::nth_element(radii.begin(), middle, radii.end());
+  return *middle;
+}
+
 std::size_t primitives(const MedialMesh& mesh) {
   return mesh.edges.size() + mesh.triangles.size() + mesh.isolated.size();
 }
@@ -61,15 +73,28 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   SamplingOptions sampling;
   sampling.diagonal_divisions = m.sample_divisions;
   MedialGraph graph = medial_graph(surface, 20, sampling);
-  if (o.progress)
-    o.progress(fmt::format("medial path: {} samples, {} inner Voronoi vertices", graph.samples.size(),
-                           graph.vertices.size()));
   MedialPathReport r;
-  r.samples = graph.samples.size();
-  r.vertices = graph.vertices.size();
-  r.pruned = prune_medial_graph(graph, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
-                     std::max(m.prune_span, o.prune_span) * diagonal)
-                 .vertices_removed;
+  const auto prune = [&](MedialGraph& g) {
+    if (o.progress)
+      o.progress(fmt::format("medial path: {} samples, {} inner Voronoi vertices", g.samples.size(),
+                             g.vertices.size()));
+    r.samples = g.samples.size();
+    r.vertices = g.vertices.size();
+    r.pruned = prune_medial_graph(g, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
+                                  std::max(m.prune_span, o.prune_span) * diagonal)
+                   .vertices_removed;
+  };
+  prune(graph);
+  if (const double thin = median_radius(graph), h = diagonal / m.sample_divisions;
+      thin > 0.0 && thin < m.thin_wall_radius * h) {
+    sampling.diagonal_divisions = m.sample_divisions * std::min(m.thin_wall_max_refinement, h / thin);
+    if (o.progress)
+      o.progress(fmt::format("medial path: median medial radius {:.3g} × the samples' spacing (thin walls): "
+                             "sampled again at the diagonal / {:.1f}",
+                             thin / h, sampling.diagonal_divisions));
+    graph = medial_graph(surface, 20, sampling);
+    prune(graph);
+  }
   QuadricOptions quadric;
   quadric.budget = m.budget;
   // The quadric knows planes, not the inside: a sphere merged from a sheet
