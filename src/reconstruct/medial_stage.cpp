@@ -86,7 +86,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   };
   prune(graph);
   if (const double thin = median_radius(graph), h = diagonal / m.sample_divisions;
-      thin > 0.0 && thin < m.thin_wall_radius * h) {
+      m.thin_walls && thin > 0.0 && thin < m.thin_wall_radius * h) {
     sampling.diagonal_divisions = m.sample_divisions * std::min(m.thin_wall_max_refinement, h / thin);
     if (o.progress)
       o.progress(fmt::format("medial path: median medial radius {:.3g} × the samples' spacing (thin walls): "

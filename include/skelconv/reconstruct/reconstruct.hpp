@@ -59,7 +59,8 @@ struct MedialOptions {
   /// (surface_samples.hpp; the curve path's 12 leaves a coarse mesh's large
   /// triangles with few samples, and the medial sheets full of holes).
   double sample_divisions = 40.0;
-  /// Thin walls: where the median radius of the pruned medial graph is
+  /// Thin walls (off unless `thin_walls`; `--medial-thin-walls`): where
+  /// the median radius of the pruned medial graph is
   /// below `thin_wall_radius` × the samples' spacing, the graph is built
   /// again with the spacing shrunk to that median (two samples across the
   /// wall), at most `thin_wall_max_refinement` times finer. A wall sampled
@@ -68,7 +69,10 @@ struct MedialOptions {
   /// holes, each one a tunnel in the result (CGAL's rotor, median 0.54
   /// spacings: medial complex χ −47 for a genus-1 solid). Not lower: the
   /// elephant (0.84 spacings) resampled came back farther from its input
-  /// (docs/reconstruction_medial.md, "Thin walls").
+  /// (docs/reconstruction_medial.md, "Thin walls"). Off by default: the
+  /// median does not tell a shell from thin limbs, and the dino (0.55
+  /// spacings) and the femur resampled lose their topology.
+  bool thin_walls = false;
   double thin_wall_radius = 0.75;
   double thin_wall_max_refinement = 2.5;
   /// The fit's points are about this × the diagonal apart.
