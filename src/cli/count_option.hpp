@@ -3,7 +3,7 @@
 // digits only. CLI11 reads "-1" into an unsigned option as the largest
 // value (a limit of -1 was no limit at all), and its NonNegativeNumber
 // names the range 0 to 1.8e308 in full. A limit of triangles must be at
-// least 1: with 0 every mesh was refused by a message naming --size.
+// least 1: a limit of 0 triangles would refuse every mesh.
 #pragma once
 
 #include <string>

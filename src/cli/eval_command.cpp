@@ -123,7 +123,7 @@ CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
             // count_option has passed: digits only. A count too long for
-            // unsigned is over the limit too (CLI11 said "Could not convert").
+            // unsigned is over the limit too, and is refused with the limit.
             const std::size_t digits = text.size() - std::min(text.size(), text.find_first_not_of('0'));
             if (digits <= 4 && std::stoul(text) <= max_batch_threads) return {};
             return fmt::format("{}, got {}", thread_limit_text(), text);

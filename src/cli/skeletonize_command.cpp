@@ -197,7 +197,7 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
           [](std::string& text) -> std::string {
             double value = 0.0;
             // A non-number is left to CLI11's own conversion, which names it;
-            // its Range printed "Value 0 not in range 10.000000 to 1000.000000".
+            // the range is written as the other options write theirs.
             if (!CLI::detail::lexical_cast(text, value) || (value >= 10 && value <= 1000)) return {};
             return "must be a number from 10 to 1000, got " + text;
           },

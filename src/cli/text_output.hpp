@@ -31,8 +31,8 @@ void write_texts_atomically(const std::vector<std::pair<std::string, std::filesy
 void check_writable(const std::filesystem::path& path);
 
 /// InputError at `path` if it names a directory: the rename of a temporary
-/// over it fails only after all the work (skeletonize --report DIR.json ran
-/// its minutes, then failed and left the skeleton file written).
+/// over it would fail only after all the work, with the other outputs
+/// already written.
 void require_not_directory(const std::filesystem::path& path);
 
 /// Whether `path` ends in `extension` (".json", lower case) whatever the

@@ -85,8 +85,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                    .vertices_removed;
   };
   prune(graph);
-  if (const double thin = median_radius(graph), h = diagonal / m.sample_divisions;
-      m.thin_walls && thin > 0.0 && thin < m.thin_wall_radius * h) {
+  if (const double thin = m.thin_walls ? median_radius(graph) : 0.0, h = diagonal / m.sample_divisions;
+      thin > 0.0 && thin < m.thin_wall_radius * h) {
     sampling.diagonal_divisions = m.sample_divisions * std::min(m.thin_wall_max_refinement, h / thin);
     if (o.progress)
       o.progress(fmt::format("medial path: median medial radius {:.3g} × the samples' spacing (thin walls): "

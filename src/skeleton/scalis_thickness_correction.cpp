@@ -160,7 +160,7 @@ void check_options(const ScalisThicknessCorrectionOptions& o) {
   if (!(o.ramp_reach > 0 && o.ramp_reach <= 4)) {
     throw InputError(fmt::format("must be in (0, 4], got {:.6g}", o.ramp_reach), "ramp_reach");
   }
-  // inf made NaN weights, refused as "--weight[0]: must be finite, got nan".
+  // An infinite regularisation makes the fit's weights NaN: refused here, by its own name.
   if (!(o.regularisation >= 0 && o.regularisation < std::numeric_limits<double>::infinity()))
     throw InputError(fmt::format("must be a finite number >= 0, got {}", o.regularisation), "regularisation");
   if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {

@@ -176,7 +176,7 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
   if (!(o.point_support_ratio >= 1 && o.point_support_ratio <= 4)) {
     throw InputError(fmt::format("must be in [1, 4], got {:.6g}", o.point_support_ratio), "point_support_ratio");
   }
-  // inf made NaN weights, refused as "--weight[0]: must be finite, got nan".
+  // An infinite regularisation makes the fit's weights NaN: refused here, by its own name.
   if (!(o.regularisation >= 0 && o.regularisation < std::numeric_limits<double>::infinity()))
     throw InputError(fmt::format("must be a finite number >= 0, got {}", o.regularisation), "regularisation");
   if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {
