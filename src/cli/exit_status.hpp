@@ -46,16 +46,6 @@ inline void report_error(std::string_view message) {
   std::fprintf(stderr, "skelconv: error: %.*s\n", int(line.size()), line.data());
 }
 
-/// All of standard input. Throws InputError if it cannot be read.
-inline std::string read_standard_input() {
-  std::string text;
-  char chunk[1 << 16];
-  std::size_t count = 0;
-  while ((count = std::fread(chunk, 1, sizeof chunk, stdin)) > 0) text.append(chunk, count);
-  if (std::ferror(stdin)) throw InputError("cannot read standard input");
-  return text;
-}
-
 /// The one way a subcommand ends: runs `produce` (which returns the whole
 /// standard output), reports an InputError (exit 2) or EvaluationError
 /// (exit 1) as one line, and only when everything succeeded writes the

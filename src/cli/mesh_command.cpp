@@ -13,6 +13,7 @@
 
 #include "count_option.hpp"
 #include "exit_status.hpp"
+#include "../detail/whole_files.hpp"
 #include "text_output.hpp"
 #include "tolerance_option.hpp"
 #include "skelconv/errors.hpp"
@@ -45,7 +46,7 @@ cannot be evaluated. Details: docs/mesh.md.)";
 /// written there: checks the extension and the directory with a probe file
 /// written by write_mesh itself, then removed.
 void check_output_path(const std::filesystem::path& path) {
-  require_not_directory(path);
+  detail::require_not_directory(path);
   std::filesystem::path probe = path;
   // The process id keeps two runs writing to the same place (ctest -j) from
   // removing each other's probe.

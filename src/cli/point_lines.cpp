@@ -4,7 +4,9 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -136,7 +138,8 @@ std::string read_point_input(std::FILE* in, const PointInputLimits& limits,
     text.append(chunk, count);
     if (chunk_read) chunk_read(points);
   }
-  if (std::ferror(in)) throw InputError("cannot read standard input");
+  // errno names the cause: "Is a directory" for `skelconv eval < folder`.
+  if (std::ferror(in)) throw InputError(fmt::format("cannot read standard input: {}", std::strerror(errno)));
   return text;
 }
 

@@ -20,6 +20,7 @@
 #include "skelconv/reconstruct/mesh_check.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/sample_noise.hpp"
+#include "../detail/whole_files.hpp"
 #include "text_output.hpp"
 
 namespace skelconv::cli {
@@ -228,9 +229,9 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     if (options.report_image_path && !has_extension(*options.report_image_path, ".png"))
       throw InputError("the report image must end in .png", *options.report_image_path);
     // The outputs are probed before the work, which can take minutes.
-    check_writable(options.output_path);
-    if (options.report_path) check_writable(*options.report_path);
-    if (options.report_image_path) check_writable(*options.report_image_path);
+    detail::check_writable(options.output_path);
+    if (options.report_path) detail::check_writable(*options.report_path);
+    if (options.report_image_path) detail::check_writable(*options.report_image_path);
     reconstruct::ReconstructOptions ro;
     ro.method = options.method == "curve"    ? reconstruct::SkeletonMethod::curve
                 : options.method == "medial" ? reconstruct::SkeletonMethod::medial
@@ -317,7 +318,7 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     std::vector<std::pair<std::string, std::filesystem::path>> files = {{skeleton, options.output_path}};
     if (options.report_path) files.emplace_back(report, *options.report_path);
     if (options.report_image_path) files.emplace_back(image, *options.report_image_path);
-    write_texts_atomically(files);
+    detail::write_files_atomically(files);
     std::string text = summary(r, options.output_path, ro);
     if (options.report_image_path) text += fmt::format("report_image: {}\n", *options.report_image_path);
     return text;

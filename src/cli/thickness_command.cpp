@@ -13,6 +13,7 @@
 
 #include "exit_status.hpp"
 #include "progress_lines.hpp"
+#include "../detail/whole_files.hpp"
 #include "text_output.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
@@ -180,7 +181,7 @@ std::string run_classical(const Skeleton& skeleton, const ThicknessOptions& opti
   } catch (const InputError& error) {
     throw as_flag(error);
   }
-  write_text_atomically(corrected_skeleton_json(c), options.output_path);
+  detail::write_file_atomically(corrected_skeleton_json(c), options.output_path);
   return report(graph, c, options.tau, options.tolerance, options.output_path);
 }
 
@@ -203,7 +204,7 @@ std::string run_scalis(const Skeleton& skeleton, const ThicknessOptions& options
     if (error.where().starts_with("primitives")) throw InputError(error.what(), options.input_path);
     throw as_flag(error);
   }
-  write_text_atomically(scalis_corrected_skeleton_json(graph, c), options.output_path);
+  detail::write_file_atomically(scalis_corrected_skeleton_json(graph, c), options.output_path);
   return scalis_report(graph, c, options.tolerance, options.output_path);
 }
 
@@ -213,7 +214,7 @@ int run_thickness(const ThicknessOptions& options) {
   return print_all_or_nothing([&] {
     if (!has_extension(options.output_path, ".json"))
       throw InputError("the skeleton file must end in .json", options.output_path);
-    check_writable(options.output_path);  // before the fit's minutes, not after them
+    detail::check_writable(options.output_path);  // before the fit's minutes, not after them
     ProgressLines lines("thickness", options.quiet);
     const Skeleton skeleton = load_skeleton_file(options.input_path);
     return is_scalis_graph(skeleton) ? run_scalis(skeleton, options, lines) : run_classical(skeleton, options, lines);

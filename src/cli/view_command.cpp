@@ -9,6 +9,7 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
 #include "skelconv/view/view_page.hpp"
+#include "../detail/whole_files.hpp"
 #include "text_output.hpp"
 
 namespace skelconv::cli {
@@ -35,7 +36,7 @@ int run_view(const ViewOptions& options) {
   return print_all_or_nothing([&] {
     const std::filesystem::path output(options.output_path);
     if (!has_extension(output, ".html")) throw InputError("the page must be an .html file", options.output_path);
-    check_writable(output);
+    detail::check_writable(output);
     const Skeleton skeleton = load_skeleton_file(options.skeleton_path);
     ViewPageOptions page_options;
     page_options.name = std::filesystem::path(options.skeleton_path).filename().string();
@@ -48,7 +49,7 @@ int run_view(const ViewOptions& options) {
       // Located like the reader's errors: "skel.json: primitives[2]: ...".
       throw InputError(error.what(), options.skeleton_path);
     }
-    write_text_atomically(page, output);
+    detail::write_file_atomically(page, output);
     std::string text = fmt::format("output: {}\nprimitives: {}\nbytes: {}\nmode: {}\n", options.output_path,
                                    skeleton.size(), page.size(), report.mesh_preview ? "mesh preview" : "ray marching");
     if (report.mesh_preview) text += fmt::format("triangles: {}\nreason: {}\n", report.triangles, report.reason);

@@ -76,13 +76,21 @@ Box3 bounding_box(const std::vector<Vec3>& points) {
 Box3 bounding_region(const ImplicitField& field, double iso, const BoundingRegionOptions& options) {
   const Box3 skeleton = bounding_box(field.skeleton_points);
   const double diagonal = skeleton.diagonal();
-  double margin = diagonal > 0 ? diagonal / 4 : 1.0;
+  // A margin of a few doubles' spacing at the skeleton's coordinates leaves
+  // the faces on the skeleton's own points (1e100 from the origin, doubles
+  // are 2e84 apart), where f >= iso: the surface would seem not to close.
+  // From 16 spacings on, the faces are apart from the skeleton, and the
+  // mesher's precision check (mesh_iso_surface.cpp) refuses a box this
+  // fine with the reason.
+  const double magnitude = std::max(skeleton.lo.cwiseAbs().maxCoeff(), skeleton.hi.cwiseAbs().maxCoeff());
+  const double least_margin = 16 * (std::nextafter(magnitude, INFINITY) - magnitude);
+  double margin = std::max(diagonal > 0 ? diagonal / 4 : 1.0, least_margin);
   const auto passes = [&](double m) {
     return faces_below_iso(field, iso, widened(skeleton, m), options.face_samples, m);
   };
   int rescalings = 0;
   if (passes(margin)) {
-    while (rescalings++ < options.max_rescalings && passes(margin / 2)) margin /= 2;
+    while (rescalings++ < options.max_rescalings && margin / 2 >= least_margin && passes(margin / 2)) margin /= 2;
   } else {
     while (true) {
       if (rescalings++ >= options.max_rescalings || !std::isfinite(2 * margin)) {

@@ -180,6 +180,30 @@ void check_output_size(const Box3& box, double size, double distance, const Mesh
   }
 }
 
+/// Refuses a surface so far from the origin that doubles there are too
+/// coarse for the mesher's accuracy: CGAL places the surface's points to a
+/// hundredth of the facet distance (the intersection bisection's bound
+/// below), the grid its vertices to a fraction of a voxel, taken here as a
+/// hundredth of the size. Below 4 spacings per that accuracy, CGAL's
+/// bisection and distance test never settle (a ball of radius 1 at
+/// 7e11 from the origin refined without end) and the grid's vertices are
+/// rounded to steps a visible part of a voxel.
+void check_coordinate_precision(const Box3& box, double size, double distance, const MeshOptions& options) {
+  const bool cgal = options.method == MeshMethod::cgal;
+  const double accuracy = (cgal ? distance : size) / 100;
+  const double magnitude = std::max(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff());
+  const double spacing = std::nextafter(magnitude, INFINITY) - magnitude;
+  if (spacing <= accuracy / 4) return;
+  // 400 spacings, rounded up to 3 digits (rounded down it would be refused).
+  const double needed = 400 * spacing, digit = std::pow(10.0, std::floor(std::log10(needed)) - 2);
+  throw InputError(fmt::format("the surface lies up to {:.3g} from the origin, where doubles are {:.3g} apart: too "
+                               "coarse to place the mesh's points to {:.3g} (a hundredth of the {} {:.3g}); move "
+                               "the skeleton nearer the origin, or choose a {} of at least {:.3g}",
+                               magnitude, spacing, accuracy, cgal ? "facet distance" : "voxel size",
+                               cgal ? distance : size, cgal ? "--distance" : "--size", std::ceil(needed / digit) * digit),
+                   cgal ? "--distance" : "--size");
+}
+
 /// How far an enclosure must stay from the iso, relative to it, before the
 /// grid method trusts its sign: the enclosure bounds the exact field, the
 /// sampled values carry the closed forms' rounding (≤ 1e-13 relative,
@@ -356,6 +380,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   run.size = options.size.value_or(run.box.diagonal() / 50);
   run.distance = options.distance.value_or(run.size / 10);
   check_output_size(run.box, run.size, run.distance, options);
+  check_coordinate_precision(run.box, run.size, run.distance, options);
   // The seeds start CGAL's refinement and the grid's continuation; finding
   // none tells "no surface at this iso" apart from a surface a mesher misses.
   // The grid's continuation needs only the cell a seed lies in (it then

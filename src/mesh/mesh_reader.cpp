@@ -8,8 +8,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -19,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
+#include "skelconv/skeleton/text_file.hpp"
 
 namespace skelconv {
 namespace {
@@ -26,16 +25,6 @@ namespace {
 std::string lower(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return text;
-}
-
-std::string read_whole_file(const std::filesystem::path& path) {
-  // An ifstream opens a directory, and its first read throws from inside
-  // the stream ("basic_filebuf::underflow"), an internal error.
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) throw InputError("is a directory, not a mesh file", path.string());
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open the mesh file", path.string());
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 /// `word` as a finite number, or InputError at `at` ("… is not a finite number").
@@ -657,7 +646,7 @@ TriangleMesh read_mesh(const std::filesystem::path& path, std::size_t max_triang
   if (extension != ".ply" && extension != ".obj" && extension != ".off" && extension != ".stl")
     throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply, .obj, .off or .stl)",
                      path.string());
-  const std::string bytes = read_whole_file(path);
+  const std::string bytes = read_text_file(path, "mesh file");
   if (extension == ".stl")
     return is_binary_stl(bytes) ? read_binary_stl(bytes, max_triangles, path.string())
                                 : read_ascii_stl(bytes, max_triangles, path.string());

@@ -4,15 +4,13 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
-#include <cstdio>
 #include <string>
-#include <system_error>
-
-#include <unistd.h>  // getpid
 
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
+
+#include "../detail/whole_files.hpp"
 
 namespace skelconv {
 namespace {
@@ -108,36 +106,12 @@ std::string obj_text(const TriangleMesh& mesh) {
   return out;
 }
 
-/// Writes `bytes` to a temporary sibling of `path`, then renames it over
-/// `path`; on any failure removes the temporary and throws.
-void write_atomically(const std::string& bytes, const std::filesystem::path& path) {
-  // A directory's sibling temporary is writable, but not the rename over it.
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    throw InputError("is a directory: the mesh must be a file name", path.string());
-  }
-  std::filesystem::path temporary = path;
-  // Per process: two runs writing the same file must not share a temporary.
-  temporary += ".skelconv-partial-" + std::to_string(::getpid());
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (file == nullptr) throw InputError("cannot open for writing", path.string());
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  const bool closed = std::fclose(file) == 0;
-  std::error_code error;
-  if (written && closed) {
-    std::filesystem::rename(temporary, path, error);
-    if (!error) return;
-  }
-  std::filesystem::remove(temporary, error);
-  throw InputError("cannot write the mesh file", path.string());
-}
-
 }  // namespace
 
 void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path, PlyEncoding ply_encoding) {
   const MeshFormat format = format_of(path);
   check_mesh(mesh);
-  write_atomically(format == MeshFormat::ply ? ply_text(mesh, ply_encoding) : obj_text(mesh), path);
+  detail::write_file_atomically(format == MeshFormat::ply ? ply_text(mesh, ply_encoding) : obj_text(mesh), path);
 }
 
 }  // namespace skelconv

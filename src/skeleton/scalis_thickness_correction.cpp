@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <variant>
 
 #include <Eigen/Dense>
@@ -152,23 +151,10 @@ void check_options(const ScalisThicknessCorrectionOptions& o) {
     throw InputError(fmt::format("must be in (0, 1), got {:.6g}", o.tolerance), "tolerance");
   }
   if (o.max_iterations < 0) throw InputError("must be >= 0", "max_iterations");
-  // As for the classical correction (thickness_correction.cpp): each ramp
-  // node is an unknown of the dense fit; an absurd count would run without end.
-  if (o.ramp_nodes < 1 || o.ramp_nodes > 100) {
-    throw InputError(fmt::format("must be in [1, 100], got {}", o.ramp_nodes), "ramp_nodes");
-  }
   if (!(o.ramp_reach > 0 && o.ramp_reach <= 4)) {
     throw InputError(fmt::format("must be in (0, 4], got {:.6g}", o.ramp_reach), "ramp_reach");
   }
-  // An infinite regularisation makes the fit's weights NaN: refused here, by its own name.
-  if (!(o.regularisation >= 0 && o.regularisation < std::numeric_limits<double>::infinity()))
-    throw InputError(fmt::format("must be a finite number >= 0, got {}", o.regularisation), "regularisation");
-  if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {
-    throw InputError("must be in [1, 100]", "samples_per_thickness");
-  }
-  if (!(o.point_support_ratio >= 1 && o.point_support_ratio <= 4)) {
-    throw InputError(fmt::format("must be in [1, 4], got {:.6g}", o.point_support_ratio), "point_support_ratio");
-  }
+  detail::require_fit_options(o.ramp_nodes, o.samples_per_thickness, o.regularisation, o.point_support_ratio);
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <variant>
 
 #include <Eigen/Dense>
@@ -166,22 +165,7 @@ void check_options(const SegmentGraph& graph, const ThicknessCorrectionOptions& 
     throw InputError(fmt::format("must be in (0, 1), got {:.6g}", o.tolerance), "tolerance");
   }
   if (o.max_iterations < 0) throw InputError("must be >= 0", "max_iterations");
-  // Each ramp node is an unknown of the dense least-squares fit, and beyond
-  // 100 its spacing R/ramp_nodes is below the samples' (τ/4, τ < R) for any
-  // τ above R/25: unknowns no sample tells apart. The bound also keeps an
-  // absurd count (1e9) from running without end.
-  if (o.ramp_nodes < 1 || o.ramp_nodes > 100) {
-    throw InputError(fmt::format("must be in [1, 100], got {}", o.ramp_nodes), "ramp_nodes");
-  }
-  if (!(o.point_support_ratio >= 1 && o.point_support_ratio <= 4)) {
-    throw InputError(fmt::format("must be in [1, 4], got {:.6g}", o.point_support_ratio), "point_support_ratio");
-  }
-  // An infinite regularisation makes the fit's weights NaN: refused here, by its own name.
-  if (!(o.regularisation >= 0 && o.regularisation < std::numeric_limits<double>::infinity()))
-    throw InputError(fmt::format("must be a finite number >= 0, got {}", o.regularisation), "regularisation");
-  if (!(o.samples_per_thickness >= 1 && o.samples_per_thickness <= 100)) {
-    throw InputError("must be in [1, 100]", "samples_per_thickness");
-  }
+  detail::require_fit_options(o.ramp_nodes, o.samples_per_thickness, o.regularisation, o.point_support_ratio);
 }
 
 /// Sample feet: on each edge, t = j/n, j = 0..n, n ≥ samples_per_thickness · length / τ.

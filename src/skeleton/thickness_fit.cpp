@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -98,6 +99,21 @@ bool improve(const LinearThicknessModel& model, ThicknessFitResult& out, const T
 constexpr double planarity_ratio = 1e-9;
 
 }  // namespace
+
+void require_fit_options(int ramp_nodes, double samples_per_thickness, double regularisation,
+                         double point_support_ratio) {
+  if (ramp_nodes < 1 || ramp_nodes > 100) {
+    throw InputError(fmt::format("must be in [1, 100], got {}", ramp_nodes), "ramp_nodes");
+  }
+  if (!(samples_per_thickness >= 1 && samples_per_thickness <= 100)) {
+    throw InputError("must be in [1, 100]", "samples_per_thickness");
+  }
+  if (!(regularisation >= 0 && regularisation < std::numeric_limits<double>::infinity()))
+    throw InputError(fmt::format("must be a finite number >= 0, got {}", regularisation), "regularisation");
+  if (!(point_support_ratio >= 1 && point_support_ratio <= 4)) {
+    throw InputError(fmt::format("must be in [1, 4], got {:.6g}", point_support_ratio), "point_support_ratio");
+  }
+}
 
 std::size_t node_of(std::vector<Vec3>& nodes, const Vec3& p, double merge) {
   for (std::size_t k = 0; k < nodes.size(); ++k) {

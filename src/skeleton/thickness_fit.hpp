@@ -55,6 +55,17 @@ struct ThicknessFitResult {
   bool converged = false;
 };
 
+/// The options both corrections share, each refused by its own name:
+/// InputError at "ramp_nodes" unless in [1, 100] (each ramp node is an
+/// unknown of the dense fit, and past 100 its spacing R/ramp_nodes is below
+/// the samples' for any τ above R/25: unknowns no sample tells apart; the
+/// bound also keeps an absurd count from running without end), at
+/// "samples_per_thickness" unless in [1, 100], at "regularisation" unless
+/// finite and >= 0 (an infinite one makes the fit's weights NaN), at
+/// "point_support_ratio" unless in [1, 4].
+void require_fit_options(int ramp_nodes, double samples_per_thickness, double regularisation,
+                         double point_support_ratio);
+
 /// The index of the node at `p` in `nodes` (within `merge`), appended if new.
 std::size_t node_of(std::vector<Vec3>& nodes, const Vec3& p, double merge);
 

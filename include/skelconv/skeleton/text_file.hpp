@@ -1,5 +1,5 @@
 // skelconv/skeleton/text_file.hpp — reading a whole input file, with the errors the
-// readers of skeleton and canal files share.
+// readers of skeleton, canal and mesh files share.
 #pragma once
 
 #include <filesystem>
