@@ -245,7 +245,8 @@ double winding_number(const TriangleMesh& m, const Vec3& p) {
 /// the solid {winding number ≥ 1/2}: 0 just in front, 1 just behind.
 bool bounds_union(const TriangleMesh& input, const Vec3& p, const Vec3& n) {
   constexpr double step = 1e-7;  // far below the triangles' size (~0.1), far above rounding
-  return std::abs(winding_number(input, p + step * n)) < 1e-6 && std::abs(winding_number(input, p - step * n) - 1) < 1e-6;
+  return std::abs(winding_number(input, p + step * n)) < 1e-6 &&
+         std::abs(winding_number(input, p - step * n) - 1) < 1e-6;
 }
 
 /// The closed mesh's parts by shared edges (vertices at one position are
@@ -260,8 +261,10 @@ std::size_t edge_components(const TriangleMesh& m) {
   std::map<std::pair<std::array<double, 3>, std::array<double, 3>>, std::size_t> first;
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (std::size_t k = 0; k < 3; ++k) {
-      const Vec3 &a = m.vertices[std::size_t(m.triangles[t][k])], &b = m.vertices[std::size_t(m.triangles[t][(k + 1) % 3])];
-      const auto e = std::minmax(std::array<double, 3>{a.x(), a.y(), a.z()}, std::array<double, 3>{b.x(), b.y(), b.z()});
+      const Vec3& a = m.vertices[std::size_t(m.triangles[t][k])];
+      const Vec3& b = m.vertices[std::size_t(m.triangles[t][(k + 1) % 3])];
+      const auto e =
+          std::minmax(std::array<double, 3>{a.x(), a.y(), a.z()}, std::array<double, 3>{b.x(), b.y(), b.z()});
       if (const auto [it, added] = first.emplace(e, t); !added) parent[root(t)] = root(it->second);
     }
   std::size_t n = 0;
@@ -356,9 +359,11 @@ TEST(MeshCheck, VoidClosedOffByOverlapsIsFilled) {
   for (std::size_t i = 0; i + 1 < planes[0].size(); ++i)
     for (std::size_t j = 0; j + 1 < planes[1].size(); ++j)
       for (std::size_t k = 0; k + 1 < planes[2].size(); ++k) {
-        const Vec3 lo(planes[0][i], planes[1][j], planes[2][k]), hi(planes[0][i + 1], planes[1][j + 1], planes[2][k + 1]);
+        const Vec3 lo(planes[0][i], planes[1][j], planes[2][k]);
+        const Vec3 hi(planes[0][i + 1], planes[1][j + 1], planes[2][k + 1]);
         const Vec3 centre = (lo + hi) / 2;
-        if (in(void_box, centre) || std::any_of(boxes.begin(), boxes.end(), [&](const auto& b) { return in(b, centre); }))
+        const auto in_box = [&](const auto& b) { return in(b, centre); };
+        if (in(void_box, centre) || std::any_of(boxes.begin(), boxes.end(), in_box))
           expected += (hi - lo).prod();
       }
   const OverlapRepair repair = check_closed_mesh_joining_overlaps(m);

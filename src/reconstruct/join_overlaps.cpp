@@ -76,7 +76,7 @@ bool same_triangles(const TriangleMesh& a, const TriangleMesh& b) {
 /// Removes from `boundary` (the union's, oriented outwards, closed once its
 /// vertices at one position are joined) its inward-facing parts: voids
 /// that the overlapping parts close off (the winding number is 0 there but
-/// the solid surrounds them; crossing arms on CGAL's man). The skeleton of
+/// the solid surrounds them; a fold's pocket by CGAL's man's armpit). The skeleton of
 /// a solid has no cavities (check_closed_mesh refuses them): they are
 /// filled. Parts by shared edges between positions; `cavities` counts them.
 void fill_cavities(TriangleMesh& boundary, std::size_t& cavities) {
@@ -120,8 +120,9 @@ void fill_cavities(TriangleMesh& boundary, std::size_t& cavities) {
   std::vector<Vec3> vertices;
   for (auto& tri : boundary.triangles)
     for (std::int32_t& i : tri) {
-      if (index[std::size_t(i)] < 0) index[std::size_t(i)] = std::int32_t(vertices.size()), vertices.push_back(boundary.vertices[std::size_t(i)]);
-      i = index[std::size_t(i)];
+      std::int32_t& k = index[std::size_t(i)];
+      if (k < 0) k = std::int32_t(vertices.size()), vertices.push_back(boundary.vertices[std::size_t(i)]);
+      i = k;
     }
   boundary.vertices = std::move(vertices);
 }
