@@ -3,12 +3,15 @@
 // fallback: surface samples, least-squares spheres, self-intersection.
 // Expected values are derived by hand in the comments.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -223,6 +226,152 @@ TEST(MeshCheck, OverlappingCubesAreJoined) {
   TriangleMesh open = unit_cube();
   open.triangles.pop_back();
   EXPECT_THROW(check_closed_mesh_joining_overlaps(open), InputError);
+}
+
+/// The winding number of a closed mesh at p, by the definition: its
+/// triangles' solid angles (Van Oosterom and Strackee) over 4π.
+double winding_number(const TriangleMesh& m, const Vec3& p) {
+  double sum = 0.0;
+  for (const auto& t : m.triangles) {
+    const Vec3 a = m.vertices[std::size_t(t[0])] - p, b = m.vertices[std::size_t(t[1])] - p,
+               c = m.vertices[std::size_t(t[2])] - p;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    sum += 2.0 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la);
+  }
+  return sum / (4.0 * std::numbers::pi);
+}
+
+/// Whether the input's surface at p, on a triangle of unit normal n, bounds
+/// the solid {winding number ≥ 1/2}: 0 just in front, 1 just behind.
+bool bounds_union(const TriangleMesh& input, const Vec3& p, const Vec3& n) {
+  constexpr double step = 1e-7;  // far below the triangles' size (~0.1), far above rounding
+  return std::abs(winding_number(input, p + step * n)) < 1e-6 &&
+         std::abs(winding_number(input, p - step * n) - 1) < 1e-6;
+}
+
+/// The closed mesh's parts by shared edges (vertices at one position are
+/// one; parts touching at a vertex only are distinct).
+std::size_t edge_components(const TriangleMesh& m) {
+  std::vector<std::size_t> parent(m.triangles.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  const auto root = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::map<std::pair<std::array<double, 3>, std::array<double, 3>>, std::size_t> first;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Vec3& a = m.vertices[std::size_t(m.triangles[t][k])];
+      const Vec3& b = m.vertices[std::size_t(m.triangles[t][(k + 1) % 3])];
+      const auto e =
+          std::minmax(std::array<double, 3>{a.x(), a.y(), a.z()}, std::array<double, 3>{b.x(), b.y(), b.z()});
+      if (const auto [it, added] = first.emplace(e, t); !added) parent[root(t)] = root(it->second);
+    }
+  std::size_t n = 0;
+  for (std::size_t t = 0; t < parent.size(); ++t) n += root(t) == t;
+  return n;
+}
+
+// A pleat: an icosphere with a vertex dragged past its neighbour q
+// (sphere_pleat.ply, make_union_meshes.py), one connected surface whose
+// crossing curves end at q. CGAL's autorefine_and_remove_self_intersections
+// kept the wrong side of them, an inside-out sliver (as on CGAL's elk and
+// cow). The repair must be the boundary of the solid where the input's
+// winding number is at least 1/2, checked here by the definition on the
+// input: every repaired triangle has winding number 0 just in front and 1
+// just behind, and every input triangle whose centroid has so is covered
+// by a repaired triangle in its plane.
+TEST(MeshCheck, PleatIsJoinedByWindingNumber) {
+  const TriangleMesh input = read_mesh(std::string(SKELCONV_TEST_DATA) + "/reconstruct/sphere_pleat.ply");
+  TriangleMesh m = input;
+  EXPECT_THROW(check_closed_mesh(m), InputError);
+  const OverlapRepair repair = check_closed_mesh_joining_overlaps(m);
+  EXPECT_EQ(repair.crossing_pairs, 6u);
+  EXPECT_NO_THROW(check_closed_mesh(m));
+  EXPECT_EQ(edge_components(m), 1u);
+  const auto corner = [](const TriangleMesh& mesh, const std::array<std::int32_t, 3>& t, int k) -> const Vec3& {
+    return mesh.vertices[std::size_t(t[std::size_t(k)])];
+  };
+  for (const auto& t : m.triangles) {
+    const Vec3 a = corner(m, t, 0), b = corner(m, t, 1), c = corner(m, t, 2);
+    EXPECT_TRUE(bounds_union(input, (a + b + c) / 3, (b - a).cross(c - a).normalized()))
+        << "repaired triangle at " << ((a + b + c) / 3).transpose() << " does not bound the union";
+  }
+  std::size_t bounding = 0;
+  for (const auto& t : input.triangles) {
+    const Vec3 a = corner(input, t, 0), b = corner(input, t, 1), c = corner(input, t, 2);
+    const Vec3 n = (b - a).cross(c - a).normalized(), p = (a + b + c) / 3;
+    if (!bounds_union(input, p, n)) continue;
+    ++bounding;
+    const bool covered = std::any_of(m.triangles.begin(), m.triangles.end(), [&](const auto& r) {
+      const Vec3 ra = corner(m, r, 0), rb = corner(m, r, 1), rc = corner(m, r, 2);
+      const Vec3 rn = (rb - ra).cross(rc - ra);
+      if (std::abs(rn.normalized().dot(p - ra)) > 1e-12 || rn.dot(n) <= 0) return false;
+      // p inside r: on the inner side of its three edges
+      return (rb - ra).cross(p - ra).dot(rn) >= 0 && (rc - rb).cross(p - rb).dot(rn) >= 0 &&
+             (ra - rc).cross(p - rc).dot(rn) >= 0;
+    });
+    EXPECT_TRUE(covered) << "input triangle at " << p.transpose() << " bounds the union but is not in the repair";
+  }
+  // Every input centroid bounds the union (none is buried), but pieces of
+  // the folded triangles are: the repair has less area than the input.
+  EXPECT_EQ(bounding, input.triangles.size());
+  const auto area = [&](const TriangleMesh& mesh) {
+    double sum = 0.0;
+    for (const auto& t : mesh.triangles)
+      sum += (corner(mesh, t, 1) - corner(mesh, t, 0)).cross(corner(mesh, t, 2) - corner(mesh, t, 0)).norm() / 2;
+    return sum;
+  };
+  EXPECT_LT(area(m), area(input) - 1e-4);
+}
+
+/// A box [lo, hi], 12 outward triangles, appended to m.
+void add_box(TriangleMesh& m, const Vec3& lo, const Vec3& hi) {
+  const TriangleMesh cube = unit_cube();
+  const auto first = std::int32_t(m.vertices.size());
+  for (const Vec3& v : cube.vertices) m.vertices.push_back(lo + (hi - lo).cwiseProduct(v));
+  for (const auto& t : cube.triangles) m.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+}
+
+// Six boxes, walls of [0, 3]³ overlapping at its edges (their faces on
+// distinct planes), close off the void V = (1.1, 1.9) × (1.15, 1.85) ×
+// (1.2, 1.8): the winding number is 0 there, but the union surrounds it.
+// The repair fills it (a skeleton's solid has no cavity): one part, χ 2,
+// enclosing the boxes' union and V, whose volume is summed exactly over the
+// cells of the grid of the boxes' planes (a cell is in the solid when its
+// centre is in a box or in V).
+TEST(MeshCheck, VoidClosedOffByOverlapsIsFilled) {
+  const std::vector<std::pair<Vec3, Vec3>> boxes{
+      {{0, 0.05, 0.1}, {1.1, 2.95, 2.9}},    {{1.9, 0.05, 0.1}, {3, 2.95, 2.9}},
+      {{0.02, 0, 0.15}, {2.98, 1.15, 2.85}}, {{0.02, 1.85, 0.15}, {2.98, 3, 2.85}},
+      {{0.03, 0.04, 0}, {2.97, 2.96, 1.2}},  {{0.03, 0.04, 1.8}, {2.97, 2.96, 3}}};
+  const std::pair<Vec3, Vec3> void_box{{1.1, 1.15, 1.2}, {1.9, 1.85, 1.8}};
+  TriangleMesh m;
+  for (const auto& [lo, hi] : boxes) add_box(m, lo, hi);
+  std::array<std::vector<double>, 3> planes;
+  for (const auto& [lo, hi] : boxes)
+    for (int k = 0; k < 3; ++k) planes[std::size_t(k)].push_back(lo[k]), planes[std::size_t(k)].push_back(hi[k]);
+  for (auto& p : planes) std::sort(p.begin(), p.end()), p.erase(std::unique(p.begin(), p.end()), p.end());
+  const auto in = [](const std::pair<Vec3, Vec3>& b, const Vec3& p) {
+    return (p.array() > b.first.array()).all() && (p.array() < b.second.array()).all();
+  };
+  double expected = 0.0;
+  for (std::size_t i = 0; i + 1 < planes[0].size(); ++i)
+    for (std::size_t j = 0; j + 1 < planes[1].size(); ++j)
+      for (std::size_t k = 0; k + 1 < planes[2].size(); ++k) {
+        const Vec3 lo(planes[0][i], planes[1][j], planes[2][k]);
+        const Vec3 hi(planes[0][i + 1], planes[1][j + 1], planes[2][k + 1]);
+        const Vec3 centre = (lo + hi) / 2;
+        const auto in_box = [&](const auto& b) { return in(b, centre); };
+        if (in(void_box, centre) || std::any_of(boxes.begin(), boxes.end(), in_box))
+          expected += (hi - lo).prod();
+      }
+  const OverlapRepair repair = check_closed_mesh_joining_overlaps(m);
+  EXPECT_EQ(repair.cavities_filled, 1u);
+  EXPECT_NO_THROW(check_closed_mesh(m));
+  EXPECT_NEAR(six_volume(m) / 6.0, expected, 1e-12 * expected);
+  EXPECT_EQ(edge_components(m), 1u);
+  EXPECT_EQ(std::int64_t(m.vertices.size()) - std::int64_t(m.triangles.size()) / 2, 2);  // χ = V − E + F, E = 3F/2
 }
 
 // The orientation test does not depend on where the mesh is: the unit

@@ -102,8 +102,8 @@ std::string repair_json(const reconstruct::InputRepair& repair, double seconds) 
                    : "null";
   const std::string union_ =
       o.crossing_pairs > 0 ? fmt::format("{{\"crossing_pairs\": {}, \"action\": \"boolean_union\", "
-                                         "\"triangles_removed\": {}, \"triangles_added\": {}}}",
-                                         o.crossing_pairs, o.triangles_removed, o.triangles_added)
+                                         "\"triangles_removed\": {}, \"triangles_added\": {}, \"cavities_filled\": {}}}",
+                                         o.crossing_pairs, o.triangles_removed, o.triangles_added, o.cavities_filled)
                            : "null";
   return fmt::format("{{\"holes\": {}, \"self_intersection\": {}, \"seconds\": {:.3g}}}", holes, union_, seconds);
 }
@@ -288,8 +288,10 @@ int run_skeletonize(const SkeletonizeOptions& options) {
       }
       if (const reconstruct::OverlapRepair& o = repair.overlaps; o.crossing_pairs > 0)
         ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): joined the overlapping parts "
-                                "(boolean union), +{}/-{} triangles, {} in all ({:.3g} s, --repair)",
+                                "(boolean union), +{}/-{} triangles, {} in all{} ({:.3g} s, --repair)",
                                 o.crossing_pairs, o.triangles_added, o.triangles_removed, input.triangles.size(),
+                                o.cavities_filled ? fmt::format(", {} cavity(ies) they close off filled", o.cavities_filled)
+                                                  : std::string(),
                                 repair_seconds));
     }
     const TriangleMesh samples = reconstruct::with_sample_noise(input, options.noise);

@@ -373,9 +373,10 @@ OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh) {
   repair.crossing_pairs = found.pairs;
   repair.triangles_removed = proper - kept;
   repair.triangles_added = joined.mesh->triangles.size() - kept;
+  repair.cavities_filled = joined.cavities_filled;
   mesh = std::move(*joined.mesh);
-  // The union removes what lies inside another part only where parts
-  // cross: a part nested whole in another, crossing nothing, is kept.
+  // The winding number removes a part nested whole in another with the
+  // rest of the inside: kept as a guard on the union's own output.
   check_no_nested_parts(mesh);
   return repair;
 }

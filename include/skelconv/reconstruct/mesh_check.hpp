@@ -90,6 +90,7 @@ struct OverlapRepair {
   std::size_t crossing_pairs = 0;     ///< in the input; 0: none, the mesh was left as it was
   std::size_t triangles_removed = 0;  ///< input triangles not in the result (cut, or inside the union)
   std::size_t triangles_added = 0;    ///< result triangles not in the input (the pieces of cut ones)
+  std::size_t cavities_filled = 0;    ///< voids the crossing parts closed off, filled
 };
 
 /// Whether `mesh`'s first problem for check_closed_mesh is one that
@@ -106,19 +107,23 @@ bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh);
 void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_view repair_option);
 
 /// check_closed_mesh, except that a mesh whose triangles cross is replaced
-/// by the boundary of the union of the solids its parts enclose (CGAL
-/// Polygon_mesh_processing::experimental::autorefine_and_remove_self_intersections:
-/// the surface cut along its crossing curves, the pieces inside the solid
-/// dropped), which is then checked again, crossings included, and must keep
-/// the input's bounding box (a union does, to rounding). Scanned and
-/// modelled meshes often overlap slightly where parts meet (a horn, a leg);
-/// the union is what the refusal asks the user to compute. Only crossings
-/// are repaired: an open, non-manifold, inverted or hollow mesh is refused
-/// as by check_closed_mesh, before any repair. Throws InputError when the
-/// union cannot be computed or is not a valid input: its new vertices are
-/// rounded to double, and on a fold, whose crossing curve ends inside the
-/// surface and bounds no part, CGAL keeps the wrong side (CGAL's elk: 8 of
-/// its 3,290 triangles, inside out).
+/// by the boundary of the solid it encloses: the points where its
+/// generalized winding number is at least 1/2, i.e. the union of its
+/// overlapping parts, folds included. The surface is cut along its crossing
+/// curves (CGAL Polygon_mesh_processing::experimental::autorefine) and each
+/// piece kept when the winding number is 0 just in front of it and 1 just
+/// behind (src/reconstruct/join_overlaps.cpp); voids that the crossing
+/// parts close off (winding number 0, surrounded by the solid) are filled,
+/// since a skeleton's solid has no cavity. The result is then checked
+/// again, crossings included, and must keep the input's bounding box (a
+/// union does, to rounding). Scanned and modelled meshes often overlap
+/// slightly where parts meet (a horn, a leg) or fold over themselves; the
+/// union is what the refusal asks the user to compute. Only crossings are
+/// repaired: an open, non-manifold, inverted or hollow mesh is refused as
+/// by check_closed_mesh, before any repair. Throws InputError when the
+/// union cannot be computed or is not a valid input (its new vertices are
+/// rounded to double; a piece on which another sheet lies has no whole
+/// winding number).
 OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh);
 
 /// What check_closed_mesh_repairing did to an open or non-manifold surface

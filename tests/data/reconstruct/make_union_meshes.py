@@ -19,6 +19,9 @@ itself somewhere, or nests:
                               corner (1,1,1) where the cubes touch
   cubes_vertex_tetrahedron.ply  the two cubes and a tetrahedron crossing both, its edge from (0.5,0.5,0.5) to
                               (1.5,1.5,1.5) through the corner where they touch
+  sphere_pleat.ply            an icosphere (level 2, radius 1) whose vertex 0 is dragged past its neighbour q (to
+                              q + 0.6 (q - v0), back on the sphere): its star folds over q, a pleat whose crossing
+                              curves end at q (one connected surface crossing itself, as CGAL's elk and cow)
 """
 import math
 import sys
@@ -93,6 +96,12 @@ def main():
     T = [(0.5, 0.5, 0.5), (1.5, 1.5, 1.5), (1.5, 0.25, 0.75), (0.25, 1.5, 0.75)]
     write("cubes_vertex_tetrahedron.ply", *join(cubes, (T, [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)])),
           "cubes touching at a corner, a tetrahedron crossing both through the corner")
+
+    V, F = icosphere(2, 1.0, (0, 0, 0))
+    q = min(i for t in F if 0 in t for i in t if i != 0)
+    m = [V[q][k] + 0.6 * (V[q][k] - V[0][k]) for k in range(3)]
+    V[0] = tuple(x / math.sqrt(sum(y * y for y in m)) for x in m)
+    write("sphere_pleat.ply", V, F, "an icosphere with a vertex dragged past its neighbour: a pleat")
 
 
 if __name__ == "__main__":
