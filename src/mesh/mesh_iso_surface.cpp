@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <map>
+#include <mutex>
 #include <string>
 #include <cmath>
 #include <limits>
@@ -42,8 +44,8 @@ class FieldMeter {
     return m;
   }
   void report_progress(bool on) { reporting_ = on && bool(options_.progress); }
-  std::size_t evaluations() const { return evaluations_; }
-  double seconds() const { return clock_.seconds(ticks_); }
+  std::size_t evaluations() const { return evaluations_.load(); }
+  double seconds() const { return clock_.seconds(ticks_.load()); }
 
  private:
   /// A field's `..._near` metered: the shared work (choosing for the ball)
@@ -56,7 +58,7 @@ class FieldMeter {
     return [this, &near_of](const Vec3& centre, double radius) {
       const detail::TickClock::Ticks start = detail::TickClock::now();
       auto near = near_of(centre, radius);
-      ticks_ += detail::TickClock::now() - start;
+      ticks_.fetch_add(detail::TickClock::now() - start, std::memory_order_relaxed);
       return std::function<Sample(const Vec3&)>(
           [this, near = std::move(near)](const Vec3& p) { return measure([&] { return near(p); }); });
     };
@@ -70,13 +72,15 @@ class FieldMeter {
   std::invoke_result_t<Evaluate> measure(Evaluate evaluate) {
     const detail::TickClock::Ticks start = detail::TickClock::now();
     auto result = evaluate();
-    ticks_ += detail::TickClock::now() - start;
-    ++evaluations_;
-    if (reporting_ && evaluations_ % progress_stride == 0) {
+    ticks_.fetch_add(detail::TickClock::now() - start, std::memory_order_relaxed);
+    const std::size_t evaluations = evaluations_.fetch_add(1, std::memory_order_relaxed) + 1;
+    if (reporting_ && evaluations % progress_stride == 0) {
+      // The seeds are cast on every core: one thread reports at a time.
+      const std::unique_lock<std::mutex> lock(progress_mutex_, std::try_to_lock);
       const Clock::time_point end = Clock::now();
-      if (std::chrono::duration<double>(end - last_report_).count() >= options_.progress_interval) {
+      if (lock.owns_lock() && std::chrono::duration<double>(end - last_report_).count() >= options_.progress_interval) {
         last_report_ = end;
-        options_.progress(MeshProgress{evaluations_, seconds_since(begin_)});
+        options_.progress(MeshProgress{evaluations, seconds_since(begin_)});
       }
     }
     return result;
@@ -85,9 +89,10 @@ class FieldMeter {
   static constexpr std::size_t progress_stride = 256;  ///< a few hundred µs of evaluations
   const ImplicitField& field_;
   const MeshOptions& options_;
-  std::size_t evaluations_ = 0;
+  std::atomic<std::size_t> evaluations_{0};
   detail::TickClock clock_;
-  detail::TickClock::Ticks ticks_ = 0;  ///< in the field, summed
+  std::atomic<detail::TickClock::Ticks> ticks_{0};  ///< in the field, summed over the threads
+  std::mutex progress_mutex_;
   bool reporting_ = false;
   Clock::time_point begin_ = Clock::now();
   Clock::time_point last_report_ = Clock::now();

@@ -2,6 +2,7 @@
 #include "skelconv/mesh/surface_seeds.hpp"
 
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <map>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
+#include "../detail/parallel_for.hpp"
 
 namespace skelconv {
 namespace {
@@ -106,7 +108,28 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
   double largest = -std::numeric_limits<double>::infinity();
   Vec3 largest_at = field.skeleton_points.front();
   std::optional<EvaluationError> first_failure;
-  for (const Vec3& p : field.skeleton_points) {
+  // The field's values and the rays are computed on every core, each
+  // skeleton point's into its own slot, and taken in the points' order: the
+  // seeds, and the error thrown, are the one-thread loop's. A failure is
+  // kept with its point, and thrown where that loop would have met it.
+  const std::vector<Vec3>& points = field.skeleton_points;
+  std::vector<double> values(points.size(), 0.0);
+  std::vector<std::exception_ptr> value_failures(points.size());
+  detail::parallel_for(
+      points.size(),
+      [&](std::size_t k) {
+        try {
+          values[k] = field.value(points[k]);
+        } catch (...) {
+          value_failures[k] = std::current_exception();
+        }
+      },
+      64);
+  // The points that cast rays, up to the first failure that is fatal.
+  std::vector<std::size_t> sources;
+  std::exception_ptr fatal;
+  for (std::size_t k = 0; k < points.size() && !fatal; ++k) {
+    const Vec3& p = points[k];
     // On an inverse-kernel polygon or segment a skeleton point lies on (or,
     // after rounding, next to) the set where f is infinite, and the closed
     // form may refuse it (EvaluationError: "returned inf where the field is
@@ -114,30 +137,39 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
     // the points inside) seed the same component. Only when every skeleton
     // point failed is the first failure reported. A field finite everywhere
     // has no such excuse: its errors surface at once.
-    double f = 0.0;
-    try {
-      f = field.value(p);
-    } catch (const EvaluationError& error) {
-      if (!field.infinite_on_skeleton) throw;
-      if (!first_failure) first_failure = error;
+    if (value_failures[k]) {
+      try {
+        std::rethrow_exception(value_failures[k]);
+      } catch (const EvaluationError& error) {
+        if (!field.infinite_on_skeleton) fatal = value_failures[k];
+        else if (!first_failure) first_failure = error;
+      } catch (...) {
+        fatal = value_failures[k];
+      }
       continue;
     }
+    const double f = values[k];
     if (f > largest) std::tie(largest, largest_at) = std::make_tuple(f, p);
     if (!(f > iso)) continue;
     if (!used_cells.insert(cell_of(p, box.lo, options.spacing)).second) continue;
-    std::vector<Vec3> crossings;
+    sources.push_back(k);
+  }
+  std::vector<std::vector<Vec3>> crossings(sources.size());
+  detail::parallel_for(sources.size(), [&](std::size_t n) {
     for (const Vec3& d : directions) {
       // A ray in the plane of an inverse-kernel polygon may land on one of its
       // edges or vertices (f infinite, refused as above): that ray gives no
       // seed; the other rays and skeleton points seed the component.
       try {
-        if (auto crossing = ray_crossing(field, iso, box, p, d, options)) crossings.push_back(*crossing);
+        if (auto crossing = ray_crossing(field, iso, box, points[sources[n]], d, options))
+          crossings[n].push_back(*crossing);
       } catch (const EvaluationError&) {
         if (!field.infinite_on_skeleton) throw;
       }
     }
-    grid.add_from_one_source(crossings, seeds);
-  }
+  });
+  if (fatal) std::rethrow_exception(fatal);
+  for (const std::vector<Vec3>& found : crossings) grid.add_from_one_source(found, seeds);
   if (largest == -std::numeric_limits<double>::infinity() && first_failure) throw *first_failure;
   if (largest <= iso) {
     throw InputError(fmt::format("no surface at iso {}: the field is below it on the whole skeleton "

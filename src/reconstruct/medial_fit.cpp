@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "skelconv/field/support_box.hpp"
 #include "skelconv/reconstruct/medial_derivatives.hpp"
 #include "skelconv/reconstruct/medial_slope.hpp"
+#include "../detail/parallel_for.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -51,8 +53,9 @@ struct Evaluation {
   std::vector<double> delta, slope;
   std::vector<Vec3> foot;
   /// No row: outside every support (f = 0, no first-order information), or
-  /// an inside point inside the reconstruction.
-  std::vector<bool> no_row;
+  /// an inside point inside the reconstruction. (Bytes, not std::vector<bool>:
+  /// the points are evaluated on every core, each writing its own.)
+  std::vector<std::uint8_t> no_row;
   double rms = 0.0;
   double objective = 0.0;
   double largest = 0.0;
@@ -84,8 +87,9 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
   e.slope.resize(points.size());
   e.foot.resize(points.size());
   e.no_row.resize(points.size());
-  double sum = 0.0, total = 0.0, inside_sum = 0.0, inside_total = 0.0;
-  for (std::size_t k = 0; k < points.size(); ++k) {
+  // Each point's distance on every core (each writes only its own slots),
+  // then the sums in the points' order.
+  skelconv::detail::parallel_for(points.size(), [&](std::size_t k) {
     const double radius = mesh.spheres[nearest_sphere(mesh, points[k].point)].w();
     FieldSample s = e.skeleton.value_and_gradient(points[k].point);
     e.foot[k] = points[k].point;
@@ -107,6 +111,9 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
         e.delta[k] += step, e.foot[k] = next, e.slope[k] = slope, s = t;
       }
     }
+  });
+  double sum = 0.0, total = 0.0, inside_sum = 0.0, inside_total = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
     if (!fit_points.on_surface(k)) {
       if (e.delta[k] >= 0.0) e.delta[k] = 0.0, e.no_row[k] = true;
       inside_sum += points[k].weight * e.delta[k] * e.delta[k], inside_total += points[k].weight;
@@ -150,11 +157,15 @@ Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& poin
         if (centre[Eigen::Index(c)] != 0.0) j.rows[k].emplace_back(column + c, centre[Eigen::Index(c)] / e.slope[k]);
     if (radius != 0.0) j.rows[k].emplace_back(column + 3, radius / e.slope[k]);
   };
-  for (std::size_t q = 0; q < primitives.size(); ++q) {
-    const std::optional<SupportBox> box = support_box(primitives[q]);
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const Vec3& p = e.foot[k];
-      if (e.no_row[k] || (box && !box->contains(p))) continue;
+  std::vector<std::optional<SupportBox>> boxes;
+  for (const Primitive& primitive : primitives) boxes.push_back(support_box(primitive));
+  // Point by point on every core, each row's entries in the primitives'
+  // order.
+  skelconv::detail::parallel_for(points.size(), [&](std::size_t k) {
+    const Vec3& p = e.foot[k];
+    if (e.no_row[k]) return;
+    for (std::size_t q = 0; q < primitives.size(); ++q) {
+      if (boxes[q] && !boxes[q]->contains(p)) continue;
       if (q < mesh.edges.size()) {
         const auto& edge = mesh.edges[q];
         const PrimitiveDerivatives<2> d = derivatives(std::get<ScalisSegment>(primitives[q]), p);
@@ -170,7 +181,7 @@ Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& poin
         add(k, sphere, d.vertex[0], d.radius[0]);
       }
     }
-  }
+  });
   return j;
 }
 

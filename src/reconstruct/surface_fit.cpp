@@ -6,7 +6,8 @@
 #include <map>
 #include <numbers>
 
-#include "skelconv/mesh/implicit_field.hpp"
+#include "../detail/parallel_for.hpp"
+#include "level_test.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -65,21 +66,21 @@ std::vector<Vec3> normal_ring(const Vec3& tangent, int count) {
   return ring;
 }
 
-/// Distance from `origin` along `direction` to where f falls to `iso`:
-/// steps of `step` out to `reach`, then bisection. 0 if f(origin) < iso;
-/// `reach` if f stays above iso that far.
-double crossing(const ImplicitField& field, double iso, const Vec3& origin, const Vec3& direction, double step,
-                double reach, int bisection_steps) {
-  if (field.value(origin) < iso) return 0.0;
+/// Distance from `origin` along `direction` to where f falls to iso
+/// (`level`): steps of `step` out to `reach`, then bisection. 0 if f(origin)
+/// < iso; `reach` if f stays above iso that far.
+double crossing(const LevelTest& level, const Vec3& origin, const Vec3& direction, double step, double reach,
+                int bisection_steps) {
+  if (!level.at_or_above(origin)) return 0.0;
   double inside = 0.0, outside = step;
-  while (field.value(origin + outside * direction) >= iso) {
+  while (level.at_or_above(origin + outside * direction)) {
     inside = outside;
     outside += step;
     if (outside > reach) return reach;
   }
   for (int k = 0; k < bisection_steps; ++k) {
     const double middle = 0.5 * (inside + outside);
-    (field.value(origin + middle * direction) >= iso ? inside : outside) = middle;
+    (level.at_or_above(origin + middle * direction) ? inside : outside) = middle;
   }
   return 0.5 * (inside + outside);
 }
@@ -201,24 +202,41 @@ PointUpdate point_update(const std::vector<Vec3>& rays, const std::vector<double
 
 /// One Jacobi round over the points (radii, and centres of tube sections);
 /// returns the largest relative change of a radius.
-double update_points(std::vector<Branch>& branches, const Targets& targets, const ImplicitField& field, double iso,
+double update_points(std::vector<Branch>& branches, const Targets& targets, const LevelTest& level,
                      const FitOptions& o) {
   std::vector<Branch> updated = branches;
   const auto uses = end_uses(branches);
+  std::vector<std::vector<std::size_t>> sources;
+  // The points fitted, as (branch, point): each one's update reads only
+  // `branches` and the field, so they are computed on every core, then
+  // applied in this order.
+  std::vector<std::pair<std::size_t, std::size_t>> fitted;
+  for (std::size_t bi = 0; bi < branches.size(); ++bi) {
+    sources.push_back(radius_sources(branches[bi], uses));
+    for (std::size_t i = 0; i < branches[bi].points.size(); ++i)
+      if (!is_extension(branches[bi], i) && sources[bi][i] == i) fitted.emplace_back(bi, i);
+  }
+  std::vector<PointUpdate> updates(fitted.size());
+  detail::parallel_for(fitted.size(), [&](std::size_t n) {
+    const auto [bi, i] = fitted[n];
+    const Vec4& point = branches[bi].points[i];
+    const auto& rays = targets.rays[bi][i];
+    const auto& target = targets.distances[bi][i];
+    std::vector<double> current(rays.size(), 0.0);
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      if (target[k] >= 0.0)
+        current[k] = crossing(level, point.head<3>(), rays[k], 0.25 * point.w(), 4.0 * target[k], o.bisection_steps);
+    }
+    updates[n] = point_update(rays, target, current, point.w(), o);
+  });
   double largest = 0.0;
+  std::size_t next = 0;  // the first of `fitted` on this branch or after
   for (std::size_t bi = 0; bi < branches.size(); ++bi) {
     const Branch& b = branches[bi];
-    const std::vector<std::size_t> source = radius_sources(b, uses);
-    for (std::size_t i = 0; i < b.points.size(); ++i) {
-      if (is_extension(b, i) || source[i] != i) continue;
-      const auto& rays = targets.rays[bi][i];
-      const auto& target = targets.distances[bi][i];
-      std::vector<double> current(rays.size(), 0.0);
-      for (std::size_t k = 0; k < rays.size(); ++k) {
-        if (target[k] >= 0.0) current[k] = crossing(field, iso, b.points[i].head<3>(), rays[k], 0.25 * b.points[i].w(),
-                                                    4.0 * target[k], o.bisection_steps);
-      }
-      const PointUpdate u = point_update(rays, target, current, b.points[i].w(), o);
+    const std::vector<std::size_t>& source = sources[bi];
+    for (; next < fitted.size() && fitted[next].first == bi; ++next) {
+      const std::size_t i = fitted[next].second;
+      const PointUpdate& u = updates[next];
       if (!u.informed) continue;
       updated[bi].points[i].w() *= u.factor;
       updated[bi].points[i].head<3>() += u.shift;
@@ -236,8 +254,8 @@ double update_points(std::vector<Branch>& branches, const Targets& targets, cons
 
 /// Moves every extension point so that the reconstructed surface reaches
 /// the input's tip along the end tangent; returns the largest move.
-double update_extensions(std::vector<Branch>& branches, const SurfaceQuery& input, const ImplicitField& field,
-                         double iso, const FitOptions& o) {
+double update_extensions(std::vector<Branch>& branches, const SurfaceQuery& input, const LevelTest& level,
+                         const FitOptions& o) {
   double largest = 0.0;
   const auto fit_end = [&](Vec4& tip, const Vec4& end) {
     Vec3 direction = tip.head<3>() - end.head<3>();
@@ -246,7 +264,7 @@ double update_extensions(std::vector<Branch>& branches, const SurfaceQuery& inpu
     direction /= length;
     const auto target = input.ray_distance(end.head<3>(), direction);
     if (!target) return;
-    const double reached = crossing(field, iso, end.head<3>(), direction, 0.25 * end.w(), 4.0 * *target, o.bisection_steps);
+    const double reached = crossing(level, end.head<3>(), direction, 0.25 * end.w(), 4.0 * *target, o.bisection_steps);
     if (reached == 0.0) return;  // the end itself is outside: no information
     const double moved = std::max(0.0, length + *target - reached) - length;
     tip.head<3>() = end.head<3>() + (length + moved) * direction;
@@ -313,10 +331,10 @@ std::vector<Branch> fit_to_surface(std::vector<Branch> branches, const SurfaceQu
       // moved centres.
       const Targets targets = measure_input(branches, input, o.directions);
       const Skeleton skeleton = field_of(branches);
-      r.largest_radius_change = update_points(branches, targets, skeleton_field(skeleton), skeleton.iso(), o);
+      r.largest_radius_change = update_points(branches, targets, LevelTest(skeleton), o);
     }
     const Skeleton skeleton = field_of(branches);
-    r.largest_tip_change = update_extensions(branches, input, skeleton_field(skeleton), skeleton.iso(), o);
+    r.largest_tip_change = update_extensions(branches, input, LevelTest(skeleton), o);
   }
   if (report != nullptr) *report = r;
   return branches;
