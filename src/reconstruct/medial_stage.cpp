@@ -84,15 +84,15 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     if (!walls.triangle_refinement.empty()) {
       sampling.triangle_refinement = walls.triangle_refinement;
       if (o.progress)
-        o.progress(fmt::format("medial path: thin walls found ({} of {} thin medial vertices on a sheet, {} "
-                               "connected pieces): {} of {} triangles sampled again, up to {:.2f} times finer",
+        o.progress(fmt::format("medial path: thin walls found ({} of {} thin medial vertices on a wall, {} "
+                               "walls): {} of {} triangles sampled again, up to {:.2f} times finer",
                                walls.wall_vertices, walls.thin_vertices, walls.walls, walls.triangles,
                                surface.triangles.size(), walls.finest));
       graph = medial_graph(surface, 20, sampling);
       prune(graph);
     } else if (o.progress) {
-      o.progress(fmt::format("medial path: no thin wall ({} of {} thin medial vertices on a sheet)",
-                             walls.wall_vertices, walls.thin_vertices));
+      o.progress(fmt::format("medial path: no thin wall ({} thin medial vertices, none on a wall)",
+                             walls.thin_vertices));
     }
   }
   QuadricOptions quadric;

@@ -156,20 +156,34 @@ ThinWalls find_thin_walls(const TriangleMesh& surface, const MedialGraph& graph,
       return false;
     });
   std::map<std::int32_t, std::vector<double>> thickness;
-  for (const std::int32_t k : wall_cubes) thickness[find_root(parent, k)].push_back(half_thickness[std::size_t(k)]);
-  walls.walls = thickness.size();
+  std::map<std::int32_t, Moments> extent;
+  for (const std::int32_t k : wall_cubes) {
+    const std::int32_t root = find_root(parent, k);
+    thickness[root].push_back(half_thickness[std::size_t(k)]);
+    extent[root].add(moments[std::size_t(k)]);
+  }
+  // A wall at least as wide as the disc that tells a sheet (its vertices
+  // spread R / 2 both ways): a smaller patch of sheet-like cubes is a
+  // local arrangement (where thin limbs meet, a flattened blob), not a
+  // wall whose sheet the coarse samples break.
   std::map<std::int32_t, double> refinement;
-  for (const auto& [root, t] : thickness) refinement[root] = std::clamp(h / median(t), 1.0, max_refinement);
+  for (const auto& [root, t] : thickness)
+    if (spread(extent[root]).middle >= (reach / 2.0) * (reach / 2.0)) {
+      refinement[root] = std::clamp(h / median(t), 1.0, max_refinement);
+      ++walls.walls;
+    }
+  if (refinement.empty()) return walls;
   // The wall vertices, each with its wall's refinement.
   std::vector<std::int32_t> on_wall;
   std::vector<double> wall_refinement(graph.vertices.size(), 1.0);
   {
     std::size_t k = 0;
     for (const auto& [key, list] : members) {
-      if (half_thickness[k] > 0.0)
+      const auto wall = refinement.find(find_root(parent, std::int32_t(k)));
+      if (half_thickness[k] > 0.0 && wall != refinement.end())
         for (const std::int32_t i : list) {
           on_wall.push_back(i);
-          wall_refinement[std::size_t(i)] = refinement[find_root(parent, std::int32_t(k))];
+          wall_refinement[std::size_t(i)] = wall->second;
         }
       ++k;
     }

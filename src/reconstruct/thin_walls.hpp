@@ -25,7 +25,10 @@
 // shape's thick inside on one side.
 //
 // One wall: the wall cubes linked within R (across the holes of its
-// sheet), sampled at h / min(h / t, max_refinement) for the median t of
+// sheet), kept if it is at least as wide as the disc that tells a sheet (its
+// vertices spread R / 2 in a second direction: a smaller patch is a local
+// arrangement, where thin limbs meet or a blob is flattened, not a wall
+// whose sheet the coarse samples break), sampled at h / min(h / t, max_refinement) for the median t of
 // its half-thicknesses along those normals (two samples across it; a
 // ball's radius overstates the thickness where the samples are as far
 // apart as the wall is thick).
@@ -49,8 +52,8 @@ struct ThinWalls {
   /// empty where no wall was found.
   std::vector<double> triangle_refinement;
   std::size_t thin_vertices = 0;  ///< vertices of radius below thin_radius × h
-  std::size_t wall_vertices = 0;  ///< of those, the ones on a sheet
-  std::size_t walls = 0;          ///< components of wall vertices
+  std::size_t wall_vertices = 0;  ///< of those, the ones on a wall kept
+  std::size_t walls = 0;          ///< walls kept (components of wall cubes)
   std::size_t triangles = 0;      ///< triangles sampled finer
   double finest = 1.0;            ///< the largest refinement
 };
