@@ -171,7 +171,7 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "docs/reconstruction_medial.md, \"Inside points\")");
   command->add_flag("--medial-thin-walls,!--no-medial-thin-walls", options.medial.thin_walls,
                     "The medial path samples the input again, up to 2.5 times finer, where a part of it is a thin wall "
-                    "(a medial sheet under 1.5 sample spacings thick and wider than 3 spacings), so that the wall's "
+                    "(a medial sheet under 1.5 sample spacings thick and about 6 or more across), so that the wall's "
                     "sheet is not a net of holes; on by default, --no-medial-thin-walls leaves every part at one "
                     "spacing (docs/reconstruction_medial.md, \"Thin walls\")");
   command->add_flag("--medial-grow-within-input", options.medial.grow_within_input,
