@@ -167,11 +167,17 @@ ThinWalls find_thin_walls(const TriangleMesh& surface, const MedialGraph& graph,
   // local arrangement (where thin limbs meet, a flattened blob), not a
   // wall whose sheet the coarse samples break.
   std::map<std::int32_t, double> refinement;
-  for (const auto& [root, t] : thickness)
-    if (spread(extent[root]).middle >= (reach / 2.0) * (reach / 2.0)) {
-      refinement[root] = std::clamp(h / median(t), 1.0, max_refinement);
-      ++walls.walls;
-    }
+  // And thinner than the spacing (half-thickness below h / 2): only then
+  // are samples on its two faces closer than neighbours on one face, the
+  // Delaunay cells that break its sheet. A thicker one (a ball's radius
+  // under 0.75 h, as the coarse samples overstate it, but both faces more
+  // than a spacing apart) keeps its sheet and is left as it is.
+  for (const auto& [root, t] : thickness) {
+    const double half = median(t);
+    if (half >= h / 2.0 || spread(extent[root]).middle < (reach / 2.0) * (reach / 2.0)) continue;
+    refinement[root] = std::min(h / half, max_refinement);
+    ++walls.walls;
+  }
   if (refinement.empty()) return walls;
   // The wall vertices, each with its wall's refinement.
   std::vector<std::int32_t> on_wall;

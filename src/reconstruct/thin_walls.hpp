@@ -18,9 +18,9 @@
 // strip w wide w / √12 (w > 0.87 R). The thin vertices are decided by cubes
 // of side R / 4, each from the cubes whose centroids lie within R of its
 // own: a vertex's own neighbourhood would cost its thin neighbours each
-// (thousands along a thin limb). And the wall's two faces must both be
-// within 2 × (2 thin_radius h) of the cube's centroid along the sheet's
-// normal (the direction of least spread): the small-scale medial
+// (thousands along a thin limb). And the input's two faces, along the
+// sheet's normal (the direction of least spread) through the cube's
+// centroid, must be less than 2 × (2 thin_radius h) apart: the small-scale medial
 // structure under a noisy surface also spreads as a sheet, but has the
 // shape's thick inside on one side.
 //
@@ -28,10 +28,12 @@
 // sheet), kept if it is at least as wide as the disc that tells a sheet (its
 // vertices spread R / 2 in a second direction: a smaller patch is a local
 // arrangement, where thin limbs meet or a blob is flattened, not a wall
-// whose sheet the coarse samples break), sampled at h / min(h / t, max_refinement) for the median t of
-// its half-thicknesses along those normals (two samples across it; a
-// ball's radius overstates the thickness where the samples are as far
-// apart as the wall is thick).
+// whose sheet the coarse samples break) and if it is thinner than the
+// spacing (median half-thickness t along those normals below h / 2: only
+// then are samples on its two faces closer than neighbours on one face, the
+// Delaunay cells that break its sheet; a ball's radius overstates the
+// thickness where the samples are as far apart as the wall is thick),
+// sampled at h / min(h / t, max_refinement): two samples across it.
 //
 // What is sampled finer: each triangle of the input with a sample (of the
 // first sampling) within a wall vertex's radius + h of its centre: the
