@@ -62,8 +62,9 @@ struct MedialOptions {
   /// Thin walls (`thin_walls`, on by default; `--no-medial-thin-walls`
   /// turns it off): the parts of the pruned medial graph that are a thin
   /// wall (a sheet of radius below `thin_wall_radius` × the samples'
-  /// spacing, about 6 spacings or more across: src/reconstruct/thin_walls.hpp)
-  /// are sampled again, each wall at the spacing of its median radius (two
+  /// spacing, about 6 spacings or more across, its two faces under a
+  /// spacing apart: src/reconstruct/thin_walls.hpp)
+  /// are sampled again, each wall at the spacing of its median half-thickness (two
   /// samples across it), at most `thin_wall_max_refinement` times finer,
   /// and the graph is built again; a shape with no thin wall keeps the graph
   /// built first. A wall sampled about once across its thickness has
