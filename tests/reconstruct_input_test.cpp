@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -91,6 +92,36 @@ TEST(SurfaceSamples, BudgetIsKept) {
   const std::size_t n = surface_samples(unit_cube(), small).size();
   EXPECT_LE(n, 200u);
   EXPECT_GT(n, 8u);
+}
+
+// The cube's top face (triangles 2 and 3) refined twice: h / 2 = 0.07217.
+// Its 4 unit edges get ⌈1 / 0.07217⌉ − 1 = 13 points instead of 6 (the side
+// triangles share them: the larger refinement of an edge's two triangles),
+// its diagonal ⌈√2 / 0.07217⌉ − 1 = 19 instead of 9, each of its triangles
+// (n = 20) 19 × 18 / 2 = 171 inside instead of 36: 566 + 4 × 7 + 10 + 2 ×
+// 135 = 874. Each sample lies on the triangle sample_triangles names.
+TEST(SurfaceSamples, RefinedTrianglesAreSampledFiner) {
+  const TriangleMesh cube = unit_cube();
+  SamplingOptions refined;
+  refined.triangle_refinement.assign(cube.triangles.size(), 1.0);
+  refined.triangle_refinement[2] = refined.triangle_refinement[3] = 2.0;
+  const std::vector<Vec3> samples = surface_samples(cube, refined);
+  EXPECT_EQ(samples.size(), 874u);
+  const std::vector<std::int32_t> on = sample_triangles(cube, refined);
+  ASSERT_EQ(on.size(), samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    ASSERT_GE(on[k], 0);
+    const auto& t = cube.triangles[std::size_t(on[k])];
+    const Vec3 a = cube.vertices[std::size_t(t[0])], b = cube.vertices[std::size_t(t[1])],
+               c = cube.vertices[std::size_t(t[2])];
+    EXPECT_LT(std::abs((b - a).cross(c - a).normalized().dot(samples[k] - a)), 1e-15) << k;
+  }
+  std::size_t on_top = 0;
+  for (const Vec3& p : samples) on_top += p.z() == 1.0;
+  // The top face: 4 corners, 4 × 13 + 19 edge points, 2 × 171 inside.
+  EXPECT_EQ(on_top, 4u + 4u * 13u + 19u + 2u * 171u);
+  refined.triangle_refinement.pop_back();
+  EXPECT_THROW(surface_samples(cube, refined), std::invalid_argument);
 }
 
 // Area-weighted points carry the area: the cube's total is 6, and their

@@ -19,6 +19,7 @@
 #include "skelconv/reconstruct/medial_graph.hpp"
 #include "skelconv/reconstruct/pavlidis.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
+#include "src/reconstruct/thin_walls.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -95,6 +96,53 @@ TEST(MedialGraph, FlatFacesGiveFiniteEquidistantVertices) {
       }
     }
   }
+}
+
+/// find_thin_walls on `name` as the medial stage calls it: samples the
+/// diagonal / 40 apart, the graph pruned at 90°, thin below 0.75 spacings.
+detail::ThinWalls thin_walls_of(const char* name) {
+  const TriangleMesh mesh = read_mesh(std::string(SKELCONV_TEST_DATA) + "/reconstruct/" + name);
+  Vec3 lo = mesh.vertices.front(), hi = lo;
+  for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  SamplingOptions sampling;
+  sampling.diagonal_divisions = 40.0;
+  MedialGraph graph = medial_graph(mesh, 20, sampling);
+  prune_medial_graph(graph, std::numbers::pi / 2);
+  return detail::find_thin_walls(mesh, graph, sampling, (hi - lo).norm() / 40.0, 0.75, 2.5);
+}
+
+// The plate 1 × 1 × 0.03 (diagonal 1.4145, spacing h = 0.0354): a wall of
+// half-thickness 0.015 = 0.42 h, its sheet far wider than R = 3 h: one
+// wall, every one of its 12 triangles sampled finer, at most 2.5 times.
+TEST(ThinWalls, ThinPlateIsAWall) {
+  const detail::ThinWalls walls = thin_walls_of("plate_thin.obj");
+  EXPECT_EQ(walls.walls, 1u);
+  EXPECT_EQ(walls.triangles, 12u);
+  ASSERT_EQ(walls.triangle_refinement.size(), 12u);
+  for (const double f : walls.triangle_refinement) {
+    EXPECT_GT(f, 1.0);
+    EXPECT_LE(f, 2.5);
+  }
+}
+
+// The rod of radius 0.012 (diagonal 1.0006, h = 0.025): thin (0.48 h), but a
+// limb: its medial vertices lie within its radius of its axis, less than
+// R / 4 = 0.75 h from it, so none spreads as a sheet and nothing is
+// sampled again.
+TEST(ThinWalls, ThinRodIsNotAWall) {
+  const detail::ThinWalls walls = thin_walls_of("rod_thin.obj");
+  EXPECT_GT(walls.thin_vertices, 0u);
+  EXPECT_EQ(walls.wall_vertices, 0u);
+  EXPECT_TRUE(walls.triangle_refinement.empty());
+}
+
+// A slab as wide as the plate but 0.2 thick (diagonal 1.4283, h = 0.0357:
+// 5.6 h): its mid-sheet is 2.8 h deep, not thin; its thin medial vertices
+// are the ones towards its edges and corners, each on a strip about a
+// spacing wide or where a few such strips meet: no wall.
+TEST(ThinWalls, ThickSlabIsNotAWall) {
+  const detail::ThinWalls walls = thin_walls_of("slab_thick.obj");
+  EXPECT_TRUE(walls.triangle_refinement.empty());
 }
 
 // Pavlidis on (0,0) (1,0.1) (2,−0.1) (3,0.5) (4,0), radius 0 everywhere.

@@ -170,10 +170,11 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "The medial fit also keeps the medial vertices at least 3 facets deep inside the result (a fit "
                     "that hollows a thick part out; better on some shapes, worse on others: "
                     "docs/reconstruction_medial.md, \"Inside points\")");
-  command->add_flag("--medial-thin-walls", options.medial.thin_walls,
-                    "Where most of the shape is a wall under 1.5 sample spacings thick (a shell), the medial path "
-                    "samples the input again, finer, so that the wall's sheet is not a net of holes (better on "
-                    "shells, worse on shapes with many thin limbs: docs/reconstruction_medial.md, \"Thin walls\")");
+  command->add_flag("--medial-thin-walls,!--no-medial-thin-walls", options.medial.thin_walls,
+                    "The medial path samples the input again, up to 2.5 times finer, where a part of it is a thin wall "
+                    "(a medial sheet under 1.5 sample spacings thick and about 6 or more across), so that the wall's "
+                    "sheet is not a net of holes; on by default, --no-medial-thin-walls leaves every part at one "
+                    "spacing (docs/reconstruction_medial.md, \"Thin walls\")");
   command->add_flag("--medial-grow-within-input", options.medial.grow_within_input,
                     "Where the medial fit's radius bound finds a ball inside its neighbour's, it first grows the "
                     "smaller up to its centre's distance to the input, then shrinks the larger (better on some "

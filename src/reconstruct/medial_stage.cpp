@@ -20,6 +20,7 @@
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/reconstruct/surface_query.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
+#include "thin_walls.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -50,17 +51,6 @@ void extend_tube_ends(MedialMesh& mesh, double factor) {
   }
 }
 
-/// The median radius of the graph's vertices (0 for none): the thickness
-/// of most of the shape, its thin walls where they make up most of it.
-double median_radius(const MedialGraph& graph) {
-  std::vector<double> radii;
-  for (const MedialVertex& v : graph.vertices) radii.push_back(v.radius);
-  if (radii.empty()) return 0.0;
-  const auto middle = radii.begin() + std::ptrdiff_t(radii.size() / 2);
-  std::nth_element(radii.begin(), middle, radii.end());
-  return *middle;
-}
-
 std::size_t primitives(const MedialMesh& mesh) {
   return mesh.edges.size() + mesh.triangles.size() + mesh.isolated.size();
 }
@@ -85,15 +75,25 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                    .vertices_removed;
   };
   prune(graph);
-  if (const double thin = m.thin_walls ? median_radius(graph) : 0.0, h = diagonal / m.sample_divisions;
-      thin > 0.0 && thin < m.thin_wall_radius * h) {
-    sampling.diagonal_divisions = m.sample_divisions * std::min(m.thin_wall_max_refinement, h / thin);
-    if (o.progress)
-      o.progress(fmt::format("medial path: median medial radius {:.3g} × the samples' spacing (thin walls): "
-                             "sampled again at the diagonal / {:.1f}",
-                             thin / h, sampling.diagonal_divisions));
-    graph = medial_graph(surface, 20, sampling);
-    prune(graph);
+  // Thin walls sampled finer (thin_walls.hpp), the rest of the shape as it
+  // was: where none is found, the graph is the one built above.
+  if (m.thin_walls) {
+    const double h = diagonal / m.sample_divisions;
+    const detail::ThinWalls walls =
+        detail::find_thin_walls(surface, graph, sampling, h, m.thin_wall_radius, m.thin_wall_max_refinement);
+    if (!walls.triangle_refinement.empty()) {
+      sampling.triangle_refinement = walls.triangle_refinement;
+      if (o.progress)
+        o.progress(fmt::format("medial path: thin walls found ({} of {} thin medial vertices on a wall, {} "
+                               "walls): {} of {} triangles sampled again, up to {:.2f} times finer",
+                               walls.wall_vertices, walls.thin_vertices, walls.walls, walls.triangles,
+                               surface.triangles.size(), walls.finest));
+      graph = medial_graph(surface, 20, sampling);
+      prune(graph);
+    } else if (o.progress) {
+      o.progress(fmt::format("medial path: no thin wall ({} thin medial vertices, none on a wall)",
+                             walls.thin_vertices));
+    }
   }
   QuadricOptions quadric;
   quadric.budget = m.budget;

@@ -4,7 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <set>
+#include <map>
+#include <stdexcept>
 #include <utility>
 
 namespace skelconv::reconstruct {
@@ -14,14 +15,35 @@ using Edge = std::pair<std::int32_t, std::int32_t>;
 
 bool proper(const std::array<std::int32_t, 3>& t) { return t[0] != t[1] && t[1] != t[2] && t[2] != t[0]; }
 
-/// Undirected edges of the proper triangles, each once, in sorted order.
-std::vector<Edge> unique_edges(const TriangleMesh& mesh) {
-  std::set<Edge> edges;
-  for (const auto& t : mesh.triangles) {
+/// How much finer than h triangle t is sampled (SamplingOptions::triangle_refinement).
+double refinement(const SamplingOptions& o, std::size_t t) {
+  return o.triangle_refinement.empty() ? 1.0 : std::max(1.0, o.triangle_refinement[t]);
+}
+
+/// An undirected edge of the proper triangles, the first triangle on it
+/// and the larger refinement of its triangles.
+struct EdgeUse {
+  Edge edge;
+  std::int32_t triangle = 0;
+  double refinement = 1.0;
+};
+
+/// Each undirected edge of the proper triangles once, in sorted order.
+std::vector<EdgeUse> unique_edges(const TriangleMesh& mesh, const SamplingOptions& o) {
+  std::map<Edge, EdgeUse> edges;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
     if (!proper(t)) continue;
-    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+    for (int k = 0; k < 3; ++k) {
+      const Edge e = std::minmax(t[k], t[(k + 1) % 3]);
+      const auto [at, added] = edges.try_emplace(e, EdgeUse{e, std::int32_t(i), refinement(o, i)});
+      if (!added) at->second.refinement = std::max(at->second.refinement, refinement(o, i));
+    }
   }
-  return {edges.begin(), edges.end()};
+  std::vector<EdgeUse> list;
+  list.reserve(edges.size());
+  for (const auto& entry : edges) list.push_back(entry.second);
+  return list;
 }
 
 double length(const TriangleMesh& mesh, const Edge& e) {
@@ -39,12 +61,14 @@ std::size_t steps(double size, double h) { return std::size_t(std::max(1.0, std:
 
 /// How many points spacing h adds (edge points, then interior grid points:
 /// (n − 1)(n − 2)/2 for n steps).
-std::size_t added_count(const TriangleMesh& mesh, const std::vector<Edge>& edges, double h) {
+std::size_t added_count(const TriangleMesh& mesh, const std::vector<EdgeUse>& edges, double h,
+                        const SamplingOptions& o) {
   std::size_t count = 0;
-  for (const Edge& e : edges) count += steps(length(mesh, e), h) - 1;
-  for (const auto& t : mesh.triangles) {
+  for (const EdgeUse& e : edges) count += steps(length(mesh, e.edge), h / e.refinement) - 1;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
     if (!proper(t)) continue;
-    const std::size_t n = steps(longest_edge(mesh, t), h);
+    const std::size_t n = steps(longest_edge(mesh, t), h / refinement(o, i));
     count += (n - 1) * (n - 2) / 2;  // 0 for n = 1 and 2
   }
   return count;
@@ -52,39 +76,57 @@ std::size_t added_count(const TriangleMesh& mesh, const std::vector<Edge>& edges
 
 /// The spacing h (SamplingOptions): diagonal / divisions, doubled until
 /// the samples fit the budget.
-double spacing(const TriangleMesh& mesh, const std::vector<Edge>& edges, const SamplingOptions& o) {
+double spacing(const TriangleMesh& mesh, const std::vector<EdgeUse>& edges, const SamplingOptions& o) {
   Vec3 lo = mesh.vertices.front(), hi = lo;
   for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   double h = (hi - lo).norm() / o.diagonal_divisions;
   if (!(h > 0.0)) return INFINITY;  // every point in one place: nothing to spread
-  while (mesh.vertices.size() + added_count(mesh, edges, h) > o.max_samples) h *= 2.0;
+  while (mesh.vertices.size() + added_count(mesh, edges, h, o) > o.max_samples) h *= 2.0;
   return h;
+}
+
+/// Calls add(point, triangle) for each added sample, in the order of
+/// surface_samples.
+template <class Add>
+void for_each_added_sample(const TriangleMesh& mesh, const SamplingOptions& options, Add&& add) {
+  if (!options.triangle_refinement.empty() && options.triangle_refinement.size() != mesh.triangles.size())
+    throw std::invalid_argument("surface_samples: triangle_refinement needs one factor per triangle");
+  const std::vector<EdgeUse> edges = unique_edges(mesh, options);
+  if (edges.empty()) return;
+  const double h = spacing(mesh, edges, options);
+  for (const EdgeUse& e : edges) {
+    const std::size_t n = steps(length(mesh, e.edge), h / e.refinement);
+    const Vec3& a = mesh.vertices[std::size_t(e.edge.first)];
+    const Vec3& b = mesh.vertices[std::size_t(e.edge.second)];
+    for (std::size_t k = 1; k < n; ++k) add(a + (b - a) * (double(k) / double(n)), e.triangle);
+  }
+  for (std::size_t ti = 0; ti < mesh.triangles.size(); ++ti) {
+    const auto& t = mesh.triangles[ti];
+    if (!proper(t)) continue;
+    const std::size_t n = steps(longest_edge(mesh, t), h / refinement(options, ti));
+    const Vec3& a = mesh.vertices[std::size_t(t[0])];
+    const Vec3& b = mesh.vertices[std::size_t(t[1])];
+    const Vec3& c = mesh.vertices[std::size_t(t[2])];
+    for (std::size_t i = 1; i < n; ++i)
+      for (std::size_t j = 1; i + j < n; ++j)
+        add((a * double(n - i - j) + b * double(i) + c * double(j)) / double(n), std::int32_t(ti));
+  }
 }
 
 }  // namespace
 
 std::vector<Vec3> surface_samples(const TriangleMesh& mesh, const SamplingOptions& options) {
   std::vector<Vec3> samples = mesh.vertices;
-  const std::vector<Edge> edges = unique_edges(mesh);
-  if (edges.empty()) return samples;
-  const double h = spacing(mesh, edges, options);
-  for (const Edge& e : edges) {
-    const std::size_t n = steps(length(mesh, e), h);
-    const Vec3& a = mesh.vertices[std::size_t(e.first)];
-    const Vec3& b = mesh.vertices[std::size_t(e.second)];
-    for (std::size_t k = 1; k < n; ++k) samples.push_back(a + (b - a) * (double(k) / double(n)));
-  }
-  for (const auto& t : mesh.triangles) {
-    if (!proper(t)) continue;
-    const std::size_t n = steps(longest_edge(mesh, t), h);
-    const Vec3& a = mesh.vertices[std::size_t(t[0])];
-    const Vec3& b = mesh.vertices[std::size_t(t[1])];
-    const Vec3& c = mesh.vertices[std::size_t(t[2])];
-    for (std::size_t i = 1; i < n; ++i)
-      for (std::size_t j = 1; i + j < n; ++j)
-        samples.push_back((a * double(n - i - j) + b * double(i) + c * double(j)) / double(n));
-  }
+  for_each_added_sample(mesh, options, [&samples](const Vec3& p, std::int32_t) { samples.push_back(p); });
   return samples;
+}
+
+std::vector<std::int32_t> sample_triangles(const TriangleMesh& mesh, const SamplingOptions& options) {
+  std::vector<std::int32_t> triangles(mesh.vertices.size(), -1);
+  for (std::size_t i = mesh.triangles.size(); i-- > 0;)
+    for (const std::int32_t v : mesh.triangles[i]) triangles[std::size_t(v)] = std::int32_t(i);
+  for_each_added_sample(mesh, options, [&triangles](const Vec3&, std::int32_t t) { triangles.push_back(t); });
+  return triangles;
 }
 
 }  // namespace skelconv::reconstruct

@@ -59,20 +59,23 @@ struct MedialOptions {
   /// (surface_samples.hpp; the curve path's 12 leaves a coarse mesh's large
   /// triangles with few samples, and the medial sheets full of holes).
   double sample_divisions = 40.0;
-  /// Thin walls (off unless `thin_walls`; `--medial-thin-walls`): where
-  /// the median radius of the pruned medial graph is
-  /// below `thin_wall_radius` × the samples' spacing, the graph is built
-  /// again with the spacing shrunk to that median (two samples across the
-  /// wall), at most `thin_wall_max_refinement` times finer. A wall sampled
-  /// about once across its thickness has Delaunay cells spanning both
-  /// faces, whose circumcentres fall outside: its sheet comes out full of
-  /// holes, each one a tunnel in the result (CGAL's rotor, median 0.54
-  /// spacings: medial complex χ −47 for a genus-1 solid). Not lower: the
-  /// elephant (0.84 spacings) resampled came back farther from its input
-  /// (docs/reconstruction_medial.md, "Thin walls"). Off by default: the
-  /// median does not tell a shell from thin limbs, and the dino (0.55
-  /// spacings) and the femur resampled lose their topology.
-  bool thin_walls = false;
+  /// Thin walls (`thin_walls`, on by default; `--no-medial-thin-walls`
+  /// turns it off): the parts of the pruned medial graph that are a thin
+  /// wall (a sheet of radius below `thin_wall_radius` × the samples'
+  /// spacing, about 6 spacings or more across, its two faces under a
+  /// spacing apart: src/reconstruct/thin_walls.hpp)
+  /// are sampled again, each wall at the spacing of its median half-thickness (two
+  /// samples across it), at most `thin_wall_max_refinement` times finer,
+  /// and the graph is built again; a shape with no thin wall keeps the graph
+  /// built first. A wall sampled about once across its thickness has
+  /// Delaunay cells spanning both faces, whose circumcentres fall outside:
+  /// its sheet comes out full of holes, each one a tunnel in the result
+  /// (CGAL's rotor: medial complex χ −47 for a genus-1 solid). A thin limb
+  /// has a curve for its medial axis, no sheet, and is left as it is.
+  /// 0.75: the elephant (median radius 0.84 spacings) resampled as a
+  /// whole came back farther from its input (docs/reconstruction_medial.md,
+  /// "Thin walls").
+  bool thin_walls = true;
   double thin_wall_radius = 0.75;
   double thin_wall_max_refinement = 2.5;
   /// The fit's points are about this × the diagonal apart.

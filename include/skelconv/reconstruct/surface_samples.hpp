@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "skelconv/mesh/triangle_mesh.hpp"
@@ -36,11 +37,23 @@ struct SamplingOptions {
   /// At most this many samples in all: h grows (doubling) until the count
   /// fits, so that the 3-D Delaunay triangulation stays tractable.
   std::size_t max_samples = 200000;
+  /// Empty, or one factor (≥ 1) per triangle of the mesh: that triangle is
+  /// sampled at h / its factor, and an edge at h / the larger factor of its
+  /// two triangles (so that both agree on its points). The medial path
+  /// samples a thin wall finer this way and leaves the rest as it was
+  /// (thin_walls.hpp).
+  std::vector<double> triangle_refinement;
 };
 
 /// The vertices of `mesh` (first, in order, so that vertex i is sample i)
 /// followed by the added surface points. Triangles with a repeated index
 /// are skipped.
 std::vector<Vec3> surface_samples(const TriangleMesh& mesh, const SamplingOptions& options = {});
+
+/// For each sample of surface_samples(mesh, options), in the same order,
+/// one triangle it lies on: for a vertex, the first triangle round it (−1
+/// for a vertex of none); for a point on an edge, the first of its two
+/// triangles; for a point inside a triangle, that triangle.
+std::vector<std::int32_t> sample_triangles(const TriangleMesh& mesh, const SamplingOptions& options = {});
 
 }  // namespace skelconv::reconstruct
