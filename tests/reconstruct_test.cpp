@@ -79,6 +79,44 @@ TEST(Pruning, ContactSpan) {
   EXPECT_EQ(graph.vertices[0].radius, 1.0);
 }
 
+// The islands rule and its lobes: a chain of 40 balls of radius 1 along x
+// (centres (i, 0, 0), each touching a diameter, θ = π) is the large piece;
+// three single vertices are islands (1 < 5% of 40). A ball of radius 2 at
+// (45, 0, 0) is deep (2 ≥ 0.5 × 1) and outside the chain: the nearest
+// chain ball, centre 39, reaches 1 − 6 = −5 at its centre, so it reaches
+// 2 + 5 = 7 ≥ 0.5 × 2 beyond: kept. A ball of radius 1 at (20, 0.2, 0) is
+// deep but inside: the chain ball at 20 reaches 1 − 0.2 = 0.8 at its
+// centre, 1 − 0.8 = 0.2 < 0.5 beyond: dropped. A ball of radius 0.2 at
+// (60, 0, 0) is shallow (0.2 < 0.5): dropped. Without lobes all three go.
+TEST(Pruning, SmallPiecesKeptAsLobes) {
+  MedialGraph graph;
+  const auto add = [&graph](const Vec3& centre, double radius) {
+    const auto first = std::int32_t(graph.samples.size());
+    graph.samples.push_back(centre - Vec3(radius, 0, 0));
+    graph.samples.push_back(centre + Vec3(radius, 0, 0));
+    graph.samples.push_back(centre + Vec3(0, radius, 0));
+    graph.samples.push_back(centre + Vec3(0, 0, radius));
+    graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
+  };
+  for (int i = 0; i < 40; ++i) add(Vec3(i, 0, 0), 1.0);
+  for (std::int32_t i = 0; i + 1 < 40; ++i) graph.edges.push_back({i, i + 1, {0, 1, 2}});
+  add(Vec3(45, 0, 0), 2.0);
+  add(Vec3(20, 0.2, 0), 1.0);
+  add(Vec3(60, 0, 0), 0.2);
+  MedialGraph without = graph;
+  const PruningReport dropped = prune_medial_graph(without, std::numbers::pi / 4);
+  EXPECT_EQ(dropped.small_pieces_removed, 3u);
+  EXPECT_EQ(dropped.lobes_kept, 0u);
+  EXPECT_EQ(without.vertices.size(), 40u);
+  const PruningReport report = prune_medial_graph(graph, std::numbers::pi / 4, 0.05, 0.0, LobeOptions{0.5, 0.5});
+  EXPECT_EQ(report.vertices_removed, 0u);
+  EXPECT_EQ(report.small_pieces_removed, 2u);
+  EXPECT_EQ(report.lobes_kept, 1u);
+  ASSERT_EQ(graph.vertices.size(), 41u);
+  EXPECT_EQ(graph.vertices[40].centre, Vec3(45, 0, 0));
+  EXPECT_EQ(graph.edges.size(), 39u);
+}
+
 // Flat faces sampled on a grid give Delaunay slivers, four samples within
 // rounding of a plane, whose circumcentre cannot be computed in double (CGAL
 // asserts on them where its assertions are on, and returns an infinite or

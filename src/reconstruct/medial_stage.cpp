@@ -70,9 +70,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                              g.vertices.size()));
     r.samples = g.samples.size();
     r.vertices = g.vertices.size();
-    r.pruned = prune_medial_graph(g, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
-                                  std::max(m.prune_span, o.prune_span) * diagonal)
-                   .vertices_removed;
+    const PruningReport pruned = prune_medial_graph(g, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
+                                                    std::max(m.prune_span, o.prune_span) * diagonal, m.lobes);
+    r.pruned = pruned.vertices_removed;
+    if (o.progress && pruned.lobes_kept > 0)
+      o.progress(fmt::format("medial path: {} small pieces kept as lobes (deep balls outside the large pieces')",
+                             pruned.lobes_kept));
   };
   prune(graph);
   // Thin walls sampled finer (thin_walls.hpp), the rest of the shape as it

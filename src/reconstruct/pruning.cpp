@@ -85,7 +85,8 @@ double vertex_angle(const MedialGraph& graph, std::size_t v) {
   return span_angle(contact_span(graph, v), graph.vertices[v].radius);
 }
 
-PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double minimum_piece, double minimum_span) {
+PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double minimum_piece, double minimum_span,
+                                 const LobeOptions& lobes) {
   const std::size_t n = graph.vertices.size();
   PruningReport report;
   std::vector<bool> keep(n);
@@ -105,10 +106,37 @@ PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double mi
   }
   std::size_t largest = 0;
   for (const auto& [r, s] : size) largest = std::max(largest, s);
+  const auto small = [&](std::int32_t r) { return double(size[r]) < minimum_piece * double(largest); };
+  // Each small piece's deepest vertex, and the largest radius of the large pieces.
+  std::map<std::int32_t, std::size_t> deepest;
+  double large_radius = 0.0;
   for (std::size_t v = 0; v < n; ++v) {
-    if (keep[v] && double(size[root[v]]) < minimum_piece * double(largest)) keep[v] = false;
+    if (root[v] < 0) continue;
+    const double radius = graph.vertices[v].radius;
+    if (!small(root[v])) {
+      large_radius = std::max(large_radius, radius);
+    } else if (const auto [at, fresh] = deepest.emplace(root[v], v); !fresh && radius > graph.vertices[at->second].radius) {
+      at->second = v;
+    }
   }
-  for (const auto& [r, s] : size) report.small_pieces_removed += double(s) < minimum_piece * double(largest);
+  std::map<std::int32_t, bool> lobe;
+  for (const auto& [r, d] : deepest) {
+    const MedialVertex& ball = graph.vertices[d];
+    if (lobes.radius <= 0.0 || ball.radius < lobes.radius * large_radius) continue;
+    // How deep the large pieces' balls reach at the centre.
+    double covered = 0.0;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (root[v] >= 0 && !small(root[v]))
+        covered = std::max(covered, graph.vertices[v].radius - (graph.vertices[v].centre - ball.centre).norm());
+    }
+    lobe[r] = ball.radius - covered >= lobes.outside * ball.radius;
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    if (keep[v] && small(root[v]) && !lobe[root[v]]) keep[v] = false;
+  }
+  for (const auto& [r, s] : size) {
+    if (small(r)) ++(lobe[r] ? report.lobes_kept : report.small_pieces_removed);
+  }
   compact(graph, keep);
   return report;
 }

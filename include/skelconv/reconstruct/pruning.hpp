@@ -38,6 +38,23 @@ struct PruningReport {
   /// Connected pieces of the removed vertices: the branches that went.
   std::size_t branches_removed = 0;
   std::size_t small_pieces_removed = 0;
+  /// Small pieces kept as lobes (LobeOptions).
+  std::size_t lobes_kept = 0;
+};
+
+/// When a small piece is a lobe of the shape and not noise. A ball on a
+/// body (CGAL's elk) has a point for medial axis: its Voronoi vertices are
+/// a cloud round the centre that the angle cuts into small pieces, none of
+/// them 5% of the body's sheet, and the islands rule would drop the whole
+/// ball. A small piece is kept when its deepest ball (radius r) is deep,
+/// r ≥ `radius` × the largest radius of the large pieces, and not inside
+/// them: it reaches at least `outside` × r beyond every ball of the large
+/// pieces (r − max over their balls of (ρ − |centre distance|)). Noise
+/// pieces are shallow (balls near the surface) or lie inside the balls of
+/// the sheet they broke off. 0 for `radius`: no piece is kept.
+struct LobeOptions {
+  double radius = 0.0;
+  double outside = 0.5;
 };
 
 /// θ of vertex `v` of `graph` (p± = the longest edge of its tetrahedron).
@@ -49,7 +66,8 @@ double contact_span(const MedialGraph& graph, std::size_t v);
 
 /// Removes the vertices with θ < `threshold` (radians) or a contact span
 /// below `minimum_span` (length units; 0: no such test), then the pieces
-/// smaller than `minimum_piece` (in [0, 1]) × the largest; renumbers.
+/// smaller than `minimum_piece` (in [0, 1]) × the largest but those that
+/// `lobes` keeps; renumbers.
 ///
 /// Why a span as well as the angle: θ is scale-free, so noise larger than
 /// the sample spacing (a folded surface) makes whole small-scale medial
@@ -59,6 +77,6 @@ double contact_span(const MedialGraph& graph, std::size_t v);
 /// than about twice the noise amplitude cannot be told from noise (Chazal
 /// & Lieutier's λ-medial axis keeps the balls whose contacts span ≥ λ).
 PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double minimum_piece = 0.05,
-                                 double minimum_span = 0.0);
+                                 double minimum_span = 0.0, const LobeOptions& lobes = {});
 
 }  // namespace skelconv::reconstruct

@@ -38,6 +38,9 @@ struct MedialOptions {
   /// this × the diagonal (pruning.hpp, the λ-medial axis): the spikes a
   /// coarse mesh's every sharp vertex sends into the medial axis.
   double prune_span = 0.0;
+  /// The small pieces the islands rule keeps as lobes (pruning.hpp): a
+  /// ball on a body (CGAL's elk) would go otherwise.
+  LobeOptions lobes{0.5, 0.5};
   /// A tube's free end is extended by one sphere this many radii beyond it
   /// (the medial axis stops short of a cap); 0 = none.
   double end_extension = 1.0;
