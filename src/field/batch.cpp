@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cstdint>
 #include <mutex>
-#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -17,6 +16,8 @@
 #include <fmt/format.h>
 
 #include "skelconv/errors.hpp"
+
+#include "../detail/parallel_for.hpp"
 
 namespace skelconv {
 
@@ -33,7 +34,7 @@ void check_thread_count(unsigned threads) {
 
 namespace {
 
-/// The threads run_blocks starts for `count` points: never more than blocks.
+/// The threads run_blocks runs `count` points on: never more than blocks.
 unsigned thread_count(std::size_t count, const BatchOptions& options) {
   const std::size_t block = std::max<std::size_t>(1, options.block_size);
   const std::size_t blocks = (count + block - 1) / block;
@@ -41,19 +42,11 @@ unsigned thread_count(std::size_t count, const BatchOptions& options) {
                                         std::max<std::size_t>(1, blocks)));
 }
 
-/// Runs evaluate_point(k) for k in [0, count) on the threads of `options`,
-/// in blocks (batch.hpp, "Determinism" and "Errors"); returns the failure at
-/// the lowest index.
+/// Runs evaluate_point(k) for k in [0, count) on the threads of `options`
+/// (thread_count), in blocks (batch.hpp, "Determinism" and "Errors");
+/// returns the failure at the lowest index.
 template <class EvaluatePoint>
 std::optional<BatchFailure> run_blocks(std::size_t count, const BatchOptions& options, EvaluatePoint evaluate_point) {
-  const std::size_t block = std::max<std::size_t>(1, options.block_size);
-  const std::size_t blocks = (count + block - 1) / block;
-  const unsigned threads = thread_count(count, options);
-
-  std::atomic<std::size_t> next_block{0};
-  std::atomic<std::size_t> lowest_failure{count};
-  std::optional<BatchFailure> failure;
-  std::mutex failure_mutex;
   // BatchOptions::progress: whole blocks counted, one thread reporting at a
   // time (a thread that finds another reporting goes on), the clock read
   // once per block.
@@ -61,6 +54,7 @@ std::optional<BatchFailure> run_blocks(std::size_t count, const BatchOptions& op
   std::mutex progress_mutex;
   auto last_report = std::chrono::steady_clock::now();
   const auto block_done = [&](std::size_t points) {
+    if (!options.progress) return;
     evaluated += points;
     const std::unique_lock<std::mutex> lock(progress_mutex, std::try_to_lock);
     if (!lock.owns_lock()) return;
@@ -71,42 +65,10 @@ std::optional<BatchFailure> run_blocks(std::size_t count, const BatchOptions& op
     last_report = now;
     options.progress(done);
   };
-  const auto work = [&] {
-    for (std::size_t b = next_block++; b < blocks; b = next_block++) {
-      const std::size_t end = std::min(count, (b + 1) * block);
-      for (std::size_t k = b * block; k < end && k < lowest_failure.load(std::memory_order_relaxed); ++k) {
-        try {
-          evaluate_point(k);
-        } catch (...) {
-          const std::lock_guard<std::mutex> lock(failure_mutex);
-          if (k < lowest_failure.load()) {
-            lowest_failure = k;
-            failure = BatchFailure{k, std::current_exception()};
-          }
-          break;
-        }
-      }
-      if (options.progress) block_done(end - b * block);
-    }
-  };
-  if (threads <= 1) {
-    work();
-  } else {
-    std::vector<std::thread> pool;
-    pool.reserve(threads);
-    try {
-      for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
-    } catch (const std::system_error&) {
-      // The system refused one more thread (a thread count far above the
-      // cores, or a memory limit on the stacks): those started, and this
-      // one, do the work, with the same results. The started threads must
-      // be joined whatever happens (a joinable std::thread destroyed calls
-      // std::terminate).
-      work();
-    }
-    for (std::thread& thread : pool) thread.join();
-  }
-  return failure;
+  const auto failure =
+      detail::parallel_blocks(count, evaluate_point, options.block_size, thread_count(count, options), block_done);
+  if (!failure) return std::nullopt;
+  return BatchFailure{failure->index, failure->error};
 }
 
 /// Results at least this large are new pages from the kernel on every call
