@@ -185,17 +185,21 @@ void check_output_size(const Box3& box, double size, double distance, const Mesh
   }
 }
 
+/// CGAL's intersections are bisected to the facet distance over this: its
+/// distance test then sees the surface, not the bisection. The grid's
+/// vertices are held to the voxel size over the same.
+constexpr double accuracy_divisor = 100.0;
+
 /// Refuses a surface so far from the origin that doubles there are too
-/// coarse for the mesher's accuracy: CGAL places the surface's points to a
-/// hundredth of the facet distance (the intersection bisection's bound
-/// below), the grid its vertices to a fraction of a voxel, taken here as a
-/// hundredth of the size. Below 4 spacings per that accuracy, CGAL's
+/// coarse for the mesher's accuracy: CGAL places the surface's points to
+/// the facet distance / accuracy_divisor, the grid its vertices to a
+/// fraction of a voxel, taken as the size / accuracy_divisor. Below 4 spacings per that accuracy, CGAL's
 /// bisection and distance test never settle (a ball of radius 1 at
 /// 7e11 from the origin refined without end) and the grid's vertices are
 /// rounded to steps a visible part of a voxel.
 void check_coordinate_precision(const Box3& box, double size, double distance, const MeshOptions& options) {
   const bool cgal = options.method == MeshMethod::cgal;
-  const double accuracy = (cgal ? distance : size) / 100;
+  const double accuracy = (cgal ? distance : size) / accuracy_divisor;
   const double magnitude = std::max(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff());
   const double spacing = std::nextafter(magnitude, INFINITY) - magnitude;
   if (spacing <= accuracy / 4) return;
@@ -424,9 +428,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                                 .facet_size = run.size,
                                 .facet_distance = run.distance,
                                 .facet_angle = options.facet_angle,
-                                // Intersections to 1/100 of the facet distance: CGAL's
-                                // distance test then sees the surface, not the bisection.
-                                .relative_error_bound = run.distance / 100 / run.box.diagonal(),
+                                .relative_error_bound = run.distance / accuracy_divisor / run.box.diagonal(),
                                 .random_seed = options.random_seed,
                             });
   meter.report_progress(false);
