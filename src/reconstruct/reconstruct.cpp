@@ -556,7 +556,9 @@ MeasureWork measure_work(const TriangleMesh& surface, const Stage& stage, const 
   work.grid_nodes = n.prod();
   // The mesher's field index visits a compact primitive only at the nodes
   // inside its support box (field/support_box.hpp), and an
-  // infinite-support one (Cauchy) at every node.
+  // infinite-support one (Cauchy) at every node. (A sum of fewer than
+  // Skeleton::min_indexed_children is not indexed: its few compact
+  // primitives cost every node, at most 7 grids, far under any budget.)
   if (primitive_counts(stage, options).total() == 0) return work;
   const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
   work.primitives = skeleton.primitives().size();
