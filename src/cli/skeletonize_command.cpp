@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "count_option.hpp"
 #include "exit_status.hpp"
@@ -95,10 +96,11 @@ std::string repair_json(const reconstruct::InputRepair& repair, double seconds) 
   const std::string holes =
       s.repaired() ? fmt::format("{{\"non_manifold_edges\": {}, \"vertices_split\": {}, \"isolated_vertices_removed\": {}, "
                                  "\"boundary_edges\": {}, \"holes_filled\": {}, \"holes_not_faired\": {}, "
-                                 "\"triangles_added\": {}, \"vertices_added\": {}, \"largest_hole_area\": {:.4g}}}",
+                                 "\"triangles_added\": {}, \"vertices_added\": {}, \"largest_hole_area\": {:.4g}, "
+                                 "\"triangles_flipped\": {}}}",
                                  s.non_manifold_edges, s.vertices_split, s.isolated_vertices_removed, s.boundary_edges,
                                  s.holes_filled, s.holes_not_faired, s.triangles_added, s.vertices_added,
-                                 s.largest_hole_area)
+                                 s.largest_hole_area, s.triangles_flipped)
                    : "null";
   const std::string union_ =
       o.crossing_pairs > 0 ? fmt::format("{{\"crossing_pairs\": {}, \"action\": \"boolean_union\", "
@@ -286,10 +288,14 @@ int run_skeletonize(const SkeletonizeOptions& options) {
         if (s.isolated_vertices_removed)
           done += fmt::format("{}removed {} vertices of no triangle", done.empty() ? "" : "; ",
                               s.isolated_vertices_removed);
-        ro.progress(fmt::format("the mesh is {}: {} ({:.3g} s, --repair)",
-                                s.non_manifold_edges ? (s.holes_filled ? "not manifold and open" : "not manifold")
-                                                     : "open",
-                                done, repair_seconds));
+        if (s.triangles_flipped)
+          done += fmt::format("{}turned its {} triangles round", done.empty() ? "" : "; ", s.triangles_flipped);
+        std::vector<std::string> problems;
+        if (s.non_manifold_edges) problems.emplace_back("not manifold");
+        if (s.holes_filled || (s.isolated_vertices_removed && !s.non_manifold_edges)) problems.emplace_back("open");
+        if (s.triangles_flipped) problems.emplace_back("inside out");
+        ro.progress(fmt::format("the mesh is {}: {} ({:.3g} s, --repair)", fmt::join(problems, " and "), done,
+                                repair_seconds));
       }
       if (const reconstruct::OverlapRepair& o = repair.overlaps; o.crossing_pairs > 0)
         ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): joined the overlapping parts "
