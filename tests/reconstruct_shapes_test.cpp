@@ -165,7 +165,7 @@ TEST(Shapes, MeasuringBudgetOfCompactPrimitives) {
 }
 
 // `auto` never returns more primitives than the budget: the tripod's curve
-// skeleton (39 segments and its end extensions, the curve path's result by
+// skeleton (39 segments, ends extended: the curve path's result by
 // default) is over a budget of 20, so it is not fitted and the result is
 // the medial mesh, within the budget.
 TEST(Shapes, AutoKeepsTheBudget) {
