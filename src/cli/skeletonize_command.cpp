@@ -116,11 +116,13 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
                         const std::string& input_repair) {
   std::string text = fmt::format("{{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
                                  "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, "
-                                 "\"input_repair\": {}, "
+                                 "\"input_repair\": {}, \"budget\": {}, \"curve_over_budget\": {}, "
                                  "\"input_euler_characteristic\": {}, \"input_components\": {}, \"medial_seconds\": {:.3g}, "
                                  "\"result\": \"{}\", \"stages\": [",
                                  r.samples, r.medial_vertices, r.pruning.vertices_removed,
                                  r.pruning.branches_removed, r.spurs_removed, r.tolerance, input_repair,
+                                 options.medial.budget,
+                                 r.curve_over_budget > 0 ? std::to_string(r.curve_over_budget) : std::string("null"),
                                  mesh_topology(input).euler_characteristic, mesh_topology(input).components,
                                  r.medial_seconds, r.stages.back().name);
   for (std::size_t k = 0; k < r.stages.size(); ++k)
@@ -160,7 +162,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "triangles, tubes as SCALIS segments)")
       ->check(CLI::IsMember({"auto", "curve", "medial"}));
   command->add_option("--budget", options.budget,
-                      "At most this many primitives in the medial mesh (default 500): fewer primitives, larger error")
+                      "At most this many primitives in the result of --method auto and medial (default 500): the medial mesh "
+                      "is simplified to it, and auto does not keep a curve skeleton of more (--method curve only "
+                      "says so); fewer primitives, larger error")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
   command->add_option("--medial-prune-angle", options.medial.prune_angle_degrees,
                       fmt::format("Pruning threshold θ in degrees of the medial path (default {})",
