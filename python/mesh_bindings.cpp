@@ -209,7 +209,7 @@ void add_mesh_bindings(py::module_& m, py::class_<Skeleton>& skeleton) {
       py::arg("repair") = false,
       "The skeleton of SCALIS primitives whose surface approximates a closed mesh, as `skelconv skeletonize` "
       "(docs/reconstruction.md): vertices (V, 3), triangles (T, 3) counter-clockwise seen from outside. "
-      "method: \"auto\" (both, the closer one), \"curve\" or \"medial\"; budget: the medial path's primitives; "
+      "method: \"auto\" (both, the closer one), \"curve\" or \"medial\"; budget: the result's primitives at most (auto and medial: auto keeps no curve skeleton of more); "
       "repair: as --repair, close holes, split non-manifold edges and join crossing parts instead of refusing; "
       "the other options are the command's (--prune-angle is prune_angle; None: the command's default).");
 }

@@ -613,6 +613,44 @@ TEST(MeshRepair, CubesSharingAnEdgeAreSplitThere) {
   EXPECT_NEAR(six_volume(two) / 6.0, 2.0, 1e-15);
 }
 
+// The unit cube with every triangle facing inwards (volume −1): refused, the
+// refusal naming --repair; --repair turns all 12 round, volume +1 exactly
+// (products of 0 and 1). Two cubes, one inward, are a cavity or a mistake
+// the user must resolve: neither is turned round.
+TEST(MeshRepair, InsideOutCubeIsTurnedRound) {
+  TriangleMesh cube = unit_cube();
+  for (auto& t : cube.triangles) std::swap(t[1], t[2]);
+  EXPECT_NEAR(six_volume(cube) / 6.0, -1.0, 1e-15);
+  try {
+    check_closed_mesh_offering_repair(cube, "--repair");
+    ADD_FAILURE() << "an inside-out cube accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the mesh is inside out"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(or pass --repair to let skeletonize turn it round)"), std::string::npos)
+        << e.what();
+  }
+  const InputRepair repair = check_closed_mesh_repairing(cube);
+  EXPECT_EQ(repair.surface.triangles_flipped, 12u);
+  EXPECT_TRUE(repair.surface.repaired());
+  EXPECT_EQ(repair.surface.holes_filled, 0u);
+  EXPECT_NO_THROW(check_closed_mesh(cube));
+  EXPECT_EQ(six_volume(cube) / 6.0, 1.0);
+
+  TriangleMesh two = unit_cube();
+  const std::size_t n = two.vertices.size();
+  for (std::size_t k = 0; k < n; ++k) two.vertices.push_back(two.vertices[k] + Vec3(3, 0, 0));
+  const std::size_t m = two.triangles.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    auto t = two.triangles[k];
+    for (auto& i : t) i += std::int32_t(n);
+    std::swap(t[1], t[2]);
+    two.triangles.push_back(t);
+  }
+  EXPECT_THROW(check_closed_mesh_repairing(two), InputError);
+  EXPECT_EQ(two.triangles[0], unit_cube().triangles[0]);
+}
+
+
 // Too large to be a hole: the cube without the three faces at the corner
 // (1, 1, 1) (x = 1, y = 1, z = 1) leaves one hole, a skew hexagon. Any
 // patch spanning it has at least the area of its projection along (1, 1,
@@ -637,7 +675,7 @@ TEST(MeshRepair, HalfOpenBoxAndFlippedTrianglesAreRefused) {
     check_closed_mesh_repairing(flipped);
     ADD_FAILURE() << "a flipped triangle repaired";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("(--repair does not flip triangles)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(--repair does not flip single triangles)"), std::string::npos) << e.what();
   }
 }
 

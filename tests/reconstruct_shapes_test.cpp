@@ -118,5 +118,67 @@ TEST(Shapes, MeasuringBudget) {
   EXPECT_GT(d.diagonal, 0.0);
 }
 
+// A compact primitive (the medial mesh's) is evaluated only at the grid
+// nodes inside its support box: one compact SCALIS segment of radius ρ
+// (σ = 1.5, support σ ρ about the segment) costs the nodes of the segment's
+// box grown by σ ρ, counted here node by node over the whole grid, not the
+// whole grid (which every Cauchy primitive costs, MeasuringBudget above).
+TEST(Shapes, MeasuringBudgetOfCompactPrimitives) {
+  const TriangleMesh mesh = read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / "segment.ply");
+  Vec3 lo = mesh.vertices.front(), hi = lo;
+  for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double h = (hi - lo).norm() / 100;
+  const Vec3 a = 0.5 * (lo + hi), b = a + Vec3(0.3 * (hi.x() - lo.x()), 0, 0);
+  const double radius = 0.031 * (hi - lo).norm();
+  ReconstructOptions options;
+  const double support = options.medial.kernel_sigma * radius;
+  // Nodes at lo − h + k h, ⌊extent / h⌋ + 3 per axis.
+  const auto nodes_inside = [&](double grow) {
+    double count = 0;
+    int n[3];
+    for (int axis = 0; axis < 3; ++axis) n[axis] = int(std::floor((hi[axis] - lo[axis]) / h)) + 3;
+    for (int i = 0; i < n[0]; ++i)
+      for (int j = 0; j < n[1]; ++j)
+        for (int k = 0; k < n[2]; ++k) {
+          const Vec3 p = lo + Vec3(i - 1, j - 1, k - 1) * h;
+          bool in = true;
+          for (int axis = 0; axis < 3; ++axis)
+            in = in && p[axis] >= std::min(a[axis], b[axis]) - grow && p[axis] <= std::max(a[axis], b[axis]) + grow;
+          count += in;
+        }
+    return count;
+  };
+  const double expected = nodes_inside(support);
+  // No node within a hundred-thousandth of the support of the box's faces:
+  // the box's own margin (support_box.hpp, 1e-6 of it) decides none.
+  ASSERT_EQ(nodes_inside(support * (1 - 1e-5)), expected);
+  ASSERT_EQ(nodes_inside(support * (1 + 1e-5)), expected);
+  Stage stage;
+  stage.name = "medial";
+  stage.medial.spheres = {Vec4(a.x(), a.y(), a.z(), radius), Vec4(b.x(), b.y(), b.z(), radius)};
+  stage.medial.edges = {{0, 1}};
+  const MeasureWork work = measure_work(mesh, stage, options);
+  EXPECT_EQ(work.primitives, 1u);
+  EXPECT_GT(expected, 0.0);
+  EXPECT_LT(expected, work.grid_nodes / 10);
+  EXPECT_DOUBLE_EQ(work.evaluations, expected);
+}
+
+// `auto` never returns more primitives than the budget: the tripod's curve
+// skeleton (39 segments, ends extended: the curve path's result by
+// default) is over a budget of 20, so it is not fitted and the result is
+// the medial mesh, within the budget.
+TEST(Shapes, AutoKeepsTheBudget) {
+  const TriangleMesh mesh = read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / "tripod.ply");
+  ReconstructOptions options;
+  options.method = SkeletonMethod::automatic;
+  options.medial.budget = 20;
+  const Reconstruction r = reconstruct(mesh, options);
+  EXPECT_EQ(r.stages.back().name, "medial");
+  EXPECT_LE(primitive_counts(r.stages.back(), options).total(), 20u);
+  EXPECT_GT(r.curve_over_budget, 20u);
+  for (const Stage& s : r.stages) EXPECT_NE(s.name, "fitted");
+}
+
 }  // namespace
 }  // namespace skelconv::reconstruct

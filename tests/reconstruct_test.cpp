@@ -117,6 +117,58 @@ TEST(Pruning, SmallPiecesKeptAsLobes) {
   EXPECT_EQ(graph.edges.size(), 39u);
 }
 
+// The islands rule measures a piece against the largest piece of its own
+// part of the surface: the chain of 40 balls (part 0) and, 100 away, a
+// separate small part (part 1, a bone beside a foot) whose medial graph is
+// one piece of 1 ball, with one noise vertex beside the chain (part 0).
+// With one part all 2 are islands (1 < 5% of 40); with the parts given, the
+// small part's piece is its part's largest and stays, the noise goes. A
+// vertex's part is the one most of its samples lie on: the noise vertex has
+// 3 of 4 samples in part 0.
+TEST(Pruning, SeparatePartsKeepTheirLargestPiece) {
+  MedialGraph graph;
+  const auto add = [&graph](const Vec3& centre, double radius, std::int32_t part, std::int32_t odd_part = -1) {
+    const auto first = std::int32_t(graph.samples.size());
+    graph.samples.push_back(centre - Vec3(radius, 0, 0));
+    graph.samples.push_back(centre + Vec3(radius, 0, 0));
+    graph.samples.push_back(centre + Vec3(0, radius, 0));
+    graph.samples.push_back(centre + Vec3(0, 0, radius));
+    for (int k = 0; k < 4; ++k) graph.sample_parts.push_back(k == 3 && odd_part >= 0 ? odd_part : part);
+    graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
+  };
+  for (int i = 0; i < 40; ++i) add(Vec3(i, 0, 0), 1.0, 0);
+  for (std::int32_t i = 0; i + 1 < 40; ++i) graph.edges.push_back({i, i + 1, {0, 1, 2}});
+  add(Vec3(140, 0, 0), 0.3, 1);
+  add(Vec3(20, 1.5, 0), 0.1, 0, 1);
+  MedialGraph one_part = graph;
+  one_part.sample_parts.clear();
+  EXPECT_EQ(prune_medial_graph(one_part, std::numbers::pi / 4).small_pieces_removed, 2u);
+  EXPECT_EQ(one_part.vertices.size(), 40u);
+  const PruningReport report = prune_medial_graph(graph, std::numbers::pi / 4);
+  EXPECT_EQ(report.small_pieces_removed, 1u);
+  ASSERT_EQ(graph.vertices.size(), 41u);
+  EXPECT_EQ(graph.vertices[40].centre, Vec3(140, 0, 0));
+}
+
+// The parts of a surface of two closed pieces (the unit tetrahedron and a
+// copy 10 to the side): every sample of the first is in part 0, of the
+// second in part 1; one piece alone has no parts (empty).
+TEST(MedialGraph, SamplesKnowTheirPart) {
+  const TriangleMesh one = read_mesh(std::string(SKELCONV_TEST_DATA) + "/reconstruct/tetrahedron.obj");
+  TriangleMesh two = one;
+  const auto n = std::int32_t(one.vertices.size());
+  for (const Vec3& v : one.vertices) two.vertices.push_back(v + Vec3(10, 0, 0));
+  for (auto t : one.triangles) {
+    for (auto& i : t) i += n;
+    two.triangles.push_back(t);
+  }
+  EXPECT_TRUE(medial_graph(one).sample_parts.empty());
+  const MedialGraph graph = medial_graph(two);
+  ASSERT_EQ(graph.sample_parts.size(), graph.samples.size());
+  for (std::size_t k = 0; k < graph.samples.size(); ++k)
+    EXPECT_EQ(graph.sample_parts[k], graph.samples[k].x() > 5 ? 1 : 0) << k;
+}
+
 // Flat faces sampled on a grid give Delaunay slivers, four samples within
 // rounding of a plane, whose circumcentre cannot be computed in double (CGAL
 // asserts on them where its assertions are on, and returns an infinite or

@@ -160,8 +160,30 @@ void for_each_pixel(const std::array<Vec3, 3>& s, int width, int height, Visit&&
   const int y0 = std::max(0, int(std::floor(std::min({s[0].y(), s[1].y(), s[2].y()}))));
   const int y1 = std::min(height - 1, int(std::ceil(std::max({s[0].y(), s[1].y(), s[2].y()}))));
   for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      const double px = x + 0.5, py = y + 0.5;
+    // The row's pixels inside the triangle, with a pixel to spare each
+    // side: each side's test is linear in x, zero at x = root; pixels more
+    // than a pixel beyond it fail that test by far more than its rounding,
+    // so skipping them changes no pixel (a long thin triangle's box is
+    // mostly empty: the silhouette of a CAD part's slivers). A side nearly
+    // along the row bounds nothing here.
+    const double py = y + 0.5;
+    int first = x0, last = x1;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& a = s[(k + 1) % 3];
+      const Vec3& b = s[(k + 2) % 3];
+      const double slope = b.y() - a.y();
+      if (!(std::abs(slope) > 1e-6)) continue;
+      const double root = a.x() + (b.x() - a.x()) * (py - a.y()) / slope;  // where the side crosses the row
+      if (!std::isfinite(root)) continue;
+      // w ≥ 0 on the side of the root where −slope / area ≥ 0.
+      if ((slope > 0) == (area > 0)) {
+        if (root + 1.5 < double(last)) last = std::max(first - 1, int(std::floor(root + 1.5)));
+      } else if (root - 1.5 > double(first)) {
+        first = std::min(last + 1, int(std::ceil(root - 1.5)));
+      }
+    }
+    for (int x = first; x <= last; ++x) {
+      const double px = x + 0.5;
       std::array<double, 3> w;
       for (int k = 0; k < 3; ++k) {
         const Vec3& a = s[(k + 1) % 3];

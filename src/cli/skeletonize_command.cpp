@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "count_option.hpp"
 #include "exit_status.hpp"
@@ -95,10 +96,11 @@ std::string repair_json(const reconstruct::InputRepair& repair, double seconds) 
   const std::string holes =
       s.repaired() ? fmt::format("{{\"non_manifold_edges\": {}, \"vertices_split\": {}, \"isolated_vertices_removed\": {}, "
                                  "\"boundary_edges\": {}, \"holes_filled\": {}, \"holes_not_faired\": {}, "
-                                 "\"triangles_added\": {}, \"vertices_added\": {}, \"largest_hole_area\": {:.4g}}}",
+                                 "\"triangles_added\": {}, \"vertices_added\": {}, \"largest_hole_area\": {:.4g}, "
+                                 "\"triangles_flipped\": {}}}",
                                  s.non_manifold_edges, s.vertices_split, s.isolated_vertices_removed, s.boundary_edges,
                                  s.holes_filled, s.holes_not_faired, s.triangles_added, s.vertices_added,
-                                 s.largest_hole_area)
+                                 s.largest_hole_area, s.triangles_flipped)
                    : "null";
   const std::string union_ =
       o.crossing_pairs > 0 ? fmt::format("{{\"crossing_pairs\": {}, \"action\": \"boolean_union\", "
@@ -114,11 +116,13 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
                         const std::string& input_repair) {
   std::string text = fmt::format("{{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
                                  "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, "
-                                 "\"input_repair\": {}, "
+                                 "\"input_repair\": {}, \"budget\": {}, \"curve_over_budget\": {}, "
                                  "\"input_euler_characteristic\": {}, \"input_components\": {}, \"medial_seconds\": {:.3g}, "
                                  "\"result\": \"{}\", \"stages\": [",
                                  r.samples, r.medial_vertices, r.pruning.vertices_removed,
                                  r.pruning.branches_removed, r.spurs_removed, r.tolerance, input_repair,
+                                 options.medial.budget,
+                                 r.curve_over_budget > 0 ? std::to_string(r.curve_over_budget) : std::string("null"),
                                  mesh_topology(input).euler_characteristic, mesh_topology(input).components,
                                  r.medial_seconds, r.stages.back().name);
   for (std::size_t k = 0; k < r.stages.size(); ++k)
@@ -158,7 +162,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "triangles, tubes as SCALIS segments)")
       ->check(CLI::IsMember({"auto", "curve", "medial"}));
   command->add_option("--budget", options.budget,
-                      "At most this many primitives in the medial mesh (default 500): fewer primitives, larger error")
+                      "At most this many primitives in the result of --method auto and medial (default 500): the medial mesh "
+                      "is simplified to it, and auto does not keep a curve skeleton of more (--method curve only "
+                      "says so); fewer primitives, larger error")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
   command->add_option("--medial-prune-angle", options.medial.prune_angle_degrees,
                       fmt::format("Pruning threshold θ in degrees of the medial path (default {})",
@@ -282,10 +288,14 @@ int run_skeletonize(const SkeletonizeOptions& options) {
         if (s.isolated_vertices_removed)
           done += fmt::format("{}removed {} vertices of no triangle", done.empty() ? "" : "; ",
                               s.isolated_vertices_removed);
-        ro.progress(fmt::format("the mesh is {}: {} ({:.3g} s, --repair)",
-                                s.non_manifold_edges ? (s.holes_filled ? "not manifold and open" : "not manifold")
-                                                     : "open",
-                                done, repair_seconds));
+        if (s.triangles_flipped)
+          done += fmt::format("{}turned its {} triangles round", done.empty() ? "" : "; ", s.triangles_flipped);
+        std::vector<std::string> problems;
+        if (s.non_manifold_edges) problems.emplace_back("not manifold");
+        if (s.holes_filled || (s.isolated_vertices_removed && !s.non_manifold_edges)) problems.emplace_back("open");
+        if (s.triangles_flipped) problems.emplace_back("inside out");
+        ro.progress(fmt::format("the mesh is {}: {} ({:.3g} s, --repair)", fmt::join(problems, " and "), done,
+                                repair_seconds));
       }
       if (const reconstruct::OverlapRepair& o = repair.overlaps; o.crossing_pairs > 0)
         ro.progress(fmt::format("the mesh intersects itself ({} crossing pairs): joined the overlapping parts "

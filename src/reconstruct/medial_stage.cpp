@@ -3,11 +3,13 @@
 // (docs/reconstruction_medial.md).
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <cstdlib>
-#include <map>
 #include <numbers>
 #include <optional>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -25,6 +27,15 @@
 
 namespace skelconv::reconstruct {
 namespace {
+
+/// A hash of a point's three coordinates' bits (boost's hash_combine).
+struct CentreHash {
+  std::size_t operator()(const std::array<std::uint64_t, 3>& key) const {
+    std::size_t h = 0;
+    for (const std::uint64_t k : key) h ^= std::hash<std::uint64_t>{}(k) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h;
+  }
+};
 
 std::size_t primitives(const MedialMesh& mesh) {
   return mesh.edges.size() + mesh.triangles.size() + mesh.isolated.size();
@@ -81,10 +92,14 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // One query per centre: each candidate asks the depth at the centres of
   // the two balls it merges, and the budget loop below reruns the
   // simplification from the same graph, which asks the same centres again.
+  // Hashed by the centre's bits (a large shape asks about hundreds of
+  // thousands of centres: CGAL's cheese 287k vertices; an ordered map's
+  // lookups were 8% of its medial path).
   const SurfaceQuery shape(surface);
-  std::map<std::array<double, 3>, double> depth_at;
+  std::unordered_map<std::array<std::uint64_t, 3>, double, CentreHash> depth_at;
   quadric.depth = [&shape, &depth_at](const Vec3& c) {
-    const std::array<double, 3> key{c.x(), c.y(), c.z()};
+    const std::array<std::uint64_t, 3> key{std::bit_cast<std::uint64_t>(c.x()), std::bit_cast<std::uint64_t>(c.y()),
+                                           std::bit_cast<std::uint64_t>(c.z())};
     if (const auto at = depth_at.find(key); at != depth_at.end()) return at->second;
     return depth_at.emplace(key, shape.signed_distance(c)).first->second;
   };

@@ -386,6 +386,25 @@ bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh) {
   return (c.open > 0 || c.non_manifold > 0) && c.inconsistent == 0;
 }
 
+namespace {
+
+/// Flips every triangle of a closed, consistently oriented `mesh` whose
+/// parts all enclose a negative volume (exported with the other winding
+/// convention), and returns how many it flipped; 0 for any other mesh. A
+/// mesh with some parts inward and some outward is left alone: an inward
+/// part may be a cavity, which check_closed_mesh names.
+std::size_t flip_if_inside_out(TriangleMesh& mesh) {
+  const auto triangles = proper_triangles(mesh);
+  const EdgeCounts edges = count_edges(triangles);
+  if (triangles.empty() || edges.open || edges.non_manifold || edges.inconsistent) return 0;
+  const std::vector<double> volumes = component_volumes(mesh, triangles);
+  if (!std::all_of(volumes.begin(), volumes.end(), [](double v) { return v < 0.0; })) return 0;
+  for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  return triangles.size();
+}
+
+}  // namespace
+
 void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_view repair_option) {
   const auto offer = [repair_option](const InputError& error, std::string_view repair_does) {
     return InputError(
@@ -394,8 +413,9 @@ void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_vie
   try {
     check_closed_mesh(mesh, false);
   } catch (const InputError& error) {
-    if (!has_holes_or_non_manifold_edges(mesh)) throw;
-    throw offer(error, "split non-manifold edges and fill holes");
+    if (has_holes_or_non_manifold_edges(mesh)) throw offer(error, "split non-manifold edges and fill holes");
+    if (TriangleMesh flipped = mesh; flip_if_inside_out(flipped) > 0) throw offer(error, "turn it round");
+    throw;
   }
   try {
     check_no_self_intersection(mesh);
@@ -414,7 +434,7 @@ InputRepair check_closed_mesh_repairing(TriangleMesh& mesh, double max_hole_area
   if (edges.open > 0 || edges.non_manifold > 0) {
     // A flipped triangle's edges would be split like non-manifold ones and
     // the holes left filled: the orientation is the user's to fix.
-    if (edges.inconsistent) throw InputError(inconsistent_problem(edges) + " (--repair does not flip triangles)");
+    if (edges.inconsistent) throw InputError(inconsistent_problem(edges) + " (--repair does not flip single triangles)");
     for (const auto& t : triangles)
       for (std::int32_t i : t)
         if (i < 0 || std::size_t(i) >= mesh.vertices.size())
@@ -474,6 +494,7 @@ InputRepair check_closed_mesh_repairing(TriangleMesh& mesh, double max_hole_area
             edges.non_manifold, example_edge(edges.first_non_manifold), s.vertices_split, found.pairs, found.first,
             found.second));
   }
+  repair.surface.triangles_flipped = flip_if_inside_out(mesh);
   repair.overlaps = check_closed_mesh_joining_overlaps(mesh);
   return repair;
 }

@@ -2,6 +2,7 @@
 #include "skelconv/reconstruct/pruning.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -32,6 +33,20 @@ std::size_t count_pieces(const std::vector<std::int32_t>& root) {
   std::size_t count = 0;
   for (std::size_t v = 0; v < root.size(); ++v) count += root[v] == std::int32_t(v);
   return count;
+}
+
+/// The surface part (MedialGraph::sample_parts) vertex `v`'s ball lies in:
+/// the part most of its four samples are on (the first such, in sample
+/// order, on a tie); 0 when the surface is one part.
+std::int32_t vertex_part(const MedialGraph& graph, std::size_t v) {
+  if (graph.sample_parts.empty()) return 0;
+  std::array<std::int32_t, 4> parts;
+  for (std::size_t k = 0; k < 4; ++k) parts[k] = graph.sample_parts[std::size_t(graph.vertices[v].samples[k])];
+  std::int32_t best = parts[0];
+  long most = 0;
+  for (std::int32_t p : parts)
+    if (const long c = std::count(parts.begin(), parts.end(), p); c > most) best = p, most = c;
+  return best;
 }
 
 /// Keeps the vertices with keep[v], renumbered in their order, and the edges
@@ -98,15 +113,20 @@ PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double mi
   std::vector<bool> removed(n);
   for (std::size_t v = 0; v < n; ++v) removed[v] = !keep[v];
   report.branches_removed = count_pieces(pieces(graph, removed));
-  // Islands: pieces of the kept graph much smaller than the largest.
+  // Islands: pieces of the kept graph much smaller than the largest in the
+  // same part of the surface. A separate part (one bone of a foot, a ball
+  // beside a body) has its own largest piece, however small the part is.
   const std::vector<std::int32_t> root = pieces(graph, keep);
   std::map<std::int32_t, std::size_t> size;
-  for (std::int32_t r : root) {
-    if (r >= 0) ++size[r];
+  std::map<std::int32_t, std::int32_t> part;  // piece -> the surface part of its first vertex
+  for (std::size_t v = 0; v < n; ++v) {
+    if (root[v] < 0) continue;
+    ++size[root[v]];
+    part.emplace(root[v], vertex_part(graph, v));
   }
-  std::size_t largest = 0;
-  for (const auto& [r, s] : size) largest = std::max(largest, s);
-  const auto small = [&](std::int32_t r) { return double(size[r]) < minimum_piece * double(largest); };
+  std::map<std::int32_t, std::size_t> largest;  // surface part -> its largest piece
+  for (const auto& [r, s] : size) largest[part[r]] = std::max(largest[part[r]], s);
+  const auto small = [&](std::int32_t r) { return double(size[r]) < minimum_piece * double(largest[part[r]]); };
   // Each small piece's deepest vertex, and the largest radius of the large pieces.
   std::map<std::int32_t, std::size_t> deepest;
   double large_radius = 0.0;

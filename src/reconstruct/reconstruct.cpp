@@ -183,9 +183,19 @@ std::vector<Vec4> balls_missed(const Stage& stage, const std::vector<Vec4>& ball
   return missed;
 }
 
+/// Whether `stage` holds more primitives than the budget (--budget), which
+/// bounds `auto`'s result whichever path it comes from.
+bool over_budget(const Stage& stage, const ReconstructOptions& o) {
+  return primitive_counts(stage, o).total() > o.medial.budget;
+}
+
 /// Ferley's curve path (reconstruct.hpp): the stages raw … fitted, or a
-/// ball when no branch is left or one fits better.
-void curve_stages(MedialGraph graph, const TriangleMesh& surface, const ReconstructOptions& o, Reconstruction& result,
+/// ball when no branch is left or one fits better. Returns whether its last
+/// stage is a result: for `auto`, the stages end at `smoothed`, unfitted,
+/// when that stage is already over the budget (result.curve_over_budget):
+/// the fit keeps every point, so the fitted stage would be too, and `auto`
+/// never returns a result over the budget.
+bool curve_stages(MedialGraph graph, const TriangleMesh& surface, const ReconstructOptions& o, Reconstruction& result,
                   Stopwatch& clock) {
   result.stages.push_back(branches_of(graph, o, "raw", nullptr));
   result.stages.back().seconds = clock.lap();
@@ -215,7 +225,7 @@ void curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
     say(o, fmt::format("no branch left: {} point primitive(s), the least-squares sphere of each part; the first at "
                        "({:.4g}, {:.4g}, {:.4g}), radius {:.4g}", result.stages.back().balls.size(), ball.x(), ball.y(),
                        ball.z(), ball.w()));
-    return;
+    return true;
   }
   result.tolerance = o.epsilon * skeleton_size(pruned);
   const double tolerance = result.tolerance;
@@ -233,6 +243,12 @@ void curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
   result.stages.back().seconds = clock.lap();
   say(o, fmt::format("simplified: {} points (3-D only: {}), smoothed: {} points", result.stages[2].points,
                      result.stages[3].points, result.stages[4].points));
+  if (o.method == SkeletonMethod::automatic && over_budget(result.stages.back(), o)) {
+    result.curve_over_budget = primitive_counts(result.stages.back(), o).total();
+    say(o, fmt::format("curve skeleton: {} primitives, more than the budget of {} (--budget): not fitted, the result "
+                       "is the medial mesh", result.curve_over_budget, o.medial.budget));
+    return false;
+  }
   result.stages.push_back(fitted_stage(result.stages[4], surface, o, &result.fit));
   result.stages.back().seconds = clock.lap();
   say(o, fmt::format("fitted: last round changed radii by {:.2g} (relative), end extensions by {:.2g}",
@@ -265,6 +281,7 @@ void curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
     result.stages.push_back(std::move(ball));
     result.stages.back().seconds = clock.lap();
   }
+  return true;
 }
 
 /// Whether the medial stage is better than the curve path's result: when
@@ -347,6 +364,8 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
   check_options(o);
   Reconstruction result;
   Stopwatch clock;
+  // Whether the curve path's last stage may be `auto`'s result.
+  bool curve_candidate = false;
   if (o.method != SkeletonMethod::medial) {
     MedialGraph graph = medial_graph(surface);
     result.samples = graph.samples.size();
@@ -355,18 +374,33 @@ Reconstruction reconstruct(const TriangleMesh& surface, const ReconstructOptions
     result.medial_seconds = clock.lap();
     say(o, fmt::format("medial graph: {} samples, {} inner Voronoi vertices, {} edges", result.samples,
                        result.medial_vertices, result.medial_edges));
-    curve_stages(std::move(graph), surface, o, result, clock);
-    if (o.method == SkeletonMethod::curve) return result;
-    if (curve_is_good_enough(result.stages.back(), surface, o)) return result;
+    curve_candidate = curve_stages(std::move(graph), surface, o, result, clock);
+    if (o.method == SkeletonMethod::curve) {
+      // --method curve asks for Ferley's path, whose size --epsilon sets:
+      // the budget bounds `auto` and the medial mesh, so it is only said.
+      if (over_budget(result.stages.back(), o))
+        say(o, fmt::format("the curve skeleton has {} primitives, more than the budget of {} (--budget bounds "
+                           "--method auto and medial only)", primitive_counts(result.stages.back(), o).total(),
+                           o.medial.budget));
+      return result;
+    }
+    if (curve_candidate && over_budget(result.stages.back(), o)) {
+      result.curve_over_budget = primitive_counts(result.stages.back(), o).total();
+      say(o, fmt::format("{}: {} primitives, more than the budget of {} (--budget): not a candidate, the result is "
+                         "the medial mesh", result.stages.back().name, result.curve_over_budget, o.medial.budget));
+      curve_candidate = false;
+    }
+    if (curve_candidate && curve_is_good_enough(result.stages.back(), surface, o)) return result;
   }
   Stage medial = medial_stage(surface, o, &result.medial_path);
   medial.seconds = clock.lap();
   if (primitive_counts(medial, o).total() == 0) {
     say(o, "medial mesh: pruning left no inner ball");
-    if (o.method == SkeletonMethod::medial) result.stages.push_back(ball_stage(surface));
+    // `auto` keeps the curve path's result when it may; otherwise a ball.
+    if (!curve_candidate) result.stages.push_back(ball_stage(surface));
     return result;
   }
-  if (o.method == SkeletonMethod::medial) {
+  if (!curve_candidate) {
     result.stages.push_back(std::move(medial));
     return result;
   }
@@ -486,6 +520,7 @@ std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) 
 
 }  // namespace skelconv::reconstruct
 
+#include "skelconv/field/support_box.hpp"
 #include "skelconv/mesh/mesh_iso_surface.hpp"
 
 namespace skelconv::reconstruct {
@@ -510,21 +545,45 @@ MeasureWork measure_work(const TriangleMesh& surface, const Stage& stage, const 
                          double size) {
   const auto [lo, hi] = bounding_box(surface);
   const double h = measure_size(lo, hi, size, options);
-  MeasureWork work;
-  work.primitives = primitive_counts(stage, options).total();
   // Nodes of the box at spacing h, one voxel of margin each side (the
   // mesher's box holds the whole surface with a margin; a narrow band
-  // evaluates fewer, so this is an upper estimate).
-  work.grid_nodes = 1.0;
-  for (int axis = 0; axis < 3; ++axis) work.grid_nodes *= std::floor((hi[axis] - lo[axis]) / h) + 3.0;
+  // evaluates fewer, so this is an upper estimate): node k of an axis is
+  // at lo − h + k h, k < n.
+  const Vec3 origin = lo - Vec3::Constant(h);
+  Eigen::Array3d n;
+  for (int axis = 0; axis < 3; ++axis) n[axis] = std::floor((hi[axis] - lo[axis]) / h) + 3.0;
+  MeasureWork work;
+  work.grid_nodes = n.prod();
+  // The mesher's field index visits a compact primitive only at the nodes
+  // inside its support box (field/support_box.hpp), and an
+  // infinite-support one (Cauchy) at every node. (A sum of fewer than
+  // Skeleton::min_indexed_children is not indexed: its few compact
+  // primitives cost every node, at most 7 grids, far under any budget.)
+  if (primitive_counts(stage, options).total() == 0) return work;
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
+  work.primitives = skeleton.primitives().size();
+  for (const Primitive& primitive : skeleton.primitives()) {
+    const std::optional<SupportBox> box = support_box(primitive);
+    if (!box) {
+      work.evaluations += work.grid_nodes;
+      continue;
+    }
+    double inside = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double first = std::max(0.0, std::ceil((box->lo[axis] - origin[axis]) / h));
+      const double last = std::min(n[axis] - 1.0, std::floor((box->hi[axis] - origin[axis]) / h));
+      inside *= std::max(0.0, last - first + 1.0);
+    }
+    work.evaluations += inside;
+  }
   return work;
 }
 
 std::string over_measure_budget(const MeasureWork& work, double budget) {
-  if (work.evaluations() <= budget) return {};
+  if (work.evaluations <= budget) return {};
   return fmt::format("not measured: meshing its {} primitives on a grid of about {:.3g} nodes would take about "
                      "{:.2g} primitive evaluations, more than the budget of {:.2g}",
-                     work.primitives, work.grid_nodes, work.evaluations(), budget);
+                     work.primitives, work.grid_nodes, work.evaluations, budget);
 }
 
 TriangleMesh mesh_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,

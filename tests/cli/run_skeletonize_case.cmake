@@ -8,8 +8,9 @@
 #   MAX_RMS=<r>           its RMS distance / diagonal is below r
 #   SAME_EULER=ON         its meshed surface has the input's Euler characteristic
 #   INPUT_EULER=<n>       the input's Euler characteristic (after any repair) is n
-#   REPAIRED=union|holes  the report's input_repair names the boolean union of
-#                         crossing triangles (union) or the holes filled (holes);
+#   REPAIRED=union|holes|flipped  the report's input_repair names the boolean
+#                         union of crossing triangles (union), the holes filled
+#                         (holes) or the triangles turned round (flipped);
 #                         without it, input_repair must be null
 #   ARGS=<options>        more options for skeletonize, separated by spaces (e.g. "--method curve")
 #   EXIT=<code>, STDERR=<substring>: a refused input; then neither <prefix>.json
@@ -101,8 +102,17 @@ elseif(REPAIRED STREQUAL "holes")
   if(NOT holes GREATER 0 OR NOT added GREATER 0)
     message(FATAL_ERROR "input_repair: ${holes} holes filled, +${added} triangles; expected > 0\n${run}")
   endif()
+elseif(REPAIRED STREQUAL "flipped")
+  if(NOT repair_type STREQUAL "OBJECT")
+    message(FATAL_ERROR "the report's input_repair is ${repair_type}, expected the repair\n${run}")
+  endif()
+  string(JSON flipped GET "${json}" input_repair holes triangles_flipped)
+  message(STATUS "input_repair: ${flipped} triangles turned round")
+  if(NOT flipped GREATER 0)
+    message(FATAL_ERROR "input_repair: ${flipped} triangles turned round; expected > 0\n${run}")
+  endif()
 elseif(DEFINED REPAIRED)
-  message(FATAL_ERROR "REPAIRED=${REPAIRED}: expected union or holes")
+  message(FATAL_ERROR "REPAIRED=${REPAIRED}: expected union, holes or flipped")
 elseif(NOT repair_type STREQUAL "NULL")
   message(FATAL_ERROR "the report's input_repair is ${repair_type}: the input was repaired\n${run}")
 endif()

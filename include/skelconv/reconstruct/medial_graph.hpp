@@ -58,6 +58,10 @@ struct MedialGraph {
   /// Voronoi faces: polygons of vertex indices in cyclic order (each
   /// consecutive pair, and the last with the first, joined by an edge).
   std::vector<std::vector<std::int32_t>> faces;
+  /// For each sample, the closed part of the surface it lies on (triangles
+  /// joined through shared vertices), numbered from 0 in the order of the
+  /// parts' first triangles; empty: the surface is one part.
+  std::vector<std::int32_t> sample_parts;
 };
 
 /// The inner Voronoi graph of the surface samples of `surface`

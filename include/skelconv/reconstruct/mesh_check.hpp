@@ -101,7 +101,7 @@ bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh);
 
 /// check_closed_mesh for a caller that offers check_closed_mesh_repairing as
 /// an option: where the problem is one the repair fixes (holes, edges of more
-/// than two triangles, crossing triangles), the message ends "(or pass
+/// than two triangles, an inside-out surface, crossing triangles), the message ends "(or pass
 /// OPTION to let skeletonize ...)", OPTION in the caller's spelling
 /// ("--repair" for the command, "repair=True" for Python).
 void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_view repair_option);
@@ -119,15 +119,16 @@ void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_vie
 /// union does, to rounding). Scanned and modelled meshes often overlap
 /// slightly where parts meet (a horn, a leg) or fold over themselves; the
 /// union is what the refusal asks the user to compute. Only crossings are
-/// repaired: an open, non-manifold, inverted or hollow mesh is refused as
+/// repaired: an open, non-manifold, inside-out or hollow mesh is refused as
 /// by check_closed_mesh, before any repair. Throws InputError when the
 /// union cannot be computed or is not a valid input (its new vertices are
 /// rounded to double; a piece on which another sheet lies has no whole
 /// winding number).
 OverlapRepair check_closed_mesh_joining_overlaps(TriangleMesh& mesh);
 
-/// What check_closed_mesh_repairing did to an open or non-manifold surface
-/// (all 0: it was closed and edge-manifold, and left as it was).
+/// What check_closed_mesh_repairing did to an open, non-manifold or
+/// inside-out surface (all 0: it was closed, edge-manifold and facing
+/// outwards, and left as it was).
 struct SurfaceRepair {
   std::size_t non_manifold_edges = 0;  ///< in the input: edges of more than two triangles
   std::size_t boundary_edges = 0;      ///< in the input, after splitting the non-manifold ones
@@ -141,7 +142,12 @@ struct SurfaceRepair {
   std::size_t triangles_added = 0;
   std::size_t vertices_added = 0;  ///< inside the patches
   double largest_hole_area = 0.0;  ///< the largest patch's area / the closed surface's area
-  bool repaired() const { return non_manifold_edges + boundary_edges + isolated_vertices_removed > 0; }
+  /// Triangles turned round because every part of the closed surface faced
+  /// inwards (an inside-out export); 0 otherwise.
+  std::size_t triangles_flipped = 0;
+  bool repaired() const {
+    return non_manifold_edges + boundary_edges + isolated_vertices_removed + triangles_flipped > 0;
+  }
 };
 
 /// What check_closed_mesh_repairing did: the surface closed, then overlaps joined.
@@ -171,7 +177,9 @@ inline constexpr double max_hole_area_fraction = 0.25;
 ///    that vertex again; copies at a split edge stay (vertices_split), and
 ///    if the split sheets cross, the mesh is refused (CGAL's union crashed
 ///    on distinct vertices at one position);
-/// 4. then crossings as check_closed_mesh_joining_overlaps (a patch, or
+/// 4. a closed surface whose every part faces inwards (negative enclosed
+///    volume: exported with the other winding convention) is turned round;
+/// 5. then crossings as check_closed_mesh_joining_overlaps (a patch, or
 ///    the input, can cross the surface), and every check again.
 /// Throws InputError for an inconsistent orientation (not repaired), when
 /// the split or the hole filling fails, and for a hole whose patch is more

@@ -18,8 +18,9 @@
 // once; the vertices that sampling creates near the surface (balls through
 // four close samples, θ small) are then removed wherever they are. Near the
 // axis of a tube of radius R, θ is close to 180°. Connected pieces left with
-// fewer than `minimum_piece` × the largest piece's vertices are removed too
-// (islands of noise). Reported: vertices removed by the angle, pieces
+// fewer than `minimum_piece` × the vertices of the largest piece in the same
+// closed part of the surface are removed too (islands of noise; a separate
+// part, one bone of a foot, is measured against its own largest piece). Reported: vertices removed by the angle, pieces
 // (branches) removed.
 #pragma once
 
@@ -66,8 +67,9 @@ double contact_span(const MedialGraph& graph, std::size_t v);
 
 /// Removes the vertices with θ < `threshold` (radians) or a contact span
 /// below `minimum_span` (length units; 0: no such test), then the pieces
-/// smaller than `minimum_piece` (in [0, 1]) × the largest but those that
-/// `lobes` keeps; renumbers.
+/// smaller than `minimum_piece` (in [0, 1]) × the largest in their part of
+/// the surface (MedialGraph::sample_parts; a vertex's part is the one most
+/// of its four samples lie on) but those that `lobes` keeps; renumbers.
 ///
 /// Why a span as well as the angle: θ is scale-free, so noise larger than
 /// the sample spacing (a folded surface) makes whole small-scale medial

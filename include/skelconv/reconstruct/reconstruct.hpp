@@ -261,6 +261,10 @@ struct Reconstruction {
   MedialPathReport medial_path;
   std::vector<Stage> stages;  ///< in the order above; the last is the result
   double tolerance = 0.0;     ///< ε × skeleton size, absolute
+  /// `auto` only: the curve path's primitives when they were more than the
+  /// budget (ReconstructOptions::medial.budget), so that its stage was no
+  /// candidate (and, counted before the fit, not fitted); 0 otherwise.
+  std::size_t curve_over_budget = 0;
 };
 
 /// Runs every step on `surface` (a closed mesh). Throws InputError for bad
@@ -280,18 +284,21 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& option
 /// (reconstruct() never returns one: it falls back to a ball).
 std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& options);
 
-/// What measuring a stage costs, estimated before meshing it. Every
-/// primitive of a stage (a Cauchy SCALIS segment, triangle or point) has
-/// infinite support, so each field evaluation visits all of them, and the
-/// grid mesher evaluates the field at up to every node of the input's
-/// bounding box at spacing `size`: the work is about primitives × nodes
-/// primitive evaluations. It grows with the stage, not with the input
-/// alone: the `raw` stage of noisy samples (every inner Voronoi vertex, no
-/// pruning) holds tens of thousands of segments.
+/// What measuring a stage costs, estimated before meshing it: the
+/// primitive evaluations of the grid mesher over the nodes of the input's
+/// bounding box at spacing `size`. The field's index visits a
+/// compact-support primitive (the medial mesh's) only at the nodes inside
+/// its support box, an infinite-support one (a Cauchy SCALIS segment of
+/// the curve path, a ball) at every node: the work is the sum over the
+/// primitives of the nodes each is evaluated at, an upper estimate (the
+/// mesher's continuation visits only the cells near the surface). It grows
+/// with the stage, not with the input alone: the `raw` stage of noisy
+/// samples (every inner Voronoi vertex, no pruning) holds tens of
+/// thousands of Cauchy segments.
 struct MeasureWork {
   std::size_t primitives = 0;
   double grid_nodes = 0.0;
-  double evaluations() const { return double(primitives) * grid_nodes; }
+  double evaluations = 0.0;  ///< Σ over the primitives of the nodes it is evaluated at
 };
 MeasureWork measure_work(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
                          double size = 0.0);
