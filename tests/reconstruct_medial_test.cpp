@@ -21,6 +21,7 @@
 #include "skelconv/reconstruct/medial_slope.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
+#include "src/reconstruct/tube_ends.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -138,6 +139,34 @@ TEST(QuadricMedialMesh, TubeBecomesAChainOnItsAxis) {
   // Shortest edges first: the five spheres spread over the 2 long axis.
   EXPECT_LT(low, 0.4);
   EXPECT_GT(high, 1.6);
+}
+
+// Inside the unit ball (depth 1 − |x|), three tube ends off a sphere B at
+// the centre. A (radius 0.6 at x = −0.3, depth 0.7) is a tube's: its
+// sphere beyond, one radius on, is at (−0.9, 0, 0), depth 0.1, and is
+// added. C (radius 0.2 at y = 0.92, depth 0.08, less than half its radius)
+// is a spike: its ball reaches out of the input, as the medial axis's
+// spikes towards the creases of a tessellation do; its sphere beyond would
+// be at (0, 1.12, 0), 0.12 outside, and goes back to the surface, (0, 1,
+// 0). D (radius 0.1 at 0.905 along the diagonal y = −x, depth 0.095) is a
+// tube's end with its cap a radius ahead: its sphere beyond, 0.005
+// outside, stays where it is.
+TEST(TubeEnds, ASpikesSphereBeyondGoesBackToTheInputsSurface) {
+  reconstruct::MedialMesh m;
+  const double s = std::sqrt(0.5);
+  m.spheres = {Vec4(-0.3, 0, 0, 0.6), Vec4(0, 0, 0, 0.6), Vec4(0, 0.92, 0, 0.2), Vec4(0.905 * s, -0.905 * s, 0, 0.1)};
+  m.edges = {{0, 1}, {1, 2}, {1, 3}};
+  const auto depth = [](const Vec3& x) { return 1.0 - x.norm(); };
+  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, depth), 1u);
+  ASSERT_EQ(m.spheres.size(), 7u);
+  ASSERT_EQ(m.edges.size(), 6u);
+  EXPECT_EQ(m.edges[3], (std::array<std::int32_t, 2>{0, 4}));
+  EXPECT_EQ(m.edges[4], (std::array<std::int32_t, 2>{2, 5}));
+  EXPECT_EQ(m.edges[5], (std::array<std::int32_t, 2>{3, 6}));
+  EXPECT_NEAR((m.spheres[4] - Vec4(-0.9, 0, 0, 0.6)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((m.spheres[5] - Vec4(0, 1, 0, 0.2)).norm(), 0.0, 1e-9);
+  EXPECT_GE(depth(m.spheres[5].head<3>()), 0.0);
+  EXPECT_NEAR((m.spheres[6] - Vec4(1.005 * s, -1.005 * s, 0, 0.1)).norm(), 0.0, 1e-15);
 }
 
 /// A ring of n balls of radius rho around the z axis at distance R: the

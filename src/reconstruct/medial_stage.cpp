@@ -23,6 +23,7 @@
 #include "skelconv/reconstruct/surface_query.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
 #include "thin_walls.hpp"
+#include "tube_ends.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -35,32 +36,6 @@ struct CentreHash {
     return h;
   }
 };
-
-/// Each tube end (a sphere on one edge and no triangle) gets one more
-/// sphere `factor` radii beyond it along the edge, at its radius: the
-/// pruned medial axis stops about a radius short of a cap, and a SCALIS
-/// segment's surface falls short of its radius near its end.
-void extend_tube_ends(MedialMesh& mesh, double factor) {
-  if (factor <= 0.0) return;
-  std::vector<int> edges(mesh.spheres.size(), 0);
-  std::vector<bool> on_sheet(mesh.spheres.size(), false);
-  for (const auto& e : mesh.edges) ++edges[std::size_t(e[0])], ++edges[std::size_t(e[1])];
-  for (const auto& t : mesh.triangles)
-    for (const std::int32_t i : t) on_sheet[std::size_t(i)] = true;
-  const std::size_t edge_count = mesh.edges.size();
-  for (std::size_t k = 0; k < edge_count; ++k) {
-    for (int side = 0; side < 2; ++side) {
-      const std::int32_t end = mesh.edges[k][std::size_t(side)], other = mesh.edges[k][std::size_t(1 - side)];
-      if (edges[std::size_t(end)] != 1 || on_sheet[std::size_t(end)]) continue;
-      const Vec4 tip = mesh.spheres[std::size_t(end)];
-      const Vec3 direction = tip.head<3>() - mesh.spheres[std::size_t(other)].head<3>();
-      if (!(direction.norm() > 0.0)) continue;
-      const Vec3 beyond = tip.head<3>() + factor * tip.w() * direction.normalized();
-      mesh.spheres.push_back(Vec4(beyond.x(), beyond.y(), beyond.z(), tip.w()));
-      mesh.edges.push_back({end, std::int32_t(mesh.spheres.size() - 1)});
-    }
-  }
-}
 
 std::size_t primitives(const MedialMesh& mesh) {
   return mesh.edges.size() + mesh.triangles.size() + mesh.isolated.size();
@@ -131,13 +106,13 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   quadric.overhang = m.merged_overhang * diagonal;
   QuadricReport q;
   MedialMesh mesh = quadric_medial_mesh(graph, quadric, &q);
-  extend_tube_ends(mesh, m.end_extension);
+  std::size_t spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, quadric.depth);
   // Each tube end got one more edge: simplified further where that
   // overruns the budget.
   while (primitives(mesh) > m.budget && quadric.budget > 1) {
     quadric.budget -= std::min(quadric.budget - 1, primitives(mesh) - m.budget);
     mesh = quadric_medial_mesh(graph, quadric, &q);
-    extend_tube_ends(mesh, m.end_extension);
+    spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, quadric.depth);
   }
   if (o.progress)
     o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} "
@@ -145,6 +120,9 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                            "Euler characteristic of the medial complex {} -> {}",
                            mesh.spheres.size(), mesh.triangles.size(), mesh.edges.size(), mesh.isolated.size(),
                            m.budget, q.collapses, q.refused_by_link, q.loops_closed, q.euler_before, q.euler_after));
+  if (o.progress && spikes > 0)
+    o.progress(fmt::format("medial mesh: {} spikes' spheres beyond their ends moved back to the input's surface",
+                           spikes));
   Stage stage;
   stage.name = "medial";
   // The fit's points on the input itself (one per cell, not the cell's

@@ -44,6 +44,10 @@ struct MedialOptions {
   /// A tube's free end is extended by one sphere this many radii beyond it
   /// (the medial axis stops short of a cap); 0 = none.
   double end_extension = 1.0;
+  /// A tube end whose centre is less deep than this × its radius is a
+  /// spike towards the surface, not a tube's end: its sphere beyond is
+  /// kept inside the input (docs/reconstruction_medial.md, "The medial mesh").
+  double end_spike_depth = 0.5;
   /// The primitives' kernel: compact, degree 4, this σ (docs/cli_skeleton.md:
   /// support σ × the radius). Compact, not Cauchy: the field's index then
   /// evaluates only the primitives near a point, and a medial mesh has

@@ -1,0 +1,36 @@
+// src/reconstruct/tube_ends.hpp — the medial mesh's tube ends extended by
+// one sphere (docs/reconstruction_medial.md, "The medial mesh", step 4).
+// Internal: the medial stage (medial_stage.cpp) is its one user.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+#include "skelconv/reconstruct/medial_mesh.hpp"
+
+namespace skelconv::detail {
+
+/// Each tube end (a sphere on one edge and no triangle) gets one more
+/// sphere `factor` radii beyond it along the edge, at its radius: the
+/// pruned medial axis stops about a radius short of a cap, and a SCALIS
+/// segment's surface falls short of its radius near its end.
+///
+/// But a spike: a tip whose centre is less than `spike_depth` × its radius
+/// deep (`depth`, the input's signed distance, negative outside) has a
+/// ball reaching that far out of the input, no ball of it but the end of a
+/// spike the medial axis sends towards a crease of the tessellation (Q-MAT
+/// merges such balls up to its overhang), with no cap beyond. Where its
+/// sphere beyond would be outside the input, it goes back along the edge
+/// to the input's surface: a segment out to it would stick out of the
+/// input as a spike of the reconstruction about one facet of the measuring
+/// mesh thick, which the fit's points, a few facets apart, do not see (CGAL's
+/// knot). It is moved, not dropped, so that the primitives are as many and
+/// the medial mesh the same. The ends of tubes, whose balls are about as
+/// deep as their radius, are extended as before, even where the sphere
+/// beyond is just outside (a cap a radius ahead). Returns how many spheres
+/// beyond were moved back (or left out, where none would be left of the
+/// segment, or the tip itself is outside).
+std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, double spike_depth,
+                             const std::function<double(const Vec3&)>& depth);
+
+}  // namespace skelconv::detail
