@@ -260,14 +260,56 @@ std::vector<Index> rim_path(const Complex& k, Index u, Index v) {
   return path;
 }
 
+/// The loop `polygon` (closed from its last vertex to its first) cut into
+/// triangles whose least round one is as round as can be (roundness: the
+/// area over the sum of the squared sides; dynamic programming over the
+/// polygon's diagonals, cubic in its length). A fan from one vertex, or
+/// greedy ears, along a straight stretch of rim give triangles of no area,
+/// which the skeleton file turns into edges, and the hole opens again.
+std::vector<Triangle> round_triangles(const Complex& k, const std::vector<Index>& polygon) {
+  const std::size_t n = polygon.size();
+  if (n < 3) return {};
+  const auto roundness = [&](std::size_t i, std::size_t j, std::size_t l) {
+    const Vec3 a = k.sphere[std::size_t(polygon[i])].head<3>(), b = k.sphere[std::size_t(polygon[j])].head<3>(),
+               c = k.sphere[std::size_t(polygon[l])].head<3>();
+    const double sides = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    return sides > 0.0 ? (b - a).cross(c - a).norm() / sides : 0.0;
+  };
+  // best[i][j]: the best least roundness of the polygon i, i + 1, …, j.
+  std::vector<std::vector<double>> best(n, std::vector<double>(n, std::numeric_limits<double>::infinity()));
+  std::vector<std::vector<std::size_t>> apex(n, std::vector<std::size_t>(n, 0));
+  for (std::size_t length = 2; length < n; ++length)
+    for (std::size_t i = 0; i + length < n; ++i) {
+      const std::size_t j = i + length;
+      best[i][j] = -1.0;
+      for (std::size_t l = i + 1; l < j; ++l) {
+        const double q = std::min({length == 2 || l == i + 1 ? std::numeric_limits<double>::infinity() : best[i][l],
+                                   l + 1 == j ? std::numeric_limits<double>::infinity() : best[l][j],
+                                   roundness(i, l, j)});
+        if (q > best[i][j]) best[i][j] = q, apex[i][j] = l;
+      }
+    }
+  std::vector<Triangle> triangles;
+  std::vector<std::pair<std::size_t, std::size_t>> pending{{0, n - 1}};
+  while (!pending.empty()) {
+    const auto [i, j] = pending.back();
+    pending.pop_back();
+    if (j < i + 2) continue;
+    const std::size_t l = apex[i][j];
+    triangles.push_back(sorted(polygon[i], polygon[l], polygon[j]));
+    pending.push_back({i, l}), pending.push_back({l, j});
+  }
+  return triangles;
+}
+
 /// Closes the sheet a tube edge bridges (QuadricOptions::inside_samples):
 /// an edge on no triangle between two spheres of sheets, which with the
 /// sheets' rim between its ends bounds a disc the input holds, is what is
 /// left of a sheet whose Voronoi faces were dropped (a wall thinner than
 /// the samples' spacing has Delaunay cells across it, whose circumcentres
 /// fall outside it), not a tube: each side of it, the loop of the edge and
-/// the shortest way back along the rim, is filled by a fan of triangles
-/// from one end, where the input holds every one of them. A loop through
+/// the shortest way back along the rim, is cut into triangles
+/// (round_triangles), added where the input holds every one of them. A loop through
 /// a tunnel of the input is never held. Returns the loops closed.
 std::size_t close_bridged_sheets(Complex& k, const QuadricOptions& o) {
   std::vector<std::array<Index, 2>> bridges;
@@ -281,8 +323,7 @@ std::size_t close_bridged_sheets(Complex& k, const QuadricOptions& o) {
     for (int side = 0; side < 2 && triangles_on(k, u, v) < 2; ++side) {
       const std::vector<Index> path = rim_path(k, u, v);
       if (path.size() < 3) break;
-      std::vector<Triangle> fan;
-      for (std::size_t i = 1; i + 1 < path.size(); ++i) fan.push_back(sorted(u, path[i], path[i + 1]));
+      const std::vector<Triangle> fan = round_triangles(k, path);
       bool held = true;
       for (const Triangle& t : fan)
         held = held && t[0] != t[1] && t[1] != t[2] && !k.triangles.count(t) && held_by_input(k, o, t);
