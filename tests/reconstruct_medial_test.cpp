@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <set>
 
@@ -110,6 +111,67 @@ TEST(QuadricMedialMesh, HoleInsideTheBallsIsClosed) {
   EXPECT_EQ(report.euler_before, 0);
   EXPECT_EQ(euler_characteristic(m), 1);
   EXPECT_GE(report.loops_closed, 1u);
+}
+
+/// The depth (positive inside) of a plate 1 × 1 × 2t, z = 0 its middle,
+/// with a square tunnel [a, b]² through it where `tunnel` (else solid).
+std::function<double(const Vec3&)> plate_depth(double t, bool tunnel, double a, double b) {
+  return [=](const Vec3& p) {
+    double d = std::min({t - std::abs(p.z()), p.x() + 0.025, 1.025 - p.x(), p.y() + 0.025, 1.025 - p.y()});
+    if (tunnel) d = std::min(d, std::max({a - p.x(), p.x() - b, a - p.y(), p.y() - b}));
+    return d;
+  };
+}
+
+TEST(QuadricMedialMesh, HoleWiderThanTheBallsIsClosedWhereTheInputHoldsIt) {
+  // The annulus of HoleWiderThanTheBallsIsNeverClosed, of a thin wall (balls
+  // of radius 0.02 round a 0.3 × 0.3 hole): a sheet whose Voronoi faces
+  // were dropped there. With the input's depth and inside_samples, the
+  // loops the hole shrinks to are closed where the plate is solid, never
+  // where it has a tunnel.
+  const MedialGraph g = quadric_sheet(21, 0.05, 0.02, 7, 13);
+  for (const bool tunnel : {false, true}) {
+    QuadricOptions o;
+    o.budget = 1;
+    o.depth = plate_depth(0.02, tunnel, 0.36, 0.64);
+    o.inside_samples = 4;
+    QuadricReport report;
+    const MedialMesh m = quadric_medial_mesh(g, o, &report);
+    EXPECT_EQ(euler_characteristic(m), tunnel ? 0 : 1) << (tunnel ? "the tunnel stays" : "a solid plate is a disc");
+    if (!tunnel) EXPECT_GT(report.loops_closed_inside, 0u);
+  }
+}
+
+TEST(QuadricMedialMesh, TubeEdgeAcrossASheetsHoleIsClosedWhereTheInputHoldsIt) {
+  // The same thin wall's sheet with a tube edge across its hole (a Voronoi
+  // edge whose faces were dropped with the hole's), not simplified: two
+  // loops (χ −1). The input holds both sides of the edge when the plate is
+  // solid (each side closed by a fan: a disc, χ 1), neither when the hole is
+  // a tunnel of the plate.
+  MedialGraph g = quadric_sheet(21, 0.05, 0.02, 7, 13);
+  const auto vertex_at = [&g](double x, double y) {
+    for (std::size_t k = 0; k < g.vertices.size(); ++k)
+      if ((g.vertices[k].centre - Vec3(x, y, 0)).norm() < 1e-9) return std::int32_t(k);
+    return std::int32_t(-1);
+  };
+  add_edge(g, vertex_at(0.35, 0.5), vertex_at(0.65, 0.5));
+  for (const bool tunnel : {false, true}) {
+    QuadricOptions o;
+    o.budget = 100000;
+    o.depth = plate_depth(0.02, tunnel, 0.36, 0.64);
+    o.inside_samples = 4;
+    QuadricReport report;
+    const MedialMesh m = quadric_medial_mesh(g, o, &report);
+    EXPECT_EQ(report.collapses, 0u);
+    EXPECT_EQ(report.bridges_closed, tunnel ? 0u : 2u);
+    EXPECT_EQ(euler_characteristic(m), tunnel ? -1 : 1) << m.triangles.size() << " triangles, " << m.edges.size()
+                                                        << " tube edges";
+  }
+  // Without inside_samples (the default) nothing is closed.
+  QuadricOptions o;
+  o.budget = 100000;
+  o.depth = plate_depth(0.02, false, 0, 0);
+  EXPECT_EQ(euler_characteristic(quadric_medial_mesh(g, o)), -1);
 }
 
 TEST(QuadricMedialMesh, TubeBecomesAChainOnItsAxis) {

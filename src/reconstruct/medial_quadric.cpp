@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <queue>
@@ -114,8 +115,12 @@ class Complex {
   /// the Voronoi faces had a sliver, not a tunnel of the shape), and a
   /// closed tetrahedron inside them (a cavity, which a solid has none of).
   /// Such loops are returned in `fill`: the collapse closes them.
-  bool link_condition(Index u, Index v, std::vector<Index>& fill) const {
+  /// `held(t)`: whether a loop not covered by its balls is closed all the
+  /// same (QuadricOptions::inside_samples); `inside` counts those in `fill`.
+  bool link_condition(Index u, Index v, std::vector<Index>& fill, std::size_t& inside,
+                      const std::function<bool(const std::array<Index, 3>&)>& held) const {
     fill.clear();
+    inside = 0;
     std::vector<Index> apexes;
     for (const Triangle& t : triangles_at[std::size_t(u)])
       if (std::find(t.begin(), t.end(), v) != t.end())
@@ -128,7 +133,10 @@ class Complex {
     std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
     for (const Index w : common) {
       if (std::binary_search(apexes.begin(), apexes.end(), w)) continue;
-      if (!covered({u, v, w})) return false;
+      if (!covered({u, v, w})) {
+        if (!held || !held({u, v, w})) return false;
+        ++inside;
+      }
       fill.push_back(w);
     }
     // A triangle (u, w, x) whose opposite edge also spans (v, w, x): the
@@ -198,6 +206,135 @@ Complex initial_complex(const MedialGraph& graph) {
   return k;
 }
 
+/// Whether the input holds the triangle t of `k`: `depth` positive at the
+/// points of a grid of `inside_samples` steps a side (its corners are
+/// centres of balls of the input already). A point inside one of the
+/// corners' balls needs no query.
+bool held_by_input(const Complex& k, const QuadricOptions& o, const std::array<Index, 3>& t) {
+  const int n = o.inside_samples;
+  const Vec4 &a = k.sphere[std::size_t(t[0])], &b = k.sphere[std::size_t(t[1])], &c = k.sphere[std::size_t(t[2])];
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const int l = n - i - j;
+      if (i == n || j == n || l == n) continue;  // a corner
+      const Vec3 p = (double(i) * a.head<3>() + double(j) * b.head<3>() + double(l) * c.head<3>()) / double(n);
+      bool in_ball = false;
+      for (const Vec4* s : {&a, &b, &c}) in_ball = in_ball || (p - s->head<3>()).norm() < s->w();
+      if (!in_ball && !(o.depth(p) > -o.inside_tolerance)) return false;
+    }
+  return true;
+}
+
+/// The triangles of `k` on the edge (u, v).
+std::size_t triangles_on(const Complex& k, Index u, Index v) {
+  std::size_t count = 0;
+  for (const Triangle& t : k.triangles_at[std::size_t(u)]) count += std::find(t.begin(), t.end(), v) != t.end();
+  return count;
+}
+
+/// The shortest way from u to v (Euclidean lengths between centres) along
+/// edges of `k` on at most one triangle, the edge (u, v) itself left out;
+/// u first, v last. Empty where there is none.
+std::vector<Index> rim_path(const Complex& k, Index u, Index v) {
+  std::map<Index, double> distance{{u, 0.0}};
+  std::map<Index, Index> previous;
+  std::priority_queue<std::pair<double, Index>, std::vector<std::pair<double, Index>>, std::greater<>> queue;
+  queue.push({0.0, u});
+  while (!queue.empty()) {
+    const auto [d, x] = queue.top();
+    queue.pop();
+    if (d > distance[x]) continue;
+    if (x == v) break;
+    for (const Index y : k.neighbours[std::size_t(x)]) {
+      if ((x == u && y == v) || triangles_on(k, x, y) > 1) continue;
+      const double through = d + (k.sphere[std::size_t(x)].head<3>() - k.sphere[std::size_t(y)].head<3>()).norm();
+      if (const auto at = distance.find(y); at != distance.end() && at->second <= through) continue;
+      distance[y] = through, previous[y] = x;
+      queue.push({through, y});
+    }
+  }
+  if (!previous.count(v)) return {};
+  std::vector<Index> path{v};
+  while (path.back() != u) path.push_back(previous[path.back()]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+/// The loop `polygon` (closed from its last vertex to its first) cut into
+/// triangles whose least round one is as round as can be (roundness: the
+/// area over the sum of the squared sides; dynamic programming over the
+/// polygon's diagonals, cubic in its length). A fan from one vertex, or
+/// greedy ears, along a straight stretch of rim give triangles of no area,
+/// which the skeleton file turns into edges, and the hole opens again.
+std::vector<Triangle> round_triangles(const Complex& k, const std::vector<Index>& polygon) {
+  const std::size_t n = polygon.size();
+  if (n < 3) return {};
+  const auto roundness = [&](std::size_t i, std::size_t j, std::size_t l) {
+    const Vec3 a = k.sphere[std::size_t(polygon[i])].head<3>(), b = k.sphere[std::size_t(polygon[j])].head<3>(),
+               c = k.sphere[std::size_t(polygon[l])].head<3>();
+    const double sides = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    return sides > 0.0 ? (b - a).cross(c - a).norm() / sides : 0.0;
+  };
+  // best[i][j]: the best least roundness of the polygon i, i + 1, …, j.
+  std::vector<std::vector<double>> best(n, std::vector<double>(n, std::numeric_limits<double>::infinity()));
+  std::vector<std::vector<std::size_t>> apex(n, std::vector<std::size_t>(n, 0));
+  for (std::size_t length = 2; length < n; ++length)
+    for (std::size_t i = 0; i + length < n; ++i) {
+      const std::size_t j = i + length;
+      best[i][j] = -1.0;
+      for (std::size_t l = i + 1; l < j; ++l) {
+        const double q = std::min({length == 2 || l == i + 1 ? std::numeric_limits<double>::infinity() : best[i][l],
+                                   l + 1 == j ? std::numeric_limits<double>::infinity() : best[l][j],
+                                   roundness(i, l, j)});
+        if (q > best[i][j]) best[i][j] = q, apex[i][j] = l;
+      }
+    }
+  std::vector<Triangle> triangles;
+  std::vector<std::pair<std::size_t, std::size_t>> pending{{0, n - 1}};
+  while (!pending.empty()) {
+    const auto [i, j] = pending.back();
+    pending.pop_back();
+    if (j < i + 2) continue;
+    const std::size_t l = apex[i][j];
+    triangles.push_back(sorted(polygon[i], polygon[l], polygon[j]));
+    pending.push_back({i, l}), pending.push_back({l, j});
+  }
+  return triangles;
+}
+
+/// Closes the sheet a tube edge bridges (QuadricOptions::inside_samples):
+/// an edge on no triangle between two spheres of sheets, which with the
+/// sheets' rim between its ends bounds a disc the input holds, is what is
+/// left of a sheet whose Voronoi faces were dropped (a wall thinner than
+/// the samples' spacing has Delaunay cells across it, whose circumcentres
+/// fall outside it), not a tube: each side of it, the loop of the edge and
+/// the shortest way back along the rim, is cut into triangles
+/// (round_triangles), added where the input holds every one of them. A loop through
+/// a tunnel of the input is never held. Returns the loops closed.
+std::size_t close_bridged_sheets(Complex& k, const QuadricOptions& o) {
+  std::vector<std::array<Index, 2>> bridges;
+  for (Index u = 0; u < Index(k.sphere.size()); ++u) {
+    if (!k.alive[std::size_t(u)] || k.triangles_at[std::size_t(u)].empty()) continue;
+    for (const Index v : k.neighbours[std::size_t(u)])
+      if (u < v && !k.triangles_at[std::size_t(v)].empty() && triangles_on(k, u, v) == 0) bridges.push_back({u, v});
+  }
+  std::size_t closed = 0;
+  for (const auto& [u, v] : bridges) {
+    for (int side = 0; side < 2 && triangles_on(k, u, v) < 2; ++side) {
+      const std::vector<Index> path = rim_path(k, u, v);
+      if (path.size() < 3) break;
+      const std::vector<Triangle> fan = round_triangles(k, path);
+      bool held = true;
+      for (const Triangle& t : fan)
+        held = held && t[0] != t[1] && t[1] != t[2] && !k.triangles.count(t) && held_by_input(k, o, t);
+      if (!held) break;
+      for (const Triangle& t : fan) k.add_triangle(t);
+      ++closed;
+    }
+  }
+  return closed;
+}
+
 struct Candidate {
   double cost = 0.0;
   Index u = 0, v = 0;
@@ -219,6 +356,9 @@ class Simplifier {
     std::size_t live = std::size_t(std::count(k_.alive.begin(), k_.alive.end(), true));
     std::size_t uncounted = 0;  // collapses before the primitives are counted again
     std::vector<Index> fill;
+    std::size_t inside = 0;
+    std::function<bool(const std::array<Index, 3>&)> held;
+    if (o_.depth && o_.inside_samples > 0) held = [this](const std::array<Index, 3>& t) { return held_by_input(k_, o_, t); };
     while (!queue_.empty()) {
       // Counting the primitives is linear in the complex: only near the
       // end, and no more often than needed (a collapse removes at most a
@@ -235,7 +375,7 @@ class Simplifier {
       if (!k_.alive[std::size_t(c.u)] || !k_.alive[std::size_t(c.v)] || k_.stamp[std::size_t(c.u)] != c.stamp_u ||
           k_.stamp[std::size_t(c.v)] != c.stamp_v || !k_.has_edge(c.u, c.v))
         continue;
-      if (!k_.link_condition(c.u, c.v, fill)) {
+      if (!k_.link_condition(c.u, c.v, fill, inside, held)) {
         ++report.refused_by_link;
         blocked_[c.u].push_back(c.v);
         blocked_[c.v].push_back(c.u);
@@ -245,6 +385,7 @@ class Simplifier {
       // with the edge: u–w and v–w become one edge.
       for (const Index w : fill) k_.add_triangle(sorted(c.u, c.v, w));
       report.loops_closed += fill.size();
+      report.loops_closed_inside += inside;
       collapse(c);
       ++report.collapses;
       --live;
@@ -429,6 +570,7 @@ MedialMesh quadric_medial_mesh(const MedialGraph& graph, const QuadricOptions& o
   if (!k.sphere.empty()) {
     Simplifier simplifier(k, o);
     simplifier.run(r);
+    if (o.depth && o.inside_samples > 0) r.bridges_closed = close_bridged_sheets(k, o);
   }
   r.euler_after = k.euler_characteristic();
   if (report != nullptr) *report = r;

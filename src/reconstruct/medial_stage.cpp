@@ -104,25 +104,39 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     return depth_at.emplace(key, shape.signed_distance(c)).first->second;
   };
   quadric.overhang = m.merged_overhang * diagonal;
-  QuadricReport q;
-  MedialMesh mesh = quadric_medial_mesh(graph, quadric, &q);
-  std::size_t spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, quadric.depth);
-  // Each tube end got one more edge: simplified further where that
-  // overruns the budget.
-  while (primitives(mesh) > m.budget && quadric.budget > 1) {
-    quadric.budget -= std::min(quadric.budget - 1, primitives(mesh) - m.budget);
-    mesh = quadric_medial_mesh(graph, quadric, &q);
-    spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, quadric.depth);
-  }
-  if (o.progress)
-    o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} "
-                           "primitives); {} collapses ({} refused by the link condition, {} covered loops closed), "
-                           "Euler characteristic of the medial complex {} -> {}",
-                           mesh.spheres.size(), mesh.triangles.size(), mesh.edges.size(), mesh.isolated.size(),
-                           m.budget, q.collapses, q.refused_by_link, q.loops_closed, q.euler_before, q.euler_after));
-  if (o.progress && spikes > 0)
-    o.progress(fmt::format("medial mesh: {} spikes' spheres beyond their ends moved back to the input's surface",
-                           spikes));
+  // The simplified medial mesh, its tube ends extended; `inside_samples`
+  // as QuadricOptions's.
+  const auto medial_mesh = [&](int inside_samples) {
+    QuadricOptions options = quadric;
+    options.inside_samples = inside_samples;
+    options.inside_tolerance = 0.5 * diagonal / o.measure_divisions;
+    QuadricReport q;
+    MedialMesh mesh = quadric_medial_mesh(graph, options, &q);
+    std::size_t spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, quadric.depth);
+    // Each tube end got one more edge: simplified further where that
+    // overruns the budget.
+    while (primitives(mesh) > m.budget && options.budget > 1) {
+      options.budget -= std::min(options.budget - 1, primitives(mesh) - m.budget);
+      mesh = quadric_medial_mesh(graph, options, &q);
+      spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, quadric.depth);
+    }
+    if (o.progress)
+      o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} "
+                             "primitives); {} collapses ({} refused by the link condition, {} covered loops closed{}), "
+                             "Euler characteristic of the medial complex {} -> {}",
+                             mesh.spheres.size(), mesh.triangles.size(), mesh.edges.size(), mesh.isolated.size(),
+                             m.budget, q.collapses, q.refused_by_link, q.loops_closed,
+                             inside_samples > 0 ? fmt::format(", {} of them inside the input, not the balls; {} bridged "
+                                                              "sheets closed",
+                                                              q.loops_closed_inside, q.bridges_closed)
+                                                : std::string(),
+                             q.euler_before, q.euler_after));
+    if (o.progress && spikes > 0)
+      o.progress(fmt::format("medial mesh: {} spikes' spheres beyond their ends moved back to the input's surface",
+                             spikes));
+    return mesh;
+  };
+  const MedialMesh mesh = medial_mesh(0);
   Stage stage;
   stage.name = "medial";
   // The fit's points on the input itself (one per cell, not the cell's
@@ -191,11 +205,60 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   }
   MedialFitOptions fit = m.fit;
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
-  if (!mesh.spheres.empty())
-    stage.medial = fit_medial_mesh(mesh, points, inside, field_of, fit, &r.fit, o.progress,
-                                   too_much.empty() ? topology_error : TopologyError{}, clearance);
-  for (auto& [spheres, surface_mesh] : meshed)
-    if (spheres == stage.medial.spheres) stage.meshed = std::move(surface_mesh);
+  const TopologyError guard = too_much.empty() ? topology_error : TopologyError{};
+  const auto fitted = [&](const MedialMesh& start, MedialFitReport* fit_report) {
+    Stage s;
+    s.name = "medial";
+    if (!start.spheres.empty())
+      s.medial = fit_medial_mesh(start, points, inside, field_of, fit, fit_report, o.progress, guard, clearance);
+    for (auto& [spheres, surface_mesh] : meshed)
+      if (spheres == s.medial.spheres) s.meshed = std::move(surface_mesh);
+    meshed.clear();
+    return s;
+  };
+  {
+    Stage first = fitted(mesh, &r.fit);
+    stage.medial = std::move(first.medial);
+    stage.meshed = std::move(first.meshed);
+  }
+  // A tunnel too many: a hole in a sheet of the medial mesh that the sum
+  // of fields leaves open, where the input has none (a wall thinner than
+  // the samples' spacing, or pruning, punched it). The medial mesh again,
+  // with every loop the input holds a disc across closed
+  // (QuadricOptions::inside_samples), fitted again; kept where its
+  // topology is closer to the input's. Only then: elsewhere the sum of
+  // fields covers such holes, and the result stays as it was.
+  const auto handles_doubled = [](const MeshTopology& t) {
+    return 2 * (long long)t.components - t.euler_characteristic;
+  };
+  if (guard && m.close_inside_samples > 0 && stage.meshed &&
+      handles_doubled(mesh_topology(*stage.meshed)) > handles_doubled(input_topology)) {
+    const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
+    if (o.progress)
+      o.progress(fmt::format("medial path: the result has more tunnels than the input (Euler characteristic {} "
+                             "against {}): the medial mesh again, its loops across the input closed",
+                             mesh_topology(*stage.meshed).euler_characteristic, input_topology.euler_characteristic));
+    MedialFitReport again_report;
+    Stage again = fitted(medial_mesh(m.close_inside_samples), &again_report);
+    if (!again.meshed && !again.medial.spheres.empty()) {
+      topology_error(again.medial);
+      again.meshed = std::move(meshed.back().second);
+      meshed.clear();
+    }
+    const long long after =
+        again.meshed ? topology_defects(input_topology, mesh_topology(*again.meshed)) : before;
+    if (o.progress)
+      o.progress(fmt::format("medial path: topology defects {} -> {}{}: {}", before, after,
+                             again.meshed ? fmt::format(" (Euler characteristic {})",
+                                                        mesh_topology(*again.meshed).euler_characteristic)
+                                          : std::string(),
+                             after < before ? "kept" : "not kept"));
+    if (after < before) {
+      stage.medial = std::move(again.medial);
+      stage.meshed = std::move(again.meshed);
+      r.fit = again_report;
+    }
+  }
   stage.points = r.spheres = stage.medial.spheres.size();
   if (report != nullptr) *report = r;
   return stage;

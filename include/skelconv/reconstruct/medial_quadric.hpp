@@ -42,6 +42,13 @@
 // neighbour and 1 across a sheet (a small term in the edge's length keeps
 // the spheres evenly spread where the error is zero). The collapses stop when the primitives
 // (triangles, edges in no triangle, spheres in no edge) fit the budget.
+//
+// Where asked (QuadricOptions::inside_samples, with the input's depth),
+// a loop the input holds a disc across is no tunnel of the shape and is
+// closed even where the balls do not cover it: a loop of three edges at a
+// collapse, and after the collapses each side of a tube edge that bridges
+// a hole between two spheres of sheets (the loop of the edge and the
+// shortest way back along the hole's rim, closed by a fan of triangles).
 #pragma once
 
 #include <cstddef>
@@ -83,6 +90,26 @@ struct QuadricOptions {
   /// remember its answers.
   std::function<double(const Vec3&)> depth;
   double overhang = 0.0;
+  /// With `depth`: a loop of three edges without its triangle is also
+  /// closed where the balls do not cover the triangle but the input holds
+  /// it (`depth` positive at `inside_samples` + 1 points along each side
+  /// and across it). Such a loop bounds a disc inside the shape, so it is
+  /// no tunnel of the shape; it is a hole that pruning or a wall thinner
+  /// than the samples' spacing punched into a sheet, wider than the balls
+  /// on its rim. After the collapses, each side of a tube edge between two
+  /// spheres of sheets is closed the same way (the header). Off (0) by
+  /// default: the sum of fields covers most such holes, and
+  /// medial_stage.cpp asks for it only where the reconstruction came back
+  /// with a tunnel too many.
+  int inside_samples = 0;
+  /// A point of such a triangle counts as held where its depth is above
+  /// minus this (absolute): a triangle spans its corners' centres, and
+  /// across a curved wall barely thicker than the balls its chord passes
+  /// the medial sheet by a little (CGAL's rotor: 2% of a ball's radius
+  /// outside). A tunnel narrower than twice this is not told from it;
+  /// medial_stage.cpp takes half a facet of the measuring mesh, below
+  /// what the measure resolves.
+  double inside_tolerance = 0.0;
 };
 
 struct QuadricReport {
@@ -90,6 +117,8 @@ struct QuadricReport {
   long long euler_before = 0, euler_after = 0;  ///< V − E + T of the complex
   std::size_t collapses = 0, refused_by_link = 0;
   std::size_t loops_closed = 0;  ///< covered loops the collapses closed (the header)
+  std::size_t loops_closed_inside = 0;  ///< of those, loops inside the input, not the balls (inside_samples)
+  std::size_t bridges_closed = 0;       ///< sheets closed across a tube edge after the collapses (inside_samples)
 };
 
 /// The medial mesh of `graph` (its faces included) simplified as described

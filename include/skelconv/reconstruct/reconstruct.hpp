@@ -110,6 +110,13 @@ struct MedialOptions {
   /// (Hausdorff), but the anchor from 2.65% to 3.22% and the hand from 1.91%
   /// to 1.97% (docs/reconstruction_medial.md, "What limits it").
   bool grow_within_input = false;
+  /// Where the fitted result has more tunnels than the input, the medial
+  /// mesh is simplified again with every loop of three edges closed whose
+  /// triangle the input holds (QuadricOptions::inside_samples: the input's
+  /// depth positive on a grid of this many steps a side), fitted again, and
+  /// kept if its topology is closer to the input's (medial_stage.cpp;
+  /// docs/reconstruction_medial.md, "Tunnels too many"). 0 turns it off.
+  int close_inside_samples = 4;
   MedialFitOptions fit;
 };
 
