@@ -206,10 +206,11 @@ Complex initial_complex(const MedialGraph& graph) {
   return k;
 }
 
-/// Whether the input holds the triangle t of `k`: `depth` positive at the
-/// points of a grid of `inside_samples` steps a side (its corners are
-/// centres of balls of the input already). A point inside one of the
-/// corners' balls needs no query.
+/// Whether the input holds the triangle t of `k`: `depth` above
+/// −`inside_tolerance` (half a facet of the measuring mesh: a thin wall's
+/// bridge may graze its surface) at the points of a grid of
+/// `inside_samples` steps a side (its corners are centres of balls of the
+/// input already). A point inside one of the corners' balls needs no query.
 bool held_by_input(const Complex& k, const QuadricOptions& o, const std::array<Index, 3>& t) {
   const int n = o.inside_samples;
   const Vec4 &a = k.sphere[std::size_t(t[0])], &b = k.sphere[std::size_t(t[1])], &c = k.sphere[std::size_t(t[2])];
