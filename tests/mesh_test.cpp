@@ -241,6 +241,54 @@ TEST(MeshTopologyDefects, EachComponentAndEachHandleCountsOne) {
   EXPECT_EQ(topology_defects(topology(1, 2), topology(4, 4)), 5);  // three pieces more, two handles
 }
 
+// Closed surfaces that touch themselves at a vertex, as a union of parts
+// meeting at a point is: tetrahedra joined at corners. Their closed solid
+// is one piece through each shared corner, so its topology is that of the
+// solid with a neck there, known by construction: two tetrahedra at one
+// corner are a ball (χ 2; V − E + F = 7 − 12 + 8 = 3); three in a ring, each
+// sharing one corner with the next, are a solid torus (χ 0; 9 − 18 + 12 = 3).
+TEST(MeshTopologyPinches, TheClosedSolidJoinsPartsThatTouchAtAVertex) {
+  // Tetrahedron (a, b, c, d) as four triangles, outward for a right-handed
+  // a, b, c, d; only the combinatorics count here.
+  const auto tetrahedron = [](TriangleMesh& m, std::int32_t a, std::int32_t b, std::int32_t c, std::int32_t d) {
+    m.triangles.push_back({a, c, b});
+    m.triangles.push_back({a, b, d});
+    m.triangles.push_back({b, c, d});
+    m.triangles.push_back({c, a, d});
+  };
+  TriangleMesh two;
+  for (int k = 0; k < 7; ++k) two.vertices.push_back(Vec3(k, k * k, k * k * k));
+  tetrahedron(two, 0, 1, 2, 3);
+  tetrahedron(two, 3, 4, 5, 6);
+  const MeshTopology t2 = mesh_topology(two);
+  EXPECT_EQ(t2.euler_characteristic, 3);
+  EXPECT_EQ(t2.components, 1u);
+  EXPECT_EQ(t2.pinches, 1u);
+  EXPECT_FALSE(t2.manifold);
+  EXPECT_EQ(solid_topology(t2).euler_characteristic, 2);
+  EXPECT_EQ(solid_topology(t2).components, 1u);
+
+  TriangleMesh ring;  // shared corners 0 (A, B), 1 (B, C), 2 (C, A)
+  for (int k = 0; k < 9; ++k) ring.vertices.push_back(Vec3(k, k * k, k * k * k));
+  tetrahedron(ring, 2, 0, 3, 4);
+  tetrahedron(ring, 0, 1, 5, 6);
+  tetrahedron(ring, 1, 2, 7, 8);
+  const MeshTopology t3 = mesh_topology(ring);
+  EXPECT_EQ(t3.euler_characteristic, 3);
+  EXPECT_EQ(t3.pinches, 3u);
+  EXPECT_EQ(solid_topology(t3).euler_characteristic, 0);
+  EXPECT_EQ(topology_defects(solid_topology(t3), MeshTopology{.components = 1, .euler_characteristic = 0}), 0);
+
+  // A manifold surface keeps its own numbers.
+  TriangleMesh one;
+  for (int k = 0; k < 4; ++k) one.vertices.push_back(Vec3(k, k * k, k * k * k));
+  tetrahedron(one, 0, 1, 2, 3);
+  const MeshTopology t1 = mesh_topology(one);
+  EXPECT_EQ(t1.pinches, 0u);
+  EXPECT_TRUE(t1.manifold);
+  EXPECT_EQ(solid_topology(t1).euler_characteristic, 2);
+}
+
 TEST(MeshSeeds, EvaluationErrorsSurfaceUnlessTheFieldIsInfiniteOnItsSkeleton) {
   ImplicitField field;
   // A ball of radius 1 (f = 2 − |p|², iso 1) whose evaluation fails on the

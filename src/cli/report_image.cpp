@@ -136,7 +136,7 @@ std::string report_image_png(const TriangleMesh& input, const reconstruct::Stage
   }
   const int top = title_height + panel_size;  // the footer goes below the second row
 
-  const MeshTopology in = mesh_topology(input);
+  const MeshTopology in = solid_topology(mesh_topology(input));
   const reconstruct::PrimitiveCounts n = reconstruct::primitive_counts(stage, options);
   const int title_y = (title_height - 7 * text_scale) / 2;
   centred_text(image, x[0], panel_size, title_y, fmt::format("input: distance to the result"));

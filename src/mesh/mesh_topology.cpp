@@ -52,10 +52,11 @@ std::vector<std::pair<Edge, std::size_t>> sorted_edge_uses(const TriangleMesh& m
   return uses;
 }
 
-/// True when the triangles around every vertex form one fan: the triangles
-/// at a vertex joined through the edges at that vertex they share.
-bool vertex_links_are_fans(const TriangleMesh& mesh, const std::vector<std::pair<Edge, std::size_t>>& uses) {
-  if (mesh.triangles.empty()) return true;
+/// Over the vertices, the fans of triangles about each beyond its first (0
+/// when the triangles around every vertex form one fan): the triangles at a
+/// vertex joined through the edges at that vertex they share.
+std::size_t extra_fans(const TriangleMesh& mesh, const std::vector<std::pair<Edge, std::size_t>>& uses) {
+  if (mesh.triangles.empty()) return 0;
   DisjointSets corners(3 * mesh.triangles.size());  // corner (t, k) = 3t + k
   const auto corner_of = [&](std::size_t t, std::int32_t v) {
     const auto& tri = mesh.triangles[t];
@@ -69,10 +70,11 @@ bool vertex_links_are_fans(const TriangleMesh& mesh, const std::vector<std::pair
     corners.join(corner_of(t, b), corner_of(u, b));
   }
   std::vector<std::size_t> fans_at(mesh.vertices.size(), 0);
+  std::size_t extra = 0;
   for (std::size_t c = 0; c < 3 * mesh.triangles.size(); ++c) {
-    if (corners.find(c) == c && ++fans_at[std::size_t(mesh.triangles[c / 3][c % 3])] > 1) return false;
+    if (corners.find(c) == c && ++fans_at[std::size_t(mesh.triangles[c / 3][c % 3])] > 1) ++extra;
   }
-  return true;
+  return extra;
 }
 
 }  // namespace
@@ -109,8 +111,15 @@ MeshTopology mesh_topology(const TriangleMesh& mesh) {
   topology.euler_characteristic =
       (long long)topology.vertices - (long long)topology.edges + (long long)topology.triangles;
   topology.closed = closed && !mesh.triangles.empty();
-  topology.manifold = at_most_two && !repeated_vertex && vertex_links_are_fans(mesh, uses);
+  topology.pinches = extra_fans(mesh, uses);
+  topology.manifold = at_most_two && !repeated_vertex && topology.pinches == 0;
   return topology;
+}
+
+MeshTopology solid_topology(const MeshTopology& t) {
+  MeshTopology solid = t;
+  solid.euler_characteristic -= (long long)t.pinches;
+  return solid;
 }
 
 long long topology_defects(const MeshTopology& reference, const MeshTopology& result) {

@@ -172,7 +172,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // count alone, a tunnel and a cavity opened together would cancel
   // (CGAL's camel: its hind legs fused and a hollow opened in its head,
   // which the fit's guard took for one defect, fewer than a detached hoof's).
-  const MeshTopology input_topology = mesh_topology(surface);
+  const MeshTopology input_topology = solid_topology(mesh_topology(surface));
   // Each surface it meshes is kept with its spheres (a few megabytes
   // each, at most 2 + log2(rounds) + topology_checks of them): where the
   // guard ran, the fit's result is one of them, and measuring the result

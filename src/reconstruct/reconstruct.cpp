@@ -310,7 +310,7 @@ bool choose_between(Stage& curve, Stage& medial, const TriangleMesh& surface, co
     };
     const bool curve_meshed = try_measure(curve), medial_meshed = try_measure(medial);
     if (!curve_meshed || !medial_meshed) return medial_meshed;
-    const MeshTopology input = mesh_topology(surface);
+    const MeshTopology input = solid_topology(mesh_topology(surface));
     const auto kept = [&input](const Stage& s) {
       return s.measured->euler_characteristic == input.euler_characteristic && s.measured->components == input.components;
     };
@@ -345,7 +345,7 @@ bool curve_is_good_enough(Stage& curve, const TriangleMesh& surface, const Recon
   } catch (const EvaluationError&) {
     return false;  // choose_between says why, after the medial path
   }
-  const MeshTopology input = mesh_topology(surface);
+  const MeshTopology input = solid_topology(mesh_topology(surface));
   const StageMeasure& m = *curve.measured;
   const double diagonal = m.distance.diagonal;
   const bool good = m.euler_characteristic == input.euler_characteristic && m.components == input.components &&

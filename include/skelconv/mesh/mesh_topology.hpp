@@ -26,9 +26,24 @@ struct MeshTopology {
   long long euler_characteristic = 0;
   bool closed = false;
   bool manifold = false;
+  /// Where the surface touches itself at a vertex: over the vertices, the
+  /// fans of triangles about each beyond its first (0 on a manifold).
+  std::size_t pinches = 0;
 };
 
 MeshTopology mesh_topology(const TriangleMesh& mesh);
+
+/// The topology of the closed solid a closed mesh bounds, as that of a
+/// closed surface: `t` where the mesh is manifold; where it touches itself
+/// at a vertex (two parts of a union that meet at a point, which
+/// --repair's union may leave), the solid is one piece through that point,
+/// and its boundary thickened there, k fans joined by one neck, has χ
+/// lower by k − 1 (the k − 1 vertices a split would add, less the 2(k − 1)
+/// the neck takes), the same components. V − E + F alone counts such a
+/// vertex once and gives an odd χ that no closed surface has; a sum of
+/// fields joins the parts there, so this is the topology a reconstruction
+/// is compared with.
+MeshTopology solid_topology(const MeshTopology& t);
 
 /// How many defects separate the topology of closed surfaces `result` from
 /// `reference`'s: each component too many or too few counts one, and each
