@@ -5,11 +5,13 @@
 // closedness, components and self-intersections, the Skeleton itself for
 // the distance of every vertex to the surface and for the normals.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -242,22 +244,25 @@ TEST(MeshTopologyDefects, EachComponentAndEachHandleCountsOne) {
 }
 
 // Closed surfaces that touch themselves at a vertex, as a union of parts
-// meeting at a point is: tetrahedra joined at corners. Their closed solid
-// is one piece through each shared corner, so its topology is that of the
-// solid with a neck there, known by construction: two tetrahedra at one
-// corner are a ball (χ 2; V − E + F = 7 − 12 + 8 = 3); three in a ring, each
-// sharing one corner with the next, are a solid torus (χ 0; 9 − 18 + 12 = 3).
-TEST(MeshTopologyPinches, TheClosedSolidJoinsPartsThatTouchAtAVertex) {
-  // Tetrahedron (a, b, c, d) as four triangles, outward for a right-handed
-  // a, b, c, d; only the combinatorics count here.
+// meeting at a point may: tetrahedra joined at corners. The readings are
+// known by construction: two tetrahedra at one corner (V − E + F = 7 − 12 +
+// 8 = 3) are one ball through it (χ 2) or two apart (χ 4); three in a ring,
+// each touching the next at a corner (9 − 18 + 12 = 3), a solid torus (χ 0)
+// with necks, a ball (χ 2) with one corner apart, and so on up to 6.
+TEST(MeshTopologyPinches, EitherReadingOfAVertexWhereTheSurfaceTouchesItselfKeepsIt) {
   const auto tetrahedron = [](TriangleMesh& m, std::int32_t a, std::int32_t b, std::int32_t c, std::int32_t d) {
     m.triangles.push_back({a, c, b});
     m.triangles.push_back({a, b, d});
     m.triangles.push_back({b, c, d});
     m.triangles.push_back({c, a, d});
   };
+  const auto surface = [](std::size_t components, long long euler) {
+    MeshTopology t;
+    t.components = components, t.euler_characteristic = euler;
+    return t;
+  };
   TriangleMesh two;
-  for (int k = 0; k < 7; ++k) two.vertices.push_back(Vec3(k, k * k, k * k * k));
+  two.vertices.resize(7, Vec3::Zero());
   tetrahedron(two, 0, 1, 2, 3);
   tetrahedron(two, 3, 4, 5, 6);
   const MeshTopology t2 = mesh_topology(two);
@@ -265,28 +270,33 @@ TEST(MeshTopologyPinches, TheClosedSolidJoinsPartsThatTouchAtAVertex) {
   EXPECT_EQ(t2.components, 1u);
   EXPECT_EQ(t2.pinches, 1u);
   EXPECT_FALSE(t2.manifold);
-  EXPECT_EQ(solid_topology(t2).euler_characteristic, 2);
-  EXPECT_EQ(solid_topology(t2).components, 1u);
+  EXPECT_TRUE(same_topology(t2, surface(1, 2)));      // joined by a neck
+  EXPECT_EQ(topology_defects(t2, surface(1, 4)), 0);  // apart: χ 4 (the component count aside)
+  EXPECT_EQ(topology_defects(t2, surface(1, 0)), 1);  // a handle neither reading has
+  EXPECT_EQ(topology_defects(t2, surface(1, 6)), 1);
 
-  TriangleMesh ring;  // shared corners 0 (A, B), 1 (B, C), 2 (C, A)
-  for (int k = 0; k < 9; ++k) ring.vertices.push_back(Vec3(k, k * k, k * k * k));
+  TriangleMesh ring;  // corners 0 (shared by A and B), 1 (B and C), 2 (C and A)
+  ring.vertices.resize(9, Vec3::Zero());
   tetrahedron(ring, 2, 0, 3, 4);
   tetrahedron(ring, 0, 1, 5, 6);
   tetrahedron(ring, 1, 2, 7, 8);
   const MeshTopology t3 = mesh_topology(ring);
   EXPECT_EQ(t3.euler_characteristic, 3);
   EXPECT_EQ(t3.pinches, 3u);
-  EXPECT_EQ(solid_topology(t3).euler_characteristic, 0);
-  EXPECT_EQ(topology_defects(solid_topology(t3), MeshTopology{.components = 1, .euler_characteristic = 0}), 0);
+  for (const long long euler : {0, 2, 4, 6}) EXPECT_TRUE(same_topology(t3, surface(1, euler))) << euler;
+  EXPECT_EQ(topology_defects(t3, surface(1, -2)), 1);
+  EXPECT_EQ(topology_defects(t3, surface(1, 8)), 1);
+  EXPECT_EQ(topology_defects(t3, surface(2, 2)), 1);
 
-  // A manifold surface keeps its own numbers.
+  // A manifold surface reads one way only.
   TriangleMesh one;
-  for (int k = 0; k < 4; ++k) one.vertices.push_back(Vec3(k, k * k, k * k * k));
+  one.vertices.resize(4, Vec3::Zero());
   tetrahedron(one, 0, 1, 2, 3);
   const MeshTopology t1 = mesh_topology(one);
   EXPECT_EQ(t1.pinches, 0u);
   EXPECT_TRUE(t1.manifold);
-  EXPECT_EQ(solid_topology(t1).euler_characteristic, 2);
+  EXPECT_TRUE(same_topology(t1, surface(1, 2)));
+  EXPECT_EQ(topology_defects(t1, surface(1, 0)), 1);
 }
 
 TEST(MeshSeeds, EvaluationErrorsSurfaceUnlessTheFieldIsInfiniteOnItsSkeleton) {

@@ -116,18 +116,22 @@ MeshTopology mesh_topology(const TriangleMesh& mesh) {
   return topology;
 }
 
-MeshTopology solid_topology(const MeshTopology& t) {
-  MeshTopology solid = t;
-  solid.euler_characteristic -= (long long)t.pinches;
-  return solid;
-}
-
 long long topology_defects(const MeshTopology& reference, const MeshTopology& result) {
   const auto doubled_handles = [](const MeshTopology& t) {
     return 2 * (long long)t.components - t.euler_characteristic;
   };
+  // The reference's readings: every pinch a neck (2·handles + pinches) down
+  // to every pinch split (2·handles − pinches), in steps of 2.
+  const long long pinches = (long long)reference.pinches, middle = doubled_handles(reference);
+  const long long wanted = doubled_handles(result);
+  long long nearest = std::clamp(wanted, middle - pinches, middle + pinches);
+  if ((nearest - middle - pinches) % 2 != 0) nearest += nearest < wanted ? 1 : -1;
   return std::llabs((long long)result.components - (long long)reference.components) +
-         std::llabs(doubled_handles(result) - doubled_handles(reference)) / 2;
+         std::llabs(wanted - nearest) / 2;
+}
+
+bool same_topology(const MeshTopology& reference, const MeshTopology& result) {
+  return topology_defects(reference, result) == 0;
 }
 
 }  // namespace skelconv

@@ -172,7 +172,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // count alone, a tunnel and a cavity opened together would cancel
   // (CGAL's camel: its hind legs fused and a hollow opened in its head,
   // which the fit's guard took for one defect, fewer than a detached hoof's).
-  const MeshTopology input_topology = solid_topology(mesh_topology(surface));
+  const MeshTopology input_topology = mesh_topology(surface);
   // Each surface it meshes is kept with its spheres (a few megabytes
   // each, at most 2 + log2(rounds) + topology_checks of them): where the
   // guard ran, the fit's result is one of them, and measuring the result
@@ -228,11 +228,14 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // (QuadricOptions::inside_samples), fitted again; kept where its
   // topology is closer to the input's. Only then: elsewhere the sum of
   // fields covers such holes, and the result stays as it was.
+  // (Where the input touches itself at a vertex, the most it may have:
+  // every such point read as a neck, topology_defects.)
   const auto handles_doubled = [](const MeshTopology& t) {
     return 2 * (long long)t.components - t.euler_characteristic;
   };
   if (guard && m.close_inside_samples > 0 && stage.meshed &&
-      handles_doubled(mesh_topology(*stage.meshed)) > handles_doubled(input_topology)) {
+      handles_doubled(mesh_topology(*stage.meshed)) >
+          handles_doubled(input_topology) + (long long)input_topology.pinches) {
     const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
     if (o.progress)
       o.progress(fmt::format("medial path: the result has more tunnels than the input (Euler characteristic {} "

@@ -33,17 +33,6 @@ struct MeshTopology {
 
 MeshTopology mesh_topology(const TriangleMesh& mesh);
 
-/// The topology of the closed solid a closed mesh bounds, as that of a
-/// closed surface: `t` where the mesh is manifold; where it touches itself
-/// at a vertex (two parts of a union that meet at a point, which
-/// --repair's union may leave), the solid is one piece through that point,
-/// and its boundary thickened there, k fans joined by one neck, has χ
-/// lower by k − 1 (the k − 1 vertices a split would add, less the 2(k − 1)
-/// the neck takes), the same components. V − E + F alone counts such a
-/// vertex once and gives an odd χ that no closed surface has; a sum of
-/// fields joins the parts there, so this is the topology a reconstruction
-/// is compared with.
-MeshTopology solid_topology(const MeshTopology& t);
 
 /// How many defects separate the topology of closed surfaces `result` from
 /// `reference`'s: each component too many or too few counts one, and each
@@ -51,6 +40,19 @@ MeshTopology solid_topology(const MeshTopology& t);
 /// the components (2·components − χ = 2 Σ g). A detached piece or a cavity
 /// (one more component of genus 0) is one defect, and an extra tunnel with
 /// a cavity is two: the difference in χ alone would let them cancel.
+///
+/// Where `reference` touches itself at vertices (`pinches`, as --repair's
+/// union of parts that meet at a point may), its V − E + F is odd for an odd
+/// count, as no closed surface's is, and each such point reads two ways: as
+/// a neck joining the fans (χ one lower for each fan beyond the first: the
+/// vertices a split adds, less the two a neck takes) or as the fans apart
+/// (the vertex split, χ one higher). Which one the solid means depends on
+/// whether its parts or the outside's meet there, and where crossing curves
+/// end the fans are slivers that do not say; a reconstruction of either
+/// reading is counted as keeping the topology, the nearest one taken.
 long long topology_defects(const MeshTopology& reference, const MeshTopology& result);
+
+/// True where topology_defects is 0.
+bool same_topology(const MeshTopology& reference, const MeshTopology& result);
 
 }  // namespace skelconv
