@@ -52,7 +52,8 @@ MeshTopology mesh_topology(const TriangleMesh& mesh);
 /// reading is counted as keeping the topology, the nearest one taken.
 long long topology_defects(const MeshTopology& reference, const MeshTopology& result);
 
-/// True where topology_defects is 0.
+/// True where `result` has `reference`'s components and the χ of one of its
+/// readings (for a manifold reference, its χ exactly).
 bool same_topology(const MeshTopology& reference, const MeshTopology& result);
 
 }  // namespace skelconv
