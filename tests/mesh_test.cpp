@@ -5,11 +5,13 @@
 // closedness, components and self-intersections, the Skeleton itself for
 // the distance of every vertex to the surface and for the normals.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -239,6 +241,62 @@ TEST(MeshTopologyDefects, EachComponentAndEachHandleCountsOne) {
   EXPECT_EQ(topology_defects(torus, topology(2, 0)), 2);
   EXPECT_EQ(topology_defects(torus, topology(1, 2)), 1);
   EXPECT_EQ(topology_defects(topology(1, 2), topology(4, 4)), 5);  // three pieces more, two handles
+}
+
+// Closed surfaces that touch themselves at a vertex, as a union of parts
+// meeting at a point may: tetrahedra joined at corners. The readings are
+// known by construction: two tetrahedra at one corner (V − E + F = 7 − 12 +
+// 8 = 3) are one ball through it (χ 2) or two apart (χ 4); three in a ring,
+// each touching the next at a corner (9 − 18 + 12 = 3), a solid torus (χ 0)
+// with necks, a ball (χ 2) with one corner apart, and so on up to 6.
+TEST(MeshTopologyPinches, EitherReadingOfAVertexWhereTheSurfaceTouchesItselfKeepsIt) {
+  const auto tetrahedron = [](TriangleMesh& m, std::int32_t a, std::int32_t b, std::int32_t c, std::int32_t d) {
+    m.triangles.push_back({a, c, b});
+    m.triangles.push_back({a, b, d});
+    m.triangles.push_back({b, c, d});
+    m.triangles.push_back({c, a, d});
+  };
+  const auto surface = [](std::size_t components, long long euler) {
+    MeshTopology t;
+    t.components = components, t.euler_characteristic = euler;
+    return t;
+  };
+  TriangleMesh two;
+  two.vertices.resize(7, Vec3::Zero());
+  tetrahedron(two, 0, 1, 2, 3);
+  tetrahedron(two, 3, 4, 5, 6);
+  const MeshTopology t2 = mesh_topology(two);
+  EXPECT_EQ(t2.euler_characteristic, 3);
+  EXPECT_EQ(t2.components, 1u);
+  EXPECT_EQ(t2.pinches, 1u);
+  EXPECT_FALSE(t2.manifold);
+  EXPECT_TRUE(same_topology(t2, surface(1, 2)));      // joined by a neck
+  EXPECT_EQ(topology_defects(t2, surface(1, 4)), 0);  // apart: χ 4 (the component count aside)
+  EXPECT_EQ(topology_defects(t2, surface(1, 0)), 1);  // a handle neither reading has
+  EXPECT_EQ(topology_defects(t2, surface(1, 6)), 1);
+
+  TriangleMesh ring;  // corners 0 (shared by A and B), 1 (B and C), 2 (C and A)
+  ring.vertices.resize(9, Vec3::Zero());
+  tetrahedron(ring, 2, 0, 3, 4);
+  tetrahedron(ring, 0, 1, 5, 6);
+  tetrahedron(ring, 1, 2, 7, 8);
+  const MeshTopology t3 = mesh_topology(ring);
+  EXPECT_EQ(t3.euler_characteristic, 3);
+  EXPECT_EQ(t3.pinches, 3u);
+  for (const long long euler : {0, 2, 4, 6}) EXPECT_TRUE(same_topology(t3, surface(1, euler))) << euler;
+  EXPECT_EQ(topology_defects(t3, surface(1, -2)), 1);
+  EXPECT_EQ(topology_defects(t3, surface(1, 8)), 1);
+  EXPECT_EQ(topology_defects(t3, surface(2, 2)), 1);
+
+  // A manifold surface reads one way only.
+  TriangleMesh one;
+  one.vertices.resize(4, Vec3::Zero());
+  tetrahedron(one, 0, 1, 2, 3);
+  const MeshTopology t1 = mesh_topology(one);
+  EXPECT_EQ(t1.pinches, 0u);
+  EXPECT_TRUE(t1.manifold);
+  EXPECT_TRUE(same_topology(t1, surface(1, 2)));
+  EXPECT_EQ(topology_defects(t1, surface(1, 0)), 1);
 }
 
 TEST(MeshSeeds, EvaluationErrorsSurfaceUnlessTheFieldIsInfiniteOnItsSkeleton) {

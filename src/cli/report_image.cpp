@@ -151,7 +151,8 @@ std::string report_image_png(const TriangleMesh& input, const reconstruct::Stage
                fmt::format("hausdorff {:.2f}%  rms {:.3f}%  of the diagonal", 100 * measure.distance.hausdorff / diagonal,
                            100 * measure.distance.rms / diagonal));
   centred_text(image, x[0], left_width, line2,
-               fmt::format("euler characteristic {} > {}, components {} > {}", in.euler_characteristic,
+               fmt::format("euler characteristic {}{} > {}, components {} > {}", in.euler_characteristic,
+                           in.pinches > 0 ? fmt::format(" ({} {})", in.pinches, in.pinches == 1 ? "pinch" : "pinches") : std::string(),
                            measure.euler_characteristic, in.components, measure.components));
   const int bar_left = x[2] + 20, bar_right = x[2] + panel_size - 20;
   for (int px = bar_left; px < bar_right; ++px)

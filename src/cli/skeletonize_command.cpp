@@ -114,16 +114,18 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
                         const reconstruct::ReconstructOptions& options,
                         const std::function<void(std::string_view)>& progress, bool result_only,
                         const std::string& input_repair) {
+  const MeshTopology input_topology = mesh_topology(input);
   std::string text = fmt::format("{{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
                                  "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, "
                                  "\"input_repair\": {}, \"budget\": {}, \"curve_over_budget\": {}, "
-                                 "\"input_euler_characteristic\": {}, \"input_components\": {}, \"medial_seconds\": {:.3g}, "
+                                 "\"input_euler_characteristic\": {}, \"input_components\": {}, \"input_pinches\": {}, "
+                                 "\"medial_seconds\": {:.3g}, "
                                  "\"result\": \"{}\", \"stages\": [",
                                  r.samples, r.medial_vertices, r.pruning.vertices_removed,
                                  r.pruning.branches_removed, r.spurs_removed, r.tolerance, input_repair,
                                  options.medial.budget,
                                  r.curve_over_budget > 0 ? std::to_string(r.curve_over_budget) : std::string("null"),
-                                 mesh_topology(input).euler_characteristic, mesh_topology(input).components,
+                                 input_topology.euler_characteristic, input_topology.components, input_topology.pinches,
                                  r.medial_seconds, r.stages.back().name);
   for (std::size_t k = 0; k < r.stages.size(); ++k)
     text += (k == 0 ? "\n  " : ",\n  ") +

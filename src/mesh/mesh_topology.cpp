@@ -52,10 +52,11 @@ std::vector<std::pair<Edge, std::size_t>> sorted_edge_uses(const TriangleMesh& m
   return uses;
 }
 
-/// True when the triangles around every vertex form one fan: the triangles
-/// at a vertex joined through the edges at that vertex they share.
-bool vertex_links_are_fans(const TriangleMesh& mesh, const std::vector<std::pair<Edge, std::size_t>>& uses) {
-  if (mesh.triangles.empty()) return true;
+/// Over the vertices, the fans of triangles about each beyond its first (0
+/// when the triangles around every vertex form one fan): the triangles at a
+/// vertex joined through the edges at that vertex they share.
+std::size_t extra_fans(const TriangleMesh& mesh, const std::vector<std::pair<Edge, std::size_t>>& uses) {
+  if (mesh.triangles.empty()) return 0;
   DisjointSets corners(3 * mesh.triangles.size());  // corner (t, k) = 3t + k
   const auto corner_of = [&](std::size_t t, std::int32_t v) {
     const auto& tri = mesh.triangles[t];
@@ -69,10 +70,11 @@ bool vertex_links_are_fans(const TriangleMesh& mesh, const std::vector<std::pair
     corners.join(corner_of(t, b), corner_of(u, b));
   }
   std::vector<std::size_t> fans_at(mesh.vertices.size(), 0);
+  std::size_t extra = 0;
   for (std::size_t c = 0; c < 3 * mesh.triangles.size(); ++c) {
-    if (corners.find(c) == c && ++fans_at[std::size_t(mesh.triangles[c / 3][c % 3])] > 1) return false;
+    if (corners.find(c) == c && ++fans_at[std::size_t(mesh.triangles[c / 3][c % 3])] > 1) ++extra;
   }
-  return true;
+  return extra;
 }
 
 }  // namespace
@@ -109,7 +111,8 @@ MeshTopology mesh_topology(const TriangleMesh& mesh) {
   topology.euler_characteristic =
       (long long)topology.vertices - (long long)topology.edges + (long long)topology.triangles;
   topology.closed = closed && !mesh.triangles.empty();
-  topology.manifold = at_most_two && !repeated_vertex && vertex_links_are_fans(mesh, uses);
+  topology.pinches = extra_fans(mesh, uses);
+  topology.manifold = at_most_two && !repeated_vertex && topology.pinches == 0;
   return topology;
 }
 
@@ -117,8 +120,21 @@ long long topology_defects(const MeshTopology& reference, const MeshTopology& re
   const auto doubled_handles = [](const MeshTopology& t) {
     return 2 * (long long)t.components - t.euler_characteristic;
   };
+  // The reference's readings: every pinch a neck (2·handles + pinches) down
+  // to every pinch split (2·handles − pinches), in steps of 2.
+  const long long pinches = (long long)reference.pinches, middle = doubled_handles(reference);
+  const long long wanted = doubled_handles(result);
+  long long nearest = std::clamp(wanted, middle - pinches, middle + pinches);
+  if ((nearest - middle - pinches) % 2 != 0) nearest += nearest < wanted ? 1 : -1;
   return std::llabs((long long)result.components - (long long)reference.components) +
-         std::llabs(doubled_handles(result) - doubled_handles(reference)) / 2;
+         std::llabs(wanted - nearest) / 2;
+}
+
+bool same_topology(const MeshTopology& reference, const MeshTopology& result) {
+  // Exactly one of the readings (an odd χ off by one is not one of them).
+  const long long pinches = (long long)reference.pinches;
+  const long long off = result.euler_characteristic - reference.euler_characteristic;
+  return result.components == reference.components && std::llabs(off) <= pinches && (off - pinches) % 2 == 0;
 }
 
 }  // namespace skelconv

@@ -228,11 +228,14 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // (QuadricOptions::inside_samples), fitted again; kept where its
   // topology is closer to the input's. Only then: elsewhere the sum of
   // fields covers such holes, and the result stays as it was.
+  // (Where the input touches itself at a vertex, the most it may have:
+  // every such point read as a neck, topology_defects.)
   const auto handles_doubled = [](const MeshTopology& t) {
     return 2 * (long long)t.components - t.euler_characteristic;
   };
   if (guard && m.close_inside_samples > 0 && stage.meshed &&
-      handles_doubled(mesh_topology(*stage.meshed)) > handles_doubled(input_topology)) {
+      handles_doubled(mesh_topology(*stage.meshed)) >
+          handles_doubled(input_topology) + (long long)input_topology.pinches) {
     const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
     if (o.progress)
       o.progress(fmt::format("medial path: the result has more tunnels than the input (Euler characteristic {} "

@@ -284,6 +284,14 @@ bool curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
   return true;
 }
 
+/// A measured surface's topology, to compare with the input's
+/// (same_topology).
+MeshTopology topology_of(const StageMeasure& m) {
+  MeshTopology t;
+  t.components = m.components, t.euler_characteristic = m.euler_characteristic;
+  return t;
+}
+
 /// Whether the medial stage is better than the curve path's result: when
 /// both can be meshed within the measuring budget, the one whose surface
 /// keeps the input's Euler characteristic and component count (a detached
@@ -311,9 +319,7 @@ bool choose_between(Stage& curve, Stage& medial, const TriangleMesh& surface, co
     const bool curve_meshed = try_measure(curve), medial_meshed = try_measure(medial);
     if (!curve_meshed || !medial_meshed) return medial_meshed;
     const MeshTopology input = mesh_topology(surface);
-    const auto kept = [&input](const Stage& s) {
-      return s.measured->euler_characteristic == input.euler_characteristic && s.measured->components == input.components;
-    };
+    const auto kept = [&input](const Stage& s) { return same_topology(input, topology_of(*s.measured)); };
     const bool c_kept = kept(curve), m_kept = kept(medial);
     const double c = curve.measured->distance.hausdorff, m = medial.measured->distance.hausdorff;
     // One ball is kept only where it is closer: a ball keeps a genus-0
@@ -348,7 +354,7 @@ bool curve_is_good_enough(Stage& curve, const TriangleMesh& surface, const Recon
   const MeshTopology input = mesh_topology(surface);
   const StageMeasure& m = *curve.measured;
   const double diagonal = m.distance.diagonal;
-  const bool good = m.euler_characteristic == input.euler_characteristic && m.components == input.components &&
+  const bool good = same_topology(input, topology_of(m)) &&
                     m.distance.hausdorff <= o.curve_accepted_hausdorff * diagonal &&
                     m.distance.rms <= o.curve_accepted_rms * diagonal;
   if (good)

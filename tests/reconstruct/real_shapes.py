@@ -70,7 +70,7 @@ SHORTFALLS = {
     "couplingdown.off": ["RMS"],
     "rotor.off": ["H", "RMS"],
     "triceratops.off": ["H"],
-    "cow.off": ["H", "χ"],
+    "cow.off": ["H"],
 }
 BEGIN, END = "<!-- real-shapes table: tests/reconstruct/real_shapes.py -->", "<!-- end of the real-shapes table -->"
 
@@ -91,6 +91,7 @@ def run(skelconv, mesh, work, options):
     stage = report["stages"][-1]
     return {"stage": stage["name"], "h": 100 * stage["hausdorff"], "rms": 100 * stage["rms"],
             "chi_in": report["input_euler_characteristic"], "chi_out": stage["euler_characteristic"],
+            "pinches": report["input_pinches"],
             "parts_in": report["input_components"], "parts_out": stage["components"],
             "primitives": sum(stage["primitives"].values()), "seconds": seconds}
 
@@ -102,7 +103,9 @@ def missed_goals(r, kind):
         missed.append(("H", f"H {r['h']:.2f} > {HAUSDORFF_GOAL[kind]}"))
     if r["rms"] > RMS_GOAL:
         missed.append(("RMS", f"RMS {r['rms']:.3f} > {RMS_GOAL}"))
-    if r["chi_out"] != r["chi_in"]:
+    # A vertex where the input touches itself reads as a neck (χ one lower)
+    # or as its fans apart (one higher): either keeps it (topology_defects).
+    if abs(r["chi_out"] - r["chi_in"]) > r["pinches"] or (r["chi_out"] - r["chi_in"] - r["pinches"]) % 2:
         missed.append(("χ", f"χ {r['chi_out']} ≠ {r['chi_in']}"))
     if r["parts_out"] != r["parts_in"]:
         missed.append(("components", f"{r['parts_out']} components ≠ {r['parts_in']}"))
@@ -117,7 +120,8 @@ def row(name, what, kind, r):
     if "refused" in r:
         return f"| {name} | {what} | refused: {r['refused']} | | | | | | | |", []
     missed = missed_goals(r, kind)
-    return (f"| {name} | {what} | {kind} | {r['chi_in']} → {r['chi_out']} | {r['parts_in']} → {r['parts_out']} | "
+    pinched = f" ({r['pinches']} pinch)" if r["pinches"] else ""
+    return (f"| {name} | {what} | {kind} | {r['chi_in']}{pinched} → {r['chi_out']} | {r['parts_in']} → {r['parts_out']} | "
             f"{r['h']:.2f} / {r['rms']:.3f} | {r['primitives']} {r['stage']} | "
             f"{'yes' if not missed else 'no: ' + ', '.join(text for _, text in missed)} | {r['seconds']:.0f} |"), missed
 
