@@ -219,7 +219,7 @@ TEST(TubeEnds, ASpikesSphereBeyondGoesBackToTheInputsSurface) {
   m.spheres = {Vec4(-0.3, 0, 0, 0.6), Vec4(0, 0, 0, 0.6), Vec4(0, 0.92, 0, 0.2), Vec4(0.905 * s, -0.905 * s, 0, 0.1)};
   m.edges = {{0, 1}, {1, 2}, {1, 3}};
   const auto depth = [](const Vec3& x) { return 1.0 - x.norm(); };
-  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, depth), 1u);
+  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 0.0, depth), 1u);
   ASSERT_EQ(m.spheres.size(), 7u);
   ASSERT_EQ(m.edges.size(), 6u);
   EXPECT_EQ(m.edges[3], (std::array<std::int32_t, 2>{0, 4}));
@@ -229,6 +229,56 @@ TEST(TubeEnds, ASpikesSphereBeyondGoesBackToTheInputsSurface) {
   EXPECT_NEAR((m.spheres[5] - Vec4(0, 1, 0, 0.2)).norm(), 0.0, 1e-9);
   EXPECT_GE(depth(m.spheres[5].head<3>()), 0.0);
   EXPECT_NEAR((m.spheres[6] - Vec4(1.005 * s, -1.005 * s, 0, 0.1)).norm(), 0.0, 1e-15);
+}
+
+// A horn: a cone along x, apex at x = 1, half-angle asin 0.12 (signed
+// distance (1 − x)·0.12 − |y, z|·cos, cut at x = −1). An edge from the
+// origin (0.12 deep, deeper than its radius 0.1: a body's end) to the tip
+// A at x = 0.5 (0.06 deep, shallower than its radius, not a spike's). One
+// radius beyond A the horn goes on to x = 1, five times as far: A's
+// sphere beyond goes to the apex; the origin's stays one radius on.
+TEST(TubeEnds, ATaperingTipsSphereBeyondGoesToWhereTheInputEnds) {
+  const double sin_a = 0.12, cos_a = std::sqrt(1 - sin_a * sin_a);
+  const auto horn = [&](const Vec3& p) {
+    return std::min((1.0 - p.x()) * sin_a - std::hypot(p.y(), p.z()) * cos_a, p.x() + 1.0);
+  };
+  reconstruct::MedialMesh m;
+  m.spheres = {Vec4(0, 0, 0, 0.1), Vec4(0.5, 0, 0, 0.1)};
+  m.edges = {{0, 1}};
+  // The edge's other end, the origin, is 0.12 deep: deeper than its
+  // radius, so it is a body's end and keeps one radius on (x = −0.1).
+  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 2.0, horn), 0u);
+  ASSERT_EQ(m.spheres.size(), 4u);
+  EXPECT_NEAR((m.spheres[2] - Vec4(-0.1, 0, 0, 0.1)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((m.spheres[3] - Vec4(1.0, 0, 0, 0.1)).norm(), 0.0, 1e-9);
+  EXPECT_GE(horn(m.spheres[3].head<3>()), 0.0);
+  // Off: one radius on.
+  reconstruct::MedialMesh off;
+  off.spheres = {Vec4(0, 0, 0, 0.1), Vec4(0.5, 0, 0, 0.1)};
+  off.edges = {{0, 1}};
+  detail::extend_tube_ends(off, 1.0, 0.5, 0.0, horn);
+  EXPECT_NEAR((off.spheres[3] - Vec4(0.6, 0, 0, 0.1)).norm(), 0.0, 1e-15);
+  // A body beyond: the cone turned round (apex at x = −1, widening past
+  // the tip). The tip at 0.5, radius 0.2, is 0.18 deep, but the input is
+  // deeper than 0.2 a quarter radius past its sphere beyond: one radius on.
+  const auto body = [&](const Vec3& p) { return (p.x() + 1.0) * sin_a - std::hypot(p.y(), p.z()) * cos_a; };
+  reconstruct::MedialMesh b;
+  b.spheres = {Vec4(0, 0, 0, 0.2), Vec4(0.5, 0, 0, 0.2)};
+  b.edges = {{0, 1}};
+  detail::extend_tube_ends(b, 1.0, 0.5, 2.0, body);
+  EXPECT_NEAR((b.spheres[3] - Vec4(0.7, 0, 0, 0.2)).norm(), 0.0, 1e-15);
+  // A tube going on at its depth to a round cap (a capsule of radius 0.1
+  // from x = −1 to 1): the tip 0.02 off its axis at x = 0 is 0.08 deep,
+  // shallower than its radius 0.1, and the input goes on to x ≈ 1.1, but
+  // loses its depth over the cap's 0.1: one radius on.
+  const auto capsule = [](const Vec3& p) {
+    return 0.1 - std::hypot(std::max(std::abs(p.x()) - 1.0, 0.0), std::hypot(p.y(), p.z()));
+  };
+  reconstruct::MedialMesh c;
+  c.spheres = {Vec4(-0.5, 0.02, 0, 0.1), Vec4(0, 0.02, 0, 0.1)};
+  c.edges = {{0, 1}};
+  detail::extend_tube_ends(c, 1.0, 0.5, 2.0, capsule);
+  EXPECT_NEAR((c.spheres[3] - Vec4(0.1, 0.02, 0, 0.1)).norm(), 0.0, 1e-15);
 }
 
 /// A ring of n balls of radius rho around the z axis at distance R: the

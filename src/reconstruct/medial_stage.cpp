@@ -112,13 +112,13 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     options.inside_tolerance = 0.5 * diagonal / o.measure_divisions;
     QuadricReport q;
     MedialMesh mesh = quadric_medial_mesh(graph, options, &q);
-    std::size_t spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, quadric.depth);
+    std::size_t spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
     // Each tube end got one more edge: simplified further where that
     // overruns the budget.
     while (primitives(mesh) > m.budget && options.budget > 1) {
       options.budget -= std::min(options.budget - 1, primitives(mesh) - m.budget);
       mesh = quadric_medial_mesh(graph, options, &q);
-      spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, quadric.depth);
+      spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
     }
     if (o.progress)
       o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} "

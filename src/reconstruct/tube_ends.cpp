@@ -2,10 +2,69 @@
 #include "tube_ends.hpp"
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace skelconv::detail {
 
-std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, double spike_depth,
+namespace {
+
+/// How far along `u` from the tip the input reaches where it tapers on as
+/// a horn does beyond `length` (the sphere beyond), or `length` itself
+/// where it does not. The way is walked in steps of a quarter radius until
+/// it leaves the input (then bisected). It is a taper if
+/// - it left more than `reach` × `length` from the tip;
+/// - it was nowhere deeper than the tip's radius (deeper, the tube ran
+///   into a body);
+/// - its last nine tenths of depth were lost gently, over at least three
+///   times that depth: a horn's tip (a cone of half-angle under 17°).
+///   A tube that goes on at its depth and ends in a cap loses its depth
+///   over about its depth (a round cap) or less;
+/// - it kept to the middle of something thin: at each point at least a
+///   quarter as deep as the tip, the input ends (give or take a tenth of
+///   the radius) within twice its depth and half the tip's radius
+///   sideways, in four directions across the way. Twice: a horn may be
+///   flat; a quarter: a curved horn's last quarter leaves the straight
+///   way. A way that runs at a slant across a thick tube towards its wall
+///   loses its depth gently too, but has the tube's body on one side.
+double tapering_reach(const reconstruct::Vec4& tip, const Vec3& u, double length, double reach,
+                      const std::function<double(const Vec3&)>& depth) {
+  const double step = 0.25 * tip.w(), farthest = reach * length + 64 * step;
+  std::vector<std::pair<double, double>> way{{0.0, depth(tip.head<3>())}};  // (distance, depth)
+  const Vec3 side = u.unitOrthogonal(), other_side = u.cross(side);
+  double inside = length, outside = -1.0;
+  for (double t = length + step; t <= farthest; t += step) {
+    const double d = depth(tip.head<3>() + t * u);
+    if (d > tip.w()) return length;
+    if (d < 0.0) {
+      outside = t;
+      break;
+    }
+    const Vec3 p = tip.head<3>() + t * u;
+    const double across = 2.0 * d + 0.5 * tip.w();
+    if (d >= 0.25 * way.front().second)
+      for (const Vec3& v : {side, Vec3(-side), other_side, Vec3(-other_side)})
+        if (depth(p + across * v) > 0.1 * tip.w()) return length;
+    way.emplace_back(t, d);
+    inside = t;
+  }
+  if (outside < 0.0) return length;  // no exit: not a tip
+  for (int k = 0; k < 40; ++k) {
+    const double middle = 0.5 * (inside + outside);
+    (depth(tip.head<3>() + middle * u) >= 0.0 ? inside : outside) = middle;
+  }
+  if (inside <= reach * length) return length;
+  double deepest = 0.0;
+  for (const auto& [t, d] : way) deepest = std::max(deepest, d);
+  double last_deep = 0.0;  // the last point of the way still 0.9 × the deepest deep
+  for (const auto& [t, d] : way)
+    if (d >= 0.9 * deepest) last_deep = t;
+  return inside - last_deep >= 3.0 * 0.9 * deepest ? inside : length;
+}
+
+}  // namespace
+
+std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, double spike_depth, double taper_reach,
                              const std::function<double(const Vec3&)>& depth) {
   if (factor <= 0.0) return 0;
   std::vector<int> edges(mesh.spheres.size(), 0);
@@ -43,6 +102,8 @@ std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, doubl
         const Vec3 beyond = tip.head<3>() + length * u;
         if (length <= 1e-6 * std::max(tip.head<3>().cwiseAbs().maxCoeff(), beyond.cwiseAbs().maxCoeff())) continue;
       }
+      else if (taper_reach > 0.0 && tip_depth < tip.w())
+        length = std::max(length, tapering_reach(tip, u, length, taper_reach, depth));
       const Vec3 beyond = tip.head<3>() + length * u;
       mesh.spheres.push_back(reconstruct::Vec4(beyond.x(), beyond.y(), beyond.z(), tip.w()));
       mesh.edges.push_back({end, std::int32_t(mesh.spheres.size() - 1)});

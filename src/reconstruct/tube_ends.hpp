@@ -30,7 +30,15 @@ namespace skelconv::detail {
 /// beyond is just outside (a cap a radius ahead). Returns how many spheres
 /// beyond were moved back (or left out, where none would be left of the
 /// segment, or the tip itself is outside).
-std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, double spike_depth,
+///
+/// And a tapering tip: where a tube end is shallower than its radius and
+/// the input goes on along the edge more than `taper_reach` times as far
+/// as the sphere beyond, its depth falling gently to 0 on the way (a horn's
+/// tip: the medial axis was pruned where it grew thinner than the samples'
+/// spacing), the sphere beyond goes to where the input
+/// ends along the edge instead, so that the segment reaches into the tip.
+/// 0 turns it off.
+std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, double spike_depth, double taper_reach,
                              const std::function<double(const Vec3&)>& depth);
 
 }  // namespace skelconv::detail

@@ -48,6 +48,10 @@ struct MedialOptions {
   /// spike towards the surface, not a tube's end: its sphere beyond is
   /// kept inside the input (docs/reconstruction_medial.md, "The medial mesh").
   double end_spike_depth = 0.5;
+  /// A tube end shallower than its radius whose input tapers on along the
+  /// edge more than this × as far as its sphere beyond (a horn's tip) gets
+  /// its sphere beyond where the input ends instead; 0 = never.
+  double end_taper_reach = 2.0;
   /// The primitives' kernel: compact, degree 4, this σ (docs/cli_skeleton.md:
   /// support σ × the radius). Compact, not Cauchy: the field's index then
   /// evaluates only the primitives near a point, and a medial mesh has
