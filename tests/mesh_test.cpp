@@ -386,6 +386,43 @@ TEST(MeshGrid, SamplingFromTheSeedsGivesTheDenseSamplingsMesh) {
   }
 }
 
+TEST(MeshGrid, UnprojectedMeshHasTheProjectedMeshsTopologyAndProjectsToIt) {
+  // MeshOptions::project = false (the medial fit's topology guard): the
+  // vertices are left where the grid put them and the triangles are the
+  // projected mesh's, so the topology is the table's (the Euler
+  // characteristic per component of a tube around each skeleton, not
+  // taken from the mesher); project_iso_surface then gives the projected
+  // mesh to the bit.
+  for (const TopologyCase& c : grid_cases()) {
+    const Skeleton skeleton = load(c.skeleton);
+    const ImplicitField field = skeleton_field(skeleton);
+    MeshOptions options = options_at(c.iso, c.size, c.distance);
+    options.method = MeshMethod::grid;
+    MeshReport report;
+    const TriangleMesh projected = mesh_iso_surface(field, options, &report);
+    options.project = false;
+    TriangleMesh unprojected = mesh_iso_surface(field, options);
+    EXPECT_EQ(unprojected.triangles, projected.triangles) << c.skeleton;
+    EXPECT_TRUE(unprojected.normals.empty()) << c.skeleton;
+    EXPECT_NE(unprojected.vertices, projected.vertices) << c.skeleton << ": not projected";
+    SurfaceMesh surface = to_surface_mesh(unprojected);
+    std::vector<long long> euler;
+    for (const auto& [chi, volume] : components_of(surface)) euler.push_back(chi);
+    std::vector<long long> expected = c.euler_per_component;
+    std::sort(euler.begin(), euler.end());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(euler, expected) << c.skeleton;
+    long long chi = 0;
+    for (const long long e : expected) chi += e;
+    const MeshTopology topology = mesh_topology(unprojected);
+    EXPECT_EQ(topology.euler_characteristic, chi) << c.skeleton;
+    EXPECT_EQ(topology.components, expected.size()) << c.skeleton;
+    project_iso_surface(unprojected, field, options, report.size);
+    EXPECT_EQ(unprojected.vertices, projected.vertices) << c.skeleton;
+    EXPECT_EQ(unprojected.normals, projected.normals) << c.skeleton;
+  }
+}
+
 TEST(MeshGrid, ASolidInteriorFilledByTilesGivesTheDenseSamplingsMesh) {
   // A ball of radius 1 (f = 2 − |p|², iso 1) at 1/20 of its radius: most of
   // its interior lies in blocks of 8³ nodes that the continuation from the
