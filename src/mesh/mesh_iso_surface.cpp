@@ -39,6 +39,8 @@ class FieldMeter {
     ImplicitField m = field_;
     m.value = [this](const Vec3& p) { return measure([&] { return field_.value(p); }); };
     m.value_and_gradient = [this](const Vec3& p) { return measure([&] { return field_.value_and_gradient(p); }); };
+    if (field_.reaches)
+      m.reaches = [this](const Vec3& p, double level) { return measure([&] { return field_.reaches(p, level); }); };
     m.value_and_gradient_near = metered_near(field_.value_and_gradient_near);
     m.value_near = metered_near(field_.value_near);
     return m;

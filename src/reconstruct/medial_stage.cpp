@@ -174,9 +174,10 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // which the fit's guard took for one defect, fewer than a detached hoof's).
   const MeshTopology input_topology = mesh_topology(surface);
   // The guard needs the topology alone: it meshes without projecting the
-  // vertices (mesh_stage_unprojected, the same triangles), a fifth of a
-  // meshing's work. Each surface it meshes is kept with its spheres (a few
-  // megabytes each, at most 2 + log2(rounds) + topology_checks of them):
+  // vertices (mesh_stage_unprojected, the same triangles), about a sixth
+  // of a meshing's work less. Each surface it meshes is kept with its
+  // spheres (a few megabytes each, at most 2 + log2(rounds) +
+  // topology_checks of them):
   // where the guard ran, the fit's result is one of them, projected once
   // at the end (project_stage_mesh: mesh_stage's mesh to the bit), and
   // measuring the result (`auto`, the report) then meshes nothing again.

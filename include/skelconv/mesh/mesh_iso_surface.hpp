@@ -62,9 +62,10 @@ struct MeshOptions {
   /// false: the vertices stay where the mesher put them (within about a
   /// facet of the surface, without normals) and are not projected. The
   /// projection moves vertices and never changes a triangle, so the
-  /// topology (mesh_topology) is the projected mesh's, for a part of the
-  /// work (a fifth of the grid method's at 480 SCALIS primitives);
-  /// project_iso_surface finishes such a mesh into the projected one.
+  /// topology (mesh_topology) is the projected mesh's, for less work (the
+  /// projection is about a sixth of the grid method's at 480 SCALIS
+  /// primitives, the seeds' rays most of the rest); project_iso_surface
+  /// finishes such a mesh into the projected one.
   bool project = true;
   unsigned random_seed = 0;
   /// The run is refused before any refinement when it would make more
