@@ -209,6 +209,7 @@ INSTANTIATE_TEST_SUITE_P(Grid, MeshTopologyTest, testing::ValuesIn(grid_cases())
 ImplicitField scaled(const Skeleton& skeleton, double alpha) {
   ImplicitField field = skeleton_field(skeleton);
   field.value = [&skeleton, alpha](const Vec3& p) { return skeleton.value(p / alpha); };
+  field.reaches = [&skeleton, alpha](const Vec3& p, double level) { return skeleton.reaches(p / alpha, level); };
   field.value_and_gradient = [&skeleton, alpha](const Vec3& p) {
     FieldSample s = skeleton.value_and_gradient(p / alpha);
     s.gradient /= alpha;
