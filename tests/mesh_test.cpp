@@ -211,6 +211,7 @@ INSTANTIATE_TEST_SUITE_P(Grid, MeshTopologyTest, testing::ValuesIn(grid_cases())
 ImplicitField scaled(const Skeleton& skeleton, double alpha) {
   ImplicitField field = skeleton_field(skeleton);
   field.value = [&skeleton, alpha](const Vec3& p) { return skeleton.value(p / alpha); };
+  field.reaches = [&skeleton, alpha](const Vec3& p, double level) { return skeleton.reaches(p / alpha, level); };
   field.value_and_gradient = [&skeleton, alpha](const Vec3& p) {
     FieldSample s = skeleton.value_and_gradient(p / alpha);
     s.gradient /= alpha;
@@ -441,6 +442,43 @@ TEST(MeshGrid, SamplingFromTheSeedsGivesTheDenseSamplingsMesh) {
     EXPECT_EQ(seeded.normals, reference.normals) << c.skeleton;
     EXPECT_EQ(seeded.triangles, reference.triangles) << c.skeleton;
     EXPECT_LT(seeded_report.field_evaluations, dense_report.field_evaluations) << c.skeleton;
+  }
+}
+
+TEST(MeshGrid, UnprojectedMeshHasTheProjectedMeshsTopologyAndProjectsToIt) {
+  // MeshOptions::project = false (the medial fit's topology guard): the
+  // vertices are left where the grid put them and the triangles are the
+  // projected mesh's, so the topology is the table's (the Euler
+  // characteristic per component of a tube around each skeleton, not
+  // taken from the mesher); project_iso_surface then gives the projected
+  // mesh to the bit.
+  for (const TopologyCase& c : grid_cases()) {
+    const Skeleton skeleton = load(c.skeleton);
+    const ImplicitField field = skeleton_field(skeleton);
+    MeshOptions options = options_at(c.iso, c.size, c.distance);
+    options.method = MeshMethod::grid;
+    MeshReport report;
+    const TriangleMesh projected = mesh_iso_surface(field, options, &report);
+    options.project = false;
+    TriangleMesh unprojected = mesh_iso_surface(field, options);
+    EXPECT_EQ(unprojected.triangles, projected.triangles) << c.skeleton;
+    EXPECT_TRUE(unprojected.normals.empty()) << c.skeleton;
+    EXPECT_NE(unprojected.vertices, projected.vertices) << c.skeleton << ": not projected";
+    SurfaceMesh surface = to_surface_mesh(unprojected);
+    std::vector<long long> euler;
+    for (const auto& [chi, volume] : components_of(surface)) euler.push_back(chi);
+    std::vector<long long> expected = c.euler_per_component;
+    std::sort(euler.begin(), euler.end());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(euler, expected) << c.skeleton;
+    long long chi = 0;
+    for (const long long e : expected) chi += e;
+    const MeshTopology topology = mesh_topology(unprojected);
+    EXPECT_EQ(topology.euler_characteristic, chi) << c.skeleton;
+    EXPECT_EQ(topology.components, expected.size()) << c.skeleton;
+    project_iso_surface(unprojected, field, options, report.size);
+    EXPECT_EQ(unprojected.vertices, projected.vertices) << c.skeleton;
+    EXPECT_EQ(unprojected.normals, projected.normals) << c.skeleton;
   }
 }
 

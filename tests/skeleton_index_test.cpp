@@ -117,6 +117,65 @@ TEST(SkeletonIndex, IndexedEqualsPlainBitForBit) {
   }
 }
 
+/// SCALIS segments and triangles and points of positive weight, scattered
+/// in [0, 4]³ as mixed_skeleton's: every term ≥ 0. With `nested`, every
+/// third primitive goes into a sum node under the root sum instead (where
+/// Skeleton::reaches stops inside the inner sum).
+Skeleton nonnegative_skeleton(int count, bool nested) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 4.0), small(-0.6, 0.6), radius(0.3, 0.8);
+  Skeleton skeleton;
+  const Skeleton::NodeId inner = nested ? skeleton.add_blend(Blend::sum()) : Skeleton::root;
+  for (int k = 0; k < count; ++k) {
+    const Skeleton::NodeId parent = k % 3 == 0 ? inner : Skeleton::root;
+    const Vec3 c(u(rng), u(rng), u(rng));
+    const Vec3 d(small(rng), small(rng), small(rng));
+    const double R = radius(rng);
+    switch (k % 3) {
+      case 0: skeleton.add(ScalisSegment(c, c + d, 0.5 * R, 0.3 * R, ScalisKernel::compact(4, 1.5)), parent); break;
+      case 1:
+        skeleton.add(ScalisTriangle({c, c + Vec3(0.6, 0, 0), c + Vec3(0, 0.6, 0.2)}, {0.3 * R, 0.3 * R, 0.3 * R},
+                                    ScalisKernel::compact(4, 1.5)),
+                     parent);
+        break;
+      default: skeleton.add(PointPrimitive(c, KernelSpec::compact(4, R), 0.7), parent); break;
+    }
+  }
+  return skeleton;
+}
+
+TEST(SkeletonReaches, DecidesAsTheValueDoes) {
+  // reaches(p, level) stops adding a sum of terms ≥ 0 once it is twice the
+  // level: its answer must be value(p) >= level at every level, those just
+  // below and above f(p) included (where nothing may stop early), and on
+  // skeletons it does not cover (negative weights, unions: the value).
+  std::vector<Skeleton> skeletons;
+  skeletons.push_back(nonnegative_skeleton(300, false));
+  skeletons.push_back(nonnegative_skeleton(300, true));
+  skeletons.push_back(mixed_skeleton(150));
+  skeletons.push_back(mixed_skeleton(150, Parent::sum_under_union));
+  for (std::size_t s = 0; s < skeletons.size(); ++s) {
+    SCOPED_TRACE(s);
+    const Skeleton& skeleton = skeletons[s];
+    int inside = 0, far_inside = 0;
+    for (const Vec3& p : probe_points(skeleton, 1500)) {
+      const double f = skeleton.value(p);
+      std::vector<double> levels{0.05, 0.3, 1.0, 3.0, f, std::nextafter(f, 0.0), std::nextafter(f, 1e300),
+                                 0.5 * f, std::nextafter(0.5 * f, 0.0), std::nextafter(0.5 * f, 1e300), 0.2 * f};
+      for (const double level : levels) {
+        if (!(level > 0.0)) continue;
+        EXPECT_EQ(skeleton.reaches(p, level), f >= level) << p.transpose() << " f " << f << " level " << level;
+      }
+      inside += f >= 1.0;
+      far_inside += f >= 2.0;
+    }
+    if (s < 2) {
+      EXPECT_GT(inside, 50);      // the probes meet the primitives...
+      EXPECT_GT(far_inside, 20);  // ...and points where the sum may stop early
+    }
+  }
+}
+
 TEST(SkeletonIndex, GridVisitsExactlyTheBoxesHoldingThePoint) {
   // Against brute force over the boxes, on random boxes of varied sizes
   // (a few far larger than the rest: visited everywhere).

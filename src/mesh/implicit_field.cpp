@@ -68,6 +68,9 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element, d
     return skeleton.value_and_gradient(p, tolerance);
   };
   field.value = [&skeleton, tolerance](const Vec3& p) { return skeleton.value(p, tolerance); };
+  field.reaches = [&skeleton, tolerance](const Vec3& p, double level) {
+    return skeleton.reaches(p, level, tolerance);
+  };
   if (tolerance > 0.0) {
     field.value_and_gradient_near = [&skeleton, tolerance](const Vec3& centre, double radius) {
       return [&skeleton, rules = skeleton.rules_near(centre, radius, tolerance)](const Vec3& p) {

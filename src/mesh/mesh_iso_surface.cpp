@@ -39,6 +39,8 @@ class FieldMeter {
     ImplicitField m = field_;
     m.value = [this](const Vec3& p) { return measure([&] { return field_.value(p); }); };
     m.value_and_gradient = [this](const Vec3& p) { return measure([&] { return field_.value_and_gradient(p); }); };
+    if (field_.reaches)
+      m.reaches = [this](const Vec3& p, double level) { return measure([&] { return field_.reaches(p, level); }); };
     m.value_and_gradient_near = metered_near(field_.value_and_gradient_near);
     m.value_near = metered_near(field_.value_near);
     return m;
@@ -360,6 +362,16 @@ std::vector<MissedPart> find_missed_parts(const TriangleMesh& mesh, const std::v
   return parts;
 }
 
+/// The vertices of a fresh mesh of facet size `size` projected onto the
+/// surface (mesh_iso_surface's last step).
+void project_vertices(TriangleMesh& mesh, const ImplicitField& field, const MeshOptions& options, double size) {
+  const double diagonal = bounding_box(mesh.vertices).diagonal();
+  // Half the required tolerance: the bounding box moves slightly with the
+  // projection, and the check is made on the final box.
+  project_to_surface(mesh, field, options.iso,
+                     {.tolerance = 0.5 * options.projection_tolerance * diagonal, .max_step = size});
+}
+
 }  // namespace
 
 double estimate_triangles(const Box3& box, double size) {
@@ -446,11 +458,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
     throw EvaluationError(fmt::format("the mesher produced no triangles from {} surface seeds", seeds.size()));
   }
 
-  const double diagonal = bounding_box(mesh.vertices).diagonal();
-  // Half the required tolerance: the bounding box moves slightly with the
-  // projection, and the check is made on the final box.
-  project_to_surface(mesh, metered, iso,
-                     {.tolerance = 0.5 * options.projection_tolerance * diagonal, .max_step = run.size});
+  if (options.project) project_vertices(mesh, metered, options, run.size);
   if (options.method == MeshMethod::grid) run.missed_parts = find_missed_parts(mesh, seeds, run.size);
 
   run.field_evaluations = meter.evaluations();
@@ -458,6 +466,10 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   run.total_seconds = seconds_since(start);
   if (report != nullptr) *report = run;
   return mesh;
+}
+
+void project_iso_surface(TriangleMesh& mesh, const ImplicitField& field, const MeshOptions& options, double size) {
+  project_vertices(mesh, field, options, size);
 }
 
 }  // namespace skelconv

@@ -32,20 +32,23 @@ double distance_to_exit(const Box3& box, const Vec3& p, const Vec3& d) {
 /// nothing if f ≥ iso up to the box boundary.
 std::optional<Vec3> ray_crossing(const ImplicitField& field, double iso, const Box3& box, const Vec3& p,
                                  const Vec3& d, const SurfaceSeedOptions& options) {
+  const auto inside = [&field, iso](const Vec3& q) {
+    return field.reaches ? field.reaches(q, iso) : field.value(q) >= iso;
+  };
   const double t_exit = distance_to_exit(box, p, d);
-  double inside = 0.0;
+  double in = 0.0;
   double outside = std::min(options.spacing, t_exit);
-  while (field.value(p + outside * d) >= iso) {
+  while (inside(p + outside * d)) {
     if (outside >= t_exit) return std::nullopt;
-    inside = outside;
+    in = outside;
     outside = std::min(2 * outside, t_exit);
   }
   const double bracket = options.bracket_fraction * options.spacing;
-  while (outside - inside > bracket) {
-    const double middle = 0.5 * (inside + outside);
-    (field.value(p + middle * d) >= iso ? inside : outside) = middle;
+  while (outside - in > bracket) {
+    const double middle = 0.5 * (in + outside);
+    (inside(p + middle * d) ? in : outside) = middle;
   }
-  return p + 0.5 * (inside + outside) * d;
+  return p + 0.5 * (in + outside) * d;
 }
 
 using Cell = std::tuple<long long, long long, long long>;

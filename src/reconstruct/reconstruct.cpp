@@ -592,15 +592,39 @@ std::string over_measure_budget(const MeasureWork& work, double budget) {
                      work.primitives, work.grid_nodes, work.evaluations, budget);
 }
 
-TriangleMesh mesh_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
-                        double size) {
-  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
+namespace {
+
+/// The mesher's options of mesh_stage for `skeleton`.
+MeshOptions stage_mesh_options(const TriangleMesh& surface, const Skeleton& skeleton,
+                               const ReconstructOptions& options, double size, bool project) {
   const auto [lo, hi] = bounding_box(surface);
   MeshOptions mesh_options;
   mesh_options.iso = skeleton.iso();
   mesh_options.method = MeshMethod::grid;
   mesh_options.size = measure_size(lo, hi, size, options);
-  return mesh_iso_surface(skeleton_field(skeleton), mesh_options);
+  mesh_options.project = project;
+  return mesh_options;
+}
+
+}  // namespace
+
+TriangleMesh mesh_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                        double size) {
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
+  return mesh_iso_surface(skeleton_field(skeleton), stage_mesh_options(surface, skeleton, options, size, true));
+}
+
+TriangleMesh mesh_stage_unprojected(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                                    double size) {
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
+  return mesh_iso_surface(skeleton_field(skeleton), stage_mesh_options(surface, skeleton, options, size, false));
+}
+
+void project_stage_mesh(TriangleMesh& mesh, const TriangleMesh& surface, const Stage& stage,
+                        const ReconstructOptions& options, double size) {
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(stage, options));
+  const MeshOptions mesh_options = stage_mesh_options(surface, skeleton, options, size, true);
+  project_iso_surface(mesh, skeleton_field(skeleton), mesh_options, *mesh_options.size);
 }
 
 SurfaceDistance measure_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,

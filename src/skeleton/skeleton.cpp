@@ -75,6 +75,15 @@ void add_primitives_of_one_type(const std::vector<Primitive>& primitives, const 
 /// alike from one segment to the next, which the processor predicts.
 constexpr std::size_t far_rule_chunk = 64;
 
+/// Whether a primitive's field is never negative: a SCALIS segment or
+/// triangle (a kernel ≥ 0 integrated with positive radii), a point of
+/// positive weight. The others may carry a negative weight coefficient.
+bool never_negative(const Primitive& primitive) {
+  if (std::holds_alternative<ScalisSegment>(primitive) || std::holds_alternative<ScalisTriangle>(primitive)) return true;
+  if (const PointPrimitive* point = std::get_if<PointPrimitive>(&primitive)) return point->weight() > 0.0;
+  return false;
+}
+
 /// The far rule of a classical or SCALIS segment that has one, else nullptr.
 const FarSegmentRule* far_rule_of(const Primitive& primitive) {
   if (const Segment* segment = std::get_if<Segment>(&primitive)) return segment->far_rule();
@@ -340,6 +349,20 @@ void Skeleton::prepare() const {
       }
       if (any_bounded) index->grids[id].emplace(boxes);
     }
+    index->nonnegative_sum.assign(nodes_.size(), false);
+    std::vector<bool> decided(nodes_.size(), false);
+    const auto nonnegative_sum = [&](const auto& self, NodeId id) -> bool {
+      if (decided[id]) return index->nonnegative_sum[id];
+      decided[id] = true;  // a node is never its own descendant
+      const Node& node = nodes_[id];
+      bool nonnegative = node.blend.kind == BlendKind::sum && node.blend.weights.empty();
+      for (const Child& child : node.children) {
+        if (!nonnegative) break;
+        nonnegative = child.is_blend ? self(self, NodeId(child.index)) : never_negative(primitives_[child.index]);
+      }
+      return index->nonnegative_sum[id] = nonnegative;
+    };
+    for (NodeId id = 0; id < nodes_.size(); ++id) nonnegative_sum(nonnegative_sum, id);
     // The common skeleton: a list of primitives of one type, no blend node,
     // no weight, no grid (every primitive is then a child of the root, in
     // order).
@@ -414,6 +437,60 @@ FieldSample Skeleton::evaluate_primitive_list(const Vec3& p, Need need) const {
 }
 
 double Skeleton::value(const Vec3& p) const { return evaluate(p, Need::value, Acceleration::indexed, 0.0).value; }
+
+bool Skeleton::reaches(const Vec3& p, double level, double tolerance) const {
+  detail::require_finite_query_point(p);
+  const detail::IndexCache& cache = *cache_;
+  if (!cache.built.load(std::memory_order_acquire)) prepare();
+  const detail::SkeletonIndex& built = *cache.index;
+  const bool exact_path = tolerance == 0.0 || built.far_rules.empty();
+  if (!exact_path || built.primitive_list || !built.nonnegative_sum[root] || !(level > 0.0) ||
+      !std::isfinite(level)) {
+    return value(p, tolerance) >= level;
+  }
+  double total = 0.0;
+  // The margin: a term of a kernel ≥ 0 rounds below 0 by a few units in
+  // the last place of its own size at most, far below the level.
+  return sum_reaches(root, p, 2.0 * level, built, 0.0, total) || total >= level;
+}
+
+bool Skeleton::sum_reaches(NodeId id, const Vec3& p, double stop, const detail::SkeletonIndex& index, double before,
+                           double& total) const {
+  const Node& node = nodes_[id];
+  const std::optional<SupportGrid>& grid = index.grids[id];
+  total = 0.0;
+  bool marker = false, reached = false;
+  // evaluate_sum's additions, in its order, until before + total ≥ stop:
+  // every term left is ≥ 0, and adding a term ≥ 0 to a double never
+  // lowers it (rounding is monotone), so the whole sum, and the sums
+  // above this node, would end at least as high.
+  const auto add = [&](std::size_t position) {
+    if (reached) return;
+    const Child& child = node.children[position];
+    double term = 0.0;
+    if (child.is_blend) {
+      if (sum_reaches(NodeId(child.index), p, stop, index, before + total, term)) {
+        reached = true;
+        return;
+      }
+    } else {
+      const FieldSample sample = evaluate_leaf(child.index, p, Need::value);
+      marker = marker || is_marker(sample);
+      term = sample.value;
+    }
+    total += term;
+    reached = marker || before + total >= stop;
+  };
+  if (grid.has_value()) {
+    grid->for_each_active(p, add);
+  } else {
+    for (std::size_t position = 0; position < node.children.size(); ++position) add(position);
+  }
+  if (reached) return true;
+  FieldSample sum{total, Vec3::Zero()};
+  require_finite_blend(sum, true, false, id == root ? "primitives" : node.location.c_str(), p);
+  return false;
+}
 
 Skeleton::NearbyRules Skeleton::rules_near(const Vec3& centre, double radius, double tolerance) const {
   detail::require_finite_query_point(centre);

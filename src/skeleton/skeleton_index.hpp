@@ -38,6 +38,11 @@ struct SkeletonIndex {
   /// the root, no weight, no grid (Skeleton::evaluate loops over the
   /// primitives without walking the tree).
   bool primitive_list = false;
+  /// nonnegative_sum[id]: node id is a sum without weights whose every
+  /// child is a primitive whose field is never negative (SCALIS, a point
+  /// of positive weight) or such a sum (Skeleton::reaches adds its terms
+  /// only until the total is well past the level).
+  std::vector<bool> nonnegative_sum;
 };
 
 /// Built once per version of the skeleton; std::call_once lets any number

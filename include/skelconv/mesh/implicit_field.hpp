@@ -27,6 +27,11 @@ struct ImplicitField {
   std::function<FieldSample(const Vec3&)> value_and_gradient;
   /// f(p) alone (cheaper where the gradient is not needed).
   std::function<double(const Vec3&)> value;
+  /// When set: whether f(p) ≥ level, the same answer as value(p) >= level
+  /// for less work where f is well above the level (Skeleton::reaches).
+  /// Unset: value(p) >= level. The seeds' rays ask only this. A field
+  /// that replaces `value` must replace or unset this too.
+  std::function<bool(const Vec3&, double level)> reaches;
   /// When set: f and ∇f for a run of points within `radius` of `centre`
   /// (a Newton projection's iterates), with what they share done once
   /// (Skeleton::rules_near); as accurate as value_and_gradient, not

@@ -244,8 +244,9 @@ struct Stage {
   /// paths (`auto`); measure() returns it instead of meshing again.
   std::optional<StageMeasure> measured;
   /// Its skeleton meshed as measure() meshes it, when the medial fit's
-  /// topology guard meshed these very spheres already (medial_stage):
-  /// measure() measures that mesh instead of meshing again.
+  /// topology guard meshed these very spheres already (medial_stage, which
+  /// meshes without projecting and projects only this one): measure()
+  /// measures that mesh instead of meshing again.
   std::optional<TriangleMesh> meshed;
 };
 
@@ -323,6 +324,15 @@ std::string over_measure_budget(const MeasureWork& work, double budget);
 /// options.measure_divisions when 0), over the bounding box of `surface`.
 TriangleMesh mesh_stage(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
                         double size = 0.0);
+
+/// mesh_stage with its vertices not projected onto the surface
+/// (MeshOptions::project): the same triangles, hence the same topology,
+/// for a part of the work. project_stage_mesh (same arguments) turns it
+/// into mesh_stage's mesh, to the bit.
+TriangleMesh mesh_stage_unprojected(const TriangleMesh& surface, const Stage& stage, const ReconstructOptions& options,
+                                    double size = 0.0);
+void project_stage_mesh(TriangleMesh& mesh, const TriangleMesh& surface, const Stage& stage,
+                        const ReconstructOptions& options, double size = 0.0);
 
 /// mesh_stage, measured against `surface`. `mesh_out`, if given, receives the mesh.
 /// Throws InputError (located at the stage's name) when the estimated work

@@ -135,6 +135,15 @@ class Skeleton {
   /// skeletons, and tolerance 0, give the exact evaluation above.
   /// InputError ("tolerance") unless 0 ≤ tolerance < 1.
   double value(const Vec3& p, double tolerance) const;
+  /// Whether f(P) ≥ level, as value(p, tolerance) >= level decides it, for
+  /// less work where f is well above the level: a sum whose terms are all
+  /// ≥ 0 (SCALIS primitives, points of positive weight, sums of them)
+  /// stops adding once its running total, in value's order, is twice the
+  /// level (adding terms ≥ 0 never lowers a sum of doubles; the margin
+  /// covers a term that rounds a few units in the last place below 0).
+  /// Other skeletons, and a level ≤ 0, take value(p, tolerance). Errors as
+  /// value's, except those of terms it no longer needs.
+  bool reaches(const Vec3& p, double level, double tolerance = 0.0) const;
   FieldSample value_and_gradient(const Vec3& p, double tolerance) const;
   /// The tolerance mode's rules chosen once for every point within `radius`
   /// of `centre` (docs/field.md, "Tolerance", "Near a point"): each
@@ -202,6 +211,11 @@ class Skeleton {
   FieldSample evaluate_node(NodeId id, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
   FieldSample evaluate_sum(NodeId id, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
   FieldSample evaluate_angle_blend(NodeId id, const Vec3& p, Need need, const detail::SkeletonIndex* index) const;
+  /// reaches' walk of sum node `id` (SkeletonIndex::nonnegative_sum), its
+  /// parents' running total `before`: true once before + the running total
+  /// reaches `stop`, else false with `total` the node's value.
+  bool sum_reaches(NodeId id, const Vec3& p, double stop, const detail::SkeletonIndex& index, double before,
+                   double& total) const;
 
   std::vector<Primitive> primitives_;
   std::vector<std::string> primitive_locations_;
