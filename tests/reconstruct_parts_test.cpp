@@ -2,7 +2,7 @@
 // part's primitives are summed apart and the sums joined by a union, so two
 // balls of different parts closer than their fields reach stay two, where
 // one sum of all the fields fuses them; and the fit measures each point
-// against the union, as the file writes it.
+// against its own part's sum.
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -77,11 +77,11 @@ TEST(MedialParts, TwoPartsAreAUnionOfTheirSums) {
   }
 }
 
-TEST(MedialParts, EachPointIsFittedAgainstTheUnion) {
+TEST(MedialParts, EachPointIsFittedAgainstItsOwnPartsSum) {
   // Points on each ball's surface, the two facing the other ball among
-  // them: against the union (its own ball's field, 1, the other's f(1.2)
-  // = 0.42) each is on the surface (δ = 0); against the sum of both, the
-  // facing ones are inside (f = 1 + f(1.2)).
+  // them: against its own ball alone (f = 1; the other's f(1.2) = 0.42
+  // is left out) each is on the surface (δ = 0); against the sum of both,
+  // the facing ones are inside (f = 1 + f(1.2)).
   std::vector<WeightedPoint> points;
   std::vector<std::int32_t> parts;
   for (int part = 0; part < 2; ++part)
@@ -106,6 +106,36 @@ TEST(MedialParts, EachPointIsFittedAgainstTheUnion) {
   EXPECT_GT(report.rms[0], 0.05) << "summed, the facing points are inside: the case must tell the two apart";
   // Several parts and no part per point: refused, never guessed.
   EXPECT_THROW(fit_medial_mesh(two_balls(true), points, {}, field_of, fit, &report), std::logic_error);
+}
+
+// Each part's spheres follow that part's points: two balls of radius 0.8
+// on parts 0 and 1, points on spheres of radius 1 about their centres;
+// fitted, both radii come to 1 (f = 1 at r = ρ for an isolated sphere).
+TEST(MedialParts, EachPartsSpheresFollowItsOwnPoints) {
+  MedialMesh m;
+  m.spheres = {Vec4(0, 0, 0, 0.8), Vec4(4, 0, 0, 0.8)};
+  m.isolated = {0, 1};
+  m.parts = {0, 1};
+  std::vector<WeightedPoint> points;
+  std::vector<std::int32_t> parts;
+  for (int part = 0; part < 2; ++part)
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)}) {
+      points.push_back({m.spheres[std::size_t(part)].head<3>() + d, 1.0});
+      parts.push_back(part);
+    }
+  const ReconstructOptions o;
+  const MedialField field_of = [&o](const MedialMesh& medial) {
+    Stage s;
+    s.medial = medial;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+  MedialFitOptions fit;
+  MedialFitReport report;
+  const MedialMesh fitted = fit_medial_mesh(m, points, {}, field_of, fit, &report, {}, {}, {}, parts);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_NEAR(fitted.spheres[k].w(), 1.0, 1e-3) << "sphere " << k;
+    EXPECT_NEAR((fitted.spheres[k].head<3>() - m.spheres[k].head<3>()).norm(), 0.0, 1e-3) << "sphere " << k;
+  }
 }
 
 TEST(MedialParts, TrianglePartsAndElementParts) {

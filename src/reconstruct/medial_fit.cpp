@@ -24,15 +24,15 @@ namespace {
 /// The sphere of `mesh` whose surface is nearest to p, among those of part
 /// `part` when the mesh has parts (any, when that part has none).
 std::size_t nearest_sphere(const MedialMesh& mesh, const Vec3& p, std::int32_t part) {
+  const bool of_part = !mesh.parts.empty() && std::find(mesh.parts.begin(), mesh.parts.end(), part) != mesh.parts.end();
   std::size_t best = 0;
   double best_gap = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < mesh.spheres.size(); ++i) {
-    if (!mesh.parts.empty() && mesh.parts[i] != part) continue;
+    if (of_part && mesh.parts[i] != part) continue;
     const Vec4& s = mesh.spheres[i];
     const double gap = std::abs((p - s.head<3>()).norm() - s.w());
     if (gap < best_gap) best_gap = gap, best = i;
   }
-  if (!mesh.parts.empty() && best_gap == std::numeric_limits<double>::infinity()) return nearest_sphere(mesh, p, -1);
   return best;
 }
 
@@ -58,14 +58,13 @@ struct FitPoints {
 struct Evaluation {
   /// Per part of the input, its primitives (medial_mesh_part; the whole
   /// mesh for an input of one part) and their sum of fields. A point is
-  /// measured against the union of the parts' sums, as the skeleton file
-  /// writes it: its distance is that of the part whose sum is the largest
-  /// at its foot (`governing`), and its Jacobian row that part's. A point
-  /// of one part inside another part's surface thus pulls the other part's
-  /// spheres back, where their surfaces would overlap and fuse the parts.
+  /// measured against its own part's sum alone, distance and Jacobian row:
+  /// the union of the parts' sums is that sum wherever the parts' surfaces
+  /// stay apart. (Measuring a point inside another part's surface against
+  /// that part instead, to draw it back, fused more parts on CGAL's bones,
+  /// 9 → 4 components against 9 → 5, docs/reconstruction_medial.md.)
   std::vector<MedialMesh> part_meshes;
   std::vector<Skeleton> skeletons;
-  std::vector<std::int32_t> governing;
   std::vector<double> delta, slope;
   std::vector<Vec3> foot;
   /// No row: outside every support (f = 0, no first-order information), or
@@ -112,28 +111,15 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
     if (!empty) iso = e.skeletons.back().iso();
   }
   e.delta.resize(points.size());
-  e.governing.resize(points.size());
   e.slope.resize(points.size());
   e.foot.resize(points.size());
   e.no_row.resize(points.size());
   // Each point's distance on every core (each writes only its own slots),
   // then the sums in the points' order.
   skelconv::detail::parallel_for(points.size(), [&](std::size_t k) {
-    // The union of the parts' sums (blend_union: the first largest), and
-    // the part that gives it; the point's own part where every sum is 0.
-    const auto field = [&e, own = fit_points.parts[k]](const Vec3& x, std::int32_t& part) {
-      part = own;
-      if (e.skeletons.size() == 1) return e.skeletons.front().value_and_gradient(x);
-      FieldSample best;
-      for (std::size_t p = 0; p < e.skeletons.size(); ++p) {
-        const FieldSample s = e.skeletons[p].value_and_gradient(x);
-        if (p == 0 || s.value > best.value) best = s, part = s.value != 0.0 ? std::int32_t(p) : part;
-      }
-      return best;
-    };
-    std::int32_t part = 0;
-    FieldSample s = field(points[k].point, part);
-    e.governing[k] = part;
+    const std::int32_t part = fit_points.parts[k];
+    const Skeleton& skeleton = e.skeletons[std::size_t(part)];
+    FieldSample s = skeleton.value_and_gradient(points[k].point);
     const double radius = mesh.spheres[nearest_sphere(mesh, points[k].point, part)].w();
     e.foot[k] = points[k].point;
     e.no_row[k] = !(s.value != 0.0) || !std::isfinite(s.value) || !s.gradient.allFinite();
@@ -147,10 +133,8 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
       e.delta[k] = step;
       for (int n = 0; n < newton_steps && s.gradient.norm() > 0.0; ++n) {
         const Vec3 next = e.foot[k] - step * s.gradient.normalized();
-        std::int32_t next_part = part;
-        const FieldSample t = field(next, next_part);
+        const FieldSample t = skeleton.value_and_gradient(next);
         if (!(t.value != 0.0) || !std::isfinite(t.value) || !t.gradient.allFinite()) break;
-        e.governing[k] = next_part;
         double slope = 0.0;
         step = newton_step(t, iso, radius, &slope);
         e.delta[k] += step, e.foot[k] = next, e.slope[k] = slope, s = t;
@@ -210,11 +194,11 @@ Jacobian jacobian(const FitPoints& fit_points, const Evaluation& e, bool centres
     if (radius != 0.0) j.rows[k].emplace_back(column + 3, radius / e.slope[k]);
   };
   // Point by point on every core, each row's entries in the primitives'
-  // order (those of the part that governs the point).
+  // order (those of the point's own part).
   skelconv::detail::parallel_for(points.size(), [&](std::size_t k) {
     const Vec3& p = e.foot[k];
     if (e.no_row[k]) return;
-    const std::size_t part = std::size_t(e.governing[k]);
+    const std::size_t part = std::size_t(fit_points.parts[k]);
     const MedialMesh& mesh = e.part_meshes[part];
     const std::vector<Primitive>& primitives = e.skeletons[part].primitives();
     for (std::size_t q = 0; q < primitives.size(); ++q) {

@@ -140,8 +140,8 @@ using TopologyError = std::function<long long(const MedialMesh&)>;
 /// (limit_radius_slope). Where `mesh.parts` is set (an input of several
 /// parts, medial_parts.hpp), `point_parts` gives the part of each point
 /// (the surface points, then the inside points), and each point is fitted
-/// against the union of the parts' sums of fields (the largest sum at the
-/// point governs it), as skeleton_file_text writes the skeleton.
+/// against the sum of its own part's primitives alone (skeleton_file_text
+/// joins the parts' sums by a union).
 MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& points,
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& options, MedialFitReport* report,
