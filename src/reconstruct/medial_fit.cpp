@@ -14,17 +14,21 @@
 
 #include "skelconv/field/support_box.hpp"
 #include "skelconv/reconstruct/medial_derivatives.hpp"
+#include "skelconv/reconstruct/medial_parts.hpp"
 #include "skelconv/reconstruct/medial_slope.hpp"
 #include "../detail/parallel_for.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
 
-/// The sphere of `mesh` whose surface is nearest to p.
-std::size_t nearest_sphere(const MedialMesh& mesh, const Vec3& p) {
+/// The sphere of `mesh` whose surface is nearest to p, among those of part
+/// `part` when the mesh has parts (any, when that part has none).
+std::size_t nearest_sphere(const MedialMesh& mesh, const Vec3& p, std::int32_t part) {
+  const bool of_part = !mesh.parts.empty() && std::find(mesh.parts.begin(), mesh.parts.end(), part) != mesh.parts.end();
   std::size_t best = 0;
   double best_gap = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < mesh.spheres.size(); ++i) {
+    if (of_part && mesh.parts[i] != part) continue;
     const Vec4& s = mesh.spheres[i];
     const double gap = std::abs((p - s.head<3>()).norm() - s.w());
     if (gap < best_gap) best_gap = gap, best = i;
@@ -32,9 +36,12 @@ std::size_t nearest_sphere(const MedialMesh& mesh, const Vec3& p) {
   return best;
 }
 
-/// The fit's points: the surface points first, then the inside points.
+/// The fit's points: the surface points first, then the inside points;
+/// with the part of the input each lies on or in (all 0 for an input of
+/// one part).
 struct FitPoints {
   std::vector<WeightedPoint> all;
+  std::vector<std::int32_t> parts;
   std::size_t surface = 0;
   bool on_surface(std::size_t k) const { return k < surface; }
 };
@@ -49,7 +56,15 @@ struct FitPoints {
 /// and its largest magnitude; `objective`, the weighted RMS of every
 /// point's δ (the inside points' weighs the cavities in).
 struct Evaluation {
-  Skeleton skeleton;
+  /// Per part of the input, its primitives (medial_mesh_part; the whole
+  /// mesh for an input of one part) and their sum of fields. A point is
+  /// measured against its own part's sum alone, distance and Jacobian row:
+  /// the union of the parts' sums is that sum wherever the parts' surfaces
+  /// stay apart. (Measuring a point inside another part's surface against
+  /// that part instead, to draw it back, fused more parts on CGAL's bones,
+  /// 9 → 4 components against 9 → 5, docs/reconstruction_medial.md.)
+  std::vector<MedialMesh> part_meshes;
+  std::vector<Skeleton> skeletons;
   std::vector<double> delta, slope;
   std::vector<Vec3> foot;
   /// No row: outside every support (f = 0, no first-order information), or
@@ -81,8 +96,20 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
   const std::vector<WeightedPoint>& points = fit_points.all;
   Evaluation e;
   e.newton_steps = newton_steps;
-  e.skeleton = field_of(mesh);
-  const double iso = e.skeleton.iso();
+  if (mesh.parts.empty()) {
+    e.part_meshes = {mesh};
+  } else {
+    for (std::size_t p = 0; p < part_count(mesh); ++p) e.part_meshes.push_back(medial_mesh_part(mesh, std::int32_t(p)));
+  }
+  // A part left with no primitive (all its spheres merged away) has the
+  // empty sum, f = 0: its points have no row.
+  double iso = 1.0;
+  for (const MedialMesh& part : e.part_meshes) {
+    const bool empty =
+        !mesh.parts.empty() && part.edges.empty() && part.triangles.empty() && part.isolated.empty();
+    e.skeletons.push_back(empty ? Skeleton() : field_of(part));
+    if (!empty) iso = e.skeletons.back().iso();
+  }
   e.delta.resize(points.size());
   e.slope.resize(points.size());
   e.foot.resize(points.size());
@@ -90,8 +117,10 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
   // Each point's distance on every core (each writes only its own slots),
   // then the sums in the points' order.
   skelconv::detail::parallel_for(points.size(), [&](std::size_t k) {
-    const double radius = mesh.spheres[nearest_sphere(mesh, points[k].point)].w();
-    FieldSample s = e.skeleton.value_and_gradient(points[k].point);
+    const std::int32_t part = fit_points.parts[k];
+    const Skeleton& skeleton = e.skeletons[std::size_t(part)];
+    FieldSample s = skeleton.value_and_gradient(points[k].point);
+    const double radius = mesh.spheres[nearest_sphere(mesh, points[k].point, part)].w();
     e.foot[k] = points[k].point;
     e.no_row[k] = !(s.value != 0.0) || !std::isfinite(s.value) || !s.gradient.allFinite();
     if (e.no_row[k]) {
@@ -104,7 +133,7 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
       e.delta[k] = step;
       for (int n = 0; n < newton_steps && s.gradient.norm() > 0.0; ++n) {
         const Vec3 next = e.foot[k] - step * s.gradient.normalized();
-        const FieldSample t = e.skeleton.value_and_gradient(next);
+        const FieldSample t = skeleton.value_and_gradient(next);
         if (!(t.value != 0.0) || !std::isfinite(t.value) || !t.gradient.allFinite()) break;
         double slope = 0.0;
         step = newton_step(t, iso, radius, &slope);
@@ -143,11 +172,18 @@ struct Jacobian {
   std::vector<std::vector<std::pair<std::size_t, double>>> rows;  ///< per point: (unknown, ∂δ/∂θ)
 };
 
-Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& points, const Evaluation& e, bool centres) {
-  const std::vector<Primitive>& primitives = e.skeleton.primitives();
-  if (primitives.size() != mesh.edges.size() + mesh.triangles.size() + mesh.isolated.size())
-    throw std::logic_error("fit_medial_mesh: the field's primitives are not the medial mesh's edges, triangles and "
-                           "isolated spheres");
+Jacobian jacobian(const FitPoints& fit_points, const Evaluation& e, bool centres) {
+  const std::vector<WeightedPoint>& points = fit_points.all;
+  // Per part: its primitives' support boxes.
+  std::vector<std::vector<std::optional<SupportBox>>> boxes(e.part_meshes.size());
+  for (std::size_t part = 0; part < e.part_meshes.size(); ++part) {
+    const MedialMesh& mesh = e.part_meshes[part];
+    const std::vector<Primitive>& primitives = e.skeletons[part].primitives();
+    if (primitives.size() != mesh.edges.size() + mesh.triangles.size() + mesh.isolated.size())
+      throw std::logic_error("fit_medial_mesh: the field's primitives are not the medial mesh's edges, triangles and "
+                             "isolated spheres");
+    for (const Primitive& primitive : primitives) boxes[part].push_back(support_box(primitive));
+  }
   Jacobian j;
   j.rows.resize(points.size());
   const auto add = [&](std::size_t k, std::int32_t sphere, const Vec3& centre, double radius) {
@@ -157,15 +193,16 @@ Jacobian jacobian(const MedialMesh& mesh, const std::vector<WeightedPoint>& poin
         if (centre[Eigen::Index(c)] != 0.0) j.rows[k].emplace_back(column + c, centre[Eigen::Index(c)] / e.slope[k]);
     if (radius != 0.0) j.rows[k].emplace_back(column + 3, radius / e.slope[k]);
   };
-  std::vector<std::optional<SupportBox>> boxes;
-  for (const Primitive& primitive : primitives) boxes.push_back(support_box(primitive));
   // Point by point on every core, each row's entries in the primitives'
-  // order.
+  // order (those of the point's own part).
   skelconv::detail::parallel_for(points.size(), [&](std::size_t k) {
     const Vec3& p = e.foot[k];
     if (e.no_row[k]) return;
+    const std::size_t part = std::size_t(fit_points.parts[k]);
+    const MedialMesh& mesh = e.part_meshes[part];
+    const std::vector<Primitive>& primitives = e.skeletons[part].primitives();
     for (std::size_t q = 0; q < primitives.size(); ++q) {
-      if (boxes[q] && !boxes[q]->contains(p)) continue;
+      if (boxes[part][q] && !boxes[part][q]->contains(p)) continue;
       if (q < mesh.edges.size()) {
         const auto& edge = mesh.edges[q];
         const PrimitiveDerivatives<2> d = derivatives(std::get<ScalisSegment>(primitives[q]), p);
@@ -320,7 +357,7 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
   if (values.empty()) values.push_back(value);
   for (int round = 1; round <= stage.rounds; ++round) {
     const NormalEquations equations =
-        normal_equations(points.all, now, jacobian(mesh, points.all, now, o.fit_centres), stage.weights(now),
+        normal_equations(points.all, now, jacobian(points, now, o.fit_centres), stage.weights(now),
                          Eigen::Index(per_sphere * mesh.spheres.size()));
     bool better = false;
     for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
@@ -363,7 +400,8 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& o, MedialFitReport* report,
                            const std::function<void(std::string_view)>& progress, const TopologyError& topology_error,
-                           const Clearance& clearance) {
+                           const Clearance& clearance,
+                           const std::vector<std::int32_t>& point_parts) {
   MedialFitReport r;
   FitPoints points;
   points.all = surface_points;
@@ -373,6 +411,13 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   for (const WeightedPoint& p : surface_points) area += p.weight;
   const double inside_weight = surface_points.empty() ? 1.0 : area / double(surface_points.size());
   for (const Vec3& p : inside_points) points.all.push_back({p, inside_weight});
+  if (mesh.parts.empty()) {
+    points.parts.assign(points.all.size(), 0);
+  } else {
+    if (point_parts.size() != points.all.size())
+      throw std::logic_error("fit_medial_mesh: a medial mesh of several parts needs the part of every point");
+    points.parts = point_parts;
+  }
   // Each centre stays within its medial ball, which is inside the input:
   // nothing in the fit pulls back a sphere that wanders out of it (the
   // input's points see only where the surface misses them, not where a

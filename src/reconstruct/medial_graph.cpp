@@ -17,9 +17,9 @@
 
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
+#include "skelconv/reconstruct/medial_parts.hpp"
 #include "skelconv/reconstruct/surface_samples.hpp"
 #include "cgal_surface.hpp"
-#include "union_find.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -78,17 +78,8 @@ std::vector<std::int32_t> canonical_polygon(std::vector<std::int32_t> polygon) {
 /// MedialGraph::sample_parts for the samples of surface_samples(surface,
 /// sampling); empty when the surface is one part.
 std::vector<std::int32_t> sample_parts(const TriangleMesh& surface, const SamplingOptions& sampling) {
-  std::vector<std::int32_t> parent(surface.vertices.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::int32_t(i);
-  for (const auto& t : surface.triangles)
-    for (int k = 1; k < 3; ++k) parent[std::size_t(detail::find_root(parent, t[k]))] = detail::find_root(parent, t[0]);
-  std::map<std::int32_t, std::int32_t> number;  // root -> part, in the order of first triangles
-  std::vector<std::int32_t> triangle_part(surface.triangles.size());
-  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-    const std::int32_t root = detail::find_root(parent, surface.triangles[t][0]);
-    triangle_part[t] = number.emplace(root, std::int32_t(number.size())).first->second;
-  }
-  if (number.size() <= 1) return {};
+  const std::vector<std::int32_t> triangle_part = triangle_parts(surface);
+  if (triangle_part.empty() || *std::max_element(triangle_part.begin(), triangle_part.end()) == 0) return {};
   std::vector<std::int32_t> parts;
   for (std::int32_t t : sample_triangles(surface, sampling)) parts.push_back(t < 0 ? 0 : triangle_part[std::size_t(t)]);
   return parts;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <unordered_map>
@@ -17,6 +18,7 @@
 #include "skelconv/mesh/mesh_topology.hpp"
 #include "skelconv/reconstruct/ball_fit.hpp"
 #include "skelconv/reconstruct/medial_graph.hpp"
+#include "skelconv/reconstruct/medial_parts.hpp"
 #include "skelconv/reconstruct/medial_quadric.hpp"
 #include "skelconv/reconstruct/pruning.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
@@ -104,6 +106,27 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     return depth_at.emplace(key, shape.signed_distance(c)).first->second;
   };
   quadric.overhang = m.merged_overhang * diagonal;
+  // The closed parts of the input (medial_parts.hpp): with more than one,
+  // each sphere, fit point and inside point is given the part it lies in,
+  // the part whose surface it is deepest inside (largest signed distance),
+  // and the skeleton sums each part's primitives apart.
+  const std::vector<std::int32_t> triangle_part = triangle_parts(surface);
+  const std::size_t part_total =
+      triangle_part.empty() ? 1 : std::size_t(*std::max_element(triangle_part.begin(), triangle_part.end())) + 1;
+  std::vector<TriangleMesh> part_surfaces;
+  std::vector<SurfaceQuery> part_queries;
+  if (part_total > 1)
+    for (std::size_t p = 0; p < part_total; ++p) {
+      part_surfaces.push_back(surface_part(surface, triangle_part, std::int32_t(p)));
+      part_queries.emplace_back(part_surfaces.back());
+    }
+  const auto part_of = [&part_queries](const Vec3& point) {
+    std::int32_t best = 0;
+    double deepest = -std::numeric_limits<double>::infinity();
+    for (std::size_t p = 0; p < part_queries.size(); ++p)
+      if (const double d = part_queries[p].signed_distance(point); d > deepest) deepest = d, best = std::int32_t(p);
+    return best;
+  };
   // The simplified medial mesh, its tube ends extended; `inside_samples`
   // as QuadricOptions's.
   const auto medial_mesh = [&](int inside_samples) {
@@ -134,6 +157,18 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     if (o.progress && spikes > 0)
       o.progress(fmt::format("medial mesh: {} spikes' spheres beyond their ends moved back to the input's surface",
                              spikes));
+    if (part_total > 1) {
+      for (const Vec4& sphere : mesh.spheres) mesh.parts.push_back(part_of(sphere.head<3>()));
+      std::size_t mixed = 0;
+      for (const auto& edge : mesh.edges) mixed += mesh.parts[std::size_t(edge[0])] != mesh.parts[std::size_t(edge[1])];
+      for (const auto& t : mesh.triangles)
+        mixed += mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[1])] ||
+                 mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[2])];
+      if (o.progress)
+        o.progress(fmt::format("medial mesh: {} parts of the input, each its own sum of fields, joined by a union "
+                               "({} edges and triangles join spheres of two parts)",
+                               part_total, mixed));
+    }
     return mesh;
   };
   const MedialMesh mesh = medial_mesh(0);
@@ -142,9 +177,22 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // The fit's points on the input itself (one per cell, not the cell's
   // centroid): a centroid in a crease lies in the air above it, and the fit
   // would fill the crease to reach it.
+  // With several parts, each part's points apart: a cell holding two
+  // parts' points would merge them into one on either.
   const bool on_surface = true;
-  const std::vector<WeightedPoint> points = merged_in_cells(area_weighted_points(surface, m.fit_spacing * diagonal),
-                                                            m.fit_spacing * diagonal, on_surface);
+  std::vector<WeightedPoint> points;
+  std::vector<std::int32_t> point_parts;
+  if (part_total == 1) {
+    points = merged_in_cells(area_weighted_points(surface, m.fit_spacing * diagonal), m.fit_spacing * diagonal,
+                             on_surface);
+  } else {
+    for (std::size_t p = 0; p < part_total; ++p) {
+      const std::vector<WeightedPoint> part = merged_in_cells(
+          area_weighted_points(part_surfaces[p], m.fit_spacing * diagonal), m.fit_spacing * diagonal, on_surface);
+      points.insert(points.end(), part.begin(), part.end());
+      point_parts.insert(point_parts.end(), part.size(), std::int32_t(p));
+    }
+  }
   const MedialField field_of = [&o](const MedialMesh& medial) {
     Stage s;
     s.medial = medial;
@@ -160,13 +208,19 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // wall far from the input. The shallow vertices (the spikes towards
   // ridges and corners, which the smooth surface rounds) are left out:
   // holding the surface out to them would fatten it everywhere else.
-  std::vector<WeightedPoint> centres;
+  std::vector<std::vector<WeightedPoint>> centres(part_total);
   const double facet = diagonal / o.measure_divisions;
   for (const MedialVertex& v : graph.vertices)
-    if (m.inside_points && v.radius >= m.inside_depth_facets * facet) centres.push_back({v.centre, 1.0});
+    if (m.inside_points && v.radius >= m.inside_depth_facets * facet)
+      centres[part_total > 1 ? std::size_t(part_of(v.centre)) : 0].push_back({v.centre, 1.0});
   std::vector<Vec3> inside;
-  for (const WeightedPoint& p : merged_in_cells(centres, m.fit_spacing * diagonal, on_surface))
-    inside.push_back(p.point);
+  std::vector<std::int32_t> inside_parts;
+  for (std::size_t p = 0; p < part_total; ++p)
+    for (const WeightedPoint& c : merged_in_cells(centres[p], m.fit_spacing * diagonal, on_surface)) {
+      inside.push_back(c.point);
+      if (part_total > 1) inside_parts.push_back(std::int32_t(p));
+    }
+  point_parts.insert(point_parts.end(), inside_parts.begin(), inside_parts.end());
   // The topology error: each component and each handle too many or too
   // few counts one (topology_defects). Measured by χ and the component
   // count alone, a tunnel and a cavity opened together would cancel
@@ -214,7 +268,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     Stage s;
     s.name = "medial";
     if (!start.spheres.empty())
-      s.medial = fit_medial_mesh(start, points, inside, field_of, fit, fit_report, o.progress, guard, clearance);
+      s.medial = fit_medial_mesh(start, points, inside, field_of, fit, fit_report, o.progress, guard, clearance,
+                                 point_parts);
     for (auto& [spheres, surface_mesh] : meshed)
       if (spheres == s.medial.spheres) s.meshed = std::move(surface_mesh);
     meshed.clear();

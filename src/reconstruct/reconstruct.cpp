@@ -16,6 +16,7 @@
 #include "skelconv/reconstruct/ball_fit.hpp"
 #include "skelconv/reconstruct/bspline.hpp"
 #include "skelconv/reconstruct/medial_graph.hpp"
+#include "skelconv/reconstruct/medial_parts.hpp"
 #include "skelconv/reconstruct/pavlidis.hpp"
 #include "skelconv/reconstruct/surface_fit.hpp"
 #include "skelconv/reconstruct/surface_query.hpp"
@@ -519,9 +520,29 @@ PrimitiveCounts primitive_counts(const Stage& stage, const ReconstructOptions& o
 std::string skeleton_file_text(const Stage& stage, const ReconstructOptions& o) {
   const std::vector<std::string> children = blend_children(stage, o, nullptr);
   if (children.empty()) throw std::logic_error("skeleton_file_text: the stage " + stage.name + " has no primitive");
-  std::string text = "{\"iso\": 1, \"primitives\": [\n  {\"blend\": \"sum\", \"children\": [";
-  for (std::size_t k = 0; k < children.size(); ++k) text += (k == 0 ? "\n    " : ",\n    ") + children[k];
-  return text + "]}]}\n";
+  const auto sum = [](const std::vector<std::string>& terms, const std::string& indent) {
+    std::string text = "{\"blend\": \"sum\", \"children\": [";
+    for (std::size_t k = 0; k < terms.size(); ++k) text += (k == 0 ? "\n" : ",\n") + indent + terms[k];
+    return text + "]}";
+  };
+  // A medial mesh of several parts of the input: one sum per part that has
+  // primitives, in the parts' order, joined by a union, so that the fields
+  // of two parts never add up (medial_parts.hpp).
+  if (part_count(stage.medial) > 1) {
+    std::vector<std::string> groups;
+    for (std::size_t p = 0; p < part_count(stage.medial); ++p) {
+      Stage part = stage;
+      part.medial = medial_mesh_part(stage.medial, std::int32_t(p));
+      const std::vector<std::string> terms = blend_children(part, o, nullptr);
+      if (!terms.empty()) groups.push_back(sum(terms, "      "));
+    }
+    if (groups.size() > 1) {
+      std::string text = "{\"iso\": 1, \"primitives\": [\n  {\"blend\": \"union\", \"children\": [";
+      for (std::size_t k = 0; k < groups.size(); ++k) text += (k == 0 ? "\n    " : ",\n    ") + groups[k];
+      return text + "]}]}\n";
+    }
+  }
+  return "{\"iso\": 1, \"primitives\": [\n  " + sum(children, "    ") + "]}\n";
 }
 
 }  // namespace skelconv::reconstruct

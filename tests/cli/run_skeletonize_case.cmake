@@ -8,6 +8,7 @@
 #   MAX_RMS=<r>           its RMS distance / diagonal is below r
 #   SAME_EULER=ON         its meshed surface has the input's Euler characteristic
 #   INPUT_EULER=<n>       the input's Euler characteristic (after any repair) is n
+#   SAME_COMPONENTS=ON    its meshed surface has as many components as the input has parts
 #   REPAIRED=union|holes|flipped  the report's input_repair names the boolean
 #                         union of crossing triangles (union), the holes filled
 #                         (holes) or the triangles turned round (flipped);
@@ -55,9 +56,12 @@ string(JSON rms GET "${json}" stages ${last} rms)
 string(JSON points GET "${json}" stages ${last} primitives point)
 string(JSON euler_out GET "${json}" stages ${last} euler_characteristic)
 string(JSON euler_in GET "${json}" input_euler_characteristic)
+string(JSON components_out GET "${json}" stages ${last} components)
+string(JSON components_in GET "${json}" input_components)
 string(JSON result GET "${json}" result)
 message(STATUS "${INPUT}: result ${name}, ${points} point primitive(s), Hausdorff ${hausdorff}, RMS ${rms} of the "
-               "diagonal, Euler characteristic ${euler_in} in, ${euler_out} out")
+               "diagonal, Euler characteristic ${euler_in} in, ${euler_out} out, components ${components_in} in, "
+               "${components_out} out")
 if(NOT result STREQUAL name)
   message(FATAL_ERROR "the report's result (${result}) is not its last stage (${name})\n${run}")
 endif()
@@ -76,6 +80,9 @@ if(DEFINED MAX_RMS AND NOT rms LESS MAX_RMS)
 endif()
 if(SAME_EULER AND NOT euler_in EQUAL euler_out)
   message(FATAL_ERROR "Euler characteristic ${euler_in} in, ${euler_out} out\n${run}")
+endif()
+if(SAME_COMPONENTS AND NOT components_in EQUAL components_out)
+  message(FATAL_ERROR "${components_in} component(s) in, ${components_out} out\n${run}")
 endif()
 if(DEFINED INPUT_EULER AND NOT euler_in EQUAL INPUT_EULER)
   message(FATAL_ERROR "the input's Euler characteristic is ${euler_in}, expected ${INPUT_EULER}\n${run}")

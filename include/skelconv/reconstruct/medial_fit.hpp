@@ -137,11 +137,16 @@ using TopologyError = std::function<long long(const MedialMesh&)>;
 /// skeleton_file_text does). `progress` (if set) gets one line per round.
 /// `clearance` (if set), each centre's distance to the input's surface,
 /// lets the radius bound grow a smaller ball before it shrinks the larger
-/// (limit_radius_slope).
+/// (limit_radius_slope). Where `mesh.parts` is set (an input of several
+/// parts, medial_parts.hpp), `point_parts` gives the part of each point
+/// (the surface points, then the inside points), and each point is fitted
+/// against the sum of its own part's primitives alone (skeleton_file_text
+/// joins the parts' sums by a union).
 MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& points,
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& options, MedialFitReport* report,
                            const std::function<void(std::string_view)>& progress = {},
-                           const TopologyError& topology_error = {}, const Clearance& clearance = {});
+                           const TopologyError& topology_error = {}, const Clearance& clearance = {},
+                           const std::vector<std::int32_t>& point_parts = {});
 
 }  // namespace skelconv::reconstruct

@@ -4,6 +4,8 @@ PLY) into the current directory; standard library only, same bytes each run:
   sphere.ply               icosphere (3 subdivisions), radius 1: a ball, no curve skeleton
   cube.ply                 unit cube, 8 vertices, 12 triangles: a low-poly mesh
   spheres_overlapping.ply  two icospheres (2 subdivisions) overlapping, one mesh: self-intersecting
+  spheres_close.ply        two icospheres (2 subdivisions), radius 1, 0.02 apart, one mesh: two separate
+                           parts that a sum of fields would fuse
   sphere_open.ply          sphere.ply without the triangles whose centroid is within 25 degrees of the
                            pole (0, 0, 1): an open mesh of one hole, for `skeletonize --repair`
 """
@@ -60,6 +62,9 @@ def main():
     V2, F2 = icosphere(2, 1.0, (1.2, 0, 0))
     write("spheres_overlapping.ply", V1 + V2, F1 + [tuple(i + len(V1) for i in t) for t in F2],
           "two overlapping icospheres (radius 1, centres 1.2 apart) in one mesh, no boolean: self-intersecting")
+    V3, F3 = icosphere(2, 1.0, (2.02, 0, 0))
+    write("spheres_close.ply", V1 + V3, F1 + [tuple(i + len(V1) for i in t) for t in F3],
+          "two icospheres (radius 1, centres 2.02 apart: 0.02 between them) in one mesh: two separate parts")
     cap = math.cos(math.radians(25))
     kept = [t for t in F if sum(V[i][2] for i in t) / 3 / math.sqrt(sum((sum(V[i][k] for i in t) / 3) ** 2
                                                                        for k in range(3))) < cap]

@@ -1,0 +1,42 @@
+// skelconv/reconstruct/medial_parts.hpp — the closed parts of the input
+// surface, and a medial mesh grouped by them. The skeleton of an input of
+// several parts sums each part's primitives and joins the parts' sums by a
+// union (max), so that two parts close together never blend into one
+// (docs/reconstruction_medial.md, "Separate parts").
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "skelconv/mesh/triangle_mesh.hpp"
+#include "skelconv/reconstruct/medial_mesh.hpp"
+
+namespace skelconv::reconstruct {
+
+/// For each triangle of `surface`, the closed part it belongs to (triangles
+/// joined through shared vertices: two parts that touch at a vertex are
+/// one), numbered from 0 in the order of the parts' first triangles.
+std::vector<std::int32_t> triangle_parts(const TriangleMesh& surface);
+
+/// The triangles of `surface` whose part (`parts`, per triangle) is `part`,
+/// with only the vertices they use, in their first use's order.
+TriangleMesh surface_part(const TriangleMesh& surface, const std::vector<std::int32_t>& parts, std::int32_t part);
+
+/// How many parts `mesh.parts` names: 1 + its largest, 1 when it is empty.
+std::size_t part_count(const MedialMesh& mesh);
+
+/// The part of a medial edge or triangle made of `spheres`: the part most
+/// of them are in, the first sphere's on a tie. (An element across two
+/// parts would join one part's sum and reach into the other; medial_stage
+/// counts them in its progress line: none on the two close balls of
+/// tests/data/reconstruct/spheres_close.ply.) 0 when `mesh.parts` is empty.
+std::int32_t element_part(const MedialMesh& mesh, std::span<const std::int32_t> spheres);
+
+/// `mesh` with only the edges, triangles and isolated spheres of part
+/// `part` (element_part), every sphere kept so that indices still hold,
+/// and `parts` empty: the mesh one sum of fields describes.
+MedialMesh medial_mesh_part(const MedialMesh& mesh, std::int32_t part);
+
+}  // namespace skelconv::reconstruct

@@ -1,0 +1,169 @@
+// Inputs of several closed parts (reconstruct/medial_parts.hpp): each
+// part's primitives are summed apart and the sums joined by a union, so two
+// balls of different parts closer than their fields reach stay two, where
+// one sum of all the fields fuses them; and the fit measures each point
+// against its own part's sum.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "skelconv/mesh/mesh_topology.hpp"
+#include "skelconv/reconstruct/medial_fit.hpp"
+#include "skelconv/reconstruct/medial_parts.hpp"
+#include "skelconv/reconstruct/reconstruct.hpp"
+#include "skelconv/skeleton/skeleton_file.hpp"
+
+namespace skelconv::reconstruct {
+namespace {
+
+/// Two balls of radius 1, centres 2.2 apart on x (0.2 between their
+/// surfaces): isolated spheres, each a compact point f = w (1 − r²/R²)²,
+/// R = σ = 1.5, w = (1 − 1/σ²)⁻² (f = 1 on the ball's surface), of parts
+/// 0 and 1 (or of one part, `parts` false).
+MedialMesh two_balls(bool parts) {
+  MedialMesh m;
+  m.spheres = {Vec4(0, 0, 0, 1), Vec4(2.2, 0, 0, 1)};
+  m.isolated = {0, 1};
+  if (parts) m.parts = {0, 1};
+  return m;
+}
+
+/// One ball's field at distance r from its centre (the definition above).
+double ball_field(double r) {
+  const double R = 1.5, w = 1.0 / ((1.0 - 1.0 / (R * R)) * (1.0 - 1.0 / (R * R)));
+  return w * std::pow(1.0 - r * r / (R * R), 2);
+}
+
+Skeleton written(const MedialMesh& m) {
+  Stage s;
+  s.name = "medial";
+  s.medial = m;
+  return parse_skeleton_json(skeleton_file_text(s, ReconstructOptions{}));
+}
+
+TEST(MedialParts, TwoPartsAreAUnionOfTheirSums) {
+  // Midway between the balls each field is f(1.1) = 0.692: their sum,
+  // 1.384, is above the iso 1 (the balls are fused), their maximum below.
+  const Vec3 middle(1.1, 0, 0);
+  ASSERT_GT(2 * ball_field(1.1), 1.0);
+  ASSERT_LT(ball_field(1.1), 1.0);
+  const Skeleton apart = written(two_balls(true));
+  EXPECT_NEAR(apart.value(middle), ball_field(1.1), 1e-12);
+  EXPECT_NEAR(written(two_balls(false)).value(middle), 2 * ball_field(1.1), 1e-12);
+  // Inside each ball the union is that ball's own field.
+  EXPECT_NEAR(apart.value(Vec3(2.7, 0, 0)), ball_field(0.5), 1e-12);
+  // The file: a union whose children are two sums of one point each.
+  Stage s;
+  s.medial = two_balls(true);
+  const std::string text = skeleton_file_text(s, ReconstructOptions{});
+  EXPECT_NE(text.find("{\"blend\": \"union\", \"children\": [\n    {\"blend\": \"sum\", \"children\": [\n      "
+                      "{\"type\": \"point\""),
+            std::string::npos)
+      << text;
+  // One part: the plain sum, as for an input of one part.
+  s.medial = two_balls(false);
+  EXPECT_EQ(skeleton_file_text(s, ReconstructOptions{}).find("union"), std::string::npos);
+  // Meshed on a grid of 0.052 (the box's diagonal 6.7 / 128): two
+  // components apart, one summed.
+  TriangleMesh box;
+  box.vertices = {Vec3(-1.5, -1.5, -1.5), Vec3(3.7, 1.5, 1.5)};
+  ReconstructOptions o;
+  o.measure_divisions = 128;
+  for (const bool parts : {true, false}) {
+    s.medial = two_balls(parts);
+    EXPECT_EQ(mesh_topology(mesh_stage(box, s, o)).components, parts ? 2u : 1u) << (parts ? "apart" : "summed");
+  }
+}
+
+TEST(MedialParts, EachPointIsFittedAgainstItsOwnPartsSum) {
+  // Points on each ball's surface, the two facing the other ball among
+  // them: against its own ball alone (f = 1; the other's f(1.2) = 0.42
+  // is left out) each is on the surface (δ = 0); against the sum of both,
+  // the facing ones are inside (f = 1 + f(1.2)).
+  std::vector<WeightedPoint> points;
+  std::vector<std::int32_t> parts;
+  for (int part = 0; part < 2; ++part)
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, -1)}) {
+      points.push_back({Vec3(2.2 * part, 0, 0) + d, 1.0});
+      parts.push_back(part);
+    }
+  const ReconstructOptions o;
+  const MedialField field_of = [&o](const MedialMesh& medial) {
+    Stage s;
+    s.medial = medial;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+  MedialFitOptions fit;
+  fit.rounds = 0, fit.worst_rounds = 0;  // the distances before any round
+  MedialFitReport report;
+  fit_medial_mesh(two_balls(true), points, {}, field_of, fit, &report, {}, {}, {}, parts);
+  ASSERT_EQ(report.rms.size(), 1u);
+  EXPECT_LT(report.rms[0], 1e-9);
+  fit_medial_mesh(two_balls(false), points, {}, field_of, fit, &report);
+  ASSERT_EQ(report.rms.size(), 1u);
+  EXPECT_GT(report.rms[0], 0.05) << "summed, the facing points are inside: the case must tell the two apart";
+  // Several parts and no part per point: refused, never guessed.
+  EXPECT_THROW(fit_medial_mesh(two_balls(true), points, {}, field_of, fit, &report), std::logic_error);
+}
+
+// Each part's spheres follow that part's points: two balls of radius 0.8
+// on parts 0 and 1, points on spheres of radius 1 about their centres;
+// fitted, both radii come to 1 (f = 1 at r = ρ for an isolated sphere).
+TEST(MedialParts, EachPartsSpheresFollowItsOwnPoints) {
+  MedialMesh m;
+  m.spheres = {Vec4(0, 0, 0, 0.8), Vec4(4, 0, 0, 0.8)};
+  m.isolated = {0, 1};
+  m.parts = {0, 1};
+  std::vector<WeightedPoint> points;
+  std::vector<std::int32_t> parts;
+  for (int part = 0; part < 2; ++part)
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)}) {
+      points.push_back({m.spheres[std::size_t(part)].head<3>() + d, 1.0});
+      parts.push_back(part);
+    }
+  const ReconstructOptions o;
+  const MedialField field_of = [&o](const MedialMesh& medial) {
+    Stage s;
+    s.medial = medial;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+  MedialFitOptions fit;
+  MedialFitReport report;
+  const MedialMesh fitted = fit_medial_mesh(m, points, {}, field_of, fit, &report, {}, {}, {}, parts);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_NEAR(fitted.spheres[k].w(), 1.0, 1e-3) << "sphere " << k;
+    EXPECT_NEAR((fitted.spheres[k].head<3>() - m.spheres[k].head<3>()).norm(), 0.0, 1e-3) << "sphere " << k;
+  }
+}
+
+TEST(MedialParts, TrianglePartsAndElementParts) {
+  // Two tetrahedra in one mesh, the second's triangles listed first.
+  TriangleMesh two;
+  two.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+                  Vec3(5, 0, 0), Vec3(6, 0, 0), Vec3(5, 1, 0), Vec3(5, 0, 1)};
+  two.triangles = {{4, 6, 5}, {4, 5, 7}, {5, 6, 7}, {4, 7, 6}, {0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  EXPECT_EQ(triangle_parts(two), (std::vector<std::int32_t>{0, 0, 0, 0, 1, 1, 1, 1}));
+  const TriangleMesh second = surface_part(two, triangle_parts(two), 1);
+  EXPECT_EQ(second.vertices, (std::vector<Vec3>{Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1)}));
+  EXPECT_EQ(second.triangles.size(), 4u);
+  EXPECT_TRUE(mesh_topology(second).closed);
+  // An element's part: that of most of its spheres, the first's on a tie.
+  MedialMesh m;
+  m.spheres.assign(3, Vec4(0, 0, 0, 1));
+  m.parts = {1, 0, 1};
+  m.triangles = {{1, 0, 2}};
+  m.edges = {{1, 2}, {0, 1}};
+  EXPECT_EQ(element_part(m, m.triangles[0]), 1);
+  EXPECT_EQ(element_part(m, m.edges[0]), 0);
+  EXPECT_EQ(element_part(m, m.edges[1]), 1);
+  EXPECT_EQ(part_count(m), 2u);
+  const MedialMesh zero = medial_mesh_part(m, 0), one = medial_mesh_part(m, 1);
+  EXPECT_EQ(zero.edges.size() + one.edges.size(), 2u);
+  EXPECT_EQ(one.triangles.size(), 1u);
+  EXPECT_TRUE(zero.parts.empty());
+}
+
+}  // namespace
+}  // namespace skelconv::reconstruct
