@@ -11,8 +11,8 @@ namespace {
 
 /// How far along `u` from the tip the input reaches where it tapers on as
 /// a horn does beyond `length` (the sphere beyond), or `length` itself
-/// where it does not. The way is walked in steps of a quarter radius until
-/// it leaves the input (then bisected). It is a taper if
+/// where it does not. The way is walked in steps of at most a quarter
+/// radius until it leaves the input (then bisected). It is a taper if
 /// - it left more than `reach` × `length` from the tip;
 /// - it was nowhere deeper than the tip's radius (deeper, the tube ran
 ///   into a body);
@@ -29,12 +29,17 @@ namespace {
 ///   loses its depth gently too, but has the tube's body on one side.
 double tapering_reach(const reconstruct::Vec4& tip, const Vec3& u, double length, double reach,
                       const std::function<double(const Vec3&)>& depth) {
-  const double step = 0.25 * tip.w(), farthest = reach * length + 64 * step;
+  const double farthest = reach * length + 16 * tip.w();
   std::vector<std::pair<double, double>> way{{0.0, depth(tip.head<3>())}};  // (distance, depth)
   const Vec3 side = u.unitOrthogonal(), other_side = u.cross(side);
   double inside = length, outside = -1.0;
-  for (double t = length + step; t <= farthest; t += step) {
-    const double d = depth(tip.head<3>() + t * u);
+  // Steps of at most the depth where they start (the signed distance: no
+  // step crosses the surface, not even into another part across a narrow
+  // gap), at least a fiftieth and at most a quarter of the radius.
+  double last = depth(tip.head<3>() + length * u);
+  for (double t = length + std::clamp(last, 0.02 * tip.w(), 0.25 * tip.w()); t <= farthest;
+       t += std::clamp(last, 0.02 * tip.w(), 0.25 * tip.w())) {
+    const double d = last = depth(tip.head<3>() + t * u);
     if (d > tip.w()) return length;
     if (d < 0.0) {
       outside = t;
