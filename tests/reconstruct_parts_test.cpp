@@ -77,6 +77,16 @@ TEST(MedialParts, TwoPartsAreAUnionOfTheirSums) {
   }
 }
 
+/// The field a medial mesh's skeleton file describes, as skeletonize
+/// writes it with options `o` (a union of per-part sums where it has parts).
+MedialField file_field(const ReconstructOptions& o) {
+  return [&o](const MedialMesh& medial) {
+    Stage s;
+    s.medial = medial;
+    return parse_skeleton_json(skeleton_file_text(s, o));
+  };
+}
+
 TEST(MedialParts, EachPointIsFittedAgainstItsOwnPartsSum) {
   // Points on each ball's surface, the two facing the other ball among
   // them: against its own ball alone (f = 1; the other's f(1.2) = 0.42
@@ -90,11 +100,7 @@ TEST(MedialParts, EachPointIsFittedAgainstItsOwnPartsSum) {
       parts.push_back(part);
     }
   const ReconstructOptions o;
-  const MedialField field_of = [&o](const MedialMesh& medial) {
-    Stage s;
-    s.medial = medial;
-    return parse_skeleton_json(skeleton_file_text(s, o));
-  };
+  const MedialField field_of = file_field(o);
   MedialFitOptions fit;
   fit.rounds = 0, fit.worst_rounds = 0;  // the distances before any round
   MedialFitReport report;
@@ -124,11 +130,7 @@ TEST(MedialParts, EachPartsSpheresFollowItsOwnPoints) {
       parts.push_back(part);
     }
   const ReconstructOptions o;
-  const MedialField field_of = [&o](const MedialMesh& medial) {
-    Stage s;
-    s.medial = medial;
-    return parse_skeleton_json(skeleton_file_text(s, o));
-  };
+  const MedialField field_of = file_field(o);
   MedialFitOptions fit;
   MedialFitReport report;
   const MedialMesh fitted = fit_medial_mesh(m, points, {}, field_of, fit, &report, {}, {}, {}, parts);
