@@ -801,5 +801,21 @@ TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
   EXPECT_TRUE(skelconv::detail::spurious_cavities(hollow, hollow_input, h, o.medial.kernel_sigma).empty());
 }
 
+// Room within the budget for a cavity's sphere: a chain A–B–C–D–E along x
+// (A 0, B 1, C 1.05, D 2, E 2.01, radii 0.1). D–E is the shortest edge but
+// E is on no other, and A–B would leave A on none. B–C (0.05 long) and
+// C–D (0.95) can go without leaving a sphere bare; B–C is the smaller
+// support and goes first, and then C is on C–D alone. Asked for two, it
+// drops the one and says so.
+TEST(FillCavities, RoomIsMadeWithoutLeavingASphereBare) {
+  MedialMesh chain;
+  for (const double x : {0.0, 1.0, 1.05, 2.0, 2.01}) chain.spheres.push_back(Vec4(x, 0.0, 0.0, 0.1));
+  chain.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}};
+  EXPECT_EQ(skelconv::detail::drop_smallest_primitives(chain, 2, 1.5), 1u);
+  const std::vector<std::array<std::int32_t, 2>> left{{0, 1}, {2, 3}, {3, 4}};
+  EXPECT_EQ(chain.edges, left);
+  EXPECT_EQ(chain.spheres.size(), 5u);
+}
+
 }  // namespace
 }  // namespace skelconv::reconstruct

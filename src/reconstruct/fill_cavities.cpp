@@ -67,4 +67,46 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
   return balls;
 }
 
+std::size_t drop_smallest_primitives(reconstruct::MedialMesh& mesh, std::size_t count, double sigma) {
+  std::size_t dropped = 0;
+  for (; dropped < count; ++dropped) {
+    std::vector<int> uses(mesh.spheres.size(), 0);
+    for (const auto& e : mesh.edges)
+      for (const std::int32_t v : e) ++uses[std::size_t(v)];
+    for (const auto& t : mesh.triangles)
+      for (const std::int32_t v : t) ++uses[std::size_t(v)];
+    const auto centre = [&mesh](std::int32_t v) -> Vec3 { return mesh.spheres[std::size_t(v)].head<3>(); };
+    const auto radius = [&mesh](std::int32_t v) { return mesh.spheres[std::size_t(v)].w(); };
+    constexpr double pi = 3.14159265358979323846;
+    // (support volume, edge index or edges.size() + triangle index)
+    double smallest = std::numeric_limits<double>::infinity();
+    std::size_t which = mesh.edges.size() + mesh.triangles.size();
+    for (std::size_t i = 0; i < mesh.edges.size(); ++i) {
+      const auto& e = mesh.edges[i];
+      if (uses[std::size_t(e[0])] < 2 || uses[std::size_t(e[1])] < 2) continue;
+      const double r = sigma * 0.5 * (radius(e[0]) + radius(e[1]));
+      const double volume = pi * r * r * (centre(e[0]) - centre(e[1])).norm() + 4.0 / 3.0 * pi * r * r * r;
+      if (volume < smallest) smallest = volume, which = i;
+    }
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      const auto& t = mesh.triangles[i];
+      if (uses[std::size_t(t[0])] < 2 || uses[std::size_t(t[1])] < 2 || uses[std::size_t(t[2])] < 2) continue;
+      const double r = sigma * (radius(t[0]) + radius(t[1]) + radius(t[2])) / 3.0;
+      const Vec3 a = centre(t[0]), b = centre(t[1]), c = centre(t[2]);
+      const double area = 0.5 * (b - a).cross(c - a).norm();
+      const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
+      const double volume = 2.0 * r * area + 0.5 * pi * r * r * perimeter + 4.0 / 3.0 * pi * r * r * r;
+      if (volume < smallest) smallest = volume, which = mesh.edges.size() + i;
+    }
+    if (which < mesh.edges.size()) {
+      mesh.edges.erase(mesh.edges.begin() + std::ptrdiff_t(which));
+    } else if (which < mesh.edges.size() + mesh.triangles.size()) {
+      mesh.triangles.erase(mesh.triangles.begin() + std::ptrdiff_t(which - mesh.edges.size()));
+    } else {
+      break;
+    }
+  }
+  return dropped;
+}
+
 }  // namespace skelconv::detail

@@ -4,11 +4,12 @@
 // Internal: the medial stage (medial_stage.cpp) is its one user.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <vector>
 
 #include "skelconv/mesh/triangle_mesh.hpp"
-#include "skelconv/reconstruct/branch_graph.hpp"  // Vec4
+#include "skelconv/reconstruct/medial_mesh.hpp"
 
 namespace skelconv::detail {
 
@@ -33,5 +34,16 @@ namespace skelconv::detail {
 std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
                                                  const std::function<double(const Vec3&)>& depth, double margin,
                                                  double sigma);
+
+/// Room for `count` more primitives within the budget: drops the `count`
+/// tube edges or triangles of `mesh` with the smallest supports (the
+/// Minkowski sum of the primitive and a ball of σ × its mean radius, σ =
+/// `sigma`) among those whose every sphere another primitive still uses, so
+/// that no sphere is left without a primitive and the spheres' indices
+/// stay. The smallest support is the least field taken away; the caller
+/// meshes again to see that the topology came no farther from the
+/// input's. Returns how many were dropped (fewer where no such primitive
+/// is left).
+std::size_t drop_smallest_primitives(reconstruct::MedialMesh& mesh, std::size_t count, double sigma);
 
 }  // namespace skelconv::detail
