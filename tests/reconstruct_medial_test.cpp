@@ -788,7 +788,8 @@ TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
   const std::vector<Vec4> balls = skelconv::detail::spurious_cavities(hollow, solid, h, o.medial.kernel_sigma);
   ASSERT_EQ(balls.size(), 1u);
   EXPECT_LT(balls[0].head<3>().norm(), h);
-  EXPECT_GT(balls[0].w(), 0.3);
+  EXPECT_GT(balls[0].w(), 0.3);  // the wall's box is ±0.3 (`skelconv mesh` of the same skeleton)
+  EXPECT_LT(balls[0].w(), 0.6);  // the hollow's ball, not the outer wall's (±1.38)
   EXPECT_LE(o.medial.kernel_sigma * balls[0].w(), solid(balls[0].head<3>()) * (1.0 + 1e-12));
 
   stage.medial.isolated.push_back(std::int32_t(stage.medial.spheres.size()));
