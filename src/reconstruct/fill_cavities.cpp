@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <vector>
 
@@ -21,7 +22,8 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
   const auto find = [&parent](std::int32_t v) { return find_root(parent, v); };
   for (const auto& t : meshed.triangles)
     for (int k = 1; k < 3; ++k)
-      if (const std::int32_t a = find(t[0]), b = find(t[std::size_t(k)]); a != b) parent[std::size_t(std::max(a, b))] = std::min(a, b);
+      if (const std::int32_t a = find(t[0]), b = find(t[std::size_t(k)]); a != b)
+        parent[std::size_t(std::max(a, b))] = std::min(a, b);
   // Per component (keyed by its root), the signed volume (divergence
   // theorem: Σ a · (b × c) / 6 over the triangles, negative for a wall that
   // faces into the volume it bounds) and its vertices' box, in the order
@@ -59,7 +61,8 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
     if (!(c.volume < 0.0)) continue;
     const Vec3 centre = 0.5 * (c.lo + c.hi);
     double radius = 0.0;
-    for (const std::int32_t v : c.vertices) radius = std::max(radius, (meshed.vertices[std::size_t(v)] - centre).norm());
+    for (const std::int32_t v : c.vertices)
+      radius = std::max(radius, (meshed.vertices[std::size_t(v)] - centre).norm());
     const double inside = depth(centre);
     if (inside > 0.0)
       balls.push_back({centre.x(), centre.y(), centre.z(), std::min(radius + margin, inside / sigma)});
@@ -77,8 +80,8 @@ std::size_t drop_smallest_primitives(reconstruct::MedialMesh& mesh, std::size_t 
       for (const std::int32_t v : t) ++uses[std::size_t(v)];
     const auto centre = [&mesh](std::int32_t v) -> Vec3 { return mesh.spheres[std::size_t(v)].head<3>(); };
     const auto radius = [&mesh](std::int32_t v) { return mesh.spheres[std::size_t(v)].w(); };
-    constexpr double pi = 3.14159265358979323846;
-    // (support volume, edge index or edges.size() + triangle index)
+    constexpr double pi = std::numbers::pi;
+    // `which`: an edge's index, or edges.size() + a triangle's.
     double smallest = std::numeric_limits<double>::infinity();
     std::size_t which = mesh.edges.size() + mesh.triangles.size();
     for (std::size_t i = 0; i < mesh.edges.size(); ++i) {

@@ -1,6 +1,6 @@
 // src/reconstruct/fill_cavities.hpp — hollows the fit opened inside a solid
 // part of the input, filled by one isolated sphere each
-// (docs/reconstruction_medial.md, "The topology").
+// (docs/reconstruction_medial.md, "Cavities the guard lets through").
 // Internal: the medial stage (medial_stage.cpp) is its one user.
 #pragma once
 
