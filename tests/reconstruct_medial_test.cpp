@@ -22,6 +22,7 @@
 #include "skelconv/reconstruct/medial_slope.hpp"
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
+#include "src/reconstruct/fill_cavities.hpp"
 #include "src/reconstruct/tube_ends.hpp"
 
 namespace skelconv::reconstruct {
@@ -744,6 +745,78 @@ TEST(MedialDerivatives, OtherKernelsAreRefused) {
   EXPECT_THROW(derivatives(cauchy, Vec3(0.2, 0.2, 0.3)), InputError);
 }
 
+// --- Cavities the fit opens inside a solid (fill_cavities.hpp).
+
+// The twelve edges of the octahedron of vertices (±1, 0, 0), (0, ±1, 0),
+// (0, 0, ±1) as tubes of radius 0.4 (SCALIS segments, support 0.6): every
+// edge is 0.707 from the centre, so f = 0 there, while at the faces'
+// centres (1/3, 1/3, 1/3) f = 2.76 (`skelconv eval`): a closed shell round
+// a hollow. Inside a solid ball of radius 1.5 (the input's depth 1.5 − |x|)
+// the hollow is the sum's, as the Chinese dragon's: meshed as the guard
+// meshes it, 2 components and χ 4 where the input has 1 and χ 2. The ball
+// found is at the centre, at most depth / σ = 1 in radius (its support
+// inside the input), and one isolated sphere of it closes the hollow: one
+// component, χ 2. Where the input is hollow there too (depth
+// min(1.5 − |x|, |x| − 0.3)), nothing is filled.
+TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
+  MedialMesh shell;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double side : {-1.0, 1.0}) {
+      Vec4 sphere(0.0, 0.0, 0.0, 0.4);
+      sphere[axis] = side;
+      shell.spheres.push_back(sphere);
+    }
+  for (std::int32_t a = 0; a < 6; ++a)
+    for (std::int32_t b = a + 1; b < 6; ++b)
+      if (a / 2 != b / 2) shell.edges.push_back({a, b});
+  ASSERT_EQ(shell.edges.size(), 12u);
+  ReconstructOptions o;
+  // The grid's box: the input's, a ball of radius 1.5 (its bounding box).
+  TriangleMesh input;
+  input.vertices = {Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5), Vec3(1.5, -1.5, 1.5)};
+  input.triangles = {{0, 1, 2}};
+  const double h = 0.04;
+  Stage stage;
+  stage.name = "medial";
+  stage.medial = shell;
+  const TriangleMesh hollow = mesh_stage_unprojected(input, stage, o, h);
+  const MeshTopology before = mesh_topology(hollow);
+  ASSERT_EQ(before.components, 2u);
+  ASSERT_EQ(before.euler_characteristic, 4);
+
+  const auto solid = [](const Vec3& p) { return 1.5 - p.norm(); };
+  const std::vector<Vec4> balls = skelconv::detail::spurious_cavities(hollow, solid, h, o.medial.kernel_sigma);
+  ASSERT_EQ(balls.size(), 1u);
+  EXPECT_LT(balls[0].head<3>().norm(), h);
+  EXPECT_GT(balls[0].w(), 0.3);  // the wall's box is ±0.3 (`skelconv mesh` of the same skeleton)
+  EXPECT_LT(balls[0].w(), 0.6);  // the hollow's ball, not the outer wall's (±1.38)
+  EXPECT_LE(o.medial.kernel_sigma * balls[0].w(), solid(balls[0].head<3>()) * (1.0 + 1e-12));
+
+  stage.medial.isolated.push_back(std::int32_t(stage.medial.spheres.size()));
+  stage.medial.spheres.push_back(balls[0]);
+  const MeshTopology after = mesh_topology(mesh_stage_unprojected(input, stage, o, h));
+  EXPECT_EQ(after.components, 1u);
+  EXPECT_EQ(after.euler_characteristic, 2);
+
+  const auto hollow_input = [](const Vec3& p) { return std::min(1.5 - p.norm(), p.norm() - 0.3); };
+  EXPECT_TRUE(skelconv::detail::spurious_cavities(hollow, hollow_input, h, o.medial.kernel_sigma).empty());
+}
+
+// Room within the budget for a cavity's sphere: a chain A–B–C–D–E along x
+// (A 0, B 1, C 1.05, D 2, E 2.01, radii 0.1). D–E is the shortest edge but
+// E is on no other, and A–B would leave A on none. B–C (0.05 long) and
+// C–D (0.95) can go without leaving a sphere bare; B–C is the smaller
+// support and goes first, and then C is on C–D alone. Asked for two, it
+// drops the one and says so.
+TEST(FillCavities, RoomIsMadeWithoutLeavingASphereBare) {
+  MedialMesh chain;
+  for (const double x : {0.0, 1.0, 1.05, 2.0, 2.01}) chain.spheres.push_back(Vec4(x, 0.0, 0.0, 0.1));
+  chain.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}};
+  EXPECT_EQ(skelconv::detail::drop_smallest_primitives(chain, 2, 1.5), 1u);
+  const std::vector<std::array<std::int32_t, 2>> left{{0, 1}, {2, 3}, {3, 4}};
+  EXPECT_EQ(chain.edges, left);
+  EXPECT_EQ(chain.spheres.size(), 5u);
+}
+
 }  // namespace
 }  // namespace skelconv::reconstruct
-

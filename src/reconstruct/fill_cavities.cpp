@@ -1,0 +1,115 @@
+// Implementation of fill_cavities.hpp.
+#include "fill_cavities.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <numeric>
+#include <vector>
+
+#include "union_find.hpp"
+
+namespace skelconv::detail {
+
+std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
+                                                 const std::function<double(const Vec3&)>& depth, double margin,
+                                                 double sigma) {
+  // Components: triangles joined through their vertices.
+  std::vector<std::int32_t> parent(meshed.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&parent](std::int32_t v) { return find_root(parent, v); };
+  for (const auto& t : meshed.triangles)
+    for (int k = 1; k < 3; ++k)
+      if (const std::int32_t a = find(t[0]), b = find(t[std::size_t(k)]); a != b)
+        parent[std::size_t(std::max(a, b))] = std::min(a, b);
+  // Per component (keyed by its root), the signed volume (divergence
+  // theorem: Σ a · (b × c) / 6 over the triangles, negative for a wall that
+  // faces into the volume it bounds) and its vertices' box, in the order
+  // of their roots (the same mesh, the same balls).
+  struct Component {
+    double volume = 0.0;
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 hi = -lo;
+    std::vector<std::int32_t> vertices;
+  };
+  std::vector<Component> components;
+  std::vector<std::int32_t> index(meshed.vertices.size(), -1);
+  for (const auto& t : meshed.triangles) {
+    const std::size_t root = std::size_t(find(t[0]));
+    if (index[root] < 0) index[root] = std::int32_t(components.size()), components.emplace_back();
+    Component& c = components[std::size_t(index[root])];
+    const Vec3& a = meshed.vertices[std::size_t(t[0])];
+    const Vec3& b = meshed.vertices[std::size_t(t[1])];
+    const Vec3& d = meshed.vertices[std::size_t(t[2])];
+    c.volume += a.dot(b.cross(d)) / 6.0;
+  }
+  std::vector<bool> seen(meshed.vertices.size(), false);
+  for (const auto& t : meshed.triangles)
+    for (const std::int32_t v : t) {
+      if (seen[std::size_t(v)]) continue;
+      seen[std::size_t(v)] = true;
+      Component& c = components[std::size_t(index[std::size_t(find(v))])];
+      c.lo = c.lo.cwiseMin(meshed.vertices[std::size_t(v)]);
+      c.hi = c.hi.cwiseMax(meshed.vertices[std::size_t(v)]);
+      c.vertices.push_back(v);
+    }
+  std::vector<reconstruct::Vec4> balls;
+  if (components.size() < 2) return balls;  // a lone surface bounds no cavity
+  for (const Component& c : components) {
+    if (!(c.volume < 0.0)) continue;
+    const Vec3 centre = 0.5 * (c.lo + c.hi);
+    double radius = 0.0;
+    for (const std::int32_t v : c.vertices)
+      radius = std::max(radius, (meshed.vertices[std::size_t(v)] - centre).norm());
+    const double inside = depth(centre);
+    if (inside > 0.0)
+      balls.push_back({centre.x(), centre.y(), centre.z(), std::min(radius + margin, inside / sigma)});
+  }
+  return balls;
+}
+
+std::size_t drop_smallest_primitives(reconstruct::MedialMesh& mesh, std::size_t count, double sigma) {
+  std::size_t dropped = 0;
+  for (; dropped < count; ++dropped) {
+    std::vector<int> uses(mesh.spheres.size(), 0);
+    for (const auto& e : mesh.edges)
+      for (const std::int32_t v : e) ++uses[std::size_t(v)];
+    for (const auto& t : mesh.triangles)
+      for (const std::int32_t v : t) ++uses[std::size_t(v)];
+    const auto centre = [&mesh](std::int32_t v) -> Vec3 { return mesh.spheres[std::size_t(v)].head<3>(); };
+    const auto radius = [&mesh](std::int32_t v) { return mesh.spheres[std::size_t(v)].w(); };
+    constexpr double pi = std::numbers::pi;
+    // `which`: an edge's index, or edges.size() + a triangle's.
+    double smallest = std::numeric_limits<double>::infinity();
+    std::size_t which = mesh.edges.size() + mesh.triangles.size();
+    for (std::size_t i = 0; i < mesh.edges.size(); ++i) {
+      const auto& e = mesh.edges[i];
+      if (uses[std::size_t(e[0])] < 2 || uses[std::size_t(e[1])] < 2) continue;
+      const double r = sigma * 0.5 * (radius(e[0]) + radius(e[1]));
+      const double volume = pi * r * r * (centre(e[0]) - centre(e[1])).norm() + 4.0 / 3.0 * pi * r * r * r;
+      if (volume < smallest) smallest = volume, which = i;
+    }
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      const auto& t = mesh.triangles[i];
+      if (uses[std::size_t(t[0])] < 2 || uses[std::size_t(t[1])] < 2 || uses[std::size_t(t[2])] < 2) continue;
+      const double r = sigma * (radius(t[0]) + radius(t[1]) + radius(t[2])) / 3.0;
+      const Vec3 a = centre(t[0]), b = centre(t[1]), c = centre(t[2]);
+      const double area = 0.5 * (b - a).cross(c - a).norm();
+      const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
+      const double volume = 2.0 * r * area + 0.5 * pi * r * r * perimeter + 4.0 / 3.0 * pi * r * r * r;
+      if (volume < smallest) smallest = volume, which = mesh.edges.size() + i;
+    }
+    if (which < mesh.edges.size()) {
+      mesh.edges.erase(mesh.edges.begin() + std::ptrdiff_t(which));
+    } else if (which < mesh.edges.size() + mesh.triangles.size()) {
+      mesh.triangles.erase(mesh.triangles.begin() + std::ptrdiff_t(which - mesh.edges.size()));
+    } else {
+      break;
+    }
+  }
+  return dropped;
+}
+
+}  // namespace skelconv::detail

@@ -1,0 +1,49 @@
+// src/reconstruct/fill_cavities.hpp — hollows the fit opened inside a solid
+// part of the input, filled by one isolated sphere each
+// (docs/reconstruction_medial.md, "Cavities the guard lets through").
+// Internal: the medial stage (medial_stage.cpp) is its one user.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "skelconv/mesh/triangle_mesh.hpp"
+#include "skelconv/reconstruct/medial_mesh.hpp"
+
+namespace skelconv::detail {
+
+/// A closed component of `meshed` (the surface f = iso of a medial mesh,
+/// its triangles facing out of {f ≥ iso}, as the grid mesher writes them)
+/// that bounds a negative volume is the wall of a cavity: a pocket where
+/// f < iso inside the reconstruction. Where the input is solid at the
+/// centre of the wall's bounding box (`depth`, the input's signed
+/// distance, positive inside), the cavity is the fit's, not the input's:
+/// the fit shrank the primitives about it until their sum fell below iso
+/// between them, and no surface point sees it.
+///
+/// Returns, per such cavity, a ball for an isolated sphere (a compact
+/// point, f = iso at its radius ρ, support σ ρ, σ = `sigma`) about that
+/// centre: ρ the distance to the wall's farthest vertex plus `margin` (the
+/// unprojected wall lies within a facet of f = iso), where the sphere alone
+/// is ≥ iso on the whole cavity; but at most depth / σ, so that its support
+/// stays inside the input and the reconstruction's surface near the
+/// input's does not move. Such a smaller sphere covers the middle of the
+/// cavity, and its field added to the wall's (near iso there) closes the
+/// rest, mostly: the caller meshes again to see.
+std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
+                                                 const std::function<double(const Vec3&)>& depth, double margin,
+                                                 double sigma);
+
+/// Room for `count` more primitives within the budget: drops the `count`
+/// tube edges or triangles of `mesh` with the smallest supports (the
+/// Minkowski sum of the primitive and a ball of σ × its mean radius, σ =
+/// `sigma`) among those whose every sphere another primitive still uses, so
+/// that no sphere is left without a primitive and the spheres' indices
+/// stay. The smallest support is the least field taken away; the caller
+/// meshes again to see that the topology came no farther from the
+/// input's. Returns how many were dropped (fewer where no such primitive
+/// is left).
+std::size_t drop_smallest_primitives(reconstruct::MedialMesh& mesh, std::size_t count, double sigma);
+
+}  // namespace skelconv::detail
