@@ -615,8 +615,7 @@ TEST(MeshRepair, CubesSharingAnEdgeAreSplitThere) {
 
 // The unit cube with every triangle facing inwards (volume −1): refused, the
 // refusal naming --repair; --repair turns all 12 round, volume +1 exactly
-// (products of 0 and 1). Two cubes, one inward, are a cavity or a mistake
-// the user must resolve: neither is turned round.
+// (products of 0 and 1).
 TEST(MeshRepair, InsideOutCubeIsTurnedRound) {
   TriangleMesh cube = unit_cube();
   for (auto& t : cube.triangles) std::swap(t[1], t[2]);
@@ -636,18 +635,59 @@ TEST(MeshRepair, InsideOutCubeIsTurnedRound) {
   EXPECT_NO_THROW(check_closed_mesh(cube));
   EXPECT_EQ(six_volume(cube) / 6.0, 1.0);
 
-  TriangleMesh two = unit_cube();
-  const std::size_t n = two.vertices.size();
-  for (std::size_t k = 0; k < n; ++k) two.vertices.push_back(two.vertices[k] + Vec3(3, 0, 0));
-  const std::size_t m = two.triangles.size();
-  for (std::size_t k = 0; k < m; ++k) {
-    auto t = two.triangles[k];
-    for (auto& i : t) i += std::int32_t(n);
-    std::swap(t[1], t[2]);
-    two.triangles.push_back(t);
+}
+
+// A unit cube facing outwards and, beside it, a second one (a patch of a CAD
+// export) facing inwards: the second encloses no void, since no part
+// encloses it; it is wound the other way. Refused naming its first triangle
+// (12, counted from 0) and --repair; --repair turns its 12 triangles round
+// and leaves the first cube's alone: volume 2 exactly. Moved inside a cube
+// of side 4, the inward cube is a cavity: refused, repair or not.
+TEST(MeshRepair, AnInwardPartInsideNoOtherIsTurnedRoundACavityIsNot) {
+  const auto with_inward_cube = [](TriangleMesh mesh, const Vec3& at) {
+    const TriangleMesh cube = unit_cube();
+    const auto n = std::int32_t(mesh.vertices.size());
+    for (const Vec3& v : cube.vertices) mesh.vertices.push_back(v + at);
+    for (auto t : cube.triangles) {
+      for (auto& i : t) i += n;
+      std::swap(t[1], t[2]);
+      mesh.triangles.push_back(t);
+    }
+    return mesh;
+  };
+  TriangleMesh two = with_inward_cube(unit_cube(), Vec3(3, 0, 0));
+  try {
+    check_closed_mesh_offering_repair(two, "--repair");
+    ADD_FAILURE() << "an inward cube beside an outward one accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1 inward-facing part(s) that lie inside no other part (e.g. the part of "
+                                         "triangle 12, counted from 0)"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("(or pass --repair to let skeletonize turn those parts round)"),
+              std::string::npos)
+        << e.what();
   }
-  EXPECT_THROW(check_closed_mesh_repairing(two), InputError);
+  const InputRepair repair = check_closed_mesh_repairing(two);
+  EXPECT_EQ(repair.surface.triangles_flipped, 12u);
+  EXPECT_EQ(repair.surface.parts_flipped, 1u);
   EXPECT_EQ(two.triangles[0], unit_cube().triangles[0]);
+  EXPECT_NO_THROW(check_closed_mesh(two));
+  EXPECT_EQ(six_volume(two) / 6.0, 2.0);
+
+  TriangleMesh big = unit_cube();
+  for (Vec3& v : big.vertices) v = 4.0 * v - Vec3(1.5, 1.5, 1.5);
+  TriangleMesh hollow = with_inward_cube(big, Vec3(0, 0, 0));
+  try {
+    check_closed_mesh_offering_repair(hollow, "--repair");
+    ADD_FAILURE() << "a cavity accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1 inward-facing part(s) inside other parts, i.e. cavities"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(std::string(e.what()).find("--repair"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(check_closed_mesh_repairing(hollow), InputError);
 }
 
 

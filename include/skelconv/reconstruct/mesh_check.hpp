@@ -33,7 +33,9 @@ std::size_t merge_coincident_vertices(TriangleMesh& mesh);
 /// - non-manifold: an edge used by more than two triangles;
 /// - inconsistently oriented: an edge used twice in the same direction;
 /// - inside out: a negative enclosed volume;
-/// - a cavity: a connected component with negative volume inside the others;
+/// - a part wound the other way: a closed part with negative volume that
+///   lies inside no other part;
+/// - a cavity: a closed part with negative volume inside another;
 /// - too far from the origin for its size: a diagonal below 1e5 ×
 ///   Segment::degenerate_length_ratio × its largest coordinate magnitude
 ///   (the skeleton's shortest pieces, down to ~5e-5 of the diagonal, could
@@ -101,7 +103,7 @@ bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh);
 
 /// check_closed_mesh for a caller that offers check_closed_mesh_repairing as
 /// an option: where the problem is one the repair fixes (holes, edges of more
-/// than two triangles, an inside-out surface, crossing triangles), the message ends "(or pass
+/// than two triangles, an inside-out surface or part, crossing triangles), the message ends "(or pass
 /// OPTION to let skeletonize ...)", OPTION in the caller's spelling
 /// ("--repair" for the command, "repair=True" for Python).
 void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_view repair_option);
@@ -142,9 +144,11 @@ struct SurfaceRepair {
   std::size_t triangles_added = 0;
   std::size_t vertices_added = 0;  ///< inside the patches
   double largest_hole_area = 0.0;  ///< the largest patch's area / the closed surface's area
-  /// Triangles turned round because every part of the closed surface faced
-  /// inwards (an inside-out export); 0 otherwise.
+  /// Triangles turned round, of parts of the closed surface that faced
+  /// inwards though no other part enclosed them (an inside-out export, or a
+  /// patch wound the other way); 0 otherwise.
   std::size_t triangles_flipped = 0;
+  std::size_t parts_flipped = 0;  ///< the parts those triangles made
   bool repaired() const {
     return non_manifold_edges + boundary_edges + isolated_vertices_removed + triangles_flipped > 0;
   }
