@@ -322,7 +322,12 @@ void check_no_nested_parts(const TriangleMesh& mesh) {
 
 void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings) {
   const auto triangles = proper_triangles(mesh);
-  if (triangles.empty()) throw InputError("the mesh is empty: it has no triangle");
+  if (triangles.empty())
+    throw InputError(mesh.vertices.empty()
+                         ? std::string("the mesh is empty: it has no triangle")
+                         : fmt::format("the mesh is empty: it has no triangle, only {} vertices (a point cloud?); "
+                                       "skeletonize needs a closed surface: mesh the points first",
+                                       mesh.vertices.size()));
   check_edges(triangles, mesh.triangles.size() - triangles.size());
   for (const auto& t : triangles)
     for (std::int32_t i : t)
