@@ -468,6 +468,65 @@ bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh) {
 
 namespace {
 
+/// Turns round the triangles of `mesh` that disagree with their
+/// neighbours: across every edge of two triangles one must run a → b and
+/// the other b → a. Each connected part keeps the orientation of its first
+/// triangle in the file's order (which side is out is decided after, by
+/// the enclosed volume: flip_inward_parts). Returns how many triangles it
+/// turned; throws InputError for a part that no orientation makes
+/// consistent (a Möbius band). Edges of more than two triangles are
+/// ignored: the caller orients only meshes without them.
+std::size_t orient_consistently(TriangleMesh& mesh) {
+  std::vector<std::size_t> in_mesh;  // the proper triangles' indices in the mesh
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (const auto& c = mesh.triangles[t]; c[0] != c[1] && c[1] != c[2] && c[2] != c[0]) in_mesh.push_back(t);
+  // Per edge (lower vertex first), its triangles and whether each runs
+  // from the lower vertex to the higher.
+  std::map<Edge, std::vector<std::pair<std::size_t, bool>>> at_edge;
+  for (std::size_t t = 0; t < in_mesh.size(); ++t) {
+    const auto& c = mesh.triangles[in_mesh[t]];
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = c[std::size_t(k)], b = c[std::size_t((k + 1) % 3)];
+      at_edge[std::minmax(a, b)].emplace_back(t, a < b);
+    }
+  }
+  std::vector<std::vector<std::pair<std::size_t, bool>>> neighbours(in_mesh.size());  // (u, same direction)
+  for (const auto& [edge, uses] : at_edge)
+    if (uses.size() == 2) {
+      const bool same = uses[0].second == uses[1].second;
+      neighbours[uses[0].first].emplace_back(uses[1].first, same);
+      neighbours[uses[1].first].emplace_back(uses[0].first, same);
+    }
+  // Breadth first from each part's first triangle: a neighbour that runs
+  // the shared edge the same way is flipped relative to its finder.
+  constexpr std::uint8_t unseen = 2;
+  std::vector<std::uint8_t> flip(in_mesh.size(), unseen);
+  std::vector<std::size_t> queue;
+  for (std::size_t seed = 0; seed < in_mesh.size(); ++seed) {
+    if (flip[seed] != unseen) continue;
+    flip[seed] = 0;
+    queue.assign(1, seed);
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+      const std::size_t t = queue[next];
+      for (const auto& [u, same] : neighbours[t]) {
+        const std::uint8_t wanted = flip[t] ^ std::uint8_t(same);
+        if (flip[u] == unseen) {
+          flip[u] = wanted;
+          queue.push_back(u);
+        } else if (flip[u] != wanted) {
+          throw InputError(fmt::format("the mesh is not orientable: the part of triangle {} (counted from 0) has no "
+                                       "consistent orientation (a Möbius band); it bounds no solid",
+                                       in_mesh[seed]));
+        }
+      }
+    }
+  }
+  std::size_t turned = 0;
+  for (std::size_t t = 0; t < in_mesh.size(); ++t)
+    if (flip[t] == 1) std::swap(mesh.triangles[in_mesh[t]][1], mesh.triangles[in_mesh[t]][2]), ++turned;
+  return turned;
+}
+
 /// Turns round the parts of a closed, consistently oriented `mesh` that
 /// face inwards though no other part encloses them
 /// (inward_parts_inside_no_other: every part of an inside-out export, or
@@ -506,6 +565,11 @@ void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_vie
   try {
     check_closed_mesh(mesh, false);
   } catch (const InputError& error) {
+    if (const EdgeCounts c = count_edges(proper_triangles(mesh)); c.inconsistent && !c.non_manifold) {
+      TriangleMesh oriented = mesh;
+      orient_consistently(oriented);  // throws for a Möbius band
+      throw offer(error, "orient its triangles consistently");
+    }
     if (has_holes_or_non_manifold_edges(mesh)) throw offer(error, "split non-manifold edges and fill holes");
     TriangleMesh flipped = mesh;
     if (const std::size_t n = flip_inward_parts(flipped).first; n > 0)
@@ -524,12 +588,23 @@ void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_vie
 
 InputRepair check_closed_mesh_repairing(TriangleMesh& mesh, double max_hole_area) {
   InputRepair repair;
-  const auto triangles = proper_triangles(mesh);
-  const EdgeCounts edges = count_edges(triangles);
+  auto triangles = proper_triangles(mesh);
+  EdgeCounts edges = count_edges(triangles);
+  // Triangles flipped against their neighbours (a shuffled export): each
+  // part is oriented from its first triangle, and the parts then facing
+  // inwards are turned round below. At an edge of more than two triangles
+  // which ones are neighbours is not known.
+  if (edges.inconsistent && !edges.non_manifold) {
+    repair.surface.triangles_reoriented = orient_consistently(mesh);
+    triangles = proper_triangles(mesh);
+    edges = count_edges(triangles);
+  }
   if (edges.open > 0 || edges.non_manifold > 0) {
     // A flipped triangle's edges would be split like non-manifold ones and
-    // the holes left filled: the orientation is the user's to fix.
-    if (edges.inconsistent) throw InputError(inconsistent_problem(edges) + " (--repair does not flip single triangles)");
+    // the holes left filled: the orientation is the user's to fix there.
+    if (edges.inconsistent)
+      throw InputError(inconsistent_problem(edges) +
+                       " (--repair orients triangles only where no edge has more than two)");
     for (const auto& t : triangles)
       for (std::int32_t i : t)
         if (i < 0 || std::size_t(i) >= mesh.vertices.size())

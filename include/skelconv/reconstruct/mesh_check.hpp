@@ -149,8 +149,13 @@ struct SurfaceRepair {
   /// patch wound the other way); 0 otherwise.
   std::size_t triangles_flipped = 0;
   std::size_t parts_flipped = 0;  ///< the parts those triangles made
+  /// Triangles turned round first, to agree with their neighbours'
+  /// orientation (each part oriented from its first triangle).
+  std::size_t triangles_reoriented = 0;
   bool repaired() const {
-    return non_manifold_edges + boundary_edges + isolated_vertices_removed + triangles_flipped > 0;
+    return non_manifold_edges + boundary_edges + isolated_vertices_removed + triangles_flipped +
+               triangles_reoriented >
+           0;
   }
 };
 
@@ -170,6 +175,10 @@ inline constexpr double max_hole_area_fraction = 0.25;
 /// check_closed_mesh_joining_overlaps, after closing an open or
 /// edge-non-manifold surface (`skelconv skeletonize --repair`;
 /// docs/reconstruction_input.md, "Open and non-manifold meshes"):
+/// 0. where no edge has more than two triangles, the triangles that run an
+///    edge the same way as their neighbour are turned round, each part
+///    oriented from its first triangle (a part with no consistent
+///    orientation, a Möbius band, is refused);
 /// 1. an edge of 2m triangles becomes m edges of two, each pair bounding
 ///    one wedge of the solid around it, and each vertex whose triangles
 ///    form several fans gets one copy per fan;
@@ -181,11 +190,14 @@ inline constexpr double max_hole_area_fraction = 0.25;
 ///    that vertex again; copies at a split edge stay (vertices_split), and
 ///    if the split sheets cross, the mesh is refused (CGAL's union crashed
 ///    on distinct vertices at one position);
-/// 4. a closed surface whose every part faces inwards (negative enclosed
-///    volume: exported with the other winding convention) is turned round;
+/// 4. every part that faces inwards (negative enclosed volume) and lies
+///    inside no other part is turned round (an export with the other
+///    winding convention, a patch wound the other way, a part oriented
+///    from an inward first triangle in step 0);
 /// 5. then crossings as check_closed_mesh_joining_overlaps (a patch, or
 ///    the input, can cross the surface), and every check again.
-/// Throws InputError for an inconsistent orientation (not repaired), when
+/// Throws InputError for an inconsistent orientation at a non-manifold
+/// edge (not repaired), when
 /// the split or the hole filling fails, and for a hole whose patch is more
 /// than `max_hole_area` of the closed surface's area, naming its size: an
 /// opening that large is a shape left open, and a patch would invent a
